@@ -1,0 +1,38 @@
+#include "main_status.h"
+
+namespace imudesk::model {
+
+const std::vector<StatusFlagInfo> &MainStatus::definitions()
+{
+    static const std::vector<StatusFlagInfo> defs = {
+        {WbConv, "WB_CONV", "Gyro bias estimate not yet converged: keep the module still for 3-5 s to improve heading accuracy."},
+        {MagDist, "MAG_DIST", "Magnetic disturbance: the field is disturbed, the magnetometer is not calibrated or the hard-iron environment changed; 9-axis heading may be wrong."},
+        {AccSat, "ACC_SAT", "Accelerometer over range now or within the last 2 s."},
+        {GyrSat, "GYR_SAT", "Gyroscope over range now or within the last 2 s."},
+        {AttConv, "ATT_CONV", "Attitude accuracy poor (large AHRS filter covariance): keep still for a moment."},
+        {Static, "STATIC", "The device detected that it is static."},
+        {MagAiding, "MAG_AIDING", "The magnetometer takes part in heading (9-axis mode)."},
+        {UtcUnsync, "UTC_UNSYNC", "Not synchronised to UTC: system_time is time since power-up."},
+        {SoutPulse, "SOUT_PULSE", "This frame corresponds to a SYNC_OUT pulse."},
+    };
+    return defs;
+}
+
+std::vector<std::string> MainStatus::setFlagNames() const
+{
+    std::vector<std::string> out;
+    for (const auto &d : definitions())
+        if ((m_raw >> d.bit) & 1u)
+            out.emplace_back(d.name);
+    return out;
+}
+
+uint16_t MainStatus::undefinedBits() const
+{
+    uint16_t defined = 0;
+    for (const auto &d : definitions())
+        defined |= uint16_t(1u << d.bit);
+    return m_raw & uint16_t(~defined);
+}
+
+} // namespace imudesk::model

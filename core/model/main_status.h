@@ -1,0 +1,47 @@
+#pragma once
+// MAIN_STATUS word (HI91/HI81/HI83, firmware >= 1.7.0). A set bit is a warning
+// or an indication; bit meanings from the v1.7.1 manual section 5.9.13 and the
+// vendor SDK (bit 9 STATIC).
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace imudesk::model {
+
+struct StatusFlagInfo {
+    int bit;
+    const char *name;        // manual's name, e.g. "WB_CONV"
+    const char *meaning;     // what a set bit means (English; translated in ui)
+};
+
+class MainStatus {
+public:
+    enum Bit : int {
+        WbConv = 3,
+        MagDist = 4,
+        AccSat = 5,
+        GyrSat = 6,
+        AttConv = 7,
+        Static = 9,
+        MagAiding = 10,
+        UtcUnsync = 11,
+        SoutPulse = 12,
+    };
+
+    MainStatus() = default;
+    explicit MainStatus(uint16_t raw) : m_raw(raw) {}
+
+    uint16_t raw() const { return m_raw; }
+    bool test(Bit b) const { return (m_raw >> b) & 1u; }
+    // Names of the set, defined bits, in ascending bit order.
+    std::vector<std::string> setFlagNames() const;
+    // Bits that are set but not defined by any manual.
+    uint16_t undefinedBits() const;
+
+    static const std::vector<StatusFlagInfo> &definitions();
+
+private:
+    uint16_t m_raw = 0;
+};
+
+} // namespace imudesk::model

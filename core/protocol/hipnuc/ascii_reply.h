@@ -1,0 +1,43 @@
+#pragma once
+// Replies to ASCII commands: zero or more info lines (often KEY=VALUE), then `OK`,
+// or a line starting with ERR/ERROR/FAIL. Unknown commands get no reply at all;
+// the session turns that into a timeout.
+#include <map>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace imudesk::protocol::hipnuc {
+
+struct AsciiReply {
+    enum class Status { Pending, Ok, Error, Timeout, Cancelled, NotSent };
+    Status status = Status::Pending;
+    std::string command;                       // the command this answers
+    std::vector<std::string> lines;            // info lines before OK/ERR (echo removed)
+    std::map<std::string, std::string> values; // KEY=VALUE lines
+    std::string errorLine;                     // the ERR line, or why it failed
+    bool ok() const { return status == Status::Ok; }
+};
+const char *statusName(AsciiReply::Status s);
+
+enum class LineKind { Ok, Error, Info };
+LineKind classifyLine(std::string_view line);
+
+// Collects the lines of one reply.
+class ReplyCollector {
+public:
+    explicit ReplyCollector(std::string command);
+    // Returns true when the reply is complete.
+    bool addLine(std::string_view line);
+    bool complete() const { return m_reply.status != AsciiReply::Status::Pending; }
+    const AsciiReply &reply() const { return m_reply; }
+    AsciiReply take() { return std::move(m_reply); }
+
+private:
+    AsciiReply m_reply;
+};
+
+// Splits "KEY=VALUE"; false when the line has no '=' or an empty key.
+bool splitKeyValue(std::string_view line, std::string &key, std::string &value);
+
+} // namespace imudesk::protocol::hipnuc

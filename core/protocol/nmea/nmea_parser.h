@@ -1,0 +1,72 @@
+#pragma once
+// NMEA 0183 sentences that HiPNUC modules emit or accept: GGA and RMC (decoded),
+// anything else with a valid checksum is kept as "other".
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace imudesk::protocol::nmea {
+
+enum class NmeaError { None, NoDollar, NoChecksum, BadChecksumDigits, ChecksumMismatch, TooLong, NonPrintable, BadField };
+
+struct UtcTime {
+    int hour = 0, minute = 0;
+    double second = 0;
+};
+struct UtcDate {
+    int year = 0, month = 0, day = 0;
+};
+
+struct Gga {
+    std::optional<UtcTime> time;
+    std::optional<double> latitudeDeg;  // south negative
+    std::optional<double> longitudeDeg; // west negative
+    int quality = 0;                    // 0 none, 1 single, 2 DGNSS, 4 RTK fixed, 5 RTK float
+    int satellites = 0;
+    std::optional<double> hdop;
+    std::optional<double> altitudeM;    // above MSL
+    std::optional<double> geoidSeparationM;
+    std::optional<double> diffAgeS;
+    std::string stationId;
+};
+
+struct Rmc {
+    std::optional<UtcTime> time;
+    bool valid = false;                 // status A
+    std::optional<double> latitudeDeg;
+    std::optional<double> longitudeDeg;
+    std::optional<double> speedKnots;
+    std::optional<double> courseDeg;
+    std::optional<UtcDate> date;
+    std::optional<double> magVarDeg;    // west negative
+    char mode = 0;                      // A, D, R, F, E, N or 0
+    double speedMs() const { return speedKnots.value_or(0) * 0.514444; }
+};
+
+struct Sentence {
+    std::string talker;    // "GP", "GN", ...
+    std::string type;      // "GGA", "RMC", ...
+    std::vector<std::string> fields; // after the address, before '*'
+    std::optional<Gga> gga;
+    std::optional<Rmc> rmc;
+};
+
+struct ParseResult {
+    std::optional<Sentence> sentence;
+    NmeaError error = NmeaError::None;
+    bool ok() const { return error == NmeaError::None; }
+};
+
+inline constexpr size_t kMaxSentenceLength = 120; // the standard's 82 plus vendor headroom
+
+// Parses one sentence, "$...*hh" with or without the trailing CR/LF.
+ParseResult parseSentence(std::string_view line);
+const char *errorText(NmeaError e);
+
+// XOR of the bytes between '$' and '*'.
+unsigned checksum(std::string_view body);
+// Builds "$<body>*HH\r\n".
+std::string buildSentence(std::string_view body);
+
+} // namespace imudesk::protocol::nmea

@@ -1,0 +1,107 @@
+#include "stream_demux.h"
+
+namespace imudesk::protocol {
+
+class StreamDemux::Router : public hipnuc::FrameDecoder::Sink {
+public:
+    Router(StreamDemux &d, std::vector<StreamEvent> &out) : m_d(d), m_out(out) {}
+    void onFrame(const uint8_t *payload, size_t len) override
+    {
+        StreamEvent e;
+        e.kind = StreamEvent::Kind::Frame;
+        e.payload.assign(payload, payload + len);
+        m_out.push_back(std::move(e));
+    }
+    void onSkipped(const uint8_t *bytes, size_t n) override { m_d.textBytes(bytes, n, m_out); }
+
+private:
+    StreamDemux &m_d;
+    std::vector<StreamEvent> &m_out;
+};
+
+void StreamDemux::feed(const uint8_t *data, size_t n, std::vector<StreamEvent> &out)
+{
+    Router r(*this, out);
+    m_decoder.feed(data, n, r);
+}
+
+void StreamDemux::finish(std::vector<StreamEvent> &out)
+{
+    Router r(*this, out);
+    m_decoder.finish(r);
+    if (!m_line.empty())
+        endLine(out);
+}
+
+void StreamDemux::reset()
+{
+    m_decoder.reset();
+    m_line.clear();
+    m_lineOverflow = false;
+}
+
+void StreamDemux::resetCounters()
+{
+    m_decoder.resetCounters();
+    m_counters = Counters{};
+}
+
+void StreamDemux::textBytes(const uint8_t *p, size_t n, std::vector<StreamEvent> &out)
+{
+    for (size_t i = 0; i < n; ++i) {
+        const uint8_t c = p[i];
+        if (c == '\n') {
+            endLine(out);
+        } else if (c == '\r') {
+            // ignored: lines end at LF; a CR alone never ends a reply
+        } else if (c == '$' && !m_line.empty()) {
+            // A new sentence start aborts a partial one (NMEA) or unterminated junk.
+            m_counters.garbageBytes += m_line.size();
+            m_line.clear();
+            m_lineOverflow = false;
+            m_line.push_back('$');
+        } else if (c >= 0x20 && c < 0x7F) {
+            if (m_line.size() < kMaxLine)
+                m_line.push_back(char(c));
+            else
+                m_lineOverflow = true;
+        } else {
+            // Not text: whatever was collected belongs to binary garbage.
+            m_counters.garbageBytes += m_line.size() + 1;
+            m_line.clear();
+            m_lineOverflow = false;
+        }
+    }
+}
+
+void StreamDemux::endLine(std::vector<StreamEvent> &out)
+{
+    if (m_lineOverflow) {
+        m_counters.garbageBytes += m_line.size();
+        m_line.clear();
+        m_lineOverflow = false;
+        return;
+    }
+    if (m_line.empty())
+        return;
+    StreamEvent e;
+    if (m_line.front() == '$') {
+        const auto r = nmea::parseSentence(m_line);
+        if (r.ok()) {
+            e.kind = StreamEvent::Kind::Nmea;
+            ++m_counters.nmeaSentences;
+        } else {
+            e.kind = StreamEvent::Kind::NmeaError;
+            e.nmeaError = r.error;
+            ++m_counters.nmeaErrors;
+        }
+    } else {
+        e.kind = StreamEvent::Kind::Line;
+        ++m_counters.lines;
+    }
+    e.text = std::move(m_line);
+    m_line.clear();
+    out.push_back(std::move(e));
+}
+
+} // namespace imudesk::protocol

@@ -1,0 +1,60 @@
+#pragma once
+// Splits one serial byte stream into HiPNUC binary frames, NMEA sentences and
+// ASCII reply lines (they share the UART). Binary frames take precedence: only
+// bytes that belong to no CRC-valid frame are considered as text.
+#include "protocol/hipnuc/frame_decoder.h"
+#include "protocol/nmea/nmea_parser.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace imudesk::protocol {
+
+struct StreamEvent {
+    enum class Kind { Frame, Nmea, NmeaError, Line };
+    Kind kind = Kind::Frame;
+    std::vector<uint8_t> payload;        // Frame: the frame's payload
+    std::string text;                    // Nmea/NmeaError/Line: the line without CR/LF
+    nmea::NmeaError nmeaError = nmea::NmeaError::None;
+};
+
+class StreamDemux {
+public:
+    static constexpr size_t kMaxLine = 512;
+
+    struct Counters {
+        uint64_t nmeaSentences = 0;
+        uint64_t nmeaErrors = 0;
+        uint64_t lines = 0;
+        uint64_t garbageBytes = 0; // skipped bytes that were not part of any line or sentence
+    };
+
+    void feed(const uint8_t *data, size_t n, std::vector<StreamEvent> &out);
+    std::vector<StreamEvent> feed(const uint8_t *data, size_t n)
+    {
+        std::vector<StreamEvent> out;
+        feed(data, n, out);
+        return out;
+    }
+    // End of stream: flushes an unterminated line and the decoder's tail.
+    void finish(std::vector<StreamEvent> &out);
+    // Forgets partial frames and lines (after a baud change or reconnect).
+    void reset();
+
+    const hipnuc::FrameDecoder::Counters &frameCounters() const { return m_decoder.counters(); }
+    const Counters &counters() const { return m_counters; }
+    void resetCounters();
+
+private:
+    class Router;
+    void textBytes(const uint8_t *p, size_t n, std::vector<StreamEvent> &out);
+    void endLine(std::vector<StreamEvent> &out);
+
+    hipnuc::FrameDecoder m_decoder;
+    std::string m_line;
+    bool m_lineOverflow = false;
+    Counters m_counters;
+};
+
+} // namespace imudesk::protocol
