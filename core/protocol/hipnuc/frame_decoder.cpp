@@ -37,7 +37,7 @@ std::vector<std::vector<uint8_t>> FrameDecoder::feed(const uint8_t *data, size_t
     return std::move(sink.frames);
 }
 
-size_t FrameDecoder::process(const uint8_t *p, size_t n, Sink &sink)
+size_t FrameDecoder::process(const uint8_t *p, size_t n, Sink &sink, bool final)
 {
     size_t i = 0;
     size_t skipStart = 0; // [skipStart, i) belongs to no frame
@@ -50,22 +50,30 @@ size_t FrameDecoder::process(const uint8_t *p, size_t n, Sink &sink)
             }
             i = size_t(static_cast<const uint8_t *>(hit) - p);
         }
-        if (i + 1 >= n)
+        if (i + 1 >= n) {
+            if (final) { ++i; continue; }
             break; // wait for the second sync byte
+        }
         if (p[i + 1] != kSync2) {
             ++i;
             continue;
         }
-        if (i + kHeaderSize > n)
+        if (i + kHeaderSize > n) {
+            if (final) { ++i; continue; }
             break; // wait for the header
+        }
         const size_t len = size_t(p[i + 2]) | (size_t(p[i + 3]) << 8);
         if (len == 0 || len > kMaxPayload) {
             ++m_counters.lengthErrors;
             ++i;
             continue;
         }
-        if (i + kHeaderSize + len > n)
+        if (i + kHeaderSize + len > n) {
+            // At the end of the stream an unfinished candidate can never complete:
+            // abandon it and look for frames inside it.
+            if (final) { ++i; continue; }
             break; // wait for the payload
+        }
         const uint16_t expected = uint16_t(p[i + 4] | (p[i + 5] << 8));
         if (frameCrc(p + i, p + i + kHeaderSize, len) != expected) {
             ++m_counters.crcErrors;
@@ -94,8 +102,7 @@ void FrameDecoder::finish(Sink &sink)
 {
     if (m_buf.empty())
         return;
-    m_counters.bytesSkipped += m_buf.size();
-    sink.onSkipped(m_buf.data(), m_buf.size());
+    process(m_buf.data(), m_buf.size(), sink, true);
     m_buf.clear();
 }
 

@@ -40,7 +40,8 @@ public:
     // Convenience: returns the payloads of the complete frames.
     std::vector<std::vector<uint8_t>> feed(const uint8_t *data, size_t n);
 
-    // End of stream: the unfinished tail is reported as skipped.
+    // End of stream: frames inside the unfinished tail are still decoded; the rest is
+    // reported as skipped.
     void finish(Sink &sink);
     // Drops the unfinished tail without reporting it (e.g. after a baud change).
     void reset();
@@ -50,7 +51,7 @@ public:
     void resetCounters() { m_counters = Counters{}; }
 
 private:
-    size_t process(const uint8_t *p, size_t n, Sink &sink);
+    size_t process(const uint8_t *p, size_t n, Sink &sink, bool final = false);
 
     std::vector<uint8_t> m_buf;
     Counters m_counters;

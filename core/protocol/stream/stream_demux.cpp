@@ -33,6 +33,12 @@ void StreamDemux::finish(std::vector<StreamEvent> &out)
         endLine(out);
 }
 
+void StreamDemux::flushPending(std::vector<StreamEvent> &out)
+{
+    Router r(*this, out);
+    m_decoder.finish(r);
+}
+
 void StreamDemux::reset()
 {
     m_decoder.reset();

@@ -39,6 +39,10 @@ public:
     }
     // End of stream: flushes an unterminated line and the decoder's tail.
     void finish(std::vector<StreamEvent> &out);
+    // The line went quiet: an unfinished binary candidate will not complete (a UART sends
+    // a frame without pauses), so frames and text held behind it are released.
+    void flushPending(std::vector<StreamEvent> &out);
+    size_t pendingBytes() const { return m_decoder.pendingBytes(); }
     // Forgets partial frames and lines (after a baud change or reconnect).
     void reset();
 

@@ -1,0 +1,61 @@
+#pragma once
+// One connected HiPNUC serial device. The public object lives in the caller's
+// thread; its worker (transport, stream demux, command queue) runs in a private
+// QThread. All calls are queued to the worker; results come back as signals
+// carrying value types. Samples go to a bounded SampleStore.
+#include "device/sample_store.h"
+#include "device/session_types.h"
+
+#include <QObject>
+#include <QString>
+#include <QThread>
+
+#include <atomic>
+#include <memory>
+#include <vector>
+
+namespace imudesk::device {
+
+class SessionWorker;
+
+class DeviceSession : public QObject {
+    Q_OBJECT
+public:
+    // Rates tried by auto-detection, in order.
+    static const std::vector<int> &detectionBauds();
+
+    explicit DeviceSession(QObject *parent = nullptr);
+    ~DeviceSession() override;
+
+    // baud 0 = auto-detect (listen first, then LOG VERSION at each rate).
+    void open(const QString &portName, int baud = 0);
+    void close();
+    // Queues an ASCII command; the reply arrives in commandFinished(id, reply).
+    // Unknown commands get no reply and finish as a timeout.
+    quint64 sendCommand(const QString &text, int timeoutMs = 1000);
+    // Changes the host side of the link (after SERIALCONFIG).
+    void setHostBaud(int baud);
+
+    SampleStore &store() { return m_store; }
+    SessionState state() const { return m_state.load(); }
+
+Q_SIGNALS:
+    void stateChanged(imudesk::device::SessionState state, const QString &detail);
+    void baudDetected(int baud);
+    void identityChanged(const imudesk::model::DeviceIdentity &identity);
+    void commandFinished(quint64 id, const imudesk::protocol::hipnuc::AsciiReply &reply);
+    void statsUpdated(const imudesk::device::SessionStats &stats);
+    void samplesAppended(quint64 totalSamples);
+    void nmeaReceived(const QString &sentence);
+    void textReceived(const QString &line); // ASCII lines that answer no command
+    void errorOccurred(const QString &message);
+
+private:
+    QThread m_thread;
+    SampleStore m_store;
+    SessionWorker *m_worker = nullptr;
+    std::atomic<quint64> m_nextId{1};
+    std::atomic<SessionState> m_state{SessionState::Closed};
+};
+
+} // namespace imudesk::device

@@ -1,0 +1,35 @@
+#pragma once
+// Bounded ring of the latest samples, shared between the session's worker thread
+// (writer, one lock per batch) and views (readers, on their refresh clock).
+#include "model/sample.h"
+
+#include <cstdint>
+#include <mutex>
+#include <optional>
+#include <vector>
+
+namespace imudesk::device {
+
+class SampleStore {
+public:
+    explicit SampleStore(size_t capacity = 100000);
+
+    void append(const std::vector<model::Sample> &batch);
+    void clear();
+
+    // Total samples ever appended (also the sequence number of the next one).
+    uint64_t totalAppended() const;
+    size_t size() const;
+    size_t capacity() const { return m_capacity; }
+    std::optional<model::Sample> latest() const;
+    // Samples with sequence >= fromSeq still in the ring (at most maxCount, newest kept).
+    std::vector<model::Sample> since(uint64_t fromSeq, size_t maxCount = SIZE_MAX) const;
+
+private:
+    const size_t m_capacity;
+    mutable std::mutex m_mutex;
+    std::vector<model::Sample> m_ring;
+    uint64_t m_total = 0;
+};
+
+} // namespace imudesk::device

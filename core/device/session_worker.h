@@ -1,0 +1,96 @@
+#pragma once
+// The worker half of DeviceSession: owns the transport, the stream demux and the
+// one-at-a-time command queue. Runs in the session's thread; never touched directly
+// by other threads.
+#include "device/sample_store.h"
+#include "device/session_types.h"
+#include "io/serial_transport.h"
+#include "protocol/stream/stream_demux.h"
+
+#include <QElapsedTimer>
+#include <QObject>
+#include <QTimer>
+
+#include <deque>
+#include <functional>
+#include <optional>
+
+namespace imudesk::device {
+
+class SessionWorker : public QObject {
+    Q_OBJECT
+public:
+    explicit SessionWorker(SampleStore &store, QObject *parent = nullptr);
+    ~SessionWorker() override;
+
+public Q_SLOTS:
+    void open(const QString &portName, int baud);
+    void close();
+    void sendCommand(quint64 id, const QString &text, int timeoutMs);
+    void setHostBaud(int baud);
+
+Q_SIGNALS:
+    void stateChanged(imudesk::device::SessionState state, const QString &detail);
+    void baudDetected(int baud);
+    void identityChanged(const imudesk::model::DeviceIdentity &identity);
+    void commandFinished(quint64 id, const imudesk::protocol::hipnuc::AsciiReply &reply);
+    void statsUpdated(const imudesk::device::SessionStats &stats);
+    void samplesAppended(quint64 totalSamples);
+    void nmeaReceived(const QString &sentence);
+    void textReceived(const QString &line);
+    void errorOccurred(const QString &message);
+
+private:
+    using Reply = protocol::hipnuc::AsciiReply;
+    struct Pending {
+        quint64 id = 0; // 0 = internal
+        QString text;
+        int timeoutMs = 1000;
+        std::function<void(const Reply &)> done;
+    };
+
+    void setState(SessionState s, const QString &detail = QString());
+    void onBytes(const QByteArray &bytes);
+    void handleEvents();
+    void onLineIdle();
+    void onTransportFailed(const QString &message);
+    void enqueue(Pending p);
+    void startNext();
+    void finishCurrent(Reply reply);
+    void onCommandTimeout();
+    void cancelAll(Reply::Status status, const QString &why);
+    void publishStats();
+
+    // Auto-detection
+    void detectAt(size_t index);
+    void detectQuery(bool retry);
+    void detectFinished(int baud, const std::optional<model::DeviceIdentity> &id);
+    void queryIdentity();
+
+    SampleStore &m_store;
+    io::SerialTransport *m_transport = nullptr;
+    protocol::StreamDemux m_demux;
+    std::vector<protocol::StreamEvent> m_events;
+    std::vector<model::Sample> m_batch;
+
+    std::deque<Pending> m_queue;
+    std::optional<Pending> m_current;
+    std::optional<protocol::hipnuc::ReplyCollector> m_collector;
+    QTimer m_commandTimer;
+    QTimer m_idleTimer; // releases bytes held behind an unfinished frame when the line goes quiet
+
+    bool m_detecting = false;
+    size_t m_detectIndex = 0;
+    uint64_t m_framesAtDetectStart = 0;
+    QTimer m_detectTimer;
+    QString m_portName;
+
+    QTimer m_statsTimer;
+    QElapsedTimer m_statsClock;
+    SessionStats m_lastStats;
+    qint64 m_lastStatsMs = 0;
+    uint64_t m_payloadErrors = 0;
+    SessionState m_state = SessionState::Closed;
+};
+
+} // namespace imudesk::device

@@ -1,0 +1,154 @@
+#include "serial_transport.h"
+
+#include <QCoreApplication>
+#include <QFileInfo>
+#include <QSerialPort>
+
+namespace imudesk::io {
+
+SerialTransport::SerialTransport(QObject *parent) : QObject(parent) {}
+
+SerialTransport::~SerialTransport()
+{
+    close();
+}
+
+QString SerialTransport::describeOpenError(const QString &portName, OpenErrorKind kind, const QString &osText)
+{
+    switch (kind) {
+    case OpenErrorKind::NotFound:
+        return QCoreApplication::translate("imudesk::io::SerialTransport",
+                                           "Port %1 was not found. Check that the device is plugged in and "
+                                           "choose the port again from the list.")
+            .arg(portName);
+    case OpenErrorKind::Busy:
+        return QCoreApplication::translate("imudesk::io::SerialTransport",
+                                           "Port %1 is in use by another program (a serial terminal, CHCenter or "
+                                           "another ImuDesk). Close that program and connect again.")
+            .arg(portName);
+    case OpenErrorKind::Permission:
+        return QCoreApplication::translate("imudesk::io::SerialTransport",
+                                           "No permission to open %1. On Linux add your user to the dialout "
+                                           "group (sudo usermod -aG dialout $USER), then log out and in again.")
+            .arg(portName);
+    case OpenErrorKind::Other:
+    case OpenErrorKind::None:
+        break;
+    }
+    return QCoreApplication::translate("imudesk::io::SerialTransport", "Could not open %1: %2").arg(portName, osText);
+}
+
+bool SerialTransport::open(const QString &portName, int baud, QString *error, OpenErrorKind *kind)
+{
+    close();
+    auto fail = [&](OpenErrorKind k, const QString &osText) {
+        if (kind)
+            *kind = k;
+        if (error)
+            *error = describeOpenError(portName, k, osText);
+        return false;
+    };
+    // QSerialPort accepts bare names ("ttyUSB0") and paths; a missing path is reported clearly.
+    if (portName.startsWith(QLatin1Char('/')) && !QFileInfo::exists(portName))
+        return fail(OpenErrorKind::NotFound, QString());
+
+    m_port = new QSerialPort(this);
+    m_port->setPortName(portName);
+    m_port->setBaudRate(baud);
+    m_port->setDataBits(QSerialPort::Data8);
+    m_port->setParity(QSerialPort::NoParity);
+    m_port->setStopBits(QSerialPort::OneStop);
+    m_port->setFlowControl(QSerialPort::NoFlowControl);
+    m_port->setReadBufferSize(0);
+    if (!m_port->open(QIODevice::ReadWrite)) {
+        const auto err = m_port->error();
+        const QString osText = m_port->errorString();
+        delete m_port;
+        m_port = nullptr;
+        switch (err) {
+        case QSerialPort::DeviceNotFoundError: return fail(OpenErrorKind::NotFound, osText);
+        case QSerialPort::PermissionError:
+            // Qt reports both EACCES and a held lock / EBUSY as PermissionError.
+            if (osText.contains(QLatin1String("ermission")) && !osText.contains(QLatin1String("lock")))
+                return fail(OpenErrorKind::Permission, osText);
+            return fail(OpenErrorKind::Busy, osText);
+        default: return fail(OpenErrorKind::Other, osText);
+        }
+    }
+    m_portName = portName;
+    m_baud = baud;
+    connect(m_port, &QSerialPort::readyRead, this, &SerialTransport::onReadyRead);
+    connect(m_port, &QSerialPort::errorOccurred, this, &SerialTransport::onError);
+    if (kind)
+        *kind = OpenErrorKind::None;
+    return true;
+}
+
+void SerialTransport::close()
+{
+    if (!m_port)
+        return;
+    m_port->disconnect(this);
+    if (m_port->isOpen())
+        m_port->close();
+    m_port->deleteLater();
+    m_port = nullptr;
+}
+
+bool SerialTransport::isOpen() const
+{
+    return m_port && m_port->isOpen();
+}
+
+bool SerialTransport::setBaud(int baud)
+{
+    if (!m_port)
+        return false;
+    if (!m_port->setBaudRate(baud))
+        return false;
+    m_baud = baud;
+    return true;
+}
+
+qint64 SerialTransport::write(const QByteArray &bytes)
+{
+    if (!isOpen())
+        return -1;
+    return m_port->write(bytes);
+}
+
+void SerialTransport::clear()
+{
+    if (m_port)
+        m_port->clear();
+}
+
+void SerialTransport::onReadyRead()
+{
+    const QByteArray bytes = m_port->readAll();
+    if (!bytes.isEmpty())
+        Q_EMIT bytesReceived(bytes);
+}
+
+void SerialTransport::onError()
+{
+    if (!m_port)
+        return;
+    const auto err = m_port->error();
+    if (err == QSerialPort::NoError || err == QSerialPort::TimeoutError)
+        return;
+    if (err == QSerialPort::ResourceError || err == QSerialPort::ReadError || err == QSerialPort::WriteError) {
+        const QString msg = QCoreApplication::translate("imudesk::io::SerialTransport",
+                                                        "The connection to %1 was lost (%2). Check the cable; "
+                                                        "everything received so far is kept.")
+                                .arg(m_portName, m_port->errorString());
+        // Read what is still buffered before reporting.
+        const QByteArray rest = m_port->readAll();
+        if (!rest.isEmpty())
+            Q_EMIT bytesReceived(rest);
+        m_port->clearError();
+        Q_EMIT failed(msg);
+    }
+}
+
+} // namespace imudesk::io

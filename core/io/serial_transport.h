@@ -1,0 +1,46 @@
+#pragma once
+// Moves bytes to and from a serial port (QSerialPort); nothing else. Lives in the
+// session's worker thread.
+#include <QObject>
+#include <QString>
+
+class QSerialPort;
+
+namespace imudesk::io {
+
+enum class OpenErrorKind { None, NotFound, Busy, Permission, Other };
+
+class SerialTransport : public QObject {
+    Q_OBJECT
+public:
+    explicit SerialTransport(QObject *parent = nullptr);
+    ~SerialTransport() override;
+
+    // Opens 8N1, no flow control. On failure fills kind and a message that says what to do.
+    bool open(const QString &portName, int baud, QString *error, OpenErrorKind *kind = nullptr);
+    void close();
+    bool isOpen() const;
+    bool setBaud(int baud);
+    int baud() const { return m_baud; }
+    QString portName() const { return m_portName; }
+    qint64 write(const QByteArray &bytes);
+    // Discards bytes waiting in the OS buffers (input and output).
+    void clear();
+
+    static QString describeOpenError(const QString &portName, OpenErrorKind kind, const QString &osText);
+
+Q_SIGNALS:
+    void bytesReceived(const QByteArray &bytes);
+    // The port failed while open (unplugged cable, I/O error).
+    void failed(const QString &message);
+
+private:
+    void onReadyRead();
+    void onError();
+
+    QSerialPort *m_port = nullptr;
+    QString m_portName;
+    int m_baud = 0;
+};
+
+} // namespace imudesk::io

@@ -1,0 +1,57 @@
+#!/usr/bin/env bash
+# ImuDesk set-up. Run as root (or through sudo) on Debian 12; safe to run again.
+#   scripts/setup.sh demo   install packages, build a release build, open imudesk on a simulated HI14
+#   scripts/setup.sh test   install packages, build, run the whole test suite headless and the benchmark
+set -euo pipefail
+
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+root="$(cd "$here/.." && pwd)"
+mode="${1:-}"
+case "$mode" in
+  demo|test) ;;
+  *) echo "usage: $0 demo|test" >&2; exit 2 ;;
+esac
+
+jobs="$(nproc 2>/dev/null || echo 2)"
+
+install_packages() {
+  mapfile -t pkgs < <(grep -Ev '^\s*(#|$)' "$here/debian-packages.txt")
+  local missing=()
+  for p in "${pkgs[@]}"; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || missing+=("$p")
+  done
+  if ((${#missing[@]})); then
+    local sudo=()
+    [ "$(id -u)" -eq 0 ] || sudo=(sudo)
+    echo "== installing ${missing[*]}"
+    "${sudo[@]}" apt-get update -q
+    DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get install -y -q --no-install-recommends "${missing[@]}"
+  else
+    echo "== Debian packages: all present"
+  fi
+}
+
+configure_and_build() { # dir, build type, extra cmake args...
+  local dir="$1" type="$2"; shift 2
+  cmake -S "$root" -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE="$type" "$@"
+  cmake --build "$dir" -j "$jobs"
+}
+
+install_packages
+
+if [ "$mode" = demo ]; then
+  configure_and_build "$root/build/release" Release -DIMUDESK_BUILD_TESTS=OFF
+  if [ -z "${DISPLAY:-}" ] && [ -z "${WAYLAND_DISPLAY:-}" ] && [ -z "${QT_QPA_PLATFORM:-}" ]; then
+    echo "No display found: run this from a desktop session (or set QT_QPA_PLATFORM)." >&2
+    exit 1
+  fi
+  exec "$root/build/release/app/gui/imudesk" --simulate HI14 --firmware 1.7.1
+fi
+
+# test
+export QT_QPA_PLATFORM=offscreen
+configure_and_build "$root/build/test" RelWithDebInfo -DIMUDESK_BUILD_TESTS=ON -DIMUDESK_BUILD_BENCH=ON
+echo "== test suite"
+(cd "$root/build/test" && ctest --output-on-failure -j "$jobs" --timeout 600)
+echo "== benchmark (decode throughput against the manual's byte-at-a-time decoder)"
+"$root/build/test/tests/bench/bench_decode" --mb 50

@@ -1,0 +1,94 @@
+// One UART stream carries binary frames, NMEA sentences and ASCII replies.
+#include "../common/golden.h"
+#include "protocol/hipnuc/frame_decoder.h"
+#include "protocol/nmea/nmea_parser.h"
+#include "protocol/stream/stream_demux.h"
+
+#include <QRandomGenerator>
+#include <QTest>
+
+using namespace imudesk::protocol;
+
+class TstStreamDemux : public QObject {
+    Q_OBJECT
+private Q_SLOTS:
+    void mixedStream_data()
+    {
+        QTest::addColumn<int>("chunk");
+        QTest::newRow("whole") << 0;
+        QTest::newRow("bytes") << 1;
+        QTest::newRow("7") << 7;
+    }
+    void mixedStream()
+    {
+        QFETCH(int, chunk);
+        QByteArray s;
+        s += golden::hi91Frame();
+        s += "PNAME=HI14R3\r\nAPP_VER=171\r\n";
+        s += golden::hi91Frame();
+        s += QByteArray(golden::kRmc) + "\r\n";
+        s += "OK\r\n";
+        s += golden::hi91Frame();
+        s += QByteArray::fromHex("5AA5FFFF0102");          // false sync, bad length
+        s += QByteArray(nmea::buildSentence("GPGGA,010101.00,3112.5,N,12127.5,E,1,08,1.0,10.0,M,0.0,M,,").c_str());
+        s += "$GPRMC,1*00\r\n";                           // bad checksum
+        s += "ERR\r\n";
+        StreamDemux d;
+        std::vector<StreamEvent> ev;
+        const int n = chunk == 0 ? int(s.size()) : chunk;
+        for (int i = 0; i < s.size(); i += n)
+            d.feed(reinterpret_cast<const uint8_t *>(s.constData()) + i, size_t(qMin(n, int(s.size()) - i)), ev);
+        d.finish(ev);
+        QStringList kinds;
+        for (const auto &e : ev) {
+            switch (e.kind) {
+            case StreamEvent::Kind::Frame: kinds << QStringLiteral("F%1").arg(e.payload.size()); break;
+            case StreamEvent::Kind::Nmea: kinds << QStringLiteral("N:") + QString::fromStdString(e.text.substr(0, 6)); break;
+            case StreamEvent::Kind::NmeaError: kinds << QStringLiteral("NE"); break;
+            case StreamEvent::Kind::Line: kinds << QString::fromStdString(e.text); break;
+            }
+        }
+        QCOMPARE(kinds, (QStringList{"F76", "PNAME=HI14R3", "APP_VER=171", "F76", "N:$GPRMC", "OK", "F76",
+                                     "N:$GPGGA", "NE", "ERR"}));
+        QCOMPARE(d.frameCounters().frames, uint64_t(3));
+        QCOMPARE(d.counters().nmeaSentences, uint64_t(2));
+        QCOMPARE(d.counters().nmeaErrors, uint64_t(1));
+        QCOMPARE(d.counters().lines, uint64_t(4));
+        QCOMPARE(d.frameCounters().lengthErrors, uint64_t(1));
+    }
+
+    void garbageBeforeReplyIsDropped()
+    {
+        // Binary junk glued to a reply: the reply line survives, the junk is counted.
+        QByteArray s = QByteArray::fromHex("00FF8001") + "OK\r\n";
+        StreamDemux d;
+        const auto ev = d.feed(reinterpret_cast<const uint8_t *>(s.constData()), size_t(s.size()));
+        QCOMPARE(ev.size(), size_t(1));
+        QCOMPARE(ev[0].text, std::string("OK"));
+        QCOMPARE(d.counters().garbageBytes, uint64_t(4));
+    }
+
+    void overlongLineDiscarded()
+    {
+        QByteArray s(2000, 'x');
+        s += "\r\nOK\r\n";
+        StreamDemux d;
+        const auto ev = d.feed(reinterpret_cast<const uint8_t *>(s.constData()), size_t(s.size()));
+        QCOMPARE(ev.size(), size_t(1));
+        QCOMPARE(ev[0].text, std::string("OK"));
+    }
+
+    void frameInsideTextKeepsBoth()
+    {
+        // A frame arriving in the middle of an unterminated line does not lose either.
+        QByteArray s = "PNAME=HI" + golden::hi91Frame() + "14\r\n";
+        StreamDemux d;
+        const auto ev = d.feed(reinterpret_cast<const uint8_t *>(s.constData()), size_t(s.size()));
+        QCOMPARE(ev.size(), size_t(2));
+        QCOMPARE(ev[0].kind, StreamEvent::Kind::Frame);
+        QCOMPARE(ev[1].text, std::string("PNAME=HI14"));
+    }
+};
+
+QTEST_GUILESS_MAIN(TstStreamDemux)
+#include "tst_stream_demux.moc"
