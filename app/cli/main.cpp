@@ -1,1 +1,67 @@
-int main(){return 0;}
+// imudesk-cli: the headless composition root. Each command is one function over core.
+#include "cli_context.h"
+
+#include <QCoreApplication>
+#include <QLoggingCategory>
+
+#include <cstdio>
+#include <map>
+
+using namespace imudesk::cli;
+
+namespace {
+void usage(FILE *to)
+{
+    std::fputs("usage: imudesk-cli COMMAND [options]\n"
+               "  ports [--json]                         list serial ports\n"
+               "  probe PORT [--baud B] [--json]         detect baud rate and identity\n"
+               "  read PORT [--baud B] [--duration S] [--json]\n"
+               "                                         print decoded samples\n"
+               "  send PORT [--baud B] \"COMMAND\"         send an ASCII command, print the reply\n"
+               "  decode FILE [--json]                   decode a raw capture\n"
+               "  simulate --pty [--model HI14] [--firmware 1.7.1] [--baud 115200]\n"
+               "           [--motion static|spin|tumble] [--seed N]\n"
+               "                                         serve a simulated device on a pseudo-terminal\n"
+               "Run 'imudesk-cli COMMAND --help' for a command's options.\n",
+               to);
+}
+} // namespace
+
+int main(int argc, char **argv)
+{
+    QCoreApplication app(argc, argv);
+    QCoreApplication::setApplicationName(QStringLiteral("imudesk-cli"));
+    QCoreApplication::setApplicationVersion(QStringLiteral(IMUDESK_VERSION));
+    installSignalHandlers();
+    // stdout carries the results; keep informational logging off unless asked for (QT_LOGGING_RULES).
+    if (qEnvironmentVariableIsEmpty("QT_LOGGING_RULES"))
+        QLoggingCategory::setFilterRules(QStringLiteral("imudesk.*.info=false\nimudesk.*.debug=false"));
+    const QStringList args = app.arguments();
+    if (args.size() < 2) {
+        usage(stderr);
+        return ExitUsage;
+    }
+    const QString cmd = args.at(1);
+    if (cmd == QLatin1String("--help") || cmd == QLatin1String("-h") || cmd == QLatin1String("help")) {
+        usage(stdout);
+        return ExitOk;
+    }
+    if (cmd == QLatin1String("--version")) {
+        std::printf("imudesk-cli %s\n", IMUDESK_VERSION);
+        return ExitOk;
+    }
+    static const std::map<QString, CommandFn> commands = {
+        {QStringLiteral("ports"), cmdPorts},     {QStringLiteral("probe"), cmdProbe},
+        {QStringLiteral("read"), cmdRead},       {QStringLiteral("send"), cmdSend},
+        {QStringLiteral("decode"), cmdDecode},   {QStringLiteral("simulate"), cmdSimulate},
+    };
+    const auto it = commands.find(cmd);
+    if (it == commands.end()) {
+        usage(stderr);
+        return fail(QStringLiteral("unknown command '%1'").arg(cmd), ExitUsage);
+    }
+    // The sub-parser sees "imudesk-cli <cmd> args..." so its positional arguments start after the command.
+    QStringList sub = args.mid(1);
+    sub[0] = args.at(0) + QLatin1Char(' ') + cmd;
+    return it->second(sub);
+}

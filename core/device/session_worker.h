@@ -76,16 +76,16 @@ private:
     std::deque<Pending> m_queue;
     std::optional<Pending> m_current;
     std::optional<protocol::hipnuc::ReplyCollector> m_collector;
-    QTimer m_commandTimer;
-    QTimer m_idleTimer; // releases bytes held behind an unfinished frame when the line goes quiet
+    QTimer m_commandTimer{this}; // timers are parented so that moveToThread moves them
+    QTimer m_idleTimer{this}; // releases bytes held behind an unfinished frame when the line goes quiet
 
     bool m_detecting = false;
     size_t m_detectIndex = 0;
     uint64_t m_framesAtDetectStart = 0;
-    QTimer m_detectTimer;
+    QTimer m_detectTimer{this};
     QString m_portName;
 
-    QTimer m_statsTimer;
+    QTimer m_statsTimer{this};
     QElapsedTimer m_statsClock;
     SessionStats m_lastStats;
     qint64 m_lastStatsMs = 0;

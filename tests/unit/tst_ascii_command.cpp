@@ -22,6 +22,8 @@ private Q_SLOTS:
         QTest::newRow("save") << c::saveConfig() << "SAVECONFIG";
         QTest::newRow("freset") << c::factoryReset() << "FRESET";
         QTest::newRow("serial") << c::serialConfig(921600) << "SERIALCONFIG 921600";
+        QTest::newRow("serial v1.6.6") << c::serialConfig(256000, imudesk::model::ManualEdition::V166)
+                                       << "SERIALCONFIG 256000";
         QTest::newRow("serial com2") << c::serialConfig(2, 256000) << "SERIALCONFIG COM2 256000";
         QTest::newRow("vru") << c::attMode(0) << "CONFIG ATT MODE 0";
         QTest::newRow("ahrs") << c::attMode(1) << "CONFIG ATT MODE 1";
@@ -75,6 +77,8 @@ private Q_SLOTS:
         QTest::addColumn<Command>("cmd");
         namespace c = commands;
         QTest::newRow("baud 1200") << c::serialConfig(1200);
+        QTest::newRow("v1.6.6 has no 19200")
+            << c::serialConfig(19200, imudesk::model::ManualEdition::V166);
         QTest::newRow("com5") << c::serialConfig(5, 115200);
         QTest::newRow("mode 2") << c::attMode(2);
         QTest::newRow("rst 4") << c::attReset(4);

@@ -78,15 +78,18 @@ private Q_SLOTS:
         QCOMPARE(ev[0].text, std::string("OK"));
     }
 
-    void frameInsideTextKeepsBoth()
+    void frameTailDoesNotPrefixReply()
     {
-        // A frame arriving in the middle of an unterminated line does not lose either.
-        QByteArray s = "PNAME=HI" + golden::hi91Frame() + "14\r\n";
+        // Connecting mid-stream: the tail of a frame ends in printable bytes, then a
+        // whole frame, then a reply. The tail must not be glued to the reply.
+        const QByteArray f = golden::hi91Frame();
+        QByteArray s = f.right(5) + ">>" + f + "ERR\r\n";
         StreamDemux d;
         const auto ev = d.feed(reinterpret_cast<const uint8_t *>(s.constData()), size_t(s.size()));
         QCOMPARE(ev.size(), size_t(2));
         QCOMPARE(ev[0].kind, StreamEvent::Kind::Frame);
-        QCOMPARE(ev[1].text, std::string("PNAME=HI14"));
+        QCOMPARE(ev[1].text, std::string("ERR"));
+        QVERIFY(d.counters().garbageBytes >= 2);
     }
 };
 

@@ -34,8 +34,14 @@ bool parseMessage(std::string_view name, Message &out)
 
 namespace commands {
 
-bool isSupportedBaud(int baud)
+bool isSupportedBaud(int baud, model::ManualEdition edition)
 {
+    if (edition == model::ManualEdition::V166) {
+        for (int b : {9600, 115200, 256000, 460800, 921600})
+            if (b == baud)
+                return true;
+        return false;
+    }
     for (int b : {4800, 9600, 19200, 38400, 57600, 115200, 230400, 256000, 460800, 921600})
         if (b == baud)
             return true;
@@ -47,9 +53,9 @@ Command rebootBootloader() { return Command::make("REBOOT BL"); }
 Command saveConfig() { return Command::make("SAVECONFIG"); }
 Command factoryReset() { return Command::make("FRESET"); }
 
-Command serialConfig(int baud)
+Command serialConfig(int baud, model::ManualEdition edition)
 {
-    if (!isSupportedBaud(baud))
+    if (!isSupportedBaud(baud, edition))
         return Command::fail("unsupported baud rate " + std::to_string(baud));
     return Command::make("SERIALCONFIG " + std::to_string(baud));
 }

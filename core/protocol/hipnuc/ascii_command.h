@@ -2,6 +2,7 @@
 // Builders for every ASCII command of the v1.7.1 and v1.6.6 manuals. Each builder
 // checks its arguments against the manual's ranges and returns either the command
 // text (without CR/LF) or an error message.
+#include "model/device_identity.h"
 #include "model/mounting.h"
 
 #include <array>
@@ -27,13 +28,13 @@ bool parseMessage(std::string_view name, Message &out);
 
 namespace commands {
 
-// Baud rates of SERIALCONFIG (v1.7.1 list; v1.6.6 lists a subset).
-bool isSupportedBaud(int baud);
+// Baud rates of SERIALCONFIG: the v1.7.1 list, or the v1.6.6 one (9600, 115200, 256000, 460800, 921600).
+bool isSupportedBaud(int baud, model::ManualEdition edition = model::ManualEdition::V171);
 
 Command reboot();
 Command rebootBootloader();              // REBOOT BL
 Command saveConfig();
-Command serialConfig(int baud);
+Command serialConfig(int baud, model::ManualEdition edition = model::ManualEdition::V171);
 Command serialConfig(int com, int baud); // SERIALCONFIG COMn <baud>, n = 1..4
 Command factoryReset();                  // FRESET
 

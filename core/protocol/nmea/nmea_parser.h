@@ -58,7 +58,7 @@ struct ParseResult {
     bool ok() const { return error == NmeaError::None; }
 };
 
-inline constexpr size_t kMaxSentenceLength = 120; // the standard's 82 plus vendor headroom
+inline constexpr size_t kMaxSentenceLength = 160; // the standard's 82; HiPNUC $GPSXT has 21 fields
 
 // Parses one sentence, "$...*hh" with or without the trailing CR/LF.
 ParseResult parseSentence(std::string_view line);

@@ -7,6 +7,7 @@ public:
     Router(StreamDemux &d, std::vector<StreamEvent> &out) : m_d(d), m_out(out) {}
     void onFrame(const uint8_t *payload, size_t len) override
     {
+        m_d.dropPartialLine(); // a frame boundary ends any text: a half line is a frame's tail
         StreamEvent e;
         e.kind = StreamEvent::Kind::Frame;
         e.payload.assign(payload, payload + len);
@@ -50,6 +51,13 @@ void StreamDemux::resetCounters()
 {
     m_decoder.resetCounters();
     m_counters = Counters{};
+}
+
+void StreamDemux::dropPartialLine()
+{
+    m_counters.garbageBytes += m_line.size();
+    m_line.clear();
+    m_lineOverflow = false;
 }
 
 void StreamDemux::textBytes(const uint8_t *p, size_t n, std::vector<StreamEvent> &out)

@@ -54,6 +54,7 @@ private:
     class Router;
     void textBytes(const uint8_t *p, size_t n, std::vector<StreamEvent> &out);
     void endLine(std::vector<StreamEvent> &out);
+    void dropPartialLine();
 
     hipnuc::FrameDecoder m_decoder;
     std::string m_line;

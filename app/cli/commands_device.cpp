@@ -1,0 +1,316 @@
+// imudesk-cli commands that talk to a device: ports, probe, read, send, simulate.
+#include "cli_context.h"
+#include "format/sample_json.h"
+#include "sim/pty_simulator.h"
+
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QSerialPortInfo>
+#include <QThread>
+
+#include <cstdio>
+
+namespace imudesk::cli {
+
+namespace {
+
+QCommandLineOption baudOption()
+{
+    return QCommandLineOption(QStringLiteral("baud"), QStringLiteral("Baud rate (default: auto-detect)."),
+                              QStringLiteral("B"));
+}
+QCommandLineOption jsonOption()
+{
+    return QCommandLineOption(QStringLiteral("json"), QStringLiteral("Machine-readable JSON output."));
+}
+
+bool baudFrom(const QCommandLineParser &p, int *baud)
+{
+    *baud = 0;
+    if (!p.isSet(QStringLiteral("baud")))
+        return true;
+    bool ok = false;
+    *baud = p.value(QStringLiteral("baud")).toInt(&ok);
+    if (!ok || *baud <= 0) {
+        fail(QStringLiteral("--baud needs a positive number, got '%1'").arg(p.value(QStringLiteral("baud"))),
+             ExitUsage);
+        return false;
+    }
+    return true;
+}
+
+QJsonObject identityJson(const model::DeviceIdentity &id)
+{
+    QJsonObject o;
+    o[QStringLiteral("product")] = QString::fromStdString(id.productName);
+    o[QStringLiteral("firmware")] = id.firmware ? QString::fromStdString(id.firmware->toString()) : QString();
+    o[QStringLiteral("bootloader")] = id.bootloader ? QString::fromStdString(id.bootloader->toString()) : QString();
+    o[QStringLiteral("serial")] = QString::fromStdString(id.serial);
+    o[QStringLiteral("build")] = QString::fromStdString(id.build);
+    o[QStringLiteral("family")] = QString::fromLatin1(model::familyName(id.family()));
+    return o;
+}
+
+} // namespace
+
+int cmdPorts(const QStringList &args)
+{
+    QCommandLineParser p;
+    p.addOption(jsonOption());
+    if (!parseArgs(p, args, QStringLiteral("imudesk-cli ports [--json]")))
+        return ExitUsage;
+    const auto ports = QSerialPortInfo::availablePorts();
+    if (p.isSet(QStringLiteral("json"))) {
+        QJsonArray arr;
+        for (const auto &info : ports) {
+            QJsonObject o;
+            o[QStringLiteral("port")] = info.systemLocation();
+            o[QStringLiteral("name")] = info.portName();
+            o[QStringLiteral("description")] = info.description();
+            o[QStringLiteral("manufacturer")] = info.manufacturer();
+            o[QStringLiteral("serial_number")] = info.serialNumber();
+            if (info.hasVendorIdentifier())
+                o[QStringLiteral("vid")] = QStringLiteral("%1").arg(info.vendorIdentifier(), 4, 16, QLatin1Char('0'));
+            if (info.hasProductIdentifier())
+                o[QStringLiteral("pid")] = QStringLiteral("%1").arg(info.productIdentifier(), 4, 16, QLatin1Char('0'));
+            arr.append(o);
+        }
+        out(QString::fromUtf8(QJsonDocument(arr).toJson(QJsonDocument::Compact)));
+        return ExitOk;
+    }
+    if (ports.isEmpty())
+        out(QStringLiteral("no serial ports found (a simulated device: imudesk-cli simulate --pty)"));
+    for (const auto &info : ports)
+        out(QStringLiteral("%1\t%2\t%3").arg(info.systemLocation(), info.description(), info.serialNumber()));
+    return ExitOk;
+}
+
+int cmdProbe(const QStringList &args)
+{
+    QCommandLineParser p;
+    p.addOption(baudOption());
+    p.addOption(jsonOption());
+    p.addPositionalArgument(QStringLiteral("PORT"), QStringLiteral("Serial port, e.g. /dev/ttyUSB0"));
+    if (!parseArgs(p, args, QStringLiteral("imudesk-cli probe PORT [--baud B] [--json]")))
+        return ExitUsage;
+    if (p.positionalArguments().size() != 1)
+        return fail(QStringLiteral("probe needs exactly one PORT"), ExitUsage);
+    int baud = 0;
+    if (!baudFrom(p, &baud))
+        return ExitUsage;
+    device::DeviceSession session;
+    model::DeviceIdentity id;
+    int found = baud;
+    QString error;
+    const QString port = p.positionalArguments().front();
+    if (!connectSession(session, port, baud, &id, &found, &error))
+        return fail(error, interrupted() ? ExitInterrupted : ExitFailure);
+    if (p.isSet(QStringLiteral("json"))) {
+        QJsonObject o = identityJson(id);
+        o[QStringLiteral("port")] = port;
+        o[QStringLiteral("baud")] = found;
+        o[QStringLiteral("identified")] = id.usable();
+        out(QString::fromUtf8(QJsonDocument(o).toJson(QJsonDocument::Compact)));
+    } else {
+        out(QStringLiteral("port: %1").arg(port));
+        out(QStringLiteral("baud: %1").arg(found));
+        if (id.usable()) {
+            out(QStringLiteral("product: %1").arg(QString::fromStdString(id.productName)));
+            out(QStringLiteral("firmware: %1").arg(id.firmware ? QString::fromStdString(id.firmware->toString()) : QString()));
+            out(QStringLiteral("bootloader: %1")
+                    .arg(id.bootloader ? QString::fromStdString(id.bootloader->toString()) : QString()));
+            out(QStringLiteral("serial: %1").arg(QString::fromStdString(id.serial)));
+        } else {
+            out(QStringLiteral("identity: not answered (the device streams frames but ignored LOG VERSION)"));
+        }
+    }
+    return ExitOk;
+}
+
+int cmdRead(const QStringList &args)
+{
+    QCommandLineParser p;
+    p.addOption(baudOption());
+    p.addOption(jsonOption());
+    p.addOption(QCommandLineOption(QStringLiteral("duration"), QStringLiteral("Seconds to read (default: until Ctrl+C)."),
+                                   QStringLiteral("S")));
+    p.addPositionalArgument(QStringLiteral("PORT"), QStringLiteral("Serial port"));
+    if (!parseArgs(p, args, QStringLiteral("imudesk-cli read PORT [--baud B] [--duration S] [--json]")))
+        return ExitUsage;
+    if (p.positionalArguments().size() != 1)
+        return fail(QStringLiteral("read needs exactly one PORT"), ExitUsage);
+    int baud = 0;
+    if (!baudFrom(p, &baud))
+        return ExitUsage;
+    double duration = -1;
+    if (p.isSet(QStringLiteral("duration"))) {
+        bool ok = false;
+        duration = p.value(QStringLiteral("duration")).toDouble(&ok);
+        if (!ok || duration <= 0)
+            return fail(QStringLiteral("--duration needs a positive number of seconds"), ExitUsage);
+    }
+    const bool json = p.isSet(QStringLiteral("json"));
+    device::DeviceSession session;
+    QString error;
+    model::DeviceIdentity id;
+    int found = baud;
+    if (!connectSession(session, p.positionalArguments().front(), baud, &id, &found, &error))
+        return fail(error, interrupted() ? ExitInterrupted : ExitFailure);
+    bool lost = false;
+    QString lostMessage;
+    QObject::connect(&session, &device::DeviceSession::errorOccurred, [&](const QString &m) {
+        lost = true;
+        lostMessage = m;
+    });
+    device::SessionStats stats;
+    QObject::connect(&session, &device::DeviceSession::statsUpdated,
+                     [&](const device::SessionStats &s) { stats = s; });
+    uint64_t seq = session.store().totalAppended();
+    uint64_t printed = 0;
+    int64_t lastTextNs = 0;
+    auto drain = [&] {
+        const auto batch = session.store().since(seq);
+        seq += batch.size();
+        for (const auto &s : batch) {
+            ++printed;
+            if (json) {
+                outRaw(format::sampleToJson(s));
+            } else if (s.hostTimeNs - lastTextNs >= 100'000'000) { // text: 10 lines/s at most
+                lastTextNs = s.hostTimeNs;
+                std::printf("%s t=%.0f ms acc=[%.3f %.3f %.3f] G gyr=[%.2f %.2f %.2f] deg/s "
+                            "rpy=[%.2f %.2f %.2f] deg\n",
+                            s.source.c_str(), s.deviceTimeMs, s.acc.x, s.acc.y, s.acc.z, s.gyr.x, s.gyr.y, s.gyr.z,
+                            s.roll, s.pitch, s.yaw);
+            }
+        }
+        std::fflush(stdout);
+        return false;
+    };
+    waitFor([&] { return drain() || lost; }, duration > 0 ? int(duration * 1000) : -1);
+    drain();
+    if (!json && !lost) { // one more statistics report, so the summary counts the whole run
+        const uint64_t seen = stats.bytesIn;
+        waitFor([&] { return stats.bytesIn != seen; }, 700);
+    }
+    if (!json)
+        out(QStringLiteral("samples: %1, frames: %2, crc errors: %3, bytes skipped: %4")
+                .arg(printed)
+                .arg(stats.frames)
+                .arg(stats.crcErrors)
+                .arg(stats.bytesSkipped));
+    if (lost)
+        return fail(lostMessage);
+    return ExitOk;
+}
+
+int cmdSend(const QStringList &args)
+{
+    QCommandLineParser p;
+    p.addOption(baudOption());
+    p.addOption(QCommandLineOption(QStringLiteral("timeout"), QStringLiteral("Reply timeout in ms (default 1000)."),
+                                   QStringLiteral("MS"), QStringLiteral("1000")));
+    p.addPositionalArgument(QStringLiteral("PORT"), QStringLiteral("Serial port"));
+    p.addPositionalArgument(QStringLiteral("COMMAND"), QStringLiteral("ASCII command, e.g. \"LOG VERSION\""));
+    if (!parseArgs(p, args, QStringLiteral("imudesk-cli send PORT [--baud B] \"COMMAND\"")))
+        return ExitUsage;
+    if (p.positionalArguments().size() != 2)
+        return fail(QStringLiteral("send needs PORT and one quoted COMMAND"), ExitUsage);
+    int baud = 0;
+    if (!baudFrom(p, &baud))
+        return ExitUsage;
+    const int timeoutMs = p.value(QStringLiteral("timeout")).toInt();
+    if (timeoutMs <= 0)
+        return fail(QStringLiteral("--timeout needs a positive number of ms"), ExitUsage);
+    const QString command = p.positionalArguments().at(1).trimmed();
+    if (command.isEmpty() || command.contains(QLatin1Char('\r')) || command.contains(QLatin1Char('\n')))
+        return fail(QStringLiteral("the command must be one non-empty line"), ExitUsage);
+    device::DeviceSession session;
+    QString error;
+    if (!connectSession(session, p.positionalArguments().front(), baud, nullptr, nullptr, &error))
+        return fail(error, interrupted() ? ExitInterrupted : ExitFailure);
+    std::optional<protocol::hipnuc::AsciiReply> reply;
+    const quint64 id = session.sendCommand(command, timeoutMs);
+    QObject::connect(&session, &device::DeviceSession::commandFinished,
+                     [&](quint64 done, const protocol::hipnuc::AsciiReply &r) {
+                         if (done == id)
+                             reply = r;
+                     });
+    waitFor([&] { return reply.has_value(); }, timeoutMs + 5000);
+    if (!reply)
+        return fail(QStringLiteral("interrupted"), ExitInterrupted);
+    for (const auto &line : reply->lines)
+        out(QString::fromStdString(line));
+    using S = protocol::hipnuc::AsciiReply::Status;
+    switch (reply->status) {
+    case S::Ok:
+        out(QStringLiteral("OK"));
+        return ExitOk;
+    case S::Error:
+        return fail(QStringLiteral("device answered %1 to '%2'").arg(QString::fromStdString(reply->errorLine), command));
+    case S::Timeout:
+        return fail(QStringLiteral("no reply to '%1' within %2 ms (the device does not answer commands it does not "
+                                   "know)")
+                        .arg(command)
+                        .arg(timeoutMs));
+    default:
+        return fail(QStringLiteral("'%1' was not completed: %2")
+                        .arg(command, QString::fromStdString(reply->errorLine)));
+    }
+}
+
+int cmdSimulate(const QStringList &args)
+{
+    QCommandLineParser p;
+    p.addOption(QCommandLineOption(QStringLiteral("pty"), QStringLiteral("Serve the device on a pseudo-terminal.")));
+    p.addOption(QCommandLineOption(QStringLiteral("model"), QStringLiteral("Product model (default HI14)."),
+                                   QStringLiteral("MODEL"), QStringLiteral("HI14")));
+    p.addOption(QCommandLineOption(QStringLiteral("firmware"), QStringLiteral("1.7.1 (default) or 1.6.6."),
+                                   QStringLiteral("VERSION"), QStringLiteral("1.7.1")));
+    p.addOption(QCommandLineOption(QStringLiteral("baud"), QStringLiteral("Device baud rate (default 115200)."),
+                                   QStringLiteral("B"), QStringLiteral("115200")));
+    p.addOption(QCommandLineOption(QStringLiteral("motion"), QStringLiteral("static (default), spin or tumble."),
+                                   QStringLiteral("MOTION"), QStringLiteral("static")));
+    p.addOption(QCommandLineOption(QStringLiteral("seed"), QStringLiteral("Random seed (default 1)."),
+                                   QStringLiteral("N"), QStringLiteral("1")));
+    const QString usage = QStringLiteral("imudesk-cli simulate --pty [--model HI14] [--firmware 1.7.1] [--baud 115200] "
+                                         "[--motion static|spin|tumble] [--seed N]");
+    if (!parseArgs(p, args, usage))
+        return ExitUsage;
+    if (!p.isSet(QStringLiteral("pty")))
+        return fail(QStringLiteral("simulate needs --pty (usage: %1)").arg(usage), ExitUsage);
+    sim::SimOptions o;
+    o.model = p.value(QStringLiteral("model")).toStdString();
+    o.firmware = p.value(QStringLiteral("firmware")).toStdString();
+    const auto fw = model::FirmwareVersion::parse(o.firmware);
+    if (!fw || *fw < model::FirmwareVersion{1, 5, 5} || *fw > model::FirmwareVersion{1, 7, 1})
+        return fail(QStringLiteral("--firmware must be a version from 1.5.5 to 1.7.1"), ExitUsage);
+    bool ok = false;
+    o.baud = p.value(QStringLiteral("baud")).toInt(&ok);
+    if (!ok || !protocol::hipnuc::commands::isSupportedBaud(o.baud))
+        return fail(QStringLiteral("--baud must be one of 4800 9600 19200 38400 57600 115200 230400 256000 460800 921600"),
+                    ExitUsage);
+    const QString motion = p.value(QStringLiteral("motion"));
+    if (motion == QLatin1String("static"))
+        o.motion = sim::Motion::Static;
+    else if (motion == QLatin1String("spin"))
+        o.motion = sim::Motion::Spin;
+    else if (motion == QLatin1String("tumble"))
+        o.motion = sim::Motion::Tumble;
+    else
+        return fail(QStringLiteral("--motion must be static, spin or tumble"), ExitUsage);
+    o.seed = p.value(QStringLiteral("seed")).toULongLong(&ok);
+    if (!ok)
+        return fail(QStringLiteral("--seed needs a whole number"), ExitUsage);
+
+    sim::PtySimulator simulator(o);
+    QString error;
+    if (!simulator.start(&error))
+        return fail(QStringLiteral("could not create a pseudo-terminal: %1").arg(error));
+    out(QStringLiteral("pty: %1").arg(simulator.devicePath()));
+    waitFor([] { return false; }, -1); // until SIGINT/SIGTERM
+    simulator.stop();
+    return ExitOk;
+}
+
+} // namespace imudesk::cli

@@ -1,0 +1,128 @@
+#include "motion_model.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <string>
+
+namespace imudesk::sim {
+namespace {
+
+constexpr double kDeg = 0.017453292519943295;
+
+Eigen::Quaterniond axisAngle(double deg, const Eigen::Vector3d &axis)
+{
+    return Eigen::Quaterniond(Eigen::AngleAxisd(deg * kDeg, axis));
+}
+
+// splitmix64: a seed-to-number mapping that does not depend on the standard library.
+uint64_t mix(uint64_t x)
+{
+    x += 0x9E3779B97F4A7C15ull;
+    x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ull;
+    x = (x ^ (x >> 27)) * 0x94D049BB133111EBull;
+    return x ^ (x >> 31);
+}
+
+double unitFromSeed(uint64_t seed, uint64_t salt)
+{
+    return double(mix(seed ^ (salt * 0xD1B54A32D192ED03ull)) >> 11) * (1.0 / 9007199254740992.0);
+}
+
+} // namespace
+
+const char *motionName(Motion m)
+{
+    switch (m) {
+    case Motion::Static: return "static";
+    case Motion::Spin: return "spin";
+    case Motion::Tumble: return "tumble";
+    }
+    return "?";
+}
+
+bool parseMotion(std::string_view text, Motion &out)
+{
+    std::string t;
+    for (char c : text)
+        t.push_back(char(std::tolower(uint8_t(c))));
+    for (Motion m : {Motion::Static, Motion::Spin, Motion::Tumble})
+        if (t == motionName(m)) {
+            out = m;
+            return true;
+        }
+    return false;
+}
+
+Eigen::Quaterniond canonical(const Eigen::Quaterniond &q)
+{
+    Eigen::Quaterniond r = q.normalized();
+    if (r.w() < 0)
+        r.coeffs() = -r.coeffs();
+    return r;
+}
+
+EulerAngles eulerEnu312(const Eigen::Quaterniond &q)
+{
+    const double q0 = q.w(), q1 = q.x(), q2 = q.y(), q3 = q.z();
+    const double s = std::clamp(2.0 * (q0 * q1 + q2 * q3), -1.0, 1.0);
+    EulerAngles e;
+    e.pitch = std::asin(s) / kDeg;
+    e.roll = -std::atan2(2.0 * (q1 * q3 - q0 * q2), q0 * q0 - q1 * q1 - q2 * q2 + q3 * q3) / kDeg;
+    e.yaw = -std::atan2(2.0 * (q1 * q2 - q0 * q3), q0 * q0 - q1 * q1 + q2 * q2 - q3 * q3) / kDeg;
+    // atan2 returns +-0; keep the printed value free of "-0".
+    if (e.roll == 0) e.roll = 0;
+    if (e.yaw == 0) e.yaw = 0;
+    return e;
+}
+
+Eigen::Quaterniond quatFromEnu312(const EulerAngles &e)
+{
+    const Eigen::Quaterniond q = axisAngle(e.yaw, Eigen::Vector3d::UnitZ()) * axisAngle(e.pitch, Eigen::Vector3d::UnitX())
+        * axisAngle(e.roll, Eigen::Vector3d::UnitY());
+    return canonical(q);
+}
+
+MotionModel::MotionModel() : MotionModel(Options{}) {}
+
+MotionModel::MotionModel(Options options) : m_options(options)
+{
+    m_headingDeg = 360.0 * unitFromSeed(options.seed, 1);
+    m_phaseDeg = 360.0 * unitFromSeed(options.seed, 2);
+}
+
+MotionState MotionModel::at(double t) const
+{
+    MotionState s;
+    switch (m_options.motion) {
+    case Motion::Static:
+        s.q = quatFromEnu312({kStaticRollDeg, kStaticPitchDeg, kStaticYawDeg});
+        s.rateDps.setZero();
+        s.moving = false;
+        break;
+    case Motion::Spin:
+        s.q = canonical(axisAngle(m_headingDeg + kSpinRateDps * t, Eigen::Vector3d::UnitZ()));
+        s.rateDps = Eigen::Vector3d(0, 0, kSpinRateDps);
+        s.moving = true;
+        break;
+    case Motion::Tumble: {
+        const double a = m_headingDeg + kTumbleRateZDps * t;
+        const double b = kTumbleRateXDps * t;
+        const double c = m_phaseDeg + kTumbleRateYDps * t;
+        const Eigen::Quaterniond qa = axisAngle(a, Eigen::Vector3d::UnitZ());
+        const Eigen::Quaterniond qb = axisAngle(b, Eigen::Vector3d::UnitX());
+        const Eigen::Quaterniond qc = axisAngle(c, Eigen::Vector3d::UnitY());
+        s.q = canonical(qa * qb * qc);
+        // R = Ra Rb Rc: w_body = Rc^T Rb^T (0,0,a') + Rc^T (b',0,0) + (0,c',0).
+        const Eigen::Matrix3d rbT = qb.toRotationMatrix().transpose();
+        const Eigen::Matrix3d rcT = qc.toRotationMatrix().transpose();
+        s.rateDps = rcT * rbT * Eigen::Vector3d(0, 0, kTumbleRateZDps) + rcT * Eigen::Vector3d(kTumbleRateXDps, 0, 0)
+            + Eigen::Vector3d(0, kTumbleRateYDps, 0);
+        s.moving = true;
+        break;
+    }
+    }
+    return s;
+}
+
+} // namespace imudesk::sim

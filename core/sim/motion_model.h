@@ -1,0 +1,82 @@
+#pragma once
+// True motion of a simulated IMU: attitude (body -> navigation, ENU) and body rate as
+// functions of time. Deterministic: the same options give the same trajectory.
+//
+// Frames: the navigation frame is ENU (x east, y north, z up). The body frame is the
+// sensor frame of the module (x right, y forward, z up when the module lies flat in
+// its default mounting). q rotates body vectors into the navigation frame:
+// v_nav = R(q) * v_body.
+//
+// Euler angles follow the manuals' appendix 1, ENU 3-1-2 (Z first, then X, then Y):
+//   R = Rz(yaw) * Rx(pitch) * Ry(roll)
+//   pitch = asin(2(q0q1 + q2q3))
+//   roll  = -atan2(2(q1q3 - q0q2), q0^2 - q1^2 - q2^2 + q3^2)
+//   yaw   = -atan2(2(q1q2 - q0q3), q0^2 - q1^2 + q2^2 - q3^2)
+// yaw is counter-clockwise positive, -180..180; pitch -90..90; roll -180..180.
+#include <Eigen/Geometry>
+
+#include <cstdint>
+#include <string_view>
+
+namespace imudesk::sim {
+
+enum class Motion {
+    Static, // a fixed, slightly tilted attitude
+    Spin,   // level, 30 deg/s about body Z (yaw), as on a turntable
+    Tumble, // slow rotation whose axis precesses: every attitude within about a minute
+};
+const char *motionName(Motion m);
+// "static", "spin", "tumble" (case-insensitive).
+bool parseMotion(std::string_view text, Motion &out);
+
+struct EulerAngles {
+    double roll = 0, pitch = 0, yaw = 0; // deg
+};
+
+// Appendix 1 formulas (ENU 3-1-2). q must be normalised.
+EulerAngles eulerEnu312(const Eigen::Quaterniond &q);
+// The inverse: q = qz(yaw) * qx(pitch) * qy(roll), returned with w >= 0.
+Eigen::Quaterniond quatFromEnu312(const EulerAngles &e);
+// Sign convention used on the wire: w >= 0, normalised.
+Eigen::Quaterniond canonical(const Eigen::Quaterniond &q);
+
+struct MotionState {
+    Eigen::Quaterniond q = Eigen::Quaterniond::Identity(); // body -> nav (ENU)
+    Eigen::Vector3d rateDps = Eigen::Vector3d::Zero();     // angular rate, body frame, deg/s
+    bool moving = false;                                   // false only for Motion::Static
+};
+
+class MotionModel {
+public:
+    struct Options {
+        uint64_t seed = 1;              // picks the initial heading of Spin and the phases of Tumble
+        Motion motion = Motion::Static;
+    };
+
+    static constexpr double kSpinRateDps = 30.0;
+    // Tumble: R(t) = Rz(h0 + a t) * Rx(b t) * Ry(c0 + c t); |rate| stays below 56 deg/s and the
+    // field direction in the body frame covers 50 of 72 direction cells within about 52 s.
+    static constexpr double kTumbleRateZDps = 22.0;
+    static constexpr double kTumbleRateXDps = 17.0;
+    static constexpr double kTumbleRateYDps = 31.0;
+    // Static attitude (deg).
+    static constexpr double kStaticRollDeg = 1.5;
+    static constexpr double kStaticPitchDeg = -2.5;
+    static constexpr double kStaticYawDeg = 35.0;
+
+    MotionModel();
+    explicit MotionModel(Options options);
+
+    const Options &options() const { return m_options; }
+    Motion motion() const { return m_options.motion; }
+
+    // True state at t seconds after the start of the simulation.
+    MotionState at(double tSeconds) const;
+
+private:
+    Options m_options;
+    double m_headingDeg = 0; // initial heading of Spin/Tumble
+    double m_phaseDeg = 0;   // initial Y angle of Tumble
+};
+
+} // namespace imudesk::sim

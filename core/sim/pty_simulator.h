@@ -1,0 +1,78 @@
+#pragma once
+// Serves one HipnucSimulator on a Linux pseudo-terminal, so that real serial code
+// (QSerialPort, the CLI, the GUI) can open it like a USB serial adapter.
+//
+// The simulator runs in its own QThread: a QSocketNotifier reads the master side and
+// a ~1 ms timer advances the simulated clock (steady clock, µs since start()) and
+// writes what the module sends. Clients open devicePath() (the slave, /dev/pts/N).
+//
+// UART model: on every read and write the line speed the client set on the slave is
+// read (readLineSpeed on the master; termios2 for non-standard rates such as 256000).
+// When it differs from the module's baud, bytes from the client are discarded and
+// every byte the module sends is replaced by deterministic garbage (about
+// clientBaud/moduleBaud bytes per byte sent), as a module heard at the wrong baud.
+// While no client has the slave open, output is lost (nothing is buffered for the next
+// client). A reader that stalls loses whole data frames once kMaxPendingBytes are
+// waiting; replies are kept (bounded by kHardLimitBytes).
+#include "sim/hipnuc_simulator.h"
+
+#include <QCoreApplication>
+#include <QString>
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+
+QT_BEGIN_NAMESPACE
+class QThread;
+class QObject;
+QT_END_NAMESPACE
+
+namespace imudesk::sim {
+
+class PtySimulator {
+    Q_DECLARE_TR_FUNCTIONS(PtySimulator)
+
+public:
+    static constexpr size_t kMaxPendingBytes = 16 * 1024;
+    static constexpr size_t kHardLimitBytes = 64 * 1024;
+    static constexpr int kTickMs = 1;
+
+    struct Stats {
+        uint64_t bytesIn = 0;          // from the client, given to the module
+        uint64_t bytesDiscarded = 0;   // from the client at the wrong speed
+        uint64_t bytesOut = 0;         // written to the client
+        uint64_t bytesGarbled = 0;     // module bytes replaced by garbage
+        uint64_t bytesLost = 0;        // module bytes sent while no client was listening
+        uint64_t chunksDropped = 0;    // frames dropped because the reader stalled
+    };
+
+    explicit PtySimulator(SimOptions options = {});
+    ~PtySimulator();
+    PtySimulator(const PtySimulator &) = delete;
+    PtySimulator &operator=(const PtySimulator &) = delete;
+
+    // Opens the pseudo-terminal and starts the simulator thread; blocks until ready.
+    bool start(QString *error = nullptr);
+    // Stops the thread and closes the master. Safe to call twice.
+    void stop();
+    bool isRunning() const;
+    // The slave path (e.g. "/dev/pts/3"); empty before start().
+    QString devicePath() const;
+    // Runs fn on the simulator thread and waits for it (e.g. powerCycle, inspect state).
+    void withDevice(const std::function<void(HipnucSimulator &)> &fn);
+    Stats stats() const;
+
+    // Line speed (bit/s) of a tty or pty (master: the slave's settings); -1 on failure.
+    static int readLineSpeed(int fd);
+
+private:
+    struct Engine;
+    SimOptions m_options;
+    std::unique_ptr<Engine> m_engine;
+    QThread *m_thread = nullptr;
+    QObject *m_context = nullptr; // lives in m_thread
+    QString m_path;
+};
+
+} // namespace imudesk::sim

@@ -1,0 +1,58 @@
+#pragma once
+// Synthesises what a module's sensors measure for a true motion state, in the sensor
+// (body) frame and the manual's units:
+//   acc (G)    = R^T * (0, 0, 1)            specific force of gravity in ENU (no centripetal term)
+//   gyr (deg/s) = true rate + bias + white noise
+//   mag (uT)   = S * (R^T * B_nav) + h + white noise, B_nav = (0, 28, -42) uT in ENU
+//   pressure about 100 kPa, temperature about 30 degC, each with a little noise.
+// Bias, hard iron h and soft iron S are drawn from the seed; the noise comes from a
+// std::mt19937_64 seeded with it, so a given seed and call sequence repeat exactly.
+#include "motion_model.h"
+
+#include <Eigen/Core>
+
+#include <cstdint>
+#include <random>
+
+namespace imudesk::sim {
+
+struct SensorReading {
+    Eigen::Vector3d acc = Eigen::Vector3d::Zero(); // G
+    Eigen::Vector3d gyr = Eigen::Vector3d::Zero(); // deg/s
+    Eigen::Vector3d mag = Eigen::Vector3d::Zero(); // uT
+    double pressurePa = 0;
+    double temperatureC = 0;
+};
+
+class SensorModel {
+public:
+    static constexpr double kAccNoiseG = 0.0008;
+    static constexpr double kGyrNoiseDps = 0.02;
+    static constexpr double kMagNoiseUt = 0.15;
+    static constexpr double kPressureNoisePa = 4.0;
+    static constexpr double kPressurePa = 100000.0;
+    static constexpr double kTemperatureC = 30.0;
+
+    // Earth field in the ENU navigation frame: 28 uT horizontal (north), 42 uT down.
+    static Eigen::Vector3d fieldNav() { return {0.0, 28.0, -42.0}; }
+
+    explicit SensorModel(uint64_t seed = 1);
+
+    // One noisy measurement (advances the random generator).
+    SensorReading sample(const MotionState &s);
+    // The same without white noise: bias and iron effects only (does not touch the generator).
+    SensorReading ideal(const MotionState &s) const;
+
+    const Eigen::Vector3d &gyroBias() const { return m_gyroBias; }
+    const Eigen::Vector3d &hardIron() const { return m_hardIron; }
+    const Eigen::Matrix3d &softIron() const { return m_softIron; }
+
+private:
+    std::mt19937_64 m_rng;
+    std::normal_distribution<double> m_normal{0.0, 1.0};
+    Eigen::Vector3d m_gyroBias;
+    Eigen::Vector3d m_hardIron;
+    Eigen::Matrix3d m_softIron;
+};
+
+} // namespace imudesk::sim

@@ -1,0 +1,169 @@
+// imudesk-cli end to end: simulate --pty, probe, read, send, decode, exit codes.
+#include "../common/golden.h"
+#include "protocol/hipnuc/frame_decoder.h"
+#include "protocol/hipnuc/payloads.h"
+
+#include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include <csignal>
+
+namespace {
+
+struct Result {
+    int code = -1;
+    QString out, err;
+};
+
+Result run(const QStringList &args, int timeoutMs = 30000)
+{
+    QProcess p;
+    p.start(QStringLiteral(IMUDESK_CLI_PATH), args);
+    Result r;
+    if (!p.waitForFinished(timeoutMs)) {
+        p.kill();
+        p.waitForFinished();
+        r.err = QStringLiteral("timed out");
+        return r;
+    }
+    r.code = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1;
+    r.out = QString::fromUtf8(p.readAllStandardOutput());
+    r.err = QString::fromUtf8(p.readAllStandardError());
+    return r;
+}
+
+} // namespace
+
+class TstCli : public QObject {
+    Q_OBJECT
+    QProcess m_sim;
+    QString m_pty;
+
+private Q_SLOTS:
+    void initTestCase()
+    {
+        m_sim.start(QStringLiteral(IMUDESK_CLI_PATH),
+                    {"simulate", "--pty", "--baud", "230400", "--motion", "tumble", "--seed", "3"});
+        QVERIFY(m_sim.waitForStarted());
+        QTRY_VERIFY_WITH_TIMEOUT(m_sim.canReadLine(), 10000);
+        const QString first = QString::fromUtf8(m_sim.readLine()).trimmed();
+        QVERIFY2(first.startsWith(QStringLiteral("pty: /dev/")), qPrintable(first));
+        m_pty = first.mid(5);
+    }
+
+    void cleanupTestCase()
+    {
+        ::kill(pid_t(m_sim.processId()), SIGTERM);
+        QVERIFY(m_sim.waitForFinished(5000));
+        QCOMPARE(m_sim.exitStatus(), QProcess::NormalExit);
+        QCOMPARE(m_sim.exitCode(), 0);
+    }
+
+    void probeDetectsBaudAndIdentity()
+    {
+        const auto r = run({"probe", m_pty, "--json"});
+        QVERIFY2(r.code == 0, qPrintable(r.err));
+        const auto o = QJsonDocument::fromJson(r.out.toUtf8()).object();
+        QCOMPARE(o.value("baud").toInt(), 230400);
+        QCOMPARE(o.value("product").toString(), QStringLiteral("HI14R3"));
+        QCOMPARE(o.value("firmware").toString(), QStringLiteral("1.7.1"));
+        QVERIFY(!o.value("serial").toString().isEmpty());
+        const auto text = run({"probe", m_pty, "--baud", "230400"});
+        QCOMPARE(text.code, 0);
+        QVERIFY(text.out.contains(QStringLiteral("product: HI14R3")));
+    }
+
+    void sendPrintsReply()
+    {
+        const auto r = run({"send", m_pty, "--baud", "230400", "LOG VERSION"});
+        QVERIFY2(r.code == 0, qPrintable(r.err));
+        QVERIFY(r.out.contains(QStringLiteral("PNAME=HI14R3")));
+        QVERIFY(r.out.contains(QStringLiteral("APP_VER=171")));
+        QVERIFY(r.out.trimmed().endsWith(QStringLiteral("OK")));
+    }
+
+    void sendErrAndTimeoutFail()
+    {
+        const auto e = run({"send", m_pty, "--baud", "230400", "CONFIG ATT MODE 9"});
+        QCOMPARE(e.code, 1);
+        QVERIFY(e.err.contains(QStringLiteral("ERR")));
+        QCOMPARE(e.err.trimmed().count(QLatin1Char('\n')), 0); // one line
+        const auto t = run({"send", m_pty, "--baud", "230400", "--timeout", "300", "FOO BAR"});
+        QCOMPARE(t.code, 1);
+        QVERIFY(t.err.contains(QStringLiteral("no reply")));
+    }
+
+    void readJsonLines()
+    {
+        const auto r = run({"read", m_pty, "--baud", "230400", "--duration", "1", "--json"});
+        QVERIFY2(r.code == 0, qPrintable(r.err));
+        const auto lines = r.out.split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+        QVERIFY2(lines.size() >= 80 && lines.size() <= 120, qPrintable(QString::number(lines.size())));
+        for (const auto &l : lines) {
+            const auto o = QJsonDocument::fromJson(l.toUtf8()).object();
+            QCOMPARE(o.value("type").toString(), QStringLiteral("HI91"));
+            QCOMPARE(o.value("quat").toArray().size(), 4);
+        }
+    }
+
+    void decodeCapture()
+    {
+        using namespace imudesk::protocol::hipnuc;
+        QTemporaryDir dir;
+        QByteArray capture;
+        int intact = 0;
+        for (int i = 0; i < 1000; ++i) {
+            Hi91 h;
+            h.systemTime = uint32_t(i);
+            auto f = buildFrame(encode(h));
+            if (i % 100 == 7)
+                f[20] ^= 0xFF; // corrupted
+            else
+                ++intact;
+            capture.append(reinterpret_cast<const char *>(f.data()), qsizetype(f.size()));
+            if (i % 50 == 0)
+                capture.append("\x5A\x00garbage", 9);
+        }
+        capture.append(golden::kRmc);
+        capture.append("\r\n");
+        const QString path = dir.filePath(QStringLiteral("capture.bin"));
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write(capture);
+        f.close();
+        const auto r = run({"decode", path, "--json"});
+        QVERIFY2(r.code == 0, qPrintable(r.err));
+        const auto lines = r.out.split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+        int hi91 = 0;
+        for (const auto &l : lines.mid(0, lines.size() - 1))
+            if (QJsonDocument::fromJson(l.toUtf8()).object().value("type").toString() == QLatin1String("HI91"))
+                ++hi91;
+        QCOMPARE(hi91, intact);
+        const auto summary = QJsonDocument::fromJson(lines.last().toUtf8()).object().value("summary").toObject();
+        QCOMPARE(summary.value("frames").toObject().value("HI91").toInt(), intact);
+        QCOMPARE(summary.value("frames").toObject().value("NMEA").toInt(), 1);
+        QCOMPARE(summary.value("crc_errors").toInt(), 10);
+        QCOMPARE(summary.value("bytes").toInt(), int(capture.size()));
+        QVERIFY(summary.contains("mb_per_s"));
+    }
+
+    void errorsAndUsage()
+    {
+        const auto missing = run({"probe", "/dev/imudesk-no-such-port"});
+        QCOMPARE(missing.code, 1);
+        QVERIFY(missing.err.startsWith(QStringLiteral("imudesk-cli: ")));
+        QVERIFY(missing.err.contains(QStringLiteral("not found")));
+        QCOMPARE(run({"frobnicate"}).code, 2);
+        QCOMPARE(run({"send", m_pty}).code, 2);
+        QCOMPARE(run({"decode", "/nonexistent/file.bin"}).code, 1);
+        QCOMPARE(run({"simulate"}).code, 2);
+    }
+};
+
+QTEST_GUILESS_MAIN(TstCli)
+#include "tst_cli.moc"
