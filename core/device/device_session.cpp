@@ -41,6 +41,7 @@ DeviceSession::DeviceSession(QObject *parent) : QObject(parent)
     });
     connect(m_worker, &SessionWorker::baudDetected, this, &DeviceSession::baudDetected);
     connect(m_worker, &SessionWorker::identityChanged, this, &DeviceSession::identityChanged);
+    connect(m_worker, &SessionWorker::identityQueryFinished, this, &DeviceSession::identityQueryFinished);
     connect(m_worker, &SessionWorker::commandFinished, this, &DeviceSession::commandFinished);
     connect(m_worker, &SessionWorker::statsUpdated, this, &DeviceSession::statsUpdated);
     connect(m_worker, &SessionWorker::samplesAppended, this, &DeviceSession::samplesAppended);

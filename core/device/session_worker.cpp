@@ -324,11 +324,14 @@ void SessionWorker::queryIdentity()
     p.text = QStringLiteral("LOG VERSION");
     p.timeoutMs = kIdentityTimeoutMs;
     p.done = [this](const Reply &r) {
+        bool answered = false;
         if (r.ok()) {
             const auto id = model::DeviceIdentity::fromKeyValues(r.values);
-            if (id.usable())
+            answered = id.usable();
+            if (answered)
                 Q_EMIT identityChanged(id);
         }
+        Q_EMIT identityQueryFinished(answered);
     };
     enqueue(std::move(p));
 }

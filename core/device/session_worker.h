@@ -33,6 +33,8 @@ Q_SIGNALS:
     void stateChanged(imudesk::device::SessionState state, const QString &detail);
     void baudDetected(int baud);
     void identityChanged(const imudesk::model::DeviceIdentity &identity);
+    // The LOG VERSION query sent after opening at a fixed baud has finished (answered or not).
+    void identityQueryFinished(bool answered);
     void commandFinished(quint64 id, const imudesk::protocol::hipnuc::AsciiReply &reply);
     void statsUpdated(const imudesk::device::SessionStats &stats);
     void samplesAppended(quint64 totalSamples);

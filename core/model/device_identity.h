@@ -12,7 +12,6 @@ struct FirmwareVersion {
     // "171", "1.7.1", "v1.7.1"
     static std::optional<FirmwareVersion> parse(const std::string &text);
     std::string toString() const;
-    int number() const { return major * 100 + minor * 10 + patch; }
     friend auto operator<=>(const FirmwareVersion &, const FirmwareVersion &) = default;
 };
 

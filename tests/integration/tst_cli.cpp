@@ -75,7 +75,7 @@ private Q_SLOTS:
         QVERIFY(!o.value("serial").toString().isEmpty());
         const auto text = run({"probe", m_pty, "--baud", "230400"});
         QCOMPARE(text.code, 0);
-        QVERIFY(text.out.contains(QStringLiteral("product: HI14R3")));
+        QVERIFY2(text.out.contains(QStringLiteral("product: HI14R3")), qPrintable(text.out + text.err));
     }
 
     void sendPrintsReply()

@@ -519,7 +519,7 @@ void TestHipnucSimulator::versionReply()
         QVERIFY((c >= '0' && c <= '9') || (c >= 'A' && c <= 'F'));
     const auto id = model::DeviceIdentity::fromKeyValues(r.values);
     QVERIFY(id.usable());
-    QCOMPARE(QString::fromStdString(std::to_string(id.firmware->number())), appVer);
+    QCOMPARE(QStringLiteral("%1%2%3").arg(id.firmware->major).arg(id.firmware->minor).arg(id.firmware->patch), appVer);
     QCOMPARE(id.family(), model::familyOfProduct(model.toStdString()));
     // The UUID follows the seed.
     SimOptions o = opts(firmware.toStdString(), model.toStdString());

@@ -96,6 +96,14 @@ private Q_SLOTS:
                  NmeaError::BadField);
         QCOMPARE(parseSentence(buildSentence("GPRMC,235952,A,3112.5,N,12127.5,E,0,0,321325,,,A")).error,
                  NmeaError::BadField);
+        // Out-of-range coordinates and a sign that contradicts the hemisphere letter.
+        QCOMPARE(parseSentence(buildSentence("GPGGA,010101,9059.9999,N,12127.5,E,1,08,1.0,10,M,0,M,,")).error,
+                 NmeaError::BadField);
+        QCOMPARE(parseSentence(buildSentence("GPGGA,010101,3112.5,N,18059.9999,E,1,08,1.0,10,M,0,M,,")).error,
+                 NmeaError::BadField);
+        QCOMPARE(parseSentence(buildSentence("GPGGA,010101,-100.0,N,12127.5,E,1,08,1.0,10,M,0,M,,")).error,
+                 NmeaError::BadField);
+        QVERIFY(parseSentence(buildSentence("GPGGA,010101,9000.0000,S,18000.0000,W,1,08,1.0,10,M,0,M,,")).ok());
     }
 
     void otherSentencesKeepFields()

@@ -99,11 +99,12 @@ std::optional<double> parseLatLon(const std::string &v, const std::string &hemi,
     }
     const double deg = std::floor(*raw / 100.0);
     const double min = *raw - deg * 100.0;
-    if (min >= 60.0 || (degDigits == 2 && deg > 90) || deg > 180) {
+    double out = deg + min / 60.0;
+    // The sign belongs to the hemisphere letter; the value itself is never negative.
+    if (*raw < 0 || min >= 60.0 || out > (degDigits == 2 ? 90.0 : 180.0)) {
         bad = true;
         return std::nullopt;
     }
-    double out = deg + min / 60.0;
     const char h = hemi[0];
     if (h == 'S' || h == 'W')
         out = -out;

@@ -1,0 +1,292 @@
+#include "latest_values_model.h"
+
+#include "model/main_status.h"
+
+#include <QStringList>
+
+namespace imudesk::models {
+
+namespace {
+
+using model::Sample;
+using model::SampleField;
+using Row = LatestValuesModel::Row;
+
+// The Sample field a row needs, 0 when the row needs none.
+uint32_t fieldOf(Row row)
+{
+    switch (row) {
+    case Row::AccX:
+    case Row::AccY:
+    case Row::AccZ: return model::FieldAcc;
+    case Row::GyrX:
+    case Row::GyrY:
+    case Row::GyrZ: return model::FieldGyr;
+    case Row::MagX:
+    case Row::MagY:
+    case Row::MagZ: return model::FieldMag;
+    case Row::Roll:
+    case Row::Pitch:
+    case Row::Yaw: return model::FieldEuler;
+    case Row::QuatW:
+    case Row::QuatX:
+    case Row::QuatY:
+    case Row::QuatZ: return model::FieldQuat;
+    case Row::Pressure: return model::FieldPressure;
+    case Row::Temperature: return model::FieldTemperature;
+    case Row::DeviceTime: return model::FieldDeviceTime;
+    case Row::StatusFlags: return model::FieldMainStatus;
+    case Row::FrameType:
+    case Row::RowCount: break;
+    }
+    return 0;
+}
+
+// Fixed-point text without a "-0.000" that would flicker around zero.
+QString fixed(double v, int decimals)
+{
+    QString s = QString::number(v, 'f', decimals);
+    if (s.startsWith(QLatin1Char('-'))) {
+        bool allZero = true;
+        for (qsizetype i = 1; i < s.size() && allZero; ++i)
+            allZero = s.at(i) == QLatin1Char('0') || s.at(i) == QLatin1Char('.');
+        if (allZero)
+            s.remove(0, 1);
+    }
+    return s;
+}
+
+QString axisName(Row row)
+{
+    switch (row) {
+    case Row::AccX:
+    case Row::GyrX:
+    case Row::MagX:
+    case Row::QuatX: return QStringLiteral("X");
+    case Row::AccY:
+    case Row::GyrY:
+    case Row::MagY:
+    case Row::QuatY: return QStringLiteral("Y");
+    case Row::AccZ:
+    case Row::GyrZ:
+    case Row::MagZ:
+    case Row::QuatZ: return QStringLiteral("Z");
+    case Row::QuatW: return QStringLiteral("W");
+    default: return QString();
+    }
+}
+
+} // namespace
+
+QString LatestValuesModel::missingText()
+{
+    return QStringLiteral("\u2014");
+}
+
+LatestValuesModel::LatestValuesModel(QObject *parent) : QAbstractTableModel(parent)
+{
+    m_values.fill(missingText());
+}
+
+int LatestValuesModel::rowCount(const QModelIndex &parent) const
+{
+    return parent.isValid() ? 0 : int(RowCount);
+}
+
+int LatestValuesModel::columnCount(const QModelIndex &parent) const
+{
+    return parent.isValid() ? 0 : int(ColumnCount);
+}
+
+QVariant LatestValuesModel::data(const QModelIndex &index, int role) const
+{
+    if (!checkIndex(index, CheckIndexOption::IndexIsValid | CheckIndexOption::ParentIsInvalid))
+        return {};
+    const auto row = Row(index.row());
+    switch (role) {
+    case Qt::DisplayRole:
+        switch (index.column()) {
+        case QuantityColumn: return quantityName(row);
+        case ValueColumn: return m_values[size_t(row)];
+        case UnitColumn: return unitName(row);
+        default: return {};
+        }
+    case Qt::ToolTipRole: return toolTip(row);
+    case Qt::TextAlignmentRole:
+        if (index.column() == ValueColumn)
+            return QVariant(Qt::AlignRight | Qt::AlignVCenter);
+        return QVariant(Qt::AlignLeft | Qt::AlignVCenter);
+    default: return {};
+    }
+}
+
+QVariant LatestValuesModel::headerData(int section, Qt::Orientation orientation, int role) const
+{
+    if (role == Qt::TextAlignmentRole && orientation == Qt::Horizontal)
+        return QVariant((section == ValueColumn ? Qt::AlignRight : Qt::AlignLeft) | Qt::AlignVCenter);
+    if (role != Qt::DisplayRole)
+        return QAbstractTableModel::headerData(section, orientation, role);
+    if (orientation == Qt::Vertical)
+        return section + 1;
+    switch (section) {
+    case QuantityColumn: return tr("Quantity");
+    case ValueColumn: return tr("Value");
+    case UnitColumn: return tr("Unit");
+    default: return {};
+    }
+}
+
+void LatestValuesModel::refresh(const std::optional<model::Sample> &sample)
+{
+    m_last = sample;
+    int firstChanged = -1;
+    auto flush = [this, &firstChanged](int lastRow) {
+        if (firstChanged < 0)
+            return;
+        Q_EMIT dataChanged(index(firstChanged, ValueColumn), index(lastRow, ValueColumn), {Qt::DisplayRole});
+        firstChanged = -1;
+    };
+    for (int r = 0; r < RowCount; ++r) {
+        const auto row = Row(r);
+        QString text = sample ? formatValue(row, *sample) : missingText();
+        if (text == m_values[size_t(r)]) {
+            flush(r - 1);
+            continue;
+        }
+        m_values[size_t(r)] = std::move(text);
+        if (firstChanged < 0)
+            firstChanged = r;
+    }
+    flush(RowCount - 1);
+}
+
+void LatestValuesModel::retranslate()
+{
+    for (int r = 0; r < RowCount; ++r)
+        m_values[size_t(r)] = m_last ? formatValue(Row(r), *m_last) : missingText();
+    Q_EMIT headerDataChanged(Qt::Horizontal, 0, ColumnCount - 1);
+    Q_EMIT dataChanged(index(0, 0), index(RowCount - 1, ColumnCount - 1), {Qt::DisplayRole, Qt::ToolTipRole});
+}
+
+QString LatestValuesModel::formatValue(Row row, const model::Sample &s) const
+{
+    if (row == FrameType)
+        return s.source.empty() ? missingText() : QString::fromStdString(s.source);
+    if (!(s.fields & fieldOf(row)))
+        return missingText();
+    switch (row) {
+    case AccX: return fixed(s.acc.x, 4);
+    case AccY: return fixed(s.acc.y, 4);
+    case AccZ: return fixed(s.acc.z, 4);
+    case GyrX: return fixed(s.gyr.x, 3);
+    case GyrY: return fixed(s.gyr.y, 3);
+    case GyrZ: return fixed(s.gyr.z, 3);
+    case MagX: return fixed(s.mag.x, 3);
+    case MagY: return fixed(s.mag.y, 3);
+    case MagZ: return fixed(s.mag.z, 3);
+    case Roll: return fixed(s.roll, 2);
+    case Pitch: return fixed(s.pitch, 2);
+    case Yaw: return fixed(s.yaw, 2);
+    case QuatW: return fixed(s.quat.w, 4);
+    case QuatX: return fixed(s.quat.x, 4);
+    case QuatY: return fixed(s.quat.y, 4);
+    case QuatZ: return fixed(s.quat.z, 4);
+    case Pressure: return fixed(s.pressurePa, 1);
+    case Temperature: return fixed(s.temperatureC, 1);
+    case DeviceTime: return fixed(s.deviceTimeMs, 0);
+    case StatusFlags: {
+        const model::MainStatus status(s.mainStatus);
+        QStringList names;
+        for (const auto &n : status.setFlagNames())
+            names << QString::fromStdString(n);
+        const QString hex =
+            QLatin1String("0x") + QString::number(s.mainStatus, 16).toUpper().rightJustified(4, QLatin1Char('0'));
+        if (names.isEmpty())
+            return tr("none (%1)").arg(hex);
+        return QStringLiteral("%1 (%2)").arg(names.join(QLatin1Char(' ')), hex);
+    }
+    case FrameType:
+    case RowCount: break;
+    }
+    return missingText();
+}
+
+QString LatestValuesModel::quantityName(Row row) const
+{
+    switch (row) {
+    case AccX:
+    case AccY:
+    case AccZ: return tr("Acceleration %1").arg(axisName(row));
+    case GyrX:
+    case GyrY:
+    case GyrZ: return tr("Angular velocity %1").arg(axisName(row));
+    case MagX:
+    case MagY:
+    case MagZ: return tr("Magnetic field %1").arg(axisName(row));
+    case Roll: return tr("Roll");
+    case Pitch: return tr("Pitch");
+    case Yaw: return tr("Yaw");
+    case QuatW:
+    case QuatX:
+    case QuatY:
+    case QuatZ: return tr("Quaternion %1").arg(axisName(row));
+    case Pressure: return tr("Air pressure");
+    case Temperature: return tr("Temperature");
+    case DeviceTime: return tr("Device time");
+    case StatusFlags: return tr("Status flags");
+    case FrameType: return tr("Frame type");
+    case RowCount: break;
+    }
+    return {};
+}
+
+QString LatestValuesModel::unitName(Row row) const
+{
+    switch (fieldOf(row)) {
+    case model::FieldAcc: return tr("G");
+    case model::FieldGyr: return tr("deg/s");
+    case model::FieldMag: return tr("µT");
+    case model::FieldEuler: return tr("deg");
+    case model::FieldPressure: return tr("Pa");
+    case model::FieldTemperature: return tr("°C");
+    case model::FieldDeviceTime: return tr("ms");
+    default: return QString();
+    }
+}
+
+QString LatestValuesModel::toolTip(Row row) const
+{
+    switch (row) {
+    case AccX:
+    case AccY:
+    case AccZ:
+        return tr("Acceleration along the sensor's %1 axis, in G (1 G = 9.8 m/s², the vendor's constant).")
+            .arg(axisName(row));
+    case GyrX:
+    case GyrY:
+    case GyrZ: return tr("Angular velocity about the sensor's %1 axis, in deg/s.").arg(axisName(row));
+    case MagX:
+    case MagY:
+    case MagZ: return tr("Magnetic field along the sensor's %1 axis, in µT.").arg(axisName(row));
+    case Roll: return tr("Roll angle, in degrees (Euler angles in the device's convention, ENU 312 by default).");
+    case Pitch: return tr("Pitch angle, in degrees (Euler angles in the device's convention, ENU 312 by default).");
+    case Yaw:
+        return tr("Yaw (heading) angle, in degrees (Euler angles in the device's convention, ENU 312 by default).");
+    case QuatW:
+    case QuatX:
+    case QuatY:
+    case QuatZ:
+        return tr("Attitude quaternion, component %1 (body to navigation frame), no unit.").arg(axisName(row));
+    case Pressure: return tr("Air pressure from the barometer, in Pa.");
+    case Temperature: return tr("Sensor temperature, in °C.");
+    case DeviceTime:
+        return tr("Device timestamp in ms: UTC time of day when synchronised, otherwise time since power-up.");
+    case StatusFlags:
+        return tr("MAIN_STATUS flags set in the latest frame (firmware 1.7.0 and later), then the raw word in hex.");
+    case FrameType: return tr("The frame type (packet tag) that carried the latest values, e.g. HI91.");
+    case RowCount: break;
+    }
+    return {};
+}
+
+} // namespace imudesk::models

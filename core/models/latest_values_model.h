@@ -1,0 +1,71 @@
+#pragma once
+// The latest Sample as a table: one row per quantity, columns Quantity / Value /
+// Unit. Views call refresh() on their clock (never per sample); only cells whose
+// text changed emit dataChanged. A field the sample does not carry shows "—".
+#include "model/sample.h"
+
+#include <QAbstractTableModel>
+#include <QString>
+
+#include <array>
+#include <optional>
+
+namespace imudesk::models {
+
+class LatestValuesModel : public QAbstractTableModel {
+    Q_OBJECT
+public:
+    enum Row : int {
+        AccX,
+        AccY,
+        AccZ,
+        GyrX,
+        GyrY,
+        GyrZ,
+        MagX,
+        MagY,
+        MagZ,
+        Roll,
+        Pitch,
+        Yaw,
+        QuatW,
+        QuatX,
+        QuatY,
+        QuatZ,
+        Pressure,
+        Temperature,
+        DeviceTime,
+        StatusFlags,
+        FrameType,
+        RowCount
+    };
+    enum Column : int { QuantityColumn, ValueColumn, UnitColumn, ColumnCount };
+
+    // Shown for a quantity the latest sample does not carry.
+    static QString missingText();
+
+    explicit LatestValuesModel(QObject *parent = nullptr);
+
+    int rowCount(const QModelIndex &parent = QModelIndex()) const override;
+    int columnCount(const QModelIndex &parent = QModelIndex()) const override;
+    QVariant data(const QModelIndex &index, int role = Qt::DisplayRole) const override;
+    QVariant headerData(int section, Qt::Orientation orientation, int role = Qt::DisplayRole) const override;
+
+    // Shows `sample` (or "—" everywhere when empty); emits dataChanged only for changed cells.
+    void refresh(const std::optional<model::Sample> &sample);
+    // Texts are translated when read; call after the application language changed.
+    void retranslate();
+
+    QString valueText(Row row) const { return m_values[size_t(row)]; }
+
+private:
+    QString formatValue(Row row, const model::Sample &s) const;
+    QString quantityName(Row row) const;
+    QString unitName(Row row) const;
+    QString toolTip(Row row) const;
+
+    std::array<QString, RowCount> m_values;
+    std::optional<model::Sample> m_last;
+};
+
+} // namespace imudesk::models
