@@ -515,7 +515,7 @@ std::vector<std::string> HipnucSimulator::comConfigLines() const
         for (size_t i = 0; i < 9; ++i) {
             if (i)
                 u += ',';
-            u += number(c.urfrMatrix[i / 3][i % 3]);
+            u += formatNumber(c.urfrMatrix[i / 3][i % 3]);
         }
         out.push_back(u);
     }

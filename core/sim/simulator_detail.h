@@ -123,15 +123,7 @@ inline int suffixNumber(const std::string &w, std::string_view prefix)
     return parseInt(std::string_view(w).substr(prefix.size()), n) ? n : 0;
 }
 
-inline std::string number(double v)
-{
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%g", v);
-    std::string s = buf;
-    if (s == "-0")
-        s = "0";
-    return s;
-}
+using protocol::hipnuc::commands::formatNumber;
 
 inline int16_t clamp16(double v)
 {

@@ -90,8 +90,7 @@ Command imuUrfr(int code)
     return Command::make("CONFIG IMU URFR " + model::Mounting::codeText(code));
 }
 
-namespace {
-std::string number(double v)
+std::string formatNumber(double v)
 {
     char buf[32];
     std::snprintf(buf, sizeof buf, "%.6g", v);
@@ -100,7 +99,6 @@ std::string number(double v)
         s = "0";
     return s;
 }
-} // namespace
 
 Command imuUrfrMatrix(const model::Matrix3 &c)
 {
@@ -115,7 +113,7 @@ Command imuUrfrMatrix(const model::Matrix3 &c)
         for (size_t j = 0; j < 3; ++j) {
             if (i || j)
                 t += ',';
-            t += number(c[i][j]);
+            t += formatNumber(c[i][j]);
         }
     return Command::make(t);
 }
@@ -162,7 +160,7 @@ Command setYaw(int mode, double deg)
         return Command::fail("yaw mode must be 0 (relative) or 1 (absolute)");
     if (!std::isfinite(deg) || deg < -180.0 || deg > 180.0)
         return Command::fail("yaw must be -180..180 deg");
-    return Command::make("CONFIG YAW " + std::to_string(mode) + " " + number(deg));
+    return Command::make("CONFIG YAW " + std::to_string(mode) + " " + formatNumber(deg));
 }
 
 Command enableBackgroundMagCal(bool on) { return Command::make(std::string("CONFIG IMU_EN_MCAL ") + (on ? "1" : "0")); }

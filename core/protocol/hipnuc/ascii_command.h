@@ -61,6 +61,9 @@ Command logOnTime(Message m, double periodS);   // 0 (off) or 0.001 .. 1 s
 Command logOnMark(Message m, bool once);        // ONMARK 1 | ONMARK ONCE
 Command logHi83Map(uint32_t bitmap);            // LOG HI83 MAP 0x........
 
+// Formats a command argument: up to 6 significant digits, "0" for -0 ("1.5", "-1", "16").
+std::string formatNumber(double v);
+
 // Formats a period the way the manual writes it ("0.01", "0.005", "1").
 std::string formatPeriod(double periodS);
 
