@@ -75,7 +75,11 @@ void SessionWorker::open(const QString &portName, int baud)
     m_statsTimer.start();
     if (baud > 0) {
         setState(SessionState::Connected, portName);
-        queryIdentity();
+        // Listen first, as the detection does: joining a stream mid-frame, the tail of that
+        // frame must not be mistaken for the start of the reply.
+        m_detectTimer.disconnect();
+        connect(&m_detectTimer, &QTimer::timeout, this, [this] { queryIdentity(1); });
+        m_detectTimer.start(kListenMs);
     } else {
         m_detecting = true;
         setState(SessionState::Detecting, portName);
@@ -318,18 +322,24 @@ void SessionWorker::publishStats()
     Q_EMIT statsUpdated(s);
 }
 
-void SessionWorker::queryIdentity()
+void SessionWorker::queryIdentity(int attempt)
 {
+    constexpr int kAttempts = 3;
     Pending p;
     p.text = QStringLiteral("LOG VERSION");
     p.timeoutMs = kIdentityTimeoutMs;
-    p.done = [this](const Reply &r) {
+    p.done = [this, attempt](const Reply &r) {
         bool answered = false;
         if (r.ok()) {
             const auto id = model::DeviceIdentity::fromKeyValues(r.values);
             answered = id.usable();
             if (answered)
                 Q_EMIT identityChanged(id);
+        }
+        // An OK whose lines were damaged (noise on the line) is asked again; silence is not.
+        if (!answered && r.status == Reply::Status::Ok && attempt < kAttempts) {
+            queryIdentity(attempt + 1);
+            return;
         }
         Q_EMIT identityQueryFinished(answered);
     };

@@ -67,7 +67,7 @@ private:
     void detectAt(size_t index);
     void detectQuery(bool retry);
     void detectFinished(int baud, const std::optional<model::DeviceIdentity> &id);
-    void queryIdentity();
+    void queryIdentity(int attempt);
 
     SampleStore &m_store;
     io::SerialTransport *m_transport = nullptr;

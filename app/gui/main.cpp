@@ -1,0 +1,156 @@
+// ImuDesk GUI: command line, language, settings, main window.
+#include "language_switcher.h"
+#include "main_window.h"
+#include "model/device_identity.h"
+#include "sim/hipnuc_simulator.h"
+#include "sim/motion_model.h"
+#include "window_settings.h"
+
+#include <QApplication>
+#include <QCommandLineOption>
+#include <QCommandLineParser>
+#include <QMessageBox>
+#include <QSettings>
+#include <QStringList>
+
+#include <algorithm>
+#include <cstdio>
+
+using imudesk::ui::LanguageSwitcher;
+using imudesk::ui::MainWindow;
+using imudesk::ui::WindowSettings;
+
+namespace {
+
+int usageError(const QString &message)
+{
+    std::fprintf(stderr, "imudesk: %s\n", qPrintable(message));
+    return 2;
+}
+
+// "--simulate=HI12" -> "--simulate HI12": the model is an optional positional argument.
+QStringList splitSimulateValue(const QStringList &args)
+{
+    QStringList out;
+    for (const QString &a : args) {
+        if (a.startsWith(QLatin1String("--simulate="))) {
+            out << QStringLiteral("--simulate") << a.mid(11);
+        } else {
+            out << a;
+        }
+    }
+    return out;
+}
+
+} // namespace
+
+int main(int argc, char *argv[])
+{
+    QApplication app(argc, argv);
+    QCoreApplication::setOrganizationName(QStringLiteral("ImuDesk"));
+    QCoreApplication::setApplicationName(QStringLiteral("ImuDesk"));
+    QCoreApplication::setApplicationVersion(QStringLiteral(IMUDESK_VERSION));
+
+    // Language first, so that the help text and any message are translated.
+    const QStringList args = splitSimulateValue(QCoreApplication::arguments());
+    QString lang = LanguageSwitcher::fromLocale(QLocale::system());
+    for (qsizetype i = 1; i < args.size(); ++i) {
+        if (args[i] == QLatin1String("--lang") && i + 1 < args.size())
+            lang = args[i + 1];
+        else if (args[i].startsWith(QLatin1String("--lang=")))
+            lang = args[i].mid(7);
+    }
+    LanguageSwitcher language;
+    QString langError;
+    if (!language.setLanguage(lang, QString::fromLatin1(LanguageSwitcher::kResourceDir), &langError))
+        return usageError(langError);
+
+    QCommandLineParser parser;
+    parser.setApplicationDescription(
+        QCoreApplication::translate("main", "ImuDesk: a bench tool for HiPNUC IMU modules."));
+    parser.addHelpOption();
+    parser.addVersionOption();
+    const QCommandLineOption langOption(
+        QStringLiteral("lang"),
+        QCoreApplication::translate("main", "User interface language: zh_CN, zh_TW or en (default: the system's)."),
+        QStringLiteral("language"));
+    const QCommandLineOption simulateOption(
+        QStringLiteral("simulate"),
+        QCoreApplication::translate("main", "Start connected to a simulated device (model MODEL, default HI14) "
+                                            "that streams HI91 at 100 Hz."));
+    const QCommandLineOption firmwareOption(
+        QStringLiteral("firmware"),
+        QCoreApplication::translate("main", "Firmware of the simulated device: 1.7.1 or 1.6.6 (default 1.7.1)."),
+        QStringLiteral("version"), QStringLiteral("1.7.1"));
+    const QCommandLineOption motionOption(
+        QStringLiteral("motion"),
+        QCoreApplication::translate("main", "Motion of the simulated device: static, spin or tumble (default static)."),
+        QStringLiteral("motion"), QStringLiteral("static"));
+    const QCommandLineOption portOption(
+        QStringLiteral("port"), QCoreApplication::translate("main", "Start connected to this serial port."),
+        QStringLiteral("path"));
+    const QCommandLineOption baudOption(
+        QStringLiteral("baud"),
+        QCoreApplication::translate("main", "Baud rate for --port or --simulate (default: detect automatically)."),
+        QStringLiteral("rate"));
+    parser.addOptions({langOption, simulateOption, firmwareOption, motionOption, portOption, baudOption});
+    parser.addPositionalArgument(QStringLiteral("MODEL"),
+                                 QCoreApplication::translate("main", "Model to simulate with --simulate (default HI14)."),
+                                 QStringLiteral("[MODEL]"));
+    parser.process(args);
+
+    const QStringList positional = parser.positionalArguments();
+    const bool simulate = parser.isSet(simulateOption);
+    if (positional.size() > 1 || (!positional.isEmpty() && !simulate))
+        return usageError(QCoreApplication::translate("main", "A model name is only accepted after --simulate."));
+    if (simulate && parser.isSet(portOption))
+        return usageError(QCoreApplication::translate("main", "Use either --simulate or --port, not both."));
+
+    int baud = 0;
+    if (parser.isSet(baudOption) && parser.value(baudOption) != QLatin1String("auto")) {
+        bool ok = false;
+        baud = parser.value(baudOption).toInt(&ok);
+        const auto &rates = imudesk::device::DeviceSession::detectionBauds();
+        if (!ok || std::find(rates.begin(), rates.end(), baud) == rates.end()) {
+            QStringList names;
+            for (int r : rates)
+                names << QString::number(r);
+            return usageError(QCoreApplication::translate("main", "Unsupported baud rate \"%1\"; use auto or one of: %2.")
+                                  .arg(parser.value(baudOption), names.join(QStringLiteral(", "))));
+        }
+    }
+
+    imudesk::sim::SimOptions simOptions;
+    simOptions.model = positional.isEmpty() ? std::string("HI14") : positional.first().toUpper().toStdString();
+    simOptions.firmware = parser.value(firmwareOption).toStdString();
+    if (!imudesk::model::FirmwareVersion::parse(simOptions.firmware))
+        return usageError(QCoreApplication::translate("main", "Invalid firmware version \"%1\"; use e.g. 1.7.1 or 1.6.6.")
+                              .arg(parser.value(firmwareOption)));
+    if (!imudesk::sim::parseMotion(parser.value(motionOption).toStdString(), simOptions.motion))
+        return usageError(QCoreApplication::translate("main", "Unknown motion \"%1\"; use static, spin or tumble.")
+                              .arg(parser.value(motionOption)));
+
+    WindowSettings settings;
+    {
+        QSettings store;
+        settings.load(store);
+    }
+    MainWindow window(settings);
+    window.setSimulatedMotion(simOptions.motion);
+    window.show();
+
+    if (simulate) {
+        QString error;
+        if (!window.connectSimulated(simOptions, baud, &error))
+            QMessageBox::warning(&window, QCoreApplication::translate("main", "ImuDesk"), error);
+    } else if (parser.isSet(portOption)) {
+        window.connectPort(parser.value(portOption), baud);
+    }
+
+    const int rc = QApplication::exec();
+    {
+        QSettings store;
+        window.windowSettings().save(store);
+    }
+    return rc;
+}

@@ -1,0 +1,326 @@
+// MainWindow offscreen against a simulated HI14 on a pseudo-terminal: live values,
+// identity and rates in the status bar, the console, screenshots, run-time language.
+#include "connection_bar.h"
+#include "console_widget.h"
+#include "language_switcher.h"
+#include "main_window.h"
+#include "models/latest_values_model.h"
+#include "status_flags_widget.h"
+#include "window_settings.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QHeaderView>
+#include <QImage>
+#include <QLineEdit>
+#include <QMessageBox>
+#include <QPushButton>
+#include <QRegularExpression>
+#include <QSettings>
+#include <QSignalSpy>
+#include <QStandardPaths>
+#include <QTableView>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include <set>
+
+using imudesk::models::LatestValuesModel;
+using imudesk::ui::ConsoleWidget;
+using imudesk::ui::LanguageSwitcher;
+using imudesk::ui::MainWindow;
+using imudesk::ui::PortChoice;
+using imudesk::ui::WindowSettings;
+
+namespace {
+
+QString cell(const MainWindow &w, int row, int column = LatestValuesModel::ValueColumn)
+{
+    return w.valuesView()->model()->index(row, column).data().toString();
+}
+
+double hi91Rate(const QString &status)
+{
+    static const QRegularExpression re(QStringLiteral("HI91 ([0-9]+(?:\\.[0-9]+)?) Hz"));
+    const auto m = re.match(status);
+    return m.hasMatch() ? m.captured(1).toDouble() : 0.0;
+}
+
+// Lines of the console log after the last line equal to `marker`.
+QStringList linesAfter(const QString &log, const QString &marker)
+{
+    const QStringList lines = log.split(QLatin1Char('\n'));
+    const qsizetype at = lines.lastIndexOf(marker);
+    return at < 0 ? QStringList() : lines.mid(at + 1);
+}
+
+int distinctColours(const QImage &image)
+{
+    std::set<QRgb> colours;
+    for (int y = 0; y < image.height(); y += 3)
+        for (int x = 0; x < image.width(); x += 3)
+            colours.insert(image.pixel(x, y));
+    return int(colours.size());
+}
+
+QString screenshotPath(const QString &name)
+{
+    // The build tree, never the sources.
+    return QCoreApplication::applicationDirPath() + QLatin1Char('/') + name;
+}
+
+} // namespace
+
+class TstMainWindow : public QObject {
+    Q_OBJECT
+private Q_SLOTS:
+    void initTestCase()
+    {
+        QStandardPaths::setTestModeEnabled(true);
+        QCoreApplication::setApplicationVersion(QStringLiteral("test"));
+    }
+
+    void simulatedHi14()
+    {
+        MainWindow w;
+        QStringList errors;
+        w.setErrorPresenter([&errors](const QString &m) { errors << m; });
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY(w.isRefreshing());
+        QCOMPARE(cell(w, LatestValuesModel::Roll), LatestValuesModel::missingText());
+
+        imudesk::sim::SimOptions options; // HI14, firmware 1.7.1, HI91 at 100 Hz
+        QString error;
+        QVERIFY2(w.connectSimulated(options, 0, &error), qPrintable(error));
+        QVERIFY(w.simulator());
+
+        // Live values through the pty, the session and the 30 Hz view clock.
+        QTRY_VERIFY_WITH_TIMEOUT(cell(w, LatestValuesModel::Roll) != LatestValuesModel::missingText(), 5000);
+        bool ok = false;
+        cell(w, LatestValuesModel::Roll).toDouble(&ok);
+        QVERIFY(ok);
+        QCOMPARE(cell(w, LatestValuesModel::FrameType), QStringLiteral("HI91"));
+        QCOMPARE(cell(w, LatestValuesModel::AccZ, LatestValuesModel::UnitColumn), QStringLiteral("G"));
+
+        // Identity and link counters in the status bar.
+        QTRY_VERIFY_WITH_TIMEOUT(w.statusText().contains(QLatin1String("HI14R3")), 5000);
+        QVERIFY2(w.statusText().contains(QLatin1String("1.7.1")), qPrintable(w.statusText()));
+        QTRY_VERIFY_WITH_TIMEOUT(hi91Rate(w.statusText()) > 0, 5000);
+        QVERIFY2(w.statusText().contains(QLatin1String("CRC errors 0")), qPrintable(w.statusText()));
+        QVERIFY(w.windowTitle().contains(QLatin1String("HI14R3")));
+
+        // MAIN_STATUS flags (firmware >= 1.7.0): the simulator always sets UTC_UNSYNC (bit 11).
+        QTRY_VERIFY_WITH_TIMEOUT(w.statusFlags()->status().has_value(), 3000);
+        QVERIFY(*w.statusFlags()->status() & (1u << 11));
+        QVERIFY(w.statusFlags()->flagToolTip(11).contains(QLatin1String("UTC")));
+
+        // The console: a known command answers OK, an unknown one times out.
+        ConsoleWidget *console = w.console();
+        QTRY_VERIFY(console->input()->isEnabled());
+        console->submit(QStringLiteral("LOG VERSION"));
+        QTRY_VERIFY_WITH_TIMEOUT(linesAfter(console->logText(), QStringLiteral("> LOG VERSION")).contains(QStringLiteral("OK")),
+                                 3000);
+        const QStringList versionLines = linesAfter(console->logText(), QStringLiteral("> LOG VERSION"));
+        QVERIFY2(versionLines.join(QLatin1Char('\n')).contains(QLatin1String("PNAME=HI14R3")),
+                 qPrintable(console->logText()));
+        console->submit(QStringLiteral("FOO BAR"));
+        QTRY_VERIFY_WITH_TIMEOUT(
+            linesAfter(console->logText(), QStringLiteral("> FOO BAR")).join(QLatin1Char('\n')).contains(QLatin1String("Timeout:")),
+            3000);
+        QCOMPARE(console->history(), (QStringList{QStringLiteral("LOG VERSION"), QStringLiteral("FOO BAR")}));
+
+        // The window draws something, in English...
+        QTest::qWait(300);
+        const QImage shot = w.grab().toImage();
+        QVERIFY(!shot.isNull());
+        QVERIFY(shot.width() > 400 && shot.height() > 300);
+        QVERIFY2(distinctColours(shot) > 20, "the window looks blank");
+        QVERIFY(shot.save(screenshotPath(QStringLiteral("main_window_en.png"))));
+
+        // ...and in Simplified Chinese after a run-time language switch.
+#ifdef IMUDESK_QM_DIR
+        const QString englishTitle = w.windowTitle();
+        const QString englishHeader = w.valuesView()->model()->headerData(0, Qt::Horizontal).toString();
+        const QString englishRoll = cell(w, LatestValuesModel::Roll, LatestValuesModel::QuantityColumn);
+        LanguageSwitcher language;
+        QVERIFY2(language.setLanguage(QStringLiteral("zh_CN"), QStringLiteral(IMUDESK_QM_DIR), &error),
+                 qPrintable(error));
+        QTRY_VERIFY(w.windowTitle() != englishTitle);
+        QVERIFY(w.windowTitle().contains(QLatin1String("HI14R3")));
+        QVERIFY(w.valuesView()->model()->headerData(0, Qt::Horizontal).toString() != englishHeader);
+        QCOMPARE(cell(w, LatestValuesModel::Roll, LatestValuesModel::QuantityColumn), QStringLiteral("横滚角"));
+        QVERIFY(w.valuesView()->horizontalHeader()->model()->headerData(1, Qt::Horizontal).toString()
+                != QLatin1String("Value"));
+        QTest::qWait(100);
+        QVERIFY(w.grab().toImage().save(screenshotPath(QStringLiteral("main_window_zh_CN.png"))));
+
+        QVERIFY(language.setLanguage(QStringLiteral("zh_TW"), QStringLiteral(IMUDESK_QM_DIR), &error));
+        QTRY_COMPARE(cell(w, LatestValuesModel::Roll, LatestValuesModel::QuantityColumn), QStringLiteral("橫滾角"));
+
+        QVERIFY(language.setLanguage(QStringLiteral("en")));
+        QTRY_COMPARE(w.windowTitle(), englishTitle);
+        QCOMPARE(cell(w, LatestValuesModel::Roll, LatestValuesModel::QuantityColumn), englishRoll);
+#else
+        qWarning("IMUDESK_QM_DIR is not defined: the language switch is not tested");
+#endif
+
+        // Hidden windows do not refresh.
+        w.hide();
+        QVERIFY(!w.isRefreshing());
+        w.show();
+        QVERIFY(w.isRefreshing());
+
+        // Disconnect: the session closes, then the simulator stops.
+        w.disconnectDevice();
+        QTRY_COMPARE(w.session().state(), imudesk::device::SessionState::Closed);
+        QTRY_VERIFY(!w.simulator());
+        QVERIFY2(errors.isEmpty(), qPrintable(errors.join(QLatin1Char('\n'))));
+    }
+
+    void simulatedOldFirmware()
+    {
+        MainWindow w;
+        QStringList errors;
+        w.setErrorPresenter([&errors](const QString &m) { errors << m; });
+        w.show();
+        imudesk::sim::SimOptions options;
+        options.firmware = "1.6.6";
+        options.motion = imudesk::sim::Motion::Spin;
+        QString error;
+        QVERIFY2(w.connectSimulated(options, 115200, &error), qPrintable(error));
+        QTRY_VERIFY_WITH_TIMEOUT(cell(w, LatestValuesModel::Yaw) != LatestValuesModel::missingText(), 5000);
+        // Spinning at 30 deg/s: the yaw changes.
+        const QString yaw = cell(w, LatestValuesModel::Yaw);
+        QTRY_VERIFY_WITH_TIMEOUT(cell(w, LatestValuesModel::Yaw) != yaw, 2000);
+        // Device > Send LOG VERSION: logged in the console, and the identity follows the reply.
+        auto *version = w.findChild<QAction *>(QStringLiteral("versionAction"));
+        QVERIFY(version);
+        QTRY_VERIFY(version->isEnabled());
+        version->trigger();
+        QTRY_VERIFY_WITH_TIMEOUT(linesAfter(w.console()->logText(), QStringLiteral("> LOG VERSION")).contains(QStringLiteral("OK")),
+                                 3000);
+        QTRY_VERIFY2_WITH_TIMEOUT(w.statusText().contains(QLatin1String("firmware 1.6.6")), qPrintable(w.statusText()),
+                                  3000);
+        // Firmware 1.6.6 has no MAIN_STATUS: the flags show "not reported", the table "—".
+        QTRY_VERIFY(!w.statusFlags()->status().has_value());
+        QTRY_COMPARE(cell(w, LatestValuesModel::StatusFlags), LatestValuesModel::missingText());
+        QCOMPARE(w.connectionBar()->selectedPort(), PortChoice::simulated(QStringLiteral("HI14"), QStringLiteral("1.6.6")));
+        QCOMPARE(w.connectionBar()->selectedBaud(), 115200);
+        QVERIFY2(errors.isEmpty(), qPrintable(errors.join(QLatin1Char('\n'))));
+    }
+
+    void missingPortReportsWithoutBlocking()
+    {
+        MainWindow w;
+        QStringList errors;
+        w.setErrorPresenter([&errors](const QString &m) { errors << m; });
+        w.show();
+        w.connectPort(QStringLiteral("/dev/imudesk-no-such-port"), 115200);
+        QTRY_COMPARE(errors.size(), 1);
+        QVERIFY2(errors.first().contains(QLatin1String("was not found")), qPrintable(errors.first()));
+        QTRY_COMPARE(w.session().state(), imudesk::device::SessionState::Failed);
+        QVERIFY(w.statusText().contains(QLatin1String("/dev/imudesk-no-such-port")));
+        QVERIFY(w.console()->logText().contains(QLatin1String("was not found")));
+        QVERIFY(w.isRefreshing());
+    }
+
+    void errorBoxDoesNotBlock()
+    {
+        MainWindow w; // the default presenter: a non-modal message box
+        w.show();
+        w.connectPort(QStringLiteral("/dev/imudesk-no-such-port"), 115200);
+        QMessageBox *box = nullptr;
+        QTRY_VERIFY((box = w.findChild<QMessageBox *>()) && box->isVisible());
+        QVERIFY(!box->isModal());
+        QVERIFY(QApplication::activeModalWidget() == nullptr);
+        QVERIFY(box->text().contains(QLatin1String("was not found")));
+        QTRY_COMPARE(w.session().state(), imudesk::device::SessionState::Failed);
+        // A second error joins the open box instead of stacking another one.
+        w.connectPort(QStringLiteral("/dev/imudesk-no-such-port-2"), 115200);
+        QTRY_VERIFY(box->text().contains(QLatin1String("imudesk-no-such-port-2")));
+        QCOMPARE(w.findChildren<QMessageBox *>().size(), 1);
+        QVERIFY(w.isRefreshing());
+        box->close();
+    }
+
+    void connectionBarListsSimulators()
+    {
+        imudesk::ui::ConnectionBar bar;
+        const QStringList texts = bar.portTexts();
+        QVERIFY(texts.contains(QStringLiteral("Simulated HI14 (firmware 1.7.1)")));
+        QVERIFY(texts.contains(QStringLiteral("Simulated HI14 (firmware 1.6.6)")));
+        bar.selectPort(PortChoice::serial(QStringLiteral("/dev/pts/99")));
+        QCOMPARE(bar.selectedPort(), PortChoice::serial(QStringLiteral("/dev/pts/99")));
+        bar.refreshPorts(); // a rescan keeps the choice
+        QCOMPARE(bar.selectedPort(), PortChoice::serial(QStringLiteral("/dev/pts/99")));
+        QCOMPARE(bar.selectedBaud(), 0);
+        bar.selectBaud(921600);
+        QCOMPARE(bar.selectedBaud(), 921600);
+        QSignalSpy connectSpy(&bar, &imudesk::ui::ConnectionBar::connectRequested);
+        QSignalSpy disconnectSpy(&bar, &imudesk::ui::ConnectionBar::disconnectRequested);
+        auto *button = bar.findChild<QPushButton *>(QStringLiteral("connectButton"));
+        QVERIFY(button);
+        button->click();
+        bar.setSessionState(imudesk::device::SessionState::Connected);
+        button->click();
+        QCOMPARE(connectSpy.count(), 1);
+        QCOMPARE(disconnectSpy.count(), 1);
+    }
+
+    void consoleHistory()
+    {
+        ConsoleWidget console;
+        QSignalSpy spy(&console, &ConsoleWidget::commandSubmitted);
+        QTest::keyClicks(console.input(), QStringLiteral("LOG VERSION"));
+        QTest::keyClick(console.input(), Qt::Key_Return);
+        console.submit(QStringLiteral("LOG COMCONFIG"));
+        QCOMPARE(spy.count(), 2);
+        QTest::keyClicks(console.input(), QStringLiteral("draft"));
+        QTest::keyClick(console.input(), Qt::Key_Up);
+        QCOMPARE(console.input()->text(), QStringLiteral("LOG COMCONFIG"));
+        QTest::keyClick(console.input(), Qt::Key_Up);
+        QCOMPARE(console.input()->text(), QStringLiteral("LOG VERSION"));
+        QTest::keyClick(console.input(), Qt::Key_Up);
+        QCOMPARE(console.input()->text(), QStringLiteral("LOG VERSION"));
+        QTest::keyClick(console.input(), Qt::Key_Down);
+        QTest::keyClick(console.input(), Qt::Key_Down);
+        QCOMPARE(console.input()->text(), QStringLiteral("draft"));
+
+        imudesk::protocol::hipnuc::AsciiReply err;
+        err.status = imudesk::protocol::hipnuc::AsciiReply::Status::Error;
+        err.errorLine = "ERR";
+        console.showCommand(7, QStringLiteral("CONFIG ATT MODE 9"));
+        console.showReply(7, err);
+        QVERIFY(console.logText().endsWith(QLatin1String("ERR: ERR")));
+    }
+
+    void windowSettingsRoundTrip()
+    {
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        QSettings store(dir.filePath(QStringLiteral("s.ini")), QSettings::IniFormat);
+        WindowSettings a;
+        a.geometry = QByteArray("geo");
+        a.windowState = QByteArray("state");
+        a.port = PortChoice::simulated(QStringLiteral("HI14"), QStringLiteral("1.6.6")).key();
+        a.baud = 460800;
+        a.save(store);
+        WindowSettings b;
+        b.load(store);
+        QCOMPARE(b.geometry, a.geometry);
+        QCOMPARE(b.windowState, a.windowState);
+        QCOMPARE(b.port, a.port);
+        QCOMPARE(b.baud, 460800);
+        store.setValue(QString::fromLatin1(WindowSettings::kBaudKey), 12345); // not a HiPNUC rate
+        b.load(store);
+        QCOMPARE(b.baud, 0);
+
+        MainWindow w(a);
+        QCOMPARE(w.connectionBar()->selectedPort().key(), a.port);
+        QCOMPARE(w.windowSettings().baud, 460800);
+    }
+};
+
+QTEST_MAIN(TstMainWindow)
+#include "tst_main_window.moc"

@@ -1,0 +1,191 @@
+// LatestValuesModel: the manual's HI91 example, change detection, missing fields.
+#include "../common/golden.h"
+#include "model/main_status.h"
+#include "models/latest_values_model.h"
+#include "protocol/hipnuc/payloads.h"
+
+#include <QAbstractItemModelTester>
+#include <QSignalSpy>
+#include <QTest>
+
+using imudesk::model::Sample;
+using imudesk::models::LatestValuesModel;
+namespace hp = imudesk::protocol::hipnuc;
+
+namespace {
+
+// The v1.7.1 manual's HI91 example frame (section 5.11), decoded.
+Sample manualSample()
+{
+    const auto frame = golden::bytes(golden::hi91Frame());
+    hp::Hi91 h;
+    if (frame.size() != 82 || !hp::decodeHi91(frame.data() + 6, 76, h))
+        return {};
+    return hp::toSample(h);
+}
+
+QString value(const LatestValuesModel &m, LatestValuesModel::Row row)
+{
+    return m.index(row, LatestValuesModel::ValueColumn).data().toString();
+}
+
+} // namespace
+
+class TstLatestValuesModel : public QObject {
+    Q_OBJECT
+private Q_SLOTS:
+    void modelTester()
+    {
+        LatestValuesModel m;
+        QAbstractItemModelTester tester(&m, QAbstractItemModelTester::FailureReportingMode::QtTest);
+        Sample s = manualSample();
+        m.refresh(s);
+        s.roll += 1;
+        s.fields &= ~imudesk::model::FieldMag;
+        m.refresh(s);
+        m.refresh(std::nullopt);
+        m.retranslate();
+        QCOMPARE(m.rowCount(), int(LatestValuesModel::RowCount));
+        QCOMPARE(m.columnCount(), 3);
+    }
+
+    void headersAndShape()
+    {
+        LatestValuesModel m;
+        QCOMPARE(m.headerData(0, Qt::Horizontal).toString(), QStringLiteral("Quantity"));
+        QCOMPARE(m.headerData(1, Qt::Horizontal).toString(), QStringLiteral("Value"));
+        QCOMPARE(m.headerData(2, Qt::Horizontal).toString(), QStringLiteral("Unit"));
+        QCOMPARE(m.index(LatestValuesModel::Roll, 0).data().toString(), QStringLiteral("Roll"));
+        QCOMPARE(m.index(LatestValuesModel::GyrZ, 2).data().toString(), QStringLiteral("deg/s"));
+        QCOMPARE(m.index(LatestValuesModel::MagX, 2).data().toString(), QStringLiteral("µT"));
+        QCOMPARE(m.index(LatestValuesModel::AccY, 2).data().toString(), QStringLiteral("G"));
+    }
+
+    void emptyShowsDash()
+    {
+        LatestValuesModel m;
+        for (int r = 0; r < LatestValuesModel::RowCount; ++r)
+            QCOMPARE(value(m, LatestValuesModel::Row(r)), QStringLiteral("—"));
+    }
+
+    void manualHi91Values()
+    {
+        const Sample s = manualSample();
+        QCOMPARE(s.source, std::string("HI91"));
+        LatestValuesModel m;
+        QSignalSpy spy(&m, &QAbstractItemModel::dataChanged);
+        m.refresh(s);
+        // Every row changed from "—": one contiguous range in the value column.
+        QCOMPARE(spy.count(), 1);
+        QCOMPARE(spy.at(0).at(0).toModelIndex().row(), 0);
+        QCOMPARE(spy.at(0).at(1).toModelIndex().row(), int(LatestValuesModel::RowCount) - 1);
+        QCOMPARE(spy.at(0).at(0).toModelIndex().column(), int(LatestValuesModel::ValueColumn));
+
+        QCOMPARE(value(m, LatestValuesModel::AccX), QStringLiteral("-0.2206"));
+        QCOMPARE(value(m, LatestValuesModel::AccY), QStringLiteral("0.2092"));
+        QCOMPARE(value(m, LatestValuesModel::AccZ), QStringLiteral("0.9489"));
+        QCOMPARE(value(m, LatestValuesModel::GyrX), QStringLiteral("-0.062"));
+        QCOMPARE(value(m, LatestValuesModel::GyrY), QStringLiteral("-0.006"));
+        QCOMPARE(value(m, LatestValuesModel::GyrZ), QStringLiteral("-0.010"));
+        QCOMPARE(value(m, LatestValuesModel::MagX), QStringLiteral("7.892"));
+        QCOMPARE(value(m, LatestValuesModel::MagY), QStringLiteral("14.625"));
+        QCOMPARE(value(m, LatestValuesModel::MagZ), QStringLiteral("-60.042"));
+        QCOMPARE(value(m, LatestValuesModel::Roll), QStringLiteral("13.05"));
+        QCOMPARE(value(m, LatestValuesModel::Pitch), QStringLiteral("12.19"));
+        QCOMPARE(value(m, LatestValuesModel::Yaw), QStringLiteral("-122.48"));
+        QCOMPARE(value(m, LatestValuesModel::QuatW), QStringLiteral("-0.4859"));
+        QCOMPARE(value(m, LatestValuesModel::QuatX), QStringLiteral("-0.1498"));
+        QCOMPARE(value(m, LatestValuesModel::QuatY), QStringLiteral("0.0381"));
+        QCOMPARE(value(m, LatestValuesModel::QuatZ), QStringLiteral("0.8602"));
+        QCOMPARE(value(m, LatestValuesModel::Pressure), QStringLiteral("100676.1"));
+        QCOMPARE(value(m, LatestValuesModel::Temperature), QStringLiteral("35.0"));
+        QCOMPARE(value(m, LatestValuesModel::DeviceTime), QStringLiteral("1840392"));
+        // 0x1508: WB_CONV (3), bit 8 (undefined), MAG_AIDING (10), SOUT_PULSE (12).
+        QCOMPARE(value(m, LatestValuesModel::StatusFlags), QStringLiteral("WB_CONV MAG_AIDING SOUT_PULSE (0x1508)"));
+        QCOMPARE(value(m, LatestValuesModel::FrameType), QStringLiteral("HI91"));
+    }
+
+    void unchangedRefreshEmitsNothing()
+    {
+        LatestValuesModel m;
+        QSignalSpy spy(&m, &QAbstractItemModel::dataChanged);
+        QSignalSpy resetSpy(&m, &QAbstractItemModel::modelReset);
+        m.refresh(std::nullopt);
+        QCOMPARE(spy.count(), 0);
+        const Sample s = manualSample();
+        m.refresh(s);
+        spy.clear();
+        m.refresh(s);
+        m.refresh(s);
+        QCOMPARE(spy.count(), 0);
+        // A change below the displayed precision is no change either.
+        Sample t = s;
+        t.roll += 0.0001;
+        m.refresh(t);
+        QCOMPARE(spy.count(), 0);
+        QCOMPARE(resetSpy.count(), 0);
+    }
+
+    void onlyChangedCells()
+    {
+        LatestValuesModel m;
+        Sample s = manualSample();
+        m.refresh(s);
+        QSignalSpy spy(&m, &QAbstractItemModel::dataChanged);
+        s.pitch = 1.5;
+        s.quat.x = 0.5;
+        s.quat.y = 0.25;
+        m.refresh(s);
+        QCOMPARE(spy.count(), 2);
+        const auto a0 = spy.at(0).at(0).toModelIndex(), a1 = spy.at(0).at(1).toModelIndex();
+        QCOMPARE(a0.row(), int(LatestValuesModel::Pitch));
+        QCOMPARE(a1.row(), int(LatestValuesModel::Pitch));
+        QCOMPARE(a0.column(), int(LatestValuesModel::ValueColumn));
+        QCOMPARE(a1.column(), int(LatestValuesModel::ValueColumn));
+        QCOMPARE(spy.at(1).at(0).toModelIndex().row(), int(LatestValuesModel::QuatX));
+        QCOMPARE(spy.at(1).at(1).toModelIndex().row(), int(LatestValuesModel::QuatY));
+        QCOMPARE(value(m, LatestValuesModel::Pitch), QStringLiteral("1.50"));
+    }
+
+    void missingFieldsShowDash()
+    {
+        Sample s;
+        s.source = "HI92";
+        s.fields = imudesk::model::FieldAcc | imudesk::model::FieldGyr | imudesk::model::FieldEuler;
+        s.acc = {0, 0, 1};
+        s.roll = -0.0001; // rounds to zero without a minus sign
+        LatestValuesModel m;
+        m.refresh(s);
+        QCOMPARE(value(m, LatestValuesModel::AccZ), QStringLiteral("1.0000"));
+        QCOMPARE(value(m, LatestValuesModel::Roll), QStringLiteral("0.00"));
+        for (auto row : {LatestValuesModel::MagX, LatestValuesModel::MagY, LatestValuesModel::MagZ,
+                         LatestValuesModel::QuatW, LatestValuesModel::Pressure, LatestValuesModel::Temperature,
+                         LatestValuesModel::DeviceTime, LatestValuesModel::StatusFlags})
+            QCOMPARE(value(m, row), QStringLiteral("—"));
+        QCOMPARE(value(m, LatestValuesModel::FrameType), QStringLiteral("HI92"));
+
+        // Status present but no bit set.
+        s.fields |= imudesk::model::FieldMainStatus;
+        m.refresh(s);
+        QCOMPARE(value(m, LatestValuesModel::StatusFlags), QStringLiteral("none (0x0000)"));
+        // Back to nothing.
+        m.refresh(std::nullopt);
+        QCOMPARE(value(m, LatestValuesModel::AccZ), QStringLiteral("—"));
+        QCOMPARE(value(m, LatestValuesModel::FrameType), QStringLiteral("—"));
+    }
+
+    void toolTipsGiveMeaningAndUnit()
+    {
+        LatestValuesModel m;
+        for (int r = 0; r < LatestValuesModel::RowCount; ++r)
+            for (int c = 0; c < LatestValuesModel::ColumnCount; ++c)
+                QVERIFY(!m.index(r, c).data(Qt::ToolTipRole).toString().isEmpty());
+        QVERIFY(m.index(LatestValuesModel::AccX, 1).data(Qt::ToolTipRole).toString().contains(QLatin1String("in G")));
+        QVERIFY(m.index(LatestValuesModel::GyrY, 1).data(Qt::ToolTipRole).toString().contains(QLatin1String("deg/s")));
+        QVERIFY(m.index(LatestValuesModel::MagZ, 0).data(Qt::ToolTipRole).toString().contains(QStringLiteral("µT")));
+        QVERIFY(m.index(LatestValuesModel::Pressure, 2).data(Qt::ToolTipRole).toString().contains(QLatin1String("Pa")));
+    }
+};
+
+QTEST_GUILESS_MAIN(TstLatestValuesModel)
+#include "tst_latest_values_model.moc"

@@ -1,0 +1,762 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1" language="zh_TW">
+<context>
+    <name>PtySimulator</name>
+    <message>
+        <location filename="../core/sim/pty_simulator.cpp" line="+251"/>
+        <source>Cannot open a pseudo-terminal: %1</source>
+        <translation>無法開啟虛擬終端機：%1</translation>
+    </message>
+</context>
+<context>
+    <name>imudesk::device::SessionWorker</name>
+    <message>
+        <location filename="../core/device/session_worker.cpp" line="+91"/>
+        <source>the connection was closed</source>
+        <translation>連線已關閉</translation>
+    </message>
+    <message>
+        <location line="+33"/>
+        <source>the port is not open</source>
+        <translation>串列埠未開啟</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>writing to the port failed</source>
+        <translation>寫入串列埠失敗</translation>
+    </message>
+    <message>
+        <location line="+28"/>
+        <source>no reply within %1 ms (the device ignores commands it does not know)</source>
+        <translation>%1 ms 內無回應（裝置不回應它不認識的指令）</translation>
+    </message>
+    <message>
+        <location line="+171"/>
+        <source>No HiPNUC device answered on %1 at any baud rate (115200, 921600, 460800, 230400, 256000, 57600, 38400, 19200, 9600, 4800). Check the cable and the power, and that no other program uses the port.</source>
+        <translation>%1 上在所有波特率（115200、921600、460800、230400、256000、57600、38400、19200、9600、4800）下都沒有 HiPNUC 裝置回應。請檢查線材和電源，並確認沒有其他程式占用該串列埠。</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>trying %1 baud</source>
+        <translation>正在嘗試 %1 波特率</translation>
+    </message>
+    <message>
+        <location line="+52"/>
+        <source>%1 at %2 baud</source>
+        <translation>%1，波特率 %2</translation>
+    </message>
+</context>
+<context>
+    <name>imudesk::io::SerialTransport</name>
+    <message>
+        <location filename="../core/io/serial_transport.cpp" line="+20"/>
+        <source>Port %1 was not found. Check that the device is plugged in and choose the port again from the list.</source>
+        <translation>找不到串列埠 %1。請檢查裝置是否已插好，然後從清單中重新選擇串列埠。</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Port %1 is in use by another program (a serial terminal, CHCenter or another ImuDesk). Close that program and connect again.</source>
+        <translation>串列埠 %1 正被其他程式占用（序列終端機、CHCenter 或另一個 ImuDesk）。請關閉該程式後重新連線。</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>No permission to open %1. On Linux add your user to the dialout group (sudo usermod -aG dialout $USER), then log out and in again.</source>
+        <translation>沒有開啟 %1 的權限。在 Linux 上請將目前使用者加入 dialout 群組（sudo usermod -aG dialout $USER），然後登出再重新登入。</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Could not open %1: %2</source>
+        <translation>無法開啟 %1：%2</translation>
+    </message>
+    <message>
+        <location line="+103"/>
+        <source>The connection to %1 was lost (%2). Check the cable; everything received so far is kept.</source>
+        <translation>與 %1 的連線已中斷（%2）。請檢查線材；已接收的資料都會保留。</translation>
+    </message>
+</context>
+<context>
+    <name>imudesk::model::MainStatus</name>
+    <message>
+        <location filename="../core/model/main_status.cpp" line="+11"/>
+        <source>Gyro bias estimate not yet converged: keep the module still for 3-5 s to improve heading accuracy.</source>
+        <translation>陀螺儀零偏估計尚未收斂：請保持模組靜止 3-5 s，以提高航向角精度。</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Magnetic disturbance: the field is disturbed, the magnetometer is not calibrated or the hard-iron environment changed; 9-axis heading may be wrong.</source>
+        <translation>磁場干擾：磁場受到干擾、磁力計未校準或硬磁環境發生變化；9 軸航向角可能不準確。</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Accelerometer over range now or within the last 2 s.</source>
+        <translation>加速度計目前或最近 2 s 內超出量程。</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Gyroscope over range now or within the last 2 s.</source>
+        <translation>陀螺儀目前或最近 2 s 內超出量程。</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Attitude accuracy poor (large AHRS filter covariance): keep still for a moment.</source>
+        <translation>姿態精度差（AHRS 濾波器共變異數較大）：請保持靜止片刻。</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The device detected that it is static.</source>
+        <translation>裝置偵測到自身處於靜止狀態。</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The magnetometer takes part in heading (9-axis mode).</source>
+        <translation>磁力計參與航向解算（9 軸模式）。</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Not synchronised to UTC: system_time is time since power-up.</source>
+        <translation>未與 UTC 同步：system_time 為上電以來的時間。</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>This frame corresponds to a SYNC_OUT pulse.</source>
+        <translation>該幀對應一個 SYNC_OUT 脈衝。</translation>
+    </message>
+</context>
+<context>
+    <name>imudesk::models::LatestValuesModel</name>
+    <message>
+        <location filename="../core/models/latest_values_model.cpp" line="+132"/>
+        <source>Quantity</source>
+        <translation>物理量</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Value</source>
+        <translation>數值</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Unit</source>
+        <translation>單位</translation>
+    </message>
+    <message>
+        <location line="+71"/>
+        <source>none (%1)</source>
+        <translation>無 (%1)</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>Acceleration %1</source>
+        <translation>加速度 %1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Angular velocity %1</source>
+        <translation>角速度 %1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Magnetic field %1</source>
+        <translation>磁場 %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Roll</source>
+        <translation>橫滾角</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Pitch</source>
+        <translation>俯仰角</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Yaw</source>
+        <translation>航向角</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Quaternion %1</source>
+        <translation>四元數 %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Air pressure</source>
+        <translation>氣壓</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Temperature</source>
+        <translation>溫度</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Device time</source>
+        <translation>裝置時間</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Status flags</source>
+        <translation>狀態旗標</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Frame type</source>
+        <translation>幀類型</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>G</source>
+        <translation>G</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>deg/s</source>
+        <translation>°/s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>µT</source>
+        <translation>µT</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>deg</source>
+        <translation>°</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Pa</source>
+        <translation>Pa</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>°C</source>
+        <translation>°C</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>ms</source>
+        <translation>ms</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Acceleration along the sensor&apos;s %1 axis, in G (1 G = 9.8 m/s², the vendor&apos;s constant).</source>
+        <translation>沿感測器 %1 軸的加速度，單位 G（1 G = 9.8 m/s²，廠商採用的常數）。</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Angular velocity about the sensor&apos;s %1 axis, in deg/s.</source>
+        <translation>繞感測器 %1 軸的角速度，單位 °/s。</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Magnetic field along the sensor&apos;s %1 axis, in µT.</source>
+        <translation>沿感測器 %1 軸的磁場強度，單位 µT。</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Roll angle, in degrees (Euler angles in the device&apos;s convention, ENU 312 by default).</source>
+        <translation>橫滾角，單位 °（裝置約定的歐拉角，預設 ENU 312 順序）。</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Pitch angle, in degrees (Euler angles in the device&apos;s convention, ENU 312 by default).</source>
+        <translation>俯仰角，單位 °（裝置約定的歐拉角，預設 ENU 312 順序）。</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Yaw (heading) angle, in degrees (Euler angles in the device&apos;s convention, ENU 312 by default).</source>
+        <translation>航向角，單位 °（裝置約定的歐拉角，預設 ENU 312 順序）。</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Attitude quaternion, component %1 (body to navigation frame), no unit.</source>
+        <translation>姿態四元數的 %1 分量（載體座標系到導航座標系），無單位。</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Air pressure from the barometer, in Pa.</source>
+        <translation>氣壓計測得的氣壓，單位 Pa。</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Sensor temperature, in °C.</source>
+        <translation>感測器溫度，單位 °C。</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Device timestamp in ms: UTC time of day when synchronised, otherwise time since power-up.</source>
+        <translation>裝置時間戳記，單位 ms：與 UTC 同步時為當天的 UTC 時間，否則為上電以來的時間。</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>MAIN_STATUS flags set in the latest frame (firmware 1.7.0 and later), then the raw word in hex.</source>
+        <translation>最新一幀中設定的 MAIN_STATUS 旗標（韌體 1.7.0 及以上），括號內為十六進位原始值。</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The frame type (packet tag) that carried the latest values, e.g. HI91.</source>
+        <translation>攜帶最新數值的幀類型（封包標籤），例如 HI91。</translation>
+    </message>
+</context>
+<context>
+    <name>imudesk::ui::ConnectionBar</name>
+    <message>
+        <location filename="../ui/connection_bar.cpp" line="+148"/>
+        <source>SN %1</source>
+        <translation>序號 %1</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Manufacturer: %1</source>
+        <translation>製造商：%1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>USB ID: %1:%2</source>
+        <translation>USB ID：%1:%2</translation>
+    </message>
+    <message>
+        <location line="+41"/>
+        <source>&amp;Port:</source>
+        <translation>串列埠(&amp;P)：</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Serial port of the IMU, or a simulated device that runs inside ImuDesk</source>
+        <translation>IMU 所連接的串列埠，或在 ImuDesk 內部執行的模擬裝置</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Refresh</source>
+        <translation>重新整理</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Scan for serial ports again (the list also refreshes every 2 s)</source>
+        <translation>重新掃描串列埠（清單也會每 2 s 自動重新整理）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Baud rate:</source>
+        <translation>波特率(&amp;B)：</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Auto</source>
+        <translation>自動</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Auto tries every HiPNUC baud rate, starting with 115200</source>
+        <translation>自動：從 115200 開始依序嘗試 HiPNUC 支援的所有波特率</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Disconnect</source>
+        <translation>中斷連線</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Close the connection (Ctrl+D)</source>
+        <translation>關閉連線（Ctrl+D）</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Connect</source>
+        <translation>連線</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Connect to the selected port (Ctrl+K)</source>
+        <translation>連線到所選串列埠（Ctrl+K）</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Simulated %1 (firmware %2)</source>
+        <translation>模擬 %1（韌體 %2）</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1 (%2)</source>
+        <translation>%1（%2）</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>No serial port found</source>
+        <translation>找不到串列埠</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>A simulated device on a pseudo-terminal, driven exactly like hardware</source>
+        <translation>執行在虛擬終端機上的模擬裝置，操作方式與真實硬體完全相同</translation>
+    </message>
+</context>
+<context>
+    <name>imudesk::ui::ConsoleWidget</name>
+    <message>
+        <location filename="../ui/console_widget.cpp" line="+71"/>
+        <source>(reply to: %1)</source>
+        <translation>（對 %1 的回應）</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>OK</source>
+        <translation>OK</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>ERR: %1</source>
+        <translation>錯誤：%1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Timeout: %1</source>
+        <translation>逾時：%1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Cancelled: %1</source>
+        <translation>已取消：%1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Not sent: %1</source>
+        <translation>未傳送：%1</translation>
+    </message>
+    <message>
+        <location line="+59"/>
+        <source>Type an ASCII command, e.g. LOG VERSION, and press Enter</source>
+        <translation>輸入 ASCII 指令（例如 LOG VERSION）後按 Enter</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Enter sends the command; Up and Down recall earlier commands</source>
+        <translation>Enter 傳送指令；上、下方向鍵叫出先前的指令</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Send</source>
+        <translation>傳送</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Clear log</source>
+        <translation>清除日誌</translation>
+    </message>
+</context>
+<context>
+    <name>imudesk::ui::LanguageSwitcher</name>
+    <message>
+        <location filename="../ui/language_switcher.cpp" line="+52"/>
+        <source>Unknown language &quot;%1&quot;; choose one of: %2.</source>
+        <translation>未知語言「%1」；請選擇以下其中之一：%2。</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>The %1 translation was not found in %2.</source>
+        <translation>在 %2 中找不到 %1 翻譯。</translation>
+    </message>
+</context>
+<context>
+    <name>imudesk::ui::MainWindow</name>
+    <message>
+        <location filename="../ui/main_window.cpp" line="+158"/>
+        <source>Disconnect first, then connect to the simulated device.</source>
+        <translation>請先中斷連線，再連線到模擬裝置。</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>The simulated device could not start: %1</source>
+        <translation>模擬裝置無法啟動：%1</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Simulated %1 (firmware %2)</source>
+        <translation>模擬 %1（韌體 %2）</translation>
+    </message>
+    <message>
+        <location line="+33"/>
+        <source>Choose a port first.</source>
+        <translation>請先選擇串列埠。</translation>
+    </message>
+    <message>
+        <location line="+48"/>
+        <source>ImuDesk</source>
+        <translation>ImuDesk</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>About ImuDesk</source>
+        <translation>關於 ImuDesk</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&lt;h3&gt;ImuDesk %1&lt;/h3&gt;&lt;p&gt;A bench tool for HiPNUC IMU modules: live values, the ASCII command console and simulated devices.&lt;/p&gt;&lt;p&gt;Built with Qt %2.&lt;/p&gt;</source>
+        <translation>&lt;h3&gt;ImuDesk %1&lt;/h3&gt;&lt;p&gt;HiPNUC IMU 模組測試工具：即時數值、ASCII 指令主控台和模擬裝置。&lt;/p&gt;&lt;p&gt;以 Qt %2 建置。&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <location line="+70"/>
+        <source>Not connected</source>
+        <translation>未連線</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Opening %1…</source>
+        <translation>正在開啟 %1…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Detecting the baud rate of %1…</source>
+        <translation>正在偵測 %1 的波特率…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Connected</source>
+        <translation>已連線</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Connection to %1 lost</source>
+        <translation>與 %1 的連線已中斷</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Could not connect to %1</source>
+        <translation>無法連線到 %1</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>firmware %1</source>
+        <translation>韌體 %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>SN %1</source>
+        <translation>序號 %1</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Product: %1</source>
+        <translation>產品：%1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Build: %1</source>
+        <translation>建置：%1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Bootloader: %1</source>
+        <translation>開機載入程式：%1</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <location line="+8"/>
+        <source>%1 baud</source>
+        <translation>波特率 %1</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1 %2 Hz</source>
+        <translation>%1 %2 Hz</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>no frames</source>
+        <translation>無資料幀</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>load %1%</source>
+        <translation>負載 %1%</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>CRC errors %1</source>
+        <translation>CRC 錯誤 %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>skipped %1 B</source>
+        <translation>略過 %1 B</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Received %1 bytes, %2 frames, %3 NMEA sentences.
+Errors: %4 CRC, %5 length, %6 payload, %7 NMEA; %8 bytes skipped.
+Link load = bytes per second × 10 bits / baud rate.</source>
+        <translation>已接收 %1 位元組、%2 幀、%3 條 NMEA 語句。
+錯誤：CRC %4，長度 %5，酬載 %6，NMEA %7；略過 %8 位元組。
+鏈路負載 = 每秒位元組數 × 10 位元 / 波特率。</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>ImuDesk – IMU bench tool</source>
+        <translation>ImuDesk – IMU 測試工具</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 – %2</source>
+        <translation>%1 – %2</translation>
+    </message>
+    <message>
+        <location line="+89"/>
+        <source>&amp;File</source>
+        <translation>檔案(&amp;F)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Device</source>
+        <translation>裝置(&amp;D)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;View</source>
+        <translation>檢視(&amp;V)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Help</source>
+        <translation>說明(&amp;H)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Quit</source>
+        <translation>結束(&amp;Q)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Connect</source>
+        <translation>連線(&amp;C)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Connect to the port chosen in the connection bar</source>
+        <translation>連線到連線列中所選的串列埠</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Disconnect</source>
+        <translation>中斷連線(&amp;D)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Send LOG &amp;VERSION</source>
+        <translation>傳送 LOG &amp;VERSION</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Ask the device for its product name, firmware and serial number</source>
+        <translation>查詢裝置的產品型號、韌體版本和序號</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;About ImuDesk</source>
+        <translation>關於 ImuDesk(&amp;A)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Console</source>
+        <translation>主控台</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Connection</source>
+        <translation>連線</translation>
+    </message>
+</context>
+<context>
+    <name>imudesk::ui::StatusFlagsWidget</name>
+    <message>
+        <location filename="../ui/status_flags_widget.cpp" line="+95"/>
+        <source>Status:</source>
+        <translation>狀態：</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>&lt;b&gt;%1&lt;/b&gt; (bit %2): %3</source>
+        <translation>&lt;b&gt;%1&lt;/b&gt;（位元 %2）：%3</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>MAIN_STATUS flags of the latest frame: green = set, grey = clear, outlined = the frame carries no status word (firmware before 1.7.0, or another frame type)</source>
+        <translation>最新一幀的 MAIN_STATUS 旗標：綠色 = 已設定，灰色 = 未設定，僅外框 = 該幀不含狀態字（韌體低於 1.7.0 或其他幀類型）</translation>
+    </message>
+</context>
+<context>
+    <name>main</name>
+    <message>
+        <location filename="../app/gui/main.cpp" line="+70"/>
+        <source>ImuDesk: a bench tool for HiPNUC IMU modules.</source>
+        <translation>ImuDesk：HiPNUC IMU 模組測試工具。</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>User interface language: zh_CN, zh_TW or en (default: the system&apos;s).</source>
+        <translation>介面語言：zh_CN、zh_TW 或 en（預設跟隨系統）。</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Start connected to a simulated device (model MODEL, default HI14) that streams HI91 at 100 Hz.</source>
+        <translation>啟動後連線到一個以 100 Hz 輸出 HI91 的模擬裝置（型號 MODEL，預設 HI14）。</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Firmware of the simulated device: 1.7.1 or 1.6.6 (default 1.7.1).</source>
+        <translation>模擬裝置的韌體版本：1.7.1 或 1.6.6（預設 1.7.1）。</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Motion of the simulated device: static, spin or tumble (default static).</source>
+        <translation>模擬裝置的運動方式：static（靜止）、spin（旋轉）或 tumble（翻滾）（預設 static）。</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Start connected to this serial port.</source>
+        <translation>啟動後連線到此串列埠。</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Baud rate for --port or --simulate (default: detect automatically).</source>
+        <translation>--port 或 --simulate 使用的波特率（預設自動偵測）。</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Model to simulate with --simulate (default HI14).</source>
+        <translation>--simulate 模擬的型號（預設 HI14）。</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>A model name is only accepted after --simulate.</source>
+        <translation>型號名稱只能接在 --simulate 之後。</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Use either --simulate or --port, not both.</source>
+        <translation>--simulate 和 --port 只能擇一使用。</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Unsupported baud rate &quot;%1&quot;; use auto or one of: %2.</source>
+        <translation>不支援的波特率「%1」；請使用 auto 或以下其中之一：%2。</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Invalid firmware version &quot;%1&quot;; use e.g. 1.7.1 or 1.6.6.</source>
+        <translation>無效的韌體版本「%1」；請使用例如 1.7.1 或 1.6.6。</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Unknown motion &quot;%1&quot;; use static, spin or tumble.</source>
+        <translation>未知的運動方式「%1」；請使用 static、spin 或 tumble。</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>ImuDesk</source>
+        <translation>ImuDesk</translation>
+    </message>
+</context>
+</TS>

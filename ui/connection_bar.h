@@ -1,0 +1,72 @@
+#pragma once
+// The strip at the top of the main window: port, baud rate, Connect/Disconnect and
+// Refresh. Lists serial ports (rescanned every 2 s while visible) and the simulated
+// devices. It only reports what the user chose; the main window opens the session.
+#include "device/session_types.h"
+#include "port_choice.h"
+
+#include <QTimer>
+#include <QWidget>
+
+class QComboBox;
+class QLabel;
+class QPushButton;
+class QToolButton;
+
+namespace imudesk::ui {
+
+class ConnectionBar : public QWidget {
+    Q_OBJECT
+public:
+    static constexpr int kPortScanIntervalMs = 2000;
+
+    explicit ConnectionBar(QWidget *parent = nullptr);
+
+    PortChoice selectedPort() const;
+    // Selects `choice`, adding it to the list when it is not there (e.g. a path given on the command line).
+    void selectPort(const PortChoice &choice);
+    int selectedBaud() const; // 0 = auto-detect
+    void selectBaud(int baud);
+    // Enables the choosers and flips the button between Connect and Disconnect.
+    void setSessionState(device::SessionState state);
+    // Texts of every entry in the port list (for tests and diagnostics).
+    QStringList portTexts() const;
+
+public Q_SLOTS:
+    void refreshPorts();
+
+Q_SIGNALS:
+    void connectRequested();
+    void disconnectRequested();
+
+protected:
+    void changeEvent(QEvent *event) override;
+    void showEvent(QShowEvent *event) override;
+    void hideEvent(QHideEvent *event) override;
+
+private:
+    void retranslateUi();
+    void rebuildPortCombo();
+    void onButtonClicked();
+    QString portText(const PortChoice &choice) const;
+
+    struct PortEntry {
+        PortChoice choice;
+        QString description; // serial: description and serial number
+        QString toolTip;
+        bool operator==(const PortEntry &) const = default;
+    };
+
+    QLabel *m_portLabel = nullptr;
+    QComboBox *m_portCombo = nullptr;
+    QToolButton *m_refreshButton = nullptr;
+    QLabel *m_baudLabel = nullptr;
+    QComboBox *m_baudCombo = nullptr;
+    QPushButton *m_connectButton = nullptr;
+    QTimer m_scanTimer;
+    std::vector<PortEntry> m_serialPorts;
+    std::vector<PortChoice> m_extraPorts; // chosen programmatically, not found by the scan
+    device::SessionState m_state = device::SessionState::Closed;
+};
+
+} // namespace imudesk::ui
