@@ -2,69 +2,37 @@
 
 #include "connection_bar.h"
 #include "console_widget.h"
-#include "models/latest_values_model.h"
-#include "sim/pty_simulator.h"
-#include "status_flags_widget.h"
+#include "device_workspace.h"
 
 #include <QAction>
 #include <QApplication>
-#include <QDockWidget>
 #include <QEvent>
-#include <QHBoxLayout>
-#include <QHeaderView>
+#include <QFileDialog>
+#include <QImageWriter>
 #include <QKeySequence>
-#include <QLabel>
 #include <QMenu>
 #include <QMenuBar>
 #include <QMessageBox>
-#include <QStatusBar>
-#include <QTableView>
+#include <QTabBar>
+#include <QTabWidget>
 #include <QToolBar>
-#include <QVBoxLayout>
-#include <QWindowStateChangeEvent>
 
 namespace imudesk::ui {
 
 using device::SessionState;
 
-namespace {
-
-bool isBusy(SessionState s)
-{
-    return s == SessionState::Opening || s == SessionState::Detecting || s == SessionState::Connected;
-}
-
-QString rateText(double hz)
-{
-    return QString::number(hz, 'f', hz >= 10 ? 0 : 1);
-}
-
-} // namespace
-
 MainWindow::MainWindow(const WindowSettings &settings, QWidget *parent) : QMainWindow(parent)
 {
     setObjectName(QStringLiteral("mainWindow"));
 
-    // Centre: the live values.
-    m_valuesModel = new models::LatestValuesModel(this);
-    m_valuesView = new QTableView(this);
-    m_valuesView->setObjectName(QStringLiteral("valuesView"));
-    m_valuesView->setModel(m_valuesModel);
-    m_valuesView->verticalHeader()->hide();
-    m_valuesView->verticalHeader()->setDefaultSectionSize(m_valuesView->fontMetrics().height() + 6);
-    m_valuesView->setAlternatingRowColors(true);
-    m_valuesView->setSelectionBehavior(QAbstractItemView::SelectRows);
-    m_valuesView->setEditTriggers(QAbstractItemView::NoEditTriggers);
-    m_valuesView->setWordWrap(false);
-    m_valuesView->setCornerButtonEnabled(false);
-    // Fixed widths (no per-tick resizing): quantity and value side by side, the unit column takes the rest.
-    auto *header = m_valuesView->horizontalHeader();
-    header->setSectionResizeMode(QHeaderView::Interactive);
-    header->setStretchLastSection(true);
-    header->setDefaultAlignment(Qt::AlignLeft | Qt::AlignVCenter);
-    setCentralWidget(m_valuesView);
+    m_tabs = new QTabWidget(this);
+    m_tabs->setObjectName(QStringLiteral("workspaceTabs"));
+    m_tabs->setDocumentMode(true);
+    m_tabs->setTabsClosable(true);
+    m_tabs->setMovable(true);
+    setCentralWidget(m_tabs);
 
-    // Top: the connection bar.
+    // Top: the connection bar, acting on the current workspace.
     m_connectionBar = new ConnectionBar(this);
     m_connectionBar->setObjectName(QStringLiteral("connectionBar"));
     auto *toolBar = new QToolBar(this);
@@ -75,44 +43,84 @@ MainWindow::MainWindow(const WindowSettings &settings, QWidget *parent) : QMainW
     toolBar->addWidget(m_connectionBar);
     addToolBar(Qt::TopToolBarArea, toolBar);
 
-    // Bottom dock: the ASCII console.
-    m_console = new ConsoleWidget(this);
-    m_console->setObjectName(QStringLiteral("console"));
-    m_consoleDock = new QDockWidget(this);
-    m_consoleDock->setObjectName(QStringLiteral("consoleDock"));
-    m_consoleDock->setWidget(m_console);
-    addDockWidget(Qt::BottomDockWidgetArea, m_consoleDock);
-
     createActions();
     createMenus();
-    createStatusBar();
 
     connect(m_connectionBar, &ConnectionBar::connectRequested, this, &MainWindow::connectSelected);
     connect(m_connectionBar, &ConnectionBar::disconnectRequested, this, &MainWindow::disconnectDevice);
-    connect(m_console, &ConsoleWidget::commandSubmitted, this, &MainWindow::sendConsoleCommand);
+    connect(m_tabs, &QTabWidget::currentChanged, this, &MainWindow::onCurrentChanged);
+    connect(m_tabs, &QTabWidget::tabCloseRequested, this, &MainWindow::closeWorkspace);
 
-    connect(&m_session, &device::DeviceSession::stateChanged, this, &MainWindow::onStateChanged);
-    connect(&m_session, &device::DeviceSession::identityChanged, this, &MainWindow::onIdentityChanged);
-    connect(&m_session, &device::DeviceSession::statsUpdated, this, &MainWindow::onStatsUpdated);
-    connect(&m_session, &device::DeviceSession::baudDetected, this, &MainWindow::onBaudDetected);
-    connect(&m_session, &device::DeviceSession::commandFinished, this, &MainWindow::onCommandFinished);
-    connect(&m_session, &device::DeviceSession::textReceived, m_console, &ConsoleWidget::showText);
-    connect(&m_session, &device::DeviceSession::errorOccurred, this, &MainWindow::onErrorOccurred);
-
-    m_refreshTimer.setInterval(kRefreshIntervalMs);
-    m_refreshTimer.setTimerType(Qt::PreciseTimer);
-    connect(&m_refreshTimer, &QTimer::timeout, this, &MainWindow::refreshViews);
-
-    retranslateUi();
     restoreSettings(settings);
-    onStateChanged(SessionState::Closed, QString());
+    newWorkspace();
+    retranslateUi();
 }
 
 MainWindow::~MainWindow()
 {
-    // Close the port before the simulator behind it goes away.
-    m_session.disconnect(this);
-    m_session.close();
+    // Workspaces close their ports (and stop their simulators) as they go.
+    m_tabs->disconnect(this);
+}
+
+DeviceWorkspace *MainWindow::newWorkspace()
+{
+    auto *ws = new DeviceWorkspace(m_tabs);
+    ws->restoreLayout(m_workspaceLayout);
+    const int index = m_tabs->addTab(ws, ws->title());
+    connect(ws, &DeviceWorkspace::titleChanged, this, [this, ws](const QString &title) {
+        const int i = m_tabs->indexOf(ws);
+        if (i >= 0) {
+            m_tabs->setTabText(i, title);
+            m_tabs->setTabToolTip(i, title);
+        }
+        if (ws == currentWorkspace())
+            updateTitle();
+    });
+    connect(ws, &DeviceWorkspace::stateChanged, this, [this, ws](SessionState state) {
+        if (ws != currentWorkspace())
+            return;
+        m_connectionBar->setSessionState(state);
+        updateActions();
+        updateTitle();
+    });
+    connect(ws, &DeviceWorkspace::errorReported, this, &MainWindow::presentError);
+    m_tabs->setCurrentIndex(index);
+    m_tabs->tabBar()->setVisible(m_tabs->count() > 1);
+    return ws;
+}
+
+DeviceWorkspace *MainWindow::currentWorkspace() const
+{
+    return qobject_cast<DeviceWorkspace *>(m_tabs->currentWidget());
+}
+
+int MainWindow::workspaceCount() const
+{
+    return m_tabs->count();
+}
+
+DeviceWorkspace *MainWindow::workspace(int index) const
+{
+    return qobject_cast<DeviceWorkspace *>(m_tabs->widget(index));
+}
+
+void MainWindow::closeWorkspace(int index)
+{
+    DeviceWorkspace *ws = workspace(index);
+    if (!ws)
+        return;
+    m_workspaceLayout = ws->saveLayout();
+    m_tabs->removeTab(index);
+    delete ws; // closes its port
+    if (m_tabs->count() == 0)
+        newWorkspace();
+    m_tabs->tabBar()->setVisible(m_tabs->count() > 1);
+}
+
+DeviceWorkspace *MainWindow::freeWorkspace()
+{
+    DeviceWorkspace *ws = currentWorkspace();
+    return ws && !ws->isBusy() ? ws : newWorkspace();
 }
 
 WindowSettings MainWindow::windowSettings() const
@@ -120,6 +128,7 @@ WindowSettings MainWindow::windowSettings() const
     WindowSettings s;
     s.geometry = saveGeometry();
     s.windowState = saveState(WindowSettings::kVersion);
+    s.workspaceState = currentWorkspace() ? currentWorkspace()->saveLayout() : m_workspaceLayout;
     s.port = m_connectionBar->selectedPort().key();
     s.baud = m_connectionBar->selectedBaud();
     return s;
@@ -128,9 +137,10 @@ WindowSettings MainWindow::windowSettings() const
 void MainWindow::restoreSettings(const WindowSettings &settings)
 {
     if (settings.geometry.isEmpty() || !restoreGeometry(settings.geometry))
-        resize(1100, 840);
-    if (settings.windowState.isEmpty() || !restoreState(settings.windowState, WindowSettings::kVersion))
-        resizeDocks({m_consoleDock}, {220}, Qt::Vertical);
+        resize(1280, 860);
+    if (!settings.windowState.isEmpty())
+        restoreState(settings.windowState, WindowSettings::kVersion);
+    m_workspaceLayout = settings.workspaceState;
     const PortChoice port = PortChoice::fromKey(settings.port);
     if (port.isValid())
         m_connectionBar->selectPort(port);
@@ -139,58 +149,28 @@ void MainWindow::restoreSettings(const WindowSettings &settings)
 
 void MainWindow::connectPort(const QString &port, int baud)
 {
-    if (isBusy(m_state))
-        return;
-    stopSimulator();
-    m_identity.reset();
-    m_stats.reset();
-    m_baud = baud;
-    m_target = port;
     m_connectionBar->selectPort(PortChoice::serial(port));
     m_connectionBar->selectBaud(baud);
-    m_session.open(port, baud);
+    freeWorkspace()->connectPort(port, baud);
 }
 
 bool MainWindow::connectSimulated(const sim::SimOptions &options, int baud, QString *error)
 {
-    if (isBusy(m_state)) {
-        if (error)
-            *error = tr("Disconnect first, then connect to the simulated device.");
-        return false;
-    }
-    stopSimulator();
-    auto simulator = std::make_unique<sim::PtySimulator>(options);
-    QString why;
-    if (!simulator->start(&why)) {
-        if (error)
-            *error = tr("The simulated device could not start: %1").arg(why);
-        return false;
-    }
-    m_simulator = std::move(simulator);
-    m_identity.reset();
-    m_stats.reset();
-    m_baud = baud;
     const QString model = QString::fromStdString(options.model);
     const QString firmware = QString::fromStdString(options.firmware);
-    m_target = tr("Simulated %1 (firmware %2)").arg(model, firmware);
     m_connectionBar->selectPort(PortChoice::simulated(model, firmware));
     m_connectionBar->selectBaud(baud);
-    m_session.open(m_simulator->devicePath(), baud);
-    return true;
+    return freeWorkspace()->connectSimulated(options, baud, error);
 }
 
 void MainWindow::disconnectDevice()
 {
-    if (isBusy(m_state))
-        m_session.close(); // the simulator stops when the session reports Closed
-    else
-        stopSimulator();
+    if (DeviceWorkspace *ws = currentWorkspace())
+        ws->disconnectDevice();
 }
 
 void MainWindow::connectSelected()
 {
-    if (isBusy(m_state))
-        return;
     const PortChoice choice = m_connectionBar->selectedPort();
     const int baud = m_connectionBar->selectedBaud();
     switch (choice.kind) {
@@ -209,35 +189,56 @@ void MainWindow::connectSelected()
     }
 }
 
-void MainWindow::sendConsoleCommand(const QString &text)
+device::DeviceSession &MainWindow::session() const
 {
-    const quint64 id = m_session.sendCommand(text, kCommandTimeoutMs);
-    m_console->showCommand(id, text);
+    return currentWorkspace()->session();
 }
 
-void MainWindow::stopSimulator()
+sim::PtySimulator *MainWindow::simulator() const
 {
-    if (!m_simulator)
-        return;
-    m_simulator->stop();
-    m_simulator.reset();
+    return currentWorkspace()->simulator();
 }
 
-void MainWindow::refreshViews()
+ConsoleWidget *MainWindow::console() const
 {
-    if (isMinimized())
-        return;
-    const quint64 total = m_session.store().totalAppended();
-    if (total == m_shownTotal)
-        return;
-    m_shownTotal = total;
-    std::optional<model::Sample> latest = m_session.store().latest();
-    // Before firmware 1.7.0 the MAIN_STATUS bytes are reserved: show them as not reported.
-    if (latest && m_identity && m_identity->firmware && !m_identity->hasMainStatus())
-        latest->fields &= ~uint32_t(model::FieldMainStatus);
-    m_valuesModel->refresh(latest);
-    m_flags->setStatus(latest && latest->has(model::FieldMainStatus) ? std::optional<quint16>(latest->mainStatus)
-                                                                     : std::nullopt);
+    return currentWorkspace()->console();
+}
+
+QTableView *MainWindow::valuesView() const
+{
+    return currentWorkspace()->valuesView();
+}
+
+models::LatestValuesModel *MainWindow::valuesModel() const
+{
+    return currentWorkspace()->valuesModel();
+}
+
+StatusFlagsWidget *MainWindow::statusFlags() const
+{
+    return currentWorkspace()->statusFlags();
+}
+
+QString MainWindow::statusText() const
+{
+    return currentWorkspace()->statusText();
+}
+
+bool MainWindow::isRefreshing() const
+{
+    return currentWorkspace()->isRefreshing();
+}
+
+bool MainWindow::saveScreenshot(const QString &path, QString *error)
+{
+    const QPixmap pixmap = grab();
+    QImageWriter writer(path, "png");
+    if (!writer.write(pixmap.toImage())) {
+        if (error)
+            *error = tr("Could not save the screenshot to %1: %2").arg(path, writer.errorString());
+        return false;
+    }
+    return true;
 }
 
 void MainWindow::presentError(const QString &message)
@@ -268,160 +269,66 @@ void MainWindow::showAbout()
                            .arg(QCoreApplication::applicationVersion(), QString::fromLatin1(qVersion())));
 }
 
-void MainWindow::onStateChanged(SessionState state, const QString &detail)
+void MainWindow::onCurrentChanged()
 {
-    m_state = state;
-    m_stateDetail = detail;
-    if (!isBusy(state))
-        stopSimulator(); // the port is closed already
-    m_connectionBar->setSessionState(state);
-    m_console->setInputEnabled(state == SessionState::Connected);
-    updateStateLabel();
-    updateStatsLabel();
+    DeviceWorkspace *ws = currentWorkspace();
+    if (!ws)
+        return;
+    m_connectionBar->setSessionState(ws->state());
+    rebuildViewMenu();
     updateActions();
     updateTitle();
-}
-
-void MainWindow::onIdentityChanged(const model::DeviceIdentity &identity)
-{
-    m_identity = identity;
-    m_shownTotal = ~quint64(0); // the identity decides whether MAIN_STATUS is shown
-    updateIdentityLabel();
-    updateTitle();
-}
-
-void MainWindow::onStatsUpdated(const device::SessionStats &stats)
-{
-    m_stats = stats;
-    updateStatsLabel();
-}
-
-void MainWindow::onBaudDetected(int baud)
-{
-    m_baud = baud;
-    updateStatsLabel();
-}
-
-void MainWindow::onCommandFinished(quint64 id, const protocol::hipnuc::AsciiReply &reply)
-{
-    m_console->showReply(id, reply);
-    // A LOG VERSION sent from the console or the Device menu refreshes the identity too.
-    const QString command = QString::fromStdString(reply.command).simplified();
-    if (reply.ok() && command.compare(QLatin1String("LOG VERSION"), Qt::CaseInsensitive) == 0) {
-        const auto identity = model::DeviceIdentity::fromKeyValues(reply.values);
-        if (identity.usable())
-            onIdentityChanged(identity);
-    }
-}
-
-void MainWindow::onErrorOccurred(const QString &message)
-{
-    m_console->showError(message);
-    presentError(message);
-}
-
-QString MainWindow::statusText() const
-{
-    QStringList parts;
-    for (const QLabel *label : {m_stateLabel, m_identityLabel, m_statsLabel})
-        if (!label->text().isEmpty())
-            parts << label->text();
-    return parts.join(QStringLiteral(" | "));
-}
-
-void MainWindow::updateStateLabel()
-{
-    QString text;
-    switch (m_state) {
-    case SessionState::Closed: text = tr("Not connected"); break;
-    case SessionState::Opening: text = tr("Opening %1…").arg(m_target); break;
-    case SessionState::Detecting: text = tr("Detecting the baud rate of %1…").arg(m_target); break;
-    case SessionState::Connected: text = tr("Connected"); break;
-    case SessionState::Disconnected: text = tr("Connection to %1 lost").arg(m_target); break;
-    case SessionState::Failed: text = tr("Could not connect to %1").arg(m_target); break;
-    }
-    m_stateLabel->setText(text);
-    m_stateLabel->setToolTip(m_target.isEmpty() ? m_stateDetail : m_target + QLatin1Char('\n') + m_stateDetail);
-}
-
-void MainWindow::updateIdentityLabel()
-{
-    QStringList parts;
-    if (m_identity) {
-        if (!m_identity->productName.empty())
-            parts << QString::fromStdString(m_identity->productName);
-        if (m_identity->firmware)
-            parts << tr("firmware %1").arg(QString::fromStdString(m_identity->firmware->toString()));
-        if (!m_identity->serial.empty())
-            parts << tr("SN %1").arg(QString::fromStdString(m_identity->serial));
-    }
-    m_identityLabel->setText(parts.join(QStringLiteral(" · ")));
-    m_identityLabel->setVisible(!parts.isEmpty());
-    if (m_identity) {
-        QStringList tip;
-        tip << tr("Product: %1").arg(QString::fromStdString(m_identity->productName));
-        if (!m_identity->build.empty())
-            tip << tr("Build: %1").arg(QString::fromStdString(m_identity->build));
-        if (m_identity->bootloader)
-            tip << tr("Bootloader: %1").arg(QString::fromStdString(m_identity->bootloader->toString()));
-        m_identityLabel->setToolTip(tip.join(QLatin1Char('\n')));
-    }
-}
-
-void MainWindow::updateStatsLabel()
-{
-    if (!m_stats || !isBusy(m_state)) {
-        m_statsLabel->setText(isBusy(m_state) && m_baud > 0 ? tr("%1 baud").arg(m_baud) : QString());
-        m_statsLabel->setVisible(!m_statsLabel->text().isEmpty());
-        return;
-    }
-    const device::SessionStats &s = *m_stats;
-    QStringList parts;
-    const int baud = s.baud > 0 ? s.baud : m_baud;
-    if (baud > 0)
-        parts << tr("%1 baud").arg(baud);
-    QStringList rates;
-    for (const auto &[name, hz] : s.rateByType)
-        if (hz > 0)
-            rates << tr("%1 %2 Hz").arg(QString::fromStdString(name), rateText(hz));
-    parts << (rates.isEmpty() ? tr("no frames") : rates.join(QStringLiteral(", ")));
-    parts << tr("load %1%").arg(qRound(s.linkLoad * 100));
-    parts << tr("CRC errors %1").arg(s.crcErrors);
-    parts << tr("skipped %1 B").arg(s.bytesSkipped);
-    m_statsLabel->setText(parts.join(QStringLiteral(" · ")));
-    m_statsLabel->setVisible(true);
-    m_statsLabel->setToolTip(tr("Received %1 bytes, %2 frames, %3 NMEA sentences.\n"
-                                "Errors: %4 CRC, %5 length, %6 payload, %7 NMEA; %8 bytes skipped.\n"
-                                "Link load = bytes per second × 10 bits / baud rate.")
-                                 .arg(s.bytesIn)
-                                 .arg(s.frames)
-                                 .arg(s.nmeaSentences)
-                                 .arg(s.crcErrors)
-                                 .arg(s.lengthErrors)
-                                 .arg(s.payloadErrors)
-                                 .arg(s.nmeaErrors)
-                                 .arg(s.bytesSkipped));
 }
 
 void MainWindow::updateTitle()
 {
     const QString base = tr("ImuDesk – IMU bench tool");
-    if (m_identity && isBusy(m_state) && !m_identity->productName.empty())
-        setWindowTitle(tr("%1 – %2").arg(QString::fromStdString(m_identity->productName), base));
+    const DeviceWorkspace *ws = currentWorkspace();
+    if (ws && ws->isBusy() && ws->identity() && !ws->identity()->productName.empty())
+        setWindowTitle(tr("%1 – %2").arg(QString::fromStdString(ws->identity()->productName), base));
     else
         setWindowTitle(base);
 }
 
 void MainWindow::updateActions()
 {
-    const bool busy = isBusy(m_state);
+    const DeviceWorkspace *ws = currentWorkspace();
+    const bool busy = ws && ws->isBusy();
     m_connectAction->setEnabled(!busy);
     m_disconnectAction->setEnabled(busy);
-    m_versionAction->setEnabled(m_state == SessionState::Connected);
+    m_versionAction->setEnabled(ws && ws->state() == SessionState::Connected);
+}
+
+void MainWindow::rebuildViewMenu()
+{
+    m_viewMenu->clear();
+    if (DeviceWorkspace *ws = currentWorkspace())
+        m_viewMenu->addActions(ws->dockActions());
 }
 
 void MainWindow::createActions()
 {
+    m_newTabAction = new QAction(this);
+    m_newTabAction->setObjectName(QStringLiteral("newTabAction"));
+    m_newTabAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_T));
+    connect(m_newTabAction, &QAction::triggered, this, [this] { newWorkspace(); });
+
+    m_closeTabAction = new QAction(this);
+    m_closeTabAction->setObjectName(QStringLiteral("closeTabAction"));
+    m_closeTabAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_W));
+    connect(m_closeTabAction, &QAction::triggered, this, [this] { closeWorkspace(m_tabs->currentIndex()); });
+
+    m_screenshotAction = new QAction(this);
+    m_screenshotAction->setObjectName(QStringLiteral("screenshotAction"));
+    m_screenshotAction->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_S));
+    connect(m_screenshotAction, &QAction::triggered, this, [this] {
+        const QString path = QFileDialog::getSaveFileName(this, tr("Save screenshot"), QStringLiteral("imudesk.png"),
+                                                          tr("PNG images (*.png)"));
+        QString error;
+        if (!path.isEmpty() && !saveScreenshot(path, &error))
+            presentError(error);
+    });
+
     m_quitAction = new QAction(this);
     m_quitAction->setObjectName(QStringLiteral("quitAction"));
     m_quitAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_Q));
@@ -440,8 +347,7 @@ void MainWindow::createActions()
 
     m_versionAction = new QAction(this);
     m_versionAction->setObjectName(QStringLiteral("versionAction"));
-    connect(m_versionAction, &QAction::triggered, this,
-            [this] { m_console->submit(QStringLiteral("LOG VERSION")); });
+    connect(m_versionAction, &QAction::triggered, this, [this] { console()->submit(QStringLiteral("LOG VERSION")); });
 
     m_aboutAction = new QAction(this);
     m_aboutAction->setObjectName(QStringLiteral("aboutAction"));
@@ -452,6 +358,11 @@ void MainWindow::createActions()
 void MainWindow::createMenus()
 {
     m_fileMenu = menuBar()->addMenu(QString());
+    m_fileMenu->addAction(m_newTabAction);
+    m_fileMenu->addAction(m_closeTabAction);
+    m_fileMenu->addSeparator();
+    m_fileMenu->addAction(m_screenshotAction);
+    m_fileMenu->addSeparator();
     m_fileMenu->addAction(m_quitAction);
     m_deviceMenu = menuBar()->addMenu(QString());
     m_deviceMenu->addAction(m_connectAction);
@@ -459,39 +370,8 @@ void MainWindow::createMenus()
     m_deviceMenu->addSeparator();
     m_deviceMenu->addAction(m_versionAction);
     m_viewMenu = menuBar()->addMenu(QString());
-    m_viewMenu->addAction(m_consoleDock->toggleViewAction());
     m_helpMenu = menuBar()->addMenu(QString());
     m_helpMenu->addAction(m_aboutAction);
-}
-
-void MainWindow::createStatusBar()
-{
-    m_stateLabel = new QLabel(this);
-    m_stateLabel->setObjectName(QStringLiteral("stateLabel"));
-    m_identityLabel = new QLabel(this);
-    m_identityLabel->setObjectName(QStringLiteral("identityLabel"));
-    m_statsLabel = new QLabel(this);
-    m_statsLabel->setObjectName(QStringLiteral("statsLabel"));
-    m_flags = new StatusFlagsWidget(this);
-    m_flags->setObjectName(QStringLiteral("statusFlags"));
-    m_flags->setSizePolicy(QSizePolicy::Fixed, QSizePolicy::Preferred);
-    // Narrow windows clip the texts, never the flags.
-    for (QLabel *label : {m_identityLabel, m_statsLabel})
-        label->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
-
-    // Two lines on the left (state and identity; link counters), the flags on the right.
-    auto *info = new QWidget(this);
-    auto *firstLine = new QHBoxLayout;
-    firstLine->setSpacing(16);
-    firstLine->addWidget(m_stateLabel);
-    firstLine->addWidget(m_identityLabel, 1);
-    auto *lines = new QVBoxLayout(info);
-    lines->setContentsMargins(2, 0, 2, 0);
-    lines->setSpacing(0);
-    lines->addLayout(firstLine);
-    lines->addWidget(m_statsLabel);
-    statusBar()->addWidget(info, 1);
-    statusBar()->addPermanentWidget(m_flags);
 }
 
 void MainWindow::retranslateUi()
@@ -500,6 +380,10 @@ void MainWindow::retranslateUi()
     m_deviceMenu->setTitle(tr("&Device"));
     m_viewMenu->setTitle(tr("&View"));
     m_helpMenu->setTitle(tr("&Help"));
+    m_newTabAction->setText(tr("&New connection tab"));
+    m_newTabAction->setStatusTip(tr("Open a tab for another device; each tab has its own connection and views"));
+    m_closeTabAction->setText(tr("&Close tab"));
+    m_screenshotAction->setText(tr("Save &screenshot…"));
     m_quitAction->setText(tr("&Quit"));
     m_connectAction->setText(tr("&Connect"));
     m_connectAction->setStatusTip(tr("Connect to the port chosen in the connection bar"));
@@ -507,54 +391,16 @@ void MainWindow::retranslateUi()
     m_versionAction->setText(tr("Send LOG &VERSION"));
     m_versionAction->setStatusTip(tr("Ask the device for its product name, firmware and serial number"));
     m_aboutAction->setText(tr("&About ImuDesk"));
-    m_consoleDock->setWindowTitle(tr("Console"));
     if (auto *bar = findChild<QToolBar *>(QStringLiteral("connectionToolBar")))
         bar->setWindowTitle(tr("Connection"));
-    m_valuesModel->retranslate();
-    resizeValueColumns();
-    updateStateLabel();
-    updateIdentityLabel();
-    updateStatsLabel();
     updateTitle();
-}
-
-void MainWindow::resizeValueColumns()
-{
-    using Model = models::LatestValuesModel;
-    m_valuesView->resizeColumnToContents(Model::QuantityColumn);
-    // Room for a long MAIN_STATUS text; numbers are right-aligned next to the quantity.
-    const int valueWidth =
-        m_valuesView->fontMetrics().horizontalAdvance(QStringLiteral("WB_CONV MAG_DIST ATT_CONV STATIC MAG_AIDING UTC_UNSYNC (0x0000)")) + 16;
-    m_valuesView->setColumnWidth(Model::ValueColumn, valueWidth);
 }
 
 void MainWindow::changeEvent(QEvent *event)
 {
-    switch (event->type()) {
-    case QEvent::LanguageChange: retranslateUi(); break;
-    case QEvent::WindowStateChange:
-        if (isMinimized())
-            m_refreshTimer.stop();
-        else if (isVisible())
-            m_refreshTimer.start();
-        break;
-    default: break;
-    }
+    if (event->type() == QEvent::LanguageChange && m_fileMenu)
+        retranslateUi();
     QMainWindow::changeEvent(event);
-}
-
-void MainWindow::showEvent(QShowEvent *event)
-{
-    QMainWindow::showEvent(event);
-    if (!isMinimized())
-        m_refreshTimer.start();
-    refreshViews();
-}
-
-void MainWindow::hideEvent(QHideEvent *event)
-{
-    m_refreshTimer.stop();
-    QMainWindow::hideEvent(event);
 }
 
 } // namespace imudesk::ui

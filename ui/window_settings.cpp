@@ -19,6 +19,7 @@ void WindowSettings::load(QSettings &settings)
 {
     geometry = settings.value(key(kGeometryKey)).toByteArray();
     windowState = settings.value(key(kStateKey)).toByteArray();
+    workspaceState = settings.value(key(kWorkspaceStateKey)).toByteArray();
     port = settings.value(key(kPortKey)).toString();
     bool ok = false;
     const int b = settings.value(key(kBaudKey), 0).toInt(&ok);
@@ -30,6 +31,7 @@ void WindowSettings::save(QSettings &settings) const
 {
     settings.setValue(key(kGeometryKey), geometry);
     settings.setValue(key(kStateKey), windowState);
+    settings.setValue(key(kWorkspaceStateKey), workspaceState);
     settings.setValue(key(kPortKey), port);
     settings.setValue(key(kBaudKey), baud);
 }

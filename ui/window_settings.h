@@ -13,11 +13,13 @@ struct WindowSettings {
     static constexpr int kVersion = 1;
     static constexpr const char *kGeometryKey = "ui/v1/mainWindow/geometry";
     static constexpr const char *kStateKey = "ui/v1/mainWindow/state";
+    static constexpr const char *kWorkspaceStateKey = "ui/v1/workspace/state"; // docks of a device tab
     static constexpr const char *kPortKey = "ui/v1/connection/port"; // PortChoice::key()
     static constexpr const char *kBaudKey = "ui/v1/connection/baud"; // 0 = auto
 
     QByteArray geometry;    // QWidget::saveGeometry()
     QByteArray windowState; // QMainWindow::saveState(kVersion)
+    QByteArray workspaceState; // DeviceWorkspace::saveLayout()
     QString port;
     int baud = 0;
 

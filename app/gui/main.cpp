@@ -11,6 +11,7 @@
 #include <QCommandLineParser>
 #include <QMessageBox>
 #include <QSettings>
+#include <QTimer>
 #include <QStringList>
 
 #include <algorithm>
@@ -93,16 +94,37 @@ int main(int argc, char *argv[])
         QStringLiteral("baud"),
         QCoreApplication::translate("main", "Baud rate for --port or --simulate (default: detect automatically)."),
         QStringLiteral("rate"));
-    parser.addOptions({langOption, simulateOption, firmwareOption, motionOption, portOption, baudOption});
+    const QCommandLineOption demoOption(
+        QStringLiteral("demo"),
+        QCoreApplication::translate("main", "Start connected to a simulated HI14 (firmware 1.7.1) that tumbles slowly "
+                                            "through every orientation."));
+    const QCommandLineOption screenshotOption(
+        QStringLiteral("screenshot"),
+        QCoreApplication::translate("main", "Save the main window to this PNG file and quit (see --after)."),
+        QStringLiteral("file"));
+    const QCommandLineOption afterOption(
+        QStringLiteral("after"),
+        QCoreApplication::translate("main", "Seconds to wait before --screenshot (default 3)."),
+        QStringLiteral("seconds"), QStringLiteral("3"));
+    parser.addOptions({langOption, simulateOption, firmwareOption, motionOption, portOption, baudOption, demoOption,
+                       screenshotOption, afterOption});
     parser.addPositionalArgument(QStringLiteral("MODEL"),
                                  QCoreApplication::translate("main", "Model to simulate with --simulate (default HI14)."),
                                  QStringLiteral("[MODEL]"));
     parser.process(args);
 
     const QStringList positional = parser.positionalArguments();
-    const bool simulate = parser.isSet(simulateOption);
+    const bool demo = parser.isSet(demoOption);
+    const bool simulate = parser.isSet(simulateOption) || demo;
     if (positional.size() > 1 || (!positional.isEmpty() && !simulate))
         return usageError(QCoreApplication::translate("main", "A model name is only accepted after --simulate."));
+    double screenshotAfter = 3;
+    if (parser.isSet(afterOption)) {
+        bool ok = false;
+        screenshotAfter = parser.value(afterOption).toDouble(&ok);
+        if (!ok || screenshotAfter < 0 || screenshotAfter > 3600)
+            return usageError(QCoreApplication::translate("main", "--after needs a number of seconds from 0 to 3600."));
+    }
     if (simulate && parser.isSet(portOption))
         return usageError(QCoreApplication::translate("main", "Use either --simulate or --port, not both."));
 
@@ -126,7 +148,9 @@ int main(int argc, char *argv[])
     if (!imudesk::model::FirmwareVersion::parse(simOptions.firmware))
         return usageError(QCoreApplication::translate("main", "Invalid firmware version \"%1\"; use e.g. 1.7.1 or 1.6.6.")
                               .arg(parser.value(firmwareOption)));
-    if (!imudesk::sim::parseMotion(parser.value(motionOption).toStdString(), simOptions.motion))
+    if (demo && !parser.isSet(motionOption))
+        simOptions.motion = imudesk::sim::Motion::Tumble;
+    else if (!imudesk::sim::parseMotion(parser.value(motionOption).toStdString(), simOptions.motion))
         return usageError(QCoreApplication::translate("main", "Unknown motion \"%1\"; use static, spin or tumble.")
                               .arg(parser.value(motionOption)));
 
@@ -147,10 +171,23 @@ int main(int argc, char *argv[])
         window.connectPort(parser.value(portOption), baud);
     }
 
+    int screenshotRc = 0;
+    if (parser.isSet(screenshotOption)) {
+        const QString path = parser.value(screenshotOption);
+        QTimer::singleShot(int(screenshotAfter * 1000), &window, [&window, &screenshotRc, path] {
+            QString error;
+            if (!window.saveScreenshot(path, &error)) {
+                std::fprintf(stderr, "imudesk: %s\n", qPrintable(error));
+                screenshotRc = 1;
+            }
+            QApplication::quit();
+        });
+    }
+
     const int rc = QApplication::exec();
     {
         QSettings store;
         window.windowSettings().save(store);
     }
-    return rc;
+    return rc != 0 ? rc : screenshotRc;
 }

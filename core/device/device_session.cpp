@@ -31,7 +31,7 @@ DeviceSession::DeviceSession(QObject *parent) : QObject(parent)
     qRegisterMetaType<protocol::hipnuc::AsciiReply>();
 
     m_thread.setObjectName(QStringLiteral("imudesk-session"));
-    m_worker = new SessionWorker(m_store);
+    m_worker = new SessionWorker(m_store, m_rawLog);
     m_worker->moveToThread(&m_thread);
     connect(&m_thread, &QThread::finished, m_worker, &QObject::deleteLater);
 

@@ -3,6 +3,7 @@
 // thread; its worker (transport, stream demux, command queue) runs in a private
 // QThread. All calls are queued to the worker; results come back as signals
 // carrying value types. Samples go to a bounded SampleStore.
+#include "device/raw_byte_log.h"
 #include "device/sample_store.h"
 #include "device/session_types.h"
 
@@ -37,6 +38,8 @@ public:
     void setHostBaud(int baud);
 
     SampleStore &store() { return m_store; }
+    // Raw bytes of the link, both directions (bounded).
+    RawByteLog &rawLog() { return m_rawLog; }
     SessionState state() const { return m_state.load(); }
 
 Q_SIGNALS:
@@ -55,6 +58,7 @@ Q_SIGNALS:
 private:
     QThread m_thread;
     SampleStore m_store;
+    RawByteLog m_rawLog;
     SessionWorker *m_worker = nullptr;
     std::atomic<quint64> m_nextId{1};
     std::atomic<SessionState> m_state{SessionState::Closed};

@@ -29,7 +29,8 @@ int64_t monotonicNs()
 }
 } // namespace
 
-SessionWorker::SessionWorker(SampleStore &store, QObject *parent) : QObject(parent), m_store(store)
+SessionWorker::SessionWorker(SampleStore &store, RawByteLog &rawLog, QObject *parent)
+    : QObject(parent), m_store(store), m_rawLog(rawLog)
 {
     m_commandTimer.setSingleShot(true);
     connect(&m_commandTimer, &QTimer::timeout, this, &SessionWorker::onCommandTimeout);
@@ -145,6 +146,7 @@ void SessionWorker::startNext()
     m_queue.pop_front();
     m_collector.emplace(m_current->text.toStdString());
     const QByteArray wire = m_current->text.toLatin1() + "\r\n";
+    m_rawLog.append(RawByteLog::Direction::Tx, wire, monotonicNs());
     if (m_transport->write(wire) != wire.size()) {
         Reply r = m_collector->take();
         r.status = Reply::Status::NotSent;
@@ -207,6 +209,7 @@ void SessionWorker::cancelAll(Reply::Status status, const QString &why)
 
 void SessionWorker::onBytes(const QByteArray &bytes)
 {
+    m_rawLog.append(RawByteLog::Direction::Rx, bytes, monotonicNs());
     m_events.clear();
     m_demux.feed(reinterpret_cast<const uint8_t *>(bytes.constData()), size_t(bytes.size()), m_events);
     if (m_demux.pendingBytes() > 0)

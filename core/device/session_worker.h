@@ -2,6 +2,7 @@
 // The worker half of DeviceSession: owns the transport, the stream demux and the
 // one-at-a-time command queue. Runs in the session's thread; never touched directly
 // by other threads.
+#include "device/raw_byte_log.h"
 #include "device/sample_store.h"
 #include "device/session_types.h"
 #include "io/serial_transport.h"
@@ -20,7 +21,7 @@ namespace imudesk::device {
 class SessionWorker : public QObject {
     Q_OBJECT
 public:
-    explicit SessionWorker(SampleStore &store, QObject *parent = nullptr);
+    SessionWorker(SampleStore &store, RawByteLog &rawLog, QObject *parent = nullptr);
     ~SessionWorker() override;
 
 public Q_SLOTS:
@@ -70,6 +71,7 @@ private:
     void queryIdentity(int attempt);
 
     SampleStore &m_store;
+    RawByteLog &m_rawLog;
     io::SerialTransport *m_transport = nullptr;
     protocol::StreamDemux m_demux;
     std::vector<protocol::StreamEvent> m_events;

@@ -1,0 +1,414 @@
+#include "device_workspace.h"
+
+#include "console_widget.h"
+#include "models/latest_values_model.h"
+#include "sim/pty_simulator.h"
+#include "status_flags_widget.h"
+
+#include <QAction>
+#include <QDockWidget>
+#include <QEvent>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QStatusBar>
+#include <QTableView>
+#include <QVBoxLayout>
+
+namespace imudesk::ui {
+
+using device::SessionState;
+
+namespace {
+
+bool busyState(SessionState s)
+{
+    return s == SessionState::Opening || s == SessionState::Detecting || s == SessionState::Connected;
+}
+
+QString rateText(double hz)
+{
+    return QString::number(hz, 'f', hz >= 10 ? 0 : 1);
+}
+
+constexpr int kLayoutVersion = 1;
+
+} // namespace
+
+DeviceWorkspace::DeviceWorkspace(QWidget *parent) : QMainWindow(parent)
+{
+    setObjectName(QStringLiteral("deviceWorkspace"));
+    setWindowFlags(Qt::Widget); // lives inside a tab
+    setDockOptions(AnimatedDocks | AllowNestedDocks | AllowTabbedDocks);
+
+    // The live values.
+    m_valuesModel = new models::LatestValuesModel(this);
+    m_valuesView = new QTableView(this);
+    m_valuesView->setObjectName(QStringLiteral("valuesView"));
+    m_valuesView->setModel(m_valuesModel);
+    m_valuesView->verticalHeader()->hide();
+    m_valuesView->verticalHeader()->setDefaultSectionSize(m_valuesView->fontMetrics().height() + 6);
+    m_valuesView->setAlternatingRowColors(true);
+    m_valuesView->setSelectionBehavior(QAbstractItemView::SelectRows);
+    m_valuesView->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    m_valuesView->setWordWrap(false);
+    m_valuesView->setCornerButtonEnabled(false);
+    auto *header = m_valuesView->horizontalHeader();
+    header->setSectionResizeMode(QHeaderView::Interactive);
+    header->setStretchLastSection(true);
+    header->setDefaultAlignment(Qt::AlignLeft | Qt::AlignVCenter);
+    setCentralWidget(m_valuesView);
+
+    // Bottom dock: the ASCII console.
+    m_console = new ConsoleWidget(this);
+    m_console->setObjectName(QStringLiteral("console"));
+    m_consoleDock = new QDockWidget(this);
+    m_consoleDock->setObjectName(QStringLiteral("consoleDock"));
+    m_consoleDock->setWidget(m_console);
+    addDockWidget(Qt::BottomDockWidgetArea, m_consoleDock);
+    resizeDocks({m_consoleDock}, {220}, Qt::Vertical);
+
+    createStatusBar();
+
+    connect(m_console, &ConsoleWidget::commandSubmitted, this, &DeviceWorkspace::sendConsoleCommand);
+    connect(&m_session, &device::DeviceSession::stateChanged, this, &DeviceWorkspace::onStateChanged);
+    connect(&m_session, &device::DeviceSession::identityChanged, this, &DeviceWorkspace::onIdentityChanged);
+    connect(&m_session, &device::DeviceSession::statsUpdated, this, &DeviceWorkspace::onStatsUpdated);
+    connect(&m_session, &device::DeviceSession::baudDetected, this, &DeviceWorkspace::onBaudDetected);
+    connect(&m_session, &device::DeviceSession::commandFinished, this, &DeviceWorkspace::onCommandFinished);
+    connect(&m_session, &device::DeviceSession::textReceived, m_console, &ConsoleWidget::showText);
+    connect(&m_session, &device::DeviceSession::errorOccurred, this, &DeviceWorkspace::onErrorOccurred);
+
+    m_refreshTimer.setInterval(kRefreshIntervalMs);
+    m_refreshTimer.setTimerType(Qt::PreciseTimer);
+    connect(&m_refreshTimer, &QTimer::timeout, this, &DeviceWorkspace::refreshViews);
+
+    retranslateUi();
+    onStateChanged(SessionState::Closed, QString());
+}
+
+DeviceWorkspace::~DeviceWorkspace()
+{
+    // Close the port before the simulator behind it goes away.
+    m_session.disconnect(this);
+    m_session.close();
+}
+
+bool DeviceWorkspace::isBusy() const
+{
+    return busyState(m_state);
+}
+
+QString DeviceWorkspace::title() const
+{
+    if (m_target.isEmpty())
+        return tr("New connection");
+    if (m_identity && !m_identity->productName.empty())
+        return tr("%1 on %2").arg(QString::fromStdString(m_identity->productName), m_target);
+    return m_target;
+}
+
+QList<QAction *> DeviceWorkspace::dockActions() const
+{
+    QList<QAction *> actions;
+    for (QDockWidget *dock : findChildren<QDockWidget *>(QString(), Qt::FindDirectChildrenOnly))
+        actions << dock->toggleViewAction();
+    return actions;
+}
+
+QByteArray DeviceWorkspace::saveLayout() const
+{
+    return saveState(kLayoutVersion);
+}
+
+bool DeviceWorkspace::restoreLayout(const QByteArray &state)
+{
+    return !state.isEmpty() && restoreState(state, kLayoutVersion);
+}
+
+void DeviceWorkspace::connectPort(const QString &port, int baud)
+{
+    if (isBusy())
+        return;
+    stopSimulator();
+    m_identity.reset();
+    m_stats.reset();
+    m_baud = baud;
+    m_target = port;
+    Q_EMIT titleChanged(title());
+    m_session.open(port, baud);
+}
+
+bool DeviceWorkspace::connectSimulated(const sim::SimOptions &options, int baud, QString *error)
+{
+    if (isBusy()) {
+        if (error)
+            *error = tr("Disconnect first, then connect to the simulated device.");
+        return false;
+    }
+    stopSimulator();
+    auto simulator = std::make_unique<sim::PtySimulator>(options);
+    QString why;
+    if (!simulator->start(&why)) {
+        if (error)
+            *error = tr("The simulated device could not start: %1").arg(why);
+        return false;
+    }
+    m_simulator = std::move(simulator);
+    m_identity.reset();
+    m_stats.reset();
+    m_baud = baud;
+    m_target = tr("Simulated %1 (firmware %2)")
+                   .arg(QString::fromStdString(options.model), QString::fromStdString(options.firmware));
+    Q_EMIT titleChanged(title());
+    m_session.open(m_simulator->devicePath(), baud);
+    return true;
+}
+
+void DeviceWorkspace::disconnectDevice()
+{
+    if (isBusy())
+        m_session.close(); // the simulator stops when the session reports Closed
+    else
+        stopSimulator();
+}
+
+void DeviceWorkspace::sendConsoleCommand(const QString &text)
+{
+    const quint64 id = m_session.sendCommand(text, kCommandTimeoutMs);
+    m_console->showCommand(id, text);
+}
+
+void DeviceWorkspace::stopSimulator()
+{
+    if (!m_simulator)
+        return;
+    m_simulator->stop();
+    m_simulator.reset();
+}
+
+void DeviceWorkspace::refreshViews()
+{
+    if (window()->isMinimized())
+        return;
+    const quint64 total = m_session.store().totalAppended();
+    if (total == m_shownTotal)
+        return;
+    m_shownTotal = total;
+    std::optional<model::Sample> latest = m_session.store().latest();
+    // Before firmware 1.7.0 the MAIN_STATUS bytes are reserved: show them as not reported.
+    if (latest && m_identity && m_identity->firmware && !m_identity->hasMainStatus())
+        latest->fields &= ~uint32_t(model::FieldMainStatus);
+    m_valuesModel->refresh(latest);
+    m_flags->setStatus(latest && latest->has(model::FieldMainStatus) ? std::optional<quint16>(latest->mainStatus)
+                                                                     : std::nullopt);
+}
+
+void DeviceWorkspace::onStateChanged(SessionState state, const QString &detail)
+{
+    m_state = state;
+    m_stateDetail = detail;
+    if (!busyState(state))
+        stopSimulator(); // the port is closed already
+    m_console->setInputEnabled(state == SessionState::Connected);
+    updateStateLabel();
+    updateStatsLabel();
+    Q_EMIT stateChanged(state);
+    Q_EMIT titleChanged(title());
+}
+
+void DeviceWorkspace::onIdentityChanged(const model::DeviceIdentity &identity)
+{
+    m_identity = identity;
+    m_shownTotal = ~quint64(0); // the identity decides whether MAIN_STATUS is shown
+    updateIdentityLabel();
+    Q_EMIT titleChanged(title());
+}
+
+void DeviceWorkspace::onStatsUpdated(const device::SessionStats &stats)
+{
+    m_stats = stats;
+    updateStatsLabel();
+}
+
+void DeviceWorkspace::onBaudDetected(int baud)
+{
+    m_baud = baud;
+    updateStatsLabel();
+}
+
+void DeviceWorkspace::onCommandFinished(quint64 id, const protocol::hipnuc::AsciiReply &reply)
+{
+    m_console->showReply(id, reply);
+    // A LOG VERSION sent from the console or the Device menu refreshes the identity too.
+    const QString command = QString::fromStdString(reply.command).simplified();
+    if (reply.ok() && command.compare(QLatin1String("LOG VERSION"), Qt::CaseInsensitive) == 0) {
+        const auto identity = model::DeviceIdentity::fromKeyValues(reply.values);
+        if (identity.usable())
+            onIdentityChanged(identity);
+    }
+}
+
+void DeviceWorkspace::onErrorOccurred(const QString &message)
+{
+    m_console->showError(message);
+    Q_EMIT errorReported(message);
+}
+
+QString DeviceWorkspace::statusText() const
+{
+    QStringList parts;
+    for (const QLabel *label : {m_stateLabel, m_identityLabel, m_statsLabel})
+        if (!label->text().isEmpty())
+            parts << label->text();
+    return parts.join(QStringLiteral(" | "));
+}
+
+void DeviceWorkspace::updateStateLabel()
+{
+    QString text;
+    switch (m_state) {
+    case SessionState::Closed: text = tr("Not connected"); break;
+    case SessionState::Opening: text = tr("Opening %1…").arg(m_target); break;
+    case SessionState::Detecting: text = tr("Detecting the baud rate of %1…").arg(m_target); break;
+    case SessionState::Connected: text = tr("Connected"); break;
+    case SessionState::Disconnected: text = tr("Connection to %1 lost").arg(m_target); break;
+    case SessionState::Failed: text = tr("Could not connect to %1").arg(m_target); break;
+    }
+    m_stateLabel->setText(text);
+    m_stateLabel->setToolTip(m_target.isEmpty() ? m_stateDetail : m_target + QLatin1Char('\n') + m_stateDetail);
+}
+
+void DeviceWorkspace::updateIdentityLabel()
+{
+    QStringList parts;
+    if (m_identity) {
+        if (!m_identity->productName.empty())
+            parts << QString::fromStdString(m_identity->productName);
+        if (m_identity->firmware)
+            parts << tr("firmware %1").arg(QString::fromStdString(m_identity->firmware->toString()));
+        if (!m_identity->serial.empty())
+            parts << tr("SN %1").arg(QString::fromStdString(m_identity->serial));
+    }
+    m_identityLabel->setText(parts.join(QStringLiteral(" · ")));
+    m_identityLabel->setVisible(!parts.isEmpty());
+    if (m_identity) {
+        QStringList tip;
+        tip << tr("Product: %1").arg(QString::fromStdString(m_identity->productName));
+        if (!m_identity->build.empty())
+            tip << tr("Build: %1").arg(QString::fromStdString(m_identity->build));
+        if (m_identity->bootloader)
+            tip << tr("Bootloader: %1").arg(QString::fromStdString(m_identity->bootloader->toString()));
+        m_identityLabel->setToolTip(tip.join(QLatin1Char('\n')));
+    }
+}
+
+void DeviceWorkspace::updateStatsLabel()
+{
+    if (!m_stats || !isBusy()) {
+        m_statsLabel->setText(isBusy() && m_baud > 0 ? tr("%1 baud").arg(m_baud) : QString());
+        m_statsLabel->setVisible(!m_statsLabel->text().isEmpty());
+        return;
+    }
+    const device::SessionStats &s = *m_stats;
+    QStringList parts;
+    const int baud = s.baud > 0 ? s.baud : m_baud;
+    if (baud > 0)
+        parts << tr("%1 baud").arg(baud);
+    QStringList rates;
+    for (const auto &[name, hz] : s.rateByType)
+        if (hz > 0)
+            rates << tr("%1 %2 Hz").arg(QString::fromStdString(name), rateText(hz));
+    parts << (rates.isEmpty() ? tr("no frames") : rates.join(QStringLiteral(", ")));
+    parts << tr("load %1%").arg(qRound(s.linkLoad * 100));
+    parts << tr("CRC errors %1").arg(s.crcErrors);
+    parts << tr("skipped %1 B").arg(s.bytesSkipped);
+    m_statsLabel->setText(parts.join(QStringLiteral(" · ")));
+    m_statsLabel->setVisible(true);
+    m_statsLabel->setToolTip(tr("Received %1 bytes, %2 frames, %3 NMEA sentences.\n"
+                                "Errors: %4 CRC, %5 length, %6 payload, %7 NMEA; %8 bytes skipped.\n"
+                                "Link load = bytes per second × 10 bits / baud rate.")
+                                 .arg(s.bytesIn)
+                                 .arg(s.frames)
+                                 .arg(s.nmeaSentences)
+                                 .arg(s.crcErrors)
+                                 .arg(s.lengthErrors)
+                                 .arg(s.payloadErrors)
+                                 .arg(s.nmeaErrors)
+                                 .arg(s.bytesSkipped));
+}
+
+void DeviceWorkspace::createStatusBar()
+{
+    m_stateLabel = new QLabel(this);
+    m_stateLabel->setObjectName(QStringLiteral("stateLabel"));
+    m_identityLabel = new QLabel(this);
+    m_identityLabel->setObjectName(QStringLiteral("identityLabel"));
+    m_statsLabel = new QLabel(this);
+    m_statsLabel->setObjectName(QStringLiteral("statsLabel"));
+    m_flags = new StatusFlagsWidget(this);
+    m_flags->setObjectName(QStringLiteral("statusFlags"));
+    m_flags->setSizePolicy(QSizePolicy::Fixed, QSizePolicy::Preferred);
+    // Narrow windows clip the texts, never the flags.
+    for (QLabel *label : {m_identityLabel, m_statsLabel})
+        label->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
+
+    // Two lines on the left (state and identity; link counters), the flags on the right.
+    auto *info = new QWidget(this);
+    auto *firstLine = new QHBoxLayout;
+    firstLine->setSpacing(16);
+    firstLine->addWidget(m_stateLabel);
+    firstLine->addWidget(m_identityLabel, 1);
+    auto *lines = new QVBoxLayout(info);
+    lines->setContentsMargins(2, 0, 2, 0);
+    lines->setSpacing(0);
+    lines->addLayout(firstLine);
+    lines->addWidget(m_statsLabel);
+    statusBar()->addWidget(info, 1);
+    statusBar()->addPermanentWidget(m_flags);
+    statusBar()->setSizeGripEnabled(false);
+}
+
+void DeviceWorkspace::retranslateUi()
+{
+    m_consoleDock->setWindowTitle(tr("Console"));
+    m_valuesModel->retranslate();
+    resizeValueColumns();
+    updateStateLabel();
+    updateIdentityLabel();
+    updateStatsLabel();
+}
+
+void DeviceWorkspace::resizeValueColumns()
+{
+    using Model = models::LatestValuesModel;
+    m_valuesView->resizeColumnToContents(Model::QuantityColumn);
+    // Room for a long MAIN_STATUS text; numbers are right-aligned next to the quantity.
+    const int valueWidth = m_valuesView->fontMetrics().horizontalAdvance(
+                               QStringLiteral("WB_CONV MAG_DIST ATT_CONV STATIC MAG_AIDING UTC_UNSYNC (0x0000)"))
+        + 16;
+    m_valuesView->setColumnWidth(Model::ValueColumn, valueWidth);
+}
+
+void DeviceWorkspace::changeEvent(QEvent *event)
+{
+    if (event->type() == QEvent::LanguageChange)
+        retranslateUi();
+    QMainWindow::changeEvent(event);
+}
+
+// The view clock runs only while this workspace is on screen (current tab, window not minimised).
+void DeviceWorkspace::showEvent(QShowEvent *event)
+{
+    QMainWindow::showEvent(event);
+    m_refreshTimer.start();
+    refreshViews();
+}
+
+void DeviceWorkspace::hideEvent(QHideEvent *event)
+{
+    m_refreshTimer.stop();
+    QMainWindow::hideEvent(event);
+}
+
+} // namespace imudesk::ui

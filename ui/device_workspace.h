@@ -1,0 +1,131 @@
+#pragma once
+// One connected device: its own session (and simulated device, for the simulator
+// entries), live views and counters. The main window shows one workspace per tab.
+// A workspace is a QMainWindow of its own so that its docks (values, console, ...)
+// can be rearranged; the arrangement is saved and restored by the main window.
+#include "device/device_session.h"
+#include "sim/hipnuc_simulator.h"
+
+#include <QMainWindow>
+#include <QPointer>
+#include <QTimer>
+
+#include <functional>
+#include <memory>
+#include <optional>
+
+class QDockWidget;
+class QLabel;
+class QTableView;
+
+namespace imudesk::models {
+class LatestValuesModel;
+}
+namespace imudesk::sim {
+class PtySimulator;
+}
+
+namespace imudesk::ui {
+
+class ConsoleWidget;
+class StatusFlagsWidget;
+
+class DeviceWorkspace : public QMainWindow {
+    Q_OBJECT
+public:
+    static constexpr int kRefreshIntervalMs = 33; // 30 Hz view clock
+    static constexpr int kCommandTimeoutMs = 1000;
+
+    explicit DeviceWorkspace(QWidget *parent = nullptr);
+    ~DeviceWorkspace() override;
+
+    // Opens a serial port (baud 0 = auto-detect).
+    void connectPort(const QString &port, int baud);
+    // Starts a simulated device on a pseudo-terminal and connects to it like to hardware.
+    bool connectSimulated(const sim::SimOptions &options, int baud, QString *error = nullptr);
+    void disconnectDevice();
+    bool isBusy() const;
+
+    // Sends a command as typed in the console (shown there with its reply).
+    void sendConsoleCommand(const QString &text);
+
+    device::DeviceSession &session() { return m_session; }
+    const device::DeviceSession &session() const { return m_session; }
+    sim::PtySimulator *simulator() const { return m_simulator.get(); }
+    device::SessionState state() const { return m_state; }
+    // What the user connected to ("/dev/ttyUSB0", "Simulated HI14 (firmware 1.7.1)").
+    QString target() const { return m_target; }
+    const std::optional<model::DeviceIdentity> &identity() const { return m_identity; }
+    int baud() const { return m_baud; }
+    // A short name for the tab: product and port, or "New connection".
+    QString title() const;
+
+    ConsoleWidget *console() const { return m_console; }
+    QTableView *valuesView() const { return m_valuesView; }
+    models::LatestValuesModel *valuesModel() const { return m_valuesModel; }
+    StatusFlagsWidget *statusFlags() const { return m_flags; }
+    // The texts of the status bar's labels, joined by " | ".
+    QString statusText() const;
+    bool isRefreshing() const { return m_refreshTimer.isActive(); }
+    // The dock toggles for the View menu.
+    QList<QAction *> dockActions() const;
+
+    QByteArray saveLayout() const;
+    bool restoreLayout(const QByteArray &state);
+
+    void refreshViews();
+
+Q_SIGNALS:
+    void stateChanged(imudesk::device::SessionState state);
+    void titleChanged(const QString &title);
+    // A session error for the user (already logged in the console); the main window shows it.
+    void errorReported(const QString &message);
+
+protected:
+    void changeEvent(QEvent *event) override;
+    void showEvent(QShowEvent *event) override;
+    void hideEvent(QHideEvent *event) override;
+
+private:
+    void createStatusBar();
+    void retranslateUi();
+    void resizeValueColumns();
+    void stopSimulator();
+
+    void onStateChanged(device::SessionState state, const QString &detail);
+    void onIdentityChanged(const model::DeviceIdentity &identity);
+    void onStatsUpdated(const device::SessionStats &stats);
+    void onBaudDetected(int baud);
+    void onCommandFinished(quint64 id, const protocol::hipnuc::AsciiReply &reply);
+    void onErrorOccurred(const QString &message);
+
+    void updateStateLabel();
+    void updateIdentityLabel();
+    void updateStatsLabel();
+
+    // Declared before the session: the session (and its port) goes first on destruction.
+    std::unique_ptr<sim::PtySimulator> m_simulator;
+    device::DeviceSession m_session;
+
+    models::LatestValuesModel *m_valuesModel = nullptr;
+    QTableView *m_valuesView = nullptr;
+    QDockWidget *m_valuesDock = nullptr;
+    ConsoleWidget *m_console = nullptr;
+    QDockWidget *m_consoleDock = nullptr;
+    StatusFlagsWidget *m_flags = nullptr;
+    QLabel *m_stateLabel = nullptr;
+    QLabel *m_identityLabel = nullptr;
+    QLabel *m_statsLabel = nullptr;
+
+    QTimer m_refreshTimer;
+    quint64 m_shownTotal = ~quint64(0);
+
+    device::SessionState m_state = device::SessionState::Closed;
+    QString m_stateDetail;
+    QString m_target;
+    std::optional<model::DeviceIdentity> m_identity;
+    std::optional<device::SessionStats> m_stats;
+    int m_baud = 0;
+};
+
+} // namespace imudesk::ui
