@@ -58,6 +58,8 @@ DeviceWorkspace::DeviceWorkspace(QWidget *parent) : QMainWindow(parent)
     header->setStretchLastSection(true);
     header->setDefaultAlignment(Qt::AlignLeft | Qt::AlignVCenter);
     setCentralWidget(m_valuesView);
+    for (int r = 0; r < models::LatestValuesModel::RowCount; ++r)
+        m_valuesView->setRowHidden(r, !models::LatestValuesModel::isCoreRow(models::LatestValuesModel::Row(r)));
 
     // Bottom dock: the ASCII console.
     m_console = new ConsoleWidget(this);
@@ -200,6 +202,13 @@ void DeviceWorkspace::refreshViews()
     if (latest && m_identity && m_identity->firmware && !m_identity->hasMainStatus())
         latest->fields &= ~uint32_t(model::FieldMainStatus);
     m_valuesModel->refresh(latest);
+    // Rows of fields only some frame types carry appear once such a frame arrived.
+    for (int r = 0; r < models::LatestValuesModel::RowCount; ++r) {
+        const auto row = models::LatestValuesModel::Row(r);
+        const bool hide = !models::LatestValuesModel::isCoreRow(row) && !m_valuesModel->everSeen(row);
+        if (m_valuesView->isRowHidden(r) != hide)
+            m_valuesView->setRowHidden(r, hide);
+    }
     m_flags->setStatus(latest && latest->has(model::FieldMainStatus) ? std::optional<quint16>(latest->mainStatus)
                                                                      : std::nullopt);
 }

@@ -35,6 +35,18 @@ uint32_t fieldOf(Row row)
     case Row::Pressure: return model::FieldPressure;
     case Row::Temperature: return model::FieldTemperature;
     case Row::DeviceTime: return model::FieldDeviceTime;
+    case Row::InsStatus: return model::FieldInsStatus;
+    case Row::Latitude:
+    case Row::Longitude:
+    case Row::Altitude: return model::FieldPosition;
+    case Row::VelEast:
+    case Row::VelNorth:
+    case Row::VelUp: return model::FieldVelocity;
+    case Row::Heave:
+    case Row::Surge:
+    case Row::Sway: return model::FieldHeave;
+    case Row::InclinationX:
+    case Row::InclinationY: return model::FieldInclination;
     case Row::StatusFlags: return model::FieldMainStatus;
     case Row::FrameType:
     case Row::RowCount: break;
@@ -136,9 +148,18 @@ QVariant LatestValuesModel::headerData(int section, Qt::Orientation orientation,
     }
 }
 
+bool LatestValuesModel::everSeen(Row row) const
+{
+    if (row == FrameType)
+        return m_seenFields != 0;
+    return (m_seenFields & fieldOf(row)) != 0;
+}
+
 void LatestValuesModel::refresh(const std::optional<model::Sample> &sample)
 {
     m_last = sample;
+    if (sample)
+        m_seenFields |= sample->fields | (sample->source.empty() ? 0u : 1u << 31);
     int firstChanged = -1;
     auto flush = [this, &firstChanged](int lastRow) {
         if (firstChanged < 0)
@@ -194,6 +215,26 @@ QString LatestValuesModel::formatValue(Row row, const model::Sample &s) const
     case Pressure: return fixed(s.pressurePa, 1);
     case Temperature: return fixed(s.temperatureC, 1);
     case DeviceTime: return fixed(s.deviceTimeMs, 0);
+    case InsStatus: {
+        switch (s.insStatus) {
+        case 0: return tr("0 invalid");
+        case 1: return tr("1 aligning");
+        case 3: return tr("3 navigating");
+        case 6: return tr("6 dead reckoning");
+        default: return QString::number(s.insStatus);
+        }
+    }
+    case Latitude: return fixed(s.latitudeDeg, 7);
+    case Longitude: return fixed(s.longitudeDeg, 7);
+    case Altitude: return fixed(s.altitudeM, 3);
+    case VelEast: return fixed(s.velEnu.x, 2);
+    case VelNorth: return fixed(s.velEnu.y, 2);
+    case VelUp: return fixed(s.velEnu.z, 2);
+    case Heave: return fixed(s.heaveSurgeSway.x, 2);
+    case Surge: return fixed(s.heaveSurgeSway.y, 2);
+    case Sway: return fixed(s.heaveSurgeSway.z, 2);
+    case InclinationX: return fixed(s.inclinationX, 3);
+    case InclinationY: return fixed(s.inclinationY, 3);
     case StatusFlags: {
         const model::MainStatus status(s.mainStatus);
         QStringList names;
@@ -233,6 +274,18 @@ QString LatestValuesModel::quantityName(Row row) const
     case Pressure: return tr("Air pressure");
     case Temperature: return tr("Temperature");
     case DeviceTime: return tr("Device time");
+    case InsStatus: return tr("INS status");
+    case Latitude: return tr("Latitude");
+    case Longitude: return tr("Longitude");
+    case Altitude: return tr("Altitude (MSL)");
+    case VelEast: return tr("Velocity east");
+    case VelNorth: return tr("Velocity north");
+    case VelUp: return tr("Velocity up");
+    case Heave: return tr("Heave");
+    case Surge: return tr("Surge");
+    case Sway: return tr("Sway");
+    case InclinationX: return tr("Inclination X");
+    case InclinationY: return tr("Inclination Y");
     case StatusFlags: return tr("Status flags");
     case FrameType: return tr("Frame type");
     case RowCount: break;
@@ -250,6 +303,10 @@ QString LatestValuesModel::unitName(Row row) const
     case model::FieldPressure: return tr("Pa");
     case model::FieldTemperature: return tr("°C");
     case model::FieldDeviceTime: return tr("ms");
+    case model::FieldPosition: return row == Altitude ? tr("m") : tr("deg");
+    case model::FieldVelocity: return tr("m/s");
+    case model::FieldHeave: return tr("m");
+    case model::FieldInclination: return tr("deg");
     default: return QString();
     }
 }
@@ -281,6 +338,18 @@ QString LatestValuesModel::toolTip(Row row) const
     case Temperature: return tr("Sensor temperature, in °C.");
     case DeviceTime:
         return tr("Device timestamp in ms: UTC time of day when synchronised, otherwise time since power-up.");
+    case InsStatus: return tr("Integrated navigation state: 0 invalid, 1 aligning, 3 navigating, 6 dead reckoning.");
+    case Latitude:
+    case Longitude: return tr("Position from integrated navigation, in degrees (south and west negative).");
+    case Altitude: return tr("Height above mean sea level, in m.");
+    case VelEast:
+    case VelNorth:
+    case VelUp: return tr("Velocity in the east-north-up frame, in m/s.");
+    case Heave:
+    case Surge:
+    case Sway: return tr("Ship motion displacement (heave, surge, sway), in m.");
+    case InclinationX:
+    case InclinationY: return tr("Inclinometer angle about the %1 axis, in degrees.").arg(row == InclinationX ? QStringLiteral("X") : QStringLiteral("Y"));
     case StatusFlags:
         return tr("MAIN_STATUS flags set in the latest frame (firmware 1.7.0 and later), then the raw word in hex.");
     case FrameType: return tr("The frame type (packet tag) that carried the latest values, e.g. HI91.");

@@ -35,6 +35,20 @@ public:
         Pressure,
         Temperature,
         DeviceTime,
+        // Fields only some frame types carry (HI81/HI83 INS, HI92/HI83 ship motion, HI50 inclinometer);
+        // their rows are offered once a frame carried them (everSeen()).
+        InsStatus,
+        Latitude,
+        Longitude,
+        Altitude,
+        VelEast,
+        VelNorth,
+        VelUp,
+        Heave,
+        Surge,
+        Sway,
+        InclinationX,
+        InclinationY,
         StatusFlags,
         FrameType,
         RowCount
@@ -57,6 +71,10 @@ public:
     void retranslate();
 
     QString valueText(Row row) const { return m_values[size_t(row)]; }
+    // True once any sample shown carried this row's field (the frame type row: any sample).
+    bool everSeen(Row row) const;
+    // True for the rows that always show (the IMU and attitude quantities every frame type has).
+    static bool isCoreRow(Row row) { return row < InsStatus || row >= StatusFlags; }
 
 private:
     QString formatValue(Row row, const model::Sample &s) const;
@@ -66,6 +84,7 @@ private:
 
     std::array<QString, RowCount> m_values;
     std::optional<model::Sample> m_last;
+    uint32_t m_seenFields = 0;
 };
 
 } // namespace imudesk::models

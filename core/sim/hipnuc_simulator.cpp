@@ -552,6 +552,8 @@ bool HipnucSimulator::enqueue(std::vector<uint8_t> bytes, bool data)
         ++m_dropped;
         return false;
     }
+    if (data)
+        ++m_framesQueued;
     Chunk c;
     c.baud = m_baud;
     c.byteUs = 1e7 / double(m_baud); // 10 bits per byte (8N1)

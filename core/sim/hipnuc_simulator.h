@@ -176,6 +176,8 @@ public:
     const Config &activeConfig() const { return m_active; } // the configuration of the last start
     bool logEnabled() const { return m_logEnabled; }
     uint64_t droppedFrames() const { return m_dropped; }
+    // Data frames and sentences accepted for sending (the module's output, before any pty loss).
+    uint64_t framesQueued() const { return m_framesQueued; }
     int64_t nowUs() const { return m_nowUs; }
     int64_t startedAtUs() const { return m_startUs; }
     uint32_t systemTimeMs() const;
@@ -327,6 +329,7 @@ private:
     double m_lineFreeUs = 0;
     uint64_t m_nextChunkId = 1;
     uint64_t m_dropped = 0;
+    uint64_t m_framesQueued = 0;
     std::vector<OutputSegment> m_out;
 
     // one sensor sample per instant, shared by the messages due then

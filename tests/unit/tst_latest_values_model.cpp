@@ -61,6 +61,38 @@ private Q_SLOTS:
         QCOMPARE(m.index(LatestValuesModel::AccY, 2).data().toString(), QStringLiteral("G"));
     }
 
+    void insFieldsOnceSeen()
+    {
+        Sample s;
+        s.source = "HI81";
+        s.fields = imudesk::model::FieldPosition | imudesk::model::FieldVelocity | imudesk::model::FieldInsStatus;
+        s.latitudeDeg = 39.9401294;
+        s.longitudeDeg = -116.5;
+        s.altitudeM = 52.996;
+        s.velEnu = {1.25, -0.5, 0};
+        s.insStatus = 3;
+        LatestValuesModel m;
+        QVERIFY(!m.everSeen(LatestValuesModel::Latitude));
+        m.refresh(s);
+        QVERIFY(m.everSeen(LatestValuesModel::Latitude));
+        QVERIFY(m.everSeen(LatestValuesModel::VelEast));
+        QVERIFY(!m.everSeen(LatestValuesModel::Heave));
+        QCOMPARE(value(m, LatestValuesModel::Latitude), QStringLiteral("39.9401294"));
+        QCOMPARE(value(m, LatestValuesModel::Longitude), QStringLiteral("-116.5000000"));
+        QCOMPARE(value(m, LatestValuesModel::Altitude), QStringLiteral("52.996"));
+        QCOMPARE(value(m, LatestValuesModel::VelEast), QStringLiteral("1.25"));
+        QCOMPARE(m.index(LatestValuesModel::Altitude, 2).data().toString(), QStringLiteral("m"));
+        QCOMPARE(m.index(LatestValuesModel::VelUp, 2).data().toString(), QStringLiteral("m/s"));
+        QVERIFY(value(m, LatestValuesModel::InsStatus).startsWith(QLatin1String("3")));
+        // A later HI91 without position keeps the rows offered, showing "—".
+        Sample imu;
+        imu.source = "HI91";
+        imu.fields = imudesk::model::FieldAcc;
+        m.refresh(imu);
+        QVERIFY(m.everSeen(LatestValuesModel::Latitude));
+        QCOMPARE(value(m, LatestValuesModel::Latitude), QStringLiteral("—"));
+    }
+
     void emptyShowsDash()
     {
         LatestValuesModel m;
@@ -75,11 +107,17 @@ private Q_SLOTS:
         LatestValuesModel m;
         QSignalSpy spy(&m, &QAbstractItemModel::dataChanged);
         m.refresh(s);
-        // Every row changed from "—": one contiguous range in the value column.
-        QCOMPARE(spy.count(), 1);
+        // Every row HI91 carries changed from "—": two ranges in the value column, around the
+        // INS / ship-motion / inclinometer rows that HI91 does not carry.
+        QCOMPARE(spy.count(), 2);
         QCOMPARE(spy.at(0).at(0).toModelIndex().row(), 0);
-        QCOMPARE(spy.at(0).at(1).toModelIndex().row(), int(LatestValuesModel::RowCount) - 1);
+        QCOMPARE(spy.at(0).at(1).toModelIndex().row(), int(LatestValuesModel::DeviceTime));
+        QCOMPARE(spy.at(1).at(0).toModelIndex().row(), int(LatestValuesModel::StatusFlags));
+        QCOMPARE(spy.at(1).at(1).toModelIndex().row(), int(LatestValuesModel::RowCount) - 1);
         QCOMPARE(spy.at(0).at(0).toModelIndex().column(), int(LatestValuesModel::ValueColumn));
+        QVERIFY(m.everSeen(LatestValuesModel::Roll));
+        QVERIFY(!m.everSeen(LatestValuesModel::Latitude));
+        QCOMPARE(value(m, LatestValuesModel::Latitude), QStringLiteral("—"));
 
         QCOMPARE(value(m, LatestValuesModel::AccX), QStringLiteral("-0.2206"));
         QCOMPARE(value(m, LatestValuesModel::AccY), QStringLiteral("0.2092"));
