@@ -1,14 +1,16 @@
 #pragma once
 // ASCII command console: a line to type a command (Enter sends, Up/Down walk the
-// history) above a read-only log of "> command", the reply lines and the outcome
-// (OK, or ERR / timeout in red with the reason). It does not talk to the device;
-// the main window forwards commandSubmitted() and feeds the replies back.
+// history, the documented commands complete as you type) above a read-only log of
+// "> command", the reply lines and the outcome (OK, or ERR / timeout in red with the
+// reason). It does not talk to the device; the main window forwards commandSubmitted()
+// and feeds the replies back.
 #include "protocol/hipnuc/ascii_reply.h"
 
 #include <QHash>
 #include <QStringList>
 #include <QWidget>
 
+class QCompleter;
 class QLineEdit;
 class QPlainTextEdit;
 class QPushButton;
@@ -22,6 +24,13 @@ public:
     static constexpr int kMaxHistory = 200;
 
     explicit ConsoleWidget(QWidget *parent = nullptr);
+
+    // Every command of both manuals (v1.7.1 and v1.6.6) with representative arguments,
+    // made by the builders of protocol/hipnuc/ascii_command.h so that it follows them:
+    // "LOG VERSION", "LOG HI91 ONTIME 0.01", "CONFIG IMU URFR 024", "SERIALCONFIG 115200", ...
+    static QStringList documentedCommands();
+    // Completes the input line from documentedCommands() (case-insensitive prefix).
+    QCompleter *completer() const { return m_completer; }
 
     // Logs "> text" for a command the session accepted under `id`.
     void showCommand(quint64 id, const QString &text);
@@ -56,6 +65,7 @@ private:
     QLineEdit *m_input = nullptr;
     QPushButton *m_sendButton = nullptr;
     QPushButton *m_clearButton = nullptr;
+    QCompleter *m_completer = nullptr;
     QStringList m_history;
     int m_historyPos = 0;   // == m_history.size() when editing a new line
     QString m_draft;        // the unfinished line kept while browsing the history

@@ -1,6 +1,10 @@
 #include "device_workspace.h"
 
+#include "attitude_widget.h"
+#include "chart_panel.h"
+#include "command_log_widget.h"
 #include "console_widget.h"
+#include "raw_bytes_view.h"
 #include "models/latest_values_model.h"
 #include "sim/pty_simulator.h"
 #include "status_flags_widget.h"
@@ -13,6 +17,7 @@
 #include <QLabel>
 #include <QStatusBar>
 #include <QTableView>
+#include <QSplitter>
 #include <QVBoxLayout>
 
 namespace imudesk::ui {
@@ -23,7 +28,8 @@ namespace {
 
 bool busyState(SessionState s)
 {
-    return s == SessionState::Opening || s == SessionState::Detecting || s == SessionState::Connected;
+    return s == SessionState::Opening || s == SessionState::Detecting || s == SessionState::Connected
+        || s == SessionState::Reconnecting;
 }
 
 QString rateText(double hz)
@@ -31,7 +37,7 @@ QString rateText(double hz)
     return QString::number(hz, 'f', hz >= 10 ? 0 : 1);
 }
 
-constexpr int kLayoutVersion = 1;
+constexpr int kLayoutVersion = 2; // 2: charts central, values and attitude docks
 
 } // namespace
 
@@ -39,7 +45,7 @@ DeviceWorkspace::DeviceWorkspace(QWidget *parent) : QMainWindow(parent)
 {
     setObjectName(QStringLiteral("deviceWorkspace"));
     setWindowFlags(Qt::Widget); // lives inside a tab
-    setDockOptions(AnimatedDocks | AllowNestedDocks | AllowTabbedDocks);
+    setDockOptions(AllowNestedDocks | AllowTabbedDocks);
 
     // The live values.
     m_valuesModel = new models::LatestValuesModel(this);
@@ -57,9 +63,27 @@ DeviceWorkspace::DeviceWorkspace(QWidget *parent) : QMainWindow(parent)
     header->setSectionResizeMode(QHeaderView::Interactive);
     header->setStretchLastSection(true);
     header->setDefaultAlignment(Qt::AlignLeft | Qt::AlignVCenter);
-    setCentralWidget(m_valuesView);
     for (int r = 0; r < models::LatestValuesModel::RowCount; ++r)
         m_valuesView->setRowHidden(r, !models::LatestValuesModel::isCoreRow(models::LatestValuesModel::Row(r)));
+    // Centre: the live charts.
+    m_charts = new ChartPanel(this);
+    m_charts->setObjectName(QStringLiteral("chartPanel"));
+    setCentralWidget(m_charts);
+
+    // Right: the values above the 3D attitude, in one dock with a splitter between them.
+    m_attitude = new AttitudeWidget(this);
+    m_attitude->setObjectName(QStringLiteral("attitudeWidget"));
+    auto *split = new QSplitter(Qt::Vertical, this);
+    split->setObjectName(QStringLiteral("valuesAttitudeSplitter"));
+    split->addWidget(m_valuesView);
+    split->addWidget(m_attitude);
+    split->setStretchFactor(0, 3);
+    split->setStretchFactor(1, 2);
+    split->setChildrenCollapsible(false);
+    m_valuesDock = new QDockWidget(this);
+    m_valuesDock->setObjectName(QStringLiteral("valuesDock"));
+    m_valuesDock->setWidget(split);
+    addDockWidget(Qt::RightDockWidgetArea, m_valuesDock);
 
     // Bottom dock: the ASCII console.
     m_console = new ConsoleWidget(this);
@@ -68,7 +92,25 @@ DeviceWorkspace::DeviceWorkspace(QWidget *parent) : QMainWindow(parent)
     m_consoleDock->setObjectName(QStringLiteral("consoleDock"));
     m_consoleDock->setWidget(m_console);
     addDockWidget(Qt::BottomDockWidgetArea, m_consoleDock);
-    resizeDocks({m_consoleDock}, {220}, Qt::Vertical);
+
+    // Bottom, as tabs beside the console: the raw link traffic and the log of every
+    // command this window sent with its reply.
+    m_rawView = new RawBytesView(this);
+    m_rawView->setObjectName(QStringLiteral("rawBytesView"));
+    m_rawView->setLog(&m_session.rawLog());
+    m_rawDock = new QDockWidget(this);
+    m_rawDock->setObjectName(QStringLiteral("rawBytesDock"));
+    m_rawDock->setWidget(m_rawView);
+    addDockWidget(Qt::BottomDockWidgetArea, m_rawDock);
+    m_commandLog = new CommandLogWidget(this);
+    m_commandLog->setObjectName(QStringLiteral("commandLog"));
+    m_commandLogDock = new QDockWidget(this);
+    m_commandLogDock->setObjectName(QStringLiteral("commandLogDock"));
+    m_commandLogDock->setWidget(m_commandLog);
+    addDockWidget(Qt::BottomDockWidgetArea, m_commandLogDock);
+    tabifyDockWidget(m_consoleDock, m_rawDock);
+    tabifyDockWidget(m_rawDock, m_commandLogDock);
+    m_consoleDock->raise();
 
     createStatusBar();
 
@@ -125,7 +167,8 @@ QByteArray DeviceWorkspace::saveLayout() const
 
 bool DeviceWorkspace::restoreLayout(const QByteArray &state)
 {
-    return !state.isEmpty() && restoreState(state, kLayoutVersion);
+    m_layoutRestored = !state.isEmpty() && restoreState(state, kLayoutVersion);
+    return m_layoutRestored;
 }
 
 void DeviceWorkspace::connectPort(const QString &port, int baud)
@@ -137,6 +180,7 @@ void DeviceWorkspace::connectPort(const QString &port, int baud)
     m_stats.reset();
     m_baud = baud;
     m_target = port;
+    m_session.setAutoReconnect(true);
     Q_EMIT titleChanged(title());
     m_session.open(port, baud);
 }
@@ -160,6 +204,7 @@ bool DeviceWorkspace::connectSimulated(const sim::SimOptions &options, int baud,
     m_identity.reset();
     m_stats.reset();
     m_baud = baud;
+    m_session.setAutoReconnect(false); // a pty's number is reused: never wait for it to "come back"
     m_target = tr("Simulated %1 (firmware %2)")
                    .arg(QString::fromStdString(options.model), QString::fromStdString(options.firmware));
     Q_EMIT titleChanged(title());
@@ -179,6 +224,7 @@ void DeviceWorkspace::sendConsoleCommand(const QString &text)
 {
     const quint64 id = m_session.sendCommand(text, kCommandTimeoutMs);
     m_console->showCommand(id, text);
+    m_commandLog->record(id, text);
 }
 
 void DeviceWorkspace::stopSimulator()
@@ -193,6 +239,13 @@ void DeviceWorkspace::refreshViews()
 {
     if (window()->isMinimized())
         return;
+    // Charts: the samples that arrived since the last tick, then one redraw of what is on screen.
+    const auto batch = m_session.store().since(m_chartSeq, kMaxSamplesPerTick, &m_chartSeq);
+    if (!batch.empty())
+        m_charts->appendSamples(batch);
+    m_charts->refresh();
+    if (!m_rawDock->visibleRegion().isEmpty())
+        m_rawView->refresh();
     const quint64 total = m_session.store().totalAppended();
     if (total == m_shownTotal)
         return;
@@ -202,6 +255,8 @@ void DeviceWorkspace::refreshViews()
     if (latest && m_identity && m_identity->firmware && !m_identity->hasMainStatus())
         latest->fields &= ~uint32_t(model::FieldMainStatus);
     m_valuesModel->refresh(latest);
+    if (latest && latest->has(model::FieldQuat))
+        m_attitude->setQuaternion(latest->quat);
     // Rows of fields only some frame types carry appear once such a frame arrived.
     for (int r = 0; r < models::LatestValuesModel::RowCount; ++r) {
         const auto row = models::LatestValuesModel::Row(r);
@@ -249,6 +304,7 @@ void DeviceWorkspace::onBaudDetected(int baud)
 void DeviceWorkspace::onCommandFinished(quint64 id, const protocol::hipnuc::AsciiReply &reply)
 {
     m_console->showReply(id, reply);
+    m_commandLog->complete(id, reply);
     // A LOG VERSION sent from the console or the Device menu refreshes the identity too.
     const QString command = QString::fromStdString(reply.command).simplified();
     if (reply.ok() && command.compare(QLatin1String("LOG VERSION"), Qt::CaseInsensitive) == 0) {
@@ -282,6 +338,9 @@ void DeviceWorkspace::updateStateLabel()
     case SessionState::Detecting: text = tr("Detecting the baud rate of %1…").arg(m_target); break;
     case SessionState::Connected: text = tr("Connected"); break;
     case SessionState::Disconnected: text = tr("Connection to %1 lost").arg(m_target); break;
+    case SessionState::Reconnecting:
+        text = tr("Disconnected from %1 — waiting for the device to come back").arg(m_target);
+        break;
     case SessionState::Failed: text = tr("Could not connect to %1").arg(m_target); break;
     }
     m_stateLabel->setText(text);
@@ -331,11 +390,13 @@ void DeviceWorkspace::updateStatsLabel()
     parts << (rates.isEmpty() ? tr("no frames") : rates.join(QStringLiteral(", ")));
     parts << tr("load %1%").arg(qRound(s.linkLoad * 100));
     parts << tr("CRC errors %1").arg(s.crcErrors);
+    parts << tr("lost %1").arg(s.framesLost);
     parts << tr("skipped %1 B").arg(s.bytesSkipped);
     m_statsLabel->setText(parts.join(QStringLiteral(" · ")));
     m_statsLabel->setVisible(true);
     m_statsLabel->setToolTip(tr("Received %1 bytes, %2 frames, %3 NMEA sentences.\n"
                                 "Errors: %4 CRC, %5 length, %6 payload, %7 NMEA; %8 bytes skipped.\n"
+                                "Frames lost (gaps in the device time): %9.\n"
                                 "Link load = bytes per second × 10 bits / baud rate.")
                                  .arg(s.bytesIn)
                                  .arg(s.frames)
@@ -344,7 +405,8 @@ void DeviceWorkspace::updateStatsLabel()
                                  .arg(s.lengthErrors)
                                  .arg(s.payloadErrors)
                                  .arg(s.nmeaErrors)
-                                 .arg(s.bytesSkipped));
+                                 .arg(s.bytesSkipped)
+                                 .arg(s.framesLost));
 }
 
 void DeviceWorkspace::createStatusBar()
@@ -381,6 +443,9 @@ void DeviceWorkspace::createStatusBar()
 void DeviceWorkspace::retranslateUi()
 {
     m_consoleDock->setWindowTitle(tr("Console"));
+    m_rawDock->setWindowTitle(tr("Raw bytes"));
+    m_commandLogDock->setWindowTitle(tr("Command log"));
+    m_valuesDock->setWindowTitle(tr("Values and attitude"));
     m_valuesModel->retranslate();
     resizeValueColumns();
     updateStateLabel();
@@ -392,10 +457,8 @@ void DeviceWorkspace::resizeValueColumns()
 {
     using Model = models::LatestValuesModel;
     m_valuesView->resizeColumnToContents(Model::QuantityColumn);
-    // Room for a long MAIN_STATUS text; numbers are right-aligned next to the quantity.
-    const int valueWidth = m_valuesView->fontMetrics().horizontalAdvance(
-                               QStringLiteral("WB_CONV MAG_DIST ATT_CONV STATIC MAG_AIDING UTC_UNSYNC (0x0000)"))
-        + 16;
+    // Room for the longest number; the MAIN_STATUS text elides (the flags are in the status bar too).
+    const int valueWidth = m_valuesView->fontMetrics().horizontalAdvance(QStringLiteral("-100676.0703125")) + 16;
     m_valuesView->setColumnWidth(Model::ValueColumn, valueWidth);
 }
 
@@ -410,6 +473,12 @@ void DeviceWorkspace::changeEvent(QEvent *event)
 void DeviceWorkspace::showEvent(QShowEvent *event)
 {
     QMainWindow::showEvent(event);
+    if (!m_shownOnce && !m_layoutRestored) {
+        // Default proportions, once the layout has a size: charts get the room.
+        resizeDocks({m_consoleDock}, {170}, Qt::Vertical);
+        resizeDocks({m_valuesDock}, {440}, Qt::Horizontal);
+    }
+    m_shownOnce = true;
     m_refreshTimer.start();
     refreshViews();
 }

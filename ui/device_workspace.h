@@ -27,13 +27,18 @@ class PtySimulator;
 
 namespace imudesk::ui {
 
+class AttitudeWidget;
+class ChartPanel;
+class CommandLogWidget;
 class ConsoleWidget;
+class RawBytesView;
 class StatusFlagsWidget;
 
 class DeviceWorkspace : public QMainWindow {
     Q_OBJECT
 public:
-    static constexpr int kRefreshIntervalMs = 33; // 30 Hz view clock
+    static constexpr int kRefreshIntervalMs = 30; // 33 Hz view clock (<= 60 Hz, >= 30 charts/s)
+    static constexpr size_t kMaxSamplesPerTick = 20000; // a stalled GUI catches up without a burst
     static constexpr int kCommandTimeoutMs = 1000;
 
     explicit DeviceWorkspace(QWidget *parent = nullptr);
@@ -61,6 +66,10 @@ public:
     QString title() const;
 
     ConsoleWidget *console() const { return m_console; }
+    ChartPanel *chartPanel() const { return m_charts; }
+    AttitudeWidget *attitudeWidget() const { return m_attitude; }
+    RawBytesView *rawBytesView() const { return m_rawView; }
+    CommandLogWidget *commandLog() const { return m_commandLog; }
     QTableView *valuesView() const { return m_valuesView; }
     models::LatestValuesModel *valuesModel() const { return m_valuesModel; }
     StatusFlagsWidget *statusFlags() const { return m_flags; }
@@ -110,8 +119,17 @@ private:
     models::LatestValuesModel *m_valuesModel = nullptr;
     QTableView *m_valuesView = nullptr;
     QDockWidget *m_valuesDock = nullptr;
+    ChartPanel *m_charts = nullptr;
+    AttitudeWidget *m_attitude = nullptr;
+    bool m_layoutRestored = false;
+    bool m_shownOnce = false;
+    uint64_t m_chartSeq = 0; // next sample of the store the charts have not seen
     ConsoleWidget *m_console = nullptr;
     QDockWidget *m_consoleDock = nullptr;
+    RawBytesView *m_rawView = nullptr;
+    QDockWidget *m_rawDock = nullptr;
+    CommandLogWidget *m_commandLog = nullptr;
+    QDockWidget *m_commandLogDock = nullptr;
     StatusFlagsWidget *m_flags = nullptr;
     QLabel *m_stateLabel = nullptr;
     QLabel *m_identityLabel = nullptr;

@@ -1,10 +1,13 @@
 #include "main_window.h"
 
+#include "chart_panel.h"
+#include "comparison_chart.h"
 #include "connection_bar.h"
 #include "console_widget.h"
 #include "device_workspace.h"
 
 #include <QAction>
+#include <QDockWidget>
 #include <QApplication>
 #include <QEvent>
 #include <QFileDialog>
@@ -43,6 +46,23 @@ MainWindow::MainWindow(const WindowSettings &settings, QWidget *parent) : QMainW
     toolBar->addWidget(m_connectionBar);
     addToolBar(Qt::TopToolBarArea, toolBar);
 
+    // Bottom, hidden at first: the same channel of every connected device on one time axis.
+    m_comparison = new ComparisonChart(this);
+    m_comparison->setObjectName(QStringLiteral("comparisonChart"));
+    m_comparisonDock = new QDockWidget(this);
+    m_comparisonDock->setObjectName(QStringLiteral("comparisonDock"));
+    m_comparisonDock->setWidget(m_comparison);
+    addDockWidget(Qt::BottomDockWidgetArea, m_comparisonDock);
+    m_comparisonDock->hide();
+    m_comparisonTimer.setInterval(50);
+    connect(&m_comparisonTimer, &QTimer::timeout, m_comparison, &ComparisonChart::refresh);
+    connect(m_comparisonDock, &QDockWidget::visibilityChanged, this, [this](bool visible) {
+        if (visible)
+            m_comparisonTimer.start();
+        else
+            m_comparisonTimer.stop();
+    });
+
     createActions();
     createMenus();
 
@@ -60,6 +80,8 @@ MainWindow::~MainWindow()
 {
     // Workspaces close their ports (and stop their simulators) as they go.
     m_tabs->disconnect(this);
+    m_comparisonTimer.stop();
+    m_comparison->setSources({}); // the histories belong to the workspaces
 }
 
 DeviceWorkspace *MainWindow::newWorkspace()
@@ -73,6 +95,7 @@ DeviceWorkspace *MainWindow::newWorkspace()
             m_tabs->setTabText(i, title);
             m_tabs->setTabToolTip(i, title);
         }
+        updateComparisonSources();
         if (ws == currentWorkspace())
             updateTitle();
     });
@@ -86,6 +109,7 @@ DeviceWorkspace *MainWindow::newWorkspace()
     connect(ws, &DeviceWorkspace::errorReported, this, &MainWindow::presentError);
     m_tabs->setCurrentIndex(index);
     m_tabs->tabBar()->setVisible(m_tabs->count() > 1);
+    updateComparisonSources();
     return ws;
 }
 
@@ -111,7 +135,9 @@ void MainWindow::closeWorkspace(int index)
         return;
     m_workspaceLayout = ws->saveLayout();
     m_tabs->removeTab(index);
+    m_comparison->setSources({}); // before the history goes
     delete ws; // closes its port
+    updateComparisonSources();
     if (m_tabs->count() == 0)
         newWorkspace();
     m_tabs->tabBar()->setVisible(m_tabs->count() > 1);
@@ -304,6 +330,17 @@ void MainWindow::rebuildViewMenu()
     m_viewMenu->clear();
     if (DeviceWorkspace *ws = currentWorkspace())
         m_viewMenu->addActions(ws->dockActions());
+    m_viewMenu->addSeparator();
+    m_viewMenu->addAction(m_comparisonDock->toggleViewAction());
+}
+
+void MainWindow::updateComparisonSources()
+{
+    std::vector<ComparisonChart::Source> sources;
+    for (int i = 0; i < m_tabs->count(); ++i)
+        if (DeviceWorkspace *ws = workspace(i))
+            sources.emplace_back(ws->title(), &ws->chartPanel()->history());
+    m_comparison->setSources(std::move(sources));
 }
 
 void MainWindow::createActions()
@@ -393,6 +430,7 @@ void MainWindow::retranslateUi()
     m_aboutAction->setText(tr("&About ImuDesk"));
     if (auto *bar = findChild<QToolBar *>(QStringLiteral("connectionToolBar")))
         bar->setWindowTitle(tr("Connection"));
+    m_comparisonDock->setWindowTitle(tr("Compare devices"));
     updateTitle();
 }
 

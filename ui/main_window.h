@@ -8,10 +8,12 @@
 
 #include <QMainWindow>
 #include <QPointer>
+#include <QTimer>
 
 #include <functional>
 
 class QAction;
+class QDockWidget;
 class QMenu;
 class QMessageBox;
 class QTabWidget;
@@ -26,6 +28,7 @@ class PtySimulator;
 
 namespace imudesk::ui {
 
+class ComparisonChart;
 class ConnectionBar;
 class ConsoleWidget;
 class DeviceWorkspace;
@@ -68,6 +71,8 @@ public:
     QString statusText() const;
     bool isRefreshing() const;
     ConnectionBar *connectionBar() const { return m_connectionBar; }
+    ComparisonChart *comparisonChart() const { return m_comparison; }
+    QDockWidget *comparisonDock() const { return m_comparisonDock; }
 
     // Saves the window as a PNG; false with a reason when it cannot be written.
     bool saveScreenshot(const QString &path, QString *error = nullptr);
@@ -89,10 +94,14 @@ private:
     void updateTitle();
     void updateActions();
     void rebuildViewMenu();
+    void updateComparisonSources();
 
     QTabWidget *m_tabs = nullptr;
     ConnectionBar *m_connectionBar = nullptr;
     QByteArray m_workspaceLayout; // applied to every new workspace
+    ComparisonChart *m_comparison = nullptr;
+    QDockWidget *m_comparisonDock = nullptr;
+    QTimer m_comparisonTimer; // the comparison's view clock, only while it is shown
 
     QMenu *m_fileMenu = nullptr;
     QMenu *m_deviceMenu = nullptr;

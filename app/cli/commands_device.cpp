@@ -170,8 +170,7 @@ int cmdRead(const QStringList &args)
     uint64_t printed = 0;
     int64_t lastTextNs = 0;
     auto drain = [&] {
-        const auto batch = session.store().since(seq);
-        seq += batch.size();
+        const auto batch = session.store().since(seq, SIZE_MAX, &seq);
         for (const auto &s : batch) {
             ++printed;
             if (json) {

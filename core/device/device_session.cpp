@@ -13,6 +13,7 @@ const char *stateName(SessionState s)
     case SessionState::Connected: return "connected";
     case SessionState::Disconnected: return "disconnected";
     case SessionState::Failed: return "failed";
+    case SessionState::Reconnecting: return "reconnecting";
     }
     return "?";
 }
@@ -48,6 +49,7 @@ DeviceSession::DeviceSession(QObject *parent) : QObject(parent)
     connect(m_worker, &SessionWorker::nmeaReceived, this, &DeviceSession::nmeaReceived);
     connect(m_worker, &SessionWorker::textReceived, this, &DeviceSession::textReceived);
     connect(m_worker, &SessionWorker::errorOccurred, this, &DeviceSession::errorOccurred);
+    connect(m_worker, &SessionWorker::reconnected, this, &DeviceSession::reconnected);
     m_thread.start();
 }
 
@@ -81,6 +83,12 @@ quint64 DeviceSession::sendCommand(const QString &text, int timeoutMs)
 void DeviceSession::setHostBaud(int baud)
 {
     QMetaObject::invokeMethod(m_worker, [w = m_worker, baud] { w->setHostBaud(baud); }, Qt::QueuedConnection);
+}
+
+void DeviceSession::setAutoReconnect(bool on)
+{
+    m_autoReconnect = on;
+    QMetaObject::invokeMethod(m_worker, [w = m_worker, on] { w->setAutoReconnect(on); }, Qt::QueuedConnection);
 }
 
 } // namespace imudesk::device

@@ -36,6 +36,13 @@ public:
     quint64 sendCommand(const QString &text, int timeoutMs = 1000);
     // Changes the host side of the link (after SERIALCONFIG).
     void setHostBaud(int baud);
+    // When the port fails while open (unplugged), wait for the same device to come back
+    // (the same USB serial number, else the same path; polled every 500 ms), reopen it
+    // at the last working baud, read its identity again and carry on: state Reconnecting
+    // while waiting, then Connected and reconnected(). Samples and counters are kept.
+    // close() stops the waiting. On by default.
+    void setAutoReconnect(bool on);
+    bool autoReconnect() const { return m_autoReconnect.load(); }
 
     SampleStore &store() { return m_store; }
     // Raw bytes of the link, both directions (bounded).
@@ -54,6 +61,8 @@ Q_SIGNALS:
     void nmeaReceived(const QString &sentence);
     void textReceived(const QString &line); // ASCII lines that answer no command
     void errorOccurred(const QString &message);
+    // The device came back after the port failed and the session reopened it.
+    void reconnected();
 
 private:
     QThread m_thread;
@@ -62,6 +71,7 @@ private:
     SessionWorker *m_worker = nullptr;
     std::atomic<quint64> m_nextId{1};
     std::atomic<SessionState> m_state{SessionState::Closed};
+    std::atomic<bool> m_autoReconnect{true};
 };
 
 } // namespace imudesk::device

@@ -48,9 +48,11 @@ std::optional<model::Sample> SampleStore::latest() const
     return m_ring[(m_total - 1) % m_capacity];
 }
 
-std::vector<model::Sample> SampleStore::since(uint64_t fromSeq, size_t maxCount) const
+std::vector<model::Sample> SampleStore::since(uint64_t fromSeq, size_t maxCount, uint64_t *nextSeq) const
 {
     std::lock_guard lock(m_mutex);
+    if (nextSeq)
+        *nextSeq = m_total;
     const uint64_t oldest = m_total - m_ring.size();
     uint64_t from = std::max(fromSeq, oldest);
     if (m_total > from && m_total - from > maxCount)

@@ -23,7 +23,8 @@ public:
     size_t capacity() const { return m_capacity; }
     std::optional<model::Sample> latest() const;
     // Samples with sequence >= fromSeq still in the ring (at most maxCount, newest kept).
-    std::vector<model::Sample> since(uint64_t fromSeq, size_t maxCount = SIZE_MAX) const;
+    // nextSeq, when given, receives the sequence number to ask for next time.
+    std::vector<model::Sample> since(uint64_t fromSeq, size_t maxCount = SIZE_MAX, uint64_t *nextSeq = nullptr) const;
 
 private:
     const size_t m_capacity;

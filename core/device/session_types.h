@@ -19,6 +19,7 @@ enum class SessionState {
     Connected,    // port open, device identified or streaming
     Disconnected, // the port failed (unplugged); data received so far is kept
     Failed,       // could not open / no device found
+    Reconnecting, // disconnected, waiting for the same device to come back (auto-reconnect)
 };
 const char *stateName(SessionState s);
 
@@ -31,6 +32,13 @@ struct SessionStats {
     uint64_t nmeaSentences = 0;
     uint64_t nmeaErrors = 0;
     uint64_t payloadErrors = 0;         // CRC-valid frames whose payload could not be decoded
+    // Frames the device sent that never arrived (or arrived damaged), from gaps in the
+    // device timestamps (device/frame_gap_counter.h); gaps across an output change, a
+    // device reset or a reconnection are not counted.
+    uint64_t framesLost = 0;
+    std::map<std::string, uint64_t> framesLostByType;
+    uint64_t deviceResets = 0;          // device timestamps that jumped backwards
+    uint64_t reconnects = 0;            // times the session reconnected by itself
     std::map<std::string, uint64_t> framesByType;
     std::map<std::string, double> rateByType; // frames per second over the last window
     double bytesPerSecond = 0;

@@ -1,10 +1,15 @@
 #include "session_worker.h"
 
 #include "device/device_session.h"
+#include "protocol/hipnuc/ascii_command.h"
+#include "protocol/hipnuc/frame_decoder.h"
 #include "protocol/hipnuc/payloads.h"
 
 #include <QCoreApplication>
+#include <QFileInfo>
 #include <QLoggingCategory>
+#include <QRegularExpression>
+#include <QSerialPortInfo>
 
 #include <chrono>
 
@@ -21,6 +26,10 @@ constexpr int kDetectQueryTimeoutMs = 500;
 constexpr int kIdentityTimeoutMs = 1000;
 constexpr int kStatsPeriodMs = 500;
 constexpr int kLineIdleMs = 30;
+constexpr int kReconnectPollMs = 500;
+// A configured rate whose frames need more of the line than this cannot all arrive, so the
+// frames that do no longer show the period: the gap counter is told the configured one.
+constexpr double kSaturatedLinkLoad = 0.9;
 
 int64_t monotonicNs()
 {
@@ -40,6 +49,8 @@ SessionWorker::SessionWorker(SampleStore &store, RawByteLog &rawLog, QObject *pa
     connect(&m_idleTimer, &QTimer::timeout, this, &SessionWorker::onLineIdle);
     m_statsTimer.setInterval(kStatsPeriodMs);
     connect(&m_statsTimer, &QTimer::timeout, this, &SessionWorker::publishStats);
+    m_reconnectTimer.setInterval(kReconnectPollMs);
+    connect(&m_reconnectTimer, &QTimer::timeout, this, &SessionWorker::tryReconnect);
 }
 
 SessionWorker::~SessionWorker() = default;
@@ -54,6 +65,10 @@ void SessionWorker::open(const QString &portName, int baud)
 {
     close();
     m_portName = portName;
+    m_requestedPort = portName;
+    m_workingBaud = 0;
+    m_deviceSerial.clear();
+    m_checkSameDevice = false;
     setState(SessionState::Opening, portName);
     if (!m_transport) {
         m_transport = new io::SerialTransport(this);
@@ -67,20 +82,21 @@ void SessionWorker::open(const QString &portName, int baud)
         Q_EMIT errorOccurred(error);
         return;
     }
+    rememberDevice(portName);
     m_demux.reset();
     m_demux.resetCounters();
     m_payloadErrors = 0;
+    m_gaps.clear();
+    m_frameBytes.clear();
+    m_reconnects = 0;
     m_statsClock.start();
     m_lastStatsMs = 0;
     m_lastStats = SessionStats{};
     m_statsTimer.start();
     if (baud > 0) {
+        m_workingBaud = baud;
         setState(SessionState::Connected, portName);
-        // Listen first, as the detection does: joining a stream mid-frame, the tail of that
-        // frame must not be mistaken for the start of the reply.
-        m_detectTimer.disconnect();
-        connect(&m_detectTimer, &QTimer::timeout, this, [this] { queryIdentity(1); });
-        m_detectTimer.start(kListenMs);
+        listenThenQueryIdentity();
     } else {
         m_detecting = true;
         setState(SessionState::Detecting, portName);
@@ -88,17 +104,30 @@ void SessionWorker::open(const QString &portName, int baud)
     }
 }
 
+void SessionWorker::listenThenQueryIdentity()
+{
+    // Listen first, as the detection does: joining a stream mid-frame, the tail of that
+    // frame must not be mistaken for the start of the reply.
+    m_detectTimer.disconnect();
+    connect(&m_detectTimer, &QTimer::timeout, this, [this] { queryIdentity(1); });
+    m_detectTimer.start(kListenMs);
+}
+
 void SessionWorker::close()
 {
     m_detecting = false;
     m_detectTimer.stop();
     m_detectTimer.disconnect();
+    const bool waiting = m_reconnectTimer.isActive() || m_state == SessionState::Reconnecting;
+    m_reconnectTimer.stop();
     cancelAll(Reply::Status::Cancelled, tr("the connection was closed"));
     if (m_transport && m_transport->isOpen()) {
         m_transport->close();
         publishStats();
         m_statsTimer.stop();
         setState(SessionState::Closed);
+    } else if (waiting) {
+        setState(SessionState::Closed); // no longer waiting for the device
     }
 }
 
@@ -107,8 +136,19 @@ void SessionWorker::setHostBaud(int baud)
     if (!m_transport || !m_transport->isOpen())
         return;
     m_transport->setBaud(baud);
+    m_workingBaud = baud;
     m_demux.reset();
+    m_gaps.resetTiming(); // bytes were lost while the two sides disagreed
     publishStats();
+}
+
+void SessionWorker::setAutoReconnect(bool on)
+{
+    m_autoReconnect = on;
+    if (!on && m_state == SessionState::Reconnecting) {
+        m_reconnectTimer.stop();
+        setState(SessionState::Disconnected, tr("automatic reconnection was turned off"));
+    }
 }
 
 void SessionWorker::sendCommand(quint64 id, const QString &text, int timeoutMs)
@@ -147,6 +187,7 @@ void SessionWorker::startNext()
     m_collector.emplace(m_current->text.toStdString());
     const QByteArray wire = m_current->text.toLatin1() + "\r\n";
     m_rawLog.append(RawByteLog::Direction::Tx, wire, monotonicNs());
+    noteCommandSent(m_current->text);
     if (m_transport->write(wire) != wire.size()) {
         Reply r = m_collector->take();
         r.status = Reply::Status::NotSent;
@@ -165,6 +206,7 @@ void SessionWorker::finishCurrent(Reply reply)
     Pending p = std::move(*m_current);
     m_current.reset();
     m_collector.reset();
+    noteCommandDone(p.text, reply);
     if (p.done)
         p.done(reply);
     if (p.id)
@@ -235,19 +277,26 @@ void SessionWorker::handleEvents()
     for (auto &e : m_events) {
         switch (e.kind) {
         case StreamEvent::Kind::Frame: {
+            const size_t first = m_batch.size();
             hp::Hi91 h;
             if (hp::decodeHi91(e.payload.data(), e.payload.size(), h)) {
                 m_batch.push_back(hp::toSample(h));
                 m_batch.back().hostTimeNs = now;
-                break;
+            } else {
+                const auto res = hp::decodePayload(e.payload);
+                for (const auto &p : res.packets) {
+                    m_batch.push_back(hp::toSample(p));
+                    m_batch.back().hostTimeNs = now;
+                }
+                if (!res.ok())
+                    ++m_payloadErrors;
             }
-            const auto res = hp::decodePayload(e.payload);
-            for (const auto &p : res.packets) {
-                m_batch.push_back(hp::toSample(p));
-                m_batch.back().hostTimeNs = now;
+            for (size_t i = first; i < m_batch.size(); ++i) {
+                const model::Sample &sample = m_batch[i];
+                m_frameBytes[sample.source] = e.payload.size() + hp::FrameDecoder::kHeaderSize;
+                if (sample.has(model::FieldDeviceTime))
+                    m_gaps.add(sample.source, sample.deviceTimeMs);
             }
-            if (!res.ok())
-                ++m_payloadErrors;
             break;
         }
         case StreamEvent::Kind::Nmea:
@@ -273,6 +322,7 @@ void SessionWorker::onTransportFailed(const QString &message)
 {
     m_detecting = false;
     m_detectTimer.stop();
+    m_idleTimer.stop();
     cancelAll(Reply::Status::NotSent, message);
     if (m_transport)
         m_transport->close();
@@ -280,9 +330,203 @@ void SessionWorker::onTransportFailed(const QString &message)
     m_statsTimer.stop();
     setState(SessionState::Disconnected, message);
     Q_EMIT errorOccurred(message);
+    if (m_autoReconnect && m_workingBaud > 0)
+        startWaiting();
 }
 
-void SessionWorker::publishStats()
+// ---------------------------------------------------------------------------------------
+// Reconnection
+
+void SessionWorker::rememberDevice(const QString &portName)
+{
+    // The USB identity of the port, when it has one (QSerialPortInfo lists USB and
+    // on-board ports, not pseudo-terminals). A by-id symlink is matched by its target.
+    m_serialNumber.clear();
+    m_hasUsbIds = false;
+    const QString location = io::SerialTransport::systemLocation(portName);
+    const QString canonical = QFileInfo(location).canonicalFilePath();
+    const auto ports = QSerialPortInfo::availablePorts();
+    for (const QSerialPortInfo &info : ports) {
+        if (info.systemLocation() != location && info.systemLocation() != canonical && info.portName() != portName)
+            continue;
+        m_serialNumber = info.serialNumber();
+        m_hasUsbIds = info.hasVendorIdentifier() && info.hasProductIdentifier();
+        m_vendorId = info.vendorIdentifier();
+        m_productId = info.productIdentifier();
+        break;
+    }
+}
+
+QString SessionWorker::locateDevice() const
+{
+    if (!m_serialNumber.isEmpty()) {
+        // The same adapter, wherever it enumerated this time (ttyUSB0 may come back as ttyUSB1).
+        const auto ports = QSerialPortInfo::availablePorts();
+        for (const QSerialPortInfo &info : ports) {
+            if (info.serialNumber() != m_serialNumber)
+                continue;
+            if (m_hasUsbIds && (info.vendorIdentifier() != m_vendorId || info.productIdentifier() != m_productId))
+                continue;
+            // The path the user chose, if it leads there (a by-id symlink), else the device.
+            const QString wanted = io::SerialTransport::systemLocation(m_requestedPort);
+            return QFileInfo(wanted).canonicalFilePath() == info.systemLocation() ? m_requestedPort
+                                                                                   : info.systemLocation();
+        }
+        return {};
+    }
+    // No USB identity (a pseudo-terminal, an on-board UART): the same path, once it exists.
+    return QFileInfo::exists(io::SerialTransport::systemLocation(m_requestedPort)) ? m_requestedPort : QString();
+}
+
+void SessionWorker::noteIdentity(const model::DeviceIdentity &id)
+{
+    // A path without a USB serial number may come back with another module behind it.
+    if (m_checkSameDevice && !m_deviceSerial.empty() && !id.serial.empty() && id.serial != m_deviceSerial)
+        Q_EMIT errorOccurred(tr("The device that came back on %1 is a different one (serial %2, before %3). Its data "
+                                "continues in this session.")
+                                 .arg(m_portName, QString::fromStdString(id.serial),
+                                      QString::fromStdString(m_deviceSerial)));
+    m_checkSameDevice = false;
+    if (!id.serial.empty())
+        m_deviceSerial = id.serial;
+    Q_EMIT identityChanged(id);
+}
+
+void SessionWorker::startWaiting()
+{
+    m_lastReconnectError.clear();
+    setState(SessionState::Reconnecting, tr("disconnected — waiting for the device to come back"));
+    m_reconnectTimer.start();
+}
+
+void SessionWorker::tryReconnect()
+{
+    if (m_state != SessionState::Reconnecting || !m_autoReconnect) {
+        m_reconnectTimer.stop();
+        return;
+    }
+    const QString path = locateDevice();
+    if (path.isEmpty())
+        return;
+    QString error;
+    if (!m_transport->open(path, m_workingBaud, &error)) {
+        // Just plugged in: udev may not have set the permissions yet. Keep trying.
+        if (error != m_lastReconnectError)
+            qCInfo(lcSession) << "reconnect attempt failed:" << error;
+        m_lastReconnectError = error;
+        return;
+    }
+    m_reconnectTimer.stop();
+    m_portName = path;
+    ++m_reconnects;
+    // Counters and samples carry on; only the stream state starts afresh.
+    m_demux.reset();
+    m_gaps.resetTiming(); // the outage is a disconnection, not lost frames
+    const qint64 nowMs = m_statsClock.isValid() ? m_statsClock.elapsed() : 0;
+    const SessionStats before = counterSnapshot();
+    m_lastStats.bytesIn = before.bytesIn;
+    m_lastStats.framesByType = before.framesByType;
+    m_lastStatsMs = nowMs;
+    m_statsTimer.start();
+    setState(SessionState::Connected, tr("%1 at %2 baud (reconnected)").arg(path).arg(m_workingBaud));
+    m_checkSameDevice = true;
+    Q_EMIT reconnected();
+    listenThenQueryIdentity();
+}
+
+// ---------------------------------------------------------------------------------------
+// Frames lost
+
+namespace {
+
+struct OutputCommand {
+    bool changesOutput = false;   // the stream's timing may jump here
+    bool setsMessage = false;     // LOG <MSG> ...: the message's own setting
+    bool thisPort = true;         // no COMn word: the port the command came in on
+    std::string message;          // HI91, ...
+    double periodS = -1;          // ONTIME period; -1 when not ONTIME
+};
+
+OutputCommand parseOutputCommand(const QString &text)
+{
+    static const QRegularExpression space(QStringLiteral("\\s+"));
+    const QStringList w = text.trimmed().toUpper().split(space, Qt::SkipEmptyParts);
+    OutputCommand c;
+    if (w.isEmpty())
+        return c;
+    const QString &verb = w.front();
+    if (verb == QLatin1String("REBOOT") || verb == QLatin1String("FRESET") || verb == QLatin1String("SERIALCONFIG")) {
+        c.changesOutput = true;
+        return c;
+    }
+    if (verb != QLatin1String("LOG") || w.size() < 2)
+        return c;
+    // Queries leave the output alone.
+    static const QStringList queries = {QStringLiteral("VERSION"), QStringLiteral("COMCONFIG"),
+                                        QStringLiteral("MAGCONFIG"), QStringLiteral("MCAL")};
+    if (queries.contains(w.at(1)))
+        return c;
+    c.changesOutput = true;
+    qsizetype i = 1;
+    if (w.at(i).startsWith(QLatin1String("COM"))) {
+        c.thisPort = false;
+        ++i;
+    }
+    protocol::hipnuc::Message m;
+    if (i >= w.size() || !protocol::hipnuc::parseMessage(w.at(i).toStdString(), m))
+        return c; // LOG ENABLE / DISABLE
+    c.setsMessage = true;
+    c.message = protocol::hipnuc::messageName(m);
+    if (i + 2 < w.size() && w.at(i + 1) == QLatin1String("ONTIME")) {
+        bool ok = false;
+        const double p = w.at(i + 2).toDouble(&ok);
+        if (ok && p >= 0)
+            c.periodS = p;
+    }
+    return c;
+}
+
+size_t defaultFrameBytes(const std::string &message)
+{
+    const size_t header = protocol::hipnuc::FrameDecoder::kHeaderSize;
+    if (message == "HI91")
+        return protocol::hipnuc::Hi91::kSize + header;
+    if (message == "HI92")
+        return protocol::hipnuc::Hi92::kSize + header;
+    if (message == "HI81")
+        return protocol::hipnuc::Hi81::kSize + header;
+    return 0; // HI83: its size depends on the MAP
+}
+
+} // namespace
+
+void SessionWorker::noteCommandSent(const QString &text)
+{
+    if (parseOutputCommand(text).changesOutput)
+        m_gaps.resetTiming();
+}
+
+void SessionWorker::noteCommandDone(const QString &text, const Reply &reply)
+{
+    const OutputCommand c = parseOutputCommand(text);
+    if (!c.changesOutput || !reply.ok())
+        return;
+    m_gaps.resetTiming();
+    if (!c.setsMessage || !c.thisPort)
+        return;
+    // Can the link carry the new rate? If not, the frames that arrive no longer show it.
+    double expectedMs = 0;
+    if (c.periodS > 0 && m_transport && m_transport->baud() > 0) {
+        const auto seen = m_frameBytes.find(c.message);
+        const size_t bytes = seen != m_frameBytes.end() ? seen->second : defaultFrameBytes(c.message);
+        const double load = double(bytes) * 10.0 / c.periodS / double(m_transport->baud());
+        if (bytes > 0 && load > kSaturatedLinkLoad)
+            expectedMs = c.periodS * 1000.0;
+    }
+    m_gaps.setExpectedPeriod(c.message, expectedMs);
+}
+
+SessionStats SessionWorker::counterSnapshot() const
 {
     SessionStats s;
     const auto &fc = m_demux.frameCounters();
@@ -304,7 +548,17 @@ void SessionWorker::publishStats()
     }
     if (dc.nmeaSentences)
         s.framesByType["NMEA"] = dc.nmeaSentences;
+    s.framesLost = m_gaps.lost();
+    s.framesLostByType = m_gaps.lostByType();
+    s.deviceResets = m_gaps.resets();
+    s.reconnects = m_reconnects;
     s.baud = m_transport ? m_transport->baud() : 0;
+    return s;
+}
+
+void SessionWorker::publishStats()
+{
+    SessionStats s = counterSnapshot();
     const qint64 nowMs = m_statsClock.isValid() ? m_statsClock.elapsed() : 0;
     const double dt = double(nowMs - m_lastStatsMs) / 1000.0;
     if (dt > 0.05) {
@@ -337,7 +591,7 @@ void SessionWorker::queryIdentity(int attempt)
             const auto id = model::DeviceIdentity::fromKeyValues(r.values);
             answered = id.usable();
             if (answered)
-                Q_EMIT identityChanged(id);
+                noteIdentity(id);
         }
         // An OK whose lines were damaged (noise on the line) is asked again; silence is not.
         if (!answered && r.status == Reply::Status::Ok && attempt < kAttempts) {
@@ -416,13 +670,15 @@ void SessionWorker::detectQuery(bool retry)
 void SessionWorker::detectFinished(int baud, const std::optional<model::DeviceIdentity> &id)
 {
     m_detecting = false;
+    m_workingBaud = baud;
     m_demux.resetCounters();
+    m_gaps.clear();
     m_lastStats = SessionStats{};
     m_statsClock.restart();
     m_lastStatsMs = 0;
     Q_EMIT baudDetected(baud);
     if (id)
-        Q_EMIT identityChanged(*id);
+        noteIdentity(*id);
     setState(SessionState::Connected, tr("%1 at %2 baud").arg(m_portName).arg(baud));
 }
 

@@ -2,6 +2,7 @@
 // The worker half of DeviceSession: owns the transport, the stream demux and the
 // one-at-a-time command queue. Runs in the session's thread; never touched directly
 // by other threads.
+#include "device/frame_gap_counter.h"
 #include "device/raw_byte_log.h"
 #include "device/sample_store.h"
 #include "device/session_types.h"
@@ -14,7 +15,9 @@
 
 #include <deque>
 #include <functional>
+#include <map>
 #include <optional>
+#include <string>
 
 namespace imudesk::device {
 
@@ -29,6 +32,8 @@ public Q_SLOTS:
     void close();
     void sendCommand(quint64 id, const QString &text, int timeoutMs);
     void setHostBaud(int baud);
+    // On by default: after the port fails, wait for the same device and reopen it.
+    void setAutoReconnect(bool on);
 
 Q_SIGNALS:
     void stateChanged(imudesk::device::SessionState state, const QString &detail);
@@ -42,6 +47,7 @@ Q_SIGNALS:
     void nmeaReceived(const QString &sentence);
     void textReceived(const QString &line);
     void errorOccurred(const QString &message);
+    void reconnected();
 
 private:
     using Reply = protocol::hipnuc::AsciiReply;
@@ -63,6 +69,19 @@ private:
     void onCommandTimeout();
     void cancelAll(Reply::Status status, const QString &why);
     void publishStats();
+
+    // Frames lost: the gap counter's timing follows what the commands do to the output.
+    void noteCommandSent(const QString &text);
+    void noteCommandDone(const QString &text, const Reply &reply);
+    SessionStats counterSnapshot() const;
+
+    // Reconnection after the port failed.
+    void rememberDevice(const QString &portName);
+    QString locateDevice() const;
+    void startWaiting();
+    void tryReconnect();
+    void listenThenQueryIdentity();
+    void noteIdentity(const model::DeviceIdentity &id);
 
     // Auto-detection
     void detectAt(size_t index);
@@ -95,6 +114,21 @@ private:
     qint64 m_lastStatsMs = 0;
     uint64_t m_payloadErrors = 0;
     SessionState m_state = SessionState::Closed;
+
+    FrameGapCounter m_gaps;
+    std::map<std::string, size_t> m_frameBytes; // last frame size per type (link load of a rate)
+
+    bool m_autoReconnect = true;
+    QTimer m_reconnectTimer{this};
+    QString m_requestedPort;    // what open() was given: the path to watch
+    QString m_serialNumber;     // USB serial number of the port at open time, if any
+    quint16 m_vendorId = 0, m_productId = 0;
+    bool m_hasUsbIds = false;
+    int m_workingBaud = 0;      // last baud the device was heard at (0: never)
+    QString m_lastReconnectError;
+    uint64_t m_reconnects = 0;
+    std::string m_deviceSerial;   // from LOG VERSION: tells whether the same module came back
+    bool m_checkSameDevice = false;
 };
 
 } // namespace imudesk::device

@@ -1,8 +1,14 @@
 #include "serial_transport.h"
 
 #include <QCoreApplication>
+#include <QFile>
 #include <QFileInfo>
 #include <QSerialPort>
+
+#include <cerrno>
+#ifdef Q_OS_UNIX
+#include <unistd.h>
+#endif
 
 namespace imudesk::io {
 
@@ -38,6 +44,39 @@ QString SerialTransport::describeOpenError(const QString &portName, OpenErrorKin
     return QCoreApplication::translate("imudesk::io::SerialTransport", "Could not open %1: %2").arg(portName, osText);
 }
 
+OpenErrorKind SerialTransport::classifyOpenError(int serialPortError, bool accessible)
+{
+    switch (QSerialPort::SerialPortError(serialPortError)) {
+    case QSerialPort::NoError: return OpenErrorKind::None;
+    case QSerialPort::DeviceNotFoundError: return OpenErrorKind::NotFound;
+    case QSerialPort::PermissionError:
+        // "Permission error while locking the device" (another QSerialPort, in this or
+        // another process, holds the lock file) and EBUSY (TIOCEXCL) come here too.
+        return accessible ? OpenErrorKind::Busy : OpenErrorKind::Permission;
+    default: return OpenErrorKind::Other;
+    }
+}
+
+QString SerialTransport::systemLocation(const QString &portName)
+{
+    if (portName.startsWith(QLatin1Char('/')))
+        return portName;
+    return QStringLiteral("/dev/") + portName;
+}
+
+bool SerialTransport::isAccessible(const QString &portName)
+{
+#ifdef Q_OS_UNIX
+    const QByteArray path = QFile::encodeName(systemLocation(portName));
+    if (::access(path.constData(), R_OK | W_OK) == 0)
+        return true;
+    return errno != EACCES && errno != EPERM && errno != EROFS;
+#else
+    Q_UNUSED(portName)
+    return true; // Windows reports a port in use as access denied
+#endif
+}
+
 bool SerialTransport::open(const QString &portName, int baud, QString *error, OpenErrorKind *kind)
 {
     close();
@@ -65,15 +104,8 @@ bool SerialTransport::open(const QString &portName, int baud, QString *error, Op
         const QString osText = m_port->errorString();
         delete m_port;
         m_port = nullptr;
-        switch (err) {
-        case QSerialPort::DeviceNotFoundError: return fail(OpenErrorKind::NotFound, osText);
-        case QSerialPort::PermissionError:
-            // Qt reports both EACCES and a held lock / EBUSY as PermissionError.
-            if (osText.contains(QLatin1String("ermission")) && !osText.contains(QLatin1String("lock")))
-                return fail(OpenErrorKind::Permission, osText);
-            return fail(OpenErrorKind::Busy, osText);
-        default: return fail(OpenErrorKind::Other, osText);
-        }
+        const bool accessible = err != QSerialPort::PermissionError || isAccessible(portName);
+        return fail(classifyOpenError(int(err), accessible), osText);
     }
     m_portName = portName;
     m_baud = baud;

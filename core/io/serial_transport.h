@@ -28,6 +28,15 @@ public:
     void clear();
 
     static QString describeOpenError(const QString &portName, OpenErrorKind kind, const QString &osText);
+    // Maps QSerialPort's open error to a kind. Qt 6.4 on Linux reports a port held by
+    // another handle (its lock file, or EBUSY from TIOCEXCL) and a denied open (EACCES)
+    // alike as PermissionError, with texts that Qt translates; they are told apart by
+    // whether this user may read and write the device at all (`accessible`).
+    static OpenErrorKind classifyOpenError(int serialPortError, bool accessible);
+    // Whether this process may open the device for reading and writing (access(2)).
+    static bool isAccessible(const QString &portName);
+    // The device path for a port name ("ttyUSB0" -> "/dev/ttyUSB0"; paths unchanged).
+    static QString systemLocation(const QString &portName);
 
 Q_SIGNALS:
     void bytesReceived(const QByteArray &bytes);

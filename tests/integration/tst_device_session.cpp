@@ -1,12 +1,21 @@
 // DeviceSession against the simulator on a real pseudo-terminal (QSerialPort path):
 // baud detection, identity, streaming, every documented command, ERR and timeouts,
-// errors for missing ports, and the unplug case.
+// errors for missing, busy and forbidden ports, the unplug case, reconnection after an
+// unplug, and frames lost on the link.
 #include "device/device_session.h"
+#include "io/serial_transport.h"
 #include "sim/hipnuc_simulator.h"
 #include "sim/pty_simulator.h"
 
+#include <QFile>
+#include <QProcess>
+#include <QSerialPort>
 #include <QSignalSpy>
+#include <QStandardPaths>
+#include <QTemporaryDir>
 #include <QTest>
+
+#include <unistd.h>
 
 using namespace imudesk;
 using device::DeviceSession;
@@ -39,6 +48,43 @@ bool waitConnected(DeviceSession &s, int timeoutMs = 15000)
         QTest::qWait(10);
     }
     return s.state() == SessionState::Connected;
+}
+
+// Stats as the session last published them.
+struct StatsProbe {
+    device::SessionStats last;
+    int updates = 0;
+    StatsProbe(DeviceSession &s, QObject *context)
+    {
+        QObject::connect(&s, &DeviceSession::statsUpdated, context, [this](const device::SessionStats &st) {
+            last = st;
+            ++updates;
+        });
+    }
+    // The next stats published from now on.
+    device::SessionStats next()
+    {
+        const int before = updates;
+        for (int waited = 0; updates == before && waited < 3000; waited += 10)
+            QTest::qWait(10);
+        return last;
+    }
+};
+
+// Frames the simulator did not deliver: dropped by its UART model or for a stalled reader.
+uint64_t simulatorDropped(sim::PtySimulator &simulator)
+{
+    uint64_t uart = 0;
+    simulator.withDevice([&uart](sim::HipnucSimulator &d) { uart = d.droppedFrames(); });
+    return uart + simulator.stats().chunksDropped;
+}
+
+QList<SessionState> states(const QSignalSpy &spy)
+{
+    QList<SessionState> out;
+    for (const auto &args : spy)
+        out << args.at(0).value<SessionState>();
+    return out;
 }
 
 AsciiReply send(DeviceSession &s, const QString &cmd, int timeoutMs = 800)
@@ -301,6 +347,7 @@ private Q_SLOTS:
         auto simulator = std::make_unique<sim::PtySimulator>(options());
         QVERIFY(simulator->start(nullptr));
         DeviceSession session;
+        session.setAutoReconnect(false); // reconnection: reconnectsAfterUnplug()
         QSignalSpy errors(&session, &DeviceSession::errorOccurred);
         session.open(simulator->devicePath(), 115200);
         QVERIFY(waitConnected(session));
@@ -313,6 +360,354 @@ private Q_SLOTS:
         QVERIFY(kept > 10);
         QVERIFY(session.store().latest().has_value());
         QCOMPARE(send(session, QStringLiteral("LOG VERSION")).status, Status::NotSent);
+    }
+
+    void reconnectsAfterUnplug()
+    {
+        // A stable name for the device (as /dev/serial/by-id/... is for a USB adapter):
+        // a symlink to the simulator's pty, pointed at the new pty when the device returns.
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        const QString link = dir.filePath(QStringLiteral("imu"));
+        auto first = std::make_unique<sim::PtySimulator>(options());
+        QVERIFY(first->start(nullptr));
+        QVERIFY(QFile::link(first->devicePath(), link));
+
+        DeviceSession session;
+        QVERIFY(session.autoReconnect());
+        QSignalSpy stateSpy(&session, &DeviceSession::stateChanged);
+        QSignalSpy reconnected(&session, &DeviceSession::reconnected);
+        QSignalSpy identity(&session, &DeviceSession::identityChanged);
+        QSignalSpy errors(&session, &DeviceSession::errorOccurred);
+        StatsProbe stats(session, this);
+        session.open(link, 115200);
+        QVERIFY(waitConnected(session));
+        QTRY_COMPARE(identity.size(), 1);
+        QTRY_VERIFY(session.store().totalAppended() > 50);
+        const device::SessionStats before = stats.next();
+        QVERIFY(before.frames > 50);
+
+        // Unplugged: the pty goes away.
+        QVERIFY(QFile::remove(link));
+        first.reset();
+        QTRY_COMPARE_WITH_TIMEOUT(session.state(), SessionState::Reconnecting, 5000);
+        const auto seen = states(stateSpy);
+        QVERIFY(seen.contains(SessionState::Disconnected));
+        QVERIFY(seen.indexOf(SessionState::Disconnected) < seen.lastIndexOf(SessionState::Reconnecting));
+        QCOMPARE(stateSpy.last().at(1).toString(), QStringLiteral("disconnected — waiting for the device to come back"));
+        const quint64 kept = session.store().totalAppended();
+        QVERIFY(kept > 50);
+        QCOMPARE(send(session, QStringLiteral("LOG VERSION"), 300).status, Status::NotSent);
+        QTest::qWait(1200); // a few attempts while the device is away
+        QCOMPARE(session.state(), SessionState::Reconnecting);
+        QCOMPARE(session.store().totalAppended(), kept);
+        QCOMPARE(reconnected.size(), 0);
+
+        // Plugged in again (a new pty behind the same name): the session finds it by itself.
+        auto second = std::make_unique<sim::PtySimulator>(options());
+        QVERIFY(second->start(nullptr));
+        QVERIFY(QFile::link(second->devicePath(), link));
+        QTRY_COMPARE_WITH_TIMEOUT(reconnected.size(), 1, 5000);
+        QTRY_COMPARE(session.state(), SessionState::Connected);
+        QTRY_VERIFY_WITH_TIMEOUT(session.store().totalAppended() > kept + 50, 5000);
+        QTRY_COMPARE_WITH_TIMEOUT(identity.size(), 2, 5000); // identity read again
+        QCOMPARE(send(session, QStringLiteral("LOG VERSION")).status, Status::Ok);
+        QCOMPARE(errors.size(), 1); // "lost"; the same module came back, so nothing more
+        QVERIFY(errors.at(0).at(0).toString().contains(QLatin1String("lost")));
+
+        // Counters carried on across the outage; the restarted device's clock is a reset,
+        // the outage itself is not a loss.
+        const device::SessionStats after = stats.next();
+        QVERIFY2(after.frames > before.frames + 50, qPrintable(QStringLiteral("%1 -> %2").arg(before.frames).arg(after.frames)));
+        QVERIFY(after.bytesIn > before.bytesIn);
+        QCOMPARE(after.reconnects, uint64_t(1));
+        QCOMPARE(after.framesLost, uint64_t(0));
+        QTRY_VERIFY(stats.next().rateByType["HI91"] > 80);
+
+        session.close();
+        QTRY_COMPARE(session.state(), SessionState::Closed);
+    }
+
+    void anotherDeviceComingBackIsReported()
+    {
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        const QString link = dir.filePath(QStringLiteral("imu"));
+        auto first = std::make_unique<sim::PtySimulator>(options());
+        QVERIFY(first->start(nullptr));
+        QVERIFY(QFile::link(first->devicePath(), link));
+        DeviceSession session;
+        QSignalSpy identity(&session, &DeviceSession::identityChanged);
+        QSignalSpy errors(&session, &DeviceSession::errorOccurred);
+        session.open(link, 115200);
+        QVERIFY(waitConnected(session));
+        QTRY_COMPARE(identity.size(), 1);
+        QVERIFY(QFile::remove(link));
+        first.reset();
+        QTRY_COMPARE_WITH_TIMEOUT(session.state(), SessionState::Reconnecting, 5000);
+        const qsizetype errorsBefore = errors.size(); // the "connection lost" one
+        sim::SimOptions otherModule = options();
+        otherModule.seed = 4242; // another UUID
+        auto second = std::make_unique<sim::PtySimulator>(otherModule);
+        QVERIFY(second->start(nullptr));
+        QVERIFY(QFile::link(second->devicePath(), link));
+        QTRY_COMPARE_WITH_TIMEOUT(identity.size(), 2, 5000);
+        const auto before = identity.at(0).at(0).value<model::DeviceIdentity>();
+        const auto after = identity.at(1).at(0).value<model::DeviceIdentity>();
+        QVERIFY(before.serial != after.serial);
+        QTRY_COMPARE(errors.size(), errorsBefore + 1);
+        QVERIFY2(errors.last().at(0).toString().contains(QLatin1String("different")),
+                 qPrintable(errors.last().at(0).toString()));
+        QCOMPARE(session.state(), SessionState::Connected);
+    }
+
+    void closeWhileWaitingStopsReconnecting()
+    {
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        const QString link = dir.filePath(QStringLiteral("imu"));
+        auto first = std::make_unique<sim::PtySimulator>(options());
+        QVERIFY(first->start(nullptr));
+        QVERIFY(QFile::link(first->devicePath(), link));
+        DeviceSession session;
+        QSignalSpy reconnected(&session, &DeviceSession::reconnected);
+        StatsProbe stats(session, this);
+        session.open(link, 115200);
+        QVERIFY(waitConnected(session));
+        QTRY_VERIFY(session.store().totalAppended() > 30);
+        QVERIFY(QFile::remove(link));
+        first.reset();
+        QTRY_COMPARE_WITH_TIMEOUT(session.state(), SessionState::Reconnecting, 5000);
+        const quint64 kept = session.store().totalAppended();
+        const uint64_t framesKept = stats.last.frames;
+        QVERIFY(framesKept > 30);
+
+        session.close();
+        QTRY_COMPARE(session.state(), SessionState::Closed);
+        auto second = std::make_unique<sim::PtySimulator>(options());
+        QVERIFY(second->start(nullptr));
+        QVERIFY(QFile::link(second->devicePath(), link));
+        QTest::qWait(1500); // three polling periods
+        QCOMPARE(session.state(), SessionState::Closed);
+        QCOMPARE(reconnected.size(), 0);
+        // What was received before the unplug is still there.
+        QCOMPARE(session.store().totalAppended(), kept);
+        QVERIFY(session.store().latest().has_value());
+        QCOMPARE(stats.last.frames, framesKept);
+        // The port is free: nothing in this process holds it.
+        QSerialPort port(second->devicePath());
+        QVERIFY2(port.open(QIODevice::ReadWrite), qPrintable(port.errorString()));
+    }
+
+    void autoReconnectOffStaysDisconnected()
+    {
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        const QString link = dir.filePath(QStringLiteral("imu"));
+        auto first = std::make_unique<sim::PtySimulator>(options());
+        QVERIFY(first->start(nullptr));
+        QVERIFY(QFile::link(first->devicePath(), link));
+        DeviceSession session;
+        session.setAutoReconnect(false);
+        QVERIFY(!session.autoReconnect());
+        QSignalSpy reconnected(&session, &DeviceSession::reconnected);
+        session.open(link, 115200);
+        QVERIFY(waitConnected(session));
+        QVERIFY(QFile::remove(link));
+        first.reset();
+        QTRY_COMPARE_WITH_TIMEOUT(session.state(), SessionState::Disconnected, 5000);
+        auto second = std::make_unique<sim::PtySimulator>(options());
+        QVERIFY(second->start(nullptr));
+        QVERIFY(QFile::link(second->devicePath(), link));
+        QTest::qWait(1200);
+        QCOMPARE(session.state(), SessionState::Disconnected);
+        QCOMPARE(reconnected.size(), 0);
+        // Turned on while waiting would be too late for this unplug; turned off while
+        // waiting, the session stops waiting.
+        DeviceSession other;
+        QSignalSpy otherStates(&other, &DeviceSession::stateChanged);
+        other.open(link, 115200);
+        QVERIFY(waitConnected(other));
+        QVERIFY(QFile::remove(link));
+        second.reset();
+        QTRY_COMPARE_WITH_TIMEOUT(other.state(), SessionState::Reconnecting, 5000);
+        other.setAutoReconnect(false);
+        QTRY_COMPARE(other.state(), SessionState::Disconnected);
+    }
+
+    void framesLostAtFullRate()
+    {
+        // 921600 baud carries HI91 at 1 kHz (82 bytes a frame: 89 % of the line).
+        sim::PtySimulator simulator(options("1.7.1", 921600));
+        QVERIFY(simulator.start(nullptr));
+        DeviceSession session;
+        StatsProbe stats(session, this);
+        session.open(simulator.devicePath(), 921600);
+        QVERIFY(waitConnected(session));
+        QCOMPARE(send(session, QStringLiteral("LOG HI91 ONTIME 0.001")).status, Status::Ok);
+        QTest::qWait(600);
+        const device::SessionStats start = stats.next();
+        const uint64_t droppedAtStart = simulatorDropped(simulator);
+        QTest::qWait(3000);
+        const device::SessionStats end = stats.next();
+        const uint64_t dropped = simulatorDropped(simulator) - droppedAtStart;
+        const double rate = end.rateByType.at("HI91");
+        QVERIFY2(rate > 900 && rate < 1100, qPrintable(QString::number(rate)));
+        const uint64_t frames = end.framesByType.at("HI91") - start.framesByType.at("HI91");
+        QVERIFY2(frames > 2700, qPrintable(QString::number(frames)));
+        // Nothing lost; should this machine stall the reader, exactly what the simulator dropped.
+        QVERIFY2(end.framesLost - start.framesLost <= dropped && end.framesLost + 64 >= dropped + start.framesLost,
+                 qPrintable(QStringLiteral("lost %1, simulator dropped %2").arg(end.framesLost - start.framesLost).arg(dropped)));
+        qInfo("1 kHz at 921600: %.0f Hz, %llu frames, %llu lost, simulator dropped %llu", rate,
+              static_cast<unsigned long long>(frames), static_cast<unsigned long long>(end.framesLost - start.framesLost),
+              static_cast<unsigned long long>(dropped));
+        if (dropped == 0)
+            QCOMPARE(end.framesLost - start.framesLost, uint64_t(0));
+        QCOMPARE(end.framesLostByType.at("HI91"), end.framesLost);
+        QCOMPARE(end.crcErrors, uint64_t(0));
+    }
+
+    void framesLostOnASlowLink()
+    {
+        // 115200 baud carries about 140 HI91 frames a second: at 1 kHz the simulator's UART
+        // drops what it cannot send, and the session counts them from the gaps.
+        sim::PtySimulator simulator(options());
+        QVERIFY(simulator.start(nullptr));
+        DeviceSession session;
+        StatsProbe stats(session, this);
+        session.open(simulator.devicePath(), 115200);
+        QVERIFY(waitConnected(session));
+        QTest::qWait(300);
+        QCOMPARE(stats.next().framesLost, uint64_t(0)); // 100 Hz fits
+        const uint64_t droppedBefore = simulatorDropped(simulator);
+        QCOMPARE(send(session, QStringLiteral("LOG HI91 ONTIME 0.001"), 2000).status, Status::Ok);
+        QTest::qWait(3000);
+        const device::SessionStats end = stats.next();
+        const uint64_t dropped = simulatorDropped(simulator) - droppedBefore;
+        qInfo("1 kHz at 115200: %llu lost, simulator dropped %llu", static_cast<unsigned long long>(end.framesLost),
+              static_cast<unsigned long long>(dropped));
+        QVERIFY(dropped > 1000);
+        QVERIFY2(end.framesLost > 0 && end.framesLost <= dropped && end.framesLost >= dropped / 2,
+                 qPrintable(QStringLiteral("lost %1, simulator dropped %2").arg(end.framesLost).arg(dropped)));
+        QCOMPARE(end.framesLostByType.at("HI91"), end.framesLost);
+        // Back to 100 Hz: the link keeps up again and the count stops growing.
+        QCOMPARE(send(session, QStringLiteral("LOG HI91 ONTIME 0.01"), 3000).status, Status::Ok);
+        QTest::qWait(800);
+        const uint64_t settled = stats.next().framesLost;
+        QTest::qWait(1500);
+        QCOMPARE(stats.next().framesLost, settled);
+    }
+
+    void logDisableEnableIsNotALoss()
+    {
+        sim::PtySimulator simulator(options());
+        QVERIFY(simulator.start(nullptr));
+        DeviceSession session;
+        StatsProbe stats(session, this);
+        session.open(simulator.devicePath(), 115200);
+        QVERIFY(waitConnected(session));
+        QTest::qWait(500);
+        QCOMPARE(send(session, QStringLiteral("LOG DISABLE")).status, Status::Ok);
+        QTest::qWait(700);
+        QCOMPARE(send(session, QStringLiteral("LOG ENABLE")).status, Status::Ok);
+        QTest::qWait(700);
+        QCOMPARE(send(session, QStringLiteral("LOG HI91 ONTIME 0.02")).status, Status::Ok); // fits the line
+        QTest::qWait(700);
+        QCOMPARE(send(session, QStringLiteral("REBOOT")).status, Status::Ok);
+        QTest::qWait(1200);
+        const device::SessionStats s = stats.next();
+        QCOMPARE(s.framesLost, uint64_t(0));
+        QCOMPARE(s.deviceResets, uint64_t(1)); // the REBOOT restarted system_time
+        QVERIFY(s.rateByType.at("HI91") > 80);
+    }
+
+    void busyPortIsReported()
+    {
+        sim::PtySimulator simulator(options());
+        QVERIFY(simulator.start(nullptr));
+        DeviceSession holder;
+        holder.open(simulator.devicePath(), 115200);
+        QVERIFY(waitConnected(holder));
+        // Another handle in this process (another workspace)...
+        DeviceSession second;
+        QSignalSpy errors(&second, &DeviceSession::errorOccurred);
+        second.open(simulator.devicePath(), 115200);
+        QTRY_COMPARE(errors.size(), 1);
+        QCOMPARE(second.state(), SessionState::Failed);
+        const QString message = errors.at(0).at(0).toString();
+        QVERIFY2(message.contains(QLatin1String("in use")) && message.contains(QLatin1String("Close that program")),
+                 qPrintable(message));
+        // ...and another process (the CLI).
+        QProcess cli;
+        cli.start(QStringLiteral(IMUDESK_CLI_PATH), {QStringLiteral("probe"), simulator.devicePath(),
+                                                     QStringLiteral("--baud"), QStringLiteral("115200")});
+        QVERIFY(cli.waitForFinished(20000));
+        QVERIFY(cli.exitCode() != 0);
+        const QString cliError = QString::fromLocal8Bit(cli.readAllStandardError());
+        QVERIFY2(cliError.contains(QLatin1String("in use")), qPrintable(cliError));
+        // The holder is unaffected.
+        QCOMPARE(holder.state(), SessionState::Connected);
+        QCOMPARE(send(holder, QStringLiteral("LOG VERSION")).status, Status::Ok);
+    }
+
+    void forbiddenPortIsReported()
+    {
+        sim::PtySimulator simulator(options());
+        QVERIFY(simulator.start(nullptr));
+        const QString path = simulator.devicePath();
+        QString message;
+        if (::geteuid() != 0) {
+            QVERIFY(QFile::setPermissions(path, QFileDevice::Permissions()));
+            DeviceSession session;
+            QSignalSpy errors(&session, &DeviceSession::errorOccurred);
+            session.open(path, 115200);
+            QTRY_COMPARE(errors.size(), 1);
+            message = errors.at(0).at(0).toString();
+        } else {
+            // Root opens anything: ask the CLI, run as nobody, to open root's pty.
+            const QString setpriv = QStandardPaths::findExecutable(QStringLiteral("setpriv"));
+            if (setpriv.isEmpty())
+                QSKIP("running as root without setpriv: cannot produce a permission error");
+            QProcess cli;
+            cli.start(setpriv, {QStringLiteral("--reuid=65534"), QStringLiteral("--regid=65534"),
+                                QStringLiteral("--clear-groups"), QStringLiteral(IMUDESK_CLI_PATH), QStringLiteral("probe"),
+                                path, QStringLiteral("--baud"), QStringLiteral("115200")});
+            QVERIFY(cli.waitForFinished(20000));
+            message = QString::fromLocal8Bit(cli.readAllStandardError());
+            if (cli.exitCode() == 127 || message.contains(QLatin1String("setpriv:")))
+                QSKIP(qPrintable(QStringLiteral("setpriv cannot run the CLI as nobody: ") + message));
+        }
+        QVERIFY2(message.contains(QLatin1String("No permission to open")) && message.contains(QLatin1String("dialout")),
+                 qPrintable(message));
+    }
+
+    void openErrorsAreTold_data()
+    {
+        QTest::addColumn<int>("error");
+        QTest::addColumn<bool>("accessible");
+        QTest::addColumn<int>("kind");
+        QTest::addColumn<QString>("advice");
+        using io::OpenErrorKind;
+        QTest::newRow("lock held / EBUSY") << int(QSerialPort::PermissionError) << true << int(OpenErrorKind::Busy)
+                                           << QStringLiteral("Port /dev/ttyUSB0 is in use by another program");
+        QTest::newRow("EACCES") << int(QSerialPort::PermissionError) << false << int(OpenErrorKind::Permission)
+                                << QStringLiteral("dialout group");
+        QTest::newRow("ENOENT") << int(QSerialPort::DeviceNotFoundError) << true << int(OpenErrorKind::NotFound)
+                                << QStringLiteral("was not found. Check that the device is plugged in");
+        QTest::newRow("other") << int(QSerialPort::UnsupportedOperationError) << true << int(OpenErrorKind::Other)
+                               << QStringLiteral("Could not open /dev/ttyUSB0: os text");
+    }
+    void openErrorsAreTold()
+    {
+        QFETCH(int, error);
+        QFETCH(bool, accessible);
+        QFETCH(int, kind);
+        QFETCH(QString, advice);
+        const auto k = io::SerialTransport::classifyOpenError(error, accessible);
+        QCOMPARE(int(k), kind);
+        const QString text = io::SerialTransport::describeOpenError(QStringLiteral("/dev/ttyUSB0"), k, QStringLiteral("os text"));
+        QVERIFY2(text.contains(advice), qPrintable(text));
+        QVERIFY(text.contains(QLatin1String("/dev/ttyUSB0")));
     }
 
     void missingPortIsReported()

@@ -3,6 +3,10 @@
 #include "connection_bar.h"
 #include "console_widget.h"
 #include "language_switcher.h"
+#include "attitude_widget.h"
+#include "chart_panel.h"
+#include "command_log_widget.h"
+#include "device_workspace.h"
 #include "main_window.h"
 #include "models/latest_values_model.h"
 #include "status_flags_widget.h"
@@ -21,6 +25,7 @@
 #include <QStandardPaths>
 #include <QTableView>
 #include <QTemporaryDir>
+#include <QDockWidget>
 #include <QTest>
 
 #include <set>
@@ -103,6 +108,20 @@ private Q_SLOTS:
         QCOMPARE(cell(w, LatestValuesModel::FrameType), QStringLiteral("HI91"));
         QCOMPARE(cell(w, LatestValuesModel::AccZ, LatestValuesModel::UnitColumn), QStringLiteral("G"));
 
+        // The attitude view and the charts are on screen and follow the device.
+        QVERIFY(w.currentWorkspace()->attitudeWidget()->isVisible());
+        {
+            // On screen, inside the window (not pushed out by the dock layout).
+            const auto *a = w.currentWorkspace()->attitudeWidget();
+            const QRect r(a->mapTo(&w, QPoint(0, 0)), a->size());
+            QVERIFY2(w.rect().contains(r), qPrintable(QStringLiteral("%1,%2").arg(r.x()).arg(r.y())));
+            QVERIFY(r.height() >= 150);
+        }
+        QTRY_VERIFY(w.currentWorkspace()->attitudeWidget()->hasData());
+        QVERIFY(w.currentWorkspace()->chartPanel()->isVisible());
+        QTRY_VERIFY(w.currentWorkspace()->chartPanel()->history().size() > 20);
+        QTRY_VERIFY(w.currentWorkspace()->chartPanel()->refreshCount() > 0);
+
         // Identity and link counters in the status bar.
         QTRY_VERIFY_WITH_TIMEOUT(w.statusText().contains(QLatin1String("HI14R3")), 5000);
         QVERIFY2(w.statusText().contains(QLatin1String("1.7.1")), qPrintable(w.statusText()));
@@ -129,6 +148,11 @@ private Q_SLOTS:
             linesAfter(console->logText(), QStringLiteral("> FOO BAR")).join(QLatin1Char('\n')).contains(QLatin1String("Timeout:")),
             3000);
         QCOMPARE(console->history(), (QStringList{QStringLiteral("LOG VERSION"), QStringLiteral("FOO BAR")}));
+        // The command log lists both, with their outcome, as copyable text; the raw view saw the bytes.
+        const QString commandLog = w.currentWorkspace()->commandLog()->allText();
+        QVERIFY2(commandLog.contains(QLatin1String("LOG VERSION")) && commandLog.contains(QLatin1String("FOO BAR")),
+                 qPrintable(commandLog));
+        QVERIFY(w.session().rawLog().bytesHeld() > 0);
 
         // The window draws something, in English...
         QTest::qWait(300);

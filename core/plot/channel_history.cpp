@@ -1,0 +1,322 @@
+#include "channel_history.h"
+
+#include <QtGlobal>
+
+#include <algorithm>
+#include <cmath>
+#include <initializer_list>
+#include <limits>
+
+namespace imudesk::plot {
+
+namespace {
+
+constexpr float kNoValue = std::numeric_limits<float>::quiet_NaN();
+
+constexpr uint32_t bits(std::initializer_list<Channel> channels)
+{
+    uint32_t b = 0;
+    for (Channel c : channels)
+        b |= channelBit(c);
+    return b;
+}
+
+} // namespace
+
+uint32_t ChannelHistory::channelsOfField(uint32_t fields)
+{
+    uint32_t b = 0;
+    if (fields & model::FieldAcc)
+        b |= bits({Channel::AccX, Channel::AccY, Channel::AccZ});
+    if (fields & model::FieldGyr)
+        b |= bits({Channel::GyrX, Channel::GyrY, Channel::GyrZ});
+    if (fields & model::FieldMag)
+        b |= bits({Channel::MagX, Channel::MagY, Channel::MagZ});
+    if (fields & model::FieldEuler)
+        b |= bits({Channel::Roll, Channel::Pitch, Channel::Yaw});
+    if (fields & model::FieldQuat)
+        b |= bits({Channel::QuatW, Channel::QuatX, Channel::QuatY, Channel::QuatZ});
+    if (fields & model::FieldPressure)
+        b |= channelBit(Channel::Pressure);
+    if (fields & model::FieldTemperature)
+        b |= channelBit(Channel::Temperature);
+    return b;
+}
+
+ChannelHistory::ChannelHistory(double maxDurationS, size_t maxRows)
+{
+    m_maxDuration = kMaxDurationS;
+    m_maxRows = kMaxRows;
+    setLimits(maxDurationS, maxRows);
+}
+
+void ChannelHistory::setLimits(double maxDurationS, size_t maxRows)
+{
+    m_maxDuration = (maxDurationS > 0.0 && maxDurationS <= kMaxDurationS) ? maxDurationS : kMaxDurationS;
+    m_maxRows = std::clamp<size_t>(maxRows, 1, kMaxRows);
+    if (m_size > m_maxRows)
+        dropFront(m_size - m_maxRows);
+    if (m_size > 0) {
+        const double oldest = newestTime(TimeAxis::Host) - m_maxDuration;
+        dropFront(lowerBound(TimeAxis::Host, oldest));
+    }
+    if (m_capacity > m_maxRows)
+        reserveRows(m_maxRows);
+    ++m_revision;
+}
+
+void ChannelHistory::clear()
+{
+    m_head = 0;
+    m_size = 0;
+    m_totalAppended = 0;
+    m_presentChannels = 0;
+    m_segments = 0;
+    m_hostOriginNs = 0;
+    m_haveOrigin = false;
+    m_lastHost = 0.0;
+    m_lastDevice = 0.0;
+    m_lastRawDevice = 0.0;
+    m_haveRawDevice = false;
+    m_deviceOffset = 0.0;
+    m_stepCount = 0;
+    m_stepNext = 0;
+    m_period = 0.0;
+    ++m_revision;
+    ++m_generation;
+}
+
+void ChannelHistory::append(const model::Sample &sample)
+{
+    appendOne(sample);
+    ++m_revision;
+}
+
+void ChannelHistory::append(const std::vector<model::Sample> &batch)
+{
+    for (const auto &s : batch)
+        appendOne(s);
+    if (!batch.empty())
+        ++m_revision;
+}
+
+void ChannelHistory::reserveRows(size_t rows)
+{
+    rows = std::max(rows, m_size);
+    if (rows == m_capacity && m_head == 0)
+        return;
+    // One column at a time: the peak is the old storage plus one new column.
+    auto move = [this, rows](auto &column) {
+        std::remove_reference_t<decltype(column)> fresh(rows);
+        for (size_t i = 0; i < m_size; ++i)
+            fresh[i] = column[phys(i)];
+        column.swap(fresh);
+    };
+    for (auto &column : m_values)
+        move(column);
+    move(m_host);
+    move(m_device);
+    move(m_flags);
+    m_capacity = rows;
+    m_head = 0;
+}
+
+void ChannelHistory::dropFront(size_t count)
+{
+    count = std::min(count, m_size);
+    if (count == 0)
+        return;
+    m_head = phys(count);
+    m_size -= count;
+    if (m_size == 0)
+        m_head = 0;
+}
+
+void ChannelHistory::updatePeriod(double step)
+{
+    m_steps[size_t(m_stepNext)] = step;
+    m_stepNext = (m_stepNext + 1) % kPeriodWindow;
+    m_stepCount = std::min(m_stepCount + 1, kPeriodWindow);
+    std::array<double, kPeriodWindow> sorted;
+    std::copy_n(m_steps.begin(), m_stepCount, sorted.begin());
+    auto mid = sorted.begin() + m_stepCount / 2;
+    std::nth_element(sorted.begin(), mid, sorted.begin() + m_stepCount);
+    m_period = *mid;
+}
+
+void ChannelHistory::appendOne(const model::Sample &s)
+{
+    // Host time, relative to the first sample, never decreasing.
+    if (!m_haveOrigin) {
+        m_hostOriginNs = s.hostTimeNs;
+        m_haveOrigin = true;
+    }
+    double host = double(s.hostTimeNs - m_hostOriginNs) / 1e9;
+    const bool first = m_totalAppended == 0;
+    if (!first && host < m_lastHost)
+        host = m_lastHost;
+    const double hostStep = first ? 0.0 : host - m_lastHost;
+
+    // Device time, stitched across backward jumps.
+    uint32_t f = 0;
+    double device = 0.0;
+    if (s.has(model::FieldDeviceTime) && std::isfinite(s.deviceTimeMs)) {
+        f |= FlagDeviceTime;
+        const double raw = s.deviceTimeMs / 1e3;
+        if (first) {
+            m_deviceOffset = 0.0;
+            device = raw;
+            m_segments = 1;
+        } else if (!m_haveRawDevice || raw < m_lastRawDevice) {
+            // The first device time after host-based rows, or the device clock went back.
+            const double step = hostStep > 0.0 ? hostStep : m_period;
+            device = m_lastDevice + step;
+            m_deviceOffset = device - raw;
+            f |= FlagSegmentStart;
+            ++m_segments;
+        } else {
+            const double step = raw - m_lastRawDevice;
+            device = raw + m_deviceOffset;
+            if (m_period > 0.0 && step > kGapPeriods * m_period)
+                f |= FlagGap;
+            if (step > 0.0)
+                updatePeriod(step);
+        }
+        m_lastRawDevice = raw;
+        m_haveRawDevice = true;
+    } else if (m_haveRawDevice) {
+        device = m_lastDevice; // keeps the device axis non-decreasing
+    } else {
+        device = host; // no device clock seen yet: follow the host clock
+        if (first)
+            m_segments = 1;
+    }
+    if (!first && device < m_lastDevice) // rounding in raw + offset
+        device = m_lastDevice;
+
+    // Make room: by count, then by storage.
+    if (m_size == m_maxRows)
+        dropFront(1);
+    if (m_size == m_capacity)
+        reserveRows(std::min(m_maxRows, std::max(kInitialRows, m_capacity * 2)));
+
+    const size_t p = phys(m_size);
+    const uint32_t want = channelsOfField(s.fields);
+    auto put = [&](Channel c, double v) {
+        const bool ok = (want & channelBit(c)) && std::isfinite(v);
+        m_values[size_t(c)][p] = ok ? float(v) : kNoValue;
+        if (ok)
+            f |= channelBit(c);
+    };
+    put(Channel::AccX, s.acc.x);
+    put(Channel::AccY, s.acc.y);
+    put(Channel::AccZ, s.acc.z);
+    put(Channel::GyrX, s.gyr.x);
+    put(Channel::GyrY, s.gyr.y);
+    put(Channel::GyrZ, s.gyr.z);
+    put(Channel::MagX, s.mag.x);
+    put(Channel::MagY, s.mag.y);
+    put(Channel::MagZ, s.mag.z);
+    put(Channel::Roll, s.roll);
+    put(Channel::Pitch, s.pitch);
+    put(Channel::Yaw, s.yaw);
+    put(Channel::QuatW, s.quat.w);
+    put(Channel::QuatX, s.quat.x);
+    put(Channel::QuatY, s.quat.y);
+    put(Channel::QuatZ, s.quat.z);
+    put(Channel::Pressure, s.pressurePa);
+    put(Channel::Temperature, s.temperatureC);
+    m_host[p] = host;
+    m_device[p] = device;
+    m_flags[p] = f;
+    ++m_size;
+    ++m_totalAppended;
+    m_presentChannels |= f & kChannelMask;
+    m_lastHost = host;
+    m_lastDevice = device;
+
+    // Bounded by duration (host clock): drop what fell out of the window.
+    const double oldest = host - m_maxDuration;
+    while (m_size > 1 && m_host[m_head] < oldest)
+        dropFront(1);
+}
+
+double ChannelHistory::time(TimeAxis axis, size_t row) const
+{
+    Q_ASSERT(row < m_size);
+    return axis == TimeAxis::Host ? m_host[phys(row)] : m_device[phys(row)];
+}
+
+size_t ChannelHistory::lowerBound(TimeAxis axis, double t) const
+{
+    const double *column = timeData(axis);
+    size_t lo = 0, hi = m_size;
+    while (lo < hi) {
+        const size_t mid = lo + (hi - lo) / 2;
+        if (column[phys(mid)] < t)
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    return lo;
+}
+
+size_t ChannelHistory::upperBound(TimeAxis axis, double t) const
+{
+    const double *column = timeData(axis);
+    size_t lo = 0, hi = m_size;
+    while (lo < hi) {
+        const size_t mid = lo + (hi - lo) / 2;
+        if (column[phys(mid)] <= t)
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    return lo;
+}
+
+IndexRange ChannelHistory::range(TimeAxis axis, double t0, double t1) const
+{
+    if (!(t0 <= t1))
+        return {};
+    const size_t first = lowerBound(axis, t0);
+    return {first, std::max(first, upperBound(axis, t1))};
+}
+
+long long ChannelHistory::nearestRow(TimeAxis axis, double t, Channel channel, size_t maxScan) const
+{
+    if (m_size == 0)
+        return -1;
+    const size_t at = lowerBound(axis, t);
+    long long best = -1;
+    double bestDistance = std::numeric_limits<double>::infinity();
+    for (size_t i = at, n = 0; i < m_size && n < maxScan; ++i, ++n) {
+        if (has(channel, i)) {
+            best = (long long)i;
+            bestDistance = time(axis, i) - t;
+            break;
+        }
+    }
+    for (size_t i = at, n = 0; i > 0 && n < maxScan; --i, ++n) {
+        if (has(channel, i - 1)) {
+            if (t - time(axis, i - 1) <= bestDistance)
+                best = (long long)(i - 1);
+            break;
+        }
+    }
+    return best;
+}
+
+std::array<ChannelHistory::Run, 2> ChannelHistory::physicalRuns(size_t first, size_t last) const
+{
+    last = std::min(last, m_size);
+    if (first >= last)
+        return {};
+    const size_t begin = phys(first);
+    const size_t count = last - first;
+    if (begin + count <= m_capacity)
+        return {Run{begin, begin + count}, Run{}};
+    return {Run{begin, m_capacity}, Run{0, begin + count - m_capacity}};
+}
+
+} // namespace imudesk::plot

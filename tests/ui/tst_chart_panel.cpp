@@ -1,0 +1,581 @@
+// ChartPanel, ChartView and ComparisonChart offscreen: decimated series, hidden axes,
+// pause, PNG export, crosshair read-out, gaps, translation hooks, settings.
+#include "chart_panel.h"
+#include "chart_settings.h"
+#include "chart_view.h"
+#include "comparison_chart.h"
+#include "plot/axis_scaling.h"
+#include "plot/minmax_decimator.h"
+
+#include <QApplication>
+#include <QChart>
+#include <QChartView>
+#include <QCheckBox>
+#include <QComboBox>
+#include <QFileInfo>
+#include <QImage>
+#include <QLineSeries>
+#include <QMouseEvent>
+#include <QRegularExpression>
+#include <QScrollArea>
+#include <QScrollBar>
+#include <QSettings>
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QToolButton>
+#include <QTranslator>
+#include <QValueAxis>
+
+#include <cmath>
+
+using imudesk::model::Sample;
+using imudesk::plot::Channel;
+using imudesk::plot::ChannelHistory;
+using imudesk::plot::MinMaxDecimator;
+using imudesk::plot::TimeAxis;
+using imudesk::ui::ChartKind;
+using imudesk::ui::ChartPanel;
+using imudesk::ui::ChartSettings;
+using imudesk::ui::ChartView;
+using imudesk::ui::ComparisonChart;
+namespace model = imudesk::model;
+
+namespace {
+
+constexpr double kTwoPi = 6.283185307179586;
+constexpr uint32_t kHi91Fields = model::FieldAcc | model::FieldGyr | model::FieldMag | model::FieldEuler |
+                                 model::FieldQuat | model::FieldPressure | model::FieldTemperature |
+                                 model::FieldDeviceTime;
+constexpr int64_t kHostStartNs = 7'000'000'000;
+constexpr double kDeviceStartMs = 1000.0;
+
+// Sample i of a 1 kHz stream: acc x = sin(2 pi t), acc y = cos(2 pi t), acc z = 1 G, t = i ms.
+Sample sineSample(int i, uint32_t fields = kHi91Fields, double deviceMs = -1.0)
+{
+    const double t = i / 1000.0;
+    Sample s;
+    s.source = "HI91";
+    s.fields = fields;
+    s.hostTimeNs = kHostStartNs + int64_t(i) * 1'000'000;
+    s.deviceTimeMs = deviceMs >= 0.0 ? deviceMs : kDeviceStartMs + i;
+    s.acc = {std::sin(kTwoPi * t), std::cos(kTwoPi * t), 1.0};
+    s.gyr = {10.0, -10.0, 0.5};
+    s.mag = {20.0, -5.0, 40.0};
+    s.roll = 1.0;
+    s.pitch = -2.0;
+    s.yaw = 90.0 + t;
+    s.quat = {1.0, 0.0, 0.0, 0.0};
+    s.pressurePa = 101325.0;
+    s.temperatureC = 25.0;
+    return s;
+}
+
+// Feeds samples [from, to) the way a workspace does: 33 ms of samples per tick, refresh after each.
+void feed(ChartPanel &panel, int from, int to, bool refreshEachTick = true, uint32_t fields = kHi91Fields)
+{
+    std::vector<Sample> batch;
+    for (int i = from; i < to; ++i) {
+        batch.push_back(sineSample(i, fields));
+        if (batch.size() == 33 || i + 1 == to) {
+            panel.appendSamples(batch);
+            batch.clear();
+            if (refreshEachTick)
+                panel.refresh();
+        }
+    }
+}
+
+// Returns a translation for every source text, so a test can see tr() at work.
+class MarkingTranslator : public QTranslator {
+public:
+    bool isEmpty() const override { return false; }
+    QString translate(const char *, const char *sourceText, const char * = nullptr, int = -1) const override
+    {
+        return QStringLiteral("«") + QString::fromUtf8(sourceText) + QStringLiteral("»");
+    }
+};
+
+qsizetype breaksIn(const QLineSeries *series)
+{
+    const QList<QPointF> points = series->points();
+    return std::count_if(points.begin(), points.end(), MinMaxDecimator::isBreak);
+}
+
+} // namespace
+
+class TstChartPanel : public QObject {
+    Q_OBJECT
+private Q_SLOTS:
+    void seriesAreDecimated()
+    {
+        ChartPanel panel;
+        panel.resize(1200, 900);
+        panel.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&panel));
+        feed(panel, 0, 10000); // 1 kHz for 10 s
+        panel.refresh();
+        QCOMPARE(panel.history().size(), size_t(10000));
+
+        ChartView *acc = panel.chart(ChartKind::Accelerometer);
+        const int width = acc->drawnWidthPx(); // the plot area's width when it was drawn
+        QVERIFY2(width > 500 && std::abs(width - acc->plotWidthPx()) < 20, qPrintable(QString::number(width)));
+        const QLineSeries *x = acc->series(Channel::AccX);
+        QVERIFY(x->isVisible());
+        // Dense data: every pixel column has points, at most 4 of them.
+        QVERIFY2(x->count() >= width && x->count() <= 4 * width,
+                 qPrintable(QStringLiteral("%1 points for %2 px").arg(x->count()).arg(width)));
+        QVERIFY(x->count() <= 4 * acc->width());
+        QCOMPARE(breaksIn(x), qsizetype(0));
+        // The sine's extremes survive decimation; the window is the newest 10 s of the device clock.
+        double lo = 1e9, hi = -1e9;
+        for (const QPointF &p : x->points()) {
+            lo = std::min(lo, p.y());
+            hi = std::max(hi, p.y());
+        }
+        QVERIFY(hi > 0.9999 && lo < -0.9999);
+        // The window ends at the newest sample, give or take the pixel column a chart waits for
+        // before it moves again.
+        const double newest = (kDeviceStartMs + 9999) / 1000.0;
+        const double column = 10.0 / width;
+        QVERIFY2(acc->axisX()->max() <= newest && acc->axisX()->max() > newest - column,
+                 qPrintable(QString::number(acc->axisX()->max(), 'f', 4)));
+        QCOMPARE(acc->axisX()->max() - acc->axisX()->min(), 10.0);
+        QVERIFY(acc->axisY()->min() < -1.0 && acc->axisY()->max() > 1.0); // autoscale holds the data
+        QVERIFY(panel.refreshCount() > 0);
+    }
+
+    void refreshesOnlyVisibleChangedCharts()
+    {
+        ChartPanel panel;
+        panel.resize(1200, 700);
+        panel.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&panel));
+        feed(panel, 0, 2000, false);
+        panel.refresh();
+        ChartView *acc = panel.chart(ChartKind::Accelerometer);
+        ChartView *temperature = panel.chart(ChartKind::Temperature);
+        QCOMPARE(acc->redrawCount(), 1);
+        QCOMPARE(temperature->redrawCount(), 0); // scrolled out of view
+        const int count = panel.refreshCount();
+        QVERIFY(count >= 1 && count < imudesk::ui::kChartKindCount);
+
+        // Nothing new: nothing redrawn.
+        panel.refresh();
+        QCOMPARE(panel.refreshCount(), count);
+        // Less than a pixel column of news (1 ms; a 10 s window has ~9 ms columns): not yet.
+        panel.appendSamples({sineSample(2000)});
+        panel.refresh();
+        QCOMPARE(panel.refreshCount(), count);
+        // 100 ms more: redrawn.
+        feed(panel, 2001, 2100, false);
+        panel.refresh();
+        QCOMPARE(panel.refreshCount(), 2 * count);
+
+        // Scrolled to the bottom, the temperature chart catches up.
+        panel.scrollArea()->verticalScrollBar()->setValue(panel.scrollArea()->verticalScrollBar()->maximum());
+        QCoreApplication::processEvents();
+        panel.refresh();
+        QCOMPARE(temperature->redrawCount(), 1);
+        const qsizetype points = temperature->series(Channel::Temperature)->count();
+        QVERIFY(points > 0 && points <= 4 * temperature->drawnWidthPx());
+
+        // A hidden panel draws nothing.
+        panel.hide();
+        const int hiddenCount = panel.refreshCount();
+        feed(panel, 2100, 4000);
+        QCOMPARE(panel.refreshCount(), hiddenCount);
+    }
+
+    void hidingAnAxisHidesItsSeries()
+    {
+        ChartPanel panel;
+        panel.resize(1200, 900);
+        panel.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&panel));
+        feed(panel, 0, 3000);
+        ChartView *acc = panel.chart(ChartKind::Accelerometer);
+        QVERIFY(acc->series(Channel::AccY)->count() > 0);
+        QSignalSpy changed(&panel, &ChartPanel::settingsChanged);
+        acc->channelCheckBox(Channel::AccY)->click();
+        QCOMPARE(changed.count(), 1);
+        QVERIFY(!acc->isChannelVisible(Channel::AccY));
+        panel.refresh();
+        QVERIFY(!acc->series(Channel::AccY)->isVisible());
+        QCOMPARE(acc->series(Channel::AccY)->count(), qsizetype(0));
+        QVERIFY(acc->series(Channel::AccX)->isVisible());
+        QVERIFY(acc->series(Channel::AccX)->count() > 0);
+        QVERIFY(panel.settings().isHidden(Channel::AccY));
+        QVERIFY(!panel.settings().isHidden(Channel::AccX));
+        // Shown again: drawn again.
+        acc->channelCheckBox(Channel::AccY)->click();
+        panel.refresh();
+        QVERIFY(acc->series(Channel::AccY)->isVisible());
+        QVERIFY(acc->series(Channel::AccY)->count() > 0);
+    }
+
+    void pauseFreezesTheXRange()
+    {
+        ChartPanel panel;
+        panel.resize(1200, 900);
+        panel.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&panel));
+        feed(panel, 0, 5000);
+        ChartView *acc = panel.chart(ChartKind::Accelerometer);
+        acc->pauseButton()->click();
+        QVERIFY(acc->isPaused());
+        panel.refresh();
+        const double min = acc->axisX()->min(), max = acc->axisX()->max();
+        const QList<QPointF> frozen = acc->series(Channel::AccX)->points();
+        feed(panel, 5000, 8000); // recording goes on
+        QCOMPARE(panel.history().size(), size_t(8000));
+        QCOMPARE(acc->axisX()->min(), min);
+        QCOMPARE(acc->axisX()->max(), max);
+        QCOMPARE(acc->series(Channel::AccX)->points().size(), frozen.size());
+        // The other charts kept moving.
+        QCOMPARE(panel.chart(ChartKind::Gyroscope)->axisX()->max(), (kDeviceStartMs + 7999) / 1000.0);
+        // A longer window while paused keeps the right edge.
+        acc->setWindowSeconds(30);
+        panel.refresh();
+        QCOMPARE(acc->axisX()->max(), max);
+        QCOMPARE(acc->axisX()->min(), max - 30.0);
+        // Resumed: back to the newest data.
+        acc->pauseButton()->click();
+        QVERIFY(!acc->isPaused());
+        panel.refresh();
+        QCOMPARE(acc->axisX()->max(), (kDeviceStartMs + 7999) / 1000.0);
+    }
+
+    void savePngWritesTheChart()
+    {
+        ChartPanel panel;
+        panel.resize(1200, 900);
+        panel.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&panel));
+        feed(panel, 0, 3000);
+        ChartView *acc = panel.chart(ChartKind::Accelerometer);
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        const QString path = dir.filePath(QStringLiteral("acc.png"));
+        QString error;
+        QVERIFY2(acc->savePng(path, &error), qPrintable(error));
+        QVERIFY(QFileInfo(path).size() > 0);
+        QImage image(path);
+        QVERIFY(!image.isNull());
+        QCOMPARE(image.size(), acc->chartView()->size() * acc->chartView()->devicePixelRatio());
+        // Not all one colour: the chart is in it.
+        QVERIFY(image.pixel(image.width() / 2, image.height() / 2) != image.pixel(2, 2) ||
+                image.pixel(image.width() / 3, image.height() / 3) != image.pixel(2, 2));
+
+        const QString bad = dir.filePath(QStringLiteral("no/such/dir/acc.png"));
+        QVERIFY(!acc->savePng(bad, &error));
+        QVERIFY2(error.contains(QStringLiteral("acc.png")), qPrintable(error));
+        QVERIFY(!QFileInfo::exists(bad));
+    }
+
+    void crosshairReadsTheValues()
+    {
+        ChartPanel panel;
+        panel.resize(1200, 900);
+        panel.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&panel));
+        feed(panel, 0, 10000);
+        ChartView *acc = panel.chart(ChartKind::Accelerometer);
+        QVERIFY(!acc->isCrosshairVisible());
+        // x = 5.125 s on the device clock is sample 4125: phase 2 pi 4.125, sin = cos = 0.7071.
+        acc->showCrosshairAt(5.125);
+        QVERIFY(acc->isCrosshairVisible());
+        QCOMPARE(acc->crosshairText(), QStringLiteral("t = 5.125 s   X 0.7071 G   Y 0.7071 G   Z 1.0000 G"));
+        // Hidden axes drop out of the read-out.
+        acc->setChannelVisible(Channel::AccZ, false);
+        QCOMPARE(acc->crosshairText(), QStringLiteral("t = 5.125 s   X 0.7071 G   Y 0.7071 G"));
+        // Other units.
+        ChartView *gyr = panel.chart(ChartKind::Gyroscope);
+        QCOMPARE(gyr->readoutAt(3.0), QStringLiteral("t = 3.000 s   X 10.000 deg/s   Y -10.000 deg/s   Z 0.500 deg/s"));
+        // Outside the data: no value.
+        QVERIFY(gyr->readoutAt(50.0).contains(QStringLiteral("X \u2014 deg/s")));
+
+        // The mouse drives it over the plot area, and leaving hides it.
+        const QRectF plot = acc->chart()->plotArea();
+        const QPoint inside = acc->chartView()->mapFromScene(acc->chart()->mapToScene(plot.center()));
+        QMouseEvent move(QEvent::MouseMove, QPointF(inside), acc->chartView()->viewport()->mapToGlobal(QPointF(inside)),
+                         Qt::NoButton, Qt::NoButton, Qt::NoModifier);
+        acc->hideCrosshair();
+        QCoreApplication::sendEvent(acc->chartView()->viewport(), &move);
+        QVERIFY(acc->isCrosshairVisible());
+        const double middle = 0.5 * (acc->axisX()->min() + acc->axisX()->max());
+        const auto match = QRegularExpression(QStringLiteral("^t = ([0-9.]+) s")).match(acc->crosshairText());
+        QVERIFY2(match.hasMatch(), qPrintable(acc->crosshairText()));
+        const double pixelTime = (acc->axisX()->max() - acc->axisX()->min()) / plot.width();
+        QVERIFY2(std::abs(match.captured(1).toDouble() - middle) <= 2 * pixelTime, qPrintable(acc->crosshairText()));
+        QEvent leave(QEvent::Leave);
+        QCoreApplication::sendEvent(acc->chartView()->viewport(), &leave);
+        QVERIFY(!acc->isCrosshairVisible());
+    }
+
+    void gapsAndRestartsBreakTheLine()
+    {
+        ChartPanel panel;
+        panel.resize(1200, 900);
+        panel.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&panel));
+        // 2 s, then 300 ms of lost frames (device clock jumps), then 2 s, then the device reboots.
+        std::vector<Sample> batch;
+        for (int i = 0; i < 2000; ++i)
+            batch.push_back(sineSample(i));
+        for (int i = 2000; i < 4000; ++i)
+            batch.push_back(sineSample(i, kHi91Fields, kDeviceStartMs + i + 300));
+        panel.appendSamples(batch);
+        panel.refresh();
+        ChartView *acc = panel.chart(ChartKind::Accelerometer);
+        QCOMPARE(breaksIn(acc->series(Channel::AccX)), qsizetype(1));
+        // In the gap there is no value to read.
+        const double inGap = (kDeviceStartMs + 2000 + 150) / 1000.0;
+        QVERIFY(acc->readoutAt(inGap).contains(QStringLiteral("X \u2014 G")));
+        // On the host clock the samples arrived without a pause, but the device's gap still breaks the line.
+        panel.setTimeAxis(TimeAxis::Host);
+        panel.refresh();
+        // (1 ms of host time between the two sides is narrower than a pixel column: joined or broken.)
+        QVERIFY(breaksIn(acc->series(Channel::AccX)) <= 1);
+        QCOMPARE(acc->axisX()->max(), 3.999);
+
+        panel.setTimeAxis(TimeAxis::Device);
+        batch.clear();
+        for (int i = 4500; i < 5500; ++i) {
+            // Rebooted: 500 ms without frames, then the device clock restarts at 5 ms.
+            batch.push_back(sineSample(i, kHi91Fields, 5.0 + (i - 4500)));
+        }
+        panel.appendSamples(batch);
+        panel.refresh();
+        QCOMPARE(panel.history().segmentCount(), 2);
+        QCOMPARE(breaksIn(acc->series(Channel::AccX)), qsizetype(2));
+        // The newest data is shown on the device's own (new) clock, the older to its left.
+        QCOMPARE(acc->axisX()->max(), 1.004);
+        const QList<QPointF> points = acc->series(Channel::AccX)->points();
+        QVERIFY(points.first().x() < 0.0);
+    }
+
+    void chartsWithoutDataAreHidden()
+    {
+        ChartPanel panel;
+        panel.resize(1200, 900);
+        panel.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&panel));
+        for (int k = 0; k < imudesk::ui::kChartKindCount; ++k)
+            QVERIFY(!panel.chart(ChartKind(k))->isHidden());
+        // An HI83 without a barometer.
+        feed(panel, 0, 500, true, kHi91Fields & ~uint32_t(model::FieldPressure));
+        QVERIFY(panel.chart(ChartKind::Pressure)->isHidden());
+        QVERIFY(!panel.chart(ChartKind::Accelerometer)->isHidden());
+        QVERIFY(!panel.chart(ChartKind::Temperature)->isHidden());
+        QCOMPARE(panel.chart(ChartKind::Pressure)->redrawCount(), 0);
+        QVERIFY(panel.chart(ChartKind::Accelerometer)->series(Channel::AccX)->count() > 0);
+        panel.clear();
+        panel.appendSamples({sineSample(0)}); // refilled before the next tick: still a redraw
+        panel.refresh();
+        QCOMPARE(panel.chart(ChartKind::Accelerometer)->series(Channel::AccX)->count(), qsizetype(1));
+        panel.clear();
+        panel.refresh();
+        QVERIFY(!panel.chart(ChartKind::Pressure)->isHidden());
+        QCOMPARE(panel.chart(ChartKind::Accelerometer)->series(Channel::AccX)->count(), qsizetype(0));
+    }
+
+    void timeAxisForAllCharts()
+    {
+        ChartPanel panel;
+        panel.resize(1200, 900);
+        panel.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&panel));
+        feed(panel, 0, 3000);
+        QSignalSpy changed(&panel, &ChartPanel::settingsChanged);
+        panel.timeAxisCombo()->setCurrentIndex(panel.timeAxisCombo()->findData(int(TimeAxis::Host)));
+        QCOMPARE(panel.timeAxis(), TimeAxis::Host);
+        QCOMPARE(changed.count(), 1);
+        panel.refresh();
+        for (int k = 0; k < imudesk::ui::kChartKindCount; ++k) {
+            ChartView *chart = panel.chart(ChartKind(k));
+            QCOMPARE(chart->timeAxis(), TimeAxis::Host);
+            QCOMPARE(chart->axisX()->titleText(), ChartView::timeAxisTitle(TimeAxis::Host));
+        }
+        QCOMPARE(panel.chart(ChartKind::Accelerometer)->axisX()->max(), 2.999); // s since the first sample
+        QCOMPARE(panel.settings().timeAxis, TimeAxis::Host);
+    }
+
+    void axisTitlesAreTranslatable()
+    {
+        ChartPanel panel;
+        panel.resize(1200, 900);
+        panel.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&panel));
+        // English: quantity and unit.
+        QCOMPARE(panel.chart(ChartKind::Accelerometer)->axisY()->titleText(), QStringLiteral("Acceleration (G)"));
+        QCOMPARE(panel.chart(ChartKind::Gyroscope)->axisY()->titleText(), QStringLiteral("Angular velocity (deg/s)"));
+        QCOMPARE(panel.chart(ChartKind::Magnetometer)->axisY()->titleText(), QStringLiteral("Magnetic field (µT)"));
+        QCOMPARE(panel.chart(ChartKind::Euler)->axisY()->titleText(), QStringLiteral("Angle (deg)"));
+        QCOMPARE(panel.chart(ChartKind::Quaternion)->axisY()->titleText(), QStringLiteral("Quaternion component"));
+        QCOMPARE(panel.chart(ChartKind::Pressure)->axisY()->titleText(), QStringLiteral("Pressure (Pa)"));
+        QCOMPARE(panel.chart(ChartKind::Temperature)->axisY()->titleText(), QStringLiteral("Temperature (°C)"));
+        QCOMPARE(panel.chart(ChartKind::Accelerometer)->axisX()->titleText(), QStringLiteral("Device time (s)"));
+
+        // Every visible text goes through tr(): a translator that marks everything shows up everywhere.
+        MarkingTranslator marker;
+        QVERIFY(QCoreApplication::installTranslator(&marker));
+        QCoreApplication::sendPostedEvents(nullptr, QEvent::LanguageChange);
+        QCoreApplication::processEvents();
+        ChartView *acc = panel.chart(ChartKind::Accelerometer);
+        QCOMPARE(acc->axisY()->titleText(), QStringLiteral("«%1 (%2)»").arg(QStringLiteral("«Acceleration»"), QStringLiteral("«G»")));
+        QCOMPARE(acc->axisX()->titleText(), QStringLiteral("«Device time (s)»"));
+        QCOMPARE(acc->chart()->title(), QStringLiteral("«Accelerometer»"));
+        QCOMPARE(acc->pauseButton()->text(), QStringLiteral("«Pause»"));
+        QCOMPARE(acc->windowCombo()->currentText(), QStringLiteral("«10 s»"));
+        QVERIFY(panel.timeAxisCombo()->itemText(0).startsWith(QStringLiteral("«")));
+        QVERIFY(panel.timeAxisCombo()->itemText(1).startsWith(QStringLiteral("«")));
+        QCoreApplication::removeTranslator(&marker);
+        QCoreApplication::sendPostedEvents(nullptr, QEvent::LanguageChange);
+        QCoreApplication::processEvents();
+        QCOMPARE(acc->axisX()->titleText(), QStringLiteral("Device time (s)"));
+        QCOMPARE(acc->windowCombo()->currentText(), QStringLiteral("10 s"));
+    }
+
+    void fixedScale()
+    {
+        ChartPanel panel;
+        panel.resize(1200, 900);
+        panel.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&panel));
+        feed(panel, 0, 1000);
+        ChartView *acc = panel.chart(ChartKind::Accelerometer);
+        acc->setAutoScale(false);
+        acc->setFixedRange(-4.0, 4.0);
+        acc->setFixedRange(3.0, 1.0); // ignored: min must be below max
+        panel.refresh();
+        QCOMPARE(acc->axisY()->min(), -4.0);
+        QCOMPARE(acc->axisY()->max(), 4.0);
+        const auto *minSpin = acc->findChild<QWidget *>(QStringLiteral("minSpin"));
+        QVERIFY(minSpin && minSpin->isEnabled() && minSpin->toolTip().contains(QStringLiteral("G")));
+        acc->setAutoScale(true);
+        panel.refresh();
+        QVERIFY(acc->axisY()->max() < 4.0 && acc->axisY()->max() > 1.0);
+        QVERIFY(!minSpin->isEnabled());
+    }
+
+    void axisScaling()
+    {
+        using imudesk::plot::AxisScaling;
+        QCOMPARE(AxisScaling::niceStep(2.4, 5), 0.5);
+        QCOMPARE(AxisScaling::niceStep(10.0, 5), 2.0);
+        QCOMPARE(AxisScaling::niceStep(0.004, 5), 0.001);
+        QCOMPARE(AxisScaling::niceStep(700.0, 5), 200.0);
+        QCOMPARE(AxisScaling::timeTickInterval(2.0), 0.5);
+        QCOMPARE(AxisScaling::timeTickInterval(10.0), 2.0);
+        QCOMPARE(AxisScaling::timeTickInterval(600.0), 120.0);
+        QCOMPARE(AxisScaling::decimalsFor(0.5), 1);
+        QCOMPARE(AxisScaling::decimalsFor(2.0), 0);
+        QCOMPARE(AxisScaling::decimalsFor(0.001), 3);
+        QCOMPARE(AxisScaling::decimalsFor(0.25), 1);
+        // Autoscale: widens at once, keeps a range that still fits, narrows when far too wide.
+        const AxisScaling::Range first = AxisScaling::autoRange({}, false, -1.0, 1.0, 0.01);
+        QCOMPARE(first.min, -1.2);
+        QCOMPARE(first.max, 1.2);
+        QVERIFY(AxisScaling::autoRange(first, true, -0.8, 0.9, 0.01) == first);
+        QVERIFY(AxisScaling::autoRange(first, true, -0.1, 0.1, 0.01).span() < 0.5);
+        QVERIFY(AxisScaling::autoRange(first, true, -1.0, 1.5, 0.01).max > 1.5);
+        // Flat data still gets the minimum span.
+        const AxisScaling::Range flat = AxisScaling::autoRange({}, false, 25.0, 25.0, 0.02);
+        QVERIFY(flat.min < 25.0 && flat.max > 25.0 && flat.span() >= 0.02);
+    }
+
+    void settingsRoundTrip()
+    {
+        QTemporaryDir dir;
+        QSettings file(dir.filePath(QStringLiteral("charts.ini")), QSettings::IniFormat);
+        ChartSettings s;
+        s.windowSeconds[size_t(ChartKind::Gyroscope)] = 120;
+        s.windowSeconds[size_t(ChartKind::Temperature)] = 600;
+        s.timeAxis = TimeAxis::Host;
+        s.hiddenChannels = imudesk::plot::channelBit(Channel::QuatW) | imudesk::plot::channelBit(Channel::MagZ);
+        file.beginGroup(QStringLiteral("COM3")); // one group per device, the owner's choice
+        s.save(file);
+        file.endGroup();
+        file.sync();
+        QCOMPARE(file.value(QStringLiteral("COM3/ui/v1/charts/timeAxis")).toString(), QStringLiteral("host"));
+
+        ChartSettings back;
+        file.beginGroup(QStringLiteral("COM3"));
+        back.load(file);
+        file.endGroup();
+        QVERIFY(back == s);
+
+        // Unknown values fall back to the defaults.
+        file.setValue(QLatin1String(ChartSettings::kWindowKeys[0]), 7.0);
+        file.setValue(QLatin1String(ChartSettings::kTimeAxisKey), QStringLiteral("sundial"));
+        ChartSettings fallback;
+        fallback.load(file);
+        QCOMPARE(fallback.windowSeconds[0], ChartSettings::kDefaultWindowSeconds);
+        QCOMPARE(fallback.timeAxis, TimeAxis::Device);
+
+        // A panel takes them and gives them back, without announcing a change it was told about.
+        ChartPanel panel;
+        QSignalSpy changed(&panel, &ChartPanel::settingsChanged);
+        panel.setSettings(s);
+        QCOMPARE(changed.count(), 0);
+        QVERIFY(panel.settings() == s);
+        QCOMPARE(panel.chart(ChartKind::Gyroscope)->windowCombo()->currentData().toDouble(), 120.0);
+        QVERIFY(!panel.chart(ChartKind::Quaternion)->channelCheckBox(Channel::QuatW)->isChecked());
+    }
+
+    void comparisonOverlaysDevices()
+    {
+        // Two devices: B started 2 s after A, with its own device clock.
+        ChannelHistory a, b;
+        for (int i = 0; i < 6000; ++i) {
+            a.append(sineSample(i));
+            if (i >= 2000) {
+                Sample s = sineSample(i, kHi91Fields, 50.0 + i);
+                s.yaw = 180.0;
+                b.append(s);
+            }
+        }
+        ComparisonChart chart;
+        chart.resize(1000, 500);
+        chart.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&chart));
+        chart.setSources({{QStringLiteral("COM3"), &a}, {QStringLiteral("COM4"), &b}});
+        chart.setChannel(Channel::Yaw);
+        QVERIFY(chart.refresh());
+        QVERIFY(!chart.refresh()); // nothing new
+        QCOMPARE(chart.series(0)->name(), QStringLiteral("COM3"));
+        QCOMPARE(chart.series(1)->name(), QStringLiteral("COM4"));
+        QCOMPARE(chart.sourceOffset(0), 0.0);
+        QCOMPARE(chart.sourceOffset(1), 2.0);
+        // One host time axis: both end at the same instant.
+        QCOMPARE(chart.series(0)->points().last().x(), 5.999);
+        QCOMPARE(chart.series(1)->points().last().x(), 5.999);
+        QCOMPARE(chart.series(1)->points().first().x(), 2.0);
+        QCOMPARE(chart.axisX()->max(), 5.999);
+        QCOMPARE(chart.series(1)->points().last().y(), 180.0);
+        const int width = chart.drawnWidthPx();
+        QVERIFY(chart.series(0)->count() <= 4 * width && chart.series(1)->count() <= 4 * width);
+        QCOMPARE(chart.axisY()->titleText(), QStringLiteral("Yaw (deg)"));
+        // Another channel from the combo.
+        chart.channelCombo()->setCurrentIndex(chart.channelCombo()->findData(int(Channel::AccX)));
+        QCOMPARE(chart.channel(), Channel::AccX);
+        QCOMPARE(chart.axisY()->titleText(), QStringLiteral("Acceleration X (G)"));
+        QVERIFY(chart.refresh());
+        QVERIFY(chart.series(1)->count() > 0);
+        // New data on one source is enough to redraw.
+        for (int i = 6000; i < 6100; ++i)
+            b.append(sineSample(i, kHi91Fields, 50.0 + i));
+        QVERIFY(chart.refresh());
+        QCOMPARE(chart.axisX()->max(), 6.099);
+        QTemporaryDir dir;
+        QString error;
+        QVERIFY2(chart.savePng(dir.filePath(QStringLiteral("cmp.png")), &error), qPrintable(error));
+        chart.setSources({});
+        QVERIFY(chart.refresh());
+        QCOMPARE(chart.series(0), nullptr);
+    }
+};
+
+QTEST_MAIN(TstChartPanel)
+#include "tst_chart_panel.moc"

@@ -1,0 +1,759 @@
+#include "chart_view.h"
+
+#include <QChart>
+#include <QChartView>
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDateTime>
+#include <QDir>
+#include <QDoubleSpinBox>
+#include <QEvent>
+#include <QFileDialog>
+#include <QFont>
+#include <QGraphicsLineItem>
+#include <QHBoxLayout>
+#include <QImageWriter>
+#include <QLabel>
+#include <QLineSeries>
+#include <QMessageBox>
+#include <QMouseEvent>
+#include <QPainter>
+#include <QPen>
+#include <QPixmap>
+#include <QPushButton>
+#include <QToolButton>
+#include <QVBoxLayout>
+#include <QValueAxis>
+
+#include <algorithm>
+#include <cmath>
+
+namespace imudesk::ui {
+
+using plot::Channel;
+using plot::TimeAxis;
+
+namespace {
+
+struct KindTraits {
+    double fixedMin, fixedMax; // default fixed range
+    double minSpan;            // smallest autoscaled span
+    int spinDecimals;
+    int valueDecimals;         // crosshair read-out
+    const char *fileStem;      // default PNG name
+};
+
+constexpr std::array<KindTraits, kChartKindCount> kTraits = {{
+    {-2.0, 2.0, 0.002, 3, 4, "accelerometer"},
+    {-250.0, 250.0, 0.02, 1, 3, "gyroscope"},
+    {-100.0, 100.0, 0.2, 1, 2, "magnetometer"},
+    {-180.0, 180.0, 0.02, 1, 2, "euler"},
+    {-1.0, 1.0, 0.0002, 3, 4, "quaternion"},
+    {95000.0, 105000.0, 2.0, 0, 1, "pressure"},
+    {-20.0, 60.0, 0.02, 1, 2, "temperature"},
+}};
+
+const KindTraits &traits(ChartKind kind)
+{
+    return kTraits[size_t(kind)];
+}
+
+QIcon swatch(const QColor &colour)
+{
+    QPixmap pixmap(12, 12);
+    pixmap.fill(colour);
+    return QIcon(pixmap);
+}
+
+} // namespace
+
+// ---------------------------------------------------------------- static helpers
+
+std::vector<Channel> ChartView::channelsOf(ChartKind kind)
+{
+    switch (kind) {
+    case ChartKind::Accelerometer: return {Channel::AccX, Channel::AccY, Channel::AccZ};
+    case ChartKind::Gyroscope: return {Channel::GyrX, Channel::GyrY, Channel::GyrZ};
+    case ChartKind::Magnetometer: return {Channel::MagX, Channel::MagY, Channel::MagZ};
+    case ChartKind::Euler: return {Channel::Roll, Channel::Pitch, Channel::Yaw};
+    case ChartKind::Quaternion: return {Channel::QuatW, Channel::QuatX, Channel::QuatY, Channel::QuatZ};
+    case ChartKind::Pressure: return {Channel::Pressure};
+    case ChartKind::Temperature: return {Channel::Temperature};
+    }
+    return {};
+}
+
+uint32_t ChartView::channelMask(ChartKind kind)
+{
+    uint32_t mask = 0;
+    for (Channel c : channelsOf(kind))
+        mask |= plot::channelBit(c);
+    return mask;
+}
+
+ChartKind ChartView::kindOf(Channel channel)
+{
+    for (int k = 0; k < kChartKindCount; ++k)
+        if (channelMask(ChartKind(k)) & plot::channelBit(channel))
+            return ChartKind(k);
+    return ChartKind::Accelerometer;
+}
+
+QString ChartView::title(ChartKind kind)
+{
+    switch (kind) {
+    case ChartKind::Accelerometer: return tr("Accelerometer");
+    case ChartKind::Gyroscope: return tr("Gyroscope");
+    case ChartKind::Magnetometer: return tr("Magnetometer");
+    case ChartKind::Euler: return tr("Euler angles");
+    case ChartKind::Quaternion: return tr("Quaternion");
+    case ChartKind::Pressure: return tr("Air pressure");
+    case ChartKind::Temperature: return tr("Temperature");
+    }
+    return {};
+}
+
+QString ChartView::quantity(ChartKind kind)
+{
+    switch (kind) {
+    case ChartKind::Accelerometer: return tr("Acceleration");
+    case ChartKind::Gyroscope: return tr("Angular velocity");
+    case ChartKind::Magnetometer: return tr("Magnetic field");
+    case ChartKind::Euler: return tr("Angle");
+    case ChartKind::Quaternion: return tr("Quaternion component");
+    case ChartKind::Pressure: return tr("Pressure");
+    case ChartKind::Temperature: return tr("Temperature");
+    }
+    return {};
+}
+
+QString ChartView::unit(ChartKind kind)
+{
+    switch (kind) {
+    case ChartKind::Accelerometer: return tr("G");
+    case ChartKind::Gyroscope: return tr("deg/s");
+    case ChartKind::Magnetometer: return tr("µT");
+    case ChartKind::Euler: return tr("deg");
+    case ChartKind::Quaternion: return QString();
+    case ChartKind::Pressure: return tr("Pa");
+    case ChartKind::Temperature: return tr("°C");
+    }
+    return {};
+}
+
+QString ChartView::axisName(Channel channel)
+{
+    switch (channel) {
+    case Channel::AccX:
+    case Channel::GyrX:
+    case Channel::MagX:
+    case Channel::QuatX: return QStringLiteral("X");
+    case Channel::AccY:
+    case Channel::GyrY:
+    case Channel::MagY:
+    case Channel::QuatY: return QStringLiteral("Y");
+    case Channel::AccZ:
+    case Channel::GyrZ:
+    case Channel::MagZ:
+    case Channel::QuatZ: return QStringLiteral("Z");
+    case Channel::QuatW: return QStringLiteral("W");
+    case Channel::Roll: return tr("Roll");
+    case Channel::Pitch: return tr("Pitch");
+    case Channel::Yaw: return tr("Yaw");
+    case Channel::Pressure: return tr("Pressure");
+    case Channel::Temperature: return tr("Temperature");
+    }
+    return {};
+}
+
+QString ChartView::channelName(Channel channel)
+{
+    switch (kindOf(channel)) {
+    case ChartKind::Accelerometer: return tr("Acceleration %1").arg(axisName(channel));
+    case ChartKind::Gyroscope: return tr("Angular velocity %1").arg(axisName(channel));
+    case ChartKind::Magnetometer: return tr("Magnetic field %1").arg(axisName(channel));
+    case ChartKind::Quaternion: return tr("Quaternion %1").arg(axisName(channel));
+    case ChartKind::Euler:
+    case ChartKind::Pressure:
+    case ChartKind::Temperature: return axisName(channel);
+    }
+    return {};
+}
+
+QColor ChartView::colour(Channel channel)
+{
+    switch (channel) {
+    case Channel::AccX:
+    case Channel::GyrX:
+    case Channel::MagX:
+    case Channel::QuatX:
+    case Channel::Roll: return QColor(0xd6, 0x27, 0x28); // red
+    case Channel::AccY:
+    case Channel::GyrY:
+    case Channel::MagY:
+    case Channel::QuatY:
+    case Channel::Pitch: return QColor(0x2c, 0xa0, 0x2c); // green
+    case Channel::AccZ:
+    case Channel::GyrZ:
+    case Channel::MagZ:
+    case Channel::QuatZ:
+    case Channel::Yaw: return QColor(0x1f, 0x77, 0xb4); // blue
+    case Channel::QuatW: return QColor(0x7f, 0x7f, 0x7f); // grey
+    case Channel::Pressure: return QColor(0x94, 0x67, 0xbd); // purple
+    case Channel::Temperature: return QColor(0xff, 0x7f, 0x0e); // orange
+    }
+    return Qt::black;
+}
+
+int ChartView::valueDecimals(ChartKind kind)
+{
+    return traits(kind).valueDecimals;
+}
+
+QString ChartView::timeAxisTitle(TimeAxis axis)
+{
+    return axis == TimeAxis::Device ? tr("Device time (s)") : tr("Host arrival time (s)");
+}
+
+QString ChartView::windowText(double seconds)
+{
+    if (seconds >= 60.0)
+        return tr("%1 min").arg(seconds / 60.0);
+    return tr("%1 s").arg(seconds);
+}
+
+void ChartView::fillWindowCombo(QComboBox *combo, double selected)
+{
+    const QSignalBlocker blocker(combo);
+    combo->clear();
+    for (double s : ChartSettings::kWindowChoices) {
+        combo->addItem(windowText(s), s);
+        if (s == selected)
+            combo->setCurrentIndex(combo->count() - 1);
+    }
+}
+
+bool ChartView::saveWidgetPng(QWidget *widget, const QString &path, QString *error)
+{
+    const QImage image = widget->grab().toImage();
+    QImageWriter writer(path, "png");
+    if (image.isNull() || !writer.write(image)) {
+        if (error) {
+            const QString why = image.isNull() ? tr("the chart could not be drawn") : writer.errorString();
+            *error = tr("Could not save the chart as %1: %2").arg(QDir::toNativeSeparators(path), why);
+        }
+        return false;
+    }
+    return true;
+}
+
+// ---------------------------------------------------------------- the widget
+
+ChartView::ChartView(ChartKind kind, QWidget *parent)
+    : QWidget(parent), m_kind(kind), m_channels(channelsOf(kind))
+{
+    setObjectName(QStringLiteral("chartView_%1").arg(QLatin1String(traits(kind).fileStem)));
+    m_visible = channelMask(kind);
+    m_fixedMin = traits(kind).fixedMin;
+    m_fixedMax = traits(kind).fixedMax;
+
+    // The chart.
+    m_chart = new QChart;
+    m_chart->setAnimationOptions(QChart::NoAnimation);
+    m_chart->setMargins(QMargins(4, 4, 4, 4));
+    // The legend (for saved images) on the right, where it costs no height.
+    m_chart->legend()->setAlignment(Qt::AlignRight);
+    m_chart->legend()->setVisible(m_channels.size() > 1);
+    m_axisX = new QValueAxis(m_chart);
+    m_axisY = new QValueAxis(m_chart);
+    // Ticks on round values that stay put while the chart scrolls; plain titles (the bold
+    // default does not fit "Angular velocity (deg/s)" beside a short chart).
+    for (QValueAxis *axis : {m_axisX, m_axisY}) {
+        axis->setTickType(QValueAxis::TicksDynamic);
+        axis->setTickAnchor(0.0);
+        QFont font = axis->titleFont();
+        font.setBold(false);
+        axis->setTitleFont(font);
+    }
+    m_chart->addAxis(m_axisX, Qt::AlignBottom);
+    m_chart->addAxis(m_axisY, Qt::AlignLeft);
+    for (Channel c : m_channels) {
+        auto *series = new QLineSeries(m_chart);
+        QPen pen(colour(c));
+        pen.setWidthF(1.0);
+        series->setPen(pen);
+        m_chart->addSeries(series);
+        series->attachAxis(m_axisX);
+        series->attachAxis(m_axisY);
+        m_series[size_t(c)] = series;
+    }
+    m_crosshairLine = new QGraphicsLineItem(m_chart);
+    QPen crosshairPen(QColor(0x60, 0x60, 0x60));
+    crosshairPen.setStyle(Qt::DashLine);
+    crosshairPen.setCosmetic(true);
+    m_crosshairLine->setPen(crosshairPen);
+    m_crosshairLine->setZValue(1000);
+    m_crosshairLine->hide();
+
+    m_chartView = new QChartView(m_chart, this);
+    m_chartView->setObjectName(QStringLiteral("chartArea"));
+    m_chartView->setRenderHint(QPainter::Antialiasing, false);
+    // Every refresh changes the whole plot: repaint the viewport in one go rather than
+    // computing the changed regions of thousands of segments.
+    m_chartView->setViewportUpdateMode(QGraphicsView::FullViewportUpdate);
+    m_decimator.setExtremaOnly(true);
+    m_chartView->setMinimumHeight(kMinimumChartHeight);
+    m_chartView->viewport()->setMouseTracking(true);
+    m_chartView->viewport()->installEventFilter(this);
+
+    // The controls.
+    auto *controls = new QHBoxLayout;
+    controls->setSpacing(6);
+    for (Channel c : m_channels) {
+        auto *check = new QCheckBox(this);
+        check->setChecked(true);
+        check->setIcon(swatch(colour(c)));
+        connect(check, &QCheckBox::toggled, this, [this, c](bool on) { setChannelVisible(c, on); });
+        m_checks[size_t(c)] = check;
+        controls->addWidget(check);
+    }
+    controls->addSpacing(12);
+    m_windowLabel = new QLabel(this);
+    m_windowCombo = new QComboBox(this);
+    m_windowCombo->setObjectName(QStringLiteral("windowCombo"));
+    m_windowLabel->setBuddy(m_windowCombo);
+    fillWindowCombo(m_windowCombo, m_window);
+    connect(m_windowCombo, &QComboBox::currentIndexChanged, this,
+            [this](int) { setWindowSeconds(m_windowCombo->currentData().toDouble()); });
+    controls->addWidget(m_windowLabel);
+    controls->addWidget(m_windowCombo);
+    m_pauseButton = new QToolButton(this);
+    m_pauseButton->setObjectName(QStringLiteral("pauseButton"));
+    m_pauseButton->setCheckable(true);
+    connect(m_pauseButton, &QToolButton::toggled, this, &ChartView::setPaused);
+    controls->addWidget(m_pauseButton);
+    controls->addSpacing(12);
+    m_autoScaleCheck = new QCheckBox(this);
+    m_autoScaleCheck->setObjectName(QStringLiteral("autoScaleCheck"));
+    m_autoScaleCheck->setChecked(m_autoScale);
+    connect(m_autoScaleCheck, &QCheckBox::toggled, this, &ChartView::setAutoScale);
+    controls->addWidget(m_autoScaleCheck);
+    m_minSpin = new QDoubleSpinBox(this);
+    m_maxSpin = new QDoubleSpinBox(this);
+    for (QDoubleSpinBox *spin : {m_minSpin, m_maxSpin}) {
+        spin->setRange(-1e7, 1e7);
+        spin->setDecimals(traits(kind).spinDecimals);
+        spin->setKeyboardTracking(false);
+        controls->addWidget(spin);
+    }
+    m_minSpin->setObjectName(QStringLiteral("minSpin"));
+    m_maxSpin->setObjectName(QStringLiteral("maxSpin"));
+    m_minSpin->setValue(m_fixedMin);
+    m_maxSpin->setValue(m_fixedMax);
+    connect(m_minSpin, &QDoubleSpinBox::valueChanged, this,
+            [this](double v) { setFixedRange(v, m_maxSpin->value()); });
+    connect(m_maxSpin, &QDoubleSpinBox::valueChanged, this,
+            [this](double v) { setFixedRange(m_minSpin->value(), v); });
+    controls->addStretch(1);
+    m_saveButton = new QPushButton(this);
+    m_saveButton->setObjectName(QStringLiteral("savePngButton"));
+    connect(m_saveButton, &QPushButton::clicked, this, &ChartView::saveAsPngInteractive);
+    controls->addWidget(m_saveButton);
+
+    m_readout = new QLabel(this);
+    m_readout->setObjectName(QStringLiteral("crosshairReadout"));
+    m_readout->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_readout->setMinimumWidth(1);
+    m_readout->setMinimumHeight(m_readout->fontMetrics().height()); // no jumps when it fills
+
+    auto *layout = new QVBoxLayout(this);
+    layout->setContentsMargins(2, 2, 2, 2);
+    layout->setSpacing(2);
+    layout->addLayout(controls);
+    layout->addWidget(m_chartView, 1);
+    layout->addWidget(m_readout);
+
+    updateScaleWidgets();
+    retranslateUi();
+    applyXAxis(liveWindow());
+    applyYAxis(m_fixedMin, m_fixedMax);
+}
+
+ChartView::~ChartView() = default;
+
+void ChartView::retranslateUi()
+{
+    m_chart->setTitle(title(m_kind));
+    const QString u = unit(m_kind);
+    m_axisY->setTitleText(u.isEmpty() ? quantity(m_kind) : tr("%1 (%2)", "quantity (unit)").arg(quantity(m_kind), u));
+    m_axisX->setTitleText(timeAxisTitle(m_timeAxis));
+    for (Channel c : m_channels) {
+        m_series[size_t(c)]->setName(axisName(c));
+        m_checks[size_t(c)]->setText(axisName(c));
+        m_checks[size_t(c)]->setToolTip(tr("Show or hide %1").arg(channelName(c)));
+    }
+    m_windowLabel->setText(tr("&Window:"));
+    m_windowCombo->setToolTip(tr("Time span shown by this chart"));
+    fillWindowCombo(m_windowCombo, m_window);
+    updatePauseButton();
+    m_autoScaleCheck->setText(tr("Auto scale"));
+    m_autoScaleCheck->setToolTip(tr("Fit the vertical axis to the data shown; off: use the range on the right"));
+    if (u.isEmpty()) {
+        m_minSpin->setToolTip(tr("Lower end of the vertical axis (no unit)"));
+        m_maxSpin->setToolTip(tr("Upper end of the vertical axis (no unit)"));
+    } else {
+        m_minSpin->setToolTip(tr("Lower end of the vertical axis, in %1").arg(u));
+        m_maxSpin->setToolTip(tr("Upper end of the vertical axis, in %1").arg(u));
+    }
+    m_saveButton->setText(tr("Save as PNG…"));
+    m_saveButton->setToolTip(tr("Save this chart as a PNG image"));
+    if (m_crosshairOn)
+        m_readout->setText(readoutAt(m_crosshairX));
+}
+
+void ChartView::updatePauseButton()
+{
+    const QSignalBlocker blocker(m_pauseButton);
+    m_pauseButton->setChecked(m_paused);
+    m_pauseButton->setText(m_paused ? tr("Resume") : tr("Pause"));
+    m_pauseButton->setToolTip(m_paused ? tr("Follow the newest data again")
+                                       : tr("Freeze this chart; the data keeps being recorded"));
+}
+
+void ChartView::updateScaleWidgets()
+{
+    m_minSpin->setEnabled(!m_autoScale);
+    m_maxSpin->setEnabled(!m_autoScale);
+}
+
+void ChartView::changeEvent(QEvent *event)
+{
+    if (event->type() == QEvent::LanguageChange)
+        retranslateUi();
+    QWidget::changeEvent(event);
+}
+
+void ChartView::showEvent(QShowEvent *event)
+{
+    markDirty();
+    QWidget::showEvent(event);
+}
+
+void ChartView::resizeEvent(QResizeEvent *event)
+{
+    markDirty(); // another width, other columns
+    QWidget::resizeEvent(event);
+}
+
+// ---------------------------------------------------------------- settings
+
+void ChartView::setHistory(const plot::ChannelHistory *history)
+{
+    m_history = history;
+    m_paused = false;
+    updatePauseButton();
+    m_haveYRange = false;
+    markDirty();
+}
+
+void ChartView::setTimeAxis(TimeAxis axis)
+{
+    if (axis == m_timeAxis)
+        return;
+    m_timeAxis = axis;
+    m_axisX->setTitleText(timeAxisTitle(axis));
+    if (m_paused) // the frozen range is on the other axis
+        setPaused(false);
+    hideCrosshair();
+    markDirty();
+}
+
+void ChartView::setWindowSeconds(double seconds)
+{
+    if (!ChartSettings::isWindowChoice(seconds) || seconds == m_window)
+        return;
+    m_window = seconds;
+    {
+        const QSignalBlocker blocker(m_windowCombo);
+        m_windowCombo->setCurrentIndex(m_windowCombo->findData(seconds));
+    }
+    if (m_paused) // keep the right edge where it was
+        m_frozen.t0 = m_frozen.t1 - m_window;
+    m_haveYRange = false;
+    markDirty();
+    Q_EMIT settingsChanged();
+}
+
+void ChartView::setChannelVisible(Channel channel, bool visible)
+{
+    if (!(channelMask(m_kind) & plot::channelBit(channel)) || visible == isChannelVisible(channel))
+        return;
+    if (visible)
+        m_visible |= plot::channelBit(channel);
+    else
+        m_visible &= ~plot::channelBit(channel);
+    QLineSeries *series = m_series[size_t(channel)];
+    series->setVisible(visible);
+    if (!visible)
+        series->clear();
+    {
+        const QSignalBlocker blocker(m_checks[size_t(channel)]);
+        m_checks[size_t(channel)]->setChecked(visible);
+    }
+    m_haveYRange = false;
+    markDirty();
+    if (m_crosshairOn)
+        m_readout->setText(readoutAt(m_crosshairX));
+    Q_EMIT settingsChanged();
+}
+
+bool ChartView::isChannelVisible(Channel channel) const
+{
+    return (m_visible & plot::channelBit(channel)) != 0;
+}
+
+void ChartView::setPaused(bool paused)
+{
+    if (paused == m_paused) {
+        updatePauseButton();
+        return;
+    }
+    m_paused = paused;
+    if (paused)
+        m_frozen = m_drawn.valid ? m_drawn : liveWindow();
+    updatePauseButton();
+    markDirty();
+}
+
+void ChartView::setAutoScale(bool on)
+{
+    if (on == m_autoScale)
+        return;
+    m_autoScale = on;
+    {
+        const QSignalBlocker blocker(m_autoScaleCheck);
+        m_autoScaleCheck->setChecked(on);
+    }
+    m_haveYRange = false;
+    updateScaleWidgets();
+    markDirty();
+}
+
+void ChartView::setFixedRange(double min, double max)
+{
+    if (!(min < max) || (min == m_fixedMin && max == m_fixedMax))
+        return;
+    m_fixedMin = min;
+    m_fixedMax = max;
+    const QSignalBlocker b1(m_minSpin), b2(m_maxSpin);
+    m_minSpin->setValue(min);
+    m_maxSpin->setValue(max);
+    markDirty();
+}
+
+// ---------------------------------------------------------------- drawing
+
+int ChartView::plotWidthPx() const
+{
+    const int w = int(m_chart->plotArea().width());
+    if (w >= 1)
+        return w;
+    return std::max(1, m_chartView->width() - 80); // before the first layout
+}
+
+ChartView::Window ChartView::liveWindow() const
+{
+    Window w;
+    w.valid = true;
+    if (!m_history || m_history->empty()) {
+        w.t0 = 0.0;
+        w.t1 = m_window;
+        return w;
+    }
+    w.t1 = m_history->newestTime(m_timeAxis);
+    w.t0 = w.t1 - m_window;
+    w.offset = m_timeAxis == TimeAxis::Device ? m_history->deviceTimeOffset() : 0.0;
+    return w;
+}
+
+void ChartView::applyXAxis(const Window &w)
+{
+    const double step = plot::AxisScaling::timeTickInterval(w.t1 - w.t0);
+    m_axisX->setTickInterval(step);
+    m_axisX->setLabelFormat(QStringLiteral("%.%1f").arg(plot::AxisScaling::decimalsFor(step)));
+    m_axisX->setRange(w.t0 - w.offset, w.t1 - w.offset);
+}
+
+void ChartView::applyYAxis(double min, double max)
+{
+    const double step = plot::AxisScaling::niceStep(max - min, 5);
+    m_axisY->setTickInterval(step);
+    m_axisY->setLabelFormat(QStringLiteral("%.%1f").arg(plot::AxisScaling::decimalsFor(step)));
+    m_axisY->setRange(min, max);
+}
+
+bool ChartView::refresh()
+{
+    if (!m_history || !isVisible() || visibleRegion().isEmpty())
+        return false;
+    const uint64_t revision = m_history->revision();
+    const bool newData = revision != m_drawnRevision;
+    if (!m_dirty && (!newData || m_paused))
+        return false;
+    const Window w = m_paused ? m_frozen : liveWindow();
+    const int width = plotWidthPx();
+    // New data, but the window moved by less than a pixel column: nothing to see yet. (A few
+    // pixels more or less of plot area, as axis labels change width, need no redraw either:
+    // the chart places the points; a real resize marks the chart dirty.)
+    if (!m_dirty && m_drawn.valid && w.offset == m_drawn.offset && m_history->generation() == m_drawnGeneration) {
+        const double column = (w.t1 - w.t0) / width;
+        if (std::abs(w.t1 - m_drawn.t1) < column)
+            return false;
+    }
+
+    double lo = 0.0, hi = 0.0;
+    bool any = false;
+    for (Channel c : m_channels) {
+        if (!isChannelVisible(c))
+            continue;
+        QList<QPointF> &points = m_points[size_t(c)];
+        const auto r = m_decimator.decimate(*m_history, c, m_timeAxis, w.t0, w.t1, width, points, w.offset);
+        m_series[size_t(c)]->replace(points);
+        if (r.rows > 0) {
+            lo = any ? std::min(lo, r.yMin) : r.yMin;
+            hi = any ? std::max(hi, r.yMax) : r.yMax;
+            any = true;
+        }
+    }
+    applyXAxis(w);
+    if (m_autoScale) {
+        if (any) {
+            m_yRange = plot::AxisScaling::autoRange(m_yRange, m_haveYRange, lo, hi, traits(m_kind).minSpan);
+            m_haveYRange = true;
+        }
+        if (m_haveYRange)
+            applyYAxis(m_yRange.min, m_yRange.max);
+    } else {
+        applyYAxis(m_fixedMin, m_fixedMax);
+    }
+
+    m_drawn = w;
+    m_drawnRevision = revision;
+    m_drawnGeneration = m_history->generation();
+    m_drawnWidth = width;
+    m_dirty = false;
+    ++m_redraws;
+    if (m_crosshairOn) {
+        positionCrosshair();
+        m_readout->setText(readoutAt(m_crosshairX));
+    }
+    return true;
+}
+
+// ---------------------------------------------------------------- crosshair
+
+bool ChartView::eventFilter(QObject *watched, QEvent *event)
+{
+    if (watched == m_chartView->viewport()) {
+        if (event->type() == QEvent::MouseMove) {
+            const auto *mouse = static_cast<QMouseEvent *>(event);
+            const QPointF scenePos = m_chartView->mapToScene(mouse->position().toPoint());
+            const QPointF chartPos = m_chart->mapFromScene(scenePos);
+            if (m_chart->plotArea().contains(chartPos) && !m_channels.empty())
+                showCrosshairAt(m_chart->mapToValue(chartPos, m_series[size_t(m_channels.front())]).x());
+            else
+                hideCrosshair();
+        } else if (event->type() == QEvent::Leave) {
+            hideCrosshair();
+        }
+    }
+    return QWidget::eventFilter(watched, event);
+}
+
+void ChartView::showCrosshairAt(double x)
+{
+    m_crosshairX = x;
+    m_crosshairOn = true;
+    positionCrosshair();
+    m_readout->setText(readoutAt(x));
+}
+
+void ChartView::hideCrosshair()
+{
+    if (!m_crosshairOn)
+        return;
+    m_crosshairOn = false;
+    m_crosshairLine->hide();
+    m_readout->clear();
+}
+
+QString ChartView::crosshairText() const
+{
+    return m_crosshairOn ? m_readout->text() : QString();
+}
+
+void ChartView::positionCrosshair()
+{
+    const QRectF plot = m_chart->plotArea();
+    if (m_channels.empty() || plot.isEmpty()) {
+        m_crosshairLine->hide();
+        return;
+    }
+    const double px = m_chart->mapToPosition(QPointF(m_crosshairX, 0.0), m_series[size_t(m_channels.front())]).x();
+    if (px < plot.left() - 0.5 || px > plot.right() + 0.5) {
+        m_crosshairLine->hide();
+        return;
+    }
+    m_crosshairLine->setLine(px, plot.top(), px, plot.bottom());
+    m_crosshairLine->show();
+}
+
+QString ChartView::readoutAt(double x) const
+{
+    QStringList parts;
+    parts << tr("t = %1 s").arg(x, 0, 'f', 3);
+    const double t = x + (m_drawn.valid ? m_drawn.offset : 0.0);
+    const QString u = unit(m_kind);
+    // Farther than this from the nearest sample, the value is not known (a gap).
+    double tolerance = std::numeric_limits<double>::infinity();
+    if (m_history && m_history->samplePeriod() > 0.0) {
+        const double column = m_drawn.valid ? (m_drawn.t1 - m_drawn.t0) / std::max(1, m_drawnWidth) : 0.0;
+        tolerance = std::max(2.0 * column, plot::ChannelHistory::kGapPeriods * m_history->samplePeriod());
+    }
+    for (Channel c : m_channels) {
+        if (!isChannelVisible(c))
+            continue;
+        QString value = QStringLiteral("\u2014");
+        if (m_history) {
+            const long long row = m_history->nearestRow(m_timeAxis, t, c);
+            if (row >= 0 && std::abs(m_history->time(m_timeAxis, size_t(row)) - t) <= tolerance)
+                value = QString::number(double(m_history->value(c, size_t(row))), 'f', valueDecimals(m_kind));
+        }
+        parts << tr("%1 %2 %3", "crosshair read-out: axis, value, unit").arg(axisName(c), value, u).trimmed();
+    }
+    return parts.join(QStringLiteral("   "));
+}
+
+// ---------------------------------------------------------------- PNG
+
+bool ChartView::savePng(const QString &path, QString *error) const
+{
+    return saveWidgetPng(m_chartView, path, error);
+}
+
+void ChartView::saveAsPngInteractive()
+{
+    const QString suggested = QStringLiteral("imudesk-%1-%2.png")
+                                  .arg(QLatin1String(traits(m_kind).fileStem),
+                                       QDateTime::currentDateTime().toString(QStringLiteral("yyyyMMdd-HHmmss")));
+    QString path = QFileDialog::getSaveFileName(this, tr("Save Chart as PNG"), suggested, tr("PNG images (*.png)"));
+    if (path.isEmpty())
+        return;
+    if (!path.endsWith(QLatin1String(".png"), Qt::CaseInsensitive))
+        path += QLatin1String(".png");
+    QString error;
+    if (!savePng(path, &error))
+        QMessageBox::warning(this, tr("Save Chart as PNG"), error);
+}
+
+} // namespace imudesk::ui

@@ -1,0 +1,196 @@
+#pragma once
+// One live chart of a ChartPanel (e.g. the accelerometer): a QChart with one
+// QLineSeries per axis in a fixed colour, and above it the axis check boxes, the time
+// window, pause/resume, autoscale or a fixed range, and "Save as PNG…"; below it the
+// crosshair read-out.
+//
+// It draws from a plot::ChannelHistory it does not own. refresh() is called from
+// outside on the view clock; it redraws only while the chart is on screen, and only
+// when the settings changed or new data moved the window by at least one pixel
+// column. A redraw decimates each visible axis to at most 4 points per pixel column
+// (plot::MinMaxDecimator) and hands them to QLineSeries::replace(); a device-clock
+// gap or restart shows as a break in the line.
+//
+// X is seconds: on the device axis the device's own clock (system_time) of the newest
+// segment; on the host axis the time since the history's first sample.
+#include "chart_settings.h"
+#include "plot/axis_scaling.h"
+#include "plot/channel_history.h"
+#include "plot/minmax_decimator.h"
+
+#include <QColor>
+#include <QList>
+#include <QPointF>
+#include <QWidget>
+
+#include <array>
+#include <vector>
+
+class QChart;
+class QChartView;
+class QCheckBox;
+class QComboBox;
+class QDoubleSpinBox;
+class QGraphicsLineItem;
+class QLabel;
+class QLineSeries;
+class QPushButton;
+class QToolButton;
+class QValueAxis;
+
+namespace imudesk::ui {
+
+class ChartView : public QWidget {
+    Q_OBJECT
+public:
+    static constexpr int kMinimumChartHeight = 270;
+
+    explicit ChartView(ChartKind kind, QWidget *parent = nullptr);
+    ~ChartView() override;
+
+    // --- What a kind of chart shows (shared with ComparisonChart) ---
+    static std::vector<plot::Channel> channelsOf(ChartKind kind);
+    static uint32_t channelMask(ChartKind kind);
+    static ChartKind kindOf(plot::Channel channel);
+    static QString title(ChartKind kind);       // "Accelerometer"
+    static QString quantity(ChartKind kind);    // "Acceleration"
+    static QString unit(ChartKind kind);        // "G"; empty for the quaternion
+    static QString axisName(plot::Channel channel);    // "X", "Roll", "Pressure"
+    static QString channelName(plot::Channel channel); // "Acceleration X", "Yaw"
+    static QColor colour(plot::Channel channel);
+    static int valueDecimals(ChartKind kind);
+    static QString timeAxisTitle(plot::TimeAxis axis);
+    // "2 s" ... "10 min" for ChartSettings::kWindowChoices.
+    static QString windowText(double seconds);
+    static void fillWindowCombo(QComboBox *combo, double selected);
+    // Grabs `widget` and writes it as PNG; false with a message when the file cannot be written.
+    static bool saveWidgetPng(QWidget *widget, const QString &path, QString *error);
+
+    ChartKind kind() const { return m_kind; }
+
+    void setHistory(const plot::ChannelHistory *history);
+    const plot::ChannelHistory *history() const { return m_history; }
+
+    void setTimeAxis(plot::TimeAxis axis);
+    plot::TimeAxis timeAxis() const { return m_timeAxis; }
+    // One of ChartSettings::kWindowChoices (others are ignored).
+    void setWindowSeconds(double seconds);
+    double windowSeconds() const { return m_window; }
+    void setChannelVisible(plot::Channel channel, bool visible);
+    bool isChannelVisible(plot::Channel channel) const;
+    // A paused chart keeps its x range (the history keeps recording).
+    void setPaused(bool paused);
+    bool isPaused() const { return m_paused; }
+    void setAutoScale(bool on);
+    bool autoScale() const { return m_autoScale; }
+    // Used when autoscale is off; ignored unless min < max.
+    void setFixedRange(double min, double max);
+    double fixedMin() const { return m_fixedMin; }
+    double fixedMax() const { return m_fixedMax; }
+
+    // Redraws if on screen and something changed; true if it redrew.
+    bool refresh();
+    int redrawCount() const { return m_redraws; }
+
+    // Writes the chart as shown to `path` (PNG).
+    bool savePng(const QString &path, QString *error = nullptr) const;
+
+    // Crosshair at x (s, as shown on the x axis): a vertical line and the values of the
+    // visible axes at that time. The mouse drives it over the plot area.
+    void showCrosshairAt(double x);
+    void hideCrosshair();
+    bool isCrosshairVisible() const { return m_crosshairOn; }
+    QString crosshairText() const;
+    // The read-out for time x, whether or not the crosshair is shown.
+    QString readoutAt(double x) const;
+
+    // The value shown at x = 0 is this far along the history's time axis.
+    double displayOffset() const { return m_drawn.offset; }
+    // Width of the plot area in pixels (what the decimator is given), and the width the
+    // last redraw used.
+    int plotWidthPx() const;
+    int drawnWidthPx() const { return m_drawnWidth; }
+
+    QChart *chart() const { return m_chart; }
+    QChartView *chartView() const { return m_chartView; }
+    QLineSeries *series(plot::Channel channel) const { return m_series[size_t(channel)]; }
+    QValueAxis *axisX() const { return m_axisX; }
+    QValueAxis *axisY() const { return m_axisY; }
+    QCheckBox *channelCheckBox(plot::Channel channel) const { return m_checks[size_t(channel)]; }
+    QComboBox *windowCombo() const { return m_windowCombo; }
+    QToolButton *pauseButton() const { return m_pauseButton; }
+
+Q_SIGNALS:
+    // The window or the visible axes changed.
+    void settingsChanged();
+
+protected:
+    void changeEvent(QEvent *event) override;
+    void showEvent(QShowEvent *event) override;
+    void resizeEvent(QResizeEvent *event) override;
+    bool eventFilter(QObject *watched, QEvent *event) override;
+
+private:
+    struct Window {
+        double t0 = 0.0;
+        double t1 = 0.0;
+        double offset = 0.0;
+        bool valid = false;
+    };
+
+    void retranslateUi();
+    void updatePauseButton();
+    void updateScaleWidgets();
+    void applyXAxis(const Window &w);
+    void applyYAxis(double min, double max);
+    Window liveWindow() const;
+    void positionCrosshair();
+    void saveAsPngInteractive();
+    void markDirty() { m_dirty = true; }
+
+    const ChartKind m_kind;
+    const std::vector<plot::Channel> m_channels;
+    const plot::ChannelHistory *m_history = nullptr;
+    plot::MinMaxDecimator m_decimator;
+
+    plot::TimeAxis m_timeAxis = plot::TimeAxis::Device;
+    double m_window = ChartSettings::kDefaultWindowSeconds;
+    uint32_t m_visible = 0; // channelBit() of visible axes
+    bool m_paused = false;
+    Window m_frozen;
+    bool m_autoScale = true;
+    double m_fixedMin = -1.0;
+    double m_fixedMax = 1.0;
+    plot::AxisScaling::Range m_yRange;
+    bool m_haveYRange = false;
+
+    // What was drawn last.
+    Window m_drawn;
+    uint64_t m_drawnRevision = ~uint64_t(0);
+    uint64_t m_drawnGeneration = 0;
+    int m_drawnWidth = 0;
+    bool m_dirty = true;
+    int m_redraws = 0;
+
+    double m_crosshairX = 0.0;
+    bool m_crosshairOn = false;
+
+    QChart *m_chart = nullptr;
+    QChartView *m_chartView = nullptr;
+    QValueAxis *m_axisX = nullptr;
+    QValueAxis *m_axisY = nullptr;
+    std::array<QLineSeries *, plot::kChannelCount> m_series{};
+    std::array<QList<QPointF>, plot::kChannelCount> m_points;
+    std::array<QCheckBox *, plot::kChannelCount> m_checks{};
+    QGraphicsLineItem *m_crosshairLine = nullptr;
+    QComboBox *m_windowCombo = nullptr;
+    QToolButton *m_pauseButton = nullptr;
+    QCheckBox *m_autoScaleCheck = nullptr;
+    QDoubleSpinBox *m_minSpin = nullptr;
+    QDoubleSpinBox *m_maxSpin = nullptr;
+    QPushButton *m_saveButton = nullptr;
+    QLabel *m_windowLabel = nullptr;
+    QLabel *m_readout = nullptr;
+};
+
+} // namespace imudesk::ui
