@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # ImuDesk set-up. Run as root (or through sudo) on Debian 12; safe to run again.
-#   scripts/setup.sh demo   install packages, build a release build, open imudesk on a simulated HI14
+#   scripts/setup.sh demo   install packages, build a release build, open imudesk on a simulated HI14 (--demo)
 #   scripts/setup.sh test   install packages, build, run the whole test suite headless and the benchmark
 set -euo pipefail
 
@@ -45,7 +45,7 @@ if [ "$mode" = demo ]; then
     echo "No display found: run this from a desktop session (or set QT_QPA_PLATFORM)." >&2
     exit 1
   fi
-  exec "$root/build/release/app/gui/imudesk" --simulate HI14 --firmware 1.7.1
+  exec "$root/build/release/app/gui/imudesk" --demo
 fi
 
 # test
@@ -55,3 +55,5 @@ echo "== test suite"
 (cd "$root/build/test" && ctest --output-on-failure -j "$jobs" --timeout 600)
 echo "== benchmark (decode throughput against the manual's byte-at-a-time decoder)"
 "$root/build/test/tests/bench/bench_decode" --mb 50
+echo "== benchmark (the whole window offscreen, simulator at 921600 baud, HI91 at 1000 Hz)"
+"$root/build/test/tests/bench/bench_gui_live" --seconds 60

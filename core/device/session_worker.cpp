@@ -187,6 +187,7 @@ void SessionWorker::startNext()
     m_collector.emplace(m_current->text.toStdString());
     const QByteArray wire = m_current->text.toLatin1() + "\r\n";
     m_rawLog.append(RawByteLog::Direction::Tx, wire, monotonicNs());
+    m_demux.endQuarantine(); // what answers now starts after a boundary the device keeps
     noteCommandSent(m_current->text);
     if (m_transport->write(wire) != wire.size()) {
         Reply r = m_collector->take();
@@ -265,6 +266,7 @@ void SessionWorker::onLineIdle()
 {
     m_events.clear();
     m_demux.flushPending(m_events);
+    m_demux.endQuarantine(); // the line went quiet: the next byte starts something new
     handleEvents();
 }
 

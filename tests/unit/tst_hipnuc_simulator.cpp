@@ -92,6 +92,7 @@ public:
     Capture send(const std::string &line, int64_t waitUs = 100000)
     {
         sim.receive(line + "\r\n");
+        demux.endQuarantine(); // as the session does: the reply follows the command
         return run(waitUs);
     }
     // Sends a command and collects its reply; Pending status means silence.

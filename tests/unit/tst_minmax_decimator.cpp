@@ -173,6 +173,15 @@ private Q_SLOTS:
         QCOMPARE(h.size(), size_t(600000));
         MinMaxDecimator d;
         QList<QPointF> out;
+        // The charts' mode, min and max only: at most 2 points per column, the spike still there.
+        d.setExtremaOnly(true);
+        d.decimate(h, Channel::AccX, TimeAxis::Device, h.oldestTime(TimeAxis::Device), h.newestTime(TimeAxis::Device),
+                   width, out);
+        QVERIFY2(out.size() <= 2 * width, qPrintable(QString::number(out.size())));
+        QVERIFY(std::any_of(out.begin(), out.end(), [&](const QPointF &p) {
+            return p.y() == double(float(spike)) && p.x() == h.deviceTime(spikeRow);
+        }));
+        d.setExtremaOnly(false);
         const auto result = d.decimate(h, Channel::AccX, TimeAxis::Device, h.oldestTime(TimeAxis::Device),
                                        h.newestTime(TimeAxis::Device), width, out);
         QCOMPARE(result.rows, size_t(600000));

@@ -62,6 +62,7 @@ private Q_SLOTS:
         // Binary junk glued to a reply: the reply line survives, the junk is counted.
         QByteArray s = QByteArray::fromHex("00FF8001") + "OK\r\n";
         StreamDemux d;
+        d.endQuarantine(); // as the session does when it sends a command
         const auto ev = d.feed(reinterpret_cast<const uint8_t *>(s.constData()), size_t(s.size()));
         QCOMPARE(ev.size(), size_t(1));
         QCOMPARE(ev[0].text, std::string("OK"));
@@ -73,9 +74,39 @@ private Q_SLOTS:
         QByteArray s(2000, 'x');
         s += "\r\nOK\r\n";
         StreamDemux d;
+        d.endQuarantine();
         const auto ev = d.feed(reinterpret_cast<const uint8_t *>(s.constData()), size_t(s.size()));
         QCOMPARE(ev.size(), size_t(1));
         QCOMPARE(ev[0].text, std::string("OK"));
+    }
+
+    void quarantineAtStartAndAfterDamage()
+    {
+        // Joining a stream: a frame's tail with a 0x0A in it looks like a text line ",BW".
+        // It is dropped until a valid frame proves a boundary; text after that is kept.
+        const QByteArray f = golden::hi91Frame();
+        QByteArray s = ",BW\n" + f + "OK\r\n";
+        StreamDemux d;
+        QVERIFY(d.quarantined());
+        auto ev = d.feed(reinterpret_cast<const uint8_t *>(s.constData()), size_t(s.size()));
+        QCOMPARE(ev.size(), size_t(2));
+        QCOMPARE(ev[0].kind, StreamEvent::Kind::Frame);
+        QCOMPARE(ev[1].text, std::string("OK"));
+        QCOMPARE(d.counters().quarantinedLines, uint64_t(1));
+        QVERIFY(!d.quarantined());
+        // A damaged frame (CRC error) quarantines text again until the next good frame.
+        QByteArray bad = f;
+        bad[20] = char(bad[20] ^ 0x55);
+        s = bad + "ZZ\n";
+        ev = d.feed(reinterpret_cast<const uint8_t *>(s.constData()), size_t(s.size()));
+        QVERIFY(ev.empty());
+        QVERIFY(d.quarantined());
+        // A valid NMEA sentence also ends it.
+        s = QByteArray(golden::kRmc) + "\r\nOK\r\n";
+        ev = d.feed(reinterpret_cast<const uint8_t *>(s.constData()), size_t(s.size()));
+        QCOMPARE(ev.size(), size_t(2));
+        QCOMPARE(ev[0].kind, StreamEvent::Kind::Nmea);
+        QCOMPARE(ev[1].text, std::string("OK"));
     }
 
     void frameTailDoesNotPrefixReply()

@@ -65,6 +65,7 @@ size_t FrameDecoder::process(const uint8_t *p, size_t n, Sink &sink, bool final)
         const size_t len = size_t(p[i + 2]) | (size_t(p[i + 3]) << 8);
         if (len == 0 || len > kMaxPayload) {
             ++m_counters.lengthErrors;
+            reportDamage(p, skipStart, i, sink);
             ++i;
             continue;
         }
@@ -77,6 +78,7 @@ size_t FrameDecoder::process(const uint8_t *p, size_t n, Sink &sink, bool final)
         const uint16_t expected = uint16_t(p[i + 4] | (p[i + 5] << 8));
         if (frameCrc(p + i, p + i + kHeaderSize, len) != expected) {
             ++m_counters.crcErrors;
+            reportDamage(p, skipStart, i, sink);
             ++i;
             continue;
         }
@@ -96,6 +98,16 @@ size_t FrameDecoder::process(const uint8_t *p, size_t n, Sink &sink, bool final)
         sink.onSkipped(p + skipStart, i - skipStart);
     }
     return i;
+}
+
+void FrameDecoder::reportDamage(const uint8_t *p, size_t &skipStart, size_t i, Sink &sink)
+{
+    if (i > skipStart) {
+        m_counters.bytesSkipped += i - skipStart;
+        sink.onSkipped(p + skipStart, i - skipStart);
+        skipStart = i;
+    }
+    sink.onDamage();
 }
 
 void FrameDecoder::finish(Sink &sink)

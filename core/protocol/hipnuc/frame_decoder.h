@@ -34,6 +34,9 @@ public:
         // payload points into the decoder's or the caller's buffer; valid during the call.
         virtual void onFrame(const uint8_t *payload, size_t len) = 0;
         virtual void onSkipped(const uint8_t * /*bytes*/, size_t /*n*/) {}
+        // A candidate frame failed its length or CRC check here (every byte before it was
+        // already reported); what follows may be the rest of a damaged frame.
+        virtual void onDamage() {}
     };
 
     void feed(const uint8_t *data, size_t n, Sink &sink);
@@ -52,6 +55,7 @@ public:
 
 private:
     size_t process(const uint8_t *p, size_t n, Sink &sink, bool final = false);
+    void reportDamage(const uint8_t *p, size_t &skipStart, size_t i, Sink &sink);
 
     std::vector<uint8_t> m_buf;
     Counters m_counters;

@@ -8,12 +8,18 @@ public:
     void onFrame(const uint8_t *payload, size_t len) override
     {
         m_d.dropPartialLine(); // a frame boundary ends any text: a half line is a frame's tail
+        m_d.m_quarantined = false;
         StreamEvent e;
         e.kind = StreamEvent::Kind::Frame;
         e.payload.assign(payload, payload + len);
         m_out.push_back(std::move(e));
     }
     void onSkipped(const uint8_t *bytes, size_t n) override { m_d.textBytes(bytes, n, m_out); }
+    void onDamage() override
+    {
+        m_d.dropPartialLine();
+        m_d.m_quarantined = true; // what follows may be the rest of the damaged frame
+    }
 
 private:
     StreamDemux &m_d;
@@ -45,12 +51,20 @@ void StreamDemux::reset()
     m_decoder.reset();
     m_line.clear();
     m_lineOverflow = false;
+    m_quarantined = true;
 }
 
 void StreamDemux::resetCounters()
 {
     m_decoder.resetCounters();
     m_counters = Counters{};
+}
+
+void StreamDemux::dropQuarantinedLine()
+{
+    ++m_counters.quarantinedLines;
+    m_counters.garbageBytes += m_line.size();
+    m_line.clear();
 }
 
 void StreamDemux::dropPartialLine()
@@ -104,11 +118,18 @@ void StreamDemux::endLine(std::vector<StreamEvent> &out)
         if (r.ok()) {
             e.kind = StreamEvent::Kind::Nmea;
             ++m_counters.nmeaSentences;
+            m_quarantined = false;
+        } else if (m_quarantined) {
+            dropQuarantinedLine();
+            return;
         } else {
             e.kind = StreamEvent::Kind::NmeaError;
             e.nmeaError = r.error;
             ++m_counters.nmeaErrors;
         }
+    } else if (m_quarantined) {
+        dropQuarantinedLine();
+        return;
     } else {
         e.kind = StreamEvent::Kind::Line;
         ++m_counters.lines;

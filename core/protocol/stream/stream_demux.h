@@ -28,6 +28,7 @@ public:
         uint64_t nmeaErrors = 0;
         uint64_t lines = 0;
         uint64_t garbageBytes = 0; // skipped bytes that were not part of any line or sentence
+        uint64_t quarantinedLines = 0; // lines dropped because they may have been frame bytes
     };
 
     void feed(const uint8_t *data, size_t n, std::vector<StreamEvent> &out);
@@ -43,8 +44,15 @@ public:
     // a frame without pauses), so frames and text held behind it are released.
     void flushPending(std::vector<StreamEvent> &out);
     size_t pendingBytes() const { return m_decoder.pendingBytes(); }
-    // Forgets partial frames and lines (after a baud change or reconnect).
+    // Forgets partial frames and lines (after a baud change or reconnect) and quarantines text.
     void reset();
+
+    // Text quarantine: at the start of a stream and after a damaged frame, bytes that look like
+    // text may be the tail of a frame, so lines are dropped until a boundary is certain again:
+    // a CRC-valid frame, a valid NMEA sentence, or endQuarantine() (the owner knows the line was
+    // quiet, or it just sent a command whose reply follows).
+    bool quarantined() const { return m_quarantined; }
+    void endQuarantine() { m_quarantined = false; }
 
     const hipnuc::FrameDecoder::Counters &frameCounters() const { return m_decoder.counters(); }
     const Counters &counters() const { return m_counters; }
@@ -55,10 +63,12 @@ private:
     void textBytes(const uint8_t *p, size_t n, std::vector<StreamEvent> &out);
     void endLine(std::vector<StreamEvent> &out);
     void dropPartialLine();
+    void dropQuarantinedLine();
 
     hipnuc::FrameDecoder m_decoder;
     std::string m_line;
     bool m_lineOverflow = false;
+    bool m_quarantined = true;
     Counters m_counters;
 };
 
