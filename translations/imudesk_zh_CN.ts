@@ -878,7 +878,7 @@
         <translation>%1 %2 %3</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+23"/>
         <location line="+7"/>
         <source>Save Chart as PNG</source>
         <translation>将图表保存为 PNG</translation>
@@ -985,17 +985,6 @@
         <location line="+1"/>
         <source>Freeze this chart; the data keeps being recorded</source>
         <translation>冻结此图表；数据仍会继续记录</translation>
-    </message>
-    <message>
-        <location line="+213"/>
-        <location line="+7"/>
-        <source>Save Chart as PNG</source>
-        <translation>将图表保存为 PNG</translation>
-    </message>
-    <message>
-        <location line="-7"/>
-        <source>PNG images (*.png)</source>
-        <translation>PNG 图像 (*.png)</translation>
     </message>
 </context>
 <context>

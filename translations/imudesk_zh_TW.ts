@@ -878,7 +878,7 @@
         <translation>%1 %2 %3</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+23"/>
         <location line="+7"/>
         <source>Save Chart as PNG</source>
         <translation>將圖表儲存為 PNG</translation>
@@ -985,17 +985,6 @@
         <location line="+1"/>
         <source>Freeze this chart; the data keeps being recorded</source>
         <translation>凍結此圖表；資料仍會繼續記錄</translation>
-    </message>
-    <message>
-        <location line="+213"/>
-        <location line="+7"/>
-        <source>Save Chart as PNG</source>
-        <translation>將圖表儲存為 PNG</translation>
-    </message>
-    <message>
-        <location line="-7"/>
-        <source>PNG images (*.png)</source>
-        <translation>PNG 影像 (*.png)</translation>
     </message>
 </context>
 <context>

@@ -743,17 +743,23 @@ bool ChartView::savePng(const QString &path, QString *error) const
 
 void ChartView::saveAsPngInteractive()
 {
+    savePngInteractive(this, QLatin1String(traits(m_kind).fileStem),
+                       [this](const QString &path, QString *error) { return savePng(path, error); });
+}
+
+void ChartView::savePngInteractive(QWidget *parent, const QString &fileStem,
+                                   const std::function<bool(const QString &, QString *)> &save)
+{
     const QString suggested = QStringLiteral("imudesk-%1-%2.png")
-                                  .arg(QLatin1String(traits(m_kind).fileStem),
-                                       QDateTime::currentDateTime().toString(QStringLiteral("yyyyMMdd-HHmmss")));
-    QString path = QFileDialog::getSaveFileName(this, tr("Save Chart as PNG"), suggested, tr("PNG images (*.png)"));
+                                  .arg(fileStem, QDateTime::currentDateTime().toString(QStringLiteral("yyyyMMdd-HHmmss")));
+    QString path = QFileDialog::getSaveFileName(parent, tr("Save Chart as PNG"), suggested, tr("PNG images (*.png)"));
     if (path.isEmpty())
         return;
     if (!path.endsWith(QLatin1String(".png"), Qt::CaseInsensitive))
         path += QLatin1String(".png");
     QString error;
-    if (!savePng(path, &error))
-        QMessageBox::warning(this, tr("Save Chart as PNG"), error);
+    if (!save(path, &error))
+        QMessageBox::warning(parent, tr("Save Chart as PNG"), error);
 }
 
 } // namespace imudesk::ui

@@ -24,6 +24,7 @@
 #include <QWidget>
 
 #include <array>
+#include <functional>
 #include <vector>
 
 class QChart;
@@ -58,6 +59,10 @@ public:
     static QString axisName(plot::Channel channel);    // "X", "Roll", "Pressure"
     static QString channelName(plot::Channel channel); // "Acceleration X", "Yaw"
     static QColor colour(plot::Channel channel);
+    // Asks where to save a chart (suggesting imudesk-<stem>-<time>.png), then calls save(path, &error)
+    // and reports a failure in a message box. Shared by ChartView and ComparisonChart.
+    static void savePngInteractive(QWidget *parent, const QString &fileStem,
+                                   const std::function<bool(const QString &, QString *)> &save);
     static int valueDecimals(ChartKind kind);
     static QString timeAxisTitle(plot::TimeAxis axis);
     // "2 s" ... "10 min" for ChartSettings::kWindowChoices.

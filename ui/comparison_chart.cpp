@@ -6,14 +6,11 @@
 #include <QChart>
 #include <QChartView>
 #include <QComboBox>
-#include <QDateTime>
 #include <QEvent>
-#include <QFileDialog>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLegend>
 #include <QLineSeries>
-#include <QMessageBox>
 #include <QPainter>
 #include <QPen>
 #include <QPushButton>
@@ -356,16 +353,8 @@ bool ComparisonChart::savePng(const QString &path, QString *error) const
 
 void ComparisonChart::saveAsPngInteractive()
 {
-    const QString suggested = QStringLiteral("imudesk-comparison-%1.png")
-                                  .arg(QDateTime::currentDateTime().toString(QStringLiteral("yyyyMMdd-HHmmss")));
-    QString path = QFileDialog::getSaveFileName(this, tr("Save Chart as PNG"), suggested, tr("PNG images (*.png)"));
-    if (path.isEmpty())
-        return;
-    if (!path.endsWith(QLatin1String(".png"), Qt::CaseInsensitive))
-        path += QLatin1String(".png");
-    QString error;
-    if (!savePng(path, &error))
-        QMessageBox::warning(this, tr("Save Chart as PNG"), error);
+    ChartView::savePngInteractive(this, QStringLiteral("comparison"),
+                                  [this](const QString &path, QString *error) { return savePng(path, error); });
 }
 
 } // namespace imudesk::ui
