@@ -43,14 +43,12 @@
 // undefined when the forward axis is vertical; headingDeg() then follows the gimbal-lock
 // rule above (-yaw_enu with roll = 0: the bearing the nose would have if pitched back to
 // level about the right axis; 0 for a pure +-90 deg pitch from north).
+#include "mounting.h" // Matrix3: row-major 3x3, m[row][column]
 #include "sample.h"
 
 #include <array>
 
 namespace imudesk::model {
-
-// Same alias as in mounting.h: row-major 3x3, m[row][column].
-using Matrix3 = std::array<std::array<double, 3>, 3>;
 
 struct Euler {
     double roll = 0, pitch = 0, yaw = 0; // deg

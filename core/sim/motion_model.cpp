@@ -54,33 +54,30 @@ bool parseMotion(std::string_view text, Motion &out)
     return false;
 }
 
+namespace {
+model::Quat toModel(const Eigen::Quaterniond &q)
+{
+    return model::Quat{q.w(), q.x(), q.y(), q.z()};
+}
+Eigen::Quaterniond toEigen(const model::Quat &q)
+{
+    return Eigen::Quaterniond(q.w, q.x, q.y, q.z);
+}
+} // namespace
+
 Eigen::Quaterniond canonical(const Eigen::Quaterniond &q)
 {
-    Eigen::Quaterniond r = q.normalized();
-    if (r.w() < 0)
-        r.coeffs() = -r.coeffs();
-    return r;
+    return toEigen(model::canonical(toModel(q)));
 }
 
 EulerAngles eulerEnu312(const Eigen::Quaterniond &q)
 {
-    const double q0 = q.w(), q1 = q.x(), q2 = q.y(), q3 = q.z();
-    const double s = std::clamp(2.0 * (q0 * q1 + q2 * q3), -1.0, 1.0);
-    EulerAngles e;
-    e.pitch = std::asin(s) / kDeg;
-    e.roll = -std::atan2(2.0 * (q1 * q3 - q0 * q2), q0 * q0 - q1 * q1 - q2 * q2 + q3 * q3) / kDeg;
-    e.yaw = -std::atan2(2.0 * (q1 * q2 - q0 * q3), q0 * q0 - q1 * q1 + q2 * q2 - q3 * q3) / kDeg;
-    // atan2 returns +-0; keep the printed value free of "-0".
-    if (e.roll == 0) e.roll = 0;
-    if (e.yaw == 0) e.yaw = 0;
-    return e;
+    return model::eulerEnu312(toModel(q));
 }
 
 Eigen::Quaterniond quatFromEnu312(const EulerAngles &e)
 {
-    const Eigen::Quaterniond q = axisAngle(e.yaw, Eigen::Vector3d::UnitZ()) * axisAngle(e.pitch, Eigen::Vector3d::UnitX())
-        * axisAngle(e.roll, Eigen::Vector3d::UnitY());
-    return canonical(q);
+    return toEigen(model::quatFromEnu312(e));
 }
 
 MotionModel::MotionModel() : MotionModel(Options{}) {}

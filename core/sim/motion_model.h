@@ -13,6 +13,8 @@
 //   roll  = -atan2(2(q1q3 - q0q2), q0^2 - q1^2 - q2^2 + q3^2)
 //   yaw   = -atan2(2(q1q2 - q0q3), q0^2 - q1^2 + q2^2 - q3^2)
 // yaw is counter-clockwise positive, -180..180; pitch -90..90; roll -180..180.
+#include "model/attitude.h"
+
 #include <Eigen/Geometry>
 
 #include <cstdint>
@@ -29,11 +31,9 @@ const char *motionName(Motion m);
 // "static", "spin", "tumble" (case-insensitive).
 bool parseMotion(std::string_view text, Motion &out);
 
-struct EulerAngles {
-    double roll = 0, pitch = 0, yaw = 0; // deg
-};
+using EulerAngles = model::Euler; // deg
 
-// Appendix 1 formulas (ENU 3-1-2). q must be normalised.
+// Eigen forms of the attitude maths in core/model/attitude.h (appendix 1, ENU 3-1-2).
 EulerAngles eulerEnu312(const Eigen::Quaterniond &q);
 // The inverse: q = qz(yaw) * qx(pitch) * qy(roll), returned with w >= 0.
 Eigen::Quaterniond quatFromEnu312(const EulerAngles &e);
