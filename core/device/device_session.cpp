@@ -24,21 +24,17 @@ const std::vector<int> &DeviceSession::detectionBauds()
     return bauds;
 }
 
-DeviceSession::DeviceSession(QObject *parent) : QObject(parent)
+DeviceSession::DeviceSession(QObject *parent) : DeviceLink(parent)
 {
-    qRegisterMetaType<SessionState>();
-    qRegisterMetaType<SessionStats>();
-    qRegisterMetaType<model::DeviceIdentity>();
     qRegisterMetaType<protocol::hipnuc::AsciiReply>();
 
     m_thread.setObjectName(QStringLiteral("imudesk-session"));
-    m_worker = new SessionWorker(m_store, m_rawLog);
+    m_worker = new SessionWorker(store(), m_rawLog);
     m_worker->moveToThread(&m_thread);
     connect(&m_thread, &QThread::finished, m_worker, &QObject::deleteLater);
 
     connect(m_worker, &SessionWorker::stateChanged, this, [this](SessionState s, const QString &detail) {
-        m_state = s;
-        Q_EMIT stateChanged(s, detail);
+        setState(s, detail);
     });
     connect(m_worker, &SessionWorker::baudDetected, this, &DeviceSession::baudDetected);
     connect(m_worker, &SessionWorker::identityChanged, this, &DeviceSession::identityChanged);

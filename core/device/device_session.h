@@ -3,11 +3,9 @@
 // thread; its worker (transport, stream demux, command queue) runs in a private
 // QThread. All calls are queued to the worker; results come back as signals
 // carrying value types. Samples go to a bounded SampleStore.
+#include "device/device_link.h"
 #include "device/raw_byte_log.h"
-#include "device/sample_store.h"
-#include "device/session_types.h"
 
-#include <QObject>
 #include <QString>
 #include <QThread>
 
@@ -19,7 +17,7 @@ namespace imudesk::device {
 
 class SessionWorker;
 
-class DeviceSession : public QObject {
+class DeviceSession : public DeviceLink {
     Q_OBJECT
 public:
     // Rates tried by auto-detection, in order.
@@ -30,7 +28,8 @@ public:
 
     // baud 0 = auto-detect (listen first, then LOG VERSION at each rate).
     void open(const QString &portName, int baud = 0);
-    void close();
+    void close() override;
+    QString linkKind() const override { return QStringLiteral("HiPNUC serial"); }
     // Queues an ASCII command; the reply arrives in commandFinished(id, reply).
     // Unknown commands get no reply and finish as a timeout.
     quint64 sendCommand(const QString &text, int timeoutMs = 1000);
@@ -44,33 +43,24 @@ public:
     void setAutoReconnect(bool on);
     bool autoReconnect() const { return m_autoReconnect.load(); }
 
-    SampleStore &store() { return m_store; }
     // Raw bytes of the link, both directions (bounded).
     RawByteLog &rawLog() { return m_rawLog; }
-    SessionState state() const { return m_state.load(); }
 
 Q_SIGNALS:
-    void stateChanged(imudesk::device::SessionState state, const QString &detail);
     void baudDetected(int baud);
-    void identityChanged(const imudesk::model::DeviceIdentity &identity);
     // The LOG VERSION query sent after opening at a fixed baud has finished (answered or not).
     void identityQueryFinished(bool answered);
     void commandFinished(quint64 id, const imudesk::protocol::hipnuc::AsciiReply &reply);
-    void statsUpdated(const imudesk::device::SessionStats &stats);
-    void samplesAppended(quint64 totalSamples);
     void nmeaReceived(const QString &sentence);
     void textReceived(const QString &line); // ASCII lines that answer no command
-    void errorOccurred(const QString &message);
     // The device came back after the port failed and the session reopened it.
     void reconnected();
 
 private:
     QThread m_thread;
-    SampleStore m_store;
     RawByteLog m_rawLog;
     SessionWorker *m_worker = nullptr;
     std::atomic<quint64> m_nextId{1};
-    std::atomic<SessionState> m_state{SessionState::Closed};
     std::atomic<bool> m_autoReconnect{true};
 };
 

@@ -1,0 +1,47 @@
+#pragma once
+// What every connected device looks like to its users, whatever the family and the link
+// (HiPNUC serial, HEC495 serial, Modbus RTU, CAN): a state, an identity, counters and a
+// bounded store of samples. The live views (charts, attitude, values, status bar) bind
+// to this interface only. Each family's session derives from it, keeps its worker in a
+// private thread and emits these signals in the owner's thread.
+#include "device/sample_store.h"
+#include "device/session_types.h"
+
+#include <QObject>
+#include <QString>
+
+#include <atomic>
+
+namespace imudesk::device {
+
+class DeviceLink : public QObject {
+    Q_OBJECT
+public:
+    explicit DeviceLink(QObject *parent = nullptr);
+    ~DeviceLink() override;
+
+    virtual void close() = 0;
+    // Short name of the family and link, e.g. "HiPNUC serial", "HEC495 serial", "HiPNUC Modbus".
+    virtual QString linkKind() const = 0;
+
+    SampleStore &store() { return m_store; }
+    const SampleStore &store() const { return m_store; }
+    SessionState state() const { return m_state.load(); }
+
+Q_SIGNALS:
+    void stateChanged(imudesk::device::SessionState state, const QString &detail);
+    void identityChanged(const imudesk::model::DeviceIdentity &identity);
+    void statsUpdated(const imudesk::device::SessionStats &stats);
+    void samplesAppended(quint64 totalSamples);
+    void errorOccurred(const QString &message);
+
+protected:
+    // Records the state and emits stateChanged; call from the owner's thread.
+    void setState(SessionState s, const QString &detail);
+
+private:
+    SampleStore m_store;
+    std::atomic<SessionState> m_state{SessionState::Closed};
+};
+
+} // namespace imudesk::device
