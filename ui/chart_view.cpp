@@ -1,5 +1,7 @@
 #include "chart_view.h"
 
+#include "plot_layer.h"
+
 #include <QChart>
 #include <QChartView>
 #include <QCheckBox>
@@ -287,6 +289,11 @@ ChartView::ChartView(ChartKind kind, QWidget *parent)
         series->attachAxis(m_axisY);
         m_series[size_t(c)] = series;
     }
+    m_layer = new PlotLayer(m_chart);
+    m_layer->setZValue(10);
+    for (Channel c : m_channels)
+        m_lineOf[size_t(c)] = m_layer->addLine(colour(c));
+    connect(m_chart, &QChart::plotAreaChanged, this, [this](const QRectF &area) { m_layer->setPlotArea(area); });
     m_crosshairLine = new QGraphicsLineItem(m_chart);
     QPen crosshairPen(QColor(0x60, 0x60, 0x60));
     crosshairPen.setStyle(Qt::DashLine);
@@ -493,9 +500,10 @@ void ChartView::setChannelVisible(Channel channel, bool visible)
     else
         m_visible &= ~plot::channelBit(channel);
     QLineSeries *series = m_series[size_t(channel)];
-    series->setVisible(visible);
+    series->setVisible(visible); // the legend entry
+    m_layer->setLineVisible(m_lineOf[size_t(channel)], visible);
     if (!visible)
-        series->clear();
+        m_points[size_t(channel)].clear();
     {
         const QSignalBlocker blocker(m_checks[size_t(channel)]);
         m_checks[size_t(channel)]->setChecked(visible);
@@ -576,20 +584,38 @@ ChartView::Window ChartView::liveWindow() const
     return w;
 }
 
+namespace {
+// Tick interval and label format of an axis; unchanged values are not set again (each set
+// re-creates the axis labels).
+void setTicks(QValueAxis *axis, double step)
+{
+    if (axis->tickInterval() != step)
+        axis->setTickInterval(step);
+    const QString format = QStringLiteral("%.%1f").arg(plot::AxisScaling::decimalsFor(step));
+    if (axis->labelFormat() != format)
+        axis->setLabelFormat(format);
+}
+} // namespace
+
 void ChartView::applyXAxis(const Window &w)
 {
     const double step = plot::AxisScaling::timeTickInterval(w.t1 - w.t0);
-    m_axisX->setTickInterval(step);
-    m_axisX->setLabelFormat(QStringLiteral("%.%1f").arg(plot::AxisScaling::decimalsFor(step)));
+    setTicks(m_axisX, step);
     m_axisX->setRange(w.t0 - w.offset, w.t1 - w.offset);
+    m_layer->setRange(m_axisX->min(), m_axisX->max(), m_axisY->min(), m_axisY->max());
 }
 
 void ChartView::applyYAxis(double min, double max)
 {
     const double step = plot::AxisScaling::niceStep(max - min, 5);
-    m_axisY->setTickInterval(step);
-    m_axisY->setLabelFormat(QStringLiteral("%.%1f").arg(plot::AxisScaling::decimalsFor(step)));
+    setTicks(m_axisY, step);
     m_axisY->setRange(min, max);
+    m_layer->setRange(m_axisX->min(), m_axisX->max(), m_axisY->min(), m_axisY->max());
+}
+
+const QList<QPointF> &ChartView::linePoints(Channel channel) const
+{
+    return m_points[size_t(channel)];
 }
 
 bool ChartView::refresh()
@@ -618,7 +644,7 @@ bool ChartView::refresh()
             continue;
         QList<QPointF> &points = m_points[size_t(c)];
         const auto r = m_decimator.decimate(*m_history, c, m_timeAxis, w.t0, w.t1, width, points, w.offset);
-        m_series[size_t(c)]->replace(points);
+        m_layer->setPoints(m_lineOf[size_t(c)], points);
         if (r.rows > 0) {
             lo = any ? std::min(lo, r.yMin) : r.yMin;
             hi = any ? std::max(hi, r.yMax) : r.yMax;

@@ -8,8 +8,9 @@
 // outside on the view clock; it redraws only while the chart is on screen, and only
 // when the settings changed or new data moved the window by at least one pixel
 // column. A redraw decimates each visible axis to at most 4 points per pixel column
-// (plot::MinMaxDecimator) and hands them to QLineSeries::replace(); a device-clock
-// gap or restart shows as a break in the line.
+// (plot::MinMaxDecimator) and hands them to a PlotLayer drawn over the plot area (the
+// QLineSeries stay empty: legend and axes only); a device-clock gap or restart shows as
+// a break in the line.
 //
 // X is seconds: on the device axis the device's own clock (system_time) of the newest
 // segment; on the host axis the time since the history's first sample.
@@ -40,6 +41,8 @@ class QToolButton;
 class QValueAxis;
 
 namespace imudesk::ui {
+
+class PlotLayer;
 
 class ChartView : public QWidget {
     Q_OBJECT
@@ -118,7 +121,11 @@ public:
 
     QChart *chart() const { return m_chart; }
     QChartView *chartView() const { return m_chartView; }
+    // The legend entry of an axis (its QLineSeries carries no points: PlotLayer draws them).
     QLineSeries *series(plot::Channel channel) const { return m_series[size_t(channel)]; }
+    // The decimated points drawn for an axis at the last redraw (empty while hidden).
+    const QList<QPointF> &linePoints(plot::Channel channel) const;
+    PlotLayer *plotLayer() const { return m_layer; }
     QValueAxis *axisX() const { return m_axisX; }
     QValueAxis *axisY() const { return m_axisY; }
     QCheckBox *channelCheckBox(plot::Channel channel) const { return m_checks[size_t(channel)]; }
@@ -186,6 +193,8 @@ private:
     QValueAxis *m_axisY = nullptr;
     std::array<QLineSeries *, plot::kChannelCount> m_series{};
     std::array<QList<QPointF>, plot::kChannelCount> m_points;
+    std::array<int, plot::kChannelCount> m_lineOf{};
+    PlotLayer *m_layer = nullptr;
     std::array<QCheckBox *, plot::kChannelCount> m_checks{};
     QGraphicsLineItem *m_crosshairLine = nullptr;
     QComboBox *m_windowCombo = nullptr;

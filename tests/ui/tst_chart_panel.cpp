@@ -4,6 +4,7 @@
 #include "chart_settings.h"
 #include "chart_view.h"
 #include "comparison_chart.h"
+#include "plot_layer.h"
 #include "plot/axis_scaling.h"
 #include "plot/minmax_decimator.h"
 
@@ -96,9 +97,8 @@ public:
     }
 };
 
-qsizetype breaksIn(const QLineSeries *series)
+qsizetype breaksIn(const QList<QPointF> &points)
 {
-    const QList<QPointF> points = series->points();
     return std::count_if(points.begin(), points.end(), MinMaxDecimator::isBreak);
 }
 
@@ -120,16 +120,16 @@ private Q_SLOTS:
         ChartView *acc = panel.chart(ChartKind::Accelerometer);
         const int width = acc->drawnWidthPx(); // the plot area's width when it was drawn
         QVERIFY2(width > 500 && std::abs(width - acc->plotWidthPx()) < 20, qPrintable(QString::number(width)));
-        const QLineSeries *x = acc->series(Channel::AccX);
-        QVERIFY(x->isVisible());
+        const QList<QPointF> &xPoints = acc->linePoints(Channel::AccX);
+        QVERIFY(acc->series(Channel::AccX)->isVisible());
         // Dense data: every pixel column has points, at most 4 of them.
-        QVERIFY2(x->count() >= width && x->count() <= 4 * width,
-                 qPrintable(QStringLiteral("%1 points for %2 px").arg(x->count()).arg(width)));
-        QVERIFY(x->count() <= 4 * acc->width());
-        QCOMPARE(breaksIn(x), qsizetype(0));
+        QVERIFY2(xPoints.size() >= width && xPoints.size() <= 4 * width,
+                 qPrintable(QStringLiteral("%1 points for %2 px").arg(xPoints.size()).arg(width)));
+        QVERIFY(xPoints.size() <= 4 * acc->width());
+        QCOMPARE(breaksIn(xPoints), qsizetype(0));
         // The sine's extremes survive decimation; the window is the newest 10 s of the device clock.
         double lo = 1e9, hi = -1e9;
-        for (const QPointF &p : x->points()) {
+        for (const QPointF &p : xPoints) {
             lo = std::min(lo, p.y());
             hi = std::max(hi, p.y());
         }
@@ -143,6 +143,22 @@ private Q_SLOTS:
         QCOMPARE(acc->axisX()->max() - acc->axisX()->min(), 10.0);
         QVERIFY(acc->axisY()->min() < -1.0 && acc->axisY()->max() > 1.0); // autoscale holds the data
         QVERIFY(panel.refreshCount() > 0);
+
+        // The lines are really on screen: the plot area holds pixels of each axis colour, at
+        // the places the points map to (the sine's top near the top of the autoscaled area).
+        const QImage image = acc->chartView()->viewport()->grab().toImage();
+        const QRect area = acc->chart()->plotArea().toRect();
+        QVERIFY(!area.isEmpty());
+        for (Channel c : {Channel::AccX, Channel::AccY, Channel::AccZ}) {
+            const QRgb wanted = ChartView::colour(c).rgb();
+            int hits = 0;
+            for (int y = area.top(); y <= area.bottom(); ++y)
+                for (int x = area.left(); x <= area.right(); ++x)
+                    hits += (image.pixel(x, y) & 0xffffff) == (wanted & 0xffffff);
+            QVERIFY2(hits > area.width() / 2, qPrintable(QStringLiteral("%1 pixels of axis %2").arg(hits).arg(int(c))));
+        }
+        const QPointF top = acc->plotLayer()->toPixel(QPointF(acc->axisX()->min(), acc->axisY()->max()));
+        QVERIFY(std::abs(top.x() - area.left()) <= 1.0 && std::abs(top.y() - area.top()) <= 1.0);
     }
 
     void refreshesOnlyVisibleChangedCharts()
@@ -177,7 +193,7 @@ private Q_SLOTS:
         QCoreApplication::processEvents();
         panel.refresh();
         QCOMPARE(temperature->redrawCount(), 1);
-        const qsizetype points = temperature->series(Channel::Temperature)->count();
+        const qsizetype points = temperature->linePoints(Channel::Temperature).size();
         QVERIFY(points > 0 && points <= 4 * temperature->drawnWidthPx());
 
         // A hidden panel draws nothing.
@@ -195,23 +211,23 @@ private Q_SLOTS:
         QVERIFY(QTest::qWaitForWindowExposed(&panel));
         feed(panel, 0, 3000);
         ChartView *acc = panel.chart(ChartKind::Accelerometer);
-        QVERIFY(acc->series(Channel::AccY)->count() > 0);
+        QVERIFY(acc->linePoints(Channel::AccY).size() > 0);
         QSignalSpy changed(&panel, &ChartPanel::settingsChanged);
         acc->channelCheckBox(Channel::AccY)->click();
         QCOMPARE(changed.count(), 1);
         QVERIFY(!acc->isChannelVisible(Channel::AccY));
         panel.refresh();
         QVERIFY(!acc->series(Channel::AccY)->isVisible());
-        QCOMPARE(acc->series(Channel::AccY)->count(), qsizetype(0));
+        QCOMPARE(acc->linePoints(Channel::AccY).size(), qsizetype(0));
         QVERIFY(acc->series(Channel::AccX)->isVisible());
-        QVERIFY(acc->series(Channel::AccX)->count() > 0);
+        QVERIFY(acc->linePoints(Channel::AccX).size() > 0);
         QVERIFY(panel.settings().isHidden(Channel::AccY));
         QVERIFY(!panel.settings().isHidden(Channel::AccX));
         // Shown again: drawn again.
         acc->channelCheckBox(Channel::AccY)->click();
         panel.refresh();
         QVERIFY(acc->series(Channel::AccY)->isVisible());
-        QVERIFY(acc->series(Channel::AccY)->count() > 0);
+        QVERIFY(acc->linePoints(Channel::AccY).size() > 0);
     }
 
     void pauseFreezesTheXRange()
@@ -226,12 +242,12 @@ private Q_SLOTS:
         QVERIFY(acc->isPaused());
         panel.refresh();
         const double min = acc->axisX()->min(), max = acc->axisX()->max();
-        const QList<QPointF> frozen = acc->series(Channel::AccX)->points();
+        const QList<QPointF> frozen = acc->linePoints(Channel::AccX);
         feed(panel, 5000, 8000); // recording goes on
         QCOMPARE(panel.history().size(), size_t(8000));
         QCOMPARE(acc->axisX()->min(), min);
         QCOMPARE(acc->axisX()->max(), max);
-        QCOMPARE(acc->series(Channel::AccX)->points().size(), frozen.size());
+        QCOMPARE(acc->linePoints(Channel::AccX).size(), frozen.size());
         // The other charts kept moving.
         QCOMPARE(panel.chart(ChartKind::Gyroscope)->axisX()->max(), (kDeviceStartMs + 7999) / 1000.0);
         // A longer window while paused keeps the right edge.
@@ -328,7 +344,7 @@ private Q_SLOTS:
         panel.appendSamples(batch);
         panel.refresh();
         ChartView *acc = panel.chart(ChartKind::Accelerometer);
-        QCOMPARE(breaksIn(acc->series(Channel::AccX)), qsizetype(1));
+        QCOMPARE(breaksIn(acc->linePoints(Channel::AccX)), qsizetype(1));
         // In the gap there is no value to read.
         const double inGap = (kDeviceStartMs + 2000 + 150) / 1000.0;
         QVERIFY(acc->readoutAt(inGap).contains(QStringLiteral("X \u2014 G")));
@@ -336,7 +352,7 @@ private Q_SLOTS:
         panel.setTimeAxis(TimeAxis::Host);
         panel.refresh();
         // (1 ms of host time between the two sides is narrower than a pixel column: joined or broken.)
-        QVERIFY(breaksIn(acc->series(Channel::AccX)) <= 1);
+        QVERIFY(breaksIn(acc->linePoints(Channel::AccX)) <= 1);
         QCOMPARE(acc->axisX()->max(), 3.999);
 
         panel.setTimeAxis(TimeAxis::Device);
@@ -348,10 +364,10 @@ private Q_SLOTS:
         panel.appendSamples(batch);
         panel.refresh();
         QCOMPARE(panel.history().segmentCount(), 2);
-        QCOMPARE(breaksIn(acc->series(Channel::AccX)), qsizetype(2));
+        QCOMPARE(breaksIn(acc->linePoints(Channel::AccX)), qsizetype(2));
         // The newest data is shown on the device's own (new) clock, the older to its left.
         QCOMPARE(acc->axisX()->max(), 1.004);
-        const QList<QPointF> points = acc->series(Channel::AccX)->points();
+        const QList<QPointF> points = acc->linePoints(Channel::AccX);
         QVERIFY(points.first().x() < 0.0);
     }
 
@@ -369,15 +385,15 @@ private Q_SLOTS:
         QVERIFY(!panel.chart(ChartKind::Accelerometer)->isHidden());
         QVERIFY(!panel.chart(ChartKind::Temperature)->isHidden());
         QCOMPARE(panel.chart(ChartKind::Pressure)->redrawCount(), 0);
-        QVERIFY(panel.chart(ChartKind::Accelerometer)->series(Channel::AccX)->count() > 0);
+        QVERIFY(panel.chart(ChartKind::Accelerometer)->linePoints(Channel::AccX).size() > 0);
         panel.clear();
         panel.appendSamples({sineSample(0)}); // refilled before the next tick: still a redraw
         panel.refresh();
-        QCOMPARE(panel.chart(ChartKind::Accelerometer)->series(Channel::AccX)->count(), qsizetype(1));
+        QCOMPARE(panel.chart(ChartKind::Accelerometer)->linePoints(Channel::AccX).size(), qsizetype(1));
         panel.clear();
         panel.refresh();
         QVERIFY(!panel.chart(ChartKind::Pressure)->isHidden());
-        QCOMPARE(panel.chart(ChartKind::Accelerometer)->series(Channel::AccX)->count(), qsizetype(0));
+        QCOMPARE(panel.chart(ChartKind::Accelerometer)->linePoints(Channel::AccX).size(), qsizetype(0));
     }
 
     void timeAxisForAllCharts()

@@ -12,7 +12,6 @@
 #include <QApplication>
 #include <QClipboard>
 #include <QCompleter>
-#include <QElapsedTimer>
 #include <QItemSelectionModel>
 #include <QLineEdit>
 #include <QPlainTextEdit>
@@ -227,10 +226,11 @@ private Q_SLOTS:
         QVERIFY(view.textView()->document()->blockCount() <= 4096 / 16 + 64 + 2);
     }
 
-    void rawBytesKeepUpAt921600()
+    void rawBytesStayBoundedAt921600()
     {
         // 921600 baud: ~92 kB/s, read in chunks of a few hundred bytes; the view refreshes
-        // at 30 Hz. Rendering must take a small part of each period.
+        // at 30 Hz and keeps only its bounded tail. (Its speed is measured by the GUI
+        // benchmark, tests/bench/bench_gui_live, not here.)
         RawByteLog log;
         RawBytesView view;
         view.resize(900, 400);
@@ -240,23 +240,14 @@ private Q_SLOTS:
         QByteArray chunk(256, '\0');
         for (int i = 0; i < chunk.size(); ++i)
             chunk[i] = char(i * 37);
-        QElapsedTimer clock;
-        qint64 worst = 0, total = 0;
         int64_t now = 0;
         constexpr int kTicks = 90; // 3 s
         for (int tick = 0; tick < kTicks; ++tick) {
             for (int c = 0; c < 12; ++c) // 3 kB per 33 ms
                 log.append(RawByteLog::Direction::Rx, chunk, now += 2'700'000);
-            clock.start();
             view.refresh();
             QCoreApplication::processEvents(); // paint
-            const qint64 ns = clock.nsecsElapsed();
-            worst = std::max(worst, ns);
-            total += ns;
         }
-        const double meanMs = double(total) / kTicks / 1e6;
-        qInfo("raw view: %.2f ms per refresh on average, %.2f ms worst", meanMs, double(worst) / 1e6);
-        QVERIFY2(meanMs < 15, qPrintable(QString::number(meanMs)));
         QVERIFY(view.textView()->document()->blockCount() <= int(RawBytesView::kDefaultMaxBytes / 16) + 64 + 2);
     }
 
