@@ -136,6 +136,56 @@ DeviceWorkspace::~DeviceWorkspace()
     // Close the port before the simulator behind it goes away.
     m_session.disconnect(this);
     m_session.close();
+    if (m_other) {
+        m_other->disconnect(this);
+        m_other->close();
+        m_other.reset();
+    }
+    m_otherKeepAlive.reset();
+}
+
+bool DeviceWorkspace::attachLink(std::unique_ptr<device::DeviceLink> link, const QString &target,
+                                 std::shared_ptr<void> keepAlive)
+{
+    if (isBusy() || !link)
+        return false;
+    stopSimulator();
+    detachLink();
+    m_other = std::move(link);
+    m_otherKeepAlive = std::move(keepAlive);
+    resetViews();
+    m_target = target;
+    connect(m_other.get(), &device::DeviceLink::stateChanged, this, [this](SessionState state, const QString &detail) {
+        if (!busyState(state))
+            m_otherKeepAlive.reset(); // e.g. stop the simulator behind a closed link
+        onStateChanged(state, detail);
+    });
+    connect(m_other.get(), &device::DeviceLink::identityChanged, this, &DeviceWorkspace::onIdentityChanged);
+    connect(m_other.get(), &device::DeviceLink::statsUpdated, this, &DeviceWorkspace::onStatsUpdated);
+    connect(m_other.get(), &device::DeviceLink::errorOccurred, this, &DeviceWorkspace::onErrorOccurred);
+    m_console->setInputEnabled(false); // ASCII commands are for the HiPNUC serial link
+    Q_EMIT titleChanged(title());
+    return true;
+}
+
+void DeviceWorkspace::detachLink()
+{
+    if (!m_other)
+        return;
+    m_other->disconnect(this);
+    m_other->close();
+    m_other.reset();
+    m_otherKeepAlive.reset();
+    resetViews();
+}
+
+void DeviceWorkspace::resetViews()
+{
+    m_identity.reset();
+    m_stats.reset();
+    m_chartSeq = 0;
+    m_shownTotal = ~quint64(0);
+    m_charts->clear();
 }
 
 bool DeviceWorkspace::isBusy() const
@@ -176,6 +226,7 @@ void DeviceWorkspace::connectPort(const QString &port, int baud)
     if (isBusy())
         return;
     stopSimulator();
+    detachLink();
     m_identity.reset();
     m_stats.reset();
     m_baud = baud;
@@ -193,6 +244,7 @@ bool DeviceWorkspace::connectSimulated(const sim::SimOptions &options, int baud,
         return false;
     }
     stopSimulator();
+    detachLink();
     auto simulator = std::make_unique<sim::PtySimulator>(options);
     QString why;
     if (!simulator->start(&why)) {
@@ -215,7 +267,7 @@ bool DeviceWorkspace::connectSimulated(const sim::SimOptions &options, int baud,
 void DeviceWorkspace::disconnectDevice()
 {
     if (isBusy())
-        m_session.close(); // the simulator stops when the session reports Closed
+        link().close(); // the simulator stops when the link reports Closed
     else
         stopSimulator();
 }
@@ -240,17 +292,18 @@ void DeviceWorkspace::refreshViews()
     if (window()->isMinimized())
         return;
     // Charts: the samples that arrived since the last tick, then one redraw of what is on screen.
-    const auto batch = m_session.store().since(m_chartSeq, kMaxSamplesPerTick, &m_chartSeq);
+    device::SampleStore &store = link().store();
+    const auto batch = store.since(m_chartSeq, kMaxSamplesPerTick, &m_chartSeq);
     if (!batch.empty())
         m_charts->appendSamples(batch);
     m_charts->refresh();
     if (!m_rawDock->visibleRegion().isEmpty())
         m_rawView->refresh();
-    const quint64 total = m_session.store().totalAppended();
+    const quint64 total = store.totalAppended();
     if (total == m_shownTotal)
         return;
     m_shownTotal = total;
-    std::optional<model::Sample> latest = m_session.store().latest();
+    std::optional<model::Sample> latest = store.latest();
     // Before firmware 1.7.0 the MAIN_STATUS bytes are reserved: show them as not reported.
     if (latest && m_identity && m_identity->firmware && !m_identity->hasMainStatus())
         latest->fields &= ~uint32_t(model::FieldMainStatus);

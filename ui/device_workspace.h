@@ -48,6 +48,19 @@ public:
     void connectPort(const QString &port, int baud);
     // Starts a simulated device on a pseudo-terminal and connects to it like to hardware.
     bool connectSimulated(const sim::SimOptions &options, int baud, QString *error = nullptr);
+    // Shows another family's session (a HEC495, a Modbus or CAN device, a replayed capture)
+    // in this workspace's live views in place of the HiPNUC serial session; the link should
+    // be opened by the caller after this returns. `keepAlive` holds what the link needs
+    // (e.g. its simulator) and is released when the link closes or fails. False while busy.
+    bool attachLink(std::unique_ptr<device::DeviceLink> link, const QString &target,
+                    std::shared_ptr<void> keepAlive = {});
+    // The link the views show: the serial session unless another link is attached.
+    device::DeviceLink &link() { return m_other ? *m_other : static_cast<device::DeviceLink &>(m_session); }
+    const device::DeviceLink &link() const
+    {
+        return m_other ? *m_other : static_cast<const device::DeviceLink &>(m_session);
+    }
+    bool hasAttachedLink() const { return m_other != nullptr; }
     void disconnectDevice();
     bool isBusy() const;
 
@@ -100,6 +113,9 @@ private:
     void retranslateUi();
     void resizeValueColumns();
     void stopSimulator();
+    // Back to the serial session (drops an attached link); the views start afresh.
+    void detachLink();
+    void resetViews();
 
     void onStateChanged(device::SessionState state, const QString &detail);
     void onIdentityChanged(const model::DeviceIdentity &identity);
@@ -115,6 +131,9 @@ private:
     // Declared before the session: the session (and its port) goes first on destruction.
     std::unique_ptr<sim::PtySimulator> m_simulator;
     device::DeviceSession m_session;
+    // An attached link of another family (declared after its keep-alive: it goes first).
+    std::shared_ptr<void> m_otherKeepAlive;
+    std::unique_ptr<device::DeviceLink> m_other;
 
     models::LatestValuesModel *m_valuesModel = nullptr;
     QTableView *m_valuesView = nullptr;

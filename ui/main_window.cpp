@@ -322,7 +322,7 @@ void MainWindow::updateActions()
     const bool busy = ws && ws->isBusy();
     m_connectAction->setEnabled(!busy);
     m_disconnectAction->setEnabled(busy);
-    m_versionAction->setEnabled(ws && ws->state() == SessionState::Connected);
+    m_versionAction->setEnabled(ws && ws->state() == SessionState::Connected && !ws->hasAttachedLink());
 }
 
 void MainWindow::rebuildViewMenu()

@@ -1,0 +1,120 @@
+// DeviceWorkspace shows any family's link (DeviceLink) in its live views: samples reach the
+// charts and the values table, the state reaches the status bar, and what the link needs
+// (its simulator) is released when it closes.
+#include "chart_panel.h"
+#include "device_workspace.h"
+#include "device/device_link.h"
+#include "models/latest_values_model.h"
+
+#include <QApplication>
+#include <QTest>
+
+using namespace imudesk;
+using device::SessionState;
+
+namespace {
+
+// A link driven by the test: what a HEC495, Modbus or CAN session does, without a port.
+class ScriptedLink : public device::DeviceLink {
+public:
+    using DeviceLink::DeviceLink;
+    void close() override
+    {
+        ++closes;
+        setState(SessionState::Closed, QString());
+    }
+    QString linkKind() const override { return QStringLiteral("Scripted"); }
+    void connectNow(const model::DeviceIdentity &id)
+    {
+        setState(SessionState::Connected, QString());
+        Q_EMIT identityChanged(id);
+    }
+    void push(int from, int count)
+    {
+        std::vector<model::Sample> batch;
+        for (int i = from; i < from + count; ++i) {
+            model::Sample s;
+            s.fields = model::FieldAcc | model::FieldEuler;
+            s.deviceTimeMs = 1000.0 + i * 10;
+            s.hostTimeNs = int64_t(i) * 10'000'000;
+            s.acc = {0.01 * i, -0.5, 1.0};
+            s.roll = 1.0;
+            s.pitch = 2.0;
+            s.yaw = 123.0 + i;
+            batch.push_back(s);
+        }
+        store().append(batch);
+        Q_EMIT samplesAppended(store().totalAppended());
+    }
+    int closes = 0;
+};
+
+} // namespace
+
+class TstDeviceWorkspace : public QObject {
+    Q_OBJECT
+private Q_SLOTS:
+    void showsAnAttachedLink()
+    {
+        ui::DeviceWorkspace ws;
+        ws.resize(1200, 800);
+        ws.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&ws));
+        auto link = std::make_unique<ScriptedLink>();
+        ScriptedLink *raw = link.get();
+        auto keepAlive = std::make_shared<int>(7);
+        std::weak_ptr<int> watch = keepAlive;
+        QVERIFY(ws.attachLink(std::move(link), QStringLiteral("Scripted bus"), std::move(keepAlive)));
+        QVERIFY(ws.hasAttachedLink());
+        QCOMPARE(&ws.link(), static_cast<device::DeviceLink *>(raw));
+
+        model::DeviceIdentity id;
+        id.productName = "HEC495";
+        id.serial = "addr 0";
+        raw->connectNow(id);
+        QCOMPARE(ws.state(), SessionState::Connected);
+        QVERIFY(ws.isBusy());
+        QVERIFY(ws.title().contains(QStringLiteral("HEC495")));
+        QVERIFY(ws.statusText().contains(QStringLiteral("HEC495")));
+
+        raw->push(0, 200);
+        ws.refreshViews();
+        QCOMPARE(ws.chartPanel()->history().size(), size_t(200));
+        // The values table shows the newest sample.
+        const auto *values = ws.valuesModel();
+        bool sawYaw = false;
+        for (int r = 0; r < values->rowCount(); ++r) {
+            const QString text = values->index(r, 1).data().toString();
+            sawYaw |= text.startsWith(QStringLiteral("322.0"));
+        }
+        QVERIFY(sawYaw);
+
+        // A second attach while connected is refused; disconnecting closes the link and
+        // releases what it needed.
+        QVERIFY(!ws.attachLink(std::make_unique<ScriptedLink>(), QStringLiteral("other")));
+        ws.disconnectDevice();
+        QCOMPARE(raw->closes, 1);
+        QCOMPARE(ws.state(), SessionState::Closed);
+        QVERIFY(watch.expired());
+        // The data stays on screen after the close.
+        QCOMPARE(ws.chartPanel()->history().size(), size_t(200));
+    }
+
+    void serialSessionReplacesAnAttachedLink()
+    {
+        ui::DeviceWorkspace ws;
+        auto link = std::make_unique<ScriptedLink>();
+        link->push(0, 50);
+        QVERIFY(ws.attachLink(std::move(link), QStringLiteral("Scripted bus")));
+        ws.refreshViews();
+        QCOMPARE(ws.chartPanel()->history().size(), size_t(50));
+        // Connecting a serial port drops the attached link and starts the views afresh.
+        ws.connectPort(QStringLiteral("/dev/imudesk-no-such-port"), 115200);
+        QVERIFY(!ws.hasAttachedLink());
+        QCOMPARE(ws.chartPanel()->history().size(), size_t(0));
+        QTRY_COMPARE(ws.state(), SessionState::Failed);
+    }
+};
+
+QTEST_MAIN(TstDeviceWorkspace)
+#include "tst_device_workspace.moc"
