@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # ImuDesk set-up. Run as root (or through sudo) on Debian 12; safe to run again.
 #   scripts/setup.sh demo   install packages, build a release build, open imudesk on a simulated HI14 (--demo)
-#   scripts/setup.sh test   install packages, build, run the whole test suite headless and the benchmark
+#   scripts/setup.sh test   install packages, build, run the whole test suite headless and the benchmarks,
+#                           then the whole suite again in an AddressSanitizer + UBSan build, then every
+#                           fuzz target for FUZZ_SECONDS (default 20) each
 set -euo pipefail
 
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
@@ -57,3 +59,15 @@ echo "== benchmark (decode throughput against the manual's byte-at-a-time decode
 "$root/build/test/tests/bench/bench_decode" --mb 50
 echo "== benchmark (the whole window offscreen, simulator at 921600 baud, HI91 at 1000 Hz)"
 "$root/build/test/tests/bench/bench_gui_live" --seconds 60
+
+echo "== test suite again, built with AddressSanitizer and UndefinedBehaviorSanitizer"
+# Leak checking stays with the fuzzers: Qt's plugin and font caches live until exit.
+export ASAN_OPTIONS="detect_leaks=0:abort_on_error=1:strict_string_checks=1"
+export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+configure_and_build "$root/build/asan" RelWithDebInfo -DIMUDESK_SANITIZE=ON -DIMUDESK_BUILD_TESTS=ON \
+  -DIMUDESK_BUILD_BENCH=OFF
+(cd "$root/build/asan" && ctest --output-on-failure -j "$jobs" --timeout 900)
+unset ASAN_OPTIONS UBSAN_OPTIONS
+
+echo "== fuzzing every parser, ${FUZZ_SECONDS:-20} s each"
+FUZZ_JOBS="$jobs" "$root/tests/fuzz/run.sh" "${FUZZ_SECONDS:-20}" "$root/build/fuzz"

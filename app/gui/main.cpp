@@ -7,6 +7,7 @@
 #include "window_settings.h"
 
 #include <QApplication>
+#include <QIcon>
 #include <QCommandLineOption>
 #include <QCommandLineParser>
 #include <QMessageBox>
@@ -50,6 +51,8 @@ int main(int argc, char *argv[])
     QApplication app(argc, argv);
     QCoreApplication::setOrganizationName(QStringLiteral("ImuDesk"));
     QCoreApplication::setApplicationName(QStringLiteral("ImuDesk"));
+    QGuiApplication::setDesktopFileName(QStringLiteral("io.github.imudesk.ImuDesk"));
+    QApplication::setWindowIcon(QIcon(QStringLiteral(":/icons/imudesk.svg")));
     QCoreApplication::setApplicationVersion(QStringLiteral(IMUDESK_VERSION));
 
     // Language first, so that the help text and any message are translated.

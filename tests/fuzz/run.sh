@@ -12,7 +12,7 @@
 # BUILD_DIR/fuzz/logs/<target>.log.
 #
 # Environment:
-#   FUZZ_TARGETS  space-separated subset (default: all three)
+#   FUZZ_TARGETS  space-separated subset (default: every tests/fuzz/fuzz_*.cpp)
 #   FUZZ_JOBS     targets run at the same time, 1 or 2 (default 1)
 #   BUILD_JOBS    ninja -j (default 2)
 #   FUZZ_ARGS     extra libFuzzer flags
@@ -42,7 +42,9 @@ case "$BUILD_DIR" in
 /*) ;;
 *) BUILD_DIR=$PWD/$BUILD_DIR ;;
 esac
-TARGETS=${FUZZ_TARGETS:-"fuzz_frame_decoder fuzz_nmea fuzz_ascii_reply"}
+# Every tests/fuzz/fuzz_<name>.cpp is a target.
+ALL_TARGETS=$(cd "$SCRIPT_DIR" && ls fuzz_*.cpp | sed 's/\.cpp$//' | tr '\n' ' ')
+TARGETS=${FUZZ_TARGETS:-$ALL_TARGETS}
 JOBS=${FUZZ_JOBS:-1}
 BUILD_JOBS=${BUILD_JOBS:-2}
 
