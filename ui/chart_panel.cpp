@@ -1,5 +1,7 @@
 #include "chart_panel.h"
 
+#include <algorithm>
+
 #include "chart_view.h"
 
 #include <QComboBox>
@@ -103,6 +105,18 @@ void ChartPanel::refresh()
     for (ChartView *chart : m_charts)
         if (chart->refresh())
             ++m_refreshCount;
+}
+
+void ChartPanel::setUnits(const model::DisplayUnits &units)
+{
+    for (ChartView *chart : m_charts)
+        chart->setUnits(units);
+}
+
+void ChartPanel::setHistoryMinutes(int minutes)
+{
+    const double seconds = std::clamp(minutes, 1, 10) * 60.0;
+    m_history.setLimits(seconds, size_t(seconds * 1000.0));
 }
 
 void ChartPanel::setTimeAxis(TimeAxis axis)

@@ -9,6 +9,7 @@
 // Charts of quantities the device never sent (e.g. pressure on a module without a
 // barometer) are hidden once data arrives.
 #include "chart_settings.h"
+#include "model/display_units.h"
 #include "model/sample.h"
 #include "plot/channel_history.h"
 
@@ -43,6 +44,10 @@ public:
 
     // Device clock or host arrival time, for all charts.
     void setTimeAxis(plot::TimeAxis axis);
+    // Units for the accelerometer and gyroscope charts.
+    void setUnits(const model::DisplayUnits &units);
+    // How much the charts keep (1 to 10 minutes at up to 1 kHz).
+    void setHistoryMinutes(int minutes);
     plot::TimeAxis timeAxis() const { return m_timeAxis; }
 
     ChartSettings settings() const;

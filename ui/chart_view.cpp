@@ -391,7 +391,7 @@ ChartView::~ChartView() = default;
 void ChartView::retranslateUi()
 {
     m_chart->setTitle(title(m_kind));
-    const QString u = unit(m_kind);
+    const QString u = shownUnit();
     m_axisY->setTitleText(u.isEmpty() ? quantity(m_kind) : tr("%1 (%2)", "quantity (unit)").arg(quantity(m_kind), u));
     m_axisX->setTitleText(timeAxisTitle(m_timeAxis));
     for (Channel c : m_channels) {
@@ -613,6 +613,39 @@ void ChartView::applyYAxis(double min, double max)
     m_layer->setRange(m_axisX->min(), m_axisX->max(), m_axisY->min(), m_axisY->max());
 }
 
+void ChartView::setUnits(const model::DisplayUnits &units)
+{
+    if (units == m_units)
+        return;
+    const double before = unitFactor();
+    m_units = units;
+    // A fixed range keeps showing the same physical span.
+    const double scale = unitFactor() / before;
+    if (scale != 1.0)
+        setFixedRange(m_fixedMin * scale, m_fixedMax * scale);
+    m_haveYRange = false;
+    retranslateUi();
+    markDirty();
+}
+
+double ChartView::unitFactor() const
+{
+    switch (m_kind) {
+    case ChartKind::Accelerometer: return m_units.accelFactor();
+    case ChartKind::Gyroscope: return m_units.rateFactor();
+    default: return 1.0;
+    }
+}
+
+QString ChartView::shownUnit() const
+{
+    if (m_kind == ChartKind::Accelerometer && m_units.accel == model::AccelUnit::MetresPerSecondSquared)
+        return tr("m/s²");
+    if (m_kind == ChartKind::Gyroscope && m_units.rate == model::RateUnit::RadiansPerSecond)
+        return tr("rad/s");
+    return unit(m_kind);
+}
+
 const QList<QPointF> &ChartView::linePoints(Channel channel) const
 {
     return m_points[size_t(channel)];
@@ -643,7 +676,13 @@ bool ChartView::refresh()
         if (!isChannelVisible(c))
             continue;
         QList<QPointF> &points = m_points[size_t(c)];
-        const auto r = m_decimator.decimate(*m_history, c, m_timeAxis, w.t0, w.t1, width, points, w.offset);
+        auto r = m_decimator.decimate(*m_history, c, m_timeAxis, w.t0, w.t1, width, points, w.offset);
+        if (const double factor = unitFactor(); factor != 1.0) {
+            for (QPointF &p : points)
+                p.ry() *= factor; // a break marker stays NaN
+            r.yMin *= factor;
+            r.yMax *= factor;
+        }
         m_layer->setPoints(m_lineOf[size_t(c)], points);
         if (r.rows > 0) {
             lo = any ? std::min(lo, r.yMin) : r.yMin;
@@ -654,7 +693,8 @@ bool ChartView::refresh()
     applyXAxis(w);
     if (m_autoScale) {
         if (any) {
-            m_yRange = plot::AxisScaling::autoRange(m_yRange, m_haveYRange, lo, hi, traits(m_kind).minSpan);
+            m_yRange = plot::AxisScaling::autoRange(m_yRange, m_haveYRange, lo, hi,
+                                                    traits(m_kind).minSpan * unitFactor());
             m_haveYRange = true;
         }
         if (m_haveYRange)
@@ -739,7 +779,8 @@ QString ChartView::readoutAt(double x) const
     QStringList parts;
     parts << tr("t = %1 s").arg(x, 0, 'f', 3);
     const double t = x + (m_drawn.valid ? m_drawn.offset : 0.0);
-    const QString u = unit(m_kind);
+    const QString u = shownUnit();
+    const double factor = unitFactor();
     // Farther than this from the nearest sample, the value is not known (a gap).
     double tolerance = std::numeric_limits<double>::infinity();
     if (m_history && m_history->samplePeriod() > 0.0) {
@@ -753,7 +794,8 @@ QString ChartView::readoutAt(double x) const
         if (m_history) {
             const long long row = m_history->nearestRow(m_timeAxis, t, c);
             if (row >= 0 && std::abs(m_history->time(m_timeAxis, size_t(row)) - t) <= tolerance)
-                value = QString::number(double(m_history->value(c, size_t(row))), 'f', valueDecimals(m_kind));
+                value = QString::number(double(m_history->value(c, size_t(row))) * factor, 'f',
+                                        valueDecimals(m_kind) + (factor < 0.1 ? 2 : 0));
         }
         parts << tr("%1 %2 %3", "crosshair read-out: axis, value, unit").arg(axisName(c), value, u).trimmed();
     }

@@ -15,6 +15,7 @@
 // X is seconds: on the device axis the device's own clock (system_time) of the newest
 // segment; on the host axis the time since the history's first sample.
 #include "chart_settings.h"
+#include "model/display_units.h"
 #include "plot/axis_scaling.h"
 #include "plot/channel_history.h"
 #include "plot/minmax_decimator.h"
@@ -96,6 +97,13 @@ public:
     double fixedMin() const { return m_fixedMin; }
     double fixedMax() const { return m_fixedMax; }
 
+    // Units for the accelerometer and gyroscope charts (the history keeps G and deg/s).
+    void setUnits(const model::DisplayUnits &units);
+    const model::DisplayUnits &units() const { return m_units; }
+    // The unit this chart shows its values in, and the factor from the history's unit.
+    QString shownUnit() const;
+    double unitFactor() const;
+
     // Redraws if on screen and something changed; true if it redrew.
     bool refresh();
     int redrawCount() const { return m_redraws; }
@@ -175,6 +183,7 @@ private:
     double m_fixedMax = 1.0;
     plot::AxisScaling::Range m_yRange;
     bool m_haveYRange = false;
+    model::DisplayUnits m_units;
 
     // What was drawn last.
     Window m_drawn;

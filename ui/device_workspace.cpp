@@ -179,6 +179,19 @@ void DeviceWorkspace::detachLink()
     resetViews();
 }
 
+void DeviceWorkspace::applyPreferences(const Preferences &prefs)
+{
+    m_refreshTimer.setInterval(prefs.refreshIntervalMs());
+    m_charts->setUnits(prefs.units);
+    m_charts->setHistoryMinutes(prefs.historyMinutes);
+    m_valuesModel->setUnits(prefs.units);
+    m_attitude->setDisplayFrame(prefs.frame == Preferences::Frame::Ned ? AttitudeWidget::DisplayFrame::Ned
+                                                                       : AttitudeWidget::DisplayFrame::Enu);
+    m_autoReconnect = prefs.autoReconnect;
+    if (isBusy() && !m_simulator && !m_other)
+        m_session.setAutoReconnect(prefs.autoReconnect);
+}
+
 void DeviceWorkspace::resetViews()
 {
     m_identity.reset();
@@ -231,7 +244,7 @@ void DeviceWorkspace::connectPort(const QString &port, int baud)
     m_stats.reset();
     m_baud = baud;
     m_target = port;
-    m_session.setAutoReconnect(true);
+    m_session.setAutoReconnect(m_autoReconnect);
     Q_EMIT titleChanged(title());
     m_session.open(port, baud);
 }

@@ -4,6 +4,7 @@
 // A workspace is a QMainWindow of its own so that its docks (values, console, ...)
 // can be rearranged; the arrangement is saved and restored by the main window.
 #include "device/device_session.h"
+#include "preferences.h"
 #include "sim/hipnuc_simulator.h"
 
 #include <QMainWindow>
@@ -37,7 +38,7 @@ class StatusFlagsWidget;
 class DeviceWorkspace : public QMainWindow {
     Q_OBJECT
 public:
-    static constexpr int kRefreshIntervalMs = 30; // 33 Hz view clock (<= 60 Hz, >= 30 charts/s)
+    static constexpr int kRefreshIntervalMs = 30; // default 33 Hz view clock (<= 60 Hz, >= 30 charts/s)
     static constexpr size_t kMaxSamplesPerTick = 20000; // a stalled GUI catches up without a burst
     static constexpr int kCommandTimeoutMs = 1000;
 
@@ -63,6 +64,8 @@ public:
     bool hasAttachedLink() const { return m_other != nullptr; }
     void disconnectDevice();
     bool isBusy() const;
+    // Units, attitude frame, refresh rate, chart history and auto-reconnect.
+    void applyPreferences(const Preferences &prefs);
 
     // Sends a command as typed in the console (shown there with its reply).
     void sendConsoleCommand(const QString &text);
@@ -155,6 +158,7 @@ private:
     QLabel *m_statsLabel = nullptr;
 
     QTimer m_refreshTimer;
+    bool m_autoReconnect = true;
     quint64 m_shownTotal = ~quint64(0);
 
     device::SessionState m_state = device::SessionState::Closed;

@@ -1,5 +1,7 @@
 #include "main_window.h"
 
+#include "preferences_dialog.h"
+
 #include "chart_panel.h"
 #include "comparison_chart.h"
 #include "connection_bar.h"
@@ -88,6 +90,7 @@ DeviceWorkspace *MainWindow::newWorkspace()
 {
     auto *ws = new DeviceWorkspace(m_tabs);
     ws->restoreLayout(m_workspaceLayout);
+    ws->applyPreferences(m_prefs);
     const int index = m_tabs->addTab(ws, ws->title());
     connect(ws, &DeviceWorkspace::titleChanged, this, [this, ws](const QString &title) {
         const int i = m_tabs->indexOf(ws);
@@ -158,6 +161,28 @@ WindowSettings MainWindow::windowSettings() const
     s.port = m_connectionBar->selectedPort().key();
     s.baud = m_connectionBar->selectedBaud();
     return s;
+}
+
+void MainWindow::setPreferences(const Preferences &prefs)
+{
+    m_prefs = prefs;
+    for (int i = 0; i < workspaceCount(); ++i)
+        workspace(i)->applyPreferences(prefs);
+}
+
+PreferencesDialog *MainWindow::openPreferences()
+{
+    auto *dialog = new PreferencesDialog(m_prefs, this);
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    connect(dialog, &QDialog::accepted, this, [this, dialog] {
+        const Preferences prefs = dialog->preferences();
+        if (prefs == m_prefs)
+            return;
+        setPreferences(prefs);
+        Q_EMIT preferencesChanged(prefs);
+    });
+    dialog->open();
+    return dialog;
 }
 
 void MainWindow::restoreSettings(const WindowSettings &settings)
@@ -386,6 +411,12 @@ void MainWindow::createActions()
     m_versionAction->setObjectName(QStringLiteral("versionAction"));
     connect(m_versionAction, &QAction::triggered, this, [this] { console()->submit(QStringLiteral("LOG VERSION")); });
 
+    m_preferencesAction = new QAction(this);
+    m_preferencesAction->setObjectName(QStringLiteral("preferencesAction"));
+    m_preferencesAction->setMenuRole(QAction::PreferencesRole);
+    m_preferencesAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_Comma));
+    connect(m_preferencesAction, &QAction::triggered, this, &MainWindow::openPreferences);
+
     m_aboutAction = new QAction(this);
     m_aboutAction->setObjectName(QStringLiteral("aboutAction"));
     m_aboutAction->setMenuRole(QAction::AboutRole);
@@ -399,6 +430,7 @@ void MainWindow::createMenus()
     m_fileMenu->addAction(m_closeTabAction);
     m_fileMenu->addSeparator();
     m_fileMenu->addAction(m_screenshotAction);
+    m_fileMenu->addAction(m_preferencesAction);
     m_fileMenu->addSeparator();
     m_fileMenu->addAction(m_quitAction);
     m_deviceMenu = menuBar()->addMenu(QString());
@@ -428,6 +460,7 @@ void MainWindow::retranslateUi()
     m_versionAction->setText(tr("Send LOG &VERSION"));
     m_versionAction->setStatusTip(tr("Ask the device for its product name, firmware and serial number"));
     m_aboutAction->setText(tr("&About ImuDesk"));
+    m_preferencesAction->setText(tr("&Preferences…"));
     if (auto *bar = findChild<QToolBar *>(QStringLiteral("connectionToolBar")))
         bar->setWindowTitle(tr("Connection"));
     m_comparisonDock->setWindowTitle(tr("Compare devices"));

@@ -4,6 +4,7 @@
 // on the current workspace. It shows session errors without ever blocking.
 #include "device/device_session.h"
 #include "sim/hipnuc_simulator.h"
+#include "preferences.h"
 #include "window_settings.h"
 
 #include <QMainWindow>
@@ -32,6 +33,7 @@ class ComparisonChart;
 class ConnectionBar;
 class ConsoleWidget;
 class DeviceWorkspace;
+class PreferencesDialog;
 class StatusFlagsWidget;
 
 class MainWindow : public QMainWindow {
@@ -41,6 +43,12 @@ public:
 
     explicit MainWindow(const WindowSettings &settings = {}, QWidget *parent = nullptr);
     ~MainWindow() override;
+
+    // Applies preferences to every device tab (and to tabs opened later).
+    void setPreferences(const Preferences &prefs);
+    const Preferences &preferences() const { return m_prefs; }
+    // Opens Edit > Preferences (not modal); accepting it applies and emits preferencesChanged.
+    PreferencesDialog *openPreferences();
 
     // Geometry, dock layout and the last port and baud, for the owner to save.
     WindowSettings windowSettings() const;
@@ -76,6 +84,10 @@ public:
 
     // Saves the window as a PNG; false with a reason when it cannot be written.
     bool saveScreenshot(const QString &path, QString *error = nullptr);
+
+Q_SIGNALS:
+    // The user accepted new preferences (the owner stores them).
+    void preferencesChanged(const imudesk::ui::Preferences &prefs);
 
 protected:
     void changeEvent(QEvent *event) override;
@@ -115,6 +127,8 @@ private:
     QAction *m_disconnectAction = nullptr;
     QAction *m_versionAction = nullptr;
     QAction *m_aboutAction = nullptr;
+    QAction *m_preferencesAction = nullptr;
+    Preferences m_prefs;
 
     sim::Motion m_simMotion = sim::Motion::Static;
     ErrorPresenter m_errorPresenter;

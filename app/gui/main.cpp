@@ -4,6 +4,7 @@
 #include "model/device_identity.h"
 #include "sim/hipnuc_simulator.h"
 #include "sim/motion_model.h"
+#include "preferences.h"
 #include "window_settings.h"
 
 #include <QApplication>
@@ -20,6 +21,7 @@
 
 using imudesk::ui::LanguageSwitcher;
 using imudesk::ui::MainWindow;
+using imudesk::ui::Preferences;
 using imudesk::ui::WindowSettings;
 
 namespace {
@@ -55,9 +57,15 @@ int main(int argc, char *argv[])
     QApplication::setWindowIcon(QIcon(QStringLiteral(":/icons/imudesk.svg")));
     QCoreApplication::setApplicationVersion(QStringLiteral(IMUDESK_VERSION));
 
-    // Language first, so that the help text and any message are translated.
+    // Preferences, then the language (--lang, else the preferences' choice, else the system's)
+    // first, so that the help text and any message are translated.
+    Preferences prefs;
+    {
+        QSettings store;
+        prefs.load(store);
+    }
     const QStringList args = splitSimulateValue(QCoreApplication::arguments());
-    QString lang = LanguageSwitcher::fromLocale(QLocale::system());
+    QString lang = prefs.language.isEmpty() ? LanguageSwitcher::fromLocale(QLocale::system()) : prefs.language;
     for (qsizetype i = 1; i < args.size(); ++i) {
         if (args[i] == QLatin1String("--lang") && i + 1 < args.size())
             lang = args[i + 1];
@@ -163,6 +171,11 @@ int main(int argc, char *argv[])
         settings.load(store);
     }
     MainWindow window(settings);
+    window.setPreferences(prefs);
+    QObject::connect(&window, &MainWindow::preferencesChanged, &window, [](const Preferences &changed) {
+        QSettings store;
+        changed.save(store);
+    });
     window.setSimulatedMotion(simOptions.motion);
     window.show();
 

@@ -189,6 +189,14 @@ void LatestValuesModel::retranslate()
     Q_EMIT dataChanged(index(0, 0), index(RowCount - 1, ColumnCount - 1), {Qt::DisplayRole, Qt::ToolTipRole});
 }
 
+void LatestValuesModel::setUnits(const model::DisplayUnits &units)
+{
+    if (units == m_units)
+        return;
+    m_units = units;
+    retranslate(); // every value and unit text again
+}
+
 QString LatestValuesModel::formatValue(Row row, const model::Sample &s) const
 {
     if (row == FrameType)
@@ -196,12 +204,12 @@ QString LatestValuesModel::formatValue(Row row, const model::Sample &s) const
     if (!(s.fields & fieldOf(row)))
         return missingText();
     switch (row) {
-    case AccX: return fixed(s.acc.x, 4);
-    case AccY: return fixed(s.acc.y, 4);
-    case AccZ: return fixed(s.acc.z, 4);
-    case GyrX: return fixed(s.gyr.x, 3);
-    case GyrY: return fixed(s.gyr.y, 3);
-    case GyrZ: return fixed(s.gyr.z, 3);
+    case AccX: return fixed(s.acc.x * m_units.accelFactor(), 4);
+    case AccY: return fixed(s.acc.y * m_units.accelFactor(), 4);
+    case AccZ: return fixed(s.acc.z * m_units.accelFactor(), 4);
+    case GyrX: return fixed(s.gyr.x * m_units.rateFactor(), m_units.rate == model::RateUnit::RadiansPerSecond ? 5 : 3);
+    case GyrY: return fixed(s.gyr.y * m_units.rateFactor(), m_units.rate == model::RateUnit::RadiansPerSecond ? 5 : 3);
+    case GyrZ: return fixed(s.gyr.z * m_units.rateFactor(), m_units.rate == model::RateUnit::RadiansPerSecond ? 5 : 3);
     case MagX: return fixed(s.mag.x, 3);
     case MagY: return fixed(s.mag.y, 3);
     case MagZ: return fixed(s.mag.z, 3);
@@ -296,8 +304,8 @@ QString LatestValuesModel::quantityName(Row row) const
 QString LatestValuesModel::unitName(Row row) const
 {
     switch (fieldOf(row)) {
-    case model::FieldAcc: return tr("G");
-    case model::FieldGyr: return tr("deg/s");
+    case model::FieldAcc: return m_units.accel == model::AccelUnit::G ? tr("G") : tr("m/s²");
+    case model::FieldGyr: return m_units.rate == model::RateUnit::DegreesPerSecond ? tr("deg/s") : tr("rad/s");
     case model::FieldMag: return tr("µT");
     case model::FieldEuler: return tr("deg");
     case model::FieldPressure: return tr("Pa");

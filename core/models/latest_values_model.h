@@ -2,6 +2,7 @@
 // The latest Sample as a table: one row per quantity, columns Quantity / Value /
 // Unit. Views call refresh() on their clock (never per sample); only cells whose
 // text changed emit dataChanged. A field the sample does not carry shows "—".
+#include "model/display_units.h"
 #include "model/sample.h"
 
 #include <QAbstractTableModel>
@@ -69,6 +70,9 @@ public:
     void refresh(const std::optional<model::Sample> &sample);
     // Texts are translated when read; call after the application language changed.
     void retranslate();
+    // Units for acceleration and angular rate (values and the unit column follow).
+    void setUnits(const model::DisplayUnits &units);
+    const model::DisplayUnits &units() const { return m_units; }
 
     QString valueText(Row row) const { return m_values[size_t(row)]; }
     // True once any sample shown carried this row's field (the frame type row: any sample).
@@ -85,6 +89,7 @@ private:
     std::array<QString, RowCount> m_values;
     std::optional<model::Sample> m_last;
     uint32_t m_seenFields = 0;
+    model::DisplayUnits m_units;
 };
 
 } // namespace imudesk::models
