@@ -53,7 +53,10 @@ bool LanguageSwitcher::setLanguage(const QString &language, const QString &qmDir
         return false;
     }
     if (lang == QLatin1String("en")) {
+        // The source texts are English; imudesk_en holds only the plural forms.
         uninstall();
+        if (m_app.load(QStringLiteral("imudesk_en"), qmDir))
+            m_appInstalled = QCoreApplication::installTranslator(&m_app);
         m_language = lang;
         return true;
     }
