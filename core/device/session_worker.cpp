@@ -558,6 +558,27 @@ SessionStats SessionWorker::counterSnapshot() const
     return s;
 }
 
+void SessionWorker::watchForGarbage(const SessionStats &now, qint64 nowMs)
+{
+    constexpr qint64 kGarbageReportMs = 1500;
+    const bool decoded = now.frames > m_lastStats.frames || now.nmeaSentences > m_lastStats.nmeaSentences;
+    const bool damaged = now.bytesSkipped > m_lastStats.bytesSkipped || now.crcErrors > m_lastStats.crcErrors;
+    if (decoded || now.bytesIn < m_lastStats.bytesIn + 64 || !damaged) {
+        m_garbageSinceMs = -1;
+        if (decoded)
+            m_garbageReported = false;
+        return;
+    }
+    if (m_garbageSinceMs < 0)
+        m_garbageSinceMs = m_lastStatsMs;
+    if (!m_garbageReported && nowMs - m_garbageSinceMs >= kGarbageReportMs) {
+        m_garbageReported = true;
+        Q_EMIT errorOccurred(tr("Bytes keep arriving on %1 but none of them form a frame: the device probably runs at "
+                                "another baud rate now. Disconnect and connect again with the baud rate set to Auto.")
+                                 .arg(m_portName));
+    }
+}
+
 void SessionWorker::publishStats()
 {
     SessionStats s = counterSnapshot();
@@ -571,6 +592,7 @@ void SessionWorker::publishStats()
         }
         s.bytesPerSecond = double(s.bytesIn - m_lastStats.bytesIn) / dt;
         s.linkLoad = s.baud > 0 ? s.bytesPerSecond * 10.0 / s.baud : 0;
+        watchForGarbage(s, nowMs);
         m_lastStats = s;
         m_lastStatsMs = nowMs;
     } else {

@@ -112,6 +112,11 @@ private:
     QElapsedTimer m_statsClock;
     SessionStats m_lastStats;
     qint64 m_lastStatsMs = 0;
+    // Bytes that form nothing (the device changed its baud rate under us): since when, and
+    // whether the user was told for this episode.
+    qint64 m_garbageSinceMs = -1;
+    bool m_garbageReported = false;
+    void watchForGarbage(const SessionStats &now, qint64 nowMs);
     uint64_t m_payloadErrors = 0;
     SessionState m_state = SessionState::Closed;
 

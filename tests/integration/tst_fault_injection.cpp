@@ -1,0 +1,351 @@
+// Faults injected on the serial path, end to end through a pseudo-terminal into a
+// DeviceSession: random byte corruption, an overload (a frame every 100 µs for 10 s), a
+// storm of ERR replies, a device that reboots by itself, a baud rate switched under the
+// tool's feet and a reader that stalls. In every case: no crash, every intact frame is
+// decoded, the session stays in a clear state, and the thread that owns the session (the
+// GUI thread in the app) never waits on the link: its event loop keeps turning.
+#include "device/device_session.h"
+#include "protocol/hipnuc/frame_decoder.h"
+#include "protocol/hipnuc/payloads.h"
+#include "sim/pty_simulator.h"
+
+#include <QElapsedTimer>
+#include <QSignalSpy>
+#include <QTest>
+#include <QTimer>
+
+#include <fcntl.h>
+#include <termios.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <random>
+
+using namespace imudesk;
+using device::DeviceSession;
+using device::SessionState;
+using protocol::hipnuc::AsciiReply;
+
+namespace {
+
+#if defined(__SANITIZE_ADDRESS__)
+constexpr bool kSanitized = true;
+#else
+constexpr bool kSanitized = false;
+#endif
+
+// A pseudo-terminal whose master side the test writes to: the "device" is the test.
+class RawPty {
+public:
+    RawPty()
+    {
+        m_master = posix_openpt(O_RDWR | O_NOCTTY | O_NONBLOCK);
+        if (m_master < 0 || grantpt(m_master) != 0 || unlockpt(m_master) != 0)
+            return;
+        m_slave = QString::fromLocal8Bit(ptsname(m_master));
+        termios t{};
+        tcgetattr(m_master, &t);
+        cfmakeraw(&t);
+        tcsetattr(m_master, TCSANOW, &t);
+    }
+    ~RawPty()
+    {
+        if (m_master >= 0)
+            ::close(m_master);
+    }
+    bool ok() const { return m_master >= 0 && !m_slave.isEmpty(); }
+    QString slave() const { return m_slave; }
+    // Writes all of `bytes`, waiting while the pty's buffer is full (keeps the event loop turning).
+    void write(const std::vector<uint8_t> &bytes)
+    {
+        size_t done = 0;
+        while (done < bytes.size()) {
+            const ssize_t n = ::write(m_master, bytes.data() + done, bytes.size() - done);
+            if (n > 0)
+                done += size_t(n);
+            else
+                QTest::qWait(1);
+        }
+    }
+    // Reads and forgets what the session sent (its LOG VERSION queries).
+    void drain()
+    {
+        char buf[512];
+        while (::read(m_master, buf, sizeof buf) > 0) {
+        }
+    }
+
+private:
+    int m_master = -1;
+    QString m_slave;
+};
+
+std::vector<uint8_t> hi91Frame(uint32_t ms)
+{
+    protocol::hipnuc::Hi91 p;
+    p.systemTime = ms;
+    p.acc = {0.01f * float(ms % 100), -0.5f, 1.0f};
+    p.yaw = float(ms % 360);
+    return protocol::hipnuc::buildFrame(protocol::hipnuc::encode(p));
+}
+
+// Longest time the owner's event loop went without running a 5 ms timer.
+class StallWatch {
+public:
+    StallWatch()
+    {
+        m_timer.setInterval(5);
+        QObject::connect(&m_timer, &QTimer::timeout, &m_timer, [this] {
+            const qint64 ms = m_clock.restart();
+            m_worst = std::max(m_worst, ms);
+        });
+        m_clock.start();
+        m_timer.start();
+    }
+    qint64 worstMs() const { return m_worst; }
+
+private:
+    QTimer m_timer;
+    QElapsedTimer m_clock;
+    qint64 m_worst = 0;
+};
+
+bool waitState(DeviceSession &s, SessionState want, int timeoutMs = 15000)
+{
+    QElapsedTimer t;
+    t.start();
+    while (s.state() != want && t.elapsed() < timeoutMs)
+        QTest::qWait(10);
+    return s.state() == want;
+}
+
+struct StatsProbe {
+    device::SessionStats last;
+    explicit StatsProbe(DeviceSession &s)
+    {
+        QObject::connect(&s, &DeviceSession::statsUpdated, &s, [this](const device::SessionStats &st) { last = st; });
+    }
+};
+
+AsciiReply send(DeviceSession &s, const QString &cmd, int timeoutMs = 1000)
+{
+    QSignalSpy spy(&s, &DeviceSession::commandFinished);
+    const quint64 id = s.sendCommand(cmd, timeoutMs);
+    for (int waited = 0; waited < timeoutMs + 3000; waited += 5) {
+        for (const auto &args : spy)
+            if (args.at(0).toULongLong() == id)
+                return args.at(1).value<AsciiReply>();
+        QTest::qWait(5);
+    }
+    AsciiReply r;
+    r.status = AsciiReply::Status::Pending;
+    return r;
+}
+
+sim::SimOptions simOptions(int baud = 115200)
+{
+    sim::SimOptions o;
+    o.model = "HI14R3";
+    o.firmware = "1.7.1";
+    o.baud = baud;
+    o.motion = sim::Motion::Spin;
+    o.seed = 7;
+    return o;
+}
+
+} // namespace
+
+class TstFaultInjection : public QObject {
+    Q_OBJECT
+private Q_SLOTS:
+    void tenPercentCorruption()
+    {
+        RawPty pty;
+        QVERIFY(pty.ok());
+        DeviceSession session;
+        StatsProbe stats(session);
+        session.setAutoReconnect(false);
+        session.open(pty.slave(), 921600);
+        QVERIFY(waitState(session, SessionState::Connected));
+        StallWatch stalls;
+
+        // 4000 frames; one in ten hit by a burst of 1 to 8 random bytes somewhere in it
+        // (header, length, CRC or payload). Frames that survived must all be decoded;
+        // damaged ones must not turn into samples.
+        std::mt19937 rng(1234);
+        std::uniform_int_distribution<int> byte(0, 255), percent(0, 99), burst(1, 8);
+        uint64_t intact = 0;
+        for (uint32_t i = 0; i < 4000; ++i) {
+            std::vector<uint8_t> frame = hi91Frame(1000 + i);
+            bool damaged = false;
+            if (percent(rng) < 10) {
+                std::uniform_int_distribution<size_t> where(0, frame.size() - 1);
+                const size_t at = where(rng);
+                for (int k = burst(rng); k > 0 && at + size_t(k) - 1 < frame.size(); --k) {
+                    const uint8_t v = uint8_t(byte(rng));
+                    damaged |= v != frame[at + size_t(k) - 1];
+                    frame[at + size_t(k) - 1] = v;
+                }
+            }
+            intact += damaged ? 0 : 1;
+            pty.write(frame);
+            if (i % 200 == 0) {
+                pty.drain();
+                QTest::qWait(1);
+            }
+        }
+        QTRY_VERIFY_WITH_TIMEOUT(stats.last.frames >= intact, 10000);
+        QTest::qWait(300);
+        QVERIFY(intact > 3500 && intact < 3700);
+        // A damaged frame passing its CRC by chance is 1 in 65536: none here.
+        QCOMPARE(stats.last.frames, intact);
+        QCOMPARE(session.store().totalAppended(), intact);
+        QVERIFY(stats.last.crcErrors + stats.last.bytesSkipped > 0);
+        QCOMPARE(session.state(), SessionState::Connected);
+        qInfo("corruption: %llu intact frames decoded of 4000, %llu CRC errors, %llu bytes skipped, worst stall %lld ms",
+              (unsigned long long)intact, (unsigned long long)stats.last.crcErrors,
+              (unsigned long long)stats.last.bytesSkipped, stalls.worstMs());
+        if (!kSanitized)
+            QVERIFY2(stalls.worstMs() < 100, qPrintable(QString::number(stalls.worstMs())));
+    }
+
+    void overloadFrameEvery100us()
+    {
+        RawPty pty;
+        QVERIFY(pty.ok());
+        DeviceSession session;
+        StatsProbe stats(session);
+        session.setAutoReconnect(false);
+        session.open(pty.slave(), 921600);
+        QVERIFY(waitState(session, SessionState::Connected));
+        StallWatch stalls;
+        // 10 s of a frame every 100 µs (10 kHz, ten times what any module sends), written
+        // in 1 ms slices of ten frames.
+        const int seconds = qEnvironmentVariableIntValue("IMUDESK_OVERLOAD_SECONDS") > 0
+                                ? qEnvironmentVariableIntValue("IMUDESK_OVERLOAD_SECONDS")
+                                : 10;
+        const uint32_t total = uint32_t(seconds) * 10000;
+        QElapsedTimer clock;
+        clock.start();
+        uint32_t sent = 0;
+        while (sent < total) {
+            const uint32_t due = std::min<uint32_t>(total, uint32_t(clock.nsecsElapsed() / 100'000) + 10);
+            std::vector<uint8_t> slice;
+            for (; sent < due; ++sent) {
+                const auto f = hi91Frame(sent); // device clock: one ms per frame (10 frames per real ms)
+                slice.insert(slice.end(), f.begin(), f.end());
+            }
+            pty.write(slice);
+            pty.drain();
+            QTest::qWait(1);
+        }
+        QTRY_VERIFY_WITH_TIMEOUT(stats.last.frames >= total, 30000);
+        QCOMPARE(stats.last.crcErrors, uint64_t(0));
+        QCOMPARE(session.state(), SessionState::Connected);
+        // The store is bounded: it keeps its capacity, not the 100 000 samples.
+        QVERIFY(session.store().size() <= session.store().capacity());
+        QCOMPARE(session.store().totalAppended(), uint64_t(total));
+        qInfo("overload: %u frames in %.1f s, worst stall %lld ms", total, clock.elapsed() / 1000.0, stalls.worstMs());
+        if (!kSanitized)
+            QVERIFY2(stalls.worstMs() < 100, qPrintable(QString::number(stalls.worstMs())));
+    }
+
+    void errStormKeepsStreaming()
+    {
+        sim::PtySimulator simulator(simOptions(921600));
+        QVERIFY(simulator.start(nullptr));
+        DeviceSession session;
+        session.setAutoReconnect(false);
+        StatsProbe stats(session);
+        session.open(simulator.devicePath(), 921600);
+        QVERIFY(waitState(session, SessionState::Connected));
+        QTRY_VERIFY(session.store().totalAppended() > 50);
+        const uint64_t before = session.store().totalAppended();
+        // 200 commands the device refuses with ERR, as fast as the session takes them.
+        QSignalSpy finished(&session, &DeviceSession::commandFinished);
+        for (int i = 0; i < 200; ++i)
+            session.sendCommand(QStringLiteral("CONFIG ATT MODE 7"), 1000);
+        QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 200, 60000);
+        int errors = 0;
+        for (const auto &args : finished)
+            errors += args.at(1).value<AsciiReply>().status == AsciiReply::Status::Error;
+        QCOMPARE(errors, 200);
+        // The stream went on meanwhile and the next command still works.
+        QTRY_VERIFY(session.store().totalAppended() > before + 50);
+        QCOMPARE(send(session, QStringLiteral("LOG VERSION")).status, AsciiReply::Status::Ok);
+        QCOMPARE(session.state(), SessionState::Connected);
+        QCOMPARE(stats.last.crcErrors, uint64_t(0));
+    }
+
+    void deviceRebootsByItself()
+    {
+        sim::PtySimulator simulator(simOptions());
+        QVERIFY(simulator.start(nullptr));
+        DeviceSession session;
+        session.setAutoReconnect(false);
+        StatsProbe stats(session);
+        session.open(simulator.devicePath(), 115200);
+        QVERIFY(waitState(session, SessionState::Connected));
+        QTRY_VERIFY(session.store().totalAppended() > 100);
+        simulator.withDevice([](sim::HipnucSimulator &d) { d.powerCycle(); });
+        QTRY_VERIFY_WITH_TIMEOUT(stats.last.deviceResets >= 1, 5000);
+        const uint64_t after = session.store().totalAppended();
+        QTRY_VERIFY(session.store().totalAppended() > after + 50); // streaming again
+        QCOMPARE(session.state(), SessionState::Connected);
+        // A reset is not a loss: the gap across it is not counted as frames lost.
+        QCOMPARE(stats.last.framesLost, uint64_t(0));
+    }
+
+    void baudSwitchedUnderTheToolsFeet()
+    {
+        sim::PtySimulator simulator(simOptions());
+        QVERIFY(simulator.start(nullptr));
+        DeviceSession session;
+        session.setAutoReconnect(false);
+        StatsProbe stats(session);
+        QSignalSpy errors(&session, &DeviceSession::errorOccurred);
+        session.open(simulator.devicePath(), 115200);
+        QVERIFY(waitState(session, SessionState::Connected));
+        QTRY_VERIFY(session.store().totalAppended() > 50);
+        // Someone else tells the module to run at 460800 (another tool on the same port).
+        simulator.withDevice([](sim::HipnucSimulator &d) { d.receive("SERIALCONFIG 460800\r\n"); });
+        QTest::qWait(800);
+        const uint64_t frozen = session.store().totalAppended();
+        QTest::qWait(800);
+        // Garbage only: no new samples, the damage is counted, the session stays open and
+        // tells the user what is wrong and what to do.
+        QVERIFY(session.store().totalAppended() <= frozen + 1);
+        QVERIFY(stats.last.bytesSkipped > 0 || stats.last.crcErrors > 0);
+        QCOMPARE(session.state(), SessionState::Connected);
+        QTRY_VERIFY_WITH_TIMEOUT(!errors.isEmpty(), 5000);
+        QVERIFY2(errors.last().at(0).toString().contains(QLatin1String("baud"), Qt::CaseInsensitive),
+                 qPrintable(errors.last().at(0).toString()));
+        // Following the device to its new rate brings the samples back.
+        session.setHostBaud(460800);
+        QTRY_VERIFY_WITH_TIMEOUT(session.store().totalAppended() > frozen + 50, 5000);
+    }
+
+    void stalledReaderLosesNothingAlreadyReceived()
+    {
+        sim::PtySimulator simulator(simOptions(921600));
+        QVERIFY(simulator.start(nullptr));
+        DeviceSession session;
+        session.setAutoReconnect(false);
+        StatsProbe stats(session);
+        session.open(simulator.devicePath(), 921600);
+        QVERIFY(waitState(session, SessionState::Connected));
+        QTRY_VERIFY(session.store().totalAppended() > 100);
+        // The owner's thread stops for 1.5 s (a modal dialog, a slow disk): the worker keeps
+        // reading, so nothing is dropped at the pty and every frame is in the store after.
+        QThread::msleep(1500);
+        QTest::qWait(500);
+        uint64_t dropped = 0;
+        simulator.withDevice([&dropped](sim::HipnucSimulator &d) { dropped = d.droppedFrames(); });
+        QCOMPARE(simulator.stats().chunksDropped, uint64_t(0));
+        QCOMPARE(stats.last.framesLost, dropped);
+        QCOMPARE(stats.last.crcErrors, uint64_t(0));
+    }
+};
+
+QTEST_GUILESS_MAIN(TstFaultInjection)
+#include "tst_fault_injection.moc"
