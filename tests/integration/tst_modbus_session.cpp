@@ -20,7 +20,7 @@ ModbusOptions optionsFor(const sim::ModbusSimulator &s, double pollHz = 50)
     ModbusOptions o;
     o.port = s.devicePath();
     o.pollHz = pollHz;
-    o.timeoutMs = 200;
+    o.timeoutMs = 600; // generous: the test machine is shared
     return o;
 }
 
@@ -202,6 +202,7 @@ private Q_SLOTS:
         ModbusScanOptions scan;
         scan.firstId = 78;
         scan.lastId = 88;
+        scan.timeoutMs = 250;
         session.scan(scan);
         QVERIFY(finished.wait(10000));
         const auto hits = finished.at(0).at(0).value<QList<ModbusScanHit>>();
@@ -232,6 +233,7 @@ private Q_SLOTS:
         scan.firstId = 1;
         scan.lastId = 6;
         scan.bauds = {115200, 19200};
+        scan.timeoutMs = 250;
         session.scan(scan);
         QVERIFY(finished.wait(15000));
         auto hits = finished.at(0).at(0).value<QList<ModbusScanHit>>();

@@ -32,7 +32,7 @@ QByteArray hex(const char *text)
     return QByteArray::fromHex(QByteArray(text).replace(' ', ""));
 }
 
-std::unique_ptr<QModbusRtuSerialClient> makeClient(const QString &path, int baud, int timeoutMs = 300)
+std::unique_ptr<QModbusRtuSerialClient> makeClient(const QString &path, int baud, int timeoutMs = 600)
 {
     auto c = std::make_unique<QModbusRtuSerialClient>();
     c->setConnectionParameter(QModbusDevice::SerialPortNameParameter, path);
