@@ -516,9 +516,10 @@ int ModbusWorker::probeTimeoutMs(int baud) const
 {
     if (m_scan.timeoutMs > 0)
         return m_scan.timeoutMs;
-    // request (8) + a short reply (9) + gaps, twice over, plus the device's turnaround
+    // request (8) + a short reply (9) + gaps, twice over, plus the device's turnaround and the
+    // host's scheduling (a busy machine easily adds tens of ms; a missed device costs more than time)
     const double frameMs = 25.0 * 11.0 * 1000.0 / std::max(1, baud);
-    return int(std::ceil(2.0 * frameMs)) + 40;
+    return int(std::ceil(2.0 * frameMs)) + 100;
 }
 
 void ModbusWorker::scan(const ModbusScanOptions &options)
