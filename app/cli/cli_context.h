@@ -38,6 +38,10 @@ int cmdRead(const QStringList &args);
 int cmdSend(const QStringList &args);
 int cmdDecode(const QStringList &args);
 int cmdSimulate(const QStringList &args);
+int cmdModbus(const QStringList &args);
+// commands_modbus.cpp: `simulate --pty --modbus [--device hec495] [--id N]`.
+void addModbusSimulateOptions(QCommandLineParser &p);
+int simulateModbus(const QCommandLineParser &p);
 
 // Parses args with the given parser; on error prints it and returns false.
 bool parseArgs(QCommandLineParser &p, const QStringList &args, const QString &usage);

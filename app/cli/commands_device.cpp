@@ -272,12 +272,15 @@ int cmdSimulate(const QStringList &args)
                                    QStringLiteral("MOTION"), QStringLiteral("static")));
     p.addOption(QCommandLineOption(QStringLiteral("seed"), QStringLiteral("Random seed (default 1)."),
                                    QStringLiteral("N"), QStringLiteral("1")));
+    addModbusSimulateOptions(p);
     const QString usage = QStringLiteral("imudesk-cli simulate --pty [--model HI14] [--firmware 1.7.1] [--baud 115200] "
-                                         "[--motion static|spin|tumble] [--seed N]");
+                                         "[--motion static|spin|tumble] [--seed N] [--modbus [--device hec495] [--id N]]");
     if (!parseArgs(p, args, usage))
         return ExitUsage;
     if (!p.isSet(QStringLiteral("pty")))
         return fail(QStringLiteral("simulate needs --pty (usage: %1)").arg(usage), ExitUsage);
+    if (p.isSet(QStringLiteral("modbus")))
+        return simulateModbus(p);
     sim::SimOptions o;
     o.model = p.value(QStringLiteral("model")).toStdString();
     o.firmware = p.value(QStringLiteral("firmware")).toStdString();

@@ -22,6 +22,10 @@ void usage(FILE *to)
                "  simulate --pty [--model HI14] [--firmware 1.7.1] [--baud 115200]\n"
                "           [--motion static|spin|tumble] [--seed N]\n"
                "                                         serve a simulated device on a pseudo-terminal\n"
+               "  simulate --pty --modbus [--device hipnuc|hec495] [--id N] [--baud B]\n"
+               "                                         serve a simulated Modbus RTU device\n"
+               "  modbus PORT [--id N] [--baud B] info|read [REG [COUNT]]|scan|write REG VALUE [--json]\n"
+               "                                         talk Modbus RTU to a module on RS-485\n"
                "Run 'imudesk-cli COMMAND --help' for a command's options.\n",
                to);
 }
@@ -54,6 +58,7 @@ int main(int argc, char **argv)
         {QStringLiteral("ports"), cmdPorts},     {QStringLiteral("probe"), cmdProbe},
         {QStringLiteral("read"), cmdRead},       {QStringLiteral("send"), cmdSend},
         {QStringLiteral("decode"), cmdDecode},   {QStringLiteral("simulate"), cmdSimulate},
+        {QStringLiteral("modbus"), cmdModbus},
     };
     const auto it = commands.find(cmd);
     if (it == commands.end()) {
