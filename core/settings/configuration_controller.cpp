@@ -57,6 +57,11 @@ ConfigurationController::Plan ConfigurationController::plan(const std::vector<Ch
     std::optional<std::pair<Change, QString>> baud;
     for (const Change &c : merged) {
         const SettingDefinition *d = SettingCatalog::find(c.key);
+        const auto a = SettingCatalog::availability(*d, id);
+        if (!a.available) {
+            p.errors << tr("%1: %2").arg(c.key, a.reason);
+            continue;
+        }
         QString error;
         const auto value = SettingCatalog::normalize(*d, c.value, &id, &error);
         const QStringList cmds = value ? SettingCatalog::commands(*d, *value, id, &error) : QStringList();

@@ -49,8 +49,8 @@ public:
         QString error;                   // why the flow stopped (planning, busy, read-back)
     };
 
-    static constexpr int kCommandTimeoutMs = 1000;
-    static constexpr int kReadTimeoutMs = 1500;
+    static constexpr int kCommandTimeoutMs = 3000; // replies queue behind data frames on a busy link
+    static constexpr int kReadTimeoutMs = 3000;
     static constexpr int kResetSettleMs = 500;
 
     explicit ConfigurationController(device::DeviceSession &session, QObject *parent = nullptr);

@@ -370,7 +370,7 @@ std::optional<QString> SettingCatalog::normalize(const SettingDefinition &d, con
         if (!row)
             return refuse(tr("not one of the documented values"));
         if (id && (!editionHas(row->v166, row->v171, *id) || !hasFeature(row->feature, id->family())))
-            return refuse(tr("this device does not have %1").arg(tr(row->label)));
+            return refuse(tr("%1 (%2) is not available on this model or firmware").arg(t, tr(row->label)));
         return QString::number(v);
     }
     case SettingKind::Mounting: {
