@@ -42,6 +42,7 @@ int cmdModbus(const QStringList &args);
 // commands_modbus.cpp: `simulate --pty --modbus [--device hec495] [--id N]`.
 void addModbusSimulateOptions(QCommandLineParser &p);
 int simulateModbus(const QCommandLineParser &p);
+int cmdConfig(const QStringList &args); // commands_config.cpp
 
 // Parses args with the given parser; on error prints it and returns false.
 bool parseArgs(QCommandLineParser &p, const QStringList &args, const QString &usage);

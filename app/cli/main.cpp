@@ -19,6 +19,8 @@ void usage(FILE *to)
                "                                         print decoded samples\n"
                "  send PORT [--baud B] \"COMMAND\"         send an ASCII command, print the reply\n"
                "  decode FILE [--json]                   decode a raw capture\n"
+               "  config PORT [set KEY=VALUE...|action NAME|export F|diff F|apply F] [--save] [--reboot] [--json]\n"
+               "                                         read, set, compare and apply device settings\n"
                "  simulate --pty [--model HI14] [--firmware 1.7.1] [--baud 115200]\n"
                "           [--motion static|spin|tumble] [--seed N]\n"
                "                                         serve a simulated device on a pseudo-terminal\n"
@@ -59,6 +61,7 @@ int main(int argc, char **argv)
         {QStringLiteral("read"), cmdRead},       {QStringLiteral("send"), cmdSend},
         {QStringLiteral("decode"), cmdDecode},   {QStringLiteral("simulate"), cmdSimulate},
         {QStringLiteral("modbus"), cmdModbus},
+        {QStringLiteral("config"), cmdConfig},
     };
     const auto it = commands.find(cmd);
     if (it == commands.end()) {

@@ -46,6 +46,8 @@ DeviceSession::DeviceSession(QObject *parent) : DeviceLink(parent)
     connect(m_worker, &SessionWorker::textReceived, this, &DeviceSession::textReceived);
     connect(m_worker, &SessionWorker::errorOccurred, this, &DeviceSession::errorOccurred);
     connect(m_worker, &SessionWorker::reconnected, this, &DeviceSession::reconnected);
+    connect(m_worker, &SessionWorker::baudChangeFinished, this, &DeviceSession::baudChangeFinished);
+    connect(m_worker, &SessionWorker::linkRecovered, this, &DeviceSession::linkRecovered);
     m_thread.start();
 }
 
@@ -79,6 +81,17 @@ quint64 DeviceSession::sendCommand(const QString &text, int timeoutMs)
 void DeviceSession::setHostBaud(int baud)
 {
     QMetaObject::invokeMethod(m_worker, [w = m_worker, baud] { w->setHostBaud(baud); }, Qt::QueuedConnection);
+}
+
+void DeviceSession::changeBaud(int baud)
+{
+    QMetaObject::invokeMethod(m_worker, [w = m_worker, baud] { w->changeBaud(baud); }, Qt::QueuedConnection);
+}
+
+void DeviceSession::recoverLink(const QList<int> &bauds, int settleMs)
+{
+    QMetaObject::invokeMethod(
+        m_worker, [w = m_worker, bauds, settleMs] { w->recoverLink(bauds, settleMs); }, Qt::QueuedConnection);
 }
 
 void DeviceSession::setAutoReconnect(bool on)

@@ -6,6 +6,7 @@
 #include "device/device_link.h"
 #include "device/raw_byte_log.h"
 
+#include <QList>
 #include <QString>
 #include <QThread>
 
@@ -43,6 +44,15 @@ public:
     void setAutoReconnect(bool on);
     bool autoReconnect() const { return m_autoReconnect.load(); }
 
+    // Safe baud change: sends SERIALCONFIG <baud>, follows to the new rate and confirms with
+    // LOG VERSION; if the device does not answer there, returns to the old rate, and failing
+    // that runs auto-detection. Ends with baudChangeFinished.
+    void changeBaud(int baud);
+    // After REBOOT or FRESET: waits settleMs, then confirms with LOG VERSION at each rate
+    // in turn, then at the current one, failing that auto-detects. Ends with
+    // linkRecovered.
+    void recoverLink(const QList<int> &bauds, int settleMs);
+
     // Raw bytes of the link, both directions (bounded).
     RawByteLog &rawLog() { return m_rawLog; }
 
@@ -55,6 +65,11 @@ Q_SIGNALS:
     void textReceived(const QString &line); // ASCII lines that answer no command
     // The device came back after the port failed and the session reopened it.
     void reconnected();
+    // changeBaud finished: changed = the device answers at the requested rate; baud = the
+    // rate it answers at now (0: it answers nowhere).
+    void baudChangeFinished(bool changed, int baud, const QString &detail);
+    // recoverLink finished.
+    void linkRecovered(bool reachable, int baud, const QString &detail);
 
 private:
     QThread m_thread;

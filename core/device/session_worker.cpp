@@ -12,6 +12,7 @@
 #include <QSerialPortInfo>
 
 #include <chrono>
+#include <utility>
 
 Q_LOGGING_CATEGORY(lcSession, "imudesk.core.device")
 
@@ -121,6 +122,8 @@ void SessionWorker::close()
     const bool waiting = m_reconnectTimer.isActive() || m_state == SessionState::Reconnecting;
     m_reconnectTimer.stop();
     cancelAll(Reply::Status::Cancelled, tr("the connection was closed"));
+    if (LinkDone done = std::exchange(m_afterDetect, {}))
+        done(false, 0);
     if (m_transport && m_transport->isOpen()) {
         m_transport->close();
         publishStats();
@@ -642,6 +645,8 @@ void SessionWorker::detectAt(size_t index)
         m_statsTimer.stop();
         setState(SessionState::Failed, msg);
         Q_EMIT errorOccurred(msg);
+        if (LinkDone done = std::exchange(m_afterDetect, {}))
+            done(false, 0);
         return;
     }
     m_detectIndex = index;
@@ -704,6 +709,8 @@ void SessionWorker::detectFinished(int baud, const std::optional<model::DeviceId
     if (id)
         noteIdentity(*id);
     setState(SessionState::Connected, tr("%1 at %2 baud").arg(m_portName).arg(baud));
+    if (LinkDone done = std::exchange(m_afterDetect, {}))
+        done(true, baud);
 }
 
 } // namespace imudesk::device

@@ -34,6 +34,12 @@ public Q_SLOTS:
     void setHostBaud(int baud);
     // On by default: after the port fails, wait for the same device and reopen it.
     void setAutoReconnect(bool on);
+    // Safe baud change (session_worker_baud.cpp): SERIALCONFIG, then follow to the new rate and
+    // confirm with LOG VERSION; failing that, back to the old rate; failing that, auto-detect.
+    void changeBaud(int baud);
+    // After REBOOT or FRESET: wait settleMs, then confirm with LOG VERSION at each rate in
+    // turn, then at the current one, failing that auto-detect.
+    void recoverLink(const QList<int> &bauds, int settleMs);
 
 Q_SIGNALS:
     void stateChanged(imudesk::device::SessionState state, const QString &detail);
@@ -48,6 +54,10 @@ Q_SIGNALS:
     void textReceived(const QString &line);
     void errorOccurred(const QString &message);
     void reconnected();
+    // changeBaud finished: changed = the device answers at the requested rate; baud = where it answers (0: nowhere).
+    void baudChangeFinished(bool changed, int baud, const QString &detail);
+    // recoverLink finished: the device answers at baud (0 and reachable false: nowhere).
+    void linkRecovered(bool reachable, int baud, const QString &detail);
 
 private:
     using Reply = protocol::hipnuc::AsciiReply;
@@ -88,6 +98,11 @@ private:
     void detectQuery(bool retry);
     void detectFinished(int baud, const std::optional<model::DeviceIdentity> &id);
     void queryIdentity(int attempt);
+
+    // Link recovery (session_worker_baud.cpp)
+    using LinkDone = std::function<void(bool reachable, int baud)>;
+    void probeBauds(std::vector<int> bauds, size_t index, int attempt, LinkDone done);
+    void detectForRecovery(LinkDone done);
 
     SampleStore &m_store;
     RawByteLog &m_rawLog;
@@ -134,6 +149,7 @@ private:
     uint64_t m_reconnects = 0;
     std::string m_deviceSerial;   // from LOG VERSION: tells whether the same module came back
     bool m_checkSameDevice = false;
+    LinkDone m_afterDetect;       // a recovery that fell back to auto-detection
 };
 
 } // namespace imudesk::device

@@ -167,6 +167,13 @@ public:
     void powerCycle();
     // A rising edge on SYNC_IN: one frame of every message configured ONMARK 1.
     void syncInPulse();
+    // Test hook for link recovery: what SERIALCONFIG does to this UART after its OK.
+    // 0 (default): switches to the requested rate; -1: keeps the old rate (a module that
+    // ignores the new one); > 0: switches to this rate instead.
+    void setBaudChangeOverride(int baud) { m_baudOverride = baud; }
+    // Test hook: commands starting with this text (upper case, e.g. "CONFIG IMU COORD") are
+    // answered ERR, as a delivery configuration that locks a setting; empty: none.
+    void setRefusedCommand(std::string prefix) { m_refusedPrefix = std::move(prefix); }
 
     // Read-only state, mostly for tests.
     const SimOptions &options() const { return m_options; }
@@ -294,6 +301,8 @@ private:
 
     Config m_running, m_saved, m_active;
     int m_baud = 115200;
+    int m_baudOverride = 0;
+    std::string m_refusedPrefix;
     bool m_logEnabled = true;
 
     // attitude corrections

@@ -68,7 +68,11 @@ void HipnucSimulator::processLine(const std::string &line)
     const auto tok = tokenize(line);
     if (tok.empty())
         return;
-    Reply r = dispatch(tok);
+    std::string joined;
+    for (const auto &t : tok)
+        joined += (joined.empty() ? "" : " ") + t;
+    Reply r = (!m_refusedPrefix.empty() && joined.rfind(m_refusedPrefix, 0) == 0) ? Reply{Outcome::Err, {}, {}}
+                                                                                 : dispatch(tok);
     switch (r.outcome) {
     case Outcome::Silent:
         qCDebug(lcSim) << "no reply to" << line.c_str();
@@ -147,8 +151,9 @@ HipnucSimulator::Reply HipnucSimulator::cmdSerialConfig(const std::vector<std::s
         return Reply{Outcome::Ok, {}, {}}; // another port of the module; this UART is unchanged
     m_running.baud = baud;
     return Reply{Outcome::Ok, {}, [this, baud] {
-                     qCDebug(lcSim) << "baud" << m_baud << "->" << baud;
-                     m_baud = baud;
+                     const int to = m_baudOverride == 0 ? baud : (m_baudOverride < 0 ? m_baud : m_baudOverride);
+                     qCDebug(lcSim) << "baud" << m_baud << "->" << to;
+                     m_baud = to;
                  }};
 }
 
