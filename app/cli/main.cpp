@@ -19,6 +19,7 @@ void usage(FILE *to)
                "                                         print decoded samples\n"
                "  send PORT [--baud B] \"COMMAND\"         send an ASCII command, print the reply\n"
                "  decode FILE [--json]                   decode a raw capture\n"
+               "  record PORT -o FILE [--duration S] [--baud B]  record what the device sends to a capture file\n"
                "  simulate --pty [--model HI14] [--firmware 1.7.1] [--baud 115200]\n"
                "           [--motion static|spin|tumble] [--seed N]\n"
                "                                         serve a simulated device on a pseudo-terminal\n"
@@ -54,6 +55,7 @@ int main(int argc, char **argv)
         {QStringLiteral("ports"), cmdPorts},     {QStringLiteral("probe"), cmdProbe},
         {QStringLiteral("read"), cmdRead},       {QStringLiteral("send"), cmdSend},
         {QStringLiteral("decode"), cmdDecode},   {QStringLiteral("simulate"), cmdSimulate},
+        {QStringLiteral("record"), cmdRecord},
     };
     const auto it = commands.find(cmd);
     if (it == commands.end()) {

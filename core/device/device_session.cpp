@@ -46,6 +46,9 @@ DeviceSession::DeviceSession(QObject *parent) : DeviceLink(parent)
     connect(m_worker, &SessionWorker::textReceived, this, &DeviceSession::textReceived);
     connect(m_worker, &SessionWorker::errorOccurred, this, &DeviceSession::errorOccurred);
     connect(m_worker, &SessionWorker::reconnected, this, &DeviceSession::reconnected);
+    connect(m_worker, &SessionWorker::recordingStarted, this, &DeviceSession::recordingStarted);
+    connect(m_worker, &SessionWorker::recordingStopped, this, &DeviceSession::recordingStopped);
+    connect(m_worker, &SessionWorker::recordingProgress, this, &DeviceSession::recordingProgress);
     m_thread.start();
 }
 
@@ -85,6 +88,19 @@ void DeviceSession::setAutoReconnect(bool on)
 {
     m_autoReconnect = on;
     QMetaObject::invokeMethod(m_worker, [w = m_worker, on] { w->setAutoReconnect(on); }, Qt::QueuedConnection);
+}
+
+void DeviceSession::startRecording(const QString &path, const record::CaptureHeader &header,
+                                   const record::CaptureWriter::Options &options)
+{
+    QMetaObject::invokeMethod(
+        m_worker, [w = m_worker, path, header, options] { w->startRecording(path, header, options); },
+        Qt::QueuedConnection);
+}
+
+void DeviceSession::stopRecording()
+{
+    QMetaObject::invokeMethod(m_worker, &SessionWorker::stopRecording, Qt::QueuedConnection);
 }
 
 } // namespace imudesk::device

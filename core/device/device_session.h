@@ -5,6 +5,7 @@
 // carrying value types. Samples go to a bounded SampleStore.
 #include "device/device_link.h"
 #include "device/raw_byte_log.h"
+#include "record/capture_writer.h"
 
 #include <QString>
 #include <QThread>
@@ -43,6 +44,14 @@ public:
     void setAutoReconnect(bool on);
     bool autoReconnect() const { return m_autoReconnect.load(); }
 
+    // Records every byte received, as received, to a capture file (README, "Capture file
+    // format") until stopRecording(), close() or a write error: recordingStarted(path), then
+    // recordingProgress every 500 ms and recordingStopped(reason) (empty reason: as asked).
+    // header adds entries (e.g. config.* from LOG COMCONFIG) to the identity, port and baud.
+    void startRecording(const QString &path, const record::CaptureHeader &header = {},
+                        const record::CaptureWriter::Options &options = {});
+    void stopRecording();
+
     // Raw bytes of the link, both directions (bounded).
     RawByteLog &rawLog() { return m_rawLog; }
 
@@ -55,6 +64,9 @@ Q_SIGNALS:
     void textReceived(const QString &line); // ASCII lines that answer no command
     // The device came back after the port failed and the session reopened it.
     void reconnected();
+    void recordingStarted(const QString &path);
+    void recordingStopped(const QString &reason);
+    void recordingProgress(quint64 bytesWritten, quint64 frames);
 
 private:
     QThread m_thread;

@@ -8,6 +8,7 @@
 #include "device/session_types.h"
 #include "io/serial_transport.h"
 #include "protocol/stream/stream_demux.h"
+#include "record/capture_writer.h"
 
 #include <QElapsedTimer>
 #include <QObject>
@@ -16,6 +17,7 @@
 #include <deque>
 #include <functional>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -34,6 +36,11 @@ public Q_SLOTS:
     void setHostBaud(int baud);
     // On by default: after the port fails, wait for the same device and reopen it.
     void setAutoReconnect(bool on);
+    // Recording: every byte received goes to a capture file until stopRecording(), close()
+    // or a write error. header adds to what the worker knows (identity, port, baud).
+    void startRecording(const QString &path, const imudesk::record::CaptureHeader &header,
+                        const imudesk::record::CaptureWriter::Options &options);
+    void stopRecording();
 
 Q_SIGNALS:
     void stateChanged(imudesk::device::SessionState state, const QString &detail);
@@ -48,6 +55,9 @@ Q_SIGNALS:
     void textReceived(const QString &line);
     void errorOccurred(const QString &message);
     void reconnected();
+    void recordingStarted(const QString &path);
+    void recordingStopped(const QString &reason); // empty: stopped as asked
+    void recordingProgress(quint64 bytesWritten, quint64 frames);
 
 private:
     using Reply = protocol::hipnuc::AsciiReply;
@@ -129,6 +139,11 @@ private:
     uint64_t m_reconnects = 0;
     std::string m_deviceSerial;   // from LOG VERSION: tells whether the same module came back
     bool m_checkSameDevice = false;
+
+    void finishRecording(const QString &reason);
+    std::unique_ptr<record::CaptureWriter> m_recorder;
+    model::DeviceIdentity m_identity;
+    uint64_t m_framesAtRecordStart = 0;
 };
 
 } // namespace imudesk::device
