@@ -5,6 +5,7 @@
 #include "model/device_identity.h"
 
 #include <QCoreApplication>
+#include <QMetaType>
 
 #include <cstdint>
 #include <map>
@@ -53,3 +54,5 @@ public:
 };
 
 } // namespace imudesk::record
+
+Q_DECLARE_METATYPE(imudesk::record::CaptureHeader)
