@@ -39,6 +39,8 @@ int cmdSend(const QStringList &args);
 int cmdDecode(const QStringList &args);
 int cmdSimulate(const QStringList &args);
 int cmdRecord(const QStringList &args);
+int cmdExport(const QStringList &args);
+int cmdAnalyze(const QStringList &args);
 
 // Parses args with the given parser; on error prints it and returns false.
 bool parseArgs(QCommandLineParser &p, const QStringList &args, const QString &usage);

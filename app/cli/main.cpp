@@ -20,6 +20,10 @@ void usage(FILE *to)
                "  send PORT [--baud B] \"COMMAND\"         send an ASCII command, print the reply\n"
                "  decode FILE [--json]                   decode a raw capture\n"
                "  record PORT -o FILE [--duration S] [--baud B]  record what the device sends to a capture file\n"
+               "  export FILE --format vendor-csv|csv|jsonl [-o OUT] [--from S --to S]\n"
+               "                                         export a capture (or a time range of it)\n"
+               "  analyze FILE [--json]                  statistics, output rate, Allan deviation of a capture or\n"
+               "                                         vendor CSV\n"
                "  simulate --pty [--model HI14] [--firmware 1.7.1] [--baud 115200]\n"
                "           [--motion static|spin|tumble] [--seed N]\n"
                "                                         serve a simulated device on a pseudo-terminal\n"
@@ -55,7 +59,8 @@ int main(int argc, char **argv)
         {QStringLiteral("ports"), cmdPorts},     {QStringLiteral("probe"), cmdProbe},
         {QStringLiteral("read"), cmdRead},       {QStringLiteral("send"), cmdSend},
         {QStringLiteral("decode"), cmdDecode},   {QStringLiteral("simulate"), cmdSimulate},
-        {QStringLiteral("record"), cmdRecord},
+        {QStringLiteral("record"), cmdRecord},   {QStringLiteral("export"), cmdExport},
+        {QStringLiteral("analyze"), cmdAnalyze},
     };
     const auto it = commands.find(cmd);
     if (it == commands.end()) {
