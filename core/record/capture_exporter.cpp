@@ -232,9 +232,10 @@ const char *CaptureExporter::tidyHeader()
 void CaptureExporter::appendTidyRow(std::string &out, const model::Sample &s, int frameTag, double hostS)
 {
     using namespace model;
+    // Values come from single-precision frames: float text keeps every digit they have.
     auto num = [&](double v) {
         out += ',';
-        appendNumber(out, v);
+        appendNumber(out, float(v));
     };
     auto gap = [&](int n) { out.append(size_t(n), ','); };
     auto vec = [&](SampleField f, const Vec3 &v, double k) {
@@ -247,8 +248,9 @@ void CaptureExporter::appendTidyRow(std::string &out, const model::Sample &s, in
         }
     };
     if (s.has(FieldDeviceTime))
-        appendNumber(out, s.deviceTimeMs / 1000.0);
-    num(hostS);
+        csv::appendFixed(out, s.deviceTimeMs / 1000.0, 6);
+    out += ',';
+    csv::appendFixed(out, hostS, 6);
     out += ',';
     appendInt(out, frameTag);
     out += ',';
@@ -280,10 +282,11 @@ void CaptureExporter::appendTidyRow(std::string &out, const model::Sample &s, in
         num(s.temperatureC);
     else
         gap(1);
-    if (s.has(FieldPosition)) {
-        num(s.latitudeDeg);
-        num(s.longitudeDeg);
-        num(s.altitudeM);
+    if (s.has(FieldPosition)) { // double precision in HI81/HI83
+        for (double v : {s.latitudeDeg, s.longitudeDeg, s.altitudeM}) {
+            out += ',';
+            appendNumber(out, v);
+        }
     } else {
         gap(3);
     }

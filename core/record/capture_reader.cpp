@@ -161,7 +161,7 @@ CaptureReader::Result CaptureReader::next(Chunk &chunk)
     if (!m_device)
         return Result::Error;
     if (m_final)
-        return m_message.isEmpty() ? Result::End : Result::Truncated;
+        return m_finalResult;
     for (;;) {
         if (m_resync) {
             // Find the next chunk magic after the damaged one.
@@ -181,10 +181,13 @@ CaptureReader::Result CaptureReader::next(Chunk &chunk)
         }
         if (!fill(1)) {
             m_final = true;
+            m_finalResult = Result::End;
+            m_message.clear();
             return Result::End;
         }
         if (!fill(capture::kChunkHeaderSize)) {
             m_final = true;
+            m_finalResult = Result::Truncated;
             m_message = tr("the file ends inside a chunk at offset %1 (recording was interrupted); everything before "
                            "it was read")
                             .arg(position());
@@ -215,6 +218,7 @@ CaptureReader::Result CaptureReader::next(Chunk &chunk)
                 return Result::Damaged;
             }
             m_final = true;
+            m_finalResult = Result::Truncated;
             m_message = tr("the file ends inside a chunk at offset %1 (recording was interrupted); everything before "
                            "it was read")
                             .arg(at);

@@ -70,6 +70,7 @@ private:
     qint64 m_dataStart = 0;
     bool m_eof = false;
     bool m_final = false;
+    Result m_finalResult = Result::End;
     bool m_resync = false;   // the last chunk was damaged: search for the next magic
     uint64_t m_damaged = 0;
     QString m_message;

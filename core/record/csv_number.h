@@ -34,4 +34,34 @@ inline void appendInt(std::string &out, int64_t v)
     out.append(buf, r.ptr);
 }
 
+// Fixed-point text with `decimals` digits after the point (0..9), e.g. times in s to the µs.
+inline void appendFixed(std::string &out, double v, int decimals)
+{
+    if (!std::isfinite(v))
+        return;
+    static constexpr int64_t kScale[] = {1, 10, 100, 1000, 10000, 100000, 1000000, 10000000, 100000000, 1000000000};
+    const int64_t scale = kScale[decimals];
+    const double scaled = std::round(v * double(scale));
+    if (std::abs(scaled) > 9e18) {
+        appendNumber(out, v);
+        return;
+    }
+    int64_t q = int64_t(scaled);
+    if (q < 0) {
+        out += '-';
+        q = -q;
+    }
+    appendInt(out, q / scale);
+    if (decimals == 0)
+        return;
+    char frac[10];
+    int64_t r = q % scale;
+    for (int i = decimals - 1; i >= 0; --i) {
+        frac[i] = char('0' + r % 10);
+        r /= 10;
+    }
+    out += '.';
+    out.append(frac, size_t(decimals));
+}
+
 } // namespace imudesk::record::csv

@@ -161,8 +161,8 @@ private Q_SLOTS:
         const auto &s = m_decoded.samples.front();
         QCOMPARE(row.at(0).toDouble(), s.deviceTimeMs / 1000.0);
         QCOMPARE(row.at(head.indexOf(QStringLiteral("frame_tag"))), QStringLiteral("145"));
-        QCOMPARE(row.at(head.indexOf(QStringLiteral("acc_z_mps2"))).toDouble(), s.acc.z * 9.8);
-        QCOMPARE(row.at(head.indexOf(QStringLiteral("gyr_x_radps"))).toDouble(), s.gyr.x * model::kDegToRad);
+        QCOMPARE(row.at(head.indexOf(QStringLiteral("acc_z_mps2"))).toFloat(), float(s.acc.z * 9.8));
+        QCOMPARE(row.at(head.indexOf(QStringLiteral("gyr_x_radps"))).toFloat(), float(s.gyr.x * model::kDegToRad));
     }
 
     void jsonLinesMatchDecode()
