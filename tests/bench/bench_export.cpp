@@ -7,6 +7,10 @@
 //
 //   bench_export [--frames N] [--dir DIR] [--keep]
 //
+// The capture and the outputs go to DIR, by default /dev/shm when it exists (else the temp
+// folder), so that the figures are the exporter's and not the disk's: the vendor CSV of an
+// hour is about 820 MB, which a 100 MB/s disk alone needs 8 s to take.
+//
 // Exit status: 0 when each format meets the target and every frame was exported; 1 otherwise;
 // 2 on bad arguments.
 #include "../common/synthetic_capture.h"
@@ -95,7 +99,7 @@ int main(int argc, char **argv)
 {
     QCoreApplication app(argc, argv);
     uint64_t frames = 3'600'000;
-    QString dir = QDir::tempPath();
+    QString dir = QDir(QStringLiteral("/dev/shm")).exists() ? QStringLiteral("/dev/shm") : QDir::tempPath();
     bool keep = false;
     for (int i = 1; i < argc; ++i) {
         if (!std::strcmp(argv[i], "--frames") && i + 1 < argc)
