@@ -1,10 +1,7 @@
 // imudesk-cli analyze: statistics, output rate and jitter, frames lost and Allan deviation of
 // a capture file or of a CSV written by the vendor's PC tool.
 #include "cli_context.h"
-#include "record/capture_decoder.h"
-#include "record/capture_reader.h"
-#include "record/sample_analyzer.h"
-#include "record/vendor_csv_importer.h"
+#include "record/file_analysis.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -16,33 +13,6 @@
 namespace imudesk::cli {
 
 namespace {
-
-// Feeds every sample of a capture to the analyzer. Returns an error message or an empty string.
-QString analyzeCapture(const QString &path, record::SampleAnalyzer &analyzer, QString *warning)
-{
-    struct Sink : record::CaptureDecoder::Sink {
-        record::SampleAnalyzer *a = nullptr;
-        void onPacket(const protocol::hipnuc::Packet &p, int64_t) override { a->add(protocol::hipnuc::toSample(p)); }
-    } sink;
-    sink.a = &analyzer;
-    record::CaptureReader reader;
-    QString error;
-    if (!reader.open(path, &error))
-        return error;
-    record::CaptureDecoder decoder;
-    record::CaptureReader::Chunk c;
-    record::CaptureReader::Result r;
-    while ((r = reader.next(c)) == record::CaptureReader::Result::Chunk || r == record::CaptureReader::Result::Damaged) {
-        if (r == record::CaptureReader::Result::Chunk)
-            decoder.feed(c.data, c.size, c.monotonicNs, sink);
-        if (interrupted())
-            return QStringLiteral("interrupted");
-    }
-    decoder.finish(sink);
-    if (r == record::CaptureReader::Result::Truncated)
-        *warning = reader.message();
-    return {};
-}
 
 QJsonObject resultJson(const record::SampleAnalyzer::Result &r)
 {
@@ -155,27 +125,13 @@ int cmdAnalyze(const QStringList &args)
     if (!ok || tauMax <= 0)
         return fail(QStringLiteral("--tau-max needs a positive number of seconds"), ExitUsage);
     const QString path = p.positionalArguments().front();
-    record::SampleAnalyzer analyzer(p.value(QStringLiteral("type")).toStdString());
-    QString warning;
-    if (record::CaptureReader::looksLikeCapture(path)) {
-        const QString error = analyzeCapture(path, analyzer, &warning);
-        if (!error.isEmpty())
-            return fail(error, interrupted() ? ExitInterrupted : ExitFailure);
-    } else {
-        const auto r = record::VendorCsvImporter::read(path, [&](const model::Sample &s) { analyzer.add(s); });
-        if (!r.ok)
-            return fail(QStringLiteral("%1 (neither a capture file nor a vendor HI91 CSV)").arg(r.error));
-        for (const auto &e : r.errors)
-            std::fprintf(stderr, "imudesk-cli: %s\n", qPrintable(e.message));
-        if (r.badLines > r.errors.size())
-            std::fprintf(stderr, "imudesk-cli: ... %llu malformed lines in all\n",
-                         static_cast<unsigned long long>(r.badLines));
-    }
-    if (!warning.isEmpty())
-        std::fprintf(stderr, "imudesk-cli: warning: %s\n", qPrintable(warning));
-    const auto result = analyzer.finish(tauMax);
-    if (result.frames == 0)
-        return fail(QStringLiteral("%1 holds no IMU frames to analyse").arg(path));
+    const auto outcome = record::FileAnalysis::run(path, p.value(QStringLiteral("type")).toStdString(), tauMax,
+                                                   [](double) { return !interrupted(); });
+    for (const QString &w : outcome.warnings)
+        std::fprintf(stderr, "imudesk-cli: warning: %s\n", qPrintable(w));
+    if (!outcome.ok)
+        return fail(outcome.error, outcome.cancelled ? ExitInterrupted : ExitFailure);
+    const auto &result = outcome.result;
     if (p.isSet(QStringLiteral("json")))
         out(QString::fromUtf8(QJsonDocument(resultJson(result)).toJson(QJsonDocument::Compact)));
     else
