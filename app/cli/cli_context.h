@@ -43,6 +43,9 @@ int cmdModbus(const QStringList &args);
 void addModbusSimulateOptions(QCommandLineParser &p);
 int simulateModbus(const QCommandLineParser &p);
 int cmdConfig(const QStringList &args); // commands_config.cpp
+int cmdRecord(const QStringList &args);
+int cmdExport(const QStringList &args);
+int cmdAnalyze(const QStringList &args);
 
 // Parses args with the given parser; on error prints it and returns false.
 bool parseArgs(QCommandLineParser &p, const QStringList &args, const QString &usage);

@@ -21,6 +21,11 @@ void usage(FILE *to)
                "  decode FILE [--json]                   decode a raw capture\n"
                "  config PORT [set KEY=VALUE...|action NAME|export F|diff F|apply F] [--save] [--reboot] [--json]\n"
                "                                         read, set, compare and apply device settings\n"
+               "  record PORT -o FILE [--duration S] [--baud B]  record what the device sends to a capture file\n"
+               "  export FILE --format vendor-csv|csv|jsonl [-o OUT] [--from S --to S]\n"
+               "                                         export a capture (or a time range of it)\n"
+               "  analyze FILE [--json]                  statistics, output rate, Allan deviation of a capture or\n"
+               "                                         vendor CSV\n"
                "  simulate --pty [--model HI14] [--firmware 1.7.1] [--baud 115200]\n"
                "           [--motion static|spin|tumble] [--seed N]\n"
                "                                         serve a simulated device on a pseudo-terminal\n"
@@ -62,6 +67,8 @@ int main(int argc, char **argv)
         {QStringLiteral("decode"), cmdDecode},   {QStringLiteral("simulate"), cmdSimulate},
         {QStringLiteral("modbus"), cmdModbus},
         {QStringLiteral("config"), cmdConfig},
+        {QStringLiteral("record"), cmdRecord},   {QStringLiteral("export"), cmdExport},
+        {QStringLiteral("analyze"), cmdAnalyze},
     };
     const auto it = commands.find(cmd);
     if (it == commands.end()) {

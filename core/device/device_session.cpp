@@ -48,6 +48,9 @@ DeviceSession::DeviceSession(QObject *parent) : DeviceLink(parent)
     connect(m_worker, &SessionWorker::reconnected, this, &DeviceSession::reconnected);
     connect(m_worker, &SessionWorker::baudChangeFinished, this, &DeviceSession::baudChangeFinished);
     connect(m_worker, &SessionWorker::linkRecovered, this, &DeviceSession::linkRecovered);
+    connect(m_worker, &SessionWorker::recordingStarted, this, &DeviceSession::recordingStarted);
+    connect(m_worker, &SessionWorker::recordingStopped, this, &DeviceSession::recordingStopped);
+    connect(m_worker, &SessionWorker::recordingProgress, this, &DeviceSession::recordingProgress);
     m_thread.start();
 }
 
@@ -98,6 +101,19 @@ void DeviceSession::setAutoReconnect(bool on)
 {
     m_autoReconnect = on;
     QMetaObject::invokeMethod(m_worker, [w = m_worker, on] { w->setAutoReconnect(on); }, Qt::QueuedConnection);
+}
+
+void DeviceSession::startRecording(const QString &path, const record::CaptureHeader &header,
+                                   const record::CaptureWriter::Options &options)
+{
+    QMetaObject::invokeMethod(
+        m_worker, [w = m_worker, path, header, options] { w->startRecording(path, header, options); },
+        Qt::QueuedConnection);
+}
+
+void DeviceSession::stopRecording()
+{
+    QMetaObject::invokeMethod(m_worker, &SessionWorker::stopRecording, Qt::QueuedConnection);
 }
 
 } // namespace imudesk::device

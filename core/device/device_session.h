@@ -5,6 +5,7 @@
 // carrying value types. Samples go to a bounded SampleStore.
 #include "device/device_link.h"
 #include "device/raw_byte_log.h"
+#include "record/capture_writer.h"
 
 #include <QList>
 #include <QString>
@@ -52,6 +53,13 @@ public:
     // in turn, then at the current one, failing that auto-detects. Ends with
     // linkRecovered.
     void recoverLink(const QList<int> &bauds, int settleMs);
+    // Records every byte received, as received, to a capture file (README, "Capture file
+    // format") until stopRecording(), close() or a write error: recordingStarted(path), then
+    // recordingProgress every 500 ms and recordingStopped(reason) (empty reason: as asked).
+    // header adds entries (e.g. config.* from LOG COMCONFIG) to the identity, port and baud.
+    void startRecording(const QString &path, const record::CaptureHeader &header = {},
+                        const record::CaptureWriter::Options &options = {});
+    void stopRecording();
 
     // Raw bytes of the link, both directions (bounded).
     RawByteLog &rawLog() { return m_rawLog; }
@@ -70,6 +78,9 @@ Q_SIGNALS:
     void baudChangeFinished(bool changed, int baud, const QString &detail);
     // recoverLink finished.
     void linkRecovered(bool reachable, int baud, const QString &detail);
+    void recordingStarted(const QString &path);
+    void recordingStopped(const QString &reason);
+    void recordingProgress(quint64 bytesWritten, quint64 frames);
 
 private:
     QThread m_thread;

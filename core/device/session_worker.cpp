@@ -6,6 +6,7 @@
 #include "protocol/hipnuc/payloads.h"
 
 #include <QCoreApplication>
+#include <QDateTime>
 #include <QFileInfo>
 #include <QLoggingCategory>
 #include <QRegularExpression>
@@ -124,6 +125,8 @@ void SessionWorker::close()
     cancelAll(Reply::Status::Cancelled, tr("the connection was closed"));
     if (LinkDone done = std::exchange(m_afterDetect, {}))
         done(false, 0);
+    if (m_recorder)
+        finishRecording(QString());
     if (m_transport && m_transport->isOpen()) {
         m_transport->close();
         publishStats();
@@ -255,7 +258,11 @@ void SessionWorker::cancelAll(Reply::Status status, const QString &why)
 
 void SessionWorker::onBytes(const QByteArray &bytes)
 {
-    m_rawLog.append(RawByteLog::Direction::Rx, bytes, monotonicNs());
+    const int64_t arrivedNs = monotonicNs();
+    m_rawLog.append(RawByteLog::Direction::Rx, bytes, arrivedNs);
+    if (m_recorder)
+        m_recorder->append(bytes.constData(), size_t(bytes.size()), arrivedNs,
+                           QDateTime::currentMSecsSinceEpoch() * 1000);
     m_events.clear();
     m_demux.feed(reinterpret_cast<const uint8_t *>(bytes.constData()), size_t(bytes.size()), m_events);
     if (m_demux.pendingBytes() > 0)
@@ -340,6 +347,64 @@ void SessionWorker::onTransportFailed(const QString &message)
 }
 
 // ---------------------------------------------------------------------------------------
+// Recording
+
+void SessionWorker::startRecording(const QString &path, const record::CaptureHeader &header,
+                                   const record::CaptureWriter::Options &options)
+{
+    if (m_recorder)
+        finishRecording(QString());
+    record::CaptureHeader h;
+    h.setIdentity(m_identity);
+    h.set(record::CaptureHeader::kLinkKind, "HiPNUC serial");
+    h.set(record::CaptureHeader::kPort, m_portName.toStdString());
+    h.set(record::CaptureHeader::kBaud, std::to_string(m_transport ? m_transport->baud() : 0));
+    h.set(record::CaptureHeader::kStartedUtc,
+          QDateTime::currentDateTimeUtc().toString(Qt::ISODateWithMs).toStdString());
+    h.set(record::CaptureHeader::kApplication,
+          (QCoreApplication::applicationName() + QLatin1Char(' ') + QCoreApplication::applicationVersion())
+              .trimmed()
+              .toStdString());
+    for (const auto &[k, v] : header.values)
+        h.set(k, v);
+    auto writer = std::make_unique<record::CaptureWriter>();
+    writer->setStoppedHandler([this](const QString &reason) {
+        QMetaObject::invokeMethod(this, [this, reason] { finishRecording(reason); }, Qt::QueuedConnection);
+    });
+    QString error;
+    if (!writer->start(path, h, options, &error)) {
+        Q_EMIT errorOccurred(error);
+        Q_EMIT recordingStopped(error);
+        return;
+    }
+    m_recorder = std::move(writer);
+    m_framesAtRecordStart = m_demux.frameCounters().frames;
+    Q_EMIT recordingStarted(path);
+}
+
+void SessionWorker::stopRecording()
+{
+    if (m_recorder)
+        finishRecording(QString());
+}
+
+void SessionWorker::finishRecording(const QString &reason)
+{
+    if (!m_recorder)
+        return;
+    const QString error = m_recorder->stop();
+    const auto st = m_recorder->status();
+    m_recorder.reset();
+    const uint64_t frames = m_demux.frameCounters().frames;
+    Q_EMIT recordingProgress(st.bytesWritten,
+                             frames >= m_framesAtRecordStart ? frames - m_framesAtRecordStart : frames);
+    const QString why = reason.isEmpty() ? error : reason;
+    if (!why.isEmpty())
+        Q_EMIT errorOccurred(why);
+    Q_EMIT recordingStopped(why);
+}
+
+// ---------------------------------------------------------------------------------------
 // Reconnection
 
 void SessionWorker::rememberDevice(const QString &portName)
@@ -394,6 +459,7 @@ void SessionWorker::noteIdentity(const model::DeviceIdentity &id)
     m_checkSameDevice = false;
     if (!id.serial.empty())
         m_deviceSerial = id.serial;
+    m_identity = id;
     Q_EMIT identityChanged(id);
 }
 
@@ -604,6 +670,9 @@ void SessionWorker::publishStats()
         s.linkLoad = m_lastStats.linkLoad;
     }
     Q_EMIT statsUpdated(s);
+    if (m_recorder)
+        Q_EMIT recordingProgress(m_recorder->status().bytesWritten,
+                                 s.frames >= m_framesAtRecordStart ? s.frames - m_framesAtRecordStart : s.frames);
 }
 
 void SessionWorker::queryIdentity(int attempt)

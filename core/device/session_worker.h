@@ -8,6 +8,7 @@
 #include "device/session_types.h"
 #include "io/serial_transport.h"
 #include "protocol/stream/stream_demux.h"
+#include "record/capture_writer.h"
 
 #include <QElapsedTimer>
 #include <QObject>
@@ -16,6 +17,7 @@
 #include <deque>
 #include <functional>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -40,6 +42,11 @@ public Q_SLOTS:
     // After REBOOT or FRESET: wait settleMs, then confirm with LOG VERSION at each rate in
     // turn, then at the current one, failing that auto-detect.
     void recoverLink(const QList<int> &bauds, int settleMs);
+    // Recording: every byte received goes to a capture file until stopRecording(), close()
+    // or a write error. header adds to what the worker knows (identity, port, baud).
+    void startRecording(const QString &path, const imudesk::record::CaptureHeader &header,
+                        const imudesk::record::CaptureWriter::Options &options);
+    void stopRecording();
 
 Q_SIGNALS:
     void stateChanged(imudesk::device::SessionState state, const QString &detail);
@@ -58,6 +65,9 @@ Q_SIGNALS:
     void baudChangeFinished(bool changed, int baud, const QString &detail);
     // recoverLink finished: the device answers at baud (0 and reachable false: nowhere).
     void linkRecovered(bool reachable, int baud, const QString &detail);
+    void recordingStarted(const QString &path);
+    void recordingStopped(const QString &reason); // empty: stopped as asked
+    void recordingProgress(quint64 bytesWritten, quint64 frames);
 
 private:
     using Reply = protocol::hipnuc::AsciiReply;
@@ -150,6 +160,11 @@ private:
     std::string m_deviceSerial;   // from LOG VERSION: tells whether the same module came back
     bool m_checkSameDevice = false;
     LinkDone m_afterDetect;       // a recovery that fell back to auto-detection
+
+    void finishRecording(const QString &reason);
+    std::unique_ptr<record::CaptureWriter> m_recorder;
+    model::DeviceIdentity m_identity;
+    uint64_t m_framesAtRecordStart = 0;
 };
 
 } // namespace imudesk::device

@@ -1,0 +1,77 @@
+// imudesk-cli export: a capture to vendor CSV, tidy CSV or JSON Lines (README, "CSV layouts").
+#include "cli_context.h"
+#include "record/capture_exporter.h"
+
+#include <QFileInfo>
+
+#include <cstdio>
+
+namespace imudesk::cli {
+
+int cmdExport(const QStringList &args)
+{
+    QCommandLineParser p;
+    p.addOption(QCommandLineOption(QStringLiteral("format"), QStringLiteral("vendor-csv, csv (tidy) or jsonl."),
+                                   QStringLiteral("F"), QStringLiteral("csv")));
+    p.addOption(QCommandLineOption({QStringLiteral("o"), QStringLiteral("output")},
+                                   QStringLiteral("Output file (default: the capture's name with .csv / .jsonl)."),
+                                   QStringLiteral("OUT")));
+    p.addOption(QCommandLineOption(QStringLiteral("from"), QStringLiteral("Start, seconds since the recording began."),
+                                   QStringLiteral("S")));
+    p.addOption(QCommandLineOption(QStringLiteral("to"), QStringLiteral("End, seconds since the recording began."),
+                                   QStringLiteral("S")));
+    p.addOption(QCommandLineOption(QStringLiteral("progress"), QStringLiteral("Print progress to stderr.")));
+    p.addPositionalArgument(QStringLiteral("FILE"), QStringLiteral("Capture file (.imucap)."));
+    if (!parseArgs(p, args,
+                   QStringLiteral("imudesk-cli export FILE --format vendor-csv|csv|jsonl [-o OUT] [--from S --to S]")))
+        return ExitUsage;
+    if (p.positionalArguments().size() != 1)
+        return fail(QStringLiteral("export needs exactly one capture FILE"), ExitUsage);
+    const auto format = record::CaptureExporter::parseFormat(p.value(QStringLiteral("format")));
+    if (!format)
+        return fail(QStringLiteral("unknown --format '%1' (vendor-csv, csv or jsonl)").arg(p.value(QStringLiteral("format"))),
+                    ExitUsage);
+    record::CaptureExporter::Options o;
+    o.format = *format;
+    const QString input = p.positionalArguments().front();
+    o.output = p.value(QStringLiteral("o"));
+    if (o.output.isEmpty()) {
+        const QFileInfo info(input);
+        o.output = info.path() + QLatin1Char('/') + info.completeBaseName()
+            + (o.format == record::CaptureExporter::Format::JsonLines ? QStringLiteral(".jsonl") : QStringLiteral(".csv"));
+    }
+    for (const char *name : {"from", "to"}) {
+        if (!p.isSet(QLatin1String(name)))
+            continue;
+        bool ok = false;
+        const double v = p.value(QLatin1String(name)).toDouble(&ok);
+        if (!ok || v < 0)
+            return fail(QStringLiteral("--%1 needs seconds >= 0").arg(QLatin1String(name)), ExitUsage);
+        (name[0] == 'f' ? o.fromS : o.toS) = v;
+    }
+    const bool showProgress = p.isSet(QStringLiteral("progress"));
+    int lastPercent = -1;
+    const auto r = record::CaptureExporter::run(input, o, [&](double f) {
+        const int percent = int(f * 100);
+        if (showProgress && percent != lastPercent) {
+            std::fprintf(stderr, "\r%3d %%", percent);
+            lastPercent = percent;
+        }
+        return !interrupted();
+    });
+    if (showProgress)
+        std::fputs("\n", stderr);
+    if (r.cancelled)
+        return fail(QStringLiteral("interrupted; the partial output was removed"), ExitInterrupted);
+    if (!r.ok)
+        return fail(r.error);
+    if (!r.warning.isEmpty())
+        std::fprintf(stderr, "imudesk-cli: warning: %s\n", qPrintable(r.warning));
+    for (const QString &f : r.files)
+        out(QStringLiteral("wrote %1").arg(f));
+    out(QStringLiteral("%1 rows%2").arg(r.frames).arg(
+        r.skipped ? QStringLiteral(", %1 frames without a vendor layout (HI92) skipped").arg(r.skipped) : QString()));
+    return ExitOk;
+}
+
+} // namespace imudesk::cli

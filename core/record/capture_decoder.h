@@ -1,0 +1,50 @@
+#pragma once
+// The live session's decoding path for recorded bytes: StreamDemux splits the stream
+// into HiPNUC frames, NMEA sentences and text lines; each frame's payload becomes HiPNUC
+// packets (HI91 fast path, then every sub-packet). Chunks are fed with their arrival time,
+// and a pause of kLineIdleNs between chunks releases an unfinished candidate frame and
+// ends the text quarantine exactly as the session's idle timer does, so a replay decodes
+// what the live session decoded. Plain value class.
+#include "protocol/hipnuc/payloads.h"
+#include "protocol/stream/stream_demux.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace imudesk::record {
+
+class CaptureDecoder {
+public:
+    static constexpr int64_t kLineIdleNs = 30'000'000; // the session's kLineIdleMs
+
+    class Sink {
+    public:
+        virtual ~Sink() = default;
+        virtual void onPacket(const protocol::hipnuc::Packet &packet, int64_t hostNs) = 0;
+        virtual void onNmea(const std::string & /*sentence*/, int64_t /*hostNs*/) {}
+        virtual void onLine(const std::string & /*line*/, int64_t /*hostNs*/) {}
+    };
+
+    // Bytes that arrived at hostNs (host monotonic clock).
+    void feed(const uint8_t *data, size_t n, int64_t hostNs, Sink &sink);
+    // End of the capture: releases whatever is held.
+    void finish(Sink &sink);
+    // Forgets partial frames and lines (after a seek); counters are kept.
+    void reset();
+
+    const protocol::StreamDemux &demux() const { return m_demux; }
+    uint64_t payloadErrors() const { return m_payloadErrors; }
+    void resetCounters();
+
+private:
+    void dispatch(int64_t hostNs, Sink &sink);
+
+    protocol::StreamDemux m_demux;
+    std::vector<protocol::StreamEvent> m_events;
+    int64_t m_lastNs = 0;
+    bool m_haveLast = false;
+    uint64_t m_payloadErrors = 0;
+};
+
+} // namespace imudesk::record

@@ -1,0 +1,357 @@
+#include "capture_exporter.h"
+
+#include "format/sample_json.h"
+#include "record/capture_decoder.h"
+#include "record/capture_reader.h"
+#include "record/csv_number.h"
+#include "record/vendor_csv.h"
+
+#include <QFile>
+#include <QFileInfo>
+
+#include <map>
+#include <memory>
+
+namespace imudesk::record {
+
+namespace hp = protocol::hipnuc;
+using csv::appendInt;
+using csv::appendNumber;
+
+namespace {
+
+constexpr size_t kFlushBytes = 1u << 20;
+
+// One output file with a block buffer.
+struct Output {
+    QFile file;
+    std::string buf;
+    bool failed = false;
+    explicit Output(const QString &path) : file(path) {}
+    void flush()
+    {
+        if (buf.empty() || failed)
+            return;
+        if (file.write(buf.data(), qint64(buf.size())) != qint64(buf.size()))
+            failed = true;
+        buf.clear();
+    }
+    void maybeFlush()
+    {
+        if (buf.size() >= kFlushBytes)
+            flush();
+    }
+};
+
+int tagOf(const hp::Packet &p)
+{
+    switch (p.index()) {
+    case 0: return hp::TagHi91;
+    case 1: return hp::TagHi92;
+    case 2: return hp::TagHi81;
+    default: return hp::TagHi83;
+    }
+}
+
+class ExportSink : public CaptureDecoder::Sink {
+public:
+    ExportSink(const CaptureExporter::Options &o, CaptureExporter::Result &r) : m_o(o), m_r(r)
+    {
+    }
+
+    int64_t firstNs = 0;
+
+    bool open(const QString &path, const char *header, Output *&out)
+    {
+        auto o = std::make_unique<Output>(path);
+        if (!o->file.open(QIODevice::WriteOnly | QIODevice::Truncate)) {
+            m_r.error = CaptureExporter::tr("Cannot write %1: %2").arg(path, o->file.errorString());
+            m_failed = true;
+            return false;
+        }
+        m_r.files << path;
+        if (header) {
+            o->buf += header;
+            o->buf += '\n';
+        }
+        out = o.get();
+        m_outputs.push_back(std::move(o));
+        return true;
+    }
+
+    Output *output(const QString &type, const char *header)
+    {
+        if (m_o.format != CaptureExporter::Format::VendorCsv) {
+            if (!m_single)
+                open(m_o.output, m_o.format == CaptureExporter::Format::TidyCsv ? CaptureExporter::tidyHeader() : nullptr,
+                     m_single);
+            return m_single;
+        }
+        auto it = m_byType.find(type);
+        if (it != m_byType.end())
+            return it->second;
+        Output *out = nullptr;
+        open(CaptureExporter::vendorPath(m_o.output, type), header, out);
+        m_byType[type] = out;
+        return out;
+    }
+
+    void onPacket(const hp::Packet &p, int64_t hostNs) override
+    {
+        const double hostMs = double(hostNs - firstNs) / 1e6;
+        switch (m_o.format) {
+        case CaptureExporter::Format::VendorCsv: {
+            Output *out = nullptr;
+            if (const auto *h = std::get_if<hp::Hi91>(&p)) {
+                if ((out = output(QStringLiteral("HI91"), vendor_csv::hi91Header())))
+                    vendor_csv::appendRow(out->buf, *h, hostMs);
+            } else if (const auto *h81 = std::get_if<hp::Hi81>(&p)) {
+                if ((out = output(QStringLiteral("HI81"), vendor_csv::hi81Header())))
+                    vendor_csv::appendRow(out->buf, *h81, hostMs);
+            } else if (const auto *h83 = std::get_if<hp::Hi83>(&p)) {
+                if ((out = output(QStringLiteral("HI83"), vendor_csv::hi83Header())))
+                    vendor_csv::appendRow(out->buf, *h83, hostMs);
+            } else {
+                ++m_r.skipped;
+                return;
+            }
+            written(out);
+            break;
+        }
+        case CaptureExporter::Format::TidyCsv: {
+            Output *out = output(QString(), nullptr);
+            if (out)
+                CaptureExporter::appendTidyRow(out->buf, hp::toSample(p), tagOf(p), hostMs / 1000.0);
+            written(out);
+            break;
+        }
+        case CaptureExporter::Format::JsonLines: {
+            Output *out = output(QString(), nullptr);
+            if (out) {
+                out->buf += format::sampleToJson(hp::toSample(p));
+                out->buf += '\n';
+            }
+            written(out);
+            break;
+        }
+        }
+    }
+
+    void onNmea(const std::string &sentence, int64_t) override
+    {
+        Output *out = nullptr;
+        if (m_o.format == CaptureExporter::Format::VendorCsv) {
+            if ((out = output(QStringLiteral("NMEA"), nullptr))) {
+                out->buf += sentence;
+                out->buf += '\n';
+            }
+        } else if (m_o.format == CaptureExporter::Format::JsonLines) {
+            if ((out = output(QString(), nullptr)))
+                out->buf += "{\"type\":\"NMEA\",\"sentence\":\"" + sentence + "\"}\n";
+        } else {
+            return; // the tidy CSV holds samples only
+        }
+        written(out);
+    }
+
+    bool failed() const { return m_failed; }
+    bool finish()
+    {
+        if (m_o.format != CaptureExporter::Format::VendorCsv && !m_single)
+            output(QString(), nullptr); // an empty range still gives a file (with its header)
+        for (auto &o : m_outputs) {
+            o->flush();
+            o->file.close();
+            if (o->failed && !m_failed) {
+                m_failed = true;
+                m_r.error = CaptureExporter::tr("Writing %1 failed: %2. Check the free disk space.")
+                                .arg(o->file.fileName(), o->file.errorString());
+            }
+        }
+        return !m_failed;
+    }
+    void removeOutputs()
+    {
+        for (auto &o : m_outputs) {
+            o->file.close();
+            QFile::remove(o->file.fileName());
+        }
+        m_r.files.clear();
+    }
+
+private:
+    void written(Output *out)
+    {
+        if (!out)
+            return;
+        ++m_r.frames;
+        out->maybeFlush();
+        if (out->failed && !m_failed) {
+            m_failed = true;
+            m_r.error = CaptureExporter::tr("Writing %1 failed: %2. Check the free disk space.")
+                            .arg(out->file.fileName(), out->file.errorString());
+        }
+    }
+
+    const CaptureExporter::Options &m_o;
+    CaptureExporter::Result &m_r;
+    std::vector<std::unique_ptr<Output>> m_outputs;
+    std::map<QString, Output *> m_byType;
+    Output *m_single = nullptr;
+    bool m_failed = false;
+};
+
+} // namespace
+
+std::optional<CaptureExporter::Format> CaptureExporter::parseFormat(const QString &name)
+{
+    if (name == QLatin1String("vendor-csv"))
+        return Format::VendorCsv;
+    if (name == QLatin1String("csv"))
+        return Format::TidyCsv;
+    if (name == QLatin1String("jsonl"))
+        return Format::JsonLines;
+    return std::nullopt;
+}
+
+QString CaptureExporter::vendorPath(const QString &output, const QString &type)
+{
+    const QFileInfo info(output);
+    const QString suffix = type == QLatin1String("NMEA") ? QStringLiteral("txt") : QStringLiteral("csv");
+    const QString stem = info.suffix().isEmpty() ? output : output.left(output.size() - info.suffix().size() - 1);
+    return stem + QLatin1Char('_') + type + QLatin1Char('.') + suffix;
+}
+
+const char *CaptureExporter::tidyHeader()
+{
+    return "time_s,host_time_s,frame_tag,main_status,acc_x_mps2,acc_y_mps2,acc_z_mps2,gyr_x_radps,gyr_y_radps,"
+           "gyr_z_radps,mag_x_uT,mag_y_uT,mag_z_uT,roll_deg,pitch_deg,yaw_deg,quat_w,quat_x,quat_y,quat_z,"
+           "pressure_Pa,temperature_degC,lat_deg,lon_deg,alt_m,vel_e_mps,vel_n_mps,vel_u_mps";
+}
+
+void CaptureExporter::appendTidyRow(std::string &out, const model::Sample &s, int frameTag, double hostS)
+{
+    using namespace model;
+    // Values come from single-precision frames: float text keeps every digit they have.
+    auto num = [&](double v) {
+        out += ',';
+        appendNumber(out, float(v));
+    };
+    auto gap = [&](int n) { out.append(size_t(n), ','); };
+    auto vec = [&](SampleField f, const Vec3 &v, double k) {
+        if (s.has(f)) {
+            num(v.x * k);
+            num(v.y * k);
+            num(v.z * k);
+        } else {
+            gap(3);
+        }
+    };
+    if (s.has(FieldDeviceTime))
+        csv::appendFixed(out, s.deviceTimeMs / 1000.0, 6);
+    out += ',';
+    csv::appendFixed(out, hostS, 6);
+    out += ',';
+    appendInt(out, frameTag);
+    out += ',';
+    if (s.has(FieldMainStatus))
+        appendInt(out, s.mainStatus);
+    vec(FieldAcc, s.acc, kGravity);
+    vec(FieldGyr, s.gyr, kDegToRad);
+    vec(FieldMag, s.mag, 1.0);
+    if (s.has(FieldEuler)) {
+        num(s.roll);
+        num(s.pitch);
+        num(s.yaw);
+    } else {
+        gap(3);
+    }
+    if (s.has(FieldQuat)) {
+        num(s.quat.w);
+        num(s.quat.x);
+        num(s.quat.y);
+        num(s.quat.z);
+    } else {
+        gap(4);
+    }
+    if (s.has(FieldPressure))
+        num(s.pressurePa);
+    else
+        gap(1);
+    if (s.has(FieldTemperature))
+        num(s.temperatureC);
+    else
+        gap(1);
+    if (s.has(FieldPosition)) { // double precision in HI81/HI83
+        for (double v : {s.latitudeDeg, s.longitudeDeg, s.altitudeM}) {
+            out += ',';
+            appendNumber(out, v);
+        }
+    } else {
+        gap(3);
+    }
+    vec(FieldVelocity, s.velEnu, 1.0);
+    out += '\n';
+}
+
+CaptureExporter::Result CaptureExporter::run(const QString &capturePath, const Options &options,
+                                             const Progress &progress)
+{
+    Result r;
+    if (options.output.isEmpty()) {
+        r.error = tr("No output file was given.");
+        return r;
+    }
+    if (!(options.toS >= options.fromS)) {
+        r.error = tr("The time range is empty (from %1 s to %2 s).").arg(options.fromS).arg(options.toS);
+        return r;
+    }
+    CaptureReader reader;
+    if (!reader.open(capturePath, &r.error))
+        return r;
+    const double total = double(std::max<qint64>(reader.size(), 1));
+    ExportSink sink(options, r);
+    CaptureDecoder decoder;
+    CaptureReader::Chunk c;
+    CaptureReader::Result res;
+    bool first = true;
+    qint64 nextReport = 0;
+    const int64_t fromNs = int64_t(options.fromS * 1e9);
+    const double toNs = options.toS * 1e9;
+    while ((res = reader.next(c)) == CaptureReader::Result::Chunk || res == CaptureReader::Result::Damaged) {
+        if (res == CaptureReader::Result::Damaged)
+            continue;
+        if (first) {
+            sink.firstNs = c.monotonicNs;
+            first = false;
+        }
+        const int64_t rel = c.monotonicNs - sink.firstNs;
+        if (double(rel) > toNs)
+            break;
+        if (rel >= fromNs && c.kind == capture::ChunkReceived)
+            decoder.feed(c.data, c.size, c.monotonicNs, sink);
+        if (sink.failed())
+            break;
+        if (progress && reader.position() >= nextReport) {
+            nextReport = reader.position() + (1 << 20);
+            if (!progress(double(reader.position()) / total)) {
+                r.cancelled = true;
+                sink.removeOutputs();
+                r.error = tr("Export cancelled.");
+                return r;
+            }
+        }
+    }
+    if (!sink.failed())
+        decoder.finish(sink);
+    if (res == CaptureReader::Result::Truncated)
+        r.warning = reader.message();
+    else if (reader.damagedChunks() > 0)
+        r.warning = tr("%n damaged chunk(s) were skipped", nullptr, int(reader.damagedChunks()));
+    r.ok = sink.finish();
+    if (progress && r.ok)
+        progress(1.0);
+    return r;
+}
+
+} // namespace imudesk::record

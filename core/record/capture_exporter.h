@@ -1,0 +1,55 @@
+#pragma once
+// Exports a capture (or a time range of it) to vendor CSV, tidy CSV or JSON Lines
+// (README, "CSV layouts"), streaming: the capture is read chunk by chunk and the output
+// written in 1 MB blocks, so memory does not grow with the file. Progress is reported as
+// a fraction of the capture read; returning false from it cancels (the partial outputs
+// are removed).
+#include "model/sample.h"
+
+#include <QCoreApplication>
+#include <QString>
+#include <QStringList>
+
+#include <functional>
+#include <limits>
+#include <optional>
+#include <string>
+
+namespace imudesk::record {
+
+class CaptureExporter {
+    Q_DECLARE_TR_FUNCTIONS(CaptureExporter)
+
+public:
+    enum class Format { VendorCsv, TidyCsv, JsonLines };
+    struct Options {
+        Format format = Format::TidyCsv;
+        // Output file; for vendor CSV the stem of one file per frame type:
+        // run.csv -> run_HI91.csv, run_HI81.csv, run_HI83.csv, run_NMEA.txt.
+        QString output;
+        double fromS = 0;                                     // seconds since the recording started
+        double toS = std::numeric_limits<double>::infinity(); // inclusive
+    };
+    struct Result {
+        bool ok = false;
+        bool cancelled = false;
+        QString error;
+        QString warning;         // e.g. the capture ends inside a chunk
+        QStringList files;
+        uint64_t frames = 0;     // rows/objects written (samples and NMEA sentences)
+        uint64_t skipped = 0;    // packets the format has no layout for (HI92 in vendor CSV)
+    };
+    // fraction 0..1; return false to cancel.
+    using Progress = std::function<bool(double fraction)>;
+
+    static Result run(const QString &capturePath, const Options &options, const Progress &progress = {});
+
+    static std::optional<Format> parseFormat(const QString &name); // "vendor-csv", "csv", "jsonl"
+    static QString vendorPath(const QString &output, const QString &type);
+
+    // The tidy CSV: one header row, time_s from the device clock, SI units in the names.
+    static const char *tidyHeader();
+    static void appendTidyRow(std::string &out, const model::Sample &s, int frameTag, double hostS);
+};
+
+} // namespace imudesk::record

@@ -1,0 +1,58 @@
+#pragma once
+// The header of a capture file (README, "Capture file format"): a string map with
+// well-known keys for the device identity, the link and the recording, plus the
+// device's configuration snapshot under "config.". Encoded as UTF-8 "key=value" lines.
+#include "model/device_identity.h"
+
+#include <QCoreApplication>
+#include <QMetaType>
+
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace imudesk::record {
+
+class CaptureHeader {
+    Q_DECLARE_TR_FUNCTIONS(CaptureHeader)
+
+public:
+    // Well-known keys.
+    static constexpr const char *kProduct = "device.product";
+    static constexpr const char *kFirmware = "device.firmware";
+    static constexpr const char *kBootloader = "device.bootloader";
+    static constexpr const char *kSerial = "device.serial";
+    static constexpr const char *kBuild = "device.build";
+    static constexpr const char *kLinkKind = "link.kind";   // "HiPNUC serial"
+    static constexpr const char *kPort = "link.port";
+    static constexpr const char *kBaud = "link.baud";
+    static constexpr const char *kStartedUtc = "capture.started_utc"; // ISO 8601
+    static constexpr const char *kPart = "capture.part";    // 0 for the first file of a split recording
+    static constexpr const char *kApplication = "capture.application";
+    static constexpr const char *kConfigPrefix = "config.";
+    static constexpr size_t kMaxBodyBytes = 1u << 20;
+
+    std::map<std::string, std::string> values;
+
+    std::string value(const std::string &key) const;
+    void set(const std::string &key, const std::string &v) { values[key] = v; }
+    void setIdentity(const model::DeviceIdentity &id);
+    model::DeviceIdentity identity() const;
+    int baud() const; // 0 when unknown
+    // The configuration snapshot (keys without the "config." prefix).
+    std::map<std::string, std::string> config() const;
+    void setConfig(const std::map<std::string, std::string> &kv);
+
+    // "key=value\n" per entry, keys sorted; '\\' and '\n' in keys and values escaped.
+    std::vector<uint8_t> encodeBody() const;
+    // Parses a body; false (with a message) on a line without '=' or a bad escape.
+    static bool decodeBody(const uint8_t *data, size_t n, CaptureHeader &out, QString *error);
+
+    friend bool operator==(const CaptureHeader &, const CaptureHeader &) = default;
+};
+
+} // namespace imudesk::record
+
+Q_DECLARE_METATYPE(imudesk::record::CaptureHeader)

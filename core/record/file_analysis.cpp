@@ -1,0 +1,67 @@
+#include "file_analysis.h"
+
+#include "record/capture_decoder.h"
+#include "record/capture_reader.h"
+#include "record/vendor_csv_importer.h"
+
+namespace imudesk::record {
+
+FileAnalysis::Outcome FileAnalysis::run(const QString &path, const std::string &frameType, double tauMax,
+                                        const std::function<bool(double)> &progress)
+{
+    Outcome o;
+    SampleAnalyzer analyzer(frameType);
+    if (CaptureReader::looksLikeCapture(path)) {
+        struct Sink : CaptureDecoder::Sink {
+            SampleAnalyzer *a = nullptr;
+            void onPacket(const protocol::hipnuc::Packet &p, int64_t) override { a->add(protocol::hipnuc::toSample(p)); }
+        } sink;
+        sink.a = &analyzer;
+        CaptureReader reader;
+        if (!reader.open(path, &o.error))
+            return o;
+        const double total = double(std::max<qint64>(reader.size(), 1));
+        CaptureDecoder decoder;
+        CaptureReader::Chunk c;
+        CaptureReader::Result r;
+        qint64 nextReport = 0;
+        while ((r = reader.next(c)) == CaptureReader::Result::Chunk || r == CaptureReader::Result::Damaged) {
+            if (r == CaptureReader::Result::Chunk && c.kind == capture::ChunkReceived)
+                decoder.feed(c.data, c.size, c.monotonicNs, sink);
+            if (progress && reader.position() >= nextReport) {
+                nextReport = reader.position() + (1 << 20);
+                if (!progress(double(reader.position()) / total)) {
+                    o.cancelled = true;
+                    o.error = tr("Analysis cancelled.");
+                    return o;
+                }
+            }
+        }
+        decoder.finish(sink);
+        if (r == CaptureReader::Result::Truncated)
+            o.warnings << reader.message();
+        if (reader.damagedChunks() > 0)
+            o.warnings << tr("%n damaged chunk(s) were skipped", nullptr, int(reader.damagedChunks()));
+    } else {
+        const auto r = VendorCsvImporter::read(path, [&](const model::Sample &s) { analyzer.add(s); });
+        if (!r.ok) {
+            o.error = tr("%1 (neither a capture file nor a vendor HI91 CSV)").arg(r.error);
+            return o;
+        }
+        for (const auto &e : r.errors)
+            o.warnings << e.message;
+        if (r.badLines > r.errors.size())
+            o.warnings << tr("%1 malformed lines in all").arg(r.badLines);
+    }
+    o.result = analyzer.finish(tauMax);
+    if (o.result.frames == 0) {
+        o.error = tr("%1 holds no IMU frames to analyse").arg(path);
+        return o;
+    }
+    if (progress)
+        progress(1.0);
+    o.ok = true;
+    return o;
+}
+
+} // namespace imudesk::record

@@ -1,0 +1,293 @@
+#include "replay_worker.h"
+
+#include "protocol/hipnuc/frame_decoder.h"
+
+#include <QFileInfo>
+
+#include <algorithm>
+#include <cstdio>
+#include <limits>
+
+namespace imudesk::record {
+
+namespace {
+constexpr int kPacedTickMs = 5;
+constexpr qint64 kMaxBusyMs = 20;          // as fast as possible: yield to the event loop this often
+constexpr int64_t kIndexStepNs = 50'000'000; // one index entry per 50 ms of capture
+constexpr int kStatsPeriodMs = 500;
+constexpr qint64 kPositionPeriodMs = 100;
+} // namespace
+
+ReplayWorker::ReplayWorker(device::SampleStore &store, QObject *parent) : QObject(parent), m_store(store)
+{
+    m_timer.setTimerType(Qt::PreciseTimer);
+    connect(&m_timer, &QTimer::timeout, this, &ReplayWorker::tick);
+    m_statsTimer.setInterval(kStatsPeriodMs);
+    connect(&m_statsTimer, &QTimer::timeout, this, &ReplayWorker::publishStats);
+}
+
+ReplayWorker::~ReplayWorker() = default;
+
+void ReplayWorker::open(const QString &path)
+{
+    close();
+    Q_EMIT stateChanged(device::SessionState::Opening, path);
+    QString error;
+    if (!m_reader.open(path, &error)) {
+        Q_EMIT stateChanged(device::SessionState::Failed, error);
+        Q_EMIT errorOccurred(error);
+        return;
+    }
+    // Index the timeline (one entry per kIndexStepNs) so that seeking reads little.
+    m_index.clear();
+    CaptureReader::Chunk c;
+    CaptureReader::Result r;
+    bool first = true;
+    int64_t lastNs = 0;
+    while ((r = m_reader.next(c)) == CaptureReader::Result::Chunk || r == CaptureReader::Result::Damaged) {
+        if (r != CaptureReader::Result::Chunk)
+            continue;
+        if (first) {
+            m_firstNs = c.monotonicNs;
+            first = false;
+        }
+        const int64_t rel = c.monotonicNs - m_firstNs;
+        if (m_index.empty() || rel - m_index.back().relNs >= kIndexStepNs)
+            m_index.push_back({c.offset, rel});
+        lastNs = std::max(lastNs, rel);
+    }
+    if (r == CaptureReader::Result::Truncated || m_reader.damagedChunks() > 0)
+        Q_EMIT errorOccurred(tr("%1: %2. Replaying what is intact.")
+                                 .arg(QFileInfo(path).fileName(),
+                                      m_reader.damagedChunks() > 0
+                                          ? tr("%n damaged chunk(s) skipped", nullptr, int(m_reader.damagedChunks()))
+                                          : m_reader.message()));
+    m_durationNs = lastNs;
+    m_reader.seek(m_reader.dataStart());
+    m_decoder.reset();
+    m_decoder.resetCounters();
+    m_gaps.clear();
+    m_posNs = 0;
+    m_open = true;
+    m_baud = m_reader.header().baud();
+    m_lastStats = device::SessionStats{};
+    m_statsClock.start();
+    m_lastStatsMs = 0;
+    m_statsTimer.start();
+    m_positionClock.start();
+    Q_EMIT stateChanged(device::SessionState::Connected, path);
+    Q_EMIT identityChanged(m_reader.header().identity());
+    Q_EMIT opened(double(m_durationNs) / 1e9, m_reader.header());
+    reportPosition(true);
+}
+
+void ReplayWorker::close()
+{
+    m_timer.stop();
+    m_statsTimer.stop();
+    setPlaying(false);
+    if (!m_open)
+        return;
+    publishStats();
+    m_reader.close();
+    m_open = false;
+    Q_EMIT stateChanged(device::SessionState::Closed, QString());
+}
+
+void ReplayWorker::setPlaying(bool on)
+{
+    if (m_playing == on)
+        return;
+    m_playing = on;
+    Q_EMIT playingChanged(on);
+}
+
+void ReplayWorker::anchor()
+{
+    m_anchorNs = m_posNs;
+    m_wall.restart();
+}
+
+void ReplayWorker::play()
+{
+    if (!m_open)
+        return;
+    if (m_posNs >= m_durationNs && !m_loop)
+        seekTo(0); // play again from the start
+    anchor();
+    setPlaying(true);
+    m_timer.start(m_speed > 0 ? kPacedTickMs : 0);
+}
+
+void ReplayWorker::pause()
+{
+    m_timer.stop();
+    setPlaying(false);
+    reportPosition(true);
+}
+
+void ReplayWorker::setSpeed(double factor)
+{
+    m_speed = factor;
+    anchor();
+    if (m_playing)
+        m_timer.start(m_speed > 0 ? kPacedTickMs : 0);
+}
+
+void ReplayWorker::setLoop(bool on)
+{
+    m_loop = on;
+}
+
+void ReplayWorker::seek(double seconds)
+{
+    if (!m_open)
+        return;
+    seekTo(std::clamp(int64_t(seconds * 1e9), int64_t(0), m_durationNs));
+    anchor();
+    reportPosition(true);
+}
+
+void ReplayWorker::seekTo(int64_t relNs)
+{
+    auto it = std::upper_bound(m_index.begin(), m_index.end(), relNs,
+                               [](int64_t t, const IndexEntry &e) { return t < e.relNs; });
+    m_reader.seek(it == m_index.begin() ? m_reader.dataStart() : std::prev(it)->offset);
+    m_decoder.reset();
+    m_gaps.resetTiming();
+    CaptureReader::Chunk c;
+    CaptureReader::Result r;
+    while ((r = m_reader.next(c)) == CaptureReader::Result::Chunk || r == CaptureReader::Result::Damaged) {
+        if (r == CaptureReader::Result::Chunk && c.monotonicNs - m_firstNs >= relNs) {
+            m_reader.seek(c.offset);
+            break;
+        }
+    }
+    m_posNs = relNs;
+}
+
+void ReplayWorker::tick()
+{
+    if (!m_playing || !m_open)
+        return;
+    QElapsedTimer busy;
+    busy.start();
+    const int64_t target = m_speed > 0 ? m_anchorNs + int64_t(double(m_wall.nsecsElapsed()) * m_speed)
+                                       : std::numeric_limits<int64_t>::max();
+    CaptureReader::Chunk c;
+    bool atEnd = false;
+    for (;;) {
+        if (m_speed <= 0 && busy.elapsed() >= kMaxBusyMs)
+            break;
+        const CaptureReader::Result r = m_reader.next(c);
+        if (r == CaptureReader::Result::Damaged)
+            continue;
+        if (r != CaptureReader::Result::Chunk) {
+            atEnd = true;
+            break;
+        }
+        const int64_t rel = c.monotonicNs - m_firstNs;
+        if (rel > target) {
+            m_reader.seek(c.offset);
+            break;
+        }
+        if (c.kind == capture::ChunkReceived)
+            m_decoder.feed(c.data, c.size, c.monotonicNs, *this);
+        m_posNs = std::max(m_posNs, rel);
+    }
+    if (atEnd) {
+        m_decoder.finish(*this);
+        m_posNs = m_durationNs;
+    } else if (m_speed > 0) {
+        m_posNs = std::clamp(target, m_posNs, m_durationNs);
+    }
+    flushBatch();
+    reportPosition(atEnd);
+    if (!atEnd)
+        return;
+    if (m_loop) {
+        seekTo(0);
+        anchor();
+        return;
+    }
+    m_timer.stop();
+    setPlaying(false);
+    publishStats();
+    Q_EMIT finished();
+}
+
+void ReplayWorker::onPacket(const protocol::hipnuc::Packet &packet, int64_t hostNs)
+{
+    m_batch.push_back(protocol::hipnuc::toSample(packet));
+    model::Sample &s = m_batch.back();
+    s.hostTimeNs = hostNs;
+    if (s.has(model::FieldDeviceTime))
+        m_gaps.add(s.source, s.deviceTimeMs);
+}
+
+void ReplayWorker::onNmea(const std::string &sentence, int64_t)
+{
+    Q_EMIT nmeaReceived(QString::fromStdString(sentence));
+}
+
+void ReplayWorker::flushBatch()
+{
+    if (m_batch.empty())
+        return;
+    m_store.append(m_batch);
+    m_batch.clear();
+    Q_EMIT samplesAppended(m_store.totalAppended());
+}
+
+void ReplayWorker::reportPosition(bool force)
+{
+    const qint64 now = m_positionClock.isValid() ? m_positionClock.elapsed() : 0;
+    if (!force && now - m_lastPositionMs < kPositionPeriodMs)
+        return;
+    m_lastPositionMs = now;
+    Q_EMIT positionChanged(double(m_posNs) / 1e9);
+}
+
+void ReplayWorker::publishStats()
+{
+    device::SessionStats s;
+    const auto &fc = m_decoder.demux().frameCounters();
+    const auto &dc = m_decoder.demux().counters();
+    s.bytesIn = fc.bytesIn;
+    s.frames = fc.frames;
+    s.crcErrors = fc.crcErrors;
+    s.lengthErrors = fc.lengthErrors;
+    s.bytesSkipped = fc.bytesSkipped;
+    s.nmeaSentences = dc.nmeaSentences;
+    s.nmeaErrors = dc.nmeaErrors;
+    s.payloadErrors = m_decoder.payloadErrors();
+    for (int tag = 0; tag < 256; ++tag) {
+        if (!fc.perTag[size_t(tag)])
+            continue;
+        char name[8];
+        std::snprintf(name, sizeof name, "HI%02X", tag);
+        s.framesByType[name] = fc.perTag[size_t(tag)];
+    }
+    if (dc.nmeaSentences)
+        s.framesByType["NMEA"] = dc.nmeaSentences;
+    s.framesLost = m_gaps.lost();
+    s.framesLostByType = m_gaps.lostByType();
+    s.deviceResets = m_gaps.resets();
+    s.baud = m_baud;
+    const qint64 nowMs = m_statsClock.isValid() ? m_statsClock.elapsed() : 0;
+    const double dt = double(nowMs - m_lastStatsMs) / 1000.0;
+    if (dt > 0.05) {
+        for (const auto &[name, count] : s.framesByType) {
+            const auto it = m_lastStats.framesByType.find(name);
+            const uint64_t before = it == m_lastStats.framesByType.end() ? 0 : it->second;
+            s.rateByType[name] = double(count >= before ? count - before : count) / dt;
+        }
+        s.bytesPerSecond = double(s.bytesIn >= m_lastStats.bytesIn ? s.bytesIn - m_lastStats.bytesIn : 0) / dt;
+        s.linkLoad = s.baud > 0 ? s.bytesPerSecond * 10.0 / s.baud : 0;
+        m_lastStats = s;
+        m_lastStatsMs = nowMs;
+    }
+    Q_EMIT statsUpdated(s);
+}
+
+} // namespace imudesk::record

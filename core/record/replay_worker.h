@@ -1,0 +1,86 @@
+#pragma once
+// The worker half of ReplaySession: reads a capture, paces its chunks on the host
+// clock (or as fast as possible), decodes them with CaptureDecoder and fills the
+// sample store. Runs in the replay's thread; never touched directly by other threads.
+#include "device/frame_gap_counter.h"
+#include "device/sample_store.h"
+#include "device/session_types.h"
+#include "record/capture_decoder.h"
+#include "record/capture_reader.h"
+
+#include <QElapsedTimer>
+#include <QObject>
+#include <QTimer>
+
+#include <vector>
+
+namespace imudesk::record {
+
+class ReplayWorker : public QObject, private CaptureDecoder::Sink {
+    Q_OBJECT
+public:
+    explicit ReplayWorker(device::SampleStore &store, QObject *parent = nullptr);
+    ~ReplayWorker() override;
+
+public Q_SLOTS:
+    void open(const QString &path);
+    void close();
+    void play();
+    void pause();
+    void setSpeed(double factor); // 0: as fast as possible
+    void seek(double seconds);
+    void setLoop(bool on);
+
+Q_SIGNALS:
+    void stateChanged(imudesk::device::SessionState state, const QString &detail);
+    void identityChanged(const imudesk::model::DeviceIdentity &identity);
+    void opened(double durationS, const imudesk::record::CaptureHeader &header);
+    void positionChanged(double seconds);
+    void playingChanged(bool playing);
+    void finished();
+    void statsUpdated(const imudesk::device::SessionStats &stats);
+    void samplesAppended(quint64 totalSamples);
+    void nmeaReceived(const QString &sentence);
+    void errorOccurred(const QString &message);
+
+private:
+    struct IndexEntry {
+        qint64 offset;
+        int64_t relNs; // chunk time since the first chunk
+    };
+    void onPacket(const protocol::hipnuc::Packet &packet, int64_t hostNs) override;
+    void onNmea(const std::string &sentence, int64_t hostNs) override;
+    void tick();
+    void seekTo(int64_t relNs);
+    void anchor();
+    void flushBatch();
+    void publishStats();
+    void reportPosition(bool force);
+    void setPlaying(bool on);
+
+    device::SampleStore &m_store;
+    CaptureReader m_reader;
+    CaptureDecoder m_decoder;
+    device::FrameGapCounter m_gaps;
+    std::vector<model::Sample> m_batch;
+    std::vector<IndexEntry> m_index;
+    int64_t m_firstNs = 0;
+    int64_t m_durationNs = 0;
+    int64_t m_posNs = 0;
+    int64_t m_anchorNs = 0;      // capture time at the anchor
+    QElapsedTimer m_wall;        // host time since the anchor
+    double m_speed = 1.0;
+    bool m_playing = false;
+    bool m_loop = false;
+    bool m_open = false;
+    int m_baud = 0;
+    QTimer m_timer{this};
+    QTimer m_statsTimer{this};
+    QElapsedTimer m_statsClock;
+    qint64 m_lastStatsMs = 0;
+    device::SessionStats m_lastStats;
+    qint64 m_lastPositionMs = -1000;
+    QElapsedTimer m_positionClock;
+};
+
+} // namespace imudesk::record

@@ -1,0 +1,78 @@
+#pragma once
+// Characterises a recording: per-channel mean, standard deviation, min and max; the
+// output rate and its jitter (a histogram of frame intervals from the device clock);
+// frames lost from gaps in system_time (device/frame_gap_counter.h); and the overlapping
+// Allan deviation of the gyro and accelerometer axes with the random walk at tau = 1 s,
+// the bias instability at the curve's minimum and the recording length a tau range needs.
+//
+// Samples of one frame type are analysed (the first type that carries gyro data, or the
+// one asked for). Statistics stream; the six IMU axes are kept as floats (24 bytes per
+// frame) for the Allan deviation.
+#include "device/frame_gap_counter.h"
+#include "model/sample.h"
+#include "record/allan_deviation.h"
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace imudesk::record {
+
+class SampleAnalyzer {
+public:
+    struct Channel {
+        std::string name;   // "acc_x", ...
+        std::string unit;   // "G", ...
+        uint64_t count = 0;
+        double mean = 0, std = 0, min = 0, max = 0;
+    };
+    struct Axis {
+        std::string name;   // "gyr_x", ...
+        std::string unit;
+        std::vector<AllanDeviation::Point> curve;
+        AllanDeviation::Summary summary;
+    };
+    struct HistogramBin {
+        double fromMs = 0, toMs = 0;
+        uint64_t count = 0;
+    };
+    struct Result {
+        std::string source;             // frame type analysed
+        uint64_t frames = 0;
+        double durationS = 0;           // device clock, first to last frame
+        double rateHz = 0;              // frames per second of device time
+        double intervalMeanMs = 0, intervalStdMs = 0, intervalMinMs = 0, intervalMaxMs = 0;
+        std::vector<HistogramBin> intervals;
+        uint64_t framesLost = 0;
+        uint64_t deviceResets = 0;
+        std::vector<Channel> channels;
+        std::vector<Axis> axes;         // gyr_x..z, acc_x..z
+        double tauMax = 0;              // the tau range asked for
+        double recommendedLengthS = 0;  // for tauMax at 10 % uncertainty
+    };
+
+    explicit SampleAnalyzer(std::string source = {}) : m_source(std::move(source)) {}
+    void add(const model::Sample &s);
+    // tauMax: the longest cluster time of interest (s), for the recommended length.
+    Result finish(double tauMax = 1000.0, int histogramBins = 20) const;
+
+private:
+    struct Running {
+        uint64_t n = 0;
+        double mean = 0, m2 = 0, min = 0, max = 0;
+        void add(double x);
+    };
+    static constexpr size_t kChannels = 14;
+
+    std::string m_source;
+    std::array<Running, kChannels> m_stats{};
+    std::array<std::vector<float>, 6> m_axes;
+    std::vector<float> m_intervals;  // ms
+    device::FrameGapCounter m_gaps;
+    uint64_t m_frames = 0;
+    bool m_haveTime = false;
+    double m_firstMs = 0, m_lastMs = 0;
+};
+
+} // namespace imudesk::record

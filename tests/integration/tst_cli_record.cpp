@@ -1,0 +1,187 @@
+// imudesk-cli record, export and analyze end to end against the simulator on a pseudo-terminal,
+// and a recording that hits a file size limit (ulimit -f) stops with a message and an intact file.
+#include "record/capture_reader.h"
+
+#include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include <csignal>
+
+using namespace imudesk;
+
+namespace {
+
+struct Result {
+    int code = -1;
+    QString out, err;
+};
+
+Result run(const QStringList &args, const QString &program = QStringLiteral(IMUDESK_CLI_PATH), int timeoutMs = 30000)
+{
+    QProcess p;
+    p.start(program, args);
+    Result r;
+    if (!p.waitForFinished(timeoutMs)) {
+        p.kill();
+        p.waitForFinished();
+        r.err = QStringLiteral("timed out");
+        return r;
+    }
+    r.code = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1;
+    r.out = QString::fromUtf8(p.readAllStandardOutput());
+    r.err = QString::fromUtf8(p.readAllStandardError());
+    return r;
+}
+
+// Chunks of a capture and how reading ended.
+std::pair<int, record::CaptureReader::Result> chunks(const QString &path)
+{
+    record::CaptureReader r;
+    QString error;
+    if (!r.open(path, &error))
+        return {-1, record::CaptureReader::Result::Error};
+    record::CaptureReader::Chunk c;
+    record::CaptureReader::Result res;
+    int n = 0;
+    while ((res = r.next(c)) == record::CaptureReader::Result::Chunk)
+        ++n;
+    return {n, res};
+}
+
+} // namespace
+
+class TstCliRecord : public QObject {
+    Q_OBJECT
+    QProcess m_sim;
+    QString m_pty;
+    QTemporaryDir m_dir;
+    QString m_capture;
+
+private Q_SLOTS:
+    void initTestCase()
+    {
+        m_sim.start(QStringLiteral(IMUDESK_CLI_PATH), {"simulate", "--pty", "--baud", "921600", "--seed", "4"});
+        QVERIFY(m_sim.waitForStarted());
+        QTRY_VERIFY_WITH_TIMEOUT(m_sim.canReadLine(), 10000);
+        const QString first = QString::fromUtf8(m_sim.readLine()).trimmed();
+        QVERIFY2(first.startsWith(QStringLiteral("pty: /dev/")), qPrintable(first));
+        m_pty = first.mid(5);
+        m_capture = m_dir.filePath(QStringLiteral("run.imucap"));
+    }
+
+    void cleanupTestCase()
+    {
+        ::kill(pid_t(m_sim.processId()), SIGTERM);
+        QVERIFY(m_sim.waitForFinished(5000));
+    }
+
+    void recordWritesCapture()
+    {
+        const auto r = run({"record", m_pty, "-o", m_capture, "--duration", "2", "--baud", "921600"});
+        QVERIFY2(r.code == 0, qPrintable(r.err));
+        QVERIFY(r.out.contains(QStringLiteral("recorded")));
+        record::CaptureReader reader;
+        QString error;
+        QVERIFY2(reader.open(m_capture, &error), qPrintable(error));
+        QCOMPARE(reader.header().baud(), 921600);
+        QCOMPARE(reader.header().identity().productName, std::string("HI14R3"));
+        QCOMPARE(reader.header().config().at("HI91"), std::string("ONTIME 0.01"));
+        const auto [n, end] = chunks(m_capture);
+        QVERIFY(n > 20);
+        QCOMPARE(end, record::CaptureReader::Result::End);
+    }
+
+    void exportFormats_data()
+    {
+        QTest::addColumn<QString>("format");
+        QTest::addColumn<QString>("file");
+        QTest::addColumn<QString>("firstLineStart");
+        QTest::newRow("vendor-csv") << "vendor-csv" << "v_HI91.csv" << "HI91,pc_counter,sys_time,";
+        QTest::newRow("csv") << "csv" << "v.csv" << "time_s,";
+        QTest::newRow("jsonl") << "jsonl" << "v.jsonl" << "{\"type\":\"HI91\"";
+    }
+    void exportFormats()
+    {
+        QFETCH(QString, format);
+        QFETCH(QString, file);
+        QFETCH(QString, firstLineStart);
+        const QString out = m_dir.filePath(file.startsWith(QLatin1String("v_")) ? QStringLiteral("v.csv") : file);
+        const auto r = run({"export", m_capture, "--format", format, "-o", out, "--from", "0.5", "--to", "1.5"});
+        QVERIFY2(r.code == 0, qPrintable(r.err));
+        QFile f(m_dir.filePath(file));
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        QVERIFY(f.readLine().startsWith(firstLineStart.toUtf8()));
+        int rows = 0;
+        while (!f.atEnd())
+            rows += !f.readLine().trimmed().isEmpty();
+        QVERIFY2(rows >= 90 && rows <= 110, qPrintable(QString::number(rows))); // 1 s at 100 Hz
+    }
+
+    void analyzeJson()
+    {
+        for (const QString &input : {m_capture, m_dir.filePath(QStringLiteral("v_HI91.csv"))}) {
+            const auto r = run({"analyze", input, "--json", "--tau-max", "10"});
+            QVERIFY2(r.code == 0, qPrintable(r.err));
+            const auto o = QJsonDocument::fromJson(r.out.toUtf8()).object();
+            QCOMPARE(o.value("source").toString(), QStringLiteral("HI91"));
+            QVERIFY(std::abs(o.value("rate_hz").toDouble() - 100.0) < 0.5);
+            QCOMPARE(o.value("frames_lost").toInt(), 0);
+            QVERIFY(o.value("channels").toObject().contains("gyr_z"));
+            QVERIFY(!o.value("allan").toObject().value("gyr_x").toObject().value("adev").toArray().isEmpty());
+            QCOMPARE(o.value("recommended_length_s").toDouble(), 510.0);
+        }
+    }
+
+    void badUsage_data()
+    {
+        QTest::addColumn<QStringList>("args");
+        QTest::newRow("record without -o") << QStringList{"record", "/dev/null"};
+        QTest::newRow("unknown format") << QStringList{"export", "x.imucap", "--format", "xls"};
+        QTest::newRow("analyze two files") << QStringList{"analyze", "a", "b"};
+    }
+    void badUsage()
+    {
+        QFETCH(QStringList, args);
+        QCOMPARE(run(args).code, 2);
+    }
+
+    void analyzeRejectsOtherFiles()
+    {
+        const QString path = m_dir.filePath(QStringLiteral("notes.txt"));
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write("hello\n");
+        f.close();
+        const auto r = run({"analyze", path});
+        QCOMPARE(r.code, 1);
+        QVERIFY(r.err.contains(QStringLiteral("neither a capture file nor a vendor HI91 CSV")));
+    }
+
+    void fileSizeLimitStopsRecording()
+    {
+        const QString prlimit = QStandardPaths::findExecutable(QStringLiteral("prlimit"));
+        if (prlimit.isEmpty())
+            QSKIP("prlimit (util-linux) is not installed");
+        const QString path = m_dir.filePath(QStringLiteral("limited.imucap"));
+        // 6 KiB: the header and a few hundred ms of HI91 at 100 Hz.
+        const auto r = run({"--fsize=6144", QStringLiteral(IMUDESK_CLI_PATH), "record", m_pty, "-o", path,
+                            "--duration", "10", "--baud", "921600"},
+                           prlimit);
+        QCOMPARE(r.code, 1);
+        QVERIFY2(r.err.contains(QStringLiteral("Recording stopped")), qPrintable(r.err));
+        QVERIFY(r.err.contains(QStringLiteral("free some disk space")));
+        QVERIFY(QFileInfo(path).size() <= 6144);
+        const auto [n, end] = chunks(path);
+        QVERIFY(n > 0);
+        QCOMPARE(end, record::CaptureReader::Result::End); // the partial chunk was cut off
+    }
+};
+
+QTEST_GUILESS_MAIN(TstCliRecord)
+#include "tst_cli_record.moc"

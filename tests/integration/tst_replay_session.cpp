@@ -1,0 +1,226 @@
+// Record from the simulator over a real pseudo-terminal, replay the capture through
+// ReplaySession and compare every decoded value with what the live session decoded from
+// the simulator's bytes; then paced playback, seek, loop, pause, and a missing file.
+#include "device/device_session.h"
+#include "record/capture_reader.h"
+#include "record/replay_session.h"
+#include "sim/pty_simulator.h"
+
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <QTest>
+
+using namespace imudesk;
+using device::DeviceSession;
+using device::SessionState;
+using record::ReplaySession;
+
+namespace {
+
+QString differences(const model::Sample &a, const model::Sample &b)
+{
+    QStringList d;
+    auto vec = [&](const char *name, const model::Vec3 &x, const model::Vec3 &y) {
+        if (!(x == y))
+            d << QLatin1String(name);
+    };
+    if (a.source != b.source)
+        d << QStringLiteral("source");
+    if (a.fields != b.fields)
+        d << QStringLiteral("fields");
+    if (a.mainStatus != b.mainStatus || a.insStatus != b.insStatus)
+        d << QStringLiteral("status");
+    if (a.deviceTimeMs != b.deviceTimeMs)
+        d << QStringLiteral("deviceTime");
+    vec("acc", a.acc, b.acc);
+    vec("gyr", a.gyr, b.gyr);
+    vec("mag", a.mag, b.mag);
+    vec("vel", a.velEnu, b.velEnu);
+    vec("hss", a.heaveSurgeSway, b.heaveSurgeSway);
+    if (a.roll != b.roll || a.pitch != b.pitch || a.yaw != b.yaw)
+        d << QStringLiteral("euler");
+    if (!(a.quat == b.quat))
+        d << QStringLiteral("quat");
+    if (a.pressurePa != b.pressurePa || a.temperatureC != b.temperatureC)
+        d << QStringLiteral("pressure/temperature");
+    if (a.latitudeDeg != b.latitudeDeg || a.longitudeDeg != b.longitudeDeg || a.altitudeM != b.altitudeM)
+        d << QStringLiteral("position");
+    if (a.inclinationX != b.inclinationX || a.inclinationY != b.inclinationY)
+        d << QStringLiteral("inclination");
+    return d.join(QLatin1Char(','));
+}
+
+} // namespace
+
+class TstReplaySession : public QObject {
+    Q_OBJECT
+    QTemporaryDir m_dir;
+    QString m_capture;
+    std::vector<model::Sample> m_live;
+    double m_duration = 0;
+
+    std::vector<model::Sample> playAll(ReplaySession &replay)
+    {
+        QSignalSpy finished(&replay, &ReplaySession::finished);
+        const uint64_t from = replay.store().totalAppended();
+        replay.setSpeed(ReplaySession::kAsFastAsPossible);
+        replay.play();
+        if (!finished.wait(20000))
+            return {};
+        return replay.store().since(from);
+    }
+
+private Q_SLOTS:
+    void initTestCase()
+    {
+        sim::SimOptions o;
+        o.baud = 921600;
+        o.motion = sim::Motion::Tumble;
+        o.seed = 5;
+        sim::PtySimulator simulator(o);
+        QString error;
+        QVERIFY2(simulator.start(&error), qPrintable(error));
+        DeviceSession session;
+        session.open(simulator.devicePath(), 921600);
+        QTRY_COMPARE_WITH_TIMEOUT(session.state(), SessionState::Connected, 10000);
+        QSignalSpy identity(&session, &DeviceSession::identityChanged);
+        QVERIFY(identity.wait(5000));
+        // HI91 at 200 Hz and HI81 at 20 Hz share the line.
+        QSignalSpy done(&session, &DeviceSession::commandFinished);
+        session.sendCommand(QStringLiteral("LOG HI91 ONTIME 0.005"));
+        session.sendCommand(QStringLiteral("LOG HI81 ONTIME 0.05"));
+        QTRY_COMPARE_WITH_TIMEOUT(done.size(), 2, 5000);
+        QTest::qWait(200);
+
+        m_capture = m_dir.filePath(QStringLiteral("sim.imucap"));
+        QSignalSpy started(&session, &DeviceSession::recordingStarted);
+        QSignalSpy stopped(&session, &DeviceSession::recordingStopped);
+        const uint64_t before = session.store().totalAppended();
+        session.startRecording(m_capture);
+        QVERIFY(started.wait(5000));
+        QTest::qWait(2000);
+        session.stopRecording();
+        QVERIFY(stopped.wait(5000));
+        QCOMPARE(stopped.at(0).at(0).toString(), QString()); // stopped as asked
+        m_live = session.store().since(before);
+        session.close();
+        simulator.stop();
+        QVERIFY(m_live.size() > 300);
+    }
+
+    void replayDecodesWhatTheLiveSessionDecoded()
+    {
+        ReplaySession replay;
+        QSignalSpy opened(&replay, &ReplaySession::opened);
+        QSignalSpy identity(&replay, &ReplaySession::identityChanged);
+        replay.open(m_capture);
+        QVERIFY(opened.wait(5000));
+        QCOMPARE(replay.state(), SessionState::Connected);
+        m_duration = opened.at(0).at(0).toDouble();
+        QVERIFY(m_duration > 1.8 && m_duration < 2.5);
+        const auto header = opened.at(0).at(1).value<record::CaptureHeader>();
+        QCOMPARE(header.baud(), 921600);
+        QCOMPARE(header.value(record::CaptureHeader::kLinkKind), std::string("HiPNUC serial"));
+        QCOMPARE(identity.size(), 1);
+        QCOMPARE(identity.at(0).at(0).value<model::DeviceIdentity>().productName, std::string("HI14R3"));
+
+        const auto replayed = playAll(replay);
+        QVERIFY(replayed.size() > 300);
+        // The recording began while the stream ran: find the first replayed sample live.
+        size_t offset = 0;
+        while (offset < m_live.size() && !differences(m_live[offset], replayed.front()).isEmpty())
+            ++offset;
+        QVERIFY2(offset < m_live.size(), "the first replayed sample was never decoded live");
+        size_t hi81 = 0;
+        for (size_t i = 0; i < replayed.size(); ++i) {
+            QVERIFY2(offset + i < m_live.size(), "replay decoded more samples than the live session");
+            const QString diff = differences(m_live[offset + i], replayed[i]);
+            QVERIFY2(diff.isEmpty(), qPrintable(QStringLiteral("sample %1 differs in %2").arg(i).arg(diff)));
+            hi81 += replayed[i].source == "HI81";
+        }
+        // Only the samples decoded between the last recorded byte and close() may be missing.
+        QVERIFY(m_live.size() - offset - replayed.size() < 20);
+        QVERIFY(hi81 > 20);
+    }
+
+    void pacedPlaybackFollowsSpeed_data()
+    {
+        QTest::addColumn<double>("speed");
+        QTest::newRow("2x") << 2.0;
+        QTest::newRow("10x") << 10.0;
+    }
+    void pacedPlaybackFollowsSpeed()
+    {
+        QFETCH(double, speed);
+        ReplaySession replay;
+        QSignalSpy opened(&replay, &ReplaySession::opened);
+        replay.open(m_capture);
+        QVERIFY(opened.wait(5000));
+        const double duration = opened.at(0).at(0).toDouble();
+        QSignalSpy finished(&replay, &ReplaySession::finished);
+        QSignalSpy position(&replay, &ReplaySession::positionChanged);
+        replay.setSpeed(speed);
+        QElapsedTimer t;
+        t.start();
+        replay.play();
+        QVERIFY(finished.wait(20000));
+        const double took = double(t.elapsed()) / 1000.0;
+        QVERIFY2(took > duration / speed * 0.8 && took < duration / speed * 1.5 + 0.2,
+                 qPrintable(QStringLiteral("took %1 s for %2 s at %3x").arg(took).arg(duration).arg(speed)));
+        QVERIFY(position.size() >= 2);
+        QCOMPARE(position.last().at(0).toDouble(), duration);
+    }
+
+    void seekPlaysFromThere()
+    {
+        ReplaySession replay;
+        QSignalSpy opened(&replay, &ReplaySession::opened);
+        replay.open(m_capture);
+        QVERIFY(opened.wait(5000));
+        const double duration = opened.at(0).at(0).toDouble();
+        const auto all = playAll(replay);
+        QSignalSpy position(&replay, &ReplaySession::positionChanged);
+        replay.seek(duration / 2);
+        QVERIFY(position.wait(2000));
+        QVERIFY(qAbs(position.last().at(0).toDouble() - duration / 2) < 1e-6);
+        const auto half = playAll(replay);
+        QVERIFY2(half.size() > all.size() * 4 / 10 && half.size() < all.size() * 6 / 10,
+                 qPrintable(QStringLiteral("%1 of %2").arg(half.size()).arg(all.size())));
+        // The second half is the tail of the whole replay.
+        QVERIFY(differences(half.back(), all.back()).isEmpty());
+        QVERIFY(differences(half[half.size() / 2], all[all.size() - half.size() + half.size() / 2]).isEmpty());
+    }
+
+    void loopsAndPauses()
+    {
+        ReplaySession replay;
+        QSignalSpy opened(&replay, &ReplaySession::opened);
+        replay.open(m_capture);
+        QVERIFY(opened.wait(5000));
+        const auto all = playAll(replay);
+        const uint64_t once = all.size();
+        replay.seek(0);
+        replay.setLoop(true);
+        QSignalSpy playing(&replay, &ReplaySession::playingChanged);
+        replay.play();
+        QTRY_VERIFY_WITH_TIMEOUT(replay.store().totalAppended() > 3 * once, 20000);
+        replay.pause();
+        QTRY_VERIFY(!playing.isEmpty() && !playing.last().at(0).toBool());
+        const uint64_t paused = replay.store().totalAppended();
+        QTest::qWait(100);
+        QCOMPARE(replay.store().totalAppended(), paused);
+    }
+
+    void missingFileFails()
+    {
+        ReplaySession replay;
+        QSignalSpy error(&replay, &ReplaySession::errorOccurred);
+        replay.open(m_dir.filePath(QStringLiteral("nope.imucap")));
+        QVERIFY(error.wait(5000));
+        QCOMPARE(replay.state(), SessionState::Failed);
+        QVERIFY(error.at(0).at(0).toString().contains(QStringLiteral("nope.imucap")));
+    }
+};
+
+QTEST_GUILESS_MAIN(TstReplaySession)
+#include "tst_replay_session.moc"
