@@ -22,6 +22,7 @@ void usage(FILE *to)
                "  simulate --pty [--model HI14] [--firmware 1.7.1] [--baud 115200]\n"
                "           [--motion static|spin|tumble] [--seed N]\n"
                "                                         serve a simulated device on a pseudo-terminal\n"
+               "  update PORT FILE [--baud B] [--json]   update the firmware (KBOOT), verified by read-back\n"
                "Run 'imudesk-cli COMMAND --help' for a command's options.\n",
                to);
 }
@@ -54,6 +55,7 @@ int main(int argc, char **argv)
         {QStringLiteral("ports"), cmdPorts},     {QStringLiteral("probe"), cmdProbe},
         {QStringLiteral("read"), cmdRead},       {QStringLiteral("send"), cmdSend},
         {QStringLiteral("decode"), cmdDecode},   {QStringLiteral("simulate"), cmdSimulate},
+        {QStringLiteral("update"), cmdUpdate},
     };
     const auto it = commands.find(cmd);
     if (it == commands.end()) {

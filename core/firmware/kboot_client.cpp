@@ -98,6 +98,7 @@ bool KbootClient::ping(int attempts, PingResponse *version, QString *error)
 
 bool KbootClient::sendCommand(const Command &c, QString *error)
 {
+    m_lastStatus = kStatusSuccess;
     flushInput();
     const auto bytes = encodeFramed(PacketType::Command, c.encode());
     ++m_counters.commands;

@@ -240,7 +240,6 @@ UpdateFlow::Result UpdateFlow::run(const FirmwareImage &image)
 {
     Result r;
     const int64_t t0 = m_link.nowUs();
-    m_cancel = false;
     setState(State::Checking);
     if (const QString e = checkImage(image, m_options.layout); !e.isEmpty())
         return finish(r, State::Failed, tr("refused before contacting the module: %1").arg(e));

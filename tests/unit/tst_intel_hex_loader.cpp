@@ -1,6 +1,7 @@
 // Intel HEX and .bin loading: record types 00-05, checksums, ordering, gaps, overlaps,
 // missing end record; every error names its line (hipnuc-protocol-notes.md 3.4).
 #include "protocol/ihex/intel_hex_loader.h"
+#include "protocol/ihex/intel_hex_writer.h"
 
 #include <QTemporaryDir>
 #include <QTest>
@@ -177,6 +178,32 @@ private Q_SLOTS:
         QVERIFY2(x.ok(), qPrintable(x.error));
         QCOMPARE(x.image->data, b.image->data);
         QVERIFY(!IntelHexLoader::loadFile(dir.filePath(QStringLiteral("missing.hex"))).ok());
+    }
+
+    void writerRoundTrip_data()
+    {
+        QTest::addColumn<uint>("start");
+        QTest::addColumn<int>("size");
+        QTest::newRow("small") << 0x8000u << 5;
+        QTest::newRow("crosses 64 KiB") << 0x0800FFF0u << 300;
+        QTest::newRow("at 0") << 0u << 70000;
+    }
+    void writerRoundTrip()
+    {
+        QFETCH(uint, start);
+        QFETCH(int, size);
+        FirmwareImage img;
+        img.startAddress = start;
+        img.entryPoint = 0x80C1;
+        for (int i = 0; i < size; ++i)
+            img.data.push_back(uint8_t(i * 7 + 3));
+        const std::string text = IntelHexWriter::write(img);
+        const auto r = IntelHexLoader::parseHex(text);
+        QVERIFY2(r.ok(), qPrintable(r.error));
+        QCOMPARE(r.image->startAddress, img.startAddress);
+        QCOMPARE(r.image->data, img.data);
+        QCOMPARE(r.image->entryPoint, img.entryPoint);
+        QCOMPARE(r.image->crc32(), img.crc32());
     }
 
     void crc32Check()
