@@ -7,6 +7,7 @@
 #include "sim/pty_simulator.h"
 
 #include <QCommandLineParser>
+#include <QEventLoop>
 #include <QFile>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -154,8 +155,13 @@ int cmdUpdate(const QStringList &args)
     updater.start(pos[0], image, o);
     waitFor([&] { return done || interrupted(); }, -1);
     if (!done) {
+        // Interrupted: stop between packets and wait for the flow to leave the module recoverable
+        // (waitFor() returns at once once a signal has arrived, so wait on the updater itself).
         updater.cancel();
-        waitFor([&] { return done; }, -1);
+        QEventLoop loop;
+        QObject::connect(&updater, &firmware::FirmwareUpdater::finished, &loop, &QEventLoop::quit);
+        if (!done)
+            loop.exec();
     }
     if (progressShown)
         std::fputs("\n", stderr);
