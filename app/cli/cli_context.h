@@ -9,6 +9,10 @@
 
 #include <functional>
 
+namespace imudesk::sim {
+class PtySimulator;
+}
+
 namespace imudesk::cli {
 
 enum ExitCode { ExitOk = 0, ExitFailure = 1, ExitUsage = 2, ExitInterrupted = 130 };
@@ -46,6 +50,11 @@ int cmdConfig(const QStringList &args); // commands_config.cpp
 int cmdRecord(const QStringList &args);
 int cmdExport(const QStringList &args);
 int cmdAnalyze(const QStringList &args);
+int cmdUpdate(const QStringList &args);
+
+// simulate --flash-dump FILE (commands_update.cpp)
+void addFlashDumpOption(QCommandLineParser &p);
+int writeFlashDump(sim::PtySimulator &simulator, const QCommandLineParser &p);
 
 // Parses args with the given parser; on error prints it and returns false.
 bool parseArgs(QCommandLineParser &p, const QStringList &args, const QString &usage);

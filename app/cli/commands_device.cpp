@@ -273,8 +273,10 @@ int cmdSimulate(const QStringList &args)
     p.addOption(QCommandLineOption(QStringLiteral("seed"), QStringLiteral("Random seed (default 1)."),
                                    QStringLiteral("N"), QStringLiteral("1")));
     addModbusSimulateOptions(p);
+    addFlashDumpOption(p);
     const QString usage = QStringLiteral("imudesk-cli simulate --pty [--model HI14] [--firmware 1.7.1] [--baud 115200] "
-                                         "[--motion static|spin|tumble] [--seed N] [--modbus [--device hec495] [--id N]]");
+                                         "[--motion static|spin|tumble] [--seed N] [--flash-dump FILE] "
+                                         "[--modbus [--device hec495] [--id N]]");
     if (!parseArgs(p, args, usage))
         return ExitUsage;
     if (!p.isSet(QStringLiteral("pty")))
@@ -311,8 +313,9 @@ int cmdSimulate(const QStringList &args)
         return fail(QStringLiteral("could not create a pseudo-terminal: %1").arg(error));
     out(QStringLiteral("pty: %1").arg(simulator.devicePath()));
     waitFor([] { return false; }, -1); // until SIGINT/SIGTERM
+    const int dumped = writeFlashDump(simulator, p);
     simulator.stop();
-    return ExitOk;
+    return dumped;
 }
 
 } // namespace imudesk::cli

@@ -33,6 +33,7 @@ void usage(FILE *to)
                "                                         serve a simulated Modbus RTU device\n"
                "  modbus PORT [--id N] [--baud B] info|read [REG [COUNT]]|scan|write REG VALUE [--json]\n"
                "                                         talk Modbus RTU to a module on RS-485\n"
+               "  update PORT FILE [--baud B] [--json]   update the firmware (KBOOT), verified by read-back\n"
                "Run 'imudesk-cli COMMAND --help' for a command's options.\n",
                to);
 }
@@ -69,6 +70,7 @@ int main(int argc, char **argv)
         {QStringLiteral("config"), cmdConfig},
         {QStringLiteral("record"), cmdRecord},   {QStringLiteral("export"), cmdExport},
         {QStringLiteral("analyze"), cmdAnalyze},
+        {QStringLiteral("update"), cmdUpdate},
     };
     const auto it = commands.find(cmd);
     if (it == commands.end()) {

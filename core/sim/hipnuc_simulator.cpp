@@ -83,6 +83,8 @@ HipnucSimulator::HipnucSimulator(SimOptions options)
     if (m_options.baud > 0)
         m_saved.baud = m_options.baud;
     m_running = m_saved;
+    m_bootloader.installApplication(KbootBootloader::makeApplication(m_firmware.toString(), kInitialAppSize,
+                                                                     m_options.seed));
     startApp(0);
 }
 
@@ -148,6 +150,17 @@ uint32_t HipnucSimulator::systemTimeMs() const
 
 void HipnucSimulator::startApp(int64_t t)
 {
+    if (!m_bootloader.applicationValid()) {
+        m_baud = m_saved.baud;
+        enterBootloader(t);
+        return;
+    }
+    if (const auto v = m_bootloader.applicationVersion()) {
+        if (const auto fw = model::FirmwareVersion::parse(*v)) {
+            m_firmware = *fw;
+            m_edition = m_firmware >= model::FirmwareVersion{1, 7, 1} ? ManualEdition::V171 : ManualEdition::V166;
+        }
+    }
     m_state = State::App;
     m_startUs = t;
     m_running = m_saved;
@@ -182,6 +195,32 @@ void HipnucSimulator::beginReset(State after, int64_t delayUs)
     m_line.clear();
 }
 
+void HipnucSimulator::enterBootloader(int64_t t)
+{
+    m_state = State::Bootloader;
+    m_bootloader.start(m_baud, t);
+    qCDebug(lcSim) << "bootloader at" << t << "us, baud" << m_baud;
+}
+
+void HipnucSimulator::runBootloader(int64_t t)
+{
+    const auto request = m_bootloader.runUntil(t);
+    for (auto &packet : m_bootloader.takeOutput())
+        enqueue(std::move(packet), false);
+    switch (request) {
+    case KbootBootloader::Request::None: break;
+    case KbootBootloader::Request::Reset:
+        m_baud = m_saved.baud;
+        beginReset(State::App, kRebootUs);
+        break;
+    case KbootBootloader::Request::PowerLoss:
+        dropUnsent(t);
+        m_baud = m_saved.baud;
+        beginReset(State::App, kPowerOffUs);
+        break;
+    }
+}
+
 void HipnucSimulator::powerCycle()
 {
     dropUnsent(m_nowUs);
@@ -206,6 +245,8 @@ int64_t HipnucSimulator::nextEventUs() const
     int64_t n = m_nextTickUs;
     if (m_state == State::Rebooting)
         n = std::min(n, m_resetDoneUs);
+    if (m_state == State::Bootloader)
+        n = std::min(n, m_bootloader.nextEventUs());
     if (m_state == State::App)
         for (size_t i = 0; i < kMessageCount; ++i)
             if (m_running.messages[i].mode == MessageSetting::Mode::OnTime)
@@ -232,14 +273,13 @@ void HipnucSimulator::runEventsAt(int64_t t)
 {
     if (m_state == State::Rebooting && t >= m_resetDoneUs) {
         dropUnsent(t);
-        if (m_afterReset == State::App) {
+        if (m_afterReset == State::App)
             startApp(t);
-        } else {
-            m_state = State::Bootloader;
-            m_blPrev = 0;
-            qCDebug(lcSim) << "bootloader at" << t << "us";
-        }
+        else
+            enterBootloader(t);
     }
+    if (m_state == State::Bootloader)
+        runBootloader(t);
     while (t >= m_nextTickUs) {
         tick(m_nextTickUs);
         m_nextTickUs += kTickUs;

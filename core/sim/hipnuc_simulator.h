@@ -37,8 +37,12 @@
 //   * In 6-axis modes (ATT MODE 0/4) the heading starts at 0 at every start.
 //   * SERIALCONFIG: OK is sent at the old baud, then baud() switches at once.
 //   * REBOOT: OK, kRebootUs of silence, then a restart from the saved configuration.
-//     REBOOT BL: OK, then (after kBootloaderEntryUs) the KBOOT bootloader: no output, ASCII
-//     ignored, "5A A6" ping answered; powerCycle() returns to the application.
+//     REBOOT BL: OK, then (after kBootloaderEntryUs) the KBOOT bootloader (sim/kboot_bootloader.h):
+//     no output, ASCII ignored, KBOOT packets answered at the current baud. Its Reset command,
+//     powerCycle() and a power loss restart the application if the flash holds a valid one,
+//     else the bootloader (at the saved baud). The application reports the version found in
+//     its image (KbootBootloader::kVersionMarker) as APP_VER; the initial image carries
+//     SimOptions::firmware.
 //   * FRESET: OK, factory defaults written to running and saved configuration, then REBOOT.
 //
 // LOG COMCONFIG reply (ImuDesk's simulator format; the manuals do not print one): one
@@ -71,6 +75,7 @@
 #include "model/mounting.h"
 #include "protocol/hipnuc/ascii_command.h"
 #include "protocol/hipnuc/payloads.h"
+#include "sim/kboot_bootloader.h"
 #include "sim/motion_model.h"
 #include "sim/sensor_model.h"
 
@@ -99,6 +104,8 @@ public:
     static constexpr size_t kTxBufferSize = 4096;
     static constexpr int64_t kRebootUs = 300000;
     static constexpr int64_t kBootloaderEntryUs = 20000;
+    static constexpr int64_t kPowerOffUs = 200000;        // power loss: off this long
+    static constexpr size_t kInitialAppSize = 64 * 1024;  // image in flash at construction
     static constexpr int64_t kTickUs = 10000;            // calibration bookkeeping
     static constexpr int64_t kWbConvUs = 3000000;         // WB_CONV after a start
     static constexpr int64_t kMagCalTimeoutUs = 120000000; // MCAL fails after this
@@ -165,6 +172,9 @@ public:
     int baud() const { return m_baud; }
     // Power off and on: restart the application from the saved configuration now.
     void powerCycle();
+    // The bootloader and its flash (fault injection, flash content).
+    KbootBootloader &bootloader() { return m_bootloader; }
+    const KbootBootloader &bootloader() const { return m_bootloader; }
     // A rising edge on SYNC_IN: one frame of every message configured ONMARK 1.
     void syncInPulse();
     // Test hook for link recovery: what SERIALCONFIG does to this UART after its OK.
@@ -258,7 +268,8 @@ private:
 
     // input
     void appByte(uint8_t c);
-    void bootloaderByte(uint8_t c);
+    void enterBootloader(int64_t t);
+    void runBootloader(int64_t t);
     void processLine(const std::string &line);
     Reply dispatch(const std::vector<std::string> &tok);
     Reply cmdConfig(const std::vector<std::string> &tok);
@@ -330,7 +341,7 @@ private:
     // input
     std::string m_line;
     bool m_lineOverflow = false;
-    uint8_t m_blPrev = 0;
+    KbootBootloader m_bootloader;
 
     // UART
     std::deque<Chunk> m_tx;

@@ -22,7 +22,7 @@ void HipnucSimulator::receive(const uint8_t *data, size_t n)
         switch (m_state) {
         case State::App: appByte(data[i]); break;
         case State::Rebooting: break; // nobody listens while the MCU resets
-        case State::Bootloader: bootloaderByte(data[i]); break;
+        case State::Bootloader: m_bootloader.receive(data + i, n - i, m_nowUs); return;
         }
     }
 }
@@ -46,21 +46,6 @@ void HipnucSimulator::appByte(uint8_t c)
         return;
     }
     m_line.push_back(char(c));
-}
-
-void HipnucSimulator::bootloaderByte(uint8_t c)
-{
-    if (m_blPrev == 0x5A && c == 0xA6) {
-        // KBOOT ping response: P2.0.0, options 0, CRC-16/XMODEM over the first 8 bytes.
-        std::vector<uint8_t> r = {0x5A, 0xA7, 0x00, 0x00, 0x02, 0x50, 0x00, 0x00};
-        const uint16_t crc = protocol::hipnuc::crc16(r.data(), r.size());
-        r.push_back(uint8_t(crc & 0xFF));
-        r.push_back(uint8_t(crc >> 8));
-        enqueue(std::move(r), false);
-        m_blPrev = 0;
-        return;
-    }
-    m_blPrev = c;
 }
 
 void HipnucSimulator::processLine(const std::string &line)
