@@ -40,6 +40,7 @@ int cmdDecode(const QStringList &args);
 int cmdSimulate(const QStringList &args);
 int cmdRecord(const QStringList &args);
 int cmdExport(const QStringList &args);
+int cmdImport(const QStringList &args);
 int cmdAnalyze(const QStringList &args);
 
 // Parses args with the given parser; on error prints it and returns false.
