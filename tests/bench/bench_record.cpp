@@ -126,9 +126,10 @@ int main(int argc, char **argv)
     }
     Counter counter;
     record::CaptureDecoder decoder;
+    decoder.configure(reader.header());
     record::CaptureReader::Chunk c;
     while (reader.next(c) == record::CaptureReader::Result::Chunk)
-        decoder.feed(c.data, c.size, c.monotonicNs, counter);
+        decoder.feedChunk(c, counter);
     decoder.finish(counter);
     const qint64 size = QFile(path).size();
     QFile::remove(path);

@@ -41,9 +41,10 @@ Decoded decodeCapture(const QString &path)
     QString error;
     r.open(path, &error);
     record::CaptureDecoder decoder;
+    decoder.configure(r.header());
     record::CaptureReader::Chunk c;
     while (r.next(c) == record::CaptureReader::Result::Chunk)
-        decoder.feed(c.data, c.size, c.monotonicNs, sink);
+        decoder.feedChunk(c, sink);
     decoder.finish(sink);
     return sink.d;
 }
@@ -169,6 +170,52 @@ private Q_SLOTS:
         const auto bad = record::CsvCaptureConverter::convert(m_capture, m_dir.filePath(QStringLiteral("bad.imucap")));
         QVERIFY(!bad.ok);
         QVERIFY(!QFile::exists(m_dir.filePath(QStringLiteral("bad.imucap"))));
+    }
+
+    void idleMarkersDecideLikeTheSession_data()
+    {
+        QTest::addColumn<bool>("markersRecorded");
+        QTest::addColumn<bool>("marker");  // a line-idle chunk between the two halves
+        QTest::addColumn<int>("gapMs");    // between the two halves of one frame
+        QTest::addColumn<int>("frames");
+        QTest::newRow("marker: released, frame broken") << true << true << 31 << 0;
+        QTest::newRow("no marker despite a pause: the session did not release") << true << false << 100 << 1;
+        QTest::newRow("older capture: a 100 ms pause releases") << false << false << 100 << 0;
+        QTest::newRow("older capture: 5 ms is no pause") << false << false << 5 << 1;
+    }
+    void idleMarkersDecideLikeTheSession()
+    {
+        QFETCH(bool, markersRecorded);
+        QFETCH(bool, marker);
+        QFETCH(int, gapMs);
+        QFETCH(int, frames);
+        struct Sink : record::CaptureDecoder::Sink {
+            int packets = 0;
+            void onPacket(const protocol::hipnuc::Packet &, int64_t) override { ++packets; }
+        } sink;
+        record::CaptureHeader h;
+        if (markersRecorded)
+            h.set(record::CaptureHeader::kIdleMarkers, "1");
+        record::CaptureDecoder d;
+        d.configure(h);
+        std::mt19937 rng(1);
+        const auto frame = protocol::hipnuc::buildFrame(protocol::hipnuc::encode(synthetic::hi91(0, rng, 100)));
+        auto chunk = [](record::capture::ChunkKind kind, int64_t ns, const uint8_t *p, size_t n) {
+            record::CaptureReader::Chunk c;
+            c.kind = kind;
+            c.monotonicNs = ns;
+            c.data = p;
+            c.size = n;
+            return c;
+        };
+        const uint8_t zero = 0;
+        d.feedChunk(chunk(record::capture::ChunkReceived, 0, frame.data(), 40), sink);
+        if (marker)
+            d.feedChunk(chunk(record::capture::ChunkLineIdle, 30'000'000, &zero, 1), sink);
+        d.feedChunk(chunk(record::capture::ChunkReceived, int64_t(gapMs) * 1'000'000, frame.data() + 40,
+                          frame.size() - 40),
+                    sink);
+        QCOMPARE(sink.packets, frames);
     }
 
     void tidyCsv()
