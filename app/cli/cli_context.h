@@ -49,6 +49,7 @@ int simulateModbus(const QCommandLineParser &p);
 int cmdConfig(const QStringList &args); // commands_config.cpp
 int cmdRecord(const QStringList &args);
 int cmdExport(const QStringList &args);
+int cmdImport(const QStringList &args);
 int cmdAnalyze(const QStringList &args);
 int cmdUpdate(const QStringList &args);
 

@@ -1,6 +1,8 @@
-// imudesk-cli export: a capture to vendor CSV, tidy CSV or JSON Lines (README, "CSV layouts").
+// imudesk-cli export: a capture to vendor CSV, tidy CSV or JSON Lines (README, "CSV layouts");
+// imudesk-cli import: a vendor HI91 CSV to a capture.
 #include "cli_context.h"
 #include "record/capture_exporter.h"
+#include "record/csv_capture_converter.h"
 
 #include <QFileInfo>
 
@@ -71,6 +73,39 @@ int cmdExport(const QStringList &args)
         out(QStringLiteral("wrote %1").arg(f));
     out(QStringLiteral("%1 rows%2").arg(r.frames).arg(
         r.skipped ? QStringLiteral(", %1 frames without a vendor layout (HI92) skipped").arg(r.skipped) : QString()));
+    return ExitOk;
+}
+
+} // namespace imudesk::cli
+
+namespace imudesk::cli {
+
+int cmdImport(const QStringList &args)
+{
+    QCommandLineParser p;
+    p.addOption(QCommandLineOption({QStringLiteral("o"), QStringLiteral("output")},
+                                   QStringLiteral("Capture file to write (default: the CSV's name with .imucap)."),
+                                   QStringLiteral("OUT")));
+    p.addPositionalArgument(QStringLiteral("CSV"), QStringLiteral("HI91 CSV written by the vendor's PC tool."));
+    if (!parseArgs(p, args, QStringLiteral("imudesk-cli import CSV [-o OUT.imucap]")))
+        return ExitUsage;
+    if (p.positionalArguments().size() != 1)
+        return fail(QStringLiteral("import needs exactly one CSV file"), ExitUsage);
+    const QString input = p.positionalArguments().front();
+    QString output = p.value(QStringLiteral("o"));
+    if (output.isEmpty()) {
+        const QFileInfo info(input);
+        output = info.path() + QLatin1Char('/') + info.completeBaseName() + QStringLiteral(".imucap");
+    }
+    const auto r = record::CsvCaptureConverter::convert(input, output);
+    for (const auto &e : r.import.errors)
+        std::fprintf(stderr, "imudesk-cli: %s\n", qPrintable(e.message));
+    if (!r.ok)
+        return fail(r.error);
+    out(QStringLiteral("wrote %1: %2 frames, %3 malformed lines left out")
+            .arg(output)
+            .arg(r.import.samples)
+            .arg(r.import.badLines));
     return ExitOk;
 }
 

@@ -24,6 +24,7 @@ void usage(FILE *to)
                "  record PORT -o FILE [--duration S] [--baud B]  record what the device sends to a capture file\n"
                "  export FILE --format vendor-csv|csv|jsonl [-o OUT] [--from S --to S]\n"
                "                                         export a capture (or a time range of it)\n"
+               "  import CSV [-o OUT.imucap]             turn a vendor HI91 CSV into a capture\n"
                "  analyze FILE [--json]                  statistics, output rate, Allan deviation of a capture or\n"
                "                                         vendor CSV\n"
                "  simulate --pty [--model HI14] [--firmware 1.7.1] [--baud 115200]\n"
@@ -69,7 +70,7 @@ int main(int argc, char **argv)
         {QStringLiteral("modbus"), cmdModbus},
         {QStringLiteral("config"), cmdConfig},
         {QStringLiteral("record"), cmdRecord},   {QStringLiteral("export"), cmdExport},
-        {QStringLiteral("analyze"), cmdAnalyze},
+        {QStringLiteral("analyze"), cmdAnalyze}, {QStringLiteral("import"), cmdImport},
         {QStringLiteral("update"), cmdUpdate},
     };
     const auto it = commands.find(cmd);

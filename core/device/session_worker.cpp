@@ -274,6 +274,8 @@ void SessionWorker::onBytes(const QByteArray &bytes)
 
 void SessionWorker::onLineIdle()
 {
+    if (m_recorder)
+        m_recorder->appendLineIdle(monotonicNs(), QDateTime::currentMSecsSinceEpoch() * 1000);
     m_events.clear();
     m_demux.flushPending(m_events);
     m_demux.endQuarantine(); // the line went quiet: the next byte starts something new
@@ -361,6 +363,7 @@ void SessionWorker::startRecording(const QString &path, const record::CaptureHea
     h.set(record::CaptureHeader::kBaud, std::to_string(m_transport ? m_transport->baud() : 0));
     h.set(record::CaptureHeader::kStartedUtc,
           QDateTime::currentDateTimeUtc().toString(Qt::ISODateWithMs).toStdString());
+    h.set(record::CaptureHeader::kIdleMarkers, "1");
     h.set(record::CaptureHeader::kApplication,
           (QCoreApplication::applicationName() + QLatin1Char(' ') + QCoreApplication::applicationVersion())
               .trimmed()

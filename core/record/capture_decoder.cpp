@@ -5,14 +5,39 @@ namespace imudesk::record {
 namespace hp = protocol::hipnuc;
 using protocol::StreamEvent;
 
+void CaptureDecoder::configure(const CaptureHeader &header)
+{
+    m_timedIdle = header.value(CaptureHeader::kIdleMarkers) != "1";
+}
+
+void CaptureDecoder::feedChunk(const CaptureReader::Chunk &chunk, Sink &sink)
+{
+    switch (chunk.kind) {
+    case capture::ChunkReceived:
+        feed(chunk.data, chunk.size, chunk.monotonicNs, sink);
+        break;
+    case capture::ChunkLineIdle:
+        lineIdle(chunk.monotonicNs, sink);
+        break;
+    default:
+        break; // a kind this version does not know
+    }
+}
+
+void CaptureDecoder::lineIdle(int64_t hostNs, Sink &sink)
+{
+    if (m_demux.pendingBytes() == 0)
+        return; // as the session: its idle timer runs only while bytes are held
+    m_events.clear();
+    m_demux.flushPending(m_events);
+    m_demux.endQuarantine();
+    dispatch(hostNs, sink);
+}
+
 void CaptureDecoder::feed(const uint8_t *data, size_t n, int64_t hostNs, Sink &sink)
 {
-    if (m_haveLast && hostNs - m_lastNs >= kLineIdleNs && m_demux.pendingBytes() > 0) {
-        m_events.clear();
-        m_demux.flushPending(m_events);
-        m_demux.endQuarantine();
-        dispatch(m_lastNs + kLineIdleNs, sink);
-    }
+    if (m_timedIdle && m_haveLast && hostNs - m_lastNs >= kLineIdleNs)
+        lineIdle(m_lastNs + kLineIdleNs, sink);
     m_lastNs = hostNs;
     m_haveLast = true;
     m_events.clear();

@@ -6,6 +6,7 @@
 // ends the text quarantine exactly as the session's idle timer does, so a replay decodes
 // what the live session decoded. Plain value class.
 #include "protocol/hipnuc/payloads.h"
+#include "record/capture_reader.h"
 #include "protocol/stream/stream_demux.h"
 
 #include <cstdint>
@@ -26,8 +27,15 @@ public:
         virtual void onLine(const std::string & /*line*/, int64_t /*hostNs*/) {}
     };
 
+    // Follows the capture's header: with idle markers recorded, the markers release held
+    // bytes (exactly where the live session did) and pauses between chunks do not.
+    void configure(const CaptureHeader &header);
+    // One chunk of a capture, whatever its kind.
+    void feedChunk(const CaptureReader::Chunk &chunk, Sink &sink);
     // Bytes that arrived at hostNs (host monotonic clock).
     void feed(const uint8_t *data, size_t n, int64_t hostNs, Sink &sink);
+    // The line went idle at hostNs: release what an unfinished candidate holds.
+    void lineIdle(int64_t hostNs, Sink &sink);
     // End of the capture: releases whatever is held.
     void finish(Sink &sink);
     // Forgets partial frames and lines (after a seek); counters are kept.
@@ -44,6 +52,7 @@ private:
     std::vector<protocol::StreamEvent> m_events;
     int64_t m_lastNs = 0;
     bool m_haveLast = false;
+    bool m_timedIdle = true; // no markers recorded: infer idle lines from pauses between chunks
     uint64_t m_payloadErrors = 0;
 };
 

@@ -312,6 +312,7 @@ CaptureExporter::Result CaptureExporter::run(const QString &capturePath, const O
     const double total = double(std::max<qint64>(reader.size(), 1));
     ExportSink sink(options, r);
     CaptureDecoder decoder;
+    decoder.configure(reader.header());
     CaptureReader::Chunk c;
     CaptureReader::Result res;
     bool first = true;
@@ -328,8 +329,8 @@ CaptureExporter::Result CaptureExporter::run(const QString &capturePath, const O
         const int64_t rel = c.monotonicNs - sink.firstNs;
         if (double(rel) > toNs)
             break;
-        if (rel >= fromNs && c.kind == capture::ChunkReceived)
-            decoder.feed(c.data, c.size, c.monotonicNs, sink);
+        if (rel >= fromNs)
+            decoder.feedChunk(c, sink);
         if (sink.failed())
             break;
         if (progress && reader.position() >= nextReport) {

@@ -30,6 +30,7 @@ inline constexpr uint32_t kMaxChunkPayload = 16u << 20;
 
 enum ChunkKind : uint16_t {
     ChunkReceived = 0, // bytes received from the device, exactly as they arrived
+    ChunkLineIdle = 1, // the session found the line idle here and released held bytes (payload: one 0 byte)
 };
 
 std::vector<uint8_t> encodeFileHeader(const CaptureHeader &header);

@@ -31,6 +31,8 @@ public:
     static constexpr const char *kStartedUtc = "capture.started_utc"; // ISO 8601
     static constexpr const char *kPart = "capture.part";    // 0 for the first file of a split recording
     static constexpr const char *kApplication = "capture.application";
+    // "1": the recorder marked every idle-line release (ChunkLineIdle), so a replay decodes exactly as live.
+    static constexpr const char *kIdleMarkers = "capture.idle_markers";
     static constexpr const char *kConfigPrefix = "config.";
     static constexpr size_t kMaxBodyBytes = 1u << 20;
 

@@ -127,7 +127,7 @@ bool CaptureWriter::append(const char *data, size_t n, int64_t monotonicNs, int6
     // Chunks are bounded by the format; a larger read is split (never happens with a UART).
     for (size_t off = 0; off < n; off += capture::kMaxChunkPayload) {
         const size_t len = std::min<size_t>(n - off, capture::kMaxChunkPayload);
-        m_queue.push_back(Pending{monotonicNs, wallUs, QByteArray(data + off, qsizetype(len))});
+        m_queue.push_back(Pending{capture::ChunkReceived, monotonicNs, wallUs, QByteArray(data + off, qsizetype(len))});
         m_queuedBytes += len;
     }
     if (m_queuedBytes > m_options.maxQueueBytes) {
@@ -138,6 +138,17 @@ bool CaptureWriter::append(const char *data, size_t n, int64_t monotonicNs, int6
                                 "Record to a faster disk.")
                                  .arg(m_options.maxQueueBytes >> 20);
     }
+    m_wake.notify_one();
+    return true;
+}
+
+bool CaptureWriter::appendLineIdle(int64_t monotonicNs, int64_t wallUs)
+{
+    std::lock_guard lock(m_mutex);
+    if (!m_status.running || m_stopRequested)
+        return false;
+    m_queue.push_back(Pending{capture::ChunkLineIdle, monotonicNs, wallUs, QByteArray(1, '\0')});
+    m_queuedBytes += 1;
     m_wake.notify_one();
     return true;
 }
@@ -218,7 +229,7 @@ void CaptureWriter::run()
                 m_partStartNs = p.monotonicNs;
             }
             encoded.clear();
-            capture::appendChunk(encoded, capture::ChunkReceived, p.monotonicNs, p.wallUs,
+            capture::appendChunk(encoded, p.kind, p.monotonicNs, p.wallUs,
                                  reinterpret_cast<const uint8_t *>(p.bytes.constData()), size_t(p.bytes.size()));
             if (!writeAll(encoded.data(), encoded.size())) {
                 error = tr("Recording stopped: writing %1 failed (%2). Everything up to that point is in the file; "

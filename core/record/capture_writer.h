@@ -11,6 +11,7 @@
 //
 // Optional split: a new file (same header, capture.part incremented, name "-001" etc.
 // before the suffix) once a file exceeds splitBytes or spans splitSeconds.
+#include "record/capture_format.h"
 #include "record/capture_header.h"
 
 #include <QCoreApplication>
@@ -65,6 +66,8 @@ public:
     bool start(const QString &path, const CaptureHeader &header, const Options &options, QString *error);
     // Queues bytes received at the given host times. False once recording has stopped.
     bool append(const char *data, size_t n, int64_t monotonicNs, int64_t wallUs);
+    // Marks where the session found the line idle (capture::ChunkLineIdle).
+    bool appendLineIdle(int64_t monotonicNs, int64_t wallUs);
     // Writes what is queued, closes the file and joins the thread. Returns the error, if any.
     QString stop();
     Status status() const;
@@ -74,6 +77,7 @@ public:
 
 private:
     struct Pending {
+        capture::ChunkKind kind;
         int64_t monotonicNs;
         int64_t wallUs;
         QByteArray bytes;

@@ -22,12 +22,13 @@ FileAnalysis::Outcome FileAnalysis::run(const QString &path, const std::string &
             return o;
         const double total = double(std::max<qint64>(reader.size(), 1));
         CaptureDecoder decoder;
+        decoder.configure(reader.header());
         CaptureReader::Chunk c;
         CaptureReader::Result r;
         qint64 nextReport = 0;
         while ((r = reader.next(c)) == CaptureReader::Result::Chunk || r == CaptureReader::Result::Damaged) {
-            if (r == CaptureReader::Result::Chunk && c.kind == capture::ChunkReceived)
-                decoder.feed(c.data, c.size, c.monotonicNs, sink);
+            if (r == CaptureReader::Result::Chunk)
+                decoder.feedChunk(c, sink);
             if (progress && reader.position() >= nextReport) {
                 nextReport = reader.position() + (1 << 20);
                 if (!progress(double(reader.position()) / total)) {

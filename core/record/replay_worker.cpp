@@ -66,6 +66,7 @@ void ReplayWorker::open(const QString &path)
     m_reader.seek(m_reader.dataStart());
     m_decoder.reset();
     m_decoder.resetCounters();
+    m_decoder.configure(m_reader.header());
     m_gaps.clear();
     m_posNs = 0;
     m_open = true;
@@ -191,8 +192,7 @@ void ReplayWorker::tick()
             m_reader.seek(c.offset);
             break;
         }
-        if (c.kind == capture::ChunkReceived)
-            m_decoder.feed(c.data, c.size, c.monotonicNs, *this);
+        m_decoder.feedChunk(c, *this);
         m_posNs = std::max(m_posNs, rel);
     }
     if (atEnd) {

@@ -85,7 +85,7 @@ double referenceExport(const QString &capture, const QString &output, uint64_t *
             sink.firstNs = c.monotonicNs;
             first = false;
         }
-        decoder.feed(c.data, c.size, c.monotonicNs, sink);
+        decoder.feedChunk(c, sink);
     }
     decoder.finish(sink);
     std::fclose(sink.out);

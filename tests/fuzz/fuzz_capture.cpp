@@ -53,6 +53,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     FUZZ_CHECK(reader.dataStart() <= qint64(size));
 
     CaptureDecoder decoder;
+    decoder.configure(reader.header());
     CountingSink sink;
     CaptureReader::Chunk c;
     CaptureReader::Result r;
@@ -76,7 +77,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         capture::appendChunk(encoded, c.kind, c.monotonicNs, c.wallUs, c.data, c.size);
         FUZZ_CHECK(std::memcmp(encoded.data(), data + c.offset, encoded.size()) == 0);
         lastEnd = end;
-        decoder.feed(c.data, c.size, c.monotonicNs, sink);
+        decoder.feedChunk(c, sink);
     }
     decoder.finish(sink);
     FUZZ_CHECK(r == CaptureReader::Result::End || r == CaptureReader::Result::Truncated);

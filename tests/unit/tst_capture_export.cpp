@@ -6,6 +6,7 @@
 #include "record/capture_decoder.h"
 #include "record/capture_exporter.h"
 #include "record/capture_reader.h"
+#include "record/csv_capture_converter.h"
 #include "record/vendor_csv.h"
 #include "record/vendor_csv_importer.h"
 
@@ -40,9 +41,10 @@ Decoded decodeCapture(const QString &path)
     QString error;
     r.open(path, &error);
     record::CaptureDecoder decoder;
+    decoder.configure(r.header());
     record::CaptureReader::Chunk c;
     while (r.next(c) == record::CaptureReader::Result::Chunk)
-        decoder.feed(c.data, c.size, c.monotonicNs, sink);
+        decoder.feedChunk(c, sink);
     decoder.finish(sink);
     return sink.d;
 }
@@ -140,6 +142,80 @@ private Q_SLOTS:
             QCOMPARE(b.pressurePa, a.pressurePa);
             QVERIFY(std::abs(b.hostTimeNs - (a.hostTimeNs - firstNs)) <= 1);
         }
+    }
+
+    void vendorCsvConvertsToCapture()
+    {
+        // An old log becomes a capture that decodes to the same values (status aside).
+        CaptureExporter::Options o;
+        o.format = CaptureExporter::Format::VendorCsv;
+        o.output = m_dir.filePath(QStringLiteral("old.csv"));
+        QVERIFY(CaptureExporter::run(m_capture, o).ok);
+        const QString converted = m_dir.filePath(QStringLiteral("old.imucap"));
+        const auto r = record::CsvCaptureConverter::convert(m_dir.filePath(QStringLiteral("old_HI91.csv")), converted);
+        QVERIFY2(r.ok, qPrintable(r.error));
+        QCOMPARE(r.import.samples, uint64_t(3000));
+        const Decoded back = decodeCapture(converted);
+        std::vector<model::Sample> want;
+        for (const auto &s : m_decoded.samples)
+            if (s.source == "HI91")
+                want.push_back(s);
+        QCOMPARE(back.samples.size(), want.size());
+        for (size_t i = 0; i < want.size(); ++i) {
+            model::Sample a = want[i];
+            a.mainStatus = 0;
+            QCOMPARE(format::sampleToJson(back.samples[i]), format::sampleToJson(a));
+        }
+        // Not a vendor CSV: nothing is left behind.
+        const auto bad = record::CsvCaptureConverter::convert(m_capture, m_dir.filePath(QStringLiteral("bad.imucap")));
+        QVERIFY(!bad.ok);
+        QVERIFY(!QFile::exists(m_dir.filePath(QStringLiteral("bad.imucap"))));
+    }
+
+    void idleMarkersDecideLikeTheSession_data()
+    {
+        QTest::addColumn<bool>("markersRecorded");
+        QTest::addColumn<bool>("marker");  // a line-idle chunk between the two halves
+        QTest::addColumn<int>("gapMs");    // between the two halves of one frame
+        QTest::addColumn<int>("frames");
+        QTest::newRow("marker: released, frame broken") << true << true << 31 << 0;
+        QTest::newRow("no marker despite a pause: the session did not release") << true << false << 100 << 1;
+        QTest::newRow("older capture: a 100 ms pause releases") << false << false << 100 << 0;
+        QTest::newRow("older capture: 5 ms is no pause") << false << false << 5 << 1;
+    }
+    void idleMarkersDecideLikeTheSession()
+    {
+        QFETCH(bool, markersRecorded);
+        QFETCH(bool, marker);
+        QFETCH(int, gapMs);
+        QFETCH(int, frames);
+        struct Sink : record::CaptureDecoder::Sink {
+            int packets = 0;
+            void onPacket(const protocol::hipnuc::Packet &, int64_t) override { ++packets; }
+        } sink;
+        record::CaptureHeader h;
+        if (markersRecorded)
+            h.set(record::CaptureHeader::kIdleMarkers, "1");
+        record::CaptureDecoder d;
+        d.configure(h);
+        std::mt19937 rng(1);
+        const auto frame = protocol::hipnuc::buildFrame(protocol::hipnuc::encode(synthetic::hi91(0, rng, 100)));
+        auto chunk = [](record::capture::ChunkKind kind, int64_t ns, const uint8_t *p, size_t n) {
+            record::CaptureReader::Chunk c;
+            c.kind = kind;
+            c.monotonicNs = ns;
+            c.data = p;
+            c.size = n;
+            return c;
+        };
+        const uint8_t zero = 0;
+        d.feedChunk(chunk(record::capture::ChunkReceived, 0, frame.data(), 40), sink);
+        if (marker)
+            d.feedChunk(chunk(record::capture::ChunkLineIdle, 30'000'000, &zero, 1), sink);
+        d.feedChunk(chunk(record::capture::ChunkReceived, int64_t(gapMs) * 1'000'000, frame.data() + 40,
+                          frame.size() - 40),
+                    sink);
+        QCOMPARE(sink.packets, frames);
     }
 
     void tidyCsv()

@@ -1,0 +1,71 @@
+// AnalysisWindow offscreen: analysing a generated capture fills the statistics table, the
+// summary (rate, random walk, bias instability, recommended length), the interval histogram
+// and the log-log Allan chart; a file that is no recording is reported.
+#include "../common/synthetic_capture.h"
+#include "analysis_window.h"
+
+#include <QAbstractSeries>
+#include <QBarSeries>
+#include <QChart>
+#include <QLogValueAxis>
+#include <QSignalSpy>
+#include <QTableWidget>
+#include <QTemporaryDir>
+#include <QTest>
+
+using namespace imudesk;
+using ui::AnalysisWindow;
+
+class TstAnalysisWindow : public QObject {
+    Q_OBJECT
+    QTemporaryDir m_dir;
+
+private Q_SLOTS:
+    void analysesACapture()
+    {
+        const QString path = m_dir.filePath(QStringLiteral("noise.imucap"));
+        synthetic::CaptureSpec spec;
+        spec.frames = 20000; // 20 s at 1 kHz
+        QVERIFY(synthetic::writeCapture(path, spec) > 0);
+        AnalysisWindow w;
+        QSignalSpy done(&w, &AnalysisWindow::analysisFinished);
+        w.analyzeFile(path, 100.0);
+        QVERIFY(done.wait(20000));
+        QVERIFY2(done.at(0).at(0).toBool(), qPrintable(done.at(0).at(1).toString()));
+        QTableWidget *t = w.statsTable();
+        QCOMPARE(t->rowCount(), 14);
+        QCOMPARE(t->item(0, 0)->text(), QStringLiteral("acc_x"));
+        QCOMPARE(t->item(2, 1)->text(), QStringLiteral("G"));
+        QVERIFY(std::abs(t->item(2, 2)->text().toDouble() - 1.0) < 0.01); // acc_z mean ~ 1 G
+        QVERIFY(w.summaryText().contains(QStringLiteral("output rate 1000.00 Hz")));
+        QVERIFY(w.summaryText().contains(QStringLiteral("ARW")));
+        QVERIFY(w.summaryText().contains(QStringLiteral("1.4 h"))); // 51 x 100 s
+        QCOMPARE(w.histogramChart()->series().size(), 1);
+        QVERIFY(qobject_cast<QBarSeries *>(w.histogramChart()->series().front()));
+        QCOMPARE(w.allanChart()->series().size(), 6);
+        QCOMPARE(w.allanChart()->axes(Qt::Horizontal).size(), 1);
+        QVERIFY(qobject_cast<QLogValueAxis *>(w.allanChart()->axes(Qt::Horizontal).front()));
+        QVERIFY(qobject_cast<QLogValueAxis *>(w.allanChart()->axes(Qt::Vertical).front()));
+        w.resize(1000, 700);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+    }
+
+    void reportsOtherFiles()
+    {
+        const QString path = m_dir.filePath(QStringLiteral("notes.txt"));
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write("not a recording\n");
+        f.close();
+        AnalysisWindow w;
+        QSignalSpy done(&w, &AnalysisWindow::analysisFinished);
+        w.analyzeFile(path);
+        QVERIFY(done.wait(5000));
+        QCOMPARE(done.at(0).at(0).toBool(), false);
+        QVERIFY(w.summaryText().contains(QStringLiteral("neither a capture file nor a vendor HI91 CSV")));
+    }
+};
+
+QTEST_MAIN(TstAnalysisWindow)
+#include "tst_analysis_window.moc"

@@ -1,0 +1,115 @@
+// ExportDialog offscreen: the suggested output name follows the format, an export writes its
+// files with the progress bar at 100 %, a time range limits the rows, and Cancel stops a
+// running export and removes the partial files.
+#include "../common/synthetic_capture.h"
+#include "export_dialog.h"
+
+#include <QComboBox>
+#include <QLabel>
+#include <QLineEdit>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <QTest>
+
+using namespace imudesk;
+using Format = record::CaptureExporter::Format;
+using ui::ExportDialog;
+
+namespace {
+int lineCount(const QString &path)
+{
+    QFile f(path);
+    if (!f.open(QIODevice::ReadOnly))
+        return -1;
+    return int(f.readAll().count('\n'));
+}
+} // namespace
+
+class TstExportDialog : public QObject {
+    Q_OBJECT
+    QTemporaryDir m_dir;
+    QString m_small, m_large;
+
+private Q_SLOTS:
+    void initTestCase()
+    {
+        m_small = m_dir.filePath(QStringLiteral("small.imucap"));
+        synthetic::CaptureSpec spec;
+        spec.frames = 2000;
+        QVERIFY(synthetic::writeCapture(m_small, spec) > 0);
+        m_large = m_dir.filePath(QStringLiteral("large.imucap"));
+        spec.frames = 1'500'000;
+        QVERIFY(synthetic::writeCapture(m_large, spec) > 0);
+    }
+
+    void suggestsOutputPerFormat()
+    {
+        ExportDialog d(m_small);
+        auto *output = d.findChild<QLineEdit *>(QStringLiteral("output"));
+        QCOMPARE(output->text(), m_dir.filePath(QStringLiteral("small.csv")));
+        d.setFormat(Format::JsonLines);
+        QCOMPARE(output->text(), m_dir.filePath(QStringLiteral("small.jsonl")));
+    }
+
+    void exportsWithProgress_data()
+    {
+        QTest::addColumn<int>("format");
+        QTest::addColumn<QString>("file");
+        QTest::addColumn<double>("to");
+        QTest::addColumn<int>("lines");
+        QTest::newRow("vendor csv") << int(Format::VendorCsv) << "out_HI91.csv" << -1.0 << 2001;
+        QTest::newRow("tidy csv, first second") << int(Format::TidyCsv) << "out.csv" << 1.0 << 1009;
+        QTest::newRow("json lines") << int(Format::JsonLines) << "out.csv" << -1.0 << 2000;
+    }
+    void exportsWithProgress()
+    {
+        QFETCH(int, format);
+        QFETCH(QString, file);
+        QFETCH(double, to);
+        QFETCH(int, lines);
+        ExportDialog d(m_small);
+        d.setFormat(Format(format));
+        d.setOutput(m_dir.filePath(QStringLiteral("out.csv")));
+        d.setRange(0, to);
+        QSignalSpy finished(&d, &ExportDialog::exportFinished);
+        QTest::mouseClick(d.findChild<QPushButton *>(QStringLiteral("export")), Qt::LeftButton);
+        QVERIFY(finished.wait(10000));
+        QVERIFY2(finished.at(0).at(0).toBool(), qPrintable(finished.at(0).at(1).toString()));
+        QCOMPARE(d.findChild<QProgressBar *>(QStringLiteral("progress"))->value(), 1000);
+        QCOMPARE(lineCount(m_dir.filePath(file)), lines);
+        QVERIFY(d.findChild<QLabel *>(QStringLiteral("status"))->text().contains(m_dir.filePath(file)));
+    }
+
+    void cancelRemovesPartialFiles()
+    {
+        ExportDialog d(m_large);
+        d.setFormat(Format::TidyCsv);
+        const QString out = m_dir.filePath(QStringLiteral("cancelled.csv"));
+        d.setOutput(out);
+        QSignalSpy finished(&d, &ExportDialog::exportFinished);
+        d.startExport();
+        QVERIFY(d.isRunning());
+        QTest::mouseClick(d.findChild<QPushButton *>(QStringLiteral("cancel")), Qt::LeftButton);
+        QVERIFY(finished.wait(20000));
+        QCOMPARE(finished.at(0).at(0).toBool(), false);
+        QVERIFY(d.lastResult().cancelled);
+        QVERIFY(finished.at(0).at(1).toString().contains(QStringLiteral("cancelled")));
+        QVERIFY(!QFile::exists(out));
+        QVERIFY(!d.isRunning());
+    }
+
+    void reportsAMissingCapture()
+    {
+        ExportDialog d(m_dir.filePath(QStringLiteral("missing.imucap")));
+        QSignalSpy finished(&d, &ExportDialog::exportFinished);
+        d.startExport();
+        QVERIFY(finished.wait(5000));
+        QCOMPARE(finished.at(0).at(0).toBool(), false);
+        QVERIFY(finished.at(0).at(1).toString().contains(QStringLiteral("missing.imucap")));
+    }
+};
+
+QTEST_MAIN(TstExportDialog)
+#include "tst_export_dialog.moc"

@@ -1,0 +1,48 @@
+#pragma once
+// The analysis of a recording (a capture or a vendor CSV): a table of per-channel
+// statistics, a summary (output rate, jitter, frames lost, random walk, bias instability,
+// recommended recording length), a histogram of frame intervals and the Allan deviation of
+// the gyro and accelerometer axes on log-log axes. analyzeFile() works in a worker thread.
+#include "record/sample_analyzer.h"
+
+#include <QWidget>
+
+#include <atomic>
+
+class QChart;
+class QLabel;
+class QTableWidget;
+class QThread;
+
+namespace imudesk::ui {
+
+class AnalysisWindow : public QWidget {
+    Q_OBJECT
+public:
+    explicit AnalysisWindow(QWidget *parent = nullptr);
+    ~AnalysisWindow() override;
+
+    void analyzeFile(const QString &path, double tauMax = 1000.0);
+    void setResult(const record::SampleAnalyzer::Result &result);
+
+    QTableWidget *statsTable() const { return m_table; }
+    QChart *histogramChart() const { return m_histogram; }
+    QChart *allanChart() const { return m_allan; }
+    QString summaryText() const;
+
+Q_SIGNALS:
+    void analysisFinished(bool ok, const QString &message);
+
+private:
+    void fillHistogram(const record::SampleAnalyzer::Result &r);
+    void fillAllan(const record::SampleAnalyzer::Result &r);
+
+    QTableWidget *m_table = nullptr;
+    QLabel *m_summary = nullptr;
+    QChart *m_histogram = nullptr;
+    QChart *m_allan = nullptr;
+    QThread *m_thread = nullptr;
+    std::atomic<bool> m_cancel{false};
+};
+
+} // namespace imudesk::ui

@@ -1,0 +1,64 @@
+#pragma once
+// Export of a capture: format (vendor CSV, tidy CSV, JSON Lines), output file, time range,
+// a progress bar and cancel. The export runs in a worker thread (CaptureExporter streams,
+// so memory stays flat); the dialog stays responsive and Cancel stops it and removes the
+// partial files.
+#include "record/capture_exporter.h"
+
+#include <QDialog>
+#include <QTimer>
+
+#include <atomic>
+
+class QComboBox;
+class QDoubleSpinBox;
+class QLabel;
+class QLineEdit;
+class QProgressBar;
+class QPushButton;
+class QThread;
+
+namespace imudesk::ui {
+
+class ExportDialog : public QDialog {
+    Q_OBJECT
+public:
+    explicit ExportDialog(const QString &capturePath, QWidget *parent = nullptr);
+    ~ExportDialog() override;
+
+    void setFormat(record::CaptureExporter::Format format);
+    void setOutput(const QString &path);
+    // to < 0: until the end.
+    void setRange(double fromS, double toS);
+    bool isRunning() const { return m_thread != nullptr; }
+    const record::CaptureExporter::Result &lastResult() const { return m_result; }
+
+public Q_SLOTS:
+    void startExport();
+    void cancelExport();
+
+Q_SIGNALS:
+    void exportFinished(bool ok, const QString &message);
+
+private:
+    void onFinished();
+    void suggestOutput();
+    void pollProgress();
+
+    QString m_capture;
+    QComboBox *m_format = nullptr;
+    QLineEdit *m_output = nullptr;
+    QDoubleSpinBox *m_from = nullptr;
+    QDoubleSpinBox *m_to = nullptr;
+    QProgressBar *m_progress = nullptr;
+    QLabel *m_status = nullptr;
+    QPushButton *m_export = nullptr;
+    QPushButton *m_cancel = nullptr;
+    QThread *m_thread = nullptr;
+    QTimer m_poll;
+    std::atomic<int> m_permille{0};
+    std::atomic<bool> m_cancelRequested{false};
+    record::CaptureExporter::Result m_result;
+};
+
+} // namespace imudesk::ui
