@@ -59,6 +59,7 @@ void Hec495Simulator::powerCycle()
     m_powerOnUs = m_nowUs;
     m_calibration.stop();
     m_decoder.reset();
+    m_out.clear(); // what was still in the UART is lost
     m_lineFreeUs = double(m_nowUs);
     scheduleOutput(m_nowUs);
     qCDebug(lcHec) << "power cycle at" << m_nowUs << "us";
@@ -150,7 +151,10 @@ void Hec495Simulator::advanceTo(int64_t nowUs)
 std::vector<SerialSegment> Hec495Simulator::takeOutputSegments()
 {
     std::vector<SerialSegment> out;
-    out.swap(m_out);
+    size_t n = 0;
+    while (n < m_out.size() && m_out[n].releaseUs <= m_nowUs)
+        out.push_back(std::move(m_out[n++].segment));
+    m_out.erase(m_out.begin(), m_out.begin() + std::ptrdiff_t(n));
     return out;
 }
 
@@ -181,7 +185,7 @@ void Hec495Simulator::send(std::vector<uint8_t> bytes, bool data)
     s.chunk = m_nextChunk++;
     s.chunkStart = s.chunkEnd = true;
     s.data = data;
-    m_out.push_back(std::move(s));
+    m_out.push_back(Timed{int64_t(std::ceil(m_lineFreeUs)), std::move(s)});
 }
 
 void Hec495Simulator::reply(const wl::Frame &f)

@@ -18,6 +18,9 @@
 //     the module is silent for kQuietAfterPowerOnUs after power-on (2.14).
 //     Content (0x49): 00 the 0x84 angles frame, 01 the 0x14 record with the uncompensated
 //     magnetometer ("internal"), 02 the 0x14 record, 03 NMEA 0183 $HCHDT (true heading).
+//   * UART timing: the module sends at most baud/10 bytes per second; a chunk (frame, reply,
+//     sentence) is handed out when its last byte has been sent, as a receiver gets it. A
+//     data frame that would wait more than kMaxBacklogUs for the line is dropped.
 //   * RS-485 (Options::rs485): half duplex, so a command that arrives while the module is
 //     transmitting is lost (2.14 advises repeating commands); RS-232 hears everything.
 //   * Calibration (Hec495Calibration): the five methods; an automatically collected point
@@ -152,7 +155,11 @@ private:
     uint64_t m_framesQueued = 0;
     uint64_t m_dropped = 0;
     uint64_t m_commandsLost = 0;
-    std::vector<SerialSegment> m_out;
+    struct Timed {
+        int64_t releaseUs = 0; // when the last byte has left the UART
+        SerialSegment segment;
+    };
+    std::vector<Timed> m_out; // in release order
 };
 
 } // namespace imudesk::sim
