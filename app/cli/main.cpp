@@ -22,6 +22,9 @@ void usage(FILE *to)
                "  simulate --pty [--model HI14] [--firmware 1.7.1] [--baud 115200]\n"
                "           [--motion static|spin|tumble] [--seed N]\n"
                "                                         serve a simulated device on a pseudo-terminal\n"
+               "  simulate --pty --device hec495 [--baud 9600] [--address N] [--motion M] [--seed N]\n"
+               "  hec495 PORT [--baud B] [--address N] [--json] read|info|declination [VALUE]|baud B|rate HZ|\n"
+               "         content C|address N|save|reset|calibrate METHOD   talk to a Witlink HEC495 compass\n"
                "Run 'imudesk-cli COMMAND --help' for a command's options.\n",
                to);
 }
@@ -54,6 +57,7 @@ int main(int argc, char **argv)
         {QStringLiteral("ports"), cmdPorts},     {QStringLiteral("probe"), cmdProbe},
         {QStringLiteral("read"), cmdRead},       {QStringLiteral("send"), cmdSend},
         {QStringLiteral("decode"), cmdDecode},   {QStringLiteral("simulate"), cmdSimulate},
+        {QStringLiteral("hec495"), cmdHec495},
     };
     const auto it = commands.find(cmd);
     if (it == commands.end()) {

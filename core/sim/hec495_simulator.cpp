@@ -123,7 +123,15 @@ void Hec495Simulator::receive(const uint8_t *data, size_t n)
         ++m_commandsLost; // half duplex: the module is talking and does not hear this
         return;
     }
-    for (const auto &f : m_decoder.feed(data, n))
+    // A sender does not pause inside a frame: after a pause an unfinished candidate (noise
+    // with a 0x77 in it) is dropped, so it cannot swallow the next command.
+    std::vector<wl::Frame> frames;
+    if (m_decoder.pendingBytes() > 0 && m_nowUs - m_lastRxUs > kRxIdleUs)
+        m_decoder.flushIdle(frames);
+    m_lastRxUs = m_nowUs;
+    m_decoder.feed(data, n, frames);
+    m_decoder.takeSkipped();
+    for (const auto &f : frames)
         handle(f);
 }
 

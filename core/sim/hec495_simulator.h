@@ -72,6 +72,7 @@ public:
     static constexpr int64_t kTickUs = 10000;      // calibration bookkeeping
     static constexpr int64_t kMaxBacklogUs = 60000; // a data frame that would wait longer is dropped
     static constexpr double kFieldUnitUt = 28.0;    // relative unit: the horizontal field
+    static constexpr int64_t kRxIdleUs = 20000;     // a pause this long ends an unfinished input frame
 
     struct Settings {
         int baud = 9600;
@@ -144,6 +145,7 @@ private:
     std::optional<Hec495Calibration::Pose> m_pose;
 
     int64_t m_nowUs = 0;
+    int64_t m_lastRxUs = 0;
     int64_t m_powerOnUs = 0;
     int64_t m_nextOutputUs = -1;
     int64_t m_nextTickUs = kTickUs;

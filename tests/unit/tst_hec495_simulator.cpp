@@ -138,6 +138,14 @@ private Q_SLOTS:
         QVERIFY(b.ask(encodeFrame(0, 0x55)).empty()); // unknown: silence
     }
 
+    void noiseDoesNotSwallowTheNextCommand()
+    {
+        Bench b;
+        // A false sync with a long LEN, then a pause, then a real command.
+        QVERIFY(b.ask({0x77, 0x50, 0x01}).empty());
+        QCOMPARE(b.one(cmd::readDeclination()).kind, Reply::Kind::Declination);
+    }
+
     void baudChange()
     {
         Bench b;
