@@ -421,7 +421,7 @@ void Hec495Worker::onLineIdle()
     handleFrames(frames);
 }
 
-bool Hec495Worker::answersCurrent(const wl::Frame &f, const wl::Reply &r) const
+bool Hec495Worker::answersCurrent(const wl::Frame &f) const
 {
     if (!m_current)
         return false;
@@ -432,7 +432,6 @@ bool Hec495Worker::answersCurrent(const wl::Frame &f, const wl::Reply &r) const
         || m_current->command == uint8_t(wl::Command::QueryAddress) || m_identifying;
     if (!anyAddress && f.address != m_address)
         return false;
-    (void)r;
     return true;
 }
 
@@ -467,7 +466,7 @@ void Hec495Worker::handleFrames(const std::vector<wl::Frame> &frames)
         } else if (!r.ok()) {
             ++m_payloadErrors;
         }
-        if (answersCurrent(f, r)) {
+        if (answersCurrent(f)) {
             Hec495Result res;
             res.reply = r;
             if (!r.ok()) {

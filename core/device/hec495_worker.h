@@ -90,7 +90,7 @@ private:
     void onBytes(const QByteArray &bytes);
     void onLineIdle();
     void handleFrames(const std::vector<protocol::witlink::Frame> &frames);
-    bool answersCurrent(const protocol::witlink::Frame &f, const protocol::witlink::Reply &r) const;
+    bool answersCurrent(const protocol::witlink::Frame &f) const;
     void applyEffects(const Pending &p, const Hec495Result &r);
     void enqueue(Pending p);
     void startNext();

@@ -1,7 +1,7 @@
 #pragma once
 // Packed BCD values of the Witlink protocol (manual 2.1, 2.4, 2.6).
 //
-// Angle, 3 bytes "SX XX YY": S = sign nibble (0 positive, 1 negative), XXX three integer
+// Angle, 3 bytes "SX XX YY": S = sign nibble (0 positive, 1 negative), then three integer
 // digits, YY two decimals: 10 26 80 = -26.80 deg, 00 33 65 = 33.65, 03 13 71 = 313.71.
 // Declination, 2 bytes "SX XY": sign nibble, two integer digits, one decimal:
 // 02 08 = +20.8 deg, 10 32 = -3.2 deg.
