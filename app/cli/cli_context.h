@@ -56,6 +56,12 @@ int cmdUpdate(const QStringList &args);
 // simulate --flash-dump FILE (commands_update.cpp)
 void addFlashDumpOption(QCommandLineParser &p);
 int writeFlashDump(sim::PtySimulator &simulator, const QCommandLineParser &p);
+int cmdHec495(const QStringList &args);
+// commands_hec495.cpp: probe's family detection (prints and returns an exit code for an
+// HEC495; returns -1 to let the HiPNUC probe go on, at *hipnucBaud when one was found),
+// and simulate --device hec495.
+int probeFamily(const QString &port, int baud, bool json, int *hipnucBaud);
+int simulateHec495(const QCommandLineParser &p);
 
 // Parses args with the given parser; on error prints it and returns false.
 bool parseArgs(QCommandLineParser &p, const QStringList &args, const QString &usage);

@@ -48,7 +48,7 @@ QJsonObject identityJson(const model::DeviceIdentity &id)
     o[QStringLiteral("bootloader")] = id.bootloader ? QString::fromStdString(id.bootloader->toString()) : QString();
     o[QStringLiteral("serial")] = QString::fromStdString(id.serial);
     o[QStringLiteral("build")] = QString::fromStdString(id.build);
-    o[QStringLiteral("family")] = QString::fromLatin1(model::familyName(id.family()));
+    o[QStringLiteral("product_family")] = QString::fromLatin1(model::familyName(id.family()));
     return o;
 }
 
@@ -99,6 +99,9 @@ int cmdProbe(const QStringList &args)
     int baud = 0;
     if (!baudFrom(p, &baud))
         return ExitUsage;
+    if (const int hec = probeFamily(p.positionalArguments().front(), baud, p.isSet(QStringLiteral("json")), &baud);
+        hec >= 0)
+        return hec;
     device::DeviceSession session;
     model::DeviceIdentity id;
     int found = baud;
@@ -111,6 +114,7 @@ int cmdProbe(const QStringList &args)
         o[QStringLiteral("port")] = port;
         o[QStringLiteral("baud")] = found;
         o[QStringLiteral("identified")] = id.usable();
+        o[QStringLiteral("family")] = QStringLiteral("hipnuc");
         out(QString::fromUtf8(QJsonDocument(o).toJson(QJsonDocument::Compact)));
     } else {
         out(QStringLiteral("port: %1").arg(port));
@@ -272,17 +276,24 @@ int cmdSimulate(const QStringList &args)
                                    QStringLiteral("MOTION"), QStringLiteral("static")));
     p.addOption(QCommandLineOption(QStringLiteral("seed"), QStringLiteral("Random seed (default 1)."),
                                    QStringLiteral("N"), QStringLiteral("1")));
-    addModbusSimulateOptions(p);
+    addModbusSimulateOptions(p); // also --device hipnuc|hec495
     addFlashDumpOption(p);
-    const QString usage = QStringLiteral("imudesk-cli simulate --pty [--model HI14] [--firmware 1.7.1] [--baud 115200] "
+    p.addOption(QCommandLineOption(QStringLiteral("address"), QStringLiteral("HEC495 module address (default 0)."),
+                                   QStringLiteral("N"), QStringLiteral("0")));
+    const QString usage = QStringLiteral("imudesk-cli simulate --pty [--device hipnuc|hec495] [--model HI14] "
+                                         "[--firmware 1.7.1] [--baud 115200] [--address N] "
                                          "[--motion static|spin|tumble] [--seed N] [--flash-dump FILE] "
-                                         "[--modbus [--device hec495] [--id N]]");
+                                         "[--modbus [--id N]]");
     if (!parseArgs(p, args, usage))
         return ExitUsage;
     if (!p.isSet(QStringLiteral("pty")))
         return fail(QStringLiteral("simulate needs --pty (usage: %1)").arg(usage), ExitUsage);
     if (p.isSet(QStringLiteral("modbus")))
         return simulateModbus(p);
+    if (p.value(QStringLiteral("device")) == QLatin1String("hec495"))
+        return simulateHec495(p);
+    if (p.value(QStringLiteral("device")) != QLatin1String("hipnuc"))
+        return fail(QStringLiteral("--device must be hipnuc or hec495"), ExitUsage);
     sim::SimOptions o;
     o.model = p.value(QStringLiteral("model")).toStdString();
     o.firmware = p.value(QStringLiteral("firmware")).toStdString();

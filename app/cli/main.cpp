@@ -35,6 +35,9 @@ void usage(FILE *to)
                "  modbus PORT [--id N] [--baud B] info|read [REG [COUNT]]|scan|write REG VALUE [--json]\n"
                "                                         talk Modbus RTU to a module on RS-485\n"
                "  update PORT FILE [--baud B] [--json]   update the firmware (KBOOT), verified by read-back\n"
+               "  simulate --pty --device hec495 [--baud 9600] [--address N] [--motion M] [--seed N]\n"
+               "  hec495 PORT [--baud B] [--address N] [--json] read|info|declination [VALUE]|baud B|rate HZ|\n"
+               "         content C|address N|save|reset|calibrate METHOD   talk to a Witlink HEC495 compass\n"
                "Run 'imudesk-cli COMMAND --help' for a command's options.\n",
                to);
 }
@@ -72,6 +75,7 @@ int main(int argc, char **argv)
         {QStringLiteral("record"), cmdRecord},   {QStringLiteral("export"), cmdExport},
         {QStringLiteral("analyze"), cmdAnalyze}, {QStringLiteral("import"), cmdImport},
         {QStringLiteral("update"), cmdUpdate},
+        {QStringLiteral("hec495"), cmdHec495},
     };
     const auto it = commands.find(cmd);
     if (it == commands.end()) {

@@ -27,11 +27,12 @@ struct DeviceIdentity {
     std::string serial;        // UUID or SN
     std::optional<FirmwareVersion> firmware;   // APP_VER or SW_VERSION
     std::optional<FirmwareVersion> bootloader; // BL_VER or BL_VERSION
+    int busAddress = -1;       // a Witlink HEC495's module address (0..255); -1 for families without one
 
     // Builds an identity from the KEY=VALUE lines of a LOG VERSION reply.
     static DeviceIdentity fromKeyValues(const std::map<std::string, std::string> &kv);
-    // Usable when a product name and a firmware version or serial exist.
-    bool usable() const { return !productName.empty() && (firmware || !serial.empty()); }
+    // Usable when a product name and a firmware version, serial or bus address exist.
+    bool usable() const { return !productName.empty() && (firmware || !serial.empty() || busAddress >= 0); }
 
     ProductFamily family() const;
     ManualEdition edition() const;

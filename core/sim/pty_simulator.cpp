@@ -1,5 +1,7 @@
 #include "pty_simulator.h"
 
+#include "sim/hipnuc_serial_device.h"
+
 #include <QElapsedTimer>
 #include <QLoggingCategory>
 #include <QObject>
@@ -68,14 +70,19 @@ int PtySimulator::readLineSpeed(int fd)
 
 // Everything below runs on the simulator thread (except the atomics).
 struct PtySimulator::Engine {
-    explicit Engine(const SimOptions &o) : sim(o) {}
+    explicit Engine(std::unique_ptr<SimulatedSerialDevice> d)
+        : device(std::move(d)), sim(*device), hipnuc(dynamic_cast<HipnucSerialDevice *>(device.get()))
+    {
+    }
 
     struct Pending {
         std::vector<uint8_t> bytes;
         size_t written = 0;
     };
 
-    HipnucSimulator sim;
+    std::unique_ptr<SimulatedSerialDevice> device;
+    SimulatedSerialDevice &sim;
+    HipnucSerialDevice *hipnuc = nullptr; // when the device is a HiPNUC module
     int master = -1;
     QSocketNotifier *notifier = nullptr;
     QTimer *timer = nullptr;
@@ -225,6 +232,11 @@ struct PtySimulator::Engine {
 
 PtySimulator::PtySimulator(SimOptions options) : m_options(std::move(options)) {}
 
+PtySimulator::PtySimulator(std::unique_ptr<SimulatedSerialDevice> device)
+    : m_device(std::move(device)), m_customDevice(m_device != nullptr)
+{
+}
+
 PtySimulator::~PtySimulator()
 {
     stop();
@@ -265,7 +277,9 @@ bool PtySimulator::start(QString *error)
     ::fcntl(master, F_SETFD, FD_CLOEXEC);
 
     m_path = QString::fromLocal8Bit(name);
-    m_engine = std::make_unique<Engine>(m_options);
+    if (!m_device)
+        m_device = std::make_unique<HipnucSerialDevice>(m_options);
+    m_engine = std::make_unique<Engine>(std::move(m_device));
     m_engine->master = master;
 
     m_thread = new QThread;
@@ -315,10 +329,19 @@ void PtySimulator::stop()
     delete m_thread;
     m_thread = nullptr;
     ::close(e->master);
+    if (m_customDevice)
+        m_device = std::move(e->device);
     m_engine.reset();
 }
 
 void PtySimulator::withDevice(const std::function<void(HipnucSimulator &)> &fn)
+{
+    if (!m_engine || !m_engine->hipnuc)
+        return;
+    withSerialDevice([&fn](SimulatedSerialDevice &d) { fn(static_cast<HipnucSerialDevice &>(d).simulator()); });
+}
+
+void PtySimulator::withSerialDevice(const std::function<void(SimulatedSerialDevice &)> &fn)
 {
     if (!m_thread || !m_engine)
         return;

@@ -1,6 +1,7 @@
 #pragma once
-// Serves one HipnucSimulator on a Linux pseudo-terminal, so that real serial code
-// (QSerialPort, the CLI, the GUI) can open it like a USB serial adapter.
+// Serves one simulated serial device (a HipnucSimulator, or any SimulatedSerialDevice such
+// as the HEC495 compass) on a Linux pseudo-terminal, so that real serial code (QSerialPort,
+// the CLI, the GUI) can open it like a USB serial adapter.
 //
 // The simulator runs in its own QThread: a QSocketNotifier reads the master side and
 // a ~1 ms timer advances the simulated clock (steady clock, µs since start()) and
@@ -15,6 +16,7 @@
 // client). A reader that stalls loses whole data frames once kMaxPendingBytes are
 // waiting; replies are kept (bounded by kHardLimitBytes).
 #include "sim/hipnuc_simulator.h"
+#include "sim/simulated_serial_device.h"
 
 #include <QCoreApplication>
 #include <QString>
@@ -47,7 +49,10 @@ public:
         uint64_t chunksDropped = 0;    // frames dropped because the reader stalled
     };
 
+    // A HiPNUC module.
     explicit PtySimulator(SimOptions options = {});
+    // Any simulated serial device (e.g. Hec495Simulator); it is used on the simulator thread.
+    explicit PtySimulator(std::unique_ptr<SimulatedSerialDevice> device);
     ~PtySimulator();
     PtySimulator(const PtySimulator &) = delete;
     PtySimulator &operator=(const PtySimulator &) = delete;
@@ -60,7 +65,10 @@ public:
     // The slave path (e.g. "/dev/pts/3"); empty before start().
     QString devicePath() const;
     // Runs fn on the simulator thread and waits for it (e.g. powerCycle, inspect state).
+    // Only when the device is a HiPNUC module (otherwise fn is not called).
     void withDevice(const std::function<void(HipnucSimulator &)> &fn);
+    // Any device.
+    void withSerialDevice(const std::function<void(SimulatedSerialDevice &)> &fn);
     Stats stats() const;
 
     // Line speed (bit/s) of a tty or pty (master: the slave's settings); -1 on failure.
@@ -69,6 +77,8 @@ public:
 private:
     struct Engine;
     SimOptions m_options;
+    std::unique_ptr<SimulatedSerialDevice> m_device; // until start() hands it to the engine
+    bool m_customDevice = false; // a given device survives stop() (a HiPNUC one starts afresh)
     std::unique_ptr<Engine> m_engine;
     QThread *m_thread = nullptr;
     QObject *m_context = nullptr; // lives in m_thread

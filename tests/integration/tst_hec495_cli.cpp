@@ -1,0 +1,160 @@
+// imudesk-cli against the simulated HEC495 on a pseudo-terminal: "simulate --device hec495",
+// "probe" telling an HEC495 from a HiPNUC module, and every "hec495" action, including a
+// planar calibration run.
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
+#include <QTest>
+
+#include <csignal>
+
+namespace {
+
+struct Result {
+    int code = -1;
+    QString out, err;
+    QJsonObject json() const { return QJsonDocument::fromJson(out.trimmed().toUtf8()).object(); }
+};
+
+Result run(const QStringList &args, int timeoutMs = 60000)
+{
+    QProcess p;
+    p.start(QStringLiteral(IMUDESK_CLI_PATH), args);
+    Result r;
+    if (!p.waitForFinished(timeoutMs)) {
+        p.kill();
+        p.waitForFinished();
+        r.err = QStringLiteral("timed out");
+        return r;
+    }
+    r.code = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1;
+    r.out = QString::fromUtf8(p.readAllStandardOutput());
+    r.err = QString::fromUtf8(p.readAllStandardError());
+    return r;
+}
+
+// Starts "imudesk-cli simulate --pty ..." and returns the pty path.
+QString startSimulator(QProcess &sim, const QStringList &args)
+{
+    sim.start(QStringLiteral(IMUDESK_CLI_PATH), QStringList{"simulate", "--pty"} + args);
+    if (!sim.waitForStarted())
+        return {};
+    for (int i = 0; i < 100 && !sim.canReadLine(); ++i)
+        sim.waitForReadyRead(100);
+    const QString first = QString::fromUtf8(sim.readLine()).trimmed();
+    return first.startsWith(QStringLiteral("pty: /dev/")) ? first.mid(5) : QString();
+}
+
+void stopSimulator(QProcess &sim)
+{
+    ::kill(pid_t(sim.processId()), SIGTERM);
+    sim.waitForFinished(5000);
+}
+
+} // namespace
+
+class TstHec495Cli : public QObject {
+    Q_OBJECT
+    QProcess m_sim;
+    QString m_pty;
+
+private Q_SLOTS:
+    void initTestCase()
+    {
+        m_pty = startSimulator(m_sim, {"--device", "hec495", "--motion", "spin", "--seed", "4"});
+        QVERIFY(!m_pty.isEmpty());
+    }
+
+    void cleanupTestCase()
+    {
+        stopSimulator(m_sim);
+        QCOMPARE(m_sim.exitStatus(), QProcess::NormalExit);
+        QCOMPARE(m_sim.exitCode(), 0);
+    }
+
+    void probeDetectsTheHec495()
+    {
+        const auto r = run({"probe", m_pty, "--json"});
+        QVERIFY2(r.code == 0, qPrintable(r.err));
+        const auto o = r.json();
+        QCOMPARE(o.value("family").toString(), QStringLiteral("hec495"));
+        QCOMPARE(o.value("product").toString(), QStringLiteral("HEC495"));
+        QCOMPARE(o.value("baud").toInt(), 9600);
+        QCOMPARE(o.value("address").toInt(), 0);
+    }
+
+    void probeTellsHipnucAndOtherAddresses()
+    {
+        QProcess hipnuc;
+        const QString hp = startSimulator(hipnuc, {"--baud", "115200"});
+        QVERIFY(!hp.isEmpty());
+        auto r = run({"probe", hp, "--json"});
+        stopSimulator(hipnuc);
+        QVERIFY2(r.code == 0, qPrintable(r.err));
+        QCOMPARE(r.json().value("family").toString(), QStringLiteral("hipnuc"));
+        QCOMPARE(r.json().value("product").toString(), QStringLiteral("HI14R3"));
+
+        QProcess other;
+        const QString op = startSimulator(other, {"--device", "hec495", "--baud", "19200", "--address", "5"});
+        QVERIFY(!op.isEmpty());
+        r = run({"probe", op, "--json"});
+        const auto info = run({"hec495", op, "--address", "5", "info", "--json"});
+        stopSimulator(other);
+        QVERIFY2(r.code == 0, qPrintable(r.err));
+        QCOMPARE(r.json().value("family").toString(), QStringLiteral("hec495"));
+        QCOMPARE(r.json().value("baud").toInt(), 19200);
+        QCOMPARE(r.json().value("address").toInt(), 5);
+        QVERIFY2(info.code == 0, qPrintable(info.err));
+        QCOMPARE(info.json().value("baud").toInt(), 19200);
+        QCOMPARE(info.json().value("address").toInt(), 5);
+    }
+
+    void settings()
+    {
+        auto r = run({"hec495", m_pty, "--baud", "9600", "declination", "-3.2"});
+        QVERIFY2(r.code == 0, qPrintable(r.err));
+        r = run({"hec495", m_pty, "declination", "--json"});
+        QVERIFY2(r.code == 0, qPrintable(r.err));
+        QCOMPARE(r.json().value("declination").toDouble(), -3.2);
+        r = run({"hec495", m_pty, "content", "all", "--json"});
+        QCOMPARE(r.json().value("status").toString(), QStringLiteral("ok"));
+        r = run({"hec495", m_pty, "read", "--json"});
+        QVERIFY2(r.code == 0, qPrintable(r.err));
+        QVERIFY(qAbs(r.json().value("acc").toArray().at(2).toDouble() - 1.0) < 0.01);
+        QVERIFY(qAbs(r.json().value("gyr").toArray().at(2).toDouble() - 30.0) < 1.0); // spin
+        // Streaming at 50 Hz: requests still answered.
+        r = run({"hec495", m_pty, "rate", "50"});
+        QVERIFY2(r.code == 0, qPrintable(r.err));
+        r = run({"hec495", m_pty, "info", "--json"});
+        QVERIFY2(r.code == 0, qPrintable(r.err));
+        QCOMPARE(r.json().value("streaming").toBool(), true);
+        QVERIFY2(run({"hec495", m_pty, "rate", "0"}).code == 0, "rate 0");
+        // Invalid values: refused before the wire, and usage errors.
+        r = run({"hec495", m_pty, "baud", "38400"});
+        QCOMPARE(r.code, 1);
+        QVERIFY(r.err.contains(QStringLiteral("115200")));
+        QCOMPARE(run({"hec495", m_pty, "fly"}).code, 2);
+        QCOMPARE(run({"hec495", m_pty, "rate"}).code, 2);
+    }
+
+    void baudChangeThenCalibrate()
+    {
+        auto r = run({"hec495", m_pty, "baud", "115200", "--json"});
+        QVERIFY2(r.code == 0, qPrintable(r.err));
+        r = run({"hec495", m_pty, "--baud", "115200", "calibrate", "planar", "--json"});
+        QVERIFY2(r.code == 0, qPrintable(r.err));
+        const auto o = r.json();
+        QCOMPARE(o.value("points").toInt(), 12);
+        QVERIFY(o.value("fit_error").toDouble() > 0.0);
+        QVERIFY(o.value("fit_error").toDouble() < 10.0);
+        r = run({"hec495", m_pty, "--baud", "115200", "reset"});
+        QVERIFY2(r.code == 0, qPrintable(r.err));
+        r = run({"hec495", m_pty, "info", "--json"}); // back to 9600 after the factory reset
+        QCOMPARE(r.json().value("baud").toInt(), 9600);
+        QCOMPARE(r.json().value("declination").toDouble(), 0.0);
+    }
+};
+
+QTEST_GUILESS_MAIN(TstHec495Cli)
+#include "tst_hec495_cli.moc"

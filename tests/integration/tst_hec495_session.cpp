@@ -1,0 +1,252 @@
+// Hec495Session end to end over a pseudo-terminal against the simulated HEC495: identity in
+// question/answer mode (polled samples), the 3 s quiet window then 50 Hz auto-output,
+// every settings command with typed results, a baud change the session follows, address
+// changes, auto-baud, RS-485 retries, and a planar calibration run.
+#include "device/hec495_session.h"
+#include "sim/hec495_simulator.h"
+#include "sim/pty_simulator.h"
+
+#include <QSignalSpy>
+#include <QTest>
+
+#include <functional>
+#include <memory>
+#include <optional>
+
+using namespace imudesk;
+using namespace imudesk::device;
+using namespace imudesk::sim;
+namespace wl = imudesk::protocol::witlink;
+
+namespace {
+
+std::unique_ptr<PtySimulator> serve(Hec495Options o)
+{
+    auto pty = std::make_unique<PtySimulator>(std::make_unique<Hec495Simulator>(o));
+    QString error;
+    if (!pty->start(&error))
+        qFatal("pty: %s", qPrintable(error));
+    return pty;
+}
+
+// Waits for the result of one request.
+std::optional<Hec495Result> await(Hec495Session &s, quint64 id, int timeoutMs = 5000)
+{
+    std::optional<Hec495Result> out;
+    QObject ctx;
+    QObject::connect(&s, &Hec495Session::commandFinished, &ctx, [&](quint64 done, const Hec495Result &r) {
+        if (done == id)
+            out = r;
+    });
+    if (!QTest::qWaitFor([&] { return out.has_value(); }, timeoutMs))
+        return std::nullopt;
+    return out;
+}
+
+#define AWAIT_OK(session, call)                                                                     \
+    [&] {                                                                                           \
+        const quint64 id_ = (call);                                                                 \
+        auto r_ = await(session, id_);                                                              \
+        if (!r_ || !r_->ok())                                                                       \
+            qWarning("%s -> %s: %s", #call, r_ ? statusName(r_->status) : "no result",             \
+                     r_ ? qPrintable(r_->message) : "");                                             \
+        return r_ && r_->ok() ? r_ : std::nullopt;                                                  \
+    }()
+
+// Runs fn on the simulator thread with the simulated compass.
+void withSim(PtySimulator &pty, const std::function<void(Hec495Simulator &)> &fn)
+{
+    pty.withSerialDevice([&fn](SimulatedSerialDevice &d) { fn(dynamic_cast<Hec495Simulator &>(d)); });
+}
+
+} // namespace
+
+class TstHec495Session : public QObject {
+    Q_OBJECT
+private Q_SLOTS:
+    void questionAnswerThenStreaming50Hz()
+    {
+        auto pty = serve({});
+        Hec495Session s;
+        QSignalSpy identity(&s, &Hec495Session::identityChanged);
+        s.open(pty->devicePath(), 9600);
+        QTRY_COMPARE_WITH_TIMEOUT(s.state(), SessionState::Connected, 5000);
+        QCOMPARE(identity.count(), 1);
+        const auto id = identity.at(0).at(0).value<model::DeviceIdentity>();
+        QCOMPARE(id.productName, std::string("HEC495"));
+        QCOMPARE(id.busAddress, 0);
+        QVERIFY(id.usable());
+        QVERIFY(!s.streaming());
+        // Polled "read all" records become samples.
+        QTRY_VERIFY_WITH_TIMEOUT(s.store().totalAppended() >= 5, 3000);
+        const auto latest = s.store().latest();
+        QVERIFY(latest && latest->has(model::FieldAcc) && latest->source == "HEC495");
+
+        QSignalSpy streaming(&s, &Hec495Session::streamingChanged);
+        QVERIFY(AWAIT_OK(s, s.setOutputRate(50)));
+        QVERIFY(s.streaming());
+        // Auto-output begins once the 3 s after power-on are over (2.14).
+        const uint64_t polled = s.store().totalAppended();
+        QTRY_VERIFY_WITH_TIMEOUT(s.store().totalAppended() > polled + 5, 5000);
+        // The module's own count over 2 s is the rate; every one of those frames becomes a sample.
+        auto sent = [&] {
+            uint64_t n = 0;
+            withSim(*pty, [&](Hec495Simulator &d) { n = d.framesQueued(); });
+            return n;
+        };
+        const uint64_t before = s.store().totalAppended();
+        const uint64_t sent0 = sent();
+        QTest::qWait(2000);
+        const uint64_t sentNow = sent() - sent0;
+        QVERIFY2(sentNow >= 95 && sentNow <= 105, qPrintable(QString::number(sentNow)));
+        QTRY_VERIFY_WITH_TIMEOUT(s.store().totalAppended() - before >= sentNow, 3000);
+        QCOMPARE(s.store().latest()->fields, uint32_t(model::FieldEuler)); // the default content: angles
+        // Commands still work while it streams.
+        const auto decl = AWAIT_OK(s, s.setDeclination(-3.2));
+        QVERIFY(decl);
+        const auto back = AWAIT_OK(s, s.readDeclination());
+        QVERIFY(back);
+        QCOMPARE(back->reply.declination, -3.2);
+        QSignalSpy stats(&s, &Hec495Session::statsUpdated);
+        QTRY_VERIFY_WITH_TIMEOUT(stats.count() >= 2, 3000);
+        const auto st = stats.last().at(0).value<SessionStats>();
+        QVERIFY(st.frames > 50);
+        QCOMPARE(st.crcErrors, uint64_t(0));
+        QVERIFY(st.rateByType.at("HEC495 angles") > 40.0);
+    }
+
+    void quietWindowAfterPowerOn()
+    {
+        // Saved for 50 Hz auto-output: silent for 3 s after power-on, yet it answers.
+        Hec495Options o;
+        o.rateHz = 50;
+        o.content = wl::OutputContent::AllData;
+        o.baud = 115200;
+        auto pty = serve(o);
+        Hec495Session s;
+        s.open(pty->devicePath(), 115200);
+        QTRY_COMPARE_WITH_TIMEOUT(s.state(), SessionState::Connected, 2500);
+        QVERIFY(!s.streaming()); // identified by a reply inside the window
+        QTRY_VERIFY_WITH_TIMEOUT(s.streaming(), 5000);
+        auto sent = [&] {
+            uint64_t n = 0;
+            withSim(*pty, [&](Hec495Simulator &d) { n = d.framesQueued(); });
+            return n;
+        };
+        const uint64_t before = s.store().totalAppended();
+        const uint64_t sent0 = sent();
+        QTest::qWait(1000);
+        const uint64_t sentNow = sent() - sent0;
+        QVERIFY2(sentNow >= 47 && sentNow <= 53, qPrintable(QString::number(sentNow)));
+        QTRY_VERIFY_WITH_TIMEOUT(s.store().totalAppended() - before >= sentNow, 3000);
+        QVERIFY(s.store().latest()->has(model::FieldDeviceTime));
+    }
+
+    void baudChangeFollowed()
+    {
+        auto pty = serve({});
+        Hec495Session s;
+        s.open(pty->devicePath(), 9600);
+        QTRY_COMPARE_WITH_TIMEOUT(s.state(), SessionState::Connected, 5000);
+        QSignalSpy baud(&s, &Hec495Session::baudChanged);
+        QVERIFY(AWAIT_OK(s, s.setBaud(115200)));
+        QTRY_COMPARE(s.baud(), 115200);
+        int simBaud = 0;
+        withSim(*pty, [&](Hec495Simulator &d) { simBaud = d.baud(); });
+        QCOMPARE(simBaud, 115200);
+        const auto angles = AWAIT_OK(s, s.readAngles());
+        QVERIFY(angles);
+        QCOMPARE(angles->reply.kind, wl::Reply::Kind::Angles);
+        // Invalid arguments never reach the wire.
+        const auto bad = await(s, s.setBaud(38400));
+        QVERIFY(bad);
+        QCOMPARE(bad->status, Hec495Result::Status::NotSent);
+        QVERIFY(!bad->message.isEmpty());
+    }
+
+    void autoBaudAndAddress()
+    {
+        Hec495Options o;
+        o.baud = 19200;
+        o.address = 5;
+        auto pty = serve(o);
+        Hec495Session s;
+        s.open(pty->devicePath(), 0, 5);
+        QTRY_COMPARE_WITH_TIMEOUT(s.state(), SessionState::Connected, 8000);
+        QCOMPARE(s.baud(), 19200);
+        QVERIFY(AWAIT_OK(s, s.setAddress(7)));
+        QTRY_COMPARE(s.address(), 7);
+        const auto q = AWAIT_OK(s, s.queryAddress());
+        QVERIFY(q);
+        QCOMPARE(q->reply.deviceAddress, uint8_t(7));
+        QVERIFY(AWAIT_OK(s, s.readAll()));
+        QVERIFY(AWAIT_OK(s, s.saveSettings()));
+        QVERIFY(AWAIT_OK(s, s.factoryReset()));
+        QTRY_COMPARE(s.baud(), 9600);
+        QCOMPARE(s.address(), 0);
+        QVERIFY(AWAIT_OK(s, s.readAngles()));
+    }
+
+    void wrongAddressTimesOut()
+    {
+        auto pty = serve({});
+        Hec495Session s;
+        QSignalSpy err(&s, &Hec495Session::errorOccurred);
+        s.open(pty->devicePath(), 9600, 3);
+        QTRY_COMPARE_WITH_TIMEOUT(s.state(), SessionState::Failed, 8000);
+        QCOMPARE(err.count(), 1);
+        QVERIFY(err.at(0).at(0).toString().contains(QLatin1String("address")));
+    }
+
+    void rs485Retries()
+    {
+        Hec495Options o;
+        o.rs485 = true;
+        o.baud = 9600;
+        o.rateHz = 50;               // angles: 14 bytes x 50 Hz = 73 % of the line
+        auto pty = serve(o);
+        Hec495Session s;
+        s.open(pty->devicePath(), 9600);
+        QTRY_COMPARE_WITH_TIMEOUT(s.state(), SessionState::Connected, 5000);
+        QTRY_VERIFY_WITH_TIMEOUT(s.streaming(), 5000);
+        int retried = 0;
+        for (int i = 0; i < 6; ++i) {
+            const auto r = AWAIT_OK(s, s.readDeclination());
+            QVERIFY(r);
+            retried += r->attempts > 1;
+        }
+        uint64_t lost = 0;
+        withSim(*pty, [&](Hec495Simulator &d) { lost = d.commandsLost(); });
+        QCOMPARE(lost > 0, retried > 0);
+    }
+
+    void planarCalibrationRun()
+    {
+        Hec495Options o;
+        o.motion = Motion::Spin;
+        o.baud = 115200;
+        auto pty = serve(o);
+        Hec495Session s;
+        s.open(pty->devicePath(), 115200);
+        QTRY_COMPARE_WITH_TIMEOUT(s.state(), SessionState::Connected, 5000);
+        int points = 0;
+        connect(&s, &Hec495Session::calibrationPoint, this, [&](int n) { points = n; });
+        QVERIFY(AWAIT_OK(s, s.startCalibration(wl::CalibrationMethod::Planar)));
+        QTRY_COMPARE_WITH_TIMEOUT(points, 12, 16000);
+        const auto saved = AWAIT_OK(s, s.saveCalibration());
+        QVERIFY(saved);
+        QCOMPARE(saved->reply.kind, wl::Reply::Kind::CalibrationSaved);
+        QCOMPARE(saved->reply.points, 12);
+        QVERIFY(saved->reply.fitError < 10.0f);
+        bool calibrated = false;
+        withSim(*pty, [&](Hec495Simulator &d) { calibrated = d.calibrated(); });
+        QVERIFY(calibrated);
+        // A second save without a run: the module reports failure.
+        const auto again = await(s, s.saveCalibration());
+        QVERIFY(again);
+        QCOMPARE(again->status, Hec495Result::Status::Failed);
+    }
+};
+
+QTEST_GUILESS_MAIN(TstHec495Session)
+#include "tst_hec495_session.moc"
