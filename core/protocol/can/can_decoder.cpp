@@ -82,6 +82,7 @@ bool CanDecoder::decodeJ1939(const CanFrame &f, DecodedFrame &d)
         d.kind = FrameKind::Hec495Data;
         d.protocol = CanProtocol::Hec495;
         d.sample = h->sample;
+        d.components = h->components;
         d.meaning = tr("HEC495 %1 axis: %2").arg(h->slot ? QStringLiteral("Y") : QStringLiteral("X"), sampleText(h->sample));
         if (m_detected == CanProtocol::Auto)
             m_detected = CanProtocol::Hec495;
@@ -110,6 +111,11 @@ bool CanDecoder::decodeJ1939(const CanFrame &f, DecodedFrame &d)
                             .arg(t.second, 2, 10, QLatin1Char('0')).arg(t.ms, 3, 10, QLatin1Char('0'));
         } else {
             d.sample = r.data.sample;
+            d.components = componentsOf(r.data.sample.fields);
+            if (r.data.pgn == j1939::PgnRollPitch)
+                d.components &= ~uint32_t(CompYaw);
+            else if (r.data.pgn == j1939::PgnHeading)
+                d.components &= ~uint32_t(CompRoll | CompPitch);
             QString text = sampleText(r.data.sample);
             if (r.data.pgn == j1939::PgnHeading)
                 text = tr("heading %1 deg (CW); %2").arg(r.data.headingCwDeg, 0, 'f', 3).arg(text);
@@ -179,6 +185,7 @@ bool CanDecoder::decodeStandard(const CanFrame &f, DecodedFrame &d)
             d.protocol = CanProtocol::Hec495;
             d.node = p->node;
             d.sample = p->sample;
+            d.components = p->components;
             d.meaning = tr("HEC495 PDO %1 (%2): %3")
                             .arg(QStringLiteral("%1").arg(hec495::pdoBase(p->slot), 3, 16).toUpper())
                             .arg(p->fixed ? tr("fixed") : tr("float"), sampleText(p->sample));
@@ -193,6 +200,7 @@ bool CanDecoder::decodeStandard(const CanFrame &f, DecodedFrame &d)
         d.protocol = CanProtocol::CanOpen;
         d.node = t.node;
         d.sample = t.sample;
+        d.components = componentsOf(t.sample.fields);
         d.meaning = tr("TPDO%1 %2: %3").arg(tpdoNumber(t.channel)).arg(QLatin1String(tpdoContent(t.channel)), sampleText(t.sample));
         if (m_detected == CanProtocol::Auto && t.channel <= 2)
             m_detected = CanProtocol::CanOpen;

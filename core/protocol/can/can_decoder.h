@@ -37,6 +37,7 @@ struct DecodedFrame {
     CanProtocol protocol = CanProtocol::Auto; // which protocol the frame belongs to
     int node = -1;                            // source node / address, -1 when none
     std::optional<model::Sample> sample;      // data frames
+    uint32_t components = 0;                  // Component bits the frame carried
     QString meaning;                          // one line for the monitor
 };
 

@@ -99,6 +99,22 @@ template <typename T> T scaled(double value, double scale)
 }
 } // namespace
 
+uint32_t componentsOf(uint32_t f)
+{
+    uint32_t c = 0;
+    if (f & (1u << 0)) c |= CompAccX | CompAccY | CompAccZ;
+    if (f & (1u << 1)) c |= CompGyrX | CompGyrY | CompGyrZ;
+    if (f & (1u << 2)) c |= CompMagX | CompMagY | CompMagZ;
+    if (f & (1u << 3)) c |= CompRoll | CompPitch | CompYaw;
+    if (f & (1u << 4)) c |= CompQuat;
+    if (f & (1u << 5)) c |= CompPressure;
+    if (f & (1u << 6)) c |= CompTemperature;
+    if (f & (1u << 7)) c |= CompDeviceTime;
+    if (f & (1u << 8)) c |= CompMainStatus;
+    if (f & (1u << 12)) c |= CompInclination;
+    return c;
+}
+
 uint16_t u16At(const CanFrame &f, size_t at) { return readLe<uint16_t>(f, at); }
 int16_t i16At(const CanFrame &f, size_t at) { return readLe<int16_t>(f, at); }
 uint32_t u32At(const CanFrame &f, size_t at) { return readLe<uint32_t>(f, at); }

@@ -15,6 +15,20 @@ namespace imudesk::protocol::can {
 
 inline constexpr size_t kMaxCanData = 64;
 
+// Which scalar quantities a decoded frame carried: CAN devices split a sample over several
+// frames (J1939 roll/pitch and heading, HEC495 acc axes over two PDOs), so merging needs more
+// than Sample::fields.
+enum Component : uint32_t {
+    CompAccX = 1u << 0, CompAccY = 1u << 1, CompAccZ = 1u << 2,
+    CompGyrX = 1u << 3, CompGyrY = 1u << 4, CompGyrZ = 1u << 5,
+    CompMagX = 1u << 6, CompMagY = 1u << 7, CompMagZ = 1u << 8,
+    CompRoll = 1u << 9, CompPitch = 1u << 10, CompYaw = 1u << 11,
+    CompQuat = 1u << 12, CompPressure = 1u << 13, CompTemperature = 1u << 14,
+    CompInclination = 1u << 15, CompDeviceTime = 1u << 16, CompMainStatus = 1u << 17,
+};
+// The components implied by Sample::fields (every axis of each group present).
+uint32_t componentsOf(uint32_t sampleFields);
+
 struct CanFrame {
     uint32_t id = 0;
     bool extended = false; // 29-bit identifier

@@ -90,6 +90,8 @@ bool looksFixed(const CanFrame &f)
 namespace {
 // Assigns value v to the quantity q (0 X angle / pitch, 1 Y angle / roll, 2 Z angle / heading,
 // 3..5 acc, 6..8 gyr, 9..11 mag).
+constexpr uint32_t kComp[12] = {CompPitch, CompRoll, CompYaw, CompAccX, CompAccY, CompAccZ,
+                                CompGyrX,  CompGyrY, CompGyrZ, CompMagX, CompMagY, CompMagZ};
 void assign(model::Sample &s, int q, double v)
 {
     switch (q) {
@@ -107,6 +109,12 @@ void assign(model::Sample &s, int q, double v)
     case 11: s.mag.z = v; s.fields |= model::FieldMag; break;
     default: break;
     }
+}
+void assign(PdoResult &r, int q, double v)
+{
+    assign(r.sample, q, v);
+    if (q >= 0 && q < 12)
+        r.components |= kComp[q];
 }
 double pick(const model::Sample &s, int q)
 {
@@ -134,11 +142,11 @@ std::optional<PdoResult> decodePdo(const CanFrame &f, int mode)
     if (r.fixed) {
         for (int h = 0; h < 2; ++h) {
             const int q = kFixedLayout[slot][h];
-            assign(r.sample, q, fixedValue(f.data.data() + 3 * h, isAngleLike(q) ? kAngleDiv : kAccDiv));
+            assign(r, q, fixedValue(f.data.data() + 3 * h, isAngleLike(q) ? kAngleDiv : kAccDiv));
         }
     } else {
         for (int h = 0; h < 2; ++h)
-            assign(r.sample, kFloatLayout[slot][h], double(f32At(f, size_t(4 * h))));
+            assign(r, kFloatLayout[slot][h], double(f32At(f, size_t(4 * h))));
     }
     return r;
 }
@@ -153,8 +161,8 @@ std::optional<PdoResult> decodeExtended(const CanFrame &f)
     r.fixed = true;
     r.extendedVariant = true;
     r.sample.source = "HEC495 CAN";
-    assign(r.sample, y ? 1 : 0, fixedValue(f.data.data(), kAngleDiv));
-    assign(r.sample, y ? 4 : 3, fixedValue(f.data.data() + 3, kAccDiv));
+    assign(r, y ? 1 : 0, fixedValue(f.data.data(), kAngleDiv));
+    assign(r, y ? 4 : 3, fixedValue(f.data.data() + 3, kAccDiv));
     return r;
 }
 

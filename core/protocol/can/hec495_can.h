@@ -55,6 +55,7 @@ struct PdoResult {
     uint8_t node = 0;
     bool fixed = false;
     bool extendedVariant = false;
+    uint32_t components = 0; // Component bits
     model::Sample sample;
 };
 
