@@ -145,7 +145,8 @@ bool sdoAnswers(const SdoMessage &reply, const SdoMessage &request)
 
 QString describe(const SdoMessage &m)
 {
-    const QString obj = QStringLiteral("0x%1.%2").arg(m.index, 4, 16, QLatin1Char('0')).arg(m.sub, 2, 16, QLatin1Char('0')).toUpper();
+    const QString obj = QStringLiteral("0x%1.%2").arg(QString::number(m.index, 16).toUpper().rightJustified(4, QLatin1Char('0')),
+                                                      QString::number(m.sub, 16).toUpper().rightJustified(2, QLatin1Char('0')));
     switch (m.kind) {
     case SdoKind::DownloadExpedited:
         return QCoreApplication::translate("SDO", "SDO write %1 = %2 (%3 bytes)").arg(obj).arg(m.value).arg(m.size ? m.size : 4);
