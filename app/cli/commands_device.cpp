@@ -272,10 +272,25 @@ int cmdSimulate(const QStringList &args)
                                    QStringLiteral("MOTION"), QStringLiteral("static")));
     p.addOption(QCommandLineOption(QStringLiteral("seed"), QStringLiteral("Random seed (default 1)."),
                                    QStringLiteral("N"), QStringLiteral("1")));
+    p.addOption(QCommandLineOption(QStringLiteral("can"), QStringLiteral("Serve a CAN device on PLUGIN:INTERFACE."), QStringLiteral("SPEC")));
+    p.addOption(QCommandLineOption(QStringLiteral("protocol"), QStringLiteral("CAN: j1939 (default) or canopen."),
+                                   QStringLiteral("PROTO"), QStringLiteral("j1939")));
+    p.addOption(QCommandLineOption(QStringLiteral("device"), QStringLiteral("CAN: hipnuc (default) or hec495."),
+                                   QStringLiteral("KIND"), QStringLiteral("hipnuc")));
+    p.addOption(QCommandLineOption(QStringLiteral("node"), QStringLiteral("CAN: node ID (default 8, HEC495 5)."),
+                                   QStringLiteral("N"), QStringLiteral("-1")));
     const QString usage = QStringLiteral("imudesk-cli simulate --pty [--model HI14] [--firmware 1.7.1] [--baud 115200] "
                                          "[--motion static|spin|tumble] [--seed N]");
     if (!parseArgs(p, args, usage))
         return ExitUsage;
+    if (p.isSet(QStringLiteral("can"))) {
+        sim::Motion m = sim::Motion::Static;
+        if (!sim::parseMotion(p.value(QStringLiteral("motion")).toStdString(), m))
+            return fail(QStringLiteral("--motion must be static, spin or tumble"), ExitUsage);
+        return simulateCan(p.value(QStringLiteral("can")), p.value(QStringLiteral("protocol")), p.value(QStringLiteral("device")),
+                           p.value(QStringLiteral("node")).toInt(), m, p.value(QStringLiteral("seed")).toULongLong(),
+                           p.value(QStringLiteral("firmware")));
+    }
     if (!p.isSet(QStringLiteral("pty")))
         return fail(QStringLiteral("simulate needs --pty (usage: %1)").arg(usage), ExitUsage);
     sim::SimOptions o;

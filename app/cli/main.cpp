@@ -22,6 +22,10 @@ void usage(FILE *to)
                "  simulate --pty [--model HI14] [--firmware 1.7.1] [--baud 115200]\n"
                "           [--motion static|spin|tumble] [--seed N]\n"
                "                                         serve a simulated device on a pseudo-terminal\n"
+               "  simulate --can virtualcan:can0 --protocol j1939|canopen [--device hipnuc|hec495] [--node N]\n"
+               "                                         serve a simulated CAN device\n"
+               "  can [--plugin P] [--interface I] [--bitrate B] list|scan|read|reg|sdo|sync [--json]\n"
+               "                                         CAN devices (J1939, CANopen, HEC495)\n"
                "Run 'imudesk-cli COMMAND --help' for a command's options.\n",
                to);
 }
@@ -54,6 +58,7 @@ int main(int argc, char **argv)
         {QStringLiteral("ports"), cmdPorts},     {QStringLiteral("probe"), cmdProbe},
         {QStringLiteral("read"), cmdRead},       {QStringLiteral("send"), cmdSend},
         {QStringLiteral("decode"), cmdDecode},   {QStringLiteral("simulate"), cmdSimulate},
+        {QStringLiteral("can"), cmdCan},
     };
     const auto it = commands.find(cmd);
     if (it == commands.end()) {

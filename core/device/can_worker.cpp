@@ -425,7 +425,7 @@ void CanWorker::finishJob(bool ok, const QString &message)
     const CanRequestResult r{m_job->id, ok, m_lastValue, ok ? message : tr("%1 failed: %2").arg(m_job->title, message)};
     m_job.reset();
     if (!ok)
-        qCWarning(lcCan) << r.message;
+        qCInfo(lcCan) << r.message;
     Q_EMIT jobFinished(r);
     QMetaObject::invokeMethod(this, &CanWorker::startNextJob, Qt::QueuedConnection);
 }
