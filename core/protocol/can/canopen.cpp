@@ -127,7 +127,7 @@ CanFrame encodeNmt(NmtCommand cmd, uint8_t node)
 
 std::optional<NmtMessage> parseNmt(const CanFrame &f)
 {
-    if (f.extended || f.id != CobNmt || f.len != 2 || f.remote)
+    if (f.extended || f.fd || f.id != CobNmt || f.len != 2 || f.remote)
         return std::nullopt;
     return NmtMessage{f.data[0], f.data[1]};
 }
@@ -151,7 +151,7 @@ CanFrame encodeHeartbeat(uint8_t node, uint8_t state)
 
 std::optional<Heartbeat> parseHeartbeat(const CanFrame &f)
 {
-    if (f.extended || f.remote || f.len != 1 || baseOf(f.id) != CobHeartbeat || f.id > 0x7FF || !isStandardNodeId(nodeOf(f.id)))
+    if (f.extended || f.fd || f.remote || f.len != 1 || baseOf(f.id) != CobHeartbeat || f.id > 0x7FF || !isStandardNodeId(nodeOf(f.id)))
         return std::nullopt;
     return Heartbeat{nodeOf(f.id), f.data[0]};
 }
