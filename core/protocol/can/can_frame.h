@@ -3,6 +3,7 @@
 // (classic CAN uses 0..8, CAN FD up to 64). A plain value type; conversions to and from
 // Qt's QCanBusFrame live here too so transports and codecs share one shape.
 #include <QByteArray>
+#include <QMetaType>
 #include <QString>
 
 #include <array>
@@ -70,3 +71,5 @@ int16_t toI16(double value, double scale);
 int32_t toI32(double value, double scale);
 
 } // namespace imudesk::protocol::can
+
+Q_DECLARE_METATYPE(imudesk::protocol::can::CanFrame)
