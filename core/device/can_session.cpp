@@ -282,7 +282,7 @@ quint64 CanSession::setNodeId(int newId)
                                         j1939Write(j1939::RegCommand, j1939::CommandSave, tr("save")), rst, follow}});
     }
     case CanProtocol::CanOpen: {
-        const uint16_t obj = hip::ObjNodeId;
+        const uint16_t obj = m_options.hipnucNodeIdObject;
         return submit(CanJob{0, title, {sdoWriteStep(obj, 0, uint32_t(newId), 4, tr("set the node ID")),
                                         sdoWriteStep(hip::ObjCommand, 0, hip::CommandSave, 4, tr("save")),
                                         sdoWriteStep(hip::ObjCommand, 0, hip::CommandReset, 4, tr("reset")), follow}});

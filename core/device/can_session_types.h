@@ -20,6 +20,9 @@ struct CanSessionOptions {
     protocol::can::CanProtocol protocol = protocol::can::CanProtocol::Auto;
     int node = -1;        // node / source address to follow; -1: the first one that sends data
     int hec495Mode = -1;  // HEC495 PDO mode, -1 = guess per frame
+    // HiPNUC CANopen node-ID object: 0x209C (firmware 1.7.x) or 0x20A0 (1.6.6); see
+    // canopen::hipnuc::nodeIdObject(major, minor, patch).
+    uint16_t hipnucNodeIdObject = 0x209C;
     bool hec495Extended = false; // HEC495 extended-frame variant (0x18FA....)
     uint8_t hostAddress = 0x55; // J1939 source address of the host
     int requestTimeoutMs = 1000;

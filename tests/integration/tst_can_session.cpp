@@ -6,6 +6,7 @@
 #include "device/can_session.h"
 #include "protocol/can/canopen.h"
 #include "protocol/can/hec495_can.h"
+#include "protocol/can/hipnuc_canopen_objects.h"
 #include "protocol/can/j1939.h"
 #include "protocol/can/j1939_config.h"
 #include "sim/can_simulator.h"
@@ -221,6 +222,29 @@ private Q_SLOTS:
         QVERIFY2(r.ok, qPrintable(r.message));
         QCOMPARE(rig.session->targetNode(), 12);
         QTRY_VERIFY(rig.frames.countRx(0x28C) > 5); // TPDO1 stays in SYNC mode: it was saved
+    }
+
+    // v1.6.6 keeps the node ID in 0x20A0 (chapter 5.4.1); the session is told so.
+    void canopenV166NodeId()
+    {
+        Rig rig;
+        sim::CanSimOptions o;
+        o.protocol = CanProtocol::CanOpen;
+        o.firmware = "1.6.6";
+        QVERIFY(makeRig(rig, o, CanProtocol::CanOpen, kIface));
+        QTRY_VERIFY_WITH_TIMEOUT(rig.frames.countRx(0x288) > 5, 5000);
+        auto r = waitResult(*rig.session, rig.session->setNodeId(20));
+        QVERIFY(!r.ok); // 0x209C does not exist on 1.6.6
+        QVERIFY2(r.message.contains(QStringLiteral("does not exist")), qPrintable(r.message));
+        CanSessionOptions so = rig.session->options();
+        rig.session->close();
+        QTRY_COMPARE(rig.session->state(), device::SessionState::Closed);
+        so.hipnucNodeIdObject = canopen::hipnuc::nodeIdObject(1, 6, 6);
+        rig.session->open(so);
+        QTRY_COMPARE(rig.session->state(), device::SessionState::Connected);
+        r = waitResult(*rig.session, rig.session->setNodeId(20));
+        QVERIFY2(r.ok, qPrintable(r.message));
+        QTRY_VERIFY(rig.frames.countRx(0x294) > 5);
     }
 
     void hec495Standard()
