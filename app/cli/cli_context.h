@@ -2,6 +2,7 @@
 // Shared plumbing for imudesk-cli commands: output streams, exit codes, waiting on
 // a DeviceSession with an event loop, and SIGINT/SIGTERM handling.
 #include "device/device_session.h"
+#include "sim/motion_model.h"
 
 #include <QCommandLineParser>
 #include <QString>
@@ -62,6 +63,10 @@ int cmdHec495(const QStringList &args);
 // and simulate --device hec495.
 int probeFamily(const QString &port, int baud, bool json, int *hipnucBaud);
 int simulateHec495(const QCommandLineParser &p);
+int cmdCan(const QStringList &args);
+// simulate --can PLUGIN:INTERFACE: serves a simulated CAN device until SIGINT/SIGTERM (commands_can.cpp).
+int simulateCan(const QString &canSpec, const QString &protocol, const QString &deviceKind, int node, sim::Motion motion,
+                uint64_t seed, const QString &firmware);
 
 // Parses args with the given parser; on error prints it and returns false.
 bool parseArgs(QCommandLineParser &p, const QStringList &args, const QString &usage);

@@ -280,12 +280,27 @@ int cmdSimulate(const QStringList &args)
     addFlashDumpOption(p);
     p.addOption(QCommandLineOption(QStringLiteral("address"), QStringLiteral("HEC495 module address (default 0)."),
                                    QStringLiteral("N"), QStringLiteral("0")));
+    p.addOption(QCommandLineOption(QStringLiteral("can"), QStringLiteral("Serve a CAN device on PLUGIN:INTERFACE."),
+                                   QStringLiteral("SPEC")));
+    p.addOption(QCommandLineOption(QStringLiteral("protocol"), QStringLiteral("CAN: j1939 (default) or canopen."),
+                                   QStringLiteral("PROTO"), QStringLiteral("j1939")));
+    p.addOption(QCommandLineOption(QStringLiteral("node"), QStringLiteral("CAN: node ID (default 8, HEC495 5)."),
+                                   QStringLiteral("N"), QStringLiteral("-1")));
     const QString usage = QStringLiteral("imudesk-cli simulate --pty [--device hipnuc|hec495] [--model HI14] "
                                          "[--firmware 1.7.1] [--baud 115200] [--address N] "
                                          "[--motion static|spin|tumble] [--seed N] [--flash-dump FILE] "
-                                         "[--modbus [--id N]]");
+                                         "[--modbus [--id N]] | --can PLUGIN:INTERFACE [--protocol j1939|canopen] "
+                                         "[--device hipnuc|hec495] [--node N]");
     if (!parseArgs(p, args, usage))
         return ExitUsage;
+    if (p.isSet(QStringLiteral("can"))) {
+        sim::Motion m = sim::Motion::Static;
+        if (!sim::parseMotion(p.value(QStringLiteral("motion")).toStdString(), m))
+            return fail(QStringLiteral("--motion must be static, spin or tumble"), ExitUsage);
+        return simulateCan(p.value(QStringLiteral("can")), p.value(QStringLiteral("protocol")), p.value(QStringLiteral("device")),
+                           p.value(QStringLiteral("node")).toInt(), m, p.value(QStringLiteral("seed")).toULongLong(),
+                           p.value(QStringLiteral("firmware")));
+    }
     if (!p.isSet(QStringLiteral("pty")))
         return fail(QStringLiteral("simulate needs --pty (usage: %1)").arg(usage), ExitUsage);
     if (p.isSet(QStringLiteral("modbus")))

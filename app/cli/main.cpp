@@ -38,6 +38,10 @@ void usage(FILE *to)
                "  simulate --pty --device hec495 [--baud 9600] [--address N] [--motion M] [--seed N]\n"
                "  hec495 PORT [--baud B] [--address N] [--json] read|info|declination [VALUE]|baud B|rate HZ|\n"
                "         content C|address N|save|reset|calibrate METHOD   talk to a Witlink HEC495 compass\n"
+               "  simulate --can virtualcan:can0 --protocol j1939|canopen [--device hipnuc|hec495] [--node N]\n"
+               "                                         serve a simulated CAN device\n"
+               "  can [--plugin P] [--interface I] [--bitrate B] list|scan|read|reg|sdo|sync [--json]\n"
+               "                                         CAN devices (J1939, CANopen, HEC495)\n"
                "Run 'imudesk-cli COMMAND --help' for a command's options.\n",
                to);
 }
@@ -76,6 +80,7 @@ int main(int argc, char **argv)
         {QStringLiteral("analyze"), cmdAnalyze}, {QStringLiteral("import"), cmdImport},
         {QStringLiteral("update"), cmdUpdate},
         {QStringLiteral("hec495"), cmdHec495},
+        {QStringLiteral("can"), cmdCan},
     };
     const auto it = commands.find(cmd);
     if (it == commands.end()) {

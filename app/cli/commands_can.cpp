@@ -1,0 +1,309 @@
+// imudesk-cli can ...: CAN devices through Qt SerialBus (list, scan, read, reg, sdo, sync).
+#include "cli_context.h"
+
+#include "device/can_session.h"
+#include "format/sample_json.h"
+#include "protocol/can/j1939.h"
+#include "sim/can_simulator.h"
+
+#include <QCanBus>
+#include <QCommandLineParser>
+#include <QLoggingCategory>
+
+#include <cstdio>
+
+namespace imudesk::cli {
+
+using device::CanSession;
+using device::CanSessionOptions;
+using protocol::can::CanProtocol;
+
+namespace {
+
+const char *kUsage = "imudesk-cli can [--plugin P] [--interface I] [--bitrate B] [--protocol auto|j1939|canopen|hec495] "
+                     "[--node N] [--json] list|scan|read|reg|sdo|sync ...\n"
+                     "  list                                 plugins and their interfaces\n"
+                     "  scan [--duration S] [--active]       nodes heard (and, with --active, an SDO scan of 1..127)\n"
+                     "  read [--duration S]                  decoded samples\n"
+                     "  reg read ADDR | reg write ADDR VALUE J1939 configuration register\n"
+                     "  sdo read INDEX SUB | sdo write INDEX SUB VALUE [--size 1..4]\n"
+                     "  sync [PGN] [--count N] [--interval MS]  CANopen SYNC frames, or a J1939 one-shot PGN trigger";
+
+// Qt's CAN plugins log their connection chatter at info level; the CLI's stderr is for errors.
+void quietCanLogging()
+{
+    if (qEnvironmentVariableIsEmpty("QT_LOGGING_RULES"))
+        QLoggingCategory::setFilterRules(QStringLiteral("imudesk.*.info=false\nimudesk.*.debug=false\n"
+                                                        "qt.canbus.*.info=false\nqt.canbus.*.debug=false\nqt.canbus.*.warning=false"));
+}
+
+bool parseNumber(const QString &text, uint32_t *out)
+{
+    bool ok = false;
+    const qulonglong v = text.startsWith(QLatin1String("0x"), Qt::CaseInsensitive) ? text.mid(2).toULongLong(&ok, 16)
+                                                                                    : text.toULongLong(&ok, 10);
+    if (!ok || v > 0xFFFFFFFFull)
+        return false;
+    *out = uint32_t(v);
+    return true;
+}
+
+QString jsonString(const QString &s)
+{
+    QString o = s;
+    o.replace(QLatin1Char('\\'), QStringLiteral("\\\\")).replace(QLatin1Char('"'), QStringLiteral("\\\""));
+    return QLatin1Char('"') + o + QLatin1Char('"');
+}
+
+int cmdCanList(bool json, const QString &onlyPlugin)
+{
+    QStringList plugins = QCanBus::instance()->plugins();
+    if (!onlyPlugin.isEmpty())
+        plugins = QStringList{onlyPlugin};
+    for (const QString &p : plugins) {
+        QString error;
+        const QStringList ifaces = CanSession::interfaces(p, &error);
+        if (json) {
+            QStringList quoted;
+            for (const auto &i : ifaces)
+                quoted << jsonString(i);
+            out(QStringLiteral("{\"plugin\":%1,\"interfaces\":[%2]%3}")
+                    .arg(jsonString(p), quoted.join(QLatin1Char(',')),
+                         error.isEmpty() ? QString() : QStringLiteral(",\"error\":") + jsonString(error)));
+        } else {
+            out(QStringLiteral("%1: %2%3").arg(p, ifaces.isEmpty() ? QStringLiteral("(no interfaces)") : ifaces.join(QStringLiteral(" ")),
+                                                error.isEmpty() ? QString() : QStringLiteral(" (%1)").arg(error)));
+        }
+    }
+    return ExitOk;
+}
+
+bool openSession(CanSession &s, const CanSessionOptions &o, QString *error)
+{
+    s.open(o);
+    QString detail;
+    QObject::connect(&s, &CanSession::stateChanged, &s, [&](device::SessionState, const QString &d) { detail = d; });
+    const bool done = waitFor([&] {
+        const auto st = s.state();
+        return st == device::SessionState::Connected || st == device::SessionState::Failed;
+    }, 5000);
+    if (done && s.state() == device::SessionState::Connected)
+        return true;
+    *error = done ? detail : QStringLiteral("the CAN interface %1:%2 did not connect within 5 s").arg(o.plugin, o.interfaceName);
+    return false;
+}
+
+// Runs one request and prints its outcome.
+int runRequest(CanSession &s, quint64 id, bool json, const QString &label)
+{
+    device::CanRequestResult result;
+    bool done = false;
+    QObject::connect(&s, &CanSession::requestFinished, &s, [&](const device::CanRequestResult &r) {
+        if (r.id == id) {
+            result = r;
+            done = true;
+        }
+    });
+    if (!waitFor([&] { return done; }, 30000))
+        return fail(interrupted() ? QStringLiteral("interrupted") : QStringLiteral("%1: no result").arg(label),
+                    interrupted() ? ExitInterrupted : ExitFailure);
+    if (!result.ok)
+        return fail(result.message);
+    if (json)
+        out(QStringLiteral("{\"request\":%1,\"ok\":true,\"value\":%2}").arg(jsonString(label)).arg(result.value));
+    else
+        out(QStringLiteral("%1: %2 (0x%3)").arg(label).arg(result.value).arg(result.value, 0, 16));
+    return ExitOk;
+}
+
+} // namespace
+
+int cmdCan(const QStringList &args)
+{
+    quietCanLogging();
+    QCommandLineParser p;
+    p.addOption(QCommandLineOption(QStringLiteral("plugin"), QStringLiteral("Qt CAN plugin (default virtualcan)."),
+                                   QStringLiteral("P"), QStringLiteral("virtualcan")));
+    p.addOption(QCommandLineOption(QStringLiteral("interface"), QStringLiteral("Interface (default can0)."),
+                                   QStringLiteral("I"), QStringLiteral("can0")));
+    p.addOption(QCommandLineOption(QStringLiteral("bitrate"), QStringLiteral("Bit rate to set (default: leave)."), QStringLiteral("B")));
+    p.addOption(QCommandLineOption(QStringLiteral("protocol"), QStringLiteral("auto (default), j1939, canopen or hec495."),
+                                   QStringLiteral("PROTO"), QStringLiteral("auto")));
+    p.addOption(QCommandLineOption(QStringLiteral("node"), QStringLiteral("Node ID / J1939 address (default: first heard)."),
+                                   QStringLiteral("N")));
+    p.addOption(QCommandLineOption(QStringLiteral("duration"), QStringLiteral("Seconds (scan: 2, read: until Ctrl+C)."),
+                                   QStringLiteral("S")));
+    p.addOption(QCommandLineOption(QStringLiteral("active"), QStringLiteral("scan: also read 0x1000 from nodes 1..127 (SDO).")));
+    p.addOption(QCommandLineOption(QStringLiteral("size"), QStringLiteral("sdo write: bytes 1..4 (default 4)."),
+                                   QStringLiteral("N"), QStringLiteral("4")));
+    p.addOption(QCommandLineOption(QStringLiteral("count"), QStringLiteral("sync: frames to send (default 1)."),
+                                   QStringLiteral("N"), QStringLiteral("1")));
+    p.addOption(QCommandLineOption(QStringLiteral("interval"), QStringLiteral("sync: ms between frames (default 10)."),
+                                   QStringLiteral("MS"), QStringLiteral("10")));
+    p.addOption(QCommandLineOption(QStringLiteral("json"), QStringLiteral("JSON Lines output.")));
+    p.addPositionalArgument(QStringLiteral("SUBCOMMAND"), QStringLiteral("list, scan, read, reg, sdo or sync"));
+    if (!parseArgs(p, args, QString::fromLatin1(kUsage)))
+        return ExitUsage;
+    const QStringList pos = p.positionalArguments();
+    if (pos.isEmpty())
+        return fail(QStringLiteral("can needs a subcommand (usage: %1)").arg(QString::fromLatin1(kUsage)), ExitUsage);
+    const QString sub = pos.front();
+    const bool json = p.isSet(QStringLiteral("json"));
+    if (sub == QLatin1String("list"))
+        return cmdCanList(json, p.isSet(QStringLiteral("plugin")) ? p.value(QStringLiteral("plugin")) : QString());
+
+    CanSessionOptions o;
+    o.plugin = p.value(QStringLiteral("plugin"));
+    o.interfaceName = p.value(QStringLiteral("interface"));
+    const auto proto = protocol::can::parseProtocol(p.value(QStringLiteral("protocol")));
+    if (!proto)
+        return fail(QStringLiteral("--protocol must be auto, j1939, canopen or hec495"), ExitUsage);
+    o.protocol = *proto;
+    uint32_t n = 0;
+    if (p.isSet(QStringLiteral("bitrate"))) {
+        if (!parseNumber(p.value(QStringLiteral("bitrate")), &n) || n == 0)
+            return fail(QStringLiteral("--bitrate needs a positive number"), ExitUsage);
+        o.bitrate = int(n);
+    }
+    if (p.isSet(QStringLiteral("node"))) {
+        if (!parseNumber(p.value(QStringLiteral("node")), &n) || n > 253)
+            return fail(QStringLiteral("--node needs 0..253"), ExitUsage);
+        o.node = int(n);
+    }
+    double duration = -1;
+    if (p.isSet(QStringLiteral("duration"))) {
+        bool ok = false;
+        duration = p.value(QStringLiteral("duration")).toDouble(&ok);
+        if (!ok || duration <= 0)
+            return fail(QStringLiteral("--duration needs a positive number of seconds"), ExitUsage);
+    }
+    // Requests need a known protocol: without --protocol, listen until traffic shows it.
+    const bool needsProtocol = sub == QLatin1String("reg") || sub == QLatin1String("sdo") || sub == QLatin1String("sync");
+    if (sub == QLatin1String("reg") && o.protocol == CanProtocol::Auto)
+        o.protocol = CanProtocol::J1939;
+    if (sub == QLatin1String("sdo") && o.protocol == CanProtocol::Auto)
+        o.protocol = CanProtocol::CanOpen;
+    if (needsProtocol && o.node < 0)
+        o.node = o.protocol == CanProtocol::Hec495 ? 5 : 8;
+
+    CanSession session;
+    if (sub == QLatin1String("scan")) // before opening: the first frames already discover nodes
+        QObject::connect(&session, &CanSession::nodeDiscovered, &session, [json](const device::CanNodeInfo &i) {
+            const QString proto = QString::fromLatin1(protocol::can::protocolName(i.protocol));
+            if (json)
+                out(QStringLiteral("{\"node\":%1,\"protocol\":%2,\"seen_as\":%3}").arg(i.node).arg(jsonString(proto), jsonString(i.seenAs)));
+            else
+                out(QStringLiteral("node %1 (%2, %3)").arg(i.node).arg(proto, i.seenAs));
+        });
+    QString error;
+    if (!openSession(session, o, &error))
+        return fail(error);
+
+    if (sub == QLatin1String("scan")) {
+        bool scanDone = !p.isSet(QStringLiteral("active"));
+        QObject::connect(&session, &CanSession::scanFinished, &session, [&](const QList<int> &nodes, bool) {
+            scanDone = true;
+            QStringList ids;
+            for (int n : nodes)
+                ids << QString::number(n);
+            if (json)
+                out(QStringLiteral("{\"sdo_scan\":[%1]}").arg(ids.join(QLatin1Char(','))));
+            else
+                out(QStringLiteral("SDO scan 1..127: %1").arg(ids.isEmpty() ? QStringLiteral("no answer") : ids.join(QLatin1Char(' '))));
+        });
+        if (!scanDone)
+            session.scanNodes(1, 127);
+        const int ms = duration > 0 ? int(duration * 1000) : 2000;
+        waitFor([] { return false; }, ms);
+        waitFor([&] { return scanDone; }, 5000);
+        return interrupted() ? ExitInterrupted : ExitOk;
+    }
+    if (sub == QLatin1String("read")) {
+        uint64_t seq = 0, printed = 0;
+        int64_t lastTextNs = 0;
+        auto drain = [&] {
+            for (const auto &s : session.store().since(seq, SIZE_MAX, &seq)) {
+                ++printed;
+                if (json) {
+                    outRaw(format::sampleToJson(s));
+                } else if (s.hostTimeNs - lastTextNs >= 100'000'000) {
+                    lastTextNs = s.hostTimeNs;
+                    std::printf("%s node %d acc=[%.3f %.3f %.3f] G gyr=[%.2f %.2f %.2f] deg/s rpy=[%.2f %.2f %.2f] deg\n",
+                                s.source.c_str(), session.targetNode(), s.acc.x, s.acc.y, s.acc.z, s.gyr.x, s.gyr.y, s.gyr.z,
+                                s.roll, s.pitch, s.yaw);
+                }
+            }
+            std::fflush(stdout);
+            return false;
+        };
+        waitFor(drain, duration > 0 ? int(duration * 1000) : -1);
+        drain();
+        if (!json)
+            out(QStringLiteral("samples: %1, protocol: %2").arg(printed).arg(QString::fromLatin1(protocol::can::protocolName(session.protocol()))));
+        return interrupted() ? ExitInterrupted : ExitOk;
+    }
+    if (sub == QLatin1String("reg")) {
+        uint32_t addr = 0, value = 0;
+        if (pos.size() == 3 && pos[1] == QLatin1String("read") && parseNumber(pos[2], &addr) && addr <= 0xFFFF)
+            return runRequest(session, session.readRegister(uint16_t(addr)), json, QStringLiteral("register 0x%1").arg(addr, 4, 16, QLatin1Char('0')));
+        if (pos.size() == 4 && pos[1] == QLatin1String("write") && parseNumber(pos[2], &addr) && addr <= 0xFFFF && parseNumber(pos[3], &value))
+            return runRequest(session, session.writeRegister(uint16_t(addr), value), json, QStringLiteral("register 0x%1").arg(addr, 4, 16, QLatin1Char('0')));
+        return fail(QStringLiteral("usage: can reg read ADDR | can reg write ADDR VALUE (numbers decimal or 0x hex)"), ExitUsage);
+    }
+    if (sub == QLatin1String("sdo")) {
+        uint32_t index = 0, subIndex = 0, value = 0, size = 4;
+        const bool idxOk = pos.size() >= 4 && parseNumber(pos[2], &index) && index <= 0xFFFF && parseNumber(pos[3], &subIndex) && subIndex <= 0xFF;
+        const QString label = QStringLiteral("0x%1.%2").arg(index, 4, 16, QLatin1Char('0')).arg(subIndex, 2, 16, QLatin1Char('0'));
+        if (idxOk && pos.size() == 4 && pos[1] == QLatin1String("read"))
+            return runRequest(session, session.sdoRead(uint16_t(index), uint8_t(subIndex)), json, label);
+        if (idxOk && pos.size() == 5 && pos[1] == QLatin1String("write") && parseNumber(pos[4], &value)
+            && parseNumber(p.value(QStringLiteral("size")), &size) && size >= 1 && size <= 4) {
+            if (o.protocol == CanProtocol::Hec495)
+                return runRequest(session, session.hec495Write(uint16_t(index), uint8_t(value)), json, label);
+            return runRequest(session, session.sdoWrite(uint16_t(index), uint8_t(subIndex), value, int(size)), json, label);
+        }
+        return fail(QStringLiteral("usage: can sdo read INDEX SUB | can sdo write INDEX SUB VALUE [--size 1..4]"), ExitUsage);
+    }
+    if (sub == QLatin1String("sync")) {
+        uint32_t count = 0, interval = 0, pgn = 0;
+        if (!parseNumber(p.value(QStringLiteral("count")), &count) || count == 0 || !parseNumber(p.value(QStringLiteral("interval")), &interval))
+            return fail(QStringLiteral("--count and --interval need whole numbers"), ExitUsage);
+        const bool trigger = o.protocol == CanProtocol::J1939;
+        if (trigger && (pos.size() != 2 || !parseNumber(pos[1], &pgn) || !protocol::can::j1939::isDataPgn(pgn)))
+            return fail(QStringLiteral("J1939 sync needs a data PGN, e.g. can --protocol j1939 sync 0xFF34"), ExitUsage);
+        uint32_t sent = 0;
+        uint64_t received = 0;
+        QObject::connect(&session, &CanSession::framesSeen, &session, [&](const device::CanFrameEvents &ev) {
+            for (const auto &e : ev)
+                received += e.transmitted ? 0 : 1;
+        });
+        for (; sent < count && !interrupted(); ++sent) {
+            if (trigger)
+                session.trigger(pgn);
+            else
+                session.sendSync();
+            waitFor([] { return false; }, int(interval));
+        }
+        waitFor([] { return false; }, 100);
+        if (json)
+            out(QStringLiteral("{\"sent\":%1,\"frames_received\":%2}").arg(sent).arg(received));
+        else
+            out(QStringLiteral("%1 sent: %2, frames received meanwhile: %3").arg(trigger ? QStringLiteral("triggers") : QStringLiteral("SYNC")).arg(sent).arg(received));
+        return interrupted() ? ExitInterrupted : ExitOk;
+    }
+    return fail(QStringLiteral("unknown can subcommand '%1' (usage: %2)").arg(sub, QString::fromLatin1(kUsage)), ExitUsage);
+}
+
+int simulateCan(const QString &canSpec, const QString &protocolText, const QString &deviceKind, int node, sim::Motion motion,
+                uint64_t seed, const QString &firmware)
+{
+    quietCanLogging();
+    QString error;
+    const int rc = sim::runCanSimulatorCommand(canSpec, protocolText, deviceKind, node, motion, seed, firmware, false, &error,
+                                               [] { return interrupted(); });
+    if (rc != 0)
+        return fail(error, rc);
+    return ExitOk;
+}
+
+} // namespace imudesk::cli

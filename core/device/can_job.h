@@ -1,0 +1,40 @@
+#pragma once
+// One configuration job of a CAN session: a sequence of steps, each a frame to send and what
+// confirms it (a J1939 configuration reply, an SDO reply, an HEC495 write reply, traffic from
+// a node, or nothing but a pause). A failed or timed-out step ends the job.
+#include "protocol/can/can_frame.h"
+
+#include <QString>
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+namespace imudesk::device {
+
+struct CanJobStep {
+    enum class Expect {
+        Nothing,       // send and go on after pauseMs
+        J1939Reply,    // the configuration reply to tx (same address/cmd, status 0)
+        SdoReply,      // 0x60 / 0x4x reply to tx; 0x80 = abort
+        Hec495Reply,   // 0x60 reply with tx's index
+        TrafficFrom,   // any frame from node `node` (the session followed a node change)
+    };
+    bool hasTx = true;
+    protocol::can::CanFrame tx;
+    Expect expect = Expect::Nothing;
+    int timeoutMs = 1000;
+    int pauseMs = 0;
+    int node = -1;                        // TrafficFrom
+    std::optional<uint32_t> expectValue;  // read-back must equal this
+    int followNode = -1;                  // after this step the session follows this node
+    QString what;                         // for messages: "read back PGN FF37 interval"
+};
+
+struct CanJob {
+    quint64 id = 0;
+    QString title;
+    std::vector<CanJobStep> steps;
+};
+
+} // namespace imudesk::device

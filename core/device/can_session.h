@@ -1,0 +1,92 @@
+#pragma once
+// A device on a CAN bus (HiPNUC J1939, HiPNUC CANopen, HEC495 CAN) behind the DeviceLink
+// interface the live views use. The bus, decoding and the request queue run in a worker in
+// the process-wide CAN thread (can_worker.h); this object's API is queued and safe to call
+// from the owner's thread. Configuration calls return a request id; the outcome arrives in
+// requestFinished, confirmed by the device's reply or by reading the value back.
+#include "can_job.h"
+#include "can_session_types.h"
+#include "device/device_link.h"
+
+#include <QStringList>
+
+#include <atomic>
+
+namespace imudesk::device {
+
+class CanWorker;
+
+class CanSession : public DeviceLink {
+    Q_OBJECT
+public:
+    explicit CanSession(QObject *parent = nullptr);
+    ~CanSession() override;
+
+    // What Qt offers: plugin names, and a plugin's interfaces ("can0", ...).
+    static QStringList plugins();
+    static QStringList interfaces(const QString &plugin, QString *error = nullptr);
+
+    void open(const CanSessionOptions &options);
+    void close() override;
+    QString linkKind() const override;
+
+    const CanSessionOptions &options() const { return m_options; }
+    protocol::can::CanProtocol protocol() const; // the configured one, else the detected one
+    int targetNode() const { return m_target.load(); }
+
+    // Raw access.
+    quint64 readRegister(uint16_t addr);                  // J1939
+    quint64 writeRegister(uint16_t addr, uint32_t value); // J1939, confirmed by the echo
+    quint64 sdoRead(uint16_t index, uint8_t sub);         // CANopen
+    quint64 sdoWrite(uint16_t index, uint8_t sub, uint32_t value, int size);
+    quint64 hec495Write(uint16_t index, uint8_t value);
+
+    // Configuration (all protocols where the device has it).
+    quint64 setOutputPeriod(uint32_t pgnOrChannel, int ms); // J1939: data PGN; CANopen: TPDO channel 0..5
+    quint64 setHec495Rate(int code);
+    quint64 setSyncMode(int channel, bool sync);
+    quint64 setHeartbeat(int ms);                          // HEC495: rounded to 100 ms * (N + 1)
+    quint64 setNodeId(int newId);
+    quint64 setBitrate(int bitrate);
+    quint64 attitudeReset(int mode);
+    quint64 setOutputEnabled(bool on);
+    quint64 save();
+    quint64 reset();
+    quint64 factoryReset();
+    quint64 trigger(uint32_t pgn);                         // J1939 one-shot output
+
+    void sendSync();
+    void setSyncPeriod(int ms);                            // 0 = off
+    void sendNmt(uint8_t command, uint8_t node);
+    void sendFrame(const protocol::can::CanFrame &f);
+    void scanNodes(int from = 1, int to = 127);
+    void cancelScan();
+
+Q_SIGNALS:
+    void requestFinished(const imudesk::device::CanRequestResult &result);
+    void framesSeen(const imudesk::device::CanFrameEvents &events);
+    void nodeDiscovered(const imudesk::device::CanNodeInfo &info);
+    void protocolDetected(int protocol);
+    void targetNodeChanged(int node);
+    void scanProgress(int done, int total);
+    void scanFinished(const QList<int> &nodes, bool cancelled);
+
+private:
+    quint64 submit(CanJob job);
+    quint64 refuse(const QString &why);
+    uint8_t node() const;
+    CanJobStep j1939Write(uint16_t addr, uint32_t value, const QString &what) const;
+    CanJobStep j1939Read(uint16_t addr, const QString &what) const;
+    CanJobStep sdoWriteStep(uint16_t index, uint8_t sub, uint32_t value, int size, const QString &what) const;
+    CanJobStep sdoReadStep(uint16_t index, uint8_t sub, const QString &what) const;
+    CanJobStep hecStep(uint16_t index, uint8_t value, const QString &what) const;
+    quint64 commandJob(uint32_t value, const QString &title, int followNode);
+
+    CanWorker *m_worker;
+    CanSessionOptions m_options;
+    std::atomic<int> m_target{-1};
+    std::atomic<int> m_detected{0};
+    std::atomic<quint64> m_nextId{1};
+};
+
+} // namespace imudesk::device

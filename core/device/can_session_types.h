@@ -1,0 +1,56 @@
+#pragma once
+// Value types that cross between a CanSession and its worker thread.
+#include "protocol/can/can_decoder.h"
+#include "protocol/can/can_frame.h"
+
+#include <QList>
+#include <QMetaType>
+#include <QString>
+
+#include <cstdint>
+
+namespace imudesk::device {
+
+struct CanSessionOptions {
+    QString plugin = QStringLiteral("virtualcan");
+    QString interfaceName = QStringLiteral("can0");
+    int bitrate = 0;      // 0: leave the plugin's setting
+    int dataBitrate = 0;  // CAN FD data phase; 0: none
+    bool canFd = false;
+    protocol::can::CanProtocol protocol = protocol::can::CanProtocol::Auto;
+    int node = -1;        // node / source address to follow; -1: the first one that sends data
+    int hec495Mode = -1;  // HEC495 PDO mode, -1 = guess per frame
+    // HiPNUC CANopen node-ID object: 0x209C (firmware 1.7.x) or 0x20A0 (1.6.6); see
+    // canopen::hipnuc::nodeIdObject(major, minor, patch).
+    uint16_t hipnucNodeIdObject = 0x209C;
+    bool hec495Extended = false; // HEC495 extended-frame variant (0x18FA....)
+    uint8_t hostAddress = 0x55; // J1939 source address of the host
+    int requestTimeoutMs = 1000;
+};
+
+struct CanFrameEvent {
+    protocol::can::CanFrame frame;
+    qint64 hostTimeNs = 0;
+    bool transmitted = false; // sent by this session
+};
+using CanFrameEvents = QList<CanFrameEvent>;
+
+struct CanNodeInfo {
+    protocol::can::CanProtocol protocol = protocol::can::CanProtocol::Auto;
+    int node = -1;
+    QString seenAs; // "data", "heartbeat", "boot-up", "SDO scan", "configuration reply"
+};
+
+struct CanRequestResult {
+    quint64 id = 0;
+    bool ok = false;
+    quint32 value = 0;  // value read back or echoed
+    QString message;    // what happened (error text when !ok)
+};
+
+} // namespace imudesk::device
+
+Q_DECLARE_METATYPE(imudesk::device::CanFrameEvents)
+Q_DECLARE_METATYPE(imudesk::device::CanNodeInfo)
+Q_DECLARE_METATYPE(imudesk::device::CanRequestResult)
+Q_DECLARE_METATYPE(imudesk::device::CanSessionOptions)

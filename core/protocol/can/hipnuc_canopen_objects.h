@@ -1,0 +1,45 @@
+#pragma once
+// HiPNUC's CANopen object dictionary entries (v1.7.1 manual 8.28, v1.6.6 5.4): written with
+// expedited SDO. Firmware 1.7.1 keeps the node ID in 0x209C, 1.6.6 in 0x20A0.
+#include "can_frame.h"
+
+#include <cstdint>
+
+namespace imudesk::protocol::can::canopen::hipnuc {
+
+enum Object : uint16_t {
+    ObjCommand = 0x2000,       // sub 0: 0 save, 1 factory defaults, 0xFF reset
+    ObjBaud = 0x209A,          // 0:1000K 2:500K 3:250K 4:125K (1:800K as on J1939)
+    ObjNodeId = 0x209C,        // v1.7.1
+    ObjNodeIdV166 = 0x20A0,    // v1.6.6
+    ObjInclSignX = 0x209E,
+    ObjInclSignY = 0x209F,
+    ObjInclZero = 0x20A5,      // 2 set zero here, 5 clear zero
+    ObjHeartbeat = 0x1017,     // u16 ms, 0 = off
+};
+
+inline constexpr uint8_t kSubTransmissionType = 2; // u8: 1 = SYNC, 0xFE/0xFF = asynchronous (event timer)
+inline constexpr uint8_t kSubEventTimer = 5;       // u16 ms, 0 = off
+inline constexpr uint8_t kTransmissionSync = 0x01;
+inline constexpr uint8_t kTransmissionAsync = 0xFF;
+
+enum CommandValue : uint32_t { CommandSave = 0x00, CommandFactory = 0x01, CommandReset = 0xFF };
+
+// Node-ID object of a firmware version (major, minor, patch): 0x20A0 before 1.7.0.
+uint16_t nodeIdObject(int major, int minor, int patch);
+
+// The manual's requests, byte for byte.
+CanFrame setNodeId(uint8_t node, uint8_t newId, uint16_t object = ObjNodeId); // 23 9C 20 00 id 00 00 00
+CanFrame command(uint8_t node, CommandValue v);                                // 23 00 20 00 v ..
+CanFrame setBaud(uint8_t node, uint8_t code);                                  // 23 9A 20 00 code ..
+CanFrame setTpdoPeriod(uint8_t node, int channel, uint16_t ms);                // 2B 0x 18 05 ms ..
+CanFrame setTransmissionType(uint8_t node, int channel, uint8_t type);         // 2F 0x 18 02 type ..
+CanFrame setHeartbeat(uint8_t node, uint16_t ms);                              // 2B 17 10 00 ms ..
+CanFrame setInclZero(uint8_t node, uint8_t mode);                              // 23 A5 20 00 mode ..
+CanFrame setInclSign(uint8_t node, bool yAxis, bool reversed);                 // 23 9E/9F 20 00 v ..
+
+// Baud codes of 0x209A (and the J1939 register 0x9A).
+int baudFromCode(uint32_t code);
+int codeFromBaud(int bitrate);
+
+} // namespace imudesk::protocol::can::canopen::hipnuc

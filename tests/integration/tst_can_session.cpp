@@ -1,0 +1,296 @@
+// End to end over Qt's virtualcan plugin: the CAN simulator in this thread, a CanSession in
+// the CAN worker thread. Stream, change a TPDO rate and see the period change, SYNC-mode
+// TPDOs answer a SYNC, change the node ID (the session follows), J1939 register write and
+// read back, HEC495 configuration, SDO scan. This executable uses its own virtualcan TCP port
+// (the plugin starts one server per process, on the first port asked for).
+#include "device/can_session.h"
+#include "protocol/can/canopen.h"
+#include "protocol/can/hec495_can.h"
+#include "protocol/can/hipnuc_canopen_objects.h"
+#include "protocol/can/j1939.h"
+#include "protocol/can/j1939_config.h"
+#include "sim/can_simulator.h"
+
+#include <QCanBus>
+#include <QSignalSpy>
+#include <QTest>
+
+using namespace imudesk;
+using namespace imudesk::protocol::can;
+using device::CanSession;
+using device::CanSessionOptions;
+using device::CanRequestResult;
+
+namespace {
+const QString kPlugin = QStringLiteral("virtualcan");
+// Port 35468 is the plugin's default; this test keeps off it and off the other CAN tests.
+const QString kIface = QStringLiteral("tcp://127.0.0.1:35481/can0");
+const QString kIface1 = QStringLiteral("tcp://127.0.0.1:35481/can1");
+
+struct Frames {
+    QList<device::CanFrameEvent> events;
+    int countRx(uint32_t id, qint64 fromNs = 0) const
+    {
+        int n = 0;
+        for (const auto &e : events)
+            n += (!e.transmitted && e.frame.id == id && e.hostTimeNs >= fromNs) ? 1 : 0;
+        return n;
+    }
+    // Mean period in ms of received frames with this id after fromNs.
+    double periodMs(uint32_t id, qint64 fromNs) const
+    {
+        qint64 first = -1, last = -1;
+        int n = 0;
+        for (const auto &e : events)
+            if (!e.transmitted && e.frame.id == id && e.hostTimeNs >= fromNs) {
+                if (first < 0) first = e.hostTimeNs;
+                last = e.hostTimeNs;
+                ++n;
+            }
+        return n > 1 ? double(last - first) / 1e6 / (n - 1) : 0;
+    }
+};
+
+// Waits for the result of request id.
+CanRequestResult waitResult(CanSession &s, quint64 id, int timeoutMs = 5000)
+{
+    CanRequestResult out;
+    bool done = false;
+    QMetaObject::Connection c = QObject::connect(&s, &CanSession::requestFinished, &s, [&](const CanRequestResult &r) {
+        if (r.id == id) {
+            out = r;
+            done = true;
+        }
+    });
+    QElapsedTimer t;
+    t.start();
+    while (!done && t.elapsed() < timeoutMs)
+        QTest::qWait(5);
+    QObject::disconnect(c);
+    if (!done)
+        out.message = QStringLiteral("no result");
+    return out;
+}
+
+} // namespace
+
+class TstCanSession : public QObject {
+    Q_OBJECT
+    struct Rig {
+        std::unique_ptr<sim::CanSimulator> sim;
+        std::unique_ptr<CanSession> session;
+        Frames frames;
+        QElapsedTimer clock;
+    };
+
+    bool makeRig(Rig &rig, sim::CanSimOptions o, CanProtocol p, const QString &iface = kIface)
+    {
+        rig.sim = std::make_unique<sim::CanSimulator>(o);
+        QString err;
+        if (!rig.sim->start(kPlugin, iface, &err)) {
+            qWarning() << err;
+            return false;
+        }
+        rig.session = std::make_unique<CanSession>();
+        connect(rig.session.get(), &CanSession::framesSeen, this, [&rig](const device::CanFrameEvents &ev) { rig.frames.events += ev; });
+        CanSessionOptions so;
+        so.plugin = kPlugin;
+        so.interfaceName = iface;
+        so.protocol = p;
+        so.hec495Extended = o.hec495 && o.protocol == CanProtocol::J1939;
+        rig.session->open(so);
+        bool connected = false;
+        for (int i = 0; i < 400 && !connected; ++i) {
+            QTest::qWait(5);
+            connected = rig.session->state() == device::SessionState::Connected;
+        }
+        return connected;
+    }
+    // Host-side time of the last event, as a "from here on" mark.
+    static qint64 mark(const Rig &rig) { return rig.frames.events.isEmpty() ? 0 : rig.frames.events.last().hostTimeNs; }
+
+private Q_SLOTS:
+    void initTestCase()
+    {
+        if (!QCanBus::instance()->plugins().contains(kPlugin))
+            QSKIP("Qt's virtualcan CAN bus plugin is not installed (package qt6-serialbus-plugins / libqt6serialbus6-plugins)");
+    }
+
+    void j1939StreamAndRegisters()
+    {
+        Rig rig;
+        sim::CanSimOptions o;
+        o.protocol = CanProtocol::J1939;
+        o.motion = sim::Motion::Spin;
+        QVERIFY(makeRig(rig, o, CanProtocol::Auto));
+        QTRY_VERIFY_WITH_TIMEOUT(rig.session->store().totalAppended() > 20, 5000);
+        QTRY_COMPARE(rig.session->protocol(), CanProtocol::J1939);
+        QTRY_COMPARE(rig.session->targetNode(), 8);
+        const auto s = rig.session->store().latest();
+        QVERIFY(s && s->has(model::FieldAcc) && s->has(model::FieldEuler) && s->has(model::FieldQuat));
+        QVERIFY(std::abs(std::sqrt(s->acc.x * s->acc.x + s->acc.y * s->acc.y + s->acc.z * s->acc.z) - 1.0) < 0.05);
+        // 7.23 example: gyro PGN at 100 ms -> set 20 ms, reply + read back.
+        auto r = waitResult(*rig.session, rig.session->setOutputPeriod(j1939::PgnGyr, 20));
+        QVERIFY2(r.ok, qPrintable(r.message));
+        const qint64 from = mark(rig);
+        QTest::qWait(600);
+        const double p = rig.frames.periodMs(0x0CFF3708, from + 50000000);
+        QVERIFY2(p > 15 && p < 26, qPrintable(QString::number(p)));
+        // Raw register write and read back.
+        r = waitResult(*rig.session, rig.session->writeRegister(0x0134, 50));
+        QVERIFY2(r.ok && r.value == 50, qPrintable(r.message));
+        r = waitResult(*rig.session, rig.session->readRegister(0x0134));
+        QVERIFY2(r.ok && r.value == 50, qPrintable(r.message));
+        // Out of range: the device's status makes it a failure that says so.
+        r = waitResult(*rig.session, rig.session->writeRegister(0x0134, 3));
+        QVERIFY(!r.ok);
+        QVERIFY(r.message.contains(QStringLiteral("status")));
+        // Node ID 9: write, save, reset; the session follows.
+        QSignalSpy follow(rig.session.get(), &CanSession::targetNodeChanged);
+        r = waitResult(*rig.session, rig.session->setNodeId(9));
+        QVERIFY2(r.ok, qPrintable(r.message));
+        QCOMPARE(rig.session->targetNode(), 9);
+        QCOMPARE(rig.sim->device().node(), 9);
+        const quint64 before = rig.session->store().totalAppended();
+        QTRY_VERIFY_WITH_TIMEOUT(rig.session->store().totalAppended() > before + 10, 3000);
+        r = waitResult(*rig.session, rig.session->readRegister(j1939::RegNodeId));
+        QVERIFY2(r.ok && r.value == 9, qPrintable(r.message));
+        // A node that is not there: timeout with a useful message.
+        CanSessionOptions so = rig.session->options();
+        rig.session->close();
+        QTRY_COMPARE(rig.session->state(), device::SessionState::Closed);
+        so.node = 42;
+        so.protocol = CanProtocol::J1939;
+        so.requestTimeoutMs = 300;
+        rig.session->open(so);
+        QTRY_COMPARE(rig.session->state(), device::SessionState::Connected);
+        r = waitResult(*rig.session, rig.session->readRegister(j1939::RegNodeId));
+        QVERIFY(!r.ok);
+        QVERIFY2(r.message.contains(QStringLiteral("node 42")), qPrintable(r.message));
+    }
+
+    void canopenRatesSyncAndScan()
+    {
+        Rig rig;
+        sim::CanSimOptions o;
+        o.protocol = CanProtocol::CanOpen;
+        QVERIFY(makeRig(rig, o, CanProtocol::CanOpen, kIface1));
+        QTRY_VERIFY_WITH_TIMEOUT(rig.frames.countRx(0x188) > 20, 5000);
+        // Change TPDO1 to 50 ms and see the period change.
+        auto r = waitResult(*rig.session, rig.session->setOutputPeriod(0, 50));
+        QVERIFY2(r.ok && r.value == 50, qPrintable(r.message));
+        qint64 from = mark(rig);
+        QTest::qWait(700);
+        double p = rig.frames.periodMs(0x188, from + 30000000);
+        QVERIFY2(p > 40 && p < 62, qPrintable(QString::number(p)));
+        // SYNC mode: no more periodic TPDO1; a SYNC brings exactly one.
+        r = waitResult(*rig.session, rig.session->setSyncMode(0, true));
+        QVERIFY2(r.ok, qPrintable(r.message));
+        QTest::qWait(150);
+        from = mark(rig);
+        QTest::qWait(300);
+        QCOMPARE(rig.frames.countRx(0x188, from + 1), 0);
+        rig.session->sendSync();
+        QTRY_COMPARE(rig.frames.countRx(0x188, from + 1), 1);
+        rig.session->setSyncPeriod(20);
+        QTRY_VERIFY_WITH_TIMEOUT(rig.frames.countRx(0x188, from + 1) >= 10, 3000);
+        rig.session->setSyncPeriod(0);
+        // Heartbeat, read back.
+        r = waitResult(*rig.session, rig.session->setHeartbeat(100));
+        QVERIFY2(r.ok, qPrintable(r.message));
+        QTRY_VERIFY(rig.frames.countRx(0x708) >= 2);
+        // Unknown object: abort text.
+        r = waitResult(*rig.session, rig.session->sdoWrite(0x2123, 0, 1, 4));
+        QVERIFY(!r.ok);
+        QVERIFY2(r.message.contains(QStringLiteral("does not exist")), qPrintable(r.message));
+        // Active SDO scan with progress.
+        QSignalSpy progress(rig.session.get(), &CanSession::scanProgress);
+        QSignalSpy done(rig.session.get(), &CanSession::scanFinished);
+        rig.session->scanNodes(1, 20);
+        QTRY_COMPARE_WITH_TIMEOUT(done.size(), 1, 5000);
+        QCOMPARE(done.at(0).at(0).value<QList<int>>(), QList<int>{8});
+        QCOMPARE(done.at(0).at(1).toBool(), false);
+        QCOMPARE(progress.last().at(0).toInt(), 20);
+        // Cancel.
+        rig.session->scanNodes(1, 127);
+        QTRY_VERIFY(progress.size() > 22);
+        rig.session->cancelScan();
+        QTRY_COMPARE(done.size(), 2);
+        QCOMPARE(done.at(1).at(1).toBool(), true);
+        // Node ID change: the session follows the boot-up of node 12.
+        r = waitResult(*rig.session, rig.session->setNodeId(12));
+        QVERIFY2(r.ok, qPrintable(r.message));
+        QCOMPARE(rig.session->targetNode(), 12);
+        QTRY_VERIFY(rig.frames.countRx(0x28C) > 5); // TPDO1 stays in SYNC mode: it was saved
+    }
+
+    // v1.6.6 keeps the node ID in 0x20A0 (chapter 5.4.1); the session is told so.
+    void canopenV166NodeId()
+    {
+        Rig rig;
+        sim::CanSimOptions o;
+        o.protocol = CanProtocol::CanOpen;
+        o.firmware = "1.6.6";
+        QVERIFY(makeRig(rig, o, CanProtocol::CanOpen, kIface));
+        QTRY_VERIFY_WITH_TIMEOUT(rig.frames.countRx(0x288) > 5, 5000);
+        auto r = waitResult(*rig.session, rig.session->setNodeId(20));
+        QVERIFY(!r.ok); // 0x209C does not exist on 1.6.6
+        QVERIFY2(r.message.contains(QStringLiteral("does not exist")), qPrintable(r.message));
+        CanSessionOptions so = rig.session->options();
+        rig.session->close();
+        QTRY_COMPARE(rig.session->state(), device::SessionState::Closed);
+        so.hipnucNodeIdObject = canopen::hipnuc::nodeIdObject(1, 6, 6);
+        rig.session->open(so);
+        QTRY_COMPARE(rig.session->state(), device::SessionState::Connected);
+        r = waitResult(*rig.session, rig.session->setNodeId(20));
+        QVERIFY2(r.ok, qPrintable(r.message));
+        QTRY_VERIFY(rig.frames.countRx(0x294) > 5);
+    }
+
+    void hec495Standard()
+    {
+        Rig rig;
+        sim::CanSimOptions o;
+        o.protocol = CanProtocol::CanOpen;
+        o.hec495 = true;
+        QVERIFY(makeRig(rig, o, CanProtocol::Auto));
+        QTRY_VERIFY_WITH_TIMEOUT(rig.session->store().totalAppended() > 3, 5000);
+        QTRY_COMPARE(rig.session->protocol(), CanProtocol::Hec495);
+        auto r = waitResult(*rig.session, rig.session->setHec495Rate(6));
+        QVERIFY2(r.ok, qPrintable(r.message));
+        const qint64 from = mark(rig);
+        QTest::qWait(500);
+        const double p = rig.frames.periodMs(0x185, from + 30000000);
+        QVERIFY2(p > 7 && p < 14, qPrintable(QString::number(p)));
+        r = waitResult(*rig.session, rig.session->hec495Write(hec495::ObjPdoMode, hec495::ModeFixed));
+        QVERIFY2(r.ok, qPrintable(r.message));
+        // The write is confirmed, then the job waits for the power cycle and follows node 16.
+        QSignalSpy finished(rig.session.get(), &CanSession::requestFinished);
+        const quint64 id = rig.session->setNodeId(16);
+        QTRY_VERIFY(rig.sim->device().hec().node == 16);
+        QCOMPARE(rig.sim->device().node(), 5);
+        QCOMPARE(finished.size(), 0);
+        rig.sim->powerCycle();
+        r = waitResult(*rig.session, id);
+        QVERIFY2(r.ok, qPrintable(r.message));
+        QCOMPARE(rig.session->targetNode(), 16);
+        QTRY_VERIFY(rig.frames.countRx(0x190) > 3);
+    }
+
+    void hec495Extended()
+    {
+        Rig rig;
+        sim::CanSimOptions o;
+        o.protocol = CanProtocol::J1939;
+        o.hec495 = true;
+        QVERIFY(makeRig(rig, o, CanProtocol::Hec495, kIface1));
+        QTRY_VERIFY_WITH_TIMEOUT(rig.frames.countRx(hec495::kExtDataXId) > 2, 5000);
+        const auto r = waitResult(*rig.session, rig.session->hec495Write(hec495::ObjPdoMode, 1));
+        QVERIFY2(r.ok, qPrintable(r.message));
+        QTRY_VERIFY_WITH_TIMEOUT(rig.frames.countRx(hec495::kExtDataYId) > 2, 3000);
+        QVERIFY(rig.session->store().latest()->has(model::FieldEuler));
+    }
+};
+
+QTEST_GUILESS_MAIN(TstCanSession)
+#include "tst_can_session.moc"
