@@ -1,6 +1,8 @@
 #include "device_workspace.h"
 
 #include "attitude_widget.h"
+#include "config_panel.h"
+#include "recording_controls.h"
 #include "chart_panel.h"
 #include "command_log_widget.h"
 #include "console_widget.h"
@@ -37,7 +39,7 @@ QString rateText(double hz)
     return QString::number(hz, 'f', hz >= 10 ? 0 : 1);
 }
 
-constexpr int kLayoutVersion = 2; // 2: charts central, values and attitude docks
+constexpr int kLayoutVersion = 3; // 3: configuration and recording docks
 
 } // namespace
 
@@ -108,8 +110,26 @@ DeviceWorkspace::DeviceWorkspace(QWidget *parent) : QMainWindow(parent)
     m_commandLogDock->setObjectName(QStringLiteral("commandLogDock"));
     m_commandLogDock->setWidget(m_commandLog);
     addDockWidget(Qt::BottomDockWidgetArea, m_commandLogDock);
+    // The HiPNUC serial link's settings (right, behind the values) and recording (bottom).
+    m_configPanel = new ConfigPanel(m_session, this);
+    m_configPanel->setObjectName(QStringLiteral("configPanel"));
+    m_configDock = new QDockWidget(this);
+    m_configDock->setObjectName(QStringLiteral("configDock"));
+    m_configDock->setWidget(m_configPanel);
+    addDockWidget(Qt::RightDockWidgetArea, m_configDock);
+    tabifyDockWidget(m_valuesDock, m_configDock);
+    m_valuesDock->raise();
+    m_recording = new RecordingControls(this);
+    m_recording->setObjectName(QStringLiteral("recordingControls"));
+    m_recording->setSession(&m_session);
+    m_recordingDock = new QDockWidget(this);
+    m_recordingDock->setObjectName(QStringLiteral("recordingDock"));
+    m_recordingDock->setWidget(m_recording);
+    addDockWidget(Qt::BottomDockWidgetArea, m_recordingDock);
+    connect(m_recording, &RecordingControls::recordingFailed, this, &DeviceWorkspace::onErrorOccurred);
     tabifyDockWidget(m_consoleDock, m_rawDock);
     tabifyDockWidget(m_rawDock, m_commandLogDock);
+    tabifyDockWidget(m_commandLogDock, m_recordingDock);
     m_consoleDock->raise();
 
     createStatusBar();
@@ -164,14 +184,31 @@ bool DeviceWorkspace::attachLink(std::unique_ptr<device::DeviceLink> link, const
     connect(m_other.get(), &device::DeviceLink::statsUpdated, this, &DeviceWorkspace::onStatsUpdated);
     connect(m_other.get(), &device::DeviceLink::errorOccurred, this, &DeviceWorkspace::onErrorOccurred);
     m_console->setInputEnabled(false); // ASCII commands are for the HiPNUC serial link
+    m_configPanel->setEnabled(false);
+    m_recording->setEnabled(false);
     Q_EMIT titleChanged(title());
     return true;
+}
+
+void DeviceWorkspace::addLinkDock(QDockWidget *dock, Qt::DockWidgetArea area)
+{
+    dock->setParent(this);
+    addDockWidget(area, dock);
+    m_linkDocks << dock;
+    dock->show();
+    dock->raise();
 }
 
 void DeviceWorkspace::detachLink()
 {
     if (!m_other)
         return;
+    for (QDockWidget *dock : std::exchange(m_linkDocks, {})) {
+        removeDockWidget(dock);
+        delete dock; // its widgets may refer to the link: they go first
+    }
+    m_configPanel->setEnabled(true);
+    m_recording->setEnabled(true);
     m_other->disconnect(this);
     m_other->close();
     m_other.reset();
@@ -188,6 +225,8 @@ void DeviceWorkspace::applyPreferences(const Preferences &prefs)
     m_attitude->setDisplayFrame(prefs.frame == Preferences::Frame::Ned ? AttitudeWidget::DisplayFrame::Ned
                                                                        : AttitudeWidget::DisplayFrame::Enu);
     m_autoReconnect = prefs.autoReconnect;
+    m_recording->setFolder(prefs.effectiveRecordingFolder());
+    m_recording->setPattern(prefs.recordingPattern);
     if (isBusy() && !m_simulator && !m_other)
         m_session.setAutoReconnect(prefs.autoReconnect);
 }
@@ -244,6 +283,7 @@ void DeviceWorkspace::connectPort(const QString &port, int baud)
     m_stats.reset();
     m_baud = baud;
     m_target = port;
+    m_configPanel->setPortName(port);
     m_session.setAutoReconnect(m_autoReconnect);
     Q_EMIT titleChanged(title());
     m_session.open(port, baud);
@@ -273,6 +313,7 @@ bool DeviceWorkspace::connectSimulated(const sim::SimOptions &options, int baud,
     m_target = tr("Simulated %1 (firmware %2)")
                    .arg(QString::fromStdString(options.model), QString::fromStdString(options.firmware));
     Q_EMIT titleChanged(title());
+    m_configPanel->setPortName(m_simulator->devicePath());
     m_session.open(m_simulator->devicePath(), baud);
     return true;
 }
@@ -512,6 +553,8 @@ void DeviceWorkspace::retranslateUi()
     m_rawDock->setWindowTitle(tr("Raw bytes"));
     m_commandLogDock->setWindowTitle(tr("Command log"));
     m_valuesDock->setWindowTitle(tr("Values and attitude"));
+    m_configDock->setWindowTitle(tr("Configuration"));
+    m_recordingDock->setWindowTitle(tr("Recording"));
     m_valuesModel->retranslate();
     resizeValueColumns();
     updateStateLabel();

@@ -31,7 +31,9 @@ namespace imudesk::ui {
 class AttitudeWidget;
 class ChartPanel;
 class CommandLogWidget;
+class ConfigPanel;
 class ConsoleWidget;
+class RecordingControls;
 class RawBytesView;
 class StatusFlagsWidget;
 
@@ -62,6 +64,15 @@ public:
         return m_other ? *m_other : static_cast<const device::DeviceLink &>(m_session);
     }
     bool hasAttachedLink() const { return m_other != nullptr; }
+    // A dock that belongs to the attached link (register browser, CAN monitor, replay
+    // controls, ...): shown while the link is attached, deleted with it.
+    void addLinkDock(QDockWidget *dock, Qt::DockWidgetArea area);
+    QList<QDockWidget *> linkDocks() const { return m_linkDocks; }
+    // The HiPNUC serial link's configuration panel and recording controls.
+    ConfigPanel *configPanel() const { return m_configPanel; }
+    QDockWidget *configDock() const { return m_configDock; }
+    RecordingControls *recordingControls() const { return m_recording; }
+    QDockWidget *recordingDock() const { return m_recordingDock; }
     void disconnectDevice();
     bool isBusy() const;
     // Units, attitude frame, refresh rate, chart history and auto-reconnect.
@@ -153,6 +164,11 @@ private:
     CommandLogWidget *m_commandLog = nullptr;
     QDockWidget *m_commandLogDock = nullptr;
     StatusFlagsWidget *m_flags = nullptr;
+    ConfigPanel *m_configPanel = nullptr;
+    QDockWidget *m_configDock = nullptr;
+    RecordingControls *m_recording = nullptr;
+    QDockWidget *m_recordingDock = nullptr;
+    QList<QDockWidget *> m_linkDocks;
     QLabel *m_stateLabel = nullptr;
     QLabel *m_identityLabel = nullptr;
     QLabel *m_statsLabel = nullptr;

@@ -64,6 +64,7 @@ QString Preferences::recordingFileName(const QString &device, const QString &ser
 {
     QString name = recordingPattern;
     name.replace(QLatin1String("{device}"), device.isEmpty() ? QStringLiteral("device") : device);
+    name.replace(QLatin1String("{product}"), device.isEmpty() ? QStringLiteral("device") : device);
     name.replace(QLatin1String("{serial}"), serial.isEmpty() ? QStringLiteral("unknown") : serial);
     name.replace(QLatin1String("{date}"), when.toString(QStringLiteral("yyyyMMdd")));
     name.replace(QLatin1String("{time}"), when.toString(QStringLiteral("HHmmss")));

@@ -34,7 +34,7 @@ struct Preferences {
     int refreshHz = 33;
     int historyMinutes = 10;
     QString recordingFolder;    // empty: the user's documents folder
-    QString recordingPattern = QStringLiteral("imudesk-{device}-{date}-{time}.imucap");
+    QString recordingPattern = QStringLiteral("{product}-{date}-{time}.imucap"); // RecordingControls' default
     bool autoReconnect = true;
 
     // Values out of range or unknown fall back to the defaults.
@@ -42,7 +42,7 @@ struct Preferences {
     void save(QSettings &settings) const;
     // The recording folder to use (the documents folder when none was chosen).
     QString effectiveRecordingFolder() const;
-    // A file name from the pattern: {device}, {serial}, {date} (yyyyMMdd), {time} (HHmmss).
+    // A file name from the pattern: {product} (or {device}), {serial}, {date} (yyyyMMdd), {time} (HHmmss).
     // Characters that are not safe in file names are replaced, and no path separators pass.
     QString recordingFileName(const QString &device, const QString &serial, const QDateTime &when) const;
     int refreshIntervalMs() const { return 1000 / refreshHz; }

@@ -79,7 +79,7 @@ PreferencesDialog::PreferencesDialog(const Preferences &prefs, QWidget *parent) 
     folderRow->addWidget(browse);
     recordingForm->addRow(tr("&Folder:"), folderRow);
     m_pattern = new QLineEdit(recording);
-    m_pattern->setToolTip(tr("File name of a new recording. {device}, {serial}, {date} and {time} are replaced."));
+    m_pattern->setToolTip(tr("File name of a new recording. {product}, {serial}, {date} and {time} are replaced."));
     recordingForm->addRow(tr("File &pattern:"), m_pattern);
     m_patternExample = new QLabel(recording);
     m_patternExample->setTextInteractionFlags(Qt::TextSelectableByMouse);

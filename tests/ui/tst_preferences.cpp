@@ -73,7 +73,7 @@ private Q_SLOTS:
         Preferences p;
         const QDateTime when(QDate(2026, 11, 21), QTime(15, 4, 5));
         QCOMPARE(p.recordingFileName(QStringLiteral("HI14R3"), QStringLiteral("ABC"), when),
-                 QStringLiteral("imudesk-HI14R3-20261121-150405.imucap"));
+                 QStringLiteral("HI14R3-20261121-150405.imucap"));
         p.recordingPattern = QStringLiteral("../../etc/{device}/x");
         const QString name = p.recordingFileName(QStringLiteral("a/b"), {}, when);
         QVERIFY2(!name.contains(QLatin1Char('/')) && !name.contains(QLatin1String("..")), qPrintable(name));

@@ -47,7 +47,7 @@ const QSet<QString> &keptWords()
         QStringLiteral("ttyACM"), QStringLiteral("Modbus"), QStringLiteral("CANopen"), QStringLiteral("imucap"),
         QStringLiteral("png"), QStringLiteral("csv"), QStringLiteral("json"), QStringLiteral("jsonl"),
         QStringLiteral("hex"), QStringLiteral("bin"), QStringLiteral("virtualcan"), QStringLiteral("socketcan"),
-        QStringLiteral("device"), QStringLiteral("serial"), QStringLiteral("date"), QStringLiteral("time"),
+        QStringLiteral("device"), QStringLiteral("product"), QStringLiteral("serial"), QStringLiteral("date"), QStringLiteral("time"),
         QStringLiteral("Ctrl"), QStringLiteral("Shift"), QStringLiteral("Alt"), QStringLiteral("ttyS"),
     };
     return words;
