@@ -42,7 +42,7 @@ case "$BUILD_DIR" in
 /*) ;;
 *) BUILD_DIR=$PWD/$BUILD_DIR ;;
 esac
-TARGETS=${FUZZ_TARGETS:-"fuzz_frame_decoder fuzz_nmea fuzz_ascii_reply"}
+TARGETS=${FUZZ_TARGETS:-"fuzz_frame_decoder fuzz_nmea fuzz_ascii_reply fuzz_ihex fuzz_kboot"}
 JOBS=${FUZZ_JOBS:-1}
 BUILD_JOBS=${BUILD_JOBS:-2}
 
