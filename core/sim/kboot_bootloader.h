@@ -84,6 +84,8 @@ public:
     Request runUntil(int64_t t);
 
     const Options &options() const { return m_options; }
+    // A bootloader without ReadMemory answers it with kStatus_UnknownCommand.
+    void setReadMemoryEnabled(bool on) { m_options.readMemory = on; }
     Faults &faults() { return m_faults; }
     const Stats &stats() const { return m_stats; }
     const std::vector<uint8_t> &flash() const { return m_flash; }

@@ -1,0 +1,131 @@
+// The firmware update dialog, offscreen, against the simulated module on a pty: file
+// information, a refused file, progress to the new version, cancel and finishing later.
+#include "firmware_update_dialog.h"
+#include "protocol/ihex/intel_hex_writer.h"
+#include "sim/kboot_bootloader.h"
+#include "sim/pty_simulator.h"
+
+#include <QLabel>
+#include <QLineEdit>
+#include <QPlainTextEdit>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <QTest>
+
+using namespace imudesk;
+using ui::FirmwareUpdateDialog;
+
+namespace {
+
+constexpr int kBaud = 921600;
+
+protocol::ihex::FirmwareImage image(const std::string &version, size_t size)
+{
+    protocol::ihex::FirmwareImage img;
+    img.startAddress = 0x8000;
+    img.data = sim::KbootBootloader::makeApplication(version, size, 5);
+    return img;
+}
+
+QString writeHex(const QTemporaryDir &dir, const QString &name, const std::string &text)
+{
+    QFile f(dir.filePath(name));
+    if (f.open(QIODevice::WriteOnly))
+        f.write(text.data(), qint64(text.size()));
+    return f.fileName();
+}
+
+bool flashHolds(sim::PtySimulator &s, const protocol::ihex::FirmwareImage &img)
+{
+    bool same = false;
+    s.withDevice([&](sim::HipnucSimulator &d) {
+        same = std::equal(img.data.begin(), img.data.end(), d.bootloader().flash().begin() + img.startAddress);
+    });
+    return same;
+}
+
+} // namespace
+
+class TstFirmwareUpdateDialog : public QObject {
+    Q_OBJECT
+    QTemporaryDir m_dir;
+
+private Q_SLOTS:
+    void refusedFile()
+    {
+        FirmwareUpdateDialog dlg(QStringLiteral("/dev/null"), kBaud, std::nullopt);
+        const QString bad = writeHex(m_dir, QStringLiteral("bad.hex"), ":0200000401\r\n");
+        QVERIFY(!dlg.loadFile(bad));
+        QVERIFY(dlg.findChild<QLabel *>(QStringLiteral("imageInfo"))->text().contains(QStringLiteral("line 1")));
+        QVERIFY(!dlg.findChild<QPushButton *>(QStringLiteral("start"))->isEnabled());
+        QVERIFY(!dlg.startUpdate());
+    }
+
+    void updatesToTheNewVersion()
+    {
+        sim::PtySimulator s([] {
+            sim::SimOptions o;
+            o.baud = kBaud;
+            return o;
+        }());
+        QVERIFY(s.start());
+        model::DeviceIdentity id;
+        id.productName = "HI14R3";
+        id.firmware = model::FirmwareVersion{1, 7, 1};
+        FirmwareUpdateDialog dlg(s.devicePath(), kBaud, id);
+        dlg.show();
+        QVERIFY(dlg.findChild<QLabel *>(QStringLiteral("versions"))->text().contains(QStringLiteral("1.7.1")));
+        const auto img = image("1.7.2", 24 * 1024);
+        QVERIFY(dlg.loadFile(writeHex(m_dir, QStringLiteral("fw.hex"), protocol::ihex::IntelHexWriter::write(img))));
+        const QString info = dlg.findChild<QLabel *>(QStringLiteral("imageInfo"))->text();
+        QVERIFY2(info.contains(QStringLiteral("24576 bytes from 0x00008000")), qPrintable(info));
+        QVERIFY2(info.contains(QStringLiteral("CRC-32 0x")), qPrintable(info));
+        QSignalSpy finished(&dlg, &FirmwareUpdateDialog::updateFinished);
+        QTest::mouseClick(dlg.findChild<QPushButton *>(QStringLiteral("start")), Qt::LeftButton);
+        QVERIFY(dlg.isRunning());
+        QCOMPARE(dlg.findChild<QPushButton *>(QStringLiteral("cancel"))->text(), QStringLiteral("Cancel"));
+        QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 1, 30000);
+        QCOMPARE(finished.at(0).at(0).toBool(), true);
+        QVERIFY(dlg.findChild<QLabel *>(QStringLiteral("versions"))->text().contains(QStringLiteral("1.7.2 (new)")));
+        QCOMPARE(dlg.findChild<QProgressBar *>(QStringLiteral("progress"))->value(), 1000);
+        QVERIFY(dlg.findChild<QLabel *>(QStringLiteral("rate"))->text().contains(QStringLiteral("bytes/s")));
+        QVERIFY(dlg.findChild<QPlainTextEdit *>(QStringLiteral("log"))->toPlainText().contains(QStringLiteral("verified")));
+        QVERIFY(dlg.findChild<QLabel *>(QStringLiteral("outcome"))->text().startsWith(QStringLiteral("Done")));
+        QCOMPARE(dlg.result().verifyMethod, QStringLiteral("read-back"));
+        QVERIFY(flashHolds(s, img));
+    }
+
+    void cancelThenFinish()
+    {
+        sim::PtySimulator s([] {
+            sim::SimOptions o;
+            o.baud = kBaud;
+            return o;
+        }());
+        QVERIFY(s.start());
+        FirmwareUpdateDialog dlg(s.devicePath(), kBaud, std::nullopt);
+        const auto img = image("1.7.3", 128 * 1024);
+        QVERIFY(dlg.loadFile(writeHex(m_dir, QStringLiteral("fw2.hex"), protocol::ihex::IntelHexWriter::write(img))));
+        QSignalSpy finished(&dlg, &FirmwareUpdateDialog::updateFinished);
+        QVERIFY(dlg.startUpdate());
+        auto *bar = dlg.findChild<QProgressBar *>(QStringLiteral("progress"));
+        auto *state = dlg.findChild<QLabel *>(QStringLiteral("state"));
+        QTRY_VERIFY_WITH_TIMEOUT(state->text() == QStringLiteral("writing") && bar->value() > 100, 20000);
+        QTest::mouseClick(dlg.findChild<QPushButton *>(QStringLiteral("cancel")), Qt::LeftButton);
+        QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 1, 20000);
+        QCOMPARE(finished.at(0).at(0).toBool(), false);
+        QCOMPARE(dlg.result().finalState, firmware::UpdateFlow::State::Cancelled);
+        QVERIFY(dlg.findChild<QLabel *>(QStringLiteral("outcome"))->text().contains(QStringLiteral("run the update again")));
+        QVERIFY(!flashHolds(s, img));
+        QVERIFY(dlg.startUpdate());
+        QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 2, 60000);
+        QCOMPARE(finished.at(1).at(0).toBool(), true);
+        QVERIFY(dlg.result().resumed);
+        QVERIFY(flashHolds(s, img));
+    }
+};
+
+QTEST_MAIN(TstFirmwareUpdateDialog)
+#include "tst_firmware_update_dialog.moc"

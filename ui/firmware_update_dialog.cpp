@@ -1,0 +1,239 @@
+#include "firmware_update_dialog.h"
+
+#include "firmware/firmware_updater.h"
+#include "protocol/ihex/intel_hex_loader.h"
+
+#include <QFileDialog>
+#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLineEdit>
+#include <QPlainTextEdit>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QVBoxLayout>
+
+namespace imudesk::ui {
+
+namespace {
+
+QString hex32(uint64_t v)
+{
+    return QStringLiteral("0x") + QString::number(qulonglong(v), 16).toUpper().rightJustified(8, QLatin1Char('0'));
+}
+
+QString versionText(const std::optional<model::FirmwareVersion> &v)
+{
+    return v ? QString::fromStdString(v->toString()) : FirmwareUpdateDialog::tr("unknown");
+}
+
+} // namespace
+
+FirmwareUpdateDialog::FirmwareUpdateDialog(const QString &portName, int baud,
+                                           const std::optional<model::DeviceIdentity> &identity, QWidget *parent)
+    : QDialog(parent), m_port(portName), m_baud(baud), m_updater(new firmware::FirmwareUpdater(this))
+{
+    setWindowTitle(tr("Firmware update on %1").arg(portName));
+    auto *form = new QFormLayout;
+
+    auto *fileRow = new QHBoxLayout;
+    m_file = new QLineEdit(this);
+    m_file->setObjectName(QStringLiteral("file"));
+    m_file->setReadOnly(true);
+    m_file->setPlaceholderText(tr("Intel HEX (.hex) or raw binary (.bin)"));
+    m_choose = new QPushButton(tr("Choose..."), this);
+    m_choose->setObjectName(QStringLiteral("choose"));
+    fileRow->addWidget(m_file, 1);
+    fileRow->addWidget(m_choose);
+    form->addRow(tr("File:"), fileRow);
+
+    m_binStart = new QLineEdit(QStringLiteral("0x8000"), this);
+    m_binStart->setObjectName(QStringLiteral("binStart"));
+    m_binStart->setToolTip(tr("A .bin file has no addresses: the flash address of its first byte"));
+    form->addRow(tr("Start of a .bin:"), m_binStart);
+
+    m_imageInfo = new QLabel(tr("no file chosen"), this);
+    m_imageInfo->setObjectName(QStringLiteral("imageInfo"));
+    m_imageInfo->setWordWrap(true);
+    form->addRow(tr("Image:"), m_imageInfo);
+
+    m_versions = new QLabel(this);
+    m_versions->setObjectName(QStringLiteral("versions"));
+    if (identity)
+        m_versions->setText(tr("%1, firmware %2, bootloader %3")
+                                .arg(QString::fromStdString(identity->productName), versionText(identity->firmware),
+                                     versionText(identity->bootloader)));
+    else
+        m_versions->setText(tr("read when the update starts"));
+    form->addRow(tr("Module:"), m_versions);
+
+    m_state = new QLabel(tr("ready"), this);
+    m_state->setObjectName(QStringLiteral("state"));
+    form->addRow(tr("Step:"), m_state);
+
+    m_progress = new QProgressBar(this);
+    m_progress->setObjectName(QStringLiteral("progress"));
+    m_progress->setRange(0, 1000);
+    m_progress->setValue(0);
+    form->addRow(tr("Progress:"), m_progress);
+
+    m_rate = new QLabel(QStringLiteral("-"), this);
+    m_rate->setObjectName(QStringLiteral("rate"));
+    form->addRow(tr("Speed:"), m_rate);
+
+    m_log = new QPlainTextEdit(this);
+    m_log->setObjectName(QStringLiteral("log"));
+    m_log->setReadOnly(true);
+    m_log->setMaximumBlockCount(2000);
+
+    m_outcome = new QLabel(this);
+    m_outcome->setObjectName(QStringLiteral("outcome"));
+    m_outcome->setWordWrap(true);
+
+    m_start = new QPushButton(tr("Update"), this);
+    m_start->setObjectName(QStringLiteral("start"));
+    m_cancel = new QPushButton(tr("Close"), this);
+    m_cancel->setObjectName(QStringLiteral("cancel"));
+    auto *buttons = new QHBoxLayout;
+    buttons->addStretch(1);
+    buttons->addWidget(m_start);
+    buttons->addWidget(m_cancel);
+
+    auto *top = new QVBoxLayout(this);
+    top->addLayout(form);
+    top->addWidget(m_log, 1);
+    top->addWidget(m_outcome);
+    top->addLayout(buttons);
+    resize(560, 480);
+
+    connect(m_choose, &QPushButton::clicked, this, &FirmwareUpdateDialog::chooseFile);
+    connect(m_start, &QPushButton::clicked, this, &FirmwareUpdateDialog::startUpdate);
+    connect(m_cancel, &QPushButton::clicked, this, &FirmwareUpdateDialog::reject);
+    connect(m_updater, &firmware::FirmwareUpdater::stateChanged, this, &FirmwareUpdateDialog::onState);
+    connect(m_updater, &firmware::FirmwareUpdater::progressChanged, this, &FirmwareUpdateDialog::onProgress);
+    connect(m_updater, &firmware::FirmwareUpdater::logMessage, this, &FirmwareUpdateDialog::onLog);
+    connect(m_updater, &firmware::FirmwareUpdater::finished, this, &FirmwareUpdateDialog::onFinished);
+    updateButtons();
+}
+
+FirmwareUpdateDialog::~FirmwareUpdateDialog() = default;
+
+bool FirmwareUpdateDialog::isRunning() const
+{
+    return m_updater->isRunning();
+}
+
+const firmware::UpdateFlow::Result &FirmwareUpdateDialog::result() const
+{
+    return m_updater->result();
+}
+
+void FirmwareUpdateDialog::chooseFile()
+{
+    const QString path = QFileDialog::getOpenFileName(this, tr("Choose the firmware"), QString(),
+                                                      tr("Firmware (*.hex *.ihex *.bin);;All files (*)"));
+    if (!path.isEmpty())
+        loadFile(path);
+}
+
+bool FirmwareUpdateDialog::loadFile(const QString &path)
+{
+    m_image.reset();
+    m_file->setText(path);
+    std::optional<uint32_t> binStart;
+    bool ok = false;
+    const qulonglong start = m_binStart->text().trimmed().toULongLong(&ok, 0);
+    if (ok && start <= 0xFFFFFFFFull)
+        binStart = uint32_t(start);
+    const auto r = protocol::ihex::IntelHexLoader::loadFile(path, binStart);
+    if (!r.ok()) {
+        m_imageInfo->setText(tr("refused: %1").arg(r.error));
+        updateButtons();
+        return false;
+    }
+    if (const QString e = firmware::UpdateFlow::checkImage(*r.image, std::nullopt); !e.isEmpty()) {
+        m_imageInfo->setText(tr("refused: %1").arg(e));
+        updateButtons();
+        return false;
+    }
+    m_image = r.image;
+    m_imageInfo->setText(tr("%1 bytes from %2 to %3, CRC-32 %4; target model: not recorded in the file")
+                             .arg(m_image->size())
+                             .arg(hex32(m_image->startAddress), hex32(m_image->endAddress() - 1),
+                                  hex32(m_image->crc32())));
+    updateButtons();
+    return true;
+}
+
+bool FirmwareUpdateDialog::startUpdate()
+{
+    if (!m_image || m_updater->isRunning())
+        return false;
+    m_log->clear();
+    m_outcome->clear();
+    m_progress->setValue(0);
+    firmware::UpdateFlow::Options o;
+    o.baud = m_baud;
+    if (!m_updater->start(m_port, *m_image, o))
+        return false;
+    updateButtons();
+    return true;
+}
+
+void FirmwareUpdateDialog::cancelUpdate()
+{
+    if (!m_updater->isRunning())
+        return;
+    m_state->setText(tr("cancelling after the current packet..."));
+    m_updater->cancel();
+}
+
+void FirmwareUpdateDialog::reject()
+{
+    if (m_updater->isRunning()) {
+        cancelUpdate(); // the dialog closes once the flow has stopped (onFinished)
+        return;
+    }
+    QDialog::reject();
+}
+
+void FirmwareUpdateDialog::onState(int, const QString &name)
+{
+    m_state->setText(name);
+}
+
+void FirmwareUpdateDialog::onProgress(qulonglong done, qulonglong total, double bytesPerSecond, double secondsLeft)
+{
+    m_progress->setValue(total ? int(1000 * done / total) : 0);
+    m_progress->setFormat(tr("%1 of %2 bytes").arg(done).arg(total));
+    m_rate->setText(secondsLeft < 0 ? tr("%1 bytes/s").arg(qRound(bytesPerSecond))
+                                    : tr("%1 bytes/s, %2 s left").arg(qRound(bytesPerSecond)).arg(qCeil(secondsLeft)));
+}
+
+void FirmwareUpdateDialog::onLog(const QString &line)
+{
+    m_log->appendPlainText(line);
+}
+
+void FirmwareUpdateDialog::onFinished(bool ok, const QString &message)
+{
+    const auto &r = m_updater->result();
+    if (ok && r.after)
+        m_versions->setText(tr("%1, firmware %2 (new), bootloader %3")
+                                .arg(QString::fromStdString(r.after->productName), versionText(r.after->firmware),
+                                     versionText(r.after->bootloader)));
+    m_outcome->setText(ok ? tr("Done: %1").arg(message) : tr("Not updated: %1").arg(message));
+    updateButtons();
+    Q_EMIT updateFinished(ok);
+}
+
+void FirmwareUpdateDialog::updateButtons()
+{
+    const bool running = m_updater->isRunning();
+    m_start->setEnabled(!running && m_image.has_value());
+    m_choose->setEnabled(!running);
+    m_binStart->setEnabled(!running);
+    m_cancel->setText(running ? tr("Cancel") : tr("Close"));
+}
+
+} // namespace imudesk::ui
