@@ -26,6 +26,7 @@ const std::vector<PortChoice> &simulatedChoices()
     static const std::vector<PortChoice> choices = {
         PortChoice::simulated(QStringLiteral("HI14"), QStringLiteral("1.7.1")),
         PortChoice::simulated(QStringLiteral("HI14"), QStringLiteral("1.6.6")),
+        PortChoice::simulated(QStringLiteral("HEC495"), QString()),
     };
     return choices;
 }
@@ -211,7 +212,10 @@ void ConnectionBar::retranslateUi()
 QString ConnectionBar::portText(const PortChoice &choice) const
 {
     switch (choice.kind) {
-    case PortChoice::Kind::Simulated: return tr("Simulated %1 (firmware %2)").arg(choice.model, choice.firmware);
+    case PortChoice::Kind::Simulated:
+        if (choice.firmware.isEmpty())
+            return tr("Simulated %1 compass").arg(choice.model);
+        return tr("Simulated %1 (firmware %2)").arg(choice.model, choice.firmware);
     case PortChoice::Kind::Serial: {
         for (const auto &e : m_serialPorts)
             if (e.choice == choice)

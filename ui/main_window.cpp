@@ -1,6 +1,9 @@
 #include "main_window.h"
 
+#include "device/family_detector.h"
+#include "link_factory.h"
 #include "preferences_dialog.h"
+#include "tool_actions.h"
 
 #include "chart_panel.h"
 #include "comparison_chart.h"
@@ -21,6 +24,8 @@
 #include <QTabBar>
 #include <QTabWidget>
 #include <QToolBar>
+
+#include <thread>
 
 namespace imudesk::ui {
 
@@ -202,7 +207,39 @@ void MainWindow::connectPort(const QString &port, int baud)
 {
     m_connectionBar->selectPort(PortChoice::serial(port));
     m_connectionBar->selectBaud(baud);
-    freeWorkspace()->connectPort(port, baud);
+    if (baud != 0) {
+        freeWorkspace()->connectPort(port, baud);
+        return;
+    }
+    // Baud "Auto": first tell a HiPNUC module from a HEC495 compass (FamilyDetector listens,
+    // then asks each family at each rate), off the GUI thread; then open the right session.
+    QPointer<DeviceWorkspace> ws = freeWorkspace();
+    m_connectionBar->setSessionState(SessionState::Detecting);
+    m_connectAction->setEnabled(false);
+    std::thread([this, ws, port, guard = QPointer<MainWindow>(this)] {
+        const device::FamilyDetector::Result r = device::FamilyDetector::detect(port);
+        if (!guard)
+            return;
+        QMetaObject::invokeMethod(
+            guard.data(),
+            [this, ws, port, r] {
+                if (!ws)
+                    return;
+                if (r.family == device::FamilyDetector::Family::Hec495) {
+                    QString error;
+                    if (!LinkFactory::connectHec495(*ws, port, r.baud, std::max(0, r.address), &error))
+                        presentError(error);
+                } else {
+                    // A HiPNUC module at the rate found, or nothing found: the session's own
+                    // detection then says what it tried and what to check.
+                    ws->connectPort(port, r.family == device::FamilyDetector::Family::Hipnuc ? r.baud : 0);
+                }
+                if (ws == currentWorkspace())
+                    m_connectionBar->setSessionState(ws->state());
+                updateActions();
+            },
+            Qt::QueuedConnection);
+    }).detach();
 }
 
 bool MainWindow::connectSimulated(const sim::SimOptions &options, int baud, QString *error)
@@ -212,6 +249,12 @@ bool MainWindow::connectSimulated(const sim::SimOptions &options, int baud, QStr
     m_connectionBar->selectPort(PortChoice::simulated(model, firmware));
     m_connectionBar->selectBaud(baud);
     return freeWorkspace()->connectSimulated(options, baud, error);
+}
+
+bool MainWindow::connectSimulatedHec495(QString *error)
+{
+    m_connectionBar->selectPort(PortChoice::simulated(QStringLiteral("HEC495"), QString()));
+    return LinkFactory::connectSimulatedHec495(*freeWorkspace(), m_simMotion, error);
 }
 
 void MainWindow::disconnectDevice()
@@ -227,6 +270,12 @@ void MainWindow::connectSelected()
     switch (choice.kind) {
     case PortChoice::Kind::Serial: connectPort(choice.port, baud); break;
     case PortChoice::Kind::Simulated: {
+        if (choice.model == QLatin1String("HEC495")) {
+            QString error;
+            if (!connectSimulatedHec495(&error))
+                presentError(error);
+            break;
+        }
         sim::SimOptions options;
         options.model = choice.model.toStdString();
         options.firmware = choice.firmware.toStdString();
@@ -348,6 +397,7 @@ void MainWindow::updateActions()
     m_connectAction->setEnabled(!busy);
     m_disconnectAction->setEnabled(busy);
     m_versionAction->setEnabled(ws && ws->state() == SessionState::Connected && !ws->hasAttachedLink());
+    m_tools->update(ws);
 }
 
 void MainWindow::rebuildViewMenu()
@@ -439,6 +489,9 @@ void MainWindow::createMenus()
     m_deviceMenu->addSeparator();
     m_deviceMenu->addAction(m_versionAction);
     m_viewMenu = menuBar()->addMenu(QString());
+    m_toolsMenu = menuBar()->addMenu(QString());
+    m_tools = new ToolActions(this);
+    m_tools->addToMenus(m_fileMenu, m_deviceMenu, m_toolsMenu);
     m_helpMenu = menuBar()->addMenu(QString());
     m_helpMenu->addAction(m_aboutAction);
 }
@@ -461,6 +514,7 @@ void MainWindow::retranslateUi()
     m_versionAction->setStatusTip(tr("Ask the device for its product name, firmware and serial number"));
     m_aboutAction->setText(tr("&About ImuDesk"));
     m_preferencesAction->setText(tr("&Preferences…"));
+    m_tools->retranslate();
     if (auto *bar = findChild<QToolBar *>(QStringLiteral("connectionToolBar")))
         bar->setWindowTitle(tr("Connection"));
     m_comparisonDock->setWindowTitle(tr("Compare devices"));

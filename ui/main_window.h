@@ -34,6 +34,7 @@ class ConnectionBar;
 class ConsoleWidget;
 class DeviceWorkspace;
 class PreferencesDialog;
+class ToolActions;
 class StatusFlagsWidget;
 
 class MainWindow : public QMainWindow {
@@ -58,6 +59,14 @@ public:
     bool connectSimulated(const sim::SimOptions &options, int baud, QString *error = nullptr);
     void disconnectDevice();
     void setSimulatedMotion(sim::Motion motion) { m_simMotion = motion; }
+    sim::Motion simulatedMotion() const { return m_simMotion; }
+    // The current tab when it is idle, else a new one (for a link the user opens).
+    DeviceWorkspace *freeWorkspaceForLink() { return freeWorkspace(); }
+    // Reports a problem to the user (a non-blocking message box, or the error presenter).
+    void showError(const QString &message) { presentError(message); }
+    ToolActions *tools() const { return m_tools; }
+    // Connects a simulated HEC495 compass (the connection bar's "Simulated HEC495").
+    bool connectSimulatedHec495(QString *error = nullptr);
 
     // Workspaces (tabs).
     DeviceWorkspace *newWorkspace();
@@ -119,6 +128,8 @@ private:
     QMenu *m_deviceMenu = nullptr;
     QMenu *m_viewMenu = nullptr;
     QMenu *m_helpMenu = nullptr;
+    QMenu *m_toolsMenu = nullptr;
+    ToolActions *m_tools = nullptr;
     QAction *m_newTabAction = nullptr;
     QAction *m_closeTabAction = nullptr;
     QAction *m_screenshotAction = nullptr;

@@ -1,5 +1,8 @@
 // ImuDesk GUI: command line, language, settings, main window.
+#include "device_workspace.h"
 #include "language_switcher.h"
+#include "link_factory.h"
+#include "tool_actions.h"
 #include "main_window.h"
 #include "model/device_identity.h"
 #include "sim/hipnuc_simulator.h"
@@ -8,6 +11,7 @@
 #include "window_settings.h"
 
 #include <QApplication>
+#include <QDockWidget>
 #include <QIcon>
 #include <QCommandLineOption>
 #include <QCommandLineParser>
@@ -17,6 +21,7 @@
 #include <QStringList>
 
 #include <algorithm>
+#include <map>
 #include <cstdio>
 
 using imudesk::ui::LanguageSwitcher;
@@ -117,8 +122,19 @@ int main(int argc, char *argv[])
         QStringLiteral("after"),
         QCoreApplication::translate("main", "Seconds to wait before --screenshot (default 3)."),
         QStringLiteral("seconds"), QStringLiteral("3"));
+    const QCommandLineOption linkOption(
+        QStringLiteral("link"),
+        QCoreApplication::translate("main", "Start connected to another simulated device: hec495 (compass on serial), "
+                                            "modbus (HI14 over Modbus RTU), can (HI14 J1939 on virtualcan) or "
+                                            "canopen (HI14 CANopen on virtualcan); or replay a capture file."),
+        QStringLiteral("device|file"));
+    const QCommandLineOption dockOption(
+        QStringLiteral("dock"),
+        QCoreApplication::translate("main", "Bring this panel to the front: configuration, recording, console, raw "
+                                            "or commands."),
+        QStringLiteral("panel"));
     parser.addOptions({langOption, simulateOption, firmwareOption, motionOption, portOption, baudOption, demoOption,
-                       screenshotOption, afterOption});
+                       screenshotOption, afterOption, linkOption, dockOption});
     parser.addPositionalArgument(QStringLiteral("MODEL"),
                                  QCoreApplication::translate("main", "Model to simulate with --simulate (default HI14)."),
                                  QStringLiteral("[MODEL]"));
@@ -185,6 +201,43 @@ int main(int argc, char *argv[])
             QMessageBox::warning(&window, QCoreApplication::translate("main", "ImuDesk"), error);
     } else if (parser.isSet(portOption)) {
         window.connectPort(parser.value(portOption), baud);
+    } else if (parser.isSet(linkOption)) {
+        const QString link = parser.value(linkOption);
+        QString error;
+        bool ok = true;
+        imudesk::ui::DeviceWorkspace *ws = window.freeWorkspaceForLink();
+        if (link == QLatin1String("hec495")) {
+            ok = window.connectSimulatedHec495(&error);
+        } else if (link == QLatin1String("modbus")) {
+            ok = imudesk::ui::LinkFactory::connectModbus(*ws, {}, true, simOptions.motion, &error);
+        } else if (link == QLatin1String("can") || link == QLatin1String("canopen")) {
+            imudesk::device::CanSessionOptions o;
+            o.protocol = link == QLatin1String("can") ? imudesk::protocol::can::CanProtocol::J1939
+                                                      : imudesk::protocol::can::CanProtocol::CanOpen;
+            ok = imudesk::ui::LinkFactory::connectCan(*ws, o, true, simOptions.motion, &error);
+        } else {
+            ok = window.tools()->openCapture(link);
+        }
+        if (!ok && !error.isEmpty())
+            QMessageBox::warning(&window, QCoreApplication::translate("main", "ImuDesk"), error);
+    }
+    if (parser.isSet(dockOption)) {
+        static const std::map<QString, QString> docks = {
+            {QStringLiteral("configuration"), QStringLiteral("configDock")},
+            {QStringLiteral("recording"), QStringLiteral("recordingDock")},
+            {QStringLiteral("console"), QStringLiteral("consoleDock")},
+            {QStringLiteral("raw"), QStringLiteral("rawBytesDock")},
+            {QStringLiteral("commands"), QStringLiteral("commandLogDock")},
+        };
+        const auto it = docks.find(parser.value(dockOption));
+        if (it == docks.end())
+            return usageError(QCoreApplication::translate("main", "Unknown panel \"%1\"; use configuration, recording, "
+                                                                  "console, raw or commands.")
+                                  .arg(parser.value(dockOption)));
+        if (auto *dock = window.currentWorkspace()->findChild<QDockWidget *>(it->second)) {
+            dock->show();
+            dock->raise();
+        }
     }
 
     int screenshotRc = 0;

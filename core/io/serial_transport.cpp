@@ -35,7 +35,8 @@ QString SerialTransport::describeOpenError(const QString &portName, OpenErrorKin
     case OpenErrorKind::Permission:
         return QCoreApplication::translate("imudesk::io::SerialTransport",
                                            "No permission to open %1. On Linux add your user to the dialout "
-                                           "group (sudo usermod -aG dialout $USER), then log out and in again.")
+                                           "group (sudo usermod -aG dialout $USER), then log out and in again; or "
+                                           "install the udev rule from ImuDesk's README (60-imudesk-serial.rules).")
             .arg(portName);
     case OpenErrorKind::Other:
     case OpenErrorKind::None:

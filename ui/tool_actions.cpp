@@ -1,0 +1,287 @@
+#include "tool_actions.h"
+
+#include "analysis_window.h"
+#include "bandwidth_calculator.h"
+#include "bus_connect_dialog.h"
+#include "config_panel.h"
+#include "device/modbus_session.h"
+#include "device_workspace.h"
+#include "export_dialog.h"
+#include "firmware_update_dialog.h"
+#include "link_factory.h"
+#include "main_window.h"
+#include "modbus_scan_dialog.h"
+#include "profile_dialog.h"
+#include "record/csv_capture_converter.h"
+#include "settings/configuration_controller.h"
+
+#include <QAction>
+#include <QDockWidget>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QMenu>
+
+namespace imudesk::ui {
+
+using device::SessionState;
+
+ToolActions::ToolActions(MainWindow *window) : QObject(window), m_window(window)
+{
+    m_openCapture = make("openCaptureAction");
+    m_openCapture->setShortcut(QKeySequence::Open);
+    connect(m_openCapture, &QAction::triggered, this, &ToolActions::chooseCapture);
+    m_importCsv = make("importCsvAction");
+    connect(m_importCsv, &QAction::triggered, this, &ToolActions::chooseCsv);
+    m_export = make("exportCaptureAction");
+    m_export->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_E));
+    connect(m_export, &QAction::triggered, this, &ToolActions::exportCapture);
+    m_analyze = make("analyzeCaptureAction");
+    connect(m_analyze, &QAction::triggered, this, &ToolActions::analyzeCapture);
+    m_modbus = make("connectModbusAction");
+    m_modbus->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_M));
+    connect(m_modbus, &QAction::triggered, this, &ToolActions::connectModbus);
+    m_can = make("connectCanAction");
+    m_can->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_N));
+    connect(m_can, &QAction::triggered, this, &ToolActions::connectCan);
+    m_scanModbus = make("scanModbusAction");
+    connect(m_scanModbus, &QAction::triggered, this, &ToolActions::scanModbus);
+    m_configuration = make("configurationAction");
+    m_configuration->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_G));
+    connect(m_configuration, &QAction::triggered, this, &ToolActions::showConfiguration);
+    m_profiles = make("profilesAction");
+    connect(m_profiles, &QAction::triggered, this, &ToolActions::openProfiles);
+    m_calculator = make("calculatorAction");
+    connect(m_calculator, &QAction::triggered, this, &ToolActions::openCalculator);
+    m_firmware = make("firmwareAction");
+    connect(m_firmware, &QAction::triggered, this, &ToolActions::updateFirmware);
+    m_record = make("recordAction");
+    m_record->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_R));
+    connect(m_record, &QAction::triggered, this, &ToolActions::showRecording);
+    retranslate();
+}
+
+QAction *ToolActions::make(const char *objectName)
+{
+    auto *a = new QAction(m_window);
+    a->setObjectName(QString::fromLatin1(objectName));
+    return a;
+}
+
+void ToolActions::addToMenus(QMenu *fileMenu, QMenu *deviceMenu, QMenu *toolsMenu)
+{
+    QAction *firstFileEntry = fileMenu->actions().value(2); // after "new tab", "close tab"
+    fileMenu->insertActions(firstFileEntry, {m_openCapture, m_importCsv, m_export});
+    fileMenu->insertSeparator(firstFileEntry);
+    deviceMenu->addSeparator();
+    deviceMenu->addActions({m_modbus, m_can, m_scanModbus});
+    deviceMenu->addSeparator();
+    deviceMenu->addActions({m_configuration, m_profiles, m_record, m_firmware});
+    m_toolsMenu = toolsMenu;
+    toolsMenu->addActions({m_analyze, m_calculator});
+}
+
+void ToolActions::retranslate()
+{
+    m_openCapture->setText(tr("&Open capture…"));
+    m_openCapture->setStatusTip(tr("Play a recorded capture through the charts and views, as a live device"));
+    m_importCsv->setText(tr("&Import vendor CSV…"));
+    m_importCsv->setStatusTip(tr("Turn a CSV written by the vendor's PC tool into a capture and play it"));
+    m_export->setText(tr("&Export capture…"));
+    m_export->setStatusTip(tr("Write a capture as vendor CSV, tidy CSV or JSON Lines"));
+    m_analyze->setText(tr("&Analyze capture…"));
+    m_analyze->setStatusTip(tr("Statistics, output rate and jitter, lost frames and Allan deviation of a capture"));
+    m_modbus->setText(tr("Connect over &Modbus RTU…"));
+    m_modbus->setStatusTip(tr("Poll a module or compass on an RS-485 bus"));
+    m_can->setText(tr("Connect over C&AN…"));
+    m_can->setStatusTip(tr("Listen to and configure a J1939, CANopen or HEC495 device on a CAN bus"));
+    m_scanModbus->setText(tr("&Scan Modbus bus…"));
+    m_scanModbus->setStatusTip(tr("Find the node IDs that answer on the bus"));
+    m_configuration->setText(tr("Con&figuration"));
+    m_configuration->setStatusTip(tr("Every setting of the connected module: read, edit, apply, save"));
+    m_profiles->setText(tr("&Profiles…"));
+    m_profiles->setStatusTip(tr("Save the configuration to a file, compare a file with the device, apply it to several"));
+    m_calculator->setText(tr("Output-rate &calculator…"));
+    m_calculator->setStatusTip(tr("Bytes per second of the chosen outputs against the link's capacity"));
+    m_firmware->setText(tr("&Update firmware…"));
+    m_firmware->setStatusTip(tr("Write a new firmware image to the module, verified by reading it back"));
+    m_record->setText(tr("&Record"));
+    m_record->setStatusTip(tr("Show the recording controls of this device"));
+    if (m_toolsMenu)
+        m_toolsMenu->setTitle(tr("&Tools"));
+}
+
+void ToolActions::update(const DeviceWorkspace *ws)
+{
+    const bool busy = ws && ws->isBusy();
+    const bool serial = ws && !ws->hasAttachedLink();
+    const bool connected = ws && ws->state() == SessionState::Connected;
+    m_modbus->setEnabled(!busy);
+    m_can->setEnabled(!busy);
+    m_openCapture->setEnabled(!busy);
+    m_importCsv->setEnabled(!busy);
+    m_scanModbus->setEnabled(connected && dynamic_cast<const device::ModbusSession *>(&ws->link()));
+    m_configuration->setEnabled(serial);
+    m_profiles->setEnabled(serial && connected);
+    m_record->setEnabled(serial);
+    // The update opens the port itself: a connected HiPNUC serial device.
+    m_firmware->setEnabled(serial && connected && !ws->simulator());
+}
+
+bool ToolActions::openCapture(const QString &path)
+{
+    QString error;
+    DeviceWorkspace *ws = m_window->freeWorkspaceForLink();
+    if (!LinkFactory::openReplay(*ws, path, &error)) {
+        m_window->showError(error);
+        return false;
+    }
+    return true;
+}
+
+bool ToolActions::importVendorCsv(const QString &csvPath, const QString &capturePath)
+{
+    const auto r = record::CsvCaptureConverter::convert(csvPath, capturePath);
+    if (!r.ok) {
+        m_window->showError(tr("%1 could not be imported: %2").arg(QFileInfo(csvPath).fileName(), r.error));
+        return false;
+    }
+    return openCapture(capturePath);
+}
+
+void ToolActions::chooseCapture()
+{
+    const QString path = QFileDialog::getOpenFileName(m_window, tr("Open capture"), m_window->preferences().effectiveRecordingFolder(),
+                                                      tr("Captures (*.imucap);;All files (*)"));
+    if (!path.isEmpty())
+        openCapture(path);
+}
+
+void ToolActions::chooseCsv()
+{
+    const QString csv = QFileDialog::getOpenFileName(m_window, tr("Import vendor CSV"), QString(),
+                                                     tr("CSV files (*.csv);;All files (*)"));
+    if (csv.isEmpty())
+        return;
+    const QFileInfo info(csv);
+    const QString capture = QFileDialog::getSaveFileName(
+        m_window, tr("Save the imported capture as"), info.dir().filePath(info.completeBaseName() + QStringLiteral(".imucap")),
+        tr("Captures (*.imucap)"));
+    if (!capture.isEmpty())
+        importVendorCsv(csv, capture);
+}
+
+void ToolActions::exportCapture()
+{
+    const QString path = QFileDialog::getOpenFileName(m_window, tr("Export capture"), m_window->preferences().effectiveRecordingFolder(),
+                                                      tr("Captures (*.imucap);;All files (*)"));
+    if (path.isEmpty())
+        return;
+    auto *dialog = new ExportDialog(path, m_window);
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    dialog->open();
+}
+
+void ToolActions::analyzeCapture()
+{
+    const QString path = QFileDialog::getOpenFileName(m_window, tr("Analyze capture"), m_window->preferences().effectiveRecordingFolder(),
+                                                      tr("Captures and vendor CSV (*.imucap *.csv);;All files (*)"));
+    if (path.isEmpty())
+        return;
+    auto *window = new AnalysisWindow(m_window);
+    window->setWindowFlag(Qt::Window);
+    window->setAttribute(Qt::WA_DeleteOnClose);
+    window->show();
+    window->analyzeFile(path);
+}
+
+void ToolActions::connectModbus()
+{
+    auto *dialog = new ModbusConnectDialog(m_window);
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    connect(dialog, &QDialog::accepted, this, [this, dialog] {
+        QString error;
+        if (!LinkFactory::connectModbus(*m_window->freeWorkspaceForLink(), dialog->options(), dialog->simulate(),
+                                        m_window->simulatedMotion(), &error))
+            m_window->showError(error);
+    });
+    dialog->open();
+}
+
+void ToolActions::connectCan()
+{
+    auto *dialog = new CanConnectDialog(m_window);
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    connect(dialog, &QDialog::accepted, this, [this, dialog] {
+        QString error;
+        if (!LinkFactory::connectCan(*m_window->freeWorkspaceForLink(), dialog->options(), dialog->simulate(),
+                                     m_window->simulatedMotion(), &error))
+            m_window->showError(error);
+    });
+    dialog->open();
+}
+
+void ToolActions::scanModbus()
+{
+    DeviceWorkspace *ws = m_window->currentWorkspace();
+    auto *session = ws ? dynamic_cast<device::ModbusSession *>(&ws->link()) : nullptr;
+    if (!session)
+        return;
+    auto *dialog = new ModbusScanDialog(session, m_window);
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    dialog->open();
+}
+
+void ToolActions::showConfiguration()
+{
+    if (DeviceWorkspace *ws = m_window->currentWorkspace()) {
+        ws->configDock()->show();
+        ws->configDock()->raise();
+    }
+}
+
+void ToolActions::showRecording()
+{
+    if (DeviceWorkspace *ws = m_window->currentWorkspace()) {
+        ws->recordingDock()->show();
+        ws->recordingDock()->raise();
+    }
+}
+
+void ToolActions::openProfiles()
+{
+    DeviceWorkspace *ws = m_window->currentWorkspace();
+    if (!ws)
+        return;
+    auto *dialog = new ProfileDialog(ws->session(), m_window);
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    dialog->open();
+    dialog->readDevice();
+}
+
+void ToolActions::openCalculator()
+{
+    auto *calculator = new BandwidthCalculator(m_window);
+    calculator->setWindowFlag(Qt::Window);
+    calculator->setAttribute(Qt::WA_DeleteOnClose);
+    if (DeviceWorkspace *ws = m_window->currentWorkspace(); ws && !ws->hasAttachedLink())
+        calculator->setConfiguration(ws->configPanel()->controller().configuration());
+    calculator->show();
+}
+
+void ToolActions::updateFirmware()
+{
+    DeviceWorkspace *ws = m_window->currentWorkspace();
+    if (!ws || ws->hasAttachedLink())
+        return;
+    const QString port = ws->target();
+    const int baud = ws->baud();
+    const auto identity = ws->identity();
+    // The dialog opens the port itself: close the session first, reopen it afterwards.
+    ws->disconnectDevice();
+    auto *dialog = new FirmwareUpdateDialog(port, baud, identity, m_window);
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    connect(dialog, &QDialog::finished, ws, [ws, port, baud] { ws->connectPort(port, baud); });
+    dialog->open();
+}
+
+} // namespace imudesk::ui

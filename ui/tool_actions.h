@@ -1,0 +1,80 @@
+#pragma once
+// The menu entries of the features beyond live monitoring: captures (open for replay,
+// import a vendor CSV, export, analyse), Modbus and CAN connections, the configuration
+// panel, profiles, the output-rate calculator and the firmware update. Owned by the main
+// window, which hands over its menus and asks for an update when the tab or its state
+// changes. Every long task runs in a non-modal window with its own progress and cancel.
+#include "sim/motion_model.h"
+
+#include <QCoreApplication>
+#include <QObject>
+
+class QAction;
+class QMenu;
+
+namespace imudesk::ui {
+
+class DeviceWorkspace;
+class MainWindow;
+
+class ToolActions : public QObject {
+    Q_OBJECT
+public:
+    explicit ToolActions(MainWindow *window);
+
+    // Adds the actions to the File and Device menus and builds the Tools menu.
+    void addToMenus(QMenu *fileMenu, QMenu *deviceMenu, QMenu *toolsMenu);
+    void retranslate();
+    // Enables what the current tab's link and state allow.
+    void update(const DeviceWorkspace *ws);
+
+    // The actions themselves (for tests and shortcuts).
+    QAction *openCaptureAction() const { return m_openCapture; }
+    QAction *importCsvAction() const { return m_importCsv; }
+    QAction *exportAction() const { return m_export; }
+    QAction *analyzeAction() const { return m_analyze; }
+    QAction *modbusAction() const { return m_modbus; }
+    QAction *canAction() const { return m_can; }
+    QAction *scanModbusAction() const { return m_scanModbus; }
+    QAction *configurationAction() const { return m_configuration; }
+    QAction *profilesAction() const { return m_profiles; }
+    QAction *calculatorAction() const { return m_calculator; }
+    QAction *firmwareAction() const { return m_firmware; }
+    QAction *recordAction() const { return m_record; }
+
+    // The steps behind the actions, callable without a file dialog (tests, command line).
+    bool openCapture(const QString &path);
+    bool importVendorCsv(const QString &csvPath, const QString &capturePath);
+
+private:
+    QAction *make(const char *objectName);
+    void chooseCapture();
+    void chooseCsv();
+    void exportCapture();
+    void analyzeCapture();
+    void connectModbus();
+    void connectCan();
+    void scanModbus();
+    void showConfiguration();
+    void openProfiles();
+    void openCalculator();
+    void updateFirmware();
+    void showRecording();
+
+    MainWindow *m_window;
+    QAction *m_openCapture = nullptr;
+    QAction *m_importCsv = nullptr;
+    QAction *m_export = nullptr;
+    QAction *m_analyze = nullptr;
+    QAction *m_modbus = nullptr;
+    QAction *m_can = nullptr;
+    QAction *m_scanModbus = nullptr;
+    QAction *m_configuration = nullptr;
+    QAction *m_profiles = nullptr;
+    QAction *m_calculator = nullptr;
+    QAction *m_firmware = nullptr;
+    QAction *m_record = nullptr;
+    QMenu *m_toolsMenu = nullptr;
+};
+
+} // namespace imudesk::ui
