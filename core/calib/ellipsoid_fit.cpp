@@ -217,9 +217,9 @@ std::optional<Ellipsoid> EllipsoidFit::algebraicLi(const std::vector<Eigen::Vect
     std::array<int, 6> order{0, 1, 2, 3, 4, 5};
     const auto values = es.eigenvalues();
     std::sort(order.begin(), order.end(), [&](int a, int b) { return values[a].real() > values[b].real(); });
+    // The solution belongs to the only positive eigenvalue; with exact data it is 0 within
+    // rounding, so try them from the largest down and keep the first that is an ellipsoid.
     for (int idx : order) {
-        if (!(values[idx].real() > 0))
-            break;
         Eigen::Matrix<double, 6, 1> v1 = es.eigenvectors().col(idx).real();
         Eigen::Vector4d v2 = -s22inv * s12.transpose() * v1;
         Eigen::Matrix3d m;

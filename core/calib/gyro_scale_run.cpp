@@ -30,6 +30,7 @@ void GyroScaleRun::start()
     m_angle = m_rate = m_lastRate = 0;
     m_lastMs = m_legStartMs = 0;
     m_belowSinceMs = -1;
+    m_paused = false;
     m_firstMs = -1;
     m_samples = 0;
     m_legRates.clear();
@@ -84,6 +85,7 @@ GyroScaleRun::State GyroScaleRun::addSample(double timeMs, const Eigen::Vector3d
             m_state = State::Turning;
             m_legRates.clear();
             m_belowSinceMs = -1;
+            m_paused = false;
         }
         return m_state;
     }
@@ -93,8 +95,14 @@ GyroScaleRun::State GyroScaleRun::addSample(double timeMs, const Eigen::Vector3d
     if (std::abs(rate) < m_options.stopRateDps) {
         if (m_belowSinceMs < 0)
             m_belowSinceMs = timeMs;
-        if (timeMs - m_belowSinceMs >= m_options.stopHoldS * 1000.0)
-            finishLeg();
+        if (timeMs - m_belowSinceMs >= m_options.stopHoldS * 1000.0) {
+            if (std::abs(m_angle) >= m_options.targetDeg - m_options.pauseShortDeg)
+                finishLeg();
+            else if (std::abs(m_angle) >= m_options.minLegDeg)
+                m_paused = true;
+            else
+                finishLeg(); // a nudge: finishLeg discards it
+        }
     } else {
         m_belowSinceMs = -1;
     }
@@ -107,6 +115,7 @@ GyroScaleRun::Leg GyroScaleRun::legStats() const
     leg.angleDeg = m_angle;
     leg.durationS = (m_lastMs - m_legStartMs) / 1000.0;
     leg.stoppedInWindow = std::abs(std::abs(m_angle) - m_options.targetDeg) <= m_options.stopToleranceDeg;
+    leg.paused = m_paused;
     if (m_legRates.empty())
         return leg;
     // The even part: the middle 80 % of the time spent turning (before the stop hold).
@@ -185,6 +194,8 @@ GyroScaleRun::Result GyroScaleRun::result() const
                             .arg(l.meanRateDps, 0, 'f', 1)
                             .arg(m_options.minRateDps, 0, 'f', 0)
                             .arg(m_options.maxRateDps, 0, 'f', 0);
+        if (l.paused)
+            problems << tr("turn %1 paused on the way").arg(i + 1);
         if (l.uniformityPct > m_options.maxUniformityPct)
             problems << tr("turn %1 was uneven (rate varied by %2 %)").arg(i + 1).arg(l.uniformityPct, 0, 'f', 0);
     }

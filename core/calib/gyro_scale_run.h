@@ -6,7 +6,8 @@
 //
 // States: MeasuringBias (still for biasWindowS: gyro bias and the up axis from gravity)
 // -> WaitingForTurn -> Turning (one leg: from the last still sample to the next stop held
-// for stopHoldS) -> WaitingForTurn for the next leg ... -> Finished.
+// for stopHoldS) -> WaitingForTurn for the next leg ... -> Finished. A stop more than
+// pauseShortDeg before the target is a pause: the leg goes on, and is flagged.
 // The rate is the bias-free gyro projected on the measured up axis (z when no accelerometer
 // is given). With two legs in opposite directions (strategy C of the notes: clockwise,
 // stop, counter-clockwise, back on the same mark) the residual bias cancels:
@@ -44,6 +45,7 @@ public:
         double minLegDeg = 90;         // shorter turns are nudges, not legs
         double minRateDps = 20, maxRateDps = 100; // the manual's band
         double stopToleranceDeg = 5;   // the manual's window
+        double pauseShortDeg = 45;     // a stop further than this before the target is a pause
         double maxUniformityPct = 20;  // std/mean of the rate in the even part
     };
 
@@ -54,6 +56,7 @@ public:
         double inBandPct = 0;          // share of that part within the band
         double uniformityPct = 0;      // std / mean of |rate| there
         bool stoppedInWindow = false;  // |angle| within target +- tolerance
+        bool paused = false;           // stopped on the way and went on
     };
 
     struct Result {
@@ -105,6 +108,7 @@ private:
     double m_rate = 0;
     double m_legStartMs = 0;
     double m_belowSinceMs = -1;
+    bool m_paused = false;
     double m_firstMs = -1;
     uint64_t m_samples = 0;
     std::vector<std::pair<double, double>> m_legRates; // (time ms, |rate|)

@@ -197,7 +197,7 @@ Figures runScenario(const Truth &t, uint64_t seed, int trials, int n, Coverage c
 {
     Figures f;
     calib::MagCalibrator::Options o;
-    o.levelVerticalUt = (t.a * t.field).z(); // body z at level, from the reference field
+    o.levelVerticalUt = t.field.z(); // the world model's vertical component (2-D mode)
     const calib::MagCalibrator cal(o);
     for (int i = 0; i < trials; ++i) {
         Rng rng(seed * 1000003ull + uint64_t(i) * 7919ull + uint64_t(cov) * 31ull + uint64_t(spikes * 1000));
