@@ -38,6 +38,7 @@ int cmdRead(const QStringList &args);
 int cmdSend(const QStringList &args);
 int cmdDecode(const QStringList &args);
 int cmdSimulate(const QStringList &args);
+int cmdMagcal(const QStringList &args);
 
 // Parses args with the given parser; on error prints it and returns false.
 bool parseArgs(QCommandLineParser &p, const QStringList &args, const QString &usage);

@@ -19,6 +19,8 @@ void usage(FILE *to)
                "                                         print decoded samples\n"
                "  send PORT [--baud B] \"COMMAND\"         send an ASCII command, print the reply\n"
                "  decode FILE [--json]                   decode a raw capture\n"
+               "  magcal FILE [--json] [--mode full|hard_iron_only|planar] [--field UT]\n"
+               "                                         magnetometer calibration of a CSV (mag_x,mag_y,mag_z uT)\n"
                "  simulate --pty [--model HI14] [--firmware 1.7.1] [--baud 115200]\n"
                "           [--motion static|spin|tumble] [--seed N]\n"
                "                                         serve a simulated device on a pseudo-terminal\n"
@@ -54,6 +56,7 @@ int main(int argc, char **argv)
         {QStringLiteral("ports"), cmdPorts},     {QStringLiteral("probe"), cmdProbe},
         {QStringLiteral("read"), cmdRead},       {QStringLiteral("send"), cmdSend},
         {QStringLiteral("decode"), cmdDecode},   {QStringLiteral("simulate"), cmdSimulate},
+        {QStringLiteral("magcal"), cmdMagcal},
     };
     const auto it = commands.find(cmd);
     if (it == commands.end()) {

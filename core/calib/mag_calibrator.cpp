@@ -30,8 +30,9 @@ MagCalibrator::MagCalibrator(Options options)
 
 double MagCalibrator::eigenRatio(const std::vector<Eigen::Vector3d> &samples)
 {
+    // Degenerate data reports 1e12 (finite, so that it survives JSON).
     if (samples.size() < 2)
-        return std::numeric_limits<double>::infinity();
+        return 1e12;
     Eigen::Vector3d mean = Eigen::Vector3d::Zero();
     for (const auto &s : samples)
         mean += s;
@@ -43,7 +44,7 @@ double MagCalibrator::eigenRatio(const std::vector<Eigen::Vector3d> &samples)
     Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(cov, Eigen::EigenvaluesOnly);
     const double lmin = es.eigenvalues()[0], lmax = es.eigenvalues()[2];
     if (!(lmax > 0))
-        return std::numeric_limits<double>::infinity();
+        return 1e12;
     if (!(lmin > 1e-12 * lmax))
         return 1e12;
     return lmax / lmin;

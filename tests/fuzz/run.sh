@@ -12,7 +12,7 @@
 # BUILD_DIR/fuzz/logs/<target>.log.
 #
 # Environment:
-#   FUZZ_TARGETS  space-separated subset (default: all three)
+#   FUZZ_TARGETS  space-separated subset (default: all of them)
 #   FUZZ_JOBS     targets run at the same time, 1 or 2 (default 1)
 #   BUILD_JOBS    ninja -j (default 2)
 #   FUZZ_ARGS     extra libFuzzer flags
@@ -42,7 +42,7 @@ case "$BUILD_DIR" in
 /*) ;;
 *) BUILD_DIR=$PWD/$BUILD_DIR ;;
 esac
-TARGETS=${FUZZ_TARGETS:-"fuzz_frame_decoder fuzz_nmea fuzz_ascii_reply"}
+TARGETS=${FUZZ_TARGETS:-"fuzz_frame_decoder fuzz_nmea fuzz_ascii_reply fuzz_magcal_csv"}
 JOBS=${FUZZ_JOBS:-1}
 BUILD_JOBS=${BUILD_JOBS:-2}
 
