@@ -67,6 +67,7 @@ int cmdCan(const QStringList &args);
 // simulate --can PLUGIN:INTERFACE: serves a simulated CAN device until SIGINT/SIGTERM (commands_can.cpp).
 int simulateCan(const QString &canSpec, const QString &protocol, const QString &deviceKind, int node, sim::Motion motion,
                 uint64_t seed, const QString &firmware);
+int cmdMagcal(const QStringList &args);
 
 // Parses args with the given parser; on error prints it and returns false.
 bool parseArgs(QCommandLineParser &p, const QStringList &args, const QString &usage);

@@ -27,6 +27,8 @@ void usage(FILE *to)
                "  import CSV [-o OUT.imucap]             turn a vendor HI91 CSV into a capture\n"
                "  analyze FILE [--json]                  statistics, output rate, Allan deviation of a capture or\n"
                "                                         vendor CSV\n"
+               "  magcal FILE [--json] [--mode full|hard_iron_only|planar] [--field UT]\n"
+               "                                         magnetometer calibration of a CSV (mag_x,mag_y,mag_z uT)\n"
                "  simulate --pty [--model HI14] [--firmware 1.7.1] [--baud 115200]\n"
                "           [--motion static|spin|tumble] [--seed N]\n"
                "                                         serve a simulated device on a pseudo-terminal\n"
@@ -81,6 +83,7 @@ int main(int argc, char **argv)
         {QStringLiteral("update"), cmdUpdate},
         {QStringLiteral("hec495"), cmdHec495},
         {QStringLiteral("can"), cmdCan},
+        {QStringLiteral("magcal"), cmdMagcal},
     };
     const auto it = commands.find(cmd);
     if (it == commands.end()) {

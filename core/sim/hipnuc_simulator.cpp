@@ -73,6 +73,7 @@ HipnucSimulator::HipnucSimulator(SimOptions options)
         fw = model::FirmwareVersion{1, 7, 1};
     }
     m_firmware = *fw;
+    m_sensor.setGyroScaleError(m_options.gyroScaleError);
     m_edition = m_firmware >= model::FirmwareVersion{1, 7, 1} ? ManualEdition::V171 : ManualEdition::V166;
     m_family = model::familyOfProduct(m_options.model);
     char buf[20];

@@ -95,6 +95,7 @@ struct SimOptions {
     int baud = 115200;                // saved baud at construction
     Motion motion = Motion::Static;
     uint64_t seed = 1;                // sensor noise, bias, iron, UUID, motion phases
+    double gyroScaleError = 0;        // fraction: the gyro reads (1 + e) * the true rate
 };
 
 class HipnucSimulator {

@@ -4,6 +4,7 @@
 #include <cctype>
 #include <cmath>
 #include <string>
+#include <utility>
 
 namespace imudesk::sim {
 namespace {
@@ -24,6 +25,24 @@ uint64_t mix(uint64_t x)
     return x ^ (x >> 31);
 }
 
+// Angle (deg) and rate (deg/s) tau seconds into one turntable leg.
+std::pair<double, double> turntableLeg(double tau)
+{
+    const double w = MotionModel::kTurntableRateDps, tr = MotionModel::kTurntableRampS;
+    const double total = MotionModel::kTurntableLegDeg, len = MotionModel::turntableLegS();
+    if (tau <= 0)
+        return {0.0, 0.0};
+    if (tau < tr)
+        return {w * tau * tau / (2 * tr), w * tau / tr};
+    if (tau < len - tr)
+        return {w * tr / 2 + w * (tau - tr), w};
+    if (tau < len) {
+        const double left = len - tau;
+        return {total - w * left * left / (2 * tr), w * left / tr};
+    }
+    return {total, 0.0};
+}
+
 double unitFromSeed(uint64_t seed, uint64_t salt)
 {
     return double(mix(seed ^ (salt * 0xD1B54A32D192ED03ull)) >> 11) * (1.0 / 9007199254740992.0);
@@ -37,6 +56,7 @@ const char *motionName(Motion m)
     case Motion::Static: return "static";
     case Motion::Spin: return "spin";
     case Motion::Tumble: return "tumble";
+    case Motion::Turntable: return "turntable";
     }
     return "?";
 }
@@ -46,7 +66,7 @@ bool parseMotion(std::string_view text, Motion &out)
     std::string t;
     for (char c : text)
         t.push_back(char(std::tolower(uint8_t(c))));
-    for (Motion m : {Motion::Static, Motion::Spin, Motion::Tumble})
+    for (Motion m : {Motion::Static, Motion::Spin, Motion::Tumble, Motion::Turntable})
         if (t == motionName(m)) {
             out = m;
             return true;
@@ -116,6 +136,15 @@ MotionState MotionModel::at(double t) const
         s.rateDps = rcT * rbT * Eigen::Vector3d(0, 0, kTumbleRateZDps) + rcT * Eigen::Vector3d(kTumbleRateXDps, 0, 0)
             + Eigen::Vector3d(0, kTumbleRateYDps, 0);
         s.moving = true;
+        break;
+    }
+    case Motion::Turntable: {
+        const double still = kTurntableStillS, leg = turntableLegS();
+        const auto [cwDeg, cwRate] = turntableLeg(t - still);
+        const auto [ccwDeg, ccwRate] = turntableLeg(t - (2 * still + leg));
+        s.q = canonical(axisAngle(m_headingDeg - cwDeg + ccwDeg, Eigen::Vector3d::UnitZ()));
+        s.rateDps = Eigen::Vector3d(0, 0, ccwRate - cwRate);
+        s.moving = s.rateDps.z() != 0;
         break;
     }
     }

@@ -26,6 +26,10 @@ enum class Motion {
     Static, // a fixed, slightly tilted attitude
     Spin,   // level, 30 deg/s about body Z (yaw), as on a turntable
     Tumble, // slow rotation whose axis precesses: every attitude within about a minute
+    // Level turntable for the gyro scale-factor run: still for kTurntableStillS, two turns
+    // (720 deg) clockwise, still, two turns counter-clockwise, still from then on. Each
+    // leg ramps to kTurntableRateDps in 1 s, turns evenly and ramps down in 1 s.
+    Turntable,
 };
 const char *motionName(Motion m);
 // "static", "spin", "tumble" (case-insensitive).
@@ -59,6 +63,15 @@ public:
     static constexpr double kTumbleRateZDps = 22.0;
     static constexpr double kTumbleRateXDps = 17.0;
     static constexpr double kTumbleRateYDps = 31.0;
+    static constexpr double kTurntableStillS = 3.0;
+    static constexpr double kTurntableRateDps = 45.0;
+    static constexpr double kTurntableLegDeg = 720.0;
+    static constexpr double kTurntableRampS = 1.0;
+    // Duration of one leg: ramps plus the even part.
+    static constexpr double turntableLegS()
+    {
+        return 2 * kTurntableRampS + (kTurntableLegDeg - kTurntableRateDps * kTurntableRampS) / kTurntableRateDps;
+    }
     // Static attitude (deg).
     static constexpr double kStaticRollDeg = 1.5;
     static constexpr double kStaticPitchDeg = -2.5;

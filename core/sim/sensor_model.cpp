@@ -28,7 +28,7 @@ SensorReading SensorModel::ideal(const MotionState &s) const
     const Eigen::Matrix3d rT = s.q.toRotationMatrix().transpose();
     SensorReading r;
     r.acc = rT * Eigen::Vector3d(0, 0, 1);
-    r.gyr = s.rateDps + m_gyroBias;
+    r.gyr = (1.0 + m_gyroScaleError) * s.rateDps + m_gyroBias;
     r.mag = m_softIron * (rT * fieldNav()) + m_hardIron;
     r.pressurePa = kPressurePa;
     r.temperatureC = kTemperatureC;

@@ -2,7 +2,7 @@
 // Synthesises what a module's sensors measure for a true motion state, in the sensor
 // (body) frame and the manual's units:
 //   acc (G)    = R^T * (0, 0, 1)            specific force of gravity in ENU (no centripetal term)
-//   gyr (deg/s) = true rate + bias + white noise
+//   gyr (deg/s) = (1 + scale error) * true rate + bias + white noise
 //   mag (uT)   = S * (R^T * B_nav) + h + white noise, B_nav = (0, 28, -42) uT in ENU
 //   pressure about 100 kPa, temperature about 30 degC, each with a little noise.
 // Bias, hard iron h and soft iron S are drawn from the seed; the noise comes from a
@@ -43,6 +43,9 @@ public:
     // The same without white noise: bias and iron effects only (does not touch the generator).
     SensorReading ideal(const MotionState &s) const;
 
+    // Gyro scale error (fraction, all axes): measured rate = (1 + e) * true rate + bias.
+    void setGyroScaleError(double e) { m_gyroScaleError = e; }
+    double gyroScaleError() const { return m_gyroScaleError; }
     const Eigen::Vector3d &gyroBias() const { return m_gyroBias; }
     const Eigen::Vector3d &hardIron() const { return m_hardIron; }
     const Eigen::Matrix3d &softIron() const { return m_softIron; }
@@ -53,6 +56,7 @@ private:
     Eigen::Vector3d m_gyroBias;
     Eigen::Vector3d m_hardIron;
     Eigen::Matrix3d m_softIron;
+    double m_gyroScaleError = 0;
 };
 
 } // namespace imudesk::sim

@@ -1,0 +1,83 @@
+// imudesk-cli commands for calibration: magcal (the wizard's magnetometer fit on a file).
+#include "calib/mag_calibrator.h"
+#include "calib/sample_csv.h"
+#include "cli_context.h"
+
+#include <QFile>
+#include <QJsonDocument>
+
+namespace imudesk::cli {
+
+namespace {
+constexpr qint64 kMaxCsvBytes = 512ll * 1024 * 1024;
+}
+
+int cmdMagcal(const QStringList &args)
+{
+    QCommandLineParser p;
+    p.addOption(QCommandLineOption(QStringLiteral("json"), QStringLiteral("Print the result as one JSON object.")));
+    p.addOption(QCommandLineOption(QStringLiteral("mode"),
+                                   QStringLiteral("full (default), hard_iron_only or planar."), QStringLiteral("MODE"),
+                                   QStringLiteral("full")));
+    p.addOption(QCommandLineOption(QStringLiteral("field"),
+                                   QStringLiteral("Expected |B| in uT (world magnetic model); hard_iron_only holds it."),
+                                   QStringLiteral("UT")));
+    p.addPositionalArgument(QStringLiteral("FILE"),
+                            QStringLiteral("CSV with a header row and the columns mag_x,mag_y,mag_z (uT)."));
+    if (!parseArgs(p, args, QStringLiteral("imudesk-cli magcal FILE [--json] [--mode full|hard_iron_only|planar] [--field UT]")))
+        return ExitUsage;
+    if (p.positionalArguments().size() != 1)
+        return fail(QStringLiteral("magcal needs exactly one FILE"), ExitUsage);
+    calib::MagCalMode mode;
+    if (!calib::parseMode(p.value(QStringLiteral("mode")), mode))
+        return fail(QStringLiteral("--mode must be full, hard_iron_only or planar, got '%1'").arg(p.value(QStringLiteral("mode"))),
+                    ExitUsage);
+    calib::MagCalibrator::Options options;
+    if (p.isSet(QStringLiteral("field"))) {
+        bool ok = false;
+        options.referenceFieldUt = p.value(QStringLiteral("field")).toDouble(&ok);
+        if (!ok || !(options.referenceFieldUt > 0) || options.referenceFieldUt > 1000)
+            return fail(QStringLiteral("--field needs |B| in uT (0..1000), got '%1'").arg(p.value(QStringLiteral("field"))),
+                        ExitUsage);
+    }
+
+    const QString path = p.positionalArguments().front();
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly))
+        return fail(QStringLiteral("cannot read %1: %2").arg(path, file.errorString()));
+    if (file.size() > kMaxCsvBytes)
+        return fail(QStringLiteral("%1 is larger than %2 MB; split it").arg(path).arg(kMaxCsvBytes >> 20));
+    calib::SampleTable table;
+    QString error;
+    std::vector<Eigen::Vector3d> samples;
+    if (!calib::SampleCsv::parse(file.readAll(), table, &error) || !calib::SampleCsv::magnetometer(table, samples, &error))
+        return fail(QStringLiteral("%1: %2").arg(path, error));
+
+    const calib::MagCalResult r = calib::MagCalibrator(options).calibrate(samples, mode);
+    if (p.isSet(QStringLiteral("json"))) {
+        out(QString::fromUtf8(QJsonDocument(r.toJson()).toJson(QJsonDocument::Compact)));
+    } else {
+        out(QStringLiteral("verdict\t%1").arg(QLatin1String(calib::verdictName(r.verdict))));
+        out(QStringLiteral("reason\t%1").arg(r.reason));
+        out(QStringLiteral("mode\t%1").arg(QLatin1String(calib::modeName(r.mode))));
+        out(QStringLiteral("samples\t%1 (%2 set aside)").arg(r.samples).arg(r.outliers));
+        if (r.usable() || r.verdict == calib::MagVerdict::Fail) {
+            out(QStringLiteral("hard_iron_ut\t%1 %2 %3").arg(r.hardIron.x(), 0, 'f', 3).arg(r.hardIron.y(), 0, 'f', 3).arg(r.hardIron.z(), 0, 'f', 3));
+            for (int i = 0; i < 3; ++i)
+                out(QStringLiteral("soft_iron_row%1\t%2 %3 %4")
+                        .arg(i)
+                        .arg(r.softIron(i, 0), 0, 'f', 6)
+                        .arg(r.softIron(i, 1), 0, 'f', 6)
+                        .arg(r.softIron(i, 2), 0, 'f', 6));
+            out(QStringLiteral("field_ut\t%1").arg(r.fieldUt, 0, 'f', 3));
+            out(QStringLiteral("fit_error_pct\t%1").arg(r.fitErrorPct, 0, 'f', 3));
+            out(QStringLiteral("residual_rms_ut\t%1").arg(r.residualRmsUt, 0, 'f', 3));
+        }
+        out(QStringLiteral("coverage_pct\t%1").arg(r.coveragePct, 0, 'f', 1));
+        out(QStringLiteral("eigen_ratio\t%1").arg(r.eigenRatio, 0, 'f', 2));
+    }
+    // 0: a usable calibration (pass or warn); 1: fail or refused (the result is printed anyway).
+    return r.usable() ? ExitOk : ExitFailure;
+}
+
+} // namespace imudesk::cli

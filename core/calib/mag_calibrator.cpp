@@ -1,0 +1,289 @@
+#include "calib/mag_calibrator.h"
+
+#include "calib/ellipse_fit.h"
+#include "calib/ellipsoid_fit.h"
+#include "calib/sphere_coverage.h"
+
+#include <Eigen/Eigenvalues>
+
+#include <QLoggingCategory>
+#include <QStringList>
+
+#include <array>
+#include <cmath>
+
+Q_LOGGING_CATEGORY(lcCalib, "imudesk.core.calib", QtInfoMsg)
+
+namespace imudesk::calib {
+
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+constexpr int kHeadingSectors = 36;
+} // namespace
+
+MagCalibrator::MagCalibrator() = default;
+
+MagCalibrator::MagCalibrator(Options options)
+    : m_options(std::move(options))
+{
+}
+
+double MagCalibrator::eigenRatio(const std::vector<Eigen::Vector3d> &samples)
+{
+    // Degenerate data reports 1e12 (finite, so that it survives JSON).
+    if (samples.size() < 2)
+        return 1e12;
+    Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+    for (const auto &s : samples)
+        mean += s;
+    mean /= double(samples.size());
+    Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+    for (const auto &s : samples)
+        cov.noalias() += (s - mean) * (s - mean).transpose();
+    cov /= double(samples.size());
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(cov, Eigen::EigenvaluesOnly);
+    const double lmin = es.eigenvalues()[0], lmax = es.eigenvalues()[2];
+    if (!(lmax > 0))
+        return 1e12;
+    if (!(lmin > 1e-12 * lmax))
+        return 1e12;
+    return lmax / lmin;
+}
+
+double MagCalibrator::roughCoveragePct(const std::vector<Eigen::Vector3d> &samples)
+{
+    const auto sphere = EllipsoidFit::sphere(samples);
+    if (!sphere)
+        return 0;
+    SphereCoverage cov;
+    for (const auto &s : samples)
+        cov.add(s - sphere->first);
+    return cov.percent();
+}
+
+MagCalResult MagCalibrator::calibrate(const std::vector<Eigen::Vector3d> &samplesUt, MagCalMode mode) const
+{
+    std::vector<Eigen::Vector3d> s;
+    s.reserve(samplesUt.size());
+    for (const auto &v : samplesUt)
+        if (v.allFinite())
+            s.push_back(v);
+    MagCalResult r;
+    r.mode = mode;
+    r.samples = int(samplesUt.size());
+    r.eigenRatio = eigenRatio(s);
+    switch (mode) {
+    case MagCalMode::Full3D: r = fullFit(s, r); break;
+    case MagCalMode::HardIronOnly: r = hardIronFit(s, r); break;
+    case MagCalMode::Planar2D: r = planarFit(s, r); break;
+    }
+    qCDebug(lcCalib) << "magnetometer fit" << modeName(r.mode) << verdictName(r.verdict) << r.fieldUt << "uT, fit error"
+                     << r.fitErrorPct << "%, coverage" << r.coveragePct << "%";
+    return r;
+}
+
+MagCalResult MagCalibrator::fullFit(const std::vector<Eigen::Vector3d> &s, MagCalResult r) const
+{
+    r.verdict = MagVerdict::Refused;
+    if (int(s.size()) < kMinSamplesFull) {
+        r.reason = tr("Only %1 usable samples; a full calibration needs at least %2. Keep turning the module slowly.")
+                       .arg(s.size())
+                       .arg(kMinSamplesFull);
+        r.hardIronOnlyOffered = int(s.size()) >= kMinSamplesHardIron && r.eigenRatio <= m_options.maxEigenRatioHardIron;
+        return r;
+    }
+    if (r.eigenRatio > kPlanarEigenRatio) {
+        r.planarOffered = true;
+        r.reason = tr("The samples lie in one plane (the module turned about one axis only), so a full 3-D "
+                      "calibration cannot be computed. Turn the module about its other axes too, or use the 2-D "
+                      "(planar) calibration, which is valid for level operation only.");
+        return r;
+    }
+    r.coveragePct = roughCoveragePct(s);
+    if (r.coveragePct < m_options.minCoveragePct || r.eigenRatio > m_options.maxEigenRatioFull) {
+        r.hardIronOnlyOffered = r.eigenRatio <= m_options.maxEigenRatioHardIron;
+        SphereCoverage cov;
+        if (const auto sphere = EllipsoidFit::sphere(s))
+            for (const auto &v : s)
+                cov.add(v - sphere->first);
+        r.reason = tr("Only %1 % of the field directions are covered (at least %2 % are needed, eigenvalue ratio "
+                      "%3, at most %4). %5. A full fit on this data would be unreliable.")
+                       .arg(r.coveragePct, 0, 'f', 0)
+                       .arg(m_options.minCoveragePct, 0, 'f', 0)
+                       .arg(r.eigenRatio, 0, 'f', 1)
+                       .arg(m_options.maxEigenRatioFull, 0, 'f', 0)
+                       .arg(cov.missingRotationHint());
+        if (r.hardIronOnlyOffered)
+            r.reason += QLatin1Char(' ') + tr("A hard-iron-only fit (soft iron kept from before) is possible.");
+        return r;
+    }
+    const auto li = EllipsoidFit::algebraicLi(s);
+    if (!li) {
+        r.verdict = MagVerdict::Fail;
+        r.reason = tr("The samples do not describe an ellipsoid (strong interference or a moving magnet nearby). "
+                      "Move away from iron and electronics and calibrate again.");
+        return r;
+    }
+    RobustStats st;
+    const Ellipsoid e = EllipsoidFit::refine(s, *li, &st);
+    r.hardIron = e.center;
+    r.softIron = e.softIron();
+    r.fieldUt = e.radius();
+    SphereCoverage cov;
+    for (const auto &v : s)
+        cov.add(e.correct(v));
+    r.coveragePct = cov.percent();
+    judge(r, EllipsoidFit::residuals(s, e), true);
+    return r;
+}
+
+MagCalResult MagCalibrator::hardIronFit(const std::vector<Eigen::Vector3d> &s, MagCalResult r) const
+{
+    r.verdict = MagVerdict::Refused;
+    if (int(s.size()) < kMinSamplesHardIron) {
+        r.reason = tr("Only %1 usable samples; the hard-iron fit needs at least %2.").arg(s.size()).arg(kMinSamplesHardIron);
+        return r;
+    }
+    if (r.eigenRatio > m_options.maxEigenRatioHardIron) {
+        r.planarOffered = r.eigenRatio > kPlanarEigenRatio;
+        r.reason = tr("The samples are too close to a plane (eigenvalue ratio %1, at most %2) even for a hard-iron fit. "
+                      "Tilt the module more while turning it.")
+                       .arg(r.eigenRatio, 0, 'f', 1)
+                       .arg(m_options.maxEigenRatioHardIron, 0, 'f', 0);
+        return r;
+    }
+    RobustStats st;
+    const auto e = EllipsoidFit::hardIronOnly(s, m_options.previousSoftIron, m_options.referenceFieldUt, &st);
+    if (!e) {
+        r.verdict = MagVerdict::Fail;
+        r.reason = tr("The hard-iron fit found no solution: check that the samples come from the magnetometer in uT.");
+        return r;
+    }
+    r.hardIron = e->center;
+    r.softIron = e->softIron();
+    r.fieldUt = e->radius();
+    SphereCoverage cov;
+    for (const auto &v : s)
+        cov.add(e->correct(v));
+    r.coveragePct = cov.percent();
+    judge(r, EllipsoidFit::residuals(s, *e), false);
+    return r;
+}
+
+MagCalResult MagCalibrator::planarFit(const std::vector<Eigen::Vector3d> &s, MagCalResult r) const
+{
+    r.verdict = MagVerdict::Refused;
+    if (int(s.size()) < kMinSamplesPlanar) {
+        r.reason = tr("Only %1 usable samples; the 2-D fit needs at least %2. Turn the module a full circle.")
+                       .arg(s.size())
+                       .arg(kMinSamplesPlanar);
+        return r;
+    }
+    std::vector<Eigen::Vector2d> xy;
+    xy.reserve(s.size());
+    double meanZ = 0;
+    for (const auto &v : s) {
+        xy.emplace_back(v.x(), v.y());
+        meanZ += v.z();
+    }
+    meanZ /= double(s.size());
+    const auto e = EllipseFit::fit(xy);
+    if (!e) {
+        r.verdict = MagVerdict::Fail;
+        r.reason = tr("The horizontal samples do not describe an ellipse: turn the module one full, even circle.");
+        return r;
+    }
+    r.zOffsetKnown = std::isfinite(m_options.levelVerticalUt);
+    r.hardIron = Eigen::Vector3d(e->center.x(), e->center.y(), r.zOffsetKnown ? meanZ - m_options.levelVerticalUt : 0.0);
+    r.softIron = Eigen::Matrix3d::Identity();
+    r.softIron.topLeftCorner<2, 2>() = e->softIron();
+    r.fieldUt = e->radius();
+    std::array<bool, kHeadingSectors> sectors{};
+    std::vector<double> res;
+    res.reserve(xy.size());
+    for (const auto &p : xy) {
+        const Eigen::Vector2d c = e->correct(p);
+        res.push_back(c.norm() - r.fieldUt);
+        double a = std::atan2(c.y(), c.x()) + kPi;
+        int k = int(a / (2 * kPi) * kHeadingSectors);
+        sectors[size_t(std::clamp(k, 0, kHeadingSectors - 1))] = true;
+    }
+    r.coveragePct = 100.0 * double(std::count(sectors.begin(), sectors.end(), true)) / kHeadingSectors;
+    judge(r, res, true);
+    return r;
+}
+
+void MagCalibrator::judge(MagCalResult &r, const std::vector<double> &residualsUt, bool checkSoftIron) const
+{
+    const double sigma = EllipsoidFit::robustSigma(residualsUt);
+    const double limit = std::max(5.0 * sigma, 1e-9 * std::max(r.fieldUt, 1.0));
+    double sq = 0;
+    int inliers = 0;
+    for (double x : residualsUt)
+        if (std::fabs(x) <= limit) {
+            sq += x * x;
+            ++inliers;
+        }
+    r.outliers = int(residualsUt.size()) - inliers;
+    r.residualRmsUt = inliers > 0 ? std::sqrt(sq / inliers) : 0;
+    r.fitErrorPct = r.fieldUt > 0 ? 100.0 * r.residualRmsUt / r.fieldUt : 100.0;
+
+    QStringList fails, warns;
+    const bool planar = r.mode == MagCalMode::Planar2D;
+    if (r.fitErrorPct > kFailFitErrorPct)
+        fails << tr("fit error %1 % is above %2 %").arg(r.fitErrorPct, 0, 'f', 2).arg(kFailFitErrorPct, 0, 'f', 1);
+    if (checkSoftIron) {
+        Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(0.5 * (r.softIron + r.softIron.transpose()), Eigen::EigenvaluesOnly);
+        const double lo = es.eigenvalues()[0], hi = es.eigenvalues()[2];
+        if (lo < kSoftIronMin || hi > kSoftIronMax)
+            fails << tr("soft-iron scale %1..%2 is outside %3..%4 (a magnet or iron part very close to the module)")
+                         .arg(lo, 0, 'f', 2)
+                         .arg(hi, 0, 'f', 2)
+                         .arg(kSoftIronMin, 0, 'f', 2)
+                         .arg(kSoftIronMax, 0, 'f', 2);
+    }
+    if (!planar && (r.fieldUt < kGrossFieldMinUt || r.fieldUt > kGrossFieldMaxUt))
+        fails << tr("field strength %1 uT is not the earth's field (%2..%3 uT)")
+                     .arg(r.fieldUt, 0, 'f', 1)
+                     .arg(kGrossFieldMinUt, 0, 'f', 0)
+                     .arg(kGrossFieldMaxUt, 0, 'f', 0);
+    if (r.fitErrorPct > kWarnFitErrorPct && r.fitErrorPct <= kFailFitErrorPct)
+        warns << tr("fit error %1 % is above %2 %").arg(r.fitErrorPct, 0, 'f', 2).arg(kWarnFitErrorPct, 0, 'f', 1);
+    if (r.coveragePct < kWarnCoveragePct)
+        warns << tr("only %1 % of the directions are covered").arg(r.coveragePct, 0, 'f', 0);
+    if (!planar && r.fieldUt >= kGrossFieldMinUt && r.fieldUt <= kGrossFieldMaxUt
+        && (r.fieldUt < kFieldMinUt || r.fieldUt > kFieldMaxUt))
+        warns << tr("field strength %1 uT is outside the normal %2..%3 uT: move away from magnetic objects")
+                     .arg(r.fieldUt, 0, 'f', 1)
+                     .arg(kFieldMinUt, 0, 'f', 0)
+                     .arg(kFieldMaxUt, 0, 'f', 0);
+    if (!planar && r.hardIron.norm() > 1.5 * r.fieldUt)
+        warns << tr("hard iron %1 uT is large (over 1.5 times the field): the sensor may saturate")
+                     .arg(r.hardIron.norm(), 0, 'f', 1);
+    if (r.outliers * 20 > int(residualsUt.size()))
+        warns << tr("%1 of %2 samples were disturbed and set aside").arg(r.outliers).arg(residualsUt.size());
+    if (!planar && m_options.referenceFieldUt > 0 && r.mode == MagCalMode::Full3D
+        && std::fabs(r.fieldUt / m_options.referenceFieldUt - 1.0) > 0.15)
+        warns << tr("field strength %1 uT differs from the expected %2 uT by more than 15 %")
+                     .arg(r.fieldUt, 0, 'f', 1)
+                     .arg(m_options.referenceFieldUt, 0, 'f', 1);
+    if (planar && !r.zOffsetKnown)
+        warns << tr("2-D calibration: valid for level operation only; the vertical offset is unknown");
+    else if (planar)
+        warns << tr("2-D calibration: valid for level operation only");
+
+    if (!fails.isEmpty()) {
+        r.verdict = MagVerdict::Fail;
+        r.reason = tr("Calibration failed: %1.").arg((fails + warns).join(QStringLiteral("; ")));
+    } else if (!warns.isEmpty()) {
+        r.verdict = MagVerdict::Warn;
+        r.reason = tr("Usable with care: %1.").arg(warns.join(QStringLiteral("; ")));
+    } else {
+        r.verdict = MagVerdict::Pass;
+        r.reason = tr("Good calibration: fit error %1 %, %2 % of the directions covered.")
+                       .arg(r.fitErrorPct, 0, 'f', 2)
+                       .arg(r.coveragePct, 0, 'f', 0);
+    }
+}
+
+} // namespace imudesk::calib

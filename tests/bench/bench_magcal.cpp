@@ -1,0 +1,348 @@
+// bench_magcal: the magnetometer calibration and the gyro Z scale-factor run against
+// synthetic data with known truth (issue 6 benchmark; generator and goals from
+// calibration-notes.md §3 and §5).
+//
+// Truth: |B| = 50 uT, inclination 60 deg (ENU field (0, 25, -43.3) uT), hard iron
+// (25, -18, 12) uT, symmetric soft iron diag (1.10, 0.92, 1.02) with off-diagonals
+// 0.03..0.05, white noise 0.3 uT per axis. Each scenario runs --trials Monte Carlo trials
+// (fixed seeds) and reports the 95th percentile:
+//   hard-iron error |b^ - b|, soft-iron error ||M / cbrt(det M) - I||_F with M = S^ A,
+//   heading error: max over a noise-free grid (yaw 0..355 step 5, roll and pitch in
+//   {0, +-20} deg), tilt-compensated with the true attitude.
+// The gyro scale run drives the simulated HiPNUC module (0.5 % gyro scale error, a
+// turntable doing two turns clockwise and two counter-clockwise) and feeds its HI91
+// frames, with the device's own timestamps, to calib::GyroScaleRun.
+//
+//   bench_magcal [--trials N] [--seed N]
+//
+// Prints every figure with its target and PASS/FAIL; exit status 1 when one misses, 2 on
+// bad arguments.
+#include "calib/gyro_scale_run.h"
+#include "calib/mag_calibrator.h"
+#include "protocol/hipnuc/payloads.h"
+#include "protocol/stream/stream_demux.h"
+#include "sim/hipnuc_simulator.h"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <string>
+#include <vector>
+
+namespace {
+
+using namespace imudesk;
+using Eigen::Matrix3d;
+using Eigen::Quaterniond;
+using Eigen::Vector3d;
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kDeg = kPi / 180.0;
+
+// splitmix64 with Box-Muller: the same numbers on every platform.
+class Rng {
+public:
+    explicit Rng(uint64_t seed) : m_s(seed) {}
+    uint64_t next()
+    {
+        uint64_t z = (m_s += 0x9E3779B97F4A7C15ull);
+        z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+        z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+        return z ^ (z >> 31);
+    }
+    double unit() { return (double(next() >> 11) + 0.5) * 0x1.0p-53; } // (0, 1)
+    double normal()
+    {
+        if (m_haveSpare) {
+            m_haveSpare = false;
+            return m_spare;
+        }
+        const double r = std::sqrt(-2.0 * std::log(unit()));
+        const double a = 2.0 * kPi * unit();
+        m_spare = r * std::sin(a);
+        m_haveSpare = true;
+        return r * std::cos(a);
+    }
+    Quaterniond rotation()
+    {
+        Eigen::Vector4d v(normal(), normal(), normal(), normal());
+        v.normalize();
+        return Quaterniond(v[0], v[1], v[2], v[3]);
+    }
+    Vector3d direction()
+    {
+        return Vector3d(normal(), normal(), normal()).normalized();
+    }
+
+private:
+    uint64_t m_s;
+    double m_spare = 0;
+    bool m_haveSpare = false;
+};
+
+struct Truth {
+    Vector3d field{0.0, 25.0, -25.0 * std::sqrt(3.0)}; // ENU, |B| = 50, inclination 60
+    Vector3d hardIron{25.0, -18.0, 12.0};
+    Matrix3d a;
+    Truth()
+    {
+        a << 1.10, 0.04, 0.03, 0.04, 0.92, 0.05, 0.03, 0.05, 1.02;
+    }
+    Vector3d measure(const Quaterniond &q) const { return a * (q.toRotationMatrix().transpose() * field) + hardIron; }
+};
+
+enum class Coverage { Full, Hemisphere, Cap25, Planar };
+
+std::vector<Vector3d> generate(const Truth &t, Rng &rng, int n, Coverage cov, double noise, double spikeFraction)
+{
+    std::vector<Vector3d> out;
+    out.reserve(size_t(n));
+    // The axis of the hemisphere / cap, in the sensor frame, changes per trial.
+    const Vector3d axis = rng.direction();
+    const Vector3d fieldDir = t.field.normalized();
+    while (int(out.size()) < n) {
+        Quaterniond q;
+        if (cov == Coverage::Planar) {
+            q = Quaterniond(Eigen::AngleAxisd(rng.unit() * 2 * kPi, Vector3d::UnitZ()));
+        } else {
+            q = rng.rotation();
+            const Vector3d body = q.toRotationMatrix().transpose() * fieldDir;
+            if (cov == Coverage::Hemisphere && body.dot(axis) < 0)
+                continue;
+            if (cov == Coverage::Cap25 && body.dot(axis) < 0.5) // cap area (1 - cos 60)/2 = 25 %
+                continue;
+        }
+        Vector3d m = t.measure(q) + noise * Vector3d(rng.normal(), rng.normal(), rng.normal());
+        if (spikeFraction > 0 && rng.unit() < spikeFraction)
+            m += 20.0 * rng.direction();
+        out.push_back(m);
+    }
+    return out;
+}
+
+double wrapDeg(double a)
+{
+    while (a > 180)
+        a -= 360;
+    while (a < -180)
+        a += 360;
+    return a;
+}
+
+double headingOf(const Vector3d &nav)
+{
+    return std::atan2(nav.x(), nav.y()) / kDeg; // from north towards east
+}
+
+// Max heading error over the noise-free grid, tilt-compensated with the true attitude.
+double headingErrorMax(const Truth &t, const calib::MagCalResult &r, bool levelOnly)
+{
+    const double truth = headingOf(t.field);
+    double worst = 0;
+    const std::vector<double> tilts = levelOnly ? std::vector<double>{0.0} : std::vector<double>{-20.0, 0.0, 20.0};
+    for (int yaw = 0; yaw < 360; yaw += 5)
+        for (double roll : tilts)
+            for (double pitch : tilts) {
+                const Quaterniond q = Eigen::AngleAxisd(yaw * kDeg, Vector3d::UnitZ())
+                    * Eigen::AngleAxisd(pitch * kDeg, Vector3d::UnitX()) * Eigen::AngleAxisd(roll * kDeg, Vector3d::UnitY());
+                const Vector3d m = t.measure(q);
+                Vector3d c = r.correct(m);
+                if (levelOnly)
+                    c.z() = 0; // the 2-D calibration: heading from the horizontal components only
+                const Vector3d nav = q.toRotationMatrix() * c;
+                worst = std::max(worst, std::fabs(wrapDeg(headingOf(nav) - truth)));
+            }
+    return worst;
+}
+
+double softIronErrorPct(const Truth &t, const calib::MagCalResult &r)
+{
+    const Matrix3d m = r.softIron * t.a;
+    const Matrix3d n = m / std::cbrt(m.determinant());
+    return 100.0 * (n - Matrix3d::Identity()).norm();
+}
+
+double p95(std::vector<double> v)
+{
+    if (v.empty())
+        return 0;
+    std::sort(v.begin(), v.end());
+    const size_t k = size_t(std::ceil(0.95 * double(v.size()))) - 1;
+    return v[std::min(k, v.size() - 1)];
+}
+
+int g_failures = 0;
+
+void report(const char *name, double value, const char *unit, const char *op, double target)
+{
+    const bool ok = std::strcmp(op, "<=") == 0 ? value <= target : std::strcmp(op, "<") == 0 ? value < target : value >= target;
+    if (!ok)
+        ++g_failures;
+    std::printf("%-52s %10.4f %-4s target %s %-8.4g %s\n", name, value, unit, op, target, ok ? "PASS" : "FAIL");
+}
+
+struct Figures {
+    std::vector<double> hi, si, heading;
+    int refused = 0, trials = 0;
+};
+
+Figures runScenario(const Truth &t, uint64_t seed, int trials, int n, Coverage cov, double spikes,
+                    calib::MagCalMode mode = calib::MagCalMode::Full3D)
+{
+    Figures f;
+    calib::MagCalibrator::Options o;
+    o.levelVerticalUt = t.field.z(); // the world model's vertical component (2-D mode)
+    const calib::MagCalibrator cal(o);
+    for (int i = 0; i < trials; ++i) {
+        Rng rng(seed * 1000003ull + uint64_t(i) * 7919ull + uint64_t(cov) * 31ull + uint64_t(spikes * 1000));
+        const auto samples = generate(t, rng, n, cov, 0.3, spikes);
+        const calib::MagCalResult r = cal.calibrate(samples, mode);
+        ++f.trials;
+        if (r.verdict == calib::MagVerdict::Refused) {
+            ++f.refused;
+            continue;
+        }
+        const bool planar = mode == calib::MagCalMode::Planar2D;
+        f.hi.push_back(planar ? (r.hardIron - t.hardIron).head<2>().norm() : (r.hardIron - t.hardIron).norm());
+        if (!planar)
+            f.si.push_back(softIronErrorPct(t, r));
+        f.heading.push_back(headingErrorMax(t, r, planar));
+    }
+    return f;
+}
+
+void magnetometer(uint64_t seed, int trials)
+{
+    const Truth t;
+    std::printf("Magnetometer fit, %d trials per scenario, noise 0.3 uT, p95:\n", trials);
+    const Figures full = runScenario(t, seed, trials, 300, Coverage::Full, 0);
+    const double hi = p95(full.hi), si = p95(full.si), hd = p95(full.heading);
+    report("full sphere N=300: hard-iron error", hi, "uT", "<=", 0.10);
+    report("full sphere N=300: soft-iron error", si, "%", "<=", 0.4);
+    report("full sphere N=300: heading error (max)", hd, "deg", "<=", 0.4);
+    report("full sphere N=300: refused trials", full.refused, "", "<=", 0);
+
+    const Figures hemi = runScenario(t, seed, trials, 300, Coverage::Hemisphere, 0);
+    report("hemisphere N=300: hard-iron error", p95(hemi.hi), "uT", "<=", 0.7);
+    report("hemisphere N=300: refused trials", hemi.refused, "", "<=", 0);
+
+    for (double spikes : {0.02, 0.05}) {
+        const Figures sp = runScenario(t, seed, trials, 300, Coverage::Full, spikes);
+        const std::string tag = "spikes " + std::to_string(int(spikes * 100)) + " % (+20 uT): ";
+        report((tag + "hard-iron error").c_str(), p95(sp.hi), "uT", "<=", 0.10 * 1.15);
+        report((tag + "soft-iron error").c_str(), p95(sp.si), "%", "<=", 0.4 * 1.15);
+        report((tag + "heading error (max)").c_str(), p95(sp.heading), "deg", "<=", 0.4 * 1.15);
+    }
+
+    const Figures cap = runScenario(t, seed, trials, 300, Coverage::Cap25, 0);
+    report("25 % cap: full fit refused (share of trials)", 100.0 * cap.refused / cap.trials, "%", ">=", 100);
+    const Figures planar = runScenario(t, seed, trials, 300, Coverage::Planar, 0);
+    report("planar: full fit refused (share of trials)", 100.0 * planar.refused / planar.trials, "%", ">=", 100);
+    const Figures planar2d = runScenario(t, seed, trials, 300, Coverage::Planar, 0, calib::MagCalMode::Planar2D);
+    report("planar N=300, 2-D fit: level heading error (max)", p95(planar2d.heading), "deg", "<=", 0.3);
+    report("planar N=300, 2-D fit: refused trials", planar2d.refused, "", "<=", 0);
+
+    // Speed and determinism: 1000 points, full sphere.
+    Rng rng(seed ^ 0xABCDEFull);
+    const auto samples = generate(t, rng, 1000, Coverage::Full, 0.3, 0);
+    const calib::MagCalibrator cal;
+    std::vector<double> ms;
+    calib::MagCalResult first;
+    bool identical = true;
+    for (int i = 0; i < 21; ++i) {
+        const auto t0 = std::chrono::steady_clock::now();
+        const calib::MagCalResult r = cal.calibrate(samples);
+        ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+        if (i == 0) {
+            first = r;
+        } else {
+            identical = identical && std::memcmp(r.hardIron.data(), first.hardIron.data(), sizeof(double) * 3) == 0
+                && std::memcmp(r.softIron.data(), first.softIron.data(), sizeof(double) * 9) == 0
+                && std::memcmp(&r.fieldUt, &first.fieldUt, sizeof(double)) == 0
+                && std::memcmp(&r.fitErrorPct, &first.fitErrorPct, sizeof(double)) == 0;
+        }
+    }
+    std::sort(ms.begin(), ms.end());
+    report("fit of 1000 points: time (max of 21 runs)", ms.back(), "ms", "<", 50);
+    report("fit of 1000 points: bit-identical on 20 repeats", identical ? 1 : 0, "", ">=", 1);
+}
+
+// The simulated module on a turntable (two turns each way) with a known gyro scale error;
+// returns the run's estimate in %, or NaN when the run did not finish.
+double gyroScaleEstimate(uint64_t seed, double scaleError)
+{
+    sim::SimOptions o;
+    o.motion = sim::Motion::Turntable;
+    o.seed = seed;
+    o.gyroScaleError = scaleError;
+    sim::HipnucSimulator device(o);
+    protocol::StreamDemux demux;
+    calib::GyroScaleRun run;
+    run.start();
+    std::vector<protocol::StreamEvent> events;
+    const double endS = 2 * sim::MotionModel::kTurntableStillS + 2 * sim::MotionModel::turntableLegS() + 3.0;
+    for (int64_t t = 0; t <= int64_t(endS * 1e6) && run.state() != calib::GyroScaleRun::State::Finished; t += 20000) {
+        device.advanceTo(t);
+        const std::vector<uint8_t> bytes = device.takeOutput();
+        events.clear();
+        demux.feed(bytes.data(), bytes.size(), events);
+        for (const auto &e : events) {
+            protocol::hipnuc::Hi91 f;
+            if (e.kind != protocol::StreamEvent::Kind::Frame || !protocol::hipnuc::decodeHi91(e.payload.data(), e.payload.size(), f))
+                continue;
+            run.addSample(f.systemTime, Vector3d(f.gyr[0], f.gyr[1], f.gyr[2]), Vector3d(f.acc[0], f.acc[1], f.acc[2]));
+        }
+    }
+    const auto r = run.result();
+    return r.complete ? r.scaleErrorPct : std::nan("");
+}
+
+void gyroScale(uint64_t seed)
+{
+    constexpr double kTruthPct = 0.5;
+    constexpr int kRuns = 5;
+    std::printf("Gyro Z scale run in the simulator (turntable 2 x 720 deg, true scale error %.2f %%), %d seeds:\n",
+                kTruthPct, kRuns);
+    double worst = 0;
+    for (int i = 0; i < kRuns; ++i) {
+        const double est = gyroScaleEstimate(seed + uint64_t(i), kTruthPct / 100.0);
+        std::printf("  seed %llu: estimated %.4f %%\n", static_cast<unsigned long long>(seed + uint64_t(i)), est);
+        worst = std::isfinite(est) ? std::max(worst, std::fabs(est - kTruthPct)) : 1e9;
+    }
+    report("gyro scale run: |estimate - truth| (worst seed)", worst, "%", "<=", 0.06);
+}
+
+} // namespace
+
+int main(int argc, char **argv)
+{
+    int trials = 200;
+    uint64_t seed = 1;
+    for (int i = 1; i < argc; ++i) {
+        const std::string a = argv[i];
+        if (a == "--trials" && i + 1 < argc) {
+            trials = std::atoi(argv[++i]);
+        } else if (a == "--seed" && i + 1 < argc) {
+            seed = std::strtoull(argv[++i], nullptr, 10);
+        } else {
+            std::fprintf(stderr, "usage: bench_magcal [--trials N (>= 100)] [--seed N]\n");
+            return 2;
+        }
+    }
+    if (trials < 100) {
+        std::fprintf(stderr, "bench_magcal: --trials must be at least 100\n");
+        return 2;
+    }
+    const auto t0 = std::chrono::steady_clock::now();
+    magnetometer(seed, trials);
+    gyroScale(seed);
+    const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    std::printf("runtime %.1f s; %s\n", secs, g_failures == 0 ? "all figures met" : "some figures missed");
+    return g_failures == 0 ? 0 : 1;
+}

@@ -1,0 +1,52 @@
+// libFuzzer target: the sample CSV reader behind `imudesk-cli magcal` and the calibration
+// history, followed by the magnetometer fit on whatever mag columns it finds.
+//
+// Whatever the input, parsing must not crash. When it parses, every row has one value per
+// column and all values are finite; writing the table and parsing it again gives the same
+// table. When the mag columns are there, the fit runs (bounded to the first 2000 rows to
+// keep iterations fast) and its verdict always comes with a reason.
+#include "calib/mag_calibrator.h"
+#include "calib/sample_csv.h"
+
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <cstdio>
+
+#define FUZZ_CHECK(cond)                                                                              \
+    do {                                                                                              \
+        if (!(cond)) {                                                                                \
+            std::fprintf(stderr, "fuzz_magcal_csv: invariant failed: %s (line %d)\n", #cond, __LINE__); \
+            __builtin_trap();                                                                         \
+        }                                                                                             \
+    } while (0)
+
+using namespace imudesk::calib;
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
+{
+    SampleTable table;
+    if (!SampleCsv::parse(QByteArrayView(reinterpret_cast<const char *>(data), qsizetype(size)), table))
+        return 0;
+    for (const auto &row : table.rows) {
+        FUZZ_CHECK(row.size() == size_t(table.columns.size()));
+        for (double v : row)
+            FUZZ_CHECK(std::isfinite(v));
+    }
+    SampleTable again;
+    FUZZ_CHECK(SampleCsv::parse(SampleCsv::write(table), again));
+    FUZZ_CHECK(again.columns.size() == table.columns.size());
+    FUZZ_CHECK(again.rows == table.rows);
+
+    std::vector<Eigen::Vector3d> mag;
+    if (!SampleCsv::magnetometer(table, mag))
+        return 0;
+    if (mag.size() > 2000)
+        mag.resize(2000);
+    for (MagCalMode mode : {MagCalMode::Full3D, MagCalMode::HardIronOnly, MagCalMode::Planar2D}) {
+        const MagCalResult r = MagCalibrator().calibrate(mag, mode);
+        FUZZ_CHECK(!r.reason.isEmpty());
+        FUZZ_CHECK(r.samples == int(mag.size()));
+    }
+    return 0;
+}

@@ -1,0 +1,181 @@
+#include "gyro_scale_wizard.h"
+
+#include "device/device_session.h"
+
+#include <QLabel>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QSpinBox>
+#include <QVBoxLayout>
+#include <QWizardPage>
+
+#include <cmath>
+
+namespace imudesk::ui {
+
+GyroScaleWizard::GyroScaleWizard(device::DeviceSession &session, QWidget *parent)
+    : QWizard(parent),
+      m_session(session),
+      m_device(session)
+{
+    setWindowTitle(tr("Gyro scale factor calibration"));
+
+    auto *prepare = new QWizardPage;
+    prepare->setTitle(tr("Preparation"));
+    auto *pl = new QVBoxLayout(prepare);
+    auto *checklist = new QLabel(
+        tr("<ul><li>Place the module, with the robot or vehicle it is fixed to, on a level, flat floor.</li>"
+           "<li>Keep the temperature steady and avoid vibration (motors off).</li>"
+           "<li>Mark the start position: you must stop on the same mark, within 5 deg.</li>"
+           "<li>Turn at an even 20-100 deg/s (5-20 s per turn), in either direction, without pausing.</li>"
+           "<li>More turns give a smaller error: 720 deg (2 turns) to 1800 deg (5 turns).</li></ul>"
+           "Keep the module still for a few seconds after pressing Start: ImuDesk measures the gyro bias first."));
+    checklist->setWordWrap(true);
+    pl->addWidget(checklist);
+    setPage(PreparePage, prepare);
+
+    auto *runPage = new QWizardPage;
+    runPage->setTitle(tr("Turn the module"));
+    auto *rl = new QVBoxLayout(runPage);
+    m_angle = new QSpinBox;
+    m_angle->setRange(calib::GyroCalSession::kMinAngle, calib::GyroCalSession::kMaxAngle);
+    m_angle->setSingleStep(360);
+    m_angle->setValue(720);
+    m_angle->setSuffix(tr(" deg"));
+    m_start = new QPushButton(tr("Start"));
+    m_stop = new QPushButton(tr("Stop"));
+    m_stop->setEnabled(false);
+    m_guidance = new QLabel(m_run.guidance());
+    m_guidance->setWordWrap(true);
+    QFont big = m_guidance->font();
+    big.setPointSizeF(big.pointSizeF() * 1.4);
+    m_guidance->setFont(big);
+    m_progress = new QProgressBar;
+    m_progress->setFormat(tr("%v of %m deg"));
+    m_rate = new QProgressBar;
+    m_rate->setRange(0, 120);
+    m_rate->setFormat(tr("rate %v deg/s (band 20-100)"));
+    m_readout = new QLabel;
+    m_deviceStatus = new QLabel;
+    m_deviceStatus->setWordWrap(true);
+    auto *row = new QHBoxLayout;
+    row->addWidget(new QLabel(tr("Angle:")));
+    row->addWidget(m_angle);
+    row->addWidget(m_start);
+    row->addWidget(m_stop);
+    row->addStretch();
+    rl->addLayout(row);
+    rl->addWidget(m_guidance);
+    rl->addWidget(m_progress);
+    rl->addWidget(m_rate);
+    rl->addWidget(m_readout);
+    rl->addWidget(m_deviceStatus);
+    rl->addStretch();
+    setPage(RunPage, runPage);
+
+    auto *resultPage = new QWizardPage;
+    resultPage->setTitle(tr("Result"));
+    auto *sl = new QVBoxLayout(resultPage);
+    m_result = new QLabel;
+    m_result->setWordWrap(true);
+    sl->addWidget(m_result);
+    setPage(ResultPage, resultPage);
+
+    connect(m_start, &QPushButton::clicked, this, &GyroScaleWizard::startRun);
+    connect(m_stop, &QPushButton::clicked, this, &GyroScaleWizard::stopRun);
+    connect(&m_device, &calib::GyroCalSession::stateChanged, this, &GyroScaleWizard::onDeviceState);
+    connect(&m_clock, &QTimer::timeout, this, &GyroScaleWizard::refresh);
+    m_clock.setInterval(50);
+    // Next stays off on the run page until the device has answered STOP.
+    connect(this, &QWizard::currentIdChanged, this, [this](int id) {
+        if (id == RunPage && !m_done)
+            button(QWizard::NextButton)->setEnabled(false);
+    });
+}
+
+bool GyroScaleWizard::validateCurrentPage()
+{
+    return currentId() != RunPage || m_done;
+}
+
+void GyroScaleWizard::startRun()
+{
+    calib::GyroScaleRun::Options o;
+    o.targetDeg = m_angle->value();
+    o.legs = 1; // USRCAL: one direction
+    o.biasWindowS = 1.0;
+    m_run = calib::GyroScaleRun(o);
+    m_run.start();
+    m_seq = m_session.store().totalAppended(); // from now on
+    m_done = false;
+    button(QWizard::NextButton)->setEnabled(false);
+    if (!m_device.start(m_angle->value())) {
+        m_deviceStatus->setText(m_device.message());
+        return;
+    }
+    m_progress->setRange(0, m_angle->value());
+    m_start->setEnabled(false);
+    m_angle->setEnabled(false);
+    m_stop->setEnabled(true);
+    m_clock.start();
+}
+
+void GyroScaleWizard::stopRun()
+{
+    m_device.stop();
+    m_stop->setEnabled(false);
+}
+
+void GyroScaleWizard::refresh()
+{
+    uint64_t next = m_seq;
+    const auto samples = m_session.store().since(m_seq, SIZE_MAX, &next);
+    m_seq = next;
+    for (const auto &s : samples)
+        if (s.fields & model::FieldGyr)
+            m_run.addSample(s.deviceTimeMs, {s.gyr.x, s.gyr.y, s.gyr.z},
+                            (s.fields & model::FieldAcc) ? Eigen::Vector3d(s.acc.x, s.acc.y, s.acc.z) : Eigen::Vector3d::Zero());
+    m_guidance->setText(m_run.guidance());
+    const double angle = m_run.state() == calib::GyroScaleRun::State::Finished && !m_run.result().legs.empty()
+        ? std::abs(m_run.result().legs.back().angleDeg)
+        : std::abs(m_run.currentAngleDeg());
+    m_progress->setValue(int(std::min(angle, double(m_progress->maximum()))));
+    m_rate->setValue(int(std::min(std::abs(m_run.currentRateDps()), 120.0)));
+    m_readout->setText(tr("%1 deg turned (%2 turns), rate %3 deg/s %4")
+                           .arg(angle, 0, 'f', 1)
+                           .arg(angle / 360.0, 0, 'f', 2)
+                           .arg(std::abs(m_run.currentRateDps()), 0, 'f', 1)
+                           .arg(m_run.state() == calib::GyroScaleRun::State::Turning
+                                    ? (m_run.rateInBand() ? tr("(in band)") : tr("(outside 20-100 deg/s)"))
+                                    : QString()));
+}
+
+void GyroScaleWizard::onDeviceState(calib::GyroCalSession::State state, const QString &message)
+{
+    m_deviceStatus->setText(message);
+    if (state == calib::GyroCalSession::State::Succeeded || state == calib::GyroCalSession::State::Failed) {
+        refresh();
+        m_clock.stop();
+        m_start->setEnabled(true);
+        m_angle->setEnabled(true);
+        m_stop->setEnabled(false);
+        m_result->setText(resultText());
+        m_done = true;
+        button(QWizard::NextButton)->setEnabled(true);
+    }
+}
+
+QString GyroScaleWizard::resultText() const
+{
+    const bool ok = m_device.state() == calib::GyroCalSession::State::Succeeded;
+    const calib::GyroScaleRun::Result r = m_run.result();
+    QString text = ok ? tr("The device accepted the calibration (OK).") : tr("The device rejected the run (ERR).");
+    text += QLatin1Char('\n') + m_device.message() + QLatin1Char('\n');
+    if (!r.legs.empty())
+        text += tr("ImuDesk's estimate from the same samples: %1").arg(r.summary);
+    else
+        text += tr("ImuDesk saw no complete turn, so it has no estimate of its own.");
+    return text;
+}
+
+} // namespace imudesk::ui

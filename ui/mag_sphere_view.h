@@ -1,0 +1,66 @@
+#pragma once
+// Live 3D view of magnetometer samples on a sphere for the calibration wizard: the 80
+// geodesic cells (calib::SphereCoverage) drawn as a translucent globe, cells coloured as
+// the field directions cover them, the samples as dots, and text with |B|, the coverage
+// and the hint of which rotation is still missing.
+//
+// Directions are taken around a centre: the hard iron of setCalibration() when given
+// (then the dots are the corrected samples, "after"), else the mean of the samples so far
+// ("before"). Painted with QPainter (offscreen-safe), painter's algorithm on the cell
+// centres' depth. Left-drag turns the view, double-click resets it. At most kMaxSamples
+// samples are kept (every second one is dropped when full, so the spread stays).
+#include "calib/sphere_coverage.h"
+
+#include <Eigen/Core>
+
+#include <QWidget>
+
+#include <vector>
+
+namespace imudesk::ui {
+
+class MagSphereView : public QWidget {
+    Q_OBJECT
+public:
+    static constexpr size_t kMaxSamples = 4000;
+
+    explicit MagSphereView(QWidget *parent = nullptr);
+
+    void clear();
+    void addSample(const Eigen::Vector3d &magUt);
+    void setSamples(const std::vector<Eigen::Vector3d> &magUt);
+    // Shows the samples corrected by c = S (m - b); clearCalibration() goes back to raw.
+    void setCalibration(const Eigen::Vector3d &hardIron, const Eigen::Matrix3d &softIron);
+    void clearCalibration();
+
+    const calib::SphereCoverage &coverage() const { return m_coverage; }
+    double coveragePercent() const { return m_coverage.percent(); }
+    QString hint() const { return m_coverage.missingRotationHint(); }
+    double lastFieldUt() const { return m_lastField; }
+    size_t sampleCount() const { return m_samples.size(); }
+
+    QSize sizeHint() const override { return {360, 360}; }
+    QSize minimumSizeHint() const override { return {160, 160}; }
+
+protected:
+    void paintEvent(QPaintEvent *event) override;
+    void mousePressEvent(QMouseEvent *event) override;
+    void mouseMoveEvent(QMouseEvent *event) override;
+    void mouseDoubleClickEvent(QMouseEvent *event) override;
+
+private:
+    Eigen::Vector3d corrected(const Eigen::Vector3d &m) const;
+    void rebuild();
+
+    std::vector<Eigen::Vector3d> m_samples;
+    Eigen::Vector3d m_sum = Eigen::Vector3d::Zero();
+    bool m_calibrated = false;
+    Eigen::Vector3d m_hardIron = Eigen::Vector3d::Zero();
+    Eigen::Matrix3d m_softIron = Eigen::Matrix3d::Identity();
+    calib::SphereCoverage m_coverage;
+    double m_lastField = 0;
+    double m_azimuthDeg = 30, m_elevationDeg = 20;
+    QPoint m_dragFrom;
+};
+
+} // namespace imudesk::ui
