@@ -129,6 +129,7 @@ private:
     QMenu *m_viewMenu = nullptr;
     QMenu *m_helpMenu = nullptr;
     QMenu *m_toolsMenu = nullptr;
+    QMenu *m_calibrateMenu = nullptr;
     ToolActions *m_tools = nullptr;
     QAction *m_newTabAction = nullptr;
     QAction *m_closeTabAction = nullptr;

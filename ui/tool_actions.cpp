@@ -1,6 +1,9 @@
 #include "tool_actions.h"
 
 #include "analysis_window.h"
+#include "attitude_reset_wizard.h"
+#include "gyro_scale_wizard.h"
+#include "mag_calibration_wizard.h"
 #include "bandwidth_calculator.h"
 #include "bus_connect_dialog.h"
 #include "config_panel.h"
@@ -57,6 +60,12 @@ ToolActions::ToolActions(MainWindow *window) : QObject(window), m_window(window)
     m_record = make("recordAction");
     m_record->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_R));
     connect(m_record, &QAction::triggered, this, &ToolActions::showRecording);
+    m_magCal = make("magCalAction");
+    connect(m_magCal, &QAction::triggered, this, &ToolActions::openMagCal);
+    m_gyroCal = make("gyroCalAction");
+    connect(m_gyroCal, &QAction::triggered, this, &ToolActions::openGyroCal);
+    m_attitudeReset = make("attitudeResetAction");
+    connect(m_attitudeReset, &QAction::triggered, this, &ToolActions::openAttitudeReset);
     retranslate();
 }
 
@@ -67,7 +76,7 @@ QAction *ToolActions::make(const char *objectName)
     return a;
 }
 
-void ToolActions::addToMenus(QMenu *fileMenu, QMenu *deviceMenu, QMenu *toolsMenu)
+void ToolActions::addToMenus(QMenu *fileMenu, QMenu *deviceMenu, QMenu *calibrateMenu, QMenu *toolsMenu)
 {
     QAction *firstFileEntry = fileMenu->actions().value(2); // after "new tab", "close tab"
     fileMenu->insertActions(firstFileEntry, {m_openCapture, m_importCsv, m_export});
@@ -76,6 +85,8 @@ void ToolActions::addToMenus(QMenu *fileMenu, QMenu *deviceMenu, QMenu *toolsMen
     deviceMenu->addActions({m_modbus, m_can, m_scanModbus});
     deviceMenu->addSeparator();
     deviceMenu->addActions({m_configuration, m_profiles, m_record, m_firmware});
+    m_calibrateMenu = calibrateMenu;
+    calibrateMenu->addActions({m_magCal, m_gyroCal, m_attitudeReset});
     m_toolsMenu = toolsMenu;
     toolsMenu->addActions({m_analyze, m_calculator});
 }
@@ -106,8 +117,16 @@ void ToolActions::retranslate()
     m_firmware->setStatusTip(tr("Write a new firmware image to the module, verified by reading it back"));
     m_record->setText(tr("&Record"));
     m_record->setStatusTip(tr("Show the recording controls of this device"));
+    m_magCal->setText(tr("&Magnetometer…"));
+    m_magCal->setStatusTip(tr("Calibrate the magnetometer: turn the module while the sphere fills, then judge the fit"));
+    m_gyroCal->setText(tr("&Gyro scale factor…"));
+    m_gyroCal->setStatusTip(tr("Turn the module a known angle about Z to correct the gyro's scale (CONFIG USRCAL)"));
+    m_attitudeReset->setText(tr("&Attitude reset / level…"));
+    m_attitudeReset->setStatusTip(tr("Zero the heading or level the module (ATT RST), after checking that it is still"));
     if (m_toolsMenu)
         m_toolsMenu->setTitle(tr("&Tools"));
+    if (m_calibrateMenu)
+        m_calibrateMenu->setTitle(tr("&Calibrate"));
 }
 
 void ToolActions::update(const DeviceWorkspace *ws)
@@ -123,6 +142,10 @@ void ToolActions::update(const DeviceWorkspace *ws)
     m_configuration->setEnabled(serial);
     m_profiles->setEnabled(serial && connected);
     m_record->setEnabled(serial);
+    const bool hasMag = ws && ws->identity() && ws->identity()->hasMagnetometer() && ws->identity()->firmware;
+    m_magCal->setEnabled(serial && connected && hasMag);
+    m_gyroCal->setEnabled(serial && connected);
+    m_attitudeReset->setEnabled(serial && connected);
     // The update opens the port itself: a connected HiPNUC serial device.
     m_firmware->setEnabled(serial && connected && !ws->simulator());
 }
@@ -266,6 +289,36 @@ void ToolActions::openCalculator()
     if (DeviceWorkspace *ws = m_window->currentWorkspace(); ws && !ws->hasAttachedLink())
         calculator->setConfiguration(ws->configPanel()->controller().configuration());
     calculator->show();
+}
+
+void ToolActions::openMagCal()
+{
+    DeviceWorkspace *ws = m_window->currentWorkspace();
+    if (!ws || ws->hasAttachedLink() || !ws->identity() || !ws->identity()->firmware)
+        return;
+    auto *wizard = new MagCalibrationWizard(ws->session(), *ws->identity()->firmware, m_window);
+    wizard->setAttribute(Qt::WA_DeleteOnClose);
+    wizard->show();
+}
+
+void ToolActions::openGyroCal()
+{
+    DeviceWorkspace *ws = m_window->currentWorkspace();
+    if (!ws || ws->hasAttachedLink())
+        return;
+    auto *wizard = new GyroScaleWizard(ws->session(), m_window);
+    wizard->setAttribute(Qt::WA_DeleteOnClose);
+    wizard->show();
+}
+
+void ToolActions::openAttitudeReset()
+{
+    DeviceWorkspace *ws = m_window->currentWorkspace();
+    if (!ws || ws->hasAttachedLink())
+        return;
+    auto *wizard = new AttitudeResetWizard(ws->session(), m_window);
+    wizard->setAttribute(Qt::WA_DeleteOnClose);
+    wizard->show();
 }
 
 void ToolActions::updateFirmware()

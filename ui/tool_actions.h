@@ -22,8 +22,8 @@ class ToolActions : public QObject {
 public:
     explicit ToolActions(MainWindow *window);
 
-    // Adds the actions to the File and Device menus and builds the Tools menu.
-    void addToMenus(QMenu *fileMenu, QMenu *deviceMenu, QMenu *toolsMenu);
+    // Adds the actions to the File and Device menus and builds the Calibrate and Tools menus.
+    void addToMenus(QMenu *fileMenu, QMenu *deviceMenu, QMenu *calibrateMenu, QMenu *toolsMenu);
     void retranslate();
     // Enables what the current tab's link and state allow.
     void update(const DeviceWorkspace *ws);
@@ -41,6 +41,9 @@ public:
     QAction *calculatorAction() const { return m_calculator; }
     QAction *firmwareAction() const { return m_firmware; }
     QAction *recordAction() const { return m_record; }
+    QAction *magCalAction() const { return m_magCal; }
+    QAction *gyroCalAction() const { return m_gyroCal; }
+    QAction *attitudeResetAction() const { return m_attitudeReset; }
 
     // The steps behind the actions, callable without a file dialog (tests, command line).
     bool openCapture(const QString &path);
@@ -60,6 +63,9 @@ private:
     void openCalculator();
     void updateFirmware();
     void showRecording();
+    void openMagCal();
+    void openGyroCal();
+    void openAttitudeReset();
 
     MainWindow *m_window;
     QAction *m_openCapture = nullptr;
@@ -74,7 +80,11 @@ private:
     QAction *m_calculator = nullptr;
     QAction *m_firmware = nullptr;
     QAction *m_record = nullptr;
+    QAction *m_magCal = nullptr;
+    QAction *m_gyroCal = nullptr;
+    QAction *m_attitudeReset = nullptr;
     QMenu *m_toolsMenu = nullptr;
+    QMenu *m_calibrateMenu = nullptr;
 };
 
 } // namespace imudesk::ui
