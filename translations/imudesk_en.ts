@@ -4,58 +4,70 @@
 <context>
     <name>CaptureExporter</name>
     <message numerus="yes">
-        <location filename="../core/record/capture_exporter.cpp" line="+351" />
+        <location filename="../core/record/capture_exporter.cpp" line="+351"/>
         <source>%n damaged chunk(s) were skipped</source>
         <translation>
-            <numerusform>%n damaged chunk was skipped</numerusform><numerusform>%n damaged chunks were skipped</numerusform></translation>
+            <numerusform>%n damaged chunk was skipped</numerusform>
+            <numerusform>%n damaged chunks were skipped</numerusform>
+        </translation>
     </message>
 </context>
 <context>
     <name>FileAnalysis</name>
     <message numerus="yes">
-        <location filename="../core/record/file_analysis.cpp" line="+45" />
+        <location filename="../core/record/file_analysis.cpp" line="+45"/>
         <source>%n damaged chunk(s) were skipped</source>
         <translation>
-            <numerusform>%n damaged chunk was skipped</numerusform><numerusform>%n damaged chunks were skipped</numerusform></translation>
+            <numerusform>%n damaged chunk was skipped</numerusform>
+            <numerusform>%n damaged chunks were skipped</numerusform>
+        </translation>
     </message>
 </context>
 <context>
     <name>imudesk::record::ReplayWorker</name>
     <message numerus="yes">
-        <location filename="../core/record/replay_worker.cpp" line="+63" />
+        <location filename="../core/record/replay_worker.cpp" line="+63"/>
         <source>%n damaged chunk(s) skipped</source>
         <translation>
-            <numerusform>%n damaged chunk skipped</numerusform><numerusform>%n damaged chunks skipped</numerusform></translation>
+            <numerusform>%n damaged chunk skipped</numerusform>
+            <numerusform>%n damaged chunks skipped</numerusform>
+        </translation>
     </message>
 </context>
 <context>
     <name>imudesk::ui::ExportDialog</name>
     <message numerus="yes">
-        <location filename="../ui/export_dialog.cpp" line="+161" />
+        <location filename="../ui/export_dialog.cpp" line="+161"/>
         <source>%n row(s) written to %1</source>
         <translation>
-            <numerusform>%n row written to %1</numerusform><numerusform>%n rows written to %1</numerusform></translation>
+            <numerusform>%n row written to %1</numerusform>
+            <numerusform>%n rows written to %1</numerusform>
+        </translation>
     </message>
 </context>
 <context>
     <name>imudesk::ui::ModbusScanDialog</name>
     <message numerus="yes">
-        <location filename="../ui/modbus_scan_dialog.cpp" line="+159" />
+        <location filename="../ui/modbus_scan_dialog.cpp" line="+159"/>
         <source>Cancelled; %n device(s) found so far.</source>
         <translation>
-            <numerusform>Cancelled; %n device found so far.</numerusform><numerusform>Cancelled; %n devices found so far.</numerusform></translation>
+            <numerusform>Cancelled; %n device found so far.</numerusform>
+            <numerusform>Cancelled; %n devices found so far.</numerusform>
+        </translation>
     </message>
     <message numerus="yes">
-        <location line="+4" />
+        <location line="+4"/>
         <source>%n device(s) found.</source>
         <translation>
-            <numerusform>%n device found.</numerusform><numerusform>%n devices found.</numerusform></translation>
+            <numerusform>%n device found.</numerusform>
+            <numerusform>%n devices found.</numerusform>
+        </translation>
     </message>
 </context>
 <context>
     <name>imudesk::ui::RawBytesView</name>
     <message numerus="yes">
-        <location filename="../ui/raw_bytes_view.cpp" line="+196" />
+        <location filename="../ui/raw_bytes_view.cpp" line="+196"/>
         <source>… %n read(s) or write(s) not shown (the log dropped them before this view caught up) …</source>
         <translation>
             <numerusform>… %n read or write not shown (the log dropped them before this view caught up) …</numerusform>
@@ -63,7 +75,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location line="+3" />
+        <location line="+3"/>
         <source>… %n byte(s) not shown (more arrived than the view holds) …</source>
         <translation>
             <numerusform>… %n byte not shown (more arrived than the view holds) …</numerusform>
@@ -74,10 +86,12 @@
 <context>
     <name>imudesk::ui::RecordingControls</name>
     <message numerus="yes">
-        <location filename="../ui/recording_controls.cpp" line="+195" />
+        <location filename="../ui/recording_controls.cpp" line="+195"/>
         <source>%n frame(s)</source>
         <translation>
-            <numerusform>%n frame</numerusform><numerusform>%n frames</numerusform></translation>
+            <numerusform>%n frame</numerusform>
+            <numerusform>%n frames</numerusform>
+        </translation>
     </message>
 </context>
 </TS>

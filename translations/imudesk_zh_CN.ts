@@ -25,6 +25,37 @@
     </message>
 </context>
 <context>
+    <name>CalibrationHistory</name>
+    <message>
+        <location filename="../core/calib/calibration_history.cpp" line="+82" />
+        <source>A calibration record needs a kind.</source>
+        <translation>校准记录必须指定类型。</translation>
+    </message>
+    <message>
+        <location line="+14" />
+        <source>Cannot create the folder %1: check that the disk is writable.</source>
+        <translation>无法创建文件夹 %1：请检查磁盘是否可写。</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <location line="+3" />
+        <location line="+3" />
+        <location line="+3" />
+        <source>Cannot write %1: %2</source>
+        <translation>无法写入 %1：%2</translation>
+    </message>
+    <message>
+        <location line="+38" />
+        <source>%1 is too large to load.</source>
+        <translation>%1 太大，无法加载。</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>Cannot read %1: %2</source>
+        <translation>无法读取 %1：%2</translation>
+    </message>
+</context>
+<context>
     <name>CanDecoder</name>
     <message>
         <location filename="../core/protocol/can/can_decoder.cpp" line="+70" />
@@ -151,7 +182,8 @@
         <location line="+10" />
         <source>%n damaged chunk(s) were skipped</source>
         <translation>
-            <numerusform>已跳过 %n 个损坏的数据块</numerusform></translation>
+            <numerusform>已跳过 %n 个损坏的数据块</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -242,6 +274,79 @@
         <location line="+98" />
         <source>Recording stopped: writing %1 failed (%2). Everything up to that point is in the file; free some disk space and record again.</source>
         <translation>记录已停止：写入 %1 失败（%2）。此前的数据均已保存在文件中；请释放一些磁盘空间后重新记录。</translation>
+    </message>
+</context>
+<context>
+    <name>CompassPoseTracker</name>
+    <message>
+        <location filename="../core/calib/compass_pose_tracker.cpp" line="+102" />
+        <source>Automatic 12-point</source>
+        <translation>自动 12 点</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Manual</source>
+        <translation>手动</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Automatic all-orientation</source>
+        <translation>自动全姿态</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>12-point small tilt</source>
+        <translation>12 点小倾角</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Planar</source>
+        <translation>平面</translation>
+    </message>
+    <message>
+        <location line="+9" />
+        <source>Turn the compass, together with everything mounted with it, to each of the 12 poses shown; it collects a point by itself near each one. Needs pitch beyond 45 deg and roll beyond 30 deg.</source>
+        <translation>将罗盘连同与其一起安装的所有部件转到图示的 12 个姿态；在每个姿态附近会自动采集一个点。需要俯仰角超过 45 deg、横滚角超过 30 deg。</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Turn the compass to the poses it will be used in and collect a point at each (at least 12); spread the headings evenly.</source>
+        <translation>将罗盘转到实际使用时的各个姿态，并在每个姿态采集一个点（至少 12 个）；航向角应均匀分布。</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Start level. Turn 2-3 times about the vertical axis (10-15 s per turn, speeding up and slowing down), then 1-2 times about X and Y (about 10 s per turn), then at random so that every orientation is reached. Up to 96 points.</source>
+        <translation>从水平位置开始。先绕竖直轴转 2-3 圈（每圈 10-15 s，时快时慢），再绕 X 轴和 Y 轴各转 1-2 圈（每圈约 10 s），然后随意转动，使其经过所有姿态。最多 96 个点。</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>For roll below 5 deg: keep it nearly level in roll and turn to the 12 headings and pitches shown (pitch beyond 45 deg).</source>
+        <translation>适用于横滚角小于 5 deg 的场合：横滚方向保持接近水平，转到图示的 12 个航向角和俯仰角（俯仰角超过 45 deg）。</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Place the compass level (pitch and roll below 2 deg) and turn it one full circle slowly and evenly. Up to 12 points.</source>
+        <translation>将罗盘水平放置（俯仰角和横滚角小于 2 deg），缓慢匀速地转动一整圈。最多 12 个点。</translation>
+    </message>
+    <message>
+        <location line="+80" />
+        <source>%1 points collected, at least %2 needed.</source>
+        <translation>已采集 %1 个点，至少需要 %2 个。</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>%1 points collected: you can save the calibration.</source>
+        <translation>已采集 %1 个点：可以保存校准结果。</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>Point %1: heading %2 deg, pitch %3..%4 deg, roll %5..%6 deg</source>
+        <translation>第 %1 点：航向角 %2 deg，俯仰角 %3..%4 deg，横滚角 %5..%6 deg</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <source>All %1 points collected: save the calibration.</source>
+        <translation>全部 %1 个点已采集：请保存校准结果。</translation>
     </message>
 </context>
 <context>
@@ -349,7 +454,8 @@
         <location line="+9" />
         <source>%n damaged chunk(s) were skipped</source>
         <translation>
-            <numerusform>已跳过 %n 个损坏的数据块</numerusform></translation>
+            <numerusform>已跳过 %n 个损坏的数据块</numerusform>
+        </translation>
     </message>
     <message>
         <location line="+4" />
@@ -365,6 +471,94 @@
         <location line="+4" />
         <source>%1 holds no IMU frames to analyse</source>
         <translation>%1 中没有可分析的 IMU 数据帧</translation>
+    </message>
+</context>
+<context>
+    <name>GyroScaleRun</name>
+    <message>
+        <location filename="../core/calib/gyro_scale_run.cpp" line="+186" />
+        <source>turn %1 ended at %2 deg, not within %3 deg of %4 deg</source>
+        <translation>第 %1 圈停在 %2 deg，未在 %4 deg 的 %3 deg 范围内</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>turn %1 averaged %2 deg/s, outside %3..%4 deg/s</source>
+        <translation>第 %1 圈平均角速度为 %2 deg/s，超出 %3..%4 deg/s</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>turn %1 paused on the way</source>
+        <translation>第 %1 圈中途有停顿</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>turn %1 was uneven (rate varied by %2 %)</source>
+        <translation>第 %1 圈转动不均匀（角速度变化 %2 %）</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>the module is tilted %1 deg: place it level</source>
+        <translation>模块倾斜 %1 deg：请水平放置</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Run not finished (%1 of %2 turns done).</source>
+        <translation>校准未完成（已完成 %1 / %2 圈）。</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Estimated gyro scale error %1 % (bias %2 deg/s, output rate %3 Hz).</source>
+        <translation>陀螺仪标度因数误差估计值 %1 %（零偏 %2 deg/s，输出频率 %3 Hz）。</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>Estimated gyro scale error %1 %, but the run was not clean: %2. Repeat it.</source>
+        <translation>陀螺仪标度因数误差估计值 %1 %，但本次转动不合规范：%2。请重做。</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>Place the module level on a flat, steady surface, then start.</source>
+        <translation>将模块水平放在平坦、稳固的表面上，然后开始。</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Hold the module still (%1 of %2 s).</source>
+        <translation>请保持模块静止（%1 / %2 s）。</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>Turn the module %1 deg (%2 turns) at an even 20-100 deg/s, in either direction.</source>
+        <translation>以 20-100 deg/s 的匀速将模块转动 %1 deg（%2 圈），方向不限。</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Now turn it back the other way, %1 deg, to the same mark.</source>
+        <translation>现在反方向转回 %1 deg，回到同一标记处。</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Stop now: on the mark.</source>
+        <translation>立即停止：已到标记处。</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Too far: %1 deg past the target. Stop and repeat the run.</source>
+        <translation>转过头了：超出目标 %1 deg。请停止并重做。</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Keep turning, a little faster: %1 deg to go.</source>
+        <translation>继续转动，稍快一些：还差 %1 deg。</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Keep turning, a little slower: %1 deg to go.</source>
+        <translation>继续转动，稍慢一些：还差 %1 deg。</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Keep turning evenly: %1 deg to go.</source>
+        <translation>继续匀速转动：还差 %1 deg。</translation>
     </message>
 </context>
 <context>
@@ -1112,6 +1306,271 @@
     </message>
 </context>
 <context>
+    <name>MagCalProcedure</name>
+    <message>
+        <location filename="../core/calib/mag_cal_procedure.cpp" line="+57" />
+        <source>1. Check the field at the calibration spot: hold the module still and read |B|; 20-60 uT is normal. Below 20 or above 60 uT a magnetic object is near: move away from it or choose another place.
+2. Check the rotation: turn about every axis at least 360 deg at 20-100 deg/s, without pausing.
+3. Check for spatial interference: measure |B| at the same spot in different orientations. If it varies by more than 10 uT, choose another place or use 6-axis mode.
+Keep the module in place while turning it, and calibrate it together with everything mounted to it.</source>
+        <translation>1. 检查校准位置的磁场：保持模块静止，读取 |B|；20-60 uT 为正常。低于 20 uT 或高于 60 uT 说明附近有磁性物体：请远离该物体或另选地点。
+2. 检查转动：绕每个轴至少转动 360 deg，角速度 20-100 deg/s，中途不要停顿。
+3. 检查空间干扰：在同一位置以不同姿态测量 |B|。若变化超过 10 uT，请另选地点或使用 6 轴模式。
+转动时保持模块位置不变，并将模块连同与其一起安装的所有部件一起校准。</translation>
+    </message>
+    <message>
+        <location line="+17" />
+        <source>Starting the calibration on the device.</source>
+        <translation>正在设备上启动校准。</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>This firmware calibrates in the background in 9-axis mode: turn the module slowly through as many orientations as you can.</source>
+        <translation>此固件在 9 轴模式下进行后台校准：请缓慢转动模块，尽可能经过更多姿态。</translation>
+    </message>
+    <message>
+        <location line="+22" />
+        <source>The device did not finish the calibration within %1 s.</source>
+        <translation>设备未在 %1 s 内完成校准。</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>Calibrating: turn the module slowly about every axis.</source>
+        <translation>正在校准：请绕每个轴缓慢转动模块。</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>The device did not answer CONFIG MCAL START: its firmware is older than 1.7.0 or the link is down.</source>
+        <translation>设备未应答 CONFIG MCAL START：其固件版本低于 1.7.0，或链路已断开。</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>The device refused CONFIG MCAL START (%1): it may have no magnetometer.</source>
+        <translation>设备拒绝了 CONFIG MCAL START（%1）：设备可能没有磁力计。</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>The device stopped answering %1 (%2 times in a row).</source>
+        <translation>设备已连续 %2 次未应答 %1。</translation>
+    </message>
+    <message>
+        <location line="+11" />
+        <source>LOG MAGCONFIG gave no MB line.</source>
+        <translation>LOG MAGCONFIG 未返回 MB 行。</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <location line="+5" />
+        <source>LOG MAGCONFIG gave an unreadable MB line: %1</source>
+        <translation>LOG MAGCONFIG 返回的 MB 行无法解析：%1</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>The device calibrated itself: bias %1, %2, %3 uT.</source>
+        <translation>设备已完成自校准：零偏 %1, %2, %3 uT。</translation>
+    </message>
+    <message>
+        <location line="+11" />
+        <source>LOG MCAL STAT gave no STAT line.</source>
+        <translation>LOG MCAL STAT 未返回 STAT 行。</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>The device is idle: the calibration stopped (was the device restarted?). Start again.</source>
+        <translation>设备处于空闲状态：校准已停止（设备是否重启过？）。请重新开始。</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Calibrating (%1 %): keep turning the module slowly about every axis.</source>
+        <translation>正在校准（%1 %）：请继续绕每个轴缓慢转动模块。</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Verifying the result: hold the module still.</source>
+        <translation>正在验证结果：请保持模块静止。</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>The device reports the calibration done.</source>
+        <translation>设备报告校准完成。</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>The device reports the calibration failed (STAT=4).</source>
+        <translation>设备报告校准失败（STAT=4）。</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>LOG MCAL STAT gave an unknown state %1.</source>
+        <translation>LOG MCAL STAT 返回了未知状态 %1。</translation>
+    </message>
+</context>
+<context>
+    <name>MagCalResult</name>
+    <message>
+        <location filename="../core/calib/mag_cal_result.cpp" line="+51" />
+        <source>Pass</source>
+        <translation>通过</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Warning</source>
+        <translation>警告</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Fail</source>
+        <translation>失败</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Refused</source>
+        <translation>已拒绝</translation>
+    </message>
+</context>
+<context>
+    <name>MagCalibrator</name>
+    <message>
+        <location filename="../core/calib/mag_calibrator.cpp" line="+89" />
+        <source>Only %1 usable samples; a full calibration needs at least %2. Keep turning the module slowly.</source>
+        <translation>仅有 %1 个可用样本；完整校准至少需要 %2 个。请继续缓慢转动模块。</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <source>The samples lie in one plane (the module turned about one axis only), so a full 3-D calibration cannot be computed. Turn the module about its other axes too, or use the 2-D (planar) calibration, which is valid for level operation only.</source>
+        <translation>样本位于同一平面内（模块只绕一个轴转动），因此无法计算完整的三维校准。请同时绕模块的其他轴转动，或使用二维（平面）校准，但它仅适用于水平工作。</translation>
+    </message>
+    <message>
+        <location line="+12" />
+        <source>Only %1 % of the field directions are covered (at least %2 % are needed, eigenvalue ratio %3, at most %4). %5. A full fit on this data would be unreliable.</source>
+        <translation>磁场方向覆盖率仅为 %1 %（至少需要 %2 %；特征值比 %3，最大 %4）。%5。用这些数据进行完整拟合将不可靠。</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <source>A hard-iron-only fit (soft iron kept from before) is possible.</source>
+        <translation>可以只拟合硬磁（沿用之前的软磁参数）。</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>The samples do not describe an ellipsoid (strong interference or a moving magnet nearby). Move away from iron and electronics and calibrate again.</source>
+        <translation>样本不构成椭球（存在强干扰或附近有移动的磁体）。请远离铁磁物体和电子设备后重新校准。</translation>
+    </message>
+    <message>
+        <location line="+21" />
+        <source>Only %1 usable samples; the hard-iron fit needs at least %2.</source>
+        <translation>仅有 %1 个可用样本；硬磁拟合至少需要 %2 个。</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>The samples are too close to a plane (eigenvalue ratio %1, at most %2) even for a hard-iron fit. Tilt the module more while turning it.</source>
+        <translation>样本过于接近一个平面（特征值比 %1，最大 %2），连硬磁拟合也无法进行。转动时请让模块倾斜得更多。</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>The hard-iron fit found no solution: check that the samples come from the magnetometer in uT.</source>
+        <translation>硬磁拟合无解：请检查样本是否为以 uT 为单位的磁力计数据。</translation>
+    </message>
+    <message>
+        <location line="+18" />
+        <source>Only %1 usable samples; the 2-D fit needs at least %2. Turn the module a full circle.</source>
+        <translation>仅有 %1 个可用样本；二维拟合至少需要 %2 个。请将模块转动一整圈。</translation>
+    </message>
+    <message>
+        <location line="+16" />
+        <source>The horizontal samples do not describe an ellipse: turn the module one full, even circle.</source>
+        <translation>水平方向的样本不构成椭圆：请将模块匀速转动一整圈。</translation>
+    </message>
+    <message>
+        <location line="+41" />
+        <location line="+17" />
+        <source>fit error %1 % is above %2 %</source>
+        <translation>拟合误差 %1 % 高于 %2 %</translation>
+    </message>
+    <message>
+        <location line="-12" />
+        <source>soft-iron scale %1..%2 is outside %3..%4 (a magnet or iron part very close to the module)</source>
+        <translation>软磁比例 %1..%2 超出 %3..%4（模块附近很近处有磁体或铁质部件）</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>field strength %1 uT is not the earth's field (%2..%3 uT)</source>
+        <translation>磁场强度 %1 uT 不符合地磁场（%2..%3 uT）</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>only %1 % of the directions are covered</source>
+        <translation>方向覆盖率仅为 %1 %</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>field strength %1 uT is outside the normal %2..%3 uT: move away from magnetic objects</source>
+        <translation>磁场强度 %1 uT 超出正常范围 %2..%3 uT：请远离磁性物体</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>hard iron %1 uT is large (over 1.5 times the field): the sensor may saturate</source>
+        <translation>硬磁 %1 uT 过大（超过磁场强度的 1.5 倍）：传感器可能饱和</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>%1 of %2 samples were disturbed and set aside</source>
+        <translation>%2 个样本中有 %1 个受到干扰，已剔除</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>field strength %1 uT differs from the expected %2 uT by more than 15 %</source>
+        <translation>磁场强度 %1 uT 与预期的 %2 uT 相差超过 15 %</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>2-D calibration: valid for level operation only; the vertical offset is unknown</source>
+        <translation>二维校准：仅适用于水平工作；垂直方向偏移未知</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>2-D calibration: valid for level operation only</source>
+        <translation>二维校准：仅适用于水平工作</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Calibration failed: %1.</source>
+        <translation>校准失败：%1。</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Usable with care: %1.</source>
+        <translation>可用但需谨慎：%1。</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Good calibration: fit error %1 %, %2 % of the directions covered.</source>
+        <translation>校准良好：拟合误差 %1 %，方向覆盖率 %2 %。</translation>
+    </message>
+</context>
+<context>
+    <name>MagEnvironmentCheck</name>
+    <message>
+        <location filename="../core/calib/mag_environment_check.cpp" line="+57" />
+        <source>Hold the module at the calibration spot and turn it slowly to a few orientations.</source>
+        <translation>将模块放在校准位置，缓慢转动到几个不同姿态。</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>The field is %1 uT (normal: %2..%3 uT) and varies by %4 uT between orientations: you can calibrate here.</source>
+        <translation>磁场强度为 %1 uT（正常：%2..%3 uT），不同姿态间变化 %4 uT：可以在此校准。</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>The field is %1 uT, outside the normal %2..%3 uT: a strongly magnetic object is near. Move away from it, or choose another place.</source>
+        <translation>磁场强度为 %1 uT，超出正常范围 %2..%3 uT：附近有强磁性物体。请远离该物体，或另选地点。</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>The field strength varies by %1 uT between orientations (more than %2 uT): there is spatial interference here. Choose another place (outdoors, away from buildings and vehicles), or use 6-axis mode.</source>
+        <translation>不同姿态间磁场强度变化 %1 uT（超过 %2 uT）：此处存在空间干扰。请另选地点（室外，远离建筑物和车辆），或使用 6 轴模式。</translation>
+    </message>
+</context>
+<context>
     <name>ModbusSimulator</name>
     <message>
         <location filename="../core/sim/modbus_simulator.cpp" line="+46" />
@@ -1609,6 +2068,54 @@
     </message>
 </context>
 <context>
+    <name>SampleCsv</name>
+    <message>
+        <location filename="../core/calib/sample_csv.cpp" line="+34" />
+        <source>line %1 is longer than %2 characters</source>
+        <translation>第 %1 行超过 %2 个字符</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <source>line %1 has more than %2 columns</source>
+        <translation>第 %1 行超过 %2 列</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>line %1: the header has an empty column name</source>
+        <translation>第 %1 行：表头中有空列名</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>line %1: a header row of column names is required (e.g. mag_x,mag_y,mag_z)</source>
+        <translation>第 %1 行：需要一行列名作为表头（例如 mag_x,mag_y,mag_z）</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <source>line %1 has %2 values, the header has %3 columns</source>
+        <translation>第 %1 行有 %2 个值，表头有 %3 列</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>more than %1 rows</source>
+        <translation>超过 %1 行</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>line %1, column %2: '%3' is not a number</source>
+        <translation>第 %1 行第 %2 列：“%3”不是数字</translation>
+    </message>
+    <message>
+        <location line="+9" />
+        <source>the file is empty: a header row and samples are needed</source>
+        <translation>文件为空：需要表头行和样本数据</translation>
+    </message>
+    <message>
+        <location line="+25" />
+        <source>the columns mag_x, mag_y and mag_z (uT) are needed; the header has: %1</source>
+        <translation>需要 mag_x、mag_y 和 mag_z 列（单位 uT）；表头中只有：%1</translation>
+    </message>
+</context>
+<context>
     <name>SerialByteLink</name>
     <message>
         <location filename="../core/firmware/serial_byte_link.cpp" line="+25" />
@@ -2076,6 +2583,19 @@
     </message>
 </context>
 <context>
+    <name>SphereCoverage</name>
+    <message>
+        <location filename="../core/calib/sphere_coverage.cpp" line="+120" />
+        <source>Turn the module slowly about each of its axes: no direction is covered yet</source>
+        <translation>请绕模块的各轴缓慢转动：尚未覆盖任何方向</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>Turn the module so that its %1%2 axis points along the magnetic field (towards north and, in the northern hemisphere, down)</source>
+        <translation>转动模块，使其 %1%2 轴指向磁场方向（朝北；在北半球还要朝下）</translation>
+    </message>
+</context>
+<context>
     <name>UpdateFlow</name>
     <message>
         <location filename="../core/firmware/update_flow.cpp" line="+35" />
@@ -2397,6 +2917,59 @@
         <location line="+23" />
         <source>the file is empty: no HI91 CSV header</source>
         <translation>文件为空：没有 HI91 CSV 表头</translation>
+    </message>
+</context>
+<context>
+    <name>imudesk::calib::GyroCalSession</name>
+    <message>
+        <location filename="../core/calib/gyro_cal_session.cpp" line="+23" />
+        <source>The angle must be %1..%2 deg (2 to 5 turns); %3 is not.</source>
+        <translation>角度必须为 %1..%2 deg（2 到 5 圈）；%3 不符合要求。</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>A gyro calibration is already running.</source>
+        <translation>陀螺仪校准已在进行中。</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>Starting the gyro calibration (%1 deg).</source>
+        <translation>正在启动陀螺仪校准（%1 deg）。</translation>
+    </message>
+    <message>
+        <location line="+9" />
+        <source>Stopping the gyro calibration.</source>
+        <translation>正在停止陀螺仪校准。</translation>
+    </message>
+    <message>
+        <location line="+22" />
+        <source>Turn the module %1 deg at an even 20-100 deg/s, then stop on the mark.</source>
+        <translation>以 20-100 deg/s 的匀速将模块转动 %1 deg，然后停在标记处。</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>The device did not answer CONFIG USRCAL START: check the link.</source>
+        <translation>设备未应答 CONFIG USRCAL START：请检查链路。</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>The device refused CONFIG USRCAL START %1 (%2).</source>
+        <translation>设备拒绝了 CONFIG USRCAL START %1（%2）。</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>The device accepted the calibration (OK).</source>
+        <translation>设备已接受校准结果（OK）。</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>The device did not answer CONFIG USRCAL STOP: check the link, then repeat.</source>
+        <translation>设备未应答 CONFIG USRCAL STOP：请检查链路后重做。</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>The device rejected the run (ERR): the angle turned was not within 5 deg of %1 deg, or the rate was outside 20-100 deg/s or uneven. Repeat it.</source>
+        <translation>设备拒绝了本次校准（ERR）：转过的角度与 %1 deg 相差超过 5 deg，或角速度超出 20-100 deg/s 或不均匀。请重做。</translation>
     </message>
 </context>
 <context>
@@ -3183,11 +3756,11 @@
     </message>
     <message>
         <location line="+5" />
-        <source>No permission to open %1. On Linux add your user to the dialout group (sudo usermod -aG dialout $USER), then log out and in again.</source>
-        <translation>没有打开 %1 的权限。在 Linux 上请将当前用户加入 dialout 组（sudo usermod -aG dialout $USER），然后注销并重新登录。</translation>
+        <source>No permission to open %1. On Linux add your user to the dialout group (sudo usermod -aG dialout $USER), then log out and in again; or install the udev rule from ImuDesk's README (60-imudesk-serial.rules).</source>
+        <translation>没有打开 %1 的权限。在 Linux 上请将当前用户加入 dialout 组（sudo usermod -aG dialout $USER），然后注销并重新登录；或安装 ImuDesk README 中的 udev 规则（60-imudesk-serial.rules）。</translation>
     </message>
     <message>
-        <location line="+8" />
+        <location line="+9" />
         <source>Could not open %1: %2</source>
         <translation>无法打开 %1：%2</translation>
     </message>
@@ -3243,6 +3816,64 @@
         <location line="+1" />
         <source>This frame corresponds to a SYNC_OUT pulse.</source>
         <translation>该帧对应一个 SYNC_OUT 脉冲。</translation>
+    </message>
+</context>
+<context>
+    <name>imudesk::models::CalibrationHistoryModel</name>
+    <message>
+        <location filename="../core/models/calibration_history_model.cpp" line="+41" />
+        <source>Magnetometer</source>
+        <translation>磁力计</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Gyro scale factor</source>
+        <translation>陀螺仪标度因数</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Attitude reset</source>
+        <translation>姿态复位</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Compass (HEC495)</source>
+        <translation>罗盘（HEC495）</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <source>|B| %1 uT, fit error %2 %, coverage %3 %</source>
+        <translation>|B| %1 uT，拟合误差 %2 %，覆盖率 %3 %</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>scale error %1 %</source>
+        <translation>标度因数误差 %1 %</translation>
+    </message>
+    <message>
+        <location line="+35" />
+        <source>Time</source>
+        <translation>时间</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Calibration</source>
+        <translation>校准</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Verdict</source>
+        <translation>结论</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Result</source>
+        <translation>结果</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Firmware</source>
+        <translation>固件</translation>
     </message>
 </context>
 <context>
@@ -3789,7 +4420,8 @@
         <location line="+3" />
         <source>%n damaged chunk(s) skipped</source>
         <translation>
-            <numerusform>已跳过 %n 个损坏的数据块</numerusform></translation>
+            <numerusform>已跳过 %n 个损坏的数据块</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -4047,6 +4679,126 @@
         <location line="+3" />
         <source>σ(τ) (deg/s for gyro, G for acc)</source>
         <translation>σ(τ)（陀螺仪为 deg/s，加速度计为 G）</translation>
+    </message>
+</context>
+<context>
+    <name>imudesk::ui::AttitudeResetWizard</name>
+    <message>
+        <location filename="../ui/attitude_reset_wizard.cpp" line="+21" />
+        <source>Heading reset: the current heading becomes 0. Keep the module still. (Firmware 1.7.1 and later.)</source>
+        <translation>航向角清零：当前航向角变为 0。请保持模块静止。（固件 1.7.1 及以上版本。）</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Relative zero: the current pitch and roll become 0, whatever they are. Keep the module still in the pose that should read level. CONFIG ATT RST 5 undoes it.</source>
+        <translation>相对置零：无论当前俯仰角和横滚角是多少，都将其变为 0。请让模块静止在应显示为水平的姿态。CONFIG ATT RST 5 可撤销此操作。</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Auto level: only when the module lies nearly level (pitch and roll within 5 deg), or upside down (roll within 5 deg of 180): it is levelled to 0/0 or 0/180. Permanent: RST 5 does not undo it. Keep the module still.</source>
+        <translation>自动调平：仅当模块接近水平（俯仰角和横滚角均在 5 deg 以内）或倒置（横滚角与 180 相差 5 deg 以内）时可用：模块被调平为 0/0 或 0/180。永久生效：RST 5 无法撤销。请保持模块静止。</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Cancel levelling: clears the relative pitch and roll set by RST 2; the absolute angles come back.</source>
+        <translation>取消调平：清除 RST 2 设置的相对俯仰角和横滚角，恢复绝对角度。</translation>
+    </message>
+    <message>
+        <location line="+13" />
+        <source>Attitude reset and level</source>
+        <translation>姿态复位与调平</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>What to reset</source>
+        <translation>复位内容</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Heading reset (ATT RST 1)</source>
+        <translation>航向角清零（ATT RST 1）</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Relative zero of pitch and roll (ATT RST 2)</source>
+        <translation>俯仰角和横滚角相对置零（ATT RST 2）</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Auto level (ATT RST 3)</source>
+        <translation>自动调平（ATT RST 3）</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Cancel levelling (ATT RST 5)</source>
+        <translation>取消调平（ATT RST 5）</translation>
+    </message>
+    <message>
+        <location line="+15" />
+        <source>Hold the module still</source>
+        <translation>保持模块静止</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Send</source>
+        <translation>发送</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <source>Result</source>
+        <translation>结果</translation>
+    </message>
+    <message>
+        <location line="+57" />
+        <source>not still yet (%1 of %2 s)</source>
+        <translation>尚未静止（%1 / %2 s）</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>not level: pitch %1, roll %2 deg (each must be within %3 deg of level or upside down)</source>
+        <translation>未水平：俯仰角 %1，横滚角 %2 deg（均须在水平或倒置位置的 %3 deg 以内）</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>Roll %1, pitch %2, yaw %3 deg; gyro spread %4 deg/s.
+%5</source>
+        <translation>横滚角 %1，俯仰角 %2，航向角 %3 deg；陀螺仪波动 %4 deg/s。
+%5</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>Ready: send CONFIG ATT RST %1.</source>
+        <translation>就绪：发送 CONFIG ATT RST %1。</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Waiting: %1.</source>
+        <translation>等待中：%1。</translation>
+    </message>
+    <message>
+        <location line="+18" />
+        <source>The device accepted CONFIG ATT RST %1 (OK).</source>
+        <translation>设备已接受 CONFIG ATT RST %1（OK）。</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>The device did not answer CONFIG ATT RST %1: its firmware may not know this variant.</source>
+        <translation>设备未应答 CONFIG ATT RST %1：其固件可能不支持此模式。</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The device refused CONFIG ATT RST %1 (ERR).</source>
+        <translation>设备拒绝了 CONFIG ATT RST %1（ERR）。</translation>
+    </message>
+    <message>
+        <location line="+12" />
+        <source>Nothing was sent.</source>
+        <translation>未发送任何指令。</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Attitude now: roll %1, pitch %2, yaw %3 deg. Save it with SAVECONFIG if it should survive a restart (RST 2).</source>
+        <translation>当前姿态：横滚角 %1，俯仰角 %2，航向角 %3 deg。如需在重启后保留（RST 2），请用 SAVECONFIG 保存。</translation>
     </message>
 </context>
 <context>
@@ -5611,7 +6363,8 @@ Link load = bytes per second × 10 bits / baud rate.</source>
         <location line="+6" />
         <source>%n row(s) written to %1</source>
         <translation>
-            <numerusform>已向 %1 写入 %n 行</numerusform></translation>
+            <numerusform>已向 %1 写入 %n 行</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -5767,6 +6520,99 @@ Link load = bytes per second × 10 bits / baud rate.</source>
         <location line="+11" />
         <source>Cancel</source>
         <translation>取消</translation>
+    </message>
+</context>
+<context>
+    <name>imudesk::ui::GyroScaleWizard</name>
+    <message>
+        <location filename="../ui/gyro_scale_wizard.cpp" line="+21" />
+        <source>Gyro scale factor calibration</source>
+        <translation>陀螺仪标度因数校准</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Preparation</source>
+        <translation>准备工作</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>&lt;ul&gt;&lt;li&gt;Place the module, with the robot or vehicle it is fixed to, on a level, flat floor.&lt;/li&gt;&lt;li&gt;Keep the temperature steady and avoid vibration (motors off).&lt;/li&gt;&lt;li&gt;Mark the start position: you must stop on the same mark, within 5 deg.&lt;/li&gt;&lt;li&gt;Turn at an even 20-100 deg/s (5-20 s per turn), in either direction, without pausing.&lt;/li&gt;&lt;li&gt;More turns give a smaller error: 720 deg (2 turns) to 1800 deg (5 turns).&lt;/li&gt;&lt;/ul&gt;Keep the module still for a few seconds after pressing Start: ImuDesk measures the gyro bias first.</source>
+        <translation>&lt;ul&gt;&lt;li&gt;将模块连同其所固定的机器人或车辆放在水平、平坦的地面上。&lt;/li&gt;&lt;li&gt;保持温度稳定，避免振动（关闭电机）。&lt;/li&gt;&lt;li&gt;标记起始位置：必须停在同一标记处，误差在 5 deg 以内。&lt;/li&gt;&lt;li&gt;以 20-100 deg/s 匀速转动（每圈 5-20 s），方向不限，中途不要停顿。&lt;/li&gt;&lt;li&gt;圈数越多，误差越小：720 deg（2 圈）到 1800 deg（5 圈）。&lt;/li&gt;&lt;/ul&gt;按下“开始”后请保持模块静止几秒钟：ImuDesk 会先测量陀螺仪零偏。</translation>
+    </message>
+    <message>
+        <location line="+11" />
+        <source>Turn the module</source>
+        <translation>转动模块</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source> deg</source>
+        <translation> deg</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Start</source>
+        <translation>开始</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Stop</source>
+        <translation>停止</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <source>%v of %m deg</source>
+        <translation>%v / %m deg</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>rate %v deg/s (band 20-100)</source>
+        <translation>角速度 %v deg/s（范围 20-100）</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>Angle:</source>
+        <translation>角度：</translation>
+    </message>
+    <message>
+        <location line="+15" />
+        <source>Result</source>
+        <translation>结果</translation>
+    </message>
+    <message>
+        <location line="+67" />
+        <source>%1 deg turned (%2 turns), rate %3 deg/s %4</source>
+        <translation>已转动 %1 deg（%2 圈），角速度 %3 deg/s %4</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>(in band)</source>
+        <translation>（在范围内）</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>(outside 20-100 deg/s)</source>
+        <translation>（超出 20-100 deg/s）</translation>
+    </message>
+    <message>
+        <location line="+23" />
+        <source>The device accepted the calibration (OK).</source>
+        <translation>设备已接受校准结果（OK）。</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>The device rejected the run (ERR).</source>
+        <translation>设备拒绝了本次校准（ERR）。</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>ImuDesk's estimate from the same samples: %1</source>
+        <translation>ImuDesk 根据相同样本得出的估计值：%1</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>ImuDesk saw no complete turn, so it has no estimate of its own.</source>
+        <translation>ImuDesk 未检测到完整的一圈转动，因此没有自己的估计值。</translation>
     </message>
 </context>
 <context>
@@ -5929,6 +6775,175 @@ Link load = bytes per second × 10 bits / baud rate.</source>
     </message>
 </context>
 <context>
+    <name>imudesk::ui::MagCalibrationWizard</name>
+    <message>
+        <location filename="../ui/mag_calibration_wizard.cpp" line="+39" />
+        <source>Magnetometer calibration</source>
+        <translation>地磁校准</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Before you start</source>
+        <translation>开始之前</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Calibrate the magnetometer when you use the 9-axis (AHRS) mode, where the heading follows magnetic north. Without a magnetometer calibration, or where the field is disturbed, use the 6-axis mode instead.
+
+Best: outdoors in an open space, more than 5 m from buildings and vehicles. Acceptable: indoors, more than 30 cm from iron furniture, monitors, motors, transformers, chargers and phones.
+
+If the module is mounted on a PCB, in a housing or on a robot, calibrate it together with them, as one rigid body: calibrating the module alone does not help once it is mounted.</source>
+        <translation>使用 9 轴（AHRS）模式时请进行地磁校准，该模式下航向角以磁北为基准。未进行地磁校准或磁场受到干扰时，请改用 6 轴模式。
+
+最佳：室外空旷处，距建筑物和车辆 5 m 以上。可接受：室内，距铁质家具、显示器、电机、变压器、充电器和手机 30 cm 以上。
+
+如果模块安装在 PCB 上、外壳中或机器人上，请将它们作为一个刚体一起校准：模块安装后，单独校准模块没有用。</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <source>Working mode</source>
+        <translation>工作模式</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The calibration needs the 9-axis (AHRS) mode, CONFIG ATT MODE 1 (the factory setting). If the module runs in a 6-axis mode, switch it: ImuDesk sends CONFIG ATT MODE 1, SAVECONFIG and REBOOT.</source>
+        <translation>校准需要 9 轴（AHRS）模式，即 CONFIG ATT MODE 1（出厂设置）。如果模块运行在 6 轴模式，请切换：ImuDesk 会发送 CONFIG ATT MODE 1、SAVECONFIG 和 REBOOT。</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Switch to 9-axis mode</source>
+        <translation>切换到 9 轴模式</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>Environment check</source>
+        <translation>环境检查</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Hold the module at the calibration spot and turn it to a few orientations. The field must be 20-60 uT and vary by no more than 10 uT between orientations.</source>
+        <translation>将模块放在校准位置并转动到几个不同姿态。磁场强度须为 20-60 uT，且不同姿态间的变化不超过 10 uT。</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <source>Turn the module</source>
+        <translation>转动模块</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Keep it in place and turn it slowly (20-100 deg/s) at least one full turn about each axis, until the sphere is green all over. Usually 30-60 s.</source>
+        <translation>保持模块位置不变，缓慢转动（20-100 deg/s），绕每个轴至少转一整圈，直到球面全部变绿。通常需要 30-60 s。</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>Start the device's calibration</source>
+        <translation>启动设备校准</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>Fit ImuDesk's calibration now</source>
+        <translation>立即用 ImuDesk 拟合校准</translation>
+    </message>
+    <message>
+        <location line="+11" />
+        <source>Result</source>
+        <translation>结果</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>Heading check</source>
+        <translation>航向角检查</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Place the module level and turn it slowly one full turn (360 deg). The heading must change continuously, without jumps of more than 10 deg; within +-5 deg of the true directions is acceptable.</source>
+        <translation>将模块水平放置，缓慢转动一整圈（360 deg）。航向角须连续变化，跳变不超过 10 deg；与真实方向相差 +-5 deg 以内即可接受。</translation>
+    </message>
+    <message>
+        <location line="+13" />
+        <source>Device: STAT=%1 PROGRESS=%2
+%3</source>
+        <translation>设备：STAT=%1 PROGRESS=%2
+%3</translation>
+    </message>
+    <message>
+        <location line="+70" />
+        <source>Turned %1 deg, largest step %2 deg: %3</source>
+        <translation>已转动 %1 deg，最大跳变 %2 deg：%3</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>the heading follows the turn smoothly.</source>
+        <translation>航向角随转动平稳变化。</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>the heading jumps: calibrate again (chapter 9.31).</source>
+        <translation>航向角有跳变：请重新校准（见第 9.31 章）。</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>keep turning.</source>
+        <translation>请继续转动。</translation>
+    </message>
+    <message>
+        <location line="+21" />
+        <source>No fit yet.</source>
+        <translation>尚无拟合结果。</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Verdict: %1
+%2
+
+</source>
+        <translation>结论：%1
+%2
+
+</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Hard iron: %1, %2, %3 uT
+Field: %4 uT
+Fit error: %5 %
+Residual RMS: %6 uT
+</source>
+        <translation>硬磁：%1, %2, %3 uT
+磁场强度：%4 uT
+拟合误差：%5 %
+残差 RMS：%6 uT
+</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>Coverage: %1 %
+Eigenvalue ratio: %2
+Samples: %3</source>
+        <translation>覆盖率：%1 %
+特征值比：%2
+样本数：%3</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>What to check:</source>
+        <translation>检查要点：</translation>
+    </message>
+</context>
+<context>
+    <name>imudesk::ui::MagSphereView</name>
+    <message>
+        <location filename="../ui/mag_sphere_view.cpp" line="+23" />
+        <source>Magnetometer samples on a sphere: cells turn green as the field directions cover them. Drag to turn the view, double-click to reset it.</source>
+        <translation>球面上的磁力计样本：被磁场方向覆盖到的单元格会变绿。拖动可旋转视图，双击可复位视图。</translation>
+    </message>
+    <message>
+        <location line="+158" />
+        <source>|B| %1 uT   coverage %2 %   %3 samples</source>
+        <translation>|B| %1 uT   覆盖率 %2 %   %3 个样本</translation>
+    </message>
+</context>
+<context>
     <name>imudesk::ui::MainWindow</name>
     <message>
         <location filename="../ui/main_window.cpp" line="+288" />
@@ -5976,7 +6991,7 @@ Link load = bytes per second × 10 bits / baud rate.</source>
         <translation>PNG 图像 (*.png)</translation>
     </message>
     <message>
-        <location line="+63" />
+        <location line="+64" />
         <source>&amp;File</source>
         <translation>文件(&amp;F)</translation>
     </message>
@@ -6250,7 +7265,8 @@ Link load = bytes per second × 10 bits / baud rate.</source>
         <location line="+28" />
         <source>Cancelled; %n device(s) found so far.</source>
         <translation>
-            <numerusform>已取消；目前找到 %n 台设备。</numerusform></translation>
+            <numerusform>已取消；目前找到 %n 台设备。</numerusform>
+        </translation>
     </message>
     <message>
         <location line="+2" />
@@ -6261,7 +7277,8 @@ Link load = bytes per second × 10 bits / baud rate.</source>
         <location line="+2" />
         <source>%n device(s) found.</source>
         <translation>
-            <numerusform>找到 %n 台设备。</numerusform></translation>
+            <numerusform>找到 %n 台设备。</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -6757,7 +7774,8 @@ Link load = bytes per second × 10 bits / baud rate.</source>
         <location line="+5" />
         <source>%n frame(s)</source>
         <translation>
-            <numerusform>%n 帧</numerusform></translation>
+            <numerusform>%n 帧</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -6882,7 +7900,7 @@ Link load = bytes per second × 10 bits / baud rate.</source>
 <context>
     <name>imudesk::ui::ToolActions</name>
     <message>
-        <location filename="../ui/tool_actions.cpp" line="+85" />
+        <location filename="../ui/tool_actions.cpp" line="+96" />
         <source>&amp;Open capture…</source>
         <translation>打开记录(&amp;O)…</translation>
     </message>
@@ -7002,12 +8020,47 @@ Link load = bytes per second × 10 bits / baud rate.</source>
         <translation>显示此设备的记录控件</translation>
     </message>
     <message>
+        <location line="+1" />
+        <source>&amp;Magnetometer…</source>
+        <translation>磁力计(&amp;M)…</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Calibrate the magnetometer: turn the module while the sphere fills, then judge the fit</source>
+        <translation>地磁校准：转动模块直至球面填满，然后评估拟合结果</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>&amp;Gyro scale factor…</source>
+        <translation>陀螺仪标度因数(&amp;G)…</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Turn the module a known angle about Z to correct the gyro's scale (CONFIG USRCAL)</source>
+        <translation>绕 Z 轴将模块转动已知角度，以校正陀螺仪的标度因数（CONFIG USRCAL）</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>&amp;Attitude reset / level…</source>
+        <translation>姿态复位/调平(&amp;A)…</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Zero the heading or level the module (ATT RST), after checking that it is still</source>
+        <translation>确认模块静止后，将航向角清零或调平模块（ATT RST）</translation>
+    </message>
+    <message>
         <location line="+2" />
         <source>&amp;Tools</source>
         <translation>工具(&amp;T)</translation>
     </message>
     <message>
-        <location line="+35" />
+        <location line="+2" />
+        <source>&amp;Calibrate</source>
+        <translation>校准(&amp;C)</translation>
+    </message>
+    <message>
+        <location line="+39" />
         <source>%1 could not be imported: %2</source>
         <translation>无法导入 %1：%2</translation>
     </message>
@@ -7061,7 +8114,7 @@ Link load = bytes per second × 10 bits / baud rate.</source>
 <context>
     <name>main</name>
     <message>
-        <location filename="../app/gui/main.cpp" line="+82" />
+        <location filename="../app/gui/main.cpp" line="+87" />
         <source>ImuDesk: a bench tool for HiPNUC IMU modules.</source>
         <translation>ImuDesk：HiPNUC IMU 模块测试工具。</translation>
     </message>
@@ -7111,7 +8164,17 @@ Link load = bytes per second × 10 bits / baud rate.</source>
         <translation>执行 --screenshot 前等待的秒数（默认 3）。</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+4" />
+        <source>Start connected to another simulated device: hec495 (compass on serial), modbus (HI14 over Modbus RTU), can (HI14 J1939 on virtualcan) or canopen (HI14 CANopen on virtualcan); or replay a capture file.</source>
+        <translation>启动后连接到另一个模拟设备：hec495（串口罗盘）、modbus（通过 Modbus RTU 连接的 HI14）、can（virtualcan 上的 HI14 J1939）或 canopen（virtualcan 上的 HI14 CANopen）；或回放一个记录文件。</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>Bring this panel to the front: configuration, recording, console, raw or commands.</source>
+        <translation>将此面板置于前台：configuration（配置）、recording（记录）、console（控制台）、raw（原始字节）或 commands（指令日志）。</translation>
+    </message>
+    <message>
+        <location line="+6" />
         <source>Model to simulate with --simulate (default HI14).</source>
         <translation>--simulate 模拟的型号（默认 HI14）。</translation>
     </message>
@@ -7147,8 +8210,14 @@ Link load = bytes per second × 10 bits / baud rate.</source>
     </message>
     <message>
         <location line="+20" />
+        <location line="+21" />
         <source>ImuDesk</source>
         <translation>ImuDesk</translation>
+    </message>
+    <message>
+        <location line="+12" />
+        <source>Unknown panel "%1"; use configuration, recording, console, raw or commands.</source>
+        <translation>未知面板“%1”；请使用 configuration、recording、console、raw 或 commands。</translation>
     </message>
 </context>
 </TS>

@@ -25,6 +25,37 @@
     </message>
 </context>
 <context>
+    <name>CalibrationHistory</name>
+    <message>
+        <location filename="../core/calib/calibration_history.cpp" line="+82" />
+        <source>A calibration record needs a kind.</source>
+        <translation>校準記錄必須指定類型。</translation>
+    </message>
+    <message>
+        <location line="+14" />
+        <source>Cannot create the folder %1: check that the disk is writable.</source>
+        <translation>無法建立資料夾 %1：請確認磁碟可寫入。</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <location line="+3" />
+        <location line="+3" />
+        <location line="+3" />
+        <source>Cannot write %1: %2</source>
+        <translation>無法寫入 %1：%2</translation>
+    </message>
+    <message>
+        <location line="+38" />
+        <source>%1 is too large to load.</source>
+        <translation>%1 過大，無法載入。</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>Cannot read %1: %2</source>
+        <translation>無法讀取 %1：%2</translation>
+    </message>
+</context>
+<context>
     <name>CanDecoder</name>
     <message>
         <location filename="../core/protocol/can/can_decoder.cpp" line="+70" />
@@ -151,7 +182,8 @@
         <location line="+10" />
         <source>%n damaged chunk(s) were skipped</source>
         <translation>
-            <numerusform>已略過 %n 個損壞的資料區塊</numerusform></translation>
+            <numerusform>已略過 %n 個損壞的資料區塊</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -242,6 +274,79 @@
         <location line="+98" />
         <source>Recording stopped: writing %1 failed (%2). Everything up to that point is in the file; free some disk space and record again.</source>
         <translation>記錄已停止：寫入 %1 失敗（%2）。此前的內容均已寫入檔案；請釋放磁碟空間後重新記錄。</translation>
+    </message>
+</context>
+<context>
+    <name>CompassPoseTracker</name>
+    <message>
+        <location filename="../core/calib/compass_pose_tracker.cpp" line="+102" />
+        <source>Automatic 12-point</source>
+        <translation>自動 12 點</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Manual</source>
+        <translation>手動</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Automatic all-orientation</source>
+        <translation>自動全姿態</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>12-point small tilt</source>
+        <translation>12 點小傾角</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Planar</source>
+        <translation>平面</translation>
+    </message>
+    <message>
+        <location line="+9" />
+        <source>Turn the compass, together with everything mounted with it, to each of the 12 poses shown; it collects a point by itself near each one. Needs pitch beyond 45 deg and roll beyond 30 deg.</source>
+        <translation>將羅盤連同與其一起安裝的所有物件依序轉到圖示的 12 個姿態；接近每個姿態時會自動採集一個點。俯仰角需超過 45 deg，橫滾角需超過 30 deg。</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Turn the compass to the poses it will be used in and collect a point at each (at least 12); spread the headings evenly.</source>
+        <translation>將羅盤轉到實際使用時的各個姿態，並在每個姿態採集一個點（至少 12 個）；航向角應均勻分佈。</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Start level. Turn 2-3 times about the vertical axis (10-15 s per turn, speeding up and slowing down), then 1-2 times about X and Y (about 10 s per turn), then at random so that every orientation is reached. Up to 96 points.</source>
+        <translation>從水平位置開始。先繞垂直軸轉 2-3 圈（每圈 10-15 s，時快時慢），再繞 X 軸和 Y 軸各轉 1-2 圈（每圈約 10 s），然後隨意轉動，使每個姿態都轉到。最多 96 個點。</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>For roll below 5 deg: keep it nearly level in roll and turn to the 12 headings and pitches shown (pitch beyond 45 deg).</source>
+        <translation>適用於橫滾角小於 5 deg 的情況：橫滾方向保持接近水平，轉到圖示的 12 個航向角和俯仰角（俯仰角超過 45 deg）。</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Place the compass level (pitch and roll below 2 deg) and turn it one full circle slowly and evenly. Up to 12 points.</source>
+        <translation>將羅盤水平放置（俯仰角和橫滾角小於 2 deg），緩慢均勻地旋轉一整圈。最多 12 個點。</translation>
+    </message>
+    <message>
+        <location line="+80" />
+        <source>%1 points collected, at least %2 needed.</source>
+        <translation>已採集 %1 個點，至少需要 %2 個。</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>%1 points collected: you can save the calibration.</source>
+        <translation>已採集 %1 個點：可以儲存校準。</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>Point %1: heading %2 deg, pitch %3..%4 deg, roll %5..%6 deg</source>
+        <translation>第 %1 點：航向角 %2 deg，俯仰角 %3..%4 deg，橫滾角 %5..%6 deg</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <source>All %1 points collected: save the calibration.</source>
+        <translation>%1 個點已全部採集：請儲存校準。</translation>
     </message>
 </context>
 <context>
@@ -349,7 +454,8 @@
         <location line="+9" />
         <source>%n damaged chunk(s) were skipped</source>
         <translation>
-            <numerusform>已略過 %n 個損壞的資料區塊</numerusform></translation>
+            <numerusform>已略過 %n 個損壞的資料區塊</numerusform>
+        </translation>
     </message>
     <message>
         <location line="+4" />
@@ -365,6 +471,94 @@
         <location line="+4" />
         <source>%1 holds no IMU frames to analyse</source>
         <translation>%1 中沒有可分析的 IMU 資料幀</translation>
+    </message>
+</context>
+<context>
+    <name>GyroScaleRun</name>
+    <message>
+        <location filename="../core/calib/gyro_scale_run.cpp" line="+186" />
+        <source>turn %1 ended at %2 deg, not within %3 deg of %4 deg</source>
+        <translation>第 %1 次轉動停在 %2 deg，與 %4 deg 相差超過 %3 deg</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>turn %1 averaged %2 deg/s, outside %3..%4 deg/s</source>
+        <translation>第 %1 次轉動平均 %2 deg/s，超出 %3..%4 deg/s</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>turn %1 paused on the way</source>
+        <translation>第 %1 次轉動中途停頓</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>turn %1 was uneven (rate varied by %2 %)</source>
+        <translation>第 %1 次轉動不均勻（轉速變化 %2 %）</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>the module is tilted %1 deg: place it level</source>
+        <translation>模組傾斜 %1 deg：請水平放置</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Run not finished (%1 of %2 turns done).</source>
+        <translation>本輪未完成（已完成 %1/%2 次轉動）。</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Estimated gyro scale error %1 % (bias %2 deg/s, output rate %3 Hz).</source>
+        <translation>估計陀螺儀標度誤差 %1 %（零偏 %2 deg/s，輸出速率 %3 Hz）。</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>Estimated gyro scale error %1 %, but the run was not clean: %2. Repeat it.</source>
+        <translation>估計陀螺儀標度誤差 %1 %，但本輪操作不合格：%2。請重做。</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>Place the module level on a flat, steady surface, then start.</source>
+        <translation>將模組水平放在平整穩固的表面上，然後開始。</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Hold the module still (%1 of %2 s).</source>
+        <translation>請保持模組靜止（%1/%2 s）。</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>Turn the module %1 deg (%2 turns) at an even 20-100 deg/s, in either direction.</source>
+        <translation>以 20-100 deg/s 的均勻轉速將模組轉動 %1 deg（%2 圈），方向不限。</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Now turn it back the other way, %1 deg, to the same mark.</source>
+        <translation>現在反方向轉回 %1 deg，回到同一標記。</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Stop now: on the mark.</source>
+        <translation>立即停止：已到標記。</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Too far: %1 deg past the target. Stop and repeat the run.</source>
+        <translation>轉過頭：超出目標 %1 deg。請停止並重做。</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Keep turning, a little faster: %1 deg to go.</source>
+        <translation>繼續轉動，稍快一些：還剩 %1 deg。</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Keep turning, a little slower: %1 deg to go.</source>
+        <translation>繼續轉動，稍慢一些：還剩 %1 deg。</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Keep turning evenly: %1 deg to go.</source>
+        <translation>繼續均勻轉動：還剩 %1 deg。</translation>
     </message>
 </context>
 <context>
@@ -1112,6 +1306,271 @@
     </message>
 </context>
 <context>
+    <name>MagCalProcedure</name>
+    <message>
+        <location filename="../core/calib/mag_cal_procedure.cpp" line="+57" />
+        <source>1. Check the field at the calibration spot: hold the module still and read |B|; 20-60 uT is normal. Below 20 or above 60 uT a magnetic object is near: move away from it or choose another place.
+2. Check the rotation: turn about every axis at least 360 deg at 20-100 deg/s, without pausing.
+3. Check for spatial interference: measure |B| at the same spot in different orientations. If it varies by more than 10 uT, choose another place or use 6-axis mode.
+Keep the module in place while turning it, and calibrate it together with everything mounted to it.</source>
+        <translation>1. 檢查校準地點的磁場：保持模組靜止並讀取 |B|；20-60 uT 為正常。低於 20 uT 或高於 60 uT 表示附近有磁性物體：請遠離它或另選地點。
+2. 檢查轉動：以 20-100 deg/s 繞每個軸至少轉動 360 deg，中途不要停頓。
+3. 檢查空間干擾：在同一地點以不同姿態測量 |B|。若變化超過 10 uT，請另選地點或使用 6 軸模式。
+轉動時請讓模組保持在原地，並連同與其一起安裝的所有物件一起校準。</translation>
+    </message>
+    <message>
+        <location line="+17" />
+        <source>Starting the calibration on the device.</source>
+        <translation>正在啟動裝置上的校準。</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>This firmware calibrates in the background in 9-axis mode: turn the module slowly through as many orientations as you can.</source>
+        <translation>此韌體在 9 軸模式下於背景校準：請緩慢轉動模組，盡可能經過更多姿態。</translation>
+    </message>
+    <message>
+        <location line="+22" />
+        <source>The device did not finish the calibration within %1 s.</source>
+        <translation>裝置未在 %1 s 內完成校準。</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>Calibrating: turn the module slowly about every axis.</source>
+        <translation>校準中：請繞每個軸緩慢轉動模組。</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>The device did not answer CONFIG MCAL START: its firmware is older than 1.7.0 or the link is down.</source>
+        <translation>裝置未回應 CONFIG MCAL START：其韌體版本低於 1.7.0，或連線已中斷。</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>The device refused CONFIG MCAL START (%1): it may have no magnetometer.</source>
+        <translation>裝置拒絕 CONFIG MCAL START（%1）：它可能沒有磁力計。</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>The device stopped answering %1 (%2 times in a row).</source>
+        <translation>裝置已停止回應 %1（連續 %2 次）。</translation>
+    </message>
+    <message>
+        <location line="+11" />
+        <source>LOG MAGCONFIG gave no MB line.</source>
+        <translation>LOG MAGCONFIG 未傳回 MB 行。</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <location line="+5" />
+        <source>LOG MAGCONFIG gave an unreadable MB line: %1</source>
+        <translation>LOG MAGCONFIG 傳回無法解讀的 MB 行：%1</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>The device calibrated itself: bias %1, %2, %3 uT.</source>
+        <translation>裝置已自行完成校準：偏移 %1、%2、%3 uT。</translation>
+    </message>
+    <message>
+        <location line="+11" />
+        <source>LOG MCAL STAT gave no STAT line.</source>
+        <translation>LOG MCAL STAT 未傳回 STAT 行。</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>The device is idle: the calibration stopped (was the device restarted?). Start again.</source>
+        <translation>裝置處於閒置狀態：校準已停止（裝置是否已重新啟動？）。請重新開始。</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Calibrating (%1 %): keep turning the module slowly about every axis.</source>
+        <translation>校準中（%1 %）：請繼續繞每個軸緩慢轉動模組。</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Verifying the result: hold the module still.</source>
+        <translation>正在驗證結果：請保持模組靜止。</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>The device reports the calibration done.</source>
+        <translation>裝置回報校準已完成。</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>The device reports the calibration failed (STAT=4).</source>
+        <translation>裝置回報校準失敗（STAT=4）。</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>LOG MCAL STAT gave an unknown state %1.</source>
+        <translation>LOG MCAL STAT 傳回未知狀態 %1。</translation>
+    </message>
+</context>
+<context>
+    <name>MagCalResult</name>
+    <message>
+        <location filename="../core/calib/mag_cal_result.cpp" line="+51" />
+        <source>Pass</source>
+        <translation>通過</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Warning</source>
+        <translation>警告</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Fail</source>
+        <translation>失敗</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Refused</source>
+        <translation>已拒絕</translation>
+    </message>
+</context>
+<context>
+    <name>MagCalibrator</name>
+    <message>
+        <location filename="../core/calib/mag_calibrator.cpp" line="+89" />
+        <source>Only %1 usable samples; a full calibration needs at least %2. Keep turning the module slowly.</source>
+        <translation>僅有 %1 個可用樣本；完整校準至少需要 %2 個。請繼續緩慢轉動模組。</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <source>The samples lie in one plane (the module turned about one axis only), so a full 3-D calibration cannot be computed. Turn the module about its other axes too, or use the 2-D (planar) calibration, which is valid for level operation only.</source>
+        <translation>樣本都位於同一平面（模組只繞一個軸轉動），無法計算完整的三維校準。請讓模組也繞其他軸轉動，或使用二維（平面）校準，但二維校準僅適用於水平使用。</translation>
+    </message>
+    <message>
+        <location line="+12" />
+        <source>Only %1 % of the field directions are covered (at least %2 % are needed, eigenvalue ratio %3, at most %4). %5. A full fit on this data would be unreliable.</source>
+        <translation>磁場方向僅覆蓋 %1 %（至少需要 %2 %；特徵值比 %3，最大 %4）。%5。用這些資料進行完整擬合並不可靠。</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <source>A hard-iron-only fit (soft iron kept from before) is possible.</source>
+        <translation>可以只擬合硬鐵（保留先前的軟鐵參數）。</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>The samples do not describe an ellipsoid (strong interference or a moving magnet nearby). Move away from iron and electronics and calibrate again.</source>
+        <translation>樣本無法構成橢球（附近有強干擾或移動的磁鐵）。請遠離鐵件和電子裝置後重新校準。</translation>
+    </message>
+    <message>
+        <location line="+21" />
+        <source>Only %1 usable samples; the hard-iron fit needs at least %2.</source>
+        <translation>僅有 %1 個可用樣本；硬鐵擬合至少需要 %2 個。</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>The samples are too close to a plane (eigenvalue ratio %1, at most %2) even for a hard-iron fit. Tilt the module more while turning it.</source>
+        <translation>樣本過於接近同一平面（特徵值比 %1，最大 %2），連硬鐵擬合也無法進行。轉動時請讓模組傾斜更多。</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>The hard-iron fit found no solution: check that the samples come from the magnetometer in uT.</source>
+        <translation>硬鐵擬合無解：請確認樣本來自磁力計且單位為 uT。</translation>
+    </message>
+    <message>
+        <location line="+18" />
+        <source>Only %1 usable samples; the 2-D fit needs at least %2. Turn the module a full circle.</source>
+        <translation>僅有 %1 個可用樣本；二維擬合至少需要 %2 個。請將模組轉動一整圈。</translation>
+    </message>
+    <message>
+        <location line="+16" />
+        <source>The horizontal samples do not describe an ellipse: turn the module one full, even circle.</source>
+        <translation>水平樣本無法構成橢圓：請將模組均勻轉動一整圈。</translation>
+    </message>
+    <message>
+        <location line="+41" />
+        <location line="+17" />
+        <source>fit error %1 % is above %2 %</source>
+        <translation>擬合誤差 %1 % 高於 %2 %</translation>
+    </message>
+    <message>
+        <location line="-12" />
+        <source>soft-iron scale %1..%2 is outside %3..%4 (a magnet or iron part very close to the module)</source>
+        <translation>軟鐵縮放係數 %1..%2 超出 %3..%4（有磁鐵或鐵件非常靠近模組）</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>field strength %1 uT is not the earth's field (%2..%3 uT)</source>
+        <translation>磁場強度 %1 uT 不是地磁場（%2..%3 uT）</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>only %1 % of the directions are covered</source>
+        <translation>方向僅覆蓋 %1 %</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>field strength %1 uT is outside the normal %2..%3 uT: move away from magnetic objects</source>
+        <translation>磁場強度 %1 uT 超出正常範圍 %2..%3 uT：請遠離磁性物體</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>hard iron %1 uT is large (over 1.5 times the field): the sensor may saturate</source>
+        <translation>硬鐵 %1 uT 過大（超過磁場的 1.5 倍）：感測器可能飽和</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>%1 of %2 samples were disturbed and set aside</source>
+        <translation>%2 個樣本中有 %1 個受干擾，已剔除</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>field strength %1 uT differs from the expected %2 uT by more than 15 %</source>
+        <translation>磁場強度 %1 uT 與預期的 %2 uT 相差超過 15 %</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>2-D calibration: valid for level operation only; the vertical offset is unknown</source>
+        <translation>二維校準：僅適用於水平使用；垂直方向偏移未知</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>2-D calibration: valid for level operation only</source>
+        <translation>二維校準：僅適用於水平使用</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Calibration failed: %1.</source>
+        <translation>校準失敗：%1。</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Usable with care: %1.</source>
+        <translation>可謹慎使用：%1。</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Good calibration: fit error %1 %, %2 % of the directions covered.</source>
+        <translation>校準良好：擬合誤差 %1 %，方向覆蓋 %2 %。</translation>
+    </message>
+</context>
+<context>
+    <name>MagEnvironmentCheck</name>
+    <message>
+        <location filename="../core/calib/mag_environment_check.cpp" line="+57" />
+        <source>Hold the module at the calibration spot and turn it slowly to a few orientations.</source>
+        <translation>將模組拿在校準地點，緩慢轉到幾個不同姿態。</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>The field is %1 uT (normal: %2..%3 uT) and varies by %4 uT between orientations: you can calibrate here.</source>
+        <translation>磁場為 %1 uT（正常：%2..%3 uT），不同姿態間變化 %4 uT：可以在此校準。</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>The field is %1 uT, outside the normal %2..%3 uT: a strongly magnetic object is near. Move away from it, or choose another place.</source>
+        <translation>磁場為 %1 uT，超出正常範圍 %2..%3 uT：附近有強磁性物體。請遠離它，或另選地點。</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>The field strength varies by %1 uT between orientations (more than %2 uT): there is spatial interference here. Choose another place (outdoors, away from buildings and vehicles), or use 6-axis mode.</source>
+        <translation>不同姿態間磁場強度變化 %1 uT（超過 %2 uT）：此處有空間干擾。請另選地點（戶外，遠離建築物和車輛），或使用 6 軸模式。</translation>
+    </message>
+</context>
+<context>
     <name>ModbusSimulator</name>
     <message>
         <location filename="../core/sim/modbus_simulator.cpp" line="+46" />
@@ -1609,6 +2068,54 @@
     </message>
 </context>
 <context>
+    <name>SampleCsv</name>
+    <message>
+        <location filename="../core/calib/sample_csv.cpp" line="+34" />
+        <source>line %1 is longer than %2 characters</source>
+        <translation>第 %1 行超過 %2 個字元</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <source>line %1 has more than %2 columns</source>
+        <translation>第 %1 行超過 %2 欄</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>line %1: the header has an empty column name</source>
+        <translation>第 %1 行：標題列有空白的欄位名稱</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>line %1: a header row of column names is required (e.g. mag_x,mag_y,mag_z)</source>
+        <translation>第 %1 行：必須有欄位名稱標題列（例如 mag_x,mag_y,mag_z）</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <source>line %1 has %2 values, the header has %3 columns</source>
+        <translation>第 %1 行有 %2 個值，標題列有 %3 欄</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>more than %1 rows</source>
+        <translation>超過 %1 列</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>line %1, column %2: '%3' is not a number</source>
+        <translation>第 %1 行第 %2 欄：「%3」不是數字</translation>
+    </message>
+    <message>
+        <location line="+9" />
+        <source>the file is empty: a header row and samples are needed</source>
+        <translation>檔案為空：需要標題列和樣本</translation>
+    </message>
+    <message>
+        <location line="+25" />
+        <source>the columns mag_x, mag_y and mag_z (uT) are needed; the header has: %1</source>
+        <translation>需要 mag_x、mag_y 和 mag_z 欄（uT）；標題列包含：%1</translation>
+    </message>
+</context>
+<context>
     <name>SerialByteLink</name>
     <message>
         <location filename="../core/firmware/serial_byte_link.cpp" line="+25" />
@@ -2076,6 +2583,19 @@
     </message>
 </context>
 <context>
+    <name>SphereCoverage</name>
+    <message>
+        <location filename="../core/calib/sphere_coverage.cpp" line="+120" />
+        <source>Turn the module slowly about each of its axes: no direction is covered yet</source>
+        <translation>請繞模組各軸緩慢轉動：尚未覆蓋任何方向</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>Turn the module so that its %1%2 axis points along the magnetic field (towards north and, in the northern hemisphere, down)</source>
+        <translation>轉動模組，使其 %1%2 軸沿磁場方向（指向北方，在北半球還要朝下）</translation>
+    </message>
+</context>
+<context>
     <name>UpdateFlow</name>
     <message>
         <location filename="../core/firmware/update_flow.cpp" line="+35" />
@@ -2397,6 +2917,59 @@
         <location line="+23" />
         <source>the file is empty: no HI91 CSV header</source>
         <translation>檔案為空：沒有 HI91 CSV 表頭</translation>
+    </message>
+</context>
+<context>
+    <name>imudesk::calib::GyroCalSession</name>
+    <message>
+        <location filename="../core/calib/gyro_cal_session.cpp" line="+23" />
+        <source>The angle must be %1..%2 deg (2 to 5 turns); %3 is not.</source>
+        <translation>角度必須在 %1..%2 deg 之間（2 至 5 圈）；%3 不符合。</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>A gyro calibration is already running.</source>
+        <translation>陀螺儀校準已在進行中。</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>Starting the gyro calibration (%1 deg).</source>
+        <translation>正在啟動陀螺儀校準（%1 deg）。</translation>
+    </message>
+    <message>
+        <location line="+9" />
+        <source>Stopping the gyro calibration.</source>
+        <translation>正在停止陀螺儀校準。</translation>
+    </message>
+    <message>
+        <location line="+22" />
+        <source>Turn the module %1 deg at an even 20-100 deg/s, then stop on the mark.</source>
+        <translation>以 20-100 deg/s 的均勻轉速將模組轉動 %1 deg，然後停在標記處。</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>The device did not answer CONFIG USRCAL START: check the link.</source>
+        <translation>裝置未回應 CONFIG USRCAL START：請檢查連線。</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>The device refused CONFIG USRCAL START %1 (%2).</source>
+        <translation>裝置拒絕 CONFIG USRCAL START %1（%2）。</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>The device accepted the calibration (OK).</source>
+        <translation>裝置已接受校準（OK）。</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>The device did not answer CONFIG USRCAL STOP: check the link, then repeat.</source>
+        <translation>裝置未回應 CONFIG USRCAL STOP：請檢查連線後重試。</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>The device rejected the run (ERR): the angle turned was not within 5 deg of %1 deg, or the rate was outside 20-100 deg/s or uneven. Repeat it.</source>
+        <translation>裝置拒絕本輪結果（ERR）：轉動角度與 %1 deg 相差超過 5 deg，或轉速超出 20-100 deg/s 或不均勻。請重做。</translation>
     </message>
 </context>
 <context>
@@ -3183,11 +3756,11 @@
     </message>
     <message>
         <location line="+5" />
-        <source>No permission to open %1. On Linux add your user to the dialout group (sudo usermod -aG dialout $USER), then log out and in again.</source>
-        <translation>沒有開啟 %1 的權限。在 Linux 上請將目前使用者加入 dialout 群組（sudo usermod -aG dialout $USER），然後登出再重新登入。</translation>
+        <source>No permission to open %1. On Linux add your user to the dialout group (sudo usermod -aG dialout $USER), then log out and in again; or install the udev rule from ImuDesk's README (60-imudesk-serial.rules).</source>
+        <translation>沒有開啟 %1 的權限。在 Linux 上請將使用者加入 dialout 群組（sudo usermod -aG dialout $USER），然後登出再重新登入；或安裝 ImuDesk README 中的 udev 規則（60-imudesk-serial.rules）。</translation>
     </message>
     <message>
-        <location line="+8" />
+        <location line="+9" />
         <source>Could not open %1: %2</source>
         <translation>無法開啟 %1：%2</translation>
     </message>
@@ -3243,6 +3816,64 @@
         <location line="+1" />
         <source>This frame corresponds to a SYNC_OUT pulse.</source>
         <translation>該幀對應一個 SYNC_OUT 脈衝。</translation>
+    </message>
+</context>
+<context>
+    <name>imudesk::models::CalibrationHistoryModel</name>
+    <message>
+        <location filename="../core/models/calibration_history_model.cpp" line="+41" />
+        <source>Magnetometer</source>
+        <translation>磁力計</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Gyro scale factor</source>
+        <translation>陀螺儀標度因數</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Attitude reset</source>
+        <translation>姿態重設</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Compass (HEC495)</source>
+        <translation>羅盤（HEC495）</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <source>|B| %1 uT, fit error %2 %, coverage %3 %</source>
+        <translation>|B| %1 uT，擬合誤差 %2 %，覆蓋率 %3 %</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>scale error %1 %</source>
+        <translation>標度誤差 %1 %</translation>
+    </message>
+    <message>
+        <location line="+35" />
+        <source>Time</source>
+        <translation>時間</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Calibration</source>
+        <translation>校準</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Verdict</source>
+        <translation>判定</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Result</source>
+        <translation>結果</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Firmware</source>
+        <translation>韌體</translation>
     </message>
 </context>
 <context>
@@ -3789,7 +4420,8 @@
         <location line="+3" />
         <source>%n damaged chunk(s) skipped</source>
         <translation>
-            <numerusform>已略過 %n 個損壞區塊</numerusform></translation>
+            <numerusform>已略過 %n 個損壞區塊</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -4047,6 +4679,126 @@
         <location line="+3" />
         <source>σ(τ) (deg/s for gyro, G for acc)</source>
         <translation>σ(τ)（陀螺儀為 deg/s，加速度計為 G）</translation>
+    </message>
+</context>
+<context>
+    <name>imudesk::ui::AttitudeResetWizard</name>
+    <message>
+        <location filename="../ui/attitude_reset_wizard.cpp" line="+21" />
+        <source>Heading reset: the current heading becomes 0. Keep the module still. (Firmware 1.7.1 and later.)</source>
+        <translation>航向角重設：目前航向角歸零。請保持模組靜止。（韌體 1.7.1 及以上版本。）</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Relative zero: the current pitch and roll become 0, whatever they are. Keep the module still in the pose that should read level. CONFIG ATT RST 5 undoes it.</source>
+        <translation>相對歸零：無論目前的俯仰角和橫滾角為何，都設為 0。請讓模組靜止在應視為水平的姿態。CONFIG ATT RST 5 可撤銷。</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Auto level: only when the module lies nearly level (pitch and roll within 5 deg), or upside down (roll within 5 deg of 180): it is levelled to 0/0 or 0/180. Permanent: RST 5 does not undo it. Keep the module still.</source>
+        <translation>自動調平：僅在模組接近水平（俯仰角和橫滾角在 5 deg 以內）或倒置（橫滾角與 180 相差 5 deg 以內）時有效：調平到 0/0 或 0/180。永久生效：RST 5 無法撤銷。請保持模組靜止。</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Cancel levelling: clears the relative pitch and roll set by RST 2; the absolute angles come back.</source>
+        <translation>取消調平：清除 RST 2 設定的相對俯仰角和橫滾角，恢復絕對角度。</translation>
+    </message>
+    <message>
+        <location line="+13" />
+        <source>Attitude reset and level</source>
+        <translation>姿態重設與調平</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>What to reset</source>
+        <translation>重設項目</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Heading reset (ATT RST 1)</source>
+        <translation>航向角重設（ATT RST 1）</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Relative zero of pitch and roll (ATT RST 2)</source>
+        <translation>俯仰角與橫滾角相對歸零（ATT RST 2）</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Auto level (ATT RST 3)</source>
+        <translation>自動調平（ATT RST 3）</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Cancel levelling (ATT RST 5)</source>
+        <translation>取消調平（ATT RST 5）</translation>
+    </message>
+    <message>
+        <location line="+15" />
+        <source>Hold the module still</source>
+        <translation>保持模組靜止</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Send</source>
+        <translation>傳送</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <source>Result</source>
+        <translation>結果</translation>
+    </message>
+    <message>
+        <location line="+57" />
+        <source>not still yet (%1 of %2 s)</source>
+        <translation>尚未靜止（%1/%2 s）</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>not level: pitch %1, roll %2 deg (each must be within %3 deg of level or upside down)</source>
+        <translation>未水平：俯仰角 %1，橫滾角 %2 deg（兩者與水平或倒置的偏差都必須在 %3 deg 以內）</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>Roll %1, pitch %2, yaw %3 deg; gyro spread %4 deg/s.
+%5</source>
+        <translation>橫滾角 %1，俯仰角 %2，航向角 %3 deg；陀螺儀波動 %4 deg/s。
+%5</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>Ready: send CONFIG ATT RST %1.</source>
+        <translation>就緒：傳送 CONFIG ATT RST %1。</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Waiting: %1.</source>
+        <translation>等待中：%1。</translation>
+    </message>
+    <message>
+        <location line="+18" />
+        <source>The device accepted CONFIG ATT RST %1 (OK).</source>
+        <translation>裝置已接受 CONFIG ATT RST %1（OK）。</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>The device did not answer CONFIG ATT RST %1: its firmware may not know this variant.</source>
+        <translation>裝置未回應 CONFIG ATT RST %1：其韌體可能不支援此選項。</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The device refused CONFIG ATT RST %1 (ERR).</source>
+        <translation>裝置拒絕 CONFIG ATT RST %1（ERR）。</translation>
+    </message>
+    <message>
+        <location line="+12" />
+        <source>Nothing was sent.</source>
+        <translation>未傳送任何內容。</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Attitude now: roll %1, pitch %2, yaw %3 deg. Save it with SAVECONFIG if it should survive a restart (RST 2).</source>
+        <translation>目前姿態：橫滾角 %1，俯仰角 %2，航向角 %3 deg。若需在重新啟動後保留（RST 2），請以 SAVECONFIG 儲存。</translation>
     </message>
 </context>
 <context>
@@ -5611,7 +6363,8 @@ Link load = bytes per second × 10 bits / baud rate.</source>
         <location line="+6" />
         <source>%n row(s) written to %1</source>
         <translation>
-            <numerusform>已將 %n 列寫入 %1</numerusform></translation>
+            <numerusform>已將 %n 列寫入 %1</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -5767,6 +6520,99 @@ Link load = bytes per second × 10 bits / baud rate.</source>
         <location line="+11" />
         <source>Cancel</source>
         <translation>取消</translation>
+    </message>
+</context>
+<context>
+    <name>imudesk::ui::GyroScaleWizard</name>
+    <message>
+        <location filename="../ui/gyro_scale_wizard.cpp" line="+21" />
+        <source>Gyro scale factor calibration</source>
+        <translation>陀螺儀標度因數校準</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Preparation</source>
+        <translation>準備</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>&lt;ul&gt;&lt;li&gt;Place the module, with the robot or vehicle it is fixed to, on a level, flat floor.&lt;/li&gt;&lt;li&gt;Keep the temperature steady and avoid vibration (motors off).&lt;/li&gt;&lt;li&gt;Mark the start position: you must stop on the same mark, within 5 deg.&lt;/li&gt;&lt;li&gt;Turn at an even 20-100 deg/s (5-20 s per turn), in either direction, without pausing.&lt;/li&gt;&lt;li&gt;More turns give a smaller error: 720 deg (2 turns) to 1800 deg (5 turns).&lt;/li&gt;&lt;/ul&gt;Keep the module still for a few seconds after pressing Start: ImuDesk measures the gyro bias first.</source>
+        <translation>&lt;ul&gt;&lt;li&gt;將模組連同其固定的機器人或車輛放在水平、平整的地面上。&lt;/li&gt;&lt;li&gt;保持溫度穩定並避免振動（關閉馬達）。&lt;/li&gt;&lt;li&gt;標記起始位置：必須停在同一標記處，誤差在 5 deg 以內。&lt;/li&gt;&lt;li&gt;以 20-100 deg/s 的均勻轉速轉動（每圈 5-20 s），方向不限，中途不要停頓。&lt;/li&gt;&lt;li&gt;圈數越多誤差越小：720 deg（2 圈）至 1800 deg（5 圈）。&lt;/li&gt;&lt;/ul&gt;按下「開始」後請保持模組靜止幾秒：ImuDesk 會先測量陀螺儀零偏。</translation>
+    </message>
+    <message>
+        <location line="+11" />
+        <source>Turn the module</source>
+        <translation>轉動模組</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source> deg</source>
+        <translation> deg</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Start</source>
+        <translation>開始</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Stop</source>
+        <translation>停止</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <source>%v of %m deg</source>
+        <translation>%v / %m deg</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>rate %v deg/s (band 20-100)</source>
+        <translation>轉速 %v deg/s（範圍 20-100）</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>Angle:</source>
+        <translation>角度：</translation>
+    </message>
+    <message>
+        <location line="+15" />
+        <source>Result</source>
+        <translation>結果</translation>
+    </message>
+    <message>
+        <location line="+67" />
+        <source>%1 deg turned (%2 turns), rate %3 deg/s %4</source>
+        <translation>已轉動 %1 deg（%2 圈），轉速 %3 deg/s %4</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>(in band)</source>
+        <translation>（範圍內）</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>(outside 20-100 deg/s)</source>
+        <translation>（超出 20-100 deg/s）</translation>
+    </message>
+    <message>
+        <location line="+23" />
+        <source>The device accepted the calibration (OK).</source>
+        <translation>裝置已接受校準（OK）。</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>The device rejected the run (ERR).</source>
+        <translation>裝置拒絕本輪結果（ERR）。</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>ImuDesk's estimate from the same samples: %1</source>
+        <translation>ImuDesk 根據相同樣本的估計：%1</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>ImuDesk saw no complete turn, so it has no estimate of its own.</source>
+        <translation>ImuDesk 未偵測到完整的轉動，因此無法自行估計。</translation>
     </message>
 </context>
 <context>
@@ -5929,6 +6775,175 @@ Link load = bytes per second × 10 bits / baud rate.</source>
     </message>
 </context>
 <context>
+    <name>imudesk::ui::MagCalibrationWizard</name>
+    <message>
+        <location filename="../ui/mag_calibration_wizard.cpp" line="+39" />
+        <source>Magnetometer calibration</source>
+        <translation>地磁校準</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Before you start</source>
+        <translation>開始之前</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Calibrate the magnetometer when you use the 9-axis (AHRS) mode, where the heading follows magnetic north. Without a magnetometer calibration, or where the field is disturbed, use the 6-axis mode instead.
+
+Best: outdoors in an open space, more than 5 m from buildings and vehicles. Acceptable: indoors, more than 30 cm from iron furniture, monitors, motors, transformers, chargers and phones.
+
+If the module is mounted on a PCB, in a housing or on a robot, calibrate it together with them, as one rigid body: calibrating the module alone does not help once it is mounted.</source>
+        <translation>使用 9 軸（AHRS）模式時請進行地磁校準，此模式下航向角以磁北為基準。未進行地磁校準或磁場受干擾時，請改用 6 軸模式。
+
+最佳：戶外空曠處，距建築物和車輛 5 m 以上。可接受：室內，距鐵製家具、顯示器、馬達、變壓器、充電器和手機 30 cm 以上。
+
+若模組安裝在 PCB 上、外殼內或機器人上，請將它們作為一個剛體一起校準：模組安裝後，單獨校準模組並無幫助。</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <source>Working mode</source>
+        <translation>工作模式</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The calibration needs the 9-axis (AHRS) mode, CONFIG ATT MODE 1 (the factory setting). If the module runs in a 6-axis mode, switch it: ImuDesk sends CONFIG ATT MODE 1, SAVECONFIG and REBOOT.</source>
+        <translation>校準需要 9 軸（AHRS）模式，即 CONFIG ATT MODE 1（出廠設定）。若模組處於 6 軸模式，請切換：ImuDesk 會傳送 CONFIG ATT MODE 1、SAVECONFIG 和 REBOOT。</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Switch to 9-axis mode</source>
+        <translation>切換到 9 軸模式</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>Environment check</source>
+        <translation>環境檢查</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Hold the module at the calibration spot and turn it to a few orientations. The field must be 20-60 uT and vary by no more than 10 uT between orientations.</source>
+        <translation>將模組拿在校準地點，轉到幾個不同姿態。磁場必須在 20-60 uT 之間，且不同姿態間的變化不超過 10 uT。</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <source>Turn the module</source>
+        <translation>轉動模組</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Keep it in place and turn it slowly (20-100 deg/s) at least one full turn about each axis, until the sphere is green all over. Usually 30-60 s.</source>
+        <translation>讓模組保持在原地，繞每個軸緩慢轉動（20-100 deg/s）至少一整圈，直到球面全部變綠。通常需要 30-60 s。</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>Start the device's calibration</source>
+        <translation>啟動裝置校準</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>Fit ImuDesk's calibration now</source>
+        <translation>立即以 ImuDesk 擬合校準</translation>
+    </message>
+    <message>
+        <location line="+11" />
+        <source>Result</source>
+        <translation>結果</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>Heading check</source>
+        <translation>航向角檢查</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Place the module level and turn it slowly one full turn (360 deg). The heading must change continuously, without jumps of more than 10 deg; within +-5 deg of the true directions is acceptable.</source>
+        <translation>將模組水平放置並緩慢轉動一整圈（360 deg）。航向角必須連續變化，不得跳變超過 10 deg；與真實方向相差 +-5 deg 以內即可接受。</translation>
+    </message>
+    <message>
+        <location line="+13" />
+        <source>Device: STAT=%1 PROGRESS=%2
+%3</source>
+        <translation>裝置：STAT=%1 PROGRESS=%2
+%3</translation>
+    </message>
+    <message>
+        <location line="+70" />
+        <source>Turned %1 deg, largest step %2 deg: %3</source>
+        <translation>已轉動 %1 deg，最大跳變 %2 deg：%3</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>the heading follows the turn smoothly.</source>
+        <translation>航向角隨轉動平穩變化。</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>the heading jumps: calibrate again (chapter 9.31).</source>
+        <translation>航向角出現跳變：請重新校準（第 9.31 章）。</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>keep turning.</source>
+        <translation>請繼續轉動。</translation>
+    </message>
+    <message>
+        <location line="+21" />
+        <source>No fit yet.</source>
+        <translation>尚未擬合。</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Verdict: %1
+%2
+
+</source>
+        <translation>判定：%1
+%2
+
+</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Hard iron: %1, %2, %3 uT
+Field: %4 uT
+Fit error: %5 %
+Residual RMS: %6 uT
+</source>
+        <translation>硬鐵：%1、%2、%3 uT
+磁場：%4 uT
+擬合誤差：%5 %
+殘差 RMS：%6 uT
+</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>Coverage: %1 %
+Eigenvalue ratio: %2
+Samples: %3</source>
+        <translation>覆蓋率：%1 %
+特徵值比：%2
+樣本數：%3</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>What to check:</source>
+        <translation>檢查事項：</translation>
+    </message>
+</context>
+<context>
+    <name>imudesk::ui::MagSphereView</name>
+    <message>
+        <location filename="../ui/mag_sphere_view.cpp" line="+23" />
+        <source>Magnetometer samples on a sphere: cells turn green as the field directions cover them. Drag to turn the view, double-click to reset it.</source>
+        <translation>球面上的磁力計樣本：磁場方向覆蓋到的格子會變綠。拖曳可旋轉檢視，按兩下可重設檢視。</translation>
+    </message>
+    <message>
+        <location line="+158" />
+        <source>|B| %1 uT   coverage %2 %   %3 samples</source>
+        <translation>|B| %1 uT   覆蓋率 %2 %   %3 個樣本</translation>
+    </message>
+</context>
+<context>
     <name>imudesk::ui::MainWindow</name>
     <message>
         <location filename="../ui/main_window.cpp" line="+288" />
@@ -5976,7 +6991,7 @@ Link load = bytes per second × 10 bits / baud rate.</source>
         <translation>PNG 影像 (*.png)</translation>
     </message>
     <message>
-        <location line="+63" />
+        <location line="+64" />
         <source>&amp;File</source>
         <translation>檔案(&amp;F)</translation>
     </message>
@@ -6250,7 +7265,8 @@ Link load = bytes per second × 10 bits / baud rate.</source>
         <location line="+28" />
         <source>Cancelled; %n device(s) found so far.</source>
         <translation>
-            <numerusform>已取消；目前已找到 %n 台裝置。</numerusform></translation>
+            <numerusform>已取消；目前已找到 %n 台裝置。</numerusform>
+        </translation>
     </message>
     <message>
         <location line="+2" />
@@ -6261,7 +7277,8 @@ Link load = bytes per second × 10 bits / baud rate.</source>
         <location line="+2" />
         <source>%n device(s) found.</source>
         <translation>
-            <numerusform>已找到 %n 台裝置。</numerusform></translation>
+            <numerusform>已找到 %n 台裝置。</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -6757,7 +7774,8 @@ Link load = bytes per second × 10 bits / baud rate.</source>
         <location line="+5" />
         <source>%n frame(s)</source>
         <translation>
-            <numerusform>%n 幀</numerusform></translation>
+            <numerusform>%n 幀</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -6882,7 +7900,7 @@ Link load = bytes per second × 10 bits / baud rate.</source>
 <context>
     <name>imudesk::ui::ToolActions</name>
     <message>
-        <location filename="../ui/tool_actions.cpp" line="+85" />
+        <location filename="../ui/tool_actions.cpp" line="+96" />
         <source>&amp;Open capture…</source>
         <translation>開啟記錄檔(&amp;O)…</translation>
     </message>
@@ -7002,12 +8020,47 @@ Link load = bytes per second × 10 bits / baud rate.</source>
         <translation>顯示此裝置的記錄控制項</translation>
     </message>
     <message>
+        <location line="+1" />
+        <source>&amp;Magnetometer…</source>
+        <translation>磁力計(&amp;M)…</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Calibrate the magnetometer: turn the module while the sphere fills, then judge the fit</source>
+        <translation>地磁校準：轉動模組直到球面填滿，然後評估擬合結果</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>&amp;Gyro scale factor…</source>
+        <translation>陀螺儀標度因數(&amp;G)…</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Turn the module a known angle about Z to correct the gyro's scale (CONFIG USRCAL)</source>
+        <translation>將模組繞 Z 軸轉動已知角度，以修正陀螺儀標度（CONFIG USRCAL）</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>&amp;Attitude reset / level…</source>
+        <translation>姿態重設/調平(&amp;A)…</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Zero the heading or level the module (ATT RST), after checking that it is still</source>
+        <translation>確認模組靜止後，將航向角歸零或將模組調平（ATT RST）</translation>
+    </message>
+    <message>
         <location line="+2" />
         <source>&amp;Tools</source>
         <translation>工具(&amp;T)</translation>
     </message>
     <message>
-        <location line="+35" />
+        <location line="+2" />
+        <source>&amp;Calibrate</source>
+        <translation>校準(&amp;C)</translation>
+    </message>
+    <message>
+        <location line="+39" />
         <source>%1 could not be imported: %2</source>
         <translation>無法匯入 %1：%2</translation>
     </message>
@@ -7061,7 +8114,7 @@ Link load = bytes per second × 10 bits / baud rate.</source>
 <context>
     <name>main</name>
     <message>
-        <location filename="../app/gui/main.cpp" line="+82" />
+        <location filename="../app/gui/main.cpp" line="+87" />
         <source>ImuDesk: a bench tool for HiPNUC IMU modules.</source>
         <translation>ImuDesk：HiPNUC IMU 模組測試工具。</translation>
     </message>
@@ -7111,7 +8164,17 @@ Link load = bytes per second × 10 bits / baud rate.</source>
         <translation>執行 --screenshot 前等待的秒數（預設 3）。</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+4" />
+        <source>Start connected to another simulated device: hec495 (compass on serial), modbus (HI14 over Modbus RTU), can (HI14 J1939 on virtualcan) or canopen (HI14 CANopen on virtualcan); or replay a capture file.</source>
+        <translation>啟動後連線到其他模擬裝置：hec495（串列埠上的羅盤）、modbus（透過 Modbus RTU 連線的 HI14）、can（virtualcan 上的 HI14 J1939）或 canopen（virtualcan 上的 HI14 CANopen）；或重播記錄檔。</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>Bring this panel to the front: configuration, recording, console, raw or commands.</source>
+        <translation>將此面板移到最前面：configuration（配置）、recording（記錄）、console（主控台）、raw（原始位元組）或 commands（指令日誌）。</translation>
+    </message>
+    <message>
+        <location line="+6" />
         <source>Model to simulate with --simulate (default HI14).</source>
         <translation>--simulate 模擬的型號（預設 HI14）。</translation>
     </message>
@@ -7147,8 +8210,14 @@ Link load = bytes per second × 10 bits / baud rate.</source>
     </message>
     <message>
         <location line="+20" />
+        <location line="+21" />
         <source>ImuDesk</source>
         <translation>ImuDesk</translation>
+    </message>
+    <message>
+        <location line="+12" />
+        <source>Unknown panel "%1"; use configuration, recording, console, raw or commands.</source>
+        <translation>未知的面板「%1」；請使用 configuration、recording、console、raw 或 commands。</translation>
     </message>
 </context>
 </TS>

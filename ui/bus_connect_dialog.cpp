@@ -7,6 +7,7 @@
 #include <QDialogButtonBox>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
+#include <QPushButton>
 #include <QSerialPortInfo>
 #include <QSpinBox>
 #include <QVBoxLayout>

@@ -4,11 +4,20 @@
 // decoded and lost, chart refreshes per second, GUI-thread busy time (% of one core)
 // and peak resident memory, each against its target, measured in this run.
 //
-// usage: bench_gui_live [--seconds N] (default 60). Exit code 1 only when frames were lost.
+// usage: bench_gui_live [--seconds N] [--record DIR] (default 60 s, no recording).
+//        soak [--seconds N] [--record DIR] (the same run, by default one hour and recording
+//        to a temporary folder: frames recorded, resident memory at start and end, GUI
+//        stalls over 100 ms).
+// Exit code 1 only when frames were lost (or the recording is damaged).
 #include "chart_panel.h"
 #include "device_workspace.h"
 #include "main_window.h"
+#include "record/capture_reader.h"
 #include "sim/pty_simulator.h"
+
+#include <QDir>
+#include <QFile>
+#include <QTemporaryDir>
 
 #include <QApplication>
 #include <QElapsedTimer>
@@ -30,6 +39,34 @@ double threadCpuSeconds()
     clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
     return double(ts.tv_sec) + double(ts.tv_nsec) / 1e9;
 }
+
+double currentRssMiB()
+{
+    QFile statm(QStringLiteral("/proc/self/statm"));
+    if (!statm.open(QIODevice::ReadOnly))
+        return 0;
+    const QList<QByteArray> parts = statm.readAll().split(' ');
+    return parts.size() > 1 ? parts[1].toDouble() * 4096.0 / (1024.0 * 1024.0) : 0;
+}
+
+// Gaps of the GUI thread's event loop: a 10 ms timer that notes how late it ran.
+struct StallWatch {
+    QTimer timer;
+    QElapsedTimer clock;
+    qint64 worstMs = 0;
+    int over100 = 0;
+    StallWatch()
+    {
+        timer.setInterval(10);
+        QObject::connect(&timer, &QTimer::timeout, &timer, [this] {
+            const qint64 gap = clock.restart();
+            worstMs = std::max(worstMs, gap);
+            over100 += gap > 100 ? 1 : 0;
+        });
+        clock.start();
+        timer.start();
+    }
+};
 
 double peakRssMiB()
 {
@@ -75,10 +112,27 @@ int main(int argc, char **argv)
 {
     qputenv("QT_QPA_PLATFORM", "offscreen");
     QApplication app(argc, argv);
+#ifdef IMUDESK_SOAK
+    const char *name = "soak";
+    int seconds = 3600;
+    bool record = true;
+#else
+    const char *name = "bench_gui_live";
     int seconds = 60;
-    for (int i = 1; i + 1 < argc; ++i)
+    bool record = false;
+#endif
+    QString recordDir;
+    for (int i = 1; i + 1 < argc; ++i) {
         if (QByteArray(argv[i]) == "--seconds")
             seconds = std::max(5, QByteArray(argv[i + 1]).toInt());
+        if (QByteArray(argv[i]) == "--record") {
+            record = true;
+            recordDir = QString::fromLocal8Bit(argv[i + 1]);
+        }
+    }
+    QTemporaryDir scratch;
+    if (record && recordDir.isEmpty())
+        recordDir = scratch.path();
 
     ui::MainWindow window;
     window.resize(1280, 860);
@@ -88,14 +142,14 @@ int main(int argc, char **argv)
     options.motion = sim::Motion::Tumble;
     QString error;
     if (!window.connectSimulated(options, 921600, &error)) {
-        std::fprintf(stderr, "bench_gui_live: %s\n", qPrintable(error));
+        std::fprintf(stderr, "%s: %s\n", name, qPrintable(error));
         return 1;
     }
     ui::DeviceWorkspace *ws = window.currentWorkspace();
     for (int waited = 0; ws->state() != device::SessionState::Connected && waited < 10000; waited += 50)
         spin(50);
     if (ws->state() != device::SessionState::Connected) {
-        std::fprintf(stderr, "bench_gui_live: could not connect to the simulator\n");
+        std::fprintf(stderr, "%s: could not connect to the simulator\n", name);
         return 1;
     }
     device::DeviceSession &session = ws->session();
@@ -116,20 +170,57 @@ int main(int argc, char **argv)
     const uint64_t ptyDrops0 = simulator->stats().chunksDropped;
     const int refresh0 = ws->chartPanel()->refreshCount();
 
+    const QString capturePath = QDir(recordDir).filePath(QStringLiteral("soak.imucap"));
+    quint64 recordedFrames = 0, recordedBytes = 0;
+    QString recordStop;
+    bool recordStopped = false;
+    if (record) {
+        QObject::connect(&session, &device::DeviceSession::recordingProgress, &session,
+                         [&](quint64 bytes, quint64 frames) {
+                             recordedBytes = bytes;
+                             recordedFrames = frames;
+                         });
+        QObject::connect(&session, &device::DeviceSession::recordingStopped, &session, [&](const QString &reason) {
+            recordStop = reason;
+            recordStopped = true;
+        });
+        session.startRecording(capturePath);
+        spin(200);
+    }
     if (!command(session, QStringLiteral("LOG HI91 ONTIME 0.001"))) {
-        std::fprintf(stderr, "bench_gui_live: LOG HI91 ONTIME 0.001 was not acknowledged\n");
+        std::fprintf(stderr, "%s: LOG HI91 ONTIME 0.001 was not acknowledged\n", name);
         return 1;
     }
+    // Warm-up (buffers, chart history filling), then the measured run.
+    spin(std::min(30, seconds / 4) * 1000);
+    const double rssStart = currentRssMiB();
+    StallWatch stalls;
     const double cpu0 = threadCpuSeconds();
     QElapsedTimer wall;
     wall.start();
     spin(seconds * 1000);
+    const double rssEnd = currentRssMiB();
     const double wallS = double(wall.nsecsElapsed()) / 1e9;
     const double cpuS = threadCpuSeconds() - cpu0;
     const int refreshes = ws->chartPanel()->refreshCount() - refresh0;
 
     command(session, QStringLiteral("LOG HI91 ONTIME 0"));
     spin(500); // let the last frames arrive
+    bool captureIntact = true;
+    quint64 captureBytes = 0;
+    if (record) {
+        session.stopRecording();
+        for (int waited = 0; !recordStopped && waited < 10000; waited += 50)
+            spin(50);
+        record::CaptureReader reader;
+        QString why;
+        captureIntact = recordStopped && recordStop.isEmpty() && reader.open(capturePath, &why);
+        record::CaptureReader::Chunk chunk;
+        record::CaptureReader::Result r = record::CaptureReader::Result::Error;
+        while (captureIntact && (r = reader.next(chunk)) == record::CaptureReader::Result::Chunk)
+            captureBytes += chunk.size;
+        captureIntact = captureIntact && r == record::CaptureReader::Result::End;
+    }
     uint64_t queued1 = 0, uartDrops1 = 0;
     simulator->withDevice([&](sim::HipnucSimulator &d) {
         queued1 = d.framesQueued();
@@ -144,11 +235,11 @@ int main(int argc, char **argv)
     const double busy = 100.0 * cpuS / wallS;
     const double rss = peakRssMiB();
 
-    const bool okLost = lost == 0 && uartDrops == 0 && ptyDrops == 0;
+    const bool okLost = lost == 0 && uartDrops == 0 && ptyDrops == 0 && captureIntact;
     const bool okRefresh = refreshRate >= 30.0;
     const bool okBusy = busy < 30.0;
-    std::printf("bench_gui_live: HI91 at 1000 Hz, 921600 baud, %d s, GUI offscreen (charts, attitude, table)\n",
-                seconds);
+    std::printf("%s: HI91 at 1000 Hz, 921600 baud, %d s, GUI offscreen (charts, attitude, table)%s\n", name, seconds,
+                record ? ", recording" : "");
     std::printf("  %-34s %12llu\n", "frames sent by the module", (unsigned long long)sent);
     std::printf("  %-34s %12llu\n", "frames decoded", (unsigned long long)decoded);
     std::printf("  %-34s %12llu   target 0  %s\n", "frames lost", (unsigned long long)lost, okLost ? "ok" : "MISSED");
@@ -159,6 +250,19 @@ int main(int argc, char **argv)
     std::printf("  %-34s %11.1f%%   target < 30 %%  %s\n", "GUI thread busy (one core)", busy,
                 okBusy ? "ok" : "MISSED");
     std::printf("  %-34s %10.1f MiB\n", "peak resident memory", rss);
+    const double growthPerHour = (rssEnd - rssStart) * 3600.0 / std::max(1.0, wallS);
+    std::printf("  %-34s %10.1f MiB -> %.1f MiB (%+.1f MiB per hour)   target < 5 MiB/h  %s\n",
+                "resident memory after warm-up / end", rssStart, rssEnd, growthPerHour,
+                growthPerHour < 5.0 ? "ok" : "MISSED");
+    std::printf("  %-34s %12d   worst %lld ms   target 0  %s\n", "GUI-thread stalls over 100 ms", stalls.over100,
+                (long long)stalls.worstMs, stalls.over100 == 0 ? "ok" : "MISSED");
+    if (record) {
+        std::printf("  %-34s %12llu   (%llu bytes written, %llu read back)\n", "frames recorded",
+                    (unsigned long long)recordedFrames, (unsigned long long)recordedBytes,
+                    (unsigned long long)captureBytes);
+        std::printf("  %-34s %12s   %s\n", "capture intact (reads to its end)", captureIntact ? "yes" : "NO",
+                    captureIntact ? "ok" : "MISSED");
+    }
     std::printf("  %-34s %12.1f Hz\n", "decoded rate", decoded / wallS);
     std::printf("targets: %s\n", okLost && okRefresh && okBusy ? "all met" : "NOT all met (see MISSED above)");
     window.close();

@@ -1,6 +1,15 @@
 // The translations are complete: no .ts entry is unfinished or obsolete, and under zh_CN
 // no English word is left in the main window, its docks and menus, or the dialogs.
+#include "attitude_reset_wizard.h"
+#include "bandwidth_calculator.h"
+#include "bus_connect_dialog.h"
 #include "device_workspace.h"
+#include "export_dialog.h"
+#include "firmware_update_dialog.h"
+#include "gyro_scale_wizard.h"
+#include "analysis_window.h"
+#include "mag_calibration_wizard.h"
+#include "profile_dialog.h"
 #include "language_switcher.h"
 #include "main_window.h"
 #include "preferences_dialog.h"
@@ -22,6 +31,7 @@
 #include <QTabBar>
 #include <QTest>
 #include <QTextDocument>
+#include <QWizard>
 #include <QXmlStreamReader>
 
 using namespace imudesk;
@@ -49,6 +59,11 @@ const QSet<QString> &keptWords()
         QStringLiteral("hex"), QStringLiteral("bin"), QStringLiteral("virtualcan"), QStringLiteral("socketcan"),
         QStringLiteral("device"), QStringLiteral("product"), QStringLiteral("serial"), QStringLiteral("date"), QStringLiteral("time"),
         QStringLiteral("Ctrl"), QStringLiteral("Shift"), QStringLiteral("Alt"), QStringLiteral("ttyS"),
+        QStringLiteral("Linux"), QStringLiteral("socketcan"), QStringLiteral("peakcan"), QStringLiteral("can"),
+        QStringLiteral("kbit"), QStringLiteral("bit"), QStringLiteral("pandas"), QStringLiteral("PlotJuggler"),
+        QStringLiteral("Intel"), QStringLiteral("dialout"), QStringLiteral("KiB"), QStringLiteral("MiB"),
+        QStringLiteral("GiB"), QStringLiteral("udev"), QStringLiteral("usermod"), QStringLiteral("sudo"),
+        QStringLiteral("USER"), QStringLiteral("rules"), QStringLiteral("FitErr"), QStringLiteral("imucap"),
     };
     return words;
 }
@@ -208,6 +223,40 @@ private Q_SLOTS:
         QVERIFY(language.setLanguage(QStringLiteral("zh_CN"), QStringLiteral(IMUDESK_QM_DIR), &error));
         ui::PreferencesDialog prefs(ui::Preferences{});
         verifyTranslated(&prefs);
+        ui::ModbusConnectDialog modbus;
+        verifyTranslated(&modbus);
+        ui::CanConnectDialog can;
+        verifyTranslated(&can);
+        device::DeviceSession session;
+        ui::ProfileDialog profiles(session);
+        verifyTranslated(&profiles);
+        ui::BandwidthCalculator calculator;
+        verifyTranslated(&calculator);
+        ui::ExportDialog exporter(QStringLiteral("/tmp/none.imucap"));
+        verifyTranslated(&exporter);
+        ui::AnalysisWindow analysis;
+        verifyTranslated(&analysis);
+        ui::FirmwareUpdateDialog firmware(QStringLiteral("/dev/ttyUSB0"), 115200, std::nullopt);
+        verifyTranslated(&firmware);
+    }
+
+    void wizardsUnderZhCN()
+    {
+        ui::LanguageSwitcher language;
+        QString error;
+        QVERIFY2(language.setLanguage(QStringLiteral("zh_CN"), QStringLiteral(IMUDESK_QM_DIR), &error),
+                 qPrintable(error));
+        device::DeviceSession session;
+        ui::MagCalibrationWizard mag(session, model::FirmwareVersion{1, 7, 1});
+        ui::GyroScaleWizard gyro(session);
+        ui::AttitudeResetWizard reset(session);
+        for (QWizard *wizard : std::initializer_list<QWizard *>{&mag, &gyro, &reset}) {
+            wizard->show();
+            // Every page, as the user steps through them.
+            for (int id : wizard->pageIds())
+                verifyTranslated(wizard->page(id));
+            verifyTranslated(wizard);
+        }
     }
 
     void englishPluralForms()
