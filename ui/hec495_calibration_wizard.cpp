@@ -64,9 +64,10 @@ wl::CalibrationMethod deviceMethod(CompassCalMethod m)
 Hec495CalibrationWizard::Hec495CalibrationWizard(device::Hec495Session &session, QWidget *parent)
     : QWizard(parent),
       m_session(session),
-      m_tracker(CompassCalMethod::Auto12)
+      m_tracker(CompassCalMethod::Auto12, kHeadingToleranceDeg)
 {
     setWindowTitle(tr("HEC495 compass calibration"));
+    resize(780, 600);
     buildMethodPage();
     buildRunPage();
     buildResultPage();
@@ -123,6 +124,12 @@ void Hec495CalibrationWizard::buildRunPage()
     m_progress = new QProgressBar;
     m_progress->setRange(0, 100);
     side->addWidget(m_progress);
+    m_legend = new QLabel(tr("Targets: inner ring pitch up (above 45 deg), middle ring level, outer ring pitch "
+                             "down (below -45 deg); R is the roll to hold. Green: collected; orange outline: the "
+                             "target the compass is at. The red needle is the heading, the blue dot the pitch, the "
+                             "bar below the roll."));
+    m_legend->setWordWrap(true);
+    side->addWidget(m_legend);
     m_hint = new QLabel;
     m_hint->setWordWrap(true);
     side->addWidget(m_hint);
@@ -190,7 +197,7 @@ void Hec495CalibrationWizard::setMethod(CompassCalMethod m)
         b->setChecked(true);
     if (m_running)
         return; // the run's method stays until it is stopped or saved
-    m_tracker = CompassPoseTracker(m);
+    m_tracker = CompassPoseTracker(m, kHeadingToleranceDeg);
     m_instructions->setText(CompassPoseTracker::instructions(m) + QStringLiteral("\n\n") + suitsOf(m)
                             + QStringLiteral("\n\n")
                             + tr("Then save: the module replies with its fit error (FitErr); the smaller the better, "
@@ -209,8 +216,9 @@ void Hec495CalibrationWizard::onPageChanged(int id)
 {
     if (id == RunPage) {
         setMethod(CompassCalMethod(m_methods->checkedId()));
-        m_method->setText(tr("Method: %1.\n%2")
-                              .arg(CompassPoseTracker::methodName(method()), CompassPoseTracker::instructions(method())));
+        page(RunPage)->setSubTitle(CompassPoseTracker::instructions(method()));
+        m_method->setText(tr("Method: %1").arg(CompassPoseTracker::methodName(method())));
+        m_legend->setVisible(!m_tracker.poseTargets().empty());
         m_clock.start();
         refresh();
         updateControls();
@@ -271,6 +279,7 @@ void Hec495CalibrationWizard::onCommandFinished(quint64 id, const Hec495Result &
         case RunState::Starting:
             m_running = true;
             m_tracker.clear();
+            refresh(); // the pose the first point is taken at
             m_status->setText(tr("Calibration running (%1). Turn the compass as shown; targets light up as the "
                                  "module collects points.")
                                   .arg(CompassPoseTracker::methodName(method())));

@@ -41,6 +41,10 @@ public:
     enum PageId { MethodPage, RunPage, ResultPage };
     enum class RunState { Idle, Starting, Running, Collecting, Stopping, Saving, Clearing };
     static constexpr int kRefreshMs = 33;
+    // A target is at hand within this many degrees of heading. Wider than half the 30 deg
+    // spacing: during a run the module shows its uncalibrated heading, off by its iron, and
+    // the tracker prefers a target not yet collected where two overlap.
+    static constexpr double kHeadingToleranceDeg = 25.0;
 
     explicit Hec495CalibrationWizard(device::Hec495Session &session, QWidget *parent = nullptr);
     ~Hec495CalibrationWizard() override;
@@ -103,6 +107,7 @@ private:
     CompassPoseView *m_view = nullptr;
     QLabel *m_count = nullptr;
     QProgressBar *m_progress = nullptr;
+    QLabel *m_legend = nullptr;
     QLabel *m_hint = nullptr;
     QLabel *m_status = nullptr;
     QLabel *m_error = nullptr;
