@@ -2,7 +2,8 @@
 // (HEC495 manual, "平面校准" and commands 2.8-2.11): a planar run on a compass the simulator
 // turns level at 30 deg/s collects points (0x66), lights the targets it passes, saves
 // (0x09) and shows the module's FitErr; a save with no valid point fails (89 FF) and says
-// what to do; a closed connection says so.
+// what to do; a closed connection says so. The manual method collects on "Collect point"
+// (0x67), Stop (0x12) abandons the run and Clear (0x10) is accepted.
 #include "compass_pose_view.h"
 #include "device/hec495_result.h"
 #include "device/hec495_session.h"
@@ -144,6 +145,39 @@ private Q_SLOTS:
         QCOMPARE(w.currentId(), int(Hec495CalibrationWizard::RunPage));
         QVERIFY(!w.saved());
         QCOMPARE(w.tracker().collectedCount(), 0);
+        QVERIFY(w.startButton()->isEnabled());
+    }
+
+    void manualCollectStopClear()
+    {
+        // Manual method (0x65): each "Collect point" (0x67) is answered by 0x66 with the count.
+        serve(Motion::Static);
+        Hec495CalibrationWizard w(*m_session);
+        toRunPage(w, CompassCalMethod::Manual);
+        QVERIFY(!w.collectButton()->isEnabled());
+        QVERIFY(click(w, w.startButton()).ok());
+        QVERIFY(w.collectButton()->isEnabled());
+        for (int i = 1; i <= 3; ++i) {
+            const auto r = click(w, w.collectButton());
+            QVERIFY(r.ok());
+            QCOMPARE(r.reply.points, i);
+            QTRY_COMPARE(w.tracker().validPoints(), i);
+        }
+        int simPoints = 0;
+        withSim(*m_pty, [&](Hec495Simulator &d) { simPoints = d.calibration().points(); });
+        QCOMPARE(simPoints, 3);
+        // Stop (0x12) abandons the run: nothing saved, the count starts over.
+        QVERIFY(click(w, w.stopButton()).ok());
+        QVERIFY(!w.running());
+        QCOMPARE(w.tracker().validPoints(), 0);
+        QVERIFY(w.statusText().contains(QStringLiteral("nothing was saved")));
+        bool active = true;
+        withSim(*m_pty, [&](Hec495Simulator &d) { active = d.calibration().active(); });
+        QVERIFY(!active);
+        // Clear (0x10) is accepted outside a run.
+        QVERIFY(w.clearButton()->isEnabled());
+        QVERIFY(click(w, w.clearButton()).ok());
+        QVERIFY(w.statusText().contains(QStringLiteral("cleared")));
         QVERIFY(w.startButton()->isEnabled());
     }
 
