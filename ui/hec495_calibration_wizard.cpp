@@ -450,7 +450,7 @@ bool Hec495CalibrationWizard::validateCurrentPage()
 void Hec495CalibrationWizard::done(int result)
 {
     m_clock.stop();
-    if (m_running && m_state != RunState::Stopping) {
+    if ((m_running || m_state == RunState::Starting) && m_state != RunState::Stopping) {
         m_session.stopCalibration();
         m_running = false;
     }

@@ -11,7 +11,8 @@
 //      the page with what to do.
 //   3. Result page: FitErr and point count of the save reply (77 09 00 89 FitErr...), and the
 //      verdict: above 10 the manual says calibrate again, offered with one button.
-// Leaving the wizard while a run is active sends Stop.
+// Leaving the wizard while a run is active (or starting) sends Stop. The session must
+// outlive the wizard.
 #include "calib/compass_pose_tracker.h"
 
 #include <QTimer>
