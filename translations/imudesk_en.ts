@@ -35,6 +35,17 @@
     </message>
 </context>
 <context>
+    <name>imudesk::ui::CompassPoseView</name>
+    <message numerus="yes">
+        <location filename="../ui/compass_pose_view.cpp" line="+109"/>
+        <source>%n point(s)</source>
+        <translation>
+            <numerusform>%n point</numerusform>
+            <numerusform>%n points</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>imudesk::ui::ExportDialog</name>
     <message numerus="yes">
         <location filename="../ui/export_dialog.cpp" line="+161"/>
@@ -86,7 +97,7 @@
 <context>
     <name>imudesk::ui::RecordingControls</name>
     <message numerus="yes">
-        <location filename="../ui/recording_controls.cpp" line="+195"/>
+        <location filename="../ui/recording_controls.cpp" line="+204"/>
         <source>%n frame(s)</source>
         <translation>
             <numerusform>%n frame</numerusform>

@@ -4962,7 +4962,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::BusConnect</name>
     <message>
-        <location filename="../ui/bus_connect_dialog.cpp" line="+23" />
+        <location filename="../ui/bus_connect_dialog.cpp" line="+24" />
         <source>Connect</source>
         <translation>连接</translation>
     </message>
@@ -5848,6 +5848,51 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
 </context>
 <context>
+    <name>imudesk::ui::CompassPoseView</name>
+    <message>
+        <location filename="../ui/compass_pose_view.cpp" line="+69" />
+        <source>N</source>
+        <translation>北</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>E</source>
+        <translation>东</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>S</source>
+        <translation>南</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>W</source>
+        <translation>西</translation>
+    </message>
+    <message>
+        <location line="+28" />
+        <source>R%1</source>
+        <translation>R%1</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+12" />
+        <source>%n point(s)</source>
+        <translation>
+            <numerusform>%n 个点</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+17" />
+        <source>No attitude received yet</source>
+        <translation>尚未收到姿态数据</translation>
+    </message>
+    <message>
+        <location line="+12" />
+        <source>Heading %1°  pitch %2°  roll %3°</source>
+        <translation>航向角 %1°  俯仰角 %2°  横滚角 %3°</translation>
+    </message>
+</context>
+<context>
     <name>imudesk::ui::ConfigPanel</name>
     <message>
         <location filename="../ui/config_panel.cpp" line="+137" />
@@ -6656,6 +6701,265 @@ Link load = bytes per second × 10 bits / baud rate.</source>
         <location line="+0" />
         <source>W</source>
         <translation>W</translation>
+    </message>
+</context>
+<context>
+    <name>imudesk::ui::Hec495CalibrationWizard</name>
+    <message>
+        <location filename="../ui/hec495_calibration_wizard.cpp" line="+36" />
+        <source>Suits: the compass and its mount can be turned to the poses of the table. Good results; in a complex magnetic environment slightly less accurate than all-orientation. Limit: pitch must exceed 45 deg and roll 30 deg. The manual recommends trying this method first.</source>
+        <translation>适用：罗盘及其安装结构能转到表中的各个姿态。效果良好；在复杂磁场环境中精度略低于全姿态校准。限制：俯仰角须超过 45 deg，横滚角须超过 30 deg。手册建议优先尝试此方法。</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>Suits: the pitch and roll range of use is known; collect most points in the poses used most. Best at the chosen points; badly chosen points can spoil the calibration.</source>
+        <translation>适用：已知使用时的俯仰角和横滚角范围；在最常用的姿态采集大部分点。在所选点处效果最佳；选点不当会影响校准效果。</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Suits: the compass and its mount can turn to every orientation and the magnetic environment is complex. The most accurate over all attitudes.</source>
+        <translation>适用：罗盘及其安装结构能转到任意姿态，且磁场环境复杂。在所有姿态下精度最高。</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Suits: roll stays below 5 deg in use while pitch varies widely. Best when roll is below 5 deg. Limit: pitch must exceed 45 deg.</source>
+        <translation>适用：使用时横滚角保持在 5 deg 以内，而俯仰角变化较大。横滚角小于 5 deg 时效果最佳。限制：俯仰角须超过 45 deg。</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Suits: the compass only turns in a plane, pitch and roll below 2 deg. Best when it is used level.</source>
+        <translation>适用：罗盘只在平面内转动，俯仰角和横滚角小于 2 deg。水平使用时效果最佳。</translation>
+    </message>
+    <message>
+        <location line="+18" />
+        <source>HEC495 compass calibration</source>
+        <translation>HEC495 罗盘校准</translation>
+    </message>
+    <message>
+        <location line="+17" />
+        <source>Choose the calibration method</source>
+        <translation>选择校准方法</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Calibrate in the place of use, with the compass fixed in its mount: everything near it (iron, batteries, motors, cables with current) must turn together with it. Carry no phone, keys or other metal while calibrating.</source>
+        <translation>请在使用现场校准，并将罗盘固定在安装结构上：其附近的所有物体（铁件、电池、电机、通电线缆）都必须随其一起转动。校准时请勿携带手机、钥匙或其他金属物品。</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>%1 (command 0x%2)</source>
+        <translation>%1（命令 0x%2）</translation>
+    </message>
+    <message>
+        <location line="+19" />
+        <source>Calibrate</source>
+        <translation>校准</translation>
+    </message>
+    <message>
+        <location line="+15" />
+        <source>Targets: inner ring pitch up (above 45 deg), middle ring level, outer ring pitch down (below -45 deg); R is the roll to hold. Green: collected; orange outline: the target the compass is at. The red needle is the heading, the blue dot the pitch, the bar below the roll.</source>
+        <translation>目标：内圈为上仰（俯仰角大于 45 deg），中圈为水平，外圈为下俯（俯仰角小于 -45 deg）；R 为需保持的横滚角。绿色：已采集；橙色边框：罗盘当前所在的目标。红色指针表示航向角，蓝色圆点表示俯仰角，下方横条表示横滚角。</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>Start calibration</source>
+        <translation>开始校准</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Collect point</source>
+        <translation>采集点</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Stop</source>
+        <translation>停止</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Save calibration</source>
+        <translation>保存校准</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Clear calibration</source>
+        <translation>清除校准</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Sends the start command of the method (77 04 00 xx).</source>
+        <translation>发送该方法的开始命令（77 04 00 xx）。</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Manual method: stores the current pose as a calibration point (0x67).</source>
+        <translation>手动方法：将当前姿态存为一个校准点（0x67）。</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Abandons the run without saving (0x12).</source>
+        <translation>放弃本次校准，不保存（0x12）。</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Computes and stores the calibration from the points collected (0x09).</source>
+        <translation>根据已采集的点计算并保存校准（0x09）。</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Erases the environment calibration stored in the module (0x10).</source>
+        <translation>擦除模块中保存的环境校准（0x10）。</translation>
+    </message>
+    <message>
+        <location line="+35" />
+        <source>Result</source>
+        <translation>结果</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>Calibrate again</source>
+        <translation>重新校准</translation>
+    </message>
+    <message>
+        <location line="+17" />
+        <source>Then save: the module replies with its fit error (FitErr); the smaller the better, above %1 calibrate again.</source>
+        <translation>然后保存：模块会返回拟合误差（FitErr）；越小越好，超过 %1 时请重新校准。</translation>
+    </message>
+    <message>
+        <location line="+17" />
+        <source>Method: %1</source>
+        <translation>方法：%1</translation>
+    </message>
+    <message>
+        <location line="+38" />
+        <source>Starting the calibration...</source>
+        <translation>正在开始校准...</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Collecting a point...</source>
+        <translation>正在采集点...</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Stopping the calibration...</source>
+        <translation>正在停止校准...</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Saving the calibration...</source>
+        <translation>正在保存校准...</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Clearing the stored calibration...</source>
+        <translation>正在清除已保存的校准...</translation>
+    </message>
+    <message>
+        <location line="+21" />
+        <source>Calibration running (%1). Turn the compass as shown; targets light up as the module collects points.</source>
+        <translation>正在校准（%1）。请按图示转动罗盘；模块采集到点时，相应目标会亮起。</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <source>Point collected.</source>
+        <translation>已采集点。</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>Calibration stopped; nothing was saved. The module keeps its previous calibration.</source>
+        <translation>校准已停止，未保存任何数据。模块保留之前的校准。</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>The stored environment calibration was cleared from the module. Start a new calibration before relying on the heading near iron.</source>
+        <translation>已清除模块中保存的环境校准。在铁件附近依赖航向角之前，请先重新校准。</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <source>Calibration saved.</source>
+        <translation>校准已保存。</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>The module answered the save command without a fit error (%1). Collect the points again and save once more.</source>
+        <translation>模块响应了保存命令，但未返回拟合误差（%1）。请重新采集点并再次保存。</translation>
+    </message>
+    <message>
+        <location line="+22" />
+        <source>Check the cable, the power, the baud rate and the module address, then try again.</source>
+        <translation>请检查线缆、电源、波特率和模块地址，然后重试。</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>The connection is closed: connect to the compass again, then restart the calibration.</source>
+        <translation>连接已关闭：请重新连接罗盘，然后重新开始校准。</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>The reply was not one the manual allows: check that the device is an HEC495 and try again.</source>
+        <translation>应答不符合手册规定：请确认设备为 HEC495，然后重试。</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>The module could not compute a calibration: too few points, or points that do not span the field. Start the calibration again and turn through more of the target poses before saving.</source>
+        <translation>模块无法计算校准：点数太少，或各点未能覆盖磁场范围。请重新开始校准，并在保存前转过更多目标姿态。</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>The module did not take the point: no manual calibration is running, or it is full. Start the manual method first.</source>
+        <translation>模块未接受该点：当前没有正在进行的手动校准，或采集点已满。请先开始手动方法。</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>The module refused to start this method. Stop any calibration in progress and try again.</source>
+        <translation>模块拒绝启动此方法。请停止正在进行的校准，然后重试。</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Try again; if it keeps failing, power the module off and on.</source>
+        <translation>请重试；如仍然失败，请将模块断电后重新上电。</translation>
+    </message>
+    <message>
+        <location line="+9" />
+        <source>Failed: %1.
+%2</source>
+        <translation>失败：%1。
+%2</translation>
+    </message>
+    <message>
+        <location line="+15" />
+        <source>Valid points: %1 of at most %2</source>
+        <translation>有效点：%1（最多 %2）</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Valid points: %1 (at least %2)</source>
+        <translation>有效点：%1（至少 %2）</translation>
+    </message>
+    <message>
+        <location line="+35" />
+        <source>No calibration was saved.</source>
+        <translation>未保存校准。</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Fit error (FitErr): %1
+Points used: %2
+Method: %3</source>
+        <translation>拟合误差（FitErr）：%1
+使用点数：%2
+方法：%3</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>FitErr is above %1: the manual says to calibrate again. Check that nothing magnetic moved relative to the compass during the run, that no phone or keys were near, and turn through the target poses more carefully; press "Calibrate again".</source>
+        <translation>FitErr 超过 %1：手册要求重新校准。请检查校准过程中没有磁性物体相对罗盘移动，附近没有手机或钥匙，并更仔细地转过各目标姿态；然后点击“重新校准”。</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Good: FitErr is at most %1. The module stores and uses the calibration from now on.</source>
+        <translation>良好：FitErr 不超过 %1。模块将保存此校准并从现在起使用。</translation>
     </message>
 </context>
 <context>
@@ -7770,8 +8074,28 @@ Samples: %3</source>
         <source>%1:%2:%3</source>
         <translation>%1:%2:%3</translation>
     </message>
+    <message>
+        <location line="+7" />
+        <source>%1 B</source>
+        <translation>%1 字节</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>%1 KiB</source>
+        <translation>%1 KiB</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>%1 MiB</source>
+        <translation>%1 MiB</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>%1 GiB</source>
+        <translation>%1 GiB</translation>
+    </message>
     <message numerus="yes">
-        <location line="+5" />
+        <location line="+1" />
         <source>%n frame(s)</source>
         <translation>
             <numerusform>%n 帧</numerusform>
@@ -7900,7 +8224,7 @@ Samples: %3</source>
 <context>
     <name>imudesk::ui::ToolActions</name>
     <message>
-        <location filename="../ui/tool_actions.cpp" line="+96" />
+        <location filename="../ui/tool_actions.cpp" line="+102" />
         <source>&amp;Open capture…</source>
         <translation>打开记录(&amp;O)…</translation>
     </message>
@@ -8050,6 +8374,16 @@ Samples: %3</source>
         <translation>确认模块静止后，将航向角清零或调平模块（ATT RST）</translation>
     </message>
     <message>
+        <location line="+1" />
+        <source>HEC495 &amp;compass…</source>
+        <translation>HEC495 罗盘(&amp;C)…</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The HEC495's own calibration methods, with the target poses to turn it to</source>
+        <translation>HEC495 自带的校准方法，并显示需转到的目标姿态</translation>
+    </message>
+    <message>
         <location line="+2" />
         <source>&amp;Tools</source>
         <translation>工具(&amp;T)</translation>
@@ -8060,7 +8394,7 @@ Samples: %3</source>
         <translation>校准(&amp;C)</translation>
     </message>
     <message>
-        <location line="+39" />
+        <location line="+40" />
         <source>%1 could not be imported: %2</source>
         <translation>无法导入 %1：%2</translation>
     </message>

@@ -4962,7 +4962,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::BusConnect</name>
     <message>
-        <location filename="../ui/bus_connect_dialog.cpp" line="+23" />
+        <location filename="../ui/bus_connect_dialog.cpp" line="+24" />
         <source>Connect</source>
         <translation>連線</translation>
     </message>
@@ -5848,6 +5848,51 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
 </context>
 <context>
+    <name>imudesk::ui::CompassPoseView</name>
+    <message>
+        <location filename="../ui/compass_pose_view.cpp" line="+69" />
+        <source>N</source>
+        <translation>北</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>E</source>
+        <translation>東</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>S</source>
+        <translation>南</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>W</source>
+        <translation>西</translation>
+    </message>
+    <message>
+        <location line="+28" />
+        <source>R%1</source>
+        <translation>滾%1</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+12" />
+        <source>%n point(s)</source>
+        <translation>
+            <numerusform>%n 個點</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+17" />
+        <source>No attitude received yet</source>
+        <translation>尚未收到姿態資料</translation>
+    </message>
+    <message>
+        <location line="+12" />
+        <source>Heading %1°  pitch %2°  roll %3°</source>
+        <translation>航向角 %1°  俯仰角 %2°  橫滾角 %3°</translation>
+    </message>
+</context>
+<context>
     <name>imudesk::ui::ConfigPanel</name>
     <message>
         <location filename="../ui/config_panel.cpp" line="+137" />
@@ -6656,6 +6701,265 @@ Link load = bytes per second × 10 bits / baud rate.</source>
         <location line="+0" />
         <source>W</source>
         <translation>W</translation>
+    </message>
+</context>
+<context>
+    <name>imudesk::ui::Hec495CalibrationWizard</name>
+    <message>
+        <location filename="../ui/hec495_calibration_wizard.cpp" line="+36" />
+        <source>Suits: the compass and its mount can be turned to the poses of the table. Good results; in a complex magnetic environment slightly less accurate than all-orientation. Limit: pitch must exceed 45 deg and roll 30 deg. The manual recommends trying this method first.</source>
+        <translation>適用：羅盤及其安裝座可轉到表中的各個姿態。效果良好；在複雜磁場環境下精度略低於全姿態校準。限制：俯仰角需超過 45 deg，橫滾角需超過 30 deg。手冊建議優先嘗試此方法。</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>Suits: the pitch and roll range of use is known; collect most points in the poses used most. Best at the chosen points; badly chosen points can spoil the calibration.</source>
+        <translation>適用：已知使用時的俯仰角和橫滾角範圍；在最常用的姿態採集大部分點。在所選點上效果最佳；點選得不好可能使校準變差。</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Suits: the compass and its mount can turn to every orientation and the magnetic environment is complex. The most accurate over all attitudes.</source>
+        <translation>適用：羅盤及其安裝座可轉到任意姿態，且磁場環境複雜。在所有姿態下精度最高。</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Suits: roll stays below 5 deg in use while pitch varies widely. Best when roll is below 5 deg. Limit: pitch must exceed 45 deg.</source>
+        <translation>適用：使用時橫滾角保持在 5 deg 以下，而俯仰角變化較大。橫滾角小於 5 deg 時效果最佳。限制：俯仰角需超過 45 deg。</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Suits: the compass only turns in a plane, pitch and roll below 2 deg. Best when it is used level.</source>
+        <translation>適用：羅盤只在平面內轉動，俯仰角和橫滾角小於 2 deg。水平使用時效果最佳。</translation>
+    </message>
+    <message>
+        <location line="+18" />
+        <source>HEC495 compass calibration</source>
+        <translation>HEC495 羅盤校準</translation>
+    </message>
+    <message>
+        <location line="+17" />
+        <source>Choose the calibration method</source>
+        <translation>選擇校準方法</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Calibrate in the place of use, with the compass fixed in its mount: everything near it (iron, batteries, motors, cables with current) must turn together with it. Carry no phone, keys or other metal while calibrating.</source>
+        <translation>請在使用地點校準，並將羅盤固定在安裝座上：其附近的所有物件（鐵件、電池、馬達、通電的電纜）都必須與它一起轉動。校準時請勿攜帶手機、鑰匙或其他金屬物品。</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>%1 (command 0x%2)</source>
+        <translation>%1（指令 0x%2）</translation>
+    </message>
+    <message>
+        <location line="+19" />
+        <source>Calibrate</source>
+        <translation>校準</translation>
+    </message>
+    <message>
+        <location line="+15" />
+        <source>Targets: inner ring pitch up (above 45 deg), middle ring level, outer ring pitch down (below -45 deg); R is the roll to hold. Green: collected; orange outline: the target the compass is at. The red needle is the heading, the blue dot the pitch, the bar below the roll.</source>
+        <translation>目標：內圈為仰（俯仰角大於 45 deg），中圈為水平，外圈為俯（俯仰角小於 -45 deg）；「滾」為需保持的橫滾角。綠色：已採集；橙色外框：羅盤目前所在的目標。紅色指針為航向角，藍色圓點為俯仰角，下方長條為橫滾角。</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>Start calibration</source>
+        <translation>開始校準</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Collect point</source>
+        <translation>採集點</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Stop</source>
+        <translation>停止</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Save calibration</source>
+        <translation>儲存校準</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Clear calibration</source>
+        <translation>清除校準</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Sends the start command of the method (77 04 00 xx).</source>
+        <translation>傳送此方法的啟動指令（77 04 00 xx）。</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Manual method: stores the current pose as a calibration point (0x67).</source>
+        <translation>手動方法：將目前姿態存為一個校準點（0x67）。</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Abandons the run without saving (0x12).</source>
+        <translation>放棄本次校準，不儲存（0x12）。</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Computes and stores the calibration from the points collected (0x09).</source>
+        <translation>根據已採集的點計算並儲存校準（0x09）。</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Erases the environment calibration stored in the module (0x10).</source>
+        <translation>清除模組中儲存的環境校準（0x10）。</translation>
+    </message>
+    <message>
+        <location line="+35" />
+        <source>Result</source>
+        <translation>結果</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>Calibrate again</source>
+        <translation>重新校準</translation>
+    </message>
+    <message>
+        <location line="+17" />
+        <source>Then save: the module replies with its fit error (FitErr); the smaller the better, above %1 calibrate again.</source>
+        <translation>然後儲存：模組會回覆其擬合誤差（FitErr）；越小越好，超過 %1 請重新校準。</translation>
+    </message>
+    <message>
+        <location line="+17" />
+        <source>Method: %1</source>
+        <translation>方法：%1</translation>
+    </message>
+    <message>
+        <location line="+38" />
+        <source>Starting the calibration...</source>
+        <translation>正在啟動校準...</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Collecting a point...</source>
+        <translation>正在採集點...</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Stopping the calibration...</source>
+        <translation>正在停止校準...</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Saving the calibration...</source>
+        <translation>正在儲存校準...</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Clearing the stored calibration...</source>
+        <translation>正在清除已儲存的校準...</translation>
+    </message>
+    <message>
+        <location line="+21" />
+        <source>Calibration running (%1). Turn the compass as shown; targets light up as the module collects points.</source>
+        <translation>校準進行中（%1）。請依圖示轉動羅盤；模組採集到點時，對應目標會亮起。</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <source>Point collected.</source>
+        <translation>已採集點。</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>Calibration stopped; nothing was saved. The module keeps its previous calibration.</source>
+        <translation>校準已停止，未儲存任何資料。模組保留先前的校準。</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>The stored environment calibration was cleared from the module. Start a new calibration before relying on the heading near iron.</source>
+        <translation>已清除模組中儲存的環境校準。在鐵件附近依賴航向角之前，請先重新校準。</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <source>Calibration saved.</source>
+        <translation>校準已儲存。</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>The module answered the save command without a fit error (%1). Collect the points again and save once more.</source>
+        <translation>模組回覆儲存指令時未附擬合誤差（%1）。請重新採集點並再次儲存。</translation>
+    </message>
+    <message>
+        <location line="+22" />
+        <source>Check the cable, the power, the baud rate and the module address, then try again.</source>
+        <translation>請檢查電纜、電源、波特率和模組位址，然後重試。</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>The connection is closed: connect to the compass again, then restart the calibration.</source>
+        <translation>連線已關閉：請重新連線到羅盤，然後重新開始校準。</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>The reply was not one the manual allows: check that the device is an HEC495 and try again.</source>
+        <translation>回覆不符合手冊規定：請確認裝置為 HEC495，然後重試。</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>The module could not compute a calibration: too few points, or points that do not span the field. Start the calibration again and turn through more of the target poses before saving.</source>
+        <translation>模組無法計算校準：點數太少，或點未能涵蓋整個磁場。請重新開始校準，並在儲存前轉過更多目標姿態。</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>The module did not take the point: no manual calibration is running, or it is full. Start the manual method first.</source>
+        <translation>模組未接受該點：沒有正在進行的手動校準，或點數已滿。請先啟動手動方法。</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>The module refused to start this method. Stop any calibration in progress and try again.</source>
+        <translation>模組拒絕啟動此方法。請停止進行中的校準，然後重試。</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Try again; if it keeps failing, power the module off and on.</source>
+        <translation>請重試；若仍然失敗，請將模組斷電後重新上電。</translation>
+    </message>
+    <message>
+        <location line="+9" />
+        <source>Failed: %1.
+%2</source>
+        <translation>失敗：%1。
+%2</translation>
+    </message>
+    <message>
+        <location line="+15" />
+        <source>Valid points: %1 of at most %2</source>
+        <translation>有效點：%1 個（最多 %2 個）</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Valid points: %1 (at least %2)</source>
+        <translation>有效點：%1 個（至少 %2 個）</translation>
+    </message>
+    <message>
+        <location line="+35" />
+        <source>No calibration was saved.</source>
+        <translation>未儲存任何校準。</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Fit error (FitErr): %1
+Points used: %2
+Method: %3</source>
+        <translation>擬合誤差（FitErr）：%1
+使用點數：%2
+方法：%3</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>FitErr is above %1: the manual says to calibrate again. Check that nothing magnetic moved relative to the compass during the run, that no phone or keys were near, and turn through the target poses more carefully; press "Calibrate again".</source>
+        <translation>FitErr 高於 %1：手冊要求重新校準。請確認校準過程中沒有磁性物體相對羅盤移動、附近沒有手機或鑰匙，並更仔細地轉過各目標姿態；然後按「重新校準」。</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Good: FitErr is at most %1. The module stores and uses the calibration from now on.</source>
+        <translation>良好：FitErr 不超過 %1。模組將儲存並自此使用此校準。</translation>
     </message>
 </context>
 <context>
@@ -7770,8 +8074,28 @@ Samples: %3</source>
         <source>%1:%2:%3</source>
         <translation>%1:%2:%3</translation>
     </message>
+    <message>
+        <location line="+7" />
+        <source>%1 B</source>
+        <translation>%1 位元組</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>%1 KiB</source>
+        <translation>%1 KiB</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>%1 MiB</source>
+        <translation>%1 MiB</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>%1 GiB</source>
+        <translation>%1 GiB</translation>
+    </message>
     <message numerus="yes">
-        <location line="+5" />
+        <location line="+1" />
         <source>%n frame(s)</source>
         <translation>
             <numerusform>%n 幀</numerusform>
@@ -7900,7 +8224,7 @@ Samples: %3</source>
 <context>
     <name>imudesk::ui::ToolActions</name>
     <message>
-        <location filename="../ui/tool_actions.cpp" line="+96" />
+        <location filename="../ui/tool_actions.cpp" line="+102" />
         <source>&amp;Open capture…</source>
         <translation>開啟記錄檔(&amp;O)…</translation>
     </message>
@@ -8050,6 +8374,16 @@ Samples: %3</source>
         <translation>確認模組靜止後，將航向角歸零或將模組調平（ATT RST）</translation>
     </message>
     <message>
+        <location line="+1" />
+        <source>HEC495 &amp;compass…</source>
+        <translation>HEC495 羅盤(&amp;C)…</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The HEC495's own calibration methods, with the target poses to turn it to</source>
+        <translation>HEC495 自身的校準方法，並顯示需轉到的目標姿態</translation>
+    </message>
+    <message>
         <location line="+2" />
         <source>&amp;Tools</source>
         <translation>工具(&amp;T)</translation>
@@ -8060,7 +8394,7 @@ Samples: %3</source>
         <translation>校準(&amp;C)</translation>
     </message>
     <message>
-        <location line="+39" />
+        <location line="+40" />
         <source>%1 could not be imported: %2</source>
         <translation>無法匯入 %1：%2</translation>
     </message>

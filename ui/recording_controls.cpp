@@ -191,7 +191,16 @@ void RecordingControls::refresh()
                            .arg(s / 3600, 2, 10, QLatin1Char('0'))
                            .arg(s / 60 % 60, 2, 10, QLatin1Char('0'))
                            .arg(s % 60, 2, 10, QLatin1Char('0')));
-    m_size->setText(QLocale().formattedDataSize(qint64(m_bytes)));
+    // Our own units (Qt's "bytes" is not translated by every distribution's qtbase catalogue).
+    const double b = double(m_bytes);
+    if (b < 1024.0)
+        m_size->setText(tr("%1 B").arg(m_bytes));
+    else if (b < 1024.0 * 1024.0)
+        m_size->setText(tr("%1 KiB").arg(b / 1024.0, 0, 'f', 1));
+    else if (b < 1024.0 * 1024.0 * 1024.0)
+        m_size->setText(tr("%1 MiB").arg(b / (1024.0 * 1024.0), 0, 'f', 1));
+    else
+        m_size->setText(tr("%1 GiB").arg(b / (1024.0 * 1024.0 * 1024.0), 0, 'f', 2));
     m_frames->setText(tr("%n frame(s)", nullptr, int(std::min<quint64>(m_frameCount, INT32_MAX))));
 }
 

@@ -3,6 +3,8 @@
 #include "analysis_window.h"
 #include "attitude_reset_wizard.h"
 #include "gyro_scale_wizard.h"
+#include "hec495_calibration_wizard.h"
+#include "device/hec495_session.h"
 #include "mag_calibration_wizard.h"
 #include "bandwidth_calculator.h"
 #include "bus_connect_dialog.h"
@@ -66,6 +68,8 @@ ToolActions::ToolActions(MainWindow *window) : QObject(window), m_window(window)
     connect(m_gyroCal, &QAction::triggered, this, &ToolActions::openGyroCal);
     m_attitudeReset = make("attitudeResetAction");
     connect(m_attitudeReset, &QAction::triggered, this, &ToolActions::openAttitudeReset);
+    m_compassCal = make("compassCalAction");
+    connect(m_compassCal, &QAction::triggered, this, &ToolActions::openCompassCal);
     retranslate();
 }
 
@@ -87,6 +91,8 @@ void ToolActions::addToMenus(QMenu *fileMenu, QMenu *deviceMenu, QMenu *calibrat
     deviceMenu->addActions({m_configuration, m_profiles, m_record, m_firmware});
     m_calibrateMenu = calibrateMenu;
     calibrateMenu->addActions({m_magCal, m_gyroCal, m_attitudeReset});
+    calibrateMenu->addSeparator();
+    calibrateMenu->addAction(m_compassCal);
     m_toolsMenu = toolsMenu;
     toolsMenu->addActions({m_analyze, m_calculator});
 }
@@ -123,6 +129,8 @@ void ToolActions::retranslate()
     m_gyroCal->setStatusTip(tr("Turn the module a known angle about Z to correct the gyro's scale (CONFIG USRCAL)"));
     m_attitudeReset->setText(tr("&Attitude reset / level…"));
     m_attitudeReset->setStatusTip(tr("Zero the heading or level the module (ATT RST), after checking that it is still"));
+    m_compassCal->setText(tr("HEC495 &compass…"));
+    m_compassCal->setStatusTip(tr("The HEC495's own calibration methods, with the target poses to turn it to"));
     if (m_toolsMenu)
         m_toolsMenu->setTitle(tr("&Tools"));
     if (m_calibrateMenu)
@@ -146,6 +154,7 @@ void ToolActions::update(const DeviceWorkspace *ws)
     m_magCal->setEnabled(serial && connected && hasMag);
     m_gyroCal->setEnabled(serial && connected);
     m_attitudeReset->setEnabled(serial && connected);
+    m_compassCal->setEnabled(connected && dynamic_cast<const device::Hec495Session *>(&ws->link()));
     // The update opens the port itself: a connected HiPNUC serial device.
     m_firmware->setEnabled(serial && connected && !ws->simulator());
 }
@@ -318,6 +327,19 @@ void ToolActions::openAttitudeReset()
         return;
     auto *wizard = new AttitudeResetWizard(ws->session(), m_window);
     wizard->setAttribute(Qt::WA_DeleteOnClose);
+    wizard->show();
+}
+
+void ToolActions::openCompassCal()
+{
+    DeviceWorkspace *ws = m_window->currentWorkspace();
+    auto *session = ws ? dynamic_cast<device::Hec495Session *>(&ws->link()) : nullptr;
+    if (!session)
+        return;
+    auto *wizard = new Hec495CalibrationWizard(*session, m_window);
+    wizard->setAttribute(Qt::WA_DeleteOnClose);
+    // The wizard needs its session: it closes when the link goes.
+    connect(session, &QObject::destroyed, wizard, &QWidget::close);
     wizard->show();
 }
 

@@ -44,6 +44,7 @@ public:
     QAction *magCalAction() const { return m_magCal; }
     QAction *gyroCalAction() const { return m_gyroCal; }
     QAction *attitudeResetAction() const { return m_attitudeReset; }
+    QAction *compassCalAction() const { return m_compassCal; }
 
     // The steps behind the actions, callable without a file dialog (tests, command line).
     bool openCapture(const QString &path);
@@ -66,6 +67,7 @@ private:
     void openMagCal();
     void openGyroCal();
     void openAttitudeReset();
+    void openCompassCal();
 
     MainWindow *m_window;
     QAction *m_openCapture = nullptr;
@@ -83,6 +85,7 @@ private:
     QAction *m_magCal = nullptr;
     QAction *m_gyroCal = nullptr;
     QAction *m_attitudeReset = nullptr;
+    QAction *m_compassCal = nullptr;
     QMenu *m_toolsMenu = nullptr;
     QMenu *m_calibrateMenu = nullptr;
 };

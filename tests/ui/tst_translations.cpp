@@ -64,6 +64,9 @@ const QSet<QString> &keptWords()
         QStringLiteral("Intel"), QStringLiteral("dialout"), QStringLiteral("KiB"), QStringLiteral("MiB"),
         QStringLiteral("GiB"), QStringLiteral("udev"), QStringLiteral("usermod"), QStringLiteral("sudo"),
         QStringLiteral("USER"), QStringLiteral("rules"), QStringLiteral("FitErr"), QStringLiteral("imucap"),
+        // Qt CAN plugin names, as QCanBus lists them.
+        QStringLiteral("passthrucan"), QStringLiteral("tinycan"), QStringLiteral("vectorcan"),
+        QStringLiteral("systeccan"), QStringLiteral("virtualcan"),
     };
     return words;
 }
@@ -232,7 +235,7 @@ private Q_SLOTS:
         verifyTranslated(&profiles);
         ui::BandwidthCalculator calculator;
         verifyTranslated(&calculator);
-        ui::ExportDialog exporter(QStringLiteral("/tmp/none.imucap"));
+        ui::ExportDialog exporter(QStringLiteral("/tmp/x1.imucap"));
         verifyTranslated(&exporter);
         ui::AnalysisWindow analysis;
         verifyTranslated(&analysis);
