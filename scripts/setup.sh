@@ -77,7 +77,7 @@ echo "== test suite again, built with AddressSanitizer and UndefinedBehaviorSani
 # Leak checking stays with the fuzzers: Qt's plugin and font caches live until exit.
 export ASAN_OPTIONS="detect_leaks=0:abort_on_error=1:strict_string_checks=1"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
-configure_and_build "$root/build/asan" RelWithDebInfo -DIMUDESK_SANITIZE=ON -DIMUDESK_BUILD_TESTS=ON \
+configure_and_build "$root/build/asan" Release -DIMUDESK_SANITIZE=ON -DIMUDESK_BUILD_TESTS=ON \
   -DIMUDESK_BUILD_BENCH=OFF
 (cd "$root/build/asan" && ctest --output-on-failure -j "$jobs" --timeout 900 --repeat until-pass:2)
 unset ASAN_OPTIONS UBSAN_OPTIONS
