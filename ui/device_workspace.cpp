@@ -119,6 +119,9 @@ DeviceWorkspace::DeviceWorkspace(QWidget *parent) : QMainWindow(parent)
     addDockWidget(Qt::RightDockWidgetArea, m_configDock);
     tabifyDockWidget(m_valuesDock, m_configDock);
     m_valuesDock->raise();
+    // Hidden until asked for (Device > Configuration): its table would widen the right
+    // column and squeeze the charts.
+    m_configDock->hide();
     m_recording = new RecordingControls(this);
     m_recording->setObjectName(QStringLiteral("recordingControls"));
     m_recording->setSession(&m_session);
@@ -185,6 +188,7 @@ bool DeviceWorkspace::attachLink(std::unique_ptr<device::DeviceLink> link, const
     connect(m_other.get(), &device::DeviceLink::errorOccurred, this, &DeviceWorkspace::onErrorOccurred);
     m_console->setInputEnabled(false); // ASCII commands are for the HiPNUC serial link
     m_configPanel->setEnabled(false);
+    m_configDock->hide(); // the HiPNUC serial link's settings: not for this link
     m_recording->setEnabled(false);
     Q_EMIT titleChanged(title());
     return true;
