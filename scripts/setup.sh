@@ -2,8 +2,8 @@
 # ImuDesk set-up. Run as root (or through sudo) on Debian 12; safe to run again.
 #   scripts/setup.sh demo   install packages, build a release build, open imudesk on a simulated HI14 (--demo)
 #   scripts/setup.sh test   install packages, build, run the whole test suite headless and the benchmarks,
-#                           then the whole suite again in an AddressSanitizer + UBSan build, then every
-#                           fuzz target for FUZZ_SECONDS (default 20) each
+#                           then the core, CLI, unit and integration tests again in an AddressSanitizer +
+#                           UBSan build, then every fuzz target (clang, libFuzzer) for FUZZ_SECONDS (default 20)
 set -euo pipefail
 
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
@@ -52,7 +52,7 @@ fi
 
 # test
 export QT_QPA_PLATFORM=offscreen
-configure_and_build "$root/build/test" RelWithDebInfo -DIMUDESK_BUILD_TESTS=ON -DIMUDESK_BUILD_BENCH=ON
+configure_and_build "$root/build/test" Release -DIMUDESK_BUILD_TESTS=ON -DIMUDESK_BUILD_BENCH=ON
 echo "== test suite"
 # A test that fails is run once more: only a test that fails twice stops the run (the pty and
 # timing tests share two cores with everything else on a CI machine).
@@ -74,11 +74,13 @@ echo "== soak (1 kHz HI91 with recording and the GUI offscreen; 60 s in CI, one 
 "$bench/soak" --seconds 60
 
 echo "== test suite again, built with AddressSanitizer and UndefinedBehaviorSanitizer"
-# Leak checking stays with the fuzzers: Qt's plugin and font caches live until exit.
+# Core, CLI, unit and integration tests (the GUI tests ran in the pass above); Release without
+# debug information keeps the build short. Leak checking stays with the fuzzers (Qt's caches
+# live until exit).
+configure_and_build "$root/build/asan" Release -DIMUDESK_SANITIZE=ON -DIMUDESK_BUILD_GUI=OFF \
+  -DIMUDESK_BUILD_TESTS=ON -DIMUDESK_BUILD_BENCH=OFF
 export ASAN_OPTIONS="detect_leaks=0:abort_on_error=1:strict_string_checks=1"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
-configure_and_build "$root/build/asan" Release -DIMUDESK_SANITIZE=ON -DIMUDESK_BUILD_TESTS=ON \
-  -DIMUDESK_BUILD_BENCH=OFF
 (cd "$root/build/asan" && ctest --output-on-failure -j "$jobs" --timeout 900 --repeat until-pass:2)
 unset ASAN_OPTIONS UBSAN_OPTIONS
 

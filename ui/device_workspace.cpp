@@ -1,6 +1,7 @@
 #include "device_workspace.h"
 
 #include "attitude_widget.h"
+#include "model/attitude.h"
 #include "config_panel.h"
 #include "recording_controls.h"
 #include "chart_panel.h"
@@ -368,6 +369,8 @@ void DeviceWorkspace::refreshViews()
     m_valuesModel->refresh(latest);
     if (latest && latest->has(model::FieldQuat))
         m_attitude->setQuaternion(latest->quat);
+    else if (latest && latest->has(model::FieldEuler)) // links that send angles only (HEC495, Modbus)
+        m_attitude->setQuaternion(model::quatFromEnu312(model::Euler{latest->roll, latest->pitch, latest->yaw}));
     // Rows of fields only some frame types carry appear once such a frame arrived.
     for (int r = 0; r < models::LatestValuesModel::RowCount; ++r) {
         const auto row = models::LatestValuesModel::Row(r);

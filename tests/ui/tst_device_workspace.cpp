@@ -1,9 +1,12 @@
 // DeviceWorkspace shows any family's link (DeviceLink) in its live views: samples reach the
 // charts and the values table, the state reaches the status bar, and what the link needs
 // (its simulator) is released when it closes.
+#include "attitude_widget.h"
 #include "chart_panel.h"
 #include "device_workspace.h"
 #include "device/device_link.h"
+#include "link_factory.h"
+#include "main_window.h"
 #include "models/latest_values_model.h"
 
 #include <QApplication>
@@ -98,6 +101,39 @@ private Q_SLOTS:
         QVERIFY(watch.expired());
         // The data stays on screen after the close.
         QCOMPARE(ws.chartPanel()->history().size(), size_t(200));
+    }
+
+    void simulatedCompassReachesTheViews()
+    {
+        ui::DeviceWorkspace ws;
+        ws.resize(1200, 800);
+        ws.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&ws));
+        QString error;
+        QVERIFY2(ui::LinkFactory::connectSimulatedHec495(ws, sim::Motion::Spin, &error), qPrintable(error));
+        QTRY_COMPARE_WITH_TIMEOUT(ws.state(), SessionState::Connected, 15000);
+        QTRY_VERIFY_WITH_TIMEOUT(ws.link().store().totalAppended() > 20, 15000);
+        QTRY_VERIFY_WITH_TIMEOUT(ws.chartPanel()->history().size() > 20, 5000);
+        QVERIFY(ws.valuesModel()->valueText(models::LatestValuesModel::Yaw) != QStringLiteral("\u2014"));
+        // The compass sends angles only: the attitude view builds its quaternion from them.
+        QVERIFY(ws.attitudeWidget()->hasData());
+        ws.disconnectDevice();
+        QTRY_COMPARE(ws.state(), SessionState::Closed);
+    }
+
+    void mainWindowShowsTheSimulatedCompass()
+    {
+        ui::MainWindow window;
+        window.resize(1280, 860);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QString error;
+        QVERIFY2(window.connectSimulatedHec495(&error), qPrintable(error));
+        ui::DeviceWorkspace *ws = window.currentWorkspace();
+        QTRY_COMPARE_WITH_TIMEOUT(ws->state(), SessionState::Connected, 15000);
+        QTRY_VERIFY_WITH_TIMEOUT(ws->link().store().totalAppended() > 20, 15000);
+        QTRY_VERIFY_WITH_TIMEOUT(ws->chartPanel()->history().size() > 20, 5000);
+        QVERIFY(ws->valuesModel()->valueText(models::LatestValuesModel::Yaw) != QStringLiteral("\u2014"));
     }
 
     void serialSessionReplacesAnAttachedLink()
