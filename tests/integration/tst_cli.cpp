@@ -1,4 +1,5 @@
 // imudesk-cli end to end: simulate --pty, probe, read, send, decode, exit codes.
+#include "../common/cli_run.h"
 #include "../common/golden.h"
 #include "protocol/hipnuc/frame_decoder.h"
 #include "protocol/hipnuc/payloads.h"
@@ -15,26 +16,11 @@
 
 namespace {
 
-struct Result {
-    int code = -1;
-    QString out, err;
-};
+using Result = imudesk::test::CliResult;
 
 Result run(const QStringList &args, int timeoutMs = 30000)
 {
-    QProcess p;
-    p.start(QStringLiteral(IMUDESK_CLI_PATH), args);
-    Result r;
-    if (!p.waitForFinished(timeoutMs)) {
-        p.kill();
-        p.waitForFinished();
-        r.err = QStringLiteral("timed out");
-        return r;
-    }
-    r.code = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1;
-    r.out = QString::fromUtf8(p.readAllStandardOutput());
-    r.err = QString::fromUtf8(p.readAllStandardError());
-    return r;
+    return imudesk::test::runCli(args, timeoutMs);
 }
 
 } // namespace

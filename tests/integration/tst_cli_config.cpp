@@ -1,6 +1,7 @@
 // imudesk-cli config end to end against simulators on pseudo-terminals: show, set with
 // verification, save and reboot, refused values, the bandwidth warning, actions,
 // export / diff / apply of a profile to several devices with a per-device report.
+#include "../common/cli_run.h"
 #include "settings/config_profile.h"
 #include "sim/pty_simulator.h"
 
@@ -16,26 +17,11 @@ using namespace imudesk;
 
 namespace {
 
-struct Result {
-    int code = -1;
-    QString out, err;
-};
+using Result = imudesk::test::CliResult;
 
 Result run(const QStringList &args, int timeoutMs = 60000)
 {
-    QProcess p;
-    p.start(QStringLiteral(IMUDESK_CLI_PATH), args);
-    Result r;
-    if (!p.waitForFinished(timeoutMs)) {
-        p.kill();
-        p.waitForFinished();
-        r.err = QStringLiteral("timed out");
-        return r;
-    }
-    r.code = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1;
-    r.out = QString::fromUtf8(p.readAllStandardOutput());
-    r.err = QString::fromUtf8(p.readAllStandardError());
-    return r;
+    return imudesk::test::runCli(args, timeoutMs);
 }
 
 std::unique_ptr<sim::PtySimulator> simulator(uint64_t seed, const char *firmware = "1.7.1")

@@ -2,6 +2,7 @@
 // process, PtySimulator, or as `imudesk-cli simulate --flash-dump`) is updated by the CLI
 // process. Happy path, each injected fault followed by a successful second attempt, files
 // refused before any byte is sent, cancel (SIGINT) mid-write and resume.
+#include "../common/cli_run.h"
 #include "protocol/ihex/firmware_image.h"
 #include "protocol/ihex/intel_hex_writer.h"
 #include "sim/kboot_bootloader.h"
@@ -26,26 +27,11 @@ namespace {
 
 constexpr int kBaud = 921600;
 
-struct Run {
-    int code = -1;
-    QString out, err;
-};
+using Run = imudesk::test::CliResult;
 
 Run cli(const QStringList &args, int timeoutMs = 60000)
 {
-    QProcess p;
-    p.start(QStringLiteral(IMUDESK_CLI_PATH), args);
-    Run r;
-    if (!p.waitForFinished(timeoutMs)) {
-        p.kill();
-        p.waitForFinished();
-        r.err = QStringLiteral("timed out");
-        return r;
-    }
-    r.code = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1;
-    r.out = QString::fromUtf8(p.readAllStandardOutput());
-    r.err = QString::fromUtf8(p.readAllStandardError());
-    return r;
+    return imudesk::test::runCli(args, timeoutMs);
 }
 
 QJsonObject resultLine(const QString &out)

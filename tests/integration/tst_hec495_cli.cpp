@@ -1,6 +1,7 @@
 // imudesk-cli against the simulated HEC495 on a pseudo-terminal: "simulate --device hec495",
 // "probe" telling an HEC495 from a HiPNUC module, and every "hec495" action, including a
 // planar calibration run.
+#include "../common/cli_run.h"
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -11,27 +12,11 @@
 
 namespace {
 
-struct Result {
-    int code = -1;
-    QString out, err;
-    QJsonObject json() const { return QJsonDocument::fromJson(out.trimmed().toUtf8()).object(); }
-};
+using Result = imudesk::test::CliResult;
 
 Result run(const QStringList &args, int timeoutMs = 60000)
 {
-    QProcess p;
-    p.start(QStringLiteral(IMUDESK_CLI_PATH), args);
-    Result r;
-    if (!p.waitForFinished(timeoutMs)) {
-        p.kill();
-        p.waitForFinished();
-        r.err = QStringLiteral("timed out");
-        return r;
-    }
-    r.code = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1;
-    r.out = QString::fromUtf8(p.readAllStandardOutput());
-    r.err = QString::fromUtf8(p.readAllStandardError());
-    return r;
+    return imudesk::test::runCli(args, timeoutMs);
 }
 
 // Starts "imudesk-cli simulate --pty ..." and returns the pty path.

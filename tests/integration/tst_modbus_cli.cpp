@@ -1,5 +1,6 @@
 // imudesk-cli modbus against `imudesk-cli simulate --pty --modbus`: info, read (decoded and raw),
 // verified writes that change the node ID and baud, scan, the HEC495, exit codes and messages.
+#include "../common/cli_run.h"
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -11,26 +12,11 @@
 
 namespace {
 
-struct Result {
-    int code = -1;
-    QString out, err;
-};
+using Result = imudesk::test::CliResult;
 
 Result run(const QStringList &args, int timeoutMs = 60000)
 {
-    QProcess p;
-    p.start(QStringLiteral(IMUDESK_CLI_PATH), args);
-    Result r;
-    if (!p.waitForFinished(timeoutMs)) {
-        p.kill();
-        p.waitForFinished();
-        r.err = QStringLiteral("timed out");
-        return r;
-    }
-    r.code = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1;
-    r.out = QString::fromUtf8(p.readAllStandardOutput());
-    r.err = QString::fromUtf8(p.readAllStandardError());
-    return r;
+    return imudesk::test::runCli(args, timeoutMs);
 }
 
 QJsonObject json(const QString &line)
