@@ -191,9 +191,13 @@ int main(int argc, char **argv)
         std::fprintf(stderr, "%s: LOG HI91 ONTIME 0.001 was not acknowledged\n", name);
         return 1;
     }
-    // Warm-up (buffers, chart history filling), then the measured run.
-    spin(std::min(30, seconds / 4) * 1000);
+    // Warm-up, then the measured run. The charts keep 10 minutes of history, so memory is
+    // flat only once that is full: a run of 30 min or more warms up for 11 min and reports
+    // the growth after it; shorter runs warm up briefly and do not judge growth.
+    const bool judgeGrowth = seconds >= 1800;
+    spin((judgeGrowth ? 660 : std::min(30, seconds / 4)) * 1000);
     const double rssStart = currentRssMiB();
+    const uint64_t decodedAtStart = session.store().totalAppended();
     StallWatch stalls;
     const double cpu0 = threadCpuSeconds();
     QElapsedTimer wall;
@@ -251,20 +255,28 @@ int main(int argc, char **argv)
                 okBusy ? "ok" : "MISSED");
     std::printf("  %-34s %10.1f MiB\n", "peak resident memory", rss);
     const double growthPerHour = (rssEnd - rssStart) * 3600.0 / std::max(1.0, wallS);
-    std::printf("  %-34s %10.1f MiB -> %.1f MiB (%+.1f MiB per hour)   target < 5 MiB/h  %s\n",
-                "resident memory after warm-up / end", rssStart, rssEnd, growthPerHour,
-                growthPerHour < 5.0 ? "ok" : "MISSED");
+    const bool okGrowth = !judgeGrowth || growthPerHour < 5.0;
+    if (judgeGrowth)
+        std::printf("  %-34s %10.1f MiB -> %.1f MiB (%+.1f MiB per hour)   target < 5 MiB/h  %s\n",
+                    "resident memory after warm-up / end", rssStart, rssEnd, growthPerHour,
+                    okGrowth ? "ok" : "MISSED");
+    else
+        std::printf("  %-34s %10.1f MiB -> %.1f MiB (growth judged on runs of 30 min or more, once the\n"
+                    "  %-34s 10-minute chart history is full)\n",
+                    "resident memory start / end", rssStart, rssEnd, "");
     std::printf("  %-34s %12d   worst %lld ms   target 0  %s\n", "GUI-thread stalls over 100 ms", stalls.over100,
                 (long long)stalls.worstMs, stalls.over100 == 0 ? "ok" : "MISSED");
     if (record) {
-        std::printf("  %-34s %12llu   (%llu bytes written, %llu read back)\n", "frames recorded",
+        std::printf("  %-34s %12llu   (%llu bytes in the file, %llu bytes of data read back)\n", "frames recorded",
                     (unsigned long long)recordedFrames, (unsigned long long)recordedBytes,
                     (unsigned long long)captureBytes);
         std::printf("  %-34s %12s   %s\n", "capture intact (reads to its end)", captureIntact ? "yes" : "NO",
                     captureIntact ? "ok" : "MISSED");
     }
-    std::printf("  %-34s %12.1f Hz\n", "decoded rate", decoded / wallS);
-    std::printf("targets: %s\n", okLost && okRefresh && okBusy ? "all met" : "NOT all met (see MISSED above)");
+    std::printf("  %-34s %12.1f Hz\n", "decoded rate (measured window)",
+                double(session.store().totalAppended() - decodedAtStart) / std::max(1e-3, wallS + 0.5));
+    const bool allMet = okLost && okRefresh && okBusy && okGrowth && stalls.over100 == 0;
+    std::printf("targets: %s\n", allMet ? "all met" : "NOT all met (see MISSED above)");
     window.close();
     // A lost frame is a correctness failure; the speed targets are reported, not enforced
     // (a benchmark, not a timed test).
