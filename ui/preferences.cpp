@@ -1,7 +1,5 @@
 #include "preferences.h"
 
-#include <QDateTime>
-#include <QRegularExpression>
 #include <QSettings>
 #include <QStandardPaths>
 
@@ -58,25 +56,6 @@ QString Preferences::effectiveRecordingFolder() const
     if (!recordingFolder.isEmpty())
         return recordingFolder;
     return QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
-}
-
-QString Preferences::recordingFileName(const QString &device, const QString &serial, const QDateTime &when) const
-{
-    QString name = recordingPattern;
-    name.replace(QLatin1String("{device}"), device.isEmpty() ? QStringLiteral("device") : device);
-    name.replace(QLatin1String("{product}"), device.isEmpty() ? QStringLiteral("device") : device);
-    name.replace(QLatin1String("{serial}"), serial.isEmpty() ? QStringLiteral("unknown") : serial);
-    name.replace(QLatin1String("{date}"), when.toString(QStringLiteral("yyyyMMdd")));
-    name.replace(QLatin1String("{time}"), when.toString(QStringLiteral("HHmmss")));
-    // One file inside the chosen folder: no separators, no "..", nothing a shell or a file
-    // system would treat specially.
-    static const QRegularExpression unsafe(QStringLiteral("[^A-Za-z0-9._\\-\\x{4e00}-\\x{9fff}]"));
-    name.replace(unsafe, QStringLiteral("_"));
-    while (name.contains(QLatin1String("..")))
-        name.replace(QLatin1String(".."), QLatin1String("."));
-    if (name.startsWith(QLatin1Char('.')))
-        name.prepend(QLatin1Char('_'));
-    return name.isEmpty() ? QStringLiteral("capture.imucap") : name;
 }
 
 } // namespace imudesk::ui

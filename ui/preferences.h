@@ -5,7 +5,6 @@
 
 #include <QString>
 
-class QDateTime;
 class QSettings;
 
 namespace imudesk::ui {
@@ -34,6 +33,7 @@ struct Preferences {
     int refreshHz = 33;
     int historyMinutes = 10;
     QString recordingFolder;    // empty: the user's documents folder
+    // Expanded by RecordingControls::expandPattern ({product}, {serial}, {date}, {time}).
     QString recordingPattern = QStringLiteral("{product}-{date}-{time}.imucap"); // RecordingControls' default
     bool autoReconnect = true;
 
@@ -42,9 +42,6 @@ struct Preferences {
     void save(QSettings &settings) const;
     // The recording folder to use (the documents folder when none was chosen).
     QString effectiveRecordingFolder() const;
-    // A file name from the pattern: {product} (or {device}), {serial}, {date} (yyyyMMdd), {time} (HHmmss).
-    // Characters that are not safe in file names are replaced, and no path separators pass.
-    QString recordingFileName(const QString &device, const QString &serial, const QDateTime &when) const;
     int refreshIntervalMs() const { return 1000 / refreshHz; }
     friend bool operator==(const Preferences &, const Preferences &) = default;
 };

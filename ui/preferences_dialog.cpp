@@ -1,5 +1,7 @@
 #include "preferences_dialog.h"
 
+#include "recording_controls.h"
+
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDateTime>
@@ -155,8 +157,10 @@ void PreferencesDialog::browseFolder()
 
 void PreferencesDialog::updatePatternExample()
 {
-    m_patternExample->setText(preferences().recordingFileName(QStringLiteral("HI14R3"), QStringLiteral("2181B60A"),
-                                                              QDateTime::currentDateTime()));
+    // The name the recording controls will give, for an example device.
+    m_patternExample->setText(RecordingControls::expandPattern(preferences().recordingPattern, QStringLiteral("HI14R3"),
+                                                               QStringLiteral("2181B60A"),
+                                                               QDateTime::currentDateTime()));
 }
 
 } // namespace imudesk::ui

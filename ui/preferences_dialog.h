@@ -32,6 +32,7 @@ public:
     QLineEdit *folderEdit() const { return m_folder; }
     QLineEdit *patternEdit() const { return m_pattern; }
     QCheckBox *reconnectCheck() const { return m_reconnect; }
+    QLabel *patternExample() const { return m_patternExample; }
 
 private:
     void browseFolder();

@@ -105,12 +105,17 @@ QString RecordingControls::pattern() const
 
 QString RecordingControls::expandPattern(const QString &pattern) const
 {
-    const QDateTime now = QDateTime::currentDateTime();
+    return expandPattern(pattern, m_product, m_serial, QDateTime::currentDateTime());
+}
+
+QString RecordingControls::expandPattern(const QString &pattern, const QString &product, const QString &serial,
+                                         const QDateTime &when)
+{
     QString name = pattern;
-    name.replace(QLatin1String("{date}"), now.toString(QStringLiteral("yyyyMMdd")));
-    name.replace(QLatin1String("{time}"), now.toString(QStringLiteral("HHmmss")));
-    name.replace(QLatin1String("{product}"), m_product.isEmpty() ? QStringLiteral("device") : m_product);
-    name.replace(QLatin1String("{serial}"), m_serial.isEmpty() ? QStringLiteral("unknown") : m_serial);
+    name.replace(QLatin1String("{date}"), when.toString(QStringLiteral("yyyyMMdd")));
+    name.replace(QLatin1String("{time}"), when.toString(QStringLiteral("HHmmss")));
+    name.replace(QLatin1String("{product}"), product.isEmpty() ? QStringLiteral("device") : product);
+    name.replace(QLatin1String("{serial}"), serial.isEmpty() ? QStringLiteral("unknown") : serial);
     // Nothing that leaves the folder or upsets a file system.
     static const QRegularExpression unsafe(QStringLiteral("[/\\\\:*?\"<>|]"));
     name.replace(unsafe, QStringLiteral("_"));

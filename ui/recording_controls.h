@@ -9,6 +9,7 @@
 #include <QElapsedTimer>
 #include <QTimer>
 
+class QDateTime;
 class QLabel;
 class QLineEdit;
 class QPushButton;
@@ -40,6 +41,11 @@ public:
 
     // The file name a pattern gives now (identity fields from the last identityChanged).
     QString expandPattern(const QString &pattern) const;
+    // The file name a pattern gives for this product, serial and time: {product}, {serial},
+    // {date} (yyyyMMdd), {time} (HHmmss); characters that leave the folder or upset a file
+    // system become "_"; ".imucap" is added when missing. (Also the preferences' example.)
+    static QString expandPattern(const QString &pattern, const QString &product, const QString &serial,
+                                 const QDateTime &when);
 
 public Q_SLOTS:
     void startRecording();

@@ -8,11 +8,13 @@
 #include "models/latest_values_model.h"
 #include "preferences.h"
 #include "preferences_dialog.h"
+#include "recording_controls.h"
 
 #include <QApplication>
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDateTime>
+#include <QLabel>
 #include <QLineEdit>
 #include <QSettings>
 #include <QSignalSpy>
@@ -68,16 +70,21 @@ private Q_SLOTS:
         QVERIFY(back.units == p.units); // the valid values stay
     }
 
-    void recordingNamesStayInTheFolder()
+    void patternExampleIsTheRealName()
     {
+        // The dialog shows the name the recording controls will give (one expansion, not two).
         Preferences p;
+        p.recordingPattern = QStringLiteral("{product}-{serial}");
+        ui::PreferencesDialog dialog(p);
+        QCOMPARE(dialog.patternExample()->text(), QStringLiteral("HI14R3-2181B60A.imucap"));
         const QDateTime when(QDate(2026, 11, 21), QTime(15, 4, 5));
-        QCOMPARE(p.recordingFileName(QStringLiteral("HI14R3"), QStringLiteral("ABC"), when),
+        QCOMPARE(ui::RecordingControls::expandPattern(Preferences{}.recordingPattern, QStringLiteral("HI14R3"),
+                                                      QStringLiteral("ABC"), when),
                  QStringLiteral("HI14R3-20261121-150405.imucap"));
-        p.recordingPattern = QStringLiteral("../../etc/{device}/x");
-        const QString name = p.recordingFileName(QStringLiteral("a/b"), {}, when);
-        QVERIFY2(!name.contains(QLatin1Char('/')) && !name.contains(QLatin1String("..")), qPrintable(name));
-        QVERIFY(!name.startsWith(QLatin1Char('.')));
+        // Nothing leaves the chosen folder.
+        const QString name = ui::RecordingControls::expandPattern(QStringLiteral("../../etc/{product}/x"),
+                                                                  QStringLiteral("a/b"), {}, when);
+        QVERIFY2(!name.contains(QLatin1Char('/')) && !name.contains(QLatin1Char('\\')), qPrintable(name));
     }
 
     void dialogEditsEveryValue()
