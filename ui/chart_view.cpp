@@ -294,6 +294,11 @@ ChartView::ChartView(ChartKind kind, QWidget *parent)
     for (Channel c : m_channels)
         m_lineOf[size_t(c)] = m_layer->addLine(colour(c));
     connect(m_chart, &QChart::plotAreaChanged, this, [this](const QRectF &area) { m_layer->setPlotArea(area); });
+    // The lines follow the axes, whoever sets their range.
+    const auto followAxes = [this] { m_layer->setRange(m_axisX->min(), m_axisX->max(), m_axisY->min(), m_axisY->max()); };
+    connect(m_axisX, &QValueAxis::rangeChanged, this, followAxes);
+    connect(m_axisY, &QValueAxis::rangeChanged, this, followAxes);
+    followAxes();
     m_crosshairLine = new QGraphicsLineItem(m_chart);
     QPen crosshairPen(QColor(0x60, 0x60, 0x60));
     crosshairPen.setStyle(Qt::DashLine);
@@ -602,7 +607,6 @@ void ChartView::applyXAxis(const Window &w)
     const double step = plot::AxisScaling::timeTickInterval(w.t1 - w.t0);
     setTicks(m_axisX, step);
     m_axisX->setRange(w.t0 - w.offset, w.t1 - w.offset);
-    m_layer->setRange(m_axisX->min(), m_axisX->max(), m_axisY->min(), m_axisY->max());
 }
 
 void ChartView::applyYAxis(double min, double max)
@@ -610,7 +614,6 @@ void ChartView::applyYAxis(double min, double max)
     const double step = plot::AxisScaling::niceStep(max - min, 5);
     setTicks(m_axisY, step);
     m_axisY->setRange(min, max);
-    m_layer->setRange(m_axisX->min(), m_axisX->max(), m_axisY->min(), m_axisY->max());
 }
 
 void ChartView::setUnits(const model::DisplayUnits &units)
