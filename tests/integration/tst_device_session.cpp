@@ -2,6 +2,7 @@
 // baud detection, identity, streaming, every documented command, ERR and timeouts,
 // errors for missing, busy and forbidden ports, the unplug case, reconnection after an
 // unplug, and frames lost on the link.
+#include "../common/session_send.h"
 #include "device/device_session.h"
 #include "io/serial_transport.h"
 #include "sim/hipnuc_simulator.h"
@@ -89,17 +90,7 @@ QList<SessionState> states(const QSignalSpy &spy)
 
 AsciiReply send(DeviceSession &s, const QString &cmd, int timeoutMs = 800)
 {
-    QSignalSpy spy(&s, &DeviceSession::commandFinished);
-    const quint64 id = s.sendCommand(cmd, timeoutMs);
-    for (int waited = 0; waited < timeoutMs + 3000; waited += 10) {
-        for (const auto &args : spy)
-            if (args.at(0).toULongLong() == id)
-                return args.at(1).value<AsciiReply>();
-        QTest::qWait(10);
-    }
-    AsciiReply r;
-    r.status = Status::Pending;
-    return r;
+    return test::sendAndWait(s, cmd, timeoutMs);
 }
 
 } // namespace

@@ -4,6 +4,7 @@
 // tool's feet and a reader that stalls. In every case: no crash, every intact frame is
 // decoded, the session stays in a clear state, and the thread that owns the session (the
 // GUI thread in the app) never waits on the link: its event loop keeps turning.
+#include "../common/session_send.h"
 #include "device/device_session.h"
 #include "protocol/hipnuc/frame_decoder.h"
 #include "protocol/hipnuc/payloads.h"
@@ -129,17 +130,7 @@ struct StatsProbe {
 
 AsciiReply send(DeviceSession &s, const QString &cmd, int timeoutMs = 1000)
 {
-    QSignalSpy spy(&s, &DeviceSession::commandFinished);
-    const quint64 id = s.sendCommand(cmd, timeoutMs);
-    for (int waited = 0; waited < timeoutMs + 3000; waited += 5) {
-        for (const auto &args : spy)
-            if (args.at(0).toULongLong() == id)
-                return args.at(1).value<AsciiReply>();
-        QTest::qWait(5);
-    }
-    AsciiReply r;
-    r.status = AsciiReply::Status::Pending;
-    return r;
+    return test::sendAndWait(s, cmd, timeoutMs);
 }
 
 sim::SimOptions simOptions(int baud = 115200)

@@ -1,0 +1,26 @@
+#pragma once
+// Sends an ASCII command through a DeviceSession and waits (turning the event loop) for
+// its commandFinished; a reply still Pending means none came within timeoutMs + 3 s.
+#include "device/device_session.h"
+
+#include <QSignalSpy>
+#include <QTest>
+
+namespace imudesk::test {
+
+inline protocol::hipnuc::AsciiReply sendAndWait(device::DeviceSession &s, const QString &cmd, int timeoutMs)
+{
+    QSignalSpy spy(&s, &device::DeviceSession::commandFinished);
+    const quint64 id = s.sendCommand(cmd, timeoutMs);
+    for (int waited = 0; waited < timeoutMs + 3000; waited += 10) {
+        for (const auto &args : spy)
+            if (args.at(0).toULongLong() == id)
+                return args.at(1).value<protocol::hipnuc::AsciiReply>();
+        QTest::qWait(10);
+    }
+    protocol::hipnuc::AsciiReply r;
+    r.status = protocol::hipnuc::AsciiReply::Status::Pending;
+    return r;
+}
+
+} // namespace imudesk::test
