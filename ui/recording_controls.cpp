@@ -117,8 +117,12 @@ QString RecordingControls::expandPattern(const QString &pattern, const QString &
     name.replace(QLatin1String("{product}"), product.isEmpty() ? QStringLiteral("device") : product);
     name.replace(QLatin1String("{serial}"), serial.isEmpty() ? QStringLiteral("unknown") : serial);
     // Nothing that leaves the folder or upsets a file system.
-    static const QRegularExpression unsafe(QStringLiteral("[/\\\\:*?\"<>|]"));
+    static const QRegularExpression unsafe(QStringLiteral("[/\\\\:*?\"<>|\\x00-\\x1f\\x7f]"));
     name.replace(unsafe, QStringLiteral("_"));
+    // A device's serial or product string is not trusted: no hidden file, no name a file system refuses.
+    while (name.startsWith(QLatin1Char('.')))
+        name.replace(0, 1, QLatin1Char('_'));
+    name.truncate(200);
     if (!name.endsWith(QLatin1String(".imucap")))
         name += QLatin1String(".imucap");
     return name;

@@ -85,6 +85,13 @@ private Q_SLOTS:
         const QString name = ui::RecordingControls::expandPattern(QStringLiteral("../../etc/{product}/x"),
                                                                   QStringLiteral("a/b"), {}, when);
         QVERIFY2(!name.contains(QLatin1Char('/')) && !name.contains(QLatin1Char('\\')), qPrintable(name));
+        // A serial from the device with control characters, a leading dot and no end.
+        const QString hostile = ui::RecordingControls::expandPattern(QStringLiteral("{serial}"),
+                                                                     {}, QStringLiteral("..\n\x01%1").arg(QString(400, u'x')), when);
+        QVERIFY2(!hostile.startsWith(QLatin1Char('.')), qPrintable(hostile));
+        QVERIFY2(hostile.size() <= 200 + 7 && hostile.endsWith(QLatin1String(".imucap")), qPrintable(hostile));
+        for (QChar c : hostile)
+            QVERIFY2(c.unicode() >= 0x20, qPrintable(hostile));
     }
 
     void dialogEditsEveryValue()
