@@ -4,6 +4,7 @@
 // tool's feet and a reader that stalls. In every case: no crash, every intact frame is
 // decoded, the session stays in a clear state, and the thread that owns the session (the
 // GUI thread in the app) never waits on the link: its event loop keeps turning.
+#include "../common/raw_pty.h"
 #include "../common/session_send.h"
 #include "device/device_session.h"
 #include "protocol/hipnuc/frame_decoder.h"
@@ -26,60 +27,11 @@ using namespace imudesk;
 using device::DeviceSession;
 using device::SessionState;
 using protocol::hipnuc::AsciiReply;
+using test::kSanitized;
+using test::RawPty;
+using test::StallWatch;
 
 namespace {
-
-#if defined(__SANITIZE_ADDRESS__)
-constexpr bool kSanitized = true;
-#else
-constexpr bool kSanitized = false;
-#endif
-
-// A pseudo-terminal whose master side the test writes to: the "device" is the test.
-class RawPty {
-public:
-    RawPty()
-    {
-        m_master = posix_openpt(O_RDWR | O_NOCTTY | O_NONBLOCK);
-        if (m_master < 0 || grantpt(m_master) != 0 || unlockpt(m_master) != 0)
-            return;
-        m_slave = QString::fromLocal8Bit(ptsname(m_master));
-        termios t{};
-        tcgetattr(m_master, &t);
-        cfmakeraw(&t);
-        tcsetattr(m_master, TCSANOW, &t);
-    }
-    ~RawPty()
-    {
-        if (m_master >= 0)
-            ::close(m_master);
-    }
-    bool ok() const { return m_master >= 0 && !m_slave.isEmpty(); }
-    QString slave() const { return m_slave; }
-    // Writes all of `bytes`, waiting while the pty's buffer is full (keeps the event loop turning).
-    void write(const std::vector<uint8_t> &bytes)
-    {
-        size_t done = 0;
-        while (done < bytes.size()) {
-            const ssize_t n = ::write(m_master, bytes.data() + done, bytes.size() - done);
-            if (n > 0)
-                done += size_t(n);
-            else
-                QTest::qWait(1);
-        }
-    }
-    // Reads and forgets what the session sent (its LOG VERSION queries).
-    void drain()
-    {
-        char buf[512];
-        while (::read(m_master, buf, sizeof buf) > 0) {
-        }
-    }
-
-private:
-    int m_master = -1;
-    QString m_slave;
-};
 
 std::vector<uint8_t> hi91Frame(uint32_t ms)
 {
@@ -89,27 +41,6 @@ std::vector<uint8_t> hi91Frame(uint32_t ms)
     p.yaw = float(ms % 360);
     return protocol::hipnuc::buildFrame(protocol::hipnuc::encode(p));
 }
-
-// Longest time the owner's event loop went without running a 5 ms timer.
-class StallWatch {
-public:
-    StallWatch()
-    {
-        m_timer.setInterval(5);
-        QObject::connect(&m_timer, &QTimer::timeout, &m_timer, [this] {
-            const qint64 ms = m_clock.restart();
-            m_worst = std::max(m_worst, ms);
-        });
-        m_clock.start();
-        m_timer.start();
-    }
-    qint64 worstMs() const { return m_worst; }
-
-private:
-    QTimer m_timer;
-    QElapsedTimer m_clock;
-    qint64 m_worst = 0;
-};
 
 bool waitState(DeviceSession &s, SessionState want, int timeoutMs = 15000)
 {

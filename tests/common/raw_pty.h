@@ -1,0 +1,104 @@
+#pragma once
+// Test helpers for faults on the serial path: a pseudo-terminal whose master side the test
+// writes to (the test plays the device, and closing it pulls the cable), and a watch of the
+// owner thread's event loop (the GUI thread in the app).
+#include <QElapsedTimer>
+#include <QObject>
+#include <QString>
+#include <QTest>
+#include <QTimer>
+
+#include <fcntl.h>
+#include <termios.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+namespace imudesk::test {
+
+#if defined(__SANITIZE_ADDRESS__)
+constexpr bool kSanitized = true;
+#else
+constexpr bool kSanitized = false;
+#endif
+
+// A pseudo-terminal whose master side the test writes to: the "device" is the test.
+class RawPty {
+public:
+    RawPty()
+    {
+        m_master = posix_openpt(O_RDWR | O_NOCTTY | O_NONBLOCK);
+        if (m_master < 0 || grantpt(m_master) != 0 || unlockpt(m_master) != 0)
+            return;
+        m_slave = QString::fromLocal8Bit(ptsname(m_master));
+        termios t{};
+        tcgetattr(m_master, &t);
+        cfmakeraw(&t);
+        tcsetattr(m_master, TCSANOW, &t);
+    }
+    ~RawPty() { pull(); }
+    // The cable is pulled: the slave side sees a hang-up.
+    void pull()
+    {
+        if (m_master >= 0)
+            ::close(m_master);
+        m_master = -1;
+    }
+    bool ok() const { return m_master >= 0 && !m_slave.isEmpty(); }
+    QString slave() const { return m_slave; }
+    // Writes all of `bytes`, waiting while the pty's buffer is full (keeps the event loop turning).
+    void write(const std::vector<uint8_t> &bytes)
+    {
+        size_t done = 0;
+        while (m_master >= 0 && done < bytes.size()) {
+            const ssize_t n = ::write(m_master, bytes.data() + done, bytes.size() - done);
+            if (n > 0)
+                done += size_t(n);
+            else
+                QTest::qWait(1);
+        }
+    }
+    // Reads and forgets what the session sent (its LOG VERSION queries).
+    void drain() { readAvailable(); }
+    // What the session has sent and the test has not read yet.
+    std::string readAvailable()
+    {
+        std::string out;
+        char buf[512];
+        ssize_t n = 0;
+        while (m_master >= 0 && (n = ::read(m_master, buf, sizeof buf)) > 0)
+            out.append(buf, size_t(n));
+        return out;
+    }
+
+private:
+    int m_master = -1;
+    QString m_slave;
+};
+
+// Longest time the owner's event loop went without running a 5 ms timer.
+class StallWatch {
+public:
+    StallWatch()
+    {
+        m_timer.setInterval(5);
+        QObject::connect(&m_timer, &QTimer::timeout, &m_timer, [this] {
+            const qint64 ms = m_clock.restart();
+            m_worst = std::max(m_worst, ms);
+        });
+        m_clock.start();
+        m_timer.start();
+    }
+    qint64 worstMs() const { return m_worst; }
+
+private:
+    QTimer m_timer;
+    QElapsedTimer m_clock;
+    qint64 m_worst = 0;
+};
+
+} // namespace imudesk::test
