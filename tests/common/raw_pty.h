@@ -2,6 +2,9 @@
 // Test helpers for faults on the serial path: a pseudo-terminal whose master side the test
 // writes to (the test plays the device, and closing it pulls the cable), and a watch of the
 // owner thread's event loop (the GUI thread in the app).
+#include "protocol/hipnuc/frame_decoder.h"
+#include "protocol/hipnuc/payloads.h"
+
 #include <QElapsedTimer>
 #include <QObject>
 #include <QString>
@@ -79,6 +82,16 @@ private:
     int m_master = -1;
     QString m_slave;
 };
+
+// An HI91 frame with the device clock at ms (what the tests' "device" sends).
+inline std::vector<uint8_t> hi91Frame(uint32_t ms)
+{
+    protocol::hipnuc::Hi91 p;
+    p.systemTime = ms;
+    p.acc = {0.01f * float(ms % 100), -0.5f, 1.0f};
+    p.yaw = float(ms % 360);
+    return protocol::hipnuc::buildFrame(protocol::hipnuc::encode(p));
+}
 
 // Longest time the owner's event loop went without running a 5 ms timer.
 class StallWatch {

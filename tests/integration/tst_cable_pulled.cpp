@@ -7,7 +7,6 @@
 #include "../common/raw_pty.h"
 #include "device/device_session.h"
 #include "protocol/hipnuc/frame_decoder.h"
-#include "protocol/hipnuc/payloads.h"
 #include "record/capture_reader.h"
 
 #include <QSignalSpy>
@@ -18,20 +17,12 @@ using namespace imudesk;
 using device::DeviceSession;
 using device::SessionState;
 using protocol::hipnuc::AsciiReply;
+using test::hi91Frame;
 using test::kSanitized;
 using test::RawPty;
 using test::StallWatch;
 
 namespace {
-
-std::vector<uint8_t> hi91Frame(uint32_t ms)
-{
-    protocol::hipnuc::Hi91 p;
-    p.systemTime = ms;
-    p.acc = {0.02f, -0.5f, 1.0f};
-    p.yaw = float(ms % 360);
-    return protocol::hipnuc::buildFrame(protocol::hipnuc::encode(p));
-}
 
 // n whole frames, then the first `partial` bytes of one more.
 std::vector<uint8_t> framesThenPart(uint32_t n, size_t partial)

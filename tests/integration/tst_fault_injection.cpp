@@ -27,20 +27,12 @@ using namespace imudesk;
 using device::DeviceSession;
 using device::SessionState;
 using protocol::hipnuc::AsciiReply;
+using test::hi91Frame;
 using test::kSanitized;
 using test::RawPty;
 using test::StallWatch;
 
 namespace {
-
-std::vector<uint8_t> hi91Frame(uint32_t ms)
-{
-    protocol::hipnuc::Hi91 p;
-    p.systemTime = ms;
-    p.acc = {0.01f * float(ms % 100), -0.5f, 1.0f};
-    p.yaw = float(ms % 360);
-    return protocol::hipnuc::buildFrame(protocol::hipnuc::encode(p));
-}
 
 bool waitState(DeviceSession &s, SessionState want, int timeoutMs = 15000)
 {
