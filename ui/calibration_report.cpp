@@ -264,8 +264,9 @@ void CalibrationReport::buildHtml()
                  .arg(esc(tr("Indoors the field is often distorted in ways no calibration removes: if the heading "
                              "stays poor after a good calibration, prefer the 6-axis mode there.")));
     }
-    h += QStringLiteral("<p style=\"color: #666;\">%1</p>")
-             .arg(esc(tr("Written by ImuDesk from the run kept in %1").arg(QDir::toNativeSeparators(r.folder))));
+    if (!r.folder.isEmpty())
+        h += QStringLiteral("<p style=\"color: #666;\">%1</p>")
+                 .arg(esc(tr("Written by ImuDesk from the run kept in %1").arg(QDir::toNativeSeparators(r.folder))));
     h += QStringLiteral("</body></html>");
     m_html = h;
     m_document->setHtml(m_html);
