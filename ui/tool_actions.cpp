@@ -314,8 +314,7 @@ void ToolActions::openMagCal()
     if (!ws || ws->hasAttachedLink() || !ws->identity() || !ws->identity()->firmware)
         return;
     auto *wizard = new MagCalibrationWizard(ws->session(), *ws->identity()->firmware, m_window);
-    if (ws->identity())
-        wizard->runSaver().setIdentity(*ws->identity());
+    wizard->runSaver().setIdentity(*ws->identity());
     wizard->setAttribute(Qt::WA_DeleteOnClose);
     wizard->show();
 }
