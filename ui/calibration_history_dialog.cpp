@@ -74,8 +74,8 @@ CalibrationHistoryDialog::CalibrationHistoryDialog(const QString &root, QWidget 
     auto *detailsBox = new QWidget;
     auto *detailsLayout = new QHBoxLayout(detailsBox);
     detailsLayout->setContentsMargins(0, 0, 0, 0);
-    detailsLayout->addWidget(detailsScroll, 1);
-    detailsLayout->addWidget(spheres, 2);
+    detailsLayout->addWidget(detailsScroll, 2);
+    detailsLayout->addWidget(spheres, 3);
 
     auto *right = new QSplitter(Qt::Vertical);
     right->addWidget(m_runs);
@@ -86,6 +86,8 @@ CalibrationHistoryDialog::CalibrationHistoryDialog(const QString &root, QWidget 
     split->addWidget(m_devices);
     split->addWidget(right);
     split->setStretchFactor(1, 4);
+    split->setSizes({170, 830});
+    right->setSizes({200, 480});
 
     m_exportReport = new QPushButton(tr("Export report (PDF)…"));
     m_exportSamples = new QPushButton(tr("Export samples (CSV)…"));
