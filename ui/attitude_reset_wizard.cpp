@@ -92,13 +92,18 @@ AttitudeResetWizard::AttitudeResetWizard(device::DeviceSession &session, QWidget
             m_still.reset();
             m_seq = m_session.store().totalAppended();
             m_done = false;
+            m_rows.columns = {QStringLiteral("time_ms"), QStringLiteral("gyr_x"), QStringLiteral("gyr_y"),
+                              QStringLiteral("gyr_z"),   QStringLiteral("acc_x"), QStringLiteral("acc_y"),
+                              QStringLiteral("acc_z"),   QStringLiteral("roll"),  QStringLiteral("pitch"),
+                              QStringLiteral("yaw")};
+            m_rows.rows.clear();
             m_clock.start(50);
             button(QWizard::NextButton)->setEnabled(false);
         } else {
             m_clock.stop();
         }
         if (id == ResultPage)
-            m_result->setText(resultText());
+            m_result->setText(resultText() + (m_done ? QStringLiteral("\n\n") + m_saver.statusText() : QString()));
     });
 }
 
@@ -128,6 +133,10 @@ void AttitudeResetWizard::refresh()
             m_pitch = s.pitch;
             m_yaw = s.yaw;
         }
+        if (m_rows.rows.size() < CalibrationRunSaver::kMaxRows && (s.fields & model::FieldGyr)
+            && (s.fields & model::FieldAcc))
+            m_rows.rows.push_back({double(s.deviceTimeMs), s.gyr.x, s.gyr.y, s.gyr.z, s.acc.x, s.acc.y, s.acc.z,
+                                   m_roll, m_pitch, m_yaw});
     }
     const bool still = m_still.isStill() && m_still.stillForS() >= kStillForS;
     const bool level = std::abs(m_pitch) < kLevelLimitDeg
@@ -155,6 +164,11 @@ void AttitudeResetWizard::send()
 {
     if (!m_conditionsMet || m_pending)
         return;
+    m_sentStillForS = m_still.stillForS();
+    m_sentGyroStd = m_still.gyroStdDps();
+    m_sentAccStd = m_still.accStdG();
+    m_sentRoll = m_roll;
+    m_sentPitch = m_pitch;
     m_pending = m_session.sendCommand(QStringLiteral("CONFIG ATT RST %1").arg(variant()));
     m_send->setEnabled(false);
 }
@@ -170,7 +184,29 @@ void AttitudeResetWizard::onCommandFinished(quint64 id, const protocol::hipnuc::
         : reply.status == protocol::hipnuc::AsciiReply::Status::Timeout
         ? tr("The device did not answer CONFIG ATT RST %1: its firmware may not know this variant.").arg(variant())
         : tr("The device refused CONFIG ATT RST %1 (ERR).").arg(variant());
+    refresh(); // the attitude after the reply
+    m_saver.save(QStringLiteral("attitude_reset"), resultJson(), m_rows);
     button(QWizard::NextButton)->setEnabled(true);
+}
+
+QJsonObject AttitudeResetWizard::resultJson() const
+{
+    QJsonObject o;
+    o.insert(QStringLiteral("variant"), variant());
+    o.insert(QStringLiteral("command"), QStringLiteral("CONFIG ATT RST %1").arg(variant()));
+    o.insert(QStringLiteral("device_ok"), m_ok);
+    o.insert(QStringLiteral("device_reply"), m_reply);
+    o.insert(QStringLiteral("still_for_s"), m_sentStillForS);
+    o.insert(QStringLiteral("gyro_std_dps"), m_sentGyroStd);
+    o.insert(QStringLiteral("acc_std_g"), m_sentAccStd);
+    o.insert(QStringLiteral("roll_before_deg"), m_sentRoll);
+    o.insert(QStringLiteral("pitch_before_deg"), m_sentPitch);
+    o.insert(QStringLiteral("roll_after_deg"), m_roll);
+    o.insert(QStringLiteral("pitch_after_deg"), m_pitch);
+    o.insert(QStringLiteral("yaw_after_deg"), m_yaw);
+    o.insert(QStringLiteral("verdict"), QLatin1String(m_ok ? "pass" : "fail"));
+    o.insert(QStringLiteral("reason"), m_reply);
+    return o;
 }
 
 bool AttitudeResetWizard::validateCurrentPage()

@@ -5,8 +5,12 @@
 // and, for RST 3 (auto level), that pitch and roll are within 5 deg of level (or roll
 // within 5 deg of 180, upside down); the command is sent only when the check passes; the
 // last page shows the device's OK/ERR and the attitude after it.
-// Constructed with the device's session; reads its SampleStore on a 20 Hz clock.
+// Constructed with the device's session; reads its SampleStore on a 20 Hz clock. A command
+// the device answered is kept in the calibration history (runSaver()): the variant, the
+// reply, the stillness figures when it was sent and the samples of the check page.
+#include "calib/sample_csv.h"
 #include "calib/stillness_detector.h"
+#include "calibration_run_saver.h"
 
 #include <QTimer>
 #include <QWizard>
@@ -42,6 +46,8 @@ public:
     QString resultText() const;
     bool finishedOk() const { return m_ok; }
     bool validateCurrentPage() override;
+    CalibrationRunSaver &runSaver() { return m_saver; }
+    QJsonObject resultJson() const;
 
 private:
     void refresh();
@@ -63,6 +69,10 @@ private:
     bool m_ok = false;
     double m_roll = 0, m_pitch = 0, m_yaw = 0;
     QString m_reply;
+    double m_sentStillForS = 0, m_sentGyroStd = 0, m_sentAccStd = 0;
+    double m_sentRoll = 0, m_sentPitch = 0;
+    calib::SampleTable m_rows;
+    CalibrationRunSaver m_saver;
 };
 
 } // namespace imudesk::ui

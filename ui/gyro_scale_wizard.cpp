@@ -2,6 +2,7 @@
 
 #include "device/device_session.h"
 
+#include <QJsonObject>
 #include <QLabel>
 #include <QProgressBar>
 #include <QPushButton>
@@ -106,6 +107,11 @@ void GyroScaleWizard::startRun()
     o.biasWindowS = 1.0;
     m_run = calib::GyroScaleRun(o);
     m_run.start();
+    m_target = m_angle->value();
+    m_rows.columns = {QStringLiteral("time_ms"), QStringLiteral("gyr_x"), QStringLiteral("gyr_y"),
+                      QStringLiteral("gyr_z"),   QStringLiteral("acc_x"), QStringLiteral("acc_y"),
+                      QStringLiteral("acc_z")};
+    m_rows.rows.clear();
     m_seq = m_session.store().totalAppended(); // from now on
     m_done = false;
     button(QWizard::NextButton)->setEnabled(false);
@@ -131,10 +137,16 @@ void GyroScaleWizard::refresh()
     uint64_t next = m_seq;
     const auto samples = m_session.store().since(m_seq, SIZE_MAX, &next);
     m_seq = next;
-    for (const auto &s : samples)
-        if (s.fields & model::FieldGyr)
-            m_run.addSample(s.deviceTimeMs, {s.gyr.x, s.gyr.y, s.gyr.z},
-                            (s.fields & model::FieldAcc) ? Eigen::Vector3d(s.acc.x, s.acc.y, s.acc.z) : Eigen::Vector3d::Zero());
+    for (const auto &s : samples) {
+        if (!(s.fields & model::FieldGyr))
+            continue;
+        const bool acc = s.fields & model::FieldAcc;
+        m_run.addSample(s.deviceTimeMs, {s.gyr.x, s.gyr.y, s.gyr.z},
+                        acc ? Eigen::Vector3d(s.acc.x, s.acc.y, s.acc.z) : Eigen::Vector3d::Zero());
+        if (m_rows.rows.size() < CalibrationRunSaver::kMaxRows)
+            m_rows.rows.push_back({double(s.deviceTimeMs), s.gyr.x, s.gyr.y, s.gyr.z, acc ? s.acc.x : 0.0,
+                                   acc ? s.acc.y : 0.0, acc ? s.acc.z : 0.0});
+    }
     m_guidance->setText(m_run.guidance());
     const double angle = m_run.state() == calib::GyroScaleRun::State::Finished && !m_run.result().legs.empty()
         ? std::abs(m_run.result().legs.back().angleDeg)
@@ -159,10 +171,51 @@ void GyroScaleWizard::onDeviceState(calib::GyroCalSession::State state, const QS
         m_start->setEnabled(true);
         m_angle->setEnabled(true);
         m_stop->setEnabled(false);
-        m_result->setText(resultText());
         m_done = true;
+        saveRun();
+        m_result->setText(resultText() + QStringLiteral("\n\n") + m_saver.statusText());
         button(QWizard::NextButton)->setEnabled(true);
     }
+}
+
+void GyroScaleWizard::saveRun()
+{
+    m_saver.save(QStringLiteral("gyro_scale"), resultJson(), m_rows);
+}
+
+QJsonObject GyroScaleWizard::resultJson() const
+{
+    const bool ok = m_device.state() == calib::GyroCalSession::State::Succeeded;
+    const calib::GyroScaleRun::Result r = m_run.result();
+    QJsonObject o;
+    o.insert(QStringLiteral("target_deg"), m_target);
+    o.insert(QStringLiteral("device_ok"), ok);
+    o.insert(QStringLiteral("device_reply"), m_device.message());
+    const bool estimate = !r.legs.empty();
+    o.insert(QStringLiteral("estimate_complete"), estimate);
+    if (estimate) {
+        const calib::GyroScaleRun::Leg &leg = r.legs.back();
+        o.insert(QStringLiteral("scale_error_pct"), r.scaleErrorPct);
+        o.insert(QStringLiteral("bias_dps"), r.biasDps);
+        o.insert(QStringLiteral("axis_tilt_deg"), r.axisTiltDeg);
+        o.insert(QStringLiteral("odr_hz"), r.odrHz);
+        o.insert(QStringLiteral("angle_deg"), leg.angleDeg);
+        o.insert(QStringLiteral("duration_s"), leg.durationS);
+        o.insert(QStringLiteral("mean_rate_dps"), leg.meanRateDps);
+        o.insert(QStringLiteral("in_band_pct"), leg.inBandPct);
+        o.insert(QStringLiteral("uniformity_pct"), leg.uniformityPct);
+        o.insert(QStringLiteral("stopped_in_window"), leg.stoppedInWindow);
+        o.insert(QStringLiteral("acceptable"), r.acceptable);
+    }
+    // pass: the device took it and our run met the manual's conditions; warn: taken, but
+    // the run was uneven or we could not check it; fail: the device refused it.
+    const char *verdict = !ok ? "fail" : estimate && r.acceptable ? "pass" : "warn";
+    o.insert(QStringLiteral("verdict"), QLatin1String(verdict));
+    o.insert(QStringLiteral("reason"),
+             !ok ? tr("The device rejected the run: %1").arg(m_device.message())
+                 : estimate ? r.summary
+                            : tr("The device accepted the run, but ImuDesk saw no complete turn to check it."));
+    return o;
 }
 
 QString GyroScaleWizard::resultText() const

@@ -8,8 +8,12 @@
 //   3. the result: the device's OK/ERR and our estimate of the scale error.
 // Constructed with the device's session; reads samples from its SampleStore on a 20 Hz
 // clock (never per sample) and talks to the device only through the session's queued API.
+// A run the device answered (OK or ERR) is kept in the calibration history (runSaver()):
+// target angle, the device's reply, our estimate and the streamed samples.
 #include "calib/gyro_cal_session.h"
 #include "calib/gyro_scale_run.h"
+#include "calib/sample_csv.h"
+#include "calibration_run_saver.h"
 
 #include <QTimer>
 #include <QWizard>
@@ -42,12 +46,15 @@ public:
     const calib::GyroCalSession &deviceCalibration() const { return m_device; }
     QString resultText() const;
     bool validateCurrentPage() override;
+    CalibrationRunSaver &runSaver() { return m_saver; }
+    QJsonObject resultJson() const;
 
 private:
     void startRun();
     void stopRun();
     void refresh();
     void onDeviceState(calib::GyroCalSession::State state, const QString &message);
+    void saveRun();
 
     device::DeviceSession &m_session;
     calib::GyroCalSession m_device;
@@ -55,6 +62,9 @@ private:
     QTimer m_clock;
     uint64_t m_seq = 0;
     bool m_done = false;
+    int m_target = 0;
+    calib::SampleTable m_rows;
+    CalibrationRunSaver m_saver;
     QSpinBox *m_angle = nullptr;
     QPushButton *m_start = nullptr;
     QPushButton *m_stop = nullptr;

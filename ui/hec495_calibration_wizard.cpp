@@ -235,6 +235,18 @@ void Hec495CalibrationWizard::onPageChanged(int id)
 
 void Hec495CalibrationWizard::refresh()
 {
+    if (m_running) {
+        uint64_t next = m_seq;
+        const auto samples = m_session.store().since(m_seq, SIZE_MAX, &next);
+        m_seq = next;
+        for (const auto &x : samples) {
+            if (m_rows.rows.size() >= CalibrationRunSaver::kMaxRows || !(x.fields & model::FieldEuler))
+                continue;
+            const bool mag = x.fields & model::FieldMag;
+            m_rows.rows.push_back({double(x.deviceTimeMs), x.yaw, x.pitch, x.roll, mag ? x.mag.x : 0.0,
+                                   mag ? x.mag.y : 0.0, mag ? x.mag.z : 0.0});
+        }
+    }
     const auto s = m_session.store().latest();
     if (!s || !(s->fields & model::FieldEuler)) {
         m_view->setPose(std::nullopt);
@@ -279,6 +291,11 @@ void Hec495CalibrationWizard::onCommandFinished(quint64 id, const Hec495Result &
         case RunState::Starting:
             m_running = true;
             m_tracker.clear();
+            m_seq = m_session.store().totalAppended();
+            m_rows.columns = {QStringLiteral("time_ms"), QStringLiteral("heading"), QStringLiteral("pitch"),
+                              QStringLiteral("roll"),    QStringLiteral("mag_x"),   QStringLiteral("mag_y"),
+                              QStringLiteral("mag_z")};
+            m_rows.rows.clear();
             refresh(); // the pose the first point is taken at
             m_status->setText(tr("Calibration running (%1). Turn the compass as shown; targets light up as the "
                                  "module collects points.")
@@ -308,6 +325,7 @@ void Hec495CalibrationWizard::onCommandFinished(quint64 id, const Hec495Result &
                 m_running = false;
                 m_fitErr = result.reply.fitError;
                 m_savedPoints = result.reply.points;
+                m_saver.save(QStringLiteral("compass"), resultJson(), m_rows);
                 m_status->setText(tr("Calibration saved."));
             } else {
                 setError(tr("The module answered the save command without a fit error (%1). Collect the points "
@@ -427,7 +445,27 @@ QString Hec495CalibrationWizard::resultText() const
               .arg(CompassPoseTracker::kMaxGoodFitErr, 0, 'f', 0)
         : tr("Good: FitErr is at most %1. The module stores and uses the calibration from now on.")
               .arg(CompassPoseTracker::kMaxGoodFitErr, 0, 'f', 0);
-    return figures + QStringLiteral("\n\n") + verdict;
+    return figures + QStringLiteral("\n\n") + verdict + QStringLiteral("\n\n") + m_saver.statusText();
+}
+
+QJsonObject Hec495CalibrationWizard::resultJson() const
+{
+    QJsonObject o;
+    o.insert(QStringLiteral("method"), CompassPoseTracker::methodName(method()));
+    o.insert(QStringLiteral("method_code"), int(CompassPoseTracker::startCommandCode(method())));
+    if (m_fitErr)
+        o.insert(QStringLiteral("fit_err"), double(*m_fitErr));
+    o.insert(QStringLiteral("points"), m_savedPoints);
+    o.insert(QStringLiteral("valid_points"), m_tracker.validPoints());
+    o.insert(QStringLiteral("max_good_fit_err"), CompassPoseTracker::kMaxGoodFitErr);
+    const bool good = m_fitErr && CompassPoseTracker::fitErrAcceptable(*m_fitErr);
+    o.insert(QStringLiteral("verdict"), QLatin1String(good ? "pass" : "fail"));
+    o.insert(QStringLiteral("reason"),
+             good ? tr("FitErr %1 is at most %2.").arg(double(*m_fitErr), 0, 'f', 2).arg(CompassPoseTracker::kMaxGoodFitErr, 0, 'f', 0)
+                  : tr("FitErr %1 is above %2: the manual says to calibrate again.")
+                        .arg(m_fitErr ? double(*m_fitErr) : 0.0, 0, 'f', 2)
+                        .arg(CompassPoseTracker::kMaxGoodFitErr, 0, 'f', 0));
+    return o;
 }
 
 void Hec495CalibrationWizard::calibrateAgain()

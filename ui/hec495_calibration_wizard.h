@@ -11,9 +11,13 @@
 //      the page with what to do.
 //   3. Result page: FitErr and point count of the save reply (77 09 00 89 FitErr...), and the
 //      verdict: above 10 the manual says calibrate again, offered with one button.
+// A saved calibration is kept in the calibration history (runSaver()): the method, FitErr,
+// points and the attitude samples streamed during the run.
 // Leaving the wizard while a run is active (or starting) sends Stop. The session must
 // outlive the wizard.
 #include "calib/compass_pose_tracker.h"
+#include "calib/sample_csv.h"
+#include "calibration_run_saver.h"
 
 #include <QTimer>
 #include <QWizard>
@@ -71,6 +75,9 @@ public:
     QString errorText() const;
     QString resultText() const;
 
+    CalibrationRunSaver &runSaver() { return m_saver; }
+    QJsonObject resultJson() const;
+
     bool validateCurrentPage() override;
     void done(int result) override;
 
@@ -101,6 +108,9 @@ private:
     bool m_running = false;
     std::optional<float> m_fitErr;
     int m_savedPoints = 0;
+    uint64_t m_seq = 0;
+    calib::SampleTable m_rows;
+    CalibrationRunSaver m_saver;
 
     QButtonGroup *m_methods = nullptr;
     QLabel *m_instructions = nullptr;

@@ -94,7 +94,14 @@ MagCalibrationWizard::MagCalibrationWizard(device::DeviceSession &session, const
     m_resultLabel->setWordWrap(true);
     m_resultLabel->setTextInteractionFlags(Qt::TextSelectableByMouse);
     m_after = new MagSphereView;
-    sl->addWidget(m_resultLabel, 1);
+    auto *resultColumn = new QVBoxLayout;
+    resultColumn->addWidget(m_resultLabel);
+    m_savedLabel = new QLabel;
+    m_savedLabel->setWordWrap(true);
+    m_savedLabel->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    resultColumn->addWidget(m_savedLabel);
+    resultColumn->addStretch();
+    sl->addLayout(resultColumn, 1);
     sl->addWidget(m_after, 1);
     setPage(ResultPage, res);
 
@@ -145,8 +152,25 @@ void MagCalibrationWizard::pageChanged(int id)
         m_haveYaw = false;
         m_headingTurned = m_headingMaxJump = 0;
     }
-    if (id == ResultPage && !m_fitted)
-        runFit();
+    if (id == ResultPage) {
+        if (!m_fitted)
+            runFit();
+        saveRun();
+    }
+}
+
+void MagCalibrationWizard::saveRun()
+{
+    if (m_runSaved)
+        return;
+    calib::SampleTable table;
+    table.columns = {QStringLiteral("mag_x"), QStringLiteral("mag_y"), QStringLiteral("mag_z")};
+    table.rows.reserve(m_samples.size());
+    for (const Eigen::Vector3d &m : m_samples)
+        table.rows.push_back({m.x(), m.y(), m.z()});
+    m_saver.save(QStringLiteral("magnetometer"), m_result.toJson(), table);
+    m_runSaved = true;
+    m_savedLabel->setText(m_saver.statusText());
 }
 
 void MagCalibrationWizard::refresh()
@@ -200,6 +224,7 @@ void MagCalibrationWizard::runFit()
 {
     m_result = calib::MagCalibrator().calibrate(m_samples);
     m_fitted = true;
+    m_runSaved = false;
     m_after->setSamples(m_samples);
     if (m_result.usable())
         m_after->setCalibration(m_result.hardIron, m_result.softIron);

@@ -8,10 +8,12 @@
 //   sphere, the troubleshooting of 9.31 when it is not usable) -> heading check (turn
 //   360 deg flat: the heading must change continuously, no jump > 10 deg).
 // Constructed with the device's session and its firmware (which picks the device flow);
-// reads the SampleStore on a 20 Hz clock.
+// reads the SampleStore on a 20 Hz clock. Each fit shown on the result page is kept in the
+// calibration history (runSaver(): root and the device's identity); the page says where.
 #include "calib/mag_cal_result.h"
 #include "calib/mag_cal_session.h"
 #include "calib/mag_environment_check.h"
+#include "calibration_run_saver.h"
 #include "model/device_identity.h"
 
 #include <QTimer>
@@ -55,12 +57,15 @@ public:
     double headingTurnedDeg() const { return m_headingTurned; }
     double headingMaxJumpDeg() const { return m_headingMaxJump; }
     bool headingCheckPassed() const;
+    // Where finished runs are kept: set its root and the device's identity before the run.
+    CalibrationRunSaver &runSaver() { return m_saver; }
 
 private:
     void refresh();
     void runFit();
     void switchToAhrs();
     void pageChanged(int id);
+    void saveRun();
 
     device::DeviceSession &m_session;
     model::FirmwareVersion m_firmware;
@@ -68,6 +73,9 @@ private:
     calib::MagEnvironmentCheck m_env;
     calib::MagCalResult m_result;
     bool m_fitted = false;
+    bool m_runSaved = false;
+    CalibrationRunSaver m_saver;
+    QLabel *m_savedLabel = nullptr;
     std::vector<Eigen::Vector3d> m_samples;
     QTimer m_clock;
     uint64_t m_seq = 0;

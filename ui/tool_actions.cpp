@@ -2,6 +2,7 @@
 
 #include "analysis_window.h"
 #include "attitude_reset_wizard.h"
+#include "calibration_history_dialog.h"
 #include "gyro_scale_wizard.h"
 #include "hec495_calibration_wizard.h"
 #include "device/hec495_session.h"
@@ -70,6 +71,9 @@ ToolActions::ToolActions(MainWindow *window) : QObject(window), m_window(window)
     connect(m_attitudeReset, &QAction::triggered, this, &ToolActions::openAttitudeReset);
     m_compassCal = make("compassCalAction");
     connect(m_compassCal, &QAction::triggered, this, &ToolActions::openCompassCal);
+    m_calHistory = make("calibrationHistoryAction");
+    m_calHistory->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_H));
+    connect(m_calHistory, &QAction::triggered, this, &ToolActions::openCalHistory);
     retranslate();
 }
 
@@ -93,6 +97,8 @@ void ToolActions::addToMenus(QMenu *fileMenu, QMenu *deviceMenu, QMenu *calibrat
     calibrateMenu->addActions({m_magCal, m_gyroCal, m_attitudeReset});
     calibrateMenu->addSeparator();
     calibrateMenu->addAction(m_compassCal);
+    calibrateMenu->addSeparator();
+    calibrateMenu->addAction(m_calHistory);
     m_toolsMenu = toolsMenu;
     toolsMenu->addActions({m_analyze, m_calculator});
 }
@@ -131,6 +137,8 @@ void ToolActions::retranslate()
     m_attitudeReset->setStatusTip(tr("Zero the heading or level the module (ATT RST), after checking that it is still"));
     m_compassCal->setText(tr("HEC495 &compass…"));
     m_compassCal->setStatusTip(tr("The HEC495's own calibration methods, with the target poses to turn it to"));
+    m_calHistory->setText(tr("Calibration &history…"));
+    m_calHistory->setStatusTip(tr("Every finished calibration run per device: metrics, samples, PDF report"));
     if (m_toolsMenu)
         m_toolsMenu->setTitle(tr("&Tools"));
     if (m_calibrateMenu)
@@ -306,6 +314,7 @@ void ToolActions::openMagCal()
     if (!ws || ws->hasAttachedLink() || !ws->identity() || !ws->identity()->firmware)
         return;
     auto *wizard = new MagCalibrationWizard(ws->session(), *ws->identity()->firmware, m_window);
+    wizard->runSaver().setIdentity(*ws->identity());
     wizard->setAttribute(Qt::WA_DeleteOnClose);
     wizard->show();
 }
@@ -316,6 +325,8 @@ void ToolActions::openGyroCal()
     if (!ws || ws->hasAttachedLink())
         return;
     auto *wizard = new GyroScaleWizard(ws->session(), m_window);
+    if (ws->identity())
+        wizard->runSaver().setIdentity(*ws->identity());
     wizard->setAttribute(Qt::WA_DeleteOnClose);
     wizard->show();
 }
@@ -326,6 +337,8 @@ void ToolActions::openAttitudeReset()
     if (!ws || ws->hasAttachedLink())
         return;
     auto *wizard = new AttitudeResetWizard(ws->session(), m_window);
+    if (ws->identity())
+        wizard->runSaver().setIdentity(*ws->identity());
     wizard->setAttribute(Qt::WA_DeleteOnClose);
     wizard->show();
 }
@@ -337,10 +350,22 @@ void ToolActions::openCompassCal()
     if (!session)
         return;
     auto *wizard = new Hec495CalibrationWizard(*session, m_window);
+    if (ws->identity())
+        wizard->runSaver().setIdentity(*ws->identity());
     wizard->setAttribute(Qt::WA_DeleteOnClose);
     // The wizard needs its session: it closes when the link goes.
     connect(session, &QObject::destroyed, wizard, &QWidget::close);
     wizard->show();
+}
+
+void ToolActions::openCalHistory()
+{
+    auto *dialog = new CalibrationHistoryDialog(calib::CalibrationHistory::defaultRoot(), m_window);
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    const DeviceWorkspace *ws = m_window->currentWorkspace();
+    if (ws && ws->identity())
+        dialog->selectDevice(CalibrationRunSaver::serialOf(*ws->identity()));
+    dialog->show();
 }
 
 void ToolActions::updateFirmware()

@@ -45,6 +45,7 @@ public:
     QAction *gyroCalAction() const { return m_gyroCal; }
     QAction *attitudeResetAction() const { return m_attitudeReset; }
     QAction *compassCalAction() const { return m_compassCal; }
+    QAction *calHistoryAction() const { return m_calHistory; }
 
     // The steps behind the actions, callable without a file dialog (tests, command line).
     bool openCapture(const QString &path);
@@ -68,6 +69,7 @@ private:
     void openGyroCal();
     void openAttitudeReset();
     void openCompassCal();
+    void openCalHistory();
 
     MainWindow *m_window;
     QAction *m_openCapture = nullptr;
@@ -86,6 +88,7 @@ private:
     QAction *m_gyroCal = nullptr;
     QAction *m_attitudeReset = nullptr;
     QAction *m_compassCal = nullptr;
+    QAction *m_calHistory = nullptr;
     QMenu *m_toolsMenu = nullptr;
     QMenu *m_calibrateMenu = nullptr;
 };

@@ -1,12 +1,15 @@
 // The attitude reset wizard (offscreen) against the simulated module on a pseudo-terminal:
 // the static module (roll 1.5, pitch -2.5 deg) is still and near level, so ATT RST 3 is
 // sent after the stillness check and levels it; a spinning module is never still, so
-// nothing is sent.
+// nothing is sent. The answered command is kept in the calibration history with its samples.
 #include "attitude_reset_wizard.h"
+#include "calib/calibration_history.h"
 #include "device/device_session.h"
 #include "sim/pty_simulator.h"
 
 #include <QPushButton>
+#include <QStandardPaths>
+#include <QTemporaryDir>
 #include <QTest>
 
 using namespace imudesk;
@@ -24,6 +27,8 @@ sim::SimOptions options(sim::Motion m)
 class TstAttitudeResetWizard : public QObject {
     Q_OBJECT
 private Q_SLOTS:
+    void initTestCase() { QStandardPaths::setTestModeEnabled(true); }
+
     void levelsAStillModule()
     {
         sim::PtySimulator simulator(options(sim::Motion::Static));
@@ -31,7 +36,12 @@ private Q_SLOTS:
         device::DeviceSession session;
         session.open(simulator.devicePath(), 115200);
         QTRY_COMPARE_WITH_TIMEOUT(session.state(), device::SessionState::Connected, 15000);
+        QTemporaryDir history;
         ui::AttitudeResetWizard wizard(session);
+        wizard.runSaver().setRoot(history.path());
+        model::DeviceIdentity id;
+        id.serial = "SIM-ATT-1";
+        wizard.runSaver().setIdentity(id);
         wizard.show();
         wizard.setVariant(3);
         QCOMPARE(wizard.variant(), 3);
@@ -51,6 +61,16 @@ private Q_SLOTS:
         wizard.next();
         QCOMPARE(wizard.currentId(), int(ui::AttitudeResetWizard::ResultPage));
         QVERIFY(wizard.resultText().contains(QStringLiteral("OK")));
+        const calib::CalibrationHistory h(history.path());
+        const auto runs = h.list(QStringLiteral("SIM-ATT-1"));
+        QCOMPARE(runs.size(), 1);
+        QCOMPARE(runs[0].kind, QStringLiteral("attitude_reset"));
+        QCOMPARE(runs[0].verdict(), QStringLiteral("pass"));
+        QCOMPARE(runs[0].result.value(QStringLiteral("variant")).toInt(), 3);
+        QVERIFY(runs[0].result.value(QStringLiteral("still_for_s")).toDouble() >= ui::AttitudeResetWizard::kStillForS);
+        calib::SampleTable samples;
+        QVERIFY(h.loadSamples(runs[0], samples));
+        QVERIFY(samples.rows.size() > 10);
     }
 
     void neverSendsWhileMoving()
@@ -60,7 +80,9 @@ private Q_SLOTS:
         device::DeviceSession session;
         session.open(simulator.devicePath(), 115200);
         QTRY_COMPARE_WITH_TIMEOUT(session.state(), device::SessionState::Connected, 15000);
+        QTemporaryDir history;
         ui::AttitudeResetWizard wizard(session);
+        wizard.runSaver().setRoot(history.path());
         wizard.show();
         wizard.setVariant(1);
         wizard.next();
@@ -68,6 +90,7 @@ private Q_SLOTS:
         QVERIFY(!wizard.conditionsMet());
         QVERIFY(!wizard.sendButton()->isEnabled());
         QVERIFY(wizard.resultText().contains(QStringLiteral("Nothing")));
+        QVERIFY(calib::CalibrationHistory(history.path()).devices().isEmpty()); // nothing sent, nothing kept
     }
 };
 

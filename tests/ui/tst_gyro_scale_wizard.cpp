@@ -1,13 +1,17 @@
 // The gyro scale wizard (offscreen) against the simulated module on a pseudo-terminal,
 // turned by the simulator's turntable as a person would (two turns clockwise from t = 3 s,
 // 0.5 % gyro scale error): Start (CONFIG USRCAL START 720), the live angle, Stop when the
-// turn is done (CONFIG USRCAL STOP -> OK), and the result with our own estimate.
+// turn is done (CONFIG USRCAL STOP -> OK), and the result with our own estimate, kept in the
+// calibration history with its samples (an ERR run too, as a failed run).
+#include "calib/calibration_history.h"
 #include "device/device_session.h"
 #include "gyro_scale_wizard.h"
 #include "sim/pty_simulator.h"
 
 #include <QPushButton>
 #include <QSpinBox>
+#include <QStandardPaths>
+#include <QTemporaryDir>
 #include <QTest>
 
 using namespace imudesk;
@@ -15,6 +19,9 @@ using namespace imudesk;
 class TstGyroScaleWizard : public QObject {
     Q_OBJECT
 private Q_SLOTS:
+    // Runs go to the temporary history each test sets; nothing reaches the user's folder.
+    void initTestCase() { QStandardPaths::setTestModeEnabled(true); }
+
     void runsAgainstTheSimulator()
     {
         sim::SimOptions o;
@@ -28,7 +35,14 @@ private Q_SLOTS:
         session.open(simulator.devicePath(), 115200);
         QTRY_COMPARE_WITH_TIMEOUT(session.state(), device::SessionState::Connected, 15000);
 
+        QTemporaryDir history;
         ui::GyroScaleWizard wizard(session);
+        wizard.runSaver().setRoot(history.path());
+        model::DeviceIdentity id;
+        id.productName = "HI14R3";
+        id.serial = "SIM-GYRO-1";
+        id.firmware = model::FirmwareVersion{1, 7, 1};
+        wizard.runSaver().setIdentity(id);
         wizard.show();
         QCOMPARE(wizard.currentId(), int(ui::GyroScaleWizard::PreparePage));
         wizard.next();
@@ -49,6 +63,23 @@ private Q_SLOTS:
         QVERIFY(wizard.resultText().contains(QStringLiteral("OK")));
         const double est = wizard.run().result().scaleErrorPct;
         QVERIFY2(std::fabs(est - 0.5) < 0.1, qPrintable(QString::number(est)));
+        // The run is in the history: target, the device's reply, our estimate, the samples.
+        QVERIFY2(wizard.runSaver().saved(), qPrintable(wizard.runSaver().lastError()));
+        const calib::CalibrationHistory h(history.path());
+        const auto runs = h.list(QStringLiteral("SIM-GYRO-1"));
+        QCOMPARE(runs.size(), 1);
+        QCOMPARE(runs[0].kind, QStringLiteral("gyro_scale"));
+        QCOMPARE(runs[0].product, QStringLiteral("HI14R3"));
+        QCOMPARE(runs[0].firmware, QStringLiteral("1.7.1"));
+        QCOMPARE(runs[0].result.value(QStringLiteral("target_deg")).toInt(), 720);
+        QVERIFY(runs[0].result.value(QStringLiteral("device_ok")).toBool());
+        QCOMPARE(runs[0].result.value(QStringLiteral("scale_error_pct")).toDouble(), est);
+        QVERIFY(!runs[0].verdict().isEmpty() && runs[0].verdict() != QStringLiteral("fail"));
+        calib::SampleTable samples;
+        QVERIFY(h.loadSamples(runs[0], samples));
+        QVERIFY(samples.rows.size() > 500); // 20 s at the simulator's rate
+        QCOMPARE(int(samples.rows.size()), runs[0].sampleCount);
+        QVERIFY(samples.columnIndex(QStringLiteral("gyr_z")) >= 0);
         QVERIFY(!wizard.grab().isNull());
     }
 
@@ -61,7 +92,9 @@ private Q_SLOTS:
         device::DeviceSession session;
         session.open(simulator.devicePath(), 115200);
         QTRY_COMPARE_WITH_TIMEOUT(session.state(), device::SessionState::Connected, 15000);
+        QTemporaryDir history;
         ui::GyroScaleWizard wizard(session);
+        wizard.runSaver().setRoot(history.path());
         // The spin box keeps the manual's range.
         wizard.angleBox()->setValue(100);
         QCOMPARE(wizard.angleBox()->value(), 720);
@@ -73,6 +106,10 @@ private Q_SLOTS:
         QTest::mouseClick(wizard.stopButton(), Qt::LeftButton);
         QTRY_COMPARE(wizard.deviceCalibration().state(), calib::GyroCalSession::State::Failed);
         QVERIFY(wizard.resultText().contains(QStringLiteral("ERR")));
+        // Kept as a failed run (no identity: the "unknown" device).
+        const auto runs = calib::CalibrationHistory(history.path()).list(QString());
+        QCOMPARE(runs.size(), 1);
+        QCOMPARE(runs[0].verdict(), QStringLiteral("fail"));
     }
 };
 

@@ -3,7 +3,9 @@
 // turns level at 30 deg/s collects points (0x66), lights the targets it passes, saves
 // (0x09) and shows the module's FitErr; a save with no valid point fails (89 FF) and says
 // what to do; a closed connection says so. The manual method collects on "Collect point"
-// (0x67), Stop (0x12) abandons the run and Clear (0x10) is accepted.
+// (0x67), Stop (0x12) abandons the run and Clear (0x10) is accepted. A saved run is kept in
+// the calibration history with FitErr, method and the attitude samples.
+#include "calib/calibration_history.h"
 #include "compass_pose_view.h"
 #include "device/hec495_result.h"
 #include "device/hec495_session.h"
@@ -13,6 +15,9 @@
 
 #include <QPushButton>
 #include <QSignalSpy>
+#include <QDir>
+#include <QStandardPaths>
+#include <QTemporaryDir>
 #include <QTest>
 
 #include <functional>
@@ -74,6 +79,8 @@ class TstHec495CalibrationWizard : public QObject {
     }
 
 private Q_SLOTS:
+    void initTestCase() { QStandardPaths::setTestModeEnabled(true); }
+
     void cleanup()
     {
         m_session.reset();
@@ -115,7 +122,13 @@ private Q_SLOTS:
     void planarRun()
     {
         serve(Motion::Spin);
+        QTemporaryDir history;
         Hec495CalibrationWizard w(*m_session);
+        w.runSaver().setRoot(history.path());
+        model::DeviceIdentity id;
+        id.productName = "HEC495";
+        id.busAddress = 80;
+        w.runSaver().setIdentity(id);
         toRunPage(w, CompassCalMethod::Planar);
         QVERIFY(click(w, w.startButton()).ok());
         QVERIFY(w.running());
@@ -137,6 +150,17 @@ private Q_SLOTS:
         QVERIFY(w.tracker().collectedCount() <= w.savedPoints());
         QVERIFY(w.resultText().contains(QString::number(double(fit), 'f', 2)));
         QVERIFY(w.resultText().contains(QStringLiteral("Points used: %1").arg(w.savedPoints())));
+        const calib::CalibrationHistory h(history.path());
+        const auto runs = h.list(QStringLiteral("HEC495-addr80"));
+        QCOMPARE(runs.size(), 1);
+        QCOMPARE(runs[0].kind, QStringLiteral("compass"));
+        QCOMPARE(runs[0].result.value(QStringLiteral("fit_err")).toDouble(), double(fit));
+        QCOMPARE(runs[0].result.value(QStringLiteral("points")).toInt(), w.savedPoints());
+        QCOMPARE(runs[0].verdict(), QLatin1String(fit > 10.0f ? "fail" : "pass"));
+        calib::SampleTable samples;
+        QVERIFY(h.loadSamples(runs[0], samples));
+        QVERIFY(samples.rows.size() > 5);
+        QVERIFY(w.resultText().contains(QDir::toNativeSeparators(runs[0].folder)));
         QCOMPARE(w.redoRecommended(), fit > 10.0f);
         QVERIFY(w.resultText().contains(w.redoRecommended() ? QStringLiteral("calibrate again")
                                                             : QStringLiteral("Good")));

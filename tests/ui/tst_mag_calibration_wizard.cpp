@@ -1,7 +1,9 @@
 // The magnetometer calibration wizard (offscreen) against the simulated module on a
 // pseudo-terminal while it tumbles: every page in turn, the environment check, the
 // rotation page collecting samples on the sphere with the device's MCAL run beside it
-// (STAT=1 and PROGRESS), our fit and its verdict on the result page, and the heading check.
+// (STAT=1 and PROGRESS), our fit and its verdict on the result page (kept in the calibration
+// history with its samples), and the heading check.
+#include "calib/calibration_history.h"
 #include "calib/mag_calibrator.h"
 #include "device/device_session.h"
 #include "mag_calibration_wizard.h"
@@ -9,6 +11,10 @@
 #include "sim/pty_simulator.h"
 
 #include <QPushButton>
+#include <QLabel>
+#include <QDir>
+#include <QStandardPaths>
+#include <QTemporaryDir>
 #include <QTest>
 
 using namespace imudesk;
@@ -16,6 +22,8 @@ using namespace imudesk;
 class TstMagCalibrationWizard : public QObject {
     Q_OBJECT
 private Q_SLOTS:
+    void initTestCase() { QStandardPaths::setTestModeEnabled(true); }
+
     void walksThroughAgainstTheSimulator()
     {
         sim::SimOptions o;
@@ -27,7 +35,14 @@ private Q_SLOTS:
         session.open(simulator.devicePath(), 115200);
         QTRY_COMPARE_WITH_TIMEOUT(session.state(), device::SessionState::Connected, 15000);
 
+        QTemporaryDir history;
         ui::MagCalibrationWizard wizard(session, model::FirmwareVersion{1, 7, 1});
+        wizard.runSaver().setRoot(history.path());
+        model::DeviceIdentity id;
+        id.productName = "HI14R3";
+        id.serial = "SIM-MAG-1";
+        id.firmware = model::FirmwareVersion{1, 7, 1};
+        wizard.runSaver().setIdentity(id);
         wizard.show();
         QCOMPARE(wizard.currentId(), int(ui::MagCalibrationWizard::IntroPage));
         wizard.next();
@@ -53,6 +68,25 @@ private Q_SLOTS:
             QVERIFY(wizard.resultText().contains(QStringLiteral("20-60 uT")));
         wizard.next();
         QCOMPARE(wizard.currentId(), int(ui::MagCalibrationWizard::ResultPage));
+        // The run is kept: result with metrics and verdict, and the samples that were fitted.
+        QVERIFY2(wizard.runSaver().saved(), qPrintable(wizard.runSaver().lastError()));
+        const calib::CalibrationHistory h(history.path());
+        const auto runs = h.list(QStringLiteral("SIM-MAG-1"));
+        QCOMPARE(runs.size(), 1);
+        QCOMPARE(runs[0].kind, QStringLiteral("magnetometer"));
+        QCOMPARE(runs[0].verdict(), QLatin1String(calib::verdictName(wizard.result().verdict)));
+        QCOMPARE(runs[0].result.value(QStringLiteral("reason")).toString(), wizard.result().reason);
+        QVERIFY(runs[0].result.contains(QStringLiteral("coverage_pct")));
+        calib::SampleTable samples;
+        QVERIFY(h.loadSamples(runs[0], samples));
+        QCOMPARE(int(samples.rows.size()), wizard.result().samples);
+        std::vector<Eigen::Vector3d> mags;
+        QVERIFY(calib::SampleCsv::magnetometer(samples, mags));
+        QVERIFY(wizard.page(ui::MagCalibrationWizard::ResultPage)->findChildren<QLabel *>().size() >= 2);
+        bool shown = false;
+        for (const QLabel *l : wizard.page(ui::MagCalibrationWizard::ResultPage)->findChildren<QLabel *>())
+            shown = shown || l->text().contains(QDir::toNativeSeparators(runs[0].folder));
+        QVERIFY(shown); // the result page says where
         wizard.next();
         QCOMPARE(wizard.currentId(), int(ui::MagCalibrationWizard::HeadingPage));
         QTRY_VERIFY_WITH_TIMEOUT(wizard.headingTurnedDeg() > 20, 5000);
