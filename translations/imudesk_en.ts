@@ -97,7 +97,7 @@
 <context>
     <name>imudesk::ui::RecordingControls</name>
     <message numerus="yes">
-        <location filename="../ui/recording_controls.cpp" line="+209"/>
+        <location filename="../ui/recording_controls.cpp" line="+213"/>
         <source>%n frame(s)</source>
         <translation>
             <numerusform>%n frame</numerusform>
