@@ -210,6 +210,10 @@ void CanBootloader::handleSegment(const CanFrame &raw, int64_t tUs)
     }
     r.data[0] = uint8_t(0x20 | (replyToggle ? 0x10 : 0x00));
     std::copy_n(raw.data.begin() + 1, 7, r.data.begin() + 1);
+    if (m_faults.badEchoSegment == m_segment) {
+        m_faults.badEchoSegment = 0;
+        r.data[1] ^= 0xFF;
+    }
     m_toggle = !m_toggle;
     if (last) {
         m_downloading = false;

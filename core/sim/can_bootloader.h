@@ -25,6 +25,7 @@
 //   abortSegment N      the bootloader answers segment N with an SDO abort (general error)
 //   silentSegment N     segment N gets no reply (and is discarded)
 //   corruptSegment N    the reply to segment N carries the wrong toggle bit
+//   badEchoSegment N    the reply to segment N echoes a damaged byte 1
 //   powerLossSegment N  power is lost when segment N arrives (not written): the module restarts
 //                       in its bootloader, the application invalid
 //   flipByteAt K        the byte at offset K of the download is written with its lowest bit flipped
@@ -54,6 +55,7 @@ public:
         int silentSegment = 0;
         int corruptSegment = 0;
         int powerLossSegment = 0;
+        int badEchoSegment = 0;
         int64_t flipByteAt = -1;
     };
     struct Stats {
