@@ -332,9 +332,12 @@ CanUpdateFlow::Result CanUpdateFlow::run(const FirmwareImage &image)
         return finish(r, State::Failed, e);
 
     setState(State::Identifying);
-    const SdoAnswer id = readVersion(m_options.identifyTimeoutMs, &r.before, &e);
-    if (id.answer == Answer::LinkError)
-        return finish(r, State::Failed, e);
+    SdoAnswer id;
+    for (int attempt = 0; attempt < std::max(1, m_options.identifyAttempts) && id.answer == Answer::Timeout; ++attempt) {
+        id = readVersion(m_options.identifyTimeoutMs, &r.before, &e);
+        if (id.answer == Answer::LinkError)
+            return finish(r, State::Failed, e);
+    }
     if (id.answer != Answer::Timeout) {
         r.applicationAnsweredBefore = true;
         log(tr("node %1: application answers, firmware %2").arg(m_options.node).arg(versionText(r.before)));

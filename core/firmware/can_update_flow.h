@@ -5,7 +5,7 @@
 // between frames.
 //
 //   Checking             the image alone (and against FlashLayout if given): nothing is sent
-//   Identifying          SDO read of 0x1018:3 (the version the application reports; an abort means
+//   Identifying          SDO read of 0x1018:3 (up to 3 tries) (the version the application reports; an abort means
 //                        "application present, version unknown"); no answer → 0x1F51:06: a
 //                        bootloader that answers means an earlier update was interrupted → finish it
 //   EnteringBootloader   0x1F51:05 to the application (100 ms, a timeout is tolerated), 20 ms pause
@@ -65,6 +65,7 @@ public:
         int eraseTimeoutMs = 8000;
         int segmentTimeoutMs = 4000;
         int identifyTimeoutMs = 300;
+        int identifyAttempts = 3;        // a bus just opened may lose the first request
         int verifyTimeoutMs = 500;
         int appStartTimeoutMs = 3000;
     };
