@@ -1,10 +1,15 @@
 #include "firmware_update_dialog.h"
 
+#include "firmware/can_firmware_updater.h"
 #include "firmware/firmware_updater.h"
 #include "protocol/ihex/intel_hex_loader.h"
 
+#include <QCanBus>
+#include <QComboBox>
 #include <QFileDialog>
 #include <QFormLayout>
+#include <QGroupBox>
+#include <QSpinBox>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
@@ -31,10 +36,19 @@ QString versionText(const std::optional<model::FirmwareVersion> &v)
 
 FirmwareUpdateDialog::FirmwareUpdateDialog(const QString &portName, int baud,
                                            const std::optional<model::DeviceIdentity> &identity, QWidget *parent)
-    : QDialog(parent), m_port(portName), m_baud(baud), m_updater(new firmware::FirmwareUpdater(this))
+    : QDialog(parent), m_port(portName), m_baud(baud), m_updater(new firmware::FirmwareUpdater(this)),
+      m_canUpdater(new firmware::CanFirmwareUpdater(this))
 {
     setWindowTitle(tr("Firmware update on %1").arg(portName));
     auto *form = new QFormLayout;
+
+    m_link = new QComboBox(this);
+    m_link->setObjectName(QStringLiteral("link"));
+    m_link->addItem(tr("Serial port %1 (KBOOT bootloader)").arg(portName), int(Link::Serial));
+    m_link->addItem(tr("CAN bus (CANopen SDO to object 0x1F51)"), int(Link::Can));
+    m_link->setToolTip(tr("How the firmware reaches the module: its serial port, or a CAN adapter on the module's "
+                          "CANopen bus"));
+    form->addRow(tr("Link:"), m_link);
 
     auto *fileRow = new QHBoxLayout;
     m_file = new QLineEdit(this);
@@ -101,6 +115,7 @@ FirmwareUpdateDialog::FirmwareUpdateDialog(const QString &portName, int baud,
 
     auto *top = new QVBoxLayout(this);
     top->addLayout(form);
+    top->addWidget(buildCanBox());
     top->addWidget(m_log, 1);
     top->addWidget(m_outcome);
     top->addLayout(buttons);
@@ -113,6 +128,79 @@ FirmwareUpdateDialog::FirmwareUpdateDialog(const QString &portName, int baud,
     connect(m_updater, &firmware::FirmwareUpdater::progressChanged, this, &FirmwareUpdateDialog::onProgress);
     connect(m_updater, &firmware::FirmwareUpdater::logMessage, this, &FirmwareUpdateDialog::onLog);
     connect(m_updater, &firmware::FirmwareUpdater::finished, this, &FirmwareUpdateDialog::onFinished);
+    connect(m_canUpdater, &firmware::CanFirmwareUpdater::stateChanged, this, &FirmwareUpdateDialog::onState);
+    connect(m_canUpdater, &firmware::CanFirmwareUpdater::progressChanged, this, &FirmwareUpdateDialog::onProgress);
+    connect(m_canUpdater, &firmware::CanFirmwareUpdater::logMessage, this, &FirmwareUpdateDialog::onLog);
+    connect(m_canUpdater, &firmware::CanFirmwareUpdater::finished, this, &FirmwareUpdateDialog::onFinished);
+    connect(m_link, &QComboBox::currentIndexChanged, this, &FirmwareUpdateDialog::onLinkChanged);
+    connect(m_canInterface, &QLineEdit::textChanged, this, &FirmwareUpdateDialog::updateButtons);
+    connect(m_canPlugin, &QComboBox::currentIndexChanged, this, &FirmwareUpdateDialog::updateButtons);
+    onLinkChanged();
+}
+
+QWidget *FirmwareUpdateDialog::buildCanBox()
+{
+    m_canBox = new QGroupBox(tr("CAN bus"), this);
+    m_canBox->setObjectName(QStringLiteral("canBox"));
+    auto *form = new QFormLayout(m_canBox);
+    m_canPlugin = new QComboBox(m_canBox);
+    m_canPlugin->setObjectName(QStringLiteral("canPlugin"));
+    m_canPlugin->addItems(QCanBus::instance()->plugins());
+    const int socketcan = m_canPlugin->findText(QStringLiteral("socketcan"));
+    if (socketcan >= 0)
+        m_canPlugin->setCurrentIndex(socketcan);
+    m_canPlugin->setToolTip(tr("The Qt CAN bus plugin of the adapter (socketcan for Linux CAN interfaces)"));
+    form->addRow(tr("Plugin:"), m_canPlugin);
+    m_canInterface = new QLineEdit(QStringLiteral("can0"), m_canBox);
+    m_canInterface->setObjectName(QStringLiteral("canInterface"));
+    m_canInterface->setToolTip(tr("The adapter's interface name, e.g. can0"));
+    form->addRow(tr("Interface:"), m_canInterface);
+    m_canBitrate = new QSpinBox(m_canBox);
+    m_canBitrate->setObjectName(QStringLiteral("canBitrate"));
+    m_canBitrate->setRange(0, 1000000);
+    m_canBitrate->setSingleStep(125000);
+    m_canBitrate->setValue(500000);
+    m_canBitrate->setSuffix(tr(" bit/s"));
+    m_canBitrate->setSpecialValueText(tr("as configured"));
+    m_canBitrate->setToolTip(tr("The bus bit rate in bit/s (the HiPNUC CANopen default is 500000 bit/s); 0 leaves the "
+                                "interface's setting"));
+    form->addRow(tr("Bit rate:"), m_canBitrate);
+    m_canNode = new QSpinBox(m_canBox);
+    m_canNode->setObjectName(QStringLiteral("canNode"));
+    m_canNode->setRange(1, 127);
+    m_canNode->setValue(8);
+    m_canNode->setToolTip(tr("The module's CANopen node ID, 1..127 (HiPNUC default 8)"));
+    form->addRow(tr("Node:"), m_canNode);
+    return m_canBox;
+}
+
+void FirmwareUpdateDialog::setLink(Link link)
+{
+    m_link->setCurrentIndex(m_link->findData(int(link)));
+}
+
+FirmwareUpdateDialog::Link FirmwareUpdateDialog::link() const
+{
+    return Link(m_link->currentData().toInt());
+}
+
+void FirmwareUpdateDialog::setCanBus(const QString &plugin, const QString &interfaceName, int bitrate, int node)
+{
+    if (m_canPlugin->findText(plugin) < 0)
+        m_canPlugin->addItem(plugin);
+    m_canPlugin->setCurrentIndex(m_canPlugin->findText(plugin));
+    m_canInterface->setText(interfaceName);
+    m_canBitrate->setValue(bitrate);
+    m_canNode->setValue(node);
+}
+
+void FirmwareUpdateDialog::onLinkChanged()
+{
+    const bool can = link() == Link::Can;
+    m_canBox->setVisible(can);
+    setWindowTitle(can ? tr("Firmware update over CAN") : tr("Firmware update on %1").arg(m_port));
+    if (m_file && !m_file->text().isEmpty())
+        loadFile(m_file->text()); // the checks differ per link
     updateButtons();
 }
 
@@ -120,12 +208,17 @@ FirmwareUpdateDialog::~FirmwareUpdateDialog() = default;
 
 bool FirmwareUpdateDialog::isRunning() const
 {
-    return m_updater->isRunning();
+    return m_updater->isRunning() || m_canUpdater->isRunning();
 }
 
 const firmware::UpdateFlow::Result &FirmwareUpdateDialog::result() const
 {
     return m_updater->result();
+}
+
+const firmware::CanUpdateFlow::Result &FirmwareUpdateDialog::canResult() const
+{
+    return m_canUpdater->result();
 }
 
 void FirmwareUpdateDialog::chooseFile()
@@ -151,7 +244,9 @@ bool FirmwareUpdateDialog::loadFile(const QString &path)
         updateButtons();
         return false;
     }
-    if (const QString e = firmware::UpdateFlow::checkImage(*r.image, std::nullopt); !e.isEmpty()) {
+    const QString e = link() == Link::Can ? firmware::CanUpdateFlow::checkImage(*r.image, std::nullopt)
+                                          : firmware::UpdateFlow::checkImage(*r.image, std::nullopt);
+    if (!e.isEmpty()) {
         m_imageInfo->setText(tr("refused: %1").arg(e));
         updateButtons();
         return false;
@@ -167,11 +262,22 @@ bool FirmwareUpdateDialog::loadFile(const QString &path)
 
 bool FirmwareUpdateDialog::startUpdate()
 {
-    if (!m_image || m_updater->isRunning())
+    if (!m_image || isRunning())
         return false;
     m_log->clear();
     m_outcome->clear();
     m_progress->setValue(0);
+    m_lastWasCan = link() == Link::Can;
+    if (m_lastWasCan) {
+        firmware::CanUpdateFlow::Options co;
+        co.node = uint8_t(m_canNode->value());
+        const firmware::CanFirmwareUpdater::Bus bus{m_canPlugin->currentText(), m_canInterface->text().trimmed(),
+                                                    m_canBitrate->value()};
+        if (!m_canUpdater->start(bus, *m_image, co))
+            return false;
+        updateButtons();
+        return true;
+    }
     firmware::UpdateFlow::Options o;
     o.baud = m_baud;
     if (!m_updater->start(m_port, *m_image, o))
@@ -182,15 +288,16 @@ bool FirmwareUpdateDialog::startUpdate()
 
 void FirmwareUpdateDialog::cancelUpdate()
 {
-    if (!m_updater->isRunning())
+    if (!isRunning())
         return;
     m_state->setText(tr("cancelling after the current packet..."));
     m_updater->cancel();
+    m_canUpdater->cancel();
 }
 
 void FirmwareUpdateDialog::reject()
 {
-    if (m_updater->isRunning()) {
+    if (isRunning()) {
         cancelUpdate(); // the dialog closes once the flow has stopped (onFinished)
         return;
     }
@@ -217,6 +324,16 @@ void FirmwareUpdateDialog::onLog(const QString &line)
 
 void FirmwareUpdateDialog::onFinished(bool ok, const QString &message)
 {
+    if (m_lastWasCan) {
+        const auto &cr = m_canUpdater->result();
+        if (ok)
+            m_versions->setText(tr("firmware %1 → %2 (new); verification: %3")
+                                    .arg(versionText(cr.before), versionText(cr.after), cr.verifyMethod));
+        m_outcome->setText(ok ? tr("Done: %1").arg(message) : tr("Not updated: %1").arg(message));
+        updateButtons();
+        Q_EMIT updateFinished(ok);
+        return;
+    }
     const auto &r = m_updater->result();
     if (ok && r.after)
         m_versions->setText(tr("%1, firmware %2 (new), bootloader %3")
@@ -229,8 +346,11 @@ void FirmwareUpdateDialog::onFinished(bool ok, const QString &message)
 
 void FirmwareUpdateDialog::updateButtons()
 {
-    const bool running = m_updater->isRunning();
-    m_start->setEnabled(!running && m_image.has_value());
+    const bool running = isRunning();
+    const bool canReady = link() != Link::Can || (!m_canPlugin->currentText().isEmpty() && !m_canInterface->text().trimmed().isEmpty());
+    m_start->setEnabled(!running && m_image.has_value() && canReady);
+    m_link->setEnabled(!running);
+    m_canBox->setEnabled(!running);
     m_choose->setEnabled(!running);
     m_binStart->setEnabled(!running);
     m_cancel->setText(running ? tr("Cancel") : tr("Close"));

@@ -1,9 +1,12 @@
 #pragma once
-// The serial firmware update dialog: choose a file (start address, size, CRC-32; a .bin
-// asks for its start address), the module's current versions, progress with bytes/s and
-// time left, cancel, a log, and the new version at the end. The update itself runs in
-// core (firmware::FirmwareUpdater, its own thread); the dialog never touches the port.
-// The port must be free: close the device's session before opening the dialog.
+// The firmware update dialog: choose a file (start address, size, CRC-32; a .bin asks for
+// its start address), the link (the serial port given, KBOOT; or a CAN bus: plugin,
+// interface, bit rate, node, CANopen SDO 0x1F51), the module's current versions, progress
+// with bytes/s and time left, cancel, a log, and the new version at the end. The update
+// itself runs in core (firmware::FirmwareUpdater / CanFirmwareUpdater, their own threads);
+// the dialog never touches the port or the bus. The serial port must be free: close the
+// device's session before opening the dialog.
+#include "firmware/can_update_flow.h"
 #include "firmware/update_flow.h"
 #include "model/device_identity.h"
 
@@ -12,6 +15,9 @@
 #include <optional>
 
 QT_BEGIN_NAMESPACE
+class QComboBox;
+class QGroupBox;
+class QSpinBox;
 class QLabel;
 class QLineEdit;
 class QPlainTextEdit;
@@ -20,6 +26,7 @@ class QPushButton;
 QT_END_NAMESPACE
 
 namespace imudesk::firmware {
+class CanFirmwareUpdater;
 class FirmwareUpdater;
 }
 
@@ -34,14 +41,24 @@ public:
                          QWidget *parent = nullptr);
     ~FirmwareUpdateDialog() override;
 
+    enum class Link { Serial, Can };
+    // The link the next update uses (the "Link" choice); Serial by default.
+    void setLink(Link link);
+    Link link() const;
+    // Presets the CAN fields (plugin as QCanBus names it, interface, bit/s with 0 = leave the
+    // interface's setting, CANopen node 1..127).
+    void setCanBus(const QString &plugin, const QString &interfaceName, int bitrate, int node);
+
     // Loads and checks a firmware file (also what "Choose..." does); false shows why.
     bool loadFile(const QString &path);
     // Starts the update with the loaded image; false if none or one is running.
     bool startUpdate();
     void cancelUpdate();
     bool isRunning() const;
-    // After a finished update: the result (ok, message, versions).
+    // After a finished serial update: the result (ok, message, versions).
     const firmware::UpdateFlow::Result &result() const;
+    // After a finished CAN update: the result (ok, message, verification, versions).
+    const firmware::CanUpdateFlow::Result &canResult() const;
 
 Q_SIGNALS:
     void updateFinished(bool ok);
@@ -56,11 +73,22 @@ private:
     void onLog(const QString &line);
     void onFinished(bool ok, const QString &message);
     void updateButtons();
+    void onLinkChanged();
+    QWidget *buildCanBox();
 
     QString m_port;
     int m_baud;
     std::optional<protocol::ihex::FirmwareImage> m_image;
     firmware::FirmwareUpdater *m_updater = nullptr;
+    firmware::CanFirmwareUpdater *m_canUpdater = nullptr;
+    bool m_lastWasCan = false;
+
+    QComboBox *m_link = nullptr;
+    QGroupBox *m_canBox = nullptr;
+    QComboBox *m_canPlugin = nullptr;
+    QLineEdit *m_canInterface = nullptr;
+    QSpinBox *m_canBitrate = nullptr;
+    QSpinBox *m_canNode = nullptr;
 
     QLineEdit *m_file = nullptr;
     QLineEdit *m_binStart = nullptr;

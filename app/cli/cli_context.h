@@ -12,6 +12,7 @@
 
 namespace imudesk::sim {
 class PtySimulator;
+class CanSimDevice;
 }
 
 namespace imudesk::cli {
@@ -53,6 +54,11 @@ int cmdExport(const QStringList &args);
 int cmdImport(const QStringList &args);
 int cmdAnalyze(const QStringList &args);
 int cmdUpdate(const QStringList &args);
+// commands_update_can.cpp: update --can PLUGIN:INTERFACE (cmdUpdate hands over when --can is given),
+// and the CAN simulator's --flash-dump.
+bool isCanUpdate(const QStringList &args);
+int cmdUpdateCan(const QStringList &args);
+int writeCanFlashDump(sim::CanSimDevice &device, const QString &path);
 
 // simulate --flash-dump FILE (commands_update.cpp)
 void addFlashDumpOption(QCommandLineParser &p);
@@ -66,7 +72,7 @@ int simulateHec495(const QCommandLineParser &p);
 int cmdCan(const QStringList &args);
 // simulate --can PLUGIN:INTERFACE: serves a simulated CAN device until SIGINT/SIGTERM (commands_can.cpp).
 int simulateCan(const QString &canSpec, const QString &protocol, const QString &deviceKind, int node, sim::Motion motion,
-                uint64_t seed, const QString &firmware);
+                uint64_t seed, const QString &firmware, const QString &flashDump = QString());
 int cmdMagcal(const QStringList &args);
 
 // Parses args with the given parser; on error prints it and returns false.

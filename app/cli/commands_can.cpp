@@ -295,15 +295,17 @@ int cmdCan(const QStringList &args)
 }
 
 int simulateCan(const QString &canSpec, const QString &protocolText, const QString &deviceKind, int node, sim::Motion motion,
-                uint64_t seed, const QString &firmware)
+                uint64_t seed, const QString &firmware, const QString &flashDump)
 {
     quietCanLogging();
     QString error;
+    int dumped = ExitOk;
     const int rc = sim::runCanSimulatorCommand(canSpec, protocolText, deviceKind, node, motion, seed, firmware, false, &error,
-                                               [] { return interrupted(); });
+                                               [] { return interrupted(); },
+                                               [&](sim::CanSimDevice &d) { dumped = writeCanFlashDump(d, flashDump); });
     if (rc != 0)
         return fail(error, rc);
-    return ExitOk;
+    return dumped;
 }
 
 } // namespace imudesk::cli

@@ -290,7 +290,7 @@ int cmdSimulate(const QStringList &args)
                                          "[--firmware 1.7.1] [--baud 115200] [--address N] "
                                          "[--motion static|spin|tumble] [--seed N] [--flash-dump FILE] "
                                          "[--modbus [--id N]] | --can PLUGIN:INTERFACE [--protocol j1939|canopen] "
-                                         "[--device hipnuc|hec495] [--node N]");
+                                         "[--device hipnuc|hec495] [--node N] [--flash-dump FILE]");
     if (!parseArgs(p, args, usage))
         return ExitUsage;
     if (p.isSet(QStringLiteral("can"))) {
@@ -299,7 +299,7 @@ int cmdSimulate(const QStringList &args)
             return fail(QStringLiteral("--motion must be static, spin or tumble"), ExitUsage);
         return simulateCan(p.value(QStringLiteral("can")), p.value(QStringLiteral("protocol")), p.value(QStringLiteral("device")),
                            p.value(QStringLiteral("node")).toInt(), m, p.value(QStringLiteral("seed")).toULongLong(),
-                           p.value(QStringLiteral("firmware")));
+                           p.value(QStringLiteral("firmware")), p.value(QStringLiteral("flash-dump")));
     }
     if (!p.isSet(QStringLiteral("pty")))
         return fail(QStringLiteral("simulate needs --pty (usage: %1)").arg(usage), ExitUsage);

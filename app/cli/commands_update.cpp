@@ -45,6 +45,8 @@ QString hex32(uint32_t v)
 
 int cmdUpdate(const QStringList &args)
 {
+    if (isCanUpdate(args))
+        return cmdUpdateCan(args);
     QCommandLineParser p;
     p.addPositionalArgument(QStringLiteral("PORT"), QStringLiteral("Serial port of the module."));
     p.addPositionalArgument(QStringLiteral("FILE"), QStringLiteral("Firmware: Intel HEX, or .bin with --bin-start."));

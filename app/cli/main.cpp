@@ -37,6 +37,7 @@ void usage(FILE *to)
                "  modbus PORT [--id N] [--baud B] info|read [REG [COUNT]]|scan|write REG VALUE [--json]\n"
                "                                         talk Modbus RTU to a module on RS-485\n"
                "  update PORT FILE [--baud B] [--json]   update the firmware (KBOOT), verified by read-back\n"
+               "  update --can PLUGIN:IF [--node N] [--bitrate B] FILE [--json]   update over CANopen SDO (0x1F51)\n"
                "  simulate --pty --device hec495 [--baud 9600] [--address N] [--motion M] [--seed N]\n"
                "  hec495 PORT [--baud B] [--address N] [--json] read|info|declination [VALUE]|baud B|rate HZ|\n"
                "         content C|address N|save|reset|calibrate METHOD   talk to a Witlink HEC495 compass\n"

@@ -1,5 +1,7 @@
 #include "can_sim_device.h"
 
+#include "kboot_bootloader.h"
+
 #include "model/device_identity.h"
 #include "protocol/can/canopen.h"
 #include "protocol/can/hec495_can.h"
@@ -53,6 +55,8 @@ CanSimDevice::CanSimDevice(CanSimOptions options)
     if (m_options.node > 0)
         m_hec.node = m_options.node;
     m_hecFlash = m_hec;
+    // The factory application (a small image that carries the firmware version).
+    m_boot.installApplication(KbootBootloader::makeApplication(m_options.firmware, 4096, m_options.seed));
     powerCycle(0);
 }
 
@@ -78,7 +82,10 @@ void CanSimDevice::powerCycle(double t)
         m_activeBaudCode = m_ram.baudCode;
     }
     m_nmtState = co::StateOperational; // manual 8.25: initial state Operational
-    m_bootPending = !isJ1939() && !m_options.hec495;
+    m_inBootloader = !isJ1939() && !m_options.hec495 && !m_boot.applicationValid();
+    if (m_inBootloader)
+        m_boot.start(uint8_t(m_activeNode), int64_t(t * 1e6));
+    m_bootPending = !isJ1939() && !m_options.hec495 && !m_inBootloader;
     m_syncCount = {};
     m_yawOffset = m_rollOffset = m_pitchOffset = 0;
     rescheduleAll(t);
@@ -207,6 +214,8 @@ std::vector<CanSimDevice::Frame> CanSimDevice::poll(double t)
         return out;
     }
     // CANopen
+    if (m_inBootloader)
+        return pollBootloader(t);
     if (m_bootPending) {
         m_bootPending = false;
         out.push_back(co::encodeHeartbeat(uint8_t(m_activeNode), co::StateBootUp));
@@ -219,6 +228,24 @@ std::vector<CanSimDevice::Frame> CanSimDevice::poll(double t)
         const double period = operational && async ? m_ram.tpdoPeriodMs[size_t(c)] : 0;
         if (due("tpdo" + std::to_string(c), period, t))
             out.push_back(tpdoFrame(c, t));
+    }
+    return out;
+}
+
+std::vector<CanSimDevice::Frame> CanSimDevice::pollBootloader(double t)
+{
+    const auto tUs = int64_t(t * 1e6);
+    std::vector<Frame> out = m_boot.takeDue(tUs);
+    switch (m_boot.takeRequest(tUs)) {
+    case CanBootloader::Request::StartApplication:
+        if (const auto v = m_boot.applicationVersion(); v && model::FirmwareVersion::parse(*v))
+            m_options.firmware = *v;
+        powerCycle(t); // the application starts: boot-up on the next poll
+        break;
+    case CanBootloader::Request::PowerLoss:
+        powerCycle(t); // no valid application: back in the bootloader
+        break;
+    case CanBootloader::Request::None: break;
     }
     return out;
 }
@@ -397,7 +424,12 @@ bool CanSimDevice::readHipnucObject(uint16_t index, uint8_t sub, uint32_t *value
     if (sub != 0 && index != 0x1018)
         return *abort = co::AbortNoSubIndex, false;
     if (index == 0x1000) *value = 0;                      // device type: no profile
-    else if (index == 0x1018) { *value = sub == 0 ? 1 : 0; if (sub > 1) return *abort = co::AbortNoSubIndex, false; }
+    else if (index == 0x1018 && sub == 3) {
+        // Revision number: ImuDesk's simulator reports the firmware version as major << 16 | minor << 8 | patch
+        // (the manuals name no version object; the CAN update reads this one and accepts an abort).
+        const auto fw = model::FirmwareVersion::parse(m_options.firmware);
+        *value = fw ? uint32_t(fw->major << 16 | fw->minor << 8 | fw->patch) : 0;
+    } else if (index == 0x1018) { *value = sub == 0 ? 3 : 0; if (sub > 3) return *abort = co::AbortNoSubIndex, false; }
     else if (index == nodeObj) *value = uint32_t(m_ram.node);
     else if (index == co::hipnuc::ObjBaud) *value = m_ram.baudCode;
     else if (index == co::hipnuc::ObjHeartbeat) { *value = m_ram.heartbeatMs; *size = 2; }
@@ -412,6 +444,12 @@ std::vector<CanSimDevice::Frame> CanSimDevice::handleCanOpen(const Frame &in, do
 {
     std::vector<Frame> out;
     const uint8_t node = uint8_t(m_activeNode);
+    if (m_inBootloader) {
+        // Only the bootloader's SDOs; its replies come out of poll() when their time has come.
+        if (const auto sdo = co::parseSdo(in))
+            m_boot.handle(*sdo, in, int64_t(t * 1e6));
+        return out;
+    }
     if (const auto nmt = co::parseNmt(in)) {
         if (nmt->node != 0 && nmt->node != node)
             return out;
@@ -448,6 +486,13 @@ std::vector<CanSimDevice::Frame> CanSimDevice::handleCanOpen(const Frame &in, do
     if (!sdo || sdo->fromDevice || sdo->node != node || m_nmtState == co::StateStopped)
         return out;
     uint32_t abort = 0;
+    if (sdo->kind == co::SdoKind::DownloadExpedited && sdo->index == 0x1F51 && sdo->sub == 0x05) {
+        // Enter the bootloader (notes 4.5 step 1): acknowledged, then the module reboots into it.
+        out.push_back(co::sdoWriteReply(node, sdo->index, sdo->sub));
+        m_inBootloader = true;
+        m_boot.start(node, int64_t(t * 1e6));
+        return out;
+    }
     if (sdo->kind == co::SdoKind::DownloadExpedited) {
         bool resetAfter = false;
         if (writeHipnucObject(sdo->index, sdo->sub, sdo->value, &abort, t, &resetAfter))

@@ -6,6 +6,7 @@
 // is J1939). Settings live in RAM; "save" copies them to flash, a reset or power cycle loads
 // flash, so node ID and baud changes take effect after save + reset as the manuals say
 // (HEC495 stores its writes at once and applies node and baud at the next power cycle).
+#include "can_bootloader.h"
 #include "motion_model.h"
 #include "protocol/can/can_decoder.h"
 #include "protocol/can/can_frame.h"
@@ -67,7 +68,16 @@ public:
     // Everything whose time has come at tSeconds (periodic data, heartbeats, boot-up).
     std::vector<protocol::can::CanFrame> poll(double tSeconds);
     // Power cycle: loads the saved settings, restarts the schedule, sends boot-up (CANopen).
+    // A HiPNUC CANopen module without a valid application starts in its bootloader instead.
     void powerCycle(double tSeconds);
+
+    // HiPNUC CANopen: the CAN bootloader (firmware update over SDO 0x1F51, notes 4.5) and its
+    // flash. 0x1F51:05 to the application enters it; 0x1F51:09 starts the application, which
+    // then reports the version its image carries (KbootBootloader::kVersionMarker), if any.
+    CanBootloader &bootloader() { return m_boot; }
+    bool inBootloader() const { return m_inBootloader; }
+    // The firmware version the application reports (0x1018:3, see readHipnucObject).
+    const std::string &firmware() const { return m_options.firmware; }
 
     // The true sample at tSeconds (after attitude zeroing), in ImuDesk's units.
     model::Sample sampleAt(double tSeconds);
@@ -85,6 +95,7 @@ private:
     void rescheduleAll(double t);
     bool due(const std::string &key, double periodMs, double t);
     void attitudeReset(uint32_t mode, double t);
+    std::vector<Frame> pollBootloader(double t);
 
     CanSimOptions m_options;
     MotionModel m_motion;
@@ -99,6 +110,8 @@ private:
     std::array<uint32_t, 6> m_syncCount{};
     std::map<std::string, double> m_nextDueMs;
     double m_yawOffset = 0, m_rollOffset = 0, m_pitchOffset = 0;
+    CanBootloader m_boot;
+    bool m_inBootloader = false;
 };
 
 } // namespace imudesk::sim

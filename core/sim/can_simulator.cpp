@@ -144,7 +144,7 @@ void CanSimulator::applyBitrate()
 
 int runCanSimulatorCommand(const QString &canSpec, const QString &protocolText, const QString &deviceKind, int node,
                            Motion motion, uint64_t seed, const QString &firmware, bool canFd, QString *error,
-                           const std::function<bool()> &stopRequested)
+                           const std::function<bool()> &stopRequested, const std::function<void(CanSimDevice &)> &atExit)
 {
     const int colon = canSpec.indexOf(QLatin1Char(':'));
     if (colon <= 0 || colon == canSpec.size() - 1) {
@@ -188,6 +188,8 @@ int runCanSimulatorCommand(const QString &canSpec, const QString &protocolText, 
     poll.start(50);
     loop.exec();
     sim.stop();
+    if (atExit)
+        atExit(sim.device());
     return 0;
 }
 

@@ -61,9 +61,11 @@ private:
     bool m_stopping = false;
 };
 
-// The "simulate --can PLUGIN:INTERFACE" command line entry (app/cli uses it).
+// The "simulate --can PLUGIN:INTERFACE" command line entry (app/cli uses it). atExit sees the
+// device once the simulator has stopped (e.g. to dump its flash).
 int runCanSimulatorCommand(const QString &canSpec, const QString &protocol, const QString &deviceKind, int node,
                            Motion motion, uint64_t seed, const QString &firmware, bool canFd, QString *error,
-                           const std::function<bool()> &stopRequested);
+                           const std::function<bool()> &stopRequested,
+                           const std::function<void(CanSimDevice &)> &atExit = {});
 
 } // namespace imudesk::sim

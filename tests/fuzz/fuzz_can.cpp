@@ -1,5 +1,6 @@
 // libFuzzer target: the CAN decoders (J1939 data and configuration, CANopen TPDO / SDO / NMT /
-// heartbeat, HEC495 PDOs and SDO writes, the frame classifier, the segmented SDO download).
+// heartbeat, HEC495 PDOs and SDO writes, the frame classifier, the segmented SDO download, and the
+// simulated CAN bootloader's side of it, which keeps its state from one input to the next).
 //
 // Input layout: byte 0 = flags (bit 0 extended, bit 1 CAN FD, bit 2 remote, bits 4..5 the
 // classifier's protocol), bytes 1..4 = identifier (LE, masked to 29 or 11 bits), the rest =
@@ -12,6 +13,7 @@
 #include "protocol/can/j1939_config.h"
 #include "protocol/can/sdo.h"
 #include "protocol/can/sdo_segmented_download.h"
+#include "sim/can_bootloader.h"
 
 #include <cmath>
 #include <cstddef>
@@ -159,5 +161,26 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     for (int i = 0; i < 4; ++i)
         dl.onFrame(f);
     FUZZ_CHECK(dl.sent() <= dl.total());
+
+    // The simulated CAN bootloader taking this frame as a host request: it never writes outside
+    // its flash and only answers with classic 8-byte SDO replies of its node.
+    static imudesk::sim::CanBootloader boot([] {
+        imudesk::sim::CanBootloader::Options o;
+        o.flashSize = 64 * 1024;
+        o.eraseUsPerSector = 0;
+        return o;
+    }());
+    static int64_t t = 0;
+    if (boot.stats().starts == 0)
+        boot.start(8, t);
+    if (const auto m = canopen::parseSdo(f)) {
+        boot.handle(*m, f, t);
+        t += 1000;
+        for (const CanFrame &r : boot.takeDue(t))
+            FUZZ_CHECK(r.id == 0x588 && r.len == 8 && !r.extended);
+        if (boot.takeRequest(t) != imudesk::sim::CanBootloader::Request::None)
+            boot.start(8, t);
+    }
+    FUZZ_CHECK(boot.flash().size() == 64 * 1024);
     return 0;
 }
