@@ -589,6 +589,264 @@
     </message>
 </context>
 <context>
+    <name>CanUpdateFlow</name>
+    <message>
+        <location filename="../core/firmware/can_update_flow.cpp" line="+35" />
+        <source>unknown</source>
+        <translation>未知</translation>
+    </message>
+    <message>
+        <location line="+15" />
+        <source>idle</source>
+        <translation>空闲</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>checking the image</source>
+        <translation>正在检查镜像</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>identifying the module</source>
+        <translation>正在识别模块</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>entering the bootloader</source>
+        <translation>正在进入引导程序</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>confirming the bootloader</source>
+        <translation>正在确认引导程序</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>downloading</source>
+        <translation>正在下载</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>verifying</source>
+        <translation>正在校验</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>starting the application</source>
+        <translation>正在启动应用程序</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>confirming the new version</source>
+        <translation>正在确认新版本</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>done</source>
+        <translation>完成</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>failed</source>
+        <translation>失败</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>cancelled</source>
+        <translation>已取消</translation>
+    </message>
+    <message>
+        <location line="+28" />
+        <source>the image is empty</source>
+        <translation>镜像为空</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>the image starts at %1, but the CAN bootloader writes the application at %2 (addresses are not transmitted); this is not an application image for this module</source>
+        <translation>镜像起始地址为 %1，但 CAN 引导程序固定将应用程序写入 %2（地址不随数据传输）；这不是本模块的应用程序镜像</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>the image ends at %1, beyond the end of the flash at %2; it does not fit this module</source>
+        <translation>镜像结束地址 %1 超出闪存末尾 %2；不适用于本模块</translation>
+    </message>
+    <message>
+        <location line="+92" />
+        <source>the application refused to enter its bootloader (0x1F51:05): %1</source>
+        <translation>应用程序拒绝进入引导程序（0x1F51:05）：%1</translation>
+    </message>
+    <message>
+        <location line="+12" />
+        <source>the bootloader refused the confirmation (0x1F51:06): %1</source>
+        <translation>引导程序拒绝了确认请求（0x1F51:06）：%1</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>no bootloader confirmation yet (attempt %1 of %2)</source>
+        <translation>引导程序尚未确认（第 %1 次尝试，共 %2 次）</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>the module did not confirm its bootloader (0x1F51:06) after %1 attempts; check the node ID and power-cycle the module</source>
+        <translation>尝试 %1 次后，模块仍未确认进入引导程序（0x1F51:06）；请检查节点 ID，并将模块断电重启</translation>
+    </message>
+    <message>
+        <location line="+23" />
+        <source>cancelled after %1 of %2 bytes</source>
+        <translation>已在传输 %1 / %2 字节后取消</translation>
+    </message>
+    <message>
+        <location line="+23" />
+        <source>the reply to segment %1 does not echo its data (%2); the reply is damaged</source>
+        <translation>分段 %1 的应答未回显其数据（%2）；应答已损坏</translation>
+    </message>
+    <message>
+        <location line="+11" />
+        <source>the bootloader did not accept the download of %1 bytes within %2 ms (it erases first)</source>
+        <translation>引导程序未在 %2 ms 内接受 %1 字节的下载（它会先擦除闪存）</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>no reply to segment %1 (byte %2 of %3) within %4 ms</source>
+        <translation>分段 %1（第 %2 / %3 字节）在 %4 ms 内无应答</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>the bootloader refused the download of %1 bytes: %2</source>
+        <translation>引导程序拒绝了 %1 字节的下载：%2</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>segment %1 (byte %2 of %3): %4</source>
+        <translation>分段 %1（第 %2 / %3 字节）：%4</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>the bootloader accepted %1 bytes (erase took %2 ms)</source>
+        <translation>引导程序已接受 %1 字节（擦除耗时 %2 ms）</translation>
+    </message>
+    <message>
+        <location line="+29" />
+        <source>the application did not answer within %1 s after the start (no boot-up, heartbeat or SDO reply); the image may not be a firmware for this module</source>
+        <translation>启动后 %1 s 内应用程序无应答（无启动报文、心跳或 SDO 应答）；该镜像可能不是本模块的固件</translation>
+    </message>
+    <message>
+        <location line="+12" />
+        <source>refused before contacting the module: %1</source>
+        <translation>在联系模块之前已拒绝：%1</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>refused: node %1 is not a CANopen node ID (1..127)</source>
+        <translation>已拒绝：%1 不是有效的 CANopen 节点 ID（1..127）</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>image: %1 bytes at %2, CRC-32 %3</source>
+        <translation>镜像：%1 字节，位于 %2，CRC-32 %3</translation>
+    </message>
+    <message>
+        <location line="+15" />
+        <source>node %1: application answers, firmware %2</source>
+        <translation>节点 %1：应用程序已应答，固件 %2</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>nothing answered on node %1: neither the application (SDO 0x1018:3) nor the bootloader (0x1F51:06). Check the node ID, the bit rate, the termination and the power</source>
+        <translation>节点 %1 无任何应答：应用程序（SDO 0x1018:3）和引导程序（0x1F51:06）均无应答。请检查节点 ID、波特率、终端电阻和电源</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>the module is already in its bootloader (an earlier update was interrupted); run the update again and allow finishing it</source>
+        <translation>模块已处于引导程序中（之前的更新被中断）；请重新执行更新，并让其完成</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>the module is already in its bootloader: an earlier update was interrupted; finishing it</source>
+        <translation>模块已处于引导程序中：之前的更新被中断；正在完成该更新</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>cancelled; the module was not changed</source>
+        <translation>已取消；模块未被修改</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>cancelled before the download; the module was not changed (if it is in its bootloader, run the update again)</source>
+        <translation>下载前已取消；模块未被修改（如果模块处于引导程序中，请重新执行更新）</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>bootloader confirmed on node %1</source>
+        <translation>节点 %1 已确认进入引导程序</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>cancelled before the download; the module stays in its bootloader; run the update again to finish it</source>
+        <translation>下载前已取消；模块停留在引导程序中；请重新执行更新以完成</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>cancelled before the download; the application was restarted unchanged</source>
+        <translation>下载前已取消；应用程序已原样重启</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <source>%1. The module stays in its bootloader without a valid application; run the update again to finish it</source>
+        <translation>%1。模块停留在引导程序中，没有有效的应用程序；请重新执行更新以完成</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>the download failed: %1. The module stays in its bootloader; run the update again</source>
+        <translation>下载失败：%1。模块停留在引导程序中；请重新执行更新</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>%1 bytes sent in %2 s (%3 bytes/s)</source>
+        <translation>%2 s 内发送 %1 字节（%3 字节/秒）</translation>
+    </message>
+    <message>
+        <location line="+12" />
+        <source>verification failed: the bootloader reports CRC-32 %1 for the written application, the image has %2. The application was not started; run the update again</source>
+        <translation>校验失败：引导程序报告已写入应用程序的 CRC-32 为 %1，而镜像的为 %2。应用程序未启动；请重新执行更新</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>verified: bootloader CRC %1 equals the image's</source>
+        <translation>校验通过：引导程序 CRC %1 与镜像一致</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>the bootloader offers no CRC (0x1F56:1 %1); the restart of the application is the only check</source>
+        <translation>引导程序不提供 CRC（0x1F56:1 %1）；应用程序能否重启是唯一的检查</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>not answered</source>
+        <translation>未应答</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <source>the bootloader refused to start the application (0x1F51:09): %1. Run the update again</source>
+        <translation>引导程序拒绝启动应用程序（0x1F51:09）：%1。请重新执行更新</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>the image was sent but %1</source>
+        <translation>镜像已发送，但%1</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>updated: firmware %1 → %2, %3 bytes, verified: bootloader CRC %4</source>
+        <translation>已更新：固件 %1 → %2，%3 字节，已校验：引导程序 CRC %4</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>updated: %1 bytes sent; not verified by the bootloader; application restarted with version %2</source>
+        <translation>已更新：已发送 %1 字节；未经引导程序校验；应用程序已重启，版本 %2</translation>
+    </message>
+</context>
+<context>
     <name>CaptureExporter</name>
     <message>
         <location filename="../core/record/capture_exporter.cpp" line="+68" />
@@ -2091,6 +2349,44 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
 </context>
 <context>
+    <name>QtCanFrameLink</name>
+    <message>
+        <location filename="../core/firmware/qt_can_frame_link.cpp" line="+31" />
+        <source>the CAN plugin "%1" is not installed (available: %2)</source>
+        <translation>未安装 CAN 插件“%1”（可用插件：%2）</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>cannot create the CAN device %1:%2: %3</source>
+        <translation>无法创建 CAN 设备 %1:%2：%3</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>cannot open the CAN device %1:%2: %3. Check the interface name and that it is up</source>
+        <translation>无法打开 CAN 设备 %1:%2：%3。请检查接口名称以及接口是否已启用</translation>
+    </message>
+    <message>
+        <location line="+14" />
+        <source>the CAN device %1:%2 did not connect within %3 ms: %4</source>
+        <translation>CAN 设备 %1:%2 在 %3 ms 内未连接：%4</translation>
+    </message>
+    <message>
+        <location line="+30" />
+        <source>the CAN device %1:%2 is not connected (%3); check the cable and the adapter</source>
+        <translation>CAN 设备 %1:%2 未连接（%3）；请检查线缆和适配器</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>closed</source>
+        <translation>已关闭</translation>
+    </message>
+    <message>
+        <location line="+9" />
+        <source>sending a CAN frame failed: %1</source>
+        <translation>发送 CAN 帧失败：%1</translation>
+    </message>
+</context>
+<context>
     <name>RegisterMap</name>
     <message>
         <location filename="../core/protocol/modbus/register_map.cpp" line="+19" />
@@ -3018,6 +3314,14 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <location line="+1" />
         <source>IO pin mapping (PMUX)</source>
         <translation>IO 引脚映射（PMUX）</translation>
+    </message>
+</context>
+<context>
+    <name>SimulatedCanFrameLink</name>
+    <message>
+        <location filename="../core/sim/simulated_can_frame_link.cpp" line="+18" />
+        <source>the simulated CAN bus is not connected</source>
+        <translation>模拟 CAN 总线未连接</translation>
     </message>
 </context>
 <context>
@@ -6996,17 +7300,38 @@ Link load = bytes per second × 10 bits / baud rate.</source>
 <context>
     <name>imudesk::ui::FirmwareUpdateDialog</name>
     <message>
-        <location filename="../ui/firmware_update_dialog.cpp" line="+27" />
+        <location filename="../ui/firmware_update_dialog.cpp" line="+32" />
         <source>unknown</source>
         <translation>未知</translation>
     </message>
     <message>
-        <location line="+9" />
+        <location line="+10" />
+        <location line="+159" />
         <source>Firmware update on %1</source>
         <translation>%1 上的固件升级</translation>
     </message>
     <message>
-        <location line="+7" />
+        <location line="-154" />
+        <source>Serial port %1 (KBOOT bootloader)</source>
+        <translation>串口 %1（KBOOT 引导程序）</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>CAN bus (CANopen SDO to object 0x1F51)</source>
+        <translation>CAN 总线（CANopen SDO 写入对象 0x1F51）</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>How the firmware reaches the module: its serial port, or a CAN adapter on the module's CANopen bus</source>
+        <translation>固件传送到模块的方式：通过模块的串口，或通过接在模块 CANopen 总线上的 CAN 适配器</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Link:</source>
+        <translation>链路：</translation>
+    </message>
+    <message>
+        <location line="+6" />
         <source>Intel HEX (.hex) or raw binary (.bin)</source>
         <translation>Intel HEX 文件 (.hex) 或原始二进制文件 (.bin)</translation>
     </message>
@@ -7082,12 +7407,72 @@ Link load = bytes per second × 10 bits / baud rate.</source>
     </message>
     <message>
         <location line="+2" />
-        <location line="+141" />
+        <location line="+250" />
         <source>Close</source>
         <translation>关闭</translation>
     </message>
     <message>
-        <location line="-103" />
+        <location line="-216" />
+        <source>CAN bus</source>
+        <translation>CAN 总线</translation>
+    </message>
+    <message>
+        <location line="+9" />
+        <source>The Qt CAN bus plugin of the adapter (socketcan for Linux CAN interfaces)</source>
+        <translation>适配器对应的 Qt CAN 总线插件（Linux CAN 接口用 socketcan）</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Plugin:</source>
+        <translation>插件：</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>The adapter's interface name, e.g. can0</source>
+        <translation>适配器的接口名称，例如 can0</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Interface:</source>
+        <translation>接口：</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source> bit/s</source>
+        <translation> bit/s</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>as configured</source>
+        <translation>沿用接口设置</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The bus bit rate in bit/s (the HiPNUC CANopen default is 500000 bit/s); 0 leaves the interface's setting</source>
+        <translation>总线波特率，单位 bit/s（HiPNUC CANopen 默认为 500000 bit/s）；0 表示沿用接口当前的设置</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Bit rate:</source>
+        <translation>波特率：</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>The module's CANopen node ID, 1..127 (HiPNUC default 8)</source>
+        <translation>模块的 CANopen 节点 ID，1..127（HiPNUC 默认为 8）</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Node:</source>
+        <translation>节点：</translation>
+    </message>
+    <message>
+        <location line="+28" />
+        <source>Firmware update over CAN</source>
+        <translation>通过 CAN 更新固件</translation>
+    </message>
+    <message>
+        <location line="+25" />
         <source>Choose the firmware</source>
         <translation>选择固件</translation>
     </message>
@@ -7098,7 +7483,7 @@ Link load = bytes per second × 10 bits / baud rate.</source>
     </message>
     <message>
         <location line="+16" />
-        <location line="+5" />
+        <location line="+7" />
         <source>refused: %1</source>
         <translation>被拒绝：%1</translation>
     </message>
@@ -7108,12 +7493,12 @@ Link load = bytes per second × 10 bits / baud rate.</source>
         <translation>%1 字节，地址 %2 至 %3，CRC-32 %4；目标型号：文件中未记录</translation>
     </message>
     <message>
-        <location line="+27" />
+        <location line="+38" />
         <source>cancelling after the current packet...</source>
         <translation>将在当前数据包完成后取消...</translation>
     </message>
     <message>
-        <location line="+21" />
+        <location line="+22" />
         <source>%1 of %2 bytes</source>
         <translation>%1 / %2 字节</translation>
     </message>
@@ -7128,22 +7513,39 @@ Link load = bytes per second × 10 bits / baud rate.</source>
         <translation>%1 字节/秒，剩余 %2 s</translation>
     </message>
     <message>
-        <location line="+12" />
+        <location line="+13" />
+        <source>firmware %1 → %2 (new); verification: %3</source>
+        <translation>固件 %1 → %2（新）；校验方式：%3</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>CRC-32 reported by the bootloader</source>
+        <translation>引导程序报告的 CRC-32</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>none by the bootloader; the application restarted</source>
+        <translation>引导程序未校验；应用程序已重新启动</translation>
+    </message>
+    <message>
+        <location line="+8" />
         <source>%1, firmware %2 (new), bootloader %3</source>
         <translation>%1，固件 %2（新），引导程序 %3</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="-7" />
+        <location line="+10" />
         <source>Done: %1</source>
         <translation>完成：%1</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="-10" />
+        <location line="+10" />
         <source>Not updated: %1</source>
         <translation>未升级：%1</translation>
     </message>
     <message>
-        <location line="+11" />
+        <location line="+14" />
         <source>Cancel</source>
         <translation>取消</translation>
     </message>
@@ -8825,7 +9227,7 @@ Samples: %3</source>
 <context>
     <name>imudesk::ui::ToolActions</name>
     <message>
-        <location filename="../ui/tool_actions.cpp" line="+108" />
+        <location filename="../ui/tool_actions.cpp" line="+109" />
         <source>&amp;Open capture…</source>
         <translation>打开记录(&amp;O)…</translation>
     </message>
@@ -8931,8 +9333,8 @@ Samples: %3</source>
     </message>
     <message>
         <location line="+1" />
-        <source>Write a new firmware image to the module, verified by reading it back</source>
-        <translation>将新固件映像写入模块，并通过回读校验</translation>
+        <source>Write a new firmware image to the module: over its serial port, verified by reading it back, or over CANopen, verified by the bootloader's CRC</source>
+        <translation>向模块写入新固件：经串口写入时回读校验，经 CANopen 写入时由引导程序的 CRC 校验</translation>
     </message>
     <message>
         <location line="+1" />
@@ -9005,7 +9407,7 @@ Samples: %3</source>
         <translation>校准(&amp;C)</translation>
     </message>
     <message>
-        <location line="+40" />
+        <location line="+41" />
         <source>%1 could not be imported: %2</source>
         <translation>无法导入 %1：%2</translation>
     </message>

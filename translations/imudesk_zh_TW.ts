@@ -589,6 +589,264 @@
     </message>
 </context>
 <context>
+    <name>CanUpdateFlow</name>
+    <message>
+        <location filename="../core/firmware/can_update_flow.cpp" line="+35" />
+        <source>unknown</source>
+        <translation>未知</translation>
+    </message>
+    <message>
+        <location line="+15" />
+        <source>idle</source>
+        <translation>閒置</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>checking the image</source>
+        <translation>正在檢查映像</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>identifying the module</source>
+        <translation>正在識別模組</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>entering the bootloader</source>
+        <translation>正在進入開機載入程式</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>confirming the bootloader</source>
+        <translation>正在確認開機載入程式</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>downloading</source>
+        <translation>正在下載</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>verifying</source>
+        <translation>正在驗證</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>starting the application</source>
+        <translation>正在啟動應用程式</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>confirming the new version</source>
+        <translation>正在確認新版本</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>done</source>
+        <translation>完成</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>failed</source>
+        <translation>失敗</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>cancelled</source>
+        <translation>已取消</translation>
+    </message>
+    <message>
+        <location line="+28" />
+        <source>the image is empty</source>
+        <translation>映像為空</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>the image starts at %1, but the CAN bootloader writes the application at %2 (addresses are not transmitted); this is not an application image for this module</source>
+        <translation>映像起始於 %1，但 CAN 開機載入程式固定將應用程式寫入 %2（位址不隨資料傳送）；這不是此模組的應用程式映像</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>the image ends at %1, beyond the end of the flash at %2; it does not fit this module</source>
+        <translation>映像結束於 %1，超出位於 %2 的快閃記憶體末端；無法放入此模組</translation>
+    </message>
+    <message>
+        <location line="+92" />
+        <source>the application refused to enter its bootloader (0x1F51:05): %1</source>
+        <translation>應用程式拒絕進入開機載入程式（0x1F51:05）：%1</translation>
+    </message>
+    <message>
+        <location line="+12" />
+        <source>the bootloader refused the confirmation (0x1F51:06): %1</source>
+        <translation>開機載入程式拒絕確認請求（0x1F51:06）：%1</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>no bootloader confirmation yet (attempt %1 of %2)</source>
+        <translation>開機載入程式尚未確認（第 %1 次嘗試，共 %2 次）</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>the module did not confirm its bootloader (0x1F51:06) after %1 attempts; check the node ID and power-cycle the module</source>
+        <translation>嘗試 %1 次後，模組仍未確認進入開機載入程式（0x1F51:06）；請檢查節點 ID，並將模組斷電重啟</translation>
+    </message>
+    <message>
+        <location line="+23" />
+        <source>cancelled after %1 of %2 bytes</source>
+        <translation>在 %1 / %2 位元組後取消</translation>
+    </message>
+    <message>
+        <location line="+23" />
+        <source>the reply to segment %1 does not echo its data (%2); the reply is damaged</source>
+        <translation>分段 %1 的回應未回傳其資料（%2）；回應已損壞</translation>
+    </message>
+    <message>
+        <location line="+11" />
+        <source>the bootloader did not accept the download of %1 bytes within %2 ms (it erases first)</source>
+        <translation>開機載入程式未在 %2 ms 內接受 %1 位元組的下載（它會先抹除快閃記憶體）</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>no reply to segment %1 (byte %2 of %3) within %4 ms</source>
+        <translation>分段 %1（第 %2 / %3 位元組）在 %4 ms 內無回應</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>the bootloader refused the download of %1 bytes: %2</source>
+        <translation>開機載入程式拒絕 %1 位元組的下載：%2</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>segment %1 (byte %2 of %3): %4</source>
+        <translation>分段 %1（第 %2 / %3 位元組）：%4</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>the bootloader accepted %1 bytes (erase took %2 ms)</source>
+        <translation>開機載入程式已接受 %1 位元組（抹除耗時 %2 ms）</translation>
+    </message>
+    <message>
+        <location line="+29" />
+        <source>the application did not answer within %1 s after the start (no boot-up, heartbeat or SDO reply); the image may not be a firmware for this module</source>
+        <translation>啟動後 %1 s 內應用程式無回應（無開機訊息、心跳或 SDO 回應）；該映像可能不是此模組的韌體</translation>
+    </message>
+    <message>
+        <location line="+12" />
+        <source>refused before contacting the module: %1</source>
+        <translation>連線模組前已拒絕：%1</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>refused: node %1 is not a CANopen node ID (1..127)</source>
+        <translation>已拒絕：%1 不是有效的 CANopen 節點 ID（1..127）</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>image: %1 bytes at %2, CRC-32 %3</source>
+        <translation>映像：%1 位元組，位於 %2，CRC-32 %3</translation>
+    </message>
+    <message>
+        <location line="+15" />
+        <source>node %1: application answers, firmware %2</source>
+        <translation>節點 %1：應用程式已回應，韌體 %2</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>nothing answered on node %1: neither the application (SDO 0x1018:3) nor the bootloader (0x1F51:06). Check the node ID, the bit rate, the termination and the power</source>
+        <translation>節點 %1 無任何回應：應用程式（SDO 0x1018:3）和開機載入程式（0x1F51:06）均未回應。請檢查節點 ID、位元速率、終端電阻和電源</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>the module is already in its bootloader (an earlier update was interrupted); run the update again and allow finishing it</source>
+        <translation>模組已處於開機載入程式中（先前的更新被中斷）；請重新執行更新並讓其完成</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>the module is already in its bootloader: an earlier update was interrupted; finishing it</source>
+        <translation>模組已處於開機載入程式中：先前的更新被中斷；正在完成更新</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>cancelled; the module was not changed</source>
+        <translation>已取消；模組未變更</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>cancelled before the download; the module was not changed (if it is in its bootloader, run the update again)</source>
+        <translation>下載前已取消；模組未變更（若模組處於開機載入程式中，請重新執行更新）</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>bootloader confirmed on node %1</source>
+        <translation>節點 %1 已確認進入開機載入程式</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>cancelled before the download; the module stays in its bootloader; run the update again to finish it</source>
+        <translation>下載前已取消；模組停留在開機載入程式中；請重新執行更新以完成</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>cancelled before the download; the application was restarted unchanged</source>
+        <translation>下載前已取消；應用程式已原樣重新啟動</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <source>%1. The module stays in its bootloader without a valid application; run the update again to finish it</source>
+        <translation>%1。模組停留在開機載入程式中，沒有有效的應用程式；請重新執行更新以完成</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>the download failed: %1. The module stays in its bootloader; run the update again</source>
+        <translation>下載失敗：%1。模組停留在開機載入程式中；請重新執行更新</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>%1 bytes sent in %2 s (%3 bytes/s)</source>
+        <translation>%2 s 內傳送 %1 位元組（%3 位元組/秒）</translation>
+    </message>
+    <message>
+        <location line="+12" />
+        <source>verification failed: the bootloader reports CRC-32 %1 for the written application, the image has %2. The application was not started; run the update again</source>
+        <translation>驗證失敗：開機載入程式回報已寫入應用程式的 CRC-32 為 %1，而映像的為 %2。應用程式未啟動；請重新執行更新</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>verified: bootloader CRC %1 equals the image's</source>
+        <translation>已驗證：開機載入程式 CRC %1 與映像一致</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>the bootloader offers no CRC (0x1F56:1 %1); the restart of the application is the only check</source>
+        <translation>開機載入程式不提供 CRC（0x1F56:1 %1）；應用程式能否重新啟動是唯一的檢查</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>not answered</source>
+        <translation>未回應</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <source>the bootloader refused to start the application (0x1F51:09): %1. Run the update again</source>
+        <translation>開機載入程式拒絕啟動應用程式（0x1F51:09）：%1。請重新執行更新</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>the image was sent but %1</source>
+        <translation>映像已傳送，但%1</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>updated: firmware %1 → %2, %3 bytes, verified: bootloader CRC %4</source>
+        <translation>已更新：韌體 %1 → %2，%3 位元組，已驗證：開機載入程式 CRC %4</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>updated: %1 bytes sent; not verified by the bootloader; application restarted with version %2</source>
+        <translation>已更新：已傳送 %1 位元組；未經開機載入程式驗證；應用程式已重新啟動，版本 %2</translation>
+    </message>
+</context>
+<context>
     <name>CaptureExporter</name>
     <message>
         <location filename="../core/record/capture_exporter.cpp" line="+68" />
@@ -2091,6 +2349,44 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
 </context>
 <context>
+    <name>QtCanFrameLink</name>
+    <message>
+        <location filename="../core/firmware/qt_can_frame_link.cpp" line="+31" />
+        <source>the CAN plugin "%1" is not installed (available: %2)</source>
+        <translation>未安裝 CAN 外掛程式「%1」（可用：%2）</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>cannot create the CAN device %1:%2: %3</source>
+        <translation>無法建立 CAN 裝置 %1:%2：%3</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>cannot open the CAN device %1:%2: %3. Check the interface name and that it is up</source>
+        <translation>無法開啟 CAN 裝置 %1:%2：%3。請檢查介面名稱以及介面是否已啟用</translation>
+    </message>
+    <message>
+        <location line="+14" />
+        <source>the CAN device %1:%2 did not connect within %3 ms: %4</source>
+        <translation>CAN 裝置 %1:%2 在 %3 ms 內未連線：%4</translation>
+    </message>
+    <message>
+        <location line="+30" />
+        <source>the CAN device %1:%2 is not connected (%3); check the cable and the adapter</source>
+        <translation>CAN 裝置 %1:%2 未連線（%3）；請檢查線纜和轉接器</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>closed</source>
+        <translation>已關閉</translation>
+    </message>
+    <message>
+        <location line="+9" />
+        <source>sending a CAN frame failed: %1</source>
+        <translation>傳送 CAN 幀失敗：%1</translation>
+    </message>
+</context>
+<context>
     <name>RegisterMap</name>
     <message>
         <location filename="../core/protocol/modbus/register_map.cpp" line="+19" />
@@ -3018,6 +3314,14 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <location line="+1" />
         <source>IO pin mapping (PMUX)</source>
         <translation>IO 腳位映射（PMUX）</translation>
+    </message>
+</context>
+<context>
+    <name>SimulatedCanFrameLink</name>
+    <message>
+        <location filename="../core/sim/simulated_can_frame_link.cpp" line="+18" />
+        <source>the simulated CAN bus is not connected</source>
+        <translation>模擬 CAN 匯流排未連線</translation>
     </message>
 </context>
 <context>
@@ -6996,17 +7300,38 @@ Link load = bytes per second × 10 bits / baud rate.</source>
 <context>
     <name>imudesk::ui::FirmwareUpdateDialog</name>
     <message>
-        <location filename="../ui/firmware_update_dialog.cpp" line="+27" />
+        <location filename="../ui/firmware_update_dialog.cpp" line="+32" />
         <source>unknown</source>
         <translation>未知</translation>
     </message>
     <message>
-        <location line="+9" />
+        <location line="+10" />
+        <location line="+159" />
         <source>Firmware update on %1</source>
         <translation>%1 上的韌體更新</translation>
     </message>
     <message>
-        <location line="+7" />
+        <location line="-154" />
+        <source>Serial port %1 (KBOOT bootloader)</source>
+        <translation>串列埠 %1（KBOOT 開機載入程式）</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>CAN bus (CANopen SDO to object 0x1F51)</source>
+        <translation>CAN 匯流排（CANopen SDO 寫入物件 0x1F51）</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>How the firmware reaches the module: its serial port, or a CAN adapter on the module's CANopen bus</source>
+        <translation>韌體傳送到模組的方式：透過模組的串列埠，或透過接在模組 CANopen 匯流排上的 CAN 轉接器</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Link:</source>
+        <translation>鏈路：</translation>
+    </message>
+    <message>
+        <location line="+6" />
         <source>Intel HEX (.hex) or raw binary (.bin)</source>
         <translation>Intel HEX（.hex）或原始二進位檔（.bin）</translation>
     </message>
@@ -7082,12 +7407,72 @@ Link load = bytes per second × 10 bits / baud rate.</source>
     </message>
     <message>
         <location line="+2" />
-        <location line="+141" />
+        <location line="+250" />
         <source>Close</source>
         <translation>關閉</translation>
     </message>
     <message>
-        <location line="-103" />
+        <location line="-216" />
+        <source>CAN bus</source>
+        <translation>CAN 匯流排</translation>
+    </message>
+    <message>
+        <location line="+9" />
+        <source>The Qt CAN bus plugin of the adapter (socketcan for Linux CAN interfaces)</source>
+        <translation>轉接器對應的 Qt CAN 匯流排外掛程式（Linux CAN 介面用 socketcan）</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Plugin:</source>
+        <translation>外掛程式：</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>The adapter's interface name, e.g. can0</source>
+        <translation>轉接器的介面名稱，例如 can0</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Interface:</source>
+        <translation>介面：</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source> bit/s</source>
+        <translation> bit/s</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>as configured</source>
+        <translation>沿用介面設定</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The bus bit rate in bit/s (the HiPNUC CANopen default is 500000 bit/s); 0 leaves the interface's setting</source>
+        <translation>匯流排位元速率，單位 bit/s（HiPNUC CANopen 預設為 500000 bit/s）；0 表示沿用介面目前的設定</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Bit rate:</source>
+        <translation>位元速率：</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>The module's CANopen node ID, 1..127 (HiPNUC default 8)</source>
+        <translation>模組的 CANopen 節點 ID，1..127（HiPNUC 預設為 8）</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Node:</source>
+        <translation>節點：</translation>
+    </message>
+    <message>
+        <location line="+28" />
+        <source>Firmware update over CAN</source>
+        <translation>透過 CAN 更新韌體</translation>
+    </message>
+    <message>
+        <location line="+25" />
         <source>Choose the firmware</source>
         <translation>選擇韌體</translation>
     </message>
@@ -7098,7 +7483,7 @@ Link load = bytes per second × 10 bits / baud rate.</source>
     </message>
     <message>
         <location line="+16" />
-        <location line="+5" />
+        <location line="+7" />
         <source>refused: %1</source>
         <translation>已拒絕：%1</translation>
     </message>
@@ -7108,12 +7493,12 @@ Link load = bytes per second × 10 bits / baud rate.</source>
         <translation>%1 位元組，位址 %2 至 %3，CRC-32 %4；目標型號：檔案中未記錄</translation>
     </message>
     <message>
-        <location line="+27" />
+        <location line="+38" />
         <source>cancelling after the current packet...</source>
         <translation>將在目前封包完成後取消...</translation>
     </message>
     <message>
-        <location line="+21" />
+        <location line="+22" />
         <source>%1 of %2 bytes</source>
         <translation>%1 / %2 位元組</translation>
     </message>
@@ -7128,22 +7513,39 @@ Link load = bytes per second × 10 bits / baud rate.</source>
         <translation>%1 位元組/秒，剩餘 %2 s</translation>
     </message>
     <message>
-        <location line="+12" />
+        <location line="+13" />
+        <source>firmware %1 → %2 (new); verification: %3</source>
+        <translation>韌體 %1 → %2（新）；驗證方式：%3</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>CRC-32 reported by the bootloader</source>
+        <translation>開機載入程式回報的 CRC-32</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>none by the bootloader; the application restarted</source>
+        <translation>開機載入程式未驗證；應用程式已重新啟動</translation>
+    </message>
+    <message>
+        <location line="+8" />
         <source>%1, firmware %2 (new), bootloader %3</source>
         <translation>%1，韌體 %2（新），開機載入程式 %3</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="-7" />
+        <location line="+10" />
         <source>Done: %1</source>
         <translation>完成：%1</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="-10" />
+        <location line="+10" />
         <source>Not updated: %1</source>
         <translation>未更新：%1</translation>
     </message>
     <message>
-        <location line="+11" />
+        <location line="+14" />
         <source>Cancel</source>
         <translation>取消</translation>
     </message>
@@ -8825,7 +9227,7 @@ Samples: %3</source>
 <context>
     <name>imudesk::ui::ToolActions</name>
     <message>
-        <location filename="../ui/tool_actions.cpp" line="+108" />
+        <location filename="../ui/tool_actions.cpp" line="+109" />
         <source>&amp;Open capture…</source>
         <translation>開啟記錄檔(&amp;O)…</translation>
     </message>
@@ -8931,8 +9333,8 @@ Samples: %3</source>
     </message>
     <message>
         <location line="+1" />
-        <source>Write a new firmware image to the module, verified by reading it back</source>
-        <translation>將新的韌體映像檔寫入模組，並以回讀驗證</translation>
+        <source>Write a new firmware image to the module: over its serial port, verified by reading it back, or over CANopen, verified by the bootloader's CRC</source>
+        <translation>將新韌體寫入模組：經串列埠寫入時回讀驗證，經 CANopen 寫入時由開機載入程式的 CRC 驗證</translation>
     </message>
     <message>
         <location line="+1" />
@@ -9005,7 +9407,7 @@ Samples: %3</source>
         <translation>校準(&amp;C)</translation>
     </message>
     <message>
-        <location line="+40" />
+        <location line="+41" />
         <source>%1 could not be imported: %2</source>
         <translation>無法匯入 %1：%2</translation>
     </message>

@@ -328,7 +328,10 @@ void FirmwareUpdateDialog::onFinished(bool ok, const QString &message)
         const auto &cr = m_canUpdater->result();
         if (ok)
             m_versions->setText(tr("firmware %1 → %2 (new); verification: %3")
-                                    .arg(versionText(cr.before), versionText(cr.after), cr.verifyMethod));
+                                    .arg(versionText(cr.before), versionText(cr.after),
+                                         cr.verifyMethod == QLatin1String("bootloader CRC")
+                                             ? tr("CRC-32 reported by the bootloader")
+                                             : tr("none by the bootloader; the application restarted")));
         m_outcome->setText(ok ? tr("Done: %1").arg(message) : tr("Not updated: %1").arg(message));
         updateButtons();
         Q_EMIT updateFinished(ok);

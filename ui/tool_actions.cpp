@@ -5,6 +5,7 @@
 #include "calibration_history_dialog.h"
 #include "gyro_scale_wizard.h"
 #include "hec495_calibration_wizard.h"
+#include "device/can_session.h"
 #include "device/hec495_session.h"
 #include "mag_calibration_wizard.h"
 #include "bandwidth_calculator.h"
@@ -126,7 +127,7 @@ void ToolActions::retranslate()
     m_calculator->setText(tr("Output-rate &calculator…"));
     m_calculator->setStatusTip(tr("Bytes per second of the chosen outputs against the link's capacity"));
     m_firmware->setText(tr("&Update firmware…"));
-    m_firmware->setStatusTip(tr("Write a new firmware image to the module, verified by reading it back"));
+    m_firmware->setStatusTip(tr("Write a new firmware image to the module: over its serial port, verified by reading it back, or over CANopen, verified by the bootloader's CRC"));
     m_record->setText(tr("&Record"));
     m_record->setStatusTip(tr("Show the recording controls of this device"));
     m_magCal->setText(tr("&Magnetometer…"));
@@ -163,8 +164,9 @@ void ToolActions::update(const DeviceWorkspace *ws)
     m_gyroCal->setEnabled(serial && connected);
     m_attitudeReset->setEnabled(serial && connected);
     m_compassCal->setEnabled(connected && dynamic_cast<const device::Hec495Session *>(&ws->link()));
-    // The update opens the port itself: a connected HiPNUC serial device.
-    m_firmware->setEnabled(serial && connected && !ws->simulator());
+    // The update opens the port itself: a connected HiPNUC serial device, or a HiPNUC module
+    // on a CANopen bus (the dialog opens its own CAN device beside the session's).
+    m_firmware->setEnabled((serial && connected && !ws->simulator()) || (connected && canopenLink(ws)));
 }
 
 bool ToolActions::openCapture(const QString &path)
@@ -368,10 +370,29 @@ void ToolActions::openCalHistory()
     dialog->show();
 }
 
+const device::CanSession *ToolActions::canopenLink(const DeviceWorkspace *ws)
+{
+    const auto *can = ws ? dynamic_cast<const device::CanSession *>(&ws->link()) : nullptr;
+    return can && can->protocol() == protocol::can::CanProtocol::CanOpen ? can : nullptr;
+}
+
 void ToolActions::updateFirmware()
 {
     DeviceWorkspace *ws = m_window->currentWorkspace();
-    if (!ws || ws->hasAttachedLink())
+    if (!ws)
+        return;
+    if (const device::CanSession *can = canopenLink(ws)) {
+        // Over CAN the session stays on the bus; the dialog talks to the node with its own
+        // CAN device (SDO to 0x1F51) and the session sees the module leave and come back.
+        auto *dialog = new FirmwareUpdateDialog(QString(), 0, ws->identity(), m_window);
+        dialog->setAttribute(Qt::WA_DeleteOnClose);
+        dialog->setLink(FirmwareUpdateDialog::Link::Can);
+        const auto &o = can->options();
+        dialog->setCanBus(o.plugin, o.interfaceName, o.bitrate, can->targetNode() > 0 ? can->targetNode() : 8);
+        dialog->open();
+        return;
+    }
+    if (ws->hasAttachedLink())
         return;
     const QString port = ws->target();
     const int baud = ws->baud();

@@ -12,6 +12,10 @@
 class QAction;
 class QMenu;
 
+namespace imudesk::device {
+class CanSession;
+}
+
 namespace imudesk::ui {
 
 class DeviceWorkspace;
@@ -64,6 +68,8 @@ private:
     void openProfiles();
     void openCalculator();
     void updateFirmware();
+    // The workspace's link when it is a HiPNUC module on CANopen (the CAN update path).
+    static const device::CanSession *canopenLink(const DeviceWorkspace *ws);
     void showRecording();
     void openMagCal();
     void openGyroCal();

@@ -2,13 +2,19 @@
 // served in this process on Qt's virtualcan bus (its own TCP port): the link choice shows the CAN
 // fields, the update reaches the new version verified by the bootloader's CRC, and a cancel
 // mid-download leaves the module in its bootloader where a second update finishes.
+#include "device_workspace.h"
 #include "firmware_update_dialog.h"
+#include "link_factory.h"
+#include "main_window.h"
 #include "protocol/ihex/intel_hex_writer.h"
 #include "sim/can_simulator.h"
 #include "sim/kboot_bootloader.h"
 
 #include <QCanBus>
+#include <QAction>
 #include <QComboBox>
+#include <QLineEdit>
+#include <QStandardPaths>
 #include <QEventLoop>
 #include <QGroupBox>
 #include <QLabel>
@@ -139,6 +145,47 @@ private Q_SLOTS:
         QCOMPARE(finished.at(2).at(0).toBool(), true);
         QVERIFY(dlg.canResult().resumed);
         QVERIFY(flashHolds(simulator, next));
+    }
+
+    // Device > Update firmware on a workspace connected to a HiPNUC module over CANopen opens
+    // the dialog on CAN, preset with the session's bus and node, and the update goes through.
+    void deviceMenuOpensTheCanUpdate()
+    {
+        QStandardPaths::setTestModeEnabled(true);
+        ui::MainWindow w;
+        w.setErrorPresenter([](const QString &m) { QFAIL(qPrintable(m)); });
+        w.show();
+        ui::DeviceWorkspace *ws = w.freeWorkspaceForLink();
+        device::CanSessionOptions o;
+        o.plugin = QStringLiteral("virtualcan");
+        o.interfaceName = kInterface; // virtualcan serves one port per process
+        o.protocol = protocol::can::CanProtocol::CanOpen;
+        o.node = 8;
+        QString error;
+        QVERIFY2(ui::LinkFactory::connectCan(*ws, o, true, sim::Motion::Static, &error), qPrintable(error));
+        auto *action = w.findChild<QAction *>(QStringLiteral("firmwareAction"));
+        QVERIFY(action);
+        QVERIFY2(spinUntil([&] { return ws->state() == device::SessionState::Connected && action->isEnabled(); },
+                          15000),
+                 qPrintable(QStringLiteral("state %1, current %2, enabled %3")
+                                .arg(int(ws->state()))
+                                .arg(w.currentWorkspace() == ws)
+                                .arg(action->isEnabled())));
+        action->trigger();
+        auto *dlg = w.findChild<FirmwareUpdateDialog *>();
+        QVERIFY(dlg);
+        QCOMPARE(dlg->link(), FirmwareUpdateDialog::Link::Can);
+        QCOMPARE(dlg->findChild<QComboBox *>(QStringLiteral("canPlugin"))->currentText(), o.plugin);
+        QCOMPARE(dlg->findChild<QLineEdit *>(QStringLiteral("canInterface"))->text(), o.interfaceName);
+        QCOMPARE(dlg->findChild<QSpinBox *>(QStringLiteral("canNode"))->value(), 8);
+        const auto img = image("1.7.4", 3000);
+        QVERIFY(dlg->loadFile(writeHex(m_dir, QStringLiteral("menu.hex"), protocol::ihex::IntelHexWriter::write(img))));
+        QSignalSpy finished(dlg, &FirmwareUpdateDialog::updateFinished);
+        QVERIFY(dlg->startUpdate());
+        QVERIFY(finished.wait(60000));
+        QCOMPARE(finished.at(0).at(0).toBool(), true);
+        QCOMPARE(dlg->canResult().verifyMethod, QStringLiteral("bootloader CRC"));
+        dlg->close();
     }
 };
 

@@ -53,7 +53,7 @@ private Q_SLOTS:
         QTest::addColumn<QString>("expected");
         QTest::newRow("product") << "{product}.imucap" << "device.imucap";
         QTest::newRow("suffix added") << "run" << "run.imucap";
-        QTest::newRow("no path escape") << "../x/y" << ".._x_y.imucap";
+        QTest::newRow("no path escape, no hidden file") << "../x/y" << "_._x_y.imucap";
         QTest::newRow("date") << "{date}" << QDate::currentDate().toString(QStringLiteral("yyyyMMdd")) + ".imucap";
     }
     void patternExpands()
