@@ -4,7 +4,9 @@
 // (the dump equals the image), a bad HEX refused before any frame reaches the bus, cancel (SIGINT)
 // mid-download and a second run that finishes the update. This executable uses its own virtualcan
 // TCP port; the simulator process owns the plugin's server.
+#include "../common/cli_process.h"
 #include "../common/cli_run.h"
+#include "../common/firmware_files.h"
 #include "protocol/can/can_frame.h"
 #include "protocol/ihex/firmware_image.h"
 #include "protocol/ihex/intel_hex_writer.h"
@@ -12,7 +14,6 @@
 
 #include <QCanBus>
 #include <QCanBusDevice>
-#include <QElapsedTimer>
 #include <QFile>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -33,32 +34,12 @@ constexpr int kPort = 35491;
 constexpr uint32_t kAppStart = 0x8000;
 constexpr uint32_t kFlashSize = 512 * 1024;
 
-QJsonObject resultLine(const QString &out)
-{
-    const auto lines = out.split(QLatin1Char('\n'), Qt::SkipEmptyParts);
-    for (auto it = lines.rbegin(); it != lines.rend(); ++it) {
-        const auto o = QJsonDocument::fromJson(it->toUtf8()).object();
-        if (o.value(QStringLiteral("event")).toString() == QStringLiteral("result"))
-            return o;
-    }
-    return {};
-}
+using imudesk::test::resultLine;
+using imudesk::test::writeFile;
 
 FirmwareImage image(const std::string &version, size_t size, uint64_t seed = 21)
 {
-    FirmwareImage img;
-    img.startAddress = kAppStart;
-    img.data = sim::KbootBootloader::makeApplication(version, size, seed);
-    return img;
-}
-
-QString writeFile(const QTemporaryDir &dir, const QString &name, const std::string &content)
-{
-    const QString path = dir.filePath(name);
-    QFile f(path);
-    if (f.open(QIODevice::WriteOnly))
-        f.write(content.data(), qint64(content.size()));
-    return path;
+    return imudesk::test::appImage(version, size, seed, kAppStart);
 }
 
 } // namespace
@@ -76,29 +57,9 @@ class TstCanFirmwareUpdate : public QObject {
                          QStringLiteral("canopen")};
         if (!dump.isEmpty())
             args << QStringLiteral("--flash-dump") << dump;
-        m_sim.start(QStringLiteral(IMUDESK_CLI_PATH), args);
-        if (!m_sim.waitForStarted(5000))
-            return false;
-        QElapsedTimer t;
-        t.start();
-        QByteArray seen;
-        while (t.elapsed() < 5000) {
-            m_sim.waitForReadyRead(100);
-            seen += m_sim.readAllStandardOutput();
-            if (seen.contains("can: "))
-                return true;
-        }
-        return false;
+        return imudesk::test::startCliUntil(m_sim, args, "can: ");
     }
-    void stopSim()
-    {
-        if (m_sim.state() == QProcess::NotRunning)
-            return;
-        m_sim.terminate();
-        if (!m_sim.waitForFinished(5000))
-            m_sim.kill();
-        m_sim.waitForFinished();
-    }
+    void stopSim() { imudesk::test::stopCli(m_sim); }
     QStringList update(const QString &hex, const QStringList &extra = {}) const
     {
         return QStringList{QStringLiteral("update"), QStringLiteral("--can"), m_bus, QStringLiteral("--node"),

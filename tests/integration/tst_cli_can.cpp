@@ -2,6 +2,8 @@
 // can list/read/scan/reg/sdo/sync, JSON output and exit codes. This executable uses its own
 // virtualcan TCP port; the simulator process owns the plugin's server.
 
+#include "../common/cli_process.h"
+
 #include <QCanBus>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -42,27 +44,11 @@ class TstCliCan : public QObject {
     bool startSim(const QStringList &extra, int port)
     {
         m_iface = QStringLiteral("tcp://127.0.0.1:%1/can0").arg(port);
-        m_sim.start(kCli, QStringList{QStringLiteral("simulate"), QStringLiteral("--can"), QStringLiteral("virtualcan:") + m_iface} + extra);
-        if (!m_sim.waitForStarted(5000))
-            return false;
-        QElapsedTimer t;
-        t.start();
-        QByteArray seen;
-        while (t.elapsed() < 5000) {
-            m_sim.waitForReadyRead(100);
-            seen += m_sim.readAllStandardOutput();
-            if (seen.contains("can: "))
-                return true;
-        }
-        return false;
+        return imudesk::test::startCliUntil(
+            m_sim, QStringList{QStringLiteral("simulate"), QStringLiteral("--can"), QStringLiteral("virtualcan:") + m_iface} + extra,
+            "can: ");
     }
-    void stopSim()
-    {
-        m_sim.terminate();
-        if (!m_sim.waitForFinished(3000))
-            m_sim.kill();
-        m_sim.waitForFinished();
-    }
+    void stopSim() { imudesk::test::stopCli(m_sim, 3000); }
     QStringList can(const QStringList &rest) const
     {
         return QStringList{QStringLiteral("can"), QStringLiteral("--interface"), m_iface} + rest;

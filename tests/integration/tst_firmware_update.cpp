@@ -3,6 +3,7 @@
 // process. Happy path, each injected fault followed by a successful second attempt, files
 // refused before any byte is sent, cancel (SIGINT) mid-write and resume.
 #include "../common/cli_run.h"
+#include "../common/firmware_files.h"
 #include "protocol/ihex/firmware_image.h"
 #include "protocol/ihex/intel_hex_writer.h"
 #include "sim/kboot_bootloader.h"
@@ -34,32 +35,12 @@ Run cli(const QStringList &args, int timeoutMs = 60000)
     return imudesk::test::runCli(args, timeoutMs);
 }
 
-QJsonObject resultLine(const QString &out)
-{
-    const auto lines = out.split(QLatin1Char('\n'), Qt::SkipEmptyParts);
-    for (auto it = lines.rbegin(); it != lines.rend(); ++it) {
-        const auto o = QJsonDocument::fromJson(it->toUtf8()).object();
-        if (o.value(QStringLiteral("event")).toString() == QStringLiteral("result"))
-            return o;
-    }
-    return {};
-}
+using imudesk::test::resultLine;
+using imudesk::test::writeFile;
 
 FirmwareImage image(const std::string &version, size_t size, uint64_t seed = 11)
 {
-    FirmwareImage img;
-    img.startAddress = 0x8000;
-    img.data = KbootBootloader::makeApplication(version, size, seed);
-    return img;
-}
-
-QString writeFile(const QTemporaryDir &dir, const QString &name, const std::string &content)
-{
-    const QString path = dir.filePath(name);
-    QFile f(path);
-    if (f.open(QIODevice::WriteOnly))
-        f.write(content.data(), qint64(content.size()));
-    return path;
+    return imudesk::test::appImage(version, size, seed);
 }
 
 bool flashHolds(sim::PtySimulator &s, const FirmwareImage &img, std::string *version = nullptr)

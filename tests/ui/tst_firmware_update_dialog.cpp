@@ -1,5 +1,6 @@
 // The firmware update dialog, offscreen, against the simulated module on a pty: file
 // information, a refused file, progress to the new version, cancel and finishing later.
+#include "../common/firmware_files.h"
 #include "firmware_update_dialog.h"
 #include "protocol/ihex/intel_hex_writer.h"
 #include "sim/kboot_bootloader.h"
@@ -23,19 +24,10 @@ constexpr int kBaud = 921600;
 
 protocol::ihex::FirmwareImage image(const std::string &version, size_t size)
 {
-    protocol::ihex::FirmwareImage img;
-    img.startAddress = 0x8000;
-    img.data = sim::KbootBootloader::makeApplication(version, size, 5);
-    return img;
+    return imudesk::test::appImage(version, size, 5);
 }
 
-QString writeHex(const QTemporaryDir &dir, const QString &name, const std::string &text)
-{
-    QFile f(dir.filePath(name));
-    if (f.open(QIODevice::WriteOnly))
-        f.write(text.data(), qint64(text.size()));
-    return f.fileName();
-}
+using imudesk::test::writeFile;
 
 bool flashHolds(sim::PtySimulator &s, const protocol::ihex::FirmwareImage &img)
 {
@@ -56,7 +48,7 @@ private Q_SLOTS:
     void refusedFile()
     {
         FirmwareUpdateDialog dlg(QStringLiteral("/dev/null"), kBaud, std::nullopt);
-        const QString bad = writeHex(m_dir, QStringLiteral("bad.hex"), ":0200000401\r\n");
+        const QString bad = writeFile(m_dir, QStringLiteral("bad.hex"), ":0200000401\r\n");
         QVERIFY(!dlg.loadFile(bad));
         QVERIFY(dlg.findChild<QLabel *>(QStringLiteral("imageInfo"))->text().contains(QStringLiteral("line 1")));
         QVERIFY(!dlg.findChild<QPushButton *>(QStringLiteral("start"))->isEnabled());
@@ -78,7 +70,7 @@ private Q_SLOTS:
         dlg.show();
         QVERIFY(dlg.findChild<QLabel *>(QStringLiteral("versions"))->text().contains(QStringLiteral("1.7.1")));
         const auto img = image("1.7.2", 24 * 1024);
-        QVERIFY(dlg.loadFile(writeHex(m_dir, QStringLiteral("fw.hex"), protocol::ihex::IntelHexWriter::write(img))));
+        QVERIFY(dlg.loadFile(writeFile(m_dir, QStringLiteral("fw.hex"), protocol::ihex::IntelHexWriter::write(img))));
         const QString info = dlg.findChild<QLabel *>(QStringLiteral("imageInfo"))->text();
         QVERIFY2(info.contains(QStringLiteral("24576 bytes from 0x00008000")), qPrintable(info));
         QVERIFY2(info.contains(QStringLiteral("CRC-32 0x")), qPrintable(info));
@@ -107,7 +99,7 @@ private Q_SLOTS:
         QVERIFY(s.start());
         FirmwareUpdateDialog dlg(s.devicePath(), kBaud, std::nullopt);
         const auto img = image("1.7.3", 128 * 1024);
-        QVERIFY(dlg.loadFile(writeHex(m_dir, QStringLiteral("fw2.hex"), protocol::ihex::IntelHexWriter::write(img))));
+        QVERIFY(dlg.loadFile(writeFile(m_dir, QStringLiteral("fw2.hex"), protocol::ihex::IntelHexWriter::write(img))));
         QSignalSpy finished(&dlg, &FirmwareUpdateDialog::updateFinished);
         QVERIFY(dlg.startUpdate());
         auto *bar = dlg.findChild<QProgressBar *>(QStringLiteral("progress"));

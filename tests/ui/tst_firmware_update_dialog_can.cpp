@@ -3,6 +3,7 @@
 // fields, the update reaches the new version verified by the bootloader's CRC, and a cancel
 // mid-download leaves the module in its bootloader where a second update finishes.
 #include "device_workspace.h"
+#include "../common/firmware_files.h"
 #include "firmware_update_dialog.h"
 #include "link_factory.h"
 #include "main_window.h"
@@ -37,19 +38,10 @@ const QString kInterface = QStringLiteral("tcp://127.0.0.1:35493/can0");
 
 protocol::ihex::FirmwareImage image(const std::string &version, size_t size)
 {
-    protocol::ihex::FirmwareImage img;
-    img.startAddress = 0x8000;
-    img.data = sim::KbootBootloader::makeApplication(version, size, 9);
-    return img;
+    return imudesk::test::appImage(version, size, 9);
 }
 
-QString writeHex(const QTemporaryDir &dir, const QString &name, const std::string &text)
-{
-    QFile f(dir.filePath(name));
-    if (f.open(QIODevice::WriteOnly))
-        f.write(text.data(), qint64(text.size()));
-    return f.fileName();
-}
+using imudesk::test::writeFile;
 
 // Runs the event loop (no sleeps: the simulator's bus server lives in this thread) until pred
 // holds or timeoutMs passed.
@@ -119,7 +111,7 @@ private Q_SLOTS:
         dlg.setLink(FirmwareUpdateDialog::Link::Can);
         dlg.setCanBus(QStringLiteral("virtualcan"), kInterface, 0, 8);
         const auto img = image("1.7.2", 2000);
-        QVERIFY(dlg.loadFile(writeHex(m_dir, QStringLiteral("can.hex"), protocol::ihex::IntelHexWriter::write(img))));
+        QVERIFY(dlg.loadFile(writeFile(m_dir, QStringLiteral("can.hex"), protocol::ihex::IntelHexWriter::write(img))));
         QSignalSpy finished(&dlg, &FirmwareUpdateDialog::updateFinished);
         QVERIFY(dlg.startUpdate());
         QVERIFY(finished.wait(60000));
@@ -131,7 +123,7 @@ private Q_SLOTS:
 
         // Cancel mid-download (as the Cancel button does), then the second update finishes.
         const auto next = image("1.7.3", 8000);
-        QVERIFY(dlg.loadFile(writeHex(m_dir, QStringLiteral("can2.hex"), protocol::ihex::IntelHexWriter::write(next))));
+        QVERIFY(dlg.loadFile(writeFile(m_dir, QStringLiteral("can2.hex"), protocol::ihex::IntelHexWriter::write(next))));
         auto *bar = dlg.findChild<QProgressBar *>(QStringLiteral("progress"));
         QVERIFY(dlg.startUpdate());
         QVERIFY(spinUntil([&] { return bar->value() > 100; }, 60000));
@@ -179,7 +171,7 @@ private Q_SLOTS:
         QCOMPARE(dlg->findChild<QLineEdit *>(QStringLiteral("canInterface"))->text(), o.interfaceName);
         QCOMPARE(dlg->findChild<QSpinBox *>(QStringLiteral("canNode"))->value(), 8);
         const auto img = image("1.7.4", 3000);
-        QVERIFY(dlg->loadFile(writeHex(m_dir, QStringLiteral("menu.hex"), protocol::ihex::IntelHexWriter::write(img))));
+        QVERIFY(dlg->loadFile(writeFile(m_dir, QStringLiteral("menu.hex"), protocol::ihex::IntelHexWriter::write(img))));
         QSignalSpy finished(dlg, &FirmwareUpdateDialog::updateFinished);
         QVERIFY(dlg->startUpdate());
         QVERIFY(finished.wait(60000));
