@@ -62,12 +62,18 @@ echo "== benchmark (decode throughput against the manual's byte-at-a-time decode
 # bench_gui_live and soak: exit 2 = a frame that reached ImuDesk was lost or the capture is
 # damaged (fails the run); exit 1 = a target missed, e.g. frames the pty dropped because a loaded
 # machine did not schedule the reader in time (reported, like the other benchmarks' targets).
+# Like the test suite, a run that fails is run once more: only a failure twice stops CI.
 live_bench() {
   local rc=0
   "$@" || rc=$?
   if [ "$rc" -ge 2 ]; then
-    echo "!! $(basename "$1") lost data that reached ImuDesk (see above)" >&2
-    exit 1
+    echo "!! $(basename "$1") lost data that reached ImuDesk (see above); running it once more"
+    rc=0
+    "$@" || rc=$?
+    if [ "$rc" -ge 2 ]; then
+      echo "!! $(basename "$1") lost data that reached ImuDesk twice (see above)" >&2
+      exit 1
+    fi
   fi
   [ "$rc" -eq 0 ] || echo "!! $(basename "$1") missed a target (see above)"
 }

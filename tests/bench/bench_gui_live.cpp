@@ -169,6 +169,11 @@ int main(int argc, char **argv)
     const uint64_t decoded0 = session.store().totalAppended();
     const uint64_t ptyDrops0 = simulator->stats().chunksDropped;
     const int refresh0 = ws->chartPanel()->refreshCount();
+    device::SessionStats stats0, statsNow;
+    QObject::connect(&session, &device::DeviceSession::statsUpdated, &session,
+                     [&statsNow](const device::SessionStats &st) { statsNow = st; });
+    spin(600); // one stats report before the run
+    stats0 = statsNow;
 
     const QString capturePath = QDir(recordDir).filePath(QStringLiteral("soak.imucap"));
     quint64 recordedFrames = 0, recordedBytes = 0;
@@ -256,6 +261,10 @@ int main(int argc, char **argv)
                 (unsigned long long)ptyDrops);
     std::printf("  %-34s %12llu   target 0  %s\n", "  lost after reaching ImuDesk", (unsigned long long)lostInApp,
                 lostInApp == 0 ? "ok" : "FAILED");
+    std::printf("  %-34s %12llu / %llu / %llu\n", "  CRC errors / bytes skipped / bad payloads",
+                (unsigned long long)(statsNow.crcErrors - stats0.crcErrors),
+                (unsigned long long)(statsNow.bytesSkipped - stats0.bytesSkipped),
+                (unsigned long long)(statsNow.payloadErrors - stats0.payloadErrors));
     std::printf("  %-34s %12.1f   target >= 30  %s\n", "chart refreshes per second", refreshRate,
                 okRefresh ? "ok" : "MISSED");
     std::printf("  %-34s %11.1f%%   target < 30 %%  %s\n", "GUI thread busy (one core)", busy,
