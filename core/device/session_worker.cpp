@@ -27,7 +27,10 @@ constexpr int kListenMs = 150;
 constexpr int kDetectQueryTimeoutMs = 500;
 constexpr int kIdentityTimeoutMs = 1000;
 constexpr int kStatsPeriodMs = 500;
-constexpr int kLineIdleMs = 30;
+// A module sends a frame without pauses, but a USB adapter's latency timer (16 ms on FTDI
+// parts) and a loaded host can split one in two deliveries tens of ms apart: only a pause
+// longer than this gives up an unfinished frame (30 ms lost frames under load).
+constexpr int kLineIdleMs = 120;
 constexpr int kReconnectPollMs = 500;
 // A configured rate whose frames need more of the line than this cannot all arrive, so the
 // frames that do no longer show the period: the gap counter is told the configured one.

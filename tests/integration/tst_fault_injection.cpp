@@ -239,6 +239,38 @@ private Q_SLOTS:
         QTRY_VERIFY_WITH_TIMEOUT(session.store().totalAppended() > frozen + 50, 5000);
     }
 
+    // A frame delivered in two pieces with a pause between them (a USB adapter's latency
+    // timer, a loaded host): the session waits for the rest instead of giving the frame up.
+    void frameSplitByAPause_data()
+    {
+        QTest::addColumn<int>("pauseMs");
+        QTest::newRow("16 ms (FTDI latency timer)") << 16;
+        QTest::newRow("60 ms (loaded host)") << 60;
+    }
+    void frameSplitByAPause()
+    {
+        QFETCH(int, pauseMs);
+        RawPty pty;
+        QVERIFY(pty.ok());
+        DeviceSession session;
+        StatsProbe stats(session);
+        session.setAutoReconnect(false);
+        session.open(pty.slave(), 921600);
+        QVERIFY(waitState(session, SessionState::Connected));
+        pty.drain();
+        for (uint32_t i = 0; i < 20; ++i) {
+            const auto f = hi91Frame(5000 + i);
+            const size_t cut = 10 + 3 * i;
+            pty.write(std::vector<uint8_t>(f.begin(), f.begin() + qsizetype(cut)));
+            QTest::qWait(pauseMs);
+            pty.write(std::vector<uint8_t>(f.begin() + qsizetype(cut), f.end()));
+        }
+        QTRY_COMPARE_WITH_TIMEOUT(session.store().totalAppended(), uint64_t(20), 5000);
+        QTest::qWait(200);
+        QCOMPARE(session.store().totalAppended(), uint64_t(20));
+        QCOMPARE(stats.last.crcErrors, uint64_t(0));
+    }
+
     void stalledReaderLosesNothingAlreadyReceived()
     {
         sim::PtySimulator simulator(simOptions(921600));
