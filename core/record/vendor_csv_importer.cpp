@@ -6,10 +6,13 @@
 #include <charconv>
 #include <map>
 #include <string>
+#include <cmath>
 
 namespace imudesk::record {
 
 namespace {
+
+constexpr double kMaxPcCounterMs = 100.0 * 365.25 * 86400e3; // a century, in ms
 
 // Columns the importer reads, by the vendor's header names.
 enum Column {
@@ -159,6 +162,11 @@ VendorCsvImporter::Result VendorCsvImporter::read(QIODevice &device, const Sampl
         }
         if (badColumn >= 0) {
             bad(tr("line %1: %2 is not a number").arg(lineNo).arg(QLatin1String(kNames[size_t(badColumn)])));
+            continue;
+        }
+        // The PC counter is in ms; a value beyond a century (or not finite) is not one.
+        if (!(std::fabs(pc) < kMaxPcCounterMs)) {
+            bad(tr("line %1: pc_counter %2 is not a time in ms").arg(lineNo).arg(pc));
             continue;
         }
         model::Sample s;

@@ -360,6 +360,26 @@ private Q_SLOTS:
         QVERIFY(!r.error.isEmpty());
     }
 
+    // Found by fuzz_vendor_csv (10-minute run): a pc_counter far beyond any time in ms made
+    // the ns conversion overflow (undefined behaviour); the line is now reported and skipped.
+    void vendorCsvOutOfRangeCounter()
+    {
+        QByteArray csv = "HI91,pc_counter,sys_time,acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z,mag_x,mag_y,mag_z,roll,pitch,"
+                         "yaw,quat_w,quat_x,quat_y,quat_z,temperature,pressure\n";
+        const QByteArray rest = ",3000,0,0,1,0,0,0,20,0,-40,0,0,0,1,0,0,0,25,101325\n";
+        csv += "HI91,10" + rest + "HI91,4.44444e+31" + rest + "HI91,inf" + rest + "HI91,30" + rest;
+        QBuffer buf(&csv);
+        QVERIFY(buf.open(QIODevice::ReadOnly));
+        std::vector<model::Sample> got;
+        const auto r = VendorCsvImporter::read(buf, [&](const model::Sample &s) { got.push_back(s); });
+        QVERIFY2(r.ok, qPrintable(r.error));
+        QCOMPARE(got.size(), size_t(2));
+        QCOMPARE(got[1].hostTimeNs, int64_t(30'000'000));
+        QCOMPARE(r.badLines, uint64_t(2));
+        QCOMPARE(r.errors.size(), size_t(2));
+        QCOMPARE(r.errors[0].line, uint64_t(3));
+    }
+
 private:
     static const char *golden_rmc() { return "$GPRMC,235952.00,A,3112.5000,N,12127.5000,E,0.0,0.0,141125,0.0,E,A*3B"; }
 };
