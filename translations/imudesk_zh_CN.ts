@@ -3616,7 +3616,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>VendorCsvImporter</name>
     <message>
-        <location filename="../core/record/vendor_csv_importer.cpp" line="+76" />
+        <location filename="../core/record/vendor_csv_importer.cpp" line="+79" />
         <source>Cannot open %1: %2</source>
         <translation>无法打开 %1：%2</translation>
     </message>
@@ -3654,6 +3654,11 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <location line="+15" />
         <source>line %1: %2 is not a number</source>
         <translation>第 %1 行：%2 不是数字</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>line %1: pc_counter %2 is not a time in ms</source>
+        <translation>第 %1 行：pc_counter %2 不是以 ms 为单位的时间</translation>
     </message>
     <message>
         <location line="+23" />
@@ -4396,7 +4401,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::device::SessionWorker</name>
     <message>
-        <location filename="../core/device/session_worker.cpp" line="+125" />
+        <location filename="../core/device/session_worker.cpp" line="+128" />
         <source>the connection was closed</source>
         <translation>连接已关闭</translation>
     </message>
