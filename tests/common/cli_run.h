@@ -16,10 +16,11 @@ struct CliResult {
     QJsonObject json() const { return QJsonDocument::fromJson(out.trimmed().toUtf8()).object(); }
 };
 
-inline CliResult runCli(const QStringList &args, int timeoutMs = 60000)
+// Runs any program (e.g. imudesk-cli under prlimit) and collects its exit code and output.
+inline CliResult runProgram(const QString &program, const QStringList &args, int timeoutMs)
 {
     QProcess p;
-    p.start(QStringLiteral(IMUDESK_CLI_PATH), args);
+    p.start(program, args);
     CliResult r;
     if (!p.waitForFinished(timeoutMs)) {
         p.kill();
@@ -31,6 +32,11 @@ inline CliResult runCli(const QStringList &args, int timeoutMs = 60000)
     r.out = QString::fromUtf8(p.readAllStandardOutput());
     r.err = QString::fromUtf8(p.readAllStandardError());
     return r;
+}
+
+inline CliResult runCli(const QStringList &args, int timeoutMs = 60000)
+{
+    return runProgram(QStringLiteral(IMUDESK_CLI_PATH), args, timeoutMs);
 }
 
 } // namespace imudesk::test

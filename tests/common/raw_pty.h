@@ -2,6 +2,7 @@
 // Test helpers for faults on the serial path: a pseudo-terminal whose master side the test
 // writes to (the test plays the device, and closing it pulls the cable), and a watch of the
 // owner thread's event loop (the GUI thread in the app).
+#include "device/device_session.h"
 #include "protocol/hipnuc/frame_decoder.h"
 #include "protocol/hipnuc/payloads.h"
 
@@ -113,5 +114,20 @@ private:
     QElapsedTimer m_clock;
     qint64 m_worst = 0;
 };
+
+// Opens session on the pty at 921600 baud (no auto-reconnect: the tests pull the cable) and
+// waits until it is connected, reading away its identity queries meanwhile.
+inline bool openOnPty(device::DeviceSession &session, RawPty &pty)
+{
+    session.setAutoReconnect(false);
+    session.open(pty.slave(), 921600);
+    QElapsedTimer t;
+    t.start();
+    while (session.state() != device::SessionState::Connected && t.elapsed() < 15000) {
+        pty.drain();
+        QTest::qWait(10);
+    }
+    return session.state() == device::SessionState::Connected;
+}
 
 } // namespace imudesk::test

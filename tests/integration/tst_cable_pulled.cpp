@@ -37,19 +37,6 @@ std::vector<uint8_t> framesThenPart(uint32_t n, size_t partial)
     return out;
 }
 
-bool connectTo(DeviceSession &session, RawPty &pty)
-{
-    session.setAutoReconnect(false);
-    session.open(pty.slave(), 921600);
-    QElapsedTimer t;
-    t.start();
-    while (session.state() != SessionState::Connected && t.elapsed() < 15000) {
-        pty.drain();
-        QTest::qWait(10);
-    }
-    return session.state() == SessionState::Connected;
-}
-
 void checkStalls(const StallWatch &stalls, const char *what)
 {
     qInfo("%s: worst stall of the owner thread %lld ms", what, stalls.worstMs());
@@ -77,7 +64,7 @@ private Q_SLOTS:
         QVERIFY(pty.ok());
         DeviceSession session;
         QSignalSpy errors(&session, &DeviceSession::errorOccurred);
-        QVERIFY(connectTo(session, pty));
+        QVERIFY(test::openOnPty(session, pty));
         StallWatch stalls;
         pty.write(framesThenPart(300, size_t(partial)));
         QTRY_COMPARE_WITH_TIMEOUT(session.store().totalAppended(), uint64_t(300), 5000);
@@ -98,7 +85,7 @@ private Q_SLOTS:
         RawPty pty;
         QVERIFY(pty.ok());
         DeviceSession session;
-        QVERIFY(connectTo(session, pty));
+        QVERIFY(test::openOnPty(session, pty));
         pty.write(framesThenPart(50, 0));
         QTRY_COMPARE_WITH_TIMEOUT(session.store().totalAppended(), uint64_t(50), 5000);
         StallWatch stalls;
@@ -138,7 +125,7 @@ private Q_SLOTS:
         RawPty pty;
         QVERIFY(pty.ok());
         DeviceSession session;
-        QVERIFY(connectTo(session, pty));
+        QVERIFY(test::openOnPty(session, pty));
         QSignalSpy started(&session, &DeviceSession::recordingStarted);
         QSignalSpy stopped(&session, &DeviceSession::recordingStopped);
         session.startRecording(path);

@@ -1,5 +1,6 @@
 // imudesk-cli record, export and analyze end to end against the simulator on a pseudo-terminal,
 // and a recording that hits a file size limit (ulimit -f) stops with a message and an intact file.
+#include "../common/cli_run.h"
 #include "record/capture_reader.h"
 
 #include <QFile>
@@ -17,26 +18,10 @@ using namespace imudesk;
 
 namespace {
 
-struct Result {
-    int code = -1;
-    QString out, err;
-};
-
-Result run(const QStringList &args, const QString &program = QStringLiteral(IMUDESK_CLI_PATH), int timeoutMs = 30000)
+test::CliResult run(const QStringList &args, const QString &program = QStringLiteral(IMUDESK_CLI_PATH),
+                    int timeoutMs = 30000)
 {
-    QProcess p;
-    p.start(program, args);
-    Result r;
-    if (!p.waitForFinished(timeoutMs)) {
-        p.kill();
-        p.waitForFinished();
-        r.err = QStringLiteral("timed out");
-        return r;
-    }
-    r.code = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1;
-    r.out = QString::fromUtf8(p.readAllStandardOutput());
-    r.err = QString::fromUtf8(p.readAllStandardError());
-    return r;
+    return test::runProgram(program, args, timeoutMs);
 }
 
 // Chunks of a capture and how reading ended.

@@ -78,9 +78,7 @@ private Q_SLOTS:
         QVERIFY(pty.ok());
         DeviceSession session;
         StatsProbe stats(session);
-        session.setAutoReconnect(false);
-        session.open(pty.slave(), 921600);
-        QVERIFY(waitState(session, SessionState::Connected));
+        QVERIFY(test::openOnPty(session, pty));
         StallWatch stalls;
 
         // 4000 frames; one in ten hit by a burst of 1 to 8 random bytes somewhere in it
@@ -129,9 +127,7 @@ private Q_SLOTS:
         QVERIFY(pty.ok());
         DeviceSession session;
         StatsProbe stats(session);
-        session.setAutoReconnect(false);
-        session.open(pty.slave(), 921600);
-        QVERIFY(waitState(session, SessionState::Connected));
+        QVERIFY(test::openOnPty(session, pty));
         StallWatch stalls;
         // 10 s of a frame every 100 µs (10 kHz, ten times what any module sends), written
         // in 1 ms slices of ten frames.
@@ -254,9 +250,7 @@ private Q_SLOTS:
         QVERIFY(pty.ok());
         DeviceSession session;
         StatsProbe stats(session);
-        session.setAutoReconnect(false);
-        session.open(pty.slave(), 921600);
-        QVERIFY(waitState(session, SessionState::Connected));
+        QVERIFY(test::openOnPty(session, pty));
         pty.drain();
         for (uint32_t i = 0; i < 20; ++i) {
             const auto f = hi91Frame(5000 + i);
