@@ -47,15 +47,7 @@ std::optional<std::string> CanBootloader::applicationVersion() const
 {
     if (!m_appValid)
         return std::nullopt;
-    const std::string_view marker(KbootBootloader::kVersionMarker);
-    const auto begin = m_flash.begin() + std::min<size_t>(m_options.appStart, m_flash.size());
-    const auto it = std::search(begin, m_flash.end(), marker.begin(), marker.end());
-    if (it == m_flash.end())
-        return std::nullopt;
-    std::string v;
-    for (auto p = it + long(marker.size()); p != m_flash.end() && *p != 0 && v.size() < 16; ++p)
-        v.push_back(char(*p));
-    return v;
+    return KbootBootloader::versionIn(m_flash, m_options.appStart);
 }
 
 void CanBootloader::installApplication(const std::vector<uint8_t> &image)

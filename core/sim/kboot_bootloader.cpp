@@ -70,17 +70,22 @@ std::vector<uint8_t> KbootBootloader::applicationArea() const
     return std::vector<uint8_t>(m_flash.begin() + m_options.appStart, m_flash.end());
 }
 
-std::optional<std::string> KbootBootloader::applicationVersion() const
+std::optional<std::string> KbootBootloader::versionIn(const std::vector<uint8_t> &flash, size_t from)
 {
     const std::string_view marker(kVersionMarker);
-    const auto begin = m_flash.begin() + std::min<size_t>(m_options.appStart, m_flash.size());
-    const auto it = std::search(begin, m_flash.end(), marker.begin(), marker.end());
-    if (it == m_flash.end())
+    const auto begin = flash.begin() + long(std::min(from, flash.size()));
+    const auto it = std::search(begin, flash.end(), marker.begin(), marker.end());
+    if (it == flash.end())
         return std::nullopt;
     std::string v;
-    for (auto p = it + long(marker.size()); p != m_flash.end() && *p != 0 && v.size() < 16; ++p)
+    for (auto p = it + long(marker.size()); p != flash.end() && *p != 0 && v.size() < 16; ++p)
         v.push_back(char(*p));
     return v;
+}
+
+std::optional<std::string> KbootBootloader::applicationVersion() const
+{
+    return versionIn(m_flash, m_options.appStart);
 }
 
 void KbootBootloader::start(int baud, int64_t t)

@@ -98,6 +98,9 @@ public:
 
     // A deterministic pseudo-random application image of size bytes that carries the version marker.
     static std::vector<uint8_t> makeApplication(const std::string &version, size_t size, uint64_t seed = 1);
+    // The version text after kVersionMarker in flash from offset `from` (an application image
+    // made by makeApplication), if any; the simulated CAN bootloader reads its flash with it too.
+    static std::optional<std::string> versionIn(const std::vector<uint8_t> &flash, size_t from);
 
 private:
     struct RxByte {
