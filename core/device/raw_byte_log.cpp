@@ -13,8 +13,15 @@ void RawByteLog::append(Direction direction, const QByteArray &bytes, int64_t ho
     c.seq = m_nextSeq++;
     c.hostTimeNs = hostTimeNs;
     c.direction = direction;
-    // A chunk larger than the whole log keeps only its newest bytes.
-    c.bytes = size_t(bytes.size()) > m_maxBytes ? bytes.right(qsizetype(m_maxBytes)) : bytes;
+    // A chunk larger than the whole log keeps only its newest bytes. A chunk whose allocation
+    // is much larger than its bytes (a read buffer's spare capacity) is copied to its size, so
+    // the log holds about maxBytes of memory, not maxBytes of chunks.
+    if (size_t(bytes.size()) > m_maxBytes)
+        c.bytes = QByteArray(bytes.constData() + bytes.size() - qsizetype(m_maxBytes), qsizetype(m_maxBytes));
+    else if (bytes.capacity() > bytes.size() + kSpareCapacity)
+        c.bytes = QByteArray(bytes.constData(), bytes.size());
+    else
+        c.bytes = bytes;
     m_bytes += size_t(c.bytes.size());
     m_chunks.push_back(std::move(c));
     while (m_bytes > m_maxBytes && !m_chunks.empty()) {

@@ -20,6 +20,9 @@ public:
         QByteArray bytes;
     };
 
+    // Spare capacity a held chunk may keep beyond its bytes before it is copied to size.
+    static constexpr qsizetype kSpareCapacity = 64;
+
     explicit RawByteLog(size_t maxBytes = 256 * 1024);
 
     void append(Direction direction, const QByteArray &bytes, int64_t hostTimeNs);

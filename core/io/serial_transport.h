@@ -44,6 +44,7 @@ Q_SIGNALS:
     void failed(const QString &message);
 
 private:
+    QByteArray takeAvailable();
     void onReadyRead();
     void onError();
 

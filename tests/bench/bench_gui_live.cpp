@@ -8,6 +8,10 @@
 //        soak [--seconds N] [--record DIR] (the same run, by default one hour and recording
 //        to a temporary folder: frames recorded, resident memory at start and end, GUI
 //        stalls over 100 ms).
+//        Both: [--warmup S] overrides the warm-up (by default 11 min on runs of 30 min or
+//        more, else a quarter of the run, at most 30 s); [--memory-trace] prints resident
+//        memory and the C heap (bytes in use / free inside malloc's arenas) once a minute,
+//        to tell memory the application holds from memory the allocator keeps.
 // Exit code 1 only when frames were lost (or the recording is damaged).
 #include "chart_panel.h"
 #include "device_workspace.h"
@@ -23,6 +27,7 @@
 #include <QElapsedTimer>
 #include <QTimer>
 
+#include <malloc.h>
 #include <sys/resource.h>
 
 #include <cstdio>
@@ -47,6 +52,20 @@ double currentRssMiB()
         return 0;
     const QList<QByteArray> parts = statm.readAll().split(' ');
     return parts.size() > 1 ? parts[1].toDouble() * 4096.0 / (1024.0 * 1024.0) : 0;
+}
+
+// The C heap as glibc's malloc sees it, summed over its arenas (MiB): bytes handed out
+// (arena chunks and mmapped blocks) and bytes free inside the arenas.
+struct HeapFigures {
+    double inUseMiB = 0;
+    double freeMiB = 0;
+};
+
+HeapFigures heapFigures()
+{
+    const struct mallinfo2 m = mallinfo2();
+    constexpr double kMiB = 1024.0 * 1024.0;
+    return {double(m.uordblks + m.hblkhd) / kMiB, double(m.fordblks) / kMiB};
 }
 
 // Gaps of the GUI thread's event loop: a 10 ms timer that notes how late it ran.
@@ -122,9 +141,17 @@ int main(int argc, char **argv)
     bool record = false;
 #endif
     QString recordDir;
-    for (int i = 1; i + 1 < argc; ++i) {
+    int warmupOverride = -1;
+    bool memoryTrace = false;
+    for (int i = 1; i < argc; ++i) {
+        if (QByteArray(argv[i]) == "--memory-trace")
+            memoryTrace = true;
+        if (i + 1 >= argc)
+            break;
         if (QByteArray(argv[i]) == "--seconds")
             seconds = std::max(5, QByteArray(argv[i + 1]).toInt());
+        if (QByteArray(argv[i]) == "--warmup")
+            warmupOverride = std::max(0, QByteArray(argv[i + 1]).toInt());
         if (QByteArray(argv[i]) == "--record") {
             record = true;
             recordDir = QString::fromLocal8Bit(argv[i + 1]);
@@ -199,9 +226,25 @@ int main(int argc, char **argv)
     // Warm-up, then the measured run. The charts keep 10 minutes of history, so memory is
     // flat only once that is full: a run of 30 min or more warms up for 11 min and reports
     // the growth after it; shorter runs warm up briefly and do not judge growth.
-    const bool judgeGrowth = seconds >= 1800;
-    spin((judgeGrowth ? 660 : std::min(30, seconds / 4)) * 1000);
+    const int warmupS = warmupOverride >= 0 ? warmupOverride : seconds >= 1800 ? 660 : std::min(30, seconds / 4);
+    const bool judgeGrowth = seconds >= 1800 && warmupS >= 600;
+    QElapsedTimer sinceStart;
+    sinceStart.start();
+    QTimer traceTimer;
+    if (memoryTrace) {
+        std::printf("%s: memory trace (min: resident / heap in use / heap free, MiB)\n", name);
+        traceTimer.setInterval(60000);
+        QObject::connect(&traceTimer, &QTimer::timeout, &traceTimer, [&] {
+            const HeapFigures h = heapFigures();
+            std::printf("  trace %5.1f min  %8.1f  %8.1f  %8.1f\n", double(sinceStart.elapsed()) / 60000.0,
+                        currentRssMiB(), h.inUseMiB, h.freeMiB);
+            std::fflush(stdout);
+        });
+        traceTimer.start();
+    }
+    spin(warmupS * 1000);
     const double rssStart = currentRssMiB();
+    const HeapFigures heapStart = heapFigures();
     const uint64_t decodedAtStart = session.store().totalAppended();
     StallWatch stalls;
     const double cpu0 = threadCpuSeconds();
@@ -209,6 +252,7 @@ int main(int argc, char **argv)
     wall.start();
     spin(seconds * 1000);
     const double rssEnd = currentRssMiB();
+    const HeapFigures heapEnd = heapFigures();
     const double wallS = double(wall.nsecsElapsed()) / 1e9;
     const double cpuS = threadCpuSeconds() - cpu0;
     const int refreshes = ws->chartPanel()->refreshCount() - refresh0;
@@ -280,6 +324,9 @@ int main(int argc, char **argv)
         std::printf("  %-34s %10.1f MiB -> %.1f MiB (growth judged on runs of 30 min or more, once the\n"
                     "  %-34s 10-minute chart history is full)\n",
                     "resident memory start / end", rssStart, rssEnd, "");
+    std::printf("  %-34s %10.1f MiB -> %.1f MiB in use, %.1f -> %.1f MiB free in the arenas\n",
+                "C heap after warm-up / end", heapStart.inUseMiB, heapEnd.inUseMiB, heapStart.freeMiB,
+                heapEnd.freeMiB);
     std::printf("  %-34s %12d   worst %lld ms   target 0  %s\n", "GUI-thread stalls over 100 ms", stalls.over100,
                 (long long)stalls.worstMs, stalls.over100 == 0 ? "ok" : "MISSED");
     if (record) {

@@ -161,6 +161,34 @@ private Q_SLOTS:
         QVERIFY(more[5].contains(QLatin1String("|AAAAAAAA|")));
     }
 
+    void rawLogHoldsBytesNotSpareCapacity()
+    {
+        // A read buffer with 16 KiB of spare capacity (what QIODevice::readAll() returns) is
+        // held at its size; a chunk that is already tight is shared, not copied.
+        RawByteLog log(1024);
+        QByteArray read;
+        read.reserve(16384);
+        read.append(QByteArray::fromHex("5aa54c0091"));
+        log.append(RawByteLog::Direction::Rx, read, 0);
+        const QByteArray tight = QByteArrayLiteral("OK\r\n").toLower().toUpper(); // heap, exact size
+        log.append(RawByteLog::Direction::Rx, tight, 1);
+        const std::vector<RawByteLog::Chunk> held = log.since(0);
+        QCOMPARE(held.size(), size_t(2));
+        QCOMPARE(held[0].bytes, read);
+        QVERIFY2(held[0].bytes.capacity() <= held[0].bytes.size() + RawByteLog::kSpareCapacity,
+                 qPrintable(QString::number(held[0].bytes.capacity())));
+        QCOMPARE(held[1].bytes.constData(), tight.constData());
+        // Larger than the whole log: only the newest bytes, at their size.
+        QByteArray big(3000, 'x');
+        big[2999] = 'y';
+        log.append(RawByteLog::Direction::Rx, big, 2);
+        const std::vector<RawByteLog::Chunk> last = log.since(2);
+        QCOMPARE(last.size(), size_t(1));
+        QCOMPARE(last[0].bytes.size(), 1024);
+        QCOMPARE(last[0].bytes.back(), 'y');
+        QCOMPARE(log.bytesHeld(), size_t(1024));
+    }
+
     void rawBytesPauseClearCopy()
     {
         RawByteLog log;
