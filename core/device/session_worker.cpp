@@ -612,7 +612,8 @@ SessionStats SessionWorker::counterSnapshot() const
     s.frames = fc.frames;
     s.crcErrors = fc.crcErrors;
     s.lengthErrors = fc.lengthErrors;
-    s.bytesSkipped = fc.bytesSkipped;
+    // Bytes that were neither a frame nor a reply or NMEA line (a command's OK is not damage).
+    s.bytesSkipped = fc.bytesSkipped > dc.lineBytes ? fc.bytesSkipped - dc.lineBytes : 0;
     s.nmeaSentences = dc.nmeaSentences;
     s.nmeaErrors = dc.nmeaErrors;
     s.payloadErrors = m_payloadErrors;

@@ -556,6 +556,12 @@ private Q_SLOTS:
             QCOMPARE(end.framesLost - start.framesLost, uint64_t(0));
         QCOMPARE(end.framesLostByType.at("HI91"), end.framesLost);
         QCOMPARE(end.crcErrors, uint64_t(0));
+        // A command's reply amid the frames is text, not skipped bytes.
+        QCOMPARE(send(session, QStringLiteral("LOG VERSION")).status, Status::Ok);
+        const device::SessionStats afterReply = stats.next();
+        QVERIFY(afterReply.frames > end.frames);
+        if (simulatorDropped(simulator) == droppedAtStart)
+            QCOMPARE(afterReply.bytesSkipped, start.bytesSkipped);
         // What arrived is held at its size: the raw-byte log's 256 KiB bound is a bound on
         // memory (read buffers with 16 KiB of spare capacity each once made it 200 MB).
         qsizetype allocated = 0, bytes = 0;

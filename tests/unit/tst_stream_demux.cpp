@@ -67,6 +67,24 @@ private Q_SLOTS:
         QCOMPARE(ev.size(), size_t(1));
         QCOMPARE(ev[0].text, std::string("OK"));
         QCOMPARE(d.counters().garbageBytes, uint64_t(4));
+        QCOMPARE(d.counters().lineBytes, uint64_t(4)); // "OK\r\n"
+        QCOMPARE(d.frameCounters().bytesSkipped, uint64_t(8));
+    }
+
+    void replyBytesAreNotDamage()
+    {
+        // A reply with CR CR LF, an NMEA sentence, junk and a line cut by the end: of what the
+        // frame decoder skips, the reply and the sentence are text (lineBytes), the rest is
+        // garbage, and together they are everything it skipped.
+        const QByteArray nmea = "$GPZDA,160012.71,11,03,2004,-1,00*7D\r\n";
+        QByteArray s = "OK\r\r\n" + nmea + QByteArray::fromHex("00FF") + "half";
+        StreamDemux d;
+        d.endQuarantine();
+        std::vector<StreamEvent> ev = d.feed(reinterpret_cast<const uint8_t *>(s.constData()), size_t(s.size()));
+        d.finish(ev);
+        QCOMPARE(d.counters().lineBytes, uint64_t(5 + nmea.size() + 4)); // "half" ends with the stream
+        QCOMPARE(d.counters().garbageBytes, uint64_t(2));
+        QCOMPARE(d.counters().lineBytes + d.counters().garbageBytes, d.frameCounters().bytesSkipped);
     }
 
     void overlongLineDiscarded()

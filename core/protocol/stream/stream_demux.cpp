@@ -37,7 +37,7 @@ void StreamDemux::finish(std::vector<StreamEvent> &out)
     Router r(*this, out);
     m_decoder.finish(r);
     if (!m_line.empty())
-        endLine(out);
+        endLine(out, 0);
 }
 
 void StreamDemux::flushPending(std::vector<StreamEvent> &out)
@@ -50,6 +50,7 @@ void StreamDemux::reset()
 {
     m_decoder.reset();
     m_line.clear();
+    m_lineCr = 0;
     m_lineOverflow = false;
     m_quarantined = true;
 }
@@ -65,12 +66,14 @@ void StreamDemux::dropQuarantinedLine()
     ++m_counters.quarantinedLines;
     m_counters.garbageBytes += m_line.size();
     m_line.clear();
+    m_lineCr = 0;
 }
 
 void StreamDemux::dropPartialLine()
 {
     m_counters.garbageBytes += m_line.size();
     m_line.clear();
+    m_lineCr = 0;
     m_lineOverflow = false;
 }
 
@@ -79,13 +82,15 @@ void StreamDemux::textBytes(const uint8_t *p, size_t n, std::vector<StreamEvent>
     for (size_t i = 0; i < n; ++i) {
         const uint8_t c = p[i];
         if (c == '\n') {
-            endLine(out);
+            endLine(out, 1);
         } else if (c == '\r') {
             // ignored: lines end at LF; a CR alone never ends a reply
+            ++m_lineCr;
         } else if (c == '$' && !m_line.empty()) {
             // A new sentence start aborts a partial one (NMEA) or unterminated junk.
             m_counters.garbageBytes += m_line.size();
             m_line.clear();
+            m_lineCr = 0;
             m_lineOverflow = false;
             m_line.push_back('$');
         } else if (c >= 0x20 && c < 0x7F) {
@@ -97,13 +102,16 @@ void StreamDemux::textBytes(const uint8_t *p, size_t n, std::vector<StreamEvent>
             // Not text: whatever was collected belongs to binary garbage.
             m_counters.garbageBytes += m_line.size() + 1;
             m_line.clear();
+            m_lineCr = 0;
             m_lineOverflow = false;
         }
     }
 }
 
-void StreamDemux::endLine(std::vector<StreamEvent> &out)
+void StreamDemux::endLine(std::vector<StreamEvent> &out, size_t terminator)
 {
+    const size_t crs = m_lineCr;
+    m_lineCr = 0;
     if (m_lineOverflow) {
         m_counters.garbageBytes += m_line.size();
         m_line.clear();
@@ -134,6 +142,7 @@ void StreamDemux::endLine(std::vector<StreamEvent> &out)
         e.kind = StreamEvent::Kind::Line;
         ++m_counters.lines;
     }
+    m_counters.lineBytes += m_line.size() + crs + terminator;
     e.text = std::move(m_line);
     m_line.clear();
     out.push_back(std::move(e));

@@ -28,6 +28,9 @@ public:
         uint64_t nmeaErrors = 0;
         uint64_t lines = 0;
         uint64_t garbageBytes = 0; // skipped bytes that were not part of any line or sentence
+        // Bytes of the lines and sentences handed out (replies, NMEA), their CR and LF included:
+        // the frame decoder counts them as skipped, but they are not damage.
+        uint64_t lineBytes = 0;
         uint64_t quarantinedLines = 0; // lines dropped because they may have been frame bytes
     };
 
@@ -61,12 +64,14 @@ public:
 private:
     class Router;
     void textBytes(const uint8_t *p, size_t n, std::vector<StreamEvent> &out);
-    void endLine(std::vector<StreamEvent> &out);
+    // terminator: the LF that ended the line (1), or none at the end of the stream (0).
+    void endLine(std::vector<StreamEvent> &out, size_t terminator);
     void dropPartialLine();
     void dropQuarantinedLine();
 
     hipnuc::FrameDecoder m_decoder;
     std::string m_line;
+    size_t m_lineCr = 0; // CRs received within m_line (ignored, but part of its bytes)
     bool m_lineOverflow = false;
     bool m_quarantined = true;
     Counters m_counters;
