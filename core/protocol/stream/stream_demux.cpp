@@ -64,9 +64,7 @@ void StreamDemux::resetCounters()
 void StreamDemux::dropQuarantinedLine()
 {
     ++m_counters.quarantinedLines;
-    m_counters.garbageBytes += m_line.size();
-    m_line.clear();
-    m_lineCr = 0;
+    dropPartialLine();
 }
 
 void StreamDemux::dropPartialLine()
@@ -88,10 +86,7 @@ void StreamDemux::textBytes(const uint8_t *p, size_t n, std::vector<StreamEvent>
             ++m_lineCr;
         } else if (c == '$' && !m_line.empty()) {
             // A new sentence start aborts a partial one (NMEA) or unterminated junk.
-            m_counters.garbageBytes += m_line.size();
-            m_line.clear();
-            m_lineCr = 0;
-            m_lineOverflow = false;
+            dropPartialLine();
             m_line.push_back('$');
         } else if (c >= 0x20 && c < 0x7F) {
             if (m_line.size() < kMaxLine)
@@ -99,11 +94,9 @@ void StreamDemux::textBytes(const uint8_t *p, size_t n, std::vector<StreamEvent>
             else
                 m_lineOverflow = true;
         } else {
-            // Not text: whatever was collected belongs to binary garbage.
-            m_counters.garbageBytes += m_line.size() + 1;
-            m_line.clear();
-            m_lineCr = 0;
-            m_lineOverflow = false;
+            // Not text: it and whatever was collected belong to binary garbage.
+            ++m_counters.garbageBytes;
+            dropPartialLine();
         }
     }
 }
@@ -113,9 +106,7 @@ void StreamDemux::endLine(std::vector<StreamEvent> &out, size_t terminator)
     const size_t crs = m_lineCr;
     m_lineCr = 0;
     if (m_lineOverflow) {
-        m_counters.garbageBytes += m_line.size();
-        m_line.clear();
-        m_lineOverflow = false;
+        dropPartialLine();
         return;
     }
     if (m_line.empty())
