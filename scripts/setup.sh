@@ -1,17 +1,20 @@
 #!/usr/bin/env bash
-# ImuDesk set-up. Run as root (or through sudo) on Debian 12; safe to run again.
-#   scripts/setup.sh demo   install packages, build a release build, open imudesk on a simulated HI14 (--demo)
-#   scripts/setup.sh test   install packages, build, run the whole test suite headless and the benchmarks,
-#                           then the whole test suite again in an AddressSanitizer + UBSan build,
-#                           then every fuzz target (clang, libFuzzer) for FUZZ_SECONDS (default 20)
+# ImuDesk set-up on Debian 12; safe to run again. Run it as root (a container, a new VM: no sudo
+# needed) or as a user with sudo rights: then only apt-get runs through sudo, and the build is yours.
+#   scripts/setup.sh demo     install packages, build a release build, open imudesk on a simulated HI14 (--demo)
+#   scripts/setup.sh test     install packages, build, prove the package list in a fresh Debian 12 root
+#                             (scripts/check-fresh-debian.sh), run the whole test suite headless and the
+#                             benchmarks, then the whole test suite again in an AddressSanitizer + UBSan
+#                             build, then every fuzz target (clang, libFuzzer) for FUZZ_SECONDS (default 20)
+#   scripts/setup.sh install  only install the Debian packages (the fresh-root check runs this inside its root)
 set -euo pipefail
 
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 root="$(cd "$here/.." && pwd)"
 mode="${1:-}"
 case "$mode" in
-  demo|test) ;;
-  *) echo "usage: $0 demo|test" >&2; exit 2 ;;
+  demo|test|install) ;;
+  *) echo "usage: $0 demo|test|install" >&2; exit 2 ;;
 esac
 
 jobs="$(nproc 2>/dev/null || echo 2)"
@@ -24,7 +27,14 @@ install_packages() {
   done
   if ((${#missing[@]})); then
     local sudo=()
-    [ "$(id -u)" -eq 0 ] || sudo=(sudo)
+    if [ "$(id -u)" -ne 0 ]; then
+      if ! command -v sudo >/dev/null; then
+        echo "!! missing packages: ${missing[*]}" >&2
+        echo "!! run this as root (there is no sudo here), or install sudo and give this user sudo rights" >&2
+        exit 1
+      fi
+      sudo=(sudo)
+    fi
     echo "== installing ${missing[*]}"
     "${sudo[@]}" apt-get update -q
     DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get install -y -q --no-install-recommends "${missing[@]}"
@@ -40,6 +50,7 @@ configure_and_build() { # dir, build type, extra cmake args...
 }
 
 install_packages
+[ "$mode" = install ] && exit 0
 
 if [ "$mode" = demo ]; then
   configure_and_build "$root/build/release" Release -DIMUDESK_BUILD_TESTS=OFF
@@ -53,6 +64,16 @@ fi
 # test
 export QT_QPA_PLATFORM=offscreen
 configure_and_build "$root/build/test" Release -DIMUDESK_BUILD_TESTS=ON -DIMUDESK_BUILD_BENCH=ON
+echo "== fresh Debian 12 root: the package list alone configures the project and runs the app and CLI"
+# Fails when a build, test or runtime dependency is missing from scripts/debian-packages.txt (the
+# host may have it installed by hand), naming it. Then the check's own safety test: a run killed
+# during its package install leaves the host's /dev untouched and its root removable.
+if [ -n "${IMUDESK_IN_FRESH_ROOT:-}" ]; then
+  echo "   skipped: this run is itself inside the fresh root check's root"
+else
+  "$here/check-fresh-debian.sh" --build "$root/build/test"
+  "$here/test-check-fresh-debian.sh"
+fi
 echo "== test suite"
 # A test that fails is run once more: only a test that fails twice stops the run (the pty and
 # timing tests share two cores with everything else on a CI machine).

@@ -1,0 +1,340 @@
+#!/usr/bin/env bash
+# Proves that scripts/debian-packages.txt is complete: in a fresh Debian 12 minbase root, with only
+# what `scripts/setup.sh install` installs there (the same function as the README's two commands),
+# the project configures with tests and benchmarks on, the sanitizer and fuzzer toolchains link, and
+# the application (imudesk --demo --screenshot) and the CLI (simulate --pty + probe) run offscreen.
+#
+#   scripts/check-fresh-debian.sh [--build DIR]   DIR: a built tree whose binaries are installed into
+#                                                 the root (default build/test; without one the two
+#                                                 binaries are built inside the root, which is slower)
+#   scripts/check-fresh-debian.sh --clean         only remove roots left behind by killed runs
+#   scripts/check-fresh-debian.sh --readme demo|test
+#                                                 instead of the steps, run the README's command
+#                                                 (scripts/setup.sh demo|test) as root in the fresh
+#                                                 root, as a new user would (test: about an hour)
+#
+# Needs root (mmdebstrap's root mode, mount namespaces) and Debian's package mirror.
+# Environment: IMUDESK_FRESH_CACHE (base tarball and .deb cache, default ~/.cache/imudesk/fresh-debian),
+# IMUDESK_FRESH_WORKDIR (where roots are made, default /var/tmp), IMUDESK_DEBIAN_MIRROR,
+# IMUDESK_DEBIAN_SECURITY, IMUDESK_FRESH_PACKAGE_LIST (another package list, for testing this check).
+#
+# Safety: every mount is made inside a private mount and PID namespace (unshare); the root gets its
+# own proc, a read-only sysfs and a tmpfs /dev holding only null, zero, full, random, urandom, tty and
+# a new devpts instance. Nothing of the host's /dev or /sys is ever bound into it. The root is
+# removed with `rm -rf --one-file-system` only after the namespace is gone, and only when the host
+# sees no mount below it.
+set -euo pipefail
+
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+src="$(cd "$here/.." && pwd)"
+cache="${IMUDESK_FRESH_CACHE:-${XDG_CACHE_HOME:-$HOME/.cache}/imudesk/fresh-debian}"
+workbase="${IMUDESK_FRESH_WORKDIR:-/var/tmp}"
+mirror="${IMUDESK_DEBIAN_MIRROR:-http://deb.debian.org/debian}"
+security="${IMUDESK_DEBIAN_SECURITY:-http://deb.debian.org/debian-security}"
+suite=bookworm
+prefix=imudesk-fresh-root.
+tarball="$cache/debian12-minbase.tar"
+
+say() { printf '%s\n' "$*"; }
+now() { date +%s; }
+
+# ---------------------------------------------------------------------------------------------
+# Inside the namespace: this script again, as `--inside ROOTFS WORK`. Runs every step in the root
+# and prints one line per step; the first failing step ends it with status 1.
+# ---------------------------------------------------------------------------------------------
+if [ "${1:-}" = --inside ]; then
+  rootfs="$2" work="$3" readme="${4:-}"
+  set +e
+  step_start=0
+  begin() { step_name="$1"; step_start=$(now); say "   .. $step_name"; }
+  pass() { say "   ok $step_name ($(( $(now) - step_start )) s)"; }
+  failstep() {
+    say "   FAIL $step_name: $1"
+    [ -n "${2:-}" ] && [ -f "$2" ] && { say "   --- last lines of $(basename "$2"):"; tail -n 25 "$2" | sed 's/^/   | /'; }
+    exit 1
+  }
+  inroot() { # runs a command in the root with a clean environment
+    chroot "$rootfs" /usr/bin/env -i HOME=/root PATH=/usr/local/sbin:/usr/local/bin:/usr/sbin:/usr/bin:/sbin:/bin \
+      LANG=C.UTF-8 TERM=dumb DEBIAN_FRONTEND=noninteractive "$@"
+  }
+
+  begin "mount a private /dev (tmpfs), proc and read-only sysfs in the root"
+  mount -t tmpfs -o mode=0755,size=16m,nosuid,noexec tmpfs "$rootfs/dev" || failstep "tmpfs /dev"
+  for node in "null c 1 3" "zero c 1 5" "full c 1 7" "random c 1 8" "urandom c 1 9" "tty c 5 0"; do
+    set -- $node
+    mknod -m 0666 "$rootfs/dev/$1" "$2" "$3" "$4" || failstep "mknod $1"
+  done
+  mkdir -m 0755 "$rootfs/dev/pts" && mkdir -m 1777 "$rootfs/dev/shm"
+  mount -t devpts -o newinstance,ptmxmode=0666,mode=0620 devpts "$rootfs/dev/pts" || failstep "devpts"
+  ln -s pts/ptmx "$rootfs/dev/ptmx"
+  ln -s /proc/self/fd "$rootfs/dev/fd"
+  ln -s /proc/self/fd/0 "$rootfs/dev/stdin"; ln -s /proc/self/fd/1 "$rootfs/dev/stdout"
+  ln -s /proc/self/fd/2 "$rootfs/dev/stderr"
+  mount -t proc -o nosuid,nodev,noexec proc "$rootfs/proc" || failstep "proc"
+  mount -t sysfs -o ro,nosuid,nodev,noexec sysfs "$rootfs/sys" || failstep "sysfs"
+  mkdir -p "$cache/archives/partial"
+  mount --bind "$cache/archives" "$rootfs/var/cache/apt/archives" || failstep "package cache"
+  cp /etc/resolv.conf "$rootfs/etc/resolv.conf" 2>/dev/null
+  pass
+
+  if [ -n "$readme" ]; then
+    begin "the README's command as root: scripts/setup.sh $readme (log: $work/readme-$readme.log)"
+    inroot env IMUDESK_IN_FRESH_ROOT=1 bash -c "cd /src && ./scripts/setup.sh $readme" < /dev/null \
+      > "$work/readme-$readme.log" 2>&1
+    rc=$?
+    cp "$work/readme-$readme.log" "$cache/readme-$readme.log"
+    say "      exit status $rc; the whole output is kept in $cache/readme-$readme.log"
+    tail -n 15 "$work/readme-$readme.log" | sed 's/^/   | /'
+    [ "$rc" -eq 0 ] && pass || failstep "scripts/setup.sh $readme ended with $rc"
+    exit 0
+  fi
+
+  begin "install the packages: scripts/setup.sh install (as the README's commands do)"
+  say "      (marker: package install running)"
+  inroot /src/scripts/setup.sh install > "$work/install.log" 2>&1 \
+    || failstep "setup.sh install failed (apt could not install the list: see its output)" "$work/install.log"
+  inroot apt-get autoclean -q > /dev/null 2>&1 # keep only current .debs in the cache
+  pass
+
+  begin "configure the project with tests and benchmarks (cmake -G Ninja, Release)"
+  if ! inroot cmake -S /src -B /build -G Ninja -DCMAKE_BUILD_TYPE=Release \
+       -DIMUDESK_BUILD_TESTS=ON -DIMUDESK_BUILD_BENCH=ON > "$work/configure.log" 2>&1; then
+    say "   FAIL $step_name"
+    # The fatal lines (CMake's "-- Could NOT find" status lines are optional packages).
+    grep -vE '^-- ' "$work/configure.log" \
+      | grep -E 'CMake Error|could not be found|Could not find|Could NOT find|Failed to find' \
+      | sed 's/^ */   | /' | head -n 12
+    # Name the Debian package behind each CMake package it could not find.
+    mapfile -t names < <(grep -vE '^-- ' "$work/configure.log" \
+                         | grep -oE 'because dependency [A-Za-z0-9_]+|provided by "[A-Za-z0-9_]+"|Failed to find required Qt component "[A-Za-z0-9_]+"' \
+                         | sed -E 's/^because dependency //; s/.*"([A-Za-z0-9_]+)"$/\1/' \
+                         | sed -E '/^(Qt6|Eigen)/!s/^/Qt6/' | sort -u)
+    list="$rootfs/src/scripts/debian-packages.txt"
+    for name in "${names[@]}"; do
+      candidates=()
+      case "$name" in
+        Qt6*) low="$(tr '[:upper:]' '[:lower:]' <<< "${name#Qt6}")"; candidates=("qt6-${low}-dev" "libqt6${low}6-dev") ;;
+        Eigen3) candidates=(libeigen3-dev) ;;
+      esac
+      pkg="" listed=""
+      for c in "${candidates[@]}"; do
+        if grep -Ev '^\s*(#|$)' "$list" | tr -d ' \t' | grep -qx "$c"; then listed="$c"; break; fi
+      done
+      if [ -n "$listed" ]; then
+        say "   missing: CMake package $name; its Debian package $listed is in the list, so one of its own dependencies named here is not"
+        continue
+      fi
+      for c in "${candidates[@]}"; do
+        if inroot apt-cache show "$c" > /dev/null 2>&1; then pkg="$c"; break; fi
+      done
+      if [ -n "$pkg" ]; then
+        say "   missing: CMake package $name -> add the Debian package $pkg to scripts/debian-packages.txt"
+      else
+        say "   missing: CMake package $name (no Debian package of that name; apt-file search ${name}Config.cmake tells)"
+      fi
+    done
+    exit 1
+  fi
+  pass
+
+  begin "toolchains of the test command: g++ with ASan+UBSan, clang++ with libFuzzer"
+  cat > "$rootfs/tmp/probe.cpp" <<'EOF'
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+#ifdef FUZZ
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* d, size_t n) { std::vector<uint8_t> v(d, d + n); return v.empty() ? 0 : 0; }
+#else
+int main() { std::vector<int> v(4, 1); return v[3] - 1; }
+#endif
+EOF
+  inroot g++ -std=c++20 -fsanitize=address,undefined /tmp/probe.cpp -o /tmp/probe-asan > "$work/tools.log" 2>&1 \
+    && inroot /tmp/probe-asan >> "$work/tools.log" 2>&1 \
+    || failstep "g++ -fsanitize=address,undefined does not build or run (libasan, libubsan)" "$work/tools.log"
+  inroot clang++ -DFUZZ -fsanitize=fuzzer,address,undefined /tmp/probe.cpp -o /tmp/probe-fuzz >> "$work/tools.log" 2>&1 \
+    && inroot /tmp/probe-fuzz -runs=50 >> "$work/tools.log" 2>&1 \
+    || failstep "clang++ -fsanitize=fuzzer does not build or run (clang, libclang-rt-14-dev)" "$work/tools.log"
+  pass
+
+  if [ ! -x "$rootfs/opt/imudesk/bin/imudesk" ]; then
+    begin "build imudesk and imudesk-cli in the root (no host build was given)"
+    inroot cmake --build /build -j "$(nproc)" --target imudesk imudesk-cli > "$work/build.log" 2>&1 \
+      && inroot cmake --install /build --prefix /opt/imudesk > /dev/null 2>&1 \
+      || failstep "build in the root failed" "$work/build.log"
+    pass
+  fi
+
+  begin "every shared library of imudesk and imudesk-cli is there"
+  inroot ldd /opt/imudesk/bin/imudesk /opt/imudesk/bin/imudesk-cli > "$work/ldd.log" 2>&1
+  if grep -q 'not found' "$work/ldd.log"; then
+    grep 'not found' "$work/ldd.log" | sort -u | sed 's/^/   | /'
+    failstep "shared libraries missing (their Debian packages are missing from the list)"
+  fi
+  pass
+
+  begin "imudesk --demo --screenshot offscreen"
+  inroot env QT_QPA_PLATFORM=offscreen XDG_CONFIG_HOME=/tmp/config timeout 120 \
+    /opt/imudesk/bin/imudesk --demo --screenshot /tmp/demo.png --after 2 > "$work/demo.log" 2>&1 \
+    || failstep "imudesk did not run (a Qt plugin or runtime package missing?)" "$work/demo.log"
+  magic="$(head -c 8 "$rootfs/tmp/demo.png" 2>/dev/null | od -An -tx1 | tr -d ' \n')"
+  [ "$magic" = 89504e470d0a1a0a ] || failstep "no PNG written" "$work/demo.log"
+  say "      $(stat -c %s "$rootfs/tmp/demo.png") bytes of PNG"
+  pass
+
+  begin "imudesk-cli simulate --pty, then imudesk-cli probe on that pty"
+  inroot bash -c '
+    cli=/opt/imudesk/bin/imudesk-cli
+    "$cli" simulate --pty > /tmp/sim.out 2>&1 &
+    sim=$!
+    pty=""
+    for _ in $(seq 100); do
+      pty="$(sed -n "s/^pty: *//p" /tmp/sim.out | head -n 1)"
+      [ -n "$pty" ] && break
+      sleep 0.1
+    done
+    [ -n "$pty" ] || { echo "the simulator printed no pty"; cat /tmp/sim.out; kill $sim; exit 1; }
+    timeout 60 "$cli" probe "$pty" --json
+    rc=$?
+    kill $sim 2>/dev/null; wait $sim 2>/dev/null
+    exit $rc' > "$work/probe.log" 2>&1 \
+    || failstep "simulate + probe failed" "$work/probe.log"
+  grep -q '"identified": *true' "$work/probe.log" || failstep "probe did not identify the simulated module" "$work/probe.log"
+  say "      $(grep -oE '"product": *"[^"]*"' "$work/probe.log" | head -n 1), $(grep -oE '"firmware": *"[^"]*"' "$work/probe.log" | head -n 1)"
+  pass
+  exit 0
+fi
+
+# ---------------------------------------------------------------------------------------------
+# Outside: cache the base, make the root, run the steps in a private namespace, remove the root.
+# ---------------------------------------------------------------------------------------------
+mounts_below() { # prints the host's mount points below $1 (none expected: the mounts are private)
+  awk -v p="$1/" 'substr($5, 1, length(p)) == p { print $5 }' /proc/self/mountinfo
+}
+
+remove_root() { # removes a root once nothing is mounted below it
+  local dir="$1"
+  if [ -n "$(mounts_below "$dir")" ]; then
+    say "!! not removing $dir: the host sees mounts below it:" >&2
+    mounts_below "$dir" >&2
+    return 1
+  fi
+  rm -rf --one-file-system "$dir"
+}
+
+clean_stale() { # roots of runs that were killed: their owner process is gone
+  local dir pid
+  for dir in "$workbase/$prefix"*; do
+    [ -d "$dir" ] || continue
+    pid="$(cat "$dir/owner.pid" 2>/dev/null || true)"
+    if [ -n "$pid" ] && kill -0 "$pid" 2>/dev/null; then continue; fi
+    say "   removing the root of a run that did not finish: $dir"
+    remove_root "$dir" || true
+  done
+}
+
+if [ "$(id -u)" -ne 0 ]; then
+  say "check-fresh-debian: needs root (mmdebstrap --mode=root, mount namespaces); run it as root or with sudo" >&2
+  exit 1
+fi
+
+build="$src/build/test"
+readme=""
+case "${1:-}" in
+  --clean) clean_stale; exit 0 ;;
+  --build) build="$2" ;;
+  --readme) readme="$2"; build=/nonexistent
+            case "$readme" in demo|test) ;; *) say "usage: $0 --readme demo|test" >&2; exit 2 ;; esac ;;
+  "") ;;
+  *) say "usage: $0 [--build DIR] | --clean" >&2; exit 2 ;;
+esac
+
+t0=$(now)
+say "== fresh Debian 12 root check"
+clean_stale
+if ! command -v mmdebstrap > /dev/null; then
+  say "   installing mmdebstrap (Debian package) for this check"
+  apt-get update -q > /dev/null && DEBIAN_FRONTEND=noninteractive apt-get install -y -q --no-install-recommends mmdebstrap > /dev/null
+fi
+
+mkdir -p "$cache/archives/partial"
+if [ ! -s "$tarball" ] || [ -n "$(find "$tarball" -mtime +7 2>/dev/null)" ]; then
+  s=$(now)
+  say "   .. base: mmdebstrap --variant=minbase $suite (cached in $cache, renewed weekly)"
+  mmdebstrap --quiet --variant=minbase --mode=root --format=tar "$suite" "$tarball.part" \
+    "deb $mirror $suite main" "deb $mirror $suite-updates main" "deb $security $suite-security main" \
+    > "$cache/mmdebstrap.log" 2>&1 </dev/null \
+    || { tail -n 20 "$cache/mmdebstrap.log"; say "VERDICT: FAIL (mmdebstrap could not make the base root; is the mirror reachable?)"; exit 1; }
+  mv "$tarball.part" "$tarball"
+  say "   ok base ($(( $(now) - s )) s)"
+else
+  say "   ok base: cached $tarball"
+fi
+
+mkdir -p "$workbase"
+work="$(mktemp -d "$workbase/${prefix}XXXXXX")"
+echo $$ > "$work/owner.pid"
+rootfs="$work/root"
+mkdir "$rootfs"
+say "   root: $rootfs"
+ns_pid=""
+finish() {
+  local rc=$?
+  set +e
+  if [ -n "$ns_pid" ] && kill -0 "$ns_pid" 2>/dev/null; then kill -KILL "$ns_pid" 2>/dev/null; fi
+  [ -n "$ns_pid" ] && wait "$ns_pid" 2>/dev/null
+  # The namespace's processes die with it; wait until none has its root inside ours any more.
+  local p r
+  for _ in $(seq 40); do
+    r=""
+    for p in /proc/[0-9]*; do
+      case "$(readlink "$p/root" 2>/dev/null)" in "$rootfs"|"$rootfs"/*) r=1; break ;; esac
+    done
+    [ -z "$r" ] && break
+    sleep 0.25
+  done
+  mkdir -p "$cache/last-run" && rm -f "$cache/last-run/"*.log && cp "$work"/*.log "$cache/last-run/" 2>/dev/null
+  remove_root "$work" || say "!! left $work in place (see above)" >&2
+  exit "$rc"
+}
+trap finish EXIT
+trap 'exit 130' INT HUP
+trap 'exit 143' TERM
+
+s=$(now)
+tar -xpf "$tarball" --numeric-owner -C "$rootfs"
+# The sources as the repository has them (tracked and new files, no build trees).
+if git -C "$src" rev-parse --git-dir > /dev/null 2>&1; then
+  mkdir "$rootfs/src"
+  git -C "$src" ls-files -z --cached --others --exclude-standard \
+    | tar -C "$src" --null --no-recursion --ignore-failed-read -T - -cf - 2>/dev/null | tar -xf - -C "$rootfs/src"
+else
+  mkdir "$rootfs/src"
+  tar -C "$src" --exclude='./build*' --exclude=./.git -cf - . | tar -xf - -C "$rootfs/src"
+fi
+if [ -n "${IMUDESK_FRESH_PACKAGE_LIST:-}" ]; then
+  cp "$IMUDESK_FRESH_PACKAGE_LIST" "$rootfs/src/scripts/debian-packages.txt"
+  say "   (package list replaced by $IMUDESK_FRESH_PACKAGE_LIST)"
+fi
+if [ -n "$readme" ]; then
+  say "   ok root unpacked with the sources ($(( $(now) - s )) s)"
+elif [ -x "$build/app/gui/imudesk" ] && [ -x "$build/app/cli/imudesk-cli" ]; then
+  cmake --install "$build" --prefix "$rootfs/opt/imudesk" > /dev/null
+  say "   ok root unpacked, sources and the binaries of $build installed in it ($(( $(now) - s )) s)"
+else
+  say "   ok root unpacked with the sources ($(( $(now) - s )) s); no built binaries in $build: building them in the root"
+fi
+
+export cache
+unshare --mount --pid --fork --kill-child --propagation private -- \
+  bash "$here/check-fresh-debian.sh" --inside "$rootfs" "$work" "$readme" &
+ns_pid=$!
+rc=0
+wait "$ns_pid" || rc=$?
+ns_pid=""
+if [ "$rc" -eq 0 ]; then
+  say "VERDICT: PASS: a fresh Debian 12 root with scripts/debian-packages.txt alone configures, runs imudesk and imudesk-cli ($(( $(now) - t0 )) s)"
+else
+  say "VERDICT: FAIL: the fresh Debian 12 root check failed at the step above ($(( $(now) - t0 )) s; logs in $cache/last-run)"
+  say "         a package the host has by hand is missing from scripts/debian-packages.txt, or a step broke"
+fi
+exit "$rc"
