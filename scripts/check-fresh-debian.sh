@@ -85,6 +85,11 @@ if [ "${1:-}" = --inside ]; then
     cp "$work/readme-$readme.log" "$cache/readme-$readme.log"
     say "      exit status $rc; the whole output is kept in $cache/readme-$readme.log"
     tail -n 15 "$work/readme-$readme.log" | sed 's/^/   | /'
+    if [ "$readme" = demo ] && [ "$rc" -eq 1 ] && grep -q '^No display found' "$work/readme-$readme.log"; then
+      say "      the demo command built the app and reached the window step; the root has no display, and it says so"
+      pass
+      exit 0
+    fi
     [ "$rc" -eq 0 ] && pass || failstep "scripts/setup.sh $readme ended with $rc"
     exit 0
   fi
