@@ -1921,7 +1921,7 @@
         <translation>罗盘</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+4" />
         <source>Compass settings</source>
         <translation>罗盘设置</translation>
     </message>
@@ -1976,12 +1976,12 @@
         <translation>CAN 帧</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+6" />
         <source>CAN configuration</source>
         <translation>CAN 配置</translation>
     </message>
     <message>
-        <location line="+9" />
+        <location line="+10" />
         <source>%1 cannot be read. Check that the file exists and that you may read it.</source>
         <translation>无法读取 %1。请检查文件是否存在，以及您是否有读取权限。</translation>
     </message>
@@ -4443,7 +4443,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>%1，波特率 %2（已重连）</translation>
     </message>
     <message>
-        <location line="+143" />
+        <location line="+144" />
         <source>Bytes keep arriving on %1 but none of them form a frame: the device probably runs at another baud rate now. Disconnect and connect again with the baud rate set to Auto.</source>
         <translation>%1 上持续收到字节，但无法组成任何数据帧：设备可能已改用其他波特率。请断开连接，并将波特率设为“自动”后重新连接。</translation>
     </message>
@@ -4512,7 +4512,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>无法打开 %1：%2</translation>
     </message>
     <message>
-        <location line="+129" />
+        <location line="+147" />
         <source>The connection to %1 was lost (%2). Check the cable; everything received so far is kept.</source>
         <translation>与 %1 的连接已断开（%2）。请检查线缆；已接收的数据都会保留。</translation>
     </message>
@@ -5551,7 +5551,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::AttitudeWidget</name>
     <message>
-        <location filename="../ui/attitude_widget.cpp" line="+245" />
+        <location filename="../ui/attitude_widget.cpp" line="+254" />
         <source>X</source>
         <translation>X</translation>
     </message>
@@ -5587,12 +5587,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
     <message>
         <location line="+1" />
-        <location line="+351" />
+        <location line="+353" />
         <source>ENU 3-1-2</source>
         <translation>ENU 3-1-2</translation>
     </message>
     <message>
-        <location line="-349" />
+        <location line="-351" />
         <source>N (x)</source>
         <translation>N (x)</translation>
     </message>
@@ -5608,12 +5608,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
     <message>
         <location line="+1" />
-        <location line="+347" />
+        <location line="+349" />
         <source>NED 3-2-1</source>
         <translation>NED 3-2-1</translation>
     </message>
     <message>
-        <location line="-345" />
+        <location line="-347" />
         <source>No attitude yet</source>
         <translation>尚无姿态数据</translation>
     </message>
@@ -5643,7 +5643,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>拖动以旋转视图，双击以复位</translation>
     </message>
     <message>
-        <location line="+351" />
+        <location line="+353" />
         <source>Reset view</source>
         <translation>复位视图</translation>
     </message>
@@ -6340,7 +6340,47 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::ChartPanel</name>
     <message>
-        <location filename="../ui/chart_panel.cpp" line="+66" />
+        <location filename="../ui/chart_panel.cpp" line="+133" />
+        <source>Charts</source>
+        <translation>图表</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Choose the charts to show; they share the area</source>
+        <translation>选择要显示的图表；它们共享绘图区域</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>&amp;Window:</source>
+        <translation>时间窗(&amp;W)：</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Time span shown by every chart</source>
+        <translation>每个图表显示的时间跨度</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Run</source>
+        <translation>运行</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Pause</source>
+        <translation>暂停</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Follow the newest data again (Pause key)</source>
+        <translation>重新跟随最新数据（Pause 键）</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Freeze every chart; the data keeps being recorded (Pause key)</source>
+        <translation>冻结所有图表；数据仍在继续记录（Pause 键）</translation>
+    </message>
+    <message>
+        <location line="+1" />
         <source>&amp;Time axis:</source>
         <translation>时间轴(&amp;T)：</translation>
     </message>
@@ -6359,11 +6399,31 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <source>Device clock: the module's own timestamps, where lost samples show as gaps. Host arrival time: when the samples reached this computer.</source>
         <translation>设备时钟：模块自身的时间戳，丢失的采样显示为间断。主机接收时间：采样到达本计算机的时间。</translation>
     </message>
+    <message>
+        <location line="+2" />
+        <source>Cursor</source>
+        <translation>游标</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>A crosshair that follows the mouse and reads out every chart at the same time</source>
+        <translation>跟随鼠标的十字线，同时读出每个图表的数值</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Save all as PNG…</source>
+        <translation>全部保存为 PNG…</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Save the charts shown as one PNG image</source>
+        <translation>将显示的图表保存为一张 PNG 图片</translation>
+    </message>
 </context>
 <context>
     <name>imudesk::ui::ChartView</name>
     <message>
-        <location filename="../ui/chart_view.cpp" line="+107" />
+        <location filename="../ui/chart_view.cpp" line="+108" />
         <source>Accelerometer</source>
         <translation>加速度计</translation>
     </message>
@@ -6526,38 +6586,43 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>无法将图表保存为 %1：%2</translation>
     </message>
     <message>
-        <location line="+155" />
+        <location line="+147" />
         <source>%1 (%2)</source>
         <comment>quantity (unit)</comment>
         <translation>%1（%2）</translation>
     </message>
     <message>
-        <location line="+5" />
-        <source>Show or hide %1</source>
-        <translation>显示或隐藏 %1</translation>
+        <location line="+7" />
+        <source>Click an axis in the legend to hide or show it; right-click for the vertical range and to save this chart</source>
+        <translation>单击图例中的轴可隐藏或显示该轴；右键单击可设置纵轴范围并保存此图表</translation>
     </message>
     <message>
         <location line="+2" />
-        <source>&amp;Window:</source>
-        <translation>时间窗(&amp;W)：</translation>
+        <source>Right-click for the vertical range and to save this chart</source>
+        <translation>右键单击可设置纵轴范围并保存此图表</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Fit the vertical axis to the data shown; off: use the fixed range</source>
+        <translation>纵轴自动适应显示的数据；关闭时使用固定范围</translation>
     </message>
     <message>
         <location line="+1" />
-        <source>Time span shown by this chart</source>
-        <translation>此图表显示的时间跨度</translation>
+        <source>Fixed range:</source>
+        <translation>固定范围：</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+0" />
+        <source>Fixed range (%1):</source>
+        <translation>固定范围（%1）：</translation>
+    </message>
+    <message>
+        <location line="-2" />
         <source>Auto scale</source>
         <translation>自动缩放</translation>
     </message>
     <message>
-        <location line="+1" />
-        <source>Fit the vertical axis to the data shown; off: use the range on the right</source>
-        <translation>使纵轴适应所显示的数据；关闭时使用右侧设定的范围</translation>
-    </message>
-    <message>
-        <location line="+2" />
+        <location line="+4" />
         <source>Lower end of the vertical axis (no unit)</source>
         <translation>纵轴下限（无单位）</translation>
     </message>
@@ -6587,27 +6652,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>将此图表保存为 PNG 图像</translation>
     </message>
     <message>
-        <location line="+9" />
-        <source>Resume</source>
-        <translation>继续</translation>
-    </message>
-    <message>
-        <location line="+0" />
-        <source>Pause</source>
-        <translation>暂停</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>Follow the newest data again</source>
-        <translation>重新跟随最新数据</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>Freeze this chart; the data keeps being recorded</source>
-        <translation>冻结此图表；数据仍会继续记录</translation>
-    </message>
-    <message>
-        <location line="+214" />
+        <location line="+224" />
         <source>m/s²</source>
         <translation>m/s²</translation>
     </message>
@@ -6617,7 +6662,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>rad/s</translation>
     </message>
     <message>
-        <location line="+135" />
+        <location line="+155" />
         <source>t = %1 s</source>
         <translation>t = %1 s</translation>
     </message>
@@ -6913,7 +6958,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::ConnectionBar</name>
     <message>
-        <location filename="../ui/connection_bar.cpp" line="+149" />
+        <location filename="../ui/connection_bar.cpp" line="+178" />
         <source>SN %1</source>
         <translation>序列号 %1</translation>
     </message>
@@ -7064,7 +7109,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::DeviceWorkspace</name>
     <message>
-        <location filename="../ui/device_workspace.cpp" line="+256" />
+        <location filename="../ui/device_workspace.cpp" line="+299" />
         <source>New connection</source>
         <translation>新连接</translation>
     </message>
@@ -7074,7 +7119,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>%2 上的 %1</translation>
     </message>
     <message>
-        <location line="+43" />
+        <location line="+44" />
         <source>Disconnect first, then connect to the simulated device.</source>
         <translation>请先断开，再连接模拟设备。</translation>
     </message>
@@ -7089,7 +7134,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>模拟 %1（固件 %2）</translation>
     </message>
     <message>
-        <location line="+132" />
+        <location line="+134" />
         <source>Not connected</source>
         <translation>未连接</translation>
     </message>
@@ -7212,11 +7257,61 @@ Link load = bytes per second × 10 bits / baud rate.</source>
     </message>
     <message>
         <location line="+1" />
-        <source>Values and attitude</source>
-        <translation>数值与姿态</translation>
+        <source>Values</source>
+        <translation>数值</translation>
     </message>
     <message>
         <location line="+1" />
+        <source>3D attitude</source>
+        <translation>3D 姿态</translation>
+    </message>
+    <message>
+        <location line="+47" />
+        <source>&amp;Monitor</source>
+        <translation>监视(&amp;M)</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>C&amp;onfigure</source>
+        <translation>配置(&amp;O)</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>C&amp;alibrate</source>
+        <translation>校准(&amp;A)</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>A&amp;nalyse</source>
+        <translation>分析(&amp;N)</translation>
+    </message>
+    <message>
+        <location line="+126" />
+        <source>%1 was floating off the screen</source>
+        <translation>%1 浮动在屏幕之外</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>%1 is not used by this link</source>
+        <translation>此连接不使用 %1</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>the charts were squeezed</source>
+        <translation>图表被挤压</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>the 3D attitude view was squeezed</source>
+        <translation>3D 姿态视图被挤压</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>the values table was too narrow for its columns</source>
+        <translation>数值表太窄，无法容纳其各列</translation>
+    </message>
+    <message>
+        <location line="-195" />
         <source>Configuration</source>
         <translation>配置</translation>
     </message>
@@ -8076,12 +8171,12 @@ Method: %3</source>
 <context>
     <name>imudesk::ui::LanguageSwitcher</name>
     <message>
-        <location filename="../ui/language_switcher.cpp" line="+52" />
+        <location filename="../ui/language_switcher.cpp" line="+54" />
         <source>Unknown language "%1"; choose one of: %2.</source>
         <translation>未知语言“%1”；请选择以下之一：%2。</translation>
     </message>
     <message>
-        <location line="+14" />
+        <location line="+15" />
         <source>The %1 translation was not found in %2.</source>
         <translation>在 %2 中未找到 %1 翻译。</translation>
     </message>
@@ -8258,7 +8353,7 @@ Samples: %3</source>
 <context>
     <name>imudesk::ui::MainWindow</name>
     <message>
-        <location filename="../ui/main_window.cpp" line="+288" />
+        <location filename="../ui/main_window.cpp" line="+341" />
         <source>Choose a port first.</source>
         <translation>请先选择串口。</translation>
     </message>
@@ -8283,7 +8378,7 @@ Samples: %3</source>
         <translation>&lt;h3&gt;ImuDesk %1&lt;/h3&gt;&lt;p&gt;HiPNUC IMU 模块测试工具：实时数值、ASCII 指令控制台和模拟设备。&lt;/p&gt;&lt;p&gt;基于 Qt %2 构建。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location line="+18" />
+        <location line="+19" />
         <source>ImuDesk – IMU bench tool</source>
         <translation>ImuDesk – IMU 测试工具</translation>
     </message>
@@ -8293,7 +8388,7 @@ Samples: %3</source>
         <translation>%1 – %2</translation>
     </message>
     <message>
-        <location line="+49" />
+        <location line="+66" />
         <source>Save screenshot</source>
         <translation>保存截图</translation>
     </message>
@@ -8381,6 +8476,41 @@ Samples: %3</source>
         <location line="+1" />
         <source>&amp;Preferences…</source>
         <translation>首选项(&amp;P)…</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Layout: %1</source>
+        <translation>布局：%1</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Charts, the values table and the 3D attitude</source>
+        <translation>图表、数值表和 3D 姿态</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The device's settings beside the charts</source>
+        <translation>设备设置与图表并列</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The values, a large 3D attitude view and the console</source>
+        <translation>数值、大尺寸 3D 姿态视图和控制台</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Charts, the values, the raw bytes and the command log</source>
+        <translation>图表、数值、原始字节和命令日志</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>&amp;Reset layout</source>
+        <translation>重置布局(&amp;R)</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Put every panel of this tab back where the chosen layout has it</source>
+        <translation>将此标签页的所有面板放回所选布局中的位置</translation>
     </message>
     <message>
         <location line="+4" />
@@ -9214,19 +9344,34 @@ Samples: %3</source>
 <context>
     <name>imudesk::ui::StatusFlagsWidget</name>
     <message>
-        <location filename="../ui/status_flags_widget.cpp" line="+95" />
+        <location filename="../ui/status_flags_widget.cpp" line="+114" />
         <source>Status:</source>
         <translation>状态：</translation>
     </message>
     <message>
-        <location line="+6" />
-        <source>&lt;b&gt;%1&lt;/b&gt; (bit %2): %3</source>
-        <translation>&lt;b&gt;%1&lt;/b&gt;（位 %2）：%3</translation>
+        <location line="+8" />
+        <source>good news when set</source>
+        <translation>置位表示良好</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>information</source>
+        <translation>信息</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>warning when set</source>
+        <translation>置位表示警告</translation>
     </message>
     <message>
         <location line="+2" />
-        <source>MAIN_STATUS flags of the latest frame: green = set, grey = clear, outlined = the frame carries no status word (firmware before 1.7.0, or another frame type)</source>
-        <translation>最新一帧的 MAIN_STATUS 标志：绿色 = 置位，灰色 = 未置位，仅边框 = 该帧不含状态字（固件低于 1.7.0 或其他帧类型）</translation>
+        <source>&lt;b&gt;%1&lt;/b&gt; (bit %2, %3): %4</source>
+        <translation>&lt;b&gt;%1&lt;/b&gt;（位 %2，%3）：%4</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>MAIN_STATUS flags of the latest frame. Set: amber = a warning about the data, blue = information, green = good news (magnetometer aiding the heading). Grey = clear; outlined = the frame carries no status word (firmware before 1.7.0, or another frame type)</source>
+        <translation>最新帧的 MAIN_STATUS 标志。置位时：琥珀色 = 数据警告，蓝色 = 信息，绿色 = 良好（磁力计辅助航向）。灰色 = 未置位；仅边框 = 该帧不含状态字（1.7.0 之前的固件或其他帧类型）</translation>
     </message>
 </context>
 <context>

@@ -1921,7 +1921,7 @@
         <translation>羅盤</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+4" />
         <source>Compass settings</source>
         <translation>羅盤設定</translation>
     </message>
@@ -1976,12 +1976,12 @@
         <translation>CAN 幀</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+6" />
         <source>CAN configuration</source>
         <translation>CAN 配置</translation>
     </message>
     <message>
-        <location line="+9" />
+        <location line="+10" />
         <source>%1 cannot be read. Check that the file exists and that you may read it.</source>
         <translation>無法讀取 %1。請確認檔案存在且您有讀取權限。</translation>
     </message>
@@ -4443,7 +4443,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>%1，波特率 %2（已重新連線）</translation>
     </message>
     <message>
-        <location line="+143" />
+        <location line="+144" />
         <source>Bytes keep arriving on %1 but none of them form a frame: the device probably runs at another baud rate now. Disconnect and connect again with the baud rate set to Auto.</source>
         <translation>%1 上持續收到位元組，但無法組成任何資料框：裝置可能已改用其他波特率。請中斷連線，並將波特率設為「自動」後重新連線。</translation>
     </message>
@@ -4512,7 +4512,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>無法開啟 %1：%2</translation>
     </message>
     <message>
-        <location line="+129" />
+        <location line="+147" />
         <source>The connection to %1 was lost (%2). Check the cable; everything received so far is kept.</source>
         <translation>與 %1 的連線已中斷（%2）。請檢查線材；已接收的資料都會保留。</translation>
     </message>
@@ -5551,7 +5551,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::AttitudeWidget</name>
     <message>
-        <location filename="../ui/attitude_widget.cpp" line="+245" />
+        <location filename="../ui/attitude_widget.cpp" line="+254" />
         <source>X</source>
         <translation>X</translation>
     </message>
@@ -5587,12 +5587,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
     <message>
         <location line="+1" />
-        <location line="+351" />
+        <location line="+353" />
         <source>ENU 3-1-2</source>
         <translation>ENU 3-1-2</translation>
     </message>
     <message>
-        <location line="-349" />
+        <location line="-351" />
         <source>N (x)</source>
         <translation>N (x)</translation>
     </message>
@@ -5608,12 +5608,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
     <message>
         <location line="+1" />
-        <location line="+347" />
+        <location line="+349" />
         <source>NED 3-2-1</source>
         <translation>NED 3-2-1</translation>
     </message>
     <message>
-        <location line="-345" />
+        <location line="-347" />
         <source>No attitude yet</source>
         <translation>尚無姿態資料</translation>
     </message>
@@ -5643,7 +5643,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>拖曳以旋轉檢視，按兩下以重設</translation>
     </message>
     <message>
-        <location line="+351" />
+        <location line="+353" />
         <source>Reset view</source>
         <translation>重設檢視</translation>
     </message>
@@ -6340,7 +6340,47 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::ChartPanel</name>
     <message>
-        <location filename="../ui/chart_panel.cpp" line="+66" />
+        <location filename="../ui/chart_panel.cpp" line="+133" />
+        <source>Charts</source>
+        <translation>圖表</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Choose the charts to show; they share the area</source>
+        <translation>選擇要顯示的圖表；它們共用繪圖區域</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>&amp;Window:</source>
+        <translation>時間窗(&amp;W)：</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Time span shown by every chart</source>
+        <translation>每個圖表顯示的時間跨度</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Run</source>
+        <translation>執行</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Pause</source>
+        <translation>暫停</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Follow the newest data again (Pause key)</source>
+        <translation>重新跟隨最新資料（Pause 鍵）</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Freeze every chart; the data keeps being recorded (Pause key)</source>
+        <translation>凍結所有圖表；資料仍持續記錄（Pause 鍵）</translation>
+    </message>
+    <message>
+        <location line="+1" />
         <source>&amp;Time axis:</source>
         <translation>時間軸(&amp;T)：</translation>
     </message>
@@ -6359,11 +6399,31 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <source>Device clock: the module's own timestamps, where lost samples show as gaps. Host arrival time: when the samples reached this computer.</source>
         <translation>裝置時鐘：模組自身的時間戳記，遺失的取樣顯示為間斷。主機接收時間：取樣到達本電腦的時間。</translation>
     </message>
+    <message>
+        <location line="+2" />
+        <source>Cursor</source>
+        <translation>游標</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>A crosshair that follows the mouse and reads out every chart at the same time</source>
+        <translation>跟隨滑鼠的十字線，同時讀出每個圖表的數值</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Save all as PNG…</source>
+        <translation>全部儲存為 PNG…</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Save the charts shown as one PNG image</source>
+        <translation>將顯示的圖表儲存為一張 PNG 圖片</translation>
+    </message>
 </context>
 <context>
     <name>imudesk::ui::ChartView</name>
     <message>
-        <location filename="../ui/chart_view.cpp" line="+107" />
+        <location filename="../ui/chart_view.cpp" line="+108" />
         <source>Accelerometer</source>
         <translation>加速度計</translation>
     </message>
@@ -6526,38 +6586,43 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>無法將圖表儲存為 %1：%2</translation>
     </message>
     <message>
-        <location line="+155" />
+        <location line="+147" />
         <source>%1 (%2)</source>
         <comment>quantity (unit)</comment>
         <translation>%1（%2）</translation>
     </message>
     <message>
-        <location line="+5" />
-        <source>Show or hide %1</source>
-        <translation>顯示或隱藏 %1</translation>
+        <location line="+7" />
+        <source>Click an axis in the legend to hide or show it; right-click for the vertical range and to save this chart</source>
+        <translation>按一下圖例中的軸可隱藏或顯示該軸；按右鍵可設定縱軸範圍並儲存此圖表</translation>
     </message>
     <message>
         <location line="+2" />
-        <source>&amp;Window:</source>
-        <translation>時間窗(&amp;W)：</translation>
+        <source>Right-click for the vertical range and to save this chart</source>
+        <translation>按右鍵可設定縱軸範圍並儲存此圖表</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Fit the vertical axis to the data shown; off: use the fixed range</source>
+        <translation>縱軸自動適應顯示的資料；關閉時使用固定範圍</translation>
     </message>
     <message>
         <location line="+1" />
-        <source>Time span shown by this chart</source>
-        <translation>此圖表顯示的時間跨度</translation>
+        <source>Fixed range:</source>
+        <translation>固定範圍：</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+0" />
+        <source>Fixed range (%1):</source>
+        <translation>固定範圍（%1）：</translation>
+    </message>
+    <message>
+        <location line="-2" />
         <source>Auto scale</source>
         <translation>自動縮放</translation>
     </message>
     <message>
-        <location line="+1" />
-        <source>Fit the vertical axis to the data shown; off: use the range on the right</source>
-        <translation>使縱軸適應所顯示的資料；關閉時使用右側設定的範圍</translation>
-    </message>
-    <message>
-        <location line="+2" />
+        <location line="+4" />
         <source>Lower end of the vertical axis (no unit)</source>
         <translation>縱軸下限（無單位）</translation>
     </message>
@@ -6587,27 +6652,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>將此圖表儲存為 PNG 影像</translation>
     </message>
     <message>
-        <location line="+9" />
-        <source>Resume</source>
-        <translation>繼續</translation>
-    </message>
-    <message>
-        <location line="+0" />
-        <source>Pause</source>
-        <translation>暫停</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>Follow the newest data again</source>
-        <translation>重新跟隨最新資料</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>Freeze this chart; the data keeps being recorded</source>
-        <translation>凍結此圖表；資料仍會繼續記錄</translation>
-    </message>
-    <message>
-        <location line="+214" />
+        <location line="+224" />
         <source>m/s²</source>
         <translation>m/s²</translation>
     </message>
@@ -6617,7 +6662,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>rad/s</translation>
     </message>
     <message>
-        <location line="+135" />
+        <location line="+155" />
         <source>t = %1 s</source>
         <translation>t = %1 s</translation>
     </message>
@@ -6913,7 +6958,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::ConnectionBar</name>
     <message>
-        <location filename="../ui/connection_bar.cpp" line="+149" />
+        <location filename="../ui/connection_bar.cpp" line="+178" />
         <source>SN %1</source>
         <translation>序號 %1</translation>
     </message>
@@ -7064,7 +7109,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::DeviceWorkspace</name>
     <message>
-        <location filename="../ui/device_workspace.cpp" line="+256" />
+        <location filename="../ui/device_workspace.cpp" line="+299" />
         <source>New connection</source>
         <translation>新連線</translation>
     </message>
@@ -7074,7 +7119,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>%2 上的 %1</translation>
     </message>
     <message>
-        <location line="+43" />
+        <location line="+44" />
         <source>Disconnect first, then connect to the simulated device.</source>
         <translation>請先中斷連線，再連線到模擬裝置。</translation>
     </message>
@@ -7089,7 +7134,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>模擬 %1（韌體 %2）</translation>
     </message>
     <message>
-        <location line="+132" />
+        <location line="+134" />
         <source>Not connected</source>
         <translation>未連線</translation>
     </message>
@@ -7212,11 +7257,61 @@ Link load = bytes per second × 10 bits / baud rate.</source>
     </message>
     <message>
         <location line="+1" />
-        <source>Values and attitude</source>
-        <translation>數值與姿態</translation>
+        <source>Values</source>
+        <translation>數值</translation>
     </message>
     <message>
         <location line="+1" />
+        <source>3D attitude</source>
+        <translation>3D 姿態</translation>
+    </message>
+    <message>
+        <location line="+47" />
+        <source>&amp;Monitor</source>
+        <translation>監看(&amp;M)</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>C&amp;onfigure</source>
+        <translation>設定(&amp;O)</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>C&amp;alibrate</source>
+        <translation>校準(&amp;A)</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>A&amp;nalyse</source>
+        <translation>分析(&amp;N)</translation>
+    </message>
+    <message>
+        <location line="+126" />
+        <source>%1 was floating off the screen</source>
+        <translation>%1 浮動在螢幕之外</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>%1 is not used by this link</source>
+        <translation>此連線不使用 %1</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>the charts were squeezed</source>
+        <translation>圖表被擠壓</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>the 3D attitude view was squeezed</source>
+        <translation>3D 姿態檢視被擠壓</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>the values table was too narrow for its columns</source>
+        <translation>數值表太窄，無法容納其各欄</translation>
+    </message>
+    <message>
+        <location line="-195" />
         <source>Configuration</source>
         <translation>配置</translation>
     </message>
@@ -8076,12 +8171,12 @@ Method: %3</source>
 <context>
     <name>imudesk::ui::LanguageSwitcher</name>
     <message>
-        <location filename="../ui/language_switcher.cpp" line="+52" />
+        <location filename="../ui/language_switcher.cpp" line="+54" />
         <source>Unknown language "%1"; choose one of: %2.</source>
         <translation>未知語言「%1」；請選擇以下其中之一：%2。</translation>
     </message>
     <message>
-        <location line="+14" />
+        <location line="+15" />
         <source>The %1 translation was not found in %2.</source>
         <translation>在 %2 中找不到 %1 翻譯。</translation>
     </message>
@@ -8258,7 +8353,7 @@ Samples: %3</source>
 <context>
     <name>imudesk::ui::MainWindow</name>
     <message>
-        <location filename="../ui/main_window.cpp" line="+288" />
+        <location filename="../ui/main_window.cpp" line="+341" />
         <source>Choose a port first.</source>
         <translation>請先選擇串列埠。</translation>
     </message>
@@ -8283,7 +8378,7 @@ Samples: %3</source>
         <translation>&lt;h3&gt;ImuDesk %1&lt;/h3&gt;&lt;p&gt;HiPNUC IMU 模組測試工具：即時數值、ASCII 指令主控台和模擬裝置。&lt;/p&gt;&lt;p&gt;以 Qt %2 建置。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location line="+18" />
+        <location line="+19" />
         <source>ImuDesk – IMU bench tool</source>
         <translation>ImuDesk – IMU 測試工具</translation>
     </message>
@@ -8293,7 +8388,7 @@ Samples: %3</source>
         <translation>%1 – %2</translation>
     </message>
     <message>
-        <location line="+49" />
+        <location line="+66" />
         <source>Save screenshot</source>
         <translation>儲存螢幕擷取畫面</translation>
     </message>
@@ -8381,6 +8476,41 @@ Samples: %3</source>
         <location line="+1" />
         <source>&amp;Preferences…</source>
         <translation>偏好設定(&amp;P)…</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Layout: %1</source>
+        <translation>版面配置：%1</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Charts, the values table and the 3D attitude</source>
+        <translation>圖表、數值表和 3D 姿態</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The device's settings beside the charts</source>
+        <translation>裝置設定與圖表並列</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The values, a large 3D attitude view and the console</source>
+        <translation>數值、大尺寸 3D 姿態檢視和主控台</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Charts, the values, the raw bytes and the command log</source>
+        <translation>圖表、數值、原始位元組和命令記錄</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>&amp;Reset layout</source>
+        <translation>重設版面配置(&amp;R)</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Put every panel of this tab back where the chosen layout has it</source>
+        <translation>將此分頁的所有面板放回所選版面配置中的位置</translation>
     </message>
     <message>
         <location line="+4" />
@@ -9214,19 +9344,34 @@ Samples: %3</source>
 <context>
     <name>imudesk::ui::StatusFlagsWidget</name>
     <message>
-        <location filename="../ui/status_flags_widget.cpp" line="+95" />
+        <location filename="../ui/status_flags_widget.cpp" line="+114" />
         <source>Status:</source>
         <translation>狀態：</translation>
     </message>
     <message>
-        <location line="+6" />
-        <source>&lt;b&gt;%1&lt;/b&gt; (bit %2): %3</source>
-        <translation>&lt;b&gt;%1&lt;/b&gt;（位元 %2）：%3</translation>
+        <location line="+8" />
+        <source>good news when set</source>
+        <translation>設定時表示良好</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>information</source>
+        <translation>資訊</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>warning when set</source>
+        <translation>設定時表示警告</translation>
     </message>
     <message>
         <location line="+2" />
-        <source>MAIN_STATUS flags of the latest frame: green = set, grey = clear, outlined = the frame carries no status word (firmware before 1.7.0, or another frame type)</source>
-        <translation>最新一幀的 MAIN_STATUS 旗標：綠色 = 已設定，灰色 = 未設定，僅外框 = 該幀不含狀態字（韌體低於 1.7.0 或其他幀類型）</translation>
+        <source>&lt;b&gt;%1&lt;/b&gt; (bit %2, %3): %4</source>
+        <translation>&lt;b&gt;%1&lt;/b&gt;（位元 %2，%3）：%4</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>MAIN_STATUS flags of the latest frame. Set: amber = a warning about the data, blue = information, green = good news (magnetometer aiding the heading). Grey = clear; outlined = the frame carries no status word (firmware before 1.7.0, or another frame type)</source>
+        <translation>最新訊框的 MAIN_STATUS 旗標。設定時：琥珀色 = 資料警告，藍色 = 資訊，綠色 = 良好（磁力計輔助航向）。灰色 = 未設定；僅外框 = 該訊框不含狀態字（1.7.0 之前的韌體或其他訊框類型）</translation>
     </message>
 </context>
 <context>

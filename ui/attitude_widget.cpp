@@ -122,7 +122,7 @@ struct AttitudeWidget::View {
     Eigen::Matrix3d body; // body -> ENU
     bool grey = false;
 
-    View(double azimuthDeg, double elevationDeg, const QSizeF &size, const model::Quat &q, bool noData)
+    View(double azimuthDeg, double elevationDeg, const QRectF &area, const model::Quat &q, bool noData)
     {
         const double a = azimuthDeg * model::kDegToRad, e = elevationDeg * model::kDegToRad;
         toCamera = Vector3d(std::sin(a) * std::cos(e), std::cos(a) * std::cos(e), std::sin(e));
@@ -132,9 +132,9 @@ struct AttitudeWidget::View {
         up = right.cross(forward);
         // Light from the upper left of the camera, fixed to the camera so orbiting keeps the look.
         light = (-0.35 * right + 0.75 * up + 0.55 * toCamera).normalized();
-        cx = size.width() / 2;
-        cy = size.height() / 2;
-        focal = 0.5 * std::min(size.width(), size.height()) * kCameraDistance / kFitRadius;
+        cx = area.center().x();
+        cy = area.center().y();
+        focal = 0.5 * std::min(area.width(), area.height()) * kCameraDistance / kFitRadius;
         body = Eigen::Quaterniond(q.w, q.x, q.y, q.z).toRotationMatrix();
         grey = noData;
     }
@@ -226,8 +226,17 @@ QString AttitudeWidget::readoutText() const
 
 QPointF AttitudeWidget::screenPosition(const model::Vec3 &enu) const
 {
-    const View v(m_azimuth, m_elevation, QSizeF(size()), m_quat, !m_hasData);
+    const View v(m_azimuth, m_elevation, sceneRect(), m_quat, !m_hasData);
     return v.project(Vector3d(enu.x, enu.y, enu.z));
+}
+
+QRectF AttitudeWidget::sceneRect() const
+{
+    const double w = width(), h = height();
+    const QRectF beside(m_panel.right() + kPanelMargin, 0, std::max(1.0, w - m_panel.right() - kPanelMargin), h);
+    const QRectF below(0, m_panel.bottom() + kPanelMargin, w, std::max(1.0, h - m_panel.bottom() - kPanelMargin));
+    const auto fit = [](const QRectF &r) { return std::min(r.width(), r.height()); };
+    return fit(beside) >= fit(below) ? beside : below;
 }
 
 QSize AttitudeWidget::sizeHint() const
@@ -323,7 +332,7 @@ void AttitudeWidget::paintEvent(QPaintEvent *)
     p.setRenderHint(QPainter::Antialiasing);
     p.fillRect(rect(), palette().color(QPalette::Base));
 
-    const View v(m_azimuth, m_elevation, QSizeF(size()), m_quat, !m_hasData);
+    const View v(m_azimuth, m_elevation, sceneRect(), m_quat, !m_hasData);
     // Painter's algorithm: ground, far half of the axes, body faces back to front, near
     // half of the axes, then all labels and the read-outs on top. With the camera under
     // the ground plane the ground is in front of the module.
@@ -527,7 +536,9 @@ void AttitudeWidget::paintReadouts(QPainter &p) const
         QColor grey = ink;
         grey.setAlphaF(0.6);
         p.setPen(grey);
-        p.drawStaticText(QPointF((width() - m_noDataStatic.size().width()) / 2, kPanelMargin), m_noDataStatic);
+        const QRectF scene = sceneRect();
+        p.drawStaticText(QPointF(scene.center().x() - m_noDataStatic.size().width() / 2, kPanelMargin),
+                         m_noDataStatic);
         return;
     }
     QColor back = palette().color(QPalette::Base);

@@ -82,6 +82,10 @@ public:
     // Where a point given in the ENU navigation frame (scene units, module centre at the
     // origin, the module 3 x 2 x 0.6) lands in widget coordinates with the current camera.
     QPointF screenPosition(const model::Vec3 &enu) const;
+    // The read-out panel and the area the 3D scene is fitted into: beside the panel when
+    // the widget is wide, below it when it is tall; the two never overlap.
+    QRectF readoutRect() const { return m_panel; }
+    QRectF sceneRect() const;
 
     QSize sizeHint() const override;
     QSize minimumSizeHint() const override;

@@ -25,6 +25,13 @@ const char *ChartSettings::channelKey(plot::Channel channel)
     return kChannelKeys[size_t(channel)];
 }
 
+const char *ChartSettings::chartKey(ChartKind kind)
+{
+    static constexpr std::array<const char *, kChartKindCount> keys = {
+        "accelerometer", "gyroscope", "magnetometer", "euler", "quaternion", "pressure", "temperature"};
+    return keys[size_t(kind)];
+}
+
 bool ChartSettings::isWindowChoice(double seconds)
 {
     return std::find(kWindowChoices.begin(), kWindowChoices.end(), seconds) != kWindowChoices.end();
@@ -44,6 +51,13 @@ void ChartSettings::load(QSettings &settings)
     for (int c = 0; c < plot::kChannelCount; ++c)
         if (hidden.contains(QLatin1String(kChannelKeys[size_t(c)])))
             hiddenChannels |= plot::channelBit(plot::Channel(c));
+    if (settings.contains(key(kHiddenChartsKey))) {
+        const QStringList charts = settings.value(key(kHiddenChartsKey)).toStringList();
+        hiddenCharts = 0;
+        for (int k = 0; k < kChartKindCount; ++k)
+            if (charts.contains(QLatin1String(chartKey(ChartKind(k)))))
+                hiddenCharts |= 1u << k;
+    }
 }
 
 void ChartSettings::save(QSettings &settings) const
@@ -57,6 +71,11 @@ void ChartSettings::save(QSettings &settings) const
         if (isHidden(plot::Channel(c)))
             hidden << QLatin1String(kChannelKeys[size_t(c)]);
     settings.setValue(key(kHiddenChannelsKey), hidden);
+    QStringList charts;
+    for (int k = 0; k < kChartKindCount; ++k)
+        if (isChartHidden(ChartKind(k)))
+            charts << QLatin1String(chartKey(ChartKind(k)));
+    settings.setValue(key(kHiddenChartsKey), charts);
 }
 
 } // namespace imudesk::ui

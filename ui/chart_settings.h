@@ -30,9 +30,17 @@ struct ChartSettings {
     static constexpr std::array<double, 8> kWindowChoices = {2, 5, 10, 30, 60, 120, 300, 600};
     static constexpr double kDefaultWindowSeconds = 10;
 
+    // Charts the user switched off (bit = 1 << ChartKind), saved as a list of chart names.
+    static constexpr const char *kHiddenChartsKey = "ui/v1/charts/hiddenCharts";
+    // By default four charts share the area; the others are a click away.
+    static constexpr uint32_t kDefaultHiddenCharts =
+        (1u << int(ChartKind::Quaternion)) | (1u << int(ChartKind::Pressure)) | (1u << int(ChartKind::Temperature));
+
     std::array<double, kChartKindCount> windowSeconds = {10, 10, 10, 10, 10, 10, 10};
     plot::TimeAxis timeAxis = plot::TimeAxis::Device;
     uint32_t hiddenChannels = 0; // plot::channelBit() of each hidden axis
+    uint32_t hiddenCharts = kDefaultHiddenCharts;
+    bool isChartHidden(ChartKind kind) const { return (hiddenCharts >> int(kind)) & 1u; }
 
     double window(ChartKind kind) const { return windowSeconds[size_t(kind)]; }
     bool isHidden(plot::Channel channel) const { return (hiddenChannels & plot::channelBit(channel)) != 0; }
@@ -43,6 +51,7 @@ struct ChartSettings {
 
     // Stable names for the settings file ("accX", ..., "temperature").
     static const char *channelKey(plot::Channel channel);
+    static const char *chartKey(ChartKind kind); // "accelerometer", ...
     static bool isWindowChoice(double seconds);
 
     friend bool operator==(const ChartSettings &, const ChartSettings &) = default;

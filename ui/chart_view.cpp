@@ -4,7 +4,6 @@
 
 #include <QChart>
 #include <QChartView>
-#include <QCheckBox>
 #include <QComboBox>
 #include <QDateTime>
 #include <QDir>
@@ -16,16 +15,18 @@
 #include <QHBoxLayout>
 #include <QImageWriter>
 #include <QLabel>
+#include <QLegend>
+#include <QLegendMarker>
 #include <QLineSeries>
+#include <QMenu>
 #include <QMessageBox>
 #include <QMouseEvent>
 #include <QPainter>
 #include <QPen>
 #include <QPixmap>
-#include <QPushButton>
-#include <QToolButton>
 #include <QVBoxLayout>
 #include <QValueAxis>
+#include <QWidgetAction>
 
 #include <algorithm>
 #include <cmath>
@@ -318,45 +319,31 @@ ChartView::ChartView(ChartKind kind, QWidget *parent)
     m_chartView->viewport()->setMouseTracking(true);
     m_chartView->viewport()->installEventFilter(this);
 
-    // The controls.
-    auto *controls = new QHBoxLayout;
-    controls->setSpacing(6);
-    for (Channel c : m_channels) {
-        auto *check = new QCheckBox(this);
-        check->setChecked(true);
-        check->setIcon(swatch(colour(c)));
-        connect(check, &QCheckBox::toggled, this, [this, c](bool on) { setChannelVisible(c, on); });
-        m_checks[size_t(c)] = check;
-        controls->addWidget(check);
-    }
-    controls->addSpacing(12);
-    m_windowLabel = new QLabel(this);
-    m_windowCombo = new QComboBox(this);
-    m_windowCombo->setObjectName(QStringLiteral("windowCombo"));
-    m_windowLabel->setBuddy(m_windowCombo);
-    fillWindowCombo(m_windowCombo, m_window);
-    connect(m_windowCombo, &QComboBox::currentIndexChanged, this,
-            [this](int) { setWindowSeconds(m_windowCombo->currentData().toDouble()); });
-    controls->addWidget(m_windowLabel);
-    controls->addWidget(m_windowCombo);
-    m_pauseButton = new QToolButton(this);
-    m_pauseButton->setObjectName(QStringLiteral("pauseButton"));
-    m_pauseButton->setCheckable(true);
-    connect(m_pauseButton, &QToolButton::toggled, this, &ChartView::setPaused);
-    controls->addWidget(m_pauseButton);
-    controls->addSpacing(12);
-    m_autoScaleCheck = new QCheckBox(this);
-    m_autoScaleCheck->setObjectName(QStringLiteral("autoScaleCheck"));
-    m_autoScaleCheck->setChecked(m_autoScale);
-    connect(m_autoScaleCheck, &QCheckBox::toggled, this, &ChartView::setAutoScale);
-    controls->addWidget(m_autoScaleCheck);
-    m_minSpin = new QDoubleSpinBox(this);
-    m_maxSpin = new QDoubleSpinBox(this);
+    // The legend switches the axes: a click hides or shows one (dimmed while hidden).
+    for (Channel c : m_channels)
+        for (QLegendMarker *marker : m_chart->legend()->markers(m_series[size_t(c)]))
+            connect(marker, &QLegendMarker::clicked, this, [this, c] { setChannelVisible(c, !isChannelVisible(c)); });
+
+    // The context menu: the vertical range and saving this chart.
+    m_menu = new QMenu(this);
+    m_menu->setObjectName(QStringLiteral("chartMenu"));
+    m_autoScaleAction = m_menu->addAction(QString());
+    m_autoScaleAction->setObjectName(QStringLiteral("autoScaleAction"));
+    m_autoScaleAction->setCheckable(true);
+    m_autoScaleAction->setChecked(m_autoScale);
+    connect(m_autoScaleAction, &QAction::toggled, this, &ChartView::setAutoScale);
+    auto *range = new QWidget;
+    auto *rangeRow = new QHBoxLayout(range);
+    rangeRow->setContentsMargins(24, 2, 8, 2);
+    m_rangeLabel = new QLabel(range);
+    rangeRow->addWidget(m_rangeLabel);
+    m_minSpin = new QDoubleSpinBox(range);
+    m_maxSpin = new QDoubleSpinBox(range);
     for (QDoubleSpinBox *spin : {m_minSpin, m_maxSpin}) {
         spin->setRange(-1e7, 1e7);
         spin->setDecimals(traits(kind).spinDecimals);
         spin->setKeyboardTracking(false);
-        controls->addWidget(spin);
+        rangeRow->addWidget(spin);
     }
     m_minSpin->setObjectName(QStringLiteral("minSpin"));
     m_maxSpin->setObjectName(QStringLiteral("maxSpin"));
@@ -366,22 +353,28 @@ ChartView::ChartView(ChartKind kind, QWidget *parent)
             [this](double v) { setFixedRange(v, m_maxSpin->value()); });
     connect(m_maxSpin, &QDoubleSpinBox::valueChanged, this,
             [this](double v) { setFixedRange(m_minSpin->value(), v); });
-    controls->addStretch(1);
-    m_saveButton = new QPushButton(this);
-    m_saveButton->setObjectName(QStringLiteral("savePngButton"));
-    connect(m_saveButton, &QPushButton::clicked, this, &ChartView::saveAsPngInteractive);
-    controls->addWidget(m_saveButton);
+    auto *rangeAction = new QWidgetAction(m_menu);
+    rangeAction->setDefaultWidget(range);
+    m_menu->addAction(rangeAction);
+    m_menu->addSeparator();
+    m_saveAction = m_menu->addAction(QString());
+    m_saveAction->setObjectName(QStringLiteral("savePngAction"));
+    connect(m_saveAction, &QAction::triggered, this, &ChartView::saveAsPngInteractive);
+    m_chartView->setContextMenuPolicy(Qt::CustomContextMenu);
+    connect(m_chartView, &QWidget::customContextMenuRequested, this,
+            [this](const QPoint &pos) { m_menu->popup(m_chartView->mapToGlobal(pos)); });
 
     m_readout = new QLabel(this);
     m_readout->setObjectName(QStringLiteral("crosshairReadout"));
     m_readout->setTextInteractionFlags(Qt::TextSelectableByMouse);
     m_readout->setMinimumWidth(1);
+    m_readout->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
     m_readout->setMinimumHeight(m_readout->fontMetrics().height()); // no jumps when it fills
+    m_readout->hide(); // until the panel's cursor is switched on
 
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(2, 2, 2, 2);
     layout->setSpacing(2);
-    layout->addLayout(controls);
     layout->addWidget(m_chartView, 1);
     layout->addWidget(m_readout);
 
@@ -401,15 +394,15 @@ void ChartView::retranslateUi()
     m_axisX->setTitleText(timeAxisTitle(m_timeAxis));
     for (Channel c : m_channels) {
         m_series[size_t(c)]->setName(axisName(c));
-        m_checks[size_t(c)]->setText(axisName(c));
-        m_checks[size_t(c)]->setToolTip(tr("Show or hide %1").arg(channelName(c)));
+        updateLegendMarker(c);
     }
-    m_windowLabel->setText(tr("&Window:"));
-    m_windowCombo->setToolTip(tr("Time span shown by this chart"));
-    fillWindowCombo(m_windowCombo, m_window);
-    updatePauseButton();
-    m_autoScaleCheck->setText(tr("Auto scale"));
-    m_autoScaleCheck->setToolTip(tr("Fit the vertical axis to the data shown; off: use the range on the right"));
+    m_chartView->setToolTip(m_channels.size() > 1
+                                ? tr("Click an axis in the legend to hide or show it; right-click for the vertical "
+                                     "range and to save this chart")
+                                : tr("Right-click for the vertical range and to save this chart"));
+    m_autoScaleAction->setText(tr("Auto scale"));
+    m_autoScaleAction->setToolTip(tr("Fit the vertical axis to the data shown; off: use the fixed range"));
+    m_rangeLabel->setText(u.isEmpty() ? tr("Fixed range:") : tr("Fixed range (%1):").arg(u));
     if (u.isEmpty()) {
         m_minSpin->setToolTip(tr("Lower end of the vertical axis (no unit)"));
         m_maxSpin->setToolTip(tr("Upper end of the vertical axis (no unit)"));
@@ -417,25 +410,35 @@ void ChartView::retranslateUi()
         m_minSpin->setToolTip(tr("Lower end of the vertical axis, in %1").arg(u));
         m_maxSpin->setToolTip(tr("Upper end of the vertical axis, in %1").arg(u));
     }
-    m_saveButton->setText(tr("Save as PNG…"));
-    m_saveButton->setToolTip(tr("Save this chart as a PNG image"));
+    m_saveAction->setText(tr("Save as PNG…"));
+    m_saveAction->setToolTip(tr("Save this chart as a PNG image"));
     if (m_crosshairOn)
         m_readout->setText(readoutAt(m_crosshairX));
 }
 
-void ChartView::updatePauseButton()
+void ChartView::updateLegendMarker(Channel channel)
 {
-    const QSignalBlocker blocker(m_pauseButton);
-    m_pauseButton->setChecked(m_paused);
-    m_pauseButton->setText(m_paused ? tr("Resume") : tr("Pause"));
-    m_pauseButton->setToolTip(m_paused ? tr("Follow the newest data again")
-                                       : tr("Freeze this chart; the data keeps being recorded"));
+    // Hiding a series hides its legend entry too: keep the entry, dimmed, to switch it back.
+    const bool on = isChannelVisible(channel);
+    for (QLegendMarker *marker : m_chart->legend()->markers(m_series[size_t(channel)])) {
+        marker->setVisible(true);
+        QColor text = palette().color(QPalette::Text);
+        QColor swatchColour = colour(channel);
+        if (!on) {
+            text.setAlphaF(0.35);
+            swatchColour.setAlphaF(0.25);
+        }
+        marker->setLabelBrush(text);
+        marker->setBrush(swatchColour);
+        marker->setPen(QPen(swatchColour));
+    }
 }
 
 void ChartView::updateScaleWidgets()
 {
     m_minSpin->setEnabled(!m_autoScale);
     m_maxSpin->setEnabled(!m_autoScale);
+    m_rangeLabel->setEnabled(!m_autoScale);
 }
 
 void ChartView::changeEvent(QEvent *event)
@@ -463,7 +466,6 @@ void ChartView::setHistory(const plot::ChannelHistory *history)
 {
     m_history = history;
     m_paused = false;
-    updatePauseButton();
     m_haveYRange = false;
     markDirty();
 }
@@ -485,10 +487,6 @@ void ChartView::setWindowSeconds(double seconds)
     if (!ChartSettings::isWindowChoice(seconds) || seconds == m_window)
         return;
     m_window = seconds;
-    {
-        const QSignalBlocker blocker(m_windowCombo);
-        m_windowCombo->setCurrentIndex(m_windowCombo->findData(seconds));
-    }
     if (m_paused) // keep the right edge where it was
         m_frozen.t0 = m_frozen.t1 - m_window;
     m_haveYRange = false;
@@ -509,10 +507,7 @@ void ChartView::setChannelVisible(Channel channel, bool visible)
     m_layer->setLineVisible(m_lineOf[size_t(channel)], visible);
     if (!visible)
         m_points[size_t(channel)].clear();
-    {
-        const QSignalBlocker blocker(m_checks[size_t(channel)]);
-        m_checks[size_t(channel)]->setChecked(visible);
-    }
+    updateLegendMarker(channel);
     m_haveYRange = false;
     markDirty();
     if (m_crosshairOn)
@@ -527,14 +522,11 @@ bool ChartView::isChannelVisible(Channel channel) const
 
 void ChartView::setPaused(bool paused)
 {
-    if (paused == m_paused) {
-        updatePauseButton();
+    if (paused == m_paused)
         return;
-    }
     m_paused = paused;
     if (paused)
         m_frozen = m_drawn.valid ? m_drawn : liveWindow();
-    updatePauseButton();
     markDirty();
 }
 
@@ -544,8 +536,8 @@ void ChartView::setAutoScale(bool on)
         return;
     m_autoScale = on;
     {
-        const QSignalBlocker blocker(m_autoScaleCheck);
-        m_autoScaleCheck->setChecked(on);
+        const QSignalBlocker blocker(m_autoScaleAction);
+        m_autoScaleAction->setChecked(on);
     }
     m_haveYRange = false;
     updateScaleWidgets();
@@ -723,20 +715,40 @@ bool ChartView::refresh()
 
 bool ChartView::eventFilter(QObject *watched, QEvent *event)
 {
-    if (watched == m_chartView->viewport()) {
+    if (watched == m_chartView->viewport() && m_cursorEnabled) {
         if (event->type() == QEvent::MouseMove) {
             const auto *mouse = static_cast<QMouseEvent *>(event);
             const QPointF scenePos = m_chartView->mapToScene(mouse->position().toPoint());
             const QPointF chartPos = m_chart->mapFromScene(scenePos);
-            if (m_chart->plotArea().contains(chartPos) && !m_channels.empty())
+            if (m_chart->plotArea().contains(chartPos) && !m_channels.empty()) {
                 showCrosshairAt(m_chart->mapToValue(chartPos, m_series[size_t(m_channels.front())]).x());
-            else
+                Q_EMIT crosshairMoved(m_crosshairX);
+            } else {
                 hideCrosshair();
+                Q_EMIT crosshairLeft();
+            }
         } else if (event->type() == QEvent::Leave) {
             hideCrosshair();
+            Q_EMIT crosshairLeft();
         }
     }
     return QWidget::eventFilter(watched, event);
+}
+
+void ChartView::setCursorEnabled(bool on)
+{
+    m_cursorEnabled = on;
+    m_readout->setVisible(on);
+    if (!on)
+        hideCrosshair();
+}
+
+QLegendMarker *ChartView::legendMarker(Channel channel) const
+{
+    if (!m_chart->legend()->isVisible() || !m_series[size_t(channel)])
+        return nullptr;
+    const auto markers = m_chart->legend()->markers(m_series[size_t(channel)]);
+    return markers.isEmpty() ? nullptr : markers.front();
 }
 
 void ChartView::showCrosshairAt(double x)

@@ -1,8 +1,9 @@
 #pragma once
 // One live chart of a ChartPanel (e.g. the accelerometer): a QChart with one
-// QLineSeries per axis in a fixed colour, and above it the axis check boxes, the time
-// window, pause/resume, autoscale or a fixed range, and "Save as PNG…"; below it the
-// crosshair read-out.
+// QLineSeries per axis in a fixed colour. Its legend entries switch the axes on and off;
+// its context menu holds auto scale or a fixed range and "Save as PNG…"; the time window,
+// pause and the crosshair are the panel's, shared by all charts. Below the plot, while the
+// panel's cursor is on, the crosshair read-out.
 //
 // It draws from a plot::ChannelHistory it does not own. refresh() is called from
 // outside on the view clock; it redraws only while the chart is on screen, and only
@@ -29,16 +30,16 @@
 #include <functional>
 #include <vector>
 
+class QAction;
 class QChart;
 class QChartView;
-class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
 class QGraphicsLineItem;
 class QLabel;
+class QLegendMarker;
 class QLineSeries;
-class QPushButton;
-class QToolButton;
+class QMenu;
 class QValueAxis;
 
 namespace imudesk::ui {
@@ -48,7 +49,7 @@ class PlotLayer;
 class ChartView : public QWidget {
     Q_OBJECT
 public:
-    static constexpr int kMinimumChartHeight = 270;
+    static constexpr int kMinimumChartHeight = 150;
 
     explicit ChartView(ChartKind kind, QWidget *parent = nullptr);
     ~ChartView() override;
@@ -112,7 +113,11 @@ public:
     bool savePng(const QString &path, QString *error = nullptr) const;
 
     // Crosshair at x (s, as shown on the x axis): a vertical line and the values of the
-    // visible axes at that time. The mouse drives it over the plot area.
+    // visible axes at that time. While the cursor is enabled the mouse drives it over the
+    // plot area (crosshairMoved/crosshairLeft let the panel move the other charts' too) and
+    // the read-out line is shown below the plot.
+    void setCursorEnabled(bool on);
+    bool isCursorEnabled() const { return m_cursorEnabled; }
     void showCrosshairAt(double x);
     void hideCrosshair();
     bool isCrosshairVisible() const { return m_crosshairOn; }
@@ -136,13 +141,22 @@ public:
     PlotLayer *plotLayer() const { return m_layer; }
     QValueAxis *axisX() const { return m_axisX; }
     QValueAxis *axisY() const { return m_axisY; }
-    QCheckBox *channelCheckBox(plot::Channel channel) const { return m_checks[size_t(channel)]; }
-    QComboBox *windowCombo() const { return m_windowCombo; }
-    QToolButton *pauseButton() const { return m_pauseButton; }
+    // The legend entry that switches an axis (clicking it toggles the axis); null for a
+    // chart of one axis, which has no legend.
+    QLegendMarker *legendMarker(plot::Channel channel) const;
+    // The context menu's pieces.
+    QMenu *contextMenu() const { return m_menu; }
+    QAction *autoScaleAction() const { return m_autoScaleAction; }
+    QDoubleSpinBox *minSpin() const { return m_minSpin; }
+    QDoubleSpinBox *maxSpin() const { return m_maxSpin; }
+    QLabel *readoutLabel() const { return m_readout; }
 
 Q_SIGNALS:
     // The window or the visible axes changed.
     void settingsChanged();
+    // The mouse put the crosshair at x (as shown on the x axis), or left the plot.
+    void crosshairMoved(double x);
+    void crosshairLeft();
 
 protected:
     void changeEvent(QEvent *event) override;
@@ -159,8 +173,8 @@ private:
     };
 
     void retranslateUi();
-    void updatePauseButton();
     void updateScaleWidgets();
+    void updateLegendMarker(plot::Channel channel);
     void applyXAxis(const Window &w);
     void applyYAxis(double min, double max);
     Window liveWindow() const;
@@ -195,6 +209,7 @@ private:
 
     double m_crosshairX = 0.0;
     bool m_crosshairOn = false;
+    bool m_cursorEnabled = false;
 
     QChart *m_chart = nullptr;
     QChartView *m_chartView = nullptr;
@@ -204,15 +219,13 @@ private:
     std::array<QList<QPointF>, plot::kChannelCount> m_points;
     std::array<int, plot::kChannelCount> m_lineOf{};
     PlotLayer *m_layer = nullptr;
-    std::array<QCheckBox *, plot::kChannelCount> m_checks{};
     QGraphicsLineItem *m_crosshairLine = nullptr;
-    QComboBox *m_windowCombo = nullptr;
-    QToolButton *m_pauseButton = nullptr;
-    QCheckBox *m_autoScaleCheck = nullptr;
+    QMenu *m_menu = nullptr;
+    QAction *m_autoScaleAction = nullptr;
+    QAction *m_saveAction = nullptr;
+    QLabel *m_rangeLabel = nullptr;
     QDoubleSpinBox *m_minSpin = nullptr;
     QDoubleSpinBox *m_maxSpin = nullptr;
-    QPushButton *m_saveButton = nullptr;
-    QLabel *m_windowLabel = nullptr;
     QLabel *m_readout = nullptr;
 };
 

@@ -47,6 +47,12 @@ ConnectionBar::ConnectionBar(QWidget *parent) : QWidget(parent)
     m_portCombo->setSizeAdjustPolicy(QComboBox::AdjustToContents);
     m_portCombo->setMinimumContentsLength(28);
     m_portLabel->setBuddy(m_portCombo);
+    m_targetLabel = new QLabel(this);
+    m_targetLabel->setObjectName(QStringLiteral("connectedTarget"));
+    m_targetLabel->setFrameShape(QFrame::StyledPanel);
+    m_targetLabel->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_targetLabel->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Preferred);
+    m_targetLabel->hide();
 
     m_refreshButton = new QToolButton(this);
     m_refreshButton->setObjectName(QStringLiteral("refreshPortsButton"));
@@ -71,6 +77,7 @@ ConnectionBar::ConnectionBar(QWidget *parent) : QWidget(parent)
     layout->setContentsMargins(6, 4, 6, 4);
     layout->addWidget(m_portLabel);
     layout->addWidget(m_portCombo, 1);
+    layout->addWidget(m_targetLabel, 1);
     layout->addWidget(m_refreshButton);
     layout->addSpacing(12);
     layout->addWidget(m_baudLabel);
@@ -125,6 +132,28 @@ void ConnectionBar::setSessionState(device::SessionState state)
     m_portCombo->setEnabled(!busy);
     m_baudCombo->setEnabled(!busy);
     retranslateUi();
+    updateTargetLabel();
+}
+
+void ConnectionBar::setConnectedTarget(const QString &target)
+{
+    m_target = target;
+    updateTargetLabel();
+}
+
+void ConnectionBar::updateTargetLabel()
+{
+    const bool show = isBusy(m_state) && !m_target.isEmpty();
+    m_targetLabel->setText(m_target);
+    m_targetLabel->setToolTip(m_target);
+    m_targetLabel->setVisible(show);
+    m_portCombo->setVisible(!show);
+    m_portLabel->setBuddy(show ? static_cast<QWidget *>(m_targetLabel) : m_portCombo);
+}
+
+QString ConnectionBar::shownTarget() const
+{
+    return !m_targetLabel->isHidden() ? m_targetLabel->text() : m_portCombo->currentText();
 }
 
 QStringList ConnectionBar::portTexts() const

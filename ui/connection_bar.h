@@ -29,6 +29,10 @@ public:
     void selectBaud(int baud);
     // Enables the choosers and flips the button between Connect and Disconnect.
     void setSessionState(device::SessionState state);
+    // What the current tab is connected to ("Simulated HI14 (Modbus)", "/dev/ttyUSB0"): shown
+    // in place of the port list while connected, so the bar never names another device.
+    void setConnectedTarget(const QString &target);
+    QString shownTarget() const; // the connected target on show, or the selected port's text
     // Texts of every entry in the port list (for tests and diagnostics).
     QStringList portTexts() const;
 
@@ -48,6 +52,7 @@ private:
     void retranslateUi();
     void rebuildPortCombo();
     void onButtonClicked();
+    void updateTargetLabel();
     QString portText(const PortChoice &choice) const;
 
     struct PortEntry {
@@ -59,6 +64,8 @@ private:
 
     QLabel *m_portLabel = nullptr;
     QComboBox *m_portCombo = nullptr;
+    QLabel *m_targetLabel = nullptr;
+    QString m_target;
     QToolButton *m_refreshButton = nullptr;
     QLabel *m_baudLabel = nullptr;
     QComboBox *m_baudCombo = nullptr;

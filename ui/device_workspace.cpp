@@ -1,5 +1,7 @@
 #include "device_workspace.h"
 
+#include <algorithm>
+
 #include "attitude_widget.h"
 #include "model/attitude.h"
 #include "config_panel.h"
@@ -16,11 +18,15 @@
 #include <QDockWidget>
 #include <QEvent>
 #include <QHBoxLayout>
+#include <QGuiApplication>
+#include <QKeySequence>
+#include <QScreen>
+#include <QScrollBar>
 #include <QHeaderView>
 #include <QLabel>
 #include <QStatusBar>
+#include <QStyle>
 #include <QTableView>
-#include <QSplitter>
 #include <QVBoxLayout>
 
 namespace imudesk::ui {
@@ -40,7 +46,7 @@ QString rateText(double hz)
     return QString::number(hz, 'f', hz >= 10 ? 0 : 1);
 }
 
-constexpr int kLayoutVersion = 3; // 3: configuration and recording docks
+constexpr int kLayoutVersion = 4; // 4: attitude in a dock of its own, bottom panels closed
 
 } // namespace
 
@@ -63,9 +69,12 @@ DeviceWorkspace::DeviceWorkspace(QWidget *parent) : QMainWindow(parent)
     m_valuesView->setWordWrap(false);
     m_valuesView->setCornerButtonEnabled(false);
     auto *header = m_valuesView->horizontalHeader();
-    header->setSectionResizeMode(QHeaderView::Interactive);
+    // Every column in full (resizeValueColumns() sizes them and the view's minimum width):
+    // a narrow dock never hides the numbers or units behind a scroll bar.
+    header->setSectionResizeMode(QHeaderView::Fixed);
     header->setStretchLastSection(true);
     header->setDefaultAlignment(Qt::AlignLeft | Qt::AlignVCenter);
+    m_valuesView->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
     for (int r = 0; r < models::LatestValuesModel::RowCount; ++r)
         m_valuesView->setRowHidden(r, !models::LatestValuesModel::isCoreRow(models::LatestValuesModel::Row(r)));
     // Centre: the live charts.
@@ -73,20 +82,22 @@ DeviceWorkspace::DeviceWorkspace(QWidget *parent) : QMainWindow(parent)
     m_charts->setObjectName(QStringLiteral("chartPanel"));
     setCentralWidget(m_charts);
 
-    // Right: the values above the 3D attitude, in one dock with a splitter between them.
-    m_attitude = new AttitudeWidget(this);
-    m_attitude->setObjectName(QStringLiteral("attitudeWidget"));
-    auto *split = new QSplitter(Qt::Vertical, this);
-    split->setObjectName(QStringLiteral("valuesAttitudeSplitter"));
-    split->addWidget(m_valuesView);
-    split->addWidget(m_attitude);
-    split->setStretchFactor(0, 3);
-    split->setStretchFactor(1, 2);
-    split->setChildrenCollapsible(false);
+    // Right: the values, and below them the 3D attitude, each a dock of its own.
     m_valuesDock = new QDockWidget(this);
     m_valuesDock->setObjectName(QStringLiteral("valuesDock"));
-    m_valuesDock->setWidget(split);
+    m_valuesDock->setWidget(m_valuesView);
     addDockWidget(Qt::RightDockWidgetArea, m_valuesDock);
+    m_attitude = new AttitudeWidget(this);
+    m_attitude->setObjectName(QStringLiteral("attitudeWidget"));
+    m_attitudeDock = new QDockWidget(this);
+    m_attitudeDock->setObjectName(QStringLiteral("attitudeDock"));
+    m_attitudeDock->setWidget(m_attitude);
+    addDockWidget(Qt::RightDockWidgetArea, m_attitudeDock);
+    splitDockWidget(m_valuesDock, m_attitudeDock, Qt::Vertical);
+    // The right column runs the whole height: the panels below the charts never shorten the
+    // attitude view.
+    setCorner(Qt::TopRightCorner, Qt::RightDockWidgetArea);
+    setCorner(Qt::BottomRightCorner, Qt::RightDockWidgetArea);
 
     // Bottom dock: the ASCII console.
     m_console = new ConsoleWidget(this);
@@ -135,6 +146,12 @@ DeviceWorkspace::DeviceWorkspace(QWidget *parent) : QMainWindow(parent)
     tabifyDockWidget(m_rawDock, m_commandLogDock);
     tabifyDockWidget(m_commandLogDock, m_recordingDock);
     m_consoleDock->raise();
+    // The panels below the charts start closed: they open on demand (View menu, Ctrl+` for
+    // the console, an ERR reply, a recording).
+    for (QDockWidget *dock : {m_consoleDock, m_rawDock, m_commandLogDock, m_recordingDock})
+        dock->hide();
+    m_consoleDock->toggleViewAction()->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_QuoteLeft));
+    connect(m_recording, &RecordingControls::recordingStarted, this, [this] { openDock(m_recordingDock); });
 
     createStatusBar();
 
@@ -189,19 +206,44 @@ bool DeviceWorkspace::attachLink(std::unique_ptr<device::DeviceLink> link, const
     connect(m_other.get(), &device::DeviceLink::errorOccurred, this, &DeviceWorkspace::onErrorOccurred);
     m_console->setInputEnabled(false); // ASCII commands are for the HiPNUC serial link
     m_configPanel->setEnabled(false);
-    m_configDock->hide(); // the HiPNUC serial link's settings: not for this link
     m_recording->setEnabled(false);
+    for (QDockWidget *dock : serialOnlyDocks())
+        dock->hide(); // the HiPNUC serial link's panels: not for this link
     Q_EMIT titleChanged(title());
     return true;
 }
 
-void DeviceWorkspace::addLinkDock(QDockWidget *dock, Qt::DockWidgetArea area)
+void DeviceWorkspace::addLinkDock(QDockWidget *dock, LinkDockPlace place)
 {
     dock->setParent(this);
-    addDockWidget(area, dock);
     m_linkDocks << dock;
-    dock->show();
-    dock->raise();
+    m_linkDockPlaces.insert(dock, place);
+    placeLinkDock(dock);
+    if (m_shownOnce)
+        fitDocks();
+}
+
+void DeviceWorkspace::placeLinkDock(QDockWidget *dock)
+{
+    dock->setFloating(false);
+    switch (m_linkDockPlaces.value(dock)) {
+    case LinkDockPlace::OverAttitude:
+        addDockWidget(Qt::RightDockWidgetArea, dock);
+        tabifyDockWidget(m_attitudeDock, dock);
+        dock->show();
+        dock->raise();
+        break;
+    case LinkDockPlace::BehindValues:
+        addDockWidget(Qt::RightDockWidgetArea, dock);
+        tabifyDockWidget(m_valuesDock, dock);
+        dock->show();
+        m_valuesDock->raise();
+        break;
+    case LinkDockPlace::Below:
+        addDockWidget(Qt::BottomDockWidgetArea, dock);
+        dock->show();
+        break;
+    }
 }
 
 void DeviceWorkspace::detachLink()
@@ -212,6 +254,7 @@ void DeviceWorkspace::detachLink()
         removeDockWidget(dock);
         delete dock; // its widgets may refer to the link: they go first
     }
+    m_linkDockPlaces.clear();
     m_configPanel->setEnabled(true);
     m_recording->setEnabled(true);
     m_other->disconnect(this);
@@ -263,7 +306,8 @@ QList<QAction *> DeviceWorkspace::dockActions() const
 {
     QList<QAction *> actions;
     for (QDockWidget *dock : findChildren<QDockWidget *>(QString(), Qt::FindDirectChildrenOnly))
-        actions << dock->toggleViewAction();
+        if (offersDock(dock))
+            actions << dock->toggleViewAction();
     return actions;
 }
 
@@ -419,6 +463,8 @@ void DeviceWorkspace::onCommandFinished(quint64 id, const protocol::hipnuc::Asci
 {
     m_console->showReply(id, reply);
     m_commandLog->complete(id, reply);
+    if (!reply.ok())
+        openDock(m_consoleDock); // the user sees the ERR and what the device said
     // A LOG VERSION sent from the console or the Device menu refreshes the identity too.
     const QString command = QString::fromStdString(reply.command).simplified();
     if (reply.ok() && command.compare(QLatin1String("LOG VERSION"), Qt::CaseInsensitive) == 0) {
@@ -559,7 +605,8 @@ void DeviceWorkspace::retranslateUi()
     m_consoleDock->setWindowTitle(tr("Console"));
     m_rawDock->setWindowTitle(tr("Raw bytes"));
     m_commandLogDock->setWindowTitle(tr("Command log"));
-    m_valuesDock->setWindowTitle(tr("Values and attitude"));
+    m_valuesDock->setWindowTitle(tr("Values"));
+    m_attitudeDock->setWindowTitle(tr("3D attitude"));
     m_configDock->setWindowTitle(tr("Configuration"));
     m_recordingDock->setWindowTitle(tr("Recording"));
     m_valuesModel->retranslate();
@@ -572,10 +619,192 @@ void DeviceWorkspace::retranslateUi()
 void DeviceWorkspace::resizeValueColumns()
 {
     using Model = models::LatestValuesModel;
-    m_valuesView->resizeColumnToContents(Model::QuantityColumn);
+    // From the model's texts, not from the rows on screen: a row that appears later (a field
+    // only some frames carry) fits as well.
+    const QFontMetrics fm = m_valuesView->fontMetrics();
+    const QFontMetrics headerFm = m_valuesView->horizontalHeader()->fontMetrics();
+    constexpr int kCellPadding = 14; // the style's text margins and the grid line
+    const auto textWidth = [&](int column) {
+        int w = headerFm.horizontalAdvance(m_valuesModel->headerData(column, Qt::Horizontal).toString()) + 2 * kCellPadding;
+        for (int r = 0; r < Model::RowCount; ++r)
+            w = std::max(w, fm.horizontalAdvance(m_valuesModel->index(r, column).data().toString()) + kCellPadding);
+        return w;
+    };
+    m_valuesView->setColumnWidth(Model::QuantityColumn, textWidth(Model::QuantityColumn));
     // Room for the longest number; the MAIN_STATUS text elides (the flags are in the status bar too).
-    const int valueWidth = m_valuesView->fontMetrics().horizontalAdvance(QStringLiteral("-100676.0703125")) + 16;
+    const int valueWidth = fm.horizontalAdvance(QStringLiteral("-100676.0703125")) + kCellPadding;
     m_valuesView->setColumnWidth(Model::ValueColumn, valueWidth);
+    const int unitWidth = textWidth(Model::UnitColumn);
+    m_valuesView->setColumnWidth(Model::UnitColumn, unitWidth);
+    // The last column stretches with the dock: remember what the columns need, not what they got.
+    m_valuesColumnsWidth = m_valuesView->columnWidth(Model::QuantityColumn) + valueWidth + unitWidth;
+    m_valuesView->setMinimumWidth(valuesTableWidth());
+}
+
+int DeviceWorkspace::valuesTableWidth() const
+{
+    // The vertical scroll bar's width from the style: its size hint is not settled before the
+    // view is first shown.
+    int w = 2 * m_valuesView->frameWidth()
+        + m_valuesView->style()->pixelMetric(QStyle::PM_ScrollBarExtent, nullptr, m_valuesView->verticalScrollBar());
+    return w + m_valuesColumnsWidth;
+}
+
+QString DeviceWorkspace::presetName(LayoutPreset preset)
+{
+    switch (preset) {
+    case LayoutPreset::Monitor: return tr("&Monitor");
+    case LayoutPreset::Configure: return tr("C&onfigure");
+    case LayoutPreset::Calibrate: return tr("C&alibrate");
+    case LayoutPreset::Analyse: return tr("A&nalyse");
+    }
+    return QString();
+}
+
+QString DeviceWorkspace::presetKey(LayoutPreset preset)
+{
+    static const char *const keys[] = {"monitor", "configure", "calibrate", "analyse"};
+    return QString::fromLatin1(keys[int(preset)]);
+}
+
+std::optional<DeviceWorkspace::LayoutPreset> DeviceWorkspace::presetFromKey(const QString &key)
+{
+    for (int i = 0; i < kPresetCount; ++i)
+        if (presetKey(LayoutPreset(i)) == key)
+            return LayoutPreset(i);
+    return std::nullopt;
+}
+
+QList<QDockWidget *> DeviceWorkspace::serialOnlyDocks() const
+{
+    return {m_configDock, m_consoleDock, m_rawDock, m_commandLogDock, m_recordingDock};
+}
+
+bool DeviceWorkspace::offersDock(const QDockWidget *dock) const
+{
+    return !m_other || !serialOnlyDocks().contains(const_cast<QDockWidget *>(dock));
+}
+
+void DeviceWorkspace::openDock(QDockWidget *dock)
+{
+    if (!dock || !offersDock(dock))
+        return;
+    dock->show();
+    dock->raise();
+}
+
+void DeviceWorkspace::applyPreset(LayoutPreset preset)
+{
+    m_preset = preset;
+    const bool serial = !m_other;
+    // Every built-in dock back home, docked: values above the attitude on the right (the
+    // settings behind the values), the serial panels as tabs below the charts.
+    for (QDockWidget *dock : {m_valuesDock, m_attitudeDock, m_configDock}) {
+        dock->setFloating(false);
+        addDockWidget(Qt::RightDockWidgetArea, dock);
+    }
+    splitDockWidget(m_valuesDock, m_attitudeDock, Qt::Vertical);
+    tabifyDockWidget(m_valuesDock, m_configDock);
+    const QList<QDockWidget *> bottom{m_consoleDock, m_rawDock, m_commandLogDock, m_recordingDock};
+    for (QDockWidget *dock : bottom) {
+        dock->setFloating(false);
+        addDockWidget(Qt::BottomDockWidgetArea, dock);
+    }
+    for (int i = 1; i < bottom.size(); ++i)
+        tabifyDockWidget(bottom[i - 1], bottom[i]);
+
+    m_valuesDock->setVisible(true);
+    m_attitudeDock->setVisible(preset != LayoutPreset::Analyse);
+    m_configDock->setVisible(serial && preset == LayoutPreset::Configure);
+    // Configure gives the height to the charts (the settings table shows each reply; an ERR
+    // opens the console); Calibrate keeps the console for the wizards' commands.
+    m_consoleDock->setVisible(serial && preset == LayoutPreset::Calibrate);
+    m_rawDock->setVisible(serial && preset == LayoutPreset::Analyse);
+    m_commandLogDock->setVisible(serial && preset == LayoutPreset::Analyse);
+    m_recordingDock->setVisible(false);
+    if (preset == LayoutPreset::Configure) {
+        m_attitudeDock->setVisible(false); // the settings table gets the whole height
+        m_configDock->raise();
+    } else {
+        m_valuesDock->raise();
+    }
+    if (preset == LayoutPreset::Analyse)
+        m_rawDock->raise();
+    else
+        m_consoleDock->raise();
+    // The attached link's docks back in their places; Configure brings its settings forward.
+    for (QDockWidget *dock : std::as_const(m_linkDocks)) {
+        placeLinkDock(dock);
+        if (preset == LayoutPreset::Configure && m_linkDockPlaces.value(dock) == LinkDockPlace::BehindValues)
+            dock->raise();
+    }
+    if (m_shownOnce)
+        fitDocks();
+}
+
+void DeviceWorkspace::fitDocks()
+{
+    const int w = width(), h = height() - statusBar()->sizeHint().height();
+    if (w < 200 || h < 200)
+        return;
+    // Right column: the table in full, and at least a quarter of a large window so that the
+    // attitude view gets room (the settings table wants more in Configure).
+    int right = std::max(valuesTableWidth(), int(w * 0.24));
+    if (m_preset == LayoutPreset::Configure)
+        right = std::max(right, std::min(m_configPanel->sizeHint().width(), int(w * 0.45)));
+    right = std::min(right, std::max(valuesTableWidth(), int(w * 0.45)));
+    resizeDocks({m_valuesDock}, {right}, Qt::Horizontal);
+    // The panels below the charts (console, raw bytes, a link's monitor): a quarter of the height.
+    for (QDockWidget *dock : findChildren<QDockWidget *>(QString(), Qt::FindDirectChildrenOnly)) {
+        if (!dock->isHidden() && !dock->isFloating() && dockWidgetArea(dock) == Qt::BottomDockWidgetArea) {
+            const int quarter = int(h * 0.24), least = dock->minimumSizeHint().height();
+            resizeDocks({dock}, {std::clamp(dock->sizeHint().height(), std::min(least, quarter), quarter)}, Qt::Vertical);
+            break;
+        }
+    }
+    if (!m_attitudeDock->isHidden()) {
+        // The attitude takes what the core rows of the table leave, more for calibrating.
+        const int rowHeight = m_valuesView->verticalHeader()->defaultSectionSize();
+        const int table = m_valuesView->horizontalHeader()->sizeHint().height() + 16 * rowHeight + 8;
+        const double share = m_preset == LayoutPreset::Calibrate ? 0.35 : 0.6;
+        const int values = std::clamp(table, int(h * 0.3), int(h * share));
+        resizeDocks({m_valuesDock, m_attitudeDock}, {values, std::max(1, h - values)}, Qt::Vertical);
+    }
+}
+
+QStringList DeviceWorkspace::repairLayout()
+{
+    QStringList repaired;
+    // A floating dock that is off every screen: dock it again.
+    for (QDockWidget *dock : findChildren<QDockWidget *>(QString(), Qt::FindDirectChildrenOnly)) {
+        if (!dock->isFloating() || dock->isHidden())
+            continue;
+        const QScreen *screen = QGuiApplication::screenAt(dock->geometry().center());
+        if (!screen || !screen->availableGeometry().contains(dock->geometry())) {
+            dock->setFloating(false);
+            repaired << tr("%1 was floating off the screen").arg(dock->windowTitle());
+        }
+    }
+    for (QDockWidget *dock : serialOnlyDocks())
+        if (!offersDock(dock) && !dock->isHidden()) {
+            dock->hide();
+            repaired << tr("%1 is not used by this link").arg(dock->windowTitle());
+        }
+    // Squeezed areas: the charts below a third of the width, the attitude view below 120 px.
+    const bool chartsSqueezed = m_charts->width() < width() / 3;
+    const bool attitudeSqueezed = !m_attitudeDock->isHidden() && !m_attitudeDock->isFloating()
+        && std::min(m_attitude->width(), m_attitude->height()) < 120;
+    if (chartsSqueezed || attitudeSqueezed) {
+        repaired << (chartsSqueezed ? tr("the charts were squeezed") : tr("the 3D attitude view was squeezed"));
+        applyPreset(m_preset);
+        return repaired;
+    }
+    // The values table narrower than its columns (its minimum width normally prevents it).
+    if (!m_valuesDock->isHidden() && m_valuesView->width() < valuesTableWidth()) {
+        resizeDocks({m_valuesDock}, {valuesTableWidth()}, Qt::Horizontal);
+        repaired << tr("the values table was too narrow for its columns");
+    }
+    return repaired;
 }
 
 void DeviceWorkspace::changeEvent(QEvent *event)
@@ -589,14 +818,34 @@ void DeviceWorkspace::changeEvent(QEvent *event)
 void DeviceWorkspace::showEvent(QShowEvent *event)
 {
     QMainWindow::showEvent(event);
-    if (!m_shownOnce && !m_layoutRestored) {
-        // Default proportions, once the layout has a size: charts get the room.
-        resizeDocks({m_consoleDock}, {170}, Qt::Vertical);
-        resizeDocks({m_valuesDock}, {440}, Qt::Horizontal);
+    if (!m_shownOnce) {
+        m_shownOnce = true;
+        // Once the layout has a size: the preset's proportions, or a check of the restored ones.
+        if (m_layoutRestored)
+            repairLayout();
+        else
+            fitDocks();
     }
-    m_shownOnce = true;
     m_refreshTimer.start();
     refreshViews();
+}
+
+void DeviceWorkspace::resizeEvent(QResizeEvent *event)
+{
+    QMainWindow::resizeEvent(event);
+    // Until the user drags a separator, the preset's proportions follow the window (the
+    // first show may come before the window is maximised or fitted to the screen).
+    if (m_shownOnce && !m_userSized && !m_layoutRestored)
+        fitDocks();
+}
+
+bool DeviceWorkspace::event(QEvent *event)
+{
+    // A press that reaches the main window itself lands on a dock separator (its children
+    // take every other press): from then on the user's sizes are kept.
+    if (event->type() == QEvent::MouseButtonPress)
+        m_userSized = true;
+    return QMainWindow::event(event);
 }
 
 void DeviceWorkspace::hideEvent(QHideEvent *event)

@@ -7,6 +7,7 @@
 #include "preferences.h"
 #include "sim/hipnuc_simulator.h"
 
+#include <QHash>
 #include <QMainWindow>
 #include <QPointer>
 #include <QTimer>
@@ -40,6 +41,18 @@ class StatusFlagsWidget;
 class DeviceWorkspace : public QMainWindow {
     Q_OBJECT
 public:
+    // Arrangements of the docks for a task (View menu). Monitor: charts, values and the 3D
+    // attitude; Configure: the settings table and the console; Calibrate: values, a large
+    // attitude view and the console; Analyse: charts, values, raw bytes and the command log.
+    // The panels below the charts (console, raw bytes, command log, recording) start closed
+    // and open on demand; a link that has no use for them (Modbus, CAN, HEC495, replay)
+    // does not offer them.
+    enum class LayoutPreset { Monitor, Configure, Calibrate, Analyse };
+    static constexpr int kPresetCount = 4;
+    static QString presetName(LayoutPreset preset); // translated, with a mnemonic
+    static QString presetKey(LayoutPreset preset);  // "monitor", for settings
+    static std::optional<LayoutPreset> presetFromKey(const QString &key);
+
     static constexpr int kRefreshIntervalMs = 30; // default 33 Hz view clock (<= 60 Hz, >= 30 charts/s)
     static constexpr size_t kMaxSamplesPerTick = 20000; // a stalled GUI catches up without a burst
     static constexpr int kCommandTimeoutMs = 1000;
@@ -64,9 +77,13 @@ public:
         return m_other ? *m_other : static_cast<const device::DeviceLink &>(m_session);
     }
     bool hasAttachedLink() const { return m_other != nullptr; }
+    // Where a link's dock goes: as a tab in front of the 3D attitude (a view that replaces it,
+    // the compass dial), as a tab behind the values (settings, registers: the values stay in
+    // front), or below the charts (monitors and transport controls).
+    enum class LinkDockPlace { OverAttitude, BehindValues, Below };
     // A dock that belongs to the attached link (register browser, CAN monitor, replay
     // controls, ...): shown while the link is attached, deleted with it.
-    void addLinkDock(QDockWidget *dock, Qt::DockWidgetArea area);
+    void addLinkDock(QDockWidget *dock, LinkDockPlace place);
     QList<QDockWidget *> linkDocks() const { return m_linkDocks; }
     // The HiPNUC serial link's configuration panel and recording controls.
     ConfigPanel *configPanel() const { return m_configPanel; }
@@ -108,6 +125,27 @@ public:
 
     QByteArray saveLayout() const;
     bool restoreLayout(const QByteArray &state);
+    // Rearranges the docks for a task and sizes them for this workspace's size.
+    void applyPreset(LayoutPreset preset);
+    LayoutPreset preset() const { return m_preset; }
+    // Checks the arrangement against the workspace's size and content (a dock narrower than
+    // its table, an attitude view or chart area squeezed to a sliver, a floating dock off
+    // screen) and repairs it; returns what it repaired (empty when nothing was wrong).
+    // Runs by itself on the first show after restoreLayout().
+    QStringList repairLayout();
+    // The width the values table needs to show every column in full.
+    int valuesTableWidth() const;
+    // Docks, for the View menu, the presets and tests.
+    QDockWidget *valuesDock() const { return m_valuesDock; }
+    QDockWidget *attitudeDock() const { return m_attitudeDock; }
+    QDockWidget *consoleDock() const { return m_consoleDock; }
+    QDockWidget *rawBytesDock() const { return m_rawDock; }
+    QDockWidget *commandLogDock() const { return m_commandLogDock; }
+    // Whether the current link has a use for `dock` (the HiPNUC serial panels are not
+    // offered for other links).
+    bool offersDock(const QDockWidget *dock) const;
+    // Shows a dock the link offers and brings it to the front.
+    void openDock(QDockWidget *dock);
 
     void refreshViews();
 
@@ -121,9 +159,13 @@ protected:
     void changeEvent(QEvent *event) override;
     void showEvent(QShowEvent *event) override;
     void hideEvent(QHideEvent *event) override;
+    void resizeEvent(QResizeEvent *event) override;
+    bool event(QEvent *event) override;
 
 private:
     void createStatusBar();
+    void fitDocks();
+    QList<QDockWidget *> serialOnlyDocks() const;
     void retranslateUi();
     void resizeValueColumns();
     void stopSimulator();
@@ -154,8 +196,13 @@ private:
     QDockWidget *m_valuesDock = nullptr;
     ChartPanel *m_charts = nullptr;
     AttitudeWidget *m_attitude = nullptr;
+    QDockWidget *m_attitudeDock = nullptr;
+    LayoutPreset m_preset = LayoutPreset::Monitor;
     bool m_layoutRestored = false;
     bool m_shownOnce = false;
+    // The user dragged a separator: the preset's proportions no longer follow the window size.
+    bool m_userSized = false;
+    int m_valuesColumnsWidth = 0; // what the values table's columns need, without the stretch
     uint64_t m_chartSeq = 0; // next sample of the store the charts have not seen
     ConsoleWidget *m_console = nullptr;
     QDockWidget *m_consoleDock = nullptr;
@@ -169,6 +216,8 @@ private:
     RecordingControls *m_recording = nullptr;
     QDockWidget *m_recordingDock = nullptr;
     QList<QDockWidget *> m_linkDocks;
+    QHash<QDockWidget *, LinkDockPlace> m_linkDockPlaces;
+    void placeLinkDock(QDockWidget *dock);
     QLabel *m_stateLabel = nullptr;
     QLabel *m_identityLabel = nullptr;
     QLabel *m_statsLabel = nullptr;

@@ -1,6 +1,8 @@
 #include "language_switcher.h"
 
 #include <QCoreApplication>
+#include <QFontDatabase>
+#include <QApplication>
 #include <QLibraryInfo>
 
 namespace imudesk::ui {
@@ -58,6 +60,7 @@ bool LanguageSwitcher::setLanguage(const QString &language, const QString &qmDir
         if (m_app.load(QStringLiteral("imudesk_en"), qmDir))
             m_appInstalled = QCoreApplication::installTranslator(&m_app);
         m_language = lang;
+        applyFont(lang);
         return true;
     }
     QTranslator app;
@@ -75,7 +78,43 @@ bool LanguageSwitcher::setLanguage(const QString &language, const QString &qmDir
         m_qtInstalled = QCoreApplication::installTranslator(&m_qt);
     m_appInstalled = QCoreApplication::installTranslator(&m_app);
     m_language = lang;
+    applyFont(lang);
     return true;
+}
+
+QString LanguageSwitcher::cjkFamily(const QString &language)
+{
+    if (!qobject_cast<QGuiApplication *>(QCoreApplication::instance()))
+        return QString();
+    const QString lang = normalize(language);
+    QStringList candidates;
+    if (lang == QLatin1String("zh_CN"))
+        candidates = {QStringLiteral("Noto Sans CJK SC"), QStringLiteral("Source Han Sans SC"),
+                      QStringLiteral("WenQuanYi Micro Hei"), QStringLiteral("Droid Sans Fallback")};
+    else if (lang == QLatin1String("zh_TW"))
+        candidates = {QStringLiteral("Noto Sans CJK TC"), QStringLiteral("Source Han Sans TC"),
+                      QStringLiteral("AR PL UMing TW"), QStringLiteral("Droid Sans Fallback")};
+    const QStringList installed = QFontDatabase::families();
+    for (const QString &family : candidates)
+        if (installed.contains(family))
+            return family;
+    return QString();
+}
+
+void LanguageSwitcher::applyFont(const QString &lang)
+{
+    if (!qobject_cast<QGuiApplication *>(QCoreApplication::instance()))
+        return;
+    if (!m_haveBaseFont) {
+        m_baseFont = QGuiApplication::font();
+        m_haveBaseFont = true;
+    }
+    QFont font = m_baseFont;
+    const QString cjk = cjkFamily(lang);
+    if (!cjk.isEmpty())
+        font.setFamilies({cjk, m_baseFont.family()});
+    if (font != QGuiApplication::font())
+        QApplication::setFont(font);
 }
 
 void LanguageSwitcher::uninstall()

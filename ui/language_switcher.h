@@ -1,6 +1,7 @@
 #pragma once
 // Installs ImuDesk's translation for one language (English is the source language)
 // and switches it at run time; widgets retranslate on QEvent::LanguageChange.
+#include <QFont>
 #include <QLocale>
 #include <QObject>
 #include <QString>
@@ -32,9 +33,18 @@ public:
                      QString *error = nullptr);
     QString language() const { return m_language; }
 
+    // The installed CJK font family for a Chinese language (Noto Sans CJK SC or TC, or
+    // another Simplified or Traditional face); "" for English or when none is installed.
+    static QString cjkFamily(const QString &language);
+
 private:
     void uninstall();
+    // The application font for `lang`: the CJK family first where one is installed, so that
+    // Chinese text uses the glyphs of its own script rather than whatever fontconfig picks.
+    void applyFont(const QString &lang);
 
+    QFont m_baseFont;
+    bool m_haveBaseFont = false;
     QTranslator m_app;
     QTranslator m_qt;
     bool m_appInstalled = false;

@@ -55,11 +55,12 @@ bool LinkFactory::connectHec495(DeviceWorkspace &ws, const QString &port, int ba
             dial->setAttitude(s->yaw, s->pitch, s->roll);
     });
     clock->start();
-    ws.addLinkDock(makeDock(dial, QStringLiteral("headingDialDock"), tr("Compass")), Qt::RightDockWidgetArea);
+    ws.addLinkDock(makeDock(dial, QStringLiteral("headingDialDock"), tr("Compass")),
+                   DeviceWorkspace::LinkDockPlace::OverAttitude);
     auto *panel = new Hec495SettingsPanel(session);
     panel->setObjectName(QStringLiteral("hec495SettingsPanel"));
     ws.addLinkDock(makeDock(panel, QStringLiteral("hec495SettingsDock"), tr("Compass settings")),
-                   Qt::RightDockWidgetArea);
+                   DeviceWorkspace::LinkDockPlace::BehindValues);
     session->open(port, baud, address);
     return true;
 }
@@ -109,7 +110,7 @@ bool LinkFactory::connectModbus(DeviceWorkspace &ws, device::ModbusOptions optio
             *error = tr("Disconnect first, then connect to the Modbus device.");
         return false;
     }
-    ws.addLinkDock(new RegisterBrowser(session), Qt::RightDockWidgetArea);
+    ws.addLinkDock(new RegisterBrowser(session), DeviceWorkspace::LinkDockPlace::BehindValues);
     session->open(options);
     return true;
 }
@@ -146,12 +147,14 @@ bool LinkFactory::connectCan(DeviceWorkspace &ws, const device::CanSessionOption
     monitor->setObjectName(QStringLiteral("canMonitor"));
     QObject::connect(session, &device::CanSession::framesSeen, monitor, &CanMonitorWidget::addEvents);
     QObject::connect(monitor, &CanMonitorWidget::sendFrameRequested, session, &device::CanSession::sendFrame);
-    ws.addLinkDock(makeDock(monitor, QStringLiteral("canMonitorDock"), tr("CAN frames")), Qt::BottomDockWidgetArea);
+    ws.addLinkDock(makeDock(monitor, QStringLiteral("canMonitorDock"), tr("CAN frames")),
+                   DeviceWorkspace::LinkDockPlace::Below);
     auto *panel = new CanConfigPanel;
     panel->setObjectName(QStringLiteral("canConfigPanel"));
     panel->setSession(session);
     QObject::connect(session, &QObject::destroyed, panel, [panel] { panel->setSession(nullptr); });
-    ws.addLinkDock(makeDock(panel, QStringLiteral("canConfigDock"), tr("CAN configuration")), Qt::RightDockWidgetArea);
+    ws.addLinkDock(makeDock(panel, QStringLiteral("canConfigDock"), tr("CAN configuration")),
+                   DeviceWorkspace::LinkDockPlace::BehindValues);
     session->open(options);
     return true;
 }
@@ -173,7 +176,7 @@ bool LinkFactory::openReplay(DeviceWorkspace &ws, const QString &path, QString *
     auto *controls = new ReplayControls;
     controls->setObjectName(QStringLiteral("replayControls"));
     controls->setSession(session);
-    ws.addLinkDock(makeDock(controls, QStringLiteral("replayDock"), tr("Replay")), Qt::BottomDockWidgetArea);
+    ws.addLinkDock(makeDock(controls, QStringLiteral("replayDock"), tr("Replay")), DeviceWorkspace::LinkDockPlace::Below);
     session->open(path);
     return true;
 }

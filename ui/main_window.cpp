@@ -12,6 +12,8 @@
 #include "device_workspace.h"
 
 #include <QAction>
+#include <QActionGroup>
+#include <QScreen>
 #include <QDockWidget>
 #include <QApplication>
 #include <QEvent>
@@ -94,6 +96,7 @@ MainWindow::~MainWindow()
 DeviceWorkspace *MainWindow::newWorkspace()
 {
     auto *ws = new DeviceWorkspace(m_tabs);
+    ws->applyPreset(m_preset);
     ws->restoreLayout(m_workspaceLayout);
     ws->applyPreferences(m_prefs);
     const int index = m_tabs->addTab(ws, ws->title());
@@ -104,8 +107,10 @@ DeviceWorkspace *MainWindow::newWorkspace()
             m_tabs->setTabToolTip(i, title);
         }
         updateComparisonSources();
-        if (ws == currentWorkspace())
+        if (ws == currentWorkspace()) {
             updateTitle();
+            m_connectionBar->setConnectedTarget(ws->target());
+        }
     });
     connect(ws, &DeviceWorkspace::stateChanged, this, [this, ws](SessionState state) {
         if (ws != currentWorkspace())
@@ -163,6 +168,7 @@ WindowSettings MainWindow::windowSettings() const
     s.geometry = saveGeometry();
     s.windowState = saveState(WindowSettings::kVersion);
     s.workspaceState = currentWorkspace() ? currentWorkspace()->saveLayout() : m_workspaceLayout;
+    s.preset = DeviceWorkspace::presetKey(m_preset);
     s.port = m_connectionBar->selectedPort().key();
     s.baud = m_connectionBar->selectedBaud();
     return s;
@@ -194,13 +200,60 @@ void MainWindow::restoreSettings(const WindowSettings &settings)
 {
     if (settings.geometry.isEmpty() || !restoreGeometry(settings.geometry))
         resize(1280, 860);
+    fitToScreen();
     if (!settings.windowState.isEmpty())
         restoreState(settings.windowState, WindowSettings::kVersion);
     m_workspaceLayout = settings.workspaceState;
+    m_preset = DeviceWorkspace::presetFromKey(settings.preset).value_or(DeviceWorkspace::LayoutPreset::Monitor);
     const PortChoice port = PortChoice::fromKey(settings.port);
     if (port.isValid())
         m_connectionBar->selectPort(port);
     m_connectionBar->selectBaud(settings.baud);
+}
+
+bool MainWindow::fitToScreen()
+{
+    const QScreen *screen = this->screen();
+    if (!screen)
+        return false;
+    const QRect avail = screen->availableGeometry();
+    if (isMaximized() || isFullScreen())
+        return false;
+    // The frame (title bar, borders) is not known before the first show: keep a margin for it.
+    const QSize room = avail.size() - QSize(16, 48);
+    const QSize fitted = size().boundedTo(room);
+    bool changed = false;
+    if (fitted != size()) {
+        resize(fitted);
+        changed = true;
+    }
+    const QRect g = frameGeometry();
+    if (!avail.contains(g.topLeft()) || !avail.contains(QRect(g.topLeft(), fitted).bottomRight())) {
+        move(avail.topLeft() + QPoint(std::max(0, (room.width() - fitted.width()) / 2),
+                                      std::max(0, (room.height() - fitted.height()) / 2)));
+        changed = true;
+    }
+    // A small screen (a 1366x768 laptop): use all of it.
+    if (fitted.width() >= room.width() - 8 || fitted.height() >= room.height() - 8)
+        setWindowState(windowState() | Qt::WindowMaximized);
+    return changed;
+}
+
+void MainWindow::applyLayoutPreset(DeviceWorkspace::LayoutPreset preset)
+{
+    m_preset = preset;
+    for (int i = 0; i < m_presetActions.size(); ++i)
+        m_presetActions[i]->setChecked(i == int(preset));
+    if (DeviceWorkspace *ws = currentWorkspace()) {
+        ws->applyPreset(preset);
+        m_workspaceLayout = ws->saveLayout();
+    }
+}
+
+void MainWindow::resetLayout()
+{
+    m_workspaceLayout.clear();
+    applyLayoutPreset(m_preset);
 }
 
 void MainWindow::connectPort(const QString &port, int baud)
@@ -375,6 +428,7 @@ void MainWindow::onCurrentChanged()
     if (!ws)
         return;
     m_connectionBar->setSessionState(ws->state());
+    m_connectionBar->setConnectedTarget(ws->target());
     rebuildViewMenu();
     updateActions();
     updateTitle();
@@ -403,6 +457,9 @@ void MainWindow::updateActions()
 void MainWindow::rebuildViewMenu()
 {
     m_viewMenu->clear();
+    m_viewMenu->addActions(m_presetActions);
+    m_viewMenu->addAction(m_resetLayoutAction);
+    m_viewMenu->addSeparator();
     if (DeviceWorkspace *ws = currentWorkspace())
         m_viewMenu->addActions(ws->dockActions());
     m_viewMenu->addSeparator();
@@ -420,6 +477,20 @@ void MainWindow::updateComparisonSources()
 
 void MainWindow::createActions()
 {
+    auto *presetGroup = new QActionGroup(this);
+    for (int i = 0; i < DeviceWorkspace::kPresetCount; ++i) {
+        auto *action = new QAction(this);
+        action->setObjectName(QStringLiteral("layoutPreset_%1").arg(DeviceWorkspace::presetKey(DeviceWorkspace::LayoutPreset(i))));
+        action->setCheckable(true);
+        action->setShortcut(QKeySequence(Qt::ALT | Qt::SHIFT | Qt::Key(Qt::Key_1 + i)));
+        presetGroup->addAction(action);
+        connect(action, &QAction::triggered, this, [this, i] { applyLayoutPreset(DeviceWorkspace::LayoutPreset(i)); });
+        m_presetActions << action;
+    }
+    m_resetLayoutAction = new QAction(this);
+    m_resetLayoutAction->setObjectName(QStringLiteral("resetLayoutAction"));
+    connect(m_resetLayoutAction, &QAction::triggered, this, &MainWindow::resetLayout);
+
     m_newTabAction = new QAction(this);
     m_newTabAction->setObjectName(QStringLiteral("newTabAction"));
     m_newTabAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_T));
@@ -515,6 +586,17 @@ void MainWindow::retranslateUi()
     m_versionAction->setStatusTip(tr("Ask the device for its product name, firmware and serial number"));
     m_aboutAction->setText(tr("&About ImuDesk"));
     m_preferencesAction->setText(tr("&Preferences…"));
+    for (int i = 0; i < m_presetActions.size(); ++i) {
+        const auto preset = DeviceWorkspace::LayoutPreset(i);
+        m_presetActions[i]->setText(tr("Layout: %1").arg(DeviceWorkspace::presetName(preset)));
+        m_presetActions[i]->setChecked(preset == m_preset);
+    }
+    m_presetActions[0]->setStatusTip(tr("Charts, the values table and the 3D attitude"));
+    m_presetActions[1]->setStatusTip(tr("The device's settings beside the charts"));
+    m_presetActions[2]->setStatusTip(tr("The values, a large 3D attitude view and the console"));
+    m_presetActions[3]->setStatusTip(tr("Charts, the values, the raw bytes and the command log"));
+    m_resetLayoutAction->setText(tr("&Reset layout"));
+    m_resetLayoutAction->setStatusTip(tr("Put every panel of this tab back where the chosen layout has it"));
     m_tools->retranslate();
     if (auto *bar = findChild<QToolBar *>(QStringLiteral("connectionToolBar")))
         bar->setWindowTitle(tr("Connection"));

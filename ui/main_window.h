@@ -6,6 +6,7 @@
 #include "sim/hipnuc_simulator.h"
 #include "preferences.h"
 #include "window_settings.h"
+#include "device_workspace.h"
 
 #include <QMainWindow>
 #include <QPointer>
@@ -91,6 +92,14 @@ public:
     ComparisonChart *comparisonChart() const { return m_comparison; }
     QDockWidget *comparisonDock() const { return m_comparisonDock; }
 
+    // View > Layout: rearranges the current tab (and the tabs opened later) for a task.
+    void applyLayoutPreset(DeviceWorkspace::LayoutPreset preset);
+    // View > Reset layout: the current preset's arrangement afresh.
+    void resetLayout();
+    // Fits the window onto the screen it opens on (a geometry saved on a larger screen);
+    // true when it had to change something.
+    bool fitToScreen();
+
     // Saves the window as a PNG; false with a reason when it cannot be written.
     bool saveScreenshot(const QString &path, QString *error = nullptr);
 
@@ -140,6 +149,9 @@ private:
     QAction *m_versionAction = nullptr;
     QAction *m_aboutAction = nullptr;
     QAction *m_preferencesAction = nullptr;
+    QList<QAction *> m_presetActions;
+    QAction *m_resetLayoutAction = nullptr;
+    DeviceWorkspace::LayoutPreset m_preset = DeviceWorkspace::LayoutPreset::Monitor;
     Preferences m_prefs;
 
     sim::Motion m_simMotion = sim::Motion::Static;

@@ -11,10 +11,25 @@ namespace imudesk::ui {
 
 namespace {
 
-const char *const kSetStyle = "QLabel { background: #2e7d32; color: white; border-radius: 3px; padding: 0 3px; }";
+// A set flag is coloured by what it means: green good news, blue an indication, amber a
+// warning about the data. A clear flag is grey; outlined when the frame has no status word.
+const char *const kGoodStyle = "QLabel { background: #2e7d32; color: white; border-radius: 3px; padding: 0 3px; }";
+const char *const kInfoStyle = "QLabel { background: #1565c0; color: white; border-radius: 3px; padding: 0 3px; }";
+const char *const kWarningStyle =
+    "QLabel { background: #ef6c00; color: black; border-radius: 3px; padding: 0 3px; font-weight: bold; }";
 const char *const kClearStyle = "QLabel { background: #e0e0e0; color: #616161; border-radius: 3px; padding: 0 3px; }";
 const char *const kUnknownStyle =
     "QLabel { background: transparent; color: #9e9e9e; border: 1px solid #e0e0e0; border-radius: 3px; padding: 0 3px; }";
+
+const char *setFlagStyle(model::FlagSeverity severity)
+{
+    switch (severity) {
+    case model::FlagSeverity::Good: return kGoodStyle;
+    case model::FlagSeverity::Information: return kInfoStyle;
+    case model::FlagSeverity::Warning: return kWarningStyle;
+    }
+    return kInfoStyle;
+}
 
 const model::StatusFlagInfo *infoOf(int bit)
 {
@@ -86,7 +101,11 @@ void StatusFlagsWidget::updateLabels(bool force)
         if (!force && state == f.shown)
             continue;
         f.shown = state;
-        f.label->setStyleSheet(QString::fromLatin1(state == 1 ? kSetStyle : state == 0 ? kClearStyle : kUnknownStyle));
+        const auto *info = infoOf(f.bit);
+        const char *style = state == 1 ? setFlagStyle(info ? info->severity : model::FlagSeverity::Information)
+            : state == 0               ? kClearStyle
+                                       : kUnknownStyle;
+        f.label->setStyleSheet(QString::fromLatin1(style));
     }
 }
 
@@ -98,10 +117,20 @@ void StatusFlagsWidget::retranslateUi()
         if (!info)
             continue;
         const QString meaning = QCoreApplication::translate("imudesk::model::MainStatus", info->meaning);
-        f.label->setToolTip(tr("<b>%1</b> (bit %2): %3").arg(QString::fromLatin1(info->name)).arg(f.bit).arg(meaning));
+        QString kind;
+        switch (info->severity) {
+        case model::FlagSeverity::Good: kind = tr("good news when set"); break;
+        case model::FlagSeverity::Information: kind = tr("information"); break;
+        case model::FlagSeverity::Warning: kind = tr("warning when set"); break;
+        }
+        f.label->setToolTip(tr("<b>%1</b> (bit %2, %3): %4")
+                                .arg(QString::fromLatin1(info->name))
+                                .arg(f.bit)
+                                .arg(kind, meaning));
     }
-    m_title->setToolTip(tr("MAIN_STATUS flags of the latest frame: green = set, grey = clear, outlined = the frame "
-                           "carries no status word (firmware before 1.7.0, or another frame type)"));
+    m_title->setToolTip(tr("MAIN_STATUS flags of the latest frame. Set: amber = a warning about the data, blue = "
+                           "information, green = good news (magnetometer aiding the heading). Grey = clear; outlined = "
+                           "the frame carries no status word (firmware before 1.7.0, or another frame type)"));
 }
 
 } // namespace imudesk::ui

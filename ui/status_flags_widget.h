@@ -1,5 +1,5 @@
 #pragma once
-// A row of small labels, one per MAIN_STATUS flag: green when the bit is set, grey
+// A row of small labels, one per MAIN_STATUS flag: coloured by meaning when set, grey
 // when clear, dimmed when the latest frame carries no status word. Tooltips quote
 // the flag's meaning from MainStatus::definitions(), translated.
 #include <QWidget>

@@ -20,6 +20,7 @@ void WindowSettings::load(QSettings &settings)
     geometry = settings.value(key(kGeometryKey)).toByteArray();
     windowState = settings.value(key(kStateKey)).toByteArray();
     workspaceState = settings.value(key(kWorkspaceStateKey)).toByteArray();
+    preset = settings.value(key(kPresetKey)).toString();
     port = settings.value(key(kPortKey)).toString();
     bool ok = false;
     const int b = settings.value(key(kBaudKey), 0).toInt(&ok);
@@ -32,6 +33,7 @@ void WindowSettings::save(QSettings &settings) const
     settings.setValue(key(kGeometryKey), geometry);
     settings.setValue(key(kStateKey), windowState);
     settings.setValue(key(kWorkspaceStateKey), workspaceState);
+    settings.setValue(key(kPresetKey), preset);
     settings.setValue(key(kPortKey), port);
     settings.setValue(key(kBaudKey), baud);
 }

@@ -254,7 +254,13 @@ int main(int argc, char *argv[])
     }
 
     const int rc = QApplication::exec();
-    {
+    // Only a person's session is remembered: a --screenshot run or any other automation (the
+    // offscreen or minimal platform, IMUDESK_NO_SAVE_LAYOUT set) leaves the user's layout as
+    // it was, or the next start would open with the automation's window size and docks.
+    const QString platform = QGuiApplication::platformName();
+    const bool automation = parser.isSet(screenshotOption) || platform == QLatin1String("offscreen")
+        || platform == QLatin1String("minimal") || qEnvironmentVariableIsSet("IMUDESK_NO_SAVE_LAYOUT");
+    if (!automation) {
         QSettings store;
         window.windowSettings().save(store);
     }

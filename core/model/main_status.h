@@ -8,10 +8,15 @@
 
 namespace imudesk::model {
 
+// What a set bit tells the user: good news (the 9-axis heading is aided), a plain
+// indication, or a warning about the data's quality.
+enum class FlagSeverity { Good, Information, Warning };
+
 struct StatusFlagInfo {
     int bit;
     const char *name;        // manual's name, e.g. "WB_CONV"
     const char *meaning;     // what a set bit means (English; translated in ui)
+    FlagSeverity severity;   // of a set bit
 };
 
 class MainStatus {

@@ -19,7 +19,10 @@
 #include <QMouseEvent>
 #include <QRegularExpression>
 #include <QScrollArea>
-#include <QScrollBar>
+#include <QAction>
+#include <QLabel>
+#include <QLegendMarker>
+#include <QDoubleSpinBox>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QTemporaryDir>
@@ -118,8 +121,8 @@ private Q_SLOTS:
         QCOMPARE(panel.history().size(), size_t(10000));
 
         ChartView *acc = panel.chart(ChartKind::Accelerometer);
-        const int width = acc->drawnWidthPx(); // the plot area's width when it was drawn
-        QVERIFY2(width > 500 && std::abs(width - acc->plotWidthPx()) < 20, qPrintable(QString::number(width)));
+        const int width = acc->drawnWidthPx(); // the plot area's width when it was drawn (two charts a row)
+        QVERIFY2(width > 350 && std::abs(width - acc->plotWidthPx()) < 20, qPrintable(QString::number(width)));
         const QList<QPointF> &xPoints = acc->linePoints(Channel::AccX);
         QVERIFY(acc->series(Channel::AccX)->isVisible());
         // Dense data: every pixel column has points, at most 4 of them.
@@ -172,7 +175,7 @@ private Q_SLOTS:
         ChartView *acc = panel.chart(ChartKind::Accelerometer);
         ChartView *temperature = panel.chart(ChartKind::Temperature);
         QCOMPARE(acc->redrawCount(), 1);
-        QCOMPARE(temperature->redrawCount(), 0); // scrolled out of view
+        QCOMPARE(temperature->redrawCount(), 0); // not chosen: not on screen
         const int count = panel.refreshCount();
         QVERIFY(count >= 1 && count < imudesk::ui::kChartKindCount);
 
@@ -188,9 +191,11 @@ private Q_SLOTS:
         panel.refresh();
         QCOMPARE(panel.refreshCount(), 2 * count);
 
-        // Scrolled to the bottom, the temperature chart catches up.
-        panel.scrollArea()->verticalScrollBar()->setValue(panel.scrollArea()->verticalScrollBar()->maximum());
+        // Chosen in the toolbar's chart menu, the temperature chart joins the grid and catches up.
+        QVERIFY(temperature->isHidden());
+        panel.chartAction(ChartKind::Temperature)->trigger();
         QCoreApplication::processEvents();
+        QVERIFY(!temperature->isHidden());
         panel.refresh();
         QCOMPARE(temperature->redrawCount(), 1);
         const qsizetype points = temperature->linePoints(Channel::Temperature).size();
@@ -213,7 +218,8 @@ private Q_SLOTS:
         ChartView *acc = panel.chart(ChartKind::Accelerometer);
         QVERIFY(acc->linePoints(Channel::AccY).size() > 0);
         QSignalSpy changed(&panel, &ChartPanel::settingsChanged);
-        acc->channelCheckBox(Channel::AccY)->click();
+        QVERIFY(acc->legendMarker(Channel::AccY));
+        Q_EMIT acc->legendMarker(Channel::AccY)->clicked(); // a click on the legend entry
         QCOMPARE(changed.count(), 1);
         QVERIFY(!acc->isChannelVisible(Channel::AccY));
         panel.refresh();
@@ -223,8 +229,10 @@ private Q_SLOTS:
         QVERIFY(acc->linePoints(Channel::AccX).size() > 0);
         QVERIFY(panel.settings().isHidden(Channel::AccY));
         QVERIFY(!panel.settings().isHidden(Channel::AccX));
+        // The hidden axis keeps its legend entry (dimmed), to be switched back on.
+        QVERIFY(acc->legendMarker(Channel::AccY) && acc->legendMarker(Channel::AccY)->isVisible());
         // Shown again: drawn again.
-        acc->channelCheckBox(Channel::AccY)->click();
+        Q_EMIT acc->legendMarker(Channel::AccY)->clicked();
         panel.refresh();
         QVERIFY(acc->series(Channel::AccY)->isVisible());
         QVERIFY(acc->linePoints(Channel::AccY).size() > 0);
@@ -238,7 +246,7 @@ private Q_SLOTS:
         QVERIFY(QTest::qWaitForWindowExposed(&panel));
         feed(panel, 0, 5000);
         ChartView *acc = panel.chart(ChartKind::Accelerometer);
-        acc->pauseButton()->click();
+        acc->setPaused(true);
         QVERIFY(acc->isPaused());
         panel.refresh();
         const double min = acc->axisX()->min(), max = acc->axisX()->max();
@@ -256,10 +264,28 @@ private Q_SLOTS:
         QCOMPARE(acc->axisX()->max(), max);
         QCOMPARE(acc->axisX()->min(), max - 30.0);
         // Resumed: back to the newest data.
-        acc->pauseButton()->click();
+        acc->setPaused(false);
         QVERIFY(!acc->isPaused());
         panel.refresh();
         QCOMPARE(acc->axisX()->max(), (kDeviceStartMs + 7999) / 1000.0);
+
+        // The toolbar's Pause freezes every chart at once, and Run lets them all go on.
+        panel.pauseAction()->trigger();
+        QVERIFY(panel.isPaused());
+        for (ChartKind k : {ChartKind::Accelerometer, ChartKind::Gyroscope, ChartKind::Euler})
+            QVERIFY(panel.chart(k)->isPaused());
+        panel.refresh();
+        const double frozenMax = panel.chart(ChartKind::Gyroscope)->axisX()->max();
+        feed(panel, 8000, 9000);
+        QCOMPARE(panel.chart(ChartKind::Gyroscope)->axisX()->max(), frozenMax);
+        panel.pauseAction()->trigger();
+        QVERIFY(!panel.isPaused() && !acc->isPaused());
+        panel.refresh();
+        QCOMPARE(panel.chart(ChartKind::Gyroscope)->axisX()->max(), (kDeviceStartMs + 8999) / 1000.0);
+        // One window for all charts from the toolbar.
+        panel.windowCombo()->setCurrentIndex(panel.windowCombo()->findData(30.0));
+        for (ChartKind k : {ChartKind::Accelerometer, ChartKind::Gyroscope, ChartKind::Magnetometer})
+            QCOMPARE(panel.chart(k)->windowSeconds(), 30.0);
     }
 
     void savePngWritesTheChart()
@@ -298,6 +324,7 @@ private Q_SLOTS:
         feed(panel, 0, 10000);
         ChartView *acc = panel.chart(ChartKind::Accelerometer);
         QVERIFY(!acc->isCrosshairVisible());
+        QVERIFY(acc->readoutLabel()->isHidden()); // until the toolbar's cursor is on
         // x = 5.125 s on the device clock is sample 4125: phase 2 pi 4.125, sin = cos = 0.7071.
         acc->showCrosshairAt(5.125);
         QVERIFY(acc->isCrosshairVisible());
@@ -311,7 +338,10 @@ private Q_SLOTS:
         // Outside the data: no value.
         QVERIFY(gyr->readoutAt(50.0).contains(QStringLiteral("X \u2014 deg/s")));
 
-        // The mouse drives it over the plot area, and leaving hides it.
+        // With the toolbar's cursor on, the mouse drives it over the plot area, every chart's
+        // at the same time, and leaving hides it.
+        panel.cursorAction()->trigger();
+        QVERIFY(!acc->readoutLabel()->isHidden());
         const QRectF plot = acc->chart()->plotArea();
         const QPoint inside = acc->chartView()->mapFromScene(acc->chart()->mapToScene(plot.center()));
         QMouseEvent move(QEvent::MouseMove, QPointF(inside), acc->chartView()->viewport()->mapToGlobal(QPointF(inside)),
@@ -324,8 +354,16 @@ private Q_SLOTS:
         QVERIFY2(match.hasMatch(), qPrintable(acc->crosshairText()));
         const double pixelTime = (acc->axisX()->max() - acc->axisX()->min()) / plot.width();
         QVERIFY2(std::abs(match.captured(1).toDouble() - middle) <= 2 * pixelTime, qPrintable(acc->crosshairText()));
+        QVERIFY(gyr->isCrosshairVisible());
+        QCOMPARE(gyr->crosshairText().section(QStringLiteral("   "), 0, 0), match.captured(0));
+        QVERIFY(gyr->crosshairText().contains(QStringLiteral("deg/s")));
         QEvent leave(QEvent::Leave);
         QCoreApplication::sendEvent(acc->chartView()->viewport(), &leave);
+        QVERIFY(!acc->isCrosshairVisible() && !gyr->isCrosshairVisible());
+        // Cursor off: the read-out lines go, the mouse moves no crosshair.
+        panel.cursorAction()->trigger();
+        QVERIFY(acc->readoutLabel()->isHidden());
+        QCoreApplication::sendEvent(acc->chartView()->viewport(), &move);
         QVERIFY(!acc->isCrosshairVisible());
     }
 
@@ -377,6 +415,11 @@ private Q_SLOTS:
         panel.resize(1200, 900);
         panel.show();
         QVERIFY(QTest::qWaitForWindowExposed(&panel));
+        // Four charts by default; the others when chosen.
+        QVERIFY(panel.chart(ChartKind::Temperature)->isHidden());
+        QCOMPARE(panel.gridColumns(), 2);
+        for (int k = 0; k < imudesk::ui::kChartKindCount; ++k)
+            panel.setChartChosen(ChartKind(k), true);
         for (int k = 0; k < imudesk::ui::kChartKindCount; ++k)
             QVERIFY(!panel.chart(ChartKind(k))->isHidden());
         // An HI83 without a barometer.
@@ -442,15 +485,17 @@ private Q_SLOTS:
         QCOMPARE(acc->axisY()->titleText(), QStringLiteral("«%1 (%2)»").arg(QStringLiteral("«Acceleration»"), QStringLiteral("«G»")));
         QCOMPARE(acc->axisX()->titleText(), QStringLiteral("«Device time (s)»"));
         QCOMPARE(acc->chart()->title(), QStringLiteral("«Accelerometer»"));
-        QCOMPARE(acc->pauseButton()->text(), QStringLiteral("«Pause»"));
-        QCOMPARE(acc->windowCombo()->currentText(), QStringLiteral("«10 s»"));
+        QCOMPARE(panel.pauseAction()->text(), QStringLiteral("«Pause»"));
+        QCOMPARE(panel.windowCombo()->currentText(), QStringLiteral("«10 s»"));
+        QVERIFY(panel.cursorAction()->text().startsWith(QStringLiteral("«")));
+        QVERIFY(acc->autoScaleAction()->text().startsWith(QStringLiteral("«")));
         QVERIFY(panel.timeAxisCombo()->itemText(0).startsWith(QStringLiteral("«")));
         QVERIFY(panel.timeAxisCombo()->itemText(1).startsWith(QStringLiteral("«")));
         QCoreApplication::removeTranslator(&marker);
         QCoreApplication::sendPostedEvents(nullptr, QEvent::LanguageChange);
         QCoreApplication::processEvents();
         QCOMPARE(acc->axisX()->titleText(), QStringLiteral("Device time (s)"));
-        QCOMPARE(acc->windowCombo()->currentText(), QStringLiteral("10 s"));
+        QCOMPARE(panel.windowCombo()->currentText(), QStringLiteral("10 s"));
     }
 
     void fixedScale()
@@ -467,8 +512,9 @@ private Q_SLOTS:
         panel.refresh();
         QCOMPARE(acc->axisY()->min(), -4.0);
         QCOMPARE(acc->axisY()->max(), 4.0);
-        const auto *minSpin = acc->findChild<QWidget *>(QStringLiteral("minSpin"));
+        const QWidget *minSpin = acc->minSpin(); // in the chart's context menu
         QVERIFY(minSpin && minSpin->isEnabled() && minSpin->toolTip().contains(QStringLiteral("G")));
+        QVERIFY(!acc->autoScaleAction()->isChecked());
         acc->setAutoScale(true);
         panel.refresh();
         QVERIFY(acc->axisY()->max() < 4.0 && acc->axisY()->max() > 1.0);
@@ -506,9 +552,9 @@ private Q_SLOTS:
         QTemporaryDir dir;
         QSettings file(dir.filePath(QStringLiteral("charts.ini")), QSettings::IniFormat);
         ChartSettings s;
-        s.windowSeconds[size_t(ChartKind::Gyroscope)] = 120;
-        s.windowSeconds[size_t(ChartKind::Temperature)] = 600;
+        s.windowSeconds.fill(120); // the panel has one window for every chart
         s.timeAxis = TimeAxis::Host;
+        s.hiddenCharts = 1u << int(ChartKind::Magnetometer); // and the quaternion, pressure, temperature chosen
         s.hiddenChannels = imudesk::plot::channelBit(Channel::QuatW) | imudesk::plot::channelBit(Channel::MagZ);
         file.beginGroup(QStringLiteral("COM3")); // one group per device, the owner's choice
         s.save(file);
@@ -536,8 +582,10 @@ private Q_SLOTS:
         panel.setSettings(s);
         QCOMPARE(changed.count(), 0);
         QVERIFY(panel.settings() == s);
-        QCOMPARE(panel.chart(ChartKind::Gyroscope)->windowCombo()->currentData().toDouble(), 120.0);
-        QVERIFY(!panel.chart(ChartKind::Quaternion)->channelCheckBox(Channel::QuatW)->isChecked());
+        QCOMPARE(panel.windowCombo()->currentData().toDouble(), 120.0);
+        QVERIFY(!panel.chart(ChartKind::Quaternion)->isChannelVisible(Channel::QuatW));
+        QVERIFY(!panel.isChartChosen(ChartKind::Magnetometer) && panel.isChartChosen(ChartKind::Temperature));
+        QVERIFY(!panel.chartAction(ChartKind::Magnetometer)->isChecked());
     }
 
     void comparisonOverlaysDevices()

@@ -58,7 +58,7 @@ const QSet<QString> &keptWords()
         QStringLiteral("png"), QStringLiteral("csv"), QStringLiteral("json"), QStringLiteral("jsonl"),
         QStringLiteral("hex"), QStringLiteral("bin"), QStringLiteral("virtualcan"), QStringLiteral("socketcan"),
         QStringLiteral("device"), QStringLiteral("product"), QStringLiteral("serial"), QStringLiteral("date"), QStringLiteral("time"),
-        QStringLiteral("Ctrl"), QStringLiteral("Shift"), QStringLiteral("Alt"), QStringLiteral("ttyS"),
+        QStringLiteral("Ctrl"), QStringLiteral("Shift"), QStringLiteral("Alt"), QStringLiteral("Pause"), QStringLiteral("ttyS"),
         QStringLiteral("Linux"), QStringLiteral("socketcan"), QStringLiteral("peakcan"), QStringLiteral("can"),
         QStringLiteral("kbit"), QStringLiteral("bit"), QStringLiteral("pandas"), QStringLiteral("PlotJuggler"),
         QStringLiteral("Intel"), QStringLiteral("dialout"), QStringLiteral("KiB"), QStringLiteral("MiB"),

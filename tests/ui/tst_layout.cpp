@@ -1,0 +1,452 @@
+// The window as a person sees it, offscreen on a 1920x1080 screen: for every kind of
+// workspace (HiPNUC serial, HEC495, Modbus, J1939, CANopen, replay), at 1366x768 and
+// 1920x1080, in English and Simplified Chinese, nothing the user came for is hidden: no
+// scroll bar in the chart area, every column of the values table inside its viewport, the
+// 3D attitude view at least 300 px at 1920x1080, no label cut short, no widget outside the
+// window. The same after restoring a layout saved in a small automation window and one
+// saved at another size; a --screenshot run leaves the user's settings alone; the layout
+// presets and the bottom panels that open on demand.
+#include "../common/synthetic_capture.h"
+#include "attitude_widget.h"
+#include "chart_panel.h"
+#include "chart_view.h"
+#include "connection_bar.h"
+#include "device/can_session_types.h"
+#include "device/modbus_types.h"
+#include "device_workspace.h"
+#include "language_switcher.h"
+#include "link_factory.h"
+#include "main_window.h"
+#include "model/main_status.h"
+#include "record/replay_session.h"
+#include "status_flags_widget.h"
+#include "window_settings.h"
+
+#include <QAbstractScrollArea>
+#include <QAction>
+#include <QApplication>
+#include <QDir>
+#include <QDockWidget>
+#include <QFile>
+#include <QGraphicsView>
+#include <QHeaderView>
+#include <QLabel>
+#include <QMainWindow>
+#include <QProcess>
+#include <QScreen>
+#include <QScrollBar>
+#include <QSettings>
+#include <QStatusBar>
+#include <QTabBar>
+#include <QTableView>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QTextDocumentFragment>
+
+using namespace imudesk;
+using ui::DeviceWorkspace;
+using ui::MainWindow;
+
+namespace {
+
+const QSize kSmall(1366, 768);
+const QSize kLarge(1920, 1080);
+
+enum class Kind { Serial, Hec495, Modbus, J1939, CanOpen, Replay };
+const char *kindName(Kind k)
+{
+    static const char *const names[] = {"HiPNUC serial", "HEC495", "Modbus", "J1939", "CANopen", "replay"};
+    return names[int(k)];
+}
+
+bool insideScrolledContent(const QWidget *w, const QWidget *top)
+{
+    for (const QWidget *p = w->parentWidget(); p && p != top; p = p->parentWidget()) {
+        if (qobject_cast<const QGraphicsView *>(p))
+            return true;
+        if (const auto *area = qobject_cast<const QAbstractScrollArea *>(p->parentWidget()))
+            if (area->viewport() == p)
+                return true;
+    }
+    return false;
+}
+
+// Qt parks what is behind a tab (a dock that is not the current tab, a spare tab bar) outside
+// its main window instead of hiding it: not something the user can see, so not a problem.
+bool parkedByQt(const QWidget *w)
+{
+    for (const QWidget *p = w; p; p = p->parentWidget()) {
+        const auto *main = qobject_cast<const QMainWindow *>(p->parentWidget());
+        if (!main)
+            continue;
+        const bool dock = qobject_cast<const QDockWidget *>(p) && !p->isWindow();
+        if ((dock || qobject_cast<const QTabBar *>(p)) && !main->rect().intersects(p->geometry()))
+            return true;
+    }
+    return false;
+}
+
+// What a person would call broken in this window, one line each.
+QStringList layoutProblems(MainWindow &w, bool large)
+{
+    QStringList problems;
+    // Layouts catch up with a label's new text on a posted event: let them, as the screen would.
+    QCoreApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);
+    DeviceWorkspace *ws = w.currentWorkspace();
+    // The charts fill their area without any scroll bar, each chart inside it.
+    ui::ChartPanel *charts = ws->chartPanel();
+    for (const QScrollBar *bar : charts->findChildren<QScrollBar *>())
+        if (bar->isVisible())
+            problems << QStringLiteral("a scroll bar in the chart area");
+    int chartsShown = 0;
+    for (int k = 0; k < ui::kChartKindCount; ++k) {
+        const ui::ChartView *chart = charts->chart(ui::ChartKind(k));
+        if (chart->isHidden())
+            continue;
+        ++chartsShown;
+        const QRect r(chart->mapTo(charts->chartArea(), QPoint(0, 0)), chart->size());
+        if (!charts->chartArea()->rect().contains(r) || chart->height() < ui::ChartView::kMinimumChartHeight)
+            problems << QStringLiteral("chart %1 cut: %2x%3").arg(k).arg(chart->width()).arg(chart->height());
+    }
+    if (chartsShown == 0)
+        problems << QStringLiteral("no chart shown");
+    // The values table: every column inside the viewport.
+    const QTableView *values = ws->valuesView();
+    if (values->isVisible()) {
+        int columns = 0;
+        for (int c = 0; c < values->model()->columnCount(); ++c)
+            columns += values->columnWidth(c);
+        // The last column stretches: it only has to fit its contents.
+        if (values->horizontalScrollBar()->isVisible() || values->horizontalHeader()->sectionViewportPosition(2) < 0
+            || values->horizontalHeader()->sectionViewportPosition(2) + 20 > values->viewport()->width())
+            problems << QStringLiteral("values table columns (%1 px) wider than its viewport (%2 px)")
+                            .arg(columns)
+                            .arg(values->viewport()->width());
+        if (values->width() < ws->valuesTableWidth())
+            problems << QStringLiteral("values table %1 px, needs %2").arg(values->width()).arg(ws->valuesTableWidth());
+    } else {
+        problems << QStringLiteral("values table not shown");
+    }
+    // The 3D attitude: a real size on a large screen, its read-out beside the model.
+    const ui::AttitudeWidget *attitude = ws->attitudeWidget();
+    if (attitude->isVisible()) {
+        if (large && std::min(attitude->width(), attitude->height()) < 300)
+            problems << QStringLiteral("attitude view %1x%2 (< 300)").arg(attitude->width()).arg(attitude->height());
+        if (attitude->readoutRect().intersects(attitude->sceneRect()))
+            problems << QStringLiteral("attitude read-out over the model");
+    }
+    // No label cut short, no widget outside the window.
+    const QRect window = w.rect().adjusted(-1, -1, 1, 1);
+    for (QWidget *child : w.findChildren<QWidget *>()) {
+        if (!child->isVisible() || child->isWindow() || insideScrolledContent(child, &w) || parkedByQt(child))
+            continue;
+        const QRect r(child->mapTo(&w, QPoint(0, 0)), child->size());
+        if (!window.contains(r))
+            problems << QStringLiteral("%1 \"%2\" outside the window: %3,%4 %5x%6")
+                            .arg(QString::fromLatin1(child->metaObject()->className()), child->objectName())
+                            .arg(r.x())
+                            .arg(r.y())
+                            .arg(r.width())
+                            .arg(r.height());
+        const auto *label = qobject_cast<QLabel *>(child);
+        if (!label || label->wordWrap() || label->text().isEmpty())
+            continue;
+        const QString text = Qt::mightBeRichText(label->text())
+            ? QTextDocumentFragment::fromHtml(label->text()).toPlainText()
+            : QString(label->text()).remove(QLatin1Char('&'));
+        int needed = 0;
+        for (const QString &line : text.split(QLatin1Char('\n')))
+            needed = std::max(needed, label->fontMetrics().horizontalAdvance(line));
+        if (needed > label->contentsRect().width() + 1)
+            problems << QStringLiteral("label \"%1\" cut: needs %2 px, has %3").arg(text).arg(needed).arg(
+                            label->contentsRect().width());
+    }
+    return problems;
+}
+
+void showAt(MainWindow &w, const QSize &size)
+{
+    if (size == w.screen()->geometry().size()) {
+        w.showMaximized();
+    } else {
+        w.resize(size);
+        w.show();
+    }
+}
+
+} // namespace
+
+class TstLayout : public QObject {
+    Q_OBJECT
+    QTemporaryDir m_dir;
+    QString m_capture;
+    ui::LanguageSwitcher m_language;
+
+    bool connectKind(MainWindow &w, Kind kind, QString *error)
+    {
+        switch (kind) {
+        case Kind::Serial: {
+            sim::SimOptions options;
+            options.model = "HI14";
+            options.firmware = "1.7.1";
+            options.motion = sim::Motion::Tumble;
+            return w.connectSimulated(options, 0, error);
+        }
+        case Kind::Hec495: return w.connectSimulatedHec495(error);
+        case Kind::Modbus:
+            return ui::LinkFactory::connectModbus(*w.freeWorkspaceForLink(), {}, true, sim::Motion::Static, error);
+        case Kind::J1939:
+        case Kind::CanOpen: {
+            device::CanSessionOptions o;
+            o.protocol = kind == Kind::J1939 ? protocol::can::CanProtocol::J1939 : protocol::can::CanProtocol::CanOpen;
+            return ui::LinkFactory::connectCan(*w.freeWorkspaceForLink(), o, true, sim::Motion::Static, error);
+        }
+        case Kind::Replay: {
+            DeviceWorkspace *ws = w.freeWorkspaceForLink();
+            if (!ui::LinkFactory::openReplay(*ws, m_capture, error))
+                return false;
+            // As the user would: press play (a capture opens paused).
+            auto *replay = qobject_cast<record::ReplaySession *>(&ws->link());
+            if (!replay)
+                return false;
+            replay->play();
+            return true;
+        }
+        }
+        return false;
+    }
+
+    // Connects, waits for data on the views, returns the problems.
+    QStringList runKind(Kind kind, const QSize &size, const ui::WindowSettings &settings = {})
+    {
+        MainWindow w(settings);
+        w.setErrorPresenter([](const QString &) {});
+        showAt(w, size);
+        if (!QTest::qWaitForWindowExposed(&w))
+            return {QStringLiteral("window not exposed")};
+        QString error;
+        if (!connectKind(w, kind, &error))
+            return {QStringLiteral("could not connect: ") + error};
+        DeviceWorkspace *ws = w.currentWorkspace();
+        if (!QTest::qWaitFor([ws] { return ws->link().store().totalAppended() > 20; }, 15000))
+            return {QStringLiteral("no data from the %1 link").arg(QLatin1String(kindName(kind)))};
+        QTest::qWait(300); // a few ticks of the view clock
+        QStringList problems = layoutProblems(w, size.width() >= kLarge.width());
+        // The bar names what this tab is connected to.
+        if (w.connectionBar()->shownTarget() != ws->target())
+            problems << QStringLiteral("connection bar shows \"%1\", the tab is \"%2\"")
+                            .arg(w.connectionBar()->shownTarget(), ws->target());
+        // Only the panels the link supports.
+        const bool serial = kind == Kind::Serial;
+        if (ws->dockActions().contains(ws->consoleDock()->toggleViewAction()) != serial)
+            problems << QStringLiteral("console offered: %1").arg(!serial);
+        w.disconnectDevice();
+        return problems;
+    }
+
+private Q_SLOTS:
+    void initTestCase()
+    {
+        QCOMPARE(QGuiApplication::primaryScreen()->geometry().size(), kLarge);
+        m_capture = m_dir.filePath(QStringLiteral("ten_seconds.imucap"));
+        synthetic::CaptureSpec spec;
+        spec.frames = 10000;
+        QVERIFY(synthetic::writeCapture(m_capture, spec) > 0);
+    }
+
+    void everyWorkspaceKind_data()
+    {
+        QTest::addColumn<int>("kind");
+        QTest::addColumn<QSize>("size");
+        QTest::addColumn<QString>("language");
+        for (const QString &lang : {QStringLiteral("en"), QStringLiteral("zh_CN")})
+            for (const QSize &size : {kSmall, kLarge})
+                for (int k = 0; k <= int(Kind::Replay); ++k)
+                    QTest::addRow("%s %dx%d %s", kindName(Kind(k)), size.width(), size.height(), qPrintable(lang))
+                        << k << size << lang;
+    }
+
+    void everyWorkspaceKind()
+    {
+        QFETCH(int, kind);
+        QFETCH(QSize, size);
+        QFETCH(QString, language);
+        QString error;
+        QVERIFY2(m_language.setLanguage(language, QStringLiteral(IMUDESK_QM_DIR), &error), qPrintable(error));
+        const QStringList problems = runKind(Kind(kind), size);
+        QVERIFY2(problems.isEmpty(), qPrintable(problems.join(QLatin1Char('\n'))));
+    }
+
+    void restoredLayoutsAreRepaired()
+    {
+        QString error;
+        QVERIFY(m_language.setLanguage(QStringLiteral("en"), QStringLiteral(IMUDESK_QM_DIR), &error));
+        // What a screenshot run on the offscreen platform's 800x600 screen saved before:
+        // a small window with the right column squeezed.
+        ui::WindowSettings small;
+        {
+            MainWindow w;
+            w.resize(800, 600);
+            w.show();
+            QVERIFY(QTest::qWaitForWindowExposed(&w));
+            DeviceWorkspace *ws = w.currentWorkspace();
+            ws->resizeDocks({ws->valuesDock()}, {120}, Qt::Horizontal);
+            ws->resizeDocks({ws->attitudeDock()}, {60}, Qt::Vertical);
+            QCoreApplication::processEvents();
+            small = w.windowSettings();
+        }
+        for (const QSize &size : {kSmall, kLarge}) {
+            const QStringList problems = runKind(Kind::Serial, size, small);
+            QVERIFY2(problems.isEmpty(), qPrintable(problems.join(QLatin1Char('\n'))));
+        }
+        // A layout saved at 1920x1080, opened at 1366x768, and the other way round.
+        ui::WindowSettings large;
+        {
+            MainWindow w;
+            w.showMaximized();
+            QVERIFY(QTest::qWaitForWindowExposed(&w));
+            QCoreApplication::processEvents();
+            large = w.windowSettings();
+        }
+        QStringList problems = runKind(Kind::Serial, kSmall, large);
+        QVERIFY2(problems.isEmpty(), qPrintable(problems.join(QLatin1Char('\n'))));
+        ui::WindowSettings fromSmall;
+        {
+            MainWindow w;
+            w.resize(kSmall);
+            w.show();
+            QVERIFY(QTest::qWaitForWindowExposed(&w));
+            QCoreApplication::processEvents();
+            fromSmall = w.windowSettings();
+        }
+        problems = runKind(Kind::Serial, kLarge, fromSmall);
+        QVERIFY2(problems.isEmpty(), qPrintable(problems.join(QLatin1Char('\n'))));
+
+        // A window saved larger than this screen fits on it.
+        ui::WindowSettings huge;
+        {
+            MainWindow w;
+            w.setGeometry(QRect(QPoint(400, 300), QSize(2560, 1600)));
+            huge = w.windowSettings();
+        }
+        MainWindow fitted(huge);
+        const QRect avail = fitted.screen()->availableGeometry();
+        QVERIFY2(avail.contains(fitted.geometry()) || fitted.isMaximized(),
+                 qPrintable(QStringLiteral("%1,%2 %3x%4").arg(fitted.x()).arg(fitted.y()).arg(fitted.width()).arg(
+                     fitted.height())));
+    }
+
+    void screenshotRunLeavesSettingsAlone()
+    {
+        // The GUI itself, as the README runs it: --screenshot must not write the user's layout.
+        QTemporaryDir config;
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+        env.insert(QStringLiteral("XDG_CONFIG_HOME"), config.path());
+        env.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("offscreen"));
+        env.remove(QStringLiteral("IMUDESK_NO_SAVE_LAYOUT"));
+        QProcess gui;
+        gui.setProcessEnvironment(env);
+        const QString shot = m_dir.filePath(QStringLiteral("shot.png"));
+        gui.start(QStringLiteral(IMUDESK_GUI_PATH),
+                  {QStringLiteral("--demo"), QStringLiteral("--screenshot"), shot, QStringLiteral("--after"),
+                   QStringLiteral("1")});
+        QVERIFY(gui.waitForFinished(60000));
+        QCOMPARE(gui.exitCode(), 0);
+        QVERIFY(QFile::exists(shot));
+        const QString file = config.filePath(QStringLiteral("ImuDesk/ImuDesk.conf"));
+        if (QFile::exists(file)) {
+            QSettings written(file, QSettings::IniFormat);
+            QVERIFY2(!written.contains(QLatin1String(ui::WindowSettings::kStateKey))
+                         && !written.contains(QLatin1String(ui::WindowSettings::kWorkspaceStateKey))
+                         && !written.contains(QLatin1String(ui::WindowSettings::kGeometryKey)),
+                     qPrintable(written.allKeys().join(QLatin1Char(' '))));
+        }
+    }
+
+    void presetsAndPanelsOnDemand()
+    {
+        QString error;
+        QVERIFY(m_language.setLanguage(QStringLiteral("en"), QStringLiteral(IMUDESK_QM_DIR), &error));
+        MainWindow w;
+        w.setErrorPresenter([](const QString &) {});
+        showAt(w, kSmall);
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        DeviceWorkspace *ws = w.currentWorkspace();
+        // The panels below the charts start closed.
+        for (QDockWidget *dock : {ws->consoleDock(), ws->rawBytesDock(), ws->commandLogDock(), ws->recordingDock()})
+            QVERIFY2(dock->isHidden(), qPrintable(dock->objectName()));
+        QVERIFY(!ws->attitudeDock()->isHidden());
+        sim::SimOptions options;
+        options.motion = sim::Motion::Static;
+        QVERIFY2(w.connectSimulated(options, 0, &error), qPrintable(error));
+        QTRY_VERIFY_WITH_TIMEOUT(ws->state() == device::SessionState::Connected, 15000);
+        // An ERR reply opens the console, where the user sees it.
+        ws->sendConsoleCommand(QStringLiteral("NO SUCH COMMAND"));
+        QTRY_VERIFY_WITH_TIMEOUT(!ws->consoleDock()->isHidden(), 5000);
+
+        // Every preset keeps the layout whole at 1366x768; each shows what its task needs.
+        const auto presetAction = [&w](DeviceWorkspace::LayoutPreset p) {
+            return w.findChild<QAction *>(QStringLiteral("layoutPreset_") + DeviceWorkspace::presetKey(p));
+        };
+        for (int i = 0; i < DeviceWorkspace::kPresetCount; ++i) {
+            const auto preset = DeviceWorkspace::LayoutPreset(i);
+            QAction *action = presetAction(preset);
+            QVERIFY(action);
+            action->trigger();
+            QCoreApplication::processEvents();
+            QCOMPARE(ws->preset(), preset);
+            const QStringList problems = layoutProblems(w, false);
+            QVERIFY2(problems.isEmpty(), qPrintable(DeviceWorkspace::presetKey(preset) + QLatin1String(": ")
+                                                    + problems.join(QLatin1Char('\n'))));
+            QCOMPARE(ws->configDock()->isVisible(), preset == DeviceWorkspace::LayoutPreset::Configure);
+            QCOMPARE(ws->rawBytesDock()->isVisible(), preset == DeviceWorkspace::LayoutPreset::Analyse);
+            QCOMPARE(ws->consoleDock()->isHidden(), preset != DeviceWorkspace::LayoutPreset::Calibrate);
+        }
+        // Remembered with the window's settings; Reset layout puts a moved dock back.
+        QCOMPARE(w.windowSettings().preset, QStringLiteral("analyse"));
+        presetAction(DeviceWorkspace::LayoutPreset::Monitor)->trigger();
+        ws->attitudeDock()->setFloating(true);
+        w.findChild<QAction *>(QStringLiteral("resetLayoutAction"))->trigger();
+        QVERIFY(!ws->attitudeDock()->isFloating() && ws->attitudeDock()->isVisible());
+        QCOMPARE(w.windowSettings().preset, QStringLiteral("monitor"));
+        // A recording opens its panel.
+        w.disconnectDevice();
+    }
+
+    void statusFlagsColouredByMeaning()
+    {
+        ui::StatusFlagsWidget flags;
+        flags.setStatus(quint16((1u << model::MainStatus::MagDist) | (1u << model::MainStatus::MagAiding)
+                                | (1u << model::MainStatus::Static)));
+        const auto style = [&flags](const char *name) {
+            return flags.findChild<QLabel *>(QStringLiteral("flag_") + QLatin1String(name))->styleSheet();
+        };
+        // A warning, good news and information each look different; a clear flag is grey.
+        QVERIFY(style("MAG_DIST") != style("MAG_AIDING"));
+        QVERIFY(style("MAG_DIST") != style("STATIC"));
+        QVERIFY(style("MAG_AIDING") != style("STATIC"));
+        QVERIFY(style("ATT_CONV") != style("MAG_DIST"));
+        QVERIFY(flags.flagToolTip(model::MainStatus::MagDist).contains(QLatin1String("warning")));
+        QVERIFY(flags.flagToolTip(model::MainStatus::MagDist).contains(QLatin1String("disturb")));
+    }
+};
+
+int main(int argc, char **argv)
+{
+    // A 1920x1080 screen (the offscreen platform's default is 800x600).
+    QTemporaryDir dir;
+    const QString config = dir.filePath(QStringLiteral("screen.json"));
+    QFile file(config);
+    if (!file.open(QIODevice::WriteOnly))
+        return 2;
+    file.write(R"({"screens": [{"name": "layout-test", "x": 0, "y": 0, "width": 1920, "height": 1080,)"
+               R"( "logicalDpi": 96, "logicalBaseDpi": 96, "dpr": 1}]})");
+    file.close();
+    qputenv("QT_QPA_PLATFORM", "offscreen:configfile=" + config.toLocal8Bit());
+    qputenv("IMUDESK_NO_SAVE_LAYOUT", "1");
+    QApplication app(argc, argv);
+    TstLayout test;
+    return QTest::qExec(&test, argc, argv);
+}
+
+#include "tst_layout.moc"
