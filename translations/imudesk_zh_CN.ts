@@ -7109,7 +7109,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::DeviceWorkspace</name>
     <message>
-        <location filename="../ui/device_workspace.cpp" line="+299" />
+        <location filename="../ui/device_workspace.cpp" line="+311" />
         <source>New connection</source>
         <translation>新连接</translation>
     </message>
@@ -7134,7 +7134,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>模拟 %1（固件 %2）</translation>
     </message>
     <message>
-        <location line="+134" />
+        <location line="+139" />
         <source>Not connected</source>
         <translation>未连接</translation>
     </message>
@@ -7266,7 +7266,7 @@ Link load = bytes per second × 10 bits / baud rate.</source>
         <translation>3D 姿态</translation>
     </message>
     <message>
-        <location line="+47" />
+        <location line="+68" />
         <source>&amp;Monitor</source>
         <translation>监视(&amp;M)</translation>
     </message>
@@ -7286,7 +7286,7 @@ Link load = bytes per second × 10 bits / baud rate.</source>
         <translation>分析(&amp;N)</translation>
     </message>
     <message>
-        <location line="+126" />
+        <location line="+127" />
         <source>%1 was floating off the screen</source>
         <translation>%1 浮动在屏幕之外</translation>
     </message>
@@ -7296,22 +7296,27 @@ Link load = bytes per second × 10 bits / baud rate.</source>
         <translation>此连接不使用 %1</translation>
     </message>
     <message>
-        <location line="+7" />
+        <location line="+9" />
         <source>the charts were squeezed</source>
         <translation>图表被挤压</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+1" />
         <source>the 3D attitude view was squeezed</source>
         <translation>3D 姿态视图被挤压</translation>
     </message>
     <message>
-        <location line="+7" />
+        <location line="+1" />
+        <source>the values table was squeezed</source>
+        <translation>数值表被挤压</translation>
+    </message>
+    <message>
+        <location line="+9" />
         <source>the values table was too narrow for its columns</source>
         <translation>数值表太窄，无法容纳其各列</translation>
     </message>
     <message>
-        <location line="-195" />
+        <location line="-223" />
         <source>Configuration</source>
         <translation>配置</translation>
     </message>
@@ -8494,8 +8499,8 @@ Samples: %3</source>
     </message>
     <message>
         <location line="+1" />
-        <source>The values, a large 3D attitude view and the console</source>
-        <translation>数值、大尺寸 3D 姿态视图和控制台</translation>
+        <source>A large 3D attitude view and the console</source>
+        <translation>大尺寸 3D 姿态视图和控制台</translation>
     </message>
     <message>
         <location line="+1" />

@@ -7109,7 +7109,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::DeviceWorkspace</name>
     <message>
-        <location filename="../ui/device_workspace.cpp" line="+299" />
+        <location filename="../ui/device_workspace.cpp" line="+311" />
         <source>New connection</source>
         <translation>新連線</translation>
     </message>
@@ -7134,7 +7134,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>模擬 %1（韌體 %2）</translation>
     </message>
     <message>
-        <location line="+134" />
+        <location line="+139" />
         <source>Not connected</source>
         <translation>未連線</translation>
     </message>
@@ -7266,7 +7266,7 @@ Link load = bytes per second × 10 bits / baud rate.</source>
         <translation>3D 姿態</translation>
     </message>
     <message>
-        <location line="+47" />
+        <location line="+68" />
         <source>&amp;Monitor</source>
         <translation>監看(&amp;M)</translation>
     </message>
@@ -7286,7 +7286,7 @@ Link load = bytes per second × 10 bits / baud rate.</source>
         <translation>分析(&amp;N)</translation>
     </message>
     <message>
-        <location line="+126" />
+        <location line="+127" />
         <source>%1 was floating off the screen</source>
         <translation>%1 浮動在螢幕之外</translation>
     </message>
@@ -7296,22 +7296,27 @@ Link load = bytes per second × 10 bits / baud rate.</source>
         <translation>此連線不使用 %1</translation>
     </message>
     <message>
-        <location line="+7" />
+        <location line="+9" />
         <source>the charts were squeezed</source>
         <translation>圖表被擠壓</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+1" />
         <source>the 3D attitude view was squeezed</source>
         <translation>3D 姿態檢視被擠壓</translation>
     </message>
     <message>
-        <location line="+7" />
+        <location line="+1" />
+        <source>the values table was squeezed</source>
+        <translation>數值表被擠壓</translation>
+    </message>
+    <message>
+        <location line="+9" />
         <source>the values table was too narrow for its columns</source>
         <translation>數值表太窄，無法容納其各欄</translation>
     </message>
     <message>
-        <location line="-195" />
+        <location line="-223" />
         <source>Configuration</source>
         <translation>配置</translation>
     </message>
@@ -8494,8 +8499,8 @@ Samples: %3</source>
     </message>
     <message>
         <location line="+1" />
-        <source>The values, a large 3D attitude view and the console</source>
-        <translation>數值、大尺寸 3D 姿態檢視和主控台</translation>
+        <source>A large 3D attitude view and the console</source>
+        <translation>大尺寸 3D 姿態檢視和主控台</translation>
     </message>
     <message>
         <location line="+1" />

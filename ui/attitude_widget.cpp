@@ -226,7 +226,7 @@ QString AttitudeWidget::readoutText() const
 
 QPointF AttitudeWidget::screenPosition(const model::Vec3 &enu) const
 {
-    const View v(m_azimuth, m_elevation, sceneRect(), m_quat, !m_hasData);
+    const View v(m_azimuth, m_elevation, modelArea(), m_quat, !m_hasData);
     return v.project(Vector3d(enu.x, enu.y, enu.z));
 }
 
@@ -239,6 +239,18 @@ QRectF AttitudeWidget::sceneRect() const
     return fit(beside) >= fit(below) ? beside : below;
 }
 
+QRectF AttitudeWidget::modelArea() const
+{
+    // The world axes' names stand beyond the grid's corners: keep room for them at the sides,
+    // so that "U (z)" is never cut at the edge.
+    double label = 0;
+    for (const QStaticText &t : m_worldLabels)
+        label = std::max(label, t.size().width());
+    const QRectF scene = sceneRect();
+    const double inset = std::min(0.6 * label, 0.15 * scene.width());
+    return scene.adjusted(inset, 0, -inset, 0);
+}
+
 QSize AttitudeWidget::sizeHint() const
 {
     return QSize(420, 340);
@@ -246,7 +258,7 @@ QSize AttitudeWidget::sizeHint() const
 
 QSize AttitudeWidget::minimumSizeHint() const
 {
-    return QSize(200, 160);
+    return QSize(200, 130); // the model and its read-out side by side, on a short laptop screen too
 }
 
 void AttitudeWidget::retranslate()
@@ -332,7 +344,7 @@ void AttitudeWidget::paintEvent(QPaintEvent *)
     p.setRenderHint(QPainter::Antialiasing);
     p.fillRect(rect(), palette().color(QPalette::Base));
 
-    const View v(m_azimuth, m_elevation, sceneRect(), m_quat, !m_hasData);
+    const View v(m_azimuth, m_elevation, modelArea(), m_quat, !m_hasData);
     // Painter's algorithm: ground, far half of the axes, body faces back to front, near
     // half of the axes, then all labels and the read-outs on top. With the camera under
     // the ground plane the ground is in front of the module.

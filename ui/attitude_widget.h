@@ -86,6 +86,8 @@ public:
     // the widget is wide, below it when it is tall; the two never overlap.
     QRectF readoutRect() const { return m_panel; }
     QRectF sceneRect() const;
+    // Where the model, its grid and axes are fitted: the scene less room for the axis names.
+    QRectF modelArea() const;
 
     QSize sizeHint() const override;
     QSize minimumSizeHint() const override;

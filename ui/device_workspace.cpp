@@ -35,6 +35,18 @@ using device::SessionState;
 
 namespace {
 
+// The rows of the values table. Before any data: the core quantities. Once data arrived: the
+// fields this link has sent (a compass sends no quaternion, a HI83 sends its position). The
+// status word and the frame type stay in the status bar (the flags coloured by meaning, the
+// frame type with its rate), so the table fits without a scroll bar beside the 3D attitude.
+bool rowInTable(models::LatestValuesModel::Row row, bool everSeen, bool anyData)
+{
+    using Model = models::LatestValuesModel;
+    if (row == Model::StatusFlags || row == Model::FrameType)
+        return false;
+    return anyData ? everSeen : Model::isCoreRow(row);
+}
+
 bool busyState(SessionState s)
 {
     return s == SessionState::Opening || s == SessionState::Detecting || s == SessionState::Connected
@@ -62,7 +74,7 @@ DeviceWorkspace::DeviceWorkspace(QWidget *parent) : QMainWindow(parent)
     m_valuesView->setObjectName(QStringLiteral("valuesView"));
     m_valuesView->setModel(m_valuesModel);
     m_valuesView->verticalHeader()->hide();
-    m_valuesView->verticalHeader()->setDefaultSectionSize(m_valuesView->fontMetrics().height() + 6);
+    m_valuesView->verticalHeader()->setDefaultSectionSize(m_valuesView->fontMetrics().height() + 3);
     m_valuesView->setAlternatingRowColors(true);
     m_valuesView->setSelectionBehavior(QAbstractItemView::SelectRows);
     m_valuesView->setEditTriggers(QAbstractItemView::NoEditTriggers);
@@ -76,7 +88,7 @@ DeviceWorkspace::DeviceWorkspace(QWidget *parent) : QMainWindow(parent)
     header->setDefaultAlignment(Qt::AlignLeft | Qt::AlignVCenter);
     m_valuesView->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
     for (int r = 0; r < models::LatestValuesModel::RowCount; ++r)
-        m_valuesView->setRowHidden(r, !models::LatestValuesModel::isCoreRow(models::LatestValuesModel::Row(r)));
+        m_valuesView->setRowHidden(r, !rowInTable(models::LatestValuesModel::Row(r), false, false));
     // Centre: the live charts.
     m_charts = new ChartPanel(this);
     m_charts->setObjectName(QStringLiteral("chartPanel"));
@@ -415,13 +427,19 @@ void DeviceWorkspace::refreshViews()
         m_attitude->setQuaternion(latest->quat);
     else if (latest && latest->has(model::FieldEuler)) // links that send angles only (HEC495, Modbus)
         m_attitude->setQuaternion(model::quatFromEnu312(model::Euler{latest->roll, latest->pitch, latest->yaw}));
-    // Rows of fields only some frame types carry appear once such a frame arrived.
+    // The rows follow what the link sends (see rowInTable).
+    bool rowsChanged = false;
+    const bool anyData = m_valuesModel->everSeen(models::LatestValuesModel::FrameType);
     for (int r = 0; r < models::LatestValuesModel::RowCount; ++r) {
         const auto row = models::LatestValuesModel::Row(r);
-        const bool hide = !models::LatestValuesModel::isCoreRow(row) && !m_valuesModel->everSeen(row);
-        if (m_valuesView->isRowHidden(r) != hide)
+        const bool hide = !rowInTable(row, m_valuesModel->everSeen(row), anyData);
+        if (m_valuesView->isRowHidden(r) != hide) {
             m_valuesView->setRowHidden(r, hide);
+            rowsChanged = true;
+        }
     }
+    if (rowsChanged && m_shownOnce && !m_userSized && !m_layoutRestored)
+        fitDocks(); // room for the new rows
     m_flags->setStatus(latest && latest->has(model::FieldMainStatus) ? std::optional<quint16>(latest->mainStatus)
                                                                      : std::nullopt);
 }
@@ -650,6 +668,27 @@ int DeviceWorkspace::valuesTableWidth() const
     return w + m_valuesColumnsWidth;
 }
 
+int DeviceWorkspace::valuesTableHeight() const
+{
+    int rows = 0;
+    for (int r = 0; r < m_valuesModel->rowCount(); ++r)
+        rows += m_valuesView->isRowHidden(r) ? 0 : 1;
+    const int rowsHeight = rows * m_valuesView->verticalHeader()->defaultSectionSize();
+    // Laid out: what the dock spends besides the rows (title bar, tab bar, header, frame), as
+    // measured. Before that: an estimate of it.
+    // The tab bar of docks tabbed with the values is the main window's, not the dock's.
+    bool tabbed = false;
+    for (const QDockWidget *other : tabifiedDockWidgets(m_valuesDock))
+        tabbed = tabbed || !other->isHidden();
+    const int tabBar = tabbed ? m_valuesDock->fontMetrics().height() + 14 : 0;
+    constexpr int kSlack = 20; // the separator, the layout's spacing and rounding
+    if (m_valuesDock->isVisible() && m_valuesView->viewport()->height() > 0)
+        return m_valuesDock->height() - m_valuesView->viewport()->height() + rowsHeight + tabBar + kSlack;
+    const int title = m_valuesDock->style()->pixelMetric(QStyle::PM_TitleBarHeight, nullptr, m_valuesDock);
+    return title + m_valuesView->horizontalHeader()->sizeHint().height() + rowsHeight + 2 * m_valuesView->frameWidth()
+        + tabBar + kSlack;
+}
+
 QString DeviceWorkspace::presetName(LayoutPreset preset)
 {
     switch (preset) {
@@ -713,7 +752,8 @@ void DeviceWorkspace::applyPreset(LayoutPreset preset)
     for (int i = 1; i < bottom.size(); ++i)
         tabifyDockWidget(bottom[i - 1], bottom[i]);
 
-    m_valuesDock->setVisible(true);
+    // Calibrate gives the whole right column to the 3D attitude (the wizards show their own figures).
+    m_valuesDock->setVisible(preset != LayoutPreset::Calibrate);
     m_attitudeDock->setVisible(preset != LayoutPreset::Analyse);
     m_configDock->setVisible(serial && preset == LayoutPreset::Configure);
     // Configure gives the height to the charts (the settings table shows each reply; an ERR
@@ -762,12 +802,12 @@ void DeviceWorkspace::fitDocks()
             break;
         }
     }
-    if (!m_attitudeDock->isHidden()) {
-        // The attitude takes what the core rows of the table leave, more for calibrating.
-        const int rowHeight = m_valuesView->verticalHeader()->defaultSectionSize();
-        const int table = m_valuesView->horizontalHeader()->sizeHint().height() + 16 * rowHeight + 8;
-        const double share = m_preset == LayoutPreset::Calibrate ? 0.35 : 0.6;
-        const int values = std::clamp(table, int(h * 0.3), int(h * share));
+    if (!m_attitudeDock->isHidden() && !m_valuesDock->isHidden()) {
+        // The attitude takes what the rows of the table leave.
+        // The values need every row in view; the attitude keeps at least 165 px (a quarter of
+        // a short window).
+        const int attitudeLeast = std::min(165, h / 4);
+        const int values = std::clamp(valuesTableHeight(), int(h * 0.3), h - attitudeLeast);
         resizeDocks({m_valuesDock, m_attitudeDock}, {values, std::max(1, h - values)}, Qt::Vertical);
     }
 }
@@ -794,8 +834,14 @@ QStringList DeviceWorkspace::repairLayout()
     const bool chartsSqueezed = m_charts->width() < width() / 3;
     const bool attitudeSqueezed = !m_attitudeDock->isHidden() && !m_attitudeDock->isFloating()
         && std::min(m_attitude->width(), m_attitude->height()) < 120;
-    if (chartsSqueezed || attitudeSqueezed) {
-        repaired << (chartsSqueezed ? tr("the charts were squeezed") : tr("the 3D attitude view was squeezed"));
+    const bool valuesSqueezed = !m_valuesDock->isHidden() && !m_valuesDock->isFloating()
+        && m_valuesView->viewport()->height() < m_valuesView->verticalHeader()->length() / 2;
+    if (chartsSqueezed || attitudeSqueezed || valuesSqueezed) {
+        repaired << (chartsSqueezed     ? tr("the charts were squeezed")
+                         : attitudeSqueezed ? tr("the 3D attitude view was squeezed")
+                                            : tr("the values table was squeezed"));
+        // The preset's proportions, following the window from now on.
+        m_layoutRestored = false;
         applyPreset(m_preset);
         return repaired;
     }

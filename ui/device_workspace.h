@@ -134,6 +134,8 @@ public:
     // Runs by itself on the first show after restoreLayout().
     QStringList repairLayout();
     // The width the values table needs to show every column in full.
+    // The height the values dock needs for every row it shows, without a scroll bar.
+    int valuesTableHeight() const;
     int valuesTableWidth() const;
     // Docks, for the View menu, the presets and tests.
     QDockWidget *valuesDock() const { return m_valuesDock; }

@@ -593,7 +593,7 @@ void MainWindow::retranslateUi()
     }
     m_presetActions[0]->setStatusTip(tr("Charts, the values table and the 3D attitude"));
     m_presetActions[1]->setStatusTip(tr("The device's settings beside the charts"));
-    m_presetActions[2]->setStatusTip(tr("The values, a large 3D attitude view and the console"));
+    m_presetActions[2]->setStatusTip(tr("A large 3D attitude view and the console"));
     m_presetActions[3]->setStatusTip(tr("Charts, the values, the raw bytes and the command log"));
     m_resetLayoutAction->setText(tr("&Reset layout"));
     m_resetLayoutAction->setStatusTip(tr("Put every panel of this tab back where the chosen layout has it"));

@@ -18,6 +18,7 @@
 #include "link_factory.h"
 #include "main_window.h"
 #include "model/main_status.h"
+#include "models/latest_values_model.h"
 #include "record/replay_session.h"
 #include "status_flags_widget.h"
 #include "window_settings.h"
@@ -112,7 +113,7 @@ QStringList layoutProblems(MainWindow &w, bool large)
         problems << QStringLiteral("no chart shown");
     // The values table: every column inside the viewport.
     const QTableView *values = ws->valuesView();
-    if (values->isVisible()) {
+    if (values->isVisible() && !parkedByQt(values)) {
         int columns = 0;
         for (int c = 0; c < values->model()->columnCount(); ++c)
             columns += values->columnWidth(c);
@@ -122,9 +123,14 @@ QStringList layoutProblems(MainWindow &w, bool large)
             problems << QStringLiteral("values table columns (%1 px) wider than its viewport (%2 px)")
                             .arg(columns)
                             .arg(values->viewport()->width());
+        if (values->verticalScrollBar()->isVisible())
+            problems << QStringLiteral("values table scrolls: %1 px for %2 px of rows")
+                            .arg(values->viewport()->height())
+                            .arg(values->verticalHeader()->length());
         if (values->width() < ws->valuesTableWidth())
             problems << QStringLiteral("values table %1 px, needs %2").arg(values->width()).arg(ws->valuesTableWidth());
-    } else {
+    } else if (ws->preset() == DeviceWorkspace::LayoutPreset::Monitor
+               || ws->preset() == DeviceWorkspace::LayoutPreset::Analyse) {
         problems << QStringLiteral("values table not shown");
     }
     // The 3D attitude: a real size on a large screen, its read-out beside the model.
@@ -236,6 +242,10 @@ class TstLayout : public QObject {
         if (w.connectionBar()->shownTarget() != ws->target())
             problems << QStringLiteral("connection bar shows \"%1\", the tab is \"%2\"")
                             .arg(w.connectionBar()->shownTarget(), ws->target());
+        // The values table lists what this link sends: a compass has no quaternion.
+        if (ws->valuesView()->isRowHidden(models::LatestValuesModel::QuatW) != (kind == Kind::Hec495))
+            problems << QStringLiteral("quaternion row shown: %1").arg(!ws->valuesView()->isRowHidden(
+                            models::LatestValuesModel::QuatW));
         // Only the panels the link supports.
         const bool serial = kind == Kind::Serial;
         if (ws->dockActions().contains(ws->consoleDock()->toggleViewAction()) != serial)
