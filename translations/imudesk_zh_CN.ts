@@ -3327,7 +3327,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>SphereCoverage</name>
     <message>
-        <location filename="../core/calib/sphere_coverage.cpp" line="+120" />
+        <location filename="../core/calib/sphere_coverage.cpp" line="+139" />
         <source>Turn the module slowly about each of its axes: no direction is covered yet</source>
         <translation>请绕模块的各轴缓慢转动：尚未覆盖任何方向</translation>
     </message>
@@ -5431,7 +5431,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::AttitudeResetWizard</name>
     <message>
-        <location filename="../ui/attitude_reset_wizard.cpp" line="+21" />
+        <location filename="../ui/attitude_reset_wizard.cpp" line="+22" />
         <source>Heading reset: the current heading becomes 0. Keep the module still. (Firmware 1.7.1 and later.)</source>
         <translation>航向角清零：当前航向角变为 0。请保持模块静止。（固件 1.7.1 及以上版本。）</translation>
     </message>
@@ -5456,7 +5456,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>姿态复位与调平</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+4" />
         <source>What to reset</source>
         <translation>复位内容</translation>
     </message>
@@ -5551,7 +5551,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::AttitudeWidget</name>
     <message>
-        <location filename="../ui/attitude_widget.cpp" line="+254" />
+        <location filename="../ui/attitude_widget.cpp" line="+266" />
         <source>X</source>
         <translation>X</translation>
     </message>
@@ -7134,7 +7134,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>模拟 %1（固件 %2）</translation>
     </message>
     <message>
-        <location line="+139" />
+        <location line="+164" />
         <source>Not connected</source>
         <translation>未连接</translation>
     </message>
@@ -7405,18 +7405,18 @@ Link load = bytes per second × 10 bits / baud rate.</source>
 <context>
     <name>imudesk::ui::FirmwareUpdateDialog</name>
     <message>
-        <location filename="../ui/firmware_update_dialog.cpp" line="+32" />
+        <location filename="../ui/firmware_update_dialog.cpp" line="+37" />
         <source>unknown</source>
         <translation>未知</translation>
     </message>
     <message>
         <location line="+10" />
-        <location line="+159" />
+        <location line="+166" />
         <source>Firmware update on %1</source>
         <translation>%1 上的固件升级</translation>
     </message>
     <message>
-        <location line="-154" />
+        <location line="-161" />
         <source>Serial port %1 (KBOOT bootloader)</source>
         <translation>串口 %1（KBOOT 引导程序）</translation>
     </message>
@@ -7444,6 +7444,16 @@ Link load = bytes per second × 10 bits / baud rate.</source>
         <location line="+1" />
         <source>Choose...</source>
         <translation>选择...</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Demo image</source>
+        <translation>演示固件</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Simulated module only: write an application image of firmware 1.7.2 that the simulated bootloader accepts, and choose it</source>
+        <translation>仅限模拟模块：写入一个固件版本 1.7.2 的应用程序映像（模拟引导程序可接受）并选中它</translation>
     </message>
     <message>
         <location line="+4" />
@@ -7512,12 +7522,12 @@ Link load = bytes per second × 10 bits / baud rate.</source>
     </message>
     <message>
         <location line="+2" />
-        <location line="+250" />
+        <location line="+275" />
         <source>Close</source>
         <translation>关闭</translation>
     </message>
     <message>
-        <location line="-216" />
+        <location line="-240" />
         <source>CAN bus</source>
         <translation>CAN 总线</translation>
     </message>
@@ -7577,7 +7587,12 @@ Link load = bytes per second × 10 bits / baud rate.</source>
         <translation>通过 CAN 更新固件</translation>
     </message>
     <message>
-        <location line="+25" />
+        <location line="+38" />
+        <source>The demo image could not be written to %1: %2. Free some space in the temporary folder and try again.</source>
+        <translation>无法将演示固件写入 %1：%2。请清理临时文件夹的空间后重试。</translation>
+    </message>
+    <message>
+        <location line="+11" />
         <source>Choose the firmware</source>
         <translation>选择固件</translation>
     </message>
@@ -7658,12 +7673,12 @@ Link load = bytes per second × 10 bits / baud rate.</source>
 <context>
     <name>imudesk::ui::GyroScaleWizard</name>
     <message>
-        <location filename="../ui/gyro_scale_wizard.cpp" line="+22" />
+        <location filename="../ui/gyro_scale_wizard.cpp" line="+23" />
         <source>Gyro scale factor calibration</source>
         <translation>陀螺仪标度因数校准</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+4" />
         <source>Preparation</source>
         <translation>准备工作</translation>
     </message>
@@ -7804,7 +7819,7 @@ Link load = bytes per second × 10 bits / baud rate.</source>
 <context>
     <name>imudesk::ui::Hec495CalibrationWizard</name>
     <message>
-        <location filename="../ui/hec495_calibration_wizard.cpp" line="+36" />
+        <location filename="../ui/hec495_calibration_wizard.cpp" line="+37" />
         <source>Suits: the compass and its mount can be turned to the poses of the table. Good results; in a complex magnetic environment slightly less accurate than all-orientation. Limit: pitch must exceed 45 deg and roll 30 deg. The manual recommends trying this method first.</source>
         <translation>适用：罗盘及其安装结构能转到表中的各个姿态。效果良好；在复杂磁场环境中精度略低于全姿态校准。限制：俯仰角须超过 45 deg，横滚角须超过 30 deg。手册建议优先尝试此方法。</translation>
     </message>
@@ -8189,7 +8204,7 @@ Method: %3</source>
 <context>
     <name>imudesk::ui::MagCalibrationWizard</name>
     <message>
-        <location filename="../ui/mag_calibration_wizard.cpp" line="+39" />
+        <location filename="../ui/mag_calibration_wizard.cpp" line="+53" />
         <source>Magnetometer calibration</source>
         <translation>地磁校准</translation>
     </message>
@@ -8218,16 +8233,46 @@ If the module is mounted on a PCB, in a housing or on a robot, calibrate it toge
     </message>
     <message>
         <location line="+1" />
-        <source>The calibration needs the 9-axis (AHRS) mode, CONFIG ATT MODE 1 (the factory setting). If the module runs in a 6-axis mode, switch it: ImuDesk sends CONFIG ATT MODE 1, SAVECONFIG and REBOOT.</source>
-        <translation>校准需要 9 轴（AHRS）模式，即 CONFIG ATT MODE 1（出厂设置）。如果模块运行在 6 轴模式，请切换：ImuDesk 会发送 CONFIG ATT MODE 1、SAVECONFIG 和 REBOOT。</translation>
+        <source>The calibration needs the 9-axis (AHRS) mode, CONFIG ATT MODE 1 (the factory setting). ImuDesk reads the module's mode first and offers a switch only when it runs in a 6-axis mode; the switch sends CONFIG ATT MODE 1, SAVECONFIG and REBOOT.</source>
+        <translation>校准需要 9 轴（AHRS）模式，即 CONFIG ATT MODE 1（出厂设置）。ImuDesk 先读取模块的模式，仅当其运行在 6 轴模式时才提供切换；切换会发送 CONFIG ATT MODE 1、SAVECONFIG 和 REBOOT。</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+6" />
         <source>Switch to 9-axis mode</source>
         <translation>切换到 9 轴模式</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+19" />
+        <source>The module did not take ATT MODE 1 (%1). Check the connection and try again.</source>
+        <translation>模块未接受 ATT MODE 1（%1）。请检查连接后重试。</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>read back differs</source>
+        <translation>回读值不一致</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>ATT MODE 1 set; saving it (SAVECONFIG)…</source>
+        <translation>已设置 ATT MODE 1；正在保存（SAVECONFIG）…</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>%1 failed: %2. Try again, or save and restart from the Configuration panel.</source>
+        <translation>%1 失败：%2。请重试，或在配置面板中保存并重启。</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>Saved; restarting the module (REBOOT)…</source>
+        <translation>已保存；正在重启模块（REBOOT）…</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>The module restarts in the 9-axis mode; reading it back…</source>
+        <translation>模块以 9 轴模式重启；正在回读…</translation>
+    </message>
+    <message>
+        <location line="+6" />
         <source>Environment check</source>
         <translation>环境检查</translation>
     </message>
@@ -8247,7 +8292,12 @@ If the module is mounted on a PCB, in a housing or on a robot, calibrate it toge
         <translation>保持模块位置不变，缓慢转动（20-100 deg/s），绕每个轴至少转一整圈，直到球面全部变绿。通常需要 30-60 s。</translation>
     </message>
     <message>
-        <location line="+6" />
+        <location line="+14" />
+        <source>Coverage: share of the 80 sphere cells the field has pointed into. Largest gap: radius of the biggest uncovered area. Raw |B|: the field strength before calibration (its spread is the iron the fit removes). Fit: the field and the residual of ImuDesk's fit on the samples so far, refreshed every second.</source>
+        <translation>覆盖率：磁场方向已覆盖的 80 个球面单元的比例。最大空缺：最大未覆盖区域的半径。原始 |B|：校准前的磁场强度（其离散程度即拟合要消除的铁磁干扰）。拟合：ImuDesk 对当前样本拟合得到的磁场强度和残差，每秒刷新。</translation>
+    </message>
+    <message>
+        <location line="+7" />
         <source>Start the device's calibration</source>
         <translation>启动设备校准</translation>
     </message>
@@ -8262,7 +8312,7 @@ If the module is mounted on a PCB, in a housing or on a robot, calibrate it toge
         <translation>结果</translation>
     </message>
     <message>
-        <location line="+17" />
+        <location line="+24" />
         <source>Heading check</source>
         <translation>航向角检查</translation>
     </message>
@@ -8279,7 +8329,67 @@ If the module is mounted on a PCB, in a housing or on a robot, calibrate it toge
 %3</translation>
     </message>
     <message>
-        <location line="+87" />
+        <location line="+24" />
+        <source>Reading the working mode from the module (LOG COMCONFIG)…</source>
+        <translation>正在从模块读取工作模式（LOG COMCONFIG）…</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>The working mode could not be read: %1. Check the connection, then press Back and Next to read it again, or switch to the 9-axis mode anyway.</source>
+        <translation>无法读取工作模式：%1。请检查连接，然后按“上一步”和“下一步”重新读取，或直接切换到 9 轴模式。</translation>
+    </message>
+    <message>
+        <location line="+9" />
+        <source>The module runs in the 9-axis (AHRS) mode, ATT MODE 1: nothing to change. Press Next.</source>
+        <translation>模块运行在 9 轴（AHRS）模式，ATT MODE 1：无需更改。请按“下一步”。</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>The module runs in a 6-axis mode (ATT MODE %1): its heading ignores the magnetometer. Switch to the 9-axis mode before you calibrate.</source>
+        <translation>模块运行在 6 轴模式（ATT MODE %1）：其航向不使用磁力计。校准前请切换到 9 轴模式。</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>not reported</source>
+        <translation>未报告</translation>
+    </message>
+    <message>
+        <location line="+19" />
+        <source>So far: %1. %2</source>
+        <translation>目前：%1。%2</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>&lt;tr&gt;&lt;td&gt;Coverage&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1 %&lt;/b&gt;&lt;/td&gt;&lt;td&gt;(%2 of %3 cells)&lt;/td&gt;&lt;/tr&gt;</source>
+        <translation>&lt;tr&gt;&lt;td&gt;覆盖率&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1 %&lt;/b&gt;&lt;/td&gt;&lt;td&gt;（%3 个单元中的 %2 个）&lt;/td&gt;&lt;/tr&gt;</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>&lt;tr&gt;&lt;td&gt;Largest gap&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1°&lt;/b&gt;&lt;/td&gt;&lt;td&gt;radius&lt;/td&gt;&lt;/tr&gt;</source>
+        <translation>&lt;tr&gt;&lt;td&gt;最大空缺&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1°&lt;/b&gt;&lt;/td&gt;&lt;td&gt;半径&lt;/td&gt;&lt;/tr&gt;</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>&lt;tr&gt;&lt;td&gt;Raw |B|&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1–%2&lt;/b&gt;&lt;/td&gt;&lt;td&gt;µT&lt;/td&gt;&lt;/tr&gt;</source>
+        <translation>&lt;tr&gt;&lt;td&gt;原始 |B|&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1–%2&lt;/b&gt;&lt;/td&gt;&lt;td&gt;µT&lt;/td&gt;&lt;/tr&gt;</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>&lt;tr&gt;&lt;td&gt;Fitted field&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1&lt;/b&gt;&lt;/td&gt;&lt;td&gt;µT&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Fit residual&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%2&lt;/b&gt;&lt;/td&gt;&lt;td&gt;µT RMS (%3 %)&lt;/td&gt;&lt;/tr&gt;</source>
+        <translation>&lt;tr&gt;&lt;td&gt;拟合磁场&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1&lt;/b&gt;&lt;/td&gt;&lt;td&gt;µT&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;拟合残差&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%2&lt;/b&gt;&lt;/td&gt;&lt;td&gt;µT RMS（%3 %）&lt;/td&gt;&lt;/tr&gt;</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>&lt;tr&gt;&lt;td&gt;Samples&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1&lt;/b&gt;&lt;/td&gt;&lt;td&gt;&lt;/td&gt;&lt;/tr&gt;</source>
+        <translation>&lt;tr&gt;&lt;td&gt;样本数&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1&lt;/b&gt;&lt;/td&gt;&lt;td&gt;&lt;/td&gt;&lt;/tr&gt;</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>Setting ATT MODE 1…</source>
+        <translation>正在设置 ATT MODE 1…</translation>
+    </message>
+    <message>
+        <location line="+81" />
         <source>Turned %1 deg, largest step %2 deg: %3</source>
         <translation>已转动 %1 deg，最大跳变 %2 deg：%3</translation>
     </message>
@@ -8299,23 +8409,17 @@ If the module is mounted on a PCB, in a housing or on a robot, calibrate it toge
         <translation>请继续转动。</translation>
     </message>
     <message>
-        <location line="+22" />
+        <location line="+18" />
+        <source>Verdict: %1. %2</source>
+        <translation>结论：%1。%2</translation>
+    </message>
+    <message>
+        <location line="+6" />
         <source>No fit yet.</source>
         <translation>尚无拟合结果。</translation>
     </message>
     <message>
-        <location line="+2" />
-        <source>Verdict: %1
-%2
-
-</source>
-        <translation>结论：%1
-%2
-
-</translation>
-    </message>
-    <message>
-        <location line="+2" />
+        <location line="+4" />
         <source>Hard iron: %1, %2, %3 uT
 Field: %4 uT
 Fit error: %5 %

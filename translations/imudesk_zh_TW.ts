@@ -3327,7 +3327,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>SphereCoverage</name>
     <message>
-        <location filename="../core/calib/sphere_coverage.cpp" line="+120" />
+        <location filename="../core/calib/sphere_coverage.cpp" line="+139" />
         <source>Turn the module slowly about each of its axes: no direction is covered yet</source>
         <translation>請繞模組各軸緩慢轉動：尚未覆蓋任何方向</translation>
     </message>
@@ -5431,7 +5431,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::AttitudeResetWizard</name>
     <message>
-        <location filename="../ui/attitude_reset_wizard.cpp" line="+21" />
+        <location filename="../ui/attitude_reset_wizard.cpp" line="+22" />
         <source>Heading reset: the current heading becomes 0. Keep the module still. (Firmware 1.7.1 and later.)</source>
         <translation>航向角重設：目前航向角歸零。請保持模組靜止。（韌體 1.7.1 及以上版本。）</translation>
     </message>
@@ -5456,7 +5456,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>姿態重設與調平</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+4" />
         <source>What to reset</source>
         <translation>重設項目</translation>
     </message>
@@ -5551,7 +5551,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::AttitudeWidget</name>
     <message>
-        <location filename="../ui/attitude_widget.cpp" line="+254" />
+        <location filename="../ui/attitude_widget.cpp" line="+266" />
         <source>X</source>
         <translation>X</translation>
     </message>
@@ -7134,7 +7134,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>模擬 %1（韌體 %2）</translation>
     </message>
     <message>
-        <location line="+139" />
+        <location line="+164" />
         <source>Not connected</source>
         <translation>未連線</translation>
     </message>
@@ -7405,18 +7405,18 @@ Link load = bytes per second × 10 bits / baud rate.</source>
 <context>
     <name>imudesk::ui::FirmwareUpdateDialog</name>
     <message>
-        <location filename="../ui/firmware_update_dialog.cpp" line="+32" />
+        <location filename="../ui/firmware_update_dialog.cpp" line="+37" />
         <source>unknown</source>
         <translation>未知</translation>
     </message>
     <message>
         <location line="+10" />
-        <location line="+159" />
+        <location line="+166" />
         <source>Firmware update on %1</source>
         <translation>%1 上的韌體更新</translation>
     </message>
     <message>
-        <location line="-154" />
+        <location line="-161" />
         <source>Serial port %1 (KBOOT bootloader)</source>
         <translation>串列埠 %1（KBOOT 開機載入程式）</translation>
     </message>
@@ -7444,6 +7444,16 @@ Link load = bytes per second × 10 bits / baud rate.</source>
         <location line="+1" />
         <source>Choose...</source>
         <translation>選擇...</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Demo image</source>
+        <translation>示範韌體</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Simulated module only: write an application image of firmware 1.7.2 that the simulated bootloader accepts, and choose it</source>
+        <translation>僅限模擬模組：寫入一個韌體版本 1.7.2 的應用程式映像（模擬開機載入程式可接受）並選取它</translation>
     </message>
     <message>
         <location line="+4" />
@@ -7512,12 +7522,12 @@ Link load = bytes per second × 10 bits / baud rate.</source>
     </message>
     <message>
         <location line="+2" />
-        <location line="+250" />
+        <location line="+275" />
         <source>Close</source>
         <translation>關閉</translation>
     </message>
     <message>
-        <location line="-216" />
+        <location line="-240" />
         <source>CAN bus</source>
         <translation>CAN 匯流排</translation>
     </message>
@@ -7577,7 +7587,12 @@ Link load = bytes per second × 10 bits / baud rate.</source>
         <translation>透過 CAN 更新韌體</translation>
     </message>
     <message>
-        <location line="+25" />
+        <location line="+38" />
+        <source>The demo image could not be written to %1: %2. Free some space in the temporary folder and try again.</source>
+        <translation>無法將示範韌體寫入 %1：%2。請清出暫存資料夾的空間後重試。</translation>
+    </message>
+    <message>
+        <location line="+11" />
         <source>Choose the firmware</source>
         <translation>選擇韌體</translation>
     </message>
@@ -7658,12 +7673,12 @@ Link load = bytes per second × 10 bits / baud rate.</source>
 <context>
     <name>imudesk::ui::GyroScaleWizard</name>
     <message>
-        <location filename="../ui/gyro_scale_wizard.cpp" line="+22" />
+        <location filename="../ui/gyro_scale_wizard.cpp" line="+23" />
         <source>Gyro scale factor calibration</source>
         <translation>陀螺儀標度因數校準</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+4" />
         <source>Preparation</source>
         <translation>準備</translation>
     </message>
@@ -7804,7 +7819,7 @@ Link load = bytes per second × 10 bits / baud rate.</source>
 <context>
     <name>imudesk::ui::Hec495CalibrationWizard</name>
     <message>
-        <location filename="../ui/hec495_calibration_wizard.cpp" line="+36" />
+        <location filename="../ui/hec495_calibration_wizard.cpp" line="+37" />
         <source>Suits: the compass and its mount can be turned to the poses of the table. Good results; in a complex magnetic environment slightly less accurate than all-orientation. Limit: pitch must exceed 45 deg and roll 30 deg. The manual recommends trying this method first.</source>
         <translation>適用：羅盤及其安裝座可轉到表中的各個姿態。效果良好；在複雜磁場環境下精度略低於全姿態校準。限制：俯仰角需超過 45 deg，橫滾角需超過 30 deg。手冊建議優先嘗試此方法。</translation>
     </message>
@@ -8189,7 +8204,7 @@ Method: %3</source>
 <context>
     <name>imudesk::ui::MagCalibrationWizard</name>
     <message>
-        <location filename="../ui/mag_calibration_wizard.cpp" line="+39" />
+        <location filename="../ui/mag_calibration_wizard.cpp" line="+53" />
         <source>Magnetometer calibration</source>
         <translation>地磁校準</translation>
     </message>
@@ -8218,16 +8233,46 @@ If the module is mounted on a PCB, in a housing or on a robot, calibrate it toge
     </message>
     <message>
         <location line="+1" />
-        <source>The calibration needs the 9-axis (AHRS) mode, CONFIG ATT MODE 1 (the factory setting). If the module runs in a 6-axis mode, switch it: ImuDesk sends CONFIG ATT MODE 1, SAVECONFIG and REBOOT.</source>
-        <translation>校準需要 9 軸（AHRS）模式，即 CONFIG ATT MODE 1（出廠設定）。若模組處於 6 軸模式，請切換：ImuDesk 會傳送 CONFIG ATT MODE 1、SAVECONFIG 和 REBOOT。</translation>
+        <source>The calibration needs the 9-axis (AHRS) mode, CONFIG ATT MODE 1 (the factory setting). ImuDesk reads the module's mode first and offers a switch only when it runs in a 6-axis mode; the switch sends CONFIG ATT MODE 1, SAVECONFIG and REBOOT.</source>
+        <translation>校準需要 9 軸（AHRS）模式，即 CONFIG ATT MODE 1（出廠設定）。ImuDesk 先讀取模組的模式，僅當其執行於 6 軸模式時才提供切換；切換會傳送 CONFIG ATT MODE 1、SAVECONFIG 和 REBOOT。</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+6" />
         <source>Switch to 9-axis mode</source>
         <translation>切換到 9 軸模式</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+19" />
+        <source>The module did not take ATT MODE 1 (%1). Check the connection and try again.</source>
+        <translation>模組未接受 ATT MODE 1（%1）。請檢查連線後重試。</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>read back differs</source>
+        <translation>回讀值不一致</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>ATT MODE 1 set; saving it (SAVECONFIG)…</source>
+        <translation>已設定 ATT MODE 1；正在儲存（SAVECONFIG）…</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>%1 failed: %2. Try again, or save and restart from the Configuration panel.</source>
+        <translation>%1 失敗：%2。請重試，或在設定面板中儲存並重新啟動。</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>Saved; restarting the module (REBOOT)…</source>
+        <translation>已儲存；正在重新啟動模組（REBOOT）…</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>The module restarts in the 9-axis mode; reading it back…</source>
+        <translation>模組以 9 軸模式重新啟動；正在回讀…</translation>
+    </message>
+    <message>
+        <location line="+6" />
         <source>Environment check</source>
         <translation>環境檢查</translation>
     </message>
@@ -8247,7 +8292,12 @@ If the module is mounted on a PCB, in a housing or on a robot, calibrate it toge
         <translation>讓模組保持在原地，繞每個軸緩慢轉動（20-100 deg/s）至少一整圈，直到球面全部變綠。通常需要 30-60 s。</translation>
     </message>
     <message>
-        <location line="+6" />
+        <location line="+14" />
+        <source>Coverage: share of the 80 sphere cells the field has pointed into. Largest gap: radius of the biggest uncovered area. Raw |B|: the field strength before calibration (its spread is the iron the fit removes). Fit: the field and the residual of ImuDesk's fit on the samples so far, refreshed every second.</source>
+        <translation>覆蓋率：磁場方向已覆蓋的 80 個球面單元的比例。最大空缺：最大未覆蓋區域的半徑。原始 |B|：校準前的磁場強度（其離散程度即擬合要消除的鐵磁干擾）。擬合：ImuDesk 對目前樣本擬合得到的磁場強度和殘差，每秒更新。</translation>
+    </message>
+    <message>
+        <location line="+7" />
         <source>Start the device's calibration</source>
         <translation>啟動裝置校準</translation>
     </message>
@@ -8262,7 +8312,7 @@ If the module is mounted on a PCB, in a housing or on a robot, calibrate it toge
         <translation>結果</translation>
     </message>
     <message>
-        <location line="+17" />
+        <location line="+24" />
         <source>Heading check</source>
         <translation>航向角檢查</translation>
     </message>
@@ -8279,7 +8329,67 @@ If the module is mounted on a PCB, in a housing or on a robot, calibrate it toge
 %3</translation>
     </message>
     <message>
-        <location line="+87" />
+        <location line="+24" />
+        <source>Reading the working mode from the module (LOG COMCONFIG)…</source>
+        <translation>正在從模組讀取工作模式（LOG COMCONFIG）…</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>The working mode could not be read: %1. Check the connection, then press Back and Next to read it again, or switch to the 9-axis mode anyway.</source>
+        <translation>無法讀取工作模式：%1。請檢查連線，然後按「上一步」和「下一步」重新讀取，或直接切換到 9 軸模式。</translation>
+    </message>
+    <message>
+        <location line="+9" />
+        <source>The module runs in the 9-axis (AHRS) mode, ATT MODE 1: nothing to change. Press Next.</source>
+        <translation>模組執行於 9 軸（AHRS）模式，ATT MODE 1：無需變更。請按「下一步」。</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>The module runs in a 6-axis mode (ATT MODE %1): its heading ignores the magnetometer. Switch to the 9-axis mode before you calibrate.</source>
+        <translation>模組執行於 6 軸模式（ATT MODE %1）：其航向不使用磁力計。校準前請切換到 9 軸模式。</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>not reported</source>
+        <translation>未回報</translation>
+    </message>
+    <message>
+        <location line="+19" />
+        <source>So far: %1. %2</source>
+        <translation>目前：%1。%2</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>&lt;tr&gt;&lt;td&gt;Coverage&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1 %&lt;/b&gt;&lt;/td&gt;&lt;td&gt;(%2 of %3 cells)&lt;/td&gt;&lt;/tr&gt;</source>
+        <translation>&lt;tr&gt;&lt;td&gt;覆蓋率&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1 %&lt;/b&gt;&lt;/td&gt;&lt;td&gt;（%3 個單元中的 %2 個）&lt;/td&gt;&lt;/tr&gt;</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>&lt;tr&gt;&lt;td&gt;Largest gap&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1°&lt;/b&gt;&lt;/td&gt;&lt;td&gt;radius&lt;/td&gt;&lt;/tr&gt;</source>
+        <translation>&lt;tr&gt;&lt;td&gt;最大空缺&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1°&lt;/b&gt;&lt;/td&gt;&lt;td&gt;半徑&lt;/td&gt;&lt;/tr&gt;</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>&lt;tr&gt;&lt;td&gt;Raw |B|&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1–%2&lt;/b&gt;&lt;/td&gt;&lt;td&gt;µT&lt;/td&gt;&lt;/tr&gt;</source>
+        <translation>&lt;tr&gt;&lt;td&gt;原始 |B|&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1–%2&lt;/b&gt;&lt;/td&gt;&lt;td&gt;µT&lt;/td&gt;&lt;/tr&gt;</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>&lt;tr&gt;&lt;td&gt;Fitted field&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1&lt;/b&gt;&lt;/td&gt;&lt;td&gt;µT&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Fit residual&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%2&lt;/b&gt;&lt;/td&gt;&lt;td&gt;µT RMS (%3 %)&lt;/td&gt;&lt;/tr&gt;</source>
+        <translation>&lt;tr&gt;&lt;td&gt;擬合磁場&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1&lt;/b&gt;&lt;/td&gt;&lt;td&gt;µT&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;擬合殘差&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%2&lt;/b&gt;&lt;/td&gt;&lt;td&gt;µT RMS（%3 %）&lt;/td&gt;&lt;/tr&gt;</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>&lt;tr&gt;&lt;td&gt;Samples&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1&lt;/b&gt;&lt;/td&gt;&lt;td&gt;&lt;/td&gt;&lt;/tr&gt;</source>
+        <translation>&lt;tr&gt;&lt;td&gt;樣本數&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1&lt;/b&gt;&lt;/td&gt;&lt;td&gt;&lt;/td&gt;&lt;/tr&gt;</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>Setting ATT MODE 1…</source>
+        <translation>正在設定 ATT MODE 1…</translation>
+    </message>
+    <message>
+        <location line="+81" />
         <source>Turned %1 deg, largest step %2 deg: %3</source>
         <translation>已轉動 %1 deg，最大跳變 %2 deg：%3</translation>
     </message>
@@ -8299,23 +8409,17 @@ If the module is mounted on a PCB, in a housing or on a robot, calibrate it toge
         <translation>請繼續轉動。</translation>
     </message>
     <message>
-        <location line="+22" />
+        <location line="+18" />
+        <source>Verdict: %1. %2</source>
+        <translation>結論：%1。%2</translation>
+    </message>
+    <message>
+        <location line="+6" />
         <source>No fit yet.</source>
         <translation>尚未擬合。</translation>
     </message>
     <message>
-        <location line="+2" />
-        <source>Verdict: %1
-%2
-
-</source>
-        <translation>判定：%1
-%2
-
-</translation>
-    </message>
-    <message>
-        <location line="+2" />
+        <location line="+4" />
         <source>Hard iron: %1, %2, %3 uT
 Field: %4 uT
 Fit error: %5 %

@@ -1,4 +1,5 @@
 #include "attitude_reset_wizard.h"
+#include "work_place_size.h"
 
 #include "device/device_session.h"
 
@@ -42,6 +43,7 @@ AttitudeResetWizard::AttitudeResetWizard(device::DeviceSession &session, QWidget
       m_still(calib::StillnessDetector::Options{1.0, 0.3, 0.005, 2.0})
 {
     setWindowTitle(tr("Attitude reset and level"));
+    fitWorkPlace(this, QSize(960, 660), parent); // room for every text, bounded by the screen
 
     auto *choose = new QWizardPage;
     choose->setTitle(tr("What to reset"));

@@ -387,6 +387,30 @@ void DeviceWorkspace::disconnectDevice()
         stopSimulator();
 }
 
+QString DeviceWorkspace::releasePort()
+{
+    const QString port = m_simulator ? m_simulator->devicePath() : m_target;
+    m_keepSimulator = m_simulator != nullptr;
+    if (isBusy())
+        m_session.close();
+    return port;
+}
+
+void DeviceWorkspace::reclaimPort(const QString &port, int baud)
+{
+    m_keepSimulator = false;
+    if (!m_simulator) {
+        connectPort(port, baud);
+        return;
+    }
+    if (isBusy())
+        return;
+    m_identity.reset();
+    m_stats.reset();
+    m_baud = baud;
+    m_session.open(m_simulator->devicePath(), baud);
+}
+
 void DeviceWorkspace::sendConsoleCommand(const QString &text)
 {
     const quint64 id = m_session.sendCommand(text, kCommandTimeoutMs);
@@ -448,7 +472,7 @@ void DeviceWorkspace::onStateChanged(SessionState state, const QString &detail)
 {
     m_state = state;
     m_stateDetail = detail;
-    if (!busyState(state))
+    if (!busyState(state) && !m_keepSimulator)
         stopSimulator(); // the port is closed already
     m_console->setInputEnabled(state == SessionState::Connected);
     updateStateLabel();

@@ -101,6 +101,10 @@ public:
     device::DeviceSession &session() { return m_session; }
     const device::DeviceSession &session() const { return m_session; }
     sim::PtySimulator *simulator() const { return m_simulator.get(); }
+    // Frees the serial port for another user (the firmware update), keeping a simulated module
+    // running behind it; returns the port. reclaimPort() connects this tab to it again.
+    QString releasePort();
+    void reclaimPort(const QString &port, int baud);
     device::SessionState state() const { return m_state; }
     // What the user connected to ("/dev/ttyUSB0", "Simulated HI14 (firmware 1.7.1)").
     QString target() const { return m_target; }
@@ -204,6 +208,7 @@ private:
     bool m_shownOnce = false;
     // The user dragged a separator: the preset's proportions no longer follow the window size.
     bool m_userSized = false;
+    bool m_keepSimulator = false; // the port is lent out (firmware update): the simulator stays
     int m_valuesColumnsWidth = 0; // what the values table's columns need, without the stretch
     uint64_t m_chartSeq = 0; // next sample of the store the charts have not seen
     ConsoleWidget *m_console = nullptr;

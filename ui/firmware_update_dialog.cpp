@@ -3,8 +3,13 @@
 #include "firmware/can_firmware_updater.h"
 #include "firmware/firmware_updater.h"
 #include "protocol/ihex/intel_hex_loader.h"
+#include "protocol/ihex/intel_hex_writer.h"
+#include "sim/kboot_bootloader.h"
+#include "work_place_size.h"
 
 #include <QCanBus>
+#include <QDir>
+#include <QFile>
 #include <QComboBox>
 #include <QFileDialog>
 #include <QFormLayout>
@@ -59,6 +64,12 @@ FirmwareUpdateDialog::FirmwareUpdateDialog(const QString &portName, int baud,
     m_choose->setObjectName(QStringLiteral("choose"));
     fileRow->addWidget(m_file, 1);
     fileRow->addWidget(m_choose);
+    m_demoImage = new QPushButton(tr("Demo image"), this);
+    m_demoImage->setObjectName(QStringLiteral("demoImage"));
+    m_demoImage->setToolTip(tr("Simulated module only: write an application image of firmware 1.7.2 that the "
+                               "simulated bootloader accepts, and choose it"));
+    m_demoImage->hide();
+    fileRow->addWidget(m_demoImage);
     form->addRow(tr("File:"), fileRow);
 
     m_binStart = new QLineEdit(QStringLiteral("0x8000"), this);
@@ -119,9 +130,10 @@ FirmwareUpdateDialog::FirmwareUpdateDialog(const QString &portName, int baud,
     top->addWidget(m_log, 1);
     top->addWidget(m_outcome);
     top->addLayout(buttons);
-    resize(560, 480);
+    fitWorkPlace(this, QSize(860, 660), parent);
 
     connect(m_choose, &QPushButton::clicked, this, &FirmwareUpdateDialog::chooseFile);
+    connect(m_demoImage, &QPushButton::clicked, this, &FirmwareUpdateDialog::loadDemoImage);
     connect(m_start, &QPushButton::clicked, this, &FirmwareUpdateDialog::startUpdate);
     connect(m_cancel, &QPushButton::clicked, this, &FirmwareUpdateDialog::reject);
     connect(m_updater, &firmware::FirmwareUpdater::stateChanged, this, &FirmwareUpdateDialog::onState);
@@ -219,6 +231,30 @@ const firmware::UpdateFlow::Result &FirmwareUpdateDialog::result() const
 const firmware::CanUpdateFlow::Result &FirmwareUpdateDialog::canResult() const
 {
     return m_canUpdater->result();
+}
+
+void FirmwareUpdateDialog::setDemoImageOffered(bool offered)
+{
+    m_demoImage->setVisible(offered);
+}
+
+bool FirmwareUpdateDialog::loadDemoImage()
+{
+    protocol::ihex::FirmwareImage image;
+    image.startAddress = 0x8000;
+    image.data = sim::KbootBootloader::makeApplication("1.7.2", 96 * 1024);
+    const std::string text = protocol::ihex::IntelHexWriter::write(image);
+    m_demoImagePath = QDir::temp().filePath(QStringLiteral("imudesk-demo-firmware-1.7.2.hex"));
+    QFile file(m_demoImagePath);
+    if (!file.open(QIODevice::WriteOnly | QIODevice::Truncate)
+        || file.write(text.data(), qint64(text.size())) != qint64(text.size())) {
+        m_imageInfo->setText(tr("The demo image could not be written to %1: %2. Free some space in the temporary "
+                                "folder and try again.")
+                                 .arg(QDir::toNativeSeparators(m_demoImagePath), file.errorString()));
+        return false;
+    }
+    file.close();
+    return loadFile(m_demoImagePath);
 }
 
 void FirmwareUpdateDialog::chooseFile()

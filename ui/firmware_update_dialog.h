@@ -49,6 +49,11 @@ public:
     // interface's setting, CANopen node 1..127).
     void setCanBus(const QString &plugin, const QString &interfaceName, int bitrate, int node);
 
+    // For a simulated module (the demo): a "Demo image" button that writes an application image
+    // of a newer version, which the simulated bootloader accepts, and loads it.
+    void setDemoImageOffered(bool offered);
+    // Writes and loads that image; false shows why (e.g. no room in the temporary folder).
+    bool loadDemoImage();
     // Loads and checks a firmware file (also what "Choose..." does); false shows why.
     bool loadFile(const QString &path);
     // Starts the update with the loaded image; false if none or one is running.
@@ -100,6 +105,8 @@ private:
     QPlainTextEdit *m_log = nullptr;
     QLabel *m_outcome = nullptr;
     QPushButton *m_choose = nullptr;
+    QPushButton *m_demoImage = nullptr;
+    QString m_demoImagePath;
     QPushButton *m_start = nullptr;
     QPushButton *m_cancel = nullptr;
 };

@@ -1,4 +1,5 @@
 #include "gyro_scale_wizard.h"
+#include "work_place_size.h"
 
 #include "device/device_session.h"
 
@@ -20,6 +21,7 @@ GyroScaleWizard::GyroScaleWizard(device::DeviceSession &session, QWidget *parent
       m_device(session)
 {
     setWindowTitle(tr("Gyro scale factor calibration"));
+    fitWorkPlace(this, QSize(960, 660), parent); // room for every text, bounded by the screen
 
     auto *prepare = new QWizardPage;
     prepare->setTitle(tr("Preparation"));

@@ -1,4 +1,5 @@
 #include "hec495_calibration_wizard.h"
+#include "work_place_size.h"
 
 #include "compass_pose_view.h"
 #include "device/hec495_session.h"
@@ -67,7 +68,7 @@ Hec495CalibrationWizard::Hec495CalibrationWizard(device::Hec495Session &session,
       m_tracker(CompassCalMethod::Auto12, kHeadingToleranceDeg)
 {
     setWindowTitle(tr("HEC495 compass calibration"));
-    resize(780, 600);
+    fitWorkPlace(this, QSize(1100, 780), parent);
     buildMethodPage();
     buildRunPage();
     buildResultPage();

@@ -15,6 +15,7 @@
 #include "calib/mag_environment_check.h"
 #include "calibration_run_saver.h"
 #include "model/device_identity.h"
+#include "settings/configuration_controller.h"
 
 #include <QTimer>
 #include <QWizard>
@@ -41,6 +42,7 @@ public:
     enum PageId { IntroPage, ModePage, EnvironmentPage, RotationPage, ResultPage, HeadingPage };
     static constexpr size_t kMaxSamples = 20000;
     static constexpr double kMaxHeadingJumpDeg = 10.0;
+    static constexpr int kRebootSettleMs = 2500; // after REBOOT, before reading the mode back
 
     MagCalibrationWizard(device::DeviceSession &session, const model::FirmwareVersion &firmware,
                          QWidget *parent = nullptr);
@@ -48,6 +50,13 @@ public:
     MagSphereView *sphere() const { return m_sphere; }
     QPushButton *fitButton() const { return m_fit; }
     QPushButton *startDeviceButton() const { return m_startDevice; }
+    QPushButton *switchModeButton() const { return m_switchMode; }
+    // The working mode as read on the mode page ("0", "1", "4"; empty before the read).
+    QString attMode() const { return m_attMode; }
+    // The live figures of the rotation page, refreshed with the sphere.
+    QString liveFiguresText() const;
+    // The verdict as a headline: its text, and pass/warn/fail colour by object name.
+    QLabel *verdictHeadline() const { return m_verdict; }
     const calib::MagCalSession &deviceCalibration() const { return m_device; }
     const calib::MagEnvironmentCheck &environment() const { return m_env; }
     const calib::MagCalResult &result() const { return m_result; }
@@ -64,6 +73,9 @@ private:
     void refresh();
     void runFit();
     void switchToAhrs();
+    void readMode();
+    void showMode(bool ok, const QString &error);
+    void liveFit();
     void pageChanged(int id);
     void saveRun();
 
@@ -87,6 +99,18 @@ private:
     QPushButton *m_startDevice = nullptr;
     QPushButton *m_fit = nullptr;
     QLabel *m_resultLabel = nullptr;
+    QLabel *m_verdict = nullptr;
+    QLabel *m_modeStatus = nullptr;
+    QPushButton *m_switchMode = nullptr;
+    settings::ConfigurationController m_config;
+    QString m_attMode;
+    bool m_switching = false;
+    QLabel *m_figures = nullptr;
+    QLabel *m_liveVerdict = nullptr;
+    calib::MagCalResult m_live;
+    bool m_haveLive = false;
+    QTimer m_fitClock;
+    double m_minField = 0, m_maxField = 0;
     QLabel *m_headingStatus = nullptr;
     double m_lastYaw = 0;
     bool m_haveYaw = false;

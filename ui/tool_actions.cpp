@@ -166,7 +166,7 @@ void ToolActions::update(const DeviceWorkspace *ws)
     m_compassCal->setEnabled(connected && dynamic_cast<const device::Hec495Session *>(&ws->link()));
     // The update opens the port itself: a connected HiPNUC serial device, or a HiPNUC module
     // on a CANopen bus (the dialog opens its own CAN device beside the session's).
-    m_firmware->setEnabled((serial && connected && !ws->simulator()) || (connected && canopenLink(ws)));
+    m_firmware->setEnabled((serial && connected) || (connected && canopenLink(ws)));
 }
 
 bool ToolActions::openCapture(const QString &path)
@@ -394,14 +394,16 @@ void ToolActions::updateFirmware()
     }
     if (ws->hasAttachedLink())
         return;
-    const QString port = ws->target();
     const int baud = ws->baud();
     const auto identity = ws->identity();
-    // The dialog opens the port itself: close the session first, reopen it afterwards.
-    ws->disconnectDevice();
+    const bool simulated = ws->simulator() != nullptr;
+    // The dialog opens the port itself: the session lends it out (a simulated module keeps
+    // running, its bootloader takes the update) and takes it back afterwards.
+    const QString port = ws->releasePort();
     auto *dialog = new FirmwareUpdateDialog(port, baud, identity, m_window);
     dialog->setAttribute(Qt::WA_DeleteOnClose);
-    connect(dialog, &QDialog::finished, ws, [ws, port, baud] { ws->connectPort(port, baud); });
+    dialog->setDemoImageOffered(simulated);
+    connect(dialog, &QDialog::finished, ws, [ws, port, baud] { ws->reclaimPort(port, baud); });
     dialog->open();
 }
 

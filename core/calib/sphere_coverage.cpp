@@ -2,6 +2,8 @@
 
 #include <Eigen/Geometry>
 
+#include <algorithm>
+
 #include <cmath>
 
 namespace imudesk::calib {
@@ -110,6 +112,23 @@ Eigen::Vector3d SphereCoverage::missingDirection() const
                 return cells()[size_t(i)].centre;
     }
     return sum.normalized();
+}
+
+double SphereCoverage::largestGapDeg() const
+{
+    if (m_covered == 0)
+        return 180.0;
+    double worstCos = 1.0; // the cosine from the empty cell furthest from coverage to its nearest covered cell
+    for (int i = 0; i < kCells; ++i) {
+        if (m_counts[size_t(i)] > 0)
+            continue;
+        double nearest = -1.0;
+        for (int j = 0; j < kCells; ++j)
+            if (m_counts[size_t(j)] > 0)
+                nearest = std::max(nearest, cells()[size_t(i)].centre.dot(cells()[size_t(j)].centre));
+        worstCos = std::min(worstCos, nearest);
+    }
+    return std::acos(std::clamp(worstCos, -1.0, 1.0)) * 180.0 / 3.14159265358979323846;
 }
 
 QString SphereCoverage::missingRotationHint() const

@@ -36,6 +36,10 @@ public:
     bool covered(int cell) const { return m_counts[size_t(cell)] > 0; }
     // Unit vector towards the empty cells (zero when everything is covered or nothing is).
     Eigen::Vector3d missingDirection() const;
+    // The radius of the largest hole, in degrees: over the empty cells, the largest angle from
+    // one to its nearest covered cell (0 when every cell is covered, 180 when none is). One
+    // missing cell gives about 25 degrees; an uncovered hemisphere about 90.
+    double largestGapDeg() const;
     // What the user should do next, e.g. "Turn the module so that its -Z axis points along
     // the field (north and down)"; empty when the sphere is covered.
     QString missingRotationHint() const;

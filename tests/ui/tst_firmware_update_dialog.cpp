@@ -1,12 +1,16 @@
 // The firmware update dialog, offscreen, against the simulated module on a pty: file
 // information, a refused file, progress to the new version, cancel and finishing later.
 #include "../common/firmware_files.h"
+#include "device_workspace.h"
 #include "firmware_update_dialog.h"
+#include "main_window.h"
 #include "protocol/ihex/intel_hex_writer.h"
 #include "sim/kboot_bootloader.h"
 #include "sim/pty_simulator.h"
 
+#include <QAction>
 #include <QLabel>
+#include <QStandardPaths>
 #include <QLineEdit>
 #include <QPlainTextEdit>
 #include <QProgressBar>
@@ -87,6 +91,49 @@ private Q_SLOTS:
         QVERIFY(dlg.findChild<QLabel *>(QStringLiteral("outcome"))->text().startsWith(QStringLiteral("Done")));
         QCOMPARE(dlg.result().verifyMethod, QStringLiteral("read-back"));
         QVERIFY(flashHolds(s, img));
+    }
+
+    // The README's demo reaches the update: Device > Update firmware on the simulated HI14 is
+    // enabled, the dialog offers a demo image, the simulated bootloader takes it, and the tab
+    // connects again to the module, which now reports the new firmware.
+    void demoDeviceUpdatesFromTheMenu()
+    {
+        QStandardPaths::setTestModeEnabled(true);
+        ui::MainWindow w;
+        w.setErrorPresenter([](const QString &m) { QFAIL(qPrintable(m)); });
+        w.show();
+        sim::SimOptions o;
+        o.motion = sim::Motion::Static;
+        QString error;
+        QVERIFY2(w.connectSimulated(o, 0, &error), qPrintable(error));
+        ui::DeviceWorkspace *ws = w.currentWorkspace();
+        auto *action = w.findChild<QAction *>(QStringLiteral("firmwareAction"));
+        QTRY_VERIFY_WITH_TIMEOUT(ws->identity() && ws->identity()->firmware && action->isEnabled(), 15000);
+        const QString before = QString::fromStdString(ws->identity()->firmware->toString());
+        action->trigger();
+        auto *dlg = w.findChild<FirmwareUpdateDialog *>();
+        QVERIFY(dlg);
+        auto *demo = dlg->findChild<QPushButton *>(QStringLiteral("demoImage"));
+        QVERIFY(demo && !demo->isHidden());
+        demo->click(); // as the user does
+        QVERIFY(!dlg->findChild<QLineEdit *>(QStringLiteral("file"))->text().isEmpty());
+        QVERIFY(dlg->findChild<QLineEdit *>(QStringLiteral("file"))->text().contains(QStringLiteral("1.7.2")));
+        const QString info = dlg->findChild<QLabel *>(QStringLiteral("imageInfo"))->text();
+        QVERIFY2(info.contains(QStringLiteral("CRC-32")), qPrintable(info));
+        QVERIFY(ws->simulator()); // the module keeps running while the dialog has its port
+        QTRY_VERIFY_WITH_TIMEOUT(ws->state() == device::SessionState::Closed, 5000);
+        QSignalSpy finished(dlg, &FirmwareUpdateDialog::updateFinished);
+        QVERIFY(dlg->startUpdate());
+        QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 1, 60000);
+        QVERIFY2(finished.at(0).at(0).toBool(), qPrintable(dlg->findChild<QLabel *>(QStringLiteral("outcome"))->text()));
+        dlg->close();
+        // The tab takes the port back and reads the new version.
+        QTRY_VERIFY_WITH_TIMEOUT(ws->state() == device::SessionState::Connected && ws->identity()
+                                     && ws->identity()->firmware
+                                     && ws->identity()->firmware->toString() == "1.7.2",
+                                 20000);
+        QVERIFY(before != QStringLiteral("1.7.2"));
+        w.disconnectDevice();
     }
 
     void cancelThenFinish()

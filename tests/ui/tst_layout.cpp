@@ -7,7 +7,14 @@
 // saved at another size; a --screenshot run leaves the user's settings alone; the layout
 // presets and the bottom panels that open on demand.
 #include "../common/synthetic_capture.h"
+#include "attitude_reset_wizard.h"
 #include "attitude_widget.h"
+#include "device/hec495_session.h"
+#include "firmware_update_dialog.h"
+#include "gyro_scale_wizard.h"
+#include "hec495_calibration_wizard.h"
+#include "mag_calibration_wizard.h"
+#include "mag_sphere_view.h"
 #include "chart_panel.h"
 #include "chart_view.h"
 #include "connection_bar.h"
@@ -42,6 +49,7 @@
 #include <QTableView>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QWizard>
 #include <QTextDocumentFragment>
 
 using namespace imudesk;
@@ -85,6 +93,48 @@ bool parkedByQt(const QWidget *w)
             return true;
     }
     return false;
+}
+
+// Every visible widget inside `top`, and no label cut short: one line per problem.
+QStringList cutOrOutside(QWidget &top)
+{
+    QStringList problems;
+    const QRect window = top.rect().adjusted(-1, -1, 1, 1);
+    for (QWidget *child : top.findChildren<QWidget *>()) {
+        if (!child->isVisible() || child->isWindow() || insideScrolledContent(child, &top) || parkedByQt(child))
+            continue;
+        const QRect r(child->mapTo(&top, QPoint(0, 0)), child->size());
+        if (!window.contains(r))
+            problems << QStringLiteral("%1 \"%2\" outside the window: %3,%4 %5x%6")
+                            .arg(QString::fromLatin1(child->metaObject()->className()), child->objectName())
+                            .arg(r.x())
+                            .arg(r.y())
+                            .arg(r.width())
+                            .arg(r.height());
+        const auto *label = qobject_cast<QLabel *>(child);
+        if (!label || label->text().isEmpty())
+            continue;
+        if (label->wordWrap()) {
+            // A wrapped text needs its height for this width.
+            const int needed = label->heightForWidth(label->width());
+            if (needed > label->height() + 2)
+                problems << QStringLiteral("wrapped label \"%1\" cut: needs %2 px high, has %3")
+                                .arg(label->text().left(60))
+                                .arg(needed)
+                                .arg(label->height());
+            continue;
+        }
+        const QString text = Qt::mightBeRichText(label->text())
+            ? QTextDocumentFragment::fromHtml(label->text()).toPlainText()
+            : QString(label->text()).remove(QLatin1Char('&'));
+        int needed = 0;
+        for (const QString &line : text.split(QLatin1Char('\n')))
+            needed = std::max(needed, label->fontMetrics().horizontalAdvance(line));
+        if (needed > label->contentsRect().width() + 1)
+            problems << QStringLiteral("label \"%1\" cut: needs %2 px, has %3").arg(text).arg(needed).arg(
+                            label->contentsRect().width());
+    }
+    return problems;
 }
 
 // What a person would call broken in this window, one line each.
@@ -142,31 +192,7 @@ QStringList layoutProblems(MainWindow &w, bool large)
             problems << QStringLiteral("attitude read-out over the model");
     }
     // No label cut short, no widget outside the window.
-    const QRect window = w.rect().adjusted(-1, -1, 1, 1);
-    for (QWidget *child : w.findChildren<QWidget *>()) {
-        if (!child->isVisible() || child->isWindow() || insideScrolledContent(child, &w) || parkedByQt(child))
-            continue;
-        const QRect r(child->mapTo(&w, QPoint(0, 0)), child->size());
-        if (!window.contains(r))
-            problems << QStringLiteral("%1 \"%2\" outside the window: %3,%4 %5x%6")
-                            .arg(QString::fromLatin1(child->metaObject()->className()), child->objectName())
-                            .arg(r.x())
-                            .arg(r.y())
-                            .arg(r.width())
-                            .arg(r.height());
-        const auto *label = qobject_cast<QLabel *>(child);
-        if (!label || label->wordWrap() || label->text().isEmpty())
-            continue;
-        const QString text = Qt::mightBeRichText(label->text())
-            ? QTextDocumentFragment::fromHtml(label->text()).toPlainText()
-            : QString(label->text()).remove(QLatin1Char('&'));
-        int needed = 0;
-        for (const QString &line : text.split(QLatin1Char('\n')))
-            needed = std::max(needed, label->fontMetrics().horizontalAdvance(line));
-        if (needed > label->contentsRect().width() + 1)
-            problems << QStringLiteral("label \"%1\" cut: needs %2 px, has %3").arg(text).arg(needed).arg(
-                            label->contentsRect().width());
-    }
+    problems << cutOrOutside(w);
     return problems;
 }
 
@@ -423,8 +449,100 @@ private Q_SLOTS:
         w.disconnectDevice();
     }
 
+    // Every wizard page and the firmware-update dialog as a work place: at the size it takes on
+    // a 1366x768 and a 1920x1080 screen, in English and Chinese, no text cut, nothing outside;
+    // the magnetometer sphere >= 400 px on the small screen. With IMUDESK_LAYOUT_SHOTS=DIR
+    // each page is also saved there as a PNG (scripts/screenshots.sh).
+    void wizardPages_data()
+    {
+        QTest::addColumn<QSize>("screen");
+        QTest::addColumn<QString>("language");
+        for (const QString &lang : {QStringLiteral("en"), QStringLiteral("zh_CN")})
+            for (const QSize &size : {kSmall, kLarge})
+                QTest::addRow("%dx%d %s", size.width(), size.height(), qPrintable(lang)) << size << lang;
+    }
+
+    void wizardPages()
+    {
+        QFETCH(QSize, screen);
+        QFETCH(QString, language);
+        QString error;
+        QVERIFY2(m_language.setLanguage(language, QStringLiteral(IMUDESK_QM_DIR), &error), qPrintable(error));
+        // What fitWorkPlace() gives on that screen (this test's screen is 1920x1080).
+        const QSize room(screen.width() * 94 / 100, screen.height() * 94 / 100 - 30);
+        const QString shots = qEnvironmentVariable("IMUDESK_LAYOUT_SHOTS");
+        const auto check = [&](QWidget &window, const QString &name) {
+            window.resize(window.size().boundedTo(room));
+            QCoreApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);
+            QCoreApplication::processEvents();
+            QStringList problems = cutOrOutside(window);
+            if (!shots.isEmpty())
+                window.grab().save(QDir(shots).filePath(QStringLiteral("%1-%2x%3-%4.png")
+                                                            .arg(name)
+                                                            .arg(screen.width())
+                                                            .arg(screen.height())
+                                                            .arg(language)));
+            return problems.isEmpty() ? QString() : name + QLatin1String(": ") + problems.join(QLatin1Char('\n'));
+        };
+        const auto everyPage = [&](QWizard &wizard, const QString &name) {
+            QStringList problems;
+            wizard.show();
+            if (!QTest::qWaitForWindowExposed(&wizard))
+                return QStringList{name + QLatin1String(" not exposed")};
+            for (int id : wizard.pageIds()) {
+                wizard.setStartId(id);
+                wizard.restart();
+                const QString p = check(wizard, QStringLiteral("%1-page%2").arg(name).arg(id));
+                if (!p.isEmpty())
+                    problems << p;
+            }
+            return problems;
+        };
+        QStringList problems;
+        device::DeviceSession session;
+        {
+            ui::MagCalibrationWizard mag(session, model::FirmwareVersion{1, 7, 1});
+            problems << everyPage(mag, QStringLiteral("wizard-magnetometer"));
+            mag.setStartId(ui::MagCalibrationWizard::RotationPage);
+            mag.restart();
+            check(mag, QStringLiteral("wizard-magnetometer-rotation"));
+            const int sphere = std::min(mag.sphere()->width(), mag.sphere()->height());
+            if (sphere < (screen == kSmall ? 400 : 500))
+                problems << QStringLiteral("magnetometer sphere %1 px").arg(sphere);
+        }
+        {
+            ui::GyroScaleWizard gyro(session);
+            problems << everyPage(gyro, QStringLiteral("wizard-gyro-scale"));
+        }
+        {
+            ui::AttitudeResetWizard reset(session);
+            problems << everyPage(reset, QStringLiteral("wizard-attitude-reset"));
+        }
+        {
+            device::Hec495Session compass;
+            ui::Hec495CalibrationWizard hec(compass);
+            problems << everyPage(hec, QStringLiteral("wizard-hec495"));
+        }
+        {
+            model::DeviceIdentity id;
+            id.productName = "HI14R3";
+            id.firmware = model::FirmwareVersion{1, 7, 1};
+            ui::FirmwareUpdateDialog update(QStringLiteral("/dev/ttyUSB0"), 115200, id);
+            update.setDemoImageOffered(true);
+            update.show();
+            QVERIFY(QTest::qWaitForWindowExposed(&update));
+            const QString p = check(update, QStringLiteral("firmware-update"));
+            if (!p.isEmpty())
+                problems << p;
+        }
+        problems.removeAll(QString());
+        QVERIFY2(problems.isEmpty(), qPrintable(problems.join(QLatin1Char('\n'))));
+    }
+
     void statusFlagsColouredByMeaning()
     {
+        QString error;
+        QVERIFY(m_language.setLanguage(QStringLiteral("en"), QStringLiteral(IMUDESK_QM_DIR), &error));
         ui::StatusFlagsWidget flags;
         flags.setStatus(quint16((1u << model::MainStatus::MagDist) | (1u << model::MainStatus::MagAiding)
                                 | (1u << model::MainStatus::Static)));

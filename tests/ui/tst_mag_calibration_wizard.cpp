@@ -8,11 +8,13 @@
 #include "device/device_session.h"
 #include "mag_calibration_wizard.h"
 #include "mag_sphere_view.h"
+#include "settings/configuration_controller.h"
 #include "sim/pty_simulator.h"
 
 #include <QPushButton>
 #include <QLabel>
 #include <QDir>
+#include <QSignalSpy>
 #include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QTest>
@@ -47,6 +49,9 @@ private Q_SLOTS:
         QCOMPARE(wizard.currentId(), int(ui::MagCalibrationWizard::IntroPage));
         wizard.next();
         QCOMPARE(wizard.currentId(), int(ui::MagCalibrationWizard::ModePage));
+        // The mode is read first: the module already runs in 9-axis mode, so no switch is offered.
+        QTRY_COMPARE_WITH_TIMEOUT(wizard.attMode(), QStringLiteral("1"), 10000);
+        QVERIFY(wizard.switchModeButton()->isHidden());
         wizard.next();
         QCOMPARE(wizard.currentId(), int(ui::MagCalibrationWizard::EnvironmentPage));
         // The simulator's field: |B| about 50 uT (28 horizontal, 42 down) plus its hard iron.
@@ -54,13 +59,25 @@ private Q_SLOTS:
         QVERIFY(wizard.environment().meanFieldUt() > 10);
         wizard.next();
         QCOMPARE(wizard.currentId(), int(ui::MagCalibrationWizard::RotationPage));
+        // A large sphere and the live figures.
+        QVERIFY(std::min(wizard.sphere()->width(), wizard.sphere()->height()) >= 360);
+        QVERIFY(wizard.liveFiguresText().contains(QStringLiteral("Largest gap")));
         QTest::mouseClick(wizard.startDeviceButton(), Qt::LeftButton);
         QTRY_VERIFY_WITH_TIMEOUT(wizard.deviceCalibration().procedure().progress() > 0, 10000);
         QCOMPARE(wizard.deviceCalibration().procedure().stat(), 1);
         QTRY_VERIFY_WITH_TIMEOUT(wizard.sphere()->sampleCount() > 300, 10000);
         QVERIFY(wizard.sphere()->coveragePercent() > 0);
+        // Within a second or two the live fit has a verdict so far and figures from it.
+        QTRY_VERIFY_WITH_TIMEOUT(!wizard.findChild<QLabel *>(QStringLiteral("liveVerdict"))->text().isEmpty(), 5000);
+        QVERIFY(wizard.liveFiguresText().contains(QStringLiteral("Raw |B|")));
         QTest::mouseClick(wizard.fitButton(), Qt::LeftButton);
         QVERIFY(wizard.fitted());
+        // The verdict as a headline, coloured by it.
+        QVERIFY(wizard.verdictHeadline()->text().contains(calib::MagCalResult::verdictText(wizard.result().verdict)));
+        QVERIFY(wizard.verdictHeadline()->styleSheet().contains(
+            wizard.result().verdict == calib::MagVerdict::Pass ? QStringLiteral("#2e7d32")
+            : wizard.result().verdict == calib::MagVerdict::Warn ? QStringLiteral("#e65100")
+                                                                  : QStringLiteral("#c62828")));
         QVERIFY(wizard.result().samples >= 300); // the samples the sphere showed
         // A few seconds of tumbling cover only part of the sphere: the full fit is refused, honestly.
         QVERIFY(!wizard.resultText().isEmpty());
@@ -91,6 +108,35 @@ private Q_SLOTS:
         QCOMPARE(wizard.currentId(), int(ui::MagCalibrationWizard::HeadingPage));
         QTRY_VERIFY_WITH_TIMEOUT(wizard.headingTurnedDeg() > 20, 5000);
         QVERIFY(wizard.headingMaxJumpDeg() < ui::MagCalibrationWizard::kMaxHeadingJumpDeg);
+    }
+
+    void offersTheSwitchOnlyInASixAxisMode()
+    {
+        sim::SimOptions o;
+        o.motion = sim::Motion::Static;
+        sim::PtySimulator simulator(o);
+        QVERIFY(simulator.start());
+        device::DeviceSession session;
+        session.open(simulator.devicePath(), 115200);
+        QTRY_COMPARE_WITH_TIMEOUT(session.state(), device::SessionState::Connected, 15000);
+        // The module runs in the 6-axis mode (not saved).
+        settings::ConfigurationController config(session);
+        QSignalSpy read(&config, &settings::ConfigurationController::readFinished);
+        config.readAll();
+        QTRY_COMPARE_WITH_TIMEOUT(read.size(), 1, 10000);
+        QSignalSpy applied(&config, &settings::ConfigurationController::applyFinished);
+        config.apply({{QStringLiteral("ATT.MODE"), QStringLiteral("0")}});
+        QTRY_COMPARE_WITH_TIMEOUT(applied.size(), 1, 10000);
+
+        ui::MagCalibrationWizard wizard(session, model::FirmwareVersion{1, 7, 1});
+        wizard.show();
+        wizard.next();
+        QTRY_COMPARE_WITH_TIMEOUT(wizard.attMode(), QStringLiteral("0"), 10000);
+        QVERIFY(!wizard.switchModeButton()->isHidden());
+        // The switch: ATT MODE 1, SAVECONFIG, REBOOT, then the mode is read back and the offer goes.
+        QTest::mouseClick(wizard.switchModeButton(), Qt::LeftButton);
+        QTRY_COMPARE_WITH_TIMEOUT(wizard.attMode(), QStringLiteral("1"), 20000);
+        QVERIFY(wizard.switchModeButton()->isHidden());
     }
 };
 

@@ -207,10 +207,19 @@ private Q_SLOTS:
         QVERIFY(c.percent() > 20 && c.percent() < 60);
         QVERIFY(c.missingDirection().z() < -0.9);
         QVERIFY(c.missingRotationHint().contains(QStringLiteral("-Z")));
+        // The hole is the lower hemisphere less a band: its radius is well over 45 degrees.
+        QVERIFY2(c.largestGapDeg() > 45 && c.largestGapDeg() < 110, QByteArray::number(c.largestGapDeg()));
         for (const auto &cell : cells)
             c.add(cell.centre);
         QCOMPARE(c.percent(), 100.0);
         QVERIFY(c.missingRotationHint().isEmpty());
+        QCOMPARE(c.largestGapDeg(), 0.0);
+        // One empty cell: a hole of about a cell's spacing; none covered: the whole sphere.
+        SphereCoverage one;
+        for (int i = 1; i < SphereCoverage::kCells; ++i)
+            one.add(cells[size_t(i)].centre);
+        QVERIFY2(one.largestGapDeg() > 10 && one.largestGapDeg() < 35, QByteArray::number(one.largestGapDeg()));
+        QCOMPARE(SphereCoverage().largestGapDeg(), 180.0);
     }
 
     void ellipseFitExact()
