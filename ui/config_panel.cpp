@@ -12,6 +12,7 @@
 #include <QDoubleSpinBox>
 #include <QEvent>
 #include <QGroupBox>
+#include <QGridLayout>
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
@@ -85,13 +86,20 @@ ConfigPanel::ConfigPanel(device::DeviceSession &session, QWidget *parent)
     m_cli->setWordWrap(true);
     lowerLayout->addWidget(m_cli);
 
-    auto *actions = new QHBoxLayout;
+    // The attitude actions two by two, the heading setting below them: the panel stays narrow
+    // enough to sit beside the charts.
+    auto *attitudeActions = new QGridLayout;
+    int slot = 0;
     for (const char *key : {"ATT.RST.1", "ATT.RST.2", "ATT.RST.3", "ATT.RST.5"}) {
         auto *b = new QPushButton(lower);
         m_buttons[QLatin1String(key)] = b;
         connect(b, &QPushButton::clicked, this, [this, k = QString::fromLatin1(key)] { runAction(k); });
-        actions->addWidget(b);
+        attitudeActions->addWidget(b, slot / 2, slot % 2);
+        ++slot;
     }
+    attitudeActions->setColumnStretch(2, 1);
+    lowerLayout->addLayout(attitudeActions);
+    auto *actions = new QHBoxLayout;
     m_yawMode = new QComboBox(lower);
     m_yawDeg = new QDoubleSpinBox(lower);
     m_yawDeg->setRange(-180.0, 180.0);

@@ -234,7 +234,10 @@ int main(int argc, char *argv[])
             return usageError(QCoreApplication::translate("main", "Unknown panel \"%1\"; use configuration, recording, "
                                                                   "console, raw or commands.")
                                   .arg(parser.value(dockOption)));
-        if (auto *dock = window.currentWorkspace()->findChild<QDockWidget *>(it->second)) {
+        if (it->first == QLatin1String("configuration")) {
+            // The Configure layout: the settings table gets the right column's height.
+            window.applyLayoutPreset(imudesk::ui::DeviceWorkspace::LayoutPreset::Configure);
+        } else if (auto *dock = window.currentWorkspace()->findChild<QDockWidget *>(it->second)) {
             dock->show();
             dock->raise();
         }
