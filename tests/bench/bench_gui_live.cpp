@@ -14,6 +14,7 @@
 //        to tell memory the application holds from memory the allocator keeps.
 // Exit code 1 only when frames were lost (or the recording is damaged).
 #include "chart_panel.h"
+#include "chart_view.h"
 #include "device_workspace.h"
 #include "main_window.h"
 #include "record/capture_reader.h"
@@ -196,6 +197,9 @@ int main(int argc, char **argv)
     const uint64_t decoded0 = session.store().totalAppended();
     const uint64_t ptyDrops0 = simulator->stats().chunksDropped;
     const int refresh0 = ws->chartPanel()->refreshCount();
+    int chartsShown = 0; // the default layout: four charts in view
+    for (int k = 0; k < ui::kChartKindCount; ++k)
+        chartsShown += ws->chartPanel()->chart(ui::ChartKind(k))->isVisible() ? 1 : 0;
     device::SessionStats stats0, statsNow;
     QObject::connect(&session, &device::DeviceSession::statsUpdated, &session,
                      [&statsNow](const device::SessionStats &st) { statsNow = st; });
@@ -296,8 +300,8 @@ int main(int argc, char **argv)
     const uint64_t lostInApp = lost > beforeHost ? lost - beforeHost : 0;
     const bool okRefresh = refreshRate >= 30.0;
     const bool okBusy = busy < 30.0;
-    std::printf("%s: HI91 at 1000 Hz, 921600 baud, %d s, GUI offscreen (charts, attitude, table)%s\n", name, seconds,
-                record ? ", recording" : "");
+    std::printf("%s: HI91 at 1000 Hz, 921600 baud, %d s, GUI offscreen (%d charts, attitude, table)%s\n", name,
+                seconds, chartsShown, record ? ", recording" : "");
     std::printf("  %-34s %12llu\n", "frames sent by the module", (unsigned long long)sent);
     std::printf("  %-34s %12llu\n", "frames decoded", (unsigned long long)decoded);
     std::printf("  %-34s %12llu   target 0  %s\n", "frames lost", (unsigned long long)lost, okLost ? "ok" : "MISSED");

@@ -561,14 +561,26 @@ private Q_SLOTS:
 
 int main(int argc, char **argv)
 {
-    // A 1920x1080 screen (the offscreen platform's default is 800x600).
+    // A 1920x1080 screen (the offscreen platform's default is 800x600). With
+    // IMUDESK_LAYOUT_SCALE=S: a screen of S times the pixels at scale factor S (a 4K monitor at
+    // 200 %), the same 1920x1080 in logical pixels.
+    const double scale = qEnvironmentVariableIsSet("IMUDESK_LAYOUT_SCALE")
+        ? QString::fromLocal8Bit(qgetenv("IMUDESK_LAYOUT_SCALE")).toDouble()
+        : 1.0;
+    if (scale < 1.0 || scale > 4.0)
+        return 2;
+    if (scale != 1.0)
+        qputenv("QT_SCALE_FACTOR", QByteArray::number(scale));
     QTemporaryDir dir;
     const QString config = dir.filePath(QStringLiteral("screen.json"));
     QFile file(config);
     if (!file.open(QIODevice::WriteOnly))
         return 2;
-    file.write(R"({"screens": [{"name": "layout-test", "x": 0, "y": 0, "width": 1920, "height": 1080,)"
-               R"( "logicalDpi": 96, "logicalBaseDpi": 96, "dpr": 1}]})");
+    file.write(QStringLiteral("{\"screens\": [{\"name\": \"layout-test\", \"x\": 0, \"y\": 0, \"width\": %1, "
+                              "\"height\": %2, \"logicalDpi\": 96, \"logicalBaseDpi\": 96, \"dpr\": 1}]}")
+                   .arg(qRound(1920 * scale))
+                   .arg(qRound(1080 * scale))
+                   .toLatin1());
     file.close();
     qputenv("QT_QPA_PLATFORM", "offscreen:configfile=" + config.toLocal8Bit());
     qputenv("IMUDESK_NO_SAVE_LAYOUT", "1");
