@@ -22,6 +22,13 @@ namespace imudesk::ui {
 using plot::TimeAxis;
 
 namespace {
+// Sets a toolbar toggle without its toggled signal (the caller is what it would call).
+void checkQuietly(QAction *action, bool on)
+{
+    const QSignalBlocker blocker(action);
+    action->setChecked(on);
+}
+
 // Narrower than this, the charts go in one column.
 constexpr int kMinimumChartWidth = 380;
 } // namespace
@@ -77,13 +84,8 @@ ChartPanel::ChartPanel(QWidget *parent) : QWidget(parent)
     m_toolBar->addWidget(m_chartsButton);
     m_toolBar->addSeparator();
 
-    m_windowLabel = new QLabel(this);
-    m_windowCombo = new QComboBox(this);
-    m_windowCombo->setObjectName(QStringLiteral("windowCombo"));
-    m_windowLabel->setBuddy(m_windowCombo);
-    ChartView::fillWindowCombo(m_windowCombo, m_window);
-    connect(m_windowCombo, &QComboBox::currentIndexChanged, this,
-            [this](int) { setWindowSeconds(m_windowCombo->currentData().toDouble()); });
+    m_windowCombo = ChartView::makeWindowChooser(this, m_window, m_windowLabel,
+                                                 [this](double seconds) { setWindowSeconds(seconds); });
     m_toolBar->addWidget(m_windowLabel);
     m_toolBar->addWidget(m_windowCombo);
 
@@ -279,10 +281,7 @@ void ChartPanel::setWindowSeconds(double seconds)
 void ChartPanel::setPaused(bool paused)
 {
     m_paused = paused;
-    {
-        const QSignalBlocker blocker(m_pauseAction);
-        m_pauseAction->setChecked(paused);
-    }
+    checkQuietly(m_pauseAction, paused);
     for (ChartView *chart : m_charts)
         chart->setPaused(paused);
     retranslateUi();
@@ -291,10 +290,7 @@ void ChartPanel::setPaused(bool paused)
 void ChartPanel::setCursorEnabled(bool on)
 {
     m_cursorEnabled = on;
-    {
-        const QSignalBlocker blocker(m_cursorAction);
-        m_cursorAction->setChecked(on);
-    }
+    checkQuietly(m_cursorAction, on);
     for (ChartView *chart : m_charts)
         chart->setCursorEnabled(on);
 }

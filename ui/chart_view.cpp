@@ -236,6 +236,19 @@ void ChartView::fillWindowCombo(QComboBox *combo, double selected)
     }
 }
 
+QComboBox *ChartView::makeWindowChooser(QWidget *parent, double selected, QLabel *&label,
+                                        const std::function<void(double)> &chosen)
+{
+    label = new QLabel(parent);
+    auto *combo = new QComboBox(parent);
+    combo->setObjectName(QStringLiteral("windowCombo"));
+    label->setBuddy(combo);
+    fillWindowCombo(combo, selected);
+    QObject::connect(combo, &QComboBox::currentIndexChanged, parent,
+                     [combo, chosen](int) { chosen(combo->currentData().toDouble()); });
+    return combo;
+}
+
 bool ChartView::saveWidgetPng(QWidget *widget, const QString &path, QString *error)
 {
     const QImage image = widget->grab().toImage();

@@ -73,6 +73,11 @@ public:
     // "2 s" ... "10 min" for ChartSettings::kWindowChoices.
     static QString windowText(double seconds);
     static void fillWindowCombo(QComboBox *combo, double selected);
+    // The "Window:" label (its buddy set) and its combo of time spans, filled with `selected`
+    // current; `chosen` gets the seconds the user picks. The chart panel and the comparison
+    // chart share it.
+    static QComboBox *makeWindowChooser(QWidget *parent, double selected, QLabel *&label,
+                                        const std::function<void(double)> &chosen);
     // Grabs `widget` and writes it as PNG; false with a message when the file cannot be written.
     static bool saveWidgetPng(QWidget *widget, const QString &path, QString *error);
 

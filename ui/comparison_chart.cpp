@@ -70,13 +70,8 @@ ComparisonChart::ComparisonChart(QWidget *parent) : QWidget(parent)
     connect(m_channelCombo, &QComboBox::currentIndexChanged, this,
             [this](int) { setChannel(Channel(m_channelCombo->currentData().toInt())); });
 
-    m_windowLabel = new QLabel(this);
-    m_windowCombo = new QComboBox(this);
-    m_windowCombo->setObjectName(QStringLiteral("windowCombo"));
-    m_windowLabel->setBuddy(m_windowCombo);
-    ChartView::fillWindowCombo(m_windowCombo, m_window);
-    connect(m_windowCombo, &QComboBox::currentIndexChanged, this,
-            [this](int) { setWindowSeconds(m_windowCombo->currentData().toDouble()); });
+    m_windowCombo = ChartView::makeWindowChooser(this, m_window, m_windowLabel,
+                                                 [this](double seconds) { setWindowSeconds(seconds); });
 
     m_pauseButton = new QToolButton(this);
     m_pauseButton->setObjectName(QStringLiteral("pauseButton"));
