@@ -19,8 +19,8 @@
 # IMUDESK_DEBIAN_SECURITY, IMUDESK_FRESH_PACKAGE_LIST (another package list, for testing this check).
 #
 # Safety: every mount is made inside a private mount and PID namespace (unshare); the root gets its
-# own proc, a read-only sysfs and a tmpfs /dev holding only null, zero, full, random, urandom, tty and
-# a new devpts instance. Nothing of the host's /dev or /sys is ever bound into it. The root is
+# own proc, a read-only sysfs and a tmpfs /dev holding only null, zero, full, random, urandom, tty,
+# a new devpts instance and a tmpfs /dev/shm. Nothing of the host's /dev or /sys is ever bound into it. The root is
 # removed with `rm -rf --one-file-system` only after the namespace is gone, and only when the host
 # sees no mount below it.
 set -euo pipefail
@@ -66,6 +66,9 @@ if [ "${1:-}" = --inside ]; then
   done
   mkdir -m 0755 "$rootfs/dev/pts" && mkdir -m 1777 "$rootfs/dev/shm"
   mount -t devpts -o newinstance,ptmxmode=0666,mode=0620 devpts "$rootfs/dev/pts" || failstep "devpts"
+  # /dev/shm as on a real machine: its own tmpfs (half the memory), not the 16 MiB of /dev (the
+  # export benchmark writes its CSVs there).
+  mount -t tmpfs -o mode=1777,size=50%,nosuid,nodev tmpfs "$rootfs/dev/shm" || failstep "tmpfs /dev/shm"
   ln -s pts/ptmx "$rootfs/dev/ptmx"
   ln -s /proc/self/fd "$rootfs/dev/fd"
   ln -s /proc/self/fd/0 "$rootfs/dev/stdin"; ln -s /proc/self/fd/1 "$rootfs/dev/stdout"
