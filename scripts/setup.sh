@@ -61,10 +61,29 @@ if [ "$mode" = demo ]; then
   exec "$root/build/release/app/gui/imudesk" --demo
 fi
 
-# test
+# test: each phase says how long it took, and the end lists them all (for CI's log).
+phase_names=() phase_secs=()
+phase_name="" phase_start=$SECONDS run_start=$SECONDS
+phase() { # name: ends the running phase, starts this one
+  if [ -n "$phase_name" ]; then
+    phase_names+=("$phase_name"); phase_secs+=($((SECONDS - phase_start)))
+    echo "   ($((SECONDS - phase_start)) s)"
+  fi
+  phase_name="$1" phase_start=$SECONDS
+  [ -n "$1" ] && echo "== $1"
+  return 0
+}
+phase_summary() {
+  phase ""
+  echo "== time per phase"
+  for i in "${!phase_names[@]}"; do printf '   %6d s  %s\n' "${phase_secs[$i]}" "${phase_names[$i]}"; done
+  printf '   %6d s  in all\n' $((SECONDS - run_start))
+}
+trap 'phase_summary' EXIT
 export QT_QPA_PLATFORM=offscreen
+phase "build (release, tests and benchmarks)"
 configure_and_build "$root/build/test" Release -DIMUDESK_BUILD_TESTS=ON -DIMUDESK_BUILD_BENCH=ON
-echo "== fresh Debian 12 root: the package list alone configures the project and runs the app and CLI"
+phase "fresh Debian 12 root: the package list alone configures the project and runs the app and CLI"
 # Fails when a build, test or runtime dependency is missing from scripts/debian-packages.txt (the
 # host may have it installed by hand), naming it. Then the check's own safety test: a run killed
 # during its package install leaves the host's /dev untouched and its root removable.
@@ -74,11 +93,11 @@ else
   "$here/check-fresh-debian.sh" --build "$root/build/test"
   "$here/test-check-fresh-debian.sh"
 fi
-echo "== test suite"
+phase "test suite"
 # A test that fails is run once more: only a test that fails twice stops the run (the pty and
 # timing tests share two cores with everything else on a CI machine).
 (cd "$root/build/test" && ctest --output-on-failure -j "$jobs" --timeout 600 --repeat until-pass:2)
-echo "== benchmark (decode throughput against the manual's byte-at-a-time decoder)"
+phase "benchmark (decode throughput against the manual's byte-at-a-time decoder)"
 "$root/build/test/tests/bench/bench_decode" --mb 50
 # bench_gui_live and soak: exit 2 = a frame that reached ImuDesk was lost or the capture is
 # damaged (fails the run); exit 1 = a target missed, e.g. frames the pty dropped because a loaded
@@ -98,21 +117,21 @@ live_bench() {
   fi
   [ "$rc" -eq 0 ] || echo "!! $(basename "$1") missed a target (see above)"
 }
-echo "== benchmark (the whole window offscreen, simulator at 921600 baud, HI91 at 1000 Hz)"
+phase "benchmark (the whole window offscreen, simulator at 921600 baud, HI91 at 1000 Hz)"
 live_bench "$root/build/test/tests/bench/bench_gui_live" --seconds 60
 bench="$root/build/test/tests/bench"
-echo "== benchmark (export of a 1 kHz HI91 capture, 10 min of it in CI; --frames 3600000 for the full hour)"
+phase "benchmark (export of a 1 kHz HI91 capture, 10 min of it in CI; --frames 3600000 for the full hour)"
 "$bench/bench_export" --frames 600000 || echo "!! bench_export missed a target (see above)"
-echo "== benchmark (Allan deviation of 3.6 million samples per axis)"
+phase "benchmark (Allan deviation of 3.6 million samples per axis)"
 "$bench/bench_allan" || echo "!! bench_allan missed a target (see above)"
-echo "== benchmark (magnetometer fit accuracy and speed against known truth)"
+phase "benchmark (magnetometer fit accuracy and speed against known truth)"
 "$bench/bench_magcal" || echo "!! bench_magcal missed a target (see above)"
-echo "== benchmark (firmware update throughput over a pty at 115200 and 921600 baud)"
+phase "benchmark (firmware update throughput over a pty at 115200 and 921600 baud)"
 "$bench/bench_update" --quick || echo "!! bench_update missed a target (see above)"
-echo "== soak (1 kHz HI91 with recording and the GUI offscreen; 60 s in CI, one hour by default)"
+phase "soak (1 kHz HI91 with recording and the GUI offscreen; 60 s in CI, one hour by default)"
 live_bench "$bench/soak" --seconds 60
 
-echo "== test suite again, built with AddressSanitizer and UndefinedBehaviorSanitizer"
+phase "build with AddressSanitizer and UndefinedBehaviorSanitizer"
 # The whole suite, GUI tests included. -O1 without debug information keeps the build about a
 # third shorter than -O3 (the optimisation level AddressSanitizer's authors recommend). Leak
 # checking stays with the fuzzers (Qt's caches live until exit).
@@ -120,8 +139,9 @@ configure_and_build "$root/build/asan" Release -DCMAKE_CXX_FLAGS_RELEASE="-O1 -D
   -DIMUDESK_SANITIZE=ON -DIMUDESK_BUILD_GUI=ON -DIMUDESK_BUILD_TESTS=ON -DIMUDESK_BUILD_BENCH=OFF
 export ASAN_OPTIONS="detect_leaks=0:abort_on_error=1:strict_string_checks=1"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+phase "test suite again, in the sanitizer build"
 (cd "$root/build/asan" && ctest --output-on-failure -j "$jobs" --timeout 900 --repeat until-pass:2)
 unset ASAN_OPTIONS UBSAN_OPTIONS
 
-echo "== fuzzing every parser, ${FUZZ_SECONDS:-20} s each"
+phase "fuzzing every parser, ${FUZZ_SECONDS:-20} s each"
 FUZZ_JOBS="$jobs" "$root/tests/fuzz/run.sh" "${FUZZ_SECONDS:-20}" "$root/build/fuzz"
