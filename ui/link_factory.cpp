@@ -177,6 +177,10 @@ bool LinkFactory::openReplay(DeviceWorkspace &ws, const QString &path, QString *
     controls->setObjectName(QStringLiteral("replayControls"));
     controls->setSession(session);
     ws.addLinkDock(makeDock(controls, QStringLiteral("replayDock"), tr("Replay")), DeviceWorkspace::LinkDockPlace::Below);
+    // A capture plays as soon as it is open, as a recording would on a player: the views fill
+    // at once; Pause, seek and speed are in the Replay panel.
+    QObject::connect(session, &record::ReplaySession::opened, session, [session] { session->play(); },
+                     Qt::SingleShotConnection);
     session->open(path);
     return true;
 }

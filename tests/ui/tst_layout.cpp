@@ -26,7 +26,6 @@
 #include "main_window.h"
 #include "model/main_status.h"
 #include "models/latest_values_model.h"
-#include "record/replay_session.h"
 #include "status_flags_widget.h"
 #include "window_settings.h"
 
@@ -234,15 +233,8 @@ class TstLayout : public QObject {
             return ui::LinkFactory::connectCan(*w.freeWorkspaceForLink(), o, true, sim::Motion::Static, error);
         }
         case Kind::Replay: {
-            DeviceWorkspace *ws = w.freeWorkspaceForLink();
-            if (!ui::LinkFactory::openReplay(*ws, m_capture, error))
-                return false;
-            // As the user would: press play (a capture opens paused).
-            auto *replay = qobject_cast<record::ReplaySession *>(&ws->link());
-            if (!replay)
-                return false;
-            replay->play();
-            return true;
+            // The capture plays once it is open: runKind() waits for its data on the views.
+            return ui::LinkFactory::openReplay(*w.freeWorkspaceForLink(), m_capture, error);
         }
         }
         return false;
