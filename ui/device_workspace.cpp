@@ -441,16 +441,23 @@ void DeviceWorkspace::refreshViews()
     const quint64 total = store.totalAppended();
     if (total == m_shownTotal)
         return;
-    m_shownTotal = total;
     std::optional<model::Sample> latest = store.latest();
     // Before firmware 1.7.0 the MAIN_STATUS bytes are reserved: show them as not reported.
     if (latest && m_identity && m_identity->firmware && !m_identity->hasMainStatus())
         latest->fields &= ~uint32_t(model::FieldMainStatus);
-    m_valuesModel->refresh(latest);
+    // The 3D attitude on every tick, so that it moves smoothly.
     if (latest && latest->has(model::FieldQuat))
         m_attitude->setQuaternion(latest->quat);
     else if (latest && latest->has(model::FieldEuler)) // links that send angles only (HEC495, Modbus)
         m_attitude->setQuaternion(model::quatFromEnu312(model::Euler{latest->roll, latest->pitch, latest->yaw}));
+    // The numbers at most ten times a second: digits that change faster cannot be read, and
+    // their text layout is a good part of the GUI thread's work at 1 kHz. A tick that skips
+    // them leaves m_shownTotal behind, so the newest values always arrive.
+    if (m_valuesClock.isValid() && m_valuesClock.elapsed() < kValuesIntervalMs)
+        return;
+    m_valuesClock.restart();
+    m_shownTotal = total;
+    m_valuesModel->refresh(latest);
     // The rows follow what the link sends (see rowInTable).
     bool rowsChanged = false;
     const bool anyData = m_valuesModel->everSeen(models::LatestValuesModel::FrameType);

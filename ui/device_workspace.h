@@ -7,6 +7,7 @@
 #include "preferences.h"
 #include "sim/hipnuc_simulator.h"
 
+#include <QElapsedTimer>
 #include <QHash>
 #include <QMainWindow>
 #include <QPointer>
@@ -54,6 +55,7 @@ public:
     static std::optional<LayoutPreset> presetFromKey(const QString &key);
 
     static constexpr int kRefreshIntervalMs = 30; // default 33 Hz view clock (<= 60 Hz, >= 30 charts/s)
+    static constexpr int kValuesIntervalMs = 100; // the values table and status flags: at most 10 Hz
     static constexpr size_t kMaxSamplesPerTick = 20000; // a stalled GUI catches up without a burst
     static constexpr int kCommandTimeoutMs = 1000;
 
@@ -208,6 +210,7 @@ private:
     bool m_shownOnce = false;
     // The user dragged a separator: the preset's proportions no longer follow the window size.
     bool m_userSized = false;
+    QElapsedTimer m_valuesClock; // when the values table was last refreshed
     bool m_keepSimulator = false; // the port is lent out (firmware update): the simulator stays
     int m_valuesColumnsWidth = 0; // what the values table's columns need, without the stretch
     uint64_t m_chartSeq = 0; // next sample of the store the charts have not seen
