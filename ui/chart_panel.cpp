@@ -303,10 +303,7 @@ void ChartPanel::setChartChosen(ChartKind kind, bool chosen)
         m_hiddenCharts &= ~(1u << int(kind));
     else
         m_hiddenCharts |= 1u << int(kind);
-    {
-        const QSignalBlocker blocker(m_chartActions[size_t(kind)]);
-        m_chartActions[size_t(kind)]->setChecked(chosen);
-    }
+    checkQuietly(m_chartActions[size_t(kind)], chosen);
     layoutCharts();
     Q_EMIT settingsChanged();
 }

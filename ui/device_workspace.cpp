@@ -1,7 +1,5 @@
 #include "device_workspace.h"
 
-#include <algorithm>
-
 #include "attitude_widget.h"
 #include "model/attitude.h"
 #include "config_panel.h"
@@ -29,6 +27,8 @@
 #include <QTableView>
 #include <QVBoxLayout>
 
+#include <algorithm>
+
 namespace imudesk::ui {
 
 using device::SessionState;
@@ -45,6 +45,14 @@ bool rowInTable(models::LatestValuesModel::Row row, bool everSeen, bool anyData)
     if (row == Model::StatusFlags || row == Model::FrameType)
         return false;
     return anyData ? everSeen : Model::isCoreRow(row);
+}
+
+QDockWidget *makeDock(QWidget *content, const QString &objectName)
+{
+    auto *dock = new QDockWidget(content->parentWidget());
+    dock->setObjectName(objectName);
+    dock->setWidget(content);
+    return dock;
 }
 
 bool busyState(SessionState s)
@@ -94,74 +102,41 @@ DeviceWorkspace::DeviceWorkspace(QWidget *parent) : QMainWindow(parent)
     m_charts->setObjectName(QStringLiteral("chartPanel"));
     setCentralWidget(m_charts);
 
-    // Right: the values, and below them the 3D attitude, each a dock of its own.
-    m_valuesDock = new QDockWidget(this);
-    m_valuesDock->setObjectName(QStringLiteral("valuesDock"));
-    m_valuesDock->setWidget(m_valuesView);
-    addDockWidget(Qt::RightDockWidgetArea, m_valuesDock);
+    // Right: the values, and below them the 3D attitude, each a dock of its own; the HiPNUC
+    // serial link's settings behind the values. Below the charts, as tabs: the ASCII console,
+    // the raw link traffic, the log of every command this window sent with its reply, and
+    // the recording controls. applyPreset() puts them in place.
+    m_valuesDock = makeDock(m_valuesView, QStringLiteral("valuesDock"));
     m_attitude = new AttitudeWidget(this);
     m_attitude->setObjectName(QStringLiteral("attitudeWidget"));
-    m_attitudeDock = new QDockWidget(this);
-    m_attitudeDock->setObjectName(QStringLiteral("attitudeDock"));
-    m_attitudeDock->setWidget(m_attitude);
-    addDockWidget(Qt::RightDockWidgetArea, m_attitudeDock);
-    splitDockWidget(m_valuesDock, m_attitudeDock, Qt::Vertical);
+    m_attitudeDock = makeDock(m_attitude, QStringLiteral("attitudeDock"));
     // The right column runs the whole height: the panels below the charts never shorten the
     // attitude view.
     setCorner(Qt::TopRightCorner, Qt::RightDockWidgetArea);
     setCorner(Qt::BottomRightCorner, Qt::RightDockWidgetArea);
 
-    // Bottom dock: the ASCII console.
     m_console = new ConsoleWidget(this);
     m_console->setObjectName(QStringLiteral("console"));
-    m_consoleDock = new QDockWidget(this);
-    m_consoleDock->setObjectName(QStringLiteral("consoleDock"));
-    m_consoleDock->setWidget(m_console);
-    addDockWidget(Qt::BottomDockWidgetArea, m_consoleDock);
-
-    // Bottom, as tabs beside the console: the raw link traffic and the log of every
-    // command this window sent with its reply.
+    m_consoleDock = makeDock(m_console, QStringLiteral("consoleDock"));
     m_rawView = new RawBytesView(this);
     m_rawView->setObjectName(QStringLiteral("rawBytesView"));
     m_rawView->setLog(&m_session.rawLog());
-    m_rawDock = new QDockWidget(this);
-    m_rawDock->setObjectName(QStringLiteral("rawBytesDock"));
-    m_rawDock->setWidget(m_rawView);
-    addDockWidget(Qt::BottomDockWidgetArea, m_rawDock);
+    m_rawDock = makeDock(m_rawView, QStringLiteral("rawBytesDock"));
     m_commandLog = new CommandLogWidget(this);
     m_commandLog->setObjectName(QStringLiteral("commandLog"));
-    m_commandLogDock = new QDockWidget(this);
-    m_commandLogDock->setObjectName(QStringLiteral("commandLogDock"));
-    m_commandLogDock->setWidget(m_commandLog);
-    addDockWidget(Qt::BottomDockWidgetArea, m_commandLogDock);
-    // The HiPNUC serial link's settings (right, behind the values) and recording (bottom).
+    m_commandLogDock = makeDock(m_commandLog, QStringLiteral("commandLogDock"));
     m_configPanel = new ConfigPanel(m_session, this);
     m_configPanel->setObjectName(QStringLiteral("configPanel"));
-    m_configDock = new QDockWidget(this);
-    m_configDock->setObjectName(QStringLiteral("configDock"));
-    m_configDock->setWidget(m_configPanel);
-    addDockWidget(Qt::RightDockWidgetArea, m_configDock);
-    tabifyDockWidget(m_valuesDock, m_configDock);
-    m_valuesDock->raise();
-    // Hidden until asked for (Device > Configuration): its table would widen the right
-    // column and squeeze the charts.
-    m_configDock->hide();
+    m_configDock = makeDock(m_configPanel, QStringLiteral("configDock"));
     m_recording = new RecordingControls(this);
     m_recording->setObjectName(QStringLiteral("recordingControls"));
     m_recording->setSession(&m_session);
-    m_recordingDock = new QDockWidget(this);
-    m_recordingDock->setObjectName(QStringLiteral("recordingDock"));
-    m_recordingDock->setWidget(m_recording);
-    addDockWidget(Qt::BottomDockWidgetArea, m_recordingDock);
+    m_recordingDock = makeDock(m_recording, QStringLiteral("recordingDock"));
     connect(m_recording, &RecordingControls::recordingFailed, this, &DeviceWorkspace::onErrorOccurred);
-    tabifyDockWidget(m_consoleDock, m_rawDock);
-    tabifyDockWidget(m_rawDock, m_commandLogDock);
-    tabifyDockWidget(m_commandLogDock, m_recordingDock);
-    m_consoleDock->raise();
-    // The panels below the charts start closed: they open on demand (View menu, Ctrl+` for
-    // the console, an ERR reply, a recording).
-    for (QDockWidget *dock : {m_consoleDock, m_rawDock, m_commandLogDock, m_recordingDock})
-        dock->hide();
+    // The Monitor layout: the settings hidden until asked for (Device > Configuration, or the
+    // Configure layout), the panels below the charts closed until needed (View menu, Ctrl+`
+    // for the console, an ERR reply, a recording).
+    applyPreset(LayoutPreset::Monitor);
     m_consoleDock->toggleViewAction()->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_QuoteLeft));
     connect(m_recording, &RecordingControls::recordingStarted, this, [this] { openDock(m_recordingDock); });
 
@@ -469,7 +444,7 @@ void DeviceWorkspace::refreshViews()
             rowsChanged = true;
         }
     }
-    if (rowsChanged && m_shownOnce && !m_userSized && !m_layoutRestored)
+    if (rowsChanged && followsWindow())
         fitDocks(); // room for the new rows
     m_flags->setStatus(latest && latest->has(model::FieldMainStatus) ? std::optional<quint16>(latest->mainStatus)
                                                                      : std::nullopt);
@@ -694,9 +669,9 @@ int DeviceWorkspace::valuesTableWidth() const
 {
     // The vertical scroll bar's width from the style: its size hint is not settled before the
     // view is first shown.
-    int w = 2 * m_valuesView->frameWidth()
-        + m_valuesView->style()->pixelMetric(QStyle::PM_ScrollBarExtent, nullptr, m_valuesView->verticalScrollBar());
-    return w + m_valuesColumnsWidth;
+    return 2 * m_valuesView->frameWidth()
+        + m_valuesView->style()->pixelMetric(QStyle::PM_ScrollBarExtent, nullptr, m_valuesView->verticalScrollBar())
+        + m_valuesColumnsWidth;
 }
 
 int DeviceWorkspace::valuesTableHeight() const
@@ -705,14 +680,14 @@ int DeviceWorkspace::valuesTableHeight() const
     for (int r = 0; r < m_valuesModel->rowCount(); ++r)
         rows += m_valuesView->isRowHidden(r) ? 0 : 1;
     const int rowsHeight = rows * m_valuesView->verticalHeader()->defaultSectionSize();
-    // Laid out: what the dock spends besides the rows (title bar, tab bar, header, frame), as
-    // measured. Before that: an estimate of it.
     // The tab bar of docks tabbed with the values is the main window's, not the dock's.
     bool tabbed = false;
     for (const QDockWidget *other : tabifiedDockWidgets(m_valuesDock))
         tabbed = tabbed || !other->isHidden();
     const int tabBar = tabbed ? m_valuesDock->fontMetrics().height() + 14 : 0;
     constexpr int kSlack = 20; // the separator, the layout's spacing and rounding
+    // Laid out: what the dock spends besides the rows (title bar, header, frame), as measured.
+    // Before that: an estimate of it.
     if (m_valuesDock->isVisible() && m_valuesView->viewport()->height() > 0)
         return m_valuesDock->height() - m_valuesView->viewport()->height() + rowsHeight + tabBar + kSlack;
     const int title = m_valuesDock->style()->pixelMetric(QStyle::PM_TitleBarHeight, nullptr, m_valuesDock);
@@ -783,9 +758,10 @@ void DeviceWorkspace::applyPreset(LayoutPreset preset)
     for (int i = 1; i < bottom.size(); ++i)
         tabifyDockWidget(bottom[i - 1], bottom[i]);
 
-    // Calibrate gives the whole right column to the 3D attitude (the wizards show their own figures).
+    // Calibrate gives the whole right column to the 3D attitude (the wizards show their own
+    // figures); Configure gives it to the settings table.
     m_valuesDock->setVisible(preset != LayoutPreset::Calibrate);
-    m_attitudeDock->setVisible(preset != LayoutPreset::Analyse);
+    m_attitudeDock->setVisible(preset == LayoutPreset::Monitor || preset == LayoutPreset::Calibrate);
     m_configDock->setVisible(serial && preset == LayoutPreset::Configure);
     // Configure gives the height to the charts (the settings table shows each reply; an ERR
     // opens the console); Calibrate keeps the console for the wizards' commands.
@@ -793,12 +769,10 @@ void DeviceWorkspace::applyPreset(LayoutPreset preset)
     m_rawDock->setVisible(serial && preset == LayoutPreset::Analyse);
     m_commandLogDock->setVisible(serial && preset == LayoutPreset::Analyse);
     m_recordingDock->setVisible(false);
-    if (preset == LayoutPreset::Configure) {
-        m_attitudeDock->setVisible(false); // the settings table gets the whole height
+    if (preset == LayoutPreset::Configure)
         m_configDock->raise();
-    } else {
+    else
         m_valuesDock->raise();
-    }
     if (preset == LayoutPreset::Analyse)
         m_rawDock->raise();
     else
@@ -834,9 +808,8 @@ void DeviceWorkspace::fitDocks()
         }
     }
     if (!m_attitudeDock->isHidden() && !m_valuesDock->isHidden()) {
-        // The attitude takes what the rows of the table leave.
-        // The values need every row in view; the attitude keeps at least 165 px (a quarter of
-        // a short window).
+        // The values need every row in view, the attitude takes the rest: at least 165 px (a
+        // quarter of a short window).
         const int attitudeLeast = std::min(165, h / 4);
         const int values = std::clamp(valuesTableHeight(), int(h * 0.3), h - attitudeLeast);
         resizeDocks({m_valuesDock, m_attitudeDock}, {values, std::max(1, h - values)}, Qt::Vertical);
@@ -910,9 +883,8 @@ void DeviceWorkspace::showEvent(QShowEvent *event)
 void DeviceWorkspace::resizeEvent(QResizeEvent *event)
 {
     QMainWindow::resizeEvent(event);
-    // Until the user drags a separator, the preset's proportions follow the window (the
-    // first show may come before the window is maximised or fitted to the screen).
-    if (m_shownOnce && !m_userSized && !m_layoutRestored)
+    // The first show may come before the window is maximised or fitted to the screen.
+    if (followsWindow())
         fitDocks();
 }
 

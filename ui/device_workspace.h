@@ -228,6 +228,9 @@ private:
     QList<QDockWidget *> m_linkDocks;
     QHash<QDockWidget *, LinkDockPlace> m_linkDockPlaces;
     void placeLinkDock(QDockWidget *dock);
+    // The preset's proportions follow the window's size: shown, not restored from the user's
+    // settings, and no separator dragged by the user since.
+    bool followsWindow() const { return m_shownOnce && !m_userSized && !m_layoutRestored; }
     QLabel *m_stateLabel = nullptr;
     QLabel *m_identityLabel = nullptr;
     QLabel *m_statsLabel = nullptr;
