@@ -1,6 +1,7 @@
 #include "attitude_widget.h"
 
 #include "model/attitude.h"
+#include "paint_helpers.h"
 
 #include <QActionGroup>
 #include <QContextMenuEvent>
@@ -342,15 +343,18 @@ void AttitudeWidget::paintEvent(QPaintEvent *)
 {
     QPainter p(this);
     p.setRenderHint(QPainter::Antialiasing);
-    p.fillRect(rect(), palette().color(QPalette::Base));
 
     const View v(m_azimuth, m_elevation, modelArea(), m_quat, !m_hasData);
     // Painter's algorithm: ground, far half of the axes, body faces back to front, near
     // half of the axes, then all labels and the read-outs on top. With the camera under
     // the ground plane the ground is in front of the module.
     const bool groundBehind = v.eye.z() > kGroundZ;
-    if (groundBehind)
-        paintGround(p, v, false);
+    if (groundBehind) {
+        paintCachedGround(p, v);
+        paintShadow(p, v);
+    } else {
+        p.fillRect(rect(), palette().color(QPalette::Base));
+    }
     paintAxes(p, v, false, false);
     paintBody(p, v);
     paintAxes(p, v, true, false);
@@ -386,16 +390,48 @@ void AttitudeWidget::paintGround(QPainter &p, const View &v, bool labels) const
         }
         return;
     }
+    paintGroundLines(p, v);
+    paintShadow(p, v);
+}
 
-    // Grid.
-    QColor gridColour = ink;
-    gridColour.setAlphaF(0.18);
-    p.setPen(QPen(gridColour, 1.0));
+void AttitudeWidget::paintGroundLines(QPainter &p, const View &v) const
+{
+    const QColor ink = palette().color(QPalette::Text);
+    const auto ground = [](double x, double y) { return Vector3d(x, y, kGroundZ); };
+    const double g = kGridHalf;
+    const Vector3d triadOrigin = ground(-g, -g);
+    constexpr double kTriad = 1.2;
+    const std::array<Vector3d, 3> triad = m_frame == DisplayFrame::Enu
+        ? std::array<Vector3d, 3>{Vector3d::UnitX(), Vector3d::UnitY(), Vector3d::UnitZ()}
+        : std::array<Vector3d, 3>{Vector3d::UnitY(), Vector3d::UnitX(), -Vector3d::UnitZ()};
+
+    // Grid: opaque and cosmetic: drawn pixel by pixel, not blended as a path.
+    p.setPen(QPen(mixColours(palette().color(QPalette::Base), ink, 0.18), 0));
     for (int i = -kGridHalf; i <= kGridHalf; ++i) {
         p.drawLine(v.project(ground(i, -g)), v.project(ground(i, g)));
         p.drawLine(v.project(ground(-g, i)), v.project(ground(g, i)));
     }
 
+    // North arrow on the ground, from the centre to the grid's north edge.
+    QColor north = ink;
+    north.setAlphaF(0.7);
+    p.setPen(QPen(north, 2.0, Qt::SolidLine, Qt::FlatCap));
+    p.drawLine(v.project(ground(0, 0)), v.project(ground(0, g - 0.8)));
+    const std::array<QPointF, 3> head{v.project(ground(-0.35, g - 0.8)), v.project(ground(0.35, g - 0.8)),
+                                      v.project(ground(0, g))};
+    p.setPen(Qt::NoPen);
+    p.setBrush(north);
+    p.drawConvexPolygon(head.data(), 3);
+
+    // Navigation-frame triad.
+    p.setPen(QPen(north, 1.5, Qt::SolidLine, Qt::RoundCap));
+    for (int i = 0; i < 3; ++i)
+        p.drawLine(v.project(triadOrigin), v.project(triadOrigin + kTriad * triad[i]));
+}
+
+void AttitudeWidget::paintShadow(QPainter &p, const View &v) const
+{
+    const auto ground = [](double x, double y) { return Vector3d(x, y, kGroundZ); };
     // Shadow of the module straight down: convex hull of the 8 corners dropped on the ground.
     std::array<QPointF, 8> pts;
     for (int i = 0; i < 8; ++i) {
@@ -424,22 +460,23 @@ void AttitudeWidget::paintGround(QPainter &p, const View &v, bool labels) const
         p.setBrush(QColor(0, 0, 0, 38));
         p.drawConvexPolygon(hull.data(), k - 1);
     }
+}
 
-    // North arrow on the ground, from the centre to the grid's north edge.
-    QColor north = ink;
-    north.setAlphaF(0.7);
-    p.setPen(QPen(north, 2.0, Qt::SolidLine, Qt::FlatCap));
-    p.drawLine(v.project(ground(0, 0)), v.project(ground(0, g - 0.8)));
-    const std::array<QPointF, 3> head{v.project(ground(-0.35, g - 0.8)), v.project(ground(0.35, g - 0.8)),
-                                      v.project(ground(0, g))};
-    p.setPen(Qt::NoPen);
-    p.setBrush(north);
-    p.drawConvexPolygon(head.data(), 3);
-
-    // Navigation-frame triad.
-    p.setPen(QPen(north, 1.5, Qt::SolidLine, Qt::RoundCap));
-    for (int i = 0; i < 3; ++i)
-        p.drawLine(v.project(triadOrigin), v.project(triadOrigin + kTriad * triad[i]));
+void AttitudeWidget::paintCachedGround(QPainter &p, const View &v) const
+{
+    const QPalette pal = palette();
+    const GroundKey key{size(), devicePixelRatioF(), m_azimuth, m_elevation, m_frame, m_hasData,
+                        pal.color(QPalette::Base).rgb(), pal.color(QPalette::Text).rgb()};
+    if (m_ground.isNull() || !(key == m_groundKey)) {
+        m_ground = QPixmap(size() * key.dpr);
+        m_ground.setDevicePixelRatio(key.dpr);
+        m_ground.fill(pal.color(QPalette::Base));
+        QPainter gp(&m_ground);
+        gp.setRenderHint(QPainter::Antialiasing);
+        paintGroundLines(gp, v);
+        m_groundKey = key;
+    }
+    p.drawPixmap(0, 0, m_ground);
 }
 
 void AttitudeWidget::paintBody(QPainter &p, const View &v) const
@@ -553,13 +590,16 @@ void AttitudeWidget::paintReadouts(QPainter &p) const
                          m_noDataStatic);
         return;
     }
-    QColor back = palette().color(QPalette::Base);
-    back.setAlphaF(0.82);
-    QColor frame = ink;
-    frame.setAlphaF(0.25);
-    p.setPen(QPen(frame, 1.0));
-    p.setBrush(back);
-    p.drawRoundedRect(m_panel, 4, 4);
+    // Beside the model, never over it: an opaque box, drawn without antialiasing (a plain
+    // rectangle fill, not a blended path: cheap at the refresh rate).
+    const QColor back = palette().color(QPalette::Base);
+    p.save();
+    p.setRenderHint(QPainter::Antialiasing, false);
+    p.fillRect(m_panel, back);
+    p.setPen(QPen(mixColours(back, ink, 0.25), 0));
+    p.setBrush(Qt::NoBrush);
+    p.drawRect(m_panel.toAlignedRect().adjusted(0, 0, -1, -1));
+    p.restore();
 
     p.setPen(ink);
     const double left = m_panel.left() + kPanelPadding, right = m_panel.right() - kPanelPadding;

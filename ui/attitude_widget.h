@@ -32,6 +32,7 @@
 #include "model/sample.h"
 
 #include <QStaticText>
+#include <QPixmap>
 #include <QWidget>
 
 #include <array>
@@ -109,7 +110,14 @@ private:
 
     void retranslate();
     void updateReadouts();
+    // The ground: its lines (grid, north arrow, navigation triad; they depend on the camera
+    // only), the module's shadow, or (labels) the world-axis labels.
     void paintGround(QPainter &p, const View &v, bool labels) const;
+    void paintGroundLines(QPainter &p, const View &v) const;
+    void paintShadow(QPainter &p, const View &v) const;
+    // The background with the ground's lines, from a pixmap made again only when the camera,
+    // the size or the palette changes.
+    void paintCachedGround(QPainter &p, const View &v) const;
     void paintBody(QPainter &p, const View &v) const;
     void paintAxes(QPainter &p, const View &v, bool nearSide, bool labels) const;
     void paintReadouts(QPainter &p) const;
@@ -123,6 +131,18 @@ private:
 
     bool m_dragging = false;
     QPointF m_lastMouse;
+
+    struct GroundKey {
+        QSize size;
+        qreal dpr = 0;
+        double azimuth = 0, elevation = 0;
+        DisplayFrame frame = DisplayFrame::Enu;
+        bool hasData = false;
+        QRgb base = 0, ink = 0;
+        bool operator==(const GroundKey &) const = default;
+    };
+    mutable QPixmap m_ground;
+    mutable GroundKey m_groundKey;
 
     // Text prepared on change, not per paint.
     std::array<QStaticText, 3> m_axisLabels;  // X, Y, Z

@@ -1,9 +1,7 @@
 #include "chart_view.h"
 
-#include "plot_layer.h"
+#include "plot_canvas.h"
 
-#include <QChart>
-#include <QChartView>
 #include <QComboBox>
 #include <QDateTime>
 #include <QDir>
@@ -11,13 +9,9 @@
 #include <QEvent>
 #include <QFileDialog>
 #include <QFont>
-#include <QGraphicsLineItem>
 #include <QHBoxLayout>
 #include <QImageWriter>
 #include <QLabel>
-#include <QLegend>
-#include <QLegendMarker>
-#include <QLineSeries>
 #include <QMenu>
 #include <QMessageBox>
 #include <QMouseEvent>
@@ -25,7 +19,6 @@
 #include <QPen>
 #include <QPixmap>
 #include <QVBoxLayout>
-#include <QValueAxis>
 #include <QWidgetAction>
 
 #include <algorithm>
@@ -59,13 +52,6 @@ constexpr std::array<KindTraits, kChartKindCount> kTraits = {{
 const KindTraits &traits(ChartKind kind)
 {
     return kTraits[size_t(kind)];
-}
-
-QIcon swatch(const QColor &colour)
-{
-    QPixmap pixmap(12, 12);
-    pixmap.fill(colour);
-    return QIcon(pixmap);
 }
 
 } // namespace
@@ -273,69 +259,21 @@ ChartView::ChartView(ChartKind kind, QWidget *parent)
     m_fixedMin = traits(kind).fixedMin;
     m_fixedMax = traits(kind).fixedMax;
 
-    // The chart.
-    m_chart = new QChart;
-    m_chart->setAnimationOptions(QChart::NoAnimation);
-    m_chart->setMargins(QMargins(4, 4, 4, 4));
-    // The legend (for saved images) on the right, where it costs no height.
-    m_chart->legend()->setAlignment(Qt::AlignRight);
-    m_chart->legend()->setVisible(m_channels.size() > 1);
-    m_axisX = new QValueAxis(m_chart);
-    m_axisY = new QValueAxis(m_chart);
-    // Ticks on round values that stay put while the chart scrolls; plain titles (the bold
-    // default does not fit "Angular velocity (deg/s)" beside a short chart).
-    for (QValueAxis *axis : {m_axisX, m_axisY}) {
-        axis->setTickType(QValueAxis::TicksDynamic);
-        axis->setTickAnchor(0.0);
-        QFont font = axis->titleFont();
-        font.setBold(false);
-        axis->setTitleFont(font);
-    }
-    m_chart->addAxis(m_axisX, Qt::AlignBottom);
-    m_chart->addAxis(m_axisY, Qt::AlignLeft);
-    for (Channel c : m_channels) {
-        auto *series = new QLineSeries(m_chart);
-        QPen pen(colour(c));
-        pen.setWidthF(1.0);
-        series->setPen(pen);
-        m_chart->addSeries(series);
-        series->attachAxis(m_axisX);
-        series->attachAxis(m_axisY);
-        m_series[size_t(c)] = series;
-    }
-    m_layer = new PlotLayer(m_chart);
-    m_layer->setZValue(10);
+    m_canvas = new PlotCanvas(this);
+    m_canvas->setObjectName(QStringLiteral("chartArea"));
+    m_canvas->setMinimumHeight(kMinimumChartHeight);
+    // The legend (a chart of one axis has none) on the right, where it costs no height;
+    // clicking an entry hides or shows that axis (dimmed while hidden).
+    m_canvas->setLegendVisible(m_channels.size() > 1);
     for (Channel c : m_channels)
-        m_lineOf[size_t(c)] = m_layer->addLine(colour(c));
-    connect(m_chart, &QChart::plotAreaChanged, this, [this](const QRectF &area) { m_layer->setPlotArea(area); });
-    // The lines follow the axes, whoever sets their range.
-    const auto followAxes = [this] { m_layer->setRange(m_axisX->min(), m_axisX->max(), m_axisY->min(), m_axisY->max()); };
-    connect(m_axisX, &QValueAxis::rangeChanged, this, followAxes);
-    connect(m_axisY, &QValueAxis::rangeChanged, this, followAxes);
-    followAxes();
-    m_crosshairLine = new QGraphicsLineItem(m_chart);
-    QPen crosshairPen(QColor(0x60, 0x60, 0x60));
-    crosshairPen.setStyle(Qt::DashLine);
-    crosshairPen.setCosmetic(true);
-    m_crosshairLine->setPen(crosshairPen);
-    m_crosshairLine->setZValue(1000);
-    m_crosshairLine->hide();
-
-    m_chartView = new QChartView(m_chart, this);
-    m_chartView->setObjectName(QStringLiteral("chartArea"));
-    m_chartView->setRenderHint(QPainter::Antialiasing, false);
-    // Every refresh changes the whole plot: repaint the viewport in one go rather than
-    // computing the changed regions of thousands of segments.
-    m_chartView->setViewportUpdateMode(QGraphicsView::FullViewportUpdate);
+        m_lineOf[size_t(c)] = m_canvas->addLine(colour(c));
+    connect(m_canvas, &PlotCanvas::legendClicked, this, [this](int line) {
+        for (Channel c : m_channels)
+            if (m_lineOf[size_t(c)] == line)
+                setChannelVisible(c, !isChannelVisible(c));
+    });
+    m_canvas->installEventFilter(this);
     m_decimator.setExtremaOnly(true);
-    m_chartView->setMinimumHeight(kMinimumChartHeight);
-    m_chartView->viewport()->setMouseTracking(true);
-    m_chartView->viewport()->installEventFilter(this);
-
-    // The legend switches the axes: a click hides or shows one (dimmed while hidden).
-    for (Channel c : m_channels)
-        for (QLegendMarker *marker : m_chart->legend()->markers(m_series[size_t(c)]))
-            connect(marker, &QLegendMarker::clicked, this, [this, c] { setChannelVisible(c, !isChannelVisible(c)); });
 
     // The context menu: the vertical range and saving this chart.
     m_menu = new QMenu(this);
@@ -373,9 +311,9 @@ ChartView::ChartView(ChartKind kind, QWidget *parent)
     m_saveAction = m_menu->addAction(QString());
     m_saveAction->setObjectName(QStringLiteral("savePngAction"));
     connect(m_saveAction, &QAction::triggered, this, &ChartView::saveAsPngInteractive);
-    m_chartView->setContextMenuPolicy(Qt::CustomContextMenu);
-    connect(m_chartView, &QWidget::customContextMenuRequested, this,
-            [this](const QPoint &pos) { m_menu->popup(m_chartView->mapToGlobal(pos)); });
+    m_canvas->setContextMenuPolicy(Qt::CustomContextMenu);
+    connect(m_canvas, &QWidget::customContextMenuRequested, this,
+            [this](const QPoint &pos) { m_menu->popup(m_canvas->mapToGlobal(pos)); });
 
     m_readout = new QLabel(this);
     m_readout->setObjectName(QStringLiteral("crosshairReadout"));
@@ -388,7 +326,7 @@ ChartView::ChartView(ChartKind kind, QWidget *parent)
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(2, 2, 2, 2);
     layout->setSpacing(2);
-    layout->addWidget(m_chartView, 1);
+    layout->addWidget(m_canvas, 1);
     layout->addWidget(m_readout);
 
     updateScaleWidgets();
@@ -401,15 +339,13 @@ ChartView::~ChartView() = default;
 
 void ChartView::retranslateUi()
 {
-    m_chart->setTitle(title(m_kind));
+    m_canvas->setTitle(title(m_kind));
     const QString u = shownUnit();
-    m_axisY->setTitleText(u.isEmpty() ? quantity(m_kind) : tr("%1 (%2)", "quantity (unit)").arg(quantity(m_kind), u));
-    m_axisX->setTitleText(timeAxisTitle(m_timeAxis));
-    for (Channel c : m_channels) {
-        m_series[size_t(c)]->setName(axisName(c));
-        updateLegendMarker(c);
-    }
-    m_chartView->setToolTip(m_channels.size() > 1
+    m_canvas->setAxisTitles(timeAxisTitle(m_timeAxis),
+                            u.isEmpty() ? quantity(m_kind) : tr("%1 (%2)", "quantity (unit)").arg(quantity(m_kind), u));
+    for (Channel c : m_channels)
+        m_canvas->setLineName(m_lineOf[size_t(c)], axisName(c));
+    m_canvas->setToolTip(m_channels.size() > 1
                                 ? tr("Click an axis in the legend to hide or show it; right-click for the vertical "
                                      "range and to save this chart")
                                 : tr("Right-click for the vertical range and to save this chart"));
@@ -427,24 +363,6 @@ void ChartView::retranslateUi()
     m_saveAction->setToolTip(tr("Save this chart as a PNG image"));
     if (m_crosshairOn)
         m_readout->setText(readoutAt(m_crosshairX));
-}
-
-void ChartView::updateLegendMarker(Channel channel)
-{
-    // Hiding a series hides its legend entry too: keep the entry, dimmed, to switch it back.
-    const bool on = isChannelVisible(channel);
-    for (QLegendMarker *marker : m_chart->legend()->markers(m_series[size_t(channel)])) {
-        marker->setVisible(true);
-        QColor text = palette().color(QPalette::Text);
-        QColor swatchColour = colour(channel);
-        if (!on) {
-            text.setAlphaF(0.35);
-            swatchColour.setAlphaF(0.25);
-        }
-        marker->setLabelBrush(text);
-        marker->setBrush(swatchColour);
-        marker->setPen(QPen(swatchColour));
-    }
 }
 
 void ChartView::updateScaleWidgets()
@@ -488,7 +406,7 @@ void ChartView::setTimeAxis(TimeAxis axis)
     if (axis == m_timeAxis)
         return;
     m_timeAxis = axis;
-    m_axisX->setTitleText(timeAxisTitle(axis));
+    m_canvas->setAxisTitles(timeAxisTitle(axis), m_canvas->yTitle());
     if (m_paused) // the frozen range is on the other axis
         setPaused(false);
     hideCrosshair();
@@ -515,12 +433,9 @@ void ChartView::setChannelVisible(Channel channel, bool visible)
         m_visible |= plot::channelBit(channel);
     else
         m_visible &= ~plot::channelBit(channel);
-    QLineSeries *series = m_series[size_t(channel)];
-    series->setVisible(visible); // the legend entry
-    m_layer->setLineVisible(m_lineOf[size_t(channel)], visible);
+    m_canvas->setLineVisible(m_lineOf[size_t(channel)], visible);
     if (!visible)
         m_points[size_t(channel)].clear();
-    updateLegendMarker(channel);
     m_haveYRange = false;
     markDirty();
     if (m_crosshairOn)
@@ -573,10 +488,10 @@ void ChartView::setFixedRange(double min, double max)
 
 int ChartView::plotWidthPx() const
 {
-    const int w = int(m_chart->plotArea().width());
+    const int w = int(m_canvas->plotArea().width());
     if (w >= 1)
         return w;
-    return std::max(1, m_chartView->width() - 80); // before the first layout
+    return std::max(1, m_canvas->width() - 80); // before the first layout
 }
 
 ChartView::Window ChartView::liveWindow() const
@@ -594,31 +509,16 @@ ChartView::Window ChartView::liveWindow() const
     return w;
 }
 
-namespace {
-// Tick interval and label format of an axis; unchanged values are not set again (each set
-// re-creates the axis labels).
-void setTicks(QValueAxis *axis, double step)
-{
-    if (axis->tickInterval() != step)
-        axis->setTickInterval(step);
-    const QString format = QStringLiteral("%.%1f").arg(plot::AxisScaling::decimalsFor(step));
-    if (axis->labelFormat() != format)
-        axis->setLabelFormat(format);
-}
-} // namespace
-
 void ChartView::applyXAxis(const Window &w)
 {
     const double step = plot::AxisScaling::timeTickInterval(w.t1 - w.t0);
-    setTicks(m_axisX, step);
-    m_axisX->setRange(w.t0 - w.offset, w.t1 - w.offset);
+    m_canvas->setXRange(w.t0 - w.offset, w.t1 - w.offset, step, plot::AxisScaling::decimalsFor(step));
 }
 
 void ChartView::applyYAxis(double min, double max)
 {
     const double step = plot::AxisScaling::niceStep(max - min, 5);
-    setTicks(m_axisY, step);
-    m_axisY->setRange(min, max);
+    m_canvas->setYRange(min, max, step, plot::AxisScaling::decimalsFor(step));
 }
 
 void ChartView::setUnits(const model::DisplayUnits &units)
@@ -691,7 +591,7 @@ bool ChartView::refresh()
             r.yMin *= factor;
             r.yMax *= factor;
         }
-        m_layer->setPoints(m_lineOf[size_t(c)], points);
+        m_canvas->setPoints(m_lineOf[size_t(c)], points);
         if (r.rows > 0) {
             lo = any ? std::min(lo, r.yMin) : r.yMin;
             hi = any ? std::max(hi, r.yMax) : r.yMax;
@@ -717,10 +617,8 @@ bool ChartView::refresh()
     m_drawnWidth = width;
     m_dirty = false;
     ++m_redraws;
-    if (m_crosshairOn) {
-        positionCrosshair();
+    if (m_crosshairOn)
         m_readout->setText(readoutAt(m_crosshairX));
-    }
     return true;
 }
 
@@ -728,13 +626,11 @@ bool ChartView::refresh()
 
 bool ChartView::eventFilter(QObject *watched, QEvent *event)
 {
-    if (watched == m_chartView->viewport() && m_cursorEnabled) {
+    if (watched == m_canvas && m_cursorEnabled) {
         if (event->type() == QEvent::MouseMove) {
-            const auto *mouse = static_cast<QMouseEvent *>(event);
-            const QPointF scenePos = m_chartView->mapToScene(mouse->position().toPoint());
-            const QPointF chartPos = m_chart->mapFromScene(scenePos);
-            if (m_chart->plotArea().contains(chartPos) && !m_channels.empty()) {
-                showCrosshairAt(m_chart->mapToValue(chartPos, m_series[size_t(m_channels.front())]).x());
+            const QPointF pos = static_cast<QMouseEvent *>(event)->position();
+            if (m_canvas->plotArea().contains(pos)) {
+                showCrosshairAt(m_canvas->toValue(pos).x());
                 Q_EMIT crosshairMoved(m_crosshairX);
             } else {
                 hideCrosshair();
@@ -756,19 +652,11 @@ void ChartView::setCursorEnabled(bool on)
         hideCrosshair();
 }
 
-QLegendMarker *ChartView::legendMarker(Channel channel) const
-{
-    if (!m_chart->legend()->isVisible() || !m_series[size_t(channel)])
-        return nullptr;
-    const auto markers = m_chart->legend()->markers(m_series[size_t(channel)]);
-    return markers.isEmpty() ? nullptr : markers.front();
-}
-
 void ChartView::showCrosshairAt(double x)
 {
     m_crosshairX = x;
     m_crosshairOn = true;
-    positionCrosshair();
+    m_canvas->setCrosshair(x);
     m_readout->setText(readoutAt(x));
 }
 
@@ -777,29 +665,13 @@ void ChartView::hideCrosshair()
     if (!m_crosshairOn)
         return;
     m_crosshairOn = false;
-    m_crosshairLine->hide();
+    m_canvas->setCrosshair(std::nullopt);
     m_readout->clear();
 }
 
 QString ChartView::crosshairText() const
 {
     return m_crosshairOn ? m_readout->text() : QString();
-}
-
-void ChartView::positionCrosshair()
-{
-    const QRectF plot = m_chart->plotArea();
-    if (m_channels.empty() || plot.isEmpty()) {
-        m_crosshairLine->hide();
-        return;
-    }
-    const double px = m_chart->mapToPosition(QPointF(m_crosshairX, 0.0), m_series[size_t(m_channels.front())]).x();
-    if (px < plot.left() - 0.5 || px > plot.right() + 0.5) {
-        m_crosshairLine->hide();
-        return;
-    }
-    m_crosshairLine->setLine(px, plot.top(), px, plot.bottom());
-    m_crosshairLine->show();
 }
 
 QString ChartView::readoutAt(double x) const
@@ -834,7 +706,7 @@ QString ChartView::readoutAt(double x) const
 
 bool ChartView::savePng(const QString &path, QString *error) const
 {
-    return saveWidgetPng(m_chartView, path, error);
+    return saveWidgetPng(m_canvas, path, error);
 }
 
 void ChartView::saveAsPngInteractive()

@@ -1,6 +1,6 @@
 #pragma once
-// One live chart of a ChartPanel (e.g. the accelerometer): a QChart with one
-// QLineSeries per axis in a fixed colour. Its legend entries switch the axes on and off;
+// One live chart of a ChartPanel (e.g. the accelerometer): a PlotCanvas with one line
+// per axis in a fixed colour. Its legend entries switch the axes on and off;
 // its context menu holds auto scale or a fixed range and "Save as PNG…"; the time window,
 // pause and the crosshair are the panel's, shared by all charts. Below the plot, while the
 // panel's cursor is on, the crosshair read-out.
@@ -9,9 +9,8 @@
 // outside on the view clock; it redraws only while the chart is on screen, and only
 // when the settings changed or new data moved the window by at least one pixel
 // column. A redraw decimates each visible axis to at most 4 points per pixel column
-// (plot::MinMaxDecimator) and hands them to a PlotLayer drawn over the plot area (the
-// QLineSeries stay empty: legend and axes only); a device-clock gap or restart shows as
-// a break in the line.
+// (plot::MinMaxDecimator) and hands them to the canvas; a device-clock gap or restart
+// shows as a break in the line.
 //
 // X is seconds: on the device axis the device's own clock (system_time) of the newest
 // segment; on the host axis the time since the history's first sample.
@@ -31,20 +30,14 @@
 #include <vector>
 
 class QAction;
-class QChart;
-class QChartView;
 class QComboBox;
 class QDoubleSpinBox;
-class QGraphicsLineItem;
 class QLabel;
-class QLegendMarker;
-class QLineSeries;
 class QMenu;
-class QValueAxis;
 
 namespace imudesk::ui {
 
-class PlotLayer;
+class PlotCanvas;
 
 class ChartView : public QWidget {
     Q_OBJECT
@@ -137,18 +130,10 @@ public:
     int plotWidthPx() const;
     int drawnWidthPx() const { return m_drawnWidth; }
 
-    QChart *chart() const { return m_chart; }
-    QChartView *chartView() const { return m_chartView; }
-    // The legend entry of an axis (its QLineSeries carries no points: PlotLayer draws them).
-    QLineSeries *series(plot::Channel channel) const { return m_series[size_t(channel)]; }
+    // The surface the chart is drawn on: ranges, titles, plot area, legend entries.
+    PlotCanvas *canvas() const { return m_canvas; }
     // The decimated points drawn for an axis at the last redraw (empty while hidden).
     const QList<QPointF> &linePoints(plot::Channel channel) const;
-    PlotLayer *plotLayer() const { return m_layer; }
-    QValueAxis *axisX() const { return m_axisX; }
-    QValueAxis *axisY() const { return m_axisY; }
-    // The legend entry that switches an axis (clicking it toggles the axis); null for a
-    // chart of one axis, which has no legend.
-    QLegendMarker *legendMarker(plot::Channel channel) const;
     // The context menu's pieces.
     QMenu *contextMenu() const { return m_menu; }
     QAction *autoScaleAction() const { return m_autoScaleAction; }
@@ -179,11 +164,9 @@ private:
 
     void retranslateUi();
     void updateScaleWidgets();
-    void updateLegendMarker(plot::Channel channel);
     void applyXAxis(const Window &w);
     void applyYAxis(double min, double max);
     Window liveWindow() const;
-    void positionCrosshair();
     void saveAsPngInteractive();
     void markDirty() { m_dirty = true; }
 
@@ -216,15 +199,9 @@ private:
     bool m_crosshairOn = false;
     bool m_cursorEnabled = false;
 
-    QChart *m_chart = nullptr;
-    QChartView *m_chartView = nullptr;
-    QValueAxis *m_axisX = nullptr;
-    QValueAxis *m_axisY = nullptr;
-    std::array<QLineSeries *, plot::kChannelCount> m_series{};
+    PlotCanvas *m_canvas = nullptr;
     std::array<QList<QPointF>, plot::kChannelCount> m_points;
     std::array<int, plot::kChannelCount> m_lineOf{};
-    PlotLayer *m_layer = nullptr;
-    QGraphicsLineItem *m_crosshairLine = nullptr;
     QMenu *m_menu = nullptr;
     QAction *m_autoScaleAction = nullptr;
     QAction *m_saveAction = nullptr;

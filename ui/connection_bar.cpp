@@ -133,6 +133,20 @@ void ConnectionBar::setSessionState(device::SessionState state)
     m_baudCombo->setEnabled(!busy);
     retranslateUi();
     updateTargetLabel();
+    updateScanning();
+}
+
+void ConnectionBar::updateScanning()
+{
+    // The list is watched while a port can be chosen: not while a device is connected (the
+    // list is hidden then, and one scan reads a few thousand sysfs entries).
+    const bool wanted = isVisible() && !isBusy(m_state);
+    if (wanted && !m_scanTimer.isActive()) {
+        refreshPorts();
+        m_scanTimer.start();
+    } else if (!wanted) {
+        m_scanTimer.stop();
+    }
 }
 
 void ConnectionBar::setConnectedTarget(const QString &target)
@@ -209,9 +223,8 @@ void ConnectionBar::changeEvent(QEvent *event)
 
 void ConnectionBar::showEvent(QShowEvent *event)
 {
-    refreshPorts();
-    m_scanTimer.start();
     QWidget::showEvent(event);
+    updateScanning();
 }
 
 void ConnectionBar::hideEvent(QHideEvent *event)

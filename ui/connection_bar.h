@@ -37,6 +37,8 @@ public:
     QStringList portTexts() const;
 
 public Q_SLOTS:
+    // True while the port list is rescanned every kPortScanIntervalMs: shown and not connected.
+    bool isScanningPorts() const { return m_scanTimer.isActive(); }
     void refreshPorts();
 
 Q_SIGNALS:
@@ -52,6 +54,7 @@ private:
     void retranslateUi();
     void rebuildPortCombo();
     void onButtonClicked();
+    void updateScanning();
     void updateTargetLabel();
     QString portText(const PortChoice &choice) const;
 

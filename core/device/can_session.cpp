@@ -26,7 +26,6 @@ CanSession::CanSession(QObject *parent) : DeviceLink(parent), m_worker(new CanWo
     m_worker->moveToThread(canThread());
     connect(m_worker, &CanWorker::stateChanged, this, &CanSession::setState);
     connect(m_worker, &CanWorker::statsUpdated, this, &CanSession::statsUpdated);
-    connect(m_worker, &CanWorker::samplesAppended, this, &CanSession::samplesAppended);
     connect(m_worker, &CanWorker::errorOccurred, this, &CanSession::errorOccurred);
     connect(m_worker, &CanWorker::framesSeen, this, &CanSession::framesSeen);
     connect(m_worker, &CanWorker::nodeDiscovered, this, &CanSession::nodeDiscovered);

@@ -249,10 +249,8 @@ void CanWorker::onFramesReceived()
         events.append(CanFrameEvent{f, now, false});
         handleFrame(f, now, batch);
     }
-    if (!batch.empty()) {
+    if (!batch.empty())
         m_store->append(batch);
-        Q_EMIT samplesAppended(m_store->totalAppended());
-    }
     if (!events.isEmpty())
         Q_EMIT framesSeen(events);
 }

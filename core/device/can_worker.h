@@ -48,7 +48,6 @@ public:
 Q_SIGNALS:
     void stateChanged(imudesk::device::SessionState state, const QString &detail);
     void statsUpdated(const imudesk::device::SessionStats &stats);
-    void samplesAppended(quint64 total);
     void framesSeen(const imudesk::device::CanFrameEvents &events);
     void nodeDiscovered(const imudesk::device::CanNodeInfo &info);
     void protocolDetected(int protocol);

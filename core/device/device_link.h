@@ -32,7 +32,6 @@ Q_SIGNALS:
     void stateChanged(imudesk::device::SessionState state, const QString &detail);
     void identityChanged(const imudesk::model::DeviceIdentity &identity);
     void statsUpdated(const imudesk::device::SessionStats &stats);
-    void samplesAppended(quint64 totalSamples);
     void errorOccurred(const QString &message);
 
 protected:

@@ -41,7 +41,6 @@ DeviceSession::DeviceSession(QObject *parent) : DeviceLink(parent)
     connect(m_worker, &SessionWorker::identityQueryFinished, this, &DeviceSession::identityQueryFinished);
     connect(m_worker, &SessionWorker::commandFinished, this, &DeviceSession::commandFinished);
     connect(m_worker, &SessionWorker::statsUpdated, this, &DeviceSession::statsUpdated);
-    connect(m_worker, &SessionWorker::samplesAppended, this, &DeviceSession::samplesAppended);
     connect(m_worker, &SessionWorker::nmeaReceived, this, &DeviceSession::nmeaReceived);
     connect(m_worker, &SessionWorker::textReceived, this, &DeviceSession::textReceived);
     connect(m_worker, &SessionWorker::errorOccurred, this, &DeviceSession::errorOccurred);

@@ -21,7 +21,6 @@ Hec495Session::Hec495Session(QObject *parent) : DeviceLink(parent)
             [this](SessionState s, const QString &detail) { setState(s, detail); });
     connect(m_worker, &Hec495Worker::identityChanged, this, &Hec495Session::identityChanged);
     connect(m_worker, &Hec495Worker::statsUpdated, this, &Hec495Session::statsUpdated);
-    connect(m_worker, &Hec495Worker::samplesAppended, this, &Hec495Session::samplesAppended);
     connect(m_worker, &Hec495Worker::errorOccurred, this, &Hec495Session::errorOccurred);
     connect(m_worker, &Hec495Worker::commandFinished, this, &Hec495Session::commandFinished);
     connect(m_worker, &Hec495Worker::calibrationPoint, this, &Hec495Session::calibrationPoint);

@@ -499,10 +499,8 @@ void Hec495Worker::handleFrames(const std::vector<wl::Frame> &frames)
             writeCurrent(); // the line is quiet until the next frame
         }
     }
-    if (!m_batch.empty()) {
+    if (!m_batch.empty())
         m_store.append(m_batch);
-        Q_EMIT samplesAppended(m_store.totalAppended());
-    }
 }
 
 void Hec495Worker::onTransportFailed(const QString &message)

@@ -71,7 +71,6 @@ Q_SIGNALS:
     void commandFinished(quint64 id, const imudesk::device::Hec495Result &result);
     void calibrationPoint(int points);
     void statsUpdated(const imudesk::device::SessionStats &stats);
-    void samplesAppended(quint64 totalSamples);
     void errorOccurred(const QString &message);
 
 private:

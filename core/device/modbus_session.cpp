@@ -20,7 +20,6 @@ ModbusSession::ModbusSession(QObject *parent) : DeviceLink(parent)
     connect(m_worker, &ModbusWorker::stateChanged, this, [this](SessionState s, const QString &detail) { setState(s, detail); });
     connect(m_worker, &ModbusWorker::identityChanged, this, &ModbusSession::identityChanged);
     connect(m_worker, &ModbusWorker::statsUpdated, this, &ModbusSession::statsUpdated);
-    connect(m_worker, &ModbusWorker::samplesAppended, this, &ModbusSession::samplesAppended);
     connect(m_worker, &ModbusWorker::errorOccurred, this, &ModbusSession::errorOccurred);
     connect(m_worker, &ModbusWorker::registersRead, this, &ModbusSession::registersRead);
     connect(m_worker, &ModbusWorker::writeFinished, this, &ModbusSession::writeFinished);

@@ -356,7 +356,6 @@ void ModbusWorker::onPollResult(const Result &r)
     s.deviceTimeMs = double(m_clock.elapsed());
     ++m_polls;
     m_store.append({s});
-    Q_EMIT samplesAppended(m_store.totalAppended());
 }
 
 void ModbusWorker::publishStats()

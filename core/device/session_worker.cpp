@@ -329,10 +329,8 @@ void SessionWorker::handleEvents()
             break;
         }
     }
-    if (!m_batch.empty()) {
-        m_store.append(m_batch);
-        Q_EMIT samplesAppended(m_store.totalAppended());
-    }
+    if (!m_batch.empty())
+        m_store.append(m_batch); // the views read the store on their clock
 }
 
 void SessionWorker::onTransportFailed(const QString &message)

@@ -56,7 +56,6 @@ Q_SIGNALS:
     void identityQueryFinished(bool answered);
     void commandFinished(quint64 id, const imudesk::protocol::hipnuc::AsciiReply &reply);
     void statsUpdated(const imudesk::device::SessionStats &stats);
-    void samplesAppended(quint64 totalSamples);
     void nmeaReceived(const QString &sentence);
     void textReceived(const QString &line);
     void errorOccurred(const QString &message);

@@ -1,6 +1,7 @@
 #include "minmax_decimator.h"
 
 #include <algorithm>
+#include <limits>
 
 namespace imudesk::plot {
 
@@ -39,6 +40,7 @@ MinMaxDecimator::Result MinMaxDecimator::decimate(const ChannelHistory &history,
     bool open = false;
     bool breakBefore = false;
     int column = -1;
+    double columnStart = 0.0, columnEnd = 0.0;
     Item first{}, lo{}, hi{}, last{};
     uint32_t pending = 0;
     size_t seq = 0;
@@ -86,6 +88,18 @@ MinMaxDecimator::Result MinMaxDecimator::decimate(const ChannelHistory &history,
                 continue;
             const double t = times[p];
             const Item item{t, values[p], seq++};
+            // Still in the open column: two comparisons instead of a division into columns
+            // (a clock that went back opens a column again, as the formula would).
+            if (open && t >= columnStart && t < columnEnd) {
+                if (item.v < lo.v)
+                    lo = item;
+                if (item.v > hi.v)
+                    hi = item;
+                if (!m_extremaOnly)
+                    last = item;
+                pending = 0;
+                continue;
+            }
             const int c = std::min(int((t - t0) * scale), lastColumn);
             if (open && c == column) {
                 if (item.v < lo.v)
@@ -100,6 +114,8 @@ MinMaxDecimator::Result MinMaxDecimator::decimate(const ChannelHistory &history,
                 open = true;
                 column = c;
                 first = lo = hi = last = item;
+                columnStart = t;
+                columnEnd = c >= lastColumn ? std::numeric_limits<double>::infinity() : t0 + double(c + 1) / scale;
             }
             pending = 0;
         }

@@ -21,7 +21,6 @@ ReplaySession::ReplaySession(QObject *parent) : DeviceLink(parent)
     connect(m_worker, &ReplayWorker::playingChanged, this, &ReplaySession::playingChanged);
     connect(m_worker, &ReplayWorker::finished, this, &ReplaySession::finished);
     connect(m_worker, &ReplayWorker::statsUpdated, this, &ReplaySession::statsUpdated);
-    connect(m_worker, &ReplayWorker::samplesAppended, this, &ReplaySession::samplesAppended);
     connect(m_worker, &ReplayWorker::nmeaReceived, this, &ReplaySession::nmeaReceived);
     connect(m_worker, &ReplayWorker::errorOccurred, this, &ReplaySession::errorOccurred);
     m_thread.start();

@@ -236,7 +236,6 @@ void ReplayWorker::flushBatch()
         return;
     m_store.append(m_batch);
     m_batch.clear();
-    Q_EMIT samplesAppended(m_store.totalAppended());
 }
 
 void ReplayWorker::reportPosition(bool force)

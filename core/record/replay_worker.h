@@ -39,7 +39,6 @@ Q_SIGNALS:
     void playingChanged(bool playing);
     void finished();
     void statsUpdated(const imudesk::device::SessionStats &stats);
-    void samplesAppended(quint64 totalSamples);
     void nmeaReceived(const QString &sentence);
     void errorOccurred(const QString &message);
 

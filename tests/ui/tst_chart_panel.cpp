@@ -4,7 +4,7 @@
 #include "chart_settings.h"
 #include "chart_view.h"
 #include "comparison_chart.h"
-#include "plot_layer.h"
+#include "plot_canvas.h"
 #include "plot/axis_scaling.h"
 #include "plot/minmax_decimator.h"
 
@@ -42,6 +42,7 @@ using imudesk::ui::ChartKind;
 using imudesk::ui::ChartPanel;
 using imudesk::ui::ChartSettings;
 using imudesk::ui::ChartView;
+using imudesk::ui::PlotCanvas;
 using imudesk::ui::ComparisonChart;
 namespace model = imudesk::model;
 
@@ -124,7 +125,7 @@ private Q_SLOTS:
         const int width = acc->drawnWidthPx(); // the plot area's width when it was drawn (two charts a row)
         QVERIFY2(width > 350 && std::abs(width - acc->plotWidthPx()) < 20, qPrintable(QString::number(width)));
         const QList<QPointF> &xPoints = acc->linePoints(Channel::AccX);
-        QVERIFY(acc->series(Channel::AccX)->isVisible());
+        QVERIFY(acc->canvas()->isLineVisible(0));
         // Dense data: every pixel column has points, at most 4 of them.
         QVERIFY2(xPoints.size() >= width && xPoints.size() <= 4 * width,
                  qPrintable(QStringLiteral("%1 points for %2 px").arg(xPoints.size()).arg(width)));
@@ -141,16 +142,16 @@ private Q_SLOTS:
         // before it moves again.
         const double newest = (kDeviceStartMs + 9999) / 1000.0;
         const double column = 10.0 / width;
-        QVERIFY2(acc->axisX()->max() <= newest && acc->axisX()->max() > newest - column,
-                 qPrintable(QString::number(acc->axisX()->max(), 'f', 4)));
-        QCOMPARE(acc->axisX()->max() - acc->axisX()->min(), 10.0);
-        QVERIFY(acc->axisY()->min() < -1.0 && acc->axisY()->max() > 1.0); // autoscale holds the data
+        QVERIFY2(acc->canvas()->xMax() <= newest && acc->canvas()->xMax() > newest - column,
+                 qPrintable(QString::number(acc->canvas()->xMax(), 'f', 4)));
+        QCOMPARE(acc->canvas()->xMax() - acc->canvas()->xMin(), 10.0);
+        QVERIFY(acc->canvas()->yMin() < -1.0 && acc->canvas()->yMax() > 1.0); // autoscale holds the data
         QVERIFY(panel.refreshCount() > 0);
 
         // The lines are really on screen: the plot area holds pixels of each axis colour, at
         // the places the points map to (the sine's top near the top of the autoscaled area).
-        const QImage image = acc->chartView()->viewport()->grab().toImage();
-        const QRect area = acc->chart()->plotArea().toRect();
+        const QImage image = acc->canvas()->grab().toImage();
+        const QRect area = acc->canvas()->plotArea().toRect();
         QVERIFY(!area.isEmpty());
         for (Channel c : {Channel::AccX, Channel::AccY, Channel::AccZ}) {
             const QRgb wanted = ChartView::colour(c).rgb();
@@ -160,7 +161,7 @@ private Q_SLOTS:
                     hits += (image.pixel(x, y) & 0xffffff) == (wanted & 0xffffff);
             QVERIFY2(hits > area.width() / 2, qPrintable(QStringLiteral("%1 pixels of axis %2").arg(hits).arg(int(c))));
         }
-        const QPointF top = acc->plotLayer()->toPixel(QPointF(acc->axisX()->min(), acc->axisY()->max()));
+        const QPointF top = acc->canvas()->toPixel(QPointF(acc->canvas()->xMin(), acc->canvas()->yMax()));
         QVERIFY(std::abs(top.x() - area.left()) <= 1.0 && std::abs(top.y() - area.top()) <= 1.0);
     }
 
@@ -218,23 +219,24 @@ private Q_SLOTS:
         ChartView *acc = panel.chart(ChartKind::Accelerometer);
         QVERIFY(acc->linePoints(Channel::AccY).size() > 0);
         QSignalSpy changed(&panel, &ChartPanel::settingsChanged);
-        QVERIFY(acc->legendMarker(Channel::AccY));
-        Q_EMIT acc->legendMarker(Channel::AccY)->clicked(); // a click on the legend entry
+        const QRectF entry = acc->canvas()->legendEntryRect(1);
+        QVERIFY(!entry.isEmpty());
+        QTest::mouseClick(acc->canvas(), Qt::LeftButton, {}, entry.center().toPoint()); // a click on the legend entry
         QCOMPARE(changed.count(), 1);
         QVERIFY(!acc->isChannelVisible(Channel::AccY));
         panel.refresh();
-        QVERIFY(!acc->series(Channel::AccY)->isVisible());
+        QVERIFY(!acc->canvas()->isLineVisible(1));
         QCOMPARE(acc->linePoints(Channel::AccY).size(), qsizetype(0));
-        QVERIFY(acc->series(Channel::AccX)->isVisible());
+        QVERIFY(acc->canvas()->isLineVisible(0));
         QVERIFY(acc->linePoints(Channel::AccX).size() > 0);
         QVERIFY(panel.settings().isHidden(Channel::AccY));
         QVERIFY(!panel.settings().isHidden(Channel::AccX));
         // The hidden axis keeps its legend entry (dimmed), to be switched back on.
-        QVERIFY(acc->legendMarker(Channel::AccY) && acc->legendMarker(Channel::AccY)->isVisible());
+        QCOMPARE(acc->canvas()->legendEntryRect(1), entry);
         // Shown again: drawn again.
-        Q_EMIT acc->legendMarker(Channel::AccY)->clicked();
+        QTest::mouseClick(acc->canvas(), Qt::LeftButton, {}, entry.center().toPoint());
         panel.refresh();
-        QVERIFY(acc->series(Channel::AccY)->isVisible());
+        QVERIFY(acc->canvas()->isLineVisible(1));
         QVERIFY(acc->linePoints(Channel::AccY).size() > 0);
     }
 
@@ -249,25 +251,25 @@ private Q_SLOTS:
         acc->setPaused(true);
         QVERIFY(acc->isPaused());
         panel.refresh();
-        const double min = acc->axisX()->min(), max = acc->axisX()->max();
+        const double min = acc->canvas()->xMin(), max = acc->canvas()->xMax();
         const QList<QPointF> frozen = acc->linePoints(Channel::AccX);
         feed(panel, 5000, 8000); // recording goes on
         QCOMPARE(panel.history().size(), size_t(8000));
-        QCOMPARE(acc->axisX()->min(), min);
-        QCOMPARE(acc->axisX()->max(), max);
+        QCOMPARE(acc->canvas()->xMin(), min);
+        QCOMPARE(acc->canvas()->xMax(), max);
         QCOMPARE(acc->linePoints(Channel::AccX).size(), frozen.size());
         // The other charts kept moving.
-        QCOMPARE(panel.chart(ChartKind::Gyroscope)->axisX()->max(), (kDeviceStartMs + 7999) / 1000.0);
+        QCOMPARE(panel.chart(ChartKind::Gyroscope)->canvas()->xMax(), (kDeviceStartMs + 7999) / 1000.0);
         // A longer window while paused keeps the right edge.
         acc->setWindowSeconds(30);
         panel.refresh();
-        QCOMPARE(acc->axisX()->max(), max);
-        QCOMPARE(acc->axisX()->min(), max - 30.0);
+        QCOMPARE(acc->canvas()->xMax(), max);
+        QCOMPARE(acc->canvas()->xMin(), max - 30.0);
         // Resumed: back to the newest data.
         acc->setPaused(false);
         QVERIFY(!acc->isPaused());
         panel.refresh();
-        QCOMPARE(acc->axisX()->max(), (kDeviceStartMs + 7999) / 1000.0);
+        QCOMPARE(acc->canvas()->xMax(), (kDeviceStartMs + 7999) / 1000.0);
 
         // The toolbar's Pause freezes every chart at once, and Run lets them all go on.
         panel.pauseAction()->trigger();
@@ -275,13 +277,13 @@ private Q_SLOTS:
         for (ChartKind k : {ChartKind::Accelerometer, ChartKind::Gyroscope, ChartKind::Euler})
             QVERIFY(panel.chart(k)->isPaused());
         panel.refresh();
-        const double frozenMax = panel.chart(ChartKind::Gyroscope)->axisX()->max();
+        const double frozenMax = panel.chart(ChartKind::Gyroscope)->canvas()->xMax();
         feed(panel, 8000, 9000);
-        QCOMPARE(panel.chart(ChartKind::Gyroscope)->axisX()->max(), frozenMax);
+        QCOMPARE(panel.chart(ChartKind::Gyroscope)->canvas()->xMax(), frozenMax);
         panel.pauseAction()->trigger();
         QVERIFY(!panel.isPaused() && !acc->isPaused());
         panel.refresh();
-        QCOMPARE(panel.chart(ChartKind::Gyroscope)->axisX()->max(), (kDeviceStartMs + 8999) / 1000.0);
+        QCOMPARE(panel.chart(ChartKind::Gyroscope)->canvas()->xMax(), (kDeviceStartMs + 8999) / 1000.0);
         // One window for all charts from the toolbar.
         panel.windowCombo()->setCurrentIndex(panel.windowCombo()->findData(30.0));
         for (ChartKind k : {ChartKind::Accelerometer, ChartKind::Gyroscope, ChartKind::Magnetometer})
@@ -304,7 +306,7 @@ private Q_SLOTS:
         QVERIFY(QFileInfo(path).size() > 0);
         QImage image(path);
         QVERIFY(!image.isNull());
-        QCOMPARE(image.size(), acc->chartView()->size() * acc->chartView()->devicePixelRatio());
+        QCOMPARE(image.size(), acc->canvas()->size() * acc->canvas()->devicePixelRatio());
         // Not all one colour: the chart is in it.
         QVERIFY(image.pixel(image.width() / 2, image.height() / 2) != image.pixel(2, 2) ||
                 image.pixel(image.width() / 3, image.height() / 3) != image.pixel(2, 2));
@@ -342,29 +344,87 @@ private Q_SLOTS:
         // at the same time, and leaving hides it.
         panel.cursorAction()->trigger();
         QVERIFY(!acc->readoutLabel()->isHidden());
-        const QRectF plot = acc->chart()->plotArea();
-        const QPoint inside = acc->chartView()->mapFromScene(acc->chart()->mapToScene(plot.center()));
-        QMouseEvent move(QEvent::MouseMove, QPointF(inside), acc->chartView()->viewport()->mapToGlobal(QPointF(inside)),
+        const QRectF plot = acc->canvas()->plotArea();
+        const QPoint inside = plot.center().toPoint();
+        QMouseEvent move(QEvent::MouseMove, QPointF(inside), acc->canvas()->mapToGlobal(QPointF(inside)),
                          Qt::NoButton, Qt::NoButton, Qt::NoModifier);
         acc->hideCrosshair();
-        QCoreApplication::sendEvent(acc->chartView()->viewport(), &move);
+        QCoreApplication::sendEvent(acc->canvas(), &move);
         QVERIFY(acc->isCrosshairVisible());
-        const double middle = 0.5 * (acc->axisX()->min() + acc->axisX()->max());
+        const double middle = 0.5 * (acc->canvas()->xMin() + acc->canvas()->xMax());
         const auto match = QRegularExpression(QStringLiteral("^t = ([0-9.]+) s")).match(acc->crosshairText());
         QVERIFY2(match.hasMatch(), qPrintable(acc->crosshairText()));
-        const double pixelTime = (acc->axisX()->max() - acc->axisX()->min()) / plot.width();
+        const double pixelTime = (acc->canvas()->xMax() - acc->canvas()->xMin()) / plot.width();
         QVERIFY2(std::abs(match.captured(1).toDouble() - middle) <= 2 * pixelTime, qPrintable(acc->crosshairText()));
         QVERIFY(gyr->isCrosshairVisible());
         QCOMPARE(gyr->crosshairText().section(QStringLiteral("   "), 0, 0), match.captured(0));
         QVERIFY(gyr->crosshairText().contains(QStringLiteral("deg/s")));
         QEvent leave(QEvent::Leave);
-        QCoreApplication::sendEvent(acc->chartView()->viewport(), &leave);
+        QCoreApplication::sendEvent(acc->canvas(), &leave);
         QVERIFY(!acc->isCrosshairVisible() && !gyr->isCrosshairVisible());
         // Cursor off: the read-out lines go, the mouse moves no crosshair.
         panel.cursorAction()->trigger();
         QVERIFY(acc->readoutLabel()->isHidden());
-        QCoreApplication::sendEvent(acc->chartView()->viewport(), &move);
+        QCoreApplication::sendEvent(acc->canvas(), &move);
         QVERIFY(!acc->isCrosshairVisible());
+    }
+
+    void canvasTicksLabelsAndMapping()
+    {
+        PlotCanvas canvas;
+        canvas.resize(600, 300);
+        canvas.setTitle(QStringLiteral("Accelerometer"));
+        canvas.setAxisTitles(QStringLiteral("Device time (s)"), QStringLiteral("Acceleration (G)"));
+        const int x = canvas.addLine(Qt::red, QStringLiteral("X"));
+        canvas.addLine(Qt::green, QStringLiteral("Y"));
+        canvas.setXRange(12.3, 22.3, 2.0, 0);
+        canvas.setYRange(-0.25, 0.75, 0.25, 2);
+        // Ticks on multiples of the step, inside the range; no "-0.00".
+        QCOMPARE(canvas.xTickLabels(), QStringList({QStringLiteral("14"), QStringLiteral("16"), QStringLiteral("18"),
+                                                    QStringLiteral("20"), QStringLiteral("22")}));
+        QCOMPARE(canvas.yTickLabels(), QStringList({QStringLiteral("-0.25"), QStringLiteral("0.00"),
+                                                    QStringLiteral("0.25"), QStringLiteral("0.50"), QStringLiteral("0.75")}));
+        canvas.setYRange(-1e-12, 1.0, 0.5, 1);
+        QCOMPARE(canvas.yTickLabels().front(), QStringLiteral("0.0"));
+        // Values and pixels map both ways over the plot area.
+        const QRectF area = canvas.plotArea();
+        QVERIFY(area.width() > 300 && area.height() > 150);
+        QVERIFY(canvas.rect().contains(area.toRect()));
+        QCOMPARE(canvas.toPixel(QPointF(12.3, 1.0)), area.topLeft());
+        const QPointF back = canvas.toValue(canvas.toPixel(QPointF(17.0, 0.4)));
+        QVERIFY(std::abs(back.x() - 17.0) < 1e-9 && std::abs(back.y() - 0.4) < 1e-9);
+        // A wider value label widens the margin; a narrower one keeps it (the plot does not jitter).
+        QSignalSpy moved(&canvas, &PlotCanvas::plotAreaChanged);
+        canvas.setYRange(-2000.0, 2000.0, 1000.0, 0);
+        QCOMPARE(moved.count(), 1);
+        const QRectF wide = canvas.plotArea();
+        QVERIFY(wide.left() > area.left());
+        canvas.setYRange(-1.0, 1.0, 0.5, 1);
+        QCOMPARE(canvas.plotArea(), wide);
+        // The legend's entries sit right of the plot; a click on one asks to switch its line.
+        const QRectF entry = canvas.legendEntryRect(x);
+        QVERIFY(entry.left() > wide.right() && canvas.rect().contains(entry.toRect()));
+        QSignalSpy clicked(&canvas, &PlotCanvas::legendClicked);
+        QTest::mouseClick(&canvas, Qt::LeftButton, {}, entry.center().toPoint());
+        QCOMPARE(clicked.count(), 1);
+        QCOMPARE(clicked.front().front().toInt(), x);
+        canvas.setLegendVisible(false);
+        QVERIFY(canvas.legendEntryRect(x).isEmpty());
+        QVERIFY(canvas.plotArea().right() > wide.right());
+        // The crosshair is drawn only inside the range.
+        canvas.setCrosshair(15.0);
+        QVERIFY(canvas.isCrosshairDrawn());
+        canvas.setCrosshair(40.0);
+        QVERIFY(!canvas.isCrosshairDrawn());
+        // The lines are painted where the points map to; a NaN breaks a line.
+        canvas.setPoints(x, {QPointF(13.0, 0.0), QPointF(21.0, 0.0)});
+        canvas.setCrosshair(std::nullopt);
+        const QImage image = canvas.grab().toImage();
+        const QPoint mid = canvas.toPixel(QPointF(17.0, 0.0)).toPoint();
+        QCOMPARE(image.pixel(mid) & 0xffffff, QColor(Qt::red).rgb() & 0xffffff);
+        canvas.setPoints(x, {QPointF(13.0, 0.0), QPointF(qQNaN(), qQNaN()), QPointF(21.0, 0.0)});
+        const QImage broken = canvas.grab().toImage();
+        QVERIFY((broken.pixel(mid) & 0xffffff) != (QColor(Qt::red).rgb() & 0xffffff));
     }
 
     void gapsAndRestartsBreakTheLine()
@@ -391,7 +451,7 @@ private Q_SLOTS:
         panel.refresh();
         // (1 ms of host time between the two sides is narrower than a pixel column: joined or broken.)
         QVERIFY(breaksIn(acc->linePoints(Channel::AccX)) <= 1);
-        QCOMPARE(acc->axisX()->max(), 3.999);
+        QCOMPARE(acc->canvas()->xMax(), 3.999);
 
         panel.setTimeAxis(TimeAxis::Device);
         batch.clear();
@@ -404,7 +464,7 @@ private Q_SLOTS:
         QCOMPARE(panel.history().segmentCount(), 2);
         QCOMPARE(breaksIn(acc->linePoints(Channel::AccX)), qsizetype(2));
         // The newest data is shown on the device's own (new) clock, the older to its left.
-        QCOMPARE(acc->axisX()->max(), 1.004);
+        QCOMPARE(acc->canvas()->xMax(), 1.004);
         const QList<QPointF> points = acc->linePoints(Channel::AccX);
         QVERIFY(points.first().x() < 0.0);
     }
@@ -454,9 +514,9 @@ private Q_SLOTS:
         for (int k = 0; k < imudesk::ui::kChartKindCount; ++k) {
             ChartView *chart = panel.chart(ChartKind(k));
             QCOMPARE(chart->timeAxis(), TimeAxis::Host);
-            QCOMPARE(chart->axisX()->titleText(), ChartView::timeAxisTitle(TimeAxis::Host));
+            QCOMPARE(chart->canvas()->xTitle(), ChartView::timeAxisTitle(TimeAxis::Host));
         }
-        QCOMPARE(panel.chart(ChartKind::Accelerometer)->axisX()->max(), 2.999); // s since the first sample
+        QCOMPARE(panel.chart(ChartKind::Accelerometer)->canvas()->xMax(), 2.999); // s since the first sample
         QCOMPARE(panel.settings().timeAxis, TimeAxis::Host);
     }
 
@@ -467,14 +527,14 @@ private Q_SLOTS:
         panel.show();
         QVERIFY(QTest::qWaitForWindowExposed(&panel));
         // English: quantity and unit.
-        QCOMPARE(panel.chart(ChartKind::Accelerometer)->axisY()->titleText(), QStringLiteral("Acceleration (G)"));
-        QCOMPARE(panel.chart(ChartKind::Gyroscope)->axisY()->titleText(), QStringLiteral("Angular velocity (deg/s)"));
-        QCOMPARE(panel.chart(ChartKind::Magnetometer)->axisY()->titleText(), QStringLiteral("Magnetic field (µT)"));
-        QCOMPARE(panel.chart(ChartKind::Euler)->axisY()->titleText(), QStringLiteral("Angle (deg)"));
-        QCOMPARE(panel.chart(ChartKind::Quaternion)->axisY()->titleText(), QStringLiteral("Quaternion component"));
-        QCOMPARE(panel.chart(ChartKind::Pressure)->axisY()->titleText(), QStringLiteral("Pressure (Pa)"));
-        QCOMPARE(panel.chart(ChartKind::Temperature)->axisY()->titleText(), QStringLiteral("Temperature (°C)"));
-        QCOMPARE(panel.chart(ChartKind::Accelerometer)->axisX()->titleText(), QStringLiteral("Device time (s)"));
+        QCOMPARE(panel.chart(ChartKind::Accelerometer)->canvas()->yTitle(), QStringLiteral("Acceleration (G)"));
+        QCOMPARE(panel.chart(ChartKind::Gyroscope)->canvas()->yTitle(), QStringLiteral("Angular velocity (deg/s)"));
+        QCOMPARE(panel.chart(ChartKind::Magnetometer)->canvas()->yTitle(), QStringLiteral("Magnetic field (µT)"));
+        QCOMPARE(panel.chart(ChartKind::Euler)->canvas()->yTitle(), QStringLiteral("Angle (deg)"));
+        QCOMPARE(panel.chart(ChartKind::Quaternion)->canvas()->yTitle(), QStringLiteral("Quaternion component"));
+        QCOMPARE(panel.chart(ChartKind::Pressure)->canvas()->yTitle(), QStringLiteral("Pressure (Pa)"));
+        QCOMPARE(panel.chart(ChartKind::Temperature)->canvas()->yTitle(), QStringLiteral("Temperature (°C)"));
+        QCOMPARE(panel.chart(ChartKind::Accelerometer)->canvas()->xTitle(), QStringLiteral("Device time (s)"));
 
         // Every visible text goes through tr(): a translator that marks everything shows up everywhere.
         MarkingTranslator marker;
@@ -482,9 +542,9 @@ private Q_SLOTS:
         QCoreApplication::sendPostedEvents(nullptr, QEvent::LanguageChange);
         QCoreApplication::processEvents();
         ChartView *acc = panel.chart(ChartKind::Accelerometer);
-        QCOMPARE(acc->axisY()->titleText(), QStringLiteral("«%1 (%2)»").arg(QStringLiteral("«Acceleration»"), QStringLiteral("«G»")));
-        QCOMPARE(acc->axisX()->titleText(), QStringLiteral("«Device time (s)»"));
-        QCOMPARE(acc->chart()->title(), QStringLiteral("«Accelerometer»"));
+        QCOMPARE(acc->canvas()->yTitle(), QStringLiteral("«%1 (%2)»").arg(QStringLiteral("«Acceleration»"), QStringLiteral("«G»")));
+        QCOMPARE(acc->canvas()->xTitle(), QStringLiteral("«Device time (s)»"));
+        QCOMPARE(acc->canvas()->title(), QStringLiteral("«Accelerometer»"));
         QCOMPARE(panel.pauseAction()->text(), QStringLiteral("«Pause»"));
         QCOMPARE(panel.windowCombo()->currentText(), QStringLiteral("«10 s»"));
         QVERIFY(panel.cursorAction()->text().startsWith(QStringLiteral("«")));
@@ -494,7 +554,7 @@ private Q_SLOTS:
         QCoreApplication::removeTranslator(&marker);
         QCoreApplication::sendPostedEvents(nullptr, QEvent::LanguageChange);
         QCoreApplication::processEvents();
-        QCOMPARE(acc->axisX()->titleText(), QStringLiteral("Device time (s)"));
+        QCOMPARE(acc->canvas()->xTitle(), QStringLiteral("Device time (s)"));
         QCOMPARE(panel.windowCombo()->currentText(), QStringLiteral("10 s"));
     }
 
@@ -510,14 +570,14 @@ private Q_SLOTS:
         acc->setFixedRange(-4.0, 4.0);
         acc->setFixedRange(3.0, 1.0); // ignored: min must be below max
         panel.refresh();
-        QCOMPARE(acc->axisY()->min(), -4.0);
-        QCOMPARE(acc->axisY()->max(), 4.0);
+        QCOMPARE(acc->canvas()->yMin(), -4.0);
+        QCOMPARE(acc->canvas()->yMax(), 4.0);
         const QWidget *minSpin = acc->minSpin(); // in the chart's context menu
         QVERIFY(minSpin && minSpin->isEnabled() && minSpin->toolTip().contains(QStringLiteral("G")));
         QVERIFY(!acc->autoScaleAction()->isChecked());
         acc->setAutoScale(true);
         panel.refresh();
-        QVERIFY(acc->axisY()->max() < 4.0 && acc->axisY()->max() > 1.0);
+        QVERIFY(acc->canvas()->yMax() < 4.0 && acc->canvas()->yMax() > 1.0);
         QVERIFY(!minSpin->isEnabled());
     }
 

@@ -47,7 +47,6 @@ public:
             batch.push_back(s);
         }
         store().append(batch);
-        Q_EMIT samplesAppended(store().totalAppended());
     }
     int closes = 0;
 };

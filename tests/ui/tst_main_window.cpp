@@ -286,10 +286,19 @@ private Q_SLOTS:
         auto *button = bar.findChild<QPushButton *>(QStringLiteral("connectButton"));
         QVERIFY(button);
         button->click();
+        bar.show();
+        QVERIFY(bar.isScanningPorts()); // a port can be chosen: the list follows the system
         bar.setSessionState(imudesk::device::SessionState::Connected);
+        QVERIFY(!bar.isScanningPorts()); // connected: no sysfs scan every two seconds
         button->click();
         QCOMPARE(connectSpy.count(), 1);
         QCOMPARE(disconnectSpy.count(), 1);
+        bar.setSessionState(imudesk::device::SessionState::Reconnecting);
+        QVERIFY(bar.isScanningPorts()); // a cable pulled: the user may pick another port
+        bar.setSessionState(imudesk::device::SessionState::Closed);
+        QVERIFY(bar.isScanningPorts());
+        bar.hide();
+        QVERIFY(!bar.isScanningPorts());
     }
 
     void consoleHistory()
