@@ -3722,7 +3722,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::device::CanSession</name>
     <message>
-        <location filename="../core/device/can_session.cpp" line="+93" />
+        <location filename="../core/device/can_session.cpp" line="+92" />
         <source>HiPNUC J1939</source>
         <translation>HiPNUC J1939</translation>
     </message>
@@ -4114,7 +4114,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>无法发送帧 %1：CAN 接口未连接</translation>
     </message>
     <message>
-        <location line="+48" />
+        <location line="+46" />
         <source>boot-up</source>
         <translation>启动报文</translation>
     </message>
@@ -4177,7 +4177,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::device::Hec495Session</name>
     <message>
-        <location filename="../core/device/hec495_session.cpp" line="+94" />
+        <location filename="../core/device/hec495_session.cpp" line="+93" />
         <source>the declination must be between -99.9 and 99.9 degrees (got %1)</source>
         <translation>磁偏角必须在 -99.9 至 99.9 度之间（当前为 %1）</translation>
     </message>
@@ -4258,7 +4258,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::device::ModbusSession</name>
     <message>
-        <location filename="../core/device/modbus_session.cpp" line="+107" />
+        <location filename="../core/device/modbus_session.cpp" line="+106" />
         <source>ILLEGAL FUNCTION (01): the device does not support this request at %1.</source>
         <translation>ILLEGAL FUNCTION（01，非法功能）：设备不支持对 %1 的此请求。</translation>
     </message>
@@ -4338,7 +4338,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>节点 %1 已恢复应答</translation>
     </message>
     <message>
-        <location line="+62" />
+        <location line="+61" />
         <source>not connected</source>
         <translation>未连接</translation>
     </message>
@@ -4428,7 +4428,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>%1 ms 内无应答（设备不响应它不认识的指令）</translation>
     </message>
     <message>
-        <location line="+228" />
+        <location line="+226" />
         <source>The device that came back on %1 is a different one (serial %2, before %3). Its data continues in this session.</source>
         <translation>%1 上重新出现的是另一台设备（序列号 %2，之前为 %3）。其数据将继续记录在本会话中。</translation>
     </message>
@@ -5121,7 +5121,22 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>未知设置项“%1”</translation>
     </message>
     <message>
-        <location line="+94" />
+        <location line="+66" />
+        <source>Key: %1</source>
+        <translation>键名：%1</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Takes effect: %1</source>
+        <translation>生效条件：%1</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Read back by: %1</source>
+        <translation>回读方式：%1</translation>
+    </message>
+    <message>
+        <location line="+30" />
         <source>read the device first</source>
         <translation>请先读取设备</translation>
     </message>
@@ -5551,7 +5566,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::AttitudeWidget</name>
     <message>
-        <location filename="../ui/attitude_widget.cpp" line="+266" />
+        <location filename="../ui/attitude_widget.cpp" line="+267" />
         <source>X</source>
         <translation>X</translation>
     </message>
@@ -5587,12 +5602,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
     <message>
         <location line="+1" />
-        <location line="+353" />
+        <location line="+392" />
         <source>ENU 3-1-2</source>
         <translation>ENU 3-1-2</translation>
     </message>
     <message>
-        <location line="-351" />
+        <location line="-390" />
         <source>N (x)</source>
         <translation>N (x)</translation>
     </message>
@@ -5608,12 +5623,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
     <message>
         <location line="+1" />
-        <location line="+349" />
+        <location line="+388" />
         <source>NED 3-2-1</source>
         <translation>NED 3-2-1</translation>
     </message>
     <message>
-        <location line="-347" />
+        <location line="-386" />
         <source>No attitude yet</source>
         <translation>尚无姿态数据</translation>
     </message>
@@ -5643,7 +5658,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>拖动以旋转视图，双击以复位</translation>
     </message>
     <message>
-        <location line="+353" />
+        <location line="+392" />
         <source>Reset view</source>
         <translation>复位视图</translation>
     </message>
@@ -6340,7 +6355,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::ChartPanel</name>
     <message>
-        <location filename="../ui/chart_panel.cpp" line="+133" />
+        <location filename="../ui/chart_panel.cpp" line="+139" />
         <source>Charts</source>
         <translation>图表</translation>
     </message>
@@ -6423,7 +6438,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::ChartView</name>
     <message>
-        <location filename="../ui/chart_view.cpp" line="+108" />
+        <location filename="../ui/chart_view.cpp" line="+94" />
         <source>Accelerometer</source>
         <translation>加速度计</translation>
     </message>
@@ -6576,7 +6591,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>%1 s</translation>
     </message>
     <message>
-        <location line="+20" />
+        <location line="+33" />
         <source>the chart could not be drawn</source>
         <translation>无法绘制图表</translation>
     </message>
@@ -6586,13 +6601,13 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>无法将图表保存为 %1：%2</translation>
     </message>
     <message>
-        <location line="+147" />
+        <location line="+100" />
         <source>%1 (%2)</source>
         <comment>quantity (unit)</comment>
         <translation>%1（%2）</translation>
     </message>
     <message>
-        <location line="+7" />
+        <location line="+4" />
         <source>Click an axis in the legend to hide or show it; right-click for the vertical range and to save this chart</source>
         <translation>单击图例中的轴可隐藏或显示该轴；右键单击可设置纵轴范围并保存此图表</translation>
     </message>
@@ -6652,7 +6667,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>将此图表保存为 PNG 图像</translation>
     </message>
     <message>
-        <location line="+224" />
+        <location line="+188" />
         <source>m/s²</source>
         <translation>m/s²</translation>
     </message>
@@ -6662,7 +6677,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>rad/s</translation>
     </message>
     <message>
-        <location line="+155" />
+        <location line="+127" />
         <source>t = %1 s</source>
         <translation>t = %1 s</translation>
     </message>
@@ -6720,7 +6735,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::ComparisonChart</name>
     <message>
-        <location filename="../ui/comparison_chart.cpp" line="+113" />
+        <location filename="../ui/comparison_chart.cpp" line="+108" />
         <source>Comparison</source>
         <translation>对比</translation>
     </message>
@@ -6830,7 +6845,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::ConfigPanel</name>
     <message>
-        <location filename="../ui/config_panel.cpp" line="+137" />
+        <location filename="../ui/config_panel.cpp" line="+172" />
         <source>OK</source>
         <translation>OK</translation>
     </message>
@@ -6855,7 +6870,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>%1 失败：%2</translation>
     </message>
     <message>
-        <location line="+30" />
+        <location line="+40" />
         <source>Read all</source>
         <translation>全部读取</translation>
     </message>
@@ -6958,7 +6973,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::ConnectionBar</name>
     <message>
-        <location filename="../ui/connection_bar.cpp" line="+178" />
+        <location filename="../ui/connection_bar.cpp" line="+192" />
         <source>SN %1</source>
         <translation>序列号 %1</translation>
     </message>
@@ -6973,7 +6988,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>USB ID：%1:%2</translation>
     </message>
     <message>
-        <location line="+41" />
+        <location line="+40" />
         <source>&amp;Port:</source>
         <translation>串口(&amp;P)：</translation>
     </message>
@@ -7109,7 +7124,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::DeviceWorkspace</name>
     <message>
-        <location filename="../ui/device_workspace.cpp" line="+311" />
+        <location filename="../ui/device_workspace.cpp" line="+249" />
         <source>New connection</source>
         <translation>新连接</translation>
     </message>
@@ -7134,7 +7149,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>模拟 %1（固件 %2）</translation>
     </message>
     <message>
-        <location line="+164" />
+        <location line="+171" />
         <source>Not connected</source>
         <translation>未连接</translation>
     </message>
@@ -7266,7 +7281,7 @@ Link load = bytes per second × 10 bits / baud rate.</source>
         <translation>3D 姿态</translation>
     </message>
     <message>
-        <location line="+68" />
+        <location filename="../ui/device_workspace_layout.cpp" line="+115" />
         <source>&amp;Monitor</source>
         <translation>监视(&amp;M)</translation>
     </message>
@@ -7316,7 +7331,7 @@ Link load = bytes per second × 10 bits / baud rate.</source>
         <translation>数值表太窄，无法容纳其各列</translation>
     </message>
     <message>
-        <location line="-223" />
+        <location filename="../ui/device_workspace.cpp" line="+1" />
         <source>Configuration</source>
         <translation>配置</translation>
     </message>

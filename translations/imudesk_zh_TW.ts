@@ -3722,7 +3722,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::device::CanSession</name>
     <message>
-        <location filename="../core/device/can_session.cpp" line="+93" />
+        <location filename="../core/device/can_session.cpp" line="+92" />
         <source>HiPNUC J1939</source>
         <translation>HiPNUC J1939</translation>
     </message>
@@ -4114,7 +4114,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>無法傳送幀 %1：CAN 介面未連線</translation>
     </message>
     <message>
-        <location line="+48" />
+        <location line="+46" />
         <source>boot-up</source>
         <translation>開機訊息</translation>
     </message>
@@ -4177,7 +4177,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::device::Hec495Session</name>
     <message>
-        <location filename="../core/device/hec495_session.cpp" line="+94" />
+        <location filename="../core/device/hec495_session.cpp" line="+93" />
         <source>the declination must be between -99.9 and 99.9 degrees (got %1)</source>
         <translation>磁偏角必須在 -99.9 到 99.9 度之間（收到 %1）</translation>
     </message>
@@ -4258,7 +4258,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::device::ModbusSession</name>
     <message>
-        <location filename="../core/device/modbus_session.cpp" line="+107" />
+        <location filename="../core/device/modbus_session.cpp" line="+106" />
         <source>ILLEGAL FUNCTION (01): the device does not support this request at %1.</source>
         <translation>ILLEGAL FUNCTION（01）：裝置不支援對 %1 的此項請求。</translation>
     </message>
@@ -4338,7 +4338,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>節點 %1 已恢復回應</translation>
     </message>
     <message>
-        <location line="+62" />
+        <location line="+61" />
         <source>not connected</source>
         <translation>未連線</translation>
     </message>
@@ -4428,7 +4428,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>%1 ms 內無回應（裝置不回應它不認識的指令）</translation>
     </message>
     <message>
-        <location line="+228" />
+        <location line="+226" />
         <source>The device that came back on %1 is a different one (serial %2, before %3). Its data continues in this session.</source>
         <translation>%1 上重新出現的是另一台裝置（序號 %2，之前為 %3）。其資料將繼續記錄在此工作階段中。</translation>
     </message>
@@ -5121,7 +5121,22 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>未知的設定「%1」</translation>
     </message>
     <message>
-        <location line="+94" />
+        <location line="+66" />
+        <source>Key: %1</source>
+        <translation>鍵名：%1</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Takes effect: %1</source>
+        <translation>生效時機：%1</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Read back by: %1</source>
+        <translation>回讀方式：%1</translation>
+    </message>
+    <message>
+        <location line="+30" />
         <source>read the device first</source>
         <translation>請先讀取裝置</translation>
     </message>
@@ -5551,7 +5566,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::AttitudeWidget</name>
     <message>
-        <location filename="../ui/attitude_widget.cpp" line="+266" />
+        <location filename="../ui/attitude_widget.cpp" line="+267" />
         <source>X</source>
         <translation>X</translation>
     </message>
@@ -5587,12 +5602,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
     <message>
         <location line="+1" />
-        <location line="+353" />
+        <location line="+392" />
         <source>ENU 3-1-2</source>
         <translation>ENU 3-1-2</translation>
     </message>
     <message>
-        <location line="-351" />
+        <location line="-390" />
         <source>N (x)</source>
         <translation>N (x)</translation>
     </message>
@@ -5608,12 +5623,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
     <message>
         <location line="+1" />
-        <location line="+349" />
+        <location line="+388" />
         <source>NED 3-2-1</source>
         <translation>NED 3-2-1</translation>
     </message>
     <message>
-        <location line="-347" />
+        <location line="-386" />
         <source>No attitude yet</source>
         <translation>尚無姿態資料</translation>
     </message>
@@ -5643,7 +5658,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>拖曳以旋轉檢視，按兩下以重設</translation>
     </message>
     <message>
-        <location line="+353" />
+        <location line="+392" />
         <source>Reset view</source>
         <translation>重設檢視</translation>
     </message>
@@ -6340,7 +6355,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::ChartPanel</name>
     <message>
-        <location filename="../ui/chart_panel.cpp" line="+133" />
+        <location filename="../ui/chart_panel.cpp" line="+139" />
         <source>Charts</source>
         <translation>圖表</translation>
     </message>
@@ -6423,7 +6438,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::ChartView</name>
     <message>
-        <location filename="../ui/chart_view.cpp" line="+108" />
+        <location filename="../ui/chart_view.cpp" line="+94" />
         <source>Accelerometer</source>
         <translation>加速度計</translation>
     </message>
@@ -6576,7 +6591,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>%1 s</translation>
     </message>
     <message>
-        <location line="+20" />
+        <location line="+33" />
         <source>the chart could not be drawn</source>
         <translation>無法繪製圖表</translation>
     </message>
@@ -6586,13 +6601,13 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>無法將圖表儲存為 %1：%2</translation>
     </message>
     <message>
-        <location line="+147" />
+        <location line="+100" />
         <source>%1 (%2)</source>
         <comment>quantity (unit)</comment>
         <translation>%1（%2）</translation>
     </message>
     <message>
-        <location line="+7" />
+        <location line="+4" />
         <source>Click an axis in the legend to hide or show it; right-click for the vertical range and to save this chart</source>
         <translation>按一下圖例中的軸可隱藏或顯示該軸；按右鍵可設定縱軸範圍並儲存此圖表</translation>
     </message>
@@ -6652,7 +6667,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>將此圖表儲存為 PNG 影像</translation>
     </message>
     <message>
-        <location line="+224" />
+        <location line="+188" />
         <source>m/s²</source>
         <translation>m/s²</translation>
     </message>
@@ -6662,7 +6677,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>rad/s</translation>
     </message>
     <message>
-        <location line="+155" />
+        <location line="+127" />
         <source>t = %1 s</source>
         <translation>t = %1 s</translation>
     </message>
@@ -6720,7 +6735,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::ComparisonChart</name>
     <message>
-        <location filename="../ui/comparison_chart.cpp" line="+113" />
+        <location filename="../ui/comparison_chart.cpp" line="+108" />
         <source>Comparison</source>
         <translation>比較</translation>
     </message>
@@ -6830,7 +6845,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::ConfigPanel</name>
     <message>
-        <location filename="../ui/config_panel.cpp" line="+137" />
+        <location filename="../ui/config_panel.cpp" line="+172" />
         <source>OK</source>
         <translation>OK</translation>
     </message>
@@ -6855,7 +6870,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>%1 失敗：%2</translation>
     </message>
     <message>
-        <location line="+30" />
+        <location line="+40" />
         <source>Read all</source>
         <translation>全部讀取</translation>
     </message>
@@ -6958,7 +6973,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::ConnectionBar</name>
     <message>
-        <location filename="../ui/connection_bar.cpp" line="+178" />
+        <location filename="../ui/connection_bar.cpp" line="+192" />
         <source>SN %1</source>
         <translation>序號 %1</translation>
     </message>
@@ -6973,7 +6988,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>USB ID：%1:%2</translation>
     </message>
     <message>
-        <location line="+41" />
+        <location line="+40" />
         <source>&amp;Port:</source>
         <translation>串列埠(&amp;P)：</translation>
     </message>
@@ -7109,7 +7124,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::DeviceWorkspace</name>
     <message>
-        <location filename="../ui/device_workspace.cpp" line="+311" />
+        <location filename="../ui/device_workspace.cpp" line="+249" />
         <source>New connection</source>
         <translation>新連線</translation>
     </message>
@@ -7134,7 +7149,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>模擬 %1（韌體 %2）</translation>
     </message>
     <message>
-        <location line="+164" />
+        <location line="+171" />
         <source>Not connected</source>
         <translation>未連線</translation>
     </message>
@@ -7266,7 +7281,7 @@ Link load = bytes per second × 10 bits / baud rate.</source>
         <translation>3D 姿態</translation>
     </message>
     <message>
-        <location line="+68" />
+        <location filename="../ui/device_workspace_layout.cpp" line="+115" />
         <source>&amp;Monitor</source>
         <translation>監看(&amp;M)</translation>
     </message>
@@ -7316,7 +7331,7 @@ Link load = bytes per second × 10 bits / baud rate.</source>
         <translation>數值表太窄，無法容納其各欄</translation>
     </message>
     <message>
-        <location line="-223" />
+        <location filename="../ui/device_workspace.cpp" line="+1" />
         <source>Configuration</source>
         <translation>配置</translation>
     </message>

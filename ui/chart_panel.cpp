@@ -1,5 +1,7 @@
 #include "chart_panel.h"
 
+#include <QScreen>
+
 #include "chart_view.h"
 
 #include <QAction>
@@ -31,6 +33,8 @@ void checkQuietly(QAction *action, bool on)
 
 // Narrower than this, the charts go in one column.
 constexpr int kMinimumChartWidth = 380;
+constexpr int kNarrowChartWidth = 300; // still readable: axis labels, a short legend
+constexpr int kChartChrome = 12;       // a chart's margins and the grid's spacing
 } // namespace
 
 ChartPanel::ChartPanel(QWidget *parent) : QWidget(parent)
@@ -199,7 +203,16 @@ void ChartPanel::layoutCharts()
     const int n = int(charts.size());
     const int w = m_area->width();
     const bool wide = w > 1.6 * std::max(1, m_area->height());
-    const int columns = n >= 2 && w >= 2 * kMinimumChartWidth && (n >= 3 || wide) ? 2 : 1;
+    // Two columns when there is room, or when one column of n charts would not fit the height
+    // (a narrow central area, as in the Configure layout) and two narrower ones do.
+    // The height counted is what the area has in a window that fits its screen: a column too
+    // tall for the screen would make the window grow past it.
+    int h = std::max(1, m_area->height());
+    if (const QScreen *screen = this->screen())
+        h = std::min(h, screen->availableGeometry().height() - (window()->height() - m_area->height()));
+    const bool tooTallForOne = n >= 3 && n * (ChartView::kMinimumChartHeight + kChartChrome) > h
+                               && w >= 2 * kNarrowChartWidth;
+    const int columns = n >= 2 && ((w >= 2 * kMinimumChartWidth && (n >= 3 || wide)) || tooTallForOne) ? 2 : 1;
     if (shown == m_shownCharts && columns == m_columns)
         return;
     m_shownCharts = shown;

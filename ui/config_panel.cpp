@@ -16,9 +16,11 @@
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
+#include <QMenu>
 #include <QMessageBox>
 #include <QPlainTextEdit>
 #include <QPushButton>
+#include <QSettings>
 #include <QSplitter>
 #include <QTableView>
 #include <QVBoxLayout>
@@ -60,9 +62,31 @@ ConfigPanel::ConfigPanel(device::DeviceSession &session, QWidget *parent)
     m_table->setItemDelegateForColumn(models::SettingsTableModel::NewColumn, delegate);
     m_table->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::SelectedClicked
                              | QAbstractItemView::EditKeyPressed);
-    m_table->horizontalHeader()->setStretchLastSection(true);
     m_table->verticalHeader()->hide();
     m_table->setWordWrap(false);
+    // What a setting is, what it holds and what it will be: always in view, never behind a
+    // horizontal scroll bar. The key, when it takes effect and what reads it back are in every
+    // cell's tooltip, and the header's context menu shows them as columns (remembered).
+    QHeaderView *header = m_table->horizontalHeader();
+    header->setSectionResizeMode(QHeaderView::ResizeToContents);
+    header->setSectionResizeMode(models::SettingsTableModel::NameColumn, QHeaderView::Stretch);
+    header->setContextMenuPolicy(Qt::CustomContextMenu);
+    m_table->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    connect(header, &QWidget::customContextMenuRequested, this, [this](const QPoint &pos) {
+        QMenu menu(this);
+        for (int c : kOptionalColumns) {
+            QAction *a = menu.addAction(m_model->headerData(c, Qt::Horizontal).toString());
+            a->setCheckable(true);
+            a->setChecked(!m_table->isColumnHidden(c));
+            connect(a, &QAction::toggled, this, [this, c](bool on) { setColumnShown(c, on); });
+        }
+        menu.exec(m_table->horizontalHeader()->mapToGlobal(pos));
+    });
+    {
+        const QStringList shown = QSettings().value(QLatin1String(kShownColumnsKey)).toStringList();
+        for (int c : kOptionalColumns)
+            m_table->setColumnHidden(c, !shown.contains(QString::number(c)));
+    }
     connect(delegate, &SettingValueDelegate::valueRefused, this, [this](const QString &why) { log(why, true); });
 
     auto *lower = new QWidget(split);
@@ -75,7 +99,8 @@ ConfigPanel::ConfigPanel(device::DeviceSession &session, QWidget *parent)
     m_pending = new QPlainTextEdit(lower);
     m_pending->setReadOnly(true);
     m_pending->setMaximumBlockCount(kMaxLogBlocks);
-    m_pending->setMaximumHeight(110);
+    const int line = m_pending->fontMetrics().lineSpacing();
+    m_pending->setMaximumHeight(4 * line + 12);
     pendingRow->addWidget(m_pending, 1);
     auto *copy = new QPushButton(lower);
     m_buttons[QStringLiteral("copy")] = copy;
@@ -116,8 +141,10 @@ ConfigPanel::ConfigPanel(device::DeviceSession &session, QWidget *parent)
     m_replies->setReadOnly(true);
     m_replies->setMaximumBlockCount(kMaxLogBlocks);
     lowerLayout->addWidget(m_replies, 1);
-    split->setStretchFactor(0, 3);
-    split->setStretchFactor(1, 2);
+    // The table takes the height; the lower part keeps what its controls need.
+    split->setStretchFactor(0, 4);
+    split->setStretchFactor(1, 1);
+    split->setCollapsible(0, false);
     layout->addWidget(split, 1);
 
     connect(m_buttons[QStringLiteral("read")], &QPushButton::clicked, this, &ConfigPanel::readAll);
@@ -185,6 +212,16 @@ QPushButton *ConfigPanel::button(const QString &key) const
 {
     const auto it = m_buttons.find(key);
     return it == m_buttons.end() ? nullptr : it->second;
+}
+
+void ConfigPanel::setColumnShown(int column, bool shown)
+{
+    m_table->setColumnHidden(column, !shown);
+    QStringList list;
+    for (int c : kOptionalColumns)
+        if (!m_table->isColumnHidden(c))
+            list << QString::number(c);
+    QSettings().setValue(QLatin1String(kShownColumnsKey), list);
 }
 
 void ConfigPanel::changeEvent(QEvent *event)

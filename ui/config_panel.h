@@ -7,7 +7,11 @@
 // v1.6.6 CONFIG YAW, the URFR mounting picker and the link load of the new output rates.
 #include "settings/configuration_controller.h"
 
+#include "models/settings_table_model.h"
+
 #include <QWidget>
+
+#include <array>
 
 #include <functional>
 #include <map>
@@ -49,6 +53,13 @@ public:
     QString linkText() const;
     QPushButton *button(const QString &key) const; // "read", "apply", "save", "reboot", "freset", "mounting", "copy",
                                                    // "ATT.RST.1".."ATT.RST.5", "YAW"
+    // The key, when a change takes effect and what reads it back: columns the user can show
+    // from the header's context menu (hidden by default; their text is in each row's tooltip).
+    static constexpr std::array<int, 3> kOptionalColumns{models::SettingsTableModel::KeyColumn,
+                                                         models::SettingsTableModel::EffectColumn,
+                                                         models::SettingsTableModel::ReadBackColumn};
+    static constexpr const char *kShownColumnsKey = "ui/v1/configuration/shownColumns";
+    void setColumnShown(int column, bool shown);
 
 public Q_SLOTS:
     void readAll();

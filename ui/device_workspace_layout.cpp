@@ -208,10 +208,12 @@ void DeviceWorkspace::fitDocks()
         return;
     // Right column: the table in full, and at least a quarter of a large window so that the
     // attitude view gets room (the settings table wants more in Configure).
+    // Configure: the settings table is what the user came for, the charts keep half the width.
+    const double most = m_preset == LayoutPreset::Configure ? 0.5 : 0.45;
     int right = std::max(valuesTableWidth(), int(w * 0.24));
     if (m_preset == LayoutPreset::Configure)
-        right = std::max(right, std::min(m_configPanel->sizeHint().width(), int(w * 0.45)));
-    right = std::min(right, std::max(valuesTableWidth(), int(w * 0.45)));
+        right = std::max(right, int(w * most));
+    right = std::min(right, std::max(valuesTableWidth(), int(w * most)));
     resizeDocks({m_valuesDock}, {right}, Qt::Horizontal);
     // The panels below the charts (console, raw bytes, a link's monitor): a quarter of the height.
     for (QDockWidget *dock : findChildren<QDockWidget *>(QString(), Qt::FindDirectChildrenOnly)) {

@@ -123,6 +123,11 @@ QVariant SettingsTableModel::data(const QModelIndex &index, int role) const
             if (!a.available)
                 tip = a.reason + QLatin1Char('\n') + tip;
         }
+        // What the optional columns hold, for a table that shows only name and values.
+        tip += QLatin1Char('\n') + tr("Key: %1").arg(key);
+        tip += QLatin1Char('\n') + tr("Takes effect: %1").arg(SettingCatalog::persistenceText(d.persistence));
+        if (const QString readBack = SettingCatalog::readBackText(d); !readBack.isEmpty())
+            tip += QLatin1Char('\n') + tr("Read back by: %1").arg(readBack);
         return tip;
     }
     case Qt::EditRole:

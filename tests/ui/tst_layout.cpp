@@ -16,6 +16,7 @@
 #include "mag_calibration_wizard.h"
 #include "mag_sphere_view.h"
 #include "chart_panel.h"
+#include "config_panel.h"
 #include "chart_view.h"
 #include "connection_bar.h"
 #include "device/can_session_types.h"
@@ -190,6 +191,18 @@ QStringList layoutProblems(MainWindow &w, bool large)
         if (attitude->readoutRect().intersects(attitude->sceneRect()))
             problems << QStringLiteral("attitude read-out over the model");
     }
+    // The settings table: no column behind a horizontal scroll bar.
+    const QTableView *settings = ws->configPanel() ? ws->configPanel()->table() : nullptr;
+    if (settings && settings->isVisible() && !parkedByQt(settings) && settings->horizontalScrollBar()->isVisible())
+        problems << QStringLiteral("settings table scrolls sideways");
+    // The window fits its screen (a column of docks too tall makes it grow past the bottom).
+    const QSize screen = w.screen()->availableGeometry().size();
+    if (w.width() > screen.width() || w.height() > screen.height())
+        problems << QStringLiteral("window %1x%2 larger than the screen %3x%4")
+                        .arg(w.width())
+                        .arg(w.height())
+                        .arg(screen.width())
+                        .arg(screen.height());
     // No label cut short, no widget outside the window.
     problems << cutOrOutside(w);
     return problems;
