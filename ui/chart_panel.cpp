@@ -33,8 +33,8 @@ void checkQuietly(QAction *action, bool on)
 
 // Narrower than this, the charts go in one column.
 constexpr int kMinimumChartWidth = 380;
-constexpr int kNarrowChartWidth = 300; // still readable: axis labels, a short legend
-constexpr int kChartChrome = 12;       // a chart's margins and the grid's spacing
+constexpr int kNarrowChartWidth = 300;       // still readable: axis labels, a short legend
+constexpr int kComfortableChartHeight = 200; // a column of charts lower than this goes to two columns
 } // namespace
 
 ChartPanel::ChartPanel(QWidget *parent) : QWidget(parent)
@@ -210,8 +210,7 @@ void ChartPanel::layoutCharts()
     int h = std::max(1, m_area->height());
     if (const QScreen *screen = this->screen())
         h = std::min(h, screen->availableGeometry().height() - (window()->height() - m_area->height()));
-    const bool tooTallForOne = n >= 3 && n * (ChartView::kMinimumChartHeight + kChartChrome) > h
-                               && w >= 2 * kNarrowChartWidth;
+    const bool tooTallForOne = n >= 3 && n * kComfortableChartHeight > h && w >= 2 * kNarrowChartWidth;
     const int columns = n >= 2 && ((w >= 2 * kMinimumChartWidth && (n >= 3 || wide)) || tooTallForOne) ? 2 : 1;
     if (shown == m_shownCharts && columns == m_columns)
         return;

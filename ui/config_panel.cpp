@@ -145,6 +145,7 @@ ConfigPanel::ConfigPanel(device::DeviceSession &session, QWidget *parent)
     split->setStretchFactor(0, 4);
     split->setStretchFactor(1, 1);
     split->setCollapsible(0, false);
+    split->setSizes({4000, 1}); // the lower part starts at its least height
     layout->addWidget(split, 1);
 
     connect(m_buttons[QStringLiteral("read")], &QPushButton::clicked, this, &ConfigPanel::readAll);
@@ -310,6 +311,7 @@ void ConfigPanel::updatePending()
         lines << tr("! %1").arg(e);
     m_pending->setPlainText(changes.empty() ? tr("No pending changes.") : lines.join(QLatin1Char('\n')));
     m_cli->setText(changes.empty() ? QString() : cliLine());
+    m_cli->setVisible(!changes.empty()); // no empty line under "No pending changes"
     m_buttons[QStringLiteral("copy")]->setEnabled(!changes.empty());
     m_buttons[QStringLiteral("apply")]->setEnabled(!m_controller->busy() && m_controller->identity().usable()
                                                    && !changes.empty() && plan.ok());

@@ -61,6 +61,11 @@ namespace {
 const QSize kSmall(1366, 768);
 const QSize kLarge(1920, 1080);
 
+bool laptopScreen()
+{
+    return qEnvironmentVariableIntValue("IMUDESK_LAYOUT_LAPTOP") == 1;
+}
+
 enum class Kind { Serial, Hec495, Modbus, J1939, CanOpen, Replay };
 const char *kindName(Kind k)
 {
@@ -288,7 +293,7 @@ class TstLayout : public QObject {
 private Q_SLOTS:
     void initTestCase()
     {
-        QCOMPARE(QGuiApplication::primaryScreen()->geometry().size(), kLarge);
+        QCOMPARE(QGuiApplication::primaryScreen()->geometry().size(), laptopScreen() ? kSmall : kLarge);
         m_capture = m_dir.filePath(QStringLiteral("ten_seconds.imucap"));
         synthetic::CaptureSpec spec;
         spec.frames = 10000;
@@ -572,6 +577,8 @@ int main(int argc, char **argv)
     const double scale = qEnvironmentVariableIsSet("IMUDESK_LAYOUT_SCALE")
         ? QString::fromLocal8Bit(qgetenv("IMUDESK_LAYOUT_SCALE")).toDouble()
         : 1.0;
+    // IMUDESK_LAYOUT_LAPTOP=1: a 1366x768 screen, where the window opens maximised.
+    const QSize screen = laptopScreen() ? kSmall : kLarge;
     if (scale < 1.0 || scale > 4.0)
         return 2;
     if (scale != 1.0)
@@ -583,8 +590,8 @@ int main(int argc, char **argv)
         return 2;
     file.write(QStringLiteral("{\"screens\": [{\"name\": \"layout-test\", \"x\": 0, \"y\": 0, \"width\": %1, "
                               "\"height\": %2, \"logicalDpi\": 96, \"logicalBaseDpi\": 96, \"dpr\": 1}]}")
-                   .arg(qRound(1920 * scale))
-                   .arg(qRound(1080 * scale))
+                   .arg(qRound(screen.width() * scale))
+                   .arg(qRound(screen.height() * scale))
                    .toLatin1());
     file.close();
     qputenv("QT_QPA_PLATFORM", "offscreen:configfile=" + config.toLocal8Bit());
