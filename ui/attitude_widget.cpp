@@ -28,6 +28,19 @@ constexpr double kHalfX = 1.5, kHalfY = 1.0, kHalfZ = 0.3; // module 3 : 2 : 0.6
 constexpr std::array<double, 3> kAxisLength{kHalfX + 1.0, kHalfY + 1.3, kHalfZ + 1.2};
 constexpr double kGroundZ = -1.9;  // below the module's bounding sphere (r = 1.83)
 constexpr int kGridHalf = 3;       // grid lines at -3..3 in x and y
+constexpr double kTriadLength = 1.2;
+
+Vector3d groundPoint(double x, double y)
+{
+    return Vector3d(x, y, kGroundZ);
+}
+
+// The navigation axes of the display frame (ENU or NED), drawn from the grid's south-west corner.
+std::array<Vector3d, 3> navigationTriad(bool enu)
+{
+    return enu ? std::array<Vector3d, 3>{Vector3d::UnitX(), Vector3d::UnitY(), Vector3d::UnitZ()}
+               : std::array<Vector3d, 3>{Vector3d::UnitY(), Vector3d::UnitX(), -Vector3d::UnitZ()};
+}
 constexpr double kTargetZ = -1.1;  // the camera looks at (0, 0, kTargetZ): module and ground both fit
 constexpr double kFitRadius = 4.3; // scene radius that fits into the widget
 constexpr double kDragDegPerPixel = 0.5;
@@ -367,24 +380,18 @@ void AttitudeWidget::paintEvent(QPaintEvent *)
 
 void AttitudeWidget::paintGround(QPainter &p, const View &v, bool labels) const
 {
-    const QColor ink = palette().color(QPalette::Text);
-    const auto ground = [](double x, double y) { return Vector3d(x, y, kGroundZ); };
-    const double g = kGridHalf;
-    const Vector3d triadOrigin = ground(-g, -g);
-    constexpr double kTriad = 1.2;
-    // The navigation axes of the display frame, drawn at the south-west corner of the grid.
-    const std::array<Vector3d, 3> triad = m_frame == DisplayFrame::Enu
-        ? std::array<Vector3d, 3>{Vector3d::UnitX(), Vector3d::UnitY(), Vector3d::UnitZ()}
-        : std::array<Vector3d, 3>{Vector3d::UnitY(), Vector3d::UnitX(), -Vector3d::UnitZ()};
-
     if (labels) {
+        const QColor ink = palette().color(QPalette::Text);
+        const double g = kGridHalf;
+        const Vector3d triadOrigin = groundPoint(-g, -g);
+        const std::array<Vector3d, 3> triad = navigationTriad(m_frame == DisplayFrame::Enu);
         QColor plate = palette().color(QPalette::Base);
         plate.setAlphaF(0.6);
-        drawLabel(p, v.project(ground(0, g + 0.55)), m_northLabel, ink, plate);
+        drawLabel(p, v.project(groundPoint(0, g + 0.55)), m_northLabel, ink, plate);
         QColor soft = ink;
         soft.setAlphaF(0.75);
         for (int i = 0; i < 3; ++i) {
-            const QPointF a = v.project(triadOrigin), b = v.project(triadOrigin + kTriad * triad[i]);
+            const QPointF a = v.project(triadOrigin), b = v.project(triadOrigin + kTriadLength * triad[i]);
             const QSizeF s = m_worldLabels[i].size();
             drawLabel(p, beyond(a, b, 4 + 0.5 * std::max(s.width(), s.height())), m_worldLabels[i], soft, plate);
         }
@@ -397,13 +404,10 @@ void AttitudeWidget::paintGround(QPainter &p, const View &v, bool labels) const
 void AttitudeWidget::paintGroundLines(QPainter &p, const View &v) const
 {
     const QColor ink = palette().color(QPalette::Text);
-    const auto ground = [](double x, double y) { return Vector3d(x, y, kGroundZ); };
+    const auto ground = groundPoint;
     const double g = kGridHalf;
     const Vector3d triadOrigin = ground(-g, -g);
-    constexpr double kTriad = 1.2;
-    const std::array<Vector3d, 3> triad = m_frame == DisplayFrame::Enu
-        ? std::array<Vector3d, 3>{Vector3d::UnitX(), Vector3d::UnitY(), Vector3d::UnitZ()}
-        : std::array<Vector3d, 3>{Vector3d::UnitY(), Vector3d::UnitX(), -Vector3d::UnitZ()};
+    const std::array<Vector3d, 3> triad = navigationTriad(m_frame == DisplayFrame::Enu);
 
     // Grid: opaque and cosmetic: drawn pixel by pixel, not blended as a path.
     p.setPen(QPen(mixColours(palette().color(QPalette::Base), ink, 0.18), 0));
@@ -426,12 +430,12 @@ void AttitudeWidget::paintGroundLines(QPainter &p, const View &v) const
     // Navigation-frame triad.
     p.setPen(QPen(north, 1.5, Qt::SolidLine, Qt::RoundCap));
     for (int i = 0; i < 3; ++i)
-        p.drawLine(v.project(triadOrigin), v.project(triadOrigin + kTriad * triad[i]));
+        p.drawLine(v.project(triadOrigin), v.project(triadOrigin + kTriadLength * triad[i]));
 }
 
 void AttitudeWidget::paintShadow(QPainter &p, const View &v) const
 {
-    const auto ground = [](double x, double y) { return Vector3d(x, y, kGroundZ); };
+    const auto ground = groundPoint;
     // Shadow of the module straight down: convex hull of the 8 corners dropped on the ground.
     std::array<QPointF, 8> pts;
     for (int i = 0; i < 8; ++i) {
