@@ -5566,7 +5566,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::AttitudeWidget</name>
     <message>
-        <location filename="../ui/attitude_widget.cpp" line="+267" />
+        <location filename="../ui/attitude_widget.cpp" line="+280" />
         <source>X</source>
         <translation>X</translation>
     </message>
@@ -5602,12 +5602,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
     <message>
         <location line="+1" />
-        <location line="+392" />
+        <location line="+383" />
         <source>ENU 3-1-2</source>
         <translation>ENU 3-1-2</translation>
     </message>
     <message>
-        <location line="-390" />
+        <location line="-381" />
         <source>N (x)</source>
         <translation>N (x)</translation>
     </message>
@@ -5623,12 +5623,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
     <message>
         <location line="+1" />
-        <location line="+388" />
+        <location line="+379" />
         <source>NED 3-2-1</source>
         <translation>NED 3-2-1</translation>
     </message>
     <message>
-        <location line="-386" />
+        <location line="-377" />
         <source>No attitude yet</source>
         <translation>尚无姿态数据</translation>
     </message>
@@ -5658,7 +5658,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>拖动以旋转视图，双击以复位</translation>
     </message>
     <message>
-        <location line="+392" />
+        <location line="+383" />
         <source>Reset view</source>
         <translation>复位视图</translation>
     </message>
@@ -6845,7 +6845,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::ConfigPanel</name>
     <message>
-        <location filename="../ui/config_panel.cpp" line="+172" />
+        <location filename="../ui/config_panel.cpp" line="+173" />
         <source>OK</source>
         <translation>OK</translation>
     </message>
@@ -6940,7 +6940,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>没有待应用的更改。</translation>
     </message>
     <message>
-        <location line="+9" />
+        <location line="+10" />
         <source>Link: %1 of %2 bytes/s (%3 %) at %4 baud</source>
         <translation>链路：%1 / %2 字节/秒（%3 %），波特率 %4</translation>
     </message>
@@ -7688,7 +7688,7 @@ Link load = bytes per second × 10 bits / baud rate.</source>
 <context>
     <name>imudesk::ui::GyroScaleWizard</name>
     <message>
-        <location filename="../ui/gyro_scale_wizard.cpp" line="+23" />
+        <location filename="../ui/gyro_scale_wizard.cpp" line="+25" />
         <source>Gyro scale factor calibration</source>
         <translation>陀螺仪标度因数校准</translation>
     </message>
@@ -7703,7 +7703,17 @@ Link load = bytes per second × 10 bits / baud rate.</source>
         <translation>&lt;ul&gt;&lt;li&gt;将模块连同其所固定的机器人或车辆放在水平、平坦的地面上。&lt;/li&gt;&lt;li&gt;保持温度稳定，避免振动（关闭电机）。&lt;/li&gt;&lt;li&gt;标记起始位置：必须停在同一标记处，误差在 5 deg 以内。&lt;/li&gt;&lt;li&gt;以 20-100 deg/s 匀速转动（每圈 5-20 s），方向不限，中途不要停顿。&lt;/li&gt;&lt;li&gt;圈数越多，误差越小：720 deg（2 圈）到 1800 deg（5 圈）。&lt;/li&gt;&lt;/ul&gt;按下“开始”后请保持模块静止几秒钟：ImuDesk 会先测量陀螺仪零偏。</translation>
     </message>
     <message>
-        <location line="+11" />
+        <location line="+15" />
+        <source>Turn on HI91 at 100 Hz (LOG HI91 ONTIME 0.01)</source>
+        <translation>以 100 Hz 打开 HI91（LOG HI91 ONTIME 0.01）</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Sends LOG HI91 ONTIME 0.01: the float IMU frame, gyroscope included, every 10 ms. Until SAVECONFIG it lasts until the module restarts.</source>
+        <translation>发送 LOG HI91 ONTIME 0.01：每 10 ms 输出一帧浮点 IMU 数据（含陀螺仪）。未执行 SAVECONFIG 时，模块重启后失效。</translation>
+    </message>
+    <message>
+        <location line="+8" />
         <source>Turn the module</source>
         <translation>转动模块</translation>
     </message>
@@ -7743,7 +7753,42 @@ Link load = bytes per second × 10 bits / baud rate.</source>
         <translation>结果</translation>
     </message>
     <message>
-        <location line="+78" />
+        <location line="+19" />
+        <source>The module refused LOG HI91 ONTIME 0.01 (%1). Check the output in Device ▸ Configuration.</source>
+        <translation>模块拒绝了 LOG HI91 ONTIME 0.01（%1）。请在“设备 ▸ 配置”中检查输出设置。</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>no answer</source>
+        <translation>无应答</translation>
+    </message>
+    <message>
+        <location line="+9" />
+        <source>Gyroscope data: checking what the module sends…</source>
+        <translation>陀螺仪数据：正在检查模块的输出…</translation>
+    </message>
+    <message>
+        <location line="+25" />
+        <source>Gyroscope data: %1 Hz. Ready: ImuDesk will follow the turn.</source>
+        <translation>陀螺仪数据：%1 Hz。就绪：ImuDesk 将跟踪转动过程。</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>No gyroscope data arrives: the module's calibration still works, but ImuDesk cannot show the angle turned or when to stop. Turn the HI91 output on.</source>
+        <translation>未收到陀螺仪数据：模块自身的校准仍可进行，但 ImuDesk 无法显示已转过的角度和停止时机。请打开 HI91 输出。</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Gyroscope data: %1 Hz, too slow to follow the turn (ImuDesk needs %2 Hz or more). Turn the HI91 output on at 100 Hz.</source>
+        <translation>陀螺仪数据：%1 Hz，太慢，无法跟踪转动（ImuDesk 需要 %2 Hz 或以上）。请以 100 Hz 打开 HI91 输出。</translation>
+    </message>
+    <message>
+        <location line="+14" />
+        <source>Sending LOG HI91 ONTIME 0.01…</source>
+        <translation>正在发送 LOG HI91 ONTIME 0.01…</translation>
+    </message>
+    <message>
+        <location line="+62" />
         <source>%1 deg turned (%2 turns), rate %3 deg/s %4</source>
         <translation>已转动 %1 deg（%2 圈），角速度 %3 deg/s %4</translation>
     </message>

@@ -5566,7 +5566,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::AttitudeWidget</name>
     <message>
-        <location filename="../ui/attitude_widget.cpp" line="+267" />
+        <location filename="../ui/attitude_widget.cpp" line="+280" />
         <source>X</source>
         <translation>X</translation>
     </message>
@@ -5602,12 +5602,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
     <message>
         <location line="+1" />
-        <location line="+392" />
+        <location line="+383" />
         <source>ENU 3-1-2</source>
         <translation>ENU 3-1-2</translation>
     </message>
     <message>
-        <location line="-390" />
+        <location line="-381" />
         <source>N (x)</source>
         <translation>N (x)</translation>
     </message>
@@ -5623,12 +5623,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
     <message>
         <location line="+1" />
-        <location line="+388" />
+        <location line="+379" />
         <source>NED 3-2-1</source>
         <translation>NED 3-2-1</translation>
     </message>
     <message>
-        <location line="-386" />
+        <location line="-377" />
         <source>No attitude yet</source>
         <translation>尚無姿態資料</translation>
     </message>
@@ -5658,7 +5658,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>拖曳以旋轉檢視，按兩下以重設</translation>
     </message>
     <message>
-        <location line="+392" />
+        <location line="+383" />
         <source>Reset view</source>
         <translation>重設檢視</translation>
     </message>
@@ -6845,7 +6845,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::ConfigPanel</name>
     <message>
-        <location filename="../ui/config_panel.cpp" line="+172" />
+        <location filename="../ui/config_panel.cpp" line="+173" />
         <source>OK</source>
         <translation>OK</translation>
     </message>
@@ -6940,7 +6940,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>沒有待套用的變更。</translation>
     </message>
     <message>
-        <location line="+9" />
+        <location line="+10" />
         <source>Link: %1 of %2 bytes/s (%3 %) at %4 baud</source>
         <translation>鏈路：%1 / %2 位元組/秒（%3 %），波特率 %4</translation>
     </message>
@@ -7688,7 +7688,7 @@ Link load = bytes per second × 10 bits / baud rate.</source>
 <context>
     <name>imudesk::ui::GyroScaleWizard</name>
     <message>
-        <location filename="../ui/gyro_scale_wizard.cpp" line="+23" />
+        <location filename="../ui/gyro_scale_wizard.cpp" line="+25" />
         <source>Gyro scale factor calibration</source>
         <translation>陀螺儀標度因數校準</translation>
     </message>
@@ -7703,7 +7703,17 @@ Link load = bytes per second × 10 bits / baud rate.</source>
         <translation>&lt;ul&gt;&lt;li&gt;將模組連同其固定的機器人或車輛放在水平、平整的地面上。&lt;/li&gt;&lt;li&gt;保持溫度穩定並避免振動（關閉馬達）。&lt;/li&gt;&lt;li&gt;標記起始位置：必須停在同一標記處，誤差在 5 deg 以內。&lt;/li&gt;&lt;li&gt;以 20-100 deg/s 的均勻轉速轉動（每圈 5-20 s），方向不限，中途不要停頓。&lt;/li&gt;&lt;li&gt;圈數越多誤差越小：720 deg（2 圈）至 1800 deg（5 圈）。&lt;/li&gt;&lt;/ul&gt;按下「開始」後請保持模組靜止幾秒：ImuDesk 會先測量陀螺儀零偏。</translation>
     </message>
     <message>
-        <location line="+11" />
+        <location line="+15" />
+        <source>Turn on HI91 at 100 Hz (LOG HI91 ONTIME 0.01)</source>
+        <translation>以 100 Hz 開啟 HI91（LOG HI91 ONTIME 0.01）</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Sends LOG HI91 ONTIME 0.01: the float IMU frame, gyroscope included, every 10 ms. Until SAVECONFIG it lasts until the module restarts.</source>
+        <translation>傳送 LOG HI91 ONTIME 0.01：每 10 ms 輸出一幀浮點 IMU 資料（含陀螺儀）。未執行 SAVECONFIG 時，模組重新啟動後失效。</translation>
+    </message>
+    <message>
+        <location line="+8" />
         <source>Turn the module</source>
         <translation>轉動模組</translation>
     </message>
@@ -7743,7 +7753,42 @@ Link load = bytes per second × 10 bits / baud rate.</source>
         <translation>結果</translation>
     </message>
     <message>
-        <location line="+78" />
+        <location line="+19" />
+        <source>The module refused LOG HI91 ONTIME 0.01 (%1). Check the output in Device ▸ Configuration.</source>
+        <translation>模組拒絕了 LOG HI91 ONTIME 0.01（%1）。請在「裝置 ▸ 配置」中檢查輸出設定。</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>no answer</source>
+        <translation>無回應</translation>
+    </message>
+    <message>
+        <location line="+9" />
+        <source>Gyroscope data: checking what the module sends…</source>
+        <translation>陀螺儀資料：正在檢查模組的輸出…</translation>
+    </message>
+    <message>
+        <location line="+25" />
+        <source>Gyroscope data: %1 Hz. Ready: ImuDesk will follow the turn.</source>
+        <translation>陀螺儀資料：%1 Hz。就緒：ImuDesk 將追蹤轉動過程。</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>No gyroscope data arrives: the module's calibration still works, but ImuDesk cannot show the angle turned or when to stop. Turn the HI91 output on.</source>
+        <translation>未收到陀螺儀資料：模組本身的校準仍可進行，但 ImuDesk 無法顯示已轉過的角度與停止時機。請開啟 HI91 輸出。</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Gyroscope data: %1 Hz, too slow to follow the turn (ImuDesk needs %2 Hz or more). Turn the HI91 output on at 100 Hz.</source>
+        <translation>陀螺儀資料：%1 Hz，太慢，無法追蹤轉動（ImuDesk 需要 %2 Hz 或以上）。請以 100 Hz 開啟 HI91 輸出。</translation>
+    </message>
+    <message>
+        <location line="+14" />
+        <source>Sending LOG HI91 ONTIME 0.01…</source>
+        <translation>正在傳送 LOG HI91 ONTIME 0.01…</translation>
+    </message>
+    <message>
+        <location line="+62" />
         <source>%1 deg turned (%2 turns), rate %3 deg/s %4</source>
         <translation>已轉動 %1 deg（%2 圈），轉速 %3 deg/s %4</translation>
     </message>

@@ -2,6 +2,8 @@
 #include "work_place_size.h"
 
 #include "device/device_session.h"
+#include "protocol/hipnuc/ascii_command.h"
+#include "protocol/hipnuc/ascii_reply.h"
 
 #include <QJsonObject>
 #include <QLabel>
@@ -35,6 +37,20 @@ GyroScaleWizard::GyroScaleWizard(device::DeviceSession &session, QWidget *parent
            "Keep the module still for a few seconds after pressing Start: ImuDesk measures the gyro bias first."));
     checklist->setWordWrap(true);
     pl->addWidget(checklist);
+    // What the module sends now: ImuDesk follows the turn on the streamed gyroscope (the
+    // module's own calibration does not need the stream). Turning the output on is offered
+    // only when the gyroscope data is missing or too slow.
+    m_streamStatus = new QLabel;
+    m_streamStatus->setObjectName(QStringLiteral("gyroStreamStatus"));
+    m_streamStatus->setWordWrap(true);
+    pl->addWidget(m_streamStatus);
+    m_enableOutput = new QPushButton(tr("Turn on HI91 at 100 Hz (LOG HI91 ONTIME 0.01)"));
+    m_enableOutput->setObjectName(QStringLiteral("enableGyroOutput"));
+    m_enableOutput->setToolTip(tr("Sends LOG HI91 ONTIME 0.01: the float IMU frame, gyroscope included, every 10 ms. "
+                                  "Until SAVECONFIG it lasts until the module restarts."));
+    m_enableOutput->hide();
+    pl->addWidget(m_enableOutput, 0, Qt::AlignLeft);
+    pl->addStretch(1);
     setPage(PreparePage, prepare);
 
     auto *runPage = new QWizardPage;
@@ -89,11 +105,70 @@ GyroScaleWizard::GyroScaleWizard(device::DeviceSession &session, QWidget *parent
     connect(&m_device, &calib::GyroCalSession::stateChanged, this, &GyroScaleWizard::onDeviceState);
     connect(&m_clock, &QTimer::timeout, this, &GyroScaleWizard::refresh);
     m_clock.setInterval(50);
+    connect(m_enableOutput, &QPushButton::clicked, this, &GyroScaleWizard::enableGyroOutput);
+    connect(&m_session, &device::DeviceSession::commandFinished, this,
+            [this](quint64 id, const protocol::hipnuc::AsciiReply &reply) {
+                if (id != m_outputCommand)
+                    return;
+                m_outputCommand = 0;
+                if (!reply.ok())
+                    m_streamStatus->setText(tr("The module refused LOG HI91 ONTIME 0.01 (%1). Check the output in "
+                                               "Device ▸ Configuration.")
+                                                .arg(reply.errorLine.empty() ? tr("no answer")
+                                                                             : QString::fromStdString(reply.errorLine)));
+                checkStream();
+            });
+    m_streamClock.setInterval(kStreamCheckMs);
+    connect(&m_streamClock, &QTimer::timeout, this, &GyroScaleWizard::checkStream);
+    m_streamSeq = m_session.store().totalAppended();
+    m_streamSince.start();
+    m_streamClock.start();
+    m_streamStatus->setText(tr("Gyroscope data: checking what the module sends…"));
     // Next stays off on the run page until the device has answered STOP.
     connect(this, &QWizard::currentIdChanged, this, [this](int id) {
         if (id == RunPage && !m_done)
             button(QWizard::NextButton)->setEnabled(false);
+        if (id == PreparePage)
+            m_streamClock.start();
+        else
+            m_streamClock.stop();
     });
+}
+
+void GyroScaleWizard::checkStream()
+{
+    // Gyroscope samples since the last check, over the time it took.
+    const device::SampleStore &store = m_session.store();
+    const auto batch = store.since(m_streamSeq, SIZE_MAX, &m_streamSeq);
+    const double seconds = double(m_streamSince.restart()) / 1000.0;
+    size_t gyro = 0;
+    for (const model::Sample &sample : batch)
+        gyro += (sample.fields & model::FieldGyr) ? 1 : 0;
+    m_gyroRateHz = seconds > 0.0 ? double(gyro) / seconds : 0.0;
+    const bool enough = m_gyroRateHz >= kMinGyroRateHz;
+    if (m_outputCommand == 0) {
+        if (enough)
+            m_streamStatus->setText(tr("Gyroscope data: %1 Hz. Ready: ImuDesk will follow the turn.")
+                                        .arg(m_gyroRateHz, 0, 'f', 0));
+        else if (gyro == 0)
+            m_streamStatus->setText(tr("No gyroscope data arrives: the module's calibration still works, but ImuDesk "
+                                       "cannot show the angle turned or when to stop. Turn the HI91 output on."));
+        else
+            m_streamStatus->setText(tr("Gyroscope data: %1 Hz, too slow to follow the turn (ImuDesk needs %2 Hz or "
+                                       "more). Turn the HI91 output on at 100 Hz.")
+                                        .arg(m_gyroRateHz, 0, 'f', 0)
+                                        .arg(kMinGyroRateHz, 0, 'f', 0));
+    }
+    m_enableOutput->setVisible(!enough);
+    m_enableOutput->setEnabled(!enough && m_outputCommand == 0 && m_session.state() == device::SessionState::Connected);
+}
+
+void GyroScaleWizard::enableGyroOutput()
+{
+    const auto command = protocol::hipnuc::commands::logOnTime(protocol::hipnuc::Message::HI91, 0.01);
+    m_outputCommand = m_session.sendCommand(QString::fromStdString(command.text));
+    m_enableOutput->setEnabled(false);
+    m_streamStatus->setText(tr("Sending LOG HI91 ONTIME 0.01…"));
 }
 
 bool GyroScaleWizard::validateCurrentPage()

@@ -1,6 +1,8 @@
 #pragma once
 // Gyro Z scale-factor calibration wizard (manual v1.7.1 4.6.7.11, v1.6.6 2.2.4):
-//   1. preparation checklist (level, steady, a mark to stop on, 720..1800 deg);
+//   1. preparation checklist (level, steady, a mark to stop on, 720..1800 deg), and what
+//      the module streams: the gyroscope's rate, with an offer to turn HI91 on only when
+//      it is missing or too slow for ImuDesk to follow the turn;
 //   2. the run: Start sends CONFIG USRCAL START <ANGLE> and starts our own estimate
 //      (calib::GyroScaleRun on the streamed samples, device timestamps); the page shows
 //      the angle turned, turns, the rate against the 20..100 deg/s band, the evenness,
@@ -15,6 +17,7 @@
 #include "calib/sample_csv.h"
 #include "calibration_run_saver.h"
 
+#include <QElapsedTimer>
 #include <QTimer>
 #include <QWizard>
 
@@ -41,6 +44,14 @@ public:
     // For tests and the integrator.
     QPushButton *startButton() const { return m_start; }
     QPushButton *stopButton() const { return m_stop; }
+    // The preparation page's check of the stream: gyroscope samples per second (-1 before the
+    // first check), and the button that turns HI91 on, shown only when they are too few.
+    static constexpr double kMinGyroRateHz = 50.0; // ImuDesk's angle and stop cue, not the module's
+    static constexpr int kStreamCheckMs = 1000;
+    double gyroRateHz() const { return m_gyroRateHz; }
+    QPushButton *enableOutputButton() const { return m_enableOutput; }
+    QLabel *streamStatusLabel() const { return m_streamStatus; }
+    void checkStream();
     QSpinBox *angleBox() const { return m_angle; }
     const calib::GyroScaleRun &run() const { return m_run; }
     const calib::GyroCalSession &deviceCalibration() const { return m_device; }
@@ -55,11 +66,19 @@ private:
     void refresh();
     void onDeviceState(calib::GyroCalSession::State state, const QString &message);
     void saveRun();
+    void enableGyroOutput();
 
     device::DeviceSession &m_session;
     calib::GyroCalSession m_device;
     calib::GyroScaleRun m_run;
     QTimer m_clock;
+    QTimer m_streamClock;
+    QElapsedTimer m_streamSince;
+    uint64_t m_streamSeq = 0;
+    double m_gyroRateHz = -1.0;
+    quint64 m_outputCommand = 0;
+    QLabel *m_streamStatus = nullptr;
+    QPushButton *m_enableOutput = nullptr;
     uint64_t m_seq = 0;
     bool m_done = false;
     int m_target = 0;

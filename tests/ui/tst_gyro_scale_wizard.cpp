@@ -8,6 +8,7 @@
 #include "gyro_scale_wizard.h"
 #include "sim/pty_simulator.h"
 
+#include <QLabel>
 #include <QPushButton>
 #include <QSpinBox>
 #include <QStandardPaths>
@@ -21,6 +22,39 @@ class TstGyroScaleWizard : public QObject {
 private Q_SLOTS:
     // Runs go to the temporary history each test sets; nothing reaches the user's folder.
     void initTestCase() { QStandardPaths::setTestModeEnabled(true); }
+
+    // The preparation page reads what the module streams and offers to turn HI91 on only
+    // when the gyroscope data is missing.
+    void preparationChecksTheStream()
+    {
+        sim::SimOptions o;
+        o.motion = sim::Motion::Static;
+        sim::PtySimulator simulator(o);
+        QString error;
+        QVERIFY2(simulator.start(&error), qPrintable(error));
+        device::DeviceSession session;
+        session.open(simulator.devicePath(), 115200);
+        QTRY_COMPARE_WITH_TIMEOUT(session.state(), device::SessionState::Connected, 15000);
+        ui::GyroScaleWizard wizard(session);
+        wizard.show();
+        // Streaming (the simulator's HI91 at 100 Hz): nothing to change.
+        QTRY_VERIFY_WITH_TIMEOUT(wizard.gyroRateHz() >= ui::GyroScaleWizard::kMinGyroRateHz, 5000);
+        QVERIFY(wizard.enableOutputButton()->isHidden());
+        QVERIFY(wizard.streamStatusLabel()->text().contains(QStringLiteral("Ready")));
+        // Output off: the page says so and offers the one command that brings it back.
+        session.sendCommand(QStringLiteral("LOG HI91 ONTIME 0"));
+        QTRY_VERIFY_WITH_TIMEOUT(wizard.gyroRateHz() == 0.0, 6000);
+        QVERIFY(wizard.enableOutputButton()->isVisible() && wizard.enableOutputButton()->isEnabled());
+        QVERIFY(wizard.streamStatusLabel()->text().contains(QStringLiteral("No gyroscope data")));
+        QTest::mouseClick(wizard.enableOutputButton(), Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(wizard.gyroRateHz() >= ui::GyroScaleWizard::kMinGyroRateHz, 6000);
+        QVERIFY(wizard.enableOutputButton()->isHidden());
+        // The check runs only on the preparation page.
+        wizard.next();
+        const double rate = wizard.gyroRateHz();
+        QTest::qWait(2 * ui::GyroScaleWizard::kStreamCheckMs);
+        QCOMPARE(wizard.gyroRateHz(), rate);
+    }
 
     void runsAgainstTheSimulator()
     {
