@@ -7688,7 +7688,7 @@ Link load = bytes per second × 10 bits / baud rate.</source>
 <context>
     <name>imudesk::ui::GyroScaleWizard</name>
     <message>
-        <location filename="../ui/gyro_scale_wizard.cpp" line="+25" />
+        <location filename="../ui/gyro_scale_wizard.cpp" line="+26" />
         <source>Gyro scale factor calibration</source>
         <translation>陀螺儀標度因數校準</translation>
     </message>
@@ -7743,12 +7743,12 @@ Link load = bytes per second × 10 bits / baud rate.</source>
         <translation>轉速 %v deg/s（範圍 20-100）</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+6" />
         <source>Angle:</source>
         <translation>角度：</translation>
     </message>
     <message>
-        <location line="+15" />
+        <location line="+30" />
         <source>Result</source>
         <translation>結果</translation>
     </message>
@@ -7788,7 +7788,7 @@ Link load = bytes per second × 10 bits / baud rate.</source>
         <translation>正在傳送 LOG HI91 ONTIME 0.01…</translation>
     </message>
     <message>
-        <location line="+62" />
+        <location line="+67" />
         <source>%1 deg turned (%2 turns), rate %3 deg/s %4</source>
         <translation>已轉動 %1 deg（%2 圈），轉速 %3 deg/s %4</translation>
     </message>
@@ -9775,6 +9775,19 @@ Samples: %3</source>
         <location line="+1" />
         <source>Captures and vendor CSV (*.imucap *.csv);;All files (*)</source>
         <translation>記錄檔與原廠 CSV (*.imucap *.csv);;所有檔案 (*)</translation>
+    </message>
+</context>
+<context>
+    <name>imudesk::ui::TurnGauge</name>
+    <message>
+        <location filename="../ui/turn_gauge.cpp" line="+78" />
+        <source>%1° of %2°</source>
+        <translation>%1° / %2°</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>lap %1 of %2 · %3 deg/s</source>
+        <translation>第 %1 圈，共 %2 圈 · %3 deg/s</translation>
     </message>
 </context>
 <context>

@@ -1,4 +1,5 @@
 #include "gyro_scale_wizard.h"
+#include "turn_gauge.h"
 #include "work_place_size.h"
 
 #include "device/device_session.h"
@@ -75,6 +76,7 @@ GyroScaleWizard::GyroScaleWizard(device::DeviceSession &session, QWidget *parent
     m_rate->setRange(0, 120);
     m_rate->setFormat(tr("rate %v deg/s (band 20-100)"));
     m_readout = new QLabel;
+    m_readout->setWordWrap(true);
     m_deviceStatus = new QLabel;
     m_deviceStatus->setWordWrap(true);
     auto *row = new QHBoxLayout;
@@ -85,11 +87,26 @@ GyroScaleWizard::GyroScaleWizard(device::DeviceSession &session, QWidget *parent
     row->addStretch();
     rl->addLayout(row);
     rl->addWidget(m_guidance);
-    rl->addWidget(m_progress);
-    rl->addWidget(m_rate);
-    rl->addWidget(m_readout);
-    rl->addWidget(m_deviceStatus);
-    rl->addStretch();
+    // The turn as a ring beside the figures: the angle, the laps, the stop mark.
+    m_gauge = new TurnGauge;
+    m_gauge->setObjectName(QStringLiteral("turnGauge"));
+    m_gauge->setTarget(m_angle->value(), calib::GyroScaleRun::Options{}.stopToleranceDeg);
+    connect(m_angle, &QSpinBox::valueChanged, this, [this](int deg) {
+        if (m_start->isEnabled())
+            m_gauge->setTarget(deg, calib::GyroScaleRun::Options{}.stopToleranceDeg);
+    });
+    m_progress->hide(); // until a run starts: the gauge shows the target meanwhile
+    m_rate->hide();
+    auto *figures = new QVBoxLayout;
+    figures->addWidget(m_progress);
+    figures->addWidget(m_rate);
+    figures->addWidget(m_readout);
+    figures->addWidget(m_deviceStatus);
+    figures->addStretch();
+    auto *work = new QHBoxLayout;
+    work->addWidget(m_gauge, 3);
+    work->addLayout(figures, 2);
+    rl->addLayout(work, 1);
     setPage(RunPage, runPage);
 
     auto *resultPage = new QWizardPage;
@@ -197,6 +214,10 @@ void GyroScaleWizard::startRun()
         return;
     }
     m_progress->setRange(0, m_angle->value());
+    m_gauge->setTarget(m_angle->value(), o.stopToleranceDeg);
+    m_gauge->clear();
+    m_progress->show();
+    m_rate->show();
     m_start->setEnabled(false);
     m_angle->setEnabled(false);
     m_stop->setEnabled(true);
@@ -230,6 +251,7 @@ void GyroScaleWizard::refresh()
         : std::abs(m_run.currentAngleDeg());
     m_progress->setValue(int(std::min(angle, double(m_progress->maximum()))));
     m_rate->setValue(int(std::min(std::abs(m_run.currentRateDps()), 120.0)));
+    m_gauge->setProgress(angle, m_run.currentRateDps());
     m_readout->setText(tr("%1 deg turned (%2 turns), rate %3 deg/s %4")
                            .arg(angle, 0, 'f', 1)
                            .arg(angle / 360.0, 0, 'f', 2)

@@ -34,6 +34,8 @@ class DeviceSession;
 
 namespace imudesk::ui {
 
+class TurnGauge;
+
 class GyroScaleWizard : public QWizard {
     Q_OBJECT
 public:
@@ -50,6 +52,7 @@ public:
     static constexpr int kStreamCheckMs = 1000;
     double gyroRateHz() const { return m_gyroRateHz; }
     QPushButton *enableOutputButton() const { return m_enableOutput; }
+    const TurnGauge *gauge() const { return m_gauge; }
     QLabel *streamStatusLabel() const { return m_streamStatus; }
     void checkStream();
     QSpinBox *angleBox() const { return m_angle; }
@@ -93,6 +96,7 @@ private:
     QProgressBar *m_progress = nullptr;
     QProgressBar *m_rate = nullptr;
     QLabel *m_result = nullptr;
+    TurnGauge *m_gauge = nullptr;
 };
 
 } // namespace imudesk::ui

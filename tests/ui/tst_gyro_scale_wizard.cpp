@@ -7,13 +7,17 @@
 #include "device/device_session.h"
 #include "gyro_scale_wizard.h"
 #include "sim/pty_simulator.h"
+#include "turn_gauge.h"
 
+#include <QImage>
 #include <QLabel>
 #include <QPushButton>
 #include <QSpinBox>
 #include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QTest>
+
+#include <cmath>
 
 using namespace imudesk;
 
@@ -25,6 +29,39 @@ private Q_SLOTS:
 
     // The preparation page reads what the module streams and offers to turn HI91 on only
     // when the gyroscope data is missing.
+    void turnGaugeLapsAndWindow()
+    {
+        ui::TurnGauge gauge;
+        gauge.resize(300, 300);
+        gauge.setTarget(720, 5);
+        QCOMPARE(gauge.lapDeg(), 0.0);
+        QVERIFY(!gauge.inStopWindow());
+        gauge.setProgress(412.0, -35.0);
+        QCOMPARE(gauge.lapDeg(), 52.0);
+        QCOMPARE(gauge.centreText(), QStringLiteral("412° of 720°"));
+        QCOMPARE(gauge.detailText(), QStringLiteral("lap 2 of 2 · 35 deg/s"));
+        QVERIFY(!gauge.inStopWindow());
+        gauge.setProgress(716.0, 0.0);
+        QVERIFY(gauge.inStopWindow());
+        gauge.setProgress(726.0, 0.0);
+        QVERIFY(!gauge.inStopWindow()); // overshot the window
+        gauge.setProgress(720.0, 0.0);
+        QCOMPARE(gauge.lapDeg(), 360.0);
+        // Painted: the turned arc's colour is on the ring's first quarter (clockwise from the top).
+        gauge.setProgress(300.0, 40.0);
+        const QImage image = gauge.grab().toImage();
+        const QPoint onRing(gauge.width() / 2 + int(0.6 * gauge.width() / 2 * std::sin(M_PI / 4)),
+                            gauge.height() / 2 - int(0.6 * gauge.width() / 2 * std::cos(M_PI / 4)));
+        const QColor blue(0x1f, 0x77, 0xb4);
+        int hits = 0;
+        for (int dy = -30; dy <= 30; ++dy)
+            for (int dx = -30; dx <= 30; ++dx)
+                hits += QColor(image.pixel(onRing + QPoint(dx, dy))) == blue;
+        QVERIFY2(hits > 20, qPrintable(QString::number(hits)));
+        gauge.clear();
+        QCOMPARE(gauge.angle(), 0.0);
+    }
+
     void preparationChecksTheStream()
     {
         sim::SimOptions o;
@@ -89,6 +126,9 @@ private Q_SLOTS:
         // The turntable turns 720 deg and stops (about 20 s after the simulator started).
         QTRY_COMPARE_WITH_TIMEOUT(wizard.run().state(), calib::GyroScaleRun::State::Finished, 40000);
         QVERIFY(std::fabs(std::fabs(wizard.run().result().legs.front().angleDeg) - 720 * 1.005) < 2);
+        // The gauge shows the same turn: two laps, inside the stop window.
+        QTRY_VERIFY(std::fabs(wizard.gauge()->angle() - std::fabs(wizard.run().result().legs.front().angleDeg)) < 1.0);
+        QVERIFY(wizard.gauge()->inStopWindow());
         QTest::mouseClick(wizard.stopButton(), Qt::LeftButton);
         QTRY_COMPARE_WITH_TIMEOUT(wizard.deviceCalibration().state(), calib::GyroCalSession::State::Succeeded, 5000);
         QTRY_VERIFY(wizard.button(QWizard::NextButton)->isEnabled());
