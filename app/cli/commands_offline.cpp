@@ -43,16 +43,10 @@ int cmdDecode(const QStringList &args)
             }
             if (e.kind != protocol::StreamEvent::Kind::Frame)
                 continue;
-            protocol::hipnuc::Hi91 h;
-            if (protocol::hipnuc::decodeHi91(e.payload.data(), e.payload.size(), h)) {
+            const auto res = protocol::hipnuc::forEachPacket(e.payload, [&](const protocol::hipnuc::Packet &pk) {
                 if (json)
-                    outRaw(format::sampleToJson(protocol::hipnuc::toSample(h)));
-                continue;
-            }
-            const auto res = protocol::hipnuc::decodePayload(e.payload);
-            if (json)
-                for (const auto &pk : res.packets)
                     outRaw(format::sampleToJson(protocol::hipnuc::toSample(pk)));
+            });
             if (!res.ok()) {
                 ++payloadErrors;
                 ++payloadErrorKinds[protocol::hipnuc::payloadErrorText(res.error)];

@@ -295,19 +295,12 @@ void SessionWorker::handleEvents()
         switch (e.kind) {
         case StreamEvent::Kind::Frame: {
             const size_t first = m_batch.size();
-            hp::Hi91 h;
-            if (hp::decodeHi91(e.payload.data(), e.payload.size(), h)) {
-                m_batch.push_back(hp::toSample(h));
+            const auto res = hp::forEachPacket(e.payload, [&](const hp::Packet &p) {
+                m_batch.push_back(hp::toSample(p));
                 m_batch.back().hostTimeNs = now;
-            } else {
-                const auto res = hp::decodePayload(e.payload);
-                for (const auto &p : res.packets) {
-                    m_batch.push_back(hp::toSample(p));
-                    m_batch.back().hostTimeNs = now;
-                }
-                if (!res.ok())
-                    ++m_payloadErrors;
-            }
+            });
+            if (!res.ok())
+                ++m_payloadErrors;
             for (size_t i = first; i < m_batch.size(); ++i) {
                 const model::Sample &sample = m_batch[i];
                 m_frameBytes[sample.source] = e.payload.size() + hp::FrameDecoder::kHeaderSize;

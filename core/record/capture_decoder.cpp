@@ -69,14 +69,7 @@ void CaptureDecoder::dispatch(int64_t hostNs, Sink &sink)
     for (const StreamEvent &e : m_events) {
         switch (e.kind) {
         case StreamEvent::Kind::Frame: {
-            hp::Hi91 h;
-            if (hp::decodeHi91(e.payload.data(), e.payload.size(), h)) {
-                sink.onPacket(hp::Packet(h), hostNs);
-                break;
-            }
-            const auto res = hp::decodePayload(e.payload);
-            for (const auto &p : res.packets)
-                sink.onPacket(p, hostNs);
+            const auto res = hp::forEachPacket(e.payload, [&](const hp::Packet &p) { sink.onPacket(p, hostNs); });
             if (!res.ok())
                 ++m_payloadErrors;
             break;

@@ -140,6 +140,25 @@ const char *payloadErrorText(PayloadError e);
 // Fast path for the common one-HI91 frame: false when the payload is not exactly one HI91.
 bool decodeHi91(const uint8_t *data, size_t len, Hi91 &out);
 
+// A frame's payload, packet by packet: the fast path for a frame of exactly one HI91, else
+// decodePayload(). `each` gets every packet decoded; the result tells what could not be
+// decoded (its packet list is left empty: they went to `each`). The one place that turns a
+// payload into packets, for the live session, the replay and the CLI alike.
+template<typename F>
+PayloadResult forEachPacket(const std::vector<uint8_t> &payload, F &&each)
+{
+    Hi91 h;
+    if (decodeHi91(payload.data(), payload.size(), h)) {
+        each(Packet(h));
+        return {};
+    }
+    PayloadResult result = decodePayload(payload);
+    for (const Packet &p : result.packets)
+        each(p);
+    result.packets.clear();
+    return result;
+}
+
 std::vector<uint8_t> encode(const Hi91 &p);
 std::vector<uint8_t> encode(const Hi92 &p);
 std::vector<uint8_t> encode(const Hi81 &p);
