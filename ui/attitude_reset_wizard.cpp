@@ -1,4 +1,5 @@
 #include "attitude_reset_wizard.h"
+#include "protocol/hipnuc/ascii_command.h"
 #include "work_place_size.h"
 
 #include "device/device_session.h"
@@ -171,7 +172,7 @@ void AttitudeResetWizard::send()
     m_sentAccStd = m_still.accStdG();
     m_sentRoll = m_roll;
     m_sentPitch = m_pitch;
-    m_pending = m_session.sendCommand(QStringLiteral("CONFIG ATT RST %1").arg(variant()));
+    m_pending = m_session.sendCommand(protocol::hipnuc::commands::attReset(variant()));
     m_send->setEnabled(false);
 }
 
@@ -195,7 +196,7 @@ QJsonObject AttitudeResetWizard::resultJson() const
 {
     QJsonObject o;
     o.insert(QStringLiteral("variant"), variant());
-    o.insert(QStringLiteral("command"), QStringLiteral("CONFIG ATT RST %1").arg(variant()));
+    o.insert(QStringLiteral("command"), QString::fromStdString(protocol::hipnuc::commands::attReset(variant()).text));
     o.insert(QStringLiteral("device_ok"), m_ok);
     o.insert(QStringLiteral("device_reply"), m_reply);
     o.insert(QStringLiteral("still_for_s"), m_sentStillForS);

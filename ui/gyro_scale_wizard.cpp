@@ -182,8 +182,7 @@ void GyroScaleWizard::checkStream()
 
 void GyroScaleWizard::enableGyroOutput()
 {
-    const auto command = protocol::hipnuc::commands::logOnTime(protocol::hipnuc::Message::HI91, 0.01);
-    m_outputCommand = m_session.sendCommand(QString::fromStdString(command.text));
+    m_outputCommand = m_session.sendCommand(protocol::hipnuc::commands::logOnTime(protocol::hipnuc::Message::HI91, 0.01));
     m_enableOutput->setEnabled(false);
     m_streamStatus->setText(tr("Sending LOG HI91 ONTIME 0.01…"));
 }

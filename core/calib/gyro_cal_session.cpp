@@ -1,4 +1,5 @@
 #include "calib/gyro_cal_session.h"
+#include "protocol/hipnuc/ascii_command.h"
 
 #include "device/device_session.h"
 
@@ -28,7 +29,7 @@ bool GyroCalSession::start(int angleDeg)
         return false;
     }
     m_angle = angleDeg;
-    m_pending = m_session.sendCommand(QStringLiteral("CONFIG USRCAL START %1").arg(angleDeg));
+    m_pending = m_session.sendCommand(protocol::hipnuc::commands::gyroCalStart(angleDeg));
     setState(State::Starting, tr("Starting the gyro calibration (%1 deg).").arg(angleDeg));
     return true;
 }
@@ -37,7 +38,7 @@ bool GyroCalSession::stop()
 {
     if (m_state != State::Running)
         return false;
-    m_pending = m_session.sendCommand(QStringLiteral("CONFIG USRCAL STOP"));
+    m_pending = m_session.sendCommand(protocol::hipnuc::commands::gyroCalStop());
     setState(State::Stopping, tr("Stopping the gyro calibration."));
     return true;
 }

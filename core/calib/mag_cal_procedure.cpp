@@ -1,4 +1,5 @@
 #include "calib/mag_cal_procedure.h"
+#include "protocol/hipnuc/ascii_command.h"
 
 #include <QStringList>
 
@@ -10,9 +11,10 @@ namespace imudesk::calib {
 using protocol::hipnuc::AsciiReply;
 
 namespace {
-const QString kStart = QStringLiteral("CONFIG MCAL START");
-const QString kStat = QStringLiteral("LOG MCAL STAT");
-const QString kMagConfig = QStringLiteral("LOG MAGCONFIG");
+namespace commands = protocol::hipnuc::commands;
+const QString kStart = QString::fromStdString(commands::magCalStart().text);
+const QString kStat = QString::fromStdString(commands::logMagCalStatus().text);
+const QString kMagConfig = QString::fromStdString(commands::logMagConfig().text);
 
 bool parseInt(const std::map<std::string, std::string> &values, const char *key, int &out)
 {

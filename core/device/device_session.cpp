@@ -80,6 +80,16 @@ quint64 DeviceSession::sendCommand(const QString &text, int timeoutMs)
     return id;
 }
 
+quint64 DeviceSession::sendCommand(const protocol::hipnuc::Command &command, int timeoutMs, QString *error)
+{
+    if (!command.ok()) {
+        if (error)
+            *error = QString::fromStdString(command.error);
+        return 0;
+    }
+    return sendCommand(QString::fromStdString(command.text), timeoutMs);
+}
+
 void DeviceSession::setHostBaud(int baud)
 {
     QMetaObject::invokeMethod(m_worker, [w = m_worker, baud] { w->setHostBaud(baud); }, Qt::QueuedConnection);

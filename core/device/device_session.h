@@ -4,6 +4,7 @@
 // QThread. All calls are queued to the worker; results come back as signals
 // carrying value types. Samples go to a bounded SampleStore.
 #include "device/device_link.h"
+#include "protocol/hipnuc/ascii_command.h"
 #include "device/raw_byte_log.h"
 #include "record/capture_writer.h"
 
@@ -35,6 +36,9 @@ public:
     // Queues an ASCII command; the reply arrives in commandFinished(id, reply).
     // Unknown commands get no reply and finish as a timeout.
     quint64 sendCommand(const QString &text, int timeoutMs = 1000);
+    // The same for a command made by the typed builders (protocol::hipnuc::commands): one
+    // whose arguments were refused is not sent; 0, and `error` gets why.
+    quint64 sendCommand(const protocol::hipnuc::Command &command, int timeoutMs = 1000, QString *error = nullptr);
     // Changes the host side of the link (after SERIALCONFIG).
     void setHostBaud(int baud);
     // When the port fails while open (unplugged), wait for the same device to come back

@@ -677,7 +677,7 @@ void SessionWorker::queryIdentity(int attempt)
 {
     constexpr int kAttempts = 3;
     Pending p;
-    p.text = QStringLiteral("LOG VERSION");
+    p.text = QString::fromStdString(hp::commands::logVersion().text);
     p.timeoutMs = kIdentityTimeoutMs;
     p.done = [this, attempt](const Reply &r) {
         bool answered = false;
@@ -733,7 +733,7 @@ void SessionWorker::detectQuery(bool retry)
     if (!m_detecting)
         return;
     Pending p;
-    p.text = QStringLiteral("LOG VERSION");
+    p.text = QString::fromStdString(hp::commands::logVersion().text);
     p.timeoutMs = kDetectQueryTimeoutMs;
     const size_t index = m_detectIndex;
     p.done = [this, retry, index](const Reply &r) {

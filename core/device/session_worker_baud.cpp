@@ -1,6 +1,7 @@
 // SessionWorker: the safe baud change and the link recovery after a reset. The rest of the
 // worker is in session_worker.cpp.
 #include "session_worker.h"
+#include "protocol/hipnuc/ascii_command.h"
 
 #include "device/device_session.h"
 
@@ -103,7 +104,7 @@ void SessionWorker::probeBauds(std::vector<int> bauds, size_t index, int attempt
     if (m_transport->baud() != baud)
         setHostBaud(baud);
     Pending p;
-    p.text = QStringLiteral("LOG VERSION");
+    p.text = QString::fromStdString(protocol::hipnuc::commands::logVersion().text);
     p.timeoutMs = kProbeTimeoutMs;
     p.done = [this, bauds = std::move(bauds), index, attempt, baud, done = std::move(done)](const Reply &r) mutable {
         if (r.status == Reply::Status::Cancelled || r.status == Reply::Status::NotSent) {

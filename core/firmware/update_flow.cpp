@@ -1,4 +1,5 @@
 #include "update_flow.h"
+#include "protocol/hipnuc/ascii_command.h"
 
 #include "firmware/kboot_client.h"
 #include "protocol/hipnuc/ascii_reply.h"
@@ -286,7 +287,7 @@ UpdateFlow::Result UpdateFlow::run(const FirmwareImage &image)
         if (m_cancel)
             return finish(r, State::Cancelled, tr("cancelled; the module was not changed"));
         setState(State::EnteringBootloader);
-        const std::string cmd = "REBOOT BL\r\n";
+        const std::string cmd = protocol::hipnuc::commands::rebootBootloader().wire();
         if (!m_link.write(std::vector<uint8_t>(cmd.begin(), cmd.end()), &e))
             return finish(r, State::Failed, e);
         m_link.sleepMs(kRebootBlPauseMs);

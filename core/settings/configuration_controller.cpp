@@ -1,4 +1,5 @@
 #include "configuration_controller.h"
+#include "protocol/hipnuc/ascii_command.h"
 
 #include "settings/setting_catalog.h"
 
@@ -136,7 +137,7 @@ void ConfigurationController::onCommandFinished(quint64 id, const Reply &reply)
 
 void ConfigurationController::read(std::function<void(bool, const QString &)> done)
 {
-    send(QStringLiteral("LOG VERSION"), kCommandTimeoutMs, [this, done](const Reply &r) {
+    send(QString::fromStdString(protocol::hipnuc::commands::logVersion().text), kCommandTimeoutMs, [this, done](const Reply &r) {
         if (r.ok()) {
             const auto id = model::DeviceIdentity::fromKeyValues(r.values);
             if (id.usable())
@@ -147,7 +148,7 @@ void ConfigurationController::read(std::function<void(bool, const QString &)> do
                             .arg(r.ok() ? tr("incomplete reply") : QString::fromStdString(r.errorLine)));
             return;
         }
-        send(QStringLiteral("LOG COMCONFIG"), kReadTimeoutMs, [this, done](const Reply &c) {
+        send(QString::fromStdString(protocol::hipnuc::commands::logComConfig().text), kReadTimeoutMs, [this, done](const Reply &c) {
             if (!c.ok()) {
                 done(false, tr("LOG COMCONFIG failed (%1): the settings shown may be out of date")
                                 .arg(c.errorLine.empty() ? QString::fromLatin1(protocol::hipnuc::statusName(c.status))

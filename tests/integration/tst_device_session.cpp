@@ -99,6 +99,30 @@ class TstDeviceSession : public QObject {
     Q_OBJECT
     std::map<QString, std::pair<std::unique_ptr<sim::PtySimulator>, std::unique_ptr<DeviceSession>>> m_open;
 private Q_SLOTS:
+    // A command from the typed builders goes out as the builder wrote it; one whose arguments
+    // the builder refused is never sent.
+    void typedCommandsAndRefusedArguments()
+    {
+        sim::PtySimulator simulator(sim::SimOptions{});
+        QString error;
+        QVERIFY2(simulator.start(&error), qPrintable(error));
+        device::DeviceSession session;
+        session.open(simulator.devicePath(), 115200);
+        QTRY_COMPARE_WITH_TIMEOUT(session.state(), device::SessionState::Connected, 15000);
+        namespace commands = protocol::hipnuc::commands;
+        QString why;
+        QCOMPARE(session.sendCommand(commands::attReset(4), 1000, &why), quint64(0));
+        QVERIFY(!why.isEmpty());
+        QCOMPARE(session.sendCommand(commands::gyroCalStart(90), 1000, &why), quint64(0)); // below 720 deg
+        QSignalSpy finished(&session, &device::DeviceSession::commandFinished);
+        const quint64 id = session.sendCommand(commands::logVersion());
+        QVERIFY(id != 0);
+        QTRY_VERIFY_WITH_TIMEOUT(!finished.isEmpty(), 3000);
+        QCOMPARE(finished.front().front().toULongLong(), id);
+        QVERIFY(finished.front().at(1).value<protocol::hipnuc::AsciiReply>().ok());
+        QCOMPARE(finished.size(), 1); // the refused ones never reached the device
+    }
+
     void cleanupTestCase()
     {
         for (auto &[fw, slot] : m_open) {
