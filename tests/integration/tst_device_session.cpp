@@ -2,6 +2,7 @@
 // baud detection, identity, streaming, every documented command, ERR and timeouts,
 // errors for missing, busy and forbidden ports, the unplug case, reconnection after an
 // unplug, and frames lost on the link.
+#include "../common/connected_session.h"
 #include "../common/session_send.h"
 #include "device/device_session.h"
 #include "io/serial_transport.h"
@@ -104,11 +105,10 @@ private Q_SLOTS:
     void typedCommandsAndRefusedArguments()
     {
         sim::PtySimulator simulator(sim::SimOptions{});
-        QString error;
-        QVERIFY2(simulator.start(&error), qPrintable(error));
         device::DeviceSession session;
-        session.open(simulator.devicePath(), 115200);
-        QTRY_COMPARE_WITH_TIMEOUT(session.state(), device::SessionState::Connected, 15000);
+        testing::connectSession(simulator, session);
+        if (QTest::currentTestFailed())
+            return;
         namespace commands = protocol::hipnuc::commands;
         QString why;
         QCOMPARE(session.sendCommand(commands::attReset(4), 1000, &why), quint64(0));

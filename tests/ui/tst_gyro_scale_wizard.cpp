@@ -3,6 +3,7 @@
 // 0.5 % gyro scale error): Start (CONFIG USRCAL START 720), the live angle, Stop when the
 // turn is done (CONFIG USRCAL STOP -> OK), and the result with our own estimate, kept in the
 // calibration history with its samples (an ERR run too, as a failed run).
+#include "../common/connected_session.h"
 #include "calib/calibration_history.h"
 #include "device/device_session.h"
 #include "gyro_scale_wizard.h"
@@ -67,11 +68,10 @@ private Q_SLOTS:
         sim::SimOptions o;
         o.motion = sim::Motion::Static;
         sim::PtySimulator simulator(o);
-        QString error;
-        QVERIFY2(simulator.start(&error), qPrintable(error));
         device::DeviceSession session;
-        session.open(simulator.devicePath(), 115200);
-        QTRY_COMPARE_WITH_TIMEOUT(session.state(), device::SessionState::Connected, 15000);
+        testing::connectSession(simulator, session);
+        if (QTest::currentTestFailed())
+            return;
         ui::GyroScaleWizard wizard(session);
         wizard.show();
         // Streaming (the simulator's HI91 at 100 Hz): nothing to change.
@@ -100,11 +100,10 @@ private Q_SLOTS:
         o.gyroScaleError = 0.005;
         o.seed = 12;
         sim::PtySimulator simulator(o);
-        QString error;
-        QVERIFY2(simulator.start(&error), qPrintable(error));
         device::DeviceSession session;
-        session.open(simulator.devicePath(), 115200);
-        QTRY_COMPARE_WITH_TIMEOUT(session.state(), device::SessionState::Connected, 15000);
+        testing::connectSession(simulator, session);
+        if (QTest::currentTestFailed())
+            return;
 
         QTemporaryDir history;
         ui::GyroScaleWizard wizard(session);
