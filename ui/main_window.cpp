@@ -25,9 +25,10 @@
 #include <QMessageBox>
 #include <QTabBar>
 #include <QTabWidget>
+#include <QThread>
 #include <QToolBar>
 
-#include <thread>
+#include <memory>
 
 namespace imudesk::ui {
 
@@ -87,6 +88,13 @@ MainWindow::MainWindow(const WindowSettings &settings, QWidget *parent) : QMainW
 
 MainWindow::~MainWindow()
 {
+    // A family probe still listening finishes its port (a few seconds at most) before the
+    // window goes; its result is not wanted any more.
+    for (QThread *probe : std::as_const(m_probes)) {
+        probe->disconnect(this);
+        probe->wait();
+        delete probe;
+    }
     // Workspaces close their ports (and stop their simulators) as they go.
     m_tabs->disconnect(this);
     m_comparisonTimer.stop();
@@ -269,30 +277,32 @@ void MainWindow::connectPort(const QString &port, int baud)
     QPointer<DeviceWorkspace> ws = freeWorkspace();
     m_connectionBar->setSessionState(SessionState::Detecting);
     m_connectAction->setEnabled(false);
-    std::thread([this, ws, port, guard = QPointer<MainWindow>(this)] {
-        const device::FamilyDetector::Result r = device::FamilyDetector::detect(port);
-        if (!guard)
+    // A thread this window owns and waits for (never a detached one): the result comes back
+    // on the GUI thread through `finished`, and the window outlives the probe.
+    auto result = std::make_shared<device::FamilyDetector::Result>();
+    QThread *probe = QThread::create([port, result] { *result = device::FamilyDetector::detect(port); });
+    probe->setObjectName(QStringLiteral("imudesk-family-probe"));
+    m_probes.push_back(probe);
+    connect(probe, &QThread::finished, this, [this, probe, ws, port, result] {
+        m_probes.removeOne(probe);
+        probe->deleteLater();
+        if (!ws)
             return;
-        QMetaObject::invokeMethod(
-            guard.data(),
-            [this, ws, port, r] {
-                if (!ws)
-                    return;
-                if (r.family == device::FamilyDetector::Family::Hec495) {
-                    QString error;
-                    if (!LinkFactory::connectHec495(*ws, port, r.baud, std::max(0, r.address), &error))
-                        presentError(error);
-                } else {
-                    // A HiPNUC module at the rate found, or nothing found: the session's own
-                    // detection then says what it tried and what to check.
-                    ws->connectPort(port, r.family == device::FamilyDetector::Family::Hipnuc ? r.baud : 0);
-                }
-                if (ws == currentWorkspace())
-                    m_connectionBar->setSessionState(ws->state());
-                updateActions();
-            },
-            Qt::QueuedConnection);
-    }).detach();
+        const device::FamilyDetector::Result &r = *result;
+        if (r.family == device::FamilyDetector::Family::Hec495) {
+            QString error;
+            if (!LinkFactory::connectHec495(*ws, port, r.baud, std::max(0, r.address), &error))
+                presentError(error);
+        } else {
+            // A HiPNUC module at the rate found, or nothing found: the session's own
+            // detection then says what it tried and what to check.
+            ws->connectPort(port, r.family == device::FamilyDetector::Family::Hipnuc ? r.baud : 0);
+        }
+        if (ws == currentWorkspace())
+            m_connectionBar->setSessionState(ws->state());
+        updateActions();
+    });
+    probe->start();
 }
 
 bool MainWindow::connectSimulated(const sim::SimOptions &options, int baud, QString *error)

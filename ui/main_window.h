@@ -9,6 +9,7 @@
 #include "device_workspace.h"
 
 #include <QMainWindow>
+#include <QList>
 #include <QPointer>
 #include <QTimer>
 
@@ -20,6 +21,7 @@ class QMenu;
 class QMessageBox;
 class QTabWidget;
 class QTableView;
+class QThread;
 
 namespace imudesk::models {
 class LatestValuesModel;
@@ -111,6 +113,8 @@ protected:
     void changeEvent(QEvent *event) override;
 
 private:
+    QList<QThread *> m_probes; // family probes under way (connectPort with baud Auto)
+
     void createActions();
     void createMenus();
     void retranslateUi();

@@ -11,6 +11,7 @@
 #include "models/latest_values_model.h"
 #include "status_flags_widget.h"
 #include "window_settings.h"
+#include "sim/pty_simulator.h"
 
 #include <QAction>
 #include <QApplication>
@@ -266,6 +267,28 @@ private Q_SLOTS:
         QCOMPARE(w.findChildren<QMessageBox *>().size(), 1);
         QVERIFY(w.isRefreshing());
         box->close();
+    }
+
+    // Baud "Auto": the family probe runs on a thread the window owns. It finds the simulated
+    // module and opens the session at the rate found; a window closed while its probe still
+    // listens waits for it, and nothing runs after the window is gone.
+    void autoBaudProbeIsOwnedByTheWindow()
+    {
+        imudesk::sim::PtySimulator simulator(imudesk::sim::SimOptions{});
+        QString error;
+        QVERIFY2(simulator.start(&error), qPrintable(error));
+        {
+            MainWindow w;
+            w.setErrorPresenter([](const QString &) {});
+            w.connectPort(simulator.devicePath(), 0);
+            QTRY_COMPARE_WITH_TIMEOUT(w.currentWorkspace()->state(), imudesk::device::SessionState::Connected, 20000);
+        }
+        {
+            MainWindow w;
+            w.setErrorPresenter([](const QString &) {});
+            w.connectPort(simulator.devicePath(), 0); // still probing when the window goes
+        }
+        QCoreApplication::processEvents(); // a late result would land here, on a dead window
     }
 
     void connectionBarListsSimulators()
