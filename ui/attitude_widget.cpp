@@ -29,18 +29,6 @@ constexpr std::array<double, 3> kAxisLength{kHalfX + 1.0, kHalfY + 1.3, kHalfZ +
 constexpr double kGroundZ = -1.9;  // below the module's bounding sphere (r = 1.83)
 constexpr int kGridHalf = 3;       // grid lines at -3..3 in x and y
 constexpr double kTriadLength = 1.2;
-
-Vector3d groundPoint(double x, double y)
-{
-    return Vector3d(x, y, kGroundZ);
-}
-
-// The navigation axes of the display frame (ENU or NED), drawn from the grid's south-west corner.
-std::array<Vector3d, 3> navigationTriad(bool enu)
-{
-    return enu ? std::array<Vector3d, 3>{Vector3d::UnitX(), Vector3d::UnitY(), Vector3d::UnitZ()}
-               : std::array<Vector3d, 3>{Vector3d::UnitY(), Vector3d::UnitX(), -Vector3d::UnitZ()};
-}
 constexpr double kTargetZ = -1.1;  // the camera looks at (0, 0, kTargetZ): module and ground both fit
 constexpr double kFitRadius = 4.3; // scene radius that fits into the widget
 constexpr double kDragDegPerPixel = 0.5;
@@ -54,6 +42,18 @@ constexpr QRgb kBottomColour = qRgb(95, 100, 110);
 constexpr QRgb kMarkColour = qRgb(240, 170, 30);
 constexpr QRgb kConnectorColour = qRgb(45, 45, 50);
 constexpr QRgb kEdgeColour = qRgb(30, 35, 45);
+
+Vector3d groundPoint(double x, double y)
+{
+    return Vector3d(x, y, kGroundZ);
+}
+
+// The navigation axes of the display frame (ENU or NED), drawn from the grid's south-west corner.
+std::array<Vector3d, 3> navigationTriad(bool enu)
+{
+    return enu ? std::array<Vector3d, 3>{Vector3d::UnitX(), Vector3d::UnitY(), Vector3d::UnitZ()}
+               : std::array<Vector3d, 3>{Vector3d::UnitY(), Vector3d::UnitX(), -Vector3d::UnitZ()};
+}
 
 // Box: vertex i has x sign bit 0, y sign bit 1, z sign bit 2 (set = +).
 struct Face {
@@ -404,25 +404,24 @@ void AttitudeWidget::paintGround(QPainter &p, const View &v, bool labels) const
 void AttitudeWidget::paintGroundLines(QPainter &p, const View &v) const
 {
     const QColor ink = palette().color(QPalette::Text);
-    const auto ground = groundPoint;
     const double g = kGridHalf;
-    const Vector3d triadOrigin = ground(-g, -g);
+    const Vector3d triadOrigin = groundPoint(-g, -g);
     const std::array<Vector3d, 3> triad = navigationTriad(m_frame == DisplayFrame::Enu);
 
     // Grid: opaque and cosmetic: drawn pixel by pixel, not blended as a path.
     p.setPen(QPen(mixColours(palette().color(QPalette::Base), ink, 0.18), 0));
     for (int i = -kGridHalf; i <= kGridHalf; ++i) {
-        p.drawLine(v.project(ground(i, -g)), v.project(ground(i, g)));
-        p.drawLine(v.project(ground(-g, i)), v.project(ground(g, i)));
+        p.drawLine(v.project(groundPoint(i, -g)), v.project(groundPoint(i, g)));
+        p.drawLine(v.project(groundPoint(-g, i)), v.project(groundPoint(g, i)));
     }
 
     // North arrow on the ground, from the centre to the grid's north edge.
     QColor north = ink;
     north.setAlphaF(0.7);
     p.setPen(QPen(north, 2.0, Qt::SolidLine, Qt::FlatCap));
-    p.drawLine(v.project(ground(0, 0)), v.project(ground(0, g - 0.8)));
-    const std::array<QPointF, 3> head{v.project(ground(-0.35, g - 0.8)), v.project(ground(0.35, g - 0.8)),
-                                      v.project(ground(0, g))};
+    p.drawLine(v.project(groundPoint(0, 0)), v.project(groundPoint(0, g - 0.8)));
+    const std::array<QPointF, 3> head{v.project(groundPoint(-0.35, g - 0.8)), v.project(groundPoint(0.35, g - 0.8)),
+                                      v.project(groundPoint(0, g))};
     p.setPen(Qt::NoPen);
     p.setBrush(north);
     p.drawConvexPolygon(head.data(), 3);
@@ -435,12 +434,11 @@ void AttitudeWidget::paintGroundLines(QPainter &p, const View &v) const
 
 void AttitudeWidget::paintShadow(QPainter &p, const View &v) const
 {
-    const auto ground = groundPoint;
     // Shadow of the module straight down: convex hull of the 8 corners dropped on the ground.
     std::array<QPointF, 8> pts;
     for (int i = 0; i < 8; ++i) {
         const Vector3d c = v.bodyPoint(i & 1 ? kHalfX : -kHalfX, i & 2 ? kHalfY : -kHalfY, i & 4 ? kHalfZ : -kHalfZ);
-        pts[i] = v.project(ground(c.x(), c.y()));
+        pts[i] = v.project(groundPoint(c.x(), c.y()));
     }
     std::sort(pts.begin(), pts.end(),
               [](const QPointF &a, const QPointF &b) { return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y()); });

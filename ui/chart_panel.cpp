@@ -1,7 +1,5 @@
 #include "chart_panel.h"
 
-#include <QScreen>
-
 #include "chart_view.h"
 
 #include <QAction>
@@ -12,6 +10,7 @@
 #include <QMenu>
 #include <QPainter>
 #include <QPixmap>
+#include <QScreen>
 #include <QStyle>
 #include <QToolBar>
 #include <QToolButton>

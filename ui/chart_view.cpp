@@ -433,9 +433,7 @@ void ChartView::setChannelVisible(Channel channel, bool visible)
         m_visible |= plot::channelBit(channel);
     else
         m_visible &= ~plot::channelBit(channel);
-    m_canvas->setLineVisible(m_lineOf[size_t(channel)], visible);
-    if (!visible)
-        m_points[size_t(channel)].clear();
+    m_canvas->setLineVisible(m_lineOf[size_t(channel)], visible); // a hidden line drops its points
     m_haveYRange = false;
     markDirty();
     if (m_crosshairOn)
@@ -556,7 +554,7 @@ QString ChartView::shownUnit() const
 
 const QList<QPointF> &ChartView::linePoints(Channel channel) const
 {
-    return m_points[size_t(channel)];
+    return m_canvas->points(m_lineOf[size_t(channel)]);
 }
 
 bool ChartView::refresh()
@@ -583,7 +581,8 @@ bool ChartView::refresh()
     for (Channel c : m_channels) {
         if (!isChannelVisible(c))
             continue;
-        QList<QPointF> &points = m_points[size_t(c)];
+        // Decimated straight into the canvas's own list: no copy, no allocation once it has grown.
+        QList<QPointF> &points = m_canvas->pointsToFill(m_lineOf[size_t(c)]);
         auto r = m_decimator.decimate(*m_history, c, m_timeAxis, w.t0, w.t1, width, points, w.offset);
         if (const double factor = unitFactor(); factor != 1.0) {
             for (QPointF &p : points)
@@ -591,7 +590,6 @@ bool ChartView::refresh()
             r.yMin *= factor;
             r.yMax *= factor;
         }
-        m_canvas->setPoints(m_lineOf[size_t(c)], points);
         if (r.rows > 0) {
             lo = any ? std::min(lo, r.yMin) : r.yMin;
             hi = any ? std::max(hi, r.yMax) : r.yMax;

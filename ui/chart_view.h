@@ -200,7 +200,6 @@ private:
     bool m_cursorEnabled = false;
 
     PlotCanvas *m_canvas = nullptr;
-    std::array<QList<QPointF>, plot::kChannelCount> m_points;
     std::array<int, plot::kChannelCount> m_lineOf{};
     QMenu *m_menu = nullptr;
     QAction *m_autoScaleAction = nullptr;

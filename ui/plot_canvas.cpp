@@ -69,6 +69,12 @@ void PlotCanvas::setPoints(int line, const QList<QPointF> &points)
     update();
 }
 
+QList<QPointF> &PlotCanvas::pointsToFill(int line)
+{
+    update();
+    return m_lines[size_t(line)].points;
+}
+
 void PlotCanvas::setLineVisible(int line, bool visible)
 {
     Line &l = m_lines[size_t(line)];

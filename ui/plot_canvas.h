@@ -45,6 +45,9 @@ public:
     int lineCount() const { return int(m_lines.size()); }
     void setLineName(int line, const QString &name);
     void setPoints(int line, const QList<QPointF> &points);
+    // The line's own list, for a caller that fills it in place (ChartView decimates into it);
+    // the canvas repaints on the next paint cycle.
+    QList<QPointF> &pointsToFill(int line);
     const QList<QPointF> &points(int line) const { return m_lines[size_t(line)].points; }
     // A hidden line keeps its legend entry, dimmed, so that a click brings it back.
     void setLineVisible(int line, bool visible);
