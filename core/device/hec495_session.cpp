@@ -1,88 +1,78 @@
 #include "hec495_session.h"
 
-#include "device/hec495_worker.h"
+#include "device/hec495_family.h"
 #include "protocol/witlink/bcd.h"
 
-#include <QTimer>
 
 namespace imudesk::device {
 
 namespace wl = protocol::witlink;
 
-Hec495Session::Hec495Session(QObject *parent) : DeviceLink(parent)
+namespace {
+
+Hec495Result toResult(const RequestResult &r)
+{
+    Hec495Result typed = r.reply.value<Hec495Result>();
+    switch (r.status) {
+    case RequestStatus::Ok: typed.status = Hec495Result::Status::Ok; break;
+    case RequestStatus::Refused: typed.status = Hec495Result::Status::Failed; break;
+    case RequestStatus::Invalid: typed.status = Hec495Result::Status::Invalid; break;
+    case RequestStatus::Timeout: typed.status = Hec495Result::Status::Timeout; break;
+    case RequestStatus::NotSent: typed.status = Hec495Result::Status::NotSent; break;
+    case RequestStatus::Cancelled: typed.status = Hec495Result::Status::Cancelled; break;
+    }
+    typed.attempts = r.attempts;
+    typed.message = r.message;
+    return typed;
+}
+
+} // namespace
+
+Hec495Session::Hec495Session(QObject *parent, std::unique_ptr<io::Transport> transport)
+    : Session(std::make_unique<Hec495Family>(), std::move(transport), QStringLiteral("imudesk-hec495"),
+              Hec495Family::kLineIdleMs, parent)
 {
     qRegisterMetaType<Hec495Result>();
-    m_thread.setObjectName(QStringLiteral("imudesk-hec495"));
-    m_worker = new Hec495Worker(store(), m_rawLog);
-    m_worker->moveToThread(&m_thread);
-    connect(&m_thread, &QThread::finished, m_worker, &QObject::deleteLater);
-
-    connect(m_worker, &Hec495Worker::stateChanged, this,
-            [this](SessionState s, const QString &detail) { setState(s, detail); });
-    connect(m_worker, &Hec495Worker::identityChanged, this, &Hec495Session::identityChanged);
-    connect(m_worker, &Hec495Worker::statsUpdated, this, &Hec495Session::statsUpdated);
-    connect(m_worker, &Hec495Worker::errorOccurred, this, &Hec495Session::errorOccurred);
-    connect(m_worker, &Hec495Worker::commandFinished, this, &Hec495Session::commandFinished);
-    connect(m_worker, &Hec495Worker::calibrationPoint, this, &Hec495Session::calibrationPoint);
-    connect(m_worker, &Hec495Worker::baudChanged, this, [this](int b) {
+    auto *f = static_cast<Hec495Family *>(family());
+    connect(this, &Session::requestFinished, this,
+            [this](const RequestResult &r) { Q_EMIT commandFinished(r.id, toResult(r)); });
+    connect(f, &Hec495Family::calibrationPoint, this, &Hec495Session::calibrationPoint);
+    connect(f, &Hec495Family::baudChanged, this, [this](int b) {
         m_baud = b;
         Q_EMIT baudChanged(b);
     });
-    connect(m_worker, &Hec495Worker::addressChanged, this, [this](int a) {
+    connect(f, &Hec495Family::addressChanged, this, [this](int a) {
         m_address = a;
         Q_EMIT addressChanged(a);
     });
-    connect(m_worker, &Hec495Worker::streamingChanged, this, [this](bool on) {
+    connect(f, &Hec495Family::streamingChanged, this, [this](bool on) {
         m_streaming = on;
         Q_EMIT streamingChanged(on);
     });
-    m_thread.start();
-}
-
-Hec495Session::~Hec495Session()
-{
-    QMetaObject::invokeMethod(m_worker, &Hec495Worker::close, Qt::BlockingQueuedConnection);
-    m_thread.quit();
-    m_thread.wait();
 }
 
 void Hec495Session::open(const QString &portName, int baud, int address)
 {
     m_address = address;
-    QMetaObject::invokeMethod(
-        m_worker, [w = m_worker, portName, baud, address] { w->open(portName, baud, address); },
-        Qt::QueuedConnection);
-}
-
-void Hec495Session::close()
-{
-    QMetaObject::invokeMethod(m_worker, &Hec495Worker::close, Qt::QueuedConnection);
+    inFamily<Hec495Family>([address](Hec495Family &f) { f.setAddress(address); });
+    openLink(portName, baud);
 }
 
 void Hec495Session::setPollingRate(int hz)
 {
-    QMetaObject::invokeMethod(m_worker, [w = m_worker, hz] { w->setPollingRate(hz); }, Qt::QueuedConnection);
+    inFamily<Hec495Family>([hz](Hec495Family &f) { f.setPollingRate(hz); });
 }
 
 quint64 Hec495Session::request(wl::Command command, const QByteArray &data, int timeoutMs)
 {
-    const quint64 id = m_nextId++;
-    QMetaObject::invokeMethod(
-        m_worker, [w = m_worker, id, command, data, timeoutMs] { w->request(id, uint8_t(command), data, timeoutMs); },
-        Qt::QueuedConnection);
-    return id;
+    return submit(Hec495Family::makeRequest(uint8_t(command), data, timeoutMs));
 }
 
 quint64 Hec495Session::invalid(wl::Command command, const QString &why)
 {
-    const quint64 id = m_nextId++;
     Hec495Result r;
     r.request = uint8_t(command);
-    r.status = Hec495Result::Status::NotSent;
-    r.message = why;
-    // Delivered from the event loop, like every other result, after the caller has the id.
-    QTimer::singleShot(0, this, [this, id, r] { Q_EMIT commandFinished(id, r); });
-    return id;
+    return refuse(QVariant::fromValue(r), why);
 }
 
 quint64 Hec495Session::setDeclination(double deg)

@@ -1,8 +1,8 @@
 #pragma once
-// One connected Witlink HEC495 compass on a serial port (RS-232 or RS-485), in the common
-// device vocabulary (DeviceLink): state, identity (model HEC495 and its address), samples,
-// counters. The worker (Hec495Worker) runs in a private QThread; every call here is queued
-// to it, and results come back as signals carrying value types.
+// One connected Witlink HEC495 compass on a serial port (RS-232 or RS-485): the typed
+// front-end of a Session (session.h) whose family plug-in is Hec495Family (hec495_family.h,
+// which has the link rules). State, identity (model HEC495 and its address), samples,
+// counters, recording and the request queue are the session engine's.
 //
 // Samples: the 0x14 record (Euler, acc, gyr, device time) and the 0x84 angles frame
 // (Euler), with yaw = the compass heading. In auto-output mode the module's frames are the
@@ -12,30 +12,24 @@
 // Requests return an id; commandFinished(id, result) follows with the typed reply, after
 // up to three attempts (RS-485 half duplex). The session follows the module through baud,
 // address and factory-reset changes.
-#include "device/device_link.h"
 #include "device/hec495_result.h"
-#include "device/raw_byte_log.h"
+#include "device/session.h"
 #include "protocol/witlink/commands.h"
 
 #include <QByteArray>
-#include <QThread>
 
 #include <atomic>
 
 namespace imudesk::device {
 
-class Hec495Worker;
-
-class Hec495Session : public DeviceLink {
+class Hec495Session : public Session {
     Q_OBJECT
 public:
-    explicit Hec495Session(QObject *parent = nullptr);
-    ~Hec495Session() override;
+    // transport: a serial port when null (a simulated link in tests).
+    explicit Hec495Session(QObject *parent = nullptr, std::unique_ptr<io::Transport> transport = nullptr);
 
     // baud 0: try 9600, 115200, 19200, 4800, 2400. address: the module's (default 0).
     void open(const QString &portName, int baud = 0, int address = 0);
-    void close() override;
-    QString linkKind() const override { return QStringLiteral("HEC495 serial"); }
 
     // "read all" polling rate in question/answer mode (0 = off; at most 100).
     void setPollingRate(int hz);
@@ -63,7 +57,6 @@ public:
     int baud() const { return m_baud.load(); }
     int address() const { return m_address.load(); }
     bool streaming() const { return m_streaming.load(); }
-    RawByteLog &rawLog() { return m_rawLog; }
 
 Q_SIGNALS:
     void commandFinished(quint64 id, const imudesk::device::Hec495Result &result);
@@ -77,10 +70,6 @@ Q_SIGNALS:
 private:
     quint64 invalid(protocol::witlink::Command command, const QString &why);
 
-    QThread m_thread;
-    RawByteLog m_rawLog;
-    Hec495Worker *m_worker = nullptr;
-    std::atomic<quint64> m_nextId{1};
     std::atomic<int> m_baud{0};
     std::atomic<int> m_address{0};
     std::atomic<bool> m_streaming{false};

@@ -4,6 +4,7 @@
 #include <QFile>
 #include <QFileInfo>
 #include <QSerialPort>
+#include <QSerialPortInfo>
 
 #include <cerrno>
 #ifdef Q_OS_UNIX
@@ -12,7 +13,7 @@
 
 namespace imudesk::io {
 
-SerialTransport::SerialTransport(QObject *parent) : QObject(parent) {}
+SerialTransport::SerialTransport(QObject *parent) : Transport(parent) {}
 
 SerialTransport::~SerialTransport()
 {
@@ -79,6 +80,65 @@ bool SerialTransport::isAccessible(const QString &portName)
 }
 
 bool SerialTransport::open(const QString &portName, int baud, QString *error, OpenErrorKind *kind)
+{
+    if (!openPort(portName, baud, error, kind))
+        return false;
+    m_requestedPort = portName;
+    rememberDevice(portName);
+    return true;
+}
+
+bool SerialTransport::reopen(int baud, QString *error)
+{
+    const QString path = locateAgain();
+    if (path.isEmpty()) {
+        if (error)
+            error->clear();
+        return false;
+    }
+    return openPort(path, baud, error, nullptr);
+}
+
+void SerialTransport::rememberDevice(const QString &portName)
+{
+    // The USB identity of the port, when it has one (QSerialPortInfo lists USB and on-board
+    // ports, not pseudo-terminals). A by-id symlink is matched by its target.
+    m_serialNumber.clear();
+    m_hasUsbIds = false;
+    const QString location = systemLocation(portName);
+    const QString canonical = QFileInfo(location).canonicalFilePath();
+    const auto ports = QSerialPortInfo::availablePorts();
+    for (const QSerialPortInfo &info : ports) {
+        if (info.systemLocation() != location && info.systemLocation() != canonical && info.portName() != portName)
+            continue;
+        m_serialNumber = info.serialNumber();
+        m_hasUsbIds = info.hasVendorIdentifier() && info.hasProductIdentifier();
+        m_vendorId = info.vendorIdentifier();
+        m_productId = info.productIdentifier();
+        break;
+    }
+}
+
+QString SerialTransport::locateAgain() const
+{
+    if (!m_serialNumber.isEmpty()) {
+        const auto ports = QSerialPortInfo::availablePorts();
+        for (const QSerialPortInfo &info : ports) {
+            if (info.serialNumber() != m_serialNumber)
+                continue;
+            if (m_hasUsbIds && (info.vendorIdentifier() != m_vendorId || info.productIdentifier() != m_productId))
+                continue;
+            // The path the user chose, if it leads there (a by-id symlink), else the device.
+            const QString wanted = systemLocation(m_requestedPort);
+            return QFileInfo(wanted).canonicalFilePath() == info.systemLocation() ? m_requestedPort
+                                                                                   : info.systemLocation();
+        }
+        return {};
+    }
+    return QFileInfo::exists(systemLocation(m_requestedPort)) ? m_requestedPort : QString();
+}
+
+bool SerialTransport::openPort(const QString &portName, int baud, QString *error, OpenErrorKind *kind)
 {
     close();
     auto fail = [&](OpenErrorKind k, const QString &osText) {

@@ -1,6 +1,8 @@
 #pragma once
 // Moves bytes to and from a serial port (QSerialPort); nothing else. Lives in the
 // session's worker thread.
+#include "io/transport.h"
+
 #include <QObject>
 #include <QString>
 
@@ -10,22 +12,30 @@ namespace imudesk::io {
 
 enum class OpenErrorKind { None, NotFound, Busy, Permission, Other };
 
-class SerialTransport : public QObject {
+class SerialTransport : public Transport {
     Q_OBJECT
 public:
     explicit SerialTransport(QObject *parent = nullptr);
     ~SerialTransport() override;
 
     // Opens 8N1, no flow control. On failure fills kind and a message that says what to do.
-    bool open(const QString &portName, int baud, QString *error, OpenErrorKind *kind = nullptr);
-    void close();
-    bool isOpen() const;
-    bool setBaud(int baud);
-    int baud() const { return m_baud; }
+    // Remembers the port's USB identity for locateAgain().
+    bool open(const QString &portName, int baud, QString *error, OpenErrorKind *kind);
+    bool open(const QString &portName, int baud, QString *error) override { return open(portName, baud, error, nullptr); }
+    void close() override;
+    bool isOpen() const override;
+    bool setBaud(int baud) override;
+    int baud() const override { return m_baud; }
+    QString address() const override { return m_portName; }
     QString portName() const { return m_portName; }
-    qint64 write(const QByteArray &bytes);
+    qint64 write(const QByteArray &bytes) override;
     // Discards bytes waiting in the OS buffers (input and output).
-    void clear();
+    void clear() override;
+    // The same adapter by its USB serial number (ttyUSB0 may come back as ttyUSB1); without
+    // one (a pseudo-terminal, an on-board UART) the path the port was first opened at, once
+    // it exists again.
+    QString locateAgain() const override;
+    bool reopen(int baud, QString *error) override;
 
     static QString describeOpenError(const QString &portName, OpenErrorKind kind, const QString &osText);
     // Maps QSerialPort's open error to a kind. Qt 6.4 on Linux reports a port held by
@@ -38,12 +48,10 @@ public:
     // The device path for a port name ("ttyUSB0" -> "/dev/ttyUSB0"; paths unchanged).
     static QString systemLocation(const QString &portName);
 
-Q_SIGNALS:
-    void bytesReceived(const QByteArray &bytes);
-    // The port failed while open (unplugged cable, I/O error).
-    void failed(const QString &message);
-
 private:
+    bool openPort(const QString &portName, int baud, QString *error, OpenErrorKind *kind);
+    void rememberDevice(const QString &portName);
+
     QByteArray takeAvailable();
     void onReadyRead();
     void onError();
@@ -51,6 +59,11 @@ private:
     QSerialPort *m_port = nullptr;
     QString m_portName;
     int m_baud = 0;
+    // The device first opened (reconnection looks for it again).
+    QString m_requestedPort;
+    QString m_serialNumber;
+    quint16 m_vendorId = 0, m_productId = 0;
+    bool m_hasUsbIds = false;
 };
 
 } // namespace imudesk::io

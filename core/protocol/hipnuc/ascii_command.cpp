@@ -2,8 +2,11 @@
 
 #include "payloads.h"
 
+#include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <charconv>
+#include <vector>
 
 namespace imudesk::protocol::hipnuc {
 
@@ -34,6 +37,85 @@ bool parseMessage(std::string_view name, Message &out)
 
 namespace commands {
 
+namespace {
+
+OutputEffect changesOutput()
+{
+    OutputEffect e;
+    e.changesOutput = true;
+    return e;
+}
+
+OutputEffect setsOutput(Message m, double periodS)
+{
+    OutputEffect e = changesOutput();
+    e.message = messageName(m);
+    e.periodS = periodS;
+    return e;
+}
+
+std::vector<std::string> upperWords(std::string_view text)
+{
+    std::vector<std::string> words;
+    std::string w;
+    for (char c : text) {
+        if (c == ' ' || c == '\t' || c == '\r' || c == '\n') {
+            if (!w.empty())
+                words.push_back(std::move(w));
+            w.clear();
+        } else {
+            w.push_back(char(std::toupper(static_cast<unsigned char>(c))));
+        }
+    }
+    if (!w.empty())
+        words.push_back(std::move(w));
+    return words;
+}
+
+std::string_view trimmed(std::string_view t)
+{
+    const auto first = t.find_first_not_of(" \t\r\n");
+    if (first == std::string_view::npos)
+        return {};
+    const auto last = t.find_last_not_of(" \t\r\n");
+    return t.substr(first, last - first + 1);
+}
+
+} // namespace
+
+Command typed(std::string_view text)
+{
+    const std::string_view t = trimmed(text);
+    const std::vector<std::string> w = upperWords(t);
+    OutputEffect e;
+    if (!w.empty()) {
+        const std::string &verb = w.front();
+        if (verb == "REBOOT" || verb == "FRESET" || verb == "SERIALCONFIG") {
+            e = changesOutput();
+        } else if (verb == "LOG" && w.size() >= 2
+                   && !(w[1] == "VERSION" || w[1] == "COMCONFIG" || w[1] == "MAGCONFIG" || w[1] == "MCAL")) {
+            e = changesOutput();
+            size_t i = 1;
+            if (w[i].rfind("COM", 0) == 0) {
+                e.thisPort = false;
+                ++i;
+            }
+            Message m;
+            if (i < w.size() && parseMessage(w[i], m)) { // else LOG ENABLE / DISABLE
+                e.message = messageName(m);
+                if (i + 2 < w.size() && w[i + 1] == "ONTIME") {
+                    const std::string &word = w[i + 2];
+                    double p = -1; // from_chars: the C locale's decimal point, whatever the user's
+                    const auto [end, err] = std::from_chars(word.data(), word.data() + word.size(), p);
+                    if (err == std::errc() && end == word.data() + word.size() && p >= 0)
+                        e.periodS = p;
+                }
+            }
+        }
+    }
+    return Command::make(std::string(t), std::move(e));
+}
+
 bool isSupportedBaud(int baud, model::ManualEdition edition)
 {
     if (edition == model::ManualEdition::V166) {
@@ -48,16 +130,16 @@ bool isSupportedBaud(int baud, model::ManualEdition edition)
     return false;
 }
 
-Command reboot() { return Command::make("REBOOT"); }
-Command rebootBootloader() { return Command::make("REBOOT BL"); }
+Command reboot() { return Command::make("REBOOT", changesOutput()); }
+Command rebootBootloader() { return Command::make("REBOOT BL", changesOutput()); }
 Command saveConfig() { return Command::make("SAVECONFIG"); }
-Command factoryReset() { return Command::make("FRESET"); }
+Command factoryReset() { return Command::make("FRESET", changesOutput()); }
 
 Command serialConfig(int baud, model::ManualEdition edition)
 {
     if (!isSupportedBaud(baud, edition))
         return Command::fail("unsupported baud rate " + std::to_string(baud));
-    return Command::make("SERIALCONFIG " + std::to_string(baud));
+    return Command::make("SERIALCONFIG " + std::to_string(baud), changesOutput());
 }
 
 Command serialConfig(int com, int baud)
@@ -66,7 +148,7 @@ Command serialConfig(int com, int baud)
         return Command::fail("serial port COM" + std::to_string(com) + " does not exist (1-4)");
     if (!isSupportedBaud(baud))
         return Command::fail("unsupported baud rate " + std::to_string(baud));
-    return Command::make("SERIALCONFIG COM" + std::to_string(com) + " " + std::to_string(baud));
+    return Command::make("SERIALCONFIG COM" + std::to_string(com) + " " + std::to_string(baud), changesOutput());
 }
 
 Command attMode(int mode)
@@ -165,8 +247,8 @@ Command setYaw(int mode, double deg)
 
 Command enableBackgroundMagCal(bool on) { return Command::make(std::string("CONFIG IMU_EN_MCAL ") + (on ? "1" : "0")); }
 
-Command logEnable() { return Command::make("LOG ENABLE"); }
-Command logDisable() { return Command::make("LOG DISABLE"); }
+Command logEnable() { return Command::make("LOG ENABLE", changesOutput()); }
+Command logDisable() { return Command::make("LOG DISABLE", changesOutput()); }
 Command logVersion() { return Command::make("LOG VERSION"); }
 Command logComConfig() { return Command::make("LOG COMCONFIG"); }
 Command logMagConfig() { return Command::make("LOG MAGCONFIG"); }
@@ -190,12 +272,13 @@ Command logOnTime(Message m, double periodS)
         return Command::fail("output period must be 0 (off) or 0.001..1 s");
     if (periodS != 0 && std::fabs(periodS * 1000.0 - std::round(periodS * 1000.0)) > 1e-6)
         return Command::fail("output period must be a whole number of milliseconds");
-    return Command::make(std::string("LOG ") + messageName(m) + " ONTIME " + formatPeriod(periodS));
+    return Command::make(std::string("LOG ") + messageName(m) + " ONTIME " + formatPeriod(periodS),
+                         setsOutput(m, periodS));
 }
 
 Command logOnMark(Message m, bool once)
 {
-    return Command::make(std::string("LOG ") + messageName(m) + " ONMARK " + (once ? "ONCE" : "1"));
+    return Command::make(std::string("LOG ") + messageName(m) + " ONMARK " + (once ? "ONCE" : "1"), setsOutput(m, -1));
 }
 
 Command logHi83Map(uint32_t bitmap)
@@ -209,7 +292,7 @@ Command logHi83Map(uint32_t bitmap)
     }
     char buf[40];
     std::snprintf(buf, sizeof buf, "LOG HI83 MAP 0x%08X", unsigned(bitmap));
-    return Command::make(buf);
+    return Command::make(buf, setsOutput(Message::HI83, -1));
 }
 
 } // namespace commands

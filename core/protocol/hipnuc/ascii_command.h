@@ -12,13 +12,24 @@
 
 namespace imudesk::protocol::hipnuc {
 
+// What a command does to the device's output stream: the session's lost-frame counter must
+// not count a gap that a command made (device/frame_gap_counter.h).
+struct OutputEffect {
+    bool changesOutput = false; // the stream may stop, restart or change its timing here
+    bool thisPort = true;       // no COMn word: the port the command came in on
+    std::string message;        // "HI91", ...: the message whose own output it sets; empty otherwise
+    double periodS = -1;        // LOG <MSG> ONTIME period; -1 when not ONTIME
+};
+
 struct Command {
     std::string text;   // e.g. "LOG HI91 ONTIME 0.01"
     std::string error;  // non-empty when the arguments were refused
+    OutputEffect effect;
     bool ok() const { return error.empty(); }
     std::string wire() const { return text + "\r\n"; }
-    static Command make(std::string t) { return Command{std::move(t), {}}; }
-    static Command fail(std::string e) { return Command{{}, std::move(e)}; }
+    static Command make(std::string t) { return Command{std::move(t), {}, {}}; }
+    static Command make(std::string t, OutputEffect e) { return Command{std::move(t), {}, std::move(e)}; }
+    static Command fail(std::string e) { return Command{{}, std::move(e), {}}; }
 };
 
 // Output messages that LOG <MSG> accepts.
@@ -27,6 +38,12 @@ const char *messageName(Message m);
 bool parseMessage(std::string_view name, Message &out);
 
 namespace commands {
+
+// Text typed by a user (the console): sent as typed, trimmed. Its output effect is read from
+// the words, as the device reads them (LOG [COMn] <MSG> ONTIME <s>, LOG ENABLE/DISABLE,
+// REBOOT, FRESET, SERIALCONFIG; the LOG queries VERSION, COMCONFIG, MAGCONFIG and MCAL change
+// nothing).
+Command typed(std::string_view text);
 
 // Baud rates of SERIALCONFIG: the v1.7.1 list, or the v1.6.6 one (9600, 115200, 256000, 460800, 921600).
 bool isSupportedBaud(int baud, model::ManualEdition edition = model::ManualEdition::V171);

@@ -1,0 +1,394 @@
+#include "hec495_family.h"
+
+#include "device/session_engine.h"
+#include "protocol/witlink/commands.h"
+
+#include <QLoggingCategory>
+
+#include <algorithm>
+
+namespace imudesk::device {
+
+namespace {
+
+Q_LOGGING_CATEGORY(lcHec495, "imudesk.core.device.hec495")
+
+namespace wl = protocol::witlink;
+
+constexpr int kStreamingLostMs = 1500; // no auto-output frame for this long: question/answer again
+
+const char *frameType(uint8_t command)
+{
+    return command == 0x84 ? "HEC495 angles" : "HEC495 record";
+}
+
+const Hec495Family::Command &commandOf(const Request &r)
+{
+    return *std::any_cast<Hec495Family::Command>(&r.command);
+}
+
+QString commandText(const Request &r)
+{
+    return QString::fromLatin1(wl::commands::commandName(commandOf(r).command));
+}
+
+} // namespace
+
+const char *statusName(Hec495Result::Status s)
+{
+    switch (s) {
+    case Hec495Result::Status::Ok: return "ok";
+    case Hec495Result::Status::Failed: return "failed";
+    case Hec495Result::Status::Invalid: return "invalid";
+    case Hec495Result::Status::Timeout: return "timeout";
+    case Hec495Result::Status::NotSent: return "not sent";
+    case Hec495Result::Status::Cancelled: return "cancelled";
+    }
+    return "?";
+}
+
+const std::vector<int> &Hec495Family::detectionBauds()
+{
+    static const std::vector<int> bauds = {9600, 115200, 19200, 4800, 2400};
+    return bauds;
+}
+
+Hec495Family::Hec495Family()
+{
+    connect(&m_pollTimer, &QTimer::timeout, this, &Hec495Family::poll);
+    m_identifyTimer.setSingleShot(true);
+}
+
+Request Hec495Family::makeRequest(uint8_t command, const QByteArray &data, int timeoutMs)
+{
+    Request r;
+    r.command = Command{command, std::vector<uint8_t>(data.begin(), data.end())};
+    r.timeoutMs = timeoutMs > 0 ? timeoutMs : kReplyTimeoutMs;
+    r.maxAttempts = kAttempts;
+    return r;
+}
+
+QString Hec495Family::prepare(Request &r)
+{
+    const Command &c = commandOf(r);
+    const uint8_t address = c.command == uint8_t(wl::Command::QueryAddress) ? 0 : uint8_t(m_address);
+    const std::vector<uint8_t> wire = wl::encodeFrame(address, c.command, c.data);
+    if (wire.empty())
+        return tr("the request's data is longer than a Witlink frame can carry");
+    r.wire = QByteArray(reinterpret_cast<const char *>(wire.data()), qsizetype(wire.size()));
+    return {};
+}
+
+// ---------------------------------------------------------------------------------------
+// Opening
+
+int Hec495Family::firstBaud(int requestedBaud) const
+{
+    return requestedBaud > 0 ? requestedBaud : detectionBauds().front();
+}
+
+void Hec495Family::opened(int requestedBaud)
+{
+    m_identifyBauds = requestedBaud > 0 ? std::vector<int>{requestedBaud} : detectionBauds();
+    m_streaming = false;
+    m_identityKnown = false;
+    engine().setState(SessionState::Detecting, engine().transport().address());
+    identifyAt(0);
+}
+
+void Hec495Family::identifyAt(size_t index)
+{
+    if (index >= m_identifyBauds.size()) {
+        m_identifying = false;
+        engine().fail(tr("no HEC495 answered on %1 at %2 baud: check the wiring (RS-232 TXD/RXD or RS-485 A/B), the "
+                         "power, the baud rate and the module address (%3)")
+                          .arg(engine().transport().address())
+                          .arg(m_identifyBauds.size() == 1 ? QString::number(m_identifyBauds.front())
+                                                            : tr("any supported"))
+                          .arg(m_address));
+        return;
+    }
+    m_identifying = true;
+    const int baud = m_identifyBauds[index];
+    engine().transport().setBaud(baud);
+    engine().transport().clear();
+    m_decoder.reset();
+    qCDebug(lcHec495) << "listening at" << baud;
+    m_identifyTimer.disconnect();
+    connect(&m_identifyTimer, &QTimer::timeout, this, [this, index, baud] {
+        if (!m_identifying)
+            return;
+        Request r = makeRequest(uint8_t(wl::Command::ReadAll), {}, 0);
+        // A single rate given: use the 3 s window after power-on; scanning rates: two tries each.
+        r.maxAttempts = m_identifyBauds.size() == 1 ? kIdentifyWindowMs / kReplyTimeoutMs : 2;
+        r.done = [this, index, baud](const RequestResult &res) {
+            if (!m_identifying)
+                return;
+            if (res.ok()) {
+                const Hec495Result answer = res.reply.value<Hec495Result>();
+                identified(baud, &answer.reply);
+            }
+            else if (res.status != RequestStatus::Cancelled)
+                identifyAt(index + 1);
+        };
+        engine().submit(std::move(r));
+    });
+    m_identifyTimer.start(kListenMs);
+}
+
+void Hec495Family::identified(int baud, const wl::Reply *reply)
+{
+    m_identifying = false;
+    m_identifyTimer.stop();
+    m_identityKnown = true;
+    engine().setWorkingBaud(baud);
+    model::DeviceIdentity id;
+    id.productName = "HEC495";
+    id.busAddress = m_address;
+    if (reply && reply->address != m_address && reply->address != wl::kReplySetAddressAddress)
+        id.busAddress = m_address = reply->address;
+    engine().setIdentity(id);
+    Q_EMIT addressChanged(m_address);
+    Q_EMIT baudChanged(baud);
+    engine().setState(SessionState::Connected, engine().transport().address());
+    qCInfo(lcHec495) << "HEC495 at" << baud << "baud, address" << m_address << (m_streaming ? "streaming" : "polled");
+    if (!m_streaming && m_pollHz > 0)
+        m_pollTimer.start(1000 / m_pollHz);
+}
+
+void Hec495Family::stopping()
+{
+    m_identifying = false;
+    m_identifyTimer.stop();
+    m_identifyTimer.disconnect();
+    m_pollTimer.stop();
+}
+
+// ---------------------------------------------------------------------------------------
+// Polling and streaming
+
+void Hec495Family::setPollingRate(int hz)
+{
+    m_pollHz = std::clamp(hz, 0, 100);
+    m_pollTimer.stop();
+    if (m_pollHz > 0 && m_identityKnown && !m_streaming)
+        m_pollTimer.start(1000 / m_pollHz);
+}
+
+void Hec495Family::setStreaming(bool on)
+{
+    if (on == m_streaming)
+        return;
+    m_streaming = on;
+    if (on)
+        m_pollTimer.stop();
+    else if (m_pollHz > 0 && m_identityKnown)
+        m_pollTimer.start(1000 / m_pollHz);
+    Q_EMIT streamingChanged(on);
+}
+
+void Hec495Family::poll()
+{
+    if (m_streaming || !engine().idle() || !engine().transport().isOpen())
+        return;
+    Request r = makeRequest(uint8_t(wl::Command::ReadAll), {}, 0);
+    r.maxAttempts = 1; // the next poll is the retry
+    engine().submit(std::move(r));
+}
+
+void Hec495Family::statsTick()
+{
+    // Auto-output stopped (another tool set question/answer, or the module restarted): poll again.
+    if (m_streaming && m_identityKnown && m_lastStreamFrame.isValid() && m_lastStreamFrame.elapsed() > kStreamingLostMs)
+        setStreaming(false);
+}
+
+// ---------------------------------------------------------------------------------------
+// Requests
+
+void Hec495Family::unanswered(const Request &r, RequestResult &result)
+{
+    if (result.status == RequestStatus::Timeout)
+        result.message = tr("no reply to \"%1\" after %2 attempts of %3 ms (check the baud rate and the module "
+                            "address; an RS-485 module that streams may miss commands: set question/answer mode)")
+                             .arg(commandText(r))
+                             .arg(r.attempts)
+                             .arg(r.timeoutMs);
+    Hec495Result typed;
+    typed.request = commandOf(r).command;
+    result.reply = QVariant::fromValue(typed);
+}
+
+void Hec495Family::followBaud(int baud)
+{
+    engine().transport().setBaud(baud);
+    engine().setWorkingBaud(baud);
+    m_decoder.reset();
+    Q_EMIT baudChanged(baud);
+}
+
+void Hec495Family::finished(const Request &r, const RequestResult &result)
+{
+    if (!result.ok())
+        return;
+    using C = wl::Command;
+    const Command &c = commandOf(r);
+    switch (C(c.command)) {
+    case C::SetBaud: {
+        const int baud = c.data.size() == 1 ? wl::commands::baudFromCode(c.data[0]) : -1;
+        if (baud > 0)
+            followBaud(baud); // the reply came at the old rate (2.13)
+        break;
+    }
+    case C::SetAddress:
+        if (c.data.size() == 1) {
+            m_address = c.data[0];
+            Q_EMIT addressChanged(m_address);
+        }
+        break;
+    case C::QueryAddress: {
+        const int address = result.reply.value<Hec495Result>().reply.deviceAddress;
+        if (address != m_address) {
+            m_address = address;
+            Q_EMIT addressChanged(m_address);
+        }
+        break;
+    }
+    case C::FactoryReset:
+        m_address = wl::commands::kDefaultAddress;
+        Q_EMIT addressChanged(m_address);
+        if (engine().transport().baud() != wl::commands::kDefaultBaud)
+            followBaud(wl::commands::kDefaultBaud);
+        setStreaming(false);
+        break;
+    case C::SetOutputRate:
+        if (c.data.size() == 1)
+            setStreaming(wl::commands::rateFromCode(c.data[0]) > 0);
+        break;
+    default:
+        break;
+    }
+}
+
+// ---------------------------------------------------------------------------------------
+// Received frames
+
+void Hec495Family::resetCounters()
+{
+    m_decoder = wl::FrameDecoder{};
+    m_framesByType.clear();
+    m_payloadErrors = 0;
+}
+
+void Hec495Family::feed(const QByteArray &bytes, int64_t nowNs)
+{
+    m_frames.clear();
+    m_decoder.feed(reinterpret_cast<const uint8_t *>(bytes.constData()), size_t(bytes.size()), m_frames);
+    m_decoder.takeSkipped(); // text (NMEA output) and noise: counted, not kept
+    handleFrames(m_frames, nowNs);
+}
+
+void Hec495Family::lineIdle(int64_t nowNs)
+{
+    m_frames.clear();
+    m_decoder.flushIdle(m_frames);
+    m_decoder.takeSkipped();
+    handleFrames(m_frames, nowNs);
+}
+
+bool Hec495Family::answersCurrent(const wl::Frame &f) const
+{
+    const Request *current = engine().current();
+    if (!current)
+        return false;
+    const uint8_t command = commandOf(*current).command;
+    const auto expected = wl::commands::expectedReplies(command);
+    if (std::find(expected.begin(), expected.end(), f.command) == expected.end())
+        return false;
+    const bool anyAddress =
+        command == uint8_t(wl::Command::SetAddress) || command == uint8_t(wl::Command::QueryAddress) || m_identifying;
+    return anyAddress || f.address == m_address;
+}
+
+void Hec495Family::handleFrames(const std::vector<wl::Frame> &frames, int64_t nowNs)
+{
+    if (frames.empty())
+        return;
+    m_batch.clear();
+    bool unsolicitedData = false;
+    for (const auto &f : frames) {
+        if (const Request *current = engine().current()) {
+            const std::vector<uint8_t> heard = wl::encodeFrame(f);
+            if (QByteArray::fromRawData(reinterpret_cast<const char *>(heard.data()), qsizetype(heard.size()))
+                == current->wire)
+                continue; // our own request heard back (RS-485 echo)
+        }
+        const wl::Reply r = wl::decodeReply(f);
+        const bool data = r.ok() && (r.kind == wl::Reply::Kind::AllData || r.kind == wl::Reply::Kind::Angles);
+        if (data) {
+            ++m_framesByType[frameType(f.command)];
+            if (r.kind == wl::Reply::Kind::AllData) {
+                m_batch.push_back(r.record.toSample(nowNs));
+            } else {
+                model::Sample s;
+                s.source = "HEC495";
+                s.hostTimeNs = nowNs;
+                s.fields = model::FieldEuler;
+                s.pitch = r.pitch;
+                s.roll = r.roll;
+                s.yaw = r.heading;
+                m_batch.push_back(s);
+            }
+        } else if (!r.ok()) {
+            ++m_payloadErrors;
+        }
+        if (answersCurrent(f)) {
+            RequestResult res;
+            Hec495Result typed;
+            typed.request = commandOf(*engine().current()).command;
+            typed.reply = r;
+            res.reply = QVariant::fromValue(typed);
+            if (!r.ok()) {
+                res.status = RequestStatus::Invalid;
+                res.message = tr("the module answered with an invalid reply: %1").arg(wl::Reply::errorText(r.error));
+            } else if (!r.success) {
+                res.status = RequestStatus::Refused;
+                res.message = tr("the module reported failure (FF) for \"%1\"").arg(commandText(*engine().current()));
+            } else {
+                res.status = RequestStatus::Ok;
+                res.message = r.describe();
+            }
+            engine().finishCurrent(std::move(res));
+            continue;
+        }
+        if (data)
+            unsolicitedData = true;
+        else if (r.ok() && r.kind == wl::Reply::Kind::CalibrationPoint)
+            Q_EMIT calibrationPoint(r.points);
+    }
+    if (unsolicitedData) {
+        m_lastStreamFrame.restart();
+        setStreaming(true);
+        if (m_identifying) {
+            engine().cancelAll(RequestStatus::Cancelled, tr("the module streams: identified without a request"));
+            identified(engine().transport().baud(), nullptr);
+        } else {
+            engine().releaseHeldWrite(); // the line is quiet until the next frame
+        }
+    }
+    engine().appendSamples(m_batch);
+}
+
+void Hec495Family::fillCounters(SessionStats &s) const
+{
+    const auto &c = m_decoder.counters();
+    s.bytesIn = c.bytesIn;
+    s.frames = c.frames;
+    s.crcErrors = c.checksumErrors;
+    s.lengthErrors = c.lengthErrors;
+    s.bytesSkipped = c.bytesSkipped;
+    s.payloadErrors = m_payloadErrors;
+    s.framesByType = m_framesByType;
+}
+
+} // namespace imudesk::device

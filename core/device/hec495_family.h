@@ -1,0 +1,109 @@
+#pragma once
+// The Witlink HEC495 compass as a session-engine family (family_plugin.h), on RS-232 or RS-485.
+//
+// Link rules (manual "通讯协议"):
+//   * Each request waits kReplyTimeoutMs for its reply and is sent up to kAttempts times:
+//     an RS-485 module that is streaming may not hear a command (2.14). While the module
+//     streams, a request is written right after an auto-output frame has arrived (the line
+//     is quiet until the next one), or after kGapWaitMs without one.
+//   * A reply answers the pending request when its command byte is one the request allows
+//     (commands::expectedReplies) and it comes from the module's address (2.16's reply to
+//     "set address" carries FF). The host's own request heard back (an RS-485 echo) is ignored.
+//   * After "set baud" succeeds the host follows to the new rate (the reply comes at the
+//     old one, 2.13); after "set address" the new address is used; after "factory reset"
+//     9600 and address 0.
+//   * Opening: listen kListenMs; data frames mean the module streams (auto-output).
+//     Otherwise ask "read all"; a module in its 3 s quiet window after power-on (2.14) still
+//     answers commands, so identification retries until kIdentifyWindowMs has passed.
+//   * In question/answer mode the family polls "read all" at the polling rate while no
+//     other request is pending; auto-output frames (84 angles, 14 record) become samples.
+#include "device/family_plugin.h"
+#include "device/hec495_result.h"
+#include "protocol/witlink/frame_decoder.h"
+
+#include <QElapsedTimer>
+#include <QTimer>
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace imudesk::device {
+
+class Hec495Family : public FamilyPlugin {
+    Q_OBJECT
+public:
+    static constexpr int kReplyTimeoutMs = 300;
+    static constexpr int kAttempts = 3;
+    static constexpr int kListenMs = 200;
+    static constexpr int kIdentifyWindowMs = 3500;
+    static constexpr int kLineIdleMs = 30;
+    static constexpr int kGapWaitMs = 250;
+
+    // What a request carries for the family (Request::command).
+    struct Command {
+        uint8_t command = 0;
+        std::vector<uint8_t> data;
+    };
+
+    Hec495Family();
+    static const std::vector<int> &detectionBauds();
+
+    // Engine thread.
+    void setAddress(int address) { m_address = address & 0xFF; }
+    void setPollingRate(int hz);
+    static Request makeRequest(uint8_t command, const QByteArray &data, int timeoutMs);
+
+    QString linkKind() const override { return QStringLiteral("HEC495 serial"); }
+    int firstBaud(int requestedBaud) const override;
+    void opened(int requestedBaud) override;
+    void stopping() override;
+    void restartStream() override { m_decoder.reset(); }
+    void resetCounters() override;
+    void feed(const QByteArray &bytes, int64_t nowNs) override;
+    bool midUnit() const override { return m_decoder.pendingBytes() > 0; }
+    void lineIdle(int64_t nowNs) override;
+    void fillCounters(SessionStats &s) const override;
+    void statsTick() override;
+    QString prepare(Request &r) override;
+    int holdWriteMs(const Request &) const override { return m_streaming ? kGapWaitMs : 0; }
+    void unanswered(const Request &r, RequestResult &result) override;
+    void finished(const Request &r, const RequestResult &result) override;
+
+Q_SIGNALS:
+    void baudChanged(int baud);
+    void addressChanged(int address);
+    // true: the module streams (auto-output); false: the family polls.
+    void streamingChanged(bool streaming);
+    // A calibration point was collected (automatic methods report them unasked).
+    void calibrationPoint(int points);
+
+private:
+    void handleFrames(const std::vector<protocol::witlink::Frame> &frames, int64_t nowNs);
+    bool answersCurrent(const protocol::witlink::Frame &f) const;
+    void followBaud(int baud);
+    void poll();
+    void setStreaming(bool on);
+    void identifyAt(size_t baudIndex);
+    void identified(int baud, const protocol::witlink::Reply *reply);
+
+    protocol::witlink::FrameDecoder m_decoder;
+    std::vector<model::Sample> m_batch;
+    std::vector<protocol::witlink::Frame> m_frames;
+    QTimer m_pollTimer{this};
+    QTimer m_identifyTimer{this};
+
+    int m_address = 0;
+    int m_pollHz = 10;
+    bool m_streaming = false;
+    bool m_identifying = false;
+    bool m_identityKnown = false;
+    std::vector<int> m_identifyBauds;
+    QElapsedTimer m_lastStreamFrame; // since the last auto-output frame
+
+    std::map<std::string, uint64_t> m_framesByType;
+    uint64_t m_payloadErrors = 0;
+};
+
+} // namespace imudesk::device
+

@@ -1,0 +1,92 @@
+#include "session.h"
+
+#include "device/session_engine.h"
+#include "io/serial_transport.h"
+
+namespace imudesk::device {
+
+Session::Session(std::unique_ptr<FamilyPlugin> family, std::unique_ptr<io::Transport> transport,
+                 const QString &threadName, int lineIdleMs, QObject *parent)
+    : DeviceLink(parent)
+{
+    if (!transport)
+        transport = std::make_unique<io::SerialTransport>();
+    m_family = family.get();
+    m_linkKind = m_family->linkKind();
+    m_thread.setObjectName(threadName);
+    m_engine = new SessionEngine(family.release(), transport.release(), store(), m_rawLog, lineIdleMs);
+    m_engine->moveToThread(&m_thread);
+    connect(&m_thread, &QThread::finished, m_engine, &QObject::deleteLater);
+
+    connect(m_engine, &SessionEngine::stateChanged, this,
+            [this](SessionState s, const QString &detail) { setState(s, detail); });
+    connect(m_engine, &SessionEngine::identityChanged, this, &Session::identityChanged);
+    connect(m_engine, &SessionEngine::statsUpdated, this, &Session::statsUpdated);
+    connect(m_engine, &SessionEngine::errorOccurred, this, &Session::errorOccurred);
+    connect(m_engine, &SessionEngine::requestFinished, this, &Session::requestFinished);
+    connect(m_engine, &SessionEngine::reconnected, this, &Session::reconnected);
+    connect(m_engine, &SessionEngine::recordingStarted, this, &Session::recordingStarted);
+    connect(m_engine, &SessionEngine::recordingStopped, this, &Session::recordingStopped);
+    connect(m_engine, &SessionEngine::recordingProgress, this, &Session::recordingProgress);
+    m_thread.start();
+}
+
+Session::~Session()
+{
+    QMetaObject::invokeMethod(m_engine, &SessionEngine::close, Qt::BlockingQueuedConnection);
+    m_thread.quit();
+    m_thread.wait();
+}
+
+void Session::openLink(const QString &address, int baud)
+{
+    QMetaObject::invokeMethod(m_engine, [e = m_engine, address, baud] { e->open(address, baud); },
+                              Qt::QueuedConnection);
+}
+
+void Session::close()
+{
+    QMetaObject::invokeMethod(m_engine, &SessionEngine::close, Qt::QueuedConnection);
+}
+
+void Session::setAutoReconnect(bool on)
+{
+    m_autoReconnect = on;
+    QMetaObject::invokeMethod(m_engine, [e = m_engine, on] { e->setAutoReconnect(on); }, Qt::QueuedConnection);
+}
+
+void Session::startRecording(const QString &path, const record::CaptureHeader &header,
+                             const record::CaptureWriter::Options &options)
+{
+    QMetaObject::invokeMethod(
+        m_engine, [e = m_engine, path, header, options] { e->startRecording(path, header, options); },
+        Qt::QueuedConnection);
+}
+
+void Session::stopRecording()
+{
+    QMetaObject::invokeMethod(m_engine, &SessionEngine::stopRecording, Qt::QueuedConnection);
+}
+
+quint64 Session::submit(Request request)
+{
+    const quint64 id = m_nextId++;
+    request.id = id;
+    QMetaObject::invokeMethod(
+        m_engine, [e = m_engine, r = std::move(request)]() mutable { e->submit(std::move(r)); },
+        Qt::QueuedConnection);
+    return id;
+}
+
+quint64 Session::refuse(const QVariant &reply, const QString &why)
+{
+    RequestResult r;
+    r.id = m_nextId++;
+    r.status = RequestStatus::NotSent;
+    r.message = why;
+    r.reply = reply;
+    QTimer::singleShot(0, this, [this, r] { Q_EMIT requestFinished(r); });
+    return r.id;
+}
+
+} // namespace imudesk::device

@@ -1,0 +1,474 @@
+#include "session_engine.h"
+
+#include <QCoreApplication>
+#include <QDateTime>
+#include <QLoggingCategory>
+
+#include <chrono>
+#include <utility>
+
+Q_LOGGING_CATEGORY(lcEngine, "imudesk.core.device")
+
+namespace imudesk::device {
+
+namespace {
+
+int64_t monotonicNs()
+{
+    return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now().time_since_epoch())
+        .count();
+}
+
+int64_t utcUs()
+{
+    return QDateTime::currentMSecsSinceEpoch() * 1000;
+}
+
+} // namespace
+
+const char *requestStatusName(RequestStatus s)
+{
+    switch (s) {
+    case RequestStatus::Ok: return "ok";
+    case RequestStatus::Refused: return "refused";
+    case RequestStatus::Invalid: return "invalid";
+    case RequestStatus::Timeout: return "timeout";
+    case RequestStatus::NotSent: return "not sent";
+    case RequestStatus::Cancelled: return "cancelled";
+    }
+    return "?";
+}
+
+SessionEngine::SessionEngine(FamilyPlugin *family, io::Transport *transport, SampleStore &store,
+                             RawByteLog &rawLog, int lineIdleMs)
+    : m_family(family), m_transport(transport), m_store(store), m_rawLog(rawLog)
+{
+    qRegisterMetaType<RequestResult>();
+    m_family->setParent(this);
+    m_family->attach(this);
+    m_transport->setParent(this);
+    connect(m_transport, &io::Transport::bytesReceived, this, &SessionEngine::onBytes);
+    connect(m_transport, &io::Transport::failed, this, &SessionEngine::onTransportFailed);
+    m_replyTimer.setSingleShot(true);
+    connect(&m_replyTimer, &QTimer::timeout, this, &SessionEngine::onReplyTimeout);
+    m_holdTimer.setSingleShot(true);
+    connect(&m_holdTimer, &QTimer::timeout, this, &SessionEngine::releaseHeldWrite);
+    m_idleTimer.setSingleShot(true);
+    m_idleTimer.setInterval(lineIdleMs);
+    connect(&m_idleTimer, &QTimer::timeout, this, &SessionEngine::onLineIdle);
+    m_statsTimer.setInterval(kStatsPeriodMs);
+    connect(&m_statsTimer, &QTimer::timeout, this, &SessionEngine::publishStats);
+    m_reconnectTimer.setInterval(kReconnectPollMs);
+    connect(&m_reconnectTimer, &QTimer::timeout, this, &SessionEngine::tryReconnect);
+}
+
+SessionEngine::~SessionEngine() = default;
+
+void SessionEngine::setState(SessionState s, const QString &detail)
+{
+    m_state = s;
+    Q_EMIT stateChanged(s, detail);
+}
+
+void SessionEngine::setIdentity(const model::DeviceIdentity &identity)
+{
+    m_identity = identity;
+    Q_EMIT identityChanged(identity);
+}
+
+// ---------------------------------------------------------------------------------------
+// The link
+
+void SessionEngine::open(const QString &address, int baud)
+{
+    close();
+    m_workingBaud = 0;
+    m_identity = {};
+    setState(SessionState::Opening, address);
+    QString error;
+    if (!m_transport->open(address, m_family->firstBaud(baud), &error)) {
+        setState(SessionState::Failed, error);
+        Q_EMIT errorOccurred(error);
+        return;
+    }
+    m_family->restartStream();
+    m_reconnects = 0;
+    restartStatistics();
+    m_statsTimer.start();
+    m_family->opened(baud);
+}
+
+void SessionEngine::close()
+{
+    m_family->stopping();
+    const bool waiting = m_reconnectTimer.isActive() || m_state == SessionState::Reconnecting;
+    m_reconnectTimer.stop();
+    m_idleTimer.stop();
+    cancelAll(RequestStatus::Cancelled, tr("the connection was closed"));
+    if (m_recorder)
+        finishRecording(QString());
+    if (m_transport->isOpen()) {
+        m_transport->close();
+        publishStats();
+        m_statsTimer.stop();
+        setState(SessionState::Closed);
+    } else if (waiting) {
+        setState(SessionState::Closed); // no longer waiting for the device
+    }
+}
+
+void SessionEngine::fail(const QString &message)
+{
+    m_transport->close();
+    m_statsTimer.stop();
+    setState(SessionState::Failed, message);
+    Q_EMIT errorOccurred(message);
+}
+
+void SessionEngine::onTransportFailed(const QString &message)
+{
+    m_family->stopping();
+    m_idleTimer.stop();
+    cancelAll(RequestStatus::NotSent, message);
+    m_transport->close();
+    publishStats();
+    m_statsTimer.stop();
+    setState(SessionState::Disconnected, message);
+    Q_EMIT errorOccurred(message);
+    if (m_autoReconnect && m_family->reconnects() && m_workingBaud > 0) {
+        m_lastReconnectError.clear();
+        setState(SessionState::Reconnecting, tr("disconnected — waiting for the device to come back"));
+        m_reconnectTimer.start();
+    }
+}
+
+void SessionEngine::setAutoReconnect(bool on)
+{
+    m_autoReconnect = on;
+    if (!on && m_state == SessionState::Reconnecting) {
+        m_reconnectTimer.stop();
+        setState(SessionState::Disconnected, tr("automatic reconnection was turned off"));
+    }
+}
+
+void SessionEngine::tryReconnect()
+{
+    if (m_state != SessionState::Reconnecting || !m_autoReconnect) {
+        m_reconnectTimer.stop();
+        return;
+    }
+    QString error;
+    if (!m_transport->reopen(m_workingBaud, &error)) {
+        // Just plugged in: udev may not have set the permissions yet. Keep trying.
+        if (!error.isEmpty() && error != m_lastReconnectError)
+            qCInfo(lcEngine) << "reconnect attempt failed:" << error;
+        m_lastReconnectError = error;
+        return;
+    }
+    m_reconnectTimer.stop();
+    ++m_reconnects;
+    // Counters and samples carry on; only the stream state starts afresh, and the outage
+    // does not count in the rates.
+    m_family->restartStream();
+    SessionStats now;
+    m_family->fillCounters(now);
+    m_lastStats.bytesIn = now.bytesIn;
+    m_lastStats.framesByType = now.framesByType;
+    m_lastStatsMs = m_statsClock.isValid() ? m_statsClock.elapsed() : 0;
+    m_statsTimer.start();
+    setState(SessionState::Connected,
+             tr("%1 at %2 baud (reconnected)").arg(m_transport->address()).arg(m_workingBaud));
+    Q_EMIT reconnected();
+    m_family->reconnected();
+}
+
+// ---------------------------------------------------------------------------------------
+// Received bytes
+
+void SessionEngine::onBytes(const QByteArray &bytes)
+{
+    const int64_t arrivedNs = monotonicNs();
+    m_rawLog.append(RawByteLog::Direction::Rx, bytes, arrivedNs);
+    if (m_recorder)
+        m_recorder->append(bytes.constData(), size_t(bytes.size()), arrivedNs, utcUs());
+    m_family->feed(bytes, arrivedNs);
+    if (m_family->midUnit())
+        m_idleTimer.start();
+    else
+        m_idleTimer.stop();
+}
+
+void SessionEngine::onLineIdle()
+{
+    const int64_t now = monotonicNs();
+    if (m_recorder)
+        m_recorder->appendLineIdle(now, utcUs());
+    m_family->lineIdle(now);
+}
+
+void SessionEngine::appendSamples(std::vector<model::Sample> &batch)
+{
+    if (!batch.empty())
+        m_store.append(batch); // the views read the store on their clock
+}
+
+// ---------------------------------------------------------------------------------------
+// Requests
+
+void SessionEngine::submit(Request r)
+{
+    if (const QString why = m_family->prepare(r); !why.isEmpty()) {
+        refuse(std::move(r), why);
+        return;
+    }
+    if (!m_transport->isOpen()) {
+        refuse(std::move(r), tr("the port is not open"));
+        return;
+    }
+    m_queue.push_back(std::move(r));
+    startNext();
+}
+
+void SessionEngine::refuse(Request r, const QString &why)
+{
+    RequestResult result;
+    result.status = RequestStatus::NotSent;
+    result.message = why;
+    end(r, std::move(result));
+}
+
+void SessionEngine::startNext()
+{
+    if (m_current || m_queue.empty())
+        return;
+    m_current = std::move(m_queue.front());
+    m_queue.pop_front();
+    sendCurrent();
+}
+
+void SessionEngine::sendCurrent()
+{
+    ++m_current->attempts;
+    const int holdMs = m_family->holdWriteMs(*m_current);
+    if (holdMs > 0) {
+        m_holding = true; // written in the next gap (releaseHeldWrite) or after holdMs
+        m_holdTimer.start(holdMs);
+        return;
+    }
+    writeCurrent();
+}
+
+void SessionEngine::releaseHeldWrite()
+{
+    if (m_current && m_holding)
+        writeCurrent();
+}
+
+void SessionEngine::writeCurrent()
+{
+    m_holding = false;
+    m_holdTimer.stop();
+    m_family->writing(*m_current);
+    m_rawLog.append(RawByteLog::Direction::Tx, m_current->wire, monotonicNs());
+    if (m_transport->write(m_current->wire) != m_current->wire.size()) {
+        RequestResult r;
+        r.status = RequestStatus::NotSent;
+        r.message = tr("writing to the port failed");
+        finishCurrent(std::move(r));
+        return;
+    }
+    m_replyTimer.start(m_current->timeoutMs);
+}
+
+void SessionEngine::onReplyTimeout()
+{
+    if (!m_current)
+        return;
+    if (m_current->attempts < m_current->maxAttempts) {
+        qCDebug(lcEngine) << "no reply - sending again" << m_current->wire.toHex(' ');
+        sendCurrent();
+        return;
+    }
+    RequestResult r;
+    r.status = RequestStatus::Timeout;
+    r.message = tr("no reply within %1 ms").arg(m_current->timeoutMs);
+    finishCurrent(std::move(r));
+}
+
+void SessionEngine::finishCurrent(RequestResult result)
+{
+    m_replyTimer.stop();
+    m_holdTimer.stop();
+    m_holding = false;
+    if (!m_current)
+        return;
+    Request r = std::move(*m_current);
+    m_current.reset();
+    end(r, std::move(result));
+    startNext();
+}
+
+void SessionEngine::end(Request &r, RequestResult result)
+{
+    result.id = r.id;
+    result.attempts = r.attempts;
+    if (!result.reply.isValid()) // ended without an answer: the family says it in its own terms
+        m_family->unanswered(r, result);
+    m_family->finished(r, result);
+    if (r.done)
+        r.done(result);
+    if (r.id)
+        Q_EMIT requestFinished(result);
+}
+
+void SessionEngine::cancelAll(RequestStatus status, const QString &why)
+{
+    m_replyTimer.stop();
+    m_holdTimer.stop();
+    m_holding = false;
+    std::deque<Request> all;
+    if (m_current)
+        all.push_back(std::move(*m_current));
+    m_current.reset();
+    for (auto &r : m_queue)
+        all.push_back(std::move(r));
+    m_queue.clear();
+    for (auto &r : all) {
+        RequestResult result;
+        result.status = status;
+        result.message = why;
+        end(r, std::move(result));
+    }
+}
+
+// ---------------------------------------------------------------------------------------
+// Statistics
+
+uint64_t SessionEngine::framesNow() const
+{
+    SessionStats s;
+    m_family->fillCounters(s);
+    return s.frames;
+}
+
+void SessionEngine::restartStatistics()
+{
+    m_family->resetCounters();
+    m_statsClock.restart();
+    m_lastStatsMs = 0;
+    m_lastStats = SessionStats{};
+}
+
+void SessionEngine::watchForGarbage(const SessionStats &now, qint64 nowMs)
+{
+    constexpr qint64 kGarbageReportMs = 1500;
+    const bool decoded = now.frames > m_lastStats.frames || now.nmeaSentences > m_lastStats.nmeaSentences;
+    const bool damaged = now.bytesSkipped > m_lastStats.bytesSkipped || now.crcErrors > m_lastStats.crcErrors;
+    if (decoded || now.bytesIn < m_lastStats.bytesIn + 64 || !damaged) {
+        m_garbageSinceMs = -1;
+        if (decoded)
+            m_garbageReported = false;
+        return;
+    }
+    if (m_garbageSinceMs < 0)
+        m_garbageSinceMs = m_lastStatsMs;
+    if (!m_garbageReported && nowMs - m_garbageSinceMs >= kGarbageReportMs) {
+        m_garbageReported = true;
+        Q_EMIT errorOccurred(tr("Bytes keep arriving on %1 but none of them form a frame: the device probably runs at "
+                                "another baud rate now. Disconnect and connect again with the baud rate set to Auto.")
+                                 .arg(m_transport->address()));
+    }
+}
+
+void SessionEngine::publishStats()
+{
+    m_family->statsTick();
+    SessionStats s;
+    m_family->fillCounters(s);
+    s.reconnects = m_reconnects;
+    s.baud = m_transport->baud();
+    const qint64 nowMs = m_statsClock.isValid() ? m_statsClock.elapsed() : 0;
+    const double dt = double(nowMs - m_lastStatsMs) / 1000.0;
+    if (dt > 0.05) {
+        // Counters may start again (a new decoder): never a negative rate.
+        for (const auto &[name, count] : s.framesByType) {
+            const auto it = m_lastStats.framesByType.find(name);
+            const uint64_t before = it == m_lastStats.framesByType.end() ? 0 : std::min(count, it->second);
+            s.rateByType[name] = double(count - before) / dt;
+        }
+        s.bytesPerSecond = double(s.bytesIn - std::min(s.bytesIn, m_lastStats.bytesIn)) / dt;
+        s.linkLoad = s.baud > 0 ? s.bytesPerSecond * 10.0 / s.baud : 0;
+        watchForGarbage(s, nowMs);
+        m_lastStats = s;
+        m_lastStatsMs = nowMs;
+    } else {
+        s.rateByType = m_lastStats.rateByType;
+        s.bytesPerSecond = m_lastStats.bytesPerSecond;
+        s.linkLoad = m_lastStats.linkLoad;
+    }
+    Q_EMIT statsUpdated(s);
+    if (m_recorder)
+        Q_EMIT recordingProgress(m_recorder->status().bytesWritten,
+                                 s.frames >= m_framesAtRecordStart ? s.frames - m_framesAtRecordStart : s.frames);
+}
+
+// ---------------------------------------------------------------------------------------
+// Recording
+
+void SessionEngine::startRecording(const QString &path, const record::CaptureHeader &header,
+                                   const record::CaptureWriter::Options &options)
+{
+    if (m_recorder)
+        finishRecording(QString());
+    record::CaptureHeader h;
+    h.setIdentity(m_identity);
+    h.set(record::CaptureHeader::kLinkKind, m_family->linkKind().toStdString());
+    h.set(record::CaptureHeader::kPort, m_transport->address().toStdString());
+    h.set(record::CaptureHeader::kBaud, std::to_string(m_transport->baud()));
+    h.set(record::CaptureHeader::kStartedUtc,
+          QDateTime::currentDateTimeUtc().toString(Qt::ISODateWithMs).toStdString());
+    h.set(record::CaptureHeader::kIdleMarkers, "1");
+    h.set(record::CaptureHeader::kApplication,
+          (QCoreApplication::applicationName() + QLatin1Char(' ') + QCoreApplication::applicationVersion())
+              .trimmed()
+              .toStdString());
+    for (const auto &[k, v] : header.values)
+        h.set(k, v);
+    auto writer = std::make_unique<record::CaptureWriter>();
+    writer->setStoppedHandler([this](const QString &reason) {
+        QMetaObject::invokeMethod(this, [this, reason] { finishRecording(reason); }, Qt::QueuedConnection);
+    });
+    QString error;
+    if (!writer->start(path, h, options, &error)) {
+        Q_EMIT errorOccurred(error);
+        Q_EMIT recordingStopped(error);
+        return;
+    }
+    m_recorder = std::move(writer);
+    m_framesAtRecordStart = framesNow();
+    Q_EMIT recordingStarted(path);
+}
+
+void SessionEngine::stopRecording()
+{
+    if (m_recorder)
+        finishRecording(QString());
+}
+
+void SessionEngine::finishRecording(const QString &reason)
+{
+    if (!m_recorder)
+        return;
+    const QString error = m_recorder->stop();
+    const auto st = m_recorder->status();
+    m_recorder.reset();
+    const uint64_t frames = framesNow();
+    Q_EMIT recordingProgress(st.bytesWritten,
+                             frames >= m_framesAtRecordStart ? frames - m_framesAtRecordStart : frames);
+    const QString why = reason.isEmpty() ? error : reason;
+    if (!why.isEmpty())
+        Q_EMIT errorOccurred(why);
+    Q_EMIT recordingStopped(why);
+}
+
+} // namespace imudesk::device

@@ -1,0 +1,130 @@
+#pragma once
+// The one session engine: whatever the device family, it owns the transport, the request
+// queue (one request on the line at a time, timeout, retries, cancel), the path of received
+// bytes (raw-byte log, recording, the family's decoder, the bounded sample store), the
+// statistics snapshot and the reconnection after a failed link. The family plug-in
+// (family_plugin.h) says what the bytes mean.
+//
+// Lives in the session's worker thread (Session moves it there); every slot is called queued.
+#include "device/family_plugin.h"
+#include "device/raw_byte_log.h"
+#include "device/request.h"
+#include "device/sample_store.h"
+#include "device/session_types.h"
+#include "io/transport.h"
+#include "record/capture_writer.h"
+
+#include <QElapsedTimer>
+#include <QObject>
+#include <QTimer>
+
+#include <deque>
+#include <memory>
+#include <optional>
+#include <vector>
+
+namespace imudesk::device {
+
+class SessionEngine : public QObject {
+    Q_OBJECT
+public:
+    static constexpr int kStatsPeriodMs = 500;
+    static constexpr int kReconnectPollMs = 500;
+
+    // Takes both (as children: they move to the engine's thread with it).
+    SessionEngine(FamilyPlugin *family, io::Transport *transport, SampleStore &store, RawByteLog &rawLog,
+                  int lineIdleMs);
+    ~SessionEngine() override;
+
+    // --- For the family plug-in (engine thread)
+    io::Transport &transport() const { return *m_transport; }
+    SessionState state() const { return m_state; }
+    void setState(SessionState s, const QString &detail = QString());
+    // The link could not be brought up: close it, state Failed, errorOccurred(message).
+    void fail(const QString &message);
+    void reportError(const QString &message) { Q_EMIT errorOccurred(message); }
+    void setIdentity(const model::DeviceIdentity &identity);
+    const model::DeviceIdentity &identity() const { return m_identity; }
+    // The rate the device was last heard at (reconnection reopens there; 0: never).
+    void setWorkingBaud(int baud) { m_workingBaud = baud; }
+    int workingBaud() const { return m_workingBaud; }
+    // Counters start again from zero (after a detection found the rate).
+    void restartStatistics();
+    void appendSamples(std::vector<model::Sample> &batch);
+
+    void submit(Request r);
+    // Ends r at once as NotSent with `why` (the family refused to encode it).
+    void refuse(Request r, const QString &why);
+    const Request *current() const { return m_current ? &*m_current : nullptr; }
+    bool idle() const { return !m_current && m_queue.empty(); }
+    void finishCurrent(RequestResult result);
+    // A held request (holdWriteMs) may go out now.
+    void releaseHeldWrite();
+    void cancelAll(RequestStatus status, const QString &why);
+
+public Q_SLOTS:
+    void open(const QString &address, int baud);
+    void close();
+    void setAutoReconnect(bool on);
+    void startRecording(const QString &path, const imudesk::record::CaptureHeader &header,
+                        const imudesk::record::CaptureWriter::Options &options);
+    void stopRecording();
+    void publishStats();
+
+Q_SIGNALS:
+    void stateChanged(imudesk::device::SessionState state, const QString &detail);
+    void identityChanged(const imudesk::model::DeviceIdentity &identity);
+    void statsUpdated(const imudesk::device::SessionStats &stats);
+    void errorOccurred(const QString &message);
+    void requestFinished(const imudesk::device::RequestResult &result);
+    void reconnected();
+    void recordingStarted(const QString &path);
+    void recordingStopped(const QString &reason); // empty: stopped as asked
+    void recordingProgress(quint64 bytesWritten, quint64 frames);
+
+private:
+    void onBytes(const QByteArray &bytes);
+    void onLineIdle();
+    void onTransportFailed(const QString &message);
+    void startNext();
+    void sendCurrent();
+    void writeCurrent();
+    void onReplyTimeout();
+    void end(Request &r, RequestResult result);
+    void tryReconnect();
+    void finishRecording(const QString &reason);
+    void watchForGarbage(const SessionStats &now, qint64 nowMs);
+    uint64_t framesNow() const;
+
+    FamilyPlugin *m_family;
+    io::Transport *m_transport;
+    SampleStore &m_store;
+    RawByteLog &m_rawLog;
+    SessionState m_state = SessionState::Closed;
+    model::DeviceIdentity m_identity;
+    int m_workingBaud = 0;
+
+    std::deque<Request> m_queue;
+    std::optional<Request> m_current;
+    bool m_holding = false;
+    QTimer m_replyTimer{this}; // children, so that moveToThread moves them
+    QTimer m_holdTimer{this};
+    QTimer m_idleTimer{this};  // releases bytes held behind an unfinished frame when the line goes quiet
+
+    QTimer m_statsTimer{this};
+    QElapsedTimer m_statsClock;
+    SessionStats m_lastStats;
+    qint64 m_lastStatsMs = 0;
+    qint64 m_garbageSinceMs = -1; // bytes that form nothing: since when, and whether the user was told
+    bool m_garbageReported = false;
+
+    bool m_autoReconnect = true;
+    QTimer m_reconnectTimer{this};
+    QString m_lastReconnectError;
+    uint64_t m_reconnects = 0;
+
+    std::unique_ptr<record::CaptureWriter> m_recorder;
+    uint64_t m_framesAtRecordStart = 0;
+};
+
+} // namespace imudesk::device

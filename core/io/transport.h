@@ -1,0 +1,41 @@
+#pragma once
+// What a session's engine needs from a byte link, whatever carries the bytes: a serial port
+// (SerialTransport) or a simulated device in the same process (sim::SimulatedTransport). A
+// transport only moves bytes; it lives in the session's worker thread.
+#include <QByteArray>
+#include <QObject>
+#include <QString>
+
+namespace imudesk::io {
+
+class Transport : public QObject {
+    Q_OBJECT
+public:
+    using QObject::QObject;
+    ~Transport() override = default;
+
+    // Opens the link at `address` (a port name or path); on failure says why and what to do.
+    virtual bool open(const QString &address, int baud, QString *error) = 0;
+    virtual void close() = 0;
+    virtual bool isOpen() const = 0;
+    virtual bool setBaud(int baud) = 0;
+    virtual int baud() const = 0;
+    // Where the link was opened (the port name as given).
+    virtual QString address() const = 0;
+    virtual qint64 write(const QByteArray &bytes) = 0;
+    // Discards bytes waiting in buffers (both directions).
+    virtual void clear() = 0;
+    // After the link failed: where the same device can be opened again now (a USB adapter may
+    // come back under another name); empty while it is not there.
+    virtual QString locateAgain() const { return address(); }
+    // Opens the link again where locateAgain() finds the device, at `baud`. False while the
+    // device is not there (error empty) or cannot be opened yet (error says why).
+    virtual bool reopen(int baud, QString *error) = 0;
+
+Q_SIGNALS:
+    void bytesReceived(const QByteArray &bytes);
+    // The link failed while open (unplugged cable, I/O error).
+    void failed(const QString &message);
+};
+
+} // namespace imudesk::io
