@@ -2004,7 +2004,7 @@
 <context>
     <name>MagCalProcedure</name>
     <message>
-        <location filename="../core/calib/mag_cal_procedure.cpp" line="+57" />
+        <location filename="../core/calib/mag_cal_procedure.cpp" line="+59" />
         <source>1. Check the field at the calibration spot: hold the module still and read |B|; 20-60 uT is normal. Below 20 or above 60 uT a magnetic object is near: move away from it or choose another place.
 2. Check the rotation: turn about every axis at least 360 deg at 20-100 deg/s, without pausing.
 3. Check for spatial interference: measure |B| at the same spot in different orientations. If it varies by more than 10 uT, choose another place or use 6-axis mode.
@@ -3340,7 +3340,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>UpdateFlow</name>
     <message>
-        <location filename="../core/firmware/update_flow.cpp" line="+35" />
+        <location filename="../core/firmware/update_flow.cpp" line="+36" />
         <location line="+196" />
         <location line="+174" />
         <source>unknown</source>
@@ -3669,7 +3669,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::calib::GyroCalSession</name>
     <message>
-        <location filename="../core/calib/gyro_cal_session.cpp" line="+23" />
+        <location filename="../core/calib/gyro_cal_session.cpp" line="+24" />
         <source>The angle must be %1..%2 deg (2 to 5 turns); %3 is not.</source>
         <translation>角度必須在 %1..%2 deg 之間（2 至 5 圈）；%3 不符合。</translation>
     </message>
@@ -4175,9 +4175,47 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
 </context>
 <context>
+    <name>imudesk::device::Hec495Family</name>
+    <message>
+        <location filename="../core/device/hec495_family.cpp" line="+77" />
+        <source>the request's data is longer than a Witlink frame can carry</source>
+        <translation>請求的資料超過 Witlink 幀可承載的長度</translation>
+    </message>
+    <message>
+        <location line="+26" />
+        <source>no HEC495 answered on %1 at %2 baud: check the wiring (RS-232 TXD/RXD or RS-485 A/B), the power, the baud rate and the module address (%3)</source>
+        <translation>%1 上沒有 HEC495 以波特率 %2 回應：請檢查接線（RS-232 TXD/RXD 或 RS-485 A/B）、電源、波特率和模組位址（%3）</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>any supported</source>
+        <translation>任一支援值</translation>
+    </message>
+    <message>
+        <location line="+105" />
+        <source>no reply to "%1" after %2 attempts of %3 ms (check the baud rate and the module address; an RS-485 module that streams may miss commands: set question/answer mode)</source>
+        <translation>嘗試 %2 次（每次 %3 ms）後仍未收到「%1」的回應（請檢查波特率和模組位址；持續輸出資料的 RS-485 模組可能漏收指令：請設為問答模式）</translation>
+    </message>
+    <message>
+        <location line="+141" />
+        <source>the module answered with an invalid reply: %1</source>
+        <translation>模組的回應無效：%1</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>the module reported failure (FF) for "%1"</source>
+        <translation>模組回報「%1」失敗（FF）</translation>
+    </message>
+    <message>
+        <location line="+17" />
+        <source>the module streams: identified without a request</source>
+        <translation>模組正在持續輸出：無需請求即已識別</translation>
+    </message>
+</context>
+<context>
     <name>imudesk::device::Hec495Session</name>
     <message>
-        <location filename="../core/device/hec495_session.cpp" line="+93" />
+        <location filename="../core/device/hec495_session.cpp" line="+83" />
         <source>the declination must be between -99.9 and 99.9 degrees (got %1)</source>
         <translation>磁偏角必須在 -99.9 到 99.9 度之間（收到 %1）</translation>
     </message>
@@ -4203,56 +4241,63 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
 </context>
 <context>
-    <name>imudesk::device::Hec495Worker</name>
+    <name>imudesk::device::HipnucSerialFamily</name>
     <message>
-        <location filename="../core/device/hec495_worker.cpp" line="+166" />
-        <source>no HEC495 answered on %1 at %2 baud: check the wiring (RS-232 TXD/RXD or RS-485 A/B), the power, the baud rate and the module address (%3)</source>
-        <translation>%1 上沒有 HEC495 以波特率 %2 回應：請檢查接線（RS-232 TXD/RXD 或 RS-485 A/B）、電源、波特率和模組位址（%3）</translation>
+        <location filename="../core/device/hipnuc_family.cpp" line="+147" />
+        <source>The device that came back on %1 is a different one (serial %2, before %3). Its data continues in this session.</source>
+        <translation>%1 上重新出現的是另一台裝置（序號 %2，之前為 %3）。其資料將繼續記錄在此工作階段中。</translation>
     </message>
     <message>
-        <location line="+3" />
-        <source>any supported</source>
-        <translation>任一支援值</translation>
+        <location line="+28" />
+        <source>no reply within %1 ms (the device ignores commands it does not know)</source>
+        <translation>%1 ms 內無回應（裝置不回應它不認識的指令）</translation>
     </message>
     <message>
-        <location line="+16" />
-        <source>the connection was closed</source>
-        <translation>連線已關閉</translation>
+        <location filename="../core/device/hipnuc_family_baud.cpp" line="+35" />
+        <source>No HiPNUC device answered on %1 at any baud rate (115200, 921600, 460800, 230400, 256000, 57600, 38400, 19200, 9600, 4800). Check the cable and the power, and that no other program uses the port.</source>
+        <translation>%1 上在所有波特率（115200、921600、460800、230400、256000、57600、38400、19200、9600、4800）下都沒有 HiPNUC 裝置回應。請檢查線材和電源，並確認沒有其他程式占用該串列埠。</translation>
     </message>
     <message>
-        <location line="+55" />
-        <source>the request's data is longer than a Witlink frame can carry</source>
-        <translation>請求的資料超過 Witlink 幀可承載的長度</translation>
+        <location line="+13" />
+        <source>trying %1 baud</source>
+        <translation>正在嘗試 %1 波特率</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+46" />
+        <source>%1 at %2 baud</source>
+        <translation>%1，波特率 %2</translation>
+    </message>
+    <message>
+        <location line="+11" />
+        <location line="+50" />
         <source>the port is not open</source>
         <translation>串列埠未開啟</translation>
     </message>
     <message>
-        <location line="+46" />
-        <source>writing to the port failed</source>
-        <translation>寫入串列埠失敗</translation>
+        <location line="-32" />
+        <source>the device refused SERIALCONFIG %1 (%2) and stays at %3 baud</source>
+        <translation>裝置拒絕了 SERIALCONFIG %1（%2），仍維持波特率 %3</translation>
     </message>
     <message>
-        <location line="+38" />
-        <source>no reply to "%1" after %2 attempts of %3 ms (check the baud rate and the module address; an RS-485 module that streams may miss commands: set question/answer mode)</source>
-        <translation>嘗試 %2 次（每次 %3 ms）後仍未收到「%1」的回應（請檢查波特率和模組位址；持續輸出資料的 RS-485 模組可能漏收指令：請設為問答模式）</translation>
+        <location line="+11" />
+        <location line="+34" />
+        <source>the device answers at %1 baud</source>
+        <translation>裝置在波特率 %1 下回應</translation>
     </message>
     <message>
-        <location line="+148" />
-        <source>the module answered with an invalid reply: %1</source>
-        <translation>模組的回應無效：%1</translation>
+        <location line="-29" />
+        <source>the device did not answer at %1 baud; it answers at %2 baud</source>
+        <translation>裝置在波特率 %1 下無回應；改在波特率 %2 下回應</translation>
     </message>
     <message>
-        <location line="+3" />
-        <source>the module reported failure (FF) for "%1"</source>
-        <translation>模組回報「%1」失敗（FF）</translation>
+        <location line="+5" />
+        <source>the device answers neither at %1 nor at %2 baud nor at any other rate: check the cable and power-cycle it</source>
+        <translation>裝置在波特率 %1、%2 及其他任何速率下均無回應：請檢查纜線，並將裝置斷電重啟</translation>
     </message>
     <message>
-        <location line="+19" />
-        <source>the module streams: identified without a request</source>
-        <translation>模組正在持續輸出：無需請求即已識別</translation>
+        <location line="+25" />
+        <source>the device does not answer at any baud rate</source>
+        <translation>裝置在任何波特率下均無回應</translation>
     </message>
 </context>
 <context>
@@ -4399,100 +4444,53 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
 </context>
 <context>
-    <name>imudesk::device::SessionWorker</name>
+    <name>imudesk::device::SessionEngine</name>
     <message>
-        <location filename="../core/device/session_worker.cpp" line="+128" />
+        <location filename="../core/device/session_engine.cpp" line="+107" />
         <source>the connection was closed</source>
         <translation>連線已關閉</translation>
     </message>
     <message>
-        <location line="+31" />
-        <source>automatic reconnection was turned off</source>
-        <translation>自動重新連線已關閉</translation>
-    </message>
-    <message>
-        <location line="+19" />
-        <location filename="../core/device/session_worker_baud.cpp" line="+25" />
-        <location line="+49" />
-        <source>the port is not open</source>
-        <translation>串列埠未開啟</translation>
-    </message>
-    <message>
-        <location line="+26" />
-        <source>writing to the port failed</source>
-        <translation>寫入串列埠失敗</translation>
-    </message>
-    <message>
-        <location line="+29" />
-        <source>no reply within %1 ms (the device ignores commands it does not know)</source>
-        <translation>%1 ms 內無回應（裝置不回應它不認識的指令）</translation>
-    </message>
-    <message>
-        <location line="+226" />
-        <source>The device that came back on %1 is a different one (serial %2, before %3). Its data continues in this session.</source>
-        <translation>%1 上重新出現的是另一台裝置（序號 %2，之前為 %3）。其資料將繼續記錄在此工作階段中。</translation>
-    </message>
-    <message>
-        <location line="+14" />
+        <location line="+33" />
         <source>disconnected — waiting for the device to come back</source>
         <translation>已中斷連線，正在等待裝置重新連線</translation>
     </message>
     <message>
-        <location line="+33" />
+        <location line="+10" />
+        <source>automatic reconnection was turned off</source>
+        <translation>自動重新連線已關閉</translation>
+    </message>
+    <message>
+        <location line="+30" />
         <source>%1 at %2 baud (reconnected)</source>
         <translation>%1，波特率 %2（已重新連線）</translation>
     </message>
     <message>
-        <location line="+144" />
+        <location line="+45" />
+        <source>the port is not open</source>
+        <translation>串列埠未開啟</translation>
+    </message>
+    <message>
+        <location line="+51" />
+        <source>writing to the port failed</source>
+        <translation>寫入串列埠失敗</translation>
+    </message>
+    <message>
+        <location line="+18" />
+        <source>no reply within %1 ms</source>
+        <translation>%1 ms 內沒有回應</translation>
+    </message>
+    <message>
+        <location line="+83" />
         <source>Bytes keep arriving on %1 but none of them form a frame: the device probably runs at another baud rate now. Disconnect and connect again with the baud rate set to Auto.</source>
         <translation>%1 上持續收到位元組，但無法組成任何資料框：裝置可能已改用其他波特率。請中斷連線，並將波特率設為「自動」後重新連線。</translation>
-    </message>
-    <message>
-        <location line="+64" />
-        <source>No HiPNUC device answered on %1 at any baud rate (115200, 921600, 460800, 230400, 256000, 57600, 38400, 19200, 9600, 4800). Check the cable and the power, and that no other program uses the port.</source>
-        <translation>%1 上在所有波特率（115200、921600、460800、230400、256000、57600、38400、19200、9600、4800）下都沒有 HiPNUC 裝置回應。請檢查線材和電源，並確認沒有其他程式占用該串列埠。</translation>
-    </message>
-    <message>
-        <location line="+17" />
-        <source>trying %1 baud</source>
-        <translation>正在嘗試 %1 波特率</translation>
-    </message>
-    <message>
-        <location line="+54" />
-        <source>%1 at %2 baud</source>
-        <translation>%1，波特率 %2</translation>
-    </message>
-    <message>
-        <location filename="../core/device/session_worker_baud.cpp" line="-33" />
-        <source>the device refused SERIALCONFIG %1 (%2) and stays at %3 baud</source>
-        <translation>裝置拒絕了 SERIALCONFIG %1（%2），仍維持波特率 %3</translation>
-    </message>
-    <message>
-        <location line="+11" />
-        <location line="+34" />
-        <source>the device answers at %1 baud</source>
-        <translation>裝置在波特率 %1 下回應</translation>
-    </message>
-    <message>
-        <location line="-29" />
-        <source>the device did not answer at %1 baud; it answers at %2 baud</source>
-        <translation>裝置在波特率 %1 下無回應；改在波特率 %2 下回應</translation>
-    </message>
-    <message>
-        <location line="+5" />
-        <source>the device answers neither at %1 nor at %2 baud nor at any other rate: check the cable and power-cycle it</source>
-        <translation>裝置在波特率 %1、%2 及其他任何速率下均無回應：請檢查纜線，並將裝置斷電重啟</translation>
-    </message>
-    <message>
-        <location line="+25" />
-        <source>the device does not answer at any baud rate</source>
-        <translation>裝置在任何波特率下均無回應</translation>
     </message>
 </context>
 <context>
     <name>imudesk::io::SerialTransport</name>
     <message>
-        <location filename="../core/io/serial_transport.cpp" line="+26" />
+        <location filename="../core/io/serial_transport.cpp" line="+27" />
+        <location filename="../core/sim/simulated_transport.cpp" line="+21" />
         <source>Port %1 was not found. Check that the device is plugged in and choose the port again from the list.</source>
         <translation>找不到串列埠 %1。請檢查裝置是否已插好，然後從清單中重新選擇串列埠。</translation>
     </message>
@@ -4512,7 +4510,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>無法開啟 %1：%2</translation>
     </message>
     <message>
-        <location line="+147" />
+        <location line="+206" />
         <source>The connection to %1 was lost (%2). Check the cable; everything received so far is kept.</source>
         <translation>與 %1 的連線已中斷（%2）。請檢查線材；已接收的資料都會保留。</translation>
     </message>
@@ -5189,7 +5187,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::settings::ConfigurationController</name>
     <message>
-        <location filename="../core/settings/configuration_controller.cpp" line="+23" />
+        <location filename="../core/settings/configuration_controller.cpp" line="+24" />
         <source>verified</source>
         <translation>已驗證</translation>
     </message>
@@ -5335,6 +5333,14 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
 </context>
 <context>
+    <name>imudesk::sim::SimulatedTransport</name>
+    <message>
+        <location filename="../core/sim/simulated_transport.cpp" line="+55" />
+        <source>The connection to %1 was lost (simulated unplug). Check the cable; everything received so far is kept.</source>
+        <translation>與 %1 的連線已中斷（模擬拔除）。請檢查線纜；已收到的資料全部保留。</translation>
+    </message>
+</context>
+<context>
     <name>imudesk::ui::AnalysisWindow</name>
     <message>
         <location filename="../ui/analysis_window.cpp" line="+27" />
@@ -5446,7 +5452,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::AttitudeResetWizard</name>
     <message>
-        <location filename="../ui/attitude_reset_wizard.cpp" line="+22" />
+        <location filename="../ui/attitude_reset_wizard.cpp" line="+23" />
         <source>Heading reset: the current heading becomes 0. Keep the module still. (Firmware 1.7.1 and later.)</source>
         <translation>航向角重設：目前航向角歸零。請保持模組靜止。（韌體 1.7.1 及以上版本。）</translation>
     </message>
@@ -5602,12 +5608,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
     <message>
         <location line="+1" />
-        <location line="+383" />
+        <location line="+381" />
         <source>ENU 3-1-2</source>
         <translation>ENU 3-1-2</translation>
     </message>
     <message>
-        <location line="-381" />
+        <location line="-379" />
         <source>N (x)</source>
         <translation>N (x)</translation>
     </message>
@@ -5623,12 +5629,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
     <message>
         <location line="+1" />
-        <location line="+379" />
+        <location line="+377" />
         <source>NED 3-2-1</source>
         <translation>NED 3-2-1</translation>
     </message>
     <message>
-        <location line="-377" />
+        <location line="-375" />
         <source>No attitude yet</source>
         <translation>尚無姿態資料</translation>
     </message>
@@ -5658,7 +5664,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>拖曳以旋轉檢視，按兩下以重設</translation>
     </message>
     <message>
-        <location line="+383" />
+        <location line="+381" />
         <source>Reset view</source>
         <translation>重設檢視</translation>
     </message>
@@ -6355,7 +6361,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::ChartPanel</name>
     <message>
-        <location filename="../ui/chart_panel.cpp" line="+139" />
+        <location filename="../ui/chart_panel.cpp" line="+138" />
         <source>Charts</source>
         <translation>圖表</translation>
     </message>
@@ -6667,7 +6673,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>將此圖表儲存為 PNG 影像</translation>
     </message>
     <message>
-        <location line="+188" />
+        <location line="+186" />
         <source>m/s²</source>
         <translation>m/s²</translation>
     </message>
@@ -7783,7 +7789,7 @@ Link load = bytes per second × 10 bits / baud rate.</source>
         <translation>陀螺儀資料：%1 Hz，太慢，無法追蹤轉動（ImuDesk 需要 %2 Hz 或以上）。請以 100 Hz 開啟 HI91 輸出。</translation>
     </message>
     <message>
-        <location line="+14" />
+        <location line="+13" />
         <source>Sending LOG HI91 ONTIME 0.01…</source>
         <translation>正在傳送 LOG HI91 ONTIME 0.01…</translation>
     </message>
@@ -8522,7 +8528,7 @@ Samples: %3</source>
 <context>
     <name>imudesk::ui::MainWindow</name>
     <message>
-        <location filename="../ui/main_window.cpp" line="+341" />
+        <location filename="../ui/main_window.cpp" line="+351" />
         <source>Choose a port first.</source>
         <translation>請先選擇串列埠。</translation>
     </message>

@@ -1,6 +1,6 @@
 #include "device_session.h"
 
-#include "device/session_worker.h"
+#include "device/hipnuc_family.h"
 
 namespace imudesk::device {
 
@@ -20,64 +20,34 @@ const char *stateName(SessionState s)
 
 const std::vector<int> &DeviceSession::detectionBauds()
 {
-    static const std::vector<int> bauds = {115200, 921600, 460800, 230400, 256000, 57600, 38400, 19200, 9600, 4800};
-    return bauds;
+    return HipnucSerialFamily::detectionBauds();
 }
 
-DeviceSession::DeviceSession(QObject *parent) : DeviceLink(parent)
+DeviceSession::DeviceSession(QObject *parent, std::unique_ptr<io::Transport> transport)
+    : Session(std::make_unique<HipnucSerialFamily>(), std::move(transport), QStringLiteral("imudesk-session"),
+              HipnucSerialFamily::kLineIdleMs, parent)
 {
     qRegisterMetaType<protocol::hipnuc::AsciiReply>();
-
-    m_thread.setObjectName(QStringLiteral("imudesk-session"));
-    m_worker = new SessionWorker(store(), m_rawLog);
-    m_worker->moveToThread(&m_thread);
-    connect(&m_thread, &QThread::finished, m_worker, &QObject::deleteLater);
-
-    connect(m_worker, &SessionWorker::stateChanged, this, [this](SessionState s, const QString &detail) {
-        setState(s, detail);
+    auto *f = static_cast<HipnucSerialFamily *>(family());
+    connect(this, &Session::requestFinished, this, [this](const RequestResult &r) {
+        Q_EMIT commandFinished(r.id, r.reply.value<protocol::hipnuc::AsciiReply>());
     });
-    connect(m_worker, &SessionWorker::baudDetected, this, &DeviceSession::baudDetected);
-    connect(m_worker, &SessionWorker::identityChanged, this, &DeviceSession::identityChanged);
-    connect(m_worker, &SessionWorker::identityQueryFinished, this, &DeviceSession::identityQueryFinished);
-    connect(m_worker, &SessionWorker::commandFinished, this, &DeviceSession::commandFinished);
-    connect(m_worker, &SessionWorker::statsUpdated, this, &DeviceSession::statsUpdated);
-    connect(m_worker, &SessionWorker::nmeaReceived, this, &DeviceSession::nmeaReceived);
-    connect(m_worker, &SessionWorker::textReceived, this, &DeviceSession::textReceived);
-    connect(m_worker, &SessionWorker::errorOccurred, this, &DeviceSession::errorOccurred);
-    connect(m_worker, &SessionWorker::reconnected, this, &DeviceSession::reconnected);
-    connect(m_worker, &SessionWorker::baudChangeFinished, this, &DeviceSession::baudChangeFinished);
-    connect(m_worker, &SessionWorker::linkRecovered, this, &DeviceSession::linkRecovered);
-    connect(m_worker, &SessionWorker::recordingStarted, this, &DeviceSession::recordingStarted);
-    connect(m_worker, &SessionWorker::recordingStopped, this, &DeviceSession::recordingStopped);
-    connect(m_worker, &SessionWorker::recordingProgress, this, &DeviceSession::recordingProgress);
-    m_thread.start();
-}
-
-DeviceSession::~DeviceSession()
-{
-    QMetaObject::invokeMethod(m_worker, &SessionWorker::close, Qt::BlockingQueuedConnection);
-    m_thread.quit();
-    m_thread.wait();
+    connect(f, &HipnucSerialFamily::baudDetected, this, &DeviceSession::baudDetected);
+    connect(f, &HipnucSerialFamily::identityQueryFinished, this, &DeviceSession::identityQueryFinished);
+    connect(f, &HipnucSerialFamily::nmeaReceived, this, &DeviceSession::nmeaReceived);
+    connect(f, &HipnucSerialFamily::textReceived, this, &DeviceSession::textReceived);
+    connect(f, &HipnucSerialFamily::baudChangeFinished, this, &DeviceSession::baudChangeFinished);
+    connect(f, &HipnucSerialFamily::linkRecovered, this, &DeviceSession::linkRecovered);
 }
 
 void DeviceSession::open(const QString &portName, int baud)
 {
-    QMetaObject::invokeMethod(m_worker, [w = m_worker, portName, baud] { w->open(portName, baud); },
-                              Qt::QueuedConnection);
-}
-
-void DeviceSession::close()
-{
-    QMetaObject::invokeMethod(m_worker, &SessionWorker::close, Qt::QueuedConnection);
+    openLink(portName, baud);
 }
 
 quint64 DeviceSession::sendCommand(const QString &text, int timeoutMs)
 {
-    const quint64 id = m_nextId++;
-    QMetaObject::invokeMethod(
-        m_worker, [w = m_worker, id, text, timeoutMs] { w->sendCommand(id, text, timeoutMs); },
-        Qt::QueuedConnection);
-    return id;
+    return sendCommand(protocol::hipnuc::commands::typed(text.toStdString()), timeoutMs);
 }
 
 quint64 DeviceSession::sendCommand(const protocol::hipnuc::Command &command, int timeoutMs, QString *error)
@@ -87,42 +57,22 @@ quint64 DeviceSession::sendCommand(const protocol::hipnuc::Command &command, int
             *error = QString::fromStdString(command.error);
         return 0;
     }
-    return sendCommand(QString::fromStdString(command.text), timeoutMs);
+    return submit(HipnucSerialFamily::makeRequest(command, timeoutMs));
 }
 
 void DeviceSession::setHostBaud(int baud)
 {
-    QMetaObject::invokeMethod(m_worker, [w = m_worker, baud] { w->setHostBaud(baud); }, Qt::QueuedConnection);
+    inFamily<HipnucSerialFamily>([baud](HipnucSerialFamily &f) { f.setHostBaud(baud); });
 }
 
 void DeviceSession::changeBaud(int baud)
 {
-    QMetaObject::invokeMethod(m_worker, [w = m_worker, baud] { w->changeBaud(baud); }, Qt::QueuedConnection);
+    inFamily<HipnucSerialFamily>([baud](HipnucSerialFamily &f) { f.changeBaud(baud); });
 }
 
 void DeviceSession::recoverLink(const QList<int> &bauds, int settleMs)
 {
-    QMetaObject::invokeMethod(
-        m_worker, [w = m_worker, bauds, settleMs] { w->recoverLink(bauds, settleMs); }, Qt::QueuedConnection);
-}
-
-void DeviceSession::setAutoReconnect(bool on)
-{
-    m_autoReconnect = on;
-    QMetaObject::invokeMethod(m_worker, [w = m_worker, on] { w->setAutoReconnect(on); }, Qt::QueuedConnection);
-}
-
-void DeviceSession::startRecording(const QString &path, const record::CaptureHeader &header,
-                                   const record::CaptureWriter::Options &options)
-{
-    QMetaObject::invokeMethod(
-        m_worker, [w = m_worker, path, header, options] { w->startRecording(path, header, options); },
-        Qt::QueuedConnection);
-}
-
-void DeviceSession::stopRecording()
-{
-    QMetaObject::invokeMethod(m_worker, &SessionWorker::stopRecording, Qt::QueuedConnection);
+    inFamily<HipnucSerialFamily>([bauds, settleMs](HipnucSerialFamily &f) { f.recoverLink(bauds, settleMs); });
 }
 
 } // namespace imudesk::device

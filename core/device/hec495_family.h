@@ -19,6 +19,7 @@
 //     other request is pending; auto-output frames (84 angles, 14 record) become samples.
 #include "device/family_plugin.h"
 #include "device/hec495_result.h"
+#include "model/sample.h"
 #include "protocol/witlink/frame_decoder.h"
 
 #include <QElapsedTimer>

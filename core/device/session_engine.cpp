@@ -1,5 +1,7 @@
 #include "session_engine.h"
 
+#include "device/stream_counters.h"
+
 #include <QCoreApplication>
 #include <QDateTime>
 #include <QLoggingCategory>
@@ -390,14 +392,7 @@ void SessionEngine::publishStats()
     const qint64 nowMs = m_statsClock.isValid() ? m_statsClock.elapsed() : 0;
     const double dt = double(nowMs - m_lastStatsMs) / 1000.0;
     if (dt > 0.05) {
-        // Counters may start again (a new decoder): never a negative rate.
-        for (const auto &[name, count] : s.framesByType) {
-            const auto it = m_lastStats.framesByType.find(name);
-            const uint64_t before = it == m_lastStats.framesByType.end() ? 0 : std::min(count, it->second);
-            s.rateByType[name] = double(count - before) / dt;
-        }
-        s.bytesPerSecond = double(s.bytesIn - std::min(s.bytesIn, m_lastStats.bytesIn)) / dt;
-        s.linkLoad = s.baud > 0 ? s.bytesPerSecond * 10.0 / s.baud : 0;
+        addRates(s, m_lastStats, dt);
         watchForGarbage(s, nowMs);
         m_lastStats = s;
         m_lastStatsMs = nowMs;

@@ -1,5 +1,6 @@
 #include "replay_worker.h"
 
+#include "device/stream_counters.h"
 #include "protocol/hipnuc/frame_decoder.h"
 
 #include <QFileInfo>
@@ -250,41 +251,18 @@ void ReplayWorker::reportPosition(bool force)
 void ReplayWorker::publishStats()
 {
     device::SessionStats s;
-    const auto &fc = m_decoder.demux().frameCounters();
-    const auto &dc = m_decoder.demux().counters();
-    s.bytesIn = fc.bytesIn;
-    s.frames = fc.frames;
-    s.crcErrors = fc.crcErrors;
-    s.lengthErrors = fc.lengthErrors;
-    s.bytesSkipped = fc.bytesSkipped;
-    s.nmeaSentences = dc.nmeaSentences;
-    s.nmeaErrors = dc.nmeaErrors;
-    s.payloadErrors = m_decoder.payloadErrors();
-    for (int tag = 0; tag < 256; ++tag) {
-        if (!fc.perTag[size_t(tag)])
-            continue;
-        char name[8];
-        std::snprintf(name, sizeof name, "HI%02X", tag);
-        s.framesByType[name] = fc.perTag[size_t(tag)];
-    }
-    if (dc.nmeaSentences)
-        s.framesByType["NMEA"] = dc.nmeaSentences;
-    s.framesLost = m_gaps.lost();
-    s.framesLostByType = m_gaps.lostByType();
-    s.deviceResets = m_gaps.resets();
+    device::fillStreamCounters(m_decoder.demux(), m_decoder.payloadErrors(), m_gaps, s);
     s.baud = m_baud;
     const qint64 nowMs = m_statsClock.isValid() ? m_statsClock.elapsed() : 0;
     const double dt = double(nowMs - m_lastStatsMs) / 1000.0;
     if (dt > 0.05) {
-        for (const auto &[name, count] : s.framesByType) {
-            const auto it = m_lastStats.framesByType.find(name);
-            const uint64_t before = it == m_lastStats.framesByType.end() ? 0 : it->second;
-            s.rateByType[name] = double(count >= before ? count - before : count) / dt;
-        }
-        s.bytesPerSecond = double(s.bytesIn >= m_lastStats.bytesIn ? s.bytesIn - m_lastStats.bytesIn : 0) / dt;
-        s.linkLoad = s.baud > 0 ? s.bytesPerSecond * 10.0 / s.baud : 0;
+        device::addRates(s, m_lastStats, dt);
         m_lastStats = s;
         m_lastStatsMs = nowMs;
+    } else {
+        s.rateByType = m_lastStats.rateByType;
+        s.bytesPerSecond = m_lastStats.bytesPerSecond;
+        s.linkLoad = m_lastStats.linkLoad;
     }
     Q_EMIT statsUpdated(s);
 }

@@ -12,6 +12,50 @@ Q_DECLARE_METATYPE(Command)
 class TstAsciiCommand : public QObject {
     Q_OBJECT
 private Q_SLOTS:
+    // The output effect a command carries (the lost-frame counter follows it): from the typed
+    // builders, and read from the words of text a user typed.
+    void outputEffect_data()
+    {
+        QTest::addColumn<Command>("cmd");
+        QTest::addColumn<bool>("changes");
+        QTest::addColumn<bool>("thisPort");
+        QTest::addColumn<QString>("message");
+        QTest::addColumn<double>("period");
+        namespace c = commands;
+        QTest::newRow("builder ontime") << c::logOnTime(Message::HI91, 0.01) << true << true << "HI91" << 0.01;
+        QTest::newRow("builder onmark") << c::logOnMark(Message::HI83, true) << true << true << "HI83" << -1.0;
+        QTest::newRow("builder map") << c::logHi83Map(0x1) << true << true << "HI83" << -1.0;
+        QTest::newRow("builder reboot") << c::reboot() << true << true << "" << -1.0;
+        QTest::newRow("builder serial") << c::serialConfig(921600) << true << true << "" << -1.0;
+        QTest::newRow("builder version") << c::logVersion() << false << true << "" << -1.0;
+        QTest::newRow("builder save") << c::saveConfig() << false << true << "" << -1.0;
+        QTest::newRow("typed ontime") << c::typed("  log hi92 ontime 0.005 ") << true << true << "HI92" << 0.005;
+        QTest::newRow("typed other port") << c::typed("LOG COM2 HI91 ONTIME 0.1") << true << false << "HI91" << 0.1;
+        QTest::newRow("typed disable") << c::typed("LOG DISABLE") << true << true << "" << -1.0;
+        QTest::newRow("typed query") << c::typed("LOG MCAL STAT") << false << true << "" << -1.0;
+        QTest::newRow("typed freset") << c::typed("freset") << true << true << "" << -1.0;
+        QTest::newRow("typed config") << c::typed("CONFIG ATT MODE 1") << false << true << "" << -1.0;
+        QTest::newRow("typed bad period") << c::typed("LOG HI91 ONTIME 0,01") << true << true << "HI91" << -1.0;
+    }
+    void outputEffect()
+    {
+        QFETCH(Command, cmd);
+        QFETCH(bool, changes);
+        QFETCH(bool, thisPort);
+        QFETCH(QString, message);
+        QFETCH(double, period);
+        QVERIFY(cmd.ok());
+        QCOMPARE(cmd.effect.changesOutput, changes);
+        QCOMPARE(cmd.effect.thisPort, thisPort);
+        QCOMPARE(QString::fromStdString(cmd.effect.message), message);
+        QCOMPARE(cmd.effect.periodS, period);
+    }
+    void typedKeepsTheText()
+    {
+        QCOMPARE(QString::fromStdString(commands::typed("  log hi92 ontime 0.005 \r\n").text),
+                 QStringLiteral("log hi92 ontime 0.005"));
+    }
+
     void valid_data()
     {
         QTest::addColumn<Command>("cmd");

@@ -1,0 +1,295 @@
+#include "hipnuc_family.h"
+
+#include "device/session_engine.h"
+#include "device/stream_counters.h"
+#include "protocol/hipnuc/frame_decoder.h"
+#include "protocol/hipnuc/payloads.h"
+
+#include <utility>
+
+namespace imudesk::device {
+
+using protocol::StreamEvent;
+namespace hp = protocol::hipnuc;
+
+namespace {
+
+constexpr int kListenMs = 150;
+constexpr int kIdentityTimeoutMs = 1000;
+// A configured rate whose frames need more of the line than this cannot all arrive, so the
+// frames that do no longer show the period: the gap counter is told the configured one.
+constexpr double kSaturatedLinkLoad = 0.9;
+
+const hp::Command &commandOf(const Request &r)
+{
+    return *std::any_cast<hp::Command>(&r.command);
+}
+
+size_t defaultFrameBytes(const std::string &message)
+{
+    const size_t header = hp::FrameDecoder::kHeaderSize;
+    if (message == "HI91")
+        return hp::Hi91::kSize + header;
+    if (message == "HI92")
+        return hp::Hi92::kSize + header;
+    if (message == "HI81")
+        return hp::Hi81::kSize + header;
+    return 0; // HI83: its size depends on the MAP
+}
+
+} // namespace
+
+const std::vector<int> &HipnucSerialFamily::detectionBauds()
+{
+    static const std::vector<int> bauds = {115200, 921600, 460800, 230400, 256000, 57600, 38400, 19200, 9600, 4800};
+    return bauds;
+}
+
+Request HipnucSerialFamily::makeRequest(const hp::Command &command, int timeoutMs,
+                                        std::function<void(const Reply &)> done)
+{
+    Request r;
+    r.wire = QByteArray::fromStdString(command.wire());
+    r.timeoutMs = timeoutMs;
+    r.command = command;
+    if (done)
+        r.done = [done = std::move(done)](const RequestResult &res) { done(res.reply.value<Reply>()); };
+    return r;
+}
+
+HipnucSerialFamily::HipnucSerialFamily()
+{
+    m_detectTimer.setSingleShot(true);
+}
+
+// ---------------------------------------------------------------------------------------
+// The link
+
+int HipnucSerialFamily::firstBaud(int requestedBaud) const
+{
+    return requestedBaud > 0 ? requestedBaud : detectionBauds().front();
+}
+
+void HipnucSerialFamily::opened(int requestedBaud)
+{
+    m_deviceSerial.clear();
+    m_checkSameDevice = false;
+    const QString port = engine().transport().address();
+    if (requestedBaud > 0) {
+        engine().setWorkingBaud(requestedBaud);
+        engine().setState(SessionState::Connected, port);
+        listenThenQueryIdentity();
+    } else {
+        m_detecting = true;
+        engine().setState(SessionState::Detecting, port);
+        detectAt(0);
+    }
+}
+
+void HipnucSerialFamily::stopping()
+{
+    m_detecting = false;
+    m_detectTimer.stop();
+    m_detectTimer.disconnect();
+    if (LinkDone done = std::exchange(m_afterDetect, {}))
+        done(false, 0);
+}
+
+void HipnucSerialFamily::reconnected()
+{
+    m_checkSameDevice = true;
+    listenThenQueryIdentity();
+}
+
+void HipnucSerialFamily::setHostBaud(int baud)
+{
+    if (!engine().transport().isOpen())
+        return;
+    engine().transport().setBaud(baud);
+    engine().setWorkingBaud(baud);
+    restartStream(); // bytes were lost while the two sides disagreed
+    engine().publishStats();
+}
+
+void HipnucSerialFamily::listenThenQueryIdentity()
+{
+    // Listen first, as the detection does: joining a stream mid-frame, the tail of that
+    // frame must not be mistaken for the start of the reply.
+    m_detectTimer.disconnect();
+    connect(&m_detectTimer, &QTimer::timeout, this, [this] { queryIdentity(1); });
+    m_detectTimer.start(kListenMs);
+}
+
+void HipnucSerialFamily::queryIdentity(int attempt)
+{
+    constexpr int kAttempts = 3;
+    engine().submit(makeRequest(hp::commands::logVersion(), kIdentityTimeoutMs, [this, attempt](const Reply &r) {
+        bool answered = false;
+        if (r.ok()) {
+            const auto id = model::DeviceIdentity::fromKeyValues(r.values);
+            answered = id.usable();
+            if (answered)
+                noteIdentity(id);
+        }
+        // An OK whose lines were damaged (noise on the line) is asked again; silence is not.
+        if (!answered && r.status == Reply::Status::Ok && attempt < kAttempts) {
+            queryIdentity(attempt + 1);
+            return;
+        }
+        Q_EMIT identityQueryFinished(answered);
+    }));
+}
+
+void HipnucSerialFamily::noteIdentity(const model::DeviceIdentity &id)
+{
+    // A path without a USB serial number may come back with another module behind it.
+    if (m_checkSameDevice && !m_deviceSerial.empty() && !id.serial.empty() && id.serial != m_deviceSerial)
+        engine().reportError(tr("The device that came back on %1 is a different one (serial %2, before %3). Its data "
+                                "continues in this session.")
+                                 .arg(engine().transport().address(), QString::fromStdString(id.serial),
+                                      QString::fromStdString(m_deviceSerial)));
+    m_checkSameDevice = false;
+    if (!id.serial.empty())
+        m_deviceSerial = id.serial;
+    engine().setIdentity(id);
+}
+
+// ---------------------------------------------------------------------------------------
+// Requests
+
+void HipnucSerialFamily::writing(const Request &r)
+{
+    m_collector.emplace(commandOf(r).text);
+    m_demux.endQuarantine(); // what answers now starts after a boundary the device keeps
+    if (commandOf(r).effect.changesOutput)
+        m_gaps.resetTiming();
+}
+
+void HipnucSerialFamily::unanswered(const Request &r, RequestResult &result)
+{
+    Reply reply = r.attempts > 0 && m_collector ? m_collector->take() : Reply{};
+    reply.command = commandOf(r).text;
+    switch (result.status) {
+    case RequestStatus::Timeout:
+        reply.status = Reply::Status::Timeout;
+        result.message = tr("no reply within %1 ms (the device ignores commands it does not know)").arg(r.timeoutMs);
+        break;
+    case RequestStatus::Cancelled: reply.status = Reply::Status::Cancelled; break;
+    default: reply.status = Reply::Status::NotSent; break;
+    }
+    reply.errorLine = result.message.toStdString();
+    result.reply = QVariant::fromValue(reply);
+}
+
+void HipnucSerialFamily::finished(const Request &r, const RequestResult &result)
+{
+    if (r.attempts > 0)
+        m_collector.reset();
+    if (result.ok())
+        noteCommandDone(commandOf(r).effect);
+}
+
+void HipnucSerialFamily::noteCommandDone(const hp::OutputEffect &c)
+{
+    if (!c.changesOutput)
+        return;
+    m_gaps.resetTiming();
+    if (c.message.empty() || !c.thisPort)
+        return;
+    // Can the link carry the new rate? If not, the frames that arrive no longer show it.
+    double expectedMs = 0;
+    const int baud = engine().transport().baud();
+    if (c.periodS > 0 && baud > 0) {
+        const auto seen = m_frameBytes.find(c.message);
+        const size_t bytes = seen != m_frameBytes.end() ? seen->second : defaultFrameBytes(c.message);
+        const double load = double(bytes) * 10.0 / c.periodS / double(baud);
+        if (bytes > 0 && load > kSaturatedLinkLoad)
+            expectedMs = c.periodS * 1000.0;
+    }
+    m_gaps.setExpectedPeriod(c.message, expectedMs);
+}
+
+// ---------------------------------------------------------------------------------------
+// The stream
+
+void HipnucSerialFamily::restartStream()
+{
+    m_demux.reset();
+    m_gaps.resetTiming(); // an outage or a rate change is not lost frames
+}
+
+void HipnucSerialFamily::resetCounters()
+{
+    m_demux.resetCounters();
+    m_payloadErrors = 0;
+    m_gaps.clear();
+    m_frameBytes.clear();
+}
+
+void HipnucSerialFamily::feed(const QByteArray &bytes, int64_t nowNs)
+{
+    m_events.clear();
+    m_demux.feed(reinterpret_cast<const uint8_t *>(bytes.constData()), size_t(bytes.size()), m_events);
+    handleEvents(nowNs);
+}
+
+void HipnucSerialFamily::lineIdle(int64_t nowNs)
+{
+    m_events.clear();
+    m_demux.flushPending(m_events);
+    m_demux.endQuarantine(); // the line went quiet: the next byte starts something new
+    handleEvents(nowNs);
+}
+
+void HipnucSerialFamily::handleEvents(int64_t nowNs)
+{
+    if (m_events.empty())
+        return;
+    m_batch.clear();
+    for (auto &e : m_events) {
+        switch (e.kind) {
+        case StreamEvent::Kind::Frame: {
+            const size_t first = m_batch.size();
+            const auto res = hp::forEachPacket(e.payload, [&](const hp::Packet &p) {
+                m_batch.push_back(hp::toSample(p));
+                m_batch.back().hostTimeNs = nowNs;
+            });
+            if (!res.ok())
+                ++m_payloadErrors;
+            for (size_t i = first; i < m_batch.size(); ++i) {
+                const model::Sample &sample = m_batch[i];
+                m_frameBytes[sample.source] = e.payload.size() + hp::FrameDecoder::kHeaderSize;
+                if (sample.has(model::FieldDeviceTime))
+                    m_gaps.add(sample.source, sample.deviceTimeMs);
+            }
+            break;
+        }
+        case StreamEvent::Kind::Nmea:
+            Q_EMIT nmeaReceived(QString::fromStdString(e.text));
+            break;
+        case StreamEvent::Kind::NmeaError:
+            break;
+        case StreamEvent::Kind::Line:
+            if (m_collector && engine().current() && m_collector->addLine(e.text)) {
+                RequestResult r;
+                Reply reply = m_collector->take();
+                r.status = reply.ok() ? RequestStatus::Ok : RequestStatus::Refused;
+                if (!reply.ok())
+                    r.message = QString::fromStdString(reply.errorLine);
+                r.reply = QVariant::fromValue(std::move(reply));
+                engine().finishCurrent(std::move(r));
+            } else if (!m_collector) {
+                Q_EMIT textReceived(QString::fromStdString(e.text));
+            }
+            break;
+        }
+    }
+    engine().appendSamples(m_batch);
+}
+
+void HipnucSerialFamily::fillCounters(SessionStats &s) const
+{
+    fillStreamCounters(m_demux, m_payloadErrors, m_gaps, s);
+}
+
+} // namespace imudesk::device

@@ -1,0 +1,103 @@
+#pragma once
+// HiPNUC modules on a serial port as a session-engine family (family_plugin.h): ASCII
+// commands and their replies, binary HI91/HI92/HI81/HI83 frames and NMEA sentences on one
+// stream (protocol::StreamDemux), the baud-rate detection, the safe baud change and the link
+// recovery after a reset (hipnuc_family_baud.cpp), and the lost-frame counter, told by each
+// command's typed output effect (protocol::hipnuc::OutputEffect) when a gap is the command's.
+#include "device/family_plugin.h"
+#include "device/frame_gap_counter.h"
+#include "model/sample.h"
+#include "protocol/hipnuc/ascii_command.h"
+#include "protocol/hipnuc/ascii_reply.h"
+#include "protocol/stream/stream_demux.h"
+
+#include <QList>
+#include <QTimer>
+
+#include <functional>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace imudesk::device {
+
+class HipnucSerialFamily : public FamilyPlugin {
+    Q_OBJECT
+public:
+    // A module sends a frame without pauses, but a USB adapter's latency timer (16 ms on FTDI
+    // parts) and a loaded host can split one in two deliveries tens of ms apart: only a pause
+    // longer than this gives up an unfinished frame (30 ms lost frames under load).
+    static constexpr int kLineIdleMs = 120;
+
+    using Reply = protocol::hipnuc::AsciiReply;
+    // Rates tried by auto-detection, in order.
+    static const std::vector<int> &detectionBauds();
+    static Request makeRequest(const protocol::hipnuc::Command &command, int timeoutMs,
+                               std::function<void(const Reply &)> done = {});
+
+    HipnucSerialFamily();
+
+    // Engine thread.
+    void setHostBaud(int baud);
+    void changeBaud(int baud);
+    void recoverLink(const QList<int> &bauds, int settleMs);
+
+    QString linkKind() const override { return QStringLiteral("HiPNUC serial"); }
+    bool reconnects() const override { return true; }
+    int firstBaud(int requestedBaud) const override;
+    void opened(int requestedBaud) override;
+    void stopping() override;
+    void reconnected() override;
+    void restartStream() override;
+    void resetCounters() override;
+    void feed(const QByteArray &bytes, int64_t nowNs) override;
+    bool midUnit() const override { return m_demux.pendingBytes() > 0; }
+    void lineIdle(int64_t nowNs) override;
+    void fillCounters(SessionStats &s) const override;
+    void writing(const Request &r) override;
+    void unanswered(const Request &r, RequestResult &result) override;
+    void finished(const Request &r, const RequestResult &result) override;
+
+Q_SIGNALS:
+    void baudDetected(int baud);
+    void identityQueryFinished(bool answered);
+    void nmeaReceived(const QString &sentence);
+    void textReceived(const QString &line);
+    void baudChangeFinished(bool changed, int baud, const QString &detail);
+    void linkRecovered(bool reachable, int baud, const QString &detail);
+
+private:
+    void handleEvents(int64_t nowNs);
+    void noteIdentity(const model::DeviceIdentity &id);
+    void listenThenQueryIdentity();
+    void queryIdentity(int attempt);
+    void noteCommandDone(const protocol::hipnuc::OutputEffect &effect);
+
+    // Detection and recovery (hipnuc_family_baud.cpp)
+    using LinkDone = std::function<void(bool reachable, int baud)>;
+    void detectAt(size_t index);
+    void detectQuery(bool retry);
+    void detectFinished(int baud, const std::optional<model::DeviceIdentity> &id);
+    void probeBauds(std::vector<int> bauds, size_t index, int attempt, LinkDone done);
+    void detectForRecovery(LinkDone done);
+
+    protocol::StreamDemux m_demux;
+    std::vector<protocol::StreamEvent> m_events;
+    std::vector<model::Sample> m_batch;
+    std::optional<protocol::hipnuc::ReplyCollector> m_collector; // the request on the line
+    uint64_t m_payloadErrors = 0;
+    FrameGapCounter m_gaps;
+    std::map<std::string, size_t> m_frameBytes; // last frame size per type (link load of a rate)
+
+    QTimer m_detectTimer{this};
+    bool m_detecting = false;
+    size_t m_detectIndex = 0;
+    uint64_t m_framesAtDetectStart = 0;
+    LinkDone m_afterDetect; // a recovery that fell back to auto-detection
+
+    std::string m_deviceSerial; // from LOG VERSION: tells whether the same module came back
+    bool m_checkSameDevice = false;
+};
+
+} // namespace imudesk::device

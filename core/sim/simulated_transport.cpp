@@ -1,0 +1,101 @@
+#include "simulated_transport.h"
+
+#include <QCoreApplication>
+
+namespace imudesk::sim {
+
+SimulatedTransport::SimulatedTransport(std::unique_ptr<SimulatedSerialDevice> device, QObject *parent)
+    : io::Transport(parent), m_device(std::move(device))
+{
+    m_timer.setInterval(kTickMs);
+    connect(&m_timer, &QTimer::timeout, this, &SimulatedTransport::tick);
+    m_clock.start();
+}
+
+SimulatedTransport::~SimulatedTransport() = default;
+
+bool SimulatedTransport::open(const QString &address, int baud, QString *error)
+{
+    if (!m_plugged) {
+        if (error)
+            *error = QCoreApplication::translate("imudesk::io::SerialTransport",
+                                                 "Port %1 was not found. Check that the device is plugged in and "
+                                                 "choose the port again from the list.")
+                         .arg(address);
+        return false;
+    }
+    m_address = address;
+    m_baud = baud;
+    m_open = true;
+    m_device->takeOutputSegments(); // what it sent while nobody listened is lost
+    m_timer.start();
+    return true;
+}
+
+bool SimulatedTransport::reopen(int baud, QString *error)
+{
+    if (error)
+        error->clear();
+    return m_plugged && open(m_address, baud, error);
+}
+
+void SimulatedTransport::close()
+{
+    m_open = false;
+    m_timer.stop();
+}
+
+bool SimulatedTransport::setBaud(int baud)
+{
+    m_baud = baud;
+    return true;
+}
+
+qint64 SimulatedTransport::write(const QByteArray &bytes)
+{
+    if (!m_open)
+        return -1;
+    m_device->advanceTo(m_clock.nsecsElapsed() / 1000);
+    if (m_baud == m_device->baud())
+        m_device->receive(reinterpret_cast<const uint8_t *>(bytes.constData()), size_t(bytes.size()));
+    return bytes.size();
+}
+
+void SimulatedTransport::clear()
+{
+    if (m_open)
+        m_device->takeOutputSegments();
+}
+
+void SimulatedTransport::unplug()
+{
+    m_plugged = false;
+    if (!m_open)
+        return;
+    close();
+    Q_EMIT failed(tr("The connection to %1 was lost (simulated unplug). Check the cable; everything received so "
+                     "far is kept.")
+                      .arg(m_address));
+}
+
+void SimulatedTransport::tick()
+{
+    if (!m_open)
+        return;
+    m_device->advanceTo(m_clock.nsecsElapsed() / 1000);
+    QByteArray out;
+    for (const SerialSegment &s : m_device->takeOutputSegments()) {
+        if (s.baud == m_baud) {
+            out.append(reinterpret_cast<const char *>(s.bytes.data()), qsizetype(s.bytes.size()));
+            continue;
+        }
+        for (size_t i = 0; i < s.bytes.size(); ++i) { // heard at the wrong rate
+            m_garbage = uint8_t(m_garbage * 37u + 101u);
+            out.append(char(0x80u | m_garbage));
+        }
+    }
+    if (!out.isEmpty())
+        Q_EMIT bytesReceived(out);
+}
+
+} // namespace imudesk::sim

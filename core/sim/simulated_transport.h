@@ -1,0 +1,58 @@
+#pragma once
+// A simulated serial device in the same process, as a session transport (io::Transport): no
+// pseudo-terminal and no simulator thread. Session tests use it to drive the real session
+// engine against a simulator quickly and deterministically in the bytes.
+//
+// Every kTickMs of real time the device's clock runs forward and what it sent is delivered
+// (bytesReceived). UART model, as PtySimulator's: bytes from the host at a rate other than
+// the device's are lost, and each byte the device sends at another rate arrives as one byte
+// of deterministic garbage. unplug() fails the link as a pulled cable does; replug() lets
+// reopen() succeed again.
+#include "io/transport.h"
+#include "sim/simulated_serial_device.h"
+
+#include <QElapsedTimer>
+#include <QTimer>
+
+#include <memory>
+
+namespace imudesk::sim {
+
+class SimulatedTransport : public io::Transport {
+    Q_OBJECT
+public:
+    static constexpr int kTickMs = 1;
+
+    explicit SimulatedTransport(std::unique_ptr<SimulatedSerialDevice> device, QObject *parent = nullptr);
+    ~SimulatedTransport() override;
+
+    bool open(const QString &address, int baud, QString *error) override;
+    void close() override;
+    bool isOpen() const override { return m_open; }
+    bool setBaud(int baud) override;
+    int baud() const override { return m_baud; }
+    QString address() const override { return m_address; }
+    qint64 write(const QByteArray &bytes) override;
+    void clear() override;
+    QString locateAgain() const override { return m_plugged ? m_address : QString(); }
+    bool reopen(int baud, QString *error) override;
+
+    // Thread of the transport (the session's engine thread).
+    void unplug();
+    void replug() { m_plugged = true; }
+    SimulatedSerialDevice &device() { return *m_device; }
+
+private:
+    void tick();
+
+    std::unique_ptr<SimulatedSerialDevice> m_device;
+    QTimer m_timer{this};
+    QElapsedTimer m_clock;
+    QString m_address;
+    int m_baud = 0;
+    bool m_open = false;
+    bool m_plugged = true;
+    uint8_t m_garbage = 0x5A;
+};
+
+} // namespace imudesk::sim
