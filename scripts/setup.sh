@@ -99,6 +99,8 @@ phase "test suite"
 (cd "$root/build/test" && ctest --output-on-failure -j "$jobs" --timeout 600 --repeat until-pass:2)
 phase "benchmark (decode throughput against the manual's byte-at-a-time decoder)"
 "$root/build/test/tests/bench/bench_decode" --mb 50
+phase "benchmark (heap allocations per frame on the live session path)"
+"$root/build/test/tests/bench/bench_alloc_live" || echo "!! bench_alloc_live missed a target (see above)"
 # bench_gui_live and soak: exit 2 = a frame that reached ImuDesk was lost or the capture is
 # damaged (fails the run); exit 1 = a target missed, e.g. frames the pty dropped because a loaded
 # machine did not schedule the reader in time (reported, like the other benchmarks' targets).
