@@ -121,6 +121,8 @@ live_bench() {
 }
 phase "benchmark (the whole window offscreen, simulator at 921600 baud, HI91 at 1000 Hz)"
 live_bench "$root/build/test/tests/bench/bench_gui_live" --seconds 60
+phase "benchmark (four simulated modules at 1000 Hz in one window)"
+live_bench "$root/build/test/tests/bench/bench_gui_live" --seconds 30 --devices 4
 bench="$root/build/test/tests/bench"
 phase "benchmark (export of a 1 kHz HI91 capture, 10 min of it in CI; --frames 3600000 for the full hour)"
 "$bench/bench_export" --frames 600000 || echo "!! bench_export missed a target (see above)"
