@@ -54,7 +54,10 @@ SessionEngine::SessionEngine(FamilyPlugin *family, io::Transport *transport, Sam
     m_replyTimer.setSingleShot(true);
     connect(&m_replyTimer, &QTimer::timeout, this, &SessionEngine::onReplyTimeout);
     m_holdTimer.setSingleShot(true);
-    connect(&m_holdTimer, &QTimer::timeout, this, &SessionEngine::releaseHeldWrite);
+    connect(&m_holdTimer, &QTimer::timeout, this, [this] {
+        if (m_current)
+            writeCurrent(); // no gap came within the hold
+    });
     m_idleTimer.setSingleShot(true);
     m_idleTimer.setInterval(lineIdleMs);
     connect(&m_idleTimer, &QTimer::timeout, this, &SessionEngine::onLineIdle);
@@ -253,8 +256,7 @@ void SessionEngine::sendCurrent()
     ++m_current->attempts;
     const int holdMs = m_family->holdWriteMs(*m_current);
     if (holdMs > 0) {
-        m_holding = true; // written in the next gap (releaseHeldWrite) or after holdMs
-        m_holdTimer.start(holdMs);
+        m_holdTimer.start(holdMs); // written in the next gap (releaseHeldWrite) or after holdMs
         return;
     }
     writeCurrent();
@@ -262,13 +264,12 @@ void SessionEngine::sendCurrent()
 
 void SessionEngine::releaseHeldWrite()
 {
-    if (m_current && m_holding)
+    if (m_current && m_holdTimer.isActive())
         writeCurrent();
 }
 
 void SessionEngine::writeCurrent()
 {
-    m_holding = false;
     m_holdTimer.stop();
     m_family->writing(*m_current);
     m_rawLog.append(RawByteLog::Direction::Tx, m_current->wire, monotonicNs());
@@ -301,7 +302,6 @@ void SessionEngine::finishCurrent(RequestResult result)
 {
     m_replyTimer.stop();
     m_holdTimer.stop();
-    m_holding = false;
     if (!m_current)
         return;
     Request r = std::move(*m_current);
@@ -327,7 +327,6 @@ void SessionEngine::cancelAll(RequestStatus status, const QString &why)
 {
     m_replyTimer.stop();
     m_holdTimer.stop();
-    m_holding = false;
     std::deque<Request> all;
     if (m_current)
         all.push_back(std::move(*m_current));
@@ -391,15 +390,10 @@ void SessionEngine::publishStats()
     s.baud = m_transport->baud();
     const qint64 nowMs = m_statsClock.isValid() ? m_statsClock.elapsed() : 0;
     const double dt = double(nowMs - m_lastStatsMs) / 1000.0;
-    if (dt > 0.05) {
-        addRates(s, m_lastStats, dt);
+    if (addRates(s, m_lastStats, dt)) {
         watchForGarbage(s, nowMs);
         m_lastStats = s;
         m_lastStatsMs = nowMs;
-    } else {
-        s.rateByType = m_lastStats.rateByType;
-        s.bytesPerSecond = m_lastStats.bytesPerSecond;
-        s.linkLoad = m_lastStats.linkLoad;
     }
     Q_EMIT statsUpdated(s);
     if (m_recorder)

@@ -106,9 +106,8 @@ private:
 
     std::deque<Request> m_queue;
     std::optional<Request> m_current;
-    bool m_holding = false;
     QTimer m_replyTimer{this}; // children, so that moveToThread moves them
-    QTimer m_holdTimer{this};
+    QTimer m_holdTimer{this};  // runs while the request on hand waits for a gap (holdWriteMs)
     QTimer m_idleTimer{this};  // releases bytes held behind an unfinished frame when the line goes quiet
 
     QTimer m_statsTimer{this};

@@ -33,10 +33,14 @@ void fillStreamCounters(const protocol::StreamDemux &demux, uint64_t payloadErro
     s.deviceResets = gaps.resets();
 }
 
-void addRates(SessionStats &now, const SessionStats &before, double dtSeconds)
+bool addRates(SessionStats &now, const SessionStats &before, double dtSeconds)
 {
-    if (dtSeconds <= 0)
-        return;
+    if (dtSeconds <= 0.05) {
+        now.rateByType = before.rateByType;
+        now.bytesPerSecond = before.bytesPerSecond;
+        now.linkLoad = before.linkLoad;
+        return false;
+    }
     for (const auto &[name, count] : now.framesByType) {
         const auto it = before.framesByType.find(name);
         const uint64_t then = it == before.framesByType.end() ? 0 : std::min(count, it->second);
@@ -44,6 +48,7 @@ void addRates(SessionStats &now, const SessionStats &before, double dtSeconds)
     }
     now.bytesPerSecond = double(now.bytesIn - std::min(now.bytesIn, before.bytesIn)) / dtSeconds;
     now.linkLoad = now.baud > 0 ? now.bytesPerSecond * 10.0 / now.baud : 0;
+    return true;
 }
 
 } // namespace imudesk::device

@@ -12,7 +12,9 @@ namespace imudesk::device {
 void fillStreamCounters(const protocol::StreamDemux &demux, uint64_t payloadErrors, const FrameGapCounter &gaps,
                         SessionStats &s);
 // Frames per second per type, bytes per second and link load of `now` against `before`, taken
-// dtSeconds earlier. Counters that started again (a new decoder) count from zero.
-void addRates(SessionStats &now, const SessionStats &before, double dtSeconds);
+// dtSeconds earlier. Counters that started again (a new decoder) count from zero. Over a window
+// too short to measure (50 ms or less) `now` keeps `before`'s rates and the answer is false:
+// `before` stays the reference.
+bool addRates(SessionStats &now, const SessionStats &before, double dtSeconds);
 
 } // namespace imudesk::device

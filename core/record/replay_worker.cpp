@@ -255,14 +255,9 @@ void ReplayWorker::publishStats()
     s.baud = m_baud;
     const qint64 nowMs = m_statsClock.isValid() ? m_statsClock.elapsed() : 0;
     const double dt = double(nowMs - m_lastStatsMs) / 1000.0;
-    if (dt > 0.05) {
-        device::addRates(s, m_lastStats, dt);
+    if (device::addRates(s, m_lastStats, dt)) {
         m_lastStats = s;
         m_lastStatsMs = nowMs;
-    } else {
-        s.rateByType = m_lastStats.rateByType;
-        s.bytesPerSecond = m_lastStats.bytesPerSecond;
-        s.linkLoad = m_lastStats.linkLoad;
     }
     Q_EMIT statsUpdated(s);
 }

@@ -1,6 +1,6 @@
 #include "simulated_transport.h"
 
-#include <QCoreApplication>
+#include "io/serial_transport.h"
 
 namespace imudesk::sim {
 
@@ -18,10 +18,7 @@ bool SimulatedTransport::open(const QString &address, int baud, QString *error)
 {
     if (!m_plugged) {
         if (error)
-            *error = QCoreApplication::translate("imudesk::io::SerialTransport",
-                                                 "Port %1 was not found. Check that the device is plugged in and "
-                                                 "choose the port again from the list.")
-                         .arg(address);
+            *error = io::SerialTransport::describeOpenError(address, io::OpenErrorKind::NotFound, QString());
         return false;
     }
     m_address = address;
