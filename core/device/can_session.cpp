@@ -1,5 +1,6 @@
 #include "can_session.h"
-#include "can_worker.h"
+#include "device/can_family.h"
+#include "io/can_transport.h"
 
 #include "protocol/can/canopen.h"
 #include "protocol/can/hec495_can.h"
@@ -17,41 +18,31 @@ namespace imudesk::device {
 using namespace protocol::can;
 namespace hip = protocol::can::canopen::hipnuc;
 
-CanSession::CanSession(QObject *parent) : DeviceLink(parent), m_worker(new CanWorker(&store()))
+CanSession::CanSession(QObject *parent, std::unique_ptr<io::Transport> transport)
+    : Session(std::make_unique<CanFamily>(), transport ? std::move(transport) : std::make_unique<io::CanTransport>(),
+              QStringLiteral("imudesk-can"), 0, parent, io::canThread())
 {
     qRegisterMetaType<CanFrameEvents>();
     qRegisterMetaType<CanNodeInfo>();
     qRegisterMetaType<CanRequestResult>();
     qRegisterMetaType<CanSessionOptions>();
-    m_worker->moveToThread(canThread());
-    connect(m_worker, &CanWorker::stateChanged, this, &CanSession::setState);
-    connect(m_worker, &CanWorker::statsUpdated, this, &CanSession::statsUpdated);
-    connect(m_worker, &CanWorker::errorOccurred, this, &CanSession::errorOccurred);
-    connect(m_worker, &CanWorker::framesSeen, this, &CanSession::framesSeen);
-    connect(m_worker, &CanWorker::nodeDiscovered, this, &CanSession::nodeDiscovered);
-    connect(m_worker, &CanWorker::jobFinished, this, &CanSession::requestFinished);
-    connect(m_worker, &CanWorker::scanProgress, this, &CanSession::scanProgress);
-    connect(m_worker, &CanWorker::scanFinished, this, &CanSession::scanFinished);
-    connect(m_worker, &CanWorker::protocolDetected, this, [this](int p) {
+    auto *f = static_cast<CanFamily *>(family());
+    connect(f, &CanFamily::framesSeen, this, &CanSession::framesSeen);
+    connect(f, &CanFamily::nodeDiscovered, this, &CanSession::nodeDiscovered);
+    connect(f, &CanFamily::jobFinished, this, &CanSession::requestFinished);
+    connect(f, &CanFamily::scanProgress, this, &CanSession::scanProgress);
+    connect(f, &CanFamily::scanFinished, this, &CanSession::scanFinished);
+    connect(f, &CanFamily::protocolDetected, this, [this](int p) {
         m_detected = p;
         Q_EMIT protocolDetected(p);
     });
-    connect(m_worker, &CanWorker::targetNodeChanged, this, [this](int n) {
+    connect(f, &CanFamily::targetNodeChanged, this, [this](int n) {
         m_target = n;
         Q_EMIT targetNodeChanged(n);
     });
 }
 
-CanSession::~CanSession()
-{
-    CanWorker *w = m_worker;
-    m_worker = nullptr;
-    w->disconnect(this);
-    if (w->thread() == QThread::currentThread())
-        delete w;
-    else
-        QMetaObject::invokeMethod(w, [w] { delete w; }, Qt::BlockingQueuedConnection);
-}
+CanSession::~CanSession() = default;
 
 QStringList CanSession::plugins()
 {
@@ -72,13 +63,13 @@ void CanSession::open(const CanSessionOptions &options)
     m_options = options;
     m_target = options.node;
     m_detected = int(options.protocol);
-    QMetaObject::invokeMethod(m_worker, [w = m_worker, options] { w->open(options); }, Qt::QueuedConnection);
+    inFamily<CanFamily>([options](CanFamily &f) { f.configure(options); });
+    openLink(options.plugin + QLatin1Char(':') + options.interfaceName, options.bitrate);
 }
 
 void CanSession::close()
 {
-    if (m_worker)
-        QMetaObject::invokeMethod(m_worker, [w = m_worker] { w->close(); }, Qt::QueuedConnection);
+    Session::close();
 }
 
 CanProtocol CanSession::protocol() const
@@ -105,15 +96,15 @@ uint8_t CanSession::node() const
     return protocol() == CanProtocol::Hec495 ? hec495::kDefaultNode : canopen::kDefaultNode;
 }
 
-quint64 CanSession::submit(CanJob job)
+quint64 CanSession::submitJob(CanJob job)
 {
     job.id = m_nextId++;
     const quint64 id = job.id;
-    QMetaObject::invokeMethod(m_worker, [w = m_worker, job] { w->submit(job); }, Qt::QueuedConnection);
+    inFamily<CanFamily>([job](CanFamily &f) { f.submitJob(job); });
     return id;
 }
 
-quint64 CanSession::refuse(const QString &why)
+quint64 CanSession::refuseJob(const QString &why)
 {
     const quint64 id = m_nextId++;
     const CanRequestResult r{id, false, 0, why};
@@ -175,30 +166,30 @@ CanJobStep CanSession::hecStep(uint16_t index, uint8_t value, const QString &wha
 quint64 CanSession::readRegister(uint16_t addr)
 {
     if (protocol() != CanProtocol::J1939)
-        return refuse(tr("register access needs a J1939 device"));
-    return submit(CanJob{0, tr("read register 0x%1").arg(addr, 4, 16, QLatin1Char('0')), {j1939Read(addr, tr("read register"))}});
+        return refuseJob(tr("register access needs a J1939 device"));
+    return submitJob(CanJob{0, tr("read register 0x%1").arg(addr, 4, 16, QLatin1Char('0')), {j1939Read(addr, tr("read register"))}});
 }
 
 quint64 CanSession::writeRegister(uint16_t addr, uint32_t value)
 {
     if (protocol() != CanProtocol::J1939)
-        return refuse(tr("register access needs a J1939 device"));
-    return submit(CanJob{0, tr("write register 0x%1").arg(addr, 4, 16, QLatin1Char('0')), {j1939Write(addr, value, tr("write register"))}});
+        return refuseJob(tr("register access needs a J1939 device"));
+    return submitJob(CanJob{0, tr("write register 0x%1").arg(addr, 4, 16, QLatin1Char('0')), {j1939Write(addr, value, tr("write register"))}});
 }
 
 quint64 CanSession::sdoRead(uint16_t index, uint8_t sub)
 {
-    return submit(CanJob{0, tr("SDO read"), {sdoReadStep(index, sub, tr("SDO read"))}});
+    return submitJob(CanJob{0, tr("SDO read"), {sdoReadStep(index, sub, tr("SDO read"))}});
 }
 
 quint64 CanSession::sdoWrite(uint16_t index, uint8_t sub, uint32_t value, int size)
 {
-    return submit(CanJob{0, tr("SDO write"), {sdoWriteStep(index, sub, value, size, tr("SDO write"))}});
+    return submitJob(CanJob{0, tr("SDO write"), {sdoWriteStep(index, sub, value, size, tr("SDO write"))}});
 }
 
 quint64 CanSession::hec495Write(uint16_t index, uint8_t value)
 {
-    return submit(CanJob{0, hec495::describeObject(index, value), {hecStep(index, value, hec495::describeObject(index, value))}});
+    return submitJob(CanJob{0, hec495::describeObject(index, value), {hecStep(index, value, hec495::describeObject(index, value))}});
 }
 
 quint64 CanSession::setOutputPeriod(uint32_t pgnOrChannel, int ms)
@@ -206,46 +197,46 @@ quint64 CanSession::setOutputPeriod(uint32_t pgnOrChannel, int ms)
     switch (protocol()) {
     case CanProtocol::J1939: {
         if (!j1939::isDataPgn(pgnOrChannel))
-            return refuse(tr("0x%1 is not a data PGN").arg(pgnOrChannel, 0, 16));
+            return refuseJob(tr("0x%1 is not a data PGN").arg(pgnOrChannel, 0, 16));
         if (!j1939::validInterval(uint32_t(ms)))
-            return refuse(tr("the interval must be %1 to %2 ms").arg(j1939::kMinIntervalMs).arg(j1939::kMaxIntervalMs));
+            return refuseJob(tr("the interval must be %1 to %2 ms").arg(j1939::kMinIntervalMs).arg(j1939::kMaxIntervalMs));
         const uint16_t reg = j1939::intervalRegister(pgnOrChannel);
         CanJobStep rb = j1939Read(reg, tr("read back the interval"));
         rb.expectValue = uint32_t(ms);
-        return submit(CanJob{0, tr("PGN %1 interval %2 ms").arg(QString::number(pgnOrChannel, 16).toUpper()).arg(ms),
+        return submitJob(CanJob{0, tr("PGN %1 interval %2 ms").arg(QString::number(pgnOrChannel, 16).toUpper()).arg(ms),
                              {j1939Write(reg, uint32_t(ms), tr("set the interval")), rb}});
     }
     case CanProtocol::CanOpen: {
         const int c = int(pgnOrChannel);
         if (c < 0 || c >= canopen::kTpdoCount || ms < 0 || ms > 0xFFFF)
-            return refuse(tr("TPDO channel 0..5 and a period of 0..65535 ms, please"));
+            return refuseJob(tr("TPDO channel 0..5 and a period of 0..65535 ms, please"));
         CanJobStep rb = sdoReadStep(canopen::tpdoCommIndex(c), hip::kSubEventTimer, tr("read back the TPDO period"));
         rb.expectValue = uint32_t(ms);
-        return submit(CanJob{0, tr("TPDO%1 period %2 ms").arg(canopen::tpdoNumber(c)).arg(ms),
+        return submitJob(CanJob{0, tr("TPDO%1 period %2 ms").arg(canopen::tpdoNumber(c)).arg(ms),
                              {sdoWriteStep(canopen::tpdoCommIndex(c), hip::kSubEventTimer, uint32_t(ms), 2, tr("set the TPDO period")), rb}});
     }
     case CanProtocol::Hec495:
-        return refuse(tr("the HEC495 has one PDO rate: use setHec495Rate"));
+        return refuseJob(tr("the HEC495 has one PDO rate: use setHec495Rate"));
     case CanProtocol::Auto: break;
     }
-    return refuse(tr("the protocol is not known yet: choose it or wait for traffic"));
+    return refuseJob(tr("the protocol is not known yet: choose it or wait for traffic"));
 }
 
 quint64 CanSession::setHec495Rate(int code)
 {
     if (code < 0 || code > 6)
-        return refuse(tr("the HEC495 rate code is 0 (off) to 6 (100 Hz)"));
+        return refuseJob(tr("the HEC495 rate code is 0 (off) to 6 (100 Hz)"));
     return hec495Write(hec495::ObjPdoRate, uint8_t(code));
 }
 
 quint64 CanSession::setSyncMode(int channel, bool sync)
 {
     if (protocol() != CanProtocol::CanOpen || channel < 0 || channel >= canopen::kTpdoCount)
-        return refuse(tr("SYNC mode needs a CANopen device and a TPDO channel 0..5"));
+        return refuseJob(tr("SYNC mode needs a CANopen device and a TPDO channel 0..5"));
     const uint8_t type = sync ? hip::kTransmissionSync : hip::kTransmissionAsync;
     CanJobStep rb = sdoReadStep(canopen::tpdoCommIndex(channel), hip::kSubTransmissionType, tr("read back the transmission type"));
     rb.expectValue = type;
-    return submit(CanJob{0, tr("TPDO%1 %2").arg(canopen::tpdoNumber(channel)).arg(sync ? tr("SYNC mode") : tr("asynchronous mode")),
+    return submitJob(CanJob{0, tr("TPDO%1 %2").arg(canopen::tpdoNumber(channel)).arg(sync ? tr("SYNC mode") : tr("asynchronous mode")),
                          {sdoWriteStep(canopen::tpdoCommIndex(channel), hip::kSubTransmissionType, type, 1, tr("set the transmission type")), rb}});
 }
 
@@ -256,16 +247,16 @@ quint64 CanSession::setHeartbeat(int ms)
         return hec495Write(hec495::ObjHeartbeat, uint8_t(n));
     }
     if (protocol() != CanProtocol::CanOpen || ms < 0 || ms > 0xFFFF)
-        return refuse(tr("the heartbeat needs a CANopen or HEC495 device and 0..65535 ms"));
+        return refuseJob(tr("the heartbeat needs a CANopen or HEC495 device and 0..65535 ms"));
     CanJobStep rb = sdoReadStep(hip::ObjHeartbeat, 0, tr("read back the heartbeat period"));
     rb.expectValue = uint32_t(ms);
-    return submit(CanJob{0, tr("heartbeat %1 ms").arg(ms), {sdoWriteStep(hip::ObjHeartbeat, 0, uint32_t(ms), 2, tr("set the heartbeat")), rb}});
+    return submitJob(CanJob{0, tr("heartbeat %1 ms").arg(ms), {sdoWriteStep(hip::ObjHeartbeat, 0, uint32_t(ms), 2, tr("set the heartbeat")), rb}});
 }
 
 quint64 CanSession::setNodeId(int newId)
 {
     if (newId < 1 || newId > 127)
-        return refuse(tr("the node ID must be 1..127"));
+        return refuseJob(tr("the node ID must be 1..127"));
     CanJobStep follow;
     follow.hasTx = false;
     follow.expect = CanJobStep::Expect::TrafficFrom;
@@ -277,12 +268,12 @@ quint64 CanSession::setNodeId(int newId)
     switch (protocol()) {
     case CanProtocol::J1939: {
         CanJobStep rst = j1939Write(j1939::RegCommand, j1939::CommandReset, tr("reset"));
-        return submit(CanJob{0, title, {j1939Write(j1939::RegNodeId, uint32_t(newId), tr("set the node ID")),
+        return submitJob(CanJob{0, title, {j1939Write(j1939::RegNodeId, uint32_t(newId), tr("set the node ID")),
                                         j1939Write(j1939::RegCommand, j1939::CommandSave, tr("save")), rst, follow}});
     }
     case CanProtocol::CanOpen: {
         const uint16_t obj = m_options.hipnucNodeIdObject;
-        return submit(CanJob{0, title, {sdoWriteStep(obj, 0, uint32_t(newId), 4, tr("set the node ID")),
+        return submitJob(CanJob{0, title, {sdoWriteStep(obj, 0, uint32_t(newId), 4, tr("set the node ID")),
                                         sdoWriteStep(hip::ObjCommand, 0, hip::CommandSave, 4, tr("save")),
                                         sdoWriteStep(hip::ObjCommand, 0, hip::CommandReset, 4, tr("reset")), follow}});
     }
@@ -290,11 +281,11 @@ quint64 CanSession::setNodeId(int newId)
         // The HEC495 takes the new ID at its next power-up; the session follows once it talks.
         follow.timeoutMs = 60000;
         follow.what = tr("traffic from node %1 (power-cycle the HEC495 now)").arg(newId);
-        return submit(CanJob{0, title, {hecStep(hec495::ObjNodeId, uint8_t(newId), tr("set the node ID")), follow}});
+        return submitJob(CanJob{0, title, {hecStep(hec495::ObjNodeId, uint8_t(newId), tr("set the node ID")), follow}});
     }
     case CanProtocol::Auto: break;
     }
-    return refuse(tr("the protocol is not known yet: choose it or wait for traffic"));
+    return refuseJob(tr("the protocol is not known yet: choose it or wait for traffic"));
 }
 
 quint64 CanSession::setBitrate(int bitrate)
@@ -304,57 +295,57 @@ quint64 CanSession::setBitrate(int bitrate)
     case CanProtocol::CanOpen: {
         const int code = j1939::codeFromBaud(bitrate);
         if (code < 0)
-            return refuse(tr("HiPNUC modules support 125000, 250000, 500000, 800000 and 1000000 bit/s"));
+            return refuseJob(tr("HiPNUC modules support 125000, 250000, 500000, 800000 and 1000000 bit/s"));
         const QString title = tr("CAN bit rate %1 (saved; takes effect after a reset: reopen the session at that rate)").arg(bitrate);
         if (protocol() == CanProtocol::J1939)
-            return submit(CanJob{0, title, {j1939Write(j1939::RegBaud, uint32_t(code), tr("set the bit rate")),
+            return submitJob(CanJob{0, title, {j1939Write(j1939::RegBaud, uint32_t(code), tr("set the bit rate")),
                                             j1939Write(j1939::RegCommand, j1939::CommandSave, tr("save"))}});
-        return submit(CanJob{0, title, {sdoWriteStep(hip::ObjBaud, 0, uint32_t(code), 4, tr("set the bit rate")),
+        return submitJob(CanJob{0, title, {sdoWriteStep(hip::ObjBaud, 0, uint32_t(code), 4, tr("set the bit rate")),
                                         sdoWriteStep(hip::ObjCommand, 0, hip::CommandSave, 4, tr("save"))}});
     }
     case CanProtocol::Hec495: {
         const int code = hec495::codeFromBaud(bitrate);
         if (code < 0)
-            return refuse(tr("the HEC495 supports 10000 to 500000 bit/s (see its manual's table)"));
-        return submit(CanJob{0, tr("CAN bit rate %1 (takes effect after a power cycle: reopen the session at that rate)").arg(bitrate),
+            return refuseJob(tr("the HEC495 supports 10000 to 500000 bit/s (see its manual's table)"));
+        return submitJob(CanJob{0, tr("CAN bit rate %1 (takes effect after a power cycle: reopen the session at that rate)").arg(bitrate),
                              {hecStep(hec495::ObjBaud, uint8_t(code), tr("set the bit rate"))}});
     }
     case CanProtocol::Auto: break;
     }
-    return refuse(tr("the protocol is not known yet: choose it or wait for traffic"));
+    return refuseJob(tr("the protocol is not known yet: choose it or wait for traffic"));
 }
 
 quint64 CanSession::attitudeReset(int mode)
 {
     if (protocol() == CanProtocol::J1939) {
         if (mode != 1 && mode != 2 && mode != 3 && mode != 5)
-            return refuse(tr("attitude reset mode 1, 2, 3 or 5, please"));
-        return submit(CanJob{0, tr("attitude reset %1").arg(mode), {j1939Write(j1939::RegAttitudeReset, uint32_t(mode), tr("attitude reset"))}});
+            return refuseJob(tr("attitude reset mode 1, 2, 3 or 5, please"));
+        return submitJob(CanJob{0, tr("attitude reset %1").arg(mode), {j1939Write(j1939::RegAttitudeReset, uint32_t(mode), tr("attitude reset"))}});
     }
     if (protocol() == CanProtocol::CanOpen) {
         if (mode != 2 && mode != 5)
-            return refuse(tr("CANopen zeroing: mode 2 (set zero) or 5 (clear), please"));
-        return submit(CanJob{0, tr("zero %1").arg(mode), {sdoWriteStep(hip::ObjInclZero, 0, uint32_t(mode), 4, tr("set zero"))}});
+            return refuseJob(tr("CANopen zeroing: mode 2 (set zero) or 5 (clear), please"));
+        return submitJob(CanJob{0, tr("zero %1").arg(mode), {sdoWriteStep(hip::ObjInclZero, 0, uint32_t(mode), 4, tr("set zero"))}});
     }
-    return refuse(tr("attitude reset needs a HiPNUC J1939 or CANopen device"));
+    return refuseJob(tr("attitude reset needs a HiPNUC J1939 or CANopen device"));
 }
 
 quint64 CanSession::setOutputEnabled(bool on)
 {
     switch (protocol()) {
     case CanProtocol::J1939:
-        return submit(CanJob{0, on ? tr("output on") : tr("output off"), {j1939Write(j1939::RegOutputEnable, on ? 1 : 0, tr("output enable"))}});
+        return submitJob(CanJob{0, on ? tr("output on") : tr("output off"), {j1939Write(j1939::RegOutputEnable, on ? 1 : 0, tr("output enable"))}});
     case CanProtocol::Hec495: return hec495Write(hec495::ObjPdoStart, on ? 1 : 0);
     case CanProtocol::CanOpen: {
         CanJobStep s;
         s.tx = canopen::encodeNmt(on ? canopen::NmtStart : canopen::NmtStop, node());
         s.expect = CanJobStep::Expect::Nothing;
         s.what = tr("NMT");
-        return submit(CanJob{0, on ? tr("NMT start") : tr("NMT stop"), {s}});
+        return submitJob(CanJob{0, on ? tr("NMT start") : tr("NMT stop"), {s}});
     }
     case CanProtocol::Auto: break;
     }
-    return refuse(tr("the protocol is not known yet: choose it or wait for traffic"));
+    return refuseJob(tr("the protocol is not known yet: choose it or wait for traffic"));
 }
 
 quint64 CanSession::commandJob(uint32_t value, const QString &title, int followNode)
@@ -362,14 +353,14 @@ quint64 CanSession::commandJob(uint32_t value, const QString &title, int followN
     if (protocol() == CanProtocol::J1939) {
         CanJobStep s = j1939Write(j1939::RegCommand, value, title);
         s.followNode = followNode;
-        return submit(CanJob{0, title, {s}});
+        return submitJob(CanJob{0, title, {s}});
     }
     if (protocol() == CanProtocol::CanOpen) {
         CanJobStep s = sdoWriteStep(hip::ObjCommand, 0, value, 4, title);
         s.followNode = followNode;
-        return submit(CanJob{0, title, {s}});
+        return submitJob(CanJob{0, title, {s}});
     }
-    return refuse(tr("\"%1\" needs a HiPNUC J1939 or CANopen device (the HEC495 saves at once)").arg(title));
+    return refuseJob(tr("\"%1\" needs a HiPNUC J1939 or CANopen device (the HEC495 saves at once)").arg(title));
 }
 
 quint64 CanSession::save() { return commandJob(j1939::CommandSave, tr("save configuration"), -1); }
@@ -383,12 +374,12 @@ quint64 CanSession::factoryReset()
 quint64 CanSession::trigger(uint32_t pgn)
 {
     if (protocol() != CanProtocol::J1939 || !j1939::isDataPgn(pgn))
-        return refuse(tr("a one-shot trigger needs a J1939 device and a data PGN"));
+        return refuseJob(tr("a one-shot trigger needs a J1939 device and a data PGN"));
     CanJobStep s;
     s.tx = j1939::encodeReg(j1939::triggerRequest(node(), m_options.hostAddress, pgn));
     s.expect = CanJobStep::Expect::Nothing;
     s.what = tr("trigger");
-    return submit(CanJob{0, tr("trigger PGN %1").arg(QString::number(pgn, 16).toUpper()), {s}});
+    return submitJob(CanJob{0, tr("trigger PGN %1").arg(QString::number(pgn, 16).toUpper()), {s}});
 }
 
 void CanSession::sendSync()
@@ -398,7 +389,7 @@ void CanSession::sendSync()
 
 void CanSession::setSyncPeriod(int ms)
 {
-    QMetaObject::invokeMethod(m_worker, [w = m_worker, ms] { w->setSyncPeriod(ms); }, Qt::QueuedConnection);
+    inFamily<CanFamily>([ms](CanFamily &f) { f.setSyncPeriod(ms); });
 }
 
 void CanSession::sendNmt(uint8_t command, uint8_t n)
@@ -408,17 +399,17 @@ void CanSession::sendNmt(uint8_t command, uint8_t n)
 
 void CanSession::sendFrame(const CanFrame &f)
 {
-    QMetaObject::invokeMethod(m_worker, [w = m_worker, f] { w->sendFrame(f); }, Qt::QueuedConnection);
+    inFamily<CanFamily>([frame = f](CanFamily &family) { family.sendFrame(frame); });
 }
 
 void CanSession::scanNodes(int from, int to)
 {
-    QMetaObject::invokeMethod(m_worker, [w = m_worker, from, to] { w->scan(from, to); }, Qt::QueuedConnection);
+    inFamily<CanFamily>([from, to](CanFamily &f) { f.scan(from, to); });
 }
 
 void CanSession::cancelScan()
 {
-    QMetaObject::invokeMethod(m_worker, [w = m_worker] { w->cancelScan(); }, Qt::QueuedConnection);
+    inFamily<CanFamily>([](CanFamily &f) { f.cancelScan(); });
 }
 
 } // namespace imudesk::device

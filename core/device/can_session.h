@@ -1,12 +1,13 @@
 #pragma once
-// A device on a CAN bus (HiPNUC J1939, HiPNUC CANopen, HEC495 CAN) behind the DeviceLink
-// interface the live views use. The bus, decoding and the request queue run in a worker in
-// the process-wide CAN thread (can_worker.h); this object's API is queued and safe to call
+// A device on a CAN bus (HiPNUC J1939, HiPNUC CANopen, HEC495 CAN): the typed front-end of a
+// Session (session.h) whose transport is io::CanTransport and whose family plug-in is
+// CanFamily (can_family.h: decoding, node discovery, the steps of a job). The engine runs in
+// the process-wide CAN thread (io::canThread()); this object's API is queued and safe to call
 // from the owner's thread. Configuration calls return a request id; the outcome arrives in
 // requestFinished, confirmed by the device's reply or by reading the value back.
 #include "can_job.h"
 #include "can_session_types.h"
-#include "device/device_link.h"
+#include "device/session.h"
 
 #include <QStringList>
 
@@ -14,12 +15,11 @@
 
 namespace imudesk::device {
 
-class CanWorker;
-
-class CanSession : public DeviceLink {
+class CanSession : public Session {
     Q_OBJECT
 public:
-    explicit CanSession(QObject *parent = nullptr);
+    // transport: a QCanBus interface when null.
+    explicit CanSession(QObject *parent = nullptr, std::unique_ptr<io::Transport> transport = nullptr);
     ~CanSession() override;
 
     // What Qt offers: plugin names, and a plugin's interfaces ("can0", ...).
@@ -72,8 +72,8 @@ Q_SIGNALS:
     void scanFinished(const QList<int> &nodes, bool cancelled);
 
 private:
-    quint64 submit(CanJob job);
-    quint64 refuse(const QString &why);
+    quint64 submitJob(CanJob job);
+    quint64 refuseJob(const QString &why);
     uint8_t node() const;
     CanJobStep j1939Write(uint16_t addr, uint32_t value, const QString &what) const;
     CanJobStep j1939Read(uint16_t addr, const QString &what) const;
@@ -82,7 +82,6 @@ private:
     CanJobStep hecStep(uint16_t index, uint8_t value, const QString &what) const;
     quint64 commandJob(uint32_t value, const QString &title, int followNode);
 
-    CanWorker *m_worker;
     CanSessionOptions m_options;
     std::atomic<int> m_target{-1};
     std::atomic<int> m_detected{0};

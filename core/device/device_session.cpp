@@ -29,7 +29,7 @@ DeviceSession::DeviceSession(QObject *parent, std::unique_ptr<io::Transport> tra
 {
     qRegisterMetaType<protocol::hipnuc::AsciiReply>();
     auto *f = static_cast<HipnucSerialFamily *>(family());
-    connect(this, &Session::requestFinished, this, [this](const RequestResult &r) {
+    connect(this, &Session::requestEnded, this, [this](const RequestResult &r) {
         Q_EMIT commandFinished(r.id, r.reply.value<protocol::hipnuc::AsciiReply>());
     });
     connect(f, &HipnucSerialFamily::baudDetected, this, &DeviceSession::baudDetected);

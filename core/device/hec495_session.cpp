@@ -34,7 +34,7 @@ Hec495Session::Hec495Session(QObject *parent, std::unique_ptr<io::Transport> tra
 {
     qRegisterMetaType<Hec495Result>();
     auto *f = static_cast<Hec495Family *>(family());
-    connect(this, &Session::requestFinished, this,
+    connect(this, &Session::requestEnded, this,
             [this](const RequestResult &r) { Q_EMIT commandFinished(r.id, toResult(r)); });
     connect(f, &Hec495Family::calibrationPoint, this, &Hec495Session::calibrationPoint);
     connect(f, &Hec495Family::baudChanged, this, [this](int b) {

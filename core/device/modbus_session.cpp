@@ -1,55 +1,45 @@
 #include "modbus_session.h"
 
-#include "device/modbus_worker.h"
+#include "device/modbus_family.h"
 
 namespace imudesk::device {
 
-ModbusSession::ModbusSession(QObject *parent) : DeviceLink(parent)
+ModbusSession::ModbusSession(QObject *parent, std::unique_ptr<io::Transport> transport)
+    : Session(std::make_unique<ModbusFamily>(), std::move(transport), QStringLiteral("imudesk-modbus"),
+              ModbusFamily::kLineIdleMs, parent)
 {
     qRegisterMetaType<ModbusOptions>();
     qRegisterMetaType<ModbusScanOptions>();
     qRegisterMetaType<ModbusScanHit>();
     qRegisterMetaType<ModbusRegisterReply>();
     qRegisterMetaType<QList<ModbusScanHit>>();
-
-    m_thread.setObjectName(QStringLiteral("imudesk-modbus"));
-    m_worker = new ModbusWorker(store());
-    m_worker->moveToThread(&m_thread);
-    connect(&m_thread, &QThread::finished, m_worker, &QObject::deleteLater);
-
-    connect(m_worker, &ModbusWorker::stateChanged, this, [this](SessionState s, const QString &detail) { setState(s, detail); });
-    connect(m_worker, &ModbusWorker::identityChanged, this, &ModbusSession::identityChanged);
-    connect(m_worker, &ModbusWorker::statsUpdated, this, &ModbusSession::statsUpdated);
-    connect(m_worker, &ModbusWorker::errorOccurred, this, &ModbusSession::errorOccurred);
-    connect(m_worker, &ModbusWorker::registersRead, this, &ModbusSession::registersRead);
-    connect(m_worker, &ModbusWorker::writeFinished, this, &ModbusSession::writeFinished);
-    connect(m_worker, &ModbusWorker::nodeIdChanged, this, &ModbusSession::nodeIdChanged);
-    connect(m_worker, &ModbusWorker::baudChanged, this, &ModbusSession::baudChanged);
-    connect(m_worker, &ModbusWorker::pollRateChanged, this, &ModbusSession::pollRateChanged);
-    connect(m_worker, &ModbusWorker::scanProgress, this, &ModbusSession::scanProgress);
-    connect(m_worker, &ModbusWorker::scanFound, this, &ModbusSession::scanFound);
-    connect(m_worker, &ModbusWorker::scanFinished, this, &ModbusSession::scanFinished);
-    m_thread.start();
+    auto *f = static_cast<ModbusFamily *>(family());
+    connect(f, &ModbusFamily::registersRead, this, &ModbusSession::registersRead);
+    connect(f, &ModbusFamily::writeFinished, this, &ModbusSession::writeFinished);
+    connect(f, &ModbusFamily::nodeIdChanged, this, &ModbusSession::nodeIdChanged);
+    connect(f, &ModbusFamily::baudChanged, this, &ModbusSession::baudChanged);
+    connect(f, &ModbusFamily::pollRateChanged, this, &ModbusSession::pollRateChanged);
+    connect(f, &ModbusFamily::scanProgress, this, &ModbusSession::scanProgress);
+    connect(f, &ModbusFamily::scanFound, this, &ModbusSession::scanFound);
+    connect(f, &ModbusFamily::scanFinished, this, &ModbusSession::scanFinished);
 }
 
 ModbusSession::~ModbusSession()
 {
-    m_worker->requestScanCancel();
-    QMetaObject::invokeMethod(m_worker, &ModbusWorker::close, Qt::BlockingQueuedConnection);
-    m_thread.quit();
-    m_thread.wait();
+    cancelScan();
 }
 
 void ModbusSession::open(const ModbusOptions &options)
 {
     m_kind = int(options.kind);
-    QMetaObject::invokeMethod(m_worker, [w = m_worker, options] { w->open(options); }, Qt::QueuedConnection);
+    inFamily<ModbusFamily>([options](ModbusFamily &f) { f.configure(options); });
+    openLink(options.port, options.effectiveBaud());
 }
 
 void ModbusSession::close()
 {
-    m_worker->requestScanCancel();
-    QMetaObject::invokeMethod(m_worker, &ModbusWorker::close, Qt::QueuedConnection);
+    cancelScan();
+    Session::close();
 }
 
 QString ModbusSession::linkKind() const
@@ -60,36 +50,32 @@ QString ModbusSession::linkKind() const
 
 void ModbusSession::setPollRate(double hz)
 {
-    QMetaObject::invokeMethod(m_worker, [w = m_worker, hz] { w->setPollRate(hz); }, Qt::QueuedConnection);
+    inFamily<ModbusFamily>([hz](ModbusFamily &f) { f.setPollRate(hz); });
 }
 
 quint64 ModbusSession::readRegisters(int start, int count)
 {
     const quint64 id = m_nextId++;
-    QMetaObject::invokeMethod(m_worker, [w = m_worker, id, start, count] { w->readRegisters(id, start, count); },
-                              Qt::QueuedConnection);
+    inFamily<ModbusFamily>([id, start, count](ModbusFamily &f) { f.readRegisters(id, start, count); });
     return id;
 }
 
 quint64 ModbusSession::writeRegister(int address, int value, bool verify)
 {
     const quint64 id = m_nextId++;
-    QMetaObject::invokeMethod(
-        m_worker, [w = m_worker, id, address, value, verify] { w->writeRegister(id, address, value, verify); },
-        Qt::QueuedConnection);
+    inFamily<ModbusFamily>([id, address, value, verify](ModbusFamily &f) { f.writeRegister(id, address, value, verify); });
     return id;
 }
 
 void ModbusSession::scan(const ModbusScanOptions &options)
 {
-    QMetaObject::invokeMethod(m_worker, [w = m_worker, options] { w->scan(options); }, Qt::QueuedConnection);
+    inFamily<ModbusFamily>([options](ModbusFamily &f) { f.scan(options); });
 }
 
 void ModbusSession::cancelScan()
 {
-    m_worker->requestScanCancel();
+    static_cast<ModbusFamily *>(family())->requestScanCancel();
 }
-
 double ModbusSession::maxPollRate(int baud, int registers, QSerialPort::Parity parity)
 {
     if (baud <= 0 || registers <= 0)

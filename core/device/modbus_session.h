@@ -1,8 +1,8 @@
 #pragma once
 // One device on an RS-485 bus, spoken to in Modbus RTU (HiPNUC v1.7.1 chapter 6 / v1.6.6
-// chapter 4, HEC495 "Modbus 通讯协议"). The public object lives in the caller's thread; a
-// ModbusWorker with a QModbusRtuSerialClient runs in a private QThread. All calls are queued;
-// results come back as signals carrying value types.
+// chapter 4, HEC495 "Modbus 通讯协议"): the typed front-end of a Session (session.h) whose
+// family plug-in is ModbusFamily (modbus_family.h, which frames the requests and has the link
+// rules). All calls are queued; results come back as signals carrying value types.
 //
 // open(): the port at the node's baud and parity, then the identity (HiPNUC 0x70..0x83;
 // HEC495: one read of the angles), then polling of the sensor block (HiPNUC 0x34..0x4B, or
@@ -14,21 +14,20 @@
 // makes it switch its own baud once the reply arrived. CTRL reset/factory pause polling briefly.
 // Counters (statsUpdated): frames = replies, crcErrors = replies dropped for a bad CRC,
 // payloadErrors = Modbus exceptions, framesLost = polls that got no reply.
-#include "device/device_link.h"
 #include "device/modbus_types.h"
+#include "device/session.h"
 
-#include <QThread>
+#include <QSerialPort>
 
 #include <atomic>
 
 namespace imudesk::device {
 
-class ModbusWorker;
-
-class ModbusSession : public DeviceLink {
+class ModbusSession : public Session {
     Q_OBJECT
 public:
-    explicit ModbusSession(QObject *parent = nullptr);
+    // transport: a serial port when null.
+    explicit ModbusSession(QObject *parent = nullptr, std::unique_ptr<io::Transport> transport = nullptr);
     ~ModbusSession() override;
 
     void open(const ModbusOptions &options);
@@ -64,8 +63,6 @@ Q_SIGNALS:
     void scanFinished(const QList<imudesk::device::ModbusScanHit> &hits, bool cancelled);
 
 private:
-    QThread m_thread;
-    ModbusWorker *m_worker = nullptr;
     std::atomic<quint64> m_nextId{1};
     std::atomic<int> m_kind{0};
 };

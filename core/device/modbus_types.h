@@ -21,7 +21,7 @@ struct ModbusOptions {
     bool shipMotion = false;  // HiPNUC: poll 0x34..0x51 (heave) instead of 0x34..0x4B
     bool identify = true;     // read the identity at connect; false: open the port only (scan)
     int timeoutMs = 300;      // per request
-    int retries = 1;          // QModbusClient retries after a timeout
+    int retries = 1;          // requests sent again after a timeout
 
     int effectiveNodeId() const;
     int effectiveBaud() const;

@@ -6,8 +6,8 @@
 namespace imudesk::device {
 
 Session::Session(std::unique_ptr<FamilyPlugin> family, std::unique_ptr<io::Transport> transport,
-                 const QString &threadName, int lineIdleMs, QObject *parent)
-    : DeviceLink(parent)
+                 const QString &threadName, int lineIdleMs, QObject *parent, QThread *sharedThread)
+    : DeviceLink(parent), m_sharedThread(sharedThread)
 {
     if (!transport)
         transport = std::make_unique<io::SerialTransport>();
@@ -15,24 +15,40 @@ Session::Session(std::unique_ptr<FamilyPlugin> family, std::unique_ptr<io::Trans
     m_linkKind = m_family->linkKind();
     m_thread.setObjectName(threadName);
     m_engine = new SessionEngine(family.release(), transport.release(), store(), m_rawLog, lineIdleMs);
-    m_engine->moveToThread(&m_thread);
-    connect(&m_thread, &QThread::finished, m_engine, &QObject::deleteLater);
+    m_engine->moveToThread(m_sharedThread ? m_sharedThread : &m_thread);
+    if (!m_sharedThread)
+        connect(&m_thread, &QThread::finished, m_engine, &QObject::deleteLater);
 
     connect(m_engine, &SessionEngine::stateChanged, this,
             [this](SessionState s, const QString &detail) { setState(s, detail); });
     connect(m_engine, &SessionEngine::identityChanged, this, &Session::identityChanged);
     connect(m_engine, &SessionEngine::statsUpdated, this, &Session::statsUpdated);
     connect(m_engine, &SessionEngine::errorOccurred, this, &Session::errorOccurred);
-    connect(m_engine, &SessionEngine::requestFinished, this, &Session::requestFinished);
+    connect(m_engine, &SessionEngine::requestFinished, this, &Session::requestEnded);
     connect(m_engine, &SessionEngine::reconnected, this, &Session::reconnected);
     connect(m_engine, &SessionEngine::recordingStarted, this, &Session::recordingStarted);
     connect(m_engine, &SessionEngine::recordingStopped, this, &Session::recordingStopped);
     connect(m_engine, &SessionEngine::recordingProgress, this, &Session::recordingProgress);
-    m_thread.start();
+    if (!m_sharedThread)
+        m_thread.start();
 }
 
 Session::~Session()
 {
+    m_engine->disconnect(this);
+    if (m_sharedThread) {
+        // The thread goes on for other sessions: close and delete the engine in it, now.
+        SessionEngine *e = m_engine;
+        const auto finish = [e] {
+            e->close();
+            delete e;
+        };
+        if (m_sharedThread == QThread::currentThread() || !m_sharedThread->isRunning())
+            finish();
+        else
+            QMetaObject::invokeMethod(e, finish, Qt::BlockingQueuedConnection);
+        return;
+    }
     QMetaObject::invokeMethod(m_engine, &SessionEngine::close, Qt::BlockingQueuedConnection);
     m_thread.quit();
     m_thread.wait();
@@ -85,7 +101,7 @@ quint64 Session::refuse(const QVariant &reply, const QString &why)
     r.status = RequestStatus::NotSent;
     r.message = why;
     r.reply = reply;
-    QTimer::singleShot(0, this, [this, r] { Q_EMIT requestFinished(r); });
+    QTimer::singleShot(0, this, [this, r] { Q_EMIT requestEnded(r); });
     return r.id;
 }
 

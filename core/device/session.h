@@ -27,9 +27,10 @@ class SessionEngine;
 class Session : public DeviceLink {
     Q_OBJECT
 public:
-    // The transport defaults to a serial port (io::SerialTransport).
+    // The transport defaults to a serial port (io::SerialTransport). The engine runs in a thread
+    // of its own named threadName, or in sharedThread when given (CAN: io::canThread()).
     Session(std::unique_ptr<FamilyPlugin> family, std::unique_ptr<io::Transport> transport,
-            const QString &threadName, int lineIdleMs, QObject *parent = nullptr);
+            const QString &threadName, int lineIdleMs, QObject *parent = nullptr, QThread *sharedThread = nullptr);
     ~Session() override;
 
     void close() override;
@@ -56,7 +57,7 @@ public:
 
 Q_SIGNALS:
     // A request with an id ended; result.reply holds the family's typed reply.
-    void requestFinished(const imudesk::device::RequestResult &result);
+    void requestEnded(const imudesk::device::RequestResult &result);
     // The device came back after the link failed and the session reopened it.
     void reconnected();
     void recordingStarted(const QString &path);
@@ -65,9 +66,9 @@ Q_SIGNALS:
 
 protected:
     void openLink(const QString &address, int baud);
-    // Queues a request; its id (set here) comes back in requestFinished.
+    // Queues a request; its id (set here) comes back in requestEnded.
     quint64 submit(Request request);
-    // A request refused before it reached the engine: requestFinished(NotSent, why, reply)
+    // A request refused before it reached the engine: requestEnded(NotSent, why, reply)
     // from the event loop, after the caller has the id.
     quint64 refuse(const QVariant &reply, const QString &why);
     // Runs f(family) in the engine's thread, queued.
@@ -82,6 +83,7 @@ protected:
 
 private:
     QThread m_thread;
+    QThread *m_sharedThread = nullptr;
     RawByteLog m_rawLog;
     SessionEngine *m_engine = nullptr;
     FamilyPlugin *m_family = nullptr;

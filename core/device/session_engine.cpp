@@ -51,6 +51,7 @@ SessionEngine::SessionEngine(FamilyPlugin *family, io::Transport *transport, Sam
     m_transport->setParent(this);
     connect(m_transport, &io::Transport::bytesReceived, this, &SessionEngine::onBytes);
     connect(m_transport, &io::Transport::failed, this, &SessionEngine::onTransportFailed);
+    connect(m_transport, &io::Transport::notice, this, &SessionEngine::errorOccurred);
     m_replyTimer.setSingleShot(true);
     connect(&m_replyTimer, &QTimer::timeout, this, &SessionEngine::onReplyTimeout);
     m_holdTimer.setSingleShot(true);
@@ -220,7 +221,7 @@ void SessionEngine::appendSamples(std::vector<model::Sample> &batch)
 // ---------------------------------------------------------------------------------------
 // Requests
 
-void SessionEngine::submit(Request r)
+void SessionEngine::submit(Request r, bool first)
 {
     if (const QString why = m_family->prepare(r); !why.isEmpty()) {
         refuse(std::move(r), why);
@@ -230,7 +231,10 @@ void SessionEngine::submit(Request r)
         refuse(std::move(r), tr("the port is not open"));
         return;
     }
-    m_queue.push_back(std::move(r));
+    if (first)
+        m_queue.push_front(std::move(r));
+    else
+        m_queue.push_back(std::move(r));
     startNext();
 }
 

@@ -52,7 +52,8 @@ public:
     void restartStatistics();
     void appendSamples(std::vector<model::Sample> &batch);
 
-    void submit(Request r);
+    // first: ahead of everything queued (a write's read-back directly after the write).
+    void submit(Request r, bool first = false);
     // Ends r at once as NotSent with `why` (the family refused to encode it).
     void refuse(Request r, const QString &why);
     const Request *current() const { return m_current ? &*m_current : nullptr; }

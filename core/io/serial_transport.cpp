@@ -156,8 +156,8 @@ bool SerialTransport::openPort(const QString &portName, int baud, QString *error
     m_port->setPortName(portName);
     m_port->setBaudRate(baud);
     m_port->setDataBits(QSerialPort::Data8);
-    m_port->setParity(QSerialPort::NoParity);
-    m_port->setStopBits(QSerialPort::OneStop);
+    m_port->setParity(m_parity);
+    m_port->setStopBits(m_stopBits);
     m_port->setFlowControl(QSerialPort::NoFlowControl);
     m_port->setReadBufferSize(0);
     if (!m_port->open(QIODevice::ReadWrite)) {

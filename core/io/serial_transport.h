@@ -6,7 +6,6 @@
 #include <QObject>
 #include <QString>
 
-class QSerialPort;
 
 namespace imudesk::io {
 
@@ -18,10 +17,15 @@ public:
     explicit SerialTransport(QObject *parent = nullptr);
     ~SerialTransport() override;
 
-    // Opens 8N1, no flow control. On failure fills kind and a message that says what to do.
+    // Opens 8 data bits with the framing set (8N1 by default), no flow control. On failure fills kind and a message that says what to do.
     // Remembers the port's USB identity for locateAgain().
     bool open(const QString &portName, int baud, QString *error, OpenErrorKind *kind);
     bool open(const QString &portName, int baud, QString *error) override { return open(portName, baud, error, nullptr); }
+    void setFraming(QSerialPort::Parity parity, QSerialPort::StopBits stopBits) override
+    {
+        m_parity = parity;
+        m_stopBits = stopBits;
+    }
     void close() override;
     bool isOpen() const override;
     bool setBaud(int baud) override;
@@ -59,6 +63,8 @@ private:
     QSerialPort *m_port = nullptr;
     QString m_portName;
     int m_baud = 0;
+    QSerialPort::Parity m_parity = QSerialPort::NoParity;
+    QSerialPort::StopBits m_stopBits = QSerialPort::OneStop;
     // The device first opened (reconnection looks for it again).
     QString m_requestedPort;
     QString m_serialNumber;

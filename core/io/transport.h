@@ -4,6 +4,7 @@
 // transport only moves bytes; it lives in the session's worker thread.
 #include <QByteArray>
 #include <QObject>
+#include <QSerialPort>
 #include <QString>
 
 namespace imudesk::io {
@@ -23,6 +24,13 @@ public:
     // Where the link was opened (the port name as given).
     virtual QString address() const = 0;
     virtual qint64 write(const QByteArray &bytes) = 0;
+    // Character framing for the next open (8 data bits; 8N1 unless set): an RS-485 bus may run
+    // with parity (Modbus RTU). A link that has no such framing ignores it.
+    virtual void setFraming(QSerialPort::Parity parity, QSerialPort::StopBits stopBits)
+    {
+        Q_UNUSED(parity);
+        Q_UNUSED(stopBits);
+    }
     // Discards bytes waiting in buffers (both directions).
     virtual void clear() = 0;
     // After the link failed: where the same device can be opened again now (a USB adapter may
@@ -36,6 +44,8 @@ Q_SIGNALS:
     void bytesReceived(const QByteArray &bytes);
     // The link failed while open (unplugged cable, I/O error).
     void failed(const QString &message);
+    // Something the user should know that does not end the link (a CAN bus error).
+    void notice(const QString &message);
 };
 
 } // namespace imudesk::io

@@ -3,6 +3,7 @@
 // chapter 5), HEC495 PDOs and SDO writes (HEC495 manual "CAN 通讯协议"), with the manuals'
 // examples byte for byte.
 #include "protocol/can/can_decoder.h"
+#include "protocol/can/can_record.h"
 #include "protocol/can/canopen.h"
 #include "protocol/can/hec495_can.h"
 #include "protocol/can/hipnuc_canopen_objects.h"
@@ -506,6 +507,33 @@ private Q_SLOTS:
         const auto &c = d.counters();
         QCOMPARE(c.frames, uint64_t(20000));
         QCOMPARE(c.dataFrames + c.configFrames + c.unknownFrames, c.frames);
+    }
+
+    // Frames as records on the session's transport: the bytes are as documented in
+    // can_record.h, every kind of frame comes back equal, split anywhere, and noise in front
+    // of a record is skipped byte by byte.
+    void recordsCarryFramesWhole()
+    {
+        const CanFrame j1939 = CanFrame::fromHex(0x0CFF3408, true, "4A001F00C803FFFF");
+        QCOMPARE(toRecord(j1939).toHex(), QByteArray("01080834ff0c4a001f00c803ffff"));
+        CanFrame fd = CanFrame::fromBytes(0x123, false, reinterpret_cast<const uint8_t *>("0123456789abcdef0123"), 20,
+                                          true);
+        CanFrame remote(0x701, false, {});
+        remote.remote = true;
+        QByteArray stream = QByteArray::fromHex("ff40") + toRecord(j1939) + toRecord(fd) + toRecord(remote)
+            + toRecord(CanFrame(0x20000080, true, {0x01}), true);
+        CanRecordReader reader;
+        std::vector<CanRecord> out;
+        for (qsizetype at = 0; at < stream.size(); at += 5) // split in the middle of headers and data
+            reader.feed(stream.mid(at, 5), out);
+        QCOMPARE(out.size(), size_t(4));
+        QCOMPARE(reader.bytesSkipped(), uint64_t(2));
+        QVERIFY(!reader.holding());
+        QVERIFY(out[0].frame == j1939 && !out[0].error);
+        QVERIFY(out[1].frame == fd);
+        QCOMPARE(int(out[1].frame.len), 20);
+        QVERIFY(out[2].frame.remote && out[2].frame.len == 0 && out[2].frame.id == 0x701);
+        QVERIFY(out[3].error);
     }
 };
 

@@ -1,12 +1,15 @@
-// The session engine (core/device/session_engine.h) with its two serial families, driven in
+// The session engine (core/device/session_engine.h) with its serial families, driven in
 // the same process through sim::SimulatedTransport: no pseudo-terminal, no simulator thread.
 // What the pty tests check end to end (tests/integration/tst_device_session.cpp,
 // tst_hec495_session.cpp) stays there; these check the engine's own rules.
 #include "device/device_session.h"
 #include "device/hec495_session.h"
+#include "device/modbus_session.h"
+#include "protocol/modbus/register_map.h"
 #include "protocol/hipnuc/ascii_command.h"
 #include "sim/hec495_simulator.h"
 #include "sim/hipnuc_serial_device.h"
+#include "sim/modbus_serial_device.h"
 #include "sim/simulated_transport.h"
 
 #include <QSignalSpy>
@@ -128,6 +131,55 @@ private Q_SLOTS:
         QVERIFY2(finished.last().at(1).value<device::Hec495Result>().ok(),
                  qPrintable(finished.last().at(1).value<device::Hec495Result>().message));
         QTRY_VERIFY(s.store().size() > 3); // polled in question/answer mode
+    }
+
+    // Modbus RTU framed by the engine's family on a 2-wire bus that echoes every request: a
+    // reply with a broken CRC is counted and the request goes again; a verified write (whose
+    // reply repeats its request) reads back; a baud write makes the host follow after the
+    // reply, and polling carries on at the new rate.
+    void modbusOnTheSameEngine()
+    {
+        namespace reg = protocol::modbus::reg;
+        auto device = std::make_unique<sim::ModbusSerialDevice>();
+        device->setEcho(true);
+        device->corruptReplies(1); // the identity read's first answer
+        auto *link = new sim::SimulatedTransport(std::move(device));
+        device::ModbusSession s(nullptr, std::unique_ptr<io::Transport>(link));
+        QSignalSpy stats(&s, &device::ModbusSession::statsUpdated);
+        QSignalSpy writes(&s, &device::ModbusSession::writeFinished);
+        QSignalSpy bauds(&s, &device::ModbusSession::baudChanged);
+        device::ModbusOptions o;
+        o.port = QStringLiteral("sim:modbus");
+        o.pollHz = 20;
+        s.open(o);
+        QTRY_COMPARE_WITH_TIMEOUT(s.state(), SessionState::Connected, 5000);
+        QCOMPARE(s.linkKind(), QStringLiteral("HiPNUC Modbus"));
+        QTRY_VERIFY(s.store().size() > 5);
+        QCOMPARE(QString::fromStdString(s.store().latest()->source), QStringLiteral("MODBUS"));
+        QTRY_VERIFY(!stats.isEmpty() && stats.last().at(0).value<device::SessionStats>().crcErrors == 1);
+
+        const auto reply = [&writes](quint64 id) {
+            for (int round = 0; round < 50; ++round) {
+                for (const auto &args : writes)
+                    if (args.at(0).value<device::ModbusRegisterReply>().id == id)
+                        return args.at(0).value<device::ModbusRegisterReply>();
+                writes.wait(100);
+            }
+            return device::ModbusRegisterReply{};
+        };
+        auto r = reply(s.writeRegister(reg::kHeadingMode, 0));
+        QVERIFY2(r.ok && r.message.contains(QStringLiteral("Read back")), qPrintable(r.message));
+
+        r = reply(s.writeRegister(reg::kBaud, 1)); // 9600
+        QVERIFY2(r.ok && r.message.contains(QStringLiteral("Read back")), qPrintable(r.message));
+        QCOMPARE(bauds.last().at(0).toInt(), 9600);
+        int deviceBaud = 0;
+        QMetaObject::invokeMethod(link, [link, &deviceBaud] { deviceBaud = link->device().baud(); },
+                                  Qt::BlockingQueuedConnection);
+        QCOMPARE(deviceBaud, 9600);
+        const quint64 n = s.store().totalAppended();
+        QTRY_VERIFY_WITH_TIMEOUT(s.store().totalAppended() >= n + 3, 3000);
+        QCOMPARE(s.state(), SessionState::Connected);
     }
 };
 

@@ -1,8 +1,8 @@
 #pragma once
 // Modbus RTU application data units (server address, PDU, CRC-16/Modbus low byte first) as
-// bytes, for checking golden frames from the manuals, for recording what a pseudo-terminal
-// bridge carried and for fuzzing the decoders. The live link uses QtSerialBus
-// (QModbusRtuSerialClient / QModbusRtuSerialServer); nothing here sends or receives.
+// bytes: the live session's requests and replies (device::ModbusFamily), golden frames from
+// the manuals, what a pseudo-terminal bridge carried, and fuzzing. The simulator's server is
+// QtSerialBus's QModbusRtuSerialServer. Nothing here sends or receives.
 #include <QByteArray>
 #include <QModbusPdu>
 #include <QModbusResponse>

@@ -1,0 +1,455 @@
+#include "can_family.h"
+
+#include "device/session_engine.h"
+#include "io/can_transport.h"
+#include "protocol/can/canopen.h"
+#include "protocol/can/hec495_can.h"
+#include "protocol/can/j1939_config.h"
+#include "protocol/can/sdo.h"
+
+#include <QLoggingCategory>
+
+#include <algorithm>
+
+Q_LOGGING_CATEGORY(lcCan, "imudesk.core.device.can")
+
+namespace imudesk::device {
+
+using namespace protocol::can;
+
+namespace {
+
+const char *kindName(FrameKind k)
+{
+    switch (k) {
+    case FrameKind::J1939Data: return "J1939 data";
+    case FrameKind::J1939Config: return "J1939 config";
+    case FrameKind::TpdoData: return "TPDO";
+    case FrameKind::Hec495Data: return "HEC495 PDO";
+    case FrameKind::Sdo: return "SDO";
+    case FrameKind::Hec495Sdo: return "HEC495 SDO";
+    case FrameKind::Nmt: return "NMT";
+    case FrameKind::Sync: return "SYNC";
+    case FrameKind::Heartbeat: return "heartbeat";
+    case FrameKind::Unknown: break;
+    }
+    return "other";
+}
+
+void merge(model::Sample &dst, const model::Sample &src, uint32_t c)
+{
+    if (c & CompAccX) dst.acc.x = src.acc.x;
+    if (c & CompAccY) dst.acc.y = src.acc.y;
+    if (c & CompAccZ) dst.acc.z = src.acc.z;
+    if (c & CompGyrX) dst.gyr.x = src.gyr.x;
+    if (c & CompGyrY) dst.gyr.y = src.gyr.y;
+    if (c & CompGyrZ) dst.gyr.z = src.gyr.z;
+    if (c & CompMagX) dst.mag.x = src.mag.x;
+    if (c & CompMagY) dst.mag.y = src.mag.y;
+    if (c & CompMagZ) dst.mag.z = src.mag.z;
+    if (c & CompRoll) dst.roll = src.roll;
+    if (c & CompPitch) dst.pitch = src.pitch;
+    if (c & CompYaw) dst.yaw = src.yaw;
+    if (c & CompQuat) dst.quat = src.quat;
+    if (c & CompPressure) dst.pressurePa = src.pressurePa;
+    if (c & CompTemperature) dst.temperatureC = src.temperatureC;
+    if (c & CompInclination) {
+        dst.inclinationX = src.inclinationX;
+        dst.inclinationY = src.inclinationY;
+    }
+    if (c & CompDeviceTime) dst.deviceTimeMs = src.deviceTimeMs;
+    if (c & CompMainStatus) dst.mainStatus = src.mainStatus;
+    dst.fields |= src.fields;
+    dst.source = src.source;
+}
+
+} // namespace
+
+CanFamily::CanFamily()
+{
+    m_clock.start();
+    m_syncTimer.setTimerType(Qt::PreciseTimer);
+    connect(&m_syncTimer, &QTimer::timeout, this, [this] { write(canopen::encodeSync()); });
+    m_scanTimer.setInterval(kScanSpacingMs);
+    connect(&m_scanTimer, &QTimer::timeout, this, &CanFamily::scanTick);
+}
+
+void CanFamily::configure(const CanSessionOptions &options)
+{
+    m_options = options;
+    if (auto *t = qobject_cast<io::CanTransport *>(&engine().transport()))
+        t->setFd(options.canFd, options.dataBitrate);
+}
+
+// ---------------------------------------------------------------------------------------
+// The link
+
+void CanFamily::opened(int)
+{
+    m_decoder = CanDecoder(m_options.protocol);
+    m_decoder.setHec495Mode(m_options.hec495Mode);
+    m_lastDetected = CanProtocol::Auto;
+    m_target = m_options.node;
+    m_merged = model::Sample{};
+    m_seenNodes.clear();
+    engine().setState(SessionState::Connected, tr("connected to %1").arg(engine().transport().address()));
+    startJob();
+}
+
+void CanFamily::stopping()
+{
+    m_syncTimer.stop();
+    if (m_scanning)
+        cancelScan();
+    if (m_job)
+        finishJob(false, tr("the session was closed"));
+    while (!m_jobs.empty()) {
+        const quint64 id = m_jobs.front().id;
+        m_jobs.pop_front();
+        Q_EMIT jobFinished(CanRequestResult{id, false, 0, tr("the session was closed")});
+    }
+}
+
+bool CanFamily::write(const CanFrame &f, CanFrameEvents *events)
+{
+    const QByteArray record = toRecord(f);
+    if (!engine().transport().isOpen() || engine().transport().write(record) != record.size())
+        return false;
+    const CanFrameEvent ev{f, nowNs(), true};
+    if (events)
+        events->append(ev);
+    else
+        Q_EMIT framesSeen(CanFrameEvents{ev});
+    return true;
+}
+
+void CanFamily::sendFrame(const CanFrame &f)
+{
+    if (!write(f))
+        engine().reportError(tr("could not send frame %1: the CAN interface is not connected").arg(f.idText()));
+}
+
+void CanFamily::setSyncPeriod(int ms)
+{
+    if (ms <= 0) {
+        m_syncTimer.stop();
+        return;
+    }
+    m_syncTimer.start(ms);
+}
+
+// ---------------------------------------------------------------------------------------
+// Received frames
+
+void CanFamily::resetCounters()
+{
+    m_frames = m_bytesIn = m_errorFrames = 0;
+    m_framesByType.clear();
+}
+
+void CanFamily::feed(const QByteArray &bytes, int64_t)
+{
+    m_records.clear();
+    m_reader.feed(bytes, m_records);
+    CanFrameEvents events;
+    m_batch.clear();
+    const qint64 now = nowNs();
+    for (const CanRecord &r : m_records) {
+        if (r.error) {
+            ++m_errorFrames;
+            continue;
+        }
+        events.append(CanFrameEvent{r.frame, now, false});
+        handleFrame(r.frame, now, m_batch);
+    }
+    engine().appendSamples(m_batch);
+    if (!events.isEmpty())
+        Q_EMIT framesSeen(events);
+}
+
+void CanFamily::handleFrame(const CanFrame &f, qint64 now, std::vector<model::Sample> &batch)
+{
+    ++m_frames;
+    m_bytesIn += f.len;
+    const DecodedFrame d = m_decoder.decode(f);
+    ++m_framesByType[kindName(d.kind)];
+    if (m_decoder.detected() != m_lastDetected) {
+        m_lastDetected = m_decoder.detected();
+        Q_EMIT protocolDetected(int(m_lastDetected));
+    }
+    if (d.kind == FrameKind::Heartbeat && f.data[0] == canopen::StateBootUp)
+        noteNode(d.protocol == CanProtocol::Auto ? CanProtocol::CanOpen : d.protocol, d.node, tr("boot-up"));
+    else if (d.kind == FrameKind::Heartbeat)
+        noteNode(m_decoder.detected() == CanProtocol::Hec495 ? CanProtocol::Hec495 : CanProtocol::CanOpen, d.node,
+                 tr("heartbeat"));
+    else if (d.sample && d.node >= 0)
+        noteNode(d.protocol, d.node, tr("data"));
+    if (m_scanning && d.kind == FrameKind::Sdo && d.node >= m_scanFrom && d.node <= m_scanTo) {
+        if (const auto s = canopen::parseSdo(f); s && s->fromDevice && !m_scanFound.contains(d.node)) {
+            m_scanFound.append(d.node);
+            noteNode(CanProtocol::CanOpen, d.node, tr("SDO scan"));
+        }
+    }
+    if (matchStep(f, d))
+        return;
+    if (!d.sample)
+        return;
+    if (m_target < 0 && d.node >= 0) {
+        m_target = d.node;
+        Q_EMIT targetNodeChanged(m_target);
+    }
+    if (d.node >= 0 && d.node != m_target)
+        return;
+    merge(m_merged, *d.sample, d.components);
+    model::Sample s = m_merged;
+    s.hostTimeNs = now;
+    batch.push_back(std::move(s));
+}
+
+void CanFamily::noteNode(CanProtocol p, int node, const QString &how)
+{
+    if (node < 0)
+        return;
+    const QString key = QStringLiteral("%1/%2").arg(int(p)).arg(node);
+    if (m_seenNodes.contains(key) || m_seenNodes.size() > 1024)
+        return;
+    m_seenNodes.insert(key);
+    Q_EMIT nodeDiscovered(CanNodeInfo{p, node, how});
+}
+
+void CanFamily::fillCounters(SessionStats &s) const
+{
+    s.frames = m_frames;
+    s.bytesIn = m_bytesIn;
+    s.framesByType = m_framesByType;
+    s.payloadErrors = m_errorFrames;
+    s.bytesSkipped = m_decoder.counters().unknownFrames + m_reader.bytesSkipped();
+    s.lengthErrors = m_decoder.counters().malformed;
+}
+
+// ---------------------------------------------------------------------------------------
+// Jobs: each step one request of the engine
+
+void CanFamily::submitJob(const CanJob &job)
+{
+    if (int(m_jobs.size()) >= kMaxQueuedJobs) {
+        Q_EMIT jobFinished(
+            CanRequestResult{job.id, false, 0, tr("too many requests are waiting; try again when they are done")});
+        return;
+    }
+    m_jobs.push_back(job);
+    startJob();
+}
+
+void CanFamily::startJob()
+{
+    if (m_job || m_jobs.empty() || !engine().transport().isOpen())
+        return;
+    m_job = std::move(m_jobs.front());
+    m_jobs.pop_front();
+    m_step = 0;
+    m_lastValue = 0;
+    if (m_job->steps.empty()) {
+        finishJob(true, QString());
+        return;
+    }
+    submitStep(false);
+}
+
+void CanFamily::submitStep(bool first)
+{
+    const CanJobStep &s = m_job->steps[m_step];
+    Request r;
+    r.command = Step{m_job->id, s};
+    r.timeoutMs = s.expect == CanJobStep::Expect::Nothing ? std::max(0, s.pauseMs) : s.timeoutMs;
+    r.maxAttempts = 1;
+    r.done = [this, job = m_job->id](const RequestResult &res) {
+        if (m_job && m_job->id == job && res.status != RequestStatus::Cancelled)
+            stepEnded(res);
+    };
+    engine().submit(std::move(r), first);
+}
+
+QString CanFamily::prepare(Request &r)
+{
+    const Step &s = *std::any_cast<Step>(&r.command);
+    r.wire = s.step.hasTx ? toRecord(s.step.tx) : QByteArray();
+    return {};
+}
+
+void CanFamily::writing(const Request &r)
+{
+    const CanJobStep &s = std::any_cast<Step>(&r.command)->step;
+    if (s.hasTx) // on the monitor as sent (a write that then fails ends the step at once)
+        Q_EMIT framesSeen(CanFrameEvents{CanFrameEvent{s.tx, nowNs(), true}});
+}
+
+void CanFamily::unanswered(const Request &r, RequestResult &result)
+{
+    const CanJobStep &s = std::any_cast<Step>(&r.command)->step;
+    if (result.status == RequestStatus::Timeout && s.expect == CanJobStep::Expect::Nothing) {
+        result.status = RequestStatus::Ok; // the pause is over
+        result.message.clear();
+        result.reply = m_lastValue;
+        return;
+    }
+    if (result.status == RequestStatus::Timeout) {
+        const int node = s.expect == CanJobStep::Expect::TrafficFrom ? s.node : m_target;
+        result.message = tr("no answer from node %1 to \"%2\" within %3 ms: check the node ID, the bit rate and the "
+                            "wiring")
+                             .arg(node)
+                             .arg(s.what)
+                             .arg(s.timeoutMs);
+    } else if (result.status == RequestStatus::NotSent) {
+        result.message = tr("could not send \"%1\": the CAN interface is not connected").arg(s.what);
+    }
+    result.reply = m_lastValue;
+}
+
+bool CanFamily::matchStep(const CanFrame &f, const DecodedFrame &d)
+{
+    const Request *current = engine().current();
+    if (!current || !m_job)
+        return false;
+    const Step *step = std::any_cast<Step>(&current->command);
+    if (!step || step->job != m_job->id)
+        return false;
+    const CanJobStep &s = step->step;
+    const auto answer = [this](bool ok, uint32_t value, const QString &message) {
+        RequestResult r;
+        r.status = ok ? RequestStatus::Ok : RequestStatus::Refused;
+        r.message = message;
+        r.reply = value;
+        engine().finishCurrent(std::move(r));
+    };
+    switch (s.expect) {
+    case CanJobStep::Expect::Nothing: return false;
+    case CanJobStep::Expect::J1939Reply: {
+        const auto rep = j1939::parseReg(f);
+        const auto req = j1939::parseReg(s.tx);
+        if (!rep || !req || !j1939::answers(*rep, *req))
+            return false;
+        if (rep->status != 0)
+            answer(false, rep->value, tr("the device refused \"%1\" (status %2)").arg(s.what).arg(rep->status));
+        else
+            answer(true, rep->value, QString());
+        return true;
+    }
+    case CanJobStep::Expect::SdoReply: {
+        const auto rep = canopen::parseSdo(f);
+        const auto req = canopen::parseSdo(s.tx);
+        if (!rep || !req || !canopen::sdoAnswers(*rep, *req))
+            return false;
+        if (rep->kind == canopen::SdoKind::Abort)
+            answer(false, rep->value, tr("the device aborted \"%1\": %2").arg(s.what, canopen::abortText(rep->value)));
+        else
+            answer(true, rep->value, QString());
+        return true;
+    }
+    case CanJobStep::Expect::Hec495Reply: {
+        const auto req = hec495::parseWrite(s.tx);
+        if (const auto rep = hec495::parseWrite(f); rep && req && rep->reply && rep->extended == req->extended
+            && rep->index == req->index && rep->node == req->node) {
+            answer(true, req->value, QString());
+            return true;
+        }
+        if (const auto ab = canopen::parseSdo(f); ab && req && ab->fromDevice && ab->kind == canopen::SdoKind::Abort
+            && ab->node == req->node && ab->index == req->index) {
+            answer(false, ab->value, tr("the device refused \"%1\": %2").arg(s.what, canopen::abortText(ab->value)));
+            return true;
+        }
+        return false;
+    }
+    case CanJobStep::Expect::TrafficFrom:
+        if (d.node == s.node && d.kind != FrameKind::Unknown && d.kind != FrameKind::Nmt)
+            answer(true, uint32_t(s.node), QString());
+        return false; // the frame still counts as data
+    }
+    return false;
+}
+
+void CanFamily::stepEnded(const RequestResult &r)
+{
+    if (!r.ok()) {
+        finishJob(false, r.message);
+        return;
+    }
+    const CanJobStep &s = m_job->steps[m_step];
+    const uint32_t value = r.reply.toUInt();
+    m_lastValue = value;
+    if (s.expectValue && *s.expectValue != value) {
+        finishJob(false, tr("\"%1\" read back %2, expected %3").arg(s.what).arg(value).arg(*s.expectValue));
+        return;
+    }
+    if (s.followNode >= 0 && s.followNode != m_target) {
+        m_target = s.followNode;
+        m_merged = model::Sample{};
+        Q_EMIT targetNodeChanged(m_target);
+    }
+    if (++m_step >= m_job->steps.size()) {
+        finishJob(true, tr("%1: done").arg(m_job->title));
+        return;
+    }
+    submitStep(true);
+}
+
+void CanFamily::finishJob(bool ok, const QString &message)
+{
+    if (!m_job)
+        return;
+    const CanRequestResult r{m_job->id, ok, m_lastValue, ok ? message : tr("%1 failed: %2").arg(m_job->title, message)};
+    m_job.reset();
+    if (!ok)
+        qCInfo(lcCan) << r.message;
+    Q_EMIT jobFinished(r);
+    QMetaObject::invokeMethod(this, &CanFamily::startJob, Qt::QueuedConnection);
+}
+
+// ---------------------------------------------------------------------------------------
+// SDO scan
+
+void CanFamily::scan(int from, int to)
+{
+    if (m_scanning)
+        cancelScan();
+    m_scanFrom = std::clamp(from, 1, 127);
+    m_scanTo = std::clamp(to, m_scanFrom, 127);
+    m_scanNext = m_scanFrom;
+    m_scanFound.clear();
+    m_scanTailUntil = 0;
+    m_scanning = true;
+    m_scanTimer.start();
+}
+
+void CanFamily::scanTick()
+{
+    if (!m_scanning)
+        return;
+    const int total = m_scanTo - m_scanFrom + 1;
+    if (m_scanNext <= m_scanTo) {
+        write(canopen::sdoRead(uint8_t(m_scanNext), 0x1000, 0));
+        ++m_scanNext;
+        Q_EMIT scanProgress(m_scanNext - m_scanFrom, total);
+        if (m_scanNext > m_scanTo)
+            m_scanTailUntil = nowNs() + qint64(kScanTailMs) * 1000000;
+        return;
+    }
+    if (nowNs() < m_scanTailUntil)
+        return;
+    m_scanTimer.stop();
+    m_scanning = false;
+    std::sort(m_scanFound.begin(), m_scanFound.end());
+    Q_EMIT scanFinished(m_scanFound, false);
+}
+
+void CanFamily::cancelScan()
+{
+    if (!m_scanning)
+        return;
+    m_scanTimer.stop();
+    m_scanning = false;
+    std::sort(m_scanFound.begin(), m_scanFound.end());
+    Q_EMIT scanFinished(m_scanFound, true);
+}
+
+} // namespace imudesk::device

@@ -1,0 +1,113 @@
+#pragma once
+// A device on a CAN bus (HiPNUC J1939, HiPNUC CANopen, HEC495 CAN) as a session-engine family
+// (family_plugin.h). The transport (io::CanTransport) hands frames over as records
+// (protocol/can/can_record.h); this plug-in decodes them (protocol::can::CanDecoder), merges
+// what a device splits over several frames into one sample per data frame of the node it
+// follows, finds nodes (data, heartbeat, boot-up, the SDO scan), and runs configuration jobs.
+//
+// A job (can_job.h) is a sequence of steps; each step is one engine request: a frame to send
+// and what confirms it (a J1939 configuration reply, an SDO reply, an HEC495 write reply,
+// traffic from a node, or a pause). A failed or timed-out step ends the job; the next step
+// goes out ahead of anything queued after the job. SYNC, NMT, raw frames and scan probes go
+// out directly, beside the queue, as on a bus anyone may talk on.
+#include "device/can_job.h"
+#include "device/can_session_types.h"
+#include "device/family_plugin.h"
+#include "protocol/can/can_record.h"
+
+#include <QElapsedTimer>
+#include <QSet>
+#include <QTimer>
+
+#include <deque>
+#include <map>
+#include <optional>
+#include <vector>
+
+namespace imudesk::device {
+
+class CanFamily : public FamilyPlugin {
+    Q_OBJECT
+public:
+    static constexpr int kMaxQueuedJobs = 64;
+    static constexpr int kScanSpacingMs = 5;
+    static constexpr int kScanTailMs = 300;
+
+    CanFamily();
+
+    // Engine thread. Before the engine opens the link.
+    void configure(const CanSessionOptions &options);
+    void submitJob(const CanJob &job);
+    void sendFrame(const protocol::can::CanFrame &f);
+    void setSyncPeriod(int ms);
+    void scan(int from, int to);
+    void cancelScan();
+
+    QString linkKind() const override { return QStringLiteral("CAN"); }
+    int firstBaud(int requestedBaud) const override { return requestedBaud; }
+    void opened(int requestedBaud) override;
+    void stopping() override;
+    void restartStream() override { m_reader.reset(); }
+    void resetCounters() override;
+    void feed(const QByteArray &bytes, int64_t nowNs) override;
+    bool midUnit() const override { return false; } // records arrive whole
+    void lineIdle(int64_t) override {}
+    void fillCounters(SessionStats &s) const override;
+    QString prepare(Request &r) override;
+    void writing(const Request &r) override;
+    void unanswered(const Request &r, RequestResult &result) override;
+
+Q_SIGNALS:
+    void framesSeen(const imudesk::device::CanFrameEvents &events);
+    void nodeDiscovered(const imudesk::device::CanNodeInfo &info);
+    void protocolDetected(int protocol);
+    void targetNodeChanged(int node);
+    void jobFinished(const imudesk::device::CanRequestResult &result);
+    void scanProgress(int done, int total);
+    void scanFinished(const QList<int> &nodes, bool cancelled);
+
+private:
+    // What a step's request carries (Request::command).
+    struct Step {
+        quint64 job = 0;
+        CanJobStep step;
+    };
+    void handleFrame(const protocol::can::CanFrame &f, qint64 now, std::vector<model::Sample> &batch);
+    bool matchStep(const protocol::can::CanFrame &f, const protocol::can::DecodedFrame &d);
+    bool write(const protocol::can::CanFrame &f, CanFrameEvents *events = nullptr);
+    void startJob();
+    void submitStep(bool first);
+    void stepEnded(const RequestResult &r);
+    void finishJob(bool ok, const QString &message);
+    void noteNode(protocol::can::CanProtocol p, int node, const QString &how);
+    void scanTick();
+    qint64 nowNs() const { return m_clock.nsecsElapsed(); }
+
+    CanSessionOptions m_options;
+    protocol::can::CanRecordReader m_reader;
+    std::vector<protocol::can::CanRecord> m_records;
+    protocol::can::CanDecoder m_decoder;
+    protocol::can::CanProtocol m_lastDetected = protocol::can::CanProtocol::Auto;
+    int m_target = -1;
+    model::Sample m_merged;
+    std::vector<model::Sample> m_batch;
+
+    std::deque<CanJob> m_jobs;
+    std::optional<CanJob> m_job;
+    size_t m_step = 0;
+    uint32_t m_lastValue = 0;
+
+    QTimer m_syncTimer{this};
+    QTimer m_scanTimer{this};
+    int m_scanNext = 0, m_scanTo = 0, m_scanFrom = 0;
+    bool m_scanning = false;
+    qint64 m_scanTailUntil = 0;
+    QList<int> m_scanFound;
+    QSet<QString> m_seenNodes;
+    QElapsedTimer m_clock;
+
+    uint64_t m_frames = 0, m_bytesIn = 0, m_errorFrames = 0;
+    std::map<std::string, uint64_t> m_framesByType;
+};
+
+} // namespace imudesk::device

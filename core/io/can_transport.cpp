@@ -1,0 +1,138 @@
+#include "can_transport.h"
+
+#include "protocol/can/can_record.h"
+
+#include <QCanBus>
+#include <QCanBusDevice>
+#include <QCoreApplication>
+#include <QVariant>
+
+#include <vector>
+
+namespace imudesk::io {
+
+namespace can = protocol::can;
+
+namespace {
+
+QThread *g_canThread = nullptr;
+
+void stopCanThread()
+{
+    if (!g_canThread)
+        return;
+    g_canThread->quit();
+    g_canThread->wait();
+    delete g_canThread;
+    g_canThread = nullptr;
+}
+
+} // namespace
+
+QThread *canThread()
+{
+    if (!g_canThread) {
+        g_canThread = new QThread;
+        g_canThread->setObjectName(QStringLiteral("imudesk-can"));
+        g_canThread->start();
+        qAddPostRoutine(stopCanThread);
+    }
+    return g_canThread;
+}
+
+CanTransport::CanTransport(QObject *parent) : Transport(parent) {}
+
+CanTransport::~CanTransport()
+{
+    close();
+}
+
+bool CanTransport::open(const QString &address, int bitrate, QString *error)
+{
+    close();
+    m_address = address;
+    m_bitrate = bitrate;
+    const qsizetype colon = address.indexOf(QLatin1Char(':'));
+    const QString plugin = colon > 0 ? address.left(colon) : address;
+    const QString interfaceName = colon > 0 ? address.mid(colon + 1) : QString();
+    const auto fail = [error](const QString &why) {
+        if (error)
+            *error = why;
+        return false;
+    };
+    if (!QCanBus::instance()->plugins().contains(plugin))
+        return fail(tr("the CAN plugin \"%1\" is not installed (available: %2)")
+                        .arg(plugin, QCanBus::instance()->plugins().join(QStringLiteral(", "))));
+    QString why;
+    m_bus.reset(QCanBus::instance()->createDevice(plugin, interfaceName, &why));
+    if (!m_bus)
+        return fail(tr("cannot create CAN interface %1: %2").arg(address, why));
+    if (bitrate > 0)
+        m_bus->setConfigurationParameter(QCanBusDevice::BitRateKey, bitrate);
+    if (m_fd) {
+        m_bus->setConfigurationParameter(QCanBusDevice::CanFdKey, true);
+        if (m_dataBitrate > 0)
+            m_bus->setConfigurationParameter(QCanBusDevice::DataBitRateKey, m_dataBitrate);
+    }
+    connect(m_bus.get(), &QCanBusDevice::framesReceived, this, &CanTransport::onFramesReceived);
+    connect(m_bus.get(), &QCanBusDevice::errorOccurred, this, [this](QCanBusDevice::CanBusError e) {
+        if (m_bus && e != QCanBusDevice::NoError)
+            Q_EMIT notice(tr("CAN interface error: %1").arg(m_bus->errorString()));
+    });
+    connect(m_bus.get(), &QCanBusDevice::stateChanged, this, [this](QCanBusDevice::CanBusDeviceState s) {
+        if (s == QCanBusDevice::UnconnectedState && m_bus)
+            Q_EMIT failed(tr("the CAN interface %1 closed; received data is kept").arg(m_address));
+    });
+    if (!m_bus->connectDevice()) {
+        why = m_bus->errorString();
+        m_bus->disconnect(this);
+        m_bus.reset();
+        return fail(tr("cannot open CAN interface %1: %2 (check the interface name, that it is up, and your "
+                       "permissions)")
+                        .arg(address, why));
+    }
+    return true;
+}
+
+void CanTransport::close()
+{
+    if (!m_bus)
+        return;
+    auto bus = std::move(m_bus);
+    bus->disconnect(this);
+    if (bus->state() != QCanBusDevice::UnconnectedState)
+        bus->disconnectDevice();
+}
+
+bool CanTransport::isOpen() const
+{
+    return m_bus && m_bus->state() == QCanBusDevice::ConnectedState;
+}
+
+qint64 CanTransport::write(const QByteArray &records)
+{
+    if (records.isEmpty())
+        return 0;
+    if (!isOpen())
+        return -1;
+    can::CanRecordReader reader;
+    std::vector<can::CanRecord> frames;
+    reader.feed(records, frames);
+    for (const auto &r : frames)
+        if (!m_bus->writeFrame(can::toQt(r.frame)))
+            return -1;
+    return records.size();
+}
+
+void CanTransport::onFramesReceived()
+{
+    QByteArray out;
+    while (m_bus && m_bus->framesAvailable()) {
+        const QCanBusFrame q = m_bus->readFrame();
+        out.append(can::toRecord(can::fromQt(q), q.frameType() == QCanBusFrame::ErrorFrame));
+    }
+    if (!out.isEmpty())
+        Q_EMIT bytesReceived(out);
+}
+
+} // namespace imudesk::io

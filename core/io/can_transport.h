@@ -1,0 +1,60 @@
+#pragma once
+// A CAN interface through Qt's QCanBus plug-ins (socketcan, virtualcan, peakcan, ...) as a
+// session transport: frames in and out as protocol::can records (can_record.h), so that the
+// session engine treats a bus like any other byte link. The address is "plugin:interface"
+// ("virtualcan:can0"), the rate the bit rate (0: leave the interface's setting). Lives in
+// the session's worker thread: every CAN session shares one (canThread()), because the
+// virtualcan plug-in keeps its bus server in the thread of the first device opened.
+#include "io/transport.h"
+
+#include <QThread>
+
+#include <memory>
+
+QT_BEGIN_NAMESPACE
+class QCanBusDevice;
+QT_END_NAMESPACE
+
+namespace imudesk::io {
+
+// The thread every CAN session's engine lives in (started on first use, stopped when the
+// application object is destroyed).
+QThread *canThread();
+
+class CanTransport : public Transport {
+    Q_OBJECT
+public:
+    explicit CanTransport(QObject *parent = nullptr);
+    ~CanTransport() override;
+
+    // For the next open: CAN FD with this data-phase bit rate (0: the interface's).
+    void setFd(bool fd, int dataBitrate)
+    {
+        m_fd = fd;
+        m_dataBitrate = dataBitrate;
+    }
+
+    bool open(const QString &address, int bitrate, QString *error) override;
+    void close() override;
+    // Open and connected: frames can go out.
+    bool isOpen() const override;
+    // A new bit rate needs the interface reopened: not done under a running session.
+    bool setBaud(int bitrate) override { return bitrate == m_bitrate; }
+    int baud() const override { return m_bitrate; }
+    QString address() const override { return m_address; }
+    // Whole records only; each becomes one frame. The answer is bytes.size() when all went out.
+    qint64 write(const QByteArray &records) override;
+    void clear() override {}
+    bool reopen(int bitrate, QString *error) override { return open(m_address, bitrate, error); }
+
+private:
+    void onFramesReceived();
+
+    std::unique_ptr<QCanBusDevice> m_bus;
+    QString m_address;
+    int m_bitrate = 0;
+    bool m_fd = false;
+    int m_dataBitrate = 0;
+};
+
+} // namespace imudesk::io
