@@ -26,7 +26,7 @@
 <context>
     <name>imudesk::record::ReplayWorker</name>
     <message numerus="yes">
-        <location filename="../core/record/replay_worker.cpp" line="+63"/>
+        <location filename="../core/record/replay_worker.cpp" line="+64"/>
         <source>%n damaged chunk(s) skipped</source>
         <translation>
             <numerusform>%n damaged chunk skipped</numerusform>
@@ -37,7 +37,7 @@
 <context>
     <name>imudesk::ui::CompassPoseView</name>
     <message numerus="yes">
-        <location filename="../ui/compass_pose_view.cpp" line="+109"/>
+        <location filename="../ui/attitude/compass_pose_view.cpp" line="+109"/>
         <source>%n point(s)</source>
         <translation>
             <numerusform>%n point</numerusform>
@@ -48,7 +48,7 @@
 <context>
     <name>imudesk::ui::ExportDialog</name>
     <message numerus="yes">
-        <location filename="../ui/export_dialog.cpp" line="+161"/>
+        <location filename="../ui/recording/export_dialog.cpp" line="+161"/>
         <source>%n row(s) written to %1</source>
         <translation>
             <numerusform>%n row written to %1</numerusform>
@@ -59,7 +59,7 @@
 <context>
     <name>imudesk::ui::ModbusScanDialog</name>
     <message numerus="yes">
-        <location filename="../ui/modbus_scan_dialog.cpp" line="+159"/>
+        <location filename="../ui/bus/modbus_scan_dialog.cpp" line="+159"/>
         <source>Cancelled; %n device(s) found so far.</source>
         <translation>
             <numerusform>Cancelled; %n device found so far.</numerusform>
@@ -78,7 +78,7 @@
 <context>
     <name>imudesk::ui::RawBytesView</name>
     <message numerus="yes">
-        <location filename="../ui/raw_bytes_view.cpp" line="+196"/>
+        <location filename="../ui/workspace/raw_bytes_view.cpp" line="+196"/>
         <source>… %n read(s) or write(s) not shown (the log dropped them before this view caught up) …</source>
         <translation>
             <numerusform>… %n read or write not shown (the log dropped them before this view caught up) …</numerusform>
@@ -97,7 +97,7 @@
 <context>
     <name>imudesk::ui::RecordingControls</name>
     <message numerus="yes">
-        <location filename="../ui/recording_controls.cpp" line="+213"/>
+        <location filename="../ui/recording/recording_controls.cpp" line="+213"/>
         <source>%n frame(s)</source>
         <translation>
             <numerusform>%n frame</numerusform>

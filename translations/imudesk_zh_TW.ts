@@ -58,7 +58,7 @@
 <context>
     <name>CalibrationReport</name>
     <message>
-        <location filename="../ui/calibration_report.cpp" line="+37" />
+        <location filename="../ui/calibration/calibration_report.cpp" line="+37" />
         <source>Fit</source>
         <translation>擬合方式</translation>
     </message>
@@ -483,7 +483,7 @@
 <context>
     <name>CalibrationRunSaver</name>
     <message>
-        <location filename="../ui/calibration_run_saver.cpp" line="+48" />
+        <location filename="../ui/calibration/calibration_run_saver.cpp" line="+48" />
         <source>Saved in the calibration history (Calibrate &gt; Calibration history): %1</source>
         <translation>已儲存到校準歷史（校準 &gt; 校準歷史）：%1</translation>
     </message>
@@ -1901,7 +1901,7 @@
 <context>
     <name>LinkFactory</name>
     <message>
-        <location filename="../ui/link_factory.cpp" line="+42" />
+        <location filename="../ui/workspace/link_factory.cpp" line="+42" />
         <source>Simulated HEC495</source>
         <translation>模擬 HEC495</translation>
     </message>
@@ -4446,7 +4446,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::device::SessionEngine</name>
     <message>
-        <location filename="../core/device/session_engine.cpp" line="+107" />
+        <location filename="../core/device/session_engine.cpp" line="+112" />
         <source>the connection was closed</source>
         <translation>連線已關閉</translation>
     </message>
@@ -4471,7 +4471,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>串列埠未開啟</translation>
     </message>
     <message>
-        <location line="+51" />
+        <location line="+49" />
         <source>writing to the port failed</source>
         <translation>寫入串列埠失敗</translation>
     </message>
@@ -4481,7 +4481,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>%1 ms 內沒有回應</translation>
     </message>
     <message>
-        <location line="+83" />
+        <location line="+81" />
         <source>Bytes keep arriving on %1 but none of them form a frame: the device probably runs at another baud rate now. Disconnect and connect again with the baud rate set to Auto.</source>
         <translation>%1 上持續收到位元組，但無法組成任何資料框：裝置可能已改用其他波特率。請中斷連線，並將波特率設為「自動」後重新連線。</translation>
     </message>
@@ -4490,7 +4490,6 @@ Keep the module in place while turning it, and calibrate it together with everyt
     <name>imudesk::io::SerialTransport</name>
     <message>
         <location filename="../core/io/serial_transport.cpp" line="+27" />
-        <location filename="../core/sim/simulated_transport.cpp" line="+21" />
         <source>Port %1 was not found. Check that the device is plugged in and choose the port again from the list.</source>
         <translation>找不到串列埠 %1。請檢查裝置是否已插好，然後從清單中重新選擇串列埠。</translation>
     </message>
@@ -5172,7 +5171,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::record::ReplayWorker</name>
     <message>
-        <location filename="../core/record/replay_worker.cpp" line="+60" />
+        <location filename="../core/record/replay_worker.cpp" line="+61" />
         <source>%1: %2. Replaying what is intact.</source>
         <translation>%1：%2。將重播完好的部分。</translation>
     </message>
@@ -5335,7 +5334,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::sim::SimulatedTransport</name>
     <message>
-        <location filename="../core/sim/simulated_transport.cpp" line="+55" />
+        <location filename="../core/sim/simulated_transport.cpp" line="+73" />
         <source>The connection to %1 was lost (simulated unplug). Check the cable; everything received so far is kept.</source>
         <translation>與 %1 的連線已中斷（模擬拔除）。請檢查線纜；已收到的資料全部保留。</translation>
     </message>
@@ -5343,7 +5342,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::AnalysisWindow</name>
     <message>
-        <location filename="../ui/analysis_window.cpp" line="+27" />
+        <location filename="../ui/charts/analysis_window.cpp" line="+27" />
         <source>Analysis</source>
         <translation>分析</translation>
     </message>
@@ -5452,7 +5451,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::AttitudeResetWizard</name>
     <message>
-        <location filename="../ui/attitude_reset_wizard.cpp" line="+23" />
+        <location filename="../ui/calibration/attitude_reset_wizard.cpp" line="+23" />
         <source>Heading reset: the current heading becomes 0. Keep the module still. (Firmware 1.7.1 and later.)</source>
         <translation>航向角重設：目前航向角歸零。請保持模組靜止。（韌體 1.7.1 及以上版本。）</translation>
     </message>
@@ -5572,7 +5571,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::AttitudeWidget</name>
     <message>
-        <location filename="../ui/attitude_widget.cpp" line="+280" />
+        <location filename="../ui/attitude/attitude_widget.cpp" line="+280" />
         <source>X</source>
         <translation>X</translation>
     </message>
@@ -5672,7 +5671,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::BandwidthCalculator</name>
     <message>
-        <location filename="../ui/bandwidth_calculator.cpp" line="+33" />
+        <location filename="../ui/charts/bandwidth_calculator.cpp" line="+33" />
         <source>Baud rate:</source>
         <translation>波特率：</translation>
     </message>
@@ -5730,7 +5729,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::BusConnect</name>
     <message>
-        <location filename="../ui/bus_connect_dialog.cpp" line="+24" />
+        <location filename="../ui/bus/bus_connect_dialog.cpp" line="+24" />
         <source>Connect</source>
         <translation>連線</translation>
     </message>
@@ -5738,7 +5737,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::CalibrationHistoryDialog</name>
     <message>
-        <location filename="../ui/calibration_history_dialog.cpp" line="+37" />
+        <location filename="../ui/calibration/calibration_history_dialog.cpp" line="+37" />
         <source>Calibration history</source>
         <translation>校準歷史</translation>
     </message>
@@ -5881,7 +5880,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::CanConfigPanel</name>
     <message>
-        <location filename="../ui/can_config_panel.cpp" line="+30" />
+        <location filename="../ui/bus/can_config_panel.cpp" line="+30" />
         <location line="+2" />
         <location line="+1" />
         <location line="+1" />
@@ -6150,7 +6149,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::CanConnectDialog</name>
     <message>
-        <location filename="../ui/bus_connect_dialog.cpp" line="+99" />
+        <location filename="../ui/bus/bus_connect_dialog.cpp" line="+99" />
         <source>Connect over CAN</source>
         <translation>透過 CAN 連線</translation>
     </message>
@@ -6258,7 +6257,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::CanMonitorWidget</name>
     <message>
-        <location filename="../ui/can_monitor_widget.cpp" line="+21" />
+        <location filename="../ui/bus/can_monitor_widget.cpp" line="+21" />
         <source>Clear</source>
         <translation>清除</translation>
     </message>
@@ -6361,7 +6360,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::ChartPanel</name>
     <message>
-        <location filename="../ui/chart_panel.cpp" line="+138" />
+        <location filename="../ui/charts/chart_panel.cpp" line="+138" />
         <source>Charts</source>
         <translation>圖表</translation>
     </message>
@@ -6444,7 +6443,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::ChartView</name>
     <message>
-        <location filename="../ui/chart_view.cpp" line="+94" />
+        <location filename="../ui/charts/chart_view.cpp" line="+94" />
         <source>Accelerometer</source>
         <translation>加速度計</translation>
     </message>
@@ -6708,7 +6707,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::CommandLogWidget</name>
     <message>
-        <location filename="../ui/command_log_widget.cpp" line="+169" />
+        <location filename="../ui/workspace/command_log_widget.cpp" line="+169" />
         <source>Copy</source>
         <translation>複製</translation>
     </message>
@@ -6741,7 +6740,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::ComparisonChart</name>
     <message>
-        <location filename="../ui/comparison_chart.cpp" line="+108" />
+        <location filename="../ui/charts/comparison_chart.cpp" line="+108" />
         <source>Comparison</source>
         <translation>比較</translation>
     </message>
@@ -6806,7 +6805,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::CompassPoseView</name>
     <message>
-        <location filename="../ui/compass_pose_view.cpp" line="+69" />
+        <location filename="../ui/attitude/compass_pose_view.cpp" line="+69" />
         <source>N</source>
         <translation>北</translation>
     </message>
@@ -6851,7 +6850,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::ConfigPanel</name>
     <message>
-        <location filename="../ui/config_panel.cpp" line="+173" />
+        <location filename="../ui/configuration/config_panel.cpp" line="+173" />
         <source>OK</source>
         <translation>OK</translation>
     </message>
@@ -6979,7 +6978,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::ConnectionBar</name>
     <message>
-        <location filename="../ui/connection_bar.cpp" line="+192" />
+        <location filename="../ui/workspace/connection_bar.cpp" line="+192" />
         <source>SN %1</source>
         <translation>序號 %1</translation>
     </message>
@@ -7077,7 +7076,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::ConsoleWidget</name>
     <message>
-        <location filename="../ui/console_widget.cpp" line="+127" />
+        <location filename="../ui/workspace/console_widget.cpp" line="+127" />
         <source>(reply to: %1)</source>
         <translation>（對 %1 的回應）</translation>
     </message>
@@ -7130,7 +7129,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::DeviceWorkspace</name>
     <message>
-        <location filename="../ui/device_workspace.cpp" line="+249" />
+        <location filename="../ui/workspace/device_workspace.cpp" line="+249" />
         <source>New connection</source>
         <translation>新連線</translation>
     </message>
@@ -7287,7 +7286,7 @@ Link load = bytes per second × 10 bits / baud rate.</source>
         <translation>3D 姿態</translation>
     </message>
     <message>
-        <location filename="../ui/device_workspace_layout.cpp" line="+115" />
+        <location filename="../ui/workspace/device_workspace_layout.cpp" line="+115" />
         <source>&amp;Monitor</source>
         <translation>監看(&amp;M)</translation>
     </message>
@@ -7337,7 +7336,7 @@ Link load = bytes per second × 10 bits / baud rate.</source>
         <translation>數值表太窄，無法容納其各欄</translation>
     </message>
     <message>
-        <location filename="../ui/device_workspace.cpp" line="+1" />
+        <location filename="../ui/workspace/device_workspace.cpp" line="+1" />
         <source>Configuration</source>
         <translation>配置</translation>
     </message>
@@ -7350,7 +7349,7 @@ Link load = bytes per second × 10 bits / baud rate.</source>
 <context>
     <name>imudesk::ui::ExportDialog</name>
     <message>
-        <location filename="../ui/export_dialog.cpp" line="+21" />
+        <location filename="../ui/recording/export_dialog.cpp" line="+21" />
         <source>Export %1</source>
         <translation>匯出 %1</translation>
     </message>
@@ -7426,7 +7425,7 @@ Link load = bytes per second × 10 bits / baud rate.</source>
 <context>
     <name>imudesk::ui::FirmwareUpdateDialog</name>
     <message>
-        <location filename="../ui/firmware_update_dialog.cpp" line="+37" />
+        <location filename="../ui/firmware/firmware_update_dialog.cpp" line="+37" />
         <source>unknown</source>
         <translation>未知</translation>
     </message>
@@ -7694,7 +7693,7 @@ Link load = bytes per second × 10 bits / baud rate.</source>
 <context>
     <name>imudesk::ui::GyroScaleWizard</name>
     <message>
-        <location filename="../ui/gyro_scale_wizard.cpp" line="+26" />
+        <location filename="../ui/calibration/gyro_scale_wizard.cpp" line="+26" />
         <source>Gyro scale factor calibration</source>
         <translation>陀螺儀標度因數校準</translation>
     </message>
@@ -7842,7 +7841,7 @@ Link load = bytes per second × 10 bits / baud rate.</source>
 <context>
     <name>imudesk::ui::HeadingDial</name>
     <message>
-        <location filename="../ui/heading_dial.cpp" line="+25" />
+        <location filename="../ui/attitude/heading_dial.cpp" line="+25" />
         <source>Heading dial</source>
         <translation>航向角錶盤</translation>
     </message>
@@ -7885,7 +7884,7 @@ Link load = bytes per second × 10 bits / baud rate.</source>
 <context>
     <name>imudesk::ui::Hec495CalibrationWizard</name>
     <message>
-        <location filename="../ui/hec495_calibration_wizard.cpp" line="+37" />
+        <location filename="../ui/calibration/hec495_calibration_wizard.cpp" line="+37" />
         <source>Suits: the compass and its mount can be turned to the poses of the table. Good results; in a complex magnetic environment slightly less accurate than all-orientation. Limit: pitch must exceed 45 deg and roll 30 deg. The manual recommends trying this method first.</source>
         <translation>適用：羅盤及其安裝座可轉到表中的各個姿態。效果良好；在複雜磁場環境下精度略低於全姿態校準。限制：俯仰角需超過 45 deg，橫滾角需超過 30 deg。手冊建議優先嘗試此方法。</translation>
     </message>
@@ -8154,7 +8153,7 @@ Method: %3</source>
 <context>
     <name>imudesk::ui::Hec495SettingsPanel</name>
     <message>
-        <location filename="../ui/hec495_settings_panel.cpp" line="+115" />
+        <location filename="../ui/configuration/hec495_settings_panel.cpp" line="+115" />
         <source>Factory reset</source>
         <translation>恢復出廠設定</translation>
     </message>
@@ -8257,7 +8256,7 @@ Method: %3</source>
 <context>
     <name>imudesk::ui::LanguageSwitcher</name>
     <message>
-        <location filename="../ui/language_switcher.cpp" line="+54" />
+        <location filename="../ui/workspace/language_switcher.cpp" line="+54" />
         <source>Unknown language "%1"; choose one of: %2.</source>
         <translation>未知語言「%1」；請選擇以下其中之一：%2。</translation>
     </message>
@@ -8270,7 +8269,7 @@ Method: %3</source>
 <context>
     <name>imudesk::ui::MagCalibrationWizard</name>
     <message>
-        <location filename="../ui/mag_calibration_wizard.cpp" line="+53" />
+        <location filename="../ui/calibration/mag_calibration_wizard.cpp" line="+53" />
         <source>Magnetometer calibration</source>
         <translation>地磁校準</translation>
     </message>
@@ -8515,7 +8514,7 @@ Samples: %3</source>
 <context>
     <name>imudesk::ui::MagSphereView</name>
     <message>
-        <location filename="../ui/mag_sphere_view.cpp" line="+23" />
+        <location filename="../ui/calibration/mag_sphere_view.cpp" line="+23" />
         <source>Magnetometer samples on a sphere: cells turn green as the field directions cover them. Drag to turn the view, double-click to reset it.</source>
         <translation>球面上的磁力計樣本：磁場方向覆蓋到的格子會變綠。拖曳可旋轉檢視，按兩下可重設檢視。</translation>
     </message>
@@ -8528,7 +8527,7 @@ Samples: %3</source>
 <context>
     <name>imudesk::ui::MainWindow</name>
     <message>
-        <location filename="../ui/main_window.cpp" line="+351" />
+        <location filename="../ui/workspace/main_window.cpp" line="+351" />
         <source>Choose a port first.</source>
         <translation>請先選擇串列埠。</translation>
     </message>
@@ -8701,7 +8700,7 @@ Samples: %3</source>
 <context>
     <name>imudesk::ui::ModbusConnectDialog</name>
     <message>
-        <location filename="../ui/bus_connect_dialog.cpp" line="-121" />
+        <location filename="../ui/bus/bus_connect_dialog.cpp" line="-121" />
         <source>Connect over Modbus RTU</source>
         <translation>透過 Modbus RTU 連線</translation>
     </message>
@@ -8814,7 +8813,7 @@ Samples: %3</source>
 <context>
     <name>imudesk::ui::ModbusScanDialog</name>
     <message>
-        <location filename="../ui/modbus_scan_dialog.cpp" line="+24" />
+        <location filename="../ui/bus/modbus_scan_dialog.cpp" line="+24" />
         <source>Scan the Modbus bus</source>
         <translation>掃描 Modbus 匯流排</translation>
     </message>
@@ -8901,7 +8900,7 @@ Samples: %3</source>
 <context>
     <name>imudesk::ui::MountingPicker</name>
     <message>
-        <location filename="../ui/mounting_picker.cpp" line="+28" />
+        <location filename="../ui/configuration/mounting_picker.cpp" line="+28" />
         <source>Mounting (URFR)</source>
         <translation>安裝方式（URFR）</translation>
     </message>
@@ -8944,7 +8943,7 @@ Samples: %3</source>
 <context>
     <name>imudesk::ui::PreferencesDialog</name>
     <message>
-        <location filename="../ui/preferences_dialog.cpp" line="+23" />
+        <location filename="../ui/workspace/preferences_dialog.cpp" line="+23" />
         <source>Preferences</source>
         <translation>偏好設定</translation>
     </message>
@@ -9132,7 +9131,7 @@ Samples: %3</source>
 <context>
     <name>imudesk::ui::ProfileDialog</name>
     <message>
-        <location filename="../ui/profile_dialog.cpp" line="+21" />
+        <location filename="../ui/configuration/profile_dialog.cpp" line="+21" />
         <source>Configuration profiles</source>
         <translation>配置設定檔</translation>
     </message>
@@ -9271,7 +9270,7 @@ Samples: %3</source>
 <context>
     <name>imudesk::ui::RawBytesView</name>
     <message numerus="yes">
-        <location filename="../ui/raw_bytes_view.cpp" line="+196" />
+        <location filename="../ui/workspace/raw_bytes_view.cpp" line="+196" />
         <source>… %n read(s) or write(s) not shown (the log dropped them before this view caught up) …</source>
         <translation>
             <numerusform>… 有 %n 次讀取或寫入未顯示（在此檢視跟上之前，日誌已將其捨棄）…</numerusform>
@@ -9333,7 +9332,7 @@ Samples: %3</source>
 <context>
     <name>imudesk::ui::RecordingControls</name>
     <message>
-        <location filename="../ui/recording_controls.cpp" line="+18" />
+        <location filename="../ui/recording/recording_controls.cpp" line="+18" />
         <source>Record</source>
         <translation>開始記錄</translation>
     </message>
@@ -9418,7 +9417,7 @@ Samples: %3</source>
 <context>
     <name>imudesk::ui::RegisterBrowser</name>
     <message>
-        <location filename="../ui/register_browser.cpp" line="+24" />
+        <location filename="../ui/bus/register_browser.cpp" line="+24" />
         <source>Modbus registers</source>
         <translation>Modbus 暫存器</translation>
     </message>
@@ -9476,7 +9475,7 @@ Samples: %3</source>
 <context>
     <name>imudesk::ui::ReplayControls</name>
     <message>
-        <location filename="../ui/replay_controls.cpp" line="+33" />
+        <location filename="../ui/recording/replay_controls.cpp" line="+33" />
         <location line="+64" />
         <location line="+24" />
         <source>Play</source>
@@ -9511,7 +9510,7 @@ Samples: %3</source>
 <context>
     <name>imudesk::ui::SettingValueDelegate</name>
     <message>
-        <location filename="../ui/setting_value_delegate.cpp" line="+53" />
+        <location filename="../ui/configuration/setting_value_delegate.cpp" line="+53" />
         <source>the value was refused</source>
         <translation>該數值被拒絕</translation>
     </message>
@@ -9519,7 +9518,7 @@ Samples: %3</source>
 <context>
     <name>imudesk::ui::StatusFlagsWidget</name>
     <message>
-        <location filename="../ui/status_flags_widget.cpp" line="+114" />
+        <location filename="../ui/workspace/status_flags_widget.cpp" line="+114" />
         <source>Status:</source>
         <translation>狀態：</translation>
     </message>
@@ -9552,7 +9551,7 @@ Samples: %3</source>
 <context>
     <name>imudesk::ui::ToolActions</name>
     <message>
-        <location filename="../ui/tool_actions.cpp" line="+109" />
+        <location filename="../ui/workspace/tool_actions.cpp" line="+109" />
         <source>&amp;Open capture…</source>
         <translation>開啟記錄檔(&amp;O)…</translation>
     </message>
@@ -9786,7 +9785,7 @@ Samples: %3</source>
 <context>
     <name>imudesk::ui::TurnGauge</name>
     <message>
-        <location filename="../ui/turn_gauge.cpp" line="+78" />
+        <location filename="../ui/calibration/turn_gauge.cpp" line="+78" />
         <source>%1° of %2°</source>
         <translation>%1° / %2°</translation>
     </message>

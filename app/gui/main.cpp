@@ -1,14 +1,14 @@
 // ImuDesk GUI: command line, language, settings, main window.
-#include "device_workspace.h"
-#include "language_switcher.h"
-#include "link_factory.h"
-#include "tool_actions.h"
-#include "main_window.h"
+#include "workspace/device_workspace.h"
+#include "workspace/language_switcher.h"
+#include "workspace/link_factory.h"
+#include "workspace/tool_actions.h"
+#include "workspace/main_window.h"
 #include "model/device_identity.h"
 #include "sim/hipnuc_simulator.h"
 #include "sim/motion_model.h"
-#include "preferences.h"
-#include "window_settings.h"
+#include "workspace/preferences.h"
+#include "workspace/window_settings.h"
 
 #include <QApplication>
 #include <QDockWidget>

@@ -13,10 +13,10 @@
 //        memory and the C heap (bytes in use / free inside malloc's arenas) once a minute,
 //        to tell memory the application holds from memory the allocator keeps.
 // Exit code 1 only when frames were lost (or the recording is damaged).
-#include "chart_panel.h"
-#include "chart_view.h"
-#include "device_workspace.h"
-#include "main_window.h"
+#include "charts/chart_panel.h"
+#include "charts/chart_view.h"
+#include "workspace/device_workspace.h"
+#include "workspace/main_window.h"
 #include "record/capture_reader.h"
 #include "sim/pty_simulator.h"
 

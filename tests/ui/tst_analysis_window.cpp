@@ -2,7 +2,7 @@
 // summary (rate, random walk, bias instability, recommended length), the interval histogram
 // and the log-log Allan chart; a file that is no recording is reported.
 #include "../common/synthetic_capture.h"
-#include "analysis_window.h"
+#include "charts/analysis_window.h"
 
 #include <QAbstractSeries>
 #include <QBarSeries>

@@ -2,7 +2,7 @@
 // the static module (roll 1.5, pitch -2.5 deg) is still and near level, so ATT RST 3 is
 // sent after the stillness check and levels it; a spinning module is never still, so
 // nothing is sent. The answered command is kept in the calibration history with its samples.
-#include "attitude_reset_wizard.h"
+#include "calibration/attitude_reset_wizard.h"
 #include "calib/calibration_history.h"
 #include "device/device_session.h"
 #include "sim/pty_simulator.h"

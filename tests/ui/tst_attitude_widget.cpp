@@ -1,7 +1,7 @@
 // AttitudeWidget offscreen: renders into images at a fixed size and camera and checks
 // where the coloured axes and the top-face print land, the read-outs in both display
 // frames, the no-data state, repaint-on-change only, and the camera controls.
-#include "attitude_widget.h"
+#include "attitude/attitude_widget.h"
 #include "model/attitude.h"
 
 #include <QApplication>

@@ -4,8 +4,8 @@
 // the samples (CSV); deletes a run's folder, and the device's folder with its last run.
 #include "calib/calibration_history.h"
 #include "calib/mag_calibrator.h"
-#include "calibration_history_dialog.h"
-#include "mag_sphere_view.h"
+#include "calibration/calibration_history_dialog.h"
+#include "calibration/mag_sphere_view.h"
 #include "models/calibration_history_model.h"
 
 #include <QDir>

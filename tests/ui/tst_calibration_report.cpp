@@ -1,10 +1,10 @@
-// The calibration report (ui/calibration_report): a real MagCalibrator fit of synthetic
+// The calibration report (ui/calibration/calibration_report): a real MagCalibrator fit of synthetic
 // samples with a known hard and soft iron, written as PDF; the document holds the verdict,
 // the field strength and the hard iron; the sphere picture is a real drawing; a warned or
 // failed run carries the manual's troubleshooting (v1.7.1 9.31); an unwritable path and an
 // empty one come back as errors. Offscreen.
 #include "calib/mag_calibrator.h"
-#include "calibration_report.h"
+#include "calibration/calibration_report.h"
 
 #include <QFile>
 #include <QJsonObject>

@@ -1,7 +1,7 @@
 // CanConfigPanel offscreen on a real CanSession and the CAN simulator over virtualcan: the
 // controls follow the detected protocol, Apply writes and the log shows the confirmation,
 // Send SYNC makes a SYNC-mode TPDO answer, the node scan shows progress and its result.
-#include "can_config_panel.h"
+#include "bus/can_config_panel.h"
 #include "device/can_session.h"
 #include "sim/can_simulator.h"
 

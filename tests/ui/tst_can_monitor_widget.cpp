@@ -1,6 +1,6 @@
 // CanMonitorWidget offscreen: rows from the manual's PCAN-View capture (8.27), filter and
 // pause from the controls, CSV export, and the send line (valid and invalid frames).
-#include "can_monitor_widget.h"
+#include "bus/can_monitor_widget.h"
 
 #include <QApplication>
 #include <QLineEdit>

@@ -1,10 +1,10 @@
 // ChartPanel, ChartView and ComparisonChart offscreen: decimated series, hidden axes,
 // pause, PNG export, crosshair read-out, gaps, translation hooks, settings.
-#include "chart_panel.h"
-#include "chart_settings.h"
-#include "chart_view.h"
-#include "comparison_chart.h"
-#include "plot_canvas.h"
+#include "charts/chart_panel.h"
+#include "charts/chart_settings.h"
+#include "charts/chart_view.h"
+#include "charts/comparison_chart.h"
+#include "charts/plot_canvas.h"
 #include "plot/axis_scaling.h"
 #include "plot/minmax_decimator.h"
 

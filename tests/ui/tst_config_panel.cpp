@@ -2,10 +2,10 @@
 // pseudo-terminal: read all, greyed-out rows, pending commands and the CLI line, apply
 // with replies shown, the factory-reset confirmation, the link-load warning, actions per
 // firmware, and the picker by picture, code and directions (left-handed refused).
-#include "config_panel.h"
+#include "configuration/config_panel.h"
 #include "models/settings_table_model.h"
-#include "mounting_picker.h"
-#include "mounting_tile.h"
+#include "configuration/mounting_picker.h"
+#include "configuration/mounting_tile.h"
 #include "sim/pty_simulator.h"
 
 #include <QApplication>

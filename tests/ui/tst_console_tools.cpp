@@ -1,12 +1,12 @@
 // Console tools, offscreen: command completion in the console input, the raw byte view
 // of the link (hex/ASCII, colours, pause, clear, copy, bounded, fast enough for 921600
 // baud) and the log of the commands the GUI sent (model and widget, copy as text).
-#include "command_log_widget.h"
-#include "console_widget.h"
+#include "workspace/command_log_widget.h"
+#include "workspace/console_widget.h"
 #include "device/raw_byte_log.h"
 #include "models/command_log_model.h"
 #include "protocol/hipnuc/ascii_command.h"
-#include "raw_bytes_view.h"
+#include "workspace/raw_bytes_view.h"
 
 #include <QAbstractItemModelTester>
 #include <QApplication>

@@ -1,12 +1,12 @@
 // DeviceWorkspace shows any family's link (DeviceLink) in its live views: samples reach the
 // charts and the values table, the state reaches the status bar, and what the link needs
 // (its simulator) is released when it closes.
-#include "attitude_widget.h"
-#include "chart_panel.h"
-#include "device_workspace.h"
+#include "attitude/attitude_widget.h"
+#include "charts/chart_panel.h"
+#include "workspace/device_workspace.h"
 #include "device/device_link.h"
-#include "link_factory.h"
-#include "main_window.h"
+#include "workspace/link_factory.h"
+#include "workspace/main_window.h"
 #include "models/latest_values_model.h"
 
 #include <QApplication>

@@ -2,7 +2,7 @@
 // files with the progress bar at 100 %, a time range limits the rows, and Cancel stops a
 // running export and removes the partial files.
 #include "../common/synthetic_capture.h"
-#include "export_dialog.h"
+#include "recording/export_dialog.h"
 
 #include <QComboBox>
 #include <QLabel>

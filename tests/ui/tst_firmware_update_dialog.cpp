@@ -1,9 +1,9 @@
 // The firmware update dialog, offscreen, against the simulated module on a pty: file
 // information, a refused file, progress to the new version, cancel and finishing later.
 #include "../common/firmware_files.h"
-#include "device_workspace.h"
-#include "firmware_update_dialog.h"
-#include "main_window.h"
+#include "workspace/device_workspace.h"
+#include "firmware/firmware_update_dialog.h"
+#include "workspace/main_window.h"
 #include "protocol/ihex/intel_hex_writer.h"
 #include "sim/kboot_bootloader.h"
 #include "sim/pty_simulator.h"

@@ -2,11 +2,11 @@
 // served in this process on Qt's virtualcan bus (its own TCP port): the link choice shows the CAN
 // fields, the update reaches the new version verified by the bootloader's CRC, and a cancel
 // mid-download leaves the module in its bootloader where a second update finishes.
-#include "device_workspace.h"
+#include "workspace/device_workspace.h"
 #include "../common/firmware_files.h"
-#include "firmware_update_dialog.h"
-#include "link_factory.h"
-#include "main_window.h"
+#include "firmware/firmware_update_dialog.h"
+#include "workspace/link_factory.h"
+#include "workspace/main_window.h"
 #include "protocol/ihex/intel_hex_writer.h"
 #include "sim/can_simulator.h"
 #include "sim/kboot_bootloader.h"

@@ -6,9 +6,9 @@
 #include "../common/connected_session.h"
 #include "calib/calibration_history.h"
 #include "device/device_session.h"
-#include "gyro_scale_wizard.h"
+#include "calibration/gyro_scale_wizard.h"
 #include "sim/pty_simulator.h"
-#include "turn_gauge.h"
+#include "calibration/turn_gauge.h"
 
 #include <QImage>
 #include <QLabel>

@@ -1,6 +1,6 @@
 // HeadingDial offscreen: the needle points at the heading (clockwise from north), values
 // wrap, read-outs, the no-data state, and repaints only on visible changes.
-#include "heading_dial.h"
+#include "attitude/heading_dial.h"
 
 #include <QImage>
 #include <QTest>

@@ -6,10 +6,10 @@
 // (0x67), Stop (0x12) abandons the run and Clear (0x10) is accepted. A saved run is kept in
 // the calibration history with FitErr, method and the attitude samples.
 #include "calib/calibration_history.h"
-#include "compass_pose_view.h"
+#include "attitude/compass_pose_view.h"
 #include "device/hec495_result.h"
 #include "device/hec495_session.h"
-#include "hec495_calibration_wizard.h"
+#include "calibration/hec495_calibration_wizard.h"
 #include "sim/hec495_simulator.h"
 #include "sim/pty_simulator.h"
 

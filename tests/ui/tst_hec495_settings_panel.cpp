@@ -1,7 +1,7 @@
 // Hec495SettingsPanel offscreen, bound to a Hec495Session on the simulated HEC495 over a
 // pseudo-terminal: each control sends its command, the result shows, the module changes.
 #include "device/hec495_session.h"
-#include "hec495_settings_panel.h"
+#include "configuration/hec495_settings_panel.h"
 #include "sim/hec495_simulator.h"
 #include "sim/pty_simulator.h"
 

@@ -6,8 +6,8 @@
 #include "calib/calibration_history.h"
 #include "calib/mag_calibrator.h"
 #include "device/device_session.h"
-#include "mag_calibration_wizard.h"
-#include "mag_sphere_view.h"
+#include "calibration/mag_calibration_wizard.h"
+#include "calibration/mag_sphere_view.h"
 #include "settings/configuration_controller.h"
 #include "sim/pty_simulator.h"
 

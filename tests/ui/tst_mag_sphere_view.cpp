@@ -3,7 +3,7 @@
 // the missing rotation goes away when everything is covered, and the picture shows green
 // cells; with the fitted calibration the corrected samples cover the sphere.
 #include "calib/mag_calibrator.h"
-#include "mag_sphere_view.h"
+#include "calibration/mag_sphere_view.h"
 #include "protocol/hipnuc/payloads.h"
 #include "protocol/stream/stream_demux.h"
 #include "sim/hipnuc_simulator.h"

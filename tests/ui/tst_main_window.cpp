@@ -1,16 +1,16 @@
 // MainWindow offscreen against a simulated HI14 on a pseudo-terminal: live values,
 // identity and rates in the status bar, the console, screenshots, run-time language.
-#include "connection_bar.h"
-#include "console_widget.h"
-#include "language_switcher.h"
-#include "attitude_widget.h"
-#include "chart_panel.h"
-#include "command_log_widget.h"
-#include "device_workspace.h"
-#include "main_window.h"
+#include "workspace/connection_bar.h"
+#include "workspace/console_widget.h"
+#include "workspace/language_switcher.h"
+#include "attitude/attitude_widget.h"
+#include "charts/chart_panel.h"
+#include "workspace/command_log_widget.h"
+#include "workspace/device_workspace.h"
+#include "workspace/main_window.h"
 #include "models/latest_values_model.h"
-#include "status_flags_widget.h"
-#include "window_settings.h"
+#include "workspace/status_flags_widget.h"
+#include "workspace/window_settings.h"
 #include "sim/pty_simulator.h"
 
 #include <QAction>

@@ -1,7 +1,7 @@
 // ModbusScanDialog offscreen against a simulated HiPNUC at node 83: progress to the end, the
 // device listed with its identity, Use emits its node and baud; Cancel stops a full scan.
 #include "device/modbus_session.h"
-#include "modbus_scan_dialog.h"
+#include "bus/modbus_scan_dialog.h"
 #include "sim/modbus_simulator.h"
 
 #include <QApplication>

@@ -1,14 +1,14 @@
 // Preferences: stored under versioned keys, validated on load, edited in the dialog and
 // applied to the live views (units, attitude frame, refresh clock, history, reconnect).
-#include "attitude_widget.h"
-#include "chart_panel.h"
-#include "chart_view.h"
-#include "device_workspace.h"
-#include "main_window.h"
+#include "attitude/attitude_widget.h"
+#include "charts/chart_panel.h"
+#include "charts/chart_view.h"
+#include "workspace/device_workspace.h"
+#include "workspace/main_window.h"
 #include "models/latest_values_model.h"
-#include "preferences.h"
-#include "preferences_dialog.h"
-#include "recording_controls.h"
+#include "workspace/preferences.h"
+#include "workspace/preferences_dialog.h"
+#include "recording/recording_controls.h"
 
 #include <QApplication>
 #include <QCheckBox>

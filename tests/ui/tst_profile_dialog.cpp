@@ -2,8 +2,8 @@
 // pseudo-terminals: save a device's profile, load it on another (table of differences),
 // apply with read-back, apply to further ports with a report per device; the calculator
 // against the manuals' table of maximum rates.
-#include "bandwidth_calculator.h"
-#include "profile_dialog.h"
+#include "charts/bandwidth_calculator.h"
+#include "configuration/profile_dialog.h"
 #include "sim/pty_simulator.h"
 
 #include <QFile>

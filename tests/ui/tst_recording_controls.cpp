@@ -3,7 +3,7 @@
 // file size limit (the reason is shown and recordingFailed emitted).
 #include "device/device_session.h"
 #include "record/capture_reader.h"
-#include "recording_controls.h"
+#include "recording/recording_controls.h"
 #include "sim/pty_simulator.h"
 
 #include <QLabel>

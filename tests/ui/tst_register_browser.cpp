@@ -2,7 +2,7 @@
 // an edit of a writable register goes to the device and is read back, refused values are
 // explained, and the raw request line reads and writes registers.
 #include "device/modbus_session.h"
-#include "register_browser.h"
+#include "bus/register_browser.h"
 #include "sim/modbus_simulator.h"
 
 #include <QAbstractItemModelTester>

@@ -2,7 +2,7 @@
 // seeking on the timeline, loop, and the position label.
 #include "../common/synthetic_capture.h"
 #include "record/replay_session.h"
-#include "replay_controls.h"
+#include "recording/replay_controls.h"
 
 #include <QCheckBox>
 #include <QComboBox>

@@ -1,18 +1,18 @@
 // The translations are complete: no .ts entry is unfinished or obsolete, and under zh_CN
 // no English word is left in the main window, its docks and menus, or the dialogs.
-#include "attitude_reset_wizard.h"
-#include "bandwidth_calculator.h"
-#include "bus_connect_dialog.h"
-#include "device_workspace.h"
-#include "export_dialog.h"
-#include "firmware_update_dialog.h"
-#include "gyro_scale_wizard.h"
-#include "analysis_window.h"
-#include "mag_calibration_wizard.h"
-#include "profile_dialog.h"
-#include "language_switcher.h"
-#include "main_window.h"
-#include "preferences_dialog.h"
+#include "calibration/attitude_reset_wizard.h"
+#include "charts/bandwidth_calculator.h"
+#include "bus/bus_connect_dialog.h"
+#include "workspace/device_workspace.h"
+#include "recording/export_dialog.h"
+#include "firmware/firmware_update_dialog.h"
+#include "calibration/gyro_scale_wizard.h"
+#include "charts/analysis_window.h"
+#include "calibration/mag_calibration_wizard.h"
+#include "configuration/profile_dialog.h"
+#include "workspace/language_switcher.h"
+#include "workspace/main_window.h"
+#include "workspace/preferences_dialog.h"
 
 #include <QAbstractButton>
 #include <QAbstractItemView>

@@ -1,0 +1,436 @@
+#include "calibration/mag_calibration_wizard.h"
+
+#include "calib/mag_calibrator.h"
+#include "device/device_session.h"
+#include "calibration/mag_sphere_view.h"
+#include "workspace/work_place_size.h"
+
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QVBoxLayout>
+#include <QWizardPage>
+
+#include <cmath>
+
+namespace imudesk::ui {
+
+namespace {
+// The verdict as a coloured headline: green pass, amber warn, red fail or refused.
+void setVerdictHeadline(QLabel *label, calib::MagVerdict verdict, const QString &text)
+{
+    const char *colour = verdict == calib::MagVerdict::Pass ? "#2e7d32"
+        : verdict == calib::MagVerdict::Warn                 ? "#e65100"
+                                                             : "#c62828";
+    label->setStyleSheet(QStringLiteral("QLabel { color: white; background: %1; border-radius: 4px; padding: 6px 10px;"
+                                        " font-weight: bold; }")
+                             .arg(QLatin1String(colour)));
+    label->setText(text);
+}
+
+QWizardPage *textPage(const QString &title, const QString &text)
+{
+    auto *page = new QWizardPage;
+    page->setTitle(title);
+    auto *l = new QVBoxLayout(page);
+    auto *label = new QLabel(text);
+    label->setWordWrap(true);
+    l->addWidget(label);
+    l->addStretch();
+    return page;
+}
+} // namespace
+
+MagCalibrationWizard::MagCalibrationWizard(device::DeviceSession &session, const model::FirmwareVersion &firmware,
+                                           QWidget *parent)
+    : QWizard(parent),
+      m_session(session),
+      m_firmware(firmware),
+      m_device(session),
+      m_config(session)
+{
+    setWindowTitle(tr("Magnetometer calibration"));
+    setPage(IntroPage,
+            textPage(tr("Before you start"),
+                     tr("Calibrate the magnetometer when you use the 9-axis (AHRS) mode, where the heading follows "
+                        "magnetic north. Without a magnetometer calibration, or where the field is disturbed, use the "
+                        "6-axis mode instead.\n\nBest: outdoors in an open space, more than 5 m from buildings and "
+                        "vehicles. Acceptable: indoors, more than 30 cm from iron furniture, monitors, motors, "
+                        "transformers, chargers and phones.\n\nIf the module is mounted on a PCB, in a housing or on "
+                        "a robot, calibrate it together with them, as one rigid body: calibrating the module alone "
+                        "does not help once it is mounted.")));
+
+    auto *mode = textPage(tr("Working mode"),
+                          tr("The calibration needs the 9-axis (AHRS) mode, CONFIG ATT MODE 1 (the factory "
+                             "setting). ImuDesk reads the module's mode first and offers a switch only when it runs "
+                             "in a 6-axis mode; the switch sends CONFIG ATT MODE 1, SAVECONFIG and REBOOT."));
+    m_modeStatus = new QLabel;
+    m_modeStatus->setObjectName(QStringLiteral("modeStatus"));
+    m_modeStatus->setWordWrap(true);
+    m_switchMode = new QPushButton(tr("Switch to 9-axis mode"));
+    m_switchMode->setObjectName(QStringLiteral("switchModeButton"));
+    m_switchMode->hide();
+    auto *switchRow = new QHBoxLayout;
+    switchRow->addWidget(m_switchMode);
+    switchRow->addStretch();
+    // Below the explanation: what the module runs now, and the switch when it is needed.
+    auto *modeLayout = static_cast<QVBoxLayout *>(mode->layout());
+    modeLayout->insertWidget(1, m_modeStatus);
+    modeLayout->insertLayout(2, switchRow);
+    connect(m_switchMode, &QPushButton::clicked, this, &MagCalibrationWizard::switchToAhrs);
+    connect(&m_config, &settings::ConfigurationController::readFinished, this, &MagCalibrationWizard::showMode);
+    connect(&m_config, &settings::ConfigurationController::applyFinished, this,
+            [this](const settings::ConfigurationController::ApplyReport &report) {
+                if (!m_switching)
+                    return;
+                if (!report.ok) {
+                    m_switching = false;
+                    m_switchMode->setEnabled(true);
+                    m_modeStatus->setText(tr("The module did not take ATT MODE 1 (%1). Check the connection and "
+                                             "try again.")
+                                              .arg(report.error.isEmpty() ? tr("read back differs") : report.error));
+                    return;
+                }
+                m_modeStatus->setText(tr("ATT MODE 1 set; saving it (SAVECONFIG)…"));
+                m_config.save();
+            });
+    connect(&m_config, &settings::ConfigurationController::actionFinished, this,
+            [this](const QString &key, bool ok, const QString &detail) {
+                if (!m_switching)
+                    return;
+                if (!ok) {
+                    m_switching = false;
+                    m_switchMode->setEnabled(true);
+                    m_modeStatus->setText(tr("%1 failed: %2. Try again, or save and restart from the "
+                                             "Configuration panel.")
+                                              .arg(key, detail));
+                    return;
+                }
+                if (key == QLatin1String("SAVECONFIG")) {
+                    m_modeStatus->setText(tr("Saved; restarting the module (REBOOT)…"));
+                    m_config.reboot();
+                } else if (key == QLatin1String("REBOOT")) {
+                    m_switching = false;
+                    m_modeStatus->setText(tr("The module restarts in the 9-axis mode; reading it back…"));
+                    QTimer::singleShot(kRebootSettleMs, this, &MagCalibrationWizard::readMode);
+                }
+            });
+    setPage(ModePage, mode);
+
+    auto *env = textPage(tr("Environment check"),
+                         tr("Hold the module at the calibration spot and turn it to a few orientations. The field must "
+                            "be 20-60 uT and vary by no more than 10 uT between orientations."));
+    m_envStatus = new QLabel;
+    m_envStatus->setWordWrap(true);
+    env->layout()->addWidget(m_envStatus);
+    setPage(EnvironmentPage, env);
+
+    auto *rot = new QWizardPage;
+    rot->setTitle(tr("Turn the module"));
+    rot->setSubTitle(tr("Keep it in place and turn it slowly (20-100 deg/s) at least one full turn about each axis, "
+                        "until the sphere is green all over. Usually 30-60 s."));
+    auto *rl = new QHBoxLayout(rot);
+    m_sphere = new MagSphereView;
+    m_sphere->setMinimumSize(360, 360);
+    rl->addWidget(m_sphere, 3);
+    auto *side = new QVBoxLayout;
+    // The live figures that decide the verdict, as the user turns the module.
+    m_liveVerdict = new QLabel;
+    m_liveVerdict->setObjectName(QStringLiteral("liveVerdict"));
+    m_liveVerdict->setWordWrap(true);
+    m_figures = new QLabel;
+    m_figures->setObjectName(QStringLiteral("liveFigures"));
+    m_figures->setTextFormat(Qt::RichText);
+    m_figures->setToolTip(tr("Coverage: share of the 80 sphere cells the field has pointed into. Largest gap: "
+                             "radius of the biggest uncovered area. Raw |B|: the field strength before calibration "
+                             "(its spread is the iron the fit removes). Fit: the field and the residual of "
+                             "ImuDesk's fit on the samples so far, refreshed every second."));
+    side->addWidget(m_liveVerdict);
+    side->addWidget(m_figures);
+    side->addSpacing(12);
+    m_startDevice = new QPushButton(tr("Start the device's calibration"));
+    m_deviceProgress = new QProgressBar;
+    m_deviceProgress->setRange(0, 100);
+    m_deviceStatus = new QLabel;
+    m_deviceStatus->setWordWrap(true);
+    m_fit = new QPushButton(tr("Fit ImuDesk's calibration now"));
+    side->addWidget(m_startDevice);
+    side->addWidget(m_deviceProgress);
+    side->addWidget(m_deviceStatus);
+    side->addSpacing(12);
+    side->addWidget(m_fit);
+    side->addStretch();
+    rl->addLayout(side, 2);
+    setPage(RotationPage, rot);
+
+    auto *res = new QWizardPage;
+    res->setTitle(tr("Result"));
+    auto *resultPage = new QVBoxLayout(res);
+    m_verdict = new QLabel;
+    m_verdict->setObjectName(QStringLiteral("verdictHeadline"));
+    m_verdict->setWordWrap(true);
+    resultPage->addWidget(m_verdict);
+    auto *sl = new QHBoxLayout;
+    resultPage->addLayout(sl, 1);
+    m_resultLabel = new QLabel;
+    m_resultLabel->setWordWrap(true);
+    m_resultLabel->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_after = new MagSphereView;
+    auto *resultColumn = new QVBoxLayout;
+    resultColumn->addWidget(m_resultLabel);
+    m_savedLabel = new QLabel;
+    m_savedLabel->setWordWrap(true);
+    m_savedLabel->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    resultColumn->addWidget(m_savedLabel);
+    resultColumn->addStretch();
+    sl->addLayout(resultColumn, 1);
+    m_after->setMinimumSize(320, 320);
+    sl->addWidget(m_after, 1);
+    setPage(ResultPage, res);
+
+    auto *heading = textPage(tr("Heading check"),
+                             tr("Place the module level and turn it slowly one full turn (360 deg). The heading must "
+                                "change continuously, without jumps of more than 10 deg; within +-5 deg of the true "
+                                "directions is acceptable."));
+    m_headingStatus = new QLabel;
+    heading->layout()->addWidget(m_headingStatus);
+    setPage(HeadingPage, heading);
+
+    connect(m_startDevice, &QPushButton::clicked, this, [this] {
+        m_device.start(calib::MagCalProcedure::flowFor(m_firmware));
+        m_startDevice->setEnabled(false);
+    });
+    connect(&m_device, &calib::MagCalSession::progressChanged, this, [this](int stat, int progress, const QString &msg) {
+        m_deviceProgress->setValue(progress);
+        m_deviceStatus->setText(stat >= 0 ? tr("Device: STAT=%1 PROGRESS=%2\n%3").arg(stat).arg(progress).arg(msg) : msg);
+    });
+    connect(&m_device, &calib::MagCalSession::finished, this, [this](bool ok, const QString &msg) {
+        m_startDevice->setEnabled(true);
+        m_deviceStatus->setText(ok ? msg
+                                   : msg + QLatin1String("\n\n") + calib::MagCalProcedure::troubleshooting());
+    });
+    connect(m_fit, &QPushButton::clicked, this, &MagCalibrationWizard::runFit);
+    connect(this, &QWizard::currentIdChanged, this, &MagCalibrationWizard::pageChanged);
+    connect(&m_clock, &QTimer::timeout, this, &MagCalibrationWizard::refresh);
+    m_clock.start(50);
+    connect(&m_fitClock, &QTimer::timeout, this, &MagCalibrationWizard::liveFit);
+    m_fitClock.start(1000);
+    m_seq = m_session.store().totalAppended();
+    // A work place, not a dialog: the sphere gets room (>= 400 px on a 1366x768 screen).
+    fitWorkPlace(this, QSize(1240, 860), parent);
+}
+
+void MagCalibrationWizard::readMode()
+{
+    if (m_config.busy())
+        return;
+    m_attMode.clear();
+    m_switchMode->hide();
+    m_modeStatus->setText(tr("Reading the working mode from the module (LOG COMCONFIG)…"));
+    m_config.readAll();
+}
+
+void MagCalibrationWizard::showMode(bool ok, const QString &error)
+{
+    if (!ok) {
+        m_modeStatus->setText(tr("The working mode could not be read: %1. Check the connection, then press Back and "
+                                 "Next to read it again, or switch to the 9-axis mode anyway.")
+                                  .arg(error));
+        m_switchMode->show();
+        m_switchMode->setEnabled(true);
+        return;
+    }
+    m_attMode = m_config.configuration().value(QStringLiteral("ATT.MODE")).value_or(QString());
+    if (m_attMode == QLatin1String("1")) {
+        m_modeStatus->setText(tr("The module runs in the 9-axis (AHRS) mode, ATT MODE 1: nothing to change. Press "
+                                 "Next."));
+        m_switchMode->hide();
+    } else {
+        m_modeStatus->setText(
+            tr("The module runs in a 6-axis mode (ATT MODE %1): its heading ignores the magnetometer. Switch to the "
+               "9-axis mode before you calibrate.")
+                .arg(m_attMode.isEmpty() ? tr("not reported") : m_attMode));
+        m_switchMode->show();
+        m_switchMode->setEnabled(!m_switching);
+    }
+}
+
+void MagCalibrationWizard::liveFit()
+{
+    if (currentId() != RotationPage || m_samples.size() < 30)
+        return;
+    // Every n-th sample, at most 3000: a second's work stays a few milliseconds.
+    const size_t step = std::max<size_t>(1, m_samples.size() / 3000);
+    std::vector<Eigen::Vector3d> subset;
+    subset.reserve(m_samples.size() / step + 1);
+    for (size_t i = 0; i < m_samples.size(); i += step)
+        subset.push_back(m_samples[i]);
+    m_live = calib::MagCalibrator().calibrate(subset);
+    m_haveLive = true;
+    setVerdictHeadline(m_liveVerdict, m_live.verdict,
+                       tr("So far: %1. %2").arg(calib::MagCalResult::verdictText(m_live.verdict), m_live.reason));
+    m_figures->setText(liveFiguresText());
+}
+
+QString MagCalibrationWizard::liveFiguresText() const
+{
+    const calib::SphereCoverage &cov = m_sphere->coverage();
+    QString rows = tr("<tr><td>Coverage</td><td align=right><b>%1 %</b></td><td>(%2 of %3 cells)</td></tr>")
+                       .arg(cov.percent(), 0, 'f', 0)
+                       .arg(cov.coveredCells())
+                       .arg(calib::SphereCoverage::kCells);
+    rows += tr("<tr><td>Largest gap</td><td align=right><b>%1°</b></td><td>radius</td></tr>")
+                .arg(cov.largestGapDeg(), 0, 'f', 0);
+    if (!m_samples.empty())
+        rows += tr("<tr><td>Raw |B|</td><td align=right><b>%1–%2</b></td><td>µT</td></tr>")
+                    .arg(m_minField, 0, 'f', 1)
+                    .arg(m_maxField, 0, 'f', 1);
+    if (m_haveLive && m_live.verdict != calib::MagVerdict::Refused)
+        rows += tr("<tr><td>Fitted field</td><td align=right><b>%1</b></td><td>µT</td></tr>"
+                   "<tr><td>Fit residual</td><td align=right><b>%2</b></td><td>µT RMS (%3 %)</td></tr>")
+                    .arg(m_live.fieldUt, 0, 'f', 1)
+                    .arg(m_live.residualRmsUt, 0, 'f', 2)
+                    .arg(m_live.fitErrorPct, 0, 'f', 1);
+    rows += tr("<tr><td>Samples</td><td align=right><b>%1</b></td><td></td></tr>").arg(m_samples.size());
+    return QStringLiteral("<table cellspacing=4>") + rows + QStringLiteral("</table>");
+}
+
+void MagCalibrationWizard::switchToAhrs()
+{
+    if (m_config.busy())
+        return;
+    m_switching = true;
+    m_switchMode->setEnabled(false);
+    m_modeStatus->setText(tr("Setting ATT MODE 1…"));
+    m_config.apply({{QStringLiteral("ATT.MODE"), QStringLiteral("1")}});
+}
+
+void MagCalibrationWizard::pageChanged(int id)
+{
+    if (id == EnvironmentPage)
+        m_env.reset();
+    if (id == ModePage)
+        readMode();
+    if (id == RotationPage) {
+        m_samples.clear();
+        m_sphere->clear();
+        m_haveLive = false;
+        m_liveVerdict->clear();
+        m_liveVerdict->setStyleSheet(QString());
+        m_figures->setText(liveFiguresText());
+    }
+    if (id == HeadingPage) {
+        m_haveYaw = false;
+        m_headingTurned = m_headingMaxJump = 0;
+    }
+    if (id == ResultPage) {
+        if (!m_fitted)
+            runFit();
+        saveRun();
+    }
+}
+
+void MagCalibrationWizard::saveRun()
+{
+    if (m_runSaved)
+        return;
+    calib::SampleTable table;
+    table.columns = {QStringLiteral("mag_x"), QStringLiteral("mag_y"), QStringLiteral("mag_z")};
+    table.rows.reserve(m_samples.size());
+    for (const Eigen::Vector3d &m : m_samples)
+        table.rows.push_back({m.x(), m.y(), m.z()});
+    m_saver.save(QStringLiteral("magnetometer"), m_result.toJson(), table);
+    m_runSaved = true;
+    m_savedLabel->setText(m_saver.statusText());
+}
+
+void MagCalibrationWizard::refresh()
+{
+    uint64_t next = m_seq;
+    const auto samples = m_session.store().since(m_seq, SIZE_MAX, &next);
+    m_seq = next;
+    const int page = currentId();
+    for (const auto &s : samples) {
+        if (s.fields & model::FieldMag) {
+            const Eigen::Vector3d m(s.mag.x, s.mag.y, s.mag.z);
+            if (page == EnvironmentPage)
+                m_env.add(m);
+            if (page == RotationPage && m_samples.size() < kMaxSamples) {
+                const double field = m.norm();
+                m_minField = m_samples.empty() ? field : std::min(m_minField, field);
+                m_maxField = m_samples.empty() ? field : std::max(m_maxField, field);
+                m_samples.push_back(m);
+                m_sphere->addSample(m);
+            }
+        }
+        if (page == HeadingPage && (s.fields & model::FieldEuler)) {
+            if (m_haveYaw) {
+                double d = s.yaw - m_lastYaw;
+                while (d > 180)
+                    d -= 360;
+                while (d < -180)
+                    d += 360;
+                m_headingTurned += std::abs(d);
+                m_headingMaxJump = std::max(m_headingMaxJump, std::abs(d));
+            }
+            m_lastYaw = s.yaw;
+            m_haveYaw = true;
+        }
+    }
+    if (page == EnvironmentPage)
+        m_envStatus->setText(m_env.advice());
+    if (page == RotationPage && !samples.empty())
+        m_figures->setText(liveFiguresText());
+    if (page == HeadingPage)
+        m_headingStatus->setText(tr("Turned %1 deg, largest step %2 deg: %3")
+                                     .arg(m_headingTurned, 0, 'f', 0)
+                                     .arg(m_headingMaxJump, 0, 'f', 1)
+                                     .arg(headingCheckPassed() ? tr("the heading follows the turn smoothly.")
+                                          : m_headingMaxJump > kMaxHeadingJumpDeg
+                                          ? tr("the heading jumps: calibrate again (chapter 9.31).")
+                                          : tr("keep turning.")));
+}
+
+bool MagCalibrationWizard::headingCheckPassed() const
+{
+    return m_headingTurned >= 360.0 && m_headingMaxJump <= kMaxHeadingJumpDeg;
+}
+
+void MagCalibrationWizard::runFit()
+{
+    m_result = calib::MagCalibrator().calibrate(m_samples);
+    m_fitted = true;
+    m_runSaved = false;
+    m_after->setSamples(m_samples);
+    if (m_result.usable())
+        m_after->setCalibration(m_result.hardIron, m_result.softIron);
+    m_resultLabel->setText(resultText());
+    setVerdictHeadline(m_verdict, m_result.verdict,
+                       tr("Verdict: %1. %2").arg(calib::MagCalResult::verdictText(m_result.verdict), m_result.reason));
+}
+
+QString MagCalibrationWizard::resultText() const
+{
+    if (!m_fitted)
+        return tr("No fit yet.");
+    const calib::MagCalResult &r = m_result;
+    QString text;
+    if (r.verdict != calib::MagVerdict::Refused)
+        text += tr("Hard iron: %1, %2, %3 uT\nField: %4 uT\nFit error: %5 %\nResidual RMS: %6 uT\n")
+                    .arg(r.hardIron.x(), 0, 'f', 2)
+                    .arg(r.hardIron.y(), 0, 'f', 2)
+                    .arg(r.hardIron.z(), 0, 'f', 2)
+                    .arg(r.fieldUt, 0, 'f', 1)
+                    .arg(r.fitErrorPct, 0, 'f', 2)
+                    .arg(r.residualRmsUt, 0, 'f', 2);
+    text += tr("Coverage: %1 %\nEigenvalue ratio: %2\nSamples: %3")
+                .arg(r.coveragePct, 0, 'f', 0)
+                .arg(r.eigenRatio, 0, 'f', 1)
+                .arg(r.samples);
+    if (!r.usable())
+        text += QLatin1String("\n\n") + tr("What to check:") + QLatin1Char('\n') + calib::MagCalProcedure::troubleshooting();
+    return text;
+}
+
+} // namespace imudesk::ui

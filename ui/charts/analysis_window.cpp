@@ -1,0 +1,197 @@
+#include "charts/analysis_window.h"
+
+#include "record/file_analysis.h"
+
+#include <QBarCategoryAxis>
+#include <QBarSet>
+#include <QBarSeries>
+#include <QChart>
+#include <QChartView>
+#include <QHeaderView>
+#include <QLabel>
+#include <QLineSeries>
+#include <QLogValueAxis>
+#include <QSplitter>
+#include <QTableWidget>
+#include <QThread>
+#include <QValueAxis>
+#include <QVBoxLayout>
+
+#include <cmath>
+#include <memory>
+
+namespace imudesk::ui {
+
+AnalysisWindow::AnalysisWindow(QWidget *parent) : QWidget(parent)
+{
+    setWindowTitle(tr("Analysis"));
+    m_table = new QTableWidget(0, 6, this);
+    m_table->setObjectName(QStringLiteral("stats"));
+    m_table->setHorizontalHeaderLabels({tr("Channel"), tr("Unit"), tr("Mean"), tr("Std. dev."), tr("Min"), tr("Max")});
+    m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
+    m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    m_summary = new QLabel(this);
+    m_summary->setObjectName(QStringLiteral("summary"));
+    m_summary->setWordWrap(true);
+    m_summary->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_histogram = new QChart;
+    m_histogram->setTitle(tr("Frame intervals (device clock)"));
+    m_allan = new QChart;
+    m_allan->setTitle(tr("Allan deviation"));
+    auto *charts = new QSplitter(Qt::Horizontal, this);
+    charts->addWidget(new QChartView(m_histogram, charts));
+    charts->addWidget(new QChartView(m_allan, charts));
+    auto *split = new QSplitter(Qt::Vertical, this);
+    split->addWidget(m_table);
+    split->addWidget(charts);
+    auto *layout = new QVBoxLayout(this);
+    layout->addWidget(m_summary);
+    layout->addWidget(split, 1);
+}
+
+AnalysisWindow::~AnalysisWindow()
+{
+    if (m_thread) {
+        m_cancel = true;
+        m_thread->wait();
+    }
+}
+
+void AnalysisWindow::analyzeFile(const QString &path, double tauMax)
+{
+    if (m_thread)
+        return;
+    m_cancel = false;
+    m_summary->setText(tr("Analysing %1…").arg(path));
+    auto outcome = std::make_shared<record::FileAnalysis::Outcome>();
+    m_thread = QThread::create([this, outcome, path, tauMax] {
+        *outcome = record::FileAnalysis::run(path, {}, tauMax, [this](double) { return !m_cancel.load(); });
+    });
+    connect(m_thread, &QThread::finished, this, [this, outcome] {
+        m_thread->deleteLater();
+        m_thread = nullptr;
+        if (!outcome->ok) {
+            m_summary->setText(outcome->error);
+            Q_EMIT analysisFinished(false, outcome->error);
+            return;
+        }
+        setResult(outcome->result);
+        const QString warnings = outcome->warnings.join(QLatin1Char('\n'));
+        if (!warnings.isEmpty())
+            m_summary->setText(m_summary->text() + QLatin1Char('\n') + warnings);
+        Q_EMIT analysisFinished(true, warnings);
+    });
+    m_thread->start();
+}
+
+QString AnalysisWindow::summaryText() const
+{
+    return m_summary->text();
+}
+
+void AnalysisWindow::setResult(const record::SampleAnalyzer::Result &r)
+{
+    m_table->setRowCount(int(r.channels.size()));
+    for (int i = 0; i < int(r.channels.size()); ++i) {
+        const auto &c = r.channels[size_t(i)];
+        const QStringList cells = {QString::fromStdString(c.name), QString::fromStdString(c.unit),
+                                   QString::number(c.mean, 'g', 7), QString::number(c.std, 'g', 5),
+                                   QString::number(c.min, 'g', 7), QString::number(c.max, 'g', 7)};
+        for (int col = 0; col < cells.size(); ++col)
+            m_table->setItem(i, col, new QTableWidgetItem(cells.at(col)));
+    }
+    QStringList lines;
+    lines << tr("%1: %2 frames over %3 s, output rate %4 Hz, interval %5 ± %6 ms, frames lost %7")
+                 .arg(QString::fromStdString(r.source))
+                 .arg(r.frames)
+                 .arg(r.durationS, 0, 'f', 1)
+                 .arg(r.rateHz, 0, 'f', 2)
+                 .arg(r.intervalMeanMs, 0, 'f', 3)
+                 .arg(r.intervalStdMs, 0, 'f', 3)
+                 .arg(r.framesLost);
+    for (const auto &a : r.axes) {
+        const bool gyro = a.unit == "deg/s";
+        QString line = QString::fromStdString(a.name) + QLatin1String(": ");
+        if (a.summary.haveOneSecond)
+            line += gyro ? tr("ARW %1 deg/√h").arg(a.summary.atOneSecond * 60.0, 0, 'g', 4)
+                         : tr("VRW %1 m/s/√h").arg(a.summary.atOneSecond * model::kGravity * 60.0, 0, 'g', 4);
+        if (a.summary.haveMinimum)
+            line += QLatin1String(", ")
+                + (gyro ? tr("bias instability %1 deg/h at τ = %2 s").arg(a.summary.biasInstability * 3600.0, 0, 'g', 4)
+                        : tr("bias instability %1 mG at τ = %2 s").arg(a.summary.biasInstability * 1000.0, 0, 'g', 4))
+                      .arg(a.summary.minimumTau, 0, 'g', 3);
+        lines << line;
+    }
+    lines << tr("Recommended minimum recording length for τ up to %1 s: %2 h").arg(r.tauMax).arg(
+        r.recommendedLengthS / 3600.0, 0, 'f', 1);
+    m_summary->setText(lines.join(QLatin1Char('\n')));
+    fillHistogram(r);
+    fillAllan(r);
+}
+
+void AnalysisWindow::fillHistogram(const record::SampleAnalyzer::Result &r)
+{
+    m_histogram->removeAllSeries();
+    for (QAbstractAxis *axis : m_histogram->axes())
+        m_histogram->removeAxis(axis);
+    auto *set = new QBarSet(tr("frames"));
+    QStringList labels;
+    for (const auto &b : r.intervals) {
+        *set << double(b.count);
+        labels << (std::isfinite(b.toMs) ? QString::number(b.fromMs, 'f', 2) : tr("≥%1").arg(b.fromMs, 0, 'f', 2));
+    }
+    auto *series = new QBarSeries;
+    series->append(set);
+    m_histogram->addSeries(series);
+    auto *x = new QBarCategoryAxis;
+    x->append(labels);
+    x->setTitleText(tr("interval, ms"));
+    auto *y = new QValueAxis;
+    y->setTitleText(tr("frames"));
+    m_histogram->addAxis(x, Qt::AlignBottom);
+    m_histogram->addAxis(y, Qt::AlignLeft);
+    series->attachAxis(x);
+    series->attachAxis(y);
+    double top = 1;
+    for (const auto &b : r.intervals)
+        top = std::max(top, double(b.count));
+    y->setRange(0, top);
+}
+
+void AnalysisWindow::fillAllan(const record::SampleAnalyzer::Result &r)
+{
+    m_allan->removeAllSeries();
+    for (QAbstractAxis *axis : m_allan->axes())
+        m_allan->removeAxis(axis);
+    auto *x = new QLogValueAxis;
+    x->setTitleText(tr("τ, s"));
+    x->setLabelFormat(QStringLiteral("%g"));
+    auto *y = new QLogValueAxis;
+    y->setTitleText(tr("σ(τ) (deg/s for gyro, G for acc)"));
+    y->setLabelFormat(QStringLiteral("%g"));
+    m_allan->addAxis(x, Qt::AlignBottom);
+    m_allan->addAxis(y, Qt::AlignLeft);
+    double lo = INFINITY, hi = 0, tLo = INFINITY, tHi = 0;
+    for (const auto &a : r.axes) {
+        auto *series = new QLineSeries;
+        series->setName(QString::fromStdString(a.name));
+        for (const auto &p : a.curve) {
+            if (p.adev <= 0)
+                continue;
+            series->append(p.tau, p.adev);
+            lo = std::min(lo, p.adev);
+            hi = std::max(hi, p.adev);
+            tLo = std::min(tLo, p.tau);
+            tHi = std::max(tHi, p.tau);
+        }
+        m_allan->addSeries(series);
+        series->attachAxis(x);
+        series->attachAxis(y);
+    }
+    if (hi > 0) {
+        x->setRange(tLo, tHi);
+        y->setRange(lo / 2, hi * 2);
+    }
+}
+
+} // namespace imudesk::ui

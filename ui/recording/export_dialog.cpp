@@ -1,0 +1,170 @@
+#include "recording/export_dialog.h"
+
+#include <QComboBox>
+#include <QDialogButtonBox>
+#include <QDoubleSpinBox>
+#include <QFileInfo>
+#include <QFormLayout>
+#include <QLabel>
+#include <QLineEdit>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QThread>
+#include <QVBoxLayout>
+
+namespace imudesk::ui {
+
+using Format = record::CaptureExporter::Format;
+
+ExportDialog::ExportDialog(const QString &capturePath, QWidget *parent) : QDialog(parent), m_capture(capturePath)
+{
+    setWindowTitle(tr("Export %1").arg(QFileInfo(capturePath).fileName()));
+    m_format = new QComboBox(this);
+    m_format->setObjectName(QStringLiteral("format"));
+    m_format->addItem(tr("Vendor CSV (one file per frame type)"), int(Format::VendorCsv));
+    m_format->addItem(tr("Tidy CSV (pandas, PlotJuggler)"), int(Format::TidyCsv));
+    m_format->addItem(tr("JSON Lines"), int(Format::JsonLines));
+    m_output = new QLineEdit(this);
+    m_output->setObjectName(QStringLiteral("output"));
+    m_from = new QDoubleSpinBox(this);
+    m_from->setObjectName(QStringLiteral("from"));
+    m_from->setRange(0, 1e7);
+    m_from->setDecimals(3);
+    m_from->setSuffix(tr(" s"));
+    m_to = new QDoubleSpinBox(this);
+    m_to->setObjectName(QStringLiteral("to"));
+    m_to->setRange(-1, 1e7);
+    m_to->setDecimals(3);
+    m_to->setSuffix(tr(" s"));
+    m_to->setSpecialValueText(tr("end"));
+    m_to->setValue(-1);
+    m_progress = new QProgressBar(this);
+    m_progress->setObjectName(QStringLiteral("progress"));
+    m_progress->setRange(0, 1000);
+    m_progress->setValue(0);
+    m_status = new QLabel(this);
+    m_status->setObjectName(QStringLiteral("status"));
+    m_status->setWordWrap(true);
+    auto *buttons = new QDialogButtonBox(this);
+    m_export = buttons->addButton(tr("Export"), QDialogButtonBox::AcceptRole);
+    m_export->setObjectName(QStringLiteral("export"));
+    m_cancel = buttons->addButton(QDialogButtonBox::Cancel);
+    m_cancel->setObjectName(QStringLiteral("cancel"));
+
+    auto *form = new QFormLayout;
+    form->addRow(tr("Format:"), m_format);
+    form->addRow(tr("Output:"), m_output);
+    form->addRow(tr("From:"), m_from);
+    form->addRow(tr("To:"), m_to);
+    auto *layout = new QVBoxLayout(this);
+    layout->addLayout(form);
+    layout->addWidget(m_progress);
+    layout->addWidget(m_status);
+    layout->addWidget(buttons);
+
+    connect(m_format, &QComboBox::currentIndexChanged, this, &ExportDialog::suggestOutput);
+    connect(m_export, &QPushButton::clicked, this, &ExportDialog::startExport);
+    connect(m_cancel, &QPushButton::clicked, this, [this] {
+        if (m_thread)
+            cancelExport();
+        else
+            reject();
+    });
+    m_poll.setInterval(100);
+    connect(&m_poll, &QTimer::timeout, this, &ExportDialog::pollProgress);
+    suggestOutput();
+}
+
+ExportDialog::~ExportDialog()
+{
+    if (m_thread) {
+        m_cancelRequested = true;
+        m_thread->wait();
+    }
+}
+
+void ExportDialog::setFormat(Format format)
+{
+    m_format->setCurrentIndex(m_format->findData(int(format)));
+}
+
+void ExportDialog::setOutput(const QString &path)
+{
+    m_output->setText(path);
+}
+
+void ExportDialog::setRange(double fromS, double toS)
+{
+    m_from->setValue(fromS);
+    m_to->setValue(toS < 0 ? -1 : toS);
+}
+
+void ExportDialog::suggestOutput()
+{
+    const QFileInfo info(m_capture);
+    const auto format = Format(m_format->currentData().toInt());
+    m_output->setText(info.path() + QLatin1Char('/') + info.completeBaseName()
+                      + (format == Format::JsonLines ? QStringLiteral(".jsonl") : QStringLiteral(".csv")));
+}
+
+void ExportDialog::startExport()
+{
+    if (m_thread)
+        return;
+    record::CaptureExporter::Options o;
+    o.format = Format(m_format->currentData().toInt());
+    o.output = m_output->text();
+    o.fromS = m_from->value();
+    if (m_to->value() >= 0)
+        o.toS = m_to->value();
+    m_permille = 0;
+    m_cancelRequested = false;
+    m_progress->setValue(0);
+    m_status->setText(tr("Exporting…"));
+    m_export->setEnabled(false);
+    const QString capture = m_capture;
+    m_thread = QThread::create([this, capture, o] {
+        m_result = record::CaptureExporter::run(capture, o, [this](double f) {
+            m_permille = int(f * 1000);
+            return !m_cancelRequested.load();
+        });
+    });
+    connect(m_thread, &QThread::finished, this, &ExportDialog::onFinished);
+    m_thread->start();
+    m_poll.start();
+}
+
+void ExportDialog::cancelExport()
+{
+    m_cancelRequested = true;
+}
+
+void ExportDialog::pollProgress()
+{
+    m_progress->setValue(m_permille.load());
+}
+
+void ExportDialog::onFinished()
+{
+    m_poll.stop();
+    m_thread->deleteLater();
+    m_thread = nullptr;
+    m_export->setEnabled(true);
+    QString message;
+    if (m_result.cancelled) {
+        message = tr("Export cancelled; the partial files were removed.");
+        m_progress->setValue(0);
+    } else if (!m_result.ok) {
+        message = m_result.error;
+    } else {
+        m_progress->setValue(1000);
+        message = tr("%n row(s) written to %1", nullptr, int(std::min<uint64_t>(m_result.frames, INT32_MAX)))
+                      .arg(m_result.files.join(QStringLiteral(", ")));
+        if (!m_result.warning.isEmpty())
+            message += QLatin1Char('\n') + m_result.warning;
+    }
+    m_status->setText(message);
+    Q_EMIT exportFinished(m_result.ok, message);
+}
+
+} // namespace imudesk::ui

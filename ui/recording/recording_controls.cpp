@@ -1,0 +1,225 @@
+#include "recording/recording_controls.h"
+
+#include "device/device_session.h"
+
+#include <QDateTime>
+#include <QDir>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLineEdit>
+#include <QLocale>
+#include <QPushButton>
+#include <QRegularExpression>
+
+namespace imudesk::ui {
+
+RecordingControls::RecordingControls(QWidget *parent) : QWidget(parent)
+{
+    m_record = new QPushButton(tr("Record"), this);
+    m_record->setObjectName(QStringLiteral("record"));
+    m_stop = new QPushButton(tr("Stop"), this);
+    m_stop->setObjectName(QStringLiteral("stop"));
+    m_folder = new QLineEdit(QDir::homePath(), this);
+    m_folder->setObjectName(QStringLiteral("folder"));
+    m_folder->setToolTip(tr("Folder the capture files are written to"));
+    m_pattern = new QLineEdit(QString::fromLatin1(kDefaultPattern), this);
+    m_pattern->setObjectName(QStringLiteral("pattern"));
+    m_pattern->setToolTip(tr("File name; {date}, {time}, {product} and {serial} are filled in"));
+    m_elapsed = new QLabel(this);
+    m_elapsed->setObjectName(QStringLiteral("elapsed"));
+    m_size = new QLabel(this);
+    m_size->setObjectName(QStringLiteral("size"));
+    m_frames = new QLabel(this);
+    m_frames->setObjectName(QStringLiteral("frames"));
+    m_message = new QLabel(this);
+    m_message->setObjectName(QStringLiteral("message"));
+    m_message->setWordWrap(true);
+
+    auto *row = new QHBoxLayout;
+    row->addWidget(m_record);
+    row->addWidget(m_stop);
+    row->addWidget(new QLabel(tr("Folder:"), this));
+    row->addWidget(m_folder, 2);
+    row->addWidget(new QLabel(tr("File:"), this));
+    row->addWidget(m_pattern, 2);
+    row->addWidget(m_elapsed);
+    row->addWidget(m_size);
+    row->addWidget(m_frames);
+    auto *layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addLayout(row);
+    layout->addWidget(m_message);
+
+    connect(m_record, &QPushButton::clicked, this, &RecordingControls::startRecording);
+    connect(m_stop, &QPushButton::clicked, this, &RecordingControls::stopRecording);
+    m_clock.setInterval(500);
+    connect(&m_clock, &QTimer::timeout, this, &RecordingControls::refresh);
+    refresh();
+    updateButtons();
+}
+
+void RecordingControls::setSession(device::DeviceSession *session)
+{
+    if (m_session)
+        disconnect(m_session, nullptr, this, nullptr);
+    m_session = session;
+    m_recording = m_pending = false;
+    if (m_session) {
+        connect(m_session, &device::DeviceSession::recordingStarted, this, &RecordingControls::onStarted);
+        connect(m_session, &device::DeviceSession::recordingStopped, this, &RecordingControls::onStopped);
+        connect(m_session, &device::DeviceSession::recordingProgress, this, &RecordingControls::onProgress);
+        connect(m_session, &device::DeviceSession::identityChanged, this,
+                [this](const model::DeviceIdentity &id) {
+                    setIdentity(QString::fromStdString(id.productName), QString::fromStdString(id.serial));
+                });
+        connect(m_session, &QObject::destroyed, this, [this] { setSession(nullptr); });
+    }
+    updateButtons();
+}
+
+void RecordingControls::setIdentity(const QString &product, const QString &serial)
+{
+    m_product = product;
+    m_serial = serial;
+}
+
+void RecordingControls::setFolder(const QString &folder)
+{
+    m_folder->setText(folder);
+}
+
+QString RecordingControls::folder() const
+{
+    return m_folder->text();
+}
+
+void RecordingControls::setPattern(const QString &pattern)
+{
+    m_pattern->setText(pattern);
+}
+
+QString RecordingControls::pattern() const
+{
+    return m_pattern->text();
+}
+
+QString RecordingControls::expandPattern(const QString &pattern) const
+{
+    return expandPattern(pattern, m_product, m_serial, QDateTime::currentDateTime());
+}
+
+QString RecordingControls::expandPattern(const QString &pattern, const QString &product, const QString &serial,
+                                         const QDateTime &when)
+{
+    QString name = pattern;
+    name.replace(QLatin1String("{date}"), when.toString(QStringLiteral("yyyyMMdd")));
+    name.replace(QLatin1String("{time}"), when.toString(QStringLiteral("HHmmss")));
+    name.replace(QLatin1String("{product}"), product.isEmpty() ? QStringLiteral("device") : product);
+    name.replace(QLatin1String("{serial}"), serial.isEmpty() ? QStringLiteral("unknown") : serial);
+    // Nothing that leaves the folder or upsets a file system.
+    static const QRegularExpression unsafe(QStringLiteral("[/\\\\:*?\"<>|\\x00-\\x1f\\x7f]"));
+    name.replace(unsafe, QStringLiteral("_"));
+    // A device's serial or product string is not trusted: no hidden file, no name a file system refuses.
+    while (name.startsWith(QLatin1Char('.')))
+        name.replace(0, 1, QLatin1Char('_'));
+    name.truncate(200);
+    if (!name.endsWith(QLatin1String(".imucap")))
+        name += QLatin1String(".imucap");
+    return name;
+}
+
+void RecordingControls::startRecording()
+{
+    if (!m_session || m_recording || m_pending)
+        return;
+    if (m_session->state() != device::SessionState::Connected) {
+        m_message->setText(tr("Connect a device before recording."));
+        return;
+    }
+    const QDir dir(m_folder->text());
+    if (!dir.exists()) {
+        m_message->setText(tr("The folder %1 does not exist. Choose another one.").arg(m_folder->text()));
+        return;
+    }
+    m_path = dir.filePath(expandPattern(m_pattern->text()));
+    m_pending = true;
+    m_message->clear();
+    m_session->startRecording(m_path);
+    updateButtons();
+}
+
+void RecordingControls::stopRecording()
+{
+    if (m_session && (m_recording || m_pending))
+        m_session->stopRecording();
+}
+
+void RecordingControls::onStarted(const QString &path)
+{
+    m_pending = false;
+    m_recording = true;
+    m_path = path;
+    m_bytes = m_frameCount = 0;
+    m_since.start();
+    m_clock.start();
+    m_message->setText(tr("Recording to %1").arg(path));
+    refresh();
+    updateButtons();
+    Q_EMIT recordingStarted(path);
+}
+
+void RecordingControls::onStopped(const QString &reason)
+{
+    const bool was = m_recording;
+    m_pending = false;
+    m_recording = false;
+    m_clock.stop();
+    refresh();
+    updateButtons();
+    if (!reason.isEmpty()) {
+        m_message->setText(reason);
+        Q_EMIT recordingFailed(reason);
+    } else if (was) {
+        m_message->setText(tr("Saved %1").arg(m_path));
+    }
+    if (was)
+        Q_EMIT recordingStopped(m_path);
+}
+
+void RecordingControls::onProgress(quint64 bytes, quint64 frames)
+{
+    m_bytes = bytes;
+    m_frameCount = frames;
+    refresh();
+}
+
+void RecordingControls::refresh()
+{
+    const qint64 s = m_recording && m_since.isValid() ? m_since.elapsed() / 1000 : 0;
+    m_elapsed->setText(tr("%1:%2:%3")
+                           .arg(s / 3600, 2, 10, QLatin1Char('0'))
+                           .arg(s / 60 % 60, 2, 10, QLatin1Char('0'))
+                           .arg(s % 60, 2, 10, QLatin1Char('0')));
+    // Our own units (Qt's "bytes" is not translated by every distribution's qtbase catalogue).
+    const double b = double(m_bytes);
+    if (b < 1024.0)
+        m_size->setText(tr("%1 B").arg(m_bytes));
+    else if (b < 1024.0 * 1024.0)
+        m_size->setText(tr("%1 KiB").arg(b / 1024.0, 0, 'f', 1));
+    else if (b < 1024.0 * 1024.0 * 1024.0)
+        m_size->setText(tr("%1 MiB").arg(b / (1024.0 * 1024.0), 0, 'f', 1));
+    else
+        m_size->setText(tr("%1 GiB").arg(b / (1024.0 * 1024.0 * 1024.0), 0, 'f', 2));
+    m_frames->setText(tr("%n frame(s)", nullptr, int(std::min<quint64>(m_frameCount, INT32_MAX))));
+}
+
+void RecordingControls::updateButtons()
+{
+    const bool busy = m_recording || m_pending;
+    m_record->setEnabled(m_session && !busy);
+    m_stop->setEnabled(m_session && busy);
+    m_folder->setEnabled(!busy);
+    m_pattern->setEnabled(!busy);
+}
+
+} // namespace imudesk::ui

@@ -1,0 +1,635 @@
+#include "workspace/device_workspace.h"
+
+#include "attitude/attitude_widget.h"
+#include "model/attitude.h"
+#include "configuration/config_panel.h"
+#include "recording/recording_controls.h"
+#include "charts/chart_panel.h"
+#include "workspace/command_log_widget.h"
+#include "workspace/console_widget.h"
+#include "workspace/raw_bytes_view.h"
+#include "models/latest_values_model.h"
+#include "sim/pty_simulator.h"
+#include "workspace/status_flags_widget.h"
+
+#include <QAction>
+#include <QDockWidget>
+#include <QEvent>
+#include <QHBoxLayout>
+#include <QKeySequence>
+#include <QHeaderView>
+#include <QLabel>
+#include <QStatusBar>
+#include <QTableView>
+#include <QVBoxLayout>
+
+#include <utility>
+
+namespace imudesk::ui {
+
+using device::SessionState;
+
+namespace {
+
+// The rows of the values table. Before any data: the core quantities. Once data arrived: the
+// fields this link has sent (a compass sends no quaternion, a HI83 sends its position). The
+// status word and the frame type stay in the status bar (the flags coloured by meaning, the
+// frame type with its rate), so the table fits without a scroll bar beside the 3D attitude.
+bool rowInTable(models::LatestValuesModel::Row row, bool everSeen, bool anyData)
+{
+    using Model = models::LatestValuesModel;
+    if (row == Model::StatusFlags || row == Model::FrameType)
+        return false;
+    return anyData ? everSeen : Model::isCoreRow(row);
+}
+
+QDockWidget *makeDock(QWidget *content, const QString &objectName)
+{
+    auto *dock = new QDockWidget(content->parentWidget());
+    dock->setObjectName(objectName);
+    dock->setWidget(content);
+    return dock;
+}
+
+bool busyState(SessionState s)
+{
+    return s == SessionState::Opening || s == SessionState::Detecting || s == SessionState::Connected
+        || s == SessionState::Reconnecting;
+}
+
+QString rateText(double hz)
+{
+    return QString::number(hz, 'f', hz >= 10 ? 0 : 1);
+}
+
+constexpr int kLayoutVersion = 4; // 4: attitude in a dock of its own, bottom panels closed
+
+} // namespace
+
+DeviceWorkspace::DeviceWorkspace(QWidget *parent) : QMainWindow(parent)
+{
+    setObjectName(QStringLiteral("deviceWorkspace"));
+    setWindowFlags(Qt::Widget); // lives inside a tab
+    setDockOptions(AllowNestedDocks | AllowTabbedDocks);
+
+    // The live values.
+    m_valuesModel = new models::LatestValuesModel(this);
+    m_valuesView = new QTableView(this);
+    m_valuesView->setObjectName(QStringLiteral("valuesView"));
+    m_valuesView->setModel(m_valuesModel);
+    m_valuesView->verticalHeader()->hide();
+    m_valuesView->verticalHeader()->setDefaultSectionSize(m_valuesView->fontMetrics().height() + 3);
+    m_valuesView->setAlternatingRowColors(true);
+    m_valuesView->setSelectionBehavior(QAbstractItemView::SelectRows);
+    m_valuesView->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    m_valuesView->setWordWrap(false);
+    m_valuesView->setCornerButtonEnabled(false);
+    auto *header = m_valuesView->horizontalHeader();
+    // Every column in full (resizeValueColumns() sizes them and the view's minimum width):
+    // a narrow dock never hides the numbers or units behind a scroll bar.
+    header->setSectionResizeMode(QHeaderView::Fixed);
+    header->setStretchLastSection(true);
+    header->setDefaultAlignment(Qt::AlignLeft | Qt::AlignVCenter);
+    m_valuesView->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    for (int r = 0; r < models::LatestValuesModel::RowCount; ++r)
+        m_valuesView->setRowHidden(r, !rowInTable(models::LatestValuesModel::Row(r), false, false));
+    // Centre: the live charts.
+    m_charts = new ChartPanel(this);
+    m_charts->setObjectName(QStringLiteral("chartPanel"));
+    setCentralWidget(m_charts);
+
+    // Right: the values, and below them the 3D attitude, each a dock of its own; the HiPNUC
+    // serial link's settings behind the values. Below the charts, as tabs: the ASCII console,
+    // the raw link traffic, the log of every command this window sent with its reply, and
+    // the recording controls. applyPreset() puts them in place.
+    m_valuesDock = makeDock(m_valuesView, QStringLiteral("valuesDock"));
+    m_attitude = new AttitudeWidget(this);
+    m_attitude->setObjectName(QStringLiteral("attitudeWidget"));
+    m_attitudeDock = makeDock(m_attitude, QStringLiteral("attitudeDock"));
+    // The right column runs the whole height: the panels below the charts never shorten the
+    // attitude view.
+    setCorner(Qt::TopRightCorner, Qt::RightDockWidgetArea);
+    setCorner(Qt::BottomRightCorner, Qt::RightDockWidgetArea);
+
+    m_console = new ConsoleWidget(this);
+    m_console->setObjectName(QStringLiteral("console"));
+    m_consoleDock = makeDock(m_console, QStringLiteral("consoleDock"));
+    m_rawView = new RawBytesView(this);
+    m_rawView->setObjectName(QStringLiteral("rawBytesView"));
+    m_rawView->setLog(&m_session.rawLog());
+    m_rawDock = makeDock(m_rawView, QStringLiteral("rawBytesDock"));
+    m_commandLog = new CommandLogWidget(this);
+    m_commandLog->setObjectName(QStringLiteral("commandLog"));
+    m_commandLogDock = makeDock(m_commandLog, QStringLiteral("commandLogDock"));
+    m_configPanel = new ConfigPanel(m_session, this);
+    m_configPanel->setObjectName(QStringLiteral("configPanel"));
+    m_configDock = makeDock(m_configPanel, QStringLiteral("configDock"));
+    m_recording = new RecordingControls(this);
+    m_recording->setObjectName(QStringLiteral("recordingControls"));
+    m_recording->setSession(&m_session);
+    m_recordingDock = makeDock(m_recording, QStringLiteral("recordingDock"));
+    connect(m_recording, &RecordingControls::recordingFailed, this, &DeviceWorkspace::onErrorOccurred);
+    // The Monitor layout: the settings hidden until asked for (Device > Configuration, or the
+    // Configure layout), the panels below the charts closed until needed (View menu, Ctrl+`
+    // for the console, an ERR reply, a recording).
+    applyPreset(LayoutPreset::Monitor);
+    m_consoleDock->toggleViewAction()->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_QuoteLeft));
+    connect(m_recording, &RecordingControls::recordingStarted, this, [this] { openDock(m_recordingDock); });
+
+    createStatusBar();
+
+    connect(m_console, &ConsoleWidget::commandSubmitted, this, &DeviceWorkspace::sendConsoleCommand);
+    connect(&m_session, &device::DeviceSession::stateChanged, this, &DeviceWorkspace::onStateChanged);
+    connect(&m_session, &device::DeviceSession::identityChanged, this, &DeviceWorkspace::onIdentityChanged);
+    connect(&m_session, &device::DeviceSession::statsUpdated, this, &DeviceWorkspace::onStatsUpdated);
+    connect(&m_session, &device::DeviceSession::baudDetected, this, &DeviceWorkspace::onBaudDetected);
+    connect(&m_session, &device::DeviceSession::commandFinished, this, &DeviceWorkspace::onCommandFinished);
+    connect(&m_session, &device::DeviceSession::textReceived, m_console, &ConsoleWidget::showText);
+    connect(&m_session, &device::DeviceSession::errorOccurred, this, &DeviceWorkspace::onErrorOccurred);
+
+    m_refreshTimer.setInterval(kRefreshIntervalMs);
+    m_refreshTimer.setTimerType(Qt::PreciseTimer);
+    connect(&m_refreshTimer, &QTimer::timeout, this, &DeviceWorkspace::refreshViews);
+
+    retranslateUi();
+    onStateChanged(SessionState::Closed, QString());
+}
+
+DeviceWorkspace::~DeviceWorkspace()
+{
+    // Close the port before the simulator behind it goes away.
+    m_session.disconnect(this);
+    m_session.close();
+    if (m_other) {
+        m_other->disconnect(this);
+        m_other->close();
+        m_other.reset();
+    }
+    m_otherKeepAlive.reset();
+}
+
+bool DeviceWorkspace::attachLink(std::unique_ptr<device::DeviceLink> link, const QString &target,
+                                 std::shared_ptr<void> keepAlive)
+{
+    if (isBusy() || !link)
+        return false;
+    stopSimulator();
+    detachLink();
+    m_other = std::move(link);
+    m_otherKeepAlive = std::move(keepAlive);
+    resetViews();
+    m_target = target;
+    connect(m_other.get(), &device::DeviceLink::stateChanged, this, [this](SessionState state, const QString &detail) {
+        if (!busyState(state))
+            m_otherKeepAlive.reset(); // e.g. stop the simulator behind a closed link
+        onStateChanged(state, detail);
+    });
+    connect(m_other.get(), &device::DeviceLink::identityChanged, this, &DeviceWorkspace::onIdentityChanged);
+    connect(m_other.get(), &device::DeviceLink::statsUpdated, this, &DeviceWorkspace::onStatsUpdated);
+    connect(m_other.get(), &device::DeviceLink::errorOccurred, this, &DeviceWorkspace::onErrorOccurred);
+    m_console->setInputEnabled(false); // ASCII commands are for the HiPNUC serial link
+    m_configPanel->setEnabled(false);
+    m_recording->setEnabled(false);
+    for (QDockWidget *dock : serialOnlyDocks())
+        dock->hide(); // the HiPNUC serial link's panels: not for this link
+    Q_EMIT titleChanged(title());
+    return true;
+}
+
+void DeviceWorkspace::detachLink()
+{
+    if (!m_other)
+        return;
+    for (QDockWidget *dock : std::exchange(m_linkDocks, {})) {
+        removeDockWidget(dock);
+        delete dock; // its widgets may refer to the link: they go first
+    }
+    m_linkDockPlaces.clear();
+    m_configPanel->setEnabled(true);
+    m_recording->setEnabled(true);
+    m_other->disconnect(this);
+    m_other->close();
+    m_other.reset();
+    m_otherKeepAlive.reset();
+    resetViews();
+}
+
+void DeviceWorkspace::applyPreferences(const Preferences &prefs)
+{
+    m_refreshTimer.setInterval(prefs.refreshIntervalMs());
+    m_charts->setUnits(prefs.units);
+    m_charts->setHistoryMinutes(prefs.historyMinutes);
+    m_valuesModel->setUnits(prefs.units);
+    m_attitude->setDisplayFrame(prefs.frame == Preferences::Frame::Ned ? AttitudeWidget::DisplayFrame::Ned
+                                                                       : AttitudeWidget::DisplayFrame::Enu);
+    m_autoReconnect = prefs.autoReconnect;
+    m_recording->setFolder(prefs.effectiveRecordingFolder());
+    m_recording->setPattern(prefs.recordingPattern);
+    if (isBusy() && !m_simulator && !m_other)
+        m_session.setAutoReconnect(prefs.autoReconnect);
+}
+
+void DeviceWorkspace::resetViews()
+{
+    m_identity.reset();
+    m_stats.reset();
+    m_chartSeq = 0;
+    m_shownTotal = ~quint64(0);
+    m_charts->clear();
+}
+
+bool DeviceWorkspace::isBusy() const
+{
+    return busyState(m_state);
+}
+
+QString DeviceWorkspace::title() const
+{
+    if (m_target.isEmpty())
+        return tr("New connection");
+    if (m_identity && !m_identity->productName.empty())
+        return tr("%1 on %2").arg(QString::fromStdString(m_identity->productName), m_target);
+    return m_target;
+}
+
+QList<QAction *> DeviceWorkspace::dockActions() const
+{
+    QList<QAction *> actions;
+    for (QDockWidget *dock : findChildren<QDockWidget *>(QString(), Qt::FindDirectChildrenOnly))
+        if (offersDock(dock))
+            actions << dock->toggleViewAction();
+    return actions;
+}
+
+QByteArray DeviceWorkspace::saveLayout() const
+{
+    return saveState(kLayoutVersion);
+}
+
+bool DeviceWorkspace::restoreLayout(const QByteArray &state)
+{
+    m_layoutRestored = !state.isEmpty() && restoreState(state, kLayoutVersion);
+    return m_layoutRestored;
+}
+
+void DeviceWorkspace::connectPort(const QString &port, int baud)
+{
+    if (isBusy())
+        return;
+    stopSimulator();
+    detachLink();
+    m_identity.reset();
+    m_stats.reset();
+    m_baud = baud;
+    m_target = port;
+    m_configPanel->setPortName(port);
+    m_session.setAutoReconnect(m_autoReconnect);
+    Q_EMIT titleChanged(title());
+    m_session.open(port, baud);
+}
+
+bool DeviceWorkspace::connectSimulated(const sim::SimOptions &options, int baud, QString *error)
+{
+    if (isBusy()) {
+        if (error)
+            *error = tr("Disconnect first, then connect to the simulated device.");
+        return false;
+    }
+    stopSimulator();
+    detachLink();
+    auto simulator = std::make_unique<sim::PtySimulator>(options);
+    QString why;
+    if (!simulator->start(&why)) {
+        if (error)
+            *error = tr("The simulated device could not start: %1").arg(why);
+        return false;
+    }
+    m_simulator = std::move(simulator);
+    m_identity.reset();
+    m_stats.reset();
+    m_baud = baud;
+    m_session.setAutoReconnect(false); // a pty's number is reused: never wait for it to "come back"
+    m_target = tr("Simulated %1 (firmware %2)")
+                   .arg(QString::fromStdString(options.model), QString::fromStdString(options.firmware));
+    Q_EMIT titleChanged(title());
+    m_configPanel->setPortName(m_simulator->devicePath());
+    m_session.open(m_simulator->devicePath(), baud);
+    return true;
+}
+
+void DeviceWorkspace::disconnectDevice()
+{
+    if (isBusy())
+        link().close(); // the simulator stops when the link reports Closed
+    else
+        stopSimulator();
+}
+
+QString DeviceWorkspace::releasePort()
+{
+    const QString port = m_simulator ? m_simulator->devicePath() : m_target;
+    m_keepSimulator = m_simulator != nullptr;
+    if (isBusy())
+        m_session.close();
+    return port;
+}
+
+void DeviceWorkspace::reclaimPort(const QString &port, int baud)
+{
+    m_keepSimulator = false;
+    if (!m_simulator) {
+        connectPort(port, baud);
+        return;
+    }
+    if (isBusy())
+        return;
+    m_identity.reset();
+    m_stats.reset();
+    m_baud = baud;
+    m_session.open(m_simulator->devicePath(), baud);
+}
+
+void DeviceWorkspace::sendConsoleCommand(const QString &text)
+{
+    const quint64 id = m_session.sendCommand(text, kCommandTimeoutMs);
+    m_console->showCommand(id, text);
+    m_commandLog->record(id, text);
+}
+
+void DeviceWorkspace::stopSimulator()
+{
+    if (!m_simulator)
+        return;
+    m_simulator->stop();
+    m_simulator.reset();
+}
+
+void DeviceWorkspace::refreshViews()
+{
+    if (window()->isMinimized())
+        return;
+    // Charts: the samples that arrived since the last tick, then one redraw of what is on screen.
+    device::SampleStore &store = link().store();
+    const auto batch = store.since(m_chartSeq, kMaxSamplesPerTick, &m_chartSeq);
+    if (!batch.empty())
+        m_charts->appendSamples(batch);
+    m_charts->refresh();
+    if (!m_rawDock->visibleRegion().isEmpty())
+        m_rawView->refresh();
+    const quint64 total = store.totalAppended();
+    if (total == m_shownTotal)
+        return;
+    std::optional<model::Sample> latest = store.latest();
+    // Before firmware 1.7.0 the MAIN_STATUS bytes are reserved: show them as not reported.
+    if (latest && m_identity && m_identity->firmware && !m_identity->hasMainStatus())
+        latest->fields &= ~uint32_t(model::FieldMainStatus);
+    // The 3D attitude on every tick, so that it moves smoothly.
+    if (latest && latest->has(model::FieldQuat))
+        m_attitude->setQuaternion(latest->quat);
+    else if (latest && latest->has(model::FieldEuler)) // links that send angles only (HEC495, Modbus)
+        m_attitude->setQuaternion(model::quatFromEnu312(model::Euler{latest->roll, latest->pitch, latest->yaw}));
+    // The numbers at most ten times a second: digits that change faster cannot be read, and
+    // their text layout is a good part of the GUI thread's work at 1 kHz. A tick that skips
+    // them leaves m_shownTotal behind, so the newest values always arrive.
+    if (m_valuesClock.isValid() && m_valuesClock.elapsed() < kValuesIntervalMs)
+        return;
+    m_valuesClock.restart();
+    m_shownTotal = total;
+    m_valuesModel->refresh(latest);
+    // The rows follow what the link sends (see rowInTable).
+    bool rowsChanged = false;
+    const bool anyData = m_valuesModel->everSeen(models::LatestValuesModel::FrameType);
+    for (int r = 0; r < models::LatestValuesModel::RowCount; ++r) {
+        const auto row = models::LatestValuesModel::Row(r);
+        const bool hide = !rowInTable(row, m_valuesModel->everSeen(row), anyData);
+        if (m_valuesView->isRowHidden(r) != hide) {
+            m_valuesView->setRowHidden(r, hide);
+            rowsChanged = true;
+        }
+    }
+    if (rowsChanged && followsWindow())
+        fitDocks(); // room for the new rows
+    m_flags->setStatus(latest && latest->has(model::FieldMainStatus) ? std::optional<quint16>(latest->mainStatus)
+                                                                     : std::nullopt);
+}
+
+void DeviceWorkspace::onStateChanged(SessionState state, const QString &detail)
+{
+    m_state = state;
+    m_stateDetail = detail;
+    if (!busyState(state) && !m_keepSimulator)
+        stopSimulator(); // the port is closed already
+    m_console->setInputEnabled(state == SessionState::Connected);
+    updateStateLabel();
+    updateStatsLabel();
+    Q_EMIT stateChanged(state);
+    Q_EMIT titleChanged(title());
+}
+
+void DeviceWorkspace::onIdentityChanged(const model::DeviceIdentity &identity)
+{
+    m_identity = identity;
+    m_shownTotal = ~quint64(0); // the identity decides whether MAIN_STATUS is shown
+    updateIdentityLabel();
+    Q_EMIT titleChanged(title());
+}
+
+void DeviceWorkspace::onStatsUpdated(const device::SessionStats &stats)
+{
+    m_stats = stats;
+    updateStatsLabel();
+}
+
+void DeviceWorkspace::onBaudDetected(int baud)
+{
+    m_baud = baud;
+    updateStatsLabel();
+}
+
+void DeviceWorkspace::onCommandFinished(quint64 id, const protocol::hipnuc::AsciiReply &reply)
+{
+    m_console->showReply(id, reply);
+    m_commandLog->complete(id, reply);
+    if (!reply.ok())
+        openDock(m_consoleDock); // the user sees the ERR and what the device said
+    // A LOG VERSION sent from the console or the Device menu refreshes the identity too.
+    const QString command = QString::fromStdString(reply.command).simplified();
+    if (reply.ok() && command.compare(QLatin1String("LOG VERSION"), Qt::CaseInsensitive) == 0) {
+        const auto identity = model::DeviceIdentity::fromKeyValues(reply.values);
+        if (identity.usable())
+            onIdentityChanged(identity);
+    }
+}
+
+void DeviceWorkspace::onErrorOccurred(const QString &message)
+{
+    m_console->showError(message);
+    Q_EMIT errorReported(message);
+}
+
+QString DeviceWorkspace::statusText() const
+{
+    QStringList parts;
+    for (const QLabel *label : {m_stateLabel, m_identityLabel, m_statsLabel})
+        if (!label->text().isEmpty())
+            parts << label->text();
+    return parts.join(QStringLiteral(" | "));
+}
+
+void DeviceWorkspace::updateStateLabel()
+{
+    QString text;
+    switch (m_state) {
+    case SessionState::Closed: text = tr("Not connected"); break;
+    case SessionState::Opening: text = tr("Opening %1…").arg(m_target); break;
+    case SessionState::Detecting: text = tr("Detecting the baud rate of %1…").arg(m_target); break;
+    case SessionState::Connected: text = tr("Connected"); break;
+    case SessionState::Disconnected: text = tr("Connection to %1 lost").arg(m_target); break;
+    case SessionState::Reconnecting:
+        text = tr("Disconnected from %1 — waiting for the device to come back").arg(m_target);
+        break;
+    case SessionState::Failed: text = tr("Could not connect to %1").arg(m_target); break;
+    }
+    m_stateLabel->setText(text);
+    m_stateLabel->setToolTip(m_target.isEmpty() ? m_stateDetail : m_target + QLatin1Char('\n') + m_stateDetail);
+}
+
+void DeviceWorkspace::updateIdentityLabel()
+{
+    QStringList parts;
+    if (m_identity) {
+        if (!m_identity->productName.empty())
+            parts << QString::fromStdString(m_identity->productName);
+        if (m_identity->firmware)
+            parts << tr("firmware %1").arg(QString::fromStdString(m_identity->firmware->toString()));
+        if (!m_identity->serial.empty())
+            parts << tr("SN %1").arg(QString::fromStdString(m_identity->serial));
+    }
+    m_identityLabel->setText(parts.join(QStringLiteral(" · ")));
+    m_identityLabel->setVisible(!parts.isEmpty());
+    if (m_identity) {
+        QStringList tip;
+        tip << tr("Product: %1").arg(QString::fromStdString(m_identity->productName));
+        if (!m_identity->build.empty())
+            tip << tr("Build: %1").arg(QString::fromStdString(m_identity->build));
+        if (m_identity->bootloader)
+            tip << tr("Bootloader: %1").arg(QString::fromStdString(m_identity->bootloader->toString()));
+        m_identityLabel->setToolTip(tip.join(QLatin1Char('\n')));
+    }
+}
+
+void DeviceWorkspace::updateStatsLabel()
+{
+    if (!m_stats || !isBusy()) {
+        m_statsLabel->setText(isBusy() && m_baud > 0 ? tr("%1 baud").arg(m_baud) : QString());
+        m_statsLabel->setVisible(!m_statsLabel->text().isEmpty());
+        return;
+    }
+    const device::SessionStats &s = *m_stats;
+    QStringList parts;
+    const int baud = s.baud > 0 ? s.baud : m_baud;
+    if (baud > 0)
+        parts << tr("%1 baud").arg(baud);
+    QStringList rates;
+    for (const auto &[name, hz] : s.rateByType)
+        if (hz > 0)
+            rates << tr("%1 %2 Hz").arg(QString::fromStdString(name), rateText(hz));
+    parts << (rates.isEmpty() ? tr("no frames") : rates.join(QStringLiteral(", ")));
+    parts << tr("load %1%").arg(qRound(s.linkLoad * 100));
+    parts << tr("CRC errors %1").arg(s.crcErrors);
+    parts << tr("lost %1").arg(s.framesLost);
+    parts << tr("skipped %1 B").arg(s.bytesSkipped);
+    m_statsLabel->setText(parts.join(QStringLiteral(" · ")));
+    m_statsLabel->setVisible(true);
+    m_statsLabel->setToolTip(tr("Received %1 bytes, %2 frames, %3 NMEA sentences.\n"
+                                "Errors: %4 CRC, %5 length, %6 payload, %7 NMEA; %8 bytes skipped.\n"
+                                "Frames lost (gaps in the device time): %9.\n"
+                                "Link load = bytes per second × 10 bits / baud rate.")
+                                 .arg(s.bytesIn)
+                                 .arg(s.frames)
+                                 .arg(s.nmeaSentences)
+                                 .arg(s.crcErrors)
+                                 .arg(s.lengthErrors)
+                                 .arg(s.payloadErrors)
+                                 .arg(s.nmeaErrors)
+                                 .arg(s.bytesSkipped)
+                                 .arg(s.framesLost));
+}
+
+void DeviceWorkspace::createStatusBar()
+{
+    m_stateLabel = new QLabel(this);
+    m_stateLabel->setObjectName(QStringLiteral("stateLabel"));
+    m_identityLabel = new QLabel(this);
+    m_identityLabel->setObjectName(QStringLiteral("identityLabel"));
+    m_statsLabel = new QLabel(this);
+    m_statsLabel->setObjectName(QStringLiteral("statsLabel"));
+    m_flags = new StatusFlagsWidget(this);
+    m_flags->setObjectName(QStringLiteral("statusFlags"));
+    m_flags->setSizePolicy(QSizePolicy::Fixed, QSizePolicy::Preferred);
+    // Narrow windows clip the texts, never the flags.
+    for (QLabel *label : {m_identityLabel, m_statsLabel})
+        label->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
+
+    // Two lines on the left (state and identity; link counters), the flags on the right.
+    auto *info = new QWidget(this);
+    auto *firstLine = new QHBoxLayout;
+    firstLine->setSpacing(16);
+    firstLine->addWidget(m_stateLabel);
+    firstLine->addWidget(m_identityLabel, 1);
+    auto *lines = new QVBoxLayout(info);
+    lines->setContentsMargins(2, 0, 2, 0);
+    lines->setSpacing(0);
+    lines->addLayout(firstLine);
+    lines->addWidget(m_statsLabel);
+    statusBar()->addWidget(info, 1);
+    statusBar()->addPermanentWidget(m_flags);
+    statusBar()->setSizeGripEnabled(false);
+}
+
+void DeviceWorkspace::retranslateUi()
+{
+    m_consoleDock->setWindowTitle(tr("Console"));
+    m_rawDock->setWindowTitle(tr("Raw bytes"));
+    m_commandLogDock->setWindowTitle(tr("Command log"));
+    m_valuesDock->setWindowTitle(tr("Values"));
+    m_attitudeDock->setWindowTitle(tr("3D attitude"));
+    m_configDock->setWindowTitle(tr("Configuration"));
+    m_recordingDock->setWindowTitle(tr("Recording"));
+    m_valuesModel->retranslate();
+    resizeValueColumns();
+    updateStateLabel();
+    updateIdentityLabel();
+    updateStatsLabel();
+}
+
+void DeviceWorkspace::changeEvent(QEvent *event)
+{
+    if (event->type() == QEvent::LanguageChange)
+        retranslateUi();
+    QMainWindow::changeEvent(event);
+}
+
+// The view clock runs only while this workspace is on screen (current tab, window not minimised).
+void DeviceWorkspace::showEvent(QShowEvent *event)
+{
+    QMainWindow::showEvent(event);
+    if (!m_shownOnce) {
+        m_shownOnce = true;
+        // Once the layout has a size: the preset's proportions, or a check of the restored ones.
+        if (m_layoutRestored)
+            repairLayout();
+        else
+            fitDocks();
+    }
+    m_refreshTimer.start();
+    refreshViews();
+}
+
+void DeviceWorkspace::hideEvent(QHideEvent *event)
+{
+    m_refreshTimer.stop();
+    QMainWindow::hideEvent(event);
+}
+
+} // namespace imudesk::ui

@@ -1,0 +1,261 @@
+#pragma once
+// One connected device: its own session (and simulated device, for the simulator
+// entries), live views and counters. The main window shows one workspace per tab.
+// A workspace is a QMainWindow of its own so that its docks (values, console, ...)
+// can be rearranged; the arrangement is saved and restored by the main window.
+//
+// Folder ui/workspace/: the application shell. MainWindow with one DeviceWorkspace per tab, the
+// connection bar, LinkFactory (opens HEC495, Modbus, CAN, simulated and replayed links), the
+// port choice, the tool actions, the preferences and their dialog, window settings, the size of
+// work-place dialogs, the language switcher, the workspace's docks (console, command log, raw
+// bytes, status flags) and the painting helpers shared by self-painted widgets. It mirrors
+// core/device: a workspace holds a device::DeviceSession, or another device::DeviceLink
+// (Hec495Session, ModbusSession, CanSession) attached to it, and, for the simulator entries, a
+// device from core/sim. Its views read the link's SampleStore and RawByteLog on the view clock;
+// the values dock shows models::LatestValuesModel and the command log models::CommandLogModel,
+// each in a QTableView (the console's completer uses a QStringListModel).
+#include "device/device_session.h"
+#include "workspace/preferences.h"
+#include "sim/hipnuc_simulator.h"
+
+#include <QElapsedTimer>
+#include <QHash>
+#include <QMainWindow>
+#include <QPointer>
+#include <QTimer>
+
+#include <functional>
+#include <memory>
+#include <optional>
+
+class QDockWidget;
+class QLabel;
+class QTableView;
+
+namespace imudesk::models {
+class LatestValuesModel;
+}
+namespace imudesk::sim {
+class PtySimulator;
+}
+
+namespace imudesk::ui {
+
+class AttitudeWidget;
+class ChartPanel;
+class CommandLogWidget;
+class ConfigPanel;
+class ConsoleWidget;
+class RecordingControls;
+class RawBytesView;
+class StatusFlagsWidget;
+
+class DeviceWorkspace : public QMainWindow {
+    Q_OBJECT
+public:
+    // Arrangements of the docks for a task (View menu). Monitor: charts, values and the 3D
+    // attitude; Configure: the settings table and the console; Calibrate: values, a large
+    // attitude view and the console; Analyse: charts, values, raw bytes and the command log.
+    // The panels below the charts (console, raw bytes, command log, recording) start closed
+    // and open on demand; a link that has no use for them (Modbus, CAN, HEC495, replay)
+    // does not offer them.
+    enum class LayoutPreset { Monitor, Configure, Calibrate, Analyse };
+    static constexpr int kPresetCount = 4;
+    static QString presetName(LayoutPreset preset); // translated, with a mnemonic
+    static QString presetKey(LayoutPreset preset);  // "monitor", for settings
+    static std::optional<LayoutPreset> presetFromKey(const QString &key);
+
+    static constexpr int kRefreshIntervalMs = 30; // default 33 Hz view clock (<= 60 Hz, >= 30 charts/s)
+    static constexpr int kValuesIntervalMs = 100; // the values table and status flags: at most 10 Hz
+    static constexpr size_t kMaxSamplesPerTick = 20000; // a stalled GUI catches up without a burst
+    static constexpr int kCommandTimeoutMs = 1000;
+
+    explicit DeviceWorkspace(QWidget *parent = nullptr);
+    ~DeviceWorkspace() override;
+
+    // Opens a serial port (baud 0 = auto-detect).
+    void connectPort(const QString &port, int baud);
+    // Starts a simulated device on a pseudo-terminal and connects to it like to hardware.
+    bool connectSimulated(const sim::SimOptions &options, int baud, QString *error = nullptr);
+    // Shows another family's session (a HEC495, a Modbus or CAN device, a replayed capture)
+    // in this workspace's live views in place of the HiPNUC serial session; the link should
+    // be opened by the caller after this returns. `keepAlive` holds what the link needs
+    // (e.g. its simulator) and is released when the link closes or fails. False while busy.
+    bool attachLink(std::unique_ptr<device::DeviceLink> link, const QString &target,
+                    std::shared_ptr<void> keepAlive = {});
+    // The link the views show: the serial session unless another link is attached.
+    device::DeviceLink &link() { return m_other ? *m_other : static_cast<device::DeviceLink &>(m_session); }
+    const device::DeviceLink &link() const
+    {
+        return m_other ? *m_other : static_cast<const device::DeviceLink &>(m_session);
+    }
+    bool hasAttachedLink() const { return m_other != nullptr; }
+    // Where a link's dock goes: as a tab in front of the 3D attitude (a view that replaces it,
+    // the compass dial), as a tab behind the values (settings, registers: the values stay in
+    // front), or below the charts (monitors and transport controls).
+    enum class LinkDockPlace { OverAttitude, BehindValues, Below };
+    // A dock that belongs to the attached link (register browser, CAN monitor, replay
+    // controls, ...): shown while the link is attached, deleted with it.
+    void addLinkDock(QDockWidget *dock, LinkDockPlace place);
+    QList<QDockWidget *> linkDocks() const { return m_linkDocks; }
+    // The HiPNUC serial link's configuration panel and recording controls.
+    ConfigPanel *configPanel() const { return m_configPanel; }
+    QDockWidget *configDock() const { return m_configDock; }
+    RecordingControls *recordingControls() const { return m_recording; }
+    QDockWidget *recordingDock() const { return m_recordingDock; }
+    void disconnectDevice();
+    bool isBusy() const;
+    // Units, attitude frame, refresh rate, chart history and auto-reconnect.
+    void applyPreferences(const Preferences &prefs);
+
+    // Sends a command as typed in the console (shown there with its reply).
+    void sendConsoleCommand(const QString &text);
+
+    device::DeviceSession &session() { return m_session; }
+    const device::DeviceSession &session() const { return m_session; }
+    sim::PtySimulator *simulator() const { return m_simulator.get(); }
+    // Frees the serial port for another user (the firmware update), keeping a simulated module
+    // running behind it; returns the port. reclaimPort() connects this tab to it again.
+    QString releasePort();
+    void reclaimPort(const QString &port, int baud);
+    device::SessionState state() const { return m_state; }
+    // What the user connected to ("/dev/ttyUSB0", "Simulated HI14 (firmware 1.7.1)").
+    QString target() const { return m_target; }
+    const std::optional<model::DeviceIdentity> &identity() const { return m_identity; }
+    int baud() const { return m_baud; }
+    // A short name for the tab: product and port, or "New connection".
+    QString title() const;
+
+    ConsoleWidget *console() const { return m_console; }
+    ChartPanel *chartPanel() const { return m_charts; }
+    AttitudeWidget *attitudeWidget() const { return m_attitude; }
+    RawBytesView *rawBytesView() const { return m_rawView; }
+    CommandLogWidget *commandLog() const { return m_commandLog; }
+    QTableView *valuesView() const { return m_valuesView; }
+    models::LatestValuesModel *valuesModel() const { return m_valuesModel; }
+    StatusFlagsWidget *statusFlags() const { return m_flags; }
+    // The texts of the status bar's labels, joined by " | ".
+    QString statusText() const;
+    bool isRefreshing() const { return m_refreshTimer.isActive(); }
+    // The dock toggles for the View menu.
+    QList<QAction *> dockActions() const;
+
+    QByteArray saveLayout() const;
+    bool restoreLayout(const QByteArray &state);
+    // Rearranges the docks for a task and sizes them for this workspace's size.
+    void applyPreset(LayoutPreset preset);
+    LayoutPreset preset() const { return m_preset; }
+    // Checks the arrangement against the workspace's size and content (a dock narrower than
+    // its table, an attitude view or chart area squeezed to a sliver, a floating dock off
+    // screen) and repairs it; returns what it repaired (empty when nothing was wrong).
+    // Runs by itself on the first show after restoreLayout().
+    QStringList repairLayout();
+    // The width the values table needs to show every column in full.
+    // The height the values dock needs for every row it shows, without a scroll bar.
+    int valuesTableHeight() const;
+    int valuesTableWidth() const;
+    // Docks, for the View menu, the presets and tests.
+    QDockWidget *valuesDock() const { return m_valuesDock; }
+    QDockWidget *attitudeDock() const { return m_attitudeDock; }
+    QDockWidget *consoleDock() const { return m_consoleDock; }
+    QDockWidget *rawBytesDock() const { return m_rawDock; }
+    QDockWidget *commandLogDock() const { return m_commandLogDock; }
+    // Whether the current link has a use for `dock` (the HiPNUC serial panels are not
+    // offered for other links).
+    bool offersDock(const QDockWidget *dock) const;
+    // Shows a dock the link offers and brings it to the front.
+    void openDock(QDockWidget *dock);
+
+    void refreshViews();
+
+Q_SIGNALS:
+    void stateChanged(imudesk::device::SessionState state);
+    void titleChanged(const QString &title);
+    // A session error for the user (already logged in the console); the main window shows it.
+    void errorReported(const QString &message);
+
+protected:
+    void changeEvent(QEvent *event) override;
+    void showEvent(QShowEvent *event) override;
+    void hideEvent(QHideEvent *event) override;
+    void resizeEvent(QResizeEvent *event) override;
+    bool event(QEvent *event) override;
+
+private:
+    void createStatusBar();
+    void fitDocks();
+    QList<QDockWidget *> serialOnlyDocks() const;
+    void retranslateUi();
+    void resizeValueColumns();
+    void stopSimulator();
+    // Back to the serial session (drops an attached link); the views start afresh.
+    void detachLink();
+    void resetViews();
+
+    void onStateChanged(device::SessionState state, const QString &detail);
+    void onIdentityChanged(const model::DeviceIdentity &identity);
+    void onStatsUpdated(const device::SessionStats &stats);
+    void onBaudDetected(int baud);
+    void onCommandFinished(quint64 id, const protocol::hipnuc::AsciiReply &reply);
+    void onErrorOccurred(const QString &message);
+
+    void updateStateLabel();
+    void updateIdentityLabel();
+    void updateStatsLabel();
+
+    // Declared before the session: the session (and its port) goes first on destruction.
+    std::unique_ptr<sim::PtySimulator> m_simulator;
+    device::DeviceSession m_session;
+    // An attached link of another family (declared after its keep-alive: it goes first).
+    std::shared_ptr<void> m_otherKeepAlive;
+    std::unique_ptr<device::DeviceLink> m_other;
+
+    models::LatestValuesModel *m_valuesModel = nullptr;
+    QTableView *m_valuesView = nullptr;
+    QDockWidget *m_valuesDock = nullptr;
+    ChartPanel *m_charts = nullptr;
+    AttitudeWidget *m_attitude = nullptr;
+    QDockWidget *m_attitudeDock = nullptr;
+    LayoutPreset m_preset = LayoutPreset::Monitor;
+    bool m_layoutRestored = false;
+    bool m_shownOnce = false;
+    // The user dragged a separator: the preset's proportions no longer follow the window size.
+    bool m_userSized = false;
+    QElapsedTimer m_valuesClock; // when the values table was last refreshed
+    bool m_keepSimulator = false; // the port is lent out (firmware update): the simulator stays
+    int m_valuesColumnsWidth = 0; // what the values table's columns need, without the stretch
+    uint64_t m_chartSeq = 0; // next sample of the store the charts have not seen
+    ConsoleWidget *m_console = nullptr;
+    QDockWidget *m_consoleDock = nullptr;
+    RawBytesView *m_rawView = nullptr;
+    QDockWidget *m_rawDock = nullptr;
+    CommandLogWidget *m_commandLog = nullptr;
+    QDockWidget *m_commandLogDock = nullptr;
+    StatusFlagsWidget *m_flags = nullptr;
+    ConfigPanel *m_configPanel = nullptr;
+    QDockWidget *m_configDock = nullptr;
+    RecordingControls *m_recording = nullptr;
+    QDockWidget *m_recordingDock = nullptr;
+    QList<QDockWidget *> m_linkDocks;
+    QHash<QDockWidget *, LinkDockPlace> m_linkDockPlaces;
+    void placeLinkDock(QDockWidget *dock);
+    // The preset's proportions follow the window's size: shown, not restored from the user's
+    // settings, and no separator dragged by the user since.
+    bool followsWindow() const { return m_shownOnce && !m_userSized && !m_layoutRestored; }
+    QLabel *m_stateLabel = nullptr;
+    QLabel *m_identityLabel = nullptr;
+    QLabel *m_statsLabel = nullptr;
+
+    QTimer m_refreshTimer;
+    bool m_autoReconnect = true;
+    quint64 m_shownTotal = ~quint64(0);
+
+    device::SessionState m_state = device::SessionState::Closed;
+    QString m_stateDetail;
+    QString m_target;
+    std::optional<model::DeviceIdentity> m_identity;
+    std::optional<device::SessionStats> m_stats;
+    int m_baud = 0;
+};
+
+} // namespace imudesk::ui

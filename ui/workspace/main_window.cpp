@@ -1,0 +1,624 @@
+#include "workspace/main_window.h"
+
+#include "device/family_detector.h"
+#include "workspace/link_factory.h"
+#include "workspace/preferences_dialog.h"
+#include "workspace/tool_actions.h"
+
+#include "charts/chart_panel.h"
+#include "charts/comparison_chart.h"
+#include "workspace/connection_bar.h"
+#include "workspace/console_widget.h"
+#include "workspace/device_workspace.h"
+
+#include <QAction>
+#include <QActionGroup>
+#include <QScreen>
+#include <QDockWidget>
+#include <QApplication>
+#include <QEvent>
+#include <QFileDialog>
+#include <QImageWriter>
+#include <QKeySequence>
+#include <QMenu>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QTabBar>
+#include <QTabWidget>
+#include <QThread>
+#include <QToolBar>
+
+#include <memory>
+
+namespace imudesk::ui {
+
+using device::SessionState;
+
+MainWindow::MainWindow(const WindowSettings &settings, QWidget *parent) : QMainWindow(parent)
+{
+    setObjectName(QStringLiteral("mainWindow"));
+
+    m_tabs = new QTabWidget(this);
+    m_tabs->setObjectName(QStringLiteral("workspaceTabs"));
+    m_tabs->setDocumentMode(true);
+    m_tabs->setTabsClosable(true);
+    m_tabs->setMovable(true);
+    setCentralWidget(m_tabs);
+
+    // Top: the connection bar, acting on the current workspace.
+    m_connectionBar = new ConnectionBar(this);
+    m_connectionBar->setObjectName(QStringLiteral("connectionBar"));
+    auto *toolBar = new QToolBar(this);
+    toolBar->setObjectName(QStringLiteral("connectionToolBar"));
+    toolBar->setMovable(false);
+    toolBar->setFloatable(false);
+    toolBar->toggleViewAction()->setVisible(false);
+    toolBar->addWidget(m_connectionBar);
+    addToolBar(Qt::TopToolBarArea, toolBar);
+
+    // Bottom, hidden at first: the same channel of every connected device on one time axis.
+    m_comparison = new ComparisonChart(this);
+    m_comparison->setObjectName(QStringLiteral("comparisonChart"));
+    m_comparisonDock = new QDockWidget(this);
+    m_comparisonDock->setObjectName(QStringLiteral("comparisonDock"));
+    m_comparisonDock->setWidget(m_comparison);
+    addDockWidget(Qt::BottomDockWidgetArea, m_comparisonDock);
+    m_comparisonDock->hide();
+    m_comparisonTimer.setInterval(50);
+    connect(&m_comparisonTimer, &QTimer::timeout, m_comparison, &ComparisonChart::refresh);
+    connect(m_comparisonDock, &QDockWidget::visibilityChanged, this, [this](bool visible) {
+        if (visible)
+            m_comparisonTimer.start();
+        else
+            m_comparisonTimer.stop();
+    });
+
+    createActions();
+    createMenus();
+
+    connect(m_connectionBar, &ConnectionBar::connectRequested, this, &MainWindow::connectSelected);
+    connect(m_connectionBar, &ConnectionBar::disconnectRequested, this, &MainWindow::disconnectDevice);
+    connect(m_tabs, &QTabWidget::currentChanged, this, &MainWindow::onCurrentChanged);
+    connect(m_tabs, &QTabWidget::tabCloseRequested, this, &MainWindow::closeWorkspace);
+
+    restoreSettings(settings);
+    newWorkspace();
+    retranslateUi();
+}
+
+MainWindow::~MainWindow()
+{
+    // A family probe still listening finishes its port (a few seconds at most) before the
+    // window goes; its result is not wanted any more.
+    for (QThread *probe : std::as_const(m_probes)) {
+        probe->disconnect(this);
+        probe->wait();
+        delete probe;
+    }
+    // Workspaces close their ports (and stop their simulators) as they go.
+    m_tabs->disconnect(this);
+    m_comparisonTimer.stop();
+    m_comparison->setSources({}); // the histories belong to the workspaces
+}
+
+DeviceWorkspace *MainWindow::newWorkspace()
+{
+    auto *ws = new DeviceWorkspace(m_tabs);
+    ws->applyPreset(m_preset);
+    ws->restoreLayout(m_workspaceLayout);
+    ws->applyPreferences(m_prefs);
+    const int index = m_tabs->addTab(ws, ws->title());
+    connect(ws, &DeviceWorkspace::titleChanged, this, [this, ws](const QString &title) {
+        const int i = m_tabs->indexOf(ws);
+        if (i >= 0) {
+            m_tabs->setTabText(i, title);
+            m_tabs->setTabToolTip(i, title);
+        }
+        updateComparisonSources();
+        if (ws == currentWorkspace()) {
+            updateTitle();
+            m_connectionBar->setConnectedTarget(ws->target());
+        }
+    });
+    connect(ws, &DeviceWorkspace::stateChanged, this, [this, ws](SessionState state) {
+        if (ws != currentWorkspace())
+            return;
+        m_connectionBar->setSessionState(state);
+        updateActions();
+        updateTitle();
+    });
+    connect(ws, &DeviceWorkspace::errorReported, this, &MainWindow::presentError);
+    m_tabs->setCurrentIndex(index);
+    m_tabs->tabBar()->setVisible(m_tabs->count() > 1);
+    updateComparisonSources();
+    return ws;
+}
+
+DeviceWorkspace *MainWindow::currentWorkspace() const
+{
+    return qobject_cast<DeviceWorkspace *>(m_tabs->currentWidget());
+}
+
+int MainWindow::workspaceCount() const
+{
+    return m_tabs->count();
+}
+
+DeviceWorkspace *MainWindow::workspace(int index) const
+{
+    return qobject_cast<DeviceWorkspace *>(m_tabs->widget(index));
+}
+
+void MainWindow::closeWorkspace(int index)
+{
+    DeviceWorkspace *ws = workspace(index);
+    if (!ws)
+        return;
+    m_workspaceLayout = ws->saveLayout();
+    m_tabs->removeTab(index);
+    m_comparison->setSources({}); // before the history goes
+    delete ws; // closes its port
+    updateComparisonSources();
+    if (m_tabs->count() == 0)
+        newWorkspace();
+    m_tabs->tabBar()->setVisible(m_tabs->count() > 1);
+}
+
+DeviceWorkspace *MainWindow::freeWorkspace()
+{
+    DeviceWorkspace *ws = currentWorkspace();
+    return ws && !ws->isBusy() ? ws : newWorkspace();
+}
+
+WindowSettings MainWindow::windowSettings() const
+{
+    WindowSettings s;
+    s.geometry = saveGeometry();
+    s.windowState = saveState(WindowSettings::kVersion);
+    s.workspaceState = currentWorkspace() ? currentWorkspace()->saveLayout() : m_workspaceLayout;
+    s.preset = DeviceWorkspace::presetKey(m_preset);
+    s.port = m_connectionBar->selectedPort().key();
+    s.baud = m_connectionBar->selectedBaud();
+    return s;
+}
+
+void MainWindow::setPreferences(const Preferences &prefs)
+{
+    m_prefs = prefs;
+    for (int i = 0; i < workspaceCount(); ++i)
+        workspace(i)->applyPreferences(prefs);
+}
+
+PreferencesDialog *MainWindow::openPreferences()
+{
+    auto *dialog = new PreferencesDialog(m_prefs, this);
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    connect(dialog, &QDialog::accepted, this, [this, dialog] {
+        const Preferences prefs = dialog->preferences();
+        if (prefs == m_prefs)
+            return;
+        setPreferences(prefs);
+        Q_EMIT preferencesChanged(prefs);
+    });
+    dialog->open();
+    return dialog;
+}
+
+void MainWindow::restoreSettings(const WindowSettings &settings)
+{
+    if (settings.geometry.isEmpty() || !restoreGeometry(settings.geometry))
+        resize(1280, 860);
+    fitToScreen();
+    if (!settings.windowState.isEmpty())
+        restoreState(settings.windowState, WindowSettings::kVersion);
+    m_workspaceLayout = settings.workspaceState;
+    m_preset = DeviceWorkspace::presetFromKey(settings.preset).value_or(DeviceWorkspace::LayoutPreset::Monitor);
+    const PortChoice port = PortChoice::fromKey(settings.port);
+    if (port.isValid())
+        m_connectionBar->selectPort(port);
+    m_connectionBar->selectBaud(settings.baud);
+}
+
+bool MainWindow::fitToScreen()
+{
+    const QScreen *screen = this->screen();
+    if (!screen)
+        return false;
+    const QRect avail = screen->availableGeometry();
+    if (isMaximized() || isFullScreen())
+        return false;
+    // The frame (title bar, borders) is not known before the first show: keep a margin for it.
+    const QSize room = avail.size() - QSize(16, 48);
+    const QSize fitted = size().boundedTo(room);
+    bool changed = false;
+    if (fitted != size()) {
+        resize(fitted);
+        changed = true;
+    }
+    const QRect g = frameGeometry();
+    if (!avail.contains(g.topLeft()) || !avail.contains(QRect(g.topLeft(), fitted).bottomRight())) {
+        move(avail.topLeft() + QPoint(std::max(0, (room.width() - fitted.width()) / 2),
+                                      std::max(0, (room.height() - fitted.height()) / 2)));
+        changed = true;
+    }
+    // A small screen (a 1366x768 laptop): use all of it.
+    if (fitted.width() >= room.width() - 8 || fitted.height() >= room.height() - 8)
+        setWindowState(windowState() | Qt::WindowMaximized);
+    return changed;
+}
+
+void MainWindow::applyLayoutPreset(DeviceWorkspace::LayoutPreset preset)
+{
+    m_preset = preset;
+    for (int i = 0; i < m_presetActions.size(); ++i)
+        m_presetActions[i]->setChecked(i == int(preset));
+    if (DeviceWorkspace *ws = currentWorkspace()) {
+        ws->applyPreset(preset);
+        m_workspaceLayout = ws->saveLayout();
+    }
+}
+
+void MainWindow::resetLayout()
+{
+    m_workspaceLayout.clear();
+    applyLayoutPreset(m_preset);
+}
+
+void MainWindow::connectPort(const QString &port, int baud)
+{
+    m_connectionBar->selectPort(PortChoice::serial(port));
+    m_connectionBar->selectBaud(baud);
+    if (baud != 0) {
+        freeWorkspace()->connectPort(port, baud);
+        return;
+    }
+    // Baud "Auto": first tell a HiPNUC module from a HEC495 compass (FamilyDetector listens,
+    // then asks each family at each rate), off the GUI thread; then open the right session.
+    QPointer<DeviceWorkspace> ws = freeWorkspace();
+    m_connectionBar->setSessionState(SessionState::Detecting);
+    m_connectAction->setEnabled(false);
+    // A thread this window owns and waits for (never a detached one): the result comes back
+    // on the GUI thread through `finished`, and the window outlives the probe.
+    auto result = std::make_shared<device::FamilyDetector::Result>();
+    QThread *probe = QThread::create([port, result] { *result = device::FamilyDetector::detect(port); });
+    probe->setObjectName(QStringLiteral("imudesk-family-probe"));
+    m_probes.push_back(probe);
+    connect(probe, &QThread::finished, this, [this, probe, ws, port, result] {
+        m_probes.removeOne(probe);
+        probe->deleteLater();
+        if (!ws)
+            return;
+        const device::FamilyDetector::Result &r = *result;
+        if (r.family == device::FamilyDetector::Family::Hec495) {
+            QString error;
+            if (!LinkFactory::connectHec495(*ws, port, r.baud, std::max(0, r.address), &error))
+                presentError(error);
+        } else {
+            // A HiPNUC module at the rate found, or nothing found: the session's own
+            // detection then says what it tried and what to check.
+            ws->connectPort(port, r.family == device::FamilyDetector::Family::Hipnuc ? r.baud : 0);
+        }
+        if (ws == currentWorkspace())
+            m_connectionBar->setSessionState(ws->state());
+        updateActions();
+    });
+    probe->start();
+}
+
+bool MainWindow::connectSimulated(const sim::SimOptions &options, int baud, QString *error)
+{
+    const QString model = QString::fromStdString(options.model);
+    const QString firmware = QString::fromStdString(options.firmware);
+    m_connectionBar->selectPort(PortChoice::simulated(model, firmware));
+    m_connectionBar->selectBaud(baud);
+    return freeWorkspace()->connectSimulated(options, baud, error);
+}
+
+bool MainWindow::connectSimulatedHec495(QString *error)
+{
+    m_connectionBar->selectPort(PortChoice::simulated(QStringLiteral("HEC495"), QString()));
+    return LinkFactory::connectSimulatedHec495(*freeWorkspace(), m_simMotion, error);
+}
+
+void MainWindow::disconnectDevice()
+{
+    if (DeviceWorkspace *ws = currentWorkspace())
+        ws->disconnectDevice();
+}
+
+void MainWindow::connectSelected()
+{
+    const PortChoice choice = m_connectionBar->selectedPort();
+    const int baud = m_connectionBar->selectedBaud();
+    switch (choice.kind) {
+    case PortChoice::Kind::Serial: connectPort(choice.port, baud); break;
+    case PortChoice::Kind::Simulated: {
+        if (choice.model == QLatin1String("HEC495")) {
+            QString error;
+            if (!connectSimulatedHec495(&error))
+                presentError(error);
+            break;
+        }
+        sim::SimOptions options;
+        options.model = choice.model.toStdString();
+        options.firmware = choice.firmware.toStdString();
+        options.motion = m_simMotion;
+        QString error;
+        if (!connectSimulated(options, baud, &error))
+            presentError(error);
+        break;
+    }
+    case PortChoice::Kind::None: presentError(tr("Choose a port first.")); break;
+    }
+}
+
+device::DeviceSession &MainWindow::session() const
+{
+    return currentWorkspace()->session();
+}
+
+sim::PtySimulator *MainWindow::simulator() const
+{
+    return currentWorkspace()->simulator();
+}
+
+ConsoleWidget *MainWindow::console() const
+{
+    return currentWorkspace()->console();
+}
+
+QTableView *MainWindow::valuesView() const
+{
+    return currentWorkspace()->valuesView();
+}
+
+models::LatestValuesModel *MainWindow::valuesModel() const
+{
+    return currentWorkspace()->valuesModel();
+}
+
+StatusFlagsWidget *MainWindow::statusFlags() const
+{
+    return currentWorkspace()->statusFlags();
+}
+
+QString MainWindow::statusText() const
+{
+    return currentWorkspace()->statusText();
+}
+
+bool MainWindow::isRefreshing() const
+{
+    return currentWorkspace()->isRefreshing();
+}
+
+bool MainWindow::saveScreenshot(const QString &path, QString *error)
+{
+    const QPixmap pixmap = grab();
+    QImageWriter writer(path, "png");
+    if (!writer.write(pixmap.toImage())) {
+        if (error)
+            *error = tr("Could not save the screenshot to %1: %2").arg(path, writer.errorString());
+        return false;
+    }
+    return true;
+}
+
+void MainWindow::presentError(const QString &message)
+{
+    if (m_errorPresenter) {
+        m_errorPresenter(message);
+        return;
+    }
+    // Never block: a non-modal box, reused while it is open.
+    if (m_errorBox) {
+        constexpr qsizetype kMaxText = 4000;
+        if (m_errorBox->text().size() < kMaxText)
+            m_errorBox->setText(m_errorBox->text() + QStringLiteral("\n\n") + message);
+        return;
+    }
+    auto *box = new QMessageBox(QMessageBox::Warning, tr("ImuDesk"), message, QMessageBox::Ok, this);
+    box->setAttribute(Qt::WA_DeleteOnClose);
+    box->setWindowModality(Qt::NonModal);
+    box->show();
+    m_errorBox = box;
+}
+
+void MainWindow::showAbout()
+{
+    QMessageBox::about(this, tr("About ImuDesk"),
+                       tr("<h3>ImuDesk %1</h3><p>A bench tool for HiPNUC IMU modules: live values, the ASCII "
+                          "command console and simulated devices.</p><p>Built with Qt %2.</p>")
+                           .arg(QCoreApplication::applicationVersion(), QString::fromLatin1(qVersion())));
+}
+
+void MainWindow::onCurrentChanged()
+{
+    DeviceWorkspace *ws = currentWorkspace();
+    if (!ws)
+        return;
+    m_connectionBar->setSessionState(ws->state());
+    m_connectionBar->setConnectedTarget(ws->target());
+    rebuildViewMenu();
+    updateActions();
+    updateTitle();
+}
+
+void MainWindow::updateTitle()
+{
+    const QString base = tr("ImuDesk – IMU bench tool");
+    const DeviceWorkspace *ws = currentWorkspace();
+    if (ws && ws->isBusy() && ws->identity() && !ws->identity()->productName.empty())
+        setWindowTitle(tr("%1 – %2").arg(QString::fromStdString(ws->identity()->productName), base));
+    else
+        setWindowTitle(base);
+}
+
+void MainWindow::updateActions()
+{
+    const DeviceWorkspace *ws = currentWorkspace();
+    const bool busy = ws && ws->isBusy();
+    m_connectAction->setEnabled(!busy);
+    m_disconnectAction->setEnabled(busy);
+    m_versionAction->setEnabled(ws && ws->state() == SessionState::Connected && !ws->hasAttachedLink());
+    m_tools->update(ws);
+}
+
+void MainWindow::rebuildViewMenu()
+{
+    m_viewMenu->clear();
+    m_viewMenu->addActions(m_presetActions);
+    m_viewMenu->addAction(m_resetLayoutAction);
+    m_viewMenu->addSeparator();
+    if (DeviceWorkspace *ws = currentWorkspace())
+        m_viewMenu->addActions(ws->dockActions());
+    m_viewMenu->addSeparator();
+    m_viewMenu->addAction(m_comparisonDock->toggleViewAction());
+}
+
+void MainWindow::updateComparisonSources()
+{
+    std::vector<ComparisonChart::Source> sources;
+    for (int i = 0; i < m_tabs->count(); ++i)
+        if (DeviceWorkspace *ws = workspace(i))
+            sources.emplace_back(ws->title(), &ws->chartPanel()->history());
+    m_comparison->setSources(std::move(sources));
+}
+
+void MainWindow::createActions()
+{
+    auto *presetGroup = new QActionGroup(this);
+    for (int i = 0; i < DeviceWorkspace::kPresetCount; ++i) {
+        auto *action = new QAction(this);
+        action->setObjectName(QStringLiteral("layoutPreset_%1").arg(DeviceWorkspace::presetKey(DeviceWorkspace::LayoutPreset(i))));
+        action->setCheckable(true);
+        action->setShortcut(QKeySequence(Qt::ALT | Qt::SHIFT | Qt::Key(Qt::Key_1 + i)));
+        presetGroup->addAction(action);
+        connect(action, &QAction::triggered, this, [this, i] { applyLayoutPreset(DeviceWorkspace::LayoutPreset(i)); });
+        m_presetActions << action;
+    }
+    m_resetLayoutAction = new QAction(this);
+    m_resetLayoutAction->setObjectName(QStringLiteral("resetLayoutAction"));
+    connect(m_resetLayoutAction, &QAction::triggered, this, &MainWindow::resetLayout);
+
+    m_newTabAction = new QAction(this);
+    m_newTabAction->setObjectName(QStringLiteral("newTabAction"));
+    m_newTabAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_T));
+    connect(m_newTabAction, &QAction::triggered, this, [this] { newWorkspace(); });
+
+    m_closeTabAction = new QAction(this);
+    m_closeTabAction->setObjectName(QStringLiteral("closeTabAction"));
+    m_closeTabAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_W));
+    connect(m_closeTabAction, &QAction::triggered, this, [this] { closeWorkspace(m_tabs->currentIndex()); });
+
+    m_screenshotAction = new QAction(this);
+    m_screenshotAction->setObjectName(QStringLiteral("screenshotAction"));
+    m_screenshotAction->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_S));
+    connect(m_screenshotAction, &QAction::triggered, this, [this] {
+        const QString path = QFileDialog::getSaveFileName(this, tr("Save screenshot"), QStringLiteral("imudesk.png"),
+                                                          tr("PNG images (*.png)"));
+        QString error;
+        if (!path.isEmpty() && !saveScreenshot(path, &error))
+            presentError(error);
+    });
+
+    m_quitAction = new QAction(this);
+    m_quitAction->setObjectName(QStringLiteral("quitAction"));
+    m_quitAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_Q));
+    m_quitAction->setMenuRole(QAction::QuitRole);
+    connect(m_quitAction, &QAction::triggered, this, &QWidget::close);
+
+    m_connectAction = new QAction(this);
+    m_connectAction->setObjectName(QStringLiteral("connectAction"));
+    m_connectAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_K));
+    connect(m_connectAction, &QAction::triggered, this, &MainWindow::connectSelected);
+
+    m_disconnectAction = new QAction(this);
+    m_disconnectAction->setObjectName(QStringLiteral("disconnectAction"));
+    m_disconnectAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_D));
+    connect(m_disconnectAction, &QAction::triggered, this, &MainWindow::disconnectDevice);
+
+    m_versionAction = new QAction(this);
+    m_versionAction->setObjectName(QStringLiteral("versionAction"));
+    connect(m_versionAction, &QAction::triggered, this, [this] { console()->submit(QStringLiteral("LOG VERSION")); });
+
+    m_preferencesAction = new QAction(this);
+    m_preferencesAction->setObjectName(QStringLiteral("preferencesAction"));
+    m_preferencesAction->setMenuRole(QAction::PreferencesRole);
+    m_preferencesAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_Comma));
+    connect(m_preferencesAction, &QAction::triggered, this, &MainWindow::openPreferences);
+
+    m_aboutAction = new QAction(this);
+    m_aboutAction->setObjectName(QStringLiteral("aboutAction"));
+    m_aboutAction->setMenuRole(QAction::AboutRole);
+    connect(m_aboutAction, &QAction::triggered, this, &MainWindow::showAbout);
+}
+
+void MainWindow::createMenus()
+{
+    m_fileMenu = menuBar()->addMenu(QString());
+    m_fileMenu->addAction(m_newTabAction);
+    m_fileMenu->addAction(m_closeTabAction);
+    m_fileMenu->addSeparator();
+    m_fileMenu->addAction(m_screenshotAction);
+    m_fileMenu->addAction(m_preferencesAction);
+    m_fileMenu->addSeparator();
+    m_fileMenu->addAction(m_quitAction);
+    m_deviceMenu = menuBar()->addMenu(QString());
+    m_deviceMenu->addAction(m_connectAction);
+    m_deviceMenu->addAction(m_disconnectAction);
+    m_deviceMenu->addSeparator();
+    m_deviceMenu->addAction(m_versionAction);
+    m_viewMenu = menuBar()->addMenu(QString());
+    m_calibrateMenu = menuBar()->addMenu(QString());
+    m_toolsMenu = menuBar()->addMenu(QString());
+    m_tools = new ToolActions(this);
+    m_tools->addToMenus(m_fileMenu, m_deviceMenu, m_calibrateMenu, m_toolsMenu);
+    m_helpMenu = menuBar()->addMenu(QString());
+    m_helpMenu->addAction(m_aboutAction);
+}
+
+void MainWindow::retranslateUi()
+{
+    m_fileMenu->setTitle(tr("&File"));
+    m_deviceMenu->setTitle(tr("&Device"));
+    m_viewMenu->setTitle(tr("&View"));
+    m_helpMenu->setTitle(tr("&Help"));
+    m_newTabAction->setText(tr("&New connection tab"));
+    m_newTabAction->setStatusTip(tr("Open a tab for another device; each tab has its own connection and views"));
+    m_closeTabAction->setText(tr("&Close tab"));
+    m_screenshotAction->setText(tr("Save &screenshot…"));
+    m_quitAction->setText(tr("&Quit"));
+    m_connectAction->setText(tr("&Connect"));
+    m_connectAction->setStatusTip(tr("Connect to the port chosen in the connection bar"));
+    m_disconnectAction->setText(tr("&Disconnect"));
+    m_versionAction->setText(tr("Send LOG &VERSION"));
+    m_versionAction->setStatusTip(tr("Ask the device for its product name, firmware and serial number"));
+    m_aboutAction->setText(tr("&About ImuDesk"));
+    m_preferencesAction->setText(tr("&Preferences…"));
+    for (int i = 0; i < m_presetActions.size(); ++i) {
+        const auto preset = DeviceWorkspace::LayoutPreset(i);
+        m_presetActions[i]->setText(tr("Layout: %1").arg(DeviceWorkspace::presetName(preset)));
+        m_presetActions[i]->setChecked(preset == m_preset);
+    }
+    m_presetActions[0]->setStatusTip(tr("Charts, the values table and the 3D attitude"));
+    m_presetActions[1]->setStatusTip(tr("The device's settings beside the charts"));
+    m_presetActions[2]->setStatusTip(tr("A large 3D attitude view and the console"));
+    m_presetActions[3]->setStatusTip(tr("Charts, the values, the raw bytes and the command log"));
+    m_resetLayoutAction->setText(tr("&Reset layout"));
+    m_resetLayoutAction->setStatusTip(tr("Put every panel of this tab back where the chosen layout has it"));
+    m_tools->retranslate();
+    if (auto *bar = findChild<QToolBar *>(QStringLiteral("connectionToolBar")))
+        bar->setWindowTitle(tr("Connection"));
+    m_comparisonDock->setWindowTitle(tr("Compare devices"));
+    updateTitle();
+}
+
+void MainWindow::changeEvent(QEvent *event)
+{
+    if (event->type() == QEvent::LanguageChange && m_fileMenu)
+        retranslateUi();
+    QMainWindow::changeEvent(event);
+}
+
+} // namespace imudesk::ui

@@ -1,0 +1,166 @@
+#pragma once
+// ImuDesk's main window: the connection bar on top and one DeviceWorkspace per
+// connected device in tabs (its own session, views, console and counters). Menus act
+// on the current workspace. It shows session errors without ever blocking.
+#include "device/device_session.h"
+#include "sim/hipnuc_simulator.h"
+#include "workspace/preferences.h"
+#include "workspace/window_settings.h"
+#include "workspace/device_workspace.h"
+
+#include <QMainWindow>
+#include <QList>
+#include <QPointer>
+#include <QTimer>
+
+#include <functional>
+
+class QAction;
+class QDockWidget;
+class QMenu;
+class QMessageBox;
+class QTabWidget;
+class QTableView;
+class QThread;
+
+namespace imudesk::models {
+class LatestValuesModel;
+}
+namespace imudesk::sim {
+class PtySimulator;
+}
+
+namespace imudesk::ui {
+
+class ComparisonChart;
+class ConnectionBar;
+class ConsoleWidget;
+class DeviceWorkspace;
+class PreferencesDialog;
+class ToolActions;
+class StatusFlagsWidget;
+
+class MainWindow : public QMainWindow {
+    Q_OBJECT
+public:
+    using ErrorPresenter = std::function<void(const QString &message)>;
+
+    explicit MainWindow(const WindowSettings &settings = {}, QWidget *parent = nullptr);
+    ~MainWindow() override;
+
+    // Applies preferences to every device tab (and to tabs opened later).
+    void setPreferences(const Preferences &prefs);
+    const Preferences &preferences() const { return m_prefs; }
+    // Opens Edit > Preferences (not modal); accepting it applies and emits preferencesChanged.
+    PreferencesDialog *openPreferences();
+
+    // Geometry, dock layout and the last port and baud, for the owner to save.
+    WindowSettings windowSettings() const;
+
+    // Connect the current workspace (a new tab is opened when it is busy).
+    void connectPort(const QString &port, int baud);
+    bool connectSimulated(const sim::SimOptions &options, int baud, QString *error = nullptr);
+    void disconnectDevice();
+    void setSimulatedMotion(sim::Motion motion) { m_simMotion = motion; }
+    sim::Motion simulatedMotion() const { return m_simMotion; }
+    // The current tab when it is idle, else a new one (for a link the user opens).
+    DeviceWorkspace *freeWorkspaceForLink() { return freeWorkspace(); }
+    // Reports a problem to the user (a non-blocking message box, or the error presenter).
+    void showError(const QString &message) { presentError(message); }
+    ToolActions *tools() const { return m_tools; }
+    // Connects a simulated HEC495 compass (the connection bar's "Simulated HEC495").
+    bool connectSimulatedHec495(QString *error = nullptr);
+
+    // Workspaces (tabs).
+    DeviceWorkspace *newWorkspace();
+    DeviceWorkspace *currentWorkspace() const;
+    int workspaceCount() const;
+    DeviceWorkspace *workspace(int index) const;
+    void closeWorkspace(int index);
+
+    // Replaces the message box that reports session errors (tests collect them instead).
+    void setErrorPresenter(ErrorPresenter presenter) { m_errorPresenter = std::move(presenter); }
+
+    // The current workspace's pieces (the main window always has one).
+    device::DeviceSession &session() const;
+    sim::PtySimulator *simulator() const;
+    ConsoleWidget *console() const;
+    QTableView *valuesView() const;
+    models::LatestValuesModel *valuesModel() const;
+    StatusFlagsWidget *statusFlags() const;
+    QString statusText() const;
+    bool isRefreshing() const;
+    ConnectionBar *connectionBar() const { return m_connectionBar; }
+    ComparisonChart *comparisonChart() const { return m_comparison; }
+    QDockWidget *comparisonDock() const { return m_comparisonDock; }
+
+    // View > Layout: rearranges the current tab (and the tabs opened later) for a task.
+    void applyLayoutPreset(DeviceWorkspace::LayoutPreset preset);
+    // View > Reset layout: the current preset's arrangement afresh.
+    void resetLayout();
+    // Fits the window onto the screen it opens on (a geometry saved on a larger screen);
+    // true when it had to change something.
+    bool fitToScreen();
+
+    // Saves the window as a PNG; false with a reason when it cannot be written.
+    bool saveScreenshot(const QString &path, QString *error = nullptr);
+
+Q_SIGNALS:
+    // The user accepted new preferences (the owner stores them).
+    void preferencesChanged(const imudesk::ui::Preferences &prefs);
+
+protected:
+    void changeEvent(QEvent *event) override;
+
+private:
+    QList<QThread *> m_probes; // family probes under way (connectPort with baud Auto)
+
+    void createActions();
+    void createMenus();
+    void retranslateUi();
+    void restoreSettings(const WindowSettings &settings);
+
+    DeviceWorkspace *freeWorkspace(); // the current one if idle, else a new tab
+    void connectSelected();
+    void presentError(const QString &message);
+    void showAbout();
+    void onCurrentChanged();
+    void updateTitle();
+    void updateActions();
+    void rebuildViewMenu();
+    void updateComparisonSources();
+
+    QTabWidget *m_tabs = nullptr;
+    ConnectionBar *m_connectionBar = nullptr;
+    QByteArray m_workspaceLayout; // applied to every new workspace
+    ComparisonChart *m_comparison = nullptr;
+    QDockWidget *m_comparisonDock = nullptr;
+    QTimer m_comparisonTimer; // the comparison's view clock, only while it is shown
+
+    QMenu *m_fileMenu = nullptr;
+    QMenu *m_deviceMenu = nullptr;
+    QMenu *m_viewMenu = nullptr;
+    QMenu *m_helpMenu = nullptr;
+    QMenu *m_toolsMenu = nullptr;
+    QMenu *m_calibrateMenu = nullptr;
+    ToolActions *m_tools = nullptr;
+    QAction *m_newTabAction = nullptr;
+    QAction *m_closeTabAction = nullptr;
+    QAction *m_screenshotAction = nullptr;
+    QAction *m_quitAction = nullptr;
+    QAction *m_connectAction = nullptr;
+    QAction *m_disconnectAction = nullptr;
+    QAction *m_versionAction = nullptr;
+    QAction *m_aboutAction = nullptr;
+    QAction *m_preferencesAction = nullptr;
+    QList<QAction *> m_presetActions;
+    QAction *m_resetLayoutAction = nullptr;
+    DeviceWorkspace::LayoutPreset m_preset = DeviceWorkspace::LayoutPreset::Monitor;
+    Preferences m_prefs;
+
+    sim::Motion m_simMotion = sim::Motion::Static;
+    ErrorPresenter m_errorPresenter;
+    QPointer<QMessageBox> m_errorBox;
+};
+
+} // namespace imudesk::ui

@@ -1,0 +1,410 @@
+#include "workspace/tool_actions.h"
+
+#include "charts/analysis_window.h"
+#include "calibration/attitude_reset_wizard.h"
+#include "calibration/calibration_history_dialog.h"
+#include "calibration/gyro_scale_wizard.h"
+#include "calibration/hec495_calibration_wizard.h"
+#include "device/can_session.h"
+#include "device/hec495_session.h"
+#include "calibration/mag_calibration_wizard.h"
+#include "charts/bandwidth_calculator.h"
+#include "bus/bus_connect_dialog.h"
+#include "configuration/config_panel.h"
+#include "device/modbus_session.h"
+#include "workspace/device_workspace.h"
+#include "recording/export_dialog.h"
+#include "firmware/firmware_update_dialog.h"
+#include "workspace/link_factory.h"
+#include "workspace/main_window.h"
+#include "bus/modbus_scan_dialog.h"
+#include "configuration/profile_dialog.h"
+#include "record/csv_capture_converter.h"
+#include "settings/configuration_controller.h"
+
+#include <QAction>
+#include <QDockWidget>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QMenu>
+
+namespace imudesk::ui {
+
+using device::SessionState;
+
+ToolActions::ToolActions(MainWindow *window) : QObject(window), m_window(window)
+{
+    m_openCapture = make("openCaptureAction");
+    m_openCapture->setShortcut(QKeySequence::Open);
+    connect(m_openCapture, &QAction::triggered, this, &ToolActions::chooseCapture);
+    m_importCsv = make("importCsvAction");
+    connect(m_importCsv, &QAction::triggered, this, &ToolActions::chooseCsv);
+    m_export = make("exportCaptureAction");
+    m_export->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_E));
+    connect(m_export, &QAction::triggered, this, &ToolActions::exportCapture);
+    m_analyze = make("analyzeCaptureAction");
+    connect(m_analyze, &QAction::triggered, this, &ToolActions::analyzeCapture);
+    m_modbus = make("connectModbusAction");
+    m_modbus->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_M));
+    connect(m_modbus, &QAction::triggered, this, &ToolActions::connectModbus);
+    m_can = make("connectCanAction");
+    m_can->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_N));
+    connect(m_can, &QAction::triggered, this, &ToolActions::connectCan);
+    m_scanModbus = make("scanModbusAction");
+    connect(m_scanModbus, &QAction::triggered, this, &ToolActions::scanModbus);
+    m_configuration = make("configurationAction");
+    m_configuration->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_G));
+    connect(m_configuration, &QAction::triggered, this, &ToolActions::showConfiguration);
+    m_profiles = make("profilesAction");
+    connect(m_profiles, &QAction::triggered, this, &ToolActions::openProfiles);
+    m_calculator = make("calculatorAction");
+    connect(m_calculator, &QAction::triggered, this, &ToolActions::openCalculator);
+    m_firmware = make("firmwareAction");
+    connect(m_firmware, &QAction::triggered, this, &ToolActions::updateFirmware);
+    m_record = make("recordAction");
+    m_record->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_R));
+    connect(m_record, &QAction::triggered, this, &ToolActions::showRecording);
+    m_magCal = make("magCalAction");
+    connect(m_magCal, &QAction::triggered, this, &ToolActions::openMagCal);
+    m_gyroCal = make("gyroCalAction");
+    connect(m_gyroCal, &QAction::triggered, this, &ToolActions::openGyroCal);
+    m_attitudeReset = make("attitudeResetAction");
+    connect(m_attitudeReset, &QAction::triggered, this, &ToolActions::openAttitudeReset);
+    m_compassCal = make("compassCalAction");
+    connect(m_compassCal, &QAction::triggered, this, &ToolActions::openCompassCal);
+    m_calHistory = make("calibrationHistoryAction");
+    m_calHistory->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_H));
+    connect(m_calHistory, &QAction::triggered, this, &ToolActions::openCalHistory);
+    retranslate();
+}
+
+QAction *ToolActions::make(const char *objectName)
+{
+    auto *a = new QAction(m_window);
+    a->setObjectName(QString::fromLatin1(objectName));
+    return a;
+}
+
+void ToolActions::addToMenus(QMenu *fileMenu, QMenu *deviceMenu, QMenu *calibrateMenu, QMenu *toolsMenu)
+{
+    QAction *firstFileEntry = fileMenu->actions().value(2); // after "new tab", "close tab"
+    fileMenu->insertActions(firstFileEntry, {m_openCapture, m_importCsv, m_export});
+    fileMenu->insertSeparator(firstFileEntry);
+    deviceMenu->addSeparator();
+    deviceMenu->addActions({m_modbus, m_can, m_scanModbus});
+    deviceMenu->addSeparator();
+    deviceMenu->addActions({m_configuration, m_profiles, m_record, m_firmware});
+    m_calibrateMenu = calibrateMenu;
+    calibrateMenu->addActions({m_magCal, m_gyroCal, m_attitudeReset});
+    calibrateMenu->addSeparator();
+    calibrateMenu->addAction(m_compassCal);
+    calibrateMenu->addSeparator();
+    calibrateMenu->addAction(m_calHistory);
+    m_toolsMenu = toolsMenu;
+    toolsMenu->addActions({m_analyze, m_calculator});
+}
+
+void ToolActions::retranslate()
+{
+    m_openCapture->setText(tr("&Open capture…"));
+    m_openCapture->setStatusTip(tr("Play a recorded capture through the charts and views, as a live device"));
+    m_importCsv->setText(tr("&Import vendor CSV…"));
+    m_importCsv->setStatusTip(tr("Turn a CSV written by the vendor's PC tool into a capture and play it"));
+    m_export->setText(tr("&Export capture…"));
+    m_export->setStatusTip(tr("Write a capture as vendor CSV, tidy CSV or JSON Lines"));
+    m_analyze->setText(tr("&Analyze capture…"));
+    m_analyze->setStatusTip(tr("Statistics, output rate and jitter, lost frames and Allan deviation of a capture"));
+    m_modbus->setText(tr("Connect over &Modbus RTU…"));
+    m_modbus->setStatusTip(tr("Poll a module or compass on an RS-485 bus"));
+    m_can->setText(tr("Connect over C&AN…"));
+    m_can->setStatusTip(tr("Listen to and configure a J1939, CANopen or HEC495 device on a CAN bus"));
+    m_scanModbus->setText(tr("&Scan Modbus bus…"));
+    m_scanModbus->setStatusTip(tr("Find the node IDs that answer on the bus"));
+    m_configuration->setText(tr("Con&figuration"));
+    m_configuration->setStatusTip(tr("Every setting of the connected module: read, edit, apply, save"));
+    m_profiles->setText(tr("&Profiles…"));
+    m_profiles->setStatusTip(tr("Save the configuration to a file, compare a file with the device, apply it to several"));
+    m_calculator->setText(tr("Output-rate &calculator…"));
+    m_calculator->setStatusTip(tr("Bytes per second of the chosen outputs against the link's capacity"));
+    m_firmware->setText(tr("&Update firmware…"));
+    m_firmware->setStatusTip(tr("Write a new firmware image to the module: over its serial port, verified by reading it back, or over CANopen, verified by the bootloader's CRC"));
+    m_record->setText(tr("&Record"));
+    m_record->setStatusTip(tr("Show the recording controls of this device"));
+    m_magCal->setText(tr("&Magnetometer…"));
+    m_magCal->setStatusTip(tr("Calibrate the magnetometer: turn the module while the sphere fills, then judge the fit"));
+    m_gyroCal->setText(tr("&Gyro scale factor…"));
+    m_gyroCal->setStatusTip(tr("Turn the module a known angle about Z to correct the gyro's scale (CONFIG USRCAL)"));
+    m_attitudeReset->setText(tr("&Attitude reset / level…"));
+    m_attitudeReset->setStatusTip(tr("Zero the heading or level the module (ATT RST), after checking that it is still"));
+    m_compassCal->setText(tr("HEC495 &compass…"));
+    m_compassCal->setStatusTip(tr("The HEC495's own calibration methods, with the target poses to turn it to"));
+    m_calHistory->setText(tr("Calibration &history…"));
+    m_calHistory->setStatusTip(tr("Every finished calibration run per device: metrics, samples, PDF report"));
+    if (m_toolsMenu)
+        m_toolsMenu->setTitle(tr("&Tools"));
+    if (m_calibrateMenu)
+        m_calibrateMenu->setTitle(tr("&Calibrate"));
+}
+
+void ToolActions::update(const DeviceWorkspace *ws)
+{
+    const bool busy = ws && ws->isBusy();
+    const bool serial = ws && !ws->hasAttachedLink();
+    const bool connected = ws && ws->state() == SessionState::Connected;
+    m_modbus->setEnabled(!busy);
+    m_can->setEnabled(!busy);
+    m_openCapture->setEnabled(!busy);
+    m_importCsv->setEnabled(!busy);
+    m_scanModbus->setEnabled(connected && dynamic_cast<const device::ModbusSession *>(&ws->link()));
+    m_configuration->setEnabled(serial);
+    m_profiles->setEnabled(serial && connected);
+    m_record->setEnabled(serial);
+    const bool hasMag = ws && ws->identity() && ws->identity()->hasMagnetometer() && ws->identity()->firmware;
+    m_magCal->setEnabled(serial && connected && hasMag);
+    m_gyroCal->setEnabled(serial && connected);
+    m_attitudeReset->setEnabled(serial && connected);
+    m_compassCal->setEnabled(connected && dynamic_cast<const device::Hec495Session *>(&ws->link()));
+    // The update opens the port itself: a connected HiPNUC serial device, or a HiPNUC module
+    // on a CANopen bus (the dialog opens its own CAN device beside the session's).
+    m_firmware->setEnabled((serial && connected) || (connected && canopenLink(ws)));
+}
+
+bool ToolActions::openCapture(const QString &path)
+{
+    QString error;
+    DeviceWorkspace *ws = m_window->freeWorkspaceForLink();
+    if (!LinkFactory::openReplay(*ws, path, &error)) {
+        m_window->showError(error);
+        return false;
+    }
+    return true;
+}
+
+bool ToolActions::importVendorCsv(const QString &csvPath, const QString &capturePath)
+{
+    const auto r = record::CsvCaptureConverter::convert(csvPath, capturePath);
+    if (!r.ok) {
+        m_window->showError(tr("%1 could not be imported: %2").arg(QFileInfo(csvPath).fileName(), r.error));
+        return false;
+    }
+    return openCapture(capturePath);
+}
+
+void ToolActions::chooseCapture()
+{
+    const QString path = QFileDialog::getOpenFileName(m_window, tr("Open capture"), m_window->preferences().effectiveRecordingFolder(),
+                                                      tr("Captures (*.imucap);;All files (*)"));
+    if (!path.isEmpty())
+        openCapture(path);
+}
+
+void ToolActions::chooseCsv()
+{
+    const QString csv = QFileDialog::getOpenFileName(m_window, tr("Import vendor CSV"), QString(),
+                                                     tr("CSV files (*.csv);;All files (*)"));
+    if (csv.isEmpty())
+        return;
+    const QFileInfo info(csv);
+    const QString capture = QFileDialog::getSaveFileName(
+        m_window, tr("Save the imported capture as"), info.dir().filePath(info.completeBaseName() + QStringLiteral(".imucap")),
+        tr("Captures (*.imucap)"));
+    if (!capture.isEmpty())
+        importVendorCsv(csv, capture);
+}
+
+void ToolActions::exportCapture()
+{
+    const QString path = QFileDialog::getOpenFileName(m_window, tr("Export capture"), m_window->preferences().effectiveRecordingFolder(),
+                                                      tr("Captures (*.imucap);;All files (*)"));
+    if (path.isEmpty())
+        return;
+    auto *dialog = new ExportDialog(path, m_window);
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    dialog->open();
+}
+
+void ToolActions::analyzeCapture()
+{
+    const QString path = QFileDialog::getOpenFileName(m_window, tr("Analyze capture"), m_window->preferences().effectiveRecordingFolder(),
+                                                      tr("Captures and vendor CSV (*.imucap *.csv);;All files (*)"));
+    if (path.isEmpty())
+        return;
+    auto *window = new AnalysisWindow(m_window);
+    window->setWindowFlag(Qt::Window);
+    window->setAttribute(Qt::WA_DeleteOnClose);
+    window->show();
+    window->analyzeFile(path);
+}
+
+void ToolActions::connectModbus()
+{
+    auto *dialog = new ModbusConnectDialog(m_window);
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    connect(dialog, &QDialog::accepted, this, [this, dialog] {
+        QString error;
+        if (!LinkFactory::connectModbus(*m_window->freeWorkspaceForLink(), dialog->options(), dialog->simulate(),
+                                        m_window->simulatedMotion(), &error))
+            m_window->showError(error);
+    });
+    dialog->open();
+}
+
+void ToolActions::connectCan()
+{
+    auto *dialog = new CanConnectDialog(m_window);
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    connect(dialog, &QDialog::accepted, this, [this, dialog] {
+        QString error;
+        if (!LinkFactory::connectCan(*m_window->freeWorkspaceForLink(), dialog->options(), dialog->simulate(),
+                                     m_window->simulatedMotion(), &error))
+            m_window->showError(error);
+    });
+    dialog->open();
+}
+
+void ToolActions::scanModbus()
+{
+    DeviceWorkspace *ws = m_window->currentWorkspace();
+    auto *session = ws ? dynamic_cast<device::ModbusSession *>(&ws->link()) : nullptr;
+    if (!session)
+        return;
+    auto *dialog = new ModbusScanDialog(session, m_window);
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    dialog->open();
+}
+
+void ToolActions::showConfiguration()
+{
+    if (DeviceWorkspace *ws = m_window->currentWorkspace()) {
+        ws->configDock()->show();
+        ws->configDock()->raise();
+    }
+}
+
+void ToolActions::showRecording()
+{
+    if (DeviceWorkspace *ws = m_window->currentWorkspace()) {
+        ws->recordingDock()->show();
+        ws->recordingDock()->raise();
+    }
+}
+
+void ToolActions::openProfiles()
+{
+    DeviceWorkspace *ws = m_window->currentWorkspace();
+    if (!ws)
+        return;
+    auto *dialog = new ProfileDialog(ws->session(), m_window);
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    dialog->open();
+    dialog->readDevice();
+}
+
+void ToolActions::openCalculator()
+{
+    auto *calculator = new BandwidthCalculator(m_window);
+    calculator->setWindowFlag(Qt::Window);
+    calculator->setAttribute(Qt::WA_DeleteOnClose);
+    if (DeviceWorkspace *ws = m_window->currentWorkspace(); ws && !ws->hasAttachedLink())
+        calculator->setConfiguration(ws->configPanel()->controller().configuration());
+    calculator->show();
+}
+
+void ToolActions::openMagCal()
+{
+    DeviceWorkspace *ws = m_window->currentWorkspace();
+    if (!ws || ws->hasAttachedLink() || !ws->identity() || !ws->identity()->firmware)
+        return;
+    auto *wizard = new MagCalibrationWizard(ws->session(), *ws->identity()->firmware, m_window);
+    wizard->runSaver().setIdentity(*ws->identity());
+    wizard->setAttribute(Qt::WA_DeleteOnClose);
+    wizard->show();
+}
+
+void ToolActions::openGyroCal()
+{
+    DeviceWorkspace *ws = m_window->currentWorkspace();
+    if (!ws || ws->hasAttachedLink())
+        return;
+    auto *wizard = new GyroScaleWizard(ws->session(), m_window);
+    if (ws->identity())
+        wizard->runSaver().setIdentity(*ws->identity());
+    wizard->setAttribute(Qt::WA_DeleteOnClose);
+    wizard->show();
+}
+
+void ToolActions::openAttitudeReset()
+{
+    DeviceWorkspace *ws = m_window->currentWorkspace();
+    if (!ws || ws->hasAttachedLink())
+        return;
+    auto *wizard = new AttitudeResetWizard(ws->session(), m_window);
+    if (ws->identity())
+        wizard->runSaver().setIdentity(*ws->identity());
+    wizard->setAttribute(Qt::WA_DeleteOnClose);
+    wizard->show();
+}
+
+void ToolActions::openCompassCal()
+{
+    DeviceWorkspace *ws = m_window->currentWorkspace();
+    auto *session = ws ? dynamic_cast<device::Hec495Session *>(&ws->link()) : nullptr;
+    if (!session)
+        return;
+    auto *wizard = new Hec495CalibrationWizard(*session, m_window);
+    if (ws->identity())
+        wizard->runSaver().setIdentity(*ws->identity());
+    wizard->setAttribute(Qt::WA_DeleteOnClose);
+    // The wizard needs its session: it closes when the link goes.
+    connect(session, &QObject::destroyed, wizard, &QWidget::close);
+    wizard->show();
+}
+
+void ToolActions::openCalHistory()
+{
+    auto *dialog = new CalibrationHistoryDialog(calib::CalibrationHistory::defaultRoot(), m_window);
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    const DeviceWorkspace *ws = m_window->currentWorkspace();
+    if (ws && ws->identity())
+        dialog->selectDevice(CalibrationRunSaver::serialOf(*ws->identity()));
+    dialog->show();
+}
+
+const device::CanSession *ToolActions::canopenLink(const DeviceWorkspace *ws)
+{
+    const auto *can = ws ? dynamic_cast<const device::CanSession *>(&ws->link()) : nullptr;
+    return can && can->protocol() == protocol::can::CanProtocol::CanOpen ? can : nullptr;
+}
+
+void ToolActions::updateFirmware()
+{
+    DeviceWorkspace *ws = m_window->currentWorkspace();
+    if (!ws)
+        return;
+    if (const device::CanSession *can = canopenLink(ws)) {
+        // Over CAN the session stays on the bus; the dialog talks to the node with its own
+        // CAN device (SDO to 0x1F51) and the session sees the module leave and come back.
+        auto *dialog = new FirmwareUpdateDialog(QString(), 0, ws->identity(), m_window);
+        dialog->setAttribute(Qt::WA_DeleteOnClose);
+        dialog->setLink(FirmwareUpdateDialog::Link::Can);
+        const auto &o = can->options();
+        dialog->setCanBus(o.plugin, o.interfaceName, o.bitrate, can->targetNode() > 0 ? can->targetNode() : 8);
+        dialog->open();
+        return;
+    }
+    if (ws->hasAttachedLink())
+        return;
+    const int baud = ws->baud();
+    const auto identity = ws->identity();
+    const bool simulated = ws->simulator() != nullptr;
+    // The dialog opens the port itself: the session lends it out (a simulated module keeps
+    // running, its bootloader takes the update) and takes it back afterwards.
+    const QString port = ws->releasePort();
+    auto *dialog = new FirmwareUpdateDialog(port, baud, identity, m_window);
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    dialog->setDemoImageOffered(simulated);
+    connect(dialog, &QDialog::finished, ws, [ws, port, baud] { ws->reclaimPort(port, baud); });
+    dialog->open();
+}
+
+} // namespace imudesk::ui
