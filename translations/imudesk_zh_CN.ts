@@ -3720,9 +3720,93 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
 </context>
 <context>
+    <name>imudesk::device::CanFamily</name>
+    <message>
+        <location filename="../core/device/can_family.cpp" line="+95" />
+        <source>connected to %1</source>
+        <translation>已连接到 %1</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <location line="+4" />
+        <source>the session was closed</source>
+        <translation>会话已关闭</translation>
+    </message>
+    <message>
+        <location line="+20" />
+        <source>could not send frame %1: the CAN interface is not connected</source>
+        <translation>无法发送帧 %1：CAN 接口未连接</translation>
+    </message>
+    <message>
+        <location line="+52" />
+        <source>boot-up</source>
+        <translation>启动报文</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>heartbeat</source>
+        <translation>心跳</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>data</source>
+        <translation>数据</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>SDO scan</source>
+        <translation>SDO 扫描</translation>
+    </message>
+    <message>
+        <location line="+47" />
+        <source>too many requests are waiting; try again when they are done</source>
+        <translation>等待中的请求过多；请在其完成后重试</translation>
+    </message>
+    <message>
+        <location line="+61" />
+        <source>no answer from node %1 to "%2" within %3 ms: check the node ID, the bit rate and the wiring</source>
+        <translation>节点 %1 在 %3 ms 内未应答“%2”：请检查节点 ID、波特率和接线</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>could not send "%1": the CAN interface is not connected</source>
+        <translation>无法发送“%1”：CAN 接口未连接</translation>
+    </message>
+    <message>
+        <location line="+29" />
+        <source>the device refused "%1" (status %2)</source>
+        <translation>设备拒绝了“%1”（状态 %2）</translation>
+    </message>
+    <message>
+        <location line="+11" />
+        <source>the device aborted "%1": %2</source>
+        <translation>设备中止了“%1”：%2</translation>
+    </message>
+    <message>
+        <location line="+14" />
+        <source>the device refused "%1": %2</source>
+        <translation>设备拒绝了“%1”：%2</translation>
+    </message>
+    <message>
+        <location line="+23" />
+        <source>"%1" read back %2, expected %3</source>
+        <translation>“%1”回读值为 %2，应为 %3</translation>
+    </message>
+    <message>
+        <location line="+9" />
+        <source>%1: done</source>
+        <translation>%1：完成</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>%1 failed: %2</source>
+        <translation>%1 失败：%2</translation>
+    </message>
+</context>
+<context>
     <name>imudesk::device::CanSession</name>
     <message>
-        <location filename="../core/device/can_session.cpp" line="+92" />
+        <location filename="../core/device/can_session.cpp" line="+83" />
         <source>HiPNUC J1939</source>
         <translation>HiPNUC J1939</translation>
     </message>
@@ -4056,125 +4140,6 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
 </context>
 <context>
-    <name>imudesk::device::CanWorker</name>
-    <message>
-        <location filename="../core/device/can_worker.cpp" line="+103" />
-        <source>no answer from node %1 to "%2" within %3 ms: check the node ID, the bit rate and the wiring</source>
-        <translation>节点 %1 在 %3 ms 内未应答“%2”：请检查节点 ID、波特率和接线</translation>
-    </message>
-    <message>
-        <location line="+33" />
-        <source>opening %1:%2</source>
-        <translation>正在打开 %1:%2</translation>
-    </message>
-    <message>
-        <location line="+3" />
-        <source>the CAN plugin "%1" is not installed (available: %2)</source>
-        <translation>未安装 CAN 插件“%1”（可用插件：%2）</translation>
-    </message>
-    <message>
-        <location line="+6" />
-        <source>cannot create CAN interface %1:%2: %3</source>
-        <translation>无法创建 CAN 接口 %1:%2：%3</translation>
-    </message>
-    <message>
-        <location line="+14" />
-        <source>connected to %1:%2</source>
-        <translation>已连接到 %1:%2</translation>
-    </message>
-    <message>
-        <location line="+5" />
-        <source>the CAN interface closed; received data is kept</source>
-        <translation>CAN 接口已关闭；已接收的数据会保留</translation>
-    </message>
-    <message>
-        <location line="+6" />
-        <source>cannot open CAN interface %1:%2: %3 (check the interface name, that it is up, and your permissions)</source>
-        <translation>无法打开 CAN 接口 %1:%2：%3（请检查接口名称、接口是否已启用以及访问权限）</translation>
-    </message>
-    <message>
-        <location line="+14" />
-        <location line="+4" />
-        <source>the session was closed</source>
-        <translation>会话已关闭</translation>
-    </message>
-    <message>
-        <location line="+7" />
-        <source>closed</source>
-        <translation>已关闭</translation>
-    </message>
-    <message>
-        <location line="+8" />
-        <source>CAN interface error: %1</source>
-        <translation>CAN 接口错误：%1</translation>
-    </message>
-    <message>
-        <location line="+20" />
-        <source>could not send frame %1: the CAN interface is not connected</source>
-        <translation>无法发送帧 %1：CAN 接口未连接</translation>
-    </message>
-    <message>
-        <location line="+46" />
-        <source>boot-up</source>
-        <translation>启动报文</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <source>heartbeat</source>
-        <translation>心跳</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <source>data</source>
-        <translation>数据</translation>
-    </message>
-    <message>
-        <location line="+4" />
-        <source>SDO scan</source>
-        <translation>SDO 扫描</translation>
-    </message>
-    <message>
-        <location line="+33" />
-        <source>too many requests are waiting; try again when they are done</source>
-        <translation>等待中的请求过多；请在其完成后重试</translation>
-    </message>
-    <message>
-        <location line="+26" />
-        <source>could not send "%1": the CAN interface is not connected</source>
-        <translation>无法发送“%1”：CAN 接口未连接</translation>
-    </message>
-    <message>
-        <location line="+17" />
-        <source>the device refused "%1" (status %2)</source>
-        <translation>设备拒绝了“%1”（状态 %2）</translation>
-    </message>
-    <message>
-        <location line="+11" />
-        <source>the device aborted "%1": %2</source>
-        <translation>设备中止了“%1”：%2</translation>
-    </message>
-    <message>
-        <location line="+14" />
-        <source>the device refused "%1": %2</source>
-        <translation>设备拒绝了“%1”：%2</translation>
-    </message>
-    <message>
-        <location line="+25" />
-        <source>"%1" read back %2, expected %3</source>
-        <translation>“%1”回读值为 %2，应为 %3</translation>
-    </message>
-    <message>
-        <location line="+9" />
-        <source>%1: done</source>
-        <translation>%1：完成</translation>
-    </message>
-    <message>
-        <location line="+11" />
-        <source>%1 failed: %2</source>
-        <translation>%1 失败：%2</translation>
-    </message>
-</context>
-<context>
     <name>imudesk::device::Hec495Family</name>
     <message>
         <location filename="../core/device/hec495_family.cpp" line="+77" />
@@ -4303,7 +4268,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::device::ModbusSession</name>
     <message>
-        <location filename="../core/device/modbus_session.cpp" line="+106" />
+        <location filename="../core/device/modbus_session.cpp" line="+92" />
         <source>ILLEGAL FUNCTION (01): the device does not support this request at %1.</source>
         <translation>ILLEGAL FUNCTION（01，非法功能）：设备不支持对 %1 的此请求。</translation>
     </message>
@@ -4333,27 +4298,27 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>%2 处出现 Modbus 异常 %1。</translation>
     </message>
     <message>
-        <location filename="../core/device/modbus_worker.cpp" line="+78" />
-        <source>The serial port %1 failed (%2). Check that the adapter is plugged in, then connect again.</source>
-        <translation>串口 %1 出错（%2）。请检查适配器是否已插好，然后重新连接。</translation>
-    </message>
-    <message>
-        <location line="+9" />
-        <source>Cannot open %1: %2. Check the port name and that no other program uses it.</source>
-        <translation>无法打开 %1：%2。请检查串口名称，并确认没有其他程序占用该串口。</translation>
-    </message>
-    <message>
-        <location line="+28" />
+        <location filename="../core/device/modbus_family.cpp" line="+117" />
         <source>Port open at %1 baud</source>
         <translation>串口已打开，波特率 %1</translation>
     </message>
     <message>
-        <location line="+130" />
+        <location line="+20" />
+        <source>The serial port %1 cannot run at %2 baud. Connect again at the device's new rate.</source>
+        <translation>串口 %1 无法以 %2 波特率运行。请以设备的新波特率重新连接。</translation>
+    </message>
+    <message>
+        <location line="+30" />
+        <source>a Modbus node ID is 0 to 247 (got %1)</source>
+        <translation>Modbus 节点 ID 应为 0 到 247（收到 %1）</translation>
+    </message>
+    <message>
+        <location line="+37" />
         <source>register 0x%1</source>
         <translation>寄存器 0x%1</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+5" />
         <source>No reply from node %1 at %2 baud within %3 ms. Check the node ID, the baud rate and parity, and the RS-485 wiring (A/B).</source>
         <translation>节点 %1 在 %3 ms 内无应答（波特率 %2）。请检查节点 ID、波特率和校验位，以及 RS-485 接线（A/B）。</translation>
     </message>
@@ -4363,17 +4328,22 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>对节点 %1 的请求失败：%2</translation>
     </message>
     <message>
-        <location line="+7" />
+        <location line="+80" />
+        <source>the reply carries another number of registers than asked for</source>
+        <translation>应答中的寄存器数量与请求的不一致</translation>
+    </message>
+    <message>
+        <location line="+25" />
         <source>Reading the identity of node %1</source>
         <translation>正在读取节点 %1 的设备标识</translation>
     </message>
     <message>
-        <location line="+26" />
+        <location line="+27" />
         <source>Modbus node %1</source>
         <translation>Modbus 节点 %1</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+4" />
         <source>Node %1 at %2 baud</source>
         <translation>节点 %1，波特率 %2</translation>
     </message>
@@ -4383,17 +4353,17 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>节点 %1 已恢复应答</translation>
     </message>
     <message>
-        <location line="+61" />
+        <location line="+37" />
         <source>not connected</source>
         <translation>未连接</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+1" />
         <source>a read takes 1 to 125 registers</source>
         <translation>每次读取 1 至 125 个寄存器</translation>
     </message>
     <message>
-        <location line="+17" />
+        <location line="+18" />
         <source>Not connected: connect first.</source>
         <translation>未连接：请先连接。</translation>
     </message>
@@ -4408,12 +4378,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>寄存器地址和数值必须为 0..65535。</translation>
     </message>
     <message>
-        <location line="+49" />
+        <location line="+33" />
         <source>Done: %1.</source>
         <translation>完成：%1。</translation>
     </message>
     <message>
-        <location line="+13" />
+        <location line="+14" />
         <source>Written, but reading it back failed: %1</source>
         <translation>已写入，但回读失败：%1</translation>
     </message>
@@ -4428,17 +4398,27 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>回读值：%1。</translation>
     </message>
     <message>
-        <location line="+92" />
+        <location line="+65" />
+        <source>The serial port %1 cannot run at %2 baud.</source>
+        <translation>串口 %1 无法以 %2 波特率运行。</translation>
+    </message>
+    <message>
+        <location line="+33" />
         <source>HEC495 compass (pitch %1 deg)</source>
         <translation>HEC495 罗盘（俯仰角 %1 deg）</translation>
     </message>
     <message>
-        <location line="+26" />
+        <location line="+29" />
         <source>answers, identity unreadable</source>
         <translation>有应答，无法读取设备标识</translation>
     </message>
     <message>
-        <location line="+12" />
+        <location line="+13" />
+        <source>The serial port %1 cannot return to %2 baud.</source>
+        <translation>串口 %1 无法恢复到 %2 波特率。</translation>
+    </message>
+    <message>
+        <location line="-43" />
         <source>answers with Modbus exception %1</source>
         <translation>应答 Modbus 异常 %1</translation>
     </message>
@@ -4446,7 +4426,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::device::SessionEngine</name>
     <message>
-        <location filename="../core/device/session_engine.cpp" line="+112" />
+        <location filename="../core/device/session_engine.cpp" line="+113" />
         <source>the connection was closed</source>
         <translation>连接已关闭</translation>
     </message>
@@ -4471,7 +4451,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>串口未打开</translation>
     </message>
     <message>
-        <location line="+49" />
+        <location line="+52" />
         <source>writing to the port failed</source>
         <translation>向串口写入失败</translation>
     </message>
@@ -4484,6 +4464,34 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <location line="+81" />
         <source>Bytes keep arriving on %1 but none of them form a frame: the device probably runs at another baud rate now. Disconnect and connect again with the baud rate set to Auto.</source>
         <translation>%1 上持续收到字节，但无法组成任何数据帧：设备可能已改用其他波特率。请断开连接，并将波特率设为“自动”后重新连接。</translation>
+    </message>
+</context>
+<context>
+    <name>imudesk::io::CanTransport</name>
+    <message>
+        <location filename="../core/io/can_transport.cpp" line="+64" />
+        <source>the CAN plugin "%1" is not installed (available: %2)</source>
+        <translation>未安装 CAN 插件“%1”（可用插件：%2）</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>cannot create CAN interface %1: %2</source>
+        <translation>无法创建 CAN 接口 %1：%2</translation>
+    </message>
+    <message>
+        <location line="+11" />
+        <source>CAN interface error: %1</source>
+        <translation>CAN 接口错误：%1</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>the CAN interface %1 closed; received data is kept</source>
+        <translation>CAN 接口 %1 已关闭；已接收的数据会保留</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>cannot open CAN interface %1: %2 (check the interface name, that it is up, and your permissions)</source>
+        <translation>无法打开 CAN 接口 %1：%2（请检查接口名称、接口是否已启用以及访问权限）</translation>
     </message>
 </context>
 <context>

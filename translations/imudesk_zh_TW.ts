@@ -3720,9 +3720,93 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
 </context>
 <context>
+    <name>imudesk::device::CanFamily</name>
+    <message>
+        <location filename="../core/device/can_family.cpp" line="+95" />
+        <source>connected to %1</source>
+        <translation>已連線到 %1</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <location line="+4" />
+        <source>the session was closed</source>
+        <translation>連線已關閉</translation>
+    </message>
+    <message>
+        <location line="+20" />
+        <source>could not send frame %1: the CAN interface is not connected</source>
+        <translation>無法傳送幀 %1：CAN 介面未連線</translation>
+    </message>
+    <message>
+        <location line="+52" />
+        <source>boot-up</source>
+        <translation>開機訊息</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>heartbeat</source>
+        <translation>心跳</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>data</source>
+        <translation>資料</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>SDO scan</source>
+        <translation>SDO 掃描</translation>
+    </message>
+    <message>
+        <location line="+47" />
+        <source>too many requests are waiting; try again when they are done</source>
+        <translation>等待中的請求過多；請待其完成後再試</translation>
+    </message>
+    <message>
+        <location line="+61" />
+        <source>no answer from node %1 to "%2" within %3 ms: check the node ID, the bit rate and the wiring</source>
+        <translation>節點 %1 在 %3 ms 內未回應「%2」：請檢查節點 ID、位元速率和接線</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>could not send "%1": the CAN interface is not connected</source>
+        <translation>無法傳送「%1」：CAN 介面未連線</translation>
+    </message>
+    <message>
+        <location line="+29" />
+        <source>the device refused "%1" (status %2)</source>
+        <translation>裝置拒絕了「%1」（狀態 %2）</translation>
+    </message>
+    <message>
+        <location line="+11" />
+        <source>the device aborted "%1": %2</source>
+        <translation>裝置中止了「%1」：%2</translation>
+    </message>
+    <message>
+        <location line="+14" />
+        <source>the device refused "%1": %2</source>
+        <translation>裝置拒絕了「%1」：%2</translation>
+    </message>
+    <message>
+        <location line="+23" />
+        <source>"%1" read back %2, expected %3</source>
+        <translation>「%1」回讀值為 %2，預期為 %3</translation>
+    </message>
+    <message>
+        <location line="+9" />
+        <source>%1: done</source>
+        <translation>%1：完成</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>%1 failed: %2</source>
+        <translation>%1 失敗：%2</translation>
+    </message>
+</context>
+<context>
     <name>imudesk::device::CanSession</name>
     <message>
-        <location filename="../core/device/can_session.cpp" line="+92" />
+        <location filename="../core/device/can_session.cpp" line="+83" />
         <source>HiPNUC J1939</source>
         <translation>HiPNUC J1939</translation>
     </message>
@@ -4056,125 +4140,6 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
 </context>
 <context>
-    <name>imudesk::device::CanWorker</name>
-    <message>
-        <location filename="../core/device/can_worker.cpp" line="+103" />
-        <source>no answer from node %1 to "%2" within %3 ms: check the node ID, the bit rate and the wiring</source>
-        <translation>節點 %1 在 %3 ms 內未回應「%2」：請檢查節點 ID、位元速率和接線</translation>
-    </message>
-    <message>
-        <location line="+33" />
-        <source>opening %1:%2</source>
-        <translation>正在開啟 %1:%2</translation>
-    </message>
-    <message>
-        <location line="+3" />
-        <source>the CAN plugin "%1" is not installed (available: %2)</source>
-        <translation>未安裝 CAN 外掛程式「%1」（可用：%2）</translation>
-    </message>
-    <message>
-        <location line="+6" />
-        <source>cannot create CAN interface %1:%2: %3</source>
-        <translation>無法建立 CAN 介面 %1:%2：%3</translation>
-    </message>
-    <message>
-        <location line="+14" />
-        <source>connected to %1:%2</source>
-        <translation>已連線到 %1:%2</translation>
-    </message>
-    <message>
-        <location line="+5" />
-        <source>the CAN interface closed; received data is kept</source>
-        <translation>CAN 介面已關閉；已接收的資料會保留</translation>
-    </message>
-    <message>
-        <location line="+6" />
-        <source>cannot open CAN interface %1:%2: %3 (check the interface name, that it is up, and your permissions)</source>
-        <translation>無法開啟 CAN 介面 %1:%2：%3（請檢查介面名稱、介面是否已啟用，以及您的權限）</translation>
-    </message>
-    <message>
-        <location line="+14" />
-        <location line="+4" />
-        <source>the session was closed</source>
-        <translation>連線已關閉</translation>
-    </message>
-    <message>
-        <location line="+7" />
-        <source>closed</source>
-        <translation>已關閉</translation>
-    </message>
-    <message>
-        <location line="+8" />
-        <source>CAN interface error: %1</source>
-        <translation>CAN 介面錯誤：%1</translation>
-    </message>
-    <message>
-        <location line="+20" />
-        <source>could not send frame %1: the CAN interface is not connected</source>
-        <translation>無法傳送幀 %1：CAN 介面未連線</translation>
-    </message>
-    <message>
-        <location line="+46" />
-        <source>boot-up</source>
-        <translation>開機訊息</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <source>heartbeat</source>
-        <translation>心跳</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <source>data</source>
-        <translation>資料</translation>
-    </message>
-    <message>
-        <location line="+4" />
-        <source>SDO scan</source>
-        <translation>SDO 掃描</translation>
-    </message>
-    <message>
-        <location line="+33" />
-        <source>too many requests are waiting; try again when they are done</source>
-        <translation>等待中的請求過多；請待其完成後再試</translation>
-    </message>
-    <message>
-        <location line="+26" />
-        <source>could not send "%1": the CAN interface is not connected</source>
-        <translation>無法傳送「%1」：CAN 介面未連線</translation>
-    </message>
-    <message>
-        <location line="+17" />
-        <source>the device refused "%1" (status %2)</source>
-        <translation>裝置拒絕了「%1」（狀態 %2）</translation>
-    </message>
-    <message>
-        <location line="+11" />
-        <source>the device aborted "%1": %2</source>
-        <translation>裝置中止了「%1」：%2</translation>
-    </message>
-    <message>
-        <location line="+14" />
-        <source>the device refused "%1": %2</source>
-        <translation>裝置拒絕了「%1」：%2</translation>
-    </message>
-    <message>
-        <location line="+25" />
-        <source>"%1" read back %2, expected %3</source>
-        <translation>「%1」回讀值為 %2，預期為 %3</translation>
-    </message>
-    <message>
-        <location line="+9" />
-        <source>%1: done</source>
-        <translation>%1：完成</translation>
-    </message>
-    <message>
-        <location line="+11" />
-        <source>%1 failed: %2</source>
-        <translation>%1 失敗：%2</translation>
-    </message>
-</context>
-<context>
     <name>imudesk::device::Hec495Family</name>
     <message>
         <location filename="../core/device/hec495_family.cpp" line="+77" />
@@ -4303,7 +4268,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::device::ModbusSession</name>
     <message>
-        <location filename="../core/device/modbus_session.cpp" line="+106" />
+        <location filename="../core/device/modbus_session.cpp" line="+92" />
         <source>ILLEGAL FUNCTION (01): the device does not support this request at %1.</source>
         <translation>ILLEGAL FUNCTION（01）：裝置不支援對 %1 的此項請求。</translation>
     </message>
@@ -4333,27 +4298,27 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>%2 發生 Modbus 例外 %1。</translation>
     </message>
     <message>
-        <location filename="../core/device/modbus_worker.cpp" line="+78" />
-        <source>The serial port %1 failed (%2). Check that the adapter is plugged in, then connect again.</source>
-        <translation>串列埠 %1 發生故障（%2）。請確認轉接器已插好，然後重新連線。</translation>
-    </message>
-    <message>
-        <location line="+9" />
-        <source>Cannot open %1: %2. Check the port name and that no other program uses it.</source>
-        <translation>無法開啟 %1：%2。請檢查串列埠名稱，並確認沒有其他程式正在使用。</translation>
-    </message>
-    <message>
-        <location line="+28" />
+        <location filename="../core/device/modbus_family.cpp" line="+117" />
         <source>Port open at %1 baud</source>
         <translation>串列埠已開啟，波特率 %1</translation>
     </message>
     <message>
-        <location line="+130" />
+        <location line="+20" />
+        <source>The serial port %1 cannot run at %2 baud. Connect again at the device's new rate.</source>
+        <translation>串列埠 %1 無法以 %2 波特率運作。請以裝置的新波特率重新連線。</translation>
+    </message>
+    <message>
+        <location line="+30" />
+        <source>a Modbus node ID is 0 to 247 (got %1)</source>
+        <translation>Modbus 節點 ID 應為 0 到 247（收到 %1）</translation>
+    </message>
+    <message>
+        <location line="+37" />
         <source>register 0x%1</source>
         <translation>暫存器 0x%1</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+5" />
         <source>No reply from node %1 at %2 baud within %3 ms. Check the node ID, the baud rate and parity, and the RS-485 wiring (A/B).</source>
         <translation>節點 %1 在波特率 %2 下 %3 ms 內無回應。請檢查節點 ID、波特率和同位檢查，以及 RS-485 接線（A/B）。</translation>
     </message>
@@ -4363,17 +4328,22 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>對節點 %1 的請求失敗：%2</translation>
     </message>
     <message>
-        <location line="+7" />
+        <location line="+80" />
+        <source>the reply carries another number of registers than asked for</source>
+        <translation>回應中的暫存器數量與請求的不一致</translation>
+    </message>
+    <message>
+        <location line="+25" />
         <source>Reading the identity of node %1</source>
         <translation>正在讀取節點 %1 的身分資訊</translation>
     </message>
     <message>
-        <location line="+26" />
+        <location line="+27" />
         <source>Modbus node %1</source>
         <translation>Modbus 節點 %1</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+4" />
         <source>Node %1 at %2 baud</source>
         <translation>節點 %1，波特率 %2</translation>
     </message>
@@ -4383,17 +4353,17 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>節點 %1 已恢復回應</translation>
     </message>
     <message>
-        <location line="+61" />
+        <location line="+37" />
         <source>not connected</source>
         <translation>未連線</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+1" />
         <source>a read takes 1 to 125 registers</source>
         <translation>每次讀取須為 1 至 125 個暫存器</translation>
     </message>
     <message>
-        <location line="+17" />
+        <location line="+18" />
         <source>Not connected: connect first.</source>
         <translation>未連線：請先連線。</translation>
     </message>
@@ -4408,12 +4378,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>暫存器位址和數值必須在 0..65535 之間。</translation>
     </message>
     <message>
-        <location line="+49" />
+        <location line="+33" />
         <source>Done: %1.</source>
         <translation>完成：%1。</translation>
     </message>
     <message>
-        <location line="+13" />
+        <location line="+14" />
         <source>Written, but reading it back failed: %1</source>
         <translation>已寫入，但回讀失敗：%1</translation>
     </message>
@@ -4428,17 +4398,27 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>回讀值：%1。</translation>
     </message>
     <message>
-        <location line="+92" />
+        <location line="+65" />
+        <source>The serial port %1 cannot run at %2 baud.</source>
+        <translation>串列埠 %1 無法以 %2 波特率運作。</translation>
+    </message>
+    <message>
+        <location line="+33" />
         <source>HEC495 compass (pitch %1 deg)</source>
         <translation>HEC495 羅盤（俯仰角 %1 deg）</translation>
     </message>
     <message>
-        <location line="+26" />
+        <location line="+29" />
         <source>answers, identity unreadable</source>
         <translation>有回應，但無法讀取身分資訊</translation>
     </message>
     <message>
-        <location line="+12" />
+        <location line="+13" />
+        <source>The serial port %1 cannot return to %2 baud.</source>
+        <translation>串列埠 %1 無法恢復到 %2 波特率。</translation>
+    </message>
+    <message>
+        <location line="-43" />
         <source>answers with Modbus exception %1</source>
         <translation>回應 Modbus 例外 %1</translation>
     </message>
@@ -4446,7 +4426,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::device::SessionEngine</name>
     <message>
-        <location filename="../core/device/session_engine.cpp" line="+112" />
+        <location filename="../core/device/session_engine.cpp" line="+113" />
         <source>the connection was closed</source>
         <translation>連線已關閉</translation>
     </message>
@@ -4471,7 +4451,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>串列埠未開啟</translation>
     </message>
     <message>
-        <location line="+49" />
+        <location line="+52" />
         <source>writing to the port failed</source>
         <translation>寫入串列埠失敗</translation>
     </message>
@@ -4484,6 +4464,34 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <location line="+81" />
         <source>Bytes keep arriving on %1 but none of them form a frame: the device probably runs at another baud rate now. Disconnect and connect again with the baud rate set to Auto.</source>
         <translation>%1 上持續收到位元組，但無法組成任何資料框：裝置可能已改用其他波特率。請中斷連線，並將波特率設為「自動」後重新連線。</translation>
+    </message>
+</context>
+<context>
+    <name>imudesk::io::CanTransport</name>
+    <message>
+        <location filename="../core/io/can_transport.cpp" line="+64" />
+        <source>the CAN plugin "%1" is not installed (available: %2)</source>
+        <translation>未安裝 CAN 外掛程式「%1」（可用：%2）</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>cannot create CAN interface %1: %2</source>
+        <translation>無法建立 CAN 介面 %1：%2</translation>
+    </message>
+    <message>
+        <location line="+11" />
+        <source>CAN interface error: %1</source>
+        <translation>CAN 介面錯誤：%1</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>the CAN interface %1 closed; received data is kept</source>
+        <translation>CAN 介面 %1 已關閉；已接收的資料會保留</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>cannot open CAN interface %1: %2 (check the interface name, that it is up, and your permissions)</source>
+        <translation>無法開啟 CAN 介面 %1：%2（請檢查介面名稱、介面是否已啟用以及存取權限）</translation>
     </message>
 </context>
 <context>
