@@ -1,5 +1,6 @@
 // imudesk-cli record: every byte a device sends, to a capture file (README, "Capture file format").
 #include "cli_context.h"
+#include "protocol/hipnuc/ascii_command.h"
 #include "record/capture_header.h"
 
 #include <QFileInfo>
@@ -59,7 +60,7 @@ int cmdRecord(const QStringList &args)
     // The configuration snapshot: the KEY=VALUE lines of LOG COMCONFIG, when the device answers.
     record::CaptureHeader extra;
     std::optional<protocol::hipnuc::AsciiReply> reply;
-    const quint64 query = session.sendCommand(QStringLiteral("LOG COMCONFIG"), 1000);
+    const quint64 query = session.sendCommand(protocol::hipnuc::commands::logComConfig(), 1000);
     QObject::connect(&session, &device::DeviceSession::commandFinished,
                      [&](quint64 done, const protocol::hipnuc::AsciiReply &r) {
                          if (done == query)

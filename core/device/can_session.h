@@ -29,6 +29,8 @@ public:
     void open(const CanSessionOptions &options);
     void close() override;
     QString linkKind() const override;
+    // Frames, not bytes: the CAN monitor shows them (no raw bytes).
+    Capabilities capabilities() const override { return {}; }
 
     const CanSessionOptions &options() const { return m_options; }
     protocol::can::CanProtocol protocol() const; // the configured one, else the detected one

@@ -7,6 +7,7 @@
 #include "device/sample_store.h"
 #include "device/session_types.h"
 
+#include <QFlags>
 #include <QObject>
 #include <QString>
 
@@ -23,6 +24,17 @@ public:
     virtual void close() = 0;
     // Short name of the family and link, e.g. "HiPNUC serial", "HEC495 serial", "HiPNUC Modbus".
     virtual QString linkKind() const = 0;
+
+    // What a link offers beyond state, identity, counters and samples. A workspace shows the
+    // docks and menu entries that go with each, whatever the family.
+    enum class Capability : unsigned {
+        TextCommands = 1 << 0, // commands as typed text with replies (console, command log, version)
+        Settings = 1 << 1,     // the settings table (settings::ConfigurationController), profiles, wizards
+        Recording = 1 << 2,    // a capture of every byte received (Session::startRecording)
+        RawBytes = 1 << 3,     // the bytes on the wire, both directions (Session::rawLog)
+    };
+    Q_DECLARE_FLAGS(Capabilities, Capability)
+    virtual Capabilities capabilities() const { return {}; }
 
     SampleStore &store() { return m_store; }
     const SampleStore &store() const { return m_store; }
@@ -42,5 +54,7 @@ private:
     SampleStore m_store;
     std::atomic<SessionState> m_state{SessionState::Closed};
 };
+
+Q_DECLARE_OPERATORS_FOR_FLAGS(DeviceLink::Capabilities)
 
 } // namespace imudesk::device

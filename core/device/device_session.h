@@ -23,6 +23,11 @@ public:
     // transport: a serial port when null (a simulated link in tests).
     explicit DeviceSession(QObject *parent = nullptr, std::unique_ptr<io::Transport> transport = nullptr);
 
+    Capabilities capabilities() const override
+    {
+        return Capability::TextCommands | Capability::Settings | Capability::Recording | Capability::RawBytes;
+    }
+
     // baud 0 = auto-detect (listen first, then LOG VERSION at each rate).
     void open(const QString &portName, int baud = 0);
     // Text as a user typed it (the console), through the same queue; the reply arrives in

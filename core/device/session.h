@@ -35,6 +35,8 @@ public:
 
     void close() override;
     QString linkKind() const override { return m_linkKind; }
+    // A byte link: its raw bytes can be shown.
+    Capabilities capabilities() const override { return Capability::RawBytes; }
 
     // When the link fails while open (unplugged), wait for the same device to come back (the
     // same USB serial number, else the same path; polled every 500 ms), reopen it at the last

@@ -10,6 +10,7 @@
 #include "models/latest_values_model.h"
 
 #include <QApplication>
+#include <QDockWidget>
 #include <QTest>
 
 using namespace imudesk;
@@ -67,8 +68,15 @@ private Q_SLOTS:
         auto keepAlive = std::make_shared<int>(7);
         std::weak_ptr<int> watch = keepAlive;
         QVERIFY(ws.attachLink(std::move(link), QStringLiteral("Scripted bus"), std::move(keepAlive)));
-        QVERIFY(ws.hasAttachedLink());
+        QVERIFY(!ws.hipnucSession());
         QCOMPARE(&ws.link(), static_cast<device::DeviceLink *>(raw));
+        // A link without capabilities: none of the serial session's panels, no settings panel.
+        QVERIFY(!ws.configPanel());
+        for (QDockWidget *dock : {ws.consoleDock(), ws.rawBytesDock(), ws.commandLogDock(), ws.recordingDock(),
+                                  ws.configDock()}) {
+            QVERIFY2(!ws.offersDock(dock), qPrintable(dock->objectName()));
+            QVERIFY(!dock->isVisible());
+        }
 
         model::DeviceIdentity id;
         id.productName = "HEC495";
@@ -147,7 +155,9 @@ private Q_SLOTS:
         QCOMPARE(ws.chartPanel()->history().size(), size_t(50));
         // Connecting a serial port drops the attached link and starts the views afresh.
         ws.connectPort(QStringLiteral("/dev/imudesk-no-such-port"), 115200);
-        QVERIFY(!ws.hasAttachedLink());
+        QVERIFY(ws.hipnucSession());
+        QVERIFY(ws.configPanel());
+        QVERIFY(ws.offersDock(ws.consoleDock()) && ws.offersDock(ws.configDock()));
         QCOMPARE(ws.chartPanel()->history().size(), size_t(0));
         QTRY_COMPARE(ws.state(), SessionState::Failed);
     }

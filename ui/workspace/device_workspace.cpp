@@ -116,19 +116,17 @@ DeviceWorkspace::DeviceWorkspace(QWidget *parent) : QMainWindow(parent)
     m_consoleDock = makeDock(m_console, QStringLiteral("consoleDock"));
     m_rawView = new RawBytesView(this);
     m_rawView->setObjectName(QStringLiteral("rawBytesView"));
-    m_rawView->setLog(&m_session.rawLog());
     m_rawDock = makeDock(m_rawView, QStringLiteral("rawBytesDock"));
     m_commandLog = new CommandLogWidget(this);
     m_commandLog->setObjectName(QStringLiteral("commandLog"));
     m_commandLogDock = makeDock(m_commandLog, QStringLiteral("commandLogDock"));
-    m_configPanel = new ConfigPanel(m_session, this);
-    m_configPanel->setObjectName(QStringLiteral("configPanel"));
-    m_configDock = makeDock(m_configPanel, QStringLiteral("configDock"));
+    m_configDock = new QDockWidget(this); // its panel comes with a link that has settings
+    m_configDock->setObjectName(QStringLiteral("configDock"));
     m_recording = new RecordingControls(this);
     m_recording->setObjectName(QStringLiteral("recordingControls"));
-    m_recording->setSession(&m_session);
     m_recordingDock = makeDock(m_recording, QStringLiteral("recordingDock"));
     connect(m_recording, &RecordingControls::recordingFailed, this, &DeviceWorkspace::onErrorOccurred);
+    bindLink(std::make_unique<device::DeviceSession>(), {}); // a serial port, until told otherwise
     // The Monitor layout: the settings hidden until asked for (Device > Configuration, or the
     // Configure layout), the panels below the charts closed until needed (View menu, Ctrl+`
     // for the console, an ERR reply, a recording).
@@ -139,13 +137,6 @@ DeviceWorkspace::DeviceWorkspace(QWidget *parent) : QMainWindow(parent)
     createStatusBar();
 
     connect(m_console, &ConsoleWidget::commandSubmitted, this, &DeviceWorkspace::sendConsoleCommand);
-    connect(&m_session, &device::DeviceSession::stateChanged, this, &DeviceWorkspace::onStateChanged);
-    connect(&m_session, &device::DeviceSession::identityChanged, this, &DeviceWorkspace::onIdentityChanged);
-    connect(&m_session, &device::DeviceSession::statsUpdated, this, &DeviceWorkspace::onStatsUpdated);
-    connect(&m_session, &device::DeviceSession::baudDetected, this, &DeviceWorkspace::onBaudDetected);
-    connect(&m_session, &device::DeviceSession::commandFinished, this, &DeviceWorkspace::onCommandFinished);
-    connect(&m_session, &device::DeviceSession::textReceived, m_console, &ConsoleWidget::showText);
-    connect(&m_session, &device::DeviceSession::errorOccurred, this, &DeviceWorkspace::onErrorOccurred);
 
     m_refreshTimer.setInterval(kRefreshIntervalMs);
     m_refreshTimer.setTimerType(Qt::PreciseTimer);
@@ -157,15 +148,27 @@ DeviceWorkspace::DeviceWorkspace(QWidget *parent) : QMainWindow(parent)
 
 DeviceWorkspace::~DeviceWorkspace()
 {
-    // Close the port before the simulator behind it goes away.
-    m_session.disconnect(this);
-    m_session.close();
-    if (m_other) {
-        m_other->disconnect(this);
-        m_other->close();
-        m_other.reset();
-    }
-    m_otherKeepAlive.reset();
+    // The panels that refer to the link go first, then the link (and its port), then the
+    // simulator behind it.
+    delete std::exchange(m_configPanel, nullptr);
+    m_recording->setSession(nullptr);
+    m_rawView->setLog(nullptr);
+    m_link->disconnect(this);
+    m_link->close();
+    m_link.reset();
+    m_linkKeepAlive.reset();
+}
+
+device::DeviceSession *DeviceWorkspace::hipnucSession() const
+{
+    return qobject_cast<device::DeviceSession *>(m_link.get());
+}
+
+device::DeviceSession &DeviceWorkspace::serialSession()
+{
+    if (!hipnucSession())
+        bindLink(std::make_unique<device::DeviceSession>(), {});
+    return *hipnucSession();
 }
 
 bool DeviceWorkspace::attachLink(std::unique_ptr<device::DeviceLink> link, const QString &target,
@@ -174,44 +177,57 @@ bool DeviceWorkspace::attachLink(std::unique_ptr<device::DeviceLink> link, const
     if (isBusy() || !link)
         return false;
     stopSimulator();
-    detachLink();
-    m_other = std::move(link);
-    m_otherKeepAlive = std::move(keepAlive);
-    resetViews();
+    bindLink(std::move(link), std::move(keepAlive));
     m_target = target;
-    connect(m_other.get(), &device::DeviceLink::stateChanged, this, [this](SessionState state, const QString &detail) {
-        if (!busyState(state))
-            m_otherKeepAlive.reset(); // e.g. stop the simulator behind a closed link
-        onStateChanged(state, detail);
-    });
-    connect(m_other.get(), &device::DeviceLink::identityChanged, this, &DeviceWorkspace::onIdentityChanged);
-    connect(m_other.get(), &device::DeviceLink::statsUpdated, this, &DeviceWorkspace::onStatsUpdated);
-    connect(m_other.get(), &device::DeviceLink::errorOccurred, this, &DeviceWorkspace::onErrorOccurred);
-    m_console->setInputEnabled(false); // ASCII commands are for the HiPNUC serial link
-    m_configPanel->setEnabled(false);
-    m_recording->setEnabled(false);
-    for (QDockWidget *dock : serialOnlyDocks())
-        dock->hide(); // the HiPNUC serial link's panels: not for this link
     Q_EMIT titleChanged(title());
     return true;
 }
 
-void DeviceWorkspace::detachLink()
+void DeviceWorkspace::bindLink(std::unique_ptr<device::DeviceLink> link, std::shared_ptr<void> keepAlive)
 {
-    if (!m_other)
-        return;
+    // What refers to the old link goes first: its docks, the settings panel, the recorder.
     for (QDockWidget *dock : std::exchange(m_linkDocks, {})) {
         removeDockWidget(dock);
-        delete dock; // its widgets may refer to the link: they go first
+        delete dock;
     }
     m_linkDockPlaces.clear();
-    m_configPanel->setEnabled(true);
-    m_recording->setEnabled(true);
-    m_other->disconnect(this);
-    m_other->close();
-    m_other.reset();
-    m_otherKeepAlive.reset();
+    delete std::exchange(m_configPanel, nullptr);
+    m_recording->setSession(nullptr);
+    m_rawView->setLog(nullptr);
+    if (m_link) {
+        m_link->disconnect(this);
+        m_link->close();
+    }
+    m_link = std::move(link);
+    m_linkKeepAlive = std::move(keepAlive);
     resetViews();
+
+    device::DeviceLink *l = m_link.get();
+    connect(l, &device::DeviceLink::stateChanged, this, [this](SessionState state, const QString &detail) {
+        if (!busyState(state))
+            m_linkKeepAlive.reset(); // e.g. stop the simulator behind a closed link
+        onStateChanged(state, detail);
+    });
+    connect(l, &device::DeviceLink::identityChanged, this, &DeviceWorkspace::onIdentityChanged);
+    connect(l, &device::DeviceLink::statsUpdated, this, &DeviceWorkspace::onStatsUpdated);
+    connect(l, &device::DeviceLink::errorOccurred, this, &DeviceWorkspace::onErrorOccurred);
+    if (auto *session = qobject_cast<device::Session *>(l))
+        m_rawView->setLog(&session->rawLog());
+    if (device::DeviceSession *s = hipnucSession()) {
+        connect(s, &device::DeviceSession::baudDetected, this, &DeviceWorkspace::onBaudDetected);
+        connect(s, &device::DeviceSession::commandFinished, this, &DeviceWorkspace::onCommandFinished);
+        connect(s, &device::DeviceSession::textReceived, m_console, &ConsoleWidget::showText);
+        m_recording->setSession(s);
+        m_configPanel = new ConfigPanel(*s, m_configDock);
+        m_configPanel->setObjectName(QStringLiteral("configPanel"));
+        m_configDock->setWidget(m_configPanel);
+    }
+    const auto caps = capabilities();
+    m_console->setInputEnabled(caps.testFlag(device::DeviceLink::Capability::TextCommands));
+    m_recording->setEnabled(caps.testFlag(device::DeviceLink::Capability::Recording));
+    for (const auto &[dock, capability] : capabilityDocks())
+        if (!caps.testFlag(capability))
+            dock->hide(); // not for this link
 }
 
 void DeviceWorkspace::applyPreferences(const Preferences &prefs)
@@ -225,8 +241,8 @@ void DeviceWorkspace::applyPreferences(const Preferences &prefs)
     m_autoReconnect = prefs.autoReconnect;
     m_recording->setFolder(prefs.effectiveRecordingFolder());
     m_recording->setPattern(prefs.recordingPattern);
-    if (isBusy() && !m_simulator && !m_other)
-        m_session.setAutoReconnect(prefs.autoReconnect);
+    if (isBusy() && !m_simulator && hipnucSession())
+        hipnucSession()->setAutoReconnect(prefs.autoReconnect);
 }
 
 void DeviceWorkspace::resetViews()
@@ -277,15 +293,15 @@ void DeviceWorkspace::connectPort(const QString &port, int baud)
     if (isBusy())
         return;
     stopSimulator();
-    detachLink();
+    device::DeviceSession &session = serialSession();
     m_identity.reset();
     m_stats.reset();
     m_baud = baud;
     m_target = port;
     m_configPanel->setPortName(port);
-    m_session.setAutoReconnect(m_autoReconnect);
+    session.setAutoReconnect(m_autoReconnect);
     Q_EMIT titleChanged(title());
-    m_session.open(port, baud);
+    session.open(port, baud);
 }
 
 bool DeviceWorkspace::connectSimulated(const sim::SimOptions &options, int baud, QString *error)
@@ -296,7 +312,6 @@ bool DeviceWorkspace::connectSimulated(const sim::SimOptions &options, int baud,
         return false;
     }
     stopSimulator();
-    detachLink();
     auto simulator = std::make_unique<sim::PtySimulator>(options);
     QString why;
     if (!simulator->start(&why)) {
@@ -304,16 +319,17 @@ bool DeviceWorkspace::connectSimulated(const sim::SimOptions &options, int baud,
             *error = tr("The simulated device could not start: %1").arg(why);
         return false;
     }
+    device::DeviceSession &session = serialSession();
     m_simulator = std::move(simulator);
     m_identity.reset();
     m_stats.reset();
     m_baud = baud;
-    m_session.setAutoReconnect(false); // a pty's number is reused: never wait for it to "come back"
+    session.setAutoReconnect(false); // a pty's number is reused: never wait for it to "come back"
     m_target = tr("Simulated %1 (firmware %2)")
                    .arg(QString::fromStdString(options.model), QString::fromStdString(options.firmware));
     Q_EMIT titleChanged(title());
     m_configPanel->setPortName(m_simulator->devicePath());
-    m_session.open(m_simulator->devicePath(), baud);
+    session.open(m_simulator->devicePath(), baud);
     return true;
 }
 
@@ -330,7 +346,7 @@ QString DeviceWorkspace::releasePort()
     const QString port = m_simulator ? m_simulator->devicePath() : m_target;
     m_keepSimulator = m_simulator != nullptr;
     if (isBusy())
-        m_session.close();
+        m_link->close();
     return port;
 }
 
@@ -346,12 +362,15 @@ void DeviceWorkspace::reclaimPort(const QString &port, int baud)
     m_identity.reset();
     m_stats.reset();
     m_baud = baud;
-    m_session.open(m_simulator->devicePath(), baud);
+    serialSession().open(m_simulator->devicePath(), baud);
 }
 
 void DeviceWorkspace::sendConsoleCommand(const QString &text)
 {
-    const quint64 id = m_session.sendCommand(text, kCommandTimeoutMs);
+    device::DeviceSession *session = hipnucSession();
+    if (!session)
+        return; // the console takes no input for this link
+    const quint64 id = session->sendCommand(text, kCommandTimeoutMs);
     m_console->showCommand(id, text);
     m_commandLog->record(id, text);
 }

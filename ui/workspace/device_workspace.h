@@ -9,9 +9,9 @@
 // port choice, the tool actions, the preferences and their dialog, window settings, the size of
 // work-place dialogs, the language switcher, the workspace's docks (console, command log, raw
 // bytes, status flags) and the painting helpers shared by self-painted widgets. It mirrors
-// core/device: a workspace holds a device::DeviceSession, or another device::DeviceLink
-// (Hec495Session, ModbusSession, CanSession) attached to it, and, for the simulator entries, a
-// device from core/sim. Its views read the link's SampleStore and RawByteLog on the view clock;
+// core/device: a workspace holds one device::DeviceLink (DeviceSession, Hec495Session,
+// ModbusSession, CanSession, a replay) and shows the docks its capabilities() call for, and, for
+// the simulator entries, a device from core/sim. Its views read the link's SampleStore and RawByteLog on the view clock;
 // the values dock shows models::LatestValuesModel and the command log models::CommandLogModel,
 // each in a QTableView (the console's completer uses a QStringListModel).
 #include "device/device_session.h"
@@ -77,19 +77,19 @@ public:
     void connectPort(const QString &port, int baud);
     // Starts a simulated device on a pseudo-terminal and connects to it like to hardware.
     bool connectSimulated(const sim::SimOptions &options, int baud, QString *error = nullptr);
-    // Shows another family's session (a HEC495, a Modbus or CAN device, a replayed capture)
-    // in this workspace's live views in place of the HiPNUC serial session; the link should
-    // be opened by the caller after this returns. `keepAlive` holds what the link needs
-    // (e.g. its simulator) and is released when the link closes or fails. False while busy.
+    // Shows another link (a HEC495, a Modbus or CAN device, a replayed capture) in this
+    // workspace's live views in place of the current one; the link should be opened by the
+    // caller after this returns. `keepAlive` holds what the link needs (e.g. its simulator)
+    // and is released when the link closes or fails. False while busy. connectPort() and
+    // connectSimulated() go back to a HiPNUC serial session.
     bool attachLink(std::unique_ptr<device::DeviceLink> link, const QString &target,
                     std::shared_ptr<void> keepAlive = {});
-    // The link the views show: the serial session unless another link is attached.
-    device::DeviceLink &link() { return m_other ? *m_other : static_cast<device::DeviceLink &>(m_session); }
-    const device::DeviceLink &link() const
-    {
-        return m_other ? *m_other : static_cast<const device::DeviceLink &>(m_session);
-    }
-    bool hasAttachedLink() const { return m_other != nullptr; }
+    // The link the views show (a HiPNUC serial session, not yet open, in a new workspace).
+    device::DeviceLink &link() { return *m_link; }
+    const device::DeviceLink &link() const { return *m_link; }
+    device::DeviceLink::Capabilities capabilities() const { return m_link->capabilities(); }
+    // The link as a HiPNUC serial session, or null for another family.
+    device::DeviceSession *hipnucSession() const;
     // Where a link's dock goes: as a tab in front of the 3D attitude (a view that replaces it,
     // the compass dial), as a tab behind the values (settings, registers: the values stay in
     // front), or below the charts (monitors and transport controls).
@@ -98,7 +98,8 @@ public:
     // controls, ...): shown while the link is attached, deleted with it.
     void addLinkDock(QDockWidget *dock, LinkDockPlace place);
     QList<QDockWidget *> linkDocks() const { return m_linkDocks; }
-    // The HiPNUC serial link's configuration panel and recording controls.
+    // The settings of a link with Capability::Settings (null for other links), and the
+    // recording controls.
     ConfigPanel *configPanel() const { return m_configPanel; }
     QDockWidget *configDock() const { return m_configDock; }
     RecordingControls *recordingControls() const { return m_recording; }
@@ -111,8 +112,8 @@ public:
     // Sends a command as typed in the console (shown there with its reply).
     void sendConsoleCommand(const QString &text);
 
-    device::DeviceSession &session() { return m_session; }
-    const device::DeviceSession &session() const { return m_session; }
+    // The HiPNUC serial session; only while hipnucSession() is not null.
+    device::DeviceSession &session() const { return *hipnucSession(); }
     sim::PtySimulator *simulator() const { return m_simulator.get(); }
     // Frees the serial port for another user (the firmware update), keeping a simulated module
     // running behind it; returns the port. reclaimPort() connects this tab to it again.
@@ -160,8 +161,7 @@ public:
     QDockWidget *consoleDock() const { return m_consoleDock; }
     QDockWidget *rawBytesDock() const { return m_rawDock; }
     QDockWidget *commandLogDock() const { return m_commandLogDock; }
-    // Whether the current link has a use for `dock` (the HiPNUC serial panels are not
-    // offered for other links).
+    // Whether the current link has a use for `dock` (by its capabilities).
     bool offersDock(const QDockWidget *dock) const;
     // Shows a dock the link offers and brings it to the front.
     void openDock(QDockWidget *dock);
@@ -184,12 +184,16 @@ protected:
 private:
     void createStatusBar();
     void fitDocks();
-    QList<QDockWidget *> serialOnlyDocks() const;
+    // The docks that need a capability, with it.
+    QList<QPair<QDockWidget *, device::DeviceLink::Capability>> capabilityDocks() const;
     void retranslateUi();
     void resizeValueColumns();
     void stopSimulator();
-    // Back to the serial session (drops an attached link); the views start afresh.
-    void detachLink();
+    // Makes `link` the one shown: the old link's docks and panels go, then the old link; the
+    // views start afresh and the docks follow the new link's capabilities.
+    void bindLink(std::unique_ptr<device::DeviceLink> link, std::shared_ptr<void> keepAlive);
+    // A HiPNUC serial session to open (the current one if it is one).
+    device::DeviceSession &serialSession();
     void resetViews();
 
     void onStateChanged(device::SessionState state, const QString &detail);
@@ -203,12 +207,11 @@ private:
     void updateIdentityLabel();
     void updateStatsLabel();
 
-    // Declared before the session: the session (and its port) goes first on destruction.
+    // Declared before the link: the link (and its port) goes first on destruction.
     std::unique_ptr<sim::PtySimulator> m_simulator;
-    device::DeviceSession m_session;
-    // An attached link of another family (declared after its keep-alive: it goes first).
-    std::shared_ptr<void> m_otherKeepAlive;
-    std::unique_ptr<device::DeviceLink> m_other;
+    // What the link needs (declared before it: the link goes first).
+    std::shared_ptr<void> m_linkKeepAlive;
+    std::unique_ptr<device::DeviceLink> m_link;
 
     models::LatestValuesModel *m_valuesModel = nullptr;
     QTableView *m_valuesView = nullptr;

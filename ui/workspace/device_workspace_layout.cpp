@@ -134,14 +134,22 @@ std::optional<DeviceWorkspace::LayoutPreset> DeviceWorkspace::presetFromKey(cons
     return std::nullopt;
 }
 
-QList<QDockWidget *> DeviceWorkspace::serialOnlyDocks() const
+QList<QPair<QDockWidget *, device::DeviceLink::Capability>> DeviceWorkspace::capabilityDocks() const
 {
-    return {m_configDock, m_consoleDock, m_rawDock, m_commandLogDock, m_recordingDock};
+    using C = device::DeviceLink::Capability;
+    return {{m_configDock, C::Settings},
+            {m_consoleDock, C::TextCommands},
+            {m_commandLogDock, C::TextCommands},
+            {m_rawDock, C::RawBytes},
+            {m_recordingDock, C::Recording}};
 }
 
 bool DeviceWorkspace::offersDock(const QDockWidget *dock) const
 {
-    return !m_other || !serialOnlyDocks().contains(const_cast<QDockWidget *>(dock));
+    for (const auto &[d, capability] : capabilityDocks())
+        if (d == dock)
+            return capabilities().testFlag(capability);
+    return true;
 }
 
 void DeviceWorkspace::openDock(QDockWidget *dock)
@@ -155,7 +163,7 @@ void DeviceWorkspace::openDock(QDockWidget *dock)
 void DeviceWorkspace::applyPreset(LayoutPreset preset)
 {
     m_preset = preset;
-    const bool serial = !m_other;
+    const auto offers = [this](const QDockWidget *dock) { return offersDock(dock); };
     // Every built-in dock back home, docked: values above the attitude on the right (the
     // settings behind the values), the serial panels as tabs below the charts.
     for (QDockWidget *dock : {m_valuesDock, m_attitudeDock, m_configDock}) {
@@ -176,12 +184,12 @@ void DeviceWorkspace::applyPreset(LayoutPreset preset)
     // figures); Configure gives it to the settings table.
     m_valuesDock->setVisible(preset != LayoutPreset::Calibrate);
     m_attitudeDock->setVisible(preset == LayoutPreset::Monitor || preset == LayoutPreset::Calibrate);
-    m_configDock->setVisible(serial && preset == LayoutPreset::Configure);
+    m_configDock->setVisible(offers(m_configDock) && preset == LayoutPreset::Configure);
     // Configure gives the height to the charts (the settings table shows each reply; an ERR
     // opens the console); Calibrate keeps the console for the wizards' commands.
-    m_consoleDock->setVisible(serial && preset == LayoutPreset::Calibrate);
-    m_rawDock->setVisible(serial && preset == LayoutPreset::Analyse);
-    m_commandLogDock->setVisible(serial && preset == LayoutPreset::Analyse);
+    m_consoleDock->setVisible(offers(m_consoleDock) && preset == LayoutPreset::Calibrate);
+    m_rawDock->setVisible(offers(m_rawDock) && preset == LayoutPreset::Analyse);
+    m_commandLogDock->setVisible(offers(m_commandLogDock) && preset == LayoutPreset::Analyse);
     m_recordingDock->setVisible(false);
     if (preset == LayoutPreset::Configure)
         m_configDock->raise();
@@ -245,7 +253,7 @@ QStringList DeviceWorkspace::repairLayout()
             repaired << tr("%1 was floating off the screen").arg(dock->windowTitle());
         }
     }
-    for (QDockWidget *dock : serialOnlyDocks())
+    for (const auto &[dock, capability] : capabilityDocks())
         if (!offersDock(dock) && !dock->isHidden()) {
             dock->hide();
             repaired << tr("%1 is not used by this link").arg(dock->windowTitle());

@@ -1,6 +1,7 @@
 #include "workspace/main_window.h"
 
 #include "device/family_detector.h"
+#include "protocol/hipnuc/ascii_command.h"
 #include "workspace/link_factory.h"
 #include "workspace/preferences_dialog.h"
 #include "workspace/tool_actions.h"
@@ -460,7 +461,8 @@ void MainWindow::updateActions()
     const bool busy = ws && ws->isBusy();
     m_connectAction->setEnabled(!busy);
     m_disconnectAction->setEnabled(busy);
-    m_versionAction->setEnabled(ws && ws->state() == SessionState::Connected && !ws->hasAttachedLink());
+    m_versionAction->setEnabled(ws && ws->state() == SessionState::Connected
+                                && ws->capabilities().testFlag(device::DeviceLink::Capability::TextCommands));
     m_tools->update(ws);
 }
 
@@ -540,7 +542,10 @@ void MainWindow::createActions()
 
     m_versionAction = new QAction(this);
     m_versionAction->setObjectName(QStringLiteral("versionAction"));
-    connect(m_versionAction, &QAction::triggered, this, [this] { console()->submit(QStringLiteral("LOG VERSION")); });
+    connect(m_versionAction, &QAction::triggered, this, [this] { 
+        // Through the console, so that the question and the answer show there.
+        console()->submit(QString::fromStdString(protocol::hipnuc::commands::logVersion().text));
+    });
 
     m_preferencesAction = new QAction(this);
     m_preferencesAction->setObjectName(QStringLiteral("preferencesAction"));

@@ -149,24 +149,26 @@ void ToolActions::retranslate()
 void ToolActions::update(const DeviceWorkspace *ws)
 {
     const bool busy = ws && ws->isBusy();
-    const bool serial = ws && !ws->hasAttachedLink();
+    using C = device::DeviceLink::Capability;
+    const auto caps = ws ? ws->capabilities() : device::DeviceLink::Capabilities{};
+    const bool settings = caps.testFlag(C::Settings);
     const bool connected = ws && ws->state() == SessionState::Connected;
     m_modbus->setEnabled(!busy);
     m_can->setEnabled(!busy);
     m_openCapture->setEnabled(!busy);
     m_importCsv->setEnabled(!busy);
     m_scanModbus->setEnabled(connected && dynamic_cast<const device::ModbusSession *>(&ws->link()));
-    m_configuration->setEnabled(serial);
-    m_profiles->setEnabled(serial && connected);
-    m_record->setEnabled(serial);
+    m_configuration->setEnabled(settings);
+    m_profiles->setEnabled(settings && connected);
+    m_record->setEnabled(caps.testFlag(C::Recording));
     const bool hasMag = ws && ws->identity() && ws->identity()->hasMagnetometer() && ws->identity()->firmware;
-    m_magCal->setEnabled(serial && connected && hasMag);
-    m_gyroCal->setEnabled(serial && connected);
-    m_attitudeReset->setEnabled(serial && connected);
+    m_magCal->setEnabled(settings && connected && hasMag);
+    m_gyroCal->setEnabled(settings && connected);
+    m_attitudeReset->setEnabled(settings && connected);
     m_compassCal->setEnabled(connected && dynamic_cast<const device::Hec495Session *>(&ws->link()));
     // The update opens the port itself: a connected HiPNUC serial device, or a HiPNUC module
     // on a CANopen bus (the dialog opens its own CAN device beside the session's).
-    m_firmware->setEnabled((serial && connected) || (connected && canopenLink(ws)));
+    m_firmware->setEnabled((settings && connected) || (connected && canopenLink(ws)));
 }
 
 bool ToolActions::openCapture(const QString &path)
@@ -292,7 +294,7 @@ void ToolActions::showRecording()
 void ToolActions::openProfiles()
 {
     DeviceWorkspace *ws = m_window->currentWorkspace();
-    if (!ws)
+    if (!ws || !ws->hipnucSession())
         return;
     auto *dialog = new ProfileDialog(ws->session(), m_window);
     dialog->setAttribute(Qt::WA_DeleteOnClose);
@@ -305,7 +307,7 @@ void ToolActions::openCalculator()
     auto *calculator = new BandwidthCalculator(m_window);
     calculator->setWindowFlag(Qt::Window);
     calculator->setAttribute(Qt::WA_DeleteOnClose);
-    if (DeviceWorkspace *ws = m_window->currentWorkspace(); ws && !ws->hasAttachedLink())
+    if (DeviceWorkspace *ws = m_window->currentWorkspace(); ws && ws->configPanel())
         calculator->setConfiguration(ws->configPanel()->controller().configuration());
     calculator->show();
 }
@@ -313,7 +315,7 @@ void ToolActions::openCalculator()
 void ToolActions::openMagCal()
 {
     DeviceWorkspace *ws = m_window->currentWorkspace();
-    if (!ws || ws->hasAttachedLink() || !ws->identity() || !ws->identity()->firmware)
+    if (!ws || !ws->hipnucSession() || !ws->identity() || !ws->identity()->firmware)
         return;
     auto *wizard = new MagCalibrationWizard(ws->session(), *ws->identity()->firmware, m_window);
     wizard->runSaver().setIdentity(*ws->identity());
@@ -324,7 +326,7 @@ void ToolActions::openMagCal()
 void ToolActions::openGyroCal()
 {
     DeviceWorkspace *ws = m_window->currentWorkspace();
-    if (!ws || ws->hasAttachedLink())
+    if (!ws || !ws->hipnucSession())
         return;
     auto *wizard = new GyroScaleWizard(ws->session(), m_window);
     if (ws->identity())
@@ -336,7 +338,7 @@ void ToolActions::openGyroCal()
 void ToolActions::openAttitudeReset()
 {
     DeviceWorkspace *ws = m_window->currentWorkspace();
-    if (!ws || ws->hasAttachedLink())
+    if (!ws || !ws->hipnucSession())
         return;
     auto *wizard = new AttitudeResetWizard(ws->session(), m_window);
     if (ws->identity())
@@ -392,7 +394,7 @@ void ToolActions::updateFirmware()
         dialog->open();
         return;
     }
-    if (ws->hasAttachedLink())
+    if (!ws->hipnucSession())
         return;
     const int baud = ws->baud();
     const auto identity = ws->identity();
