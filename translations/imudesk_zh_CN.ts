@@ -4762,7 +4762,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::models::LatestValuesModel</name>
     <message>
-        <location filename="../core/models/latest_values_model.cpp" line="+144" />
+        <location filename="../core/models/latest_values_model.cpp" line="+120" />
         <source>Quantity</source>
         <translation>物理量</translation>
     </message>
@@ -4777,7 +4777,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>单位</translation>
     </message>
     <message>
-        <location line="+82" />
+        <location line="+78" />
         <source>0 invalid</source>
         <translation>0 解无效</translation>
     </message>
@@ -4802,52 +4802,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>无 (%1)</translation>
     </message>
     <message>
-        <location line="+14" />
-        <source>Acceleration %1</source>
-        <translation>加速度 %1</translation>
-    </message>
-    <message>
-        <location line="+3" />
-        <source>Angular velocity %1</source>
-        <translation>角速度 %1</translation>
-    </message>
-    <message>
-        <location line="+3" />
-        <source>Magnetic field %1</source>
-        <translation>磁场 %1</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>Roll</source>
-        <translation>横滚角</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>Pitch</source>
-        <translation>俯仰角</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>Yaw</source>
-        <translation>航向角</translation>
-    </message>
-    <message>
-        <location line="+4" />
-        <source>Quaternion %1</source>
-        <translation>四元数 %1</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>Air pressure</source>
-        <translation>气压</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>Temperature</source>
-        <translation>温度</translation>
-    </message>
-    <message>
-        <location line="+1" />
+        <location line="+13" />
         <source>Device time</source>
         <translation>设备时间</translation>
     </message>
@@ -5174,6 +5129,63 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <location line="+1" />
         <source>Read back by</source>
         <translation>回读方式</translation>
+    </message>
+</context>
+<context>
+    <name>imudesk::plot::Channel</name>
+    <message>
+        <location filename="../core/plot/channel_catalog.cpp" line="+18" />
+        <location line="+1" />
+        <location line="+1" />
+        <source>Acceleration %1</source>
+        <translation>加速度 %1</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <location line="+1" />
+        <location line="+1" />
+        <source>Angular velocity %1</source>
+        <translation>角速度 %1</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <location line="+1" />
+        <location line="+1" />
+        <source>Magnetic field %1</source>
+        <translation>磁场 %1</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Roll</source>
+        <translation>横滚角</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Pitch</source>
+        <translation>俯仰角</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Yaw</source>
+        <translation>航向角</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <location line="+1" />
+        <location line="+1" />
+        <location line="+1" />
+        <source>Quaternion %1</source>
+        <translation>四元数 %1</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Air pressure</source>
+        <translation>气压</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Temperature</source>
+        <translation>温度</translation>
     </message>
 </context>
 <context>
@@ -6451,7 +6463,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::ChartView</name>
     <message>
-        <location filename="../ui/charts/chart_view.cpp" line="+94" />
+        <location filename="../ui/charts/chart_view.cpp" line="+90" />
         <source>Accelerometer</source>
         <translation>加速度计</translation>
     </message>
@@ -6483,12 +6495,11 @@ Keep the module in place while turning it, and calibrate it together with everyt
     <message>
         <location line="+1" />
         <location line="+14" />
-        <location line="+39" />
         <source>Temperature</source>
         <translation>温度</translation>
     </message>
     <message>
-        <location line="-45" />
+        <location line="-6" />
         <source>Acceleration</source>
         <translation>加速度</translation>
     </message>
@@ -6514,12 +6525,11 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
     <message>
         <location line="+1" />
-        <location line="+39" />
         <source>Pressure</source>
         <translation>气压</translation>
     </message>
     <message>
-        <location line="-30" />
+        <location line="+9" />
         <source>G</source>
         <translation>G</translation>
     </message>
@@ -6549,42 +6559,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>°C</translation>
     </message>
     <message>
-        <location line="+21" />
-        <source>Roll</source>
-        <translation>横滚角</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>Pitch</source>
-        <translation>俯仰角</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>Yaw</source>
-        <translation>航向角</translation>
-    </message>
-    <message>
-        <location line="+10" />
-        <source>Acceleration %1</source>
-        <translation>加速度 %1</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>Angular velocity %1</source>
-        <translation>角速度 %1</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>Magnetic field %1</source>
-        <translation>磁场 %1</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>Quaternion %1</source>
-        <translation>四元数 %1</translation>
-    </message>
-    <message>
-        <location line="+40" />
+        <location line="+28" />
         <source>Device time (s)</source>
         <translation>设备时间（s）</translation>
     </message>
@@ -7137,7 +7112,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::DeviceWorkspace</name>
     <message>
-        <location filename="../ui/workspace/device_workspace.cpp" line="+249" />
+        <location filename="../ui/workspace/device_workspace.cpp" line="+265" />
         <source>New connection</source>
         <translation>新连接</translation>
     </message>
@@ -7152,17 +7127,17 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>请先断开，再连接模拟设备。</translation>
     </message>
     <message>
-        <location line="+9" />
+        <location line="+8" />
         <source>The simulated device could not start: %1</source>
         <translation>模拟设备无法启动：%1</translation>
     </message>
     <message>
-        <location line="+8" />
+        <location line="+9" />
         <source>Simulated %1 (firmware %2)</source>
         <translation>模拟 %1（固件 %2）</translation>
     </message>
     <message>
-        <location line="+171" />
+        <location line="+174" />
         <source>Not connected</source>
         <translation>未连接</translation>
     </message>
@@ -7314,7 +7289,7 @@ Link load = bytes per second × 10 bits / baud rate.</source>
         <translation>分析(&amp;N)</translation>
     </message>
     <message>
-        <location line="+127" />
+        <location line="+135" />
         <source>%1 was floating off the screen</source>
         <translation>%1 浮动在屏幕之外</translation>
     </message>
@@ -8535,7 +8510,7 @@ Samples: %3</source>
 <context>
     <name>imudesk::ui::MainWindow</name>
     <message>
-        <location filename="../ui/workspace/main_window.cpp" line="+351" />
+        <location filename="../ui/workspace/main_window.cpp" line="+352" />
         <source>Choose a port first.</source>
         <translation>请先选择串口。</translation>
     </message>
@@ -8570,7 +8545,7 @@ Samples: %3</source>
         <translation>%1 – %2</translation>
     </message>
     <message>
-        <location line="+66" />
+        <location line="+67" />
         <source>Save screenshot</source>
         <translation>保存截图</translation>
     </message>
@@ -8580,7 +8555,7 @@ Samples: %3</source>
         <translation>PNG 图像 (*.png)</translation>
     </message>
     <message>
-        <location line="+64" />
+        <location line="+67" />
         <source>&amp;File</source>
         <translation>文件(&amp;F)</translation>
     </message>
@@ -9739,7 +9714,7 @@ Samples: %3</source>
         <translation>校准(&amp;C)</translation>
     </message>
     <message>
-        <location line="+41" />
+        <location line="+43" />
         <source>%1 could not be imported: %2</source>
         <translation>无法导入 %1：%2</translation>
     </message>

@@ -1,6 +1,7 @@
 #include "latest_values_model.h"
 
 #include "model/main_status.h"
+#include "plot/channel_catalog.h"
 
 #include <QStringList>
 
@@ -12,28 +13,19 @@ using model::Sample;
 using model::SampleField;
 using Row = LatestValuesModel::Row;
 
+// The first rows are the chartable channels, in plot::Channel order (the catalogue names them).
+static_assert(int(Row::Temperature) + 1 == plot::kChannelCount && int(Row::AccX) == int(plot::Channel::AccX));
+bool isChannel(Row row)
+{
+    return int(row) < plot::kChannelCount;
+}
+
 // The Sample field a row needs, 0 when the row needs none.
 uint32_t fieldOf(Row row)
 {
+    if (isChannel(row))
+        return plot::channelInfo(plot::Channel(row)).field;
     switch (row) {
-    case Row::AccX:
-    case Row::AccY:
-    case Row::AccZ: return model::FieldAcc;
-    case Row::GyrX:
-    case Row::GyrY:
-    case Row::GyrZ: return model::FieldGyr;
-    case Row::MagX:
-    case Row::MagY:
-    case Row::MagZ: return model::FieldMag;
-    case Row::Roll:
-    case Row::Pitch:
-    case Row::Yaw: return model::FieldEuler;
-    case Row::QuatW:
-    case Row::QuatX:
-    case Row::QuatY:
-    case Row::QuatZ: return model::FieldQuat;
-    case Row::Pressure: return model::FieldPressure;
-    case Row::Temperature: return model::FieldTemperature;
     case Row::DeviceTime: return model::FieldDeviceTime;
     case Row::InsStatus: return model::FieldInsStatus;
     case Row::Latitude:
@@ -48,8 +40,7 @@ uint32_t fieldOf(Row row)
     case Row::InclinationX:
     case Row::InclinationY: return model::FieldInclination;
     case Row::StatusFlags: return model::FieldMainStatus;
-    case Row::FrameType:
-    case Row::RowCount: break;
+    default: break; // the channel rows (above), the frame type
     }
     return 0;
 }
@@ -70,22 +61,7 @@ QString fixed(double v, int decimals)
 
 QString axisName(Row row)
 {
-    switch (row) {
-    case Row::AccX:
-    case Row::GyrX:
-    case Row::MagX:
-    case Row::QuatX: return QStringLiteral("X");
-    case Row::AccY:
-    case Row::GyrY:
-    case Row::MagY:
-    case Row::QuatY: return QStringLiteral("Y");
-    case Row::AccZ:
-    case Row::GyrZ:
-    case Row::MagZ:
-    case Row::QuatZ: return QStringLiteral("Z");
-    case Row::QuatW: return QStringLiteral("W");
-    default: return QString();
-    }
+    return isChannel(row) ? QLatin1String(plot::channelInfo(plot::Channel(row)).axis) : QString();
 }
 
 } // namespace
@@ -203,25 +179,21 @@ QString LatestValuesModel::formatValue(Row row, const model::Sample &s) const
         return s.source.empty() ? missingText() : QString::fromStdString(s.source);
     if (!(s.fields & fieldOf(row)))
         return missingText();
+    if (isChannel(row)) {
+        const plot::ChannelInfo &i = plot::channelInfo(plot::Channel(row));
+        const double v = i.read(s);
+        switch (i.group) {
+        case plot::ChannelGroup::Accelerometer: return fixed(v * m_units.accelFactor(), 4);
+        case plot::ChannelGroup::Gyroscope:
+            return fixed(v * m_units.rateFactor(), m_units.rate == model::RateUnit::RadiansPerSecond ? 5 : 3);
+        case plot::ChannelGroup::Magnetometer: return fixed(v, 3);
+        case plot::ChannelGroup::Euler: return fixed(v, 2);
+        case plot::ChannelGroup::Quaternion: return fixed(v, 4);
+        case plot::ChannelGroup::Pressure:
+        case plot::ChannelGroup::Temperature: return fixed(v, 1);
+        }
+    }
     switch (row) {
-    case AccX: return fixed(s.acc.x * m_units.accelFactor(), 4);
-    case AccY: return fixed(s.acc.y * m_units.accelFactor(), 4);
-    case AccZ: return fixed(s.acc.z * m_units.accelFactor(), 4);
-    case GyrX: return fixed(s.gyr.x * m_units.rateFactor(), m_units.rate == model::RateUnit::RadiansPerSecond ? 5 : 3);
-    case GyrY: return fixed(s.gyr.y * m_units.rateFactor(), m_units.rate == model::RateUnit::RadiansPerSecond ? 5 : 3);
-    case GyrZ: return fixed(s.gyr.z * m_units.rateFactor(), m_units.rate == model::RateUnit::RadiansPerSecond ? 5 : 3);
-    case MagX: return fixed(s.mag.x, 3);
-    case MagY: return fixed(s.mag.y, 3);
-    case MagZ: return fixed(s.mag.z, 3);
-    case Roll: return fixed(s.roll, 2);
-    case Pitch: return fixed(s.pitch, 2);
-    case Yaw: return fixed(s.yaw, 2);
-    case QuatW: return fixed(s.quat.w, 4);
-    case QuatX: return fixed(s.quat.x, 4);
-    case QuatY: return fixed(s.quat.y, 4);
-    case QuatZ: return fixed(s.quat.z, 4);
-    case Pressure: return fixed(s.pressurePa, 1);
-    case Temperature: return fixed(s.temperatureC, 1);
     case DeviceTime: return fixed(s.deviceTimeMs, 0);
     case InsStatus: {
         switch (s.insStatus) {
@@ -254,33 +226,16 @@ QString LatestValuesModel::formatValue(Row row, const model::Sample &s) const
             return tr("none (%1)").arg(hex);
         return QStringLiteral("%1 (%2)").arg(names.join(QLatin1Char(' ')), hex);
     }
-    case FrameType:
-    case RowCount: break;
+    default: break; // the channel rows (above)
     }
     return missingText();
 }
 
 QString LatestValuesModel::quantityName(Row row) const
 {
+    if (isChannel(row))
+        return plot::channelName(plot::Channel(row));
     switch (row) {
-    case AccX:
-    case AccY:
-    case AccZ: return tr("Acceleration %1").arg(axisName(row));
-    case GyrX:
-    case GyrY:
-    case GyrZ: return tr("Angular velocity %1").arg(axisName(row));
-    case MagX:
-    case MagY:
-    case MagZ: return tr("Magnetic field %1").arg(axisName(row));
-    case Roll: return tr("Roll");
-    case Pitch: return tr("Pitch");
-    case Yaw: return tr("Yaw");
-    case QuatW:
-    case QuatX:
-    case QuatY:
-    case QuatZ: return tr("Quaternion %1").arg(axisName(row));
-    case Pressure: return tr("Air pressure");
-    case Temperature: return tr("Temperature");
     case DeviceTime: return tr("Device time");
     case InsStatus: return tr("INS status");
     case Latitude: return tr("Latitude");
@@ -296,7 +251,7 @@ QString LatestValuesModel::quantityName(Row row) const
     case InclinationY: return tr("Inclination Y");
     case StatusFlags: return tr("Status flags");
     case FrameType: return tr("Frame type");
-    case RowCount: break;
+    default: break; // the channel rows (above)
     }
     return {};
 }

@@ -1,10 +1,11 @@
 #include "channel_history.h"
 
+#include "plot/channel_catalog.h"
+
 #include <QtGlobal>
 
 #include <algorithm>
 #include <cmath>
-#include <initializer_list>
 #include <limits>
 
 namespace imudesk::plot {
@@ -13,33 +14,14 @@ namespace {
 
 constexpr float kNoValue = std::numeric_limits<float>::quiet_NaN();
 
-constexpr uint32_t bits(std::initializer_list<Channel> channels)
-{
-    uint32_t b = 0;
-    for (Channel c : channels)
-        b |= channelBit(c);
-    return b;
-}
-
 } // namespace
 
 uint32_t ChannelHistory::channelsOfField(uint32_t fields)
 {
     uint32_t b = 0;
-    if (fields & model::FieldAcc)
-        b |= bits({Channel::AccX, Channel::AccY, Channel::AccZ});
-    if (fields & model::FieldGyr)
-        b |= bits({Channel::GyrX, Channel::GyrY, Channel::GyrZ});
-    if (fields & model::FieldMag)
-        b |= bits({Channel::MagX, Channel::MagY, Channel::MagZ});
-    if (fields & model::FieldEuler)
-        b |= bits({Channel::Roll, Channel::Pitch, Channel::Yaw});
-    if (fields & model::FieldQuat)
-        b |= bits({Channel::QuatW, Channel::QuatX, Channel::QuatY, Channel::QuatZ});
-    if (fields & model::FieldPressure)
-        b |= channelBit(Channel::Pressure);
-    if (fields & model::FieldTemperature)
-        b |= channelBit(Channel::Temperature);
+    for (const ChannelInfo &i : channelCatalog())
+        if (fields & i.field)
+            b |= channelBit(i.channel);
     return b;
 }
 
@@ -208,24 +190,8 @@ void ChannelHistory::appendOne(const model::Sample &s)
         if (ok)
             f |= channelBit(c);
     };
-    put(Channel::AccX, s.acc.x);
-    put(Channel::AccY, s.acc.y);
-    put(Channel::AccZ, s.acc.z);
-    put(Channel::GyrX, s.gyr.x);
-    put(Channel::GyrY, s.gyr.y);
-    put(Channel::GyrZ, s.gyr.z);
-    put(Channel::MagX, s.mag.x);
-    put(Channel::MagY, s.mag.y);
-    put(Channel::MagZ, s.mag.z);
-    put(Channel::Roll, s.roll);
-    put(Channel::Pitch, s.pitch);
-    put(Channel::Yaw, s.yaw);
-    put(Channel::QuatW, s.quat.w);
-    put(Channel::QuatX, s.quat.x);
-    put(Channel::QuatY, s.quat.y);
-    put(Channel::QuatZ, s.quat.z);
-    put(Channel::Pressure, s.pressurePa);
-    put(Channel::Temperature, s.temperatureC);
+    for (const ChannelInfo &i : channelCatalog())
+        put(i.channel, i.read(s));
     m_host[p] = host;
     m_device[p] = device;
     m_flags[p] = f;

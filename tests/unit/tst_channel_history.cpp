@@ -1,5 +1,6 @@
 // ChannelHistory: bounds (rows, duration, memory), presence, both time axes, device
 // clock gaps and restarts, range queries against a linear scan.
+#include "plot/channel_catalog.h"
 #include "plot/channel_history.h"
 
 #include <QTest>
@@ -427,6 +428,41 @@ private Q_SLOTS:
         QCOMPARE(h.value(Channel::AccX, 99), float(4999 % 1000));
         feed(h, 10, 100.0, 60'000'000'000);
         QCOMPARE(h.size(), size_t(100));
+    }
+
+    // The one catalogue: each channel reads its own member of the Sample, needs its own
+    // field, belongs to its chart, and is named and coloured once (X red, Y green, Z blue).
+    void catalogueReadsEachChannelOnce()
+    {
+        model::Sample s;
+        s.acc = {1, 2, 3};
+        s.gyr = {4, 5, 6};
+        s.mag = {7, 8, 9};
+        s.roll = 10;
+        s.pitch = 11;
+        s.yaw = 12;
+        s.quat = {13, 14, 15, 16};
+        s.pressurePa = 17;
+        s.temperatureC = 18;
+        const auto catalog = imudesk::plot::channelCatalog();
+        QCOMPARE(int(catalog.size()), imudesk::plot::kChannelCount);
+        for (int c = 0; c < imudesk::plot::kChannelCount; ++c) {
+            const imudesk::plot::ChannelInfo &i = catalog[size_t(c)];
+            QCOMPARE(int(i.channel), c);
+            QCOMPARE(i.read(s), double(c + 1));
+            QCOMPARE(imudesk::plot::ChannelHistory::channelsOfField(i.field) & imudesk::plot::channelBit(i.channel),
+                     imudesk::plot::channelBit(i.channel));
+        }
+        QCOMPARE(imudesk::plot::channelsOf(imudesk::plot::ChannelGroup::Quaternion),
+                 (std::vector<imudesk::plot::Channel>{imudesk::plot::Channel::QuatW, imudesk::plot::Channel::QuatX, imudesk::plot::Channel::QuatY,
+                                             imudesk::plot::Channel::QuatZ}));
+        QCOMPARE(imudesk::plot::channelName(imudesk::plot::Channel::GyrY), QStringLiteral("Angular velocity Y"));
+        QCOMPARE(imudesk::plot::channelName(imudesk::plot::Channel::Yaw), QStringLiteral("Yaw"));
+        QCOMPARE(imudesk::plot::channelInfo(imudesk::plot::Channel::MagX).rgb, imudesk::plot::channelInfo(imudesk::plot::Channel::Roll).rgb);
+        QVERIFY(imudesk::plot::channelInfo(imudesk::plot::Channel::AccX).rgb != imudesk::plot::channelInfo(imudesk::plot::Channel::AccY).rgb);
+        QCOMPARE(imudesk::plot::ChannelHistory::channelsOfField(imudesk::model::FieldEuler | imudesk::model::FieldPressure),
+                 imudesk::plot::channelBit(imudesk::plot::Channel::Roll) | imudesk::plot::channelBit(imudesk::plot::Channel::Pitch)
+                     | imudesk::plot::channelBit(imudesk::plot::Channel::Yaw) | imudesk::plot::channelBit(imudesk::plot::Channel::Pressure));
     }
 };
 

@@ -1,5 +1,7 @@
 #include "charts/chart_view.h"
 
+#include "plot/channel_catalog.h"
+
 #include "charts/plot_canvas.h"
 
 #include <QComboBox>
@@ -60,16 +62,10 @@ const KindTraits &traits(ChartKind kind)
 
 std::vector<Channel> ChartView::channelsOf(ChartKind kind)
 {
-    switch (kind) {
-    case ChartKind::Accelerometer: return {Channel::AccX, Channel::AccY, Channel::AccZ};
-    case ChartKind::Gyroscope: return {Channel::GyrX, Channel::GyrY, Channel::GyrZ};
-    case ChartKind::Magnetometer: return {Channel::MagX, Channel::MagY, Channel::MagZ};
-    case ChartKind::Euler: return {Channel::Roll, Channel::Pitch, Channel::Yaw};
-    case ChartKind::Quaternion: return {Channel::QuatW, Channel::QuatX, Channel::QuatY, Channel::QuatZ};
-    case ChartKind::Pressure: return {Channel::Pressure};
-    case ChartKind::Temperature: return {Channel::Temperature};
-    }
-    return {};
+    static_assert(int(plot::ChannelGroup::Temperature) == int(ChartKind::Temperature)
+                      && plot::kChannelGroupCount == kChartKindCount,
+                  "one chart per channel group, in the same order");
+    return plot::channelsOf(plot::ChannelGroup(kind));
 }
 
 uint32_t ChartView::channelMask(ChartKind kind)
@@ -132,66 +128,18 @@ QString ChartView::unit(ChartKind kind)
 
 QString ChartView::axisName(Channel channel)
 {
-    switch (channel) {
-    case Channel::AccX:
-    case Channel::GyrX:
-    case Channel::MagX:
-    case Channel::QuatX: return QStringLiteral("X");
-    case Channel::AccY:
-    case Channel::GyrY:
-    case Channel::MagY:
-    case Channel::QuatY: return QStringLiteral("Y");
-    case Channel::AccZ:
-    case Channel::GyrZ:
-    case Channel::MagZ:
-    case Channel::QuatZ: return QStringLiteral("Z");
-    case Channel::QuatW: return QStringLiteral("W");
-    case Channel::Roll: return tr("Roll");
-    case Channel::Pitch: return tr("Pitch");
-    case Channel::Yaw: return tr("Yaw");
-    case Channel::Pressure: return tr("Pressure");
-    case Channel::Temperature: return tr("Temperature");
-    }
-    return {};
+    const plot::ChannelInfo &i = plot::channelInfo(channel);
+    return *i.axis ? QLatin1String(i.axis) : plot::channelName(channel);
 }
 
 QString ChartView::channelName(Channel channel)
 {
-    switch (kindOf(channel)) {
-    case ChartKind::Accelerometer: return tr("Acceleration %1").arg(axisName(channel));
-    case ChartKind::Gyroscope: return tr("Angular velocity %1").arg(axisName(channel));
-    case ChartKind::Magnetometer: return tr("Magnetic field %1").arg(axisName(channel));
-    case ChartKind::Quaternion: return tr("Quaternion %1").arg(axisName(channel));
-    case ChartKind::Euler:
-    case ChartKind::Pressure:
-    case ChartKind::Temperature: return axisName(channel);
-    }
-    return {};
+    return plot::channelName(channel);
 }
 
 QColor ChartView::colour(Channel channel)
 {
-    switch (channel) {
-    case Channel::AccX:
-    case Channel::GyrX:
-    case Channel::MagX:
-    case Channel::QuatX:
-    case Channel::Roll: return QColor(0xd6, 0x27, 0x28); // red
-    case Channel::AccY:
-    case Channel::GyrY:
-    case Channel::MagY:
-    case Channel::QuatY:
-    case Channel::Pitch: return QColor(0x2c, 0xa0, 0x2c); // green
-    case Channel::AccZ:
-    case Channel::GyrZ:
-    case Channel::MagZ:
-    case Channel::QuatZ:
-    case Channel::Yaw: return QColor(0x1f, 0x77, 0xb4); // blue
-    case Channel::QuatW: return QColor(0x7f, 0x7f, 0x7f); // grey
-    case Channel::Pressure: return QColor(0x94, 0x67, 0xbd); // purple
-    case Channel::Temperature: return QColor(0xff, 0x7f, 0x0e); // orange
-    }
-    return Qt::black;
+    return QColor::fromRgb(QRgb(plot::channelInfo(channel).rgb));
 }
 
 int ChartView::valueDecimals(ChartKind kind)
