@@ -577,7 +577,7 @@ void MainWindow::createMenus()
     m_viewMenu = menuBar()->addMenu(QString());
     m_calibrateMenu = menuBar()->addMenu(QString());
     m_toolsMenu = menuBar()->addMenu(QString());
-    m_tools = new ToolActions(this);
+    m_tools = new ToolActions(this, this);
     m_tools->addToMenus(m_fileMenu, m_deviceMenu, m_calibrateMenu, m_toolsMenu);
     m_helpMenu = menuBar()->addMenu(QString());
     m_helpMenu->addAction(m_aboutAction);

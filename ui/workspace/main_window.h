@@ -5,6 +5,7 @@
 #include "device/device_session.h"
 #include "sim/hipnuc_simulator.h"
 #include "workspace/preferences.h"
+#include "workspace/tool_host.h"
 #include "workspace/window_settings.h"
 #include "workspace/device_workspace.h"
 
@@ -40,7 +41,7 @@ class PreferencesDialog;
 class ToolActions;
 class StatusFlagsWidget;
 
-class MainWindow : public QMainWindow {
+class MainWindow : public QMainWindow, public ToolHost {
     Q_OBJECT
 public:
     using ErrorPresenter = std::function<void(const QString &message)>;
@@ -50,7 +51,7 @@ public:
 
     // Applies preferences to every device tab (and to tabs opened later).
     void setPreferences(const Preferences &prefs);
-    const Preferences &preferences() const { return m_prefs; }
+    const Preferences &preferences() const override { return m_prefs; }
     // Opens Edit > Preferences (not modal); accepting it applies and emits preferencesChanged.
     PreferencesDialog *openPreferences();
 
@@ -62,18 +63,19 @@ public:
     bool connectSimulated(const sim::SimOptions &options, int baud, QString *error = nullptr);
     void disconnectDevice();
     void setSimulatedMotion(sim::Motion motion) { m_simMotion = motion; }
-    sim::Motion simulatedMotion() const { return m_simMotion; }
+    sim::Motion simulatedMotion() const override { return m_simMotion; }
     // The current tab when it is idle, else a new one (for a link the user opens).
-    DeviceWorkspace *freeWorkspaceForLink() { return freeWorkspace(); }
+    DeviceWorkspace *freeWorkspaceForLink() override { return freeWorkspace(); }
     // Reports a problem to the user (a non-blocking message box, or the error presenter).
-    void showError(const QString &message) { presentError(message); }
+    void showError(const QString &message) override { presentError(message); }
+    QWidget *dialogParent() override { return this; }
     ToolActions *tools() const { return m_tools; }
     // Connects a simulated HEC495 compass (the connection bar's "Simulated HEC495").
     bool connectSimulatedHec495(QString *error = nullptr);
 
     // Workspaces (tabs).
     DeviceWorkspace *newWorkspace();
-    DeviceWorkspace *currentWorkspace() const;
+    DeviceWorkspace *currentWorkspace() const override;
     int workspaceCount() const;
     DeviceWorkspace *workspace(int index) const;
     void closeWorkspace(int index);

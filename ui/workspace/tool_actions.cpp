@@ -16,7 +16,7 @@
 #include "recording/export_dialog.h"
 #include "firmware/firmware_update_dialog.h"
 #include "workspace/link_factory.h"
-#include "workspace/main_window.h"
+#include "workspace/preferences.h"
 #include "bus/modbus_scan_dialog.h"
 #include "configuration/profile_dialog.h"
 #include "record/csv_capture_converter.h"
@@ -32,7 +32,7 @@ namespace imudesk::ui {
 
 using device::SessionState;
 
-ToolActions::ToolActions(MainWindow *window) : QObject(window), m_window(window)
+ToolActions::ToolActions(ToolHost *host, QObject *parent) : QObject(parent), m_host(host)
 {
     m_openCapture = make("openCaptureAction");
     m_openCapture->setShortcut(QKeySequence::Open);
@@ -80,7 +80,7 @@ ToolActions::ToolActions(MainWindow *window) : QObject(window), m_window(window)
 
 QAction *ToolActions::make(const char *objectName)
 {
-    auto *a = new QAction(m_window);
+    auto *a = new QAction(m_host->dialogParent());
     a->setObjectName(QString::fromLatin1(objectName));
     return a;
 }
@@ -174,9 +174,9 @@ void ToolActions::update(const DeviceWorkspace *ws)
 bool ToolActions::openCapture(const QString &path)
 {
     QString error;
-    DeviceWorkspace *ws = m_window->freeWorkspaceForLink();
+    DeviceWorkspace *ws = m_host->freeWorkspaceForLink();
     if (!LinkFactory::openReplay(*ws, path, &error)) {
-        m_window->showError(error);
+        m_host->showError(error);
         return false;
     }
     return true;
@@ -186,7 +186,7 @@ bool ToolActions::importVendorCsv(const QString &csvPath, const QString &capture
 {
     const auto r = record::CsvCaptureConverter::convert(csvPath, capturePath);
     if (!r.ok) {
-        m_window->showError(tr("%1 could not be imported: %2").arg(QFileInfo(csvPath).fileName(), r.error));
+        m_host->showError(tr("%1 could not be imported: %2").arg(QFileInfo(csvPath).fileName(), r.error));
         return false;
     }
     return openCapture(capturePath);
@@ -194,7 +194,7 @@ bool ToolActions::importVendorCsv(const QString &csvPath, const QString &capture
 
 void ToolActions::chooseCapture()
 {
-    const QString path = QFileDialog::getOpenFileName(m_window, tr("Open capture"), m_window->preferences().effectiveRecordingFolder(),
+    const QString path = QFileDialog::getOpenFileName(m_host->dialogParent(), tr("Open capture"), m_host->preferences().effectiveRecordingFolder(),
                                                       tr("Captures (*.imucap);;All files (*)"));
     if (!path.isEmpty())
         openCapture(path);
@@ -202,13 +202,13 @@ void ToolActions::chooseCapture()
 
 void ToolActions::chooseCsv()
 {
-    const QString csv = QFileDialog::getOpenFileName(m_window, tr("Import vendor CSV"), QString(),
+    const QString csv = QFileDialog::getOpenFileName(m_host->dialogParent(), tr("Import vendor CSV"), QString(),
                                                      tr("CSV files (*.csv);;All files (*)"));
     if (csv.isEmpty())
         return;
     const QFileInfo info(csv);
     const QString capture = QFileDialog::getSaveFileName(
-        m_window, tr("Save the imported capture as"), info.dir().filePath(info.completeBaseName() + QStringLiteral(".imucap")),
+        m_host->dialogParent(), tr("Save the imported capture as"), info.dir().filePath(info.completeBaseName() + QStringLiteral(".imucap")),
         tr("Captures (*.imucap)"));
     if (!capture.isEmpty())
         importVendorCsv(csv, capture);
@@ -216,22 +216,22 @@ void ToolActions::chooseCsv()
 
 void ToolActions::exportCapture()
 {
-    const QString path = QFileDialog::getOpenFileName(m_window, tr("Export capture"), m_window->preferences().effectiveRecordingFolder(),
+    const QString path = QFileDialog::getOpenFileName(m_host->dialogParent(), tr("Export capture"), m_host->preferences().effectiveRecordingFolder(),
                                                       tr("Captures (*.imucap);;All files (*)"));
     if (path.isEmpty())
         return;
-    auto *dialog = new ExportDialog(path, m_window);
+    auto *dialog = new ExportDialog(path, m_host->dialogParent());
     dialog->setAttribute(Qt::WA_DeleteOnClose);
     dialog->open();
 }
 
 void ToolActions::analyzeCapture()
 {
-    const QString path = QFileDialog::getOpenFileName(m_window, tr("Analyze capture"), m_window->preferences().effectiveRecordingFolder(),
+    const QString path = QFileDialog::getOpenFileName(m_host->dialogParent(), tr("Analyze capture"), m_host->preferences().effectiveRecordingFolder(),
                                                       tr("Captures and vendor CSV (*.imucap *.csv);;All files (*)"));
     if (path.isEmpty())
         return;
-    auto *window = new AnalysisWindow(m_window);
+    auto *window = new AnalysisWindow(m_host->dialogParent());
     window->setWindowFlag(Qt::Window);
     window->setAttribute(Qt::WA_DeleteOnClose);
     window->show();
@@ -240,44 +240,44 @@ void ToolActions::analyzeCapture()
 
 void ToolActions::connectModbus()
 {
-    auto *dialog = new ModbusConnectDialog(m_window);
+    auto *dialog = new ModbusConnectDialog(m_host->dialogParent());
     dialog->setAttribute(Qt::WA_DeleteOnClose);
     connect(dialog, &QDialog::accepted, this, [this, dialog] {
         QString error;
-        if (!LinkFactory::connectModbus(*m_window->freeWorkspaceForLink(), dialog->options(), dialog->simulate(),
-                                        m_window->simulatedMotion(), &error))
-            m_window->showError(error);
+        if (!LinkFactory::connectModbus(*m_host->freeWorkspaceForLink(), dialog->options(), dialog->simulate(),
+                                        m_host->simulatedMotion(), &error))
+            m_host->showError(error);
     });
     dialog->open();
 }
 
 void ToolActions::connectCan()
 {
-    auto *dialog = new CanConnectDialog(m_window);
+    auto *dialog = new CanConnectDialog(m_host->dialogParent());
     dialog->setAttribute(Qt::WA_DeleteOnClose);
     connect(dialog, &QDialog::accepted, this, [this, dialog] {
         QString error;
-        if (!LinkFactory::connectCan(*m_window->freeWorkspaceForLink(), dialog->options(), dialog->simulate(),
-                                     m_window->simulatedMotion(), &error))
-            m_window->showError(error);
+        if (!LinkFactory::connectCan(*m_host->freeWorkspaceForLink(), dialog->options(), dialog->simulate(),
+                                     m_host->simulatedMotion(), &error))
+            m_host->showError(error);
     });
     dialog->open();
 }
 
 void ToolActions::scanModbus()
 {
-    DeviceWorkspace *ws = m_window->currentWorkspace();
+    DeviceWorkspace *ws = m_host->currentWorkspace();
     auto *session = ws ? dynamic_cast<device::ModbusSession *>(&ws->link()) : nullptr;
     if (!session)
         return;
-    auto *dialog = new ModbusScanDialog(session, m_window);
+    auto *dialog = new ModbusScanDialog(session, m_host->dialogParent());
     dialog->setAttribute(Qt::WA_DeleteOnClose);
     dialog->open();
 }
 
 void ToolActions::showConfiguration()
 {
-    if (DeviceWorkspace *ws = m_window->currentWorkspace()) {
+    if (DeviceWorkspace *ws = m_host->currentWorkspace()) {
         ws->configDock()->show();
         ws->configDock()->raise();
     }
@@ -285,7 +285,7 @@ void ToolActions::showConfiguration()
 
 void ToolActions::showRecording()
 {
-    if (DeviceWorkspace *ws = m_window->currentWorkspace()) {
+    if (DeviceWorkspace *ws = m_host->currentWorkspace()) {
         ws->recordingDock()->show();
         ws->recordingDock()->raise();
     }
@@ -293,10 +293,10 @@ void ToolActions::showRecording()
 
 void ToolActions::openProfiles()
 {
-    DeviceWorkspace *ws = m_window->currentWorkspace();
+    DeviceWorkspace *ws = m_host->currentWorkspace();
     if (!ws || !ws->hipnucSession())
         return;
-    auto *dialog = new ProfileDialog(ws->session(), m_window);
+    auto *dialog = new ProfileDialog(ws->session(), m_host->dialogParent());
     dialog->setAttribute(Qt::WA_DeleteOnClose);
     dialog->open();
     dialog->readDevice();
@@ -304,20 +304,20 @@ void ToolActions::openProfiles()
 
 void ToolActions::openCalculator()
 {
-    auto *calculator = new BandwidthCalculator(m_window);
+    auto *calculator = new BandwidthCalculator(m_host->dialogParent());
     calculator->setWindowFlag(Qt::Window);
     calculator->setAttribute(Qt::WA_DeleteOnClose);
-    if (DeviceWorkspace *ws = m_window->currentWorkspace(); ws && ws->configPanel())
+    if (DeviceWorkspace *ws = m_host->currentWorkspace(); ws && ws->configPanel())
         calculator->setConfiguration(ws->configPanel()->controller().configuration());
     calculator->show();
 }
 
 void ToolActions::openMagCal()
 {
-    DeviceWorkspace *ws = m_window->currentWorkspace();
+    DeviceWorkspace *ws = m_host->currentWorkspace();
     if (!ws || !ws->hipnucSession() || !ws->identity() || !ws->identity()->firmware)
         return;
-    auto *wizard = new MagCalibrationWizard(ws->session(), *ws->identity()->firmware, m_window);
+    auto *wizard = new MagCalibrationWizard(ws->session(), *ws->identity()->firmware, m_host->dialogParent());
     wizard->runSaver().setIdentity(*ws->identity());
     wizard->setAttribute(Qt::WA_DeleteOnClose);
     wizard->show();
@@ -325,10 +325,10 @@ void ToolActions::openMagCal()
 
 void ToolActions::openGyroCal()
 {
-    DeviceWorkspace *ws = m_window->currentWorkspace();
+    DeviceWorkspace *ws = m_host->currentWorkspace();
     if (!ws || !ws->hipnucSession())
         return;
-    auto *wizard = new GyroScaleWizard(ws->session(), m_window);
+    auto *wizard = new GyroScaleWizard(ws->session(), m_host->dialogParent());
     if (ws->identity())
         wizard->runSaver().setIdentity(*ws->identity());
     wizard->setAttribute(Qt::WA_DeleteOnClose);
@@ -337,10 +337,10 @@ void ToolActions::openGyroCal()
 
 void ToolActions::openAttitudeReset()
 {
-    DeviceWorkspace *ws = m_window->currentWorkspace();
+    DeviceWorkspace *ws = m_host->currentWorkspace();
     if (!ws || !ws->hipnucSession())
         return;
-    auto *wizard = new AttitudeResetWizard(ws->session(), m_window);
+    auto *wizard = new AttitudeResetWizard(ws->session(), m_host->dialogParent());
     if (ws->identity())
         wizard->runSaver().setIdentity(*ws->identity());
     wizard->setAttribute(Qt::WA_DeleteOnClose);
@@ -349,11 +349,11 @@ void ToolActions::openAttitudeReset()
 
 void ToolActions::openCompassCal()
 {
-    DeviceWorkspace *ws = m_window->currentWorkspace();
+    DeviceWorkspace *ws = m_host->currentWorkspace();
     auto *session = ws ? dynamic_cast<device::Hec495Session *>(&ws->link()) : nullptr;
     if (!session)
         return;
-    auto *wizard = new Hec495CalibrationWizard(*session, m_window);
+    auto *wizard = new Hec495CalibrationWizard(*session, m_host->dialogParent());
     if (ws->identity())
         wizard->runSaver().setIdentity(*ws->identity());
     wizard->setAttribute(Qt::WA_DeleteOnClose);
@@ -364,9 +364,9 @@ void ToolActions::openCompassCal()
 
 void ToolActions::openCalHistory()
 {
-    auto *dialog = new CalibrationHistoryDialog(calib::CalibrationHistory::defaultRoot(), m_window);
+    auto *dialog = new CalibrationHistoryDialog(calib::CalibrationHistory::defaultRoot(), m_host->dialogParent());
     dialog->setAttribute(Qt::WA_DeleteOnClose);
-    const DeviceWorkspace *ws = m_window->currentWorkspace();
+    const DeviceWorkspace *ws = m_host->currentWorkspace();
     if (ws && ws->identity())
         dialog->selectDevice(CalibrationRunSaver::serialOf(*ws->identity()));
     dialog->show();
@@ -380,13 +380,13 @@ const device::CanSession *ToolActions::canopenLink(const DeviceWorkspace *ws)
 
 void ToolActions::updateFirmware()
 {
-    DeviceWorkspace *ws = m_window->currentWorkspace();
+    DeviceWorkspace *ws = m_host->currentWorkspace();
     if (!ws)
         return;
     if (const device::CanSession *can = canopenLink(ws)) {
         // Over CAN the session stays on the bus; the dialog talks to the node with its own
         // CAN device (SDO to 0x1F51) and the session sees the module leave and come back.
-        auto *dialog = new FirmwareUpdateDialog(QString(), 0, ws->identity(), m_window);
+        auto *dialog = new FirmwareUpdateDialog(QString(), 0, ws->identity(), m_host->dialogParent());
         dialog->setAttribute(Qt::WA_DeleteOnClose);
         dialog->setLink(FirmwareUpdateDialog::Link::Can);
         const auto &o = can->options();
@@ -402,7 +402,7 @@ void ToolActions::updateFirmware()
     // The dialog opens the port itself: the session lends it out (a simulated module keeps
     // running, its bootloader takes the update) and takes it back afterwards.
     const QString port = ws->releasePort();
-    auto *dialog = new FirmwareUpdateDialog(port, baud, identity, m_window);
+    auto *dialog = new FirmwareUpdateDialog(port, baud, identity, m_host->dialogParent());
     dialog->setAttribute(Qt::WA_DeleteOnClose);
     dialog->setDemoImageOffered(simulated);
     connect(dialog, &QDialog::finished, ws, [ws, port, baud] { ws->reclaimPort(port, baud); });

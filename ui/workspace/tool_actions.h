@@ -3,8 +3,9 @@
 // import a vendor CSV, export, analyse), Modbus and CAN connections, the configuration
 // panel, profiles, the output-rate calculator and the firmware update. Owned by the main
 // window, which hands over its menus and asks for an update when the tab or its state
-// changes. Every long task runs in a non-modal window with its own progress and cancel.
-#include "sim/motion_model.h"
+// changes; it reaches the window only through ToolHost (tool_host.h). Every long task runs
+// in a non-modal window with its own progress and cancel.
+#include "workspace/tool_host.h"
 
 #include <QCoreApplication>
 #include <QObject>
@@ -19,12 +20,11 @@ class CanSession;
 namespace imudesk::ui {
 
 class DeviceWorkspace;
-class MainWindow;
 
 class ToolActions : public QObject {
     Q_OBJECT
 public:
-    explicit ToolActions(MainWindow *window);
+    ToolActions(ToolHost *host, QObject *parent);
 
     // Adds the actions to the File and Device menus and builds the Calibrate and Tools menus.
     void addToMenus(QMenu *fileMenu, QMenu *deviceMenu, QMenu *calibrateMenu, QMenu *toolsMenu);
@@ -77,7 +77,7 @@ private:
     void openCompassCal();
     void openCalHistory();
 
-    MainWindow *m_window;
+    ToolHost *m_host;
     QAction *m_openCapture = nullptr;
     QAction *m_importCsv = nullptr;
     QAction *m_export = nullptr;

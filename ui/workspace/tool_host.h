@@ -1,0 +1,31 @@
+#pragma once
+// What the tool actions (tool_actions.h) need from the window that owns them: the tab in use,
+// a tab free for a new link, the preferences, where to report a problem, and the parent of
+// their dialogs. MainWindow provides it; ToolActions knows only this, so the two do not call
+// into each other's classes.
+#include "sim/motion_model.h"
+
+#include <QString>
+
+class QWidget;
+
+namespace imudesk::ui {
+
+class DeviceWorkspace;
+struct Preferences;
+
+class ToolHost {
+public:
+    virtual ~ToolHost() = default;
+    virtual QWidget *dialogParent() = 0;
+    virtual DeviceWorkspace *currentWorkspace() const = 0;
+    // The current tab when it is idle, else a new one (for a link the user opens).
+    virtual DeviceWorkspace *freeWorkspaceForLink() = 0;
+    virtual const Preferences &preferences() const = 0;
+    // Reports a problem to the user without blocking.
+    virtual void showError(const QString &message) = 0;
+    // The motion a simulated device started from the tools follows.
+    virtual sim::Motion simulatedMotion() const = 0;
+};
+
+} // namespace imudesk::ui
