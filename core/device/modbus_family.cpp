@@ -65,6 +65,7 @@ ModbusFamily::ModbusFamily()
 void ModbusFamily::configure(const ModbusOptions &options)
 {
     m_options = options;
+    m_frameType = RegisterDecoder::sample(options.kind, {}).source; // "MODBUS" or "HEC495"
     m_requestedHz = options.pollHz;
     engine().transport().setFraming(options.parity, options.stopBits);
 }
@@ -300,7 +301,7 @@ void ModbusFamily::parseReplies()
 
 void ModbusFamily::fillCounters(SessionStats &s) const
 {
-    const std::string type = RegisterDecoder::sample(m_options.kind, {}).source;
+    const std::string &type = m_frameType;
     s.bytesIn = m_bytesIn;
     s.frames = m_responses;
     s.crcErrors = m_crcErrors;

@@ -22,6 +22,7 @@
 
 #include <atomic>
 #include <functional>
+#include <string>
 #include <vector>
 
 namespace imudesk::device {
@@ -104,6 +105,7 @@ private:
     int probeTimeoutMs(int baud) const;
 
     ModbusOptions m_options;
+    std::string m_frameType = "MODBUS"; // the samples' source, the counters' frame type
     int m_nodeId = 0;
     double m_requestedHz = 0;
     double m_pollHz = 0;
