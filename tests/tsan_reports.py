@@ -4,7 +4,7 @@
 # after its thread was joined, Qt Gui's own worker threads; what fits none of these is printed
 # with its ImuDesk frames, to be read by hand. Usage: tsan_reports.py LOG...
 import re,sys,collections
-marks=['QObject::event','QMetaCallEvent','invokeMethod','QSlotObject','QMetaObject::activate','cxa_at_exit','QFunctorSlotObject','QCallableObject','doActivate','queued_activate']
+marks=['QMetaType::construct','getCopyCtr','QObject::event','QMetaCallEvent','invokeMethod','QSlotObject','QMetaObject::activate','cxa_at_exit','QFunctorSlotObject','QCallableObject','doActivate','queued_activate']
 tot=collections.Counter()
 for f in sys.argv[1:]:
     txt=open(f).read()

@@ -7,6 +7,7 @@
 #include "device/device_link.h"
 #include "workspace/link_factory.h"
 #include "workspace/main_window.h"
+#include "workspace/raw_bytes_view.h"
 #include "models/latest_values_model.h"
 
 #include <QApplication>
@@ -126,6 +127,13 @@ private Q_SLOTS:
         QVERIFY(ws.valuesModel()->valueText(models::LatestValuesModel::Yaw) != QStringLiteral("\u2014"));
         // The compass sends angles only: the attitude view builds its quaternion from them.
         QVERIFY(ws.attitudeWidget()->hasData());
+        // A byte link: its raw bytes are offered and show the Witlink frames (77 ...), both ways;
+        // no console or settings, which are HiPNUC serial's.
+        QVERIFY(ws.offersDock(ws.rawBytesDock()));
+        QVERIFY(!ws.offersDock(ws.consoleDock()) && !ws.offersDock(ws.configDock()));
+        ws.openDock(ws.rawBytesDock());
+        QTRY_VERIFY_WITH_TIMEOUT((ws.rawBytesView()->refresh(), ws.rawBytesView()->text().contains(QStringLiteral("77 "))),
+                                 5000);
         ws.disconnectDevice();
         QTRY_COMPARE(ws.state(), SessionState::Closed);
     }
