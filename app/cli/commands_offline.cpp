@@ -2,7 +2,7 @@
 #include "cli_context.h"
 #include "format/sample_json.h"
 #include "protocol/hipnuc/payloads.h"
-#include "protocol/stream/stream_demux.h"
+#include "record/capture_decoder.h"
 
 #include <QElapsedTimer>
 #include <QFile>
@@ -27,56 +27,56 @@ int cmdDecode(const QStringList &args)
         return fail(QStringLiteral("cannot read %1: %2").arg(path, file.errorString()));
     const bool json = p.isSet(QStringLiteral("json"));
 
-    protocol::StreamDemux demux;
-    std::vector<protocol::StreamEvent> events;
-    uint64_t payloadErrors = 0;
-    std::map<std::string, uint64_t> payloadErrorKinds;
+    // The same decoding path as replay and export (record::CaptureDecoder); a raw file has no
+    // arrival times, so nothing is released by a pause, only by the end of the file.
+    struct Printer : record::CaptureDecoder::Sink {
+        bool json = false;
+        std::string line;
+        std::map<std::string, uint64_t> errorKinds;
+        void onPacket(const protocol::hipnuc::Packet &packet, int64_t) override
+        {
+            if (json)
+                outRaw(format::sampleToJson(protocol::hipnuc::toSample(packet)));
+        }
+        void onNmea(const std::string &sentence, int64_t) override
+        {
+            if (!json)
+                return;
+            line = "{\"type\":\"NMEA\",\"sentence\":\"" + sentence + "\"}";
+            outRaw(line);
+        }
+        void onPayloadError(const protocol::hipnuc::PayloadResult &res, int64_t) override
+        {
+            ++errorKinds[protocol::hipnuc::payloadErrorText(res.error)];
+            if (!json)
+                return;
+            char tag[8];
+            std::snprintf(tag, sizeof tag, "0x%02X", res.errorTag);
+            outRaw(std::string("{\"type\":\"unsupported\",\"error\":\"") + protocol::hipnuc::payloadErrorText(res.error)
+                   + "\",\"tag\":\"" + tag + "\",\"offset\":" + std::to_string(res.errorOffset) + "}");
+        }
+    } printer;
+    printer.json = json;
+    record::CaptureDecoder decoder;
     std::vector<char> buf(1 << 20);
-    std::string line;
     QElapsedTimer clock;
     clock.start();
-    auto handle = [&] {
-        for (const auto &e : events) {
-            if (e.kind == protocol::StreamEvent::Kind::Nmea && json) {
-                line = "{\"type\":\"NMEA\",\"sentence\":\"" + e.text + "\"}";
-                outRaw(line);
-            }
-            if (e.kind != protocol::StreamEvent::Kind::Frame)
-                continue;
-            const auto res = protocol::hipnuc::forEachPacket(e.payload, [&](const protocol::hipnuc::Packet &pk) {
-                if (json)
-                    outRaw(format::sampleToJson(protocol::hipnuc::toSample(pk)));
-            });
-            if (!res.ok()) {
-                ++payloadErrors;
-                ++payloadErrorKinds[protocol::hipnuc::payloadErrorText(res.error)];
-                if (json) {
-                    char tag[8];
-                    std::snprintf(tag, sizeof tag, "0x%02X", res.errorTag);
-                    outRaw(std::string("{\"type\":\"unsupported\",\"error\":\"") + payloadErrorText(res.error)
-                           + "\",\"tag\":\"" + tag + "\",\"offset\":" + std::to_string(res.errorOffset) + "}");
-                }
-            }
-        }
-        events.clear();
-    };
     for (;;) {
         const qint64 n = file.read(buf.data(), qint64(buf.size()));
         if (n < 0)
             return fail(QStringLiteral("read error on %1: %2").arg(path, file.errorString()));
         if (n == 0)
             break;
-        demux.feed(reinterpret_cast<const uint8_t *>(buf.data()), size_t(n), events);
-        handle();
+        decoder.feed(reinterpret_cast<const uint8_t *>(buf.data()), size_t(n), 0, printer);
         if (interrupted())
             return fail(QStringLiteral("interrupted"), ExitInterrupted);
     }
-    demux.finish(events);
-    handle();
+    decoder.finish(printer);
     const double seconds = double(clock.nsecsElapsed()) / 1e9;
+    const protocol::StreamDemux &demux = decoder.demux();
     const auto &c = demux.frameCounters();
     if (json) {
-        outRaw(format::summaryToJson(c, demux.counters().nmeaSentences, payloadErrors, seconds));
+        outRaw(format::summaryToJson(c, demux.counters().nmeaSentences, decoder.payloadErrors(), seconds));
     } else {
         out(QStringLiteral("bytes: %1").arg(c.bytesIn));
         for (int tag = 0; tag < 256; ++tag)
@@ -88,7 +88,7 @@ int cmdDecode(const QStringList &args)
         out(QStringLiteral("crc errors: %1").arg(c.crcErrors));
         out(QStringLiteral("length errors: %1").arg(c.lengthErrors));
         out(QStringLiteral("bytes skipped: %1").arg(c.bytesSkipped));
-        for (const auto &[kind, count] : payloadErrorKinds)
+        for (const auto &[kind, count] : printer.errorKinds)
             out(QStringLiteral("undecodable payloads (%1): %2").arg(QString::fromStdString(kind)).arg(count));
         out(QStringLiteral("speed: %1 MB/s").arg(seconds > 0 ? double(c.bytesIn) / 1e6 / seconds : 0.0, 0, 'f', 1));
     }

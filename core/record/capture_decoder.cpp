@@ -70,8 +70,10 @@ void CaptureDecoder::dispatch(int64_t hostNs, Sink &sink)
         switch (e.kind) {
         case StreamEvent::Kind::Frame: {
             const auto res = hp::forEachPacket(e.payload, [&](const hp::Packet &p) { sink.onPacket(p, hostNs); });
-            if (!res.ok())
+            if (!res.ok()) {
                 ++m_payloadErrors;
+                sink.onPayloadError(res, hostNs);
+            }
             break;
         }
         case StreamEvent::Kind::Nmea:

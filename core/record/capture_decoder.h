@@ -4,7 +4,8 @@
 // packets (HI91 fast path, then every sub-packet). Chunks are fed with their arrival time,
 // and a pause of kLineIdleNs between chunks releases an unfinished candidate frame and
 // ends the text quarantine exactly as the session's idle timer does, so a replay decodes
-// what the live session decoded. Plain value class.
+// what the live session decoded. Replay, export, analysis and `imudesk-cli decode` all decode
+// through it. Plain value class.
 #include "protocol/hipnuc/payloads.h"
 #include "record/capture_reader.h"
 #include "protocol/stream/stream_demux.h"
@@ -25,6 +26,9 @@ public:
         virtual void onPacket(const protocol::hipnuc::Packet &packet, int64_t hostNs) = 0;
         virtual void onNmea(const std::string & /*sentence*/, int64_t /*hostNs*/) {}
         virtual void onLine(const std::string & /*line*/, int64_t /*hostNs*/) {}
+        // A frame whose payload holds a packet the manual's tables cannot decode (counted in
+        // payloadErrors(); the packets before it were delivered).
+        virtual void onPayloadError(const protocol::hipnuc::PayloadResult & /*result*/, int64_t /*hostNs*/) {}
     };
 
     // Follows the capture's header: with idle markers recorded, the markers release held
