@@ -7,6 +7,7 @@
 #include <QElapsedTimer>
 #include <QFile>
 
+#include <algorithm>
 #include <cstdio>
 #include <map>
 
@@ -74,7 +75,10 @@ int cmdDecode(const QStringList &args)
     decoder.finish(printer);
     const double seconds = double(clock.nsecsElapsed()) / 1e9;
     const protocol::StreamDemux &demux = decoder.demux();
-    const auto &c = demux.frameCounters();
+    // Skipped: bytes that were neither a frame nor an NMEA sentence nor a text line (a reply's
+    // OK is not damage), as the live statistics count them.
+    auto c = demux.frameCounters();
+    c.bytesSkipped -= std::min<uint64_t>(c.bytesSkipped, demux.counters().lineBytes);
     if (json) {
         outRaw(format::summaryToJson(c, demux.counters().nmeaSentences, decoder.payloadErrors(), seconds));
     } else {

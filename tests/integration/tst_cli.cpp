@@ -138,6 +138,26 @@ private Q_SLOTS:
         QVERIFY(summary.contains("mb_per_s"));
     }
 
+    // Text that is not a frame is not damage: NMEA sentences and reply lines are not
+    // counted as skipped bytes, noise is.
+    void decodeCountsOnlyNoiseAsSkipped()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("nmea.bin"));
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write(QByteArray(golden::kRmc) + "\r\nOK\r\n" + QByteArray(golden::kRmc) + "\r\n");
+        f.write(QByteArray(7, '\x01'));
+        f.close();
+        const auto r = run({"decode", path, "--json"});
+        QVERIFY2(r.code == 0, qPrintable(r.err));
+        const auto lines = r.out.split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+        QCOMPARE(lines.size(), 3); // two NMEA objects and the summary
+        const auto summary = QJsonDocument::fromJson(lines.last().toUtf8()).object().value("summary").toObject();
+        QCOMPARE(summary.value("frames").toObject().value("NMEA").toInt(), 2);
+        QCOMPARE(summary.value("bytes_skipped").toInt(), 7);
+    }
+
     void errorsAndUsage()
     {
         const auto missing = run({"probe", "/dev/imudesk-no-such-port"});
