@@ -208,6 +208,17 @@ QStringList layoutProblems(MainWindow &w, bool large)
                         .arg(w.height())
                         .arg(screen.width())
                         .arg(screen.height());
+    // ... and could fit it when not maximised: a window whose least size is taller than the
+    // screen grows past the bottom as soon as it is restored (a CAN settings form in Chinese).
+    // The small size stands for a laptop's whole screen.
+    const QSize room = large ? screen : kSmall.boundedTo(screen);
+    const QSize least = w.minimumSizeHint().expandedTo(w.minimumSize());
+    if (least.width() > room.width() || least.height() > room.height())
+        problems << QStringLiteral("window needs at least %1x%2, the screen has %3x%4")
+                        .arg(least.width())
+                        .arg(least.height())
+                        .arg(room.width())
+                        .arg(room.height());
     // No label cut short, no widget outside the window.
     problems << cutOrOutside(w);
     return problems;

@@ -18,6 +18,7 @@
 
 #include <QDockWidget>
 #include <QFileInfo>
+#include <QScrollArea>
 #include <QTimer>
 
 namespace imudesk::ui {
@@ -153,7 +154,16 @@ bool LinkFactory::connectCan(DeviceWorkspace &ws, const device::CanSessionOption
     panel->setObjectName(QStringLiteral("canConfigPanel"));
     panel->setSession(session);
     QObject::connect(session, &QObject::destroyed, panel, [panel] { panel->setSession(nullptr); });
-    ws.addLinkDock(makeDock(panel, QStringLiteral("canConfigDock"), tr("CAN configuration")),
+    // The form is taller than the values it sits behind: on a short screen (1366x768 in
+    // Chinese) it scrolls, rather than making the window taller than the screen.
+    auto *scroll = new QScrollArea;
+    scroll->setObjectName(QStringLiteral("canConfigScroll"));
+    scroll->setWidget(panel);
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    scroll->setMinimumWidth(panel->minimumSizeHint().width());
+    ws.addLinkDock(makeDock(scroll, QStringLiteral("canConfigDock"), tr("CAN configuration")),
                    DeviceWorkspace::LinkDockPlace::BehindValues);
     session->open(options);
     return true;
