@@ -223,11 +223,14 @@ void DeviceWorkspace::fitDocks()
         right = std::max(right, int(w * most));
     right = std::min(right, std::max(valuesTableWidth(), int(w * most)));
     resizeDocks({m_valuesDock}, {right}, Qt::Horizontal);
-    // The panels below the charts (console, raw bytes, a link's monitor): a quarter of the height.
+    // The panels below the charts (console, raw bytes): a quarter of the height; a link's own
+    // monitor (the CAN frames) is part of what the user came for: a third, room for its rows.
     for (QDockWidget *dock : findChildren<QDockWidget *>(QString(), Qt::FindDirectChildrenOnly)) {
         if (!dock->isHidden() && !dock->isFloating() && dockWidgetArea(dock) == Qt::BottomDockWidgetArea) {
-            const int quarter = int(h * 0.24), least = dock->minimumSizeHint().height();
-            resizeDocks({dock}, {std::clamp(dock->sizeHint().height(), std::min(least, quarter), quarter)}, Qt::Vertical);
+            const bool monitor = m_linkDocks.contains(dock);
+            const int share = int(h * (monitor ? 0.33 : 0.24)), least = dock->minimumSizeHint().height();
+            const int wanted = monitor ? share : std::clamp(dock->sizeHint().height(), std::min(least, share), share);
+            resizeDocks({dock}, {std::max(wanted, std::min(least, share))}, Qt::Vertical);
             break;
         }
     }
