@@ -110,16 +110,12 @@ void CanFamily::stopping()
     }
 }
 
-bool CanFamily::write(const CanFrame &f, CanFrameEvents *events)
+bool CanFamily::write(const CanFrame &f)
 {
     const QByteArray record = toRecord(f);
     if (!engine().transport().isOpen() || engine().transport().write(record) != record.size())
         return false;
-    const CanFrameEvent ev{f, nowNs(), true};
-    if (events)
-        events->append(ev);
-    else
-        Q_EMIT framesSeen(CanFrameEvents{ev});
+    Q_EMIT framesSeen(CanFrameEvents{CanFrameEvent{f, nowNs(), true}});
     return true;
 }
 

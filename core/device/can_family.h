@@ -74,7 +74,7 @@ private:
     };
     void handleFrame(const protocol::can::CanFrame &f, qint64 now, std::vector<model::Sample> &batch);
     bool matchStep(const protocol::can::CanFrame &f, const protocol::can::DecodedFrame &d);
-    bool write(const protocol::can::CanFrame &f, CanFrameEvents *events = nullptr);
+    bool write(const protocol::can::CanFrame &f); // beside the queue (SYNC, NMT, raw frames, scan probes)
     void startJob();
     void submitStep(bool first);
     void stepEnded(const RequestResult &r);

@@ -67,11 +67,6 @@ void CanSession::open(const CanSessionOptions &options)
     openLink(options.plugin + QLatin1Char(':') + options.interfaceName, options.bitrate);
 }
 
-void CanSession::close()
-{
-    Session::close();
-}
-
 CanProtocol CanSession::protocol() const
 {
     return m_options.protocol != CanProtocol::Auto ? m_options.protocol : CanProtocol(m_detected.load());

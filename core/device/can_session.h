@@ -27,7 +27,6 @@ public:
     static QStringList interfaces(const QString &plugin, QString *error = nullptr);
 
     void open(const CanSessionOptions &options);
-    void close() override;
     QString linkKind() const override;
     // Frames, not bytes: the CAN monitor shows them (no raw bytes).
     Capabilities capabilities() const override { return {}; }

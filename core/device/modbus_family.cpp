@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <utility>
 
 namespace imudesk::device {
 
@@ -104,7 +105,6 @@ void ModbusFamily::opened(int)
 {
     m_nodeId = m_options.effectiveNodeId();
     m_identity = {};
-    m_lost = false;
     m_consecutiveTimeouts = 0;
     m_pollQueued = false;
     m_clock.start();
@@ -262,7 +262,6 @@ void ModbusFamily::parseReplies()
             p = RtuAdu::parseResponse(m_rx.left(p.expectedSize));
         if (p.error == RtuAdu::Error::Incomplete)
             return;
-        const int used = p.expectedSize > 0 ? std::min<int>(p.expectedSize, int(m_rx.size())) : int(m_rx.size());
         if (!p.ok()) {
             if (p.error == RtuAdu::Error::CrcMismatch)
                 ++m_crcErrors;
@@ -270,6 +269,7 @@ void ModbusFamily::parseReplies()
             m_rx.clear(); // the frame is damaged: the request times out and goes again
             return;
         }
+        const int used = p.expectedSize; // a whole frame was parsed: the header said its size
         m_rx.remove(0, used);
         const Op &op = opOf(*current);
         const uint8_t expected = op.write ? kWriteSingle : kReadHolding;
@@ -394,8 +394,7 @@ void ModbusFamily::onPollResult(const RequestResult &r)
         return;
     if (!r.ok()) {
         ++m_pollTimeouts;
-        if (++m_consecutiveTimeouts == kTimeoutsBeforeLost && !m_lost) {
-            m_lost = true;
+        if (++m_consecutiveTimeouts == kTimeoutsBeforeLost) {
             Op op;
             op.nodeId = m_nodeId;
             op.start = pollStart();
@@ -406,11 +405,8 @@ void ModbusFamily::onPollResult(const RequestResult &r)
         }
         return;
     }
-    m_consecutiveTimeouts = 0;
-    if (m_lost) {
-        m_lost = false;
+    if (std::exchange(m_consecutiveTimeouts, 0) >= kTimeoutsBeforeLost) // it had been given up as lost
         engine().setState(SessionState::Connected, ModbusSession::tr("Node %1 answers again").arg(m_nodeId));
-    }
     model::Sample s =
         RegisterDecoder::sample(m_options.kind, RegisterBlock(uint16_t(pollStart()), toVector(replyOf(r).values)));
     s.hostTimeNs = std::chrono::duration_cast<std::chrono::nanoseconds>(

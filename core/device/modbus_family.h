@@ -122,8 +122,7 @@ private:
     QTimer m_resume{this};     // polling paused after CTRL reset
     int m_pendingBaud = 0;
     bool m_pollQueued = false;
-    int m_consecutiveTimeouts = 0;
-    bool m_lost = false;
+    int m_consecutiveTimeouts = 0; // kTimeoutsBeforeLost or more: reported Disconnected
 
     uint64_t m_responses = 0, m_exceptions = 0, m_crcErrors = 0, m_polls = 0, m_pollTimeouts = 0;
     uint64_t m_bytesIn = 0, m_bytesSkipped = 0;

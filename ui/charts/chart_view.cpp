@@ -78,10 +78,7 @@ uint32_t ChartView::channelMask(ChartKind kind)
 
 ChartKind ChartView::kindOf(Channel channel)
 {
-    for (int k = 0; k < kChartKindCount; ++k)
-        if (channelMask(ChartKind(k)) & plot::channelBit(channel))
-            return ChartKind(k);
-    return ChartKind::Accelerometer;
+    return ChartKind(plot::channelInfo(channel).group); // the same order (channelsOf)
 }
 
 QString ChartView::title(ChartKind kind)

@@ -148,14 +148,26 @@ DeviceWorkspace::DeviceWorkspace(QWidget *parent) : QMainWindow(parent)
 
 DeviceWorkspace::~DeviceWorkspace()
 {
-    // The panels that refer to the link go first, then the link (and its port), then the
-    // simulator behind it.
+    dropLink(); // before the simulator behind it goes
+}
+
+void DeviceWorkspace::dropLink()
+{
+    // What refers to the link goes first: its docks, the settings panel, the recorder and the
+    // raw-bytes view; then the link (and its port), then what it needed.
+    for (QDockWidget *dock : std::exchange(m_linkDocks, {})) {
+        removeDockWidget(dock);
+        delete dock;
+    }
+    m_linkDockPlaces.clear();
     delete std::exchange(m_configPanel, nullptr);
     m_recording->setSession(nullptr);
     m_rawView->setLog(nullptr);
-    m_link->disconnect(this);
-    m_link->close();
-    m_link.reset();
+    if (m_link) {
+        m_link->disconnect(this);
+        m_link->close();
+        m_link.reset();
+    }
     m_linkKeepAlive.reset();
 }
 
@@ -185,19 +197,7 @@ bool DeviceWorkspace::attachLink(std::unique_ptr<device::DeviceLink> link, const
 
 void DeviceWorkspace::bindLink(std::unique_ptr<device::DeviceLink> link, std::shared_ptr<void> keepAlive)
 {
-    // What refers to the old link goes first: its docks, the settings panel, the recorder.
-    for (QDockWidget *dock : std::exchange(m_linkDocks, {})) {
-        removeDockWidget(dock);
-        delete dock;
-    }
-    m_linkDockPlaces.clear();
-    delete std::exchange(m_configPanel, nullptr);
-    m_recording->setSession(nullptr);
-    m_rawView->setLog(nullptr);
-    if (m_link) {
-        m_link->disconnect(this);
-        m_link->close();
-    }
+    dropLink();
     m_link = std::move(link);
     m_linkKeepAlive = std::move(keepAlive);
     resetViews();

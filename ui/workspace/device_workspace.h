@@ -192,6 +192,8 @@ private:
     // Makes `link` the one shown: the old link's docks and panels go, then the old link; the
     // views start afresh and the docks follow the new link's capabilities.
     void bindLink(std::unique_ptr<device::DeviceLink> link, std::shared_ptr<void> keepAlive);
+    // Closes and frees the link, and first what refers to it.
+    void dropLink();
     // A HiPNUC serial session to open (the current one if it is one).
     device::DeviceSession &serialSession();
     void resetViews();

@@ -230,7 +230,7 @@ void DeviceWorkspace::fitDocks()
             const bool monitor = m_linkDocks.contains(dock);
             const int share = int(h * (monitor ? 0.33 : 0.24)), least = dock->minimumSizeHint().height();
             const int wanted = monitor ? share : std::clamp(dock->sizeHint().height(), std::min(least, share), share);
-            resizeDocks({dock}, {std::max(wanted, std::min(least, share))}, Qt::Vertical);
+            resizeDocks({dock}, {wanted}, Qt::Vertical);
             break;
         }
     }
