@@ -5,8 +5,10 @@
 // talks to the engine only through engine(); it never owns the transport, the queue, the
 // statistics or the recording.
 //
-// Plug-ins today: HipnucSerialFamily (ASCII commands and binary frames, hipnuc_family.h) and
-// Hec495Family (Witlink frames, hec495_family.h).
+// Plug-ins today: HipnucSerialFamily (ASCII commands and binary frames, hipnuc_family.h),
+// Hec495Family (Witlink frames, hec495_family.h), ModbusFamily (RTU registers,
+// modbus_family.h) and CanFamily (J1939, CANopen, HEC495 CAN; can_family.h). The serial
+// families find a device's rate with a BaudScan (baud_scan.h).
 #include "device/request.h"
 #include "device/session_types.h"
 

@@ -56,7 +56,6 @@ const std::vector<int> &Hec495Family::detectionBauds()
 Hec495Family::Hec495Family()
 {
     connect(&m_pollTimer, &QTimer::timeout, this, &Hec495Family::poll);
-    m_identifyTimer.setSingleShot(true);
 }
 
 Request Hec495Family::makeRequest(uint8_t command, const QByteArray &data, int timeoutMs)
@@ -89,57 +88,46 @@ int Hec495Family::firstBaud(int requestedBaud) const
 
 void Hec495Family::opened(int requestedBaud)
 {
-    m_identifyBauds = requestedBaud > 0 ? std::vector<int>{requestedBaud} : detectionBauds();
     m_streaming = false;
     m_identityKnown = false;
     engine().setState(SessionState::Detecting, engine().transport().address());
-    identifyAt(0);
-}
-
-void Hec495Family::identifyAt(size_t index)
-{
-    if (index >= m_identifyBauds.size()) {
-        m_identifying = false;
+    BaudScan::Plan p;
+    p.bauds = requestedBaud > 0 ? std::vector<int>{requestedBaud} : detectionBauds();
+    p.listenMs = kListenMs; // a streaming module identifies itself (handleFrames)
+    p.tune = [this](int baud) {
+        engine().transport().setBaud(baud);
+        engine().transport().clear();
+        m_decoder.reset();
+        qCDebug(lcHec495) << "listening at" << baud;
+    };
+    // A single rate given: use the 3 s window after power-on; scanning rates: two tries each.
+    const int attempts = p.bauds.size() == 1 ? kIdentifyWindowMs / kReplyTimeoutMs : 2;
+    p.probe = [this, attempts](int, BaudScan::Answer answer) {
+        Request r = makeRequest(uint8_t(wl::Command::ReadAll), {}, 0);
+        r.maxAttempts = attempts;
+        r.done = [this, answer](const RequestResult &res) {
+            if (res.ok())
+                m_identifyReply = res.reply.value<Hec495Result>().reply;
+            answer(res.ok() ? BaudScan::Outcome::Found
+                   : res.status == RequestStatus::Cancelled ? BaudScan::Outcome::Stop
+                                                            : BaudScan::Outcome::TryNext);
+        };
+        engine().submit(std::move(r));
+    };
+    p.found = [this](int baud) { identified(baud, &m_identifyReply); };
+    p.exhausted = [this, single = p.bauds.size() == 1 ? QString::number(p.bauds.front()) : tr("any supported")] {
         engine().fail(tr("no HEC495 answered on %1 at %2 baud: check the wiring (RS-232 TXD/RXD or RS-485 A/B), the "
                          "power, the baud rate and the module address (%3)")
                           .arg(engine().transport().address())
-                          .arg(m_identifyBauds.size() == 1 ? QString::number(m_identifyBauds.front())
-                                                            : tr("any supported"))
+                          .arg(single)
                           .arg(m_address));
-        return;
-    }
-    m_identifying = true;
-    const int baud = m_identifyBauds[index];
-    engine().transport().setBaud(baud);
-    engine().transport().clear();
-    m_decoder.reset();
-    qCDebug(lcHec495) << "listening at" << baud;
-    m_identifyTimer.disconnect();
-    connect(&m_identifyTimer, &QTimer::timeout, this, [this, index, baud] {
-        if (!m_identifying)
-            return;
-        Request r = makeRequest(uint8_t(wl::Command::ReadAll), {}, 0);
-        // A single rate given: use the 3 s window after power-on; scanning rates: two tries each.
-        r.maxAttempts = m_identifyBauds.size() == 1 ? kIdentifyWindowMs / kReplyTimeoutMs : 2;
-        r.done = [this, index, baud](const RequestResult &res) {
-            if (!m_identifying)
-                return;
-            if (res.ok()) {
-                const Hec495Result answer = res.reply.value<Hec495Result>();
-                identified(baud, &answer.reply);
-            }
-            else if (res.status != RequestStatus::Cancelled)
-                identifyAt(index + 1);
-        };
-        engine().submit(std::move(r));
-    });
-    m_identifyTimer.start(kListenMs);
+    };
+    m_scan.start(std::move(p));
 }
 
 void Hec495Family::identified(int baud, const wl::Reply *reply)
 {
-    m_identifying = false;
-    m_identifyTimer.stop();
+    m_scan.stop();
     m_identityKnown = true;
     engine().setWorkingBaud(baud);
     model::DeviceIdentity id;
@@ -158,9 +146,7 @@ void Hec495Family::identified(int baud, const wl::Reply *reply)
 
 void Hec495Family::stopping()
 {
-    m_identifying = false;
-    m_identifyTimer.stop();
-    m_identifyTimer.disconnect();
+    m_scan.stop();
     m_pollTimer.stop();
 }
 
@@ -306,7 +292,7 @@ bool Hec495Family::answersCurrent(const wl::Frame &f) const
     if (std::find(expected.begin(), expected.end(), f.command) == expected.end())
         return false;
     const bool anyAddress =
-        command == uint8_t(wl::Command::SetAddress) || command == uint8_t(wl::Command::QueryAddress) || m_identifying;
+        command == uint8_t(wl::Command::SetAddress) || command == uint8_t(wl::Command::QueryAddress) || m_scan.running();
     return anyAddress || f.address == m_address;
 }
 
@@ -369,7 +355,8 @@ void Hec495Family::handleFrames(const std::vector<wl::Frame> &frames, int64_t no
     if (unsolicitedData) {
         m_lastStreamFrame.restart();
         setStreaming(true);
-        if (m_identifying) {
+        if (m_scan.running()) {
+            m_scan.stop();
             engine().cancelAll(RequestStatus::Cancelled, tr("the module streams: identified without a request"));
             identified(engine().transport().baud(), nullptr);
         } else {

@@ -17,6 +17,7 @@
 //     answers commands, so identification retries until kIdentifyWindowMs has passed.
 //   * In question/answer mode the family polls "read all" at the polling rate while no
 //     other request is pending; auto-output frames (84 angles, 14 record) become samples.
+#include "device/baud_scan.h"
 #include "device/family_plugin.h"
 #include "device/hec495_result.h"
 #include "model/sample.h"
@@ -85,21 +86,19 @@ private:
     void followBaud(int baud);
     void poll();
     void setStreaming(bool on);
-    void identifyAt(size_t baudIndex);
     void identified(int baud, const protocol::witlink::Reply *reply);
 
     protocol::witlink::FrameDecoder m_decoder;
     std::vector<model::Sample> m_batch;
     std::vector<protocol::witlink::Frame> m_frames;
     QTimer m_pollTimer{this};
-    QTimer m_identifyTimer{this};
+    BaudScan m_scan{this}; // the identification: rates in turn
+    protocol::witlink::Reply m_identifyReply;
 
     int m_address = 0;
     int m_pollHz = 10;
     bool m_streaming = false;
-    bool m_identifying = false;
     bool m_identityKnown = false;
-    std::vector<int> m_identifyBauds;
     QElapsedTimer m_lastStreamFrame; // since the last auto-output frame
 
     std::map<std::string, uint64_t> m_framesByType;

@@ -59,7 +59,7 @@ Request HipnucSerialFamily::makeRequest(const hp::Command &command, int timeoutM
 
 HipnucSerialFamily::HipnucSerialFamily()
 {
-    m_detectTimer.setSingleShot(true);
+    m_listenTimer.setSingleShot(true);
 }
 
 // ---------------------------------------------------------------------------------------
@@ -80,19 +80,17 @@ void HipnucSerialFamily::opened(int requestedBaud)
         engine().setState(SessionState::Connected, port);
         listenThenQueryIdentity();
     } else {
-        m_detecting = true;
         engine().setState(SessionState::Detecting, port);
-        detectAt(0);
+        m_scan.start(detectionPlan());
     }
 }
 
 void HipnucSerialFamily::stopping()
 {
-    m_detecting = false;
-    m_detectTimer.stop();
-    m_detectTimer.disconnect();
-    if (LinkDone done = std::exchange(m_afterDetect, {}))
-        done(false, 0);
+    m_scan.stop();
+    m_listenTimer.stop();
+    m_listenTimer.disconnect();
+    finishLink(false, 0);
 }
 
 void HipnucSerialFamily::reconnected()
@@ -115,9 +113,9 @@ void HipnucSerialFamily::listenThenQueryIdentity()
 {
     // Listen first, as the detection does: joining a stream mid-frame, the tail of that
     // frame must not be mistaken for the start of the reply.
-    m_detectTimer.disconnect();
-    connect(&m_detectTimer, &QTimer::timeout, this, [this] { queryIdentity(1); });
-    m_detectTimer.start(kListenMs);
+    m_listenTimer.disconnect();
+    connect(&m_listenTimer, &QTimer::timeout, this, [this] { queryIdentity(1); });
+    m_listenTimer.start(kListenMs);
 }
 
 void HipnucSerialFamily::queryIdentity(int attempt)

@@ -4,6 +4,7 @@
 // stream (protocol::StreamDemux), the baud-rate detection, the safe baud change and the link
 // recovery after a reset (hipnuc_family_baud.cpp), and the lost-frame counter, told by each
 // command's typed output effect (protocol::hipnuc::OutputEffect) when a gap is the command's.
+#include "device/baud_scan.h"
 #include "device/family_plugin.h"
 #include "device/frame_gap_counter.h"
 #include "model/sample.h"
@@ -76,11 +77,12 @@ private:
 
     // Detection and recovery (hipnuc_family_baud.cpp)
     using LinkDone = std::function<void(bool reachable, int baud)>;
-    void detectAt(size_t index);
-    void detectQuery(bool retry);
-    void detectFinished(int baud, const std::optional<model::DeviceIdentity> &id);
-    void probeBauds(std::vector<int> bauds, size_t index, int attempt, LinkDone done);
-    void detectForRecovery(LinkDone done);
+    BaudScan::Plan detectionPlan();
+    void detectQuery(bool retry, BaudScan::Answer answer);
+    // LOG VERSION at each rate in turn, then the whole detection; done(reachable, baud).
+    void probeBauds(std::vector<int> bauds, LinkDone done);
+    void probeVersion(int attempt, BaudScan::Answer answer);
+    void finishLink(bool reachable, int baud);
 
     protocol::StreamDemux m_demux;
     std::vector<protocol::StreamEvent> m_events;
@@ -90,11 +92,11 @@ private:
     FrameGapCounter m_gaps;
     std::map<std::string, size_t> m_frameBytes; // last frame size per type (link load of a rate)
 
-    QTimer m_detectTimer{this};
-    bool m_detecting = false;
-    size_t m_detectIndex = 0;
+    QTimer m_listenTimer{this}; // before the identity query on a given rate
+    BaudScan m_scan{this};
+    std::optional<model::DeviceIdentity> m_found; // by the scan's probe at the rate it tries
     uint64_t m_framesAtDetectStart = 0;
-    LinkDone m_afterDetect; // a recovery that fell back to auto-detection
+    LinkDone m_linkDone; // the baud change or recovery under way
 
     std::string m_deviceSerial; // from LOG VERSION: tells whether the same module came back
     bool m_checkSameDevice = false;

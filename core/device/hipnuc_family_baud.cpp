@@ -1,5 +1,5 @@
 // HipnucSerialFamily: the baud-rate detection, the safe baud change and the link recovery
-// after a reset. The rest of the family is in hipnuc_family.cpp.
+// after a reset, all as BaudScan plans. The rest of the family is in hipnuc_family.cpp.
 #include "hipnuc_family.h"
 
 #include "device/session_engine.h"
@@ -13,6 +13,7 @@ Q_DECLARE_LOGGING_CATEGORY(lcEngine)
 namespace imudesk::device {
 
 namespace hp = protocol::hipnuc;
+using Outcome = BaudScan::Outcome;
 
 namespace {
 constexpr int kListenMs = 150;
@@ -20,84 +21,73 @@ constexpr int kDetectQueryTimeoutMs = 500;
 constexpr int kProbeTimeoutMs = 700;
 constexpr int kProbeAttempts = 2;
 constexpr int kSerialConfigTimeoutMs = 1000;
+
+bool unsent(const HipnucSerialFamily::Reply &r)
+{
+    using S = HipnucSerialFamily::Reply::Status;
+    return r.status == S::Cancelled || r.status == S::NotSent;
+}
 } // namespace
 
 // ---------------------------------------------------------------------------------------
-// Detection
+// Detection: every rate of detectionBauds(), listening first
 
-void HipnucSerialFamily::detectAt(size_t index)
+BaudScan::Plan HipnucSerialFamily::detectionPlan()
 {
-    const auto &bauds = detectionBauds();
-    if (!m_detecting)
-        return;
-    if (index >= bauds.size()) {
-        m_detecting = false;
+    BaudScan::Plan p;
+    p.bauds = detectionBauds();
+    p.listenMs = kListenMs; // a module that streams is recognised by a CRC-valid frame
+    p.tune = [this](int baud) {
+        engine().transport().setBaud(baud);
+        engine().transport().clear();
+        m_demux.reset();
+        m_found.reset();
+        m_framesAtDetectStart = m_demux.frameCounters().frames;
+        engine().setState(SessionState::Detecting, tr("trying %1 baud").arg(baud));
+    };
+    p.probe = [this](int, BaudScan::Answer answer) { detectQuery(false, std::move(answer)); };
+    p.found = [this](int baud) {
+        engine().setWorkingBaud(baud);
+        engine().restartStatistics();
+        Q_EMIT baudDetected(baud);
+        if (m_found)
+            noteIdentity(*m_found);
+        engine().setState(SessionState::Connected, tr("%1 at %2 baud").arg(engine().transport().address()).arg(baud));
+        finishLink(true, baud);
+    };
+    p.exhausted = [this] {
         engine().fail(tr("No HiPNUC device answered on %1 at any baud rate (115200, 921600, 460800, 230400, "
                          "256000, 57600, 38400, 19200, 9600, 4800). Check the cable and the power, and that "
                          "no other program uses the port.")
                           .arg(engine().transport().address()));
-        if (LinkDone done = std::exchange(m_afterDetect, {}))
-            done(false, 0);
-        return;
-    }
-    m_detectIndex = index;
-    engine().transport().setBaud(bauds[index]);
-    engine().transport().clear();
-    m_demux.reset();
-    m_framesAtDetectStart = m_demux.frameCounters().frames;
-    engine().setState(SessionState::Detecting, tr("trying %1 baud").arg(bauds[index]));
-    // Listen first: a module that streams is recognised by a CRC-valid frame.
-    m_detectTimer.disconnect();
-    connect(&m_detectTimer, &QTimer::timeout, this, [this] { detectQuery(false); });
-    m_detectTimer.start(kListenMs);
+        finishLink(false, 0);
+    };
+    return p;
 }
 
-void HipnucSerialFamily::detectQuery(bool retry)
+void HipnucSerialFamily::detectQuery(bool retry, BaudScan::Answer answer)
 {
-    if (!m_detecting)
-        return;
-    const size_t index = m_detectIndex;
-    engine().submit(makeRequest(hp::commands::logVersion(), kDetectQueryTimeoutMs, [this, retry, index](const Reply &r) {
-        if (!m_detecting || index != m_detectIndex)
-            return;
-        const int baud = detectionBauds()[index];
+    engine().submit(makeRequest(hp::commands::logVersion(), kDetectQueryTimeoutMs, [this, retry, answer](const Reply &r) {
         if (r.ok()) {
             const auto id = model::DeviceIdentity::fromKeyValues(r.values);
             if (id.usable()) {
-                detectFinished(baud, id);
+                m_found = id;
+                answer(Outcome::Found);
                 return;
             }
         }
         const bool sawFrames = m_demux.frameCounters().frames > m_framesAtDetectStart;
-        if (sawFrames && !retry) {
-            detectQuery(true);
-            return;
-        }
-        if (sawFrames) {
-            detectFinished(baud, std::nullopt); // streams valid frames but does not answer
-            return;
-        }
-        if (r.status == Reply::Status::Cancelled || r.status == Reply::Status::NotSent)
-            return;
-        detectAt(index + 1);
+        if (sawFrames && !retry && m_scan.running())
+            detectQuery(true, answer);
+        else if (sawFrames)
+            answer(Outcome::Found); // streams valid frames but does not answer
+        else
+            answer(unsent(r) ? Outcome::Stop : Outcome::TryNext);
     }));
 }
 
-void HipnucSerialFamily::detectFinished(int baud, const std::optional<model::DeviceIdentity> &id)
-{
-    m_detecting = false;
-    engine().setWorkingBaud(baud);
-    engine().restartStatistics();
-    Q_EMIT baudDetected(baud);
-    if (id)
-        noteIdentity(*id);
-    engine().setState(SessionState::Connected, tr("%1 at %2 baud").arg(engine().transport().address()).arg(baud));
-    if (LinkDone done = std::exchange(m_afterDetect, {}))
-        done(true, baud);
-}
-
 // ---------------------------------------------------------------------------------------
-// Baud change and recovery
+// Baud change and recovery: LOG VERSION at a few rates, then the whole detection
 
 void HipnucSerialFamily::changeBaud(int baud)
 {
@@ -112,13 +102,13 @@ void HipnucSerialFamily::changeBaud(int baud)
     }
     const int old = engine().transport().baud();
     engine().submit(makeRequest(command, kSerialConfigTimeoutMs, [this, baud, old](const Reply &r) {
-        if (r.status == Reply::Status::Cancelled || r.status == Reply::Status::NotSent) {
+        if (unsent(r)) {
             Q_EMIT baudChangeFinished(false, 0, QString::fromStdString(r.errorLine));
             return;
         }
         if (r.status == Reply::Status::Error) {
             // Refused: the module keeps its rate. Confirm that it is still there.
-            probeBauds({old}, 0, 1, [this, baud, old, r](bool reachable, int at) {
+            probeBauds({old}, [this, baud, old, r](bool reachable, int at) {
                 Q_EMIT baudChangeFinished(false, reachable ? at : 0,
                                           tr("the device refused SERIALCONFIG %1 (%2) and stays at %3 baud")
                                               .arg(baud)
@@ -129,7 +119,7 @@ void HipnucSerialFamily::changeBaud(int baud)
         }
         // OK was sent at the old rate and the module has switched (or, on a timeout, may have).
         qCInfo(lcEngine) << "SERIALCONFIG" << baud << (r.ok() ? "acknowledged" : "unanswered") << "- following";
-        probeBauds({baud, old}, 0, 1, [this, baud, old](bool reachable, int at) {
+        probeBauds({baud, old}, [this, baud, old](bool reachable, int at) {
             if (reachable && at == baud) {
                 Q_EMIT baudChangeFinished(true, at, tr("the device answers at %1 baud").arg(at));
                 return;
@@ -163,7 +153,7 @@ void HipnucSerialFamily::recoverLink(const QList<int> &bauds, int settleMs)
     if (std::find(order.begin(), order.end(), current) == order.end())
         order.push_back(current);
     QTimer::singleShot(std::max(0, settleMs), this, [this, order] {
-        probeBauds(order, 0, 1, [this](bool reachable, int at) {
+        probeBauds(order, [this](bool reachable, int at) {
             Q_EMIT linkRecovered(reachable, at,
                                  reachable ? tr("the device answers at %1 baud").arg(at)
                                            : tr("the device does not answer at any baud rate"));
@@ -171,50 +161,67 @@ void HipnucSerialFamily::recoverLink(const QList<int> &bauds, int settleMs)
     });
 }
 
-void HipnucSerialFamily::probeBauds(std::vector<int> bauds, size_t index, int attempt, LinkDone done)
+void HipnucSerialFamily::probeBauds(std::vector<int> bauds, LinkDone done)
 {
+    finishLink(false, 0); // a recovery still under way has lost the link to this one
     if (!engine().transport().isOpen()) {
         done(false, 0);
         return;
     }
-    if (index >= bauds.size()) {
-        detectForRecovery(std::move(done));
-        return;
-    }
-    const int baud = bauds[index];
-    if (engine().transport().baud() != baud)
-        setHostBaud(baud);
-    engine().submit(makeRequest(
-        hp::commands::logVersion(), kProbeTimeoutMs,
-        [this, bauds = std::move(bauds), index, attempt, baud, done = std::move(done)](const Reply &r) mutable {
-            if (r.status == Reply::Status::Cancelled || r.status == Reply::Status::NotSent) {
-                done(false, 0);
-                return;
-            }
-            if (r.ok()) {
-                const auto id = model::DeviceIdentity::fromKeyValues(r.values);
-                if (id.usable()) {
-                    engine().setWorkingBaud(baud);
-                    Q_EMIT baudDetected(baud);
-                    noteIdentity(id);
-                    done(true, baud);
-                    return;
-                }
-            }
-            if (attempt < kProbeAttempts)
-                probeBauds(std::move(bauds), index, attempt + 1, std::move(done));
-            else
-                probeBauds(std::move(bauds), index + 1, 1, std::move(done));
-        }));
+    m_linkDone = std::move(done);
+    BaudScan::Plan p;
+    p.bauds = std::move(bauds);
+    p.tune = [this](int baud) {
+        m_found.reset();
+        if (engine().transport().baud() != baud)
+            setHostBaud(baud);
+    };
+    p.probe = [this](int, BaudScan::Answer answer) { probeVersion(1, std::move(answer)); };
+    p.found = [this](int baud) {
+        engine().setWorkingBaud(baud);
+        Q_EMIT baudDetected(baud);
+        noteIdentity(*m_found);
+        finishLink(true, baud);
+    };
+    p.exhausted = [this] {
+        qCInfo(lcEngine) << "the device does not answer at the expected rates - auto-detecting";
+        engine().setState(SessionState::Detecting, engine().transport().address());
+        m_scan.start(detectionPlan());
+    };
+    p.stopped = [this] { finishLink(false, 0); };
+    m_scan.start(std::move(p));
 }
 
-void HipnucSerialFamily::detectForRecovery(LinkDone done)
+void HipnucSerialFamily::probeVersion(int attempt, BaudScan::Answer answer)
 {
-    qCInfo(lcEngine) << "the device does not answer at the expected rates - auto-detecting";
-    m_afterDetect = std::move(done);
-    m_detecting = true;
-    engine().setState(SessionState::Detecting, engine().transport().address());
-    detectAt(0);
+    if (!engine().transport().isOpen()) {
+        answer(Outcome::Stop);
+        return;
+    }
+    engine().submit(makeRequest(hp::commands::logVersion(), kProbeTimeoutMs, [this, attempt, answer](const Reply &r) {
+        if (unsent(r)) {
+            answer(Outcome::Stop);
+            return;
+        }
+        if (r.ok()) {
+            const auto id = model::DeviceIdentity::fromKeyValues(r.values);
+            if (id.usable()) {
+                m_found = id;
+                answer(Outcome::Found);
+                return;
+            }
+        }
+        if (attempt < kProbeAttempts && m_scan.running())
+            probeVersion(attempt + 1, answer);
+        else
+            answer(Outcome::TryNext);
+    }));
+}
+
+void HipnucSerialFamily::finishLink(bool reachable, int baud)
+{
+    if (LinkDone done = std::exchange(m_linkDone, {}))
+        done(reachable, baud);
 }
 
 } // namespace imudesk::device

@@ -43,7 +43,7 @@ const char *requestStatusName(RequestStatus s)
 
 SessionEngine::SessionEngine(FamilyPlugin *family, io::Transport *transport, SampleStore &store,
                              RawByteLog &rawLog, int lineIdleMs)
-    : m_family(family), m_transport(transport), m_store(store), m_rawLog(rawLog)
+    : m_family(family), m_transport(transport), m_store(store), m_rawLog(rawLog), m_reconnector(*transport, this)
 {
     qRegisterMetaType<RequestResult>();
     m_family->setParent(this);
@@ -64,8 +64,6 @@ SessionEngine::SessionEngine(FamilyPlugin *family, io::Transport *transport, Sam
     connect(&m_idleTimer, &QTimer::timeout, this, &SessionEngine::onLineIdle);
     m_statsTimer.setInterval(kStatsPeriodMs);
     connect(&m_statsTimer, &QTimer::timeout, this, &SessionEngine::publishStats);
-    m_reconnectTimer.setInterval(kReconnectPollMs);
-    connect(&m_reconnectTimer, &QTimer::timeout, this, &SessionEngine::tryReconnect);
 }
 
 SessionEngine::~SessionEngine() = default;
@@ -98,7 +96,7 @@ void SessionEngine::open(const QString &address, int baud)
         return;
     }
     m_family->restartStream();
-    m_reconnects = 0;
+    m_reconnector.resetCount();
     restartStatistics();
     m_statsTimer.start();
     m_family->opened(baud);
@@ -107,8 +105,8 @@ void SessionEngine::open(const QString &address, int baud)
 void SessionEngine::close()
 {
     m_family->stopping();
-    const bool waiting = m_reconnectTimer.isActive() || m_state == SessionState::Reconnecting;
-    m_reconnectTimer.stop();
+    const bool waiting = m_reconnector.waiting() || m_state == SessionState::Reconnecting;
+    m_reconnector.stop();
     m_idleTimer.stop();
     cancelAll(RequestStatus::Cancelled, tr("the connection was closed"));
     if (m_recorder)
@@ -141,38 +139,21 @@ void SessionEngine::onTransportFailed(const QString &message)
     m_statsTimer.stop();
     setState(SessionState::Disconnected, message);
     Q_EMIT errorOccurred(message);
-    if (m_autoReconnect && m_family->reconnects() && m_workingBaud > 0) {
-        m_lastReconnectError.clear();
+    if (m_reconnector.enabled() && m_family->reconnects() && m_workingBaud > 0) {
         setState(SessionState::Reconnecting, tr("disconnected — waiting for the device to come back"));
-        m_reconnectTimer.start();
+        m_reconnector.start(m_workingBaud, [this] { onReopened(); });
     }
 }
 
 void SessionEngine::setAutoReconnect(bool on)
 {
-    m_autoReconnect = on;
-    if (!on && m_state == SessionState::Reconnecting) {
-        m_reconnectTimer.stop();
+    m_reconnector.setEnabled(on);
+    if (!on && m_state == SessionState::Reconnecting)
         setState(SessionState::Disconnected, tr("automatic reconnection was turned off"));
-    }
 }
 
-void SessionEngine::tryReconnect()
+void SessionEngine::onReopened()
 {
-    if (m_state != SessionState::Reconnecting || !m_autoReconnect) {
-        m_reconnectTimer.stop();
-        return;
-    }
-    QString error;
-    if (!m_transport->reopen(m_workingBaud, &error)) {
-        // Just plugged in: udev may not have set the permissions yet. Keep trying.
-        if (!error.isEmpty() && error != m_lastReconnectError)
-            qCInfo(lcEngine) << "reconnect attempt failed:" << error;
-        m_lastReconnectError = error;
-        return;
-    }
-    m_reconnectTimer.stop();
-    ++m_reconnects;
     // Counters and samples carry on; only the stream state starts afresh, and the outage
     // does not count in the rates.
     m_family->restartStream();
@@ -390,7 +371,7 @@ void SessionEngine::publishStats()
     m_family->statsTick();
     SessionStats s;
     m_family->fillCounters(s);
-    s.reconnects = m_reconnects;
+    s.reconnects = m_reconnector.count();
     s.baud = m_transport->baud();
     const qint64 nowMs = m_statsClock.isValid() ? m_statsClock.elapsed() : 0;
     const double dt = double(nowMs - m_lastStatsMs) / 1000.0;

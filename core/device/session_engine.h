@@ -2,12 +2,13 @@
 // The one session engine: whatever the device family, it owns the transport, the request
 // queue (one request on the line at a time, timeout, retries, cancel), the path of received
 // bytes (raw-byte log, recording, the family's decoder, the bounded sample store), the
-// statistics snapshot and the reconnection after a failed link. The family plug-in
-// (family_plugin.h) says what the bytes mean.
+// statistics snapshot and, through a Reconnector (reconnector.h), the reconnection after a
+// failed link. The family plug-in (family_plugin.h) says what the bytes mean.
 //
 // Lives in the session's worker thread (Session moves it there); every slot is called queued.
 #include "device/family_plugin.h"
 #include "device/raw_byte_log.h"
+#include "device/reconnector.h"
 #include "device/request.h"
 #include "device/sample_store.h"
 #include "device/session_types.h"
@@ -29,7 +30,6 @@ class SessionEngine : public QObject {
     Q_OBJECT
 public:
     static constexpr int kStatsPeriodMs = 500;
-    static constexpr int kReconnectPollMs = 500;
 
     // Takes both (as children: they move to the engine's thread with it).
     SessionEngine(FamilyPlugin *family, io::Transport *transport, SampleStore &store, RawByteLog &rawLog,
@@ -92,7 +92,7 @@ private:
     void writeCurrent();
     void onReplyTimeout();
     void end(Request &r, RequestResult result);
-    void tryReconnect();
+    void onReopened();
     void finishRecording(const QString &reason);
     void watchForGarbage(const SessionStats &now, qint64 nowMs);
     uint64_t framesNow() const;
@@ -118,10 +118,7 @@ private:
     qint64 m_garbageSinceMs = -1; // bytes that form nothing: since when, and whether the user was told
     bool m_garbageReported = false;
 
-    bool m_autoReconnect = true;
-    QTimer m_reconnectTimer{this};
-    QString m_lastReconnectError;
-    uint64_t m_reconnects = 0;
+    Reconnector m_reconnector;
 
     std::unique_ptr<record::CaptureWriter> m_recorder;
     uint64_t m_framesAtRecordStart = 0;
