@@ -2967,8 +2967,8 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
     <message>
         <location line="+1" />
-        <source>CONFIG IMU URFR: which sensor direction each user axis is (code ABC, 24 right-handed codes; 24 = X right, Y forward, Z up). Firmware below 1.7.1 takes the nine numbers of the matrix C with X_B = C * X_U.</source>
-        <translation>CONFIG IMU URFR：每个用户轴对应传感器的哪个方向（代码 ABC，共 24 个右手系代码；24 = X 朝右、Y 朝前、Z 朝上）。低于 1.7.1 的固件使用矩阵 C 的九个数，X_B = C * X_U。</translation>
+        <source>CONFIG IMU URFR: which sensor direction each user axis is (code ABC, 24 right-handed codes; 24 = X right, Y forward, Z up). Firmware below 1.7.1 takes the nine numbers of the matrix C as the manual's named mountings print it (X_U = C * X_B; 1,0,0,0,0,1,0,-1,0 is Y down).</source>
+        <translation>CONFIG IMU URFR：每个用户轴对应传感器的哪个方向（代码 ABC，共 24 个右手系代码；24 = X 朝右、Y 朝前、Z 朝上）。低于 1.7.1 的固件使用矩阵 C 的九个数，与手册中各命名安装方式的示例一致（X_U = C * X_B；1,0,0,0,0,1,0,-1,0 为 Y 轴朝下）。</translation>
     </message>
     <message>
         <location line="+5" />

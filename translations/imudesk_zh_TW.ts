@@ -2967,8 +2967,8 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
     <message>
         <location line="+1" />
-        <source>CONFIG IMU URFR: which sensor direction each user axis is (code ABC, 24 right-handed codes; 24 = X right, Y forward, Z up). Firmware below 1.7.1 takes the nine numbers of the matrix C with X_B = C * X_U.</source>
-        <translation>CONFIG IMU URFR：每個使用者座標軸對應的感測器方向（代碼 ABC，共 24 個右手系代碼；24 = X 向右，Y 向前，Z 向上）。1.7.1 以下的韌體接受矩陣 C 的九個數，X_B = C * X_U。</translation>
+        <source>CONFIG IMU URFR: which sensor direction each user axis is (code ABC, 24 right-handed codes; 24 = X right, Y forward, Z up). Firmware below 1.7.1 takes the nine numbers of the matrix C as the manual's named mountings print it (X_U = C * X_B; 1,0,0,0,0,1,0,-1,0 is Y down).</source>
+        <translation>CONFIG IMU URFR：每個使用者座標軸對應的感測器方向（代碼 ABC，共 24 個右手系代碼；24 = X 向右，Y 向前，Z 向上）。1.7.1 以下的韌體接受矩陣 C 的九個數，與手冊各具名安裝方式的範例一致（X_U = C * X_B；1,0,0,0,0,1,0,-1,0 為 Y 軸朝下）。</translation>
     </message>
     <message>
         <location line="+5" />

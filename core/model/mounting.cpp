@@ -77,14 +77,17 @@ Matrix3 Mounting::userFromSensor(int code)
     return r;
 }
 
+// The v1.6.6 manual (2.2.4 CONFIG, "座標系旋轉(改變安裝方式)") defines X_B = C * X_U, but
+// every one of its named examples prints the other matrix: "Y軸正方向朝下的垂直安裝" is
+// 1 0 0 / 0 0 1 / 0 -1 0 (also its worked example), "Y軸正方向朝上" 1 0 0 / 0 0 -1 / 0 1 0,
+// "X軸正方向朝上" 0 0 -1 / 0 1 0 / 1 0 0, "X軸正方向朝下" 0 0 1 / 0 1 0 / -1 0 0. The same names
+// are the v1.6.6 Modbus URFR values (4.2, register 0xA6: 1 = Y down, 2 = Y up, 3 = X up,
+// 4 = X down) and the v1.7.1 codes (4.6.7.6: 043 "IMU Y 指下", 052 "IMU Y 指上", 520 "IMU X
+// 指上", 421 "IMU X 指下"). ImuDesk follows the names, so a mounting chosen by name is the
+// same over ASCII and over Modbus: C is the code's user-from-sensor matrix (X_U = C * X_B).
 Matrix3 Mounting::legacyMatrixForCode(int code)
 {
-    const Matrix3 r = userFromSensor(code);
-    Matrix3 c{};
-    for (size_t i = 0; i < 3; ++i)
-        for (size_t j = 0; j < 3; ++j)
-            c[i][j] = r[j][i];
-    return c;
+    return userFromSensor(code);
 }
 
 std::optional<int> Mounting::codeForLegacyMatrix(const Matrix3 &m)

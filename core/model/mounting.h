@@ -1,7 +1,8 @@
 #pragma once
 // Mounting (URFR): the v1.7.1 three-digit code "ABC" (each digit 0..5 = +X,-X,+Y,-Y,+Z,-Z
 // names the sensor direction of the user X, Y and Z axis; 24 right-handed codes) and
-// the v1.6.6 nine-number matrix C (X_B = C * X_U, row-major C00..C22).
+// the v1.6.6 nine-number matrix C (row-major C00..C22; as the manual's named examples
+// print it, X_U = C * X_B: see legacyMatrixForCode).
 #include <array>
 #include <optional>
 #include <string>
@@ -25,7 +26,7 @@ public:
 
     // R such that v_user = R * v_sensor (row i = sensor direction of user axis i).
     static Matrix3 userFromSensor(int code);
-    // The v1.6.6 URFR matrix C for a code (C = transpose of userFromSensor).
+    // The v1.6.6 URFR matrix C for a code: userFromSensor, as the manual's named mountings print it.
     static Matrix3 legacyMatrixForCode(int code);
     // The code whose matrix equals m (to 1e-6), if any.
     static std::optional<int> codeForLegacyMatrix(const Matrix3 &m);

@@ -37,7 +37,7 @@ public:
     static std::optional<Direction> parseDirection(const QString &text);
     // "IMU X right, IMU Y forward, IMU Z up"
     static QString description(int code);
-    // The v1.6.6 command form of a code: the nine numbers of C (X_B = C * X_U).
+    // The v1.6.6 command form of a code: the nine numbers of C (Mounting::legacyMatrixForCode).
     static QString legacyMatrixText(int code);
 };
 

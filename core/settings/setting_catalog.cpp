@@ -70,7 +70,8 @@ std::vector<SettingDefinition> buildSettings()
                  QT_TRANSLATE_NOOP("SettingCatalog",
                                    "CONFIG IMU URFR: which sensor direction each user axis is (code ABC, 24 "
                                    "right-handed codes; 24 = X right, Y forward, Z up). Firmware below 1.7.1 takes "
-                                   "the nine numbers of the matrix C with X_B = C * X_U.")});
+                                   "the nine numbers of the matrix C as the manual's named mountings print it (X_U = C * X_B; "
+                                   "1,0,0,0,0,1,0,-1,0 is Y down).")});
     s.push_back({"IMU.COORD", "COORD", SettingKind::Choice, false, true, Feature::None, Persistence::SaveAndReset,
                  QT_TRANSLATE_NOOP("SettingCatalog", "World frame"),
                  QT_TRANSLATE_NOOP("SettingCatalog",

@@ -359,7 +359,7 @@ Eigen::Matrix3d HipnucSimulator::userFromSensor() const
     if (m_edition == ManualEdition::V171)
         r = toEigen(model::Mounting::userFromSensor(m_active.urfrCode));
     else
-        r = toEigen(m_active.urfrMatrix).transpose(); // X_U = C^T X_B
+        r = toEigen(m_active.urfrMatrix); // X_U = C X_B, as the manual's named examples mean it (mounting.cpp)
     // A v1.6.6 matrix is only a rotation to 1e-3: keep the output exactly orthonormal.
     return Eigen::Quaterniond(r).normalized().toRotationMatrix();
 }

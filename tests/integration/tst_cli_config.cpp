@@ -83,7 +83,7 @@ private Q_SLOTS:
     void legacyFirmware()
     {
         auto s = simulator(3, "1.6.6");
-        const auto r = run({"config", s->devicePath(), "set", "IMU.URFR=52", "IMU_EN_MCAL=0", "LOG.HI92=0.05", "--save"});
+        const auto r = run({"config", s->devicePath(), "set", "IMU.URFR=43", "IMU_EN_MCAL=0", "LOG.HI92=0.05", "--save"});
         QVERIFY2(r.code == 0, qPrintable(r.out + r.err));
         QVERIFY(r.out.contains(QLatin1String("> CONFIG IMU URFR 1,0,0,0,0,1,0,-1,0")));
         const auto c = saved(*s);

@@ -179,7 +179,7 @@ private Q_SLOTS:
         QVERIFY(!p.errorText().isEmpty());
         QCOMPARE(p.code(), 43); // unchanged
         QCOMPARE(changed.count(), 3);
-        MountingPicker legacy(52, true);
+        MountingPicker legacy(43, true); // v1.6.6: the manual's "Y down" matrix
         QCOMPARE(legacy.commandText(), QStringLiteral("CONFIG IMU URFR 1,0,0,0,0,1,0,-1,0"));
         p.resize(900, 700);
         QVERIFY(!p.tile(43)->grab().isNull());

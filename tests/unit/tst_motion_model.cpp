@@ -93,6 +93,7 @@ private Q_SLOTS:
     void outputEulerMatchesQuaternion();
     void mountingCode240();
     void mountingLegacyMatrixMatchesCode();
+    void mountingLegacyYDownAsNamed();
     void worldFrameNwu();
 };
 
@@ -433,7 +434,8 @@ void TestMotionModel::mountingCode240()
 
 void TestMotionModel::mountingLegacyMatrixMatchesCode()
 {
-    // v1.6.6: the same mounting given as C = transpose of the code's user-from-sensor matrix.
+    // v1.6.6: the same mounting given as its matrix C (the code's user-from-sensor matrix, as the
+    // manual's named examples print it: model/mounting.cpp).
     SimOptions o171;
     SimOptions o166;
     o166.firmware = "1.6.6";
@@ -459,6 +461,29 @@ void TestMotionModel::mountingLegacyMatrixMatchesCode()
     // 531: user X = sensor -Z, user Y = sensor -Y, user Z = sensor -X ("IMU X down, Y back, Z left"):
     // with the module flat, gravity is on user -X.
     QVERIFY(x.acc[0] < -0.99f);
+}
+
+void TestMotionModel::mountingLegacyYDownAsNamed()
+{
+    // v1.6.6 2.2.4's example "Y軸正方向朝下的垂直安裝" (1 0 0 / 0 0 1 / 0 -1 0) on a v1.6.6
+    // module reads as v1.7.1's 043 "IMU Y 指下" and as the Modbus URFR value 1 "Y軸正方向朝下":
+    // one mounting, whichever path set it.
+    SimOptions o166;
+    o166.firmware = "1.6.6";
+    HipnucSimulator a(SimOptions{}), b(o166);
+    command(a, "CONFIG IMU URFR 43");
+    command(b, "CONFIG IMU URFR 1,0,0,0,0,1,0,-1,0");
+    for (auto *s : {&a, &b}) {
+        command(*s, "SAVECONFIG");
+        command(*s, "REBOOT", 400000);
+    }
+    const auto fa = hi91Frames(a, a.nowUs(), a.nowUs() + 300000);
+    const auto fb = hi91Frames(b, b.nowUs(), b.nowUs() + 300000);
+    QVERIFY(!fa.empty() && !fb.empty());
+    QVERIFY((vec(fa.back().acc) - vec(fb.back().acc)).norm() < 0.01);
+    // 043: user Y = sensor +Z. The module lying flat, gravity's reaction is on user +Y; the
+    // transposed matrix (052, Y up) would put it on user -Y.
+    QVERIFY(fb.back().acc[1] > 0.99f);
 }
 
 void TestMotionModel::worldFrameNwu()

@@ -1,5 +1,6 @@
 // The settings catalog (values, commands, feature table), the URFR mounting choice and
 // the output-rate calculator, against the manuals' tables.
+#include "protocol/modbus/hipnuc_writes.h"
 #include "model/mounting.h"
 #include "settings/bandwidth_calculator.h"
 #include "settings/device_configuration.h"
@@ -110,21 +111,39 @@ private Q_SLOTS:
                                            nullptr, &error));
     }
 
-    // v1.6.6 §2.2.4: rotating -90 deg about X, X_U = X_B, Y_U = -Z_B, Z_U = Y_B; the command
-    // wants the transpose 1 0 0 / 0 0 1 / 0 -1 0. That mounting is code 052.
-    void legacyMatrixTranspose()
+    // One table for both paths of a v1.6.6 module, by the manuals' names (mounting.cpp):
+    // v1.6.6 2.2.4's named URFR examples (printed with 8 numbers, completed by the worked
+    // example's rule), v1.6.6 4.2's register 0xA6 values, v1.7.1 4.6.7.6's codes.
+    void legacyMountingsByName_data()
     {
-        const model::Matrix3 manual{{{1, 0, 0}, {0, 0, 1}, {0, -1, 0}}};
-        QCOMPARE(model::Mounting::legacyMatrixForCode(52), manual);
-        QCOMPARE(MountingChoice::legacyMatrixText(52), QStringLiteral("1,0,0,0,0,1,0,-1,0"));
+        QTest::addColumn<int>("modbusValue");
+        QTest::addColumn<QString>("matrix");
+        QTest::addColumn<int>("code");
+        QTest::newRow("horizontal") << 0 << "1,0,0,0,1,0,0,0,1" << 24;
+        QTest::newRow("Y down (X -90 deg)") << 1 << "1,0,0,0,0,1,0,-1,0" << 43;
+        QTest::newRow("Y up (X +90 deg)") << 2 << "1,0,0,0,0,-1,0,1,0" << 52;
+        QTest::newRow("X up (Y +90 deg)") << 3 << "0,0,-1,0,1,0,1,0,0" << 520;
+        QTest::newRow("X down (Y -90 deg)") << 4 << "0,0,1,0,1,0,-1,0,0" << 421;
+    }
+    void legacyMountingsByName()
+    {
+        QFETCH(int, modbusValue);
+        QFETCH(QString, matrix);
+        QFETCH(int, code);
+        namespace mb = protocol::modbus;
+        // Modbus: the value and the code it means, both ways.
+        QCOMPARE(mb::HipnucWrites::mountingCode(model::ManualEdition::V166, uint16_t(modbusValue)),
+                 std::optional<int>(code));
+        QCOMPARE(mb::HipnucWrites::mounting(model::ManualEdition::V166, code)->value, uint16_t(modbusValue));
+        // ASCII: the command for the code, and the code a read-back matrix shows.
+        QCOMPARE(MountingChoice::legacyMatrixText(code), matrix);
         const auto v166 = identity("HI14R3", "1.6.6");
         QString error;
         const auto cmds = SettingCatalog::commands(*SettingCatalog::find(QStringLiteral("IMU.URFR")),
-                                                   QStringLiteral("52"), v166, &error);
-        QCOMPARE(cmds, QStringList{QStringLiteral("CONFIG IMU URFR 1,0,0,0,0,1,0,-1,0")});
-        // Read back from a v1.6.6 COMCONFIG, the matrix is shown as its code again.
-        const auto cfg = DeviceConfiguration::fromComConfig(v166, {{"URFR", "1,0,0,0,0,1,0,-1,0"}});
-        QCOMPARE(cfg.value(QStringLiteral("IMU.URFR")), std::optional<QString>(QStringLiteral("52")));
+                                                   QString::number(code), v166, &error);
+        QCOMPARE(cmds, QStringList{QStringLiteral("CONFIG IMU URFR ") + matrix});
+        const auto cfg = DeviceConfiguration::fromComConfig(v166, {{"URFR", matrix.toStdString()}});
+        QCOMPARE(cfg.value(QStringLiteral("IMU.URFR")), std::optional<QString>(QString::number(code)));
     }
 
     void normalizeAndCommands_data()
