@@ -92,6 +92,7 @@ void CanFamily::opened(int)
     m_target = m_options.node;
     m_merged = model::Sample{};
     m_seenNodes.clear();
+    m_tpdoNodes.clear();
     engine().setState(SessionState::Connected, tr("connected to %1").arg(engine().transport().address()));
     startJob();
 }
@@ -186,6 +187,8 @@ void CanFamily::handleFrame(const CanFrame &f, qint64 now, std::vector<model::Sa
             noteNode(CanProtocol::CanOpen, d.node, tr("SDO scan"));
         }
     }
+    if (d.kind == FrameKind::TpdoData && d.node >= 0)
+        m_tpdoNodes.insert(d.node);
     if (matchStep(f, d))
         return;
     if (!d.sample)
@@ -283,13 +286,27 @@ void CanFamily::writing(const Request &r)
 void CanFamily::unanswered(const Request &r, RequestResult &result)
 {
     const CanJobStep &s = std::any_cast<Step>(&r.command)->step;
-    if (result.status == RequestStatus::Timeout && s.expect == CanJobStep::Expect::Nothing) {
-        result.status = RequestStatus::Ok; // the pause is over
+    if (result.status == RequestStatus::Timeout && s.expect == CanJobStep::Expect::NoPdoFrom
+        && !m_tpdoNodes.contains(m_target)) {
+        result.message = tr("node %1 sent no TPDO before \"%2\" either, so its effect cannot be seen: check the node ID")
+                             .arg(m_target)
+                             .arg(s.what);
+        return;
+    }
+    if (result.status == RequestStatus::Timeout
+        && (s.expect == CanJobStep::Expect::Nothing || s.expect == CanJobStep::Expect::NoPdoFrom)) {
+        result.status = RequestStatus::Ok; // the pause is over; no TPDO came
         result.message.clear();
         result.reply = m_lastValue;
         return;
     }
-    if (result.status == RequestStatus::Timeout) {
+    if (result.status == RequestStatus::Timeout && s.expect == CanJobStep::Expect::PdoFrom) {
+        result.message = tr("node %1 sent no TPDO within %2 ms of \"%3\": if its TPDOs wait for SYNC, send one; "
+                            "otherwise check the node ID and that the module is powered")
+                             .arg(m_target)
+                             .arg(s.timeoutMs)
+                             .arg(s.what);
+    } else if (result.status == RequestStatus::Timeout) {
         const int node = s.expect == CanJobStep::Expect::TrafficFrom ? s.node : m_target;
         result.message = tr("no answer from node %1 to \"%2\" within %3 ms: check the node ID, the bit rate and the "
                             "wiring")
@@ -360,6 +377,14 @@ bool CanFamily::matchStep(const CanFrame &f, const DecodedFrame &d)
         if (d.node == s.node && d.kind != FrameKind::Unknown && d.kind != FrameKind::Nmt)
             answer(true, uint32_t(s.node), QString());
         return false; // the frame still counts as data
+    case CanJobStep::Expect::PdoFrom:
+        if (d.kind == FrameKind::TpdoData && d.node == m_target)
+            answer(true, 1, QString());
+        return false;
+    case CanJobStep::Expect::NoPdoFrom:
+        if (d.kind == FrameKind::TpdoData && d.node == m_target)
+            answer(false, 1, tr("node %1 still sends TPDOs after \"%2\": check the node ID").arg(m_target).arg(s.what));
+        return false;
     }
     return false;
 }

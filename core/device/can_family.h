@@ -104,6 +104,7 @@ private:
     qint64 m_scanTailUntil = 0;
     QList<int> m_scanFound;
     QSet<QString> m_seenNodes;
+    QSet<int> m_tpdoNodes; // CANopen nodes heard sending TPDOs (an NMT stop can be confirmed)
     QElapsedTimer m_clock;
 
     uint64_t m_frames = 0, m_bytesIn = 0, m_errorFrames = 0;

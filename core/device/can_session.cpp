@@ -13,6 +13,9 @@
 #include <QMetaObject>
 #include <QThread>
 
+#include <algorithm>
+#include <functional>
+
 namespace imudesk::device {
 
 using namespace protocol::can;
@@ -47,6 +50,21 @@ CanSession::~CanSession() = default;
 QStringList CanSession::plugins()
 {
     return QCanBus::instance()->plugins();
+}
+
+QList<int> CanSession::moduleBitrates(CanProtocol protocol)
+{
+    QList<int> out;
+    for (uint32_t code = 0; code <= 8; ++code) {
+        const int rate = protocol == CanProtocol::J1939     ? j1939::baudFromCode(code)
+                         : protocol == CanProtocol::CanOpen ? hip::baudFromCode(code)
+                         : protocol == CanProtocol::Hec495  ? hec495::baudFromCode(code)
+                                                            : 0;
+        if (rate > 0)
+            out << rate;
+    }
+    std::sort(out.begin(), out.end(), std::greater<>());
+    return out;
 }
 
 QStringList CanSession::interfaces(const QString &plugin, QString *error)
@@ -288,9 +306,12 @@ quint64 CanSession::setBitrate(int bitrate)
     switch (protocol()) {
     case CanProtocol::J1939:
     case CanProtocol::CanOpen: {
-        const int code = j1939::codeFromBaud(bitrate);
+        const bool j = protocol() == CanProtocol::J1939;
+        const int code = j ? j1939::codeFromBaud(bitrate) : hip::codeFromBaud(bitrate);
         if (code < 0)
-            return refuseJob(tr("HiPNUC modules support 125000, 250000, 500000, 800000 and 1000000 bit/s"));
+            return refuseJob(j ? tr("HiPNUC J1939 modules support 125000, 250000, 500000, 800000 and 1000000 bit/s")
+                               : tr("the CANopen object 0x209A takes 125000, 250000, 500000 and 1000000 bit/s "
+                                    "(800000 is a J1939 rate only)"));
         const QString title = tr("CAN bit rate %1 (saved; takes effect after a reset: reopen the session at that rate)").arg(bitrate);
         if (protocol() == CanProtocol::J1939)
             return submitJob(CanJob{0, title, {j1939Write(j1939::RegBaud, uint32_t(code), tr("set the bit rate")),
@@ -332,11 +353,22 @@ quint64 CanSession::setOutputEnabled(bool on)
         return submitJob(CanJob{0, on ? tr("output on") : tr("output off"), {j1939Write(j1939::RegOutputEnable, on ? 1 : 0, tr("output enable"))}});
     case CanProtocol::Hec495: return hec495Write(hec495::ObjPdoStart, on ? 1 : 0);
     case CanProtocol::CanOpen: {
-        CanJobStep s;
-        s.tx = canopen::encodeNmt(on ? canopen::NmtStart : canopen::NmtStop, node());
-        s.expect = CanJobStep::Expect::Nothing;
-        s.what = tr("NMT");
-        return submitJob(CanJob{0, on ? tr("NMT start") : tr("NMT stop"), {s}});
+        // NMT has no reply (CiA 301): the TPDOs starting or stopping confirm it.
+        CanJobStep send;
+        send.tx = canopen::encodeNmt(on ? canopen::NmtStart : canopen::NmtStop, node());
+        send.what = on ? tr("NMT start") : tr("NMT stop");
+        CanJobStep watch;
+        watch.hasTx = false;
+        watch.what = send.what;
+        if (on) {
+            send.expect = CanJobStep::Expect::PdoFrom; // the first TPDO ends the wait
+            send.timeoutMs = kNmtConfirmMs;
+            return submitJob(CanJob{0, send.what, {send}});
+        }
+        send.pauseMs = kNmtSettleMs; // frames already on their way
+        watch.expect = CanJobStep::Expect::NoPdoFrom;
+        watch.timeoutMs = kNmtConfirmMs;
+        return submitJob(CanJob{0, send.what, {send, watch}});
     }
     case CanProtocol::Auto: break;
     }

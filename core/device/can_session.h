@@ -18,6 +18,12 @@ namespace imudesk::device {
 class CanSession : public Session {
     Q_OBJECT
 public:
+    // CANopen output on/off (NMT) is confirmed by watching the target's TPDOs: after a stop
+    // none may come in kNmtConfirmMs (after kNmtSettleMs for frames already sent); after a
+    // start one must.
+    static constexpr int kNmtSettleMs = 100;
+    static constexpr int kNmtConfirmMs = 1500;
+
     // transport: a QCanBus interface when null.
     explicit CanSession(QObject *parent = nullptr, std::unique_ptr<io::Transport> transport = nullptr);
     ~CanSession() override;
@@ -48,6 +54,8 @@ public:
     quint64 setSyncMode(int channel, bool sync);
     quint64 setHeartbeat(int ms);                          // HEC495: rounded to 100 ms * (N + 1)
     quint64 setNodeId(int newId);
+    // The bit rates the module's own setting takes (setBitrate), fastest first.
+    static QList<int> moduleBitrates(protocol::can::CanProtocol protocol);
     quint64 setBitrate(int bitrate);
     quint64 attitudeReset(int mode);
     quint64 setOutputEnabled(bool on);

@@ -385,7 +385,7 @@ bool CanSimDevice::writeHipnucObject(uint16_t index, uint8_t sub, uint32_t value
         return true;
     }
     if (index == co::hipnuc::ObjBaud) {
-        if (value > 4) return *abort = co::AbortValueRange, false;
+        if (co::hipnuc::baudFromCode(value) == 0) return *abort = co::AbortValueRange, false; // 0, 2, 3, 4 only
         m_ram.baudCode = value;
         return true;
     }

@@ -224,6 +224,78 @@ private Q_SLOTS:
         QTRY_VERIFY(rig.frames.countRx(0x28C) > 5); // TPDO1 stays in SYNC mode: it was saved
     }
 
+    // v1.7.1 8.28.44.23: 0x209A takes 1000K, 500K, 250K and 125K (codes 0, 2, 3, 4); the J1939
+    // register's 800K (code 1) is not among them: refused before anything is sent, and the
+    // simulated module aborts it as out of range.
+    void canopenBitRates()
+    {
+        QCOMPARE(CanSession::moduleBitrates(CanProtocol::CanOpen), (QList<int>{1000000, 500000, 250000, 125000}));
+        QCOMPARE(CanSession::moduleBitrates(CanProtocol::J1939), (QList<int>{1000000, 800000, 500000, 250000, 125000}));
+        QVERIFY(CanSession::moduleBitrates(CanProtocol::Hec495).contains(30000));
+        Rig rig;
+        sim::CanSimOptions o;
+        o.protocol = CanProtocol::CanOpen;
+        QVERIFY(makeRig(rig, o, CanProtocol::CanOpen, kIface));
+        QTRY_VERIFY_WITH_TIMEOUT(rig.frames.countRx(0x188) > 5, 5000);
+        auto baudWrites = [&rig] {
+            int n = 0;
+            for (const auto &e : rig.frames.events)
+                n += e.transmitted && e.frame.id == 0x608 && e.frame.len >= 3 && e.frame.data[1] == 0x9A
+                    && e.frame.data[2] == 0x20;
+            return n;
+        };
+        auto r = waitResult(*rig.session, rig.session->setBitrate(800000));
+        QVERIFY(!r.ok);
+        QVERIFY2(r.message.contains(QStringLiteral("0x209A")), qPrintable(r.message));
+        QTest::qWait(100);
+        QCOMPARE(baudWrites(), 0);
+        r = waitResult(*rig.session, rig.session->sdoWrite(canopen::hipnuc::ObjBaud, 0, 1, 4));
+        QVERIFY(!r.ok);
+        QVERIFY2(r.message.contains(QStringLiteral("invalid value")), qPrintable(r.message));
+        r = waitResult(*rig.session, rig.session->setBitrate(500000));
+        QVERIFY2(r.ok, qPrintable(r.message));
+        QTRY_COMPARE(baudWrites(), 2); // the raw write above and 0x209A = 2
+    }
+
+    // NMT start/stop has no reply (CiA 301): the session confirms it by the TPDOs stopping
+    // and starting again, and says when it cannot.
+    void canopenOutputOnOffConfirmedByTpdos()
+    {
+        Rig rig;
+        sim::CanSimOptions o;
+        o.protocol = CanProtocol::CanOpen;
+        QVERIFY(makeRig(rig, o, CanProtocol::CanOpen, kIface1));
+        QTRY_VERIFY_WITH_TIMEOUT(rig.frames.countRx(0x188) > 5, 5000);
+        auto r = waitResult(*rig.session, rig.session->setOutputEnabled(false));
+        QVERIFY2(r.ok, qPrintable(r.message));
+        qint64 from = mark(rig);
+        QTest::qWait(300);
+        QCOMPARE(rig.frames.countRx(0x188, from + 1), 0);
+        QElapsedTimer t;
+        t.start();
+        r = waitResult(*rig.session, rig.session->setOutputEnabled(true));
+        QVERIFY2(r.ok, qPrintable(r.message));
+        QVERIFY(t.elapsed() < CanSession::kNmtConfirmMs); // the first TPDO ended the wait
+        QVERIFY(rig.frames.countRx(0x188, from + 1) > 0);
+        // In SYNC mode a started node sends nothing until a SYNC: the start is not confirmed.
+        for (int c = 0; c < canopen::kTpdoCount; ++c) // SDO needs an operational node
+            QVERIFY(waitResult(*rig.session, rig.session->setSyncMode(c, true)).ok);
+        QVERIFY(waitResult(*rig.session, rig.session->setOutputEnabled(false)).ok);
+        r = waitResult(*rig.session, rig.session->setOutputEnabled(true), 5000);
+        QVERIFY(!r.ok);
+        QVERIFY2(r.message.contains(QStringLiteral("SYNC")), qPrintable(r.message));
+        // A node that never sent a TPDO: a stop cannot be seen, and the session says so.
+        CanSessionOptions so = rig.session->options();
+        rig.session->close();
+        QTRY_COMPARE(rig.session->state(), device::SessionState::Closed);
+        so.node = 9;
+        rig.session->open(so);
+        QTRY_COMPARE(rig.session->state(), device::SessionState::Connected);
+        r = waitResult(*rig.session, rig.session->setOutputEnabled(false), 5000);
+        QVERIFY(!r.ok);
+        QVERIFY2(r.message.contains(QStringLiteral("cannot be seen")), qPrintable(r.message));
+    }
+
     // v1.6.6 keeps the node ID in 0x20A0 (chapter 5.4.1); the session is told so.
     void canopenV166NodeId()
     {

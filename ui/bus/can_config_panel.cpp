@@ -46,8 +46,6 @@ CanConfigPanel::CanConfigPanel(QWidget *parent)
     m_heartbeat->setRange(0, 65535);
     m_heartbeat->setSuffix(tr(" ms"));
     m_node->setRange(1, 127);
-    for (int rate : {1000000, 800000, 500000, 250000, 125000, 100000, 50000, 20000, 10000})
-        m_bitrate->addItem(tr("%1 kbit/s").arg(rate / 1000), rate);
     m_attitude->addItem(tr("Heading reset (J1939 1)"), 1);
     m_attitude->addItem(tr("Set relative zero (2)"), 2);
     m_attitude->addItem(tr("Auto level (J1939 3)"), 3);
@@ -204,6 +202,13 @@ void CanConfigPanel::refreshForProtocol()
         for (int code = 0; code <= 6; ++code)
             m_output->addItem(code ? tr("PDO %1 Hz").arg(protocol::can::hec495::rateHzFromCode(uint32_t(code))) : tr("PDO off"), code);
     }
+    // Only the rates the module's setting documents (CANopen 0x209A has no 800K).
+    const int rate = m_bitrate->currentData().toInt();
+    m_bitrate->clear();
+    for (int r : device::CanSession::moduleBitrates(p))
+        m_bitrate->addItem(tr("%1 kbit/s").arg(r / 1000), r);
+    if (const int i = m_bitrate->findData(rate); i >= 0)
+        m_bitrate->setCurrentIndex(i);
     m_period->setEnabled(hip);
     m_output->setEnabled(any && p != CanProtocol::Auto);
     m_applyPeriod->setEnabled(any && p != CanProtocol::Auto);

@@ -29,7 +29,17 @@ CanFrame setInclSign(uint8_t node, bool yAxis, bool reversed)
     return sdoWrite(node, yAxis ? ObjInclSignY : ObjInclSignX, 0, reversed ? 1 : 0, 4);
 }
 
-int baudFromCode(uint32_t code) { return j1939::baudFromCode(code); }
-int codeFromBaud(int bitrate) { return j1939::codeFromBaud(bitrate); }
+// v1.7.1 8.28.44.23 lists four codes for 0x209A: 0 = 1000K, 2 = 500K, 3 = 250K, 4 = 125K. The
+// J1939 register 0x9A's 1 = 800K (7.23) is not among them, so it is neither sent nor read as 800K.
+int baudFromCode(uint32_t code)
+{
+    return code == 1 ? 0 : j1939::baudFromCode(code);
+}
+
+int codeFromBaud(int bitrate)
+{
+    const int code = j1939::codeFromBaud(bitrate);
+    return code == 1 ? -1 : code;
+}
 
 } // namespace imudesk::protocol::can::canopen::hipnuc

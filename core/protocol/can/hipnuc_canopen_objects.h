@@ -9,7 +9,7 @@ namespace imudesk::protocol::can::canopen::hipnuc {
 
 enum Object : uint16_t {
     ObjCommand = 0x2000,       // sub 0: 0 save, 1 factory defaults, 0xFF reset
-    ObjBaud = 0x209A,          // 0:1000K 2:500K 3:250K 4:125K (1:800K as on J1939)
+    ObjBaud = 0x209A,          // 0:1000K 2:500K 3:250K 4:125K (8.28.44.23; no 800K code)
     ObjNodeId = 0x209C,        // v1.7.1
     ObjNodeIdV166 = 0x20A0,    // v1.6.6
     ObjInclSignX = 0x209E,
@@ -38,7 +38,7 @@ CanFrame setHeartbeat(uint8_t node, uint16_t ms);                              /
 CanFrame setInclZero(uint8_t node, uint8_t mode);                              // 23 A5 20 00 mode ..
 CanFrame setInclSign(uint8_t node, bool yAxis, bool reversed);                 // 23 9E/9F 20 00 v ..
 
-// Baud codes of 0x209A (and the J1939 register 0x9A).
+// Baud codes of 0x209A: the J1939 register 0x9A's codes without 1 (800K); 0 / -1 for others.
 int baudFromCode(uint32_t code);
 int codeFromBaud(int bitrate);
 
