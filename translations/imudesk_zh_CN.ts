@@ -1308,7 +1308,7 @@
 <context>
     <name>HipnucWrites</name>
     <message>
-        <location filename="../core/protocol/modbus/hipnuc_writes.cpp" line="+103" />
+        <location filename="../core/protocol/modbus/hipnuc_writes.cpp" line="+107" />
         <source>save the configuration to flash</source>
         <translation>将配置保存到闪存</translation>
     </message>
@@ -1343,17 +1343,22 @@
         <translation>切换到 6 轴模式</translation>
     </message>
     <message>
-        <location line="+1" />
-        <source>cancel auto-levelling</source>
-        <translation>取消自动调平</translation>
+        <location line="+3" />
+        <source>cancel the levelling (value 5)</source>
+        <translation>取消调平（值 5）</translation>
     </message>
     <message>
-        <location line="+0" />
-        <source>level once</source>
-        <translation>执行一次调平</translation>
+        <location line="+2" />
+        <source>level once (value 2, as the manual's worked example sends it; its register table lists 3)</source>
+        <translation>执行一次调平（值 2，与手册示例发送的一致；手册寄存器表列出的是 3）</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+2" />
+        <source>level once (value 3, as the manual's register table defines it)</source>
+        <translation>执行一次调平（值 3，按手册寄存器表的定义）</translation>
+    </message>
+    <message>
+        <location line="+2" />
         <source>set the mounting (URFR value %1)</source>
         <translation>设置安装方式（URFR 值 %1）</translation>
     </message>
@@ -1901,7 +1906,7 @@
 <context>
     <name>LinkFactory</name>
     <message>
-        <location filename="../ui/workspace/link_factory.cpp" line="+42" />
+        <location filename="../ui/workspace/link_factory.cpp" line="+43" />
         <source>Simulated HEC495</source>
         <translation>模拟 HEC495</translation>
     </message>
@@ -1976,7 +1981,7 @@
         <translation>CAN 帧</translation>
     </message>
     <message>
-        <location line="+6" />
+        <location line="+15" />
         <source>CAN configuration</source>
         <translation>CAN 配置</translation>
     </message>
@@ -2541,8 +2546,8 @@ Keep the module in place while turning it, and calibrate it together with everyt
     <message>
         <location line="+2" />
         <location line="+2" />
-        <source>Auto-level: 2 or 3 levels once (pitch and roll within 15 deg of 0/0 or 0/180), 5 cancels</source>
-        <translation>自动调平：2 或 3 执行一次调平（俯仰角和横滚角需在 0/0 或 0/180 的 15 deg 以内），5 取消</translation>
+        <source>Auto-level: 3 levels once when pitch and roll are within 15 deg of 0/0 or 0/180, 5 cancels (the register table, which calls other values invalid). The manual's worked example writes 2 to level; ImuDesk accepts 2 and 3, and its own level action sends 2, byte for byte as the example</source>
+        <translation>自动调平：3 在俯仰角和横滚角与 0/0 或 0/180 相差 15 deg 以内时执行一次调平，5 取消（寄存器表，其中其他值均为无效）。手册示例写入 2 进行调平；ImuDesk 接受 2 和 3，其自身的调平操作发送 2，与示例逐字节一致</translation>
     </message>
     <message>
         <location line="+2" />
@@ -2971,7 +2976,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>CONFIG IMU URFR：每个用户轴对应传感器的哪个方向（代码 ABC，共 24 个右手系代码；24 = X 朝右、Y 朝前、Z 朝上）。低于 1.7.1 的固件使用矩阵 C 的九个数，与手册中各命名安装方式的示例一致（X_U = C * X_B；1,0,0,0,0,1,0,-1,0 为 Y 轴朝下）。</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+6" />
         <source>World frame</source>
         <translation>世界坐标系</translation>
     </message>
@@ -3722,7 +3727,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::device::CanFamily</name>
     <message>
-        <location filename="../core/device/can_family.cpp" line="+95" />
+        <location filename="../core/device/can_family.cpp" line="+96" />
         <source>connected to %1</source>
         <translation>已连接到 %1</translation>
     </message>
@@ -3733,7 +3738,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>会话已关闭</translation>
     </message>
     <message>
-        <location line="+20" />
+        <location line="+16" />
         <source>could not send frame %1: the CAN interface is not connected</source>
         <translation>无法发送帧 %1：CAN 接口未连接</translation>
     </message>
@@ -3758,12 +3763,22 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>SDO 扫描</translation>
     </message>
     <message>
-        <location line="+47" />
+        <location line="+49" />
         <source>too many requests are waiting; try again when they are done</source>
         <translation>等待中的请求过多；请在其完成后重试</translation>
     </message>
     <message>
-        <location line="+61" />
+        <location line="+55" />
+        <source>node %1 sent no TPDO before "%2" either, so its effect cannot be seen: check the node ID</source>
+        <translation>节点 %1 在“%2”之前也未发送任何 TPDO，因此无法确认其效果：请检查节点 ID</translation>
+    </message>
+    <message>
+        <location line="+13" />
+        <source>node %1 sent no TPDO within %2 ms of "%3": if its TPDOs wait for SYNC, send one; otherwise check the node ID and that the module is powered</source>
+        <translation>节点 %1 在“%3”后 %2 ms 内未发送 TPDO：若其 TPDO 处于 SYNC 模式，请发送一次 SYNC；否则请检查节点 ID 以及模块是否已上电</translation>
+    </message>
+    <message>
+        <location line="+7" />
         <source>no answer from node %1 to "%2" within %3 ms: check the node ID, the bit rate and the wiring</source>
         <translation>节点 %1 在 %3 ms 内未应答“%2”：请检查节点 ID、波特率和接线</translation>
     </message>
@@ -3788,7 +3803,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>设备拒绝了“%1”：%2</translation>
     </message>
     <message>
-        <location line="+23" />
+        <location line="+15" />
+        <source>node %1 still sends TPDOs after "%2": check the node ID</source>
+        <translation>节点 %1 在“%2”后仍在发送 TPDO：请检查节点 ID</translation>
+    </message>
+    <message>
+        <location line="+16" />
         <source>"%1" read back %2, expected %3</source>
         <translation>“%1”回读值为 %2，应为 %3</translation>
     </message>
@@ -3806,7 +3826,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::device::CanSession</name>
     <message>
-        <location filename="../core/device/can_session.cpp" line="+83" />
+        <location filename="../core/device/can_session.cpp" line="+96" />
         <source>HiPNUC J1939</source>
         <translation>HiPNUC J1939</translation>
     </message>
@@ -3914,13 +3934,13 @@ Keep the module in place while turning it, and calibrate it together with everyt
     <message>
         <location line="+3" />
         <location line="+66" />
-        <location line="+27" />
-        <location line="+33" />
+        <location line="+30" />
+        <location line="+44" />
         <source>the protocol is not known yet: choose it or wait for traffic</source>
         <translation>协议尚未确定：请选择协议，或等待总线上出现数据</translation>
     </message>
     <message>
-        <location line="-120" />
+        <location line="-134" />
         <source>the HEC495 rate code is 0 (off) to 6 (100 Hz)</source>
         <translation>HEC495 频率代码为 0（关闭）至 6（100 Hz）</translation>
     </message>
@@ -3992,12 +4012,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
     <message>
         <location line="+3" />
         <location line="+8" />
-        <location line="+89" />
+        <location line="+103" />
         <source>reset</source>
         <translation>复位</translation>
     </message>
     <message>
-        <location line="-96" />
+        <location line="-110" />
         <location line="+5" />
         <location line="+8" />
         <source>set the node ID</source>
@@ -4006,23 +4026,28 @@ Keep the module in place while turning it, and calibrate it together with everyt
     <message>
         <location line="-12" />
         <location line="+5" />
-        <location line="+25" />
+        <location line="+28" />
         <location line="+2" />
         <source>save</source>
         <translation>保存</translation>
     </message>
     <message>
-        <location line="-21" />
+        <location line="-24" />
         <source>traffic from node %1 (power-cycle the HEC495 now)</source>
         <translation>节点 %1 的报文（请立即给 HEC495 重新上电）</translation>
     </message>
     <message>
-        <location line="+15" />
-        <source>HiPNUC modules support 125000, 250000, 500000, 800000 and 1000000 bit/s</source>
-        <translation>HiPNUC 模块支持 125000、250000、500000、800000 和 1000000 bit/s</translation>
+        <location line="+16" />
+        <source>HiPNUC J1939 modules support 125000, 250000, 500000, 800000 and 1000000 bit/s</source>
+        <translation>HiPNUC J1939 模块支持 125000、250000、500000、800000 和 1000000 bit/s</translation>
     </message>
     <message>
         <location line="+1" />
+        <source>the CANopen object 0x209A takes 125000, 250000, 500000 and 1000000 bit/s (800000 is a J1939 rate only)</source>
+        <translation>CANopen 对象 0x209A 仅接受 125000、250000、500000 和 1000000 bit/s（800000 仅适用于 J1939）</translation>
+    </message>
+    <message>
+        <location line="+2" />
         <source>CAN bit rate %1 (saved; takes effect after a reset: reopen the session at that rate)</source>
         <translation>CAN 波特率 %1（已保存；复位后生效：请以该波特率重新打开会话）</translation>
     </message>
@@ -4095,11 +4120,6 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
     <message>
         <location line="+6" />
-        <source>NMT</source>
-        <translation>NMT</translation>
-    </message>
-    <message>
-        <location line="+1" />
         <source>NMT start</source>
         <translation>NMT 启动</translation>
     </message>
@@ -4109,7 +4129,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>NMT 停止</translation>
     </message>
     <message>
-        <location line="+19" />
+        <location line="+31" />
         <source>"%1" needs a HiPNUC J1939 or CANopen device (the HEC495 saves at once)</source>
         <translation>“%1”需要 HiPNUC J1939 或 CANopen 设备（HEC495 会立即保存）</translation>
     </message>
@@ -4142,22 +4162,22 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::device::Hec495Family</name>
     <message>
-        <location filename="../core/device/hec495_family.cpp" line="+77" />
+        <location filename="../core/device/hec495_family.cpp" line="+76" />
         <source>the request's data is longer than a Witlink frame can carry</source>
         <translation>请求数据超出 Witlink 帧所能承载的长度</translation>
     </message>
     <message>
-        <location line="+26" />
+        <location line="+43" />
         <source>no HEC495 answered on %1 at %2 baud: check the wiring (RS-232 TXD/RXD or RS-485 A/B), the power, the baud rate and the module address (%3)</source>
         <translation>%1 上没有 HEC495 应答（波特率 %2）：请检查接线（RS-232 TXD/RXD 或 RS-485 A/B）、电源、波特率和模块地址（%3）</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="-1" />
         <source>any supported</source>
         <translation>任一支持值</translation>
     </message>
     <message>
-        <location line="+105" />
+        <location line="+80" />
         <source>no reply to "%1" after %2 attempts of %3 ms (check the baud rate and the module address; an RS-485 module that streams may miss commands: set question/answer mode)</source>
         <translation>“%1”尝试 %2 次（每次 %3 ms）均无应答（请检查波特率和模块地址；处于连续输出状态的 RS-485 模块可能漏收指令：请设为问答模式）</translation>
     </message>
@@ -4172,7 +4192,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>模块对“%1”报告失败（FF）</translation>
     </message>
     <message>
-        <location line="+17" />
+        <location line="+18" />
         <source>the module streams: identified without a request</source>
         <translation>模块正在连续输出：无需请求即已识别</translation>
     </message>
@@ -4208,7 +4228,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::device::HipnucSerialFamily</name>
     <message>
-        <location filename="../core/device/hipnuc_family.cpp" line="+147" />
+        <location filename="../core/device/hipnuc_family.cpp" line="+145" />
         <source>The device that came back on %1 is a different one (serial %2, before %3). Its data continues in this session.</source>
         <translation>%1 上重新出现的是另一台设备（序列号 %2，之前为 %3）。其数据将继续记录在本会话中。</translation>
     </message>
@@ -4218,22 +4238,22 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>%1 ms 内无应答（设备不响应它不认识的指令）</translation>
     </message>
     <message>
-        <location filename="../core/device/hipnuc_family_baud.cpp" line="+35" />
+        <location filename="../core/device/hipnuc_family_baud.cpp" line="+59" />
         <source>No HiPNUC device answered on %1 at any baud rate (115200, 921600, 460800, 230400, 256000, 57600, 38400, 19200, 9600, 4800). Check the cable and the power, and that no other program uses the port.</source>
         <translation>%1 上在所有波特率（115200、921600、460800、230400、256000、57600、38400、19200、9600、4800）下都没有 HiPNUC 设备应答。请检查线缆和电源，并确认没有其他程序占用该串口。</translation>
     </message>
     <message>
-        <location line="+13" />
+        <location line="-13" />
         <source>trying %1 baud</source>
         <translation>正在尝试 %1 波特率</translation>
     </message>
     <message>
-        <location line="+46" />
+        <location line="+9" />
         <source>%1 at %2 baud</source>
         <translation>%1，波特率 %2</translation>
     </message>
     <message>
-        <location line="+11" />
+        <location line="+40" />
         <location line="+50" />
         <source>the port is not open</source>
         <translation>串口未打开</translation>
@@ -4298,7 +4318,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>%2 处出现 Modbus 异常 %1。</translation>
     </message>
     <message>
-        <location filename="../core/device/modbus_family.cpp" line="+117" />
+        <location filename="../core/device/modbus_family.cpp" line="+118" />
         <source>Port open at %1 baud</source>
         <translation>串口已打开，波特率 %1</translation>
     </message>
@@ -4348,12 +4368,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>节点 %1，波特率 %2</translation>
     </message>
     <message>
-        <location line="+61" />
+        <location line="+58" />
         <source>Node %1 answers again</source>
         <translation>节点 %1 已恢复应答</translation>
     </message>
     <message>
-        <location line="+37" />
+        <location line="+36" />
         <source>not connected</source>
         <translation>未连接</translation>
     </message>
@@ -4426,22 +4446,22 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::device::SessionEngine</name>
     <message>
-        <location filename="../core/device/session_engine.cpp" line="+113" />
+        <location filename="../core/device/session_engine.cpp" line="+111" />
         <source>the connection was closed</source>
         <translation>连接已关闭</translation>
     </message>
     <message>
-        <location line="+33" />
+        <location line="+32" />
         <source>disconnected — waiting for the device to come back</source>
         <translation>已断开，正在等待设备重新连接</translation>
     </message>
     <message>
-        <location line="+10" />
+        <location line="+9" />
         <source>automatic reconnection was turned off</source>
         <translation>自动重连已关闭</translation>
     </message>
     <message>
-        <location line="+30" />
+        <location line="+15" />
         <source>%1 at %2 baud (reconnected)</source>
         <translation>%1，波特率 %2（已重连）</translation>
     </message>
@@ -4525,7 +4545,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::model::MainStatus</name>
     <message>
-        <location filename="../core/model/main_status.cpp" line="+11" />
+        <location filename="../core/model/main_status.cpp" line="+10" />
+        <source>HiPNUC manual v1.7.1, 5.9.13</source>
+        <translation>HiPNUC 手册 v1.7.1，5.9.13</translation>
+    </message>
+    <message>
+        <location line="+2" />
         <source>Gyro bias estimate not yet converged: keep the module still for 3-5 s to improve heading accuracy.</source>
         <translation>陀螺零偏估计尚未收敛：请保持模块静止 3-5 s，以提高航向角精度。</translation>
     </message>
@@ -4556,6 +4581,11 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
     <message>
         <location line="+1" />
+        <source>the vendor's SDK; the v1.7.1 manual (5.9.13) lists bit 9 as reserved</source>
+        <translation>厂商 SDK；v1.7.1 手册（5.9.13）将第 9 位列为保留</translation>
+    </message>
+    <message>
+        <location line="+1" />
         <source>The magnetometer takes part in heading (9-axis mode).</source>
         <translation>磁力计参与航向解算（9 轴模式）。</translation>
     </message>
@@ -4563,6 +4593,11 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <location line="+1" />
         <source>Not synchronised to UTC: system_time is time since power-up.</source>
         <translation>未与 UTC 同步：system_time 为上电以来的时间。</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>HiPNUC manual v1.7.1, 5.9.13 (named UTC_SYNCED there, but 1 means not synchronised; the SDK calls it UTC_UNSYNC)</source>
+        <translation>HiPNUC 手册 v1.7.1，5.9.13（手册中名为 UTC_SYNCED，但 1 表示未同步；SDK 称其为 UTC_UNSYNC）</translation>
     </message>
     <message>
         <location line="+1" />
@@ -5965,12 +6000,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>不周期发送 SYNC</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+164" />
         <source>%1 kbit/s</source>
         <translation>%1 kbit/s</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="-160" />
         <source>Heading reset (J1939 1)</source>
         <translation>航向角复位（J1939 1）</translation>
     </message>
@@ -6146,7 +6181,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>PDO 关闭</translation>
     </message>
     <message>
-        <location line="+27" />
+        <location line="+34" />
         <source>%1 every %2 ms</source>
         <translation>%1，每 %2 ms</translation>
     </message>
@@ -6463,7 +6498,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::ChartView</name>
     <message>
-        <location filename="../ui/charts/chart_view.cpp" line="+90" />
+        <location filename="../ui/charts/chart_view.cpp" line="+87" />
         <source>Accelerometer</source>
         <translation>加速度计</translation>
     </message>
@@ -7137,7 +7172,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>模拟 %1（固件 %2）</translation>
     </message>
     <message>
-        <location line="+174" />
+        <location line="+177" />
         <source>Not connected</source>
         <translation>未连接</translation>
     </message>
@@ -7289,7 +7324,7 @@ Link load = bytes per second × 10 bits / baud rate.</source>
         <translation>分析(&amp;N)</translation>
     </message>
     <message>
-        <location line="+135" />
+        <location line="+138" />
         <source>%1 was floating off the screen</source>
         <translation>%1 浮动在屏幕之外</translation>
     </message>
@@ -9522,11 +9557,11 @@ Samples: %3</source>
     </message>
     <message>
         <location line="+2" />
-        <source>&lt;b&gt;%1&lt;/b&gt; (bit %2, %3): %4</source>
-        <translation>&lt;b&gt;%1&lt;/b&gt;（位 %2，%3）：%4</translation>
+        <source>&lt;b&gt;%1&lt;/b&gt; (bit %2, %3): %4&lt;br&gt;&lt;i&gt;Source: %5&lt;/i&gt;</source>
+        <translation>&lt;b&gt;%1&lt;/b&gt;（第 %2 位，%3）：%4&lt;br&gt;&lt;i&gt;来源：%5&lt;/i&gt;</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+6" />
         <source>MAIN_STATUS flags of the latest frame. Set: amber = a warning about the data, blue = information, green = good news (magnetometer aiding the heading). Grey = clear; outlined = the frame carries no status word (firmware before 1.7.0, or another frame type)</source>
         <translation>最新帧的 MAIN_STATUS 标志。置位时：琥珀色 = 数据警告，蓝色 = 信息，绿色 = 良好（磁力计辅助航向）。灰色 = 未置位；仅边框 = 该帧不含状态字（1.7.0 之前的固件或其他帧类型）</translation>
     </message>

@@ -1308,7 +1308,7 @@
 <context>
     <name>HipnucWrites</name>
     <message>
-        <location filename="../core/protocol/modbus/hipnuc_writes.cpp" line="+103" />
+        <location filename="../core/protocol/modbus/hipnuc_writes.cpp" line="+107" />
         <source>save the configuration to flash</source>
         <translation>將配置儲存到快閃記憶體</translation>
     </message>
@@ -1343,17 +1343,22 @@
         <translation>切換到 6 軸模式</translation>
     </message>
     <message>
-        <location line="+1" />
-        <source>cancel auto-levelling</source>
-        <translation>取消自動調平</translation>
+        <location line="+3" />
+        <source>cancel the levelling (value 5)</source>
+        <translation>取消調平（值 5）</translation>
     </message>
     <message>
-        <location line="+0" />
-        <source>level once</source>
-        <translation>單次調平</translation>
+        <location line="+2" />
+        <source>level once (value 2, as the manual's worked example sends it; its register table lists 3)</source>
+        <translation>執行一次調平（值 2，與手冊範例傳送的一致；手冊暫存器表列出的是 3）</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+2" />
+        <source>level once (value 3, as the manual's register table defines it)</source>
+        <translation>執行一次調平（值 3，依手冊暫存器表的定義）</translation>
+    </message>
+    <message>
+        <location line="+2" />
         <source>set the mounting (URFR value %1)</source>
         <translation>設定安裝方式（URFR 值 %1）</translation>
     </message>
@@ -1901,7 +1906,7 @@
 <context>
     <name>LinkFactory</name>
     <message>
-        <location filename="../ui/workspace/link_factory.cpp" line="+42" />
+        <location filename="../ui/workspace/link_factory.cpp" line="+43" />
         <source>Simulated HEC495</source>
         <translation>模擬 HEC495</translation>
     </message>
@@ -1976,7 +1981,7 @@
         <translation>CAN 幀</translation>
     </message>
     <message>
-        <location line="+6" />
+        <location line="+15" />
         <source>CAN configuration</source>
         <translation>CAN 配置</translation>
     </message>
@@ -2541,8 +2546,8 @@ Keep the module in place while turning it, and calibrate it together with everyt
     <message>
         <location line="+2" />
         <location line="+2" />
-        <source>Auto-level: 2 or 3 levels once (pitch and roll within 15 deg of 0/0 or 0/180), 5 cancels</source>
-        <translation>自動調平：2 或 3 執行單次調平（俯仰角和橫滾角與 0/0 或 0/180 相差 15 deg 以內），5 取消</translation>
+        <source>Auto-level: 3 levels once when pitch and roll are within 15 deg of 0/0 or 0/180, 5 cancels (the register table, which calls other values invalid). The manual's worked example writes 2 to level; ImuDesk accepts 2 and 3, and its own level action sends 2, byte for byte as the example</source>
+        <translation>自動調平：3 在俯仰角與橫滾角與 0/0 或 0/180 相差 15 deg 以內時執行一次調平，5 取消（暫存器表，其中其他值皆為無效）。手冊範例寫入 2 進行調平；ImuDesk 接受 2 與 3，其自身的調平操作傳送 2，與範例逐位元組一致</translation>
     </message>
     <message>
         <location line="+2" />
@@ -2971,7 +2976,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>CONFIG IMU URFR：每個使用者座標軸對應的感測器方向（代碼 ABC，共 24 個右手系代碼；24 = X 向右，Y 向前，Z 向上）。1.7.1 以下的韌體接受矩陣 C 的九個數，與手冊各具名安裝方式的範例一致（X_U = C * X_B；1,0,0,0,0,1,0,-1,0 為 Y 軸朝下）。</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+6" />
         <source>World frame</source>
         <translation>世界座標系</translation>
     </message>
@@ -3722,7 +3727,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::device::CanFamily</name>
     <message>
-        <location filename="../core/device/can_family.cpp" line="+95" />
+        <location filename="../core/device/can_family.cpp" line="+96" />
         <source>connected to %1</source>
         <translation>已連線到 %1</translation>
     </message>
@@ -3733,7 +3738,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>連線已關閉</translation>
     </message>
     <message>
-        <location line="+20" />
+        <location line="+16" />
         <source>could not send frame %1: the CAN interface is not connected</source>
         <translation>無法傳送幀 %1：CAN 介面未連線</translation>
     </message>
@@ -3758,12 +3763,22 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>SDO 掃描</translation>
     </message>
     <message>
-        <location line="+47" />
+        <location line="+49" />
         <source>too many requests are waiting; try again when they are done</source>
         <translation>等待中的請求過多；請待其完成後再試</translation>
     </message>
     <message>
-        <location line="+61" />
+        <location line="+55" />
+        <source>node %1 sent no TPDO before "%2" either, so its effect cannot be seen: check the node ID</source>
+        <translation>節點 %1 在「%2」之前也未傳送任何 TPDO，因此無法確認其效果：請檢查節點 ID</translation>
+    </message>
+    <message>
+        <location line="+13" />
+        <source>node %1 sent no TPDO within %2 ms of "%3": if its TPDOs wait for SYNC, send one; otherwise check the node ID and that the module is powered</source>
+        <translation>節點 %1 在「%3」後 %2 ms 內未傳送 TPDO：若其 TPDO 處於 SYNC 模式，請傳送一次 SYNC；否則請檢查節點 ID 以及模組是否已上電</translation>
+    </message>
+    <message>
+        <location line="+7" />
         <source>no answer from node %1 to "%2" within %3 ms: check the node ID, the bit rate and the wiring</source>
         <translation>節點 %1 在 %3 ms 內未回應「%2」：請檢查節點 ID、位元速率和接線</translation>
     </message>
@@ -3788,7 +3803,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>裝置拒絕了「%1」：%2</translation>
     </message>
     <message>
-        <location line="+23" />
+        <location line="+15" />
+        <source>node %1 still sends TPDOs after "%2": check the node ID</source>
+        <translation>節點 %1 在「%2」後仍在傳送 TPDO：請檢查節點 ID</translation>
+    </message>
+    <message>
+        <location line="+16" />
         <source>"%1" read back %2, expected %3</source>
         <translation>「%1」回讀值為 %2，預期為 %3</translation>
     </message>
@@ -3806,7 +3826,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::device::CanSession</name>
     <message>
-        <location filename="../core/device/can_session.cpp" line="+83" />
+        <location filename="../core/device/can_session.cpp" line="+96" />
         <source>HiPNUC J1939</source>
         <translation>HiPNUC J1939</translation>
     </message>
@@ -3914,13 +3934,13 @@ Keep the module in place while turning it, and calibrate it together with everyt
     <message>
         <location line="+3" />
         <location line="+66" />
-        <location line="+27" />
-        <location line="+33" />
+        <location line="+30" />
+        <location line="+44" />
         <source>the protocol is not known yet: choose it or wait for traffic</source>
         <translation>尚未得知協定：請選擇協定或等待匯流排上的資料</translation>
     </message>
     <message>
-        <location line="-120" />
+        <location line="-134" />
         <source>the HEC495 rate code is 0 (off) to 6 (100 Hz)</source>
         <translation>HEC495 頻率代碼為 0（關閉）到 6（100 Hz）</translation>
     </message>
@@ -3992,12 +4012,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
     <message>
         <location line="+3" />
         <location line="+8" />
-        <location line="+89" />
+        <location line="+103" />
         <source>reset</source>
         <translation>重設</translation>
     </message>
     <message>
-        <location line="-96" />
+        <location line="-110" />
         <location line="+5" />
         <location line="+8" />
         <source>set the node ID</source>
@@ -4006,23 +4026,28 @@ Keep the module in place while turning it, and calibrate it together with everyt
     <message>
         <location line="-12" />
         <location line="+5" />
-        <location line="+25" />
+        <location line="+28" />
         <location line="+2" />
         <source>save</source>
         <translation>儲存</translation>
     </message>
     <message>
-        <location line="-21" />
+        <location line="-24" />
         <source>traffic from node %1 (power-cycle the HEC495 now)</source>
         <translation>來自節點 %1 的流量（請立即將 HEC495 斷電重啟）</translation>
     </message>
     <message>
-        <location line="+15" />
-        <source>HiPNUC modules support 125000, 250000, 500000, 800000 and 1000000 bit/s</source>
-        <translation>HiPNUC 模組支援 125000、250000、500000、800000 和 1000000 位元/秒</translation>
+        <location line="+16" />
+        <source>HiPNUC J1939 modules support 125000, 250000, 500000, 800000 and 1000000 bit/s</source>
+        <translation>HiPNUC J1939 模組支援 125000、250000、500000、800000 和 1000000 bit/s</translation>
     </message>
     <message>
         <location line="+1" />
+        <source>the CANopen object 0x209A takes 125000, 250000, 500000 and 1000000 bit/s (800000 is a J1939 rate only)</source>
+        <translation>CANopen 物件 0x209A 僅接受 125000、250000、500000 和 1000000 bit/s（800000 僅適用於 J1939）</translation>
+    </message>
+    <message>
+        <location line="+2" />
         <source>CAN bit rate %1 (saved; takes effect after a reset: reopen the session at that rate)</source>
         <translation>CAN 位元速率 %1（已儲存；重設後生效：請以該速率重新連線）</translation>
     </message>
@@ -4095,11 +4120,6 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
     <message>
         <location line="+6" />
-        <source>NMT</source>
-        <translation>NMT</translation>
-    </message>
-    <message>
-        <location line="+1" />
         <source>NMT start</source>
         <translation>NMT 啟動</translation>
     </message>
@@ -4109,7 +4129,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>NMT 停止</translation>
     </message>
     <message>
-        <location line="+19" />
+        <location line="+31" />
         <source>"%1" needs a HiPNUC J1939 or CANopen device (the HEC495 saves at once)</source>
         <translation>「%1」需要 HiPNUC J1939 或 CANopen 裝置（HEC495 會立即儲存）</translation>
     </message>
@@ -4142,22 +4162,22 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::device::Hec495Family</name>
     <message>
-        <location filename="../core/device/hec495_family.cpp" line="+77" />
+        <location filename="../core/device/hec495_family.cpp" line="+76" />
         <source>the request's data is longer than a Witlink frame can carry</source>
         <translation>請求的資料超過 Witlink 幀可承載的長度</translation>
     </message>
     <message>
-        <location line="+26" />
+        <location line="+43" />
         <source>no HEC495 answered on %1 at %2 baud: check the wiring (RS-232 TXD/RXD or RS-485 A/B), the power, the baud rate and the module address (%3)</source>
         <translation>%1 上沒有 HEC495 以波特率 %2 回應：請檢查接線（RS-232 TXD/RXD 或 RS-485 A/B）、電源、波特率和模組位址（%3）</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="-1" />
         <source>any supported</source>
         <translation>任一支援值</translation>
     </message>
     <message>
-        <location line="+105" />
+        <location line="+80" />
         <source>no reply to "%1" after %2 attempts of %3 ms (check the baud rate and the module address; an RS-485 module that streams may miss commands: set question/answer mode)</source>
         <translation>嘗試 %2 次（每次 %3 ms）後仍未收到「%1」的回應（請檢查波特率和模組位址；持續輸出資料的 RS-485 模組可能漏收指令：請設為問答模式）</translation>
     </message>
@@ -4172,7 +4192,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>模組回報「%1」失敗（FF）</translation>
     </message>
     <message>
-        <location line="+17" />
+        <location line="+18" />
         <source>the module streams: identified without a request</source>
         <translation>模組正在持續輸出：無需請求即已識別</translation>
     </message>
@@ -4208,7 +4228,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::device::HipnucSerialFamily</name>
     <message>
-        <location filename="../core/device/hipnuc_family.cpp" line="+147" />
+        <location filename="../core/device/hipnuc_family.cpp" line="+145" />
         <source>The device that came back on %1 is a different one (serial %2, before %3). Its data continues in this session.</source>
         <translation>%1 上重新出現的是另一台裝置（序號 %2，之前為 %3）。其資料將繼續記錄在此工作階段中。</translation>
     </message>
@@ -4218,22 +4238,22 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>%1 ms 內無回應（裝置不回應它不認識的指令）</translation>
     </message>
     <message>
-        <location filename="../core/device/hipnuc_family_baud.cpp" line="+35" />
+        <location filename="../core/device/hipnuc_family_baud.cpp" line="+59" />
         <source>No HiPNUC device answered on %1 at any baud rate (115200, 921600, 460800, 230400, 256000, 57600, 38400, 19200, 9600, 4800). Check the cable and the power, and that no other program uses the port.</source>
         <translation>%1 上在所有波特率（115200、921600、460800、230400、256000、57600、38400、19200、9600、4800）下都沒有 HiPNUC 裝置回應。請檢查線材和電源，並確認沒有其他程式占用該串列埠。</translation>
     </message>
     <message>
-        <location line="+13" />
+        <location line="-13" />
         <source>trying %1 baud</source>
         <translation>正在嘗試 %1 波特率</translation>
     </message>
     <message>
-        <location line="+46" />
+        <location line="+9" />
         <source>%1 at %2 baud</source>
         <translation>%1，波特率 %2</translation>
     </message>
     <message>
-        <location line="+11" />
+        <location line="+40" />
         <location line="+50" />
         <source>the port is not open</source>
         <translation>串列埠未開啟</translation>
@@ -4298,7 +4318,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>%2 發生 Modbus 例外 %1。</translation>
     </message>
     <message>
-        <location filename="../core/device/modbus_family.cpp" line="+117" />
+        <location filename="../core/device/modbus_family.cpp" line="+118" />
         <source>Port open at %1 baud</source>
         <translation>串列埠已開啟，波特率 %1</translation>
     </message>
@@ -4348,12 +4368,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>節點 %1，波特率 %2</translation>
     </message>
     <message>
-        <location line="+61" />
+        <location line="+58" />
         <source>Node %1 answers again</source>
         <translation>節點 %1 已恢復回應</translation>
     </message>
     <message>
-        <location line="+37" />
+        <location line="+36" />
         <source>not connected</source>
         <translation>未連線</translation>
     </message>
@@ -4426,22 +4446,22 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::device::SessionEngine</name>
     <message>
-        <location filename="../core/device/session_engine.cpp" line="+113" />
+        <location filename="../core/device/session_engine.cpp" line="+111" />
         <source>the connection was closed</source>
         <translation>連線已關閉</translation>
     </message>
     <message>
-        <location line="+33" />
+        <location line="+32" />
         <source>disconnected — waiting for the device to come back</source>
         <translation>已中斷連線，正在等待裝置重新連線</translation>
     </message>
     <message>
-        <location line="+10" />
+        <location line="+9" />
         <source>automatic reconnection was turned off</source>
         <translation>自動重新連線已關閉</translation>
     </message>
     <message>
-        <location line="+30" />
+        <location line="+15" />
         <source>%1 at %2 baud (reconnected)</source>
         <translation>%1，波特率 %2（已重新連線）</translation>
     </message>
@@ -4525,7 +4545,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::model::MainStatus</name>
     <message>
-        <location filename="../core/model/main_status.cpp" line="+11" />
+        <location filename="../core/model/main_status.cpp" line="+10" />
+        <source>HiPNUC manual v1.7.1, 5.9.13</source>
+        <translation>HiPNUC 手冊 v1.7.1，5.9.13</translation>
+    </message>
+    <message>
+        <location line="+2" />
         <source>Gyro bias estimate not yet converged: keep the module still for 3-5 s to improve heading accuracy.</source>
         <translation>陀螺儀零偏估計尚未收斂：請保持模組靜止 3-5 s，以提高航向角精度。</translation>
     </message>
@@ -4556,6 +4581,11 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
     <message>
         <location line="+1" />
+        <source>the vendor's SDK; the v1.7.1 manual (5.9.13) lists bit 9 as reserved</source>
+        <translation>廠商 SDK；v1.7.1 手冊（5.9.13）將第 9 位元列為保留</translation>
+    </message>
+    <message>
+        <location line="+1" />
         <source>The magnetometer takes part in heading (9-axis mode).</source>
         <translation>磁力計參與航向解算（9 軸模式）。</translation>
     </message>
@@ -4563,6 +4593,11 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <location line="+1" />
         <source>Not synchronised to UTC: system_time is time since power-up.</source>
         <translation>未與 UTC 同步：system_time 為上電以來的時間。</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>HiPNUC manual v1.7.1, 5.9.13 (named UTC_SYNCED there, but 1 means not synchronised; the SDK calls it UTC_UNSYNC)</source>
+        <translation>HiPNUC 手冊 v1.7.1，5.9.13（手冊中名為 UTC_SYNCED，但 1 表示未同步；SDK 稱其為 UTC_UNSYNC）</translation>
     </message>
     <message>
         <location line="+1" />
@@ -5965,12 +6000,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>週期 SYNC 關閉</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+164" />
         <source>%1 kbit/s</source>
         <translation>%1 kbit/s</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="-160" />
         <source>Heading reset (J1939 1)</source>
         <translation>航向角重設（J1939 1）</translation>
     </message>
@@ -6146,7 +6181,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>PDO 關閉</translation>
     </message>
     <message>
-        <location line="+27" />
+        <location line="+34" />
         <source>%1 every %2 ms</source>
         <translation>%1，每 %2 ms</translation>
     </message>
@@ -6463,7 +6498,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::ChartView</name>
     <message>
-        <location filename="../ui/charts/chart_view.cpp" line="+90" />
+        <location filename="../ui/charts/chart_view.cpp" line="+87" />
         <source>Accelerometer</source>
         <translation>加速度計</translation>
     </message>
@@ -7137,7 +7172,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>模擬 %1（韌體 %2）</translation>
     </message>
     <message>
-        <location line="+174" />
+        <location line="+177" />
         <source>Not connected</source>
         <translation>未連線</translation>
     </message>
@@ -7289,7 +7324,7 @@ Link load = bytes per second × 10 bits / baud rate.</source>
         <translation>分析(&amp;N)</translation>
     </message>
     <message>
-        <location line="+135" />
+        <location line="+138" />
         <source>%1 was floating off the screen</source>
         <translation>%1 浮動在螢幕之外</translation>
     </message>
@@ -9522,11 +9557,11 @@ Samples: %3</source>
     </message>
     <message>
         <location line="+2" />
-        <source>&lt;b&gt;%1&lt;/b&gt; (bit %2, %3): %4</source>
-        <translation>&lt;b&gt;%1&lt;/b&gt;（位元 %2，%3）：%4</translation>
+        <source>&lt;b&gt;%1&lt;/b&gt; (bit %2, %3): %4&lt;br&gt;&lt;i&gt;Source: %5&lt;/i&gt;</source>
+        <translation>&lt;b&gt;%1&lt;/b&gt;（第 %2 位元，%3）：%4&lt;br&gt;&lt;i&gt;來源：%5&lt;/i&gt;</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+6" />
         <source>MAIN_STATUS flags of the latest frame. Set: amber = a warning about the data, blue = information, green = good news (magnetometer aiding the heading). Grey = clear; outlined = the frame carries no status word (firmware before 1.7.0, or another frame type)</source>
         <translation>最新訊框的 MAIN_STATUS 旗標。設定時：琥珀色 = 資料警告，藍色 = 資訊，綠色 = 良好（磁力計輔助航向）。灰色 = 未設定；僅外框 = 該訊框不含狀態字（1.7.0 之前的韌體或其他訊框類型）</translation>
     </message>

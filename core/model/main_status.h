@@ -1,7 +1,8 @@
 #pragma once
 // MAIN_STATUS word (HI91/HI81/HI83, firmware >= 1.7.0). A set bit is a warning
-// or an indication; bit meanings from the v1.7.1 manual section 5.9.13 and the
-// vendor SDK (bit 9 STATIC).
+// or an indication; bit meanings from the v1.7.1 manual section 5.9.13, except bit 9
+// STATIC, which that table marks reserved and the vendor's SDK names: each definition
+// says its source, and the status tooltip shows it.
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -17,6 +18,7 @@ struct StatusFlagInfo {
     const char *name;        // manual's name, e.g. "WB_CONV"
     const char *meaning;     // what a set bit means (English; translated in ui)
     FlagSeverity severity;   // of a set bit
+    const char *source;      // where the meaning comes from (English; translated in ui)
 };
 
 class MainStatus {

@@ -577,6 +577,10 @@ private Q_SLOTS:
         QVERIFY(style("ATT_CONV") != style("MAG_DIST"));
         QVERIFY(flags.flagToolTip(model::MainStatus::MagDist).contains(QLatin1String("warning")));
         QVERIFY(flags.flagToolTip(model::MainStatus::MagDist).contains(QLatin1String("disturb")));
+        // Each tooltip names its source; bit 9 is reserved in the manual and says so.
+        QVERIFY(flags.flagToolTip(model::MainStatus::MagDist).contains(QLatin1String("manual v1.7.1, 5.9.13")));
+        QVERIFY(flags.flagToolTip(model::MainStatus::Static).contains(QLatin1String("SDK")));
+        QVERIFY(flags.flagToolTip(model::MainStatus::Static).contains(QLatin1String("reserved")));
     }
 };
 

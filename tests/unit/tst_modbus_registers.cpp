@@ -235,6 +235,28 @@ private Q_SLOTS:
         QTest::newRow("6-axis") << W::headingMode(false) << hex("50 06 00 06 00 00 64 4A");
         QTest::newRow("9-axis") << W::headingMode(true) << hex("50 06 00 06 00 01 A5 8A");
     }
+    // 0xA5: the register table says 3 (level) and 5 (cancel), the worked example writes 2. What
+    // ImuDesk sends is the example; what it tells the user names the value and its source.
+    void autoLevelSaysWhatIsSentAndWhy()
+    {
+        using W = HipnucWrites;
+        QCOMPARE(W::autoLevel(true).value, uint16_t(2));
+        const QString sent = W::describe(W::autoLevel(true));
+        QVERIFY2(sent.contains(QLatin1String("value 2")) && sent.contains(QLatin1String("example"))
+                     && sent.contains(QLatin1String("lists 3")),
+                 qPrintable(sent));
+        QVERIFY(W::describe({reg::kAutoLevel, 3}).contains(QLatin1String("register table")));
+        QVERIFY(W::describe(W::autoLevel(false)).contains(QLatin1String("value 5")));
+        for (auto edition : {ManualEdition::V171, ManualEdition::V166}) {
+            const auto *r = RegisterMap::hipnuc(edition).find(reg::kAutoLevel);
+            QVERIFY(r);
+            QVERIFY(RegisterMap::accepts(*r, 2) && RegisterMap::accepts(*r, 3));
+            const QString d = RegisterMap::describe(*r);
+            QVERIFY2(d.contains(QLatin1String("3 levels once")) && d.contains(QLatin1String("example writes 2")),
+                     qPrintable(d));
+        }
+    }
+
     void writes()
     {
         QFETCH(WriteRequest, write);

@@ -123,10 +123,11 @@ void StatusFlagsWidget::retranslateUi()
         case model::FlagSeverity::Information: kind = tr("information"); break;
         case model::FlagSeverity::Warning: kind = tr("warning when set"); break;
         }
-        f.label->setToolTip(tr("<b>%1</b> (bit %2, %3): %4")
+        f.label->setToolTip(tr("<b>%1</b> (bit %2, %3): %4<br><i>Source: %5</i>")
                                 .arg(QString::fromLatin1(info->name))
                                 .arg(f.bit)
-                                .arg(kind, meaning));
+                                .arg(kind, meaning,
+                                     QCoreApplication::translate("imudesk::model::MainStatus", info->source)));
     }
     m_title->setToolTip(tr("MAIN_STATUS flags of the latest frame. Set: amber = a warning about the data, blue = "
                            "information, green = good news (magnetometer aiding the heading). Grey = clear; outlined = "

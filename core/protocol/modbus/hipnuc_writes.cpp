@@ -61,6 +61,10 @@ WriteRequest HipnucWrites::headingMode(bool nineAxis)
     return {reg::kHeadingMode, uint16_t(nineAxis ? 1 : 0)};
 }
 
+// v1.7.1 6.17.26 / v1.6.6 4.3.5 write 2 to level ("50 06 00 A5 00 02 15 A9"), while the register
+// table (v1.7.1 6.16, v1.6.6 4.2) lists 3 = level once and 5 = cancel and calls other values
+// invalid. The worked example's bytes are what the vendor's own tool is shown to send, so ImuDesk
+// sends them; describe() and the register's description say so, and 3 is accepted as well.
 WriteRequest HipnucWrites::autoLevel(bool on)
 {
     return {reg::kAutoLevel, uint16_t(on ? 2 : 5)};
@@ -112,7 +116,14 @@ QString HipnucWrites::describe(const WriteRequest &w)
         break;
     case reg::kNodeId: return tr("set the node ID to %1").arg(w.value);
     case reg::kHeadingMode: return w.value ? tr("switch to 9-axis mode") : tr("switch to 6-axis mode");
-    case reg::kAutoLevel: return w.value == 5 ? tr("cancel auto-levelling") : tr("level once");
+    case reg::kAutoLevel:
+        if (w.value == 5)
+            return tr("cancel the levelling (value 5)");
+        if (w.value == 2)
+            return tr("level once (value 2, as the manual's worked example sends it; its register table lists 3)");
+        if (w.value == 3)
+            return tr("level once (value 3, as the manual's register table defines it)");
+        break;
     case reg::kUrfr: return tr("set the mounting (URFR value %1)").arg(w.value);
     default: break;
     }
