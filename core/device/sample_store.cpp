@@ -18,6 +18,7 @@ void SampleStore::append(const std::vector<model::Sample> &batch)
         else
             m_ring[m_total % m_capacity] = s;
         ++m_total;
+        model::mergeFields(m_perField, s);
     }
 }
 
@@ -26,6 +27,7 @@ void SampleStore::clear()
     std::lock_guard lock(m_mutex);
     m_ring.clear();
     m_total = 0;
+    m_perField = model::Sample{};
 }
 
 uint64_t SampleStore::totalAppended() const
@@ -38,6 +40,14 @@ size_t SampleStore::size() const
 {
     std::lock_guard lock(m_mutex);
     return m_ring.size();
+}
+
+std::optional<model::Sample> SampleStore::latestPerField() const
+{
+    std::lock_guard lock(m_mutex);
+    if (m_total == 0)
+        return std::nullopt;
+    return m_perField;
 }
 
 std::optional<model::Sample> SampleStore::latest() const

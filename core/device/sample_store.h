@@ -22,6 +22,9 @@ public:
     size_t size() const;
     size_t capacity() const { return m_capacity; }
     std::optional<model::Sample> latest() const;
+    // The latest value of every field any sample carried (model::mergeFields), with the newest
+    // sample's source: what a values table shows when frames carry different fields.
+    std::optional<model::Sample> latestPerField() const;
     // Samples with sequence >= fromSeq still in the ring (at most maxCount, newest kept).
     // nextSeq, when given, receives the sequence number to ask for next time.
     std::vector<model::Sample> since(uint64_t fromSeq, size_t maxCount = SIZE_MAX, uint64_t *nextSeq = nullptr) const;
@@ -31,6 +34,7 @@ private:
     mutable std::mutex m_mutex;
     std::vector<model::Sample> m_ring;
     uint64_t m_total = 0;
+    model::Sample m_perField;
 };
 
 } // namespace imudesk::device

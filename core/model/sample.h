@@ -69,4 +69,9 @@ struct Sample {
     bool has(SampleField f) const { return (fields & f) != 0; }
 };
 
+// Copies every field group that src carries into dst (dst keeps the others) and takes src's
+// source and host time: "the latest value of each quantity" when a link interleaves frames
+// that carry different fields (HEC495 angles between full records, NMEA between HI91 frames).
+void mergeFields(Sample &dst, const Sample &src);
+
 } // namespace imudesk::model

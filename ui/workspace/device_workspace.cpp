@@ -398,10 +398,7 @@ void DeviceWorkspace::refreshViews()
     const quint64 total = store.totalAppended();
     if (total == m_shownTotal)
         return;
-    std::optional<model::Sample> latest = store.latest();
-    // Before firmware 1.7.0 the MAIN_STATUS bytes are reserved: show them as not reported.
-    if (latest && m_identity && m_identity->firmware && !m_identity->hasMainStatus())
-        latest->fields &= ~uint32_t(model::FieldMainStatus);
+    const std::optional<model::Sample> latest = store.latest();
     // The 3D attitude on every tick, so that it moves smoothly.
     if (latest && latest->has(model::FieldQuat))
         m_attitude->setQuaternion(latest->quat);
@@ -414,7 +411,13 @@ void DeviceWorkspace::refreshViews()
         return;
     m_valuesClock.restart();
     m_shownTotal = total;
-    m_valuesModel->refresh(latest);
+    // Each quantity's latest value, whichever frame brought it (angles-only frames between full
+    // records, NMEA between binary frames).
+    std::optional<model::Sample> values = store.latestPerField();
+    // Before firmware 1.7.0 the MAIN_STATUS bytes are reserved: show them as not reported.
+    if (values && m_identity && m_identity->firmware && !m_identity->hasMainStatus())
+        values->fields &= ~uint32_t(model::FieldMainStatus);
+    m_valuesModel->refresh(values);
     // The rows follow what the link sends (see rowInTable).
     bool rowsChanged = false;
     const bool anyData = m_valuesModel->everSeen(models::LatestValuesModel::FrameType);
@@ -428,7 +431,7 @@ void DeviceWorkspace::refreshViews()
     }
     if (rowsChanged && followsWindow())
         fitDocks(); // room for the new rows
-    m_flags->setStatus(latest && latest->has(model::FieldMainStatus) ? std::optional<quint16>(latest->mainStatus)
+    m_flags->setStatus(values && values->has(model::FieldMainStatus) ? std::optional<quint16>(values->mainStatus)
                                                                      : std::nullopt);
 }
 

@@ -1,0 +1,38 @@
+#include "sample.h"
+
+namespace imudesk::model {
+
+void mergeFields(Sample &dst, const Sample &src)
+{
+    const uint32_t f = src.fields;
+    if (f & FieldAcc) dst.acc = src.acc;
+    if (f & FieldGyr) dst.gyr = src.gyr;
+    if (f & FieldMag) dst.mag = src.mag;
+    if (f & FieldEuler) {
+        dst.roll = src.roll;
+        dst.pitch = src.pitch;
+        dst.yaw = src.yaw;
+    }
+    if (f & FieldQuat) dst.quat = src.quat;
+    if (f & FieldPressure) dst.pressurePa = src.pressurePa;
+    if (f & FieldTemperature) dst.temperatureC = src.temperatureC;
+    if (f & FieldDeviceTime) dst.deviceTimeMs = src.deviceTimeMs;
+    if (f & FieldMainStatus) dst.mainStatus = src.mainStatus;
+    if (f & FieldPosition) {
+        dst.latitudeDeg = src.latitudeDeg;
+        dst.longitudeDeg = src.longitudeDeg;
+        dst.altitudeM = src.altitudeM;
+    }
+    if (f & FieldVelocity) dst.velEnu = src.velEnu;
+    if (f & FieldHeave) dst.heaveSurgeSway = src.heaveSurgeSway;
+    if (f & FieldInclination) {
+        dst.inclinationX = src.inclinationX;
+        dst.inclinationY = src.inclinationY;
+    }
+    if (f & FieldInsStatus) dst.insStatus = src.insStatus;
+    dst.fields |= f;
+    dst.source = src.source;
+    dst.hostTimeNs = src.hostTimeNs;
+}
+
+} // namespace imudesk::model
