@@ -4228,7 +4228,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::device::HipnucSerialFamily</name>
     <message>
-        <location filename="../core/device/hipnuc_family.cpp" line="+145" />
+        <location filename="../core/device/hipnuc_family.cpp" line="+146" />
         <source>The device that came back on %1 is a different one (serial %2, before %3). Its data continues in this session.</source>
         <translation>%1 上重新出現的是另一台裝置（序號 %2，之前為 %3）。其資料將繼續記錄在此工作階段中。</translation>
     </message>
@@ -4797,7 +4797,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::models::LatestValuesModel</name>
     <message>
-        <location filename="../core/models/latest_values_model.cpp" line="+120" />
+        <location filename="../core/models/latest_values_model.cpp" line="+124" />
         <source>Quantity</source>
         <translation>物理量</translation>
     </message>
@@ -4832,7 +4832,38 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>6 慣性遞推中</translation>
     </message>
     <message>
-        <location line="+23" />
+        <location line="+13" />
+        <source>0 no fix</source>
+        <translation>0 未定位</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>1 single</source>
+        <translation>1 單點定位</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>2 DGNSS</source>
+        <translation>2 差分定位</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>4 RTK fixed</source>
+        <translation>4 RTK 固定解</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>5 RTK float</source>
+        <translation>5 RTK 浮點解</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+3" />
+        <source>%1, %n satellite(s)</source>
+        <translation>
+            <numerusform>%1，%n 顆衛星</numerusform></translation>
+    </message>
+    <message>
+        <location line="+24" />
         <source>none (%1)</source>
         <translation>無 (%1)</translation>
     </message>
@@ -4875,6 +4906,16 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <location line="+1" />
         <source>Velocity up</source>
         <translation>天向速度</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>GNSS fix</source>
+        <translation>GNSS 定位</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>UTC time</source>
+        <translation>UTC 時間</translation>
     </message>
     <message>
         <location line="+1" />
@@ -5038,6 +5079,16 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <location line="+3" />
         <source>Velocity in the east-north-up frame, in m/s.</source>
         <translation>東北天（ENU）座標系下的速度，單位 m/s。</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>GNSS fix quality (as in NMEA GGA) and satellites used, from the latest GGA or SXT sentence.</source>
+        <translation>GNSS 定位品質（與 NMEA GGA 相同）及使用的衛星數，取自最新的 GGA 或 SXT 語句。</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>UTC time of day from the latest NMEA sentence (GGA, RMC or SXT), hh:mm:ss.ss.</source>
+        <translation>取自最新 NMEA 語句（GGA、RMC 或 SXT）的 UTC 當日時間，格式 hh:mm:ss.ss。</translation>
     </message>
     <message>
         <location line="+3" />
@@ -5226,7 +5277,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::record::ReplayWorker</name>
     <message>
-        <location filename="../core/record/replay_worker.cpp" line="+61" />
+        <location filename="../core/record/replay_worker.cpp" line="+63" />
         <source>%1: %2. Replaying what is intact.</source>
         <translation>%1：%2。將重播完好的部分。</translation>
     </message>

@@ -4,6 +4,7 @@
 #include "device/stream_counters.h"
 #include "protocol/hipnuc/frame_decoder.h"
 #include "protocol/hipnuc/payloads.h"
+#include "protocol/nmea/nmea_sample.h"
 
 #include <utility>
 
@@ -263,6 +264,10 @@ void HipnucSerialFamily::handleEvents(int64_t nowNs)
             break;
         }
         case StreamEvent::Kind::Nmea:
+            if (auto s = protocol::nmea::sampleOf(e.text)) { // position, fix and time for the values
+                s->hostTimeNs = nowNs;
+                m_batch.push_back(std::move(*s));
+            }
             Q_EMIT nmeaReceived(QString::fromStdString(e.text));
             break;
         case StreamEvent::Kind::NmeaError:

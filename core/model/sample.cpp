@@ -1,5 +1,7 @@
 #include "sample.h"
 
+#include <cmath>
+
 namespace imudesk::model {
 
 void mergeFields(Sample &dst, const Sample &src)
@@ -19,9 +21,11 @@ void mergeFields(Sample &dst, const Sample &src)
     if (f & FieldDeviceTime) dst.deviceTimeMs = src.deviceTimeMs;
     if (f & FieldMainStatus) dst.mainStatus = src.mainStatus;
     if (f & FieldPosition) {
+        // NaN altitude: the sentence has none (NMEA RMC); keep the last one known.
+        if (!std::isnan(src.altitudeM) || !(dst.fields & FieldPosition))
+            dst.altitudeM = src.altitudeM;
         dst.latitudeDeg = src.latitudeDeg;
         dst.longitudeDeg = src.longitudeDeg;
-        dst.altitudeM = src.altitudeM;
     }
     if (f & FieldVelocity) dst.velEnu = src.velEnu;
     if (f & FieldHeave) dst.heaveSurgeSway = src.heaveSurgeSway;
@@ -30,6 +34,11 @@ void mergeFields(Sample &dst, const Sample &src)
         dst.inclinationY = src.inclinationY;
     }
     if (f & FieldInsStatus) dst.insStatus = src.insStatus;
+    if (f & FieldGnss) {
+        dst.gnssQuality = src.gnssQuality;
+        dst.gnssSatellites = src.gnssSatellites;
+        dst.utcTimeOfDayS = src.utcTimeOfDayS;
+    }
     dst.fields |= f;
     dst.source = src.source;
     dst.hostTimeNs = src.hostTimeNs;

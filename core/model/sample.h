@@ -47,6 +47,7 @@ enum SampleField : uint32_t {
     FieldHeave = 1u << 11,        // heave/surge/sway
     FieldInclination = 1u << 12,  // inclinometer x/y
     FieldInsStatus = 1u << 13,
+    FieldGnss = 1u << 14,         // GNSS fix quality, satellites, UTC time of day (NMEA)
 };
 
 struct Sample {
@@ -61,10 +62,13 @@ struct Sample {
     Quat quat;
     double pressurePa = 0;
     double temperatureC = 0;
-    double latitudeDeg = 0, longitudeDeg = 0, altitudeM = 0;
+    double latitudeDeg = 0, longitudeDeg = 0, altitudeM = 0; // altitude NaN: not reported
     Vec3 velEnu;            // m/s
     Vec3 heaveSurgeSway;    // m
     double inclinationX = 0, inclinationY = 0; // deg
+    int gnssQuality = 0;        // GGA style: 0 none, 1 single, 2 DGNSS, 4 RTK fixed, 5 RTK float
+    int gnssSatellites = -1;    // -1: not reported
+    double utcTimeOfDayS = -1;  // seconds since UTC midnight; -1: not reported
 
     bool has(SampleField f) const { return (fields & f) != 0; }
 };

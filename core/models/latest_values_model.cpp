@@ -1,5 +1,7 @@
 #include "latest_values_model.h"
 
+#include <cmath>
+
 #include "model/main_status.h"
 #include "plot/channel_catalog.h"
 
@@ -34,6 +36,8 @@ uint32_t fieldOf(Row row)
     case Row::VelEast:
     case Row::VelNorth:
     case Row::VelUp: return model::FieldVelocity;
+    case Row::GnssFix:
+    case Row::UtcTime: return model::FieldGnss;
     case Row::Heave:
     case Row::Surge:
     case Row::Sway: return model::FieldHeave;
@@ -206,10 +210,31 @@ QString LatestValuesModel::formatValue(Row row, const model::Sample &s) const
     }
     case Latitude: return fixed(s.latitudeDeg, 7);
     case Longitude: return fixed(s.longitudeDeg, 7);
-    case Altitude: return fixed(s.altitudeM, 3);
+    case Altitude: return std::isnan(s.altitudeM) ? missingText() : fixed(s.altitudeM, 3);
     case VelEast: return fixed(s.velEnu.x, 2);
     case VelNorth: return fixed(s.velEnu.y, 2);
     case VelUp: return fixed(s.velEnu.z, 2);
+    case GnssFix: {
+        QString fix;
+        switch (s.gnssQuality) {
+        case 0: fix = tr("0 no fix"); break;
+        case 1: fix = tr("1 single"); break;
+        case 2: fix = tr("2 DGNSS"); break;
+        case 4: fix = tr("4 RTK fixed"); break;
+        case 5: fix = tr("5 RTK float"); break;
+        default: fix = QString::number(s.gnssQuality); break;
+        }
+        return s.gnssSatellites < 0 ? fix : tr("%1, %n satellite(s)", nullptr, s.gnssSatellites).arg(fix);
+    }
+    case UtcTime: {
+        if (s.utcTimeOfDayS < 0)
+            return missingText();
+        const int whole = int(s.utcTimeOfDayS);
+        return QStringLiteral("%1:%2:%3")
+            .arg(whole / 3600, 2, 10, QLatin1Char('0'))
+            .arg(whole / 60 % 60, 2, 10, QLatin1Char('0'))
+            .arg(s.utcTimeOfDayS - whole / 60 * 60, 5, 'f', 2, QLatin1Char('0'));
+    }
     case Heave: return fixed(s.heaveSurgeSway.x, 2);
     case Surge: return fixed(s.heaveSurgeSway.y, 2);
     case Sway: return fixed(s.heaveSurgeSway.z, 2);
@@ -244,6 +269,8 @@ QString LatestValuesModel::quantityName(Row row) const
     case VelEast: return tr("Velocity east");
     case VelNorth: return tr("Velocity north");
     case VelUp: return tr("Velocity up");
+    case GnssFix: return tr("GNSS fix");
+    case UtcTime: return tr("UTC time");
     case Heave: return tr("Heave");
     case Surge: return tr("Surge");
     case Sway: return tr("Sway");
@@ -308,6 +335,8 @@ QString LatestValuesModel::toolTip(Row row) const
     case VelEast:
     case VelNorth:
     case VelUp: return tr("Velocity in the east-north-up frame, in m/s.");
+    case GnssFix: return tr("GNSS fix quality (as in NMEA GGA) and satellites used, from the latest GGA or SXT sentence.");
+    case UtcTime: return tr("UTC time of day from the latest NMEA sentence (GGA, RMC or SXT), hh:mm:ss.ss.");
     case Heave:
     case Surge:
     case Sway: return tr("Ship motion displacement (heave, surge, sway), in m.");

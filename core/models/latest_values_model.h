@@ -45,6 +45,8 @@ public:
         VelEast,
         VelNorth,
         VelUp,
+        GnssFix,
+        UtcTime,
         Heave,
         Surge,
         Sway,

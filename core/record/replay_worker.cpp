@@ -1,5 +1,7 @@
 #include "replay_worker.h"
 
+#include "protocol/nmea/nmea_sample.h"
+
 #include "device/stream_counters.h"
 #include "protocol/hipnuc/frame_decoder.h"
 
@@ -226,8 +228,12 @@ void ReplayWorker::onPacket(const protocol::hipnuc::Packet &packet, int64_t host
         m_gaps.add(s.source, s.deviceTimeMs);
 }
 
-void ReplayWorker::onNmea(const std::string &sentence, int64_t)
+void ReplayWorker::onNmea(const std::string &sentence, int64_t hostNs)
 {
+    if (auto s = protocol::nmea::sampleOf(sentence)) {
+        s->hostTimeNs = hostNs;
+        m_batch.push_back(std::move(*s));
+    }
     Q_EMIT nmeaReceived(QString::fromStdString(sentence));
 }
 

@@ -8,6 +8,8 @@
 #include <QSignalSpy>
 #include <QTest>
 
+#include <cmath>
+
 using imudesk::model::Sample;
 using imudesk::models::LatestValuesModel;
 namespace hp = imudesk::protocol::hipnuc;
@@ -91,6 +93,31 @@ private Q_SLOTS:
         m.refresh(imu);
         QVERIFY(m.everSeen(LatestValuesModel::Latitude));
         QCOMPARE(value(m, LatestValuesModel::Latitude), QStringLiteral("—"));
+    }
+
+    // NMEA: the GNSS fix with its satellites, and the UTC time of day (issue 21, point 1).
+    void gnssFixAndUtcTime()
+    {
+        Sample s;
+        s.source = "GGA";
+        s.fields = imudesk::model::FieldGnss | imudesk::model::FieldPosition;
+        s.gnssQuality = 4;
+        s.gnssSatellites = 17;
+        s.utcTimeOfDayS = 1 * 3600 + 2 * 60 + 3.5;
+        s.latitudeDeg = 31.2083333;
+        s.longitudeDeg = 121.4583333;
+        s.altitudeM = std::nan("");
+        LatestValuesModel m;
+        m.refresh(s);
+        QVERIFY(m.everSeen(LatestValuesModel::GnssFix) && m.everSeen(LatestValuesModel::UtcTime));
+        const QString fix = value(m, LatestValuesModel::GnssFix);
+        QVERIFY2(fix.startsWith(QLatin1String("4 RTK fixed")) && fix.contains(QLatin1String("17 satellite")),
+                 qPrintable(fix));
+        QCOMPARE(value(m, LatestValuesModel::UtcTime), QStringLiteral("01:02:03.50"));
+        QCOMPARE(value(m, LatestValuesModel::Altitude), QStringLiteral("—")); // an RMC-only position has none
+        s.utcTimeOfDayS = 23 * 3600 + 59 * 60 + 59.994;
+        m.refresh(s);
+        QCOMPARE(value(m, LatestValuesModel::UtcTime), QStringLiteral("23:59:59.99"));
     }
 
     void emptyShowsDash()

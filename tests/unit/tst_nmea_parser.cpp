@@ -1,8 +1,12 @@
-// NMEA GGA/RMC with checksum: the manual's RMC example, a GGA, error cases.
+// NMEA GGA/RMC/SXT with checksum: the manual's RMC example, a GGA, HiPNUC's SXT, error
+// cases, and each sentence as a sample (protocol/nmea/nmea_sample.h).
 #include "../common/golden.h"
 #include "protocol/nmea/nmea_parser.h"
+#include "protocol/nmea/nmea_sample.h"
 
 #include <QTest>
+
+#include <cmath>
 
 using namespace imudesk::protocol::nmea;
 
@@ -104,6 +108,86 @@ private Q_SLOTS:
         QCOMPARE(parseSentence(buildSentence("GPGGA,010101,-100.0,N,12127.5,E,1,08,1.0,10,M,0,M,,")).error,
                  NmeaError::BadField);
         QVERIFY(parseSentence(buildSentence("GPGGA,010101,9000.0000,S,18000.0000,W,1,08,1.0,10,M,0,M,,")).ok());
+    }
+
+    // SXT's 21 fields in the vendor SDK's order (the layout the simulator sends).
+    void sxt()
+    {
+        const auto r = parseSentence(buildSentence(
+            "GPSXT,20261126081233.40,121.458333,-31.208333,40.5,35.25,-2.50,90.0,1.5,1.25,4,0,12,0,0.1,0.2,0.3,1.0,2.0,-0.5,3,1"));
+        QVERIFY2(r.ok(), errorText(r.error));
+        QVERIFY(r.sentence->sxt);
+        const Sxt &x = *r.sentence->sxt;
+        QCOMPARE(x.date->year, 2026);
+        QCOMPARE(x.date->month, 11);
+        QCOMPARE(x.date->day, 26);
+        QCOMPARE(x.time->hour, 8);
+        QCOMPARE(x.time->minute, 12);
+        QCOMPARE(x.time->second, 33.4);
+        QCOMPARE(*x.longitudeDeg, 121.458333);
+        QCOMPARE(*x.latitudeDeg, -31.208333);
+        QCOMPARE(*x.altitudeM, 40.5);
+        QCOMPARE(*x.headingDeg, 35.25);
+        QCOMPARE(*x.pitchDeg, -2.5);
+        QCOMPARE(*x.trackDeg, 90.0);
+        QCOMPARE(*x.speedMs, 1.5);
+        QCOMPARE(*x.rollDeg, 1.25);
+        QCOMPARE(x.quality, 4);
+        QCOMPARE(x.satellites, 12);
+        QCOMPARE(*x.gyrDps[2], 0.3);
+        QCOMPARE(*x.velEnuMs[0], 1.0);
+        QCOMPARE(*x.velEnuMs[2], -0.5);
+        QCOMPARE(x.insStatus, 3);
+        QCOMPARE(x.antennaStatus, 1);
+        // As a sample: position, attitude, velocity, fix and time.
+        const auto s = toSample(*r.sentence);
+        QVERIFY(s);
+        QCOMPARE(s->source, std::string("SXT"));
+        QVERIFY(s->has(imudesk::model::FieldPosition) && s->has(imudesk::model::FieldEuler)
+                && s->has(imudesk::model::FieldVelocity) && s->has(imudesk::model::FieldGnss));
+        QCOMPARE(s->latitudeDeg, -31.208333);
+        QCOMPARE(s->yaw, 35.25);
+        QCOMPARE(s->velEnu.y, 2.0);
+        QCOMPARE(s->gnssQuality, 4);
+        QCOMPARE(s->utcTimeOfDayS, 8 * 3600 + 12 * 60 + 33.4);
+        // A latitude beyond 90 degrees is damage, not a position.
+        QCOMPARE(parseSentence(buildSentence("GPSXT,20261126081233.40,121.4,95.0,40,0,0,0,0,0,1,0,8,0,0,0,0,0,0,0,0,0")).error,
+                 NmeaError::BadField);
+    }
+
+    void sentencesAsSamples()
+    {
+        using namespace imudesk::model;
+        // The manual's RMC: valid, position and time, no altitude (NaN), at rest.
+        auto s = sampleOf(golden::kRmc);
+        QVERIFY(s && s->has(FieldPosition) && s->has(FieldGnss) && s->has(FieldVelocity));
+        QVERIFY(std::isnan(s->altitudeM));
+        QCOMPARE(s->utcTimeOfDayS, 23 * 3600 + 59 * 60 + 52.0);
+        // RMC moving east at 10 knots: velocity east 5.14 m/s.
+        s = sampleOf(buildSentence("GPRMC,010203,A,3112.5,N,12127.5,E,10.0,90.0,141125,,,A"));
+        QVERIFY(std::abs(s->velEnu.x - 5.14444) < 1e-4 && std::abs(s->velEnu.y) < 1e-9);
+        // RMC with status V: time only.
+        s = sampleOf(buildSentence("GPRMC,010203,V,,,,,,,141125,,,N"));
+        QVERIFY(s && !s->has(FieldPosition) && s->has(FieldGnss));
+        // GGA: fix quality, satellites, position with altitude.
+        s = sampleOf(buildSentence("GNGGA,010203.50,3112.5000,N,12127.5000,E,4,17,0.6,40.25,M,0,M,1.0,0001"));
+        QVERIFY(s && s->has(FieldPosition));
+        QCOMPARE(s->gnssQuality, 4);
+        QCOMPARE(s->gnssSatellites, 17);
+        QCOMPARE(s->altitudeM, 40.25);
+        // GGA without a fix: quality and satellites, no position.
+        s = sampleOf(buildSentence("GPGGA,010203,,,,,0,00,,,M,,M,,"));
+        QVERIFY(s && !s->has(FieldPosition));
+        QCOMPARE(s->gnssQuality, 0);
+        // Sentences that carry nothing a sample holds, and damaged ones, give none.
+        QVERIFY(!sampleOf(buildSentence("GPVTG,054.7,T,034.4,M,005.5,N,010.2,K")));
+        QVERIFY(!sampleOf("$GPGGA,1*00"));
+        // An RMC after a GGA keeps the GGA's altitude.
+        Sample merged;
+        mergeFields(merged, *sampleOf(buildSentence("GNGGA,010203,3112.5,N,12127.5,E,1,08,1.0,12.5,M,0,M,,")));
+        mergeFields(merged, *sampleOf(golden::kRmc));
+        QCOMPARE(merged.altitudeM, 12.5);
+        QCOMPARE(merged.source, std::string("RMC"));
     }
 
     void otherSentencesKeepFields()

@@ -15,6 +15,8 @@
 #include <QSignalSpy>
 #include <QTest>
 
+#include <cmath>
+
 using namespace imudesk;
 using device::SessionState;
 namespace hp = protocol::hipnuc;
@@ -83,6 +85,32 @@ private Q_SLOTS:
         const auto reply = finished.last().at(1).value<hp::AsciiReply>();
         QCOMPARE(reply.status, hp::AsciiReply::Status::Timeout);
         QVERIFY(QString::fromStdString(reply.errorLine).contains(QStringLiteral("200 ms")));
+    }
+
+    // NMEA between binary frames reaches the values: a GGA's position, fix and time sit in the
+    // store beside HI91's attitude (issue 21, point 1), while the frames keep flowing.
+    void nmeaBesideBinaryFrames()
+    {
+        device::DeviceSession s(nullptr, std::unique_ptr<io::Transport>(hipnucLink(115200)));
+        QSignalSpy sentences(&s, &device::DeviceSession::nmeaReceived);
+        s.open(QStringLiteral("sim:HI14"), 115200);
+        QTRY_COMPARE_WITH_TIMEOUT(s.state(), SessionState::Connected, 5000);
+        QSignalSpy finished(&s, &device::DeviceSession::commandFinished);
+        s.sendCommand(hp::commands::logOnTime(hp::Message::GGA, 0.2));
+        QTRY_VERIFY(!finished.isEmpty());
+        QVERIFY(finished.last().at(1).value<hp::AsciiReply>().ok());
+        QTRY_VERIFY_WITH_TIMEOUT(sentences.count() >= 2, 3000);
+        const uint64_t before = s.store().totalAppended();
+        QTRY_VERIFY(s.store().totalAppended() > before + 20); // HI91 goes on
+        const auto v = s.store().latestPerField();
+        QVERIFY(v && v->has(model::FieldPosition) && v->has(model::FieldGnss) && v->has(model::FieldQuat));
+        // The simulator's GGA: 3112.5000 N, 12127.5000 E, 40 m, single fix, 12 satellites.
+        QVERIFY(std::abs(v->latitudeDeg - (31 + 12.5 / 60)) < 1e-9);
+        QVERIFY(std::abs(v->longitudeDeg - (121 + 27.5 / 60)) < 1e-9);
+        QCOMPARE(v->altitudeM, 40.0);
+        QCOMPARE(v->gnssQuality, 1);
+        QCOMPARE(v->gnssSatellites, 12);
+        QVERIFY(v->utcTimeOfDayS >= 0);
     }
 
     // The link fails (a pulled cable): queued requests end NotSent, the session waits, and

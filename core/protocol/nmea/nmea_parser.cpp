@@ -248,6 +248,38 @@ ParseResult parseSentence(std::string_view line)
         if (field(f, 11).size() == 1)
             r.mode = field(f, 11)[0];
         s.rmc = r;
+    } else if (s.type == "SXT" && f.size() >= kSxtFields) {
+        Sxt x;
+        const std::string &when = field(f, 0); // yyyymmddhhmmss.ss
+        if (!when.empty()) {
+            if (when.size() < 14 || !allDigits(when, 0, 8)) {
+                bad = true;
+            } else {
+                x.date = parseDate(when.substr(6, 2) + when.substr(4, 2) + when.substr(2, 2), bad);
+                if (x.date)
+                    x.date->year = std::stoi(when.substr(0, 4));
+                x.time = parseTime(when.substr(8), bad);
+            }
+        }
+        std::optional<double> *numbers[] = {&x.longitudeDeg, &x.latitudeDeg, &x.altitudeM, &x.headingDeg,
+                                             &x.pitchDeg,     &x.trackDeg,    &x.speedMs,   &x.rollDeg};
+        for (size_t i = 0; i < std::size(numbers); ++i) {
+            *numbers[i] = toDouble(field(f, i + 1));
+            bad = bad || (!field(f, i + 1).empty() && !*numbers[i]);
+        }
+        if ((x.latitudeDeg && std::abs(*x.latitudeDeg) > 90) || (x.longitudeDeg && std::abs(*x.longitudeDeg) > 180))
+            bad = true;
+        x.quality = toInt(field(f, 9)).value_or(0);
+        x.headingQuality = toInt(field(f, 10)).value_or(0);
+        x.satellites = toInt(field(f, 11)).value_or(0);
+        x.headingSatellites = toInt(field(f, 12)).value_or(0);
+        for (size_t i = 0; i < 3; ++i) {
+            x.gyrDps[i] = toDouble(field(f, 13 + i));
+            x.velEnuMs[i] = toDouble(field(f, 16 + i));
+        }
+        x.insStatus = toInt(field(f, 19)).value_or(0);
+        x.antennaStatus = toInt(field(f, 20)).value_or(0);
+        s.sxt = x;
     }
     if (bad) {
         res.error = NmeaError::BadField;

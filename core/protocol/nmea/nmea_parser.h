@@ -1,6 +1,6 @@
 #pragma once
-// NMEA 0183 sentences that HiPNUC modules emit or accept: GGA and RMC (decoded),
-// anything else with a valid checksum is kept as "other".
+// NMEA 0183 sentences that HiPNUC modules emit or accept: GGA, RMC and HiPNUC's own SXT
+// (decoded); anything else with a valid checksum is kept with its fields, undecoded.
 #include <optional>
 #include <string>
 #include <string_view>
@@ -44,12 +44,37 @@ struct Rmc {
     double speedMs() const { return speedKnots.value_or(0) * 0.514444; }
 };
 
+// HiPNUC's $GPSXT / $GNSXT (21 fields; layout from the vendor's SDK decoder): INS position,
+// attitude and velocity in one line.
+struct Sxt {
+    std::optional<UtcDate> date;        // field 0: yyyymmddhhmmss.ss
+    std::optional<UtcTime> time;
+    std::optional<double> longitudeDeg; // decimal degrees, west negative
+    std::optional<double> latitudeDeg;
+    std::optional<double> altitudeM;
+    std::optional<double> headingDeg;
+    std::optional<double> pitchDeg;
+    std::optional<double> trackDeg;     // course over ground
+    std::optional<double> speedMs;
+    std::optional<double> rollDeg;
+    int quality = 0;                    // GGA style
+    int headingQuality = 0;
+    int satellites = 0;
+    int headingSatellites = 0;
+    std::optional<double> gyrDps[3];
+    std::optional<double> velEnuMs[3];
+    int insStatus = 0;
+    int antennaStatus = 0;
+};
+inline constexpr size_t kSxtFields = 21;
+
 struct Sentence {
     std::string talker;    // "GP", "GN", ...
     std::string type;      // "GGA", "RMC", ...
     std::vector<std::string> fields; // after the address, before '*'
     std::optional<Gga> gga;
     std::optional<Rmc> rmc;
+    std::optional<Sxt> sxt;
 };
 
 struct ParseResult {
