@@ -4,7 +4,7 @@
 <context>
     <name>CaptureExporter</name>
     <message numerus="yes">
-        <location filename="../core/record/capture_exporter.cpp" line="+351" />
+        <location filename="../core/record/capture_exporter.cpp" line="+351"/>
         <source>%n damaged chunk(s) were skipped</source>
         <translation>
             <numerusform>%n damaged chunk was skipped</numerusform>
@@ -15,7 +15,7 @@
 <context>
     <name>FileAnalysis</name>
     <message numerus="yes">
-        <location filename="../core/record/file_analysis.cpp" line="+45" />
+        <location filename="../core/record/file_analysis.cpp" line="+45"/>
         <source>%n damaged chunk(s) were skipped</source>
         <translation>
             <numerusform>%n damaged chunk was skipped</numerusform>
@@ -24,18 +24,9 @@
     </message>
 </context>
 <context>
-    <name>imudesk::models::LatestValuesModel</name>
-    <message numerus="yes">
-        <location filename="../core/models/latest_values_model.cpp" line="+227" />
-        <source>%1, %n satellite(s)</source>
-        <translation>
-            <numerusform>%1, %n satellite</numerusform><numerusform>%1, %n satellites</numerusform></translation>
-    </message>
-</context>
-<context>
     <name>imudesk::record::ReplayWorker</name>
     <message numerus="yes">
-        <location filename="../core/record/replay_worker.cpp" line="+66" />
+        <location filename="../core/record/replay_worker.cpp" line="+66"/>
         <source>%n damaged chunk(s) skipped</source>
         <translation>
             <numerusform>%n damaged chunk skipped</numerusform>
@@ -46,7 +37,7 @@
 <context>
     <name>imudesk::ui::CompassPoseView</name>
     <message numerus="yes">
-        <location filename="../ui/attitude/compass_pose_view.cpp" line="+109" />
+        <location filename="../ui/attitude/compass_pose_view.cpp" line="+109"/>
         <source>%n point(s)</source>
         <translation>
             <numerusform>%n point</numerusform>
@@ -57,7 +48,7 @@
 <context>
     <name>imudesk::ui::ExportDialog</name>
     <message numerus="yes">
-        <location filename="../ui/recording/export_dialog.cpp" line="+161" />
+        <location filename="../ui/recording/export_dialog.cpp" line="+161"/>
         <source>%n row(s) written to %1</source>
         <translation>
             <numerusform>%n row written to %1</numerusform>
@@ -68,7 +59,7 @@
 <context>
     <name>imudesk::ui::ModbusScanDialog</name>
     <message numerus="yes">
-        <location filename="../ui/bus/modbus_scan_dialog.cpp" line="+159" />
+        <location filename="../ui/bus/modbus_scan_dialog.cpp" line="+159"/>
         <source>Cancelled; %n device(s) found so far.</source>
         <translation>
             <numerusform>Cancelled; %n device found so far.</numerusform>
@@ -76,7 +67,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location line="+4" />
+        <location line="+4"/>
         <source>%n device(s) found.</source>
         <translation>
             <numerusform>%n device found.</numerusform>
@@ -87,7 +78,7 @@
 <context>
     <name>imudesk::ui::RawBytesView</name>
     <message numerus="yes">
-        <location filename="../ui/workspace/raw_bytes_view.cpp" line="+196" />
+        <location filename="../ui/workspace/raw_bytes_view.cpp" line="+196"/>
         <source>… %n read(s) or write(s) not shown (the log dropped them before this view caught up) …</source>
         <translation>
             <numerusform>… %n read or write not shown (the log dropped them before this view caught up) …</numerusform>
@@ -95,7 +86,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location line="+3" />
+        <location line="+3"/>
         <source>… %n byte(s) not shown (more arrived than the view holds) …</source>
         <translation>
             <numerusform>… %n byte not shown (more arrived than the view holds) …</numerusform>
@@ -106,7 +97,7 @@
 <context>
     <name>imudesk::ui::RecordingControls</name>
     <message numerus="yes">
-        <location filename="../ui/recording/recording_controls.cpp" line="+213" />
+        <location filename="../ui/recording/recording_controls.cpp" line="+213"/>
         <source>%n frame(s)</source>
         <translation>
             <numerusform>%n frame</numerusform>

@@ -4832,7 +4832,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>6 慣性遞推中</translation>
     </message>
     <message>
-        <location line="+13" />
+        <location line="+15" />
         <source>0 no fix</source>
         <translation>0 未定位</translation>
     </message>
@@ -4856,14 +4856,8 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <source>5 RTK float</source>
         <translation>5 RTK 浮點解</translation>
     </message>
-    <message numerus="yes">
-        <location line="+3" />
-        <source>%1, %n satellite(s)</source>
-        <translation>
-            <numerusform>%1，%n 顆衛星</numerusform></translation>
-    </message>
     <message>
-        <location line="+24" />
+        <location line="+28" />
         <source>none (%1)</source>
         <translation>無 (%1)</translation>
     </message>
@@ -5081,12 +5075,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>東北天（ENU）座標系下的速度，單位 m/s。</translation>
     </message>
     <message>
-        <location line="+1" />
-        <source>GNSS fix quality (as in NMEA GGA) and satellites used, from the latest GGA or SXT sentence.</source>
-        <translation>GNSS 定位品質（與 NMEA GGA 相同）及使用的衛星數，取自最新的 GGA 或 SXT 語句。</translation>
+        <location line="+2" />
+        <source>GNSS fix quality as in NMEA GGA, then in brackets the satellites used, from the latest GGA or SXT sentence.</source>
+        <translation>GNSS 定位品質（與 NMEA GGA 相同），括號內為使用的衛星數，取自最新的 GGA 或 SXT 語句。</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+2" />
         <source>UTC time of day from the latest NMEA sentence (GGA, RMC or SXT), hh:mm:ss.ss.</source>
         <translation>取自最新 NMEA 語句（GGA、RMC 或 SXT）的 UTC 當日時間，格式 hh:mm:ss.ss。</translation>
     </message>
@@ -7375,7 +7369,7 @@ Link load = bytes per second × 10 bits / baud rate.</source>
         <translation>分析(&amp;N)</translation>
     </message>
     <message>
-        <location line="+138" />
+        <location line="+151" />
         <source>%1 was floating off the screen</source>
         <translation>%1 浮動在螢幕之外</translation>
     </message>

@@ -34,10 +34,13 @@ void mergeFields(Sample &dst, const Sample &src)
         dst.inclinationY = src.inclinationY;
     }
     if (f & FieldInsStatus) dst.insStatus = src.insStatus;
-    if (f & FieldGnss) {
-        dst.gnssQuality = src.gnssQuality;
-        dst.gnssSatellites = src.gnssSatellites;
-        dst.utcTimeOfDayS = src.utcTimeOfDayS;
+    if (f & FieldGnss) { // an RMC reports time but no fix quality: keep the last GGA's
+        if (src.gnssQuality >= 0) {
+            dst.gnssQuality = src.gnssQuality;
+            dst.gnssSatellites = src.gnssSatellites;
+        }
+        if (src.utcTimeOfDayS >= 0)
+            dst.utcTimeOfDayS = src.utcTimeOfDayS;
     }
     dst.fields |= f;
     dst.source = src.source;

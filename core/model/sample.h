@@ -66,7 +66,7 @@ struct Sample {
     Vec3 velEnu;            // m/s
     Vec3 heaveSurgeSway;    // m
     double inclinationX = 0, inclinationY = 0; // deg
-    int gnssQuality = 0;        // GGA style: 0 none, 1 single, 2 DGNSS, 4 RTK fixed, 5 RTK float
+    int gnssQuality = -1;       // GGA style: 0 none, 1 single, 2 DGNSS, 4 RTK fixed, 5 RTK float; -1 not reported
     int gnssSatellites = -1;    // -1: not reported
     double utcTimeOfDayS = -1;  // seconds since UTC midnight; -1: not reported
 

