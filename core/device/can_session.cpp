@@ -313,7 +313,7 @@ quint64 CanSession::setBitrate(int bitrate)
                                : tr("the CANopen object 0x209A takes 125000, 250000, 500000 and 1000000 bit/s "
                                     "(800000 is a J1939 rate only)"));
         const QString title = tr("CAN bit rate %1 (saved; takes effect after a reset: reopen the session at that rate)").arg(bitrate);
-        if (protocol() == CanProtocol::J1939)
+        if (j)
             return submitJob(CanJob{0, title, {j1939Write(j1939::RegBaud, uint32_t(code), tr("set the bit rate")),
                                             j1939Write(j1939::RegCommand, j1939::CommandSave, tr("save"))}});
         return submitJob(CanJob{0, title, {sdoWriteStep(hip::ObjBaud, 0, uint32_t(code), 4, tr("set the bit rate")),

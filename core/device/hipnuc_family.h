@@ -82,6 +82,8 @@ private:
     // LOG VERSION at each rate in turn, then the whole detection; done(reachable, baud).
     void probeBauds(std::vector<int> bauds, LinkDone done);
     void probeVersion(int attempt, BaudScan::Answer answer);
+    // A usable LOG VERSION answer: kept in m_found for the scan's found step.
+    bool takeIdentity(const Reply &r);
     void finishLink(bool reachable, int baud);
 
     protocol::StreamDemux m_demux;

@@ -68,13 +68,9 @@ BaudScan::Plan HipnucSerialFamily::detectionPlan()
 void HipnucSerialFamily::detectQuery(bool retry, BaudScan::Answer answer)
 {
     engine().submit(makeRequest(hp::commands::logVersion(), kDetectQueryTimeoutMs, [this, retry, answer](const Reply &r) {
-        if (r.ok()) {
-            const auto id = model::DeviceIdentity::fromKeyValues(r.values);
-            if (id.usable()) {
-                m_found = id;
-                answer(Outcome::Found);
-                return;
-            }
+        if (takeIdentity(r)) {
+            answer(Outcome::Found);
+            return;
         }
         const bool sawFrames = m_demux.frameCounters().frames > m_framesAtDetectStart;
         if (sawFrames && !retry && m_scan.running())
@@ -203,19 +199,26 @@ void HipnucSerialFamily::probeVersion(int attempt, BaudScan::Answer answer)
             answer(Outcome::Stop);
             return;
         }
-        if (r.ok()) {
-            const auto id = model::DeviceIdentity::fromKeyValues(r.values);
-            if (id.usable()) {
-                m_found = id;
-                answer(Outcome::Found);
-                return;
-            }
+        if (takeIdentity(r)) {
+            answer(Outcome::Found);
+            return;
         }
         if (attempt < kProbeAttempts && m_scan.running())
             probeVersion(attempt + 1, answer);
         else
             answer(Outcome::TryNext);
     }));
+}
+
+bool HipnucSerialFamily::takeIdentity(const Reply &r)
+{
+    if (!r.ok())
+        return false;
+    const auto id = model::DeviceIdentity::fromKeyValues(r.values);
+    if (!id.usable())
+        return false;
+    m_found = id;
+    return true;
 }
 
 void HipnucSerialFamily::finishLink(bool reachable, int baud)

@@ -57,6 +57,14 @@ void command(HipnucSimulator &sim, const std::string &text, int64_t waitUs = 500
     sim.takeOutput();
 }
 
+// Saves, reboots (a new mounting takes effect there) and returns the next 300 ms of HI91.
+std::vector<Hi91> framesAfterReboot(HipnucSimulator &sim)
+{
+    command(sim, "SAVECONFIG");
+    command(sim, "REBOOT", 400000);
+    return hi91Frames(sim, sim.nowUs(), sim.nowUs() + 300000);
+}
+
 Eigen::Quaterniond quatOf(const Hi91 &h)
 {
     return Eigen::Quaterniond(h.quat[0], h.quat[1], h.quat[2], h.quat[3]);
@@ -447,12 +455,8 @@ void TestMotionModel::mountingLegacyMatrixMatchesCode()
         text += (i ? "," : "") + std::to_string(int(c[i / 3][i % 3]));
     command(b, text);
     QCOMPARE(b.runningConfig().urfrMatrix, c);
-    for (auto *s : {&a, &b}) {
-        command(*s, "SAVECONFIG");
-        command(*s, "REBOOT", 400000);
-    }
-    const auto fa = hi91Frames(a, a.nowUs(), a.nowUs() + 300000);
-    const auto fb = hi91Frames(b, b.nowUs(), b.nowUs() + 300000);
+    const auto fa = framesAfterReboot(a);
+    const auto fb = framesAfterReboot(b);
     QVERIFY(!fa.empty() && !fb.empty());
     const Hi91 &x = fa.back(), &y = fb.back();
     QVERIFY((vec(x.acc) - vec(y.acc)).norm() < 0.01);
@@ -473,12 +477,8 @@ void TestMotionModel::mountingLegacyYDownAsNamed()
     HipnucSimulator a(SimOptions{}), b(o166);
     command(a, "CONFIG IMU URFR 43");
     command(b, "CONFIG IMU URFR 1,0,0,0,0,1,0,-1,0");
-    for (auto *s : {&a, &b}) {
-        command(*s, "SAVECONFIG");
-        command(*s, "REBOOT", 400000);
-    }
-    const auto fa = hi91Frames(a, a.nowUs(), a.nowUs() + 300000);
-    const auto fb = hi91Frames(b, b.nowUs(), b.nowUs() + 300000);
+    const auto fa = framesAfterReboot(a);
+    const auto fb = framesAfterReboot(b);
     QVERIFY(!fa.empty() && !fb.empty());
     QVERIFY((vec(fa.back().acc) - vec(fb.back().acc)).norm() < 0.01);
     // 043: user Y = sensor +Z. The module lying flat, gravity's reaction is on user +Y; the
