@@ -849,7 +849,7 @@
 <context>
     <name>CaptureExporter</name>
     <message>
-        <location filename="../core/record/capture_exporter.cpp" line="+68" />
+        <location filename="../core/record/capture_exporter.cpp" line="+69" />
         <source>Cannot write %1: %2</source>
         <translation>無法寫入 %1：%2</translation>
     </message>
@@ -870,7 +870,7 @@
         <translation>時間範圍為空（從 %1 s 到 %2 s）。</translation>
     </message>
     <message>
-        <location line="+35" />
+        <location line="+38" />
         <source>Export cancelled.</source>
         <translation>匯出已取消。</translation>
     </message>
@@ -947,6 +947,67 @@
         <location line="+15" />
         <source>damaged chunk at offset %1 (CRC mismatch); skipped</source>
         <translation>偏移量 %1 處的資料區塊已損壞（CRC 不符）；已略過</translation>
+    </message>
+</context>
+<context>
+    <name>CaptureSource</name>
+    <message>
+        <location filename="../core/record/capture_source.cpp" line="+132" />
+        <location line="+87" />
+        <source>%1 cannot be read: %2</source>
+        <translation>無法讀取 %1：%2</translation>
+    </message>
+    <message>
+        <location line="-81" />
+        <source>%1 is empty</source>
+        <translation>%1 是空檔案</translation>
+    </message>
+    <message>
+        <location line="+14" />
+        <source>%1 is neither an ImuDesk capture, a vendor CSV (first line "HI91,...") nor a raw dump of what a module sent: its first %2 KiB hold no HiPNUC frame and no NMEA sentence</source>
+        <translation>%1 既不是 ImuDesk 採集檔案，也不是廠商 CSV（首行為 "HI91,..."），也不是模組輸出的原始位元組轉儲：其前 %2 KiB 中沒有 HiPNUC 幀，也沒有 NMEA 語句</translation>
+    </message>
+    <message>
+        <location line="+26" />
+        <source>No temporary folder to convert %1 in: %2</source>
+        <translation>沒有可用於轉換 %1 的臨時資料夾：%2</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+11" />
+        <source>%1 is a vendor CSV: %n row(s) read, times from its pc_counter column</source>
+        <translation>
+            <numerusform>%1 是廠商 CSV：已讀取 %n 行，時間取自 pc_counter 欄</numerusform></translation>
+    </message>
+    <message>
+        <location line="+12" />
+        <source>%1 is a raw byte dump without arrival times: the times shown come from the device's own clock</source>
+        <translation>%1 是原始位元組轉儲，沒有接收時間：顯示的時間取自裝置自身的時鐘</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>%1 is a raw byte dump without arrival times, and nothing in it carries a device time: every time is 0</source>
+        <translation>%1 是原始位元組轉儲，沒有接收時間，其中也沒有任何裝置時間：所有時間均為 0</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+4" />
+        <source>The device clock restarted or jumped %n time(s); the times go on across each jump.</source>
+        <translation>
+            <numerusform>裝置時鐘重啟或跳變了 %n 次；時間在每次跳變處連續延續。</numerusform></translation>
+    </message>
+    <message>
+        <location line="+17" />
+        <source>Cannot write %1: %2</source>
+        <translation>無法寫入 %1：%2</translation>
+    </message>
+    <message>
+        <location line="+24" />
+        <source>Reading %1 failed: %2</source>
+        <translation>讀取 %1 失敗：%2</translation>
+    </message>
+    <message>
+        <location line="+20" />
+        <source>Writing %1 failed: %2. Check the free disk space.</source>
+        <translation>寫入 %1 失敗：%2。請檢查磁碟剩餘空間。</translation>
     </message>
 </context>
 <context>
@@ -1142,7 +1203,7 @@
 <context>
     <name>FileAnalysis</name>
     <message>
-        <location filename="../core/record/file_analysis.cpp" line="+36" />
+        <location filename="../core/record/file_analysis.cpp" line="+52" />
         <source>Analysis cancelled.</source>
         <translation>分析已取消。</translation>
     </message>
@@ -2109,7 +2170,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>MagCalResult</name>
     <message>
-        <location filename="../core/calib/mag_cal_result.cpp" line="+51" />
+        <location filename="../core/calib/mag_cal_result.cpp" line="+71" />
         <source>Pass</source>
         <translation>通過</translation>
     </message>
@@ -2132,7 +2193,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>MagCalibrator</name>
     <message>
-        <location filename="../core/calib/mag_calibrator.cpp" line="+89" />
+        <location filename="../core/calib/mag_calibrator.cpp" line="+90" />
         <source>Only %1 usable samples; a full calibration needs at least %2. Keep turning the module slowly.</source>
         <translation>僅有 %1 個可用樣本；完整校準至少需要 %2 個。請繼續緩慢轉動模組。</translation>
     </message>
@@ -2157,7 +2218,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>樣本無法構成橢球（附近有強干擾或移動的磁鐵）。請遠離鐵件和電子裝置後重新校準。</translation>
     </message>
     <message>
-        <location line="+21" />
+        <location line="+27" />
         <source>Only %1 usable samples; the hard-iron fit needs at least %2.</source>
         <translation>僅有 %1 個可用樣本；硬鐵擬合至少需要 %2 個。</translation>
     </message>
@@ -2952,11 +3013,11 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
     <message>
         <location line="+1" />
-        <source>LOG HI83 MAP: one bit per data segment (bit 0 acc, 1 gyr, 2 mag, 3 Euler, 4 quaternion, 5 time us, 6 UTC, 7 pressure, ...); default 0x000000FF.</source>
-        <translation>LOG HI83 MAP：每個資料段佔一位元（位元 0 加速度，1 陀螺儀，2 磁力計，3 歐拉角，4 四元數，5 時間 us，6 UTC，7 氣壓，...）；預設 0x000000FF。</translation>
+        <source>LOG HI83 MAP: one bit per data segment (bit 0 acc, 1 gyr, 2 mag, 3 Euler, 4 quaternion, 5 time us, 6 UTC, 7 pressure, ..., 25 filter update counters, 26 and 27 filter biases, 28 GNSS accuracy, 29 dual-antenna heading, 30 and 31 GNSS position and velocity; 20 to 24 are reserved); default 0x000000FF.</source>
+        <translation>LOG HI83 MAP：每位對應一個資料段（位 0 加速度、1 角速度、2 磁場、3 尤拉角、4 四元數、5 時間 us、6 UTC、7 氣壓、……、25 濾波器量測更新計數、26 和 27 濾波器零偏、28 GNSS 精度、29 雙天線航向、30 和 31 GNSS 位置與速度；20 至 24 保留）；預設 0x000000FF。</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+6" />
         <source>Working mode</source>
         <translation>工作模式</translation>
     </message>
@@ -4162,12 +4223,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::device::Hec495Family</name>
     <message>
-        <location filename="../core/device/hec495_family.cpp" line="+76" />
+        <location filename="../core/device/hec495_family.cpp" line="+77" />
         <source>the request's data is longer than a Witlink frame can carry</source>
         <translation>請求的資料超過 Witlink 幀可承載的長度</translation>
     </message>
     <message>
-        <location line="+43" />
+        <location line="+44" />
         <source>no HEC495 answered on %1 at %2 baud: check the wiring (RS-232 TXD/RXD or RS-485 A/B), the power, the baud rate and the module address (%3)</source>
         <translation>%1 上沒有 HEC495 以波特率 %2 回應：請檢查接線（RS-232 TXD/RXD 或 RS-485 A/B）、電源、波特率和模組位址（%3）</translation>
     </message>
@@ -4182,7 +4243,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>嘗試 %2 次（每次 %3 ms）後仍未收到「%1」的回應（請檢查波特率和模組位址；持續輸出資料的 RS-485 模組可能漏收指令：請設為問答模式）</translation>
     </message>
     <message>
-        <location line="+141" />
+        <location line="+213" />
         <source>the module answered with an invalid reply: %1</source>
         <translation>模組的回應無效：%1</translation>
     </message>
@@ -4192,7 +4253,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>模組回報「%1」失敗（FF）</translation>
     </message>
     <message>
-        <location line="+18" />
+        <location line="+19" />
         <source>the module streams: identified without a request</source>
         <translation>模組正在持續輸出：無需請求即已識別</translation>
     </message>
@@ -4200,7 +4261,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::device::Hec495Session</name>
     <message>
-        <location filename="../core/device/hec495_session.cpp" line="+83" />
+        <location filename="../core/device/hec495_session.cpp" line="+84" />
         <source>the declination must be between -99.9 and 99.9 degrees (got %1)</source>
         <translation>磁偏角必須在 -99.9 到 99.9 度之間（收到 %1）</translation>
     </message>
@@ -4228,7 +4289,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::device::HipnucSerialFamily</name>
     <message>
-        <location filename="../core/device/hipnuc_family.cpp" line="+146" />
+        <location filename="../core/device/hipnuc_family.cpp" line="+147" />
         <source>The device that came back on %1 is a different one (serial %2, before %3). Its data continues in this session.</source>
         <translation>%1 上重新出現的是另一台裝置（序號 %2，之前為 %3）。其資料將繼續記錄在此工作階段中。</translation>
     </message>
@@ -4253,7 +4314,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>%1，波特率 %2</translation>
     </message>
     <message>
-        <location line="+40" />
+        <location line="+36" />
         <location line="+50" />
         <source>the port is not open</source>
         <translation>串列埠未開啟</translation>
@@ -4797,7 +4858,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::models::LatestValuesModel</name>
     <message>
-        <location filename="../core/models/latest_values_model.cpp" line="+124" />
+        <location filename="../core/models/latest_values_model.cpp" line="+163" />
         <source>Quantity</source>
         <translation>物理量</translation>
     </message>
@@ -4812,7 +4873,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>單位</translation>
     </message>
     <message>
-        <location line="+78" />
+        <location line="+95" />
         <source>0 invalid</source>
         <translation>0 解無效</translation>
     </message>
@@ -4857,12 +4918,22 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>5 RTK 浮點解</translation>
     </message>
     <message>
-        <location line="+28" />
+        <location line="+20" />
+        <source>true</source>
+        <translation>真北</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>magnetic</source>
+        <translation>磁北</translation>
+    </message>
+    <message>
+        <location line="+9" />
         <source>none (%1)</source>
         <translation>無 (%1)</translation>
     </message>
     <message>
-        <location line="+13" />
+        <location line="+52" />
         <source>Device time</source>
         <translation>裝置時間</translation>
     </message>
@@ -4938,6 +5009,86 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
     <message>
         <location line="+1" />
+        <source>Heading (NMEA)</source>
+        <translation>航向（NMEA）</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>UTC date</source>
+        <translation>UTC 日期</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Heave/surge/sway frequency</source>
+        <translation>升沉/縱蕩/橫蕩頻率</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Acceleration E N U</source>
+        <translation>加速度 東 北 天</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>GNSS heading fix</source>
+        <translation>GNSS 航向解狀態</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Odometer speed</source>
+        <translation>里程計速度</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Geoid undulation</source>
+        <translation>高程異常</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Differential age</source>
+        <translation>差分齡期</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Node ID</source>
+        <translation>節點 ID</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Filter updates</source>
+        <translation>濾波器量測更新</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>KF accelerometer bias</source>
+        <translation>KF 加速度零偏</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>KF gyroscope bias</source>
+        <translation>KF 陀螺零偏</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>GNSS std position, velocity</source>
+        <translation>GNSS 位置、速度標準差</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Dual antenna</source>
+        <translation>雙天線</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>GNSS lat lon alt</source>
+        <translation>GNSS 緯度 經度 高度</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>GNSS velocity E N U</source>
+        <translation>GNSS 速度 東 北 天</translation>
+    </message>
+    <message>
+        <location line="+1" />
         <source>Status flags</source>
         <translation>狀態旗標</translation>
     </message>
@@ -4948,26 +5099,33 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
     <message>
         <location line="+9" />
+        <source>UTC</source>
+        <translation>UTC</translation>
+    </message>
+    <message>
+        <location line="+2" />
         <source>G</source>
         <translation>G</translation>
     </message>
     <message>
         <location line="+0" />
+        <location line="+17" />
         <source>m/s²</source>
         <translation>m/s²</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="-16" />
         <source>deg/s</source>
         <translation>°/s</translation>
     </message>
     <message>
         <location line="+0" />
+        <location line="+17" />
         <source>rad/s</source>
         <translation>rad/s</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="-16" />
         <source>µT</source>
         <translation>µT</translation>
     </message>
@@ -4975,11 +5133,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <location line="+1" />
         <location line="+4" />
         <location line="+3" />
+        <location line="+1" />
         <source>deg</source>
         <translation>°</translation>
     </message>
     <message>
-        <location line="-6" />
+        <location line="-7" />
         <source>Pa</source>
         <translation>Pa</translation>
     </message>
@@ -4996,16 +5155,43 @@ Keep the module in place while turning it, and calibrate it together with everyt
     <message>
         <location line="+1" />
         <location line="+2" />
+        <location line="+12" />
         <source>m</source>
         <translation>m</translation>
     </message>
     <message>
-        <location line="-1" />
+        <location line="-13" />
+        <location line="+12" />
         <source>m/s</source>
         <translation>m/s</translation>
     </message>
     <message>
-        <location line="+13" />
+        <location line="-5" />
+        <source>Hz</source>
+        <translation>Hz</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>s</source>
+        <translation>s</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>m, m/s</source>
+        <translation>m, m/s</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>m, deg, deg</source>
+        <translation>m, deg, deg</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>deg, deg, m</source>
+        <translation>deg, deg, m</translation>
+    </message>
+    <message>
+        <location line="+11" />
         <source>Acceleration along the sensor's %1 axis, in G (1 G = 9.8 m/s², the vendor's constant).</source>
         <translation>沿感測器 %1 軸的加速度，單位 G（1 G = 9.8 m/s²，廠商採用的常數）。</translation>
     </message>
@@ -5051,11 +5237,91 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
     <message>
         <location line="+2" />
-        <source>Device timestamp in ms: UTC time of day when synchronised, otherwise time since power-up.</source>
-        <translation>裝置時間戳記，單位 ms：與 UTC 同步時為當天的 UTC 時間，否則為上電以來的時間。</translation>
+        <source>Device timestamp: the UTC time of day once a PPS input has aligned the module's clock (HI91, UTC_UNSYNC clear), otherwise ms since power-up.</source>
+        <translation>裝置時間戳：PPS 輸入將模組時鐘對齊後為當日 UTC 時間（HI91，UTC_UNSYNC 清除），否則為上電以來的毫秒數。</translation>
+    </message>
+    <message>
+        <location line="+22" />
+        <source>Heading from the latest NMEA heading sentence, in degrees clockwise from north: HDT true north, HDM magnetic north (an HEC495 with output content NMEA 0183 sends HDT).</source>
+        <translation>最新一條 NMEA 航向語句給出的航向，單位度，自北順時針：HDT 為真北，HDM 為磁北（輸出內容設為 NMEA 0183 的 HEC495 傳送 HDT）。</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>UTC date from the HI83 frame (bit 6), shown once GNSS time is known.</source>
+        <translation>HI83 幀中的 UTC 日期（位 6），獲得 GNSS 時間後顯示。</translation>
     </message>
     <message>
         <location line="+1" />
+        <source>Ship motion frequency (HI83 bit 11): heave, surge, sway, in Hz.</source>
+        <translation>船舶運動頻率（HI83 位 11）：升沉、縱蕩、橫蕩，單位 Hz。</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Acceleration in the east-north-up frame from integrated navigation (HI83 bit 13): E, N, U, in m/s².</source>
+        <translation>組合導航輸出的東北天座標系加速度（HI83 位 13）：東、北、天，單位 m/s²。</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Heading solution state of the GNSS (HI83 bit 15, solq_heading), then in brackets its satellites.</source>
+        <translation>GNSS 航向解狀態（HI83 位 15，solq_heading），括號內為其使用的衛星數。</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Speed from an external odometer (HI83 bit 16), in m/s.</source>
+        <translation>外接里程計速度（HI83 位 16），單位 m/s。</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Geoid undulation: height of the geoid above the ellipsoid (HI83 bit 17), in m.</source>
+        <translation>高程異常：大地水準面相對橢球面的高度（HI83 位 17），單位 m。</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Age of the RTK differential corrections (HI83 bit 18), in s.</source>
+        <translation>RTK 差分齡期（HI83 位 18），單位 s。</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The module's node ID, the same as its CAN ID, 1 to 127 (HI83 bit 19).</source>
+        <translation>模組節點 ID，與 CAN ID 相同，1 至 127（HI83 位 19）。</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Measurement updates the integrated navigation filter has made (HI83 bit 25), the counters that are not zero: grav gravity, mag magnetometer, pos GNSS position, vel GNSS velocity, dual dual-antenna heading, nhc non-holonomic constraint, zupt zero velocity, zaru zero angular rate, zihr zero heading change, od odometer; a number for the reserved counters 10 to 15.</source>
+        <translation>組合導航濾波器已進行的量測更新次數（HI83 位 25），只列出非零計數：grav 重力、mag 磁力計、pos GNSS 位置、vel GNSS 速度、dual 雙天線航向、nhc 非完整約束、zupt 零速、zaru 零角速率、zihr 零航向變化、od 里程計；保留計數 10 至 15 以編號顯示。</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Accelerometer bias the navigation filter estimates (HI83 bit 26): X, Y, Z, in m/s².</source>
+        <translation>導航濾波器估計的加速度零偏（HI83 位 26）：X、Y、Z，單位 m/s²。</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Gyroscope bias the navigation filter estimates (HI83 bit 27): X, Y, Z, in rad/s.</source>
+        <translation>導航濾波器估計的陀螺零偏（HI83 位 27）：X、Y、Z，單位 rad/s。</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>GNSS accuracy (HI83 bit 28): norm of the position standard deviation in m, of the velocity standard deviation in m/s.</source>
+        <translation>GNSS 精度（HI83 位 28）：位置標準差範數，單位 m；速度標準差範數，單位 m/s。</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Dual-antenna GNSS heading (HI83 bit 29): baseline length in m, pitch and heading in degrees.</source>
+        <translation>雙天線 GNSS 航向（HI83 位 29）：基線長度，單位 m；俯仰角和航向角，單位度。</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Raw GNSS position (HI83 bit 30): latitude and longitude in degrees, height above mean sea level in m.</source>
+        <translation>GNSS 原始位置（HI83 位 30）：緯度和經度，單位度；海拔高度，單位 m。</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Raw GNSS velocity (HI83 bit 31): east, north, up, in m/s.</source>
+        <translation>GNSS 原始速度（HI83 位 31）：東、北、天，單位 m/s。</translation>
+    </message>
+    <message>
+        <location line="-46" />
         <source>Integrated navigation state: 0 invalid, 1 aligning, 3 navigating, 6 dead reckoning.</source>
         <translation>組合導航解狀態：0 解無效，1 對準中，3 組合導航中，6 慣性遞推中。</translation>
     </message>
@@ -5271,7 +5537,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::record::ReplayWorker</name>
     <message>
-        <location filename="../core/record/replay_worker.cpp" line="+63" />
+        <location filename="../core/record/replay_worker.cpp" line="+65" />
         <source>%1: %2. Replaying what is intact.</source>
         <translation>%1：%2。將重播完好的部分。</translation>
     </message>
@@ -8625,7 +8891,7 @@ Samples: %3</source>
         <translation>%1 – %2</translation>
     </message>
     <message>
-        <location line="+67" />
+        <location line="+68" />
         <source>Save screenshot</source>
         <translation>儲存螢幕擷取畫面</translation>
     </message>
@@ -8635,7 +8901,7 @@ Samples: %3</source>
         <translation>PNG 影像 (*.png)</translation>
     </message>
     <message>
-        <location line="+67" />
+        <location line="+83" />
         <source>&amp;File</source>
         <translation>檔案(&amp;F)</translation>
     </message>
@@ -8706,6 +8972,16 @@ Samples: %3</source>
     </message>
     <message>
         <location line="+1" />
+        <source>&amp;Take one sample</source>
+        <translation>採集一次資料(&amp;T)</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Send LOG … ONMARK ONCE: the module outputs one frame of the type it sends, as a pulse on SYNC_IN would trigger</source>
+        <translation>傳送 LOG … ONMARK ONCE：模組按其當前輸出類型輸出一幀資料，與 SYNC_IN 上的一個脈衝觸發效果相同</translation>
+    </message>
+    <message>
+        <location line="+3" />
         <source>&amp;About ImuDesk</source>
         <translation>關於 ImuDesk(&amp;A)</translation>
     </message>
@@ -9540,12 +9816,12 @@ Samples: %3</source>
     <message>
         <location filename="../ui/recording/replay_controls.cpp" line="+33" />
         <location line="+64" />
-        <location line="+24" />
+        <location line="+28" />
         <source>Play</source>
         <translation>播放</translation>
     </message>
     <message>
-        <location line="-83" />
+        <location line="-87" />
         <source>%1×</source>
         <translation>%1×</translation>
     </message>
@@ -9560,12 +9836,22 @@ Samples: %3</source>
         <translation>循環播放</translation>
     </message>
     <message>
-        <location line="+78" />
+        <location line="+61" />
+        <source>This file is a raw byte dump: it has no arrival times, so the times come from the device's own clock (HI91/HI83 time stamps or NMEA UTC time).</source>
+        <translation>此檔案是原始位元組轉儲：沒有接收時間，因此時間取自裝置自身的時鐘（HI91/HI83 時間戳或 NMEA UTC 時間）。</translation>
+    </message>
+    <message>
+        <location line="+21" />
         <source>Pause</source>
         <translation>暫停</translation>
     </message>
     <message>
         <location line="+11" />
+        <source>%1 / %2 (device clock)</source>
+        <translation>%1 / %2（裝置時鐘）</translation>
+    </message>
+    <message>
+        <location line="+1" />
         <source>%1 / %2</source>
         <translation>%1 / %2</translation>
     </message>
@@ -9799,18 +10085,19 @@ Samples: %3</source>
         <translation>無法匯入 %1：%2</translation>
     </message>
     <message>
-        <location line="+8" />
+        <location line="+9" />
         <source>Open capture</source>
         <translation>開啟記錄檔</translation>
     </message>
     <message>
         <location line="+1" />
         <location line="+22" />
-        <source>Captures (*.imucap);;All files (*)</source>
-        <translation>記錄檔 (*.imucap);;所有檔案 (*)</translation>
+        <location line="+11" />
+        <source>Captures, vendor CSV and raw dumps (*.imucap *.csv *.bin *.raw *.log *.dat *.txt);;All files (*)</source>
+        <translation>採集檔案、廠商 CSV 和原始轉儲 (*.imucap *.csv *.bin *.raw *.log *.dat *.txt);;所有檔案 (*)</translation>
     </message>
     <message>
-        <location line="-15" />
+        <location line="-26" />
         <source>Import vendor CSV</source>
         <translation>匯入原廠 CSV</translation>
     </message>
@@ -9838,11 +10125,6 @@ Samples: %3</source>
         <location line="+11" />
         <source>Analyze capture</source>
         <translation>分析記錄檔</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>Captures and vendor CSV (*.imucap *.csv);;All files (*)</source>
-        <translation>記錄檔與原廠 CSV (*.imucap *.csv);;所有檔案 (*)</translation>
     </message>
 </context>
 <context>

@@ -74,6 +74,7 @@ int cmdCan(const QStringList &args);
 int simulateCan(const QString &canSpec, const QString &protocol, const QString &deviceKind, int node, sim::Motion motion,
                 uint64_t seed, const QString &firmware, const QString &flashDump = QString());
 int cmdMagcal(const QStringList &args);
+int cmdCalibrate(const QStringList &args); // commands_calibrate.cpp
 
 // Parses args with the given parser; on error prints it and returns false.
 bool parseArgs(QCommandLineParser &p, const QStringList &args, const QString &usage);

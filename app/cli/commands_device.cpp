@@ -272,7 +272,12 @@ int cmdSimulate(const QStringList &args)
                                    QStringLiteral("VERSION"), QStringLiteral("1.7.1")));
     p.addOption(QCommandLineOption(QStringLiteral("baud"), QStringLiteral("Device baud rate (default 115200)."),
                                    QStringLiteral("B"), QStringLiteral("115200")));
-    p.addOption(QCommandLineOption(QStringLiteral("motion"), QStringLiteral("static (default), spin or tumble."),
+    p.addOption(QCommandLineOption(QStringLiteral("pps"),
+                                   QStringLiteral("A GNSS receiver on SYNC_IN/PPS: the clock aligns to UTC at the first "
+                                                  "second (UTC_UNSYNC clears) and each second triggers ONMARK 1 output.")));
+    p.addOption(QCommandLineOption(QStringLiteral("motion"),
+                                   QStringLiteral("static (default), spin, tumble or turntable (still 3 s, 720 deg "
+                                                  "one way at 45 deg/s, still, 720 deg back: a gyro-scale run)."),
                                    QStringLiteral("MOTION"), QStringLiteral("static")));
     p.addOption(QCommandLineOption(QStringLiteral("seed"), QStringLiteral("Random seed (default 1)."),
                                    QStringLiteral("N"), QStringLiteral("1")));
@@ -288,7 +293,7 @@ int cmdSimulate(const QStringList &args)
                                    QStringLiteral("N"), QStringLiteral("-1")));
     const QString usage = QStringLiteral("imudesk-cli simulate --pty [--device hipnuc|hec495] [--model HI14] "
                                          "[--firmware 1.7.1] [--baud 115200] [--address N] "
-                                         "[--motion static|spin|tumble] [--seed N] [--flash-dump FILE] "
+                                         "[--motion static|spin|tumble|turntable] [--pps] [--seed N] [--flash-dump FILE] "
                                          "[--modbus [--id N]] | --can PLUGIN:INTERFACE [--protocol j1939|canopen] "
                                          "[--device hipnuc|hec495] [--node N] [--flash-dump FILE]");
     if (!parseArgs(p, args, usage))
@@ -296,7 +301,7 @@ int cmdSimulate(const QStringList &args)
     if (p.isSet(QStringLiteral("can"))) {
         sim::Motion m = sim::Motion::Static;
         if (!sim::parseMotion(p.value(QStringLiteral("motion")).toStdString(), m))
-            return fail(QStringLiteral("--motion must be static, spin or tumble"), ExitUsage);
+            return fail(QStringLiteral("--motion must be static, spin, tumble or turntable"), ExitUsage);
         return simulateCan(p.value(QStringLiteral("can")), p.value(QStringLiteral("protocol")), p.value(QStringLiteral("device")),
                            p.value(QStringLiteral("node")).toInt(), m, p.value(QStringLiteral("seed")).toULongLong(),
                            p.value(QStringLiteral("firmware")), p.value(QStringLiteral("flash-dump")));
@@ -320,15 +325,9 @@ int cmdSimulate(const QStringList &args)
     if (!ok || !protocol::hipnuc::commands::isSupportedBaud(o.baud))
         return fail(QStringLiteral("--baud must be one of 4800 9600 19200 38400 57600 115200 230400 256000 460800 921600"),
                     ExitUsage);
-    const QString motion = p.value(QStringLiteral("motion"));
-    if (motion == QLatin1String("static"))
-        o.motion = sim::Motion::Static;
-    else if (motion == QLatin1String("spin"))
-        o.motion = sim::Motion::Spin;
-    else if (motion == QLatin1String("tumble"))
-        o.motion = sim::Motion::Tumble;
-    else
-        return fail(QStringLiteral("--motion must be static, spin or tumble"), ExitUsage);
+    if (!sim::parseMotion(p.value(QStringLiteral("motion")).toStdString(), o.motion))
+        return fail(QStringLiteral("--motion must be static, spin, tumble or turntable"), ExitUsage);
+    o.ppsInput = p.isSet(QStringLiteral("pps"));
     o.seed = p.value(QStringLiteral("seed")).toULongLong(&ok);
     if (!ok)
         return fail(QStringLiteral("--seed needs a whole number"), ExitUsage);

@@ -1,4 +1,5 @@
-// imudesk-cli export: a capture to vendor CSV, tidy CSV or JSON Lines (README, "CSV layouts");
+// imudesk-cli export: a capture (or a vendor CSV or raw byte dump) to vendor CSV, tidy CSV or
+// JSON Lines (README, "CSV layouts");
 // imudesk-cli import: a vendor HI91 CSV to a capture.
 #include "cli_context.h"
 #include "record/capture_exporter.h"
@@ -23,7 +24,7 @@ int cmdExport(const QStringList &args)
     p.addOption(QCommandLineOption(QStringLiteral("to"), QStringLiteral("End, seconds since the recording began."),
                                    QStringLiteral("S")));
     p.addOption(QCommandLineOption(QStringLiteral("progress"), QStringLiteral("Print progress to stderr.")));
-    p.addPositionalArgument(QStringLiteral("FILE"), QStringLiteral("Capture file (.imucap)."));
+    p.addPositionalArgument(QStringLiteral("FILE"), QStringLiteral("A capture, a vendor HI91 CSV or a raw byte dump (recognised by content)."));
     if (!parseArgs(p, args,
                    QStringLiteral("imudesk-cli export FILE --format vendor-csv|csv|jsonl [-o OUT] [--from S --to S]")))
         return ExitUsage;
@@ -67,6 +68,8 @@ int cmdExport(const QStringList &args)
         return fail(QStringLiteral("interrupted; the partial output was removed"), ExitInterrupted);
     if (!r.ok)
         return fail(r.error);
+    for (const QString &n : r.notes)
+        std::fprintf(stderr, "imudesk-cli: note: %s\n", qPrintable(n));
     if (!r.warning.isEmpty())
         std::fprintf(stderr, "imudesk-cli: warning: %s\n", qPrintable(r.warning));
     for (const QString &f : r.files)

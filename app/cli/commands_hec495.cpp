@@ -3,6 +3,7 @@
 #include "cli_context.h"
 #include "device/family_detector.h"
 #include "device/hec495_session.h"
+#include "protocol/nmea/nmea_sample.h"
 #include "sim/hec495_simulator.h"
 #include "sim/pty_simulator.h"
 
@@ -25,7 +26,8 @@ using device::Hec495Session;
 
 const QString kUsage = QStringLiteral(
     "imudesk-cli hec495 PORT [--baud B] [--address N] [--json] ACTION\n"
-    "  ACTION: read [--count N] | info | declination [VALUE] | baud B | rate HZ | content default|internal|all|nmea\n"
+    "  ACTION: read [--count N] | nmea [--count N] | info | declination [VALUE] | baud B | rate HZ\n"
+    "          | content default|internal|all|nmea"
     "          | address N | save | reset | calibrate auto12|manual|all|small-tilt|planar [--timeout S]");
 
 void printJson(const QJsonObject &o)
@@ -195,7 +197,7 @@ int cmdHec495(const QStringList &args)
     p.addOption(QCommandLineOption(QStringLiteral("address"), QStringLiteral("Module address (default 0)."),
                                    QStringLiteral("N"), QStringLiteral("0")));
     p.addOption(QCommandLineOption(QStringLiteral("json"), QStringLiteral("Machine-readable JSON output.")));
-    p.addOption(QCommandLineOption(QStringLiteral("count"), QStringLiteral("read: records to print (default 1)."),
+    p.addOption(QCommandLineOption(QStringLiteral("count"), QStringLiteral("read, nmea: records or sentences to print (default 1)."),
                                    QStringLiteral("N"), QStringLiteral("1")));
     p.addOption(QCommandLineOption(QStringLiteral("timeout"),
                                    QStringLiteral("calibrate: seconds to collect points (default 30)."),
@@ -230,7 +232,7 @@ int cmdHec495(const QStringList &args)
     if (!ok || address < 0 || address > 255)
         return fail(QStringLiteral("--address must be 0 to 255"), ExitUsage);
     const bool json = p.isSet(QStringLiteral("json"));
-    static const QMap<QString, int> kArgs = {{"read", 0}, {"info", 0}, {"declination", -1}, {"baud", 1},
+    static const QMap<QString, int> kArgs = {{"read", 0}, {"nmea", 0}, {"info", 0}, {"declination", -1}, {"baud", 1},
                                              {"rate", 1}, {"content", 1}, {"address", 1},    {"save", 0},
                                              {"reset", 0}, {"calibrate", 1}};
     if (!kArgs.contains(action))
@@ -269,6 +271,37 @@ int cmdHec495(const QStringList &args)
                         .arg(double(rec.gyr[0]), 0, 'f', 2).arg(double(rec.gyr[1]), 0, 'f', 2)
                         .arg(double(rec.gyr[2]), 0, 'f', 2).arg(rec.timeMs));
         }
+        return ExitOk;
+    }
+    if (action == QLatin1String("nmea")) {
+        // The sentences of output content NMEA 0183 ("content nmea", then "rate HZ"), as they
+        // arrive; --json adds the heading of the ones that carry it.
+        const int count = p.value(QStringLiteral("count")).toInt(&ok);
+        if (!ok || count <= 0)
+            return fail(QStringLiteral("--count needs a positive number"), ExitUsage);
+        int seen = 0;
+        QObject::connect(&s, &Hec495Session::nmeaReceived, &s, [&](const QString &sentence) {
+            if (seen >= count)
+                return;
+            ++seen;
+            if (!json) {
+                out(sentence);
+                return;
+            }
+            QJsonObject o{{QStringLiteral("sentence"), sentence}};
+            if (auto sample = protocol::nmea::sampleOf(sentence.toStdString()); sample && sample->has(model::FieldHeading))
+                o[sample->headingTrue ? QStringLiteral("heading_true") : QStringLiteral("heading_magnetic")] =
+                    sample->headingDeg;
+            printJson(o);
+        });
+        waitFor([&] { return seen >= count || !failure.isEmpty(); }, 5000 + 1000 * count);
+        if (seen < count)
+            return fail(failure.isEmpty() ? QStringLiteral("%1 of %2 NMEA sentences arrived: set the output content to "
+                                                           "NMEA (content nmea) and an output rate (rate HZ)")
+                                                .arg(seen)
+                                                .arg(count)
+                                          : failure,
+                        interrupted() ? ExitInterrupted : ExitFailure);
         return ExitOk;
     }
     if (action == QLatin1String("info")) {

@@ -29,8 +29,10 @@ void usage(FILE *to)
                "                                         vendor CSV\n"
                "  magcal FILE [--json] [--mode full|hard_iron_only|planar] [--field UT]\n"
                "                                         magnetometer calibration of a CSV (mag_x,mag_y,mag_z uT)\n"
+               "  calibrate PORT mag|gyro-scale|level|heading-reset|hec495-clear [--json]\n"
+               "                                         run a device-side calibration, progress on stderr\n"
                "  simulate --pty [--model HI14] [--firmware 1.7.1] [--baud 115200]\n"
-               "           [--motion static|spin|tumble] [--seed N]\n"
+               "           [--motion static|spin|tumble|turntable] [--seed N]\n"
                "                                         serve a simulated device on a pseudo-terminal\n"
                "  simulate --pty --modbus [--device hipnuc|hec495] [--id N] [--baud B]\n"
                "                                         serve a simulated Modbus RTU device\n"
@@ -39,7 +41,7 @@ void usage(FILE *to)
                "  update PORT FILE [--baud B] [--json]   update the firmware (KBOOT), verified by read-back\n"
                "  update --can PLUGIN:IF [--node N] [--bitrate B] FILE [--json]   update over CANopen SDO (0x1F51)\n"
                "  simulate --pty --device hec495 [--baud 9600] [--address N] [--motion M] [--seed N]\n"
-               "  hec495 PORT [--baud B] [--address N] [--json] read|info|declination [VALUE]|baud B|rate HZ|\n"
+               "  hec495 PORT [--baud B] [--address N] [--json] read|nmea|info|declination [VALUE]|baud B|rate HZ|\n"
                "         content C|address N|save|reset|calibrate METHOD   talk to a Witlink HEC495 compass\n"
                "  simulate --can virtualcan:can0 --protocol j1939|canopen [--device hipnuc|hec495] [--node N]\n"
                "                                         serve a simulated CAN device\n"
@@ -85,6 +87,7 @@ int main(int argc, char **argv)
         {QStringLiteral("hec495"), cmdHec495},
         {QStringLiteral("can"), cmdCan},
         {QStringLiteral("magcal"), cmdMagcal},
+        {QStringLiteral("calibrate"), cmdCalibrate},
     };
     const auto it = commands.find(cmd);
     if (it == commands.end()) {

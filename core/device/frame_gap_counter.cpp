@@ -77,14 +77,23 @@ bool jitteryPeriod(double period)
 
 } // namespace
 
-uint64_t FrameGapCounter::add(const std::string &type, double t)
+uint64_t FrameGapCounter::add(const std::string &type, double t, int timeBase)
 {
     auto [it, fresh] = m_tracks.try_emplace(type);
     Track &k = it->second;
     if (fresh)
         m_lostByType.try_emplace(type, 0);
+    if (k.havePrev && timeBase != k.timeBase) {
+        // The device's clock changed (aligned to UTC): count what held, then learn again.
+        const uint64_t n = commitPending(k);
+        k.timeBase = timeBase;
+        k.prev = t;
+        begin(k, t);
+        return account(type, k, n);
+    }
     if (!k.havePrev) {
         k.havePrev = true;
+        k.timeBase = timeBase;
         k.prev = t;
         begin(k, t);
         return 0;

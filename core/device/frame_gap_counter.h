@@ -50,7 +50,10 @@ public:
     static constexpr int kRateWindow = 8;        // frames that reveal a rate change
 
     // Feeds one frame's device timestamp in ms. Returns the frames newly counted as lost.
-    uint64_t add(const std::string &type, double deviceTimeMs);
+    // timeBase names the clock the stamps count on (HiPNUC: 1 while MAIN_STATUS has
+    // UTC_UNSYNC, the time since power-on; 0 once PPS aligned it to the UTC day, v1.7.1
+    // manual 2.2.2): when it changes, the jump between the two clocks is not a loss.
+    uint64_t add(const std::string &type, double deviceTimeMs, int timeBase = 0);
 
     // Forgets the period and grid of every type (or one type); counts and expected
     // periods are kept. A loss that held for the last few frames is counted first.
@@ -81,6 +84,7 @@ private:
     struct Track {
         bool havePrev = false;
         double prev = 0;
+        int timeBase = 0;
         double expected = 0;          // hint, 0 = none
         // learning
         std::vector<double> learnTimes;

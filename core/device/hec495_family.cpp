@@ -1,6 +1,7 @@
 #include "hec495_family.h"
 
 #include "device/session_engine.h"
+#include "protocol/nmea/nmea_sample.h"
 #include "protocol/witlink/commands.h"
 
 #include <QLoggingCategory>
@@ -89,6 +90,7 @@ int Hec495Family::firstBaud(int requestedBaud) const
 void Hec495Family::opened(int requestedBaud)
 {
     m_streaming = false;
+    m_linkEchoes = false;
     m_identityKnown = false;
     engine().setState(SessionState::Detecting, engine().transport().address());
     BaudScan::Plan p;
@@ -248,8 +250,16 @@ void Hec495Family::finished(const Request &r, const RequestResult &result)
         setStreaming(false);
         break;
     case C::SetOutputRate:
+        // NMEA output is text beside which the family keeps polling (handleText).
         if (c.data.size() == 1)
-            setStreaming(wl::commands::rateFromCode(c.data[0]) > 0);
+            setStreaming(wl::commands::rateFromCode(c.data[0]) > 0 && m_content != uint8_t(wl::OutputContent::Nmea0183));
+        break;
+    case C::SetOutputContent:
+        if (c.data.size() == 1) {
+            m_content = c.data[0];
+            if (m_content == uint8_t(wl::OutputContent::Nmea0183))
+                setStreaming(false);
+        }
         break;
     default:
         break;
@@ -264,22 +274,71 @@ void Hec495Family::resetCounters()
     m_decoder = wl::FrameDecoder{};
     m_framesByType.clear();
     m_payloadErrors = 0;
+    m_nmeaSentences = 0;
+    m_nmeaErrors = 0;
 }
 
 void Hec495Family::feed(const QByteArray &bytes, int64_t nowNs)
 {
     m_frames.clear();
+    m_batch.clear();
     m_decoder.feed(reinterpret_cast<const uint8_t *>(bytes.constData()), size_t(bytes.size()), m_frames);
-    m_decoder.takeSkipped(); // text (NMEA output) and noise: counted, not kept
+    handleText(nowNs);
     handleFrames(m_frames, nowNs);
+    if (!m_batch.empty())
+        engine().appendSamples(m_batch);
 }
 
 void Hec495Family::lineIdle(int64_t nowNs)
 {
     m_frames.clear();
+    m_batch.clear();
     m_decoder.flushIdle(m_frames);
-    m_decoder.takeSkipped();
+    handleText(nowNs);
     handleFrames(m_frames, nowNs);
+    if (!m_batch.empty())
+        engine().appendSamples(m_batch);
+}
+
+void Hec495Family::handleText(int64_t nowNs)
+{
+    namespace nmea = protocol::nmea;
+    // The bytes that belong to no frame: NMEA output, or noise (counted as skipped either way).
+    for (const char c : m_decoder.takeSkipped()) {
+        if (c == '$') { // a sentence starts: what came before it was not one
+            m_line.assign(1, c);
+            m_lineOverflow = false;
+            continue;
+        }
+        if (c != '\n') {
+            if (m_line.empty())
+                continue;
+            if (m_line.size() < nmea::kMaxSentenceLength + 1)
+                m_line.push_back(c);
+            else
+                m_lineOverflow = true;
+            continue;
+        }
+        if (!m_line.empty() && m_line.back() == '\r')
+            m_line.pop_back();
+        if (m_line.empty())
+            continue;
+        const nmea::ParseResult parsed = m_lineOverflow ? nmea::ParseResult{{}, nmea::NmeaError::TooLong}
+                                                        : nmea::parseSentence(m_line);
+        if (parsed.sentence) {
+            ++m_nmeaSentences;
+            ++m_framesByType["NMEA " + parsed.sentence->type];
+            if (auto sample = nmea::toSample(*parsed.sentence)) {
+                sample->hostTimeNs = nowNs;
+                m_batch.push_back(std::move(*sample));
+            }
+            Q_EMIT nmeaReceived(QString::fromStdString(m_line));
+        } else {
+            ++m_nmeaErrors;
+        }
+        m_line.clear();
+        m_lineOverflow = false;
+    }
 }
 
 bool Hec495Family::answersCurrent(const wl::Frame &f) const
@@ -300,14 +359,29 @@ void Hec495Family::handleFrames(const std::vector<wl::Frame> &frames, int64_t no
 {
     if (frames.empty())
         return;
-    m_batch.clear();
     bool unsolicitedData = false;
     for (const auto &f : frames) {
         if (const Request *current = engine().current()) {
             const std::vector<uint8_t> heard = wl::encodeFrame(f);
             if (QByteArray::fromRawData(reinterpret_cast<const char *>(heard.data()), qsizetype(heard.size()))
-                == current->wire)
-                continue; // our own request heard back (RS-485 echo)
+                == current->wire) {
+                // Our own request heard back (an RS-485 echo), or, for a command the manual
+                // answers with its own bytes (0x49 prints 49: "77 05 00 49 00 4E" is both "set
+                // content 00" and its success), the reply itself. A request that is no valid
+                // reply (the identification's "read all" has no record) is an echo, and then
+                // the link echoes everything: there the first identical frame is the echo.
+                const bool validReply = wl::decodeReply(f).ok() && answersCurrent(f);
+                if (!validReply) {
+                    m_linkEchoes = true;
+                    continue;
+                }
+                // An echoing link: the first identical frame of this attempt is the echo.
+                const std::pair<const Request *, int> attempt{current, current->attempts};
+                if (m_linkEchoes && m_echoHeard != attempt) {
+                    m_echoHeard = attempt;
+                    continue;
+                }
+            }
         }
         const wl::Reply r = wl::decodeReply(f);
         const bool data = r.ok() && (r.kind == wl::Reply::Kind::AllData || r.kind == wl::Reply::Kind::Angles);
@@ -344,6 +418,7 @@ void Hec495Family::handleFrames(const std::vector<wl::Frame> &frames, int64_t no
                 res.status = RequestStatus::Ok;
                 res.message = r.describe();
             }
+            m_echoHeard = {};
             engine().finishCurrent(std::move(res));
             continue;
         }
@@ -363,7 +438,6 @@ void Hec495Family::handleFrames(const std::vector<wl::Frame> &frames, int64_t no
             engine().releaseHeldWrite(); // the line is quiet until the next frame
         }
     }
-    engine().appendSamples(m_batch);
 }
 
 void Hec495Family::fillCounters(SessionStats &s) const
@@ -376,6 +450,8 @@ void Hec495Family::fillCounters(SessionStats &s) const
     s.bytesSkipped = c.bytesSkipped;
     s.payloadErrors = m_payloadErrors;
     s.framesByType = m_framesByType;
+    s.nmeaSentences = m_nmeaSentences;
+    s.nmeaErrors = m_nmeaErrors;
 }
 
 } // namespace imudesk::device

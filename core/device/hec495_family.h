@@ -8,7 +8,10 @@
 //     is quiet until the next one), or after kGapWaitMs without one.
 //   * A reply answers the pending request when its command byte is one the request allows
 //     (commands::expectedReplies) and it comes from the module's address (2.16's reply to
-//     "set address" carries FF). The host's own request heard back (an RS-485 echo) is ignored.
+//     "set address" carries FF). The host's own request heard back (an RS-485 echo) is ignored;
+//     where the manual's reply can equal the request byte for byte ("set content 00": 77 05 00
+//     49 00 4E both ways), an identical frame that decodes as a valid reply is the reply, unless
+//     the link has echoed before (then the first one of each attempt is the echo).
 //   * After "set baud" succeeds the host follows to the new rate (the reply comes at the
 //     old one, 2.13); after "set address" the new address is used; after "factory reset"
 //     9600 and address 0.
@@ -17,6 +20,11 @@
 //     answers commands, so identification retries until kIdentifyWindowMs has passed.
 //   * In question/answer mode the family polls "read all" at the polling rate while no
 //     other request is pending; auto-output frames (84 angles, 14 record) become samples.
+//   * Output content NMEA 0183 (0x49 = 03): the module sends text sentences ($HCHDT) instead
+//     of frames. Every line with a valid checksum is counted by its type; the ones
+//     protocol::nmea decodes become samples (HDT: the heading), the others are handed out
+//     raw (nmeaReceived). Text is not a data frame: polling goes on beside it, so pitch,
+//     roll and the rest keep coming.
 #include "device/baud_scan.h"
 #include "device/family_plugin.h"
 #include "device/hec495_result.h"
@@ -28,6 +36,7 @@
 
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace imudesk::device {
@@ -60,7 +69,11 @@ public:
     int firstBaud(int requestedBaud) const override;
     void opened(int requestedBaud) override;
     void stopping() override;
-    void restartStream() override { m_decoder.reset(); }
+    void restartStream() override
+    {
+        m_decoder.reset();
+        m_line.clear();
+    }
     void resetCounters() override;
     void feed(const QByteArray &bytes, int64_t nowNs) override;
     bool midUnit() const override { return m_decoder.pendingBytes() > 0; }
@@ -79,8 +92,11 @@ Q_SIGNALS:
     void streamingChanged(bool streaming);
     // A calibration point was collected (automatic methods report them unasked).
     void calibrationPoint(int points);
+    // An NMEA sentence with a valid checksum (output content NMEA 0183), without CR/LF.
+    void nmeaReceived(const QString &sentence);
 
 private:
+    void handleText(int64_t nowNs);
     void handleFrames(const std::vector<protocol::witlink::Frame> &frames, int64_t nowNs);
     bool answersCurrent(const protocol::witlink::Frame &f) const;
     void followBaud(int baud);
@@ -99,10 +115,17 @@ private:
     int m_pollHz = 10;
     bool m_streaming = false;
     bool m_identityKnown = false;
+    bool m_linkEchoes = false;        // a request was heard back (RS-485 echo)
+    std::pair<const Request *, int> m_echoHeard{}; // the attempt whose echo was skipped
     QElapsedTimer m_lastStreamFrame; // since the last auto-output frame
 
     std::map<std::string, uint64_t> m_framesByType;
     uint64_t m_payloadErrors = 0;
+    std::string m_line;               // the NMEA sentence being received (at most kMaxSentenceLength)
+    bool m_lineOverflow = false;
+    uint8_t m_content = 0xFF;         // output content (0x49) last set, 0xFF: unknown
+    uint64_t m_nmeaSentences = 0;
+    uint64_t m_nmeaErrors = 0;
 };
 
 } // namespace imudesk::device

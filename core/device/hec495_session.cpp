@@ -37,6 +37,7 @@ Hec495Session::Hec495Session(QObject *parent, std::unique_ptr<io::Transport> tra
     connect(this, &Session::requestEnded, this,
             [this](const RequestResult &r) { Q_EMIT commandFinished(r.id, toResult(r)); });
     connect(f, &Hec495Family::calibrationPoint, this, &Hec495Session::calibrationPoint);
+    connect(f, &Hec495Family::nmeaReceived, this, &Hec495Session::nmeaReceived);
     connect(f, &Hec495Family::baudChanged, this, [this](int b) {
         m_baud = b;
         Q_EMIT baudChanged(b);

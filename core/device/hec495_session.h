@@ -66,6 +66,8 @@ Q_SIGNALS:
     void streamingChanged(bool streaming);
     // A calibration point was collected (automatic methods report them unasked).
     void calibrationPoint(int points);
+    // An NMEA sentence (output content NMEA 0183); the decoded ones are samples as well.
+    void nmeaReceived(const QString &sentence);
 
 private:
     quint64 invalid(protocol::witlink::Command command, const QString &why);

@@ -2,6 +2,7 @@
 
 #include "device/session_engine.h"
 #include "device/stream_counters.h"
+#include "model/main_status.h"
 #include "protocol/hipnuc/frame_decoder.h"
 #include "protocol/hipnuc/payloads.h"
 #include "protocol/nmea/nmea_sample.h"
@@ -259,7 +260,7 @@ void HipnucSerialFamily::handleEvents(int64_t nowNs)
                 const model::Sample &sample = m_batch[i];
                 m_frameBytes[sample.source] = e.payload.size() + hp::FrameDecoder::kHeaderSize;
                 if (sample.has(model::FieldDeviceTime))
-                    m_gaps.add(sample.source, sample.deviceTimeMs);
+                    m_gaps.add(sample.source, sample.deviceTimeMs, model::MainStatus::timeBase(sample.has(model::FieldMainStatus), sample.mainStatus));
             }
             break;
         }
@@ -267,6 +268,8 @@ void HipnucSerialFamily::handleEvents(int64_t nowNs)
             if (auto s = protocol::nmea::sampleOf(e.text)) { // position, fix and time for the values
                 s->hostTimeNs = nowNs;
                 m_batch.push_back(std::move(*s));
+            } else {
+                Q_EMIT textReceived(QString::fromStdString(e.text)); // a sentence ImuDesk does not decode: shown raw
             }
             Q_EMIT nmeaReceived(QString::fromStdString(e.text));
             break;

@@ -47,6 +47,11 @@ public:
 
     static const std::vector<StatusFlagInfo> &definitions();
 
+    // The clock a frame's system_time counts on, for FrameGapCounter::add: 1 while
+    // UTC_UNSYNC is set (time since power-on), 0 once PPS aligned it to the UTC day (v1.7.1
+    // manual 2.2.2, 5.9.13), and 0 for a frame without a status word.
+    static int timeBase(bool hasStatus, uint16_t raw) { return hasStatus ? int((raw >> UtcUnsync) & 1u) : 0; }
+
 private:
     uint16_t m_raw = 0;
 };

@@ -42,6 +42,45 @@ void mergeFields(Sample &dst, const Sample &src)
         if (src.utcTimeOfDayS >= 0)
             dst.utcTimeOfDayS = src.utcTimeOfDayS;
     }
+    if (f & FieldHeading) {
+        dst.headingDeg = src.headingDeg;
+        dst.headingTrue = src.headingTrue;
+    }
+    if ((f & FieldHi83Extra) && src.hi83) {
+        // Share the newer block when it carries every field the older one did (one module's
+        // frames all have the same bitmap); otherwise merge field by field.
+        if (!dst.hi83 || (dst.hi83->bits & ~src.hi83->bits) == 0) {
+            dst.hi83 = src.hi83;
+        } else {
+            auto merged = std::make_shared<Hi83Extra>(*dst.hi83);
+            const Hi83Extra &n = *src.hi83;
+            auto take = [&](int bit, auto member) {
+                if (n.has(bit)) merged.get()->*member = n.*member;
+            };
+            take(6, &Hi83Extra::utcDate);
+            take(11, &Hi83Extra::hssFreqHz);
+            take(13, &Hi83Extra::accEnu);
+            if (n.has(15)) {
+                merged->solqPos = n.solqPos;
+                merged->nvPos = n.nvPos;
+                merged->solqHeading = n.solqHeading;
+                merged->nvHeading = n.nvHeading;
+            }
+            take(16, &Hi83Extra::odSpeedMs);
+            take(17, &Hi83Extra::undulationM);
+            take(18, &Hi83Extra::diffAgeS);
+            take(19, &Hi83Extra::nodeId);
+            take(25, &Hi83Extra::eventCounter);
+            take(26, &Hi83Extra::kfAccBias);
+            take(27, &Hi83Extra::kfGyrBias);
+            take(28, &Hi83Extra::gnssStd);
+            take(29, &Hi83Extra::dualHeading);
+            take(30, &Hi83Extra::gnssLonLatMsl);
+            take(31, &Hi83Extra::gnssVelEnu);
+            merged->bits |= n.bits;
+            dst.hi83 = std::move(merged);
+        }
+    }
     dst.fields |= f;
     dst.source = src.source;
     dst.hostTimeNs = src.hostTimeNs;

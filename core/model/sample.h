@@ -13,6 +13,7 @@
 //   hostTimeNs   monotonic host clock when the bytes arrived (0 when decoded offline)
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <string>
 
 namespace imudesk::model {
@@ -29,6 +30,30 @@ struct Vec3 {
 struct Quat {
     double w = 1, x = 0, y = 0, z = 0;
     friend bool operator==(const Quat &, const Quat &) = default;
+};
+
+// The HI83 fields (v1.7.1 manual 5.9.12) that no other frame carries. A sample holds them
+// behind a shared pointer, so a sample without them stays small and copies without a heap
+// allocation. `bits` says which of them the frame carried (the data_bitmap bit numbers).
+struct Hi83Extra {
+    uint32_t bits = 0;
+    std::array<uint16_t, 3> utcDate{};      // bit 6: year (2000 + yy), month, day; the time of day is Sample::utcTimeOfDayS
+    std::array<float, 3> hssFreqHz{};       // bit 11: heave, surge, sway
+    std::array<float, 3> accEnu{};          // bit 13, m/s^2
+    uint8_t solqPos = 0, nvPos = 0, solqHeading = 0, nvHeading = 0; // bit 15
+    float odSpeedMs = 0;                    // bit 16
+    float undulationM = 0;                  // bit 17
+    float diffAgeS = 0;                     // bit 18
+    uint8_t nodeId = 0;                     // bit 19
+    std::array<uint32_t, 16> eventCounter{}; // bit 25: gravity, mag, gnss_pos, gnss_vel, dual_heading, nhc, zupt, zaru, zihr, od, reserved...
+    std::array<float, 3> kfAccBias{};       // bit 26, m/s^2
+    std::array<float, 3> kfGyrBias{};       // bit 27, rad/s
+    std::array<float, 3> gnssStd{};         // bit 28: position std norm, velocity std norm, reserved
+    std::array<float, 3> dualHeading{};     // bit 29: baseline m, pitch deg, heading deg
+    std::array<double, 3> gnssLonLatMsl{};  // bit 30: deg, deg, m
+    std::array<float, 3> gnssVelEnu{};      // bit 31, m/s
+    bool has(int bit) const { return (bits >> bit) & 1u; }
+    friend bool operator==(const Hi83Extra &, const Hi83Extra &) = default;
 };
 
 // Which members of a Sample hold data.
@@ -48,6 +73,8 @@ enum SampleField : uint32_t {
     FieldInclination = 1u << 12,  // inclinometer x/y
     FieldInsStatus = 1u << 13,
     FieldGnss = 1u << 14,         // GNSS fix quality, satellites, UTC time of day (NMEA)
+    FieldHeading = 1u << 15,      // a heading reported on its own (NMEA HDT, HDM)
+    FieldHi83Extra = 1u << 16,    // Sample::hi83: HI83 fields beyond the ones above
 };
 
 struct Sample {
@@ -69,6 +96,9 @@ struct Sample {
     int gnssQuality = -1;       // GGA style: 0 none, 1 single, 2 DGNSS, 4 RTK fixed, 5 RTK float; -1 not reported
     int gnssSatellites = -1;    // -1: not reported
     double utcTimeOfDayS = -1;  // seconds since UTC midnight; -1: not reported
+    double headingDeg = 0;      // FieldHeading, 0..360 clockwise from north
+    bool headingTrue = true;    //   from true north (NMEA HDT) or magnetic north (HDM)
+    std::shared_ptr<const Hi83Extra> hi83; // FieldHi83Extra
 
     bool has(SampleField f) const { return (fields & f) != 0; }
 };

@@ -22,6 +22,29 @@ bool isChannel(Row row)
     return int(row) < plot::kChannelCount;
 }
 
+// The HI83 data_bitmap bit of a row that shows Sample::hi83, -1 for the other rows.
+int hi83BitOf(Row row)
+{
+    switch (row) {
+    case Row::UtcDate: return 6;
+    case Row::HeaveSurgeSwayFreq: return 11;
+    case Row::AccEnu: return 13;
+    case Row::GnssHeadingFix: return 15;
+    case Row::OdometerSpeed: return 16;
+    case Row::Undulation: return 17;
+    case Row::DiffAge: return 18;
+    case Row::NodeId: return 19;
+    case Row::EventCounters: return 25;
+    case Row::KfAccBias: return 26;
+    case Row::KfGyrBias: return 27;
+    case Row::GnssAccuracy: return 28;
+    case Row::DualAntenna: return 29;
+    case Row::GnssPosition: return 30;
+    case Row::GnssVelocity: return 31;
+    default: return -1;
+    }
+}
+
 // The Sample field a row needs, 0 when the row needs none.
 uint32_t fieldOf(Row row)
 {
@@ -44,9 +67,10 @@ uint32_t fieldOf(Row row)
     case Row::InclinationX:
     case Row::InclinationY: return model::FieldInclination;
     case Row::StatusFlags: return model::FieldMainStatus;
+    case Row::Heading: return model::FieldHeading;
     default: break; // the channel rows (above), the frame type
     }
-    return 0;
+    return hi83BitOf(row) >= 0 ? model::FieldHi83Extra : 0;
 }
 
 // Fixed-point text without a "-0.000" that would flicker around zero.
@@ -61,6 +85,21 @@ QString fixed(double v, int decimals)
             s.remove(0, 1);
     }
     return s;
+}
+
+// Three components in one cell, the order the tooltip names.
+template <typename T> QString triple(const std::array<T, 3> &v, int decimals)
+{
+    return QStringLiteral("%1  %2  %3").arg(fixed(v[0], decimals), fixed(v[1], decimals), fixed(v[2], decimals));
+}
+
+// True when the sample's device time is the ms of the UTC day: an HI91 whose status word
+// (firmware 1.7.0 and later; the workspace drops it for older firmware) has UTC_UNSYNC clear.
+bool utcClock(const model::Sample &s)
+{
+    return s.source == "HI91" && s.has(model::FieldDeviceTime)
+        && model::MainStatus::timeBase(s.has(model::FieldMainStatus), s.mainStatus) == 0
+        && s.has(model::FieldMainStatus);
 }
 
 QString axisName(Row row)
@@ -132,14 +171,22 @@ bool LatestValuesModel::everSeen(Row row) const
 {
     if (row == FrameType)
         return m_seenFields != 0;
+    if (const int bit = hi83BitOf(row); bit >= 0)
+        return (m_seenHi83Bits >> bit) & 1u;
     return (m_seenFields & fieldOf(row)) != 0;
 }
 
 void LatestValuesModel::refresh(const std::optional<model::Sample> &sample)
 {
+    const bool wasUtc = m_last && utcClock(*m_last);
     m_last = sample;
-    if (sample)
+    if (wasUtc != (sample && utcClock(*sample))) // the device time's unit: ms or UTC
+        Q_EMIT dataChanged(index(DeviceTime, UnitColumn), index(DeviceTime, UnitColumn), {Qt::DisplayRole});
+    if (sample) {
         m_seenFields |= sample->fields | (sample->source.empty() ? 0u : 1u << 31);
+        if (sample->hi83)
+            m_seenHi83Bits |= sample->hi83->bits;
+    }
     int firstChanged = -1;
     auto flush = [this, &firstChanged](int lastRow) {
         if (firstChanged < 0)
@@ -198,7 +245,16 @@ QString LatestValuesModel::formatValue(Row row, const model::Sample &s) const
         }
     }
     switch (row) {
-    case DeviceTime: return fixed(s.deviceTimeMs, 0);
+    case DeviceTime:
+        if (utcClock(s)) { // HI91 system_time aligned to the UTC day by PPS (v1.7.1 manual 2.2.2)
+            const auto ms = int64_t(s.deviceTimeMs) % 86400000;
+            return QStringLiteral("%1:%2:%3.%4")
+                .arg(ms / 3600000, 2, 10, QLatin1Char('0'))
+                .arg(ms / 60000 % 60, 2, 10, QLatin1Char('0'))
+                .arg(ms / 1000 % 60, 2, 10, QLatin1Char('0'))
+                .arg(ms % 1000, 3, 10, QLatin1Char('0'));
+        }
+        return fixed(s.deviceTimeMs, 0);
     case InsStatus: {
         switch (s.insStatus) {
         case 0: return tr("0 invalid");
@@ -243,6 +299,7 @@ QString LatestValuesModel::formatValue(Row row, const model::Sample &s) const
     case Sway: return fixed(s.heaveSurgeSway.z, 2);
     case InclinationX: return fixed(s.inclinationX, 3);
     case InclinationY: return fixed(s.inclinationY, 3);
+    case Heading: return QStringLiteral("%1 %2").arg(fixed(s.headingDeg, 1), s.headingTrue ? tr("true") : tr("magnetic"));
     case StatusFlags: {
         const model::MainStatus status(s.mainStatus);
         QStringList names;
@@ -254,7 +311,46 @@ QString LatestValuesModel::formatValue(Row row, const model::Sample &s) const
             return tr("none (%1)").arg(hex);
         return QStringLiteral("%1 (%2)").arg(names.join(QLatin1Char(' ')), hex);
     }
-    default: break; // the channel rows (above)
+    default: break; // the channel rows (above), HI83 (below)
+    }
+    if (const int bit = hi83BitOf(row); bit >= 0) {
+        if (!s.hi83 || !s.hi83->has(bit))
+            return missingText();
+        const model::Hi83Extra &x = *s.hi83;
+        switch (row) {
+        case UtcDate:
+            return QStringLiteral("%1-%2-%3")
+                .arg(x.utcDate[0], 4, 10, QLatin1Char('0'))
+                .arg(x.utcDate[1], 2, 10, QLatin1Char('0'))
+                .arg(x.utcDate[2], 2, 10, QLatin1Char('0'));
+        case HeaveSurgeSwayFreq: return triple(x.hssFreqHz, 2);
+        case AccEnu: return triple(x.accEnu, 3);
+        case GnssHeadingFix: return QStringLiteral("%1 (%2)").arg(x.solqHeading).arg(x.nvHeading);
+        case OdometerSpeed: return fixed(x.odSpeedMs, 2);
+        case Undulation: return fixed(x.undulationM, 2);
+        case DiffAge: return fixed(x.diffAgeS, 1);
+        case NodeId: return QString::number(x.nodeId);
+        case EventCounters: {
+            // The named counters that have counted (gravity, mag, gnss_pos, ...); all of them in the tooltip.
+            static const char *const names[] = {"grav", "mag", "pos", "vel", "dual", "nhc", "zupt", "zaru", "zihr", "od"};
+            QStringList parts;
+            for (size_t i = 0; i < x.eventCounter.size(); ++i)
+                if (x.eventCounter[i] != 0)
+                    parts << QStringLiteral("%1 %2")
+                                 .arg(i < std::size(names) ? QLatin1String(names[i]) : QString::number(i))
+                                 .arg(x.eventCounter[i]);
+            return parts.isEmpty() ? QStringLiteral("0") : parts.join(QLatin1Char(' '));
+        }
+        case KfAccBias: return triple(x.kfAccBias, 4);
+        case KfGyrBias: return triple(x.kfGyrBias, 5);
+        case GnssAccuracy: return QStringLiteral("%1  %2").arg(fixed(x.gnssStd[0], 2), fixed(x.gnssStd[1], 2));
+        case DualAntenna: return triple(x.dualHeading, 2);
+        case GnssPosition:
+            return QStringLiteral("%1  %2  %3")
+                .arg(fixed(x.gnssLonLatMsl[1], 7), fixed(x.gnssLonLatMsl[0], 7), fixed(x.gnssLonLatMsl[2], 2));
+        case GnssVelocity: return triple(x.gnssVelEnu, 2);
+        default: break;
+        }
     }
     return missingText();
 }
@@ -279,6 +375,22 @@ QString LatestValuesModel::quantityName(Row row) const
     case Sway: return tr("Sway");
     case InclinationX: return tr("Inclination X");
     case InclinationY: return tr("Inclination Y");
+    case Heading: return tr("Heading (NMEA)");
+    case UtcDate: return tr("UTC date");
+    case HeaveSurgeSwayFreq: return tr("Heave/surge/sway frequency");
+    case AccEnu: return tr("Acceleration E N U");
+    case GnssHeadingFix: return tr("GNSS heading fix");
+    case OdometerSpeed: return tr("Odometer speed");
+    case Undulation: return tr("Geoid undulation");
+    case DiffAge: return tr("Differential age");
+    case NodeId: return tr("Node ID");
+    case EventCounters: return tr("Filter updates");
+    case KfAccBias: return tr("KF accelerometer bias");
+    case KfGyrBias: return tr("KF gyroscope bias");
+    case GnssAccuracy: return tr("GNSS std position, velocity");
+    case DualAntenna: return tr("Dual antenna");
+    case GnssPosition: return tr("GNSS lat lon alt");
+    case GnssVelocity: return tr("GNSS velocity E N U");
     case StatusFlags: return tr("Status flags");
     case FrameType: return tr("Frame type");
     default: break; // the channel rows (above)
@@ -288,6 +400,8 @@ QString LatestValuesModel::quantityName(Row row) const
 
 QString LatestValuesModel::unitName(Row row) const
 {
+    if (row == DeviceTime && m_last && utcClock(*m_last))
+        return tr("UTC");
     switch (fieldOf(row)) {
     case model::FieldAcc: return m_units.accel == model::AccelUnit::G ? tr("G") : tr("m/s²");
     case model::FieldGyr: return m_units.rate == model::RateUnit::DegreesPerSecond ? tr("deg/s") : tr("rad/s");
@@ -300,6 +414,21 @@ QString LatestValuesModel::unitName(Row row) const
     case model::FieldVelocity: return tr("m/s");
     case model::FieldHeave: return tr("m");
     case model::FieldInclination: return tr("deg");
+    case model::FieldHeading: return tr("deg");
+    default: break;
+    }
+    switch (row) {
+    case HeaveSurgeSwayFreq: return tr("Hz");
+    case AccEnu:
+    case KfAccBias: return tr("m/s²");
+    case KfGyrBias: return tr("rad/s");
+    case OdometerSpeed:
+    case GnssVelocity: return tr("m/s");
+    case Undulation: return tr("m");
+    case DiffAge: return tr("s");
+    case GnssAccuracy: return tr("m, m/s");
+    case DualAntenna: return tr("m, deg, deg");
+    case GnssPosition: return tr("deg, deg, m");
     default: return QString();
     }
 }
@@ -330,7 +459,8 @@ QString LatestValuesModel::toolTip(Row row) const
     case Pressure: return tr("Air pressure from the barometer, in Pa.");
     case Temperature: return tr("Sensor temperature, in °C.");
     case DeviceTime:
-        return tr("Device timestamp in ms: UTC time of day when synchronised, otherwise time since power-up.");
+        return tr("Device timestamp: the UTC time of day once a PPS input has aligned the module's clock (HI91, "
+                  "UTC_UNSYNC clear), otherwise ms since power-up.");
     case InsStatus: return tr("Integrated navigation state: 0 invalid, 1 aligning, 3 navigating, 6 dead reckoning.");
     case Latitude:
     case Longitude: return tr("Position from integrated navigation, in degrees (south and west negative).");
@@ -350,6 +480,34 @@ QString LatestValuesModel::toolTip(Row row) const
     case StatusFlags:
         return tr("MAIN_STATUS flags set in the latest frame (firmware 1.7.0 and later), then the raw word in hex.");
     case FrameType: return tr("The frame type (packet tag) that carried the latest values, e.g. HI91.");
+    case Heading:
+        return tr("Heading from the latest NMEA heading sentence, in degrees clockwise from north: HDT true north, "
+                  "HDM magnetic north (an HEC495 with output content NMEA 0183 sends HDT).");
+    case UtcDate: return tr("UTC date from the HI83 frame (bit 6), shown once GNSS time is known.");
+    case HeaveSurgeSwayFreq: return tr("Ship motion frequency (HI83 bit 11): heave, surge, sway, in Hz.");
+    case AccEnu: return tr("Acceleration in the east-north-up frame from integrated navigation (HI83 bit 13): E, N, U, in m/s².");
+    case GnssHeadingFix:
+        return tr("Heading solution state of the GNSS (HI83 bit 15, solq_heading), then in brackets its satellites.");
+    case OdometerSpeed: return tr("Speed from an external odometer (HI83 bit 16), in m/s.");
+    case Undulation: return tr("Geoid undulation: height of the geoid above the ellipsoid (HI83 bit 17), in m.");
+    case DiffAge: return tr("Age of the RTK differential corrections (HI83 bit 18), in s.");
+    case NodeId: return tr("The module's node ID, the same as its CAN ID, 1 to 127 (HI83 bit 19).");
+    case EventCounters:
+        return tr("Measurement updates the integrated navigation filter has made (HI83 bit 25), the counters that are "
+                  "not zero: grav gravity, mag magnetometer, pos GNSS position, vel GNSS velocity, dual dual-antenna "
+                  "heading, nhc non-holonomic constraint, zupt zero velocity, zaru zero angular rate, zihr zero "
+                  "heading change, od odometer; a number for the reserved counters 10 to 15.");
+    case KfAccBias: return tr("Accelerometer bias the navigation filter estimates (HI83 bit 26): X, Y, Z, in m/s².");
+    case KfGyrBias: return tr("Gyroscope bias the navigation filter estimates (HI83 bit 27): X, Y, Z, in rad/s.");
+    case GnssAccuracy:
+        return tr("GNSS accuracy (HI83 bit 28): norm of the position standard deviation in m, of the velocity "
+                  "standard deviation in m/s.");
+    case DualAntenna:
+        return tr("Dual-antenna GNSS heading (HI83 bit 29): baseline length in m, pitch and heading in degrees.");
+    case GnssPosition:
+        return tr("Raw GNSS position (HI83 bit 30): latitude and longitude in degrees, height above mean sea level "
+                  "in m.");
+    case GnssVelocity: return tr("Raw GNSS velocity (HI83 bit 31): east, north, up, in m/s.");
     case RowCount: break;
     }
     return {};

@@ -52,6 +52,23 @@ public:
         Sway,
         InclinationX,
         InclinationY,
+        Heading,         // NMEA HDT / HDM (a compass's NMEA output)
+        // HI83 fields beyond the ones above, one row per data_bitmap bit (v1.7.1 manual 5.9.12).
+        UtcDate,         // bit 6
+        HeaveSurgeSwayFreq, // bit 11
+        AccEnu,          // bit 13
+        GnssHeadingFix,  // bit 15: solq_heading, nv_heading
+        OdometerSpeed,   // bit 16
+        Undulation,      // bit 17
+        DiffAge,         // bit 18
+        NodeId,          // bit 19
+        EventCounters,   // bit 25
+        KfAccBias,       // bit 26
+        KfGyrBias,       // bit 27
+        GnssAccuracy,    // bit 28
+        DualAntenna,     // bit 29
+        GnssPosition,    // bit 30
+        GnssVelocity,    // bit 31
         StatusFlags,
         FrameType,
         RowCount
@@ -91,6 +108,7 @@ private:
     std::array<QString, RowCount> m_values;
     std::optional<model::Sample> m_last;
     uint32_t m_seenFields = 0;
+    uint32_t m_seenHi83Bits = 0;
     model::DisplayUnits m_units;
 };
 

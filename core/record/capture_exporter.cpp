@@ -3,6 +3,7 @@
 #include "format/sample_json.h"
 #include "record/capture_decoder.h"
 #include "record/capture_reader.h"
+#include "record/capture_source.h"
 #include "record/csv_number.h"
 #include "record/vendor_csv.h"
 
@@ -306,9 +307,12 @@ CaptureExporter::Result CaptureExporter::run(const QString &capturePath, const O
         r.error = tr("The time range is empty (from %1 s to %2 s).").arg(options.fromS).arg(options.toS);
         return r;
     }
+    // A capture, or a vendor CSV or raw byte dump converted to one (recognised by content).
+    CaptureSource source;
     CaptureReader reader;
-    if (!reader.open(capturePath, &r.error))
+    if (!source.prepare(capturePath, &r.error) || !reader.open(source.capturePath(), &r.error))
         return r;
+    r.notes = source.notes();
     const double total = double(std::max<qint64>(reader.size(), 1));
     ExportSink sink(options, r);
     CaptureDecoder decoder;

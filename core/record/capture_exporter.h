@@ -35,6 +35,7 @@ public:
         bool cancelled = false;
         QString error;
         QString warning;         // e.g. the capture ends inside a chunk
+        QStringList notes;       // what reading a vendor CSV or a raw byte dump involved (CaptureSource)
         QStringList files;
         uint64_t frames = 0;     // rows/objects written (samples and NMEA sentences)
         uint64_t skipped = 0;    // packets the format has no layout for (HI92 in vendor CSV)
@@ -42,6 +43,7 @@ public:
     // fraction 0..1; return false to cancel.
     using Progress = std::function<bool(double fraction)>;
 
+    // capturePath: a capture, a vendor CSV or a raw byte dump (CaptureSource).
     static Result run(const QString &capturePath, const Options &options, const Progress &progress = {});
 
     static std::optional<Format> parseFormat(const QString &name); // "vendor-csv", "csv", "jsonl"

@@ -33,6 +33,9 @@ public:
     static constexpr const char *kApplication = "capture.application";
     // "1": the recorder marked every idle-line release (ChunkLineIdle), so a replay decodes exactly as live.
     static constexpr const char *kIdleMarkers = "capture.idle_markers";
+    // "absent": the bytes came without arrival times (a raw byte dump); the chunk times are the
+    // device's own clock (CaptureSource).
+    static constexpr const char *kHostTime = "capture.host_time";
     static constexpr const char *kConfigPrefix = "config.";
     static constexpr size_t kMaxBodyBytes = 1u << 20;
 

@@ -2,6 +2,7 @@
 
 #include "record/capture_decoder.h"
 #include "record/capture_reader.h"
+#include "record/capture_source.h"
 #include "record/vendor_csv_importer.h"
 
 namespace imudesk::record {
@@ -11,14 +12,29 @@ FileAnalysis::Outcome FileAnalysis::run(const QString &path, const std::string &
 {
     Outcome o;
     SampleAnalyzer analyzer(frameType);
-    if (CaptureReader::looksLikeCapture(path)) {
+    // Recognised by content: a capture, a raw byte dump (converted to one) or a vendor CSV (read
+    // directly).
+    QString kindError;
+    const CaptureSource::Kind kind = CaptureSource::detect(path, &kindError);
+    if (kind == CaptureSource::Kind::Unknown) {
+        o.error = kindError;
+        return o;
+    }
+    CaptureSource source;
+    if (kind == CaptureSource::Kind::RawDump) {
+        if (!source.prepare(path, &o.error))
+            return o;
+        o.warnings << source.notes();
+    }
+    if (kind != CaptureSource::Kind::VendorCsv) {
+        const QString capturePath = kind == CaptureSource::Kind::RawDump ? source.capturePath() : path;
         struct Sink : CaptureDecoder::Sink {
             SampleAnalyzer *a = nullptr;
             void onPacket(const protocol::hipnuc::Packet &p, int64_t) override { a->add(protocol::hipnuc::toSample(p)); }
         } sink;
         sink.a = &analyzer;
         CaptureReader reader;
-        if (!reader.open(path, &o.error))
+        if (!reader.open(capturePath, &o.error))
             return o;
         const double total = double(std::max<qint64>(reader.size(), 1));
         CaptureDecoder decoder;

@@ -1,6 +1,7 @@
 #pragma once
-// Runs SampleAnalyzer over a file: a capture (decoded through CaptureDecoder, the live
-// path) or a CSV written by the vendor's PC tool. Used by `imudesk-cli analyze` and the
+// Runs SampleAnalyzer over a file, recognised by content (CaptureSource): a capture (decoded
+// through CaptureDecoder, the live path), a raw byte dump (converted to one, the device's
+// clock for time) or a CSV written by the vendor's PC tool. Used by `imudesk-cli analyze` and the
 // analysis window (which calls it from a worker thread).
 #include "record/sample_analyzer.h"
 

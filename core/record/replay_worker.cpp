@@ -1,5 +1,6 @@
 #include "replay_worker.h"
 
+#include "model/main_status.h"
 #include "protocol/nmea/nmea_sample.h"
 
 #include "device/stream_counters.h"
@@ -36,7 +37,8 @@ void ReplayWorker::open(const QString &path)
     close();
     Q_EMIT stateChanged(device::SessionState::Opening, path);
     QString error;
-    if (!m_reader.open(path, &error)) {
+    // A capture, or a vendor CSV or raw byte dump converted to one (recognised by content).
+    if (!m_source.prepare(path, &error) || !m_reader.open(m_source.capturePath(), &error)) {
         Q_EMIT stateChanged(device::SessionState::Failed, error);
         Q_EMIT errorOccurred(error);
         return;
@@ -225,7 +227,7 @@ void ReplayWorker::onPacket(const protocol::hipnuc::Packet &packet, int64_t host
     model::Sample &s = m_batch.back();
     s.hostTimeNs = hostNs;
     if (s.has(model::FieldDeviceTime))
-        m_gaps.add(s.source, s.deviceTimeMs);
+        m_gaps.add(s.source, s.deviceTimeMs, model::MainStatus::timeBase(s.has(model::FieldMainStatus), s.mainStatus));
 }
 
 void ReplayWorker::onNmea(const std::string &sentence, int64_t hostNs)

@@ -7,6 +7,7 @@
 #include "device/session_types.h"
 #include "record/capture_decoder.h"
 #include "record/capture_reader.h"
+#include "record/capture_source.h"
 
 #include <QElapsedTimer>
 #include <QObject>
@@ -58,6 +59,7 @@ private:
     void setPlaying(bool on);
 
     device::SampleStore &m_store;
+    CaptureSource m_source; // owns a converted vendor CSV or raw dump while it plays
     CaptureReader m_reader;
     CaptureDecoder m_decoder;
     device::FrameGapCounter m_gaps;

@@ -32,7 +32,12 @@ const char *hi83Header()
            "roll,pitch,yaw,quat_w,quat_x,quat_y,quat_z,sys_time_us,utc_year,utc_month,utc_day,utc_hour,utc_minute,"
            "utc_ms,pressure,temperature,incli_x,incli_y,incli_yaw,heave,surge,sway,heave_freq,surge_freq,sway_freq,"
            "vel_e,vel_n,vel_u,acc_e,acc_n,acc_u,ins_lon,ins_lat,ins_msl,solq_pos,nv_pos,solq_heading,nv_heading,"
-           "od_speed,undulation,diff_age,node_id,gnss_lon,gnss_lat,gnss_msl,gnss_vel_e,gnss_vel_n,gnss_vel_u";
+           "od_speed,undulation,diff_age,node_id,gnss_lon,gnss_lat,gnss_msl,gnss_vel_e,gnss_vel_n,gnss_vel_u,"
+           // Bits 25-29 (v1.7.1 5.9.12), after the columns the vendor's tool writes.
+           "evt_gravity,evt_mag,evt_gnss_pos,evt_gnss_vel,evt_dual_heading,evt_nhc,evt_zupt,evt_zaru,evt_zihr,evt_od,"
+           "evt_10,evt_11,evt_12,evt_13,evt_14,evt_15,kf_acc_bias_x,kf_acc_bias_y,kf_acc_bias_z,kf_gyr_bias_x,"
+           "kf_gyr_bias_y,kf_gyr_bias_z,gnss_pos_std,gnss_vel_std,gnss_std_reserved,dual_baseline,dual_pitch,"
+           "dual_heading";
 }
 
 namespace {
@@ -215,6 +220,15 @@ void appendRow(std::string &out, const hp::Hi83 &p, double pcCounterMs)
         empty(out, 1);
     group(30, p.gnssLonLatMsl);
     group(31, p.gnssVel);
+    if (has(25))
+        for (uint32_t v : p.eventCounter)
+            intField(out, int64_t(v));
+    else
+        empty(out, int(p.eventCounter.size()));
+    group(26, p.kfAccBias);
+    group(27, p.kfGyrBias);
+    group(28, p.gnssStd);
+    group(29, p.gnssHeadingInfo);
     out += '\n';
 }
 

@@ -58,7 +58,9 @@ std::vector<SettingDefinition> buildSettings()
                  QT_TRANSLATE_NOOP("SettingCatalog", "HI83 fields (data_bitmap)"),
                  QT_TRANSLATE_NOOP("SettingCatalog",
                                    "LOG HI83 MAP: one bit per data segment (bit 0 acc, 1 gyr, 2 mag, 3 Euler, 4 "
-                                   "quaternion, 5 time us, 6 UTC, 7 pressure, ...); default 0x000000FF.")});
+                                   "quaternion, 5 time us, 6 UTC, 7 pressure, ..., 25 filter update counters, 26 and "
+                                   "27 filter biases, 28 GNSS accuracy, 29 dual-antenna heading, 30 and 31 GNSS "
+                                   "position and velocity; 20 to 24 are reserved); default 0x000000FF.")});
     s.push_back({"ATT.MODE", "ATT_MODE", SettingKind::Choice, true, true, Feature::None, Persistence::SaveAndReset,
                  QT_TRANSLATE_NOOP("SettingCatalog", "Working mode"),
                  QT_TRANSLATE_NOOP("SettingCatalog",

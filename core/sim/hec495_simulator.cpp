@@ -50,6 +50,10 @@ Hec495Simulator::Hec495Simulator(Hec495Options options)
     m_saved.rateHz = options.rateHz;
     m_saved.content = options.content;
     m_running = m_saved;
+    if (options.calibrated) {
+        m_calibrated = true;
+        m_hardIron = m_sensor.hardIron();
+    }
     scheduleOutput(0);
 }
 
@@ -119,6 +123,16 @@ Hec495Simulator::Reading Hec495Simulator::readingAt(int64_t tUs)
 
 void Hec495Simulator::receive(const uint8_t *data, size_t n)
 {
+    if (m_options.echo && n > 0) { // the adapter's echo, ahead of anything the module sends later
+        SerialSegment echo;
+        echo.baud = m_running.baud;
+        echo.bytes.assign(data, data + n);
+        echo.chunk = m_nextChunk++;
+        echo.chunkStart = echo.chunkEnd = true;
+        const auto at = std::upper_bound(m_out.begin(), m_out.end(), m_nowUs,
+                                         [](int64_t t, const Timed &x) { return t < x.releaseUs; });
+        m_out.insert(at, Timed{m_nowUs, std::move(echo)});
+    }
     if (m_options.rs485 && m_lineFreeUs > double(m_nowUs)) {
         ++m_commandsLost; // half duplex: the module is talking and does not hear this
         return;

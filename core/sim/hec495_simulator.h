@@ -64,6 +64,8 @@ struct Hec495Options {
     Motion motion = Motion::Static;
     uint64_t seed = 1;
     bool rs485 = false;
+    bool calibrated = false; // calibrated and saved before: the hard iron of its sensor corrected
+    bool echo = false;       // a 2-wire RS-485 adapter: the host hears what it sends, at once
 };
 
 class Hec495Simulator : public SimulatedSerialDevice {

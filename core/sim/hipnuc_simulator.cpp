@@ -143,6 +143,8 @@ std::string HipnucSimulator::productName() const
 
 uint32_t HipnucSimulator::systemTimeMs() const
 {
+    if (m_utcSyncedAtUs >= 0) // aligned by PPS: the ms of the UTC day (v1.7.1 manual 2.2.2)
+        return uint32_t((kUtcBaseUnixS * 1000 + m_nowUs / 1000) % 86400000);
     return uint32_t((m_nowUs - m_startUs) / 1000);
 }
 
@@ -174,6 +176,7 @@ void HipnucSimulator::startApp(int64_t t)
     m_mcalCoverage.reset();
     m_bgCoverage.reset();
     m_usrcalActive = false;
+    m_utcSyncedAtUs = -1;
     m_line.clear();
     m_lineOverflow = false;
     m_sampleUs = -1;
@@ -314,6 +317,14 @@ void HipnucSimulator::tick(int64_t t)
     if (m_state != State::App)
         return;
     integrateGyroCal(t);
+    // A PPS rising edge at each whole UTC second (kUtcBase is a whole second).
+    if (m_options.ppsInput && t / 1000000 != (t - kTickUs) / 1000000) {
+        if (m_utcSyncedAtUs < 0) {
+            m_utcSyncedAtUs = t;
+            qCDebug(lcSim) << "UTC aligned by PPS at" << t << "us";
+        }
+        syncInPulse();
+    }
 
     const MotionState ms = m_motion.at(double(t) * 1e-6);
     const Eigen::Vector3d dir = (ms.q.toRotationMatrix().transpose() * SensorModel::fieldNav()).normalized();
@@ -389,7 +400,7 @@ uint16_t HipnucSimulator::mainStatusAt(int64_t t) const
 {
     if (m_firmware < model::FirmwareVersion{1, 7, 0})
         return 0; // reserved before 1.7.0
-    uint16_t s = uint16_t(1u << MainStatus::UtcUnsync);
+    uint16_t s = m_utcSyncedAtUs >= 0 && t >= m_utcSyncedAtUs ? 0 : uint16_t(1u << MainStatus::UtcUnsync);
     if (m_active.attMode == 1)
         s |= uint16_t(1u << MainStatus::MagAiding);
     if (m_motion.motion() == Motion::Static)
@@ -410,7 +421,8 @@ HipnucSimulator::Snapshot HipnucSimulator::snapshotAt(int64_t t)
     Snapshot s;
     s.tUs = t;
     s.systemTimeUs = uint64_t(t - m_startUs);
-    s.systemTimeMs = uint32_t((t - m_startUs) / 1000);
+    s.systemTimeMs = m_utcSyncedAtUs >= 0 && t >= m_utcSyncedAtUs ? uint32_t((kUtcBaseUnixS * 1000 + t / 1000) % 86400000)
+                                                                  : uint32_t((t - m_startUs) / 1000);
     const Eigen::Matrix3d m = levelMatrix() * userFromSensor();
     const Eigen::Vector3d mag = m_magCalibrated ? Eigen::Vector3d(m_sample.mag - m_magBias) : m_sample.mag;
     s.acc = m * m_sample.acc;
@@ -525,7 +537,20 @@ std::vector<uint8_t> HipnucSimulator::buildMessage(Message m, const Snapshot &s)
         p.pressure = float(s.pressurePa);
         p.temperature = float(s.temperatureC);
         p.inclination = {float(s.euler.pitch), float(s.euler.roll), 0.0f};
+        // The position and fix of the simulated GGA/SXT (a module at rest in Shanghai).
+        p.insLonLatMsl = {121.458333, 31.208333, 40.0};
+        p.gnssLonLatMsl = p.insLonLatMsl;
+        p.gnssQualityNv = {1, 12, 0, 0};
+        const Eigen::Vector3d accNav = s.q * (s.acc * g) - Eigen::Vector3d(0, 0, g);
+        p.accEnu = {float(accNav.x()), float(accNav.y()), float(accNav.z())};
         p.nodeInfo = {8, 0, 0, 0};
+        // Bits 25-29: the filter's measurement updates (gravity and magnetometer at 100 and
+        // 50 Hz, GNSS position and velocity at 1 Hz since power-on), its bias estimates
+        // (none at rest) and the GNSS accuracy of a single-point fix; no second antenna.
+        const uint64_t t = s.systemTimeUs;
+        p.eventCounter = {uint32_t(t / 10000), uint32_t(t / 20000), uint32_t(t / 1000000), uint32_t(t / 1000000)};
+        p.gnssStd = {1.5f, 0.05f, 0.0f};
+        p.insStatus = 0;
         return protocol::hipnuc::buildFrame(protocol::hipnuc::encode(p));
     }
     case Message::GGA: {

@@ -67,8 +67,9 @@
 // Output data: HI91/HI92/HI81/HI83 and GGA/RMC/SXT from MotionModel + SensorModel, each
 // message in its own frame. Vectors are in the user frame (mounting), attitude from the
 // true motion (no filter), Euler angles from the quaternion (appendix 1, ENU-312).
-// system_time is ms since the last start. UTC (NMEA, HI81, HI83) is kUtcBase plus the
-// simulation clock. MAIN_STATUS (firmware >= 1.7.0, else 0): UTC_UNSYNC always,
+// system_time is ms since the last start, or the ms of the UTC day once a PPS input has
+// aligned the clock (SimOptions::ppsInput). UTC (NMEA, HI81, HI83) is kUtcBase plus the
+// simulation clock. MAIN_STATUS (firmware >= 1.7.0, else 0): UTC_UNSYNC until PPS aligned it,
 // MAG_AIDING in mode 1, STATIC for a static motion, WB_CONV for 3 s after a start,
 // MAG_DIST in mode 1 until a magnetometer calibration succeeded.
 #include "model/device_identity.h"
@@ -96,6 +97,11 @@ struct SimOptions {
     Motion motion = Motion::Static;
     uint64_t seed = 1;                // sensor noise, bias, iron, UUID, motion phases
     double gyroScaleError = 0;        // fraction: the gyro reads (1 + e) * the true rate
+    // A GNSS receiver wired to SYNC_IN/PPS and to RX (v1.7.1 manual 2.2.2): a PPS rising edge
+    // at every whole UTC second with its RMC inside the 200 ms window. At the first edge after
+    // a start the module aligns to UTC: UTC_UNSYNC clears and the HI91 system_time becomes the
+    // ms of the UTC day. Each edge is also a SYNC_IN pulse (ONMARK 1 messages, 2.2.1).
+    bool ppsInput = false;
 };
 
 class HipnucSimulator {
@@ -178,6 +184,10 @@ public:
     const KbootBootloader &bootloader() const { return m_bootloader; }
     // A rising edge on SYNC_IN: one frame of every message configured ONMARK 1.
     void syncInPulse();
+    // Connects or disconnects the PPS receiver (SimOptions::ppsInput). The manual does not
+    // say what a module does when PPS stops; the simulated one keeps its UTC alignment.
+    void setPpsInput(bool on) { m_options.ppsInput = on; }
+    bool utcSynced() const { return m_utcSyncedAtUs >= 0; }
     // Test hook for link recovery: what SERIALCONFIG does to this UART after its OK.
     // 0 (default): switches to the requested rate; -1: keeps the old rate (a module that
     // ignores the new one); > 0: switches to this rate instead.
@@ -323,6 +333,7 @@ private:
 
     // magnetometer calibration
     bool m_magCalibrated = false;
+    int64_t m_utcSyncedAtUs = -1;      // the PPS edge the clock aligned at, -1: not aligned
     Eigen::Vector3d m_magBias = Eigen::Vector3d::Zero();
     int m_mcalStat = 0;
     int m_mcalProgress = 0;

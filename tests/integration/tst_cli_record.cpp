@@ -171,7 +171,7 @@ private Q_SLOTS:
         f.close();
         const auto r = run({"analyze", path});
         QCOMPARE(r.code, 1);
-        QVERIFY(r.err.contains(QStringLiteral("neither a capture file nor a vendor HI91 CSV")));
+        QVERIFY(r.err.contains(QStringLiteral("neither an ImuDesk capture, a vendor CSV")));
     }
 
     void fileSizeLimitStopsRecording()

@@ -115,6 +115,27 @@ private Q_SLOTS:
         QVERIFY2(r.code == 0, qPrintable(r.err));
         QCOMPARE(r.json().value("streaming").toBool(), true);
         QVERIFY2(run({"hec495", m_pty, "rate", "0"}).code == 0, "rate 0");
+        // NMEA output: the sentences as they come, with their heading (spinning at 30 deg/s).
+        QVERIFY2(run({"hec495", m_pty, "content", "nmea"}).code == 0, "content nmea");
+        QVERIFY2(run({"hec495", m_pty, "rate", "10"}).code == 0, "rate 10");
+        r = run({"hec495", m_pty, "nmea", "--count", "3", "--json"});
+        QVERIFY2(r.code == 0, qPrintable(r.err));
+        const QStringList lines = r.out.split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+        QCOMPARE(lines.size(), 3);
+        double previous = -1;
+        for (const QString &line : lines) {
+            const QJsonObject o = QJsonDocument::fromJson(line.toUtf8()).object();
+            QVERIFY2(o.value("sentence").toString().startsWith(QStringLiteral("$HCHDT,")), qPrintable(line));
+            const double h = o.value("heading_true").toDouble(-1);
+            QVERIFY2(h >= 0 && h < 360 && h != previous, qPrintable(line));
+            previous = h;
+        }
+        QVERIFY2(run({"hec495", m_pty, "rate", "0"}).code == 0, "rate 0");
+        QVERIFY2(run({"hec495", m_pty, "content", "default"}).code == 0, "content default");
+        // No NMEA output: said, with what to do.
+        r = run({"hec495", m_pty, "nmea"});
+        QCOMPARE(r.code, 1);
+        QVERIFY2(r.err.contains(QStringLiteral("content nmea")), qPrintable(r.err));
         // Invalid values: refused before the wire, and usage errors.
         r = run({"hec495", m_pty, "baud", "38400"});
         QCOMPARE(r.code, 1);

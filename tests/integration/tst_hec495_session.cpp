@@ -142,6 +142,77 @@ private Q_SLOTS:
         QVERIFY(s.store().latest()->has(model::FieldDeviceTime));
     }
 
+    void nmeaOutputBesidePolling()
+    {
+        // Output content NMEA 0183 at 10 Hz (0x49 = 03): the module sends $HCHDT text, not
+        // frames. Each sentence becomes a heading sample and is counted by type, and polling
+        // goes on beside it, so acceleration and the rest keep coming.
+        Hec495Options o;
+        o.rateHz = 10;
+        o.content = wl::OutputContent::Nmea0183;
+        o.baud = 115200;
+        auto pty = serve(o);
+        Hec495Session s;
+        QSignalSpy sentences(&s, &Hec495Session::nmeaReceived);
+        s.open(pty->devicePath(), 115200);
+        QTRY_COMPARE_WITH_TIMEOUT(s.state(), SessionState::Connected, 5000);
+        // The text starts after the 3 s quiet window.
+        QTRY_VERIFY_WITH_TIMEOUT(sentences.count() >= 10, 8000);
+        QVERIFY(!s.streaming()); // text is not auto-output of frames: the session still polls
+        QVERIFY(sentences.last().at(0).toString().startsWith(QStringLiteral("$HCHDT,")));
+        const auto merged = s.store().latestPerField();
+        QVERIFY(merged && merged->has(model::FieldHeading) && merged->has(model::FieldAcc));
+        QVERIFY(merged->headingTrue);
+        QVERIFY(merged->headingDeg >= 0 && merged->headingDeg < 360);
+        // Polled records keep arriving while the text streams.
+        const uint64_t before = s.store().totalAppended();
+        QTest::qWait(1000);
+        QVERIFY2(s.store().totalAppended() - before >= 12, qPrintable(QString::number(s.store().totalAppended() - before)));
+        QSignalSpy stats(&s, &Hec495Session::statsUpdated);
+        QTRY_VERIFY_WITH_TIMEOUT(stats.count() >= 1, 3000);
+        const auto st = stats.last().at(0).value<SessionStats>();
+        QVERIFY(st.nmeaSentences >= 10);
+        QCOMPARE(st.nmeaErrors, uint64_t(0));
+        QVERIFY(st.framesByType.at("NMEA HDT") >= 10);
+
+        // Switching the content to NMEA from the session keeps polling too.
+        QVERIFY(AWAIT_OK(s, s.setOutputContent(wl::OutputContent::AllData)));
+        QVERIFY(AWAIT_OK(s, s.setOutputRate(25)));
+        QTRY_VERIFY_WITH_TIMEOUT(s.streaming(), 3000);
+        QVERIFY(AWAIT_OK(s, s.setOutputContent(wl::OutputContent::Nmea0183)));
+        QVERIFY(!s.streaming());
+        const int heard = int(sentences.count());
+        QTRY_VERIFY_WITH_TIMEOUT(sentences.count() >= heard + 10, 3000);
+    }
+
+    void replyEqualToRequest_data()
+    {
+        QTest::addColumn<bool>("echo");
+        QTest::newRow("RS-232") << false;
+        QTest::newRow("2-wire RS-485 that echoes") << true;
+    }
+    void replyEqualToRequest()
+    {
+        // "Set output content 00" and its success are the same six bytes (77 05 00 49 00 4E):
+        // without an echo that frame is the reply; with one, the second of them.
+        QFETCH(bool, echo);
+        Hec495Options o;
+        o.echo = echo;
+        auto pty = serve(o);
+        Hec495Session s;
+        s.setPollingRate(0);
+        s.open(pty->devicePath(), 9600);
+        QTRY_COMPARE_WITH_TIMEOUT(s.state(), SessionState::Connected, 5000);
+        for (auto content : {wl::OutputContent::AllData, wl::OutputContent::Default, wl::OutputContent::Nmea0183,
+                             wl::OutputContent::Default}) {
+            QVERIFY(AWAIT_OK(s, s.setOutputContent(content)));
+            wl::OutputContent now{};
+            withSim(*pty, [&](Hec495Simulator &d) { now = d.runningSettings().content; });
+            QCOMPARE(int(now), int(content));
+        }
+        QVERIFY(AWAIT_OK(s, s.readAll()));
+    }
+
     void baudChangeFollowed()
     {
         auto pty = serve({});

@@ -63,7 +63,7 @@ private Q_SLOTS:
         w.analyzeFile(path);
         QVERIFY(done.wait(5000));
         QCOMPARE(done.at(0).at(0).toBool(), false);
-        QVERIFY(w.summaryText().contains(QStringLiteral("neither a capture file nor a vendor HI91 CSV")));
+        QVERIFY(w.summaryText().contains(QStringLiteral("neither an ImuDesk capture, a vendor CSV")));
     }
 };
 

@@ -198,6 +198,30 @@ private Q_SLOTS:
         QCOMPARE(d.lost(), uint64_t(5500));
     }
 
+    void utcAlignmentIsNotALoss()
+    {
+        // A HI91 stream at 100 Hz whose system_time jumps from ms-since-power-on to the ms of
+        // the UTC day when PPS aligns the clock (UTC_UNSYNC clears): the jump is not a loss,
+        // and losses on either side still count.
+        FrameGapCounter c;
+        for (int i = 0; i < 300; ++i)
+            if (i != 100)
+                c.add(kHi91, i * 10.0, 1);
+        const double utc = 8 * 3600000.0 + 3000;
+        for (int i = 0; i < 300; ++i)
+            if (i != 200)
+                c.add(kHi91, utc + i * 10.0, 0);
+        QCOMPARE(c.lost(), uint64_t(2));
+        QCOMPARE(c.resets(), uint64_t(0));
+        // The same stamps without the clock named: the jump counts as millions of frames.
+        FrameGapCounter d;
+        for (int i = 0; i < 300; ++i)
+            d.add(kHi91, i * 10.0);
+        for (int i = 0; i < 300; ++i)
+            d.add(kHi91, utc + i * 10.0);
+        QVERIFY(d.lost() > 2000000);
+    }
+
     void lossJustBeforeResetTimingIsKept()
     {
         FrameGapCounter c;

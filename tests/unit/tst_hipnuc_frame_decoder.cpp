@@ -176,10 +176,11 @@ private Q_SLOTS:
 
     void lengthLimits()
     {
-        // Length 0 and 507 are refused and counted; 506 is accepted.
+        // LEN 1-4096 (v1.7.1 manual 5.7): length 0 and 4097 are refused and counted; 4096 is
+        // accepted (the vendor's SDK stopped at 506).
         std::vector<uint8_t> zero = {0x5A, 0xA5, 0x00, 0x00, 0x00, 0x00};
-        std::vector<uint8_t> big = {0x5A, 0xA5, 0xFB, 0x01, 0x00, 0x00};
-        std::vector<uint8_t> ok(506, 0x11);
+        std::vector<uint8_t> big = {0x5A, 0xA5, 0x01, 0x10, 0x00, 0x00};
+        std::vector<uint8_t> ok(4096, 0x11);
         ok[0] = 0x91;
         auto okFrame = buildFrame(ok);
         std::vector<uint8_t> stream = zero;
@@ -188,7 +189,7 @@ private Q_SLOTS:
         FrameDecoder d;
         const auto r = decodeWith(stream, 0, &d);
         QCOMPARE(r.frames.size(), size_t(1));
-        QCOMPARE(r.frames[0].size(), size_t(506));
+        QCOMPARE(r.frames[0].size(), size_t(4096));
         QCOMPARE(d.counters().lengthErrors, uint64_t(2));
         QCOMPARE(d.counters().bytesSkipped, uint64_t(12));
     }

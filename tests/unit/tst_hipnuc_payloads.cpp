@@ -5,6 +5,8 @@
 
 #include <QTest>
 
+#include <cstring>
+
 using namespace imudesk::protocol::hipnuc;
 using imudesk::model::MainStatus;
 
@@ -104,6 +106,11 @@ private Q_SLOTS:
         d.gnssLonLatMsl = {116.2, 39.8, 51.5};
         d.gnssVel = {1, 2, 3};
         d.nodeInfo = {8, 0, 0, 0};
+        d.eventCounter = {1000, 500, 10, 10, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0xFFFFFFFFu};
+        d.kfAccBias = {0.01f, -0.02f, 0.03f};
+        d.kfGyrBias = {1e-4f, -2e-4f, 3e-4f};
+        d.gnssStd = {1.5f, 0.05f, 0};
+        d.gnssHeadingInfo = {1.2f, 0.5f, 123.4f};
         const std::vector<Packet> all = {a, b, c, d};
         for (const auto &p : all) {
             const auto bytes = encode(p);
@@ -116,7 +123,7 @@ private Q_SLOTS:
         QCOMPARE(encode(Packet(a)).size(), Hi91::kSize);
         QCOMPARE(encode(Packet(b)).size(), Hi92::kSize);
         QCOMPARE(encode(Packet(c)).size(), Hi81::kSize);
-        QCOMPARE(encode(Packet(d)).size(), size_t(236)); // every supported bit
+        QCOMPARE(encode(Packet(d)).size(), size_t(348)); // every bit the manual sizes
     }
 
     void severalTagsInOneFrame()
@@ -142,7 +149,9 @@ private Q_SLOTS:
         QTest::addColumn<int>("size");
         QTest::newRow("default 0xFF") << 0xFFu << 92;
         QTest::newRow("imu 0x1F") << 0x1Fu << 72;
-        QTest::newRow("all supported") << 0xC00FFFFFu << 236;
+        QTest::newRow("the SDK's bits") << 0xC00FFFFFu << 236;
+        QTest::newRow("bits 25-29: 64 + 4 x 12") << 0x3E000000u << 8 + 64 + 48;
+        QTest::newRow("all the manual sizes") << 0xFE0FFFFFu << 348;
         QTest::newRow("empty") << 0u << 8;
     }
     void hi83Sizes()
@@ -157,13 +166,91 @@ private Q_SLOTS:
 
     void hi83UnknownBitIsRefused()
     {
-        // Bit 25 (internal diagnostics) has no documented size: reported, never guessed.
-        std::vector<uint8_t> p = {0x83, 0, 0, 0, 0x01, 0, 0, 0x02};
+        // Bits 20-24 are reserved in the v1.7.1 manual (5.9.12), without a size: reported, never guessed.
+        std::vector<uint8_t> p = {0x83, 0, 0, 0, 0x01, 0, 0x10, 0};
         p.resize(8 + 12 + 64, 0);
         const auto res = decodePayload(p);
         QCOMPARE(res.error, PayloadError::UnsupportedBits);
         QVERIFY(res.packets.empty());
-        QVERIFY(!Hi83::payloadSize(1u << 20));
+        for (int bit = 20; bit <= 24; ++bit)
+            QVERIFY(!Hi83::payloadSize(1u << bit));
+    }
+
+    void hi83Bits25To29InManualOrder()
+    {
+        // Built by hand in the manual's order (5.9.11: fields follow the bitmap from the lowest
+        // bit up): event_counter (16 x u32), gnss_std (3 x f32), then gnss_lon_lat_msl (3 x f64).
+        std::vector<uint8_t> p = {0x83, 0x08, 0x00, 0x03};
+        auto u32 = [&p](uint32_t v) {
+            for (int i = 0; i < 4; ++i)
+                p.push_back(uint8_t(v >> (8 * i)));
+        };
+        auto f32 = [&u32](float f) {
+            uint32_t v;
+            std::memcpy(&v, &f, 4);
+            u32(v);
+        };
+        auto f64 = [&u32](double d) {
+            uint64_t v;
+            std::memcpy(&v, &d, 8);
+            u32(uint32_t(v));
+            u32(uint32_t(v >> 32));
+        };
+        u32((1u << 25) | (1u << 28) | (1u << 30));
+        for (uint32_t i = 0; i < 16; ++i)
+            u32(100 + i);
+        f32(1.5f);
+        f32(0.05f);
+        f32(0);
+        f64(121.5);
+        f64(31.25);
+        f64(40.0);
+        QCOMPARE(p.size(), size_t(8 + 64 + 12 + 24));
+        const auto res = decodePayload(p);
+        QVERIFY2(res.ok(), payloadErrorText(res.error));
+        const Hi83 &h = std::get<Hi83>(res.packets.at(0));
+        QCOMPARE(h.mainStatus, uint16_t(0x0008));
+        QCOMPARE(h.insStatus, uint8_t(3));
+        QCOMPARE(h.eventCounter[0], 100u);
+        QCOMPARE(h.eventCounter[15], 115u);
+        QCOMPARE(h.gnssStd[0], 1.5f);
+        QCOMPARE(h.gnssStd[1], 0.05f);
+        QCOMPARE(h.gnssLonLatMsl[0], 121.5);
+        QCOMPARE(h.gnssLonLatMsl[1], 31.25);
+        QCOMPARE(h.gnssLonLatMsl[2], 40.0);
+
+        // As a sample: the fields the values table shows.
+        const imudesk::model::Sample s = toSample(res.packets[0]);
+        QVERIFY(s.has(imudesk::model::FieldHi83Extra));
+        QVERIFY(s.hi83);
+        QCOMPARE(s.hi83->bits, (1u << 25) | (1u << 28) | (1u << 30));
+        QCOMPARE(s.hi83->eventCounter[2], 102u);
+        QCOMPARE(s.hi83->gnssStd[0], 1.5f);
+        QCOMPARE(s.hi83->gnssLonLatMsl[1], 31.25);
+        // No UTC, no fix: FieldGnss stays off.
+        QVERIFY(!s.has(imudesk::model::FieldGnss));
+    }
+
+    void hi83UtcAndFixAsSample()
+    {
+        Hi83 h;
+        h.bitmap = (1u << 6) | (1u << 15);
+        h.utc = {26, 11, 26, 23, 59, 0x6C, 0xE8, 0}; // 59.500 s: 0xE86C ms
+        h.gnssQualityNv = {4, 21, 5, 17};
+        imudesk::model::Sample s = toSample(Packet(h));
+        QVERIFY(s.has(imudesk::model::FieldGnss));
+        QCOMPARE(s.gnssQuality, 4);
+        QCOMPARE(s.gnssSatellites, 21);
+        QCOMPARE(s.utcTimeOfDayS, 23 * 3600.0 + 59 * 60.0 + 59.5);
+        QVERIFY(s.hi83);
+        QCOMPARE(s.hi83->utcDate, (std::array<uint16_t, 3>{2026, 11, 26}));
+        QCOMPARE(int(s.hi83->solqHeading), 5);
+        QCOMPARE(int(s.hi83->nvHeading), 17);
+        // A zero date: GNSS time not known yet (the manual), so no UTC.
+        h.utc = {0, 0, 0, 0, 0, 0, 0, 0};
+        s = toSample(Packet(h));
+        QCOMPARE(s.utcTimeOfDayS, -1.0);
+        QVERIFY(!s.hi83->has(6));
     }
 
     void hi83LengthMismatch()

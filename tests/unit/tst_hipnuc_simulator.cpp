@@ -185,6 +185,7 @@ private Q_SLOTS:
     void onMarkSyncIn();
     void hi83MapChangesLength_data();
     void hi83MapChangesLength();
+    void ppsAlignsTheClockToUtc();
     void hi91Contents();
     void hi81Contents();
     void hi92Contents();
@@ -873,7 +874,8 @@ void TestHipnucSimulator::hi83MapChangesLength_data()
     QTest::newRow("imu+attitude 0x1F") << 0x0000001Fu << 72;
     QTest::newRow("acc only") << 0x00000001u << 20;
     QTest::newRow("time only") << 0x00000020u << 16;
-    QTest::newRow("everything supported") << 0xC00FFFFFu << 236;
+    QTest::newRow("the SDK's bits 0xC00FFFFF") << 0xC00FFFFFu << 236;
+    QTest::newRow("everything the manual sizes") << 0xFE0FFFFFu << 348;
 }
 
 void TestHipnucSimulator::hi83MapChangesLength()
@@ -926,9 +928,60 @@ void TestHipnucSimulator::hi83MapChangesLength()
         QVERIFY(std::fabs(p.pressure - 100000.0f) < 50.0f);
     if (has(8))
         QVERIFY(std::fabs(p.temperature - 30.0f) < 1.0f);
-    // Refused maps leave the configuration alone.
-    QVERIFY(!rig.ok("LOG HI83 MAP 0x02000000"));
+    if (has(15)) { // the fix of the simulated GGA
+        QCOMPARE(int(p.gnssQualityNv[0]), 1);
+        QCOMPARE(int(p.gnssQualityNv[1]), 12);
+    }
+    if (has(25)) { // gravity updates at 100 Hz since power-on, GNSS position at 1 Hz
+        QCOMPARE(p.eventCounter[0], uint32_t(p.systemTimeUs / 10000));
+        QVERIFY(p.eventCounter[0] > p.eventCounter[2]);
+    }
+    if (has(28))
+        QCOMPARE(p.gnssStd[0], 1.5f);
+    if (has(30)) {
+        QCOMPARE(p.gnssLonLatMsl[0], 121.458333);
+        QCOMPARE(p.gnssLonLatMsl[1], 31.208333);
+    }
+    // Refused maps (bits 20-24 are reserved, without a size) leave the configuration alone.
+    QVERIFY(!rig.ok("LOG HI83 MAP 0x00100000"));
     QCOMPARE(rig.sim.runningConfig().hi83Map, uint32_t(map));
+}
+
+void TestHipnucSimulator::ppsAlignsTheClockToUtc()
+{
+    // v1.7.1 manual 2.2.2: a PPS edge with its time message aligns the clock to the UTC
+    // second; afterwards UTC_UNSYNC (5.9.13 bit 11) is clear and the HI91 system_time is the
+    // ms of the UTC day. 2.2.1: the same pin's edge triggers the ONMARK 1 messages.
+    constexpr uint16_t kUnsync = 1u << 11;
+    SimOptions o;
+    o.ppsInput = true;
+    Rig rig(o);
+    QVERIFY(rig.ok("LOG HI91 ONTIME 0.1"));
+    const auto before = rig.run(500000).packets<Hi91>();
+    QVERIFY(!before.empty());
+    QVERIFY(!rig.sim.utcSynced());
+    QVERIFY(before.back().mainStatus & kUnsync);
+    QVERIFY(before.back().systemTime < 1000); // ms since power-on
+    const auto after = rig.run(1000000).packets<Hi91>();
+    QVERIFY(rig.sim.utcSynced());
+    const Hi91 &last = after.back();
+    QCOMPARE(last.mainStatus & kUnsync, 0);
+    const uint32_t utcMs = uint32_t((HipnucSimulator::kUtcBaseUnixS * 1000 + rig.sim.nowUs() / 1000) % 86400000);
+    QVERIFY2(last.systemTime <= utcMs && last.systemTime + 200 >= utcMs,
+             qPrintable(QStringLiteral("%1 vs %2").arg(last.systemTime).arg(utcMs)));
+    // ONMARK 1 now fires once per PPS edge.
+    QVERIFY(rig.ok("LOG HI91 ONTIME 0"));
+    QVERIFY(rig.ok("LOG HI83 ONMARK 1"));
+    rig.run(1000); // what was queued
+    QCOMPARE(rig.run(3000000).countTag(TagHi83), 3);
+
+    // Without a PPS input the clock stays the time since power-on.
+    Rig plain;
+    QVERIFY(plain.ok("LOG HI91 ONTIME 0.1"));
+    const auto free = plain.run(2500000).packets<Hi91>();
+    QVERIFY(free.back().mainStatus & kUnsync);
+    QVERIFY(free.back().systemTime < 3000);
+    QVERIFY(!plain.sim.utcSynced());
 }
 
 void TestHipnucSimulator::hi91Contents()

@@ -118,6 +118,68 @@ private Q_SLOTS:
         QCOMPARE(value(m, LatestValuesModel::UtcTime), QStringLiteral("23:59:59.99"));
     }
 
+    void headingAndHi83Rows()
+    {
+        using namespace imudesk::model;
+        LatestValuesModel m;
+        Sample hdt;
+        hdt.source = "HDT";
+        hdt.fields = FieldHeading;
+        hdt.headingDeg = 296.04;
+        m.refresh(hdt);
+        QVERIFY(m.everSeen(LatestValuesModel::Heading));
+        QCOMPARE(value(m, LatestValuesModel::Heading), QStringLiteral("296.0 true"));
+        QVERIFY(!m.everSeen(LatestValuesModel::EventCounters));
+
+        // An HI83 with bits 25, 28 and 30: those rows and no other HI83 row.
+        hp::Hi83 h;
+        h.bitmap = (1u << 25) | (1u << 28) | (1u << 30);
+        h.eventCounter = {1200, 600, 12, 12};
+        h.gnssStd = {1.5f, 0.05f, 0};
+        h.gnssLonLatMsl = {121.458333, 31.208333, 40.0};
+        m.refresh(hp::toSample(hp::Packet(h)));
+        QVERIFY(m.everSeen(LatestValuesModel::EventCounters));
+        QVERIFY(m.everSeen(LatestValuesModel::GnssAccuracy));
+        QVERIFY(m.everSeen(LatestValuesModel::GnssPosition));
+        QVERIFY(!m.everSeen(LatestValuesModel::KfAccBias));
+        QVERIFY(!m.everSeen(LatestValuesModel::DualAntenna));
+        QCOMPARE(value(m, LatestValuesModel::EventCounters), QStringLiteral("grav 1200 mag 600 pos 12 vel 12"));
+        QCOMPARE(value(m, LatestValuesModel::GnssAccuracy), QStringLiteral("1.50  0.05"));
+        QCOMPARE(value(m, LatestValuesModel::GnssPosition), QStringLiteral("31.2083330  121.4583330  40.00"));
+        QCOMPARE(value(m, LatestValuesModel::KfAccBias), QStringLiteral("—"));
+        QCOMPARE(m.index(LatestValuesModel::GnssAccuracy, LatestValuesModel::UnitColumn).data().toString(),
+                 QStringLiteral("m, m/s"));
+        QVERIFY(!m.index(LatestValuesModel::EventCounters, 0).data(Qt::ToolTipRole).toString().isEmpty());
+    }
+
+    void deviceTimeAsUtcOncePpsAligned()
+    {
+        using namespace imudesk::model;
+        Sample s;
+        s.source = "HI91";
+        s.fields = FieldDeviceTime | FieldMainStatus;
+        s.mainStatus = 1u << 11; // UTC_UNSYNC: ms since power-on
+        s.deviceTimeMs = 123456;
+        LatestValuesModel m;
+        m.refresh(s);
+        QCOMPARE(value(m, LatestValuesModel::DeviceTime), QStringLiteral("123456"));
+        QCOMPARE(m.index(LatestValuesModel::DeviceTime, LatestValuesModel::UnitColumn).data().toString(), QStringLiteral("ms"));
+        QSignalSpy spy(&m, &QAbstractItemModel::dataChanged);
+        s.mainStatus = 0; // aligned: the ms of the UTC day (v1.7.1 manual 2.2.2)
+        s.deviceTimeMs = 3661000 + 42;
+        m.refresh(s);
+        QCOMPARE(value(m, LatestValuesModel::DeviceTime), QStringLiteral("01:01:01.042"));
+        QCOMPARE(m.index(LatestValuesModel::DeviceTime, LatestValuesModel::UnitColumn).data().toString(), QStringLiteral("UTC"));
+        bool unitChanged = false;
+        for (const auto &args : spy)
+            unitChanged |= args.at(0).toModelIndex().column() == LatestValuesModel::UnitColumn;
+        QVERIFY(unitChanged);
+        // Without a status word (older firmware) the time is never read as UTC.
+        s.fields = FieldDeviceTime;
+        m.refresh(s);
+        QCOMPARE(value(m, LatestValuesModel::DeviceTime), QStringLiteral("3661042"));
+    }
+
     void emptyShowsDash()
     {
         LatestValuesModel m;
@@ -132,14 +194,18 @@ private Q_SLOTS:
         LatestValuesModel m;
         QSignalSpy spy(&m, &QAbstractItemModel::dataChanged);
         m.refresh(s);
-        // Every row HI91 carries changed from "—": two ranges in the value column, around the
-        // INS / ship-motion / inclinometer rows that HI91 does not carry.
-        QCOMPARE(spy.count(), 2);
-        QCOMPARE(spy.at(0).at(0).toModelIndex().row(), 0);
-        QCOMPARE(spy.at(0).at(1).toModelIndex().row(), int(LatestValuesModel::DeviceTime));
-        QCOMPARE(spy.at(1).at(0).toModelIndex().row(), int(LatestValuesModel::StatusFlags));
-        QCOMPARE(spy.at(1).at(1).toModelIndex().row(), int(LatestValuesModel::RowCount) - 1);
-        QCOMPARE(spy.at(0).at(0).toModelIndex().column(), int(LatestValuesModel::ValueColumn));
+        // The example's status word 0x1508 has bit 11 (UTC_SYNCED in the manual's table: 0 =
+        // synchronised) clear, so its system_time is the ms of the UTC day: the device time's
+        // unit changes first. Then every row HI91 carries changed from "—": two ranges in the
+        // value column, around the INS / ship-motion / inclinometer rows that HI91 does not carry.
+        QCOMPARE(spy.count(), 3);
+        QCOMPARE(spy.at(0).at(0).toModelIndex().row(), int(LatestValuesModel::DeviceTime));
+        QCOMPARE(spy.at(0).at(0).toModelIndex().column(), int(LatestValuesModel::UnitColumn));
+        QCOMPARE(spy.at(1).at(0).toModelIndex().row(), 0);
+        QCOMPARE(spy.at(1).at(1).toModelIndex().row(), int(LatestValuesModel::DeviceTime));
+        QCOMPARE(spy.at(2).at(0).toModelIndex().row(), int(LatestValuesModel::StatusFlags));
+        QCOMPARE(spy.at(2).at(1).toModelIndex().row(), int(LatestValuesModel::RowCount) - 1);
+        QCOMPARE(spy.at(1).at(0).toModelIndex().column(), int(LatestValuesModel::ValueColumn));
         QVERIFY(m.everSeen(LatestValuesModel::Roll));
         QVERIFY(!m.everSeen(LatestValuesModel::Latitude));
         QCOMPARE(value(m, LatestValuesModel::Latitude), QStringLiteral("—"));
@@ -162,7 +228,7 @@ private Q_SLOTS:
         QCOMPARE(value(m, LatestValuesModel::QuatZ), QStringLiteral("0.8602"));
         QCOMPARE(value(m, LatestValuesModel::Pressure), QStringLiteral("100676.1"));
         QCOMPARE(value(m, LatestValuesModel::Temperature), QStringLiteral("35.0"));
-        QCOMPARE(value(m, LatestValuesModel::DeviceTime), QStringLiteral("1840392"));
+        QCOMPARE(value(m, LatestValuesModel::DeviceTime), QStringLiteral("00:30:40.392")); // 1840392 ms
         // 0x1508: WB_CONV (3), bit 8 (undefined), MAG_AIDING (10), SOUT_PULSE (12).
         QCOMPARE(value(m, LatestValuesModel::StatusFlags), QStringLiteral("WB_CONV MAG_AIDING SOUT_PULSE (0x1508)"));
         QCOMPARE(value(m, LatestValuesModel::FrameType), QStringLiteral("HI91"));

@@ -193,6 +193,42 @@ private Q_SLOTS:
         QCOMPARE(merged.source, std::string("RMC"));
     }
 
+    void headingSentences()
+    {
+        using namespace imudesk::model;
+        // What an HEC495 sends with output content NMEA 0183 (manual 2.x, command 0x49 = 03).
+        auto r = parseSentence(buildSentence("HCHDT,123.4,T"));
+        QVERIFY(r.ok());
+        QCOMPARE(r.sentence->talker, std::string("HC"));
+        QVERIFY(r.sentence->heading);
+        QCOMPARE(r.sentence->heading->headingDeg, 123.4);
+        QVERIFY(r.sentence->heading->trueNorth);
+        auto s = sampleOf(buildSentence("HCHDT,359.9,T"));
+        QVERIFY(s && s->has(FieldHeading) && !s->has(FieldEuler));
+        QCOMPARE(s->headingDeg, 359.9);
+        QVERIFY(s->headingTrue);
+        s = sampleOf(buildSentence("HCHDM,10.0,M"));
+        QVERIFY(s && s->has(FieldHeading));
+        QVERIFY(!s->headingTrue);
+        // No heading yet: a valid sentence without a sample. A wrong reference letter or an
+        // angle beyond 360 is damage.
+        QVERIFY(parseSentence(buildSentence("HCHDT,,T")).ok());
+        QVERIFY(!sampleOf(buildSentence("HCHDT,,T")));
+        QCOMPARE(parseSentence(buildSentence("HCHDT,12.0,M")).error, NmeaError::BadField);
+        QCOMPARE(parseSentence(buildSentence("HCHDT,361.0,T")).error, NmeaError::BadField);
+        // The heading stays beside the Euler angles when merged.
+        Sample merged;
+        Sample euler;
+        euler.fields = FieldEuler;
+        euler.roll = 1;
+        euler.yaw = -64;
+        mergeFields(merged, euler);
+        mergeFields(merged, *sampleOf(buildSentence("HCHDT,296.0,T")));
+        QCOMPARE(merged.roll, 1.0);
+        QCOMPARE(merged.yaw, -64.0);
+        QCOMPARE(merged.headingDeg, 296.0);
+    }
+
     void otherSentencesKeepFields()
     {
         const auto r = parseSentence(buildSentence("GPVTG,054.7,T,034.4,M,005.5,N,010.2,K"));

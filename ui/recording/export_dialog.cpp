@@ -160,6 +160,8 @@ void ExportDialog::onFinished()
         m_progress->setValue(1000);
         message = tr("%n row(s) written to %1", nullptr, int(std::min<uint64_t>(m_result.frames, INT32_MAX)))
                       .arg(m_result.files.join(QStringLiteral(", ")));
+        for (const QString &note : m_result.notes)
+            message += QLatin1Char('\n') + note;
         if (!m_result.warning.isEmpty())
             message += QLatin1Char('\n') + m_result.warning;
     }

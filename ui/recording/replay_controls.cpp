@@ -98,8 +98,12 @@ void ReplayControls::setSession(record::ReplaySession *session)
     updateLabel();
 }
 
-void ReplayControls::onOpened(double durationS, const record::CaptureHeader &)
+void ReplayControls::onOpened(double durationS, const record::CaptureHeader &header)
 {
+    m_deviceClock = header.value(record::CaptureHeader::kHostTime) == "absent";
+    m_time->setToolTip(m_deviceClock ? tr("This file is a raw byte dump: it has no arrival times, so the times come "
+                                          "from the device's own clock (HI91/HI83 time stamps or NMEA UTC time).")
+                                     : QString());
     m_duration = durationS;
     m_timeline->setRange(0, int(durationS * 1000));
     updateLabel();
@@ -129,7 +133,8 @@ void ReplayControls::seekToSlider()
 
 void ReplayControls::updateLabel()
 {
-    m_time->setText(tr("%1 / %2").arg(clock(m_position), clock(m_duration)));
+    m_time->setText(m_deviceClock ? tr("%1 / %2 (device clock)").arg(clock(m_position), clock(m_duration))
+                                  : tr("%1 / %2").arg(clock(m_position), clock(m_duration)));
 }
 
 } // namespace imudesk::ui

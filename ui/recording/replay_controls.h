@@ -44,6 +44,7 @@ private:
     double m_duration = 0;
     double m_position = 0;
     bool m_playing = false;
+    bool m_deviceClock = false; // a raw byte dump: the times are the device's (CaptureHeader::kHostTime)
 };
 
 } // namespace imudesk::ui

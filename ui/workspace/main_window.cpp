@@ -463,6 +463,7 @@ void MainWindow::updateActions()
     m_disconnectAction->setEnabled(busy);
     m_versionAction->setEnabled(ws && ws->state() == SessionState::Connected
                                 && ws->capabilities().testFlag(device::DeviceLink::Capability::TextCommands));
+    m_takeSampleAction->setEnabled(m_versionAction->isEnabled());
     m_tools->update(ws);
 }
 
@@ -547,6 +548,21 @@ void MainWindow::createActions()
         console()->submit(QString::fromStdString(protocol::hipnuc::commands::logVersion().text));
     });
 
+    m_takeSampleAction = new QAction(this);
+    m_takeSampleAction->setObjectName(QStringLiteral("takeSampleAction"));
+    m_takeSampleAction->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_T));
+    connect(m_takeSampleAction, &QAction::triggered, this, [this] {
+        // LOG <MSG> ONMARK ONCE (v1.7.1 manual 4.6.8.15: one frame, as a SYNC_IN pulse would give)
+        // of the frame type the module sends, HI91 when it sends none; through the console.
+        protocol::hipnuc::Message m = protocol::hipnuc::Message::HI91;
+        if (const DeviceWorkspace *ws = currentWorkspace())
+            if (const auto latest = ws->link().store().latest())
+                if (protocol::hipnuc::Message named; protocol::hipnuc::parseMessage(latest->source, named)
+                                                    && protocol::hipnuc::commands::logOnMark(named, true).ok())
+                    m = named;
+        console()->submit(QString::fromStdString(protocol::hipnuc::commands::logOnMark(m, true).text));
+    });
+
     m_preferencesAction = new QAction(this);
     m_preferencesAction->setObjectName(QStringLiteral("preferencesAction"));
     m_preferencesAction->setMenuRole(QAction::PreferencesRole);
@@ -574,6 +590,7 @@ void MainWindow::createMenus()
     m_deviceMenu->addAction(m_disconnectAction);
     m_deviceMenu->addSeparator();
     m_deviceMenu->addAction(m_versionAction);
+    m_deviceMenu->addAction(m_takeSampleAction);
     m_viewMenu = menuBar()->addMenu(QString());
     m_calibrateMenu = menuBar()->addMenu(QString());
     m_toolsMenu = menuBar()->addMenu(QString());
@@ -599,6 +616,10 @@ void MainWindow::retranslateUi()
     m_disconnectAction->setText(tr("&Disconnect"));
     m_versionAction->setText(tr("Send LOG &VERSION"));
     m_versionAction->setStatusTip(tr("Ask the device for its product name, firmware and serial number"));
+    m_takeSampleAction->setText(tr("&Take one sample"));
+    m_takeSampleAction->setStatusTip(tr("Send LOG … ONMARK ONCE: the module outputs one frame of the type it sends, "
+                                        "as a pulse on SYNC_IN would trigger"));
+    m_takeSampleAction->setToolTip(m_takeSampleAction->statusTip());
     m_aboutAction->setText(tr("&About ImuDesk"));
     m_preferencesAction->setText(tr("&Preferences…"));
     for (int i = 0; i < m_presetActions.size(); ++i) {

@@ -153,6 +153,7 @@ private:
     QAction *m_connectAction = nullptr;
     QAction *m_disconnectAction = nullptr;
     QAction *m_versionAction = nullptr;
+    QAction *m_takeSampleAction = nullptr; // LOG <MSG> ONMARK ONCE
     QAction *m_aboutAction = nullptr;
     QAction *m_preferencesAction = nullptr;
     QList<QAction *> m_presetActions;

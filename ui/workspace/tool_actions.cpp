@@ -194,8 +194,9 @@ bool ToolActions::importVendorCsv(const QString &csvPath, const QString &capture
 
 void ToolActions::chooseCapture()
 {
+    // Any file: a capture, a vendor CSV or a raw byte dump is recognised by its content.
     const QString path = QFileDialog::getOpenFileName(m_host->dialogParent(), tr("Open capture"), m_host->preferences().effectiveRecordingFolder(),
-                                                      tr("Captures (*.imucap);;All files (*)"));
+                                                      tr("Captures, vendor CSV and raw dumps (*.imucap *.csv *.bin *.raw *.log *.dat *.txt);;All files (*)"));
     if (!path.isEmpty())
         openCapture(path);
 }
@@ -217,7 +218,7 @@ void ToolActions::chooseCsv()
 void ToolActions::exportCapture()
 {
     const QString path = QFileDialog::getOpenFileName(m_host->dialogParent(), tr("Export capture"), m_host->preferences().effectiveRecordingFolder(),
-                                                      tr("Captures (*.imucap);;All files (*)"));
+                                                      tr("Captures, vendor CSV and raw dumps (*.imucap *.csv *.bin *.raw *.log *.dat *.txt);;All files (*)"));
     if (path.isEmpty())
         return;
     auto *dialog = new ExportDialog(path, m_host->dialogParent());
@@ -228,7 +229,7 @@ void ToolActions::exportCapture()
 void ToolActions::analyzeCapture()
 {
     const QString path = QFileDialog::getOpenFileName(m_host->dialogParent(), tr("Analyze capture"), m_host->preferences().effectiveRecordingFolder(),
-                                                      tr("Captures and vendor CSV (*.imucap *.csv);;All files (*)"));
+                                                      tr("Captures, vendor CSV and raw dumps (*.imucap *.csv *.bin *.raw *.log *.dat *.txt);;All files (*)"));
     if (path.isEmpty())
         return;
     auto *window = new AnalysisWindow(m_host->dialogParent());

@@ -4,8 +4,9 @@
 // Bytes may arrive in any chunking. A candidate sync whose length is outside
 // 1..kMaxPayload or whose CRC fails is abandoned and the search resumes one byte
 // after that sync, so a real frame that started inside a damaged or false frame
-// is still found. Memory is bounded: at most one unfinished frame (< 512 bytes)
-// is kept between calls.
+// is still found. LEN is 1-4096 (v1.7.1 manual 5.7; the vendor's SDK stops at 506, and
+// the largest payload the manual defines, HI83 with every bit, is 348 bytes). Memory is
+// bounded: at most one unfinished frame (< 4102 bytes) is kept between calls.
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -16,7 +17,7 @@ namespace imudesk::protocol::hipnuc {
 class FrameDecoder {
 public:
     static constexpr size_t kHeaderSize = 6;
-    static constexpr size_t kMaxPayload = 506;
+    static constexpr size_t kMaxPayload = 4096;
 
     struct Counters {
         uint64_t bytesIn = 0;

@@ -3,6 +3,7 @@
 #include "byte_io.h"
 
 #include <cmath>
+#include <memory>
 
 namespace imudesk::protocol::hipnuc {
 
@@ -82,8 +83,10 @@ void read(LeReader &r, Hi81 &p)
     r.get(p.tail);
 }
 
-// HI83 fields in wire order. Bits 20-29 are refused before this runs, so
-// ascending order is the wire order (the vendor notes place 30/31 after 27).
+// HI83 fields in wire order: "后续数据段按位图从低位到高位顺序依次排列" (v1.7.1 manual 5.9.11,
+// sizes in 5.9.12), ascending bit order. The vendor's SDK comments put 30 and 31 after 27
+// and before 28 and 29, but that SDK refuses every frame with bits 20-29 and so never reads
+// them; ImuDesk follows the manual (docs/user-guide.md, "HI83").
 template <typename Io, typename H> void walkHi83(Io &io, H &p)
 {
     const uint32_t m = p.bitmap;
@@ -108,6 +111,11 @@ template <typename Io, typename H> void walkHi83(Io &io, H &p)
     if (has(17)) io(p.undulation);
     if (has(18)) io(p.diffAge);
     if (has(19)) io(p.nodeInfo);
+    if (has(25)) io(p.eventCounter);
+    if (has(26)) io(p.kfAccBias);
+    if (has(27)) io(p.kfGyrBias);
+    if (has(28)) io(p.gnssStd);
+    if (has(29)) io(p.gnssHeadingInfo);
     if (has(30)) io(p.gnssLonLatMsl);
     if (has(31)) io(p.gnssVel);
 }
@@ -137,7 +145,7 @@ struct Hi83Writer {
 size_t Hi83::fieldSize(int bit)
 {
     static constexpr uint8_t sizes[32] = {12, 12, 12, 12, 16, 8, 8, 4, 4, 12, 12, 12, 12, 12, 24, 4,
-                                          4,  4,  4,  4,  0,  0, 0, 0, 0, 0,  0,  0,  0,  0,  24, 12};
+                                          4,  4,  4,  4,  0,  0, 0, 0, 0, 64, 12, 12, 12, 12, 24, 12};
     return (bit >= 0 && bit < 32) ? sizes[bit] : 0;
 }
 
@@ -478,6 +486,47 @@ model::Sample sampleOf(const Hi83 &p)
         s.longitudeDeg = p.insLonLatMsl[0];
         s.latitudeDeg = p.insLonLatMsl[1];
         s.altitudeM = p.insLonLatMsl[2];
+    }
+    // UTC counts only with a date (v1.7.1 5.9.12: zero until GNSS time is known).
+    const bool utcValid = has(6) && p.utc[0] != 0 && p.utc[1] != 0;
+    if (utcValid) {
+        s.fields |= model::FieldGnss;
+        const unsigned ms = unsigned(p.utc[5]) | unsigned(p.utc[6]) << 8;
+        s.utcTimeOfDayS = p.utc[3] * 3600.0 + p.utc[4] * 60.0 + ms / 1000.0;
+    }
+    if (has(15)) {
+        s.fields |= model::FieldGnss;
+        s.gnssQuality = p.gnssQualityNv[0];
+        s.gnssSatellites = p.gnssQualityNv[1];
+    }
+    constexpr uint32_t kExtraBits = (1u << 6) | (1u << 11) | (1u << 13) | 0x000F8000u | 0xFE000000u;
+    if (p.bitmap & kExtraBits) {
+        auto x = std::make_shared<model::Hi83Extra>();
+        x->bits = p.bitmap & kExtraBits;
+        if (!utcValid)
+            x->bits &= ~(1u << 6);
+        x->utcDate = {uint16_t(2000 + p.utc[0]), p.utc[1], p.utc[2]};
+        x->hssFreqHz = p.hssFreq;
+        x->accEnu = p.accEnu;
+        x->solqPos = p.gnssQualityNv[0];
+        x->nvPos = p.gnssQualityNv[1];
+        x->solqHeading = p.gnssQualityNv[2];
+        x->nvHeading = p.gnssQualityNv[3];
+        x->odSpeedMs = p.odSpeed;
+        x->undulationM = p.undulation;
+        x->diffAgeS = p.diffAge;
+        x->nodeId = p.nodeInfo[0];
+        x->eventCounter = p.eventCounter;
+        x->kfAccBias = p.kfAccBias;
+        x->kfGyrBias = p.kfGyrBias;
+        x->gnssStd = p.gnssStd;
+        x->dualHeading = p.gnssHeadingInfo;
+        x->gnssLonLatMsl = p.gnssLonLatMsl;
+        x->gnssVelEnu = p.gnssVel;
+        if (x->bits) {
+            s.fields |= model::FieldHi83Extra;
+            s.hi83 = std::move(x);
+        }
     }
     return s;
 }

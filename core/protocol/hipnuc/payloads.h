@@ -76,8 +76,9 @@ struct Hi81 {
 };
 
 struct Hi83 {
-    // Bits with a known size; anything else is unsupported and refused.
-    static constexpr uint32_t kSupportedMask = 0xC00FFFFFu;
+    // Bits with a known size (v1.7.1 manual 5.9.12: 0-19 and 25-31); 20-24 are reserved
+    // there, without a size, and a frame that sets them is refused.
+    static constexpr uint32_t kSupportedMask = 0xFE0FFFFFu;
     static constexpr uint32_t kDefaultMap = 0x000000FFu;
     uint16_t mainStatus = 0;
     uint8_t insStatus = 0;
@@ -103,6 +104,11 @@ struct Hi83 {
     float undulation = 0;             // bit 17
     float diffAge = 0;                // bit 18
     std::array<uint8_t, 4> nodeInfo{}; // bit 19
+    std::array<uint32_t, 16> eventCounter{}; // bit 25: gravity, mag, gnss_pos, gnss_vel, dual_heading, nhc, zupt, zaru, zihr, od, reserved
+    std::array<float, 3> kfAccBias{}; // bit 26, m/s^2
+    std::array<float, 3> kfGyrBias{}; // bit 27, rad/s
+    std::array<float, 3> gnssStd{};   // bit 28: position std norm, velocity std norm, reserved
+    std::array<float, 3> gnssHeadingInfo{}; // bit 29: baseline m, pitch deg, heading deg
     std::array<double, 3> gnssLonLatMsl{}; // bit 30
     std::array<float, 3> gnssVel{};   // bit 31
     friend bool operator==(const Hi83 &, const Hi83 &) = default;

@@ -280,6 +280,19 @@ ParseResult parseSentence(std::string_view line)
         x.insStatus = toInt(field(f, 19)).value_or(0);
         x.antennaStatus = toInt(field(f, 20)).value_or(0);
         s.sxt = x;
+    } else if (s.type == "HDT" || s.type == "HDM") {
+        // One number and its reference letter; an empty number is "no heading" (no sample).
+        const bool trueNorth = s.type == "HDT";
+        const std::string &unit = field(f, 1);
+        if (!unit.empty() && unit != (trueNorth ? "T" : "M"))
+            bad = true;
+        if (!field(f, 0).empty()) {
+            const auto v = toDouble(field(f, 0));
+            if (!v || *v < 0 || *v > 360)
+                bad = true;
+            else
+                s.heading = Heading{*v, trueNorth};
+        }
     }
     if (bad) {
         res.error = NmeaError::BadField;

@@ -1,6 +1,7 @@
 #pragma once
-// NMEA 0183 sentences that HiPNUC modules emit or accept: GGA, RMC and HiPNUC's own SXT
-// (decoded); anything else with a valid checksum is kept with its fields, undecoded.
+// NMEA 0183 sentences that HiPNUC modules emit or accept: GGA, RMC and HiPNUC's own SXT;
+// the heading sentences HDT (true) and HDM (magnetic), as a compass such as the HEC495 sends
+// them (decoded); anything else with a valid checksum is kept with its fields, undecoded.
 #include <optional>
 #include <string>
 #include <string_view>
@@ -68,6 +69,12 @@ struct Sxt {
 };
 inline constexpr size_t kSxtFields = 21;
 
+// $--HDT,x.x,T (true heading) and $--HDM,x.x,M (magnetic heading), degrees 0..360.
+struct Heading {
+    double headingDeg = 0;
+    bool trueNorth = true;
+};
+
 struct Sentence {
     std::string talker;    // "GP", "GN", ...
     std::string type;      // "GGA", "RMC", ...
@@ -75,6 +82,7 @@ struct Sentence {
     std::optional<Gga> gga;
     std::optional<Rmc> rmc;
     std::optional<Sxt> sxt;
+    std::optional<Heading> heading; // HDT, HDM
 };
 
 struct ParseResult {

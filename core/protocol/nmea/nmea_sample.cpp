@@ -71,6 +71,10 @@ std::optional<model::Sample> toSample(const Sentence &sentence)
             s.velEnu = {*x->velEnuMs[0], *x->velEnuMs[1], *x->velEnuMs[2]};
             s.fields |= model::FieldVelocity;
         }
+    } else if (const auto &h = sentence.heading) {
+        s.headingDeg = h->headingDeg;
+        s.headingTrue = h->trueNorth;
+        s.fields |= model::FieldHeading;
     }
     if (s.fields == 0)
         return std::nullopt;
