@@ -18,13 +18,17 @@
         <location filename="../core/record/capture_source.cpp" line="+189" />
         <source>%1 is a vendor CSV: %n row(s) read, times from its pc_counter column</source>
         <translation>
-            <numerusform>%1 is a vendor CSV: %n row read, times from its pc_counter column</numerusform><numerusform>%1 is a vendor CSV: %n rows read, times from its pc_counter column</numerusform></translation>
+            <numerusform>%1 is a vendor CSV: %n row read, times from its pc_counter column</numerusform>
+            <numerusform>%1 is a vendor CSV: %n rows read, times from its pc_counter column</numerusform>
+        </translation>
     </message>
     <message numerus="yes">
         <location line="+18" />
         <source>The device clock restarted or jumped %n time(s); the times go on across each jump.</source>
         <translation>
-            <numerusform>The device clock restarted or jumped %n time; the times go on across each jump.</numerusform><numerusform>The device clock restarted or jumped %n times; the times go on across each jump.</numerusform></translation>
+            <numerusform>The device clock restarted or jumped %n time; the times go on across each jump.</numerusform>
+            <numerusform>The device clock restarted or jumped %n times; the times go on across each jump.</numerusform>
+        </translation>
     </message>
 </context>
 <context>

@@ -58,7 +58,7 @@
 <context>
     <name>CalibrationReport</name>
     <message>
-        <location filename="../ui/calibration/calibration_report.cpp" line="+37" />
+        <location filename="../ui/calibration/calibration_report.cpp" line="+38" />
         <source>Fit</source>
         <translation>拟合方式</translation>
     </message>
@@ -91,6 +91,21 @@
         <location line="+1" />
         <source>Sphere coverage (%)</source>
         <translation>球面覆盖率（%）</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Predicted heading error, level module (deg)</source>
+        <translation>预测航向误差，水平放置 (deg)</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Hard-iron uncertainty, RMS (uT)</source>
+        <translation>硬磁不确定度，RMS (uT)</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Soft-iron uncertainty, RMS (%)</source>
+        <translation>软磁不确定度，RMS (%)</translation>
     </message>
     <message>
         <location line="+1" />
@@ -278,7 +293,12 @@
         <translation>已采集有效点数</translation>
     </message>
     <message>
-        <location line="+6" />
+        <location line="+9" />
+        <source>unbounded</source>
+        <translation>无界</translation>
+    </message>
+    <message>
+        <location line="+2" />
         <source>yes</source>
         <translation>是</translation>
     </message>
@@ -298,7 +318,8 @@
         <translation>设备</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="-119" />
+        <location line="+119" />
         <location line="+1" />
         <location line="+1" />
         <source>unknown</source>
@@ -976,7 +997,8 @@
         <location line="+11" />
         <source>%1 is a vendor CSV: %n row(s) read, times from its pc_counter column</source>
         <translation>
-            <numerusform>%1 是厂商 CSV：已读取 %n 行，时间取自 pc_counter 列</numerusform></translation>
+            <numerusform>%1 是厂商 CSV：已读取 %n 行，时间取自 pc_counter 列</numerusform>
+        </translation>
     </message>
     <message>
         <location line="+12" />
@@ -992,7 +1014,8 @@
         <location line="+4" />
         <source>The device clock restarted or jumped %n time(s); the times go on across each jump.</source>
         <translation>
-            <numerusform>设备时钟重启或跳变了 %n 次；时间在每次跳变处连续延续。</numerusform></translation>
+            <numerusform>设备时钟重启或跳变了 %n 次；时间在每次跳变处连续延续。</numerusform>
+        </translation>
     </message>
     <message>
         <location line="+17" />
@@ -2022,7 +2045,7 @@
         <translation>请先断开，再连接 Modbus 设备。</translation>
     </message>
     <message>
-        <location line="+23" />
+        <location line="+26" />
         <source>The simulated CAN device could not start on %1:%2: %3</source>
         <translation>模拟 CAN 设备无法在 %1:%2 上启动：%3</translation>
     </message>
@@ -2203,22 +2226,29 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>样本位于同一平面内（模块只绕一个轴转动），因此无法计算完整的三维校准。请同时绕模块的其他轴转动，或使用二维（平面）校准，但它仅适用于水平工作。</translation>
     </message>
     <message>
-        <location line="+12" />
-        <source>Only %1 % of the field directions are covered (at least %2 % are needed, eigenvalue ratio %3, at most %4). %5. A full fit on this data would be unreliable.</source>
-        <translation>磁场方向覆盖率仅为 %1 %（至少需要 %2 %；特征值比 %3，最大 %4）。%5。用这些数据进行完整拟合将不可靠。</translation>
+        <location line="+13" />
+        <source>Only %1 % of the field directions are covered (at least %2 % are needed before a fit is tried). %3.</source>
+        <translation>仅覆盖了 %1 % 的磁场方向（尝试拟合前至少需要 %2 %）。%3。</translation>
     </message>
     <message>
-        <location line="+8" />
+        <location line="+6" />
+        <location line="+9" />
+        <location line="+208" />
         <source>A hard-iron-only fit (soft iron kept from before) is possible.</source>
         <translation>可以只拟合硬磁（沿用之前的软磁参数）。</translation>
     </message>
     <message>
-        <location line="+6" />
+        <location line="-211" />
+        <source>No ellipsoid fits these samples, which cover only part of the sphere. %1, then fit again.</source>
+        <translation>这些样本只覆盖了球面的一部分，没有椭球能拟合它们。%1，然后重新拟合。</translation>
+    </message>
+    <message>
+        <location line="+8" />
         <source>The samples do not describe an ellipsoid (strong interference or a moving magnet nearby). Move away from iron and electronics and calibrate again.</source>
         <translation>样本不构成椭球（存在强干扰或附近有移动的磁体）。请远离铁磁物体和电子设备后重新校准。</translation>
     </message>
     <message>
-        <location line="+27" />
+        <location line="+25" />
         <source>Only %1 usable samples; the hard-iron fit needs at least %2.</source>
         <translation>仅有 %1 个可用样本；硬磁拟合至少需要 %2 个。</translation>
     </message>
@@ -2233,7 +2263,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>硬磁拟合无解：请检查样本是否为以 uT 为单位的磁力计数据。</translation>
     </message>
     <message>
-        <location line="+18" />
+        <location line="+21" />
         <source>Only %1 usable samples; the 2-D fit needs at least %2. Turn the module a full circle.</source>
         <translation>仅有 %1 个可用样本；二维拟合至少需要 %2 个。请将模块转动一整圈。</translation>
     </message>
@@ -2243,7 +2273,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>水平方向的样本不构成椭圆：请将模块匀速转动一整圈。</translation>
     </message>
     <message>
-        <location line="+41" />
+        <location line="+46" />
         <location line="+17" />
         <source>fit error %1 % is above %2 %</source>
         <translation>拟合误差 %1 % 高于 %2 %</translation>
@@ -2259,7 +2289,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>磁场强度 %1 uT 不符合地磁场（%2..%3 uT）</translation>
     </message>
     <message>
-        <location line="+7" />
+        <location line="+9" />
+        <source>the predicted heading error of a level module, %1 deg, is above %2 deg (hard iron +-%3 uT)</source>
+        <translation>水平放置时的预测航向误差 %1 deg 高于 %2 deg（硬磁 ±%3 uT）</translation>
+    </message>
+    <message>
+        <location line="+6" />
         <source>only %1 % of the directions are covered</source>
         <translation>方向覆盖率仅为 %1 %</translation>
     </message>
@@ -2294,17 +2329,42 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>二维校准：仅适用于水平工作</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+8" />
         <source>Calibration failed: %1.</source>
         <translation>校准失败：%1。</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+6" />
+        <source>The data cannot give an accurate calibration: the predicted heading error of a level module is %1 deg, at most %2 deg is accepted (hard iron +-%3 uT, soft iron +-%4 %).</source>
+        <translation>这些数据无法给出准确的校准：水平放置时的预测航向误差为 %1 deg，最多接受 %2 deg（硬磁 ±%3 uT，软磁 ±%4 %）。</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>The data cannot give an accurate calibration: the fit's parameters are not determined by these samples.</source>
+        <translation>这些数据无法给出准确的校准：这些样本确定不了拟合参数。</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Part of the sphere is missing (a gap of %1 deg). %2, then fit again.</source>
+        <translation>球面缺少一部分（空缺 %1 deg）。%2，然后重新拟合。</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>The directions are covered, but there are too few samples or they scatter too much (%1 uT RMS about the fit): collect more, turning slowly and evenly, away from iron and electronics.</source>
+        <translation>方向已覆盖，但样本太少或离散太大（相对拟合 %1 uT RMS）：请远离铁磁物体和电子设备，缓慢均匀地转动，采集更多样本。</translation>
+    </message>
+    <message>
+        <location line="+8" />
         <source>Usable with care: %1.</source>
         <translation>可用但需谨慎：%1。</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+5" />
+        <source>Good calibration: predicted heading error %1 deg (level module), fit error %2 %, %3 % of the directions covered.</source>
+        <translation>校准良好：预测航向误差 %1 deg（水平放置），拟合误差 %2 %，覆盖了 %3 % 的方向。</translation>
+    </message>
+    <message>
+        <location line="+5" />
         <source>Good calibration: fit error %1 %, %2 % of the directions covered.</source>
         <translation>校准良好：拟合误差 %1 %，方向覆盖率 %2 %。</translation>
     </message>
@@ -3788,7 +3848,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::device::CanFamily</name>
     <message>
-        <location filename="../core/device/can_family.cpp" line="+96" />
+        <location filename="../core/device/can_family.cpp" line="+102" />
         <source>connected to %1</source>
         <translation>已连接到 %1</translation>
     </message>
@@ -3996,12 +4056,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <location line="+3" />
         <location line="+66" />
         <location line="+30" />
-        <location line="+44" />
+        <location line="+112" />
         <source>the protocol is not known yet: choose it or wait for traffic</source>
         <translation>协议尚未确定：请选择协议，或等待总线上出现数据</translation>
     </message>
     <message>
-        <location line="-134" />
+        <location line="-202" />
         <source>the HEC495 rate code is 0 (off) to 6 (100 Hz)</source>
         <translation>HEC495 频率代码为 0（关闭）至 6（100 Hz）</translation>
     </message>
@@ -4073,12 +4133,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
     <message>
         <location line="+3" />
         <location line="+8" />
-        <location line="+103" />
+        <location line="+171" />
         <source>reset</source>
         <translation>复位</translation>
     </message>
     <message>
-        <location line="-110" />
+        <location line="-178" />
         <location line="+5" />
         <location line="+8" />
         <source>set the node ID</source>
@@ -4165,7 +4225,84 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>姿态复位需要 HiPNUC J1939 或 CANopen 设备</translation>
     </message>
     <message>
-        <location line="+7" />
+        <location line="+6" />
+        <source>the inclinometer axis is X (0) or Y (1)</source>
+        <translation>倾角仪轴为 X（0）或 Y（1）</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>inclinometer %1 %2</source>
+        <translation>倾角仪 %1 %2</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>reversed</source>
+        <translation>反向</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>default direction</source>
+        <translation>默认方向</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <location line="+6" />
+        <source>read back the inclinometer sign</source>
+        <translation>回读倾角仪正负方向</translation>
+    </message>
+    <message>
+        <location line="-4" />
+        <location line="+6" />
+        <source>set the inclinometer sign</source>
+        <translation>设置倾角仪正负方向</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>the inclinometer sign needs a HiPNUC J1939 or CANopen device</source>
+        <translation>倾角仪正负方向需要 HiPNUC J1939 或 CANopen 设备</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>the PDO mode is an HEC495 setting</source>
+        <translation>PDO 模式是 HEC495 的设置</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>the extended variant's PDO format is 0 (X) or 1 (X and Y)</source>
+        <translation>扩展帧方式的 PDO 格式为 0（X）或 1（X 和 Y）</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>the PDO mode is 0 (float), 1 (fixed point) or 3 (float, 0x180 and 0x280 only)</source>
+        <translation>PDO 模式为 0（浮点）、1（定点）或 3（浮点，仅 0x180 和 0x280）</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <source>the work mode is an HEC495 setting on standard frames</source>
+        <translation>工作模式是 HEC495 标准帧方式的设置</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>the work mode is 0x02 (pitch, roll, acceleration, rate) or 0x0A (rate at 500 Hz)</source>
+        <translation>工作模式为 0x02（俯仰、横滚、加速度、角速度）或 0x0A（以 500 Hz 输出角速度）</translation>
+    </message>
+    <message>
+        <location line="+9" />
+        <source>output on or off for every node needs CANopen or an HEC495 on standard frames (NMT)</source>
+        <translation>对所有节点开关输出需要 CANopen 或标准帧方式的 HEC495（NMT）</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>NMT start, every node</source>
+        <translation>NMT 启动，所有节点</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>NMT stop, every node</source>
+        <translation>NMT 停止，所有节点</translation>
+    </message>
+    <message>
+        <location line="+19" />
         <source>output on</source>
         <translation>开启输出</translation>
     </message>
@@ -6250,11 +6387,13 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <location line="+2" />
         <location line="+1" />
         <location line="+1" />
+        <location line="+3" />
+        <location line="+1" />
         <source>Apply</source>
         <translation>应用</translation>
     </message>
     <message>
-        <location line="-4" />
+        <location line="-8" />
         <source>SYNC mode (TPDO sent on each SYNC)</source>
         <translation>SYNC 模式（每收到一次 SYNC 发送一次 TPDO）</translation>
     </message>
@@ -6274,7 +6413,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>关闭输出</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+4" />
         <source>Save</source>
         <translation>保存</translation>
     </message>
@@ -6311,17 +6450,42 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>不周期发送 SYNC</translation>
     </message>
     <message>
-        <location line="+164" />
+        <location line="+206" />
         <source>%1 kbit/s</source>
         <translation>%1 kbit/s</translation>
     </message>
     <message>
-        <location line="-160" />
+        <location line="-202" />
         <source>Heading reset (J1939 1)</source>
         <translation>航向角复位（J1939 1）</translation>
     </message>
     <message>
+        <location line="-18" />
+        <source>Trigger once</source>
+        <translation>触发一次</translation>
+    </message>
+    <message>
         <location line="+1" />
+        <source>X reversed</source>
+        <translation>X 反向</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Y reversed</source>
+        <translation>Y 反向</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>All nodes on</source>
+        <translation>所有节点开</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>All nodes off</source>
+        <translation>所有节点关</translation>
+    </message>
+    <message>
+        <location line="+15" />
         <source>Set relative zero (2)</source>
         <translation>设置相对零位（2）</translation>
     </message>
@@ -6336,6 +6500,51 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>清除零位（5）</translation>
     </message>
     <message>
+        <location line="+1" />
+        <source>J1939 register 0x96: the module sends the chosen PGN once (no reply; the frame is the answer)</source>
+        <translation>J1939 寄存器 0x96：模块发送一次所选 PGN（无应答；数据帧即为回应）</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Inclinometer X axis direction: J1939 register 0x9E, CANopen object 0x209E (0 default, 1 reversed)</source>
+        <translation>倾角仪 X 轴正负方向：J1939 寄存器 0x9E，CANopen 对象 0x209E（0 默认，1 反向）</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Inclinometer Y axis direction: J1939 register 0x9F, CANopen object 0x209F (0 default, 1 reversed)</source>
+        <translation>倾角仪 Y 轴正负方向：J1939 寄存器 0x9F，CANopen 对象 0x209F（0 默认，1 反向）</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Pitch, roll, acceleration, rate (0x02)</source>
+        <translation>俯仰、横滚、加速度、角速度（0x02）</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Rate at 500 Hz (0x0A)</source>
+        <translation>500 Hz 角速度（0x0A）</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>HEC495 work mode, object 0x6245</source>
+        <translation>HEC495 工作模式，对象 0x6245</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>HEC495 PDO mode, object 0x1080</source>
+        <translation>HEC495 PDO 模式，对象 0x1080</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>NMT start to node 0: every node on the bus starts its PDOs (HEC495: not saved)</source>
+        <translation>向节点 0 发送 NMT 启动：总线上所有节点开始发送 PDO（HEC495：不保存）</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>NMT stop to node 0: every node on the bus stops its PDOs (HEC495: not saved)</source>
+        <translation>向节点 0 发送 NMT 停止：总线上所有节点停止发送 PDO（HEC495：不保存）</translation>
+    </message>
+    <message>
         <location line="+15" />
         <source>Protocol:</source>
         <translation>协议：</translation>
@@ -6346,7 +6555,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>输出周期：</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+3" />
         <source>SYNC:</source>
         <translation>SYNC：</translation>
     </message>
@@ -6372,8 +6581,23 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
     <message>
         <location line="+1" />
+        <source>Inclinometer:</source>
+        <translation>倾角仪：</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>HEC495 PDO:</source>
+        <translation>HEC495 PDO：</translation>
+    </message>
+    <message>
+        <location line="+1" />
         <source>Output:</source>
         <translation>输出：</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Every node:</source>
+        <translation>所有节点：</translation>
     </message>
     <message>
         <location line="+1" />
@@ -6422,6 +6646,41 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
     <message>
         <location line="+4" />
+        <source>trigger %1 once</source>
+        <translation>触发一次 %1</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>inclinometer X reversed</source>
+        <translation>倾角仪 X 反向</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>inclinometer X default</source>
+        <translation>倾角仪 X 默认</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>inclinometer Y reversed</source>
+        <translation>倾角仪 Y 反向</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>inclinometer Y default</source>
+        <translation>倾角仪 Y 默认</translation>
+    </message>
+    <message>
+        <location line="+11" />
+        <source>every node on</source>
+        <translation>所有节点开</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>every node off</source>
+        <translation>所有节点关</translation>
+    </message>
+    <message>
+        <location line="+4" />
         <source>save</source>
         <translation>保存</translation>
     </message>
@@ -6446,7 +6705,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>恢复出厂设置</translation>
     </message>
     <message>
-        <location line="+43" />
+        <location line="+45" />
         <source>Scan cancelled; nodes answering so far: %1</source>
         <translation>扫描已取消；目前有应答的节点：%1</translation>
     </message>
@@ -6492,7 +6751,32 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>PDO 关闭</translation>
     </message>
     <message>
-        <location line="+34" />
+        <location line="+28" />
+        <source>X message only (0)</source>
+        <translation>仅 X 报文（0）</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>X and Y messages (1)</source>
+        <translation>X 和 Y 报文（1）</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Float (0)</source>
+        <translation>浮点（0）</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Fixed point (1)</source>
+        <translation>定点（1）</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Float, 0x180 and 0x280 only (3)</source>
+        <translation>浮点，仅 0x180 和 0x280（3）</translation>
+    </message>
+    <message>
+        <location line="+24" />
         <source>%1 every %2 ms</source>
         <translation>%1，每 %2 ms</translation>
     </message>
@@ -6575,7 +6859,17 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>协议(&amp;R)：</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+1" />
+        <source>Extended frames (0x18FA…)</source>
+        <translation>扩展帧（0x18FA…）</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The HEC495's extended-frame variant: requests on 0x18FA0227, replies on 0x18FA0216, data on 0x18FA0316 and 0x18FA0416 (its manual, "CAN 扩展帧命令格式")</source>
+        <translation>HEC495 的扩展帧方式：请求 0x18FA0227，应答 0x18FA0216，数据 0x18FA0316 和 0x18FA0416（其手册“CAN 扩展帧命令格式”）</translation>
+    </message>
+    <message>
+        <location line="+5" />
         <source>First that sends</source>
         <translation>最先发送的节点</translation>
     </message>
@@ -7458,7 +7752,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::DeviceWorkspace</name>
     <message>
-        <location filename="../ui/workspace/device_workspace.cpp" line="+265" />
+        <location filename="../ui/workspace/device_workspace.cpp" line="+298" />
         <source>New connection</source>
         <translation>新连接</translation>
     </message>
@@ -7483,7 +7777,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>模拟 %1（固件 %2）</translation>
     </message>
     <message>
-        <location line="+177" />
+        <location line="+192" />
         <source>Not connected</source>
         <translation>未连接</translation>
     </message>
@@ -7611,11 +7905,16 @@ Link load = bytes per second × 10 bits / baud rate.</source>
     </message>
     <message>
         <location line="+1" />
+        <source>Details</source>
+        <translation>详情</translation>
+    </message>
+    <message>
+        <location line="+1" />
         <source>3D attitude</source>
         <translation>3D 姿态</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/device_workspace_layout.cpp" line="+115" />
+        <location filename="../ui/workspace/device_workspace_layout.cpp" line="+153" />
         <source>&amp;Monitor</source>
         <translation>监视(&amp;M)</translation>
     </message>
@@ -7635,7 +7934,7 @@ Link load = bytes per second × 10 bits / baud rate.</source>
         <translation>分析(&amp;N)</translation>
     </message>
     <message>
-        <location line="+151" />
+        <location line="+154" />
         <source>%1 was floating off the screen</source>
         <translation>%1 浮动在屏幕之外</translation>
     </message>
@@ -8598,7 +8897,17 @@ Method: %3</source>
 <context>
     <name>imudesk::ui::MagCalibrationWizard</name>
     <message>
-        <location filename="../ui/calibration/mag_calibration_wizard.cpp" line="+53" />
+        <location filename="../ui/calibration/mag_calibration_wizard.cpp" line="+37" />
+        <source>unknown</source>
+        <translation>未知</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>unbounded</source>
+        <translation>无界</translation>
+    </message>
+    <message>
+        <location line="+25" />
         <source>Magnetometer calibration</source>
         <translation>地磁校准</translation>
     </message>
@@ -8748,7 +9057,7 @@ If the module is mounted on a PCB, in a housing or on a robot, calibrate it toge
         <translation>未报告</translation>
     </message>
     <message>
-        <location line="+19" />
+        <location line="+22" />
         <source>So far: %1. %2</source>
         <translation>目前：%1。%2</translation>
     </message>
@@ -8771,6 +9080,11 @@ If the module is mounted on a PCB, in a housing or on a robot, calibrate it toge
         <location line="+4" />
         <source>&lt;tr&gt;&lt;td&gt;Fitted field&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1&lt;/b&gt;&lt;/td&gt;&lt;td&gt;µT&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Fit residual&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%2&lt;/b&gt;&lt;/td&gt;&lt;td&gt;µT RMS (%3 %)&lt;/td&gt;&lt;/tr&gt;</source>
         <translation>&lt;tr&gt;&lt;td&gt;拟合磁场&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1&lt;/b&gt;&lt;/td&gt;&lt;td&gt;µT&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;拟合残差&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%2&lt;/b&gt;&lt;/td&gt;&lt;td&gt;µT RMS（%3 %）&lt;/td&gt;&lt;/tr&gt;</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>&lt;tr&gt;&lt;td&gt;Predicted heading error&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1°&lt;/b&gt;&lt;/td&gt;&lt;td&gt;level (pass &amp;lt; %2°, refused &amp;gt; %3°)&lt;/td&gt;&lt;/tr&gt;</source>
+        <translation>&lt;tr&gt;&lt;td&gt;预测航向误差&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1°&lt;/b&gt;&lt;/td&gt;&lt;td&gt;水平放置（通过 &amp;lt; %2°，拒绝 &amp;gt; %3°）&lt;/td&gt;&lt;/tr&gt;</translation>
     </message>
     <message>
         <location line="+5" />
@@ -8826,7 +9140,33 @@ Residual RMS: %6 uT
 </translation>
     </message>
     <message>
-        <location line="+7" />
+        <location line="+10" />
+        <source>level module; pass below %1°, refused above %2°</source>
+        <translation>水平放置；低于 %1° 通过，高于 %2° 拒绝</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>level module; a warning above %1°</source>
+        <translation>水平放置；高于 %1° 给出警告</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Predicted heading error: %1° (%2)
+Hard-iron uncertainty: +-%3 uT
+Soft-iron uncertainty: +-%4 %
+</source>
+        <translation>预测航向误差：%1°（%2）
+硬磁不确定度：±%3 uT
+软磁不确定度：±%4 %
+</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>kept from before</source>
+        <translation>沿用之前的</translation>
+    </message>
+    <message>
+        <location line="+2" />
         <source>Coverage: %1 %
 Eigenvalue ratio: %2
 Samples: %3</source>
@@ -9039,7 +9379,7 @@ Samples: %3</source>
 <context>
     <name>imudesk::ui::ModbusConnectDialog</name>
     <message>
-        <location filename="../ui/bus/bus_connect_dialog.cpp" line="-121" />
+        <location filename="../ui/bus/bus_connect_dialog.cpp" line="-125" />
         <source>Connect over Modbus RTU</source>
         <translation>通过 Modbus RTU 连接</translation>
     </message>

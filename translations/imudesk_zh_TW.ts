@@ -58,7 +58,7 @@
 <context>
     <name>CalibrationReport</name>
     <message>
-        <location filename="../ui/calibration/calibration_report.cpp" line="+37" />
+        <location filename="../ui/calibration/calibration_report.cpp" line="+38" />
         <source>Fit</source>
         <translation>擬合方式</translation>
     </message>
@@ -91,6 +91,21 @@
         <location line="+1" />
         <source>Sphere coverage (%)</source>
         <translation>球面覆蓋率（%）</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Predicted heading error, level module (deg)</source>
+        <translation>預測航向誤差，水平放置 (deg)</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Hard-iron uncertainty, RMS (uT)</source>
+        <translation>硬磁不確定度，RMS (uT)</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Soft-iron uncertainty, RMS (%)</source>
+        <translation>軟磁不確定度，RMS (%)</translation>
     </message>
     <message>
         <location line="+1" />
@@ -278,7 +293,12 @@
         <translation>已採集有效點數</translation>
     </message>
     <message>
-        <location line="+6" />
+        <location line="+9" />
+        <source>unbounded</source>
+        <translation>無界</translation>
+    </message>
+    <message>
+        <location line="+2" />
         <source>yes</source>
         <translation>是</translation>
     </message>
@@ -298,7 +318,8 @@
         <translation>裝置</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="-119" />
+        <location line="+119" />
         <location line="+1" />
         <location line="+1" />
         <source>unknown</source>
@@ -976,7 +997,8 @@
         <location line="+11" />
         <source>%1 is a vendor CSV: %n row(s) read, times from its pc_counter column</source>
         <translation>
-            <numerusform>%1 是廠商 CSV：已讀取 %n 行，時間取自 pc_counter 欄</numerusform></translation>
+            <numerusform>%1 是廠商 CSV：已讀取 %n 行，時間取自 pc_counter 欄</numerusform>
+        </translation>
     </message>
     <message>
         <location line="+12" />
@@ -992,7 +1014,8 @@
         <location line="+4" />
         <source>The device clock restarted or jumped %n time(s); the times go on across each jump.</source>
         <translation>
-            <numerusform>裝置時鐘重啟或跳變了 %n 次；時間在每次跳變處連續延續。</numerusform></translation>
+            <numerusform>裝置時鐘重啟或跳變了 %n 次；時間在每次跳變處連續延續。</numerusform>
+        </translation>
     </message>
     <message>
         <location line="+17" />
@@ -2022,7 +2045,7 @@
         <translation>請先中斷連線，再連線到 Modbus 裝置。</translation>
     </message>
     <message>
-        <location line="+23" />
+        <location line="+26" />
         <source>The simulated CAN device could not start on %1:%2: %3</source>
         <translation>模擬 CAN 裝置無法在 %1:%2 上啟動：%3</translation>
     </message>
@@ -2203,22 +2226,29 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>樣本都位於同一平面（模組只繞一個軸轉動），無法計算完整的三維校準。請讓模組也繞其他軸轉動，或使用二維（平面）校準，但二維校準僅適用於水平使用。</translation>
     </message>
     <message>
-        <location line="+12" />
-        <source>Only %1 % of the field directions are covered (at least %2 % are needed, eigenvalue ratio %3, at most %4). %5. A full fit on this data would be unreliable.</source>
-        <translation>磁場方向僅覆蓋 %1 %（至少需要 %2 %；特徵值比 %3，最大 %4）。%5。用這些資料進行完整擬合並不可靠。</translation>
+        <location line="+13" />
+        <source>Only %1 % of the field directions are covered (at least %2 % are needed before a fit is tried). %3.</source>
+        <translation>僅覆蓋了 %1 % 的磁場方向（嘗試擬合前至少需要 %2 %）。%3。</translation>
     </message>
     <message>
-        <location line="+8" />
+        <location line="+6" />
+        <location line="+9" />
+        <location line="+208" />
         <source>A hard-iron-only fit (soft iron kept from before) is possible.</source>
         <translation>可以只擬合硬鐵（保留先前的軟鐵參數）。</translation>
     </message>
     <message>
-        <location line="+6" />
+        <location line="-211" />
+        <source>No ellipsoid fits these samples, which cover only part of the sphere. %1, then fit again.</source>
+        <translation>這些樣本只覆蓋了球面的一部分，沒有橢球能擬合它們。%1，然後重新擬合。</translation>
+    </message>
+    <message>
+        <location line="+8" />
         <source>The samples do not describe an ellipsoid (strong interference or a moving magnet nearby). Move away from iron and electronics and calibrate again.</source>
         <translation>樣本無法構成橢球（附近有強干擾或移動的磁鐵）。請遠離鐵件和電子裝置後重新校準。</translation>
     </message>
     <message>
-        <location line="+27" />
+        <location line="+25" />
         <source>Only %1 usable samples; the hard-iron fit needs at least %2.</source>
         <translation>僅有 %1 個可用樣本；硬鐵擬合至少需要 %2 個。</translation>
     </message>
@@ -2233,7 +2263,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>硬鐵擬合無解：請確認樣本來自磁力計且單位為 uT。</translation>
     </message>
     <message>
-        <location line="+18" />
+        <location line="+21" />
         <source>Only %1 usable samples; the 2-D fit needs at least %2. Turn the module a full circle.</source>
         <translation>僅有 %1 個可用樣本；二維擬合至少需要 %2 個。請將模組轉動一整圈。</translation>
     </message>
@@ -2243,7 +2273,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>水平樣本無法構成橢圓：請將模組均勻轉動一整圈。</translation>
     </message>
     <message>
-        <location line="+41" />
+        <location line="+46" />
         <location line="+17" />
         <source>fit error %1 % is above %2 %</source>
         <translation>擬合誤差 %1 % 高於 %2 %</translation>
@@ -2259,7 +2289,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>磁場強度 %1 uT 不是地磁場（%2..%3 uT）</translation>
     </message>
     <message>
-        <location line="+7" />
+        <location line="+9" />
+        <source>the predicted heading error of a level module, %1 deg, is above %2 deg (hard iron +-%3 uT)</source>
+        <translation>水平放置時的預測航向誤差 %1 deg 高於 %2 deg（硬磁 ±%3 uT）</translation>
+    </message>
+    <message>
+        <location line="+6" />
         <source>only %1 % of the directions are covered</source>
         <translation>方向僅覆蓋 %1 %</translation>
     </message>
@@ -2294,17 +2329,42 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>二維校準：僅適用於水平使用</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+8" />
         <source>Calibration failed: %1.</source>
         <translation>校準失敗：%1。</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+6" />
+        <source>The data cannot give an accurate calibration: the predicted heading error of a level module is %1 deg, at most %2 deg is accepted (hard iron +-%3 uT, soft iron +-%4 %).</source>
+        <translation>這些資料無法給出準確的校準：水平放置時的預測航向誤差為 %1 deg，最多接受 %2 deg（硬磁 ±%3 uT，軟磁 ±%4 %）。</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>The data cannot give an accurate calibration: the fit's parameters are not determined by these samples.</source>
+        <translation>這些資料無法給出準確的校準：這些樣本確定不了擬合參數。</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Part of the sphere is missing (a gap of %1 deg). %2, then fit again.</source>
+        <translation>球面缺少一部分（空缺 %1 deg）。%2，然後重新擬合。</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>The directions are covered, but there are too few samples or they scatter too much (%1 uT RMS about the fit): collect more, turning slowly and evenly, away from iron and electronics.</source>
+        <translation>方向已覆蓋，但樣本太少或離散太大（相對擬合 %1 uT RMS）：請遠離鐵磁物體和電子裝置，緩慢均勻地轉動，採集更多樣本。</translation>
+    </message>
+    <message>
+        <location line="+8" />
         <source>Usable with care: %1.</source>
         <translation>可謹慎使用：%1。</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+5" />
+        <source>Good calibration: predicted heading error %1 deg (level module), fit error %2 %, %3 % of the directions covered.</source>
+        <translation>校準良好：預測航向誤差 %1 deg（水平放置），擬合誤差 %2 %，覆蓋了 %3 % 的方向。</translation>
+    </message>
+    <message>
+        <location line="+5" />
         <source>Good calibration: fit error %1 %, %2 % of the directions covered.</source>
         <translation>校準良好：擬合誤差 %1 %，方向覆蓋 %2 %。</translation>
     </message>
@@ -3788,7 +3848,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::device::CanFamily</name>
     <message>
-        <location filename="../core/device/can_family.cpp" line="+96" />
+        <location filename="../core/device/can_family.cpp" line="+102" />
         <source>connected to %1</source>
         <translation>已連線到 %1</translation>
     </message>
@@ -3996,12 +4056,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <location line="+3" />
         <location line="+66" />
         <location line="+30" />
-        <location line="+44" />
+        <location line="+112" />
         <source>the protocol is not known yet: choose it or wait for traffic</source>
         <translation>尚未得知協定：請選擇協定或等待匯流排上的資料</translation>
     </message>
     <message>
-        <location line="-134" />
+        <location line="-202" />
         <source>the HEC495 rate code is 0 (off) to 6 (100 Hz)</source>
         <translation>HEC495 頻率代碼為 0（關閉）到 6（100 Hz）</translation>
     </message>
@@ -4073,12 +4133,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
     <message>
         <location line="+3" />
         <location line="+8" />
-        <location line="+103" />
+        <location line="+171" />
         <source>reset</source>
         <translation>重設</translation>
     </message>
     <message>
-        <location line="-110" />
+        <location line="-178" />
         <location line="+5" />
         <location line="+8" />
         <source>set the node ID</source>
@@ -4165,7 +4225,84 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>姿態重設需要 HiPNUC J1939 或 CANopen 裝置</translation>
     </message>
     <message>
-        <location line="+7" />
+        <location line="+6" />
+        <source>the inclinometer axis is X (0) or Y (1)</source>
+        <translation>傾角儀軸為 X（0）或 Y（1）</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>inclinometer %1 %2</source>
+        <translation>傾角儀 %1 %2</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>reversed</source>
+        <translation>反向</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>default direction</source>
+        <translation>預設方向</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <location line="+6" />
+        <source>read back the inclinometer sign</source>
+        <translation>回讀傾角儀正負方向</translation>
+    </message>
+    <message>
+        <location line="-4" />
+        <location line="+6" />
+        <source>set the inclinometer sign</source>
+        <translation>設定傾角儀正負方向</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>the inclinometer sign needs a HiPNUC J1939 or CANopen device</source>
+        <translation>傾角儀正負方向需要 HiPNUC J1939 或 CANopen 裝置</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>the PDO mode is an HEC495 setting</source>
+        <translation>PDO 模式是 HEC495 的設定</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>the extended variant's PDO format is 0 (X) or 1 (X and Y)</source>
+        <translation>擴展幀方式的 PDO 格式為 0（X）或 1（X 和 Y）</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>the PDO mode is 0 (float), 1 (fixed point) or 3 (float, 0x180 and 0x280 only)</source>
+        <translation>PDO 模式為 0（浮點）、1（定點）或 3（浮點，僅 0x180 和 0x280）</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <source>the work mode is an HEC495 setting on standard frames</source>
+        <translation>工作模式是 HEC495 標準幀方式的設定</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>the work mode is 0x02 (pitch, roll, acceleration, rate) or 0x0A (rate at 500 Hz)</source>
+        <translation>工作模式為 0x02（俯仰、橫滾、加速度、角速度）或 0x0A（以 500 Hz 輸出角速度）</translation>
+    </message>
+    <message>
+        <location line="+9" />
+        <source>output on or off for every node needs CANopen or an HEC495 on standard frames (NMT)</source>
+        <translation>對所有節點開關輸出需要 CANopen 或標準幀方式的 HEC495（NMT）</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>NMT start, every node</source>
+        <translation>NMT 啟動，所有節點</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>NMT stop, every node</source>
+        <translation>NMT 停止，所有節點</translation>
+    </message>
+    <message>
+        <location line="+19" />
         <source>output on</source>
         <translation>開啟輸出</translation>
     </message>
@@ -6250,11 +6387,13 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <location line="+2" />
         <location line="+1" />
         <location line="+1" />
+        <location line="+3" />
+        <location line="+1" />
         <source>Apply</source>
         <translation>套用</translation>
     </message>
     <message>
-        <location line="-4" />
+        <location line="-8" />
         <source>SYNC mode (TPDO sent on each SYNC)</source>
         <translation>SYNC 模式（每次收到 SYNC 時傳送 TPDO）</translation>
     </message>
@@ -6274,7 +6413,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>關閉輸出</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+4" />
         <source>Save</source>
         <translation>儲存</translation>
     </message>
@@ -6311,17 +6450,42 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>週期 SYNC 關閉</translation>
     </message>
     <message>
-        <location line="+164" />
+        <location line="+206" />
         <source>%1 kbit/s</source>
         <translation>%1 kbit/s</translation>
     </message>
     <message>
-        <location line="-160" />
+        <location line="-202" />
         <source>Heading reset (J1939 1)</source>
         <translation>航向角重設（J1939 1）</translation>
     </message>
     <message>
+        <location line="-18" />
+        <source>Trigger once</source>
+        <translation>觸發一次</translation>
+    </message>
+    <message>
         <location line="+1" />
+        <source>X reversed</source>
+        <translation>X 反向</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Y reversed</source>
+        <translation>Y 反向</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>All nodes on</source>
+        <translation>所有節點開</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>All nodes off</source>
+        <translation>所有節點關</translation>
+    </message>
+    <message>
+        <location line="+15" />
         <source>Set relative zero (2)</source>
         <translation>設定相對零點（2）</translation>
     </message>
@@ -6336,6 +6500,51 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>清除零點（5）</translation>
     </message>
     <message>
+        <location line="+1" />
+        <source>J1939 register 0x96: the module sends the chosen PGN once (no reply; the frame is the answer)</source>
+        <translation>J1939 暫存器 0x96：模組傳送一次所選 PGN（無應答；資料幀即為回應）</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Inclinometer X axis direction: J1939 register 0x9E, CANopen object 0x209E (0 default, 1 reversed)</source>
+        <translation>傾角儀 X 軸正負方向：J1939 暫存器 0x9E，CANopen 物件 0x209E（0 預設，1 反向）</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Inclinometer Y axis direction: J1939 register 0x9F, CANopen object 0x209F (0 default, 1 reversed)</source>
+        <translation>傾角儀 Y 軸正負方向：J1939 暫存器 0x9F，CANopen 物件 0x209F（0 預設，1 反向）</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Pitch, roll, acceleration, rate (0x02)</source>
+        <translation>俯仰、橫滾、加速度、角速度（0x02）</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Rate at 500 Hz (0x0A)</source>
+        <translation>500 Hz 角速度（0x0A）</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>HEC495 work mode, object 0x6245</source>
+        <translation>HEC495 工作模式，物件 0x6245</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>HEC495 PDO mode, object 0x1080</source>
+        <translation>HEC495 PDO 模式，物件 0x1080</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>NMT start to node 0: every node on the bus starts its PDOs (HEC495: not saved)</source>
+        <translation>向節點 0 傳送 NMT 啟動：總線上所有節點開始傳送 PDO（HEC495：不儲存）</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>NMT stop to node 0: every node on the bus stops its PDOs (HEC495: not saved)</source>
+        <translation>向節點 0 傳送 NMT 停止：總線上所有節點停止傳送 PDO（HEC495：不儲存）</translation>
+    </message>
+    <message>
         <location line="+15" />
         <source>Protocol:</source>
         <translation>協定：</translation>
@@ -6346,7 +6555,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>輸出週期：</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+3" />
         <source>SYNC:</source>
         <translation>SYNC：</translation>
     </message>
@@ -6372,8 +6581,23 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
     <message>
         <location line="+1" />
+        <source>Inclinometer:</source>
+        <translation>傾角儀：</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>HEC495 PDO:</source>
+        <translation>HEC495 PDO：</translation>
+    </message>
+    <message>
+        <location line="+1" />
         <source>Output:</source>
         <translation>輸出：</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Every node:</source>
+        <translation>所有節點：</translation>
     </message>
     <message>
         <location line="+1" />
@@ -6422,6 +6646,41 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
     <message>
         <location line="+4" />
+        <source>trigger %1 once</source>
+        <translation>觸發一次 %1</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>inclinometer X reversed</source>
+        <translation>傾角儀 X 反向</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>inclinometer X default</source>
+        <translation>傾角儀 X 預設</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>inclinometer Y reversed</source>
+        <translation>傾角儀 Y 反向</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>inclinometer Y default</source>
+        <translation>傾角儀 Y 預設</translation>
+    </message>
+    <message>
+        <location line="+11" />
+        <source>every node on</source>
+        <translation>所有節點開</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>every node off</source>
+        <translation>所有節點關</translation>
+    </message>
+    <message>
+        <location line="+4" />
         <source>save</source>
         <translation>儲存</translation>
     </message>
@@ -6446,7 +6705,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>恢復出廠設定</translation>
     </message>
     <message>
-        <location line="+43" />
+        <location line="+45" />
         <source>Scan cancelled; nodes answering so far: %1</source>
         <translation>掃描已取消；目前已回應的節點：%1</translation>
     </message>
@@ -6492,7 +6751,32 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>PDO 關閉</translation>
     </message>
     <message>
-        <location line="+34" />
+        <location line="+28" />
+        <source>X message only (0)</source>
+        <translation>僅 X 報文（0）</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>X and Y messages (1)</source>
+        <translation>X 和 Y 報文（1）</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Float (0)</source>
+        <translation>浮點（0）</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Fixed point (1)</source>
+        <translation>定點（1）</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Float, 0x180 and 0x280 only (3)</source>
+        <translation>浮點，僅 0x180 和 0x280（3）</translation>
+    </message>
+    <message>
+        <location line="+24" />
         <source>%1 every %2 ms</source>
         <translation>%1，每 %2 ms</translation>
     </message>
@@ -6575,7 +6859,17 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>協定(&amp;R)：</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+1" />
+        <source>Extended frames (0x18FA…)</source>
+        <translation>擴展幀（0x18FA…）</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The HEC495's extended-frame variant: requests on 0x18FA0227, replies on 0x18FA0216, data on 0x18FA0316 and 0x18FA0416 (its manual, "CAN 扩展帧命令格式")</source>
+        <translation>HEC495 的擴展幀方式：請求 0x18FA0227，應答 0x18FA0216，資料 0x18FA0316 和 0x18FA0416（其手冊“CAN 扩展帧命令格式”）</translation>
+    </message>
+    <message>
+        <location line="+5" />
         <source>First that sends</source>
         <translation>第一個傳送的節點</translation>
     </message>
@@ -7458,7 +7752,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::DeviceWorkspace</name>
     <message>
-        <location filename="../ui/workspace/device_workspace.cpp" line="+265" />
+        <location filename="../ui/workspace/device_workspace.cpp" line="+298" />
         <source>New connection</source>
         <translation>新連線</translation>
     </message>
@@ -7483,7 +7777,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>模擬 %1（韌體 %2）</translation>
     </message>
     <message>
-        <location line="+177" />
+        <location line="+192" />
         <source>Not connected</source>
         <translation>未連線</translation>
     </message>
@@ -7611,11 +7905,16 @@ Link load = bytes per second × 10 bits / baud rate.</source>
     </message>
     <message>
         <location line="+1" />
+        <source>Details</source>
+        <translation>詳情</translation>
+    </message>
+    <message>
+        <location line="+1" />
         <source>3D attitude</source>
         <translation>3D 姿態</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/device_workspace_layout.cpp" line="+115" />
+        <location filename="../ui/workspace/device_workspace_layout.cpp" line="+153" />
         <source>&amp;Monitor</source>
         <translation>監看(&amp;M)</translation>
     </message>
@@ -7635,7 +7934,7 @@ Link load = bytes per second × 10 bits / baud rate.</source>
         <translation>分析(&amp;N)</translation>
     </message>
     <message>
-        <location line="+151" />
+        <location line="+154" />
         <source>%1 was floating off the screen</source>
         <translation>%1 浮動在螢幕之外</translation>
     </message>
@@ -8598,7 +8897,17 @@ Method: %3</source>
 <context>
     <name>imudesk::ui::MagCalibrationWizard</name>
     <message>
-        <location filename="../ui/calibration/mag_calibration_wizard.cpp" line="+53" />
+        <location filename="../ui/calibration/mag_calibration_wizard.cpp" line="+37" />
+        <source>unknown</source>
+        <translation>未知</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>unbounded</source>
+        <translation>無界</translation>
+    </message>
+    <message>
+        <location line="+25" />
         <source>Magnetometer calibration</source>
         <translation>地磁校準</translation>
     </message>
@@ -8748,7 +9057,7 @@ If the module is mounted on a PCB, in a housing or on a robot, calibrate it toge
         <translation>未回報</translation>
     </message>
     <message>
-        <location line="+19" />
+        <location line="+22" />
         <source>So far: %1. %2</source>
         <translation>目前：%1。%2</translation>
     </message>
@@ -8771,6 +9080,11 @@ If the module is mounted on a PCB, in a housing or on a robot, calibrate it toge
         <location line="+4" />
         <source>&lt;tr&gt;&lt;td&gt;Fitted field&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1&lt;/b&gt;&lt;/td&gt;&lt;td&gt;µT&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Fit residual&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%2&lt;/b&gt;&lt;/td&gt;&lt;td&gt;µT RMS (%3 %)&lt;/td&gt;&lt;/tr&gt;</source>
         <translation>&lt;tr&gt;&lt;td&gt;擬合磁場&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1&lt;/b&gt;&lt;/td&gt;&lt;td&gt;µT&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;擬合殘差&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%2&lt;/b&gt;&lt;/td&gt;&lt;td&gt;µT RMS（%3 %）&lt;/td&gt;&lt;/tr&gt;</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>&lt;tr&gt;&lt;td&gt;Predicted heading error&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1°&lt;/b&gt;&lt;/td&gt;&lt;td&gt;level (pass &amp;lt; %2°, refused &amp;gt; %3°)&lt;/td&gt;&lt;/tr&gt;</source>
+        <translation>&lt;tr&gt;&lt;td&gt;預測航向誤差&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1°&lt;/b&gt;&lt;/td&gt;&lt;td&gt;水平放置（通過 &amp;lt; %2°，拒絕 &amp;gt; %3°）&lt;/td&gt;&lt;/tr&gt;</translation>
     </message>
     <message>
         <location line="+5" />
@@ -8826,7 +9140,33 @@ Residual RMS: %6 uT
 </translation>
     </message>
     <message>
-        <location line="+7" />
+        <location line="+10" />
+        <source>level module; pass below %1°, refused above %2°</source>
+        <translation>水平放置；低於 %1° 通過，高於 %2° 拒絕</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>level module; a warning above %1°</source>
+        <translation>水平放置；高於 %1° 給出警告</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Predicted heading error: %1° (%2)
+Hard-iron uncertainty: +-%3 uT
+Soft-iron uncertainty: +-%4 %
+</source>
+        <translation>預測航向誤差：%1°（%2）
+硬磁不確定度：±%3 uT
+軟磁不確定度：±%4 %
+</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>kept from before</source>
+        <translation>沿用之前的</translation>
+    </message>
+    <message>
+        <location line="+2" />
         <source>Coverage: %1 %
 Eigenvalue ratio: %2
 Samples: %3</source>
@@ -9039,7 +9379,7 @@ Samples: %3</source>
 <context>
     <name>imudesk::ui::ModbusConnectDialog</name>
     <message>
-        <location filename="../ui/bus/bus_connect_dialog.cpp" line="-121" />
+        <location filename="../ui/bus/bus_connect_dialog.cpp" line="-125" />
         <source>Connect over Modbus RTU</source>
         <translation>透過 Modbus RTU 連線</translation>
     </message>

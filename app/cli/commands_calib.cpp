@@ -6,6 +6,8 @@
 #include <QFile>
 #include <QJsonDocument>
 
+#include <cmath>
+
 namespace imudesk::cli {
 
 namespace {
@@ -22,9 +24,15 @@ int cmdMagcal(const QStringList &args)
     p.addOption(QCommandLineOption(QStringLiteral("field"),
                                    QStringLiteral("Expected |B| in uT (world magnetic model); hard_iron_only holds it."),
                                    QStringLiteral("UT")));
+    p.addOption(QCommandLineOption(QStringLiteral("inclination"),
+                                   QStringLiteral("Field inclination in degrees (world magnetic model) for the predicted "
+                                                  "heading error; default %1.")
+                                       .arg(calib::MagFitUncertainty::kDefaultInclinationDeg),
+                                   QStringLiteral("DEG")));
     p.addPositionalArgument(QStringLiteral("FILE"),
                             QStringLiteral("CSV with a header row and the columns mag_x,mag_y,mag_z (uT)."));
-    if (!parseArgs(p, args, QStringLiteral("imudesk-cli magcal FILE [--json] [--mode full|hard_iron_only|planar] [--field UT]")))
+    if (!parseArgs(p, args, QStringLiteral("imudesk-cli magcal FILE [--json] [--mode full|hard_iron_only|planar] [--field UT] "
+                                                 "[--inclination DEG]")))
         return ExitUsage;
     if (p.positionalArguments().size() != 1)
         return fail(QStringLiteral("magcal needs exactly one FILE"), ExitUsage);
@@ -38,6 +46,14 @@ int cmdMagcal(const QStringList &args)
         options.referenceFieldUt = p.value(QStringLiteral("field")).toDouble(&ok);
         if (!ok || !(options.referenceFieldUt > 0) || options.referenceFieldUt > 1000)
             return fail(QStringLiteral("--field needs |B| in uT (0..1000), got '%1'").arg(p.value(QStringLiteral("field"))),
+                        ExitUsage);
+    }
+    if (p.isSet(QStringLiteral("inclination"))) {
+        bool ok = false;
+        options.inclinationDeg = p.value(QStringLiteral("inclination")).toDouble(&ok);
+        // At +-90 deg there is no horizontal field and no heading.
+        if (!ok || !(std::fabs(options.inclinationDeg) <= 85))
+            return fail(QStringLiteral("--inclination needs degrees in -85..85, got '%1'").arg(p.value(QStringLiteral("inclination"))),
                         ExitUsage);
     }
 
@@ -73,6 +89,14 @@ int cmdMagcal(const QStringList &args)
             out(QStringLiteral("fit_error_pct\t%1").arg(r.fitErrorPct, 0, 'f', 3));
             out(QStringLiteral("residual_rms_ut\t%1").arg(r.residualRmsUt, 0, 'f', 3));
         }
+        // The accuracy the data can give; "unknown" when the fit did not get that far.
+        auto figure = [](double v, int decimals) {
+            return std::isfinite(v) ? QString::number(v, 'f', decimals)
+                                    : std::isinf(v) ? QStringLiteral("unbounded") : QStringLiteral("unknown");
+        };
+        out(QStringLiteral("hard_iron_sigma_ut\t%1").arg(figure(r.hardIronSigmaUt, 3)));
+        out(QStringLiteral("soft_iron_sigma_pct\t%1").arg(figure(r.softIronSigmaPct, 3)));
+        out(QStringLiteral("predicted_heading_error_deg\t%1").arg(figure(r.predictedHeadingErrorDeg, 3)));
         out(QStringLiteral("coverage_pct\t%1").arg(r.coveragePct, 0, 'f', 1));
         out(QStringLiteral("eigen_ratio\t%1").arg(r.eigenRatio, 0, 'f', 2));
     }

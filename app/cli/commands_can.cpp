@@ -21,13 +21,17 @@ using protocol::can::CanProtocol;
 namespace {
 
 const char *kUsage = "imudesk-cli can [--plugin P] [--interface I] [--bitrate B] [--protocol auto|j1939|canopen|hec495] "
-                     "[--node N] [--json] list|scan|read|reg|sdo|sync ...\n"
+                     "[--node N] [--json] list|scan|read|reg|sdo|sync|set|output ...\n"
                      "  list                                 plugins and their interfaces\n"
                      "  scan [--duration S] [--active]       nodes heard (and, with --active, an SDO scan of 1..127)\n"
                      "  read [--duration S]                  decoded samples\n"
                      "  reg read ADDR | reg write ADDR VALUE J1939 configuration register\n"
                      "  sdo read INDEX SUB | sdo write INDEX SUB VALUE [--size 1..4]\n"
-                     "  sync [PGN] [--count N] [--interval MS]  CANopen SYNC frames, or a J1939 one-shot PGN trigger";
+                     "  sync [PGN] [--count N] [--interval MS]  CANopen SYNC frames, or a J1939 one-shot PGN trigger\n"
+                     "  set incl-sign-x|incl-sign-y 0|1      inclinometer axis direction (J1939 0x9E/0x9F, CANopen 0x209E/0x209F)\n"
+                     "  set pdo-mode 0|1|3 | set work-mode 0x02|0x0A   HEC495 objects 0x1080 and 0x6245\n"
+                     "  output on|off [--all]                the node's output (--all: NMT to every node)\n"
+                     "  --extended                           HEC495: the extended-frame variant (0x18FA....)";
 
 // Qt's CAN plugins log their connection chatter at info level; the CLI's stderr is for errors.
 void quietCanLogging()
@@ -141,7 +145,10 @@ int cmdCan(const QStringList &args)
     p.addOption(QCommandLineOption(QStringLiteral("interval"), QStringLiteral("sync: ms between frames (default 10)."),
                                    QStringLiteral("MS"), QStringLiteral("10")));
     p.addOption(QCommandLineOption(QStringLiteral("json"), QStringLiteral("JSON Lines output.")));
-    p.addPositionalArgument(QStringLiteral("SUBCOMMAND"), QStringLiteral("list, scan, read, reg, sdo or sync"));
+    p.addOption(QCommandLineOption(QStringLiteral("all"), QStringLiteral("output: NMT start/stop to every node (node 0).")));
+    p.addOption(QCommandLineOption(QStringLiteral("extended"),
+                                   QStringLiteral("HEC495: the extended-frame variant (requests on 0x18FA0227).")));
+    p.addPositionalArgument(QStringLiteral("SUBCOMMAND"), QStringLiteral("list, scan, read, reg, sdo, sync, set or output"));
     if (!parseArgs(p, args, QString::fromLatin1(kUsage)))
         return ExitUsage;
     const QStringList pos = p.positionalArguments();
@@ -159,6 +166,9 @@ int cmdCan(const QStringList &args)
     if (!proto)
         return fail(QStringLiteral("--protocol must be auto, j1939, canopen or hec495"), ExitUsage);
     o.protocol = *proto;
+    o.hec495Extended = p.isSet(QStringLiteral("extended"));
+    if (o.hec495Extended && o.protocol != CanProtocol::Hec495)
+        return fail(QStringLiteral("--extended is the HEC495's variant: give --protocol hec495 too"), ExitUsage);
     uint32_t n = 0;
     if (p.isSet(QStringLiteral("bitrate"))) {
         if (!parseNumber(p.value(QStringLiteral("bitrate")), &n) || n == 0)
@@ -178,7 +188,10 @@ int cmdCan(const QStringList &args)
             return fail(QStringLiteral("--duration needs a positive number of seconds"), ExitUsage);
     }
     // Requests need a known protocol: without --protocol, listen until traffic shows it.
-    const bool needsProtocol = sub == QLatin1String("reg") || sub == QLatin1String("sdo") || sub == QLatin1String("sync");
+    const bool needsProtocol = sub == QLatin1String("reg") || sub == QLatin1String("sdo") || sub == QLatin1String("sync")
+                            || sub == QLatin1String("set") || sub == QLatin1String("output");
+    if (needsProtocol && o.protocol == CanProtocol::Auto && (sub == QLatin1String("set") || sub == QLatin1String("output")))
+        return fail(QStringLiteral("'%1' needs --protocol j1939, canopen or hec495").arg(sub), ExitUsage);
     if (sub == QLatin1String("reg") && o.protocol == CanProtocol::Auto)
         o.protocol = CanProtocol::J1939;
     if (sub == QLatin1String("sdo") && o.protocol == CanProtocol::Auto)
@@ -290,6 +303,32 @@ int cmdCan(const QStringList &args)
         else
             out(QStringLiteral("%1 sent: %2, frames received meanwhile: %3").arg(trigger ? QStringLiteral("triggers") : QStringLiteral("SYNC")).arg(sent).arg(received));
         return interrupted() ? ExitInterrupted : ExitOk;
+    }
+    if (sub == QLatin1String("set")) {
+        uint32_t value = 0;
+        if (pos.size() != 3 || !parseNumber(pos[2], &value))
+            return fail(QStringLiteral("usage: can set NAME VALUE (incl-sign-x, incl-sign-y, pdo-mode, work-mode)"), ExitUsage);
+        const QString name = pos[1];
+        if (name == QLatin1String("incl-sign-x") || name == QLatin1String("incl-sign-y")) {
+            if (value > 1)
+                return fail(QStringLiteral("%1 is 0 (default) or 1 (reversed)").arg(name), ExitUsage);
+            return runRequest(session, session.setInclinometerSign(name.endsWith(QLatin1Char('x')) ? 0 : 1, value == 1),
+                              json, name);
+        }
+        if (name == QLatin1String("pdo-mode"))
+            return runRequest(session, session.setHec495PdoMode(int(value)), json, name);
+        if (name == QLatin1String("work-mode"))
+            return runRequest(session, session.setHec495WorkMode(int(value)), json, name);
+        return fail(QStringLiteral("unknown setting '%1': incl-sign-x, incl-sign-y, pdo-mode or work-mode").arg(name),
+                    ExitUsage);
+    }
+    if (sub == QLatin1String("output")) {
+        if (pos.size() != 2 || (pos[1] != QLatin1String("on") && pos[1] != QLatin1String("off")))
+            return fail(QStringLiteral("usage: can output on|off [--all]"), ExitUsage);
+        const bool on = pos[1] == QLatin1String("on");
+        const bool all = p.isSet(QStringLiteral("all"));
+        return runRequest(session, all ? session.setAllNodesOutput(on) : session.setOutputEnabled(on), json,
+                          QStringLiteral("output %1%2").arg(pos[1], all ? QStringLiteral(", every node") : QString()));
     }
     return fail(QStringLiteral("unknown can subcommand '%1' (usage: %2)").arg(sub, QString::fromLatin1(kUsage)), ExitUsage);
 }

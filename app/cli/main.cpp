@@ -45,7 +45,7 @@ void usage(FILE *to)
                "         content C|address N|save|reset|calibrate METHOD   talk to a Witlink HEC495 compass\n"
                "  simulate --can virtualcan:can0 --protocol j1939|canopen [--device hipnuc|hec495] [--node N]\n"
                "                                         serve a simulated CAN device\n"
-               "  can [--plugin P] [--interface I] [--bitrate B] list|scan|read|reg|sdo|sync [--json]\n"
+               "  can [--plugin P] [--interface I] [--bitrate B] list|scan|read|reg|sdo|sync|set|output [--json]\n"
                "                                         CAN devices (J1939, CANopen, HEC495)\n"
                "Run 'imudesk-cli COMMAND --help' for a command's options.\n",
                to);

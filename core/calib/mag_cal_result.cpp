@@ -2,7 +2,27 @@
 
 #include <QJsonArray>
 
+#include <cmath>
+
 namespace imudesk::calib {
+
+namespace {
+
+// A figure that may be unknown (NaN) or unbounded (inf): JSON null for unknown, a large
+// finite number for unbounded (JSON has no infinity).
+QJsonValue figure(double v)
+{
+    if (std::isnan(v))
+        return QJsonValue(QJsonValue::Null);
+    return std::isinf(v) ? QJsonValue(v > 0 ? 1e12 : -1e12) : QJsonValue(v);
+}
+
+double figureFrom(const QJsonValue &v)
+{
+    return v.isDouble() ? v.toDouble() : std::numeric_limits<double>::quiet_NaN();
+}
+
+} // namespace
 
 const char *modeName(MagCalMode m)
 {
@@ -77,6 +97,9 @@ QJsonObject MagCalResult::toJson() const
     o.insert(QStringLiteral("hard_iron_only_offered"), hardIronOnlyOffered);
     o.insert(QStringLiteral("planar_offered"), planarOffered);
     o.insert(QStringLiteral("z_offset_known"), zOffsetKnown);
+    o.insert(QStringLiteral("hard_iron_sigma_ut"), figure(hardIronSigmaUt));
+    o.insert(QStringLiteral("soft_iron_sigma_pct"), figure(softIronSigmaPct));
+    o.insert(QStringLiteral("predicted_heading_error_deg"), figure(predictedHeadingErrorDeg));
     return o;
 }
 
@@ -109,6 +132,10 @@ bool MagCalResult::fromJson(const QJsonObject &o, MagCalResult &out)
     r.hardIronOnlyOffered = o.value(QStringLiteral("hard_iron_only_offered")).toBool();
     r.planarOffered = o.value(QStringLiteral("planar_offered")).toBool();
     r.zOffsetKnown = o.value(QStringLiteral("z_offset_known")).toBool(true);
+    // Absent in results written before the accuracy was estimated: unknown.
+    r.hardIronSigmaUt = figureFrom(o.value(QStringLiteral("hard_iron_sigma_ut")));
+    r.softIronSigmaPct = figureFrom(o.value(QStringLiteral("soft_iron_sigma_pct")));
+    r.predictedHeadingErrorDeg = figureFrom(o.value(QStringLiteral("predicted_heading_error_deg")));
     out = r;
     return true;
 }

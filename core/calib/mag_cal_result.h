@@ -7,6 +7,8 @@
 #include <QJsonObject>
 #include <QString>
 
+#include <limits>
+
 namespace imudesk::calib {
 
 enum class MagCalMode { Full3D, HardIronOnly, Planar2D };
@@ -37,6 +39,11 @@ public:
     int samples = 0;             // samples given
     int outliers = 0;            // samples the robust fit set aside
     bool zOffsetKnown = true;    // 2-D: false when no vertical reference was given
+    // The accuracy the data can give (MagFitUncertainty), NaN when unknown: not fitted, or a
+    // result written before these were computed. JSON null.
+    double hardIronSigmaUt = std::numeric_limits<double>::quiet_NaN();     // RMS of |b^ - b|, uT
+    double softIronSigmaPct = std::numeric_limits<double>::quiet_NaN();    // RMS soft-iron shape error, %
+    double predictedHeadingErrorDeg = std::numeric_limits<double>::quiet_NaN(); // level module, deg
 
     bool usable() const { return verdict == MagVerdict::Pass || verdict == MagVerdict::Warn; }
     Eigen::Vector3d correct(const Eigen::Vector3d &m) const { return softIron * (m - hardIron); }

@@ -2,6 +2,7 @@
 
 #include "calib/ellipse_fit.h"
 #include "calib/ellipsoid_fit.h"
+#include "calib/mag_fit_uncertainty.h"
 #include "calib/sphere_coverage.h"
 
 #include <Eigen/Eigenvalues>
@@ -99,26 +100,33 @@ MagCalResult MagCalibrator::fullFit(const std::vector<Eigen::Vector3d> &s, MagCa
                       "(planar) calibration, which is valid for level operation only.");
         return r;
     }
-    r.coveragePct = roughCoveragePct(s);
-    if (r.coveragePct < m_options.minCoveragePct || r.eigenRatio > m_options.maxEigenRatioFull) {
-        r.hardIronOnlyOffered = r.eigenRatio <= m_options.maxEigenRatioHardIron;
-        SphereCoverage cov;
-        if (const auto sphere = EllipsoidFit::sphere(s))
-            for (const auto &v : s)
-                cov.add(v - sphere->first);
-        r.reason = tr("Only %1 % of the field directions are covered (at least %2 % are needed, eigenvalue ratio "
-                      "%3, at most %4). %5. A full fit on this data would be unreliable.")
+    // Coverage of the raw directions around the sphere-fit centre: the rotations still missing.
+    SphereCoverage raw;
+    if (const auto sphere = EllipsoidFit::sphere(s))
+        for (const auto &v : s)
+            raw.add(v - sphere->first);
+    r.coveragePct = raw.percent();
+    r.hardIronOnlyOffered = r.eigenRatio <= m_options.maxEigenRatioHardIron;
+    if (r.coveragePct < m_options.minCoveragePct) {
+        r.reason = tr("Only %1 % of the field directions are covered (at least %2 % are needed before a fit is "
+                      "tried). %3.")
                        .arg(r.coveragePct, 0, 'f', 0)
                        .arg(m_options.minCoveragePct, 0, 'f', 0)
-                       .arg(r.eigenRatio, 0, 'f', 1)
-                       .arg(m_options.maxEigenRatioFull, 0, 'f', 0)
-                       .arg(cov.missingRotationHint());
+                       .arg(raw.missingRotationHint());
         if (r.hardIronOnlyOffered)
             r.reason += QLatin1Char(' ') + tr("A hard-iron-only fit (soft iron kept from before) is possible.");
         return r;
     }
     const auto li = EllipsoidFit::algebraicLi(s);
     if (!li) {
+        if (raw.largestGapDeg() > kMissingGapDeg) {
+            r.reason = tr("No ellipsoid fits these samples, which cover only part of the sphere. %1, then fit again.")
+                           .arg(raw.missingRotationHint());
+            if (r.hardIronOnlyOffered)
+                r.reason += QLatin1Char(' ') + tr("A hard-iron-only fit (soft iron kept from before) is possible.");
+            return r;
+        }
+        r.hardIronOnlyOffered = false;
         r.verdict = MagVerdict::Fail;
         r.reason = tr("The samples do not describe an ellipsoid (strong interference or a moving magnet nearby). "
                       "Move away from iron and electronics and calibrate again.");
@@ -133,7 +141,11 @@ MagCalResult MagCalibrator::fullFit(const std::vector<Eigen::Vector3d> &s, MagCa
     for (const auto &v : s)
         cov.add(e.correct(v));
     r.coveragePct = cov.percent();
-    judge(r, EllipsoidFit::residuals(s, e), true);
+    const auto u = MagFitUncertainty::resampledEllipsoid(s, e, m_options.inclinationDeg, m_options.replicates);
+    r.hardIronSigmaUt = u.hardIronSigmaUt;
+    r.softIronSigmaPct = u.softIronSigmaPct;
+    r.predictedHeadingErrorDeg = u.headingErrorDeg;
+    judge(r, EllipsoidFit::residuals(s, e), true, &raw);
     return r;
 }
 
@@ -166,6 +178,9 @@ MagCalResult MagCalibrator::hardIronFit(const std::vector<Eigen::Vector3d> &s, M
     for (const auto &v : s)
         cov.add(e->correct(v));
     r.coveragePct = cov.percent();
+    const auto u = MagFitUncertainty::ofHardIronFit(s, *e, !(m_options.referenceFieldUt > 0), m_options.inclinationDeg);
+    r.hardIronSigmaUt = u.hardIronSigmaUt;
+    r.predictedHeadingErrorDeg = u.headingErrorDeg; // the soft iron is held: its sigma stays unknown
     judge(r, EllipsoidFit::residuals(s, *e), false);
     return r;
 }
@@ -209,11 +224,16 @@ MagCalResult MagCalibrator::planarFit(const std::vector<Eigen::Vector3d> &s, Mag
         sectors[size_t(std::clamp(k, 0, kHeadingSectors - 1))] = true;
     }
     r.coveragePct = 100.0 * double(std::count(sectors.begin(), sectors.end(), true)) / kHeadingSectors;
+    const auto u = MagFitUncertainty::ofEllipse(xy, *e);
+    r.hardIronSigmaUt = u.hardIronSigmaUt;
+    r.softIronSigmaPct = u.softIronSigmaPct;
+    r.predictedHeadingErrorDeg = u.headingErrorDeg;
     judge(r, res, true);
     return r;
 }
 
-void MagCalibrator::judge(MagCalResult &r, const std::vector<double> &residualsUt, bool checkSoftIron) const
+void MagCalibrator::judge(MagCalResult &r, const std::vector<double> &residualsUt, bool checkSoftIron,
+                          const SphereCoverage *rawCoverage) const
 {
     const double sigma = EllipsoidFit::robustSigma(residualsUt);
     const double limit = std::max(5.0 * sigma, 1e-9 * std::max(r.fieldUt, 1.0));
@@ -249,7 +269,15 @@ void MagCalibrator::judge(MagCalResult &r, const std::vector<double> &residualsU
                      .arg(kGrossFieldMaxUt, 0, 'f', 0);
     if (r.fitErrorPct > kWarnFitErrorPct && r.fitErrorPct <= kFailFitErrorPct)
         warns << tr("fit error %1 % is above %2 %").arg(r.fitErrorPct, 0, 'f', 2).arg(kWarnFitErrorPct, 0, 'f', 1);
-    if (r.coveragePct < kWarnCoveragePct)
+    const bool full = r.mode == MagCalMode::Full3D;
+    const double predicted = r.predictedHeadingErrorDeg;
+    if (std::isfinite(predicted) && predicted > kWarnHeadingErrorDeg)
+        warns << tr("the predicted heading error of a level module, %1 deg, is above %2 deg (hard iron +-%3 uT)")
+                     .arg(predicted, 0, 'f', 2)
+                     .arg(kWarnHeadingErrorDeg, 0, 'f', 1)
+                     .arg(r.hardIronSigmaUt, 0, 'f', 2);
+    // A full fit's accuracy says what its coverage is worth; the other fits keep the coverage warning.
+    if (!full && r.coveragePct < kWarnCoveragePct)
         warns << tr("only %1 % of the directions are covered").arg(r.coveragePct, 0, 'f', 0);
     if (!planar && r.fieldUt >= kGrossFieldMinUt && r.fieldUt <= kGrossFieldMaxUt
         && (r.fieldUt < kFieldMinUt || r.fieldUt > kFieldMaxUt))
@@ -272,17 +300,54 @@ void MagCalibrator::judge(MagCalResult &r, const std::vector<double> &residualsU
     else if (planar)
         warns << tr("2-D calibration: valid for level operation only");
 
-    if (!fails.isEmpty()) {
+    const bool tooInaccurate = full && !(predicted <= kRefuseHeadingErrorDeg); // NaN and inf too
+    const double gap = rawCoverage ? rawCoverage->largestGapDeg() : 0.0;
+    const bool missing = gap > kMissingGapDeg;
+    if (!fails.isEmpty() && !(tooInaccurate && missing)) {
+        r.hardIronOnlyOffered = false;
         r.verdict = MagVerdict::Fail;
         r.reason = tr("Calibration failed: %1.").arg((fails + warns).join(QStringLiteral("; ")));
+    } else if (tooInaccurate) {
+        // On part of the sphere a fit can run away and break the parameter checks too: the
+        // missing rotations are the cause, so the reason names them and not the symptoms.
+        r.verdict = MagVerdict::Refused;
+        r.reason = std::isfinite(predicted)
+            ? tr("The data cannot give an accurate calibration: the predicted heading error of a level module is %1 "
+                 "deg, at most %2 deg is accepted (hard iron +-%3 uT, soft iron +-%4 %).")
+                  .arg(predicted, 0, 'f', 1)
+                  .arg(kRefuseHeadingErrorDeg, 0, 'f', 1)
+                  .arg(r.hardIronSigmaUt, 0, 'f', 2)
+                  .arg(r.softIronSigmaPct, 0, 'f', 1)
+            : tr("The data cannot give an accurate calibration: the fit's parameters are not determined by these "
+                 "samples.");
+        if (missing)
+            r.reason += QLatin1Char(' ')
+                + tr("Part of the sphere is missing (a gap of %1 deg). %2, then fit again.")
+                      .arg(gap, 0, 'f', 0)
+                      .arg(rawCoverage->missingRotationHint());
+        else
+            r.reason += QLatin1Char(' ')
+                + tr("The directions are covered, but there are too few samples or they scatter too much (%1 uT RMS "
+                     "about the fit): collect more, turning slowly and evenly, away from iron and electronics.")
+                      .arg(r.residualRmsUt, 0, 'f', 2);
+        if (r.hardIronOnlyOffered)
+            r.reason += QLatin1Char(' ') + tr("A hard-iron-only fit (soft iron kept from before) is possible.");
     } else if (!warns.isEmpty()) {
+        r.hardIronOnlyOffered = false;
         r.verdict = MagVerdict::Warn;
         r.reason = tr("Usable with care: %1.").arg(warns.join(QStringLiteral("; ")));
     } else {
+        r.hardIronOnlyOffered = false;
         r.verdict = MagVerdict::Pass;
-        r.reason = tr("Good calibration: fit error %1 %, %2 % of the directions covered.")
-                       .arg(r.fitErrorPct, 0, 'f', 2)
-                       .arg(r.coveragePct, 0, 'f', 0);
+        r.reason = std::isfinite(predicted)
+            ? tr("Good calibration: predicted heading error %1 deg (level module), fit error %2 %, %3 % of the "
+                 "directions covered.")
+                  .arg(predicted, 0, 'f', 2)
+                  .arg(r.fitErrorPct, 0, 'f', 2)
+                  .arg(r.coveragePct, 0, 'f', 0)
+            : tr("Good calibration: fit error %1 %, %2 % of the directions covered.")
+                  .arg(r.fitErrorPct, 0, 'f', 2)
+                  .arg(r.coveragePct, 0, 'f', 0);
     }
 }
 

@@ -19,6 +19,12 @@ using namespace protocol::can;
 
 namespace {
 
+// A process data frame: a HiPNUC CANopen TPDO or an HEC495 PDO (what NMT starts and stops).
+bool isPdo(const protocol::can::DecodedFrame &d)
+{
+    return d.kind == protocol::can::FrameKind::TpdoData || d.kind == protocol::can::FrameKind::Hec495Data;
+}
+
 const char *kindName(FrameKind k)
 {
     switch (k) {
@@ -187,7 +193,7 @@ void CanFamily::handleFrame(const CanFrame &f, qint64 now, std::vector<model::Sa
             noteNode(CanProtocol::CanOpen, d.node, tr("SDO scan"));
         }
     }
-    if (d.kind == FrameKind::TpdoData && d.node >= 0)
+    if (isPdo(d) && d.node >= 0)
         m_tpdoNodes.insert(d.node);
     if (matchStep(f, d))
         return;
@@ -378,11 +384,11 @@ bool CanFamily::matchStep(const CanFrame &f, const DecodedFrame &d)
             answer(true, uint32_t(s.node), QString());
         return false; // the frame still counts as data
     case CanJobStep::Expect::PdoFrom:
-        if (d.kind == FrameKind::TpdoData && d.node == m_target)
+        if (isPdo(d) && d.node == m_target)
             answer(true, 1, QString());
         return false;
     case CanJobStep::Expect::NoPdoFrom:
-        if (d.kind == FrameKind::TpdoData && d.node == m_target)
+        if (isPdo(d) && d.node == m_target)
             answer(false, 1, tr("node %1 still sends TPDOs after \"%2\": check the node ID").arg(m_target).arg(s.what));
         return false;
     }

@@ -346,6 +346,74 @@ quint64 CanSession::attitudeReset(int mode)
     return refuseJob(tr("attitude reset needs a HiPNUC J1939 or CANopen device"));
 }
 
+quint64 CanSession::setInclinometerSign(int axis, bool reversed)
+{
+    if (axis != 0 && axis != 1)
+        return refuseJob(tr("the inclinometer axis is X (0) or Y (1)"));
+    const QString title = tr("inclinometer %1 %2").arg(axis == 0 ? QStringLiteral("X") : QStringLiteral("Y"),
+                                                        reversed ? tr("reversed") : tr("default direction"));
+    const uint32_t v = reversed ? 1 : 0;
+    if (protocol() == CanProtocol::J1939) { // v1.7.1 7.23: 0x9E / 0x9F, 0 default, 1 reversed
+        const uint16_t reg = axis == 0 ? j1939::RegInclSignX : j1939::RegInclSignY;
+        CanJobStep rb = j1939Read(reg, tr("read back the inclinometer sign"));
+        rb.expectValue = v;
+        return submitJob(CanJob{0, title, {j1939Write(reg, v, tr("set the inclinometer sign")), rb}});
+    }
+    if (protocol() == CanProtocol::CanOpen) { // 0x209E / 0x209F
+        const uint16_t index = axis == 0 ? hip::ObjInclSignX : hip::ObjInclSignY;
+        CanJobStep rb = sdoReadStep(index, 0, tr("read back the inclinometer sign"));
+        rb.expectValue = v;
+        return submitJob(CanJob{0, title, {sdoWriteStep(index, 0, v, 4, tr("set the inclinometer sign")), rb}});
+    }
+    return refuseJob(tr("the inclinometer sign needs a HiPNUC J1939 or CANopen device"));
+}
+
+quint64 CanSession::setHec495PdoMode(int mode)
+{
+    if (protocol() != CanProtocol::Hec495)
+        return refuseJob(tr("the PDO mode is an HEC495 setting"));
+    // Standard frames: 0 float, 1 fixed point, 3 float 0x180/0x280 only; the extended variant:
+    // 0 message one (X), 1 messages one and two (X and Y).
+    const bool ok = m_options.hec495Extended ? (mode == 0 || mode == 1) : (mode == 0 || mode == 1 || mode == 3);
+    if (!ok)
+        return refuseJob(m_options.hec495Extended ? tr("the extended variant's PDO format is 0 (X) or 1 (X and Y)")
+                                                  : tr("the PDO mode is 0 (float), 1 (fixed point) or 3 (float, 0x180 "
+                                                       "and 0x280 only)"));
+    return hec495Write(hec495::ObjPdoMode, uint8_t(mode));
+}
+
+quint64 CanSession::setHec495WorkMode(int mode)
+{
+    if (protocol() != CanProtocol::Hec495 || m_options.hec495Extended)
+        return refuseJob(tr("the work mode is an HEC495 setting on standard frames"));
+    if (mode != 0x02 && mode != 0x0A)
+        return refuseJob(tr("the work mode is 0x02 (pitch, roll, acceleration, rate) or 0x0A (rate at 500 Hz)"));
+    return hec495Write(hec495::ObjWorkMode, uint8_t(mode));
+}
+
+quint64 CanSession::setAllNodesOutput(bool on)
+{
+    // CANopen NMT to node 0 (every node); the HEC495 manual's "0x000 01 00 / 02 00" (every node,
+    // not saved). No reply: confirmed by the target's PDOs, as setOutputEnabled does.
+    if ((protocol() != CanProtocol::CanOpen && protocol() != CanProtocol::Hec495) || m_options.hec495Extended)
+        return refuseJob(tr("output on or off for every node needs CANopen or an HEC495 on standard frames (NMT)"));
+    CanJobStep send;
+    send.tx = canopen::encodeNmt(on ? canopen::NmtStart : canopen::NmtStop, 0);
+    send.what = on ? tr("NMT start, every node") : tr("NMT stop, every node");
+    if (on) {
+        send.expect = CanJobStep::Expect::PdoFrom;
+        send.timeoutMs = kNmtConfirmMs;
+        return submitJob(CanJob{0, send.what, {send}});
+    }
+    CanJobStep watch;
+    watch.hasTx = false;
+    watch.what = send.what;
+    send.pauseMs = kNmtSettleMs;
+    watch.expect = CanJobStep::Expect::NoPdoFrom;
+    watch.timeoutMs = kNmtConfirmMs;
+    return submitJob(CanJob{0, send.what, {send, watch}});
+}
+
 quint64 CanSession::setOutputEnabled(bool on)
 {
     switch (protocol()) {

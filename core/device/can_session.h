@@ -59,6 +59,14 @@ public:
     quint64 setBitrate(int bitrate);
     quint64 attitudeReset(int mode);
     quint64 setOutputEnabled(bool on);
+    // NMT start / stop to node 0: CANopen, and the HEC495's "all nodes" PDO start/stop (not saved).
+    quint64 setAllNodesOutput(bool on);
+    // Inclinometer axis direction (axis 0 = X, 1 = Y): J1939 0x9E/0x9F, CANopen 0x209E/0x209F; read back.
+    quint64 setInclinometerSign(int axis, bool reversed);
+    // HEC495: PDO mode 0x1080 (0 float, 1 fixed point, 3 float 0x180/0x280 only; extended variant
+    // 0 = message one, 1 = messages one and two) and work mode 0x6245 (0x02 default, 0x0A rate at 500 Hz).
+    quint64 setHec495PdoMode(int mode);
+    quint64 setHec495WorkMode(int mode);
     quint64 save();
     quint64 reset();
     quint64 factoryReset();

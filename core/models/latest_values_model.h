@@ -98,6 +98,11 @@ public:
     bool everSeen(Row row) const;
     // True for the rows that always show (the IMU and attitude quantities every frame type has).
     static bool isCoreRow(Row row) { return row < InsStatus || row >= StatusFlags; }
+    // The HI83 fields only an INS configuration sends (UtcDate ... GnssVelocity): the workspace
+    // shows them in a table of their own, so that the values table keeps every row in view.
+    static bool isDetailRow(Row row) { return row >= UtcDate && row <= GnssVelocity; }
+    // Ship motion and inclination: beside those details they move to the details table too.
+    static bool isSecondaryRow(Row row) { return row >= Heave && row <= InclinationY; }
 
 private:
     QString formatValue(Row row, const model::Sample &s) const;

@@ -61,6 +61,10 @@ void ChannelHistory::clear()
     m_lastRawDevice = 0.0;
     m_haveRawDevice = false;
     m_deviceOffset = 0.0;
+    m_clockSource.clear();
+    m_clockSeenHost = 0.0;
+    m_clockOwnerRows = m_clockOtherRows = 0;
+    m_clockOther.clear();
     m_stepCount = 0;
     m_stepNext = 0;
     m_period = 0.0;
@@ -139,10 +143,43 @@ void ChannelHistory::appendOne(const model::Sample &s)
         host = m_lastHost;
     const double hostStep = first ? 0.0 : host - m_lastHost;
 
-    // Device time, stitched across backward jumps.
+    // Device time, stitched across backward jumps, from one frame type's clock: two types may
+    // count on different clocks (after PPS alignment HI91 counts the UTC day, HI83 still the
+    // time since power-on), and alternating between them would stitch a jump at every row.
+    // Another type's clock takes over when the owner has been silent for kClockHandOverS.
     uint32_t f = 0;
     double device = 0.0;
-    if (s.has(model::FieldDeviceTime) && std::isfinite(s.deviceTimeMs)) {
+    bool ownClock = s.has(model::FieldDeviceTime) && std::isfinite(s.deviceTimeMs);
+    if (ownClock) {
+        // The busiest type carries the axis: over each kClockWindow rows with a device time,
+        // another type that brought more than twice the owner's rows takes over.
+        if (!m_clockSource.empty()) {
+            if (s.source == m_clockSource) {
+                ++m_clockOwnerRows;
+            } else {
+                ++m_clockOtherRows;
+                m_clockOther = s.source;
+            }
+            if (m_clockOwnerRows + m_clockOtherRows >= kClockWindow) {
+                if (m_clockOtherRows > 2 * m_clockOwnerRows && m_clockOther != m_clockSource) {
+                    m_clockSource = m_clockOther;
+                    m_haveRawDevice = false; // a new segment starts on the new clock
+                }
+                m_clockOwnerRows = m_clockOtherRows = 0;
+            }
+        }
+        if (m_clockSource.empty()) {
+            m_clockSource = s.source;
+        } else if (s.source != m_clockSource && host - m_clockSeenHost > kClockHandOverS) {
+            m_clockSource = s.source;
+            m_haveRawDevice = false;
+            m_clockOwnerRows = m_clockOtherRows = 0;
+        }
+        ownClock = s.source == m_clockSource;
+        if (ownClock)
+            m_clockSeenHost = host;
+    }
+    if (ownClock) {
         f |= FlagDeviceTime;
         const double raw = s.deviceTimeMs / 1e3;
         if (first) {

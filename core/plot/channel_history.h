@@ -27,6 +27,11 @@
 //          device time in the current segment, so the newest data can be shown on the
 //          device's own clock. A row without a device time repeats the previous
 //          row's device time (or uses host time until a device time has been seen).
+//          One frame type's clock drives the axis (the first with a device time, then the
+//          busiest: another type with more than twice its rows in kClockWindow takes over);
+//          the rows of other types count as rows without one; when the owner has sent
+//          nothing for kClockHandOverS the next type's clock takes over. A hand-over starts
+//          a segment.
 //
 // Row flags: bit n (n < kChannelCount) = channel n present. A sample that lacks a
 // field leaves those channels empty (NaN, bit clear) for that row; non-finite
@@ -42,6 +47,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 namespace imudesk::plot {
@@ -93,6 +99,8 @@ public:
         kChannelCount * sizeof(float) + 2 * sizeof(double) + sizeof(uint32_t);
     static constexpr double kGapPeriods = 5.0;     // a device-clock step above this many periods is a gap
     static constexpr int kPeriodWindow = 15;       // recent positive steps in the period median
+    static constexpr double kClockHandOverS = 1.0; // the axis's frame type silent this long (host s): another's clock takes over
+    static constexpr int kClockWindow = 100;       // rows with a device time per check of which type is busiest
 
     static constexpr uint32_t kChannelMask = (1u << kChannelCount) - 1;
     static constexpr uint32_t FlagDeviceTime = 1u << 24;   // the sample carried a device time
@@ -211,6 +219,10 @@ private:
     double m_lastRawDevice = 0.0;   // raw device time (s) of the newest row that had one
     bool m_haveRawDevice = false;   // a device time was seen in the current segment
     double m_deviceOffset = 0.0;
+    std::string m_clockSource;      // the frame type whose device time drives the device axis
+    double m_clockSeenHost = 0.0;   // host time of its newest row
+    int m_clockOwnerRows = 0, m_clockOtherRows = 0; // rows with a device time in this window
+    std::string m_clockOther;       // the newest other type among them
     std::array<double, kPeriodWindow> m_steps{};
     int m_stepCount = 0;
     int m_stepNext = 0;

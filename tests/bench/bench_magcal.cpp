@@ -9,6 +9,17 @@
 //   hard-iron error |b^ - b|, soft-iron error ||M / cbrt(det M) - I||_F with M = S^ A,
 //   heading error: max over a noise-free grid (yaw 0..355 step 5, roll and pitch in
 //   {0, +-20} deg), tilt-compensated with the true attitude.
+// Coverage sweep (the accuracy the data can give): full spheres of 50..1000 samples and
+// 0.1..1 uT noise, caps of 75 % down to 25 % of the field directions, hemispheres, and
+// bands (any yaw, roll and pitch within +-X). Per trial the fit's predicted heading error
+// (level module) is set against the true one over the same level turn, with the linear
+// covariance of the same fit as the baseline, and with an "oracle" that knows each case's
+// true median error (but not the trial's own geometry or noise). Goals: no trial with a true
+// error above 1 deg passes; the predicted hard-iron sigma follows the true RMS within a
+// factor of 2 wherever the fit does not run away; the prediction is within a factor of 2 of
+// the trial's own error in >= 90 % of trials (the goal, missed: one draw of noise
+// gives one error, and on part of the sphere that error lies mostly along one direction and
+// varies so much from draw to draw that even the oracle reaches only 54-65 % there).
 // The gyro scale run drives the simulated HiPNUC module (0.5 % gyro scale error, a
 // turntable doing two turns clockwise and two counter-clockwise) and feeds its HI91
 // frames, with the device's own timestamps, to calib::GyroScaleRun.
@@ -17,8 +28,10 @@
 //
 // Prints every figure with its target and PASS/FAIL; exit status 1 when one misses, 2 on
 // bad arguments.
+#include "calib/ellipsoid_fit.h"
 #include "calib/gyro_scale_run.h"
 #include "calib/mag_calibrator.h"
+#include "calib/mag_fit_uncertainty.h"
 #include "protocol/hipnuc/payloads.h"
 #include "protocol/stream/stream_demux.h"
 #include "sim/hipnuc_simulator.h"
@@ -27,6 +40,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <functional>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -204,10 +218,12 @@ Figures runScenario(const Truth &t, uint64_t seed, int trials, int n, Coverage c
         const auto samples = generate(t, rng, n, cov, 0.3, spikes);
         const calib::MagCalResult r = cal.calibrate(samples, mode);
         ++f.trials;
-        if (r.verdict == calib::MagVerdict::Refused) {
+        if (r.verdict == calib::MagVerdict::Refused)
             ++f.refused;
+        // The fit's errors whatever its verdict (a fit refused for its accuracy still ran);
+        // only data refused before any fit has none.
+        if (r.verdict == calib::MagVerdict::Refused && std::isnan(r.predictedHeadingErrorDeg))
             continue;
-        }
         const bool planar = mode == calib::MagCalMode::Planar2D;
         f.hi.push_back(planar ? (r.hardIron - t.hardIron).head<2>().norm() : (r.hardIron - t.hardIron).norm());
         if (!planar)
@@ -230,7 +246,10 @@ void magnetometer(uint64_t seed, int trials)
 
     const Figures hemi = runScenario(t, seed, trials, 300, Coverage::Hemisphere, 0);
     report("hemisphere N=300: hard-iron error", p95(hemi.hi), "uT", "<=", 0.7);
-    report("hemisphere N=300: refused trials", hemi.refused, "", "<=", 0);
+    // No longer a coverage verdict: each hemisphere is judged by its predicted accuracy (the sweep).
+    std::printf("hemisphere N=300: heading error (max) %.4f deg (notes' G4 goal 1.0, not a target here); %d of %d "
+                "trials refused for their predicted accuracy\n",
+                p95(hemi.heading), hemi.refused, hemi.trials);
 
     for (double spikes : {0.02, 0.05}) {
         const Figures sp = runScenario(t, seed, trials, 300, Coverage::Full, spikes);
@@ -271,6 +290,165 @@ void magnetometer(uint64_t seed, int trials)
     std::sort(ms.begin(), ms.end());
     report("fit of 1000 points: time (max of 21 runs)", ms.back(), "ms", "<", 50);
     report("fit of 1000 points: bit-identical on 20 repeats", identical ? 1 : 0, "", ">=", 1);
+}
+
+// One coverage of the sweep: field directions within a cap of `capFraction` of the sphere
+// around an axis that changes per trial (1 = the full sphere), or, with bandDeg > 0, any
+// yaw with roll and pitch uniform within +-bandDeg.
+struct SweepCase {
+    const char *name;
+    int n;
+    double noise;
+    double capFraction;
+    double bandDeg;
+};
+
+std::vector<Vector3d> generateSweep(const Truth &t, Rng &rng, const SweepCase &c)
+{
+    std::vector<Vector3d> out;
+    out.reserve(size_t(c.n));
+    const Vector3d axis = rng.direction();
+    const Vector3d fieldDir = t.field.normalized();
+    const double minDot = 1.0 - 2.0 * c.capFraction; // cap area (1 - cos a) / 2
+    while (int(out.size()) < c.n) {
+        Quaterniond q;
+        if (c.bandDeg > 0) {
+            const double yaw = rng.unit() * 2 * kPi;
+            const double roll = (2 * rng.unit() - 1) * c.bandDeg * kDeg, pitch = (2 * rng.unit() - 1) * c.bandDeg * kDeg;
+            q = Eigen::AngleAxisd(yaw, Vector3d::UnitZ()) * Eigen::AngleAxisd(pitch, Vector3d::UnitX())
+                * Eigen::AngleAxisd(roll, Vector3d::UnitY());
+        } else {
+            q = rng.rotation();
+            if (c.capFraction < 1 && (q.toRotationMatrix().transpose() * fieldDir).dot(axis) < minDot)
+                continue;
+        }
+        out.push_back(t.measure(q) + c.noise * Vector3d(rng.normal(), rng.normal(), rng.normal()));
+    }
+    return out;
+}
+
+// Largest heading error of a level module turned once (yaw 0..355 step 5), tilt
+// compensated with the true attitude: the quantity the fit's prediction stands for.
+double levelHeadingErrorMax(const Truth &t, const calib::MagCalResult &r)
+{
+    const double truth = headingOf(t.field);
+    double worst = 0;
+    for (int yaw = 0; yaw < 360; yaw += 5) {
+        const Quaterniond q(Eigen::AngleAxisd(yaw * kDeg, Vector3d::UnitZ()));
+        const Vector3d nav = q.toRotationMatrix() * r.correct(t.measure(q));
+        worst = std::max(worst, std::fabs(wrapDeg(headingOf(nav) - truth)));
+    }
+    return worst;
+}
+
+double median(std::vector<double> v)
+{
+    if (v.empty())
+        return 0;
+    std::sort(v.begin(), v.end());
+    return v[v.size() / 2];
+}
+
+double rms(const std::vector<double> &v)
+{
+    double s = 0;
+    for (double x : v)
+        s += x * x;
+    return v.empty() ? 0 : std::sqrt(s / double(v.size()));
+}
+
+void coverageSweep(uint64_t seed, int trials)
+{
+    const Truth t;
+    const SweepCase cases[] = {
+        {"full, N=1000", 1000, 0.3, 1.0, 0},      {"full, N=300, 0.1 uT", 300, 0.1, 1.0, 0},
+        {"full, N=300", 300, 0.3, 1.0, 0},         {"full, N=100", 100, 0.3, 1.0, 0},
+        {"full, N=50", 50, 0.3, 1.0, 0},           {"full, N=300, 1 uT", 300, 1.0, 1.0, 0},
+        {"cap 75 %", 300, 0.3, 0.75, 0},           {"hemisphere", 300, 0.3, 0.5, 0},
+        {"hemisphere, N=1000", 1000, 0.3, 0.5, 0}, {"cap 37 %", 300, 0.3, 0.37, 0},
+        {"cap 25 %", 300, 0.3, 0.25, 0},           {"band +-60", 300, 0.3, 1.0, 60},
+        {"band +-45", 300, 0.3, 1.0, 45},          {"band +-30", 300, 0.3, 1.0, 30},
+        {"band +-20", 300, 0.3, 1.0, 20},
+    };
+    const calib::MagCalibrator cal;
+    std::printf("Coverage sweep, %d trials per case, noise per axis as named (else 0.3 uT), N=300 unless named.\n"
+                "Heading error = the largest over one level turn; pred = the fit's predicted heading error; x2 = share\n"
+                "of trials whose prediction is within a factor of 2 of their true error; oracle = the same share for a\n"
+                "prediction that knew only the case's true median; linear = the covariance-only prediction (baseline);\n"
+                "HI/SI = RMS of the true hard-iron (uT) / soft-iron (%%) errors and of their predicted sigmas;\n"
+                ">1ok = trials with a true error > 1 deg given pass (lin>1ok: had the baseline decided).\n",
+                trials);
+    std::printf("%-19s %7s %7s %7s | %4s %6s %6s | %7s %7s %7s | %6s %6s | %4s %4s %4s %4s %4s %6s\n", "case", "pred", "true",
+                "trueP95", "x2", "oracle", "linear", "HI", "HIpred", "HIlin", "SI", "SIpred", "pass", "warn", "ref",
+                "fail", ">1ok", "lin>1ok");
+    int within = 0, withinLinear = 0, withinOracle = 0, counted = 0, badPass = 0;
+    double worstLow = 1e9, worstHigh = 0;
+    double fullPred = 0;
+    for (const SweepCase &c : cases) {
+        std::vector<double> pred, truth, linear, hiErr, hiPred, hiLin, siErr, siPred;
+        int verdicts[4] = {0, 0, 0, 0}, bad = 0, badLinear = 0;
+        for (int i = 0; i < trials; ++i) {
+            Rng rng(seed * 2654435761ull + uint64_t(i) * 104729ull + uint64_t(c.n) * 13ull
+                    + uint64_t(c.capFraction * 1000) * 17ull + uint64_t(c.bandDeg) * 19ull + uint64_t(c.noise * 100) * 23ull);
+            const auto samples = generateSweep(t, rng, c);
+            const calib::MagCalResult r = cal.calibrate(samples);
+            ++verdicts[int(r.verdict)];
+            if (std::isnan(r.predictedHeadingErrorDeg))
+                continue; // refused before any fit
+            const double tr = levelHeadingErrorMax(t, r);
+            bad += r.verdict == calib::MagVerdict::Pass && tr > 1.0;
+            // The baseline: the linear covariance of the same fit.
+            calib::Ellipsoid e;
+            e.center = r.hardIron;
+            e.w = r.softIron / r.fieldUt;
+            const auto lin = calib::MagFitUncertainty::ofEllipsoid(samples, e);
+            // What the baseline would have passed on its own.
+            badLinear += lin.headingErrorDeg < calib::MagCalibrator::kWarnHeadingErrorDeg && tr > 1.0;
+            pred.push_back(r.predictedHeadingErrorDeg);
+            truth.push_back(tr);
+            linear.push_back(lin.headingErrorDeg);
+            hiErr.push_back((r.hardIron - t.hardIron).norm());
+            hiPred.push_back(r.hardIronSigmaUt);
+            hiLin.push_back(lin.hardIronSigmaUt);
+            siErr.push_back(softIronErrorPct(t, r));
+            siPred.push_back(r.softIronSigmaPct);
+        }
+        auto share = [&](const std::function<double(size_t)> &p) {
+            int n = 0;
+            for (size_t k = 0; k < truth.size(); ++k)
+                n += truth[k] <= 2 * p(k) && p(k) <= 2 * truth[k];
+            return n;
+        };
+        const double med = median(truth);
+        const int w = share([&](size_t k) { return pred[k]; });
+        const int wl = share([&](size_t k) { return linear[k]; });
+        const int wo = share([&](size_t) { return med; });
+        const double n = double(std::max<size_t>(truth.size(), 1));
+        std::printf("%-19s %7.3f %7.3f %7.3f | %3.0f%% %5.0f%% %5.0f%% | %7.3f %7.3f %7.3f | %6.3f %6.3f | %4d %4d %4d %4d %4d %6d\n",
+                    c.name, median(pred), med, p95(truth), 100 * w / n, 100 * wo / n, 100 * wl / n, rms(hiErr), rms(hiPred),
+                    rms(hiLin), rms(siErr), rms(siPred), verdicts[0], verdicts[1], verdicts[3], verdicts[2], bad, badLinear);
+        within += w;
+        withinLinear += wl;
+        withinOracle += wo;
+        counted += int(truth.size());
+        badPass += bad;
+        if (std::strcmp(c.name, "full, N=300") == 0)
+            fullPred = median(pred);
+        // Where the fit stays near the truth (not the runaway fits of a 25 % cap or a narrow
+        // band, which are refused), the predicted sigma must follow the true error.
+        if (rms(hiErr) < 5.0) {
+            worstLow = std::min(worstLow, rms(hiPred) / rms(hiErr));
+            worstHigh = std::max(worstHigh, rms(hiPred) / rms(hiErr));
+        }
+    }
+    const double all = double(std::max(counted, 1));
+    std::printf("all cases: prediction within x2 of the true error in %.1f %% of %d trials (oracle %.1f %%, linear %.1f %%)\n",
+                100 * within / all, counted, 100 * withinOracle / all, 100 * withinLinear / all);
+    report("coverage sweep: full sphere N=300, predicted heading error", fullPred, "deg", "<", 0.5);
+    report("coverage sweep: trials with a true error > 1 deg given pass", badPass, "", "<=", 0);
+    report("coverage sweep: predicted/true hard-iron RMS, lowest", worstLow, "", ">=", 0.5);
+    report("coverage sweep: predicted/true hard-iron RMS, highest", worstHigh, "", "<=", 2.0);
+    report("coverage sweep: prediction within x2 of the trial's error", 100 * within / all, "%", ">=", 90);
 }
 
 // The simulated module on a turntable (two turns each way) with a known gyro scale error;
@@ -341,6 +519,7 @@ int main(int argc, char **argv)
     }
     const auto t0 = std::chrono::steady_clock::now();
     magnetometer(seed, trials);
+    coverageSweep(seed, trials);
     gyroScale(seed);
     const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     std::printf("runtime %.1f s; %s\n", secs, g_failures == 0 ? "all figures met" : "some figures missed");

@@ -349,6 +349,59 @@ private Q_SLOTS:
         QTRY_VERIFY(rig.frames.countRx(0x190) > 3);
     }
 
+    void inclinometerSignsReadBack()
+    {
+        // J1939 0x9E/0x9F and CANopen 0x209E/0x209F: written, read back, in the module's settings.
+        for (CanProtocol p : {CanProtocol::J1939, CanProtocol::CanOpen}) {
+            Rig rig;
+            sim::CanSimOptions o;
+            o.protocol = p;
+            QVERIFY(makeRig(rig, o, p, p == CanProtocol::J1939 ? kIface : kIface1));
+            QTRY_VERIFY_WITH_TIMEOUT(rig.session->store().totalAppended() > 5, 5000);
+            auto r = waitResult(*rig.session, rig.session->setInclinometerSign(0, true));
+            QVERIFY2(r.ok, qPrintable(r.message));
+            QCOMPARE(rig.sim->device().hipnuc().inclSignX, 1u);
+            r = waitResult(*rig.session, rig.session->setInclinometerSign(1, true));
+            QVERIFY2(r.ok, qPrintable(r.message));
+            QCOMPARE(rig.sim->device().hipnuc().inclSignY, 1u);
+            r = waitResult(*rig.session, rig.session->setInclinometerSign(0, false));
+            QVERIFY2(r.ok, qPrintable(r.message));
+            QCOMPARE(rig.sim->device().hipnuc().inclSignX, 0u);
+            QVERIFY(!waitResult(*rig.session, rig.session->setInclinometerSign(2, true)).ok);
+            QVERIFY(!waitResult(*rig.session, rig.session->setHec495WorkMode(2)).ok); // not an HEC495
+        }
+    }
+
+    void hec495ModesAndEveryNode()
+    {
+        Rig rig;
+        sim::CanSimOptions o;
+        o.protocol = CanProtocol::CanOpen;
+        o.hec495 = true;
+        QVERIFY(makeRig(rig, o, CanProtocol::Hec495));
+        QTRY_VERIFY_WITH_TIMEOUT(rig.frames.countRx(0x185) > 2, 5000);
+        auto r = waitResult(*rig.session, rig.session->setHec495PdoMode(hec495::ModeFloatShort));
+        QVERIFY2(r.ok, qPrintable(r.message));
+        QCOMPARE(rig.sim->device().hec().pdoMode, uint32_t(hec495::ModeFloatShort));
+        r = waitResult(*rig.session, rig.session->setHec495WorkMode(0x0A));
+        QVERIFY2(r.ok, qPrintable(r.message));
+        QCOMPARE(rig.sim->device().hec().workMode, 0x0Au);
+        QVERIFY(!waitResult(*rig.session, rig.session->setHec495PdoMode(2)).ok);  // not a documented mode
+        QVERIFY(!waitResult(*rig.session, rig.session->setHec495WorkMode(3)).ok);
+        QVERIFY(waitResult(*rig.session, rig.session->setHec495WorkMode(0x02)).ok);
+        // NMT stop to every node: the PDOs stop (not saved); start: they come again.
+        r = waitResult(*rig.session, rig.session->setAllNodesOutput(false));
+        QVERIFY2(r.ok, qPrintable(r.message));
+        QVERIFY(!rig.sim->device().hec().pdoStarted);
+        const qint64 from = mark(rig);
+        QTest::qWait(400);
+        QCOMPARE(rig.frames.countRx(0x185, from + 1), 0);
+        r = waitResult(*rig.session, rig.session->setAllNodesOutput(true));
+        QVERIFY2(r.ok, qPrintable(r.message));
+        QVERIFY(rig.sim->device().hec().pdoStarted);
+        QVERIFY(rig.frames.countRx(0x185, from + 1) > 0);
+    }
+
     void hec495Extended()
     {
         Rig rig;
@@ -361,6 +414,11 @@ private Q_SLOTS:
         QVERIFY2(r.ok, qPrintable(r.message));
         QTRY_VERIFY_WITH_TIMEOUT(rig.frames.countRx(hec495::kExtDataYId) > 2, 3000);
         QVERIFY(rig.session->store().latest()->has(model::FieldEuler));
+        // The typed PDO format of the variant (0 / 1); what it does not have is refused.
+        QVERIFY(waitResult(*rig.session, rig.session->setHec495PdoMode(0)).ok);
+        QVERIFY(!waitResult(*rig.session, rig.session->setHec495PdoMode(3)).ok);
+        QVERIFY(!waitResult(*rig.session, rig.session->setHec495WorkMode(0x0A)).ok);
+        QVERIFY(!waitResult(*rig.session, rig.session->setAllNodesOutput(false)).ok);
     }
 };
 

@@ -125,6 +125,20 @@ private Q_SLOTS:
         QCOMPARE(r.code, 0);
         QVERIFY2(r.out.contains(QStringLiteral("protocol: j1939")), qPrintable(r.out));
         QVERIFY(r.out.contains(QStringLiteral("node 9")));
+        // Typed settings: the inclinometer's X direction reversed (0x9E), read back.
+        r = cli(can({QStringLiteral("--protocol"), QStringLiteral("j1939"), QStringLiteral("--node"), QStringLiteral("9"),
+                     QStringLiteral("set"), QStringLiteral("incl-sign-x"), QStringLiteral("1")}));
+        QVERIFY2(r.code == 0, qPrintable(r.err));
+        r = cli(can({QStringLiteral("--node"), QStringLiteral("9"), QStringLiteral("reg"), QStringLiteral("read"), QStringLiteral("0x009E")}));
+        QVERIFY2(r.code == 0 && r.out.startsWith(QStringLiteral("register 0x009e: 1")), qPrintable(r.out + r.err));
+        // Settings the protocol does not have, and bad values: refused with the reason.
+        r = cli(can({QStringLiteral("--protocol"), QStringLiteral("j1939"), QStringLiteral("--node"), QStringLiteral("9"),
+                     QStringLiteral("set"), QStringLiteral("work-mode"), QStringLiteral("2")}));
+        QCOMPARE(r.code, 1);
+        QVERIFY2(r.err.contains(QStringLiteral("HEC495")), qPrintable(r.err));
+        QCOMPARE(cli(can({QStringLiteral("--protocol"), QStringLiteral("j1939"), QStringLiteral("set"), QStringLiteral("incl-sign-x"),
+                          QStringLiteral("2")})).code, 2);
+        QCOMPARE(cli(can({QStringLiteral("set"), QStringLiteral("incl-sign-x"), QStringLiteral("1")})).code, 2); // no protocol
     }
 
     void hec495Session()
@@ -135,6 +149,23 @@ private Q_SLOTS:
         QVERIFY2(r.code == 0, qPrintable(r.err));
         r = cli(can({QStringLiteral("scan"), QStringLiteral("--duration"), QStringLiteral("1.2")}));
         QVERIFY2(r.out.contains(QStringLiteral("node 5 (hec495, data)")), qPrintable(r.out));
+        // PDO and work modes as typed settings; every node off and on again (NMT to node 0),
+        // confirmed by the PDOs stopping and starting.
+        const QStringList hec = {QStringLiteral("--protocol"), QStringLiteral("hec495")};
+        r = cli(can(hec + QStringList{QStringLiteral("set"), QStringLiteral("pdo-mode"), QStringLiteral("1")}));
+        QVERIFY2(r.code == 0, qPrintable(r.err));
+        r = cli(can(hec + QStringList{QStringLiteral("set"), QStringLiteral("work-mode"), QStringLiteral("0x0A")}));
+        QVERIFY2(r.code == 0, qPrintable(r.err));
+        r = cli(can(hec + QStringList{QStringLiteral("set"), QStringLiteral("pdo-mode"), QStringLiteral("2")}));
+        QCOMPARE(r.code, 1);
+        r = cli(can(hec + QStringList{QStringLiteral("output"), QStringLiteral("off"), QStringLiteral("--all")}));
+        QVERIFY2(r.code == 0, qPrintable(r.err));
+        r = cli(can(hec + QStringList{QStringLiteral("output"), QStringLiteral("on"), QStringLiteral("--all")}));
+        QVERIFY2(r.code == 0, qPrintable(r.err));
+        // The extended variant has no NMT for every node: said.
+        r = cli(can(hec + QStringList{QStringLiteral("--extended"), QStringLiteral("output"), QStringLiteral("off"), QStringLiteral("--all")}));
+        QCOMPARE(r.code, 1);
+        QVERIFY2(r.err.contains(QStringLiteral("standard frames")), qPrintable(r.err));
     }
 };
 

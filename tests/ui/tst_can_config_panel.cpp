@@ -93,8 +93,70 @@ private Q_SLOTS:
         QTRY_COMPARE(done.size(), 3);
         QVERIFY(done.at(2).at(0).toBool());
         QCOMPARE(simulator.device().hipnuc().heartbeatMs, uint16_t(100));
+
+        // The rows follow the protocol: CANopen has the inclinometer and NMT for every node,
+        // not the J1939 trigger nor the HEC495 modes.
+        QVERIFY(panel.applyInclButton()->isEnabled());
+        QVERIFY(panel.allOffButton()->isEnabled());
+        QVERIFY(!panel.triggerButton()->isEnabled());
+        QVERIFY(!panel.applyModesButton()->isEnabled());
+        // Inclinometer X reversed, Y default: two writes, each read back.
+        panel.inclXReversedCheck()->setChecked(true);
+        panel.applyInclButton()->click();
+        QTRY_COMPARE(done.size(), 5);
+        QVERIFY(done.at(3).at(0).toBool() && done.at(4).at(0).toBool());
+        QCOMPARE(simulator.device().hipnuc().inclSignX, 1u);
+        QCOMPARE(simulator.device().hipnuc().inclSignY, 0u);
         panel.setSession(nullptr);
         QVERIFY(!panel.applyPeriodButton()->isEnabled());
+    }
+
+    void hec495Panel()
+    {
+        // An HEC495 on standard frames: its PDO and work modes, every node on/off; on the
+        // extended variant the work mode and NMT are not there, and its PDO formats are two.
+        const QString iface = QStringLiteral("tcp://127.0.0.1:35487/can1");
+        sim::CanSimOptions o;
+        o.protocol = protocol::can::CanProtocol::CanOpen;
+        o.hec495 = true;
+        sim::CanSimulator simulator(o);
+        QString err;
+        QVERIFY2(simulator.start(QStringLiteral("virtualcan"), iface, &err), qPrintable(err));
+        device::CanSession session;
+        device::CanSessionOptions so;
+        so.interfaceName = iface;
+        so.protocol = protocol::can::CanProtocol::Hec495;
+        ui::CanConfigPanel panel;
+        panel.resize(600, 500);
+        panel.show();
+        panel.setSession(&session);
+        session.open(so);
+        QTRY_COMPARE(session.state(), device::SessionState::Connected);
+        QVERIFY(panel.applyModesButton()->isEnabled());
+        QVERIFY(panel.workModeChoice()->isEnabled());
+        QCOMPARE(panel.pdoModeChoice()->count(), 3);
+        QVERIFY(panel.allOnButton()->isEnabled());
+        QVERIFY(!panel.applyInclButton()->isEnabled());
+        QSignalSpy done(&panel, &ui::CanConfigPanel::requestDone);
+        panel.pdoModeChoice()->setCurrentIndex(panel.pdoModeChoice()->findData(1));
+        panel.workModeChoice()->setCurrentIndex(panel.workModeChoice()->findData(0x0A));
+        panel.applyModesButton()->click();
+        QTRY_COMPARE(done.size(), 2);
+        QVERIFY(done.at(0).at(0).toBool() && done.at(1).at(0).toBool());
+        QCOMPARE(simulator.device().hec().pdoMode, 1u);
+        QCOMPARE(simulator.device().hec().workMode, 0x0Au);
+
+        panel.setSession(nullptr);
+        session.close();
+        QTRY_COMPARE(session.state(), device::SessionState::Closed);
+        so.hec495Extended = true;
+        session.open(so);
+        panel.setSession(&session);
+        QTRY_COMPARE(session.state(), device::SessionState::Connected);
+        QCOMPARE(panel.pdoModeChoice()->count(), 2);
+        QVERIFY(!panel.workModeChoice()->isEnabled());
+        QVERIFY(!panel.allOnButton()->isEnabled());
+        panel.setSession(nullptr);
     }
 };
 

@@ -12,6 +12,7 @@
 #include "device/device_session.h"
 #include "device/hec495_session.h"
 #include "protocol/hipnuc/ascii_command.h"
+#include "protocol/hipnuc/payloads.h"
 #include "firmware/firmware_update_dialog.h"
 #include "calibration/gyro_scale_wizard.h"
 #include "calibration/hec495_calibration_wizard.h"
@@ -68,11 +69,11 @@ bool laptopScreen()
     return qEnvironmentVariableIntValue("IMUDESK_LAYOUT_LAPTOP") == 1;
 }
 
-enum class Kind { Serial, Hec495, Modbus, J1939, CanOpen, Replay, SerialGnss };
+enum class Kind { Serial, Hec495, Modbus, J1939, CanOpen, Replay, SerialGnss, SerialIns };
 const char *kindName(Kind k)
 {
     static const char *const names[] = {"HiPNUC serial", "HEC495", "Modbus", "J1939", "CANopen", "replay",
-                                                 "HiPNUC serial with NMEA"};
+                                                 "HiPNUC serial with NMEA", "HiPNUC serial with every HI83 field"};
     return names[int(k)];
 }
 
@@ -270,6 +271,21 @@ class TstLayout : public QObject {
             return QTest::qWaitFor(
                 [ws] { return !ws->valuesView()->isRowHidden(models::LatestValuesModel::UtcTime); }, 5000);
         }
+        case Kind::SerialIns: { // HI91 beside an HI83 with every field the manual sizes: the details tab
+            sim::SimOptions options;
+            options.model = "HI14";
+            options.firmware = "1.7.1";
+            options.ppsInput = true;
+            if (!w.connectSimulated(options, 115200, error))
+                return false;
+            DeviceWorkspace *ws = w.currentWorkspace();
+            if (!QTest::qWaitFor([ws] { return ws->link().state() == device::SessionState::Connected; }, 5000))
+                return false;
+            namespace hpc = protocol::hipnuc::commands;
+            ws->hipnucSession()->sendCommand(hpc::logHi83Map(protocol::hipnuc::Hi83::kSupportedMask));
+            ws->hipnucSession()->sendCommand(hpc::logOnTime(protocol::hipnuc::Message::HI83, 0.05));
+            return QTest::qWaitFor([ws] { return !ws->detailsDock()->isHidden(); }, 5000);
+        }
         case Kind::Hec495: return w.connectSimulatedHec495(error);
         case Kind::Modbus:
             return ui::LinkFactory::connectModbus(*w.freeWorkspaceForLink(), {}, true, sim::Motion::Static, error);
@@ -312,9 +328,41 @@ class TstLayout : public QObject {
             problems << QStringLiteral("quaternion row shown: %1").arg(!ws->valuesView()->isRowHidden(
                             models::LatestValuesModel::QuatW));
         // Only the panels the link supports.
-        const bool serial = kind == Kind::Serial || kind == Kind::SerialGnss;
+        const bool serial = kind == Kind::Serial || kind == Kind::SerialGnss || kind == Kind::SerialIns;
         if (ws->dockActions().contains(ws->consoleDock()->toggleViewAction()) != serial)
             problems << QStringLiteral("console offered: %1").arg(!serial);
+        // Every HI83 field: the values keep their rows in view, the details are a tab beside them,
+        // all twenty rows and their three-number texts in full.
+        if (kind == Kind::SerialIns) {
+            if (!ws->tabifiedDockWidgets(ws->valuesDock()).contains(ws->detailsDock()))
+                problems << QStringLiteral("the HI83 details are not a tab beside the values");
+            int rows = 0;
+            for (int r = 0; r < ws->detailsView()->model()->rowCount(); ++r)
+                rows += ws->detailsView()->isRowHidden(r) ? 0 : 1;
+            if (rows != 20) // 15 HI83 extras, heave, surge, sway, inclination X and Y
+                problems << QStringLiteral("%1 detail rows, 20 expected").arg(rows);
+            ws->detailsDock()->raise();
+            QTest::qWait(200);
+            const QTableView *details = ws->detailsView();
+            if (!details->isVisible() || details->verticalScrollBar()->isVisible())
+                problems << QStringLiteral("HI83 details hidden or scrolled: %1 px for %2 px of rows")
+                                .arg(details->viewport()->height())
+                                .arg(details->verticalHeader()->length());
+            const QFontMetrics fm = details->fontMetrics();
+            for (int r = 0; r < details->model()->rowCount(); ++r)
+                for (int c = 0; c < details->model()->columnCount() && !details->isRowHidden(r); ++c) {
+                    const QString text = details->model()->index(r, c).data().toString();
+                    if (fm.horizontalAdvance(text) > details->columnWidth(c))
+                        problems << QStringLiteral("HI83 detail \"%1\" cut (%2 px in %3)")
+                                        .arg(text)
+                                        .arg(fm.horizontalAdvance(text))
+                                        .arg(details->columnWidth(c));
+                }
+            if (details->horizontalHeader()->length() > details->viewport()->width())
+                problems << QStringLiteral("HI83 details %1 px wide in %2").arg(details->horizontalHeader()->length()).arg(
+                    details->viewport()->width());
+            ws->valuesDock()->raise();
+        }
         w.disconnectDevice();
         return problems;
     }
@@ -336,7 +384,7 @@ private Q_SLOTS:
         QTest::addColumn<QString>("language");
         for (const QString &lang : {QStringLiteral("en"), QStringLiteral("zh_CN")})
             for (const QSize &size : {kSmall, kLarge})
-                for (int k = 0; k <= int(Kind::SerialGnss); ++k)
+                for (int k = 0; k <= int(Kind::SerialIns); ++k)
                     QTest::addRow("%s %dx%d %s", kindName(Kind(k)), size.width(), size.height(), qPrintable(lang))
                         << k << size << lang;
     }

@@ -309,6 +309,48 @@ private Q_SLOTS:
         QCOMPARE(h.lowerBound(TimeAxis::Device, h.deviceTimeOffset() + 0.0195), size_t(500));
     }
 
+    void twoClocksOneAxis()
+    {
+        // HI91 at 100 Hz on the UTC day (08:00:00 on, PPS-aligned) interleaved with HI83 at
+        // 100 Hz whose system_time_us still counts from power-on: the axis follows HI91 alone,
+        // one segment, 10 ms a row pair, and an HI83 row sits at the HI91 time before it.
+        ChannelHistory h;
+        for (int i = 0; i < 400; ++i) {
+            Sample a = makeSample(int64_t(i) * 10'000'000, 28'800'000.0 + i * 10.0, double(i));
+            Sample b = makeSample(int64_t(i) * 10'000'000 + 5'000'000, 12'000.0 + i * 10.0, double(i));
+            b.source = "HI83";
+            h.append(std::vector<Sample>{a, b});
+        }
+        QCOMPARE(h.segmentCount(), 1);
+        QVERIFY(nonDecreasing(h, TimeAxis::Device));
+        QCOMPARE(h.deviceTime(h.size() - 1) - h.deviceTime(0), 3.99);
+        QCOMPARE(h.deviceTime(1), h.deviceTime(0));
+        QVERIFY(!(h.flags(1) & ChannelHistory::FlagDeviceTime));
+        // HI91 stops; after kClockHandOverS of host time HI83's clock takes over (a new segment).
+        for (int i = 400; i < 700; ++i) {
+            Sample b = makeSample(int64_t(i) * 10'000'000 + 5'000'000, 12'000.0 + i * 10.0, double(i));
+            b.source = "HI83";
+            h.append(std::vector<Sample>{b});
+        }
+        QCOMPARE(h.segmentCount(), 2);
+        QVERIFY(nonDecreasing(h, TimeAxis::Device));
+        QVERIFY(h.flags(h.size() - 1) & ChannelHistory::FlagDeviceTime);
+        QCOMPARE(h.deviceTime(h.size() - 1) - h.deviceTimeOffset(), 12.0 + 6.99);
+
+        // A slow type first (HI83 at 20 Hz), then a busy one beside it (HI91 at 100 Hz): the
+        // busy one's clock carries the axis after one window, so its rows are not stairs.
+        ChannelHistory g;
+        for (int i = 0; i < 1000; ++i) {
+            const bool hi83 = i % 5 == 0;
+            Sample x = makeSample(int64_t(i) * 10'000'000, (hi83 ? 12'000.0 : 28'800'000.0) + i * 10.0, double(i));
+            x.source = hi83 ? "HI83" : "HI91";
+            g.append(std::vector<Sample>{x});
+        }
+        QCOMPARE(g.segmentCount(), 2);
+        QVERIFY(g.flags(g.size() - 2) & ChannelHistory::FlagDeviceTime); // an HI91 row
+        QVERIFY(!(g.flags(g.size() - 5) & ChannelHistory::FlagDeviceTime)); // an HI83 row
+    }
+
     void deviceGapStaysAGap_data()
     {
         QTest::addColumn<double>("rateHz");

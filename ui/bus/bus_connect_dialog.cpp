@@ -145,6 +145,10 @@ CanConnectDialog::CanConnectDialog(QWidget *parent) : QDialog(parent)
     m_protocol->addItem(QStringLiteral("CANopen"), int(protocol::can::CanProtocol::CanOpen));
     m_protocol->addItem(tr("HEC495 compass"), int(protocol::can::CanProtocol::Hec495));
     form->addRow(tr("P&rotocol:"), m_protocol);
+    m_hecExtended = new QCheckBox(tr("Extended frames (0x18FA…)"), this);
+    m_hecExtended->setToolTip(tr("The HEC495's extended-frame variant: requests on 0x18FA0227, replies on 0x18FA0216, "
+                                 "data on 0x18FA0316 and 0x18FA0416 (its manual, \"CAN 扩展帧命令格式\")"));
+    form->addRow(QString(), m_hecExtended);
     m_node = new QSpinBox(this);
     m_node->setRange(-1, 253);
     m_node->setSpecialValueText(tr("First that sends"));
@@ -164,6 +168,11 @@ CanConnectDialog::CanConnectDialog(QWidget *parent) : QDialog(parent)
     layout->addLayout(form);
     addButtons(this, layout);
     connect(m_plugin, &QComboBox::currentIndexChanged, this, &CanConnectDialog::refreshInterfaces);
+    auto hecOnly = [this] {
+        m_hecExtended->setEnabled(m_protocol->currentData().toInt() == int(protocol::can::CanProtocol::Hec495));
+    };
+    connect(m_protocol, &QComboBox::currentIndexChanged, this, hecOnly);
+    hecOnly();
     const int virt = m_plugin->findText(QStringLiteral("virtualcan"));
     if (virt >= 0) {
         m_plugin->setCurrentIndex(virt);
@@ -197,6 +206,7 @@ device::CanSessionOptions CanConnectDialog::options() const
         o.protocol = protocol::can::CanProtocol::J1939;
     o.node = m_node->value();
     o.hipnucNodeIdObject = uint16_t(m_firmware->currentData().toInt());
+    o.hec495Extended = o.protocol == protocol::can::CanProtocol::Hec495 && m_hecExtended->isChecked();
     return o;
 }
 

@@ -61,6 +61,7 @@ public:
     QComboBox *interfaceCombo() const { return m_interface; }
     QComboBox *protocolCombo() const { return m_protocol; }
     QCheckBox *simulateCheck() const { return m_simulate; }
+    QCheckBox *hec495ExtendedCheck() const { return m_hecExtended; }
 
 private:
     void refreshInterfaces();
@@ -72,6 +73,7 @@ private:
     QSpinBox *m_node = nullptr;
     QComboBox *m_firmware = nullptr;
     QCheckBox *m_simulate = nullptr;
+    QCheckBox *m_hecExtended = nullptr; // HEC495: the extended-frame variant
 };
 
 } // namespace imudesk::ui

@@ -32,7 +32,11 @@ CanConfigPanel::CanConfigPanel(QWidget *parent)
       m_applyHeartbeat(new QPushButton(tr("Apply"), this)), m_node(new QSpinBox(this)), m_applyNode(new QPushButton(tr("Apply"), this)),
       m_bitrate(new QComboBox(this)), m_applyBitrate(new QPushButton(tr("Apply"), this)), m_attitude(new QComboBox(this)),
       m_applyAttitude(new QPushButton(tr("Apply"), this)), m_outputOn(new QPushButton(tr("Output on"), this)),
-      m_outputOff(new QPushButton(tr("Output off"), this)), m_save(new QPushButton(tr("Save"), this)),
+      m_outputOff(new QPushButton(tr("Output off"), this)), m_trigger(new QPushButton(tr("Trigger once"), this)),
+      m_inclX(new QCheckBox(tr("X reversed"), this)), m_inclY(new QCheckBox(tr("Y reversed"), this)),
+      m_applyIncl(new QPushButton(tr("Apply"), this)), m_pdoMode(new QComboBox(this)), m_workMode(new QComboBox(this)),
+      m_applyModes(new QPushButton(tr("Apply"), this)), m_allOn(new QPushButton(tr("All nodes on"), this)),
+      m_allOff(new QPushButton(tr("All nodes off"), this)), m_save(new QPushButton(tr("Save"), this)),
       m_reset(new QPushButton(tr("Reset"), this)), m_factory(new QPushButton(tr("Factory defaults…"), this)),
       m_scan(new QPushButton(tr("Scan nodes 1–127"), this)), m_cancelScan(new QPushButton(tr("Cancel"), this)),
       m_scanProgress(new QProgressBar(this)), m_log(new QPlainTextEdit(this))
@@ -50,6 +54,15 @@ CanConfigPanel::CanConfigPanel(QWidget *parent)
     m_attitude->addItem(tr("Set relative zero (2)"), 2);
     m_attitude->addItem(tr("Auto level (J1939 3)"), 3);
     m_attitude->addItem(tr("Clear zero (5)"), 5);
+    m_trigger->setToolTip(tr("J1939 register 0x96: the module sends the chosen PGN once (no reply; the frame is the answer)"));
+    m_inclX->setToolTip(tr("Inclinometer X axis direction: J1939 register 0x9E, CANopen object 0x209E (0 default, 1 reversed)"));
+    m_inclY->setToolTip(tr("Inclinometer Y axis direction: J1939 register 0x9F, CANopen object 0x209F (0 default, 1 reversed)"));
+    m_workMode->addItem(tr("Pitch, roll, acceleration, rate (0x02)"), 0x02);
+    m_workMode->addItem(tr("Rate at 500 Hz (0x0A)"), 0x0A);
+    m_workMode->setToolTip(tr("HEC495 work mode, object 0x6245"));
+    m_pdoMode->setToolTip(tr("HEC495 PDO mode, object 0x1080"));
+    m_allOn->setToolTip(tr("NMT start to node 0: every node on the bus starts its PDOs (HEC495: not saved)"));
+    m_allOff->setToolTip(tr("NMT stop to node 0: every node on the bus stops its PDOs (HEC495: not saved)"));
     m_log->setReadOnly(true);
     m_log->setMaximumBlockCount(500);
     m_cancelScan->setEnabled(false);
@@ -66,13 +79,17 @@ CanConfigPanel::CanConfigPanel(QWidget *parent)
     auto *form = new QFormLayout;
     form->addRow(tr("Protocol:"), m_protocol);
     form->addRow(tr("Output period:"), row(m_output, m_period, m_applyPeriod));
+    form->addRow(QString(), m_trigger);
     form->addRow(QString(), m_syncMode);
     form->addRow(tr("SYNC:"), row(m_sendSync, m_syncPeriod));
     form->addRow(tr("Heartbeat:"), row(m_heartbeat, m_applyHeartbeat));
     form->addRow(tr("Node ID:"), row(m_node, m_applyNode));
     form->addRow(tr("CAN bit rate:"), row(m_bitrate, m_applyBitrate));
     form->addRow(tr("Attitude:"), row(m_attitude, m_applyAttitude));
+    form->addRow(tr("Inclinometer:"), row(m_inclX, m_inclY, m_applyIncl));
+    form->addRow(tr("HEC495 PDO:"), row(m_pdoMode, m_workMode, m_applyModes));
     form->addRow(tr("Output:"), row(m_outputOn, m_outputOff));
+    form->addRow(tr("Every node:"), row(m_allOn, m_allOff));
     form->addRow(tr("Settings:"), row(m_save, m_reset, m_factory));
     form->addRow(tr("Discovery:"), row(m_scan, m_scanProgress, m_cancelScan));
     auto *lay = new QVBoxLayout(this);
@@ -115,6 +132,33 @@ CanConfigPanel::CanConfigPanel(QWidget *parent)
     connect(m_outputOff, &QPushButton::clicked, this, [this] {
         if (m_session)
             track(m_session->setOutputEnabled(false), tr("output off"));
+    });
+    connect(m_trigger, &QPushButton::clicked, this, [this] {
+        if (m_session)
+            track(m_session->trigger(m_output->currentData().toUInt()), tr("trigger %1 once").arg(m_output->currentText()));
+    });
+    connect(m_applyIncl, &QPushButton::clicked, this, [this] {
+        if (!m_session)
+            return;
+        track(m_session->setInclinometerSign(0, m_inclX->isChecked()),
+              m_inclX->isChecked() ? tr("inclinometer X reversed") : tr("inclinometer X default"));
+        track(m_session->setInclinometerSign(1, m_inclY->isChecked()),
+              m_inclY->isChecked() ? tr("inclinometer Y reversed") : tr("inclinometer Y default"));
+    });
+    connect(m_applyModes, &QPushButton::clicked, this, [this] {
+        if (!m_session)
+            return;
+        track(m_session->setHec495PdoMode(m_pdoMode->currentData().toInt()), m_pdoMode->currentText());
+        if (m_workMode->isEnabled())
+            track(m_session->setHec495WorkMode(m_workMode->currentData().toInt()), m_workMode->currentText());
+    });
+    connect(m_allOn, &QPushButton::clicked, this, [this] {
+        if (m_session)
+            track(m_session->setAllNodesOutput(true), tr("every node on"));
+    });
+    connect(m_allOff, &QPushButton::clicked, this, [this] {
+        if (m_session)
+            track(m_session->setAllNodesOutput(false), tr("every node off"));
     });
     connect(m_save, &QPushButton::clicked, this, [this] {
         if (m_session)
@@ -159,6 +203,8 @@ void CanConfigPanel::setSession(device::CanSession *session)
     if (session) {
         m_connections << connect(session, &device::CanSession::requestFinished, this, &CanConfigPanel::onResult);
         m_connections << connect(session, &device::CanSession::protocolDetected, this, &CanConfigPanel::refreshForProtocol);
+        // A protocol given when opening (not detected) counts from the connection on.
+        m_connections << connect(session, &device::CanSession::stateChanged, this, [this] { refreshForProtocol(); });
         m_connections << connect(session, &device::CanSession::targetNodeChanged, this, [this](int n) {
             if (n >= 1 && n <= 127)
                 m_node->setValue(n);
@@ -220,6 +266,29 @@ void CanConfigPanel::refreshForProtocol()
     for (QWidget *w : std::initializer_list<QWidget *>{m_applyNode, m_applyBitrate, m_outputOn, m_outputOff})
         w->setEnabled(any && p != CanProtocol::Auto);
     m_applyAttitude->setEnabled(hip);
+    m_trigger->setEnabled(p == CanProtocol::J1939);
+    for (QWidget *w : std::initializer_list<QWidget *>{m_inclX, m_inclY, m_applyIncl})
+        w->setEnabled(hip);
+    const bool hec = p == CanProtocol::Hec495;
+    const bool extended = hec && m_session->options().hec495Extended;
+    const int mode = m_pdoMode->currentData().toInt();
+    m_pdoMode->clear();
+    if (extended) { // the extended variant: message one (X) or both (X and Y)
+        m_pdoMode->addItem(tr("X message only (0)"), 0);
+        m_pdoMode->addItem(tr("X and Y messages (1)"), 1);
+    } else {
+        m_pdoMode->addItem(tr("Float (0)"), 0);
+        m_pdoMode->addItem(tr("Fixed point (1)"), 1);
+        m_pdoMode->addItem(tr("Float, 0x180 and 0x280 only (3)"), 3);
+    }
+    if (const int i = m_pdoMode->findData(mode); i >= 0)
+        m_pdoMode->setCurrentIndex(i);
+    m_pdoMode->setEnabled(hec);
+    m_workMode->setEnabled(hec && !extended);
+    m_applyModes->setEnabled(hec);
+    const bool nmtAll = p == CanProtocol::CanOpen || (hec && !extended);
+    m_allOn->setEnabled(nmtAll);
+    m_allOff->setEnabled(nmtAll);
     for (QWidget *w : std::initializer_list<QWidget *>{m_save, m_reset, m_factory})
         w->setEnabled(hip);
     m_scan->setEnabled(any);

@@ -1,9 +1,11 @@
 #pragma once
 // Configuration over CAN for one CanSession: output period per J1939 PGN / CANopen TPDO (or
-// the HEC495 PDO rate), SYNC mode, "Send SYNC" and periodic SYNC, heartbeat, node ID (the
-// session follows it), CAN bit rate, attitude reset, output on/off, save / reset / factory,
-// and the node scan with progress and cancel. Every write is confirmed by the device's reply
-// or read back by the session; the outcome goes to the panel's log.
+// the HEC495 PDO rate), a J1939 one-shot trigger of the chosen PGN, SYNC mode, "Send SYNC" and
+// periodic SYNC, heartbeat, node ID (the session follows it), CAN bit rate, attitude reset,
+// inclinometer axis directions, the HEC495's PDO and work modes, output on/off for the node or
+// every node (NMT), save / reset / factory, and the node scan with progress and cancel. Every
+// write is confirmed by the device's reply, read back, or (NMT) seen in the PDOs; the outcome
+// goes to the panel's log. The rows a protocol does not have are disabled.
 #include "device/can_session.h"
 
 #include <QPointer>
@@ -43,6 +45,15 @@ public:
     QPushButton *scanButton() const { return m_scan; }
     QProgressBar *scanProgressBar() const { return m_scanProgress; }
     QPlainTextEdit *log() const { return m_log; }
+    QPushButton *triggerButton() const { return m_trigger; }
+    QCheckBox *inclXReversedCheck() const { return m_inclX; }
+    QCheckBox *inclYReversedCheck() const { return m_inclY; }
+    QPushButton *applyInclButton() const { return m_applyIncl; }
+    QComboBox *pdoModeChoice() const { return m_pdoMode; }
+    QComboBox *workModeChoice() const { return m_workMode; }
+    QPushButton *applyModesButton() const { return m_applyModes; }
+    QPushButton *allOnButton() const { return m_allOn; }
+    QPushButton *allOffButton() const { return m_allOff; }
 
 Q_SIGNALS:
     // A request finished (also written to the log).
@@ -72,6 +83,15 @@ private:
     QPushButton *m_applyAttitude;
     QPushButton *m_outputOn;
     QPushButton *m_outputOff;
+    QPushButton *m_trigger;
+    QCheckBox *m_inclX;
+    QCheckBox *m_inclY;
+    QPushButton *m_applyIncl;
+    QComboBox *m_pdoMode;
+    QComboBox *m_workMode;
+    QPushButton *m_applyModes;
+    QPushButton *m_allOn;
+    QPushButton *m_allOff;
     QPushButton *m_save;
     QPushButton *m_reset;
     QPushButton *m_factory;

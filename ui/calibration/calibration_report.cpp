@@ -17,6 +17,7 @@
 #include <QSaveFile>
 #include <QTextDocument>
 
+#include <cmath>
 #include <set>
 
 Q_LOGGING_CATEGORY(lcCalReport, "imudesk.ui.calreport")
@@ -41,6 +42,10 @@ constexpr MetricSpec kSpecs[] = {
     {"fit_error_pct", QT_TRANSLATE_NOOP("CalibrationReport", "Fit error (%)"), 2},
     {"residual_rms_ut", QT_TRANSLATE_NOOP("CalibrationReport", "Residual RMS (uT)"), 3},
     {"coverage_pct", QT_TRANSLATE_NOOP("CalibrationReport", "Sphere coverage (%)"), 0},
+    {"predicted_heading_error_deg",
+     QT_TRANSLATE_NOOP("CalibrationReport", "Predicted heading error, level module (deg)"), 2},
+    {"hard_iron_sigma_ut", QT_TRANSLATE_NOOP("CalibrationReport", "Hard-iron uncertainty, RMS (uT)"), 3},
+    {"soft_iron_sigma_pct", QT_TRANSLATE_NOOP("CalibrationReport", "Soft-iron uncertainty, RMS (%)"), 2},
     {"eigen_ratio", QT_TRANSLATE_NOOP("CalibrationReport", "Eigenvalue ratio (max/min)"), 2},
     {"samples", QT_TRANSLATE_NOOP("CalibrationReport", "Samples fitted"), -1},
     {"outliers", QT_TRANSLATE_NOOP("CalibrationReport", "Samples set aside as outliers"), -1},
@@ -85,6 +90,11 @@ constexpr MetricSpec kSpecs[] = {
 
 QString valueText(const QJsonValue &v, int decimals)
 {
+    // A figure the run could not determine (null), or an unbounded one (written as 1e12).
+    if (v.isNull())
+        return CalibrationReport::tr("unknown");
+    if (v.isDouble() && std::fabs(v.toDouble()) >= 1e12)
+        return CalibrationReport::tr("unbounded");
     if (v.isBool())
         return v.toBool() ? CalibrationReport::tr("yes") : CalibrationReport::tr("no");
     if (v.isDouble()) {

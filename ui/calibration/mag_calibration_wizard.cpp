@@ -29,6 +29,17 @@ void setVerdictHeadline(QLabel *label, calib::MagVerdict verdict, const QString 
     label->setText(text);
 }
 
+// A figure of the fit's accuracy: unknown (NaN) when the fit did not get that far,
+// unbounded (inf) when the data does not determine it.
+QString accuracyFigure(double v, int decimals)
+{
+    if (std::isnan(v))
+        return MagCalibrationWizard::tr("unknown");
+    if (std::isinf(v))
+        return MagCalibrationWizard::tr("unbounded");
+    return QString::number(v, 'f', decimals);
+}
+
 QWizardPage *textPage(const QString &title, const QString &text)
 {
     auto *page = new QWizardPage;
@@ -266,7 +277,10 @@ void MagCalibrationWizard::liveFit()
     subset.reserve(m_samples.size() / step + 1);
     for (size_t i = 0; i < m_samples.size(); i += step)
         subset.push_back(m_samples[i]);
-    m_live = calib::MagCalibrator().calibrate(subset);
+    // Fewer resampled fits than the final fit: the live verdict refreshes every second.
+    calib::MagCalibrator::Options live;
+    live.replicates = kLiveReplicates;
+    m_live = calib::MagCalibrator(live).calibrate(subset);
     m_haveLive = true;
     setVerdictHeadline(m_liveVerdict, m_live.verdict,
                        tr("So far: %1. %2").arg(calib::MagCalResult::verdictText(m_live.verdict), m_live.reason));
@@ -292,6 +306,12 @@ QString MagCalibrationWizard::liveFiguresText() const
                     .arg(m_live.fieldUt, 0, 'f', 1)
                     .arg(m_live.residualRmsUt, 0, 'f', 2)
                     .arg(m_live.fitErrorPct, 0, 'f', 1);
+    if (m_haveLive && !std::isnan(m_live.predictedHeadingErrorDeg))
+        rows += tr("<tr><td>Predicted heading error</td><td align=right><b>%1°</b></td><td>level (pass &lt; %2°, "
+                   "refused &gt; %3°)</td></tr>")
+                    .arg(accuracyFigure(m_live.predictedHeadingErrorDeg, 2))
+                    .arg(calib::MagCalibrator::kWarnHeadingErrorDeg, 0, 'f', 1)
+                    .arg(calib::MagCalibrator::kRefuseHeadingErrorDeg, 0, 'f', 0);
     rows += tr("<tr><td>Samples</td><td align=right><b>%1</b></td><td></td></tr>").arg(m_samples.size());
     return QStringLiteral("<table cellspacing=4>") + rows + QStringLiteral("</table>");
 }
@@ -424,6 +444,17 @@ QString MagCalibrationWizard::resultText() const
                     .arg(r.fieldUt, 0, 'f', 1)
                     .arg(r.fitErrorPct, 0, 'f', 2)
                     .arg(r.residualRmsUt, 0, 'f', 2);
+    if (!std::isnan(r.predictedHeadingErrorDeg)) {
+        // Only the full fit is refused for its accuracy; the other fits warn.
+        const QString limits = r.mode == calib::MagCalMode::Full3D
+            ? tr("level module; pass below %1°, refused above %2°")
+                  .arg(calib::MagCalibrator::kWarnHeadingErrorDeg, 0, 'f', 1)
+                  .arg(calib::MagCalibrator::kRefuseHeadingErrorDeg, 0, 'f', 0)
+            : tr("level module; a warning above %1°").arg(calib::MagCalibrator::kWarnHeadingErrorDeg, 0, 'f', 1);
+        text += tr("Predicted heading error: %1° (%2)\nHard-iron uncertainty: +-%3 uT\nSoft-iron uncertainty: +-%4 %\n")
+                    .arg(accuracyFigure(r.predictedHeadingErrorDeg, 2), limits, accuracyFigure(r.hardIronSigmaUt, 2),
+                         std::isnan(r.softIronSigmaPct) ? tr("kept from before") : accuracyFigure(r.softIronSigmaPct, 2));
+    }
     text += tr("Coverage: %1 %\nEigenvalue ratio: %2\nSamples: %3")
                 .arg(r.coveragePct, 0, 'f', 0)
                 .arg(r.eigenRatio, 0, 'f', 1)

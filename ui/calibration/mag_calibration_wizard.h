@@ -5,7 +5,8 @@
 //   orientations <= 10 uT) -> rotation (live MagSphereView with covered cells and the
 //   missing rotation; the device-side run, calib::MagCalSession, beside it; "Fit" runs our
 //   calib::MagCalibrator on the same samples) -> result (verdict, metrics, before/after
-//   sphere, the troubleshooting of 9.31 when it is not usable) -> heading check (turn
+//   sphere, the predicted heading error with the hard- and soft-iron uncertainty, the
+//   troubleshooting of 9.31 when it is not usable) -> heading check (turn
 //   360 deg flat: the heading must change continuously, no jump > 10 deg).
 // Constructed with the device's session and its firmware (which picks the device flow);
 // reads the SampleStore on a 20 Hz clock. Each fit shown on the result page is kept in the
@@ -51,6 +52,7 @@ public:
     enum PageId { IntroPage, ModePage, EnvironmentPage, RotationPage, ResultPage, HeadingPage };
     static constexpr size_t kMaxSamples = 20000;
     static constexpr double kMaxHeadingJumpDeg = 10.0;
+    static constexpr int kLiveReplicates = 12; // resampled fits behind the live verdict (final fit: more)
     static constexpr int kRebootSettleMs = 2500; // after REBOOT, before reading the mode back
 
     MagCalibrationWizard(device::DeviceSession &session, const model::FirmwareVersion &firmware,

@@ -35,12 +35,37 @@ namespace {
 // fields this link has sent (a compass sends no quaternion, a HI83 sends its position). The
 // status word and the frame type stay in the status bar (the flags coloured by meaning, the
 // frame type with its rate), so the table fits without a scroll bar beside the 3D attitude.
-bool rowInTable(models::LatestValuesModel::Row row, bool everSeen, bool anyData)
+bool rowInTable(models::LatestValuesModel::Row row, bool everSeen, bool anyData, bool detailsShown = false)
 {
     using Model = models::LatestValuesModel;
-    if (row == Model::StatusFlags || row == Model::FrameType)
+    if (row == Model::StatusFlags || row == Model::FrameType || Model::isDetailRow(row)
+        || (detailsShown && Model::isSecondaryRow(row)))
         return false;
     return anyData ? everSeen : Model::isCoreRow(row);
+}
+
+// The details table: the HI83 details, and beside them ship motion and inclination.
+bool rowInDetails(models::LatestValuesModel::Row row, bool everSeen)
+{
+    using Model = models::LatestValuesModel;
+    return everSeen && (Model::isDetailRow(row) || Model::isSecondaryRow(row));
+}
+
+// The values and details tables: read-only rows, every column in full (no horizontal scroll bar).
+void setUpValuesTable(QTableView *view)
+{
+    view->verticalHeader()->hide();
+    // The line height and a pixel of spacing: an INS module's rows (35 with ship motion and
+    // inclination, in Chinese) still fit a laptop screen.
+    view->verticalHeader()->setMinimumSectionSize(view->fontMetrics().height() + 1);
+    view->verticalHeader()->setDefaultSectionSize(view->fontMetrics().height() + 1);
+    view->setAlternatingRowColors(true);
+    view->setSelectionBehavior(QAbstractItemView::SelectRows);
+    view->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    view->setWordWrap(false);
+    view->setCornerButtonEnabled(false);
+    view->horizontalHeader()->setDefaultAlignment(Qt::AlignLeft | Qt::AlignVCenter);
+    view->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
 }
 
 QDockWidget *makeDock(QWidget *content, const QString &objectName)
@@ -77,22 +102,25 @@ DeviceWorkspace::DeviceWorkspace(QWidget *parent) : QMainWindow(parent)
     m_valuesView = new QTableView(this);
     m_valuesView->setObjectName(QStringLiteral("valuesView"));
     m_valuesView->setModel(m_valuesModel);
-    m_valuesView->verticalHeader()->hide();
-    m_valuesView->verticalHeader()->setDefaultSectionSize(m_valuesView->fontMetrics().height() + 3);
-    m_valuesView->setAlternatingRowColors(true);
-    m_valuesView->setSelectionBehavior(QAbstractItemView::SelectRows);
-    m_valuesView->setEditTriggers(QAbstractItemView::NoEditTriggers);
-    m_valuesView->setWordWrap(false);
-    m_valuesView->setCornerButtonEnabled(false);
+    setUpValuesTable(m_valuesView);
     auto *header = m_valuesView->horizontalHeader();
     // Every column in full (resizeValueColumns() sizes them and the view's minimum width):
     // a narrow dock never hides the numbers or units behind a scroll bar.
     header->setSectionResizeMode(QHeaderView::Fixed);
     header->setStretchLastSection(true);
-    header->setDefaultAlignment(Qt::AlignLeft | Qt::AlignVCenter);
-    m_valuesView->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
     for (int r = 0; r < models::LatestValuesModel::RowCount; ++r)
         m_valuesView->setRowHidden(r, !rowInTable(models::LatestValuesModel::Row(r), false, false));
+    // The details (an INS configuration's HI83 extras, and beside them ship motion and
+    // inclination), from the same model: their columns sized to their texts (vectors of
+    // three), shown once a frame carried an HI83 extra.
+    m_detailsView = new QTableView(this);
+    m_detailsView->setObjectName(QStringLiteral("detailsView"));
+    m_detailsView->setModel(m_valuesModel);
+    setUpValuesTable(m_detailsView);
+    m_detailsView->horizontalHeader()->setSectionResizeMode(QHeaderView::Fixed);
+    m_detailsView->horizontalHeader()->setStretchLastSection(true);
+    for (int r = 0; r < models::LatestValuesModel::RowCount; ++r)
+        m_detailsView->setRowHidden(r, true);
     // Centre: the live charts.
     m_charts = new ChartPanel(this);
     m_charts->setObjectName(QStringLiteral("chartPanel"));
@@ -103,6 +131,7 @@ DeviceWorkspace::DeviceWorkspace(QWidget *parent) : QMainWindow(parent)
     // the raw link traffic, the log of every command this window sent with its reply, and
     // the recording controls. applyPreset() puts them in place.
     m_valuesDock = makeDock(m_valuesView, QStringLiteral("valuesDock"));
+    m_detailsDock = makeDock(m_detailsView, QStringLiteral("detailsDock"));
     m_attitude = new AttitudeWidget(this);
     m_attitude->setObjectName(QStringLiteral("attitudeWidget"));
     m_attitudeDock = makeDock(m_attitude, QStringLiteral("attitudeDock"));
@@ -247,6 +276,10 @@ void DeviceWorkspace::applyPreferences(const Preferences &prefs)
 
 void DeviceWorkspace::resetViews()
 {
+    m_detailsOffered = false;
+    m_detailsColumns = {};
+    m_detailsView->setMinimumWidth(0);
+    m_detailsDock->hide();
     m_identity.reset();
     m_stats.reset();
     m_chartSeq = 0;
@@ -421,14 +454,29 @@ void DeviceWorkspace::refreshViews()
     // The rows follow what the link sends (see rowInTable).
     bool rowsChanged = false;
     const bool anyData = m_valuesModel->everSeen(models::LatestValuesModel::FrameType);
-    for (int r = 0; r < models::LatestValuesModel::RowCount; ++r) {
-        const auto row = models::LatestValuesModel::Row(r);
-        const bool hide = !rowInTable(row, m_valuesModel->everSeen(row), anyData);
+    using Model = models::LatestValuesModel;
+    bool anyDetail = false;
+    for (int r = Model::UtcDate; r <= Model::GnssVelocity; ++r)
+        anyDetail = anyDetail || m_valuesModel->everSeen(Model::Row(r));
+    if (anyDetail && !m_detailsOffered) { // a tab beside the values, which stay in front
+        m_detailsOffered = true;
+        placeDetailsDock();
+        rowsChanged = true; // the right column makes room for the details' columns
+    }
+    for (int r = 0; r < Model::RowCount; ++r) {
+        const auto row = Model::Row(r);
+        const bool seen = m_valuesModel->everSeen(row);
+        const bool hide = !rowInTable(row, seen, anyData, m_detailsOffered);
         if (m_valuesView->isRowHidden(r) != hide) {
             m_valuesView->setRowHidden(r, hide);
             rowsChanged = true;
         }
+        const bool hideDetail = !(m_detailsOffered && rowInDetails(row, seen));
+        if (m_detailsView->isRowHidden(r) != hideDetail)
+            m_detailsView->setRowHidden(r, hideDetail);
     }
+    if (m_detailsOffered)
+        resizeDetailColumns();
     if (rowsChanged && followsWindow())
         fitDocks(); // room for the new rows
     m_flags->setStatus(values && values->has(model::FieldMainStatus) ? std::optional<quint16>(values->mainStatus)
@@ -615,6 +663,7 @@ void DeviceWorkspace::retranslateUi()
     m_rawDock->setWindowTitle(tr("Raw bytes"));
     m_commandLogDock->setWindowTitle(tr("Command log"));
     m_valuesDock->setWindowTitle(tr("Values"));
+    m_detailsDock->setWindowTitle(tr("Details"));
     m_attitudeDock->setWindowTitle(tr("3D attitude"));
     m_configDock->setWindowTitle(tr("Configuration"));
     m_recordingDock->setWindowTitle(tr("Recording"));

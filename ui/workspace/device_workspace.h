@@ -24,6 +24,7 @@
 #include <QPointer>
 #include <QTimer>
 
+#include <array>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -133,6 +134,8 @@ public:
     RawBytesView *rawBytesView() const { return m_rawView; }
     CommandLogWidget *commandLog() const { return m_commandLog; }
     QTableView *valuesView() const { return m_valuesView; }
+    QTableView *detailsView() const { return m_detailsView; }
+    QDockWidget *detailsDock() const { return m_detailsDock; }
     models::LatestValuesModel *valuesModel() const { return m_valuesModel; }
     StatusFlagsWidget *statusFlags() const { return m_flags; }
     // The texts of the status bar's labels, joined by " | ".
@@ -188,6 +191,8 @@ private:
     QList<QPair<QDockWidget *, device::DeviceLink::Capability>> capabilityDocks() const;
     void retranslateUi();
     void resizeValueColumns();
+    void placeDetailsDock(); // tabbed behind the values, visible once offered (not in Calibrate)
+    void resizeDetailColumns();
     void stopSimulator();
     // Makes `link` the one shown: the old link's docks and panels go, then the old link; the
     // views start afresh and the docks follow the new link's capabilities.
@@ -217,6 +222,10 @@ private:
 
     models::LatestValuesModel *m_valuesModel = nullptr;
     QTableView *m_valuesView = nullptr;
+    QTableView *m_detailsView = nullptr;  // the HI83 detail rows of the same model
+    QDockWidget *m_detailsDock = nullptr; // behind the values, once a frame carried a detail
+    bool m_detailsOffered = false;
+    std::array<int, 3> m_detailsColumns{}; // widest text so far per column (resizeDetailColumns)
     QDockWidget *m_valuesDock = nullptr;
     ChartPanel *m_charts = nullptr;
     AttitudeWidget *m_attitude = nullptr;

@@ -54,6 +54,15 @@ void DeviceWorkspace::placeLinkDock(QDockWidget *dock)
     }
 }
 
+void DeviceWorkspace::placeDetailsDock()
+{
+    m_detailsDock->setFloating(false);
+    addDockWidget(Qt::RightDockWidgetArea, m_detailsDock);
+    tabifyDockWidget(m_valuesDock, m_detailsDock);
+    m_detailsDock->setVisible(m_detailsOffered && m_preset != LayoutPreset::Calibrate);
+    m_valuesDock->raise();
+}
+
 void DeviceWorkspace::resizeValueColumns()
 {
     using Model = models::LatestValuesModel;
@@ -77,6 +86,35 @@ void DeviceWorkspace::resizeValueColumns()
     // The last column stretches with the dock: remember what the columns need, not what they got.
     m_valuesColumnsWidth = m_valuesView->columnWidth(Model::QuantityColumn) + valueWidth + unitWidth;
     m_valuesView->setMinimumWidth(valuesTableWidth());
+}
+
+void DeviceWorkspace::resizeDetailColumns()
+{
+    // Each column as wide as its widest text so far (never narrower: numbers that change do
+    // not make the columns jump), the view no narrower than its columns: the right column
+    // widens for them, no text is cut.
+    using Model = models::LatestValuesModel;
+    const QFontMetrics fm = m_detailsView->fontMetrics();
+    constexpr int kCellPadding = 14;
+    bool changed = false;
+    for (int c = 0; c < Model::ColumnCount; ++c) {
+        int w = m_detailsView->horizontalHeader()->fontMetrics().horizontalAdvance(
+                    m_valuesModel->headerData(c, Qt::Horizontal).toString())
+            + 2 * kCellPadding;
+        for (int r = 0; r < Model::RowCount; ++r)
+            if (!m_detailsView->isRowHidden(r))
+                w = std::max(w, fm.horizontalAdvance(m_valuesModel->index(r, c).data().toString()) + kCellPadding);
+        if (w > m_detailsColumns[size_t(c)]) {
+            m_detailsColumns[size_t(c)] = w;
+            m_detailsView->setColumnWidth(c, w);
+            changed = true;
+        }
+    }
+    if (changed)
+        m_detailsView->setMinimumWidth(
+            2 * m_detailsView->frameWidth()
+            + m_detailsView->style()->pixelMetric(QStyle::PM_ScrollBarExtent, nullptr, m_detailsView->verticalScrollBar())
+            + m_detailsColumns[0] + m_detailsColumns[1] + m_detailsColumns[2]);
 }
 
 int DeviceWorkspace::valuesTableWidth() const
@@ -172,6 +210,7 @@ void DeviceWorkspace::applyPreset(LayoutPreset preset)
     }
     splitDockWidget(m_valuesDock, m_attitudeDock, Qt::Vertical);
     tabifyDockWidget(m_valuesDock, m_configDock);
+    placeDetailsDock();
     const QList<QDockWidget *> bottom{m_consoleDock, m_rawDock, m_commandLogDock, m_recordingDock};
     for (QDockWidget *dock : bottom) {
         dock->setFloating(false);
@@ -218,10 +257,11 @@ void DeviceWorkspace::fitDocks()
     // attitude view gets room (the settings table wants more in Configure).
     // Configure: the settings table is what the user came for, the charts keep half the width.
     const double most = m_preset == LayoutPreset::Configure ? 0.5 : 0.45;
-    int right = std::max(valuesTableWidth(), int(w * 0.24));
+    int right = std::max({valuesTableWidth(), m_detailsOffered ? m_detailsView->minimumWidth() : 0, int(w * 0.24)});
     if (m_preset == LayoutPreset::Configure)
         right = std::max(right, int(w * most));
-    right = std::min(right, std::max(valuesTableWidth(), int(w * most)));
+    right = std::min(right, std::max({valuesTableWidth(), m_detailsOffered ? m_detailsView->minimumWidth() : 0,
+                                      int(w * most)}));
     resizeDocks({m_valuesDock}, {right}, Qt::Horizontal);
     // The panels below the charts (console, raw bytes): a quarter of the height; a link's own
     // monitor (the CAN frames) is part of what the user came for: a third, room for its rows.
@@ -237,10 +277,11 @@ void DeviceWorkspace::fitDocks()
     if (!m_attitudeDock->isHidden() && !m_valuesDock->isHidden() && !m_attitudeDock->isFloating()
         && !m_valuesDock->isFloating()) {
         // The values need every row in view, the attitude takes the rest: at least 165 px (a
-        // quarter of a short window). When the rows need more than that leaves (a module that
+        // quarter of a short window; 300 px on a large one). When the rows need more than that leaves (a module that
         // sends INS or GNSS fields, on a laptop screen), the 3D view becomes a tab beside the
         // values, and comes back below them when there is room again.
-        const int attitudeLeast = std::min(165, h / 4);
+        // On a large window the 3D view keeps a real size (300 px with its title), else a quarter.
+        const int attitudeLeast = h >= 900 ? 300 : std::min(165, h / 4);
         const bool tabbed = tabifiedDockWidgets(m_valuesDock).contains(m_attitudeDock);
         const int needed = valuesTableHeight();
         if (!tabbed && needed > h - attitudeLeast) {

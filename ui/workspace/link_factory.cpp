@@ -123,8 +123,11 @@ bool LinkFactory::connectCan(DeviceWorkspace &ws, const device::CanSessionOption
     if (simulate) {
         sim::CanSimOptions so;
         so.hec495 = options.protocol == protocol::can::CanProtocol::Hec495;
-        so.protocol = options.protocol == protocol::can::CanProtocol::CanOpen ? protocol::can::CanProtocol::CanOpen
-                                                                               : protocol::can::CanProtocol::J1939;
+        // The simulated HEC495 speaks standard frames on a "CANopen" bus, the extended variant
+        // (0x18FA....) on a "J1939" one (CanSimOptions).
+        const bool standardFrames = options.protocol == protocol::can::CanProtocol::CanOpen
+                                 || (so.hec495 && !options.hec495Extended);
+        so.protocol = standardFrames ? protocol::can::CanProtocol::CanOpen : protocol::can::CanProtocol::J1939;
         so.node = options.node;
         so.motion = motion;
         simulator = std::make_shared<sim::CanSimulator>(so);
