@@ -75,7 +75,7 @@ int cmdExport(const QStringList &args)
     for (const QString &f : r.files)
         out(QStringLiteral("wrote %1").arg(f));
     out(QStringLiteral("%1 rows%2").arg(r.frames).arg(
-        r.skipped ? QStringLiteral(", %1 frames without a vendor layout (HI92) skipped").arg(r.skipped) : QString()));
+        r.skipped ? QStringLiteral(", %1 frames without a vendor layout (HI92, HEC495) skipped").arg(r.skipped) : QString()));
     return ExitOk;
 }
 

@@ -387,18 +387,7 @@ void Hec495Family::handleFrames(const std::vector<wl::Frame> &frames, int64_t no
         const bool data = r.ok() && (r.kind == wl::Reply::Kind::AllData || r.kind == wl::Reply::Kind::Angles);
         if (data) {
             ++m_framesByType[frameType(f.command)];
-            if (r.kind == wl::Reply::Kind::AllData) {
-                m_batch.push_back(r.record.toSample(nowNs));
-            } else {
-                model::Sample s;
-                s.source = "HEC495";
-                s.hostTimeNs = nowNs;
-                s.fields = model::FieldEuler;
-                s.pitch = r.pitch;
-                s.roll = r.roll;
-                s.yaw = r.heading;
-                m_batch.push_back(s);
-            }
+            m_batch.push_back(*wl::sampleOf(r, nowNs));
         } else if (!r.ok()) {
             ++m_payloadErrors;
         }

@@ -1,5 +1,6 @@
 #include "sample_json.h"
 
+#include <array>
 #include <cmath>
 #include <cstdio>
 
@@ -27,6 +28,72 @@ void vec(std::string &out, const char *k, const model::Vec3 &v)
 {
     key(out, k);
     out += '[' + number(v.x) + ',' + number(v.y) + ',' + number(v.z) + ']';
+}
+
+template <typename T, size_t N> void array(std::string &out, const char *k, const std::array<T, N> &v)
+{
+    key(out, k);
+    out += '[';
+    for (size_t i = 0; i < N; ++i) {
+        if (i)
+            out += ',';
+        out += number(double(v[i]));
+    }
+    out += ']';
+}
+
+// The HI83 fields no other frame has (model::Hi83Extra), under the manual's names.
+void hi83Extra(std::string &out, const model::Hi83Extra &x)
+{
+    if (x.has(6)) {
+        char date[16];
+        std::snprintf(date, sizeof date, "%04u-%02u-%02u", unsigned(x.utcDate[0]), unsigned(x.utcDate[1]),
+                      unsigned(x.utcDate[2]));
+        key(out, "utc_date");
+        out += '"';
+        out += date;
+        out += '"';
+    }
+    if (x.has(11))
+        array(out, "heave_surge_sway_frq", x.hssFreqHz);
+    if (x.has(13))
+        array(out, "acc_enu", x.accEnu);
+    if (x.has(15)) {
+        key(out, "solq_heading");
+        out += std::to_string(x.solqHeading);
+        key(out, "nv_heading");
+        out += std::to_string(x.nvHeading);
+    }
+    if (x.has(16)) {
+        key(out, "od_speed");
+        out += number(x.odSpeedMs);
+    }
+    if (x.has(17)) {
+        key(out, "undulation");
+        out += number(x.undulationM);
+    }
+    if (x.has(18)) {
+        key(out, "diff_age");
+        out += number(x.diffAgeS);
+    }
+    if (x.has(19)) {
+        key(out, "node_id");
+        out += std::to_string(x.nodeId);
+    }
+    if (x.has(25))
+        array(out, "event_counter", x.eventCounter);
+    if (x.has(26))
+        array(out, "kf_acc_bias", x.kfAccBias);
+    if (x.has(27))
+        array(out, "kf_gyr_bias", x.kfGyrBias);
+    if (x.has(28))
+        array(out, "gnss_std", x.gnssStd);
+    if (x.has(29))
+        array(out, "gnss_heading_info", x.dualHeading);
+    if (x.has(30))
+        array(out, "gnss_lon_lat_msl", x.gnssLonLatMsl);
+    if (x.has(31))
+        array(out, "gnss_vel", x.gnssVelEnu);
 }
 
 } // namespace
@@ -91,6 +158,26 @@ std::string sampleToJson(const model::Sample &s)
         key(out, "inclination");
         out += '[' + number(s.inclinationX) + ',' + number(s.inclinationY) + ']';
     }
+    if (s.has(FieldGnss)) {
+        if (s.gnssQuality >= 0) {
+            key(out, "gnss_quality");
+            out += std::to_string(s.gnssQuality);
+        }
+        if (s.gnssSatellites >= 0) {
+            key(out, "satellites");
+            out += std::to_string(s.gnssSatellites);
+        }
+        if (s.utcTimeOfDayS >= 0) {
+            key(out, "utc_time_s");
+            out += number(s.utcTimeOfDayS);
+        }
+    }
+    if (s.has(FieldHeading)) {
+        key(out, s.headingTrue ? "heading_true" : "heading_magnetic");
+        out += number(s.headingDeg);
+    }
+    if (s.has(FieldHi83Extra) && s.hi83)
+        hi83Extra(out, *s.hi83);
     out += '}';
     return out;
 }

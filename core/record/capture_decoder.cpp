@@ -1,5 +1,7 @@
 #include "capture_decoder.h"
 
+#include "protocol/witlink/reply.h"
+
 namespace imudesk::record {
 
 namespace hp = protocol::hipnuc;
@@ -8,6 +10,32 @@ using protocol::StreamEvent;
 void CaptureDecoder::configure(const CaptureHeader &header)
 {
     m_timedIdle = header.value(CaptureHeader::kIdleMarkers) != "1";
+    m_witlink = header.value(CaptureHeader::kLinkKind) == "HEC495 serial";
+}
+
+void CaptureDecoder::feedWitlink(const uint8_t *data, size_t n, int64_t hostNs, Sink &sink, bool idle)
+{
+    m_witlinkFrames.clear();
+    if (idle)
+        m_witlinkDecoder.flushIdle(m_witlinkFrames);
+    else
+        m_witlinkDecoder.feed(data, n, m_witlinkFrames);
+    // The bytes of no frame: the NMEA output's text (and noise), through the demultiplexer.
+    const std::string text = m_witlinkDecoder.takeSkipped();
+    if (!text.empty()) {
+        m_events.clear();
+        m_demux.feed(reinterpret_cast<const uint8_t *>(text.data()), text.size(), m_events);
+        dispatch(hostNs, sink);
+    }
+    for (const auto &f : m_witlinkFrames) {
+        const auto reply = protocol::witlink::decodeReply(f);
+        if (const auto s = protocol::witlink::sampleOf(reply, hostNs)) {
+            ++m_witlinkByType[reply.kind == protocol::witlink::Reply::Kind::AllData ? "HEC495 record" : "HEC495 angles"];
+            sink.onSample(*s, hostNs);
+        }
+        else if (!reply.ok())
+            ++m_payloadErrors;
+    }
 }
 
 void CaptureDecoder::feedChunk(const CaptureReader::Chunk &chunk, Sink &sink)
@@ -26,6 +54,11 @@ void CaptureDecoder::feedChunk(const CaptureReader::Chunk &chunk, Sink &sink)
 
 void CaptureDecoder::lineIdle(int64_t hostNs, Sink &sink)
 {
+    if (m_witlink) {
+        if (m_witlinkDecoder.pendingBytes() > 0)
+            feedWitlink(nullptr, 0, hostNs, sink, true);
+        return;
+    }
     if (m_demux.pendingBytes() == 0)
         return; // as the session: its idle timer runs only while bytes are held
     m_events.clear();
@@ -40,6 +73,10 @@ void CaptureDecoder::feed(const uint8_t *data, size_t n, int64_t hostNs, Sink &s
         lineIdle(m_lastNs + kLineIdleNs, sink);
     m_lastNs = hostNs;
     m_haveLast = true;
+    if (m_witlink) {
+        feedWitlink(data, n, hostNs, sink, false);
+        return;
+    }
     m_events.clear();
     m_demux.feed(data, n, m_events);
     dispatch(hostNs, sink);
@@ -47,6 +84,8 @@ void CaptureDecoder::feed(const uint8_t *data, size_t n, int64_t hostNs, Sink &s
 
 void CaptureDecoder::finish(Sink &sink)
 {
+    if (m_witlink)
+        feedWitlink(nullptr, 0, m_lastNs, sink, true);
     m_events.clear();
     m_demux.finish(m_events);
     dispatch(m_lastNs, sink);
@@ -55,12 +94,15 @@ void CaptureDecoder::finish(Sink &sink)
 void CaptureDecoder::reset()
 {
     m_demux.reset();
+    m_witlinkDecoder.reset();
     m_haveLast = false;
 }
 
 void CaptureDecoder::resetCounters()
 {
     m_demux.resetCounters();
+    m_witlinkDecoder = protocol::witlink::FrameDecoder{};
+    m_witlinkByType.clear();
     m_payloadErrors = 0;
 }
 

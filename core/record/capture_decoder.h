@@ -1,7 +1,10 @@
 #pragma once
 // The live session's decoding path for recorded bytes: StreamDemux splits the stream
 // into HiPNUC frames, NMEA sentences and text lines; each frame's payload becomes HiPNUC
-// packets (HI91 fast path, then every sub-packet). Chunks are fed with their arrival time,
+// packets (HI91 fast path, then every sub-packet). A capture of an HEC495 (link kind "HEC495
+// serial") goes through the Witlink frame decoder instead, as Hec495Family does: its records
+// and angles frames become samples (Sink::onSample), the text between them (NMEA output)
+// sentences. Chunks are fed with their arrival time,
 // and a pause of kLineIdleNs between chunks releases an unfinished candidate frame and
 // ends the text quarantine exactly as the session's idle timer does, so a replay decodes
 // what the live session decoded. Replay, export, analysis and `imudesk-cli decode` all decode
@@ -9,8 +12,10 @@
 #include "protocol/hipnuc/payloads.h"
 #include "record/capture_reader.h"
 #include "protocol/stream/stream_demux.h"
+#include "protocol/witlink/frame_decoder.h"
 
 #include <cstdint>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -25,6 +30,8 @@ public:
         virtual ~Sink() = default;
         virtual void onPacket(const protocol::hipnuc::Packet &packet, int64_t hostNs) = 0;
         virtual void onNmea(const std::string & /*sentence*/, int64_t /*hostNs*/) {}
+        // A sample of a family without HiPNUC packets (the HEC495's records and angles).
+        virtual void onSample(const model::Sample & /*sample*/, int64_t /*hostNs*/) {}
         virtual void onLine(const std::string & /*line*/, int64_t /*hostNs*/) {}
         // A frame whose payload holds a packet the manual's tables cannot decode (counted in
         // payloadErrors(); the packets before it were delivered).
@@ -46,14 +53,24 @@ public:
     void reset();
 
     const protocol::StreamDemux &demux() const { return m_demux; }
+    bool witlink() const { return m_witlink; }
+    const protocol::witlink::FrameDecoder::Counters &witlinkCounters() const { return m_witlinkDecoder.counters(); }
+    // HEC495 frames decoded into samples, by kind ("HEC495 record", "HEC495 angles").
+    const std::map<std::string, uint64_t> &witlinkFramesByType() const { return m_witlinkByType; }
     uint64_t payloadErrors() const { return m_payloadErrors; }
     void resetCounters();
 
 private:
     void dispatch(int64_t hostNs, Sink &sink);
 
+    void feedWitlink(const uint8_t *data, size_t n, int64_t hostNs, Sink &sink, bool idle);
+
     protocol::StreamDemux m_demux;
     std::vector<protocol::StreamEvent> m_events;
+    bool m_witlink = false; // an HEC495 capture
+    protocol::witlink::FrameDecoder m_witlinkDecoder;
+    std::vector<protocol::witlink::Frame> m_witlinkFrames;
+    std::map<std::string, uint64_t> m_witlinkByType;
     int64_t m_lastNs = 0;
     bool m_haveLast = false;
     bool m_timedIdle = true; // no markers recorded: infer idle lines from pauses between chunks

@@ -138,6 +138,26 @@ public:
         }
     }
 
+    // An HEC495 capture's records and angles: tidy CSV and JSON Lines; the vendor's tool has no
+    // layout for them.
+    void onSample(const model::Sample &s, int64_t hostNs) override
+    {
+        Output *out = nullptr;
+        if (m_o.format == CaptureExporter::Format::VendorCsv) {
+            ++m_r.skipped;
+            return;
+        }
+        if ((out = output(QString(), nullptr))) {
+            if (m_o.format == CaptureExporter::Format::TidyCsv) {
+                CaptureExporter::appendTidyRow(out->buf, s, 0, double(hostNs - firstNs) / 1e9);
+            } else {
+                out->buf += format::sampleToJson(s);
+                out->buf += '\n';
+            }
+        }
+        written(out);
+    }
+
     void onNmea(const std::string &sentence, int64_t) override
     {
         Output *out = nullptr;

@@ -31,6 +31,7 @@ FileAnalysis::Outcome FileAnalysis::run(const QString &path, const std::string &
         struct Sink : CaptureDecoder::Sink {
             SampleAnalyzer *a = nullptr;
             void onPacket(const protocol::hipnuc::Packet &p, int64_t) override { a->add(protocol::hipnuc::toSample(p)); }
+            void onSample(const model::Sample &s, int64_t) override { a->add(s); }
         } sink;
         sink.a = &analyzer;
         CaptureReader reader;

@@ -230,6 +230,12 @@ void ReplayWorker::onPacket(const protocol::hipnuc::Packet &packet, int64_t host
         m_gaps.add(s.source, s.deviceTimeMs, model::MainStatus::timeBase(s.has(model::FieldMainStatus), s.mainStatus));
 }
 
+void ReplayWorker::onSample(const model::Sample &sample, int64_t hostNs)
+{
+    m_batch.push_back(sample);
+    m_batch.back().hostTimeNs = hostNs;
+}
+
 void ReplayWorker::onNmea(const std::string &sentence, int64_t hostNs)
 {
     if (auto s = protocol::nmea::sampleOf(sentence)) {
@@ -260,6 +266,14 @@ void ReplayWorker::publishStats()
 {
     device::SessionStats s;
     device::fillStreamCounters(m_decoder.demux(), m_decoder.payloadErrors(), m_gaps, s);
+    if (m_decoder.witlink()) { // an HEC495 capture: its own frames (the demultiplexer saw only the text)
+        const auto &c = m_decoder.witlinkCounters();
+        s.bytesIn = c.bytesIn;
+        s.frames = c.frames;
+        s.crcErrors = c.checksumErrors;
+        s.lengthErrors = c.lengthErrors;
+        s.framesByType = m_decoder.witlinkFramesByType();
+    }
     s.baud = m_baud;
     const qint64 nowMs = m_statsClock.isValid() ? m_statsClock.elapsed() : 0;
     const double dt = double(nowMs - m_lastStatsMs) / 1000.0;

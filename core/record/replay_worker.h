@@ -49,6 +49,7 @@ private:
         int64_t relNs; // chunk time since the first chunk
     };
     void onPacket(const protocol::hipnuc::Packet &packet, int64_t hostNs) override;
+    void onSample(const model::Sample &sample, int64_t hostNs) override;
     void onNmea(const std::string &sentence, int64_t hostNs) override;
     void tick();
     void seekTo(int64_t relNs);

@@ -3,10 +3,15 @@
 // every settings command with typed results, a baud change the session follows, address
 // changes, auto-baud, RS-485 retries, and a planar calibration run.
 #include "device/hec495_session.h"
+#include "record/capture_exporter.h"
+#include "record/file_analysis.h"
+#include "record/replay_session.h"
 #include "sim/hec495_simulator.h"
 #include "sim/pty_simulator.h"
 
+#include <QFile>
 #include <QSignalSpy>
+#include <QTemporaryDir>
 #include <QTest>
 
 #include <functional>
@@ -211,6 +216,62 @@ private Q_SLOTS:
             QCOMPARE(int(now), int(content));
         }
         QVERIFY(AWAIT_OK(s, s.readAll()));
+    }
+
+    void recordedReplayedExported()
+    {
+        // 50 Hz records, then NMEA output, recorded; the capture exports (tidy CSV, JSON Lines
+        // with the sentences), analyses and replays through the HEC495 path of CaptureDecoder.
+        Hec495Options o;
+        o.rateHz = 50;
+        o.content = wl::OutputContent::AllData;
+        o.baud = 115200;
+        auto pty = serve(o);
+        Hec495Session s;
+        QVERIFY(s.capabilities().testFlag(DeviceLink::Capability::Recording));
+        s.open(pty->devicePath(), 115200);
+        QTRY_COMPARE_WITH_TIMEOUT(s.state(), SessionState::Connected, 5000);
+        QTRY_VERIFY_WITH_TIMEOUT(s.streaming(), 6000);
+        QTemporaryDir dir;
+        const QString capture = dir.filePath(QStringLiteral("hec495.imucap"));
+        QSignalSpy stopped(&s, &Session::recordingStopped);
+        QSignalSpy started(&s, &Session::recordingStarted);
+        s.startRecording(capture);
+        QTRY_COMPARE(started.count(), 1);
+        QTest::qWait(1000);
+        QVERIFY(AWAIT_OK(s, s.setOutputContent(wl::OutputContent::Nmea0183)));
+        QTest::qWait(600);
+        s.stopRecording();
+        QTRY_COMPARE(stopped.count(), 1);
+
+        record::CaptureExporter::Options eo;
+        eo.format = record::CaptureExporter::Format::TidyCsv;
+        eo.output = dir.filePath(QStringLiteral("hec495.csv"));
+        const auto csv = record::CaptureExporter::run(capture, eo);
+        QVERIFY2(csv.ok, qPrintable(csv.error));
+        QVERIFY2(csv.frames >= 40, qPrintable(QString::number(csv.frames)));
+        eo.format = record::CaptureExporter::Format::JsonLines;
+        eo.output = dir.filePath(QStringLiteral("hec495.jsonl"));
+        const auto jsonl = record::CaptureExporter::run(capture, eo);
+        QVERIFY2(jsonl.ok, qPrintable(jsonl.error));
+        QFile f(eo.output);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        const QByteArray text = f.readAll();
+        QVERIFY(text.contains("\"type\":\"HEC495\""));
+        QVERIFY(text.contains("$HCHDT,"));
+
+        const auto a = record::FileAnalysis::run(capture);
+        QVERIFY2(a.ok, qPrintable(a.error));
+        QCOMPARE(a.result.frames, csv.frames);
+
+        record::ReplaySession replay;
+        QSignalSpy finished(&replay, &record::ReplaySession::finished);
+        replay.open(capture);
+        QTRY_COMPARE(replay.state(), SessionState::Connected);
+        replay.setSpeed(0); // as fast as possible
+        replay.play();
+        QTRY_VERIFY_WITH_TIMEOUT(finished.count() == 1, 10000);
+        QCOMPARE(replay.store().totalAppended(), csv.frames + uint64_t(text.count("$HCHDT,"))); // records + headings
     }
 
     void baudChangeFollowed()

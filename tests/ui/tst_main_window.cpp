@@ -203,6 +203,36 @@ private Q_SLOTS:
         QVERIFY2(errors.isEmpty(), qPrintable(errors.join(QLatin1Char('\n'))));
     }
 
+    void takeOneSampleAndPps()
+    {
+        // A module with a PPS receiver: its HI91 clock aligns to UTC (the device time reads as
+        // a UTC time); with output off, Device > Take one sample brings exactly one HI91.
+        MainWindow w;
+        QStringList errors;
+        w.setErrorPresenter([&errors](const QString &m) { errors << m; });
+        w.show();
+        imudesk::sim::SimOptions options;
+        options.ppsInput = true;
+        QString error;
+        QVERIFY2(w.connectSimulated(options, 115200, &error), qPrintable(error));
+        QTRY_VERIFY_WITH_TIMEOUT(cell(w, LatestValuesModel::DeviceTime).contains(QLatin1Char(':')), 5000);
+        auto *take = w.findChild<QAction *>(QStringLiteral("takeSampleAction"));
+        QVERIFY(take);
+        QTRY_VERIFY(take->isEnabled());
+        w.console()->submit(QStringLiteral("LOG DISABLE"));
+        QTRY_VERIFY_WITH_TIMEOUT(linesAfter(w.console()->logText(), QStringLiteral("> LOG DISABLE")).contains(QStringLiteral("OK")),
+                                 3000);
+        QTest::qWait(200);
+        const quint64 before = w.currentWorkspace()->link().store().totalAppended();
+        take->trigger();
+        QTRY_VERIFY_WITH_TIMEOUT(
+            linesAfter(w.console()->logText(), QStringLiteral("> LOG HI91 ONMARK ONCE")).contains(QStringLiteral("OK")), 3000);
+        QTRY_COMPARE_WITH_TIMEOUT(w.currentWorkspace()->link().store().totalAppended(), before + 1, 2000);
+        QTest::qWait(300);
+        QCOMPARE(w.currentWorkspace()->link().store().totalAppended(), before + 1);
+        QVERIFY2(errors.isEmpty(), qPrintable(errors.join(QLatin1Char('\n'))));
+    }
+
     void simulatedOldFirmware()
     {
         MainWindow w;

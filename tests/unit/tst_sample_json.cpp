@@ -44,6 +44,39 @@ private Q_SLOTS:
         QCOMPARE(float(o.value("mag").toArray().at(2).toDouble()), h.mag[2]);
     }
 
+    void hi83DetailsGnssAndHeadingKeys()
+    {
+        // An HI83 with UTC, the GNSS fix and bits 25, 28 and 30: the manual's names, valid JSON.
+        Hi83 h;
+        h.bitmap = (1u << 6) | (1u << 15) | (1u << 25) | (1u << 28) | (1u << 30);
+        h.utc = {26, 11, 26, 8, 0, 0x10, 0x27, 0}; // 08:00:10.000
+        h.gnssQualityNv = {4, 20, 5, 18};
+        h.eventCounter[0] = 1200;
+        h.gnssStd = {1.5f, 0.05f, 0};
+        h.gnssLonLatMsl = {121.5, 31.25, 40.0};
+        QJsonParseError err;
+        const auto o = QJsonDocument::fromJson(QByteArray::fromStdString(format::sampleToJson(toSample(Packet(h)))), &err)
+                           .object();
+        QCOMPARE(err.error, QJsonParseError::NoError);
+        QCOMPARE(o.value("utc_date").toString(), QStringLiteral("2026-11-26"));
+        QCOMPARE(o.value("utc_time_s").toDouble(), 8 * 3600 + 10.0);
+        QCOMPARE(o.value("gnss_quality").toInt(), 4);
+        QCOMPARE(o.value("satellites").toInt(), 20);
+        QCOMPARE(o.value("solq_heading").toInt(), 5);
+        QCOMPARE(o.value("event_counter").toArray().size(), 16);
+        QCOMPARE(o.value("event_counter").toArray().at(0).toInt(), 1200);
+        QCOMPARE(o.value("gnss_std").toArray().at(0).toDouble(), 1.5);
+        QCOMPARE(o.value("gnss_lon_lat_msl").toArray().at(1).toDouble(), 31.25);
+        QVERIFY(!o.contains("kf_acc_bias")); // not in the bitmap
+        // A compass's NMEA heading.
+        imudesk::model::Sample hdt;
+        hdt.source = "HDT";
+        hdt.fields = imudesk::model::FieldHeading;
+        hdt.headingDeg = 296.5;
+        const auto p = QJsonDocument::fromJson(QByteArray::fromStdString(format::sampleToJson(hdt))).object();
+        QCOMPARE(p.value("heading_true").toDouble(), 296.5);
+    }
+
     void localeIndependent()
     {
         // A decimal comma locale must not leak into the JSON.

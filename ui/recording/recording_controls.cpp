@@ -1,6 +1,6 @@
 #include "recording/recording_controls.h"
 
-#include "device/device_session.h"
+#include "device/session.h"
 
 #include <QDateTime>
 #include <QDir>
@@ -58,17 +58,17 @@ RecordingControls::RecordingControls(QWidget *parent) : QWidget(parent)
     updateButtons();
 }
 
-void RecordingControls::setSession(device::DeviceSession *session)
+void RecordingControls::setSession(device::Session *session)
 {
     if (m_session)
         disconnect(m_session, nullptr, this, nullptr);
     m_session = session;
     m_recording = m_pending = false;
     if (m_session) {
-        connect(m_session, &device::DeviceSession::recordingStarted, this, &RecordingControls::onStarted);
-        connect(m_session, &device::DeviceSession::recordingStopped, this, &RecordingControls::onStopped);
-        connect(m_session, &device::DeviceSession::recordingProgress, this, &RecordingControls::onProgress);
-        connect(m_session, &device::DeviceSession::identityChanged, this,
+        connect(m_session, &device::Session::recordingStarted, this, &RecordingControls::onStarted);
+        connect(m_session, &device::Session::recordingStopped, this, &RecordingControls::onStopped);
+        connect(m_session, &device::Session::recordingProgress, this, &RecordingControls::onProgress);
+        connect(m_session, &device::Session::identityChanged, this,
                 [this](const model::DeviceIdentity &id) {
                     setIdentity(QString::fromStdString(id.productName), QString::fromStdString(id.serial));
                 });

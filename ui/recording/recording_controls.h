@@ -6,9 +6,9 @@
 //
 // Folder ui/recording/: recording, replay and export of captures. These RecordingControls, the
 // ReplayControls and the ExportDialog. It mirrors core/record: recording goes through the
-// DeviceSession (its engine writes the capture with record::CaptureWriter), replay drives a
-// record::ReplaySession and export runs record::CaptureExporter in a worker thread. No item
-// models.
+// link's session (device::Session: its engine writes the capture with record::CaptureWriter, a
+// HiPNUC module or an HEC495), replay drives a record::ReplaySession and export runs
+// record::CaptureExporter in a worker thread. No item models.
 #include <QString>
 #include <QWidget>
 
@@ -21,7 +21,7 @@ class QLineEdit;
 class QPushButton;
 
 namespace imudesk::device {
-class DeviceSession;
+class Session;
 }
 
 namespace imudesk::ui {
@@ -36,7 +36,7 @@ public:
     // The session to record from (not owned); nullptr disables the controls. Its
     // identityChanged fills {product} and {serial}; for a session that is already
     // identified, pass the identity with setIdentity().
-    void setSession(device::DeviceSession *session);
+    void setSession(device::Session *session);
     void setIdentity(const QString &product, const QString &serial);
     void setFolder(const QString &folder);
     QString folder() const;
@@ -69,7 +69,7 @@ private:
     void refresh();
     void updateButtons();
 
-    device::DeviceSession *m_session = nullptr;
+    device::Session *m_session = nullptr;
     QPushButton *m_record = nullptr;
     QPushButton *m_stop = nullptr;
     QLineEdit *m_folder = nullptr;

@@ -240,13 +240,15 @@ void DeviceWorkspace::bindLink(std::unique_ptr<device::DeviceLink> link, std::sh
     connect(l, &device::DeviceLink::identityChanged, this, &DeviceWorkspace::onIdentityChanged);
     connect(l, &device::DeviceLink::statsUpdated, this, &DeviceWorkspace::onStatsUpdated);
     connect(l, &device::DeviceLink::errorOccurred, this, &DeviceWorkspace::onErrorOccurred);
-    if (auto *session = qobject_cast<device::Session *>(l))
+    if (auto *session = qobject_cast<device::Session *>(l)) {
         m_rawView->setLog(&session->rawLog());
+        if (l->capabilities().testFlag(device::DeviceLink::Capability::Recording))
+            m_recording->setSession(session); // a HiPNUC module or an HEC495
+    }
     if (device::DeviceSession *s = hipnucSession()) {
         connect(s, &device::DeviceSession::baudDetected, this, &DeviceWorkspace::onBaudDetected);
         connect(s, &device::DeviceSession::commandFinished, this, &DeviceWorkspace::onCommandFinished);
         connect(s, &device::DeviceSession::textReceived, m_console, &ConsoleWidget::showText);
-        m_recording->setSession(s);
         m_configPanel = new ConfigPanel(*s, m_configDock);
         m_configPanel->setObjectName(QStringLiteral("configPanel"));
         m_configDock->setWidget(m_configPanel);

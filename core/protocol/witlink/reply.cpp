@@ -219,4 +219,22 @@ Frame calibrationPointReply(uint8_t address, const std::array<uint8_t, 15> &byte
     return f;
 }
 
+std::optional<model::Sample> sampleOf(const Reply &reply, int64_t hostTimeNs)
+{
+    if (!reply.ok())
+        return std::nullopt;
+    if (reply.kind == Reply::Kind::AllData)
+        return reply.record.toSample(hostTimeNs);
+    if (reply.kind != Reply::Kind::Angles)
+        return std::nullopt;
+    model::Sample s;
+    s.source = "HEC495";
+    s.hostTimeNs = hostTimeNs;
+    s.fields = model::FieldEuler;
+    s.pitch = reply.pitch;
+    s.roll = reply.roll;
+    s.yaw = reply.heading;
+    return s;
+}
+
 } // namespace imudesk::protocol::witlink

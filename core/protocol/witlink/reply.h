@@ -10,6 +10,7 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 
 namespace imudesk::protocol::witlink {
 
@@ -53,6 +54,9 @@ public:
 
 // Decodes one frame sent by the device.
 Reply decodeReply(const Frame &frame);
+// The data a valid reply carries as a sample (source "HEC495"): the 0x14 record, or the 0x84
+// angles (Euler only, yaw = heading); nullopt for any other reply.
+std::optional<model::Sample> sampleOf(const Reply &reply, int64_t hostTimeNs);
 // Builders for the device side (the simulator, tests). Data as the decoder expects it.
 Frame statusReply(uint8_t address, uint8_t command, bool success);
 Frame angleReply(uint8_t address, uint8_t command, double deg);
