@@ -10,6 +10,7 @@
 #include <QThread>
 
 #include <cstdio>
+#include <optional>
 
 namespace imudesk::cli {
 
@@ -132,6 +133,18 @@ int cmdProbe(const QStringList &args)
     return ExitOk;
 }
 
+namespace {
+
+// One sample as a line of text (read's human output).
+void printSampleLine(const model::Sample &s)
+{
+    std::printf("%s t=%.0f ms acc=[%.3f %.3f %.3f] G gyr=[%.2f %.2f %.2f] deg/s rpy=[%.2f %.2f %.2f] deg\n",
+                s.source.c_str(), s.deviceTimeMs, s.acc.x, s.acc.y, s.acc.z, s.gyr.x, s.gyr.y, s.gyr.z, s.roll, s.pitch,
+                s.yaw);
+}
+
+} // namespace
+
 int cmdRead(const QStringList &args)
 {
     QCommandLineParser p;
@@ -139,8 +152,11 @@ int cmdRead(const QStringList &args)
     p.addOption(jsonOption());
     p.addOption(QCommandLineOption(QStringLiteral("duration"), QStringLiteral("Seconds to read (default: until Ctrl+C)."),
                                    QStringLiteral("S")));
+    p.addOption(QCommandLineOption(QStringLiteral("once"),
+                                   QStringLiteral("Take one sample: LOG <TYPE> ONMARK ONCE, print the frame it brings."),
+                                   QStringLiteral("TYPE")));
     p.addPositionalArgument(QStringLiteral("PORT"), QStringLiteral("Serial port"));
-    if (!parseArgs(p, args, QStringLiteral("imudesk-cli read PORT [--baud B] [--duration S] [--json]")))
+    if (!parseArgs(p, args, QStringLiteral("imudesk-cli read PORT [--baud B] [--duration S | --once HI91|HI81|HI83|GGA|...] [--json]")))
         return ExitUsage;
     if (p.positionalArguments().size() != 1)
         return fail(QStringLiteral("read needs exactly one PORT"), ExitUsage);
@@ -155,12 +171,54 @@ int cmdRead(const QStringList &args)
             return fail(QStringLiteral("--duration needs a positive number of seconds"), ExitUsage);
     }
     const bool json = p.isSet(QStringLiteral("json"));
+    std::optional<protocol::hipnuc::Command> once;
+    if (p.isSet(QStringLiteral("once"))) {
+        protocol::hipnuc::Message m{};
+        if (!protocol::hipnuc::parseMessage(p.value(QStringLiteral("once")).toUpper().toStdString(), m))
+            return fail(QStringLiteral("--once needs a message type such as HI91, HI83 or GGA"), ExitUsage);
+        once = protocol::hipnuc::commands::logOnMark(m, true);
+        if (!once->ok())
+            return fail(QString::fromStdString(once->error), ExitUsage);
+    }
     device::DeviceSession session;
     QString error;
     model::DeviceIdentity id;
     int found = baud;
     if (!connectSession(session, p.positionalArguments().front(), baud, &id, &found, &error))
         return fail(error, interrupted() ? ExitInterrupted : ExitFailure);
+    if (once) {
+        // v1.7.1 4.6.8.15: one frame of that type, as a SYNC_IN pulse would trigger. What
+        // the module streams meanwhile is not printed: the first sample of that type is the one.
+        const std::string type = p.value(QStringLiteral("once")).toUpper().toStdString();
+        std::optional<protocol::hipnuc::AsciiReply> reply;
+        QString why;
+        const quint64 cmdId = session.sendCommand(*once, 2000, &why);
+        QObject::connect(&session, &device::DeviceSession::commandFinished, &session,
+                         [&](quint64 done, const protocol::hipnuc::AsciiReply &r) {
+                             if (done == cmdId)
+                                 reply = r;
+                         });
+        uint64_t from = session.store().totalAppended();
+        std::optional<model::Sample> got;
+        waitFor([&] {
+            for (const auto &x : session.store().since(from, SIZE_MAX, &from))
+                if (!got && x.source == type)
+                    got = x;
+            return got.has_value() || (reply && !reply->ok());
+        }, 3000);
+        if (reply && !reply->ok())
+            return fail(QStringLiteral("%1: the module answered %2").arg(QString::fromStdString(once->text),
+                                                                       QString::fromStdString(reply->errorLine)));
+        if (!got)
+            return fail(QStringLiteral("no %1 frame came within 3 s of %2").arg(QString::fromStdString(type),
+                                                                                QString::fromStdString(once->text)));
+        if (json)
+            outRaw(format::sampleToJson(*got));
+        else
+            printSampleLine(*got);
+        std::fflush(stdout);
+        return ExitOk;
+    }
     bool lost = false;
     QString lostMessage;
     QObject::connect(&session, &device::DeviceSession::errorOccurred, [&](const QString &m) {
@@ -181,10 +239,7 @@ int cmdRead(const QStringList &args)
                 outRaw(format::sampleToJson(s));
             } else if (s.hostTimeNs - lastTextNs >= 100'000'000) { // text: 10 lines/s at most
                 lastTextNs = s.hostTimeNs;
-                std::printf("%s t=%.0f ms acc=[%.3f %.3f %.3f] G gyr=[%.2f %.2f %.2f] deg/s "
-                            "rpy=[%.2f %.2f %.2f] deg\n",
-                            s.source.c_str(), s.deviceTimeMs, s.acc.x, s.acc.y, s.acc.z, s.gyr.x, s.gyr.y, s.gyr.z,
-                            s.roll, s.pitch, s.yaw);
+                printSampleLine(s);
             }
         }
         std::fflush(stdout);

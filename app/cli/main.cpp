@@ -15,7 +15,7 @@ void usage(FILE *to)
     std::fputs("usage: imudesk-cli COMMAND [options]\n"
                "  ports [--json]                         list serial ports\n"
                "  probe PORT [--baud B] [--json]         detect baud rate and identity\n"
-               "  read PORT [--baud B] [--duration S] [--json]\n"
+               "  read PORT [--baud B] [--duration S | --once TYPE] [--json]\n"
                "                                         print decoded samples\n"
                "  send PORT [--baud B] \"COMMAND\"         send an ASCII command, print the reply\n"
                "  decode FILE [--json]                   decode a raw capture\n"

@@ -84,6 +84,18 @@ private Q_SLOTS:
         QVERIFY(t.err.contains(QStringLiteral("no reply")));
     }
 
+    void readOnce()
+    {
+        // Take one sample: LOG HI83 ONMARK ONCE brings one HI83 frame (the module streams HI91).
+        auto r = run({"read", m_pty, "--baud", "230400", "--once", "HI83", "--json"});
+        QVERIFY2(r.code == 0, qPrintable(r.err));
+        const auto lines = r.out.split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+        QCOMPARE(lines.size(), 1);
+        QCOMPARE(QJsonDocument::fromJson(lines.front().toUtf8()).object().value("type").toString(), QStringLiteral("HI83"));
+        r = run({"read", m_pty, "--baud", "230400", "--once", "FOO"});
+        QCOMPARE(r.code, 2);
+    }
+
     void readJsonLines()
     {
         const auto r = run({"read", m_pty, "--baud", "230400", "--duration", "1", "--json"});
