@@ -132,6 +132,7 @@ private Q_SLOTS:
         panel.setSession(&session);
         session.open(so);
         QTRY_COMPARE(session.state(), device::SessionState::Connected);
+        QTRY_VERIFY_WITH_TIMEOUT(session.store().totalAppended() > 0, 5000); // the simulator is on the bus
         QVERIFY(panel.applyModesButton()->isEnabled());
         QVERIFY(panel.workModeChoice()->isEnabled());
         QCOMPARE(panel.pdoModeChoice()->count(), 3);
@@ -142,7 +143,8 @@ private Q_SLOTS:
         panel.workModeChoice()->setCurrentIndex(panel.workModeChoice()->findData(0x0A));
         panel.applyModesButton()->click();
         QTRY_COMPARE(done.size(), 2);
-        QVERIFY(done.at(0).at(0).toBool() && done.at(1).at(0).toBool());
+        for (const auto &d : done)
+            QVERIFY2(d.at(0).toBool(), qPrintable(d.at(1).toString()));
         QCOMPARE(simulator.device().hec().pdoMode, 1u);
         QCOMPARE(simulator.device().hec().workMode, 0x0Au);
 

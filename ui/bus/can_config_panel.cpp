@@ -57,9 +57,10 @@ CanConfigPanel::CanConfigPanel(QWidget *parent)
     m_trigger->setToolTip(tr("J1939 register 0x96: the module sends the chosen PGN once (no reply; the frame is the answer)"));
     m_inclX->setToolTip(tr("Inclinometer X axis direction: J1939 register 0x9E, CANopen object 0x209E (0 default, 1 reversed)"));
     m_inclY->setToolTip(tr("Inclinometer Y axis direction: J1939 register 0x9F, CANopen object 0x209F (0 default, 1 reversed)"));
-    m_workMode->addItem(tr("Pitch, roll, acceleration, rate (0x02)"), 0x02);
+    m_workMode->addItem(tr("Angles, acc., rate (0x02)"), 0x02);
     m_workMode->addItem(tr("Rate at 500 Hz (0x0A)"), 0x0A);
-    m_workMode->setToolTip(tr("HEC495 work mode, object 0x6245"));
+    m_workMode->setToolTip(tr("HEC495 work mode, object 0x6245: 0x02 pitch, roll, acceleration and rate (default); "
+                              "0x0A rate at 500 Hz"));
     m_pdoMode->setToolTip(tr("HEC495 PDO mode, object 0x1080"));
     m_allOn->setToolTip(tr("NMT start to node 0: every node on the bus starts its PDOs (HEC495: not saved)"));
     m_allOff->setToolTip(tr("NMT stop to node 0: every node on the bus stops its PDOs (HEC495: not saved)"));
@@ -87,7 +88,8 @@ CanConfigPanel::CanConfigPanel(QWidget *parent)
     form->addRow(tr("CAN bit rate:"), row(m_bitrate, m_applyBitrate));
     form->addRow(tr("Attitude:"), row(m_attitude, m_applyAttitude));
     form->addRow(tr("Inclinometer:"), row(m_inclX, m_inclY, m_applyIncl));
-    form->addRow(tr("HEC495 PDO:"), row(m_pdoMode, m_workMode, m_applyModes));
+    form->addRow(tr("HEC495 PDO:"), m_pdoMode);
+    form->addRow(tr("Work mode:"), row(m_workMode, m_applyModes));
     form->addRow(tr("Output:"), row(m_outputOn, m_outputOff));
     form->addRow(tr("Every node:"), row(m_allOn, m_allOff));
     form->addRow(tr("Settings:"), row(m_save, m_reset, m_factory));
@@ -279,7 +281,7 @@ void CanConfigPanel::refreshForProtocol()
     } else {
         m_pdoMode->addItem(tr("Float (0)"), 0);
         m_pdoMode->addItem(tr("Fixed point (1)"), 1);
-        m_pdoMode->addItem(tr("Float, 0x180 and 0x280 only (3)"), 3);
+        m_pdoMode->addItem(tr("Float, 0x180/0x280 only (3)"), 3);
     }
     if (const int i = m_pdoMode->findData(mode); i >= 0)
         m_pdoMode->setCurrentIndex(i);
