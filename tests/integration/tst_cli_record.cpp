@@ -162,6 +162,34 @@ private Q_SLOTS:
         QCOMPARE(run(args).code, 2);
     }
 
+    void rawDumpLikeACapture()
+    {
+        // The recording's bytes alone, as a serial terminal would have saved them (named .txt):
+        // export and analyze take it by its content, with the device clock for time, and say so.
+        record::CaptureReader reader;
+        QString error;
+        QVERIFY2(reader.open(m_capture, &error), qPrintable(error));
+        QByteArray raw;
+        record::CaptureReader::Chunk c;
+        while (reader.next(c) == record::CaptureReader::Result::Chunk)
+            if (c.kind == record::capture::ChunkReceived)
+                raw.append(reinterpret_cast<const char *>(c.data), qsizetype(c.size));
+        const QString dump = m_dir.filePath(QStringLiteral("terminal.txt"));
+        QFile f(dump);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        QCOMPARE(f.write(raw), raw.size());
+        f.close();
+        const auto fromCapture = run({"export", m_capture, "--format", "csv", "-o", m_dir.filePath("cap.csv")});
+        const auto fromDump = run({"export", dump, "--format", "csv", "-o", m_dir.filePath("dump.csv")});
+        QVERIFY2(fromDump.code == 0, qPrintable(fromDump.err));
+        QVERIFY2(fromDump.err.contains(QStringLiteral("raw byte dump")), qPrintable(fromDump.err));
+        QCOMPARE(fromDump.out.section(QLatin1Char('\n'), -2).trimmed(), fromCapture.out.section(QLatin1Char('\n'), -2).trimmed());
+        const auto a = run({"analyze", dump, "--json"});
+        QVERIFY2(a.code == 0, qPrintable(a.err));
+        const auto b = run({"analyze", m_capture, "--json"});
+        QCOMPARE(a.json().value("frames").toInteger(), b.json().value("frames").toInteger());
+    }
+
     void analyzeRejectsOtherFiles()
     {
         const QString path = m_dir.filePath(QStringLiteral("notes.txt"));
