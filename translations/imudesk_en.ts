@@ -15,7 +15,7 @@
 <context>
     <name>CaptureSource</name>
     <message numerus="yes">
-        <location filename="../core/record/capture_source.cpp" line="+189" />
+        <location filename="../core/record/capture_source.cpp" line="+190" />
         <source>%1 is a vendor CSV: %n row(s) read, times from its pc_counter column</source>
         <translation>
             <numerusform>%1 is a vendor CSV: %n row read, times from its pc_counter column</numerusform>

@@ -973,7 +973,7 @@
 <context>
     <name>CaptureSource</name>
     <message>
-        <location filename="../core/record/capture_source.cpp" line="+132" />
+        <location filename="../core/record/capture_source.cpp" line="+133" />
         <location line="+87" />
         <source>%1 cannot be read: %2</source>
         <translation>无法读取 %1：%2</translation>
@@ -1018,19 +1018,9 @@
         </translation>
     </message>
     <message>
-        <location line="+17" />
-        <source>Cannot write %1: %2</source>
-        <translation>无法写入 %1：%2</translation>
-    </message>
-    <message>
-        <location line="+24" />
+        <location line="+29" />
         <source>Reading %1 failed: %2</source>
         <translation>读取 %1 失败：%2</translation>
-    </message>
-    <message>
-        <location line="+20" />
-        <source>Writing %1 failed: %2. Check the free disk space.</source>
-        <translation>写入 %1 失败：%2。请检查磁盘剩余空间。</translation>
     </message>
 </context>
 <context>
@@ -1203,14 +1193,14 @@
     </message>
 </context>
 <context>
-    <name>CsvCaptureConverter</name>
+    <name>ConvertedCapture</name>
     <message>
-        <location filename="../core/record/csv_capture_converter.cpp" line="+21" />
+        <location filename="../core/record/converted_capture.cpp" line="+15" />
         <source>Cannot write %1: %2</source>
         <translation>无法写入 %1：%2</translation>
     </message>
     <message>
-        <location line="+39" />
+        <location line="+36" />
         <source>Writing %1 failed: %2. Check the free disk space.</source>
         <translation>写入 %1 失败：%2。请检查磁盘剩余空间。</translation>
     </message>

@@ -4,6 +4,7 @@
 #include "protocol/nmea/nmea_sample.h"
 #include "protocol/stream/stream_demux.h"
 #include "record/capture_format.h"
+#include "record/converted_capture.h"
 #include "record/capture_reader.h"
 #include "record/csv_capture_converter.h"
 #include "record/vendor_csv_importer.h"
@@ -219,25 +220,13 @@ CaptureSource::RawResult CaptureSource::convertRawDump(const QString &rawPath, c
         r.error = tr("%1 cannot be read: %2").arg(rawPath, in.errorString());
         return r;
     }
-    QFile out(capturePath);
-    if (!out.open(QIODevice::WriteOnly | QIODevice::Truncate)) {
-        r.error = tr("Cannot write %1: %2").arg(capturePath, out.errorString());
-        return r;
-    }
     CaptureHeader header;
-    header.set(CaptureHeader::kLinkKind, "raw byte dump");
-    header.set(CaptureHeader::kPort, QFileInfo(rawPath).fileName().toStdString());
-    header.set(CaptureHeader::kApplication, "imudesk");
     header.set(CaptureHeader::kHostTime, "absent");
     // No pause was recorded: like `imudesk-cli decode`, only the end of the file releases held bytes.
     header.set(CaptureHeader::kIdleMarkers, "1");
-    std::vector<uint8_t> buf = capture::encodeFileHeader(header);
-    bool writeFailed = false;
-    auto flush = [&] {
-        if (!buf.empty() && out.write(reinterpret_cast<const char *>(buf.data()), qint64(buf.size())) != qint64(buf.size()))
-            writeFailed = true;
-        buf.clear();
-    };
+    ConvertedCapture out;
+    if (!out.open(capturePath, rawPath, "raw byte dump", header, &r.error))
+        return r;
     Scan scan;
     DeviceClock clock;
     std::vector<uint8_t> block(kRawChunkBytes);
@@ -246,8 +235,7 @@ CaptureSource::RawResult CaptureSource::convertRawDump(const QString &rawPath, c
         const qint64 n = in.read(reinterpret_cast<char *>(block.data()), qint64(block.size()));
         if (n < 0) {
             r.error = tr("Reading %1 failed: %2").arg(rawPath, in.errorString());
-            out.close();
-            QFile::remove(capturePath);
+            out.discard();
             return r;
         }
         if (n == 0)
@@ -255,19 +243,12 @@ CaptureSource::RawResult CaptureSource::convertRawDump(const QString &rawPath, c
         scan.feed(block.data(), size_t(n), &clock);
         // The block is stamped with the device time of the last frame it completed.
         stampNs = std::max(stampNs, clock.ns());
-        capture::appendChunk(buf, capture::ChunkReceived, stampNs, 0, block.data(), size_t(n));
+        out.append(stampNs, block.data(), size_t(n));
         r.bytes += uint64_t(n);
-        if (buf.size() >= (1u << 20))
-            flush();
     }
     scan.finish(&clock);
-    flush();
-    out.close();
-    if (writeFailed) {
-        QFile::remove(capturePath);
-        r.error = tr("Writing %1 failed: %2. Check the free disk space.").arg(capturePath, out.errorString());
+    if (!out.finish(&r.error))
         return r;
-    }
     r.frames = scan.frames;
     r.sentences = scan.sentences;
     r.clockJumps = clock.jumps();

@@ -2,10 +2,7 @@
 
 #include "protocol/hipnuc/frame_decoder.h"
 #include "protocol/hipnuc/payloads.h"
-#include "record/capture_format.h"
-
-#include <QFile>
-#include <QFileInfo>
+#include "record/converted_capture.h"
 
 #include <cmath>
 
@@ -16,22 +13,9 @@ namespace hp = protocol::hipnuc;
 CsvCaptureConverter::Result CsvCaptureConverter::convert(const QString &csvPath, const QString &capturePath)
 {
     Result r;
-    QFile out(capturePath);
-    if (!out.open(QIODevice::WriteOnly | QIODevice::Truncate)) {
-        r.error = tr("Cannot write %1: %2").arg(capturePath, out.errorString());
+    ConvertedCapture out;
+    if (!out.open(capturePath, csvPath, "vendor CSV import", {}, &r.error))
         return r;
-    }
-    CaptureHeader header;
-    header.set(CaptureHeader::kLinkKind, "vendor CSV import");
-    header.set(CaptureHeader::kPort, QFileInfo(csvPath).fileName().toStdString());
-    header.set(CaptureHeader::kApplication, "imudesk");
-    std::vector<uint8_t> buf = capture::encodeFileHeader(header);
-    bool writeFailed = false;
-    auto flush = [&] {
-        if (!buf.empty() && out.write(reinterpret_cast<const char *>(buf.data()), qint64(buf.size())) != qint64(buf.size()))
-            writeFailed = true;
-        buf.clear();
-    };
     r.import = VendorCsvImporter::read(csvPath, [&](const model::Sample &s) {
         hp::Hi91 h;
         h.temperature = int8_t(std::lround(std::clamp(s.temperatureC, -128.0, 127.0)));
@@ -45,21 +29,15 @@ CsvCaptureConverter::Result CsvCaptureConverter::convert(const QString &csvPath,
         h.yaw = float(s.yaw);
         h.quat = {float(s.quat.w), float(s.quat.x), float(s.quat.y), float(s.quat.z)};
         const auto frame = hp::buildFrame(hp::encode(h));
-        capture::appendChunk(buf, capture::ChunkReceived, s.hostTimeNs, 0, frame.data(), frame.size());
-        if (buf.size() >= (1u << 20))
-            flush();
+        out.append(s.hostTimeNs, frame.data(), frame.size());
     });
-    flush();
-    out.close();
     if (!r.import.ok) {
-        QFile::remove(capturePath);
+        out.discard();
         r.error = r.import.error;
         return r;
     }
-    if (writeFailed) {
-        r.error = tr("Writing %1 failed: %2. Check the free disk space.").arg(capturePath, out.errorString());
+    if (!out.finish(&r.error))
         return r;
-    }
     r.ok = true;
     return r;
 }

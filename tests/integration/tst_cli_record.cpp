@@ -1,7 +1,7 @@
 // imudesk-cli record, export and analyze end to end against the simulator on a pseudo-terminal,
 // and a recording that hits a file size limit (ulimit -f) stops with a message and an intact file.
+#include "../common/capture_bytes.h"
 #include "../common/cli_run.h"
-#include "record/capture_reader.h"
 
 #include <QFile>
 #include <QJsonArray>
@@ -166,14 +166,8 @@ private Q_SLOTS:
     {
         // The recording's bytes alone, as a serial terminal would have saved them (named .txt):
         // export and analyze take it by its content, with the device clock for time, and say so.
-        record::CaptureReader reader;
-        QString error;
-        QVERIFY2(reader.open(m_capture, &error), qPrintable(error));
-        QByteArray raw;
-        record::CaptureReader::Chunk c;
-        while (reader.next(c) == record::CaptureReader::Result::Chunk)
-            if (c.kind == record::capture::ChunkReceived)
-                raw.append(reinterpret_cast<const char *>(c.data), qsizetype(c.size));
+        const QByteArray raw = test::receivedBytes(m_capture);
+        QVERIFY(!raw.isEmpty());
         const QString dump = m_dir.filePath(QStringLiteral("terminal.txt"));
         QFile f(dump);
         QVERIFY(f.open(QIODevice::WriteOnly));

@@ -1,9 +1,10 @@
 // Record from the simulator over a real pseudo-terminal, replay the capture through
 // ReplaySession and compare every decoded value with what the live session decoded from
-// the simulator's bytes; then paced playback, seek, loop, pause, and a missing file.
+// the simulator's bytes; then paced playback, seek, loop, pause, a raw dump of the same bytes,
+// and a missing file.
+#include "../common/capture_bytes.h"
 #include "device/device_session.h"
 #include "record/capture_exporter.h"
-#include "record/capture_reader.h"
 #include "record/replay_session.h"
 #include "sim/pty_simulator.h"
 
@@ -224,14 +225,8 @@ private Q_SLOTS:
     {
         // The recording's bytes alone (a terminal's log): opened by content, every sample the
         // capture gave, a duration from the device clock, and the header says the host times are absent.
-        record::CaptureReader reader;
-        QString error;
-        QVERIFY2(reader.open(m_capture, &error), qPrintable(error));
-        QByteArray raw;
-        record::CaptureReader::Chunk c;
-        while (reader.next(c) == record::CaptureReader::Result::Chunk)
-            if (c.kind == record::capture::ChunkReceived)
-                raw.append(reinterpret_cast<const char *>(c.data), qsizetype(c.size));
+        const QByteArray raw = test::receivedBytes(m_capture);
+        QVERIFY(!raw.isEmpty());
         const QString dump = m_dir.filePath(QStringLiteral("putty.log"));
         QFile f(dump);
         QVERIFY(f.open(QIODevice::WriteOnly) && f.write(raw) == raw.size());

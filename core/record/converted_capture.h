@@ -1,0 +1,38 @@
+#pragma once
+// A capture written in one go by a converter (a vendor CSV, a raw byte dump): the header, then
+// received-bytes chunks gathered in 1 MB blocks. A failed write is kept and reported once, by
+// finish(), which removes the partial file then.
+#include "record/capture_header.h"
+
+#include <QCoreApplication>
+#include <QFile>
+#include <QString>
+
+#include <cstdint>
+#include <vector>
+
+namespace imudesk::record {
+
+class ConvertedCapture {
+    Q_DECLARE_TR_FUNCTIONS(ConvertedCapture)
+
+public:
+    // Creates path with a header naming the link kind and the source file; header's keys are
+    // added. False with a message when the file cannot be written.
+    bool open(const QString &path, const QString &sourcePath, const char *linkKind, const CaptureHeader &header,
+              QString *error);
+    void append(int64_t monotonicNs, const uint8_t *data, size_t n);
+    // Writes what is buffered and closes; false (file removed) with a message when a write failed.
+    bool finish(QString *error);
+    // Closes and removes the file (the conversion failed).
+    void discard();
+
+private:
+    void flush();
+
+    QFile m_file;
+    std::vector<uint8_t> m_buf;
+    bool m_failed = false;
+};
+
+} // namespace imudesk::record

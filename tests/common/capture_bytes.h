@@ -1,0 +1,25 @@
+#pragma once
+// The bytes a capture recorded, as a serial terminal would have saved them: its received-bytes
+// chunks one after the other, without the header, times or idle markers.
+#include "record/capture_reader.h"
+
+#include <QByteArray>
+#include <QString>
+
+namespace imudesk::test {
+
+inline QByteArray receivedBytes(const QString &capturePath)
+{
+    record::CaptureReader reader;
+    QString error;
+    QByteArray raw;
+    if (!reader.open(capturePath, &error))
+        return raw;
+    record::CaptureReader::Chunk c;
+    while (reader.next(c) == record::CaptureReader::Result::Chunk)
+        if (c.kind == record::capture::ChunkReceived)
+            raw.append(reinterpret_cast<const char *>(c.data), qsizetype(c.size));
+    return raw;
+}
+
+} // namespace imudesk::test
