@@ -146,7 +146,8 @@ void appendGarbage(Capture &c, Rng &rng)
         const uint32_t pos = rng.below(n - 3);
         uint32_t len;
         if (rng.chance(0.15)) {
-            len = rng.chance(0.3) ? 0u : 507u + rng.below(65536 - 507);
+            constexpr uint32_t kFirstBad = uint32_t(FrameDecoder::kMaxPayload) + 1;
+            len = rng.chance(0.3) ? 0u : kFirstBad + rng.below(65536 - kFirstBad);
             ++c.fakeBadLength;
         } else {
             len = rng.chance(0.5) ? uint32_t(Hi91::kSize) : 1u + rng.below(uint32_t(FrameDecoder::kMaxPayload));
@@ -392,7 +393,7 @@ private:
             m_r.ids.push_back(h.systemTime);
     }
 
-    static constexpr size_t kMaxPayload = 506;
+    static constexpr size_t kMaxPayload = 4096; // the manual's LEN 1-4096 (v1.7.1 5.7)
     Result &m_r;
     bool m_record;
     State m_state = State::Sync1;
@@ -550,8 +551,8 @@ int main(int argc, char **argv)
     std::printf("  garbage          %10llu bytes in %llu gaps of 0..40 bytes, +%zu zero bytes at the end\n",
                 (unsigned long long)cap.garbageBytes, (unsigned long long)cap.garbageGaps, kTailPadding);
     std::printf("    lone 0x5A      %10llu\n", (unsigned long long)cap.loneSync);
-    std::printf("    false 5A A5    %10llu with plausible length, %llu with length 0 or > 506 (%llu chance CRC matches defused)\n",
-                (unsigned long long)cap.fakePlausible, (unsigned long long)cap.fakeBadLength,
+    std::printf("    false 5A A5    %10llu with plausible length, %llu with length 0 or > %zu (%llu chance CRC matches defused)\n",
+                (unsigned long long)cap.fakePlausible, (unsigned long long)cap.fakeBadLength, FrameDecoder::kMaxPayload,
                 (unsigned long long)cap.fixups);
     std::printf("  timing: best of %llu runs; FrameDecoder fed in %llu-byte chunks, reference byte by byte\n\n",
                 (unsigned long long)runs, (unsigned long long)chunk);

@@ -31,7 +31,7 @@ namespace {
 using namespace imudesk::protocol;
 using namespace imudesk::protocol::hipnuc;
 
-constexpr size_t kMaxPending = FrameDecoder::kHeaderSize + FrameDecoder::kMaxPayload - 1; // 511
+constexpr size_t kMaxPending = FrameDecoder::kHeaderSize + FrameDecoder::kMaxPayload - 1; // 4101
 
 // Records what the decoder reports and rebuilds the stream from it.
 class RecordingSink : public FrameDecoder::Sink {
