@@ -455,9 +455,10 @@ QString MagCalibrationWizard::resultText() const
                     .arg(accuracyFigure(r.predictedHeadingErrorDeg, 2), limits, accuracyFigure(r.hardIronSigmaUt, 2),
                          std::isnan(r.softIronSigmaPct) ? tr("kept from before") : accuracyFigure(r.softIronSigmaPct, 2));
     }
+    // Too few samples for a covariance: the ratio means nothing, a dash says so.
     text += tr("Coverage: %1 %\nEigenvalue ratio: %2\nSamples: %3")
                 .arg(r.coveragePct, 0, 'f', 0)
-                .arg(r.eigenRatio, 0, 'f', 1)
+                .arg(r.samples >= 3 && r.eigenRatio < 1e6 ? QString::number(r.eigenRatio, 'f', 1) : QStringLiteral("\u2014"))
                 .arg(r.samples);
     if (!r.usable())
         text += QLatin1String("\n\n") + tr("What to check:") + QLatin1Char('\n') + calib::MagCalProcedure::troubleshooting();
