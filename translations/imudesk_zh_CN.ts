@@ -9161,7 +9161,7 @@ Soft-iron uncertainty: +-%4 %
         <translation>沿用之前的</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+3" />
         <source>Coverage: %1 %
 Eigenvalue ratio: %2
 Samples: %3</source>
@@ -10534,11 +10534,16 @@ Samples: %3</source>
     </message>
     <message>
         <location line="+6" />
-        <source>Bring this panel to the front: configuration, recording, console, raw or commands.</source>
-        <translation>将此面板置于前台：configuration（配置）、recording（记录）、console（控制台）、raw（原始字节）或 commands（指令日志）。</translation>
+        <source>Bring this panel to the front: configuration, recording, console, raw, commands or can (the CAN configuration).</source>
+        <translation>将此面板置于前台：configuration（配置）、recording（记录）、console（控制台）、raw（原始字节）、commands（指令日志）或 can（CAN 配置）。</translation>
     </message>
     <message>
-        <location line="+6" />
+        <location line="+102" />
+        <source>Unknown panel "%1"; use configuration, recording, console, raw, commands or can.</source>
+        <translation>未知面板“%1”；请使用 configuration、recording、console、raw、commands 或 can。</translation>
+    </message>
+    <message>
+        <location line="-96" />
         <source>Model to simulate with --simulate (default HI14).</source>
         <translation>--simulate 模拟的型号（默认 HI14）。</translation>
     </message>
@@ -10577,11 +10582,6 @@ Samples: %3</source>
         <location line="+21" />
         <source>ImuDesk</source>
         <translation>ImuDesk</translation>
-    </message>
-    <message>
-        <location line="+12" />
-        <source>Unknown panel "%1"; use configuration, recording, console, raw or commands.</source>
-        <translation>未知面板“%1”；请使用 configuration、recording、console、raw 或 commands。</translation>
     </message>
 </context>
 </TS>

@@ -130,8 +130,8 @@ int main(int argc, char *argv[])
         QStringLiteral("device|file"));
     const QCommandLineOption dockOption(
         QStringLiteral("dock"),
-        QCoreApplication::translate("main", "Bring this panel to the front: configuration, recording, console, raw "
-                                            "or commands."),
+        QCoreApplication::translate("main", "Bring this panel to the front: configuration, recording, console, raw, "
+                                            "commands or can (the CAN configuration)."),
         QStringLiteral("panel"));
     parser.addOptions({langOption, simulateOption, firmwareOption, motionOption, portOption, baudOption, demoOption,
                        screenshotOption, afterOption, linkOption, dockOption});
@@ -228,11 +228,12 @@ int main(int argc, char *argv[])
             {QStringLiteral("console"), QStringLiteral("consoleDock")},
             {QStringLiteral("raw"), QStringLiteral("rawBytesDock")},
             {QStringLiteral("commands"), QStringLiteral("commandLogDock")},
+            {QStringLiteral("can"), QStringLiteral("canConfigDock")},
         };
         const auto it = docks.find(parser.value(dockOption));
         if (it == docks.end())
             return usageError(QCoreApplication::translate("main", "Unknown panel \"%1\"; use configuration, recording, "
-                                                                  "console, raw or commands.")
+                                                                  "console, raw, commands or can.")
                                   .arg(parser.value(dockOption)));
         if (it->first == QLatin1String("configuration")) {
             // The Configure layout: the settings table gets the right column's height.
