@@ -45,6 +45,7 @@
 #include <QMainWindow>
 #include <QProcess>
 #include <QScreen>
+#include <QScrollArea>
 #include <QScrollBar>
 #include <QSettings>
 #include <QStatusBar>
@@ -331,6 +332,28 @@ class TstLayout : public QObject {
         const bool serial = kind == Kind::Serial || kind == Kind::SerialGnss || kind == Kind::SerialIns;
         if (ws->dockActions().contains(ws->consoleDock()->toggleViewAction()) != serial)
             problems << QStringLiteral("console offered: %1").arg(!serial);
+        // The CAN configuration in front: it gets the column's height (the 3D view becomes a tab),
+        // every row in view; back to the values, the 3D view returns below them when there is room.
+        if (kind == Kind::J1939 || kind == Kind::CanOpen) {
+            QDockWidget *can = nullptr;
+            for (QDockWidget *d : ws->linkDocks())
+                if (d->objectName() == QLatin1String("canConfigDock"))
+                    can = d;
+            const auto *area = can ? qobject_cast<const QScrollArea *>(can->widget()) : nullptr;
+            if (!area) {
+                problems << QStringLiteral("no CAN configuration dock");
+            } else {
+                can->raise();
+                QTest::qWait(300);
+                if (area->verticalScrollBar()->isVisible())
+                    problems << QStringLiteral("CAN configuration scrolls: %1 px for %2 px")
+                                    .arg(area->viewport()->height())
+                                    .arg(area->widget()->minimumSizeHint().height());
+                ws->valuesDock()->raise();
+                QTest::qWait(300);
+                problems << layoutProblems(w, size.width() >= kLarge.width());
+            }
+        }
         // Every HI83 field: the values keep their rows in view, the details are a tab beside them,
         // all twenty rows and their three-number texts in full.
         if (kind == Kind::SerialIns) {

@@ -225,6 +225,7 @@ private:
     QTableView *m_detailsView = nullptr;  // the HI83 detail rows of the same model
     QDockWidget *m_detailsDock = nullptr; // behind the values, once a frame carried a detail
     bool m_detailsOffered = false;
+    bool m_refitQueued = false; // a link panel behind the values came to the front: fitDocks soon
     std::array<int, 3> m_detailsColumns{}; // widest text so far per column (resizeDetailColumns)
     QDockWidget *m_valuesDock = nullptr;
     ChartPanel *m_charts = nullptr;

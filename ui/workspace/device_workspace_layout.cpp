@@ -12,10 +12,12 @@
 #include <QGuiApplication>
 #include <QHeaderView>
 #include <QScreen>
+#include <QScrollArea>
 #include <QScrollBar>
 #include <QStatusBar>
 #include <QStyle>
 #include <QTableView>
+#include <QTimer>
 
 #include <algorithm>
 
@@ -26,6 +28,16 @@ void DeviceWorkspace::addLinkDock(QDockWidget *dock, LinkDockPlace place)
     dock->setParent(this);
     m_linkDocks << dock;
     m_linkDockPlaces.insert(dock, place);
+    if (place == LinkDockPlace::BehindValues) // in front, it wants the values' room (fitDocks)
+        connect(dock, &QDockWidget::visibilityChanged, this, [this] {
+            if (m_shownOnce && followsWindow() && !m_refitQueued) {
+                m_refitQueued = true;
+                QTimer::singleShot(0, this, [this] {
+                    m_refitQueued = false;
+                    fitDocks();
+                });
+            }
+        });
     placeLinkDock(dock);
     if (m_shownOnce)
         fitDocks();
@@ -283,7 +295,17 @@ void DeviceWorkspace::fitDocks()
         // On a large window the 3D view keeps a real size (300 px with its title), else a quarter.
         const int attitudeLeast = h >= 900 ? 300 : std::min(165, h / 4);
         const bool tabbed = tabifiedDockWidgets(m_valuesDock).contains(m_attitudeDock);
-        const int needed = valuesTableHeight();
+        // What is in front in the values' place: the values, or a link's panel behind them (the
+        // CAN configuration), whose rows want their height as much.
+        int needed = valuesTableHeight();
+        for (QDockWidget *dock : std::as_const(m_linkDocks)) {
+            const auto *area = qobject_cast<const QScrollArea *>(dock->widget());
+            if (m_linkDockPlaces.value(dock) == LinkDockPlace::BehindValues && dock->isVisible() && !dock->isFloating()
+                && area && area->widget())
+                needed = std::max(needed, area->widget()->minimumSizeHint().height() + 2 * area->frameWidth()
+                                              + dock->height() - area->height() + m_valuesDock->fontMetrics().height() + 14
+                                              + 20); // the separator, spacing and rounding, as valuesTableHeight()
+        }
         if (!tabbed && needed > h - attitudeLeast) {
             tabifyDockWidget(m_valuesDock, m_attitudeDock);
             m_valuesDock->raise();
@@ -291,7 +313,7 @@ void DeviceWorkspace::fitDocks()
             splitDockWidget(m_valuesDock, m_attitudeDock, Qt::Vertical);
         }
         if (!tabifiedDockWidgets(m_valuesDock).contains(m_attitudeDock)) {
-            const int values = std::clamp(valuesTableHeight(), int(h * 0.3), h - attitudeLeast);
+            const int values = std::clamp(needed, int(h * 0.3), h - attitudeLeast);
             resizeDocks({m_valuesDock, m_attitudeDock}, {values, std::max(1, h - values)}, Qt::Vertical);
         }
     }
