@@ -274,8 +274,7 @@ void Hec495Family::resetCounters()
     m_decoder = wl::FrameDecoder{};
     m_framesByType.clear();
     m_payloadErrors = 0;
-    m_nmeaSentences = 0;
-    m_nmeaErrors = 0;
+    m_text.resetCounters();
 }
 
 void Hec495Family::feed(const QByteArray &bytes, int64_t nowNs)
@@ -303,41 +302,25 @@ void Hec495Family::lineIdle(int64_t nowNs)
 void Hec495Family::handleText(int64_t nowNs)
 {
     namespace nmea = protocol::nmea;
-    // The bytes that belong to no frame: NMEA output, or noise (counted as skipped either way).
-    for (const char c : m_decoder.takeSkipped()) {
-        if (c == '$') { // a sentence starts: what came before it was not one
-            m_line.assign(1, c);
-            m_lineOverflow = false;
+    // The bytes that belong to no frame: NMEA output, or noise. The same demultiplexer as a
+    // replay's (record::CaptureDecoder) splits them into sentences, so both see the same ones.
+    const std::string text = m_decoder.takeSkipped();
+    if (text.empty())
+        return;
+    m_textEvents.clear();
+    m_text.feed(reinterpret_cast<const uint8_t *>(text.data()), text.size(), m_textEvents);
+    for (const protocol::StreamEvent &e : m_textEvents) {
+        if (e.kind != protocol::StreamEvent::Kind::Nmea)
             continue;
-        }
-        if (c != '\n') {
-            if (m_line.empty())
-                continue;
-            if (m_line.size() < nmea::kMaxSentenceLength + 1)
-                m_line.push_back(c);
-            else
-                m_lineOverflow = true;
+        const nmea::ParseResult parsed = nmea::parseSentence(e.text);
+        if (!parsed.sentence)
             continue;
+        ++m_framesByType["NMEA " + parsed.sentence->type];
+        if (auto sample = nmea::toSample(*parsed.sentence)) {
+            sample->hostTimeNs = nowNs;
+            m_batch.push_back(std::move(*sample));
         }
-        if (!m_line.empty() && m_line.back() == '\r')
-            m_line.pop_back();
-        if (m_line.empty())
-            continue;
-        const nmea::ParseResult parsed = m_lineOverflow ? nmea::ParseResult{{}, nmea::NmeaError::TooLong}
-                                                        : nmea::parseSentence(m_line);
-        if (parsed.sentence) {
-            ++m_nmeaSentences;
-            ++m_framesByType["NMEA " + parsed.sentence->type];
-            if (auto sample = nmea::toSample(*parsed.sentence)) {
-                sample->hostTimeNs = nowNs;
-                m_batch.push_back(std::move(*sample));
-            }
-            Q_EMIT nmeaReceived(QString::fromStdString(m_line));
-        } else {
-            ++m_nmeaErrors;
-        }
-        m_line.clear();
-        m_lineOverflow = false;
+        Q_EMIT nmeaReceived(QString::fromStdString(e.text));
     }
 }
 
@@ -439,8 +422,8 @@ void Hec495Family::fillCounters(SessionStats &s) const
     s.bytesSkipped = c.bytesSkipped;
     s.payloadErrors = m_payloadErrors;
     s.framesByType = m_framesByType;
-    s.nmeaSentences = m_nmeaSentences;
-    s.nmeaErrors = m_nmeaErrors;
+    s.nmeaSentences = m_text.counters().nmeaSentences;
+    s.nmeaErrors = m_text.counters().nmeaErrors;
 }
 
 } // namespace imudesk::device

@@ -29,6 +29,7 @@
 #include "device/family_plugin.h"
 #include "device/hec495_result.h"
 #include "model/sample.h"
+#include "protocol/stream/stream_demux.h"
 #include "protocol/witlink/frame_decoder.h"
 
 #include <QElapsedTimer>
@@ -72,7 +73,7 @@ public:
     void restartStream() override
     {
         m_decoder.reset();
-        m_line.clear();
+        m_text.reset();
     }
     void resetCounters() override;
     void feed(const QByteArray &bytes, int64_t nowNs) override;
@@ -121,11 +122,9 @@ private:
 
     std::map<std::string, uint64_t> m_framesByType;
     uint64_t m_payloadErrors = 0;
-    std::string m_line;               // the NMEA sentence being received (at most kMaxSentenceLength)
-    bool m_lineOverflow = false;
+    protocol::StreamDemux m_text;     // the text between frames: NMEA sentences
+    std::vector<protocol::StreamEvent> m_textEvents;
     uint8_t m_content = 0xFF;         // output content (0x49) last set, 0xFF: unknown
-    uint64_t m_nmeaSentences = 0;
-    uint64_t m_nmeaErrors = 0;
 };
 
 } // namespace imudesk::device

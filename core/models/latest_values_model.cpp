@@ -97,9 +97,18 @@ template <typename T> QString triple(const std::array<T, 3> &v, int decimals)
 // (firmware 1.7.0 and later; the workspace drops it for older firmware) has UTC_UNSYNC clear.
 bool utcClock(const model::Sample &s)
 {
-    return s.source == "HI91" && s.has(model::FieldDeviceTime)
-        && model::MainStatus::timeBase(s.has(model::FieldMainStatus), s.mainStatus) == 0
-        && s.has(model::FieldMainStatus);
+    return s.source == "HI91" && s.has(model::FieldDeviceTime) && s.has(model::FieldMainStatus)
+        && !model::MainStatus(s.mainStatus).test(model::MainStatus::UtcUnsync);
+}
+
+// A time of day, hh:mm:ss with `decimals` digits of the second.
+QString clockText(double secondsOfDay, int decimals)
+{
+    const int whole = int(secondsOfDay);
+    return QStringLiteral("%1:%2:%3")
+        .arg(whole / 3600, 2, 10, QLatin1Char('0'))
+        .arg(whole / 60 % 60, 2, 10, QLatin1Char('0'))
+        .arg(secondsOfDay - whole / 60 * 60, decimals + 3, 'f', decimals, QLatin1Char('0'));
 }
 
 QString axisName(Row row)
@@ -246,14 +255,8 @@ QString LatestValuesModel::formatValue(Row row, const model::Sample &s) const
     }
     switch (row) {
     case DeviceTime:
-        if (utcClock(s)) { // HI91 system_time aligned to the UTC day by PPS (v1.7.1 manual 2.2.2)
-            const auto ms = int64_t(s.deviceTimeMs) % 86400000;
-            return QStringLiteral("%1:%2:%3.%4")
-                .arg(ms / 3600000, 2, 10, QLatin1Char('0'))
-                .arg(ms / 60000 % 60, 2, 10, QLatin1Char('0'))
-                .arg(ms / 1000 % 60, 2, 10, QLatin1Char('0'))
-                .arg(ms % 1000, 3, 10, QLatin1Char('0'));
-        }
+        if (utcClock(s)) // HI91 system_time aligned to the UTC day by PPS (v1.7.1 manual 2.2.2)
+            return clockText(double(int64_t(s.deviceTimeMs) % 86400000) / 1000.0, 3);
         return fixed(s.deviceTimeMs, 0);
     case InsStatus: {
         switch (s.insStatus) {
@@ -288,11 +291,7 @@ QString LatestValuesModel::formatValue(Row row, const model::Sample &s) const
     case UtcTime: {
         if (s.utcTimeOfDayS < 0)
             return missingText();
-        const int whole = int(s.utcTimeOfDayS);
-        return QStringLiteral("%1:%2:%3")
-            .arg(whole / 3600, 2, 10, QLatin1Char('0'))
-            .arg(whole / 60 % 60, 2, 10, QLatin1Char('0'))
-            .arg(s.utcTimeOfDayS - whole / 60 * 60, 5, 'f', 2, QLatin1Char('0'));
+        return clockText(s.utcTimeOfDayS, 2);
     }
     case Heave: return fixed(s.heaveSurgeSway.x, 2);
     case Surge: return fixed(s.heaveSurgeSway.y, 2);
