@@ -75,6 +75,7 @@ int simulateCan(const QString &canSpec, const QString &protocol, const QString &
                 uint64_t seed, const QString &firmware, const QString &flashDump = QString());
 int cmdMagcal(const QStringList &args);
 int cmdCalibrate(const QStringList &args); // commands_calibrate.cpp
+int cmdStation(const QStringList &args);   // commands_station.cpp
 
 // Parses args with the given parser; on error prints it and returns false.
 bool parseArgs(QCommandLineParser &p, const QStringList &args, const QString &usage);

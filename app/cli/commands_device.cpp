@@ -336,6 +336,13 @@ int cmdSimulate(const QStringList &args)
                                    QStringLiteral("MOTION"), QStringLiteral("static")));
     p.addOption(QCommandLineOption(QStringLiteral("seed"), QStringLiteral("Random seed (default 1)."),
                                    QStringLiteral("N"), QStringLiteral("1")));
+    p.addOption(QCommandLineOption(
+        QStringLiteral("faults"),
+        QStringLiteral("HiPNUC on a pty: faults of this module, comma-separated: noisy-gyro[=F] (gyro noise x F, "
+                       "default 20), mounting=R/P/Y or wrong-mounting (90/0/0; deg), mag-disturbance[=U] (uT, "
+                       "default 40: MCAL fails), unplug=T (cable pulled T s after the start), fixture (turned "
+                       "through every attitude while an MCAL runs)."),
+        QStringLiteral("LIST")));
     addModbusSimulateOptions(p); // also --device hipnuc|hec495
     addFlashDumpOption(p);
     p.addOption(QCommandLineOption(QStringLiteral("address"), QStringLiteral("HEC495 module address (default 0)."),
@@ -348,11 +355,16 @@ int cmdSimulate(const QStringList &args)
                                    QStringLiteral("N"), QStringLiteral("-1")));
     const QString usage = QStringLiteral("imudesk-cli simulate --pty [--device hipnuc|hec495] [--model HI14] "
                                          "[--firmware 1.7.1] [--baud 115200] [--address N] "
-                                         "[--motion static|spin|tumble|turntable] [--pps] [--seed N] [--flash-dump FILE] "
-                                         "[--modbus [--id N]] | --can PLUGIN:INTERFACE [--protocol j1939|canopen] "
+                                         "[--motion static|spin|tumble|turntable] [--pps] [--seed N] [--faults LIST] "
+                                         "[--flash-dump FILE] [--modbus [--id N]] | --can PLUGIN:INTERFACE [--protocol j1939|canopen] "
                                          "[--device hipnuc|hec495] [--node N] [--flash-dump FILE]");
     if (!parseArgs(p, args, usage))
         return ExitUsage;
+    if (p.isSet(QStringLiteral("faults"))
+        && (p.isSet(QStringLiteral("can")) || p.isSet(QStringLiteral("modbus"))
+            || p.value(QStringLiteral("device")) != QLatin1String("hipnuc")))
+        return fail(QStringLiteral("--faults is for a HiPNUC module on a pty (simulate --pty [--device hipnuc])"),
+                    ExitUsage);
     if (p.isSet(QStringLiteral("can"))) {
         sim::Motion m = sim::Motion::Static;
         if (!sim::parseMotion(p.value(QStringLiteral("motion")).toStdString(), m))
@@ -386,6 +398,9 @@ int cmdSimulate(const QStringList &args)
     o.seed = p.value(QStringLiteral("seed")).toULongLong(&ok);
     if (!ok)
         return fail(QStringLiteral("--seed needs a whole number"), ExitUsage);
+    std::string faultError;
+    if (!sim::parseSimFaults(p.value(QStringLiteral("faults")).toStdString(), o.faults, &faultError))
+        return fail(QStringLiteral("--faults: %1").arg(QString::fromStdString(faultError)), ExitUsage);
 
     sim::PtySimulator simulator(o);
     QString error;

@@ -2,9 +2,12 @@
 #include "cli_context.h"
 
 #include <QCoreApplication>
+#include <QGuiApplication>
 #include <QLoggingCategory>
 
 #include <cstdio>
+#include <cstring>
+#include <memory>
 #include <map>
 
 using namespace imudesk::cli;
@@ -31,9 +34,14 @@ void usage(FILE *to)
                "                                         magnetometer calibration of a CSV (mag_x,mag_y,mag_z uT)\n"
                "  calibrate PORT mag|gyro-scale|level|heading-reset|hec495-clear [--json]\n"
                "                                         run a device-side calibration, progress on stderr\n"
+               "  station PLAN.json PORT[,PORT...] [--report DIR] [--baud B] [--json]\n"
+               "                                         run a production test plan on every module at once;\n"
+               "                                         exit code 0 only when every module passed\n"
                "  simulate --pty [--model HI14] [--firmware 1.7.1] [--baud 115200]\n"
-               "           [--motion static|spin|tumble|turntable] [--seed N]\n"
-               "                                         serve a simulated device on a pseudo-terminal\n"
+               "           [--motion static|spin|tumble|turntable] [--seed N] [--faults LIST]\n"
+               "                                         serve a simulated device on a pseudo-terminal; LIST:\n"
+               "                                         noisy-gyro[=F],mounting=R/P/Y|wrong-mounting,\n"
+               "                                         mag-disturbance[=U],unplug=T,fixture\n"
                "  simulate --pty --modbus [--device hipnuc|hec495] [--id N] [--baud B]\n"
                "                                         serve a simulated Modbus RTU device\n"
                "  modbus PORT [--id N] [--baud B] info|read [REG [COUNT]]|scan|write REG VALUE [--json]\n"
@@ -54,7 +62,14 @@ void usage(FILE *to)
 
 int main(int argc, char **argv)
 {
-    QCoreApplication app(argc, argv);
+    // The station writes PDF reports (QtGui): it gets a QGuiApplication on the offscreen
+    // platform, so no display is needed; every other command stays a QCoreApplication.
+    const bool station = argc > 1 && std::strcmp(argv[1], "station") == 0;
+    if (station && qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
+        qputenv("QT_QPA_PLATFORM", "offscreen");
+    std::unique_ptr<QCoreApplication> application = station ? std::make_unique<QGuiApplication>(argc, argv)
+                                                            : std::make_unique<QCoreApplication>(argc, argv);
+    QCoreApplication &app = *application;
     QCoreApplication::setApplicationName(QStringLiteral("imudesk-cli"));
     QCoreApplication::setApplicationVersion(QStringLiteral(IMUDESK_VERSION));
     installSignalHandlers();
@@ -88,6 +103,7 @@ int main(int argc, char **argv)
         {QStringLiteral("can"), cmdCan},
         {QStringLiteral("magcal"), cmdMagcal},
         {QStringLiteral("calibrate"), cmdCalibrate},
+        {QStringLiteral("station"), cmdStation},
     };
     const auto it = commands.find(cmd);
     if (it == commands.end()) {

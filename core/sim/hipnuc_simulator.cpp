@@ -39,10 +39,18 @@ void HipnucSimulator::Coverage::reset()
 {
     cells.fill(false);
     visited = 0;
+    samples = 0;
+    meanUt = 0;
+    sumSquaresUt = 0;
 }
 
-void HipnucSimulator::Coverage::add(const Eigen::Vector3d &d)
+void HipnucSimulator::Coverage::add(const Eigen::Vector3d &d, double fieldUt)
 {
+    ++samples;
+    const double delta = fieldUt - meanUt;
+    meanUt += delta / samples;
+    sumSquaresUt += delta * (fieldUt - meanUt);
+
     constexpr int kBands = 6, kSectors = kMagCalCells / kBands;
     const int band = std::clamp(int(std::floor((d.z() + 1.0) * 0.5 * kBands)), 0, kBands - 1);
     const double az = std::atan2(d.y(), d.x()); // -pi..pi
@@ -59,12 +67,19 @@ int HipnucSimulator::Coverage::progress() const
     return std::min(100, visited * 100 / kMagCalCellsNeeded);
 }
 
+double HipnucSimulator::Coverage::spreadUt() const
+{
+    return samples > 0 ? std::sqrt(sumSquaresUt / samples) : 0.0;
+}
+
 // ---------------------------------------------------------------------------------------
 // Construction, identity, gates
 
 HipnucSimulator::HipnucSimulator(SimOptions options)
     : m_options(std::move(options)),
-      m_motion(MotionModel::Options{m_options.seed, m_options.motion}),
+      // The rotation fixture holds the module still except during an MCAL (moduleStateAt).
+      m_motion(MotionModel::Options{m_options.seed, m_options.faults.magCalFixture ? Motion::Static : m_options.motion}),
+      m_fixtureMotion(MotionModel::Options{m_options.seed, Motion::Tumble}),
       m_sensor(m_options.seed)
 {
     auto fw = model::FirmwareVersion::parse(m_options.firmware);
@@ -74,6 +89,10 @@ HipnucSimulator::HipnucSimulator(SimOptions options)
     }
     m_firmware = *fw;
     m_sensor.setGyroScaleError(m_options.gyroScaleError);
+    m_sensor.setGyroNoiseFactor(m_options.faults.gyroNoiseFactor);
+    const auto &mount = m_options.faults.mountingErrorDeg;
+    m_mounted = mount != std::array<double, 3>{0, 0, 0};
+    m_mounting = quatFromEnu312({mount[0], mount[1], mount[2]});
     m_edition = m_firmware >= model::FirmwareVersion{1, 7, 1} ? ManualEdition::V171 : ManualEdition::V166;
     m_family = model::familyOfProduct(m_options.model);
     char buf[20];
@@ -306,7 +325,7 @@ void HipnucSimulator::integrateGyroCal(int64_t t)
 {
     if (!m_usrcalActive || t <= m_usrcalLastUs)
         return;
-    const double rate = m_motion.at(double(t) * 1e-6).rateDps.z();
+    const double rate = moduleStateAt(t).rateDps.z();
     m_usrcalAngle += 0.5 * (m_usrcalLastRate + rate) * double(t - m_usrcalLastUs) * 1e-6;
     m_usrcalLastUs = t;
     m_usrcalLastRate = rate;
@@ -326,8 +345,9 @@ void HipnucSimulator::tick(int64_t t)
         syncInPulse();
     }
 
-    const MotionState ms = m_motion.at(double(t) * 1e-6);
+    const MotionState ms = moduleStateAt(t);
     const Eigen::Vector3d dir = (ms.q.toRotationMatrix().transpose() * SensorModel::fieldNav()).normalized();
+    auto field = [&] { return fittedFieldUt(t, ms); }; // only while a calibration collects
     auto calibrated = [this] {
         m_magCalibrated = true;
         const Eigen::Vector3d h = m_sensor.hardIron();
@@ -336,7 +356,7 @@ void HipnucSimulator::tick(int64_t t)
     };
 
     if (m_mcalStat == 1) {
-        m_mcalCoverage.add(dir);
+        m_mcalCoverage.add(dir, field());
         m_mcalProgress = std::max(m_mcalProgress, m_mcalCoverage.progress());
         if (m_mcalProgress >= 100) {
             m_mcalStat = 2;
@@ -346,19 +366,75 @@ void HipnucSimulator::tick(int64_t t)
             qCDebug(lcSim) << "MCAL failed at progress" << m_mcalProgress;
         }
     } else if (m_mcalStat == 2 && t >= m_mcalVerifyUntilUs) {
-        m_mcalStat = 3;
-        calibrated();
+        // The fit does not explain a field that changed while it was collected.
+        const double spread = m_mcalCoverage.spreadUt();
+        if (spread <= kMagCalMaxSpreadUt) {
+            m_mcalStat = 3;
+            calibrated();
+        } else {
+            m_mcalStat = 4;
+            qCDebug(lcSim) << "MCAL failed verification: field magnitudes spread" << spread << "uT";
+        }
     }
 
     // v1.6.6: background calibration while in 9-axis mode with IMU_EN_MCAL 1.
     if (m_edition == ManualEdition::V166 && hasMagnetometer() && !m_magCalibrated && m_running.backgroundMagCal
         && m_active.attMode == 1) {
-        m_bgCoverage.add(dir);
+        m_bgCoverage.add(dir, field());
         if (m_bgCoverage.progress() >= 100) {
-            calibrated();
-            qCDebug(lcSim) << "background magnetometer calibration done at" << t << "us";
+            if (m_bgCoverage.spreadUt() <= kMagCalMaxSpreadUt) {
+                calibrated();
+                qCDebug(lcSim) << "background magnetometer calibration done at" << t << "us";
+            } else {
+                qCDebug(lcSim) << "background magnetometer calibration rejected, spread" << m_bgCoverage.spreadUt()
+                               << "uT: collecting again";
+                m_bgCoverage.reset();
+            }
         }
     }
+}
+
+// ---------------------------------------------------------------------------------------
+// The module's body and what its sensors measure
+
+MotionState HipnucSimulator::moduleStateAt(int64_t t) const
+{
+    MotionState s = m_motion.at(double(t) * 1e-6);
+    if (m_options.faults.magCalFixture && m_mcalStat == 1 && t >= m_mcalStartUs)
+        s = m_fixtureMotion.at(double(t - m_mcalStartUs) * 1e-6);
+    if (m_mounted) {
+        // v_body = R_m v_module: the attitude gains R_m, the rate is seen in the module's axes.
+        s.q = canonical(s.q * m_mounting);
+        s.rateDps = m_mounting.conjugate() * s.rateDps;
+    }
+    return s;
+}
+
+Eigen::Vector3d HipnucSimulator::magDisturbanceAt(int64_t t) const
+{
+    const double a = m_options.faults.magDisturbanceUt;
+    if (a == 0)
+        return Eigen::Vector3d::Zero();
+    const double s = double(t) * 1e-6;
+    const double azimuth = 2 * M_PI * s / kMagDisturbanceTurnS;
+    const double elevation = 0.5 * M_PI * std::sin(2 * M_PI * s / kMagDisturbanceTiltS);
+    return a * Eigen::Vector3d(std::cos(elevation) * std::cos(azimuth), std::cos(elevation) * std::sin(azimuth),
+                               std::sin(elevation));
+}
+
+Eigen::Vector3d HipnucSimulator::disturbanceInSensor(int64_t t, const MotionState &state) const
+{
+    if (m_options.faults.magDisturbanceUt == 0)
+        return Eigen::Vector3d::Zero();
+    return m_sensor.softIron() * (state.q.toRotationMatrix().transpose() * magDisturbanceAt(t));
+}
+
+double HipnucSimulator::fittedFieldUt(int64_t t, const MotionState &state) const
+{
+    // The calibration's fit recovers the hard and soft iron (from noise-free readings here),
+    // leaving the field at the sensor: the earth's field plus any disturbance.
+    const Eigen::Vector3d mag = m_sensor.ideal(state).mag + disturbanceInSensor(t, state);
+    return (m_sensor.softIron().inverse() * (mag - m_sensor.hardIron())).norm();
 }
 
 // ---------------------------------------------------------------------------------------
@@ -382,7 +458,7 @@ Eigen::Matrix3d HipnucSimulator::levelMatrix() const
 
 Eigen::Quaterniond HipnucSimulator::attitudeAt(int64_t t, bool withYawOffset) const
 {
-    const MotionState ms = m_motion.at(double(t) * 1e-6);
+    const MotionState ms = moduleStateAt(t);
     const Eigen::Quaterniond qus(userFromSensor());
     // R_nav<-user = R_nav<-sensor * R_user<-sensor^T
     Eigen::Quaterniond q = ms.q * qus.conjugate();
@@ -403,11 +479,11 @@ uint16_t HipnucSimulator::mainStatusAt(int64_t t) const
     uint16_t s = m_utcSyncedAtUs >= 0 && t >= m_utcSyncedAtUs ? 0 : uint16_t(1u << MainStatus::UtcUnsync);
     if (m_active.attMode == 1)
         s |= uint16_t(1u << MainStatus::MagAiding);
-    if (m_motion.motion() == Motion::Static)
+    if (m_motion.motion() == Motion::Static && !moduleStateAt(t).moving) // a fixture may turn it
         s |= uint16_t(1u << MainStatus::Static);
     if (t - m_startUs < kWbConvUs)
         s |= uint16_t(1u << MainStatus::WbConv);
-    if (m_active.attMode == 1 && !m_magCalibrated)
+    if (m_active.attMode == 1 && (!m_magCalibrated || m_options.faults.magDisturbanceUt != 0))
         s |= uint16_t(1u << MainStatus::MagDist);
     return s;
 }
@@ -415,7 +491,9 @@ uint16_t HipnucSimulator::mainStatusAt(int64_t t) const
 HipnucSimulator::Snapshot HipnucSimulator::snapshotAt(int64_t t)
 {
     if (m_sampleUs != t) {
-        m_sample = m_sensor.sample(m_motion.at(double(t) * 1e-6));
+        const MotionState state = moduleStateAt(t);
+        m_sample = m_sensor.sample(state);
+        m_sample.mag += disturbanceInSensor(t, state);
         m_sampleUs = t;
     }
     Snapshot s;

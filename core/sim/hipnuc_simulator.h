@@ -70,8 +70,39 @@
 // system_time is ms since the last start, or the ms of the UTC day once a PPS input has
 // aligned the clock (SimOptions::ppsInput). UTC (NMEA, HI81, HI83) is kUtcBase plus the
 // simulation clock. MAIN_STATUS (firmware >= 1.7.0, else 0): UTC_UNSYNC until PPS aligned it,
-// MAG_AIDING in mode 1, STATIC for a static motion, WB_CONV for 3 s after a start,
-// MAG_DIST in mode 1 until a magnetometer calibration succeeded.
+// MAG_AIDING in mode 1, STATIC for a static motion (not while a fixture turns it), WB_CONV for
+// 3 s after a start, MAG_DIST in mode 1 until a magnetometer calibration succeeded and while a
+// magnetic disturbance is present.
+//
+// Magnetometer calibration (MCAL, firmware >= 1.7.0): STAT=1 while the field directions are
+// collected (PROGRESS = covered direction cells, kMagCalCellsNeeded of kMagCalCells for 100;
+// kMagCalTimeoutUs without reaching 100 ends in STAT=4), STAT=2 for kMagCalVerifyUs while the
+// fit is checked, then STAT=3 (calibrated: MAG_DIST clears, the hard iron leaves the output) or
+// STAT=4. The check: the fit removes the hard and soft iron (the simulated one recovers them
+// exactly), so the field magnitudes it collected must agree; a spread (RMS about their mean)
+// above kMagCalMaxSpreadUt means the field itself changed while they were collected (a
+// magnetic disturbance) and the calibration fails. The v1.6.6 background calibration makes the
+// same check when its coverage is complete and starts collecting again when it fails.
+//
+// Faults (SimOptions::faults, per instance; imudesk-cli simulate --pty --faults LIST):
+//   * noisy gyro: the gyro's white noise times gyroNoiseFactor.
+//   * wrong mounting: the module sits in its fixture rotated by mountingErrorDeg relative to
+//     the body the motion model moves. The rotation is applied where the motion state becomes
+//     the module's state (moduleStateAt), so acc, gyr, mag, the attitude of every message and
+//     the calibrations all see the rotated body.
+//   * magnetic disturbance: a field of magDisturbanceUt whose direction turns (about the
+//     vertical every kMagDisturbanceTurnS, tilting up and down every kMagDisturbanceTiltS), as a
+//     motor beside the station, added to the field the magnetometer measures (soft iron applies
+//     to it as to the earth's field). MCAL collects its directions but ends in STAT=4; MAG_DIST
+//     stays set.
+//   * unplugged cable: only PtySimulator acts on unplugAtS (pty_simulator.h).
+//   * rotation fixture (magCalFixture): the module rests at the static attitude (Motion::Static,
+//     whatever SimOptions::motion says) except while an MCAL collects (STAT=1): then the fixture
+//     turns it as Motion::Tumble does, counted from the MCAL start (the fixture first moves it to
+//     the tumble's start attitude), so that an MCAL on a bench tray completes: about 49.5 s of
+//     simulated time from START to STAT=3 with seed 1, kMagCalVerifyUs included. From STAT=2 on
+//     (the manual's "hold still"), and after a failure or a restart, it is at rest at the
+//     static attitude again.
 #include "model/device_identity.h"
 #include "model/mounting.h"
 #include "protocol/hipnuc/ascii_command.h"
@@ -90,6 +121,41 @@
 
 namespace imudesk::sim {
 
+// Faults of one simulated module, so that a production-station test can run several modules
+// of which some fail (see "Faults" above). The defaults are a good module.
+struct SimFaults {
+    static constexpr double kNoisyGyroFactor = 20;      // "noisy-gyro": 0.4 deg/s per axis
+    static constexpr double kWrongMountingRollDeg = 90; // "wrong-mounting": on its side
+    static constexpr double kMagDisturbanceUt = 40;     // "mag-disturbance": a motor close by
+
+    // The gyro's white noise (SensorModel::kGyrNoiseDps per axis) is multiplied by this.
+    double gyroNoiseFactor = 1;
+    // Roll, pitch, yaw (deg, ENU 3-1-2) of the module's body in its fixture, relative to the
+    // body the motion model moves: {90, 0, 0} makes a static module read a roll of about 90 deg
+    // more than the static tilt.
+    std::array<double, 3> mountingErrorDeg{0, 0, 0};
+    // Magnitude (uT) of a time-varying disturbing field added to the magnetometer; 0: none.
+    double magDisturbanceUt = 0;
+    // The USB cable is pulled this many seconds after PtySimulator::start(); < 0: never.
+    double unplugAtS = -1;
+    // A rotation fixture turns the module through every attitude while its MCAL collects.
+    bool magCalFixture = false;
+
+    friend bool operator==(const SimFaults &, const SimFaults &) = default;
+};
+
+// Reads a comma-separated fault list (case-insensitive words, blanks around items ignored):
+//   noisy-gyro        gyroNoiseFactor = kNoisyGyroFactor      noisy-gyro=F      factor F >= 0
+//   wrong-mounting    mountingErrorDeg = {90, 0, 0}           mounting=R/P/Y    degrees
+//   mag-disturbance   magDisturbanceUt = kMagDisturbanceUt    mag-disturbance=U uT >= 0
+//   unplug=T          unplugAtS = T (seconds >= 0)            fixture           magCalFixture
+// An empty text is no fault. Words not in `text` keep their value in `out`. On a word or value
+// it does not accept it returns false, and *error (if given) says which and what is accepted.
+bool parseSimFaults(std::string_view text, SimFaults &out, std::string *error = nullptr);
+// The same faults as parseSimFaults reads them back ("" when there is none), e.g.
+// "noisy-gyro=20,mounting=90/0/0,mag-disturbance=40,unplug=2.5,fixture".
+std::string simFaultsText(const SimFaults &faults);
+
 struct SimOptions {
     std::string model = "HI14";       // product name without the hardware revision
     std::string firmware = "1.7.1";   // "1.7.1", "171", "1.6.6", ...
@@ -102,6 +168,7 @@ struct SimOptions {
     // a start the module aligns to UTC: UTC_UNSYNC clears and the HI91 system_time becomes the
     // ms of the UTC day. Each edge is also a SYNC_IN pulse (ONMARK 1 messages, 2.2.1).
     bool ppsInput = false;
+    SimFaults faults;                 // none by default
 };
 
 class HipnucSimulator {
@@ -121,6 +188,9 @@ public:
     static constexpr size_t kMessageCount = 7;            // protocol::hipnuc::Message values
     static constexpr int kMagCalCells = 72;               // 6 bands x 12 sectors of field directions
     static constexpr int kMagCalCellsNeeded = 50;         // PROGRESS=100 here
+    static constexpr double kMagCalMaxSpreadUt = 2.5;     // fitted field magnitudes must agree to this (RMS)
+    static constexpr double kMagDisturbanceTurnS = 3.0;   // the disturbance turns about the vertical
+    static constexpr double kMagDisturbanceTiltS = 7.0;   // and tilts up and down, with these periods
 
     struct MessageSetting {
         enum class Mode { Off, OnTime, OnMark };
@@ -233,6 +303,11 @@ public:
     Config factoryConfig() const;
     // Output attitude (user frame, world frame, corrections) at the current time, no noise.
     Eigen::Quaterniond currentAttitude() const { return attitudeAt(m_nowUs, true); }
+    // The true state of the module's own body at t (us): the motion, turned by the rotation
+    // fixture while it runs and by the mounting error. Everything measured derives from it.
+    MotionState moduleStateAt(int64_t t) const;
+    // The disturbing field (SimFaults::magDisturbanceUt) at t, navigation frame (ENU, uT).
+    Eigen::Vector3d magDisturbanceAt(int64_t t) const;
 
 private:
     enum class Outcome { Silent, Ok, Err };
@@ -251,12 +326,17 @@ private:
         double pressurePa = 0, temperatureC = 0;
         uint16_t mainStatus = 0;
     };
+    // What a magnetometer calibration has collected: the field directions it saw (progress)
+    // and the magnitudes of the fitted field (their spread is the fit's residual).
     struct Coverage {
         std::array<bool, kMagCalCells> cells{};
         int visited = 0;
+        int samples = 0;
+        double meanUt = 0, sumSquaresUt = 0; // Welford's running mean and sum of squared deviations
         void reset();
-        void add(const Eigen::Vector3d &direction);
+        void add(const Eigen::Vector3d &direction, double fieldUt);
         int progress() const;
+        double spreadUt() const; // RMS deviation of the magnitudes from their mean
     };
     struct Chunk {
         std::vector<uint8_t> bytes;
@@ -290,6 +370,8 @@ private:
     std::vector<std::string> comConfigLines() const;
 
     // output
+    Eigen::Vector3d disturbanceInSensor(int64_t t, const MotionState &state) const;
+    double fittedFieldUt(int64_t t, const MotionState &state) const;
     Snapshot snapshotAt(int64_t t);
     Eigen::Quaterniond attitudeAt(int64_t t, bool withYawOffset) const;
     Eigen::Matrix3d userFromSensor() const;
@@ -310,6 +392,9 @@ private:
     model::ManualEdition m_edition = model::ManualEdition::V171;
     model::ProductFamily m_family = model::ProductFamily::Unknown;
     MotionModel m_motion;
+    MotionModel m_fixtureMotion;                                      // SimFaults::magCalFixture
+    Eigen::Quaterniond m_mounting = Eigen::Quaterniond::Identity();   // motion body <- module body
+    bool m_mounted = false;                                           // a mounting error is set
     SensorModel m_sensor;
     std::string m_uuid;
 

@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cerrno>
+#include <cmath>
 #include <cstring>
 #include <deque>
 #include <fcntl.h>
@@ -88,6 +89,7 @@ struct PtySimulator::Engine {
     QTimer *timer = nullptr;
     QElapsedTimer clock;
     bool clientPresent = false;
+    int64_t unplugAtUs = -1; // SimFaults::unplugAtS on the engine's clock; < 0: never
 
     std::deque<Pending> pending;
     size_t pendingBytes = 0;
@@ -96,6 +98,7 @@ struct PtySimulator::Engine {
     double garbageCarry = 0;
 
     std::atomic<uint64_t> bytesIn{0}, bytesDiscarded{0}, bytesOut{0}, bytesGarbled{0}, bytesLost{0}, chunksDropped{0};
+    std::atomic<bool> unplugged{false};
 
     int64_t nowUs() const { return clock.nsecsElapsed() / 1000; }
 
@@ -136,6 +139,22 @@ struct PtySimulator::Engine {
         qCDebug(lcPty) << (present ? "client opened" : "client closed") << "the pty";
     }
 
+    // The cable is pulled: the master closes (the client sees the hang-up) and nothing runs
+    // any more. The notifier and timer are only stopped here (this may run inside the
+    // notifier's own signal); stop() deletes them.
+    void unplug()
+    {
+        setClientPresent(false);
+        if (notifier)
+            notifier->setEnabled(false);
+        if (timer)
+            timer->stop();
+        ::close(master);
+        master = -1;
+        unplugged = true;
+        qCInfo(lcPty) << "cable pulled at" << nowUs() / 1000 << "ms";
+    }
+
     // POLLHUP on the master means that no client has the slave open.
     bool probeClient()
     {
@@ -147,6 +166,8 @@ struct PtySimulator::Engine {
 
     void onReadable()
     {
+        if (master < 0)
+            return;
         uint8_t buf[4096];
         for (;;) {
             const ssize_t n = ::read(master, buf, sizeof buf);
@@ -182,6 +203,12 @@ struct PtySimulator::Engine {
 
     void service()
     {
+        if (master < 0)
+            return;
+        if (unplugAtUs >= 0 && nowUs() >= unplugAtUs) {
+            unplug();
+            return;
+        }
         sim.advanceTo(nowUs());
         auto segments = sim.takeOutputSegments();
         setClientPresent(probeClient());
@@ -281,6 +308,8 @@ bool PtySimulator::start(QString *error)
         m_device = std::make_unique<HipnucSerialDevice>(m_options);
     m_engine = std::make_unique<Engine>(std::move(m_device));
     m_engine->master = master;
+    if (!m_customDevice && m_options.faults.unplugAtS >= 0)
+        m_engine->unplugAtUs = std::llround(m_options.faults.unplugAtS * 1e6);
 
     m_thread = new QThread;
     m_thread->setObjectName(QStringLiteral("pty-simulator"));
@@ -304,7 +333,12 @@ bool PtySimulator::start(QString *error)
             e->timer->start();
         },
         Qt::BlockingQueuedConnection);
-    qCInfo(lcPty) << "simulated" << QString::fromStdString(m_engine->sim.productName()) << "on" << m_path;
+    const std::string faults = m_customDevice ? std::string() : simFaultsText(m_options.faults);
+    if (faults.empty())
+        qCInfo(lcPty) << "simulated" << QString::fromStdString(m_engine->sim.productName()) << "on" << m_path;
+    else
+        qCInfo(lcPty) << "simulated" << QString::fromStdString(m_engine->sim.productName()) << "on" << m_path
+                      << "with faults" << QString::fromStdString(faults);
     return true;
 }
 
@@ -328,7 +362,8 @@ void PtySimulator::stop()
     m_context = nullptr;
     delete m_thread;
     m_thread = nullptr;
-    ::close(e->master);
+    if (e->master >= 0) // not when the cable was pulled
+        ::close(e->master);
     if (m_customDevice)
         m_device = std::move(e->device);
     m_engine.reset();
@@ -370,6 +405,7 @@ PtySimulator::Stats PtySimulator::stats() const
     s.bytesGarbled = m_engine->bytesGarbled;
     s.bytesLost = m_engine->bytesLost;
     s.chunksDropped = m_engine->chunksDropped;
+    s.unplugged = m_engine->unplugged;
     return s;
 }
 

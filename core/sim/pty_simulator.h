@@ -15,6 +15,11 @@
 // While no client has the slave open, output is lost (nothing is buffered for the next
 // client). A reader that stalls loses whole data frames once kMaxPendingBytes are
 // waiting; replies are kept (bounded by kHardLimitBytes).
+//
+// Unplugged cable (SimFaults::unplugAtS of a HiPNUC module's options): that many seconds after
+// start() the simulator closes the master side, as when a USB serial adapter is pulled: the
+// client's reads and writes fail (a hang-up, EIO), the slave goes away once the client closes
+// it, and the device never comes back (stats().unplugged; stop() and start() plug in a new one).
 #include "sim/hipnuc_simulator.h"
 #include "sim/simulated_serial_device.h"
 
@@ -47,6 +52,7 @@ public:
         uint64_t bytesGarbled = 0;     // module bytes replaced by garbage
         uint64_t bytesLost = 0;        // module bytes sent while no client was listening
         uint64_t chunksDropped = 0;    // frames dropped because the reader stalled
+        bool unplugged = false;        // the cable was pulled (SimFaults::unplugAtS)
     };
 
     // A HiPNUC module.

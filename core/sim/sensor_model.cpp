@@ -41,7 +41,7 @@ SensorReading SensorModel::sample(const MotionState &s)
     for (int i = 0; i < 3; ++i)
         r.acc[i] += kAccNoiseG * m_normal(m_rng);
     for (int i = 0; i < 3; ++i)
-        r.gyr[i] += kGyrNoiseDps * m_normal(m_rng);
+        r.gyr[i] += m_gyroNoiseFactor * kGyrNoiseDps * m_normal(m_rng);
     for (int i = 0; i < 3; ++i)
         r.mag[i] += kMagNoiseUt * m_normal(m_rng);
     r.pressurePa += kPressureNoisePa * m_normal(m_rng);

@@ -2,7 +2,7 @@
 // Synthesises what a module's sensors measure for a true motion state, in the sensor
 // (body) frame and the manual's units:
 //   acc (G)    = R^T * (0, 0, 1)            specific force of gravity in ENU (no centripetal term)
-//   gyr (deg/s) = (1 + scale error) * true rate + bias + white noise
+//   gyr (deg/s) = (1 + scale error) * true rate + bias + white noise (kGyrNoiseDps * noise factor)
 //   mag (uT)   = S * (R^T * B_nav) + h + white noise, B_nav = (0, 28, -42) uT in ENU
 //   pressure about 100 kPa, temperature about 30 degC, each with a little noise.
 // Bias, hard iron h and soft iron S are drawn from the seed; the noise comes from a
@@ -46,6 +46,10 @@ public:
     // Gyro scale error (fraction, all axes): measured rate = (1 + e) * true rate + bias.
     void setGyroScaleError(double e) { m_gyroScaleError = e; }
     double gyroScaleError() const { return m_gyroScaleError; }
+    // Gyro white noise: the standard deviation per axis is factor * kGyrNoiseDps (1: a good
+    // module; a larger factor is a noisy one, SimFaults::gyroNoiseFactor).
+    void setGyroNoiseFactor(double factor) { m_gyroNoiseFactor = factor; }
+    double gyroNoiseFactor() const { return m_gyroNoiseFactor; }
     const Eigen::Vector3d &gyroBias() const { return m_gyroBias; }
     const Eigen::Vector3d &hardIron() const { return m_hardIron; }
     const Eigen::Matrix3d &softIron() const { return m_softIron; }
@@ -57,6 +61,7 @@ private:
     Eigen::Vector3d m_hardIron;
     Eigen::Matrix3d m_softIron;
     double m_gyroScaleError = 0;
+    double m_gyroNoiseFactor = 1;
 };
 
 } // namespace imudesk::sim

@@ -1,6 +1,6 @@
 // PtySimulator end to end: a QSerialPort client on the pseudo-terminal, at the right
 // and at the wrong baud, a baud switch to the non-standard 256000 (termios2 path),
-// reconnecting, and withDevice() on the simulator thread.
+// reconnecting, withDevice() on the simulator thread, and a pulled cable (SimFaults::unplugAtS).
 #include "protocol/hipnuc/ascii_reply.h"
 #include "protocol/hipnuc/payloads.h"
 #include "protocol/hipnuc/frame_decoder.h"
@@ -144,6 +144,7 @@ private Q_SLOTS:
     void switchTo256000();
     void reopenAfterClose();
     void withDeviceRunsOnSimulatorThread();
+    void unpluggedCableHangsUp();
 
 private:
     bool openPort(QSerialPort &port, int baud);
@@ -337,6 +338,47 @@ void TestPtySimulator::withDeviceRunsOnSimulatorThread()
     QSerialPort port;
     QVERIFY(openPort(port, 115200));
     QVERIFY(command(port, "LOG VERSION").ok());
+}
+
+void TestPtySimulator::unpluggedCableHangsUp()
+{
+    SimOptions o;
+    o.seed = 7;
+    o.faults.unplugAtS = 1.0;
+    PtySimulator sim(o);
+    QElapsedTimer sinceStart;
+    sinceStart.start();
+    QVERIFY(sim.start());
+    QSerialPort port;
+    port.setPortName(sim.devicePath());
+    port.setBaudRate(115200);
+    QVERIFY2(port.open(QIODevice::ReadWrite), qPrintable(port.errorString()));
+    qint64 errorAtMs = -1;
+    QSerialPort::SerialPortError error = QSerialPort::NoError;
+    QObject::connect(&port, &QSerialPort::errorOccurred, &port, [&](QSerialPort::SerialPortError e) {
+        if (e != QSerialPort::NoError && errorAtMs < 0) {
+            errorAtMs = sinceStart.elapsed();
+            error = e;
+        }
+    });
+    // Frames flow until the cable goes; then the client sees the hang-up.
+    Session session(port);
+    size_t frames = 0;
+    while (errorAtMs < 0 && sinceStart.elapsed() < 4000 && port.isOpen())
+        frames += session.read(50).hi91.size();
+    QVERIFY2(errorAtMs >= 950 && errorAtMs < 2000, qPrintable(QString::number(errorAtMs)));
+    // What a pulled USB adapter gives QSerialPort (io/serial_transport.cpp treats both as the device lost).
+    QVERIFY2(error == QSerialPort::ReadError || error == QSerialPort::ResourceError, qPrintable(QString::number(error)));
+    QVERIFY2(frames >= 50, qPrintable(QString::number(frames)));
+    QVERIFY(sim.stats().unplugged);
+    QVERIFY(!m_sim->stats().unplugged);
+    // The device never comes back: once the client lets go, the pty is gone.
+    port.close();
+    QTest::qWait(200);
+    QSerialPort again;
+    again.setPortName(sim.devicePath());
+    QVERIFY(!again.open(QIODevice::ReadWrite));
+    sim.stop();
 }
 
 QTEST_GUILESS_MAIN(TestPtySimulator)

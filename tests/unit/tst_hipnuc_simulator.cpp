@@ -1,7 +1,8 @@
 // HipnucSimulator in process: every command of the v1.7.1 and v1.6.6 manuals with its
 // reply (OK / ERR / silence), persistence, resets, baud switching, output rates and
 // triggers, frame contents decoded with the core codecs, calibrations, the bootloader
-// and the UART model.
+// and the UART model, the per-module faults (SimFaults) and a firmware update from 1.6.6.
+#include "firmware/update_flow.h"
 #include "model/device_identity.h"
 #include "model/main_status.h"
 #include "model/sample.h"
@@ -12,6 +13,7 @@
 #include "protocol/nmea/nmea_parser.h"
 #include "protocol/stream/stream_demux.h"
 #include "sim/hipnuc_simulator.h"
+#include "sim/simulated_byte_link.h"
 
 #include <QTest>
 
@@ -157,6 +159,52 @@ uint16_t bit(MainStatus::Bit b)
     return uint16_t(1u << b);
 }
 
+SimOptions withFaults(const SimFaults &faults, SimOptions o = opts())
+{
+    o.faults = faults;
+    return o;
+}
+
+// Standard deviation of each axis of the HI91 gyro readings, averaged over the axes.
+double gyroStd(const std::vector<Hi91> &frames)
+{
+    Eigen::Vector3d sum = Eigen::Vector3d::Zero(), squares = Eigen::Vector3d::Zero();
+    for (const Hi91 &h : frames) {
+        sum += vec(h.gyr);
+        squares += vec(h.gyr).cwiseProduct(vec(h.gyr));
+    }
+    const double n = double(frames.size());
+    const Eigen::Vector3d variance = squares / n - (sum / n).cwiseProduct(sum / n);
+    return variance.cwiseSqrt().mean();
+}
+
+// Starts (or restarts) an MCAL with the output off, polls LOG MCAL STAT every 100 ms of
+// simulated time until it ends (STAT 3 or 4) or limitS pass, and turns the output on again.
+// Returns STAT, PROGRESS and the simulated seconds from START to the first poll that saw the end.
+struct McalEnd {
+    int stat = 0, progress = 0;
+    double seconds = -1;
+};
+McalEnd runMagCal(Rig &rig, double limitS = 130)
+{
+    McalEnd end;
+    if (!rig.ok("LOG DISABLE") || !rig.ok("CONFIG MCAL START", 10000))
+        return end;
+    const int64_t startUs = rig.sim.nowUs() - 10000;
+    while (rig.sim.nowUs() - startUs < int64_t(limitS * 1e6)) {
+        rig.run(90000);
+        const AsciiReply r = rig.command("LOG MCAL STAT", 10000);
+        end.stat = std::stoi(r.values.at("STAT"));
+        end.progress = std::stoi(r.values.at("PROGRESS"));
+        if (end.stat >= 3) {
+            end.seconds = double(rig.sim.nowUs() - startUs) * 1e-6;
+            break;
+        }
+    }
+    rig.ok("LOG ENABLE");
+    return end;
+}
+
 } // namespace
 
 class TestHipnucSimulator : public QObject {
@@ -205,6 +253,13 @@ private Q_SLOTS:
     void bootloaderPing();
     void uartDropsFramesWhenBaudTooLow();
     void uartNoDropsAtHighBaud();
+    void firmwareUpdateFrom166To171();
+    void faultNoisyGyro();
+    void faultMounting();
+    void faultMagDisturbance_data();
+    void faultMagDisturbance();
+    void faultFixtureMagCal();
+    void faultsText();
 };
 
 // ---------------------------------------------------------------------------------------
@@ -1336,9 +1391,11 @@ void TestHipnucSimulator::legacyBackgroundMagCal_data()
     QTest::addColumn<Motion>("motion");
     QTest::addColumn<bool>("enabled");
     QTest::addColumn<bool>("calibrates");
-    QTest::newRow("tumble") << Motion::Tumble << true << true;
-    QTest::newRow("tumble, IMU_EN_MCAL 0") << Motion::Tumble << false << false;
-    QTest::newRow("static") << Motion::Static << true << false;
+    QTest::addColumn<double>("disturbanceUt");
+    QTest::newRow("tumble") << Motion::Tumble << true << true << 0.0;
+    QTest::newRow("tumble, IMU_EN_MCAL 0") << Motion::Tumble << false << false << 0.0;
+    QTest::newRow("static") << Motion::Static << true << false << 0.0;
+    QTest::newRow("tumble, magnetic disturbance") << Motion::Tumble << true << false << 40.0;
 }
 
 void TestHipnucSimulator::legacyBackgroundMagCal()
@@ -1346,7 +1403,10 @@ void TestHipnucSimulator::legacyBackgroundMagCal()
     QFETCH(Motion, motion);
     QFETCH(bool, enabled);
     QFETCH(bool, calibrates);
-    Rig rig(opts("1.6.6", "HI14", motion));
+    QFETCH(double, disturbanceUt);
+    SimFaults faults;
+    faults.magDisturbanceUt = disturbanceUt;
+    Rig rig(withFaults(faults, opts("1.6.6", "HI14", motion)));
     if (!enabled)
         QVERIFY(rig.ok("CONFIG IMU_EN_MCAL 0", 1000));
     AsciiReply r = rig.command("LOG MAGCONFIG");
@@ -1437,6 +1497,204 @@ void TestHipnucSimulator::uartNoDropsAtHighBaud()
     const Capture c = rig.run(1000000);
     QVERIFY(std::abs(c.countTag(TagHi91) - 1000) <= 1);
     QCOMPARE(rig.sim.droppedFrames(), uint64_t(0));
+}
+
+// An old module updated over KBOOT becomes the new firmware: its LOG VERSION and its command set.
+void TestHipnucSimulator::firmwareUpdateFrom166To171()
+{
+    Rig rig(opts("1.6.6"));
+    AsciiReply v = rig.command("LOG VERSION");
+    QVERIFY(v.ok());
+    QCOMPARE(v.values.at("APP_VER"), std::string("166"));
+    QCOMPARE(outcome(rig.command("CONFIG IMU COORD 4")), std::string("-")); // not on 1.6.6
+    protocol::ihex::FirmwareImage img;
+    img.startAddress = 0x8000;
+    img.data = KbootBootloader::makeApplication("1.7.1", 72 * 1024, 5);
+    sim::SimulatedByteLink link(rig.sim);
+    firmware::UpdateFlow flow(link, firmware::UpdateFlow::Options{}, {});
+    const auto r = flow.run(img);
+    QVERIFY2(r.ok, qPrintable(r.message));
+    QVERIFY(r.before && r.after);
+    QCOMPARE(r.before->firmware->toString(), std::string("1.6.6"));
+    QCOMPARE(r.after->firmware->toString(), std::string("1.7.1"));
+    QCOMPARE(rig.sim.state(), HipnucSimulator::State::App);
+    QCOMPARE(rig.sim.firmware().toString(), std::string("1.7.1"));
+    QCOMPARE(rig.sim.edition(), model::ManualEdition::V171);
+    rig.run(100000);
+    rig.collect();
+    v = rig.command("LOG VERSION");
+    QVERIFY(v.ok());
+    QCOMPARE(v.values.at("APP_VER"), std::string("171"));
+    // The v1.7.1 command set, and none of the v1.6.6 words.
+    QCOMPARE(outcome(rig.command("CONFIG IMU COORD 4")), std::string("OK"));
+    QCOMPARE(outcome(rig.command("LOG HI81 ONTIME 0.1")), std::string("OK"));
+    QCOMPARE(outcome(rig.command("LOG MCAL STAT")), std::string("OK"));
+    QCOMPARE(outcome(rig.command("LOG HI92 ONTIME 0.1")), std::string("ERR"));
+    QCOMPARE(outcome(rig.command("CONFIG IMU_EN_MCAL 1")), std::string("-"));
+    QCOMPARE(outcome(rig.command("LOG MAGCONFIG")), std::string("-"));
+    // It stays 1.7.1 after a power cycle (taken with the line idle: no frame cut in half).
+    rig.quiet();
+    rig.sim.powerCycle();
+    v = rig.command("LOG VERSION");
+    QVERIFY(v.ok());
+    QCOMPARE(v.values.at("APP_VER"), std::string("171"));
+}
+
+void TestHipnucSimulator::faultNoisyGyro()
+{
+    SimFaults noisy;
+    noisy.gyroNoiseFactor = 20;
+    Rig clean, bad(withFaults(noisy));
+    const auto a = clean.run(3000000).packets<Hi91>();
+    const auto b = bad.run(3000000).packets<Hi91>();
+    QVERIFY(a.size() >= 299 && b.size() >= 299); // 3 s at 100 Hz
+
+    const double sa = gyroStd(a), sb = gyroStd(b);
+    qInfo("gyro std per axis: %.4f deg/s clean, %.4f deg/s noisy", sa, sb);
+    QVERIFY2(std::fabs(sa - SensorModel::kGyrNoiseDps) < 0.004, qPrintable(QString::number(sa)));
+    QVERIFY2(std::fabs(sb - 20 * SensorModel::kGyrNoiseDps) < 0.08, qPrintable(QString::number(sb)));
+    QVERIFY2(sb / sa > 17 && sb / sa < 23, qPrintable(QString::number(sb / sa)));
+    // The same bias: only the noise grew.
+    QVERIFY((bad.sim.sensorModel().gyroBias() - clean.sim.sensorModel().gyroBias()).norm() < 1e-12);
+}
+
+void TestHipnucSimulator::faultMounting()
+{
+    SimFaults side;
+    side.mountingErrorDeg = {90, 0, 0};
+    Rig clean(opts("1.7.1", "HI14", Motion::Static, 921600)), bad(withFaults(side, clean.sim.options()));
+    for (Rig *r : {&clean, &bad})
+        QVERIFY(r->ok("LOG HI81 ONTIME 0.01"));
+    const Capture ca = clean.run(500000), cb = bad.run(500000);
+    const Hi91 a = ca.packets<Hi91>().back(), b = cb.packets<Hi91>().back();
+    QVERIFY2(std::fabs(a.roll - MotionModel::kStaticRollDeg) < 1e-3, qPrintable(QString::number(a.roll)));
+    QVERIFY2(std::fabs(b.roll - (MotionModel::kStaticRollDeg + 90)) < 1e-3, qPrintable(QString::number(b.roll)));
+    QVERIFY(std::fabs(b.pitch - a.pitch) < 1e-3);
+    QVERIFY(std::fabs(angleDiff(b.yaw, a.yaw)) < 1e-3);
+    QVERIFY(std::abs(cb.packets<Hi81>().back().roll - int(std::lround(b.roll * 100))) <= 1); // every message
+    // What it measures is of the turned body: gravity along its x axis now, and the same field
+    // magnitude (soft iron aside) in other axes; acc agrees with the reported attitude.
+    QVERIFY2(b.acc[0] < -0.99f && std::fabs(a.acc[2] - 1.0f) < 0.01f, qPrintable(QString::number(b.acc[0])));
+    const Eigen::Quaterniond q(b.quat[0], b.quat[1], b.quat[2], b.quat[3]);
+    QVERIFY((vec(b.acc) - q.conjugate() * Eigen::Vector3d(0, 0, 1)).norm() < 0.005);
+    const Eigen::Vector3d bodyMag = bad.sim.sensorModel().softIron().inverse()
+        * (vec(b.mag) - bad.sim.sensorModel().hardIron());
+    QVERIFY((bodyMag - q.conjugate() * SensorModel::fieldNav()).norm() < 1.0);
+}
+
+void TestHipnucSimulator::faultMagDisturbance_data()
+{
+    QTest::addColumn<double>("disturbanceUt");
+    QTest::addColumn<int>("stat");
+    QTest::newRow("clean fixture") << 0.0 << 3;
+    QTest::newRow("motor beside the fixture") << SimFaults::kMagDisturbanceUt << 4;
+}
+
+void TestHipnucSimulator::faultMagDisturbance()
+{
+    QFETCH(double, disturbanceUt);
+    QFETCH(int, stat);
+    SimFaults faults;
+    faults.magCalFixture = true;
+    faults.magDisturbanceUt = disturbanceUt;
+    Rig rig(withFaults(faults));
+    // At rest, the measured field changes when (and only when) it is disturbed.
+    const auto before = rig.run(6000000).packets<Hi91>();
+    double lo = 1e9, hi = 0;
+    for (const Hi91 &h : before) {
+        lo = std::min(lo, vec(h.mag).norm());
+        hi = std::max(hi, vec(h.mag).norm());
+    }
+    QVERIFY2(disturbanceUt > 0 ? hi - lo > 20 : hi - lo < 2, qPrintable(QString::number(hi - lo)));
+    QVERIFY(before.back().mainStatus & bit(MainStatus::MagDist));
+    // The fixture collects every direction either way; the disturbed one fails its check.
+    const McalEnd end = runMagCal(rig);
+    QCOMPARE(end.stat, stat);
+    QCOMPARE(end.progress, 100);
+    QCOMPARE(rig.sim.magCalibrated(), stat == 3);
+    const uint16_t status = rig.run(100000).packets<Hi91>().back().mainStatus;
+    QCOMPARE(bool(status & bit(MainStatus::MagDist)), stat != 3);
+}
+
+void TestHipnucSimulator::faultFixtureMagCal()
+{
+    SimFaults faults;
+    faults.magCalFixture = true;
+    Rig rig(withFaults(faults, opts("1.7.1", "HI14", Motion::Spin))); // the fixture holds it still
+    const Eigen::Vector3d bias = rig.sim.sensorModel().gyroBias();
+    auto atRest = [&](const Hi91 &h) {
+        return std::fabs(h.roll - MotionModel::kStaticRollDeg) < 1e-3 && std::fabs(h.pitch - MotionModel::kStaticPitchDeg) < 1e-3
+            && std::fabs(angleDiff(h.yaw, MotionModel::kStaticYawDeg)) < 1e-3 && (vec(h.gyr) - bias).norm() < 0.15
+            && (h.mainStatus & bit(MainStatus::Static));
+    };
+    const auto still = rig.run(3500000).packets<Hi91>();
+    for (const Hi91 &h : still)
+        QVERIFY(atRest(h));
+    // START: the fixture turns it.
+    QVERIFY(rig.ok("CONFIG MCAL START", 10000));
+    const auto turning = rig.run(5000000).packets<Hi91>();
+    QVERIFY(!turning.empty());
+    int moving = 0;
+    for (const Hi91 &h : turning)
+        moving += !atRest(h) && (vec(h.gyr) - bias).norm() > 10 && !(h.mainStatus & bit(MainStatus::Static));
+    QVERIFY2(moving > int(turning.size()) - 2, qPrintable(QString::number(moving)));
+    // Started again (the fixture starts over), it completes on the bench, and the module rests
+    // at the static attitude again.
+    const McalEnd end = runMagCal(rig);
+    QCOMPARE(end.stat, 3);
+    QCOMPARE(end.progress, 100);
+    qInfo("MCAL on the fixture: %.1f s of simulated time from START to STAT=3", end.seconds);
+    QVERIFY(end.seconds > 30 && end.seconds < 70);
+    QVERIFY(rig.sim.magCalibrated());
+    const auto after = rig.run(1000000).packets<Hi91>();
+    QVERIFY(!after.empty());
+    for (const Hi91 &h : after) {
+        QVERIFY(atRest(h));
+        QCOMPARE(h.mainStatus & bit(MainStatus::MagDist), 0);
+    }
+}
+
+void TestHipnucSimulator::faultsText()
+{
+    SimFaults f;
+    std::string error;
+    QVERIFY(parseSimFaults("", f, &error));
+    QVERIFY(f == SimFaults{});
+    QCOMPARE(simFaultsText(f), std::string());
+    // The short words and their defaults.
+    QVERIFY(parseSimFaults(" noisy-gyro, Wrong-Mounting ,mag-disturbance,unplug=2.5,fixture", f, &error));
+    QCOMPARE(f.gyroNoiseFactor, 20.0);
+    QCOMPARE(f.mountingErrorDeg, (std::array<double, 3>{90, 0, 0}));
+    QCOMPARE(f.magDisturbanceUt, 40.0);
+    QCOMPARE(f.unplugAtS, 2.5);
+    QVERIFY(f.magCalFixture);
+    QCOMPARE(simFaultsText(f), std::string("noisy-gyro=20,mounting=90/0/0,mag-disturbance=40,unplug=2.5,fixture"));
+    SimFaults back;
+    QVERIFY(parseSimFaults(simFaultsText(f), back, &error));
+    QVERIFY(back == f);
+    // Values, round trip.
+    SimFaults g;
+    QVERIFY(parseSimFaults("noisy-gyro=3.5,mounting=-10/5.25/180,mag-disturbance=12.5,unplug=0", g, &error));
+    QCOMPARE(g.mountingErrorDeg, (std::array<double, 3>{-10, 5.25, 180}));
+    QCOMPARE(simFaultsText(g), std::string("noisy-gyro=3.5,mounting=-10/5.25/180,mag-disturbance=12.5,unplug=0"));
+    SimFaults g2;
+    QVERIFY(parseSimFaults(simFaultsText(g), g2, &error));
+    QVERIFY(g2 == g);
+    // Refused, with what is accepted; out is left as it was.
+    const SimFaults keep = g;
+    for (const char *bad : {"wobble", "noisy-gyro,wobble", "mounting=1/2", "mounting=1/2/3/4", "mounting=a/0/0",
+                            "mounting", "unplug", "unplug=-1", "noisy-gyro=-2", "noisy-gyro=x", "mag-disturbance=-5",
+                            "fixture=1", "wrong-mounting=1", "unplug=inf"}) {
+        error.clear();
+        QVERIFY2(!parseSimFaults(bad, g, &error), bad);
+        QVERIFY2(!error.empty(), bad);
+        QVERIFY2(g == keep, bad);
+    }
+    QVERIFY(!parseSimFaults("noisy-gyro, wobble", g, &error));
+    QVERIFY2(error.find("wobble") != std::string::npos && error.find("noisy-gyro") != std::string::npos
+                 && error.find("mounting=R/P/Y") != std::string::npos && error.find("unplug=T") != std::string::npos
+                 && error.find("fixture") != std::string::npos,
+             error.c_str());
 }
 
 QTEST_GUILESS_MAIN(TestHipnucSimulator)

@@ -4,17 +4,13 @@
 #include "calib/mag_cal_result.h"
 #include "calibration/mag_sphere_view.h"
 #include "models/calibration_history_model.h"
+#include "reports/pdf_output.h"
 
-#include <QBuffer>
 #include <QDir>
 #include <QFileInfo>
 #include <QJsonArray>
 #include <QLoggingCategory>
-#include <QPageLayout>
-#include <QPageSize>
 #include <QPainter>
-#include <QPdfWriter>
-#include <QSaveFile>
 #include <QTextDocument>
 
 #include <cmath>
@@ -289,36 +285,13 @@ QString CalibrationReport::plainText() const
 
 bool CalibrationReport::writePdf(const QString &path, QString *error)
 {
-    auto failWith = [error](const QString &m) {
-        qCWarning(lcCalReport) << m;
-        if (error)
-            *error = m;
-        return false;
-    };
-    if (path.isEmpty())
-        return failWith(tr("No file name was given for the report."));
-    QBuffer buffer;
-    buffer.open(QIODevice::WriteOnly);
-    {
-        QPdfWriter writer(&buffer);
-        writer.setResolution(kPdfResolution);
-        writer.setPageSize(QPageSize(QPageSize::A4));
-        writer.setPageMargins(QMarginsF(15, 15, 15, 15), QPageLayout::Millimeter);
-        writer.setTitle(tr("ImuDesk calibration report"));
-        writer.setCreator(QStringLiteral("ImuDesk"));
-        m_document->print(&writer);
-    }
-    buffer.close();
-    if (!buffer.data().startsWith("%PDF"))
-        return failWith(tr("The report could not be rendered as PDF."));
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly))
-        return failWith(tr("Cannot write the report to %1: %2. Choose another folder.")
-                            .arg(QDir::toNativeSeparators(path), file.errorString()));
-    if (file.write(buffer.data()) != buffer.data().size() || !file.commit())
-        return failWith(tr("Cannot write the report to %1: %2. Check the free disk space and try again.")
-                            .arg(QDir::toNativeSeparators(path), file.errorString()));
-    return true;
+    QString why;
+    if (PdfOutput::write(*m_document, tr("ImuDesk calibration report"), path, &why))
+        return true;
+    qCWarning(lcCalReport) << why;
+    if (error)
+        *error = why;
+    return false;
 }
 
 } // namespace imudesk::ui

@@ -33,7 +33,6 @@ class CalibrationReport {
 
 public:
     static constexpr int kSphereSize = 420;   // pixels per sphere in the picture
-    static constexpr int kPdfResolution = 300; // dpi of the PDF
 
     CalibrationReport(calib::CalibrationRecord record, calib::SampleTable samples);
     ~CalibrationReport();

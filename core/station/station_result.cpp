@@ -1,0 +1,100 @@
+#include "station/station_result.h"
+
+#include <QCoreApplication>
+#include <QJsonArray>
+
+namespace imudesk::station {
+
+QString verdictKey(Verdict v)
+{
+    switch (v) {
+    case Verdict::Pending: return QStringLiteral("pending");
+    case Verdict::Running: return QStringLiteral("running");
+    case Verdict::Pass: return QStringLiteral("pass");
+    case Verdict::Fail: return QStringLiteral("fail");
+    case Verdict::Skipped: return QStringLiteral("skipped");
+    }
+    return {};
+}
+
+QString verdictText(Verdict v)
+{
+    switch (v) {
+    case Verdict::Pending: return QCoreApplication::translate("imudesk::station::Verdict", "waiting");
+    case Verdict::Running: return QCoreApplication::translate("imudesk::station::Verdict", "running");
+    case Verdict::Pass: return QCoreApplication::translate("imudesk::station::Verdict", "pass");
+    case Verdict::Fail: return QCoreApplication::translate("imudesk::station::Verdict", "fail");
+    case Verdict::Skipped: return QCoreApplication::translate("imudesk::station::Verdict", "skipped");
+    }
+    return {};
+}
+
+namespace {
+QString isoTime(const QDateTime &t)
+{
+    return t.isValid() ? t.toUTC().toString(Qt::ISODateWithMs) : QString();
+}
+} // namespace
+
+QJsonObject StepResult::toJson() const
+{
+    QJsonArray vals;
+    for (const Measurement &m : values)
+        vals.append(QJsonObject{{QStringLiteral("name"), m.name},
+                                {QStringLiteral("value"), m.value},
+                                {QStringLiteral("unit"), m.unit},
+                                {QStringLiteral("limit"), m.limit},
+                                {QStringLiteral("ok"), m.ok}});
+    return QJsonObject{{QStringLiteral("step"), TestPlan::key(kind)},
+                       {QStringLiteral("verdict"), verdictKey(verdict)},
+                       {QStringLiteral("detail"), detail},
+                       {QStringLiteral("values"), vals},
+                       {QStringLiteral("started"), isoTime(started)},
+                       {QStringLiteral("finished"), isoTime(finished)}};
+}
+
+int ModuleResult::failedStep() const
+{
+    for (size_t i = 0; i < steps.size(); ++i)
+        if (steps[i].verdict == Verdict::Fail)
+            return int(i);
+    return -1;
+}
+
+QString ModuleResult::failureSummary() const
+{
+    const int i = failedStep();
+    if (i < 0)
+        return {};
+    const StepResult &s = steps[size_t(i)];
+    QStringList bad;
+    for (const Measurement &m : s.values)
+        if (!m.ok)
+            bad << QStringLiteral("%1 %2 %3 (%4)").arg(m.name).arg(m.value, 0, 'g', 4).arg(m.unit, m.limit).simplified();
+    return bad.isEmpty() ? QStringLiteral("%1: %2").arg(s.title, s.detail)
+                         : QStringLiteral("%1: %2").arg(s.title, bad.join(QStringLiteral("; ")));
+}
+
+QJsonObject ModuleResult::toJson() const
+{
+    QJsonArray st;
+    for (const StepResult &s : steps)
+        st.append(s.toJson());
+    const int failed = failedStep();
+    return QJsonObject{{QStringLiteral("port"), port},
+                       {QStringLiteral("serial"), serial},
+                       {QStringLiteral("product"), product},
+                       {QStringLiteral("firmware"), firmware},
+                       {QStringLiteral("firmware_after"), firmwareAfter},
+                       {QStringLiteral("verdict"), verdictKey(verdict)},
+                       {QStringLiteral("failed_step"), failed < 0 ? QString() : TestPlan::key(steps[size_t(failed)].kind)},
+                       {QStringLiteral("failure"), failureSummary()},
+                       {QStringLiteral("attempt"), attempt},
+                       {QStringLiteral("started"), isoTime(started)},
+                       {QStringLiteral("finished"), isoTime(finished)},
+                       {QStringLiteral("evidence"), evidencePath},
+                       {QStringLiteral("report"), reportPath},
+                       {QStringLiteral("steps"), st}};
+}
+
+} // namespace imudesk::station

@@ -1,0 +1,60 @@
+#pragma once
+// What a station run found: per module, every step of the plan with its verdict, the values
+// it measured and the limits they were held against. Value types, shared by the runner, the
+// reports (run_folder.h, the PDF in ui/station) and the station view.
+#include "station/test_plan.h"
+
+#include <QDateTime>
+#include <QJsonObject>
+#include <QMetaType>
+#include <QString>
+
+#include <vector>
+
+namespace imudesk::station {
+
+enum class Verdict { Pending, Running, Pass, Fail, Skipped };
+QString verdictKey(Verdict v);   // "pending", "running", "pass", "fail", "skipped"
+QString verdictText(Verdict v);  // translated
+
+struct Measurement {
+    QString name;   // e.g. "gyro_std_x"
+    double value = 0;
+    QString unit;   // e.g. "°/s"
+    QString limit;  // e.g. "≤ 0.05"; empty: information only
+    bool ok = true;
+};
+
+struct StepResult {
+    StepKind kind = StepKind::Identify;
+    QString title;     // translated step title
+    Verdict verdict = Verdict::Pending;
+    QString detail;    // what was found, or why it failed (translated)
+    std::vector<Measurement> values;
+    QDateTime started, finished;
+    QJsonObject toJson() const;
+};
+
+struct ModuleResult {
+    QString port;
+    QString serial, product, firmware; // firmware: as found (before any update)
+    QString firmwareAfter;             // after an update, else empty
+    Verdict verdict = Verdict::Pending;
+    int currentStep = -1;              // index into steps while running
+    double progress = 0;               // 0..1 of the whole plan
+    std::vector<StepResult> steps;     // one per plan step
+    QDateTime started, finished;
+    QString evidencePath;              // the recording of the evidence step, if any
+    QString reportPath;                // the PDF, once written
+    int attempt = 1;                   // 1 + earlier runs of this serial in the same run folder
+
+    // The first failed step (index), or -1.
+    int failedStep() const;
+    // "Static noise and bias: gyro_std_x 0.41 °/s (limit ≤ 0.05)" for a failure; empty otherwise.
+    QString failureSummary() const;
+    QJsonObject toJson() const;
+};
+
+} // namespace imudesk::station
+
+Q_DECLARE_METATYPE(imudesk::station::ModuleResult)

@@ -1,0 +1,149 @@
+#include "station/station_runner.h"
+
+#include <QTimer>
+
+#include <algorithm>
+
+namespace imudesk::station {
+
+StationRunner::StationRunner(TestPlan plan, QStringList ports, QObject *parent)
+    : QObject(parent), m_plan(std::move(plan)), m_ports(std::move(ports))
+{
+    for (const QString &port : m_ports) {
+        ModuleResult r;
+        r.port = port;
+        for (const PlanStep &s : m_plan.steps) {
+            StepResult st;
+            st.kind = s.kind;
+            st.title = TestPlan::title(s.kind);
+            r.steps.push_back(st);
+        }
+        m_modules.push_back(r);
+        m_runners.emplace_back();
+    }
+}
+
+StationRunner::~StationRunner() = default;
+
+bool StationRunner::setRunFolder(const QString &dir, QString *error)
+{
+    m_haveFolder = m_folder.open(dir, m_plan, error);
+    return m_haveFolder;
+}
+
+const ModuleResult &StationRunner::module(int i) const
+{
+    return m_modules[size_t(i)];
+}
+
+void StationRunner::start()
+{
+    for (int i = 0; i < int(m_modules.size()); ++i)
+        if (!m_runners[size_t(i)])
+            startModule(i);
+}
+
+void StationRunner::rerun(const QList<int> &modules)
+{
+    for (int i : modules)
+        if (i >= 0 && i < int(m_modules.size()) && !(m_runners[size_t(i)] && m_runners[size_t(i)]->running()))
+            startModule(i);
+}
+
+void StationRunner::startModule(int i)
+{
+    ModuleRunner::Options o;
+    o.baud = m_baud;
+    if (m_haveFolder)
+        o.evidencePath = m_folder.evidencePath(m_ports.at(i));
+    if (auto &old = m_runners[size_t(i)])
+        old.release()->deleteLater(); // may be inside its own finished() signal
+    auto runner = std::make_unique<ModuleRunner>(m_plan, m_ports.at(i), o);
+    connect(runner.get(), &ModuleRunner::changed, this, [this, i, r = runner.get()] {
+        const int attempt = m_modules[size_t(i)].attempt;
+        m_modules[size_t(i)] = r->result();
+        m_modules[size_t(i)].attempt = attempt;
+        Q_EMIT moduleChanged(i);
+    });
+    connect(runner.get(), &ModuleRunner::finished, this, [this, i] { onModuleFinished(i); });
+    m_runners[size_t(i)] = std::move(runner);
+    ++m_active;
+    m_runners[size_t(i)]->start();
+}
+
+void StationRunner::onModuleFinished(int i)
+{
+    --m_active;
+    ModuleResult &r = m_modules[size_t(i)];
+    r = m_runners[size_t(i)]->result();
+    if (m_haveFolder) {
+        r.attempt = m_folder.nextAttempt(r.serial);
+        QString error;
+        if (m_writer) {
+            const QString pdf = m_folder.reportPath(r);
+            r.reportPath = pdf;
+            if (!m_writer(r, m_plan, pdf, &error)) {
+                r.reportPath.clear();
+                m_reportErrors << error;
+            }
+        }
+        if (!m_folder.append(r, &error))
+            m_reportErrors << error;
+    }
+    Q_EMIT moduleChanged(i);
+    Q_EMIT moduleFinished(i);
+    if (m_active == 0)
+        Q_EMIT finished();
+}
+
+void StationRunner::cancel()
+{
+    for (auto &r : m_runners)
+        if (r && r->running())
+            r->cancel();
+}
+
+bool StationRunner::running() const
+{
+    return m_active > 0;
+}
+
+StationRunner::Summary StationRunner::summary() const
+{
+    Summary s;
+    for (const ModuleResult &r : m_modules) {
+        switch (r.verdict) {
+        case Verdict::Pass: ++s.passed; break;
+        case Verdict::Fail: ++s.failed; break;
+        case Verdict::Running: ++s.running; break;
+        default: ++s.waiting; break;
+        }
+    }
+    return s;
+}
+
+bool StationRunner::allPassed() const
+{
+    return !m_modules.empty()
+        && std::all_of(m_modules.begin(), m_modules.end(), [](const ModuleResult &r) { return r.verdict == Verdict::Pass; });
+}
+
+quint64 StationRunner::framesLost() const
+{
+    quint64 n = 0;
+    for (const auto &r : m_runners)
+        if (r)
+            n += r->framesLost();
+    return n;
+}
+
+quint64 StationRunner::frames() const
+{
+    quint64 n = 0;
+    for (const auto &r : m_runners)
+        if (r)
+            n += r->frames();
+    return n;
+}
+
+} // namespace imudesk::station

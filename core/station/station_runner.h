@@ -1,0 +1,77 @@
+#pragma once
+// Runs one test plan on several modules at once (issue 22): one ModuleRunner, and so one
+// engine session in its own worker thread, per port, all started together. A module that
+// fails or disappears does not stop the others. When a run folder is given, every finished
+// module is appended to its summary and gets its PDF report (through reportWriter, which the
+// GUI and the CLI supply: PDF needs QtGui, core does not link it).
+#include "station/module_runner.h"
+#include "station/run_folder.h"
+
+#include <QObject>
+#include <QStringList>
+
+#include <functional>
+#include <memory>
+#include <vector>
+
+namespace imudesk::station {
+
+class StationRunner : public QObject {
+    Q_OBJECT
+
+public:
+    // Writes the PDF of one module at path; false with *error.
+    using ReportWriter = std::function<bool(const ModuleResult &, const TestPlan &, const QString &path, QString *error)>;
+
+    struct Summary {
+        int passed = 0, failed = 0, running = 0, waiting = 0;
+    };
+
+    StationRunner(TestPlan plan, QStringList ports, QObject *parent = nullptr);
+    ~StationRunner() override;
+
+    void setBaud(int baud) { m_baud = baud; }
+    // Where reports go; empty: nothing is written (the results stay in memory).
+    bool setRunFolder(const QString &dir, QString *error);
+    const QString &runFolder() const { return m_folder.path(); }
+    void setReportWriter(ReportWriter writer) { m_writer = std::move(writer); }
+
+    // Starts every module not yet run (or all of `only`, by index, again: a re-run).
+    void start();
+    void rerun(const QList<int> &modules);
+    void cancel();
+    bool running() const;
+
+    const TestPlan &plan() const { return m_plan; }
+    const QStringList &ports() const { return m_ports; }
+    int moduleCount() const { return int(m_modules.size()); }
+    const ModuleResult &module(int i) const;
+    Summary summary() const;
+    bool allPassed() const;
+    quint64 framesLost() const;
+    quint64 frames() const;
+    // Problems writing reports, in the order they happened (translated).
+    const QStringList &reportErrors() const { return m_reportErrors; }
+
+Q_SIGNALS:
+    void moduleChanged(int index);
+    void moduleFinished(int index);
+    void finished();
+
+private:
+    void startModule(int i);
+    void onModuleFinished(int i);
+
+    TestPlan m_plan;
+    QStringList m_ports;
+    int m_baud = 0;
+    RunFolder m_folder;
+    bool m_haveFolder = false;
+    ReportWriter m_writer;
+    std::vector<std::unique_ptr<ModuleRunner>> m_runners;
+    std::vector<ModuleResult> m_modules; // the latest result per port
+    QStringList m_reportErrors;
+    int m_active = 0;
+};
+
+} // namespace imudesk::station

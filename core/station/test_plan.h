@@ -1,0 +1,92 @@
+#pragma once
+// A production test plan (issue 22): the steps a bench station runs on every module of a tray,
+// each with its limits. A versioned JSON document:
+//   {"format": "imudesk-station-plan", "version": 1, "name": "HI14 incoming test",
+//    "steps": [{"step": "identify", "products": "HI14", "firmware_min": "1.6.0"},
+//              {"step": "static", "seconds": 5, "gyro_std_max_dps": 0.05, ...},
+//              {"step": "gyro_scale", "enabled": false}, ...]}
+// Every step kind has a fixed set of parameters (params()): a number within its range or a
+// text; a missing parameter takes its default, an unknown one or a value out of range is
+// refused with the step's number and the parameter's name. Paths (profile, firmware image)
+// are relative to the plan file's folder. Steps run in the order listed; a step with
+// "enabled": false is reported as skipped.
+#include <QByteArray>
+#include <QCoreApplication>
+#include <QString>
+#include <QVariant>
+#include <QVariantMap>
+
+#include <optional>
+#include <vector>
+
+namespace imudesk::station {
+
+enum class StepKind {
+    Identify,  // expected product(s) and firmware range
+    Firmware,  // firmware at least V: update from the image if older, then verify
+    Profile,   // apply a configuration profile with read-back
+    Static,    // noise and bias at rest, gravity magnitude
+    Allan,     // Allan deviation of the gyro at one averaging time
+    Attitude,  // roll/pitch against the expected orientation (mounting verified)
+    MagCal,    // device-side magnetometer calibration (MCAL), must succeed
+    GyroScale, // gyro scale-factor run on a turntable (optional)
+    Save,      // SAVECONFIG
+    Evidence,  // record M seconds into the run folder
+};
+
+struct ParamSpec {
+    const char *key;     // JSON name
+    const char *label;   // QT_TRANSLATE_NOOP("imudesk::station::TestPlan", ...)
+    const char *unit;    // shown beside the value; empty for none
+    const char *tooltip; // QT_TRANSLATE_NOOP as label
+    bool text = false;   // a text (path, product list, version) instead of a number
+    double defaultValue = 0;
+    double min = 0, max = 0;
+    const char *defaultText = "";
+};
+
+struct PlanStep {
+    StepKind kind = StepKind::Identify;
+    bool enabled = true;
+    QVariantMap params; // every parameter of the kind, defaults filled in
+
+    double number(const char *key) const;
+    QString text(const char *key) const;
+};
+
+class TestPlan {
+    Q_DECLARE_TR_FUNCTIONS(imudesk::station::TestPlan)
+
+public:
+    static constexpr int kVersion = 1;
+    static constexpr qint64 kMaxBytes = 256 * 1024;
+
+    QString name;
+    std::vector<PlanStep> steps;
+    QString baseDir; // the plan file's folder (relative paths); not saved
+
+    static const std::vector<StepKind> &allKinds();
+    static QString key(StepKind kind);                       // "identify", ...
+    static std::optional<StepKind> kindFromKey(const QString &key);
+    static QString title(StepKind kind);                     // translated, e.g. "Static noise and bias"
+    static QString description(StepKind kind);               // translated, one sentence
+    static const std::vector<ParamSpec> &params(StepKind kind);
+    static const ParamSpec *param(StepKind kind, const QString &key);
+    // A step of the kind with every parameter at its default.
+    static PlanStep defaultStep(StepKind kind);
+    // The example plan (docs/examples/station-hi14.json is this, saved).
+    static TestPlan example();
+
+    static std::optional<TestPlan> fromJson(const QByteArray &json, QString *error);
+    QByteArray toJson() const;
+    static std::optional<TestPlan> load(const QString &path, QString *error);
+    bool save(const QString &path, QString *error) const;
+    // A path given in the plan, made absolute against baseDir.
+    QString resolve(const QString &path) const;
+    // Checks one value for a parameter: empty when acceptable, else why (translated).
+    static QString checkValue(StepKind kind, const QString &key, const QVariant &value);
+    // Every step's values checked; empty when the plan can run.
+    QStringList problems() const;
+};
+
+} // namespace imudesk::station

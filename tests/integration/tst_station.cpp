@@ -1,0 +1,274 @@
+// The production station (issue 22) on a tray of simulated HI14 modules, each served on its
+// own pseudo-terminal: one with a noisy gyro, one mounted on its side, one with old firmware
+// that the plan updates, one clean, and one whose cable is pulled during the plan. The runner
+// tests them at once and names the failing step and values; the run folder gets a PDF per
+// module, summary.jsonl and summary.csv, and a re-run of a failed module appends to it. The
+// same tray through `imudesk-cli station`.
+#include "../common/cli_run.h"
+#include "../common/firmware_files.h"
+#include "protocol/ihex/intel_hex_writer.h"
+#include "reports/station_report.h"
+#include "sim/pty_simulator.h"
+#include "station/run_folder.h"
+#include "station/station_runner.h"
+
+#include <QElapsedTimer>
+#include <QFile>
+#include <QGuiApplication>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include <memory>
+#include <vector>
+
+using namespace imudesk;
+using station::Verdict;
+
+namespace {
+
+struct Tray {
+    std::vector<std::unique_ptr<sim::PtySimulator>> sims;
+    QStringList ports;
+
+    bool add(const char *faults, const char *firmware, uint64_t seed)
+    {
+        sim::SimOptions o;
+        o.firmware = firmware;
+        o.seed = seed;
+        std::string error;
+        if (!sim::parseSimFaults(faults, o.faults, &error))
+            return false;
+        auto s = std::make_unique<sim::PtySimulator>(o);
+        if (!s->start())
+            return false;
+        ports << s->devicePath();
+        sims.push_back(std::move(s));
+        return true;
+    }
+};
+
+// A short plan with every kind of check the tray's faults trip: identify, firmware (update
+// from image), profile, static noise, attitude, save, evidence.
+station::TestPlan trayPlan(const QTemporaryDir &dir)
+{
+    protocol::ihex::FirmwareImage image = test::appImage("1.7.1", 16 * 1024, 7);
+    test::writeFile(dir, QStringLiteral("app-1.7.1.hex"), protocol::ihex::IntelHexWriter::write(image));
+    test::writeFile(dir, QStringLiteral("profile.json"),
+                    R"({"format": "imudesk-profile", "version": 1,
+                        "settings": {"ATT.MODE": "1", "LOG.HI91": "0.01"}})");
+    station::TestPlan plan;
+    plan.name = QStringLiteral("tray test");
+    plan.baseDir = dir.path();
+    auto add = [&plan](station::StepKind kind, QVariantMap params = {}) {
+        station::PlanStep s = station::TestPlan::defaultStep(kind);
+        for (auto it = params.begin(); it != params.end(); ++it)
+            s.params[it.key()] = it.value();
+        plan.steps.push_back(s);
+    };
+    using station::StepKind;
+    add(StepKind::Identify, {{QStringLiteral("products"), QStringLiteral("HI14")},
+                             {QStringLiteral("firmware_min"), QStringLiteral("1.6.6")}});
+    add(StepKind::Firmware, {{QStringLiteral("minimum"), QStringLiteral("1.7.1")},
+                             {QStringLiteral("image"), QStringLiteral("app-1.7.1.hex")}});
+    add(StepKind::Profile, {{QStringLiteral("profile"), QStringLiteral("profile.json")}});
+    add(StepKind::Static, {{QStringLiteral("seconds"), 3.0}});
+    add(StepKind::Attitude, {{QStringLiteral("seconds"), 1.0}});
+    add(StepKind::Save);
+    add(StepKind::Evidence, {{QStringLiteral("seconds"), 1.0}});
+    return plan;
+}
+
+const station::StepResult *stepOf(const station::ModuleResult &m, station::StepKind kind)
+{
+    for (const auto &s : m.steps)
+        if (s.kind == kind)
+            return &s;
+    return nullptr;
+}
+
+const station::Measurement *valueOf(const station::StepResult &s, const QString &name)
+{
+    for (const auto &v : s.values)
+        if (v.name == name)
+            return &v;
+    return nullptr;
+}
+
+} // namespace
+
+class TestStation : public QObject {
+    Q_OBJECT
+
+private Q_SLOTS:
+    void trayOfFiveInParallel();
+    void cliTray();
+};
+
+void TestStation::trayOfFiveInParallel()
+{
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    Tray tray;
+    QVERIFY(tray.add("noisy-gyro", "1.7.1", 11));
+    QVERIFY(tray.add("wrong-mounting", "1.7.1", 12));
+    QVERIFY(tray.add("", "1.6.6", 13));
+    QVERIFY(tray.add("", "1.7.1", 14));
+    QVERIFY(tray.add("unplug=4", "1.7.1", 15));
+    const station::TestPlan plan = trayPlan(dir);
+    QVERIFY2(plan.problems().isEmpty(), qPrintable(plan.problems().join(u'\n')));
+
+    station::StationRunner runner(plan, tray.ports);
+    QString error;
+    const QString runDir = dir.filePath(QStringLiteral("run"));
+    QVERIFY2(runner.setRunFolder(runDir, &error), qPrintable(error));
+    runner.setReportWriter(&ui::writeStationReport);
+    QSignalSpy done(&runner, &station::StationRunner::finished);
+    QElapsedTimer clock;
+    clock.start();
+    runner.start();
+    QVERIFY(runner.running());
+    QVERIFY(done.wait(120000));
+    const double seconds = clock.elapsed() / 1000.0;
+
+    // 1: noisy gyro -> fails the static step, naming the gyro's standard deviation.
+    const auto &noisy = runner.module(0);
+    QCOMPARE(noisy.verdict, Verdict::Fail);
+    QCOMPARE(noisy.steps[size_t(noisy.failedStep())].kind, station::StepKind::Static);
+    const auto *gx = valueOf(*stepOf(noisy, station::StepKind::Static), QStringLiteral("gyro_std_x"));
+    QVERIFY(gx && !gx->ok && gx->value > 0.2);
+    QVERIFY2(noisy.failureSummary().contains(QStringLiteral("gyro_std_x")), qPrintable(noisy.failureSummary()));
+    QCOMPARE(stepOf(noisy, station::StepKind::Attitude)->verdict, Verdict::Skipped);
+
+    // 2: on its side -> fails the attitude step with a roll error of about 90 degrees.
+    const auto &tilted = runner.module(1);
+    QCOMPARE(tilted.verdict, Verdict::Fail);
+    QCOMPARE(tilted.steps[size_t(tilted.failedStep())].kind, station::StepKind::Attitude);
+    const auto *roll = valueOf(*stepOf(tilted, station::StepKind::Attitude), QStringLiteral("roll_error"));
+    QVERIFY(roll && !roll->ok);
+    QVERIFY2(std::abs(roll->value) > 80 && std::abs(roll->value) < 100, qPrintable(QString::number(roll->value)));
+
+    // 3: firmware 1.6.6 -> updated to 1.7.1 by the plan, then passes.
+    const auto &old = runner.module(2);
+    QVERIFY2(old.verdict == Verdict::Pass, qPrintable(old.failureSummary()));
+    QCOMPARE(old.firmware, QStringLiteral("1.6.6"));
+    QCOMPARE(old.firmwareAfter, QStringLiteral("1.7.1"));
+    QVERIFY(valueOf(*stepOf(old, station::StepKind::Firmware), QStringLiteral("bytes_written")));
+
+    // 4: clean -> passes; nothing updated.
+    const auto &clean = runner.module(3);
+    QVERIFY2(clean.verdict == Verdict::Pass, qPrintable(clean.failureSummary()));
+    QVERIFY(clean.firmwareAfter.isEmpty());
+    QVERIFY(QFile::exists(clean.evidencePath));
+
+    // 5: the cable pulled at 4 s -> that module fails as gone; the others went on.
+    const auto &pulled = runner.module(4);
+    QCOMPARE(pulled.verdict, Verdict::Fail);
+    QVERIFY2(pulled.failureSummary().contains(QStringLiteral("disappeared"))
+                 || pulled.failureSummary().contains(QStringLiteral("no data")),
+             qPrintable(pulled.failureSummary()));
+
+    const auto s = runner.summary();
+    QCOMPARE(s.passed, 2);
+    QCOMPARE(s.failed, 3);
+    QVERIFY(!runner.allPassed());
+    // In parallel: the plan takes about 6 s of measuring plus an update of ~2 s; five in turn
+    // would take well over 30 s.
+    QVERIFY2(seconds < 25, qPrintable(QString::number(seconds)));
+
+    // Reports: a PDF per module, one JSON line per module, the tidy CSV.
+    QVERIFY2(runner.reportErrors().isEmpty(), qPrintable(runner.reportErrors().join(u'\n')));
+    for (int i = 0; i < runner.moduleCount(); ++i) {
+        QFile pdf(runner.module(i).reportPath);
+        QVERIFY2(pdf.open(QIODevice::ReadOnly), qPrintable(runner.module(i).reportPath));
+        QVERIFY(pdf.read(4) == "%PDF");
+    }
+    station::RunFolder folder;
+    QVERIFY(folder.open(runDir, plan, &error));
+    const auto entries = folder.entries();
+    QCOMPARE(entries.size(), 5);
+    QCOMPARE(entries.at(0).value(QStringLiteral("serial")).toString(), noisy.serial);
+    QStringList verdicts;
+    for (const auto &e : entries)
+        if (e.value(QStringLiteral("serial")).toString() == noisy.serial)
+            QCOMPARE(e.value(QStringLiteral("failed_step")).toString(), QStringLiteral("static"));
+    QFile csv(QDir(runDir).filePath(QStringLiteral("summary.csv")));
+    QVERIFY(csv.open(QIODevice::ReadOnly));
+    const QStringList lines = QString::fromUtf8(csv.readAll()).split(u'\n', Qt::SkipEmptyParts);
+    QCOMPARE(lines.first(), station::RunFolder::csvHeader());
+    QVERIFY(std::any_of(lines.begin(), lines.end(), [&](const QString &l) {
+        return l.startsWith(noisy.serial) && l.contains(QStringLiteral(",static,fail,")) && l.contains(QStringLiteral("gyro_std_x"));
+    }));
+
+    // A re-run of the noisy module appends attempt 2 to the same run.
+    QSignalSpy again(&runner, &station::StationRunner::moduleFinished);
+    runner.rerun({0});
+    QVERIFY(again.wait(60000));
+    QCOMPARE(runner.module(0).attempt, 2);
+    QCOMPARE(folder.entries().size(), 6);
+    QCOMPARE(folder.nextAttempt(noisy.serial), 3);
+    QVERIFY(runner.module(0).reportPath.endsWith(QStringLiteral("-attempt2.pdf")));
+}
+
+void TestStation::cliTray()
+{
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    Tray tray;
+    QVERIFY(tray.add("noisy-gyro", "1.7.1", 21));
+    QVERIFY(tray.add("wrong-mounting", "1.7.1", 22));
+    QVERIFY(tray.add("", "1.6.6", 23));
+    QVERIFY(tray.add("", "1.7.1", 24));
+    const station::TestPlan plan = trayPlan(dir);
+    const QString planPath = dir.filePath(QStringLiteral("plan.json"));
+    QString error;
+    QVERIFY2(plan.save(planPath, &error), qPrintable(error));
+    const QString runDir = dir.filePath(QStringLiteral("cli-run"));
+    const auto r = test::runCli({QStringLiteral("station"), planPath, tray.ports.join(u','), QStringLiteral("--report"),
+                                 runDir, QStringLiteral("--json")},
+                                120000);
+    QCOMPARE(r.code, 1); // not every module passed
+    QMap<QString, QJsonObject> byPort;
+    QJsonObject summary;
+    for (const QString &line : r.out.split(u'\n', Qt::SkipEmptyParts)) {
+        const QJsonObject o = QJsonDocument::fromJson(line.toUtf8()).object();
+        if (o.value(QStringLiteral("event")).toString() == QStringLiteral("summary"))
+            summary = o;
+        else
+            byPort.insert(o.value(QStringLiteral("port")).toString(), o);
+    }
+    QCOMPARE(byPort.size(), 4);
+    QCOMPARE(byPort.value(tray.ports[0]).value(QStringLiteral("verdict")).toString(), QStringLiteral("fail"));
+    QCOMPARE(byPort.value(tray.ports[0]).value(QStringLiteral("failed_step")).toString(), QStringLiteral("static"));
+    QVERIFY(byPort.value(tray.ports[0]).value(QStringLiteral("failure")).toString().contains(QStringLiteral("gyro_std")));
+    QCOMPARE(byPort.value(tray.ports[1]).value(QStringLiteral("failed_step")).toString(), QStringLiteral("attitude"));
+    QCOMPARE(byPort.value(tray.ports[2]).value(QStringLiteral("verdict")).toString(), QStringLiteral("pass"));
+    QCOMPARE(byPort.value(tray.ports[2]).value(QStringLiteral("firmware_after")).toString(), QStringLiteral("1.7.1"));
+    QCOMPARE(byPort.value(tray.ports[3]).value(QStringLiteral("verdict")).toString(), QStringLiteral("pass"));
+    QCOMPARE(summary.value(QStringLiteral("passed")).toInt(), 2);
+    QCOMPARE(summary.value(QStringLiteral("failed")).toInt(), 2);
+    QVERIFY2(r.err.contains(QStringLiteral("step 4/7 Static noise and bias")), qPrintable(r.err));
+    for (const QJsonObject &o : byPort) {
+        QFile pdf(o.value(QStringLiteral("report")).toString());
+        QVERIFY2(pdf.open(QIODevice::ReadOnly), qPrintable(pdf.fileName()));
+        QVERIFY(pdf.read(4) == "%PDF");
+    }
+
+    // Only the passing modules: exit code 0.
+    const auto ok = test::runCli({QStringLiteral("station"), planPath, tray.ports[3], QStringLiteral("--report"), runDir},
+                                 120000);
+    QVERIFY2(ok.code == 0, qPrintable(ok.out + ok.err));
+    QVERIFY(ok.out.startsWith(QStringLiteral("PASS ")));
+    // A plan that does not load: a clear error, exit code 1, nothing run.
+    test::writeFile(dir, QStringLiteral("bad.json"), R"({"format": "imudesk-station-plan", "version": 1,
+        "steps": [{"step": "static", "seconds": 0}]})");
+    const auto bad = test::runCli({QStringLiteral("station"), dir.filePath(QStringLiteral("bad.json")), tray.ports[3]});
+    QCOMPARE(bad.code, 1);
+    QVERIFY2(bad.err.contains(QStringLiteral("step 1 (static)")) && bad.err.contains(QStringLiteral("seconds")),
+             qPrintable(bad.err));
+}
+
+QTEST_MAIN(TestStation)
+#include "tst_station.moc"
