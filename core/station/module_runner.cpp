@@ -52,13 +52,7 @@ QString versionText(const std::optional<model::FirmwareVersion> &v)
 ModuleRunner::ModuleRunner(TestPlan plan, QString port, Options options, QObject *parent)
     : QObject(parent), m_plan(std::move(plan)), m_port(std::move(port)), m_options(std::move(options))
 {
-    m_result.port = m_port;
-    for (const PlanStep &s : m_plan.steps) {
-        StepResult r;
-        r.kind = s.kind;
-        r.title = TestPlan::title(s.kind);
-        m_result.steps.push_back(r);
-    }
+    m_result = ModuleResult::pending(m_port, m_plan);
     m_pollTimer.setInterval(kPollMs);
     connect(&m_pollTimer, &QTimer::timeout, this, &ModuleRunner::poll);
     m_deadline.setSingleShot(true);

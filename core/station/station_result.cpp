@@ -53,6 +53,19 @@ QJsonObject StepResult::toJson() const
                        {QStringLiteral("finished"), isoTime(finished)}};
 }
 
+ModuleResult ModuleResult::pending(const QString &port, const TestPlan &plan)
+{
+    ModuleResult r;
+    r.port = port;
+    for (const PlanStep &s : plan.steps) {
+        StepResult st;
+        st.kind = s.kind;
+        st.title = TestPlan::title(s.kind);
+        r.steps.push_back(st);
+    }
+    return r;
+}
+
 int ModuleResult::failedStep() const
 {
     for (size_t i = 0; i < steps.size(); ++i)

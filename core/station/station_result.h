@@ -48,6 +48,8 @@ struct ModuleResult {
     QString reportPath;                // the PDF, once written
     int attempt = 1;                   // 1 + earlier runs of this serial in the same run folder
 
+    // A module not yet tested: every step of the plan pending.
+    static ModuleResult pending(const QString &port, const TestPlan &plan);
     // The first failed step (index), or -1.
     int failedStep() const;
     // "Static noise and bias: gyro_std_x 0.41 °/s (limit ≤ 0.05)" for a failure; empty otherwise.

@@ -10,15 +10,7 @@ StationRunner::StationRunner(TestPlan plan, QStringList ports, QObject *parent)
     : QObject(parent), m_plan(std::move(plan)), m_ports(std::move(ports))
 {
     for (const QString &port : m_ports) {
-        ModuleResult r;
-        r.port = port;
-        for (const PlanStep &s : m_plan.steps) {
-            StepResult st;
-            st.kind = s.kind;
-            st.title = TestPlan::title(s.kind);
-            r.steps.push_back(st);
-        }
-        m_modules.push_back(r);
+        m_modules.push_back(ModuleResult::pending(port, m_plan));
         m_runners.emplace_back();
     }
 }

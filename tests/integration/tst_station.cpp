@@ -48,6 +48,12 @@ struct Tray {
         sims.push_back(std::move(s));
         return true;
     }
+    // The four of the acceptance: noisy gyro, on its side, old firmware, clean.
+    bool addFour(uint64_t seed)
+    {
+        return add("noisy-gyro", "1.7.1", seed) && add("wrong-mounting", "1.7.1", seed + 1)
+            && add("", "1.6.6", seed + 2) && add("", "1.7.1", seed + 3);
+    }
 };
 
 // A short plan with every kind of check the tray's faults trip: identify, firmware (update
@@ -112,10 +118,7 @@ void TestStation::trayOfFiveInParallel()
     QTemporaryDir dir;
     QVERIFY(dir.isValid());
     Tray tray;
-    QVERIFY(tray.add("noisy-gyro", "1.7.1", 11));
-    QVERIFY(tray.add("wrong-mounting", "1.7.1", 12));
-    QVERIFY(tray.add("", "1.6.6", 13));
-    QVERIFY(tray.add("", "1.7.1", 14));
+    QVERIFY(tray.addFour(11));
     QVERIFY(tray.add("unplug=4", "1.7.1", 15));
     const station::TestPlan plan = trayPlan(dir);
     QVERIFY2(plan.problems().isEmpty(), qPrintable(plan.problems().join(u'\n')));
@@ -217,10 +220,7 @@ void TestStation::cliTray()
     QTemporaryDir dir;
     QVERIFY(dir.isValid());
     Tray tray;
-    QVERIFY(tray.add("noisy-gyro", "1.7.1", 21));
-    QVERIFY(tray.add("wrong-mounting", "1.7.1", 22));
-    QVERIFY(tray.add("", "1.6.6", 23));
-    QVERIFY(tray.add("", "1.7.1", 24));
+    QVERIFY(tray.addFour(21));
     const station::TestPlan plan = trayPlan(dir);
     const QString planPath = dir.filePath(QStringLiteral("plan.json"));
     QString error;
