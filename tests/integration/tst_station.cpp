@@ -111,6 +111,7 @@ class TestStation : public QObject {
 private Q_SLOTS:
     void trayOfFiveInParallel();
     void cliTray();
+    void examplePlanPassesOnCleanHi14();
 };
 
 void TestStation::trayOfFiveInParallel()
@@ -268,6 +269,37 @@ void TestStation::cliTray()
     QCOMPARE(bad.code, 1);
     QVERIFY2(bad.err.contains(QStringLiteral("step 1 (static)")) && bad.err.contains(QStringLiteral("seconds")),
              qPrintable(bad.err));
+}
+
+// docs/examples/station-hi14.json, every step of it, on a clean simulated HI14 on a rotation
+// fixture (for the magnetometer calibration), and the same plan failing that step on a module
+// with a motor beside it.
+void TestStation::examplePlanPassesOnCleanHi14()
+{
+    QString error;
+    const auto plan = station::TestPlan::load(
+        QDir::cleanPath(QStringLiteral(IMUDESK_TEST_DATA "/../../docs/examples/station-hi14.json")), &error);
+    QVERIFY2(plan, qPrintable(error));
+    QVERIFY2(plan->problems().isEmpty(), qPrintable(plan->problems().join(u'\n')));
+    QTemporaryDir dir;
+    Tray tray;
+    QVERIFY(tray.add("fixture", "1.7.1", 31));
+    QVERIFY(tray.add("fixture,mag-disturbance", "1.7.1", 32));
+    station::StationRunner runner(*plan, tray.ports);
+    QVERIFY2(runner.setRunFolder(dir.filePath(QStringLiteral("run")), &error), qPrintable(error));
+    QSignalSpy done(&runner, &station::StationRunner::finished);
+    runner.start();
+    QVERIFY(done.wait(240000));
+    const auto &clean = runner.module(0);
+    QVERIFY2(clean.verdict == Verdict::Pass, qPrintable(clean.failureSummary()));
+    for (const auto &s : clean.steps)
+        QCOMPARE(s.verdict, s.kind == station::StepKind::GyroScale ? Verdict::Skipped : Verdict::Pass);
+    QVERIFY(QFile::exists(clean.evidencePath));
+    const auto &disturbed = runner.module(1);
+    QCOMPARE(disturbed.verdict, Verdict::Fail);
+    QCOMPARE(disturbed.steps[size_t(disturbed.failedStep())].kind, station::StepKind::MagCal);
+    QVERIFY2(disturbed.failureSummary().contains(QStringLiteral("STAT=4")), qPrintable(disturbed.failureSummary()));
+    QCOMPARE(runner.framesLost(), 0u);
 }
 
 QTEST_MAIN(TestStation)
