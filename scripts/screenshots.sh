@@ -33,7 +33,7 @@ shot() { # name, width, height, language, arguments...
   local name="$1" w="$2" h="$3" lang="$4"; shift 4
   local file="$out/$name-${w}x$h-$lang.png"
   QT_QPA_PLATFORM="offscreen:configfile=$(screen "$w" "$h")" \
-    "$app" -qwindowgeometry "${w}x$h+0+0" --lang "$lang" --screenshot "$file" --after 4 "$@" > /dev/null 2>&1
+    "$app" -qwindowgeometry "${w}x$h+0+0" --lang "$lang" --screenshot "$file" --after "${after:-4}" "$@" > /dev/null 2>&1
   echo "  $file"
 }
 for lang in en zh_CN; do
@@ -46,6 +46,8 @@ for lang in en zh_CN; do
     shot j1939 "$1" "$2" "$lang" --link can --motion tumble
     shot canopen "$1" "$2" "$lang" --link canopen --motion tumble
     [ -s "$scratch/demo.imucap" ] && shot replay "$1" "$2" "$lang" --link "$scratch/demo.imucap"
+    # The production station on a simulated tray of eight (three faulty), once the quick plan has ended.
+    after=25 shot station "$1" "$2" "$lang" --station-demo "$root/docs/examples/station-hi14-quick.json"
   done
 done
 # The wizards and the firmware-update dialog, every page, both sizes, both languages.

@@ -132,6 +132,8 @@ phase "benchmark (magnetometer fit accuracy and speed against known truth)"
 "$bench/bench_magcal" || echo "!! bench_magcal missed a target (see above)"
 phase "benchmark (firmware update throughput over a pty at 115200 and 921600 baud)"
 "$bench/bench_update" --quick || echo "!! bench_update missed a target (see above)"
+phase "benchmark (production station: a 60-s plan on eight simulated modules against one)"
+"$bench/bench_station" || echo "!! bench_station missed a target (see above)"
 phase "soak (1 kHz HI91 with recording and the GUI offscreen; 60 s in CI, one hour by default)"
 live_bench "$bench/soak" --seconds 60
 

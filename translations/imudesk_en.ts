@@ -54,6 +54,15 @@
     </message>
 </context>
 <context>
+    <name>imudesk::station::ModuleRunner</name>
+    <message numerus="yes">
+        <location filename="../core/station/module_runner.cpp" line="+453" />
+        <source>%n setting(s) applied and read back</source>
+        <translation>
+            <numerusform>%n setting applied and read back</numerusform><numerusform>%n settings applied and read back</numerusform></translation>
+    </message>
+</context>
+<context>
     <name>imudesk::ui::CompassPoseView</name>
     <message numerus="yes">
         <location filename="../ui/attitude/compass_pose_view.cpp" line="+109" />

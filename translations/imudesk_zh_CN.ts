@@ -58,7 +58,7 @@
 <context>
     <name>CalibrationReport</name>
     <message>
-        <location filename="../ui/calibration/calibration_report.cpp" line="+38" />
+        <location filename="../ui/calibration/calibration_report.cpp" line="+34" />
         <source>Fit</source>
         <translation>拟合方式</translation>
     </message>
@@ -476,29 +476,9 @@
         <translation>由 ImuDesk 根据 %1 中保存的校准数据生成</translation>
     </message>
     <message>
-        <location line="+20" />
-        <source>No file name was given for the report.</source>
-        <translation>未指定报告的文件名。</translation>
-    </message>
-    <message>
-        <location line="+8" />
+        <location line="+14" />
         <source>ImuDesk calibration report</source>
         <translation>ImuDesk 校准报告</translation>
-    </message>
-    <message>
-        <location line="+6" />
-        <source>The report could not be rendered as PDF.</source>
-        <translation>无法将报告生成为 PDF。</translation>
-    </message>
-    <message>
-        <location line="+3" />
-        <source>Cannot write the report to %1: %2. Choose another folder.</source>
-        <translation>无法将报告写入 %1：%2。请选择其他文件夹。</translation>
-    </message>
-    <message>
-        <location line="+3" />
-        <source>Cannot write the report to %1: %2. Check the free disk space and try again.</source>
-        <translation>无法将报告写入 %1：%2。请检查磁盘剩余空间后重试。</translation>
     </message>
 </context>
 <context>
@@ -2459,7 +2439,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>PtySimulator</name>
     <message>
-        <location filename="../core/sim/pty_simulator.cpp" line="+263" />
+        <location filename="../core/sim/pty_simulator.cpp" line="+290" />
         <source>Cannot open a pseudo-terminal: %1</source>
         <translation>无法打开伪终端：%1</translation>
     </message>
@@ -4370,7 +4350,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>“%1”尝试 %2 次（每次 %3 ms）均无应答（请检查波特率和模块地址；处于连续输出状态的 RS-485 模块可能漏收指令：请设为问答模式）</translation>
     </message>
     <message>
-        <location line="+202" />
+        <location line="+185" />
         <source>the module answered with an invalid reply: %1</source>
         <translation>模块返回了无效应答：%1</translation>
     </message>
@@ -4985,7 +4965,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::models::LatestValuesModel</name>
     <message>
-        <location filename="../core/models/latest_values_model.cpp" line="+163" />
+        <location filename="../core/models/latest_values_model.cpp" line="+172" />
         <source>Quantity</source>
         <translation>物理量</translation>
     </message>
@@ -5000,7 +4980,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>单位</translation>
     </message>
     <message>
-        <location line="+95" />
+        <location line="+89" />
         <source>0 invalid</source>
         <translation>0 解无效</translation>
     </message>
@@ -5045,7 +5025,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>5 RTK 浮点解</translation>
     </message>
     <message>
-        <location line="+20" />
+        <location line="+16" />
         <source>true</source>
         <translation>真北</translation>
     </message>
@@ -5830,6 +5810,679 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <location filename="../core/sim/simulated_transport.cpp" line="+73" />
         <source>The connection to %1 was lost (simulated unplug). Check the cable; everything received so far is kept.</source>
         <translation>与 %1 的连接已断开（模拟拔出）。请检查线缆；已收到的数据全部保留。</translation>
+    </message>
+</context>
+<context>
+    <name>imudesk::station::ModuleRunner</name>
+    <message>
+        <location filename="../core/station/module_runner.cpp" line="+82" />
+        <source>the module did not answer on %1 within %2 s: check the cable, the power and the port</source>
+        <translation>模块在 %2 s 内未在 %1 上应答：请检查线缆、电源和串口</translation>
+    </message>
+    <message>
+        <location line="+39" />
+        <source>the module's settings could not be read: %1</source>
+        <translation>无法读取模块的设置：%1</translation>
+    </message>
+    <message>
+        <location line="+18" />
+        <source>updated from %1 to %2 and verified</source>
+        <translation>已从 %1 升级到 %2 并校验通过</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>after the update the module reports firmware %1, older than %2</source>
+        <translation>升级后模块报告的固件为 %1，低于 %2</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <location line="+182" />
+        <location line="+1" />
+        <source>(none)</source>
+        <translation>（无）</translation>
+    </message>
+    <message>
+        <location line="-166" />
+        <source>could not connect to %1: %2</source>
+        <translation>无法连接到 %1：%2</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>the module disappeared during "%1" (%2): check its cable; the other modules go on</source>
+        <translation>模块在“%1”期间断开（%2）：请检查其线缆；其他模块继续测试</translation>
+    </message>
+    <message>
+        <location line="+53" />
+        <source>not enabled in the plan</source>
+        <translation>测试计划中未启用</translation>
+    </message>
+    <message>
+        <location line="+32" />
+        <source>not run: "%1" failed</source>
+        <translation>未运行：“%1”失败</translation>
+    </message>
+    <message>
+        <location line="+28" />
+        <source>cancelled by the operator</source>
+        <translation>已由操作员取消</translation>
+    </message>
+    <message>
+        <location line="+48" />
+        <source>%1, firmware %2, serial %3</source>
+        <translation>%1，固件 %2，序列号 %3</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>(no product name)</source>
+        <translation>（无产品型号）</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>%1: not one of %2</source>
+        <translation>%1：不属于 %2</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>%1: firmware outside %2 … %3</source>
+        <translation>%1：固件不在 %2 … %3 范围内</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <location line="+1" />
+        <source>any</source>
+        <translation>不限</translation>
+    </message>
+    <message>
+        <location line="+14" />
+        <source>the plan's minimum firmware "%1" is not a version</source>
+        <translation>测试计划中的最低固件“%1”不是有效的版本号</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>firmware %1 is at least %2: no update needed</source>
+        <translation>固件 %1 不低于 %2：无需升级</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>firmware %1 is older than %2 and the plan names no image to update from</source>
+        <translation>固件 %1 低于 %2，且测试计划未指定用于升级的固件镜像</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <location line="+5" />
+        <source>%1: %2 (nothing was sent to the module)</source>
+        <translation>%1：%2（未向模块发送任何数据）</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>updating from %1 …</source>
+        <translation>正在从 %1 升级…</translation>
+    </message>
+    <message>
+        <location line="+18" />
+        <source>the update failed: %1</source>
+        <translation>升级失败：%1</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <source>the module did not come back after the update within %1 s</source>
+        <translation>升级后模块未在 %1 s 内恢复连接</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>the updater could not start</source>
+        <translation>无法启动升级程序</translation>
+    </message>
+    <message>
+        <location line="+11" />
+        <source>profile %1: %2</source>
+        <translation>配置方案 %1：%2</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>%1=%2 (%3)</source>
+        <translation>%1=%2（%3）</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>the module cannot take: %1</source>
+        <translation>模块无法接受：%1</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>the module already holds every setting of the profile</source>
+        <translation>模块已具有配置方案中的全部设置</translation>
+    </message>
+    <message>
+        <location line="+13" />
+        <source>%1=%2: %3 %4</source>
+        <translation>%1=%2：%3 %4</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+11" />
+        <source>%n setting(s) applied and read back</source>
+        <translation>
+            <numerusform>已应用并回读 %n 项设置</numerusform></translation>
+    </message>
+    <message>
+        <location line="+14" />
+        <source>SAVECONFIG answered OK</source>
+        <translation>SAVECONFIG 已应答 OK</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>SAVECONFIG failed: %1</source>
+        <translation>SAVECONFIG 失败：%1</translation>
+    </message>
+    <message>
+        <location line="+42" />
+        <source>no data from the module for %1 s during "%2": is its output on, is it still connected?</source>
+        <translation>“%2”期间 %1 s 未收到模块数据：模块输出是否已开启？是否仍在连接中？</translation>
+    </message>
+    <message>
+        <location line="+28" />
+        <source>only %1 samples in %2 s: enable the module's output (HI91, at least 10 Hz)</source>
+        <translation>%2 s 内仅有 %1 个样本：请开启模块的输出（HI91，至少 10 Hz）</translation>
+    </message>
+    <message>
+        <location line="+56" />
+        <source>%1 samples within every limit</source>
+        <translation>%1 个样本，均在限值内</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>%1 samples; values outside the limits are marked</source>
+        <translation>%1 个样本；超出限值的数值已标出</translation>
+    </message>
+    <message>
+        <location line="+23" />
+        <source>%1 s of data do not reach τ = %2 s: measure for at least %3 s</source>
+        <translation>%1 s 的数据不足以达到 τ = %2 s：请至少测量 %3 s</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>σ(%1 s) of each gyro axis</source>
+        <translation>陀螺仪各轴的 σ(%1 s)</translation>
+    </message>
+    <message>
+        <location line="+18" />
+        <source>the module's output carries no Euler angles: enable HI91 in the profile</source>
+        <translation>模块输出中没有欧拉角：请在配置方案中启用 HI91</translation>
+    </message>
+    <message>
+        <location line="+14" />
+        <source>mounted as expected</source>
+        <translation>安装方向符合预期</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>roll %1°, pitch %2°: the module is not mounted as the plan expects</source>
+        <translation>横滚角 %1°，俯仰角 %2°：模块的安装方向与测试计划不符</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>the module reported no firmware version, so the calibration commands are unknown</source>
+        <translation>模块未报告固件版本，因此无法确定校准指令</translation>
+    </message>
+    <message>
+        <location line="+16" />
+        <source>the calibration did not end within %1 s</source>
+        <translation>校准未在 %1 s 内结束</translation>
+    </message>
+    <message>
+        <location line="+14" />
+        <source>the turns did not end within %1 s: is the module on the turntable?</source>
+        <translation>转动未在 %1 s 内结束：模块是否已放在转台上？</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>no run folder to record into</source>
+        <translation>没有可供记录的运行文件夹</translation>
+    </message>
+    <message>
+        <location line="+16" />
+        <source>the recording stopped: %1</source>
+        <translation>记录已停止：%1</translation>
+    </message>
+</context>
+<context>
+    <name>imudesk::station::RunFolder</name>
+    <message>
+        <location filename="../core/station/run_folder.cpp" line="+34" />
+        <source>cannot write %1: %2. Free some space or choose another report folder.</source>
+        <translation>无法写入 %1：%2。请释放一些空间或选择其他报告文件夹。</translation>
+    </message>
+    <message>
+        <location line="+19" />
+        <source>cannot create the report folder %1: choose a folder you may write to</source>
+        <translation>无法创建报告文件夹 %1：请选择有写入权限的文件夹</translation>
+    </message>
+    <message>
+        <location line="+11" />
+        <source>%1 holds a run of another plan; choose a new folder so that results stay comparable</source>
+        <translation>%1 中已有其他测试计划的运行结果；请选择新文件夹，以保证结果可比</translation>
+    </message>
+</context>
+<context>
+    <name>imudesk::station::TestPlan</name>
+    <message>
+        <location filename="../core/station/test_plan.cpp" line="+77" />
+        <source>Identify</source>
+        <translation>识别</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Firmware version</source>
+        <translation>固件版本</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Apply profile</source>
+        <translation>应用配置方案</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Static noise and bias</source>
+        <translation>静态噪声和零偏</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Allan deviation</source>
+        <translation>阿伦方差</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Attitude (mounting)</source>
+        <translation>姿态（安装方向）</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Magnetometer calibration</source>
+        <translation>地磁校准</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Gyro scale factor</source>
+        <translation>陀螺仪标度因数</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Save configuration</source>
+        <translation>保存配置</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Record evidence</source>
+        <translation>证据记录</translation>
+    </message>
+    <message>
+        <location line="+9" />
+        <source>The module reports an expected product and a firmware version within the range.</source>
+        <translation>模块报告的产品型号符合预期，固件版本在范围内。</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Firmware older than the minimum is updated from the image and verified; newer passes as it is.</source>
+        <translation>低于最低版本的固件将用固件镜像升级并校验；不低于该版本的直接通过。</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>The profile's settings are applied and every one is read back.</source>
+        <translation>应用配置方案中的设置，并逐项回读。</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>At rest: per-axis standard deviation and mean of the gyro, accelerometer noise and the gravity magnitude against their limits.</source>
+        <translation>静止状态下：将陀螺仪各轴的标准差和均值、加速度计噪声以及重力幅值与各自的限值比较。</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>The gyro's Allan deviation at the averaging time, worst axis, below the limit.</source>
+        <translation>陀螺仪在该平均时间下的阿伦方差（取最差轴）低于限值。</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Roll and pitch at rest within the tolerance of the expected orientation: the module is mounted as intended.</source>
+        <translation>静止时横滚角和俯仰角与预期姿态的偏差在容差内：模块按预期方向安装。</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>The module's own magnetometer calibration (MCAL) runs to the end and succeeds; the module must be turned through every attitude meanwhile (a rotation fixture).</source>
+        <translation>模块自身的地磁校准（MCAL）运行完毕并成功；期间必须将模块转过所有姿态（使用旋转工装）。</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>On a turntable: two turns each way; the gyro's scale-factor error below the limit.</source>
+        <translation>在转台上：正反方向各转两圈；陀螺仪标度因数误差低于限值。</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>SAVECONFIG: the module keeps its settings after a restart.</source>
+        <translation>SAVECONFIG：模块重启后保留其设置。</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The module's output is recorded into the run folder as evidence.</source>
+        <translation>将模块的输出记录到运行文件夹中作为证据。</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <source>Products</source>
+        <translation>产品型号</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Product names the module may report, separated by commas (HI14 matches HI14R3)</source>
+        <translation>模块可报告的产品型号，以逗号分隔（HI14 可匹配 HI14R3）</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Lowest firmware</source>
+        <translation>最低固件版本</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Oldest firmware accepted, e.g. 1.6.6; empty: any</source>
+        <translation>可接受的最低固件版本，例如 1.6.6；留空：不限</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Highest firmware</source>
+        <translation>最高固件版本</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Newest firmware accepted; empty: any</source>
+        <translation>可接受的最高固件版本；留空：不限</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>At least</source>
+        <translation>最低版本</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Modules with older firmware are updated</source>
+        <translation>固件低于此版本的模块将被升级</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Image</source>
+        <translation>固件镜像</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Intel HEX or binary image, relative to the plan's folder; without one an older module fails this step</source>
+        <translation>Intel HEX 或二进制镜像，路径相对于测试计划所在文件夹；未指定时，固件较旧的模块在此步骤失败</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>Profile</source>
+        <translation>配置方案</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Configuration profile (.json, saved from the profile dialog), relative to the plan's folder</source>
+        <translation>配置方案（.json，从配置方案对话框保存），路径相对于测试计划所在文件夹</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <location line="+19" />
+        <location line="+21" />
+        <location line="+18" />
+        <source>Duration</source>
+        <translation>时长</translation>
+    </message>
+    <message>
+        <location line="-57" />
+        <source>How long the module is measured at rest</source>
+        <translation>模块静止测量的时长</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Gyro noise max</source>
+        <translation>陀螺仪噪声上限</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Largest standard deviation of each gyro axis</source>
+        <translation>陀螺仪各轴标准差的最大允许值</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Gyro bias max</source>
+        <translation>陀螺仪零偏上限</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Largest magnitude of each gyro axis's mean at rest</source>
+        <translation>静止时陀螺仪各轴均值绝对值的最大允许值</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Accelerometer noise max</source>
+        <translation>加速度计噪声上限</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Largest standard deviation of each accelerometer axis</source>
+        <translation>加速度计各轴标准差的最大允许值</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Gravity tolerance</source>
+        <translation>重力容差</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The mean acceleration's magnitude may differ from 1 G by this much</source>
+        <translation>平均加速度的幅值与 1 G 之差允许的最大值</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>How long the module is measured at rest (at least 10 averaging times)</source>
+        <translation>模块静止测量的时长（至少为平均时间的 10 倍）</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Averaging time</source>
+        <translation>平均时间</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>τ at which the Allan deviation is read</source>
+        <translation>读取阿伦方差所用的 τ</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>σ(τ) max</source>
+        <translation>σ(τ) 上限</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Largest Allan deviation of any gyro axis at τ</source>
+        <translation>陀螺仪任一轴在 τ 处阿伦方差的最大允许值</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Expected roll</source>
+        <translation>预期横滚角</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Roll of the module in its fixture (Z up: 0)</source>
+        <translation>模块在工装中的横滚角（Z 轴朝上：0）</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Expected pitch</source>
+        <translation>预期俯仰角</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Pitch of the module in its fixture (Z up: 0)</source>
+        <translation>模块在工装中的俯仰角（Z 轴朝上：0）</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Tolerance</source>
+        <translation>容差</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Largest difference of roll and of pitch</source>
+        <translation>横滚角和俯仰角各自允许的最大偏差</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>The angles are averaged over this time</source>
+        <translation>在此时长内对角度取平均</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <location line="+8" />
+        <source>Time limit</source>
+        <translation>时间限值</translation>
+    </message>
+    <message>
+        <location line="-7" />
+        <source>The calibration fails when it has not ended by then</source>
+        <translation>到时仍未结束则校准失败</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Scale error max</source>
+        <translation>标度因数误差上限</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Largest scale-factor error of the Z gyro</source>
+        <translation>Z 轴陀螺仪标度因数误差的最大允许值</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>The run fails when the turns have not ended by then</source>
+        <translation>到时转动仍未结束则本次测试失败</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>How long the module's output is recorded</source>
+        <translation>记录模块输出的时长</translation>
+    </message>
+    <message>
+        <location line="+59" />
+        <source>%1 has no parameter "%2"</source>
+        <translation>%1 没有参数“%2”</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>"%1" must be a text</source>
+        <translation>“%1”必须是文本</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>"%1" must be a firmware version such as 1.7.1, not "%2"</source>
+        <translation>“%1”必须是固件版本号（如 1.7.1），而不是“%2”</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>"%1" must be a number</source>
+        <translation>“%1”必须是数字</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>"%1" = %2 is outside %3 … %4 %5</source>
+        <translation>“%1” = %2 超出 %3 … %4 %5</translation>
+    </message>
+    <message>
+        <location line="+13" />
+        <source>the plan is larger than %1 KiB</source>
+        <translation>测试计划大于 %1 KiB</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>not JSON: %1 at byte %2</source>
+        <translation>不是 JSON：第 %2 字节处：%1</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>not a station plan ("format" is not "%1")</source>
+        <translation>不是生产测试台的测试计划（"format" 不是 "%1"）</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>plan version %1 is not supported (this ImuDesk reads version %2)</source>
+        <translation>不支持测试计划版本 %1（本 ImuDesk 读取版本 %2）</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <location line="+86" />
+        <source>the plan has no steps</source>
+        <translation>测试计划中没有步骤</translation>
+    </message>
+    <message>
+        <location line="-80" />
+        <source>step %1: unknown step "%2"</source>
+        <translation>步骤 %1：未知步骤“%2”</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>step %1 (%2): "enabled" must be true or false</source>
+        <translation>步骤 %1（%2）："enabled" 必须为 true 或 false</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <location line="+72" />
+        <source>step %1 (%2): %3</source>
+        <translation>步骤 %1（%2）：%3</translation>
+    </message>
+    <message>
+        <location line="-38" />
+        <source>cannot open %1: %2</source>
+        <translation>无法打开 %1：%2</translation>
+    </message>
+    <message>
+        <location line="+15" />
+        <source>cannot write %1: %2. Choose another folder or free some space.</source>
+        <translation>无法写入 %1：%2。请选择其他文件夹或释放一些空间。</translation>
+    </message>
+    <message>
+        <location line="+30" />
+        <source>step %1 (%2): no %3 file given</source>
+        <translation>步骤 %1（%2）：未指定 %3 文件</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>step %1 (%2): %3 not found</source>
+        <translation>步骤 %1（%2）：找不到 %3</translation>
+    </message>
+</context>
+<context>
+    <name>imudesk::station::Verdict</name>
+    <message>
+        <location filename="../core/station/station_result.cpp" line="+23" />
+        <source>waiting</source>
+        <translation>等待中</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>running</source>
+        <translation>运行中</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>pass</source>
+        <translation>通过</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>fail</source>
+        <translation>失败</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>skipped</source>
+        <translation>已跳过</translation>
     </message>
 </context>
 <context>
@@ -7909,7 +8562,7 @@ Link load = bytes per second × 10 bits / baud rate.</source>
         <translation>3D 姿态</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/device_workspace_layout.cpp" line="+153" />
+        <location filename="../ui/workspace/device_workspace_layout.cpp" line="+165" />
         <source>&amp;Monitor</source>
         <translation>监视(&amp;M)</translation>
     </message>
@@ -7929,7 +8582,7 @@ Link load = bytes per second × 10 bits / baud rate.</source>
         <translation>分析(&amp;N)</translation>
     </message>
     <message>
-        <location line="+154" />
+        <location line="+164" />
         <source>%1 was floating off the screen</source>
         <translation>%1 浮动在屏幕之外</translation>
     </message>
@@ -9191,7 +9844,7 @@ Samples: %3</source>
 <context>
     <name>imudesk::ui::MainWindow</name>
     <message>
-        <location filename="../ui/workspace/main_window.cpp" line="+352" />
+        <location filename="../ui/workspace/main_window.cpp" line="+353" />
         <source>Choose a port first.</source>
         <translation>请先选择串口。</translation>
     </message>
@@ -9201,7 +9854,7 @@ Samples: %3</source>
         <translation>无法将截图保存到 %1：%2</translation>
     </message>
     <message>
-        <location line="+19" />
+        <location line="+46" />
         <source>ImuDesk</source>
         <translation>ImuDesk</translation>
     </message>
@@ -9236,7 +9889,7 @@ Samples: %3</source>
         <translation>PNG 图像 (*.png)</translation>
     </message>
     <message>
-        <location line="+83" />
+        <location line="+90" />
         <source>&amp;File</source>
         <translation>文件(&amp;F)</translation>
     </message>
@@ -9352,6 +10005,16 @@ Samples: %3</source>
     </message>
     <message>
         <location line="+1" />
+        <source>&amp;Production station…</source>
+        <translation>生产测试台(&amp;P)…</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Test a tray of modules at once against a test plan: a verdict and a report per serial number</source>
+        <translation>按测试计划同时测试一托盘模块：每个序列号一个判定结果和一份报告</translation>
+    </message>
+    <message>
+        <location line="+2" />
         <source>&amp;Reset layout</source>
         <translation>重置布局(&amp;R)</translation>
     </message>
@@ -9612,6 +10275,236 @@ Samples: %3</source>
         <location line="+18" />
         <source>Command: %1</source>
         <translation>指令：%1</translation>
+    </message>
+</context>
+<context>
+    <name>imudesk::ui::PdfOutput</name>
+    <message>
+        <location filename="../ui/reports/pdf_output.cpp" line="+21" />
+        <source>No file name was given for the report.</source>
+        <translation>未指定报告的文件名。</translation>
+    </message>
+    <message>
+        <location line="+14" />
+        <source>The report could not be rendered as PDF.</source>
+        <translation>无法将报告生成为 PDF。</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Cannot write the report to %1: %2. Choose another folder.</source>
+        <translation>无法将报告写入 %1：%2。请选择其他文件夹。</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Cannot write the report to %1: %2. Check the free disk space and try again.</source>
+        <translation>无法将报告写入 %1：%2。请检查磁盘剩余空间后重试。</translation>
+    </message>
+</context>
+<context>
+    <name>imudesk::ui::PlanEditorDialog</name>
+    <message>
+        <location filename="../ui/station/plan_editor_dialog.cpp" line="+178" />
+        <source>Plan &amp;name:</source>
+        <translation>计划名称(&amp;N)：</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Shown in the station window, the reports and the run folder's name</source>
+        <translation>显示在生产测试台窗口、报告和运行文件夹名称中</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>&amp;Steps, in the order they run (unchecked: reported as skipped):</source>
+        <translation>按运行顺序排列的步骤（未勾选的记为已跳过）(&amp;S)：</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Up</source>
+        <translation>上移</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Move the step up (Ctrl+Up)</source>
+        <translation>上移该步骤（Ctrl+Up）</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Down</source>
+        <translation>下移</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Move the step down (Ctrl+Down)</source>
+        <translation>将步骤下移（Ctrl+Down）</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Add</source>
+        <translation>添加</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Add a step after the selected one</source>
+        <translation>在所选步骤之后添加步骤</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>Remove</source>
+        <translation>移除</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Remove the selected step (Delete)</source>
+        <translation>移除所选步骤（Delete）</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Save</source>
+        <translation>保存</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Write the plan to its file (Ctrl+S)</source>
+        <translation>将测试计划写入其文件（Ctrl+S）</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Save as…</source>
+        <translation>另存为…</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Write the plan to another file; paths to its files follow it</source>
+        <translation>将测试计划写入另一个文件；其引用的文件路径随之调整</translation>
+    </message>
+    <message>
+        <location line="+21" />
+        <source>The plan has changes that are not saved.</source>
+        <translation>测试计划有未保存的更改。</translation>
+    </message>
+    <message>
+        <location line="+23" />
+        <source>%1. %2</source>
+        <translation>%1. %2</translation>
+    </message>
+    <message>
+        <location line="+52" />
+        <source>No step selected</source>
+        <translation>未选择步骤</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Choose a step in the list to edit its limits, or add one.</source>
+        <translation>在列表中选择一个步骤以编辑其限值，或添加一个步骤。</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>Step %1: %2</source>
+        <translation>步骤 %1：%2</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>%1 This step is off: the reports list it as skipped.</source>
+        <translation>%1 此步骤已禁用：报告中将其列为已跳过。</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>This step has no parameters.</source>
+        <translation>此步骤没有参数。</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>%1:</source>
+        <translation>%1：</translation>
+    </message>
+    <message>
+        <location line="+27" />
+        <source>%1
+From %2%4 to %3%4; default %5%4.</source>
+        <translation>%1
+范围 %2%4 至 %3%4；默认 %5%4。</translation>
+    </message>
+    <message>
+        <location line="+21" />
+        <source>"%1" needs a number from %2 to %3</source>
+        <translation>“%1”需要 %2 至 %3 之间的数值</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>step %1 (%2): %3</source>
+        <translation>步骤 %1（%2）：%3</translation>
+    </message>
+    <message>
+        <location line="+15" />
+        <source>%1
+Default: %2</source>
+        <translation>%1
+默认：%2</translation>
+    </message>
+    <message>
+        <location line="+17" />
+        <source>Browse…</source>
+        <translation>浏览…</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Choose the file; inside the plan's folder it is kept relative to it</source>
+        <translation>选择文件；位于测试计划所在文件夹内的文件以相对路径保存</translation>
+    </message>
+    <message>
+        <location line="+33" />
+        <source>Firmware images (*.hex *.ihex *.bin);;All files (*)</source>
+        <translation>固件镜像 (*.hex *.ihex *.bin);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Configuration profiles (*.json);;All files (*)</source>
+        <translation>配置方案 (*.json);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Choose a file for "%1"</source>
+        <translation>为“%1”选择文件</translation>
+    </message>
+    <message>
+        <location line="+63" />
+        <source>The plan can run.</source>
+        <translation>测试计划可以运行。</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>The plan cannot run yet:</source>
+        <translation>测试计划暂时无法运行：</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>(no name)</source>
+        <translation>（未命名）</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>not saved</source>
+        <translation>未保存</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Test plan – %1 (%2)%3</source>
+        <translation>测试计划 – %1（%2）%3</translation>
+    </message>
+    <message>
+        <location line="+26" />
+        <source>Save test plan</source>
+        <translation>保存测试计划</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Station plans (*.json)</source>
+        <translation>测试计划 (*.json)</translation>
+    </message>
+    <message>
+        <location line="+41" />
+        <source>Test plan</source>
+        <translation>测试计划</translation>
     </message>
 </context>
 <context>
@@ -10200,6 +11093,568 @@ Samples: %3</source>
     </message>
 </context>
 <context>
+    <name>imudesk::ui::StationModel</name>
+    <message>
+        <location filename="../ui/station/station_model.cpp" line="+79" />
+        <source>waiting to start</source>
+        <translation>等待开始</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>connecting…</source>
+        <translation>正在连接…</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>failed: %1</source>
+        <translation>失败：%1</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>failed</source>
+        <translation>失败</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>every step passed</source>
+        <translation>所有步骤均通过</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>not tested</source>
+        <translation>未测试</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <location line="+10" />
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
+    </message>
+    <message>
+        <location line="-8" />
+        <source>Serial %1 · %2 · firmware %3</source>
+        <translation>序列号 %1 · %2 · 固件 %3</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <location line="+1" />
+        <source>(none)</source>
+        <translation>（无）</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Firmware after the update: %1</source>
+        <translation>更新后的固件：%1</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source> (%1)</source>
+        <translation>（%1）</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>    %1 = %2</source>
+        <translation>    %1 = %2</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>    %1 = %2 (limit %3)%4</source>
+        <translation>    %1 = %2（限值 %3）%4</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source> ✗</source>
+        <translation> ✗</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Report: %1</source>
+        <translation>报告：%1</translation>
+    </message>
+</context>
+<context>
+    <name>imudesk::ui::StationReport</name>
+    <message>
+        <location filename="../ui/reports/station_report.cpp" line="+31" />
+        <source>unknown</source>
+        <translation>未知</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>ImuDesk station report: %1</source>
+        <translation>ImuDesk 生产测试报告：%1</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>Device</source>
+        <translation>设备</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Serial number</source>
+        <translation>序列号</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Firmware</source>
+        <translation>固件</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>%1, updated to %2</source>
+        <translation>%1，已更新为 %2</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Port</source>
+        <translation>串口</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Plan</source>
+        <translation>测试计划</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>(unnamed)</source>
+        <translation>（未命名）</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Attempt</source>
+        <translation>尝试次数</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Started (UTC)</source>
+        <translation>开始时间（UTC）</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Finished (UTC)</source>
+        <translation>结束时间（UTC）</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Verdict:</source>
+        <translation>结论：</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Failed at %1</source>
+        <translation>失败步骤：%1</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Steps</source>
+        <translation>步骤</translation>
+    </message>
+    <message>
+        <location line="+13" />
+        <source>Value</source>
+        <translation>项目</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Measured</source>
+        <translation>测量值</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Limit</source>
+        <translation>限值</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Result</source>
+        <translation>结果</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>within</source>
+        <translation>在限值内</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>outside</source>
+        <translation>超出限值</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>Evidence recording: %1</source>
+        <translation>证据记录：%1</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>ImuDesk station report</source>
+        <translation>ImuDesk 生产测试报告</translation>
+    </message>
+</context>
+<context>
+    <name>imudesk::ui::StationTile</name>
+    <message>
+        <location filename="../ui/station/station_view.cpp" line="+235" />
+        <source>%1 → %2</source>
+        <translation>%1 → %2</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>not identified yet</source>
+        <translation>尚未识别</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>SN %1 · %2 · %3</source>
+        <translation>序列号 %1 · %2 · %3</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>(none)</source>
+        <translation>（无）</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>(no product)</source>
+        <translation>（无型号）</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>(no firmware)</source>
+        <translation>（无固件版本）</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>%1 %</source>
+        <translation>%1 %</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>%1 % of the plan, each step weighted by how long it takes</source>
+        <translation>已完成测试计划的 %1 %（各步骤按耗时加权）</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
+    </message>
+</context>
+<context>
+    <name>imudesk::ui::StationView</name>
+    <message>
+        <location line="+313" />
+        <location line="+79" />
+        <source>Production station</source>
+        <translation>生产测试台</translation>
+    </message>
+    <message>
+        <location line="-78" />
+        <source>Plan:</source>
+        <translation>测试计划：</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Open…</source>
+        <translation>打开…</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Open a test plan (a .json file saved by the plan editor)</source>
+        <translation>打开测试计划（由计划编辑器保存的 .json 文件）</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Edit…</source>
+        <translation>编辑…</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Edit the plan's steps and limits; the next Start uses the saved plan</source>
+        <translation>编辑测试计划的步骤和限值；下次“开始”时使用已保存的计划</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>New from example</source>
+        <translation>从示例新建</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>A new plan from the example for HI14 modules, every step with its default limits, opened in the editor (without a firmware image; the profile step is off)</source>
+        <translation>基于 HI14 模块示例新建测试计划，各步骤使用默认限值，并在编辑器中打开（不含固件镜像；配置方案步骤已禁用）</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Ports:</source>
+        <translation>串口：</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The modules to test: check the port of each</source>
+        <translation>要测试的模块：勾选每个模块的串口</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Refresh</source>
+        <translation>刷新</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Look for serial ports again (after plugging in an adapter)</source>
+        <translation>重新查找串口（插入适配器后使用）</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Simulated tray…</source>
+        <translation>模拟托盘…</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Start simulated HI14 modules on pseudo-terminals, some of them with faults, to try the station without hardware</source>
+        <translation>在伪终端上启动模拟 HI14 模块（部分带有故障），无需硬件即可试用生产测试台</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Reports:</source>
+        <translation>报告：</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Each run gets a folder here: the plan, summary.csv and summary.jsonl, a PDF report per module and the evidence recordings</source>
+        <translation>每次运行都会在此处生成一个文件夹，内含：测试计划、summary.csv 和 summary.jsonl、每个模块的 PDF 报告以及证据记录</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Choose…</source>
+        <translation>选择…</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Choose the folder for the run folders</source>
+        <translation>选择存放运行文件夹的文件夹</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Start</source>
+        <translation>开始</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Run the plan on every checked port at once (Ctrl+R)</source>
+        <translation>在所有已勾选的串口上同时运行测试计划（Ctrl+R）</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Cancel</source>
+        <translation>取消</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Stop every module's test; the running steps fail as cancelled (Esc)</source>
+        <translation>停止所有模块的测试；运行中的步骤以“已取消”判为失败（Esc）</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Re-run failed</source>
+        <translation>重测失败模块</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Test the modules that failed again, into the same run folder as their next attempt (Ctrl+Shift+R)</source>
+        <translation>重新测试失败的模块，结果作为下一次尝试存入同一运行文件夹（Ctrl+Shift+R）</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Choose a plan and check the ports of the modules, then press Start (Ctrl+R). Each module gets a tile here; click a tile to open that module's workspace.</source>
+        <translation>选择测试计划并勾选模块的串口，然后按“开始”（Ctrl+R）。每个模块在此处显示为一张卡片；点击卡片可打开该模块的工作区。</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <location line="+196" />
+        <source>%1 (simulated)</source>
+        <translation>%1（模拟）</translation>
+    </message>
+    <message>
+        <location line="-140" />
+        <source>Could not save the screenshot to %1: %2</source>
+        <translation>无法将截图保存到 %1：%2</translation>
+    </message>
+    <message>
+        <location line="+33" />
+        <source>The plan %1 could not be opened: %2</source>
+        <translation>无法打开测试计划 %1：%2</translation>
+    </message>
+    <message>
+        <location line="+23" />
+        <source>No plan yet: open one, or start from the example</source>
+        <translation>尚无测试计划：请打开一个，或从示例新建</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <source>✓ %1</source>
+        <translation>✓ %1</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>✗ %1 (off)</source>
+        <translation>✗ %1（已禁用）</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>not saved</source>
+        <translation>未保存</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>%1 · %2 of %3 steps · %4</source>
+        <translation>%1 · 启用 %2/%3 个步骤 · %4</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>(no name)</source>
+        <translation>（未命名）</translation>
+    </message>
+    <message>
+        <location line="+12" />
+        <source>Open test plan</source>
+        <translation>打开测试计划</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Station plans (*.json);;All files (*)</source>
+        <translation>测试计划 (*.json);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <location line="+53" />
+        <source>Made by %1</source>
+        <translation>制造商：%1</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Adapter serial number %1</source>
+        <translation>适配器序列号：%1</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>%1 (%2)</source>
+        <translation>%1（%2）</translation>
+    </message>
+    <message>
+        <location line="+33" />
+        <source>Wait for the run to end, or cancel it, before changing the simulated tray.</source>
+        <translation>请等待运行结束或将其取消，然后再更改模拟托盘。</translation>
+    </message>
+    <message>
+        <location line="+20" />
+        <source>a good module</source>
+        <translation>正常模块</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>a noisy gyro (%1 times the noise)</source>
+        <translation>陀螺仪噪声过大（噪声为正常的 %1 倍）</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>mounted wrongly (on its side, roll %1°)</source>
+        <translation>安装方向错误（侧放，横滚 %1°）</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>old firmware</source>
+        <translation>旧版固件</translation>
+    </message>
+    <message>
+        <location line="+9" />
+        <source>The simulated modules could not start: %1</source>
+        <translation>模拟模块无法启动：%1</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>Simulated HI14 %1 of %2, firmware %3: %4</source>
+        <translation>模拟 HI14（第 %1 个，共 %2 个），固件 %3：%4</translation>
+    </message>
+    <message>
+        <location line="+39" />
+        <source>Simulated tray</source>
+        <translation>模拟托盘</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>Three with faults: a noisy gyro, a wrong mounting, firmware 1.6.6</source>
+        <translation>其中三个带故障：陀螺仪噪声过大、安装方向错误、固件 1.6.6</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Simulated HI14 modules on pseudo-terminals, each on a rotation fixture (for the magnetometer calibration). They stop when this window closes.</source>
+        <translation>运行在伪终端上的模拟 HI14 模块，每个都装在旋转工装上（用于地磁校准）。关闭此窗口时它们随之停止。</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>Modules:</source>
+        <translation>模块数量：</translation>
+    </message>
+    <message>
+        <location line="+35" />
+        <source>Folder for the station's reports</source>
+        <translation>生产测试台的报告文件夹</translation>
+    </message>
+    <message>
+        <location line="+22" />
+        <source>Open a test plan first (Open…), or start from the example.</source>
+        <translation>请先打开测试计划（“打开…”），或从示例新建。</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>The plan "%1" cannot run:
+• %2
+Edit it (Edit…) and start again.</source>
+        <translation>测试计划“%1”无法运行：
+• %2
+请编辑该计划（“编辑…”）后重新开始。</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>Check the ports of the modules to test first.</source>
+        <translation>请先勾选待测模块的串口。</translation>
+    </message>
+    <message>
+        <location line="+12" />
+        <source>The report folder cannot be used: %1</source>
+        <translation>报告文件夹无法使用：%1</translation>
+    </message>
+    <message>
+        <location line="+67" />
+        <source>A report could not be written:
+%1</source>
+        <translation>无法写入报告：
+%1</translation>
+    </message>
+    <message>
+        <location line="+63" />
+        <source>No run yet.</source>
+        <translation>尚未运行。</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>%1 passed · %2 failed · %3 running · %4 waiting</source>
+        <translation>%1 通过 · %2 失败 · %3 运行中 · %4 等待</translation>
+    </message>
+    <message>
+        <location line="+12" />
+        <source> — the workspace of %1 opens when its test has ended</source>
+        <translation> — %1 的工作区将在其测试结束后打开</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source> — the workspaces of %1 open when their tests have ended</source>
+        <translation> — %1 的工作区将在各自测试结束后打开</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Reports of this run: %1</source>
+        <translation>本次运行的报告：%1</translation>
+    </message>
+</context>
+<context>
     <name>imudesk::ui::StatusFlagsWidget</name>
     <message>
         <location filename="../ui/workspace/status_flags_widget.cpp" line="+114" />
@@ -10478,7 +11933,7 @@ Samples: %3</source>
 <context>
     <name>main</name>
     <message>
-        <location filename="../app/gui/main.cpp" line="+87" />
+        <location filename="../app/gui/main.cpp" line="+90" />
         <source>ImuDesk: a bench tool for HiPNUC IMU modules.</source>
         <translation>ImuDesk：HiPNUC IMU 模块测试工具。</translation>
     </message>
@@ -10538,22 +11993,42 @@ Samples: %3</source>
         <translation>将此面板置于前台：configuration（配置）、recording（记录）、console（控制台）、raw（原始字节）、commands（指令日志）或 can（CAN 配置）。</translation>
     </message>
     <message>
-        <location line="+102" />
+        <location line="+5" />
+        <source>Open the production station window; with PLAN (a test plan file), load that plan. With --screenshot the station window is saved.</source>
+        <translation>打开生产测试台窗口；指定 PLAN（测试计划文件）时加载该计划。使用 --screenshot 时保存的是生产测试台窗口。</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Open the production station with a simulated tray of 8 HI14 modules (one with a noisy gyro, one mounted wrongly, one with firmware 1.6.6) and run PLAN on it; without PLAN the built-in example plan, its firmware step without an image (the old module fails it) and its profile step off.</source>
+        <translation>打开生产测试台，使用装有 8 个 HI14 模块的模拟托盘（一个陀螺仪噪声过大，一个安装方向错误，一个固件为 1.6.6），并在其上运行 PLAN；未指定 PLAN 时运行内置示例计划，其固件步骤不含镜像（旧固件模块在此步骤失败），配置方案步骤禁用。</translation>
+    </message>
+    <message>
+        <location line="+11" />
+        <source>Test plan for --station or --station-demo.</source>
+        <translation>--station 或 --station-demo 使用的测试计划。</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>Give either a model (--simulate) or a plan (--station), not both.</source>
+        <translation>请指定型号（--simulate）或测试计划（--station），二者不能同时指定。</translation>
+    </message>
+    <message>
+        <location line="+92" />
         <source>Unknown panel "%1"; use configuration, recording, console, raw, commands or can.</source>
         <translation>未知面板“%1”；请使用 configuration、recording、console、raw、commands 或 can。</translation>
     </message>
     <message>
-        <location line="-96" />
+        <location line="-105" />
         <source>Model to simulate with --simulate (default HI14).</source>
         <translation>--simulate 模拟的型号（默认 HI14）。</translation>
     </message>
     <message>
-        <location line="+8" />
+        <location line="+16" />
         <source>A model name is only accepted after --simulate.</source>
         <translation>型号名称只能跟在 --simulate 之后。</translation>
     </message>
     <message>
-        <location line="+6" />
+        <location line="+7" />
         <source>--after needs a number of seconds from 0 to 3600.</source>
         <translation>--after 需要 0 到 3600 之间的秒数。</translation>
     </message>
@@ -10580,6 +12055,7 @@ Samples: %3</source>
     <message>
         <location line="+20" />
         <location line="+21" />
+        <location line="+43" />
         <source>ImuDesk</source>
         <translation>ImuDesk</translation>
     </message>

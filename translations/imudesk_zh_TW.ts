@@ -58,7 +58,7 @@
 <context>
     <name>CalibrationReport</name>
     <message>
-        <location filename="../ui/calibration/calibration_report.cpp" line="+38" />
+        <location filename="../ui/calibration/calibration_report.cpp" line="+34" />
         <source>Fit</source>
         <translation>擬合方式</translation>
     </message>
@@ -476,29 +476,9 @@
         <translation>由 ImuDesk 根據 %1 中保存的校準資料產生</translation>
     </message>
     <message>
-        <location line="+20" />
-        <source>No file name was given for the report.</source>
-        <translation>未指定報告的檔名。</translation>
-    </message>
-    <message>
-        <location line="+8" />
+        <location line="+14" />
         <source>ImuDesk calibration report</source>
         <translation>ImuDesk 校準報告</translation>
-    </message>
-    <message>
-        <location line="+6" />
-        <source>The report could not be rendered as PDF.</source>
-        <translation>無法將報告產生為 PDF。</translation>
-    </message>
-    <message>
-        <location line="+3" />
-        <source>Cannot write the report to %1: %2. Choose another folder.</source>
-        <translation>無法將報告寫入 %1：%2。請選擇其他資料夾。</translation>
-    </message>
-    <message>
-        <location line="+3" />
-        <source>Cannot write the report to %1: %2. Check the free disk space and try again.</source>
-        <translation>無法將報告寫入 %1：%2。請檢查可用磁碟空間後再試一次。</translation>
     </message>
 </context>
 <context>
@@ -2459,7 +2439,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>PtySimulator</name>
     <message>
-        <location filename="../core/sim/pty_simulator.cpp" line="+263" />
+        <location filename="../core/sim/pty_simulator.cpp" line="+290" />
         <source>Cannot open a pseudo-terminal: %1</source>
         <translation>無法開啟虛擬終端機：%1</translation>
     </message>
@@ -4370,7 +4350,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>嘗試 %2 次（每次 %3 ms）後仍未收到「%1」的回應（請檢查波特率和模組位址；持續輸出資料的 RS-485 模組可能漏收指令：請設為問答模式）</translation>
     </message>
     <message>
-        <location line="+202" />
+        <location line="+185" />
         <source>the module answered with an invalid reply: %1</source>
         <translation>模組的回應無效：%1</translation>
     </message>
@@ -4985,7 +4965,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::models::LatestValuesModel</name>
     <message>
-        <location filename="../core/models/latest_values_model.cpp" line="+163" />
+        <location filename="../core/models/latest_values_model.cpp" line="+172" />
         <source>Quantity</source>
         <translation>物理量</translation>
     </message>
@@ -5000,7 +4980,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>單位</translation>
     </message>
     <message>
-        <location line="+95" />
+        <location line="+89" />
         <source>0 invalid</source>
         <translation>0 解無效</translation>
     </message>
@@ -5045,7 +5025,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>5 RTK 浮點解</translation>
     </message>
     <message>
-        <location line="+20" />
+        <location line="+16" />
         <source>true</source>
         <translation>真北</translation>
     </message>
@@ -5830,6 +5810,679 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <location filename="../core/sim/simulated_transport.cpp" line="+73" />
         <source>The connection to %1 was lost (simulated unplug). Check the cable; everything received so far is kept.</source>
         <translation>與 %1 的連線已中斷（模擬拔除）。請檢查線纜；已收到的資料全部保留。</translation>
+    </message>
+</context>
+<context>
+    <name>imudesk::station::ModuleRunner</name>
+    <message>
+        <location filename="../core/station/module_runner.cpp" line="+82" />
+        <source>the module did not answer on %1 within %2 s: check the cable, the power and the port</source>
+        <translation>模組在 %2 s 內未在 %1 上應答：請檢查線纜、電源和串列埠</translation>
+    </message>
+    <message>
+        <location line="+39" />
+        <source>the module's settings could not be read: %1</source>
+        <translation>無法讀取模組的設定：%1</translation>
+    </message>
+    <message>
+        <location line="+18" />
+        <source>updated from %1 to %2 and verified</source>
+        <translation>已從 %1 升級到 %2 並校驗通過</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>after the update the module reports firmware %1, older than %2</source>
+        <translation>升級後模組報告的韌體為 %1，低於 %2</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <location line="+182" />
+        <location line="+1" />
+        <source>(none)</source>
+        <translation>（無）</translation>
+    </message>
+    <message>
+        <location line="-166" />
+        <source>could not connect to %1: %2</source>
+        <translation>無法連線到 %1：%2</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>the module disappeared during "%1" (%2): check its cable; the other modules go on</source>
+        <translation>模組在“%1”期間斷開（%2）：請檢查其線纜；其他模組繼續測試</translation>
+    </message>
+    <message>
+        <location line="+53" />
+        <source>not enabled in the plan</source>
+        <translation>測試計劃中未啟用</translation>
+    </message>
+    <message>
+        <location line="+32" />
+        <source>not run: "%1" failed</source>
+        <translation>未執行：“%1”失敗</translation>
+    </message>
+    <message>
+        <location line="+28" />
+        <source>cancelled by the operator</source>
+        <translation>已由操作員取消</translation>
+    </message>
+    <message>
+        <location line="+48" />
+        <source>%1, firmware %2, serial %3</source>
+        <translation>%1，韌體 %2，序列號 %3</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>(no product name)</source>
+        <translation>（無產品型號）</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>%1: not one of %2</source>
+        <translation>%1：不屬於 %2</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>%1: firmware outside %2 … %3</source>
+        <translation>%1：韌體不在 %2 … %3 範圍內</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <location line="+1" />
+        <source>any</source>
+        <translation>不限</translation>
+    </message>
+    <message>
+        <location line="+14" />
+        <source>the plan's minimum firmware "%1" is not a version</source>
+        <translation>測試計劃中的最低韌體“%1”不是有效的版本號</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>firmware %1 is at least %2: no update needed</source>
+        <translation>韌體 %1 不低於 %2：無需升級</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>firmware %1 is older than %2 and the plan names no image to update from</source>
+        <translation>韌體 %1 低於 %2，且測試計劃未指定用於升級的韌體映像</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <location line="+5" />
+        <source>%1: %2 (nothing was sent to the module)</source>
+        <translation>%1：%2（未向模組傳送任何資料）</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>updating from %1 …</source>
+        <translation>正在從 %1 升級…</translation>
+    </message>
+    <message>
+        <location line="+18" />
+        <source>the update failed: %1</source>
+        <translation>升級失敗：%1</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <source>the module did not come back after the update within %1 s</source>
+        <translation>升級後模組未在 %1 s 內恢復連線</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>the updater could not start</source>
+        <translation>無法啟動升級程式</translation>
+    </message>
+    <message>
+        <location line="+11" />
+        <source>profile %1: %2</source>
+        <translation>配置方案 %1：%2</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>%1=%2 (%3)</source>
+        <translation>%1=%2（%3）</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>the module cannot take: %1</source>
+        <translation>模組無法接受：%1</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>the module already holds every setting of the profile</source>
+        <translation>模組已具有配置方案中的全部設定</translation>
+    </message>
+    <message>
+        <location line="+13" />
+        <source>%1=%2: %3 %4</source>
+        <translation>%1=%2：%3 %4</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+11" />
+        <source>%n setting(s) applied and read back</source>
+        <translation>
+            <numerusform>已應用並回讀 %n 項設定</numerusform></translation>
+    </message>
+    <message>
+        <location line="+14" />
+        <source>SAVECONFIG answered OK</source>
+        <translation>SAVECONFIG 已應答 OK</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>SAVECONFIG failed: %1</source>
+        <translation>SAVECONFIG 失敗：%1</translation>
+    </message>
+    <message>
+        <location line="+42" />
+        <source>no data from the module for %1 s during "%2": is its output on, is it still connected?</source>
+        <translation>“%2”期間 %1 s 未收到模組資料：模組輸出是否已開啟？是否仍在連線中？</translation>
+    </message>
+    <message>
+        <location line="+28" />
+        <source>only %1 samples in %2 s: enable the module's output (HI91, at least 10 Hz)</source>
+        <translation>%2 s 內僅有 %1 個樣本：請開啟模組的輸出（HI91，至少 10 Hz）</translation>
+    </message>
+    <message>
+        <location line="+56" />
+        <source>%1 samples within every limit</source>
+        <translation>%1 個樣本，均在限值內</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>%1 samples; values outside the limits are marked</source>
+        <translation>%1 個樣本；超出限值的數值已標出</translation>
+    </message>
+    <message>
+        <location line="+23" />
+        <source>%1 s of data do not reach τ = %2 s: measure for at least %3 s</source>
+        <translation>%1 s 的資料不足以達到 τ = %2 s：請至少測量 %3 s</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>σ(%1 s) of each gyro axis</source>
+        <translation>陀螺儀各軸的 σ(%1 s)</translation>
+    </message>
+    <message>
+        <location line="+18" />
+        <source>the module's output carries no Euler angles: enable HI91 in the profile</source>
+        <translation>模組輸出中沒有尤拉角：請在配置方案中啟用 HI91</translation>
+    </message>
+    <message>
+        <location line="+14" />
+        <source>mounted as expected</source>
+        <translation>安裝方向符合預期</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>roll %1°, pitch %2°: the module is not mounted as the plan expects</source>
+        <translation>橫滾角 %1°，俯仰角 %2°：模組的安裝方向與測試計劃不符</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>the module reported no firmware version, so the calibration commands are unknown</source>
+        <translation>模組未報告韌體版本，因此無法確定校準指令</translation>
+    </message>
+    <message>
+        <location line="+16" />
+        <source>the calibration did not end within %1 s</source>
+        <translation>校準未在 %1 s 內結束</translation>
+    </message>
+    <message>
+        <location line="+14" />
+        <source>the turns did not end within %1 s: is the module on the turntable?</source>
+        <translation>轉動未在 %1 s 內結束：模組是否已放在轉檯上？</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>no run folder to record into</source>
+        <translation>沒有可供記錄的執行資料夾</translation>
+    </message>
+    <message>
+        <location line="+16" />
+        <source>the recording stopped: %1</source>
+        <translation>記錄已停止：%1</translation>
+    </message>
+</context>
+<context>
+    <name>imudesk::station::RunFolder</name>
+    <message>
+        <location filename="../core/station/run_folder.cpp" line="+34" />
+        <source>cannot write %1: %2. Free some space or choose another report folder.</source>
+        <translation>無法寫入 %1：%2。請釋放一些空間或選擇其他報告資料夾。</translation>
+    </message>
+    <message>
+        <location line="+19" />
+        <source>cannot create the report folder %1: choose a folder you may write to</source>
+        <translation>無法建立報告資料夾 %1：請選擇有寫入許可權的資料夾</translation>
+    </message>
+    <message>
+        <location line="+11" />
+        <source>%1 holds a run of another plan; choose a new folder so that results stay comparable</source>
+        <translation>%1 中已有其他測試計劃的執行結果；請選擇新資料夾，以保證結果可比</translation>
+    </message>
+</context>
+<context>
+    <name>imudesk::station::TestPlan</name>
+    <message>
+        <location filename="../core/station/test_plan.cpp" line="+77" />
+        <source>Identify</source>
+        <translation>識別</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Firmware version</source>
+        <translation>韌體版本</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Apply profile</source>
+        <translation>應用配置方案</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Static noise and bias</source>
+        <translation>靜態噪聲和零偏</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Allan deviation</source>
+        <translation>阿倫方差</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Attitude (mounting)</source>
+        <translation>姿態（安裝方向）</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Magnetometer calibration</source>
+        <translation>地磁校準</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Gyro scale factor</source>
+        <translation>陀螺儀標度因數</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Save configuration</source>
+        <translation>儲存配置</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Record evidence</source>
+        <translation>證據記錄</translation>
+    </message>
+    <message>
+        <location line="+9" />
+        <source>The module reports an expected product and a firmware version within the range.</source>
+        <translation>模組報告的產品型號符合預期，韌體版本在範圍內。</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Firmware older than the minimum is updated from the image and verified; newer passes as it is.</source>
+        <translation>低於最低版本的韌體將用韌體映像升級並校驗；不低於該版本的直接通過。</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>The profile's settings are applied and every one is read back.</source>
+        <translation>應用配置方案中的設定，並逐項回讀。</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>At rest: per-axis standard deviation and mean of the gyro, accelerometer noise and the gravity magnitude against their limits.</source>
+        <translation>靜止狀態下：將陀螺儀各軸的標準差和均值、加速度計噪聲以及重力幅值與各自的限值比較。</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>The gyro's Allan deviation at the averaging time, worst axis, below the limit.</source>
+        <translation>陀螺儀在該平均時間下的阿倫方差（取最差軸）低於限值。</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Roll and pitch at rest within the tolerance of the expected orientation: the module is mounted as intended.</source>
+        <translation>靜止時橫滾角和俯仰角與預期姿態的偏差在容差內：模組按預期方向安裝。</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>The module's own magnetometer calibration (MCAL) runs to the end and succeeds; the module must be turned through every attitude meanwhile (a rotation fixture).</source>
+        <translation>模組自身的地磁校準（MCAL）執行完畢併成功；期間必須將模組轉過所有姿態（使用旋轉工裝）。</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>On a turntable: two turns each way; the gyro's scale-factor error below the limit.</source>
+        <translation>在轉檯上：正反方向各轉兩圈；陀螺儀標度因數誤差低於限值。</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>SAVECONFIG: the module keeps its settings after a restart.</source>
+        <translation>SAVECONFIG：模組重啟後保留其設定。</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The module's output is recorded into the run folder as evidence.</source>
+        <translation>將模組的輸出記錄到執行資料夾中作為證據。</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <source>Products</source>
+        <translation>產品型號</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Product names the module may report, separated by commas (HI14 matches HI14R3)</source>
+        <translation>模組可報告的產品型號，以逗號分隔（HI14 可匹配 HI14R3）</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Lowest firmware</source>
+        <translation>最低韌體版本</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Oldest firmware accepted, e.g. 1.6.6; empty: any</source>
+        <translation>可接受的最低韌體版本，例如 1.6.6；留空：不限</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Highest firmware</source>
+        <translation>最高韌體版本</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Newest firmware accepted; empty: any</source>
+        <translation>可接受的最高韌體版本；留空：不限</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>At least</source>
+        <translation>最低版本</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Modules with older firmware are updated</source>
+        <translation>韌體低於此版本的模組將被升級</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Image</source>
+        <translation>韌體映像</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Intel HEX or binary image, relative to the plan's folder; without one an older module fails this step</source>
+        <translation>Intel HEX 或二進位制映像，路徑相對於測試計劃所在資料夾；未指定時，韌體較舊的模組在此步驟失敗</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>Profile</source>
+        <translation>配置方案</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Configuration profile (.json, saved from the profile dialog), relative to the plan's folder</source>
+        <translation>配置方案（.json，從配置方案對話方塊儲存），路徑相對於測試計劃所在資料夾</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <location line="+19" />
+        <location line="+21" />
+        <location line="+18" />
+        <source>Duration</source>
+        <translation>時長</translation>
+    </message>
+    <message>
+        <location line="-57" />
+        <source>How long the module is measured at rest</source>
+        <translation>模組靜止測量的時長</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Gyro noise max</source>
+        <translation>陀螺儀噪聲上限</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Largest standard deviation of each gyro axis</source>
+        <translation>陀螺儀各軸標準差的最大允許值</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Gyro bias max</source>
+        <translation>陀螺儀零偏上限</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Largest magnitude of each gyro axis's mean at rest</source>
+        <translation>靜止時陀螺儀各軸均值絕對值的最大允許值</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Accelerometer noise max</source>
+        <translation>加速度計噪聲上限</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Largest standard deviation of each accelerometer axis</source>
+        <translation>加速度計各軸標準差的最大允許值</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Gravity tolerance</source>
+        <translation>重力容差</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The mean acceleration's magnitude may differ from 1 G by this much</source>
+        <translation>平均加速度的幅值與 1 G 之差允許的最大值</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>How long the module is measured at rest (at least 10 averaging times)</source>
+        <translation>模組靜止測量的時長（至少為平均時間的 10 倍）</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Averaging time</source>
+        <translation>平均時間</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>τ at which the Allan deviation is read</source>
+        <translation>讀取阿倫方差所用的 τ</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>σ(τ) max</source>
+        <translation>σ(τ) 上限</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Largest Allan deviation of any gyro axis at τ</source>
+        <translation>陀螺儀任一軸在 τ 處阿倫方差的最大允許值</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Expected roll</source>
+        <translation>預期橫滾角</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Roll of the module in its fixture (Z up: 0)</source>
+        <translation>模組在工裝中的橫滾角（Z 軸朝上：0）</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Expected pitch</source>
+        <translation>預期俯仰角</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Pitch of the module in its fixture (Z up: 0)</source>
+        <translation>模組在工裝中的俯仰角（Z 軸朝上：0）</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Tolerance</source>
+        <translation>容差</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Largest difference of roll and of pitch</source>
+        <translation>橫滾角和俯仰角各自允許的最大偏差</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>The angles are averaged over this time</source>
+        <translation>在此時長內對角度取平均</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <location line="+8" />
+        <source>Time limit</source>
+        <translation>時間限值</translation>
+    </message>
+    <message>
+        <location line="-7" />
+        <source>The calibration fails when it has not ended by then</source>
+        <translation>到時仍未結束則校準失敗</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Scale error max</source>
+        <translation>標度因數誤差上限</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Largest scale-factor error of the Z gyro</source>
+        <translation>Z 軸陀螺儀標度因數誤差的最大允許值</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>The run fails when the turns have not ended by then</source>
+        <translation>到時轉動仍未結束則本次測試失敗</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>How long the module's output is recorded</source>
+        <translation>記錄模組輸出的時長</translation>
+    </message>
+    <message>
+        <location line="+59" />
+        <source>%1 has no parameter "%2"</source>
+        <translation>%1 沒有參數“%2”</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>"%1" must be a text</source>
+        <translation>“%1”必須是文字</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>"%1" must be a firmware version such as 1.7.1, not "%2"</source>
+        <translation>“%1”必須是韌體版本號（如 1.7.1），而不是“%2”</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>"%1" must be a number</source>
+        <translation>“%1”必須是數字</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>"%1" = %2 is outside %3 … %4 %5</source>
+        <translation>“%1” = %2 超出 %3 … %4 %5</translation>
+    </message>
+    <message>
+        <location line="+13" />
+        <source>the plan is larger than %1 KiB</source>
+        <translation>測試計劃大於 %1 KiB</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>not JSON: %1 at byte %2</source>
+        <translation>不是 JSON：第 %2 位元組處：%1</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>not a station plan ("format" is not "%1")</source>
+        <translation>不是生產測試臺的測試計劃（"format" 不是 "%1"）</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>plan version %1 is not supported (this ImuDesk reads version %2)</source>
+        <translation>不支援測試計劃版本 %1（本 ImuDesk 讀取版本 %2）</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <location line="+86" />
+        <source>the plan has no steps</source>
+        <translation>測試計劃中沒有步驟</translation>
+    </message>
+    <message>
+        <location line="-80" />
+        <source>step %1: unknown step "%2"</source>
+        <translation>步驟 %1：未知步驟“%2”</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>step %1 (%2): "enabled" must be true or false</source>
+        <translation>步驟 %1（%2）："enabled" 必須為 true 或 false</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <location line="+72" />
+        <source>step %1 (%2): %3</source>
+        <translation>步驟 %1（%2）：%3</translation>
+    </message>
+    <message>
+        <location line="-38" />
+        <source>cannot open %1: %2</source>
+        <translation>無法開啟 %1：%2</translation>
+    </message>
+    <message>
+        <location line="+15" />
+        <source>cannot write %1: %2. Choose another folder or free some space.</source>
+        <translation>無法寫入 %1：%2。請選擇其他資料夾或釋放一些空間。</translation>
+    </message>
+    <message>
+        <location line="+30" />
+        <source>step %1 (%2): no %3 file given</source>
+        <translation>步驟 %1（%2）：未指定 %3 檔案</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>step %1 (%2): %3 not found</source>
+        <translation>步驟 %1（%2）：找不到 %3</translation>
+    </message>
+</context>
+<context>
+    <name>imudesk::station::Verdict</name>
+    <message>
+        <location filename="../core/station/station_result.cpp" line="+23" />
+        <source>waiting</source>
+        <translation>等待中</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>running</source>
+        <translation>執行中</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>pass</source>
+        <translation>通過</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>fail</source>
+        <translation>失敗</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>skipped</source>
+        <translation>已跳過</translation>
     </message>
 </context>
 <context>
@@ -7909,7 +8562,7 @@ Link load = bytes per second × 10 bits / baud rate.</source>
         <translation>3D 姿態</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/device_workspace_layout.cpp" line="+153" />
+        <location filename="../ui/workspace/device_workspace_layout.cpp" line="+165" />
         <source>&amp;Monitor</source>
         <translation>監看(&amp;M)</translation>
     </message>
@@ -7929,7 +8582,7 @@ Link load = bytes per second × 10 bits / baud rate.</source>
         <translation>分析(&amp;N)</translation>
     </message>
     <message>
-        <location line="+154" />
+        <location line="+164" />
         <source>%1 was floating off the screen</source>
         <translation>%1 浮動在螢幕之外</translation>
     </message>
@@ -9191,7 +9844,7 @@ Samples: %3</source>
 <context>
     <name>imudesk::ui::MainWindow</name>
     <message>
-        <location filename="../ui/workspace/main_window.cpp" line="+352" />
+        <location filename="../ui/workspace/main_window.cpp" line="+353" />
         <source>Choose a port first.</source>
         <translation>請先選擇串列埠。</translation>
     </message>
@@ -9201,7 +9854,7 @@ Samples: %3</source>
         <translation>無法將螢幕擷取畫面儲存到 %1：%2</translation>
     </message>
     <message>
-        <location line="+19" />
+        <location line="+46" />
         <source>ImuDesk</source>
         <translation>ImuDesk</translation>
     </message>
@@ -9236,7 +9889,7 @@ Samples: %3</source>
         <translation>PNG 影像 (*.png)</translation>
     </message>
     <message>
-        <location line="+83" />
+        <location line="+90" />
         <source>&amp;File</source>
         <translation>檔案(&amp;F)</translation>
     </message>
@@ -9352,6 +10005,16 @@ Samples: %3</source>
     </message>
     <message>
         <location line="+1" />
+        <source>&amp;Production station…</source>
+        <translation>生產測試臺(&amp;P)…</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Test a tray of modules at once against a test plan: a verdict and a report per serial number</source>
+        <translation>按測試計劃同時測試一托盤模組：每個序列號一個判定結果和一份報告</translation>
+    </message>
+    <message>
+        <location line="+2" />
         <source>&amp;Reset layout</source>
         <translation>重設版面配置(&amp;R)</translation>
     </message>
@@ -9612,6 +10275,236 @@ Samples: %3</source>
         <location line="+18" />
         <source>Command: %1</source>
         <translation>指令：%1</translation>
+    </message>
+</context>
+<context>
+    <name>imudesk::ui::PdfOutput</name>
+    <message>
+        <location filename="../ui/reports/pdf_output.cpp" line="+21" />
+        <source>No file name was given for the report.</source>
+        <translation>未指定報告的檔名。</translation>
+    </message>
+    <message>
+        <location line="+14" />
+        <source>The report could not be rendered as PDF.</source>
+        <translation>無法將報告生成為 PDF。</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Cannot write the report to %1: %2. Choose another folder.</source>
+        <translation>無法將報告寫入 %1：%2。請選擇其他資料夾。</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Cannot write the report to %1: %2. Check the free disk space and try again.</source>
+        <translation>無法將報告寫入 %1：%2。請檢查磁碟剩餘空間後重試。</translation>
+    </message>
+</context>
+<context>
+    <name>imudesk::ui::PlanEditorDialog</name>
+    <message>
+        <location filename="../ui/station/plan_editor_dialog.cpp" line="+178" />
+        <source>Plan &amp;name:</source>
+        <translation>計劃名稱(&amp;N)：</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Shown in the station window, the reports and the run folder's name</source>
+        <translation>顯示在生產測試臺視窗、報告和執行資料夾名稱中</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>&amp;Steps, in the order they run (unchecked: reported as skipped):</source>
+        <translation>按執行順序排列的步驟（未勾選的記為已跳過）(&amp;S)：</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Up</source>
+        <translation>上移</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Move the step up (Ctrl+Up)</source>
+        <translation>上移該步驟（Ctrl+Up）</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Down</source>
+        <translation>下移</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Move the step down (Ctrl+Down)</source>
+        <translation>將步驟下移（Ctrl+Down）</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Add</source>
+        <translation>新增</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Add a step after the selected one</source>
+        <translation>在所選步驟之後新增步驟</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>Remove</source>
+        <translation>移除</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Remove the selected step (Delete)</source>
+        <translation>移除所選步驟（Delete）</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Save</source>
+        <translation>儲存</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Write the plan to its file (Ctrl+S)</source>
+        <translation>將測試計劃寫入其檔案（Ctrl+S）</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Save as…</source>
+        <translation>另存為…</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Write the plan to another file; paths to its files follow it</source>
+        <translation>將測試計劃寫入另一個檔案；其引用的檔案路徑隨之調整</translation>
+    </message>
+    <message>
+        <location line="+21" />
+        <source>The plan has changes that are not saved.</source>
+        <translation>測試計劃有未儲存的更改。</translation>
+    </message>
+    <message>
+        <location line="+23" />
+        <source>%1. %2</source>
+        <translation>%1. %2</translation>
+    </message>
+    <message>
+        <location line="+52" />
+        <source>No step selected</source>
+        <translation>未選擇步驟</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Choose a step in the list to edit its limits, or add one.</source>
+        <translation>在列表中選擇一個步驟以編輯其限值，或新增一個步驟。</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>Step %1: %2</source>
+        <translation>步驟 %1：%2</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>%1 This step is off: the reports list it as skipped.</source>
+        <translation>%1 此步驟已禁用：報告中將其列為已跳過。</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>This step has no parameters.</source>
+        <translation>此步驟沒有參數。</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>%1:</source>
+        <translation>%1：</translation>
+    </message>
+    <message>
+        <location line="+27" />
+        <source>%1
+From %2%4 to %3%4; default %5%4.</source>
+        <translation>%1
+範圍 %2%4 至 %3%4；預設 %5%4。</translation>
+    </message>
+    <message>
+        <location line="+21" />
+        <source>"%1" needs a number from %2 to %3</source>
+        <translation>“%1”需要 %2 至 %3 之間的數值</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>step %1 (%2): %3</source>
+        <translation>步驟 %1（%2）：%3</translation>
+    </message>
+    <message>
+        <location line="+15" />
+        <source>%1
+Default: %2</source>
+        <translation>%1
+預設：%2</translation>
+    </message>
+    <message>
+        <location line="+17" />
+        <source>Browse…</source>
+        <translation>瀏覽…</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Choose the file; inside the plan's folder it is kept relative to it</source>
+        <translation>選擇檔案；位於測試計劃所在資料夾內的檔案以相對路徑儲存</translation>
+    </message>
+    <message>
+        <location line="+33" />
+        <source>Firmware images (*.hex *.ihex *.bin);;All files (*)</source>
+        <translation>韌體映像 (*.hex *.ihex *.bin);;所有檔案 (*)</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Configuration profiles (*.json);;All files (*)</source>
+        <translation>配置方案 (*.json);;所有檔案 (*)</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Choose a file for "%1"</source>
+        <translation>為“%1”選擇檔案</translation>
+    </message>
+    <message>
+        <location line="+63" />
+        <source>The plan can run.</source>
+        <translation>測試計劃可以執行。</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>The plan cannot run yet:</source>
+        <translation>測試計劃暫時無法執行：</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>(no name)</source>
+        <translation>（未命名）</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>not saved</source>
+        <translation>未儲存</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Test plan – %1 (%2)%3</source>
+        <translation>測試計劃 – %1（%2）%3</translation>
+    </message>
+    <message>
+        <location line="+26" />
+        <source>Save test plan</source>
+        <translation>儲存測試計劃</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Station plans (*.json)</source>
+        <translation>測試計劃 (*.json)</translation>
+    </message>
+    <message>
+        <location line="+41" />
+        <source>Test plan</source>
+        <translation>測試計劃</translation>
     </message>
 </context>
 <context>
@@ -10200,6 +11093,568 @@ Samples: %3</source>
     </message>
 </context>
 <context>
+    <name>imudesk::ui::StationModel</name>
+    <message>
+        <location filename="../ui/station/station_model.cpp" line="+79" />
+        <source>waiting to start</source>
+        <translation>等待開始</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>connecting…</source>
+        <translation>正在連線…</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>failed: %1</source>
+        <translation>失敗：%1</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>failed</source>
+        <translation>失敗</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>every step passed</source>
+        <translation>所有步驟均通過</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>not tested</source>
+        <translation>未測試</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <location line="+10" />
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
+    </message>
+    <message>
+        <location line="-8" />
+        <source>Serial %1 · %2 · firmware %3</source>
+        <translation>序列號 %1 · %2 · 韌體 %3</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <location line="+1" />
+        <source>(none)</source>
+        <translation>（無）</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Firmware after the update: %1</source>
+        <translation>更新後的韌體：%1</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source> (%1)</source>
+        <translation>（%1）</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>    %1 = %2</source>
+        <translation>    %1 = %2</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>    %1 = %2 (limit %3)%4</source>
+        <translation>    %1 = %2（限值 %3）%4</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source> ✗</source>
+        <translation> ✗</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Report: %1</source>
+        <translation>報告：%1</translation>
+    </message>
+</context>
+<context>
+    <name>imudesk::ui::StationReport</name>
+    <message>
+        <location filename="../ui/reports/station_report.cpp" line="+31" />
+        <source>unknown</source>
+        <translation>未知</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>ImuDesk station report: %1</source>
+        <translation>ImuDesk 生產測試報告：%1</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>Device</source>
+        <translation>裝置</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Serial number</source>
+        <translation>序列號</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Firmware</source>
+        <translation>韌體</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>%1, updated to %2</source>
+        <translation>%1，已更新為 %2</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Port</source>
+        <translation>串列埠</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Plan</source>
+        <translation>測試計劃</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>(unnamed)</source>
+        <translation>（未命名）</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Attempt</source>
+        <translation>嘗試次數</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Started (UTC)</source>
+        <translation>開始時間（UTC）</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Finished (UTC)</source>
+        <translation>結束時間（UTC）</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Verdict:</source>
+        <translation>結論：</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Failed at %1</source>
+        <translation>失敗步驟：%1</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Steps</source>
+        <translation>步驟</translation>
+    </message>
+    <message>
+        <location line="+13" />
+        <source>Value</source>
+        <translation>專案</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Measured</source>
+        <translation>測量值</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Limit</source>
+        <translation>限值</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Result</source>
+        <translation>結果</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>within</source>
+        <translation>在限值內</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>outside</source>
+        <translation>超出限值</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>Evidence recording: %1</source>
+        <translation>證據記錄：%1</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>ImuDesk station report</source>
+        <translation>ImuDesk 生產測試報告</translation>
+    </message>
+</context>
+<context>
+    <name>imudesk::ui::StationTile</name>
+    <message>
+        <location filename="../ui/station/station_view.cpp" line="+235" />
+        <source>%1 → %2</source>
+        <translation>%1 → %2</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>not identified yet</source>
+        <translation>尚未識別</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>SN %1 · %2 · %3</source>
+        <translation>序列號 %1 · %2 · %3</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>(none)</source>
+        <translation>（無）</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>(no product)</source>
+        <translation>（無型號）</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>(no firmware)</source>
+        <translation>（無韌體版本）</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>%1 %</source>
+        <translation>%1 %</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>%1 % of the plan, each step weighted by how long it takes</source>
+        <translation>已完成測試計劃的 %1 %（各步驟按耗時加權）</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
+    </message>
+</context>
+<context>
+    <name>imudesk::ui::StationView</name>
+    <message>
+        <location line="+313" />
+        <location line="+79" />
+        <source>Production station</source>
+        <translation>生產測試臺</translation>
+    </message>
+    <message>
+        <location line="-78" />
+        <source>Plan:</source>
+        <translation>測試計劃：</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Open…</source>
+        <translation>開啟…</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Open a test plan (a .json file saved by the plan editor)</source>
+        <translation>開啟測試計劃（由計劃編輯器儲存的 .json 檔案）</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Edit…</source>
+        <translation>編輯…</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Edit the plan's steps and limits; the next Start uses the saved plan</source>
+        <translation>編輯測試計劃的步驟和限值；下次“開始”時使用已儲存的計劃</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>New from example</source>
+        <translation>從示例新建</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>A new plan from the example for HI14 modules, every step with its default limits, opened in the editor (without a firmware image; the profile step is off)</source>
+        <translation>基於 HI14 模組示例新建測試計劃，各步驟使用預設限值，並在編輯器中開啟（不含韌體映像；配置方案步驟已禁用）</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Ports:</source>
+        <translation>串列埠：</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The modules to test: check the port of each</source>
+        <translation>要測試的模組：勾選每個模組的串列埠</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Refresh</source>
+        <translation>重新整理</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Look for serial ports again (after plugging in an adapter)</source>
+        <translation>重新查詢串列埠（插入介面卡後使用）</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Simulated tray…</source>
+        <translation>模擬托盤…</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Start simulated HI14 modules on pseudo-terminals, some of them with faults, to try the station without hardware</source>
+        <translation>在偽終端上啟動模擬 HI14 模組（部分帶有故障），無需硬體即可試用生產測試臺</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Reports:</source>
+        <translation>報告：</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Each run gets a folder here: the plan, summary.csv and summary.jsonl, a PDF report per module and the evidence recordings</source>
+        <translation>每次執行都會在此處生成一個資料夾，內含：測試計劃、summary.csv 和 summary.jsonl、每個模組的 PDF 報告以及證據記錄</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Choose…</source>
+        <translation>選擇…</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Choose the folder for the run folders</source>
+        <translation>選擇存放執行資料夾的資料夾</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Start</source>
+        <translation>開始</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Run the plan on every checked port at once (Ctrl+R)</source>
+        <translation>在所有已勾選的串列埠上同時執行測試計劃（Ctrl+R）</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Cancel</source>
+        <translation>取消</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Stop every module's test; the running steps fail as cancelled (Esc)</source>
+        <translation>停止所有模組的測試；執行中的步驟以“已取消”判為失敗（Esc）</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Re-run failed</source>
+        <translation>重測失敗模組</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Test the modules that failed again, into the same run folder as their next attempt (Ctrl+Shift+R)</source>
+        <translation>重新測試失敗的模組，結果作為下一次嘗試存入同一執行資料夾（Ctrl+Shift+R）</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Choose a plan and check the ports of the modules, then press Start (Ctrl+R). Each module gets a tile here; click a tile to open that module's workspace.</source>
+        <translation>選擇測試計劃並勾選模組的串列埠，然後按“開始”（Ctrl+R）。每個模組在此處顯示為一張卡片；點選卡片可開啟該模組的工作區。</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <location line="+196" />
+        <source>%1 (simulated)</source>
+        <translation>%1（模擬）</translation>
+    </message>
+    <message>
+        <location line="-140" />
+        <source>Could not save the screenshot to %1: %2</source>
+        <translation>無法將截圖儲存到 %1：%2</translation>
+    </message>
+    <message>
+        <location line="+33" />
+        <source>The plan %1 could not be opened: %2</source>
+        <translation>無法開啟測試計劃 %1：%2</translation>
+    </message>
+    <message>
+        <location line="+23" />
+        <source>No plan yet: open one, or start from the example</source>
+        <translation>尚無測試計劃：請開啟一個，或從示例新建</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <source>✓ %1</source>
+        <translation>✓ %1</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>✗ %1 (off)</source>
+        <translation>✗ %1（已禁用）</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>not saved</source>
+        <translation>未儲存</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>%1 · %2 of %3 steps · %4</source>
+        <translation>%1 · 啟用 %2/%3 個步驟 · %4</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>(no name)</source>
+        <translation>（未命名）</translation>
+    </message>
+    <message>
+        <location line="+12" />
+        <source>Open test plan</source>
+        <translation>開啟測試計劃</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Station plans (*.json);;All files (*)</source>
+        <translation>測試計劃 (*.json);;所有檔案 (*)</translation>
+    </message>
+    <message>
+        <location line="+53" />
+        <source>Made by %1</source>
+        <translation>製造商：%1</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Adapter serial number %1</source>
+        <translation>介面卡序列號：%1</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>%1 (%2)</source>
+        <translation>%1（%2）</translation>
+    </message>
+    <message>
+        <location line="+33" />
+        <source>Wait for the run to end, or cancel it, before changing the simulated tray.</source>
+        <translation>請等待執行結束或將其取消，然後再更改模擬托盤。</translation>
+    </message>
+    <message>
+        <location line="+20" />
+        <source>a good module</source>
+        <translation>正常模組</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>a noisy gyro (%1 times the noise)</source>
+        <translation>陀螺儀噪聲過大（噪聲為正常的 %1 倍）</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>mounted wrongly (on its side, roll %1°)</source>
+        <translation>安裝方向錯誤（側放，橫滾 %1°）</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>old firmware</source>
+        <translation>舊版韌體</translation>
+    </message>
+    <message>
+        <location line="+9" />
+        <source>The simulated modules could not start: %1</source>
+        <translation>模擬模組無法啟動：%1</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>Simulated HI14 %1 of %2, firmware %3: %4</source>
+        <translation>模擬 HI14（第 %1 個，共 %2 個），韌體 %3：%4</translation>
+    </message>
+    <message>
+        <location line="+39" />
+        <source>Simulated tray</source>
+        <translation>模擬托盤</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>Three with faults: a noisy gyro, a wrong mounting, firmware 1.6.6</source>
+        <translation>其中三個帶故障：陀螺儀噪聲過大、安裝方向錯誤、韌體 1.6.6</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Simulated HI14 modules on pseudo-terminals, each on a rotation fixture (for the magnetometer calibration). They stop when this window closes.</source>
+        <translation>執行在偽終端上的模擬 HI14 模組，每個都裝在旋轉工裝上（用於地磁校準）。關閉此視窗時它們隨之停止。</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>Modules:</source>
+        <translation>模組數量：</translation>
+    </message>
+    <message>
+        <location line="+35" />
+        <source>Folder for the station's reports</source>
+        <translation>生產測試臺的報告資料夾</translation>
+    </message>
+    <message>
+        <location line="+22" />
+        <source>Open a test plan first (Open…), or start from the example.</source>
+        <translation>請先開啟測試計劃（“開啟…”），或從示例新建。</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>The plan "%1" cannot run:
+• %2
+Edit it (Edit…) and start again.</source>
+        <translation>測試計劃“%1”無法執行：
+• %2
+請編輯該計劃（“編輯…”）後重新開始。</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>Check the ports of the modules to test first.</source>
+        <translation>請先勾選待測模組的串列埠。</translation>
+    </message>
+    <message>
+        <location line="+12" />
+        <source>The report folder cannot be used: %1</source>
+        <translation>報告資料夾無法使用：%1</translation>
+    </message>
+    <message>
+        <location line="+67" />
+        <source>A report could not be written:
+%1</source>
+        <translation>無法寫入報告：
+%1</translation>
+    </message>
+    <message>
+        <location line="+63" />
+        <source>No run yet.</source>
+        <translation>尚未執行。</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>%1 passed · %2 failed · %3 running · %4 waiting</source>
+        <translation>%1 通過 · %2 失敗 · %3 執行中 · %4 等待</translation>
+    </message>
+    <message>
+        <location line="+12" />
+        <source> — the workspace of %1 opens when its test has ended</source>
+        <translation> — %1 的工作區將在其測試結束後開啟</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source> — the workspaces of %1 open when their tests have ended</source>
+        <translation> — %1 的工作區將在各自測試結束後開啟</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Reports of this run: %1</source>
+        <translation>本次執行的報告：%1</translation>
+    </message>
+</context>
+<context>
     <name>imudesk::ui::StatusFlagsWidget</name>
     <message>
         <location filename="../ui/workspace/status_flags_widget.cpp" line="+114" />
@@ -10478,7 +11933,7 @@ Samples: %3</source>
 <context>
     <name>main</name>
     <message>
-        <location filename="../app/gui/main.cpp" line="+87" />
+        <location filename="../app/gui/main.cpp" line="+90" />
         <source>ImuDesk: a bench tool for HiPNUC IMU modules.</source>
         <translation>ImuDesk：HiPNUC IMU 模組測試工具。</translation>
     </message>
@@ -10538,22 +11993,42 @@ Samples: %3</source>
         <translation>將此面板移到最前面：configuration（配置）、recording（記錄）、console（主控台）、raw（原始位元組）、commands（指令日誌）或 can（CAN 配置）。</translation>
     </message>
     <message>
-        <location line="+102" />
+        <location line="+5" />
+        <source>Open the production station window; with PLAN (a test plan file), load that plan. With --screenshot the station window is saved.</source>
+        <translation>開啟生產測試臺視窗；指定 PLAN（測試計劃檔案）時載入該計劃。使用 --screenshot 時儲存的是生產測試臺視窗。</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Open the production station with a simulated tray of 8 HI14 modules (one with a noisy gyro, one mounted wrongly, one with firmware 1.6.6) and run PLAN on it; without PLAN the built-in example plan, its firmware step without an image (the old module fails it) and its profile step off.</source>
+        <translation>開啟生產測試臺，使用裝有 8 個 HI14 模組的模擬托盤（一個陀螺儀噪聲過大，一個安裝方向錯誤，一個韌體為 1.6.6），並在其上執行 PLAN；未指定 PLAN 時執行內建示例計劃，其韌體步驟不含映像（舊韌體模組在此步驟失敗），配置方案步驟禁用。</translation>
+    </message>
+    <message>
+        <location line="+11" />
+        <source>Test plan for --station or --station-demo.</source>
+        <translation>--station 或 --station-demo 使用的測試計劃。</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>Give either a model (--simulate) or a plan (--station), not both.</source>
+        <translation>請指定型號（--simulate）或測試計劃（--station），二者不能同時指定。</translation>
+    </message>
+    <message>
+        <location line="+92" />
         <source>Unknown panel "%1"; use configuration, recording, console, raw, commands or can.</source>
         <translation>未知的面板「%1」；請使用 configuration、recording、console、raw、commands 或 can。</translation>
     </message>
     <message>
-        <location line="-96" />
+        <location line="-105" />
         <source>Model to simulate with --simulate (default HI14).</source>
         <translation>--simulate 模擬的型號（預設 HI14）。</translation>
     </message>
     <message>
-        <location line="+8" />
+        <location line="+16" />
         <source>A model name is only accepted after --simulate.</source>
         <translation>型號名稱只能接在 --simulate 之後。</translation>
     </message>
     <message>
-        <location line="+6" />
+        <location line="+7" />
         <source>--after needs a number of seconds from 0 to 3600.</source>
         <translation>--after 需要 0 到 3600 之間的秒數。</translation>
     </message>
@@ -10580,6 +12055,7 @@ Samples: %3</source>
     <message>
         <location line="+20" />
         <location line="+21" />
+        <location line="+43" />
         <source>ImuDesk</source>
         <translation>ImuDesk</translation>
     </message>

@@ -7,6 +7,7 @@
 #include "model/device_identity.h"
 #include "sim/hipnuc_simulator.h"
 #include "sim/motion_model.h"
+#include "station/station_view.h"
 #include "workspace/preferences.h"
 #include "workspace/window_settings.h"
 
@@ -16,7 +17,9 @@
 #include <QCommandLineOption>
 #include <QCommandLineParser>
 #include <QMessageBox>
+#include <QPointer>
 #include <QSettings>
+#include <QTemporaryDir>
 #include <QTimer>
 #include <QStringList>
 
@@ -133,18 +136,38 @@ int main(int argc, char *argv[])
         QCoreApplication::translate("main", "Bring this panel to the front: configuration, recording, console, raw, "
                                             "commands or can (the CAN configuration)."),
         QStringLiteral("panel"));
+    const QCommandLineOption stationOption(
+        QStringLiteral("station"),
+        QCoreApplication::translate("main", "Open the production station window; with PLAN (a test plan file), "
+                                            "load that plan. With --screenshot the station window is saved."));
+    const QCommandLineOption stationDemoOption(
+        QStringLiteral("station-demo"),
+        QCoreApplication::translate("main", "Open the production station with a simulated tray of 8 HI14 modules "
+                                            "(one with a noisy gyro, one mounted wrongly, one with firmware 1.6.6) "
+                                            "and run PLAN on it; without PLAN the built-in example plan, its "
+                                            "firmware step without an image (the old module fails it) and its "
+                                            "profile step off."));
     parser.addOptions({langOption, simulateOption, firmwareOption, motionOption, portOption, baudOption, demoOption,
-                       screenshotOption, afterOption, linkOption, dockOption});
+                       screenshotOption, afterOption, linkOption, dockOption, stationOption, stationDemoOption});
     parser.addPositionalArgument(QStringLiteral("MODEL"),
                                  QCoreApplication::translate("main", "Model to simulate with --simulate (default HI14)."),
                                  QStringLiteral("[MODEL]"));
+    parser.addPositionalArgument(QStringLiteral("PLAN"),
+                                 QCoreApplication::translate("main", "Test plan for --station or --station-demo."),
+                                 QStringLiteral("[PLAN]"));
     parser.process(args);
 
     const QStringList positional = parser.positionalArguments();
     const bool demo = parser.isSet(demoOption);
     const bool simulate = parser.isSet(simulateOption) || demo;
-    if (positional.size() > 1 || (!positional.isEmpty() && !simulate))
+    const bool stationDemo = parser.isSet(stationDemoOption);
+    const bool station = parser.isSet(stationOption) || stationDemo;
+    if (!positional.isEmpty() && simulate && station)
+        return usageError(QCoreApplication::translate("main", "Give either a model (--simulate) or a plan (--station), "
+                                                              "not both."));
+    if (positional.size() > 1 || (!positional.isEmpty() && !simulate && !station))
         return usageError(QCoreApplication::translate("main", "A model name is only accepted after --simulate."));
+    const QString stationPlan = station ? positional.value(0) : QString();
     double screenshotAfter = 3;
     if (parser.isSet(afterOption)) {
         bool ok = false;
@@ -170,7 +193,7 @@ int main(int argc, char *argv[])
     }
 
     imudesk::sim::SimOptions simOptions;
-    simOptions.model = positional.isEmpty() ? std::string("HI14") : positional.first().toUpper().toStdString();
+    simOptions.model = positional.isEmpty() || !simulate ? std::string("HI14") : positional.first().toUpper().toStdString();
     simOptions.firmware = parser.value(firmwareOption).toStdString();
     if (!imudesk::model::FirmwareVersion::parse(simOptions.firmware))
         return usageError(QCoreApplication::translate("main", "Invalid firmware version \"%1\"; use e.g. 1.7.1 or 1.6.6.")
@@ -244,12 +267,39 @@ int main(int argc, char *argv[])
         }
     }
 
+    // The production station: its window, the plan given, and for the demo a simulated tray
+    // that starts testing at once. A screenshot run writes its reports into a folder of its own
+    // and leaves the remembered plan and report folder alone.
+    QPointer<imudesk::ui::StationView> stationView;
+    QTemporaryDir automationReports;
+    if (station) {
+        stationView = window.openStation();
+        if (parser.isSet(screenshotOption)) {
+            stationView->setRemembering(false);
+            stationView->setReportFolder(automationReports.path());
+        }
+        if (!stationPlan.isEmpty())
+            stationView->openPlan(stationPlan); // a plan that does not load is reported in the window
+        else if (stationDemo)
+            stationView->setPlan(imudesk::ui::StationView::demoPlan(), QString());
+        if (stationDemo) {
+            QString error;
+            if (!stationView->startSimulatedTray(imudesk::ui::StationView::kDemoTraySize, true, &error))
+                QMessageBox::warning(stationView, QCoreApplication::translate("main", "ImuDesk"), error);
+            else if (stationView->hasPlan())
+                stationView->start();
+        }
+    }
+
     int screenshotRc = 0;
     if (parser.isSet(screenshotOption)) {
         const QString path = parser.value(screenshotOption);
-        QTimer::singleShot(int(screenshotAfter * 1000), &window, [&window, &screenshotRc, path] {
+        QTimer::singleShot(int(screenshotAfter * 1000), &window, [&window, &screenshotRc, &stationView, station, path] {
             QString error;
-            if (!window.saveScreenshot(path, &error)) {
+            // With --station the station window is the picture (while it is open).
+            const bool saved = station && stationView ? stationView->saveScreenshot(path, &error)
+                                                      : window.saveScreenshot(path, &error);
+            if (!saved) {
                 std::fprintf(stderr, "imudesk: %s\n", qPrintable(error));
                 screenshotRc = 1;
             }

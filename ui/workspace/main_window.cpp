@@ -2,6 +2,7 @@
 
 #include "device/family_detector.h"
 #include "protocol/hipnuc/ascii_command.h"
+#include "station/station_view.h"
 #include "workspace/link_factory.h"
 #include "workspace/preferences_dialog.h"
 #include "workspace/tool_actions.h"
@@ -405,6 +406,33 @@ bool MainWindow::saveScreenshot(const QString &path, QString *error)
     return true;
 }
 
+StationView *MainWindow::station() const
+{
+    return m_station;
+}
+
+StationView *MainWindow::openStation()
+{
+    if (!m_station) {
+        auto *view = new StationView(this);
+        view->setAttribute(Qt::WA_DeleteOnClose);
+        connect(view, &StationView::openWorkspaceRequested, this, [this](const QString &port, int baud) {
+            // The module's workspace in a free tab (or a new one), and this window in front.
+            connectPort(port, baud);
+            if (isMinimized())
+                showNormal();
+            show();
+            raise();
+            activateWindow();
+        });
+        m_station = view;
+    }
+    m_station->show();
+    m_station->raise();
+    m_station->activateWindow();
+    return m_station;
+}
+
 void MainWindow::presentError(const QString &message)
 {
     if (m_errorPresenter) {
@@ -569,6 +597,11 @@ void MainWindow::createActions()
     m_preferencesAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_Comma));
     connect(m_preferencesAction, &QAction::triggered, this, &MainWindow::openPreferences);
 
+    m_stationAction = new QAction(this);
+    m_stationAction->setObjectName(QStringLiteral("stationAction"));
+    m_stationAction->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_P));
+    connect(m_stationAction, &QAction::triggered, this, [this] { openStation(); });
+
     m_aboutAction = new QAction(this);
     m_aboutAction->setObjectName(QStringLiteral("aboutAction"));
     m_aboutAction->setMenuRole(QAction::AboutRole);
@@ -596,6 +629,8 @@ void MainWindow::createMenus()
     m_toolsMenu = menuBar()->addMenu(QString());
     m_tools = new ToolActions(this, this);
     m_tools->addToMenus(m_fileMenu, m_deviceMenu, m_calibrateMenu, m_toolsMenu);
+    m_toolsMenu->addSeparator();
+    m_toolsMenu->addAction(m_stationAction);
     m_helpMenu = menuBar()->addMenu(QString());
     m_helpMenu->addAction(m_aboutAction);
 }
@@ -631,6 +666,9 @@ void MainWindow::retranslateUi()
     m_presetActions[1]->setStatusTip(tr("The device's settings beside the charts"));
     m_presetActions[2]->setStatusTip(tr("A large 3D attitude view and the console"));
     m_presetActions[3]->setStatusTip(tr("Charts, the values, the raw bytes and the command log"));
+    m_stationAction->setText(tr("&Production station…"));
+    m_stationAction->setStatusTip(tr("Test a tray of modules at once against a test plan: a verdict and a report "
+                                     "per serial number"));
     m_resetLayoutAction->setText(tr("&Reset layout"));
     m_resetLayoutAction->setStatusTip(tr("Put every panel of this tab back where the chosen layout has it"));
     m_tools->retranslate();

@@ -38,6 +38,7 @@ class ConnectionBar;
 class ConsoleWidget;
 class DeviceWorkspace;
 class PreferencesDialog;
+class StationView;
 class ToolActions;
 class StatusFlagsWidget;
 
@@ -107,6 +108,11 @@ public:
     // Saves the window as a PNG; false with a reason when it cannot be written.
     bool saveScreenshot(const QString &path, QString *error = nullptr);
 
+    // Tools > Production station: opens the station window, or raises the one already open.
+    // A module's workspace it asks for opens here, in a free tab or a new one.
+    StationView *openStation();
+    StationView *station() const;
+
 Q_SIGNALS:
     // The user accepted new preferences (the owner stores them).
     void preferencesChanged(const imudesk::ui::Preferences &prefs);
@@ -158,6 +164,8 @@ private:
     QAction *m_preferencesAction = nullptr;
     QList<QAction *> m_presetActions;
     QAction *m_resetLayoutAction = nullptr;
+    QAction *m_stationAction = nullptr;
+    QPointer<StationView> m_station;
     DeviceWorkspace::LayoutPreset m_preset = DeviceWorkspace::LayoutPreset::Monitor;
     Preferences m_prefs;
 

@@ -1,0 +1,562 @@
+// The production station window (issue 22) on a simulated tray of 8 HI14 modules (one with a
+// noisy gyro, one mounted on its side, one with firmware 1.6.6, five good ones) running a short
+// plan (identify, firmware at least 1.7.1 without an image, static 2 s, attitude 1 s): the three
+// faulty modules fail at their own step and their tiles name it, the summary line counts what the
+// runner counts, a tile clicked while its module is under test opens the workspace when the test
+// has ended, and a finished tile opens it at once. At 1366x768 and 1920x1080, in English and
+// Simplified Chinese: the 8 tiles in 4 columns on the small window and more on the large one,
+// every tile whole and inside the window, no scroll bar, no label cut short. Errors are reported
+// without stopping the window. The plan editor writes an edited number into the JSON and lists a
+// value typed outside its range as a problem.
+#include "station/plan_editor_dialog.h"
+#include "station/station_model.h"
+#include "station/station_runner.h"
+#include "station/station_view.h"
+#include "workspace/device_workspace.h"
+#include "workspace/language_switcher.h"
+#include "workspace/main_window.h"
+
+#include <QAbstractScrollArea>
+#include <QAction>
+#include <QApplication>
+#include <QDir>
+#include <QDoubleSpinBox>
+#include <QElapsedTimer>
+#include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QLabel>
+#include <QLineEdit>
+#include <QListWidget>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QRegularExpression>
+#include <QScreen>
+#include <QScrollArea>
+#include <QScrollBar>
+#include <QSignalSpy>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QTextDocumentFragment>
+
+#include <memory>
+
+using namespace imudesk;
+using station::StepKind;
+using station::TestPlan;
+using station::Verdict;
+
+namespace {
+
+const QSize kSmall(1366, 768);
+const QSize kLarge(1920, 1080);
+
+// The tray's faults (StationView::startSimulatedTray with faults, 8 modules): where each one
+// fails, -1 for the good modules.
+StepKind expectedFailure(int module, bool *fails)
+{
+    *fails = true;
+    switch (module) {
+    case 1: return StepKind::Static;   // noisy gyro
+    case 3: return StepKind::Attitude; // on its side
+    case 5: return StepKind::Firmware; // 1.6.6, and the plan has no image to update it
+    default: break;
+    }
+    *fails = false;
+    return StepKind::Identify;
+}
+
+TestPlan shortPlan()
+{
+    TestPlan plan;
+    plan.name = QStringLiteral("short tray test");
+    auto add = [&plan](StepKind kind, QVariantMap params = {}) {
+        station::PlanStep s = TestPlan::defaultStep(kind);
+        for (auto it = params.begin(); it != params.end(); ++it)
+            s.params[it.key()] = it.value();
+        plan.steps.push_back(s);
+    };
+    add(StepKind::Identify, {{QStringLiteral("products"), QStringLiteral("HI14")},
+                             {QStringLiteral("firmware_min"), QStringLiteral("1.6.6")}});
+    add(StepKind::Firmware, {{QStringLiteral("minimum"), QStringLiteral("1.7.1")}, {QStringLiteral("image"), QString()}});
+    add(StepKind::Static, {{QStringLiteral("seconds"), 2.0}});
+    add(StepKind::Attitude, {{QStringLiteral("seconds"), 1.0}});
+    return plan;
+}
+
+QList<int> numbersIn(const QString &text)
+{
+    QList<int> out;
+    static const QRegularExpression number(QStringLiteral("\\d+"));
+    for (auto it = number.globalMatch(text); it.hasNext();)
+        out << it.next().captured().toInt();
+    return out;
+}
+
+bool insideScrolledContent(const QWidget *w, const QWidget *top)
+{
+    for (const QWidget *p = w->parentWidget(); p && p != top; p = p->parentWidget())
+        if (const auto *area = qobject_cast<const QAbstractScrollArea *>(p->parentWidget()))
+            if (area->viewport() == p && !qobject_cast<const QScrollArea *>(area))
+                return true; // inside a list's or an editor's viewport (the tile grid's are checked)
+    return false;
+}
+
+// The idea of tst_layout's check: every visible widget inside the window, no label cut short
+// (a label's every line within its width, a wrapped label as high as its text needs).
+QStringList cutOrOutside(QWidget &top)
+{
+    QStringList problems;
+    const QRect window = top.rect().adjusted(-1, -1, 1, 1);
+    for (QWidget *child : top.findChildren<QWidget *>()) {
+        if (!child->isVisible() || child->isWindow() || insideScrolledContent(child, &top))
+            continue;
+        const QRect r(child->mapTo(&top, QPoint(0, 0)), child->size());
+        if (!window.contains(r))
+            problems << QStringLiteral("%1 \"%2\" outside the window: %3,%4 %5x%6")
+                            .arg(QString::fromLatin1(child->metaObject()->className()), child->objectName())
+                            .arg(r.x())
+                            .arg(r.y())
+                            .arg(r.width())
+                            .arg(r.height());
+        const auto *label = qobject_cast<QLabel *>(child);
+        if (!label || label->text().isEmpty())
+            continue;
+        if (label->wordWrap()) {
+            const int needed = label->heightForWidth(label->width());
+            if (needed > label->height() + 2)
+                problems << QStringLiteral("wrapped label \"%1\" cut: needs %2 px high, has %3")
+                                .arg(label->text().left(60))
+                                .arg(needed)
+                                .arg(label->height());
+            continue;
+        }
+        const QString text = Qt::mightBeRichText(label->text())
+            ? QTextDocumentFragment::fromHtml(label->text()).toPlainText()
+            : QString(label->text()).remove(QLatin1Char('&'));
+        const QStringList lines = text.split(QLatin1Char('\n'));
+        int needed = 0;
+        for (const QString &line : lines)
+            needed = std::max(needed, label->fontMetrics().horizontalAdvance(line));
+        if (needed > label->contentsRect().width() + 1)
+            problems << QStringLiteral("label \"%1\" cut: needs %2 px, has %3")
+                            .arg(text)
+                            .arg(needed)
+                            .arg(label->contentsRect().width());
+        // As QLabel sets lines: one font height, and a line spacing more for each further line.
+        const int high = label->fontMetrics().height() + int(lines.size() - 1) * label->fontMetrics().lineSpacing();
+        if (high > label->contentsRect().height() + 2)
+            problems << QStringLiteral("label \"%1\" cut: needs %2 px high, has %3")
+                            .arg(text)
+                            .arg(high)
+                            .arg(label->contentsRect().height());
+    }
+    return problems;
+}
+
+// What a person would call broken in the station window, one line each.
+QStringList stationProblems(ui::StationView &view, bool large)
+{
+    for (int round = 0; round < 3; ++round) {
+        QCoreApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);
+        QCoreApplication::processEvents();
+    }
+    QStringList problems;
+    // No scroll bar: the tiles all in view. (The port list shows whatever ports the machine has
+    // and may scroll; the tray's eight fit its two rows.)
+    for (const QScrollBar *bar : view.findChildren<QScrollBar *>())
+        if (bar->isVisible())
+            problems << QStringLiteral("a scroll bar (%1) in %2")
+                            .arg(bar->orientation() == Qt::Vertical ? QStringLiteral("vertical")
+                                                                    : QStringLiteral("horizontal"),
+                                 bar->parentWidget() && bar->parentWidget()->parentWidget()
+                                     ? bar->parentWidget()->parentWidget()->objectName()
+                                     : QString());
+    // Every tile whole: inside the window and the grid's viewport, as high as it asks, none
+    // over another.
+    const auto *scroll = view.findChild<QScrollArea *>(QStringLiteral("stationTileScroll"));
+    if (!scroll || !scroll->isVisible())
+        return problems << QStringLiteral("no tile area");
+    const QRect viewport(scroll->viewport()->mapTo(&view, QPoint(0, 0)), scroll->viewport()->size());
+    QList<QRect> tiles;
+    for (int i = 0; i < view.tileCount(); ++i) {
+        QWidget *t = view.tile(i);
+        const QRect r(t->mapTo(&view, QPoint(0, 0)), t->size());
+        if (!t->isVisible() || !view.rect().contains(r) || !viewport.contains(r))
+            problems << QStringLiteral("tile %1 not whole in view: %2,%3 %4x%5 (viewport %6x%7)")
+                            .arg(i)
+                            .arg(r.x())
+                            .arg(r.y())
+                            .arg(r.width())
+                            .arg(r.height())
+                            .arg(viewport.width())
+                            .arg(viewport.height());
+        if (t->height() < t->sizeHint().height())
+            problems << QStringLiteral("tile %1 %2 px high, wants %3").arg(i).arg(t->height()).arg(t->sizeHint().height());
+        for (const QRect &other : std::as_const(tiles))
+            if (other.intersects(r))
+                problems << QStringLiteral("tile %1 over another").arg(i);
+        tiles << r;
+    }
+    // 4 columns x 2 rows on a laptop's window, more columns on a large one.
+    if (!large && view.tileColumns() != 4)
+        problems << QStringLiteral("%1 columns at 1366 px, expected 4").arg(view.tileColumns());
+    if (large && view.tileColumns() <= 4)
+        problems << QStringLiteral("only %1 columns at 1920 px").arg(view.tileColumns());
+    // The window could be that small: its least size fits the screen size.
+    const QSize least = view.minimumSizeHint().expandedTo(view.minimumSize());
+    const QSize room = large ? kLarge : kSmall;
+    if (least.width() > room.width() || least.height() > room.height())
+        problems << QStringLiteral("window needs at least %1x%2").arg(least.width()).arg(least.height());
+    problems << cutOrOutside(view);
+    return problems;
+}
+
+QString visibleText(const QWidget *tile, const char *name)
+{
+    const auto *label = tile->findChild<QLabel *>(QLatin1String(name));
+    return label ? label->text() : QString();
+}
+
+} // namespace
+
+class TstStationView : public QObject {
+    Q_OBJECT
+    QTemporaryDir m_dir;
+    ui::LanguageSwitcher m_language;
+    std::unique_ptr<ui::StationView> m_view;
+    QStringList m_errors;
+
+private Q_SLOTS:
+    void initTestCase()
+    {
+        QStandardPaths::setTestModeEnabled(true);
+        QCOMPARE(QGuiApplication::primaryScreen()->geometry().size(), kLarge);
+        QString error;
+        QVERIFY2(m_language.setLanguage(QStringLiteral("en"), QStringLiteral(IMUDESK_QM_DIR), &error),
+                 qPrintable(error));
+        m_view = std::make_unique<ui::StationView>();
+        m_view->setRemembering(false);
+        m_view->setErrorPresenter([this](const QString &message) { m_errors << message; });
+        m_view->setReportFolder(m_dir.filePath(QStringLiteral("reports")));
+        QVERIFY2(m_view->startSimulatedTray(ui::StationView::kDemoTraySize, true, &error), qPrintable(error));
+        QCOMPARE(m_view->simulatedPorts().size(), 8);
+        QCOMPARE(m_view->checkedPorts(), m_view->simulatedPorts());
+        m_view->setPlan(shortPlan(), QString());
+        m_view->resize(kSmall);
+        m_view->show();
+        QVERIFY(QTest::qWaitForWindowExposed(m_view.get()));
+    }
+
+    void cleanupTestCase()
+    {
+        m_view.reset(); // the runner's sessions close, then the simulated modules stop
+    }
+
+    void runsTheTray()
+    {
+        QSignalSpy opened(m_view.get(), &ui::StationView::openWorkspaceRequested);
+        QElapsedTimer clock;
+        clock.start();
+        auto *startButton = m_view->findChild<QPushButton *>(QStringLiteral("startStation"));
+        QVERIFY(startButton && startButton->isEnabled());
+        startButton->click();
+        QVERIFY(m_view->running());
+        QCOMPARE(m_view->tileCount(), 8);
+        QVERIFY(m_view->findChild<QPushButton *>(QStringLiteral("cancelStation"))->isEnabled());
+        QVERIFY(!startButton->isEnabled());
+        const station::StationRunner *runner = m_view->runner();
+        QVERIFY(runner);
+
+        // A tile clicked while its module is under test: no workspace yet, the summary says it waits.
+        QTest::mouseClick(m_view->tile(0), Qt::LeftButton);
+        QCOMPARE(opened.count(), 0);
+        QVERIFY2(m_view->summaryText().contains(runner->module(0).port), qPrintable(m_view->summaryText()));
+
+        // The tiles follow the run: a module is seen running on the view's clock.
+        QTRY_VERIFY_WITH_TIMEOUT(visibleText(m_view->tile(2), "verdict") == station::verdictText(Verdict::Running),
+                                 5000);
+
+        QTRY_VERIFY_WITH_TIMEOUT(!m_view->running(), 120000);
+        const qint64 runMs = clock.elapsed();
+        // The waiting workspace opens once the port is free.
+        QTRY_COMPARE_WITH_TIMEOUT(opened.count(), 1, 3000);
+        QCOMPARE(opened.at(0).at(0).toString(), runner->module(0).port);
+        QCOMPARE(opened.at(0).at(1).toInt(), ui::StationView::kSimulatedBaud);
+        QVERIFY2(!m_view->summaryText().contains(QLatin1String("workspace")), qPrintable(m_view->summaryText()));
+
+        // Verdicts: the three faults fail at their step, the others pass; each tile says so.
+        for (int i = 0; i < 8; ++i) {
+            const station::ModuleResult &r = runner->module(i);
+            bool fails = false;
+            const StepKind kind = expectedFailure(i, &fails);
+            QTRY_COMPARE_WITH_TIMEOUT(visibleText(m_view->tile(i), "verdict"), station::verdictText(r.verdict), 1000);
+            if (!fails) {
+                QVERIFY2(r.verdict == Verdict::Pass, qPrintable(QStringLiteral("module %1: %2").arg(i).arg(r.failureSummary())));
+                QCOMPARE(visibleText(m_view->tile(i), "failure"), QString());
+                QCOMPARE(m_view->tile(i)->findChild<QProgressBar *>()->value(), 1000);
+                continue;
+            }
+            QVERIFY2(r.verdict == Verdict::Fail, qPrintable(QStringLiteral("module %1 passed").arg(i)));
+            QCOMPARE(r.steps[size_t(r.failedStep())].kind, kind);
+            // The failing step named on the tile as it is seen, and its values in the failure line.
+            const QString title = TestPlan::title(kind);
+            QVERIFY2(visibleText(m_view->tile(i), "step").contains(title),
+                     qPrintable(QStringLiteral("module %1 shows \"%2\"").arg(i).arg(visibleText(m_view->tile(i), "step"))));
+            const auto *failure = m_view->tile(i)->findChild<QLabel *>(QStringLiteral("failure"));
+            QVERIFY(!failure->text().isEmpty());
+            // Shown whole (wrapped onto its lines) or elided with the whole text in the tooltip.
+            const QString full = failure->toolTip().isEmpty() ? QString(failure->text()).replace(u'\n', u' ')
+                                                              : failure->toolTip();
+            QCOMPARE(full, r.failureSummary());
+            QVERIFY(full.startsWith(title));
+            // The tile's tooltip lists the values with their units.
+            if (kind == StepKind::Static)
+                QVERIFY2(m_view->tile(i)->toolTip().contains(QStringLiteral("°/s")), qPrintable(m_view->tile(i)->toolTip()));
+        }
+
+        // The summary line counts what the runner counts.
+        const station::StationRunner::Summary s = runner->summary();
+        QCOMPARE(s.passed, 5);
+        QCOMPARE(s.failed, 3);
+        QTRY_COMPARE_WITH_TIMEOUT(numbersIn(m_view->summaryText()).mid(0, 4),
+                                  (QList<int>{s.passed, s.failed, s.running, s.waiting}), 1000);
+        QVERIFY(m_view->findChild<QPushButton *>(QStringLiteral("rerunFailed"))->isEnabled());
+        QVERIFY(!m_view->findChild<QPushButton *>(QStringLiteral("cancelStation"))->isEnabled());
+
+        // The run folder: a report per module, no error shown.
+        QVERIFY2(m_errors.isEmpty(), qPrintable(m_errors.join(QLatin1Char('\n'))));
+        const QStringList pdfs = QDir(runner->runFolder()).entryList({QStringLiteral("*.pdf")}, QDir::Files);
+        QCOMPARE(pdfs.size(), 8);
+        qInfo("8 modules tested in %.1f s", double(runMs) / 1000.0);
+    }
+
+    void layout_data()
+    {
+        QTest::addColumn<QSize>("size");
+        QTest::addColumn<QString>("language");
+        for (const QString &lang : {QStringLiteral("en"), QStringLiteral("zh_CN")})
+            for (const QSize &size : {kSmall, kLarge})
+                QTest::addRow("%dx%d %s", size.width(), size.height(), qPrintable(lang)) << size << lang;
+    }
+
+    void layout()
+    {
+        QFETCH(QSize, size);
+        QFETCH(QString, language);
+        QVERIFY2(m_view->tileCount() == 8, "runsTheTray runs first");
+        QString error;
+        QVERIFY2(m_language.setLanguage(language, QStringLiteral(IMUDESK_QM_DIR), &error), qPrintable(error));
+        m_view->resize(size);
+        QTRY_COMPARE(m_view->size(), size);
+        // A new language brings a new font: the nested layouts take a few rounds to follow it,
+        // as they would between two frames on a screen.
+        QStringList problems;
+        for (int round = 0; round < 50; ++round) {
+            problems = stationProblems(*m_view, size == kLarge);
+            if (problems.isEmpty())
+                break;
+            QTest::qWait(20);
+        }
+        // The failing tiles still name their step.
+        for (int i = 0; i < 8; ++i) {
+            const station::ModuleResult &r = m_view->runner()->module(i);
+            if (r.failedStep() >= 0)
+                QVERIFY2(visibleText(m_view->tile(i), "step").contains(r.steps[size_t(r.failedStep())].title),
+                         qPrintable(visibleText(m_view->tile(i), "step")));
+        }
+        QVERIFY2(problems.isEmpty(), qPrintable(problems.join(QLatin1Char('\n'))));
+        if (const QString shots = qEnvironmentVariable("IMUDESK_LAYOUT_SHOTS"); !shots.isEmpty())
+            m_view->grab().save(QDir(shots).filePath(
+                QStringLiteral("station-%1x%2-%3.png").arg(size.width()).arg(size.height()).arg(language)));
+        QVERIFY(m_language.setLanguage(QStringLiteral("en"), QStringLiteral(IMUDESK_QM_DIR), &error));
+    }
+
+    void finishedTileOpensItsWorkspace()
+    {
+        QSignalSpy opened(m_view.get(), &ui::StationView::openWorkspaceRequested);
+        QTest::mouseClick(m_view->tile(2), Qt::LeftButton);
+        QCOMPARE(opened.count(), 1);
+        QCOMPARE(opened.at(0).at(0).toString(), m_view->runner()->module(2).port);
+        QCOMPARE(opened.at(0).at(1).toInt(), ui::StationView::kSimulatedBaud);
+        // The keyboard too: Enter on a focused tile.
+        m_view->tile(5)->setFocus();
+        QTest::keyClick(m_view->tile(5), Qt::Key_Return);
+        QCOMPARE(opened.count(), 2);
+        QCOMPARE(opened.at(1).at(0).toString(), m_view->runner()->module(5).port);
+    }
+
+    // Tools > Production station (Ctrl+Shift+P) opens one station window; a module's workspace
+    // it asks for opens in the main window's free tab.
+    void mainWindowOpensTheStation()
+    {
+        ui::MainWindow window;
+        window.setErrorPresenter([](const QString &) {});
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        auto *action = window.findChild<QAction *>(QStringLiteral("stationAction"));
+        QVERIFY(action);
+        QCOMPARE(action->shortcut(), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_P));
+        QVERIFY(!action->text().isEmpty());
+        action->trigger();
+        QPointer<ui::StationView> station = window.station();
+        QVERIFY(station);
+        QVERIFY(station->isVisible());
+        QVERIFY(station->isWindow());
+        action->trigger(); // raised, not a second one
+        QCOMPARE(window.station(), station.data());
+        QCOMPARE(window.findChildren<ui::StationView *>().size(), 1);
+        station->setRemembering(false);
+        const QString port = m_view->simulatedPorts().at(0); // free: its test has ended
+        Q_EMIT station->openWorkspaceRequested(port, ui::StationView::kSimulatedBaud);
+        QCOMPARE(window.currentWorkspace()->target(), port);
+        QTRY_VERIFY_WITH_TIMEOUT(window.currentWorkspace()->state() == device::SessionState::Connected, 10000);
+        // Closing the station window ends it.
+        station->close();
+        QTRY_VERIFY(!station);
+        QVERIFY(!window.station());
+    }
+
+    void errorsDoNotStopTheWindow()
+    {
+        m_errors.clear();
+        // A plan that does not load: said, and the plan in use stays.
+        const QString broken = m_dir.filePath(QStringLiteral("broken-plan.json"));
+        QFile f(broken);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write(R"({"format": "imudesk-station-plan", "version": 1, "steps": [{"step": "static", "seconds": 9000}]})");
+        f.close();
+        QVERIFY(!m_view->openPlan(broken));
+        QCOMPARE(m_errors.size(), 1);
+        QVERIFY2(m_errors.first().contains(QStringLiteral("broken-plan.json")), qPrintable(m_errors.first()));
+        QCOMPARE(m_view->plan().name, shortPlan().name);
+        // A report folder that cannot be made (a file is in the way): said, nothing starts.
+        const QString blocker = m_dir.filePath(QStringLiteral("not-a-folder"));
+        QFile block(blocker);
+        QVERIFY(block.open(QIODevice::WriteOnly));
+        block.close();
+        const QString before = m_view->reportFolder();
+        m_view->setReportFolder(QDir(blocker).filePath(QStringLiteral("reports")));
+        const station::StationRunner *previous = m_view->runner();
+        QVERIFY(!m_view->start());
+        QCOMPARE(m_errors.size(), 2);
+        QVERIFY2(m_errors.at(1).contains(QStringLiteral("not-a-folder")), qPrintable(m_errors.at(1)));
+        QCOMPARE(m_view->runner(), previous);
+        QVERIFY(m_view->isVisible());
+        m_view->setReportFolder(before);
+    }
+
+    void planEditorWritesAnEditedNumber()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("plan.json"));
+        QString error;
+        QVERIFY2(shortPlan().save(path, &error), qPrintable(error));
+        const auto loaded = TestPlan::load(path, &error);
+        QVERIFY2(loaded, qPrintable(error));
+        ui::PlanEditorDialog editor(*loaded, path);
+        editor.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&editor));
+        editor.selectStep(2); // static
+        auto *seconds = qobject_cast<QDoubleSpinBox *>(editor.field(QStringLiteral("seconds")));
+        QVERIFY(seconds);
+        // Nothing cut in the editor either.
+        QCoreApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);
+        QCoreApplication::processEvents();
+        QVERIFY2(cutOrOutside(editor).isEmpty(), qPrintable(cutOrOutside(editor).join(QLatin1Char('\n'))));
+        if (const QString shots = qEnvironmentVariable("IMUDESK_LAYOUT_SHOTS"); !shots.isEmpty())
+            editor.grab().save(QDir(shots).filePath(QStringLiteral("station-plan-editor.png")));
+        // The catalogue's unit, range and tooltip.
+        QCOMPARE(seconds->suffix(), QStringLiteral(" s"));
+        QCOMPARE(seconds->minimum(), 1.0);
+        QCOMPARE(seconds->maximum(), 600.0);
+        QVERIFY2(seconds->toolTip().contains(QStringLiteral("600 s")), qPrintable(seconds->toolTip()));
+        auto *gyro = qobject_cast<QDoubleSpinBox *>(editor.field(QStringLiteral("gyro_std_max_dps")));
+        QVERIFY(gyro);
+        QCOMPARE(gyro->suffix(), QStringLiteral(" °/s"));
+        seconds->selectAll();
+        QTest::keyClicks(seconds, QStringLiteral("7"));
+        QCOMPARE(seconds->value(), 7.0);
+        QVERIFY(editor.isModified());
+        QVERIFY(editor.windowTitle().endsWith(QLatin1Char('*')));
+        QSignalSpy saved(&editor, &ui::PlanEditorDialog::saved);
+        editor.activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(&editor));
+        QTest::keyClick(&editor, Qt::Key_S, Qt::ControlModifier); // Ctrl+S
+        QCOMPARE(saved.count(), 1);
+        QVERIFY(!editor.isModified());
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        const QJsonArray steps = QJsonDocument::fromJson(f.readAll()).object().value(QStringLiteral("steps")).toArray();
+        QCOMPARE(steps.at(2).toObject().value(QStringLiteral("step")).toString(), QStringLiteral("static"));
+        QCOMPARE(steps.at(2).toObject().value(QStringLiteral("seconds")).toDouble(), 7.0);
+        // The saved plan is the one announced, and it loads.
+        QCOMPARE(saved.at(0).at(1).toString(), QFileInfo(path).absoluteFilePath());
+        QVERIFY(TestPlan::load(path, &error));
+    }
+
+    void planEditorListsAValueOutOfRange()
+    {
+        ui::PlanEditorDialog editor(shortPlan(), QString());
+        editor.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&editor));
+        auto *problems = editor.findChild<QLabel *>(QStringLiteral("planProblems"));
+        QVERIFY(problems);
+        QVERIFY2(editor.problems().isEmpty(), qPrintable(editor.problems().join(QLatin1Char('\n'))));
+        editor.selectStep(2);
+        auto *seconds = qobject_cast<QDoubleSpinBox *>(editor.field(QStringLiteral("seconds")));
+        QVERIFY(seconds);
+        // 0 s is below the least duration (1 s): listed while it is typed.
+        seconds->selectAll();
+        QTest::keyClicks(seconds, QStringLiteral("0"));
+        QCOMPARE(editor.problems().size(), 1);
+        QVERIFY2(problems->text().contains(QStringLiteral("seconds")) && problems->text().contains(QStringLiteral("step 3")),
+                 qPrintable(problems->text()));
+        // Back within the range: the problem goes.
+        seconds->selectAll();
+        QTest::keyClicks(seconds, QStringLiteral("3"));
+        QVERIFY2(editor.problems().isEmpty(), qPrintable(editor.problems().join(QLatin1Char('\n'))));
+        QCOMPARE(editor.plan().steps[2].number("seconds"), 3.0);
+        // A text out of its form: a firmware version that is none.
+        editor.selectStep(0);
+        auto *lowest = qobject_cast<QLineEdit *>(editor.field(QStringLiteral("firmware_min")));
+        QVERIFY(lowest);
+        lowest->selectAll();
+        QTest::keyClicks(lowest, QStringLiteral("abc"));
+        QVERIFY2(problems->text().contains(QStringLiteral("firmware_min")), qPrintable(problems->text()));
+        // A step switched off in the list is off in the plan; Down moves the selected step.
+        auto *list = editor.findChild<QListWidget *>(QStringLiteral("planSteps"));
+        QVERIFY(list);
+        list->item(3)->setCheckState(Qt::Unchecked);
+        QVERIFY(!editor.plan().steps[3].enabled);
+        editor.findChild<QPushButton *>(QStringLiteral("stepDown"))->click();
+        QCOMPARE(editor.plan().steps[1].kind, StepKind::Identify);
+        QCOMPARE(editor.currentStep(), 1);
+    }
+};
+
+int main(int argc, char **argv)
+{
+    // A 1920x1080 screen (the offscreen platform's default is 800x600), as tst_layout has.
+    QTemporaryDir dir;
+    const QString config = dir.filePath(QStringLiteral("screen.json"));
+    QFile file(config);
+    if (!file.open(QIODevice::WriteOnly))
+        return 2;
+    file.write(QStringLiteral("{\"screens\": [{\"name\": \"station-test\", \"x\": 0, \"y\": 0, \"width\": %1, "
+                              "\"height\": %2, \"logicalDpi\": 96, \"logicalBaseDpi\": 96, \"dpr\": 1}]}")
+                   .arg(kLarge.width())
+                   .arg(kLarge.height())
+                   .toLatin1());
+    file.close();
+    qputenv("QT_QPA_PLATFORM", "offscreen:configfile=" + config.toLocal8Bit());
+    QApplication app(argc, argv);
+    app.setOrganizationName(QStringLiteral("ImuDeskTest"));
+    app.setApplicationName(QStringLiteral("tst_station_view"));
+    TstStationView test;
+    return QTest::qExec(&test, argc, argv);
+}
+
+#include "tst_station_view.moc"

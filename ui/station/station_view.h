@@ -1,0 +1,202 @@
+#pragma once
+// The production station window (issue 22): a test plan, the serial ports of a tray of modules
+// and a report folder on top; Start runs the plan on every checked port at once (a
+// StationRunner: one engine session per module in its own thread), and a grid of tiles shows
+// each module's serial number, product, step under way, progress and verdict, with the
+// failing step and its values for a module that failed. Clicking a tile opens that module's
+// workspace in the main window (openWorkspaceRequested), at once for a module that is not
+// under test, else when its test has ended.
+//
+// "Simulated tray…" starts simulated HI14 modules on pseudo-terminals (the demo: 8 modules,
+// one with a noisy gyro, one mounted wrongly, one with firmware 1.6.6); the window owns them
+// and stops them when it closes. Nothing here blocks: the runner works in its sessions'
+// threads, the tiles and the summary follow a StationModel that reads it on a 5 Hz clock,
+// and problems (a plan that does not load, a folder that cannot be written, a report that
+// failed) are shown in a message that does not wait for an answer.
+#include "station/test_plan.h"
+
+#include <QCoreApplication>
+#include <QHash>
+#include <QPointer>
+#include <QSet>
+#include <QWidget>
+
+#include <functional>
+#include <memory>
+#include <vector>
+
+class QLabel;
+class QLineEdit;
+class QListWidget;
+class QMessageBox;
+class QPushButton;
+class QScrollArea;
+class QSettings;
+
+namespace imudesk::sim {
+class PtySimulator;
+}
+namespace imudesk::station {
+class StationRunner;
+}
+
+namespace imudesk::ui {
+
+class ElidedLabel;
+class PlanEditorDialog;
+class StationModel;
+class StationTile;
+class TileGridLayout;
+
+// What the station window remembers between sessions (versioned keys, as Preferences).
+struct StationSettings {
+    static constexpr const char *kReportFolderKey = "station/v1/reportFolder";
+    static constexpr const char *kPlanKey = "station/v1/plan";
+
+    QString reportFolder; // empty: defaultReportFolder()
+    QString planPath;     // the plan opened last; empty: none
+
+    void load(QSettings &settings);
+    void save(QSettings &settings) const;
+    // <Documents>/ImuDesk/station
+    static QString defaultReportFolder();
+};
+
+class StationView : public QWidget {
+    Q_OBJECT
+
+public:
+    using ErrorPresenter = std::function<void(const QString &message)>;
+
+    static constexpr int kDemoTraySize = 8;
+    static constexpr int kMaxTraySize = 16;
+    static constexpr int kSimulatedBaud = 115200;
+    // A module's port is closed by its session's thread just after its test ended: a workspace
+    // asked for while it was under test opens this much later.
+    static constexpr int kPortReleaseMs = 300;
+
+    explicit StationView(QWidget *parent = nullptr);
+    ~StationView() override;
+
+    // The plan: from a file (false, and the reason shown, when it does not load), or given.
+    bool openPlan(const QString &path);
+    void setPlan(const station::TestPlan &plan, const QString &path);
+    const station::TestPlan &plan() const { return m_plan; }
+    bool hasPlan() const { return m_havePlan; }
+    // The example plan (TestPlan::example()) without what it needs from files beside it: the
+    // firmware step keeps its minimum but has no image (an older module fails it), the profile
+    // step is off. What --station-demo runs when no plan is given.
+    static station::TestPlan demoPlan();
+    // Opens the plan in the editor (non-modal); a saved plan becomes the station's plan.
+    PlanEditorDialog *editPlan();
+
+    // Ports: the serial ports found (Refresh) and the simulated ones, each with a check box.
+    void refreshPorts();
+    QStringList checkedPorts() const;
+    void setPortChecked(const QString &port, bool checked);
+    // Starts `count` simulated HI14 modules on pseudo-terminals and checks only their ports.
+    // With faults, three of them fail (a noisy gyro, a wrong mounting, firmware 1.6.6); every
+    // one sits on a rotation fixture so that a magnetometer calibration step can pass.
+    bool startSimulatedTray(int count, bool withFaults, QString *error = nullptr);
+    void stopSimulatedTray();
+    QStringList simulatedPorts() const;
+
+    // Where run folders are made (one per Start: "<plan>-<date>-<time>").
+    QString reportFolder() const;
+    void setReportFolder(const QString &dir);
+    // Whether the report folder and the plan opened are remembered for the next time (off for
+    // automation: a --screenshot run or a test leaves the user's settings alone).
+    void setRemembering(bool on) { m_remember = on; }
+
+    // Runs the plan on the checked ports; false (and the reason shown) when it cannot.
+    bool start();
+    void cancel();
+    // Runs the modules that failed again, into the same run folder (their next attempt).
+    void rerunFailed();
+    bool running() const;
+    const station::StationRunner *runner() const { return m_runner.get(); }
+    StationModel *model() const { return m_model; }
+
+    // "n passed · n failed · n running · n waiting", and which workspaces wait for their test.
+    QString summaryText() const;
+    int tileCount() const { return int(m_tiles.size()); }
+    QWidget *tile(int index) const;
+    int tileColumns() const;
+    // Opens the module's workspace now, or when its test has ended (what a click on its tile does).
+    void openModule(int index);
+
+    // Replaces the non-modal message box (tests collect the messages instead).
+    void setErrorPresenter(ErrorPresenter presenter) { m_errorPresenter = std::move(presenter); }
+    // Saves the window as a PNG; false with a reason when it cannot be written.
+    bool saveScreenshot(const QString &path, QString *error = nullptr);
+
+Q_SIGNALS:
+    // The user asked for this module's workspace (a click on its tile) and its port is free.
+    void openWorkspaceRequested(const QString &port, int baud);
+
+protected:
+    void closeEvent(QCloseEvent *event) override;
+    void changeEvent(QEvent *event) override;
+
+private:
+    void retranslateUi();
+    void showError(const QString &message);
+    void choosePlan();
+    void newFromExample();
+    void chooseReportFolder();
+    void openTrayDialog();
+    void rememberSettings();
+    void addPortItem(const QString &port, const QString &text, const QString &toolTip, bool checked);
+    void rebuildTiles();
+    void updateTiles(int first, int last);
+    void updateSummary();
+    void updateActions();
+    void updatePlanLabel();
+    void onModuleFinished(int index);
+    void showNewReportErrors();
+    int baudFor(const QString &port) const;
+
+    station::TestPlan m_plan;
+    QString m_planPath;
+    bool m_havePlan = false;
+    StationSettings m_settings;
+    bool m_remember = true;
+
+    std::unique_ptr<station::StationRunner> m_runner;
+    StationModel *m_model = nullptr;
+    int m_runBaud = 0;
+    int m_reportErrorsShown = 0;
+    QSet<int> m_pendingOpen; // tiles clicked while their module was under test
+
+    std::vector<std::unique_ptr<sim::PtySimulator>> m_sims;
+    QStringList m_simPorts;            // in tray order
+    QHash<QString, QString> m_simNotes; // port -> what the simulated module is (its faults)
+
+    QLabel *m_planTitle = nullptr;
+    ElidedLabel *m_planName = nullptr; // the plan's name and steps (elided; the whole plan in its tooltip)
+    QPushButton *m_openPlan = nullptr;
+    QPushButton *m_editPlan = nullptr;
+    QPushButton *m_examplePlan = nullptr;
+    QLabel *m_portsTitle = nullptr;
+    QListWidget *m_ports = nullptr;
+    QPushButton *m_refreshPorts = nullptr;
+    QPushButton *m_tray = nullptr;
+    QLabel *m_folderTitle = nullptr;
+    QLineEdit *m_folder = nullptr;
+    QPushButton *m_chooseFolder = nullptr;
+    QPushButton *m_start = nullptr;
+    QPushButton *m_cancel = nullptr;
+    QPushButton *m_rerun = nullptr;
+    ElidedLabel *m_summary = nullptr;
+    QLabel *m_placeholder = nullptr;
+    QScrollArea *m_scroll = nullptr;
+    QWidget *m_tileArea = nullptr;
+    TileGridLayout *m_grid = nullptr;
+    std::vector<StationTile *> m_tiles;
+    QPointer<PlanEditorDialog> m_editor;
+
+    ErrorPresenter m_errorPresenter;
+    QPointer<QMessageBox> m_errorBox;
+};
+
+} // namespace imudesk::ui
