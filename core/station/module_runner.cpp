@@ -530,9 +530,13 @@ void ModuleRunner::poll()
     }
     if (!m_collecting)
         return;
-    const double elapsed = m_stepClock.elapsed() / 1000.0;
-    updateProgress(elapsed / m_stepSeconds);
-    if (elapsed < m_stepSeconds)
+    // Done when the samples cover the step's time on the device's own clock, not the host's: on
+    // a loaded machine the bytes of a second may arrive late. A module that sends nothing is
+    // caught by the silence check above, one that sends too little by the time limit here.
+    const double span = collectedSeconds();
+    updateProgress(span / m_stepSeconds);
+    const bool covered = span >= m_stepSeconds * 0.999;
+    if (!covered && m_stepClock.elapsed() < qint64(m_stepSeconds * 1000) + kSilenceMs)
         return;
     m_collecting = false;
     if (m_samples.size() < 10) {
@@ -547,6 +551,18 @@ void ModuleRunner::poll()
     case StepKind::Attitude: evaluateAttitude(); break;
     default: break;
     }
+}
+
+double ModuleRunner::collectedSeconds() const
+{
+    const size_t n = m_samples.size();
+    if (n < 2)
+        return 0;
+    // n samples span n intervals: (last - first) covers n - 1 of them.
+    double span = (m_samples.back().deviceTimeMs - m_samples.front().deviceTimeMs) / 1000.0;
+    if (span <= 0) // no device clock: the host's arrival times
+        span = double(m_samples.back().hostTimeNs - m_samples.front().hostTimeNs) / 1e9;
+    return std::max(0.0, span * double(n) / double(n - 1));
 }
 
 void ModuleRunner::evaluateStatic()

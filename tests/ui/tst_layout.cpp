@@ -6,6 +6,7 @@
 // window. The same after restoring a layout saved in a small automation window and one
 // saved at another size; a --screenshot run leaves the user's settings alone; the layout
 // presets and the bottom panels that open on demand.
+#include "../common/layout_checks.h"
 #include "../common/synthetic_capture.h"
 #include "calibration/attitude_reset_wizard.h"
 #include "attitude/attitude_widget.h"
@@ -59,6 +60,8 @@
 using namespace imudesk;
 using ui::DeviceWorkspace;
 using ui::MainWindow;
+using test::layout::cutOrOutside;
+using test::layout::parkedByQt;
 
 namespace {
 
@@ -76,75 +79,6 @@ const char *kindName(Kind k)
     static const char *const names[] = {"HiPNUC serial", "HEC495", "Modbus", "J1939", "CANopen", "replay",
                                                  "HiPNUC serial with NMEA", "HiPNUC serial with every HI83 field"};
     return names[int(k)];
-}
-
-bool insideScrolledContent(const QWidget *w, const QWidget *top)
-{
-    for (const QWidget *p = w->parentWidget(); p && p != top; p = p->parentWidget()) {
-        if (qobject_cast<const QGraphicsView *>(p))
-            return true;
-        if (const auto *area = qobject_cast<const QAbstractScrollArea *>(p->parentWidget()))
-            if (area->viewport() == p)
-                return true;
-    }
-    return false;
-}
-
-// Qt parks what is behind a tab (a dock that is not the current tab, a spare tab bar) outside
-// its main window instead of hiding it: not something the user can see, so not a problem.
-bool parkedByQt(const QWidget *w)
-{
-    for (const QWidget *p = w; p; p = p->parentWidget()) {
-        const auto *main = qobject_cast<const QMainWindow *>(p->parentWidget());
-        if (!main)
-            continue;
-        const bool dock = qobject_cast<const QDockWidget *>(p) && !p->isWindow();
-        if ((dock || qobject_cast<const QTabBar *>(p)) && !main->rect().intersects(p->geometry()))
-            return true;
-    }
-    return false;
-}
-
-// Every visible widget inside `top`, and no label cut short: one line per problem.
-QStringList cutOrOutside(QWidget &top)
-{
-    QStringList problems;
-    const QRect window = top.rect().adjusted(-1, -1, 1, 1);
-    for (QWidget *child : top.findChildren<QWidget *>()) {
-        if (!child->isVisible() || child->isWindow() || insideScrolledContent(child, &top) || parkedByQt(child))
-            continue;
-        const QRect r(child->mapTo(&top, QPoint(0, 0)), child->size());
-        if (!window.contains(r))
-            problems << QStringLiteral("%1 \"%2\" outside the window: %3,%4 %5x%6")
-                            .arg(QString::fromLatin1(child->metaObject()->className()), child->objectName())
-                            .arg(r.x())
-                            .arg(r.y())
-                            .arg(r.width())
-                            .arg(r.height());
-        const auto *label = qobject_cast<QLabel *>(child);
-        if (!label || label->text().isEmpty())
-            continue;
-        if (label->wordWrap()) {
-            // A wrapped text needs its height for this width.
-            const int needed = label->heightForWidth(label->width());
-            if (needed > label->height() + 2)
-                problems << QStringLiteral("wrapped label \"%1\" cut: needs %2 px high, has %3")
-                                .arg(label->text().left(60))
-                                .arg(needed)
-                                .arg(label->height());
-            continue;
-        }
-        const QString text = Qt::mightBeRichText(label->text())
-            ? QTextDocumentFragment::fromHtml(label->text()).toPlainText()
-            : QString(label->text()).remove(QLatin1Char('&'));
-        int needed = 0;
-        for (const QString &line : text.split(QLatin1Char('\n')))
-            needed = std::max(needed, label->fontMetrics().horizontalAdvance(line));
-        if (needed > label->contentsRect().width() + 1)
-            problems << QStringLiteral("label \"%1\" cut: needs %2 px, has %3").arg(text).arg(needed).arg(
-                            label->contentsRect().width());
-    }
-    return problems;
 }
 
 // What a person would call broken in this window, one line each.

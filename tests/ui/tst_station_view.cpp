@@ -8,6 +8,7 @@
 // every tile whole and inside the window, no scroll bar, no label cut short. Errors are reported
 // without stopping the window. The plan editor writes an edited number into the JSON and lists a
 // value typed outside its range as a problem.
+#include "../common/layout_checks.h"
 #include "station/plan_editor_dialog.h"
 #include "station/station_model.h"
 #include "station/station_runner.h"
@@ -95,65 +96,11 @@ QList<int> numbersIn(const QString &text)
     return out;
 }
 
-bool insideScrolledContent(const QWidget *w, const QWidget *top)
-{
-    for (const QWidget *p = w->parentWidget(); p && p != top; p = p->parentWidget())
-        if (const auto *area = qobject_cast<const QAbstractScrollArea *>(p->parentWidget()))
-            if (area->viewport() == p && !qobject_cast<const QScrollArea *>(area))
-                return true; // inside a list's or an editor's viewport (the tile grid's are checked)
-    return false;
-}
-
-// The idea of tst_layout's check: every visible widget inside the window, no label cut short
-// (a label's every line within its width, a wrapped label as high as its text needs).
+// The layout test's check, with the tile grid (a scroll area that must not need to scroll)
+// and every line of the tiles' multi-line labels checked too.
 QStringList cutOrOutside(QWidget &top)
 {
-    QStringList problems;
-    const QRect window = top.rect().adjusted(-1, -1, 1, 1);
-    for (QWidget *child : top.findChildren<QWidget *>()) {
-        if (!child->isVisible() || child->isWindow() || insideScrolledContent(child, &top))
-            continue;
-        const QRect r(child->mapTo(&top, QPoint(0, 0)), child->size());
-        if (!window.contains(r))
-            problems << QStringLiteral("%1 \"%2\" outside the window: %3,%4 %5x%6")
-                            .arg(QString::fromLatin1(child->metaObject()->className()), child->objectName())
-                            .arg(r.x())
-                            .arg(r.y())
-                            .arg(r.width())
-                            .arg(r.height());
-        const auto *label = qobject_cast<QLabel *>(child);
-        if (!label || label->text().isEmpty())
-            continue;
-        if (label->wordWrap()) {
-            const int needed = label->heightForWidth(label->width());
-            if (needed > label->height() + 2)
-                problems << QStringLiteral("wrapped label \"%1\" cut: needs %2 px high, has %3")
-                                .arg(label->text().left(60))
-                                .arg(needed)
-                                .arg(label->height());
-            continue;
-        }
-        const QString text = Qt::mightBeRichText(label->text())
-            ? QTextDocumentFragment::fromHtml(label->text()).toPlainText()
-            : QString(label->text()).remove(QLatin1Char('&'));
-        const QStringList lines = text.split(QLatin1Char('\n'));
-        int needed = 0;
-        for (const QString &line : lines)
-            needed = std::max(needed, label->fontMetrics().horizontalAdvance(line));
-        if (needed > label->contentsRect().width() + 1)
-            problems << QStringLiteral("label \"%1\" cut: needs %2 px, has %3")
-                            .arg(text)
-                            .arg(needed)
-                            .arg(label->contentsRect().width());
-        // As QLabel sets lines: one font height, and a line spacing more for each further line.
-        const int high = label->fontMetrics().height() + int(lines.size() - 1) * label->fontMetrics().lineSpacing();
-        if (high > label->contentsRect().height() + 2)
-            problems << QStringLiteral("label \"%1\" cut: needs %2 px high, has %3")
-                            .arg(text)
-                            .arg(high)
-                            .arg(label->contentsRect().height());
-    }
-    return problems;
+    return test::layout::cutOrOutside(top, {true, true});
 }
 
 // What a person would call broken in the station window, one line each.

@@ -1,0 +1,107 @@
+#pragma once
+// The layout test's eye (issue 14), shared by every window that is judged by it (tst_layout,
+// tst_station_view): every visible widget inside the window and no label cut short.
+#include <QAbstractScrollArea>
+#include <QDockWidget>
+#include <QFontMetrics>
+#include <QGraphicsView>
+#include <QLabel>
+#include <QMainWindow>
+#include <QScrollArea>
+#include <QStringList>
+#include <QTabBar>
+#include <QTextDocumentFragment>
+#include <QWidget>
+
+#include <algorithm>
+
+namespace imudesk::test::layout {
+
+struct Options {
+    // Widgets inside a QScrollArea's viewport are checked too (a grid that must fit without
+    // scrolling); those inside a list's, an editor's or a graphics view's never are.
+    bool checkScrollAreas = false;
+    // A label's lines must also fit its height (labels that set several lines themselves).
+    bool checkLineHeights = false;
+};
+
+inline bool insideScrolledContent(const QWidget *w, const QWidget *top, const Options &o = {})
+{
+    for (const QWidget *p = w->parentWidget(); p && p != top; p = p->parentWidget()) {
+        if (qobject_cast<const QGraphicsView *>(p))
+            return true;
+        if (const auto *area = qobject_cast<const QAbstractScrollArea *>(p->parentWidget()))
+            if (area->viewport() == p && !(o.checkScrollAreas && qobject_cast<const QScrollArea *>(area)))
+                return true;
+    }
+    return false;
+}
+
+// Qt parks what is behind a tab (a dock that is not the current tab, a spare tab bar) outside
+// its main window instead of hiding it: not something the user can see, so not a problem.
+inline bool parkedByQt(const QWidget *w)
+{
+    for (const QWidget *p = w; p; p = p->parentWidget()) {
+        const auto *main = qobject_cast<const QMainWindow *>(p->parentWidget());
+        if (!main)
+            continue;
+        const bool dock = qobject_cast<const QDockWidget *>(p) && !p->isWindow();
+        if ((dock || qobject_cast<const QTabBar *>(p)) && !main->rect().intersects(p->geometry()))
+            return true;
+    }
+    return false;
+}
+
+// Every visible widget inside `top`, and no label cut short: one line per problem.
+inline QStringList cutOrOutside(QWidget &top, const Options &o = {})
+{
+    QStringList problems;
+    const QRect window = top.rect().adjusted(-1, -1, 1, 1);
+    for (QWidget *child : top.findChildren<QWidget *>()) {
+        if (!child->isVisible() || child->isWindow() || insideScrolledContent(child, &top, o) || parkedByQt(child))
+            continue;
+        const QRect r(child->mapTo(&top, QPoint(0, 0)), child->size());
+        if (!window.contains(r))
+            problems << QStringLiteral("%1 \"%2\" outside the window: %3,%4 %5x%6")
+                            .arg(QString::fromLatin1(child->metaObject()->className()), child->objectName())
+                            .arg(r.x())
+                            .arg(r.y())
+                            .arg(r.width())
+                            .arg(r.height());
+        const auto *label = qobject_cast<QLabel *>(child);
+        if (!label || label->text().isEmpty())
+            continue;
+        if (label->wordWrap()) {
+            // A wrapped text needs its height for this width.
+            const int needed = label->heightForWidth(label->width());
+            if (needed > label->height() + 2)
+                problems << QStringLiteral("wrapped label \"%1\" cut: needs %2 px high, has %3")
+                                .arg(label->text().left(60))
+                                .arg(needed)
+                                .arg(label->height());
+            continue;
+        }
+        const QString text = Qt::mightBeRichText(label->text())
+            ? QTextDocumentFragment::fromHtml(label->text()).toPlainText()
+            : QString(label->text()).remove(QLatin1Char('&'));
+        const QStringList lines = text.split(QLatin1Char('\n'));
+        int needed = 0;
+        for (const QString &line : lines)
+            needed = std::max(needed, label->fontMetrics().horizontalAdvance(line));
+        if (needed > label->contentsRect().width() + 1)
+            problems << QStringLiteral("label \"%1\" cut: needs %2 px, has %3").arg(text).arg(needed).arg(
+                            label->contentsRect().width());
+        if (!o.checkLineHeights)
+            continue;
+        // As QLabel sets lines: one font height, and a line spacing more for each further line.
+        const int high = label->fontMetrics().height() + int(lines.size() - 1) * label->fontMetrics().lineSpacing();
+        if (high > label->contentsRect().height() + 2)
+            problems << QStringLiteral("label \"%1\" cut: needs %2 px high, has %3")
+                            .arg(text)
+                            .arg(high)
+                            .arg(label->contentsRect().height());
+    }
+    return problems;
+}
+
+} // namespace imudesk::test::layout
