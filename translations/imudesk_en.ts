@@ -59,7 +59,9 @@
         <location filename="../core/station/module_runner.cpp" line="+453" />
         <source>%n setting(s) applied and read back</source>
         <translation>
-            <numerusform>%n setting applied and read back</numerusform><numerusform>%n settings applied and read back</numerusform></translation>
+            <numerusform>%n setting applied and read back</numerusform>
+            <numerusform>%n settings applied and read back</numerusform>
+        </translation>
     </message>
 </context>
 <context>

@@ -5962,7 +5962,8 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <location line="+11" />
         <source>%n setting(s) applied and read back</source>
         <translation>
-            <numerusform>已应用并回读 %n 项设置</numerusform></translation>
+            <numerusform>已应用并回读 %n 项设置</numerusform>
+        </translation>
     </message>
     <message>
         <location line="+14" />
@@ -5980,12 +5981,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>“%2”期间 %1 s 未收到模块数据：模块输出是否已开启？是否仍在连接中？</translation>
     </message>
     <message>
-        <location line="+28" />
+        <location line="+32" />
         <source>only %1 samples in %2 s: enable the module's output (HI91, at least 10 Hz)</source>
         <translation>%2 s 内仅有 %1 个样本：请开启模块的输出（HI91，至少 10 Hz）</translation>
     </message>
     <message>
-        <location line="+56" />
+        <location line="+68" />
         <source>%1 samples within every limit</source>
         <translation>%1 个样本，均在限值内</translation>
     </message>
@@ -9844,22 +9845,17 @@ Samples: %3</source>
 <context>
     <name>imudesk::ui::MainWindow</name>
     <message>
-        <location filename="../ui/workspace/main_window.cpp" line="+353" />
+        <location filename="../ui/workspace/main_window.cpp" line="+354" />
         <source>Choose a port first.</source>
         <translation>请先选择串口。</translation>
     </message>
     <message>
-        <location line="+50" />
-        <source>Could not save the screenshot to %1: %2</source>
-        <translation>无法将截图保存到 %1：%2</translation>
-    </message>
-    <message>
-        <location line="+46" />
+        <location line="+82" />
         <source>ImuDesk</source>
         <translation>ImuDesk</translation>
     </message>
     <message>
-        <location line="+9" />
+        <location line="+5" />
         <source>About ImuDesk</source>
         <translation>关于 ImuDesk</translation>
     </message>
@@ -11293,7 +11289,7 @@ Default: %2</source>
 <context>
     <name>imudesk::ui::StationTile</name>
     <message>
-        <location filename="../ui/station/station_view.cpp" line="+235" />
+        <location filename="../ui/station/station_view.cpp" line="+236" />
         <source>%1 → %2</source>
         <translation>%1 → %2</translation>
     </message>
@@ -11342,12 +11338,12 @@ Default: %2</source>
     <name>imudesk::ui::StationView</name>
     <message>
         <location line="+313" />
-        <location line="+79" />
+        <location line="+72" />
         <source>Production station</source>
         <translation>生产测试台</translation>
     </message>
     <message>
-        <location line="-78" />
+        <location line="-71" />
         <source>Plan:</source>
         <translation>测试计划：</translation>
     </message>
@@ -11468,17 +11464,12 @@ Default: %2</source>
     </message>
     <message>
         <location line="+7" />
-        <location line="+196" />
+        <location line="+179" />
         <source>%1 (simulated)</source>
         <translation>%1（模拟）</translation>
     </message>
     <message>
-        <location line="-140" />
-        <source>Could not save the screenshot to %1: %2</source>
-        <translation>无法将截图保存到 %1：%2</translation>
-    </message>
-    <message>
-        <location line="+33" />
+        <location line="-107" />
         <source>The plan %1 could not be opened: %2</source>
         <translation>无法打开测试计划 %1：%2</translation>
     </message>
@@ -11928,6 +11919,14 @@ Edit it (Edit…) and start again.</source>
         <location line="+7" />
         <source>lap %1 of %2 · %3 deg/s</source>
         <translation>第 %1 圈，共 %2 圈 · %3 deg/s</translation>
+    </message>
+</context>
+<context>
+    <name>imudesk::ui::WindowHelpers</name>
+    <message>
+        <location filename="../ui/workspace/window_helpers.cpp" line="+31" />
+        <source>Could not save the screenshot to %1: %2</source>
+        <translation>无法将截图保存到 %1：%2</translation>
     </message>
 </context>
 <context>

@@ -6,6 +6,7 @@
 #include "station/run_folder.h"
 #include "station/station_model.h"
 #include "station/station_runner.h"
+#include "workspace/window_helpers.h"
 
 #include <QCheckBox>
 #include <QCloseEvent>
@@ -633,29 +634,12 @@ void StationView::showError(const QString &message)
         m_errorPresenter(message);
         return;
     }
-    // Never block: a non-modal box, reused (the text appended) while it is open.
-    if (m_errorBox) {
-        constexpr qsizetype kMaxText = 4000;
-        if (m_errorBox->text().size() < kMaxText)
-            m_errorBox->setText(m_errorBox->text() + QStringLiteral("\n\n") + message);
-        return;
-    }
-    auto *box = new QMessageBox(QMessageBox::Warning, tr("Production station"), message, QMessageBox::Ok, this);
-    box->setAttribute(Qt::WA_DeleteOnClose);
-    box->setWindowModality(Qt::NonModal);
-    box->show();
-    m_errorBox = box;
+    WindowHelpers::showError(this, m_errorBox, tr("Production station"), message);
 }
 
 bool StationView::saveScreenshot(const QString &path, QString *error)
 {
-    QImageWriter writer(path, "png");
-    if (!writer.write(grab().toImage())) {
-        if (error)
-            *error = tr("Could not save the screenshot to %1: %2").arg(path, writer.errorString());
-        return false;
-    }
-    return true;
+    return WindowHelpers::saveScreenshot(this, path, error);
 }
 
 void StationView::rememberSettings()

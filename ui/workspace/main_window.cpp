@@ -6,6 +6,7 @@
 #include "workspace/link_factory.h"
 #include "workspace/preferences_dialog.h"
 #include "workspace/tool_actions.h"
+#include "workspace/window_helpers.h"
 
 #include "charts/chart_panel.h"
 #include "charts/comparison_chart.h"
@@ -396,14 +397,7 @@ bool MainWindow::isRefreshing() const
 
 bool MainWindow::saveScreenshot(const QString &path, QString *error)
 {
-    const QPixmap pixmap = grab();
-    QImageWriter writer(path, "png");
-    if (!writer.write(pixmap.toImage())) {
-        if (error)
-            *error = tr("Could not save the screenshot to %1: %2").arg(path, writer.errorString());
-        return false;
-    }
-    return true;
+    return WindowHelpers::saveScreenshot(this, path, error);
 }
 
 StationView *MainWindow::station() const
@@ -439,18 +433,7 @@ void MainWindow::presentError(const QString &message)
         m_errorPresenter(message);
         return;
     }
-    // Never block: a non-modal box, reused while it is open.
-    if (m_errorBox) {
-        constexpr qsizetype kMaxText = 4000;
-        if (m_errorBox->text().size() < kMaxText)
-            m_errorBox->setText(m_errorBox->text() + QStringLiteral("\n\n") + message);
-        return;
-    }
-    auto *box = new QMessageBox(QMessageBox::Warning, tr("ImuDesk"), message, QMessageBox::Ok, this);
-    box->setAttribute(Qt::WA_DeleteOnClose);
-    box->setWindowModality(Qt::NonModal);
-    box->show();
-    m_errorBox = box;
+    WindowHelpers::showError(this, m_errorBox, tr("ImuDesk"), message);
 }
 
 void MainWindow::showAbout()
