@@ -295,9 +295,18 @@ void ModuleRunner::finish()
     Q_EMIT finished();
 }
 
-void ModuleRunner::measure(const QString &name, double value, const QString &unit, double limit, bool ok)
+bool ModuleRunner::measure(const QString &name, double value, const QString &unit, double limit)
 {
+    const bool ok = value <= limit;
     step().values.push_back(Measurement{name, value, unit, upTo(limit), ok});
+    return ok;
+}
+
+bool ModuleRunner::measureMagnitude(const QString &name, double value, const QString &unit, double limit)
+{
+    const bool ok = std::abs(value) <= limit;
+    step().values.push_back(Measurement{name, value, unit, QStringLiteral("|x| ≤ %1").arg(number(limit)), ok});
+    return ok;
 }
 
 void ModuleRunner::info(const QString &name, double value, const QString &unit)
@@ -528,8 +537,11 @@ void ModuleRunner::poll()
         }
         return;
     }
-    if (!m_collecting)
+    if (!m_collecting) {
+        if (m_index >= 0 && planStep().kind == StepKind::Evidence && step().verdict == Verdict::Running)
+            updateProgress(std::min(0.99, m_stepClock.elapsed() / 1000.0 / m_stepSeconds));
         return;
+    }
     // Done when the samples cover the step's time on the device's own clock, not the host's: on
     // a loaded machine the bytes of a second may arrive late. A module that sends nothing is
     // caught by the silence check above, one that sends too little by the time limit here.
@@ -586,26 +598,18 @@ void ModuleRunner::evaluateStatic()
     for (int a = 0; a < 3; ++a) {
         double mean = 0, sd = 0;
         stats([a](const model::Sample &x) { return a == 0 ? x.gyr.x : a == 1 ? x.gyr.y : x.gyr.z; }, mean, sd);
-        measure(QStringLiteral("gyro_std_%1").arg(QLatin1String(axes[a])), sd, QStringLiteral("°/s"), gyroStd,
-                sd <= gyroStd);
-        ok = ok && sd <= gyroStd;
-        step().values.push_back(Measurement{QStringLiteral("gyro_bias_%1").arg(QLatin1String(axes[a])), mean,
-                                            QStringLiteral("°/s"), QStringLiteral("|x| ≤ %1").arg(number(gyroBias)),
-                                            std::abs(mean) <= gyroBias});
-        ok = ok && std::abs(mean) <= gyroBias;
+        ok &= measure(QStringLiteral("gyro_std_%1").arg(QLatin1String(axes[a])), sd, QStringLiteral("°/s"), gyroStd);
+        ok &= measureMagnitude(QStringLiteral("gyro_bias_%1").arg(QLatin1String(axes[a])), mean, QStringLiteral("°/s"),
+                               gyroBias);
     }
     for (int a = 0; a < 3; ++a) {
         double mean = 0, sd = 0;
         stats([a](const model::Sample &x) { return a == 0 ? x.acc.x : a == 1 ? x.acc.y : x.acc.z; }, mean, sd);
         accMean[a] = mean;
-        measure(QStringLiteral("acc_std_%1").arg(QLatin1String(axes[a])), sd * 1000, QStringLiteral("mG"), accStd,
-                sd * 1000 <= accStd);
-        ok = ok && sd * 1000 <= accStd;
+        ok &= measure(QStringLiteral("acc_std_%1").arg(QLatin1String(axes[a])), sd * 1000, QStringLiteral("mG"), accStd);
     }
     const double gErr = (accMean.norm() - 1.0) * 1000.0;
-    step().values.push_back(Measurement{QStringLiteral("gravity_error"), gErr, QStringLiteral("mG"),
-                                        QStringLiteral("|x| ≤ %1").arg(number(tol)), std::abs(gErr) <= tol});
-    ok = ok && std::abs(gErr) <= tol;
+    ok &= measureMagnitude(QStringLiteral("gravity_error"), gErr, QStringLiteral("mG"), tol);
     info(QStringLiteral("samples"), double(n), QString());
     endStep(ok ? Verdict::Pass : Verdict::Fail,
             ok ? tr("%1 samples within every limit").arg(n) : tr("%1 samples; values outside the limits are marked").arg(n));
@@ -637,9 +641,7 @@ void ModuleRunner::evaluateAllan()
                      .arg(std::ceil(tau * 10)));
             return;
         }
-        measure(QStringLiteral("allan_%1").arg(QLatin1String(axes[a])), sigma, QStringLiteral("°/s"), limit,
-                sigma <= limit);
-        ok = ok && sigma <= limit;
+        ok &= measure(QStringLiteral("allan_%1").arg(QLatin1String(axes[a])), sigma, QStringLiteral("°/s"), limit);
     }
     endStep(ok ? Verdict::Pass : Verdict::Fail, tr("σ(%1 s) of each gyro axis").arg(tau));
 }
@@ -667,11 +669,8 @@ void ModuleRunner::evaluateAttitude()
     const double dRoll = wrapDeg(roll - s.number("roll_deg")), dPitch = wrapDeg(pitch - s.number("pitch_deg"));
     info(QStringLiteral("roll"), roll, QStringLiteral("°"));
     info(QStringLiteral("pitch"), pitch, QStringLiteral("°"));
-    step().values.push_back(Measurement{QStringLiteral("roll_error"), dRoll, QStringLiteral("°"),
-                                        QStringLiteral("|x| ≤ %1").arg(number(tol)), std::abs(dRoll) <= tol});
-    step().values.push_back(Measurement{QStringLiteral("pitch_error"), dPitch, QStringLiteral("°"),
-                                        QStringLiteral("|x| ≤ %1").arg(number(tol)), std::abs(dPitch) <= tol});
-    const bool ok = std::abs(dRoll) <= tol && std::abs(dPitch) <= tol;
+    const bool rollOk = measureMagnitude(QStringLiteral("roll_error"), dRoll, QStringLiteral("°"), tol);
+    const bool ok = measureMagnitude(QStringLiteral("pitch_error"), dPitch, QStringLiteral("°"), tol) && rollOk;
     endStep(ok ? Verdict::Pass : Verdict::Fail,
             ok ? tr("mounted as expected") : tr("roll %1°, pitch %2°: the module is not mounted as the plan expects")
                                                  .arg(number(roll), number(pitch)));
@@ -747,20 +746,9 @@ void ModuleRunner::runEvidence()
                                  endStep(Verdict::Pass, QDir::toNativeSeparators(m_options.evidencePath));
                              }));
     connect(&m_deadline, &QTimer::timeout, this, [this] { m_session->stopRecording(); });
-    // Progress while recording.
-    m_stepSeconds = seconds;
-    m_collecting = false;
+    m_stepSeconds = seconds; // poll() shows the progress
     m_session->startRecording(m_options.evidencePath);
     m_deadline.start(int(seconds * 1000));
-    auto *tick = new QTimer(this);
-    tick->start(200);
-    connect(tick, &QTimer::timeout, this, [this, tick, seconds] {
-        if (!m_running || m_index < 0 || planStep().kind != StepKind::Evidence || step().verdict != Verdict::Running) {
-            tick->deleteLater();
-            return;
-        }
-        updateProgress(std::min(0.99, m_stepClock.elapsed() / 1000.0 / seconds));
-    });
 }
 
 } // namespace imudesk::station

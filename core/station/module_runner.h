@@ -86,7 +86,10 @@ private:
     void updateProgress(double fraction);
     StepResult &step() { return m_result.steps[size_t(m_index)]; }
     const PlanStep &planStep() const { return m_plan.steps[size_t(m_index)]; }
-    void measure(const QString &name, double value, const QString &unit, double limit, bool upper);
+    // A value held against an upper limit (measure) or its magnitude against one
+    // (measureMagnitude), added to the running step; true when within.
+    bool measure(const QString &name, double value, const QString &unit, double limit);
+    bool measureMagnitude(const QString &name, double value, const QString &unit, double limit);
     void info(const QString &name, double value, const QString &unit);
 
     // steps

@@ -119,15 +119,14 @@ QString RunFolder::csvHeader()
 QStringList RunFolder::csvRows(const ModuleResult &r)
 {
     QStringList rows;
-    const auto iso = [](const QDateTime &t) { return t.isValid() ? t.toUTC().toString(Qt::ISODateWithMs) : QString(); };
     const QString head = QStringList{csvField(r.serial), csvField(r.product), csvField(r.firmware),
                                      csvField(r.firmwareAfter), csvField(r.port), QString::number(r.attempt),
-                                     verdictKey(r.verdict), iso(r.started), iso(r.finished)}
+                                     verdictKey(r.verdict), isoUtc(r.started), isoUtc(r.finished)}
                              .join(QLatin1Char(','));
     for (size_t i = 0; i < r.steps.size(); ++i) {
         const StepResult &s = r.steps[i];
         const QString stepHead = QStringList{head, QString::number(i + 1), TestPlan::key(s.kind), verdictKey(s.verdict),
-                                             iso(s.started), iso(s.finished)}
+                                             isoUtc(s.started), isoUtc(s.finished)}
                                      .join(QLatin1Char(','));
         if (s.values.empty()) {
             rows << stepHead + QStringLiteral(",,,,,,") + csvField(s.detail);

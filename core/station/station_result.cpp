@@ -29,12 +29,10 @@ QString verdictText(Verdict v)
     return {};
 }
 
-namespace {
-QString isoTime(const QDateTime &t)
+QString isoUtc(const QDateTime &t)
 {
     return t.isValid() ? t.toUTC().toString(Qt::ISODateWithMs) : QString();
 }
-} // namespace
 
 QJsonObject StepResult::toJson() const
 {
@@ -49,8 +47,8 @@ QJsonObject StepResult::toJson() const
                        {QStringLiteral("verdict"), verdictKey(verdict)},
                        {QStringLiteral("detail"), detail},
                        {QStringLiteral("values"), vals},
-                       {QStringLiteral("started"), isoTime(started)},
-                       {QStringLiteral("finished"), isoTime(finished)}};
+                       {QStringLiteral("started"), isoUtc(started)},
+                       {QStringLiteral("finished"), isoUtc(finished)}};
 }
 
 ModuleResult ModuleResult::pending(const QString &port, const TestPlan &plan)
@@ -103,8 +101,8 @@ QJsonObject ModuleResult::toJson() const
                        {QStringLiteral("failed_step"), failed < 0 ? QString() : TestPlan::key(steps[size_t(failed)].kind)},
                        {QStringLiteral("failure"), failureSummary()},
                        {QStringLiteral("attempt"), attempt},
-                       {QStringLiteral("started"), isoTime(started)},
-                       {QStringLiteral("finished"), isoTime(finished)},
+                       {QStringLiteral("started"), isoUtc(started)},
+                       {QStringLiteral("finished"), isoUtc(finished)},
                        {QStringLiteral("evidence"), evidencePath},
                        {QStringLiteral("report"), reportPath},
                        {QStringLiteral("steps"), st}};

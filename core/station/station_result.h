@@ -16,6 +16,8 @@ namespace imudesk::station {
 enum class Verdict { Pending, Running, Pass, Fail, Skipped };
 QString verdictKey(Verdict v);   // "pending", "running", "pass", "fail", "skipped"
 QString verdictText(Verdict v);  // translated
+// A time as the summaries write it: UTC, ISO 8601 with ms; empty when not set.
+QString isoUtc(const QDateTime &t);
 
 struct Measurement {
     QString name;   // e.g. "gyro_std_x"

@@ -231,13 +231,15 @@ const ParamSpec *TestPlan::param(StepKind kind, const QString &k)
     return nullptr;
 }
 
-PlanStep TestPlan::defaultStep(StepKind kind)
+PlanStep TestPlan::defaultStep(StepKind kind, const QVariantMap &overrides)
 {
     PlanStep s;
     s.kind = kind;
     for (const ParamSpec &p : params(kind))
         s.params.insert(QString::fromLatin1(p.key),
                         p.text ? QVariant(QString::fromUtf8(p.defaultText)) : QVariant(p.defaultValue));
+    for (auto it = overrides.begin(); it != overrides.end(); ++it)
+        s.params[it.key()] = it.value();
     return s;
 }
 

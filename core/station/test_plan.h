@@ -72,8 +72,8 @@ public:
     static QString description(StepKind kind);               // translated, one sentence
     static const std::vector<ParamSpec> &params(StepKind kind);
     static const ParamSpec *param(StepKind kind, const QString &key);
-    // A step of the kind with every parameter at its default.
-    static PlanStep defaultStep(StepKind kind);
+    // A step of the kind with every parameter at its default, except those in overrides.
+    static PlanStep defaultStep(StepKind kind, const QVariantMap &overrides = {});
     // The example plan (docs/examples/station-hi14.json is this, saved).
     static TestPlan example();
 

@@ -40,10 +40,7 @@ station::TestPlan benchPlan(double seconds)
     plan.name = QStringLiteral("bench");
     plan.baseDir = QStringLiteral(IMUDESK_SOURCE_DIR "/docs/examples");
     auto add = [&plan](station::StepKind kind, QVariantMap params = {}) {
-        station::PlanStep s = station::TestPlan::defaultStep(kind);
-        for (auto it = params.begin(); it != params.end(); ++it)
-            s.params[it.key()] = it.value();
-        plan.steps.push_back(s);
+        plan.steps.push_back(station::TestPlan::defaultStep(kind, params));
     };
     using station::StepKind;
     add(StepKind::Identify);

@@ -69,10 +69,7 @@ station::TestPlan trayPlan(const QTemporaryDir &dir)
     plan.name = QStringLiteral("tray test");
     plan.baseDir = dir.path();
     auto add = [&plan](station::StepKind kind, QVariantMap params = {}) {
-        station::PlanStep s = station::TestPlan::defaultStep(kind);
-        for (auto it = params.begin(); it != params.end(); ++it)
-            s.params[it.key()] = it.value();
-        plan.steps.push_back(s);
+        plan.steps.push_back(station::TestPlan::defaultStep(kind, params));
     };
     using station::StepKind;
     add(StepKind::Identify, {{QStringLiteral("products"), QStringLiteral("HI14")},

@@ -74,10 +74,7 @@ TestPlan shortPlan()
     TestPlan plan;
     plan.name = QStringLiteral("short tray test");
     auto add = [&plan](StepKind kind, QVariantMap params = {}) {
-        station::PlanStep s = TestPlan::defaultStep(kind);
-        for (auto it = params.begin(); it != params.end(); ++it)
-            s.params[it.key()] = it.value();
-        plan.steps.push_back(s);
+        plan.steps.push_back(station::TestPlan::defaultStep(kind, params));
     };
     add(StepKind::Identify, {{QStringLiteral("products"), QStringLiteral("HI14")},
                              {QStringLiteral("firmware_min"), QStringLiteral("1.6.6")}});
