@@ -18,6 +18,9 @@ case "$mode" in
 esac
 
 jobs="$(nproc 2>/dev/null || echo 2)"
+# ccache (when installed; CMakeLists.txt uses it): paths below the tree are hashed relative to
+# it, so a fresh clone in another folder reuses what an earlier build of the same sources made.
+export CCACHE_BASEDIR="$root" CCACHE_NOHASHDIR=1
 
 install_packages() {
   mapfile -t pkgs < <(grep -Ev '^\s*(#|$)' "$here/debian-packages.txt")
@@ -90,8 +93,18 @@ phase "fresh Debian 12 root: the package list alone configures the project and r
 if [ -n "${IMUDESK_IN_FRESH_ROOT:-}" ]; then
   echo "   skipped: this run is itself inside the fresh root check's root"
 else
-  "$here/check-fresh-debian.sh" --build "$root/build/test"
-  "$here/test-check-fresh-debian.sh"
+  # Both need root (mmdebstrap's root mode, mount namespaces): a user with sudo rights runs them
+  # through sudo, as apt-get above; the build they read stays the user's.
+  as_root=()
+  if [ "$(id -u)" -ne 0 ]; then
+    if ! command -v sudo >/dev/null; then
+      echo "!! the fresh-root check needs root: run this as root, or give this user sudo rights" >&2
+      exit 1
+    fi
+    as_root=(sudo --preserve-env=IMUDESK_FRESH_CACHE,IMUDESK_FRESH_WORKDIR,IMUDESK_DEBIAN_MIRROR)
+  fi
+  "${as_root[@]}" "$here/check-fresh-debian.sh" --build "$root/build/test"
+  "${as_root[@]}" "$here/test-check-fresh-debian.sh"
 fi
 phase "test suite"
 # A test that fails is run once more: only a test that fails twice stops the run (the pty and

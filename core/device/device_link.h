@@ -35,6 +35,9 @@ public:
     };
     Q_DECLARE_FLAGS(Capabilities, Capability)
     virtual Capabilities capabilities() const { return {}; }
+    // Samples stamped with the host clock as they arrive (false for a replayed capture, whose
+    // host times are the recording's): a view can tell a value that stopped arriving by its age.
+    virtual bool isLive() const { return true; }
 
     SampleStore &store() { return m_store; }
     const SampleStore &store() const { return m_store; }

@@ -1,6 +1,7 @@
 #include "sample_store.h"
 
 #include <algorithm>
+#include <bit>
 
 namespace imudesk::device {
 
@@ -19,7 +20,15 @@ void SampleStore::append(const std::vector<model::Sample> &batch)
             m_ring[m_total % m_capacity] = s;
         ++m_total;
         model::mergeFields(m_perField, s);
+        for (uint32_t f = s.fields; f != 0; f &= f - 1)
+            m_fieldTimes[size_t(std::countr_zero(f))] = s.hostTimeNs;
     }
+}
+
+SampleStore::FieldTimes SampleStore::fieldTimes() const
+{
+    std::lock_guard lock(m_mutex);
+    return m_fieldTimes;
 }
 
 void SampleStore::clear()
@@ -28,6 +37,7 @@ void SampleStore::clear()
     m_ring.clear();
     m_total = 0;
     m_perField = model::Sample{};
+    m_fieldTimes = {};
 }
 
 uint64_t SampleStore::totalAppended() const

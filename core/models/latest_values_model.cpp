@@ -1,5 +1,6 @@
 #include "latest_values_model.h"
 
+#include <bit>
 #include <cmath>
 
 #include "model/main_status.h"
@@ -151,7 +152,13 @@ QVariant LatestValuesModel::data(const QModelIndex &index, int role) const
         case UnitColumn: return unitName(row);
         default: return {};
         }
-    case Qt::ToolTipRole: return toolTip(row);
+    case Qt::ToolTipRole:
+        if (isStale(row) && index.column() == ValueColumn)
+            return tr("No new value for %n s: the device stopped sending this quantity (another output "
+                      "content, a polled record that stopped, or a link that went quiet).",
+                      nullptr, m_staleSeconds[size_t(row)]);
+        return toolTip(row);
+    case StaleRole: return isStale(row);
     case Qt::TextAlignmentRole:
         if (index.column() == ValueColumn)
             return QVariant(Qt::AlignRight | Qt::AlignVCenter);
@@ -185,7 +192,22 @@ bool LatestValuesModel::everSeen(Row row) const
     return (m_seenFields & fieldOf(row)) != 0;
 }
 
-void LatestValuesModel::refresh(const std::optional<model::Sample> &sample)
+QString LatestValuesModel::staleText(const QString &value, int ageSeconds)
+{
+    if (ageSeconds < 100)
+        return tr("%1 (%2 s old)", "a value that stopped arriving, with its age").arg(value).arg(ageSeconds);
+    return tr("%1 (%2 min old)", "a value that stopped arriving, with its age").arg(value).arg(ageSeconds / 60);
+}
+
+QString LatestValuesModel::shownValue(Row row) const
+{
+    QString text = m_last ? formatValue(row, *m_last) : missingText();
+    if (const int age = m_staleSeconds[size_t(row)]; age > 0)
+        text = staleText(text, age);
+    return text;
+}
+
+void LatestValuesModel::refresh(const std::optional<model::Sample> &sample, const FieldAges &ages)
 {
     const bool wasUtc = m_last && utcClock(*m_last);
     m_last = sample;
@@ -200,12 +222,18 @@ void LatestValuesModel::refresh(const std::optional<model::Sample> &sample)
     auto flush = [this, &firstChanged](int lastRow) {
         if (firstChanged < 0)
             return;
-        Q_EMIT dataChanged(index(firstChanged, ValueColumn), index(lastRow, ValueColumn), {Qt::DisplayRole});
+        Q_EMIT dataChanged(index(firstChanged, ValueColumn), index(lastRow, ValueColumn),
+                           {Qt::DisplayRole, Qt::ToolTipRole, StaleRole});
         firstChanged = -1;
     };
     for (int r = 0; r < RowCount; ++r) {
         const auto row = Row(r);
-        QString text = sample ? formatValue(row, *sample) : missingText();
+        const uint32_t field = fieldOf(row);
+        const double age = sample && field && sample->has(model::SampleField(field))
+                               ? ages[size_t(std::countr_zero(field))]
+                               : 0.0;
+        m_staleSeconds[size_t(r)] = age >= kStaleAfterS ? int(age) : 0;
+        QString text = shownValue(row);
         if (text == m_values[size_t(r)]) {
             flush(r - 1);
             continue;
@@ -220,7 +248,7 @@ void LatestValuesModel::refresh(const std::optional<model::Sample> &sample)
 void LatestValuesModel::retranslate()
 {
     for (int r = 0; r < RowCount; ++r)
-        m_values[size_t(r)] = m_last ? formatValue(Row(r), *m_last) : missingText();
+        m_values[size_t(r)] = shownValue(Row(r));
     Q_EMIT headerDataChanged(Qt::Horizontal, 0, ColumnCount - 1);
     Q_EMIT dataChanged(index(0, 0), index(RowCount - 1, ColumnCount - 1), {Qt::DisplayRole, Qt::ToolTipRole});
 }

@@ -74,6 +74,13 @@ public:
         RowCount
     };
     enum Column : int { QuantityColumn, ValueColumn, UnitColumn, ColumnCount };
+    // data(): true for a row whose value stopped arriving (views grey it out).
+    static constexpr int StaleRole = Qt::UserRole + 1;
+    // A value that has not arrived for this long is stale: shown with its age.
+    static constexpr double kStaleAfterS = 2.0;
+    // Seconds since each field last arrived (index n = bit n of model::SampleField); a field
+    // at 0 or below counts as fresh.
+    using FieldAges = std::array<double, 32>;
 
     // Shown for a quantity the latest sample does not carry.
     static QString missingText();
@@ -86,7 +93,12 @@ public:
     QVariant headerData(int section, Qt::Orientation orientation, int role = Qt::DisplayRole) const override;
 
     // Shows `sample` (or "—" everywhere when empty); emits dataChanged only for changed cells.
-    void refresh(const std::optional<model::Sample> &sample);
+    // `ages` marks the values that stopped arriving (an HEC495 that streams angles after its
+    // full records: acceleration and rate keep their last value, greyed, with their age).
+    void refresh(const std::optional<model::Sample> &sample, const FieldAges &ages = {});
+    bool isStale(Row row) const { return m_staleSeconds[size_t(row)] > 0; }
+    // The text of a stale value: the value and its age (views size their columns with it).
+    static QString staleText(const QString &value, int ageSeconds);
     // Texts are translated when read; call after the application language changed.
     void retranslate();
     // Units for acceleration and angular rate (values and the unit column follow).
@@ -110,7 +122,10 @@ private:
     QString unitName(Row row) const;
     QString toolTip(Row row) const;
 
+    QString shownValue(Row row) const;
+
     std::array<QString, RowCount> m_values;
+    std::array<int, RowCount> m_staleSeconds{}; // whole seconds since the value arrived, 0 = fresh
     std::optional<model::Sample> m_last;
     uint32_t m_seenFields = 0;
     uint32_t m_seenHi83Bits = 0;

@@ -203,10 +203,17 @@ void ChannelHistory::appendOne(const model::Sample &s)
         }
         m_lastRawDevice = raw;
         m_haveRawDevice = true;
-    } else if (m_haveRawDevice) {
+    } else if (m_haveRawDevice && host - m_clockSeenHost <= kClockHandOverS) {
         device = m_lastDevice; // keeps the device axis non-decreasing
     } else {
-        device = host; // no device clock seen yet: follow the host clock
+        // No device clock yet, or it fell silent while other rows go on (an HEC495 streams
+        // angles without a time after its full records): the host clock carries the axis on
+        // from the last row, so the charts keep moving. A device time that comes back starts
+        // a new segment.
+        // The rows of the hand-over second stood at the clock's last time: the first row
+        // after it steps by the host time since that clock was seen.
+        device = first ? host : m_lastDevice + (m_haveRawDevice ? host - m_clockSeenHost : hostStep);
+        m_haveRawDevice = false;
         if (first)
             m_segments = 1;
     }

@@ -26,7 +26,9 @@
 //          row carries FlagSegmentStart. deviceTimeOffset() is stitched minus raw
 //          device time in the current segment, so the newest data can be shown on the
 //          device's own clock. A row without a device time repeats the previous
-//          row's device time (or uses host time until a device time has been seen).
+//          row's device time; before any device time, and once the clock's frame type has
+//          been silent for kClockHandOverS with no other clock to take over, rows advance the
+//          axis by their host-time step (a device that stops sending its clock still charts).
 //          One frame type's clock drives the axis (the first with a device time, then the
 //          busiest: another type with more than twice its rows in kClockWindow takes over);
 //          the rows of other types count as rows without one; when the owner has sent

@@ -29,6 +29,7 @@ public:
     void open(const QString &path);
     void close() override;
     QString linkKind() const override { return QStringLiteral("HiPNUC replay"); }
+    bool isLive() const override { return false; }
 
     void play();
     void pause();

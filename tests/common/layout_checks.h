@@ -58,7 +58,9 @@ inline QStringList cutOrOutside(QWidget &top, const Options &o = {})
     QStringList problems;
     const QRect window = top.rect().adjusted(-1, -1, 1, 1);
     for (QWidget *child : top.findChildren<QWidget *>()) {
-        if (!child->isVisible() || child->isWindow() || insideScrolledContent(child, &top, o) || parkedByQt(child))
+        // A floating dock is a window of its own: judged on its own (cutOrOutside(dock)).
+        if (!child->isVisible() || child->isWindow() || child->window() != top.window()
+            || insideScrolledContent(child, &top, o) || parkedByQt(child))
             continue;
         const QRect r(child->mapTo(&top, QPoint(0, 0)), child->size());
         if (!window.contains(r))

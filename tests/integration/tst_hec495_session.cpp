@@ -3,6 +3,8 @@
 // every settings command with typed results, a baud change the session follows, address
 // changes, auto-baud, RS-485 retries, and a planar calibration run.
 #include "device/hec495_session.h"
+#include "models/latest_values_model.h"
+#include "plot/channel_history.h"
 #include "record/capture_exporter.h"
 #include "record/file_analysis.h"
 #include "record/replay_session.h"
@@ -13,6 +15,9 @@
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QTimer>
+
+#include <chrono>
 
 #include <functional>
 #include <memory>
@@ -377,6 +382,68 @@ private Q_SLOTS:
         const auto again = await(s, s.saveCalibration());
         QVERIFY(again);
         QCOMPARE(again->status, Hec495Result::Status::Failed);
+    }
+
+    // The demo compass (imudesk --link hec495): polled full records, then 50 Hz angles without
+    // a device time once its 3 s after power-on are over. Past 10 s the charts' device axis
+    // still moves with the angles, the heading keeps one convention (±180, as the full
+    // records), and acceleration, rate and device time are stale with their age while the
+    // angles stay live.
+    void demoCompassChartsPastTenSeconds()
+    {
+        Hec495Options o; // as LinkFactory::connectSimulatedHec495
+        o.rateHz = 50;
+        o.motion = Motion::Spin; // the heading passes 180
+        auto pty = serve(o);
+        Hec495Session s;
+        s.open(pty->devicePath(), o.baud);
+        QTRY_COMPARE_WITH_TIMEOUT(s.state(), SessionState::Connected, 5000);
+        // The views' clock: the charts' history and the values with their ages, as the workspace.
+        plot::ChannelHistory history;
+        models::LatestValuesModel values;
+        uint64_t next = 0;
+        QTimer viewClock;
+        viewClock.setInterval(30);
+        QObject::connect(&viewClock, &QTimer::timeout, [&] {
+            history.append(s.store().since(next, SIZE_MAX, &next));
+            models::LatestValuesModel::FieldAges ages{};
+            const auto times = s.store().fieldTimes();
+            const int64_t now = std::chrono::duration_cast<std::chrono::nanoseconds>(
+                                    std::chrono::steady_clock::now().time_since_epoch()).count();
+            for (size_t f = 0; f < ages.size(); ++f)
+                ages[f] = times[f] > 0 ? double(now - times[f]) / 1e9 : 0.0;
+            values.refresh(s.store().latestPerField(), ages);
+        });
+        viewClock.start();
+        QTRY_VERIFY_WITH_TIMEOUT(s.streaming(), 8000);
+        // Ten seconds of device axis: before, it stopped with the last full record (about 3 s).
+        QTRY_VERIFY_WITH_TIMEOUT(!history.empty() && history.newestTime(plot::TimeAxis::Device)
+                                                          - history.oldestTime(plot::TimeAxis::Device) >= 10.0,
+                                 16000);
+        viewClock.stop();
+        // The axis moved with the angles: the last 5 s of device time hold about 250 angle rows.
+        const double t1 = history.newestTime(plot::TimeAxis::Device);
+        const plot::IndexRange last5 = history.range(plot::TimeAxis::Device, t1 - 5.0, t1);
+        QVERIFY2(last5.size() >= 200, qPrintable(QString::number(last5.size())));
+        bool passed180 = false;
+        for (size_t r = 0; r < history.size(); ++r) {
+            if (!history.has(plot::Channel::Yaw, r))
+                continue;
+            const double yaw = history.value(plot::Channel::Yaw, r);
+            QVERIFY2(yaw >= -180.0 && yaw <= 180.0, qPrintable(QString::number(yaw)));
+            passed180 = passed180 || yaw < -90.0;
+        }
+        QVERIFY(passed180);
+        // Acceleration, rate and the device time stopped with the full records: stale, with their
+        // age; the angles are live.
+        using Model = models::LatestValuesModel;
+        for (Model::Row row : {Model::AccX, Model::GyrZ, Model::DeviceTime}) {
+            QVERIFY2(values.isStale(row), qPrintable(values.valueText(row)));
+            QVERIFY(values.index(row, Model::ValueColumn).data(Model::StaleRole).toBool());
+            QVERIFY2(values.valueText(row).contains(QLatin1String(" s old)")), qPrintable(values.valueText(row)));
+        }
+        for (Model::Row row : {Model::Roll, Model::Pitch, Model::Yaw})
+            QVERIFY2(!values.isStale(row), qPrintable(values.valueText(row)));
     }
 };
 

@@ -62,6 +62,65 @@ struct Bench {
 class TstConfigPanel : public QObject {
     Q_OBJECT
 private Q_SLOTS:
+    // Device > Configuration on a connected module: the panel reads every setting as it opens
+    // (before, the table stayed empty until Read all); shown again later, it reads no more.
+    void readsTheDeviceWhenItOpens()
+    {
+        Bench b;
+        QVERIFY(b.simulator.start());
+        b.session.setAutoReconnect(false);
+        QSignalSpy identified(&b.session, &device::DeviceSession::identityQueryFinished);
+        b.session.open(b.simulator.devicePath(), 115200);
+        QVERIFY(identified.wait(5000));
+        QVERIFY(!b.panel.controller().identity().usable());
+        QSignalSpy read(&b.panel.controller(), &ConfigurationController::readFinished);
+        b.panel.show();
+        QVERIFY(read.wait(10000));
+        QVERIFY(read.first().at(0).toBool());
+        QVERIFY(b.panel.controller().identity().usable());
+        QVERIFY(b.cell("ATT.MODE", SettingsTableModel::DeviceColumn).data().toString().startsWith(QLatin1String("1")));
+        b.panel.hide();
+        b.panel.show();
+        QCoreApplication::processEvents();
+        QVERIFY(!b.panel.controller().busy());
+        QCOMPARE(read.count(), 1);
+    }
+
+    // The output-rate editor: every choice in full ("200 Hz (0.005 s)", not "200… s)"), the
+    // editor as wide as its text, and a choice from the list counts at once (before, only
+    // after Enter).
+    void outputRateEditorReadableAndImmediate()
+    {
+        Bench b;
+        QVERIFY(b.start());
+        b.panel.resize(420, 600); // a narrow right column
+        b.panel.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&b.panel));
+        const QModelIndex cell = b.cell("LOG.HI91", SettingsTableModel::NewColumn);
+        QVERIFY(cell.isValid());
+        b.panel.table()->scrollTo(cell);
+        b.panel.table()->edit(cell);
+        QComboBox *box = nullptr;
+        QTRY_VERIFY((box = b.panel.table()->viewport()->findChild<QComboBox *>()) != nullptr);
+        const int at = box->findData(QStringLiteral("0.005"));
+        QVERIFY(at >= 0);
+        QCOMPARE(box->itemText(at), QStringLiteral("200 Hz (0.005 s)"));
+        QCOMPARE(box->itemText(box->findData(QStringLiteral("1"))), QStringLiteral("1 Hz (1 s)"));
+        const QFontMetrics fm = box->view()->fontMetrics();
+        for (int i = 0; i < box->count(); ++i)
+            QVERIFY2(box->view()->minimumWidth() >= fm.horizontalAdvance(box->itemText(i)),
+                     qPrintable(box->itemText(i)));
+        QVERIFY2(box->width() >= box->sizeHint().width() || box->width() == b.panel.table()->viewport()->width(),
+                 qPrintable(QStringLiteral("%1 < %2").arg(box->width()).arg(box->sizeHint().width())));
+        QVERIFY(box->geometry().right() < b.panel.table()->viewport()->width());
+        // A click on an item in the list: the pending change is there without Enter.
+        box->setCurrentIndex(at);
+        Q_EMIT box->activated(at);
+        QTRY_VERIFY(b.panel.pendingText().contains(QLatin1String("> LOG HI91 ONTIME 0.005")));
+        QTRY_VERIFY(!b.panel.table()->viewport()->findChild<QComboBox *>()
+                    || !b.panel.table()->viewport()->findChild<QComboBox *>()->isVisible());
+    }
+
     void readEditApply()
     {
         Bench b;

@@ -12,6 +12,7 @@
 
 #include <QApplication>
 #include <QDockWidget>
+#include <QLabel>
 #include <QTest>
 
 using namespace imudesk;
@@ -111,6 +112,39 @@ private Q_SLOTS:
         QVERIFY(watch.expired());
         // The data stays on screen after the close.
         QCOMPARE(ws.chartPanel()->history().size(), size_t(200));
+    }
+
+    // CRC errors and frames lost stand out in the status bar once they are not zero (amber, as
+    // a warning flag); statusText() stays plain text.
+    void damageCountsHighlighted()
+    {
+        ui::DeviceWorkspace ws;
+        ws.show();
+        auto link = std::make_unique<ScriptedLink>();
+        ScriptedLink *raw = link.get();
+        QVERIFY(ws.attachLink(std::move(link), QStringLiteral("Scripted bus")));
+        raw->connectNow(model::DeviceIdentity{});
+        auto *label = ws.findChild<QLabel *>(QStringLiteral("statsLabel"));
+        QVERIFY(label);
+        device::SessionStats stats;
+        stats.baud = 115200;
+        stats.rateByType["HI91"] = 100.0;
+        Q_EMIT raw->statsUpdated(stats);
+        QVERIFY2(ws.statusText().contains(QStringLiteral("CRC errors 0 · lost 0")), qPrintable(ws.statusText()));
+        QVERIFY(!label->text().contains(QLatin1String("#ef6c00")));
+        stats.framesLost = 7;
+        Q_EMIT raw->statsUpdated(stats);
+        QVERIFY2(ws.statusText().contains(QStringLiteral("CRC errors 0 · lost 7")), qPrintable(ws.statusText()));
+        const QString html = label->text();
+        const int span = html.indexOf(QLatin1String("#ef6c00"));
+        QVERIFY2(span > 0 && html.indexOf(QLatin1String("lost 7"), span) > span
+                     && html.indexOf(QLatin1String("CRC errors 0")) < span,
+                 qPrintable(html));
+        stats.crcErrors = 2;
+        Q_EMIT raw->statsUpdated(stats);
+        QCOMPARE(label->text().count(QLatin1String("#ef6c00")), 2);
+        QVERIFY(!ws.statusText().contains(QLatin1Char('<')));
+        ws.disconnectDevice();
     }
 
     void simulatedCompassReachesTheViews()

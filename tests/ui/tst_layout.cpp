@@ -20,6 +20,7 @@
 #include "calibration/mag_calibration_wizard.h"
 #include "calibration/mag_sphere_view.h"
 #include "charts/chart_panel.h"
+#include "charts/comparison_chart.h"
 #include "configuration/config_panel.h"
 #include "charts/chart_view.h"
 #include "workspace/connection_bar.h"
@@ -36,6 +37,7 @@
 
 #include <QAbstractScrollArea>
 #include <QAction>
+#include <QChartView>
 #include <QApplication>
 #include <QDir>
 #include <QDockWidget>
@@ -489,6 +491,48 @@ private Q_SLOTS:
         w.findChild<QAction *>(QStringLiteral("resetLayoutAction"))->trigger();
         QVERIFY(!ws->attitudeDock()->isFloating() && ws->attitudeDock()->isVisible());
         QCOMPARE(w.windowSettings().preset, QStringLiteral("monitor"));
+        // Device > Configuration from the Monitor layout: the settings table gets the right
+        // column (before: two rows behind the values at 1366x768), and the panel reads the
+        // device as it opens.
+        presetAction(DeviceWorkspace::LayoutPreset::Monitor)->trigger();
+        QVERIFY(ws->configPanel());
+        w.findChild<QAction *>(QStringLiteral("configurationAction"))->trigger();
+        QCoreApplication::processEvents();
+        QVERIFY(ws->configDock()->isVisible());
+        QTRY_VERIFY_WITH_TIMEOUT(ws->configPanel()->controller().identity().usable(), 15000);
+        QTRY_VERIFY_WITH_TIMEOUT(!ws->configPanel()->controller().busy(), 15000);
+        {
+            const QTableView *table = ws->configPanel()->table();
+            const int rows = table->viewport()->height() / std::max(1, table->verticalHeader()->defaultSectionSize());
+            QVERIFY2(rows >= 10, qPrintable(QStringLiteral("%1 rows of the settings table in view").arg(rows)));
+            const QStringList problems = layoutProblems(w, false);
+            QVERIFY2(problems.isEmpty(), qPrintable(problems.join(QLatin1Char('\n'))));
+        }
+        // View > Compare devices on a laptop screen: the window stays inside the screen (it
+        // grew to 878 px on 768 before) and the comparison is whole.
+        if (laptopScreen()) {
+            presetAction(DeviceWorkspace::LayoutPreset::Monitor)->trigger();
+            w.comparisonDock()->toggleViewAction()->trigger();
+            QCoreApplication::processEvents();
+            QCoreApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);
+            QVERIFY(w.comparisonDock()->isVisible());
+            const QRect avail = w.screen()->availableGeometry();
+            QVERIFY2(w.height() <= avail.height() && w.minimumSizeHint().height() <= avail.height(),
+                     qPrintable(QStringLiteral("window %1 px, least %2, screen %3")
+                                    .arg(w.height())
+                                    .arg(w.minimumSizeHint().height())
+                                    .arg(avail.height())));
+            const QWidget *chart = w.comparisonChart()->chartView();
+            const QRect onScreen(chart->mapToGlobal(QPoint(0, 0)), chart->size());
+            QVERIFY2(avail.contains(onScreen) && chart->height() >= ui::ComparisonChart::kMinimumChartHeight,
+                     qPrintable(QStringLiteral("comparison %1,%2 %3x%4")
+                                    .arg(onScreen.x()).arg(onScreen.y()).arg(onScreen.width()).arg(onScreen.height())));
+            QStringList problems = layoutProblems(w, false);
+            if (w.comparisonDock()->isFloating())
+                problems << cutOrOutside(*w.comparisonDock());
+            QVERIFY2(problems.isEmpty(), qPrintable(problems.join(QLatin1Char('\n'))));
+            w.comparisonDock()->toggleViewAction()->trigger();
+        }
         // A recording opens its panel.
         w.disconnectDevice();
     }

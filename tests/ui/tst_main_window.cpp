@@ -5,6 +5,8 @@
 #include "workspace/language_switcher.h"
 #include "attitude/attitude_widget.h"
 #include "charts/chart_panel.h"
+#include "charts/comparison_chart.h"
+#include "workspace/help_dialogs.h"
 #include "workspace/command_log_widget.h"
 #include "workspace/device_workspace.h"
 #include "workspace/main_window.h"
@@ -27,7 +29,11 @@
 #include <QTableView>
 #include <QTemporaryDir>
 #include <QDockWidget>
+#include <QLineSeries>
+#include <QTabWidget>
+#include <QTableWidget>
 #include <QTest>
+#include <QTextBrowser>
 
 #include <set>
 
@@ -201,6 +207,116 @@ private Q_SLOTS:
         QTRY_COMPARE(w.session().state(), imudesk::device::SessionState::Closed);
         QTRY_VERIFY(!w.simulator());
         QVERIFY2(errors.isEmpty(), qPrintable(errors.join(QLatin1Char('\n'))));
+    }
+
+    // View > Compare devices with two devices, the second tab in the back: both lines move
+    // (before, only the front tab's history grew), and still with an unconnected tab in front.
+    void compareDrawsEveryDeviceWhicheverTabIsInFront()
+    {
+        MainWindow w;
+        QStringList errors;
+        w.setErrorPresenter([&errors](const QString &m) { errors << m; });
+        w.resize(1366, 768);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        imudesk::sim::SimOptions options;
+        options.motion = imudesk::sim::Motion::Spin;
+        QString error;
+        QVERIFY2(w.connectSimulated(options, 0, &error), qPrintable(error));
+        w.newWorkspace();
+        QVERIFY2(w.connectSimulatedHec495(&error), qPrintable(error));
+        QCOMPARE(w.workspaceCount(), 2);
+        auto *tabs = w.findChild<QTabWidget *>();
+        QVERIFY(tabs);
+        auto *hi14 = w.workspace(0), *hec = w.workspace(1);
+        QTRY_VERIFY_WITH_TIMEOUT(hec->chartPanel()->history().size() > 10, 10000);
+        QTRY_VERIFY_WITH_TIMEOUT(hi14->link().store().totalAppended() > 10, 10000);
+        w.comparisonDock()->toggleViewAction()->trigger();
+        QVERIFY(w.comparisonDock()->isVisible());
+        imudesk::ui::ComparisonChart *compare = w.comparisonChart();
+        compare->setChannel(imudesk::plot::Channel::Roll);
+        QCOMPARE(compare->sources().size(), size_t(2));
+        // Two legend names for two devices.
+        QVERIFY(compare->series(0)->name() != compare->series(1)->name());
+        const auto newestX = [compare](int i) {
+            const QList<QPointF> points = compare->series(i)->points();
+            return points.isEmpty() ? -1.0 : points.last().x();
+        };
+        const auto bothMove = [&](const char *when) {
+            const uint64_t hecRows = hec->chartPanel()->history().totalAppended();
+            const uint64_t hi14Rows = hi14->chartPanel()->history().totalAppended();
+            const double x0 = newestX(0), x1 = newestX(1);
+            QTRY_VERIFY2_WITH_TIMEOUT(hec->chartPanel()->history().totalAppended() > hecRows + 20, when, 5000);
+            QTRY_VERIFY2_WITH_TIMEOUT(hi14->chartPanel()->history().totalAppended() > hi14Rows + 20, when, 5000);
+            QTRY_VERIFY2_WITH_TIMEOUT(newestX(0) > x0 + 0.3 && newestX(1) > x1 + 0.3, when, 5000);
+        };
+        // The compass's tab in the back.
+        tabs->setCurrentIndex(0);
+        QVERIFY(!hec->isVisible());
+        bothMove("second tab in the back");
+        // An unconnected tab in front: both devices in the back, still live.
+        w.newWorkspace();
+        QCOMPARE(tabs->currentIndex(), 2);
+        QVERIFY(!hi14->isVisible() && !hec->isVisible());
+        bothMove("an unconnected tab in front");
+        QVERIFY2(errors.isEmpty(), qPrintable(errors.join(QLatin1Char('\n'))));
+    }
+
+    // Two simulated HI14 connected from the connection bar are two devices: each its own serial
+    // number, and the comparison tells them apart (before, one serial and one legend name).
+    void twoSimulatedModulesAreTwoDevices()
+    {
+        MainWindow w;
+        w.setErrorPresenter([](const QString &) {});
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        auto *connect = w.findChild<QAction *>(QStringLiteral("connectAction"));
+        QVERIFY(connect);
+        for (int i = 0; i < 2; ++i) {
+            if (i == 1)
+                w.newWorkspace();
+            w.connectionBar()->selectPort(PortChoice::simulated(QStringLiteral("HI14"), QStringLiteral("1.7.1")));
+            QTRY_VERIFY(connect->isEnabled());
+            connect->trigger();
+            QTRY_VERIFY_WITH_TIMEOUT(w.workspace(i)->identity() && !w.workspace(i)->identity()->serial.empty(), 10000);
+        }
+        QVERIFY(w.workspace(0)->identity()->serial != w.workspace(1)->identity()->serial);
+        QCOMPARE(w.workspace(0)->title(), w.workspace(1)->title());
+        const auto &sources = w.comparisonChart()->sources();
+        QCOMPARE(sources.size(), size_t(2));
+        QVERIFY2(sources[0].first != sources[1].first, qPrintable(sources[0].first));
+        QVERIFY(sources[1].first.contains(QString::fromStdString(w.workspace(1)->identity()->serial)));
+    }
+
+    // Help has the user guide (the guide's own text) and the keyboard shortcuts (read from the
+    // window's actions), beside About.
+    void helpMenuGuideAndShortcuts()
+    {
+        MainWindow w;
+        w.setErrorPresenter([](const QString &) {});
+        w.show();
+        auto *guide = w.findChild<QAction *>(QStringLiteral("userGuideAction"));
+        auto *keys = w.findChild<QAction *>(QStringLiteral("shortcutsAction"));
+        QVERIFY(guide && keys);
+        QCOMPARE(guide->shortcut(), QKeySequence(QKeySequence::HelpContents));
+        guide->trigger();
+        auto *dialog = w.findChild<imudesk::ui::UserGuideDialog *>();
+        QVERIFY(dialog && dialog->isVisible());
+        const QString text = dialog->browser()->toPlainText();
+        QVERIFY2(text.contains(QLatin1String("Production station")), qPrintable(text.left(200)));
+        QVERIFY(text.contains(QLatin1String("Getting started with the simulator")));
+        QVERIFY(!text.contains(QLatin1String("![")));
+        keys->trigger();
+        auto *shortcuts = w.findChild<imudesk::ui::ShortcutsDialog *>();
+        QVERIFY(shortcuts && shortcuts->isVisible());
+        QMap<QString, QString> rows;
+        for (int r = 0; r < shortcuts->table()->rowCount(); ++r)
+            rows.insert(shortcuts->table()->item(r, 0)->text(), shortcuts->table()->item(r, 1)->text());
+        QCOMPARE(rows.value(QStringLiteral("Connect")), QKeySequence(Qt::CTRL | Qt::Key_K).toString(QKeySequence::NativeText));
+        QCOMPARE(rows.value(QStringLiteral("Production station")),
+                 QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_P).toString(QKeySequence::NativeText));
+        QVERIFY(rows.contains(QStringLiteral("User guide")));
+        QVERIFY(rows.contains(QStringLiteral("Configuration")));
     }
 
     void takeOneSampleAndPps()

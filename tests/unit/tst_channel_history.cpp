@@ -420,6 +420,37 @@ private Q_SLOTS:
         QVERIFY(nonDecreasing(h, TimeAxis::Device));
     }
 
+    // A device that sends its clock in some frames only and then stops sending them (the
+    // HEC495's full records, then angles alone): after kClockHandOverS the host clock carries
+    // the device axis on, so the charts keep moving; a device time that comes back starts a
+    // new segment.
+    void deviceClockFallsSilent()
+    {
+        ChannelHistory h;
+        for (int i = 0; i < 100; ++i) // 1 s of records, device time 5000 ms onwards
+            h.append(makeSample(int64_t(i) * 10'000'000, 5000.0 + i * 10.0));
+        const double lastClocked = h.newestTime(TimeAxis::Device);
+        const uint32_t angles = model::FieldEuler;
+        for (int i = 100; i < 400; ++i) // 3 s of angles without a device time
+            h.append(makeSample(int64_t(i) * 10'000'000, 0.0, 0.0, angles));
+        QVERIFY(nonDecreasing(h, TimeAxis::Device));
+        // Within the hand-over time the rows repeat the last device time, then they follow
+        // the host clock: the axis has moved on by the host time since the clock fell silent
+        // (0.99 s to 3.99 s).
+        QCOMPARE(h.deviceTime(150), lastClocked);
+        QVERIFY2(std::abs(h.newestTime(TimeAxis::Device) - lastClocked - 3.0) < 1e-6,
+                 qPrintable(QString::number(h.newestTime(TimeAxis::Device) - lastClocked)));
+        QVERIFY(h.deviceTime(399) > h.deviceTime(398));
+        QCOMPARE(h.segmentCount(), 1);
+        // The clock comes back: a new segment, right after the last row.
+        h.append(makeSample(4'000'000'000, 9000.0));
+        QCOMPARE(h.segmentCount(), 2);
+        QVERIFY(h.flags(400) & ChannelHistory::FlagSegmentStart);
+        QVERIFY(h.deviceTime(400) > h.deviceTime(399));
+        QVERIFY(h.deviceTime(400) - h.deviceTime(399) < 0.02);
+        QVERIFY(nonDecreasing(h, TimeAxis::Device));
+    }
+
     void nearestRow()
     {
         ChannelHistory h;

@@ -32,7 +32,7 @@ class ComparisonChart : public QWidget {
     Q_OBJECT
 public:
     using Source = std::pair<QString, const plot::ChannelHistory *>;
-    static constexpr int kMinimumChartHeight = 260;
+    static constexpr int kMinimumChartHeight = 180;
 
     explicit ComparisonChart(QWidget *parent = nullptr);
     ~ComparisonChart() override;

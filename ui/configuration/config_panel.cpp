@@ -1,5 +1,6 @@
 #include "configuration/config_panel.h"
 
+#include "device/device_session.h"
 #include "models/settings_table_model.h"
 #include "configuration/mounting_picker.h"
 #include "settings/bandwidth_calculator.h"
@@ -35,7 +36,7 @@ constexpr int kMaxLogBlocks = 2000;
 }
 
 ConfigPanel::ConfigPanel(device::DeviceSession &session, QWidget *parent)
-    : QWidget(parent), m_controller(std::make_unique<ConfigurationController>(session)),
+    : QWidget(parent), m_session(session), m_controller(std::make_unique<ConfigurationController>(session)),
       m_model(new models::SettingsTableModel(this))
 {
     m_confirm = [this](const QString &title, const QString &text) {
@@ -63,6 +64,9 @@ ConfigPanel::ConfigPanel(device::DeviceSession &session, QWidget *parent)
     m_table->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::SelectedClicked
                              | QAbstractItemView::EditKeyPressed);
     m_table->verticalHeader()->hide();
+    // Rows of one line of text (the style's default is 30 px): more settings in view on a laptop.
+    m_table->verticalHeader()->setMinimumSectionSize(m_table->fontMetrics().height() + 8);
+    m_table->verticalHeader()->setDefaultSectionSize(m_table->fontMetrics().height() + 8);
     m_table->setWordWrap(false);
     // What a setting is, what it holds and what it will be: always in view, never behind a
     // horizontal scroll bar. The key, when it takes effect and what reads it back are in every
@@ -355,6 +359,14 @@ QString ConfigPanel::linkText() const
 void ConfigPanel::log(const QString &line, bool error)
 {
     m_replies->appendPlainText(error ? tr("✗ %1").arg(line) : line);
+}
+
+void ConfigPanel::showEvent(QShowEvent *event)
+{
+    QWidget::showEvent(event);
+    if (!m_controller->busy() && !m_controller->identity().usable()
+        && m_session.state() == device::SessionState::Connected)
+        readAll();
 }
 
 void ConfigPanel::readAll()

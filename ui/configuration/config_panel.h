@@ -81,6 +81,9 @@ public Q_SLOTS:
 
 protected:
     void changeEvent(QEvent *event) override;
+    // Opening the panel on a connected device that has not been read yet reads it: the table
+    // shows what the device holds without a press on Read all.
+    void showEvent(QShowEvent *event) override;
 
 private:
     void retranslateUi();
@@ -88,6 +91,7 @@ private:
     void updatePending();
     void log(const QString &line, bool error = false);
 
+    device::DeviceSession &m_session;
     std::unique_ptr<settings::ConfigurationController> m_controller;
     models::SettingsTableModel *m_model = nullptr;
     QString m_port;

@@ -2,8 +2,12 @@
 
 #include "models/settings_table_model.h"
 
+#include <QAbstractItemView>
 #include <QComboBox>
 #include <QLineEdit>
+#include <QStyle>
+
+#include <algorithm>
 
 namespace imudesk::ui {
 
@@ -22,7 +26,33 @@ QWidget *SettingValueDelegate::createEditor(QWidget *parent, const QStyleOptionV
     // Output periods take any whole number of milliseconds, not only the listed ones.
     const QString key = index.data(SettingsTableModel::KeyRole).toString();
     box->setEditable(key.startsWith(QLatin1String("LOG.")) && key != QLatin1String("LOG.HI83.MAP"));
+    // Every item in full in the list, however narrow the cell ("1 H… s)" before).
+    box->setSizeAdjustPolicy(QComboBox::AdjustToContents);
+    QAbstractItemView *list = box->view();
+    list->setTextElideMode(Qt::ElideNone);
+    list->setMinimumWidth(list->sizeHintForColumn(0) + 2 * list->frameWidth()
+                          + list->style()->pixelMetric(QStyle::PM_ScrollBarExtent) + 8);
+    // A choice from the list is the new value at once; typed text still waits for Enter.
+    auto *self = const_cast<SettingValueDelegate *>(this);
+    connect(box, &QComboBox::activated, self, [self, box] {
+        Q_EMIT self->commitData(box);
+        Q_EMIT self->closeEditor(box, QAbstractItemDelegate::NoHint);
+    });
     return box;
+}
+
+void SettingValueDelegate::updateEditorGeometry(QWidget *editor, const QStyleOptionViewItem &option,
+                                                const QModelIndex &index) const
+{
+    QStyledItemDelegate::updateEditorGeometry(editor, option, index);
+    QRect r = editor->geometry();
+    const int wanted = std::max(r.width(), editor->sizeHint().width());
+    const QWidget *view = editor->parentWidget();
+    const int room = view ? view->width() : wanted;
+    r.setWidth(std::min(wanted, room));
+    if (view && r.right() >= room) // wider than the cell: grow to the left, inside the view
+        r.moveRight(room - 1);
+    editor->setGeometry(r);
 }
 
 void SettingValueDelegate::setEditorData(QWidget *editor, const QModelIndex &index) const

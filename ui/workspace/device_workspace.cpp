@@ -20,9 +20,11 @@
 #include <QHeaderView>
 #include <QLabel>
 #include <QStatusBar>
+#include <QStyledItemDelegate>
 #include <QTableView>
 #include <QVBoxLayout>
 
+#include <chrono>
 #include <utility>
 
 namespace imudesk::ui {
@@ -52,8 +54,28 @@ bool rowInDetails(models::LatestValuesModel::Row row, bool everSeen)
 }
 
 // The values and details tables: read-only rows, every column in full (no horizontal scroll bar).
+// A value that stopped arriving (LatestValuesModel::StaleRole) is drawn in the disabled
+// text colour: its number is still there to read, with its age, but no longer live.
+class StaleValueDelegate : public QStyledItemDelegate {
+public:
+    using QStyledItemDelegate::QStyledItemDelegate;
+
+protected:
+    void initStyleOption(QStyleOptionViewItem *option, const QModelIndex &index) const override
+    {
+        QStyledItemDelegate::initStyleOption(option, index);
+        if (index.data(models::LatestValuesModel::StaleRole).toBool()) {
+            const QColor grey = option->palette.color(QPalette::Disabled, QPalette::Text);
+            option->palette.setColor(QPalette::Text, grey);
+            option->palette.setColor(QPalette::HighlightedText, grey);
+            option->font.setItalic(true);
+        }
+    }
+};
+
 void setUpValuesTable(QTableView *view)
 {
+    view->setItemDelegate(new StaleValueDelegate(view));
     view->verticalHeader()->hide();
     // The line height and a pixel of spacing: an INS module's rows (35 with ship motion and
     // inclination, in Chinese) still fit a laptop screen.
@@ -418,20 +440,27 @@ void DeviceWorkspace::stopSimulator()
     m_simulator.reset();
 }
 
+void DeviceWorkspace::pullSamples()
+{
+    const auto batch = link().store().since(m_chartSeq, kMaxSamplesPerTick, &m_chartSeq);
+    if (!batch.empty())
+        m_charts->appendSamples(batch);
+}
+
 void DeviceWorkspace::refreshViews()
 {
     if (window()->isMinimized())
         return;
     // Charts: the samples that arrived since the last tick, then one redraw of what is on screen.
+    pullSamples();
     device::SampleStore &store = link().store();
-    const auto batch = store.since(m_chartSeq, kMaxSamplesPerTick, &m_chartSeq);
-    if (!batch.empty())
-        m_charts->appendSamples(batch);
     m_charts->refresh();
     if (!m_rawDock->visibleRegion().isEmpty())
         m_rawView->refresh();
     const quint64 total = store.totalAppended();
-    if (total == m_shownTotal)
+    // Nothing new: the values only need their ages once a second (a value that stopped
+    // arriving is shown greyed with its age).
+    if (total == m_shownTotal && m_valuesClock.isValid() && m_valuesClock.elapsed() < kStaleCheckIntervalMs)
         return;
     const std::optional<model::Sample> latest = store.latest();
     // The 3D attitude on every tick, so that it moves smoothly.
@@ -452,7 +481,14 @@ void DeviceWorkspace::refreshViews()
     // Before firmware 1.7.0 the MAIN_STATUS bytes are reserved: show them as not reported.
     if (values && m_identity && m_identity->firmware && !m_identity->hasMainStatus())
         values->fields &= ~uint32_t(model::FieldMainStatus);
-    m_valuesModel->refresh(values);
+    models::LatestValuesModel::FieldAges ages{};
+    const device::SampleStore::FieldTimes times = store.fieldTimes();
+    const int64_t now = std::chrono::duration_cast<std::chrono::nanoseconds>(
+                            std::chrono::steady_clock::now().time_since_epoch())
+                            .count();
+    for (size_t f = 0; f < ages.size(); ++f)
+        ages[f] = times[f] > 0 && link().isLive() ? double(now - times[f]) / 1e9 : 0.0;
+    m_valuesModel->refresh(values, ages);
     // The rows follow what the link sends (see rowInTable).
     bool rowsChanged = false;
     const bool anyData = m_valuesModel->everSeen(models::LatestValuesModel::FrameType);
@@ -542,9 +578,11 @@ void DeviceWorkspace::onErrorOccurred(const QString &message)
 QString DeviceWorkspace::statusText() const
 {
     QStringList parts;
-    for (const QLabel *label : {m_stateLabel, m_identityLabel, m_statsLabel})
+    for (const QLabel *label : {m_stateLabel, m_identityLabel})
         if (!label->text().isEmpty())
             parts << label->text();
+    if (!m_statsPlainText.isEmpty())
+        parts << m_statsPlainText; // the label's own text carries the highlight's markup
     return parts.join(QStringLiteral(" | "));
 }
 
@@ -593,7 +631,8 @@ void DeviceWorkspace::updateIdentityLabel()
 void DeviceWorkspace::updateStatsLabel()
 {
     if (!m_stats || !isBusy()) {
-        m_statsLabel->setText(isBusy() && m_baud > 0 ? tr("%1 baud").arg(m_baud) : QString());
+        m_statsPlainText = isBusy() && m_baud > 0 ? tr("%1 baud").arg(m_baud) : QString();
+        m_statsLabel->setText(m_statsPlainText.toHtmlEscaped());
         m_statsLabel->setVisible(!m_statsLabel->text().isEmpty());
         return;
     }
@@ -608,10 +647,24 @@ void DeviceWorkspace::updateStatsLabel()
             rates << tr("%1 %2 Hz").arg(QString::fromStdString(name), rateText(hz));
     parts << (rates.isEmpty() ? tr("no frames") : rates.join(QStringLiteral(", ")));
     parts << tr("load %1%").arg(qRound(s.linkLoad * 100));
-    parts << tr("CRC errors %1").arg(s.crcErrors);
-    parts << tr("lost %1").arg(s.framesLost);
+    // Counts of damage stand out once they are not zero (amber, as a warning flag): a frame
+    // lost is what a bench engineer must not miss among the rates.
+    QStringList shown;
+    for (const QString &p : std::as_const(parts))
+        shown << p.toHtmlEscaped();
+    const auto counted = [&](const QString &text, uint64_t count) {
+        parts << text;
+        shown << (count == 0 ? text.toHtmlEscaped()
+                             : QStringLiteral("<span style=\"background:#ef6c00; color:black; font-weight:bold\">"
+                                              "&nbsp;%1&nbsp;</span>")
+                                   .arg(text.toHtmlEscaped()));
+    };
+    counted(tr("CRC errors %1").arg(s.crcErrors), s.crcErrors);
+    counted(tr("lost %1").arg(s.framesLost), s.framesLost);
     parts << tr("skipped %1 B").arg(s.bytesSkipped);
-    m_statsLabel->setText(parts.join(QStringLiteral(" · ")));
+    shown << parts.last().toHtmlEscaped();
+    m_statsPlainText = parts.join(QStringLiteral(" · "));
+    m_statsLabel->setText(shown.join(QStringLiteral(" · ")));
     m_statsLabel->setVisible(true);
     m_statsLabel->setToolTip(tr("Received %1 bytes, %2 frames, %3 NMEA sentences.\n"
                                 "Errors: %4 CRC, %5 length, %6 payload, %7 NMEA; %8 bytes skipped.\n"
@@ -636,6 +689,7 @@ void DeviceWorkspace::createStatusBar()
     m_identityLabel->setObjectName(QStringLiteral("identityLabel"));
     m_statsLabel = new QLabel(this);
     m_statsLabel->setObjectName(QStringLiteral("statsLabel"));
+    m_statsLabel->setTextFormat(Qt::RichText);
     m_flags = new StatusFlagsWidget(this);
     m_flags->setObjectName(QStringLiteral("statusFlags"));
     m_flags->setSizePolicy(QSizePolicy::Fixed, QSizePolicy::Preferred);

@@ -68,6 +68,7 @@ public:
 
     static constexpr int kRefreshIntervalMs = 30; // default 33 Hz view clock (<= 60 Hz, >= 30 charts/s)
     static constexpr int kValuesIntervalMs = 100; // the values table and status flags: at most 10 Hz
+    static constexpr int kStaleCheckIntervalMs = 1000; // without new samples: the values' ages
     static constexpr size_t kMaxSamplesPerTick = 20000; // a stalled GUI catches up without a burst
     static constexpr int kCommandTimeoutMs = 1000;
 
@@ -170,6 +171,10 @@ public:
     void openDock(QDockWidget *dock);
 
     void refreshViews();
+    // Moves the samples that arrived since the last call into the charts' history, without
+    // drawing: the view clock calls it on screen, and the comparison's clock for a tab that is
+    // not in front, so that every connected device is compared live.
+    void pullSamples();
 
 Q_SIGNALS:
     void stateChanged(imudesk::device::SessionState state);
@@ -260,6 +265,7 @@ private:
     QLabel *m_stateLabel = nullptr;
     QLabel *m_identityLabel = nullptr;
     QLabel *m_statsLabel = nullptr;
+    QString m_statsPlainText; // the stats label's text without the highlight
 
     QTimer m_refreshTimer;
     bool m_autoReconnect = true;

@@ -91,7 +91,10 @@ void DeviceWorkspace::resizeValueColumns()
     };
     m_valuesView->setColumnWidth(Model::QuantityColumn, textWidth(Model::QuantityColumn));
     // Room for the longest number; the MAIN_STATUS text elides (the flags are in the status bar too).
-    const int valueWidth = fm.horizontalAdvance(QStringLiteral("-100676.0703125")) + kCellPadding;
+    // A value that stopped arriving carries its age (LatestValuesModel::staleText).
+    const int valueWidth = std::max(fm.horizontalAdvance(QStringLiteral("-100676.0703125")),
+                                    fm.horizontalAdvance(Model::staleText(QStringLiteral("-1000.000"), 99)))
+        + kCellPadding;
     m_valuesView->setColumnWidth(Model::ValueColumn, valueWidth);
     const int unitWidth = textWidth(Model::UnitColumn);
     m_valuesView->setColumnWidth(Model::UnitColumn, unitWidth);

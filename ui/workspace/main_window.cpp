@@ -10,6 +10,7 @@
 
 #include "charts/chart_panel.h"
 #include "charts/comparison_chart.h"
+#include "workspace/help_dialogs.h"
 #include "workspace/connection_bar.h"
 #include "workspace/console_widget.h"
 #include "workspace/device_workspace.h"
@@ -31,6 +32,7 @@
 #include <QThread>
 #include <QToolBar>
 
+#include <algorithm>
 #include <memory>
 
 namespace imudesk::ui {
@@ -68,12 +70,14 @@ MainWindow::MainWindow(const WindowSettings &settings, QWidget *parent) : QMainW
     addDockWidget(Qt::BottomDockWidgetArea, m_comparisonDock);
     m_comparisonDock->hide();
     m_comparisonTimer.setInterval(50);
-    connect(&m_comparisonTimer, &QTimer::timeout, m_comparison, &ComparisonChart::refresh);
+    connect(&m_comparisonTimer, &QTimer::timeout, this, &MainWindow::refreshComparison);
     connect(m_comparisonDock, &QDockWidget::visibilityChanged, this, [this](bool visible) {
-        if (visible)
+        if (visible) {
+            placeComparison();
             m_comparisonTimer.start();
-        else
+        } else {
             m_comparisonTimer.stop();
+        }
     });
 
     createActions();
@@ -346,6 +350,9 @@ void MainWindow::connectSelected()
         options.model = choice.model.toStdString();
         options.firmware = choice.firmware.toStdString();
         options.motion = m_simMotion;
+        // Each simulated module its own serial number (and noise): two tabs on two simulated
+        // HI14 are two devices. The demo's module (--demo, --simulate) keeps seed 1.
+        options.seed = m_nextSimulatorSeed++;
         QString error;
         if (!connectSimulated(options, baud, &error))
             presentError(error);
@@ -490,12 +497,61 @@ void MainWindow::rebuildViewMenu()
     m_viewMenu->addAction(m_comparisonDock->toggleViewAction());
 }
 
+void MainWindow::placeComparison()
+{
+    // Docked below the tabs when the window can give it its height; on a short screen (a
+    // 1366x768 laptop, where the tab's charts, values and 3D view already take every row) the
+    // window would grow past the screen's bottom (878 px on 768): there the comparison opens
+    // as a window of its own over the lower part of the screen, and the main window returns
+    // to the screen's height.
+    const QScreen *screen = this->screen();
+    if (!screen || m_comparisonDock->isFloating())
+        return;
+    QCoreApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest); // the dock in the layout
+    const QRect avail = screen->availableGeometry();
+    const int frame = isMaximized() || isFullScreen() ? 0 : frameGeometry().height() - geometry().height();
+    if (minimumSizeHint().height() + frame <= avail.height() && frameGeometry().height() <= avail.height())
+        return;
+    const int h = std::max(m_comparisonDock->minimumSizeHint().height(), avail.height() * 2 / 5);
+    m_comparisonDock->setFloating(true);
+    m_comparisonDock->setGeometry(avail.left() + avail.width() / 8, avail.bottom() - h - 8, avail.width() * 3 / 4, h);
+    QCoreApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);
+    if (frameGeometry().height() > avail.height())
+        resize(width(), avail.height() - frame);
+    fitToScreen();
+}
+
+void MainWindow::refreshComparison()
+{
+    // A tab in front feeds its history on its own view clock; the others stop theirs while
+    // hidden, so the comparison feeds them: every connected device is drawn live.
+    for (int i = 0; i < m_tabs->count(); ++i)
+        if (DeviceWorkspace *ws = workspace(i); ws && ws != currentWorkspace())
+            ws->pullSamples();
+    m_comparison->refresh();
+}
+
 void MainWindow::updateComparisonSources()
 {
-    std::vector<ComparisonChart::Source> sources;
+    // One legend name per device: tabs with the same title (two simulated HI14) are told
+    // apart by their serial number, or by their tab's number while none is known.
+    std::vector<QString> titles;
     for (int i = 0; i < m_tabs->count(); ++i)
-        if (DeviceWorkspace *ws = workspace(i))
-            sources.emplace_back(ws->title(), &ws->chartPanel()->history());
+        titles.push_back(workspace(i) ? workspace(i)->title() : QString());
+    std::vector<ComparisonChart::Source> sources;
+    for (int i = 0; i < m_tabs->count(); ++i) {
+        DeviceWorkspace *ws = workspace(i);
+        if (!ws)
+            continue;
+        QString label = titles[size_t(i)];
+        if (std::count(titles.begin(), titles.end(), label) > 1) {
+            const auto &id = ws->identity();
+            label = id && !id->serial.empty()
+                        ? tr("%1, serial %2").arg(label, QString::fromStdString(id->serial))
+                        : tr("%1 (tab %2)").arg(label).arg(i + 1);
+        }
+        sources.emplace_back(label, &ws->chartPanel()->history());
+    }
     m_comparison->setSources(std::move(sources));
 }
 
@@ -589,6 +645,28 @@ void MainWindow::createActions()
     m_aboutAction->setObjectName(QStringLiteral("aboutAction"));
     m_aboutAction->setMenuRole(QAction::AboutRole);
     connect(m_aboutAction, &QAction::triggered, this, &MainWindow::showAbout);
+
+    m_userGuideAction = new QAction(this);
+    m_userGuideAction->setObjectName(QStringLiteral("userGuideAction"));
+    m_userGuideAction->setShortcut(QKeySequence::HelpContents);
+    connect(m_userGuideAction, &QAction::triggered, this, [this] { openHelp(new UserGuideDialog(this)); });
+
+    m_shortcutsAction = new QAction(this);
+    m_shortcutsAction->setObjectName(QStringLiteral("shortcutsAction"));
+    m_shortcutsAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_Slash));
+    connect(m_shortcutsAction, &QAction::triggered, this,
+            [this] { openHelp(new ShortcutsDialog(findChildren<QAction *>(), this)); });
+}
+
+void MainWindow::openHelp(QDialog *dialog)
+{
+    // One of each at a time, not modal: the guide stays open beside the window.
+    for (QDialog *open : findChildren<QDialog *>(dialog->objectName(), Qt::FindDirectChildrenOnly))
+        if (open != dialog)
+            open->close();
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    dialog->show();
+    dialog->raise();
 }
 
 void MainWindow::createMenus()
@@ -615,6 +693,9 @@ void MainWindow::createMenus()
     m_toolsMenu->addSeparator();
     m_toolsMenu->addAction(m_stationAction);
     m_helpMenu = menuBar()->addMenu(QString());
+    m_helpMenu->addAction(m_userGuideAction);
+    m_helpMenu->addAction(m_shortcutsAction);
+    m_helpMenu->addSeparator();
     m_helpMenu->addAction(m_aboutAction);
 }
 
@@ -639,6 +720,10 @@ void MainWindow::retranslateUi()
                                         "as a pulse on SYNC_IN would trigger"));
     m_takeSampleAction->setToolTip(m_takeSampleAction->statusTip());
     m_aboutAction->setText(tr("&About ImuDesk"));
+    m_userGuideAction->setText(tr("&User guide"));
+    m_userGuideAction->setStatusTip(tr("How to connect, chart, configure, calibrate, update, record and test a tray"));
+    m_shortcutsAction->setText(tr("&Keyboard shortcuts"));
+    m_shortcutsAction->setStatusTip(tr("Every key combination of this window, with what it does"));
     m_preferencesAction->setText(tr("&Preferences…"));
     for (int i = 0; i < m_presetActions.size(); ++i) {
         const auto preset = DeviceWorkspace::LayoutPreset(i);

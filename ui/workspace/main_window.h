@@ -17,6 +17,7 @@
 #include <functional>
 
 class QAction;
+class QDialog;
 class QDockWidget;
 class QMenu;
 class QMessageBox;
@@ -70,6 +71,7 @@ public:
     // Reports a problem to the user (a non-blocking message box, or the error presenter).
     void showError(const QString &message) override { presentError(message); }
     QWidget *dialogParent() override { return this; }
+    void arrangeForConfiguration() override { applyLayoutPreset(DeviceWorkspace::LayoutPreset::Configure); }
     ToolActions *tools() const { return m_tools; }
     // Connects a simulated HEC495 compass (the connection bar's "Simulated HEC495").
     bool connectSimulatedHec495(QString *error = nullptr);
@@ -132,11 +134,14 @@ private:
     void connectSelected();
     void presentError(const QString &message);
     void showAbout();
+    void openHelp(QDialog *dialog);
     void onCurrentChanged();
     void updateTitle();
     void updateActions();
     void rebuildViewMenu();
     void updateComparisonSources();
+    void refreshComparison();
+    void placeComparison();
 
     QTabWidget *m_tabs = nullptr;
     ConnectionBar *m_connectionBar = nullptr;
@@ -161,6 +166,8 @@ private:
     QAction *m_versionAction = nullptr;
     QAction *m_takeSampleAction = nullptr; // LOG <MSG> ONMARK ONCE
     QAction *m_aboutAction = nullptr;
+    QAction *m_userGuideAction = nullptr;
+    QAction *m_shortcutsAction = nullptr;
     QAction *m_preferencesAction = nullptr;
     QList<QAction *> m_presetActions;
     QAction *m_resetLayoutAction = nullptr;
@@ -170,6 +177,7 @@ private:
     Preferences m_prefs;
 
     sim::Motion m_simMotion = sim::Motion::Static;
+    uint64_t m_nextSimulatorSeed = 2;
     ErrorPresenter m_errorPresenter;
     QPointer<QMessageBox> m_errorBox;
 };

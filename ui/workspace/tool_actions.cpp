@@ -279,6 +279,10 @@ void ToolActions::scanModbus()
 void ToolActions::showConfiguration()
 {
     if (DeviceWorkspace *ws = m_host->currentWorkspace()) {
+        // Behind the values in the Monitor layout the panel had two rows of its table at
+        // 1366x768: the Configure layout gives it the right column.
+        if (ws->preset() != DeviceWorkspace::LayoutPreset::Configure || ws->configDock()->isFloating())
+            m_host->arrangeForConfiguration();
         ws->configDock()->show();
         ws->configDock()->raise();
     }

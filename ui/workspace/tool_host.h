@@ -24,6 +24,9 @@ public:
     virtual const Preferences &preferences() const = 0;
     // Reports a problem to the user without blocking.
     virtual void showError(const QString &message) = 0;
+    // Device > Configuration: the current tab in the layout made for the settings table (its
+    // whole right column), so that the table's rows can be read on a laptop screen too.
+    virtual void arrangeForConfiguration() = 0;
     // The motion a simulated device started from the tools follows.
     virtual sim::Motion simulatedMotion() const = 0;
 };

@@ -1,5 +1,7 @@
 #include "register_decoder.h"
 
+#include "model/attitude.h"
+
 namespace imudesk::protocol::modbus {
 
 namespace {
@@ -79,7 +81,7 @@ model::Sample RegisterDecoder::hec495Sample(const RegisterBlock &b)
     if (pitch && roll && heading) {
         s.pitch = *pitch;
         s.roll = *roll;
-        s.yaw = *heading;
+        s.yaw = model::wrap180(*heading); // one convention for the compass on every link: ±180
         s.fields |= model::FieldEuler;
     }
     return s;

@@ -2,6 +2,7 @@
 
 #include "bcd.h"
 #include "commands.h"
+#include "model/attitude.h"
 
 #include <cstring>
 
@@ -233,7 +234,9 @@ std::optional<model::Sample> sampleOf(const Reply &reply, int64_t hostTimeNs)
     s.fields = model::FieldEuler;
     s.pitch = reply.pitch;
     s.roll = reply.roll;
-    s.yaw = reply.heading;
+    // One convention per device: the angles reply counts the heading 0..360 (manual 2.4:
+    // 313.71), the full record (2.9) and every chart and table ±180, as Sample::yaw does.
+    s.yaw = model::wrap180(reply.heading);
     return s;
 }
 
