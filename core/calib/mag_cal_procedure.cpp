@@ -56,11 +56,11 @@ MagCalProcedure::MagCalProcedure(Options options)
 
 QString MagCalProcedure::troubleshooting()
 {
-    return tr("1. Check the field at the calibration spot: hold the module still and read |B|; 20-60 uT is normal. "
-              "Below 20 or above 60 uT a magnetic object is near: move away from it or choose another place.\n"
+    return tr("1. Check the field at the calibration spot: hold the module still and read |B|; 20-60 µT is normal. "
+              "Below 20 or above 60 µT a magnetic object is near: move away from it or choose another place.\n"
               "2. Check the rotation: turn about every axis at least 360 deg at 20-100 deg/s, without pausing.\n"
               "3. Check for spatial interference: measure |B| at the same spot in different orientations. If it "
-              "varies by more than 10 uT, choose another place or use 6-axis mode.\n"
+              "varies by more than 10 µT, choose another place or use 6-axis mode.\n"
               "Keep the module in place while turning it, and calibrate it together with everything mounted to it.");
 }
 
@@ -139,7 +139,7 @@ MagCalProcedure::Step MagCalProcedure::handleReply(const AsciiReply &reply, qint
         if (!m_bias.isZero()) {
             m_progress = 100;
             m_state = State::Succeeded;
-            m_message = tr("The device calibrated itself: bias %1, %2, %3 uT.")
+            m_message = tr("The device calibrated itself: bias %1, %2, %3 µT.")
                             .arg(m_bias.x(), 0, 'f', 2)
                             .arg(m_bias.y(), 0, 'f', 2)
                             .arg(m_bias.z(), 0, 'f', 2);

@@ -168,7 +168,7 @@ MagCalResult MagCalibrator::hardIronFit(const std::vector<Eigen::Vector3d> &s, M
     const auto e = EllipsoidFit::hardIronOnly(s, m_options.previousSoftIron, m_options.referenceFieldUt, &st);
     if (!e) {
         r.verdict = MagVerdict::Fail;
-        r.reason = tr("The hard-iron fit found no solution: check that the samples come from the magnetometer in uT.");
+        r.reason = tr("The hard-iron fit found no solution: check that the samples come from the magnetometer in µT.");
         return r;
     }
     r.hardIron = e->center;
@@ -263,7 +263,7 @@ void MagCalibrator::judge(MagCalResult &r, const std::vector<double> &residualsU
                          .arg(kSoftIronMax, 0, 'f', 2);
     }
     if (!planar && (r.fieldUt < kGrossFieldMinUt || r.fieldUt > kGrossFieldMaxUt))
-        fails << tr("field strength %1 uT is not the earth's field (%2..%3 uT)")
+        fails << tr("field strength %1 µT is not the earth's field (%2..%3 µT)")
                      .arg(r.fieldUt, 0, 'f', 1)
                      .arg(kGrossFieldMinUt, 0, 'f', 0)
                      .arg(kGrossFieldMaxUt, 0, 'f', 0);
@@ -272,7 +272,7 @@ void MagCalibrator::judge(MagCalResult &r, const std::vector<double> &residualsU
     const bool full = r.mode == MagCalMode::Full3D;
     const double predicted = r.predictedHeadingErrorDeg;
     if (std::isfinite(predicted) && predicted > kWarnHeadingErrorDeg)
-        warns << tr("the predicted heading error of a level module, %1 deg, is above %2 deg (hard iron +-%3 uT)")
+        warns << tr("the predicted heading error of a level module, %1 deg, is above %2 deg (hard iron +-%3 µT)")
                      .arg(predicted, 0, 'f', 2)
                      .arg(kWarnHeadingErrorDeg, 0, 'f', 1)
                      .arg(r.hardIronSigmaUt, 0, 'f', 2);
@@ -281,18 +281,18 @@ void MagCalibrator::judge(MagCalResult &r, const std::vector<double> &residualsU
         warns << tr("only %1 % of the directions are covered").arg(r.coveragePct, 0, 'f', 0);
     if (!planar && r.fieldUt >= kGrossFieldMinUt && r.fieldUt <= kGrossFieldMaxUt
         && (r.fieldUt < kFieldMinUt || r.fieldUt > kFieldMaxUt))
-        warns << tr("field strength %1 uT is outside the normal %2..%3 uT: move away from magnetic objects")
+        warns << tr("field strength %1 µT is outside the normal %2..%3 µT: move away from magnetic objects")
                      .arg(r.fieldUt, 0, 'f', 1)
                      .arg(kFieldMinUt, 0, 'f', 0)
                      .arg(kFieldMaxUt, 0, 'f', 0);
     if (!planar && r.hardIron.norm() > 1.5 * r.fieldUt)
-        warns << tr("hard iron %1 uT is large (over 1.5 times the field): the sensor may saturate")
+        warns << tr("hard iron %1 µT is large (over 1.5 times the field): the sensor may saturate")
                      .arg(r.hardIron.norm(), 0, 'f', 1);
     if (r.outliers * 20 > int(residualsUt.size()))
         warns << tr("%1 of %2 samples were disturbed and set aside").arg(r.outliers).arg(residualsUt.size());
     if (!planar && m_options.referenceFieldUt > 0 && r.mode == MagCalMode::Full3D
         && std::fabs(r.fieldUt / m_options.referenceFieldUt - 1.0) > 0.15)
-        warns << tr("field strength %1 uT differs from the expected %2 uT by more than 15 %")
+        warns << tr("field strength %1 µT differs from the expected %2 µT by more than 15 %")
                      .arg(r.fieldUt, 0, 'f', 1)
                      .arg(m_options.referenceFieldUt, 0, 'f', 1);
     if (planar && !r.zOffsetKnown)
@@ -313,7 +313,7 @@ void MagCalibrator::judge(MagCalResult &r, const std::vector<double> &residualsU
         r.verdict = MagVerdict::Refused;
         r.reason = std::isfinite(predicted)
             ? tr("The data cannot give an accurate calibration: the predicted heading error of a level module is %1 "
-                 "deg, at most %2 deg is accepted (hard iron +-%3 uT, soft iron +-%4 %).")
+                 "deg, at most %2 deg is accepted (hard iron +-%3 µT, soft iron +-%4 %).")
                   .arg(predicted, 0, 'f', 1)
                   .arg(kRefuseHeadingErrorDeg, 0, 'f', 1)
                   .arg(r.hardIronSigmaUt, 0, 'f', 2)
@@ -327,7 +327,7 @@ void MagCalibrator::judge(MagCalResult &r, const std::vector<double> &residualsU
                       .arg(rawCoverage->missingRotationHint());
         else
             r.reason += QLatin1Char(' ')
-                + tr("The directions are covered, but there are too few samples or they scatter too much (%1 uT RMS "
+                + tr("The directions are covered, but there are too few samples or they scatter too much (%1 µT RMS "
                      "about the fit): collect more, turning slowly and evenly, away from iron and electronics.")
                       .arg(r.residualRmsUt, 0, 'f', 2);
         if (r.hardIronOnlyOffered)

@@ -56,20 +56,20 @@ QString MagEnvironmentCheck::advice() const
     case Status::NotEnoughData:
         return tr("Hold the module at the calibration spot and turn it slowly to a few orientations.");
     case Status::Ok:
-        return tr("The field is %1 uT (normal: %2..%3 uT) and varies by %4 uT between orientations: you can "
+        return tr("The field is %1 µT (normal: %2..%3 µT) and varies by %4 µT between orientations: you can "
                   "calibrate here.")
             .arg(meanFieldUt(), 0, 'f', 1)
             .arg(m_options.minFieldUt, 0, 'f', 0)
             .arg(m_options.maxFieldUt, 0, 'f', 0)
             .arg(spreadUt(), 0, 'f', 1);
     case Status::FieldOutOfRange:
-        return tr("The field is %1 uT, outside the normal %2..%3 uT: a strongly magnetic object is near. Move away "
+        return tr("The field is %1 µT, outside the normal %2..%3 µT: a strongly magnetic object is near. Move away "
                   "from it, or choose another place.")
             .arg(meanFieldUt(), 0, 'f', 1)
             .arg(m_options.minFieldUt, 0, 'f', 0)
             .arg(m_options.maxFieldUt, 0, 'f', 0);
     case Status::SpatialInterference:
-        return tr("The field strength varies by %1 uT between orientations (more than %2 uT): there is spatial "
+        return tr("The field strength varies by %1 µT between orientations (more than %2 µT): there is spatial "
                   "interference here. Choose another place (outdoors, away from buildings and vehicles), or use "
                   "6-axis mode.")
             .arg(spreadUt(), 0, 'f', 1)

@@ -110,7 +110,8 @@ private Q_SLOTS:
             QVERIFY2(text.contains(QString::number(fit.hardIron[i], 'f', 2)), qPrintable(QString::number(fit.hardIron[i], 'f', 2)));
         QVERIFY(text.contains(QStringLiteral("SN4711")));
         QVERIFY(text.contains(QStringLiteral("1.7.1")));
-        QVERIFY(text.contains(QStringLiteral("(uT)")));
+        QVERIFY(text.contains(QStringLiteral("(µT)")));
+        QVERIFY(!text.contains(QStringLiteral("uT")));
 
         // The sphere: before and after, drawn, and in the document as its image resource.
         const QImage sphere = report.sphereImage();
@@ -153,7 +154,58 @@ private Q_SLOTS:
         rec.result.insert(QStringLiteral("verdict"), verdict);
         ui::CalibrationReport report(rec, tableOf(mags));
         QCOMPARE(report.plainText().contains(QStringLiteral("9.31")), troubleshooting);
-        QCOMPARE(report.plainText().contains(QStringLiteral("20-60 uT")), troubleshooting);
+        QCOMPARE(report.plainText().contains(QStringLiteral("20-60 µT")), troubleshooting);
+    }
+
+    // Issue 32 point 5: the report gives the run's figures as its result states them, in the
+    // table and in the sphere's caption and read-out; the caption says what the picture
+    // shows (no "Turn the module..." instruction); µT, never "uT". Point 4: the device's own
+    // calibration is a section with its own verdict, not mixed into ImuDesk's.
+    void figuresOfTheRunAndTheDevicesOwnVerdict_data()
+    {
+        QTest::addColumn<QString>("deviceVerdict");
+        QTest::addColumn<QString>("deviceWord");
+        QTest::newRow("device passed") << QStringLiteral("pass") << calib::MagCalResult::verdictText(calib::MagVerdict::Pass);
+        QTest::newRow("device failed") << QStringLiteral("fail") << calib::MagCalResult::verdictText(calib::MagVerdict::Fail);
+        QTest::newRow("device not run") << QString() << QString();
+    }
+    void figuresOfTheRunAndTheDevicesOwnVerdict()
+    {
+        QFETCH(QString, deviceVerdict);
+        QFETCH(QString, deviceWord);
+        // More samples than the sphere view keeps while samples come in (4000).
+        const auto mags = sphereSamples(6000, {9, -4, 15}, 48, 21);
+        const calib::MagCalResult fit = calib::MagCalibrator().calibrate(mags);
+        QVERIFY2(fit.usable(), qPrintable(fit.reason));
+        calib::CalibrationRecord rec = recordOf(fit, int(mags.size()));
+        if (!deviceVerdict.isEmpty())
+            rec.result.insert(QStringLiteral("device_calibration"),
+                              QJsonObject{{QStringLiteral("flow"), QStringLiteral("mcal")},
+                                          {QStringLiteral("verdict"), deviceVerdict},
+                                          {QStringLiteral("stat"), deviceVerdict == QLatin1String("pass") ? 3 : 4},
+                                          {QStringLiteral("progress"), 100},
+                                          {QStringLiteral("message"), QStringLiteral("device says so")}});
+        ui::CalibrationReport report(rec, tableOf(mags));
+        const QString text = report.plainText();
+        const QString coverage = QString::number(fit.coveragePct, 'f', 0);
+        const QString samples = QString::number(fit.samples);
+        const QString heading = QString::number(fit.predictedHeadingErrorDeg, 'f', 2);
+        QVERIFY(text.contains(coverage) && text.contains(samples) && text.contains(heading));
+        QVERIFY2(report.sphereCaption().contains(samples) && report.sphereCaption().contains(coverage + QStringLiteral(" %")),
+                 qPrintable(report.sphereCaption()));
+        QVERIFY(text.contains(report.sphereCaption()));
+        for (const QString &shown : {text, report.html()}) {
+            QVERIFY(!shown.contains(QStringLiteral("uT")));
+            QVERIFY(!shown.contains(QStringLiteral("Turn the module")));
+        }
+        // ImuDesk's verdict stays the report's verdict; the device's is its own section.
+        QVERIFY(text.contains(calib::MagCalResult::verdictText(fit.verdict)));
+        QCOMPARE(text.contains(QStringLiteral("The device's own calibration")), !deviceVerdict.isEmpty());
+        if (!deviceVerdict.isEmpty()) {
+            QVERIFY(text.contains(QStringLiteral("Device's verdict: ") + deviceWord));
+            QVERIFY(text.contains(QStringLiteral("STAT=")));
+            QVERIFY(!text.contains(QStringLiteral("device_calibration"))); // not a raw metric row
+        }
     }
 
     void otherKindsHaveTheirMetricsAndNoSphere()

@@ -2,8 +2,11 @@
 // pseudo-terminal while it tumbles: every page in turn, the environment check, the
 // rotation page collecting samples on the sphere with the device's MCAL run beside it
 // (STAT=1 and PROGRESS), our fit and its verdict on the result page (kept in the calibration
-// history with its samples), and the heading check.
+// history with its samples), and the heading check. ImuDesk's fit and the device's MCAL run
+// both pressed: two verdicts, neither changing the other. One set of figures per run on the
+// rotation page, the result page, the saved run and its report.
 #include "calib/calibration_history.h"
+#include "calibration/calibration_report.h"
 #include "calib/mag_calibrator.h"
 #include "device/device_session.h"
 #include "calibration/mag_calibration_wizard.h"
@@ -11,6 +14,7 @@
 #include "settings/configuration_controller.h"
 #include "sim/pty_simulator.h"
 
+#include <QJsonObject>
 #include <QPushButton>
 #include <QLabel>
 #include <QDir>
@@ -20,6 +24,32 @@
 #include <QTest>
 
 using namespace imudesk;
+
+namespace {
+
+// A wizard on the rotation page against a tumbling simulated module, history kept in `root`.
+void toRotationPage(ui::MagCalibrationWizard &wizard, const QString &root)
+{
+    wizard.runSaver().setRoot(root);
+    model::DeviceIdentity id;
+    id.productName = "HI14R3";
+    id.serial = "SIM-MAG-2";
+    id.firmware = model::FirmwareVersion{1, 7, 1};
+    wizard.runSaver().setIdentity(id);
+    wizard.show();
+    wizard.next();
+    QTRY_COMPARE_WITH_TIMEOUT(wizard.attMode(), QStringLiteral("1"), 10000);
+    wizard.next();
+    wizard.next();
+    QCOMPARE(wizard.currentId(), int(ui::MagCalibrationWizard::RotationPage));
+}
+
+QString liveVerdictText(const ui::MagCalibrationWizard &wizard)
+{
+    return wizard.findChild<QLabel *>(QStringLiteral("liveVerdict"))->text();
+}
+
+} // namespace
 
 class TstMagCalibrationWizard : public QObject {
     Q_OBJECT
@@ -82,7 +112,7 @@ private Q_SLOTS:
         // A few seconds of tumbling cover only part of the sphere: the full fit is refused, honestly.
         QVERIFY(!wizard.resultText().isEmpty());
         if (wizard.result().verdict == calib::MagVerdict::Refused)
-            QVERIFY(wizard.resultText().contains(QStringLiteral("20-60 uT")));
+            QVERIFY(wizard.resultText().contains(QStringLiteral("20-60 µT")));
         wizard.next();
         QCOMPARE(wizard.currentId(), int(ui::MagCalibrationWizard::ResultPage));
         // The run is kept: result with metrics and verdict, and the samples that were fitted.
@@ -108,6 +138,150 @@ private Q_SLOTS:
         QCOMPARE(wizard.currentId(), int(ui::MagCalibrationWizard::HeadingPage));
         QTRY_VERIFY_WITH_TIMEOUT(wizard.headingTurnedDeg() > 20, 5000);
         QVERIFY(wizard.headingMaxJumpDeg() < ui::MagCalibrationWizard::kMaxHeadingJumpDeg);
+    }
+
+    // Issue 32 point 4: ImuDesk's fit passes, then the device's own calibration runs to its
+    // end. The device then subtracts its calibration from its output; ImuDesk's verdict must
+    // not change for that (before: the shifted samples joined the fit, a pass became a
+    // warning), and the device's verdict is shown beside it, not folded into it.
+    void bothCalibrationsKeepTheirOwnVerdicts()
+    {
+        sim::SimOptions o;
+        o.motion = sim::Motion::Tumble;
+        o.seed = 8;
+        sim::PtySimulator simulator(o);
+        QVERIFY(simulator.start());
+        device::DeviceSession session;
+        session.open(simulator.devicePath(), 115200);
+        QTRY_COMPARE_WITH_TIMEOUT(session.state(), device::SessionState::Connected, 15000);
+        QTemporaryDir history;
+        ui::MagCalibrationWizard wizard(session, model::FirmwareVersion{1, 7, 1});
+        toRotationPage(wizard, history.path());
+        if (QTest::currentTestFailed())
+            return;
+
+        // Turn until the live fit passes, then ImuDesk's fit.
+        const QString pass = calib::MagCalResult::verdictText(calib::MagVerdict::Pass);
+        QTRY_VERIFY_WITH_TIMEOUT(liveVerdictText(wizard).startsWith(QStringLiteral("So far: ") + pass), 90000);
+        QTest::mouseClick(wizard.fitButton(), Qt::LeftButton);
+        QVERIFY(wizard.fitted());
+        QCOMPARE(wizard.result().verdict, calib::MagVerdict::Pass);
+        const calib::MagCalResult ours = wizard.result();
+        const QString headline = wizard.verdictHeadline()->text();
+
+        // The device's calibration, to its end.
+        QSignalSpy deviceDone(&wizard.deviceCalibration(), &calib::MagCalSession::finished);
+        QTest::mouseClick(wizard.startDeviceButton(), Qt::LeftButton);
+        QTRY_COMPARE_WITH_TIMEOUT(deviceDone.size(), 1, 150000);
+        QVERIFY2(deviceDone.at(0).at(0).toBool(), qPrintable(deviceDone.at(0).at(1).toString()));
+        // Samples of the device's corrected output come in; several live-fit seconds pass.
+        const uint64_t after = session.store().totalAppended();
+        QTRY_VERIFY_WITH_TIMEOUT(session.store().totalAppended() > after + 300, 15000);
+        QVERIFY2(!liveVerdictText(wizard).contains(calib::MagCalResult::verdictText(calib::MagVerdict::Warn)),
+                 qPrintable(liveVerdictText(wizard)));
+
+        // ImuDesk's result is the same run, and fitting again gives the same verdict and error.
+        QCOMPARE(wizard.result().verdict, ours.verdict);
+        QCOMPARE(wizard.result().samples, ours.samples);
+        QTest::mouseClick(wizard.fitButton(), Qt::LeftButton);
+        QCOMPARE(wizard.result().verdict, calib::MagVerdict::Pass);
+        QCOMPARE(wizard.result().samples, ours.samples);
+        QVERIFY2(std::abs(wizard.result().fitErrorPct - ours.fitErrorPct) < 1e-9,
+                 qPrintable(QStringLiteral("%1 % then %2 %").arg(ours.fitErrorPct).arg(wizard.result().fitErrorPct)));
+        QCOMPARE(wizard.verdictHeadline()->text(), headline);
+
+        // The result page: ImuDesk's verdict as before, the device's own beside it.
+        wizard.next();
+        QCOMPARE(wizard.currentId(), int(ui::MagCalibrationWizard::ResultPage));
+        QVERIFY(wizard.verdictHeadline()->text().contains(pass));
+        const auto *device = wizard.page(ui::MagCalibrationWizard::ResultPage)->findChild<QLabel *>(QStringLiteral("deviceVerdict"));
+        QVERIFY(device);
+        QVERIFY(device->isVisible());
+        QVERIFY2(device->text().contains(QStringLiteral("MCAL")) && device->text().contains(pass), qPrintable(device->text()));
+        QVERIFY(device->text() != wizard.verdictHeadline()->text());
+        // Kept apart in the saved run too: the top verdict is ImuDesk's fit.
+        const calib::CalibrationHistory h(history.path());
+        const auto runs = h.list(QStringLiteral("SIM-MAG-2"));
+        QCOMPARE(runs.size(), 1);
+        QCOMPARE(runs[0].verdict(), QStringLiteral("pass"));
+        QCOMPARE(runs[0].result.value(QStringLiteral("fit_error_pct")).toDouble(), ours.fitErrorPct);
+        const QJsonObject saved = runs[0].result.value(QStringLiteral("device_calibration")).toObject();
+        QCOMPARE(saved.value(QStringLiteral("verdict")).toString(), QStringLiteral("pass"));
+        QCOMPARE(saved.value(QStringLiteral("stat")).toInt(), 3);
+    }
+
+    // Issue 32 point 5: one set of figures per run. The rotation page once fitted, the result
+    // page, its sphere, the saved run and the report of that run give the same coverage,
+    // sample count and predicted heading error, in µT and never "uT".
+    void oneSetOfFiguresPerRun()
+    {
+        sim::SimOptions o;
+        o.motion = sim::Motion::Tumble;
+        o.seed = 8;
+        sim::PtySimulator simulator(o);
+        QVERIFY(simulator.start());
+        device::DeviceSession session;
+        session.open(simulator.devicePath(), 115200);
+        QTRY_COMPARE_WITH_TIMEOUT(session.state(), device::SessionState::Connected, 15000);
+        QTemporaryDir history;
+        ui::MagCalibrationWizard wizard(session, model::FirmwareVersion{1, 7, 1});
+        toRotationPage(wizard, history.path());
+        if (QTest::currentTestFailed())
+            return;
+        QTRY_VERIFY_WITH_TIMEOUT(liveVerdictText(wizard).startsWith(QStringLiteral("So far: ")
+                                                                    + calib::MagCalResult::verdictText(calib::MagVerdict::Pass)),
+                                 90000);
+        QTest::mouseClick(wizard.fitButton(), Qt::LeftButton);
+        const calib::MagCalResult r = wizard.result();
+        QVERIFY(r.usable());
+        QVERIFY(std::isfinite(r.predictedHeadingErrorDeg));
+        const QString coverage = QString::number(r.coveragePct, 'f', 0) + QStringLiteral(" %");
+        const QString samples = QString::number(r.samples);
+        const QString heading = QString::number(r.predictedHeadingErrorDeg, 'f', 2) + QStringLiteral("°");
+
+        // The module keeps turning: the fitted run stays the run.
+        const uint64_t after = session.store().totalAppended();
+        QTRY_VERIFY_WITH_TIMEOUT(session.store().totalAppended() > after + 300, 15000);
+        // The rotation page's end state and its sphere read out the run.
+        const QString live = wizard.liveFiguresText();
+        for (const QString &figure : {coverage, samples, heading})
+            QVERIFY2(live.contains(QStringLiteral("<b>") + figure), qPrintable(figure + QStringLiteral(" in ") + live));
+        const QString liveSphere = wizard.sphere()->property("readout").toString();
+        QVERIFY2(liveSphere.contains(samples) && liveSphere.contains(coverage) && liveSphere.contains(heading),
+                 qPrintable(liveSphere));
+
+        wizard.next();
+        QCOMPARE(wizard.currentId(), int(ui::MagCalibrationWizard::ResultPage));
+        QCOMPARE(wizard.result().samples, r.samples);
+        const QString page = wizard.resultText();
+        QVERIFY2(page.contains(QStringLiteral("Coverage: ") + coverage), qPrintable(page));
+        QVERIFY2(page.contains(QStringLiteral("Samples: ") + samples), qPrintable(page));
+        QVERIFY2(page.contains(QStringLiteral("Predicted heading error: ") + heading), qPrintable(page));
+        const auto spheres = wizard.page(ui::MagCalibrationWizard::ResultPage)->findChildren<ui::MagSphereView *>();
+        QCOMPARE(spheres.size(), 1);
+        const QString after2 = spheres[0]->property("readout").toString();
+        QVERIFY2(after2.contains(samples) && after2.contains(coverage) && after2.contains(heading), qPrintable(after2));
+        QVERIFY2(!after2.contains(QStringLiteral("Turn the module")), qPrintable(after2));
+
+        // The saved run and its report.
+        const calib::CalibrationHistory h(history.path());
+        const auto runs = h.list(QStringLiteral("SIM-MAG-2"));
+        QCOMPARE(runs.size(), 1);
+        QCOMPARE(runs[0].result.value(QStringLiteral("samples")).toInt(), r.samples);
+        QCOMPARE(runs[0].result.value(QStringLiteral("coverage_pct")).toDouble(), r.coveragePct);
+        QCOMPARE(runs[0].result.value(QStringLiteral("predicted_heading_error_deg")).toDouble(), r.predictedHeadingErrorDeg);
+        calib::SampleTable table;
+        QVERIFY(h.loadSamples(runs[0], table));
+        QCOMPARE(int(table.rows.size()), r.samples);
+        ui::CalibrationReport report(runs[0], table);
+        const QString text = report.plainText();
+        QVERIFY2(text.contains(QString::number(r.coveragePct, 'f', 0)), qPrintable(text));
+        QVERIFY2(text.contains(QString::number(r.predictedHeadingErrorDeg, 'f', 2)), qPrintable(text));
+        QVERIFY2(report.sphereCaption().contains(samples) && report.sphereCaption().contains(coverage),
+                 qPrintable(report.sphereCaption()));
+        QVERIFY(!report.sphereCaption().contains(QStringLiteral("Turn the module")));
+        for (const QString &shown : {page, live, after2, text, report.html()})
+            QVERIFY2(!shown.contains(QStringLiteral("uT")), qPrintable(shown));
     }
 
     void offersTheSwitchOnlyInASixAxisMode()

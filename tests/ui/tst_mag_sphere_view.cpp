@@ -1,7 +1,8 @@
 // The magnetometer sphere view (offscreen): fed with the simulated module's magnetometer
 // while it tumbles (HI91 frames decoded in process), the covered cells grow, the hint of
 // the missing rotation goes away when everything is covered, and the picture shows green
-// cells; with the fitted calibration the corrected samples cover the sphere.
+// cells; with the fitted calibration the corrected samples cover the sphere; a finished run
+// keeps all its samples and is read out from its result.
 #include "calib/mag_calibrator.h"
 #include "calibration/mag_sphere_view.h"
 #include "protocol/hipnuc/payloads.h"
@@ -85,6 +86,38 @@ private Q_SLOTS:
         QVERIFY(std::fabs(view.lastFieldUt() - r.fieldUt) < 2);
         view.clear();
         QCOMPARE(view.sampleCount(), size_t(0));
+    }
+
+    // Issue 32 point 5: a finished run keeps every sample (the first 4000 before, so its cells
+    // and count were not the run's) and is read out from its result: the coverage, sample
+    // count and predicted heading error the result page and the report give, in µT terms,
+    // without the instruction to turn that a live view shows.
+    void finishedRunIsReadOutFromItsResult()
+    {
+        const auto mags = simulatedMag(sim::Motion::Tumble, 60);
+        QVERIFY2(mags.size() > ui::MagSphereView::kMaxSamples, qPrintable(QString::number(mags.size())));
+        const calib::MagCalResult fit = calib::MagCalibrator().calibrate(mags);
+        QVERIFY2(fit.usable(), qPrintable(fit.reason));
+        ui::MagSphereView view;
+        view.resize(400, 440);
+        view.setSamples(mags);
+        view.setCalibration(fit.hardIron, fit.softIron);
+        QCOMPARE(view.sampleCount(), mags.size());
+        QCOMPARE(view.coveragePercent(), fit.coveragePct);
+        view.showRun(fit);
+        const QString readout = view.readoutText();
+        QVERIFY2(readout.contains(QStringLiteral("%1 samples").arg(fit.samples)), qPrintable(readout));
+        QVERIFY2(readout.contains(QStringLiteral("coverage %1 %").arg(fit.coveragePct, 0, 'f', 0)), qPrintable(readout));
+        QVERIFY2(readout.contains(QString::number(fit.predictedHeadingErrorDeg, 'f', 2) + QStringLiteral("°")),
+                 qPrintable(readout));
+        QVERIFY(!readout.contains(QStringLiteral("Turn the module")));
+        QVERIFY(!readout.contains(QStringLiteral("uT")));
+        // Live again after clear(): the live read-out, in µT.
+        view.clear();
+        view.clearCalibration();
+        view.addSample(mags.front());
+        QVERIFY(!view.showsRun());
+        QVERIFY2(view.readoutText().contains(QStringLiteral("µT")), qPrintable(view.readoutText()));
     }
 
     void spinCoversOnlyABand()

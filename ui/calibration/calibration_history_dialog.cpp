@@ -230,6 +230,10 @@ void CalibrationHistoryDialog::runChanged()
     for (const auto &[label, value] : CalibrationReport::metrics(*r))
         html += QStringLiteral("<tr><td>%1</td><td><b>%2</b></td></tr>").arg(esc(label), esc(value));
     html += QStringLiteral("</table>");
+    // The device's own calibration has its own verdict, beside ImuDesk's, not among its metrics.
+    const QString device = CalibrationReport::deviceVerdictText(*r);
+    if (!device.isEmpty())
+        html += QStringLiteral("<p>%1 <b>%2</b></p>").arg(esc(CalibrationReport::tr("Device's verdict:")), esc(device));
     if (!error.isEmpty())
         html += QStringLiteral("<p>%1</p>").arg(esc(tr("The samples could not be read: %1").arg(error)));
     m_details->setText(html);
@@ -239,10 +243,20 @@ void CalibrationHistoryDialog::runChanged()
     m_before->parentWidget()->setVisible(magnetometer);
     if (!magnetometer)
         return;
+    m_before->clearCalibration();
+    m_after->clearCalibration(); // the run shown before may have had one
     m_before->setSamples(mags);
     m_after->setSamples(mags);
     calib::MagCalResult fit;
-    if (calib::MagCalResult::fromJson(r->result, fit) && fit.usable()) {
+    const bool known = calib::MagCalResult::fromJson(r->result, fit);
+    if (!known) {
+        fit = calib::MagCalResult();
+        fit.samples = int(mags.size());
+    }
+    // A finished run: read out with its own figures, no instruction to turn.
+    m_before->showRun(fit);
+    m_after->showRun(fit);
+    if (known && fit.usable()) {
         m_after->setCalibration(fit.hardIron, fit.softIron);
         m_sphereCaption->setText(tr("Right: the same samples corrected by this run's hard and soft iron."));
     } else {

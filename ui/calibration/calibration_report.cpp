@@ -9,8 +9,10 @@
 #include <QDir>
 #include <QFileInfo>
 #include <QJsonArray>
+#include <QJsonObject>
 #include <QLoggingCategory>
 #include <QPainter>
+#include <QStringList>
 #include <QTextDocument>
 
 #include <cmath>
@@ -32,15 +34,15 @@ struct MetricSpec {
 constexpr MetricSpec kSpecs[] = {
     // magnetometer (MagCalResult::toJson)
     {"mode", QT_TRANSLATE_NOOP("CalibrationReport", "Fit"), -1},
-    {"field_ut", QT_TRANSLATE_NOOP("CalibrationReport", "Field strength |B| (uT)"), 2},
-    {"hard_iron", QT_TRANSLATE_NOOP("CalibrationReport", "Hard iron x, y, z (uT)"), 2},
+    {"field_ut", QT_TRANSLATE_NOOP("CalibrationReport", "Field strength |B| (µT)"), 2},
+    {"hard_iron", QT_TRANSLATE_NOOP("CalibrationReport", "Hard iron x, y, z (µT)"), 2},
     {"soft_iron", QT_TRANSLATE_NOOP("CalibrationReport", "Soft-iron matrix (rows, unitless)"), 4},
     {"fit_error_pct", QT_TRANSLATE_NOOP("CalibrationReport", "Fit error (%)"), 2},
-    {"residual_rms_ut", QT_TRANSLATE_NOOP("CalibrationReport", "Residual RMS (uT)"), 3},
+    {"residual_rms_ut", QT_TRANSLATE_NOOP("CalibrationReport", "Residual RMS (µT)"), 3},
     {"coverage_pct", QT_TRANSLATE_NOOP("CalibrationReport", "Sphere coverage (%)"), 0},
     {"predicted_heading_error_deg",
      QT_TRANSLATE_NOOP("CalibrationReport", "Predicted heading error, level module (deg)"), 2},
-    {"hard_iron_sigma_ut", QT_TRANSLATE_NOOP("CalibrationReport", "Hard-iron uncertainty, RMS (uT)"), 3},
+    {"hard_iron_sigma_ut", QT_TRANSLATE_NOOP("CalibrationReport", "Hard-iron uncertainty, RMS (µT)"), 3},
     {"soft_iron_sigma_pct", QT_TRANSLATE_NOOP("CalibrationReport", "Soft-iron uncertainty, RMS (%)"), 2},
     {"eigen_ratio", QT_TRANSLATE_NOOP("CalibrationReport", "Eigenvalue ratio (max/min)"), 2},
     {"samples", QT_TRANSLATE_NOOP("CalibrationReport", "Samples fitted"), -1},
@@ -136,7 +138,8 @@ QString CalibrationReport::verdictText(const QString &verdict)
 QList<QPair<QString, QString>> CalibrationReport::metrics(const calib::CalibrationRecord &record)
 {
     QList<QPair<QString, QString>> out;
-    std::set<QString> known{QStringLiteral("verdict"), QStringLiteral("reason")};
+    // The device's own run is a section of its own (deviceSection), not a metric of the fit.
+    std::set<QString> known{QStringLiteral("verdict"), QStringLiteral("reason"), QStringLiteral("device_calibration")};
     for (const MetricSpec &s : kSpecs) {
         const QString key = QLatin1String(s.key);
         known.insert(key);
@@ -172,8 +175,13 @@ void CalibrationReport::renderSphere()
     if (mags.empty())
         return;
     calib::MagCalResult fit;
-    const bool corrected = m_record.kind == QLatin1String("magnetometer")
-        && calib::MagCalResult::fromJson(m_record.result, fit) && fit.usable();
+    const bool known = m_record.kind == QLatin1String("magnetometer") && calib::MagCalResult::fromJson(m_record.result, fit);
+    if (!known) {
+        // No result to read the figures from: the picture still says what it shows, a count.
+        fit = calib::MagCalResult();
+        fit.samples = int(mags.size());
+    }
+    const bool corrected = known && fit.usable();
     const int panels = corrected ? 2 : 1;
     m_sphere = QImage(kSphereSize * panels, kSphereSize, QImage::Format_RGB32);
     m_sphere.fill(Qt::white);
@@ -189,6 +197,8 @@ void CalibrationReport::renderSphere()
         view.setSamples(mags);
         if (i == 1)
             view.setCalibration(fit.hardIron, fit.softIron);
+        // A finished run: its figures under the sphere, and no instruction to turn.
+        view.showRun(fit);
         view.render(&painter, QPoint(i * kSphereSize, 0));
     }
 }
@@ -234,16 +244,14 @@ void CalibrationReport::buildHtml()
     if (!m_sphere.isNull()) {
         m_document->addResource(QTextDocument::ImageResource, sphereUrl(), QVariant(m_sphere));
         h += QStringLiteral("<h2>%1</h2>").arg(esc(tr("Magnetometer samples")));
-        h += QStringLiteral("<p>%1</p>")
-                 .arg(esc(m_sphere.width() > kSphereSize
-                              ? tr("Left: the raw samples. Right: corrected by the run's hard and soft iron; green "
-                                   "cells are covered directions.")
-                              : tr("The raw samples; green cells are covered directions.")));
+        h += QStringLiteral("<p>%1</p>").arg(esc(sphereCaption()));
         h += QStringLiteral("<p><img src=\"%1\" width=\"%2\" height=\"%3\"></p>")
                  .arg(sphereUrl().toString())
                  .arg(m_sphere.width() / 2)
                  .arg(m_sphere.height() / 2);
     }
+
+    deviceSection(h);
 
     const bool trouble = verdict == QLatin1String("fail") || verdict == QLatin1String("warn");
     if (trouble && r.kind == QLatin1String("magnetometer")) {
@@ -276,6 +284,57 @@ void CalibrationReport::buildHtml()
     h += QStringLiteral("</body></html>");
     m_html = h;
     m_document->setHtml(m_html);
+}
+
+QString CalibrationReport::sphereCaption() const
+{
+    if (m_sphere.isNull())
+        return {};
+    // The figures come from the run's result, as in the metrics table above.
+    const int samples = m_record.result.value(QStringLiteral("samples")).toInt(int(magSamples(m_samples).size()));
+    if (m_sphere.width() > kSphereSize)
+        return tr("Left: the %1 samples of the run as measured (raw). Right: the same samples corrected by the run's "
+                  "hard and soft iron; the green cells are the directions they cover, %2 % of the sphere.")
+            .arg(samples)
+            .arg(m_record.result.value(QStringLiteral("coverage_pct")).toDouble(), 0, 'f', 0);
+    return tr("The %1 samples of the run as measured (raw), around their mean; the green cells are the directions "
+              "they point to. The run has no usable correction to show them corrected.")
+        .arg(samples);
+}
+
+QString CalibrationReport::deviceVerdictText(const calib::CalibrationRecord &record)
+{
+    const QJsonObject device = record.result.value(QStringLiteral("device_calibration")).toObject();
+    if (device.isEmpty())
+        return {};
+    const QString verdict = device.value(QStringLiteral("verdict")).toString();
+    QStringList parts{verdict == QLatin1String("running") ? tr("still running") : verdictText(verdict)};
+    const QString message = device.value(QStringLiteral("message")).toString();
+    if (!message.isEmpty())
+        parts << message;
+    if (device.value(QStringLiteral("stat")).toInt(-1) >= 0)
+        parts << tr("Last reply: STAT=%1, PROGRESS=%2.")
+                     .arg(device.value(QStringLiteral("stat")).toInt())
+                     .arg(device.value(QStringLiteral("progress")).toInt());
+    return parts.join(QLatin1Char(' '));
+}
+
+void CalibrationReport::deviceSection(QString &h) const
+{
+    const QString text = deviceVerdictText(m_record);
+    if (text.isEmpty())
+        return;
+    auto esc = [](const QString &s) { return s.toHtmlEscaped(); };
+    const QString verdict = m_record.result.value(QStringLiteral("device_calibration")).toObject().value(QStringLiteral("verdict")).toString();
+    const QString colour = verdict == QLatin1String("pass") ? QStringLiteral("#1b7f2a")
+        : verdict == QLatin1String("fail")                  ? QStringLiteral("#b00020")
+                                                            : QStringLiteral("#a66300");
+    h += QStringLiteral("<h2>%1</h2>").arg(esc(tr("The device's own calibration")));
+    h += QStringLiteral("<p>%1</p>")
+             .arg(esc(tr("The module's calibration (MCAL) is a separate run with its own verdict; the verdict and "
+                         "the metrics above are ImuDesk's fit of the raw samples.")));
+    h += QStringLiteral("<p><b>%1</b> <span style=\"color: %2;\">%3</span></p>")
+             .arg(esc(tr("Device's verdict:")), colour, esc(text));
 }
 
 QString CalibrationReport::plainText() const

@@ -6,12 +6,14 @@
 #include "workspace/work_place_size.h"
 
 #include <QHBoxLayout>
+#include <QJsonObject>
 #include <QLabel>
 #include <QProgressBar>
 #include <QPushButton>
 #include <QVBoxLayout>
 #include <QWizardPage>
 
+#include <algorithm>
 #include <cmath>
 
 namespace imudesk::ui {
@@ -131,7 +133,7 @@ MagCalibrationWizard::MagCalibrationWizard(device::DeviceSession &session, const
 
     auto *env = textPage(tr("Environment check"),
                          tr("Hold the module at the calibration spot and turn it to a few orientations. The field must "
-                            "be 20-60 uT and vary by no more than 10 uT between orientations."));
+                            "be 20-60 µT and vary by no more than 10 µT between orientations."));
     m_envStatus = new QLabel;
     m_envStatus->setWordWrap(true);
     env->layout()->addWidget(m_envStatus);
@@ -182,6 +184,11 @@ MagCalibrationWizard::MagCalibrationWizard(device::DeviceSession &session, const
     m_verdict->setObjectName(QStringLiteral("verdictHeadline"));
     m_verdict->setWordWrap(true);
     resultPage->addWidget(m_verdict);
+    // The device's own run, with its own verdict: never mixed into ImuDesk's.
+    m_deviceVerdict = new QLabel;
+    m_deviceVerdict->setObjectName(QStringLiteral("deviceVerdict"));
+    m_deviceVerdict->setWordWrap(true);
+    resultPage->addWidget(m_deviceVerdict);
     auto *sl = new QHBoxLayout;
     resultPage->addLayout(sl, 1);
     m_resultLabel = new QLabel;
@@ -209,18 +216,15 @@ MagCalibrationWizard::MagCalibrationWizard(device::DeviceSession &session, const
     setPage(HeadingPage, heading);
 
     connect(m_startDevice, &QPushButton::clicked, this, [this] {
+        refresh(); // the samples so far were taken before the device could change its output
+        m_rawBeforeDevice = m_samples.size();
+        m_deviceStarted = true;
         m_device.start(calib::MagCalProcedure::flowFor(m_firmware));
         m_startDevice->setEnabled(false);
+        showDeviceVerdict();
     });
-    connect(&m_device, &calib::MagCalSession::progressChanged, this, [this](int stat, int progress, const QString &msg) {
-        m_deviceProgress->setValue(progress);
-        m_deviceStatus->setText(stat >= 0 ? tr("Device: STAT=%1 PROGRESS=%2\n%3").arg(stat).arg(progress).arg(msg) : msg);
-    });
-    connect(&m_device, &calib::MagCalSession::finished, this, [this](bool ok, const QString &msg) {
-        m_startDevice->setEnabled(true);
-        m_deviceStatus->setText(ok ? msg
-                                   : msg + QLatin1String("\n\n") + calib::MagCalProcedure::troubleshooting());
-    });
+    connect(&m_device, &calib::MagCalSession::progressChanged, this, &MagCalibrationWizard::deviceProgressed);
+    connect(&m_device, &calib::MagCalSession::finished, this, &MagCalibrationWizard::deviceFinished);
     connect(m_fit, &QPushButton::clicked, this, &MagCalibrationWizard::runFit);
     connect(this, &QWizard::currentIdChanged, this, &MagCalibrationWizard::pageChanged);
     connect(&m_clock, &QTimer::timeout, this, &MagCalibrationWizard::refresh);
@@ -269,7 +273,7 @@ void MagCalibrationWizard::showMode(bool ok, const QString &error)
 
 void MagCalibrationWizard::liveFit()
 {
-    if (currentId() != RotationPage || m_samples.size() < 30)
+    if (currentId() != RotationPage || !m_collecting || m_showingRun || m_samples.size() < 30)
         return;
     // Every n-th sample, at most 3000: a second's work stays a few milliseconds.
     const size_t step = std::max<size_t>(1, m_samples.size() / 3000);
@@ -289,6 +293,26 @@ void MagCalibrationWizard::liveFit()
 
 QString MagCalibrationWizard::liveFiguresText() const
 {
+    if (m_showingRun) {
+        // The fitted run: the figures of its result, as the result page, the saved run and the
+        // report give them.
+        const calib::MagCalResult &r = m_result;
+        QString rows = tr("<tr><td>ImuDesk's fit</td><td align=right><b>%1</b></td><td></td></tr>")
+                           .arg(calib::MagCalResult::verdictText(r.verdict));
+        rows += tr("<tr><td>Coverage</td><td align=right><b>%1 %</b></td><td>of the field directions</td></tr>")
+                    .arg(r.coveragePct, 0, 'f', 0);
+        if (r.verdict != calib::MagVerdict::Refused)
+            rows += tr("<tr><td>Fitted field</td><td align=right><b>%1</b></td><td>µT</td></tr>"
+                       "<tr><td>Fit residual</td><td align=right><b>%2</b></td><td>µT RMS (%3 %)</td></tr>")
+                        .arg(r.fieldUt, 0, 'f', 1)
+                        .arg(r.residualRmsUt, 0, 'f', 2)
+                        .arg(r.fitErrorPct, 0, 'f', 2);
+        if (!std::isnan(r.predictedHeadingErrorDeg))
+            rows += tr("<tr><td>Predicted heading error</td><td align=right><b>%1°</b></td><td>level module</td></tr>")
+                        .arg(accuracyFigure(r.predictedHeadingErrorDeg, 2));
+        rows += tr("<tr><td>Samples</td><td align=right><b>%1</b></td><td></td></tr>").arg(r.samples);
+        return QStringLiteral("<table cellspacing=4>") + rows + QStringLiteral("</table>");
+    }
     const calib::SphereCoverage &cov = m_sphere->coverage();
     QString rows = tr("<tr><td>Coverage</td><td align=right><b>%1 %</b></td><td>(%2 of %3 cells)</td></tr>")
                        .arg(cov.percent(), 0, 'f', 0)
@@ -333,8 +357,14 @@ void MagCalibrationWizard::pageChanged(int id)
     if (id == ModePage)
         readMode();
     if (id == RotationPage) {
+        // A new collection, a new run: the fit of the last one no longer describes it.
         m_samples.clear();
         m_sphere->clear();
+        m_sphere->clearCalibration();
+        m_fitted = false;
+        m_showingRun = false;
+        m_collecting = true;
+        m_rawBeforeDevice = 0;
         m_haveLive = false;
         m_liveVerdict->clear();
         m_liveVerdict->setStyleSheet(QString());
@@ -345,8 +375,10 @@ void MagCalibrationWizard::pageChanged(int id)
         m_headingTurned = m_headingMaxJump = 0;
     }
     if (id == ResultPage) {
-        if (!m_fitted)
+        // Samples came in after a refused fit: the result is the fit of all of them.
+        if (!m_fitted || size_t(m_result.samples) != m_samples.size())
             runFit();
+        showDeviceVerdict();
         saveRun();
     }
 }
@@ -357,10 +389,16 @@ void MagCalibrationWizard::saveRun()
         return;
     calib::SampleTable table;
     table.columns = {QStringLiteral("mag_x"), QStringLiteral("mag_y"), QStringLiteral("mag_z")};
-    table.rows.reserve(m_samples.size());
-    for (const Eigen::Vector3d &m : m_samples)
-        table.rows.push_back({m.x(), m.y(), m.z()});
-    m_saver.save(QStringLiteral("magnetometer"), m_result.toJson(), table);
+    // The samples that were fitted, with the result computed from them.
+    const size_t fitted = std::min(m_samples.size(), size_t(std::max(0, m_result.samples)));
+    table.rows.reserve(fitted);
+    for (size_t i = 0; i < fitted; ++i)
+        table.rows.push_back({m_samples[i].x(), m_samples[i].y(), m_samples[i].z()});
+    QJsonObject result = m_result.toJson();
+    const QJsonObject device = deviceResultJson();
+    if (!device.isEmpty())
+        result.insert(QStringLiteral("device_calibration"), device);
+    m_saver.save(QStringLiteral("magnetometer"), result, table);
     m_runSaved = true;
     m_savedLabel->setText(m_saver.statusText());
 }
@@ -371,12 +409,16 @@ void MagCalibrationWizard::refresh()
     const auto samples = m_session.store().since(m_seq, SIZE_MAX, &next);
     m_seq = next;
     const int page = currentId();
+    bool added = false;
     for (const auto &s : samples) {
         if (s.fields & model::FieldMag) {
             const Eigen::Vector3d m(s.mag.x, s.mag.y, s.mag.z);
             if (page == EnvironmentPage)
                 m_env.add(m);
-            if (page == RotationPage && m_samples.size() < kMaxSamples) {
+            if (page == RotationPage && m_collecting && m_samples.size() < kMaxSamples) {
+                if (m_showingRun) // turning on after a refused fit: back to the live figures
+                    showRunOnRotationPage(false);
+                added = true;
                 const double field = m.norm();
                 m_minField = m_samples.empty() ? field : std::min(m_minField, field);
                 m_maxField = m_samples.empty() ? field : std::max(m_maxField, field);
@@ -400,7 +442,7 @@ void MagCalibrationWizard::refresh()
     }
     if (page == EnvironmentPage)
         m_envStatus->setText(m_env.advice());
-    if (page == RotationPage && !samples.empty())
+    if (page == RotationPage && added)
         m_figures->setText(liveFiguresText());
     if (page == HeadingPage)
         m_headingStatus->setText(tr("Turned %1 deg, largest step %2 deg: %3")
@@ -419,15 +461,137 @@ bool MagCalibrationWizard::headingCheckPassed() const
 
 void MagCalibrationWizard::runFit()
 {
+    refresh(); // every sample that has arrived, so that the fit and what the page shows agree
     m_result = calib::MagCalibrator().calibrate(m_samples);
     m_fitted = true;
     m_runSaved = false;
+    // A usable fit is the run: the collection ends, so its figures stay the run's.
+    if (m_result.usable())
+        m_collecting = false;
+    m_after->clearCalibration();
     m_after->setSamples(m_samples);
     if (m_result.usable())
         m_after->setCalibration(m_result.hardIron, m_result.softIron);
+    m_after->showRun(m_result);
     m_resultLabel->setText(resultText());
     setVerdictHeadline(m_verdict, m_result.verdict,
-                       tr("Verdict: %1. %2").arg(calib::MagCalResult::verdictText(m_result.verdict), m_result.reason));
+                       tr("ImuDesk's fit: %1. %2").arg(calib::MagCalResult::verdictText(m_result.verdict), m_result.reason));
+    showRunOnRotationPage(true);
+}
+
+void MagCalibrationWizard::showRunOnRotationPage(bool run)
+{
+    m_showingRun = run && m_fitted;
+    m_sphere->clear();
+    m_sphere->clearCalibration();
+    m_sphere->setSamples(m_samples);
+    if (m_showingRun) {
+        if (m_result.usable())
+            m_sphere->setCalibration(m_result.hardIron, m_result.softIron);
+        m_sphere->showRun(m_result);
+        m_haveLive = false;
+        setVerdictHeadline(m_liveVerdict, m_result.verdict,
+                           tr("ImuDesk's fit: %1. %2").arg(calib::MagCalResult::verdictText(m_result.verdict),
+                                                           m_result.reason));
+    }
+    m_figures->setText(liveFiguresText());
+}
+
+void MagCalibrationWizard::deviceProgressed(int stat, int progress, const QString &message)
+{
+    m_deviceProgress->setValue(progress);
+    m_deviceStatus->setText(stat >= 0 ? tr("Device: STAT=%1 PROGRESS=%2\n%3").arg(stat).arg(progress).arg(message)
+                                      : message);
+    // Still calibrating: the module has not changed its output yet, so what came in so far is
+    // raw. (Samples read in the few milliseconds since the reply are counted too: the module
+    // reports STAT=2, verifying, before it applies a calibration.)
+    if (!m_device.procedure().finished()) {
+        refresh();
+        m_rawBeforeDevice = m_samples.size();
+    }
+    showDeviceVerdict();
+}
+
+void MagCalibrationWizard::deviceFinished(bool ok, const QString &message)
+{
+    m_startDevice->setEnabled(true);
+    if (ok) {
+        // The module now subtracts its own calibration from what it sends: those samples would
+        // put a second, shifted sphere into ImuDesk's fit. Keep the raw ones, stop collecting.
+        refresh();
+        const bool trimmed = m_samples.size() > m_rawBeforeDevice;
+        if (trimmed)
+            m_samples.resize(m_rawBeforeDevice);
+        m_collecting = false;
+        m_deviceStatus->setText(message + QLatin1String("\n")
+                                + tr("The device now corrects its own output, so ImuDesk's fit keeps the %n raw "
+                                     "sample(s) collected before.",
+                                     nullptr, int(m_samples.size())));
+        // A fit that took samples of the corrected output no longer describes the raw sensor.
+        if (m_fitted && size_t(m_result.samples) > m_samples.size())
+            runFit();
+        else if (trimmed && currentId() == RotationPage)
+            showRunOnRotationPage(m_showingRun);
+    } else {
+        m_deviceStatus->setText(message + QLatin1String("\n\n") + calib::MagCalProcedure::troubleshooting());
+    }
+    showDeviceVerdict();
+}
+
+bool MagCalibrationWizard::deviceVerdict(calib::MagVerdict &verdict) const
+{
+    if (!m_deviceStarted)
+        return false;
+    switch (m_device.procedure().state()) {
+    case calib::MagCalProcedure::State::Succeeded: verdict = calib::MagVerdict::Pass; break;
+    case calib::MagCalProcedure::State::Failed: verdict = calib::MagVerdict::Fail; break;
+    default: verdict = calib::MagVerdict::Warn; break;
+    }
+    return true;
+}
+
+QString MagCalibrationWizard::deviceResultText() const
+{
+    calib::MagVerdict verdict;
+    if (!deviceVerdict(verdict))
+        return {};
+    const calib::MagCalProcedure &p = m_device.procedure();
+    const QString state = p.finished() ? calib::MagCalResult::verdictText(verdict) : tr("still running");
+    QString text = p.flow() == calib::MagCalProcedure::Flow::Mcal
+        ? tr("The device's own calibration (CONFIG MCAL START): %1. %2").arg(state, p.message())
+        : tr("The device's own calibration (in the background): %1. %2").arg(state, p.message());
+    if (p.stat() >= 0)
+        text += QLatin1Char(' ') + tr("Last reply: STAT=%1, PROGRESS=%2.").arg(p.stat()).arg(p.progress());
+    return text;
+}
+
+QJsonObject MagCalibrationWizard::deviceResultJson() const
+{
+    calib::MagVerdict verdict;
+    if (!deviceVerdict(verdict))
+        return {};
+    const calib::MagCalProcedure &p = m_device.procedure();
+    QJsonObject o;
+    o.insert(QStringLiteral("flow"), p.flow() == calib::MagCalProcedure::Flow::Mcal ? QStringLiteral("mcal")
+                                                                                   : QStringLiteral("background"));
+    o.insert(QStringLiteral("state"), QLatin1String(calib::MagCalProcedure::stateName(p.state())));
+    o.insert(QStringLiteral("verdict"), p.finished() ? QLatin1String(calib::verdictName(verdict)) : QLatin1String("running"));
+    o.insert(QStringLiteral("stat"), p.stat());
+    o.insert(QStringLiteral("progress"), p.progress());
+    o.insert(QStringLiteral("message"), p.message());
+    return o;
+}
+
+void MagCalibrationWizard::showDeviceVerdict()
+{
+    calib::MagVerdict verdict;
+    if (!deviceVerdict(verdict)) {
+        m_deviceVerdict->setStyleSheet(QString());
+        m_deviceVerdict->setText(tr("The device's own calibration (MCAL) was not run; the verdict above is "
+                                    "ImuDesk's fit alone."));
+        return;
+    }
+    setVerdictHeadline(m_deviceVerdict, verdict, deviceResultText());
 }
 
 QString MagCalibrationWizard::resultText() const
@@ -437,7 +601,7 @@ QString MagCalibrationWizard::resultText() const
     const calib::MagCalResult &r = m_result;
     QString text;
     if (r.verdict != calib::MagVerdict::Refused)
-        text += tr("Hard iron: %1, %2, %3 uT\nField: %4 uT\nFit error: %5 %\nResidual RMS: %6 uT\n")
+        text += tr("Hard iron: %1, %2, %3 µT\nField: %4 µT\nFit error: %5 %\nResidual RMS: %6 µT\n")
                     .arg(r.hardIron.x(), 0, 'f', 2)
                     .arg(r.hardIron.y(), 0, 'f', 2)
                     .arg(r.hardIron.z(), 0, 'f', 2)
@@ -451,7 +615,7 @@ QString MagCalibrationWizard::resultText() const
                   .arg(calib::MagCalibrator::kWarnHeadingErrorDeg, 0, 'f', 1)
                   .arg(calib::MagCalibrator::kRefuseHeadingErrorDeg, 0, 'f', 0)
             : tr("level module; a warning above %1°").arg(calib::MagCalibrator::kWarnHeadingErrorDeg, 0, 'f', 1);
-        text += tr("Predicted heading error: %1° (%2)\nHard-iron uncertainty: +-%3 uT\nSoft-iron uncertainty: +-%4 %\n")
+        text += tr("Predicted heading error: %1° (%2)\nHard-iron uncertainty: +-%3 µT\nSoft-iron uncertainty: +-%4 %\n")
                     .arg(accuracyFigure(r.predictedHeadingErrorDeg, 2), limits, accuracyFigure(r.hardIronSigmaUt, 2),
                          std::isnan(r.softIronSigmaPct) ? tr("kept from before") : accuracyFigure(r.softIronSigmaPct, 2));
     }

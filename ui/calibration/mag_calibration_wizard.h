@@ -12,6 +12,16 @@
 // reads the SampleStore on a 20 Hz clock. Each fit shown on the result page is kept in the
 // calibration history (runSaver(): root and the device's identity); the page says where.
 //
+// Two calibrations, kept apart: ImuDesk's fit of the raw samples (result(), its verdict the
+// headline) and the device's own run (deviceCalibration(), its verdict beside it on the
+// result page and in the saved run as "device_calibration"). Once the device reports success
+// it corrects its own output, so later samples are not raw: ImuDesk's collection ends there,
+// without the samples that arrived after the device's last "still calibrating" reply.
+// A fit is one run with one set of figures: computed once (MagCalResult) and read out from
+// it on the rotation page (until more samples come in), the result page, the saved run and
+// the report. A usable fit ends the collection; after a refused one the user may turn on,
+// and the result page fits again when more samples came in.
+//
 // Folder ui/calibration/: the calibration wizards (magnetometer, gyro scale, attitude reset,
 // HEC495), the calibration history dialog, the PDF report, CalibrationRunSaver (which keeps
 // each finished run in the history) and the wizards' pictures (MagSphereView, TurnGauge). It
@@ -27,6 +37,7 @@
 #include "model/device_identity.h"
 #include "settings/configuration_controller.h"
 
+#include <QJsonObject>
 #include <QTimer>
 #include <QWizard>
 
@@ -72,7 +83,18 @@ public:
     const calib::MagEnvironmentCheck &environment() const { return m_env; }
     const calib::MagCalResult &result() const { return m_result; }
     bool fitted() const { return m_fitted; }
+    // The samples ImuDesk's fit takes: raw ones only, collected on the rotation page.
+    size_t sampleCount() const { return m_samples.size(); }
+    // Whether the rotation page still takes samples for ImuDesk's fit.
+    bool collecting() const { return m_collecting; }
     QString resultText() const;
+    // The device's own calibration as a verdict: Pass when it reported success, Fail when it
+    // failed, Warn while it runs; false when it was not started.
+    bool deviceVerdict(calib::MagVerdict &verdict) const;
+    // Its line on the result page (what the device concluded), empty when it was not started.
+    QString deviceResultText() const;
+    // The device's run for the saved result ("device_calibration"); empty when not started.
+    QJsonObject deviceResultJson() const;
     // Heading check: degrees turned so far, the largest jump between samples, passed.
     double headingTurnedDeg() const { return m_headingTurned; }
     double headingMaxJumpDeg() const { return m_headingMaxJump; }
@@ -89,6 +111,11 @@ private:
     void liveFit();
     void pageChanged(int id);
     void saveRun();
+    void showDeviceVerdict();
+    void deviceProgressed(int stat, int progress, const QString &message);
+    void deviceFinished(bool ok, const QString &message);
+    // The rotation page reads out the fitted run (true) or the samples coming in (false).
+    void showRunOnRotationPage(bool run);
 
     device::DeviceSession &m_session;
     model::FirmwareVersion m_firmware;
@@ -96,6 +123,13 @@ private:
     calib::MagEnvironmentCheck m_env;
     calib::MagCalResult m_result;
     bool m_fitted = false;
+    bool m_collecting = true;
+    bool m_showingRun = false;
+    bool m_deviceStarted = false;
+    // m_samples.size() when the device last said it was still calibrating: the samples up to
+    // there are raw for certain.
+    size_t m_rawBeforeDevice = 0;
+    QLabel *m_deviceVerdict = nullptr;
     bool m_runSaved = false;
     CalibrationRunSaver m_saver;
     QLabel *m_savedLabel = nullptr;

@@ -29,6 +29,7 @@ void MagSphereView::clear()
     m_samples.clear();
     m_sum.setZero();
     m_coverage.clear();
+    m_showsRun = false;
     m_lastField = 0;
     update();
 }
@@ -81,14 +82,44 @@ void MagSphereView::addSample(const Eigen::Vector3d &magUt)
 
 void MagSphereView::setSamples(const std::vector<Eigen::Vector3d> &magUt)
 {
+    // Every sample, not the first kMaxSamples: the cells must be those the whole run covered
+    // (the painter thins the dots itself).
     m_samples.clear();
+    m_samples.reserve(magUt.size());
     m_sum.setZero();
     for (const auto &m : magUt)
-        if (m.allFinite() && m_samples.size() < kMaxSamples) {
+        if (m.allFinite()) {
             m_samples.push_back(m);
             m_sum += m;
         }
     rebuild();
+}
+
+void MagSphereView::showRun(const calib::MagCalResult &result)
+{
+    m_run = result;
+    m_showsRun = true;
+    update();
+}
+
+QString MagSphereView::readoutText() const
+{
+    if (!m_showsRun)
+        return tr("|B| %1 µT   coverage %2 %   %3 samples")
+                   .arg(m_lastField, 0, 'f', 1)
+                   .arg(m_coverage.percent(), 0, 'f', 0)
+                   .arg(m_samples.size())
+            + QLatin1Char('\n') + hint();
+    // The run's own figures, as its result states them. The coverage is that of the corrected
+    // directions: a raw view (no usable correction) centres the samples elsewhere, so it
+    // gives only the count.
+    if (!m_calibrated)
+        return tr("%1 samples, raw (no usable correction)").arg(m_run.samples);
+    QString text = tr("%1 samples   coverage %2 %").arg(m_run.samples).arg(m_run.coveragePct, 0, 'f', 0);
+    if (std::isfinite(m_run.predictedHeadingErrorDeg))
+        text += QLatin1Char('\n')
+            + tr("Predicted heading error %1°").arg(m_run.predictedHeadingErrorDeg, 0, 'f', 2);
+    return text;
 }
 
 void MagSphereView::setCalibration(const Eigen::Vector3d &hardIron, const Eigen::Matrix3d &softIron)
@@ -178,11 +209,7 @@ void MagSphereView::paintEvent(QPaintEvent *)
     // Read-outs.
     p.setPen(palette().color(QPalette::Text));
     const QRectF text(6, height() - 44, width() - 12, 42);
-    const QString line1 = tr("|B| %1 uT   coverage %2 %   %3 samples")
-                              .arg(m_lastField, 0, 'f', 1)
-                              .arg(m_coverage.percent(), 0, 'f', 0)
-                              .arg(m_samples.size());
-    p.drawText(text, Qt::AlignLeft | Qt::AlignTop | Qt::TextWordWrap, line1 + QLatin1Char('\n') + hint());
+    p.drawText(text, Qt::AlignLeft | Qt::AlignTop | Qt::TextWordWrap, readoutText());
 }
 
 void MagSphereView::mousePressEvent(QMouseEvent *event)

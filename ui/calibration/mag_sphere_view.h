@@ -7,8 +7,15 @@
 // Directions are taken around a centre: the hard iron of setCalibration() when given
 // (then the dots are the corrected samples, "after"), else the mean of the samples so far
 // ("before"). Painted with QPainter (offscreen-safe), painter's algorithm on the cell
-// centres' depth. Left-drag turns the view, double-click resets it. At most kMaxSamples
-// samples are kept (every second one is dropped when full, so the spread stays).
+// centres' depth. Left-drag turns the view, double-click resets it. While samples come in
+// (addSample) at most kMaxSamples are kept (every second one is dropped when full, so the
+// spread stays); setSamples() keeps every sample of a finished run, so that its cells are
+// the run's coverage.
+//
+// A finished run (showRun) is read out from its result, not from the view's own counts: the
+// samples, coverage and predicted heading error the result page, the report and the saved
+// run give, and no instruction (nothing is left to turn). Q_PROPERTY readout: the text drawn.
+#include "calib/mag_cal_result.h"
 #include "calib/sphere_coverage.h"
 
 #include <Eigen/Core>
@@ -21,6 +28,7 @@ namespace imudesk::ui {
 
 class MagSphereView : public QWidget {
     Q_OBJECT
+    Q_PROPERTY(QString readout READ readoutText)
 public:
     static constexpr size_t kMaxSamples = 4000;
 
@@ -32,6 +40,12 @@ public:
     // Shows the samples corrected by c = S (m - b); clearCalibration() goes back to raw.
     void setCalibration(const Eigen::Vector3d &hardIron, const Eigen::Matrix3d &softIron);
     void clearCalibration();
+    // Reads out the figures of this finished run instead of the live ones; clear() ends it.
+    void showRun(const calib::MagCalResult &result);
+    bool showsRun() const { return m_showsRun; }
+    // The text under the sphere: live |B|, coverage, samples and the missing rotation, or
+    // the finished run's figures.
+    QString readoutText() const;
 
     const calib::SphereCoverage &coverage() const { return m_coverage; }
     double coveragePercent() const { return m_coverage.percent(); }
@@ -58,6 +72,8 @@ private:
     Eigen::Vector3d m_hardIron = Eigen::Vector3d::Zero();
     Eigen::Matrix3d m_softIron = Eigen::Matrix3d::Identity();
     calib::SphereCoverage m_coverage;
+    calib::MagCalResult m_run;
+    bool m_showsRun = false;
     double m_lastField = 0;
     double m_azimuthDeg = 30, m_elevationDeg = 20;
     QPoint m_dragFrom;
