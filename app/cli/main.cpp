@@ -5,10 +5,12 @@
 #include <QGuiApplication>
 #include <QLoggingCategory>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstring>
-#include <memory>
 #include <map>
+#include <memory>
+#include <vector>
 
 using namespace imudesk::cli;
 
@@ -57,6 +59,53 @@ void usage(FILE *to)
                "                                         CAN devices (J1939, CANopen, HEC495)\n"
                "Run 'imudesk-cli COMMAND --help' for a command's options.\n",
                to);
+}
+
+// Edits (insert, delete, replace, swap two neighbours) that turn a into b.
+int editDistance(const QString &a, const QString &b)
+{
+    const qsizetype n = a.size(), m = b.size();
+    std::vector<std::vector<int>> d(size_t(n + 1), std::vector<int>(size_t(m + 1)));
+    for (qsizetype i = 0; i <= n; ++i)
+        d[size_t(i)][0] = int(i);
+    for (qsizetype j = 0; j <= m; ++j)
+        d[0][size_t(j)] = int(j);
+    for (qsizetype i = 1; i <= n; ++i)
+        for (qsizetype j = 1; j <= m; ++j) {
+            const int cost = a[i - 1] == b[j - 1] ? 0 : 1;
+            int best = std::min({d[size_t(i - 1)][size_t(j)] + 1, d[size_t(i)][size_t(j - 1)] + 1,
+                                 d[size_t(i - 1)][size_t(j - 1)] + cost});
+            if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1])
+                best = std::min(best, d[size_t(i - 2)][size_t(j - 2)] + 1);
+            d[size_t(i)][size_t(j)] = best;
+        }
+    return d[size_t(n)][size_t(m)];
+}
+
+// The command a mistyped word most likely meant: the only one within two edits (one for a
+// short word), or the only one it begins; empty when none is obvious.
+QString closestCommand(const QString &word, const QStringList &commands)
+{
+    const QString typed = word.toLower();
+    const int allowed = typed.size() <= 4 ? 1 : 2;
+    QStringList near, starts;
+    int best = allowed + 1;
+    for (const QString &c : commands) {
+        const int d = editDistance(typed, c);
+        if (d < best) {
+            best = d;
+            near = QStringList{c};
+        } else if (d == best) {
+            near << c;
+        }
+        if (typed.size() >= 3 && c.startsWith(typed))
+            starts << c;
+    }
+    if (near.size() == 1)
+        return near.front();
+    if (near.isEmpty() && starts.size() == 1)
+        return starts.front();
+    return {};
 }
 } // namespace
 
@@ -107,8 +156,17 @@ int main(int argc, char **argv)
     };
     const auto it = commands.find(cmd);
     if (it == commands.end()) {
-        usage(stderr);
-        return fail(QStringLiteral("unknown command '%1'").arg(cmd), ExitUsage);
+        // One line that names the word (and what it probably meant), not the whole usage: the
+        // mistake stays on screen.
+        QStringList names;
+        for (const auto &entry : commands)
+            names << entry.first;
+        const QString closest = closestCommand(cmd, names);
+        fail(closest.isEmpty() ? QStringLiteral("unknown command '%1'").arg(cmd)
+                               : QStringLiteral("unknown command '%1'; did you mean '%2'?").arg(cmd, closest),
+             ExitUsage);
+        std::fputs("Run 'imudesk-cli --help' for the list of commands.\n", stderr);
+        return ExitUsage;
     }
     // The sub-parser sees "imudesk-cli <cmd> args..." so its positional arguments start after the command.
     QStringList sub = args.mid(1);

@@ -176,8 +176,10 @@ void SessionEngine::onBytes(const QByteArray &bytes)
 {
     const int64_t arrivedNs = monotonicNs();
     m_rawLog.append(RawByteLog::Direction::Rx, bytes, arrivedNs);
-    if (m_recorder)
-        m_recorder->append(bytes.constData(), size_t(bytes.size()), arrivedNs, utcUs());
+    if (m_recorder && m_recorder->append(bytes.constData(), size_t(bytes.size()), arrivedNs, utcUs())) {
+        m_recordedDecoder.feed(reinterpret_cast<const uint8_t *>(bytes.constData()), size_t(bytes.size()), arrivedNs,
+                               m_noSink);
+    }
     m_family->feed(bytes, arrivedNs);
     if (m_family->midUnit())
         m_idleTimer.start();
@@ -188,8 +190,8 @@ void SessionEngine::onBytes(const QByteArray &bytes)
 void SessionEngine::onLineIdle()
 {
     const int64_t now = monotonicNs();
-    if (m_recorder)
-        m_recorder->appendLineIdle(now, utcUs());
+    if (m_recorder && m_recorder->appendLineIdle(now, utcUs()))
+        m_recordedDecoder.lineIdle(now, m_noSink);
     m_family->lineIdle(now);
 }
 
@@ -330,11 +332,10 @@ void SessionEngine::cancelAll(RequestStatus status, const QString &why)
 // ---------------------------------------------------------------------------------------
 // Statistics
 
-uint64_t SessionEngine::framesNow() const
+uint64_t SessionEngine::recordedFrames() const
 {
-    SessionStats s;
-    m_family->fillCounters(s);
-    return s.frames;
+    return m_recordedDecoder.witlink() ? m_recordedDecoder.witlinkCounters().frames
+                                       : m_recordedDecoder.demux().frameCounters().frames;
 }
 
 void SessionEngine::restartStatistics()
@@ -382,8 +383,7 @@ void SessionEngine::publishStats()
     }
     Q_EMIT statsUpdated(s);
     if (m_recorder)
-        Q_EMIT recordingProgress(m_recorder->status().bytesWritten,
-                                 s.frames >= m_framesAtRecordStart ? s.frames - m_framesAtRecordStart : s.frames);
+        Q_EMIT recordingProgress(m_recorder->status().bytesWritten, recordedFrames());
 }
 
 // ---------------------------------------------------------------------------------------
@@ -419,7 +419,8 @@ void SessionEngine::startRecording(const QString &path, const record::CaptureHea
         return;
     }
     m_recorder = std::move(writer);
-    m_framesAtRecordStart = framesNow();
+    m_recordedDecoder = record::CaptureDecoder{};
+    m_recordedDecoder.configure(h);
     Q_EMIT recordingStarted(path);
 }
 
@@ -436,9 +437,9 @@ void SessionEngine::finishRecording(const QString &reason)
     const QString error = m_recorder->stop();
     const auto st = m_recorder->status();
     m_recorder.reset();
-    const uint64_t frames = framesNow();
-    Q_EMIT recordingProgress(st.bytesWritten,
-                             frames >= m_framesAtRecordStart ? frames - m_framesAtRecordStart : frames);
+    // The end of the file, as a reader reaches it: whatever the decoder still holds.
+    m_recordedDecoder.finish(m_noSink);
+    Q_EMIT recordingProgress(st.bytesWritten, recordedFrames());
     const QString why = reason.isEmpty() ? error : reason;
     if (!why.isEmpty())
         Q_EMIT errorOccurred(why);

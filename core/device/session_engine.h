@@ -13,6 +13,7 @@
 #include "device/sample_store.h"
 #include "device/session_types.h"
 #include "io/transport.h"
+#include "record/capture_decoder.h"
 #include "record/capture_writer.h"
 
 #include <QElapsedTimer>
@@ -95,7 +96,8 @@ private:
     void onReopened();
     void finishRecording(const QString &reason);
     void watchForGarbage(const SessionStats &now, qint64 nowMs);
-    uint64_t framesNow() const;
+    // Frames whole in the recording: what the capture file decodes to (recordingProgress).
+    uint64_t recordedFrames() const;
 
     FamilyPlugin *m_family;
     io::Transport *m_transport;
@@ -121,7 +123,15 @@ private:
     Reconnector m_reconnector;
 
     std::unique_ptr<record::CaptureWriter> m_recorder;
-    uint64_t m_framesAtRecordStart = 0;
+    // The recording's frames are counted from the bytes written to it, decoded as an export
+    // or a replay will decode the file: a frame whose first bytes arrived before Record was
+    // pressed is decoded by the session but is not in the file, so the session's own frame
+    // counter would count one frame more than the file holds.
+    struct NoSink : record::CaptureDecoder::Sink {
+        void onPacket(const protocol::hipnuc::Packet &, int64_t) override {}
+    };
+    record::CaptureDecoder m_recordedDecoder;
+    NoSink m_noSink;
 };
 
 } // namespace imudesk::device

@@ -211,7 +211,7 @@ void ModuleRunner::runStep()
     updateProgress(0);
     const PlanStep &s = planStep();
     if (!s.enabled) {
-        endStep(Verdict::Skipped, tr("not enabled in the plan"));
+        endStep(Verdict::Skipped, disabledDetail());
         return;
     }
     m_deadline.disconnect();
@@ -241,9 +241,12 @@ void ModuleRunner::endStep(Verdict verdict, const QString &detail)
         r.detail = detail;
     r.finished = QDateTime::currentDateTimeUtc();
     if (verdict == Verdict::Fail) {
+        // The steps after it are not run; one the plan turns off would not have run anyway,
+        // and the report says so rather than blame the failure.
         for (size_t i = size_t(m_index) + 1; i < m_result.steps.size(); ++i) {
             m_result.steps[i].verdict = Verdict::Skipped;
-            m_result.steps[i].detail = tr("not run: \"%1\" failed").arg(r.title);
+            m_result.steps[i].detail =
+                m_plan.steps[i].enabled ? tr("not run: \"%1\" failed").arg(r.title) : disabledDetail();
         }
         finish();
         return;
@@ -257,8 +260,16 @@ void ModuleRunner::fail(const QString &detail)
     if (!m_running)
         return;
     if (m_index < 0) {
-        m_index = 0;
-        m_result.currentStep = 0;
+        // Not connected: the failure goes to the first step the plan runs (a disabled step
+        // stays "disabled in the plan").
+        const auto first = std::find_if(m_plan.steps.begin(), m_plan.steps.end(),
+                                        [](const PlanStep &s) { return s.enabled; });
+        m_index = first == m_plan.steps.end() ? 0 : int(first - m_plan.steps.begin());
+        for (int i = 0; i < m_index; ++i) {
+            m_result.steps[size_t(i)].verdict = Verdict::Skipped;
+            m_result.steps[size_t(i)].detail = disabledDetail();
+        }
+        m_result.currentStep = m_index;
         step().started = QDateTime::currentDateTimeUtc();
         step().verdict = Verdict::Running;
     }
@@ -267,6 +278,11 @@ void ModuleRunner::fail(const QString &detail)
     if (m_updater)
         m_updater->cancel();
     endStep(Verdict::Fail, detail);
+}
+
+QString ModuleRunner::disabledDetail()
+{
+    return tr("disabled in the plan");
 }
 
 void ModuleRunner::cancel()

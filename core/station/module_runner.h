@@ -63,6 +63,8 @@ public:
     void cancel();
     bool running() const { return m_running; }
     const ModuleResult &result() const { return m_result; }
+    // A step the plan turns off: its detail in the result, the reports and the tiles (translated).
+    static QString disabledDetail();
     const QString &port() const { return m_port; }
     // Frames the session counted as lost over the whole run (device timestamp gaps).
     quint64 framesLost() const { return m_framesLost; }

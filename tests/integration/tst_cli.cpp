@@ -176,7 +176,22 @@ private Q_SLOTS:
         QCOMPARE(missing.code, 1);
         QVERIFY(missing.err.startsWith(QStringLiteral("imudesk-cli: ")));
         QVERIFY(missing.err.contains(QStringLiteral("not found")));
-        QCOMPARE(run({"frobnicate"}).code, 2);
+        // A word that is no command: one line naming it and a hint to --help, not the whole usage.
+        const auto unknown = run({"frobnicate"});
+        QCOMPARE(unknown.code, 2);
+        const QStringList lines = unknown.err.split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+        QCOMPARE(lines.size(), 2);
+        QCOMPARE(lines.at(0), QStringLiteral("imudesk-cli: unknown command 'frobnicate'"));
+        QVERIFY2(lines.at(1).contains(QStringLiteral("imudesk-cli --help")), qPrintable(lines.at(1)));
+        QVERIFY(unknown.out.isEmpty());
+        // A slip of the fingers is answered with the command it meant.
+        const auto typo = run({"recrod", m_pty});
+        QCOMPARE(typo.code, 2);
+        QVERIFY2(typo.err.startsWith(QStringLiteral("imudesk-cli: unknown command 'recrod'; did you mean 'record'?\n")),
+                 qPrintable(typo.err));
+        QCOMPARE(typo.err.count(QLatin1Char('\n')), 2);
+        QVERIFY2(run({"analyse", "x"}).err.contains(QStringLiteral("did you mean 'analyze'?")), "analyse");
+        QVERIFY2(run({"stat"}).err.contains(QStringLiteral("did you mean 'station'?")), "stat");
         QCOMPARE(run({"send", m_pty}).code, 2);
         QCOMPARE(run({"decode", "/nonexistent/file.bin"}).code, 1);
         QCOMPARE(run({"simulate"}).code, 2);

@@ -109,6 +109,7 @@ private Q_SLOTS:
     void trayOfFiveInParallel();
     void cliTray();
     void examplePlanPassesOnCleanHi14();
+    void disabledStepsSayDisabled();
 };
 
 void TestStation::trayOfFiveInParallel()
@@ -297,6 +298,77 @@ void TestStation::examplePlanPassesOnCleanHi14()
     QCOMPARE(disturbed.steps[size_t(disturbed.failedStep())].kind, station::StepKind::MagCal);
     QVERIFY2(disturbed.failureSummary().contains(QStringLiteral("STAT=4")), qPrintable(disturbed.failureSummary()));
     QCOMPARE(runner.framesLost(), 0u);
+}
+
+// A step the plan turns off is "disabled in the plan" wherever the result goes (the result,
+// summary.jsonl, summary.csv, the report), also after an earlier step failed; the steps the
+// failure kept from running say so. And a module that never answers fails at the first step
+// the plan runs, not at one it turns off.
+void TestStation::disabledStepsSayDisabled()
+{
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    Tray tray;
+    QVERIFY(tray.add("", "1.7.1", 41));
+    station::TestPlan plan;
+    plan.name = QStringLiteral("disabled steps");
+    using station::StepKind;
+    // Identify fails: the tray holds an HI14, the plan wants an HI99.
+    plan.steps.push_back(station::TestPlan::defaultStep(StepKind::Identify, {{QStringLiteral("products"), QStringLiteral("HI99")}}));
+    plan.steps.push_back(station::TestPlan::defaultStep(StepKind::Static, {{QStringLiteral("seconds"), 1.0}}));
+    plan.steps.back().enabled = false;
+    plan.steps.push_back(station::TestPlan::defaultStep(StepKind::Save));
+    QVERIFY2(plan.problems().isEmpty(), qPrintable(plan.problems().join(u'\n')));
+
+    station::StationRunner runner(plan, tray.ports);
+    QString error;
+    const QString runDir = dir.filePath(QStringLiteral("run"));
+    QVERIFY2(runner.setRunFolder(runDir, &error), qPrintable(error));
+    runner.setReportWriter(&ui::writeStationReport);
+    QSignalSpy done(&runner, &station::StationRunner::finished);
+    runner.start();
+    QVERIFY(done.wait(60000));
+    const station::ModuleResult &m = runner.module(0);
+    QCOMPARE(m.verdict, Verdict::Fail);
+    QCOMPARE(m.steps[size_t(m.failedStep())].kind, StepKind::Identify);
+    const QString disabled = QStringLiteral("disabled in the plan");
+    QCOMPARE(m.steps[1].verdict, Verdict::Skipped);
+    QCOMPARE(m.steps[1].detail, disabled);
+    QCOMPARE(m.steps[2].verdict, Verdict::Skipped);
+    QCOMPARE(m.steps[2].detail, QStringLiteral("not run: \"%1\" failed").arg(m.steps[0].title));
+
+    // summary.jsonl and summary.csv.
+    station::RunFolder folder;
+    QVERIFY2(folder.open(runDir, plan, &error), qPrintable(error));
+    const auto entries = folder.entries();
+    QCOMPARE(entries.size(), 1);
+    const QJsonArray steps = entries.first().value(QStringLiteral("steps")).toArray();
+    QCOMPARE(steps.at(1).toObject().value(QStringLiteral("detail")).toString(), disabled);
+    QFile csv(QDir(runDir).filePath(QStringLiteral("summary.csv")));
+    QVERIFY(csv.open(QIODevice::ReadOnly));
+    const QStringList rows = QString::fromUtf8(csv.readAll()).split(u'\n', Qt::SkipEmptyParts);
+    const auto staticRow = std::find_if(rows.begin(), rows.end(),
+                                        [](const QString &r) { return r.contains(QStringLiteral(",2,static,skipped,")); });
+    QVERIFY(staticRow != rows.end());
+    QVERIFY2(staticRow->endsWith(disabled), qPrintable(*staticRow));
+    // The report: the PDF was written from the same result; its text says it too.
+    QVERIFY(QFile::exists(m.reportPath));
+    const QString html = ui::StationReport::html(m, plan);
+    QVERIFY(html.contains(QStringLiteral("<p>%1</p>").arg(disabled)));
+    QCOMPARE(html.count(QStringLiteral("not run:")), 1); // the save step only
+
+    // Nothing answers on the port: the connection failure lands on the first step that runs.
+    station::TestPlan offFirst = plan;
+    offFirst.steps[0].enabled = false;
+    station::StationRunner gone(offFirst, {QStringLiteral("/dev/imudesk-no-such-port")});
+    QSignalSpy goneDone(&gone, &station::StationRunner::finished);
+    gone.start();
+    QVERIFY(goneDone.wait(60000));
+    const station::ModuleResult &g = gone.module(0);
+    QCOMPARE(g.verdict, Verdict::Fail);
+    QCOMPARE(g.steps[0].detail, disabled);
+    QCOMPARE(g.steps[1].detail, disabled);
+    QCOMPARE(g.steps[size_t(g.failedStep())].kind, StepKind::Save);
 }
 
 QTEST_MAIN(TestStation)

@@ -13,9 +13,11 @@
 #include <QChartView>
 #include <QCheckBox>
 #include <QComboBox>
+#include <QFileDialog>
 #include <QFileInfo>
 #include <QImage>
 #include <QLineSeries>
+#include <QMainWindow>
 #include <QMouseEvent>
 #include <QRegularExpression>
 #include <QScrollArea>
@@ -25,8 +27,11 @@
 #include <QDoubleSpinBox>
 #include <QSettings>
 #include <QSignalSpy>
+#include <QStatusBar>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QTimer>
+#include <QToolBar>
 #include <QToolButton>
 #include <QTranslator>
 #include <QValueAxis>
@@ -315,6 +320,50 @@ private Q_SLOTS:
         QVERIFY(!acc->savePng(bad, &error));
         QVERIFY2(error.contains(QStringLiteral("acc.png")), qPrintable(error));
         QVERIFY(!QFileInfo::exists(bad));
+    }
+
+    // "Save all as PNG…" through its file dialog: the file is written and the window's status
+    // bar says in which folder and how many charts it holds (no box to click away).
+    void saveAllSaysWhere()
+    {
+        QMainWindow window;
+        auto *panel = new ChartPanel(&window);
+        window.setCentralWidget(panel);
+        window.resize(1200, 900);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        feed(*panel, 0, 3000);
+        int shown = 0;
+        for (int k = 0; k < imudesk::ui::kChartKindCount; ++k)
+            shown += panel->chart(ChartKind(k))->isVisible() ? 1 : 0;
+        QVERIFY(shown > 1);
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        const QString path = dir.filePath(QStringLiteral("all.png"));
+        // The file dialog is modal: answer it from a timer, as a user would, within a bound
+        // (again on the next tick if a first answer did not close it).
+        QTimer answer;
+        int tries = 0;
+        connect(&answer, &QTimer::timeout, &answer, [&] {
+            if (++tries > 250)
+                answer.stop();
+            auto *dialog = qobject_cast<QFileDialog *>(QApplication::activeModalWidget());
+            if (!dialog)
+                return;
+            dialog->selectFile(path);
+            static_cast<QDialog *>(dialog)->accept(); // QFileDialog's override is protected
+        });
+        answer.start(20);
+        QSignalSpy saved(panel, &ChartPanel::pngSaved);
+        panel->toolBar()->findChild<QAction *>(QStringLiteral("saveAllPngAction"))->trigger();
+        answer.stop();
+        QVERIFY2(QFileInfo(path).size() > 0, "the file dialog was not answered");
+        QTRY_COMPARE_WITH_TIMEOUT(saved.count(), 1, 2000);
+        const QString message = window.statusBar()->currentMessage();
+        QVERIFY2(message.contains(QDir::toNativeSeparators(dir.path())), qPrintable(message));
+        QVERIFY2(message.contains(QStringLiteral("all.png")), qPrintable(message));
+        QVERIFY2(message.contains(QString::number(shown)), qPrintable(message));
+        QCOMPARE(saved.at(0).at(0).toString(), path);
     }
 
     void crosshairReadsTheValues()

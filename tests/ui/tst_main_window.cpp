@@ -1,6 +1,9 @@
 // MainWindow offscreen against a simulated HI14 on a pseudo-terminal: live values,
 // identity and rates in the status bar, the console, screenshots, run-time language.
+#include "recording/export_dialog.h"
+#include "recording/recording_controls.h"
 #include "workspace/connection_bar.h"
+#include "workspace/tool_actions.h"
 #include "workspace/console_widget.h"
 #include "workspace/language_switcher.h"
 #include "attitude/attitude_widget.h"
@@ -18,7 +21,9 @@
 #include <QAction>
 #include <QApplication>
 #include <QHeaderView>
+#include <QFileInfo>
 #include <QImage>
+#include <QLabel>
 #include <QLineEdit>
 #include <QMessageBox>
 #include <QPushButton>
@@ -495,6 +500,64 @@ private Q_SLOTS:
         console.showCommand(7, QStringLiteral("CONFIG ATT MODE 9"));
         console.showReply(7, err);
         QVERIFY(console.logText().endsWith(QLatin1String("ERR: ERR")));
+    }
+
+    // Device > Record (Ctrl+R) records at once; File > Export (Ctrl+E) then offers that recording.
+    // Before the device is connected, the recording panel says what to press.
+    void recordThenExportTheRecording()
+    {
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        MainWindow w;
+        w.setErrorPresenter([](const QString &) {});
+        imudesk::ui::Preferences prefs = w.preferences();
+        prefs.recordingFolder = dir.path();
+        w.setPreferences(prefs);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        imudesk::ui::DeviceWorkspace *ws = w.currentWorkspace();
+        imudesk::ui::RecordingControls *controls = ws->recordingControls();
+        QAction *record = w.tools()->recordAction();
+        QCOMPARE(record->shortcut(), QKeySequence(Qt::CTRL | Qt::Key_R));
+
+        imudesk::sim::SimOptions options;
+        QString error;
+        QVERIFY2(w.connectSimulated(options, 0, &error), qPrintable(error));
+        QTRY_VERIFY_WITH_TIMEOUT(ws->state() == imudesk::device::SessionState::Connected, 10000);
+        QTRY_VERIFY(record->isEnabled());
+        QSignalSpy stopped(controls, &imudesk::ui::RecordingControls::recordingStopped);
+        record->trigger();
+        QVERIFY(ws->recordingDock()->isVisible());
+        QTRY_VERIFY_WITH_TIMEOUT(controls->isRecording(), 5000);
+        const QString path = controls->currentPath();
+        QVERIFY2(path.startsWith(dir.path()), qPrintable(path));
+        // Ctrl+R again leaves it recording.
+        record->trigger();
+        QVERIFY(controls->isRecording());
+        QTRY_VERIFY_WITH_TIMEOUT(QFileInfo(path).size() > 1000, 5000);
+        controls->stopRecording();
+        QTRY_COMPARE_WITH_TIMEOUT(stopped.count(), 1, 5000);
+        QCOMPARE(w.tools()->lastRecording(), path);
+
+        // Export opens with the recording just made, without asking for a file first.
+        w.tools()->exportAction()->trigger();
+        auto *exporter = w.findChild<imudesk::ui::ExportDialog *>();
+        QVERIFY(exporter);
+        QTRY_VERIFY(exporter->isVisible());
+        QCOMPARE(exporter->capture(), path);
+        QCOMPARE(exporter->findChild<QLineEdit *>(QStringLiteral("capture"))->text(), path);
+        QVERIFY(exporter->windowTitle().contains(QFileInfo(path).fileName()));
+        exporter->close();
+
+        // Not connected: Record says what to press instead of opening an idle panel.
+        w.disconnectDevice();
+        QTRY_VERIFY_WITH_TIMEOUT(ws->state() != imudesk::device::SessionState::Connected, 5000);
+        if (record->isEnabled()) {
+            record->trigger();
+            QVERIFY(!controls->isRecording());
+            const QString said = controls->findChild<QLabel *>(QStringLiteral("message"))->text();
+            QVERIFY2(said.contains(QStringLiteral("Ctrl+K")) && said.contains(QStringLiteral("Record")), qPrintable(said));
+        }
     }
 
     void windowSettingsRoundTrip()

@@ -1,11 +1,15 @@
 // RecordingControls offscreen against the simulator on a pseudo-terminal: record and stop,
 // elapsed/size/frames, the file name pattern, a missing folder, and a recording stopped by a
 // file size limit (the reason is shown and recordingFailed emitted).
+#include "../common/capture_bytes.h"
+#include "../common/raw_pty.h"
 #include "device/device_session.h"
+#include "record/capture_exporter.h"
 #include "record/capture_reader.h"
 #include "recording/recording_controls.h"
 #include "sim/pty_simulator.h"
 
+#include <QElapsedTimer>
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
@@ -14,6 +18,7 @@
 #include <QTest>
 
 #include <csignal>
+#include <functional>
 
 #include <sys/resource.h>
 
@@ -134,6 +139,100 @@ private Q_SLOTS:
         QCOMPARE(stopped.size(), 1);
         QVERIFY(!c.isRecording());
         QVERIFY(c.findChild<QPushButton *>(QStringLiteral("record"))->isEnabled());
+    }
+
+    // A frame that began before Record was pressed: the session decodes it, but the file holds
+    // only its tail. The frames the panel counts are the frames the file holds, the ones an
+    // export writes (it counted one more: 2092 recorded, 2091 exported).
+    void countsTheFramesTheFileHolds()
+    {
+        test::RawPty pty;
+        QVERIFY(pty.ok());
+        device::DeviceSession session;
+        QVERIFY(test::openOnPty(session, pty));
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        RecordingControls c;
+        c.setSession(&session);
+        c.setFolder(dir.path());
+        const auto received = [&session] {
+            size_t n = 0;
+            for (const auto &chunk : session.rawLog().since(0))
+                if (chunk.direction == device::RawByteLog::Direction::Rx)
+                    n += size_t(chunk.bytes.size());
+            return n;
+        };
+        // The session drops a frame's first bytes after HipnucSerialFamily::kLineIdleMs (120 ms)
+        // of silence, so the rest must follow sooner: this polls finely, within a bound, and
+        // tries again when a loaded machine took too long (the session then did not decode the
+        // straddling frame either, and the counts would agree for another reason).
+        const auto waitUntil = [](const std::function<bool()> &done, int ms) {
+            QElapsedTimer clock;
+            clock.start();
+            while (!done() && clock.elapsed() < ms)
+                QTest::qWait(1);
+            return done();
+        };
+        uint32_t ms = 1000;
+        size_t sent = 0;
+        for (int attempt = 0; attempt < 5; ++attempt) {
+            // 20 frames, then the first 30 bytes of the 21st, read by the session before Record.
+            std::vector<uint8_t> before;
+            for (int i = 0; i < 20; ++i) {
+                const auto f = test::hi91Frame(ms++);
+                before.insert(before.end(), f.begin(), f.end());
+            }
+            const auto straddling = test::hi91Frame(ms++);
+            before.insert(before.end(), straddling.begin(), straddling.begin() + 30);
+            QTRY_COMPARE_WITH_TIMEOUT(received(), sent, 5000); // the previous attempt's bytes all read
+            const uint64_t samplesBefore = session.store().totalAppended();
+            pty.write(before);
+            sent += before.size();
+            QVERIFY(waitUntil([&] { return received() == sent; }, 5000));
+            QSignalSpy started(&session, &device::Session::recordingStarted);
+            QSignalSpy progress(&session, &device::Session::recordingProgress);
+            c.setPattern(QStringLiteral("straddle-%1").arg(attempt));
+            c.startRecording();
+            QVERIFY(started.wait(5000));
+            // The rest of the 21st frame, then 10 whole ones.
+            std::vector<uint8_t> after(straddling.begin() + 30, straddling.end());
+            for (int i = 0; i < 10; ++i) {
+                const auto f = test::hi91Frame(ms++);
+                after.insert(after.end(), f.begin(), f.end());
+            }
+            pty.write(after);
+            sent += after.size();
+            QTRY_COMPARE_WITH_TIMEOUT(received(), sent, 5000);
+            QTRY_VERIFY_WITH_TIMEOUT(session.store().totalAppended() >= samplesBefore + 30, 5000);
+            c.stopRecording();
+            QTRY_VERIFY_WITH_TIMEOUT(!c.isRecording(), 5000);
+            if (session.store().totalAppended() != samplesBefore + 31) {
+                qInfo("attempt %d: the straddling frame's first bytes were dropped as idle; again", attempt);
+                continue;
+            }
+            // 31 frames decoded by the session, 11 of them after Record was pressed.
+            QVERIFY(!progress.isEmpty());
+            const quint64 recorded = progress.last().at(1).toULongLong();
+
+            // The file, byte for byte, and what an export writes from it: 10 whole frames.
+            const QString path = dir.filePath(QStringLiteral("straddle-%1.imucap").arg(attempt));
+            const QByteArray bytes = test::receivedBytes(path);
+            QCOMPARE(size_t(bytes.size()), after.size());
+            protocol::hipnuc::FrameDecoder decoder;
+            QCOMPARE(decoder.feed(reinterpret_cast<const uint8_t *>(bytes.constData()), size_t(bytes.size())).size(),
+                     size_t(10));
+            record::CaptureExporter::Options o;
+            o.format = record::CaptureExporter::Format::JsonLines;
+            o.output = dir.filePath(QStringLiteral("straddle.jsonl"));
+            const auto exported = record::CaptureExporter::run(path, o);
+            QVERIFY2(exported.ok, qPrintable(exported.error));
+            QCOMPARE(exported.frames, uint64_t(10));
+            QCOMPARE(recorded, quint64(10));
+            const QString shown = c.findChild<QLabel *>(QStringLiteral("frames"))->text();
+            QVERIFY2(shown.startsWith(QStringLiteral("10 ")), qPrintable(shown));
+            return;
+        }
+        QFAIL("the straddling frame was never decoded whole by the session");
     }
 
     void withoutSessionDisabled()

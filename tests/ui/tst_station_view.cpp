@@ -41,6 +41,8 @@
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTextDocumentFragment>
+#include <QToolButton>
+#include <QUrl>
 
 #include <memory>
 
@@ -81,6 +83,9 @@ TestPlan shortPlan()
     add(StepKind::Firmware, {{QStringLiteral("minimum"), QStringLiteral("1.7.1")}, {QStringLiteral("image"), QString()}});
     add(StepKind::Static, {{QStringLiteral("seconds"), 2.0}});
     add(StepKind::Attitude, {{QStringLiteral("seconds"), 1.0}});
+    // Off in the plan: every tile says so, also on the modules that failed before it.
+    add(StepKind::Save);
+    plan.steps.back().enabled = false;
     return plan;
 }
 
@@ -256,6 +261,9 @@ private Q_SLOTS:
                                                               : failure->toolTip();
             QCOMPARE(full, r.failureSummary());
             QVERIFY(full.startsWith(title));
+            // The step the plan turns off is not blamed on the failure.
+            QVERIFY2(m_view->tile(i)->toolTip().contains(QStringLiteral("Save configuration: skipped (disabled in the plan)")),
+                     qPrintable(m_view->tile(i)->toolTip()));
             // The tile's tooltip lists the values with their units.
             if (kind == StepKind::Static)
                 QVERIFY2(m_view->tile(i)->toolTip().contains(QStringLiteral("°/s")), qPrintable(m_view->tile(i)->toolTip()));
@@ -330,6 +338,57 @@ private Q_SLOTS:
         QTest::keyClick(m_view->tile(5), Qt::Key_Return);
         QCOMPARE(opened.count(), 2);
         QCOMPARE(opened.at(1).at(0).toString(), m_view->runner()->module(5).port);
+    }
+
+    // A finished tile's Report button opens that module's PDF, "Open run folder" the run's
+    // folder (both through the opener: the desktop's viewers in the application).
+    void finishedTileOpensItsReport()
+    {
+        QList<QUrl> opened;
+        m_view->setUrlOpener([&opened](const QUrl &url) {
+            opened << url;
+            return true;
+        });
+        const station::StationRunner *runner = m_view->runner();
+        QVERIFY(runner && !m_view->running());
+        auto *report = m_view->tile(3)->findChild<QToolButton *>(QStringLiteral("openReport"));
+        QVERIFY(report);
+        QVERIFY(report->isVisible());
+        QVERIFY(report->toolTip().contains(QDir::toNativeSeparators(runner->module(3).reportPath)));
+        QVERIFY(report->focusPolicy() & Qt::TabFocus);
+        // Inside its tile, not over the verdict.
+        QVERIFY(m_view->tile(3)->rect().contains(QRect(report->mapTo(m_view->tile(3), QPoint(0, 0)), report->size())));
+        QSignalSpy workspace(m_view.get(), &ui::StationView::openWorkspaceRequested);
+        QTest::mouseClick(report, Qt::LeftButton);
+        QCOMPARE(opened.size(), 1);
+        QCOMPARE(opened.at(0), QUrl::fromLocalFile(runner->module(3).reportPath));
+        QVERIFY(opened.at(0).toLocalFile().endsWith(QStringLiteral(".pdf")));
+        QVERIFY(QFile::exists(opened.at(0).toLocalFile()));
+        QCOMPARE(workspace.count(), 0); // the report, not the workspace
+        // The keyboard: Space on the focused button.
+        report->setFocus();
+        QTest::keyClick(report, Qt::Key_Space);
+        QCOMPARE(opened.size(), 2);
+
+        auto *folder = m_view->findChild<QPushButton *>(QStringLiteral("openRunFolder"));
+        QVERIFY(folder && folder->isEnabled() && !folder->toolTip().isEmpty());
+        folder->click();
+        QCOMPARE(opened.size(), 3);
+        QCOMPARE(opened.at(2), QUrl::fromLocalFile(runner->runFolder()));
+        // Its shortcut too.
+        m_view->activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(m_view.get()));
+        QTest::keyClick(m_view.get(), Qt::Key_O, Qt::ControlModifier | Qt::ShiftModifier);
+        QCOMPARE(opened.size(), 4);
+
+        // No viewer for PDFs on this computer: said, not silently ignored.
+        const int errors = int(m_errors.size());
+        m_view->setUrlOpener([](const QUrl &) { return false; });
+        QVERIFY(!m_view->openReport(3));
+        QCOMPARE(m_errors.size(), errors + 1);
+        QVERIFY2(m_errors.last().contains(QFileInfo(runner->module(3).reportPath).fileName()), qPrintable(m_errors.last()));
+        m_errors.clear();
+        m_view->setUrlOpener({});
     }
 
     // Tools > Production station (Ctrl+Shift+P) opens one station window; a module's workspace

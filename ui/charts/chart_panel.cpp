@@ -4,19 +4,25 @@
 
 #include <QAction>
 #include <QComboBox>
+#include <QDir>
 #include <QEvent>
+#include <QFileInfo>
 #include <QGridLayout>
 #include <QLabel>
+#include <QMainWindow>
 #include <QMenu>
 #include <QPainter>
 #include <QPixmap>
 #include <QScreen>
+#include <QStatusBar>
 #include <QStyle>
 #include <QToolBar>
 #include <QToolButton>
+#include <QToolTip>
 #include <QVBoxLayout>
 
 #include <algorithm>
+#include <bit>
 
 namespace imudesk::ui {
 
@@ -118,8 +124,12 @@ ChartPanel::ChartPanel(QWidget *parent) : QWidget(parent)
     m_saveAllAction = m_toolBar->addAction(style()->standardIcon(QStyle::SP_DialogSaveButton), QString());
     m_saveAllAction->setObjectName(QStringLiteral("saveAllPngAction"));
     connect(m_saveAllAction, &QAction::triggered, this, [this] {
-        ChartView::savePngInteractive(this, QStringLiteral("charts"),
-                                      [this](const QString &path, QString *error) { return saveAllPng(path, error); });
+        ChartView::savePngInteractive(this, QStringLiteral("charts"), [this](const QString &path, QString *error) {
+            if (!saveAllPng(path, error))
+                return false;
+            tellSaved(path);
+            return true;
+        });
     });
 
     auto *layout = new QVBoxLayout(this);
@@ -322,6 +332,21 @@ void ChartPanel::setChartChosen(ChartKind kind, bool chosen)
 bool ChartPanel::saveAllPng(const QString &path, QString *error) const
 {
     return ChartView::saveWidgetPng(m_area, path, error);
+}
+
+void ChartPanel::tellSaved(const QString &path)
+{
+    // Where it went, without a box to click away: the window's status bar (the panel may sit
+    // in a workspace that is itself a main window: the top-level window's bar is the one seen).
+    const QFileInfo file(path);
+    const QString message = tr("%n chart(s) saved as one PNG in %1 (%2)", nullptr, std::popcount(m_shownCharts))
+                                .arg(QDir::toNativeSeparators(file.absolutePath()), file.fileName());
+    if (auto *main = qobject_cast<QMainWindow *>(window()))
+        main->statusBar()->showMessage(message, kSavedMessageMs);
+    else
+        QToolTip::showText(m_toolBar->mapToGlobal(QPoint(0, m_toolBar->height())), message, m_toolBar, {},
+                           kSavedMessageMs);
+    Q_EMIT pngSaved(path, message);
 }
 
 ChartSettings ChartPanel::settings() const

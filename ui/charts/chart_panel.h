@@ -81,6 +81,8 @@ public:
     ChartSettings settings() const;
     void setSettings(const ChartSettings &settings);
 
+    static constexpr int kSavedMessageMs = 10000; // how long the status bar says where the PNG went
+
     // All charts shown, as one PNG.
     bool saveAllPng(const QString &path, QString *error = nullptr) const;
 
@@ -96,6 +98,8 @@ public:
 Q_SIGNALS:
     // The window, the charts or visible axes, or the time axis changed: the owner may save settings().
     void settingsChanged();
+    // "Save all as PNG…" wrote `path`; `message` (also in the window's status bar) says where.
+    void pngSaved(const QString &path, const QString &message);
 
 protected:
     void changeEvent(QEvent *event) override;
@@ -105,6 +109,7 @@ private:
     void retranslateUi();
     void updateChartVisibility(bool force = false);
     void layoutCharts();
+    void tellSaved(const QString &path);
 
     plot::ChannelHistory m_history;
     plot::TimeAxis m_timeAxis = plot::TimeAxis::Device;

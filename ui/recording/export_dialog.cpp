@@ -3,8 +3,10 @@
 #include <QComboBox>
 #include <QDialogButtonBox>
 #include <QDoubleSpinBox>
+#include <QFileDialog>
 #include <QFileInfo>
 #include <QFormLayout>
+#include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
 #include <QProgressBar>
@@ -16,9 +18,14 @@ namespace imudesk::ui {
 
 using Format = record::CaptureExporter::Format;
 
-ExportDialog::ExportDialog(const QString &capturePath, QWidget *parent) : QDialog(parent), m_capture(capturePath)
+ExportDialog::ExportDialog(const QString &capturePath, QWidget *parent) : QDialog(parent)
 {
-    setWindowTitle(tr("Export %1").arg(QFileInfo(capturePath).fileName()));
+    m_captureEdit = new QLineEdit(this);
+    m_captureEdit->setObjectName(QStringLiteral("capture"));
+    m_captureEdit->setToolTip(tr("The capture to export: a recording, a vendor CSV or a raw byte dump"));
+    m_chooseCapture = new QPushButton(tr("Choose…"), this);
+    m_chooseCapture->setObjectName(QStringLiteral("chooseCapture"));
+    m_chooseCapture->setToolTip(tr("Export another capture"));
     m_format = new QComboBox(this);
     m_format->setObjectName(QStringLiteral("format"));
     m_format->addItem(tr("Vendor CSV (one file per frame type)"), int(Format::VendorCsv));
@@ -51,7 +58,11 @@ ExportDialog::ExportDialog(const QString &capturePath, QWidget *parent) : QDialo
     m_cancel = buttons->addButton(QDialogButtonBox::Cancel);
     m_cancel->setObjectName(QStringLiteral("cancel"));
 
+    auto *captureRow = new QHBoxLayout;
+    captureRow->addWidget(m_captureEdit, 1);
+    captureRow->addWidget(m_chooseCapture);
     auto *form = new QFormLayout;
+    form->addRow(tr("Capture:"), captureRow);
     form->addRow(tr("Format:"), m_format);
     form->addRow(tr("Output:"), m_output);
     form->addRow(tr("From:"), m_from);
@@ -62,6 +73,11 @@ ExportDialog::ExportDialog(const QString &capturePath, QWidget *parent) : QDialo
     layout->addWidget(m_status);
     layout->addWidget(buttons);
 
+    connect(m_captureEdit, &QLineEdit::editingFinished, this, [this] {
+        if (m_captureEdit->text() != m_capture)
+            setCapture(m_captureEdit->text());
+    });
+    connect(m_chooseCapture, &QPushButton::clicked, this, &ExportDialog::chooseCapture);
     connect(m_format, &QComboBox::currentIndexChanged, this, &ExportDialog::suggestOutput);
     connect(m_export, &QPushButton::clicked, this, &ExportDialog::startExport);
     connect(m_cancel, &QPushButton::clicked, this, [this] {
@@ -72,7 +88,7 @@ ExportDialog::ExportDialog(const QString &capturePath, QWidget *parent) : QDialo
     });
     m_poll.setInterval(100);
     connect(&m_poll, &QTimer::timeout, this, &ExportDialog::pollProgress);
-    suggestOutput();
+    setCapture(capturePath);
 }
 
 ExportDialog::~ExportDialog()
@@ -81,6 +97,23 @@ ExportDialog::~ExportDialog()
         m_cancelRequested = true;
         m_thread->wait();
     }
+}
+
+void ExportDialog::setCapture(const QString &path)
+{
+    m_capture = path;
+    m_captureEdit->setText(path);
+    setWindowTitle(tr("Export %1").arg(QFileInfo(path).fileName()));
+    suggestOutput();
+}
+
+void ExportDialog::chooseCapture()
+{
+    const QString path = QFileDialog::getOpenFileName(
+        this, tr("Export capture"), QFileInfo(m_capture).absolutePath(),
+        tr("Captures, vendor CSV and raw dumps (*.imucap *.csv *.bin *.raw *.log *.dat *.txt);;All files (*)"));
+    if (!path.isEmpty())
+        setCapture(path);
 }
 
 void ExportDialog::setFormat(Format format)
@@ -111,6 +144,7 @@ void ExportDialog::startExport()
 {
     if (m_thread)
         return;
+    m_capture = m_captureEdit->text(); // typed, and Export pressed without leaving the field
     record::CaptureExporter::Options o;
     o.format = Format(m_format->currentData().toInt());
     o.output = m_output->text();
@@ -122,6 +156,8 @@ void ExportDialog::startExport()
     m_progress->setValue(0);
     m_status->setText(tr("Exporting…"));
     m_export->setEnabled(false);
+    m_captureEdit->setEnabled(false);
+    m_chooseCapture->setEnabled(false);
     const QString capture = m_capture;
     m_thread = QThread::create([this, capture, o] {
         m_result = record::CaptureExporter::run(capture, o, [this](double f) {
@@ -150,6 +186,8 @@ void ExportDialog::onFinished()
     m_thread->deleteLater();
     m_thread = nullptr;
     m_export->setEnabled(true);
+    m_captureEdit->setEnabled(true);
+    m_chooseCapture->setEnabled(true);
     QString message;
     if (m_result.cancelled) {
         message = tr("Export cancelled; the partial files were removed.");

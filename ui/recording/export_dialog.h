@@ -1,6 +1,7 @@
 #pragma once
-// Export of a capture: format (vendor CSV, tidy CSV, JSON Lines), output file, time range,
-// a progress bar and cancel. The export runs in a worker thread (CaptureExporter streams,
+// Export of a capture: the capture (given, e.g. the recording just made; Choose… picks
+// another), format (vendor CSV, tidy CSV, JSON Lines), output file, time range, a progress
+// bar and cancel. The export runs in a worker thread (CaptureExporter streams,
 // so memory stays flat); the dialog stays responsive and Cancel stops it and removes the
 // partial files.
 #include "record/capture_exporter.h"
@@ -26,6 +27,9 @@ public:
     explicit ExportDialog(const QString &capturePath, QWidget *parent = nullptr);
     ~ExportDialog() override;
 
+    // The capture to export; the output file is suggested beside it.
+    void setCapture(const QString &path);
+    QString capture() const { return m_capture; }
     void setFormat(record::CaptureExporter::Format format);
     void setOutput(const QString &path);
     // to < 0: until the end.
@@ -44,8 +48,11 @@ private:
     void onFinished();
     void suggestOutput();
     void pollProgress();
+    void chooseCapture();
 
     QString m_capture;
+    QLineEdit *m_captureEdit = nullptr;
+    QPushButton *m_chooseCapture = nullptr;
     QComboBox *m_format = nullptr;
     QLineEdit *m_output = nullptr;
     QDoubleSpinBox *m_from = nullptr;

@@ -133,7 +133,8 @@ void RecordingControls::startRecording()
     if (!m_session || m_recording || m_pending)
         return;
     if (m_session->state() != device::SessionState::Connected) {
-        m_message->setText(tr("Connect a device before recording."));
+        m_message->setText(tr("Not recording: the device is not connected. Press Connect (Ctrl+K), then Record "
+                              "(Ctrl+R)."));
         return;
     }
     const QDir dir(m_folder->text());

@@ -1,5 +1,6 @@
 #include "station/station_tiles.h"
 
+#include <QDir>
 #include <QEvent>
 #include <QFontMetrics>
 #include <QHBoxLayout>
@@ -7,6 +8,7 @@
 #include <QMouseEvent>
 #include <QProgressBar>
 #include <QTextLayout>
+#include <QToolButton>
 #include <QVBoxLayout>
 
 #include <algorithm>
@@ -157,9 +159,25 @@ StationTile::StationTile(int index, QWidget *parent) : QFrame(parent)
     m_failure->setObjectName(QStringLiteral("failure"));
     m_failure->setStyleSheet(QStringLiteral("color: #c62828;"));
 
+    // The report of a module whose test has ended; no taller than the verdict beside it, so
+    // the tile keeps its height (a tray of eight fits a laptop's window).
+    m_report = new QToolButton(this);
+    m_report->setObjectName(QStringLiteral("openReport"));
+    m_report->setAutoRaise(true);
+    m_report->setFocusPolicy(Qt::TabFocus);
+    m_report->setCursor(Qt::PointingHandCursor);
+    m_report->setStyleSheet(QStringLiteral("QToolButton { padding: 0px 4px; }"));
+    m_report->setSizePolicy(QSizePolicy::Fixed, QSizePolicy::Ignored);
+    m_report->hide();
+    connect(m_report, &QToolButton::clicked, this, [this] {
+        if (reportRequested)
+            reportRequested();
+    });
+
     auto *top = new QHBoxLayout;
     top->setContentsMargins(0, 0, 0, 0);
     top->addWidget(m_port, 1);
+    top->addWidget(m_report);
     top->addWidget(m_verdict);
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(10, 6, 8, 6);
@@ -192,6 +210,10 @@ void StationTile::showModule(const ModuleResult &r, const QString &step, const Q
     m_progress->setFormat(tr("%1 %").arg(permille / 10));
     m_progress->setToolTip(tr("%1 % of the plan, each step weighted by how long it takes").arg(permille / 10));
     m_failure->setFullText(failure);
+    m_report->setText(tr("Report"));
+    m_report->setToolTip(tr("Open this module's PDF report: %1").arg(QDir::toNativeSeparators(r.reportPath)));
+    m_report->setAccessibleName(tr("Report of %1").arg(r.port));
+    m_report->setVisible(!r.reportPath.isEmpty() && r.verdict != Verdict::Running && r.verdict != Verdict::Pending);
     setVerdict(r.verdict, verdict);
     setToolTip(toolTip);
     setAccessibleName(tr("%1: %2").arg(r.port, verdict));

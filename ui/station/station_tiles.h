@@ -13,6 +13,7 @@
 
 QT_BEGIN_NAMESPACE
 class QProgressBar;
+class QToolButton;
 QT_END_NAMESPACE
 
 namespace imudesk::ui {
@@ -45,12 +46,14 @@ private:
 
 // One module of the tray: port and verdict (word and colour), serial number and product, the
 // step under way, progress, and for a failure the failing step with its values. A click,
-// Enter or Space asks for the module's workspace.
+// Enter or Space asks for the module's workspace; once the module's PDF report is written, a
+// Report button beside the verdict (reached with Tab) asks for it.
 class StationTile : public QFrame {
     Q_DECLARE_TR_FUNCTIONS(imudesk::ui::StationTile)
 
 public:
     std::function<void()> activated;
+    std::function<void()> reportRequested;
 
     StationTile(int index, QWidget *parent);
     void showModule(const station::ModuleResult &r, const QString &step, const QString &verdict,
@@ -65,6 +68,7 @@ private:
 
     ElidedLabel *m_port, *m_identity, *m_step, *m_failure;
     QLabel *m_verdict;
+    QToolButton *m_report;
     QProgressBar *m_progress;
     station::Verdict m_shownVerdict = station::Verdict::Skipped; // not shown yet
 };

@@ -12,6 +12,7 @@
 #include <QCheckBox>
 #include <QCloseEvent>
 #include <QDialog>
+#include <QDesktopServices>
 #include <QDialogButtonBox>
 #include <QDir>
 #include <QEvent>
@@ -35,6 +36,7 @@
 #include <QSpinBox>
 #include <QStandardPaths>
 #include <QTimer>
+#include <QUrl>
 #include <QVBoxLayout>
 
 #include <algorithm>
@@ -156,14 +158,19 @@ StationView::StationView(QWidget *parent) : QWidget(parent)
                 button->click();
         });
     };
+    m_openFolder = new QPushButton(this);
+    m_openFolder->setObjectName(QStringLiteral("openRunFolder"));
+    connect(m_openFolder, &QPushButton::clicked, this, [this] { openRunFolder(); });
     shortcut(QKeySequence(Qt::CTRL | Qt::Key_R), m_start);
     shortcut(QKeySequence(Qt::Key_Escape), m_cancel);
     shortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_R), m_rerun);
+    shortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_O), m_openFolder);
     auto *runRow = new QHBoxLayout;
     runRow->addWidget(m_start);
     runRow->addWidget(m_cancel);
     runRow->addWidget(m_rerun);
     runRow->addStretch(1);
+    runRow->addWidget(m_openFolder);
 
     auto *top = new QGridLayout;
     top->addWidget(m_planTitle, 0, 0);
@@ -268,6 +275,9 @@ void StationView::retranslateUi()
     m_rerun->setText(tr("Re-run failed"));
     m_rerun->setToolTip(tr("Test the modules that failed again, into the same run folder as their next "
                            "attempt (Ctrl+Shift+R)"));
+    m_openFolder->setText(tr("Open run folder"));
+    m_openFolder->setToolTip(tr("Open the folder of this run: the PDF reports, summary.csv, summary.jsonl and the "
+                                "evidence recordings (Ctrl+Shift+O)"));
     m_placeholder->setText(tr("Choose a plan and check the ports of the modules, then press Start (Ctrl+R). "
                               "Each module gets a tile here; click a tile to open that module's workspace."));
     // Port items and tiles carry translated texts too.
@@ -745,6 +755,41 @@ void StationView::openModule(int index)
     Q_EMIT openWorkspaceRequested(r.port, baudFor(r.port));
 }
 
+bool StationView::openUrl(const QString &localPath)
+{
+    const QUrl url = QUrl::fromLocalFile(localPath);
+    if (m_urlOpener ? m_urlOpener(url) : QDesktopServices::openUrl(url))
+        return true;
+    showError(tr("%1 could not be opened: no application on this computer opens it. Open it from the "
+                 "file manager instead.")
+                  .arg(QDir::toNativeSeparators(localPath)));
+    return false;
+}
+
+bool StationView::openReport(int index)
+{
+    if (!m_runner || index < 0 || index >= m_runner->moduleCount())
+        return false;
+    const ModuleResult &r = m_runner->module(index);
+    if (r.reportPath.isEmpty() || !QFileInfo::exists(r.reportPath)) {
+        showError(r.verdict == Verdict::Running || r.verdict == Verdict::Pending
+                      ? tr("The report of %1 is written when its test has ended.").arg(r.port)
+                      : tr("%1 has no report: see the run folder's summary, or the message about the report.")
+                            .arg(r.port));
+        return false;
+    }
+    return openUrl(r.reportPath);
+}
+
+bool StationView::openRunFolder()
+{
+    if (!m_runner || m_runner->runFolder().isEmpty()) {
+        showError(tr("There is no run folder yet: press Start (Ctrl+R) first."));
+        return false;
+    }
+    return openUrl(m_runner->runFolder());
+}
+
 QString StationView::summaryText() const
 {
     return m_summary->fullText();
@@ -768,6 +813,7 @@ void StationView::rebuildTiles()
     for (int i = 0; i < m_model->rowCount(); ++i) {
         auto *t = new StationTile(i, m_tileArea);
         t->activated = [this, i] { openModule(i); };
+        t->reportRequested = [this, i] { openReport(i); };
         m_grid->addWidget(t);
         m_tiles.push_back(t);
     }
@@ -827,6 +873,7 @@ void StationView::updateActions()
     m_start->setEnabled(!busy && m_havePlan && !checkedPorts().isEmpty());
     m_cancel->setEnabled(busy);
     m_rerun->setEnabled(anyFailed);
+    m_openFolder->setEnabled(m_runner && !m_runner->runFolder().isEmpty());
     m_tray->setEnabled(!busy);
 }
 

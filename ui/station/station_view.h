@@ -5,7 +5,9 @@
 // each module's serial number, product, step under way, progress and verdict, with the
 // failing step and its values for a module that failed. Clicking a tile opens that module's
 // workspace in the main window (openWorkspaceRequested), at once for a module that is not
-// under test, else when its test has ended.
+// under test, else when its test has ended; a finished tile's Report button opens the module's
+// PDF report, and "Open run folder" the folder of the run (through the desktop's viewers, or
+// an opener a test puts in their place).
 //
 // "Simulated tray…" starts simulated HI14 modules on pseudo-terminals (the demo: 8 modules,
 // one with a noisy gyro, one mounted wrongly, one with firmware 1.6.6); the window owns them
@@ -32,6 +34,7 @@ class QMessageBox;
 class QPushButton;
 class QScrollArea;
 class QSettings;
+class QUrl;
 
 namespace imudesk::sim {
 class PtySimulator;
@@ -67,6 +70,8 @@ class StationView : public QWidget {
 
 public:
     using ErrorPresenter = std::function<void(const QString &message)>;
+    // Opens a file or folder in the desktop's application for it; false when none could.
+    using UrlOpener = std::function<bool(const QUrl &url)>;
 
     static constexpr int kDemoTraySize = 8;
     static constexpr int kMaxTraySize = 16;
@@ -124,6 +129,13 @@ public:
     int tileColumns() const;
     // Opens the module's workspace now, or when its test has ended (what a click on its tile does).
     void openModule(int index);
+    // Opens the module's PDF report (its tile's Report button); false, and the reason shown,
+    // while it has none yet.
+    bool openReport(int index);
+    // Opens the folder of the current (or last) run; false, and the reason shown, without one.
+    bool openRunFolder();
+    // Replaces QDesktopServices::openUrl (tests record the URLs instead).
+    void setUrlOpener(UrlOpener opener) { m_urlOpener = std::move(opener); }
 
     // Replaces the non-modal message box (tests collect the messages instead).
     void setErrorPresenter(ErrorPresenter presenter) { m_errorPresenter = std::move(presenter); }
@@ -155,6 +167,7 @@ private:
     void onModuleFinished(int index);
     void showNewReportErrors();
     int baudFor(const QString &port) const;
+    bool openUrl(const QString &localPath);
 
     station::TestPlan m_plan;
     QString m_planPath;
@@ -187,6 +200,7 @@ private:
     QPushButton *m_start = nullptr;
     QPushButton *m_cancel = nullptr;
     QPushButton *m_rerun = nullptr;
+    QPushButton *m_openFolder = nullptr;
     ElidedLabel *m_summary = nullptr;
     QLabel *m_placeholder = nullptr;
     QScrollArea *m_scroll = nullptr;
@@ -196,6 +210,7 @@ private:
     QPointer<PlanEditorDialog> m_editor;
 
     ErrorPresenter m_errorPresenter;
+    UrlOpener m_urlOpener;
     QPointer<QMessageBox> m_errorBox;
 };
 

@@ -14,6 +14,7 @@
 #include "device/modbus_session.h"
 #include "workspace/device_workspace.h"
 #include "recording/export_dialog.h"
+#include "recording/recording_controls.h"
 #include "firmware/firmware_update_dialog.h"
 #include "workspace/link_factory.h"
 #include "workspace/preferences.h"
@@ -63,7 +64,7 @@ ToolActions::ToolActions(ToolHost *host, QObject *parent) : QObject(parent), m_h
     connect(m_firmware, &QAction::triggered, this, &ToolActions::updateFirmware);
     m_record = make("recordAction");
     m_record->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_R));
-    connect(m_record, &QAction::triggered, this, &ToolActions::showRecording);
+    connect(m_record, &QAction::triggered, this, &ToolActions::record);
     m_magCal = make("magCalAction");
     connect(m_magCal, &QAction::triggered, this, &ToolActions::openMagCal);
     m_gyroCal = make("gyroCalAction");
@@ -129,7 +130,7 @@ void ToolActions::retranslate()
     m_firmware->setText(tr("&Update firmware…"));
     m_firmware->setStatusTip(tr("Write a new firmware image to the module: over its serial port, verified by reading it back, or over CANopen, verified by the bootloader's CRC"));
     m_record->setText(tr("&Record"));
-    m_record->setStatusTip(tr("Show the recording controls of this device"));
+    m_record->setStatusTip(tr("Record this device to a capture file; the recording panel shows the progress and Stop"));
     m_magCal->setText(tr("&Magnetometer…"));
     m_magCal->setStatusTip(tr("Calibrate the magnetometer: turn the module while the sphere fills, then judge the fit"));
     m_gyroCal->setText(tr("&Gyro scale factor…"));
@@ -161,6 +162,10 @@ void ToolActions::update(const DeviceWorkspace *ws)
     m_configuration->setEnabled(settings);
     m_profiles->setEnabled(settings && connected);
     m_record->setEnabled(caps.testFlag(C::Recording));
+    // Every tab that was current may record: Export offers the last recording of any of them.
+    if (ws && ws->recordingControls())
+        connect(ws->recordingControls(), &RecordingControls::recordingStopped, this, &ToolActions::noteRecording,
+                Qt::UniqueConnection);
     const bool hasMag = ws && ws->identity() && ws->identity()->hasMagnetometer() && ws->identity()->firmware;
     m_magCal->setEnabled(settings && connected && hasMag);
     m_gyroCal->setEnabled(settings && connected);
@@ -217,8 +222,12 @@ void ToolActions::chooseCsv()
 
 void ToolActions::exportCapture()
 {
-    const QString path = QFileDialog::getOpenFileName(m_host->dialogParent(), tr("Export capture"), m_host->preferences().effectiveRecordingFolder(),
-                                                      tr("Captures, vendor CSV and raw dumps (*.imucap *.csv *.bin *.raw *.log *.dat *.txt);;All files (*)"));
+    // The recording just made is what is usually exported: the dialog opens with it (its
+    // Choose… picks another); without one, the file is asked for first.
+    QString path = QFileInfo::exists(m_lastRecording) ? m_lastRecording : QString();
+    if (path.isEmpty())
+        path = QFileDialog::getOpenFileName(m_host->dialogParent(), tr("Export capture"), m_host->preferences().effectiveRecordingFolder(),
+                                            tr("Captures, vendor CSV and raw dumps (*.imucap *.csv *.bin *.raw *.log *.dat *.txt);;All files (*)"));
     if (path.isEmpty())
         return;
     auto *dialog = new ExportDialog(path, m_host->dialogParent());
@@ -288,12 +297,23 @@ void ToolActions::showConfiguration()
     }
 }
 
-void ToolActions::showRecording()
+void ToolActions::record()
 {
-    if (DeviceWorkspace *ws = m_host->currentWorkspace()) {
-        ws->recordingDock()->show();
-        ws->recordingDock()->raise();
-    }
+    DeviceWorkspace *ws = m_host->currentWorkspace();
+    if (!ws)
+        return;
+    ws->recordingDock()->show();
+    ws->recordingDock()->raise();
+    RecordingControls *controls = ws->recordingControls();
+    connect(controls, &RecordingControls::recordingStopped, this, &ToolActions::noteRecording, Qt::UniqueConnection);
+    // A second Ctrl+R while recording leaves it running (Stop is in the panel).
+    if (!controls->isRecording())
+        controls->startRecording();
+}
+
+void ToolActions::noteRecording(const QString &path)
+{
+    m_lastRecording = path;
 }
 
 void ToolActions::openProfiles()

@@ -54,6 +54,8 @@ public:
     // The steps behind the actions, callable without a file dialog (tests, command line).
     bool openCapture(const QString &path);
     bool importVendorCsv(const QString &csvPath, const QString &capturePath);
+    // The recording made last in this session (any tab), what Export offers first; empty: none.
+    QString lastRecording() const { return m_lastRecording; }
 
 private:
     QAction *make(const char *objectName);
@@ -70,7 +72,9 @@ private:
     void updateFirmware();
     // The workspace's link when it is a HiPNUC module on CANopen (the CAN update path).
     static const device::CanSession *canopenLink(const DeviceWorkspace *ws);
-    void showRecording();
+    // Device > Record: starts recording the current tab's device (the panel shows why when it cannot).
+    void record();
+    void noteRecording(const QString &path);
     void openMagCal();
     void openGyroCal();
     void openAttitudeReset();
@@ -95,6 +99,7 @@ private:
     QAction *m_attitudeReset = nullptr;
     QAction *m_compassCal = nullptr;
     QAction *m_calHistory = nullptr;
+    QString m_lastRecording;
     QMenu *m_toolsMenu = nullptr;
     QMenu *m_calibrateMenu = nullptr;
 };
