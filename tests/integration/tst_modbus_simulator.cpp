@@ -6,6 +6,7 @@
 #include "protocol/modbus/identity_block.h"
 #include "protocol/modbus/register_decoder.h"
 #include "protocol/modbus/rtu_adu.h"
+#include "model/attitude.h"
 #include "sim/modbus_simulator.h"
 #include "sim/motion_model.h"
 
@@ -287,7 +288,10 @@ private Q_SLOTS:
         const auto s = RegisterDecoder::hec495Sample(blockOf(r));
         QVERIFY(std::abs(s.pitch - sim::MotionModel::kStaticPitchDeg) < 0.01);
         QVERIFY(std::abs(s.roll - sim::MotionModel::kStaticRollDeg) < 0.01);
-        QVERIFY(std::abs(s.yaw - (360.0 - sim::MotionModel::kStaticYawDeg)) < 0.01); // clockwise heading
+        // The registers hold the clockwise heading (0..360); the sample keeps the device's one
+        // convention, ±180, as its other links.
+        QVERIFY(std::abs(*blockOf(r).f32le(0x08) - (360.0 - sim::MotionModel::kStaticYawDeg)) < 0.01);
+        QVERIFY(std::abs(s.yaw - model::wrap180(360.0 - sim::MotionModel::kStaticYawDeg)) < 0.01);
         // The manual's single-pitch request (0x0005, 2) answers the pitch float.
         const Outcome p = readRegs(*c, 1, reg::kHecPitchSingle, 2);
         QCOMPARE(p.error, QModbusDevice::NoError);

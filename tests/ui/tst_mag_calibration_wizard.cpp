@@ -49,6 +49,21 @@ QString liveVerdictText(const ui::MagCalibrationWizard &wizard)
     return wizard.findChild<QLabel *>(QStringLiteral("liveVerdict"))->text();
 }
 
+// A tumbling HI14 (the same seed each time) with its session and a calibration history
+// folder: what the issue 32 wizard tests start from.
+struct TumblingModule {
+    static sim::SimOptions options()
+    {
+        sim::SimOptions o;
+        o.motion = sim::Motion::Tumble;
+        o.seed = 8;
+        return o;
+    }
+    sim::PtySimulator simulator{options()};
+    device::DeviceSession session;
+    QTemporaryDir history;
+};
+
 } // namespace
 
 class TstMagCalibrationWizard : public QObject {
@@ -146,17 +161,13 @@ private Q_SLOTS:
     // warning), and the device's verdict is shown beside it, not folded into it.
     void bothCalibrationsKeepTheirOwnVerdicts()
     {
-        sim::SimOptions o;
-        o.motion = sim::Motion::Tumble;
-        o.seed = 8;
-        sim::PtySimulator simulator(o);
-        QVERIFY(simulator.start());
-        device::DeviceSession session;
-        session.open(simulator.devicePath(), 115200);
+        TumblingModule run;
+        QVERIFY(run.simulator.start());
+        device::DeviceSession &session = run.session;
+        session.open(run.simulator.devicePath(), 115200);
         QTRY_COMPARE_WITH_TIMEOUT(session.state(), device::SessionState::Connected, 15000);
-        QTemporaryDir history;
         ui::MagCalibrationWizard wizard(session, model::FirmwareVersion{1, 7, 1});
-        toRotationPage(wizard, history.path());
+        toRotationPage(wizard, run.history.path());
         if (QTest::currentTestFailed())
             return;
 
@@ -200,7 +211,7 @@ private Q_SLOTS:
         QVERIFY2(device->text().contains(QStringLiteral("MCAL")) && device->text().contains(pass), qPrintable(device->text()));
         QVERIFY(device->text() != wizard.verdictHeadline()->text());
         // Kept apart in the saved run too: the top verdict is ImuDesk's fit.
-        const calib::CalibrationHistory h(history.path());
+        const calib::CalibrationHistory h(run.history.path());
         const auto runs = h.list(QStringLiteral("SIM-MAG-2"));
         QCOMPARE(runs.size(), 1);
         QCOMPARE(runs[0].verdict(), QStringLiteral("pass"));
@@ -215,17 +226,13 @@ private Q_SLOTS:
     // sample count and predicted heading error, in µT and never "uT".
     void oneSetOfFiguresPerRun()
     {
-        sim::SimOptions o;
-        o.motion = sim::Motion::Tumble;
-        o.seed = 8;
-        sim::PtySimulator simulator(o);
-        QVERIFY(simulator.start());
-        device::DeviceSession session;
-        session.open(simulator.devicePath(), 115200);
+        TumblingModule run;
+        QVERIFY(run.simulator.start());
+        device::DeviceSession &session = run.session;
+        session.open(run.simulator.devicePath(), 115200);
         QTRY_COMPARE_WITH_TIMEOUT(session.state(), device::SessionState::Connected, 15000);
-        QTemporaryDir history;
         ui::MagCalibrationWizard wizard(session, model::FirmwareVersion{1, 7, 1});
-        toRotationPage(wizard, history.path());
+        toRotationPage(wizard, run.history.path());
         if (QTest::currentTestFailed())
             return;
         QTRY_VERIFY_WITH_TIMEOUT(liveVerdictText(wizard).startsWith(QStringLiteral("So far: ")
@@ -264,7 +271,7 @@ private Q_SLOTS:
         QVERIFY2(!after2.contains(QStringLiteral("Turn the module")), qPrintable(after2));
 
         // The saved run and its report.
-        const calib::CalibrationHistory h(history.path());
+        const calib::CalibrationHistory h(run.history.path());
         const auto runs = h.list(QStringLiteral("SIM-MAG-2"));
         QCOMPARE(runs.size(), 1);
         QCOMPARE(runs[0].result.value(QStringLiteral("samples")).toInt(), r.samples);

@@ -502,23 +502,39 @@ void MainWindow::placeComparison()
     // Docked below the tabs when the window can give it its height; on a short screen (a
     // 1366x768 laptop, where the tab's charts, values and 3D view already take every row) the
     // window would grow past the screen's bottom (878 px on 768): there the comparison opens
-    // as a window of its own over the lower part of the screen, and the main window returns
-    // to the screen's height.
+    // as a window of its own over the lower part of the screen, and the main window keeps
+    // the screen's height.
     const QScreen *screen = this->screen();
     if (!screen || m_comparisonDock->isFloating())
         return;
-    QCoreApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest); // the dock in the layout
     const QRect avail = screen->availableGeometry();
-    const int frame = isMaximized() || isFullScreen() ? 0 : frameGeometry().height() - geometry().height();
-    if (minimumSizeHint().height() + frame <= avail.height() && frameGeometry().height() <= avail.height())
-        return;
+    const bool maximized = isMaximized() || isFullScreen();
+    const int frame = maximized ? 0 : frameGeometry().height() - geometry().height();
+    // What the window would need with the dock, before the layout grows the window: its bars
+    // as they are, the tabs' least height, the dock, and a margin for the separator and the
+    // dock's title (measured: about 30 px more than the sum).
+    const int bars = height() - centralWidget()->height();
+    const int predicted = bars + centralWidget()->minimumSizeHint().height()
+        + m_comparisonDock->minimumSizeHint().height() + 40 + frame;
+    if (predicted <= avail.height()) {
+        // The layout has the last word: should the window still have grown, float after all.
+        QCoreApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);
+        if (minimumSizeHint().height() + frame <= avail.height() && frameGeometry().height() <= avail.height())
+            return;
+    }
     const int h = std::max(m_comparisonDock->minimumSizeHint().height(), avail.height() * 2 / 5);
     m_comparisonDock->setFloating(true);
     m_comparisonDock->setGeometry(avail.left() + avail.width() / 8, avail.bottom() - h - 8, avail.width() * 3 / 4, h);
     QCoreApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);
-    if (frameGeometry().height() > avail.height())
-        resize(width(), avail.height() - frame);
-    fitToScreen();
+    if (frameGeometry().height() > avail.height()) {
+        if (maximized) { // the window manager fits a maximised window to the screen again
+            setWindowState(windowState() & ~Qt::WindowMaximized);
+            setWindowState(windowState() | Qt::WindowMaximized);
+        } else {
+            resize(width(), avail.height() - frame);
+            fitToScreen();
+        }
+    }
 }
 
 void MainWindow::refreshComparison()
