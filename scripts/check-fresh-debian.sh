@@ -1,12 +1,17 @@
 #!/usr/bin/env bash
 # Proves that scripts/debian-packages.txt is complete: in a fresh Debian 12 minbase root, with only
 # what `scripts/setup.sh install` installs there (the same function as the README's two commands),
-# the project configures with tests and benchmarks on, the sanitizer and fuzzer toolchains link, and
-# the application (imudesk --demo --screenshot) and the CLI (simulate --pty + probe) run offscreen.
+# the project configures with tests and benchmarks on and the sanitizer and fuzzer toolchains link;
+# and that the Debian package (cmake/Packaging.cmake) installs: `apt-get install ./imudesk_*.deb` in
+# the bare root, before the list, brings every library it needs, and from /usr/bin the application
+# (imudesk --demo --screenshot) and the CLI (simulate --pty + probe, --help) run offscreen and
+# `man imudesk-cli` shows its manual page.
 #
-#   scripts/check-fresh-debian.sh [--build DIR]   DIR: a built tree whose binaries are installed into
-#                                                 the root (default build/test; without one the two
-#                                                 binaries are built inside the root, which is slower)
+#   scripts/check-fresh-debian.sh [--build DIR]   DIR: a built tree whose package DIR/package/imudesk_*.deb
+#                                                 is installed in the root (default build/test; made with
+#                                                 cpack here when DIR has binaries but no package; without
+#                                                 binaries, imudesk and imudesk-cli are built and packaged
+#                                                 inside the root after the list, which is slower)
 #   scripts/check-fresh-debian.sh --clean         only remove roots left behind by killed runs
 #   scripts/check-fresh-debian.sh --readme demo|test
 #                                                 instead of the steps, run the README's command
@@ -80,6 +85,70 @@ if [ "${1:-}" = --inside ]; then
   cp /etc/resolv.conf "$rootfs/etc/resolv.conf" 2>/dev/null
   pass
 
+  # The Debian package in /tmp/imudesk-deb of the root: installed with apt-get as a user would (its
+  # Depends only: recommends are not part of the check), then imudesk and imudesk-cli run from /usr/bin.
+  package_steps() { # when: "into the bare root" or "after the list"
+    local deb
+    deb="$(cd "$rootfs" && ls tmp/imudesk-deb/imudesk_*.deb 2>/dev/null | head -n 1)"
+    begin "install the Debian package $when: apt-get install ./$(basename "$deb")"
+    [ -n "$deb" ] || failstep "no package in the root's /tmp/imudesk-deb"
+    { inroot apt-get update -q && inroot bash -c "cd /tmp/imudesk-deb && apt-get install -y -q --no-install-recommends ./$(basename "$deb")"; } \
+      > "$work/deb-install.log" 2>&1 || failstep "apt-get could not install the package" "$work/deb-install.log"
+    [ -x "$rootfs/usr/bin/imudesk" ] && [ -x "$rootfs/usr/bin/imudesk-cli" ] \
+      || failstep "the package installed no /usr/bin/imudesk or /usr/bin/imudesk-cli" "$work/deb-install.log"
+    say "      $(grep -oE '[0-9]+ newly installed' "$work/deb-install.log" | tail -n 1); Depends: $(inroot dpkg-query -W -f='${Depends}' imudesk | cut -c1-110)..."
+    pass
+
+    begin "every shared library of /usr/bin/imudesk and /usr/bin/imudesk-cli is there"
+    inroot ldd /usr/bin/imudesk /usr/bin/imudesk-cli > "$work/ldd.log" 2>&1
+    if grep -q 'not found' "$work/ldd.log"; then
+      grep 'not found' "$work/ldd.log" | sort -u | sed 's/^/   | /'
+      failstep "shared libraries missing (the package's Depends lack their Debian packages)"
+    fi
+    pass
+
+    begin "imudesk --demo --screenshot offscreen"
+    inroot env QT_QPA_PLATFORM=offscreen XDG_CONFIG_HOME=/tmp/config timeout 120 \
+      imudesk --demo --screenshot /tmp/demo.png --after 2 > "$work/demo.log" 2>&1 \
+      || failstep "imudesk did not run (a Qt plugin or runtime package missing from the package's Depends?)" "$work/demo.log"
+    magic="$(head -c 8 "$rootfs/tmp/demo.png" 2>/dev/null | od -An -tx1 | tr -d ' \n')"
+    [ "$magic" = 89504e470d0a1a0a ] || failstep "no PNG written" "$work/demo.log"
+    say "      $(stat -c %s "$rootfs/tmp/demo.png") bytes of PNG"
+    pass
+
+    begin "imudesk-cli simulate --pty, then imudesk-cli probe on that pty"
+    inroot bash -c '
+      imudesk-cli simulate --pty > /tmp/sim.out 2>&1 &
+      sim=$!
+      pty=""
+      for _ in $(seq 100); do
+        pty="$(sed -n "s/^pty: *//p" /tmp/sim.out | head -n 1)"
+        [ -n "$pty" ] && break
+        sleep 0.1
+      done
+      [ -n "$pty" ] || { echo "the simulator printed no pty"; cat /tmp/sim.out; kill $sim; exit 1; }
+      timeout 60 imudesk-cli probe "$pty" --json
+      rc=$?
+      kill $sim 2>/dev/null; wait $sim 2>/dev/null
+      exit $rc' > "$work/probe.log" 2>&1 \
+      || failstep "simulate + probe failed" "$work/probe.log"
+    grep -q '"identified": *true' "$work/probe.log" || failstep "probe did not identify the simulated module" "$work/probe.log"
+    say "      $(grep -oE '"product": *"[^"]*"' "$work/probe.log" | head -n 1), $(grep -oE '"firmware": *"[^"]*"' "$work/probe.log" | head -n 1)"
+    pass
+
+    # man-db is the check's own tool (a reader of the page), not a dependency of the package.
+    begin "imudesk-cli --help, and man imudesk-cli (man-db installed for the check)"
+    inroot imudesk-cli --help > "$work/help.log" 2>&1 || failstep "imudesk-cli --help failed" "$work/help.log"
+    grep -q '^usage: imudesk-cli' "$work/help.log" || failstep "imudesk-cli --help printed no usage" "$work/help.log"
+    inroot apt-get install -y -q --no-install-recommends man-db > "$work/man-db.log" 2>&1 \
+      || failstep "apt-get could not install man-db" "$work/man-db.log"
+    inroot env MANWIDTH=80 man imudesk-cli > "$work/man.log" 2>&1 || failstep "man imudesk-cli failed" "$work/man.log"
+    grep -q 'talk to IMU and AHRS modules from scripts' "$work/man.log" || failstep "man imudesk-cli showed no NAME section" "$work/man.log"
+    inroot env MANWIDTH=80 man imudesk > "$work/man-gui.log" 2>&1 || failstep "man imudesk failed" "$work/man-gui.log"
+    say "      --help: $(wc -l < "$work/help.log") lines; man imudesk-cli: $(wc -l < "$work/man.log") lines, man imudesk: $(wc -l < "$work/man-gui.log") lines"
+    pass
+  }
+
   if [ -n "$readme" ]; then
     begin "the README's command as root: scripts/setup.sh $readme (log: $work/readme-$readme.log)"
     inroot env IMUDESK_IN_FRESH_ROOT=1 bash -c "cd /src && ./scripts/setup.sh $readme" < /dev/null \
@@ -95,6 +164,10 @@ if [ "${1:-}" = --inside ]; then
     fi
     [ "$rc" -eq 0 ] && pass || failstep "scripts/setup.sh $readme ended with $rc"
     exit 0
+  fi
+
+  if [ -f "$work/host-package" ]; then
+    when="into the bare root" package_steps
   fi
 
   begin "install the packages: scripts/setup.sh install (as the README's commands do)"
@@ -164,51 +237,15 @@ EOF
     || failstep "clang++ -fsanitize=fuzzer does not build or run (clang, libclang-rt-14-dev)" "$work/tools.log"
   pass
 
-  if [ ! -x "$rootfs/opt/imudesk/bin/imudesk" ]; then
-    begin "build imudesk and imudesk-cli in the root (no host build was given)"
-    inroot cmake --build /build -j "$(nproc)" --target imudesk imudesk-cli > "$work/build.log" 2>&1 \
-      && inroot cmake --install /build --prefix /opt/imudesk > /dev/null 2>&1 \
-      || failstep "build in the root failed" "$work/build.log"
+  if [ ! -f "$work/host-package" ]; then
+    begin "build imudesk and imudesk-cli in the root and package them (no host build was given)"
+    { inroot cmake --build /build -j "$(nproc)" --target imudesk imudesk-cli \
+        && inroot cpack -G DEB --config /build/CPackConfig.cmake -B /build/package \
+        && mkdir -p "$rootfs/tmp/imudesk-deb" && cp "$rootfs"/build/package/imudesk_*.deb "$rootfs/tmp/imudesk-deb/"; } \
+      > "$work/build.log" 2>&1 || failstep "build or cpack in the root failed" "$work/build.log"
     pass
+    when="after the list" package_steps
   fi
-
-  begin "every shared library of imudesk and imudesk-cli is there"
-  inroot ldd /opt/imudesk/bin/imudesk /opt/imudesk/bin/imudesk-cli > "$work/ldd.log" 2>&1
-  if grep -q 'not found' "$work/ldd.log"; then
-    grep 'not found' "$work/ldd.log" | sort -u | sed 's/^/   | /'
-    failstep "shared libraries missing (their Debian packages are missing from the list)"
-  fi
-  pass
-
-  begin "imudesk --demo --screenshot offscreen"
-  inroot env QT_QPA_PLATFORM=offscreen XDG_CONFIG_HOME=/tmp/config timeout 120 \
-    /opt/imudesk/bin/imudesk --demo --screenshot /tmp/demo.png --after 2 > "$work/demo.log" 2>&1 \
-    || failstep "imudesk did not run (a Qt plugin or runtime package missing?)" "$work/demo.log"
-  magic="$(head -c 8 "$rootfs/tmp/demo.png" 2>/dev/null | od -An -tx1 | tr -d ' \n')"
-  [ "$magic" = 89504e470d0a1a0a ] || failstep "no PNG written" "$work/demo.log"
-  say "      $(stat -c %s "$rootfs/tmp/demo.png") bytes of PNG"
-  pass
-
-  begin "imudesk-cli simulate --pty, then imudesk-cli probe on that pty"
-  inroot bash -c '
-    cli=/opt/imudesk/bin/imudesk-cli
-    "$cli" simulate --pty > /tmp/sim.out 2>&1 &
-    sim=$!
-    pty=""
-    for _ in $(seq 100); do
-      pty="$(sed -n "s/^pty: *//p" /tmp/sim.out | head -n 1)"
-      [ -n "$pty" ] && break
-      sleep 0.1
-    done
-    [ -n "$pty" ] || { echo "the simulator printed no pty"; cat /tmp/sim.out; kill $sim; exit 1; }
-    timeout 60 "$cli" probe "$pty" --json
-    rc=$?
-    kill $sim 2>/dev/null; wait $sim 2>/dev/null
-    exit $rc' > "$work/probe.log" 2>&1 \
-    || failstep "simulate + probe failed" "$work/probe.log"
-  grep -q '"identified": *true' "$work/probe.log" || failstep "probe did not identify the simulated module" "$work/probe.log"
-  say "      $(grep -oE '"product": *"[^"]*"' "$work/probe.log" | head -n 1), $(grep -oE '"firmware": *"[^"]*"' "$work/probe.log" | head -n 1)"
-  pass
   exit 0
 fi
 
@@ -325,9 +362,16 @@ if [ -n "${IMUDESK_FRESH_PACKAGE_LIST:-}" ]; then
 fi
 if [ -n "$readme" ]; then
   say "   ok root unpacked with the sources ($(( $(now) - s )) s)"
+elif deb="$(ls "$build/package/"imudesk_*.deb 2>/dev/null | head -n 1)" && [ -n "$deb" ]; then
+  mkdir "$rootfs/tmp/imudesk-deb" && cp "$deb" "$rootfs/tmp/imudesk-deb/" && touch "$work/host-package"
+  say "   ok root unpacked with the sources and the package $deb ($(( $(now) - s )) s)"
 elif [ -x "$build/app/gui/imudesk" ] && [ -x "$build/app/cli/imudesk-cli" ]; then
-  cmake --install "$build" --prefix "$rootfs/opt/imudesk" > /dev/null
-  say "   ok root unpacked, sources and the binaries of $build installed in it ($(( $(now) - s )) s)"
+  # A built tree without its package (scripts/setup.sh makes it; cpack here otherwise, into the
+  # root's work folder, so the build tree gets no files of root's).
+  cpack -G DEB --config "$build/CPackConfig.cmake" -B "$work/package" > "$work/cpack.log" 2>&1 \
+    || { tail -n 20 "$work/cpack.log"; say "VERDICT: FAIL (cpack could not package $build)"; exit 1; }
+  mkdir "$rootfs/tmp/imudesk-deb" && cp "$work/package/"imudesk_*.deb "$rootfs/tmp/imudesk-deb/" && touch "$work/host-package"
+  say "   ok root unpacked with the sources; $build packaged with cpack ($(( $(now) - s )) s)"
 else
   say "   ok root unpacked with the sources ($(( $(now) - s )) s); no built binaries in $build: building them in the root"
 fi
@@ -340,9 +384,9 @@ rc=0
 wait "$ns_pid" || rc=$?
 ns_pid=""
 if [ "$rc" -eq 0 ]; then
-  say "VERDICT: PASS: a fresh Debian 12 root with scripts/debian-packages.txt alone configures, runs imudesk and imudesk-cli ($(( $(now) - t0 )) s)"
+  say "VERDICT: PASS: a fresh Debian 12 root with scripts/debian-packages.txt alone configures; the .deb installs there and imudesk and imudesk-cli run from /usr/bin ($(( $(now) - t0 )) s)"
 else
   say "VERDICT: FAIL: the fresh Debian 12 root check failed at the step above ($(( $(now) - t0 )) s; logs in $cache/last-run)"
-  say "         a package the host has by hand is missing from scripts/debian-packages.txt, or a step broke"
+  say "         a package the host has by hand is missing from scripts/debian-packages.txt or from the .deb's Depends, or a step broke"
 fi
 exit "$rc"

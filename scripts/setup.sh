@@ -2,8 +2,11 @@
 # ImuDesk set-up on Debian 12; safe to run again. Run it as root (a container, a new VM: no sudo
 # needed) or as a user with sudo rights: then only apt-get runs through sudo, and the build is yours.
 #   scripts/setup.sh demo     install packages, build a release build, open imudesk on a simulated HI14 (--demo)
-#   scripts/setup.sh test     install packages, build, prove the package list in a fresh Debian 12 root
-#                             (scripts/check-fresh-debian.sh), run the whole test suite headless and the
+#   scripts/setup.sh package  install packages, build a release build, make the Debian package
+#                             build/release/package/imudesk_<version>_amd64.deb (cpack) and lint it (lintian)
+#   scripts/setup.sh test     install packages, build, make and lint the Debian package, prove the package
+#                             list and the package in a fresh Debian 12 root (scripts/check-fresh-debian.sh:
+#                             it installs the .deb there with apt-get), run the whole test suite headless and the
 #                             benchmarks, then the whole test suite again in an AddressSanitizer + UBSan
 #                             build, then every fuzz target (clang, libFuzzer) for FUZZ_SECONDS (default 20)
 #   scripts/setup.sh install  only install the Debian packages (the fresh-root check runs this inside its root)
@@ -13,8 +16,8 @@ here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 root="$(cd "$here/.." && pwd)"
 mode="${1:-}"
 case "$mode" in
-  demo|test|install) ;;
-  *) echo "usage: $0 demo|test|install" >&2; exit 2 ;;
+  demo|package|test|install) ;;
+  *) echo "usage: $0 demo|package|test|install" >&2; exit 2 ;;
 esac
 
 jobs="$(nproc 2>/dev/null || echo 2)"
@@ -52,8 +55,40 @@ configure_and_build() { # dir, build type, extra cmake args...
   cmake --build "$dir" -j "$jobs"
 }
 
+# The Debian package of a built tree: DIR/package/imudesk_<version>_<arch>.deb (cmake/Packaging.cmake
+# says what goes in it). cpack installs what the tree has built; it builds nothing itself.
+make_package() { # dir
+  local dir="$1" deb
+  rm -f "$dir/package/"imudesk_*.deb
+  cpack -G DEB --config "$dir/CPackConfig.cmake" -B "$dir/package" > "$dir/package.log" 2>&1 \
+    || { tail -n 25 "$dir/package.log" >&2; echo "!! cpack could not make the package (log: $dir/package.log)" >&2; exit 1; }
+  deb="$(ls "$dir/package/"imudesk_*.deb)"
+  echo "   package: $deb"
+  echo "   depends: $(dpkg-deb -f "$deb" Depends)"
+}
+# lintian on a package: every tag it reports is printed; an error fails the run, warnings do not.
+lint_package() { # dir
+  local deb rc=0
+  deb="$(ls "$1/package/"imudesk_*.deb)"
+  lintian --fail-on error --display-info "$deb" > "$1/lintian.log" 2>&1 || rc=$?
+  sed 's/^/   | /' "$1/lintian.log"
+  if [ "$rc" -ne 0 ]; then
+    echo "!! lintian reports errors in $deb (above)" >&2
+    exit 1
+  fi
+  echo "   lintian: no error ($(grep -c '^W: ' "$1/lintian.log" || true) warnings)"
+}
+
 install_packages
 [ "$mode" = install ] && exit 0
+
+if [ "$mode" = package ]; then
+  configure_and_build "$root/build/release" Release -DIMUDESK_BUILD_TESTS=OFF -DIMUDESK_BUILD_BENCH=OFF
+  make_package "$root/build/release"
+  lint_package "$root/build/release"
+  echo "Install it with: sudo apt-get install $(ls "$root/build/release/package/"imudesk_*.deb)"
+  exit 0
+fi
 
 if [ "$mode" = demo ]; then
   configure_and_build "$root/build/release" Release -DIMUDESK_BUILD_TESTS=OFF
@@ -86,10 +121,16 @@ trap 'phase_summary' EXIT
 export QT_QPA_PLATFORM=offscreen
 phase "build (release, tests and benchmarks)"
 configure_and_build "$root/build/test" Release -DIMUDESK_BUILD_TESTS=ON -DIMUDESK_BUILD_BENCH=ON
-phase "fresh Debian 12 root: the package list alone configures the project and runs the app and CLI"
+phase "Debian package: build it and lint it (cpack from build/test, lintian)"
+# The binaries of the build above, no second build: build/test/package/imudesk_<version>_amd64.deb.
+make_package "$root/build/test"
+lint_package "$root/build/test"
+phase "fresh Debian 12 root: the package list alone configures the project; the .deb installs and runs"
 # Fails when a build, test or runtime dependency is missing from scripts/debian-packages.txt (the
-# host may have it installed by hand), naming it. Then the check's own safety test: a run killed
-# during its package install leaves the host's /dev untouched and its root removable.
+# host may have it installed by hand), naming it, or when the Debian package above lacks a
+# dependency: it is installed with apt-get into the bare root before the list, and imudesk and
+# imudesk-cli run from /usr/bin. Then the check's own safety test: a run killed during its package
+# install leaves the host's /dev untouched and its root removable.
 if [ -n "${IMUDESK_IN_FRESH_ROOT:-}" ]; then
   echo "   skipped: this run is itself inside the fresh root check's root"
 else

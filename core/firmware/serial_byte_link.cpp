@@ -1,5 +1,7 @@
 #include "serial_byte_link.h"
 
+#include "io/serial_transport.h"
+
 #include <QSerialPort>
 #include <QThread>
 
@@ -21,10 +23,14 @@ bool SerialByteLink::open(int baud, QString *error)
     m_port = std::make_unique<QSerialPort>();
     m_port->setPortName(m_name);
     if (!m_port->open(QIODevice::ReadWrite)) {
-        if (error)
-            *error = tr("cannot open %1: %2 (is another program using it, or do you lack permission? Close it or "
-                        "join the dialout group)")
-                         .arg(m_name, m_port->errorString());
+        if (error) {
+            // The words of a session's open: a port in use says so, a refused one names the group
+            // to join (dialout) and the command that does it.
+            const auto err = m_port->error();
+            const bool accessible = err != QSerialPort::PermissionError || io::SerialTransport::isAccessible(m_name);
+            *error = io::SerialTransport::describeOpenError(
+                m_name, io::SerialTransport::classifyOpenError(int(err), accessible), m_port->errorString());
+        }
         m_port.reset();
         return false;
     }

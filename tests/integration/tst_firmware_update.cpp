@@ -4,6 +4,7 @@
 // refused before any byte is sent, cancel (SIGINT) mid-write and resume.
 #include "../common/cli_run.h"
 #include "../common/firmware_files.h"
+#include "firmware/serial_byte_link.h"
 #include "protocol/ihex/firmware_image.h"
 #include "protocol/ihex/intel_hex_writer.h"
 #include "sim/kboot_bootloader.h"
@@ -13,10 +14,12 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QProcess>
+#include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QTest>
 
 #include <csignal>
+#include <unistd.h>
 
 using namespace imudesk;
 using protocol::ihex::FirmwareImage;
@@ -177,6 +180,45 @@ private Q_SLOTS:
         QVERIFY2(r.err.contains(QStringLiteral("nothing was sent")), qPrintable(r.err));
         QCOMPARE(s.stats().bytesIn, uint64_t(0));
         QCOMPARE(s.stats().bytesDiscarded, uint64_t(0));
+    }
+
+    // A port the user may not open: the update says which group to join and how, in the same
+    // words as a session's open (io::SerialTransport), from the link the GUI and the CLI share.
+    void refusedPortSaysWhichGroup()
+    {
+        sim::PtySimulator s(fastModule());
+        QVERIFY(s.start());
+        const QString pty = s.devicePath();
+        QString message;
+        if (::geteuid() != 0) {
+            QVERIFY(QFile::setPermissions(pty, QFileDevice::Permissions()));
+            firmware::SerialByteLink link(pty);
+            QVERIFY(!link.open(kBaud, &message));
+        } else {
+            // Root opens any device: run the CLI as the user nobody on root's pty (mode 0620). The
+            // image is in a folder nobody may read, so that only the port can stop the update.
+            const QString setpriv = QStandardPaths::findExecutable(QStringLiteral("setpriv"));
+            if (setpriv.isEmpty())
+                QSKIP("running as root without setpriv: cannot produce a permission error");
+            QTemporaryDir shared;
+            QVERIFY(shared.isValid());
+            QVERIFY(QFile::setPermissions(shared.path(), QFileDevice::ReadOwner | QFileDevice::WriteOwner
+                                                             | QFileDevice::ExeOwner | QFileDevice::ReadOther
+                                                             | QFileDevice::ExeOther));
+            const QString hex = writeFile(shared, QStringLiteral("fw.hex"), IntelHexWriter::write(image("1.7.5", 4096)));
+            QVERIFY(QFile::setPermissions(hex, QFileDevice::ReadOwner | QFileDevice::ReadOther));
+            const auto r = imudesk::test::runProgram(
+                setpriv, {"--reuid=65534", "--regid=65534", "--clear-groups", IMUDESK_CLI_PATH, "update", pty, hex,
+                          "--baud", QString::number(kBaud)},
+                20000);
+            if (r.code == 127 || r.err.contains(QLatin1String("setpriv:")))
+                QSKIP(qPrintable(QStringLiteral("setpriv cannot run the CLI as nobody: ") + r.err));
+            QCOMPARE(r.code, 1);
+            message = r.err;
+        }
+        QVERIFY2(message.contains(QLatin1String("No permission to open ") + pty), qPrintable(message));
+        QVERIFY2(message.contains(QLatin1String("sudo usermod -aG dialout $USER")), qPrintable(message));
+        QCOMPARE(s.stats().bytesIn, uint64_t(0));
     }
 
     void outsideFlashWithoutLayoutRefusedBeforeErasing()
