@@ -48,7 +48,9 @@
         <location filename="../core/models/latest_values_model.cpp" line="+157" />
         <source>No new value for %n s: the device stopped sending this quantity (another output content, a polled record that stopped, or a link that went quiet).</source>
         <translation>
-            <numerusform>No new value for %n s: the device stopped sending this quantity (another output content, a polled record that stopped, or a link that went quiet).</numerusform><numerusform>No new value for %n s: the device stopped sending this quantity (another output content, a polled record that stopped, or a link that went quiet).</numerusform></translation>
+            <numerusform>No new value for %n s: the device stopped sending this quantity (another output content, a polled record that stopped, or a link that went quiet).</numerusform>
+            <numerusform>No new value for %n s: the device stopped sending this quantity (another output content, a polled record that stopped, or a link that went quiet).</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -79,7 +81,9 @@
         <location filename="../ui/charts/chart_panel.cpp" line="+342" />
         <source>%n chart(s) saved as one PNG in %1 (%2)</source>
         <translation>
-            <numerusform>%n chart saved as one PNG in %1 (%2)</numerusform><numerusform>%n charts saved as one PNG in %1 (%2)</numerusform></translation>
+            <numerusform>%n chart saved as one PNG in %1 (%2)</numerusform>
+            <numerusform>%n charts saved as one PNG in %1 (%2)</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -110,7 +114,9 @@
         <location filename="../ui/calibration/mag_calibration_wizard.cpp" line="+527" />
         <source>The device now corrects its own output, so ImuDesk's fit keeps the %n raw sample(s) collected before.</source>
         <translation>
-            <numerusform>The device now corrects its own output, so ImuDesk's fit keeps the %n raw sample collected before.</numerusform><numerusform>The device now corrects its own output, so ImuDesk's fit keeps the %n raw samples collected before.</numerusform></translation>
+            <numerusform>The device now corrects its own output, so ImuDesk's fit keeps the %n raw sample collected before.</numerusform>
+            <numerusform>The device now corrects its own output, so ImuDesk's fit keeps the %n raw samples collected before.</numerusform>
+        </translation>
     </message>
 </context>
 <context>

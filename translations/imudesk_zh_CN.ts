@@ -2974,12 +2974,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>SerialByteLink</name>
     <message>
-        <location filename="../core/firmware/serial_byte_link.cpp" line="+25" />
-        <source>cannot open %1: %2 (is another program using it, or do you lack permission? Close it or join the dialout group)</source>
-        <translation>无法打开 %1：%2（是否有其他程序正在使用，或没有访问权限？请关闭该程序，或将用户加入 dialout 组）</translation>
-    </message>
-    <message>
-        <location line="+31" />
+        <location filename="../core/firmware/serial_byte_link.cpp" line="+62" />
         <location line="+24" />
         <source>the port %1 is not open</source>
         <translation>串口 %1 未打开</translation>
@@ -5474,7 +5469,8 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <location line="-334" />
         <source>No new value for %n s: the device stopped sending this quantity (another output content, a polled record that stopped, or a link that went quiet).</source>
         <translation>
-            <numerusform>%n 秒内无新值：设备已停止发送该量（输出内容已更改、轮询记录已停止，或链路已静默）。</numerusform></translation>
+            <numerusform>%n 秒内无新值：设备已停止发送该量（输出内容已更改、轮询记录已停止，或链路已静默）。</numerusform>
+        </translation>
     </message>
     <message>
         <location line="+336" />
@@ -7796,7 +7792,8 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <location line="+175" />
         <source>%n chart(s) saved as one PNG in %1 (%2)</source>
         <translation>
-            <numerusform>已将 %n 个图表保存为一张 PNG，位于 %1（%2）</numerusform></translation>
+            <numerusform>已将 %n 个图表保存为一张 PNG，位于 %1（%2）</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -9712,7 +9709,8 @@ If the module is mounted on a PCB, in a housing or on a robot, calibrate it toge
         <location line="+393" />
         <source>The device now corrects its own output, so ImuDesk's fit keeps the %n raw sample(s) collected before.</source>
         <translation>
-            <numerusform>设备现在会自行校正其输出，因此 ImuDesk 的拟合只保留此前采集的 %n 个原始样本。</numerusform></translation>
+            <numerusform>设备现在会自行校正其输出，因此 ImuDesk 的拟合只保留此前采集的 %n 个原始样本。</numerusform>
+        </translation>
     </message>
     <message>
         <location line="+32" />
@@ -9989,7 +9987,7 @@ Samples: %3</source>
 <context>
     <name>imudesk::ui::MainWindow</name>
     <message>
-        <location filename="../ui/workspace/main_window.cpp" line="+361" />
+        <location filename="../ui/workspace/main_window.cpp" line="+363" />
         <source>Choose a port first.</source>
         <translation>请先选择串口。</translation>
     </message>
@@ -10019,7 +10017,7 @@ Samples: %3</source>
         <translation>%1 – %2</translation>
     </message>
     <message>
-        <location line="+95" />
+        <location line="+93" />
         <source>%1, serial %2</source>
         <translation>%1，序列号 %2</translation>
     </message>
@@ -10039,7 +10037,7 @@ Samples: %3</source>
         <translation>PNG 图像 (*.png)</translation>
     </message>
     <message>
-        <location line="+115" />
+        <location line="+121" />
         <source>&amp;File</source>
         <translation>文件(&amp;F)</translation>
     </message>
@@ -10125,6 +10123,16 @@ Samples: %3</source>
     </message>
     <message>
         <location line="+1" />
+        <source>Compare &amp;devices</source>
+        <translation>设备对比(&amp;D)</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>One channel of every connected device on one time axis, live whichever tab is in front</source>
+        <translation>所有已连接设备的同一通道绘于同一时间轴上，无论哪个标签页在前都实时更新</translation>
+    </message>
+    <message>
+        <location line="+2" />
         <source>&amp;User guide</source>
         <translation>用户指南(&amp;U)</translation>
     </message>

@@ -2974,12 +2974,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>SerialByteLink</name>
     <message>
-        <location filename="../core/firmware/serial_byte_link.cpp" line="+25" />
-        <source>cannot open %1: %2 (is another program using it, or do you lack permission? Close it or join the dialout group)</source>
-        <translation>無法開啟 %1：%2（是否有其他程式正在使用，或您沒有權限？請關閉該程式或將使用者加入 dialout 群組）</translation>
-    </message>
-    <message>
-        <location line="+31" />
+        <location filename="../core/firmware/serial_byte_link.cpp" line="+62" />
         <location line="+24" />
         <source>the port %1 is not open</source>
         <translation>串列埠 %1 未開啟</translation>
@@ -5474,7 +5469,8 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <location line="-334" />
         <source>No new value for %n s: the device stopped sending this quantity (another output content, a polled record that stopped, or a link that went quiet).</source>
         <translation>
-            <numerusform>%n 秒內無新值：裝置已停止傳送此量（輸出內容已更改、輪詢記錄已停止，或連線已靜默）。</numerusform></translation>
+            <numerusform>%n 秒內無新值：裝置已停止傳送此量（輸出內容已更改、輪詢記錄已停止，或連線已靜默）。</numerusform>
+        </translation>
     </message>
     <message>
         <location line="+336" />
@@ -7796,7 +7792,8 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <location line="+175" />
         <source>%n chart(s) saved as one PNG in %1 (%2)</source>
         <translation>
-            <numerusform>已將 %n 個圖表儲存為一張 PNG，位於 %1（%2）</numerusform></translation>
+            <numerusform>已將 %n 個圖表儲存為一張 PNG，位於 %1（%2）</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -9712,7 +9709,8 @@ If the module is mounted on a PCB, in a housing or on a robot, calibrate it toge
         <location line="+393" />
         <source>The device now corrects its own output, so ImuDesk's fit keeps the %n raw sample(s) collected before.</source>
         <translation>
-            <numerusform>裝置現在會自行校正其輸出，因此 ImuDesk 的擬合只保留此前擷取的 %n 個原始樣本。</numerusform></translation>
+            <numerusform>裝置現在會自行校正其輸出，因此 ImuDesk 的擬合只保留此前擷取的 %n 個原始樣本。</numerusform>
+        </translation>
     </message>
     <message>
         <location line="+32" />
@@ -9989,7 +9987,7 @@ Samples: %3</source>
 <context>
     <name>imudesk::ui::MainWindow</name>
     <message>
-        <location filename="../ui/workspace/main_window.cpp" line="+361" />
+        <location filename="../ui/workspace/main_window.cpp" line="+363" />
         <source>Choose a port first.</source>
         <translation>請先選擇串列埠。</translation>
     </message>
@@ -10019,7 +10017,7 @@ Samples: %3</source>
         <translation>%1 – %2</translation>
     </message>
     <message>
-        <location line="+95" />
+        <location line="+93" />
         <source>%1, serial %2</source>
         <translation>%1，序號 %2</translation>
     </message>
@@ -10039,7 +10037,7 @@ Samples: %3</source>
         <translation>PNG 影像 (*.png)</translation>
     </message>
     <message>
-        <location line="+115" />
+        <location line="+121" />
         <source>&amp;File</source>
         <translation>檔案(&amp;F)</translation>
     </message>
@@ -10125,6 +10123,16 @@ Samples: %3</source>
     </message>
     <message>
         <location line="+1" />
+        <source>Compare &amp;devices</source>
+        <translation>裝置比較(&amp;D)</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>One channel of every connected device on one time axis, live whichever tab is in front</source>
+        <translation>所有已連接裝置的同一通道繪於同一時間軸上，無論哪個分頁在前都即時更新</translation>
+    </message>
+    <message>
+        <location line="+2" />
         <source>&amp;User guide</source>
         <translation>使用者指南(&amp;U)</translation>
     </message>

@@ -512,7 +512,7 @@ private Q_SLOTS:
         // grew to 878 px on 768 before) and the comparison is whole.
         if (laptopScreen()) {
             presetAction(DeviceWorkspace::LayoutPreset::Monitor)->trigger();
-            w.comparisonDock()->toggleViewAction()->trigger();
+            w.findChild<QAction *>(QStringLiteral("compareDevicesAction"))->trigger();
             QCoreApplication::processEvents();
             QCoreApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);
             QVERIFY(w.comparisonDock()->isVisible());
@@ -531,7 +531,7 @@ private Q_SLOTS:
             if (w.comparisonDock()->isFloating())
                 problems << cutOrOutside(*w.comparisonDock());
             QVERIFY2(problems.isEmpty(), qPrintable(problems.join(QLatin1Char('\n'))));
-            w.comparisonDock()->toggleViewAction()->trigger();
+            w.findChild<QAction *>(QStringLiteral("compareDevicesAction"))->trigger();
         }
         // A recording opens its panel.
         w.disconnectDevice();

@@ -236,7 +236,7 @@ private Q_SLOTS:
         auto *hi14 = w.workspace(0), *hec = w.workspace(1);
         QTRY_VERIFY_WITH_TIMEOUT(hec->chartPanel()->history().size() > 10, 10000);
         QTRY_VERIFY_WITH_TIMEOUT(hi14->link().store().totalAppended() > 10, 10000);
-        w.comparisonDock()->toggleViewAction()->trigger();
+        w.findChild<QAction *>(QStringLiteral("compareDevicesAction"))->trigger();
         QVERIFY(w.comparisonDock()->isVisible());
         imudesk::ui::ComparisonChart *compare = w.comparisonChart();
         compare->setChannel(imudesk::plot::Channel::Roll);

@@ -72,11 +72,13 @@ MainWindow::MainWindow(const WindowSettings &settings, QWidget *parent) : QMainW
     m_comparisonTimer.setInterval(50);
     connect(&m_comparisonTimer, &QTimer::timeout, this, &MainWindow::refreshComparison);
     connect(m_comparisonDock, &QDockWidget::visibilityChanged, this, [this](bool visible) {
-        if (visible) {
-            placeComparison();
+        if (visible)
             m_comparisonTimer.start();
-        } else {
+        else
             m_comparisonTimer.stop();
+        if (m_compareAction) {
+            const QSignalBlocker blocker(m_compareAction);
+            m_compareAction->setChecked(!m_comparisonDock->isHidden());
         }
     });
 
@@ -494,47 +496,45 @@ void MainWindow::rebuildViewMenu()
     if (DeviceWorkspace *ws = currentWorkspace())
         m_viewMenu->addActions(ws->dockActions());
     m_viewMenu->addSeparator();
-    m_viewMenu->addAction(m_comparisonDock->toggleViewAction());
+    m_viewMenu->addAction(m_compareAction);
+}
+
+void MainWindow::showComparison(bool show)
+{
+    if (show) {
+        placeComparison(); // before it is shown: a dock shown first would grow the window at once
+        m_comparisonDock->show();
+        m_comparisonDock->raise();
+    } else {
+        m_comparisonDock->hide();
+    }
 }
 
 void MainWindow::placeComparison()
 {
     // Docked below the tabs when the window can give it its height; on a short screen (a
-    // 1366x768 laptop, where the tab's charts, values and 3D view already take every row) the
+    // 1366x768 laptop, where a tab's charts, values and 3D view already take every row) the
     // window would grow past the screen's bottom (878 px on 768): there the comparison opens
-    // as a window of its own over the lower part of the screen, and the main window keeps
-    // the screen's height.
+    // as a window of its own over the lower part of the screen, and the main window stays.
     const QScreen *screen = this->screen();
-    if (!screen || m_comparisonDock->isFloating())
+    if (!screen || m_comparisonDock->isFloating() || !m_comparisonDock->isHidden())
         return;
     const QRect avail = screen->availableGeometry();
     const bool maximized = isMaximized() || isFullScreen();
     const int frame = maximized ? 0 : frameGeometry().height() - geometry().height();
-    // What the window would need with the dock, before the layout grows the window: its bars
-    // as they are, the tabs' least height, the dock, and a margin for the separator and the
-    // dock's title (measured: about 30 px more than the sum).
+    // What the window needs with the dock: its bars as they are, the tab at the height it asks
+    // for (its charts, values and 3D view in full: below it the tab's own docks resize
+    // themselves and the window grows, 798 px on a 768-px screen, measured) and the dock at
+    // the height it asks for, with the separator.
     const int bars = height() - centralWidget()->height();
-    const int predicted = bars + centralWidget()->minimumSizeHint().height()
-        + m_comparisonDock->minimumSizeHint().height() + 40 + frame;
-    if (predicted <= avail.height()) {
-        // The layout has the last word: should the window still have grown, float after all.
-        QCoreApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);
-        if (minimumSizeHint().height() + frame <= avail.height() && frameGeometry().height() <= avail.height())
-            return;
-    }
+    const int needed = bars + std::max(centralWidget()->sizeHint().height(), centralWidget()->minimumSizeHint().height())
+        + std::max(m_comparisonDock->sizeHint().height(), m_comparisonDock->minimumSizeHint().height()) + 10 + frame;
+    if (needed <= avail.height())
+        return;
     const int h = std::max(m_comparisonDock->minimumSizeHint().height(), avail.height() * 2 / 5);
     m_comparisonDock->setFloating(true);
-    m_comparisonDock->setGeometry(avail.left() + avail.width() / 8, avail.bottom() - h - 8, avail.width() * 3 / 4, h);
-    QCoreApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);
-    if (frameGeometry().height() > avail.height()) {
-        if (maximized) { // the window manager fits a maximised window to the screen again
-            setWindowState(windowState() & ~Qt::WindowMaximized);
-            setWindowState(windowState() | Qt::WindowMaximized);
-        } else {
-            resize(width(), avail.height() - frame);
-            fitToScreen();
-        }
-    }
+    // Above the status bar, where the counters stay readable.
+    m_comparisonDock->setGeometry(avail.left() + avail.width() / 8, avail.bottom() - h - 44, avail.width() * 3 / 4, h);
 }
 
 void MainWindow::refreshComparison()
@@ -662,6 +662,12 @@ void MainWindow::createActions()
     m_aboutAction->setMenuRole(QAction::AboutRole);
     connect(m_aboutAction, &QAction::triggered, this, &MainWindow::showAbout);
 
+    m_compareAction = new QAction(this);
+    m_compareAction->setObjectName(QStringLiteral("compareDevicesAction"));
+    m_compareAction->setCheckable(true);
+    m_compareAction->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_C));
+    connect(m_compareAction, &QAction::triggered, this, &MainWindow::showComparison);
+
     m_userGuideAction = new QAction(this);
     m_userGuideAction->setObjectName(QStringLiteral("userGuideAction"));
     m_userGuideAction->setShortcut(QKeySequence::HelpContents);
@@ -736,6 +742,9 @@ void MainWindow::retranslateUi()
                                         "as a pulse on SYNC_IN would trigger"));
     m_takeSampleAction->setToolTip(m_takeSampleAction->statusTip());
     m_aboutAction->setText(tr("&About ImuDesk"));
+    m_compareAction->setText(tr("Compare &devices"));
+    m_compareAction->setStatusTip(tr("One channel of every connected device on one time axis, live whichever tab "
+                                     "is in front"));
     m_userGuideAction->setText(tr("&User guide"));
     m_userGuideAction->setStatusTip(tr("How to connect, chart, configure, calibrate, update, record and test a tray"));
     m_shortcutsAction->setText(tr("&Keyboard shortcuts"));

@@ -142,6 +142,7 @@ private:
     void updateComparisonSources();
     void refreshComparison();
     void placeComparison();
+    void showComparison(bool show);
 
     QTabWidget *m_tabs = nullptr;
     ConnectionBar *m_connectionBar = nullptr;
@@ -167,6 +168,7 @@ private:
     QAction *m_takeSampleAction = nullptr; // LOG <MSG> ONMARK ONCE
     QAction *m_aboutAction = nullptr;
     QAction *m_userGuideAction = nullptr;
+    QAction *m_compareAction = nullptr;
     QAction *m_shortcutsAction = nullptr;
     QAction *m_preferencesAction = nullptr;
     QList<QAction *> m_presetActions;
