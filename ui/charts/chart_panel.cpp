@@ -125,10 +125,7 @@ ChartPanel::ChartPanel(QWidget *parent) : QWidget(parent)
     m_saveAllAction->setObjectName(QStringLiteral("saveAllPngAction"));
     connect(m_saveAllAction, &QAction::triggered, this, [this] {
         ChartView::savePngInteractive(this, QStringLiteral("charts"), [this](const QString &path, QString *error) {
-            if (!saveAllPng(path, error))
-                return false;
-            tellSaved(path);
-            return true;
+            return saveAllPngAndSay(path, error);
         });
     });
 
@@ -332,6 +329,14 @@ void ChartPanel::setChartChosen(ChartKind kind, bool chosen)
 bool ChartPanel::saveAllPng(const QString &path, QString *error) const
 {
     return ChartView::saveWidgetPng(m_area, path, error);
+}
+
+bool ChartPanel::saveAllPngAndSay(const QString &path, QString *error)
+{
+    if (!saveAllPng(path, error))
+        return false;
+    tellSaved(path);
+    return true;
 }
 
 void ChartPanel::tellSaved(const QString &path)

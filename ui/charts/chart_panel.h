@@ -85,6 +85,9 @@ public:
 
     // All charts shown, as one PNG.
     bool saveAllPng(const QString &path, QString *error = nullptr) const;
+    // What Save all as PNG does once its file dialog has a name: saves, then says where (the
+    // window's status bar, pngSaved()).
+    bool saveAllPngAndSay(const QString &path, QString *error = nullptr);
 
     ChartView *chart(ChartKind kind) const { return m_charts[size_t(kind)]; }
     QWidget *chartArea() const { return m_area; }

@@ -105,7 +105,8 @@ ComparisonChart::~ComparisonChart() = default;
 
 void ComparisonChart::retranslateUi()
 {
-    m_chart->setTitle(tr("Comparison"));
+    // No title of its own: the dock's or window's title says "Compare devices", and the
+    // height goes to the plot.
     m_channelLabel->setText(tr("&Channel:"));
     m_channelCombo->setToolTip(tr("The quantity compared across the devices"));
     for (int i = 0; i < m_channelCombo->count(); ++i) {

@@ -32,7 +32,8 @@ class ComparisonChart : public QWidget {
     Q_OBJECT
 public:
     using Source = std::pair<QString, const plot::ChannelHistory *>;
-    static constexpr int kMinimumChartHeight = 180;
+    // The legend, the plot and the time axis with its labels (below this QChart elides them).
+    static constexpr int kMinimumChartHeight = 240;
 
     explicit ComparisonChart(QWidget *parent = nullptr);
     ~ComparisonChart() override;
