@@ -59,6 +59,14 @@ struct TumblingModule {
         o.seed = 8;
         return o;
     }
+    // Starts the module and connects to it at 115200 baud; false when it did not connect.
+    bool connect()
+    {
+        if (!simulator.start())
+            return false;
+        session.open(simulator.devicePath(), 115200);
+        return QTest::qWaitFor([this] { return session.state() == device::SessionState::Connected; }, 15000);
+    }
     sim::PtySimulator simulator{options()};
     device::DeviceSession session;
     QTemporaryDir history;
@@ -162,10 +170,8 @@ private Q_SLOTS:
     void bothCalibrationsKeepTheirOwnVerdicts()
     {
         TumblingModule run;
-        QVERIFY(run.simulator.start());
+        QVERIFY(run.connect());
         device::DeviceSession &session = run.session;
-        session.open(run.simulator.devicePath(), 115200);
-        QTRY_COMPARE_WITH_TIMEOUT(session.state(), device::SessionState::Connected, 15000);
         ui::MagCalibrationWizard wizard(session, model::FirmwareVersion{1, 7, 1});
         toRotationPage(wizard, run.history.path());
         if (QTest::currentTestFailed())
@@ -227,10 +233,8 @@ private Q_SLOTS:
     void oneSetOfFiguresPerRun()
     {
         TumblingModule run;
-        QVERIFY(run.simulator.start());
+        QVERIFY(run.connect());
         device::DeviceSession &session = run.session;
-        session.open(run.simulator.devicePath(), 115200);
-        QTRY_COMPARE_WITH_TIMEOUT(session.state(), device::SessionState::Connected, 15000);
         ui::MagCalibrationWizard wizard(session, model::FirmwareVersion{1, 7, 1});
         toRotationPage(wizard, run.history.path());
         if (QTest::currentTestFailed())
