@@ -99,7 +99,7 @@ void assign(model::Sample &s, int q, double v)
     switch (q) {
     case 0: s.pitch = v; s.fields |= model::FieldEuler; break;
     case 1: s.roll = v; s.fields |= model::FieldEuler; break;
-    case 2: s.yaw = model::wrap180(v); s.fields |= model::FieldEuler; break; // one convention: ±180
+    case 2: s.yaw = v; s.fields |= model::FieldEuler; break;
     case 3: s.acc.x = v; s.fields |= model::FieldAcc; break;
     case 4: s.acc.y = v; s.fields |= model::FieldAcc; break;
     case 5: s.acc.z = v; s.fields |= model::FieldAcc; break;
