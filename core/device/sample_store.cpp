@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <chrono>
 
 namespace imudesk::device {
 
@@ -25,10 +26,15 @@ void SampleStore::append(const std::vector<model::Sample> &batch)
     }
 }
 
-SampleStore::FieldTimes SampleStore::fieldTimes() const
+SampleStore::FieldAges SampleStore::fieldAges() const
 {
+    const int64_t now =
+        std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now().time_since_epoch()).count();
     std::lock_guard lock(m_mutex);
-    return m_fieldTimes;
+    FieldAges ages{};
+    for (size_t f = 0; f < ages.size(); ++f)
+        ages[f] = m_fieldTimes[f] > 0 ? double(now - m_fieldTimes[f]) / 1e9 : 0.0;
+    return ages;
 }
 
 void SampleStore::clear()

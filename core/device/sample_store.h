@@ -26,10 +26,11 @@ public:
     // The latest value of every field any sample carried (model::mergeFields), with the newest
     // sample's source: what a values table shows when frames carry different fields.
     std::optional<model::Sample> latestPerField() const;
-    // hostTimeNs of the newest sample that carried each field (bit n of model::SampleField at
-    // index n), 0 for a field no sample carried: a view marks values that stopped arriving.
-    using FieldTimes = std::array<int64_t, 32>;
-    FieldTimes fieldTimes() const;
+    // Seconds since the newest sample that carried each field arrived (index n = bit n of
+    // model::SampleField; 0 for a field no sample carried), on the steady clock the sessions
+    // stamp hostTimeNs with: a view marks values that stopped arriving.
+    using FieldAges = std::array<double, 32>;
+    FieldAges fieldAges() const;
     // Samples with sequence >= fromSeq still in the ring (at most maxCount, newest kept).
     // nextSeq, when given, receives the sequence number to ask for next time.
     std::vector<model::Sample> since(uint64_t fromSeq, size_t maxCount = SIZE_MAX, uint64_t *nextSeq = nullptr) const;
@@ -40,7 +41,7 @@ private:
     std::vector<model::Sample> m_ring;
     uint64_t m_total = 0;
     model::Sample m_perField;
-    FieldTimes m_fieldTimes{};
+    std::array<int64_t, 32> m_fieldTimes{}; // hostTimeNs of each field's newest sample
 };
 
 } // namespace imudesk::device

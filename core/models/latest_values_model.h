@@ -78,8 +78,8 @@ public:
     static constexpr int StaleRole = Qt::UserRole + 1;
     // A value that has not arrived for this long is stale: shown with its age.
     static constexpr double kStaleAfterS = 2.0;
-    // Seconds since each field last arrived (index n = bit n of model::SampleField); a field
-    // at 0 or below counts as fresh.
+    // Seconds since each field last arrived (device::SampleStore::fieldAges); a field at 0 or
+    // below counts as fresh.
     using FieldAges = std::array<double, 32>;
 
     // Shown for a quantity the latest sample does not carry.

@@ -17,8 +17,6 @@
 #include <QTest>
 #include <QTimer>
 
-#include <chrono>
-
 #include <functional>
 #include <memory>
 #include <optional>
@@ -406,13 +404,7 @@ private Q_SLOTS:
         viewClock.setInterval(30);
         QObject::connect(&viewClock, &QTimer::timeout, [&] {
             history.append(s.store().since(next, SIZE_MAX, &next));
-            models::LatestValuesModel::FieldAges ages{};
-            const auto times = s.store().fieldTimes();
-            const int64_t now = std::chrono::duration_cast<std::chrono::nanoseconds>(
-                                    std::chrono::steady_clock::now().time_since_epoch()).count();
-            for (size_t f = 0; f < ages.size(); ++f)
-                ages[f] = times[f] > 0 ? double(now - times[f]) / 1e9 : 0.0;
-            values.refresh(s.store().latestPerField(), ages);
+            values.refresh(s.store().latestPerField(), s.store().fieldAges());
         });
         viewClock.start();
         QTRY_VERIFY_WITH_TIMEOUT(s.streaming(), 8000);

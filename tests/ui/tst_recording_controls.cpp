@@ -9,7 +9,6 @@
 #include "recording/recording_controls.h"
 #include "sim/pty_simulator.h"
 
-#include <QElapsedTimer>
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
@@ -163,16 +162,9 @@ private Q_SLOTS:
             return n;
         };
         // The session drops a frame's first bytes after HipnucSerialFamily::kLineIdleMs (120 ms)
-        // of silence, so the rest must follow sooner: this polls finely, within a bound, and
+        // of silence, so the rest must follow sooner: qWaitFor polls every 10 ms, within a bound, and
         // tries again when a loaded machine took too long (the session then did not decode the
         // straddling frame either, and the counts would agree for another reason).
-        const auto waitUntil = [](const std::function<bool()> &done, int ms) {
-            QElapsedTimer clock;
-            clock.start();
-            while (!done() && clock.elapsed() < ms)
-                QTest::qWait(1);
-            return done();
-        };
         uint32_t ms = 1000;
         size_t sent = 0;
         for (int attempt = 0; attempt < 5; ++attempt) {
@@ -188,7 +180,7 @@ private Q_SLOTS:
             const uint64_t samplesBefore = session.store().totalAppended();
             pty.write(before);
             sent += before.size();
-            QVERIFY(waitUntil([&] { return received() == sent; }, 5000));
+            QVERIFY(QTest::qWaitFor([&] { return received() == sent; }, 5000));
             QSignalSpy started(&session, &device::Session::recordingStarted);
             QSignalSpy progress(&session, &device::Session::recordingProgress);
             c.setPattern(QStringLiteral("straddle-%1").arg(attempt));

@@ -24,7 +24,6 @@
 #include <QTableView>
 #include <QVBoxLayout>
 
-#include <chrono>
 #include <utility>
 
 namespace imudesk::ui {
@@ -481,14 +480,8 @@ void DeviceWorkspace::refreshViews()
     // Before firmware 1.7.0 the MAIN_STATUS bytes are reserved: show them as not reported.
     if (values && m_identity && m_identity->firmware && !m_identity->hasMainStatus())
         values->fields &= ~uint32_t(model::FieldMainStatus);
-    models::LatestValuesModel::FieldAges ages{};
-    const device::SampleStore::FieldTimes times = store.fieldTimes();
-    const int64_t now = std::chrono::duration_cast<std::chrono::nanoseconds>(
-                            std::chrono::steady_clock::now().time_since_epoch())
-                            .count();
-    for (size_t f = 0; f < ages.size(); ++f)
-        ages[f] = times[f] > 0 && link().isLive() ? double(now - times[f]) / 1e9 : 0.0;
-    m_valuesModel->refresh(values, ages);
+    // A replay's samples carry the recording's host times: no ages there.
+    m_valuesModel->refresh(values, link().isLive() ? store.fieldAges() : device::SampleStore::FieldAges{});
     // The rows follow what the link sends (see rowInTable).
     bool rowsChanged = false;
     const bool anyData = m_valuesModel->everSeen(models::LatestValuesModel::FrameType);
