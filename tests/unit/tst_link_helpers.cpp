@@ -152,7 +152,7 @@ private Q_SLOTS:
         scan.start(std::move(q));
         QTRY_COMPARE(second.probed.size(), size_t(1));
         old(Outcome::TryNext);
-        QTest::qWait(20);
+        QTest::qWait(20); // duration under test: an answer taken would probe 8 on the next 0 ms timer
         QCOMPARE(second.probed, std::vector<int>{7});
         kept(Outcome::Found);
         QCOMPARE(second.found, 7);
@@ -188,7 +188,7 @@ private Q_SLOTS:
         QCOMPARE(link.reopenedAt, 460800); // the rate the device was last heard at
         QVERIFY(!r.waiting());
         QCOMPARE(r.count(), uint64_t(1));
-        QTest::qWait(2 * device::Reconnector::kPollMs);
+        QTest::qWait(2 * device::Reconnector::kPollMs); // duration under test: two polls without an attempt
         QCOMPARE(link.attempts, 3); // no attempt after success
         r.resetCount();
         QCOMPARE(r.count(), uint64_t(0));
@@ -205,7 +205,7 @@ private Q_SLOTS:
         r.setEnabled(false);
         QVERIFY(!r.waiting());
         const int seen = link.attempts;
-        QTest::qWait(2 * device::Reconnector::kPollMs);
+        QTest::qWait(2 * device::Reconnector::kPollMs); // duration under test: two polls without an attempt
         QCOMPARE(link.attempts, seen);
         r.start(9600, [&] { ++reopened; }); // disabled: does not start
         QVERIFY(!r.waiting());

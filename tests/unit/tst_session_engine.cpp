@@ -129,7 +129,7 @@ private Q_SLOTS:
         QMetaObject::invokeMethod(link, [link] { link->unplug(); }, Qt::BlockingQueuedConnection);
         QTRY_COMPARE_WITH_TIMEOUT(s.state(), SessionState::Reconnecting, 2000);
         QCOMPARE(s.sendCommand(hp::commands::logVersion()) > 0, true); // ends NotSent, nothing hangs
-        QTest::qWait(700);
+        QTest::qWait(700); // duration under test: away past a reopen poll (Reconnector::kPollMs, 500 ms)
         QVERIFY(s.store().size() >= before);
 
         QMetaObject::invokeMethod(link, [link] { link->replug(); }, Qt::BlockingQueuedConnection);
