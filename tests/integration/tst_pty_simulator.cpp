@@ -306,14 +306,18 @@ void TestPtySimulator::reopenAfterClose()
         QVERIFY(command(port, "LOG VERSION").ok());
         port.close();
     }
-    QTest::qWait(300); // nobody listens: output is lost, not stored
+    // Nobody listens: output is lost, not stored. Closed until more is lost than the check
+    // below lets through, so that a stored backlog could not pass it.
+    const qsizetype mostIn300Ms = 115200 / 10 * 300 / 1000 + 200;
+    const uint64_t lostBefore = m_sim->stats().bytesLost;
+    QTRY_VERIFY_WITH_TIMEOUT(m_sim->stats().bytesLost > lostBefore + uint64_t(mostIn300Ms), 10000);
     QVERIFY(m_sim->stats().bytesLost > 0);
     QSerialPort again;
     QVERIFY(openPort(again, 115200));
     const Received r = collect(again, 300);
     QVERIFY(!r.hi91.empty());
     // No backlog of frames from while the port was closed: at most what 300 ms carry.
-    QVERIFY2(r.raw.size() < 115200 / 10 * 300 / 1000 + 200, qPrintable(QString::number(r.raw.size())));
+    QVERIFY2(r.raw.size() < mostIn300Ms, qPrintable(QString::number(r.raw.size())));
     QVERIFY(command(again, "LOG COMCONFIG").ok());
 }
 
@@ -374,10 +378,12 @@ void TestPtySimulator::unpluggedCableHangsUp()
     QVERIFY(!m_sim->stats().unplugged);
     // The device never comes back: once the client lets go, the pty is gone.
     port.close();
-    QTest::qWait(200);
-    QSerialPort again;
-    again.setPortName(sim.devicePath());
-    QVERIFY(!again.open(QIODevice::ReadWrite));
+    const auto opensAgain = [&sim] {
+        QSerialPort again; // closed again as it goes
+        again.setPortName(sim.devicePath());
+        return again.open(QIODevice::ReadWrite);
+    };
+    QTRY_VERIFY_WITH_TIMEOUT(!opensAgain(), 5000);
     sim.stop();
 }
 
