@@ -86,7 +86,7 @@ private Q_SLOTS:
         wizard.show();
         wizard.setVariant(1);
         wizard.next();
-        QTest::qWait(3500);
+        QTest::qWait(3500); // duration under test: longer than the kStillForS (2 s) of stillness a send needs
         QVERIFY(!wizard.conditionsMet());
         QVERIFY(!wizard.sendButton()->isEnabled());
         QVERIFY(wizard.resultText().contains(QStringLiteral("Nothing")));

@@ -89,7 +89,7 @@ private Q_SLOTS:
         // The check runs only on the preparation page.
         wizard.next();
         const double rate = wizard.gyroRateHz();
-        QTest::qWait(2 * ui::GyroScaleWizard::kStreamCheckMs);
+        QTest::qWait(2 * ui::GyroScaleWizard::kStreamCheckMs); // duration under test: two check periods off the page
         QCOMPARE(wizard.gyroRateHz(), rate);
     }
 

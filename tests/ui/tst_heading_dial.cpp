@@ -100,10 +100,10 @@ private Q_SLOTS:
         QVERIFY(QTest::qWaitForWindowExposed(&d));
         d.setAttitude(100.0, 1.0, 2.0);
         QTRY_VERIFY(counter.paints > 0);
-        QTest::qWait(50);
+        QTest::qWait(50); // duration under test: 50 ms without a change, the baseline of the count
         const int before = counter.paints;
         d.setAttitude(100.01, 1.001, 2.001); // below the shown resolution
-        QTest::qWait(50);
+        QTest::qWait(50); // duration under test: 50 ms after a change too small to show, no paint
         QCOMPARE(counter.paints, before);
         d.setAttitude(101.0, 1.0, 2.0);
         QTRY_VERIFY(counter.paints > before);

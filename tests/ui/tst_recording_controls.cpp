@@ -110,7 +110,7 @@ private Q_SLOTS:
         QSignalSpy started(&c, &RecordingControls::recordingStarted);
         c.startRecording();
         QVERIFY(c.findChild<QLabel *>(QStringLiteral("message"))->text().contains(QStringLiteral("does not exist")));
-        QTest::qWait(200);
+        QTest::qWait(200); // duration under test: no recording starts later either
         QCOMPARE(started.size(), 0);
     }
 
