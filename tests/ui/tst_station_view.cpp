@@ -304,14 +304,13 @@ private Q_SLOTS:
         m_view->resize(size);
         QTRY_COMPARE(m_view->size(), size);
         // A new language brings a new font: the nested layouts take a few rounds to follow it,
-        // as they would between two frames on a screen.
+        // as they would between two frames on a screen. What is left after the bound is reported below.
         QStringList problems;
-        for (int round = 0; round < 50; ++round) {
+        const auto fits = [&] {
             problems = stationProblems(*m_view, size == kLarge);
-            if (problems.isEmpty())
-                break;
-            QTest::qWait(20);
-        }
+            return problems.isEmpty();
+        };
+        (void)QTest::qWaitFor(fits, 5000);
         // The failing tiles still name their step.
         for (int i = 0; i < 8; ++i) {
             const station::ModuleResult &r = m_view->runner()->module(i);
