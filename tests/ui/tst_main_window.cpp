@@ -80,6 +80,29 @@ int distinctColours(const QImage &image)
     return int(colours.size());
 }
 
+// Waits, at most timeoutMs, until the layouts have caught up: every widget of `top` keeps its
+// place and visibility over three looks in a row, ~10 ms apart.
+bool layoutSettled(const QWidget &top, int timeoutMs = 5000)
+{
+    const auto places = [&top] {
+        QList<QRect> out;
+        for (const QWidget *child : top.findChildren<QWidget *>())
+            out << (child->isVisible() ? QRect(child->mapTo(&top, QPoint(0, 0)), child->size()) : QRect());
+        return out;
+    };
+    QList<QRect> last;
+    int same = 0;
+    return QTest::qWaitFor(
+        [&] {
+            QCoreApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);
+            QList<QRect> now = places();
+            same = now == last ? same + 1 : 0;
+            last = std::move(now);
+            return same >= 3;
+        },
+        timeoutMs);
+}
+
 QString screenshotPath(const QString &name)
 {
     // The build tree, never the sources.
@@ -167,7 +190,7 @@ private Q_SLOTS:
         QVERIFY(w.session().rawLog().bytesHeld() > 0);
 
         // The window draws something, in English...
-        QTest::qWait(300);
+        QTRY_VERIFY2(distinctColours(w.grab().toImage()) > 20, "the window looks blank");
         const QImage shot = w.grab().toImage();
         QVERIFY(!shot.isNull());
         QVERIFY(shot.width() > 400 && shot.height() > 300);
@@ -188,7 +211,7 @@ private Q_SLOTS:
         QCOMPARE(cell(w, LatestValuesModel::Roll, LatestValuesModel::QuantityColumn), QStringLiteral("横滚角"));
         QVERIFY(w.valuesView()->horizontalHeader()->model()->headerData(1, Qt::Horizontal).toString()
                 != QLatin1String("Value"));
-        QTest::qWait(100);
+        QVERIFY(layoutSettled(w)); // the longer texts laid out before the screenshot
         QVERIFY(w.grab().toImage().save(screenshotPath(QStringLiteral("main_window_zh_CN.png"))));
 
         QVERIFY(language.setLanguage(QStringLiteral("zh_TW"), QStringLiteral(IMUDESK_QM_DIR), &error));
@@ -343,13 +366,17 @@ private Q_SLOTS:
         w.console()->submit(QStringLiteral("LOG DISABLE"));
         QTRY_VERIFY_WITH_TIMEOUT(linesAfter(w.console()->logText(), QStringLiteral("> LOG DISABLE")).contains(QStringLiteral("OK")),
                                  3000);
-        QTest::qWait(200);
+        // One more round trip: every frame sent before that OK is in the store once its answer
+        // is in (the engine stores each chunk's samples before it reads the next).
+        w.console()->submit(QStringLiteral("LOG VERSION"));
+        QTRY_VERIFY_WITH_TIMEOUT(linesAfter(w.console()->logText(), QStringLiteral("> LOG VERSION")).contains(QStringLiteral("OK")),
+                                 3000);
         const quint64 before = w.currentWorkspace()->link().store().totalAppended();
         take->trigger();
         QTRY_VERIFY_WITH_TIMEOUT(
             linesAfter(w.console()->logText(), QStringLiteral("> LOG HI91 ONMARK ONCE")).contains(QStringLiteral("OK")), 3000);
         QTRY_COMPARE_WITH_TIMEOUT(w.currentWorkspace()->link().store().totalAppended(), before + 1, 2000);
-        QTest::qWait(300);
+        QTest::qWait(300); // duration under test: no second sample in 300 ms
         QCOMPARE(w.currentWorkspace()->link().store().totalAppended(), before + 1);
         QVERIFY2(errors.isEmpty(), qPrintable(errors.join(QLatin1Char('\n'))));
     }
