@@ -51,6 +51,7 @@
 #include <QScrollArea>
 #include <QScrollBar>
 #include <QSettings>
+#include <QSignalSpy>
 #include <QStatusBar>
 #include <QTabBar>
 #include <QTableView>
@@ -176,6 +177,29 @@ void showAt(MainWindow &w, const QSize &size)
     }
 }
 
+// Waits, at most timeoutMs, until the layouts have caught up: every widget of `top` keeps its
+// place and visibility over three looks in a row, ~10 ms apart.
+bool layoutSettled(const QWidget &top, int timeoutMs = 5000)
+{
+    const auto places = [&top] {
+        QList<QRect> out;
+        for (const QWidget *child : top.findChildren<QWidget *>())
+            out << (child->isVisible() ? QRect(child->mapTo(&top, QPoint(0, 0)), child->size()) : QRect());
+        return out;
+    };
+    QList<QRect> last;
+    int same = 0;
+    return QTest::qWaitFor(
+        [&] {
+            QCoreApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);
+            QList<QRect> now = places();
+            same = now == last ? same + 1 : 0;
+            last = std::move(now);
+            return same >= 3;
+        },
+        timeoutMs);
+}
+
 } // namespace
 
 class TstLayout : public QObject {
@@ -254,7 +278,13 @@ class TstLayout : public QObject {
         DeviceWorkspace *ws = w.currentWorkspace();
         if (!QTest::qWaitFor([ws] { return ws->link().store().totalAppended() > 20; }, 15000))
             return {QStringLiteral("no data from the %1 link").arg(QLatin1String(kindName(kind)))};
-        QTest::qWait(300); // a few ticks of the view clock
+        // The views follow the data on their clock (the values at most ten times a second), the
+        // layouts follow the views: a refresh of the values with this data, then the layouts.
+        QSignalSpy valuesShown(ws->valuesView()->model(), &QAbstractItemModel::dataChanged);
+        if (!valuesShown.wait(5000))
+            return {QStringLiteral("the values table never showed the %1 link's data").arg(QLatin1String(kindName(kind)))};
+        if (!layoutSettled(w))
+            return {QStringLiteral("the layout did not settle")};
         QStringList problems = layoutProblems(w, size.width() >= kLarge.width());
         // The bar names what this tab is connected to.
         if (w.connectionBar()->shownTarget() != ws->target())
@@ -280,13 +310,15 @@ class TstLayout : public QObject {
                 problems << QStringLiteral("no CAN configuration dock");
             } else {
                 can->raise();
-                QTest::qWait(300);
+                if (!layoutSettled(w))
+                    problems << QStringLiteral("the layout did not settle with the CAN configuration in front");
                 if (area->verticalScrollBar()->isVisible())
                     problems << QStringLiteral("CAN configuration scrolls: %1 px for %2 px")
                                     .arg(area->viewport()->height())
                                     .arg(area->widget()->minimumSizeHint().height());
                 ws->valuesDock()->raise();
-                QTest::qWait(300);
+                if (!layoutSettled(w))
+                    problems << QStringLiteral("the layout did not settle with the values in front");
                 problems << layoutProblems(w, size.width() >= kLarge.width());
             }
         }
@@ -301,7 +333,8 @@ class TstLayout : public QObject {
             if (rows != 20) // 15 HI83 extras, heave, surge, sway, inclination X and Y
                 problems << QStringLiteral("%1 detail rows, 20 expected").arg(rows);
             ws->detailsDock()->raise();
-            QTest::qWait(200);
+            if (!layoutSettled(w))
+                problems << QStringLiteral("the layout did not settle with the HI83 details in front");
             const QTableView *details = ws->detailsView();
             if (!details->isVisible() || details->verticalScrollBar()->isVisible())
                 problems << QStringLiteral("HI83 details hidden or scrolled: %1 px for %2 px of rows")
