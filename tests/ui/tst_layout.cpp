@@ -711,6 +711,12 @@ int main(int argc, char **argv)
     file.close();
     qputenv("QT_QPA_PLATFORM", "offscreen:configfile=" + config.toLocal8Bit());
     qputenv("IMUDESK_NO_SAVE_LAYOUT", "1");
+    // The wizards keep their runs under the data location: a temporary one, never the user's
+    // ~/.local/share (the GUI that screenshotRunLeavesSettingsAlone starts inherits it too).
+    QTemporaryDir data;
+    if (!data.isValid())
+        return 2;
+    qputenv("XDG_DATA_HOME", QFile::encodeName(data.path()));
     QApplication app(argc, argv);
     TstLayout test;
     return QTest::qExec(&test, argc, argv);
