@@ -92,6 +92,11 @@ void SimulatedTransport::tick()
 {
     if (!m_open)
         return;
+    if (m_unplugAtUs >= 0 && deviceNowUs() >= m_unplugAtUs) {
+        m_unplugAtUs = -1;
+        unplug();
+        return;
+    }
     m_device->advanceTo(deviceNowUs());
     QByteArray out;
     for (const SerialSegment &s : m_device->takeOutputSegments()) {

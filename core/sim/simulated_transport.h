@@ -48,6 +48,8 @@ public:
     SimulatedSerialDevice &device() { return *m_device; }
     // Before the session opens the link (or in its thread): device seconds per real second.
     void setTimeScale(double scale);
+    // Pulls the cable (unplug()) once the device's clock reaches atUs (< 0: never); before open.
+    void unplugAt(int64_t atUs) { m_unplugAtUs = atUs; }
     // Bytes the host has written (any thread).
     quint64 bytesWritten() const { return m_written.load(); }
 
@@ -60,6 +62,7 @@ private:
     QElapsedTimer m_clock;
     double m_timeScale = 1.0;
     int64_t m_baseUs = 0; // device time when m_clock started
+    int64_t m_unplugAtUs = -1;
     std::atomic<quint64> m_written{0};
     QString m_address;
     int m_baud = 0;
