@@ -5,9 +5,9 @@
 // module, summary.jsonl and summary.csv, and a re-run of a failed module appends to it. The
 // same tray through `imudesk-cli station`.
 //
-// Those two prove the real serial path (and the firmware update, whose updater opens the port
-// by name); the other tests run their modules in process (StationRunner::setTransportFactory
-// with sim::SimulatedTransport), without pseudo-terminals.
+// The CLI tray runs over pseudo-terminals, and so does the module with old firmware in the tray
+// of five (its update opens the port by name): they prove the real serial path. The other
+// modules run in process (StationRunner::setTransportFactory with sim::SimulatedTransport).
 #include "../common/cli_run.h"
 #include "../common/firmware_files.h"
 #include "protocol/ihex/intel_hex_writer.h"
@@ -47,7 +47,8 @@ struct Tray {
 
     explicit Tray(bool inProc = false, double scale = 1.0) : inProcess(inProc), timeScale(scale) {}
 
-    bool add(const char *faults, const char *firmware, uint64_t seed)
+    // overPty: this module on a pseudo-terminal even in an in-process tray.
+    bool add(const char *faults, const char *firmware, uint64_t seed, bool overPty = false)
     {
         sim::SimOptions o;
         o.firmware = firmware;
@@ -55,7 +56,7 @@ struct Tray {
         std::string error;
         if (!sim::parseSimFaults(faults, o.faults, &error))
             return false;
-        if (inProcess) {
+        if (inProcess && !overPty) {
             const QString port = QStringLiteral("sim:tray-%1").arg(ports.size() + 1);
             modules.insert(port, o);
             ports << port;
@@ -78,14 +79,17 @@ struct Tray {
                 return nullptr;
             auto link = std::make_unique<sim::SimulatedTransport>(std::make_unique<sim::HipnucSerialDevice>(*it));
             link->setTimeScale(scale);
+            if (it->faults.unplugAtS >= 0) // as PtySimulator does
+                link->unplugAt(std::llround(it->faults.unplugAtS * 1e6));
             return link;
         };
     }
-    // The four of the acceptance: noisy gyro, on its side, old firmware, clean.
+    // The four of the acceptance: noisy gyro, on its side, old firmware, clean. The one
+    // with old firmware is always on a pseudo-terminal: the update opens its port by name.
     bool addFour(uint64_t seed)
     {
         return add("noisy-gyro", "1.7.1", seed) && add("wrong-mounting", "1.7.1", seed + 1)
-            && add("", "1.6.6", seed + 2) && add("", "1.7.1", seed + 3);
+            && add("", "1.6.6", seed + 2, true) && add("", "1.7.1", seed + 3);
     }
 };
 
@@ -149,13 +153,16 @@ void TestStation::trayOfFiveInParallel()
 {
     QTemporaryDir dir;
     QVERIFY(dir.isValid());
-    Tray tray;
+    // In process at the real pace (the parallel run's time is checked), but the module with old
+    // firmware on a pseudo-terminal: its update and its session go through the serial port code.
+    Tray tray(true);
     QVERIFY(tray.addFour(11));
     QVERIFY(tray.add("unplug=4", "1.7.1", 15));
     const station::TestPlan plan = trayPlan(dir);
     QVERIFY2(plan.problems().isEmpty(), qPrintable(plan.problems().join(u'\n')));
 
     station::StationRunner runner(plan, tray.ports);
+    runner.setTransportFactory(tray.transports());
     QString error;
     const QString runDir = dir.filePath(QStringLiteral("run"));
     QVERIFY2(runner.setRunFolder(runDir, &error), qPrintable(error));
