@@ -12,8 +12,12 @@
 #include "sim/can_simulator.h"
 
 #include <QCanBus>
+#include <QEventLoop>
+#include <QTimer>
 #include <QSignalSpy>
 #include <QTest>
+
+#include <functional>
 
 using namespace imudesk;
 using namespace imudesk::protocol::can;
@@ -100,6 +104,25 @@ class TstCanSession : public QObject {
     }
     // Host-side time of the last event, as a "from here on" mark.
     static qint64 mark(const Rig &rig) { return rig.frames.events.isEmpty() ? 0 : rig.frames.events.last().hostTimeNs; }
+    // Runs the event loop until pred holds (at most timeoutMs). Unlike QTRY_* and qWaitFor, which
+    // sleep 10 ms between passes, the loop keeps the 1 ms tick of the simulator in this thread on
+    // time, so a PDO's period is measured, not the waits' sleeps.
+    static bool runUntil(const std::function<bool()> &pred, int timeoutMs = 5000)
+    {
+        if (pred())
+            return true;
+        QEventLoop loop;
+        QTimer check;
+        check.setInterval(5);
+        QObject::connect(&check, &QTimer::timeout, &loop, [&] {
+            if (pred())
+                loop.quit();
+        });
+        QTimer::singleShot(timeoutMs, &loop, &QEventLoop::quit);
+        check.start();
+        loop.exec();
+        return pred();
+    }
     // Waits (at most timeoutMs) until no frame with this id has arrived for quietMs: the frames
     // in flight when a change took effect have landed.
     static bool quietFor(const Rig &rig, uint32_t id, int quietMs, int timeoutMs = 5000)
@@ -144,7 +167,7 @@ private Q_SLOTS:
         const qint64 from = mark(rig);
         // Enough frames at the new period to measure it (about a second of them: a stall of the
         // loaded host at either end weighs little in the mean).
-        QTRY_VERIFY_WITH_TIMEOUT(rig.frames.countRx(0x0CFF3708, from + 50000000) >= 50, 5000);
+        QVERIFY(runUntil([&] { return rig.frames.countRx(0x0CFF3708, from + 50000000) >= 50; }));
         const double p = rig.frames.periodMs(0x0CFF3708, from + 50000000);
         QVERIFY2(p > 15 && p < 26, qPrintable(QString::number(p)));
         // Raw register write and read back.
@@ -192,7 +215,7 @@ private Q_SLOTS:
         QVERIFY2(r.ok && r.value == 50, qPrintable(r.message));
         qint64 from = mark(rig);
         // Enough frames at the new period to measure it (about a second of them).
-        QTRY_VERIFY_WITH_TIMEOUT(rig.frames.countRx(0x188, from + 30000000) >= 20, 5000);
+        QVERIFY(runUntil([&] { return rig.frames.countRx(0x188, from + 30000000) >= 20; }));
         double p = rig.frames.periodMs(0x188, from + 30000000);
         QVERIFY2(p > 40 && p < 62, qPrintable(QString::number(p)));
         // SYNC mode: no more periodic TPDO1; a SYNC brings exactly one.
@@ -344,7 +367,7 @@ private Q_SLOTS:
         QVERIFY2(r.ok, qPrintable(r.message));
         const qint64 from = mark(rig);
         // Enough frames at the new rate to measure its period (about a second of them).
-        QTRY_VERIFY_WITH_TIMEOUT(rig.frames.countRx(0x185, from + 30000000) >= 90, 5000);
+        QVERIFY(runUntil([&] { return rig.frames.countRx(0x185, from + 30000000) >= 90; }));
         const double p = rig.frames.periodMs(0x185, from + 30000000);
         QVERIFY2(p > 7 && p < 14, qPrintable(QString::number(p)));
         r = waitResult(*rig.session, rig.session->hec495Write(hec495::ObjPdoMode, hec495::ModeFixed));
