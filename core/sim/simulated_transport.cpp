@@ -14,6 +14,18 @@ SimulatedTransport::SimulatedTransport(std::unique_ptr<SimulatedSerialDevice> de
 
 SimulatedTransport::~SimulatedTransport() = default;
 
+int64_t SimulatedTransport::deviceNowUs() const
+{
+    return m_baseUs + int64_t(double(m_clock.nsecsElapsed()) * m_timeScale / 1000.0);
+}
+
+void SimulatedTransport::setTimeScale(double scale)
+{
+    m_baseUs = deviceNowUs(); // the device's clock goes on from where it is
+    m_clock.restart();
+    m_timeScale = scale > 0 ? scale : 1.0;
+}
+
 bool SimulatedTransport::open(const QString &address, int baud, QString *error)
 {
     if (!m_plugged) {
@@ -52,9 +64,10 @@ qint64 SimulatedTransport::write(const QByteArray &bytes)
 {
     if (!m_open)
         return -1;
-    m_device->advanceTo(m_clock.nsecsElapsed() / 1000);
+    m_device->advanceTo(deviceNowUs());
     if (m_baud == m_device->baud())
         m_device->receive(reinterpret_cast<const uint8_t *>(bytes.constData()), size_t(bytes.size()));
+    m_written += quint64(bytes.size());
     return bytes.size();
 }
 
@@ -79,7 +92,12 @@ void SimulatedTransport::tick()
 {
     if (!m_open)
         return;
-    m_device->advanceTo(m_clock.nsecsElapsed() / 1000);
+    if (m_unplugAtUs >= 0 && deviceNowUs() >= m_unplugAtUs) {
+        m_unplugAtUs = -1;
+        unplug();
+        return;
+    }
+    m_device->advanceTo(deviceNowUs());
     QByteArray out;
     for (const SerialSegment &s : m_device->takeOutputSegments()) {
         if (s.baud == m_baud) {

@@ -8,12 +8,17 @@
 // the device's are lost, and each byte the device sends at another rate arrives as one byte
 // of deterministic garbage. unplug() fails the link as a pulled cable does; replug() lets
 // reopen() succeed again.
+//
+// setTimeScale(k) runs the device's clock k times faster than real time, for tests whose checks
+// are on the device's own clock (a station plan's seconds of data, a fixture's turns): they
+// spend 1/k of the real time, while the host's timeouts stay in real time.
 #include "io/transport.h"
 #include "sim/simulated_serial_device.h"
 
 #include <QElapsedTimer>
 #include <QTimer>
 
+#include <atomic>
 #include <memory>
 
 namespace imudesk::sim {
@@ -41,13 +46,24 @@ public:
     void unplug();
     void replug() { m_plugged = true; }
     SimulatedSerialDevice &device() { return *m_device; }
+    // Before the session opens the link (or in its thread): device seconds per real second.
+    void setTimeScale(double scale);
+    // Pulls the cable (unplug()) once the device's clock reaches atUs (< 0: never); before open.
+    void unplugAt(int64_t atUs) { m_unplugAtUs = atUs; }
+    // Bytes the host has written (any thread).
+    quint64 bytesWritten() const { return m_written.load(); }
 
 private:
     void tick();
+    int64_t deviceNowUs() const;
 
     std::unique_ptr<SimulatedSerialDevice> m_device;
     QTimer m_timer{this};
     QElapsedTimer m_clock;
+    double m_timeScale = 1.0;
+    int64_t m_baseUs = 0; // device time when m_clock started
+    int64_t m_unplugAtUs = -1;
+    std::atomic<quint64> m_written{0};
     QString m_address;
     int m_baud = 0;
     bool m_open = false;

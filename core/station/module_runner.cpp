@@ -4,6 +4,7 @@
 #include "calib/mag_cal_session.h"
 #include "device/device_session.h"
 #include "firmware/firmware_updater.h"
+#include "io/transport.h"
 #include "model/sample.h"
 #include "protocol/ihex/intel_hex_loader.h"
 #include "record/allan_deviation.h"
@@ -92,7 +93,8 @@ void ModuleRunner::openSession()
 {
     m_connected = false;
     m_closingOnPurpose = false;
-    m_session = std::make_unique<device::DeviceSession>();
+    m_session = std::make_unique<device::DeviceSession>(
+        nullptr, m_options.transport ? m_options.transport(m_port) : std::unique_ptr<io::Transport>());
     m_session->setAutoReconnect(false); // a module that goes away fails; the others go on
     m_controller = std::make_unique<settings::ConfigurationController>(*m_session);
     connect(m_session.get(), &device::DeviceLink::stateChanged, this,

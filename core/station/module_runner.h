@@ -16,9 +16,13 @@
 #include <QPointer>
 #include <QTimer>
 
+#include <functional>
 #include <memory>
 #include <vector>
 
+namespace imudesk::io {
+class Transport;
+}
 namespace imudesk::device {
 class DeviceSession;
 struct SessionStats;
@@ -39,6 +43,14 @@ class GyroScaleRun;
 
 namespace imudesk::station {
 
+// Makes the byte transport of a module's session for its port name. Empty, or returning null:
+// the serial port (io::SerialTransport), as in production. Tests hand out a
+// sim::SimulatedTransport per port to run simulated modules in the same process, without a
+// pseudo-terminal. Called on every (re)connection: after a firmware update, and on a re-run.
+// The firmware step's updater still opens the port by its name, so a plan that has to update
+// a module's firmware needs a real (or pseudo-terminal) port.
+using TransportFactory = std::function<std::unique_ptr<io::Transport>(const QString &port)>;
+
 class ModuleRunner : public QObject {
     Q_OBJECT
 
@@ -53,6 +65,7 @@ public:
     struct Options {
         int baud = 0;             // 0: auto-detect
         QString evidencePath;     // where the evidence step records (.imucap); empty: no recording
+        TransportFactory transport; // the session's transport; empty: the serial port
     };
 
     ModuleRunner(TestPlan plan, QString port, Options options, QObject *parent = nullptr);

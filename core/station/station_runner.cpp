@@ -46,6 +46,7 @@ void StationRunner::startModule(int i)
 {
     ModuleRunner::Options o;
     o.baud = m_baud;
+    o.transport = m_transport;
     if (m_haveFolder)
         o.evidencePath = m_folder.evidencePath(m_ports.at(i));
     if (auto &old = m_runners[size_t(i)])

@@ -31,6 +31,9 @@ public:
     ~StationRunner() override;
 
     void setBaud(int baud) { m_baud = baud; }
+    // The transport each module's session opens its port with (module_runner.h); by default
+    // the serial port. For modules started from now on.
+    void setTransportFactory(TransportFactory factory) { m_transport = std::move(factory); }
     // Where reports go; empty: nothing is written (the results stay in memory).
     bool setRunFolder(const QString &dir, QString *error);
     const QString &runFolder() const { return m_folder.path(); }
@@ -65,6 +68,7 @@ private:
     TestPlan m_plan;
     QStringList m_ports;
     int m_baud = 0;
+    TransportFactory m_transport;
     RunFolder m_folder;
     bool m_haveFolder = false;
     ReportWriter m_writer;

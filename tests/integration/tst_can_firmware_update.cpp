@@ -123,7 +123,7 @@ private Q_SLOTS:
         QVERIFY2(r.err.contains(QStringLiteral("checksum")) && r.err.contains(QStringLiteral("nothing was sent")),
                  qPrintable(r.err));
         // Frames cross virtualcan within milliseconds: after 300 ms none has reached the module.
-        QTest::qWait(300);
+        QTest::qWait(300); // duration under test: no request reaches the module within 300 ms
         QCOMPARE(requests, 0);
         // The listener does hear an update's requests (the check above can fail).
         const auto good = imudesk::test::runCli(update(writeFile(m_dir, QStringLiteral("good.hex"),

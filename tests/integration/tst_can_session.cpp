@@ -12,8 +12,12 @@
 #include "sim/can_simulator.h"
 
 #include <QCanBus>
+#include <QEventLoop>
+#include <QTimer>
 #include <QSignalSpy>
 #include <QTest>
+
+#include <functional>
 
 using namespace imudesk;
 using namespace imudesk::protocol::can;
@@ -62,10 +66,7 @@ CanRequestResult waitResult(CanSession &s, quint64 id, int timeoutMs = 5000)
             done = true;
         }
     });
-    QElapsedTimer t;
-    t.start();
-    while (!done && t.elapsed() < timeoutMs)
-        QTest::qWait(5);
+    QTest::qWaitFor([&done] { return done; }, timeoutMs);
     QObject::disconnect(c);
     if (!done)
         out.message = QStringLiteral("no result");
@@ -99,15 +100,46 @@ class TstCanSession : public QObject {
         so.protocol = p;
         so.hec495Extended = o.hec495 && o.protocol == CanProtocol::J1939;
         rig.session->open(so);
-        bool connected = false;
-        for (int i = 0; i < 400 && !connected; ++i) {
-            QTest::qWait(5);
-            connected = rig.session->state() == device::SessionState::Connected;
-        }
-        return connected;
+        return QTest::qWaitFor([&rig] { return rig.session->state() == device::SessionState::Connected; }, 5000);
     }
     // Host-side time of the last event, as a "from here on" mark.
     static qint64 mark(const Rig &rig) { return rig.frames.events.isEmpty() ? 0 : rig.frames.events.last().hostTimeNs; }
+    // Runs the event loop until pred holds (at most timeoutMs). Unlike QTRY_* and qWaitFor, which
+    // sleep 10 ms between passes, the loop keeps the 1 ms tick of the simulator in this thread on
+    // time, so a PDO's period is measured, not the waits' sleeps.
+    static bool runUntil(const std::function<bool()> &pred, int timeoutMs = 5000)
+    {
+        if (pred())
+            return true;
+        QEventLoop loop;
+        QTimer check;
+        check.setInterval(5);
+        QObject::connect(&check, &QTimer::timeout, &loop, [&] {
+            if (pred())
+                loop.quit();
+        });
+        QTimer::singleShot(timeoutMs, &loop, &QEventLoop::quit);
+        check.start();
+        loop.exec();
+        return pred();
+    }
+    // Waits (at most timeoutMs) until no frame with this id has arrived for quietMs: the frames
+    // in flight when a change took effect have landed.
+    static bool quietFor(const Rig &rig, uint32_t id, int quietMs, int timeoutMs = 5000)
+    {
+        int seen = -1;
+        QElapsedTimer still;
+        return QTest::qWaitFor(
+            [&] {
+                const int n = rig.frames.countRx(id);
+                if (n != seen) {
+                    seen = n;
+                    still.restart();
+                }
+                return still.elapsed() >= quietMs;
+            },
+            timeoutMs);
+    }
 
 private Q_SLOTS:
     void initTestCase()
@@ -133,7 +165,9 @@ private Q_SLOTS:
         auto r = waitResult(*rig.session, rig.session->setOutputPeriod(j1939::PgnGyr, 20));
         QVERIFY2(r.ok, qPrintable(r.message));
         const qint64 from = mark(rig);
-        QTest::qWait(600);
+        // Enough frames at the new period to measure it (about a second of them: a stall of the
+        // loaded host at either end weighs little in the mean).
+        QVERIFY(runUntil([&] { return rig.frames.countRx(0x0CFF3708, from + 50000000) >= 50; }));
         const double p = rig.frames.periodMs(0x0CFF3708, from + 50000000);
         QVERIFY2(p > 15 && p < 26, qPrintable(QString::number(p)));
         // Raw register write and read back.
@@ -180,15 +214,16 @@ private Q_SLOTS:
         auto r = waitResult(*rig.session, rig.session->setOutputPeriod(0, 50));
         QVERIFY2(r.ok && r.value == 50, qPrintable(r.message));
         qint64 from = mark(rig);
-        QTest::qWait(700);
+        // Enough frames at the new period to measure it (about a second of them).
+        QVERIFY(runUntil([&] { return rig.frames.countRx(0x188, from + 30000000) >= 20; }));
         double p = rig.frames.periodMs(0x188, from + 30000000);
         QVERIFY2(p > 40 && p < 62, qPrintable(QString::number(p)));
         // SYNC mode: no more periodic TPDO1; a SYNC brings exactly one.
         r = waitResult(*rig.session, rig.session->setSyncMode(0, true));
         QVERIFY2(r.ok, qPrintable(r.message));
-        QTest::qWait(150);
+        QVERIFY(quietFor(rig, 0x188, 150));
         from = mark(rig);
-        QTest::qWait(300);
+        QTest::qWait(300); // duration under test: no periodic TPDO1 for 300 ms
         QCOMPARE(rig.frames.countRx(0x188, from + 1), 0);
         rig.session->sendSync();
         QTRY_COMPARE(rig.frames.countRx(0x188, from + 1), 1);
@@ -247,7 +282,7 @@ private Q_SLOTS:
         auto r = waitResult(*rig.session, rig.session->setBitrate(800000));
         QVERIFY(!r.ok);
         QVERIFY2(r.message.contains(QStringLiteral("0x209A")), qPrintable(r.message));
-        QTest::qWait(100);
+        QTest::qWait(100); // duration under test: the refused write reaches the bus within 100 ms or never
         QCOMPARE(baudWrites(), 0);
         r = waitResult(*rig.session, rig.session->sdoWrite(canopen::hipnuc::ObjBaud, 0, 1, 4));
         QVERIFY(!r.ok);
@@ -269,7 +304,7 @@ private Q_SLOTS:
         auto r = waitResult(*rig.session, rig.session->setOutputEnabled(false));
         QVERIFY2(r.ok, qPrintable(r.message));
         qint64 from = mark(rig);
-        QTest::qWait(300);
+        QTest::qWait(300); // duration under test: the stopped node sends no TPDO1 for 300 ms
         QCOMPARE(rig.frames.countRx(0x188, from + 1), 0);
         QElapsedTimer t;
         t.start();
@@ -331,7 +366,8 @@ private Q_SLOTS:
         auto r = waitResult(*rig.session, rig.session->setHec495Rate(6));
         QVERIFY2(r.ok, qPrintable(r.message));
         const qint64 from = mark(rig);
-        QTest::qWait(500);
+        // Enough frames at the new rate to measure its period (about a second of them).
+        QVERIFY(runUntil([&] { return rig.frames.countRx(0x185, from + 30000000) >= 90; }));
         const double p = rig.frames.periodMs(0x185, from + 30000000);
         QVERIFY2(p > 7 && p < 14, qPrintable(QString::number(p)));
         r = waitResult(*rig.session, rig.session->hec495Write(hec495::ObjPdoMode, hec495::ModeFixed));
@@ -394,7 +430,7 @@ private Q_SLOTS:
         QVERIFY2(r.ok, qPrintable(r.message));
         QVERIFY(!rig.sim->device().hec().pdoStarted);
         const qint64 from = mark(rig);
-        QTest::qWait(400);
+        QTest::qWait(400); // duration under test: no PDO for 400 ms after the NMT stop
         QCOMPARE(rig.frames.countRx(0x185, from + 1), 0);
         r = waitResult(*rig.session, rig.session->setAllNodesOutput(true));
         QVERIFY2(r.ok, qPrintable(r.message));

@@ -1,7 +1,12 @@
-// Hec495Session end to end over a pseudo-terminal against the simulated HEC495: identity in
-// question/answer mode (polled samples), the 3 s quiet window then 50 Hz auto-output,
-// every settings command with typed results, a baud change the session follows, address
-// changes, auto-baud, RS-485 retries, and a planar calibration run.
+// Hec495Session against the simulated HEC495: identity in question/answer mode (polled
+// samples), the 3 s quiet window then 50 Hz auto-output, every settings command with typed
+// results, a baud change the session follows, address changes, auto-baud, RS-485 retries, and
+// a planar calibration run.
+//
+// In process by default (sim::SimulatedTransport in the session's thread, tests/common/
+// inproc_link.h); baudChangeFollowed and autoBaudAndAddress run over a pseudo-terminal and
+// prove the real serial path (termios rates, a rate change on the port, auto-baud).
+#include "../common/inproc_link.h"
 #include "device/hec495_session.h"
 #include "models/latest_values_model.h"
 #include "plot/channel_history.h"
@@ -28,13 +33,48 @@ namespace wl = imudesk::protocol::witlink;
 
 namespace {
 
-std::unique_ptr<PtySimulator> serve(Hec495Options o)
+// A simulated compass and the session that talks to it. Members in this order: the session
+// closes before the simulator goes.
+struct Compass {
+    std::unique_ptr<PtySimulator> pty;     // over a pseudo-terminal
+    SimulatedTransport *link = nullptr;    // in process (the session owns it)
+    std::unique_ptr<Hec495Session> session;
+    QString port;
+
+    // Runs fn with the simulated compass in its thread and waits.
+    void withSim(const std::function<void(Hec495Simulator &)> &fn)
+    {
+        if (pty)
+            pty->withSerialDevice([&fn](SimulatedSerialDevice &d) { fn(dynamic_cast<Hec495Simulator &>(d)); });
+        else
+            test::withLinkDevice<Hec495Simulator>(link, fn);
+    }
+};
+
+// In process; timeScale > 1 runs the compass's clock faster than real time (only for checks on
+// the device's own clock: its seconds, its turns).
+Compass serve(Hec495Options o, double timeScale = 1.0)
 {
-    auto pty = std::make_unique<PtySimulator>(std::make_unique<Hec495Simulator>(o));
+    auto in = test::inProcSession<Hec495Session>(std::make_unique<Hec495Simulator>(o),
+                                                 QStringLiteral("sim:HEC495"), timeScale);
+    Compass c;
+    c.link = in.link;
+    c.session = std::move(in.session);
+    c.port = in.port;
+    return c;
+}
+
+// Over a pseudo-terminal and the real serial port code.
+Compass servePty(Hec495Options o)
+{
+    Compass c;
+    c.pty = std::make_unique<PtySimulator>(std::make_unique<Hec495Simulator>(o));
     QString error;
-    if (!pty->start(&error))
+    if (!c.pty->start(&error))
         qFatal("pty: %s", qPrintable(error));
-    return pty;
+    c.port = c.pty->devicePath();
+    c.session = std::make_unique<Hec495Session>();
+    return c;
 }
 
 // Waits for the result of one request.
@@ -61,12 +101,6 @@ std::optional<Hec495Result> await(Hec495Session &s, quint64 id, int timeoutMs = 
         return r_ && r_->ok() ? r_ : std::nullopt;                                                  \
     }()
 
-// Runs fn on the simulator thread with the simulated compass.
-void withSim(PtySimulator &pty, const std::function<void(Hec495Simulator &)> &fn)
-{
-    pty.withSerialDevice([&fn](SimulatedSerialDevice &d) { fn(dynamic_cast<Hec495Simulator &>(d)); });
-}
-
 } // namespace
 
 class TstHec495Session : public QObject {
@@ -74,10 +108,10 @@ class TstHec495Session : public QObject {
 private Q_SLOTS:
     void questionAnswerThenStreaming50Hz()
     {
-        auto pty = serve({});
-        Hec495Session s;
+        auto c = serve({});
+        Hec495Session &s = *c.session;
         QSignalSpy identity(&s, &Hec495Session::identityChanged);
-        s.open(pty->devicePath(), 9600);
+        s.open(c.port, 9600);
         QTRY_COMPARE_WITH_TIMEOUT(s.state(), SessionState::Connected, 5000);
         QCOMPARE(identity.count(), 1);
         const auto id = identity.at(0).at(0).value<model::DeviceIdentity>();
@@ -99,12 +133,12 @@ private Q_SLOTS:
         // The module's own count over 2 s is the rate; every one of those frames becomes a sample.
         auto sent = [&] {
             uint64_t n = 0;
-            withSim(*pty, [&](Hec495Simulator &d) { n = d.framesQueued(); });
+            c.withSim([&](Hec495Simulator &d) { n = d.framesQueued(); });
             return n;
         };
         const uint64_t before = s.store().totalAppended();
         const uint64_t sent0 = sent();
-        QTest::qWait(2000);
+        QTest::qWait(2000); // duration under test: the module's 50 Hz, counted over 2 s
         const uint64_t sentNow = sent() - sent0;
         QVERIFY2(sentNow >= 95 && sentNow <= 105, qPrintable(QString::number(sentNow)));
         QTRY_VERIFY_WITH_TIMEOUT(s.store().totalAppended() - before >= sentNow, 3000);
@@ -130,20 +164,20 @@ private Q_SLOTS:
         o.rateHz = 50;
         o.content = wl::OutputContent::AllData;
         o.baud = 115200;
-        auto pty = serve(o);
-        Hec495Session s;
-        s.open(pty->devicePath(), 115200);
+        auto c = serve(o);
+        Hec495Session &s = *c.session;
+        s.open(c.port, 115200);
         QTRY_COMPARE_WITH_TIMEOUT(s.state(), SessionState::Connected, 2500);
         QVERIFY(!s.streaming()); // identified by a reply inside the window
         QTRY_VERIFY_WITH_TIMEOUT(s.streaming(), 5000);
         auto sent = [&] {
             uint64_t n = 0;
-            withSim(*pty, [&](Hec495Simulator &d) { n = d.framesQueued(); });
+            c.withSim([&](Hec495Simulator &d) { n = d.framesQueued(); });
             return n;
         };
         const uint64_t before = s.store().totalAppended();
         const uint64_t sent0 = sent();
-        QTest::qWait(1000);
+        QTest::qWait(1000); // duration under test: the module's 50 Hz, counted over 1 s
         const uint64_t sentNow = sent() - sent0;
         QVERIFY2(sentNow >= 47 && sentNow <= 53, qPrintable(QString::number(sentNow)));
         QTRY_VERIFY_WITH_TIMEOUT(s.store().totalAppended() - before >= sentNow, 3000);
@@ -159,10 +193,10 @@ private Q_SLOTS:
         o.rateHz = 10;
         o.content = wl::OutputContent::Nmea0183;
         o.baud = 115200;
-        auto pty = serve(o);
-        Hec495Session s;
+        auto c = serve(o);
+        Hec495Session &s = *c.session;
         QSignalSpy sentences(&s, &Hec495Session::nmeaReceived);
-        s.open(pty->devicePath(), 115200);
+        s.open(c.port, 115200);
         QTRY_COMPARE_WITH_TIMEOUT(s.state(), SessionState::Connected, 5000);
         // The text starts after the 3 s quiet window.
         QTRY_VERIFY_WITH_TIMEOUT(sentences.count() >= 10, 8000);
@@ -174,8 +208,8 @@ private Q_SLOTS:
         QVERIFY(merged->headingDeg >= 0 && merged->headingDeg < 360);
         // Polled records keep arriving while the text streams.
         const uint64_t before = s.store().totalAppended();
-        QTest::qWait(1000);
-        QVERIFY2(s.store().totalAppended() - before >= 12, qPrintable(QString::number(s.store().totalAppended() - before)));
+        QTRY_VERIFY2_WITH_TIMEOUT(s.store().totalAppended() - before >= 12,
+                                  qPrintable(QString::number(s.store().totalAppended() - before)), 1000);
         QSignalSpy stats(&s, &Hec495Session::statsUpdated);
         QTRY_VERIFY_WITH_TIMEOUT(stats.count() >= 1, 3000);
         const auto st = stats.last().at(0).value<SessionStats>();
@@ -206,16 +240,16 @@ private Q_SLOTS:
         QFETCH(bool, echo);
         Hec495Options o;
         o.echo = echo;
-        auto pty = serve(o);
-        Hec495Session s;
+        auto c = serve(o);
+        Hec495Session &s = *c.session;
         s.setPollingRate(0);
-        s.open(pty->devicePath(), 9600);
+        s.open(c.port, 9600);
         QTRY_COMPARE_WITH_TIMEOUT(s.state(), SessionState::Connected, 5000);
         for (auto content : {wl::OutputContent::AllData, wl::OutputContent::Default, wl::OutputContent::Nmea0183,
                              wl::OutputContent::Default}) {
             QVERIFY(AWAIT_OK(s, s.setOutputContent(content)));
             wl::OutputContent now{};
-            withSim(*pty, [&](Hec495Simulator &d) { now = d.runningSettings().content; });
+            c.withSim([&](Hec495Simulator &d) { now = d.runningSettings().content; });
             QCOMPARE(int(now), int(content));
         }
         QVERIFY(AWAIT_OK(s, s.readAll()));
@@ -229,21 +263,26 @@ private Q_SLOTS:
         o.rateHz = 50;
         o.content = wl::OutputContent::AllData;
         o.baud = 115200;
-        auto pty = serve(o);
-        Hec495Session s;
+        // The compass's clock at 4 times real time: its 3 s quiet window passes sooner; what is
+        // checked is the recording's content, not its pace.
+        auto c = serve(o, 4.0);
+        Hec495Session &s = *c.session;
         QVERIFY(s.capabilities().testFlag(DeviceLink::Capability::Recording));
-        s.open(pty->devicePath(), 115200);
+        s.open(c.port, 115200);
         QTRY_COMPARE_WITH_TIMEOUT(s.state(), SessionState::Connected, 5000);
         QTRY_VERIFY_WITH_TIMEOUT(s.streaming(), 6000);
         QTemporaryDir dir;
         const QString capture = dir.filePath(QStringLiteral("hec495.imucap"));
         QSignalSpy stopped(&s, &Session::recordingStopped);
         QSignalSpy started(&s, &Session::recordingStarted);
+        QSignalSpy sentences(&s, &Hec495Session::nmeaReceived);
         s.startRecording(capture);
         QTRY_COMPARE(started.count(), 1);
-        QTest::qWait(1000);
+        // 50 records (a second of them), then NMEA sentences, in the recording.
+        const uint64_t recorded0 = s.store().totalAppended();
+        QTRY_VERIFY_WITH_TIMEOUT(s.store().totalAppended() >= recorded0 + 50, 5000);
         QVERIFY(AWAIT_OK(s, s.setOutputContent(wl::OutputContent::Nmea0183)));
-        QTest::qWait(600);
+        QTRY_VERIFY_WITH_TIMEOUT(sentences.count() >= 20, 5000);
         s.stopRecording();
         QTRY_COMPARE(stopped.count(), 1);
 
@@ -277,17 +316,18 @@ private Q_SLOTS:
         QCOMPARE(replay.store().totalAppended(), csv.frames + uint64_t(text.count("$HCHDT,"))); // records + headings
     }
 
+    // Over a pseudo-terminal: the port's rate changes with the module's.
     void baudChangeFollowed()
     {
-        auto pty = serve({});
-        Hec495Session s;
-        s.open(pty->devicePath(), 9600);
+        auto c = servePty({});
+        Hec495Session &s = *c.session;
+        s.open(c.port, 9600);
         QTRY_COMPARE_WITH_TIMEOUT(s.state(), SessionState::Connected, 5000);
         QSignalSpy baud(&s, &Hec495Session::baudChanged);
         QVERIFY(AWAIT_OK(s, s.setBaud(115200)));
         QTRY_COMPARE(s.baud(), 115200);
         int simBaud = 0;
-        withSim(*pty, [&](Hec495Simulator &d) { simBaud = d.baud(); });
+        c.withSim([&](Hec495Simulator &d) { simBaud = d.baud(); });
         QCOMPARE(simBaud, 115200);
         const auto angles = AWAIT_OK(s, s.readAngles());
         QVERIFY(angles);
@@ -304,9 +344,9 @@ private Q_SLOTS:
         Hec495Options o;
         o.baud = 19200;
         o.address = 5;
-        auto pty = serve(o);
-        Hec495Session s;
-        s.open(pty->devicePath(), 0, 5);
+        auto c = servePty(o); // over a pseudo-terminal: auto-baud walks the port's real rates
+        Hec495Session &s = *c.session;
+        s.open(c.port, 0, 5);
         QTRY_COMPARE_WITH_TIMEOUT(s.state(), SessionState::Connected, 8000);
         QCOMPARE(s.baud(), 19200);
         QVERIFY(AWAIT_OK(s, s.setAddress(7)));
@@ -324,10 +364,10 @@ private Q_SLOTS:
 
     void wrongAddressTimesOut()
     {
-        auto pty = serve({});
-        Hec495Session s;
+        auto c = serve({});
+        Hec495Session &s = *c.session;
         QSignalSpy err(&s, &Hec495Session::errorOccurred);
-        s.open(pty->devicePath(), 9600, 3);
+        s.open(c.port, 9600, 3);
         QTRY_COMPARE_WITH_TIMEOUT(s.state(), SessionState::Failed, 8000);
         QCOMPARE(err.count(), 1);
         QVERIFY(err.at(0).at(0).toString().contains(QLatin1String("address")));
@@ -339,9 +379,9 @@ private Q_SLOTS:
         o.rs485 = true;
         o.baud = 9600;
         o.rateHz = 50;               // angles: 14 bytes x 50 Hz = 73 % of the line
-        auto pty = serve(o);
-        Hec495Session s;
-        s.open(pty->devicePath(), 9600);
+        auto c = serve(o);
+        Hec495Session &s = *c.session;
+        s.open(c.port, 9600);
         QTRY_COMPARE_WITH_TIMEOUT(s.state(), SessionState::Connected, 5000);
         QTRY_VERIFY_WITH_TIMEOUT(s.streaming(), 5000);
         int retried = 0;
@@ -351,7 +391,7 @@ private Q_SLOTS:
             retried += r->attempts > 1;
         }
         uint64_t lost = 0;
-        withSim(*pty, [&](Hec495Simulator &d) { lost = d.commandsLost(); });
+        c.withSim([&](Hec495Simulator &d) { lost = d.commandsLost(); });
         QCOMPARE(lost > 0, retried > 0);
     }
 
@@ -360,9 +400,9 @@ private Q_SLOTS:
         Hec495Options o;
         o.motion = Motion::Spin;
         o.baud = 115200;
-        auto pty = serve(o);
-        Hec495Session s;
-        s.open(pty->devicePath(), 115200);
+        auto c = serve(o, 4.0); // the points come with the turns, on the compass's clock
+        Hec495Session &s = *c.session;
+        s.open(c.port, 115200);
         QTRY_COMPARE_WITH_TIMEOUT(s.state(), SessionState::Connected, 5000);
         int points = 0;
         connect(&s, &Hec495Session::calibrationPoint, this, [&](int n) { points = n; });
@@ -374,7 +414,7 @@ private Q_SLOTS:
         QCOMPARE(saved->reply.points, 12);
         QVERIFY(saved->reply.fitError < 10.0f);
         bool calibrated = false;
-        withSim(*pty, [&](Hec495Simulator &d) { calibrated = d.calibrated(); });
+        c.withSim([&](Hec495Simulator &d) { calibrated = d.calibrated(); });
         QVERIFY(calibrated);
         // A second save without a run: the module reports failure.
         const auto again = await(s, s.saveCalibration());
@@ -392,9 +432,9 @@ private Q_SLOTS:
         Hec495Options o; // as LinkFactory::connectSimulatedHec495
         o.rateHz = 50;
         o.motion = Motion::Spin; // the heading passes 180
-        auto pty = serve(o);
-        Hec495Session s;
-        s.open(pty->devicePath(), o.baud);
+        auto c = serve(o);
+        Hec495Session &s = *c.session;
+        s.open(c.port, o.baud);
         QTRY_COMPARE_WITH_TIMEOUT(s.state(), SessionState::Connected, 5000);
         // The views' clock: the charts' history and the values with their ages, as the workspace.
         plot::ChannelHistory history;

@@ -1,8 +1,15 @@
-// ModbusSession end to end against the simulated Modbus devices on a pseudo-terminal: identity,
-// polling into the sample store, poll rate bounded by the baud, verified writes, following a new
-// node ID and baud, exception and timeout messages, scans by ID and by baud with cancel.
+// ModbusSession against the simulated Modbus devices: identity, polling into the sample store,
+// poll rate bounded by the baud, verified writes, following a new node ID and baud, exception
+// and timeout messages, scans by ID and by baud with cancel.
+//
+// In process by default (sim::ModbusSerialDevice behind sim::SimulatedTransport in the session's
+// thread, tests/common/inproc_link.h); connectsAndPolls and verifiedWritesFollowIdAndBaud run
+// against the Modbus RTU server on a pseudo-terminal and prove the real serial path (reads,
+// writes, a new node ID and a rate change on the port).
+#include "../common/inproc_link.h"
 #include "device/modbus_session.h"
 #include "protocol/modbus/register_map.h"
+#include "sim/modbus_serial_device.h"
 #include "sim/modbus_simulator.h"
 
 #include <QSignalSpy>
@@ -15,14 +22,32 @@ namespace reg = imudesk::protocol::modbus::reg;
 
 namespace {
 
-ModbusOptions optionsFor(const sim::ModbusSimulator &s, double pollHz = 50)
+ModbusOptions optionsFor(const QString &port, double pollHz = 50)
 {
     ModbusOptions o;
-    o.port = s.devicePath();
+    o.port = port;
     o.pollHz = pollHz;
     o.timeoutMs = 600; // generous: the test machine is shared
     return o;
 }
+ModbusOptions optionsFor(const sim::ModbusSimulator &s, double pollHz = 50)
+{
+    return optionsFor(s.devicePath(), pollHz);
+}
+
+// A simulated Modbus device in process and the session that talks to it.
+struct Bus {
+    test::InProcSession<ModbusSession> in;
+
+    explicit Bus(sim::ModbusSimOptions so = {})
+        : in(test::inProcSession<ModbusSession>(std::make_unique<sim::ModbusSerialDevice>(so), QStringLiteral("sim:modbus")))
+    {
+    }
+    ModbusSession &session() { return *in.session; }
+    ModbusOptions options(double pollHz = 50) const { return optionsFor(in.port, pollHz); }
+    // Bytes the session has put on the line.
+    quint64 bytesOnTheLine() const { return in.link->bytesWritten(); }
+};
 
 ModbusRegisterReply waitReply(QSignalSpy &spy, quint64 id)
 {
@@ -48,6 +73,7 @@ private Q_SLOTS:
         qRegisterMetaType<ModbusScanHit>();
     }
 
+    // Over a pseudo-terminal.
     void connectsAndPolls()
     {
         sim::ModbusSimOptions so;
@@ -84,11 +110,10 @@ private Q_SLOTS:
     {
         sim::ModbusSimOptions so;
         so.baud = 9600;
-        sim::ModbusSimulator simulator(so);
-        QVERIFY(simulator.start());
-        ModbusSession session;
+        Bus bus(so);
+        ModbusSession &session = bus.session();
         QSignalSpy rate(&session, &ModbusSession::pollRateChanged);
-        ModbusOptions o = optionsFor(simulator, 1000);
+        ModbusOptions o = bus.options(1000);
         o.baud = 9600;
         session.open(o);
         QTRY_COMPARE(session.state(), SessionState::Connected);
@@ -97,11 +122,12 @@ private Q_SLOTS:
         QVERIFY(limit > 5 && limit < 15);
         QCOMPARE(rate.last().at(0).toDouble(), limit);
         const quint64 before = session.store().totalAppended();
-        QTest::qWait(1500);
+        QTest::qWait(1500); // duration under test: the poll rate, counted over 1.5 s
         const quint64 polled = session.store().totalAppended() - before;
         QVERIFY2(polled >= 5 && polled <= quint64(1.5 * limit + 2), qPrintable(QString::number(polled)));
     }
 
+    // Over a pseudo-terminal: the port follows the new node ID and rate.
     void verifiedWritesFollowIdAndBaud()
     {
         sim::ModbusSimulator simulator;
@@ -148,12 +174,11 @@ private Q_SLOTS:
 
     void clearMessages()
     {
-        sim::ModbusSimulator simulator;
-        QVERIFY(simulator.start());
-        ModbusSession session;
+        Bus bus;
+        ModbusSession &session = bus.session();
         QSignalSpy reads(&session, &ModbusSession::registersRead);
         QSignalSpy writes(&session, &ModbusSession::writeFinished);
-        session.open(optionsFor(simulator, 0));
+        session.open(bus.options(0));
         QTRY_COMPARE(session.state(), SessionState::Connected);
         auto r = waitReply(reads, session.readRegisters(0x10, 1));
         QVERIFY(!r.ok);
@@ -164,20 +189,19 @@ private Q_SLOTS:
         QVERIFY(r.ok);
         QCOMPARE(r.values.size(), 24);
         // Refused before it goes on the bus: code 9 is not in the baud table.
-        simulator.bridge().clearRecord();
+        const quint64 onTheLine = bus.bytesOnTheLine();
         r = waitReply(writes, session.writeRegister(reg::kBaud, 9));
         QVERIFY(!r.ok);
         QVERIFY2(r.message.contains(QStringLiteral("UART1_BAUD")), qPrintable(r.message));
-        QVERIFY(simulator.bridge().recorded().empty());
+        QCOMPARE(bus.bytesOnTheLine(), onTheLine);
     }
 
     void wrongNodeTimesOut()
     {
-        sim::ModbusSimulator simulator;
-        QVERIFY(simulator.start());
-        ModbusSession session;
+        Bus bus;
+        ModbusSession &session = bus.session();
         QSignalSpy errors(&session, &ModbusSession::errorOccurred);
-        ModbusOptions o = optionsFor(simulator);
+        ModbusOptions o = bus.options();
         o.nodeId = 81;
         session.open(o);
         QTRY_COMPARE_WITH_TIMEOUT(session.state(), SessionState::Failed, 5000);
@@ -190,10 +214,9 @@ private Q_SLOTS:
     {
         sim::ModbusSimOptions so;
         so.nodeId = 83;
-        sim::ModbusSimulator simulator(so);
-        QVERIFY(simulator.start());
-        ModbusSession session;
-        ModbusOptions o = optionsFor(simulator, 0);
+        Bus bus(so);
+        ModbusSession &session = bus.session();
+        ModbusOptions o = bus.options(0);
         o.identify = false;
         session.open(o);
         QTRY_COMPARE(session.state(), SessionState::Connected);
@@ -220,10 +243,9 @@ private Q_SLOTS:
         sim::ModbusSimOptions so;
         so.nodeId = 5;
         so.baud = 19200;
-        sim::ModbusSimulator simulator(so);
-        QVERIFY(simulator.start());
-        ModbusSession session;
-        ModbusOptions o = optionsFor(simulator, 0);
+        Bus bus(so);
+        ModbusSession &session = bus.session();
+        ModbusOptions o = bus.options(0);
         o.identify = false;
         session.open(o);
         QTRY_COMPARE(session.state(), SessionState::Connected);
@@ -256,10 +278,9 @@ private Q_SLOTS:
     {
         sim::ModbusSimOptions so;
         so.kind = DeviceKind::Hec495;
-        sim::ModbusSimulator simulator(so);
-        QVERIFY(simulator.start());
-        ModbusSession session;
-        ModbusOptions o = optionsFor(simulator, 5);
+        Bus bus(so);
+        ModbusSession &session = bus.session();
+        ModbusOptions o = bus.options(5);
         o.kind = DeviceKind::Hec495;
         session.open(o);
         QTRY_COMPARE(session.state(), SessionState::Connected);

@@ -4,11 +4,17 @@
 // tests them at once and names the failing step and values; the run folder gets a PDF per
 // module, summary.jsonl and summary.csv, and a re-run of a failed module appends to it. The
 // same tray through `imudesk-cli station`.
+//
+// The CLI tray runs over pseudo-terminals, and so does the module with old firmware in the tray
+// of five (its update opens the port by name): they prove the real serial path. The other
+// modules run in process (StationRunner::setTransportFactory with sim::SimulatedTransport).
 #include "../common/cli_run.h"
 #include "../common/firmware_files.h"
 #include "protocol/ihex/intel_hex_writer.h"
 #include "reports/station_report.h"
+#include "sim/hipnuc_serial_device.h"
 #include "sim/pty_simulator.h"
+#include "sim/simulated_transport.h"
 #include "station/run_folder.h"
 #include "station/station_runner.h"
 
@@ -17,6 +23,7 @@
 #include <QGuiApplication>
 #include <QJsonArray>
 #include <QJsonDocument>
+#include <QMap>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
@@ -32,8 +39,16 @@ namespace {
 struct Tray {
     std::vector<std::unique_ptr<sim::PtySimulator>> sims;
     QStringList ports;
+    // In process: each module is made by transports() for its port name ("sim:tray-N"), its
+    // clock running timeScale times faster than real time.
+    bool inProcess = false;
+    double timeScale = 1.0;
+    QMap<QString, sim::SimOptions> modules;
 
-    bool add(const char *faults, const char *firmware, uint64_t seed)
+    explicit Tray(bool inProc = false, double scale = 1.0) : inProcess(inProc), timeScale(scale) {}
+
+    // overPty: this module on a pseudo-terminal even in an in-process tray.
+    bool add(const char *faults, const char *firmware, uint64_t seed, bool overPty = false)
     {
         sim::SimOptions o;
         o.firmware = firmware;
@@ -41,6 +56,12 @@ struct Tray {
         std::string error;
         if (!sim::parseSimFaults(faults, o.faults, &error))
             return false;
+        if (inProcess && !overPty) {
+            const QString port = QStringLiteral("sim:tray-%1").arg(ports.size() + 1);
+            modules.insert(port, o);
+            ports << port;
+            return true;
+        }
         auto s = std::make_unique<sim::PtySimulator>(o);
         if (!s->start())
             return false;
@@ -48,11 +69,27 @@ struct Tray {
         sims.push_back(std::move(s));
         return true;
     }
-    // The four of the acceptance: noisy gyro, on its side, old firmware, clean.
+    // The station's transports for the in-process modules: a fresh module (powered on) at each
+    // connection; any other port is a serial port.
+    station::TransportFactory transports() const
+    {
+        return [modules = modules, scale = timeScale](const QString &port) -> std::unique_ptr<io::Transport> {
+            const auto it = modules.constFind(port);
+            if (it == modules.constEnd())
+                return nullptr;
+            auto link = std::make_unique<sim::SimulatedTransport>(std::make_unique<sim::HipnucSerialDevice>(*it));
+            link->setTimeScale(scale);
+            if (it->faults.unplugAtS >= 0) // as PtySimulator does
+                link->unplugAt(std::llround(it->faults.unplugAtS * 1e6));
+            return link;
+        };
+    }
+    // The four of the acceptance: noisy gyro, on its side, old firmware, clean. The one
+    // with old firmware is always on a pseudo-terminal: the update opens its port by name.
     bool addFour(uint64_t seed)
     {
         return add("noisy-gyro", "1.7.1", seed) && add("wrong-mounting", "1.7.1", seed + 1)
-            && add("", "1.6.6", seed + 2) && add("", "1.7.1", seed + 3);
+            && add("", "1.6.6", seed + 2, true) && add("", "1.7.1", seed + 3);
     }
 };
 
@@ -116,13 +153,16 @@ void TestStation::trayOfFiveInParallel()
 {
     QTemporaryDir dir;
     QVERIFY(dir.isValid());
-    Tray tray;
+    // In process at the real pace (the parallel run's time is checked), but the module with old
+    // firmware on a pseudo-terminal: its update and its session go through the serial port code.
+    Tray tray(true);
     QVERIFY(tray.addFour(11));
     QVERIFY(tray.add("unplug=4", "1.7.1", 15));
     const station::TestPlan plan = trayPlan(dir);
     QVERIFY2(plan.problems().isEmpty(), qPrintable(plan.problems().join(u'\n')));
 
     station::StationRunner runner(plan, tray.ports);
+    runner.setTransportFactory(tray.transports());
     QString error;
     const QString runDir = dir.filePath(QStringLiteral("run"));
     QVERIFY2(runner.setRunFolder(runDir, &error), qPrintable(error));
@@ -272,18 +312,29 @@ void TestStation::cliTray()
 // docs/examples/station-hi14.json, every step of it, on a clean simulated HI14 on a rotation
 // fixture (for the magnetometer calibration), and the same plan failing that step on a module
 // with a motor beside it.
+//
+// In process, the modules' clocks 16 times faster than real time: the plan's 27 s of measuring
+// and the fixture's ~45 s of turns are seconds of device time (the runner measures on the
+// module's clock), so they take about 5 s of real time (81 s over ptys at the real pace). The evidence step records for 1 s
+// of real time instead of 5: the recording's length is not checked here.
 void TestStation::examplePlanPassesOnCleanHi14()
 {
     QString error;
-    const auto plan = station::TestPlan::load(
+    const auto loaded = station::TestPlan::load(
         QDir::cleanPath(QStringLiteral(IMUDESK_TEST_DATA "/../../docs/examples/station-hi14.json")), &error);
-    QVERIFY2(plan, qPrintable(error));
-    QVERIFY2(plan->problems().isEmpty(), qPrintable(plan->problems().join(u'\n')));
+    QVERIFY2(loaded, qPrintable(error));
+    QVERIFY2(loaded->problems().isEmpty(), qPrintable(loaded->problems().join(u'\n')));
+    station::TestPlan plan = *loaded;
+    for (auto &step : plan.steps)
+        if (step.kind == station::StepKind::Evidence)
+            step.params.insert(QStringLiteral("seconds"), 1.0);
+    QVERIFY2(plan.problems().isEmpty(), qPrintable(plan.problems().join(u'\n')));
     QTemporaryDir dir;
-    Tray tray;
+    Tray tray(true, 16.0);
     QVERIFY(tray.add("fixture", "1.7.1", 31));
     QVERIFY(tray.add("fixture,mag-disturbance", "1.7.1", 32));
-    station::StationRunner runner(*plan, tray.ports);
+    station::StationRunner runner(plan, tray.ports);
+    runner.setTransportFactory(tray.transports());
     QVERIFY2(runner.setRunFolder(dir.filePath(QStringLiteral("run")), &error), qPrintable(error));
     QSignalSpy done(&runner, &station::StationRunner::finished);
     runner.start();
@@ -308,7 +359,7 @@ void TestStation::disabledStepsSayDisabled()
 {
     QTemporaryDir dir;
     QVERIFY(dir.isValid());
-    Tray tray;
+    Tray tray(true);
     QVERIFY(tray.add("", "1.7.1", 41));
     station::TestPlan plan;
     plan.name = QStringLiteral("disabled steps");
@@ -321,6 +372,7 @@ void TestStation::disabledStepsSayDisabled()
     QVERIFY2(plan.problems().isEmpty(), qPrintable(plan.problems().join(u'\n')));
 
     station::StationRunner runner(plan, tray.ports);
+    runner.setTransportFactory(tray.transports());
     QString error;
     const QString runDir = dir.filePath(QStringLiteral("run"));
     QVERIFY2(runner.setRunFolder(runDir, &error), qPrintable(error));
