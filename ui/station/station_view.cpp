@@ -1,7 +1,9 @@
 #include "station/station_view.h"
 
 #include "reports/station_report.h"
+#include "sim/hipnuc_serial_device.h"
 #include "sim/pty_simulator.h"
+#include "sim/simulated_transport.h"
 #include "station/plan_editor_dialog.h"
 #include "station/run_folder.h"
 #include "station/station_model.h"
@@ -506,6 +508,7 @@ bool StationView::startSimulatedTray(int count, bool withFaults, QString *error)
         const int fault = (i - first) / step;
         return fault < 3 ? fault : -1;
     };
+    QHash<QString, sim::SimOptions> inProcess; // port -> module, for an in-process tray
     for (int i = 0; i < count; ++i) {
         sim::SimOptions o;
         o.model = "HI14";
@@ -529,21 +532,40 @@ bool StationView::startSimulatedTray(int count, bool withFaults, QString *error)
             break;
         default: break;
         }
-        auto sim = std::make_unique<sim::PtySimulator>(o);
-        QString why;
-        if (!sim->start(&why)) {
-            stopSimulatedTray();
-            if (error)
-                *error = tr("The simulated modules could not start: %1").arg(why);
-            return false;
+        QString port;
+        if (m_simInProcess) {
+            port = QStringLiteral("sim:tray-%1").arg(i + 1);
+            inProcess.insert(port, o);
+        } else {
+            auto sim = std::make_unique<sim::PtySimulator>(o);
+            QString why;
+            if (!sim->start(&why)) {
+                stopSimulatedTray();
+                if (error)
+                    *error = tr("The simulated modules could not start: %1").arg(why);
+                return false;
+            }
+            port = sim->devicePath();
+            m_sims.push_back(std::move(sim));
         }
-        const QString port = sim->devicePath();
         m_simPorts << port;
         m_simNotes.insert(port, tr("Simulated HI14 %1 of %2, firmware %3: %4")
                                     .arg(i + 1)
                                     .arg(count)
                                     .arg(QString::fromStdString(o.firmware), note));
-        m_sims.push_back(std::move(sim));
+    }
+    if (m_simInProcess) {
+        // A module just powered on at each connection (a re-run's module starts afresh, where
+        // a pseudo-terminal's keeps running); null for any other port: a serial port.
+        m_simTransports = [modules = std::move(inProcess),
+                           scale = m_simTimeScale](const QString &port) -> std::unique_ptr<io::Transport> {
+            const auto it = modules.constFind(port);
+            if (it == modules.constEnd())
+                return nullptr;
+            auto link = std::make_unique<sim::SimulatedTransport>(std::make_unique<sim::HipnucSerialDevice>(*it));
+            link->setTimeScale(scale);
+            return link;
+        };
     }
     refreshPorts();
     // The tray is what is tested now: only its ports are checked.
@@ -555,11 +577,18 @@ bool StationView::startSimulatedTray(int count, bool withFaults, QString *error)
     return true;
 }
 
+void StationView::setSimulatedTrayInProcess(bool inProcess, double timeScale)
+{
+    m_simInProcess = inProcess;
+    m_simTimeScale = timeScale > 0 ? timeScale : 1.0;
+}
+
 void StationView::stopSimulatedTray()
 {
     for (auto &sim : m_sims)
         sim->stop();
     m_sims.clear();
+    m_simTransports = nullptr;
     if (m_simPorts.isEmpty())
         return;
     const QStringList gone = m_simPorts;
@@ -668,6 +697,11 @@ bool StationView::start()
         std::all_of(ports.begin(), ports.end(), [this](const QString &p) { return m_simPorts.contains(p); });
     m_runBaud = allSimulated ? kSimulatedBaud : 0;
     runner->setBaud(m_runBaud);
+    // An in-process tray's modules (setSimulatedTrayInProcess), while the tray is there; the
+    // serial port for every other port. The runner belongs to this window.
+    runner->setTransportFactory([this](const QString &port) -> std::unique_ptr<io::Transport> {
+        return m_simTransports ? m_simTransports(port) : nullptr;
+    });
     QString error;
     const QString folder = station::RunFolder::newRunPath(reportFolder(), m_plan);
     if (!runner->setRunFolder(folder, &error)) {

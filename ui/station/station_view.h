@@ -11,7 +11,8 @@
 //
 // "Simulated tray…" starts simulated HI14 modules on pseudo-terminals (the demo: 8 modules,
 // one with a noisy gyro, one mounted wrongly, one with firmware 1.6.6); the window owns them
-// and stops them when it closes. Nothing here blocks: the runner works in its sessions'
+// and stops them when it closes. Tests can have the same tray run in this process instead
+// (setSimulatedTrayInProcess). Nothing here blocks: the runner works in its sessions'
 // threads, the tiles and the summary follow a StationModel that reads it on a 5 Hz clock,
 // and problems (a plan that does not load, a folder that cannot be written, a report that
 // failed) are shown in a message that does not wait for an answer.
@@ -36,6 +37,9 @@ class QScrollArea;
 class QSettings;
 class QUrl;
 
+namespace imudesk::io {
+class Transport;
+}
 namespace imudesk::sim {
 class PtySimulator;
 }
@@ -105,6 +109,16 @@ public:
     bool startSimulatedTray(int count, bool withFaults, QString *error = nullptr);
     void stopSimulatedTray();
     QStringList simulatedPorts() const;
+    // Where the next startSimulatedTray runs its modules. By default on pseudo-terminals: the
+    // station then takes the real serial path, and a module's workspace can open its port.
+    // In process (for tests): each module sits behind a sim::SimulatedTransport that the
+    // station's runner makes at every connection (StationRunner::setTransportFactory), its
+    // clock timeScale times faster than real time; no pseudo-terminal and no simulator thread,
+    // so a loaded host cannot lose bytes between module and session. Its ports are then only
+    // names ("sim:tray-N"): the station's runs open them, a workspace cannot. A tray that is
+    // stopped is gone either way (a re-run after that cannot connect).
+    void setSimulatedTrayInProcess(bool inProcess, double timeScale = 1.0);
+    bool simulatedTrayInProcess() const { return m_simInProcess; }
 
     // Where run folders are made (one per Start: "<plan>-<date>-<time>").
     QString reportFolder() const;
@@ -182,6 +196,10 @@ private:
     QSet<int> m_pendingOpen; // tiles clicked while their module was under test
 
     std::vector<std::unique_ptr<sim::PtySimulator>> m_sims;
+    bool m_simInProcess = false;
+    double m_simTimeScale = 1.0;
+    // The in-process tray's transports by port name (null for any other port); empty without one.
+    std::function<std::unique_ptr<io::Transport>(const QString &port)> m_simTransports;
     QStringList m_simPorts;            // in tray order
     QHash<QString, QString> m_simNotes; // port -> what the simulated module is (its faults)
 
