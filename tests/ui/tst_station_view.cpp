@@ -8,7 +8,14 @@
 // every tile whole and inside the window, no scroll bar, no label cut short. Errors are reported
 // without stopping the window. The plan editor writes an edited number into the JSON and lists a
 // value typed outside its range as a problem.
+//
+// The tray runs in this process (StationView::setSimulatedTrayInProcess: each module behind a
+// sim::SimulatedTransport, its clock kTimeScale times faster than real time), so a loaded host
+// cannot starve pseudo-terminals and their simulator threads into "did not answer" or "no
+// data" failures (issue 33). The workspace the main window opens for a module still goes
+// through a pseudo-terminal, and bench_station measures the tray over pseudo-terminals.
 #include "../common/layout_checks.h"
+#include "sim/pty_simulator.h"
 #include "station/plan_editor_dialog.h"
 #include "station/station_model.h"
 #include "station/station_runner.h"
@@ -55,6 +62,9 @@ namespace {
 
 const QSize kSmall(1366, 768);
 const QSize kLarge(1920, 1080);
+// The tray's clocks run this much faster than real time: the plan's 3 s of measuring (on the
+// modules' clocks, as the runner measures) take under a second.
+constexpr double kTimeScale = 4.0;
 
 // The tray's faults (StationView::startSimulatedTray with faults, 8 modules): where each one
 // fails, -1 for the good modules.
@@ -190,6 +200,7 @@ private Q_SLOTS:
         m_view->setRemembering(false);
         m_view->setErrorPresenter([this](const QString &message) { m_errors << message; });
         m_view->setReportFolder(m_dir.filePath(QStringLiteral("reports")));
+        m_view->setSimulatedTrayInProcess(true, kTimeScale);
         QVERIFY2(m_view->startSimulatedTray(ui::StationView::kDemoTraySize, true, &error), qPrintable(error));
         QCOMPARE(m_view->simulatedPorts().size(), 8);
         QCOMPARE(m_view->checkedPorts(), m_view->simulatedPorts());
@@ -394,6 +405,14 @@ private Q_SLOTS:
     // it asks for opens in the main window's free tab.
     void mainWindowOpensTheStation()
     {
+        // A simulated module on a pseudo-terminal for the workspace (the tray's in-process
+        // ports are names only the station's runner opens); it outlives the window.
+        sim::SimOptions o;
+        o.model = "HI14";
+        o.baud = ui::StationView::kSimulatedBaud;
+        sim::PtySimulator module(o);
+        QString error;
+        QVERIFY2(module.start(&error), qPrintable(error));
         ui::MainWindow window;
         window.setErrorPresenter([](const QString &) {});
         window.show();
@@ -411,7 +430,7 @@ private Q_SLOTS:
         QCOMPARE(window.station(), station.data());
         QCOMPARE(window.findChildren<ui::StationView *>().size(), 1);
         station->setRemembering(false);
-        const QString port = m_view->simulatedPorts().at(0); // free: its test has ended
+        const QString port = module.devicePath(); // free: no test runs on it
         Q_EMIT station->openWorkspaceRequested(port, ui::StationView::kSimulatedBaud);
         QCOMPARE(window.currentWorkspace()->target(), port);
         QTRY_VERIFY_WITH_TIMEOUT(window.currentWorkspace()->state() == device::SessionState::Connected, 10000);
