@@ -1,11 +1,13 @@
 #include "session_engine.h"
 
 #include "device/stream_counters.h"
+#include "io/reading_priority.h"
 
 #include <QCoreApplication>
 #include <QDateTime>
 #include <QLoggingCategory>
 
+#include <atomic>
 #include <chrono>
 #include <utility>
 
@@ -24,6 +26,20 @@ int64_t monotonicNs()
 int64_t utcUs()
 {
     return QDateTime::currentMSecsSinceEpoch() * 1000;
+}
+
+// The worker thread reads the device: raise it once (io/reading_priority.h says what the OS
+// allows and why). What it could not get is logged once per process, with how to allow it.
+void raiseReadingThread()
+{
+    thread_local bool raised = false;
+    if (raised)
+        return;
+    raised = true;
+    const io::ReadingPriority p = io::raiseCurrentThreadForReading();
+    static std::atomic<bool> told{false};
+    if (p.niceErrno != 0 && !told.exchange(true))
+        qCInfo(lcEngine).noquote() << p.describe();
 }
 
 } // namespace
@@ -85,6 +101,7 @@ void SessionEngine::setIdentity(const model::DeviceIdentity &identity)
 
 void SessionEngine::open(const QString &address, int baud)
 {
+    raiseReadingThread();
     close();
     m_workingBaud = 0;
     m_identity = {};
