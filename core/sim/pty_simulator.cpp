@@ -1,5 +1,6 @@
 #include "pty_simulator.h"
 
+#include "io/reading_priority.h"
 #include "sim/hipnuc_serial_device.h"
 
 #include <QElapsedTimer>
@@ -220,7 +221,14 @@ struct PtySimulator::Engine {
         const int speed = readLineSpeed(master);
         for (auto &s : segments) {
             if (s.chunkStart) {
-                const bool over = pendingBytes + s.bytes.size() > (s.data ? kMaxPendingBytes : kHardLimitBytes);
+                const size_t limit = s.data ? kMaxPendingBytes : kHardLimitBytes;
+                // What waits here is what the pty would not take: hand it what it takes first. A
+                // tick that ran late brings the UART's output of the whole delay at once, which
+                // on a wire would have been filling the kernel's buffer meanwhile; only a reader
+                // that does not drain that buffer loses frames.
+                if (pendingBytes + s.bytes.size() > limit)
+                    flush();
+                const bool over = pendingBytes + s.bytes.size() > limit;
                 droppingChunk = over ? s.chunk : 0;
                 if (over)
                     ++chunksDropped;
@@ -322,6 +330,10 @@ bool PtySimulator::start(QString *error)
     QMetaObject::invokeMethod(
         m_context,
         [e, ctx] {
+            // The simulated module stands in for a device with a CPU of its own: its thread gets
+            // the reading threads' priority (as far as the OS allows), so that a busy host delays
+            // the session's reading, which is under test, rather than the device's sending.
+            io::raiseCurrentThreadForReading();
             e->clock.start();
             e->notifier = new QSocketNotifier(qintptr(e->master), QSocketNotifier::Read, ctx);
             e->notifier->setEnabled(false);

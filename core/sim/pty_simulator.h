@@ -5,7 +5,9 @@
 //
 // The simulator runs in its own QThread: a QSocketNotifier reads the master side and
 // a ~1 ms timer advances the simulated clock (steady clock, µs since start()) and
-// writes what the module sends. Clients open devicePath() (the slave, /dev/pts/N).
+// writes what the module sends. Clients open devicePath() (the slave, /dev/pts/N). The
+// thread asks for the same raised priority as a session's reading thread
+// (io/reading_priority.h): it stands in for a device that does not share the host's CPU.
 //
 // UART model: on every read and write the line speed the client set on the slave is
 // read (readLineSpeed on the master; termios2 for non-standard rates such as 256000).
@@ -14,7 +16,8 @@
 // clientBaud/moduleBaud bytes per byte sent), as a module heard at the wrong baud.
 // While no client has the slave open, output is lost (nothing is buffered for the next
 // client). A reader that stalls loses whole data frames once kMaxPendingBytes are
-// waiting; replies are kept (bounded by kHardLimitBytes).
+// waiting beyond what the pty itself holds (about 16 KiB on Linux 6.x: 4 KiB in the line
+// discipline, the rest in its flip buffer); replies are kept (bounded by kHardLimitBytes).
 //
 // Unplugged cable (SimFaults::unplugAtS of a HiPNUC module's options): that many seconds after
 // start() the simulator closes the master side, as when a USB serial adapter is pulled: the
