@@ -218,6 +218,11 @@ void SerialTransport::clear()
 
 QByteArray SerialTransport::takeAvailable()
 {
+    // Everything the port holds, in one chunk, never a read per frame: with an unlimited read
+    // buffer (setReadBufferSize(0)) QSerialPort reads up to 32 KiB per notification. On Linux a
+    // tty's line discipline hands out at most 4 KiB per read(2) (what is behind it waits in the
+    // tty's flip buffer until a kernel worker moves it on), so after a delay the bytes arrive
+    // as a few 4 KiB chunks in quick succession, each decoded in one feed.
     // Exactly what is buffered, in an allocation of that size: QIODevice::readAll() reads
     // into a 16 KiB block per call and keeps it as spare capacity, which every holder of the
     // chunk (raw-byte log, queued signals) then keeps too; at 1 kHz that was 200 MB held for
