@@ -206,6 +206,14 @@ void SessionEngine::onBytes(const QByteArray &bytes)
 
 void SessionEngine::onLineIdle()
 {
+    // The timer ran out, but bytes waiting to be read mean the line was not quiet: this thread
+    // ran late (a busy host stopped the process for longer than the idle time) and the rest of
+    // the frame is in the kernel. Releasing the unfinished frame now would drop it, and mark the
+    // recording idle where the wire was not; read first (onBytes stops or restarts the timer).
+    if (m_transport->bytesWaiting()) {
+        m_idleTimer.start();
+        return;
+    }
     const int64_t now = monotonicNs();
     if (m_recorder && m_recorder->appendLineIdle(now, utcUs()))
         m_recordedDecoder.lineIdle(now, m_noSink);

@@ -8,6 +8,7 @@
 
 #include <cerrno>
 #ifdef Q_OS_UNIX
+#include <poll.h>
 #include <unistd.h>
 #endif
 
@@ -214,6 +215,20 @@ void SerialTransport::clear()
 {
     if (m_port)
         m_port->clear();
+}
+
+bool SerialTransport::bytesWaiting() const
+{
+    if (!m_port || !m_port->isOpen())
+        return false;
+    if (m_port->bytesAvailable() > 0)
+        return true;
+#ifdef Q_OS_UNIX
+    pollfd p{int(m_port->handle()), POLLIN, 0};
+    return ::poll(&p, 1, 0) > 0 && (p.revents & POLLIN) != 0;
+#else
+    return false;
+#endif
 }
 
 QByteArray SerialTransport::takeAvailable()
