@@ -18,6 +18,11 @@
 // client). A reader that stalls loses whole data frames once kMaxPendingBytes are
 // waiting beyond what the pty itself holds (about 16 KiB on Linux 6.x: 4 KiB in the line
 // discipline, the rest in its flip buffer); replies are kept (bounded by kHardLimitBytes).
+// Together they hold what the kernel holds for a real serial port (a USB adapter or a UART):
+// 640 KiB in the tty's flip buffer (TTYB_DEFAULT_MEM_LIMIT, Linux >= 3.x) and 4 KiB in the line
+// discipline, about 7 s at 921600 baud. A pty alone holds 40 times less (pty.c limits its flip
+// buffer to 8 KiB), which made a host that stopped the reader for 0.2 s lose frames that no real
+// port would have lost.
 //
 // Unplugged cable (SimFaults::unplugAtS of a HiPNUC module's options): that many seconds after
 // start() the simulator closes the master side, as when a USB serial adapter is pulled: the
@@ -44,8 +49,8 @@ class PtySimulator {
     Q_DECLARE_TR_FUNCTIONS(PtySimulator)
 
 public:
-    static constexpr size_t kMaxPendingBytes = 16 * 1024;
-    static constexpr size_t kHardLimitBytes = 64 * 1024;
+    static constexpr size_t kMaxPendingBytes = 624 * 1024;
+    static constexpr size_t kHardLimitBytes = kMaxPendingBytes + 64 * 1024;
     static constexpr int kTickMs = 1;
 
     struct Stats {
