@@ -1,7 +1,6 @@
 #include "reading_priority.h"
 
-#include <QCoreApplication>
-
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 

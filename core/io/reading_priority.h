@@ -3,9 +3,10 @@
 // this process, and says what it got. Called by a session's worker thread (and by the pty
 // simulator's thread, which stands in for a device that has a CPU of its own).
 //
-// Why: a serial port's bytes wait in the kernel (on a pseudo-terminal about 16 KiB, about
-// 180 ms at 921600 baud) until the reading thread runs; on a busy host a thread at the default
-// priority may wait longer than that, and the kernel drops bytes before ImuDesk sees them.
+// Why: a serial port's bytes wait in the kernel until the reading thread runs (a real port
+// holds 640 KiB, about 7 s at 921600 baud; a pseudo-terminal about 16 KiB, 0.2 s); on a busy
+// host a thread at the default priority may wait longer than that, and the kernel drops bytes
+// before ImuDesk sees them. Waking late also delays every sample on its way to the views.
 //
 // What Linux allows (tried for issue 33; bench_gui_live --load N shows what the threads got):
 //   * QThread::setPriority does nothing useful here: Qt 6.4 maps its priorities onto
