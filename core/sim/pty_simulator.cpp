@@ -94,11 +94,13 @@ struct PtySimulator::Engine {
 
     std::deque<Pending> pending;
     size_t pendingBytes = 0;
+    int64_t lastServiceUs = -1;
     uint64_t droppingChunk = 0; // chunk whose remaining segments are dropped
     uint64_t garbageState = 0x9E3779B97F4A7C15ull;
     double garbageCarry = 0;
 
-    std::atomic<uint64_t> bytesIn{0}, bytesDiscarded{0}, bytesOut{0}, bytesGarbled{0}, bytesLost{0}, chunksDropped{0};
+    std::atomic<uint64_t> bytesIn{0}, bytesDiscarded{0}, bytesOut{0}, bytesGarbled{0}, bytesLost{0}, chunksDropped{0},
+        framesPausedInside{0};
     std::atomic<bool> unplugged{false};
 
     int64_t nowUs() const { return clock.nsecsElapsed() / 1000; }
@@ -210,7 +212,13 @@ struct PtySimulator::Engine {
             unplug();
             return;
         }
-        sim.advanceTo(nowUs());
+        const int64_t now = nowUs();
+        // This thread did not run for a while with part of a frame in the pty and the rest here.
+        if (lastServiceUs >= 0 && now - lastServiceUs > kPauseInsideFrameUs && !pending.empty() &&
+            pending.front().written > 0)
+            ++framesPausedInside;
+        lastServiceUs = now;
+        sim.advanceTo(now);
         auto segments = sim.takeOutputSegments();
         setClientPresent(probeClient());
         if (!clientPresent) {
@@ -417,6 +425,7 @@ PtySimulator::Stats PtySimulator::stats() const
     s.bytesGarbled = m_engine->bytesGarbled;
     s.bytesLost = m_engine->bytesLost;
     s.chunksDropped = m_engine->chunksDropped;
+    s.framesPausedInside = m_engine->framesPausedInside;
     s.unplugged = m_engine->unplugged;
     return s;
 }

@@ -52,6 +52,9 @@ public:
     static constexpr size_t kMaxPendingBytes = 624 * 1024;
     static constexpr size_t kHardLimitBytes = kMaxPendingBytes + 64 * 1024;
     static constexpr int kTickMs = 1;
+    // A HiPNUC session's line-idle time (HipnucFamily::kLineIdleMs): a pause inside a frame
+    // this long makes it drop the frame (a HEC495 session's, 30 ms, drops on shorter ones).
+    static constexpr int64_t kPauseInsideFrameUs = 120000;
 
     struct Stats {
         uint64_t bytesIn = 0;          // from the client, given to the module
@@ -60,6 +63,10 @@ public:
         uint64_t bytesGarbled = 0;     // module bytes replaced by garbage
         uint64_t bytesLost = 0;        // module bytes sent while no client was listening
         uint64_t chunksDropped = 0;    // frames dropped because the reader stalled
+        // Frames the simulator's own thread left half-written in the pty for longer than
+        // kPauseInsideFrameUs (the host did not run it): a real UART never pauses inside a frame,
+        // and a session whose line-idle time is shorter drops that frame as unfinished.
+        uint64_t framesPausedInside = 0;
         bool unplugged = false;        // the cable was pulled (SimFaults::unplugAtS)
     };
 
