@@ -1,11 +1,13 @@
 #include "session_engine.h"
 
 #include "device/stream_counters.h"
+#include "io/reading_priority.h"
 
 #include <QCoreApplication>
 #include <QDateTime>
 #include <QLoggingCategory>
 
+#include <atomic>
 #include <chrono>
 #include <utility>
 
@@ -24,6 +26,20 @@ int64_t monotonicNs()
 int64_t utcUs()
 {
     return QDateTime::currentMSecsSinceEpoch() * 1000;
+}
+
+// The worker thread reads the device: raise it once (io/reading_priority.h says what the OS
+// allows and why). What it could not get is logged once per process, with how to allow it.
+void raiseReadingThread()
+{
+    thread_local bool raised = false;
+    if (raised)
+        return;
+    raised = true;
+    const io::ReadingPriority p = io::raiseCurrentThreadForReading();
+    static std::atomic<bool> told{false};
+    if (p.niceErrno != 0 && !told.exchange(true))
+        qCInfo(lcEngine).noquote() << p.describe();
 }
 
 } // namespace
@@ -85,6 +101,7 @@ void SessionEngine::setIdentity(const model::DeviceIdentity &identity)
 
 void SessionEngine::open(const QString &address, int baud)
 {
+    raiseReadingThread();
     close();
     m_workingBaud = 0;
     m_identity = {};
@@ -189,6 +206,14 @@ void SessionEngine::onBytes(const QByteArray &bytes)
 
 void SessionEngine::onLineIdle()
 {
+    // The timer ran out, but bytes waiting to be read mean the line was not quiet: this thread
+    // ran late (a busy host stopped the process for longer than the idle time) and the rest of
+    // the frame is in the kernel. Releasing the unfinished frame now would drop it, and mark the
+    // recording idle where the wire was not; read first (onBytes stops or restarts the timer).
+    if (m_transport->bytesWaiting()) {
+        m_idleTimer.start();
+        return;
+    }
     const int64_t now = monotonicNs();
     if (m_recorder && m_recorder->appendLineIdle(now, utcUs()))
         m_recordedDecoder.lineIdle(now, m_noSink);

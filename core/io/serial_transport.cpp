@@ -8,6 +8,7 @@
 
 #include <cerrno>
 #ifdef Q_OS_UNIX
+#include <poll.h>
 #include <unistd.h>
 #endif
 
@@ -216,8 +217,27 @@ void SerialTransport::clear()
         m_port->clear();
 }
 
+bool SerialTransport::bytesWaiting() const
+{
+    if (!m_port || !m_port->isOpen())
+        return false;
+    if (m_port->bytesAvailable() > 0)
+        return true;
+#ifdef Q_OS_UNIX
+    pollfd p{int(m_port->handle()), POLLIN, 0};
+    return ::poll(&p, 1, 0) > 0 && (p.revents & POLLIN) != 0;
+#else
+    return false;
+#endif
+}
+
 QByteArray SerialTransport::takeAvailable()
 {
+    // Everything the port holds, in one chunk, never a read per frame: with an unlimited read
+    // buffer (setReadBufferSize(0)) QSerialPort reads up to 32 KiB per notification. On Linux a
+    // tty's line discipline hands out at most 4 KiB per read(2) (what is behind it waits in the
+    // tty's flip buffer until a kernel worker moves it on), so after a delay the bytes arrive
+    // as a few 4 KiB chunks in quick succession, each decoded in one feed.
     // Exactly what is buffered, in an allocation of that size: QIODevice::readAll() reads
     // into a 16 KiB block per call and keeps it as spare capacity, which every holder of the
     // chunk (raw-byte log, queued signals) then keeps too; at 1 kHz that was 200 MB held for

@@ -35,6 +35,7 @@ public:
     qint64 write(const QByteArray &bytes) override;
     // Discards bytes waiting in the OS buffers (input and output).
     void clear() override;
+    bool bytesWaiting() const override;
     // The same adapter by its USB serial number (ttyUSB0 may come back as ttyUSB1); without
     // one (a pseudo-terminal, an on-board UART) the path the port was first opened at, once
     // it exists again.

@@ -33,6 +33,9 @@ public:
     }
     // Discards bytes waiting in buffers (both directions).
     virtual void clear() = 0;
+    // Whether received bytes wait to be read (in the OS or the port's buffer): the reading
+    // thread ran late. A line with bytes waiting is not quiet, whatever a timer says.
+    virtual bool bytesWaiting() const { return false; }
     // After the link failed: where the same device can be opened again now (a USB adapter may
     // come back under another name); empty while it is not there.
     virtual QString locateAgain() const { return address(); }

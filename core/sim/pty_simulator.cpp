@@ -1,5 +1,6 @@
 #include "pty_simulator.h"
 
+#include "io/reading_priority.h"
 #include "sim/hipnuc_serial_device.h"
 
 #include <QElapsedTimer>
@@ -93,11 +94,13 @@ struct PtySimulator::Engine {
 
     std::deque<Pending> pending;
     size_t pendingBytes = 0;
+    int64_t lastServiceUs = -1;
     uint64_t droppingChunk = 0; // chunk whose remaining segments are dropped
     uint64_t garbageState = 0x9E3779B97F4A7C15ull;
     double garbageCarry = 0;
 
-    std::atomic<uint64_t> bytesIn{0}, bytesDiscarded{0}, bytesOut{0}, bytesGarbled{0}, bytesLost{0}, chunksDropped{0};
+    std::atomic<uint64_t> bytesIn{0}, bytesDiscarded{0}, bytesOut{0}, bytesGarbled{0}, bytesLost{0}, chunksDropped{0},
+        framesPausedInside{0};
     std::atomic<bool> unplugged{false};
 
     int64_t nowUs() const { return clock.nsecsElapsed() / 1000; }
@@ -209,7 +212,13 @@ struct PtySimulator::Engine {
             unplug();
             return;
         }
-        sim.advanceTo(nowUs());
+        const int64_t now = nowUs();
+        // This thread did not run for a while with part of a frame in the pty and the rest here.
+        if (lastServiceUs >= 0 && now - lastServiceUs > kPauseInsideFrameUs && !pending.empty() &&
+            pending.front().written > 0)
+            ++framesPausedInside;
+        lastServiceUs = now;
+        sim.advanceTo(now);
         auto segments = sim.takeOutputSegments();
         setClientPresent(probeClient());
         if (!clientPresent) {
@@ -220,7 +229,14 @@ struct PtySimulator::Engine {
         const int speed = readLineSpeed(master);
         for (auto &s : segments) {
             if (s.chunkStart) {
-                const bool over = pendingBytes + s.bytes.size() > (s.data ? kMaxPendingBytes : kHardLimitBytes);
+                const size_t limit = s.data ? kMaxPendingBytes : kHardLimitBytes;
+                // What waits here is what the pty would not take: hand it what it takes first. A
+                // tick that ran late brings the UART's output of the whole delay at once, which
+                // on a wire would have been filling the kernel's buffer meanwhile; only a reader
+                // that does not drain that buffer loses frames.
+                if (pendingBytes + s.bytes.size() > limit)
+                    flush();
+                const bool over = pendingBytes + s.bytes.size() > limit;
                 droppingChunk = over ? s.chunk : 0;
                 if (over)
                     ++chunksDropped;
@@ -322,6 +338,10 @@ bool PtySimulator::start(QString *error)
     QMetaObject::invokeMethod(
         m_context,
         [e, ctx] {
+            // The simulated module stands in for a device with a CPU of its own: its thread gets
+            // the reading threads' priority (as far as the OS allows), so that a busy host delays
+            // the session's reading, which is under test, rather than the device's sending.
+            io::raiseCurrentThreadForReading();
             e->clock.start();
             e->notifier = new QSocketNotifier(qintptr(e->master), QSocketNotifier::Read, ctx);
             e->notifier->setEnabled(false);
@@ -405,6 +425,7 @@ PtySimulator::Stats PtySimulator::stats() const
     s.bytesGarbled = m_engine->bytesGarbled;
     s.bytesLost = m_engine->bytesLost;
     s.chunksDropped = m_engine->chunksDropped;
+    s.framesPausedInside = m_engine->framesPausedInside;
     s.unplugged = m_engine->unplugged;
     return s;
 }

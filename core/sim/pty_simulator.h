@@ -5,7 +5,9 @@
 //
 // The simulator runs in its own QThread: a QSocketNotifier reads the master side and
 // a ~1 ms timer advances the simulated clock (steady clock, µs since start()) and
-// writes what the module sends. Clients open devicePath() (the slave, /dev/pts/N).
+// writes what the module sends. Clients open devicePath() (the slave, /dev/pts/N). The
+// thread asks for the same raised priority as a session's reading thread
+// (io/reading_priority.h): it stands in for a device that does not share the host's CPU.
 //
 // UART model: on every read and write the line speed the client set on the slave is
 // read (readLineSpeed on the master; termios2 for non-standard rates such as 256000).
@@ -14,7 +16,13 @@
 // clientBaud/moduleBaud bytes per byte sent), as a module heard at the wrong baud.
 // While no client has the slave open, output is lost (nothing is buffered for the next
 // client). A reader that stalls loses whole data frames once kMaxPendingBytes are
-// waiting; replies are kept (bounded by kHardLimitBytes).
+// waiting beyond what the pty itself holds (about 16 KiB on Linux 6.x: 4 KiB in the line
+// discipline, the rest in its flip buffer); replies are kept (bounded by kHardLimitBytes).
+// Together they hold what the kernel holds for a real serial port (a USB adapter or a UART):
+// 640 KiB in the tty's flip buffer (TTYB_DEFAULT_MEM_LIMIT, Linux >= 3.x) and 4 KiB in the line
+// discipline, about 7 s at 921600 baud. A pty alone holds 40 times less (pty.c limits its flip
+// buffer to 8 KiB), which made a host that stopped the reader for 0.2 s lose frames that no real
+// port would have lost.
 //
 // Unplugged cable (SimFaults::unplugAtS of a HiPNUC module's options): that many seconds after
 // start() the simulator closes the master side, as when a USB serial adapter is pulled: the
@@ -41,9 +49,12 @@ class PtySimulator {
     Q_DECLARE_TR_FUNCTIONS(PtySimulator)
 
 public:
-    static constexpr size_t kMaxPendingBytes = 16 * 1024;
-    static constexpr size_t kHardLimitBytes = 64 * 1024;
+    static constexpr size_t kMaxPendingBytes = 624 * 1024;
+    static constexpr size_t kHardLimitBytes = kMaxPendingBytes + 64 * 1024;
     static constexpr int kTickMs = 1;
+    // A HiPNUC session's line-idle time (HipnucFamily::kLineIdleMs): a pause inside a frame
+    // this long makes it drop the frame (a HEC495 session's, 30 ms, drops on shorter ones).
+    static constexpr int64_t kPauseInsideFrameUs = 120000;
 
     struct Stats {
         uint64_t bytesIn = 0;          // from the client, given to the module
@@ -52,6 +63,10 @@ public:
         uint64_t bytesGarbled = 0;     // module bytes replaced by garbage
         uint64_t bytesLost = 0;        // module bytes sent while no client was listening
         uint64_t chunksDropped = 0;    // frames dropped because the reader stalled
+        // Frames the simulator's own thread left half-written in the pty for longer than
+        // kPauseInsideFrameUs (the host did not run it): a real UART never pauses inside a frame,
+        // and a session whose line-idle time is shorter drops that frame as unfinished.
+        uint64_t framesPausedInside = 0;
         bool unplugged = false;        // the cable was pulled (SimFaults::unplugAtS)
     };
 

@@ -4,7 +4,13 @@
 // decoded and lost, chart refreshes per second, GUI-thread busy time (% of one core)
 // and peak resident memory, each against its target, measured in this run.
 //
-// usage: bench_gui_live [--seconds N] [--record DIR] [--devices N] (default 60 s, no recording, one module).
+// usage: bench_gui_live [--seconds N] [--record DIR] [--devices N] [--load N] (default 60 s, no recording, one
+//        module, no load). --load N: N busy threads spin beside the run (warm-up and measured window), as a
+//        compiler or another program would on the same machine; the frames lost are then split into those
+//        lost before ImuDesk (the simulated module's UART or the pty dropped them because the reading
+//        thread was not scheduled in time; the session sees them as gaps in the device timestamps) and
+//        those lost inside it, and the reading and simulator threads' scheduling (nice, run-queue wait)
+//        is printed.
 //        soak [--seconds N] [--record DIR] (the same run, by default one hour and recording
 //        to a temporary folder: frames recorded, resident memory at start and end, GUI
 //        stalls over 100 ms).
@@ -12,7 +18,8 @@
 //        more, else a quarter of the run, at most 30 s); [--memory-trace] prints resident
 //        memory and the C heap (bytes in use / free inside malloc's arenas) once a minute,
 //        to tell memory the application holds from memory the allocator keeps.
-// Exit code 1 only when frames were lost (or the recording is damaged).
+// Exit code 0: every target met; 1: a target missed (frames lost before ImuDesk among them); 2: a
+// frame that reached ImuDesk was lost, or the recording is damaged.
 #include "charts/chart_panel.h"
 #include "charts/chart_view.h"
 #include "workspace/device_workspace.h"
@@ -31,9 +38,12 @@
 #include <malloc.h>
 #include <sys/resource.h>
 
+#include <atomic>
 #include <cstdio>
 #include <ctime>
 #include <optional>
+#include <thread>
+#include <vector>
 
 using namespace imudesk;
 
@@ -87,6 +97,90 @@ struct StallWatch {
         timer.start();
     }
 };
+
+// N threads that spin (no system calls, no memory traffic to speak of) until stopped: the load
+// of `yes >/dev/null` or a compiler, at the default priority (nice 0, SCHED_OTHER).
+class BusyLoad {
+public:
+    explicit BusyLoad(int n)
+    {
+        for (int i = 0; i < n; ++i)
+            m_threads.emplace_back([this] {
+                volatile uint64_t x = 0;
+                while (!m_stop.load(std::memory_order_relaxed))
+                    for (int k = 0; k < 100000; ++k)
+                        x = x + uint64_t(k);
+            });
+    }
+    ~BusyLoad() { stop(); }
+    void stop()
+    {
+        m_stop = true;
+        for (auto &t : m_threads)
+            if (t.joinable())
+                t.join();
+    }
+
+private:
+    std::atomic<bool> m_stop{false};
+    std::vector<std::thread> m_threads;
+};
+
+// A thread of this process by its name (/proc/self/task/*/comm; Qt names the OS thread after
+// the QThread's objectName, cut to 15 characters): its nice value and scheduling policy from
+// /proc, and its run-queue statistics (/proc/.../schedstat: ns run, ns waited for a CPU, slices).
+struct ThreadSched {
+    bool found = false;
+    int nice = 0;
+    int policy = 0;
+    double runS = 0, waitS = 0;
+    uint64_t slices = 0;
+};
+
+ThreadSched threadSched(const QByteArray &name)
+{
+    ThreadSched t;
+    const QStringList tasks = QDir(QStringLiteral("/proc/self/task")).entryList(QDir::Dirs | QDir::NoDotAndDotDot);
+    for (const QString &tid : tasks) {
+        QFile comm(QStringLiteral("/proc/self/task/%1/comm").arg(tid));
+        if (!comm.open(QIODevice::ReadOnly) || comm.readAll().trimmed() != name.left(15))
+            continue;
+        QFile stat(QStringLiteral("/proc/self/task/%1/stat").arg(tid));
+        QFile sched(QStringLiteral("/proc/self/task/%1/schedstat").arg(tid));
+        if (!stat.open(QIODevice::ReadOnly))
+            continue;
+        const QByteArray text = stat.readAll();
+        // Fields after the command's closing parenthesis, starting with field 3 (state).
+        const QList<QByteArray> f = text.mid(text.lastIndexOf(')') + 2).split(' ');
+        if (f.size() > 38) {
+            t.nice = f[19 - 3].toInt();
+            t.policy = f[41 - 3].toInt();
+        }
+        if (sched.open(QIODevice::ReadOnly)) {
+            const QList<QByteArray> s = sched.readAll().trimmed().split(' ');
+            if (s.size() >= 3) {
+                t.runS = s[0].toDouble() / 1e9;
+                t.waitS = s[1].toDouble() / 1e9;
+                t.slices = s[2].toULongLong();
+            }
+        }
+        t.found = true;
+        break;
+    }
+    return t;
+}
+
+const char *policyName(int policy)
+{
+    switch (policy) {
+    case 0: return "SCHED_OTHER";
+    case 1: return "SCHED_FIFO";
+    case 2: return "SCHED_RR";
+    case 3: return "SCHED_BATCH";
+    case 5: return "SCHED_IDLE";
+    default: return "?";
+    }
+}
 
 double peakRssMiB()
 {
@@ -144,6 +238,7 @@ int main(int argc, char **argv)
     QString recordDir;
     int devices = 1; // --devices N: N simulated modules at 1 kHz, one tab each, in one window
     int warmupOverride = -1;
+    int load = 0; // --load N: N busy threads beside the run
     bool memoryTrace = false;
     for (int i = 1; i < argc; ++i) {
         if (QByteArray(argv[i]) == "--memory-trace")
@@ -154,6 +249,8 @@ int main(int argc, char **argv)
             seconds = std::max(5, QByteArray(argv[i + 1]).toInt());
         if (QByteArray(argv[i]) == "--devices")
             devices = std::clamp(QByteArray(argv[i + 1]).toInt(), 1, 8);
+        if (QByteArray(argv[i]) == "--load")
+            load = std::clamp(QByteArray(argv[i + 1]).toInt(), 0, 64);
         if (QByteArray(argv[i]) == "--warmup")
             warmupOverride = std::max(0, QByteArray(argv[i + 1]).toInt());
         if (QByteArray(argv[i]) == "--record") {
@@ -175,7 +272,7 @@ int main(int argc, char **argv)
     // The modules beyond the first: each in its own tab, connected first and shown last.
     struct Extra {
         ui::DeviceWorkspace *ws = nullptr;
-        uint64_t queued0 = 0, uartDrops0 = 0, decoded0 = 0, ptyDrops0 = 0;
+        uint64_t queued0 = 0, uartDrops0 = 0, decoded0 = 0, ptyDrops0 = 0, paused0 = 0;
     };
     std::vector<Extra> extras;
     auto counters = [](ui::DeviceWorkspace *w, uint64_t &queued, uint64_t &uart) {
@@ -213,10 +310,12 @@ int main(int argc, char **argv)
     counters(ws, queued0, uartDrops0);
     const uint64_t decoded0 = session.store().totalAppended();
     const uint64_t ptyDrops0 = simulator->stats().chunksDropped;
+    const uint64_t paused0 = simulator->stats().framesPausedInside;
     for (Extra &e : extras) {
         counters(e.ws, e.queued0, e.uartDrops0);
         e.decoded0 = e.ws->session().store().totalAppended();
         e.ptyDrops0 = e.ws->simulator()->stats().chunksDropped;
+        e.paused0 = e.ws->simulator()->stats().framesPausedInside;
     }
     const int refresh0 = ws->chartPanel()->refreshCount();
     int chartsShown = 0; // the default layout: four charts in view
@@ -245,6 +344,9 @@ int main(int argc, char **argv)
         session.startRecording(capturePath);
         spin(200);
     }
+    // The load runs from before the module starts sending until the measured window ends: every
+    // frame counted below was sent while the machine was busy.
+    BusyLoad busyLoad(load);
     for (Extra &e : extras)
         if (!command(e.ws->session(), QStringLiteral("LOG HI91 ONTIME 0.001"))) {
             std::fprintf(stderr, "%s: LOG HI91 ONTIME 0.001 was not acknowledged\n", name);
@@ -278,6 +380,8 @@ int main(int argc, char **argv)
     const HeapFigures heapStart = heapFigures();
     const uint64_t decodedAtStart = session.store().totalAppended();
     StallWatch stalls;
+    const ThreadSched readerAt0 = threadSched("imudesk-session");
+    const ThreadSched simAt0 = threadSched("pty-simulator");
     const double cpu0 = threadCpuSeconds();
     QElapsedTimer wall;
     wall.start();
@@ -287,6 +391,9 @@ int main(int argc, char **argv)
     const double wallS = double(wall.nsecsElapsed()) / 1e9;
     const double cpuS = threadCpuSeconds() - cpu0;
     const int refreshes = ws->chartPanel()->refreshCount() - refresh0;
+    const ThreadSched readerAt1 = threadSched("imudesk-session");
+    const ThreadSched simAt1 = threadSched("pty-simulator");
+    busyLoad.stop();
 
     command(session, QStringLiteral("LOG HI91 ONTIME 0"));
     for (Extra &e : extras)
@@ -314,6 +421,7 @@ int main(int argc, char **argv)
     uint64_t lost = sent > decoded ? sent - decoded : 0;
     uint64_t uartDrops = uartDrops1 - uartDrops0;
     uint64_t ptyDrops = simulator->stats().chunksDropped - ptyDrops0;
+    uint64_t paused = simulator->stats().framesPausedInside - paused0;
     for (Extra &e : extras) { // every module counts: the sums over all of them
         uint64_t q = 0, u = 0;
         counters(e.ws, q, u);
@@ -323,6 +431,7 @@ int main(int argc, char **argv)
         lost += q - e.queued0 > d ? q - e.queued0 - d : 0;
         uartDrops += u - e.uartDrops0;
         ptyDrops += e.ws->simulator()->stats().chunksDropped - e.ptyDrops0;
+        paused += e.ws->simulator()->stats().framesPausedInside - e.paused0;
     }
     const double refreshRate = refreshes / wallS;
     const double busy = 100.0 * cpuS / wallS;
@@ -331,29 +440,53 @@ int main(int argc, char **argv)
     const bool okLost = lost == 0 && uartDrops == 0 && ptyDrops == 0 && captureIntact;
     // Frames the simulator could not hand to the pty (its buffer full: the reader was not
     // scheduled in time on a loaded machine) never reached ImuDesk; frames lost beyond those
-    // did reach it and are a correctness failure, as is a damaged capture.
-    const uint64_t beforeHost = uartDrops + ptyDrops;
+    // did reach it and are a correctness failure, as is a damaged capture. So are frames the
+    // simulator's thread left half-written while the host did not run it (a real UART does not
+    // pause inside a frame; the session drops such a frame as unfinished after its line-idle time).
+    // A pause explains at most one lost frame, and only frames that were lost.
+    const uint64_t dropped = uartDrops + ptyDrops;
+    const uint64_t beforeHost = dropped + std::min(paused, lost > dropped ? lost - dropped : 0);
     const uint64_t lostInApp = lost > beforeHost ? lost - beforeHost : 0;
+    // The same loss as the session saw it: gaps in the device timestamps of the module in view.
+    const uint64_t gapLost = statsNow.framesLost - stats0.framesLost;
     const bool okRefresh = refreshRate >= 30.0;
     // % of one core, four charts, attitude and table at 1 kHz; with several modules (issue 20)
     // the one in view draws and the others keep their stores and statistics current.
-    const double kBusyTarget = devices > 1 ? 30.0 : 15.0;
+    // Under --load the issue-33 target applies: < 30 % (the GUI thread shares the cores with the load).
+    const double kBusyTarget = devices > 1 || load > 0 ? 30.0 : 15.0;
     const bool okBusy = busy < kBusyTarget;
-    std::printf("%s: HI91 at 1000 Hz, 921600 baud, %d s, GUI offscreen (%d charts, attitude, table)%s%s\n", name,
+    std::printf("%s: HI91 at 1000 Hz, 921600 baud, %d s, GUI offscreen (%d charts, attitude, table)%s%s%s\n", name,
                 seconds, chartsShown, record ? ", recording" : "",
                 devices > 1 ? qPrintable(QStringLiteral(", %1 modules (one tab each; sums over all)").arg(devices))
-                            : "");
+                            : "",
+                load > 0 ? qPrintable(QStringLiteral(", %1 busy threads beside it").arg(load)) : "");
     std::printf("  %-34s %12llu\n", "frames sent by the module", (unsigned long long)sent);
     std::printf("  %-34s %12llu\n", "frames decoded", (unsigned long long)decoded);
     std::printf("  %-34s %12llu   target 0  %s\n", "frames lost", (unsigned long long)lost, okLost ? "ok" : "MISSED");
-    std::printf("  %-34s %12llu / %llu\n", "  dropped by UART model / by pty", (unsigned long long)uartDrops,
-                (unsigned long long)ptyDrops);
+    std::printf("  %-34s %12llu   target 0  %s\n", "  lost before ImuDesk", (unsigned long long)beforeHost,
+                beforeHost == 0 ? "ok" : "MISSED");
+    std::printf("  %-34s %12llu / %llu / %llu\n", "    UART model / pty / sim paused", (unsigned long long)uartDrops,
+                (unsigned long long)ptyDrops, (unsigned long long)paused);
+    std::printf("  %-34s %12llu   (gaps in the device timestamps%s)\n", "    seen by the session as lost",
+                (unsigned long long)gapLost, devices > 1 ? ", module in view" : "");
     std::printf("  %-34s %12llu   target 0  %s\n", "  lost after reaching ImuDesk", (unsigned long long)lostInApp,
                 lostInApp == 0 ? "ok" : "FAILED");
     std::printf("  %-34s %12llu / %llu / %llu\n", "  CRC errors / bytes skipped / bad payloads",
                 (unsigned long long)(statsNow.crcErrors - stats0.crcErrors),
                 (unsigned long long)(statsNow.bytesSkipped - stats0.bytesSkipped),
                 (unsigned long long)(statsNow.payloadErrors - stats0.payloadErrors));
+    const auto printSched = [wallS](const char *label, const ThreadSched &a, const ThreadSched &b) {
+        if (!b.found) {
+            std::printf("  %-34s %12s\n", label, "not found");
+            return;
+        }
+        const uint64_t slices = b.slices - a.slices;
+        std::printf("  %-34s %12s   nice %d, %.1f %% of a core, waited for a CPU %.1f ms in all, %.1f us a wake-up\n",
+                    label, policyName(b.policy), b.nice, 100.0 * (b.runS - a.runS) / std::max(1e-3, wallS),
+                    1e3 * (b.waitS - a.waitS), slices ? 1e6 * (b.waitS - a.waitS) / double(slices) : 0.0);
+    };
+    printSched("reading thread (imudesk-session)", readerAt0, readerAt1);
+    printSched("simulator thread (pty-simulator)", simAt0, simAt1);
     std::printf("  %-34s %12.1f   target >= 30  %s\n", "chart refreshes per second", refreshRate,
                 okRefresh ? "ok" : "MISSED");
     std::printf("  %-34s %11.1f%%   target < %.0f %%  %s\n", "GUI thread busy (one core)", busy, kBusyTarget,
