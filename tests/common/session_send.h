@@ -12,14 +12,18 @@ inline protocol::hipnuc::AsciiReply sendAndWait(device::DeviceSession &s, const 
 {
     QSignalSpy spy(&s, &device::DeviceSession::commandFinished);
     const quint64 id = s.sendCommand(cmd, timeoutMs);
-    for (int waited = 0; waited < timeoutMs + 3000; waited += 10) {
-        for (const auto &args : spy)
-            if (args.at(0).toULongLong() == id)
-                return args.at(1).value<protocol::hipnuc::AsciiReply>();
-        QTest::qWait(10);
-    }
     protocol::hipnuc::AsciiReply r;
     r.status = protocol::hipnuc::AsciiReply::Status::Pending;
+    (void)QTest::qWaitFor(
+        [&] {
+            for (const auto &args : spy)
+                if (args.at(0).toULongLong() == id) {
+                    r = args.at(1).value<protocol::hipnuc::AsciiReply>();
+                    return true;
+                }
+            return false;
+        },
+        timeoutMs + 3000);
     return r;
 }
 
