@@ -1,12 +1,12 @@
-// Record from the simulator over a real pseudo-terminal, replay the capture through
+// Record from the simulated module (in this process, sim::SimulatedTransport), replay the capture through
 // ReplaySession and compare every decoded value with what the live session decoded from
 // the simulator's bytes; then paced playback, seek, loop, pause, a raw dump of the same bytes,
 // and a missing file.
 #include "../common/capture_bytes.h"
+#include "../common/sim_session.h"
 #include "device/device_session.h"
 #include "record/capture_exporter.h"
 #include "record/replay_session.h"
-#include "sim/pty_simulator.h"
 
 #include <QFile>
 #include <QSignalSpy>
@@ -81,20 +81,25 @@ private Q_SLOTS:
         o.baud = 921600;
         o.motion = sim::Motion::Tumble;
         o.seed = 5;
-        sim::PtySimulator simulator(o);
-        QString error;
-        QVERIFY2(simulator.start(&error), qPrintable(error));
-        DeviceSession session;
-        session.open(simulator.devicePath(), 921600);
-        QTRY_COMPARE_WITH_TIMEOUT(session.state(), SessionState::Connected, 10000);
+        test::SimSession sim(o);
+        DeviceSession &session = sim.session;
         QSignalSpy identity(&session, &DeviceSession::identityChanged);
-        QVERIFY(identity.wait(5000));
+        sim.open(921600);
+        QTRY_COMPARE_WITH_TIMEOUT(session.state(), SessionState::Connected, 10000);
+        QVERIFY(!identity.isEmpty() || identity.wait(5000));
         // HI91 at 200 Hz and HI81 at 20 Hz share the line.
         QSignalSpy done(&session, &DeviceSession::commandFinished);
         session.sendCommand(QStringLiteral("LOG HI91 ONTIME 0.005"));
         session.sendCommand(QStringLiteral("LOG HI81 ONTIME 0.05"));
         QTRY_COMPARE_WITH_TIMEOUT(done.size(), 2, 5000);
-        QTest::qWait(200);
+        const uint64_t configured = session.store().totalAppended();
+        const auto hi81Arrived = [&session, configured] {
+            for (const auto &sample : session.store().since(configured))
+                if (sample.source == "HI81")
+                    return true;
+            return false;
+        };
+        QTRY_VERIFY_WITH_TIMEOUT(hi81Arrived(), 5000); // both streams run
 
         m_capture = m_dir.filePath(QStringLiteral("sim.imucap"));
         QSignalSpy started(&session, &DeviceSession::recordingStarted);
@@ -103,7 +108,7 @@ private Q_SLOTS:
         const uint64_t before = session.store().totalAppended();
         session.startRecording(m_capture);
         QVERIFY(started.wait(5000));
-        QTest::qWait(2000);
+        QTest::qWait(2000); // duration under test: two seconds recorded (the replay's duration is checked)
         session.stopRecording();
         QVERIFY(stopped.wait(5000));
         QCOMPARE(stopped.at(0).at(0).toString(), QString()); // stopped as asked
@@ -111,7 +116,6 @@ private Q_SLOTS:
         m_recordedFrames = progress.last().at(1).toULongLong(); // frames decoded from the recorded bytes
         m_live = session.store().since(before);
         session.close();
-        simulator.stop();
         QVERIFY(m_live.size() > 100); // 2 s at 220 frames/s, fewer when the machine starves the simulator
     }
 
@@ -217,7 +221,7 @@ private Q_SLOTS:
         replay.pause();
         QTRY_VERIFY(!playing.isEmpty() && !playing.last().at(0).toBool());
         const uint64_t paused = replay.store().totalAppended();
-        QTest::qWait(100);
+        QTest::qWait(100); // duration under test: nothing is replayed for 100 ms while paused
         QCOMPARE(replay.store().totalAppended(), paused);
     }
 
