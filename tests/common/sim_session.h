@@ -71,7 +71,17 @@ public:
         return n;
     }
 
+    // The cable is pulled (the link fails) and plugged in again (the session may reopen it).
+    void unplug() { inLink([](sim::SimulatedTransport &l) { l.unplug(); }); }
+    void replug() { inLink([](sim::SimulatedTransport &l) { l.replug(); }); }
+
 private:
+    void inLink(void (*fn)(sim::SimulatedTransport &))
+    {
+        sim::SimulatedTransport *link = m_link;
+        QMetaObject::invokeMethod(link, [link, fn] { fn(*link); }, Qt::BlockingQueuedConnection);
+    }
+
     sim::SimulatedTransport *m_link; // owned by the session
 
 public:

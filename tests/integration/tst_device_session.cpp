@@ -1,9 +1,10 @@
 // DeviceSession against the simulated module. In this process (sim::SimulatedTransport,
 // tests/common/sim_session.h): every documented command, ERR and timeouts, the statistics,
-// reboots and the bootloader, frames lost on a slow link. On a real pseudo-terminal (the
-// QSerialPort path, sim::PtySimulator): baud detection and identity, a silent device, errors
-// for missing, busy and forbidden ports, the unplug case, reconnection after an unplug, and
-// frames lost at full rate through the kernel's buffers.
+// reboots and the bootloader, frames lost on a slow link, auto-reconnection turned off. On a
+// real pseudo-terminal (the QSerialPort path, sim::PtySimulator): baud detection and identity,
+// a silent device, errors for missing, busy and forbidden ports, the unplug case, reconnection
+// after an unplug (by a stable name, to the same or another module), and frames lost at full
+// rate through the kernel's buffers.
 #include "../common/session_send.h"
 #include "../common/sim_session.h"
 #include "device/device_session.h"
@@ -510,35 +511,28 @@ private Q_SLOTS:
 
     void autoReconnectOffStaysDisconnected()
     {
-        QTemporaryDir dir;
-        QVERIFY(dir.isValid());
-        const QString link = dir.filePath(QStringLiteral("imu"));
-        auto first = std::make_unique<sim::PtySimulator>(options());
-        QVERIFY(first->start(nullptr));
-        QVERIFY(QFile::link(first->devicePath(), link));
-        DeviceSession session;
+        // Engine rules, in this process: the link fails as an unplugged cable (SimulatedTransport::unplug).
+        test::SimSession first(options());
+        DeviceSession &session = first.session;
         session.setAutoReconnect(false);
         QVERIFY(!session.autoReconnect());
         QSignalSpy reconnected(&session, &DeviceSession::reconnected);
-        session.open(link, 115200);
+        first.open(115200);
         QVERIFY(waitConnected(session));
-        QVERIFY(QFile::remove(link));
-        first.reset();
+        first.unplug();
         QTRY_COMPARE_WITH_TIMEOUT(session.state(), SessionState::Disconnected, 5000);
-        auto second = std::make_unique<sim::PtySimulator>(options());
-        QVERIFY(second->start(nullptr));
-        QVERIFY(QFile::link(second->devicePath(), link));
+        first.replug();
         QTest::qWait(1200); // duration under test: two polling periods with the device back, and no reopen
         QCOMPARE(session.state(), SessionState::Disconnected);
         QCOMPARE(reconnected.size(), 0);
         // Turned on while waiting would be too late for this unplug; turned off while
         // waiting, the session stops waiting.
-        DeviceSession other;
+        test::SimSession second(options());
+        DeviceSession &other = second.session;
         QSignalSpy otherStates(&other, &DeviceSession::stateChanged);
-        other.open(link, 115200);
+        second.open(115200);
         QVERIFY(waitConnected(other));
-        QVERIFY(QFile::remove(link));
-        second.reset();
+        second.unplug();
         QTRY_COMPARE_WITH_TIMEOUT(other.state(), SessionState::Reconnecting, 5000);
         other.setAutoReconnect(false);
         QTRY_COMPARE(other.state(), SessionState::Disconnected);
