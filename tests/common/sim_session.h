@@ -63,14 +63,6 @@ public:
         return n;
     }
 
-    // Bytes in the module's transmit buffer, not yet on the line.
-    size_t txQueuedBytes()
-    {
-        size_t n = 0;
-        withDevice([&n](sim::HipnucSimulator &d) { n = d.txQueuedBytes(); });
-        return n;
-    }
-
     // The cable is pulled (the link fails) and plugged in again (the session may reopen it).
     void unplug() { inLink([](sim::SimulatedTransport &l) { l.unplug(); }); }
     void replug() { inLink([](sim::SimulatedTransport &l) { l.replug(); }); }

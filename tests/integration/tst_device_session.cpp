@@ -618,8 +618,8 @@ private Q_SLOTS:
         QCOMPARE(end.framesLostByType.at("HI91"), end.framesLost);
         // Back to 100 Hz: the link keeps up again and the count stops growing.
         QCOMPARE(send(session, QStringLiteral("LOG HI91 ONTIME 0.01"), 3000).status, Status::Ok);
-        // The module's transmit buffer has emptied: what it queued at 1 kHz has arrived.
-        QTRY_VERIFY_WITH_TIMEOUT(sim.txQueuedBytes() == 0, 5000);
+        // The OK was queued behind what the module had buffered at 1 kHz, and bytes arrive here
+        // in the order sent: every gap is counted by now, and 100 Hz fits the line.
         const uint64_t settled = stats.next().framesLost;
         QTest::qWait(1500); // duration under test: the count stays for 1.5 s
         QCOMPARE(stats.next().framesLost, settled);
