@@ -5,6 +5,8 @@
 #include "../common/capture_bytes.h"
 #include "../common/sim_session.h"
 #include "device/device_session.h"
+#include "protocol/hipnuc/frame_decoder.h"
+#include "protocol/hipnuc/payloads.h"
 #include "record/capture_exporter.h"
 #include "record/replay_session.h"
 
@@ -51,6 +53,41 @@ QString differences(const model::Sample &a, const model::Sample &b)
     if (a.inclinationX != b.inclinationX || a.inclinationY != b.inclinationY)
         d << QStringLiteral("inclination");
     return d.join(QLatin1Char(','));
+}
+
+// The live samples of the frames a capture holds. The capture is a stretch of the byte stream
+// the live session decoded; the engine starts and stops recording between two reads, at a
+// moment the test thread cannot see, so `live` (all samples from just before the start to
+// just after the stop) may have a few more at either end. The capture's first and last HI91
+// frames (device clock) place it in `live`; one sample per frame here. Empty if they are not
+// found in `live`.
+std::vector<model::Sample> recordedStretch(const std::vector<model::Sample> &live, const QByteArray &captured)
+{
+    protocol::hipnuc::FrameDecoder decoder;
+    const auto frames = decoder.feed(reinterpret_cast<const uint8_t *>(captured.constData()), size_t(captured.size()));
+    std::vector<std::pair<size_t, double>> hi91; // frame index, device time (ms)
+    for (size_t i = 0; i < frames.size(); ++i) {
+        protocol::hipnuc::Hi91 h;
+        if (protocol::hipnuc::decodeHi91(frames[i].data(), frames[i].size(), h))
+            hi91.emplace_back(i, double(h.systemTime));
+    }
+    if (hi91.empty())
+        return {};
+    const auto find = [&live](double timeMs, size_t from) {
+        for (size_t j = from; j < live.size(); ++j)
+            if (live[j].source == "HI91" && live[j].deviceTimeMs == timeMs)
+                return j;
+        return live.size();
+    };
+    const size_t first = find(hi91.front().second, 0);
+    if (first == live.size() || first < hi91.front().first)
+        return {};
+    const size_t last = find(hi91.back().second, first);
+    const size_t begin = first - hi91.front().first;
+    const size_t end = last + (frames.size() - hi91.back().first); // one past the capture's last frame
+    if (last == live.size() || end > live.size())
+        return {};
+    return std::vector<model::Sample>(live.begin() + qsizetype(begin), live.begin() + qsizetype(end));
 }
 
 } // namespace
@@ -114,8 +151,10 @@ private Q_SLOTS:
         QCOMPARE(stopped.at(0).at(0).toString(), QString()); // stopped as asked
         QVERIFY(!progress.isEmpty());
         m_recordedFrames = progress.last().at(1).toULongLong(); // frames decoded from the recorded bytes
-        m_live = session.store().since(before);
+        const auto live = session.store().since(before);
         session.close();
+        m_live = recordedStretch(live, test::receivedBytes(m_capture));
+        qInfo("%zu live samples from the start to the stop, %zu of them in the capture", live.size(), m_live.size());
         QVERIFY(m_live.size() > 100); // 2 s at 220 frames/s, fewer when the machine starves the simulator
     }
 
