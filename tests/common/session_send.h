@@ -1,6 +1,8 @@
 #pragma once
 // Sends an ASCII command through a DeviceSession and waits (turning the event loop) for
-// its commandFinished; a reply still Pending means none came within timeoutMs + 3 s.
+// its commandFinished; a reply still Pending means none came within timeoutMs + 10 s. The
+// session ends every command by itself (its timeout is timeoutMs), so the bound only stops a
+// test that would otherwise hang; it is generous for a host starved by other work.
 #include "device/device_session.h"
 
 #include <QSignalSpy>
@@ -23,7 +25,7 @@ inline protocol::hipnuc::AsciiReply sendAndWait(device::DeviceSession &s, const 
                 }
             return false;
         },
-        timeoutMs + 3000);
+        timeoutMs + 10000);
     return r;
 }
 

@@ -6,7 +6,10 @@
 // still use sim::PtySimulator.
 //
 // The transport, and with it the simulated module, lives in the session's engine thread:
-// withDevice() runs a function there and waits for it, as PtySimulator::withDevice does.
+// withDevice() runs a function there and waits for it, as PtySimulator::withDevice does. The
+// HiPNUC-serial form of inproc_link.h's InProcSession, with the module's state at hand.
+#include "inproc_link.h"
+
 #include "device/device_session.h"
 #include "sim/hipnuc_serial_device.h"
 #include "sim/simulated_transport.h"
@@ -38,10 +41,7 @@ public:
     // Runs fn on the simulated module in the engine's thread and waits for it.
     void withDevice(const std::function<void(sim::HipnucSimulator &)> &fn)
     {
-        sim::SimulatedTransport *link = m_link;
-        QMetaObject::invokeMethod(
-            link, [link, &fn] { fn(static_cast<sim::HipnucSerialDevice &>(link->device()).simulator()); },
-            Qt::BlockingQueuedConnection);
+        withLinkDevice<sim::HipnucSerialDevice>(m_link, [&fn](sim::HipnucSerialDevice &d) { fn(d.simulator()); });
     }
     sim::HipnucSimulator::State deviceState()
     {
