@@ -6,6 +6,7 @@
 #include "protocol/hipnuc/frame_decoder.h"
 #include "protocol/hipnuc/payloads.h"
 
+#include <QCoreApplication>
 #include <QElapsedTimer>
 #include <QObject>
 #include <QString>
@@ -13,6 +14,7 @@
 #include <QTimer>
 
 #include <fcntl.h>
+#include <poll.h>
 #include <termios.h>
 #include <unistd.h>
 
@@ -54,16 +56,20 @@ public:
     }
     bool ok() const { return m_master >= 0 && !m_slave.isEmpty(); }
     QString slave() const { return m_slave; }
-    // Writes all of `bytes`, waiting while the pty's buffer is full (keeps the event loop turning).
+    // Writes all of `bytes`, waiting while the pty's buffer is full until it has room again
+    // (poll for POLLOUT, at most 10 ms at a time, keeping the event loop turning).
     void write(const std::vector<uint8_t> &bytes)
     {
         size_t done = 0;
         while (m_master >= 0 && done < bytes.size()) {
             const ssize_t n = ::write(m_master, bytes.data() + done, bytes.size() - done);
-            if (n > 0)
+            if (n > 0) {
                 done += size_t(n);
-            else
-                QTest::qWait(1);
+                continue;
+            }
+            pollfd p{m_master, POLLOUT, 0};
+            ::poll(&p, 1, 10);
+            QCoreApplication::processEvents();
         }
     }
     // Reads and forgets what the session sent (its LOG VERSION queries).
@@ -121,13 +127,12 @@ inline bool openOnPty(device::DeviceSession &session, RawPty &pty)
 {
     session.setAutoReconnect(false);
     session.open(pty.slave(), 921600);
-    QElapsedTimer t;
-    t.start();
-    while (session.state() != device::SessionState::Connected && t.elapsed() < 15000) {
-        pty.drain();
-        QTest::qWait(10);
-    }
-    return session.state() == device::SessionState::Connected;
+    return QTest::qWaitFor(
+        [&] {
+            pty.drain();
+            return session.state() == device::SessionState::Connected;
+        },
+        15000);
 }
 
 } // namespace imudesk::test

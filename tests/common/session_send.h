@@ -1,6 +1,8 @@
 #pragma once
 // Sends an ASCII command through a DeviceSession and waits (turning the event loop) for
-// its commandFinished; a reply still Pending means none came within timeoutMs + 3 s.
+// its commandFinished; a reply still Pending means none came within timeoutMs + 10 s. The
+// session ends every command by itself (its timeout is timeoutMs), so the bound only stops a
+// test that would otherwise hang; it is generous for a host starved by other work.
 #include "device/device_session.h"
 
 #include <QSignalSpy>
@@ -12,14 +14,18 @@ inline protocol::hipnuc::AsciiReply sendAndWait(device::DeviceSession &s, const 
 {
     QSignalSpy spy(&s, &device::DeviceSession::commandFinished);
     const quint64 id = s.sendCommand(cmd, timeoutMs);
-    for (int waited = 0; waited < timeoutMs + 3000; waited += 10) {
-        for (const auto &args : spy)
-            if (args.at(0).toULongLong() == id)
-                return args.at(1).value<protocol::hipnuc::AsciiReply>();
-        QTest::qWait(10);
-    }
     protocol::hipnuc::AsciiReply r;
     r.status = protocol::hipnuc::AsciiReply::Status::Pending;
+    (void)QTest::qWaitFor(
+        [&] {
+            for (const auto &args : spy)
+                if (args.at(0).toULongLong() == id) {
+                    r = args.at(1).value<protocol::hipnuc::AsciiReply>();
+                    return true;
+                }
+            return false;
+        },
+        timeoutMs + 10000);
     return r;
 }
 

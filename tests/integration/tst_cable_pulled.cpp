@@ -37,6 +37,16 @@ std::vector<uint8_t> framesThenPart(uint32_t n, size_t partial)
     return out;
 }
 
+// Bytes the session has received so far (its raw-byte log, device to host).
+size_t bytesReceived(DeviceSession &session)
+{
+    size_t n = 0;
+    for (const auto &c : session.rawLog().since(0))
+        if (c.direction == device::RawByteLog::Direction::Rx)
+            n += size_t(c.bytes.size());
+    return n;
+}
+
 void checkStalls(const StallWatch &stalls, const char *what)
 {
     qInfo("%s: worst stall of the owner thread %lld ms", what, stalls.worstMs());
@@ -74,7 +84,7 @@ private Q_SLOTS:
         QVERIFY(!errors.isEmpty());
         QVERIFY2(errors.last().at(0).toString().contains(QLatin1String("lost"), Qt::CaseInsensitive),
                  qPrintable(errors.last().at(0).toString()));
-        QTest::qWait(200);
+        QTest::qWait(200); // duration under test: nothing more turns up after the hang-up
         QCOMPARE(session.store().totalAppended(), uint64_t(300));
         QCOMPARE(session.store().latest()->deviceTimeMs, 1000.0 + 299);
         checkStalls(stalls, "mid-frame");
@@ -86,7 +96,8 @@ private Q_SLOTS:
         QVERIFY(pty.ok());
         DeviceSession session;
         QVERIFY(test::openOnPty(session, pty));
-        pty.write(framesThenPart(50, 0));
+        const auto frames = framesThenPart(50, 0);
+        pty.write(frames);
         QTRY_COMPARE_WITH_TIMEOUT(session.store().totalAppended(), uint64_t(50), 5000);
         StallWatch stalls;
         QSignalSpy finished(&session, &DeviceSession::commandFinished);
@@ -96,7 +107,7 @@ private Q_SLOTS:
         QTRY_VERIFY_WITH_TIMEOUT((sent += pty.readAvailable()).find("LOG VERSION") != std::string::npos, 3000);
         const std::string half = "LOG VERSION\r\nMODEL=HI14R3\r\nVERS";
         pty.write(std::vector<uint8_t>(half.begin(), half.end()));
-        QTest::qWait(50);
+        QTRY_COMPARE_WITH_TIMEOUT(bytesReceived(session), frames.size() + half.size(), 3000); // the half reply is in
         QElapsedTimer clock;
         clock.start();
         pty.pull();
@@ -141,14 +152,14 @@ private Q_SLOTS:
             }
             pty.write(b);
             all.insert(all.end(), b.begin(), b.end());
-            QTest::qWait(5);
+            QTest::qWait(5); // duration under test: a 5 ms gap between bursts (separate reads and chunks)
         }
         const auto cut = hi91Frame(3000);
         const std::vector<uint8_t> part(cut.begin(), cut.begin() + 30);
         pty.write(part);
         all.insert(all.end(), part.begin(), part.end());
         QTRY_COMPARE_WITH_TIMEOUT(session.store().totalAppended(), uint64_t(2000), 5000);
-        QTest::qWait(100); // the cut frame's bytes reach the session too
+        QTRY_COMPARE_WITH_TIMEOUT(bytesReceived(session), all.size(), 5000); // the cut frame's bytes too
         pty.pull();
         QTRY_COMPARE_WITH_TIMEOUT(session.state(), SessionState::Disconnected, 5000);
         session.stopRecording();

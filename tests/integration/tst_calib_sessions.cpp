@@ -1,13 +1,13 @@
-// The calibration drivers over a real DeviceSession against the simulated module on a
-// pseudo-terminal: the gyro scale calibration (CONFIG USRCAL START/STOP, manual v1.7.1
+// The calibration drivers over a real DeviceSession against the simulated module in this
+// process (sim::SimulatedTransport, tests/common/sim_session.h): the gyro scale calibration (CONFIG USRCAL START/STOP, manual v1.7.1
 // 4.6.7.11) while the simulated turntable turns two turns, with our own estimate from the
 // streamed samples beside the device's OK; the magnetometer calibration (CONFIG MCAL
 // START, LOG MCAL STAT) starting and reporting progress; refusals and silence.
+#include "../common/sim_session.h"
 #include "calib/gyro_cal_session.h"
 #include "calib/gyro_scale_run.h"
 #include "calib/mag_cal_session.h"
 #include "device/device_session.h"
-#include "sim/pty_simulator.h"
 
 #include <QSignalSpy>
 #include <QTest>
@@ -32,13 +32,8 @@ sim::SimOptions options(sim::Motion motion, const char *firmware = "1.7.1", cons
 
 bool waitConnected(DeviceSession &s, int timeoutMs = 15000)
 {
-    QElapsedTimer t;
-    t.start();
-    while (s.state() != SessionState::Connected && t.elapsed() < timeoutMs) {
-        if (s.state() == SessionState::Failed)
-            return false;
-        QTest::qWait(10);
-    }
+    (void)QTest::qWaitFor(
+        [&s] { return s.state() == SessionState::Connected || s.state() == SessionState::Failed; }, timeoutMs);
     return s.state() == SessionState::Connected;
 }
 
@@ -60,11 +55,9 @@ private Q_SLOTS:
 
     void gyroScaleOnTurntable()
     {
-        sim::PtySimulator simulator(options(sim::Motion::Turntable));
-        QString error;
-        QVERIFY2(simulator.start(&error), qPrintable(error));
-        DeviceSession session;
-        session.open(simulator.devicePath(), 115200);
+        test::SimSession sim(options(sim::Motion::Turntable));
+        DeviceSession &session = sim.session;
+        sim.open(115200);
         QVERIFY(waitConnected(session));
         QTRY_VERIFY(session.store().totalAppended() > 10);
         QVERIFY2(deviceTimeS(session) < sim::MotionModel::kTurntableStillS, "connected before the turntable starts");
@@ -84,13 +77,13 @@ private Q_SLOTS:
         run.start();
         uint64_t seq = 0;
         const double legEnd = sim::MotionModel::kTurntableStillS + sim::MotionModel::turntableLegS();
-        QElapsedTimer wall;
-        wall.start();
-        while (run.state() != calib::GyroScaleRun::State::Finished && wall.elapsed() < 40000) {
-            QTest::qWait(50);
-            for (const auto &s : session.store().since(seq, SIZE_MAX, &seq))
-                run.addSample(s.deviceTimeMs, {s.gyr.x, s.gyr.y, s.gyr.z}, {s.acc.x, s.acc.y, s.acc.z});
-        }
+        (void)QTest::qWaitFor(
+            [&] {
+                for (const auto &s : session.store().since(seq, SIZE_MAX, &seq))
+                    run.addSample(s.deviceTimeMs, {s.gyr.x, s.gyr.y, s.gyr.z}, {s.acc.x, s.acc.y, s.acc.z});
+                return run.state() == calib::GyroScaleRun::State::Finished;
+            },
+            40000);
         QCOMPARE(run.state(), calib::GyroScaleRun::State::Finished);
         QVERIFY(deviceTimeS(session) >= legEnd);
         QVERIFY(gyro.stop());
@@ -104,10 +97,9 @@ private Q_SLOTS:
 
     void gyroStopTooEarlyIsRejected()
     {
-        sim::PtySimulator simulator(options(sim::Motion::Turntable));
-        QVERIFY(simulator.start());
-        DeviceSession session;
-        session.open(simulator.devicePath(), 115200);
+        test::SimSession sim(options(sim::Motion::Turntable));
+        DeviceSession &session = sim.session;
+        sim.open(115200);
         QVERIFY(waitConnected(session));
         GyroCalSession gyro(session);
         QSignalSpy finished(&gyro, &GyroCalSession::finished);
@@ -121,10 +113,9 @@ private Q_SLOTS:
 
     void magCalReportsProgress()
     {
-        sim::PtySimulator simulator(options(sim::Motion::Tumble));
-        QVERIFY(simulator.start());
-        DeviceSession session;
-        session.open(simulator.devicePath(), 115200);
+        test::SimSession sim(options(sim::Motion::Tumble));
+        DeviceSession &session = sim.session;
+        sim.open(115200);
         QVERIFY(waitConnected(session));
         calib::MagCalSession mcal(session, calib::MagCalProcedure::Options{200, 180000, 3});
         QSignalSpy progress(&mcal, &calib::MagCalSession::progressChanged);
@@ -151,10 +142,9 @@ private Q_SLOTS:
         QFETCH(QString, model);
         QFETCH(QString, firmware);
         const std::string m = model.toStdString(), fw = firmware.toStdString();
-        sim::PtySimulator simulator(options(sim::Motion::Tumble, fw.c_str(), m.c_str()));
-        QVERIFY(simulator.start());
-        DeviceSession session;
-        session.open(simulator.devicePath(), 115200);
+        test::SimSession sim(options(sim::Motion::Tumble, fw.c_str(), m.c_str()));
+        DeviceSession &session = sim.session;
+        sim.open(115200);
         QVERIFY(waitConnected(session));
         calib::MagCalSession mcal(session);
         QSignalSpy finished(&mcal, &calib::MagCalSession::finished);

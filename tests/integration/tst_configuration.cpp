@@ -1,12 +1,13 @@
-// Configuration flows against the simulator on a pseudo-terminal: every setting of both
+// Configuration flows against the simulated module, in this process (sim::SimulatedTransport,
+// tests/common/sim_session.h; the serial path itself is tst_device_session's): every setting of both
 // manuals round-trips (set, save, reboot, read back); unsaved settings are gone after
 // REBOOT; FRESET restores the defaults; the safe baud change succeeds, and recovers when
 // the module ignores the new rate or switches to another one; ERR and timeouts leave the
 // configuration showing what the device holds.
+#include "../common/sim_session.h"
 #include "device/device_session.h"
 #include "settings/configuration_controller.h"
 #include "settings/setting_catalog.h"
-#include "sim/pty_simulator.h"
 
 #include <QSignalSpy>
 #include <QTest>
@@ -21,12 +22,12 @@ using Change = ConfigurationController::Change;
 namespace {
 
 struct Bench {
-    sim::PtySimulator simulator;
-    device::DeviceSession session;
+    test::SimSession sim;
+    device::DeviceSession &session = sim.session;
     ConfigurationController controller{session};
 
     explicit Bench(const char *firmware = "1.7.1", const char *model = "HI14", int baud = 115200)
-        : simulator(options(firmware, model, baud))
+        : sim(options(firmware, model, baud))
     {
     }
     static sim::SimOptions options(const char *firmware, const char *model, int baud)
@@ -40,14 +41,9 @@ struct Bench {
     }
     bool start(int baud = 115200)
     {
-        QString error;
-        if (!simulator.start(&error)) {
-            qWarning() << error;
-            return false;
-        }
         session.setAutoReconnect(false);
         QSignalSpy identified(&session, &device::DeviceSession::identityQueryFinished);
-        session.open(simulator.devicePath(), baud);
+        sim.open(baud);
         if (!identified.wait(5000))
             return false;
         return read();
@@ -80,12 +76,7 @@ struct Bench {
     {
         return controller.configuration().value(QLatin1String(key)).value_or(QStringLiteral("<none>"));
     }
-    int deviceBaud()
-    {
-        int b = 0;
-        simulator.withDevice([&b](sim::HipnucSimulator &d) { b = d.baud(); });
-        return b;
-    }
+    int deviceBaud() { return sim.deviceBaud(); }
 };
 
 QString describe(const ConfigurationController::ApplyReport &r)
@@ -216,7 +207,7 @@ private Q_SLOTS:
     {
         Bench b;
         QVERIFY(b.start());
-        b.simulator.withDevice([](sim::HipnucSimulator &d) { d.setBaudChangeOverride(-1); });
+        b.sim.withDevice([](sim::HipnucSimulator &d) { d.setBaudChangeOverride(-1); });
         const auto report = b.apply({{QStringLiteral("SERIAL.BAUD"), QStringLiteral("460800")}});
         QVERIFY(!report.ok);
         QVERIFY(report.results.front().outcome != Outcome::Verified);
@@ -230,7 +221,7 @@ private Q_SLOTS:
     {
         Bench b;
         QVERIFY(b.start());
-        b.simulator.withDevice([](sim::HipnucSimulator &d) { d.setBaudChangeOverride(38400); });
+        b.sim.withDevice([](sim::HipnucSimulator &d) { d.setBaudChangeOverride(38400); });
         QSignalSpy detected(&b.session, &device::DeviceSession::baudDetected);
         const auto report = b.apply({{QStringLiteral("SERIAL.BAUD"), QStringLiteral("921600")}});
         QVERIFY(!report.ok);
@@ -246,7 +237,7 @@ private Q_SLOTS:
     {
         Bench b;
         QVERIFY(b.start());
-        b.simulator.withDevice([](sim::HipnucSimulator &d) { d.setRefusedCommand("CONFIG IMU COORD"); });
+        b.sim.withDevice([](sim::HipnucSimulator &d) { d.setRefusedCommand("CONFIG IMU COORD"); });
         QSignalSpy changed(&b.controller, &ConfigurationController::configurationChanged);
         const auto report = b.apply({{QStringLiteral("ATT.MODE"), QStringLiteral("0")},
                                      {QStringLiteral("IMU.COORD"), QStringLiteral("4")},
@@ -258,7 +249,7 @@ private Q_SLOTS:
         QCOMPARE(report.results[2].outcome, Outcome::NotSent);
         QVERIFY(!changed.isEmpty());
         int mode = -1, coord = -1, urfr = -1;
-        b.simulator.withDevice([&](sim::HipnucSimulator &d) {
+        b.sim.withDevice([&](sim::HipnucSimulator &d) {
             mode = d.runningConfig().attMode;
             coord = d.runningConfig().coord;
             urfr = d.runningConfig().urfrCode;
@@ -279,14 +270,14 @@ private Q_SLOTS:
         QSignalSpy bl(&b.session, &device::DeviceSession::commandFinished);
         b.session.sendCommand(QStringLiteral("REBOOT BL"));
         QVERIFY(bl.wait(3000));
-        QTest::qWait(100);
+        QTRY_COMPARE(b.sim.deviceState(), sim::HipnucSimulator::State::Bootloader);
         const auto report = b.apply({{QStringLiteral("ATT.MODE"), QStringLiteral("0")}});
         QVERIFY(!report.ok);
         QCOMPARE(report.results.front().outcome, Outcome::Timeout);
         QVERIFY(!report.error.isEmpty());
         QCOMPARE(b.controller.configuration().values, before);
         int mode = -1;
-        b.simulator.withDevice([&](sim::HipnucSimulator &d) {
+        b.sim.withDevice([&](sim::HipnucSimulator &d) {
             d.powerCycle();
             mode = d.runningConfig().attMode;
         });

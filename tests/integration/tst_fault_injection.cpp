@@ -1,11 +1,14 @@
-// Faults injected on the serial path, end to end through a pseudo-terminal into a
-// DeviceSession: random byte corruption, an overload (a frame every 100 µs for 10 s), a
-// storm of ERR replies, a device that reboots by itself, a baud rate switched under the
-// tool's feet and a reader that stalls. In every case: no crash, every intact frame is
-// decoded, the session stays in a clear state, and the thread that owns the session (the
-// GUI thread in the app) never waits on the link: its event loop keeps turning.
+// Faults injected on the way into a DeviceSession. Through a pseudo-terminal (the real serial
+// path: the test plays the device, or sim::PtySimulator): random byte corruption, an overload
+// (a frame every 100 µs for 10 s), a frame split by a pause and a reader that stalls. With the
+// simulated module in this process (sim::SimulatedTransport): a storm of ERR replies, a device
+// that reboots by itself and a baud rate switched under the tool's feet. In every case: no
+// crash, every intact frame is decoded, the session stays in a clear state, and the thread
+// that owns the session (the GUI thread in the app) never waits on the link: its event loop
+// keeps turning.
 #include "../common/raw_pty.h"
 #include "../common/session_send.h"
+#include "../common/sim_session.h"
 #include "device/device_session.h"
 #include "protocol/hipnuc/frame_decoder.h"
 #include "protocol/hipnuc/payloads.h"
@@ -36,18 +39,24 @@ namespace {
 
 bool waitState(DeviceSession &s, SessionState want, int timeoutMs = 15000)
 {
-    QElapsedTimer t;
-    t.start();
-    while (s.state() != want && t.elapsed() < timeoutMs)
-        QTest::qWait(10);
-    return s.state() == want;
+    return QTest::qWaitFor([&s, want] { return s.state() == want; }, timeoutMs);
 }
 
 struct StatsProbe {
     device::SessionStats last;
+    int updates = 0;
     explicit StatsProbe(DeviceSession &s)
     {
-        QObject::connect(&s, &DeviceSession::statsUpdated, &s, [this](const device::SessionStats &st) { last = st; });
+        QObject::connect(&s, &DeviceSession::statsUpdated, &s, [this](const device::SessionStats &st) {
+            last = st;
+            ++updates;
+        });
+    }
+    // Waits (at most 3 s) for the next stats published from now on.
+    void next()
+    {
+        const int before = updates;
+        (void)QTest::qWaitFor([this, before] { return updates != before; }, 3000);
     }
 };
 
@@ -86,7 +95,7 @@ private Q_SLOTS:
         // damaged ones must not turn into samples.
         std::mt19937 rng(1234);
         std::uniform_int_distribution<int> byte(0, 255), percent(0, 99), burst(1, 8);
-        uint64_t intact = 0;
+        uint64_t intact = 0, written = 0;
         for (uint32_t i = 0; i < 4000; ++i) {
             std::vector<uint8_t> frame = hi91Frame(1000 + i);
             bool damaged = false;
@@ -101,13 +110,15 @@ private Q_SLOTS:
             }
             intact += damaged ? 0 : 1;
             pty.write(frame);
+            written += frame.size();
             if (i % 200 == 0) {
                 pty.drain();
-                QTest::qWait(1);
+                QCoreApplication::processEvents();
             }
         }
         QTRY_VERIFY_WITH_TIMEOUT(stats.last.frames >= intact, 10000);
-        QTest::qWait(300);
+        // Every byte written has been through the decoder: nothing more can come.
+        QTRY_COMPARE_WITH_TIMEOUT(stats.last.bytesIn, written, 5000);
         QVERIFY(intact > 3500 && intact < 3700);
         // A damaged frame passing its CRC by chance is 1 in 65536: none here.
         QCOMPARE(stats.last.frames, intact);
@@ -147,7 +158,7 @@ private Q_SLOTS:
             }
             pty.write(slice);
             pty.drain();
-            QTest::qWait(1);
+            QTest::qWait(1); // duration under test: the writer paces the 10 kHz stream in 1 ms slices
         }
         QTRY_VERIFY_WITH_TIMEOUT(stats.last.frames >= total, 30000);
         QCOMPARE(stats.last.crcErrors, uint64_t(0));
@@ -162,12 +173,11 @@ private Q_SLOTS:
 
     void errStormKeepsStreaming()
     {
-        sim::PtySimulator simulator(simOptions(921600));
-        QVERIFY(simulator.start(nullptr));
-        DeviceSession session;
+        test::SimSession sim(simOptions(921600));
+        DeviceSession &session = sim.session;
         session.setAutoReconnect(false);
         StatsProbe stats(session);
-        session.open(simulator.devicePath(), 921600);
+        sim.open(921600);
         QVERIFY(waitState(session, SessionState::Connected));
         QTRY_VERIFY(session.store().totalAppended() > 50);
         const uint64_t before = session.store().totalAppended();
@@ -189,15 +199,14 @@ private Q_SLOTS:
 
     void deviceRebootsByItself()
     {
-        sim::PtySimulator simulator(simOptions());
-        QVERIFY(simulator.start(nullptr));
-        DeviceSession session;
+        test::SimSession sim(simOptions());
+        DeviceSession &session = sim.session;
         session.setAutoReconnect(false);
         StatsProbe stats(session);
-        session.open(simulator.devicePath(), 115200);
+        sim.open(115200);
         QVERIFY(waitState(session, SessionState::Connected));
         QTRY_VERIFY(session.store().totalAppended() > 100);
-        simulator.withDevice([](sim::HipnucSimulator &d) { d.powerCycle(); });
+        sim.withDevice([](sim::HipnucSimulator &d) { d.powerCycle(); });
         QTRY_VERIFY_WITH_TIMEOUT(stats.last.deviceResets >= 1, 5000);
         const uint64_t after = session.store().totalAppended();
         QTRY_VERIFY(session.store().totalAppended() > after + 50); // streaming again
@@ -208,20 +217,23 @@ private Q_SLOTS:
 
     void baudSwitchedUnderTheToolsFeet()
     {
-        sim::PtySimulator simulator(simOptions());
-        QVERIFY(simulator.start(nullptr));
-        DeviceSession session;
+        test::SimSession sim(simOptions());
+        DeviceSession &session = sim.session;
         session.setAutoReconnect(false);
         StatsProbe stats(session);
         QSignalSpy errors(&session, &DeviceSession::errorOccurred);
-        session.open(simulator.devicePath(), 115200);
+        sim.open(115200);
         QVERIFY(waitState(session, SessionState::Connected));
         QTRY_VERIFY(session.store().totalAppended() > 50);
+        stats.next();
+        const uint64_t damageBefore = stats.last.bytesSkipped + stats.last.crcErrors;
         // Someone else tells the module to run at 460800 (another tool on the same port).
-        simulator.withDevice([](sim::HipnucSimulator &d) { d.receive("SERIALCONFIG 460800\r\n"); });
-        QTest::qWait(800);
+        sim.withDevice([](sim::HipnucSimulator &d) { d.receive("SERIALCONFIG 460800\r\n"); });
+        QCOMPARE(sim.deviceBaud(), 460800);
+        // Garbage arrives now: what the module sent at the old rate is in.
+        QTRY_VERIFY_WITH_TIMEOUT(stats.last.bytesSkipped + stats.last.crcErrors > damageBefore, 5000);
         const uint64_t frozen = session.store().totalAppended();
-        QTest::qWait(800);
+        QTest::qWait(800); // duration under test: 800 ms of garbage and no new sample
         // Garbage only: no new samples, the damage is counted, the session stays open and
         // tells the user what is wrong and what to do.
         QVERIFY(session.store().totalAppended() <= frozen + 1);
@@ -252,15 +264,18 @@ private Q_SLOTS:
         StatsProbe stats(session);
         QVERIFY(test::openOnPty(session, pty));
         pty.drain();
+        uint64_t written = 0;
         for (uint32_t i = 0; i < 20; ++i) {
             const auto f = hi91Frame(5000 + i);
             const size_t cut = 10 + 3 * i;
             pty.write(std::vector<uint8_t>(f.begin(), f.begin() + qsizetype(cut)));
-            QTest::qWait(pauseMs);
+            QTest::qWait(pauseMs); // duration under test: the pause inside the frame
             pty.write(std::vector<uint8_t>(f.begin() + qsizetype(cut), f.end()));
+            written += f.size();
         }
         QTRY_COMPARE_WITH_TIMEOUT(session.store().totalAppended(), uint64_t(20), 5000);
-        QTest::qWait(200);
+        // Every byte written has been through the decoder: nothing more can come.
+        QTRY_COMPARE_WITH_TIMEOUT(stats.last.bytesIn, written, 5000);
         QCOMPARE(session.store().totalAppended(), uint64_t(20));
         QCOMPARE(stats.last.crcErrors, uint64_t(0));
     }
@@ -278,7 +293,8 @@ private Q_SLOTS:
         // The owner's thread stops for 1.5 s (a modal dialog, a slow disk): the worker keeps
         // reading, so nothing is dropped at the pty and every frame is in the store after.
         QThread::msleep(1500);
-        QTest::qWait(500);
+        QCoreApplication::processEvents(); // what was queued during the stall
+        stats.next();                      // and stats made after it
         uint64_t dropped = 0;
         simulator.withDevice([&dropped](sim::HipnucSimulator &d) { dropped = d.droppedFrames(); });
         QCOMPARE(simulator.stats().chunksDropped, uint64_t(0));

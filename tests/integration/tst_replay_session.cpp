@@ -1,12 +1,14 @@
-// Record from the simulator over a real pseudo-terminal, replay the capture through
+// Record from the simulated module (in this process, sim::SimulatedTransport), replay the capture through
 // ReplaySession and compare every decoded value with what the live session decoded from
 // the simulator's bytes; then paced playback, seek, loop, pause, a raw dump of the same bytes,
 // and a missing file.
 #include "../common/capture_bytes.h"
+#include "../common/sim_session.h"
 #include "device/device_session.h"
+#include "protocol/hipnuc/frame_decoder.h"
+#include "protocol/hipnuc/payloads.h"
 #include "record/capture_exporter.h"
 #include "record/replay_session.h"
-#include "sim/pty_simulator.h"
 
 #include <QFile>
 #include <QSignalSpy>
@@ -53,6 +55,41 @@ QString differences(const model::Sample &a, const model::Sample &b)
     return d.join(QLatin1Char(','));
 }
 
+// The live samples of the frames a capture holds. The capture is a stretch of the byte stream
+// the live session decoded; the engine starts and stops recording between two reads, at a
+// moment the test thread cannot see, so `live` (all samples from just before the start to
+// just after the stop) may have a few more at either end. The capture's first and last HI91
+// frames (device clock) place it in `live`; one sample per frame here. Empty if they are not
+// found in `live`.
+std::vector<model::Sample> recordedStretch(const std::vector<model::Sample> &live, const QByteArray &captured)
+{
+    protocol::hipnuc::FrameDecoder decoder;
+    const auto frames = decoder.feed(reinterpret_cast<const uint8_t *>(captured.constData()), size_t(captured.size()));
+    std::vector<std::pair<size_t, double>> hi91; // frame index, device time (ms)
+    for (size_t i = 0; i < frames.size(); ++i) {
+        protocol::hipnuc::Hi91 h;
+        if (protocol::hipnuc::decodeHi91(frames[i].data(), frames[i].size(), h))
+            hi91.emplace_back(i, double(h.systemTime));
+    }
+    if (hi91.empty())
+        return {};
+    const auto find = [&live](double timeMs, size_t from) {
+        for (size_t j = from; j < live.size(); ++j)
+            if (live[j].source == "HI91" && live[j].deviceTimeMs == timeMs)
+                return j;
+        return live.size();
+    };
+    const size_t first = find(hi91.front().second, 0);
+    if (first == live.size() || first < hi91.front().first)
+        return {};
+    const size_t last = find(hi91.back().second, first);
+    const size_t begin = first - hi91.front().first;
+    const size_t end = last + (frames.size() - hi91.back().first); // one past the capture's last frame
+    if (last == live.size() || end > live.size())
+        return {};
+    return std::vector<model::Sample>(live.begin() + qsizetype(begin), live.begin() + qsizetype(end));
+}
+
 } // namespace
 
 class TstReplaySession : public QObject {
@@ -81,20 +118,25 @@ private Q_SLOTS:
         o.baud = 921600;
         o.motion = sim::Motion::Tumble;
         o.seed = 5;
-        sim::PtySimulator simulator(o);
-        QString error;
-        QVERIFY2(simulator.start(&error), qPrintable(error));
-        DeviceSession session;
-        session.open(simulator.devicePath(), 921600);
-        QTRY_COMPARE_WITH_TIMEOUT(session.state(), SessionState::Connected, 10000);
+        test::SimSession sim(o);
+        DeviceSession &session = sim.session;
         QSignalSpy identity(&session, &DeviceSession::identityChanged);
-        QVERIFY(identity.wait(5000));
+        sim.open(921600);
+        QTRY_COMPARE_WITH_TIMEOUT(session.state(), SessionState::Connected, 10000);
+        QVERIFY(!identity.isEmpty() || identity.wait(5000));
         // HI91 at 200 Hz and HI81 at 20 Hz share the line.
         QSignalSpy done(&session, &DeviceSession::commandFinished);
         session.sendCommand(QStringLiteral("LOG HI91 ONTIME 0.005"));
         session.sendCommand(QStringLiteral("LOG HI81 ONTIME 0.05"));
         QTRY_COMPARE_WITH_TIMEOUT(done.size(), 2, 5000);
-        QTest::qWait(200);
+        const uint64_t configured = session.store().totalAppended();
+        const auto hi81Arrived = [&session, configured] {
+            for (const auto &sample : session.store().since(configured))
+                if (sample.source == "HI81")
+                    return true;
+            return false;
+        };
+        QTRY_VERIFY_WITH_TIMEOUT(hi81Arrived(), 5000); // both streams run
 
         m_capture = m_dir.filePath(QStringLiteral("sim.imucap"));
         QSignalSpy started(&session, &DeviceSession::recordingStarted);
@@ -103,15 +145,16 @@ private Q_SLOTS:
         const uint64_t before = session.store().totalAppended();
         session.startRecording(m_capture);
         QVERIFY(started.wait(5000));
-        QTest::qWait(2000);
+        QTest::qWait(2000); // duration under test: two seconds recorded (the replay's duration is checked)
         session.stopRecording();
         QVERIFY(stopped.wait(5000));
         QCOMPARE(stopped.at(0).at(0).toString(), QString()); // stopped as asked
         QVERIFY(!progress.isEmpty());
         m_recordedFrames = progress.last().at(1).toULongLong(); // frames decoded from the recorded bytes
-        m_live = session.store().since(before);
+        const auto live = session.store().since(before);
         session.close();
-        simulator.stop();
+        m_live = recordedStretch(live, test::receivedBytes(m_capture));
+        qInfo("%zu live samples from the start to the stop, %zu of them in the capture", live.size(), m_live.size());
         QVERIFY(m_live.size() > 100); // 2 s at 220 frames/s, fewer when the machine starves the simulator
     }
 
@@ -217,7 +260,7 @@ private Q_SLOTS:
         replay.pause();
         QTRY_VERIFY(!playing.isEmpty() && !playing.last().at(0).toBool());
         const uint64_t paused = replay.store().totalAppended();
-        QTest::qWait(100);
+        QTest::qWait(100); // duration under test: nothing is replayed for 100 ms while paused
         QCOMPARE(replay.store().totalAppended(), paused);
     }
 
