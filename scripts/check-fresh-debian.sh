@@ -218,7 +218,7 @@ if [ "${1:-}" = --inside ]; then
   fi
   pass
 
-  begin "toolchains of the test command: g++ with ASan+UBSan, clang++ with libFuzzer"
+  begin "toolchains of the test command: g++ with ASan+UBSan and with TSan, clang++ with libFuzzer"
   cat > "$rootfs/tmp/probe.cpp" <<'EOF'
 #include <cstddef>
 #include <cstdint>
@@ -232,6 +232,9 @@ EOF
   inroot g++ -std=c++20 -fsanitize=address,undefined /tmp/probe.cpp -o /tmp/probe-asan > "$work/tools.log" 2>&1 \
     && inroot /tmp/probe-asan >> "$work/tools.log" 2>&1 \
     || failstep "g++ -fsanitize=address,undefined does not build or run (libasan, libubsan)" "$work/tools.log"
+  inroot g++ -std=c++20 -fsanitize=thread /tmp/probe.cpp -o /tmp/probe-tsan >> "$work/tools.log" 2>&1 \
+    && inroot /tmp/probe-tsan >> "$work/tools.log" 2>&1 \
+    || failstep "g++ -fsanitize=thread does not build or run (libtsan2, with gcc)" "$work/tools.log"
   inroot clang++ -DFUZZ -fsanitize=fuzzer,address,undefined /tmp/probe.cpp -o /tmp/probe-fuzz >> "$work/tools.log" 2>&1 \
     && inroot /tmp/probe-fuzz -runs=50 >> "$work/tools.log" 2>&1 \
     || failstep "clang++ -fsanitize=fuzzer does not build or run (clang, libclang-rt-14-dev)" "$work/tools.log"

@@ -1,6 +1,7 @@
 #include "session.h"
 
 #include "device/session_engine.h"
+#include "device/thread_sync.h"
 #include "io/serial_transport.h"
 
 namespace imudesk::device {
@@ -29,8 +30,10 @@ Session::Session(std::unique_ptr<FamilyPlugin> family, std::unique_ptr<io::Trans
     connect(m_engine, &SessionEngine::recordingStarted, this, &Session::recordingStarted);
     connect(m_engine, &SessionEngine::recordingStopped, this, &Session::recordingStopped);
     connect(m_engine, &SessionEngine::recordingProgress, this, &Session::recordingProgress);
-    if (!m_sharedThread)
+    if (!m_sharedThread) {
+        announceJoin(m_thread);
         m_thread.start();
+    }
 }
 
 Session::~Session()
@@ -46,51 +49,45 @@ Session::~Session()
         if (m_sharedThread == QThread::currentThread() || !m_sharedThread->isRunning())
             finish();
         else
-            QMetaObject::invokeMethod(e, finish, Qt::BlockingQueuedConnection);
+            callAndWait(e, finish);
         return;
     }
-    QMetaObject::invokeMethod(m_engine, &SessionEngine::close, Qt::BlockingQueuedConnection);
-    m_thread.quit();
-    m_thread.wait();
+    callAndWait(m_engine, [e = m_engine] { e->close(); });
+    joinThread(m_thread);
 }
 
 void Session::openLink(const QString &address, int baud)
 {
-    QMetaObject::invokeMethod(m_engine, [e = m_engine, address, baud] { e->open(address, baud); },
-                              Qt::QueuedConnection);
+    postTo(m_engine, [e = m_engine, address, baud] { e->open(address, baud); });
 }
 
 void Session::close()
 {
-    QMetaObject::invokeMethod(m_engine, &SessionEngine::close, Qt::QueuedConnection);
+    postTo(m_engine, [e = m_engine] { e->close(); });
 }
 
 void Session::setAutoReconnect(bool on)
 {
     m_autoReconnect = on;
-    QMetaObject::invokeMethod(m_engine, [e = m_engine, on] { e->setAutoReconnect(on); }, Qt::QueuedConnection);
+    postTo(m_engine, [e = m_engine, on] { e->setAutoReconnect(on); });
 }
 
 void Session::startRecording(const QString &path, const record::CaptureHeader &header,
                              const record::CaptureWriter::Options &options)
 {
-    QMetaObject::invokeMethod(
-        m_engine, [e = m_engine, path, header, options] { e->startRecording(path, header, options); },
-        Qt::QueuedConnection);
+    postTo(m_engine, [e = m_engine, path, header, options] { e->startRecording(path, header, options); });
 }
 
 void Session::stopRecording()
 {
-    QMetaObject::invokeMethod(m_engine, &SessionEngine::stopRecording, Qt::QueuedConnection);
+    postTo(m_engine, [e = m_engine] { e->stopRecording(); });
 }
 
 quint64 Session::submit(Request request)
 {
     const quint64 id = m_nextId++;
     request.id = id;
-    QMetaObject::invokeMethod(
-        m_engine, [e = m_engine, r = std::move(request)]() mutable { e->submit(std::move(r)); },
-        Qt::QueuedConnection);
+    postTo(m_engine, [e = m_engine, r = std::move(request)]() mutable { e->submit(std::move(r)); });
     return id;
 }
 

@@ -1,5 +1,7 @@
 #include "update_runner.h"
 
+#include "device/thread_sync.h"
+
 #include <QThread>
 
 #include <atomic>
@@ -36,6 +38,7 @@ UpdateRunner::~UpdateRunner()
     if (m_thread) {
         cancel();
         m_thread->wait();
+        device::takeOver(m_thread);
         delete m_thread;
         m_thread = nullptr;
     }
@@ -56,6 +59,7 @@ bool UpdateRunner::launch(const QString &threadName, Job job)
     });
     m_thread->setObjectName(threadName);
     connect(m_thread, &QThread::finished, this, &UpdateRunner::onWorkerDone);
+    device::announceJoin(*m_thread);
     m_thread->start();
     return true;
 }
@@ -71,6 +75,7 @@ void UpdateRunner::onWorkerDone()
     if (!m_thread)
         return;
     m_thread->wait();
+    device::takeOver(m_thread); // the outcome below was written by the thread
     delete m_thread;
     m_thread = nullptr;
     m_shared.reset();

@@ -1,5 +1,6 @@
 #include "replay_session.h"
 
+#include "device/thread_sync.h"
 #include "record/replay_worker.h"
 
 #include <algorithm>
@@ -23,50 +24,50 @@ ReplaySession::ReplaySession(QObject *parent) : DeviceLink(parent)
     connect(m_worker, &ReplayWorker::statsUpdated, this, &ReplaySession::statsUpdated);
     connect(m_worker, &ReplayWorker::nmeaReceived, this, &ReplaySession::nmeaReceived);
     connect(m_worker, &ReplayWorker::errorOccurred, this, &ReplaySession::errorOccurred);
+    device::announceJoin(m_thread);
     m_thread.start();
 }
 
 ReplaySession::~ReplaySession()
 {
-    QMetaObject::invokeMethod(m_worker, &ReplayWorker::close, Qt::BlockingQueuedConnection);
-    m_thread.quit();
-    m_thread.wait();
+    device::callAndWait(m_worker, [w = m_worker] { w->close(); });
+    device::joinThread(m_thread);
 }
 
 void ReplaySession::open(const QString &path)
 {
-    QMetaObject::invokeMethod(m_worker, [w = m_worker, path] { w->open(path); }, Qt::QueuedConnection);
+    device::postTo(m_worker, [w = m_worker, path] { w->open(path); });
 }
 
 void ReplaySession::close()
 {
-    QMetaObject::invokeMethod(m_worker, &ReplayWorker::close, Qt::QueuedConnection);
+    device::postTo(m_worker, [w = m_worker] { w->close(); });
 }
 
 void ReplaySession::play()
 {
-    QMetaObject::invokeMethod(m_worker, &ReplayWorker::play, Qt::QueuedConnection);
+    device::postTo(m_worker, [w = m_worker] { w->play(); });
 }
 
 void ReplaySession::pause()
 {
-    QMetaObject::invokeMethod(m_worker, &ReplayWorker::pause, Qt::QueuedConnection);
+    device::postTo(m_worker, [w = m_worker] { w->pause(); });
 }
 
 void ReplaySession::setSpeed(double factor)
 {
     const double f = factor <= 0 ? kAsFastAsPossible : std::clamp(factor, kMinSpeed, kMaxSpeed);
-    QMetaObject::invokeMethod(m_worker, [w = m_worker, f] { w->setSpeed(f); }, Qt::QueuedConnection);
+    device::postTo(m_worker, [w = m_worker, f] { w->setSpeed(f); });
 }
 
 void ReplaySession::seek(double seconds)
 {
-    QMetaObject::invokeMethod(m_worker, [w = m_worker, seconds] { w->seek(seconds); }, Qt::QueuedConnection);
+    device::postTo(m_worker, [w = m_worker, seconds] { w->seek(seconds); });
 }
 
 void ReplaySession::setLoop(bool on)
 {
-    QMetaObject::invokeMethod(m_worker, [w = m_worker, on] { w->setLoop(on); }, Qt::QueuedConnection);
+    device::postTo(m_worker, [w = m_worker, on] { w->setLoop(on); });
 }
 
 } // namespace imudesk::record

@@ -1,5 +1,6 @@
 #include "modbus_simulator.h"
 
+#include "device/thread_sync.h"
 #include "sim/modbus_rtu_server.h"
 
 #include <QLoggingCategory>
@@ -28,19 +29,17 @@ bool ModbusSimulator::start(QString *error)
     m_thread->setObjectName(QStringLiteral("modbus-simulator"));
     m_server = new ModbusRtuServer(m_options);
     m_server->moveToThread(m_thread);
+    device::announceJoin(*m_thread);
     m_thread->start();
     bool ok = false;
     QString why;
     ModbusRtuServer *server = m_server;
     const QString path = m_bridge.serverPath();
-    QMetaObject::invokeMethod(
-        m_server,
-        [server, path, &ok, &why] {
+    device::callAndWait(m_server, [server, path, &ok, &why] {
             ok = server->listen(path);
             if (!ok)
                 why = server->errorString();
-        },
-        Qt::BlockingQueuedConnection);
+        });
     if (!ok) {
         if (error)
             *error = tr("The simulated Modbus device could not open %1: %2").arg(path, why);
@@ -55,16 +54,14 @@ void ModbusSimulator::stop()
 {
     if (m_thread) {
         ModbusRtuServer *server = m_server;
-        QMetaObject::invokeMethod(
-            m_server,
-            [server] {
+        device::callAndWait(m_server, [server] {
                 server->disconnectDevice();
                 delete server;
-            },
-            Qt::BlockingQueuedConnection);
+            });
         m_server = nullptr;
         m_thread->quit();
         m_thread->wait();
+        device::takeOver(m_thread);
         delete m_thread;
         m_thread = nullptr;
     }
@@ -76,7 +73,7 @@ void ModbusSimulator::withDevice(const std::function<void(ModbusDeviceModel &)> 
     if (!m_thread)
         return;
     ModbusRtuServer *server = m_server;
-    QMetaObject::invokeMethod(m_server, [server, &fn] { fn(server->model()); }, Qt::BlockingQueuedConnection);
+    device::callAndWait(m_server, [server, &fn] { fn(server->model()); });
 }
 
 int ModbusSimulator::nodeId()
@@ -84,7 +81,7 @@ int ModbusSimulator::nodeId()
     int id = 0;
     if (m_thread) {
         ModbusRtuServer *server = m_server;
-        QMetaObject::invokeMethod(m_server, [server, &id] { id = server->serverAddress(); }, Qt::BlockingQueuedConnection);
+        device::callAndWait(m_server, [server, &id] { id = server->serverAddress(); });
     }
     return id;
 }
@@ -94,9 +91,7 @@ int ModbusSimulator::baud()
     int b = 0;
     if (m_thread) {
         ModbusRtuServer *server = m_server;
-        QMetaObject::invokeMethod(
-            m_server, [server, &b] { b = server->connectionParameter(QModbusDevice::SerialBaudRateParameter).toInt(); },
-            Qt::BlockingQueuedConnection);
+        device::callAndWait(m_server, [server, &b] { b = server->connectionParameter(QModbusDevice::SerialBaudRateParameter).toInt(); });
     }
     return b;
 }

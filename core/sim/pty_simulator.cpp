@@ -1,5 +1,6 @@
 #include "pty_simulator.h"
 
+#include "device/thread_sync.h"
 #include "io/reading_priority.h"
 #include "sim/hipnuc_serial_device.h"
 
@@ -331,13 +332,12 @@ bool PtySimulator::start(QString *error)
     m_thread->setObjectName(QStringLiteral("pty-simulator"));
     m_context = new QObject;
     m_context->moveToThread(m_thread);
+    device::announceJoin(*m_thread);
     m_thread->start();
 
     Engine *e = m_engine.get();
     QObject *ctx = m_context;
-    QMetaObject::invokeMethod(
-        m_context,
-        [e, ctx] {
+    device::callAndWait(m_context, [e, ctx] {
             // The simulated module stands in for a device with a CPU of its own: its thread gets
             // the reading threads' priority (as far as the OS allows), so that a busy host delays
             // the session's reading, which is under test, rather than the device's sending.
@@ -351,8 +351,7 @@ bool PtySimulator::start(QString *error)
             e->timer->setInterval(kTickMs);
             QObject::connect(e->timer, &QTimer::timeout, ctx, [e] { e->service(); });
             e->timer->start();
-        },
-        Qt::BlockingQueuedConnection);
+        });
     const std::string faults = m_customDevice ? std::string() : simFaultsText(m_options.faults);
     if (faults.empty())
         qCInfo(lcPty) << "simulated" << QString::fromStdString(m_engine->sim.productName()) << "on" << m_path;
@@ -367,17 +366,15 @@ void PtySimulator::stop()
     if (!m_thread)
         return;
     Engine *e = m_engine.get();
-    QMetaObject::invokeMethod(
-        m_context,
-        [e] {
+    device::callAndWait(m_context, [e] {
             delete e->timer;
             e->timer = nullptr;
             delete e->notifier;
             e->notifier = nullptr;
-        },
-        Qt::BlockingQueuedConnection);
+        });
     m_thread->quit();
     m_thread->wait();
+    device::takeOver(m_thread);
     delete m_context;
     m_context = nullptr;
     delete m_thread;
@@ -405,13 +402,10 @@ void PtySimulator::withSerialDevice(const std::function<void(SimulatedSerialDevi
         fn(e->sim);
         return;
     }
-    QMetaObject::invokeMethod(
-        m_context,
-        [e, &fn] {
+    device::callAndWait(m_context, [e, &fn] {
             e->sim.advanceTo(e->nowUs());
             fn(e->sim);
-        },
-        Qt::BlockingQueuedConnection);
+        });
 }
 
 PtySimulator::Stats PtySimulator::stats() const
