@@ -10,6 +10,7 @@
 #include <QScrollArea>
 #include <QStringList>
 #include <QTabBar>
+#include <QTest>
 #include <QTextDocumentFragment>
 #include <QWidget>
 
@@ -104,6 +105,29 @@ inline QStringList cutOrOutside(QWidget &top, const Options &o = {})
                             .arg(label->contentsRect().height());
     }
     return problems;
+}
+
+// Waits, at most timeoutMs, until the layouts have caught up: every widget of `top` keeps its
+// place and visibility over three looks in a row, ~10 ms apart.
+inline bool layoutSettled(const QWidget &top, int timeoutMs = 5000)
+{
+    const auto places = [&top] {
+        QList<QRect> out;
+        for (const QWidget *child : top.findChildren<QWidget *>())
+            out << (child->isVisible() ? QRect(child->mapTo(&top, QPoint(0, 0)), child->size()) : QRect());
+        return out;
+    };
+    QList<QRect> last;
+    int same = 0;
+    return QTest::qWaitFor(
+        [&] {
+            QCoreApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);
+            QList<QRect> now = places();
+            same = now == last ? same + 1 : 0;
+            last = std::move(now);
+            return same >= 3;
+        },
+        timeoutMs);
 }
 
 } // namespace imudesk::test::layout

@@ -64,6 +64,7 @@ using namespace imudesk;
 using ui::DeviceWorkspace;
 using ui::MainWindow;
 using test::layout::cutOrOutside;
+using test::layout::layoutSettled;
 using test::layout::parkedByQt;
 
 namespace {
@@ -177,28 +178,6 @@ void showAt(MainWindow &w, const QSize &size)
     }
 }
 
-// Waits, at most timeoutMs, until the layouts have caught up: every widget of `top` keeps its
-// place and visibility over three looks in a row, ~10 ms apart.
-bool layoutSettled(const QWidget &top, int timeoutMs = 5000)
-{
-    const auto places = [&top] {
-        QList<QRect> out;
-        for (const QWidget *child : top.findChildren<QWidget *>())
-            out << (child->isVisible() ? QRect(child->mapTo(&top, QPoint(0, 0)), child->size()) : QRect());
-        return out;
-    };
-    QList<QRect> last;
-    int same = 0;
-    return QTest::qWaitFor(
-        [&] {
-            QCoreApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);
-            QList<QRect> now = places();
-            same = now == last ? same + 1 : 0;
-            last = std::move(now);
-            return same >= 3;
-        },
-        timeoutMs);
-}
 
 } // namespace
 

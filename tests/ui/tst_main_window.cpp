@@ -1,5 +1,6 @@
 // MainWindow offscreen against a simulated HI14 on a pseudo-terminal: live values,
 // identity and rates in the status bar, the console, screenshots, run-time language.
+#include "../common/layout_checks.h"
 #include "recording/export_dialog.h"
 #include "recording/recording_controls.h"
 #include "workspace/connection_bar.h"
@@ -80,28 +81,6 @@ int distinctColours(const QImage &image)
     return int(colours.size());
 }
 
-// Waits, at most timeoutMs, until the layouts have caught up: every widget of `top` keeps its
-// place and visibility over three looks in a row, ~10 ms apart.
-bool layoutSettled(const QWidget &top, int timeoutMs = 5000)
-{
-    const auto places = [&top] {
-        QList<QRect> out;
-        for (const QWidget *child : top.findChildren<QWidget *>())
-            out << (child->isVisible() ? QRect(child->mapTo(&top, QPoint(0, 0)), child->size()) : QRect());
-        return out;
-    };
-    QList<QRect> last;
-    int same = 0;
-    return QTest::qWaitFor(
-        [&] {
-            QCoreApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);
-            QList<QRect> now = places();
-            same = now == last ? same + 1 : 0;
-            last = std::move(now);
-            return same >= 3;
-        },
-        timeoutMs);
-}
 
 QString screenshotPath(const QString &name)
 {
@@ -211,7 +190,7 @@ private Q_SLOTS:
         QCOMPARE(cell(w, LatestValuesModel::Roll, LatestValuesModel::QuantityColumn), QStringLiteral("横滚角"));
         QVERIFY(w.valuesView()->horizontalHeader()->model()->headerData(1, Qt::Horizontal).toString()
                 != QLatin1String("Value"));
-        QVERIFY(layoutSettled(w)); // the longer texts laid out before the screenshot
+        QVERIFY(imudesk::test::layout::layoutSettled(w)); // the longer texts laid out before the screenshot
         QVERIFY(w.grab().toImage().save(screenshotPath(QStringLiteral("main_window_zh_CN.png"))));
 
         QVERIFY(language.setLanguage(QStringLiteral("zh_TW"), QStringLiteral(IMUDESK_QM_DIR), &error));
