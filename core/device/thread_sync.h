@@ -86,12 +86,18 @@ inline void announceJoin(QThread &thread)
     // object lives in the thread that made it (an automatic connection would queue it there).
     QObject::connect(&thread, &QThread::finished, &thread, [t = &thread] { handOver(t); }, Qt::DirectConnection);
 }
-// quit() and wait(); afterwards everything the thread wrote is the caller's.
+// wait() for a thread that ends by itself (QThread::create); afterwards everything the thread
+// wrote is the caller's.
+inline void waitForThread(QThread &thread)
+{
+    thread.wait();
+    takeOver(&thread);
+}
+// quit() its event loop and waitForThread().
 inline void joinThread(QThread &thread)
 {
     thread.quit();
-    thread.wait();
-    takeOver(&thread);
+    waitForThread(thread);
 }
 
 } // namespace imudesk::device

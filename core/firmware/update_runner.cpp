@@ -37,8 +37,7 @@ UpdateRunner::~UpdateRunner()
 {
     if (m_thread) {
         cancel();
-        m_thread->wait();
-        device::takeOver(m_thread);
+        device::waitForThread(*m_thread);
         delete m_thread;
         m_thread = nullptr;
     }
@@ -74,8 +73,7 @@ void UpdateRunner::onWorkerDone()
 {
     if (!m_thread)
         return;
-    m_thread->wait();
-    device::takeOver(m_thread); // the outcome below was written by the thread
+    device::waitForThread(*m_thread); // the outcome below was written by the thread
     delete m_thread;
     m_thread = nullptr;
     m_shared.reset();

@@ -59,9 +59,7 @@ void ModbusSimulator::stop()
                 delete server;
             });
         m_server = nullptr;
-        m_thread->quit();
-        m_thread->wait();
-        device::takeOver(m_thread);
+        device::joinThread(*m_thread);
         delete m_thread;
         m_thread = nullptr;
     }

@@ -372,9 +372,7 @@ void PtySimulator::stop()
             delete e->notifier;
             e->notifier = nullptr;
         });
-    m_thread->quit();
-    m_thread->wait();
-    device::takeOver(m_thread);
+    device::joinThread(*m_thread);
     delete m_context;
     m_context = nullptr;
     delete m_thread;
