@@ -153,10 +153,18 @@ else
   "${as_root[@]}" "$here/check-fresh-debian.sh" --build "$root/build/test"
   "${as_root[@]}" "$here/test-check-fresh-debian.sh"
 fi
+# The suites run eight tests at a time on two cores: most of them wait on a simulated device's
+# clock, and ctest's resource allocation (tests/CMakeLists.txt gives each test its CPU share,
+# the build writes ctest-cpu-slots.json) keeps the CPU they need within the cores.
+run_suite() { # build dir, extra ctest args...
+  local dir="$1"; shift
+  (cd "$dir" && ctest --output-on-failure -j "$((jobs * 4))" --resource-spec-file "$dir/ctest-cpu-slots.json" \
+    --repeat until-pass:2 "$@")
+}
 phase "test suite"
 # A test that fails is run once more: only a test that fails twice stops the run (the pty and
 # timing tests share two cores with everything else on a CI machine).
-(cd "$root/build/test" && ctest --output-on-failure -j "$jobs" --timeout 600 --repeat until-pass:2)
+run_suite "$root/build/test" --timeout 600
 phase "benchmark (decode throughput against the manual's byte-at-a-time decoder)"
 "$root/build/test/tests/bench/bench_decode" --mb 50
 phase "benchmark (heap allocations per frame on the live session path)"
@@ -208,7 +216,7 @@ configure_and_build "$root/build/asan" Release -DCMAKE_CXX_FLAGS_RELEASE="-O1 -D
 export ASAN_OPTIONS="detect_leaks=0:abort_on_error=1:strict_string_checks=1"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 phase "test suite again, in the sanitizer build"
-(cd "$root/build/asan" && ctest --output-on-failure -j "$jobs" --timeout 900 --repeat until-pass:2)
+run_suite "$root/build/asan" --timeout 900
 unset ASAN_OPTIONS UBSAN_OPTIONS
 
 phase "fuzzing every parser, ${FUZZ_SECONDS:-20} s each"
@@ -225,5 +233,5 @@ phase "the threads' tests in the ThreadSanitizer build (any report fails)"
 # die_after_fork=0: tests start imudesk-cli (QProcess forks a process that may start threads
 # before it runs the program; TSan would otherwise stop it there).
 export TSAN_OPTIONS="suppressions=$root/tests/tsan.supp:halt_on_error=1:exitcode=66:second_deadlock_stack=1:die_after_fork=0"
-(cd "$root/build/tsan" && ctest --output-on-failure -j "$jobs" -L tsan --timeout 900 --repeat until-pass:2)
+run_suite "$root/build/tsan" -L tsan --timeout 900
 unset TSAN_OPTIONS

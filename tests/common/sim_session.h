@@ -27,10 +27,13 @@ public:
     // The address the session opens (any name: the link is the simulated module).
     static constexpr const char *kAddress = "sim:HI14";
 
-    explicit SimSession(sim::SimOptions options = {})
+    // timeScale: device seconds per real second (sim::SimulatedTransport::setTimeScale), for
+    // tests whose checks are on the module's own clock (a fixture turning, a calibration run).
+    explicit SimSession(sim::SimOptions options = {}, double timeScale = 1.0)
         : m_link(new sim::SimulatedTransport(std::make_unique<sim::HipnucSerialDevice>(std::move(options))))
         , session(nullptr, std::unique_ptr<io::Transport>(m_link))
     {
+        m_link->setTimeScale(timeScale);
     }
     SimSession(const SimSession &) = delete;
     SimSession &operator=(const SimSession &) = delete;

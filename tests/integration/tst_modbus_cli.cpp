@@ -130,8 +130,9 @@ private Q_SLOTS:
         r = run({"modbus", m_pty, "--timeout", "200", "info"});
         QCOMPARE(r.code, 1);
         QVERIFY2(r.err.contains(QStringLiteral("No reply from node 80")), qPrintable(r.err));
-        // A scan over two rates finds it at its new place.
-        r = run({"modbus", m_pty, "scan", "--from", "83", "--to", "86", "--all-bauds", "--json"});
+        // A scan over two rates finds it at its new place. The probe timeout is set: the default
+        // one (a few frame times) is for a bench PC, and this test also runs beside seven others.
+        r = run({"modbus", m_pty, "scan", "--from", "83", "--to", "86", "--all-bauds", "--timeout", "400", "--json"});
         QVERIFY2(r.code == 0, qPrintable(r.err));
         const QJsonObject hit = json(r.out.split(QLatin1Char('\n')).first());
         QCOMPARE(hit.value("node").toInt(), 85);
