@@ -125,45 +125,74 @@ phase_summary() {
 }
 trap 'phase_summary' EXIT
 export QT_QPA_PLATFORM=offscreen
+
+# The fresh-root check and its safety test need root (mmdebstrap's root mode, mount namespaces):
+# a user with sudo rights runs them through sudo, as apt-get above (the build they read stays
+# the user's). Known before the first build, so that a user without sudo is told at once.
+as_root=()
+if [ -z "${IMUDESK_IN_FRESH_ROOT:-}" ] && [ "$(id -u)" -ne 0 ]; then
+  if ! command -v sudo >/dev/null; then
+    echo "!! the fresh-root check needs root: run this as root, or give this user sudo rights" >&2
+    exit 1
+  fi
+  as_root=(sudo --preserve-env=IMUDESK_FRESH_CACHE,IMUDESK_FRESH_WORKDIR,IMUDESK_DEBIAN_MIRROR)
+fi
+# The fresh-root check: fails when a build, test or runtime dependency is missing from
+# scripts/debian-packages.txt (the host may have it installed by hand), naming it, or when the
+# Debian package lacks a dependency: it is installed with apt-get into the bare root before the
+# list, and imudesk and imudesk-cli run from /usr/bin. Then the check's own safety test: a run
+# killed during its package install leaves the host's /dev untouched and its root removable.
+fresh_root_check() {
+  if [ -n "${IMUDESK_IN_FRESH_ROOT:-}" ]; then
+    echo "skipped: this run is itself inside the fresh root check's root"
+    return 0
+  fi
+  "${as_root[@]}" "$here/check-fresh-debian.sh" --build "$root/build/test" \
+    && "${as_root[@]}" "$here/test-check-fresh-debian.sh"
+}
+# The suites run eight tests at a time on two cores: most of them wait on a simulated device's
+# clock, and ctest's resource allocation (tests/CMakeLists.txt gives each test its CPU share,
+# the build writes ctest-cpu-slots.json) keeps the CPU they need within the cores.
+# A test that fails is run once more: only a test that fails twice stops the run (the pty and
+# timing tests share two cores with everything else on a CI machine).
+run_suite() { # build dir, extra ctest args...
+  local dir="$1"; shift
+  (cd "$dir" && ctest --output-on-failure -j "$((jobs * 4))" --resource-spec-file "$dir/ctest-cpu-slots.json" \
+    --repeat until-pass:2 "$@")
+}
+
 phase "build (release, tests and benchmarks)"
 configure_and_build "$root/build/test" Release -DIMUDESK_BUILD_TESTS=ON -DIMUDESK_BUILD_BENCH=ON
 phase "Debian package: build it and lint it (cpack from build/test, lintian)"
 # The binaries of the build above, no second build: build/test/package/imudesk_<version>_amd64.deb.
 make_package "$root/build/test"
 lint_package "$root/build/test"
+
+phase "build with AddressSanitizer and UndefinedBehaviorSanitizer (beside it: the fresh Debian 12 root check)"
+# The fresh-root check mostly waits on apt, dpkg and the mirror, so it runs beside this build
+# (not beside a suite or the benchmarks), into its own log, printed when it ends; the package
+# it installs is the one made above. A run that stops early stops it too (SIGTERM: it removes
+# its root).
+fresh_log="$root/build/fresh-root-check.log"
+fresh_root_check > "$fresh_log" 2>&1 &
+fresh_pid=$!
+trap '[ -n "${fresh_pid:-}" ] && pkill -TERM -P "$fresh_pid" 2>/dev/null; phase_summary' EXIT
+# The whole suite, GUI tests included. -O1 without debug information keeps the build about a
+# third shorter than -O3 (the optimisation level AddressSanitizer's authors recommend). Leak
+# checking stays with the fuzzers (Qt's caches live until exit).
+configure_and_build "$root/build/asan" Release -DCMAKE_CXX_FLAGS_RELEASE="-O1 -DNDEBUG" \
+  -DIMUDESK_SANITIZE=ON -DIMUDESK_BUILD_GUI=ON -DIMUDESK_BUILD_TESTS=ON -DIMUDESK_BUILD_BENCH=OFF
 phase "fresh Debian 12 root: the package list alone configures the project; the .deb installs and runs"
-# Fails when a build, test or runtime dependency is missing from scripts/debian-packages.txt (the
-# host may have it installed by hand), naming it, or when the Debian package above lacks a
-# dependency: it is installed with apt-get into the bare root before the list, and imudesk and
-# imudesk-cli run from /usr/bin. Then the check's own safety test: a run killed during its package
-# install leaves the host's /dev untouched and its root removable.
-if [ -n "${IMUDESK_IN_FRESH_ROOT:-}" ]; then
-  echo "   skipped: this run is itself inside the fresh root check's root"
-else
-  # Both need root (mmdebstrap's root mode, mount namespaces): a user with sudo rights runs them
-  # through sudo, as apt-get above; the build they read stays the user's.
-  as_root=()
-  if [ "$(id -u)" -ne 0 ]; then
-    if ! command -v sudo >/dev/null; then
-      echo "!! the fresh-root check needs root: run this as root, or give this user sudo rights" >&2
-      exit 1
-    fi
-    as_root=(sudo --preserve-env=IMUDESK_FRESH_CACHE,IMUDESK_FRESH_WORKDIR,IMUDESK_DEBIAN_MIRROR)
-  fi
-  "${as_root[@]}" "$here/check-fresh-debian.sh" --build "$root/build/test"
-  "${as_root[@]}" "$here/test-check-fresh-debian.sh"
+fresh_rc=0
+wait "$fresh_pid" || fresh_rc=$?
+fresh_pid=""
+sed 's/^/   /' "$fresh_log"
+if [ "$fresh_rc" -ne 0 ]; then
+  echo "!! the fresh Debian 12 root check failed (above; log: $fresh_log)" >&2
+  exit 1
 fi
-# The suites run eight tests at a time on two cores: most of them wait on a simulated device's
-# clock, and ctest's resource allocation (tests/CMakeLists.txt gives each test its CPU share,
-# the build writes ctest-cpu-slots.json) keeps the CPU they need within the cores.
-run_suite() { # build dir, extra ctest args...
-  local dir="$1"; shift
-  (cd "$dir" && ctest --output-on-failure -j "$((jobs * 4))" --resource-spec-file "$dir/ctest-cpu-slots.json" \
-    --repeat until-pass:2 "$@")
-}
+
 phase "test suite"
-# A test that fails is run once more: only a test that fails twice stops the run (the pty and
-# timing tests share two cores with everything else on a CI machine).
 run_suite "$root/build/test" --timeout 600
 phase "benchmark (decode throughput against the manual's byte-at-a-time decoder)"
 "$root/build/test/tests/bench/bench_decode" --mb 50
@@ -207,12 +236,6 @@ phase "benchmark (production station: a plan on eight simulated modules against 
 phase "soak (1 kHz HI91 with recording and the GUI offscreen; 30 s in CI, one hour by default)"
 live_bench "$bench/soak" --seconds 30
 
-phase "build with AddressSanitizer and UndefinedBehaviorSanitizer"
-# The whole suite, GUI tests included. -O1 without debug information keeps the build about a
-# third shorter than -O3 (the optimisation level AddressSanitizer's authors recommend). Leak
-# checking stays with the fuzzers (Qt's caches live until exit).
-configure_and_build "$root/build/asan" Release -DCMAKE_CXX_FLAGS_RELEASE="-O1 -DNDEBUG" \
-  -DIMUDESK_SANITIZE=ON -DIMUDESK_BUILD_GUI=ON -DIMUDESK_BUILD_TESTS=ON -DIMUDESK_BUILD_BENCH=OFF
 export ASAN_OPTIONS="detect_leaks=0:abort_on_error=1:strict_string_checks=1"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 phase "test suite again, in the sanitizer build"
