@@ -47,6 +47,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace {
@@ -58,6 +59,24 @@ using Eigen::Vector3d;
 
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kDeg = kPi / 180.0;
+
+// Runs fn(i) for i in [0, n) on every core; each index once, in no particular order. The trials
+// are independent (each has its own seeded generator) and land in their own slot, and the
+// figures are added up in index order afterwards, so the output does not depend on the number
+// of cores: only the runtime does.
+template <class Fn>
+void parallelFor(int n, const Fn &fn)
+{
+    const int threads = std::clamp(int(std::thread::hardware_concurrency()), 1, 16);
+    std::vector<std::thread> pool;
+    for (int w = 0; w < threads; ++w)
+        pool.emplace_back([&, w] {
+            for (int i = w; i < n; i += threads)
+                fn(i);
+        });
+    for (std::thread &t : pool)
+        t.join();
+}
 
 // splitmix64 with Box-Muller: the same numbers on every platform.
 class Rng {
@@ -213,10 +232,13 @@ Figures runScenario(const Truth &t, uint64_t seed, int trials, int n, Coverage c
     calib::MagCalibrator::Options o;
     o.levelVerticalUt = t.field.z(); // the world model's vertical component (2-D mode)
     const calib::MagCalibrator cal(o);
-    for (int i = 0; i < trials; ++i) {
+    std::vector<calib::MagCalResult> results(size_t(std::max(trials, 0)));
+    parallelFor(trials, [&](int i) {
         Rng rng(seed * 1000003ull + uint64_t(i) * 7919ull + uint64_t(cov) * 31ull + uint64_t(spikes * 1000));
         const auto samples = generate(t, rng, n, cov, 0.3, spikes);
-        const calib::MagCalResult r = cal.calibrate(samples, mode);
+        results[size_t(i)] = cal.calibrate(samples, mode);
+    });
+    for (const calib::MagCalResult &r : results) {
         ++f.trials;
         if (r.verdict == calib::MagVerdict::Refused)
             ++f.refused;
@@ -387,21 +409,33 @@ void coverageSweep(uint64_t seed, int trials)
     for (const SweepCase &c : cases) {
         std::vector<double> pred, truth, linear, hiErr, hiPred, hiLin, siErr, siPred;
         int verdicts[4] = {0, 0, 0, 0}, bad = 0, badLinear = 0;
-        for (int i = 0; i < trials; ++i) {
+        // Each trial's fit and its baseline (the linear covariance of the same fit), in parallel.
+        struct Trial {
+            calib::MagCalResult r;
+            calib::MagFitUncertainty::Figures lin;
+        };
+        std::vector<Trial> runs(size_t(std::max(trials, 0)));
+        parallelFor(trials, [&](int i) {
             Rng rng(seed * 2654435761ull + uint64_t(i) * 104729ull + uint64_t(c.n) * 13ull
                     + uint64_t(c.capFraction * 1000) * 17ull + uint64_t(c.bandDeg) * 19ull + uint64_t(c.noise * 100) * 23ull);
             const auto samples = generateSweep(t, rng, c);
-            const calib::MagCalResult r = cal.calibrate(samples);
+            Trial &run = runs[size_t(i)];
+            run.r = cal.calibrate(samples);
+            if (std::isnan(run.r.predictedHeadingErrorDeg))
+                return; // refused before any fit
+            calib::Ellipsoid e;
+            e.center = run.r.hardIron;
+            e.w = run.r.softIron / run.r.fieldUt;
+            run.lin = calib::MagFitUncertainty::ofEllipsoid(samples, e);
+        });
+        for (const Trial &run : runs) {
+            const calib::MagCalResult &r = run.r;
             ++verdicts[int(r.verdict)];
             if (std::isnan(r.predictedHeadingErrorDeg))
                 continue; // refused before any fit
             const double tr = levelHeadingErrorMax(t, r);
             bad += r.verdict == calib::MagVerdict::Pass && tr > 1.0;
-            // The baseline: the linear covariance of the same fit.
-            calib::Ellipsoid e;
-            e.center = r.hardIron;
-            e.w = r.softIron / r.fieldUt;
-            const auto lin = calib::MagFitUncertainty::ofEllipsoid(samples, e);
+            const auto &lin = run.lin;
             // What the baseline would have passed on its own.
             badLinear += lin.headingErrorDeg < calib::MagCalibrator::kWarnHeadingErrorDeg && tr > 1.0;
             pred.push_back(r.predictedHeadingErrorDeg);
