@@ -142,14 +142,35 @@ fi
 # Debian package lacks a dependency: it is installed with apt-get into the bare root before the
 # list, and imudesk and imudesk-cli run from /usr/bin. Then the check's own safety test: a run
 # killed during its package install leaves the host's /dev untouched and its root removable.
-fresh_root_check() {
+# Both mostly wait on tar, apt, dpkg and the mirror, so they run in the background, one after the
+# other (they share the cache and the roots' folder), each into its own log, printed when it is
+# waited for: the safety test needs no build and runs beside the release build, the check
+# installs the package made from that build and runs beside the sanitizer build; neither runs
+# beside a suite or the benchmarks. A run that stops early stops them too (SIGTERM: the check
+# removes its root).
+in_background() { # name (log: build/NAME.log), command...
+  background_name="$1"; shift
   if [ -n "${IMUDESK_IN_FRESH_ROOT:-}" ]; then
-    echo "skipped: this run is itself inside the fresh root check's root"
+    echo "skipped: this run is itself inside the fresh root check's root" > "$root/build/$background_name.log"
     return 0
   fi
-  "${as_root[@]}" "$here/check-fresh-debian.sh" --build "$root/build/test" \
-    && "${as_root[@]}" "$here/test-check-fresh-debian.sh"
+  "${as_root[@]}" "$@" > "$root/build/$background_name.log" 2>&1 &
+  background_pid=$!
 }
+background_pid="" background_name=""
+wait_background() { # prints its log; fails the run when it failed
+  local rc=0
+  if [ -n "$background_pid" ]; then
+    wait "$background_pid" || rc=$?
+  fi
+  background_pid=""
+  sed 's/^/   /' "$root/build/$background_name.log"
+  if [ "$rc" -ne 0 ]; then
+    echo "!! $background_name failed (above; log: build/$background_name.log)" >&2
+    exit 1
+  fi
+}
+trap '[ -z "$background_pid" ] || kill -TERM "$background_pid" 2>/dev/null; phase_summary' EXIT
 # The suites run eight tests at a time on two cores: most of them wait on a simulated device's
 # clock, and ctest's resource allocation (tests/CMakeLists.txt gives each test its CPU share,
 # the build writes ctest-cpu-slots.json) keeps the CPU they need within the cores.
@@ -161,36 +182,27 @@ run_suite() { # build dir, extra ctest args...
     --repeat until-pass:2 "$@")
 }
 
-phase "build (release, tests and benchmarks)"
+phase "build (release, tests and benchmarks; beside it: the fresh-root check's safety test)"
+mkdir -p "$root/build"
+in_background fresh-root-safety "$here/test-check-fresh-debian.sh"
 configure_and_build "$root/build/test" Release -DIMUDESK_BUILD_TESTS=ON -DIMUDESK_BUILD_BENCH=ON
 phase "Debian package: build it and lint it (cpack from build/test, lintian)"
 # The binaries of the build above, no second build: build/test/package/imudesk_<version>_amd64.deb.
 make_package "$root/build/test"
 lint_package "$root/build/test"
 
+phase "the fresh-root check's safety test: a check killed midway leaves the host's /dev as it was (ran beside the build)"
+wait_background
+
 phase "build with AddressSanitizer and UndefinedBehaviorSanitizer (beside it: the fresh Debian 12 root check)"
-# The fresh-root check mostly waits on apt, dpkg and the mirror, so it runs beside this build
-# (not beside a suite or the benchmarks), into its own log, printed when it ends; the package
-# it installs is the one made above. A run that stops early stops it too (SIGTERM: it removes
-# its root).
-fresh_log="$root/build/fresh-root-check.log"
-fresh_root_check > "$fresh_log" 2>&1 &
-fresh_pid=$!
-trap '[ -n "${fresh_pid:-}" ] && pkill -TERM -P "$fresh_pid" 2>/dev/null; phase_summary' EXIT
+in_background fresh-root-check "$here/check-fresh-debian.sh" --build "$root/build/test"
 # The whole suite, GUI tests included. -O1 without debug information keeps the build about a
 # third shorter than -O3 (the optimisation level AddressSanitizer's authors recommend). Leak
 # checking stays with the fuzzers (Qt's caches live until exit).
 configure_and_build "$root/build/asan" Release -DCMAKE_CXX_FLAGS_RELEASE="-O1 -DNDEBUG" \
   -DIMUDESK_SANITIZE=ON -DIMUDESK_BUILD_GUI=ON -DIMUDESK_BUILD_TESTS=ON -DIMUDESK_BUILD_BENCH=OFF
-phase "fresh Debian 12 root: the package list alone configures the project; the .deb installs and runs"
-fresh_rc=0
-wait "$fresh_pid" || fresh_rc=$?
-fresh_pid=""
-sed 's/^/   /' "$fresh_log"
-if [ "$fresh_rc" -ne 0 ]; then
-  echo "!! the fresh Debian 12 root check failed (above; log: $fresh_log)" >&2
-  exit 1
-fi
+phase "fresh Debian 12 root: the package list alone configures the project; the .deb installs and runs (ran beside the build)"
+wait_background
 
 phase "test suite"
 run_suite "$root/build/test" --timeout 600
