@@ -234,7 +234,9 @@ Outcome gyroScale(device::DeviceSession &s, int angle, int timeoutS)
         else
             progress(QStringLiteral("gyro-scale: the module stopped; CONFIG USRCAL STOP"));
         gyro.stop();
-        waitFor([&] { return done; }, 5000);
+        // The answer, or the request's own timeout, ends the run; this bound only guards
+        // against neither arriving (a host so loaded that the session's thread did not run).
+        waitFor([&] { return done; }, 15000);
     }
     const auto r = run.result();
     o.details[QStringLiteral("angle_deg")] = angle;

@@ -23,50 +23,45 @@ namespace {
 namespace hp = protocol::hipnuc;
 
 // The device's clock as seen in a raw dump, as ns since its first stamp. One source is
-// followed (the first frame type with a time, or NMEA's UTC when no frame has one), so that
-// two clocks never alternate; a jump back of more than a second, or forward of more than ten
-// (a restart, the UTC alignment, midnight in NMEA time), is carried across: the times go on
-// from where they were.
+// followed at a time, so that two clocks never alternate: the best one seen so far, by rank.
+// The module's own counter (HI91 system_time, HI83 system_time_us) ranks first; a GNSS time of
+// week (HI81: 0 until the receiver has a fix, so it may never move) second; NMEA's UTC last.
+// When a better source appears, the times go on from where they were on its clock. A jump
+// back of more than a second, or forward of more than ten (a restart, the UTC alignment,
+// midnight in NMEA time), is carried across the same way.
 class DeviceClock {
 public:
-    void frameTime(const std::string &source, double ms)
-    {
-        if (m_source.empty() && !m_nmea)
-            m_source = source;
-        if (source == m_source)
-            see(ms);
-    }
-    void nmeaTime(double ms)
-    {
-        if (m_source.empty()) {
-            m_nmea = true;
-            see(ms);
-        }
-    }
-    bool known() const { return m_have; }
-    int64_t ns() const { return m_have ? int64_t((m_lastMs + m_offsetMs - m_firstMs) * 1e6) : 0; }
+    void frameTime(const std::string &source, double ms) { offer(source, source == "HI81" ? 1 : 2, ms); }
+    void nmeaTime(double ms) { offer("NMEA", 0, ms); }
+    bool known() const { return m_rank >= 0; }
+    int64_t ns() const { return known() ? int64_t((m_baseMs + m_lastMs - m_firstMs) * 1e6) : 0; }
     uint64_t jumps() const { return m_jumps; }
 
 private:
-    void see(double ms)
+    void offer(const std::string &source, int rank, double ms)
     {
-        if (!m_have) {
-            m_have = true;
+        if (rank > m_rank) {
+            // A better clock: it starts here, at the time reached so far.
+            m_baseMs = known() ? m_baseMs + m_lastMs - m_firstMs : 0.0;
+            m_source = source;
+            m_rank = rank;
             m_firstMs = m_lastMs = ms;
             return;
         }
+        if (source != m_source)
+            return;
         const double d = ms - m_lastMs;
         if (d < -1000.0 || d > 10000.0) {
-            m_offsetMs += m_lastMs - ms;
+            m_baseMs += m_lastMs - m_firstMs;
+            m_firstMs = ms;
             ++m_jumps;
         }
         m_lastMs = ms;
     }
 
     std::string m_source;
-    bool m_nmea = false;
-    bool m_have = false;
-    double m_firstMs = 0, m_lastMs = 0, m_offsetMs = 0;
+    int m_rank = -1;
+    double m_baseMs = 0, m_firstMs = 0, m_lastMs = 0;
     uint64_t m_jumps = 0;
 };
 

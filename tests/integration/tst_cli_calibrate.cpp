@@ -74,9 +74,10 @@ private Q_SLOTS:
 
     void magnetometerProgressAndRefusal()
     {
-        // A tumbling module: STAT 1 with growing PROGRESS on stderr until the time given runs out.
+        // A tumbling module: STAT 1 with growing PROGRESS on stderr until the time given runs out
+        // (8 s: the CLI starts, connects and starts MCAL within it even on a loaded machine).
         auto pty = serve(sim::Motion::Tumble);
-        auto r = calibrate(*pty, {"mag", "--timeout", "4"});
+        auto r = calibrate(*pty, {"mag", "--timeout", "8"});
         QCOMPARE(r.code, 1);
         QVERIFY2(r.err.contains(QStringLiteral("mag: STAT 1")), qPrintable(r.err));
         QVERIFY(r.json().value("progress").toInt() > 0);

@@ -137,6 +137,42 @@ private Q_SLOTS:
         QCOMPARE(r.bytes, uint64_t(raw.size()));
     }
 
+    void rawDumpFollowsTheModulesCounterOverGnssTime()
+    {
+        // HI91 at 100 Hz with HI81 at 10 Hz on one line, as `LOG HI91 ONTIME 0.01` + `LOG HI81
+        // ONTIME 0.1` send it, and the dump begins with an HI81 frame. HI81 carries the GNSS time
+        // of week, 0 until the receiver has a fix: it never moves. The module's own counter in
+        // HI91 times the dump (before: the first frame's clock was followed, every stamp was 0).
+        std::vector<uint8_t> raw;
+        for (int i = 0; i < 200; ++i) {
+            if (i % 10 == 0) {
+                hp::Hi81 g;
+                g.gpsTowMs = 0;
+                append(raw, hp::buildFrame(hp::encode(g)));
+            }
+            hp::Hi91 h;
+            h.systemTime = 7000 + uint32_t(i) * 10;
+            append(raw, hp::buildFrame(hp::encode(h)));
+        }
+        QTemporaryDir dir;
+        const QString dump = write(dir, QStringLiteral("hi81-first.bin"), bytesOf(raw));
+        const auto r = CaptureSource::convertRawDump(dump, dir.filePath(QStringLiteral("c.imucap")));
+        QVERIFY2(r.ok, qPrintable(r.error));
+        QCOMPARE(r.frames, uint64_t(220));
+        QCOMPARE(r.clockJumps, uint64_t(0));
+        QVERIFY(r.deviceClock);
+        CaptureReader reader;
+        QString error;
+        QVERIFY2(reader.open(dir.filePath(QStringLiteral("c.imucap")), &error), qPrintable(error));
+        CaptureReader::Chunk c;
+        int64_t last = 0;
+        while (reader.next(c) == CaptureReader::Result::Chunk)
+            last = c.monotonicNs;
+        // 199 intervals of 10 ms; the last block is stamped with its last complete frame.
+        const double lastS = double(last) / 1e9;
+        QVERIFY2(lastS > 1.9 && lastS <= 1.99, qPrintable(QString::number(lastS)));
+    }
+
     void exportAndAnalysisTakeARawDump()
     {
         std::vector<uint8_t> raw;
