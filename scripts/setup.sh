@@ -49,16 +49,14 @@ install_packages() {
   fi
 }
 
-configure_and_build() { # dir, build type, extra cmake args...
-  local dir="$1" type="$2"; shift 2
-  cmake -S "$root" -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE="$type" "$@"
-  cmake --build "$dir" -j "$jobs"
-}
-
 configure_and_build_targets() { # dir, build type, targets (one word, ;-separated), extra cmake args...
   local dir="$1" type="$2" targets="$3"; shift 3
   cmake -S "$root" -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE="$type" "$@"
   cmake --build "$dir" -j "$jobs" --target ${targets//;/ }
+}
+configure_and_build() { # dir, build type, extra cmake args...: everything the configuration has
+  local dir="$1" type="$2"; shift 2
+  configure_and_build_targets "$dir" "$type" all "$@"
 }
 
 # The Debian package of a built tree: DIR/package/imudesk_<version>_<arch>.deb (cmake/Packaging.cmake

@@ -36,10 +36,10 @@ bool ModbusSimulator::start(QString *error)
     ModbusRtuServer *server = m_server;
     const QString path = m_bridge.serverPath();
     device::callAndWait(m_server, [server, path, &ok, &why] {
-            ok = server->listen(path);
-            if (!ok)
-                why = server->errorString();
-        });
+        ok = server->listen(path);
+        if (!ok)
+            why = server->errorString();
+    });
     if (!ok) {
         if (error)
             *error = tr("The simulated Modbus device could not open %1: %2").arg(path, why);
@@ -55,9 +55,9 @@ void ModbusSimulator::stop()
     if (m_thread) {
         ModbusRtuServer *server = m_server;
         device::callAndWait(m_server, [server] {
-                server->disconnectDevice();
-                delete server;
-            });
+            server->disconnectDevice();
+            delete server;
+        });
         m_server = nullptr;
         device::joinThread(*m_thread);
         delete m_thread;

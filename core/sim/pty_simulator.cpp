@@ -338,20 +338,20 @@ bool PtySimulator::start(QString *error)
     Engine *e = m_engine.get();
     QObject *ctx = m_context;
     device::callAndWait(m_context, [e, ctx] {
-            // The simulated module stands in for a device with a CPU of its own: its thread gets
-            // the reading threads' priority (as far as the OS allows), so that a busy host delays
-            // the session's reading, which is under test, rather than the device's sending.
-            io::raiseCurrentThreadForReading();
-            e->clock.start();
-            e->notifier = new QSocketNotifier(qintptr(e->master), QSocketNotifier::Read, ctx);
-            e->notifier->setEnabled(false);
-            QObject::connect(e->notifier, &QSocketNotifier::activated, ctx, [e] { e->onReadable(); });
-            e->timer = new QTimer(ctx);
-            e->timer->setTimerType(Qt::PreciseTimer);
-            e->timer->setInterval(kTickMs);
-            QObject::connect(e->timer, &QTimer::timeout, ctx, [e] { e->service(); });
-            e->timer->start();
-        });
+        // The simulated module stands in for a device with a CPU of its own: its thread gets
+        // the reading threads' priority (as far as the OS allows), so that a busy host delays
+        // the session's reading, which is under test, rather than the device's sending.
+        io::raiseCurrentThreadForReading();
+        e->clock.start();
+        e->notifier = new QSocketNotifier(qintptr(e->master), QSocketNotifier::Read, ctx);
+        e->notifier->setEnabled(false);
+        QObject::connect(e->notifier, &QSocketNotifier::activated, ctx, [e] { e->onReadable(); });
+        e->timer = new QTimer(ctx);
+        e->timer->setTimerType(Qt::PreciseTimer);
+        e->timer->setInterval(kTickMs);
+        QObject::connect(e->timer, &QTimer::timeout, ctx, [e] { e->service(); });
+        e->timer->start();
+    });
     const std::string faults = m_customDevice ? std::string() : simFaultsText(m_options.faults);
     if (faults.empty())
         qCInfo(lcPty) << "simulated" << QString::fromStdString(m_engine->sim.productName()) << "on" << m_path;
@@ -367,11 +367,11 @@ void PtySimulator::stop()
         return;
     Engine *e = m_engine.get();
     device::callAndWait(m_context, [e] {
-            delete e->timer;
-            e->timer = nullptr;
-            delete e->notifier;
-            e->notifier = nullptr;
-        });
+        delete e->timer;
+        e->timer = nullptr;
+        delete e->notifier;
+        e->notifier = nullptr;
+    });
     device::joinThread(*m_thread);
     delete m_context;
     m_context = nullptr;
@@ -401,9 +401,9 @@ void PtySimulator::withSerialDevice(const std::function<void(SimulatedSerialDevi
         return;
     }
     device::callAndWait(m_context, [e, &fn] {
-            e->sim.advanceTo(e->nowUs());
-            fn(e->sim);
-        });
+        e->sim.advanceTo(e->nowUs());
+        fn(e->sim);
+    });
 }
 
 PtySimulator::Stats PtySimulator::stats() const

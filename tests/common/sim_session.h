@@ -11,10 +11,10 @@
 #include "inproc_link.h"
 
 #include "device/device_session.h"
+#include "device/thread_sync.h"
 #include "sim/hipnuc_serial_device.h"
 #include "sim/simulated_transport.h"
 
-#include <QMetaObject>
 #include <QTest>
 
 #include <functional>
@@ -74,7 +74,7 @@ private:
     void inLink(void (*fn)(sim::SimulatedTransport &))
     {
         sim::SimulatedTransport *link = m_link;
-        QMetaObject::invokeMethod(link, [link, fn] { fn(*link); }, Qt::BlockingQueuedConnection);
+        device::callAndWait(link, [link, fn] { fn(*link); });
     }
 
     sim::SimulatedTransport *m_link; // owned by the session

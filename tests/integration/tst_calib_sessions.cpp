@@ -3,6 +3,7 @@
 // 4.6.7.11) while the simulated turntable turns two turns, with our own estimate from the
 // streamed samples beside the device's OK; the magnetometer calibration (CONFIG MCAL
 // START, LOG MCAL STAT) starting and reporting progress; refusals and silence.
+#include "../common/session_probes.h"
 #include "../common/sim_session.h"
 #include "calib/gyro_cal_session.h"
 #include "calib/gyro_scale_run.h"
@@ -16,6 +17,7 @@ using namespace imudesk;
 using calib::GyroCalSession;
 using device::DeviceSession;
 using device::SessionState;
+using test::waitConnected;
 
 namespace {
 
@@ -28,13 +30,6 @@ sim::SimOptions options(sim::Motion motion, const char *firmware = "1.7.1", cons
     o.seed = 9;
     o.gyroScaleError = 0.005;
     return o;
-}
-
-bool waitConnected(DeviceSession &s, int timeoutMs = 15000)
-{
-    (void)QTest::qWaitFor(
-        [&s] { return s.state() == SessionState::Connected || s.state() == SessionState::Failed; }, timeoutMs);
-    return s.state() == SessionState::Connected;
 }
 
 double deviceTimeS(DeviceSession &s)

@@ -5,6 +5,7 @@
 // a silent device, errors for missing, busy and forbidden ports, the unplug case, reconnection
 // after an unplug (by a stable name, to the same or another module), and frames lost at full
 // rate through the kernel's buffers.
+#include "../common/session_probes.h"
 #include "../common/session_send.h"
 #include "../common/sim_session.h"
 #include "device/device_session.h"
@@ -31,6 +32,8 @@ using device::SessionState;
 using protocol::hipnuc::AsciiReply;
 using Status = AsciiReply::Status;
 using State = sim::HipnucSimulator::State;
+using test::StatsProbe;
+using test::waitConnected;
 
 Q_DECLARE_METATYPE(Status)
 
@@ -46,35 +49,6 @@ sim::SimOptions options(const char *firmware = "1.7.1", int baud = 115200, const
     o.seed = 42;
     return o;
 }
-
-bool waitConnected(DeviceSession &s, int timeoutMs = 15000)
-{
-    (void)QTest::qWaitFor(
-        [&s] { return s.state() == SessionState::Connected || s.state() == SessionState::Failed; }, timeoutMs);
-    return s.state() == SessionState::Connected;
-}
-
-// Stats as the session last published them.
-struct StatsProbe {
-    device::SessionStats last;
-    int updates = 0;
-    StatsProbe(DeviceSession &s, QObject *context)
-    {
-        QObject::connect(&s, &DeviceSession::statsUpdated, context, [this](const device::SessionStats &st) {
-            last = st;
-            ++updates;
-        });
-    }
-    // The next stats published from now on (once a second; the bound is for a loaded machine,
-    // where the session's thread may wait seconds for a core).
-    device::SessionStats next()
-    {
-        const int before = updates;
-        if (!QTest::qWaitFor([this, before] { return updates != before; }, 15000))
-            qWarning("StatsProbe: no statistics for 15 s; the figures below are the last ones seen");
-        return last;
-    }
-};
 
 // Frames the simulator did not deliver: dropped by its UART model or for a stalled reader.
 uint64_t simulatorDropped(sim::PtySimulator &simulator)
@@ -166,17 +140,13 @@ private Q_SLOTS:
     {
         test::SimSession sim(options());
         DeviceSession &session = sim.session;
-        device::SessionStats last;
-        int updates = 0;
-        connect(&session, &DeviceSession::statsUpdated, this, [&](const device::SessionStats &s) {
-            last = s;
-            ++updates;
-        });
+        StatsProbe stats(session);
         sim.open(115200);
         QVERIFY(waitConnected(session));
-        const int connectedAt = updates;
+        const int connectedAt = stats.updates;
         // Three statistics periods (500 ms each) of streaming: the rate's window is full.
-        QTRY_VERIFY_WITH_TIMEOUT(updates >= connectedAt + 3, 5000);
+        QTRY_VERIFY_WITH_TIMEOUT(stats.updates >= connectedAt + 3, 5000);
+        device::SessionStats last = stats.last;
         QVERIFY(last.framesByType.count("HI91"));
         const double rate = last.rateByType["HI91"];
         QVERIFY2(rate > 80 && rate < 120, qPrintable(QString::number(rate)));
@@ -397,7 +367,7 @@ private Q_SLOTS:
         QSignalSpy reconnected(&session, &DeviceSession::reconnected);
         QSignalSpy identity(&session, &DeviceSession::identityChanged);
         QSignalSpy errors(&session, &DeviceSession::errorOccurred);
-        StatsProbe stats(session, this);
+        StatsProbe stats(session);
         session.open(link, 115200);
         QVERIFY(waitConnected(session));
         QTRY_COMPARE(identity.size(), 1);
@@ -489,7 +459,7 @@ private Q_SLOTS:
         QVERIFY(QFile::link(first->devicePath(), link));
         DeviceSession session;
         QSignalSpy reconnected(&session, &DeviceSession::reconnected);
-        StatsProbe stats(session, this);
+        StatsProbe stats(session);
         session.open(link, 115200);
         QVERIFY(waitConnected(session));
         QTRY_VERIFY(session.store().totalAppended() > 30);
@@ -552,7 +522,7 @@ private Q_SLOTS:
         sim::PtySimulator simulator(options("1.7.1", 921600));
         QVERIFY(simulator.start(nullptr));
         DeviceSession session;
-        StatsProbe stats(session, this);
+        StatsProbe stats(session);
         session.open(simulator.devicePath(), 921600);
         QVERIFY(waitConnected(session));
         QCOMPARE(send(session, QStringLiteral("LOG HI91 ONTIME 0.001")).status, Status::Ok);
@@ -600,7 +570,7 @@ private Q_SLOTS:
         // drops what it cannot send, and the session counts them from the gaps.
         test::SimSession sim(options());
         DeviceSession &session = sim.session;
-        StatsProbe stats(session, this);
+        StatsProbe stats(session);
         sim.open(115200);
         QVERIFY(waitConnected(session));
         QTRY_VERIFY(session.store().totalAppended() > 30);
@@ -631,7 +601,7 @@ private Q_SLOTS:
     {
         test::SimSession sim(options());
         DeviceSession &session = sim.session;
-        StatsProbe stats(session, this);
+        StatsProbe stats(session);
         sim.open(115200);
         QVERIFY(waitConnected(session));
         QTRY_VERIFY(session.store().totalAppended() > 50);

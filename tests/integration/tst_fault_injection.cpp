@@ -7,6 +7,7 @@
 // that owns the session (the GUI thread in the app) never waits on the link: its event loop
 // keeps turning.
 #include "../common/raw_pty.h"
+#include "../common/session_probes.h"
 #include "../common/session_send.h"
 #include "../common/sim_session.h"
 #include "device/device_session.h"
@@ -34,6 +35,7 @@ using test::hi91Frame;
 using test::kSanitized;
 using test::RawPty;
 using test::StallWatch;
+using test::StatsProbe;
 
 namespace {
 
@@ -41,24 +43,6 @@ bool waitState(DeviceSession &s, SessionState want, int timeoutMs = 15000)
 {
     return QTest::qWaitFor([&s, want] { return s.state() == want; }, timeoutMs);
 }
-
-struct StatsProbe {
-    device::SessionStats last;
-    int updates = 0;
-    explicit StatsProbe(DeviceSession &s)
-    {
-        QObject::connect(&s, &DeviceSession::statsUpdated, &s, [this](const device::SessionStats &st) {
-            last = st;
-            ++updates;
-        });
-    }
-    // Waits (at most 3 s) for the next stats published from now on.
-    void next()
-    {
-        const int before = updates;
-        (void)QTest::qWaitFor([this, before] { return updates != before; }, 3000);
-    }
-};
 
 AsciiReply send(DeviceSession &s, const QString &cmd, int timeoutMs = 1000)
 {
@@ -225,7 +209,7 @@ private Q_SLOTS:
         sim.open(115200);
         QVERIFY(waitState(session, SessionState::Connected));
         QTRY_VERIFY(session.store().totalAppended() > 50);
-        stats.next();
+        stats.next(3000);
         const uint64_t damageBefore = stats.last.bytesSkipped + stats.last.crcErrors;
         // Someone else tells the module to run at 460800 (another tool on the same port).
         sim.withDevice([](sim::HipnucSimulator &d) { d.receive("SERIALCONFIG 460800\r\n"); });
@@ -294,7 +278,7 @@ private Q_SLOTS:
         // reading, so nothing is dropped at the pty and every frame is in the store after.
         QThread::msleep(1500);
         QCoreApplication::processEvents(); // what was queued during the stall
-        stats.next();                      // and stats made after it
+        stats.next(3000);                  // and stats made after it
         uint64_t dropped = 0;
         simulator.withDevice([&dropped](sim::HipnucSimulator &d) { dropped = d.droppedFrames(); });
         QCOMPARE(simulator.stats().chunksDropped, uint64_t(0));
