@@ -4,7 +4,7 @@
 #   scripts/screenshots.sh [BUILD_DIR]      (default build/test; writes docs/screenshots/)
 # Every workspace kind (HiPNUC serial, its configuration, HEC495, Modbus, J1939, CANopen, a
 # replay) is the GUI itself (--screenshot); every wizard page and the firmware-update dialog
-# come from tests/tst_layout (wizardPages), which checks them as it saves them.
+# come from tst_layout (wizardPages, in tests/tests_ui), which checks them as it saves them.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${1:-$root/build/test}"
@@ -51,6 +51,6 @@ for lang in en zh_CN; do
   done
 done
 # The wizards and the firmware-update dialog, every page, both sizes, both languages.
-IMUDESK_LAYOUT_SHOTS="$out" QT_QPA_PLATFORM=offscreen "$build/tests/tst_layout" wizardPages > "$scratch/wizards.log" 2>&1 \
+IMUDESK_LAYOUT_SHOTS="$out" QT_QPA_PLATFORM=offscreen "$build/tests/tests_ui" tst_layout wizardPages > "$scratch/wizards.log" 2>&1 \
   || { cat "$scratch/wizards.log"; echo "the wizard pages have layout problems (above)"; exit 1; }
 ls "$out"/wizard-*.png "$out"/firmware-*.png | sed 's/^/  /'

@@ -5,6 +5,7 @@
 // every byte that arrived before the cable went is kept (samples in the store, bytes in the
 // capture file).
 #include "../common/raw_pty.h"
+#include "../common/test_main.h"
 #include "device/device_session.h"
 #include "protocol/hipnuc/frame_decoder.h"
 #include "record/capture_reader.h"
@@ -186,5 +187,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TstCablePulled)
+IMUDESK_TEST_GUILESS_MAIN(TstCablePulled)
 #include "tst_cable_pulled.moc"

@@ -5,6 +5,7 @@
 // START, LOG MCAL STAT) starting and reporting progress; refusals and silence.
 #include "../common/session_probes.h"
 #include "../common/sim_session.h"
+#include "../common/test_main.h"
 #include "calib/gyro_cal_session.h"
 #include "calib/gyro_scale_run.h"
 #include "calib/mag_cal_session.h"
@@ -150,5 +151,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TstCalibSessions)
+IMUDESK_TEST_GUILESS_MAIN(TstCalibSessions)
 #include "tst_calib_sessions.moc"

@@ -7,6 +7,7 @@
 #include "../common/cli_process.h"
 #include "../common/cli_run.h"
 #include "../common/firmware_files.h"
+#include "../common/test_main.h"
 #include "protocol/can/can_frame.h"
 #include "protocol/ihex/firmware_image.h"
 #include "protocol/ihex/intel_hex_writer.h"
@@ -180,5 +181,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TstCanFirmwareUpdate)
+IMUDESK_TEST_GUILESS_MAIN(TstCanFirmwareUpdate)
 #include "tst_can_firmware_update.moc"

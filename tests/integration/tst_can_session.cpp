@@ -10,6 +10,7 @@
 #include "protocol/can/j1939.h"
 #include "protocol/can/j1939_config.h"
 #include "sim/can_simulator.h"
+#include "../common/test_main.h"
 
 #include <QCanBus>
 #include <QEventLoop>
@@ -458,5 +459,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TstCanSession)
+IMUDESK_TEST_GUILESS_MAIN(TstCanSession)
 #include "tst_can_session.moc"

@@ -1,6 +1,7 @@
 // imudesk-cli end to end: simulate --pty, probe, read, send, decode, exit codes.
 #include "../common/cli_run.h"
 #include "../common/golden.h"
+#include "../common/test_main.h"
 #include "protocol/hipnuc/frame_decoder.h"
 #include "protocol/hipnuc/payloads.h"
 
@@ -198,5 +199,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TstCli)
+IMUDESK_TEST_GUILESS_MAIN(TstCli)
 #include "tst_cli.moc"

@@ -3,6 +3,7 @@
 // the device refuses, the magnetometer calibration's progress and a module without a
 // magnetometer, auto level and heading reset with their checks, and the HEC495's clear.
 #include "../common/cli_run.h"
+#include "../common/test_main.h"
 #include "sim/hec495_simulator.h"
 #include "sim/hipnuc_simulator.h"
 #include "sim/pty_simulator.h"
@@ -126,5 +127,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TstCliCalibrate)
+IMUDESK_TEST_GUILESS_MAIN(TstCliCalibrate)
 #include "tst_cli_calibrate.moc"

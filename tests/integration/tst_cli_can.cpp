@@ -3,6 +3,7 @@
 // virtualcan TCP port; the simulator process owns the plugin's server.
 
 #include "../common/cli_process.h"
+#include "../common/test_main.h"
 
 #include <QCanBus>
 #include <QJsonDocument>
@@ -169,5 +170,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TstCliCan)
+IMUDESK_TEST_GUILESS_MAIN(TstCliCan)
 #include "tst_cli_can.moc"

@@ -2,6 +2,7 @@
 // verification, save and reboot, refused values, the bandwidth warning, actions,
 // export / diff / apply of a profile to several devices with a per-device report.
 #include "../common/cli_run.h"
+#include "../common/test_main.h"
 #include "settings/config_profile.h"
 #include "sim/pty_simulator.h"
 
@@ -196,5 +197,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TstCliConfig)
+IMUDESK_TEST_GUILESS_MAIN(TstCliConfig)
 #include "tst_cli_config.moc"

@@ -1,5 +1,7 @@
 // imudesk-cli magcal as a process: CSV in, the fit's result out (text and --json) with the
 // accuracy the data gives, exit codes (0 usable, 1 fail/refused or unreadable input, 2 usage).
+#include "../common/test_main.h"
+
 #include <Eigen/Geometry>
 
 #include <QJsonArray>
@@ -165,5 +167,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TstCliMagcal)
+IMUDESK_TEST_GUILESS_MAIN(TstCliMagcal)
 #include "tst_cli_magcal.moc"

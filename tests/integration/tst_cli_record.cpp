@@ -2,6 +2,7 @@
 // and a recording that hits a file size limit (ulimit -f) stops with a message and an intact file.
 #include "../common/capture_bytes.h"
 #include "../common/cli_run.h"
+#include "../common/test_main.h"
 
 #include <QFile>
 #include <QJsonArray>
@@ -216,5 +217,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TstCliRecord)
+IMUDESK_TEST_GUILESS_MAIN(TstCliRecord)
 #include "tst_cli_record.moc"

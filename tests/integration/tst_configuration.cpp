@@ -5,6 +5,7 @@
 // the module ignores the new rate or switches to another one; ERR and timeouts leave the
 // configuration showing what the device holds.
 #include "../common/sim_session.h"
+#include "../common/test_main.h"
 #include "device/device_session.h"
 #include "settings/configuration_controller.h"
 #include "settings/setting_catalog.h"
@@ -322,5 +323,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TstConfiguration)
+IMUDESK_TEST_GUILESS_MAIN(TstConfiguration)
 #include "tst_configuration.moc"

@@ -8,6 +8,7 @@
 #include "../common/session_probes.h"
 #include "../common/session_send.h"
 #include "../common/sim_session.h"
+#include "../common/test_main.h"
 #include "device/device_session.h"
 #include "io/serial_transport.h"
 #include "sim/hipnuc_simulator.h"
@@ -746,5 +747,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TstDeviceSession)
+IMUDESK_TEST_GUILESS_MAIN(TstDeviceSession)
 #include "tst_device_session.moc"

@@ -10,6 +10,7 @@
 #include "../common/session_probes.h"
 #include "../common/session_send.h"
 #include "../common/sim_session.h"
+#include "../common/test_main.h"
 #include "device/device_session.h"
 #include "protocol/hipnuc/frame_decoder.h"
 #include "protocol/hipnuc/payloads.h"
@@ -287,5 +288,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TstFaultInjection)
+IMUDESK_TEST_GUILESS_MAIN(TstFaultInjection)
 #include "tst_fault_injection.moc"

@@ -4,6 +4,7 @@
 // refused before any byte is sent, cancel (SIGINT) mid-write and resume.
 #include "../common/cli_run.h"
 #include "../common/firmware_files.h"
+#include "../common/test_main.h"
 #include "firmware/serial_byte_link.h"
 #include "protocol/ihex/firmware_image.h"
 #include "protocol/ihex/intel_hex_writer.h"
@@ -276,5 +277,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TstFirmwareUpdate)
+IMUDESK_TEST_GUILESS_MAIN(TstFirmwareUpdate)
 #include "tst_firmware_update.moc"

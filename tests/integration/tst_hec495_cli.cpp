@@ -2,6 +2,7 @@
 // "probe" telling an HEC495 from a HiPNUC module, and every "hec495" action, including a
 // planar calibration run.
 #include "../common/cli_run.h"
+#include "../common/test_main.h"
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -162,5 +163,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TstHec495Cli)
+IMUDESK_TEST_GUILESS_MAIN(TstHec495Cli)
 #include "tst_hec495_cli.moc"

@@ -7,6 +7,7 @@
 // inproc_link.h); baudChangeFollowed and autoBaudAndAddress run over a pseudo-terminal and
 // prove the real serial path (termios rates, a rate change on the port, auto-baud).
 #include "../common/inproc_link.h"
+#include "../common/test_main.h"
 #include "device/hec495_session.h"
 #include "models/latest_values_model.h"
 #include "plot/channel_history.h"
@@ -479,5 +480,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TstHec495Session)
+IMUDESK_TEST_GUILESS_MAIN(TstHec495Session)
 #include "tst_hec495_session.moc"

@@ -1,6 +1,7 @@
 // imudesk-cli modbus against `imudesk-cli simulate --pty --modbus`: info, read (decoded and raw),
 // verified writes that change the node ID and baud, scan, the HEC495, exit codes and messages.
 #include "../common/cli_run.h"
+#include "../common/test_main.h"
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -162,5 +163,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TstModbusCli)
+IMUDESK_TEST_GUILESS_MAIN(TstModbusCli)
 #include "tst_modbus_cli.moc"

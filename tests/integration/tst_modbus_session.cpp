@@ -7,6 +7,7 @@
 // against the Modbus RTU server on a pseudo-terminal and prove the real serial path (reads,
 // writes, a new node ID and a rate change on the port).
 #include "../common/inproc_link.h"
+#include "../common/test_main.h"
 #include "device/modbus_session.h"
 #include "protocol/modbus/register_map.h"
 #include "sim/modbus_serial_device.h"
@@ -292,5 +293,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TstModbusSession)
+IMUDESK_TEST_GUILESS_MAIN(TstModbusSession)
 #include "tst_modbus_session.moc"

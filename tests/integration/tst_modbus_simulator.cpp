@@ -9,6 +9,7 @@
 #include "model/attitude.h"
 #include "sim/modbus_simulator.h"
 #include "sim/motion_model.h"
+#include "../common/test_main.h"
 
 #include <QModbusRtuSerialClient>
 #include <QSerialPort>
@@ -350,5 +351,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TstModbusSimulator)
+IMUDESK_TEST_GUILESS_MAIN(TstModbusSimulator)
 #include "tst_modbus_simulator.moc"

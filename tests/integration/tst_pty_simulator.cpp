@@ -5,6 +5,7 @@
 #include "protocol/hipnuc/payloads.h"
 #include "protocol/hipnuc/frame_decoder.h"
 #include "sim/pty_simulator.h"
+#include "../common/test_main.h"
 
 #include <QElapsedTimer>
 #include <QSerialPort>
@@ -388,5 +389,5 @@ void TestPtySimulator::unpluggedCableHangsUp()
     sim.stop();
 }
 
-QTEST_GUILESS_MAIN(TestPtySimulator)
+IMUDESK_TEST_GUILESS_MAIN(TestPtySimulator)
 #include "tst_pty_simulator.moc"

@@ -4,6 +4,7 @@
 // and a missing file.
 #include "../common/capture_bytes.h"
 #include "../common/sim_session.h"
+#include "../common/test_main.h"
 #include "device/device_session.h"
 #include "protocol/hipnuc/frame_decoder.h"
 #include "protocol/hipnuc/payloads.h"
@@ -311,5 +312,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TstReplaySession)
+IMUDESK_TEST_GUILESS_MAIN(TstReplaySession)
 #include "tst_replay_session.moc"

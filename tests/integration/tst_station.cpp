@@ -10,6 +10,7 @@
 // modules run in process (StationRunner::setTransportFactory with sim::SimulatedTransport).
 #include "../common/cli_run.h"
 #include "../common/firmware_files.h"
+#include "../common/test_main.h"
 #include "protocol/ihex/intel_hex_writer.h"
 #include "reports/station_report.h"
 #include "sim/hipnuc_serial_device.h"
@@ -437,5 +438,5 @@ void TestStation::disabledStepsSayDisabled()
     QCOMPARE(g.steps[size_t(g.failedStep())].kind, StepKind::Save);
 }
 
-QTEST_MAIN(TestStation)
+IMUDESK_TEST_MAIN(TestStation)
 #include "tst_station.moc"

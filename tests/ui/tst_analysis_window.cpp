@@ -2,6 +2,7 @@
 // summary (rate, random walk, bias instability, recommended length), the interval histogram
 // and the log-log Allan chart; a file that is no recording is reported.
 #include "../common/synthetic_capture.h"
+#include "../common/test_main.h"
 #include "charts/analysis_window.h"
 
 #include <QAbstractSeries>
@@ -67,5 +68,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_MAIN(TstAnalysisWindow)
+IMUDESK_TEST_MAIN(TstAnalysisWindow)
 #include "tst_analysis_window.moc"

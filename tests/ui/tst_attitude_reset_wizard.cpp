@@ -6,6 +6,7 @@
 #include "calib/calibration_history.h"
 #include "device/device_session.h"
 #include "sim/pty_simulator.h"
+#include "../common/test_main.h"
 
 #include <QPushButton>
 #include <QStandardPaths>
@@ -94,5 +95,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_MAIN(TstAttitudeResetWizard)
+IMUDESK_TEST_MAIN(TstAttitudeResetWizard)
 #include "tst_attitude_reset_wizard.moc"

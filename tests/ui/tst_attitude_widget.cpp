@@ -3,6 +3,7 @@
 // frames, the no-data state, repaint-on-change only, and the camera controls.
 #include "attitude/attitude_widget.h"
 #include "model/attitude.h"
+#include "../common/test_main.h"
 
 #include <QApplication>
 #include <QImage>
@@ -440,5 +441,5 @@ void TestAttitudeWidget::savePicture()
     QVERIFY(render(nullptr).save(dir + QStringLiteral("/attitude_widget_nodata.png")));
 }
 
-QTEST_MAIN(TestAttitudeWidget)
+IMUDESK_TEST_MAIN(TestAttitudeWidget)
 #include "tst_attitude_widget.moc"

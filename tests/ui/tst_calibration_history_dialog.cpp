@@ -7,6 +7,7 @@
 #include "calibration/calibration_history_dialog.h"
 #include "calibration/mag_sphere_view.h"
 #include "models/calibration_history_model.h"
+#include "../common/test_main.h"
 
 #include <QDir>
 #include <QFile>
@@ -156,5 +157,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_MAIN(TstCalibrationHistoryDialog)
+IMUDESK_TEST_MAIN(TstCalibrationHistoryDialog)
 #include "tst_calibration_history_dialog.moc"

@@ -5,6 +5,7 @@
 // empty one come back as errors. Offscreen.
 #include "calib/mag_calibrator.h"
 #include "calibration/calibration_report.h"
+#include "../common/test_main.h"
 
 #include <QFile>
 #include <QJsonObject>
@@ -247,5 +248,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_MAIN(TstCalibrationReport)
+IMUDESK_TEST_MAIN(TstCalibrationReport)
 #include "tst_calibration_report.moc"

@@ -4,6 +4,7 @@
 #include "bus/can_config_panel.h"
 #include "device/can_session.h"
 #include "sim/can_simulator.h"
+#include "../common/test_main.h"
 
 #include <QApplication>
 #include <QCanBus>
@@ -162,5 +163,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_MAIN(TstCanConfigPanel)
+IMUDESK_TEST_MAIN(TstCanConfigPanel)
 #include "tst_can_config_panel.moc"

@@ -1,6 +1,7 @@
 // CanMonitorWidget offscreen: rows from the manual's PCAN-View capture (8.27), filter and
 // pause from the controls, CSV export, and the send line (valid and invalid frames).
 #include "bus/can_monitor_widget.h"
+#include "../common/test_main.h"
 
 #include <QApplication>
 #include <QLineEdit>
@@ -96,5 +97,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_MAIN(TstCanMonitorWidget)
+IMUDESK_TEST_MAIN(TstCanMonitorWidget)
 #include "tst_can_monitor_widget.moc"

@@ -7,6 +7,7 @@
 #include "charts/plot_canvas.h"
 #include "plot/axis_scaling.h"
 #include "plot/minmax_decimator.h"
+#include "../common/test_main.h"
 
 #include <QApplication>
 #include <QChart>
@@ -738,5 +739,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_MAIN(TstChartPanel)
+IMUDESK_TEST_MAIN(TstChartPanel)
 #include "tst_chart_panel.moc"

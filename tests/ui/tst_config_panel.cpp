@@ -7,6 +7,7 @@
 #include "configuration/mounting_picker.h"
 #include "configuration/mounting_tile.h"
 #include "sim/pty_simulator.h"
+#include "../common/test_main.h"
 
 #include <QApplication>
 #include <QClipboard>
@@ -245,5 +246,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_MAIN(TstConfigPanel)
+IMUDESK_TEST_MAIN(TstConfigPanel)
 #include "tst_config_panel.moc"

@@ -7,6 +7,7 @@
 #include "models/command_log_model.h"
 #include "protocol/hipnuc/ascii_command.h"
 #include "workspace/raw_bytes_view.h"
+#include "../common/test_main.h"
 
 #include <QAbstractItemModelTester>
 #include <QApplication>
@@ -369,5 +370,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_MAIN(TstConsoleTools)
+IMUDESK_TEST_MAIN(TstConsoleTools)
 #include "tst_console_tools.moc"

@@ -9,6 +9,7 @@
 #include "workspace/main_window.h"
 #include "workspace/raw_bytes_view.h"
 #include "models/latest_values_model.h"
+#include "../common/test_main.h"
 
 #include <QApplication>
 #include <QDockWidget>
@@ -205,5 +206,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_MAIN(TstDeviceWorkspace)
+IMUDESK_TEST_MAIN(TstDeviceWorkspace)
 #include "tst_device_workspace.moc"

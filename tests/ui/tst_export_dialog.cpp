@@ -2,6 +2,7 @@
 // files with the progress bar at 100 %, a time range limits the rows, and Cancel stops a
 // running export and removes the partial files.
 #include "../common/synthetic_capture.h"
+#include "../common/test_main.h"
 #include "recording/export_dialog.h"
 
 #include <QComboBox>
@@ -111,5 +112,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_MAIN(TstExportDialog)
+IMUDESK_TEST_MAIN(TstExportDialog)
 #include "tst_export_dialog.moc"

@@ -1,6 +1,7 @@
 // The firmware update dialog, offscreen, against the simulated module on a pty: file
 // information, a refused file, progress to the new version, cancel and finishing later.
 #include "../common/firmware_files.h"
+#include "../common/test_main.h"
 #include "workspace/device_workspace.h"
 #include "firmware/firmware_update_dialog.h"
 #include "workspace/main_window.h"
@@ -166,5 +167,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_MAIN(TstFirmwareUpdateDialog)
+IMUDESK_TEST_MAIN(TstFirmwareUpdateDialog)
 #include "tst_firmware_update_dialog.moc"

@@ -4,6 +4,7 @@
 // mid-download leaves the module in its bootloader where a second update finishes.
 #include "workspace/device_workspace.h"
 #include "../common/firmware_files.h"
+#include "../common/test_main.h"
 #include "firmware/firmware_update_dialog.h"
 #include "workspace/link_factory.h"
 #include "workspace/main_window.h"
@@ -181,5 +182,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_MAIN(TstFirmwareUpdateDialogCan)
+IMUDESK_TEST_MAIN(TstFirmwareUpdateDialogCan)
 #include "tst_firmware_update_dialog_can.moc"

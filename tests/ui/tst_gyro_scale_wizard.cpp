@@ -4,6 +4,7 @@
 // turn is done (CONFIG USRCAL STOP -> OK), and the result with our own estimate, kept in the
 // calibration history with its samples (an ERR run too, as a failed run).
 #include "../common/connected_session.h"
+#include "../common/test_main.h"
 #include "calib/calibration_history.h"
 #include "device/device_session.h"
 #include "calibration/gyro_scale_wizard.h"
@@ -186,5 +187,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_MAIN(TstGyroScaleWizard)
+IMUDESK_TEST_MAIN(TstGyroScaleWizard)
 #include "tst_gyro_scale_wizard.moc"

@@ -1,6 +1,7 @@
 // HeadingDial offscreen: the needle points at the heading (clockwise from north), values
 // wrap, read-outs, the no-data state, and repaints only on visible changes.
 #include "attitude/heading_dial.h"
+#include "../common/test_main.h"
 
 #include <QImage>
 #include <QTest>
@@ -110,5 +111,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_MAIN(TstHeadingDial)
+IMUDESK_TEST_MAIN(TstHeadingDial)
 #include "tst_heading_dial.moc"

@@ -12,6 +12,7 @@
 #include "calibration/hec495_calibration_wizard.h"
 #include "sim/hec495_simulator.h"
 #include "sim/pty_simulator.h"
+#include "../common/test_main.h"
 
 #include <QPushButton>
 #include <QSignalSpy>
@@ -230,5 +231,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_MAIN(TstHec495CalibrationWizard)
+IMUDESK_TEST_MAIN(TstHec495CalibrationWizard)
 #include "tst_hec495_calibration_wizard.moc"

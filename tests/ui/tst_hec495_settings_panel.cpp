@@ -4,6 +4,7 @@
 #include "configuration/hec495_settings_panel.h"
 #include "sim/hec495_simulator.h"
 #include "sim/pty_simulator.h"
+#include "../common/test_main.h"
 
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -119,5 +120,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_MAIN(TstHec495SettingsPanel)
+IMUDESK_TEST_MAIN(TstHec495SettingsPanel)
 #include "tst_hec495_settings_panel.moc"

@@ -8,6 +8,7 @@
 // presets and the bottom panels that open on demand.
 #include "../common/layout_checks.h"
 #include "../common/synthetic_capture.h"
+#include "../common/test_main.h"
 #include "calibration/attitude_reset_wizard.h"
 #include "attitude/attitude_widget.h"
 #include "device/device_session.h"
@@ -663,7 +664,7 @@ private Q_SLOTS:
     }
 };
 
-int main(int argc, char **argv)
+static int testMain(int argc, char **argv)
 {
     // A 1920x1080 screen (the offscreen platform's default is 800x600). With
     // IMUDESK_LAYOUT_SCALE=S: a screen of S times the pixels at scale factor S (a 4K monitor at
@@ -700,5 +701,7 @@ int main(int argc, char **argv)
     TstLayout test;
     return QTest::qExec(&test, argc, argv);
 }
+
+IMUDESK_TEST_CUSTOM_MAIN(testMain)
 
 #include "tst_layout.moc"

@@ -14,6 +14,7 @@
 #include "settings/configuration_controller.h"
 #include "sim/pty_simulator.h"
 #include "../common/sim_session.h"
+#include "../common/test_main.h"
 
 #include <QJsonObject>
 #include <QPushButton>
@@ -328,5 +329,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_MAIN(TstMagCalibrationWizard)
+IMUDESK_TEST_MAIN(TstMagCalibrationWizard)
 #include "tst_mag_calibration_wizard.moc"

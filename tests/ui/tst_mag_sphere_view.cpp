@@ -8,6 +8,7 @@
 #include "protocol/hipnuc/payloads.h"
 #include "protocol/stream/stream_demux.h"
 #include "sim/hipnuc_simulator.h"
+#include "../common/test_main.h"
 
 #include <QImage>
 #include <QTest>
@@ -129,5 +130,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_MAIN(TstMagSphereView)
+IMUDESK_TEST_MAIN(TstMagSphereView)
 #include "tst_mag_sphere_view.moc"

@@ -1,6 +1,7 @@
 // MainWindow offscreen against a simulated HI14 on a pseudo-terminal: live values,
 // identity and rates in the status bar, the console, screenshots, run-time language.
 #include "../common/layout_checks.h"
+#include "../common/test_main.h"
 #include "recording/export_dialog.h"
 #include "recording/recording_controls.h"
 #include "workspace/connection_bar.h"
@@ -593,5 +594,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_MAIN(TstMainWindow)
+IMUDESK_TEST_MAIN(TstMainWindow)
 #include "tst_main_window.moc"

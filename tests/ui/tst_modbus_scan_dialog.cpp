@@ -3,6 +3,7 @@
 #include "device/modbus_session.h"
 #include "bus/modbus_scan_dialog.h"
 #include "sim/modbus_simulator.h"
+#include "../common/test_main.h"
 
 #include <QApplication>
 #include <QProgressBar>
@@ -61,5 +62,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_MAIN(TstModbusScanDialog)
+IMUDESK_TEST_MAIN(TstModbusScanDialog)
 #include "tst_modbus_scan_dialog.moc"

@@ -9,6 +9,7 @@
 #include "workspace/preferences.h"
 #include "workspace/preferences_dialog.h"
 #include "recording/recording_controls.h"
+#include "../common/test_main.h"
 
 #include <QApplication>
 #include <QCheckBox>
@@ -176,5 +177,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_MAIN(TstPreferences)
+IMUDESK_TEST_MAIN(TstPreferences)
 #include "tst_preferences.moc"

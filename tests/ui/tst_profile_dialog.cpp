@@ -5,6 +5,7 @@
 #include "charts/bandwidth_calculator.h"
 #include "configuration/profile_dialog.h"
 #include "sim/pty_simulator.h"
+#include "../common/test_main.h"
 
 #include <QFile>
 #include <QSignalSpy>
@@ -162,5 +163,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_MAIN(TstProfileDialog)
+IMUDESK_TEST_MAIN(TstProfileDialog)
 #include "tst_profile_dialog.moc"

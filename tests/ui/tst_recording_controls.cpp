@@ -3,6 +3,7 @@
 // file size limit (the reason is shown and recordingFailed emitted).
 #include "../common/capture_bytes.h"
 #include "../common/raw_pty.h"
+#include "../common/test_main.h"
 #include "device/device_session.h"
 #include "record/capture_exporter.h"
 #include "record/capture_reader.h"
@@ -235,5 +236,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_MAIN(TstRecordingControls)
+IMUDESK_TEST_MAIN(TstRecordingControls)
 #include "tst_recording_controls.moc"

@@ -4,6 +4,7 @@
 #include "device/modbus_session.h"
 #include "bus/register_browser.h"
 #include "sim/modbus_simulator.h"
+#include "../common/test_main.h"
 
 #include <QAbstractItemModelTester>
 #include <QApplication>
@@ -77,5 +78,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_MAIN(TstRegisterBrowser)
+IMUDESK_TEST_MAIN(TstRegisterBrowser)
 #include "tst_register_browser.moc"

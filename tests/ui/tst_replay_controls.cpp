@@ -1,6 +1,7 @@
 // ReplayControls offscreen on a ReplaySession of a generated capture: play/pause, speed,
 // seeking on the timeline, loop, and the position label.
 #include "../common/synthetic_capture.h"
+#include "../common/test_main.h"
 #include "record/replay_session.h"
 #include "recording/replay_controls.h"
 
@@ -94,5 +95,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_MAIN(TstReplayControls)
+IMUDESK_TEST_MAIN(TstReplayControls)
 #include "tst_replay_controls.moc"

@@ -15,6 +15,7 @@
 // data" failures (issue 33). The workspace the main window opens for a module still goes
 // through a pseudo-terminal, and bench_station measures the tray over pseudo-terminals.
 #include "../common/layout_checks.h"
+#include "../common/test_main.h"
 #include "sim/pty_simulator.h"
 #include "station/plan_editor_dialog.h"
 #include "station/station_model.h"
@@ -558,7 +559,7 @@ private Q_SLOTS:
     }
 };
 
-int main(int argc, char **argv)
+static int testMain(int argc, char **argv)
 {
     // A 1920x1080 screen (the offscreen platform's default is 800x600), as tst_layout has.
     QTemporaryDir dir;
@@ -579,5 +580,7 @@ int main(int argc, char **argv)
     TstStationView test;
     return QTest::qExec(&test, argc, argv);
 }
+
+IMUDESK_TEST_CUSTOM_MAIN(testMain)
 
 #include "tst_station_view.moc"

@@ -13,6 +13,7 @@
 #include "workspace/language_switcher.h"
 #include "workspace/main_window.h"
 #include "workspace/preferences_dialog.h"
+#include "../common/test_main.h"
 
 #include <QAbstractButton>
 #include <QAbstractItemView>
@@ -275,5 +276,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_MAIN(TstTranslations)
+IMUDESK_TEST_MAIN(TstTranslations)
 #include "tst_translations.moc"

@@ -3,6 +3,7 @@
 // interval histogram and frames lost from system_time gaps.
 #include "record/allan_deviation.h"
 #include "record/sample_analyzer.h"
+#include "../common/test_main.h"
 
 #include <QTest>
 
@@ -160,5 +161,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TstAllanDeviation)
+IMUDESK_TEST_GUILESS_MAIN(TstAllanDeviation)
 #include "tst_allan_deviation.moc"

@@ -1,6 +1,7 @@
 // Command builders: every command of both manuals, with their ranges.
 #include "model/mounting.h"
 #include "protocol/hipnuc/ascii_command.h"
+#include "../common/test_main.h"
 
 #include <QTest>
 
@@ -174,5 +175,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TstAsciiCommand)
+IMUDESK_TEST_GUILESS_MAIN(TstAsciiCommand)
 #include "tst_ascii_command.moc"

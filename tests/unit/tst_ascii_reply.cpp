@@ -1,6 +1,7 @@
 // Reply parsing: OK, ERR, KEY=VALUE, echo, LOG VERSION identity.
 #include "model/device_identity.h"
 #include "protocol/hipnuc/ascii_reply.h"
+#include "../common/test_main.h"
 
 #include <QTest>
 
@@ -120,5 +121,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TstAsciiReply)
+IMUDESK_TEST_GUILESS_MAIN(TstAsciiReply)
 #include "tst_ascii_reply.moc"

@@ -3,6 +3,7 @@
 // Euler conventions, the ENU <-> NED conversion and the heading.
 #include "model/attitude.h"
 #include "sim/motion_model.h"
+#include "../common/test_main.h"
 
 #include <QTest>
 
@@ -429,5 +430,5 @@ void TestAttitude::agreesWithSimulator()
     }
 }
 
-QTEST_APPLESS_MAIN(TestAttitude)
+IMUDESK_TEST_APPLESS_MAIN(TestAttitude)
 #include "tst_attitude.moc"

@@ -3,6 +3,7 @@
 #include "calib/calibration_history.h"
 #include "calib/mag_cal_result.h"
 #include "models/calibration_history_model.h"
+#include "../common/test_main.h"
 
 #include <QAbstractItemModelTester>
 #include <QFile>
@@ -130,5 +131,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TstCalibrationHistory)
+IMUDESK_TEST_GUILESS_MAIN(TstCalibrationHistory)
 #include "tst_calibration_history.moc"

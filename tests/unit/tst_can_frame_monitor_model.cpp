@@ -1,6 +1,7 @@
 // The CAN frame monitor model: one row per identifier with count, cycle time, last data and
 // meaning (the manual's 8.27 PCAN-View capture as input), filter, pause, bound, CSV export.
 #include "models/can_frame_monitor_model.h"
+#include "../common/test_main.h"
 
 #include <QAbstractItemModelTester>
 #include <QBuffer>
@@ -119,5 +120,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TstCanFrameMonitorModel)
+IMUDESK_TEST_GUILESS_MAIN(TstCanFrameMonitorModel)
 #include "tst_can_frame_monitor_model.moc"

@@ -11,6 +11,7 @@
 #include "protocol/can/j1939_config.h"
 #include "protocol/can/sdo.h"
 #include "protocol/can/sdo_segmented_download.h"
+#include "../common/test_main.h"
 
 #include <QTest>
 
@@ -537,5 +538,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TstCanProtocol)
+IMUDESK_TEST_GUILESS_MAIN(TstCanProtocol)
 #include "tst_can_protocol.moc"

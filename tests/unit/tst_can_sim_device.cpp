@@ -7,6 +7,7 @@
 #include "protocol/can/j1939_config.h"
 #include "protocol/can/sdo.h"
 #include "sim/can_sim_device.h"
+#include "../common/test_main.h"
 
 #include <QTest>
 
@@ -170,5 +171,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TstCanSimDevice)
+IMUDESK_TEST_GUILESS_MAIN(TstCanSimDevice)
 #include "tst_can_sim_device.moc"

@@ -7,6 +7,7 @@
 #include "sim/can_sim_device.h"
 #include "sim/kboot_bootloader.h"
 #include "sim/simulated_can_frame_link.h"
+#include "../common/test_main.h"
 
 #include <QTest>
 
@@ -321,5 +322,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TstCanUpdateFlow)
+IMUDESK_TEST_GUILESS_MAIN(TstCanUpdateFlow)
 #include "tst_can_update_flow.moc"

@@ -2,6 +2,7 @@
 // and import of the vendor's HI91 CSV: an export re-imports to the same values, and a
 // malformed line is reported with its line number.
 #include "../common/synthetic_capture.h"
+#include "../common/test_main.h"
 #include "format/sample_json.h"
 #include "record/capture_decoder.h"
 #include "record/capture_exporter.h"
@@ -384,5 +385,5 @@ private:
     static const char *golden_rmc() { return "$GPRMC,235952.00,A,3112.5000,N,12127.5000,E,0.0,0.0,141125,0.0,E,A*3B"; }
 };
 
-QTEST_GUILESS_MAIN(TstCaptureExport)
+IMUDESK_TEST_GUILESS_MAIN(TstCaptureExport)
 #include "tst_capture_export.moc"

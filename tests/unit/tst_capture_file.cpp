@@ -6,6 +6,7 @@
 #include "record/capture_reader.h"
 #include "record/capture_writer.h"
 #include "record/crc32.h"
+#include "../common/test_main.h"
 
 #include <QBuffer>
 #include <QFile>
@@ -437,5 +438,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TstCaptureFile)
+IMUDESK_TEST_GUILESS_MAIN(TstCaptureFile)
 #include "tst_capture_file.moc"

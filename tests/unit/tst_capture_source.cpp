@@ -10,6 +10,7 @@
 #include "record/capture_reader.h"
 #include "record/capture_source.h"
 #include "record/file_analysis.h"
+#include "../common/test_main.h"
 
 #include <QFile>
 #include <QTemporaryDir>
@@ -205,5 +206,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TstCaptureSource)
+IMUDESK_TEST_GUILESS_MAIN(TstCaptureSource)
 #include "tst_capture_source.moc"

@@ -2,6 +2,7 @@
 // clock gaps and restarts, range queries against a linear scan.
 #include "plot/channel_catalog.h"
 #include "plot/channel_history.h"
+#include "../common/test_main.h"
 
 #include <QTest>
 
@@ -539,5 +540,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TstChannelHistory)
+IMUDESK_TEST_GUILESS_MAIN(TstChannelHistory)
 #include "tst_channel_history.moc"

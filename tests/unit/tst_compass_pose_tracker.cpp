@@ -2,6 +2,7 @@
 // 12-point and 12-point small-tilt methods, the planar targets, collection from the 0x66
 // valid-point count, and the FitErr rule (> 10: calibrate again).
 #include "calib/compass_pose_tracker.h"
+#include "../common/test_main.h"
 
 #include <QTest>
 
@@ -118,5 +119,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TstCompassPoseTracker)
+IMUDESK_TEST_GUILESS_MAIN(TstCompassPoseTracker)
 #include "tst_compass_pose_tracker.moc"

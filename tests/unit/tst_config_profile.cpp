@@ -1,5 +1,6 @@
 // Configuration profiles: JSON round trip, the loader's refusals, diff against a device.
 #include "settings/config_profile.h"
+#include "../common/test_main.h"
 
 #include <QTemporaryDir>
 #include <QTest>
@@ -108,5 +109,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TstConfigProfile)
+IMUDESK_TEST_GUILESS_MAIN(TstConfigProfile)
 #include "tst_config_profile.moc"

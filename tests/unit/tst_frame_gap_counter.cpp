@@ -1,6 +1,7 @@
 // FrameGapCounter: frames lost from gaps in the device timestamps, with ms rounding
 // and jitter, rate changes, device resets and reconfigured output.
 #include "device/frame_gap_counter.h"
+#include "../common/test_main.h"
 
 #include <QTest>
 
@@ -335,5 +336,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TstFrameGapCounter)
+IMUDESK_TEST_GUILESS_MAIN(TstFrameGapCounter)
 #include "tst_frame_gap_counter.moc"

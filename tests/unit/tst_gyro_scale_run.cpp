@@ -6,6 +6,7 @@
 #include "protocol/hipnuc/payloads.h"
 #include "protocol/stream/stream_demux.h"
 #include "sim/hipnuc_simulator.h"
+#include "../common/test_main.h"
 
 #include <Eigen/Geometry>
 
@@ -250,5 +251,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TstGyroScaleRun)
+IMUDESK_TEST_GUILESS_MAIN(TstGyroScaleRun)
 #include "tst_gyro_scale_run.moc"

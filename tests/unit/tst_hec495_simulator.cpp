@@ -5,6 +5,7 @@
 #include "protocol/witlink/frame_decoder.h"
 #include "protocol/witlink/reply.h"
 #include "sim/hec495_simulator.h"
+#include "../common/test_main.h"
 
 #include <QTest>
 
@@ -401,5 +402,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TstHec495Simulator)
+IMUDESK_TEST_GUILESS_MAIN(TstHec495Simulator)
 #include "tst_hec495_simulator.moc"

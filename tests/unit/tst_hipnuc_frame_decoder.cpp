@@ -1,5 +1,6 @@
 // The streaming frame decoder: golden frame, chunking, garbage, corruption, bounds.
 #include "../common/golden.h"
+#include "../common/test_main.h"
 #include "protocol/hipnuc/crc16.h"
 #include "protocol/hipnuc/frame_decoder.h"
 #include "protocol/hipnuc/payloads.h"
@@ -239,5 +240,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TstFrameDecoder)
+IMUDESK_TEST_GUILESS_MAIN(TstFrameDecoder)
 #include "tst_hipnuc_frame_decoder.moc"

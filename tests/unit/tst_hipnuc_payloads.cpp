@@ -1,5 +1,6 @@
 // Payload codecs: the manual's HI91 example, round trips of every payload, HI83 bitmaps.
 #include "../common/golden.h"
+#include "../common/test_main.h"
 #include "model/main_status.h"
 #include "protocol/hipnuc/payloads.h"
 
@@ -322,5 +323,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TstPayloads)
+IMUDESK_TEST_GUILESS_MAIN(TstPayloads)
 #include "tst_hipnuc_payloads.moc"

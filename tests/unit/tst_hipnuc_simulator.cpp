@@ -14,6 +14,7 @@
 #include "protocol/stream/stream_demux.h"
 #include "sim/hipnuc_simulator.h"
 #include "sim/simulated_byte_link.h"
+#include "../common/test_main.h"
 
 #include <QTest>
 
@@ -1697,5 +1698,5 @@ void TestHipnucSimulator::faultsText()
              error.c_str());
 }
 
-QTEST_GUILESS_MAIN(TestHipnucSimulator)
+IMUDESK_TEST_GUILESS_MAIN(TestHipnucSimulator)
 #include "tst_hipnuc_simulator.moc"

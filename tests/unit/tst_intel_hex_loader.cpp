@@ -2,6 +2,7 @@
 // missing end record; every error names its line (hipnuc-protocol-notes.md 3.4).
 #include "protocol/ihex/intel_hex_loader.h"
 #include "protocol/ihex/intel_hex_writer.h"
+#include "../common/test_main.h"
 
 #include <QTemporaryDir>
 #include <QTest>
@@ -212,5 +213,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TstIntelHexLoader)
+IMUDESK_TEST_GUILESS_MAIN(TstIntelHexLoader)
 #include "tst_intel_hex_loader.moc"

@@ -5,6 +5,7 @@
 #include "protocol/kboot/status_code.h"
 #include "sim/hipnuc_simulator.h"
 #include "sim/simulated_byte_link.h"
+#include "../common/test_main.h"
 
 #include <QTest>
 
@@ -118,5 +119,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TstKbootBootloader)
+IMUDESK_TEST_GUILESS_MAIN(TstKbootBootloader)
 #include "tst_kboot_bootloader.moc"

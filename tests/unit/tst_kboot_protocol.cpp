@@ -4,6 +4,7 @@
 #include "protocol/kboot/packet.h"
 #include "protocol/kboot/packet_decoder.h"
 #include "protocol/kboot/status_code.h"
+#include "../common/test_main.h"
 
 #include <QRandomGenerator>
 #include <QTest>
@@ -171,5 +172,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TstKbootProtocol)
+IMUDESK_TEST_GUILESS_MAIN(TstKbootProtocol)
 #include "tst_kboot_protocol.moc"

@@ -1,5 +1,6 @@
 // LatestValuesModel: the manual's HI91 example, change detection, missing fields.
 #include "../common/golden.h"
+#include "../common/test_main.h"
 #include "model/main_status.h"
 #include "models/latest_values_model.h"
 #include "protocol/hipnuc/payloads.h"
@@ -316,5 +317,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TstLatestValuesModel)
+IMUDESK_TEST_GUILESS_MAIN(TstLatestValuesModel)
 #include "tst_latest_values_model.moc"

@@ -4,6 +4,7 @@
 // end to end in tst_session_engine, tst_device_session and tst_hec495_session.
 #include "device/baud_scan.h"
 #include "device/reconnector.h"
+#include "../common/test_main.h"
 
 #include <QElapsedTimer>
 #include <QTest>
@@ -214,5 +215,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TstLinkHelpers)
+IMUDESK_TEST_GUILESS_MAIN(TstLinkHelpers)
 #include "tst_link_helpers.moc"

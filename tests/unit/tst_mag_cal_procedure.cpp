@@ -5,6 +5,7 @@
 #include "calib/mag_cal_procedure.h"
 #include "protocol/stream/stream_demux.h"
 #include "sim/hipnuc_simulator.h"
+#include "../common/test_main.h"
 
 #include <QTest>
 
@@ -221,5 +222,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TstMagCalProcedure)
+IMUDESK_TEST_GUILESS_MAIN(TstMagCalProcedure)
 #include "tst_mag_cal_procedure.moc"

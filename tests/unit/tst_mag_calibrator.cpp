@@ -7,6 +7,7 @@
 #include "calib/mag_calibrator.h"
 #include "calib/mag_fit_uncertainty.h"
 #include "calib/sphere_coverage.h"
+#include "../common/test_main.h"
 
 #include <Eigen/Geometry>
 
@@ -439,5 +440,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TstMagCalibrator)
+IMUDESK_TEST_GUILESS_MAIN(TstMagCalibrator)
 #include "tst_mag_calibrator.moc"

@@ -2,6 +2,7 @@
 // (step 1), |B| varying by more than 10 uT between orientations means spatial
 // interference (step 3).
 #include "calib/mag_environment_check.h"
+#include "../common/test_main.h"
 
 #include <QTest>
 
@@ -48,5 +49,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TstMagEnvironmentCheck)
+IMUDESK_TEST_GUILESS_MAIN(TstMagEnvironmentCheck)
 #include "tst_mag_environment_check.moc"

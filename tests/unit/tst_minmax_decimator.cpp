@@ -1,6 +1,7 @@
 // MinMaxDecimator: output bound, spikes survive, exact agreement with a brute-force
 // per-column reference on random data (gaps, restarts, missing fields, ties), breaks.
 #include "plot/minmax_decimator.h"
+#include "../common/test_main.h"
 
 #include <QTest>
 
@@ -426,5 +427,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TstMinMaxDecimator)
+IMUDESK_TEST_GUILESS_MAIN(TstMinMaxDecimator)
 #include "tst_minmax_decimator.moc"

@@ -3,6 +3,7 @@
 #include "protocol/modbus/identity_block.h"
 #include "protocol/modbus/register_decoder.h"
 #include "sim/modbus_device_model.h"
+#include "../common/test_main.h"
 
 #include <QModbusPdu>
 #include <QtTest>
@@ -171,5 +172,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TstModbusDeviceModel)
+IMUDESK_TEST_GUILESS_MAIN(TstModbusDeviceModel)
 #include "tst_modbus_device_model.moc"

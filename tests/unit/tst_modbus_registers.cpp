@@ -5,6 +5,7 @@
 #include "protocol/modbus/identity_block.h"
 #include "protocol/modbus/register_decoder.h"
 #include "protocol/modbus/rtu_adu.h"
+#include "../common/test_main.h"
 
 #include <QRandomGenerator>
 #include <QtTest>
@@ -365,5 +366,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TstModbusRegisters)
+IMUDESK_TEST_GUILESS_MAIN(TstModbusRegisters)
 #include "tst_modbus_registers.moc"

@@ -7,6 +7,7 @@
 #include "sim/hipnuc_simulator.h"
 #include "sim/motion_model.h"
 #include "sim/sensor_model.h"
+#include "../common/test_main.h"
 
 #include <QTest>
 
@@ -510,5 +511,5 @@ void TestMotionModel::worldFrameNwu()
              qPrintable(QStringLiteral("%1 %2 %3").arg(earth.x()).arg(earth.y()).arg(earth.z())));
 }
 
-QTEST_GUILESS_MAIN(TestMotionModel)
+IMUDESK_TEST_GUILESS_MAIN(TestMotionModel)
 #include "tst_motion_model.moc"

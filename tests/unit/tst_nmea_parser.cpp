@@ -1,6 +1,7 @@
 // NMEA GGA/RMC/SXT with checksum: the manual's RMC example, a GGA, HiPNUC's SXT, error
 // cases, and each sentence as a sample (protocol/nmea/nmea_sample.h).
 #include "../common/golden.h"
+#include "../common/test_main.h"
 #include "protocol/nmea/nmea_parser.h"
 #include "protocol/nmea/nmea_sample.h"
 
@@ -239,5 +240,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TstNmea)
+IMUDESK_TEST_GUILESS_MAIN(TstNmea)
 #include "tst_nmea_parser.moc"

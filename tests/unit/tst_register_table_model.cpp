@@ -3,6 +3,7 @@
 // the reads that cover a map.
 #include "models/register_table_model.h"
 #include "protocol/modbus/rtu_adu.h"
+#include "../common/test_main.h"
 
 #include <QAbstractItemModelTester>
 #include <QSignalSpy>
@@ -112,5 +113,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TstRegisterTableModel)
+IMUDESK_TEST_GUILESS_MAIN(TstRegisterTableModel)
 #include "tst_register_table_model.moc"

@@ -1,6 +1,7 @@
 // Sample CSV files (header row required; the mag_x, mag_y, mag_z columns in uT for
 // `imudesk-cli magcal`): accepted forms, rejected forms with the line named, round trip.
 #include "calib/sample_csv.h"
+#include "../common/test_main.h"
 
 #include <QTest>
 
@@ -75,5 +76,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TstSampleCsv)
+IMUDESK_TEST_GUILESS_MAIN(TstSampleCsv)
 #include "tst_sample_csv.moc"

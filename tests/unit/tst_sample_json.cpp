@@ -1,5 +1,6 @@
 // JSON Lines output of decoded samples and the decode summary.
 #include "../common/golden.h"
+#include "../common/test_main.h"
 #include "format/sample_json.h"
 #include "protocol/hipnuc/frame_decoder.h"
 #include "protocol/hipnuc/payloads.h"
@@ -111,5 +112,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TstSampleJson)
+IMUDESK_TEST_GUILESS_MAIN(TstSampleJson)
 #include "tst_sample_json.moc"

@@ -1,6 +1,7 @@
 // The bounded sample store (core/device/sample_store.h): the ring, and the latest value of
 // each field when frames carry different fields (what the values table shows).
 #include "device/sample_store.h"
+#include "../common/test_main.h"
 
 #include <QTest>
 
@@ -64,5 +65,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TstSampleStore)
+IMUDESK_TEST_GUILESS_MAIN(TstSampleStore)
 #include "tst_sample_store.moc"

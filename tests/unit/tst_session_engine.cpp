@@ -12,6 +12,7 @@
 #include "sim/hipnuc_serial_device.h"
 #include "sim/modbus_serial_device.h"
 #include "sim/simulated_transport.h"
+#include "../common/test_main.h"
 
 #include <QSignalSpy>
 #include <QTest>
@@ -211,5 +212,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TstSessionEngine)
+IMUDESK_TEST_GUILESS_MAIN(TstSessionEngine)
 #include "tst_session_engine.moc"

@@ -6,6 +6,7 @@
 #include "settings/device_configuration.h"
 #include "settings/mounting_choice.h"
 #include "settings/setting_catalog.h"
+#include "../common/test_main.h"
 
 #include <QTest>
 
@@ -337,5 +338,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TstSettingsCatalog)
+IMUDESK_TEST_GUILESS_MAIN(TstSettingsCatalog)
 #include "tst_settings_catalog.moc"

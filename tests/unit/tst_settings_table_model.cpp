@@ -2,6 +2,7 @@
 // firmware edition), pending values validated and dropped once the device holds them.
 #include "models/settings_table_model.h"
 #include "settings/setting_catalog.h"
+#include "../common/test_main.h"
 
 #include <QAbstractItemModelTester>
 #include <QSignalSpy>
@@ -101,5 +102,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TstSettingsTableModel)
+IMUDESK_TEST_GUILESS_MAIN(TstSettingsTableModel)
 #include "tst_settings_table_model.moc"

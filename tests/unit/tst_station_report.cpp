@@ -3,6 +3,7 @@
 // values; the PDF is written whole or not at all (an unwritable folder gives a message and no
 // file). IMUDESK_REPORT_PNG=FILE also saves the first page as a picture, to look at.
 #include "reports/station_report.h"
+#include "../common/test_main.h"
 
 #include <QAbstractTextDocumentLayout>
 #include <QFile>
@@ -89,5 +90,5 @@ void TestStationReport::writesPdfOrSaysWhy()
     QVERIFY(!QFile::exists(bad));
 }
 
-QTEST_MAIN(TestStationReport)
+IMUDESK_TEST_MAIN(TestStationReport)
 #include "tst_station_report.moc"

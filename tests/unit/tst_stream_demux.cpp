@@ -1,5 +1,6 @@
 // One UART stream carries binary frames, NMEA sentences and ASCII replies.
 #include "../common/golden.h"
+#include "../common/test_main.h"
 #include "protocol/hipnuc/frame_decoder.h"
 #include "protocol/nmea/nmea_parser.h"
 #include "protocol/stream/stream_demux.h"
@@ -142,5 +143,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TstStreamDemux)
+IMUDESK_TEST_GUILESS_MAIN(TstStreamDemux)
 #include "tst_stream_demux.moc"

@@ -6,6 +6,7 @@
 #include "station/run_folder.h"
 #include "station/station_result.h"
 #include "station/test_plan.h"
+#include "../common/test_main.h"
 
 #include <QDir>
 #include <QFile>
@@ -194,5 +195,5 @@ void TestTestPlan::runFolderAppends()
     QVERIFY2(error.contains(QStringLiteral("another plan")), qPrintable(error));
 }
 
-QTEST_GUILESS_MAIN(TestTestPlan)
+IMUDESK_TEST_GUILESS_MAIN(TestTestPlan)
 #include "tst_test_plan.moc"

@@ -7,6 +7,7 @@
 #include "protocol/kboot/packet.h"
 #include "sim/hipnuc_simulator.h"
 #include "sim/simulated_byte_link.h"
+#include "../common/test_main.h"
 
 #include <QTest>
 
@@ -246,5 +247,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TstUpdateFlow)
+IMUDESK_TEST_GUILESS_MAIN(TstUpdateFlow)
 #include "tst_update_flow.moc"

@@ -5,6 +5,7 @@
 #include "protocol/witlink/commands.h"
 #include "protocol/witlink/frame_decoder.h"
 #include "protocol/witlink/reply.h"
+#include "../common/test_main.h"
 
 #include <QRandomGenerator>
 #include <QTest>
@@ -399,5 +400,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TstWitlinkCodec)
+IMUDESK_TEST_GUILESS_MAIN(TstWitlinkCodec)
 #include "tst_witlink_codec.moc"
