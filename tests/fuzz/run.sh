@@ -51,8 +51,8 @@ BUILD_JOBS=${BUILD_JOBS:-2}
 # --- configure and build ----------------------------------------------------
 if [ ! -f "$BUILD_DIR/CMakeCache.txt" ]; then
     echo "== configuring $BUILD_DIR (clang, IMUDESK_FUZZ=ON)"
-    # -O1 (the level libFuzzer's authors use) with line tables for the reports, and the
-    # asserts on (no NDEBUG): about half the compile time of the default -O2 -g.
+    # -O1 (the level libFuzzer's authors use) with line tables for the reports instead of the
+    # default -O2 -g, and the asserts on (no NDEBUG).
     CC=clang CXX=clang++ cmake -S "$SRC_DIR" -B "$BUILD_DIR" -G Ninja -DIMUDESK_FUZZ=ON \
         -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE="-O1 -gline-tables-only" \
         -DIMUDESK_BUILD_GUI=OFF -DIMUDESK_BUILD_TESTS=ON -DIMUDESK_BUILD_BENCH=OFF || exit 2
