@@ -67,9 +67,9 @@ CanRequestResult waitResult(CanSession &s, quint64 id, int timeoutMs = 5000)
             done = true;
         }
     });
-    QTest::qWaitFor([&done] { return done; }, timeoutMs);
+    const bool finished = QTest::qWaitFor([&done] { return done; }, timeoutMs);
     QObject::disconnect(c);
-    if (!done)
+    if (!finished)
         out.message = QStringLiteral("no result");
     return out;
 }
