@@ -138,35 +138,50 @@ fi
 # The fresh-root check: fails when a build, test or runtime dependency is missing from
 # scripts/debian-packages.txt (the host may have it installed by hand), naming it, or when the
 # Debian package lacks a dependency: it is installed with apt-get into the bare root before the
-# list, and imudesk and imudesk-cli run from /usr/bin. Then the check's own safety test: a run
+# list, and imudesk and imudesk-cli run from /usr/bin. Before it, the check's own safety test: a run
 # killed during its package install leaves the host's /dev untouched and its root removable.
-# Both mostly wait on tar, apt, dpkg and the mirror, so they run in the background, one after the
-# other (they share the cache and the roots' folder), each into its own log, printed when it is
-# waited for: the safety test needs no build and runs beside the release build, the check
-# installs the package made from that build and runs beside the sanitizer build; neither runs
-# beside a suite or the benchmarks. A run that stops early stops them too (SIGTERM: the check
+# Both mostly wait on tar, apt, dpkg and the mirror (together about one core for two minutes),
+# so they run in the background, one after the other (they share the cache and the roots'
+# folder), each into its own log, printed when they are waited for. They run beside fuzzing,
+# whose length is set in seconds per parser whatever else runs, so they cost the run no time
+# there (beside a build they cost the build their CPU; beside a suite or the benchmarks they
+# would disturb what those measure). A run that stops early stops them too (SIGTERM: the check
 # removes its root).
-in_background() { # name (log: build/NAME.log), command...
-  background_name="$1"; shift
+background_checks() { # the safety test, then the check of the package made from build/test
   if [ -n "${IMUDESK_IN_FRESH_ROOT:-}" ]; then
-    echo "skipped: this run is itself inside the fresh root check's root" > "$root/build/$background_name.log"
+    for name in fresh-root-safety fresh-root-check; do
+      echo "skipped: this run is itself inside the fresh root check's root" > "$root/build/$name.log"
+    done
     return 0
   fi
-  "${as_root[@]}" "$@" > "$root/build/$background_name.log" 2>&1 &
+  (
+    child=""
+    trap '[ -z "$child" ] || kill -TERM "$child" 2>/dev/null; wait; exit 143' TERM
+    "${as_root[@]}" "$here/test-check-fresh-debian.sh" > "$root/build/fresh-root-safety.log" 2>&1 &
+    child=$!
+    wait "$child" || exit 1
+    "${as_root[@]}" "$here/check-fresh-debian.sh" --build "$root/build/test" > "$root/build/fresh-root-check.log" 2>&1 &
+    child=$!
+    wait "$child" || exit 2
+  ) &
   background_pid=$!
 }
-background_pid="" background_name=""
-wait_background() { # prints its log; fails the run when it failed
-  local rc=0
+background_pid=""
+wait_background_checks() { # prints their logs; fails the run when one failed
+  local rc=0 name
   if [ -n "$background_pid" ]; then
     wait "$background_pid" || rc=$?
   fi
   background_pid=""
-  sed 's/^/   /' "$root/build/$background_name.log"
-  if [ "$rc" -ne 0 ]; then
-    echo "!! $background_name failed (above; log: build/$background_name.log)" >&2
-    exit 1
-  fi
+  for name in fresh-root-safety fresh-root-check; do
+    echo "   -- $name (log: build/$name.log)"
+    [ ! -f "$root/build/$name.log" ] || sed 's/^/   /' "$root/build/$name.log"
+  done
+  case "$rc" in
+    0) ;;
+    1) echo "!! the fresh-root check's safety test failed (above; log: build/fresh-root-safety.log)" >&2; exit 1 ;;
+    *) echo "!! the fresh-root check failed (above; log: build/fresh-root-check.log)" >&2; exit 1 ;;
+  esac
 }
 trap '[ -z "$background_pid" ] || kill -TERM "$background_pid" 2>/dev/null; phase_summary' EXIT
 # The suites run eight tests at a time on two cores: most of them wait on a simulated device's
@@ -180,20 +195,15 @@ run_suite() { # build dir, extra ctest args...
     --repeat until-pass:2 "$@")
 }
 
-phase "build (release, tests and benchmarks; beside it: the fresh-root check's safety test)"
+phase "build (release, tests and benchmarks)"
 mkdir -p "$root/build"
-in_background fresh-root-safety "$here/test-check-fresh-debian.sh"
 configure_and_build "$root/build/test" Release -DIMUDESK_BUILD_TESTS=ON -DIMUDESK_BUILD_BENCH=ON
 phase "Debian package: build it and lint it (cpack from build/test, lintian)"
 # The binaries of the build above, no second build: build/test/package/imudesk_<version>_amd64.deb.
 make_package "$root/build/test"
 lint_package "$root/build/test"
 
-phase "the fresh-root check's safety test: a check killed midway leaves the host's /dev as it was (ran beside the build)"
-wait_background
-
-phase "build with AddressSanitizer and UndefinedBehaviorSanitizer (beside it: the fresh Debian 12 root check)"
-in_background fresh-root-check "$here/check-fresh-debian.sh" --build "$root/build/test"
+phase "build with AddressSanitizer and UndefinedBehaviorSanitizer"
 # The whole suite, GUI tests included, without debug information. The instrumented build is the
 # longest phase: the tests, the UI and the applications compile at -O0 (IMUDESK_TEST_OPTIMIZE),
 # in about 0.7 of -O1's time; the core stays at -O1 (IMUDESK_CORE_OPTIMIZE), as its Eigen maths
@@ -202,9 +212,6 @@ in_background fresh-root-check "$here/check-fresh-debian.sh" --build "$root/buil
 configure_and_build "$root/build/asan" Release -DCMAKE_CXX_FLAGS_RELEASE="-O0 -DNDEBUG" \
   -DIMUDESK_TEST_OPTIMIZE=-O0 -DIMUDESK_CORE_OPTIMIZE=-O1 -DIMUDESK_SANITIZE=ON \
   -DIMUDESK_BUILD_GUI=ON -DIMUDESK_BUILD_TESTS=ON -DIMUDESK_BUILD_BENCH=OFF
-phase "fresh Debian 12 root: the package list alone configures the project; the .deb installs and runs (ran beside the build)"
-wait_background
-
 phase "test suite"
 run_suite "$root/build/test" --timeout 600
 phase "benchmark (decode throughput against the manual's byte-at-a-time decoder)"
@@ -255,8 +262,12 @@ phase "test suite again, in the sanitizer build"
 run_suite "$root/build/asan" --timeout 900
 unset ASAN_OPTIONS UBSAN_OPTIONS
 
-phase "fuzzing every parser, ${FUZZ_SECONDS:-20} s each"
+phase "fuzzing every parser, ${FUZZ_SECONDS:-20} s each (beside it: the fresh-root check's safety test, then the check)"
+mkdir -p "$root/build"
+background_checks
 FUZZ_JOBS="$jobs" "$root/tests/fuzz/run.sh" "${FUZZ_SECONDS:-20}" "$root/build/fuzz"
+phase "fresh Debian 12 root (waited for after fuzzing): the package list alone configures the project, the .deb installs and runs; a check killed midway leaves the host's /dev as it was"
+wait_background_checks
 
 phase "build with ThreadSanitizer: core and the tests of its threads (ctest label tsan)"
 # The session engine, recording, replay, station and firmware tests (tests/CMakeLists.txt lists

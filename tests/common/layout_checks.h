@@ -119,7 +119,7 @@ inline bool layoutSettled(const QWidget &top, int timeoutMs = 5000)
     };
     QList<QRect> last;
     int same = 0;
-    return QTest::qWaitFor(
+    return imudesk::test::waitFor(
         [&] {
             QCoreApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);
             QList<QRect> now = places();

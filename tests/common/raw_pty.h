@@ -127,7 +127,7 @@ inline bool openOnPty(device::DeviceSession &session, RawPty &pty)
 {
     session.setAutoReconnect(false);
     session.open(pty.slave(), 921600);
-    return QTest::qWaitFor(
+    return imudesk::test::waitFor(
         [&] {
             pty.drain();
             return session.state() == device::SessionState::Connected;

@@ -12,7 +12,7 @@ namespace imudesk::test {
 // the session fails.
 inline bool waitConnected(device::DeviceSession &s, int timeoutMs = 15000)
 {
-    (void)QTest::qWaitFor(
+    (void)imudesk::test::waitFor(
         [&s] {
             return s.state() == device::SessionState::Connected || s.state() == device::SessionState::Failed;
         },
@@ -42,7 +42,7 @@ public:
     device::SessionStats next(int timeoutMs = 15000)
     {
         const int before = updates;
-        if (!QTest::qWaitFor([this, before] { return updates != before; }, timeoutMs))
+        if (!imudesk::test::waitFor([this, before] { return updates != before; }, timeoutMs))
             qWarning("StatsProbe: no statistics for %d ms; the figures are the last ones seen", timeoutMs);
         return last;
     }

@@ -16,7 +16,7 @@ inline protocol::hipnuc::AsciiReply sendAndWait(device::DeviceSession &s, const 
     const quint64 id = s.sendCommand(cmd, timeoutMs);
     protocol::hipnuc::AsciiReply r;
     r.status = protocol::hipnuc::AsciiReply::Status::Pending;
-    (void)QTest::qWaitFor(
+    (void)imudesk::test::waitFor(
         [&] {
             for (const auto &args : spy)
                 if (args.at(0).toULongLong() == id) {

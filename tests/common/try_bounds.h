@@ -11,6 +11,7 @@
 //
 // Included by the tests' precompiled headers (cmake/pch/test_pch.h), so it applies to every
 // test file, after <QTest> defined the macro it replaces.
+#include <QElapsedTimer>
 #include <QTest>
 
 #include <cstdlib>
@@ -27,6 +28,21 @@ inline int tryBound(int timeoutMs)
         return value >= 1 ? value : kTryStretch;
     }();
     return timeoutMs * stretch;
+}
+
+// QTest::qWaitFor with the same stretch as the QTRY_* macros below: runs the event loop until
+// pred holds, giving up after tryBound(timeoutMs). The tests call this instead of qWaitFor; a
+// wait that needed more than the bound it names says so (QINFO), as a QTRY_* does.
+template <typename Predicate>
+bool waitFor(Predicate pred, int timeoutMs)
+{
+    QElapsedTimer clock;
+    clock.start();
+    const bool held = QTest::qWaitFor(pred, tryBound(timeoutMs));
+    if (held && clock.elapsed() > timeoutMs)
+        qInfo("a condition held after about %lld ms, beyond its bound of %d ms (stretched for a busy machine)",
+              static_cast<long long>(clock.elapsed()), timeoutMs);
+    return held;
 }
 
 } // namespace imudesk::test

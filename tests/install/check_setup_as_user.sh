@@ -3,8 +3,8 @@
 # such a user (nobody, through setpriv) runs what needs root, the fresh-root check and its
 # safety test, through sudo, as it does apt-get; a user without sudo is told what to do.
 # The build, packaging and test tools are stand-ins that only note their call: what is proven
-# is the script's own path up to and through the fresh-root phase (the test suite's stand-in
-# ends the run there). Usage: check_setup_as_user.sh SOURCE_DIR
+# is the script's own path up to and through the fresh-root phase (the stand-in of the last
+# suite, ThreadSanitizer's, ends the run there). Usage: check_setup_as_user.sh SOURCE_DIR
 set -euo pipefail
 src="$1"
 fail() { echo "FAIL: $*" >&2; exit 1; }
@@ -16,6 +16,8 @@ chmod 755 "$work"
 # A copy of the scripts that nobody can read, in a tree of its own.
 mkdir -p "$work/tree/scripts" "$work/bin" "$work/home"
 cp "$src/scripts/setup.sh" "$src/scripts/debian-packages.txt" "$work/tree/scripts/"
+mkdir -p "$work/tree/tests/fuzz"
+printf '#!/bin/sh\necho "fuzzing ran" >> %s/calls\n' "$work" > "$work/tree/tests/fuzz/run.sh"
 for s in check-fresh-debian.sh test-check-fresh-debian.sh; do
   printf '#!/bin/sh\necho "$0 ran as uid $(id -u)" >> %s/calls\n' "$work" > "$work/tree/scripts/$s"
 done
@@ -23,13 +25,20 @@ stub() { # name, body
   printf '#!/bin/sh\n%s\n' "$2" > "$work/bin/$1"
 }
 stub dpkg-query 'echo "install ok installed"'
-stub cmake 'echo "cmake $*" >> '"$work"'/calls; for a in "$@"; do [ "$prev" = -B ] && mkdir -p "$a"; prev="$a"; done; exit 0'
+# A build makes stand-ins of the benchmarks that the run starts from it.
+stub cmake 'echo "cmake $*" >> '"$work"'/calls; for a in "$@"; do [ "$prev" = -B ] && mkdir -p "$a"
+  if [ "$prev" = --build ]; then mkdir -p "$a/tests/bench"
+    for b in bench_decode bench_alloc_live bench_gui_live bench_export bench_allan bench_magcal bench_update bench_station soak; do
+      printf "#!/bin/sh\necho \"\$0 ran\" >> '"$work"'/calls\n" > "$a/tests/bench/$b"; chmod a+x "$a/tests/bench/$b"; done
+  fi; prev="$a"; done; exit 0'
 stub dpkg-deb 'echo "libc6"'
 stub cpack 'for a in "$@"; do case "$prev" in -B) mkdir -p "$a" && touch "$a/imudesk_0_amd64.deb";; esac; prev="$a"; done'
 stub lintian 'exit 0'
-stub ctest 'echo "ctest reached" >> '"$work"'/calls; exit 3'
+# The suites pass, up to the last one (ThreadSanitizer's), which ends the run after the
+# fresh-root phase, which waits for the check and its safety test (they run beside fuzzing).
+stub ctest 'case "$*" in *"-L tsan"*) echo "ctest reached" >> '"$work"'/calls; exit 3;; esac; exit 0'
 stub sudo 'echo "sudo $*" >> '"$work"'/calls; while [ "${1#-}" != "$1" ]; do shift; done; exec "$@"'
-chmod -R a+rX "$work" && chmod 777 "$work" "$work/home" && chmod a+x "$work"/bin/* "$work"/tree/scripts/*.sh
+chmod -R a+rX "$work" && chmod 777 "$work" "$work/home" && chmod a+x "$work"/bin/* "$work"/tree/scripts/*.sh "$work/tree/tests/fuzz/run.sh"
 touch "$work/calls" && chmod 666 "$work/calls"
 chown -R 65534:65534 "$work/tree" # the user's own checkout
 as_nobody() {
@@ -39,7 +48,7 @@ as_nobody() {
 # With sudo: the fresh-root check and its safety test run through it, and the run goes on.
 rc=0
 as_nobody "$work/bin" || rc=$?
-[ "$rc" -eq 3 ] || { cat "$work/out" >&2; fail "setup.sh test as a user with sudo stopped with $rc before the test suite"; }
+[ "$rc" -eq 3 ] || { cat "$work/out" >&2; fail "setup.sh test as a user with sudo stopped with $rc before the last test suite"; }
 grep -q "^sudo .*check-fresh-debian.sh --build $work/tree/build/test" "$work/calls" \
   || { cat "$work/calls" >&2; fail "the fresh-root check did not run through sudo"; }
 grep -q "^sudo .*test-check-fresh-debian.sh" "$work/calls" || fail "the fresh-root safety test did not run through sudo"

@@ -73,7 +73,7 @@ private Q_SLOTS:
         run.start();
         uint64_t seq = 0;
         const double legEnd = sim::MotionModel::kTurntableStillS + sim::MotionModel::turntableLegS();
-        (void)QTest::qWaitFor(
+        (void)imudesk::test::waitFor(
             [&] {
                 for (const auto &s : session.store().since(seq, SIZE_MAX, &seq))
                     run.addSample(s.deviceTimeMs, {s.gyr.x, s.gyr.y, s.gyr.z}, {s.acc.x, s.acc.y, s.acc.z});

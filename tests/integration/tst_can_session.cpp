@@ -67,7 +67,7 @@ CanRequestResult waitResult(CanSession &s, quint64 id, int timeoutMs = 5000)
             done = true;
         }
     });
-    const bool finished = QTest::qWaitFor([&done] { return done; }, timeoutMs);
+    const bool finished = imudesk::test::waitFor([&done] { return done; }, timeoutMs);
     QObject::disconnect(c);
     if (!finished)
         out.message = QStringLiteral("no result");
@@ -101,11 +101,11 @@ class TstCanSession : public QObject {
         so.protocol = p;
         so.hec495Extended = o.hec495 && o.protocol == CanProtocol::J1939;
         rig.session->open(so);
-        return QTest::qWaitFor([&rig] { return rig.session->state() == device::SessionState::Connected; }, 5000);
+        return imudesk::test::waitFor([&rig] { return rig.session->state() == device::SessionState::Connected; }, 5000);
     }
     // Host-side time of the last event, as a "from here on" mark.
     static qint64 mark(const Rig &rig) { return rig.frames.events.isEmpty() ? 0 : rig.frames.events.last().hostTimeNs; }
-    // Runs the event loop until pred holds (at most timeoutMs). Unlike QTRY_* and qWaitFor, which
+    // Runs the event loop until pred holds (at most timeoutMs). Unlike QTRY_* and test::waitFor, which
     // sleep 10 ms between passes, the loop keeps the 1 ms tick of the simulator in this thread on
     // time, so a PDO's period is measured, not the waits' sleeps.
     static bool runUntil(const std::function<bool()> &pred, int timeoutMs = 5000)
@@ -119,7 +119,7 @@ class TstCanSession : public QObject {
             if (pred())
                 loop.quit();
         });
-        QTimer::singleShot(timeoutMs, &loop, &QEventLoop::quit);
+        QTimer::singleShot(imudesk::test::tryBound(timeoutMs), &loop, &QEventLoop::quit);
         check.start();
         loop.exec();
         return pred();
@@ -130,7 +130,7 @@ class TstCanSession : public QObject {
     {
         int seen = -1;
         QElapsedTimer still;
-        return QTest::qWaitFor(
+        return imudesk::test::waitFor(
             [&] {
                 const int n = rig.frames.countRx(id);
                 if (n != seen) {

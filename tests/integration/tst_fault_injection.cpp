@@ -42,7 +42,7 @@ namespace {
 
 bool waitState(DeviceSession &s, SessionState want, int timeoutMs = 15000)
 {
-    return QTest::qWaitFor([&s, want] { return s.state() == want; }, timeoutMs);
+    return imudesk::test::waitFor([&s, want] { return s.state() == want; }, timeoutMs);
 }
 
 AsciiReply send(DeviceSession &s, const QString &cmd, int timeoutMs = 1000)

@@ -87,7 +87,7 @@ std::optional<Hec495Result> await(Hec495Session &s, quint64 id, int timeoutMs = 
         if (done == id)
             out = r;
     });
-    if (!QTest::qWaitFor([&] { return out.has_value(); }, timeoutMs))
+    if (!imudesk::test::waitFor([&] { return out.has_value(); }, timeoutMs))
         return std::nullopt;
     return out;
 }

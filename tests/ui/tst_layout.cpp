@@ -205,11 +205,11 @@ class TstLayout : public QObject {
             if (!w.connectSimulated(options, 115200, error))
                 return false;
             DeviceWorkspace *ws = w.currentWorkspace();
-            if (!QTest::qWaitFor([ws] { return ws->link().state() == device::SessionState::Connected; }, 5000))
+            if (!imudesk::test::waitFor([ws] { return ws->link().state() == device::SessionState::Connected; }, 5000))
                 return false;
             ws->hipnucSession()->sendCommand(protocol::hipnuc::commands::logOnTime(protocol::hipnuc::Message::GGA, 0.2));
             ws->hipnucSession()->sendCommand(protocol::hipnuc::commands::logOnTime(protocol::hipnuc::Message::RMC, 0.2));
-            return QTest::qWaitFor(
+            return imudesk::test::waitFor(
                 [ws] { return !ws->valuesView()->isRowHidden(models::LatestValuesModel::UtcTime); }, 5000);
         }
         case Kind::SerialIns: { // HI91 beside an HI83 with every field the manual sizes: the details tab
@@ -220,12 +220,12 @@ class TstLayout : public QObject {
             if (!w.connectSimulated(options, 115200, error))
                 return false;
             DeviceWorkspace *ws = w.currentWorkspace();
-            if (!QTest::qWaitFor([ws] { return ws->link().state() == device::SessionState::Connected; }, 5000))
+            if (!imudesk::test::waitFor([ws] { return ws->link().state() == device::SessionState::Connected; }, 5000))
                 return false;
             namespace hpc = protocol::hipnuc::commands;
             ws->hipnucSession()->sendCommand(hpc::logHi83Map(protocol::hipnuc::Hi83::kSupportedMask));
             ws->hipnucSession()->sendCommand(hpc::logOnTime(protocol::hipnuc::Message::HI83, 0.05));
-            return QTest::qWaitFor([ws] { return !ws->detailsDock()->isHidden(); }, 5000);
+            return imudesk::test::waitFor([ws] { return !ws->detailsDock()->isHidden(); }, 5000);
         }
         case Kind::Hec495: return w.connectSimulatedHec495(error);
         case Kind::Modbus:
@@ -256,7 +256,7 @@ class TstLayout : public QObject {
         if (!connectKind(w, kind, &error))
             return {QStringLiteral("could not connect: ") + error};
         DeviceWorkspace *ws = w.currentWorkspace();
-        if (!QTest::qWaitFor([ws] { return ws->link().store().totalAppended() > 20; }, 15000))
+        if (!imudesk::test::waitFor([ws] { return ws->link().store().totalAppended() > 20; }, 15000))
             return {QStringLiteral("no data from the %1 link").arg(QLatin1String(kindName(kind)))};
         // The views follow the data on their clock (the values at most ten times a second), the
         // layouts follow the views: a refresh of the values with this data, then the layouts.

@@ -69,7 +69,7 @@ struct TumblingModule {
     bool connect()
     {
         module.open(115200);
-        return QTest::qWaitFor([this] { return session.state() == device::SessionState::Connected; }, 15000);
+        return imudesk::test::waitFor([this] { return session.state() == device::SessionState::Connected; }, 15000);
     }
     test::SimSession module{options(), kTimeScale};
     device::DeviceSession &session = module.session;

@@ -181,7 +181,7 @@ private Q_SLOTS:
             const uint64_t samplesBefore = session.store().totalAppended();
             pty.write(before);
             sent += before.size();
-            QVERIFY(QTest::qWaitFor([&] { return received() == sent; }, 5000));
+            QVERIFY(imudesk::test::waitFor([&] { return received() == sent; }, 5000));
             QSignalSpy started(&session, &device::Session::recordingStarted);
             QSignalSpy progress(&session, &device::Session::recordingProgress);
             c.setPattern(QStringLiteral("straddle-%1").arg(attempt));

@@ -322,7 +322,7 @@ private Q_SLOTS:
             problems = stationProblems(*m_view, size == kLarge);
             return problems.isEmpty();
         };
-        (void)QTest::qWaitFor(fits, 5000);
+        (void)imudesk::test::waitFor(fits, 5000);
         // The failing tiles still name their step.
         for (int i = 0; i < 8; ++i) {
             const station::ModuleResult &r = m_view->runner()->module(i);

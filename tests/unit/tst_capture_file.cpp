@@ -347,7 +347,7 @@ private Q_SLOTS:
         const auto chunks = randomChunks(400, 5, 700);
         for (const auto &c : chunks)
             w.append(c.bytes.constData(), size_t(c.bytes.size()), c.mono, c.wall);
-        const bool sawStop = QTest::qWaitFor([&] { return stopped.load() == 1; }, 5000);
+        const bool sawStop = imudesk::test::waitFor([&] { return stopped.load() == 1; }, 5000);
         const QString reason = w.stop();
         setrlimit(RLIMIT_FSIZE, &before);
         std::signal(SIGXFSZ, oldHandler);
