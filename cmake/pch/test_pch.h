@@ -16,6 +16,7 @@
 #include <QTest>
 // After <QTest>: the QTRY_* bounds stretched for a busy machine (the file says why).
 #include "../../tests/common/try_bounds.h"
+#include "../../tests/common/test_paths.h"
 #include <QTimer>
 #include <QVariant>
 

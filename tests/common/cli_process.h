@@ -12,7 +12,7 @@ namespace imudesk::test {
 // Starts imudesk-cli with args in p; true once its stdout contains ready within timeoutMs.
 inline bool startCliUntil(QProcess &p, const QStringList &args, const QByteArray &ready, int timeoutMs = 5000)
 {
-    p.start(QStringLiteral(IMUDESK_CLI_PATH), args);
+    p.start(QString::fromUtf8(IMUDESK_CLI_PATH), args);
     if (!p.waitForStarted(timeoutMs))
         return false;
     QElapsedTimer t;

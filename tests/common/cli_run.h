@@ -36,7 +36,7 @@ inline CliResult runProgram(const QString &program, const QStringList &args, int
 
 inline CliResult runCli(const QStringList &args, int timeoutMs = 60000)
 {
-    return runProgram(QStringLiteral(IMUDESK_CLI_PATH), args, timeoutMs);
+    return runProgram(QString::fromUtf8(IMUDESK_CLI_PATH), args, timeoutMs);
 }
 
 } // namespace imudesk::test

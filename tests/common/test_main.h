@@ -3,8 +3,11 @@
 // linked into a few executables instead of one per class; every class still runs on its own,
 // in a process of its own: `tests_unit tst_attitude [Qt Test arguments]`, which ctest does for
 // each name (tests/CMakeLists.txt). The macros replace Qt Test's QTEST_*MAIN and do what they
-// do (the same application object, initMain, source path), in a function the group's main
-// (test_group_main.cpp) calls by the file's name instead of in main().
+// do (the same application object, initMain), in a function the group's main
+// (test_group_main.cpp) calls by the file's name instead of in main(). Not Qt's source path
+// (QTEST_SET_MAIN_SOURCE_PATH, for QFINDTESTDATA): the tests find their data through
+// common/test_paths.h, and nothing reads Qt's QT_TESTCASE_BUILDDIR and QT_TESTCASE_SOURCEDIR, so
+// ccache leaves those out of its hash (CMakeLists.txt).
 #include "test_registry.h"
 
 #include <QTest>
@@ -21,7 +24,6 @@
         QT_PREPEND_NAMESPACE(QTest::Internal::callInitMain)<TestObject>();                                       \
         __VA_ARGS__                                                                                              \
         TestObject tc;                                                                                           \
-        QTEST_SET_MAIN_SOURCE_PATH                                                                               \
         return QTest::qExec(&tc, argc, argv);                                                                    \
     }                                                                                                            \
     }                                                                                                            \

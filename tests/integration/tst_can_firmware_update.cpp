@@ -140,7 +140,7 @@ private Q_SLOTS:
         const auto img = image("1.7.4", 40 * 1024);
         const QString hex = writeFile(m_dir, QStringLiteral("can174.hex"), IntelHexWriter::write(img));
         QProcess p;
-        p.start(QStringLiteral(IMUDESK_CLI_PATH), update(hex, {QStringLiteral("--json")}));
+        p.start(QString::fromUtf8(IMUDESK_CLI_PATH), update(hex, {QStringLiteral("--json")}));
         QVERIFY(p.waitForStarted());
         bool downloading = false;
         QTRY_VERIFY_WITH_TIMEOUT(([&] {

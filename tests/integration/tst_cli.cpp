@@ -34,7 +34,7 @@ class TstCli : public QObject {
 private Q_SLOTS:
     void initTestCase()
     {
-        m_sim.start(QStringLiteral(IMUDESK_CLI_PATH),
+        m_sim.start(QString::fromUtf8(IMUDESK_CLI_PATH),
                     {"simulate", "--pty", "--baud", "230400", "--motion", "tumble", "--seed", "3"});
         QVERIFY(m_sim.waitForStarted());
         QTRY_VERIFY_WITH_TIMEOUT(m_sim.canReadLine(), 10000);

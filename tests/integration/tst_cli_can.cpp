@@ -12,7 +12,7 @@
 #include <QTest>
 
 namespace {
-const QString kCli = QStringLiteral(IMUDESK_CLI_PATH);
+const QString kCli = QString::fromUtf8(IMUDESK_CLI_PATH);
 
 struct Run {
     int code = -1;

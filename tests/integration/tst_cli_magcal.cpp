@@ -24,7 +24,7 @@ struct Run {
 Run cli(const QStringList &args)
 {
     QProcess p;
-    p.start(QStringLiteral(IMUDESK_CLI_PATH), args);
+    p.start(QString::fromUtf8(IMUDESK_CLI_PATH), args);
     p.waitForFinished(30000);
     return {p.exitCode(), p.readAllStandardOutput(), p.readAllStandardError()};
 }

@@ -19,7 +19,7 @@ using namespace imudesk;
 
 namespace {
 
-test::CliResult run(const QStringList &args, const QString &program = QStringLiteral(IMUDESK_CLI_PATH),
+test::CliResult run(const QStringList &args, const QString &program = QString::fromUtf8(IMUDESK_CLI_PATH),
                     int timeoutMs = 30000)
 {
     return test::runProgram(program, args, timeoutMs);
@@ -53,7 +53,7 @@ class TstCliRecord : public QObject {
 private Q_SLOTS:
     void initTestCase()
     {
-        m_sim.start(QStringLiteral(IMUDESK_CLI_PATH), {"simulate", "--pty", "--baud", "921600", "--seed", "4"});
+        m_sim.start(QString::fromUtf8(IMUDESK_CLI_PATH), {"simulate", "--pty", "--baud", "921600", "--seed", "4"});
         QVERIFY(m_sim.waitForStarted());
         QTRY_VERIFY_WITH_TIMEOUT(m_sim.canReadLine(), 10000);
         const QString first = QString::fromUtf8(m_sim.readLine()).trimmed();
@@ -204,7 +204,7 @@ private Q_SLOTS:
             QSKIP("prlimit (util-linux) is not installed");
         const QString path = m_dir.filePath(QStringLiteral("limited.imucap"));
         // 6 KiB: the header and a few hundred ms of HI91 at 100 Hz.
-        const auto r = run({"--fsize=6144", QStringLiteral(IMUDESK_CLI_PATH), "record", m_pty, "-o", path,
+        const auto r = run({"--fsize=6144", QString::fromUtf8(IMUDESK_CLI_PATH), "record", m_pty, "-o", path,
                             "--duration", "10", "--baud", "921600"},
                            prlimit);
         QCOMPARE(r.code, 1);

@@ -77,7 +77,7 @@ private Q_SLOTS:
     {
         const QString dump = m_dir.filePath(QStringLiteral("flash.bin"));
         QProcess simulator;
-        simulator.start(QStringLiteral(IMUDESK_CLI_PATH),
+        simulator.start(QString::fromUtf8(IMUDESK_CLI_PATH),
                         {"simulate", "--pty", "--baud", QString::number(kBaud), "--flash-dump", dump});
         QVERIFY(simulator.waitForStarted());
         QTRY_VERIFY_WITH_TIMEOUT(simulator.canReadLine(), 10000);
@@ -246,7 +246,7 @@ private Q_SLOTS:
         const auto img = image("1.7.6", 96 * 1024);
         const QString hex = writeFile(m_dir, QStringLiteral("fw176.hex"), IntelHexWriter::write(img));
         QProcess p;
-        p.start(QStringLiteral(IMUDESK_CLI_PATH), {"update", s.devicePath(), hex, "--baud", QString::number(kBaud), "--json"});
+        p.start(QString::fromUtf8(IMUDESK_CLI_PATH), {"update", s.devicePath(), hex, "--baud", QString::number(kBaud), "--json"});
         QVERIFY(p.waitForStarted());
         bool writing = false;
         QString seen;

@@ -23,7 +23,7 @@ Result run(const QStringList &args, int timeoutMs = 60000)
 // Starts "imudesk-cli simulate --pty ..." and returns the pty path.
 QString startSimulator(QProcess &sim, const QStringList &args)
 {
-    sim.start(QStringLiteral(IMUDESK_CLI_PATH), QStringList{"simulate", "--pty"} + args);
+    sim.start(QString::fromUtf8(IMUDESK_CLI_PATH), QStringList{"simulate", "--pty"} + args);
     if (!sim.waitForStarted())
         return {};
     for (int i = 0; i < 100 && !sim.canReadLine(); ++i)

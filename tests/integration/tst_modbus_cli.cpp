@@ -28,7 +28,7 @@ QJsonObject json(const QString &line)
 // Starts a simulator process and returns its pty path.
 QString startSimulator(QProcess &sim, const QStringList &extra)
 {
-    sim.start(QStringLiteral(IMUDESK_CLI_PATH), QStringList{"simulate", "--pty", "--modbus"} + extra);
+    sim.start(QString::fromUtf8(IMUDESK_CLI_PATH), QStringList{"simulate", "--pty", "--modbus"} + extra);
     if (!sim.waitForStarted())
         return {};
     for (int i = 0; i < 100 && !sim.canReadLine(); ++i)

@@ -336,7 +336,7 @@ void TestStation::examplePlanPassesOnCleanHi14()
 {
     QString error;
     const auto loaded = station::TestPlan::load(
-        QDir::cleanPath(QStringLiteral(IMUDESK_TEST_DATA "/../../docs/examples/station-hi14.json")), &error);
+        QDir::cleanPath(QString::fromUtf8(IMUDESK_TEST_DATA) + QStringLiteral("/../../docs/examples/station-hi14.json")), &error);
     QVERIFY2(loaded, qPrintable(error));
     QVERIFY2(loaded->problems().isEmpty(), qPrintable(loaded->problems().join(u'\n')));
     station::TestPlan plan = *loaded;

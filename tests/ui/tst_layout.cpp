@@ -367,7 +367,7 @@ private Q_SLOTS:
         QFETCH(QSize, size);
         QFETCH(QString, language);
         QString error;
-        QVERIFY2(m_language.setLanguage(language, QStringLiteral(IMUDESK_QM_DIR), &error), qPrintable(error));
+        QVERIFY2(m_language.setLanguage(language, QString::fromUtf8(IMUDESK_QM_DIR), &error), qPrintable(error));
         const QStringList problems = runKind(Kind(kind), size);
         QVERIFY2(problems.isEmpty(), qPrintable(problems.join(QLatin1Char('\n'))));
     }
@@ -375,7 +375,7 @@ private Q_SLOTS:
     void restoredLayoutsAreRepaired()
     {
         QString error;
-        QVERIFY(m_language.setLanguage(QStringLiteral("en"), QStringLiteral(IMUDESK_QM_DIR), &error));
+        QVERIFY(m_language.setLanguage(QStringLiteral("en"), QString::fromUtf8(IMUDESK_QM_DIR), &error));
         // What a screenshot run on the offscreen platform's 800x600 screen saved before:
         // a small window with the right column squeezed.
         ui::WindowSettings small;
@@ -442,7 +442,7 @@ private Q_SLOTS:
         QProcess gui;
         gui.setProcessEnvironment(env);
         const QString shot = m_dir.filePath(QStringLiteral("shot.png"));
-        gui.start(QStringLiteral(IMUDESK_GUI_PATH),
+        gui.start(QString::fromUtf8(IMUDESK_GUI_PATH),
                   {QStringLiteral("--demo"), QStringLiteral("--screenshot"), shot, QStringLiteral("--after"),
                    QStringLiteral("1")});
         QVERIFY(gui.waitForFinished(60000));
@@ -461,7 +461,7 @@ private Q_SLOTS:
     void presetsAndPanelsOnDemand()
     {
         QString error;
-        QVERIFY(m_language.setLanguage(QStringLiteral("en"), QStringLiteral(IMUDESK_QM_DIR), &error));
+        QVERIFY(m_language.setLanguage(QStringLiteral("en"), QString::fromUtf8(IMUDESK_QM_DIR), &error));
         MainWindow w;
         w.setErrorPresenter([](const QString &) {});
         showAt(w, kSmall);
@@ -568,7 +568,7 @@ private Q_SLOTS:
         QFETCH(QSize, screen);
         QFETCH(QString, language);
         QString error;
-        QVERIFY2(m_language.setLanguage(language, QStringLiteral(IMUDESK_QM_DIR), &error), qPrintable(error));
+        QVERIFY2(m_language.setLanguage(language, QString::fromUtf8(IMUDESK_QM_DIR), &error), qPrintable(error));
         // What fitWorkPlace() gives on that screen (this test's screen is 1920x1080).
         const QSize room(screen.width() * 94 / 100, screen.height() * 94 / 100 - 30);
         const QString shots = qEnvironmentVariable("IMUDESK_LAYOUT_SHOTS");
@@ -643,7 +643,7 @@ private Q_SLOTS:
     void statusFlagsColouredByMeaning()
     {
         QString error;
-        QVERIFY(m_language.setLanguage(QStringLiteral("en"), QStringLiteral(IMUDESK_QM_DIR), &error));
+        QVERIFY(m_language.setLanguage(QStringLiteral("en"), QString::fromUtf8(IMUDESK_QM_DIR), &error));
         ui::StatusFlagsWidget flags;
         flags.setStatus(quint16((1u << model::MainStatus::MagDist) | (1u << model::MainStatus::MagAiding)
                                 | (1u << model::MainStatus::Static)));

@@ -183,7 +183,7 @@ private Q_SLOTS:
         const QString englishHeader = w.valuesView()->model()->headerData(0, Qt::Horizontal).toString();
         const QString englishRoll = cell(w, LatestValuesModel::Roll, LatestValuesModel::QuantityColumn);
         LanguageSwitcher language;
-        QVERIFY2(language.setLanguage(QStringLiteral("zh_CN"), QStringLiteral(IMUDESK_QM_DIR), &error),
+        QVERIFY2(language.setLanguage(QStringLiteral("zh_CN"), QString::fromUtf8(IMUDESK_QM_DIR), &error),
                  qPrintable(error));
         QTRY_VERIFY(w.windowTitle() != englishTitle);
         QVERIFY(w.windowTitle().contains(QLatin1String("HI14R3")));
@@ -194,7 +194,7 @@ private Q_SLOTS:
         QVERIFY(imudesk::test::layout::layoutSettled(w)); // the longer texts laid out before the screenshot
         QVERIFY(w.grab().toImage().save(screenshotPath(QStringLiteral("main_window_zh_CN.png"))));
 
-        QVERIFY(language.setLanguage(QStringLiteral("zh_TW"), QStringLiteral(IMUDESK_QM_DIR), &error));
+        QVERIFY(language.setLanguage(QStringLiteral("zh_TW"), QString::fromUtf8(IMUDESK_QM_DIR), &error));
         QTRY_COMPARE(cell(w, LatestValuesModel::Roll, LatestValuesModel::QuantityColumn), QStringLiteral("橫滾角"));
 
         QVERIFY(language.setLanguage(QStringLiteral("en")));

@@ -195,7 +195,7 @@ private Q_SLOTS:
         QStandardPaths::setTestModeEnabled(true);
         QCOMPARE(QGuiApplication::primaryScreen()->geometry().size(), kLarge);
         QString error;
-        QVERIFY2(m_language.setLanguage(QStringLiteral("en"), QStringLiteral(IMUDESK_QM_DIR), &error),
+        QVERIFY2(m_language.setLanguage(QStringLiteral("en"), QString::fromUtf8(IMUDESK_QM_DIR), &error),
                  qPrintable(error));
         m_view = std::make_unique<ui::StationView>();
         m_view->setRemembering(false);
@@ -312,7 +312,7 @@ private Q_SLOTS:
         QFETCH(QString, language);
         QVERIFY2(m_view->tileCount() == 8, "runsTheTray runs first");
         QString error;
-        QVERIFY2(m_language.setLanguage(language, QStringLiteral(IMUDESK_QM_DIR), &error), qPrintable(error));
+        QVERIFY2(m_language.setLanguage(language, QString::fromUtf8(IMUDESK_QM_DIR), &error), qPrintable(error));
         m_view->resize(size);
         QTRY_COMPARE(m_view->size(), size);
         // A new language brings a new font: the nested layouts take a few rounds to follow it,
@@ -334,7 +334,7 @@ private Q_SLOTS:
         if (const QString shots = qEnvironmentVariable("IMUDESK_LAYOUT_SHOTS"); !shots.isEmpty())
             m_view->grab().save(QDir(shots).filePath(
                 QStringLiteral("station-%1x%2-%3.png").arg(size.width()).arg(size.height()).arg(language)));
-        QVERIFY(m_language.setLanguage(QStringLiteral("en"), QStringLiteral(IMUDESK_QM_DIR), &error));
+        QVERIFY(m_language.setLanguage(QStringLiteral("en"), QString::fromUtf8(IMUDESK_QM_DIR), &error));
     }
 
     void finishedTileOpensItsWorkspace()

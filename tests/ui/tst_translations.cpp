@@ -42,7 +42,7 @@ namespace {
 QString translationsDir()
 {
     // IMUDESK_TEST_DATA is <source>/tests/data (which need not exist: clean the path first).
-    return QDir::cleanPath(QStringLiteral(IMUDESK_TEST_DATA "/../../translations"));
+    return QDir::cleanPath(QString::fromUtf8(IMUDESK_TEST_DATA) + QStringLiteral("/../../translations"));
 }
 
 // Words that stay as they are in every language: units, product and program names, and
@@ -207,7 +207,7 @@ private Q_SLOTS:
     {
         ui::LanguageSwitcher language;
         QString error;
-        QVERIFY2(language.setLanguage(QStringLiteral("zh_CN"), QStringLiteral(IMUDESK_QM_DIR), &error),
+        QVERIFY2(language.setLanguage(QStringLiteral("zh_CN"), QString::fromUtf8(IMUDESK_QM_DIR), &error),
                  qPrintable(error));
         ui::MainWindow window;
         window.resize(1280, 860);
@@ -222,9 +222,9 @@ private Q_SLOTS:
     {
         ui::LanguageSwitcher language;
         QString error;
-        QVERIFY2(language.setLanguage(QStringLiteral("zh_TW"), QStringLiteral(IMUDESK_QM_DIR), &error),
+        QVERIFY2(language.setLanguage(QStringLiteral("zh_TW"), QString::fromUtf8(IMUDESK_QM_DIR), &error),
                  qPrintable(error));
-        QVERIFY(language.setLanguage(QStringLiteral("zh_CN"), QStringLiteral(IMUDESK_QM_DIR), &error));
+        QVERIFY(language.setLanguage(QStringLiteral("zh_CN"), QString::fromUtf8(IMUDESK_QM_DIR), &error));
         ui::PreferencesDialog prefs(ui::Preferences{});
         verifyTranslated(&prefs);
         ui::ModbusConnectDialog modbus;
@@ -248,7 +248,7 @@ private Q_SLOTS:
     {
         ui::LanguageSwitcher language;
         QString error;
-        QVERIFY2(language.setLanguage(QStringLiteral("zh_CN"), QStringLiteral(IMUDESK_QM_DIR), &error),
+        QVERIFY2(language.setLanguage(QStringLiteral("zh_CN"), QString::fromUtf8(IMUDESK_QM_DIR), &error),
                  qPrintable(error));
         device::DeviceSession session;
         ui::MagCalibrationWizard mag(session, model::FirmwareVersion{1, 7, 1});
@@ -266,7 +266,7 @@ private Q_SLOTS:
     void englishPluralForms()
     {
         ui::LanguageSwitcher language;
-        QVERIFY(language.setLanguage(QStringLiteral("en"), QStringLiteral(IMUDESK_QM_DIR)));
+        QVERIFY(language.setLanguage(QStringLiteral("en"), QString::fromUtf8(IMUDESK_QM_DIR)));
         QCOMPARE(QCoreApplication::translate("imudesk::ui::RawBytesView",
                                              "… %n byte(s) not shown (more arrived than the view holds) …", nullptr, 1),
                  QStringLiteral("… 1 byte not shown (more arrived than the view holds) …"));

@@ -18,7 +18,7 @@ using namespace imudesk::station;
 
 namespace {
 // tests/data may not exist: the path is cleaned as text.
-const QString kExamples = QDir::cleanPath(QStringLiteral(IMUDESK_TEST_DATA "/../../docs/examples"));
+const QString kExamples = QDir::cleanPath(QString::fromUtf8(IMUDESK_TEST_DATA) + QStringLiteral("/../../docs/examples"));
 
 ModuleResult sampleResult(const QString &serial, Verdict verdict)
 {
