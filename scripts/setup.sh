@@ -10,13 +10,14 @@
 #                             benchmarks, then the whole test suite again in an AddressSanitizer + UBSan
 #                             build, then every fuzz target (clang, libFuzzer) for FUZZ_SECONDS (default 20)
 #   scripts/setup.sh install  only install the Debian packages (the fresh-root check runs this inside its root)
+#   (scripts/setup.sh later-builds: the ThreadSanitizer and fuzz builds alone; `test` runs it in the background)
 set -euo pipefail
 
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 root="$(cd "$here/.." && pwd)"
 mode="${1:-}"
 case "$mode" in
-  demo|package|test|install) ;;
+  demo|package|test|install|later-builds) ;;
   *) echo "usage: $0 demo|package|test|install" >&2; exit 2 ;;
 esac
 
@@ -82,6 +83,15 @@ lint_package() { # dir
   fi
   echo "   lintian: no error ($(grep -c '^W: ' "$1/lintian.log" || true) warnings)"
 }
+
+# The builds that `test` needs last, for its fuzzing and ThreadSanitizer phases (what they are is
+# said where those phases run).
+if [ "$mode" = later-builds ]; then
+  configure_and_build_targets "$root/build/tsan" Release tsan_tests -DCMAKE_CXX_FLAGS_RELEASE="-O1 -DNDEBUG" \
+    -DIMUDESK_TSAN=ON -DIMUDESK_BUILD_GUI=OFF -DIMUDESK_BUILD_TESTS=ON -DIMUDESK_BUILD_BENCH=OFF
+  FUZZ_BUILD_ONLY=1 BUILD_JOBS="$jobs" "$root/tests/fuzz/run.sh" "${FUZZ_SECONDS:-20}" "$root/build/fuzz"
+  exit 0
+fi
 
 install_packages
 [ "$mode" = install ] && exit 0
@@ -183,7 +193,32 @@ wait_background_checks() { # prints their logs; fails the run when one failed
     *) echo "!! the fresh-root check failed (above; log: build/fresh-root-check.log)" >&2; exit 1 ;;
   esac
 }
-trap '[ -z "$background_pid" ] || kill -TERM "$background_pid" 2>/dev/null; phase_summary' EXIT
+# The ThreadSanitizer and fuzz builds (`later-builds` above) run in the background from the first
+# suite on, at nice 19: the suites mostly wait on simulated devices' clocks (the release suite is
+# about 100 CPU-s in 106 s on two cores), and the scheduler gives a nice-19 build only the CPU
+# they leave idle, so the builds advance without taking time from the tests. Stopped (SIGSTOP to
+# their process group) while the benchmarks measure speed, continued for the sanitizer suite,
+# waited for before fuzzing. In their own session (setsid), so the group can be signalled.
+later_pid=""
+start_later_builds() {
+  setsid nice -n 19 "$here/setup.sh" later-builds > "$root/build/later-builds.log" 2>&1 &
+  later_pid=$!
+}
+signal_later_builds() { # signal
+  [ -z "$later_pid" ] || kill "-$1" -- "-$later_pid" 2>/dev/null || true
+}
+wait_later_builds() {
+  local rc=0
+  [ -z "$later_pid" ] || wait "$later_pid" || rc=$?
+  later_pid=""
+  tail -n 5 "$root/build/later-builds.log" | sed 's/^/   /'
+  if [ "$rc" -ne 0 ]; then
+    tail -n 40 "$root/build/later-builds.log" >&2
+    echo "!! the ThreadSanitizer or fuzz build failed (above; log: build/later-builds.log)" >&2
+    exit 1
+  fi
+}
+trap '[ -z "$background_pid" ] || kill -TERM "$background_pid" 2>/dev/null; signal_later_builds CONT; signal_later_builds TERM; phase_summary' EXIT
 # The suites run eight tests at a time on two cores: most of them wait on a simulated device's
 # clock, and ctest's resource allocation (tests/CMakeLists.txt gives each test its CPU share,
 # the build writes ctest-cpu-slots.json) keeps the CPU they need within the cores.
@@ -212,8 +247,10 @@ phase "build with AddressSanitizer and UndefinedBehaviorSanitizer"
 configure_and_build "$root/build/asan" Release -DCMAKE_CXX_FLAGS_RELEASE="-O0 -DNDEBUG" \
   -DIMUDESK_TEST_OPTIMIZE=-O0 -DIMUDESK_CORE_OPTIMIZE=-O1 -DIMUDESK_SANITIZE=ON \
   -DIMUDESK_BUILD_GUI=ON -DIMUDESK_BUILD_TESTS=ON -DIMUDESK_BUILD_BENCH=OFF
-phase "test suite"
+phase "test suite (beside it, at nice 19: the ThreadSanitizer and fuzz builds)"
+start_later_builds
 run_suite "$root/build/test" --timeout 600
+signal_later_builds STOP
 phase "benchmark (decode throughput against the manual's byte-at-a-time decoder)"
 "$root/build/test/tests/bench/bench_decode" --mb 50
 phase "benchmark (heap allocations per frame on the live session path)"
@@ -258,9 +295,12 @@ live_bench "$bench/soak" --seconds 20
 
 export ASAN_OPTIONS="detect_leaks=0:abort_on_error=1:strict_string_checks=1"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
-phase "test suite again, in the sanitizer build"
+phase "test suite again, in the sanitizer build (beside it, at nice 19: the rest of the ThreadSanitizer and fuzz builds)"
+signal_later_builds CONT
 run_suite "$root/build/asan" --timeout 900
 unset ASAN_OPTIONS UBSAN_OPTIONS
+phase "the ThreadSanitizer and fuzz builds: what was left of them after the suites (log: build/later-builds.log)"
+wait_later_builds
 
 phase "fuzzing every parser, ${FUZZ_SECONDS:-20} s each (beside it: the fresh-root check's safety test, then the check)"
 mkdir -p "$root/build"
@@ -269,12 +309,9 @@ FUZZ_JOBS="$jobs" "$root/tests/fuzz/run.sh" "${FUZZ_SECONDS:-20}" "$root/build/f
 phase "fresh Debian 12 root (waited for after fuzzing): the package list alone configures the project, the .deb installs and runs; a check killed midway leaves the host's /dev as it was"
 wait_background_checks
 
-phase "build with ThreadSanitizer: core and the tests of its threads (ctest label tsan)"
+phase "the threads' tests in the ThreadSanitizer build (any report fails; later-builds built core and these tests, ctest label tsan)"
 # The session engine, recording, replay, station and firmware tests (tests/CMakeLists.txt lists
 # them); no GUI. tests/tsan.supp says what is suppressed and why.
-configure_and_build_targets "$root/build/tsan" Release tsan_tests -DCMAKE_CXX_FLAGS_RELEASE="-O1 -DNDEBUG" \
-  -DIMUDESK_TSAN=ON -DIMUDESK_BUILD_GUI=OFF -DIMUDESK_BUILD_TESTS=ON -DIMUDESK_BUILD_BENCH=OFF
-phase "the threads' tests in the ThreadSanitizer build (any report fails)"
 # halt_on_error: the first report ends its test with exitcode 66, so ctest names it; a test that
 # fails is run once more, as above (a report is a failure both times: it is the code, not load).
 # die_after_fork=0: tests start imudesk-cli (QProcess forks a process that may start threads

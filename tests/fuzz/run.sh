@@ -63,6 +63,8 @@ fi
 echo "== building $TARGETS"
 # shellcheck disable=SC2086
 cmake --build "$BUILD_DIR" -j "$BUILD_JOBS" --target $TARGETS || exit 2
+# FUZZ_BUILD_ONLY=1: build, do not fuzz (scripts/setup.sh builds ahead, beside its suites).
+[ "${FUZZ_BUILD_ONLY:-0}" = 1 ] && exit 0
 
 WORK=$BUILD_DIR/fuzz
 mkdir -p "$WORK/logs"
