@@ -4,7 +4,7 @@
 <context>
     <name>CaptureExporter</name>
     <message numerus="yes">
-        <location filename="../core/record/capture_exporter.cpp" line="+375" />
+        <location filename="../core/record/capture_exporter.cpp" line="+375"/>
         <source>%n damaged chunk(s) were skipped</source>
         <translation>
             <numerusform>%n damaged chunk was skipped</numerusform>
@@ -15,7 +15,7 @@
 <context>
     <name>CaptureSource</name>
     <message numerus="yes">
-        <location filename="../core/record/capture_source.cpp" line="+190" />
+        <location filename="../core/record/capture_source.cpp" line="+185"/>
         <source>%1 is a vendor CSV: %n row(s) read, times from its pc_counter column</source>
         <translation>
             <numerusform>%1 is a vendor CSV: %n row read, times from its pc_counter column</numerusform>
@@ -23,7 +23,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location line="+18" />
+        <location line="+18"/>
         <source>The device clock restarted or jumped %n time(s); the times go on across each jump.</source>
         <translation>
             <numerusform>The device clock restarted or jumped %n time; the times go on across each jump.</numerusform>
@@ -34,7 +34,7 @@
 <context>
     <name>FileAnalysis</name>
     <message numerus="yes">
-        <location filename="../core/record/file_analysis.cpp" line="+62" />
+        <location filename="../core/record/file_analysis.cpp" line="+62"/>
         <source>%n damaged chunk(s) were skipped</source>
         <translation>
             <numerusform>%n damaged chunk was skipped</numerusform>
@@ -45,7 +45,7 @@
 <context>
     <name>imudesk::models::LatestValuesModel</name>
     <message numerus="yes">
-        <location filename="../core/models/latest_values_model.cpp" line="+157" />
+        <location filename="../core/itemmodels/latest_values_model.cpp" line="+157"/>
         <source>No new value for %n s: the device stopped sending this quantity (another output content, a polled record that stopped, or a link that went quiet).</source>
         <translation>
             <numerusform>No new value for %n s: the device stopped sending this quantity (another output content, a polled record that stopped, or a link that went quiet).</numerusform>
@@ -56,7 +56,7 @@
 <context>
     <name>imudesk::record::ReplayWorker</name>
     <message numerus="yes">
-        <location filename="../core/record/replay_worker.cpp" line="+68" />
+        <location filename="../core/record/replay_worker.cpp" line="+68"/>
         <source>%n damaged chunk(s) skipped</source>
         <translation>
             <numerusform>%n damaged chunk skipped</numerusform>
@@ -67,7 +67,7 @@
 <context>
     <name>imudesk::station::ModuleRunner</name>
     <message numerus="yes">
-        <location filename="../core/station/module_runner.cpp" line="+478" />
+        <location filename="../core/station/module_runner.cpp" line="+480"/>
         <source>%n setting(s) applied and read back</source>
         <translation>
             <numerusform>%n setting applied and read back</numerusform>
@@ -78,7 +78,7 @@
 <context>
     <name>imudesk::ui::ChartPanel</name>
     <message numerus="yes">
-        <location filename="../ui/charts/chart_panel.cpp" line="+342" />
+        <location filename="../ui/charts/chart_panel.cpp" line="+347"/>
         <source>%n chart(s) saved as one PNG in %1 (%2)</source>
         <translation>
             <numerusform>%n chart saved as one PNG in %1 (%2)</numerusform>
@@ -89,7 +89,7 @@
 <context>
     <name>imudesk::ui::CompassPoseView</name>
     <message numerus="yes">
-        <location filename="../ui/attitude/compass_pose_view.cpp" line="+109" />
+        <location filename="../ui/attitude/compass_pose_view.cpp" line="+109"/>
         <source>%n point(s)</source>
         <translation>
             <numerusform>%n point</numerusform>
@@ -100,7 +100,7 @@
 <context>
     <name>imudesk::ui::ExportDialog</name>
     <message numerus="yes">
-        <location filename="../ui/recording/export_dialog.cpp" line="+199" />
+        <location filename="../ui/recording/export_dialog.cpp" line="+192"/>
         <source>%n row(s) written to %1</source>
         <translation>
             <numerusform>%n row written to %1</numerusform>
@@ -111,18 +111,18 @@
 <context>
     <name>imudesk::ui::MagCalibrationWizard</name>
     <message numerus="yes">
-        <location filename="../ui/calibration/mag_calibration_wizard.cpp" line="+527" />
-        <source>The device now corrects its own output, so ImuDesk's fit keeps the %n raw sample(s) collected before.</source>
+        <location filename="../ui/calibration/mag_calibration_wizard.cpp" line="+666"/>
+        <source>The device now corrects its own output, so ImuDesk&apos;s fit keeps the %n raw sample(s) collected before.</source>
         <translation>
-            <numerusform>The device now corrects its own output, so ImuDesk's fit keeps the %n raw sample collected before.</numerusform>
-            <numerusform>The device now corrects its own output, so ImuDesk's fit keeps the %n raw samples collected before.</numerusform>
+            <numerusform>The device now corrects its own output, so ImuDesk&apos;s fit keeps the %n raw sample collected before.</numerusform>
+            <numerusform>The device now corrects its own output, so ImuDesk&apos;s fit keeps the %n raw samples collected before.</numerusform>
         </translation>
     </message>
 </context>
 <context>
     <name>imudesk::ui::ModbusScanDialog</name>
     <message numerus="yes">
-        <location filename="../ui/bus/modbus_scan_dialog.cpp" line="+159" />
+        <location filename="../ui/bus/modbus_scan_dialog.cpp" line="+159"/>
         <source>Cancelled; %n device(s) found so far.</source>
         <translation>
             <numerusform>Cancelled; %n device found so far.</numerusform>
@@ -130,7 +130,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location line="+4" />
+        <location line="+4"/>
         <source>%n device(s) found.</source>
         <translation>
             <numerusform>%n device found.</numerusform>
@@ -141,7 +141,7 @@
 <context>
     <name>imudesk::ui::RawBytesView</name>
     <message numerus="yes">
-        <location filename="../ui/workspace/raw_bytes_view.cpp" line="+196" />
+        <location filename="../ui/workspace/raw_bytes_view.cpp" line="+196"/>
         <source>… %n read(s) or write(s) not shown (the log dropped them before this view caught up) …</source>
         <translation>
             <numerusform>… %n read or write not shown (the log dropped them before this view caught up) …</numerusform>
@@ -149,7 +149,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location line="+3" />
+        <location line="+3"/>
         <source>… %n byte(s) not shown (more arrived than the view holds) …</source>
         <translation>
             <numerusform>… %n byte not shown (more arrived than the view holds) …</numerusform>
@@ -160,7 +160,7 @@
 <context>
     <name>imudesk::ui::RecordingControls</name>
     <message numerus="yes">
-        <location filename="../ui/recording/recording_controls.cpp" line="+214" />
+        <location filename="../ui/recording/recording_controls.cpp" line="+214"/>
         <source>%n frame(s)</source>
         <translation>
             <numerusform>%n frame</numerusform>

@@ -78,12 +78,7 @@
         <translation>球面覆盖率（%）</translation>
     </message>
     <message>
-        <location line="+2" />
-        <source>Predicted heading error, level module (deg)</source>
-        <translation>预测航向误差，水平放置 (deg)</translation>
-    </message>
-    <message>
-        <location line="+2" />
+        <location line="+6" />
         <source>Soft-iron uncertainty, RMS (%)</source>
         <translation>软磁不确定度，RMS (%)</translation>
     </message>
@@ -306,7 +301,7 @@
         <translation>未知</translation>
     </message>
     <message>
-        <location line="-185" />
+        <location line="-187" />
         <source>Field strength |B| (µT)</source>
         <translation>磁场强度 |B| (µT)</translation>
     </message>
@@ -321,7 +316,17 @@
         <translation>残差 RMS (µT)</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+3" />
+        <source>Predicted heading error, level module, 68 % bound (deg)</source>
+        <translation>预测航向误差，水平模块，68 % 界限（deg）</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Predicted heading error, level module, 95 % bound (deg)</source>
+        <translation>预测航向误差，水平模块，95 % 界限（deg）</translation>
+    </message>
+    <message>
+        <location line="+1" />
         <source>Hard-iron uncertainty, RMS (µT)</source>
         <translation>硬铁不确定度，RMS (µT)</translation>
     </message>
@@ -979,7 +984,7 @@
 <context>
     <name>CaptureSource</name>
     <message>
-        <location filename="../core/record/capture_source.cpp" line="+133" />
+        <location filename="../core/record/capture_source.cpp" line="+128" />
         <location line="+87" />
         <source>%1 cannot be read: %2</source>
         <translation>无法读取 %1：%2</translation>
@@ -1986,7 +1991,7 @@
 <context>
     <name>LinkFactory</name>
     <message>
-        <location filename="../ui/workspace/link_factory.cpp" line="+43" />
+        <location filename="../ui/workspace/link_factory.cpp" line="+59" />
         <source>Simulated HEC495</source>
         <translation>模拟 HEC495</translation>
     </message>
@@ -2001,7 +2006,7 @@
         <translation>请先断开，再连接罗盘。</translation>
     </message>
     <message>
-        <location line="+13" />
+        <location line="+10" />
         <source>Compass</source>
         <translation>罗盘</translation>
     </message>
@@ -2011,7 +2016,7 @@
         <translation>罗盘设置</translation>
     </message>
     <message>
-        <location line="+15" />
+        <location line="+16" />
         <source>The simulated compass could not start: %1</source>
         <translation>模拟罗盘无法启动：%1</translation>
     </message>
@@ -2041,7 +2046,7 @@
         <translation>请先断开，再连接 Modbus 设备。</translation>
     </message>
     <message>
-        <location line="+26" />
+        <location line="+31" />
         <source>The simulated CAN device could not start on %1:%2: %3</source>
         <translation>模拟 CAN 设备无法在 %1:%2 上启动：%3</translation>
     </message>
@@ -2066,7 +2071,7 @@
         <translation>CAN 配置</translation>
     </message>
     <message>
-        <location line="+10" />
+        <location line="+23" />
         <source>%1 cannot be read. Check that the file exists and that you may read it.</source>
         <translation>无法读取 %1。请检查文件是否存在，以及您是否有读取权限。</translation>
     </message>
@@ -2229,12 +2234,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
     <message>
         <location line="+6" />
         <location line="+9" />
-        <location line="+208" />
+        <location line="+211" />
         <source>A hard-iron-only fit (soft iron kept from before) is possible.</source>
         <translation>可以只拟合硬磁（沿用之前的软磁参数）。</translation>
     </message>
     <message>
-        <location line="-211" />
+        <location line="-214" />
         <source>No ellipsoid fits these samples, which cover only part of the sphere. %1, then fit again.</source>
         <translation>这些样本只覆盖了球面的一部分，没有椭球能拟合它们。%1，然后重新拟合。</translation>
     </message>
@@ -2244,7 +2249,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>样本不构成椭球（存在强干扰或附近有移动的磁体）。请远离铁磁物体和电子设备后重新校准。</translation>
     </message>
     <message>
-        <location line="+25" />
+        <location line="+26" />
         <source>Only %1 usable samples; the hard-iron fit needs at least %2.</source>
         <translation>仅有 %1 个可用样本；硬磁拟合至少需要 %2 个。</translation>
     </message>
@@ -2259,7 +2264,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>硬铁拟合无解：请检查样本是否来自磁力计且单位为 µT。</translation>
     </message>
     <message>
-        <location line="+95" />
+        <location line="+97" />
         <source>field strength %1 µT is not the earth's field (%2..%3 µT)</source>
         <translation>磁场强度 %1 µT 不是地磁场（%2..%3 µT）</translation>
     </message>
@@ -2294,7 +2299,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>方向已覆盖，但样本太少或离散过大（相对拟合 %1 µT RMS）：请远离铁器和电子设备，缓慢均匀地旋转，采集更多样本。</translation>
     </message>
     <message>
-        <location line="-138" />
+        <location line="-139" />
         <source>Only %1 usable samples; the 2-D fit needs at least %2. Turn the module a full circle.</source>
         <translation>仅有 %1 个可用样本；二维拟合至少需要 %2 个。请将模块转动一整圈。</translation>
     </message>
@@ -2304,7 +2309,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>水平方向的样本不构成椭圆：请将模块匀速转动一整圈。</translation>
     </message>
     <message>
-        <location line="+46" />
+        <location line="+47" />
         <location line="+17" />
         <source>fit error %1 % is above %2 %</source>
         <translation>拟合误差 %1 % 高于 %2 %</translation>
@@ -2389,9 +2394,42 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
 </context>
 <context>
+    <name>MagEnvironmentJudge</name>
+    <message>
+        <location filename="../core/calib/mag_environment_judge.cpp" line="+167" />
+        <source>|B| changed by %1 µT while the module was still: something near it moves or switches (a magnet, a motor, a current). Remove it or choose another place.</source>
+        <translation>模块静止时 |B| 变化了 %1 µT：附近有东西在移动或通断（磁铁、电机、电流）。请移走它或换一个地方。</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>Turn the module slowly to many orientations at the calibration spot: the field has pointed into %1 % of the sphere so far. The raw |B| (%2 µT now) includes the module's own iron, which the calibration removes, so it is not judged by itself.</source>
+        <translation>请在校准位置把模块缓慢转到多个朝向：目前磁场已指向球面的 %1 %。原始 |B|（现在 %2 µT）包含模块自身的铁磁干扰，校准会将其去除，因此不单独据此判断。</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>So far the field here is about %1 µT once the module's own iron (%2 µT) is taken out. Keep turning (%3 % of the sphere) for the full check.</source>
+        <translation>去除模块自身的铁磁干扰（%2 µT）后，此处磁场目前约为 %1 µT。请继续转动（已覆盖球面的 %3 %）以完成完整检查。</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>The field here is %1 µT once the module's own iron (%2 µT) is taken out: within the Earth's %3..%4 µT, and the same in every orientation within %5 µT. You can calibrate here.</source>
+        <translation>去除模块自身的铁磁干扰（%2 µT）后，此处磁场为 %1 µT：在地磁场的 %3..%4 µT 范围内，且各朝向之间相差不超过 %5 µT。可以在此校准。</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>The field here is %1 µT once the module's own iron (%2 µT) is taken out, outside the Earth's %3..%4 µT: a magnetic object or a steel structure is near. Move away from it, or choose another place.</source>
+        <translation>去除模块自身的铁磁干扰（%2 µT）后，此处磁场为 %1 µT，超出地磁场的 %3..%4 µT：附近有磁性物体或钢结构。请远离它，或换一个地方。</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>Once the module's own iron is taken out, the field still differs by %1 µT between orientations (more than %2 µT): it is not uniform here. Choose another place (outdoors, away from buildings and vehicles), or use 6-axis mode.</source>
+        <translation>去除模块自身的铁磁干扰后，各朝向之间的磁场仍相差 %1 µT（超过 %2 µT）：此处磁场不均匀。请换一个地方（室外，远离建筑物和车辆），或使用 6 轴模式。</translation>
+    </message>
+</context>
+<context>
     <name>ModbusSimulator</name>
     <message>
-        <location filename="../core/sim/modbus_simulator.cpp" line="+46" />
+        <location filename="../core/sim/modbus_simulator.cpp" line="+45" />
         <source>The simulated Modbus device could not open %1: %2</source>
         <translation>模拟 Modbus 设备无法打开 %1：%2</translation>
     </message>
@@ -2465,7 +2503,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>PtySimulator</name>
     <message>
-        <location filename="../core/sim/pty_simulator.cpp" line="+290" />
+        <location filename="../core/sim/pty_simulator.cpp" line="+307" />
         <source>Cannot open a pseudo-terminal: %1</source>
         <translation>无法打开伪终端：%1</translation>
     </message>
@@ -2967,8 +3005,8 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
     <message>
         <location line="+25" />
-        <source>the columns mag_x, mag_y and mag_z (uT) are needed; the header has: %1</source>
-        <translation>需要 mag_x、mag_y 和 mag_z 列（单位 uT）；表头中只有：%1</translation>
+        <source>the columns mag_x, mag_y and mag_z (µT) are needed; the header has: %1</source>
+        <translation>需要 mag_x、mag_y 和 mag_z 列（单位 µT）；表头中只有：%1</translation>
     </message>
 </context>
 <context>
@@ -3880,7 +3918,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>等待中的请求过多；请在其完成后重试</translation>
     </message>
     <message>
-        <location line="+55" />
+        <location line="+56" />
         <source>node %1 sent no TPDO before "%2" either, so its effect cannot be seen: check the node ID</source>
         <translation>节点 %1 在“%2”之前也未发送任何 TPDO，因此无法确认其效果：请检查节点 ID</translation>
     </message>
@@ -3925,7 +3963,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>“%1”回读值为 %2，应为 %3</translation>
     </message>
     <message>
-        <location line="+9" />
+        <location line="+10" />
         <source>%1: done</source>
         <translation>%1：完成</translation>
     </message>
@@ -3938,7 +3976,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::device::CanSession</name>
     <message>
-        <location filename="../core/device/can_session.cpp" line="+96" />
+        <location filename="../core/device/can_session.cpp" line="+100" />
         <source>HiPNUC J1939</source>
         <translation>HiPNUC J1939</translation>
     </message>
@@ -4477,7 +4515,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::device::ModbusSession</name>
     <message>
-        <location filename="../core/device/modbus_session.cpp" line="+92" />
+        <location filename="../core/device/modbus_session.cpp" line="+98" />
         <source>ILLEGAL FUNCTION (01): the device does not support this request at %1.</source>
         <translation>ILLEGAL FUNCTION（01，非法功能）：设备不支持对 %1 的此请求。</translation>
     </message>
@@ -4562,7 +4600,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>节点 %1 已恢复应答</translation>
     </message>
     <message>
-        <location line="+36" />
+        <location line="+37" />
         <source>not connected</source>
         <translation>未连接</translation>
     </message>
@@ -4587,17 +4625,17 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>寄存器地址和数值必须为 0..65535。</translation>
     </message>
     <message>
-        <location line="+33" />
+        <location line="+35" />
         <source>Done: %1.</source>
         <translation>完成：%1。</translation>
     </message>
     <message>
-        <location line="+14" />
+        <location line="+15" />
         <source>Written, but reading it back failed: %1</source>
         <translation>已写入，但回读失败：%1</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+4" />
         <source>Written, but the device reads back %1 instead of %2.</source>
         <translation>已写入，但设备回读值为 %1，而不是 %2。</translation>
     </message>
@@ -4635,7 +4673,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::device::SessionEngine</name>
     <message>
-        <location filename="../core/device/session_engine.cpp" line="+111" />
+        <location filename="../core/device/session_engine.cpp" line="+128" />
         <source>the connection was closed</source>
         <translation>连接已关闭</translation>
     </message>
@@ -4655,7 +4693,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>%1，波特率 %2（已重连）</translation>
     </message>
     <message>
-        <location line="+47" />
+        <location line="+55" />
         <source>the port is not open</source>
         <translation>串口未打开</translation>
     </message>
@@ -4706,7 +4744,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::io::SerialTransport</name>
     <message>
-        <location filename="../core/io/serial_transport.cpp" line="+27" />
+        <location filename="../core/io/serial_transport.cpp" line="+28" />
         <source>Port %1 was not found. Check that the device is plugged in and choose the port again from the list.</source>
         <translation>未找到串口 %1。请检查设备是否已插好，然后从列表中重新选择串口。</translation>
     </message>
@@ -4726,7 +4764,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>无法打开 %1：%2</translation>
     </message>
     <message>
-        <location line="+206" />
+        <location line="+225" />
         <source>The connection to %1 was lost (%2). Check the cable; everything received so far is kept.</source>
         <translation>与 %1 的连接已断开（%2）。请检查线缆；已接收的数据都会保留。</translation>
     </message>
@@ -4797,7 +4835,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::models::CalibrationHistoryModel</name>
     <message>
-        <location filename="../core/models/calibration_history_model.cpp" line="+41" />
+        <location filename="../core/itemmodels/calibration_history_model.cpp" line="+41" />
         <source>Magnetometer</source>
         <translation>磁力计</translation>
     </message>
@@ -4818,8 +4856,8 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
     <message>
         <location line="+8" />
-        <source>|B| %1 uT, fit error %2 %, coverage %3 %</source>
-        <translation>|B| %1 uT，拟合误差 %2 %，覆盖率 %3 %</translation>
+        <source>|B| %1 µT, fit error %2 %, coverage %3 %</source>
+        <translation>|B| %1 µT，拟合误差 %2 %，覆盖率 %3 %</translation>
     </message>
     <message>
         <location line="+5" />
@@ -4855,7 +4893,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::models::CanFrameMonitorModel</name>
     <message>
-        <location filename="../core/models/can_frame_monitor_model.cpp" line="+32" />
+        <location filename="../core/itemmodels/can_frame_monitor_model.cpp" line="+32" />
         <source>Ext</source>
         <translation>扩展</translation>
     </message>
@@ -4933,7 +4971,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::models::CommandLogModel</name>
     <message>
-        <location filename="../core/models/command_log_model.cpp" line="+88" />
+        <location filename="../core/itemmodels/command_log_model.cpp" line="+88" />
         <source>waiting</source>
         <translation>等待中</translation>
     </message>
@@ -4986,7 +5024,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::models::LatestValuesModel</name>
     <message>
-        <location filename="../core/models/latest_values_model.cpp" line="+179" />
+        <location filename="../core/itemmodels/latest_values_model.cpp" line="+179" />
         <source>Quantity</source>
         <translation>物理量</translation>
     </message>
@@ -5521,7 +5559,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::models::RegisterTableModel</name>
     <message>
-        <location filename="../core/models/register_table_model.cpp" line="+146" />
+        <location filename="../core/itemmodels/register_table_model.cpp" line="+146" />
         <source>Address</source>
         <translation>地址</translation>
     </message>
@@ -5569,7 +5607,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::models::SettingsTableModel</name>
     <message>
-        <location filename="../core/models/settings_table_model.cpp" line="+61" />
+        <location filename="../core/itemmodels/settings_table_model.cpp" line="+61" />
         <source>unknown setting '%1'</source>
         <translation>未知设置项“%1”</translation>
     </message>
@@ -5735,7 +5773,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
     <message>
         <location line="+18" />
-        <location line="+236" />
+        <location line="+248" />
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
@@ -5847,7 +5885,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::sim::SimulatedTransport</name>
     <message>
-        <location filename="../core/sim/simulated_transport.cpp" line="+73" />
+        <location filename="../core/sim/simulated_transport.cpp" line="+86" />
         <source>The connection to %1 was lost (simulated unplug). Check the cable; everything received so far is kept.</source>
         <translation>与 %1 的连接已断开（模拟拔出）。请检查线缆；已收到的数据全部保留。</translation>
     </message>
@@ -5855,12 +5893,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::station::ModuleRunner</name>
     <message>
-        <location filename="../core/station/module_runner.cpp" line="+82" />
+        <location filename="../core/station/module_runner.cpp" line="+83" />
         <source>the module did not answer on %1 within %2 s: check the cable, the power and the port</source>
         <translation>模块在 %2 s 内未在 %1 上应答：请检查线缆、电源和串口</translation>
     </message>
     <message>
-        <location line="+39" />
+        <location line="+40" />
         <source>the module's settings could not be read: %1</source>
         <translation>无法读取模块的设置：%1</translation>
     </message>
@@ -6574,12 +6612,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>阿伦方差</translation>
     </message>
     <message>
-        <location line="+25" />
+        <location line="+18" />
         <source>Analysing %1…</source>
         <translation>正在分析 %1…</translation>
     </message>
     <message>
-        <location line="+39" />
+        <location line="+42" />
         <source>%1: %2 frames over %3 s, output rate %4 Hz, interval %5 ± %6 ms, frames lost %7</source>
         <translation>%1：%3 s 内共 %2 帧，输出频率 %4 Hz，帧间隔 %5 ± %6 ms，丢帧 %7</translation>
     </message>
@@ -7709,7 +7747,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::ChartPanel</name>
     <message>
-        <location filename="../ui/charts/chart_panel.cpp" line="+148" />
+        <location filename="../ui/charts/chart_panel.cpp" line="+145" />
         <source>Charts</source>
         <translation>图表</translation>
     </message>
@@ -7789,7 +7827,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>将显示的图表保存为一张 PNG 图片</translation>
     </message>
     <message numerus="yes">
-        <location line="+175" />
+        <location line="+183" />
         <source>%n chart(s) saved as one PNG in %1 (%2)</source>
         <translation>
             <numerusform>已将 %n 个图表保存为一张 PNG，位于 %1（%2）</numerusform>
@@ -8059,12 +8097,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::ComparisonChart</name>
     <message>
-        <location filename="../ui/charts/comparison_chart.cpp" line="+108" />
-        <source>Comparison</source>
-        <translation>对比</translation>
-    </message>
-    <message>
-        <location line="+1" />
+        <location filename="../ui/charts/comparison_chart.cpp" line="+110" />
         <source>&amp;Channel:</source>
         <translation>通道(&amp;C)：</translation>
     </message>
@@ -8448,7 +8481,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::DeviceWorkspace</name>
     <message>
-        <location filename="../ui/workspace/device_workspace.cpp" line="+322" />
+        <location filename="../ui/workspace/device_workspace.cpp" line="+336" />
         <source>New connection</source>
         <translation>新连接</translation>
     </message>
@@ -8473,7 +8506,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>模拟 %1（固件 %2）</translation>
     </message>
     <message>
-        <location line="+208" />
+        <location line="+219" />
         <source>Not connected</source>
         <translation>未连接</translation>
     </message>
@@ -8673,12 +8706,12 @@ Link load = bytes per second × 10 bits / baud rate.</source>
 <context>
     <name>imudesk::ui::ExportDialog</name>
     <message>
-        <location filename="../ui/recording/export_dialog.cpp" line="+106" />
+        <location filename="../ui/recording/export_dialog.cpp" line="+101" />
         <source>Export %1</source>
         <translation>导出 %1</translation>
     </message>
     <message>
-        <location line="-75" />
+        <location line="-70" />
         <source>Vendor CSV (one file per frame type)</source>
         <translation>厂商 CSV（每种帧类型一个文件）</translation>
     </message>
@@ -8749,7 +8782,7 @@ Link load = bytes per second × 10 bits / baud rate.</source>
         <translation>结束：</translation>
     </message>
     <message>
-        <location line="+44" />
+        <location line="+39" />
         <source>Export capture</source>
         <translation>导出捕获</translation>
     </message>
@@ -8759,7 +8792,7 @@ Link load = bytes per second × 10 bits / baud rate.</source>
         <translation>捕获、厂商 CSV 和原始转储 (*.imucap *.csv *.bin *.raw *.log *.dat *.txt);;所有文件 (*)</translation>
     </message>
     <message>
-        <location line="+43" />
+        <location line="+41" />
         <source>Exporting…</source>
         <translation>正在导出…</translation>
     </message>
@@ -9623,7 +9656,7 @@ Method: %3</source>
 <context>
     <name>imudesk::ui::MagCalibrationWizard</name>
     <message>
-        <location filename="../ui/calibration/mag_calibration_wizard.cpp" line="+39" />
+        <location filename="../ui/calibration/mag_calibration_wizard.cpp" line="+40" />
         <source>unknown</source>
         <translation>未知</translation>
     </message>
@@ -9633,12 +9666,12 @@ Method: %3</source>
         <translation>无界</translation>
     </message>
     <message>
-        <location line="+25" />
+        <location line="+61" />
         <source>Magnetometer calibration</source>
         <translation>地磁校准</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+1" />
         <source>Before you start</source>
         <translation>开始之前</translation>
     </message>
@@ -9656,12 +9689,13 @@ If the module is mounted on a PCB, in a housing or on a robot, calibrate it toge
 如果模块安装在 PCB 上、外壳中或机器人上，请将它们作为一个刚体一起校准：模块安装后，单独校准模块没有用。</translation>
     </message>
     <message>
-        <location line="+8" />
+        <location line="+15" />
+        <location line="+240" />
         <source>Working mode</source>
         <translation>工作模式</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="-239" />
         <source>The calibration needs the 9-axis (AHRS) mode, CONFIG ATT MODE 1 (the factory setting). ImuDesk reads the module's mode first and offers a switch only when it runs in a 6-axis mode; the switch sends CONFIG ATT MODE 1, SAVECONFIG and REBOOT.</source>
         <translation>校准需要 9 轴（AHRS）模式，即 CONFIG ATT MODE 1（出厂设置）。ImuDesk 先读取模块的模式，仅当其运行在 6 轴模式时才提供切换；切换会发送 CONFIG ATT MODE 1、SAVECONFIG 和 REBOOT。</translation>
     </message>
@@ -9671,7 +9705,7 @@ If the module is mounted on a PCB, in a housing or on a robot, calibrate it toge
         <translation>切换到 9 轴模式</translation>
     </message>
     <message>
-        <location line="+19" />
+        <location line="+27" />
         <source>The module did not take ATT MODE 1 (%1). Check the connection and try again.</source>
         <translation>模块未接受 ATT MODE 1（%1）。请检查连接后重试。</translation>
     </message>
@@ -9686,7 +9720,7 @@ If the module is mounted on a PCB, in a housing or on a robot, calibrate it toge
         <translation>已设置 ATT MODE 1；正在保存（SAVECONFIG）…</translation>
     </message>
     <message>
-        <location line="+10" />
+        <location line="+11" />
         <source>%1 failed: %2. Try again, or save and restart from the Configuration panel.</source>
         <translation>%1 失败：%2。请重试，或在配置面板中保存并重启。</translation>
     </message>
@@ -9701,12 +9735,163 @@ If the module is mounted on a PCB, in a housing or on a robot, calibrate it toge
         <translation>模块以 9 轴模式重启；正在回读…</translation>
     </message>
     <message>
-        <location line="+6" />
+        <location line="+9" />
+        <location line="+172" />
         <source>Environment check</source>
         <translation>环境检查</translation>
     </message>
+    <message>
+        <location line="-171" />
+        <source>At the calibration spot, turn the module slowly through many orientations. The module's own iron is taken out of the field first; what is left must be the Earth's field (20-65 µT), the same in every orientation (within 10 µT), and steady while the module is still.</source>
+        <translation>在校准位置把模块缓慢转过多个朝向。先从磁场中去除模块自身的铁磁干扰；剩下的必须是地磁场（20-65 µT），在各朝向上相同（相差不超过 10 µT），并且在模块静止时保持稳定。</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Raw |B|: the field strength as measured, the module's own iron included. Field at the spot: the strength once that iron is fitted out. Spread: how much it differs between orientations (5th to 95th percentile). Change while still: |B| drift while the gyro shows no turn.</source>
+        <translation>原始 |B|：测得的磁场强度，包含模块自身的铁磁干扰。此处磁场：拟合去除该干扰后的强度。离散：各朝向之间的差异（第 5 到第 95 百分位）。静止时变化：陀螺仪显示未转动时 |B| 的漂移。</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>The raw field as it comes from the module (µT), one dot per sample</source>
+        <translation>模块输出的原始磁场（µT），每个样本一个点</translation>
+    </message>
+    <message>
+        <location line="+162" />
+        <source>read from the module; a switch to 9-axis is offered when needed</source>
+        <translation>从模块读取；需要时提供切换到 9 轴模式</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>turn the module at the spot: the field is judged with its own iron taken out</source>
+        <translation>在该位置转动模块：去除其自身铁磁干扰后判断磁场</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>slowly about every axis until the sphere is covered, usually 30-60 s; %1</source>
+        <translation>绕每个轴缓慢转动直到覆盖整个球面，通常 30-60 s；%1</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>the module calibrates itself at the same time (CONFIG MCAL, firmware %1)</source>
+        <translation>模块同时进行自身的校准（CONFIG MCAL，固件 %1）</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>firmware %1 calibrates in the background in 9-axis mode</source>
+        <translation>固件 %1 在 9 轴模式下于后台校准</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>ImuDesk's fit and the module's own verdict, side by side; saved with the samples</source>
+        <translation>ImuDesk 的拟合与模块自身的结论并排显示；与样本一起保存</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>one level turn: the heading must follow without jumps</source>
+        <translation>水平转一圈：航向必须连续跟随，没有跳变</translation>
+    </message>
+    <message>
+        <location line="+11" />
+        <source>heading from the gyro alone: it drifts, the magnetometer is not used</source>
+        <translation>航向仅来自陀螺仪：会漂移，不使用磁力计</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>heading follows magnetic north: needs this calibration</source>
+        <translation>航向跟随磁北：需要本校准</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>6-axis, for legged robots (firmware 1.7.x)</source>
+        <translation>6 轴，用于足式机器人（固件 1.7.x）</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>◀ the module</source>
+        <translation>◀ 本模块</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>ATT MODE</source>
+        <translation>ATT MODE</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Heading</source>
+        <translation>航向</translation>
+    </message>
+    <message>
+        <location line="+21" />
+        <source>Raw |B| now</source>
+        <translation>当前原始 |B|</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>µT</source>
+        <translation>µT</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Field at the spot</source>
+        <translation>此处磁场</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>µT (Earth: 20–65)</source>
+        <translation>µT（地磁场：20–65）</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Module's own iron</source>
+        <translation>模块自身铁磁干扰</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>µT, removed by the calibration</source>
+        <translation>µT，由校准去除</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Spread</source>
+        <translation>离散</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>µT between orientations (≤ 10)</source>
+        <translation>µT，各朝向之间（≤ 10）</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Change while still</source>
+        <translation>静止时变化</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>µT (≤ 3)</source>
+        <translation>µT（≤ 3）</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Directions</source>
+        <translation>方向</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>% of the sphere</source>
+        <translation>% 的球面</translation>
+    </message>
+    <message>
+        <location line="+21" />
+        <source>&lt;tr&gt;&lt;td&gt;Predicted heading error&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1°&lt;/b&gt;&lt;/td&gt;&lt;td&gt;level module, 68 %; 95 %: %2°&lt;/td&gt;&lt;/tr&gt;</source>
+        <translation>&lt;tr&gt;&lt;td&gt;预测航向误差&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1°&lt;/b&gt;&lt;/td&gt;&lt;td&gt;水平模块，68 %；95 %：%2°&lt;/td&gt;&lt;/tr&gt;</translation>
+    </message>
+    <message>
+        <location line="+24" />
+        <source>&lt;tr&gt;&lt;td&gt;Predicted heading error&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1°&lt;/b&gt;&lt;/td&gt;&lt;td&gt;level, 68 % (95 %: %4°; pass &amp;lt; %2°, refused &amp;gt; %3°)&lt;/td&gt;&lt;/tr&gt;</source>
+        <translation>&lt;tr&gt;&lt;td&gt;预测航向误差&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1°&lt;/b&gt;&lt;/td&gt;&lt;td&gt;水平，68 %（95 %：%4°；通过 &amp;lt; %2°，拒绝 &amp;gt; %3°）&lt;/td&gt;&lt;/tr&gt;</translation>
+    </message>
     <message numerus="yes">
-        <location line="+393" />
+        <location line="+201" />
         <source>The device now corrects its own output, so ImuDesk's fit keeps the %n raw sample(s) collected before.</source>
         <translation>
             <numerusform>设备现在会自行校正其输出，因此 ImuDesk 的拟合只保留此前采集的 %n 个原始样本。</numerusform>
@@ -9751,33 +9936,23 @@ Residual RMS: %6 µT
 </translation>
     </message>
     <message>
-        <location line="+14" />
-        <source>Predicted heading error: %1° (%2)
-Hard-iron uncertainty: +-%3 µT
-Soft-iron uncertainty: +-%4 %
-</source>
-        <translation>预测航向误差：%1°（%2）
-硬铁不确定度：+-%3 µT
-软铁不确定度：+-%4 %
-</translation>
-    </message>
-    <message>
-        <location line="-475" />
+        <location line="-537" />
+        <location line="+156" />
         <source>Turn the module</source>
         <translation>转动模块</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="-155" />
         <source>Keep it in place and turn it slowly (20-100 deg/s) at least one full turn about each axis, until the sphere is green all over. Usually 30-60 s.</source>
         <translation>保持模块位置不变，缓慢转动（20-100 deg/s），绕每个轴至少转一整圈，直到球面全部变绿。通常需要 30-60 s。</translation>
     </message>
     <message>
-        <location line="+14" />
+        <location line="+3" />
         <source>Coverage: share of the 80 sphere cells the field has pointed into. Largest gap: radius of the biggest uncovered area. Raw |B|: the field strength before calibration (its spread is the iron the fit removes). Fit: the field and the residual of ImuDesk's fit on the samples so far, refreshed every second.</source>
         <translation>覆盖率：磁场方向已覆盖的 80 个球面单元的比例。最大空缺：最大未覆盖区域的半径。原始 |B|：校准前的磁场强度（其离散程度即拟合要消除的铁磁干扰）。拟合：ImuDesk 对当前样本拟合得到的磁场强度和残差，每秒刷新。</translation>
     </message>
     <message>
-        <location line="+7" />
+        <location line="+8" />
         <source>Start the device's calibration</source>
         <translation>启动设备校准</translation>
     </message>
@@ -9787,22 +9962,24 @@ Soft-iron uncertainty: +-%4 %
         <translation>立即用 ImuDesk 拟合校准</translation>
     </message>
     <message>
-        <location line="+11" />
+        <location line="+10" />
+        <location line="+135" />
         <source>Result</source>
         <translation>结果</translation>
     </message>
     <message>
-        <location line="+29" />
+        <location line="-106" />
+        <location line="+107" />
         <source>Heading check</source>
         <translation>航向角检查</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="-106" />
         <source>Place the module level and turn it slowly one full turn (360 deg). The heading must change continuously, without jumps of more than 10 deg; within +-5 deg of the true directions is acceptable.</source>
         <translation>将模块水平放置，缓慢转动一整圈（360 deg）。航向角须连续变化，跳变不超过 10 deg；与真实方向相差 +-5 deg 以内即可接受。</translation>
     </message>
     <message>
-        <location line="+267" />
+        <location line="+354" />
         <location line="+16" />
         <source>ImuDesk's fit: %1. %2</source>
         <translation>ImuDesk 拟合：%1。%2</translation>
@@ -9815,27 +9992,22 @@ Soft-iron uncertainty: +-%4 %
 %3</translation>
     </message>
     <message>
-        <location line="-258" />
+        <location line="-344" />
         <source>Reading the working mode from the module (LOG COMCONFIG)…</source>
         <translation>正在从模块读取工作模式（LOG COMCONFIG）…</translation>
     </message>
     <message>
-        <location line="-110" />
-        <source>Hold the module at the calibration spot and turn it to a few orientations. The field must be 20-60 µT and vary by no more than 10 µT between orientations.</source>
-        <translation>将模块放在校准位置，并转到几个不同朝向。磁场必须在 20-60 µT 之间，且不同朝向之间的变化不超过 10 µT。</translation>
-    </message>
-    <message>
-        <location line="+117" />
+        <location line="+8" />
         <source>The working mode could not be read: %1. Check the connection, then press Back and Next to read it again, or switch to the 9-axis mode anyway.</source>
         <translation>无法读取工作模式：%1。请检查连接，然后按“上一步”和“下一步”重新读取，或直接切换到 9 轴模式。</translation>
     </message>
     <message>
-        <location line="+9" />
+        <location line="+11" />
         <source>The module runs in the 9-axis (AHRS) mode, ATT MODE 1: nothing to change. Press Next.</source>
         <translation>模块运行在 9 轴（AHRS）模式，ATT MODE 1：无需更改。请按“下一步”。</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+6" />
         <source>The module runs in a 6-axis mode (ATT MODE %1): its heading ignores the magnetometer. Switch to the 9-axis mode before you calibrate.</source>
         <translation>模块运行在 6 轴模式（ATT MODE %1）：其航向不使用磁力计。校准前请切换到 9 轴模式。</translation>
     </message>
@@ -9850,7 +10022,7 @@ Soft-iron uncertainty: +-%4 %
         <translation>目前：%1。%2</translation>
     </message>
     <message>
-        <location line="+10" />
+        <location line="+83" />
         <source>&lt;tr&gt;&lt;td&gt;ImuDesk's fit&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1&lt;/b&gt;&lt;/td&gt;&lt;td&gt;&lt;/td&gt;&lt;/tr&gt;</source>
         <translation>&lt;tr&gt;&lt;td&gt;ImuDesk 拟合&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1&lt;/b&gt;&lt;/td&gt;&lt;td&gt;&lt;/td&gt;&lt;/tr&gt;</translation>
     </message>
@@ -9860,12 +10032,7 @@ Soft-iron uncertainty: +-%4 %
         <translation>&lt;tr&gt;&lt;td&gt;覆盖率&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1 %&lt;/b&gt;&lt;/td&gt;&lt;td&gt;磁场方向&lt;/td&gt;&lt;/tr&gt;</translation>
     </message>
     <message>
-        <location line="+9" />
-        <source>&lt;tr&gt;&lt;td&gt;Predicted heading error&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1°&lt;/b&gt;&lt;/td&gt;&lt;td&gt;level module&lt;/td&gt;&lt;/tr&gt;</source>
-        <translation>&lt;tr&gt;&lt;td&gt;预测航向误差&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1°&lt;/b&gt;&lt;/td&gt;&lt;td&gt;模块水平时&lt;/td&gt;&lt;/tr&gt;</translation>
-    </message>
-    <message>
-        <location line="+6" />
+        <location line="+16" />
         <source>&lt;tr&gt;&lt;td&gt;Coverage&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1 %&lt;/b&gt;&lt;/td&gt;&lt;td&gt;(%2 of %3 cells)&lt;/td&gt;&lt;/tr&gt;</source>
         <translation>&lt;tr&gt;&lt;td&gt;覆盖率&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1 %&lt;/b&gt;&lt;/td&gt;&lt;td&gt;（%3 个单元中的 %2 个）&lt;/td&gt;&lt;/tr&gt;</translation>
     </message>
@@ -9880,19 +10047,14 @@ Soft-iron uncertainty: +-%4 %
         <translation>&lt;tr&gt;&lt;td&gt;原始 |B|&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1–%2&lt;/b&gt;&lt;/td&gt;&lt;td&gt;µT&lt;/td&gt;&lt;/tr&gt;</translation>
     </message>
     <message>
-        <location line="-19" />
-        <location line="+23" />
+        <location line="-20" />
+        <location line="+24" />
         <source>&lt;tr&gt;&lt;td&gt;Fitted field&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1&lt;/b&gt;&lt;/td&gt;&lt;td&gt;µT&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Fit residual&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%2&lt;/b&gt;&lt;/td&gt;&lt;td&gt;µT RMS (%3 %)&lt;/td&gt;&lt;/tr&gt;</source>
         <translation>&lt;tr&gt;&lt;td&gt;拟合磁场&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1&lt;/b&gt;&lt;/td&gt;&lt;td&gt;µT&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;拟合残差&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%2&lt;/b&gt;&lt;/td&gt;&lt;td&gt;µT RMS（%3 %）&lt;/td&gt;&lt;/tr&gt;</translation>
     </message>
     <message>
-        <location line="+6" />
-        <source>&lt;tr&gt;&lt;td&gt;Predicted heading error&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1°&lt;/b&gt;&lt;/td&gt;&lt;td&gt;level (pass &amp;lt; %2°, refused &amp;gt; %3°)&lt;/td&gt;&lt;/tr&gt;</source>
-        <translation>&lt;tr&gt;&lt;td&gt;预测航向误差&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1°&lt;/b&gt;&lt;/td&gt;&lt;td&gt;水平放置（通过 &amp;lt; %2°，拒绝 &amp;gt; %3°）&lt;/td&gt;&lt;/tr&gt;</translation>
-    </message>
-    <message>
-        <location line="-21" />
-        <location line="+26" />
+        <location line="-15" />
+        <location line="+27" />
         <source>&lt;tr&gt;&lt;td&gt;Samples&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1&lt;/b&gt;&lt;/td&gt;&lt;td&gt;&lt;/td&gt;&lt;/tr&gt;</source>
         <translation>&lt;tr&gt;&lt;td&gt;样本数&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1&lt;/b&gt;&lt;/td&gt;&lt;td&gt;&lt;/td&gt;&lt;/tr&gt;</translation>
     </message>
@@ -9902,7 +10064,7 @@ Soft-iron uncertainty: +-%4 %
         <translation>正在设置 ATT MODE 1…</translation>
     </message>
     <message>
-        <location line="+99" />
+        <location line="+106" />
         <source>Turned %1 deg, largest step %2 deg: %3</source>
         <translation>已转动 %1 deg，最大跳变 %2 deg：%3</translation>
     </message>
@@ -9937,12 +10099,23 @@ Soft-iron uncertainty: +-%4 %
         <translation>水平放置；高于 %1° 给出警告</translation>
     </message>
     <message>
+        <location line="+1" />
+        <source>Predicted heading error: %1° in 68 % of cases, %5° in 95 % (%2)
+Hard-iron uncertainty: +-%3 µT
+Soft-iron uncertainty: +-%4 %
+</source>
+        <translation>预测航向误差：68 % 的情况下 %1°，95 % 的情况下 %5°（%2）
+硬铁不确定度：+-%3 µT
+软铁不确定度：+-%4 %
+</translation>
+    </message>
+    <message>
         <location line="+3" />
         <source>kept from before</source>
         <translation>沿用之前的</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+4" />
         <source>Coverage: %1 %
 Eigenvalue ratio: %2
 Samples: %3</source>
@@ -9987,7 +10160,7 @@ Samples: %3</source>
 <context>
     <name>imudesk::ui::MainWindow</name>
     <message>
-        <location filename="../ui/workspace/main_window.cpp" line="+363" />
+        <location filename="../ui/workspace/main_window.cpp" line="+369" />
         <source>Choose a port first.</source>
         <translation>请先选择串口。</translation>
     </message>
@@ -10037,7 +10210,7 @@ Samples: %3</source>
         <translation>PNG 图像 (*.png)</translation>
     </message>
     <message>
-        <location line="+121" />
+        <location line="+123" />
         <source>&amp;File</source>
         <translation>文件(&amp;F)</translation>
     </message>
@@ -11557,7 +11730,7 @@ Default: %2</source>
 <context>
     <name>imudesk::ui::StationView</name>
     <message>
-        <location filename="../ui/station/station_view.cpp" line="+250" />
+        <location filename="../ui/station/station_view.cpp" line="+252" />
         <location line="+75" />
         <source>Production station</source>
         <translation>生产测试台</translation>
@@ -11764,7 +11937,7 @@ Default: %2</source>
         <translation>请等待运行结束或将其取消，然后再更改模拟托盘。</translation>
     </message>
     <message>
-        <location line="+20" />
+        <location line="+21" />
         <source>a good module</source>
         <translation>正常模块</translation>
     </message>
@@ -11784,17 +11957,17 @@ Default: %2</source>
         <translation>旧版固件</translation>
     </message>
     <message>
-        <location line="+9" />
+        <location line="+14" />
         <source>The simulated modules could not start: %1</source>
         <translation>模拟模块无法启动：%1</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+7" />
         <source>Simulated HI14 %1 of %2, firmware %3: %4</source>
         <translation>模拟 HI14（第 %1 个，共 %2 个），固件 %3：%4</translation>
     </message>
     <message>
-        <location line="+39" />
+        <location line="+58" />
         <source>Simulated tray</source>
         <translation>模拟托盘</translation>
     </message>
@@ -11838,7 +12011,7 @@ Edit it (Edit…) and start again.</source>
         <translation>请先勾选待测模块的串口。</translation>
     </message>
     <message>
-        <location line="+12" />
+        <location line="+17" />
         <source>The report folder cannot be used: %1</source>
         <translation>报告文件夹无法使用：%1</translation>
     </message>
@@ -11931,7 +12104,7 @@ Edit it (Edit…) and start again.</source>
 <context>
     <name>imudesk::ui::ToolActions</name>
     <message>
-        <location filename="../ui/workspace/tool_actions.cpp" line="+110" />
+        <location filename="../ui/workspace/tool_actions.cpp" line="+105" />
         <source>&amp;Open capture…</source>
         <translation>打开记录(&amp;O)…</translation>
     </message>
@@ -12111,7 +12284,7 @@ Edit it (Edit…) and start again.</source>
         <translation>校准(&amp;C)</translation>
     </message>
     <message>
-        <location line="+47" />
+        <location line="+48" />
         <source>%1 could not be imported: %2</source>
         <translation>无法导入 %1：%2</translation>
     </message>

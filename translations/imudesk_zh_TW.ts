@@ -78,12 +78,7 @@
         <translation>球面覆蓋率（%）</translation>
     </message>
     <message>
-        <location line="+2" />
-        <source>Predicted heading error, level module (deg)</source>
-        <translation>預測航向誤差，水平放置 (deg)</translation>
-    </message>
-    <message>
-        <location line="+2" />
+        <location line="+6" />
         <source>Soft-iron uncertainty, RMS (%)</source>
         <translation>軟磁不確定度，RMS (%)</translation>
     </message>
@@ -306,7 +301,7 @@
         <translation>未知</translation>
     </message>
     <message>
-        <location line="-185" />
+        <location line="-187" />
         <source>Field strength |B| (µT)</source>
         <translation>磁場強度 |B| (µT)</translation>
     </message>
@@ -321,7 +316,17 @@
         <translation>殘差 RMS (µT)</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+3" />
+        <source>Predicted heading error, level module, 68 % bound (deg)</source>
+        <translation>預測航向誤差，水平模組，68 % 界限（deg）</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Predicted heading error, level module, 95 % bound (deg)</source>
+        <translation>預測航向誤差，水平模組，95 % 界限（deg）</translation>
+    </message>
+    <message>
+        <location line="+1" />
         <source>Hard-iron uncertainty, RMS (µT)</source>
         <translation>硬鐵不確定度，RMS (µT)</translation>
     </message>
@@ -979,7 +984,7 @@
 <context>
     <name>CaptureSource</name>
     <message>
-        <location filename="../core/record/capture_source.cpp" line="+133" />
+        <location filename="../core/record/capture_source.cpp" line="+128" />
         <location line="+87" />
         <source>%1 cannot be read: %2</source>
         <translation>無法讀取 %1：%2</translation>
@@ -1986,7 +1991,7 @@
 <context>
     <name>LinkFactory</name>
     <message>
-        <location filename="../ui/workspace/link_factory.cpp" line="+43" />
+        <location filename="../ui/workspace/link_factory.cpp" line="+59" />
         <source>Simulated HEC495</source>
         <translation>模擬 HEC495</translation>
     </message>
@@ -2001,7 +2006,7 @@
         <translation>請先中斷連線，再連線到羅盤。</translation>
     </message>
     <message>
-        <location line="+13" />
+        <location line="+10" />
         <source>Compass</source>
         <translation>羅盤</translation>
     </message>
@@ -2011,7 +2016,7 @@
         <translation>羅盤設定</translation>
     </message>
     <message>
-        <location line="+15" />
+        <location line="+16" />
         <source>The simulated compass could not start: %1</source>
         <translation>模擬羅盤無法啟動：%1</translation>
     </message>
@@ -2041,7 +2046,7 @@
         <translation>請先中斷連線，再連線到 Modbus 裝置。</translation>
     </message>
     <message>
-        <location line="+26" />
+        <location line="+31" />
         <source>The simulated CAN device could not start on %1:%2: %3</source>
         <translation>模擬 CAN 裝置無法在 %1:%2 上啟動：%3</translation>
     </message>
@@ -2066,7 +2071,7 @@
         <translation>CAN 配置</translation>
     </message>
     <message>
-        <location line="+10" />
+        <location line="+23" />
         <source>%1 cannot be read. Check that the file exists and that you may read it.</source>
         <translation>無法讀取 %1。請確認檔案存在且您有讀取權限。</translation>
     </message>
@@ -2229,12 +2234,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
     <message>
         <location line="+6" />
         <location line="+9" />
-        <location line="+208" />
+        <location line="+211" />
         <source>A hard-iron-only fit (soft iron kept from before) is possible.</source>
         <translation>可以只擬合硬鐵（保留先前的軟鐵參數）。</translation>
     </message>
     <message>
-        <location line="-211" />
+        <location line="-214" />
         <source>No ellipsoid fits these samples, which cover only part of the sphere. %1, then fit again.</source>
         <translation>這些樣本只覆蓋了球面的一部分，沒有橢球能擬合它們。%1，然後重新擬合。</translation>
     </message>
@@ -2244,7 +2249,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>樣本無法構成橢球（附近有強干擾或移動的磁鐵）。請遠離鐵件和電子裝置後重新校準。</translation>
     </message>
     <message>
-        <location line="+25" />
+        <location line="+26" />
         <source>Only %1 usable samples; the hard-iron fit needs at least %2.</source>
         <translation>僅有 %1 個可用樣本；硬鐵擬合至少需要 %2 個。</translation>
     </message>
@@ -2259,7 +2264,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>硬鐵擬合無解：請檢查樣本是否來自磁力計且單位為 µT。</translation>
     </message>
     <message>
-        <location line="+95" />
+        <location line="+97" />
         <source>field strength %1 µT is not the earth's field (%2..%3 µT)</source>
         <translation>磁場強度 %1 µT 不是地磁場（%2..%3 µT）</translation>
     </message>
@@ -2294,7 +2299,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>方向已覆蓋，但樣本太少或離散過大（相對擬合 %1 µT RMS）：請遠離鐵器和電子設備，緩慢均勻地旋轉，擷取更多樣本。</translation>
     </message>
     <message>
-        <location line="-138" />
+        <location line="-139" />
         <source>Only %1 usable samples; the 2-D fit needs at least %2. Turn the module a full circle.</source>
         <translation>僅有 %1 個可用樣本；二維擬合至少需要 %2 個。請將模組轉動一整圈。</translation>
     </message>
@@ -2304,7 +2309,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>水平樣本無法構成橢圓：請將模組均勻轉動一整圈。</translation>
     </message>
     <message>
-        <location line="+46" />
+        <location line="+47" />
         <location line="+17" />
         <source>fit error %1 % is above %2 %</source>
         <translation>擬合誤差 %1 % 高於 %2 %</translation>
@@ -2389,9 +2394,42 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
 </context>
 <context>
+    <name>MagEnvironmentJudge</name>
+    <message>
+        <location filename="../core/calib/mag_environment_judge.cpp" line="+167" />
+        <source>|B| changed by %1 µT while the module was still: something near it moves or switches (a magnet, a motor, a current). Remove it or choose another place.</source>
+        <translation>模組靜止時 |B| 變化了 %1 µT：附近有東西在移動或通斷（磁鐵、電機、電流）。請移走它或換一個地方。</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>Turn the module slowly to many orientations at the calibration spot: the field has pointed into %1 % of the sphere so far. The raw |B| (%2 µT now) includes the module's own iron, which the calibration removes, so it is not judged by itself.</source>
+        <translation>請在校準位置把模組緩慢轉到多個朝向：目前磁場已指向球面的 %1 %。原始 |B|（現在 %2 µT）包含模組自身的鐵磁干擾，校準會將其去除，因此不單獨據此判斷。</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>So far the field here is about %1 µT once the module's own iron (%2 µT) is taken out. Keep turning (%3 % of the sphere) for the full check.</source>
+        <translation>去除模組自身的鐵磁干擾（%2 µT）後，此處磁場目前約為 %1 µT。請繼續轉動（已覆蓋球面的 %3 %）以完成完整檢查。</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>The field here is %1 µT once the module's own iron (%2 µT) is taken out: within the Earth's %3..%4 µT, and the same in every orientation within %5 µT. You can calibrate here.</source>
+        <translation>去除模組自身的鐵磁干擾（%2 µT）後，此處磁場為 %1 µT：在地磁場的 %3..%4 µT 範圍內，且各朝向之間相差不超過 %5 µT。可以在此校準。</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>The field here is %1 µT once the module's own iron (%2 µT) is taken out, outside the Earth's %3..%4 µT: a magnetic object or a steel structure is near. Move away from it, or choose another place.</source>
+        <translation>去除模組自身的鐵磁干擾（%2 µT）後，此處磁場為 %1 µT，超出地磁場的 %3..%4 µT：附近有磁性物體或鋼結構。請遠離它，或換一個地方。</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>Once the module's own iron is taken out, the field still differs by %1 µT between orientations (more than %2 µT): it is not uniform here. Choose another place (outdoors, away from buildings and vehicles), or use 6-axis mode.</source>
+        <translation>去除模組自身的鐵磁干擾後，各朝向之間的磁場仍相差 %1 µT（超過 %2 µT）：此處磁場不均勻。請換一個地方（室外，遠離建築物和車輛），或使用 6 軸模式。</translation>
+    </message>
+</context>
+<context>
     <name>ModbusSimulator</name>
     <message>
-        <location filename="../core/sim/modbus_simulator.cpp" line="+46" />
+        <location filename="../core/sim/modbus_simulator.cpp" line="+45" />
         <source>The simulated Modbus device could not open %1: %2</source>
         <translation>模擬 Modbus 裝置無法開啟 %1：%2</translation>
     </message>
@@ -2465,7 +2503,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>PtySimulator</name>
     <message>
-        <location filename="../core/sim/pty_simulator.cpp" line="+290" />
+        <location filename="../core/sim/pty_simulator.cpp" line="+307" />
         <source>Cannot open a pseudo-terminal: %1</source>
         <translation>無法開啟虛擬終端機：%1</translation>
     </message>
@@ -2967,8 +3005,8 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
     <message>
         <location line="+25" />
-        <source>the columns mag_x, mag_y and mag_z (uT) are needed; the header has: %1</source>
-        <translation>需要 mag_x、mag_y 和 mag_z 欄（uT）；標題列包含：%1</translation>
+        <source>the columns mag_x, mag_y and mag_z (µT) are needed; the header has: %1</source>
+        <translation>需要 mag_x、mag_y 和 mag_z 列（單位 µT）；表頭中只有：%1</translation>
     </message>
 </context>
 <context>
@@ -3880,7 +3918,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>等待中的請求過多；請待其完成後再試</translation>
     </message>
     <message>
-        <location line="+55" />
+        <location line="+56" />
         <source>node %1 sent no TPDO before "%2" either, so its effect cannot be seen: check the node ID</source>
         <translation>節點 %1 在「%2」之前也未傳送任何 TPDO，因此無法確認其效果：請檢查節點 ID</translation>
     </message>
@@ -3925,7 +3963,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>「%1」回讀值為 %2，預期為 %3</translation>
     </message>
     <message>
-        <location line="+9" />
+        <location line="+10" />
         <source>%1: done</source>
         <translation>%1：完成</translation>
     </message>
@@ -3938,7 +3976,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::device::CanSession</name>
     <message>
-        <location filename="../core/device/can_session.cpp" line="+96" />
+        <location filename="../core/device/can_session.cpp" line="+100" />
         <source>HiPNUC J1939</source>
         <translation>HiPNUC J1939</translation>
     </message>
@@ -4477,7 +4515,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::device::ModbusSession</name>
     <message>
-        <location filename="../core/device/modbus_session.cpp" line="+92" />
+        <location filename="../core/device/modbus_session.cpp" line="+98" />
         <source>ILLEGAL FUNCTION (01): the device does not support this request at %1.</source>
         <translation>ILLEGAL FUNCTION（01）：裝置不支援對 %1 的此項請求。</translation>
     </message>
@@ -4562,7 +4600,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>節點 %1 已恢復回應</translation>
     </message>
     <message>
-        <location line="+36" />
+        <location line="+37" />
         <source>not connected</source>
         <translation>未連線</translation>
     </message>
@@ -4587,17 +4625,17 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>暫存器位址和數值必須在 0..65535 之間。</translation>
     </message>
     <message>
-        <location line="+33" />
+        <location line="+35" />
         <source>Done: %1.</source>
         <translation>完成：%1。</translation>
     </message>
     <message>
-        <location line="+14" />
+        <location line="+15" />
         <source>Written, but reading it back failed: %1</source>
         <translation>已寫入，但回讀失敗：%1</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+4" />
         <source>Written, but the device reads back %1 instead of %2.</source>
         <translation>已寫入，但裝置回讀值為 %1，而非 %2。</translation>
     </message>
@@ -4635,7 +4673,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::device::SessionEngine</name>
     <message>
-        <location filename="../core/device/session_engine.cpp" line="+111" />
+        <location filename="../core/device/session_engine.cpp" line="+128" />
         <source>the connection was closed</source>
         <translation>連線已關閉</translation>
     </message>
@@ -4655,7 +4693,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>%1，波特率 %2（已重新連線）</translation>
     </message>
     <message>
-        <location line="+47" />
+        <location line="+55" />
         <source>the port is not open</source>
         <translation>串列埠未開啟</translation>
     </message>
@@ -4706,7 +4744,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::io::SerialTransport</name>
     <message>
-        <location filename="../core/io/serial_transport.cpp" line="+27" />
+        <location filename="../core/io/serial_transport.cpp" line="+28" />
         <source>Port %1 was not found. Check that the device is plugged in and choose the port again from the list.</source>
         <translation>找不到串列埠 %1。請檢查裝置是否已插好，然後從清單中重新選擇串列埠。</translation>
     </message>
@@ -4726,7 +4764,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>無法開啟 %1：%2</translation>
     </message>
     <message>
-        <location line="+206" />
+        <location line="+225" />
         <source>The connection to %1 was lost (%2). Check the cable; everything received so far is kept.</source>
         <translation>與 %1 的連線已中斷（%2）。請檢查線材；已接收的資料都會保留。</translation>
     </message>
@@ -4797,7 +4835,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::models::CalibrationHistoryModel</name>
     <message>
-        <location filename="../core/models/calibration_history_model.cpp" line="+41" />
+        <location filename="../core/itemmodels/calibration_history_model.cpp" line="+41" />
         <source>Magnetometer</source>
         <translation>磁力計</translation>
     </message>
@@ -4818,8 +4856,8 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
     <message>
         <location line="+8" />
-        <source>|B| %1 uT, fit error %2 %, coverage %3 %</source>
-        <translation>|B| %1 uT，擬合誤差 %2 %，覆蓋率 %3 %</translation>
+        <source>|B| %1 µT, fit error %2 %, coverage %3 %</source>
+        <translation>|B| %1 µT，擬合誤差 %2 %，覆蓋率 %3 %</translation>
     </message>
     <message>
         <location line="+5" />
@@ -4855,7 +4893,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::models::CanFrameMonitorModel</name>
     <message>
-        <location filename="../core/models/can_frame_monitor_model.cpp" line="+32" />
+        <location filename="../core/itemmodels/can_frame_monitor_model.cpp" line="+32" />
         <source>Ext</source>
         <translation>擴充</translation>
     </message>
@@ -4933,7 +4971,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::models::CommandLogModel</name>
     <message>
-        <location filename="../core/models/command_log_model.cpp" line="+88" />
+        <location filename="../core/itemmodels/command_log_model.cpp" line="+88" />
         <source>waiting</source>
         <translation>等待中</translation>
     </message>
@@ -4986,7 +5024,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::models::LatestValuesModel</name>
     <message>
-        <location filename="../core/models/latest_values_model.cpp" line="+179" />
+        <location filename="../core/itemmodels/latest_values_model.cpp" line="+179" />
         <source>Quantity</source>
         <translation>物理量</translation>
     </message>
@@ -5521,7 +5559,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::models::RegisterTableModel</name>
     <message>
-        <location filename="../core/models/register_table_model.cpp" line="+146" />
+        <location filename="../core/itemmodels/register_table_model.cpp" line="+146" />
         <source>Address</source>
         <translation>位址</translation>
     </message>
@@ -5569,7 +5607,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::models::SettingsTableModel</name>
     <message>
-        <location filename="../core/models/settings_table_model.cpp" line="+61" />
+        <location filename="../core/itemmodels/settings_table_model.cpp" line="+61" />
         <source>unknown setting '%1'</source>
         <translation>未知的設定「%1」</translation>
     </message>
@@ -5735,7 +5773,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
     <message>
         <location line="+18" />
-        <location line="+236" />
+        <location line="+248" />
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
@@ -5847,7 +5885,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::sim::SimulatedTransport</name>
     <message>
-        <location filename="../core/sim/simulated_transport.cpp" line="+73" />
+        <location filename="../core/sim/simulated_transport.cpp" line="+86" />
         <source>The connection to %1 was lost (simulated unplug). Check the cable; everything received so far is kept.</source>
         <translation>與 %1 的連線已中斷（模擬拔除）。請檢查線纜；已收到的資料全部保留。</translation>
     </message>
@@ -5855,12 +5893,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::station::ModuleRunner</name>
     <message>
-        <location filename="../core/station/module_runner.cpp" line="+82" />
+        <location filename="../core/station/module_runner.cpp" line="+83" />
         <source>the module did not answer on %1 within %2 s: check the cable, the power and the port</source>
         <translation>模組在 %2 s 內未在 %1 上應答：請檢查線纜、電源和串列埠</translation>
     </message>
     <message>
-        <location line="+39" />
+        <location line="+40" />
         <source>the module's settings could not be read: %1</source>
         <translation>無法讀取模組的設定：%1</translation>
     </message>
@@ -6574,12 +6612,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>艾倫變異</translation>
     </message>
     <message>
-        <location line="+25" />
+        <location line="+18" />
         <source>Analysing %1…</source>
         <translation>正在分析 %1…</translation>
     </message>
     <message>
-        <location line="+39" />
+        <location line="+42" />
         <source>%1: %2 frames over %3 s, output rate %4 Hz, interval %5 ± %6 ms, frames lost %7</source>
         <translation>%1：%3 s 內共 %2 幀，輸出速率 %4 Hz，間隔 %5 ± %6 ms，遺失 %7 幀</translation>
     </message>
@@ -7709,7 +7747,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::ChartPanel</name>
     <message>
-        <location filename="../ui/charts/chart_panel.cpp" line="+148" />
+        <location filename="../ui/charts/chart_panel.cpp" line="+145" />
         <source>Charts</source>
         <translation>圖表</translation>
     </message>
@@ -7789,7 +7827,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>將顯示的圖表儲存為一張 PNG 圖片</translation>
     </message>
     <message numerus="yes">
-        <location line="+175" />
+        <location line="+183" />
         <source>%n chart(s) saved as one PNG in %1 (%2)</source>
         <translation>
             <numerusform>已將 %n 個圖表儲存為一張 PNG，位於 %1（%2）</numerusform>
@@ -8059,12 +8097,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::ComparisonChart</name>
     <message>
-        <location filename="../ui/charts/comparison_chart.cpp" line="+108" />
-        <source>Comparison</source>
-        <translation>比較</translation>
-    </message>
-    <message>
-        <location line="+1" />
+        <location filename="../ui/charts/comparison_chart.cpp" line="+110" />
         <source>&amp;Channel:</source>
         <translation>通道(&amp;C)：</translation>
     </message>
@@ -8448,7 +8481,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::DeviceWorkspace</name>
     <message>
-        <location filename="../ui/workspace/device_workspace.cpp" line="+322" />
+        <location filename="../ui/workspace/device_workspace.cpp" line="+336" />
         <source>New connection</source>
         <translation>新連線</translation>
     </message>
@@ -8473,7 +8506,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>模擬 %1（韌體 %2）</translation>
     </message>
     <message>
-        <location line="+208" />
+        <location line="+219" />
         <source>Not connected</source>
         <translation>未連線</translation>
     </message>
@@ -8673,12 +8706,12 @@ Link load = bytes per second × 10 bits / baud rate.</source>
 <context>
     <name>imudesk::ui::ExportDialog</name>
     <message>
-        <location filename="../ui/recording/export_dialog.cpp" line="+106" />
+        <location filename="../ui/recording/export_dialog.cpp" line="+101" />
         <source>Export %1</source>
         <translation>匯出 %1</translation>
     </message>
     <message>
-        <location line="-75" />
+        <location line="-70" />
         <source>Vendor CSV (one file per frame type)</source>
         <translation>原廠 CSV（每種幀類型一個檔案）</translation>
     </message>
@@ -8749,7 +8782,7 @@ Link load = bytes per second × 10 bits / baud rate.</source>
         <translation>結束：</translation>
     </message>
     <message>
-        <location line="+44" />
+        <location line="+39" />
         <source>Export capture</source>
         <translation>匯出擷取</translation>
     </message>
@@ -8759,7 +8792,7 @@ Link load = bytes per second × 10 bits / baud rate.</source>
         <translation>擷取、廠商 CSV 與原始傾印 (*.imucap *.csv *.bin *.raw *.log *.dat *.txt);;所有檔案 (*)</translation>
     </message>
     <message>
-        <location line="+43" />
+        <location line="+41" />
         <source>Exporting…</source>
         <translation>正在匯出…</translation>
     </message>
@@ -9623,7 +9656,7 @@ Method: %3</source>
 <context>
     <name>imudesk::ui::MagCalibrationWizard</name>
     <message>
-        <location filename="../ui/calibration/mag_calibration_wizard.cpp" line="+39" />
+        <location filename="../ui/calibration/mag_calibration_wizard.cpp" line="+40" />
         <source>unknown</source>
         <translation>未知</translation>
     </message>
@@ -9633,12 +9666,12 @@ Method: %3</source>
         <translation>無界</translation>
     </message>
     <message>
-        <location line="+25" />
+        <location line="+61" />
         <source>Magnetometer calibration</source>
         <translation>地磁校準</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+1" />
         <source>Before you start</source>
         <translation>開始之前</translation>
     </message>
@@ -9656,12 +9689,13 @@ If the module is mounted on a PCB, in a housing or on a robot, calibrate it toge
 若模組安裝在 PCB 上、外殼內或機器人上，請將它們作為一個剛體一起校準：模組安裝後，單獨校準模組並無幫助。</translation>
     </message>
     <message>
-        <location line="+8" />
+        <location line="+15" />
+        <location line="+240" />
         <source>Working mode</source>
         <translation>工作模式</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="-239" />
         <source>The calibration needs the 9-axis (AHRS) mode, CONFIG ATT MODE 1 (the factory setting). ImuDesk reads the module's mode first and offers a switch only when it runs in a 6-axis mode; the switch sends CONFIG ATT MODE 1, SAVECONFIG and REBOOT.</source>
         <translation>校準需要 9 軸（AHRS）模式，即 CONFIG ATT MODE 1（出廠設定）。ImuDesk 先讀取模組的模式，僅當其執行於 6 軸模式時才提供切換；切換會傳送 CONFIG ATT MODE 1、SAVECONFIG 和 REBOOT。</translation>
     </message>
@@ -9671,7 +9705,7 @@ If the module is mounted on a PCB, in a housing or on a robot, calibrate it toge
         <translation>切換到 9 軸模式</translation>
     </message>
     <message>
-        <location line="+19" />
+        <location line="+27" />
         <source>The module did not take ATT MODE 1 (%1). Check the connection and try again.</source>
         <translation>模組未接受 ATT MODE 1（%1）。請檢查連線後重試。</translation>
     </message>
@@ -9686,7 +9720,7 @@ If the module is mounted on a PCB, in a housing or on a robot, calibrate it toge
         <translation>已設定 ATT MODE 1；正在儲存（SAVECONFIG）…</translation>
     </message>
     <message>
-        <location line="+10" />
+        <location line="+11" />
         <source>%1 failed: %2. Try again, or save and restart from the Configuration panel.</source>
         <translation>%1 失敗：%2。請重試，或在設定面板中儲存並重新啟動。</translation>
     </message>
@@ -9701,12 +9735,163 @@ If the module is mounted on a PCB, in a housing or on a robot, calibrate it toge
         <translation>模組以 9 軸模式重新啟動；正在回讀…</translation>
     </message>
     <message>
-        <location line="+6" />
+        <location line="+9" />
+        <location line="+172" />
         <source>Environment check</source>
         <translation>環境檢查</translation>
     </message>
+    <message>
+        <location line="-171" />
+        <source>At the calibration spot, turn the module slowly through many orientations. The module's own iron is taken out of the field first; what is left must be the Earth's field (20-65 µT), the same in every orientation (within 10 µT), and steady while the module is still.</source>
+        <translation>在校準位置把模組緩慢轉過多個朝向。先從磁場中去除模組自身的鐵磁干擾；剩下的必須是地磁場（20-65 µT），在各朝向上相同（相差不超過 10 µT），並且在模組靜止時保持穩定。</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Raw |B|: the field strength as measured, the module's own iron included. Field at the spot: the strength once that iron is fitted out. Spread: how much it differs between orientations (5th to 95th percentile). Change while still: |B| drift while the gyro shows no turn.</source>
+        <translation>原始 |B|：測得的磁場強度，包含模組自身的鐵磁干擾。此處磁場：擬合去除該干擾後的強度。離散：各朝向之間的差異（第 5 到第 95 百分位）。靜止時變化：陀螺儀顯示未轉動時 |B| 的漂移。</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>The raw field as it comes from the module (µT), one dot per sample</source>
+        <translation>模組輸出的原始磁場（µT），每個樣本一個點</translation>
+    </message>
+    <message>
+        <location line="+162" />
+        <source>read from the module; a switch to 9-axis is offered when needed</source>
+        <translation>從模組讀取；需要時提供切換到 9 軸模式</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>turn the module at the spot: the field is judged with its own iron taken out</source>
+        <translation>在該位置轉動模組：去除其自身鐵磁干擾後判斷磁場</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>slowly about every axis until the sphere is covered, usually 30-60 s; %1</source>
+        <translation>繞每個軸緩慢轉動直到覆蓋整個球面，通常 30-60 s；%1</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>the module calibrates itself at the same time (CONFIG MCAL, firmware %1)</source>
+        <translation>模組同時進行自身的校準（CONFIG MCAL，韌體 %1）</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>firmware %1 calibrates in the background in 9-axis mode</source>
+        <translation>韌體 %1 在 9 軸模式下於背景校準</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>ImuDesk's fit and the module's own verdict, side by side; saved with the samples</source>
+        <translation>ImuDesk 的擬合與模組自身的結論並排顯示；與樣本一起保存</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>one level turn: the heading must follow without jumps</source>
+        <translation>水平轉一圈：航向必須連續跟隨，沒有跳變</translation>
+    </message>
+    <message>
+        <location line="+11" />
+        <source>heading from the gyro alone: it drifts, the magnetometer is not used</source>
+        <translation>航向僅來自陀螺儀：會漂移，不使用磁力計</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>heading follows magnetic north: needs this calibration</source>
+        <translation>航向跟隨磁北：需要本校準</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>6-axis, for legged robots (firmware 1.7.x)</source>
+        <translation>6 軸，用於足式機器人（韌體 1.7.x）</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>◀ the module</source>
+        <translation>◀ 本模組</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>ATT MODE</source>
+        <translation>ATT MODE</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Heading</source>
+        <translation>航向</translation>
+    </message>
+    <message>
+        <location line="+21" />
+        <source>Raw |B| now</source>
+        <translation>當前原始 |B|</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>µT</source>
+        <translation>µT</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Field at the spot</source>
+        <translation>此處磁場</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>µT (Earth: 20–65)</source>
+        <translation>µT（地磁場：20–65）</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Module's own iron</source>
+        <translation>模組自身鐵磁干擾</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>µT, removed by the calibration</source>
+        <translation>µT，由校準去除</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Spread</source>
+        <translation>離散</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>µT between orientations (≤ 10)</source>
+        <translation>µT，各朝向之間（≤ 10）</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Change while still</source>
+        <translation>靜止時變化</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>µT (≤ 3)</source>
+        <translation>µT（≤ 3）</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Directions</source>
+        <translation>方向</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>% of the sphere</source>
+        <translation>% 的球面</translation>
+    </message>
+    <message>
+        <location line="+21" />
+        <source>&lt;tr&gt;&lt;td&gt;Predicted heading error&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1°&lt;/b&gt;&lt;/td&gt;&lt;td&gt;level module, 68 %; 95 %: %2°&lt;/td&gt;&lt;/tr&gt;</source>
+        <translation>&lt;tr&gt;&lt;td&gt;預測航向誤差&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1°&lt;/b&gt;&lt;/td&gt;&lt;td&gt;水平模組，68 %；95 %：%2°&lt;/td&gt;&lt;/tr&gt;</translation>
+    </message>
+    <message>
+        <location line="+24" />
+        <source>&lt;tr&gt;&lt;td&gt;Predicted heading error&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1°&lt;/b&gt;&lt;/td&gt;&lt;td&gt;level, 68 % (95 %: %4°; pass &amp;lt; %2°, refused &amp;gt; %3°)&lt;/td&gt;&lt;/tr&gt;</source>
+        <translation>&lt;tr&gt;&lt;td&gt;預測航向誤差&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1°&lt;/b&gt;&lt;/td&gt;&lt;td&gt;水平，68 %（95 %：%4°；通過 &amp;lt; %2°，拒絕 &amp;gt; %3°）&lt;/td&gt;&lt;/tr&gt;</translation>
+    </message>
     <message numerus="yes">
-        <location line="+393" />
+        <location line="+201" />
         <source>The device now corrects its own output, so ImuDesk's fit keeps the %n raw sample(s) collected before.</source>
         <translation>
             <numerusform>裝置現在會自行校正其輸出，因此 ImuDesk 的擬合只保留此前擷取的 %n 個原始樣本。</numerusform>
@@ -9751,33 +9936,23 @@ Residual RMS: %6 µT
 </translation>
     </message>
     <message>
-        <location line="+14" />
-        <source>Predicted heading error: %1° (%2)
-Hard-iron uncertainty: +-%3 µT
-Soft-iron uncertainty: +-%4 %
-</source>
-        <translation>預測航向誤差：%1°（%2）
-硬鐵不確定度：+-%3 µT
-軟鐵不確定度：+-%4 %
-</translation>
-    </message>
-    <message>
-        <location line="-475" />
+        <location line="-537" />
+        <location line="+156" />
         <source>Turn the module</source>
         <translation>轉動模組</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="-155" />
         <source>Keep it in place and turn it slowly (20-100 deg/s) at least one full turn about each axis, until the sphere is green all over. Usually 30-60 s.</source>
         <translation>讓模組保持在原地，繞每個軸緩慢轉動（20-100 deg/s）至少一整圈，直到球面全部變綠。通常需要 30-60 s。</translation>
     </message>
     <message>
-        <location line="+14" />
+        <location line="+3" />
         <source>Coverage: share of the 80 sphere cells the field has pointed into. Largest gap: radius of the biggest uncovered area. Raw |B|: the field strength before calibration (its spread is the iron the fit removes). Fit: the field and the residual of ImuDesk's fit on the samples so far, refreshed every second.</source>
         <translation>覆蓋率：磁場方向已覆蓋的 80 個球面單元的比例。最大空缺：最大未覆蓋區域的半徑。原始 |B|：校準前的磁場強度（其離散程度即擬合要消除的鐵磁干擾）。擬合：ImuDesk 對目前樣本擬合得到的磁場強度和殘差，每秒更新。</translation>
     </message>
     <message>
-        <location line="+7" />
+        <location line="+8" />
         <source>Start the device's calibration</source>
         <translation>啟動裝置校準</translation>
     </message>
@@ -9787,22 +9962,24 @@ Soft-iron uncertainty: +-%4 %
         <translation>立即以 ImuDesk 擬合校準</translation>
     </message>
     <message>
-        <location line="+11" />
+        <location line="+10" />
+        <location line="+135" />
         <source>Result</source>
         <translation>結果</translation>
     </message>
     <message>
-        <location line="+29" />
+        <location line="-106" />
+        <location line="+107" />
         <source>Heading check</source>
         <translation>航向角檢查</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="-106" />
         <source>Place the module level and turn it slowly one full turn (360 deg). The heading must change continuously, without jumps of more than 10 deg; within +-5 deg of the true directions is acceptable.</source>
         <translation>將模組水平放置並緩慢轉動一整圈（360 deg）。航向角必須連續變化，不得跳變超過 10 deg；與真實方向相差 +-5 deg 以內即可接受。</translation>
     </message>
     <message>
-        <location line="+267" />
+        <location line="+354" />
         <location line="+16" />
         <source>ImuDesk's fit: %1. %2</source>
         <translation>ImuDesk 擬合：%1。%2</translation>
@@ -9815,27 +9992,22 @@ Soft-iron uncertainty: +-%4 %
 %3</translation>
     </message>
     <message>
-        <location line="-258" />
+        <location line="-344" />
         <source>Reading the working mode from the module (LOG COMCONFIG)…</source>
         <translation>正在從模組讀取工作模式（LOG COMCONFIG）…</translation>
     </message>
     <message>
-        <location line="-110" />
-        <source>Hold the module at the calibration spot and turn it to a few orientations. The field must be 20-60 µT and vary by no more than 10 µT between orientations.</source>
-        <translation>將模組放在校準位置，並轉到幾個不同朝向。磁場必須在 20-60 µT 之間，且不同朝向之間的變化不超過 10 µT。</translation>
-    </message>
-    <message>
-        <location line="+117" />
+        <location line="+8" />
         <source>The working mode could not be read: %1. Check the connection, then press Back and Next to read it again, or switch to the 9-axis mode anyway.</source>
         <translation>無法讀取工作模式：%1。請檢查連線，然後按「上一步」和「下一步」重新讀取，或直接切換到 9 軸模式。</translation>
     </message>
     <message>
-        <location line="+9" />
+        <location line="+11" />
         <source>The module runs in the 9-axis (AHRS) mode, ATT MODE 1: nothing to change. Press Next.</source>
         <translation>模組執行於 9 軸（AHRS）模式，ATT MODE 1：無需變更。請按「下一步」。</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+6" />
         <source>The module runs in a 6-axis mode (ATT MODE %1): its heading ignores the magnetometer. Switch to the 9-axis mode before you calibrate.</source>
         <translation>模組執行於 6 軸模式（ATT MODE %1）：其航向不使用磁力計。校準前請切換到 9 軸模式。</translation>
     </message>
@@ -9850,7 +10022,7 @@ Soft-iron uncertainty: +-%4 %
         <translation>目前：%1。%2</translation>
     </message>
     <message>
-        <location line="+10" />
+        <location line="+83" />
         <source>&lt;tr&gt;&lt;td&gt;ImuDesk's fit&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1&lt;/b&gt;&lt;/td&gt;&lt;td&gt;&lt;/td&gt;&lt;/tr&gt;</source>
         <translation>&lt;tr&gt;&lt;td&gt;ImuDesk 擬合&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1&lt;/b&gt;&lt;/td&gt;&lt;td&gt;&lt;/td&gt;&lt;/tr&gt;</translation>
     </message>
@@ -9860,12 +10032,7 @@ Soft-iron uncertainty: +-%4 %
         <translation>&lt;tr&gt;&lt;td&gt;覆蓋率&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1 %&lt;/b&gt;&lt;/td&gt;&lt;td&gt;磁場方向&lt;/td&gt;&lt;/tr&gt;</translation>
     </message>
     <message>
-        <location line="+9" />
-        <source>&lt;tr&gt;&lt;td&gt;Predicted heading error&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1°&lt;/b&gt;&lt;/td&gt;&lt;td&gt;level module&lt;/td&gt;&lt;/tr&gt;</source>
-        <translation>&lt;tr&gt;&lt;td&gt;預測航向誤差&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1°&lt;/b&gt;&lt;/td&gt;&lt;td&gt;模組水平時&lt;/td&gt;&lt;/tr&gt;</translation>
-    </message>
-    <message>
-        <location line="+6" />
+        <location line="+16" />
         <source>&lt;tr&gt;&lt;td&gt;Coverage&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1 %&lt;/b&gt;&lt;/td&gt;&lt;td&gt;(%2 of %3 cells)&lt;/td&gt;&lt;/tr&gt;</source>
         <translation>&lt;tr&gt;&lt;td&gt;覆蓋率&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1 %&lt;/b&gt;&lt;/td&gt;&lt;td&gt;（%3 個單元中的 %2 個）&lt;/td&gt;&lt;/tr&gt;</translation>
     </message>
@@ -9880,19 +10047,14 @@ Soft-iron uncertainty: +-%4 %
         <translation>&lt;tr&gt;&lt;td&gt;原始 |B|&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1–%2&lt;/b&gt;&lt;/td&gt;&lt;td&gt;µT&lt;/td&gt;&lt;/tr&gt;</translation>
     </message>
     <message>
-        <location line="-19" />
-        <location line="+23" />
+        <location line="-20" />
+        <location line="+24" />
         <source>&lt;tr&gt;&lt;td&gt;Fitted field&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1&lt;/b&gt;&lt;/td&gt;&lt;td&gt;µT&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Fit residual&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%2&lt;/b&gt;&lt;/td&gt;&lt;td&gt;µT RMS (%3 %)&lt;/td&gt;&lt;/tr&gt;</source>
         <translation>&lt;tr&gt;&lt;td&gt;擬合磁場&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1&lt;/b&gt;&lt;/td&gt;&lt;td&gt;µT&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;擬合殘差&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%2&lt;/b&gt;&lt;/td&gt;&lt;td&gt;µT RMS（%3 %）&lt;/td&gt;&lt;/tr&gt;</translation>
     </message>
     <message>
-        <location line="+6" />
-        <source>&lt;tr&gt;&lt;td&gt;Predicted heading error&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1°&lt;/b&gt;&lt;/td&gt;&lt;td&gt;level (pass &amp;lt; %2°, refused &amp;gt; %3°)&lt;/td&gt;&lt;/tr&gt;</source>
-        <translation>&lt;tr&gt;&lt;td&gt;預測航向誤差&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1°&lt;/b&gt;&lt;/td&gt;&lt;td&gt;水平放置（通過 &amp;lt; %2°，拒絕 &amp;gt; %3°）&lt;/td&gt;&lt;/tr&gt;</translation>
-    </message>
-    <message>
-        <location line="-21" />
-        <location line="+26" />
+        <location line="-15" />
+        <location line="+27" />
         <source>&lt;tr&gt;&lt;td&gt;Samples&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1&lt;/b&gt;&lt;/td&gt;&lt;td&gt;&lt;/td&gt;&lt;/tr&gt;</source>
         <translation>&lt;tr&gt;&lt;td&gt;樣本數&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1&lt;/b&gt;&lt;/td&gt;&lt;td&gt;&lt;/td&gt;&lt;/tr&gt;</translation>
     </message>
@@ -9902,7 +10064,7 @@ Soft-iron uncertainty: +-%4 %
         <translation>正在設定 ATT MODE 1…</translation>
     </message>
     <message>
-        <location line="+99" />
+        <location line="+106" />
         <source>Turned %1 deg, largest step %2 deg: %3</source>
         <translation>已轉動 %1 deg，最大跳變 %2 deg：%3</translation>
     </message>
@@ -9937,12 +10099,23 @@ Soft-iron uncertainty: +-%4 %
         <translation>水平放置；高於 %1° 給出警告</translation>
     </message>
     <message>
+        <location line="+1" />
+        <source>Predicted heading error: %1° in 68 % of cases, %5° in 95 % (%2)
+Hard-iron uncertainty: +-%3 µT
+Soft-iron uncertainty: +-%4 %
+</source>
+        <translation>預測航向誤差：68 % 的情況下 %1°，95 % 的情況下 %5°（%2）
+硬鐵不確定度：+-%3 µT
+軟鐵不確定度：+-%4 %
+</translation>
+    </message>
+    <message>
         <location line="+3" />
         <source>kept from before</source>
         <translation>沿用之前的</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+4" />
         <source>Coverage: %1 %
 Eigenvalue ratio: %2
 Samples: %3</source>
@@ -9987,7 +10160,7 @@ Samples: %3</source>
 <context>
     <name>imudesk::ui::MainWindow</name>
     <message>
-        <location filename="../ui/workspace/main_window.cpp" line="+363" />
+        <location filename="../ui/workspace/main_window.cpp" line="+369" />
         <source>Choose a port first.</source>
         <translation>請先選擇串列埠。</translation>
     </message>
@@ -10037,7 +10210,7 @@ Samples: %3</source>
         <translation>PNG 影像 (*.png)</translation>
     </message>
     <message>
-        <location line="+121" />
+        <location line="+123" />
         <source>&amp;File</source>
         <translation>檔案(&amp;F)</translation>
     </message>
@@ -11557,7 +11730,7 @@ Default: %2</source>
 <context>
     <name>imudesk::ui::StationView</name>
     <message>
-        <location filename="../ui/station/station_view.cpp" line="+250" />
+        <location filename="../ui/station/station_view.cpp" line="+252" />
         <location line="+75" />
         <source>Production station</source>
         <translation>生產測試臺</translation>
@@ -11764,7 +11937,7 @@ Default: %2</source>
         <translation>請等待執行結束或將其取消，然後再更改模擬托盤。</translation>
     </message>
     <message>
-        <location line="+20" />
+        <location line="+21" />
         <source>a good module</source>
         <translation>正常模組</translation>
     </message>
@@ -11784,17 +11957,17 @@ Default: %2</source>
         <translation>舊版韌體</translation>
     </message>
     <message>
-        <location line="+9" />
+        <location line="+14" />
         <source>The simulated modules could not start: %1</source>
         <translation>模擬模組無法啟動：%1</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+7" />
         <source>Simulated HI14 %1 of %2, firmware %3: %4</source>
         <translation>模擬 HI14（第 %1 個，共 %2 個），韌體 %3：%4</translation>
     </message>
     <message>
-        <location line="+39" />
+        <location line="+58" />
         <source>Simulated tray</source>
         <translation>模擬托盤</translation>
     </message>
@@ -11838,7 +12011,7 @@ Edit it (Edit…) and start again.</source>
         <translation>請先勾選待測模組的串列埠。</translation>
     </message>
     <message>
-        <location line="+12" />
+        <location line="+17" />
         <source>The report folder cannot be used: %1</source>
         <translation>報告資料夾無法使用：%1</translation>
     </message>
@@ -11931,7 +12104,7 @@ Edit it (Edit…) and start again.</source>
 <context>
     <name>imudesk::ui::ToolActions</name>
     <message>
-        <location filename="../ui/workspace/tool_actions.cpp" line="+110" />
+        <location filename="../ui/workspace/tool_actions.cpp" line="+105" />
         <source>&amp;Open capture…</source>
         <translation>開啟記錄檔(&amp;O)…</translation>
     </message>
@@ -12111,7 +12284,7 @@ Edit it (Edit…) and start again.</source>
         <translation>校準(&amp;C)</translation>
     </message>
     <message>
-        <location line="+47" />
+        <location line="+48" />
         <source>%1 could not be imported: %2</source>
         <translation>無法匯入 %1：%2</translation>
     </message>

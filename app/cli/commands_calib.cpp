@@ -97,6 +97,7 @@ int cmdMagcal(const QStringList &args)
         out(QStringLiteral("hard_iron_sigma_ut\t%1").arg(figure(r.hardIronSigmaUt, 3)));
         out(QStringLiteral("soft_iron_sigma_pct\t%1").arg(figure(r.softIronSigmaPct, 3)));
         out(QStringLiteral("predicted_heading_error_deg\t%1").arg(figure(r.predictedHeadingErrorDeg, 3)));
+        out(QStringLiteral("predicted_heading_error_95_deg\t%1").arg(figure(r.predictedHeadingError95Deg, 3)));
         out(QStringLiteral("coverage_pct\t%1").arg(r.coveragePct, 0, 'f', 1));
         out(QStringLiteral("eigen_ratio\t%1").arg(r.eigenRatio, 0, 'f', 2));
     }

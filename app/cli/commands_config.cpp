@@ -182,11 +182,11 @@ int cmdSet(Device &d, const QString &port, const QStringList &assignments, bool 
         after.values[c.key] = c.value;
     printBandwidth(settings::BandwidthCalculator::evaluate(after));
     for (const auto &c : plan.commands)
-        out(QStringLiteral("> %1").arg(c.command));
+        out(QStringLiteral("> %1").arg(QString::fromStdString(c.command.text)));
     if (save)
-        out(QStringLiteral("> SAVECONFIG"));
+        out(QStringLiteral("> %1").arg(QString::fromStdString(protocol::hipnuc::commands::saveConfig().text)));
     if (reboot)
-        out(QStringLiteral("> REBOOT"));
+        out(QStringLiteral("> %1").arg(QString::fromStdString(protocol::hipnuc::commands::reboot().text)));
     if (dryRun) {
         out(QStringLiteral("# %1").arg(ConfigurationController::cliLine(port, plan.changes, save, reboot)));
         return ExitOk;

@@ -288,7 +288,7 @@ int cmdSend(const QStringList &args)
     if (!connectSession(session, p.positionalArguments().front(), baud, nullptr, nullptr, &error))
         return fail(error, interrupted() ? ExitInterrupted : ExitFailure);
     std::optional<protocol::hipnuc::AsciiReply> reply;
-    const quint64 id = session.sendCommand(command, timeoutMs);
+    const quint64 id = session.sendText(command, timeoutMs); // typed by the user, as in the console
     QObject::connect(&session, &device::DeviceSession::commandFinished,
                      [&](quint64 done, const protocol::hipnuc::AsciiReply &r) {
                          if (done == id)

@@ -7,7 +7,7 @@
 // code is 0 only when every module passed.
 #include "cli_context.h"
 #include "reports/station_report.h"
-#include "station/station_runner.h"
+#include "core/station/station_runner.h"
 
 #include <QCoreApplication>
 #include <QDir>

@@ -3,7 +3,7 @@
 #include "cli_context.h"
 #include "update_common.h"
 
-#include "firmware/firmware_updater.h"
+#include "core/firmware/firmware_updater.h"
 #include "sim/pty_simulator.h"
 
 #include <QCommandLineParser>

@@ -4,7 +4,7 @@
 #include "cli_context.h"
 #include "update_common.h"
 
-#include "firmware/can_firmware_updater.h"
+#include "core/firmware/can_firmware_updater.h"
 #include "sim/can_sim_device.h"
 
 #include <QCommandLineParser>

@@ -1,7 +1,7 @@
 #include "update_common.h"
 
 #include "cli_context.h"
-#include "firmware/update_runner.h"
+#include "core/firmware/update_runner.h"
 #include "protocol/ihex/intel_hex_loader.h"
 
 #include <QCommandLineParser>

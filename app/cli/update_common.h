@@ -3,7 +3,7 @@
 // JSON lines, the common options (--json, --bin-start, --flash-layout, --no-finish), loading and
 // checking the image before any link is opened, and driving an updater to its end with a
 // progress line on stderr or JSON lines on stdout.
-#include "firmware/update_flow.h"
+#include "core/firmware/update_flow.h"
 #include "protocol/ihex/firmware_image.h"
 
 #include <QJsonObject>

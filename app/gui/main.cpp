@@ -7,7 +7,7 @@
 #include "model/device_identity.h"
 #include "sim/hipnuc_simulator.h"
 #include "sim/motion_model.h"
-#include "station/station_view.h"
+#include "ui/station/station_view.h"
 #include "workspace/preferences.h"
 #include "workspace/window_settings.h"
 

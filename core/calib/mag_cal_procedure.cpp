@@ -12,9 +12,9 @@ using protocol::hipnuc::AsciiReply;
 
 namespace {
 namespace commands = protocol::hipnuc::commands;
-const QString kStart = QString::fromStdString(commands::magCalStart().text);
-const QString kStat = QString::fromStdString(commands::logMagCalStatus().text);
-const QString kMagConfig = QString::fromStdString(commands::logMagConfig().text);
+const protocol::hipnuc::Command kStart = commands::magCalStart();
+const protocol::hipnuc::Command kStat = commands::logMagCalStatus();
+const protocol::hipnuc::Command kMagConfig = commands::logMagConfig();
 
 bool parseInt(const std::map<std::string, std::string> &values, const char *key, int &out)
 {
@@ -116,7 +116,7 @@ MagCalProcedure::Step MagCalProcedure::handleReply(const AsciiReply &reply, qint
     if (reply.status != AsciiReply::Status::Ok) {
         if (++m_missed > m_options.maxMissedPolls)
             return fail(tr("The device stopped answering %1 (%2 times in a row).")
-                            .arg(m_flow == Flow::Mcal ? kStat : kMagConfig)
+                            .arg(QString::fromStdString((m_flow == Flow::Mcal ? kStat : kMagConfig).text))
                             .arg(m_missed));
         return poll();
     }

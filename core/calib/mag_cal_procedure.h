@@ -10,6 +10,7 @@
 //    it succeeded.
 // Every step is bounded: timeoutMs overall, maxMissedPolls consecutive polls without reply.
 #include "model/device_identity.h"
+#include "protocol/hipnuc/ascii_command.h"
 #include "protocol/hipnuc/ascii_reply.h"
 
 #include <Eigen/Core>
@@ -32,8 +33,9 @@ public:
         int maxMissedPolls = 3;
     };
     struct Step {
-        QString command;   // empty: nothing more to send
-        int delayMs = 0;   // send it after this long
+        protocol::hipnuc::Command command; // made by the typed builders; no text: nothing more to send
+        int delayMs = 0;                   // send it after this long
+        bool hasCommand() const { return !command.text.empty(); }
     };
 
     static Flow flowFor(const model::FirmwareVersion &fw);

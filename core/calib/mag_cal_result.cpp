@@ -100,6 +100,7 @@ QJsonObject MagCalResult::toJson() const
     o.insert(QStringLiteral("hard_iron_sigma_ut"), figure(hardIronSigmaUt));
     o.insert(QStringLiteral("soft_iron_sigma_pct"), figure(softIronSigmaPct));
     o.insert(QStringLiteral("predicted_heading_error_deg"), figure(predictedHeadingErrorDeg));
+    o.insert(QStringLiteral("predicted_heading_error_95_deg"), figure(predictedHeadingError95Deg));
     return o;
 }
 
@@ -136,6 +137,7 @@ bool MagCalResult::fromJson(const QJsonObject &o, MagCalResult &out)
     r.hardIronSigmaUt = figureFrom(o.value(QStringLiteral("hard_iron_sigma_ut")));
     r.softIronSigmaPct = figureFrom(o.value(QStringLiteral("soft_iron_sigma_pct")));
     r.predictedHeadingErrorDeg = figureFrom(o.value(QStringLiteral("predicted_heading_error_deg")));
+    r.predictedHeadingError95Deg = figureFrom(o.value(QStringLiteral("predicted_heading_error_95_deg")));
     out = r;
     return true;
 }

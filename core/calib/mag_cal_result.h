@@ -43,7 +43,9 @@ public:
     // result written before these were computed. JSON null.
     double hardIronSigmaUt = std::numeric_limits<double>::quiet_NaN();     // RMS of |b^ - b|, uT
     double softIronSigmaPct = std::numeric_limits<double>::quiet_NaN();    // RMS soft-iron shape error, %
-    double predictedHeadingErrorDeg = std::numeric_limits<double>::quiet_NaN(); // level module, deg
+    // The heading error of a level module the fit stays within in 68 % of cases, and in 95 %.
+    double predictedHeadingErrorDeg = std::numeric_limits<double>::quiet_NaN();   // level module, deg (68 %)
+    double predictedHeadingError95Deg = std::numeric_limits<double>::quiet_NaN(); // level module, deg (95 %)
 
     bool usable() const { return verdict == MagVerdict::Pass || verdict == MagVerdict::Warn; }
     Eigen::Vector3d correct(const Eigen::Vector3d &m) const { return softIron * (m - hardIron); }

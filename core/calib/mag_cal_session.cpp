@@ -36,7 +36,7 @@ void MagCalSession::cancel()
 
 void MagCalSession::follow(const MagCalProcedure::Step &step)
 {
-    if (step.command.isEmpty()) {
+    if (!step.hasCommand()) {
         m_running = false;
         const bool ok = m_procedure.state() == MagCalProcedure::State::Succeeded;
         qCInfo(lcCalib) << "device magnetometer calibration" << (ok ? "succeeded" : "failed") << m_procedure.message();

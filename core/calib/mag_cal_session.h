@@ -41,7 +41,7 @@ private:
     MagCalProcedure m_procedure;
     QTimer m_timer;
     QElapsedTimer m_clock;
-    QString m_next;
+    protocol::hipnuc::Command m_next;
     quint64 m_pending = 0;
     bool m_running = false;
 };

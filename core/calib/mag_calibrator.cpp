@@ -145,6 +145,7 @@ MagCalResult MagCalibrator::fullFit(const std::vector<Eigen::Vector3d> &s, MagCa
     r.hardIronSigmaUt = u.hardIronSigmaUt;
     r.softIronSigmaPct = u.softIronSigmaPct;
     r.predictedHeadingErrorDeg = u.headingErrorDeg;
+    r.predictedHeadingError95Deg = u.headingError95Deg;
     judge(r, EllipsoidFit::residuals(s, e), true, &raw);
     return r;
 }
@@ -181,6 +182,7 @@ MagCalResult MagCalibrator::hardIronFit(const std::vector<Eigen::Vector3d> &s, M
     const auto u = MagFitUncertainty::ofHardIronFit(s, *e, !(m_options.referenceFieldUt > 0), m_options.inclinationDeg);
     r.hardIronSigmaUt = u.hardIronSigmaUt;
     r.predictedHeadingErrorDeg = u.headingErrorDeg; // the soft iron is held: its sigma stays unknown
+    r.predictedHeadingError95Deg = u.headingError95Deg;
     judge(r, EllipsoidFit::residuals(s, *e), false);
     return r;
 }
@@ -228,6 +230,7 @@ MagCalResult MagCalibrator::planarFit(const std::vector<Eigen::Vector3d> &s, Mag
     r.hardIronSigmaUt = u.hardIronSigmaUt;
     r.softIronSigmaPct = u.softIronSigmaPct;
     r.predictedHeadingErrorDeg = u.headingErrorDeg;
+    r.predictedHeadingError95Deg = u.headingError95Deg;
     judge(r, res, true);
     return r;
 }

@@ -125,7 +125,7 @@ private:
 MagFitUncertainty::Figures singularFigures()
 {
     MagFitUncertainty::Figures f;
-    f.hardIronSigmaUt = f.softIronSigmaPct = f.headingErrorDeg = kInf;
+    f.hardIronSigmaUt = f.softIronSigmaPct = f.headingErrorDeg = f.headingError95Deg = kInf;
     f.singular = true;
     return f;
 }
@@ -185,8 +185,11 @@ MagFitUncertainty::Figures figuresOf(const Matrix9d &cov, const Eigen::Matrix3d 
         x = (gl * z).cwiseAbs().maxCoeff();
     }
     std::sort(worst.begin(), worst.end());
-    const size_t q = std::min(worst.size() - 1, size_t(MagFitUncertainty::kHeadingQuantile * double(worst.size())));
-    f.headingErrorDeg = worst[q] * 180.0 / kPi;
+    const auto at = [&worst](double quantile) {
+        return worst[std::min(worst.size() - 1, size_t(quantile * double(worst.size())))] * 180.0 / kPi;
+    };
+    f.headingErrorDeg = at(MagFitUncertainty::kHeadingQuantile);
+    f.headingError95Deg = at(MagFitUncertainty::kHeadingQuantile95);
     return f;
 }
 
@@ -287,6 +290,7 @@ MagFitUncertainty::Figures MagFitUncertainty::resampledEllipsoid(const std::vect
     f.hardIronSigmaUt = rmsOf(hiSq);
     f.softIronSigmaPct = 100.0 * rmsOf(siSq);
     f.headingErrorDeg = quantile(headings, kHeadingQuantile) * 180.0 / kPi;
+    f.headingError95Deg = quantile(headings, kHeadingQuantile95) * 180.0 / kPi;
     return f;
 }
 

@@ -35,6 +35,7 @@ class MagFitUncertainty {
 public:
     static constexpr double kDefaultInclinationDeg = 60.0; // mid latitudes (calibration-notes.md §3)
     static constexpr double kHeadingQuantile = 0.68;
+    static constexpr double kHeadingQuantile95 = 0.95; // the bound the error stays within 19 times in 20
     static constexpr int kHeadingStepDeg = 5;
     static constexpr int kDraws = 400;
     static constexpr int kReplicates = 32;
@@ -42,7 +43,8 @@ public:
     struct Figures {
         double hardIronSigmaUt = std::numeric_limits<double>::quiet_NaN();
         double softIronSigmaPct = std::numeric_limits<double>::quiet_NaN(); // NaN: soft iron not fitted
-        double headingErrorDeg = std::numeric_limits<double>::quiet_NaN();
+        double headingErrorDeg = std::numeric_limits<double>::quiet_NaN();   // kHeadingQuantile (68 %)
+        double headingError95Deg = std::numeric_limits<double>::quiet_NaN(); // kHeadingQuantile95
         // The parameters could not be determined at all (singular geometry): every figure is +inf.
         bool singular = false;
     };

@@ -102,7 +102,7 @@ bool SampleCsv::magnetometer(const SampleTable &table, std::vector<Eigen::Vector
               z = table.columnIndex(QStringLiteral("mag_z"));
     if (x < 0 || y < 0 || z < 0) {
         if (error)
-            *error = tr("the columns mag_x, mag_y and mag_z (uT) are needed; the header has: %1")
+            *error = tr("the columns mag_x, mag_y and mag_z (µT) are needed; the header has: %1")
                          .arg(table.columns.join(QStringLiteral(", ")));
         return false;
     }

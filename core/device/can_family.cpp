@@ -109,11 +109,11 @@ void CanFamily::stopping()
     if (m_scanning)
         cancelScan();
     if (m_job)
-        finishJob(false, tr("the session was closed"));
+        finishJob(false, tr("the session was closed"), RequestStatus::Cancelled);
     while (!m_jobs.empty()) {
         const quint64 id = m_jobs.front().id;
         m_jobs.pop_front();
-        Q_EMIT jobFinished(CanRequestResult{id, false, 0, tr("the session was closed")});
+        Q_EMIT jobFinished(CanRequestResult{id, false, 0, tr("the session was closed"), RequestStatus::Cancelled});
     }
 }
 
@@ -239,7 +239,8 @@ void CanFamily::submitJob(const CanJob &job)
 {
     if (int(m_jobs.size()) >= kMaxQueuedJobs) {
         Q_EMIT jobFinished(
-            CanRequestResult{job.id, false, 0, tr("too many requests are waiting; try again when they are done")});
+            CanRequestResult{job.id, false, 0, tr("too many requests are waiting; try again when they are done"),
+                             RequestStatus::NotSent});
         return;
     }
     m_jobs.push_back(job);
@@ -398,14 +399,15 @@ bool CanFamily::matchStep(const CanFrame &f, const DecodedFrame &d)
 void CanFamily::stepEnded(const RequestResult &r)
 {
     if (!r.ok()) {
-        finishJob(false, r.message);
+        finishJob(false, r.message, r.status);
         return;
     }
     const CanJobStep &s = m_job->steps[m_step];
     const uint32_t value = r.reply.toUInt();
     m_lastValue = value;
     if (s.expectValue && *s.expectValue != value) {
-        finishJob(false, tr("\"%1\" read back %2, expected %3").arg(s.what).arg(value).arg(*s.expectValue));
+        finishJob(false, tr("\"%1\" read back %2, expected %3").arg(s.what).arg(value).arg(*s.expectValue),
+                  RequestStatus::Invalid);
         return;
     }
     if (s.followNode >= 0 && s.followNode != m_target) {
@@ -420,11 +422,12 @@ void CanFamily::stepEnded(const RequestResult &r)
     submitStep(true);
 }
 
-void CanFamily::finishJob(bool ok, const QString &message)
+void CanFamily::finishJob(bool ok, const QString &message, RequestStatus status)
 {
     if (!m_job)
         return;
-    const CanRequestResult r{m_job->id, ok, m_lastValue, ok ? message : tr("%1 failed: %2").arg(m_job->title, message)};
+    const CanRequestResult r{m_job->id, ok, m_lastValue, ok ? message : tr("%1 failed: %2").arg(m_job->title, message),
+                             ok ? RequestStatus::Ok : status};
     m_job.reset();
     if (!ok)
         qCInfo(lcCan) << r.message;

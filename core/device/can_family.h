@@ -78,7 +78,7 @@ private:
     void startJob();
     void submitStep(bool first);
     void stepEnded(const RequestResult &r);
-    void finishJob(bool ok, const QString &message);
+    void finishJob(bool ok, const QString &message, RequestStatus status = RequestStatus::NotSent);
     void noteNode(protocol::can::CanProtocol p, int node, const QString &how);
     void scanTick();
     qint64 nowNs() const { return m_clock.nsecsElapsed(); }

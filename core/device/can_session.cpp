@@ -33,6 +33,10 @@ CanSession::CanSession(QObject *parent, std::unique_ptr<io::Transport> transport
     connect(f, &CanFamily::framesSeen, this, &CanSession::framesSeen);
     connect(f, &CanFamily::nodeDiscovered, this, &CanSession::nodeDiscovered);
     connect(f, &CanFamily::jobFinished, this, &CanSession::requestFinished);
+    // Every family's requests end in requestEnded too, in the session's one id space.
+    connect(this, &CanSession::requestFinished, this, [this](const CanRequestResult &r) {
+        Q_EMIT requestEnded(RequestResult{r.id, r.status, 0, r.ok ? QString() : r.message, QVariant::fromValue(r)});
+    });
     connect(f, &CanFamily::scanProgress, this, &CanSession::scanProgress);
     connect(f, &CanFamily::scanFinished, this, &CanSession::scanFinished);
     connect(f, &CanFamily::protocolDetected, this, [this](int p) {
@@ -111,7 +115,7 @@ uint8_t CanSession::node() const
 
 quint64 CanSession::submitJob(CanJob job)
 {
-    job.id = m_nextId++;
+    job.id = takeRequestId();
     const quint64 id = job.id;
     inFamily<CanFamily>([job](CanFamily &f) { f.submitJob(job); });
     return id;
@@ -119,8 +123,8 @@ quint64 CanSession::submitJob(CanJob job)
 
 quint64 CanSession::refuseJob(const QString &why)
 {
-    const quint64 id = m_nextId++;
-    const CanRequestResult r{id, false, 0, why};
+    const quint64 id = takeRequestId();
+    const CanRequestResult r{id, false, 0, why, RequestStatus::NotSent};
     QMetaObject::invokeMethod(this, [this, r] { Q_EMIT requestFinished(r); }, Qt::QueuedConnection);
     return id;
 }

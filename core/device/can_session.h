@@ -102,7 +102,6 @@ private:
     CanSessionOptions m_options;
     std::atomic<int> m_target{-1};
     std::atomic<int> m_detected{0};
-    std::atomic<quint64> m_nextId{1};
 };
 
 } // namespace imudesk::device

@@ -1,5 +1,6 @@
 #pragma once
 // Value types that cross between a CanSession and its worker thread.
+#include "device/request.h"
 #include "protocol/can/can_decoder.h"
 #include "protocol/can/can_frame.h"
 
@@ -46,6 +47,7 @@ struct CanRequestResult {
     bool ok = false;
     quint32 value = 0;  // value read back or echoed
     QString message;    // what happened (error text when !ok)
+    RequestStatus status = RequestStatus::NotSent; // how it ended (Ok when ok)
 };
 
 } // namespace imudesk::device

@@ -45,7 +45,7 @@ void DeviceSession::open(const QString &portName, int baud)
     openLink(portName, baud);
 }
 
-quint64 DeviceSession::sendCommand(const QString &text, int timeoutMs)
+quint64 DeviceSession::sendText(const QString &text, int timeoutMs)
 {
     return sendCommand(protocol::hipnuc::commands::typed(text.toStdString()), timeoutMs);
 }

@@ -30,9 +30,11 @@ public:
 
     // baud 0 = auto-detect (listen first, then LOG VERSION at each rate).
     void open(const QString &portName, int baud = 0);
-    // Text as a user typed it (the console), through the same queue; the reply arrives in
-    // commandFinished(id, reply). Unknown commands get no reply and finish as a timeout.
-    quint64 sendCommand(const QString &text, int timeoutMs = 1000);
+    // Text as a person typed it (the console, imudesk-cli send), through the same queue; the
+    // reply arrives in commandFinished(id, reply). Unknown commands get no reply and finish as
+    // a timeout. The only place where command text is parsed: every other caller passes a
+    // typed command (sendCommand).
+    quint64 sendText(const QString &text, int timeoutMs = 1000);
     // A command made by the typed builders (protocol::hipnuc::commands): one whose arguments
     // were refused is not sent; 0, and `error` gets why.
     quint64 sendCommand(const protocol::hipnuc::Command &command, int timeoutMs = 1000, QString *error = nullptr);

@@ -436,6 +436,7 @@ void ModbusFamily::readRegisters(quint64 id, int start, int count)
         reply.ok = r.ok();
         reply.values = replyOf(r).values;
         reply.exceptionCode = replyOf(r).exception;
+        reply.status = r.status;
         if (!r.ok())
             reply.message = failureText(op, r);
         Q_EMIT registersRead(reply);
@@ -480,6 +481,7 @@ void ModbusFamily::writeRegister(quint64 id, int address, int value, bool verify
         if (!r.ok()) {
             reply.exceptionCode = replyOf(r).exception;
             reply.message = failureText(op, r);
+            reply.status = r.status;
             Q_EMIT writeFinished(reply);
             return;
         }
@@ -498,6 +500,7 @@ void ModbusFamily::writeRegister(quint64 id, int address, int value, bool verify
             m_resume.start(kResetPauseMs);
         }
         reply.ok = true;
+        reply.status = RequestStatus::Ok;
         reply.message = ModbusSession::tr("Done: %1.").arg(HipnucWrites::describe(w));
         if (!verify || !readable) {
             Q_EMIT writeFinished(reply);
@@ -511,10 +514,12 @@ void ModbusFamily::writeRegister(quint64 id, int address, int value, bool verify
             const QList<quint16> values = replyOf(rr).values;
             if (!rr.ok()) {
                 reply.ok = false;
+                reply.status = rr.status;
                 reply.message =
                     ModbusSession::tr("Written, but reading it back failed: %1").arg(failureText(check, rr));
             } else if (values.value(0) != expected) {
                 reply.ok = false;
+                reply.status = RequestStatus::Invalid;
                 reply.message = ModbusSession::tr("Written, but the device reads back %1 instead of %2.")
                                     .arg(values.value(0))
                                     .arg(expected);

@@ -16,6 +16,12 @@ ModbusSession::ModbusSession(QObject *parent, std::unique_ptr<io::Transport> tra
     auto *f = static_cast<ModbusFamily *>(family());
     connect(f, &ModbusFamily::registersRead, this, &ModbusSession::registersRead);
     connect(f, &ModbusFamily::writeFinished, this, &ModbusSession::writeFinished);
+    // Every family's requests end in requestEnded too, in the session's one id space.
+    const auto ended = [this](const ModbusRegisterReply &r) {
+        Q_EMIT requestEnded(RequestResult{r.id, r.status, 0, r.ok ? QString() : r.message, QVariant::fromValue(r)});
+    };
+    connect(this, &ModbusSession::registersRead, this, ended);
+    connect(this, &ModbusSession::writeFinished, this, ended);
     connect(f, &ModbusFamily::nodeIdChanged, this, &ModbusSession::nodeIdChanged);
     connect(f, &ModbusFamily::baudChanged, this, &ModbusSession::baudChanged);
     connect(f, &ModbusFamily::pollRateChanged, this, &ModbusSession::pollRateChanged);
@@ -55,14 +61,14 @@ void ModbusSession::setPollRate(double hz)
 
 quint64 ModbusSession::readRegisters(int start, int count)
 {
-    const quint64 id = m_nextId++;
+    const quint64 id = takeRequestId();
     inFamily<ModbusFamily>([id, start, count](ModbusFamily &f) { f.readRegisters(id, start, count); });
     return id;
 }
 
 quint64 ModbusSession::writeRegister(int address, int value, bool verify)
 {
-    const quint64 id = m_nextId++;
+    const quint64 id = takeRequestId();
     inFamily<ModbusFamily>([id, address, value, verify](ModbusFamily &f) { f.writeRegister(id, address, value, verify); });
     return id;
 }

@@ -63,7 +63,6 @@ Q_SIGNALS:
     void scanFinished(const QList<imudesk::device::ModbusScanHit> &hits, bool cancelled);
 
 private:
-    std::atomic<quint64> m_nextId{1};
     std::atomic<int> m_kind{0};
 };
 

@@ -1,5 +1,6 @@
 #pragma once
 // Value types of a Modbus RTU session (core/device/modbus_session.h) that cross threads.
+#include "device/request.h"
 #include "model/device_identity.h"
 #include "protocol/modbus/register_map.h"
 
@@ -50,6 +51,7 @@ struct ModbusRegisterReply {
     QList<quint16> values;
     QString message;       // what went wrong and what to do, when !ok
     int exceptionCode = 0; // Modbus exception code, 0 = none
+    RequestStatus status = RequestStatus::NotSent; // how it ended (Ok when ok)
 };
 
 } // namespace imudesk::device

@@ -70,6 +70,10 @@ protected:
     void openLink(const QString &address, int baud);
     // Queues a request; its id (set here) comes back in requestEnded.
     quint64 submit(Request request);
+    // An id of the session's one id space, for a family front-end's request that is not one
+    // engine request (a Modbus verified write, a CAN job): its end is announced with
+    // requestEnded too, under this id.
+    quint64 takeRequestId() { return m_nextId++; }
     // A request refused before it reached the engine: requestEnded(NotSent, why, reply)
     // from the event loop, after the caller has the id.
     quint64 refuse(const QVariant &reply, const QString &why);

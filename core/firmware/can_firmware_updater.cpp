@@ -1,6 +1,6 @@
 #include "can_firmware_updater.h"
 
-#include "firmware/qt_can_frame_link.h"
+#include "core/firmware/qt_can_frame_link.h"
 
 #include <QLoggingCategory>
 

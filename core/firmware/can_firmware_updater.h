@@ -5,8 +5,8 @@
 // same interface may stay open (CAN is a shared bus), but its own SDO requests to the node would
 // disturb the update. cancel() is safe from any thread: the flow sends an SDO abort between
 // segments and leaves the module in its bootloader, where the next update finishes the job.
-#include "firmware/can_update_flow.h"
-#include "firmware/update_runner.h"
+#include "core/firmware/can_update_flow.h"
+#include "core/firmware/update_runner.h"
 
 #include <QString>
 

@@ -1,6 +1,6 @@
 #include "firmware_updater.h"
 
-#include "firmware/serial_byte_link.h"
+#include "core/firmware/serial_byte_link.h"
 
 #include <QLoggingCategory>
 

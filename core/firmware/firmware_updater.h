@@ -4,8 +4,8 @@
 // must not be open elsewhere (close the DeviceSession first). cancel() is safe from any thread:
 // the flow stops between packets and leaves the module in its bootloader, where the next update
 // finishes the job.
-#include "firmware/update_flow.h"
-#include "firmware/update_runner.h"
+#include "core/firmware/update_flow.h"
+#include "core/firmware/update_runner.h"
 
 namespace imudesk::firmware {
 

@@ -1,7 +1,7 @@
 #include "update_flow.h"
 #include "protocol/hipnuc/ascii_command.h"
 
-#include "firmware/kboot_client.h"
+#include "core/firmware/kboot_client.h"
 #include "protocol/hipnuc/ascii_reply.h"
 #include "protocol/kboot/status_code.h"
 #include "protocol/stream/stream_demux.h"

@@ -3,53 +3,38 @@
 // CanFirmwareUpdater over a CAN bus): one update job at a time runs in its own QThread and is
 // reported with queued signals; cancel() is safe from any thread. A subclass's start() builds
 // the job (link + flow, made and used in the worker thread) and hands it to launch().
+#include "jobs/background_job.h"
+
 #include <QObject>
 #include <QString>
 
 #include <functional>
 #include <memory>
 
-QT_BEGIN_NAMESPACE
-class QThread;
-QT_END_NAMESPACE
-
 namespace imudesk::firmware {
 
-class UpdateRunner : public QObject {
+// The update's worker thread is a jobs::BackgroundJob (cancel, finished); this adds the
+// flows' own reports.
+class UpdateRunner : public jobs::BackgroundJob {
     Q_OBJECT
-
-public:
-    ~UpdateRunner() override;
-
-    // Asks the running job to stop (the flow stops at its next safe point); no effect when idle.
-    void cancel();
-    bool isRunning() const { return m_thread != nullptr; }
 
 Q_SIGNALS:
     void stateChanged(int state, const QString &name); // the flow's State
     void progressChanged(qulonglong done, qulonglong total, double bytesPerSecond, double secondsLeft);
     void logMessage(const QString &line);
-    void finished(bool ok, const QString &message);
 
 protected:
-    explicit UpdateRunner(QObject *parent = nullptr);
+    explicit UpdateRunner(QObject *parent = nullptr) : jobs::BackgroundJob(parent) {}
 
-    // What a job hands back from the worker thread. apply (optional) runs in this object's
-    // thread after the worker has ended and before finished() is emitted: a subclass stores
-    // its typed result there.
-    struct Outcome {
-        bool ok = false;
-        QString message;
-        std::function<void()> apply;
-    };
-    // A job registers how to cancel the flow it made (and registers an empty function before
-    // that flow goes away); a cancel asked before the registration reaches it at once.
-    using Canceller = std::function<void()>;
     using RegisterCancel = std::function<void(Canceller)>;
     using Job = std::function<Outcome(const RegisterCancel &)>;
 
     // Runs job in a new worker thread named threadName; false when a job is already running.
-    bool launch(const QString &threadName, Job job);
+    bool launch(const QString &threadName, Job job)
+    {
+        return jobs::BackgroundJob::launch(threadName,
+                                           [job = std::move(job)](const Context &c) { return job(c.registerCancel); });
+    }
 
     // For jobs (worker thread): an observer for a flow type (UpdateFlow, CanUpdateFlow) whose
     // state and log callbacks emit stateChanged() and logMessage(); the caller adds progress.
@@ -74,14 +59,6 @@ protected:
         outcome.apply = [&store, result = std::move(result)] { store = result; };
         return outcome;
     }
-
-private:
-    struct Shared;
-    void onWorkerDone();
-
-    QThread *m_thread = nullptr;
-    std::shared_ptr<Shared> m_shared;
-    std::shared_ptr<Outcome> m_outcome;
 };
 
 } // namespace imudesk::firmware

@@ -152,7 +152,7 @@ std::vector<ConfigProfile::Difference> ConfigProfile::diff(const DeviceConfigura
             diff.note = a.reason;
         } else {
             QString error;
-            if (SettingCatalog::commands(d, want->second, device.identity, &error).isEmpty()) {
+            if (SettingCatalog::commands(d, want->second, device.identity, &error).empty()) {
                 diff.applicable = false;
                 diff.note = error;
             }

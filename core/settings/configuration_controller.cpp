@@ -55,7 +55,7 @@ ConfigurationController::Plan ConfigurationController::plan(const std::vector<Ch
         if (!replaced)
             merged.push_back({key, c.value});
     }
-    std::optional<std::pair<Change, QString>> baud;
+    std::optional<std::pair<Change, protocol::hipnuc::Command>> baud;
     for (const Change &c : merged) {
         const SettingDefinition *d = SettingCatalog::find(c.key);
         const auto a = SettingCatalog::availability(*d, id);
@@ -65,8 +65,9 @@ ConfigurationController::Plan ConfigurationController::plan(const std::vector<Ch
         }
         QString error;
         const auto value = SettingCatalog::normalize(*d, c.value, &id, &error);
-        const QStringList cmds = value ? SettingCatalog::commands(*d, *value, id, &error) : QStringList();
-        if (cmds.isEmpty()) {
+        const auto cmds = value ? SettingCatalog::commands(*d, *value, id, &error)
+                                : std::vector<protocol::hipnuc::Command>();
+        if (cmds.empty()) {
             p.errors << error;
             continue;
         }
@@ -117,11 +118,22 @@ bool ConfigurationController::refuseIfBusy(const QString &what)
     return true;
 }
 
-void ConfigurationController::send(const QString &command, int timeoutMs, ReplyFn done)
+void ConfigurationController::send(const protocol::hipnuc::Command &command, int timeoutMs, ReplyFn done)
 {
-    const quint64 id = m_session.sendCommand(command, timeoutMs);
-    m_waiting[id] = {command, std::move(done)};
-    Q_EMIT commandSent(command);
+    const QString text = QString::fromStdString(command.text);
+    QString error;
+    const quint64 id = m_session.sendCommand(command, timeoutMs, &error);
+    Q_EMIT commandSent(text);
+    if (id == 0) { // refused by its builder: answered at once, as the device would not be asked
+        Reply refused;
+        refused.command = command.text;
+        refused.status = Reply::Status::NotSent;
+        refused.errorLine = error.toStdString();
+        Q_EMIT replyReceived(text, refused);
+        done(refused);
+        return;
+    }
+    m_waiting[id] = {text, std::move(done)};
 }
 
 void ConfigurationController::onCommandFinished(quint64 id, const Reply &reply)
@@ -137,7 +149,7 @@ void ConfigurationController::onCommandFinished(quint64 id, const Reply &reply)
 
 void ConfigurationController::read(std::function<void(bool, const QString &)> done)
 {
-    send(QString::fromStdString(protocol::hipnuc::commands::logVersion().text), kCommandTimeoutMs, [this, done](const Reply &r) {
+    send(protocol::hipnuc::commands::logVersion(), kCommandTimeoutMs, [this, done](const Reply &r) {
         if (r.ok()) {
             const auto id = model::DeviceIdentity::fromKeyValues(r.values);
             if (id.usable())
@@ -148,7 +160,7 @@ void ConfigurationController::read(std::function<void(bool, const QString &)> do
                             .arg(r.ok() ? tr("incomplete reply") : QString::fromStdString(r.errorLine)));
             return;
         }
-        send(QString::fromStdString(protocol::hipnuc::commands::logComConfig().text), kReadTimeoutMs, [this, done](const Reply &c) {
+        send(protocol::hipnuc::commands::logComConfig(), kReadTimeoutMs, [this, done](const Reply &c) {
             if (!c.ok()) {
                 done(false, tr("LOG COMCONFIG failed (%1): the settings shown may be out of date")
                                 .arg(c.errorLine.empty() ? QString::fromLatin1(protocol::hipnuc::statusName(c.status))
@@ -204,7 +216,7 @@ void ConfigurationController::sendChanges(size_t index)
     const SettingDefinition *d = SettingCatalog::find(m_plan.commands[index].key);
     if (d && d->kind == SettingKind::Baud) {
         const int baud = m_plan.changes[index].value.toInt();
-        Q_EMIT commandSent(m_plan.commands[index].command);
+        Q_EMIT commandSent(QString::fromStdString(m_plan.commands[index].command.text));
         auto conn = std::make_shared<QMetaObject::Connection>();
         *conn = connect(&m_session, &device::DeviceSession::baudChangeFinished, this,
                         [this, conn, index](bool changed, int at, const QString &detail) {
@@ -301,13 +313,13 @@ void ConfigurationController::runAction(const QString &key, const QString &argum
         }
     }
     QString error;
-    const QString command = SettingCatalog::actionCommand(*a, argument, &error);
-    if (command.isEmpty()) {
+    const auto command = SettingCatalog::actionCommand(*a, argument, &error);
+    if (!command) {
         Q_EMIT actionFinished(name, false, error);
         return;
     }
     setBusy(true);
-    send(command, kCommandTimeoutMs, [this, name](const Reply &r) {
+    send(*command, kCommandTimeoutMs, [this, name](const Reply &r) {
         if (!r.ok()) {
             setBusy(false);
             Q_EMIT actionFinished(name, false,

@@ -27,7 +27,7 @@ public:
     };
     struct PendingCommand {
         QString key;
-        QString command;
+        protocol::hipnuc::Command command; // made by the typed builders (SettingCatalog::commands)
     };
     struct Plan {
         std::vector<Change> changes;           // canonical values
@@ -88,7 +88,7 @@ private:
     using Reply = protocol::hipnuc::AsciiReply;
     using ReplyFn = std::function<void(const Reply &)>;
 
-    void send(const QString &command, int timeoutMs, ReplyFn done);
+    void send(const protocol::hipnuc::Command &command, int timeoutMs, ReplyFn done);
     void onCommandFinished(quint64 id, const Reply &reply);
     void read(std::function<void(bool ok, const QString &error)> done);
     void sendChanges(size_t index);

@@ -114,39 +114,39 @@ std::vector<SettingDefinition> buildSettings()
 std::vector<ActionDefinition> buildActions()
 {
     return {
-        {"ATT.RST.1", "CONFIG ATT RST 1", false, true, Feature::AttitudeCalibration,
+        {"ATT.RST.1", [] { return hp::commands::attReset(1); }, false, true, Feature::AttitudeCalibration,
          QT_TRANSLATE_NOOP("SettingCatalog", "Heading reset"),
          QT_TRANSLATE_NOOP("SettingCatalog",
                            "Sets the current heading to 0. Keep the device still while it runs.")},
-        {"ATT.RST.2", "CONFIG ATT RST 2", true, true, Feature::AttitudeCalibration,
+        {"ATT.RST.2", [] { return hp::commands::attReset(2); }, true, true, Feature::AttitudeCalibration,
          QT_TRANSLATE_NOOP("SettingCatalog", "Relative level (zero pitch and roll)"),
          QT_TRANSLATE_NOOP("SettingCatalog",
                            "Makes the current pitch and roll the zero, whatever the tilt (no check). Keep the device "
                            "still; ATT RST 5 undoes it; SAVECONFIG keeps it.")},
-        {"ATT.RST.3", "CONFIG ATT RST 3", true, true, Feature::AttitudeCalibration,
+        {"ATT.RST.3", [] { return hp::commands::attReset(3); }, true, true, Feature::AttitudeCalibration,
          QT_TRANSLATE_NOOP("SettingCatalog", "Automatic levelling"),
          QT_TRANSLATE_NOOP("SettingCatalog",
                            "Only when nearly level: pitch and roll both below 5 deg levels to 0/0, pitch below 5 deg "
                            "and roll near 180 deg levels to 0/180; otherwise refused (ERR). Keep the device still. "
                            "Permanent: ATT RST 5 does not undo it, only a factory reset does.")},
-        {"ATT.RST.5", "CONFIG ATT RST 5", true, true, Feature::AttitudeCalibration,
+        {"ATT.RST.5", [] { return hp::commands::attReset(5); }, true, true, Feature::AttitudeCalibration,
          QT_TRANSLATE_NOOP("SettingCatalog", "Cancel relative level"),
          QT_TRANSLATE_NOOP("SettingCatalog",
                            "Clears the relative pitch/roll zero of ATT RST 2 and returns to absolute angles.")},
-        {"YAW", "CONFIG YAW", true, false, Feature::None,
+        {"YAW", nullptr, true, false, Feature::None,
          QT_TRANSLATE_NOOP("SettingCatalog", "Set heading (v1.6.6)"),
          QT_TRANSLATE_NOOP("SettingCatalog",
                            "CONFIG YAW MODE DEG: MODE 1 sets the heading to DEG (absolute), MODE 0 adds DEG "
                            "(relative); -180 .. 180 deg; at once, not saved. Value \"MODE,DEG\", e.g. 1,16.")},
-        {"SAVECONFIG", "SAVECONFIG", true, true, Feature::None,
+        {"SAVECONFIG", hp::commands::saveConfig, true, true, Feature::None,
          QT_TRANSLATE_NOOP("SettingCatalog", "Save to flash"),
          QT_TRANSLATE_NOOP("SettingCatalog",
                            "Saves every setting to flash so that it survives a reset.")},
-        {"REBOOT", "REBOOT", true, true, Feature::None, QT_TRANSLATE_NOOP("SettingCatalog", "Reboot"),
+        {"REBOOT", hp::commands::reboot, true, true, Feature::None, QT_TRANSLATE_NOOP("SettingCatalog", "Reboot"),
          QT_TRANSLATE_NOOP("SettingCatalog",
                            "Resets the module (same as a power cycle): unsaved settings are lost, saved CONFIG "
                            "settings take effect.")},
-        {"FRESET", "FRESET", true, true, Feature::None,
+        {"FRESET", hp::commands::factoryReset, true, true, Feature::None,
          QT_TRANSLATE_NOOP("SettingCatalog", "Factory reset"),
          QT_TRANSLATE_NOOP("SettingCatalog",
                            "Restores the factory settings, saves them and resets: baud 115200, HI91 at 100 Hz, "
@@ -429,8 +429,8 @@ std::optional<QString> SettingCatalog::fromComConfig(const SettingDefinition &d,
     return normalize(d, v, nullptr, &error);
 }
 
-QStringList SettingCatalog::commands(const SettingDefinition &d, const QString &canonical,
-                                     const model::DeviceIdentity &id, QString *error)
+std::vector<hp::Command> SettingCatalog::commands(const SettingDefinition &d, const QString &canonical,
+                                                  const model::DeviceIdentity &id, QString *error)
 {
     const Availability a = availability(d, id);
     if (!a.available) {
@@ -481,18 +481,18 @@ QStringList SettingCatalog::commands(const SettingDefinition &d, const QString &
             *error = tr("%1: %2").arg(QLatin1String(d.key), QString::fromStdString(c.error));
         return {};
     }
-    return {QString::fromStdString(c.text)};
+    return {c};
 }
 
-QString SettingCatalog::actionCommand(const ActionDefinition &a, const QString &argument, QString *error)
+std::optional<hp::Command> SettingCatalog::actionCommand(const ActionDefinition &a, const QString &argument, QString *error)
 {
     if (QLatin1String(a.key) != QLatin1String("YAW")) {
         if (!argument.trimmed().isEmpty() && argument.trimmed() != QLatin1String("1")) {
             if (error)
                 *error = tr("%1 takes no value").arg(QLatin1String(a.key));
-            return {};
+            return std::nullopt;
         }
-        return QLatin1String(a.command);
+        return a.command();
     }
     const QStringList parts = argument.split(QLatin1Char(','));
     int mode = -1;
@@ -500,15 +500,15 @@ QString SettingCatalog::actionCommand(const ActionDefinition &a, const QString &
     if (parts.size() != 2 || !parseInt(parts.at(0), &mode) || !deg) {
         if (error)
             *error = tr("YAW needs MODE,DEG (MODE 0 relative or 1 absolute, DEG -180 .. 180), e.g. YAW=1,16");
-        return {};
+        return std::nullopt;
     }
     const auto c = hp::commands::setYaw(mode, *deg);
     if (!c.ok()) {
         if (error)
             *error = tr("YAW: %1").arg(QString::fromStdString(c.error));
-        return {};
+        return std::nullopt;
     }
-    return QString::fromStdString(c.text);
+    return c;
 }
 
 QString SettingCatalog::valueText(const SettingDefinition &d, const QString &canonical)

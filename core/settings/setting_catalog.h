@@ -60,10 +60,11 @@ public:
     static std::optional<QString> fromComConfig(const SettingDefinition &d, const std::string &value);
     // The command(s) that set a canonical value on this device; empty and *error when the
     // device cannot take it.
-    static QStringList commands(const SettingDefinition &d, const QString &canonical, const model::DeviceIdentity &id,
-                                QString *error);
+    static std::vector<protocol::hipnuc::Command> commands(const SettingDefinition &d, const QString &canonical,
+                                                           const model::DeviceIdentity &id, QString *error);
     // The command of an action. CONFIG YAW takes "MODE,DEG" (e.g. "1,16"); others take nothing.
-    static QString actionCommand(const ActionDefinition &a, const QString &argument, QString *error);
+    static std::optional<protocol::hipnuc::Command> actionCommand(const ActionDefinition &a, const QString &argument,
+                                                                  QString *error);
 
     // Human-readable value ("1 (AHRS, 9-axis)", "100 Hz (0.01 s)").
     static QString valueText(const SettingDefinition &d, const QString &canonical);

@@ -55,7 +55,9 @@ struct SettingDefinition {
 // An action: a command that does something once and has no value to read back.
 struct ActionDefinition {
     const char *key;          // "ATT.RST.3"
-    const char *command;      // "CONFIG ATT RST 3" (CONFIG YAW takes arguments: see SettingCatalog)
+    // The typed builder of its command (CONFIG ATT RST 3, SAVECONFIG, ...); null for CONFIG YAW,
+    // which takes arguments (SettingCatalog::actionCommand builds it).
+    protocol::hipnuc::Command (*command)();
     bool inV166;
     bool inV171;
     Feature feature;

@@ -65,7 +65,7 @@ qint64 SimulatedTransport::write(const QByteArray &bytes)
     if (!m_open)
         return -1;
     m_device->advanceTo(deviceNowUs());
-    if (m_baud == m_device->baud())
+    if (m_baud == m_device->baud() && !m_deaf)
         m_device->receive(reinterpret_cast<const uint8_t *>(bytes.constData()), size_t(bytes.size()));
     m_written += quint64(bytes.size());
     return bytes.size();

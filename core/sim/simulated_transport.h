@@ -45,6 +45,9 @@ public:
     // Thread of the transport (the session's engine thread).
     void unplug();
     void replug() { m_plugged = true; }
+    // The host's transmit wire is broken (any thread): what the host writes goes nowhere, so
+    // requests go unanswered while the device's own output still arrives.
+    void setDeaf(bool on) { m_deaf = on; }
     SimulatedSerialDevice &device() { return *m_device; }
     // Before the session opens the link (or in its thread): device seconds per real second.
     void setTimeScale(double scale);
@@ -64,6 +67,7 @@ private:
     int64_t m_baseUs = 0; // device time when m_clock started
     int64_t m_unplugAtUs = -1;
     std::atomic<quint64> m_written{0};
+    std::atomic<bool> m_deaf{false};
     QString m_address;
     int m_baud = 0;
     bool m_open = false;

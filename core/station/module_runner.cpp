@@ -1,9 +1,9 @@
-#include "station/module_runner.h"
+#include "core/station/module_runner.h"
 
 #include "calib/gyro_scale_run.h"
 #include "calib/mag_cal_session.h"
 #include "device/device_session.h"
-#include "firmware/firmware_updater.h"
+#include "core/firmware/firmware_updater.h"
 #include "io/transport.h"
 #include "model/sample.h"
 #include "protocol/ihex/intel_hex_loader.h"

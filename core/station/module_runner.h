@@ -8,8 +8,8 @@
 // A module that disappears (the link fails or nothing arrives for kSilenceMs while a step
 // waits for data) fails the running step with what happened; the firmware step closes the
 // session on purpose while the updater owns the port and opens it again afterwards.
-#include "station/station_result.h"
-#include "station/test_plan.h"
+#include "core/station/station_result.h"
+#include "core/station/test_plan.h"
 
 #include <QElapsedTimer>
 #include <QObject>

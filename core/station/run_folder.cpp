@@ -1,4 +1,4 @@
-#include "station/run_folder.h"
+#include "core/station/run_folder.h"
 
 #include <QDateTime>
 #include <QDir>

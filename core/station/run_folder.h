@@ -4,8 +4,8 @@
 // step and measured value, the tidy form a spreadsheet filters), the evidence recordings
 // and the per-module PDF reports. Opening a folder that already holds a run of the same plan
 // appends to it: a module tested again gets the next attempt number, nothing is overwritten.
-#include "station/station_result.h"
-#include "station/test_plan.h"
+#include "core/station/station_result.h"
+#include "core/station/test_plan.h"
 
 #include <QCoreApplication>
 #include <QString>

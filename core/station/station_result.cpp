@@ -1,4 +1,4 @@
-#include "station/station_result.h"
+#include "core/station/station_result.h"
 
 #include <QCoreApplication>
 #include <QJsonArray>

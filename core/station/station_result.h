@@ -2,7 +2,7 @@
 // What a station run found: per module, every step of the plan with its verdict, the values
 // it measured and the limits they were held against. Value types, shared by the runner, the
 // reports (run_folder.h, the PDF in ui/station) and the station view.
-#include "station/test_plan.h"
+#include "core/station/test_plan.h"
 
 #include <QDateTime>
 #include <QJsonObject>

@@ -1,4 +1,4 @@
-#include "station/station_runner.h"
+#include "core/station/station_runner.h"
 
 #include <QTimer>
 

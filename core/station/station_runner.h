@@ -4,8 +4,8 @@
 // fails or disappears does not stop the others. When a run folder is given, every finished
 // module is appended to its summary and gets its PDF report (through reportWriter, which the
 // GUI and the CLI supply: PDF needs QtGui, core does not link it).
-#include "station/module_runner.h"
-#include "station/run_folder.h"
+#include "core/station/module_runner.h"
+#include "core/station/run_folder.h"
 
 #include <QObject>
 #include <QStringList>

@@ -1,4 +1,4 @@
-#include "station/test_plan.h"
+#include "core/station/test_plan.h"
 
 #include <QDir>
 #include <QFile>

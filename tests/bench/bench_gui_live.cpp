@@ -201,7 +201,7 @@ void spin(int ms)
 bool command(device::DeviceSession &s, const QString &text)
 {
     std::optional<protocol::hipnuc::AsciiReply> reply;
-    const quint64 id = s.sendCommand(text, 2000);
+    const quint64 id = s.sendText(text, 2000);
     auto c = QObject::connect(&s, &device::DeviceSession::commandFinished,
                               [&](quint64 done, const protocol::hipnuc::AsciiReply &r) {
                                   if (done == id)

@@ -95,7 +95,7 @@ int main(int argc, char **argv)
     }
     bool answered = false;
     QObject::connect(&session, &device::DeviceSession::commandFinished, &app, [&] { answered = true; });
-    session.sendCommand(QStringLiteral("LOG HI91 ONTIME 0.001"));
+    session.sendText(QStringLiteral("LOG HI91 ONTIME 0.001"));
     waitUntil([&] { return answered; }, 3000);
     waitUntil([] { return false; }, 300);
     const QString path = QDir(dir).filePath(QStringLiteral("bench_record_%1.imucap").arg(app.applicationPid()));

@@ -9,8 +9,8 @@
 // usage: bench_station [--modules N] [--plan-seconds S]   (default 8 modules, a 60-s plan)
 // Exit code 1 when a target is missed.
 #include "sim/pty_simulator.h"
-#include "station/station_runner.h"
-#include "station/station_view.h"
+#include "core/station/station_runner.h"
+#include "ui/station/station_view.h"
 
 #include <QApplication>
 #include <QElapsedTimer>

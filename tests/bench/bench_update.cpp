@@ -13,8 +13,8 @@
 //
 // --quick uses 64 KiB. Exit status: 0 when every update succeeded and the write phase at
 // 115200 reached 85 % of baud/10; 1 otherwise; 2 on bad arguments.
-#include "firmware/serial_byte_link.h"
-#include "firmware/update_flow.h"
+#include "core/firmware/serial_byte_link.h"
+#include "core/firmware/update_flow.h"
 #include "sim/kboot_bootloader.h"
 #include "sim/pty_simulator.h"
 

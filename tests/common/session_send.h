@@ -13,7 +13,7 @@ namespace imudesk::test {
 inline protocol::hipnuc::AsciiReply sendAndWait(device::DeviceSession &s, const QString &cmd, int timeoutMs)
 {
     QSignalSpy spy(&s, &device::DeviceSession::commandFinished);
-    const quint64 id = s.sendCommand(cmd, timeoutMs);
+    const quint64 id = s.sendText(cmd, timeoutMs);
     protocol::hipnuc::AsciiReply r;
     r.status = protocol::hipnuc::AsciiReply::Status::Pending;
     (void)imudesk::test::waitFor(

@@ -102,7 +102,7 @@ private Q_SLOTS:
         QTRY_COMPARE_WITH_TIMEOUT(session.store().totalAppended(), uint64_t(50), 5000);
         StallWatch stalls;
         QSignalSpy finished(&session, &DeviceSession::commandFinished);
-        const quint64 id = session.sendCommand(QStringLiteral("LOG VERSION"), 5000);
+        const quint64 id = session.sendText(QStringLiteral("LOG VERSION"), 5000);
         // The command reaches the "device", which starts to answer, then the cable goes.
         std::string sent;
         QTRY_VERIFY_WITH_TIMEOUT((sent += pty.readAvailable()).find("LOG VERSION") != std::string::npos, 3000);
@@ -123,7 +123,7 @@ private Q_SLOTS:
         QCOMPARE(session.store().totalAppended(), uint64_t(50));
         // A command sent now is refused at once, not queued for a device that is not there.
         QSignalSpy later(&session, &DeviceSession::commandFinished);
-        session.sendCommand(QStringLiteral("LOG VERSION"), 5000);
+        session.sendText(QStringLiteral("LOG VERSION"), 5000);
         QTRY_VERIFY_WITH_TIMEOUT(!later.isEmpty(), 1000);
         QCOMPARE(later.first().at(1).value<AsciiReply>().status, AsciiReply::Status::NotSent);
         checkStalls(stalls, "mid-command");

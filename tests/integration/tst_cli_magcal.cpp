@@ -90,6 +90,8 @@ private Q_SLOTS:
         // The accuracy the data gives: 300 samples, 0.3 uT noise, the whole sphere.
         const double predicted = o.value(QStringLiteral("predicted_heading_error_deg")).toDouble(-1);
         QVERIFY2(predicted > 0 && predicted < 0.5, qPrintable(QString::number(predicted)));
+        const double predicted95 = o.value(QStringLiteral("predicted_heading_error_95_deg")).toDouble(-1);
+        QVERIFY2(predicted95 >= predicted && predicted95 < 1.0, qPrintable(QString::number(predicted95)));
         const double hiSigma = o.value(QStringLiteral("hard_iron_sigma_ut")).toDouble(-1);
         QVERIFY2(hiSigma > 0 && hiSigma < 0.15, qPrintable(QString::number(hiSigma)));
         QVERIFY(o.value(QStringLiteral("soft_iron_sigma_pct")).toDouble(-1) > 0);
@@ -99,6 +101,7 @@ private Q_SLOTS:
         QVERIFY(t.out.contains("verdict\tpass"));
         QVERIFY(t.out.contains("hard_iron_ut\t2")); // 25 +- 0.3
         QVERIFY(t.out.contains("predicted_heading_error_deg\t0."));
+        QVERIFY(t.out.contains("predicted_heading_error_95_deg\t0."));
         QVERIFY(t.out.contains("hard_iron_sigma_ut\t0."));
         QVERIFY(t.out.contains("soft_iron_sigma_pct\t0."));
         // A steeper field leaves less horizontal field: a larger predicted heading error.

@@ -269,7 +269,7 @@ private Q_SLOTS:
         QVERIFY(b.start());
         const auto before = b.controller.configuration().values;
         QSignalSpy bl(&b.session, &device::DeviceSession::commandFinished);
-        b.session.sendCommand(QStringLiteral("REBOOT BL"));
+        b.session.sendText(QStringLiteral("REBOOT BL"));
         QVERIFY(bl.wait(3000));
         QTRY_COMPARE(b.sim.deviceState(), sim::HipnucSimulator::State::Bootloader);
         const auto report = b.apply({{QStringLiteral("ATT.MODE"), QStringLiteral("0")}});
@@ -314,9 +314,9 @@ private Q_SLOTS:
         const auto plan = b.controller.plan(changes);
         QVERIFY(plan.ok());
         QCOMPARE(int(plan.commands.size()), 3);
-        QCOMPARE(plan.commands[0].command, QStringLiteral("CONFIG IMU URFR 24"));
-        QCOMPARE(plan.commands[1].command, QStringLiteral("LOG HI91 ONTIME 0.005"));
-        QCOMPARE(plan.commands[2].command, QStringLiteral("SERIALCONFIG 921600"));
+        QCOMPARE(QString::fromStdString(plan.commands[0].command.text), QStringLiteral("CONFIG IMU URFR 24"));
+        QCOMPARE(QString::fromStdString(plan.commands[1].command.text), QStringLiteral("LOG HI91 ONTIME 0.005"));
+        QCOMPARE(QString::fromStdString(plan.commands[2].command.text), QStringLiteral("SERIALCONFIG 921600"));
         QCOMPARE(ConfigurationController::cliLine(QStringLiteral("/dev/ttyUSB0"), plan.changes, true, false),
                  QStringLiteral("imudesk-cli config /dev/ttyUSB0 set IMU.URFR=24 LOG.HI91=0.005 SERIAL.BAUD=921600 "
                                 "--save"));

@@ -169,7 +169,7 @@ private Q_SLOTS:
         // 200 commands the device refuses with ERR, as fast as the session takes them.
         QSignalSpy finished(&session, &DeviceSession::commandFinished);
         for (int i = 0; i < 200; ++i)
-            session.sendCommand(QStringLiteral("CONFIG ATT MODE 7"), 1000);
+            session.sendText(QStringLiteral("CONFIG ATT MODE 7"), 1000);
         QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 200, 60000);
         int errors = 0;
         for (const auto &args : finished)

@@ -5,7 +5,7 @@
 #include "../common/cli_run.h"
 #include "../common/firmware_files.h"
 #include "../common/test_main.h"
-#include "firmware/serial_byte_link.h"
+#include "core/firmware/serial_byte_link.h"
 #include "protocol/ihex/firmware_image.h"
 #include "protocol/ihex/intel_hex_writer.h"
 #include "sim/kboot_bootloader.h"

@@ -9,7 +9,7 @@
 #include "../common/inproc_link.h"
 #include "../common/test_main.h"
 #include "device/hec495_session.h"
-#include "models/latest_values_model.h"
+#include "itemmodels/latest_values_model.h"
 #include "plot/channel_history.h"
 #include "record/capture_exporter.h"
 #include "record/file_analysis.h"

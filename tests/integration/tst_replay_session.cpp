@@ -127,8 +127,8 @@ private Q_SLOTS:
         QVERIFY(!identity.isEmpty() || identity.wait(5000));
         // HI91 at 200 Hz and HI81 at 20 Hz share the line.
         QSignalSpy done(&session, &DeviceSession::commandFinished);
-        session.sendCommand(QStringLiteral("LOG HI91 ONTIME 0.005"));
-        session.sendCommand(QStringLiteral("LOG HI81 ONTIME 0.05"));
+        session.sendText(QStringLiteral("LOG HI91 ONTIME 0.005"));
+        session.sendText(QStringLiteral("LOG HI81 ONTIME 0.05"));
         QTRY_COMPARE_WITH_TIMEOUT(done.size(), 2, 5000);
         const uint64_t configured = session.store().totalAppended();
         const auto hi81Arrived = [&session, configured] {

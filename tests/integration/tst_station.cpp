@@ -16,8 +16,8 @@
 #include "sim/hipnuc_serial_device.h"
 #include "sim/pty_simulator.h"
 #include "sim/simulated_transport.h"
-#include "station/run_folder.h"
-#include "station/station_runner.h"
+#include "core/station/run_folder.h"
+#include "core/station/station_runner.h"
 
 #include <QElapsedTimer>
 #include <QFile>

@@ -6,7 +6,7 @@
 #include "calib/mag_calibrator.h"
 #include "calibration/calibration_history_dialog.h"
 #include "calibration/mag_sphere_view.h"
-#include "models/calibration_history_model.h"
+#include "itemmodels/calibration_history_model.h"
 #include "../common/test_main.h"
 
 #include <QDir>

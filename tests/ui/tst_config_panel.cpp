@@ -3,7 +3,7 @@
 // with replies shown, the factory-reset confirmation, the link-load warning, actions per
 // firmware, and the picker by picture, code and directions (left-handed refused).
 #include "configuration/config_panel.h"
-#include "models/settings_table_model.h"
+#include "itemmodels/settings_table_model.h"
 #include "configuration/mounting_picker.h"
 #include "configuration/mounting_tile.h"
 #include "sim/pty_simulator.h"

@@ -4,7 +4,7 @@
 #include "workspace/command_log_widget.h"
 #include "workspace/console_widget.h"
 #include "device/raw_byte_log.h"
-#include "models/command_log_model.h"
+#include "itemmodels/command_log_model.h"
 #include "protocol/hipnuc/ascii_command.h"
 #include "workspace/raw_bytes_view.h"
 #include "../common/test_main.h"

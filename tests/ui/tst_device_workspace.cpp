@@ -8,7 +8,7 @@
 #include "workspace/link_factory.h"
 #include "workspace/main_window.h"
 #include "workspace/raw_bytes_view.h"
-#include "models/latest_values_model.h"
+#include "itemmodels/latest_values_model.h"
 #include "../common/test_main.h"
 
 #include <QApplication>

@@ -3,7 +3,7 @@
 #include "../common/firmware_files.h"
 #include "../common/test_main.h"
 #include "workspace/device_workspace.h"
-#include "firmware/firmware_update_dialog.h"
+#include "ui/firmware/firmware_update_dialog.h"
 #include "workspace/main_window.h"
 #include "protocol/ihex/intel_hex_writer.h"
 #include "sim/kboot_bootloader.h"

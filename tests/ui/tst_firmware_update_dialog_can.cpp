@@ -5,7 +5,7 @@
 #include "workspace/device_workspace.h"
 #include "../common/firmware_files.h"
 #include "../common/test_main.h"
-#include "firmware/firmware_update_dialog.h"
+#include "ui/firmware/firmware_update_dialog.h"
 #include "workspace/link_factory.h"
 #include "workspace/main_window.h"
 #include "protocol/ihex/intel_hex_writer.h"

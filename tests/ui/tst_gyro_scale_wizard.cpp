@@ -80,7 +80,7 @@ private Q_SLOTS:
         QVERIFY(wizard.enableOutputButton()->isHidden());
         QVERIFY(wizard.streamStatusLabel()->text().contains(QStringLiteral("Ready")));
         // Output off: the page says so and offers the one command that brings it back.
-        session.sendCommand(QStringLiteral("LOG HI91 ONTIME 0"));
+        session.sendText(QStringLiteral("LOG HI91 ONTIME 0"));
         QTRY_VERIFY_WITH_TIMEOUT(wizard.gyroRateHz() == 0.0, 6000);
         QVERIFY(wizard.enableOutputButton()->isVisible() && wizard.enableOutputButton()->isEnabled());
         QVERIFY(wizard.streamStatusLabel()->text().contains(QStringLiteral("No gyroscope data")));

@@ -15,7 +15,7 @@
 #include "device/hec495_session.h"
 #include "protocol/hipnuc/ascii_command.h"
 #include "protocol/hipnuc/payloads.h"
-#include "firmware/firmware_update_dialog.h"
+#include "ui/firmware/firmware_update_dialog.h"
 #include "calibration/gyro_scale_wizard.h"
 #include "calibration/hec495_calibration_wizard.h"
 #include "calibration/mag_calibration_wizard.h"
@@ -32,7 +32,7 @@
 #include "workspace/link_factory.h"
 #include "workspace/main_window.h"
 #include "model/main_status.h"
-#include "models/latest_values_model.h"
+#include "itemmodels/latest_values_model.h"
 #include "workspace/status_flags_widget.h"
 #include "workspace/window_settings.h"
 

@@ -113,7 +113,16 @@ private Q_SLOTS:
         QCOMPARE(wizard.currentId(), int(ui::MagCalibrationWizard::EnvironmentPage));
         // The simulator's field: |B| about 50 uT (28 horizontal, 42 down) plus its hard iron.
         QTRY_VERIFY_WITH_TIMEOUT(wizard.environment().count() >= 20, 5000);
-        QVERIFY(wizard.environment().meanFieldUt() > 10);
+        QVERIFY(wizard.environment().meanRawFieldUt() > 10);
+        // Judged with the module's own iron fitted out: the simulator's 50 µT, not "a magnetic
+        // object near" (which the raw |B| of its hard iron looked like).
+        QTRY_VERIFY_WITH_TIMEOUT(wizard.environment().fittedFieldUt().has_value(), 20000);
+        QVERIFY2(std::abs(*wizard.environment().fittedFieldUt() - 50.0) < 8.0,
+                 qPrintable(QString::number(*wizard.environment().fittedFieldUt())));
+        QVERIFY(wizard.environment().status() != calib::MagEnvironmentJudge::Status::FieldOutOfRange);
+        QTRY_VERIFY(wizard.environmentFiguresText().contains(QStringLiteral("Field at the spot")));
+        QVERIFY(!wizard.environmentVerdict()->text().contains(QStringLiteral("magnetic object")));
+        QVERIFY(wizard.findChild<QWidget *>(QStringLiteral("environmentSphere"))->isVisible());
         wizard.next();
         QCOMPARE(wizard.currentId(), int(ui::MagCalibrationWizard::RotationPage));
         // A large sphere and the live figures.

@@ -15,7 +15,7 @@
 #include "workspace/command_log_widget.h"
 #include "workspace/device_workspace.h"
 #include "workspace/main_window.h"
-#include "models/latest_values_model.h"
+#include "itemmodels/latest_values_model.h"
 #include "workspace/status_flags_widget.h"
 #include "workspace/window_settings.h"
 #include "sim/pty_simulator.h"

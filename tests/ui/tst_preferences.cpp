@@ -5,7 +5,7 @@
 #include "charts/chart_view.h"
 #include "workspace/device_workspace.h"
 #include "workspace/main_window.h"
-#include "models/latest_values_model.h"
+#include "itemmodels/latest_values_model.h"
 #include "workspace/preferences.h"
 #include "workspace/preferences_dialog.h"
 #include "recording/recording_controls.h"

@@ -5,7 +5,7 @@
 #include "bus/bus_connect_dialog.h"
 #include "workspace/device_workspace.h"
 #include "recording/export_dialog.h"
-#include "firmware/firmware_update_dialog.h"
+#include "ui/firmware/firmware_update_dialog.h"
 #include "calibration/gyro_scale_wizard.h"
 #include "charts/analysis_window.h"
 #include "calibration/mag_calibration_wizard.h"

@@ -2,7 +2,7 @@
 // samples.csv), listed newest first, and its list model.
 #include "calib/calibration_history.h"
 #include "calib/mag_cal_result.h"
-#include "models/calibration_history_model.h"
+#include "itemmodels/calibration_history_model.h"
 #include "../common/test_main.h"
 
 #include <QAbstractItemModelTester>

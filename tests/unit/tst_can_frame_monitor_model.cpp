@@ -1,6 +1,6 @@
 // The CAN frame monitor model: one row per identifier with count, cycle time, last data and
 // meaning (the manual's 8.27 PCAN-View capture as input), filter, pause, bound, CSV export.
-#include "models/can_frame_monitor_model.h"
+#include "itemmodels/can_frame_monitor_model.h"
 #include "../common/test_main.h"
 
 #include <QAbstractItemModelTester>

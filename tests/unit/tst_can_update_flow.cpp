@@ -2,7 +2,7 @@
 // (virtual time): the vendor's happy-path example as golden frames (hipnuc-protocol-notes 4.5),
 // the last-segment rule for every tail length, each injected fault followed by a successful second
 // run, cancel and resume, images refused before any frame, CRC verification and its fallback.
-#include "firmware/can_update_flow.h"
+#include "core/firmware/can_update_flow.h"
 #include "protocol/can/sdo.h"
 #include "sim/can_sim_device.h"
 #include "sim/kboot_bootloader.h"

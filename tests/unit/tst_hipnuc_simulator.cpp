@@ -2,7 +2,7 @@
 // reply (OK / ERR / silence), persistence, resets, baud switching, output rates and
 // triggers, frame contents decoded with the core codecs, calibrations, the bootloader
 // and the UART model, the per-module faults (SimFaults) and a firmware update from 1.6.6.
-#include "firmware/update_flow.h"
+#include "core/firmware/update_flow.h"
 #include "model/device_identity.h"
 #include "model/main_status.h"
 #include "model/sample.h"

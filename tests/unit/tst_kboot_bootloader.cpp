@@ -1,7 +1,7 @@
 // The simulated KBOOT bootloader's flash rules and status codes, driven by the host's
 // KbootClient over the in-process link (hipnuc-protocol-notes.md 3.1-3.3).
-#include "firmware/kboot_client.h"
-#include "firmware/update_flow.h"
+#include "core/firmware/kboot_client.h"
+#include "core/firmware/update_flow.h"
 #include "protocol/kboot/status_code.h"
 #include "sim/hipnuc_simulator.h"
 #include "sim/simulated_byte_link.h"

@@ -2,7 +2,7 @@
 #include "../common/golden.h"
 #include "../common/test_main.h"
 #include "model/main_status.h"
-#include "models/latest_values_model.h"
+#include "itemmodels/latest_values_model.h"
 #include "protocol/hipnuc/payloads.h"
 
 #include <QAbstractItemModelTester>

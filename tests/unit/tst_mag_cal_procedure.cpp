@@ -74,10 +74,10 @@ Outcome runOnSimulator(const char *model, const char *firmware, sim::Motion moti
     MagCalProcedure::Step step = proc.start(flow);
     const int64_t startUs = now;
     Outcome out;
-    while (!step.command.isEmpty()) {
+    while (step.hasCommand()) {
         now += int64_t(step.delayMs) * 1000;
         dev.advanceTo(now);
-        const AsciiReply r = ask(dev, demux, now, step.command);
+        const AsciiReply r = ask(dev, demux, now, QString::fromStdString(step.command.text));
         step = proc.handleReply(r, (now - startUs) / 1000);
         if (proc.stat() >= 0 && (out.stats.empty() || out.stats.back() != proc.stat()))
             out.stats.push_back(proc.stat());
@@ -120,16 +120,16 @@ private Q_SLOTS:
         QFETCH(QString, state);
         QFETCH(bool, polls);
         MagCalProcedure p;
-        QCOMPARE(p.start(MagCalProcedure::Flow::Mcal).command, QStringLiteral("CONFIG MCAL START"));
+        QCOMPARE(QString::fromStdString(p.start(MagCalProcedure::Flow::Mcal).command.text), QStringLiteral("CONFIG MCAL START"));
         MagCalProcedure::Step s = p.handleReply(reply(AsciiReply::Status::Ok), 10);
-        QCOMPARE(s.command, QStringLiteral("LOG MCAL STAT"));
+        QCOMPARE(QString::fromStdString(s.command.text), QStringLiteral("LOG MCAL STAT"));
         QCOMPARE(s.delayMs, 500);
         std::map<std::string, std::string> v{{"PROGRESS", "42"}};
         if (!stat.isEmpty())
             v["STAT"] = stat.toStdString();
         s = p.handleReply(reply(AsciiReply::Status::Ok, v), 600);
         QCOMPARE(QString::fromLatin1(MagCalProcedure::stateName(p.state())), state);
-        QCOMPARE(!s.command.isEmpty(), polls);
+        QCOMPARE(s.hasCommand(), polls);
         QVERIFY(!p.message().isEmpty());
         if (!stat.isEmpty() && stat != QLatin1String("0") && stat != QLatin1String("7") && stat != QLatin1String("4"))
             QCOMPARE(p.progress(), 42);
@@ -152,9 +152,9 @@ private Q_SLOTS:
         MagCalProcedure p(MagCalProcedure::Options{500, 10000, 2});
         p.start(MagCalProcedure::Flow::Mcal);
         p.handleReply(reply(AsciiReply::Status::Ok), 0);
-        QVERIFY(!p.handleReply(reply(AsciiReply::Status::Timeout), 1000).command.isEmpty());
-        QVERIFY(!p.handleReply(reply(AsciiReply::Status::Timeout), 2000).command.isEmpty());
-        QVERIFY(p.handleReply(reply(AsciiReply::Status::Timeout), 3000).command.isEmpty());
+        QVERIFY(p.handleReply(reply(AsciiReply::Status::Timeout), 1000).hasCommand());
+        QVERIFY(p.handleReply(reply(AsciiReply::Status::Timeout), 2000).hasCommand());
+        QVERIFY(!p.handleReply(reply(AsciiReply::Status::Timeout), 3000).hasCommand());
         QCOMPARE(p.state(), MagCalProcedure::State::Failed);
         // Overall time limit.
         p.start(MagCalProcedure::Flow::Mcal);
@@ -179,7 +179,7 @@ private Q_SLOTS:
         QFETCH(QString, mb);
         QFETCH(QString, state);
         MagCalProcedure p;
-        QCOMPARE(p.start(MagCalProcedure::Flow::Background).command, QStringLiteral("LOG MAGCONFIG"));
+        QCOMPARE(QString::fromStdString(p.start(MagCalProcedure::Flow::Background).command.text), QStringLiteral("LOG MAGCONFIG"));
         p.handleReply(reply(AsciiReply::Status::Ok, {{"MB", mb.toStdString()}}), 100);
         QCOMPARE(QString::fromLatin1(MagCalProcedure::stateName(p.state())), state);
         if (state == QLatin1String("succeeded"))

@@ -348,6 +348,9 @@ private Q_SLOTS:
                                 "hard_iron_sigma_ut", "soft_iron_sigma_pct", "predicted_heading_error_deg"})
             QVERIFY2(o.contains(QLatin1String(key)), key);
         QVERIFY(o.value(QStringLiteral("predicted_heading_error_deg")).isDouble());
+        // The 95 % bound beside the 68 % one, never below it.
+        QVERIFY(o.value(QStringLiteral("predicted_heading_error_95_deg")).isDouble());
+        QVERIFY(r.predictedHeadingError95Deg >= r.predictedHeadingErrorDeg);
         MagCalResult back;
         QVERIFY(MagCalResult::fromJson(QJsonDocument::fromJson(QJsonDocument(o).toJson()).object(), back));
         QCOMPARE(back.verdict, r.verdict);
@@ -355,18 +358,21 @@ private Q_SLOTS:
         QVERIFY((back.hardIron - r.hardIron).norm() < 1e-12);
         QVERIFY((back.softIron - r.softIron).norm() < 1e-12);
         QCOMPARE(back.predictedHeadingErrorDeg, r.predictedHeadingErrorDeg);
+        QCOMPARE(back.predictedHeadingError95Deg, r.predictedHeadingError95Deg);
         QCOMPARE(back.hardIronSigmaUt, r.hardIronSigmaUt);
         QCOMPARE(back.softIronSigmaPct, r.softIronSigmaPct);
         QVERIFY(!MagCalResult::fromJson(QJsonObject(), back));
 
         // A result written before the accuracy was estimated: read, the figures unknown.
         QJsonObject old = o;
-        for (const char *key : {"hard_iron_sigma_ut", "soft_iron_sigma_pct", "predicted_heading_error_deg"})
+        for (const char *key : {"hard_iron_sigma_ut", "soft_iron_sigma_pct", "predicted_heading_error_deg",
+                                "predicted_heading_error_95_deg"})
             old.remove(QLatin1String(key));
         MagCalResult fromOld;
         QVERIFY(MagCalResult::fromJson(old, fromOld));
         QCOMPARE(fromOld.verdict, r.verdict);
         QVERIFY(std::isnan(fromOld.predictedHeadingErrorDeg));
+        QVERIFY(std::isnan(fromOld.predictedHeadingError95Deg));
         QVERIFY(std::isnan(fromOld.hardIronSigmaUt));
         QVERIFY(std::isnan(fromOld.softIronSigmaPct));
         // Unknown figures go out as null and come back unknown (the hard-iron-only fit holds the soft iron).

@@ -1,7 +1,7 @@
 // RegisterTableModel: the register maps as tables, values from blocks (golden: the v1.7.1
 // 6.19 registers correctly framed, the 6.18 identity), editing only where writable and legal,
 // the reads that cover a map.
-#include "models/register_table_model.h"
+#include "itemmodels/register_table_model.h"
 #include "protocol/modbus/rtu_adu.h"
 #include "../common/test_main.h"
 

@@ -81,7 +81,7 @@ private Q_SLOTS:
         QVERIFY(!why.isEmpty());
 
         finished.clear();
-        const quint64 unknown = s.sendCommand(QStringLiteral("NO SUCH COMMAND"), 200);
+        const quint64 unknown = s.sendText(QStringLiteral("NO SUCH COMMAND"), 200);
         QTRY_VERIFY(!finished.isEmpty());
         QCOMPARE(finished.last().at(0).toULongLong(), unknown);
         const auto reply = finished.last().at(1).value<hp::AsciiReply>();

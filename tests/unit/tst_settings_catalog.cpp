@@ -32,6 +32,27 @@ double det(const model::Matrix3 &m)
     return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0])
         + m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
 }
+
+QStringList texts(const std::vector<protocol::hipnuc::Command> &commands)
+{
+    QStringList out;
+    for (const auto &c : commands)
+        out << QString::fromStdString(c.text);
+    return out;
+}
+
+QString actionText(const ActionDefinition &a, const QString &argument)
+{
+    QString error;
+    const auto c = SettingCatalog::actionCommand(a, argument, &error);
+    return c ? QString::fromStdString(c->text) : QString();
+}
+
+bool sameEffect(const protocol::hipnuc::Command &a, const protocol::hipnuc::Command &b)
+{
+    return a.effect.changesOutput == b.effect.changesOutput && a.effect.thisPort == b.effect.thisPort
+        && a.effect.message == b.effect.message && a.effect.periodS == b.effect.periodS;
+}
 } // namespace
 
 class TstSettingsCatalog : public QObject {
@@ -142,7 +163,7 @@ private Q_SLOTS:
         QString error;
         const auto cmds = SettingCatalog::commands(*SettingCatalog::find(QStringLiteral("IMU.URFR")),
                                                    QString::number(code), v166, &error);
-        QCOMPARE(cmds, QStringList{QStringLiteral("CONFIG IMU URFR ") + matrix});
+        QCOMPARE(texts(cmds), QStringList{QStringLiteral("CONFIG IMU URFR ") + matrix});
         const auto cfg = DeviceConfiguration::fromComConfig(v166, {{"URFR", matrix.toStdString()}});
         QCOMPARE(cfg.value(QStringLiteral("IMU.URFR")), std::optional<QString>(QString::number(code)));
     }
@@ -193,7 +214,10 @@ private Q_SLOTS:
         const auto v = SettingCatalog::normalize(*d, input, &id, &error);
         QVERIFY2(v, qPrintable(error));
         QCOMPARE(*v, canonical);
-        QCOMPARE(SettingCatalog::commands(*d, *v, id, &error), QStringList{command});
+        const auto cmds = SettingCatalog::commands(*d, *v, id, &error);
+        QCOMPARE(texts(cmds), QStringList{command});
+        // Built by the typed builders with the output effect the device gives the words.
+        QVERIFY(sameEffect(cmds.front(), protocol::hipnuc::commands::typed(command.toStdString())));
         // The canonical form is a fixed point.
         QCOMPARE(SettingCatalog::normalize(*d, *v, &id, &error), v);
     }
@@ -238,8 +262,42 @@ private Q_SLOTS:
         const SettingDefinition *d = SettingCatalog::find(key);
         QVERIFY(d);
         QString error;
-        QVERIFY(SettingCatalog::commands(*d, value, id, &error).isEmpty());
+        QVERIFY(SettingCatalog::commands(*d, value, id, &error).empty());
         QVERIFY(!error.isEmpty());
+    }
+
+    // Each action's command comes from its typed builder: the manual's words, and the output
+    // effect the device gives them (a reset stops the stream for a while).
+    void actionCommands_data()
+    {
+        QTest::addColumn<QString>("key");
+        QTest::addColumn<QString>("command");
+        QTest::addColumn<bool>("changesOutput");
+        QTest::newRow("ATT.RST.1") << "ATT.RST.1" << "CONFIG ATT RST 1" << false;
+        QTest::newRow("ATT.RST.2") << "ATT.RST.2" << "CONFIG ATT RST 2" << false;
+        QTest::newRow("ATT.RST.3") << "ATT.RST.3" << "CONFIG ATT RST 3" << false;
+        QTest::newRow("ATT.RST.5") << "ATT.RST.5" << "CONFIG ATT RST 5" << false;
+        QTest::newRow("SAVECONFIG") << "SAVECONFIG" << "SAVECONFIG" << false;
+        QTest::newRow("REBOOT") << "REBOOT" << "REBOOT" << true;
+        QTest::newRow("FRESET") << "FRESET" << "FRESET" << true;
+    }
+    void actionCommands()
+    {
+        QFETCH(QString, key);
+        QFETCH(QString, command);
+        QFETCH(bool, changesOutput);
+        const ActionDefinition *a = SettingCatalog::findAction(key);
+        QVERIFY(a);
+        QString error;
+        const auto c = SettingCatalog::actionCommand(*a, QString(), &error);
+        QVERIFY2(c && c->ok(), qPrintable(error));
+        QCOMPARE(QString::fromStdString(c->text), command);
+        QCOMPARE(c->effect.changesOutput, changesOutput);
+        QVERIFY(sameEffect(*c, protocol::hipnuc::commands::typed(command.toStdString())));
+        // "1" is accepted as "run it"; any other value is refused.
+        QVERIFY(SettingCatalog::actionCommand(*a, QStringLiteral("1"), &error));
+        QVERIFY(!SettingCatalog::actionCommand(*a, QStringLiteral("2"), &error));
+        QVERIFY(error.contains(key));
     }
 
     void legacyArbitraryMatrix()
@@ -249,7 +307,7 @@ private Q_SLOTS:
         QString error;
         const auto v = SettingCatalog::normalize(*d, QStringLiteral("0.6,0.8,0,-0.8,0.6,0,0,0,1"), &id, &error);
         QVERIFY2(v, qPrintable(error));
-        QCOMPARE(SettingCatalog::commands(*d, *v, id, &error),
+        QCOMPARE(texts(SettingCatalog::commands(*d, *v, id, &error)),
                  QStringList{QStringLiteral("CONFIG IMU URFR 0.6,0.8,0,-0.8,0.6,0,0,0,1")});
     }
 
@@ -266,10 +324,10 @@ private Q_SLOTS:
         QVERIFY(SettingCatalog::conditions(*SettingCatalog::findAction(QStringLiteral("ATT.RST.3"))).contains(
             QLatin1String("5 deg")));
         const auto *yaw = SettingCatalog::findAction(QStringLiteral("YAW"));
-        QCOMPARE(SettingCatalog::actionCommand(*yaw, QStringLiteral("1,16"), &error), QStringLiteral("CONFIG YAW 1 16"));
-        QCOMPARE(SettingCatalog::actionCommand(*yaw, QStringLiteral("0,1.5"), &error),
-                 QStringLiteral("CONFIG YAW 0 1.5"));
-        QVERIFY(SettingCatalog::actionCommand(*yaw, QStringLiteral("1,200"), &error).isEmpty());
+        QCOMPARE(actionText(*yaw, QStringLiteral("1,16")), QStringLiteral("CONFIG YAW 1 16"));
+        QCOMPARE(actionText(*yaw, QStringLiteral("0,1.5")), QStringLiteral("CONFIG YAW 0 1.5"));
+        QVERIFY(!SettingCatalog::actionCommand(*yaw, QStringLiteral("1,200"), &error));
+        QVERIFY(!error.isEmpty());
         QVERIFY(SettingCatalog::availability(*yaw, v166).available);
         QVERIFY(!SettingCatalog::availability(*yaw, v171).available);
     }

@@ -1,6 +1,6 @@
 // SettingsTableModel: every setting a row, unavailable rows greyed out (feature table,
 // firmware edition), pending values validated and dropped once the device holds them.
-#include "models/settings_table_model.h"
+#include "itemmodels/settings_table_model.h"
 #include "settings/setting_catalog.h"
 #include "../common/test_main.h"
 

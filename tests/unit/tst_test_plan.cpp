@@ -3,9 +3,9 @@
 // builds and loads without problems; a plan survives a save and load; every kind of bad input
 // is refused with the step and parameter named; the run folder appends attempts and refuses a
 // folder of another plan; the tidy CSV has one row per measured value.
-#include "station/run_folder.h"
-#include "station/station_result.h"
-#include "station/test_plan.h"
+#include "core/station/run_folder.h"
+#include "core/station/station_result.h"
+#include "core/station/test_plan.h"
 #include "../common/test_main.h"
 
 #include <QDir>

@@ -2,7 +2,7 @@
 // happy path, each injected fault followed by a successful second attempt, images refused
 // before erasing, cancel and resume. The bootloader's first replies are compared with the
 // golden packets of hipnuc-protocol-notes.md 3.1/3.5.
-#include "firmware/update_flow.h"
+#include "core/firmware/update_flow.h"
 #include "protocol/kboot/command.h"
 #include "protocol/kboot/packet.h"
 #include "sim/hipnuc_simulator.h"

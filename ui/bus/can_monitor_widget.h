@@ -4,7 +4,7 @@
 // export, and a line to send an arbitrary frame. Self-contained: feed it
 // CanSession::framesSeen and connect sendFrameRequested to CanSession::sendFrame.
 #include "device/can_session_types.h"
-#include "models/can_frame_monitor_model.h"
+#include "itemmodels/can_frame_monitor_model.h"
 
 #include <QWidget>
 

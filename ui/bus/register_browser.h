@@ -3,7 +3,7 @@
 // raw and scaled values (read on a clock while the dock is visible), editable where writable
 // (the session writes and reads back; the outcome shows below the table), and a raw request
 // line (function 03 or 06, address, count or value) for registers outside the map.
-#include "models/register_table_model.h"
+#include "itemmodels/register_table_model.h"
 
 #include <QDockWidget>
 #include <QPointer>

@@ -3,7 +3,7 @@
 #include "calib/mag_cal_result.h"
 #include "calibration/calibration_report.h"
 #include "calibration/mag_sphere_view.h"
-#include "models/calibration_history_model.h"
+#include "itemmodels/calibration_history_model.h"
 
 #include <QDesktopServices>
 #include <QDialogButtonBox>

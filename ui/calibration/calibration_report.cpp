@@ -3,7 +3,7 @@
 #include "calib/mag_cal_procedure.h"
 #include "calib/mag_cal_result.h"
 #include "calibration/mag_sphere_view.h"
-#include "models/calibration_history_model.h"
+#include "itemmodels/calibration_history_model.h"
 #include "reports/pdf_output.h"
 
 #include <QDir>
@@ -41,7 +41,9 @@ constexpr MetricSpec kSpecs[] = {
     {"residual_rms_ut", QT_TRANSLATE_NOOP("CalibrationReport", "Residual RMS (µT)"), 3},
     {"coverage_pct", QT_TRANSLATE_NOOP("CalibrationReport", "Sphere coverage (%)"), 0},
     {"predicted_heading_error_deg",
-     QT_TRANSLATE_NOOP("CalibrationReport", "Predicted heading error, level module (deg)"), 2},
+     QT_TRANSLATE_NOOP("CalibrationReport", "Predicted heading error, level module, 68 % bound (deg)"), 2},
+    {"predicted_heading_error_95_deg",
+     QT_TRANSLATE_NOOP("CalibrationReport", "Predicted heading error, level module, 95 % bound (deg)"), 2},
     {"hard_iron_sigma_ut", QT_TRANSLATE_NOOP("CalibrationReport", "Hard-iron uncertainty, RMS (µT)"), 3},
     {"soft_iron_sigma_pct", QT_TRANSLATE_NOOP("CalibrationReport", "Soft-iron uncertainty, RMS (%)"), 2},
     {"eigen_ratio", QT_TRANSLATE_NOOP("CalibrationReport", "Eigenvalue ratio (max/min)"), 2},

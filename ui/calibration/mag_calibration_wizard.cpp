@@ -2,6 +2,7 @@
 
 #include "calib/mag_calibrator.h"
 #include "device/device_session.h"
+#include "settings/setting_catalog.h"
 #include "calibration/mag_sphere_view.h"
 #include "workspace/work_place_size.h"
 
@@ -42,6 +43,42 @@ QString accuracyFigure(double v, int decimals)
     return QString::number(v, 'f', decimals);
 }
 
+// A page that shows the field live: a sphere of the samples on the left, a verdict line and a
+// table of figures on the right (objectName prefix + "Verdict" / "Figures"; the rotation page
+// keeps its old names "liveVerdict" / "liveFigures").
+struct LivePage {
+    QWizardPage *page;
+    MagSphereView *sphere;
+    QVBoxLayout *side;
+    QLabel *verdict;
+    QLabel *figures;
+};
+LivePage livePage(const QString &title, const QString &subtitle, const QString &name, int sphereSize,
+                  const QString &figuresTip)
+{
+    LivePage p{};
+    p.page = new QWizardPage;
+    p.page->setTitle(title);
+    p.page->setSubTitle(subtitle);
+    auto *row = new QHBoxLayout(p.page);
+    p.sphere = new MagSphereView;
+    p.sphere->setObjectName(name + QStringLiteral("Sphere"));
+    p.sphere->setMinimumSize(sphereSize, sphereSize);
+    row->addWidget(p.sphere, 3);
+    p.side = new QVBoxLayout;
+    p.verdict = new QLabel;
+    p.verdict->setObjectName(name + QStringLiteral("Verdict"));
+    p.verdict->setWordWrap(true);
+    p.figures = new QLabel;
+    p.figures->setObjectName(name + QStringLiteral("Figures"));
+    p.figures->setTextFormat(Qt::RichText);
+    p.figures->setToolTip(figuresTip);
+    p.side->addWidget(p.verdict);
+    p.side->addWidget(p.figures);
+    row->addLayout(p.side, 2);
+    return p;
+}
+
 QWizardPage *textPage(const QString &title, const QString &text)
 {
     auto *page = new QWizardPage;
@@ -64,15 +101,21 @@ MagCalibrationWizard::MagCalibrationWizard(device::DeviceSession &session, const
       m_config(session)
 {
     setWindowTitle(tr("Magnetometer calibration"));
-    setPage(IntroPage,
-            textPage(tr("Before you start"),
-                     tr("Calibrate the magnetometer when you use the 9-axis (AHRS) mode, where the heading follows "
-                        "magnetic north. Without a magnetometer calibration, or where the field is disturbed, use the "
-                        "6-axis mode instead.\n\nBest: outdoors in an open space, more than 5 m from buildings and "
-                        "vehicles. Acceptable: indoors, more than 30 cm from iron furniture, monitors, motors, "
-                        "transformers, chargers and phones.\n\nIf the module is mounted on a PCB, in a housing or on "
-                        "a robot, calibrate it together with them, as one rigid body: calibrating the module alone "
-                        "does not help once it is mounted.")));
+    auto *intro = textPage(tr("Before you start"),
+                           tr("Calibrate the magnetometer when you use the 9-axis (AHRS) mode, where the heading follows "
+                              "magnetic north. Without a magnetometer calibration, or where the field is disturbed, use "
+                              "the 6-axis mode instead.\n\nBest: outdoors in an open space, more than 5 m from "
+                              "buildings and vehicles. Acceptable: indoors, more than 30 cm from iron furniture, "
+                              "monitors, motors, transformers, chargers and phones.\n\nIf the module is mounted on a "
+                              "PCB, in a housing or on a robot, calibrate it together with them, as one rigid body: "
+                              "calibrating the module alone does not help once it is mounted."));
+    // What the wizard will ask for, and which of the module's own calibrations its firmware has.
+    auto *steps = new QLabel(stepsText());
+    steps->setObjectName(QStringLiteral("introSteps"));
+    steps->setTextFormat(Qt::RichText);
+    steps->setWordWrap(true);
+    static_cast<QVBoxLayout *>(intro->layout())->insertWidget(1, steps);
+    setPage(IntroPage, intro);
 
     auto *mode = textPage(tr("Working mode"),
                           tr("The calibration needs the 9-axis (AHRS) mode, CONFIG ATT MODE 1 (the factory "
@@ -88,9 +131,16 @@ MagCalibrationWizard::MagCalibrationWizard(device::DeviceSession &session, const
     switchRow->addWidget(m_switchMode);
     switchRow->addStretch();
     // Below the explanation: what the module runs now, and the switch when it is needed.
+    // The modes the module can run in, the one it runs now marked once it is read.
+    m_modeTable = new QLabel;
+    m_modeTable->setObjectName(QStringLiteral("modeTable"));
+    m_modeTable->setTextFormat(Qt::RichText);
+    m_modeTable->setWordWrap(true);
+    m_modeTable->setText(modeTableText());
     auto *modeLayout = static_cast<QVBoxLayout *>(mode->layout());
     modeLayout->insertWidget(1, m_modeStatus);
     modeLayout->insertLayout(2, switchRow);
+    modeLayout->insertWidget(3, m_modeTable);
     connect(m_switchMode, &QPushButton::clicked, this, &MagCalibrationWizard::switchToAhrs);
     connect(&m_config, &settings::ConfigurationController::readFinished, this, &MagCalibrationWizard::showMode);
     connect(&m_config, &settings::ConfigurationController::applyFinished, this,
@@ -100,9 +150,10 @@ MagCalibrationWizard::MagCalibrationWizard(device::DeviceSession &session, const
                 if (!report.ok) {
                     m_switching = false;
                     m_switchMode->setEnabled(true);
-                    m_modeStatus->setText(tr("The module did not take ATT MODE 1 (%1). Check the connection and "
-                                             "try again.")
-                                              .arg(report.error.isEmpty() ? tr("read back differs") : report.error));
+                    setVerdictHeadline(m_modeStatus, calib::MagVerdict::Fail,
+                                       tr("The module did not take ATT MODE 1 (%1). Check the connection and try "
+                                          "again.")
+                                           .arg(report.error.isEmpty() ? tr("read back differs") : report.error));
                     return;
                 }
                 m_modeStatus->setText(tr("ATT MODE 1 set; saving it (SAVECONFIG)…"));
@@ -115,9 +166,10 @@ MagCalibrationWizard::MagCalibrationWizard(device::DeviceSession &session, const
                 if (!ok) {
                     m_switching = false;
                     m_switchMode->setEnabled(true);
-                    m_modeStatus->setText(tr("%1 failed: %2. Try again, or save and restart from the "
-                                             "Configuration panel.")
-                                              .arg(key, detail));
+                    setVerdictHeadline(m_modeStatus, calib::MagVerdict::Fail,
+                                       tr("%1 failed: %2. Try again, or save and restart from the Configuration "
+                                          "panel.")
+                                           .arg(key, detail));
                     return;
                 }
                 if (key == QLatin1String("SAVECONFIG")) {
@@ -131,36 +183,37 @@ MagCalibrationWizard::MagCalibrationWizard(device::DeviceSession &session, const
             });
     setPage(ModePage, mode);
 
-    auto *env = textPage(tr("Environment check"),
-                         tr("Hold the module at the calibration spot and turn it to a few orientations. The field must "
-                            "be 20-60 µT and vary by no more than 10 µT between orientations."));
-    m_envStatus = new QLabel;
-    m_envStatus->setWordWrap(true);
-    env->layout()->addWidget(m_envStatus);
-    setPage(EnvironmentPage, env);
+    // The spot, judged live from the field as the user turns the module: the raw samples on a
+    // sphere, the verdict, and the figures it comes from (the module's own iron fitted out first).
+    const LivePage env = livePage(
+        tr("Environment check"),
+        tr("At the calibration spot, turn the module slowly through many orientations. The module's own iron is taken "
+           "out of the field first; what is left must be the Earth's field (20-65 µT), the same in every orientation "
+           "(within 10 µT), and steady while the module is still."),
+        QStringLiteral("environment"), 300,
+        tr("Raw |B|: the field strength as measured, the module's own iron included. Field at the spot: the strength "
+           "once that iron is fitted out. Spread: how much it differs between orientations (5th to 95th percentile). "
+           "Change while still: |B| drift while the gyro shows no turn."));
+    m_envSphere = env.sphere;
+    m_envSphere->setToolTip(tr("The raw field as it comes from the module (µT), one dot per sample"));
+    m_envStatus = env.verdict;
+    m_envFigures = env.figures;
+    env.side->addStretch();
+    setPage(EnvironmentPage, env.page);
 
-    auto *rot = new QWizardPage;
-    rot->setTitle(tr("Turn the module"));
-    rot->setSubTitle(tr("Keep it in place and turn it slowly (20-100 deg/s) at least one full turn about each axis, "
-                        "until the sphere is green all over. Usually 30-60 s."));
-    auto *rl = new QHBoxLayout(rot);
-    m_sphere = new MagSphereView;
-    m_sphere->setMinimumSize(360, 360);
-    rl->addWidget(m_sphere, 3);
-    auto *side = new QVBoxLayout;
     // The live figures that decide the verdict, as the user turns the module.
-    m_liveVerdict = new QLabel;
-    m_liveVerdict->setObjectName(QStringLiteral("liveVerdict"));
-    m_liveVerdict->setWordWrap(true);
-    m_figures = new QLabel;
-    m_figures->setObjectName(QStringLiteral("liveFigures"));
-    m_figures->setTextFormat(Qt::RichText);
-    m_figures->setToolTip(tr("Coverage: share of the 80 sphere cells the field has pointed into. Largest gap: "
-                             "radius of the biggest uncovered area. Raw |B|: the field strength before calibration "
-                             "(its spread is the iron the fit removes). Fit: the field and the residual of "
-                             "ImuDesk's fit on the samples so far, refreshed every second."));
-    side->addWidget(m_liveVerdict);
-    side->addWidget(m_figures);
+    const LivePage rot = livePage(
+        tr("Turn the module"),
+        tr("Keep it in place and turn it slowly (20-100 deg/s) at least one full turn about each axis, until the "
+           "sphere is green all over. Usually 30-60 s."),
+        QStringLiteral("live"), 360,
+        tr("Coverage: share of the 80 sphere cells the field has pointed into. Largest gap: radius of the biggest "
+           "uncovered area. Raw |B|: the field strength before calibration (its spread is the iron the fit removes). "
+           "Fit: the field and the residual of ImuDesk's fit on the samples so far, refreshed every second."));
+    m_sphere = rot.sphere;
+    m_liveVerdict = rot.verdict;
+    m_figures = rot.figures;
+    QVBoxLayout *side = rot.side;
     side->addSpacing(12);
     m_startDevice = new QPushButton(tr("Start the device's calibration"));
     m_deviceProgress = new QProgressBar;
@@ -174,8 +227,7 @@ MagCalibrationWizard::MagCalibrationWizard(device::DeviceSession &session, const
     side->addSpacing(12);
     side->addWidget(m_fit);
     side->addStretch();
-    rl->addLayout(side, 2);
-    setPage(RotationPage, rot);
+    setPage(RotationPage, rot.page);
 
     auto *res = new QWizardPage;
     res->setTitle(tr("Result"));
@@ -242,6 +294,7 @@ void MagCalibrationWizard::readMode()
         return;
     m_attMode.clear();
     m_switchMode->hide();
+    m_modeStatus->setStyleSheet(QString());
     m_modeStatus->setText(tr("Reading the working mode from the module (LOG COMCONFIG)…"));
     m_config.readAll();
 }
@@ -249,20 +302,24 @@ void MagCalibrationWizard::readMode()
 void MagCalibrationWizard::showMode(bool ok, const QString &error)
 {
     if (!ok) {
-        m_modeStatus->setText(tr("The working mode could not be read: %1. Check the connection, then press Back and "
-                                 "Next to read it again, or switch to the 9-axis mode anyway.")
-                                  .arg(error));
+        setVerdictHeadline(m_modeStatus, calib::MagVerdict::Fail,
+                           tr("The working mode could not be read: %1. Check the connection, then press Back and "
+                              "Next to read it again, or switch to the 9-axis mode anyway.")
+                               .arg(error));
         m_switchMode->show();
         m_switchMode->setEnabled(true);
         return;
     }
     m_attMode = m_config.configuration().value(QStringLiteral("ATT.MODE")).value_or(QString());
+    m_modeTable->setText(modeTableText());
     if (m_attMode == QLatin1String("1")) {
-        m_modeStatus->setText(tr("The module runs in the 9-axis (AHRS) mode, ATT MODE 1: nothing to change. Press "
-                                 "Next."));
+        setVerdictHeadline(m_modeStatus, calib::MagVerdict::Pass,
+                           tr("The module runs in the 9-axis (AHRS) mode, ATT MODE 1: nothing to change. Press "
+                              "Next."));
         m_switchMode->hide();
     } else {
-        m_modeStatus->setText(
+        setVerdictHeadline(
+            m_modeStatus, calib::MagVerdict::Warn,
             tr("The module runs in a 6-axis mode (ATT MODE %1): its heading ignores the magnetometer. Switch to the "
                "9-axis mode before you calibrate.")
                 .arg(m_attMode.isEmpty() ? tr("not reported") : m_attMode));
@@ -291,6 +348,79 @@ void MagCalibrationWizard::liveFit()
     m_figures->setText(liveFiguresText());
 }
 
+QString MagCalibrationWizard::stepsText() const
+{
+    const bool mcal = calib::MagCalProcedure::flowFor(m_firmware) == calib::MagCalProcedure::Flow::Mcal;
+    QString rows;
+    const auto step = [&rows](int n, const QString &what, const QString &detail) {
+        rows += QStringLiteral("<tr><td valign=top><b>%1.</b></td><td valign=top><b>%2</b></td><td>%3</td></tr>")
+                    .arg(n)
+                    .arg(what, detail);
+    };
+    step(1, tr("Working mode"), tr("read from the module; a switch to 9-axis is offered when needed"));
+    step(2, tr("Environment check"), tr("turn the module at the spot: the field is judged with its own iron taken out"));
+    step(3, tr("Turn the module"),
+         tr("slowly about every axis until the sphere is covered, usually 30-60 s; %1")
+             .arg(mcal ? tr("the module calibrates itself at the same time (CONFIG MCAL, firmware %1)")
+                             .arg(QString::fromStdString(m_firmware.toString()))
+                       : tr("firmware %1 calibrates in the background in 9-axis mode")
+                             .arg(QString::fromStdString(m_firmware.toString()))));
+    step(4, tr("Result"), tr("ImuDesk's fit and the module's own verdict, side by side; saved with the samples"));
+    step(5, tr("Heading check"), tr("one level turn: the heading must follow without jumps"));
+    return QStringLiteral("<table cellspacing=6>") + rows + QStringLiteral("</table>");
+}
+
+QString MagCalibrationWizard::modeTableText() const
+{
+    const settings::SettingDefinition *d = settings::SettingCatalog::find(QStringLiteral("ATT.MODE"));
+    if (!d)
+        return {};
+    QString rows;
+    const std::pair<const char *, QString> modes[] = {
+        {"0", tr("heading from the gyro alone: it drifts, the magnetometer is not used")},
+        {"1", tr("heading follows magnetic north: needs this calibration")},
+        {"4", tr("6-axis, for legged robots (firmware 1.7.x)")},
+    };
+    for (const auto &[value, meaning] : modes) {
+        const bool current = m_attMode == QLatin1String(value);
+        const QString name = settings::SettingCatalog::valueText(*d, QLatin1String(value));
+        rows += QStringLiteral("<tr><td>%1</td><td>%2</td><td>%3</td></tr>")
+                    .arg(current ? QStringLiteral("<b>%1</b>").arg(name.toHtmlEscaped()) : name.toHtmlEscaped(),
+                         meaning.toHtmlEscaped(), current ? tr("◀ the module") : QString());
+    }
+    return QStringLiteral("<table cellspacing=6><tr><th align=left>%1</th><th align=left>%2</th><th></th></tr>")
+               .arg(tr("ATT MODE"), tr("Heading"))
+        + rows + QStringLiteral("</table>");
+}
+
+void MagCalibrationWizard::showEnvironment()
+{
+    using S = calib::MagEnvironmentJudge::Status;
+    const S status = m_env.status();
+    const calib::MagVerdict shade = status == S::Ok ? calib::MagVerdict::Pass
+        : status == S::TurnMore                     ? calib::MagVerdict::Warn
+                                                    : calib::MagVerdict::Fail;
+    setVerdictHeadline(m_envStatus, shade, m_env.advice());
+    m_envFigures->setText(environmentFiguresText());
+}
+
+QString MagCalibrationWizard::environmentFiguresText() const
+{
+    const auto row = [](const QString &name, const QString &value, const QString &unit) {
+        return QStringLiteral("<tr><td>%1</td><td align=right><b>%2</b></td><td>%3</td></tr>").arg(name, value, unit);
+    };
+    const auto uT = [](std::optional<double> v) { return v ? QString::number(*v, 'f', 1) : QStringLiteral("–"); };
+    QString rows = row(tr("Raw |B| now"), m_env.count() ? uT(m_env.rawFieldUt()) : QStringLiteral("–"), tr("µT"));
+    rows += row(tr("Field at the spot"), uT(m_env.fittedFieldUt()), tr("µT (Earth: 20–65)"));
+    rows += row(tr("Module's own iron"), uT(m_env.moduleIronUt()), tr("µT, removed by the calibration"));
+    rows += row(tr("Spread"), m_env.ellipsoid() ? uT(m_env.spreadUt()) : QStringLiteral("–"),
+                tr("µT between orientations (≤ 10)"));
+    rows += row(tr("Change while still"), m_env.stillChangeUt() > 0 ? uT(m_env.stillChangeUt()) : QStringLiteral("–"),
+                tr("µT (≤ 3)"));
+    rows += row(tr("Directions"), QString::number(m_env.coveragePercent(), 'f', 0), tr("% of the sphere"));
+    return QStringLiteral("<table cellspacing=4>") + rows + QStringLiteral("</table>");
+}
+
 QString MagCalibrationWizard::liveFiguresText() const
 {
     if (m_showingRun) {
@@ -308,8 +438,9 @@ QString MagCalibrationWizard::liveFiguresText() const
                         .arg(r.residualRmsUt, 0, 'f', 2)
                         .arg(r.fitErrorPct, 0, 'f', 2);
         if (!std::isnan(r.predictedHeadingErrorDeg))
-            rows += tr("<tr><td>Predicted heading error</td><td align=right><b>%1°</b></td><td>level module</td></tr>")
-                        .arg(accuracyFigure(r.predictedHeadingErrorDeg, 2));
+            rows += tr("<tr><td>Predicted heading error</td><td align=right><b>%1°</b></td><td>level module, 68 %; "
+                       "95 %: %2°</td></tr>")
+                        .arg(accuracyFigure(r.predictedHeadingErrorDeg, 2), accuracyFigure(r.predictedHeadingError95Deg, 2));
         rows += tr("<tr><td>Samples</td><td align=right><b>%1</b></td><td></td></tr>").arg(r.samples);
         return QStringLiteral("<table cellspacing=4>") + rows + QStringLiteral("</table>");
     }
@@ -331,11 +462,12 @@ QString MagCalibrationWizard::liveFiguresText() const
                     .arg(m_live.residualRmsUt, 0, 'f', 2)
                     .arg(m_live.fitErrorPct, 0, 'f', 1);
     if (m_haveLive && !std::isnan(m_live.predictedHeadingErrorDeg))
-        rows += tr("<tr><td>Predicted heading error</td><td align=right><b>%1°</b></td><td>level (pass &lt; %2°, "
-                   "refused &gt; %3°)</td></tr>")
+        rows += tr("<tr><td>Predicted heading error</td><td align=right><b>%1°</b></td><td>level, 68 % (95 %: %4°; "
+                   "pass &lt; %2°, refused &gt; %3°)</td></tr>")
                     .arg(accuracyFigure(m_live.predictedHeadingErrorDeg, 2))
                     .arg(calib::MagCalibrator::kWarnHeadingErrorDeg, 0, 'f', 1)
-                    .arg(calib::MagCalibrator::kRefuseHeadingErrorDeg, 0, 'f', 0);
+                    .arg(calib::MagCalibrator::kRefuseHeadingErrorDeg, 0, 'f', 0)
+                    .arg(accuracyFigure(m_live.predictedHeadingError95Deg, 2));
     rows += tr("<tr><td>Samples</td><td align=right><b>%1</b></td><td></td></tr>").arg(m_samples.size());
     return QStringLiteral("<table cellspacing=4>") + rows + QStringLiteral("</table>");
 }
@@ -352,8 +484,11 @@ void MagCalibrationWizard::switchToAhrs()
 
 void MagCalibrationWizard::pageChanged(int id)
 {
-    if (id == EnvironmentPage)
+    if (id == EnvironmentPage) {
         m_env.reset();
+        m_envSphere->clear();
+        showEnvironment();
+    }
     if (id == ModePage)
         readMode();
     if (id == RotationPage) {
@@ -413,8 +548,12 @@ void MagCalibrationWizard::refresh()
     for (const auto &s : samples) {
         if (s.fields & model::FieldMag) {
             const Eigen::Vector3d m(s.mag.x, s.mag.y, s.mag.z);
-            if (page == EnvironmentPage)
-                m_env.add(m);
+            if (page == EnvironmentPage) {
+                m_env.add(s.deviceTimeMs, m,
+                          s.has(model::FieldGyr) ? std::optional<Eigen::Vector3d>({s.gyr.x, s.gyr.y, s.gyr.z})
+                                                 : std::nullopt);
+                m_envSphere->addSample(m);
+            }
             if (page == RotationPage && m_collecting && m_samples.size() < kMaxSamples) {
                 if (m_showingRun) // turning on after a refused fit: back to the live figures
                     showRunOnRotationPage(false);
@@ -441,7 +580,7 @@ void MagCalibrationWizard::refresh()
         }
     }
     if (page == EnvironmentPage)
-        m_envStatus->setText(m_env.advice());
+        showEnvironment();
     if (page == RotationPage && added)
         m_figures->setText(liveFiguresText());
     if (page == HeadingPage)
@@ -615,9 +754,11 @@ QString MagCalibrationWizard::resultText() const
                   .arg(calib::MagCalibrator::kWarnHeadingErrorDeg, 0, 'f', 1)
                   .arg(calib::MagCalibrator::kRefuseHeadingErrorDeg, 0, 'f', 0)
             : tr("level module; a warning above %1°").arg(calib::MagCalibrator::kWarnHeadingErrorDeg, 0, 'f', 1);
-        text += tr("Predicted heading error: %1° (%2)\nHard-iron uncertainty: +-%3 µT\nSoft-iron uncertainty: +-%4 %\n")
+        text += tr("Predicted heading error: %1° in 68 % of cases, %5° in 95 % (%2)\nHard-iron uncertainty: +-%3 µT\n"
+                   "Soft-iron uncertainty: +-%4 %\n")
                     .arg(accuracyFigure(r.predictedHeadingErrorDeg, 2), limits, accuracyFigure(r.hardIronSigmaUt, 2),
-                         std::isnan(r.softIronSigmaPct) ? tr("kept from before") : accuracyFigure(r.softIronSigmaPct, 2));
+                         std::isnan(r.softIronSigmaPct) ? tr("kept from before") : accuracyFigure(r.softIronSigmaPct, 2),
+                         accuracyFigure(r.predictedHeadingError95Deg, 2));
     }
     // Too few samples for a covariance: the ratio means nothing, a dash says so.
     text += tr("Coverage: %1 %\nEigenvalue ratio: %2\nSamples: %3")

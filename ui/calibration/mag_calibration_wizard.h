@@ -32,7 +32,7 @@
 // dialog lists runs through models::CalibrationHistoryModel in a QTableView.
 #include "calib/mag_cal_result.h"
 #include "calib/mag_cal_session.h"
-#include "calib/mag_environment_check.h"
+#include "calib/mag_environment_judge.h"
 #include "calibration/calibration_run_saver.h"
 #include "model/device_identity.h"
 #include "settings/configuration_controller.h"
@@ -80,7 +80,11 @@ public:
     // The verdict as a headline: its text, and pass/warn/fail colour by object name.
     QLabel *verdictHeadline() const { return m_verdict; }
     const calib::MagCalSession &deviceCalibration() const { return m_device; }
-    const calib::MagEnvironmentCheck &environment() const { return m_env; }
+    // The environment page's judge of the spot (the module's iron fitted out first).
+    const calib::MagEnvironmentJudge &environment() const { return m_env; }
+    // The environment page's live figures and its verdict line.
+    QString environmentFiguresText() const;
+    QLabel *environmentVerdict() const { return m_envStatus; }
     const calib::MagCalResult &result() const { return m_result; }
     bool fitted() const { return m_fitted; }
     // The samples ImuDesk's fit takes: raw ones only, collected on the rotation page.
@@ -109,6 +113,9 @@ private:
     void readMode();
     void showMode(bool ok, const QString &error);
     void liveFit();
+    void showEnvironment();
+    QString stepsText() const;
+    QString modeTableText() const;
     void pageChanged(int id);
     void saveRun();
     void showDeviceVerdict();
@@ -120,7 +127,7 @@ private:
     device::DeviceSession &m_session;
     model::FirmwareVersion m_firmware;
     calib::MagCalSession m_device;
-    calib::MagEnvironmentCheck m_env;
+    calib::MagEnvironmentJudge m_env;
     calib::MagCalResult m_result;
     bool m_fitted = false;
     bool m_collecting = true;
@@ -139,6 +146,8 @@ private:
     MagSphereView *m_sphere = nullptr;
     MagSphereView *m_after = nullptr;
     QLabel *m_envStatus = nullptr;
+    QLabel *m_envFigures = nullptr;
+    MagSphereView *m_envSphere = nullptr;
     QLabel *m_deviceStatus = nullptr;
     QProgressBar *m_deviceProgress = nullptr;
     QPushButton *m_startDevice = nullptr;
@@ -146,6 +155,7 @@ private:
     QLabel *m_resultLabel = nullptr;
     QLabel *m_verdict = nullptr;
     QLabel *m_modeStatus = nullptr;
+    QLabel *m_modeTable = nullptr;
     QPushButton *m_switchMode = nullptr;
     settings::ConfigurationController m_config;
     QString m_attMode;

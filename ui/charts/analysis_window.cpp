@@ -49,39 +49,35 @@ AnalysisWindow::AnalysisWindow(QWidget *parent) : QWidget(parent)
     layout->addWidget(split, 1);
 }
 
-AnalysisWindow::~AnalysisWindow()
-{
-    if (m_thread) {
-        m_cancel = true;
-        m_thread->wait();
-    }
-}
+AnalysisWindow::~AnalysisWindow() = default; // m_job cancels and joins a running analysis
 
 void AnalysisWindow::analyzeFile(const QString &path, double tauMax)
 {
-    if (m_thread)
+    if (m_job.isRunning())
         return;
-    m_cancel = false;
     m_summary->setText(tr("Analysing %1…").arg(path));
-    auto outcome = std::make_shared<record::FileAnalysis::Outcome>();
-    m_thread = QThread::create([this, outcome, path, tauMax] {
-        *outcome = record::FileAnalysis::run(path, {}, tauMax, [this](double) { return !m_cancel.load(); });
+    m_job.launch(QStringLiteral("imudesk-analysis"), [this, path, tauMax](const jobs::BackgroundJob::Context &job) {
+        auto outcome = std::make_shared<record::FileAnalysis::Outcome>(
+            record::FileAnalysis::run(path, {}, tauMax, [&job](double f) {
+                job.setProgress(f);
+                return !job.cancelled();
+            }));
+        jobs::BackgroundJob::Outcome done{outcome->ok, outcome->error, {}};
+        // In the window's thread, after the worker has ended.
+        done.apply = [this, outcome] {
+            if (!outcome->ok) {
+                m_summary->setText(outcome->error);
+                Q_EMIT analysisFinished(false, outcome->error);
+                return;
+            }
+            setResult(outcome->result);
+            const QString warnings = outcome->warnings.join(QLatin1Char('\n'));
+            if (!warnings.isEmpty())
+                m_summary->setText(m_summary->text() + QLatin1Char('\n') + warnings);
+            Q_EMIT analysisFinished(true, warnings);
+        };
+        return done;
     });
-    connect(m_thread, &QThread::finished, this, [this, outcome] {
-        m_thread->deleteLater();
-        m_thread = nullptr;
-        if (!outcome->ok) {
-            m_summary->setText(outcome->error);
-            Q_EMIT analysisFinished(false, outcome->error);
-            return;
-        }
-        setResult(outcome->result);
-        const QString warnings = outcome->warnings.join(QLatin1Char('\n'));
-        if (!warnings.isEmpty())
-            m_summary->setText(m_summary->text() + QLatin1Char('\n') + warnings);
-        Q_EMIT analysisFinished(true, warnings);
-    });
-    m_thread->start();
 }
 
 QString AnalysisWindow::summaryText() const

@@ -2,17 +2,16 @@
 // The analysis of a recording (a capture or a vendor CSV): a table of per-channel
 // statistics, a summary (output rate, jitter, frames lost, random walk, bias instability,
 // recommended recording length), a histogram of frame intervals and the Allan deviation of
-// the gyro and accelerometer axes on log-log axes. analyzeFile() works in a worker thread.
+// the gyro and accelerometer axes on log-log axes. analyzeFile() runs as a
+// jobs::BackgroundJob; closing the window cancels it.
+#include "jobs/background_job.h"
 #include "record/sample_analyzer.h"
 
 #include <QWidget>
 
-#include <atomic>
-
 class QChart;
 class QLabel;
 class QTableWidget;
-class QThread;
 
 namespace imudesk::ui {
 
@@ -41,8 +40,7 @@ private:
     QLabel *m_summary = nullptr;
     QChart *m_histogram = nullptr;
     QChart *m_allan = nullptr;
-    QThread *m_thread = nullptr;
-    std::atomic<bool> m_cancel{false};
+    jobs::BackgroundJob m_job; // last: cancelled and joined before the rest goes
 };
 
 } // namespace imudesk::ui

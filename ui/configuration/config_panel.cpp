@@ -1,7 +1,7 @@
 #include "configuration/config_panel.h"
 
 #include "device/device_session.h"
-#include "models/settings_table_model.h"
+#include "itemmodels/settings_table_model.h"
 #include "configuration/mounting_picker.h"
 #include "settings/bandwidth_calculator.h"
 #include "settings/setting_catalog.h"
@@ -310,7 +310,7 @@ void ConfigPanel::updatePending()
     const auto plan = m_controller->plan(changes);
     QStringList lines;
     for (const auto &c : plan.commands)
-        lines << QStringLiteral("> ") + c.command;
+        lines << QStringLiteral("> ") + QString::fromStdString(c.command.text);
     for (const auto &e : plan.errors)
         lines << tr("! %1").arg(e);
     m_pending->setPlainText(changes.empty() ? tr("No pending changes.") : lines.join(QLatin1Char('\n')));

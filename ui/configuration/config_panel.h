@@ -15,7 +15,7 @@
 // HEC495 panel talks to its Hec495Session directly, without an item model.
 #include "settings/configuration_controller.h"
 
-#include "models/settings_table_model.h"
+#include "itemmodels/settings_table_model.h"
 
 #include <QWidget>
 

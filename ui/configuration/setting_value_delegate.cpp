@@ -1,6 +1,6 @@
 #include "configuration/setting_value_delegate.h"
 
-#include "models/settings_table_model.h"
+#include "itemmodels/settings_table_model.h"
 
 #include <QAbstractItemView>
 #include <QComboBox>

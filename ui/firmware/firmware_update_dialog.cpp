@@ -1,7 +1,7 @@
-#include "firmware/firmware_update_dialog.h"
+#include "ui/firmware/firmware_update_dialog.h"
 
-#include "firmware/can_firmware_updater.h"
-#include "firmware/firmware_updater.h"
+#include "core/firmware/can_firmware_updater.h"
+#include "core/firmware/firmware_updater.h"
 #include "protocol/ihex/intel_hex_loader.h"
 #include "protocol/ihex/intel_hex_writer.h"
 #include "sim/kboot_bootloader.h"

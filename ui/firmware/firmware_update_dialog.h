@@ -11,8 +11,8 @@
 // runs in its state machines (UpdateFlow: KBOOT over the serial port; CanUpdateFlow: CANopen
 // SDO over a CAN bus), each on the worker thread of a FirmwareUpdater or CanFirmwareUpdater;
 // the dialog shows their progress and log. No item models.
-#include "firmware/can_update_flow.h"
-#include "firmware/update_flow.h"
+#include "core/firmware/can_update_flow.h"
+#include "core/firmware/update_flow.h"
 #include "model/device_identity.h"
 
 #include <QDialog>

@@ -81,23 +81,18 @@ ExportDialog::ExportDialog(const QString &capturePath, QWidget *parent) : QDialo
     connect(m_format, &QComboBox::currentIndexChanged, this, &ExportDialog::suggestOutput);
     connect(m_export, &QPushButton::clicked, this, &ExportDialog::startExport);
     connect(m_cancel, &QPushButton::clicked, this, [this] {
-        if (m_thread)
+        if (m_job.isRunning())
             cancelExport();
         else
             reject();
     });
+    connect(&m_job, &jobs::BackgroundJob::finished, this, &ExportDialog::onFinished);
     m_poll.setInterval(100);
     connect(&m_poll, &QTimer::timeout, this, &ExportDialog::pollProgress);
     setCapture(capturePath);
 }
 
-ExportDialog::~ExportDialog()
-{
-    if (m_thread) {
-        m_cancelRequested = true;
-        m_thread->wait();
-    }
-}
+ExportDialog::~ExportDialog() = default; // m_job cancels and joins a running export
 
 void ExportDialog::setCapture(const QString &path)
 {
@@ -142,7 +137,7 @@ void ExportDialog::suggestOutput()
 
 void ExportDialog::startExport()
 {
-    if (m_thread)
+    if (m_job.isRunning())
         return;
     m_capture = m_captureEdit->text(); // typed, and Export pressed without leaving the field
     record::CaptureExporter::Options o;
@@ -151,40 +146,38 @@ void ExportDialog::startExport()
     o.fromS = m_from->value();
     if (m_to->value() >= 0)
         o.toS = m_to->value();
-    m_permille = 0;
-    m_cancelRequested = false;
     m_progress->setValue(0);
     m_status->setText(tr("Exporting…"));
     m_export->setEnabled(false);
     m_captureEdit->setEnabled(false);
     m_chooseCapture->setEnabled(false);
     const QString capture = m_capture;
-    m_thread = QThread::create([this, capture, o] {
-        m_result = record::CaptureExporter::run(capture, o, [this](double f) {
-            m_permille = int(f * 1000);
-            return !m_cancelRequested.load();
+    m_job.launch(QStringLiteral("imudesk-export"), [this, capture, o](const jobs::BackgroundJob::Context &job) {
+        auto result = record::CaptureExporter::run(capture, o, [&job](double f) {
+            job.setProgress(f);
+            return !job.cancelled();
         });
+        jobs::BackgroundJob::Outcome outcome{result.ok, result.error, {}};
+        // Stored in the dialog's thread, after the worker has ended.
+        outcome.apply = [this, result = std::move(result)] { m_result = result; };
+        return outcome;
     });
-    connect(m_thread, &QThread::finished, this, &ExportDialog::onFinished);
-    m_thread->start();
     m_poll.start();
 }
 
 void ExportDialog::cancelExport()
 {
-    m_cancelRequested = true;
+    m_job.cancel();
 }
 
 void ExportDialog::pollProgress()
 {
-    m_progress->setValue(m_permille.load());
+    m_progress->setValue(int(m_job.progress() * 1000));
 }
 
 void ExportDialog::onFinished()
 {
     m_poll.stop();
-    m_thread->deleteLater();
-    m_thread = nullptr;
     m_export->setEnabled(true);
     m_captureEdit->setEnabled(true);
     m_chooseCapture->setEnabled(true);

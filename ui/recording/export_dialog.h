@@ -1,15 +1,14 @@
 #pragma once
 // Export of a capture: the capture (given, e.g. the recording just made; Choose… picks
 // another), format (vendor CSV, tidy CSV, JSON Lines), output file, time range, a progress
-// bar and cancel. The export runs in a worker thread (CaptureExporter streams,
-// so memory stays flat); the dialog stays responsive and Cancel stops it and removes the
+// bar and cancel. The export runs as a jobs::BackgroundJob (CaptureExporter streams, so
+// memory stays flat); the dialog stays responsive and Cancel stops it and removes the
 // partial files.
+#include "jobs/background_job.h"
 #include "record/capture_exporter.h"
 
 #include <QDialog>
 #include <QTimer>
-
-#include <atomic>
 
 class QComboBox;
 class QDoubleSpinBox;
@@ -17,7 +16,6 @@ class QLabel;
 class QLineEdit;
 class QProgressBar;
 class QPushButton;
-class QThread;
 
 namespace imudesk::ui {
 
@@ -34,7 +32,7 @@ public:
     void setOutput(const QString &path);
     // to < 0: until the end.
     void setRange(double fromS, double toS);
-    bool isRunning() const { return m_thread != nullptr; }
+    bool isRunning() const { return m_job.isRunning(); }
     const record::CaptureExporter::Result &lastResult() const { return m_result; }
 
 public Q_SLOTS:
@@ -61,11 +59,9 @@ private:
     QLabel *m_status = nullptr;
     QPushButton *m_export = nullptr;
     QPushButton *m_cancel = nullptr;
-    QThread *m_thread = nullptr;
     QTimer m_poll;
-    std::atomic<int> m_permille{0};
-    std::atomic<bool> m_cancelRequested{false};
     record::CaptureExporter::Result m_result;
+    jobs::BackgroundJob m_job; // last: cancelled and joined before the rest goes
 };
 
 } // namespace imudesk::ui

@@ -4,8 +4,8 @@
 // failure the failing step with its values, then every step with its verdict, what it found
 // and each measured value against its limit, and where the evidence recording is kept.
 // QtGui only (QTextDocument, QPdfWriter): the CLI can write it without widgets.
-#include "station/station_result.h"
-#include "station/test_plan.h"
+#include "core/station/station_result.h"
+#include "core/station/test_plan.h"
 
 #include <QCoreApplication>
 #include <QString>

@@ -1,4 +1,4 @@
-#include "station/plan_editor_dialog.h"
+#include "ui/station/plan_editor_dialog.h"
 
 #include <QCoreApplication>
 #include <QDialogButtonBox>

@@ -7,7 +7,7 @@
 // the plan from running (TestPlan::problems(), and a number being typed outside its range)
 // is listed under the form as it changes. Save (Ctrl+S) and Save as… write the JSON; a saved
 // plan is announced with saved(). Non-modal.
-#include "station/test_plan.h"
+#include "core/station/test_plan.h"
 
 #include <QDialog>
 #include <QMap>

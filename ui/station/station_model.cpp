@@ -1,6 +1,6 @@
-#include "station/station_model.h"
+#include "ui/station/station_model.h"
 
-#include "station/station_runner.h"
+#include "core/station/station_runner.h"
 
 #include <QCoreApplication>
 

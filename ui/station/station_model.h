@@ -4,8 +4,8 @@
 // verdict, what failed). It reads the runner on its own clock (kRefreshMs, 5 Hz) and reports
 // only the rows that changed: a module's runner changes its result many times a second while
 // it collects samples, and neither the tiles nor the summary need more than a few updates.
-#include "station/station_result.h"
-#include "station/station_runner.h"
+#include "core/station/station_result.h"
+#include "core/station/station_runner.h"
 
 #include <QAbstractListModel>
 #include <QPointer>

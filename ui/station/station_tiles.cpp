@@ -1,4 +1,4 @@
-#include "station/station_tiles.h"
+#include "ui/station/station_tiles.h"
 
 #include <QDir>
 #include <QEvent>

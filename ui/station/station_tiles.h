@@ -1,7 +1,7 @@
 #pragma once
 // The pieces of the station window's tile grid: a label that elides over a fixed number of
 // lines, one tile per module, and the layout that puts the tiles in as many columns as fit.
-#include "station/station_result.h"
+#include "core/station/station_result.h"
 
 #include <QCoreApplication>
 #include <QFrame>

@@ -1,14 +1,14 @@
-#include "station/station_view.h"
+#include "ui/station/station_view.h"
 
 #include "reports/station_report.h"
 #include "sim/hipnuc_serial_device.h"
 #include "sim/pty_simulator.h"
 #include "sim/simulated_transport.h"
-#include "station/plan_editor_dialog.h"
-#include "station/run_folder.h"
-#include "station/station_model.h"
-#include "station/station_runner.h"
-#include "station/station_tiles.h"
+#include "ui/station/plan_editor_dialog.h"
+#include "core/station/run_folder.h"
+#include "ui/station/station_model.h"
+#include "core/station/station_runner.h"
+#include "ui/station/station_tiles.h"
 #include "workspace/window_helpers.h"
 
 #include <QCheckBox>

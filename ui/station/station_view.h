@@ -16,7 +16,7 @@
 // threads, the tiles and the summary follow a StationModel that reads it on a 5 Hz clock,
 // and problems (a plan that does not load, a folder that cannot be written, a report that
 // failed) are shown in a message that does not wait for an answer.
-#include "station/test_plan.h"
+#include "core/station/test_plan.h"
 
 #include <QCoreApplication>
 #include <QHash>

@@ -1,6 +1,6 @@
 #include "workspace/command_log_widget.h"
 
-#include "models/command_log_model.h"
+#include "itemmodels/command_log_model.h"
 
 #include <QAction>
 #include <QApplication>

@@ -8,7 +8,7 @@
 #include "workspace/command_log_widget.h"
 #include "workspace/console_widget.h"
 #include "workspace/raw_bytes_view.h"
-#include "models/latest_values_model.h"
+#include "itemmodels/latest_values_model.h"
 #include "sim/pty_simulator.h"
 #include "workspace/status_flags_widget.h"
 
@@ -210,6 +210,7 @@ void DeviceWorkspace::dropLink()
         delete dock;
     }
     m_linkDockPlaces.clear();
+    m_linkTools.clear();
     delete std::exchange(m_configPanel, nullptr);
     m_recording->setSession(nullptr);
     m_rawView->setLog(nullptr);
@@ -219,6 +220,20 @@ void DeviceWorkspace::dropLink()
         m_link.reset();
     }
     m_linkKeepAlive.reset();
+}
+
+void DeviceWorkspace::offerTool(LinkTool tool, ToolRunner run)
+{
+    m_linkTools.insert(int(tool), std::move(run));
+}
+
+bool DeviceWorkspace::runTool(LinkTool tool, QWidget *dialogParent)
+{
+    const auto it = m_linkTools.constFind(int(tool));
+    if (it == m_linkTools.constEnd())
+        return false;
+    (*it)(dialogParent);
+    return true;
 }
 
 device::DeviceSession *DeviceWorkspace::hipnucSession() const
@@ -426,7 +441,23 @@ void DeviceWorkspace::sendConsoleCommand(const QString &text)
     device::DeviceSession *session = hipnucSession();
     if (!session)
         return; // the console takes no input for this link
-    const quint64 id = session->sendCommand(text, kCommandTimeoutMs);
+    const quint64 id = session->sendText(text, kCommandTimeoutMs);
+    m_console->showCommand(id, text);
+    m_commandLog->record(id, text);
+}
+
+void DeviceWorkspace::sendCommand(const protocol::hipnuc::Command &command)
+{
+    device::DeviceSession *session = hipnucSession();
+    if (!session)
+        return;
+    QString error;
+    const quint64 id = session->sendCommand(command, kCommandTimeoutMs, &error);
+    if (id == 0) {
+        m_console->showError(error);
+        return;
+    }
+    const QString text = QString::fromStdString(command.text);
     m_console->showCommand(id, text);
     m_commandLog->record(id, text);
 }
@@ -450,6 +481,7 @@ void DeviceWorkspace::refreshViews()
 {
     if (window()->isMinimized())
         return;
+    Q_EMIT viewTick();
     // Charts: the samples that arrived since the last tick, then one redraw of what is on screen.
     pullSamples();
     device::SampleStore &store = link().store();

@@ -96,6 +96,15 @@ public:
     // the compass dial), as a tab behind the values (settings, registers: the values stay in
     // front), or below the charts (monitors and transport controls).
     enum class LinkDockPlace { OverAttitude, BehindValues, Below };
+    // What the attached link's family offers in the Tools and Calibrate menus beyond the
+    // capabilities (a bus scan, the compass's own calibration, a firmware update over the bus).
+    // Offered by whoever attaches the link, which knows its family; withdrawn with the link.
+    enum class LinkTool { ScanBus, CompassCalibration, FirmwareUpdate };
+    using ToolRunner = std::function<void(QWidget *dialogParent)>;
+    void offerTool(LinkTool tool, ToolRunner run);
+    bool offersTool(LinkTool tool) const { return m_linkTools.contains(int(tool)); }
+    // Opens the tool's dialog or wizard; false when the link offers no such tool.
+    bool runTool(LinkTool tool, QWidget *dialogParent);
     // A dock that belongs to the attached link (register browser, CAN monitor, replay
     // controls, ...): shown while the link is attached, deleted with it.
     void addLinkDock(QDockWidget *dock, LinkDockPlace place);
@@ -113,6 +122,9 @@ public:
 
     // Sends a command as typed in the console (shown there with its reply).
     void sendConsoleCommand(const QString &text);
+    // Sends a command made by the typed builders (the Device menu), shown in the console and
+    // the command log like a typed one.
+    void sendCommand(const protocol::hipnuc::Command &command);
 
     // The HiPNUC serial session; only while hipnucSession() is not null.
     device::DeviceSession &session() const { return *hipnucSession(); }
@@ -181,6 +193,9 @@ Q_SIGNALS:
     void titleChanged(const QString &title);
     // A session error for the user (already logged in the console); the main window shows it.
     void errorReported(const QString &message);
+    // The workspace's view clock (Preferences: refresh rate, <= 60 Hz; not while minimised or
+    // hidden): a link's docks and dials redraw on it instead of keeping a clock of their own.
+    void viewTick();
 
 protected:
     void changeEvent(QEvent *event) override;
@@ -223,6 +238,7 @@ private:
     std::unique_ptr<sim::PtySimulator> m_simulator;
     // What the link needs (declared before it: the link goes first).
     std::shared_ptr<void> m_linkKeepAlive;
+    QHash<int, ToolRunner> m_linkTools; // LinkTool -> what opens it, for the attached link
     std::unique_ptr<device::DeviceLink> m_link;
 
     models::LatestValuesModel *m_valuesModel = nullptr;

@@ -5,7 +5,7 @@
 #include "charts/chart_panel.h"
 #include "configuration/config_panel.h"
 #include "workspace/device_workspace.h"
-#include "models/latest_values_model.h"
+#include "itemmodels/latest_values_model.h"
 
 #include <QDockWidget>
 #include <QEvent>

@@ -1,6 +1,9 @@
 #include "workspace/link_factory.h"
 
 #include "bus/can_config_panel.h"
+#include "bus/modbus_scan_dialog.h"
+#include "calibration/hec495_calibration_wizard.h"
+#include "ui/firmware/firmware_update_dialog.h"
 #include "bus/can_monitor_widget.h"
 #include "device/can_session.h"
 #include "device/hec495_session.h"
@@ -19,7 +22,6 @@
 #include <QDockWidget>
 #include <QFileInfo>
 #include <QScrollArea>
-#include <QTimer>
 
 namespace imudesk::ui {
 
@@ -31,6 +33,20 @@ QDockWidget *makeDock(QWidget *content, const QString &objectName, const QString
     dock->setObjectName(objectName);
     dock->setWidget(content);
     return dock;
+}
+
+// Tools > Calibrate > HEC495 compass: the compass's own calibration methods (serial link).
+void offerCompassCalibration(DeviceWorkspace &ws, device::Hec495Session *session)
+{
+    ws.offerTool(DeviceWorkspace::LinkTool::CompassCalibration, [&ws, session](QWidget *parent) {
+        auto *wizard = new Hec495CalibrationWizard(*session, parent);
+        if (ws.identity())
+            wizard->runSaver().setIdentity(*ws.identity());
+        wizard->setAttribute(Qt::WA_DeleteOnClose);
+        // The wizard needs its session: it closes when the link goes.
+        QObject::connect(session, &QObject::destroyed, wizard, &QWidget::close);
+        wizard->show();
+    });
 }
 
 } // namespace
@@ -49,19 +65,17 @@ bool LinkFactory::connectHec495(DeviceWorkspace &ws, const QString &port, int ba
     // The compass dial (heading, pitch, roll from the newest sample) and the settings.
     auto *dial = new HeadingDial;
     dial->setObjectName(QStringLiteral("headingDial"));
-    auto *clock = new QTimer(dial);
-    clock->setInterval(DeviceWorkspace::kRefreshIntervalMs);
-    QObject::connect(clock, &QTimer::timeout, dial, [dial, session] {
+    QObject::connect(&ws, &DeviceWorkspace::viewTick, dial, [dial, session] {
         if (const auto s = session->store().latest(); s && s->has(model::FieldEuler))
             dial->setAttitude(s->yaw, s->pitch, s->roll);
     });
-    clock->start();
     ws.addLinkDock(makeDock(dial, QStringLiteral("headingDialDock"), tr("Compass")),
                    DeviceWorkspace::LinkDockPlace::OverAttitude);
     auto *panel = new Hec495SettingsPanel(session);
     panel->setObjectName(QStringLiteral("hec495SettingsPanel"));
     ws.addLinkDock(makeDock(panel, QStringLiteral("hec495SettingsDock"), tr("Compass settings")),
                    DeviceWorkspace::LinkDockPlace::BehindValues);
+    offerCompassCalibration(ws, session);
     session->open(port, baud, address);
     return true;
 }
@@ -112,6 +126,11 @@ bool LinkFactory::connectModbus(DeviceWorkspace &ws, device::ModbusOptions optio
         return false;
     }
     ws.addLinkDock(new RegisterBrowser(session), DeviceWorkspace::LinkDockPlace::BehindValues);
+    ws.offerTool(DeviceWorkspace::LinkTool::ScanBus, [session](QWidget *parent) {
+        auto *dialog = new ModbusScanDialog(session, parent);
+        dialog->setAttribute(Qt::WA_DeleteOnClose);
+        dialog->open();
+    });
     session->open(options);
     return true;
 }
@@ -168,6 +187,19 @@ bool LinkFactory::connectCan(DeviceWorkspace &ws, const device::CanSessionOption
     scroll->setMinimumWidth(panel->minimumSizeHint().width());
     ws.addLinkDock(makeDock(scroll, QStringLiteral("canConfigDock"), tr("CAN configuration")),
                    DeviceWorkspace::LinkDockPlace::BehindValues);
+    if (options.protocol == protocol::can::CanProtocol::CanOpen) {
+        // A HiPNUC module on CANopen updates over the bus: the session stays on it, the dialog
+        // talks to the node with its own CAN device (SDO to 0x1F51), and the session sees the
+        // module leave and come back.
+        ws.offerTool(DeviceWorkspace::LinkTool::FirmwareUpdate, [&ws, session](QWidget *parent) {
+            auto *dialog = new FirmwareUpdateDialog(QString(), 0, ws.identity(), parent);
+            dialog->setAttribute(Qt::WA_DeleteOnClose);
+            dialog->setLink(FirmwareUpdateDialog::Link::Can);
+            const auto &o = session->options();
+            dialog->setCanBus(o.plugin, o.interfaceName, o.bitrate, session->targetNode() > 0 ? session->targetNode() : 8);
+            dialog->open();
+        });
+    }
     session->open(options);
     return true;
 }

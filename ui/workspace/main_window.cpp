@@ -2,7 +2,7 @@
 
 #include "device/family_detector.h"
 #include "protocol/hipnuc/ascii_command.h"
-#include "station/station_view.h"
+#include "ui/station/station_view.h"
 #include "workspace/link_factory.h"
 #include "workspace/preferences_dialog.h"
 #include "workspace/tool_actions.h"
@@ -99,10 +99,9 @@ MainWindow::~MainWindow()
 {
     // A family probe still listening finishes its port (a few seconds at most) before the
     // window goes; its result is not wanted any more.
-    for (QThread *probe : std::as_const(m_probes)) {
+    for (jobs::BackgroundJob *probe : std::as_const(m_probes)) {
         probe->disconnect(this);
-        probe->wait();
-        delete probe;
+        delete probe; // waits for the worker; the result's apply never runs
     }
     // Workspaces close their ports (and stop their simulators) as they go.
     m_tabs->disconnect(this);
@@ -286,32 +285,39 @@ void MainWindow::connectPort(const QString &port, int baud)
     QPointer<DeviceWorkspace> ws = freeWorkspace();
     m_connectionBar->setSessionState(SessionState::Detecting);
     m_connectAction->setEnabled(false);
-    // A thread this window owns and waits for (never a detached one): the result comes back
-    // on the GUI thread through `finished`, and the window outlives the probe.
-    auto result = std::make_shared<device::FamilyDetector::Result>();
-    QThread *probe = QThread::create([port, result] { *result = device::FamilyDetector::detect(port); });
-    probe->setObjectName(QStringLiteral("imudesk-family-probe"));
+    // A job this window owns and waits for (never a detached thread): the result comes back
+    // on the GUI thread, and the window outlives the probe.
+    auto *probe = new jobs::BackgroundJob(this);
     m_probes.push_back(probe);
-    connect(probe, &QThread::finished, this, [this, probe, ws, port, result] {
+    connect(probe, &jobs::BackgroundJob::finished, this, [this, probe] {
         m_probes.removeOne(probe);
         probe->deleteLater();
-        if (!ws)
-            return;
-        const device::FamilyDetector::Result &r = *result;
-        if (r.family == device::FamilyDetector::Family::Hec495) {
-            QString error;
-            if (!LinkFactory::connectHec495(*ws, port, r.baud, std::max(0, r.address), &error))
-                presentError(error);
-        } else {
-            // A HiPNUC module at the rate found, or nothing found: the session's own
-            // detection then says what it tried and what to check.
-            ws->connectPort(port, r.family == device::FamilyDetector::Family::Hipnuc ? r.baud : 0);
-        }
-        if (ws == currentWorkspace())
-            m_connectionBar->setSessionState(ws->state());
-        updateActions();
     });
-    probe->start();
+    probe->launch(QStringLiteral("imudesk-family-probe"), [this, ws, port](const jobs::BackgroundJob::Context &) {
+        const device::FamilyDetector::Result r = device::FamilyDetector::detect(port);
+        jobs::BackgroundJob::Outcome outcome{r.family != device::FamilyDetector::Family::Unknown, r.error, {}};
+        outcome.apply = [this, ws, port, r] { connectDetected(ws, port, r); };
+        return outcome;
+    });
+}
+
+void MainWindow::connectDetected(QPointer<DeviceWorkspace> ws, const QString &port,
+                                 const device::FamilyDetector::Result &r)
+{
+    if (!ws)
+        return;
+    if (r.family == device::FamilyDetector::Family::Hec495) {
+        QString error;
+        if (!LinkFactory::connectHec495(*ws, port, r.baud, std::max(0, r.address), &error))
+            presentError(error);
+    } else {
+        // A HiPNUC module at the rate found, or nothing found: the session's own detection
+        // then says what it tried and what to check.
+        ws->connectPort(port, r.family == device::FamilyDetector::Family::Hipnuc ? r.baud : 0);
+    }
+    if (ws == currentWorkspace())
+        m_connectionBar->setSessionState(ws->state());
+    updateActions();
 }
 
 bool MainWindow::connectSimulated(const sim::SimOptions &options, int baud, QString *error)
@@ -627,8 +633,9 @@ void MainWindow::createActions()
     m_versionAction = new QAction(this);
     m_versionAction->setObjectName(QStringLiteral("versionAction"));
     connect(m_versionAction, &QAction::triggered, this, [this] { 
-        // Through the console, so that the question and the answer show there.
-        console()->submit(QString::fromStdString(protocol::hipnuc::commands::logVersion().text));
+        // Shown in the console with its answer.
+        if (DeviceWorkspace *ws = currentWorkspace())
+            ws->sendCommand(protocol::hipnuc::commands::logVersion());
     });
 
     m_takeSampleAction = new QAction(this);
@@ -636,14 +643,15 @@ void MainWindow::createActions()
     m_takeSampleAction->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_T));
     connect(m_takeSampleAction, &QAction::triggered, this, [this] {
         // LOG <MSG> ONMARK ONCE (v1.7.1 manual 4.6.8.15: one frame, as a SYNC_IN pulse would give)
-        // of the frame type the module sends, HI91 when it sends none; through the console.
+        // of the frame type the module sends, HI91 when it sends none; shown in the console.
         protocol::hipnuc::Message m = protocol::hipnuc::Message::HI91;
         if (const DeviceWorkspace *ws = currentWorkspace())
             if (const auto latest = ws->link().store().latest())
                 if (protocol::hipnuc::Message named; protocol::hipnuc::parseMessage(latest->source, named)
                                                     && protocol::hipnuc::commands::logOnMark(named, true).ok())
                     m = named;
-        console()->submit(QString::fromStdString(protocol::hipnuc::commands::logOnMark(m, true).text));
+        if (DeviceWorkspace *ws = currentWorkspace())
+            ws->sendCommand(protocol::hipnuc::commands::logOnMark(m, true));
     });
 
     m_preferencesAction = new QAction(this);

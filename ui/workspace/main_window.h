@@ -3,6 +3,8 @@
 // connected device in tabs (its own session, views, console and counters). Menus act
 // on the current workspace. It shows session errors without ever blocking.
 #include "device/device_session.h"
+#include "device/family_detector.h"
+#include "jobs/background_job.h"
 #include "sim/hipnuc_simulator.h"
 #include "workspace/preferences.h"
 #include "workspace/tool_host.h"
@@ -23,7 +25,6 @@ class QMenu;
 class QMessageBox;
 class QTabWidget;
 class QTableView;
-class QThread;
 
 namespace imudesk::models {
 class LatestValuesModel;
@@ -123,7 +124,7 @@ protected:
     void changeEvent(QEvent *event) override;
 
 private:
-    QList<QThread *> m_probes; // family probes under way (connectPort with baud Auto)
+    QList<jobs::BackgroundJob *> m_probes; // family probes under way (connectPort with baud Auto)
 
     void createActions();
     void createMenus();
@@ -131,6 +132,8 @@ private:
     void restoreSettings(const WindowSettings &settings);
 
     DeviceWorkspace *freeWorkspace(); // the current one if idle, else a new tab
+    // After a family probe: opens the family's session in ws (if it is still there).
+    void connectDetected(QPointer<DeviceWorkspace> ws, const QString &port, const device::FamilyDetector::Result &r);
     void connectSelected();
     void presentError(const QString &message);
     void showAbout();

@@ -4,21 +4,16 @@
 #include "calibration/attitude_reset_wizard.h"
 #include "calibration/calibration_history_dialog.h"
 #include "calibration/gyro_scale_wizard.h"
-#include "calibration/hec495_calibration_wizard.h"
-#include "device/can_session.h"
-#include "device/hec495_session.h"
 #include "calibration/mag_calibration_wizard.h"
 #include "charts/bandwidth_calculator.h"
 #include "bus/bus_connect_dialog.h"
 #include "configuration/config_panel.h"
-#include "device/modbus_session.h"
 #include "workspace/device_workspace.h"
 #include "recording/export_dialog.h"
 #include "recording/recording_controls.h"
-#include "firmware/firmware_update_dialog.h"
+#include "ui/firmware/firmware_update_dialog.h"
 #include "workspace/link_factory.h"
 #include "workspace/preferences.h"
-#include "bus/modbus_scan_dialog.h"
 #include "configuration/profile_dialog.h"
 #include "record/csv_capture_converter.h"
 #include "settings/configuration_controller.h"
@@ -158,7 +153,8 @@ void ToolActions::update(const DeviceWorkspace *ws)
     m_can->setEnabled(!busy);
     m_openCapture->setEnabled(!busy);
     m_importCsv->setEnabled(!busy);
-    m_scanModbus->setEnabled(connected && dynamic_cast<const device::ModbusSession *>(&ws->link()));
+    using Tool = DeviceWorkspace::LinkTool;
+    m_scanModbus->setEnabled(connected && ws->offersTool(Tool::ScanBus));
     m_configuration->setEnabled(settings);
     m_profiles->setEnabled(settings && connected);
     m_record->setEnabled(caps.testFlag(C::Recording));
@@ -170,10 +166,10 @@ void ToolActions::update(const DeviceWorkspace *ws)
     m_magCal->setEnabled(settings && connected && hasMag);
     m_gyroCal->setEnabled(settings && connected);
     m_attitudeReset->setEnabled(settings && connected);
-    m_compassCal->setEnabled(connected && dynamic_cast<const device::Hec495Session *>(&ws->link()));
-    // The update opens the port itself: a connected HiPNUC serial device, or a HiPNUC module
-    // on a CANopen bus (the dialog opens its own CAN device beside the session's).
-    m_firmware->setEnabled((settings && connected) || (connected && canopenLink(ws)));
+    m_compassCal->setEnabled(connected && ws->offersTool(Tool::CompassCalibration));
+    // The update opens the port itself: a connected HiPNUC serial device, or a link that offers
+    // it (a HiPNUC module on a CANopen bus: the dialog opens its own CAN device).
+    m_firmware->setEnabled((settings && connected) || (connected && ws->offersTool(Tool::FirmwareUpdate)));
 }
 
 bool ToolActions::openCapture(const QString &path)
@@ -276,13 +272,8 @@ void ToolActions::connectCan()
 
 void ToolActions::scanModbus()
 {
-    DeviceWorkspace *ws = m_host->currentWorkspace();
-    auto *session = ws ? dynamic_cast<device::ModbusSession *>(&ws->link()) : nullptr;
-    if (!session)
-        return;
-    auto *dialog = new ModbusScanDialog(session, m_host->dialogParent());
-    dialog->setAttribute(Qt::WA_DeleteOnClose);
-    dialog->open();
+    if (DeviceWorkspace *ws = m_host->currentWorkspace())
+        ws->runTool(DeviceWorkspace::LinkTool::ScanBus, m_host->dialogParent());
 }
 
 void ToolActions::showConfiguration()
@@ -374,17 +365,8 @@ void ToolActions::openAttitudeReset()
 
 void ToolActions::openCompassCal()
 {
-    DeviceWorkspace *ws = m_host->currentWorkspace();
-    auto *session = ws ? dynamic_cast<device::Hec495Session *>(&ws->link()) : nullptr;
-    if (!session)
-        return;
-    auto *wizard = new Hec495CalibrationWizard(*session, m_host->dialogParent());
-    if (ws->identity())
-        wizard->runSaver().setIdentity(*ws->identity());
-    wizard->setAttribute(Qt::WA_DeleteOnClose);
-    // The wizard needs its session: it closes when the link goes.
-    connect(session, &QObject::destroyed, wizard, &QWidget::close);
-    wizard->show();
+    if (DeviceWorkspace *ws = m_host->currentWorkspace())
+        ws->runTool(DeviceWorkspace::LinkTool::CompassCalibration, m_host->dialogParent());
 }
 
 void ToolActions::openCalHistory()
@@ -397,28 +379,13 @@ void ToolActions::openCalHistory()
     dialog->show();
 }
 
-const device::CanSession *ToolActions::canopenLink(const DeviceWorkspace *ws)
-{
-    const auto *can = ws ? dynamic_cast<const device::CanSession *>(&ws->link()) : nullptr;
-    return can && can->protocol() == protocol::can::CanProtocol::CanOpen ? can : nullptr;
-}
-
 void ToolActions::updateFirmware()
 {
     DeviceWorkspace *ws = m_host->currentWorkspace();
     if (!ws)
         return;
-    if (const device::CanSession *can = canopenLink(ws)) {
-        // Over CAN the session stays on the bus; the dialog talks to the node with its own
-        // CAN device (SDO to 0x1F51) and the session sees the module leave and come back.
-        auto *dialog = new FirmwareUpdateDialog(QString(), 0, ws->identity(), m_host->dialogParent());
-        dialog->setAttribute(Qt::WA_DeleteOnClose);
-        dialog->setLink(FirmwareUpdateDialog::Link::Can);
-        const auto &o = can->options();
-        dialog->setCanBus(o.plugin, o.interfaceName, o.bitrate, can->targetNode() > 0 ? can->targetNode() : 8);
-        dialog->open();
+    if (ws->runTool(DeviceWorkspace::LinkTool::FirmwareUpdate, m_host->dialogParent()))
         return;
-    }
     if (!ws->hipnucSession())
         return;
     const int baud = ws->baud();

@@ -13,10 +13,6 @@
 class QAction;
 class QMenu;
 
-namespace imudesk::device {
-class CanSession;
-}
-
 namespace imudesk::ui {
 
 class DeviceWorkspace;
@@ -70,8 +66,6 @@ private:
     void openProfiles();
     void openCalculator();
     void updateFirmware();
-    // The workspace's link when it is a HiPNUC module on CANopen (the CAN update path).
-    static const device::CanSession *canopenLink(const DeviceWorkspace *ws);
     // Device > Record: starts recording the current tab's device (the panel shows why when it cannot).
     void record();
     void noteRecording(const QString &path);

@@ -1,4 +1,4 @@
-#include "models/calibration_history_model.h"
+#include "itemmodels/calibration_history_model.h"
 
 #include "calib/mag_cal_result.h"
 
@@ -52,7 +52,7 @@ QString CalibrationHistoryModel::summaryText(const calib::CalibrationRecord &r)
 {
     const QJsonObject o = r.result;
     if (o.contains(QStringLiteral("field_ut")))
-        return tr("|B| %1 uT, fit error %2 %, coverage %3 %")
+        return tr("|B| %1 µT, fit error %2 %, coverage %3 %")
             .arg(o.value(QStringLiteral("field_ut")).toDouble(), 0, 'f', 1)
             .arg(o.value(QStringLiteral("fit_error_pct")).toDouble(), 0, 'f', 2)
             .arg(o.value(QStringLiteral("coverage_pct")).toDouble(), 0, 'f', 0);

@@ -1,16 +1,15 @@
-#include "update_runner.h"
+#include "jobs/background_job.h"
 
 #include "device/thread_sync.h"
 
 #include <QThread>
 
-#include <atomic>
 #include <mutex>
 
-namespace imudesk::firmware {
+namespace imudesk::jobs {
 
-// Shared by this object and the worker: the cancel request and how to cancel the current flow.
-struct UpdateRunner::Shared {
+// Shared by the owner and the worker: the cancel request and how to cancel the current flow.
+struct BackgroundJob::Shared {
     std::atomic<bool> cancel{false};
     std::mutex mutex;
     Canceller canceller; // guarded by mutex
@@ -31,9 +30,9 @@ struct UpdateRunner::Shared {
     }
 };
 
-UpdateRunner::UpdateRunner(QObject *parent) : QObject(parent) {}
+BackgroundJob::BackgroundJob(QObject *parent) : QObject(parent) {}
 
-UpdateRunner::~UpdateRunner()
+BackgroundJob::~BackgroundJob()
 {
     if (m_thread) {
         cancel();
@@ -43,33 +42,39 @@ UpdateRunner::~UpdateRunner()
     }
 }
 
-bool UpdateRunner::launch(const QString &threadName, Job job)
+bool BackgroundJob::launch(const QString &threadName, Job job)
 {
     if (m_thread)
         return false;
     m_shared = std::make_shared<Shared>();
     m_outcome = std::make_shared<Outcome>();
+    m_progress->store(0.0);
     auto shared = m_shared;
     auto outcome = m_outcome;
+    auto progress = m_progress;
     // The outcome is written by the worker and read here only after the thread has ended.
-    m_thread = QThread::create([job = std::move(job), shared, outcome] {
-        *outcome = job([&shared](Canceller c) { shared->setCanceller(std::move(c)); });
+    m_thread = QThread::create([job = std::move(job), shared, outcome, progress] {
+        Context context;
+        context.registerCancel = [&shared](Canceller c) { shared->setCanceller(std::move(c)); };
+        context.cancelled = [&shared] { return shared->cancel.load(); };
+        context.setProgress = [&progress](double f) { progress->store(f); };
+        *outcome = job(context);
         shared->setCanceller({});
     });
     m_thread->setObjectName(threadName);
-    connect(m_thread, &QThread::finished, this, &UpdateRunner::onWorkerDone);
+    connect(m_thread, &QThread::finished, this, &BackgroundJob::onWorkerDone);
     device::announceJoin(*m_thread);
     m_thread->start();
     return true;
 }
 
-void UpdateRunner::cancel()
+void BackgroundJob::cancel()
 {
     if (m_shared)
         m_shared->requestCancel();
 }
 
-void UpdateRunner::onWorkerDone()
+void BackgroundJob::onWorkerDone()
 {
     if (!m_thread)
         return;
@@ -83,4 +88,4 @@ void UpdateRunner::onWorkerDone()
     Q_EMIT finished(outcome->ok, outcome->message);
 }
 
-} // namespace imudesk::firmware
+} // namespace imudesk::jobs
