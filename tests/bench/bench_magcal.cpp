@@ -17,8 +17,9 @@
 // true median error (but not the trial's own geometry or noise). Goals: no trial with a true
 // error above 1 deg passes; the predicted hard-iron sigma follows the true RMS within a
 // factor of 2 wherever the fit does not run away; the predicted bounds are calibrated: in
-// every case the true error is below the predicted 68 % bound in 60-76 % of the trials and
-// below the predicted 95 % bound in >= 90 %. (A "within a factor of 2 of the trial's own
+// every case the true error is below the predicted 68 % bound in 60-76 % of the fits given to
+// the user and below the predicted 95 % bound in >= 90 % (a refused fit comes with no bound to
+// trust; cases where fewer than 20 % of the trials were given are printed, not judged). (A "within a factor of 2 of the trial's own
 // error" target is printed, x2, but not judged: one draw of noise gives one error, and on
 // part of the sphere that error varies so much from draw to draw that even the oracle, which
 // knows the case's true median, reaches only 54-65 % there.)
@@ -400,7 +401,8 @@ void coverageSweep(uint64_t seed, int trials)
                 "of trials whose prediction is within a factor of 2 of their true error; oracle = the same share for a\n"
                 "prediction that knew only the case's true median; linear = the covariance-only prediction (baseline);\n"
                 "HI/SI = RMS of the true hard-iron (uT) / soft-iron (%%) errors and of their predicted sigmas;\n"
-                "<68/<95 = share of trials whose true error is below the predicted 68 %% / 95 %% bound;\n"
+                "<68/<95 = share of the fits given (pass or warn) whose true error is below the predicted 68 %% / 95 %%\n"
+                "bound, judged in the cases where at least 20 %% of the trials were given;\n"
                 ">1ok = trials with a true error > 1 deg given pass (lin>1ok: had the baseline decided).\n",
                 trials);
     std::printf("%-19s %7s %7s %7s | %4s %4s | %4s %6s %6s | %7s %7s %7s | %6s %6s | %4s %4s %4s %4s %4s %6s\n", "case",
@@ -409,9 +411,11 @@ void coverageSweep(uint64_t seed, int trials)
     int within = 0, withinLinear = 0, withinOracle = 0, counted = 0, badPass = 0;
     double worstLow = 1e9, worstHigh = 0;
     double below68Low = 100, below68High = 0, below95Low = 100;
+    const int kMinOffered = std::max(10, trials / 5);
     double fullPred = 0;
     for (const SweepCase &c : cases) {
         std::vector<double> pred, pred95, truth, linear, hiErr, hiPred, hiLin, siErr, siPred;
+        std::vector<bool> given; // the fit was given to the user (pass or warn), with its bounds
         int verdicts[4] = {0, 0, 0, 0}, bad = 0, badLinear = 0;
         // Each trial's fit and its baseline (the linear covariance of the same fit), in parallel.
         struct Trial {
@@ -444,6 +448,7 @@ void coverageSweep(uint64_t seed, int trials)
             badLinear += lin.headingErrorDeg < calib::MagCalibrator::kWarnHeadingErrorDeg && tr > 1.0;
             pred.push_back(r.predictedHeadingErrorDeg);
             pred95.push_back(r.predictedHeadingError95Deg);
+            given.push_back(r.verdict != calib::MagVerdict::Refused);
             truth.push_back(tr);
             linear.push_back(lin.headingErrorDeg);
             hiErr.push_back((r.hardIron - t.hardIron).norm());
@@ -463,19 +468,25 @@ void coverageSweep(uint64_t seed, int trials)
         const int wl = share([&](size_t k) { return linear[k]; });
         const int wo = share([&](size_t) { return med; });
         const double n = double(std::max<size_t>(truth.size(), 1));
-        int below68 = 0, below95 = 0;
+        // The bounds of the fits given to the user: a refused fit (a cap of 25 %, a narrow band,
+        // where it runs away) is not offered with a bound to trust.
+        int below68 = 0, below95 = 0, offered = 0;
         for (size_t k = 0; k < truth.size(); ++k) {
+            if (!given[k])
+                continue;
+            ++offered;
             below68 += truth[k] <= pred[k];
             below95 += truth[k] <= pred95[k];
         }
-        if (!truth.empty()) {
-            below68Low = std::min(below68Low, 100 * below68 / n);
-            below68High = std::max(below68High, 100 * below68 / n);
-            below95Low = std::min(below95Low, 100 * below95 / n);
+        const double no = double(std::max(offered, 1));
+        if (offered >= kMinOffered) {
+            below68Low = std::min(below68Low, 100 * below68 / no);
+            below68High = std::max(below68High, 100 * below68 / no);
+            below95Low = std::min(below95Low, 100 * below95 / no);
         }
         std::printf("%-19s %7.3f %7.3f %7.3f | %3.0f%% %3.0f%% | %3.0f%% %5.0f%% %5.0f%% | %7.3f %7.3f %7.3f | %6.3f %6.3f | "
                     "%4d %4d %4d %4d %4d %6d\n",
-                    c.name, median(pred), med, p95(truth), 100 * below68 / n, 100 * below95 / n, 100 * w / n, 100 * wo / n,
+                    c.name, median(pred), med, p95(truth), 100 * below68 / no, 100 * below95 / no, 100 * w / n, 100 * wo / n,
                     100 * wl / n, rms(hiErr), rms(hiPred), rms(hiLin), rms(siErr), rms(siPred), verdicts[0], verdicts[1],
                     verdicts[3], verdicts[2], bad, badLinear);
         within += w;
