@@ -146,14 +146,13 @@ MagEnvironmentJudge::Status MagEnvironmentJudge::status() const
 {
     if (m_stillChangeMax > m_options.maxStillChangeUt)
         return Status::FieldChanging;
-    if (!m_fit)
+    // A sphere fit on a few orientations is a first estimate (on 10 cells of a tumbling module
+    // it read 59 µT for 50): only the ellipsoid, on a quarter of the sphere or more, is judged.
+    if (!m_fit || !m_fitIsEllipsoid)
         return Status::TurnMore;
     const double field = m_fit->radius();
     if (field < m_options.minFieldUt || field > m_options.maxFieldUt)
         return Status::FieldOutOfRange;
-    // A sphere fit leaves the soft iron in the spread: only the ellipsoid's spread is judged.
-    if (!m_fitIsEllipsoid)
-        return Status::TurnMore;
     if (m_spread > m_options.maxSpreadUt)
         return Status::SpatialInterference;
     return Status::Ok;

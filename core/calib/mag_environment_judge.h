@@ -35,7 +35,7 @@ public:
     enum class Status {
         TurnMore,            // not enough orientations for a fit yet
         Ok,                  // the spot is fit for calibrating
-        FieldOutOfRange,     // the fitted field is outside the Earth's range
+        FieldOutOfRange,     // the fitted field (ellipsoid) is outside the Earth's range
         SpatialInterference, // the fitted field differs between orientations
         FieldChanging,       // |B| changed while the module was still
     };

@@ -116,8 +116,9 @@ private Q_SLOTS:
         QVERIFY(wizard.environment().meanRawFieldUt() > 10);
         // Judged with the module's own iron fitted out: the simulator's 50 µT, not "a magnetic
         // object near" (which the raw |B| of its hard iron looked like).
-        QTRY_VERIFY_WITH_TIMEOUT(wizard.environment().fittedFieldUt().has_value(), 20000);
-        QVERIFY2(std::abs(*wizard.environment().fittedFieldUt() - 50.0) < 8.0,
+        // (the first sphere fits, on a few orientations, are estimates the page calls "so far")
+        QTRY_VERIFY_WITH_TIMEOUT(wizard.environment().ellipsoid(), 40000);
+        QVERIFY2(std::abs(*wizard.environment().fittedFieldUt() - 50.0) < 5.0,
                  qPrintable(QString::number(*wizard.environment().fittedFieldUt())));
         QVERIFY(wizard.environment().status() != calib::MagEnvironmentJudge::Status::FieldOutOfRange);
         QTRY_VERIFY(wizard.environmentFiguresText().contains(QStringLiteral("Field at the spot")));

@@ -124,7 +124,7 @@ private Q_SLOTS:
         QVERIFY(!judge.fittedFieldUt());
         QVERIFY(judge.advice().contains(QStringLiteral("% of the sphere")));
         QVERIFY(std::abs(judge.rawFieldUt() - (m.softIron * Vector3d(28, 0, 42) + m.hardIron).norm()) < 1e-9);
-        // A quarter turn about one axis: a sphere fit at most, which is not the full check.
+        // A quarter turn about one axis: a sphere fit at most, an estimate, not judged.
         std::mt19937 rng(5);
         double t = 10000;
         std::normal_distribution<double> noise(0.0, m.noiseUt);
@@ -135,8 +135,7 @@ private Q_SLOTS:
                       Vector3d(0, 0, 45));
             t += 20;
         }
-        QVERIFY(judge.status() == MagEnvironmentJudge::Status::TurnMore
-                || judge.status() == MagEnvironmentJudge::Status::FieldOutOfRange);
+        QCOMPARE(judge.status(), MagEnvironmentJudge::Status::TurnMore);
         QVERIFY(!judge.ellipsoid());
     }
 
