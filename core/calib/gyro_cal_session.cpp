@@ -29,7 +29,7 @@ bool GyroCalSession::start(int angleDeg)
         return false;
     }
     m_angle = angleDeg;
-    m_pending = m_session.sendCommand(protocol::hipnuc::commands::gyroCalStart(angleDeg));
+    m_pending = m_session.sendCommand(protocol::hipnuc::commands::gyroCalStart(angleDeg), kCommandTimeoutMs);
     setState(State::Starting, tr("Starting the gyro calibration (%1 deg).").arg(angleDeg));
     return true;
 }
@@ -38,7 +38,7 @@ bool GyroCalSession::stop()
 {
     if (m_state != State::Running)
         return false;
-    m_pending = m_session.sendCommand(protocol::hipnuc::commands::gyroCalStop());
+    m_pending = m_session.sendCommand(protocol::hipnuc::commands::gyroCalStop(), kCommandTimeoutMs);
     setState(State::Stopping, tr("Stopping the gyro calibration."));
     return true;
 }
