@@ -130,6 +130,15 @@ MagFitUncertainty::Figures singularFigures()
     return f;
 }
 
+// The q quantile of v (+inf when v is empty).
+double quantile(std::vector<double> v, double q)
+{
+    if (v.empty())
+        return kInf;
+    std::sort(v.begin(), v.end());
+    return v[std::min(v.size() - 1, size_t(q * double(v.size())))];
+}
+
 // The figures from the parameter covariance. dims 3: a 3-D fit, the field inclined by
 // `inclination` (rad); dims 2: a 2-D fit, the corrected vector is the horizontal field.
 MagFitUncertainty::Figures figuresOf(const Matrix9d &cov, const Eigen::Matrix3d &w, double inclination, int dims,
@@ -184,12 +193,8 @@ MagFitUncertainty::Figures figuresOf(const Matrix9d &cov, const Eigen::Matrix3d 
             z[i] = normal.next();
         x = (gl * z).cwiseAbs().maxCoeff();
     }
-    std::sort(worst.begin(), worst.end());
-    const auto at = [&worst](double quantile) {
-        return worst[std::min(worst.size() - 1, size_t(quantile * double(worst.size())))] * 180.0 / kPi;
-    };
-    f.headingErrorDeg = at(MagFitUncertainty::kHeadingQuantile);
-    f.headingError95Deg = at(MagFitUncertainty::kHeadingQuantile95);
+    f.headingErrorDeg = quantile(worst, MagFitUncertainty::kHeadingQuantile) * 180.0 / kPi;
+    f.headingError95Deg = quantile(worst, MagFitUncertainty::kHeadingQuantile95) * 180.0 / kPi;
     return f;
 }
 
@@ -210,14 +215,6 @@ double levelTurnError(const Ellipsoid &truth, const Ellipsoid &fit, double incli
         worst = std::max(worst, e);
     }
     return worst;
-}
-
-double quantile(std::vector<double> v, double q)
-{
-    if (v.empty())
-        return kInf;
-    std::sort(v.begin(), v.end());
-    return v[std::min(v.size() - 1, size_t(q * double(v.size())))];
 }
 
 } // namespace

@@ -34,9 +34,7 @@ CanSession::CanSession(QObject *parent, std::unique_ptr<io::Transport> transport
     connect(f, &CanFamily::nodeDiscovered, this, &CanSession::nodeDiscovered);
     connect(f, &CanFamily::jobFinished, this, &CanSession::requestFinished);
     // Every family's requests end in requestEnded too, in the session's one id space.
-    connect(this, &CanSession::requestFinished, this, [this](const CanRequestResult &r) {
-        Q_EMIT requestEnded(RequestResult{r.id, r.status, 0, r.ok ? QString() : r.message, QVariant::fromValue(r)});
-    });
+    connect(this, &CanSession::requestFinished, this, &CanSession::announceEnded<CanRequestResult>);
     connect(f, &CanFamily::scanProgress, this, &CanSession::scanProgress);
     connect(f, &CanFamily::scanFinished, this, &CanSession::scanFinished);
     connect(f, &CanFamily::protocolDetected, this, [this](int p) {

@@ -17,11 +17,8 @@ ModbusSession::ModbusSession(QObject *parent, std::unique_ptr<io::Transport> tra
     connect(f, &ModbusFamily::registersRead, this, &ModbusSession::registersRead);
     connect(f, &ModbusFamily::writeFinished, this, &ModbusSession::writeFinished);
     // Every family's requests end in requestEnded too, in the session's one id space.
-    const auto ended = [this](const ModbusRegisterReply &r) {
-        Q_EMIT requestEnded(RequestResult{r.id, r.status, 0, r.ok ? QString() : r.message, QVariant::fromValue(r)});
-    };
-    connect(this, &ModbusSession::registersRead, this, ended);
-    connect(this, &ModbusSession::writeFinished, this, ended);
+    connect(this, &ModbusSession::registersRead, this, &ModbusSession::announceEnded<ModbusRegisterReply>);
+    connect(this, &ModbusSession::writeFinished, this, &ModbusSession::announceEnded<ModbusRegisterReply>);
     connect(f, &ModbusFamily::nodeIdChanged, this, &ModbusSession::nodeIdChanged);
     connect(f, &ModbusFamily::baudChanged, this, &ModbusSession::baudChanged);
     connect(f, &ModbusFamily::pollRateChanged, this, &ModbusSession::pollRateChanged);

@@ -74,6 +74,13 @@ protected:
     // engine request (a Modbus verified write, a CAN job): its end is announced with
     // requestEnded too, under this id.
     quint64 takeRequestId() { return m_nextId++; }
+    // Announces the end of a front-end's own request (a Modbus register reply, a CAN job result:
+    // id, status, ok, message) with requestEnded, its typed result as the reply.
+    template <class Result>
+    void announceEnded(const Result &r)
+    {
+        Q_EMIT requestEnded(RequestResult{r.id, r.status, 0, r.ok ? QString() : r.message, QVariant::fromValue(r)});
+    }
     // A request refused before it reached the engine: requestEnded(NotSent, why, reply)
     // from the event loop, after the caller has the id.
     quint64 refuse(const QVariant &reply, const QString &why);

@@ -441,9 +441,7 @@ void DeviceWorkspace::sendConsoleCommand(const QString &text)
     device::DeviceSession *session = hipnucSession();
     if (!session)
         return; // the console takes no input for this link
-    const quint64 id = session->sendText(text, kCommandTimeoutMs);
-    m_console->showCommand(id, text);
-    m_commandLog->record(id, text);
+    showSent(session->sendText(text, kCommandTimeoutMs), text);
 }
 
 void DeviceWorkspace::sendCommand(const protocol::hipnuc::Command &command)
@@ -457,7 +455,11 @@ void DeviceWorkspace::sendCommand(const protocol::hipnuc::Command &command)
         m_console->showError(error);
         return;
     }
-    const QString text = QString::fromStdString(command.text);
+    showSent(id, QString::fromStdString(command.text));
+}
+
+void DeviceWorkspace::showSent(quint64 id, const QString &text)
+{
     m_console->showCommand(id, text);
     m_commandLog->record(id, text);
 }

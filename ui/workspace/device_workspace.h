@@ -205,6 +205,8 @@ protected:
     bool event(QEvent *event) override;
 
 private:
+    // A command just sent, in the console (its reply follows by id) and the command log.
+    void showSent(quint64 id, const QString &text);
     void createStatusBar();
     void fitDocks();
     // The docks that need a capability, with it.
