@@ -65,8 +65,11 @@ QString KbootClient::describeSilence(const QString &what) const
 
 bool KbootClient::ping(int attempts, PingResponse *version, QString *error)
 {
+    // Input is cleared before the first ping only: an answer that arrives after its window
+    // (a busy host, a USB adapter's latency) still shows that a bootloader is there, so it
+    // counts while a later ping waits.
+    flushInput();
     for (int i = 0; i < attempts; ++i) {
-        flushInput();
         if (!write(encodePing(), error))
             return false;
         const int64_t deadline = m_link.nowUs() + int64_t(m_timeouts.pingWindowMs) * 1000;

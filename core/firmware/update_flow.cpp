@@ -25,6 +25,9 @@ constexpr size_t kMaxDataPacket = 512; // notes 3.3 step 8: min(MaxPacketSize, 5
 constexpr int kRebootBlPauseMs = 50;
 constexpr int kAfterPingPauseMs = 300;
 constexpr int64_t kQuietMs = 30;
+// A module left in its bootloader by an interrupted update: pings 100 ms apart (their answers
+// count however late they come while the pings last).
+constexpr int kResumePingAttempts = 5;
 
 QString hex32(uint64_t v)
 {
@@ -267,7 +270,7 @@ UpdateFlow::Result UpdateFlow::run(const FirmwareImage &image)
         log(tr("module %1, firmware %2, bootloader %3")
                 .arg(QString::fromStdString(r.before->productName), versionText(r.before->firmware),
                      versionText(r.before->bootloader)));
-    } else if (kb.ping(3, &ping, &e)) {
+    } else if (kb.ping(kResumePingAttempts, &ping, &e)) {
         r.resumed = true;
         if (!m_options.finishInterrupted)
             return finish(r, State::Failed,

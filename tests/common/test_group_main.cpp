@@ -4,6 +4,10 @@
 // names the tests the group holds.
 #include "test_registry.h"
 
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -31,6 +35,30 @@ std::string testName(const char *sourceFile)
     if (dot != std::string::npos)
         name.erase(dot);
     return name;
+}
+
+// Temporary files in memory when the caller chose no TMPDIR. On a disk mounted with `discard`
+// (virtual machines often are), deleting files and fdatasync() stall for seconds while other
+// tests run beside this one, and the kernel's tty layer waits behind that I/O: poll() on a
+// pseudo-terminal blocked in n_tty_poll -> flush_work for up to 4 s under `ctest -j2` (seen with
+// perf's sched_switch call chains), which a simulated module on a pty cannot tell from a dead
+// link. /dev/shm is a tmpfs on Debian; where it is missing, /tmp stays.
+void tempFilesInMemory()
+{
+    if (std::getenv("TMPDIR"))
+        return;
+    struct stat shm {};
+    if (::stat("/dev/shm", &shm) != 0 || !S_ISDIR(shm.st_mode) || ::access("/dev/shm", W_OK) != 0)
+        return;
+    const std::string dir = "/dev/shm/imudesk-tests-" + std::to_string(::getuid());
+    // Searchable by others like /tmp: a test runs the CLI as another user on its own files.
+    if (::mkdir(dir.c_str(), 0755) != 0 && errno != EEXIST)
+        return;
+    struct stat st {};
+    if (::lstat(dir.c_str(), &st) != 0 || !S_ISDIR(st.st_mode) || st.st_uid != ::getuid())
+        return; // someone else's, or not a folder: leave it alone
+    ::chmod(dir.c_str(), 0755);
+    ::setenv("TMPDIR", dir.c_str(), 1);
 }
 
 void listTests(FILE *out)
@@ -72,6 +100,7 @@ int main(int argc, char **argv)
         listTests(stderr);
         return 2;
     }
+    tempFilesInMemory();
     // argv[0] becomes <this executable's folder>/<test>: the folder stays (applicationDirPath),
     // the name is the test's, as when each test was an executable of its own.
     std::string self(argv[0]);
