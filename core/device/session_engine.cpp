@@ -28,8 +28,8 @@ int64_t utcUs()
     return QDateTime::currentMSecsSinceEpoch() * 1000;
 }
 
-// The worker thread reads the device: raise it once (io/reading_priority.h says what the OS
-// allows and why). What it could not get is logged once per process, with how to allow it.
+// The worker thread reads the device: ask once for a prompt wake-up (io/reading_priority.h says
+// what the OS offers and why). A refusal is logged once per process.
 void raiseReadingThread()
 {
     thread_local bool raised = false;
@@ -38,7 +38,7 @@ void raiseReadingThread()
     raised = true;
     const io::ReadingPriority p = io::raiseCurrentThreadForReading();
     static std::atomic<bool> told{false};
-    if (p.niceErrno != 0 && !told.exchange(true))
+    if (!p.raised() && p.sliceErrno != 0 && !told.exchange(true))
         qCInfo(lcEngine).noquote() << p.describe();
 }
 
