@@ -29,9 +29,13 @@ public:
     struct Timeouts {
         int pingWindowMs = 100;
         int pingPauseMs = 100;
-        int commandMs = 1000;
+        // A command's ACK and response, and each data packet's ACK or arrival: 5 s, blhost's
+        // default serial timeout. A host whose tty worker thread is held up (a busy machine:
+        // up to 3.3 s measured beside two busy loops, see io/reading_priority.h) is not a dead
+        // bootloader; a dead one is still named within seconds.
+        int commandMs = 5000;
         int eraseMs = 10000;
-        int dataAckMs = 2000;
+        int dataAckMs = 5000;
         int maxRetries = 3;
     };
     struct Counters {
