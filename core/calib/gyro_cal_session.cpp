@@ -29,7 +29,8 @@ bool GyroCalSession::start(int angleDeg)
         return false;
     }
     m_angle = angleDeg;
-    m_pending = m_session.sendCommand(protocol::hipnuc::commands::gyroCalStart(angleDeg), kCommandTimeoutMs);
+    m_pending = m_session.sendCommand(protocol::hipnuc::commands::gyroCalStart(angleDeg),
+                                      device::DeviceSession::kBusyLinkReplyTimeoutMs);
     setState(State::Starting, tr("Starting the gyro calibration (%1 deg).").arg(angleDeg));
     return true;
 }
@@ -38,7 +39,8 @@ bool GyroCalSession::stop()
 {
     if (m_state != State::Running)
         return false;
-    m_pending = m_session.sendCommand(protocol::hipnuc::commands::gyroCalStop(), kCommandTimeoutMs);
+    m_pending = m_session.sendCommand(protocol::hipnuc::commands::gyroCalStop(),
+                                      device::DeviceSession::kBusyLinkReplyTimeoutMs);
     setState(State::Stopping, tr("Stopping the gyro calibration."));
     return true;
 }

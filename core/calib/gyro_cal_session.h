@@ -21,9 +21,6 @@ public:
     enum class State { Idle, Starting, Running, Stopping, Succeeded, Failed };
     Q_ENUM(State)
     static constexpr int kMinAngle = 720, kMaxAngle = 1800;
-    // As the configuration's commands: on a busy link the reply queues behind data frames (at
-    // 1 kHz beside two busy loops, USRCAL STOP's OK came after the default 1 s).
-    static constexpr int kCommandTimeoutMs = 3000;
 
     explicit GyroCalSession(device::DeviceSession &session, QObject *parent = nullptr);
 

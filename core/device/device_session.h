@@ -37,6 +37,9 @@ public:
     quint64 sendText(const QString &text, int timeoutMs = 1000);
     // A command made by the typed builders (protocol::hipnuc::commands): one whose arguments
     // were refused is not sent; 0, and `error` gets why.
+    // A reply that must not be lost to a busy link (a configuration change, a calibration's
+    // start or stop): at 1 kHz beside two busy loops it queues behind data frames past 1 s.
+    static constexpr int kBusyLinkReplyTimeoutMs = 3000;
     quint64 sendCommand(const protocol::hipnuc::Command &command, int timeoutMs = 1000, QString *error = nullptr);
     // Changes the host side of the link (after SERIALCONFIG).
     void setHostBaud(int baud);

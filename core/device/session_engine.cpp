@@ -38,7 +38,7 @@ void raiseReadingThread()
     raised = true;
     const io::ReadingPriority p = io::raiseCurrentThreadForReading();
     static std::atomic<bool> told{false};
-    if (!p.raised() && p.sliceErrno != 0 && !told.exchange(true))
+    if (p.sliceErrno != 0 && !told.exchange(true))
         qCInfo(lcEngine).noquote() << p.describe();
 }
 

@@ -49,7 +49,7 @@ public:
         QString error;                   // why the flow stopped (planning, busy, read-back)
     };
 
-    static constexpr int kCommandTimeoutMs = 3000; // replies queue behind data frames on a busy link
+    static constexpr int kCommandTimeoutMs = device::DeviceSession::kBusyLinkReplyTimeoutMs;
     static constexpr int kReadTimeoutMs = 3000;
     static constexpr int kResetSettleMs = 500;
 
