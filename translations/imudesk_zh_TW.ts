@@ -1217,14 +1217,6 @@
     </message>
 </context>
 <context>
-    <name>FamilyDetector</name>
-    <message>
-        <location filename="../core/device/family_detector.cpp" line="+126" />
-        <source>neither a HiPNUC module nor an HEC495 answered on %1 at %2 baud: check the power, the wiring and that no other program holds the port</source>
-        <translation>%1 上以 %2 波特率既無 HiPNUC 模組也無 HEC495 回應：請檢查電源、接線，並確認沒有其他程式佔用該串列埠</translation>
-    </message>
-</context>
-<context>
     <name>FileAnalysis</name>
     <message>
         <location filename="../core/record/file_analysis.cpp" line="+53" />
@@ -1682,7 +1674,7 @@
         <translation>%1：開機載入程式沒有回應；請檢查線纜和電源，然後重新執行更新</translation>
     </message>
     <message>
-        <location line="+30" />
+        <location line="+33" />
         <source>no bootloader answered %1 pings; check the port and baud rate, power-cycle the module and run the update again</source>
         <translation>%1 次連線偵測均無開機載入程式回應；請檢查串列埠和波特率，將模組斷電重啟後重新執行更新</translation>
     </message>
@@ -1991,17 +1983,18 @@
 <context>
     <name>LinkFactory</name>
     <message>
-        <location filename="../ui/workspace/link_factory.cpp" line="+59" />
+        <location filename="../ui/workspace/link_factory.cpp" line="+85" />
         <source>Simulated HEC495</source>
         <translation>模擬 HEC495</translation>
     </message>
     <message>
         <location line="+0" />
+        <location line="+13" />
         <source>HEC495 on %1</source>
         <translation>%1 上的 HEC495</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="-38" />
         <source>Disconnect first, then connect to the compass.</source>
         <translation>請先中斷連線，再連線到羅盤。</translation>
     </message>
@@ -2016,7 +2009,17 @@
         <translation>羅盤設定</translation>
     </message>
     <message>
-        <location line="+16" />
+        <location line="+34" />
+        <source>Disconnect first, then connect to the module.</source>
+        <translation>請先中斷連線，再連線模組。</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>%1 answered, but ImuDesk has no view for its family.</source>
+        <translation>%1 有回應，但 ImuDesk 沒有適用於該裝置系列的檢視。</translation>
+    </message>
+    <message>
+        <location line="+13" />
         <source>The simulated compass could not start: %1</source>
         <translation>模擬羅盤無法啟動：%1</translation>
     </message>
@@ -2396,7 +2399,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>MagEnvironmentJudge</name>
     <message>
-        <location filename="../core/calib/mag_environment_judge.cpp" line="+167" />
+        <location filename="../core/calib/mag_environment_judge.cpp" line="+166" />
         <source>|B| changed by %1 µT while the module was still: something near it moves or switches (a magnet, a motor, a current). Remove it or choose another place.</source>
         <translation>模組靜止時 |B| 變化了 %1 µT：附近有東西在移動或通斷（磁鐵、電機、電流）。請移走它或換一個地方。</translation>
     </message>
@@ -3495,7 +3498,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>UpdateFlow</name>
     <message>
-        <location filename="../core/firmware/update_flow.cpp" line="+36" />
+        <location filename="../core/firmware/update_flow.cpp" line="+39" />
         <location line="+196" />
         <location line="+174" />
         <source>unknown</source>
@@ -3834,12 +3837,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>陀螺儀校準已在進行中。</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+6" />
         <source>Starting the gyro calibration (%1 deg).</source>
         <translation>正在啟動陀螺儀校準（%1 deg）。</translation>
     </message>
     <message>
-        <location line="+9" />
+        <location line="+10" />
         <source>Stopping the gyro calibration.</source>
         <translation>正在停止陀螺儀校準。</translation>
     </message>
@@ -3976,7 +3979,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::device::CanSession</name>
     <message>
-        <location filename="../core/device/can_session.cpp" line="+100" />
+        <location filename="../core/device/can_session.cpp" line="+98" />
         <source>HiPNUC J1939</source>
         <translation>HiPNUC J1939</translation>
     </message>
@@ -4513,9 +4516,17 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
 </context>
 <context>
+    <name>imudesk::device::LinkOpener</name>
+    <message>
+        <location filename="../core/device/link_opener.cpp" line="+131" />
+        <source>the port of %1 was lost while it was handed to the device's session</source>
+        <translation>%1 的連接埠在交給裝置工作階段時遺失</translation>
+    </message>
+</context>
+<context>
     <name>imudesk::device::ModbusSession</name>
     <message>
-        <location filename="../core/device/modbus_session.cpp" line="+98" />
+        <location filename="../core/device/modbus_session.cpp" line="+95" />
         <source>ILLEGAL FUNCTION (01): the device does not support this request at %1.</source>
         <translation>ILLEGAL FUNCTION（01）：裝置不支援對 %1 的此項請求。</translation>
     </message>
@@ -4671,9 +4682,32 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
 </context>
 <context>
+    <name>imudesk::device::SerialFamilyScan</name>
+    <message>
+        <location filename="../core/device/serial_family_scan.cpp" line="+93" />
+        <source>trying %1 baud</source>
+        <translation>正在嘗試 %1 鮑率</translation>
+    </message>
+    <message>
+        <location line="+17" />
+        <source>neither a HiPNUC module nor an HEC495 answered on %1 at %2 baud: check the power, the wiring and that no other program holds the port</source>
+        <translation>%1 上以 %2 鮑率皆無 HiPNUC 模組或 HEC495 回應：請檢查電源、接線，並確認沒有其他程式佔用該連接埠</translation>
+    </message>
+    <message>
+        <location filename="../core/device/serial_family_scan.h" line="+44" />
+        <source>serial</source>
+        <translation>序列埠</translation>
+    </message>
+</context>
+<context>
     <name>imudesk::device::SessionEngine</name>
     <message>
-        <location filename="../core/device/session_engine.cpp" line="+128" />
+        <location filename="../core/device/session_engine.cpp" line="+140" />
+        <source>the link went to the device's own session</source>
+        <translation>連結已交給裝置自己的工作階段</translation>
+    </message>
+    <message>
+        <location line="+21" />
         <source>the connection was closed</source>
         <translation>連線已關閉</translation>
     </message>
@@ -8491,7 +8525,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>%2 上的 %1</translation>
     </message>
     <message>
-        <location line="+44" />
+        <location line="+62" />
         <source>Disconnect first, then connect to the simulated device.</source>
         <translation>請先中斷連線，再連線到模擬裝置。</translation>
     </message>
@@ -8506,7 +8540,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>模擬 %1（韌體 %2）</translation>
     </message>
     <message>
-        <location line="+219" />
+        <location line="+221" />
         <source>Not connected</source>
         <translation>未連線</translation>
     </message>
@@ -10160,7 +10194,7 @@ Samples: %3</source>
 <context>
     <name>imudesk::ui::MainWindow</name>
     <message>
-        <location filename="../ui/workspace/main_window.cpp" line="+369" />
+        <location filename="../ui/workspace/main_window.cpp" line="+367" />
         <source>Choose a port first.</source>
         <translation>請先選擇串列埠。</translation>
     </message>

@@ -64,10 +64,8 @@ int writeCanFlashDump(sim::CanSimDevice &device, const QString &path);
 void addFlashDumpOption(QCommandLineParser &p);
 int writeFlashDump(sim::PtySimulator &simulator, const QCommandLineParser &p);
 int cmdHec495(const QStringList &args);
-// commands_hec495.cpp: probe's family detection (prints and returns an exit code for an
-// HEC495; returns -1 to let the HiPNUC probe go on, at *hipnucBaud when one was found),
-// and simulate --device hec495.
-int probeFamily(const QString &port, int baud, bool json, int *hipnucBaud);
+// commands_hec495.cpp: what probe prints for an HEC495 it found, and simulate --device hec495.
+void printHec495Probe(const QString &port, int baud, int address, bool json);
 int simulateHec495(const QCommandLineParser &p);
 int cmdCan(const QStringList &args);
 // simulate --can PLUGIN:INTERFACE: serves a simulated CAN device until SIGINT/SIGTERM (commands_can.cpp).

@@ -1,5 +1,7 @@
 // imudesk-cli commands that talk to a device: ports, probe, read, send, simulate.
 #include "cli_context.h"
+#include "device/hec495_session.h"
+#include "device/link_opener.h"
 #include "format/sample_json.h"
 #include "sim/pty_simulator.h"
 
@@ -100,15 +102,37 @@ int cmdProbe(const QStringList &args)
     int baud = 0;
     if (!baudFrom(p, &baud))
         return ExitUsage;
-    if (const int hec = probeFamily(p.positionalArguments().front(), baud, p.isSet(QStringLiteral("json")), &baud);
-        hec >= 0)
-        return hec;
-    device::DeviceSession session;
-    model::DeviceIdentity id;
-    int found = baud;
-    QString error;
     const QString port = p.positionalArguments().front();
-    if (!connectSession(session, port, baud, &id, &found, &error))
+    // The port is opened once: the detection tells the family and the rate, and its session
+    // takes the port over (device::LinkOpener).
+    device::LinkOpener opener;
+    device::LinkRequest request = device::LinkRequest::serial(port, baud);
+    request.autoReconnect = false;
+    QString error;
+    bool ready = false;
+    QObject::connect(&opener, &device::LinkOpener::ready, [&] { ready = true; });
+    QObject::connect(&opener, &device::LinkOpener::failed, [&](const QString &why) { error = why; });
+    opener.open(request);
+    // At most 11 rates of under a second each; leave room.
+    waitFor([&] { return ready || !error.isEmpty(); }, 30000);
+    if (!ready) {
+        opener.cancel();
+        return fail(interrupted() ? QStringLiteral("interrupted")
+                    : error.isEmpty() ? QStringLiteral("timed out probing %1").arg(port) : error,
+                    interrupted() ? ExitInterrupted : ExitFailure);
+    }
+    device::LinkOpener::Opened link = opener.take();
+    const int found = opener.request().baud;
+    if (auto *compass = qobject_cast<device::Hec495Session *>(link.link.get())) {
+        printHec495Probe(port, found, opener.request().hec495Address, p.isSet(QStringLiteral("json")));
+        compass->close();
+        return ExitOk;
+    }
+    auto *session = qobject_cast<device::DeviceSession *>(link.link.get());
+    if (!session)
+        return fail(QStringLiteral("%1: no serial device session").arg(port));
+    model::DeviceIdentity id;
+    if (!connectSession(*session, port, found, &id, nullptr, &error))
         return fail(error, interrupted() ? ExitInterrupted : ExitFailure);
     if (p.isSet(QStringLiteral("json"))) {
         QJsonObject o = identityJson(id);

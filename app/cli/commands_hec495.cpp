@@ -1,7 +1,6 @@
 // imudesk-cli commands for the Witlink HEC495 compass: "hec495 PORT ACTION", the family
 // detection behind "probe", and "simulate --device hec495".
 #include "cli_context.h"
-#include "device/family_detector.h"
 #include "device/hec495_session.h"
 #include "protocol/nmea/nmea_sample.h"
 #include "sim/hec495_simulator.h"
@@ -133,32 +132,24 @@ int calibrate(Hec495Session &s, const QString &methodName, int timeoutS, bool js
 
 } // namespace
 
-int probeFamily(const QString &port, int baud, bool json, int *hipnucBaud)
+void printHec495Probe(const QString &port, int baud, int address, bool json)
 {
-    const auto res = device::FamilyDetector::detect(port, baud > 0 ? std::vector<int>{baud} : std::vector<int>{});
-    if (res.family == device::FamilyDetector::Family::Hipnuc) {
-        *hipnucBaud = res.baud;
-        return -1; // the HiPNUC probe goes on at this baud
-    }
-    if (res.family != device::FamilyDetector::Family::Hec495)
-        return -1; // the HiPNUC probe reports what it finds
     if (json) {
         QJsonObject o;
         o[QStringLiteral("port")] = port;
-        o[QStringLiteral("baud")] = res.baud;
+        o[QStringLiteral("baud")] = baud;
         o[QStringLiteral("family")] = QStringLiteral("hec495");
         o[QStringLiteral("product")] = QStringLiteral("HEC495");
-        o[QStringLiteral("address")] = res.address;
+        o[QStringLiteral("address")] = address;
         o[QStringLiteral("identified")] = true;
         printJson(o);
     } else {
         out(QStringLiteral("port: %1").arg(port));
-        out(QStringLiteral("baud: %1").arg(res.baud));
+        out(QStringLiteral("baud: %1").arg(baud));
         out(QStringLiteral("family: hec495"));
         out(QStringLiteral("product: HEC495"));
-        out(QStringLiteral("address: %1").arg(res.address));
+        out(QStringLiteral("address: %1").arg(address));
     }
-    return ExitOk;
 }
 
 int simulateHec495(const QCommandLineParser &p)

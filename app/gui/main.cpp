@@ -1,7 +1,7 @@
 // ImuDesk GUI: command line, language, settings, main window.
 #include "workspace/device_workspace.h"
 #include "workspace/language_switcher.h"
-#include "workspace/link_factory.h"
+#include "families/family_ui.h"
 #include "workspace/tool_actions.h"
 #include "workspace/main_window.h"
 #include "model/device_identity.h"
@@ -209,7 +209,11 @@ int main(int argc, char *argv[])
         QSettings store;
         settings.load(store);
     }
+    // The device families the window shows, each with its docks and tools: registered once, here.
+    imudesk::ui::FamilyUiRegistry families;
+    imudesk::ui::registerBuiltInFamilies(families);
     MainWindow window(settings);
+    window.setFamilies(&families);
     window.setPreferences(prefs);
     QObject::connect(&window, &MainWindow::preferencesChanged, &window, [](const Preferences &changed) {
         QSettings store;
@@ -228,16 +232,21 @@ int main(int argc, char *argv[])
         const QString link = parser.value(linkOption);
         QString error;
         bool ok = true;
-        imudesk::ui::DeviceWorkspace *ws = window.freeWorkspaceForLink();
         if (link == QLatin1String("hec495")) {
             ok = window.connectSimulatedHec495(&error);
         } else if (link == QLatin1String("modbus")) {
-            ok = imudesk::ui::LinkFactory::connectModbus(*ws, {}, true, simOptions.motion, &error);
+            imudesk::device::LinkRequest request = imudesk::device::LinkRequest::modbusDevice({});
+            request.simulate = true;
+            request.motion = simOptions.motion;
+            ok = window.openLink(request, &error);
         } else if (link == QLatin1String("can") || link == QLatin1String("canopen")) {
             imudesk::device::CanSessionOptions o;
             o.protocol = link == QLatin1String("can") ? imudesk::protocol::can::CanProtocol::J1939
                                                       : imudesk::protocol::can::CanProtocol::CanOpen;
-            ok = imudesk::ui::LinkFactory::connectCan(*ws, o, true, simOptions.motion, &error);
+            imudesk::device::LinkRequest request = imudesk::device::LinkRequest::canBus(o);
+            request.simulate = true;
+            request.motion = simOptions.motion;
+            ok = window.openLink(request, &error);
         } else {
             ok = window.tools()->openCapture(link);
         }

@@ -61,6 +61,14 @@ void Session::openLink(const QString &address, int baud)
     postTo(m_engine, [e = m_engine, address, baud] { e->open(address, baud); });
 }
 
+std::unique_ptr<io::Transport> Session::releaseTransport()
+{
+    std::unique_ptr<io::Transport> taken;
+    QThread *here = QThread::currentThread();
+    callAndWait(m_engine, [e = m_engine, &taken, here] { taken = e->releaseTransport(here); });
+    return taken;
+}
+
 void Session::close()
 {
     postTo(m_engine, [e = m_engine] { e->close(); });

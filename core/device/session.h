@@ -57,6 +57,11 @@ public:
     // Raw bytes of the link, both directions (bounded).
     RawByteLog &rawLog() { return m_rawLog; }
 
+    // Takes the open transport away from this session (closed afterwards, for good) and moves
+    // it to the calling thread: a detection hands the port it opened to the family's session,
+    // which opens nothing again (LinkOpener). Waits for the engine's thread.
+    std::unique_ptr<io::Transport> releaseTransport();
+
 Q_SIGNALS:
     // A request with an id ended; result.reply holds the family's typed reply.
     void requestEnded(const imudesk::device::RequestResult &result);

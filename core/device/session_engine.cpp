@@ -6,6 +6,7 @@
 #include <QCoreApplication>
 #include <QDateTime>
 #include <QLoggingCategory>
+#include <QThread>
 
 #include <atomic>
 #include <chrono>
@@ -102,12 +103,22 @@ void SessionEngine::setIdentity(const model::DeviceIdentity &identity)
 void SessionEngine::open(const QString &address, int baud)
 {
     raiseReadingThread();
-    close();
+    if (!m_transport)
+        return; // handed over (releaseTransport): this engine has no link any more
+    // A transport handed over open by a detection (LinkOpener) to a session that never opened:
+    // taken as it is, so that the port is opened once.
+    const bool adopted = m_state == SessionState::Closed && m_transport->isOpen() && m_transport->address() == address;
+    if (!adopted)
+        close();
     m_workingBaud = 0;
     m_identity = {};
     setState(SessionState::Opening, address);
     QString error;
-    if (!m_transport->open(address, m_family->firstBaud(baud), &error)) {
+    const int first = m_family->firstBaud(baud);
+    if (adopted) {
+        if (m_transport->baud() != first)
+            m_transport->setBaud(first);
+    } else if (!m_transport->open(address, first, &error)) {
         setState(SessionState::Failed, error);
         Q_EMIT errorOccurred(error);
         return;
@@ -119,8 +130,30 @@ void SessionEngine::open(const QString &address, int baud)
     m_family->opened(baud);
 }
 
+std::unique_ptr<io::Transport> SessionEngine::releaseTransport(QThread *thread)
+{
+    m_family->stopping();
+    m_reconnector.stop();
+    m_reconnector.setEnabled(false);
+    m_idleTimer.stop();
+    m_statsTimer.stop();
+    cancelAll(RequestStatus::Cancelled, tr("the link went to the device's own session"));
+    if (m_recorder)
+        finishRecording(QString());
+    if (!m_transport)
+        return {};
+    m_transport->disconnect(this);
+    io::Transport *t = std::exchange(m_transport, nullptr);
+    t->setParent(nullptr);
+    t->moveToThread(thread);
+    setState(SessionState::Closed);
+    return std::unique_ptr<io::Transport>(t);
+}
+
 void SessionEngine::close()
 {
+    if (!m_transport)
+        return; // handed over (releaseTransport)
     m_family->stopping();
     const bool waiting = m_reconnector.waiting() || m_state == SessionState::Reconnecting;
     m_reconnector.stop();
@@ -398,7 +431,7 @@ void SessionEngine::publishStats()
     SessionStats s;
     m_family->fillCounters(s);
     s.reconnects = m_reconnector.count();
-    s.baud = m_transport->baud();
+    s.baud = m_transport ? m_transport->baud() : 0;
     const qint64 nowMs = m_statsClock.isValid() ? m_statsClock.elapsed() : 0;
     const double dt = double(nowMs - m_lastStatsMs) / 1000.0;
     if (addRates(s, m_lastStats, dt)) {
@@ -419,6 +452,8 @@ void SessionEngine::startRecording(const QString &path, const record::CaptureHea
 {
     if (m_recorder)
         finishRecording(QString());
+    if (!m_transport)
+        return;
     record::CaptureHeader h;
     h.setIdentity(m_identity);
     h.set(record::CaptureHeader::kLinkKind, m_family->linkKind().toStdString());

@@ -64,7 +64,14 @@ public:
     void releaseHeldWrite();
     void cancelAll(RequestStatus status, const QString &why);
 
+    // Hands the open transport to another engine (the serial family detection, LinkOpener):
+    // the family stops, requests are cancelled, and the transport, no longer this engine's,
+    // moves to `thread` without a parent. The engine is closed and cannot open again.
+    std::unique_ptr<io::Transport> releaseTransport(QThread *thread);
+
 public Q_SLOTS:
+    // A transport that is already open at `address` (handed over by a detection) is taken as
+    // it is, tuned to `baud` when one is given; else it is opened.
     void open(const QString &address, int baud);
     void close();
     void setAutoReconnect(bool on);

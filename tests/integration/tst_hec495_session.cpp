@@ -430,7 +430,7 @@ private Q_SLOTS:
     // angles stay live.
     void demoCompassChartsPastTenSeconds()
     {
-        Hec495Options o; // as LinkFactory::connectSimulatedHec495
+        Hec495Options o; // as LinkRequest::simulatedHec495
         o.rateHz = 50;
         o.motion = Motion::Spin; // the heading passes 180
         auto c = serve(o);

@@ -5,7 +5,7 @@
 #include "charts/chart_panel.h"
 #include "workspace/device_workspace.h"
 #include "device/device_link.h"
-#include "workspace/link_factory.h"
+#include "families/family_ui.h"
 #include "workspace/main_window.h"
 #include "workspace/raw_bytes_view.h"
 #include "itemmodels/latest_values_model.h"
@@ -155,7 +155,10 @@ private Q_SLOTS:
         ws.show();
         QVERIFY(QTest::qWaitForWindowExposed(&ws));
         QString error;
-        QVERIFY2(ui::LinkFactory::connectSimulatedHec495(ws, sim::Motion::Spin, &error), qPrintable(error));
+        ui::FamilyUiRegistry families;
+        ui::registerBuiltInFamilies(families);
+        QVERIFY2(ui::openLinkIn(ws, families, device::LinkRequest::simulatedHec495(sim::Motion::Spin), &error),
+                 qPrintable(error));
         QTRY_COMPARE_WITH_TIMEOUT(ws.state(), SessionState::Connected, 15000);
         QTRY_VERIFY_WITH_TIMEOUT(ws.link().store().totalAppended() > 20, 15000);
         QTRY_VERIFY_WITH_TIMEOUT(ws.chartPanel()->history().size() > 20, 5000);

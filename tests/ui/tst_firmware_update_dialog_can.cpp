@@ -6,7 +6,6 @@
 #include "../common/firmware_files.h"
 #include "../common/test_main.h"
 #include "ui/firmware/firmware_update_dialog.h"
-#include "workspace/link_factory.h"
 #include "workspace/main_window.h"
 #include "protocol/ihex/intel_hex_writer.h"
 #include "sim/can_simulator.h"
@@ -155,7 +154,9 @@ private Q_SLOTS:
         o.protocol = protocol::can::CanProtocol::CanOpen;
         o.node = 8;
         QString error;
-        QVERIFY2(ui::LinkFactory::connectCan(*ws, o, true, sim::Motion::Static, &error), qPrintable(error));
+        device::LinkRequest request = device::LinkRequest::canBus(o);
+        request.simulate = true;
+        QVERIFY2(w.openLink(request, &error), qPrintable(error));
         auto *action = w.findChild<QAction *>(QStringLiteral("firmwareAction"));
         QVERIFY(action);
         QVERIFY2(spinUntil([&] { return ws->state() == device::SessionState::Connected && action->isEnabled(); },

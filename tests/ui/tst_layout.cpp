@@ -29,7 +29,6 @@
 #include "device/modbus_types.h"
 #include "workspace/device_workspace.h"
 #include "workspace/language_switcher.h"
-#include "workspace/link_factory.h"
 #include "workspace/main_window.h"
 #include "model/main_status.h"
 #include "itemmodels/latest_values_model.h"
@@ -228,17 +227,22 @@ class TstLayout : public QObject {
             return imudesk::test::waitFor([ws] { return !ws->detailsDock()->isHidden(); }, 5000);
         }
         case Kind::Hec495: return w.connectSimulatedHec495(error);
-        case Kind::Modbus:
-            return ui::LinkFactory::connectModbus(*w.freeWorkspaceForLink(), {}, true, sim::Motion::Static, error);
+        case Kind::Modbus: {
+            device::LinkRequest request = device::LinkRequest::modbusDevice({});
+            request.simulate = true;
+            return w.openLink(request, error);
+        }
         case Kind::J1939:
         case Kind::CanOpen: {
             device::CanSessionOptions o;
             o.protocol = kind == Kind::J1939 ? protocol::can::CanProtocol::J1939 : protocol::can::CanProtocol::CanOpen;
-            return ui::LinkFactory::connectCan(*w.freeWorkspaceForLink(), o, true, sim::Motion::Static, error);
+            device::LinkRequest request = device::LinkRequest::canBus(o);
+            request.simulate = true;
+            return w.openLink(request, error);
         }
         case Kind::Replay: {
             // The capture plays once it is open: runKind() waits for its data on the views.
-            return ui::LinkFactory::openReplay(*w.freeWorkspaceForLink(), m_capture, error);
+            return w.openLink(device::LinkRequest::capture(m_capture), error);
         }
         }
         return false;

@@ -18,6 +18,7 @@
 #include "itemmodels/latest_values_model.h"
 #include "workspace/status_flags_widget.h"
 #include "workspace/window_settings.h"
+#include "sim/hec495_simulator.h"
 #include "sim/pty_simulator.h"
 
 #include <QAction>
@@ -427,7 +428,7 @@ private Q_SLOTS:
         box->close();
     }
 
-    // Baud "Auto": the family probe runs on a thread the window owns. It finds the simulated
+    // Baud "Auto": the detection belongs to the window. It finds the simulated
     // module and opens the session at the rate found; a window closed while its probe still
     // listens waits for it, and nothing runs after the window is gone.
     void autoBaudProbeIsOwnedByTheWindow()
@@ -447,6 +448,30 @@ private Q_SLOTS:
             w.connectPort(simulator.devicePath(), 0); // still probing when the window goes
         }
         QCoreApplication::processEvents(); // a late result would land here, on a dead window
+    }
+
+    // Baud "Auto" on a port with an HEC495: the detection hands the port to a compass session,
+    // shown with the compass's docks, at the compass's rate and address; nothing found on a
+    // port says so once, with what to check.
+    void autoBaudFindsTheCompass()
+    {
+        imudesk::sim::Hec495Options o;
+        o.baud = 19200;
+        o.address = 7;
+        imudesk::sim::PtySimulator simulator(std::make_unique<imudesk::sim::Hec495Simulator>(o));
+        QString error;
+        QVERIFY2(simulator.start(&error), qPrintable(error));
+        MainWindow w;
+        QStringList errors;
+        w.setErrorPresenter([&errors](const QString &e) { errors << e; });
+        w.connectPort(simulator.devicePath(), 0);
+        QTRY_COMPARE_WITH_TIMEOUT(w.currentWorkspace()->state(), imudesk::device::SessionState::Connected, 20000);
+        imudesk::ui::DeviceWorkspace *ws = w.currentWorkspace();
+        QVERIFY(!ws->hipnucSession());
+        QTRY_VERIFY(ws->identity() && ws->identity()->busAddress == 7);
+        QVERIFY(ws->findChild<QDockWidget *>(QStringLiteral("headingDialDock")));
+        QCOMPARE(ws->link().linkKind(), QStringLiteral("HEC495 serial"));
+        QVERIFY2(errors.isEmpty(), qPrintable(errors.join(u'\n')));
     }
 
     void connectionBarListsSimulators()

@@ -1,7 +1,7 @@
 #pragma once
 // Device > Connect over Modbus RTU… / Connect over CAN…: the link's parameters, with the
 // simulated devices offered so that both work without hardware. The dialog only collects
-// choices; the main window opens the link (LinkFactory) with them.
+// choices; the main window opens the link (device::LinkOpener, ui/families) with them.
 //
 // Folder ui/bus/: Modbus RTU and CAN. These connect dialogs, the ModbusScanDialog, the
 // RegisterBrowser, the CanConfigPanel and the CanMonitorWidget. It mirrors the bus sessions of

@@ -375,6 +375,24 @@ void DeviceWorkspace::connectPort(const QString &port, int baud)
     session.open(port, baud);
 }
 
+bool DeviceWorkspace::connectSession(std::unique_ptr<device::DeviceSession> session, const QString &port, int baud,
+                                     const std::function<void()> &start)
+{
+    if (isBusy() || !session)
+        return false;
+    stopSimulator();
+    bindLink(std::move(session), {});
+    m_identity.reset();
+    m_stats.reset();
+    m_baud = baud;
+    m_target = port;
+    m_configPanel->setPortName(port);
+    hipnucSession()->setAutoReconnect(m_autoReconnect);
+    Q_EMIT titleChanged(title());
+    start();
+    return true;
+}
+
 bool DeviceWorkspace::connectSimulated(const sim::SimOptions &options, int baud, QString *error)
 {
     if (isBusy()) {

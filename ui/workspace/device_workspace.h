@@ -5,12 +5,12 @@
 // can be rearranged; the arrangement is saved and restored by the main window.
 //
 // Folder ui/workspace/: the application shell. MainWindow with one DeviceWorkspace per tab, the
-// connection bar, LinkFactory (opens HEC495, Modbus, CAN, simulated and replayed links), the
-// port choice, the tool actions, the preferences and their dialog, window settings, the size of
+// connection bar, the port choice, the tool actions, the preferences and their dialog, window settings, the size of
 // work-place dialogs, the language switcher, the workspace's docks (console, command log, raw
 // bytes, status flags) and the painting helpers shared by self-painted widgets. It mirrors
 // core/device: a workspace holds one device::DeviceLink (DeviceSession, Hec495Session,
-// ModbusSession, CanSession, a replay) and shows the docks its capabilities() call for, and, for
+// ModbusSession, CanSession, a replay) and shows the docks its capabilities() call for; a
+// family's UI plug-in (ui/families) adds that family's docks and tools; and, for
 // the simulator entries, a device from core/sim. Its views read the link's SampleStore and RawByteLog on the view clock;
 // the values dock shows models::LatestValuesModel and the command log models::CommandLogModel,
 // each in a QTableView (the console's completer uses a QStringListModel).
@@ -77,6 +77,10 @@ public:
 
     // Opens a serial port (baud 0 = auto-detect).
     void connectPort(const QString &port, int baud);
+    // Shows a HiPNUC serial session made elsewhere (a detection that opened the port hands it
+    // over, device::LinkOpener) and starts it with `start`. False while busy.
+    bool connectSession(std::unique_ptr<device::DeviceSession> session, const QString &port, int baud,
+                        const std::function<void()> &start);
     // Starts a simulated device on a pseudo-terminal and connects to it like to hardware.
     bool connectSimulated(const sim::SimOptions &options, int baud, QString *error = nullptr);
     // Shows another link (a HEC495, a Modbus or CAN device, a replayed capture) in this

@@ -1,9 +1,7 @@
 #include "workspace/main_window.h"
 
-#include "device/family_detector.h"
 #include "protocol/hipnuc/ascii_command.h"
 #include "ui/station/station_view.h"
-#include "workspace/link_factory.h"
 #include "workspace/preferences_dialog.h"
 #include "workspace/tool_actions.h"
 #include "workspace/window_helpers.h"
@@ -42,6 +40,7 @@ using device::SessionState;
 MainWindow::MainWindow(const WindowSettings &settings, QWidget *parent) : QMainWindow(parent)
 {
     setObjectName(QStringLiteral("mainWindow"));
+    registerBuiltInFamilies(m_builtInFamilies);
 
     m_tabs = new QTabWidget(this);
     m_tabs->setObjectName(QStringLiteral("workspaceTabs"));
@@ -97,11 +96,10 @@ MainWindow::MainWindow(const WindowSettings &settings, QWidget *parent) : QMainW
 
 MainWindow::~MainWindow()
 {
-    // A family probe still listening finishes its port (a few seconds at most) before the
-    // window goes; its result is not wanted any more.
-    for (jobs::BackgroundJob *probe : std::as_const(m_probes)) {
-        probe->disconnect(this);
-        delete probe; // waits for the worker; the result's apply never runs
+    // A detection still under way closes its port; its result is not wanted any more.
+    for (device::LinkOpener *opener : std::as_const(m_openers)) {
+        opener->disconnect(this);
+        delete opener;
     }
     // Workspaces close their ports (and stop their simulators) as they go.
     m_tabs->disconnect(this);
@@ -280,41 +278,41 @@ void MainWindow::connectPort(const QString &port, int baud)
         freeWorkspace()->connectPort(port, baud);
         return;
     }
-    // Baud "Auto": first tell a HiPNUC module from a HEC495 compass (FamilyDetector listens,
-    // then asks each family at each rate), off the GUI thread; then open the right session.
+    // Baud "Auto": the port is opened once; the detection tells a HiPNUC module from a HEC495
+    // compass and finds the rate (device::LinkOpener), then the family's session takes the port.
     QPointer<DeviceWorkspace> ws = freeWorkspace();
     m_connectionBar->setSessionState(SessionState::Detecting);
     m_connectAction->setEnabled(false);
-    // A job this window owns and waits for (never a detached thread): the result comes back
-    // on the GUI thread, and the window outlives the probe.
-    auto *probe = new jobs::BackgroundJob(this);
-    m_probes.push_back(probe);
-    connect(probe, &jobs::BackgroundJob::finished, this, [this, probe] {
-        m_probes.removeOne(probe);
-        probe->deleteLater();
+    auto *opener = new device::LinkOpener(this);
+    m_openers.push_back(opener);
+    const auto done = [this, opener] {
+        m_openers.removeOne(opener);
+        opener->deleteLater();
+    };
+    connect(opener, &device::LinkOpener::ready, this, [this, ws, opener, done] {
+        connectDetected(ws, opener);
+        done();
     });
-    probe->launch(QStringLiteral("imudesk-family-probe"), [this, ws, port](const jobs::BackgroundJob::Context &) {
-        const device::FamilyDetector::Result r = device::FamilyDetector::detect(port);
-        jobs::BackgroundJob::Outcome outcome{r.family != device::FamilyDetector::Family::Unknown, r.error, {}};
-        outcome.apply = [this, ws, port, r] { connectDetected(ws, port, r); };
-        return outcome;
+    connect(opener, &device::LinkOpener::failed, this, [this, ws, done](const QString &message) {
+        done();
+        if (ws && ws == currentWorkspace())
+            m_connectionBar->setSessionState(SessionState::Failed);
+        updateActions();
+        presentError(message);
     });
+    device::LinkRequest request = device::LinkRequest::serial(port, 0);
+    request.autoReconnect = m_prefs.autoReconnect;
+    opener->open(request);
 }
 
-void MainWindow::connectDetected(QPointer<DeviceWorkspace> ws, const QString &port,
-                                 const device::FamilyDetector::Result &r)
+void MainWindow::connectDetected(QPointer<DeviceWorkspace> ws, device::LinkOpener *opener)
 {
+    device::LinkOpener::Opened opened = opener->take();
     if (!ws)
-        return;
-    if (r.family == device::FamilyDetector::Family::Hec495) {
-        QString error;
-        if (!LinkFactory::connectHec495(*ws, port, r.baud, std::max(0, r.address), &error))
-            presentError(error);
-    } else {
-        // A HiPNUC module at the rate found, or nothing found: the session's own detection
-        // then says what it tried and what to check.
-        ws->connectPort(port, r.family == device::FamilyDetector::Family::Hipnuc ? r.baud : 0);
-    }
+        return; // the link closes with `opened`
+    QString error;
+    if (!showLink(*ws, *m_families, std::move(opened), opener->request(), &error))
+        presentError(error);
     if (ws == currentWorkspace())
         m_connectionBar->setSessionState(ws->state());
     updateActions();
@@ -329,10 +327,15 @@ bool MainWindow::connectSimulated(const sim::SimOptions &options, int baud, QStr
     return freeWorkspace()->connectSimulated(options, baud, error);
 }
 
+bool MainWindow::openLink(device::LinkRequest request, QString *error)
+{
+    return openLinkIn(*freeWorkspace(), *m_families, std::move(request), error);
+}
+
 bool MainWindow::connectSimulatedHec495(QString *error)
 {
     m_connectionBar->selectPort(PortChoice::simulated(QStringLiteral("HEC495"), QString()));
-    return LinkFactory::connectSimulatedHec495(*freeWorkspace(), m_simMotion, error);
+    return openLink(device::LinkRequest::simulatedHec495(m_simMotion), error);
 }
 
 void MainWindow::disconnectDevice()

@@ -3,8 +3,8 @@
 // connected device in tabs (its own session, views, console and counters). Menus act
 // on the current workspace. It shows session errors without ever blocking.
 #include "device/device_session.h"
-#include "device/family_detector.h"
-#include "jobs/background_job.h"
+#include "device/link_opener.h"
+#include "families/family_ui.h"
 #include "sim/hipnuc_simulator.h"
 #include "workspace/preferences.h"
 #include "workspace/tool_host.h"
@@ -69,6 +69,10 @@ public:
     sim::Motion simulatedMotion() const override { return m_simMotion; }
     // The current tab when it is idle, else a new one (for a link the user opens).
     DeviceWorkspace *freeWorkspaceForLink() override { return freeWorkspace(); }
+    bool openLink(device::LinkRequest request, QString *error) override;
+    // The family UI plug-ins the window shows links with (app/gui/main.cpp registers them);
+    // without this call, the built-in ones. The registry outlives the window.
+    void setFamilies(const FamilyUiRegistry *families) { m_families = families ? families : &m_builtInFamilies; }
     // Reports a problem to the user (a non-blocking message box, or the error presenter).
     void showError(const QString &message) override { presentError(message); }
     QWidget *dialogParent() override { return this; }
@@ -124,7 +128,7 @@ protected:
     void changeEvent(QEvent *event) override;
 
 private:
-    QList<jobs::BackgroundJob *> m_probes; // family probes under way (connectPort with baud Auto)
+    QList<device::LinkOpener *> m_openers; // family detections under way (connectPort with baud Auto)
 
     void createActions();
     void createMenus();
@@ -132,8 +136,9 @@ private:
     void restoreSettings(const WindowSettings &settings);
 
     DeviceWorkspace *freeWorkspace(); // the current one if idle, else a new tab
-    // After a family probe: opens the family's session in ws (if it is still there).
-    void connectDetected(QPointer<DeviceWorkspace> ws, const QString &port, const device::FamilyDetector::Result &r);
+    // After a family detection: shows the family's session, on the port the detection opened,
+    // in ws (if it is still there).
+    void connectDetected(QPointer<DeviceWorkspace> ws, device::LinkOpener *opener);
     void connectSelected();
     void presentError(const QString &message);
     void showAbout();
@@ -180,6 +185,8 @@ private:
     QPointer<StationView> m_station;
     DeviceWorkspace::LayoutPreset m_preset = DeviceWorkspace::LayoutPreset::Monitor;
     Preferences m_prefs;
+    FamilyUiRegistry m_builtInFamilies;
+    const FamilyUiRegistry *m_families = &m_builtInFamilies;
 
     sim::Motion m_simMotion = sim::Motion::Static;
     uint64_t m_nextSimulatorSeed = 2;

@@ -12,7 +12,6 @@
 #include "recording/export_dialog.h"
 #include "recording/recording_controls.h"
 #include "ui/firmware/firmware_update_dialog.h"
-#include "workspace/link_factory.h"
 #include "workspace/preferences.h"
 #include "configuration/profile_dialog.h"
 #include "record/csv_capture_converter.h"
@@ -175,8 +174,7 @@ void ToolActions::update(const DeviceWorkspace *ws)
 bool ToolActions::openCapture(const QString &path)
 {
     QString error;
-    DeviceWorkspace *ws = m_host->freeWorkspaceForLink();
-    if (!LinkFactory::openReplay(*ws, path, &error)) {
+    if (!m_host->openLink(device::LinkRequest::capture(path), &error)) {
         m_host->showError(error);
         return false;
     }
@@ -250,8 +248,10 @@ void ToolActions::connectModbus()
     dialog->setAttribute(Qt::WA_DeleteOnClose);
     connect(dialog, &QDialog::accepted, this, [this, dialog] {
         QString error;
-        if (!LinkFactory::connectModbus(*m_host->freeWorkspaceForLink(), dialog->options(), dialog->simulate(),
-                                        m_host->simulatedMotion(), &error))
+        device::LinkRequest request = device::LinkRequest::modbusDevice(dialog->options());
+        request.simulate = dialog->simulate();
+        request.motion = m_host->simulatedMotion();
+        if (!m_host->openLink(request, &error))
             m_host->showError(error);
     });
     dialog->open();
@@ -263,8 +263,10 @@ void ToolActions::connectCan()
     dialog->setAttribute(Qt::WA_DeleteOnClose);
     connect(dialog, &QDialog::accepted, this, [this, dialog] {
         QString error;
-        if (!LinkFactory::connectCan(*m_host->freeWorkspaceForLink(), dialog->options(), dialog->simulate(),
-                                     m_host->simulatedMotion(), &error))
+        device::LinkRequest request = device::LinkRequest::canBus(dialog->options());
+        request.simulate = dialog->simulate();
+        request.motion = m_host->simulatedMotion();
+        if (!m_host->openLink(request, &error))
             m_host->showError(error);
     });
     dialog->open();

@@ -3,6 +3,7 @@
 // a tab free for a new link, the preferences, where to report a problem, and the parent of
 // their dialogs. MainWindow provides it; ToolActions knows only this, so the two do not call
 // into each other's classes.
+#include "device/link_opener.h"
 #include "sim/motion_model.h"
 
 #include <QString>
@@ -27,6 +28,9 @@ public:
     // Device > Configuration: the current tab in the layout made for the settings table (its
     // whole right column), so that the table's rows can be read on a laptop screen too.
     virtual void arrangeForConfiguration() = 0;
+    // Opens a link that needs no detection (Modbus, CAN, a capture, a simulated device) in a
+    // free tab, with its family's docks; false with why.
+    virtual bool openLink(device::LinkRequest request, QString *error) = 0;
     // The motion a simulated device started from the tools follows.
     virtual sim::Motion simulatedMotion() const = 0;
 };

@@ -1,0 +1,98 @@
+#pragma once
+// The one way a link is opened, for the window and the CLI alike: a link request (a serial port
+// at a baud or Auto, of a known family or not; a Modbus RTU device; a CAN bus; a capture file)
+// becomes an opened device::DeviceLink of the right family.
+//
+// A serial port whose family is not given is opened once: a session whose family plug-in is
+// the detection (SerialFamilyScan) scans the rates on it, and the port, still open, goes to the
+// found family's session (HiPNUC: DeviceSession; HEC495: Hec495Session) at the rate found.
+// Nothing blocks: ready() or failed() follows from the event loop.
+#include "device/can_session_types.h"
+#include "device/device_link.h"
+#include "device/modbus_types.h"
+#include "device/serial_family_scan.h"
+#include "io/transport.h"
+#include "sim/motion_model.h"
+
+#include <QObject>
+#include <QString>
+
+#include <functional>
+#include <memory>
+
+namespace imudesk::device {
+
+class Session;
+
+struct LinkRequest {
+    enum class Kind { Serial, Modbus, Can, Capture };
+    Kind kind = Kind::Serial;
+    QString address;                              // serial port, or the capture file
+    int baud = 0;                                 // serial: 0 = Auto
+    SerialFamily family = SerialFamily::Unknown;  // serial: Unknown = detect it
+    int hec495Address = 0;                        // serial HEC495: the module's address
+    bool autoReconnect = true;                    // serial: wait for an unplugged device to return
+    ModbusOptions modbus;
+    CanSessionOptions can;
+    // A simulated device first, as the link's far end (HEC495 serial on a pseudo-terminal, a
+    // Modbus device on a pseudo-terminal, a CAN device on the same bus), moving as `motion`.
+    bool simulate = false;
+    sim::Motion motion = sim::Motion::Static;
+    // What the link needs (its simulator): handed on with the link, released after it.
+    std::shared_ptr<void> keepAlive;
+    // A serial link's transport (tests: an in-process simulator); null: the serial port.
+    std::function<std::unique_ptr<io::Transport>()> transport;
+
+    static LinkRequest serial(const QString &port, int baud = 0, SerialFamily family = SerialFamily::Unknown);
+    static LinkRequest modbusDevice(const ModbusOptions &options);
+    static LinkRequest canBus(const CanSessionOptions &options);
+    static LinkRequest capture(const QString &path);
+    // A simulated HEC495 streaming at 50 Hz on a pseudo-terminal.
+    static LinkRequest simulatedHec495(sim::Motion motion);
+};
+
+class LinkOpener : public QObject {
+    Q_OBJECT
+public:
+    explicit LinkOpener(QObject *parent = nullptr);
+    ~LinkOpener() override;
+
+    // Starts opening (a request under way is dropped). ready() or failed() follows.
+    void open(LinkRequest request);
+    // Stops a detection under way (no signal follows) and closes its port.
+    void cancel();
+    bool running() const { return m_running; }
+
+    // What ready() announces: the link of the right family, not yet started, and what it needs
+    // (released after it). Connect to the link's signals first, then call start(): its state,
+    // identity and errors follow from the link.
+    struct Opened {
+        std::unique_ptr<DeviceLink> link;
+        std::function<void()> start;
+        std::shared_ptr<void> keepAlive;
+    };
+    Opened take();
+    // A request that needs no detection (anything but a serial port of unknown family), at
+    // once: its simulator started, its link made. On failure no link, and `error` says why.
+    static Opened openNow(LinkRequest &request, QString *error);
+    // The request that was opened (for a serial Auto request: family and baud as found).
+    const LinkRequest &request() const { return m_request; }
+
+Q_SIGNALS:
+    // Detection progress ("trying 115200 baud").
+    void detecting(const QString &detail);
+    void ready();
+    // Nothing usable answered, or the port could not be opened: what happened and what to do.
+    void failed(const QString &message);
+
+private:
+    void onFound(SerialFamily family, int baud, int address);
+    void finish(Opened opened);
+
+    LinkRequest m_request;
+    std::unique_ptr<Session> m_probe;
+    Opened m_opened;
+    bool m_running = false;
+};
+
+} // namespace imudesk::device

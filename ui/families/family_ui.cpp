@@ -1,0 +1,88 @@
+#include "families/family_ui.h"
+
+#include "families/built_in_families.h"
+#include "workspace/device_workspace.h"
+
+#include <QCoreApplication>
+#include <QDockWidget>
+
+namespace imudesk::ui {
+
+namespace {
+struct Texts {
+    Q_DECLARE_TR_FUNCTIONS(FamilyUi)
+};
+} // namespace
+
+bool FamilyUi::attach(DeviceWorkspace &ws, device::LinkOpener::Opened &opened, const device::LinkRequest &request,
+                      QString *error) const
+{
+    if (ws.attachLink(std::move(opened.link), target(request), std::move(opened.keepAlive)))
+        return true;
+    if (error)
+        *error = Texts::tr("Disconnect first, then connect to %1.").arg(target(request));
+    return false;
+}
+
+const FamilyUi *FamilyUiRegistry::forLink(const device::DeviceLink &link) const
+{
+    for (const auto &f : m_families)
+        if (f->accepts(link))
+            return f.get();
+    return nullptr;
+}
+
+void registerBuiltInFamilies(FamilyUiRegistry &registry)
+{
+    registry.add(std::make_unique<HipnucSerialUi>());
+    registry.add(std::make_unique<Hec495SerialUi>());
+    registry.add(std::make_unique<ModbusUi>());
+    registry.add(std::make_unique<CanUi>());
+    registry.add(std::make_unique<ReplayUi>());
+}
+
+QDockWidget *familyDock(QWidget *content, const QString &objectName, const QString &title)
+{
+    auto *dock = new QDockWidget(title);
+    dock->setObjectName(objectName);
+    dock->setWidget(content);
+    return dock;
+}
+
+bool showLink(DeviceWorkspace &ws, const FamilyUiRegistry &families, device::LinkOpener::Opened opened,
+              const device::LinkRequest &request, QString *error)
+{
+    if (!opened.link) {
+        if (error && error->isEmpty())
+            *error = Texts::tr("Nothing was opened.");
+        return false;
+    }
+    const FamilyUi *family = families.forLink(*opened.link);
+    if (!family) {
+        if (error)
+            *error = Texts::tr("%1 answered, but ImuDesk has no view for its family.").arg(request.address);
+        return false;
+    }
+    device::DeviceLink *link = opened.link.get();
+    if (!family->attach(ws, opened, request, error))
+        return false;
+    family->decorate(ws, *link, request);
+    opened.start();
+    return true;
+}
+
+bool openLinkIn(DeviceWorkspace &ws, const FamilyUiRegistry &families, device::LinkRequest request, QString *error)
+{
+    if (ws.isBusy()) {
+        // Before anything starts (a simulator, a bus): the workspace cannot take it.
+        if (error)
+            *error = Texts::tr("Disconnect first, then connect again.");
+        return false;
+    }
+    device::LinkOpener::Opened opened = device::LinkOpener::openNow(request, error);
+    if (!opened.link)
+        return false;
+    return showLink(ws, families, std::move(opened), request, error);
+}
+
+} // namespace imudesk::ui

@@ -1,0 +1,61 @@
+#pragma once
+// What a device family adds to a workspace, on the UI side: the counterpart of the core's
+// device::FamilyPlugin. A workspace shows any device::DeviceLink with the views every link has
+// (values, charts, attitude, status) and the docks its capabilities call for; a family's UI
+// plug-in adds what only that family has: its docks (a compass dial, a register browser, a
+// CAN monitor, replay controls), the tools it offers in the menus (a bus scan, the compass's
+// calibration, an update over the bus) and the workspace's title for the link.
+//
+// The built-in plug-ins are registered once, in app/gui/main.cpp (registerBuiltInFamilies);
+// the window finds the one for a link with FamilyUiRegistry::forLink. A new device family is a
+// core plug-in, one class of this interface and one registration line.
+#include "device/device_link.h"
+#include "device/link_opener.h"
+
+#include <QString>
+
+#include <memory>
+#include <vector>
+
+namespace imudesk::ui {
+
+class DeviceWorkspace;
+
+class FamilyUi {
+public:
+    virtual ~FamilyUi() = default;
+    // Whether `link` is this family's (its session type).
+    virtual bool accepts(const device::DeviceLink &link) const = 0;
+    // What the workspace calls the link ("HEC495 on /dev/ttyUSB0", "Simulated HEC495").
+    virtual QString target(const device::LinkRequest &request) const = 0;
+    // Makes ws show the opened link (default: DeviceWorkspace::attachLink under target()).
+    // False (with why) while ws is busy.
+    virtual bool attach(DeviceWorkspace &ws, device::LinkOpener::Opened &opened, const device::LinkRequest &request,
+                        QString *error) const;
+    // Adds the family's docks and tools to ws, which shows `link` already.
+    virtual void decorate(DeviceWorkspace &ws, device::DeviceLink &link, const device::LinkRequest &request) const = 0;
+};
+
+class FamilyUiRegistry {
+public:
+    void add(std::unique_ptr<FamilyUi> family) { m_families.push_back(std::move(family)); }
+    // The plug-in for a link; null when none registered takes it (the workspace then shows the
+    // views every link has).
+    const FamilyUi *forLink(const device::DeviceLink &link) const;
+    bool empty() const { return m_families.empty(); }
+
+private:
+    std::vector<std::unique_ptr<FamilyUi>> m_families;
+};
+
+// The families ImuDesk ships: HEC495 serial, Modbus RTU, CAN and replayed captures.
+void registerBuiltInFamilies(FamilyUiRegistry &registry);
+
+// Shows an opened link in ws: attaches it under the family's name for it, lets the family's
+// plug-in add its docks and tools, then starts the link. False (with why) while ws is busy.
+bool showLink(DeviceWorkspace &ws, const FamilyUiRegistry &families, device::LinkOpener::Opened opened,
+              const device::LinkRequest &request, QString *error);
+// Opens a request that needs no detection (device::LinkOpener::openNow) and shows it in ws.
+bool openLinkIn(DeviceWorkspace &ws, const FamilyUiRegistry &families, device::LinkRequest request, QString *error);
+
+} // namespace imudesk::ui

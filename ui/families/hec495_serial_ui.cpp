@@ -1,0 +1,51 @@
+#include "families/built_in_families.h"
+
+#include "attitude/heading_dial.h"
+#include "calibration/hec495_calibration_wizard.h"
+#include "configuration/hec495_settings_panel.h"
+#include "device/hec495_session.h"
+#include "workspace/device_workspace.h"
+
+#include <QDockWidget>
+
+namespace imudesk::ui {
+
+bool Hec495SerialUi::accepts(const device::DeviceLink &link) const
+{
+    return qobject_cast<const device::Hec495Session *>(&link) != nullptr;
+}
+
+QString Hec495SerialUi::target(const device::LinkRequest &request) const
+{
+    return request.simulate ? tr("Simulated HEC495") : tr("HEC495 on %1").arg(request.address);
+}
+
+void Hec495SerialUi::decorate(DeviceWorkspace &ws, device::DeviceLink &link, const device::LinkRequest &) const
+{
+    auto *session = static_cast<device::Hec495Session *>(&link);
+    // The compass dial (heading, pitch, roll from the newest sample) and the settings.
+    auto *dial = new HeadingDial;
+    dial->setObjectName(QStringLiteral("headingDial"));
+    QObject::connect(&ws, &DeviceWorkspace::viewTick, dial, [dial, session] {
+        if (const auto s = session->store().latest(); s && s->has(model::FieldEuler))
+            dial->setAttitude(s->yaw, s->pitch, s->roll);
+    });
+    ws.addLinkDock(familyDock(dial, QStringLiteral("headingDialDock"), tr("Compass")),
+                   DeviceWorkspace::LinkDockPlace::OverAttitude);
+    auto *panel = new Hec495SettingsPanel(session);
+    panel->setObjectName(QStringLiteral("hec495SettingsPanel"));
+    ws.addLinkDock(familyDock(panel, QStringLiteral("hec495SettingsDock"), tr("Compass settings")),
+                   DeviceWorkspace::LinkDockPlace::BehindValues);
+    // Tools > Calibrate > HEC495 compass: the compass's own calibration methods.
+    ws.offerTool(DeviceWorkspace::LinkTool::CompassCalibration, [&ws, session](QWidget *parent) {
+        auto *wizard = new Hec495CalibrationWizard(*session, parent);
+        if (ws.identity())
+            wizard->runSaver().setIdentity(*ws.identity());
+        wizard->setAttribute(Qt::WA_DeleteOnClose);
+        // The wizard needs its session: it closes when the link goes.
+        QObject::connect(session, &QObject::destroyed, wizard, &QWidget::close);
+        wizard->show();
+    });
+}
+
+} // namespace imudesk::ui
