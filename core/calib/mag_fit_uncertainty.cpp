@@ -131,12 +131,22 @@ MagFitUncertainty::Figures singularFigures()
 }
 
 // The q quantile of v (+inf when v is empty).
+// The bound a further draw stays below with probability q, from n draws: the k-th smallest of n
+// draws is exceeded by the next one with probability 1 - k/(n + 1), so the bound sits at rank
+// q (n + 1), interpolated between neighbours (Weibull's plotting position). Taking rank q n
+// instead made every bound a little short: with the 32 refits, the "68 %" bound held 67 % of the
+// time and the "95 %" bound 94 % (the bench's coverage sweep shows the difference).
 double quantile(std::vector<double> v, double q)
 {
     if (v.empty())
         return kInf;
     std::sort(v.begin(), v.end());
-    return v[std::min(v.size() - 1, size_t(q * double(v.size())))];
+    const double rank = std::clamp(q * double(v.size() + 1), 1.0, double(v.size())); // 1-based
+    const size_t below = size_t(rank) - 1;
+    const double frac = rank - std::floor(rank);
+    if (below + 1 >= v.size() || frac == 0)
+        return v[below];
+    return v[below] + frac * (v[below + 1] - v[below]); // +inf when the next draw failed
 }
 
 // The figures from the parameter covariance. dims 3: a 3-D fit, the field inclined by

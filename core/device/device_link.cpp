@@ -7,6 +7,12 @@ DeviceLink::DeviceLink(QObject *parent) : QObject(parent)
     qRegisterMetaType<SessionState>();
     qRegisterMetaType<SessionStats>();
     qRegisterMetaType<model::DeviceIdentity>();
+    qRegisterMetaType<TextReply>();
+}
+
+quint64 DeviceLink::sendText(const QString &, int)
+{
+    return 0;
 }
 
 DeviceLink::~DeviceLink() = default;

@@ -6,6 +6,7 @@
 // private thread and emits these signals in the owner's thread.
 #include "device/sample_store.h"
 #include "device/session_types.h"
+#include "device/text_reply.h"
 
 #include <QFlags>
 #include <QObject>
@@ -39,6 +40,13 @@ public:
     // host times are the recording's): a view can tell a value that stopped arriving by its age.
     virtual bool isLive() const { return true; }
 
+    // Capability::TextCommands: a command as a person typed it (the console); the reply comes
+    // in textReplied(id, ...). 0 when this link takes no text. The only place where command text
+    // is parsed; every other caller uses the family's typed commands.
+    virtual quint64 sendText(const QString &text, int timeoutMs = 1000);
+    // The documented commands with representative arguments, for completing what is typed.
+    virtual QStringList textCommands() const { return {}; }
+
     SampleStore &store() { return m_store; }
     const SampleStore &store() const { return m_store; }
     SessionState state() const { return m_state.load(); }
@@ -48,6 +56,10 @@ Q_SIGNALS:
     void identityChanged(const imudesk::model::DeviceIdentity &identity);
     void statsUpdated(const imudesk::device::SessionStats &stats);
     void errorOccurred(const QString &message);
+    // Capability::TextCommands: the outcome of a command sent as text, or of a typed command a
+    // view showed as text (by the same id); and lines the device sent that answer no command.
+    void textReplied(quint64 id, const imudesk::device::TextReply &reply);
+    void textReceived(const QString &line);
 
 protected:
     // Records the state and emits stateChanged; call from the owner's thread.

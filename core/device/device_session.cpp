@@ -1,6 +1,7 @@
 #include "device_session.h"
 
 #include "device/hipnuc_family.h"
+#include "model/mounting.h"
 
 namespace imudesk::device {
 
@@ -30,7 +31,9 @@ DeviceSession::DeviceSession(QObject *parent, std::unique_ptr<io::Transport> tra
     qRegisterMetaType<protocol::hipnuc::AsciiReply>();
     auto *f = static_cast<HipnucSerialFamily *>(family());
     connect(this, &Session::requestEnded, this, [this](const RequestResult &r) {
-        Q_EMIT commandFinished(r.id, r.reply.value<protocol::hipnuc::AsciiReply>());
+        const auto reply = r.reply.value<protocol::hipnuc::AsciiReply>();
+        Q_EMIT commandFinished(r.id, reply);
+        Q_EMIT textReplied(r.id, textReplyOf(reply));
     });
     connect(f, &HipnucSerialFamily::baudDetected, this, &DeviceSession::baudDetected);
     connect(f, &HipnucSerialFamily::identityQueryFinished, this, &DeviceSession::identityQueryFinished);
@@ -43,6 +46,49 @@ DeviceSession::DeviceSession(QObject *parent, std::unique_ptr<io::Transport> tra
 void DeviceSession::open(const QString &portName, int baud)
 {
     openLink(portName, baud);
+}
+
+QStringList DeviceSession::documentedCommands()
+{
+    namespace c = protocol::hipnuc::commands;
+    using protocol::hipnuc::Message;
+    using model::ManualEdition;
+    std::vector<protocol::hipnuc::Command> all = {
+        // Queries
+        c::logVersion(), c::logComConfig(), c::logMagConfig(), c::logMagCalStatus(),
+        // Output
+        c::logEnable(), c::logDisable(),
+        c::logOnTime(Message::HI91, 0.01), c::logOnTime(Message::HI91, 0.005), c::logOnTime(Message::HI91, 0.001),
+        c::logOnTime(Message::HI91, 0),
+        c::logOnTime(Message::HI92, 0.01), c::logOnTime(Message::HI92, 0),
+        c::logOnTime(Message::HI81, 0.01), c::logOnTime(Message::HI81, 0),
+        c::logOnTime(Message::HI83, 0.01), c::logOnTime(Message::HI83, 0),
+        c::logOnTime(Message::GGA, 1), c::logOnTime(Message::RMC, 1), c::logOnTime(Message::SXT, 1),
+        c::logOnMark(Message::HI91, false), c::logOnMark(Message::HI91, true),
+        c::logOnMark(Message::HI83, false), c::logOnMark(Message::HI83, true),
+        c::logHi83Map(0x000000FF),
+        // Configuration
+        c::attMode(0), c::attMode(1), c::attMode(4),
+        c::attReset(1), c::attReset(2), c::attReset(3), c::attReset(5),
+        c::imuUrfrMatrix(model::Mounting::identity()),
+        c::imuCoord(0), c::imuCoord(4),
+        c::pmux(1, 1), c::pmux(2, 2), c::pmux(3, 5), c::pmux(5, 9, true), c::pmux2Div(1),
+        c::magCalStart(), c::gyroCalStart(720), c::gyroCalStop(),
+        c::setYaw(0, 0), c::setYaw(1, 0),
+        c::enableBackgroundMagCal(true), c::enableBackgroundMagCal(false),
+        // Port and system
+        c::serialConfig(1, 115200),
+        c::saveConfig(), c::reboot(), c::rebootBootloader(), c::factoryReset(),
+    };
+    for (int code : model::Mounting::validCodes())
+        all.push_back(c::imuUrfr(code));
+    for (int baud : {4800, 9600, 19200, 38400, 57600, 115200, 230400, 256000, 460800, 921600})
+        all.push_back(c::serialConfig(baud, ManualEdition::V171));
+    QStringList out;
+    for (const protocol::hipnuc::Command &command : all)
+        if (command.ok() && !out.contains(QString::fromStdString(command.text)))
+            out << QString::fromStdString(command.text);
+    return out;
 }
 
 quint64 DeviceSession::sendText(const QString &text, int timeoutMs)

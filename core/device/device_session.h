@@ -31,10 +31,15 @@ public:
     // baud 0 = auto-detect (listen first, then LOG VERSION at each rate).
     void open(const QString &portName, int baud = 0);
     // Text as a person typed it (the console, imudesk-cli send), through the same queue; the
-    // reply arrives in commandFinished(id, reply). Unknown commands get no reply and finish as
-    // a timeout. The only place where command text is parsed: every other caller passes a
-    // typed command (sendCommand).
-    quint64 sendText(const QString &text, int timeoutMs = 1000);
+    // reply arrives in commandFinished(id, reply) and textReplied. Unknown commands get no reply
+    // and finish as a timeout. The only place where command text is parsed: every other caller
+    // passes a typed command (sendCommand).
+    quint64 sendText(const QString &text, int timeoutMs = 1000) override;
+    // Every command of both manuals (v1.7.1 and v1.6.6) with representative arguments, made by
+    // the builders of protocol/hipnuc/ascii_command.h so that it follows them: "LOG VERSION",
+    // "LOG HI91 ONTIME 0.01", "CONFIG IMU URFR 024", "SERIALCONFIG 115200", ...
+    static QStringList documentedCommands();
+    QStringList textCommands() const override { return documentedCommands(); }
     // A command made by the typed builders (protocol::hipnuc::commands): one whose arguments
     // were refused is not sent; 0, and `error` gets why.
     // A reply that must not be lost to a busy link (a configuration change, a calibration's
@@ -59,7 +64,6 @@ Q_SIGNALS:
     void identityQueryFinished(bool answered);
     void commandFinished(quint64 id, const imudesk::protocol::hipnuc::AsciiReply &reply);
     void nmeaReceived(const QString &sentence);
-    void textReceived(const QString &line); // ASCII lines that answer no command
     // changeBaud finished: changed = the device answers at the requested rate; baud = the
     // rate it answers at now (0: it answers nowhere).
     void baudChangeFinished(bool changed, int baud, const QString &detail);

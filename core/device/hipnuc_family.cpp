@@ -185,8 +185,18 @@ void HipnucSerialFamily::finished(const Request &r, const RequestResult &result)
 {
     if (r.attempts > 0)
         m_collector.reset();
-    if (result.ok())
-        noteCommandDone(commandOf(r).effect);
+    if (!result.ok())
+        return;
+    const hp::Command &command = commandOf(r);
+    noteCommandDone(command.effect);
+    // LOG VERSION asked for by someone (the console, a menu, a script) refreshes the identity
+    // too; the family's own queries (id 0) set it where they are made.
+    if (r.id != 0 && QString::fromStdString(command.text).simplified().compare(QLatin1String("LOG VERSION"),
+                                                                                 Qt::CaseInsensitive) == 0) {
+        const auto id = model::DeviceIdentity::fromKeyValues(result.reply.value<Reply>().values);
+        if (id.usable())
+            noteIdentity(id);
+    }
 }
 
 void HipnucSerialFamily::noteCommandDone(const hp::OutputEffect &c)

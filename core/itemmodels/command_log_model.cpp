@@ -35,7 +35,7 @@ void CommandLogModel::record(quint64 id, const QString &text, const QDateTime &w
     endInsertRows();
 }
 
-bool CommandLogModel::complete(quint64 id, const protocol::hipnuc::AsciiReply &reply)
+bool CommandLogModel::complete(quint64 id, const device::TextReply &reply)
 {
     const int row = rowOf(id);
     if (row < 0)
@@ -95,13 +95,13 @@ QString CommandLogModel::statusText(Status status)
     return QString();
 }
 
-QString CommandLogModel::replyText(const protocol::hipnuc::AsciiReply &reply)
+QString CommandLogModel::replyText(const device::TextReply &reply)
 {
     QStringList parts;
     for (const auto &line : reply.lines)
-        parts << oneLine(QString::fromStdString(line));
-    if (reply.status != Status::Ok && !reply.errorLine.empty())
-        parts << oneLine(QString::fromStdString(reply.errorLine));
+        parts << oneLine(line);
+    if (reply.status != Status::Ok && !reply.why.isEmpty())
+        parts << oneLine(reply.why);
     return parts.join(QStringLiteral(" | "));
 }
 

@@ -3,7 +3,7 @@
 // (OK / ERR / timeout / ...) and the reply lines joined. record() adds a row when the
 // command is queued, complete() fills in its outcome when the reply (or the timeout)
 // comes. Bounded to kMaxRows (oldest dropped). QtCore only: colours come from the view.
-#include "protocol/hipnuc/ascii_reply.h"
+#include "device/text_reply.h"
 
 #include <QAbstractTableModel>
 #include <QDateTime>
@@ -19,18 +19,18 @@ class CommandLogModel : public QAbstractTableModel {
 public:
     enum Column : int { TimeColumn, CommandColumn, StatusColumn, ReplyColumn, ColumnCount };
     enum Role : int {
-        StatusRole = Qt::UserRole + 1, // int(AsciiReply::Status)
+        StatusRole = Qt::UserRole + 1, // int(device::TextReply::Status)
         IdRole,                        // quint64 session command id
     };
     static constexpr int kMaxRows = 2000;
-    using Status = protocol::hipnuc::AsciiReply::Status;
+    using Status = device::TextReply::Status;
 
     explicit CommandLogModel(QObject *parent = nullptr);
 
     // A command the GUI sent, under the session's id (status Pending until complete()).
     void record(quint64 id, const QString &text, const QDateTime &when = QDateTime::currentDateTime());
     // The outcome of command `id`; false when it was not recorded here (or dropped).
-    bool complete(quint64 id, const protocol::hipnuc::AsciiReply &reply);
+    bool complete(quint64 id, const device::TextReply &reply);
     void clear();
     // After a language change: the headers and status words are shown anew.
     void retranslate();
@@ -48,7 +48,7 @@ public:
     // "OK", "ERR", "timeout", ... as the Status column shows it.
     static QString statusText(Status status);
     // The reply lines joined with " | "; for a failure, its reason after them.
-    static QString replyText(const protocol::hipnuc::AsciiReply &reply);
+    static QString replyText(const device::TextReply &reply);
 
 private:
     struct Row {

@@ -3,6 +3,7 @@
 // baud) and the log of the commands the GUI sent (model and widget, copy as text).
 #include "workspace/command_log_widget.h"
 #include "workspace/console_widget.h"
+#include "device/device_session.h"
 #include "device/raw_byte_log.h"
 #include "itemmodels/command_log_model.h"
 #include "protocol/hipnuc/ascii_command.h"
@@ -23,7 +24,7 @@
 
 using imudesk::device::RawByteLog;
 using imudesk::models::CommandLogModel;
-using imudesk::protocol::hipnuc::AsciiReply;
+using imudesk::device::TextReply;
 using imudesk::ui::CommandLogWidget;
 using imudesk::ui::ConsoleWidget;
 using imudesk::ui::RawBytesView;
@@ -50,12 +51,12 @@ QColor colourOf(const RawBytesView &view, const QString &needle)
     return QColor();
 }
 
-AsciiReply reply(AsciiReply::Status status, std::vector<std::string> lines, std::string error = {})
+TextReply reply(TextReply::Status status, QStringList lines, const QString &error = {})
 {
-    AsciiReply r;
+    TextReply r;
     r.status = status;
     r.lines = std::move(lines);
-    r.errorLine = std::move(error);
+    r.why = error;
     return r;
 }
 
@@ -68,7 +69,7 @@ class TstConsoleTools : public QObject {
 private Q_SLOTS:
     void documentedCommandsFollowTheBuilders()
     {
-        QStringList all = ConsoleWidget::documentedCommands();
+        QStringList all = imudesk::device::DeviceSession::documentedCommands();
         for (const char *c : {"LOG VERSION", "LOG COMCONFIG", "LOG HI91 ONTIME 0.01", "LOG HI91 ONTIME 0.001",
                               "LOG DISABLE", "LOG ENABLE", "CONFIG ATT MODE 1", "SERIALCONFIG 115200",
                               "SERIALCONFIG 921600", "SAVECONFIG", "REBOOT", "FRESET", "LOG MCAL STAT",
@@ -85,6 +86,7 @@ private Q_SLOTS:
     void completionOffersCommands()
     {
         ConsoleWidget console;
+        console.setCompletions(imudesk::device::DeviceSession::documentedCommands());
         console.show();
         QVERIFY(QTest::qWaitForWindowExposed(&console));
         QLineEdit *input = console.input();
@@ -292,10 +294,10 @@ private Q_SLOTS:
         QCOMPARE(model.rowCount(), 3);
         QCOMPARE(model.index(0, CommandLogModel::StatusColumn).data().toString(), QStringLiteral("waiting"));
 
-        QVERIFY(model.complete(1, reply(AsciiReply::Status::Ok, {"PNAME=HI14R3", "APP_VER=171"})));
-        QVERIFY(model.complete(2, reply(AsciiReply::Status::Error, {}, "ERR")));
-        QVERIFY(model.complete(3, reply(AsciiReply::Status::Timeout, {}, "no reply within 1000 ms")));
-        QVERIFY(!model.complete(99, reply(AsciiReply::Status::Ok, {})));
+        QVERIFY(model.complete(1, reply(TextReply::Status::Ok, {"PNAME=HI14R3", "APP_VER=171"})));
+        QVERIFY(model.complete(2, reply(TextReply::Status::Error, {}, QStringLiteral("ERR"))));
+        QVERIFY(model.complete(3, reply(TextReply::Status::Timeout, {}, QStringLiteral("no reply within 1000 ms"))));
+        QVERIFY(!model.complete(99, reply(TextReply::Status::Ok, {})));
 
         auto cell = [&](int row, int column) { return model.index(row, column).data().toString(); };
         QCOMPARE(cell(0, CommandLogModel::TimeColumn), QStringLiteral("10:11:12.345"));
@@ -306,7 +308,7 @@ private Q_SLOTS:
         QCOMPARE(cell(1, CommandLogModel::ReplyColumn), QStringLiteral("ERR"));
         QCOMPARE(cell(2, CommandLogModel::StatusColumn), QStringLiteral("timeout"));
         QCOMPARE(cell(2, CommandLogModel::ReplyColumn), QStringLiteral("no reply within 1000 ms"));
-        QCOMPARE(model.index(1, 0).data(CommandLogModel::StatusRole).toInt(), int(AsciiReply::Status::Error));
+        QCOMPARE(model.index(1, 0).data(CommandLogModel::StatusRole).toInt(), int(TextReply::Status::Error));
         QCOMPARE(model.index(2, 0).data(CommandLogModel::IdRole).toULongLong(), quint64(3));
 
         // Copy as text: tab-separated, rows in order, a header when asked.
@@ -322,7 +324,7 @@ private Q_SLOTS:
             model.record(quint64(100 + i), QStringLiteral("LOG VERSION"), kWhen);
         QCOMPARE(model.rowCount(), CommandLogModel::kMaxRows);
         QCOMPARE(model.index(0, 0).data(CommandLogModel::IdRole).toULongLong(), quint64(100)); // 1-3 dropped
-        QVERIFY(!model.complete(1, reply(AsciiReply::Status::Ok, {})));
+        QVERIFY(!model.complete(1, reply(TextReply::Status::Ok, {})));
         model.clear();
         QCOMPARE(model.rowCount(), 0);
     }
@@ -335,9 +337,9 @@ private Q_SLOTS:
         widget.record(1, QStringLiteral("LOG VERSION"));
         widget.record(2, QStringLiteral("CONFIG ATT MODE 7"));
         widget.record(3, QStringLiteral("LOG COMCONFIG"));
-        QVERIFY(widget.complete(1, reply(AsciiReply::Status::Ok, {"PNAME=HI14R3"})));
-        QVERIFY(widget.complete(2, reply(AsciiReply::Status::Error, {}, "ERR")));
-        QVERIFY(!widget.complete(42, reply(AsciiReply::Status::Ok, {})));
+        QVERIFY(widget.complete(1, reply(TextReply::Status::Ok, {"PNAME=HI14R3"})));
+        QVERIFY(widget.complete(2, reply(TextReply::Status::Error, {}, QStringLiteral("ERR"))));
+        QVERIFY(!widget.complete(42, reply(TextReply::Status::Ok, {})));
         QCOMPARE(widget.model()->rowCount(), 3);
 
         // Rows 0 and 2 selected (one cell each is enough: whole rows are copied).

@@ -526,9 +526,9 @@ private Q_SLOTS:
         QTest::keyClick(console.input(), Qt::Key_Down);
         QCOMPARE(console.input()->text(), QStringLiteral("draft"));
 
-        imudesk::protocol::hipnuc::AsciiReply err;
-        err.status = imudesk::protocol::hipnuc::AsciiReply::Status::Error;
-        err.errorLine = "ERR";
+        imudesk::device::TextReply err;
+        err.status = imudesk::device::TextReply::Status::Error;
+        err.why = QStringLiteral("ERR");
         console.showCommand(7, QStringLiteral("CONFIG ATT MODE 9"));
         console.showReply(7, err);
         QVERIFY(console.logText().endsWith(QLatin1String("ERR: ERR")));

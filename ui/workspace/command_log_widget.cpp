@@ -18,7 +18,7 @@
 namespace imudesk::ui {
 
 using models::CommandLogModel;
-using Status = protocol::hipnuc::AsciiReply::Status;
+using Status = device::TextReply::Status;
 
 namespace {
 
@@ -112,7 +112,7 @@ void CommandLogWidget::record(quint64 id, const QString &text)
         m_view->scrollToBottom();
 }
 
-bool CommandLogWidget::complete(quint64 id, const protocol::hipnuc::AsciiReply &reply)
+bool CommandLogWidget::complete(quint64 id, const device::TextReply &reply)
 {
     return m_model->complete(id, reply);
 }

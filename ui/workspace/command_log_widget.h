@@ -4,7 +4,7 @@
 // the bottom). Copy copies the selected rows, Copy all every row, tab-separated with a
 // header line; Ctrl+C copies the selection too. The workspace calls record() when it
 // sends a command and complete() when the session reports the outcome.
-#include "protocol/hipnuc/ascii_reply.h"
+#include "device/text_reply.h"
 
 #include <QWidget>
 
@@ -24,7 +24,7 @@ public:
 
     void record(quint64 id, const QString &text);
     // False when `id` was not recorded here (a command someone else sent).
-    bool complete(quint64 id, const protocol::hipnuc::AsciiReply &reply);
+    bool complete(quint64 id, const device::TextReply &reply);
 
     models::CommandLogModel *model() const { return m_model; }
     QTableView *view() const { return m_view; }

@@ -1,6 +1,5 @@
 #include "workspace/console_widget.h"
 
-#include "protocol/hipnuc/ascii_command.h"
 
 #include <QAbstractItemView>
 #include <QCompleter>
@@ -18,56 +17,12 @@
 
 namespace imudesk::ui {
 
-namespace hp = protocol::hipnuc;
 
 namespace {
 const QString kOkColor = QStringLiteral("#2e7d32");
 const QString kErrorColor = QStringLiteral("#c62828");
 const QString kQuietColor = QStringLiteral("#757575");
 } // namespace
-
-QStringList ConsoleWidget::documentedCommands()
-{
-    namespace c = hp::commands;
-    using hp::Message;
-    using model::ManualEdition;
-    std::vector<hp::Command> all = {
-        // Queries
-        c::logVersion(), c::logComConfig(), c::logMagConfig(), c::logMagCalStatus(),
-        // Output
-        c::logEnable(), c::logDisable(),
-        c::logOnTime(Message::HI91, 0.01), c::logOnTime(Message::HI91, 0.005), c::logOnTime(Message::HI91, 0.001),
-        c::logOnTime(Message::HI91, 0),
-        c::logOnTime(Message::HI92, 0.01), c::logOnTime(Message::HI92, 0),
-        c::logOnTime(Message::HI81, 0.01), c::logOnTime(Message::HI81, 0),
-        c::logOnTime(Message::HI83, 0.01), c::logOnTime(Message::HI83, 0),
-        c::logOnTime(Message::GGA, 1), c::logOnTime(Message::RMC, 1), c::logOnTime(Message::SXT, 1),
-        c::logOnMark(Message::HI91, false), c::logOnMark(Message::HI91, true),
-        c::logOnMark(Message::HI83, false), c::logOnMark(Message::HI83, true),
-        c::logHi83Map(0x000000FF),
-        // Configuration
-        c::attMode(0), c::attMode(1), c::attMode(4),
-        c::attReset(1), c::attReset(2), c::attReset(3), c::attReset(5),
-        c::imuUrfrMatrix(model::Mounting::identity()),
-        c::imuCoord(0), c::imuCoord(4),
-        c::pmux(1, 1), c::pmux(2, 2), c::pmux(3, 5), c::pmux(5, 9, true), c::pmux2Div(1),
-        c::magCalStart(), c::gyroCalStart(720), c::gyroCalStop(),
-        c::setYaw(0, 0), c::setYaw(1, 0),
-        c::enableBackgroundMagCal(true), c::enableBackgroundMagCal(false),
-        // Port and system
-        c::serialConfig(1, 115200),
-        c::saveConfig(), c::reboot(), c::rebootBootloader(), c::factoryReset(),
-    };
-    for (int code : model::Mounting::validCodes())
-        all.push_back(c::imuUrfr(code));
-    for (int baud : {4800, 9600, 19200, 38400, 57600, 115200, 230400, 256000, 460800, 921600})
-        all.push_back(c::serialConfig(baud, ManualEdition::V171));
-    QStringList out;
-    for (const hp::Command &command : all)
-        if (command.ok() && !out.contains(QString::fromStdString(command.text)))
-            out << QString::fromStdString(command.text);
-    return out;
-}
 
 ConsoleWidget::ConsoleWidget(QWidget *parent) : QWidget(parent)
 {
@@ -85,7 +40,8 @@ ConsoleWidget::ConsoleWidget(QWidget *parent) : QWidget(parent)
     m_input->setClearButtonEnabled(true);
     m_input->installEventFilter(this);
 
-    m_completer = new QCompleter(new QStringListModel(documentedCommands(), this), this);
+    m_completions = new QStringListModel(this);
+    m_completer = new QCompleter(m_completions, this);
     m_completer->setCaseSensitivity(Qt::CaseInsensitive);
     m_completer->setCompletionMode(QCompleter::PopupCompletion);
     m_completer->setFilterMode(Qt::MatchStartsWith);
@@ -118,25 +74,30 @@ void ConsoleWidget::showCommand(quint64 id, const QString &text)
     appendLine(QStringLiteral("> ") + text, QString(), true);
 }
 
-void ConsoleWidget::showReply(quint64 id, const hp::AsciiReply &reply)
+void ConsoleWidget::setCompletions(const QStringList &commands)
+{
+    m_completions->setStringList(commands);
+}
+
+void ConsoleWidget::showReply(quint64 id, const device::TextReply &reply)
 {
     const QString command = m_pending.take(id);
     // Another command was logged since this one: say which command this reply answers.
     if (id != m_lastShownId) {
-        const QString what = command.isEmpty() ? QString::fromStdString(reply.command) : command;
+        const QString what = command.isEmpty() ? reply.command : command;
         appendLine(tr("(reply to: %1)").arg(what), kQuietColor);
     }
     m_lastShownId = id;
     for (const auto &line : reply.lines)
-        appendLine(QStringLiteral("  ") + QString::fromStdString(line));
-    const QString why = QString::fromStdString(reply.errorLine);
+        appendLine(QStringLiteral("  ") + line);
+    const QString &why = reply.why;
     switch (reply.status) {
-    case hp::AsciiReply::Status::Ok: appendLine(tr("OK"), kOkColor, true); break;
-    case hp::AsciiReply::Status::Error: appendLine(tr("ERR: %1").arg(why), kErrorColor, true); break;
-    case hp::AsciiReply::Status::Timeout: appendLine(tr("Timeout: %1").arg(why), kErrorColor, true); break;
-    case hp::AsciiReply::Status::Cancelled: appendLine(tr("Cancelled: %1").arg(why), kErrorColor, true); break;
-    case hp::AsciiReply::Status::NotSent: appendLine(tr("Not sent: %1").arg(why), kErrorColor, true); break;
-    case hp::AsciiReply::Status::Pending: break;
+    case device::TextReply::Status::Ok: appendLine(tr("OK"), kOkColor, true); break;
+    case device::TextReply::Status::Error: appendLine(tr("ERR: %1").arg(why), kErrorColor, true); break;
+    case device::TextReply::Status::Timeout: appendLine(tr("Timeout: %1").arg(why), kErrorColor, true); break;
+    case device::TextReply::Status::Cancelled: appendLine(tr("Cancelled: %1").arg(why), kErrorColor, true); break;
+    case device::TextReply::Status::NotSent: appendLine(tr("Not sent: %1").arg(why), kErrorColor, true); break;
+    case device::TextReply::Status::Pending: break;
     }
 }
 

@@ -4,7 +4,7 @@
 // "> command", the reply lines and the outcome (OK, or ERR / timeout in red with the
 // reason). It does not talk to the device; the main window forwards commandSubmitted()
 // and feeds the replies back.
-#include "protocol/hipnuc/ascii_reply.h"
+#include "device/text_reply.h"
 
 #include <QHash>
 #include <QStringList>
@@ -14,6 +14,7 @@ class QCompleter;
 class QLineEdit;
 class QPlainTextEdit;
 class QPushButton;
+class QStringListModel;
 
 namespace imudesk::ui {
 
@@ -25,17 +26,15 @@ public:
 
     explicit ConsoleWidget(QWidget *parent = nullptr);
 
-    // Every command of both manuals (v1.7.1 and v1.6.6) with representative arguments,
-    // made by the builders of protocol/hipnuc/ascii_command.h so that it follows them:
-    // "LOG VERSION", "LOG HI91 ONTIME 0.01", "CONFIG IMU URFR 024", "SERIALCONFIG 115200", ...
-    static QStringList documentedCommands();
-    // Completes the input line from documentedCommands() (case-insensitive prefix).
+    // The commands the input line completes (case-insensitive prefix): the link's documented
+    // ones (DeviceLink::textCommands).
+    void setCompletions(const QStringList &commands);
     QCompleter *completer() const { return m_completer; }
 
     // Logs "> text" for a command the session accepted under `id`.
     void showCommand(quint64 id, const QString &text);
     // Logs the reply lines and the outcome of command `id`.
-    void showReply(quint64 id, const protocol::hipnuc::AsciiReply &reply);
+    void showReply(quint64 id, const device::TextReply &reply);
     // Lines the device sent that answer no command.
     void showText(const QString &line);
     // A problem that is not a reply (e.g. the port failed).
@@ -66,6 +65,7 @@ private:
     QPushButton *m_sendButton = nullptr;
     QPushButton *m_clearButton = nullptr;
     QCompleter *m_completer = nullptr;
+    QStringListModel *m_completions = nullptr;
     QStringList m_history;
     int m_historyPos = 0;   // == m_history.size() when editing a new line
     QString m_draft;        // the unfinished line kept while browsing the history

@@ -276,15 +276,20 @@ void DeviceWorkspace::bindLink(std::unique_ptr<device::DeviceLink> link, std::sh
     connect(l, &device::DeviceLink::identityChanged, this, &DeviceWorkspace::onIdentityChanged);
     connect(l, &device::DeviceLink::statsUpdated, this, &DeviceWorkspace::onStatsUpdated);
     connect(l, &device::DeviceLink::errorOccurred, this, &DeviceWorkspace::onErrorOccurred);
+    connect(l, &device::DeviceLink::textReplied, this, &DeviceWorkspace::onTextReplied);
+    connect(l, &device::DeviceLink::textReceived, m_console, &ConsoleWidget::showText);
+    m_console->setCompletions(l->textCommands());
     if (auto *session = qobject_cast<device::Session *>(l)) {
         m_rawView->setLog(&session->rawLog());
         if (l->capabilities().testFlag(device::DeviceLink::Capability::Recording))
             m_recording->setSession(session); // a HiPNUC module or an HEC495
     }
     if (device::DeviceSession *s = hipnucSession()) {
-        connect(s, &device::DeviceSession::baudDetected, this, &DeviceWorkspace::onBaudDetected);
-        connect(s, &device::DeviceSession::commandFinished, this, &DeviceWorkspace::onCommandFinished);
-        connect(s, &device::DeviceSession::textReceived, m_console, &ConsoleWidget::showText);
+        // The rate a detection found, at once (the statistics bring it only on their next tick).
+        connect(s, &device::DeviceSession::baudDetected, this, [this](int baud) {
+            m_baud = baud;
+            updateStatsLabel();
+        });
         m_configPanel = new ConfigPanel(*s, m_configDock);
         m_configPanel->setObjectName(QStringLiteral("configPanel"));
         m_configDock->setWidget(m_configPanel);
@@ -308,8 +313,8 @@ void DeviceWorkspace::applyPreferences(const Preferences &prefs)
     m_autoReconnect = prefs.autoReconnect;
     m_recording->setFolder(prefs.effectiveRecordingFolder());
     m_recording->setPattern(prefs.recordingPattern);
-    if (isBusy() && !m_simulator && hipnucSession())
-        hipnucSession()->setAutoReconnect(prefs.autoReconnect);
+    if (auto *session = qobject_cast<device::Session *>(m_link.get()); session && isBusy() && !m_simulator)
+        session->setAutoReconnect(prefs.autoReconnect);
 }
 
 void DeviceWorkspace::resetViews()
@@ -456,10 +461,8 @@ void DeviceWorkspace::reclaimPort(const QString &port, int baud)
 
 void DeviceWorkspace::sendConsoleCommand(const QString &text)
 {
-    device::DeviceSession *session = hipnucSession();
-    if (!session)
-        return; // the console takes no input for this link
-    showSent(session->sendText(text, kCommandTimeoutMs), text);
+    if (const quint64 id = m_link->sendText(text, kCommandTimeoutMs))
+        showSent(id, text); // 0: the console takes no input for this link
 }
 
 void DeviceWorkspace::sendCommand(const protocol::hipnuc::Command &command)
@@ -590,28 +593,17 @@ void DeviceWorkspace::onIdentityChanged(const model::DeviceIdentity &identity)
 void DeviceWorkspace::onStatsUpdated(const device::SessionStats &stats)
 {
     m_stats = stats;
+    if (stats.baud > 0)
+        m_baud = stats.baud; // the rate found by a detection, or followed after a change
     updateStatsLabel();
 }
 
-void DeviceWorkspace::onBaudDetected(int baud)
-{
-    m_baud = baud;
-    updateStatsLabel();
-}
-
-void DeviceWorkspace::onCommandFinished(quint64 id, const protocol::hipnuc::AsciiReply &reply)
+void DeviceWorkspace::onTextReplied(quint64 id, const device::TextReply &reply)
 {
     m_console->showReply(id, reply);
     m_commandLog->complete(id, reply);
     if (!reply.ok())
         openDock(m_consoleDock); // the user sees the ERR and what the device said
-    // A LOG VERSION sent from the console or the Device menu refreshes the identity too.
-    const QString command = QString::fromStdString(reply.command).simplified();
-    if (reply.ok() && command.compare(QLatin1String("LOG VERSION"), Qt::CaseInsensitive) == 0) {
-        const auto identity = model::DeviceIdentity::fromKeyValues(reply.values);
-        if (identity.usable())
-            onIdentityChanged(identity);
-    }
 }
 
 void DeviceWorkspace::onErrorOccurred(const QString &message)

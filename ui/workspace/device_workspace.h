@@ -232,8 +232,7 @@ private:
     void onStateChanged(device::SessionState state, const QString &detail);
     void onIdentityChanged(const model::DeviceIdentity &identity);
     void onStatsUpdated(const device::SessionStats &stats);
-    void onBaudDetected(int baud);
-    void onCommandFinished(quint64 id, const protocol::hipnuc::AsciiReply &reply);
+    void onTextReplied(quint64 id, const device::TextReply &reply);
     void onErrorOccurred(const QString &message);
 
     void updateStateLabel();
