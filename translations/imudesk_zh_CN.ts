@@ -621,6 +621,24 @@
     </message>
 </context>
 <context>
+    <name>CanUi</name>
+    <message>
+        <location filename="../ui/families/can_ui.cpp" line="+20" />
+        <source>CAN %1:%2</source>
+        <translation>CAN %1:%2</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>CAN frames</source>
+        <translation>CAN 帧</translation>
+    </message>
+    <message>
+        <location line="+15" />
+        <source>CAN configuration</source>
+        <translation>CAN 配置</translation>
+    </message>
+</context>
+<context>
     <name>CanUpdateFlow</name>
     <message>
         <location filename="../core/firmware/can_update_flow.cpp" line="+35" />
@@ -1217,6 +1235,29 @@
     </message>
 </context>
 <context>
+    <name>FamilyUi</name>
+    <message>
+        <location filename="../ui/families/family_ui.cpp" line="+24" />
+        <source>Disconnect first, then connect to %1.</source>
+        <translation>请先断开连接，再连接 %1。</translation>
+    </message>
+    <message>
+        <location line="+34" />
+        <source>Nothing was opened.</source>
+        <translation>没有打开任何连接。</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>%1 answered, but ImuDesk has no view for its family.</source>
+        <translation>%1 有应答，但 ImuDesk 没有适用于该设备系列的视图。</translation>
+    </message>
+    <message>
+        <location line="+16" />
+        <source>Disconnect first, then connect again.</source>
+        <translation>请先断开连接，再重新连接。</translation>
+    </message>
+</context>
+<context>
     <name>FileAnalysis</name>
     <message>
         <location filename="../core/record/file_analysis.cpp" line="+53" />
@@ -1380,6 +1421,37 @@
         <location line="+2" />
         <source>object 0x%1 = %2</source>
         <translation>对象 0x%1 = %2</translation>
+    </message>
+</context>
+<context>
+    <name>Hec495SerialUi</name>
+    <message>
+        <location filename="../ui/families/hec495_serial_ui.cpp" line="+20" />
+        <source>Simulated HEC495</source>
+        <translation>模拟 HEC495</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>HEC495 on %1</source>
+        <translation>%1 上的 HEC495</translation>
+    </message>
+    <message>
+        <location line="+13" />
+        <source>Compass</source>
+        <translation>罗盘</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Compass settings</source>
+        <translation>罗盘设置</translation>
+    </message>
+</context>
+<context>
+    <name>HipnucSerialUi</name>
+    <message>
+        <location filename="../ui/families/hipnuc_serial_ui.cpp" line="+19" />
+        <source>Simulated %1 (firmware %2)</source>
+        <translation>模拟 %1（固件 %2）</translation>
     </message>
 </context>
 <context>
@@ -1981,120 +2053,6 @@
     </message>
 </context>
 <context>
-    <name>LinkFactory</name>
-    <message>
-        <location filename="../ui/workspace/link_factory.cpp" line="+85" />
-        <source>Simulated HEC495</source>
-        <translation>模拟 HEC495</translation>
-    </message>
-    <message>
-        <location line="+0" />
-        <location line="+13" />
-        <source>HEC495 on %1</source>
-        <translation>%1 上的 HEC495</translation>
-    </message>
-    <message>
-        <location line="-38" />
-        <source>Disconnect first, then connect to the compass.</source>
-        <translation>请先断开，再连接罗盘。</translation>
-    </message>
-    <message>
-        <location line="+10" />
-        <source>Compass</source>
-        <translation>罗盘</translation>
-    </message>
-    <message>
-        <location line="+4" />
-        <source>Compass settings</source>
-        <translation>罗盘设置</translation>
-    </message>
-    <message>
-        <location line="+34" />
-        <source>Disconnect first, then connect to the module.</source>
-        <translation>请先断开连接，再连接模块。</translation>
-    </message>
-    <message>
-        <location line="+6" />
-        <source>%1 answered, but ImuDesk has no view for its family.</source>
-        <translation>%1 有应答，但 ImuDesk 没有适用于该设备系列的视图。</translation>
-    </message>
-    <message>
-        <location line="+13" />
-        <source>The simulated compass could not start: %1</source>
-        <translation>模拟罗盘无法启动：%1</translation>
-    </message>
-    <message>
-        <location line="+22" />
-        <source>The simulated Modbus device could not start: %1</source>
-        <translation>模拟 Modbus 设备无法启动：%1</translation>
-    </message>
-    <message>
-        <location line="+4" />
-        <source>Simulated HEC495 (Modbus)</source>
-        <translation>模拟 HEC495（Modbus）</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>Simulated HI14 (Modbus)</source>
-        <translation>模拟 HI14（Modbus）</translation>
-    </message>
-    <message>
-        <location line="+4" />
-        <source>%1, Modbus node %2</source>
-        <translation>%1，Modbus 节点 %2</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <source>Disconnect first, then connect to the Modbus device.</source>
-        <translation>请先断开，再连接 Modbus 设备。</translation>
-    </message>
-    <message>
-        <location line="+31" />
-        <source>The simulated CAN device could not start on %1:%2: %3</source>
-        <translation>模拟 CAN 设备无法在 %1:%2 上启动：%3</translation>
-    </message>
-    <message>
-        <location line="+7" />
-        <source>CAN %1:%2</source>
-        <translation>CAN %1:%2</translation>
-    </message>
-    <message>
-        <location line="+3" />
-        <source>Disconnect first, then connect to the CAN bus.</source>
-        <translation>请先断开，再连接 CAN 总线。</translation>
-    </message>
-    <message>
-        <location line="+7" />
-        <source>CAN frames</source>
-        <translation>CAN 帧</translation>
-    </message>
-    <message>
-        <location line="+15" />
-        <source>CAN configuration</source>
-        <translation>CAN 配置</translation>
-    </message>
-    <message>
-        <location line="+23" />
-        <source>%1 cannot be read. Check that the file exists and that you may read it.</source>
-        <translation>无法读取 %1。请检查文件是否存在，以及您是否有读取权限。</translation>
-    </message>
-    <message>
-        <location line="+5" />
-        <source>Replay of %1</source>
-        <translation>回放 %1</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <source>Disconnect first, then open the capture.</source>
-        <translation>请先断开，再打开记录文件。</translation>
-    </message>
-    <message>
-        <location line="+6" />
-        <source>Replay</source>
-        <translation>回放</translation>
-    </message>
-</context>
-<context>
     <name>MagCalProcedure</name>
     <message>
         <location filename="../core/calib/mag_cal_procedure.cpp" line="+59" />
@@ -2438,6 +2396,24 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
 </context>
 <context>
+    <name>ModbusUi</name>
+    <message>
+        <location filename="../ui/families/modbus_ui.cpp" line="+19" />
+        <source>Simulated HEC495 (Modbus)</source>
+        <translation>模拟 HEC495（Modbus）</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Simulated HI14 (Modbus)</source>
+        <translation>模拟 HI14（Modbus）</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>%1, Modbus node %2</source>
+        <translation>%1，Modbus 节点 %2</translation>
+    </message>
+</context>
+<context>
     <name>MountingChoice</name>
     <message>
         <location filename="../core/settings/mounting_choice.cpp" line="+69" />
@@ -2731,6 +2707,19 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <location line="+2" />
         <source>Heading (Z axis) angle, float</source>
         <translation>航向角（Z 轴），浮点数</translation>
+    </message>
+</context>
+<context>
+    <name>ReplayUi</name>
+    <message>
+        <location filename="../ui/families/replay_ui.cpp" line="+18" />
+        <source>Replay of %1</source>
+        <translation>回放 %1</translation>
+    </message>
+    <message>
+        <location line="+9" />
+        <source>Replay</source>
+        <translation>回放</translation>
     </message>
 </context>
 <context>
@@ -4519,6 +4508,41 @@ Keep the module in place while turning it, and calibrate it together with everyt
     <name>imudesk::device::LinkOpener</name>
     <message>
         <location filename="../core/device/link_opener.cpp" line="+131" />
+        <source>The simulated device could not start: %1</source>
+        <translation>模拟设备无法启动：%1</translation>
+    </message>
+    <message>
+        <location line="+15" />
+        <source>The simulated compass could not start: %1</source>
+        <translation>模拟罗盘无法启动：%1</translation>
+    </message>
+    <message>
+        <location line="+19" />
+        <source>The simulated Modbus device could not start: %1</source>
+        <translation>模拟 Modbus 设备无法启动：%1</translation>
+    </message>
+    <message>
+        <location line="+20" />
+        <source>The simulated CAN device could not start on %1:%2: %3</source>
+        <translation>模拟 CAN 设备无法在 %1:%2 上启动：%3</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>A capture file cannot be simulated.</source>
+        <translation>采集文件无法模拟。</translation>
+    </message>
+    <message>
+        <location line="+15" />
+        <source>%1: the device's family is found by a detection, which does not finish at once</source>
+        <translation>%1：设备系列需要检测才能确定，检测不会立即完成</translation>
+    </message>
+    <message>
+        <location line="+21" />
+        <source>%1 cannot be read. Check that the file exists and that you may read it.</source>
+        <translation>无法读取 %1。请检查文件是否存在，以及您是否有读取权限。</translation>
+    </message>
+    <message>
+        <location line="+76" />
         <source>the port of %1 was lost while it was handed to the device's session</source>
         <translation>%1 的端口在交给设备会话时丢失</translation>
     </message>
@@ -8462,7 +8486,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::ConsoleWidget</name>
     <message>
-        <location filename="../ui/workspace/console_widget.cpp" line="+127" />
+        <location filename="../ui/workspace/console_widget.cpp" line="+88" />
         <source>(reply to: %1)</source>
         <translation>（对 %1 的应答）</translation>
     </message>
@@ -8515,7 +8539,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::DeviceWorkspace</name>
     <message>
-        <location filename="../ui/workspace/device_workspace.cpp" line="+336" />
+        <location filename="../ui/workspace/device_workspace.cpp" line="+343" />
         <source>New connection</source>
         <translation>新连接</translation>
     </message>
@@ -8525,22 +8549,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>%2 上的 %1</translation>
     </message>
     <message>
-        <location line="+62" />
-        <source>Disconnect first, then connect to the simulated device.</source>
-        <translation>请先断开，再连接模拟设备。</translation>
-    </message>
-    <message>
-        <location line="+8" />
-        <source>The simulated device could not start: %1</source>
-        <translation>模拟设备无法启动：%1</translation>
-    </message>
-    <message>
-        <location line="+9" />
-        <source>Simulated %1 (firmware %2)</source>
-        <translation>模拟 %1（固件 %2）</translation>
-    </message>
-    <message>
-        <location line="+221" />
+        <location line="+212" />
         <source>Not connected</source>
         <translation>未连接</translation>
     </message>
@@ -10194,7 +10203,7 @@ Samples: %3</source>
 <context>
     <name>imudesk::ui::MainWindow</name>
     <message>
-        <location filename="../ui/workspace/main_window.cpp" line="+367" />
+        <location filename="../ui/workspace/main_window.cpp" line="+377" />
         <source>Choose a port first.</source>
         <translation>请先选择串口。</translation>
     </message>
@@ -12138,7 +12147,7 @@ Edit it (Edit…) and start again.</source>
 <context>
     <name>imudesk::ui::ToolActions</name>
     <message>
-        <location filename="../ui/workspace/tool_actions.cpp" line="+105" />
+        <location filename="../ui/workspace/tool_actions.cpp" line="+104" />
         <source>&amp;Open capture…</source>
         <translation>打开记录(&amp;O)…</translation>
     </message>
@@ -12318,7 +12327,7 @@ Edit it (Edit…) and start again.</source>
         <translation>校准(&amp;C)</translation>
     </message>
     <message>
-        <location line="+48" />
+        <location line="+47" />
         <source>%1 could not be imported: %2</source>
         <translation>无法导入 %1：%2</translation>
     </message>
@@ -12482,12 +12491,12 @@ Edit it (Edit…) and start again.</source>
         <translation>请指定型号（--simulate）或测试计划（--station），二者不能同时指定。</translation>
     </message>
     <message>
-        <location line="+92" />
+        <location line="+101" />
         <source>Unknown panel "%1"; use configuration, recording, console, raw, commands or can.</source>
         <translation>未知面板“%1”；请使用 configuration、recording、console、raw、commands 或 can。</translation>
     </message>
     <message>
-        <location line="-105" />
+        <location line="-114" />
         <source>Model to simulate with --simulate (default HI14).</source>
         <translation>--simulate 模拟的型号（默认 HI14）。</translation>
     </message>
@@ -12522,8 +12531,8 @@ Edit it (Edit…) and start again.</source>
         <translation>未知的运动方式“%1”；请使用 static、spin 或 tumble。</translation>
     </message>
     <message>
-        <location line="+20" />
-        <location line="+21" />
+        <location line="+24" />
+        <location line="+26" />
         <location line="+43" />
         <source>ImuDesk</source>
         <translation>ImuDesk</translation>

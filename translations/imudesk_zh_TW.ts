@@ -621,6 +621,24 @@
     </message>
 </context>
 <context>
+    <name>CanUi</name>
+    <message>
+        <location filename="../ui/families/can_ui.cpp" line="+20" />
+        <source>CAN %1:%2</source>
+        <translation>CAN %1:%2</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>CAN frames</source>
+        <translation>CAN 幀</translation>
+    </message>
+    <message>
+        <location line="+15" />
+        <source>CAN configuration</source>
+        <translation>CAN 配置</translation>
+    </message>
+</context>
+<context>
     <name>CanUpdateFlow</name>
     <message>
         <location filename="../core/firmware/can_update_flow.cpp" line="+35" />
@@ -1217,6 +1235,29 @@
     </message>
 </context>
 <context>
+    <name>FamilyUi</name>
+    <message>
+        <location filename="../ui/families/family_ui.cpp" line="+24" />
+        <source>Disconnect first, then connect to %1.</source>
+        <translation>請先中斷連線，再連線 %1。</translation>
+    </message>
+    <message>
+        <location line="+34" />
+        <source>Nothing was opened.</source>
+        <translation>沒有開啟任何連線。</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>%1 answered, but ImuDesk has no view for its family.</source>
+        <translation>%1 有回應，但 ImuDesk 沒有適用於該裝置系列的檢視。</translation>
+    </message>
+    <message>
+        <location line="+16" />
+        <source>Disconnect first, then connect again.</source>
+        <translation>請先中斷連線，再重新連線。</translation>
+    </message>
+</context>
+<context>
     <name>FileAnalysis</name>
     <message>
         <location filename="../core/record/file_analysis.cpp" line="+53" />
@@ -1380,6 +1421,37 @@
         <location line="+2" />
         <source>object 0x%1 = %2</source>
         <translation>物件 0x%1 = %2</translation>
+    </message>
+</context>
+<context>
+    <name>Hec495SerialUi</name>
+    <message>
+        <location filename="../ui/families/hec495_serial_ui.cpp" line="+20" />
+        <source>Simulated HEC495</source>
+        <translation>模擬 HEC495</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>HEC495 on %1</source>
+        <translation>%1 上的 HEC495</translation>
+    </message>
+    <message>
+        <location line="+13" />
+        <source>Compass</source>
+        <translation>羅盤</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Compass settings</source>
+        <translation>羅盤設定</translation>
+    </message>
+</context>
+<context>
+    <name>HipnucSerialUi</name>
+    <message>
+        <location filename="../ui/families/hipnuc_serial_ui.cpp" line="+19" />
+        <source>Simulated %1 (firmware %2)</source>
+        <translation>模擬 %1（韌體 %2）</translation>
     </message>
 </context>
 <context>
@@ -1981,120 +2053,6 @@
     </message>
 </context>
 <context>
-    <name>LinkFactory</name>
-    <message>
-        <location filename="../ui/workspace/link_factory.cpp" line="+85" />
-        <source>Simulated HEC495</source>
-        <translation>模擬 HEC495</translation>
-    </message>
-    <message>
-        <location line="+0" />
-        <location line="+13" />
-        <source>HEC495 on %1</source>
-        <translation>%1 上的 HEC495</translation>
-    </message>
-    <message>
-        <location line="-38" />
-        <source>Disconnect first, then connect to the compass.</source>
-        <translation>請先中斷連線，再連線到羅盤。</translation>
-    </message>
-    <message>
-        <location line="+10" />
-        <source>Compass</source>
-        <translation>羅盤</translation>
-    </message>
-    <message>
-        <location line="+4" />
-        <source>Compass settings</source>
-        <translation>羅盤設定</translation>
-    </message>
-    <message>
-        <location line="+34" />
-        <source>Disconnect first, then connect to the module.</source>
-        <translation>請先中斷連線，再連線模組。</translation>
-    </message>
-    <message>
-        <location line="+6" />
-        <source>%1 answered, but ImuDesk has no view for its family.</source>
-        <translation>%1 有回應，但 ImuDesk 沒有適用於該裝置系列的檢視。</translation>
-    </message>
-    <message>
-        <location line="+13" />
-        <source>The simulated compass could not start: %1</source>
-        <translation>模擬羅盤無法啟動：%1</translation>
-    </message>
-    <message>
-        <location line="+22" />
-        <source>The simulated Modbus device could not start: %1</source>
-        <translation>模擬 Modbus 裝置無法啟動：%1</translation>
-    </message>
-    <message>
-        <location line="+4" />
-        <source>Simulated HEC495 (Modbus)</source>
-        <translation>模擬 HEC495（Modbus）</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>Simulated HI14 (Modbus)</source>
-        <translation>模擬 HI14（Modbus）</translation>
-    </message>
-    <message>
-        <location line="+4" />
-        <source>%1, Modbus node %2</source>
-        <translation>%1，Modbus 節點 %2</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <source>Disconnect first, then connect to the Modbus device.</source>
-        <translation>請先中斷連線，再連線到 Modbus 裝置。</translation>
-    </message>
-    <message>
-        <location line="+31" />
-        <source>The simulated CAN device could not start on %1:%2: %3</source>
-        <translation>模擬 CAN 裝置無法在 %1:%2 上啟動：%3</translation>
-    </message>
-    <message>
-        <location line="+7" />
-        <source>CAN %1:%2</source>
-        <translation>CAN %1:%2</translation>
-    </message>
-    <message>
-        <location line="+3" />
-        <source>Disconnect first, then connect to the CAN bus.</source>
-        <translation>請先中斷連線，再連線到 CAN 匯流排。</translation>
-    </message>
-    <message>
-        <location line="+7" />
-        <source>CAN frames</source>
-        <translation>CAN 幀</translation>
-    </message>
-    <message>
-        <location line="+15" />
-        <source>CAN configuration</source>
-        <translation>CAN 配置</translation>
-    </message>
-    <message>
-        <location line="+23" />
-        <source>%1 cannot be read. Check that the file exists and that you may read it.</source>
-        <translation>無法讀取 %1。請確認檔案存在且您有讀取權限。</translation>
-    </message>
-    <message>
-        <location line="+5" />
-        <source>Replay of %1</source>
-        <translation>重播 %1</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <source>Disconnect first, then open the capture.</source>
-        <translation>請先中斷連線，再開啟記錄檔。</translation>
-    </message>
-    <message>
-        <location line="+6" />
-        <source>Replay</source>
-        <translation>重播</translation>
-    </message>
-</context>
-<context>
     <name>MagCalProcedure</name>
     <message>
         <location filename="../core/calib/mag_cal_procedure.cpp" line="+59" />
@@ -2438,6 +2396,24 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
 </context>
 <context>
+    <name>ModbusUi</name>
+    <message>
+        <location filename="../ui/families/modbus_ui.cpp" line="+19" />
+        <source>Simulated HEC495 (Modbus)</source>
+        <translation>模擬 HEC495（Modbus）</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Simulated HI14 (Modbus)</source>
+        <translation>模擬 HI14（Modbus）</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>%1, Modbus node %2</source>
+        <translation>%1，Modbus 節點 %2</translation>
+    </message>
+</context>
+<context>
     <name>MountingChoice</name>
     <message>
         <location filename="../core/settings/mounting_choice.cpp" line="+69" />
@@ -2731,6 +2707,19 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <location line="+2" />
         <source>Heading (Z axis) angle, float</source>
         <translation>航向角（Z 軸），浮點數</translation>
+    </message>
+</context>
+<context>
+    <name>ReplayUi</name>
+    <message>
+        <location filename="../ui/families/replay_ui.cpp" line="+18" />
+        <source>Replay of %1</source>
+        <translation>重播 %1</translation>
+    </message>
+    <message>
+        <location line="+9" />
+        <source>Replay</source>
+        <translation>重播</translation>
     </message>
 </context>
 <context>
@@ -4519,6 +4508,41 @@ Keep the module in place while turning it, and calibrate it together with everyt
     <name>imudesk::device::LinkOpener</name>
     <message>
         <location filename="../core/device/link_opener.cpp" line="+131" />
+        <source>The simulated device could not start: %1</source>
+        <translation>模擬裝置無法啟動：%1</translation>
+    </message>
+    <message>
+        <location line="+15" />
+        <source>The simulated compass could not start: %1</source>
+        <translation>模擬羅盤無法啟動：%1</translation>
+    </message>
+    <message>
+        <location line="+19" />
+        <source>The simulated Modbus device could not start: %1</source>
+        <translation>模擬 Modbus 裝置無法啟動：%1</translation>
+    </message>
+    <message>
+        <location line="+20" />
+        <source>The simulated CAN device could not start on %1:%2: %3</source>
+        <translation>模擬 CAN 裝置無法在 %1:%2 上啟動：%3</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>A capture file cannot be simulated.</source>
+        <translation>擷取檔案無法模擬。</translation>
+    </message>
+    <message>
+        <location line="+15" />
+        <source>%1: the device's family is found by a detection, which does not finish at once</source>
+        <translation>%1：裝置系列需要偵測才能確定，偵測不會立即完成</translation>
+    </message>
+    <message>
+        <location line="+21" />
+        <source>%1 cannot be read. Check that the file exists and that you may read it.</source>
+        <translation>無法讀取 %1。請確認檔案存在且您有讀取權限。</translation>
+    </message>
+    <message>
+        <location line="+76" />
         <source>the port of %1 was lost while it was handed to the device's session</source>
         <translation>%1 的連接埠在交給裝置工作階段時遺失</translation>
     </message>
@@ -8462,7 +8486,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::ConsoleWidget</name>
     <message>
-        <location filename="../ui/workspace/console_widget.cpp" line="+127" />
+        <location filename="../ui/workspace/console_widget.cpp" line="+88" />
         <source>(reply to: %1)</source>
         <translation>（對 %1 的回應）</translation>
     </message>
@@ -8515,7 +8539,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::DeviceWorkspace</name>
     <message>
-        <location filename="../ui/workspace/device_workspace.cpp" line="+336" />
+        <location filename="../ui/workspace/device_workspace.cpp" line="+343" />
         <source>New connection</source>
         <translation>新連線</translation>
     </message>
@@ -8525,22 +8549,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>%2 上的 %1</translation>
     </message>
     <message>
-        <location line="+62" />
-        <source>Disconnect first, then connect to the simulated device.</source>
-        <translation>請先中斷連線，再連線到模擬裝置。</translation>
-    </message>
-    <message>
-        <location line="+8" />
-        <source>The simulated device could not start: %1</source>
-        <translation>模擬裝置無法啟動：%1</translation>
-    </message>
-    <message>
-        <location line="+9" />
-        <source>Simulated %1 (firmware %2)</source>
-        <translation>模擬 %1（韌體 %2）</translation>
-    </message>
-    <message>
-        <location line="+221" />
+        <location line="+212" />
         <source>Not connected</source>
         <translation>未連線</translation>
     </message>
@@ -10194,7 +10203,7 @@ Samples: %3</source>
 <context>
     <name>imudesk::ui::MainWindow</name>
     <message>
-        <location filename="../ui/workspace/main_window.cpp" line="+367" />
+        <location filename="../ui/workspace/main_window.cpp" line="+377" />
         <source>Choose a port first.</source>
         <translation>請先選擇串列埠。</translation>
     </message>
@@ -12138,7 +12147,7 @@ Edit it (Edit…) and start again.</source>
 <context>
     <name>imudesk::ui::ToolActions</name>
     <message>
-        <location filename="../ui/workspace/tool_actions.cpp" line="+105" />
+        <location filename="../ui/workspace/tool_actions.cpp" line="+104" />
         <source>&amp;Open capture…</source>
         <translation>開啟記錄檔(&amp;O)…</translation>
     </message>
@@ -12318,7 +12327,7 @@ Edit it (Edit…) and start again.</source>
         <translation>校準(&amp;C)</translation>
     </message>
     <message>
-        <location line="+48" />
+        <location line="+47" />
         <source>%1 could not be imported: %2</source>
         <translation>無法匯入 %1：%2</translation>
     </message>
@@ -12482,12 +12491,12 @@ Edit it (Edit…) and start again.</source>
         <translation>請指定型號（--simulate）或測試計劃（--station），二者不能同時指定。</translation>
     </message>
     <message>
-        <location line="+92" />
+        <location line="+101" />
         <source>Unknown panel "%1"; use configuration, recording, console, raw, commands or can.</source>
         <translation>未知的面板「%1」；請使用 configuration、recording、console、raw、commands 或 can。</translation>
     </message>
     <message>
-        <location line="-105" />
+        <location line="-114" />
         <source>Model to simulate with --simulate (default HI14).</source>
         <translation>--simulate 模擬的型號（預設 HI14）。</translation>
     </message>
@@ -12522,8 +12531,8 @@ Edit it (Edit…) and start again.</source>
         <translation>未知的運動方式「%1」；請使用 static、spin 或 tumble。</translation>
     </message>
     <message>
-        <location line="+20" />
-        <location line="+21" />
+        <location line="+24" />
+        <location line="+26" />
         <location line="+43" />
         <source>ImuDesk</source>
         <translation>ImuDesk</translation>

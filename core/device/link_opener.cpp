@@ -74,6 +74,15 @@ LinkRequest LinkRequest::capture(const QString &path)
     return r;
 }
 
+LinkRequest LinkRequest::simulatedHipnuc(const sim::SimOptions &options, int baud)
+{
+    LinkRequest r = serial(QString(), baud, SerialFamily::Hipnuc);
+    r.simulate = true;
+    r.motion = options.motion;
+    r.hipnucSimulator = options;
+    return r;
+}
+
 LinkRequest LinkRequest::simulatedHec495(sim::Motion motion)
 {
     LinkRequest r = serial(QString(), 0, SerialFamily::Hec495);
@@ -115,6 +124,19 @@ bool startSimulator(LinkRequest &r, QString *error)
     QString why;
     switch (r.kind) {
     case LinkRequest::Kind::Serial: {
+        if (r.family != SerialFamily::Hec495) {
+            auto simulator = std::make_shared<sim::PtySimulator>(r.hipnucSimulator);
+            if (!simulator->start(&why)) {
+                if (error)
+                    *error = LinkOpener::tr("The simulated device could not start: %1").arg(why);
+                return false;
+            }
+            r.family = SerialFamily::Hipnuc;
+            r.address = simulator->devicePath();
+            r.autoReconnect = false; // a pty's number is reused: never wait for it to "come back"
+            r.keepAlive = simulator;
+            return true;
+        }
         sim::Hec495Options options;
         options.motion = r.motion;
         options.rateHz = 50;

@@ -12,6 +12,7 @@
 #include "device/modbus_types.h"
 #include "device/serial_family_scan.h"
 #include "io/transport.h"
+#include "sim/hipnuc_simulator.h"
 #include "sim/motion_model.h"
 
 #include <QObject>
@@ -38,6 +39,7 @@ struct LinkRequest {
     // Modbus device on a pseudo-terminal, a CAN device on the same bus), moving as `motion`.
     bool simulate = false;
     sim::Motion motion = sim::Motion::Static;
+    sim::SimOptions hipnucSimulator; // the simulated HiPNUC module (motion: its own)
     // What the link needs (its simulator): handed on with the link, released after it.
     std::shared_ptr<void> keepAlive;
     // A serial link's transport (tests: an in-process simulator); null: the serial port.
@@ -49,6 +51,8 @@ struct LinkRequest {
     static LinkRequest capture(const QString &path);
     // A simulated HEC495 streaming at 50 Hz on a pseudo-terminal.
     static LinkRequest simulatedHec495(sim::Motion motion);
+    // A simulated HiPNUC module on a pseudo-terminal, connected at baud (0: detected).
+    static LinkRequest simulatedHipnuc(const sim::SimOptions &options, int baud);
 };
 
 class LinkOpener : public QObject {

@@ -275,8 +275,10 @@ int main(int argc, char **argv)
         uint64_t queued0 = 0, uartDrops0 = 0, decoded0 = 0, ptyDrops0 = 0, paused0 = 0;
     };
     std::vector<Extra> extras;
-    auto counters = [](ui::DeviceWorkspace *w, uint64_t &queued, uint64_t &uart) {
-        w->simulator()->withDevice([&](sim::HipnucSimulator &d) {
+    // The tabs' simulated modules, which this benchmark started (MainWindow::connectSimulated).
+    const auto simulatorOf = [](ui::DeviceWorkspace *w) { return static_cast<sim::PtySimulator *>(w->linkKeepAlive().get()); };
+    auto counters = [&simulatorOf](ui::DeviceWorkspace *w, uint64_t &queued, uint64_t &uart) {
+        simulatorOf(w)->withDevice([&](sim::HipnucSimulator &d) {
             queued = d.framesQueued();
             uart = d.droppedFrames();
         });
@@ -304,7 +306,7 @@ int main(int argc, char **argv)
     }
     ui::DeviceWorkspace *ws = window.currentWorkspace(); // the one in view
     device::DeviceSession &session = ws->session();
-    sim::PtySimulator *simulator = ws->simulator();
+    sim::PtySimulator *simulator = simulatorOf(ws);
     spin(300);
     uint64_t queued0 = 0, uartDrops0 = 0;
     counters(ws, queued0, uartDrops0);
@@ -314,8 +316,8 @@ int main(int argc, char **argv)
     for (Extra &e : extras) {
         counters(e.ws, e.queued0, e.uartDrops0);
         e.decoded0 = e.ws->session().store().totalAppended();
-        e.ptyDrops0 = e.ws->simulator()->stats().chunksDropped;
-        e.paused0 = e.ws->simulator()->stats().framesPausedInside;
+        e.ptyDrops0 = simulatorOf(e.ws)->stats().chunksDropped;
+        e.paused0 = simulatorOf(e.ws)->stats().framesPausedInside;
     }
     const int refresh0 = ws->chartPanel()->refreshCount();
     int chartsShown = 0; // the default layout: four charts in view
@@ -430,8 +432,8 @@ int main(int argc, char **argv)
         decoded += d;
         lost += q - e.queued0 > d ? q - e.queued0 - d : 0;
         uartDrops += u - e.uartDrops0;
-        ptyDrops += e.ws->simulator()->stats().chunksDropped - e.ptyDrops0;
-        paused += e.ws->simulator()->stats().framesPausedInside - e.paused0;
+        ptyDrops += simulatorOf(e.ws)->stats().chunksDropped - e.ptyDrops0;
+        paused += simulatorOf(e.ws)->stats().framesPausedInside - e.paused0;
     }
     const double refreshRate = refreshes / wallS;
     const double busy = 100.0 * cpuS / wallS;

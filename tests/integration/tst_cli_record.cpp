@@ -107,8 +107,10 @@ private Q_SLOTS:
         int rows = format == QLatin1String("jsonl") ? 1 : 0; // JSON Lines has no header line
         while (!f.atEnd())
             rows += !f.readLine().trimmed().isEmpty();
-        // 1 s at 100 Hz, fewer when a loaded machine starves the simulator; every format has the same rows.
-        QVERIFY2(rows >= 30 && rows <= 110, qPrintable(QString::number(rows)));
+        // 1 s of arrival time at 100 Hz: fewer when a loaded machine starves the simulator, more
+        // when frames held up by a stall arrive together inside the range; well short of the
+        // capture's 2 s either way (the range cut works). Every format has the same rows.
+        QVERIFY2(rows >= 30 && rows <= 160, qPrintable(QString::number(rows)));
         if (m_rangeRows >= 0)
             QCOMPARE(rows, m_rangeRows);
         m_rangeRows = rows;

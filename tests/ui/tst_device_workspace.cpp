@@ -200,7 +200,14 @@ private Q_SLOTS:
         ws.refreshViews();
         QCOMPARE(ws.chartPanel()->history().size(), size_t(50));
         // Connecting a serial port drops the attached link and starts the views afresh.
-        ws.connectPort(QStringLiteral("/dev/imudesk-no-such-port"), 115200);
+        ui::FamilyUiRegistry families;
+        ui::registerBuiltInFamilies(families);
+        QString error;
+        QVERIFY2(ui::openLinkIn(ws, families,
+                                device::LinkRequest::serial(QStringLiteral("/dev/imudesk-no-such-port"), 115200,
+                                                            device::SerialFamily::Hipnuc),
+                                &error),
+                 qPrintable(error));
         QVERIFY(ws.hipnucSession());
         QVERIFY(ws.configPanel());
         QVERIFY(ws.offersDock(ws.consoleDock()) && ws.offersDock(ws.configDock()));

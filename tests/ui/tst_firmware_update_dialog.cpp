@@ -121,7 +121,7 @@ private Q_SLOTS:
         QVERIFY(dlg->findChild<QLineEdit *>(QStringLiteral("file"))->text().contains(QStringLiteral("1.7.2")));
         const QString info = dlg->findChild<QLabel *>(QStringLiteral("imageInfo"))->text();
         QVERIFY2(info.contains(QStringLiteral("CRC-32")), qPrintable(info));
-        QVERIFY(ws->simulator()); // the module keeps running while the dialog has its port
+        QVERIFY(ws->isSimulated()); // the module keeps running while the dialog has its port
         QTRY_VERIFY_WITH_TIMEOUT(ws->state() == device::SessionState::Closed, 5000);
         QSignalSpy finished(dlg, &FirmwareUpdateDialog::updateFinished);
         QVERIFY(dlg->startUpdate());

@@ -114,7 +114,7 @@ private Q_SLOTS:
         imudesk::sim::SimOptions options; // HI14, firmware 1.7.1, HI91 at 100 Hz
         QString error;
         QVERIFY2(w.connectSimulated(options, 0, &error), qPrintable(error));
-        QVERIFY(w.simulator());
+        QVERIFY(w.isSimulated());
 
         // Live values through the pty, the session and the 30 Hz view clock.
         QTRY_VERIFY_WITH_TIMEOUT(cell(w, LatestValuesModel::Roll) != LatestValuesModel::missingText(), 5000);
@@ -214,7 +214,7 @@ private Q_SLOTS:
         // Disconnect: the session closes, then the simulator stops.
         w.disconnectDevice();
         QTRY_COMPARE(w.session().state(), imudesk::device::SessionState::Closed);
-        QTRY_VERIFY(!w.simulator());
+        QTRY_VERIFY(!w.isSimulated());
         QVERIFY2(errors.isEmpty(), qPrintable(errors.join(QLatin1Char('\n'))));
     }
 

@@ -10,16 +10,15 @@ class QWidget;
 
 namespace imudesk::ui {
 
-// A HiPNUC module on a serial port: the workspace's settings table, console and command log
-// serve it (its capabilities); the plug-in hands the session to the workspace's serial path.
+// A HiPNUC module on a serial port (or a simulated one on a pseudo-terminal): the workspace's
+// settings table, console and command log serve it (its capabilities); the plug-in adds the
+// firmware update over the port.
 class HipnucSerialUi : public FamilyUi {
     Q_DECLARE_TR_FUNCTIONS(HipnucSerialUi)
 public:
     bool accepts(const device::DeviceLink &link) const override;
     QString target(const device::LinkRequest &request) const override;
-    bool attach(DeviceWorkspace &ws, device::LinkOpener::Opened &opened, const device::LinkRequest &request,
-                QString *error) const override;
-    void decorate(DeviceWorkspace &, device::DeviceLink &, const device::LinkRequest &) const override {}
+    void decorate(DeviceWorkspace &ws, device::DeviceLink &link, const device::LinkRequest &request) const override;
 };
 
 // The Witlink HEC495 on a serial port: the compass dial, its settings and its calibration.

@@ -17,7 +17,8 @@ struct Texts {
 bool FamilyUi::attach(DeviceWorkspace &ws, device::LinkOpener::Opened &opened, const device::LinkRequest &request,
                       QString *error) const
 {
-    if (ws.attachLink(std::move(opened.link), target(request), std::move(opened.keepAlive)))
+    if (ws.attachLink(std::move(opened.link), target(request), std::move(opened.keepAlive), std::move(opened.start),
+                      request.address))
         return true;
     if (error)
         *error = Texts::tr("Disconnect first, then connect to %1.").arg(target(request));
@@ -67,7 +68,7 @@ bool showLink(DeviceWorkspace &ws, const FamilyUiRegistry &families, device::Lin
     if (!family->attach(ws, opened, request, error))
         return false;
     family->decorate(ws, *link, request);
-    opened.start();
+    ws.startLink();
     return true;
 }
 

@@ -28,8 +28,8 @@ public:
     virtual bool accepts(const device::DeviceLink &link) const = 0;
     // What the workspace calls the link ("HEC495 on /dev/ttyUSB0", "Simulated HEC495").
     virtual QString target(const device::LinkRequest &request) const = 0;
-    // Makes ws show the opened link (default: DeviceWorkspace::attachLink under target()).
-    // False (with why) while ws is busy.
+    // Makes ws show the opened link, not started yet (default: DeviceWorkspace::attachLink
+    // under target(), with what it needs and how it starts). False (with why) while ws is busy.
     virtual bool attach(DeviceWorkspace &ws, device::LinkOpener::Opened &opened, const device::LinkRequest &request,
                         QString *error) const;
     // Adds the family's docks and tools to ws, which shows `link` already.

@@ -1,6 +1,8 @@
 #include "families/built_in_families.h"
 
+#include "configuration/config_panel.h"
 #include "device/device_session.h"
+#include "ui/firmware/firmware_update_dialog.h"
 #include "workspace/device_workspace.h"
 
 namespace imudesk::ui {
@@ -12,20 +14,30 @@ bool HipnucSerialUi::accepts(const device::DeviceLink &link) const
 
 QString HipnucSerialUi::target(const device::LinkRequest &request) const
 {
-    return request.address;
+    if (!request.simulate)
+        return request.address;
+    return tr("Simulated %1 (firmware %2)")
+        .arg(QString::fromStdString(request.hipnucSimulator.model), QString::fromStdString(request.hipnucSimulator.firmware));
 }
 
-bool HipnucSerialUi::attach(DeviceWorkspace &ws, device::LinkOpener::Opened &opened, const device::LinkRequest &request,
-                            QString *error) const
+void HipnucSerialUi::decorate(DeviceWorkspace &ws, device::DeviceLink &, const device::LinkRequest &request) const
 {
-    std::unique_ptr<device::DeviceSession> session(static_cast<device::DeviceSession *>(opened.link.release()));
-    // The workspace's serial path: settings table, console, auto-reconnect, the port's name.
-    // showLink starts the session afterwards.
-    if (ws.connectSession(std::move(session), request.address, request.baud, [] {}))
-        return true;
-    if (error)
-        *error = tr("Disconnect first, then connect to the module.");
-    return false;
+    // The settings table (the workspace's, Capability::Settings) names the port in its advice.
+    if (ConfigPanel *panel = ws.configPanel())
+        panel->setPortName(request.address);
+    // Device > Update firmware: the dialog opens the port itself; the session lends it out (a
+    // simulated module keeps running, its bootloader takes the update) and takes it back.
+    ws.offerTool(DeviceWorkspace::LinkTool::FirmwareUpdate, [&ws, requestedBaud = request.baud](QWidget *parent) {
+        const int baud = ws.baud() > 0 ? ws.baud() : requestedBaud;
+        const auto identity = ws.identity();
+        const bool simulated = ws.isSimulated();
+        const QString port = ws.releasePort();
+        auto *dialog = new FirmwareUpdateDialog(port, baud, identity, parent);
+        dialog->setAttribute(Qt::WA_DeleteOnClose);
+        dialog->setDemoImageOffered(simulated);
+        QObject::connect(dialog, &QDialog::finished, &ws, [&ws] { ws.reclaimPort(); });
+        dialog->open();
+    });
 }
 
 } // namespace imudesk::ui

@@ -241,23 +241,25 @@ device::DeviceSession *DeviceWorkspace::hipnucSession() const
     return qobject_cast<device::DeviceSession *>(m_link.get());
 }
 
-device::DeviceSession &DeviceWorkspace::serialSession()
-{
-    if (!hipnucSession())
-        bindLink(std::make_unique<device::DeviceSession>(), {});
-    return *hipnucSession();
-}
-
 bool DeviceWorkspace::attachLink(std::unique_ptr<device::DeviceLink> link, const QString &target,
-                                 std::shared_ptr<void> keepAlive)
+                                 std::shared_ptr<void> keepAlive, std::function<void()> start, const QString &address)
 {
     if (isBusy() || !link)
         return false;
-    stopSimulator();
+    m_portLent = false;
     bindLink(std::move(link), std::move(keepAlive));
     m_target = target;
+    m_address = address;
+    m_start = std::move(start);
+    m_baud = 0;
     Q_EMIT titleChanged(title());
     return true;
+}
+
+void DeviceWorkspace::startLink()
+{
+    if (m_start && !isBusy())
+        m_start();
 }
 
 void DeviceWorkspace::bindLink(std::unique_ptr<device::DeviceLink> link, std::shared_ptr<void> keepAlive)
@@ -269,7 +271,7 @@ void DeviceWorkspace::bindLink(std::unique_ptr<device::DeviceLink> link, std::sh
 
     device::DeviceLink *l = m_link.get();
     connect(l, &device::DeviceLink::stateChanged, this, [this](SessionState state, const QString &detail) {
-        if (!busyState(state))
+        if (!busyState(state) && !m_portLent)
             m_linkKeepAlive.reset(); // e.g. stop the simulator behind a closed link
         onStateChanged(state, detail);
     });
@@ -313,7 +315,7 @@ void DeviceWorkspace::applyPreferences(const Preferences &prefs)
     m_autoReconnect = prefs.autoReconnect;
     m_recording->setFolder(prefs.effectiveRecordingFolder());
     m_recording->setPattern(prefs.recordingPattern);
-    if (auto *session = qobject_cast<device::Session *>(m_link.get()); session && isBusy() && !m_simulator)
+    if (auto *session = qobject_cast<device::Session *>(m_link.get()); session && isBusy() && !isSimulated())
         session->setAutoReconnect(prefs.autoReconnect);
 }
 
@@ -364,99 +366,31 @@ bool DeviceWorkspace::restoreLayout(const QByteArray &state)
     return m_layoutRestored;
 }
 
-void DeviceWorkspace::connectPort(const QString &port, int baud)
-{
-    if (isBusy())
-        return;
-    stopSimulator();
-    device::DeviceSession &session = serialSession();
-    m_identity.reset();
-    m_stats.reset();
-    m_baud = baud;
-    m_target = port;
-    m_configPanel->setPortName(port);
-    session.setAutoReconnect(m_autoReconnect);
-    Q_EMIT titleChanged(title());
-    session.open(port, baud);
-}
-
-bool DeviceWorkspace::connectSession(std::unique_ptr<device::DeviceSession> session, const QString &port, int baud,
-                                     const std::function<void()> &start)
-{
-    if (isBusy() || !session)
-        return false;
-    stopSimulator();
-    bindLink(std::move(session), {});
-    m_identity.reset();
-    m_stats.reset();
-    m_baud = baud;
-    m_target = port;
-    m_configPanel->setPortName(port);
-    hipnucSession()->setAutoReconnect(m_autoReconnect);
-    Q_EMIT titleChanged(title());
-    start();
-    return true;
-}
-
-bool DeviceWorkspace::connectSimulated(const sim::SimOptions &options, int baud, QString *error)
-{
-    if (isBusy()) {
-        if (error)
-            *error = tr("Disconnect first, then connect to the simulated device.");
-        return false;
-    }
-    stopSimulator();
-    auto simulator = std::make_unique<sim::PtySimulator>(options);
-    QString why;
-    if (!simulator->start(&why)) {
-        if (error)
-            *error = tr("The simulated device could not start: %1").arg(why);
-        return false;
-    }
-    device::DeviceSession &session = serialSession();
-    m_simulator = std::move(simulator);
-    m_identity.reset();
-    m_stats.reset();
-    m_baud = baud;
-    session.setAutoReconnect(false); // a pty's number is reused: never wait for it to "come back"
-    m_target = tr("Simulated %1 (firmware %2)")
-                   .arg(QString::fromStdString(options.model), QString::fromStdString(options.firmware));
-    Q_EMIT titleChanged(title());
-    m_configPanel->setPortName(m_simulator->devicePath());
-    session.open(m_simulator->devicePath(), baud);
-    return true;
-}
-
 void DeviceWorkspace::disconnectDevice()
 {
+    m_portLent = false;
     if (isBusy())
         link().close(); // the simulator stops when the link reports Closed
     else
-        stopSimulator();
+        m_linkKeepAlive.reset();
 }
 
 QString DeviceWorkspace::releasePort()
 {
-    const QString port = m_simulator ? m_simulator->devicePath() : m_target;
-    m_keepSimulator = m_simulator != nullptr;
+    m_portLent = true;
     if (isBusy())
         m_link->close();
-    return port;
+    return m_address;
 }
 
-void DeviceWorkspace::reclaimPort(const QString &port, int baud)
+void DeviceWorkspace::reclaimPort()
 {
-    m_keepSimulator = false;
-    if (!m_simulator) {
-        connectPort(port, baud);
-        return;
-    }
+    m_portLent = false;
     if (isBusy())
         return;
     m_identity.reset();
     m_stats.reset();
-    m_baud = baud;
-    serialSession().open(m_simulator->devicePath(), baud);
+    startLink();
 }
 
 void DeviceWorkspace::sendConsoleCommand(const QString &text)
@@ -485,13 +419,6 @@ void DeviceWorkspace::showSent(quint64 id, const QString &text)
     m_commandLog->record(id, text);
 }
 
-void DeviceWorkspace::stopSimulator()
-{
-    if (!m_simulator)
-        return;
-    m_simulator->stop();
-    m_simulator.reset();
-}
 
 void DeviceWorkspace::pullSamples()
 {
@@ -573,8 +500,8 @@ void DeviceWorkspace::onStateChanged(SessionState state, const QString &detail)
 {
     m_state = state;
     m_stateDetail = detail;
-    if (!busyState(state) && !m_keepSimulator)
-        stopSimulator(); // the port is closed already
+    if (!busyState(state) && !m_portLent)
+        m_linkKeepAlive.reset(); // the port is closed already: what the link needed goes
     m_console->setInputEnabled(state == SessionState::Connected);
     updateStateLabel();
     updateStatsLabel();

@@ -16,7 +16,6 @@
 // each in a QTableView (the console's completer uses a QStringListModel).
 #include "device/device_session.h"
 #include "workspace/preferences.h"
-#include "sim/hipnuc_simulator.h"
 
 #include <QElapsedTimer>
 #include <QHash>
@@ -35,9 +34,6 @@ class QTableView;
 
 namespace imudesk::models {
 class LatestValuesModel;
-}
-namespace imudesk::sim {
-class PtySimulator;
 }
 
 namespace imudesk::ui {
@@ -75,21 +71,16 @@ public:
     explicit DeviceWorkspace(QWidget *parent = nullptr);
     ~DeviceWorkspace() override;
 
-    // Opens a serial port (baud 0 = auto-detect).
-    void connectPort(const QString &port, int baud);
-    // Shows a HiPNUC serial session made elsewhere (a detection that opened the port hands it
-    // over, device::LinkOpener) and starts it with `start`. False while busy.
-    bool connectSession(std::unique_ptr<device::DeviceSession> session, const QString &port, int baud,
-                        const std::function<void()> &start);
-    // Starts a simulated device on a pseudo-terminal and connects to it like to hardware.
-    bool connectSimulated(const sim::SimOptions &options, int baud, QString *error = nullptr);
-    // Shows another link (a HEC495, a Modbus or CAN device, a replayed capture) in this
-    // workspace's live views in place of the current one; the link should be opened by the
-    // caller after this returns. `keepAlive` holds what the link needs (e.g. its simulator)
-    // and is released when the link closes or fails. False while busy. connectPort() and
-    // connectSimulated() go back to a HiPNUC serial session.
+    // Shows a link (device::LinkOpener made it, a family's UI plug-in attaches it, ui/families)
+    // in this workspace's live views in place of the current one. `keepAlive` holds what the
+    // link needs (e.g. its simulator) and is released when the link closes or fails; `start`
+    // opens the link (startLink(), and again after releasePort()); `address` is what it opens
+    // (a port, a bus, a file). False while busy.
     bool attachLink(std::unique_ptr<device::DeviceLink> link, const QString &target,
-                    std::shared_ptr<void> keepAlive = {});
+                    std::shared_ptr<void> keepAlive = {}, std::function<void()> start = {},
+                    const QString &address = {});
+    // Opens the attached link.
+    void startLink();
     // The link the views show (a HiPNUC serial session, not yet open, in a new workspace).
     device::DeviceLink &link() { return *m_link; }
     const device::DeviceLink &link() const { return *m_link; }
@@ -101,8 +92,8 @@ public:
     // front), or below the charts (monitors and transport controls).
     enum class LinkDockPlace { OverAttitude, BehindValues, Below };
     // What the attached link's family offers in the Tools and Calibrate menus beyond the
-    // capabilities (a bus scan, the compass's own calibration, a firmware update over the bus).
-    // Offered by whoever attaches the link, which knows its family; withdrawn with the link.
+    // capabilities (a bus scan, the compass's own calibration, a firmware update over the port
+    // or the bus). Offered by the family's UI plug-in (ui/families); withdrawn with the link.
     enum class LinkTool { ScanBus, CompassCalibration, FirmwareUpdate };
     using ToolRunner = std::function<void(QWidget *dialogParent)>;
     void offerTool(LinkTool tool, ToolRunner run);
@@ -132,11 +123,16 @@ public:
 
     // The HiPNUC serial session; only while hipnucSession() is not null.
     device::DeviceSession &session() const { return *hipnucSession(); }
-    sim::PtySimulator *simulator() const { return m_simulator.get(); }
-    // Frees the serial port for another user (the firmware update), keeping a simulated module
-    // running behind it; returns the port. reclaimPort() connects this tab to it again.
+    // The link's far end is a simulated device (what it needs is kept alive with it).
+    bool isSimulated() const { return m_linkKeepAlive != nullptr; }
+    // What the link needs (its simulator), for whoever made the link and knows its type.
+    const std::shared_ptr<void> &linkKeepAlive() const { return m_linkKeepAlive; }
+    // Frees the link's port for another user (the firmware update), keeping a simulated module
+    // running behind it; returns the port. reclaimPort() opens the link on it again.
     QString releasePort();
-    void reclaimPort(const QString &port, int baud);
+    void reclaimPort();
+    // What the link opens ("/dev/ttyUSB0", the simulator's pseudo-terminal).
+    QString address() const { return m_address; }
     device::SessionState state() const { return m_state; }
     // What the user connected to ("/dev/ttyUSB0", "Simulated HI14 (firmware 1.7.1)").
     QString target() const { return m_target; }
@@ -219,14 +215,11 @@ private:
     void resizeValueColumns();
     void placeDetailsDock(); // tabbed behind the values, visible once offered (not in Calibrate)
     void resizeDetailColumns();
-    void stopSimulator();
     // Makes `link` the one shown: the old link's docks and panels go, then the old link; the
     // views start afresh and the docks follow the new link's capabilities.
     void bindLink(std::unique_ptr<device::DeviceLink> link, std::shared_ptr<void> keepAlive);
     // Closes and frees the link, and first what refers to it.
     void dropLink();
-    // A HiPNUC serial session to open (the current one if it is one).
-    device::DeviceSession &serialSession();
     void resetViews();
 
     void onStateChanged(device::SessionState state, const QString &detail);
@@ -239,8 +232,6 @@ private:
     void updateIdentityLabel();
     void updateStatsLabel();
 
-    // Declared before the link: the link (and its port) goes first on destruction.
-    std::unique_ptr<sim::PtySimulator> m_simulator;
     // What the link needs (declared before it: the link goes first).
     std::shared_ptr<void> m_linkKeepAlive;
     QHash<int, ToolRunner> m_linkTools; // LinkTool -> what opens it, for the attached link
@@ -263,7 +254,9 @@ private:
     // The user dragged a separator: the preset's proportions no longer follow the window size.
     bool m_userSized = false;
     QElapsedTimer m_valuesClock; // when the values table was last refreshed
-    bool m_keepSimulator = false; // the port is lent out (firmware update): the simulator stays
+    bool m_portLent = false; // the port is lent out (firmware update): what the link needs stays
+    std::function<void()> m_start; // opens the attached link
+    QString m_address;
     int m_valuesColumnsWidth = 0; // what the values table's columns need, without the stretch
     uint64_t m_chartSeq = 0; // next sample of the store the charts have not seen
     ConsoleWidget *m_console = nullptr;

@@ -275,7 +275,10 @@ void MainWindow::connectPort(const QString &port, int baud)
     m_connectionBar->selectPort(PortChoice::serial(port));
     m_connectionBar->selectBaud(baud);
     if (baud != 0) {
-        freeWorkspace()->connectPort(port, baud);
+        // A rate given: a HiPNUC module there (the HEC495 is found with Auto or chosen by name).
+        QString error;
+        if (!openLink(device::LinkRequest::serial(port, baud, device::SerialFamily::Hipnuc), &error))
+            presentError(error);
         return;
     }
     // Baud "Auto": the port is opened once; the detection tells a HiPNUC module from a HEC495
@@ -324,11 +327,13 @@ bool MainWindow::connectSimulated(const sim::SimOptions &options, int baud, QStr
     const QString firmware = QString::fromStdString(options.firmware);
     m_connectionBar->selectPort(PortChoice::simulated(model, firmware));
     m_connectionBar->selectBaud(baud);
-    return freeWorkspace()->connectSimulated(options, baud, error);
+    return openLink(device::LinkRequest::simulatedHipnuc(options, baud), error);
 }
 
 bool MainWindow::openLink(device::LinkRequest request, QString *error)
 {
+    if (request.kind == device::LinkRequest::Kind::Serial && !request.simulate)
+        request.autoReconnect = m_prefs.autoReconnect;
     return openLinkIn(*freeWorkspace(), *m_families, std::move(request), error);
 }
 
@@ -378,9 +383,9 @@ device::DeviceSession &MainWindow::session() const
     return currentWorkspace()->session();
 }
 
-sim::PtySimulator *MainWindow::simulator() const
+bool MainWindow::isSimulated() const
 {
-    return currentWorkspace()->simulator();
+    return currentWorkspace()->isSimulated();
 }
 
 ConsoleWidget *MainWindow::console() const

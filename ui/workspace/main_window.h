@@ -29,10 +29,6 @@ class QTableView;
 namespace imudesk::models {
 class LatestValuesModel;
 }
-namespace imudesk::sim {
-class PtySimulator;
-}
-
 namespace imudesk::ui {
 
 class ComparisonChart;
@@ -93,7 +89,7 @@ public:
 
     // The current workspace's pieces (the main window always has one).
     device::DeviceSession &session() const;
-    sim::PtySimulator *simulator() const;
+    bool isSimulated() const; // the current tab's device is a simulated one
     ConsoleWidget *console() const;
     QTableView *valuesView() const;
     models::LatestValuesModel *valuesModel() const;

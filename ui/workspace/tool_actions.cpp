@@ -166,9 +166,9 @@ void ToolActions::update(const DeviceWorkspace *ws)
     m_gyroCal->setEnabled(settings && connected);
     m_attitudeReset->setEnabled(settings && connected);
     m_compassCal->setEnabled(connected && ws->offersTool(Tool::CompassCalibration));
-    // The update opens the port itself: a connected HiPNUC serial device, or a link that offers
-    // it (a HiPNUC module on a CANopen bus: the dialog opens its own CAN device).
-    m_firmware->setEnabled((settings && connected) || (connected && ws->offersTool(Tool::FirmwareUpdate)));
+    // The update opens the port or the bus itself; the link's family offers it (a HiPNUC module
+    // on its serial port or on a CANopen bus).
+    m_firmware->setEnabled(connected && ws->offersTool(Tool::FirmwareUpdate));
 }
 
 bool ToolActions::openCapture(const QString &path)
@@ -383,24 +383,10 @@ void ToolActions::openCalHistory()
 
 void ToolActions::updateFirmware()
 {
-    DeviceWorkspace *ws = m_host->currentWorkspace();
-    if (!ws)
-        return;
-    if (ws->runTool(DeviceWorkspace::LinkTool::FirmwareUpdate, m_host->dialogParent()))
-        return;
-    if (!ws->hipnucSession())
-        return;
-    const int baud = ws->baud();
-    const auto identity = ws->identity();
-    const bool simulated = ws->simulator() != nullptr;
-    // The dialog opens the port itself: the session lends it out (a simulated module keeps
-    // running, its bootloader takes the update) and takes it back afterwards.
-    const QString port = ws->releasePort();
-    auto *dialog = new FirmwareUpdateDialog(port, baud, identity, m_host->dialogParent());
-    dialog->setAttribute(Qt::WA_DeleteOnClose);
-    dialog->setDemoImageOffered(simulated);
-    connect(dialog, &QDialog::finished, ws, [ws, port, baud] { ws->reclaimPort(port, baud); });
-    dialog->open();
+    // The family's update (ui/families): over the serial port for a HiPNUC module, over the bus
+    // for one on CANopen.
+    if (DeviceWorkspace *ws = m_host->currentWorkspace())
+        ws->runTool(DeviceWorkspace::LinkTool::FirmwareUpdate, m_host->dialogParent());
 }
 
 } // namespace imudesk::ui
