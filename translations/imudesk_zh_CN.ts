@@ -1449,7 +1449,7 @@
 <context>
     <name>HipnucSerialUi</name>
     <message>
-        <location filename="../ui/families/hipnuc_serial_ui.cpp" line="+19" />
+        <location filename="../ui/families/hipnuc_serial_ui.cpp" line="+25" />
         <source>Simulated %1 (firmware %2)</source>
         <translation>模拟 %1（固件 %2）</translation>
     </message>
@@ -8434,8 +8434,8 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
     <message>
         <location line="+1" />
-        <source>Auto tries every HiPNUC baud rate, starting with 115200</source>
-        <translation>自动：从 115200 开始依次尝试 HiPNUC 支持的所有波特率</translation>
+        <source>Auto finds the device and the baud rate it talks at, starting with 115200</source>
+        <translation>自动：找出设备及其使用的波特率，从 115200 开始</translation>
     </message>
     <message>
         <location line="+2" />
@@ -8539,7 +8539,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::DeviceWorkspace</name>
     <message>
-        <location filename="../ui/workspace/device_workspace.cpp" line="+343" />
+        <location filename="../ui/workspace/device_workspace.cpp" line="+346" />
         <source>New connection</source>
         <translation>新连接</translation>
     </message>
@@ -8549,7 +8549,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>%2 上的 %1</translation>
     </message>
     <message>
-        <location line="+212" />
+        <location line="+198" />
         <source>Not connected</source>
         <translation>未连接</translation>
     </message>
@@ -10203,12 +10203,12 @@ Samples: %3</source>
 <context>
     <name>imudesk::ui::MainWindow</name>
     <message>
-        <location filename="../ui/workspace/main_window.cpp" line="+377" />
+        <location filename="../ui/workspace/main_window.cpp" line="+376" />
         <source>Choose a port first.</source>
         <translation>请先选择串口。</translation>
     </message>
     <message>
-        <location line="+82" />
+        <location line="+77" />
         <source>ImuDesk</source>
         <translation>ImuDesk</translation>
     </message>
@@ -10253,7 +10253,7 @@ Samples: %3</source>
         <translation>PNG 图像 (*.png)</translation>
     </message>
     <message>
-        <location line="+123" />
+        <location line="+116" />
         <source>&amp;File</source>
         <translation>文件(&amp;F)</translation>
     </message>
@@ -12147,7 +12147,7 @@ Edit it (Edit…) and start again.</source>
 <context>
     <name>imudesk::ui::ToolActions</name>
     <message>
-        <location filename="../ui/workspace/tool_actions.cpp" line="+104" />
+        <location filename="../ui/workspace/tool_actions.cpp" line="+101" />
         <source>&amp;Open capture…</source>
         <translation>打开记录(&amp;O)…</translation>
     </message>
@@ -12411,7 +12411,7 @@ Edit it (Edit…) and start again.</source>
 <context>
     <name>main</name>
     <message>
-        <location filename="../app/gui/main.cpp" line="+90" />
+        <location filename="../app/gui/main.cpp" line="+91" />
         <source>ImuDesk: a bench tool for HiPNUC IMU modules.</source>
         <translation>ImuDesk：HiPNUC IMU 模块测试工具。</translation>
     </message>

@@ -1,6 +1,7 @@
 // ImuDesk GUI: command line, language, settings, main window.
 #include "workspace/device_workspace.h"
 #include "workspace/language_switcher.h"
+#include "device/serial_family_scan.h"
 #include "families/family_ui.h"
 #include "workspace/tool_actions.h"
 #include "workspace/main_window.h"
@@ -182,7 +183,7 @@ int main(int argc, char *argv[])
     if (parser.isSet(baudOption) && parser.value(baudOption) != QLatin1String("auto")) {
         bool ok = false;
         baud = parser.value(baudOption).toInt(&ok);
-        const auto &rates = imudesk::device::DeviceSession::detectionBauds();
+        const auto &rates = imudesk::device::SerialFamilyScan::defaultBauds();
         if (!ok || std::find(rates.begin(), rates.end(), baud) == rates.end()) {
             QStringList names;
             for (int r : rates)

@@ -72,4 +72,12 @@ private:
 
 Q_DECLARE_OPERATORS_FOR_FLAGS(DeviceLink::Capabilities)
 
+// No device: what a workspace shows before anything is connected (closed, no capabilities).
+class NoLink final : public DeviceLink {
+public:
+    using DeviceLink::DeviceLink;
+    void close() override {}
+    QString linkKind() const override { return QString(); }
+};
+
 } // namespace imudesk::device

@@ -22,6 +22,7 @@
 // frame that reached ImuDesk was lost, or the recording is damaged.
 #include "charts/chart_panel.h"
 #include "charts/chart_view.h"
+#include "device/device_session.h"
 #include "workspace/device_workspace.h"
 #include "workspace/main_window.h"
 #include "record/capture_reader.h"
@@ -275,7 +276,10 @@ int main(int argc, char **argv)
         uint64_t queued0 = 0, uartDrops0 = 0, decoded0 = 0, ptyDrops0 = 0, paused0 = 0;
     };
     std::vector<Extra> extras;
-    // The tabs' simulated modules, which this benchmark started (MainWindow::connectSimulated).
+    // The tabs' sessions and simulated modules, which this benchmark started (MainWindow::connectSimulated).
+    const auto sessionOf = [](ui::DeviceWorkspace *w) -> device::DeviceSession & {
+        return *qobject_cast<device::DeviceSession *>(&w->link());
+    };
     const auto simulatorOf = [](ui::DeviceWorkspace *w) { return static_cast<sim::PtySimulator *>(w->linkKeepAlive().get()); };
     auto counters = [&simulatorOf](ui::DeviceWorkspace *w, uint64_t &queued, uint64_t &uart) {
         simulatorOf(w)->withDevice([&](sim::HipnucSimulator &d) {
@@ -297,7 +301,7 @@ int main(int argc, char **argv)
             return 1;
         }
         // Quiet line, then a clean baseline.
-        if (!command(w->session(), QStringLiteral("LOG HI91 ONTIME 0"))) {
+        if (!command(sessionOf(w), QStringLiteral("LOG HI91 ONTIME 0"))) {
             std::fprintf(stderr, "bench_gui_live: LOG HI91 ONTIME 0 was not acknowledged\n");
             return 1;
         }
@@ -305,7 +309,7 @@ int main(int argc, char **argv)
             extras.push_back(Extra{w});
     }
     ui::DeviceWorkspace *ws = window.currentWorkspace(); // the one in view
-    device::DeviceSession &session = ws->session();
+    device::DeviceSession &session = sessionOf(ws);
     sim::PtySimulator *simulator = simulatorOf(ws);
     spin(300);
     uint64_t queued0 = 0, uartDrops0 = 0;
@@ -315,7 +319,7 @@ int main(int argc, char **argv)
     const uint64_t paused0 = simulator->stats().framesPausedInside;
     for (Extra &e : extras) {
         counters(e.ws, e.queued0, e.uartDrops0);
-        e.decoded0 = e.ws->session().store().totalAppended();
+        e.decoded0 = sessionOf(e.ws).store().totalAppended();
         e.ptyDrops0 = simulatorOf(e.ws)->stats().chunksDropped;
         e.paused0 = simulatorOf(e.ws)->stats().framesPausedInside;
     }
@@ -350,7 +354,7 @@ int main(int argc, char **argv)
     // frame counted below was sent while the machine was busy.
     BusyLoad busyLoad(load);
     for (Extra &e : extras)
-        if (!command(e.ws->session(), QStringLiteral("LOG HI91 ONTIME 0.001"))) {
+        if (!command(sessionOf(e.ws), QStringLiteral("LOG HI91 ONTIME 0.001"))) {
             std::fprintf(stderr, "%s: LOG HI91 ONTIME 0.001 was not acknowledged\n", name);
             return 1;
         }
@@ -399,7 +403,7 @@ int main(int argc, char **argv)
 
     command(session, QStringLiteral("LOG HI91 ONTIME 0"));
     for (Extra &e : extras)
-        command(e.ws->session(), QStringLiteral("LOG HI91 ONTIME 0"));
+        command(sessionOf(e.ws), QStringLiteral("LOG HI91 ONTIME 0"));
     spin(500); // let the last frames arrive
     bool captureIntact = true;
     quint64 captureBytes = 0;
@@ -427,7 +431,7 @@ int main(int argc, char **argv)
     for (Extra &e : extras) { // every module counts: the sums over all of them
         uint64_t q = 0, u = 0;
         counters(e.ws, q, u);
-        const uint64_t d = e.ws->session().store().totalAppended() - e.decoded0;
+        const uint64_t d = sessionOf(e.ws).store().totalAppended() - e.decoded0;
         sent += q - e.queued0;
         decoded += d;
         lost += q - e.queued0 > d ? q - e.queued0 - d : 0;

@@ -9,6 +9,7 @@
 #include "workspace/main_window.h"
 #include "workspace/raw_bytes_view.h"
 #include "itemmodels/latest_values_model.h"
+#include "../common/hipnuc_link.h"
 #include "../common/test_main.h"
 
 #include <QApplication>
@@ -71,7 +72,7 @@ private Q_SLOTS:
         auto keepAlive = std::make_shared<int>(7);
         std::weak_ptr<int> watch = keepAlive;
         QVERIFY(ws.attachLink(std::move(link), QStringLiteral("Scripted bus"), std::move(keepAlive)));
-        QVERIFY(!ws.hipnucSession());
+        QVERIFY(!test::hipnucOf(ws));
         QCOMPARE(&ws.link(), static_cast<device::DeviceLink *>(raw));
         // A link without capabilities: none of the serial session's panels, no settings panel.
         QVERIFY(!ws.configPanel());
@@ -208,7 +209,7 @@ private Q_SLOTS:
                                                             device::SerialFamily::Hipnuc),
                                 &error),
                  qPrintable(error));
-        QVERIFY(ws.hipnucSession());
+        QVERIFY(test::hipnucOf(ws));
         QVERIFY(ws.configPanel());
         QVERIFY(ws.offersDock(ws.consoleDock()) && ws.offersDock(ws.configDock()));
         QCOMPARE(ws.chartPanel()->history().size(), size_t(0));

@@ -8,6 +8,7 @@
 // presets and the bottom panels that open on demand.
 #include "../common/layout_checks.h"
 #include "../common/synthetic_capture.h"
+#include "../common/hipnuc_link.h"
 #include "../common/test_main.h"
 #include "calibration/attitude_reset_wizard.h"
 #include "attitude/attitude_widget.h"
@@ -206,8 +207,8 @@ class TstLayout : public QObject {
             DeviceWorkspace *ws = w.currentWorkspace();
             if (!imudesk::test::waitFor([ws] { return ws->link().state() == device::SessionState::Connected; }, 5000))
                 return false;
-            ws->hipnucSession()->sendCommand(protocol::hipnuc::commands::logOnTime(protocol::hipnuc::Message::GGA, 0.2));
-            ws->hipnucSession()->sendCommand(protocol::hipnuc::commands::logOnTime(protocol::hipnuc::Message::RMC, 0.2));
+            test::hipnucOf(*ws)->sendCommand(protocol::hipnuc::commands::logOnTime(protocol::hipnuc::Message::GGA, 0.2));
+            test::hipnucOf(*ws)->sendCommand(protocol::hipnuc::commands::logOnTime(protocol::hipnuc::Message::RMC, 0.2));
             return imudesk::test::waitFor(
                 [ws] { return !ws->valuesView()->isRowHidden(models::LatestValuesModel::UtcTime); }, 5000);
         }
@@ -222,8 +223,8 @@ class TstLayout : public QObject {
             if (!imudesk::test::waitFor([ws] { return ws->link().state() == device::SessionState::Connected; }, 5000))
                 return false;
             namespace hpc = protocol::hipnuc::commands;
-            ws->hipnucSession()->sendCommand(hpc::logHi83Map(protocol::hipnuc::Hi83::kSupportedMask));
-            ws->hipnucSession()->sendCommand(hpc::logOnTime(protocol::hipnuc::Message::HI83, 0.05));
+            test::hipnucOf(*ws)->sendCommand(hpc::logHi83Map(protocol::hipnuc::Hi83::kSupportedMask));
+            test::hipnucOf(*ws)->sendCommand(hpc::logOnTime(protocol::hipnuc::Message::HI83, 0.05));
             return imudesk::test::waitFor([ws] { return !ws->detailsDock()->isHidden(); }, 5000);
         }
         case Kind::Hec495: return w.connectSimulatedHec495(error);

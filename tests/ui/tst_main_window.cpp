@@ -1,6 +1,7 @@
 // MainWindow offscreen against a simulated HI14 on a pseudo-terminal: live values,
 // identity and rates in the status bar, the console, screenshots, run-time language.
 #include "../common/layout_checks.h"
+#include "../common/hipnuc_link.h"
 #include "../common/test_main.h"
 #include "recording/export_dialog.h"
 #include "recording/recording_controls.h"
@@ -168,7 +169,7 @@ private Q_SLOTS:
         const QString commandLog = w.currentWorkspace()->commandLog()->allText();
         QVERIFY2(commandLog.contains(QLatin1String("LOG VERSION")) && commandLog.contains(QLatin1String("FOO BAR")),
                  qPrintable(commandLog));
-        QVERIFY(w.session().rawLog().bytesHeld() > 0);
+        QVERIFY(imudesk::test::hipnucOf(*w.currentWorkspace())->rawLog().bytesHeld() > 0);
 
         // The window draws something, in English...
         QTRY_VERIFY2(distinctColours(w.grab().toImage()) > 20, "the window looks blank");
@@ -213,7 +214,7 @@ private Q_SLOTS:
 
         // Disconnect: the session closes, then the simulator stops.
         w.disconnectDevice();
-        QTRY_COMPARE(w.session().state(), imudesk::device::SessionState::Closed);
+        QTRY_COMPARE(w.currentWorkspace()->link().state(), imudesk::device::SessionState::Closed);
         QTRY_VERIFY(!w.isSimulated());
         QVERIFY2(errors.isEmpty(), qPrintable(errors.join(QLatin1Char('\n'))));
     }
@@ -403,7 +404,7 @@ private Q_SLOTS:
         w.connectPort(QStringLiteral("/dev/imudesk-no-such-port"), 115200);
         QTRY_COMPARE(errors.size(), 1);
         QVERIFY2(errors.first().contains(QLatin1String("was not found")), qPrintable(errors.first()));
-        QTRY_COMPARE(w.session().state(), imudesk::device::SessionState::Failed);
+        QTRY_COMPARE(w.currentWorkspace()->link().state(), imudesk::device::SessionState::Failed);
         QVERIFY(w.statusText().contains(QLatin1String("/dev/imudesk-no-such-port")));
         QVERIFY(w.console()->logText().contains(QLatin1String("was not found")));
         QVERIFY(w.isRefreshing());
@@ -419,7 +420,7 @@ private Q_SLOTS:
         QVERIFY(!box->isModal());
         QVERIFY(QApplication::activeModalWidget() == nullptr);
         QVERIFY(box->text().contains(QLatin1String("was not found")));
-        QTRY_COMPARE(w.session().state(), imudesk::device::SessionState::Failed);
+        QTRY_COMPARE(w.currentWorkspace()->link().state(), imudesk::device::SessionState::Failed);
         // A second error joins the open box instead of stacking another one.
         w.connectPort(QStringLiteral("/dev/imudesk-no-such-port-2"), 115200);
         QTRY_VERIFY(box->text().contains(QLatin1String("imudesk-no-such-port-2")));
@@ -467,7 +468,7 @@ private Q_SLOTS:
         w.connectPort(simulator.devicePath(), 0);
         QTRY_COMPARE_WITH_TIMEOUT(w.currentWorkspace()->state(), imudesk::device::SessionState::Connected, 20000);
         imudesk::ui::DeviceWorkspace *ws = w.currentWorkspace();
-        QVERIFY(!ws->hipnucSession());
+        QVERIFY(!imudesk::test::hipnucOf(*ws));
         QTRY_VERIFY(ws->identity() && ws->identity()->busAddress == 7);
         QVERIFY(ws->findChild<QDockWidget *>(QStringLiteral("headingDialDock")));
         QCOMPARE(ws->link().linkKind(), QStringLiteral("HEC495 serial"));

@@ -1,7 +1,13 @@
 #include "families/built_in_families.h"
 
+#include "calibration/attitude_reset_wizard.h"
+#include "calibration/gyro_scale_wizard.h"
+#include "calibration/mag_calibration_wizard.h"
 #include "configuration/config_panel.h"
+#include "configuration/profile_dialog.h"
 #include "device/device_session.h"
+#include "protocol/hipnuc/ascii_command.h"
+#include "workspace/console_widget.h"
 #include "ui/firmware/firmware_update_dialog.h"
 #include "workspace/device_workspace.h"
 
@@ -20,11 +26,77 @@ QString HipnucSerialUi::target(const device::LinkRequest &request) const
         .arg(QString::fromStdString(request.hipnucSimulator.model), QString::fromStdString(request.hipnucSimulator.firmware));
 }
 
-void HipnucSerialUi::decorate(DeviceWorkspace &ws, device::DeviceLink &, const device::LinkRequest &request) const
+namespace {
+
+namespace hp = protocol::hipnuc;
+
+// Sends a command made by the typed builders and shows it in the console and the command log
+// like a typed one (its reply follows by id).
+void sendShown(DeviceWorkspace &ws, device::DeviceSession &session, const hp::Command &command)
 {
-    // The settings table (the workspace's, Capability::Settings) names the port in its advice.
-    if (ConfigPanel *panel = ws.configPanel())
-        panel->setPortName(request.address);
+    QString error;
+    const quint64 id = session.sendCommand(command, DeviceWorkspace::kCommandTimeoutMs, &error);
+    if (id == 0) {
+        ws.console()->showError(error);
+        return;
+    }
+    ws.showSentCommand(id, QString::fromStdString(command.text));
+}
+
+} // namespace
+
+void HipnucSerialUi::decorate(DeviceWorkspace &ws, device::DeviceLink &link, const device::LinkRequest &request) const
+{
+    auto *session = static_cast<device::DeviceSession *>(&link);
+    // Device > Version: LOG VERSION (the identity follows the answer).
+    ws.offerTool(DeviceWorkspace::LinkTool::ReadVersion,
+                 [&ws, session](QWidget *) { sendShown(ws, *session, hp::commands::logVersion()); });
+    // Device > Take one sample: LOG <MSG> ONMARK ONCE (v1.7.1 manual 4.6.8.15: one frame, as a
+    // SYNC_IN pulse would give) of the frame type the module sends, HI91 when it sends none.
+    ws.offerTool(DeviceWorkspace::LinkTool::TakeSample, [&ws, session](QWidget *) {
+        hp::Message m = hp::Message::HI91;
+        if (const auto latest = session->store().latest())
+            if (hp::Message named; hp::parseMessage(latest->source, named) && hp::commands::logOnMark(named, true).ok())
+                m = named;
+        sendShown(ws, *session, hp::commands::logOnMark(m, true));
+    });
+    // Device > Profiles: the module's settings read, saved as a profile, or a profile applied.
+    ws.offerTool(DeviceWorkspace::LinkTool::Profiles, [session](QWidget *parent) {
+        auto *dialog = new ProfileDialog(*session, parent);
+        dialog->setAttribute(Qt::WA_DeleteOnClose);
+        dialog->open();
+        dialog->readDevice();
+    });
+    // Calibrate: the magnetometer (the firmware decides the manual's procedure), the gyro scale
+    // and the attitude reset; each wizard saves its run under the module's serial number.
+    ws.offerTool(DeviceWorkspace::LinkTool::MagCalibration, [&ws, session](QWidget *parent) {
+        if (!ws.identity() || !ws.identity()->firmware)
+            return;
+        auto *wizard = new MagCalibrationWizard(*session, *ws.identity()->firmware, parent);
+        wizard->runSaver().setIdentity(*ws.identity());
+        wizard->setAttribute(Qt::WA_DeleteOnClose);
+        wizard->show();
+    });
+    ws.offerTool(DeviceWorkspace::LinkTool::GyroCalibration, [&ws, session](QWidget *parent) {
+        auto *wizard = new GyroScaleWizard(*session, parent);
+        if (ws.identity())
+            wizard->runSaver().setIdentity(*ws.identity());
+        wizard->setAttribute(Qt::WA_DeleteOnClose);
+        wizard->show();
+    });
+    ws.offerTool(DeviceWorkspace::LinkTool::AttitudeReset, [&ws, session](QWidget *parent) {
+        auto *wizard = new AttitudeResetWizard(*session, parent);
+        if (ws.identity())
+            wizard->runSaver().setIdentity(*ws.identity());
+        wizard->setAttribute(Qt::WA_DeleteOnClose);
+        wizard->show();
+    });
+    // The settings table (the workspace's settings dock, Capability::Settings), which names the
+    // port in its advice; the rate as soon as a detection finds it.
+    auto *panel = new ConfigPanel(*session);
+    panel->setPortName(request.address);
+    ws.setConfigPanel(panel);
+    QObject::connect(session, &device::DeviceSession::baudDetected, &ws, &DeviceWorkspace::noteBaud);
     // Device > Update firmware: the dialog opens the port itself; the session lends it out (a
     // simulated module keeps running, its bootloader takes the update) and takes it back.
     ws.offerTool(DeviceWorkspace::LinkTool::FirmwareUpdate, [&ws, requestedBaud = request.baud](QWidget *parent) {

@@ -1,6 +1,6 @@
 #include "workspace/connection_bar.h"
 
-#include "device/device_session.h"
+#include "device/serial_family_scan.h"
 
 #include <QAbstractItemView>
 #include <QComboBox>
@@ -64,7 +64,7 @@ ConnectionBar::ConnectionBar(QWidget *parent) : QWidget(parent)
     m_baudCombo->setObjectName(QStringLiteral("baudCombo"));
     m_baudLabel->setBuddy(m_baudCombo);
     m_baudCombo->addItem(QString(), 0);
-    std::vector<int> rates = device::DeviceSession::detectionBauds();
+    std::vector<int> rates = device::SerialFamilyScan::defaultBauds();
     std::sort(rates.begin(), rates.end());
     for (int rate : rates)
         m_baudCombo->addItem(QString::number(rate), rate);
@@ -241,7 +241,7 @@ void ConnectionBar::retranslateUi()
     m_refreshButton->setToolTip(tr("Scan for serial ports again (the list also refreshes every 2 s)"));
     m_baudLabel->setText(tr("&Baud rate:"));
     m_baudCombo->setItemText(0, tr("Auto"));
-    m_baudCombo->setToolTip(tr("Auto tries every HiPNUC baud rate, starting with 115200"));
+    m_baudCombo->setToolTip(tr("Auto finds the device and the baud rate it talks at, starting with 115200"));
     if (isBusy(m_state)) {
         m_connectButton->setText(tr("Disconnect"));
         m_connectButton->setToolTip(tr("Close the connection (Ctrl+D)"));

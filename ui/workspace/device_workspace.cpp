@@ -1,5 +1,7 @@
 #include "workspace/device_workspace.h"
 
+#include "device/session.h"
+
 #include "attitude/attitude_widget.h"
 #include "model/attitude.h"
 #include "configuration/config_panel.h"
@@ -147,8 +149,8 @@ DeviceWorkspace::DeviceWorkspace(QWidget *parent) : QMainWindow(parent)
     m_charts->setObjectName(QStringLiteral("chartPanel"));
     setCentralWidget(m_charts);
 
-    // Right: the values, and below them the 3D attitude, each a dock of its own; the HiPNUC
-    // serial link's settings behind the values. Below the charts, as tabs: the ASCII console,
+    // Right: the values, and below them the 3D attitude, each a dock of its own; a link's
+    // settings behind the values. Below the charts, as tabs: the text console,
     // the raw link traffic, the log of every command this window sent with its reply, and
     // the recording controls. applyPreset() puts them in place.
     m_valuesDock = makeDock(m_valuesView, QStringLiteral("valuesDock"));
@@ -176,7 +178,7 @@ DeviceWorkspace::DeviceWorkspace(QWidget *parent) : QMainWindow(parent)
     m_recording->setObjectName(QStringLiteral("recordingControls"));
     m_recordingDock = makeDock(m_recording, QStringLiteral("recordingDock"));
     connect(m_recording, &RecordingControls::recordingFailed, this, &DeviceWorkspace::onErrorOccurred);
-    bindLink(std::make_unique<device::DeviceSession>(), {}); // a serial port, until told otherwise
+    bindLink(std::make_unique<device::NoLink>(), {}); // nothing connected yet
     // The Monitor layout: the settings hidden until asked for (Device > Configuration, or the
     // Configure layout), the panels below the charts closed until needed (View menu, Ctrl+`
     // for the console, an ERR reply, a recording).
@@ -236,9 +238,20 @@ bool DeviceWorkspace::runTool(LinkTool tool, QWidget *dialogParent)
     return true;
 }
 
-device::DeviceSession *DeviceWorkspace::hipnucSession() const
+void DeviceWorkspace::setConfigPanel(ConfigPanel *panel)
 {
-    return qobject_cast<device::DeviceSession *>(m_link.get());
+    delete std::exchange(m_configPanel, panel);
+    if (!panel)
+        return;
+    panel->setParent(m_configDock);
+    panel->setObjectName(QStringLiteral("configPanel"));
+    m_configDock->setWidget(panel);
+}
+
+void DeviceWorkspace::noteBaud(int baud)
+{
+    m_baud = baud;
+    updateStatsLabel();
 }
 
 bool DeviceWorkspace::attachLink(std::unique_ptr<device::DeviceLink> link, const QString &target,
@@ -284,17 +297,7 @@ void DeviceWorkspace::bindLink(std::unique_ptr<device::DeviceLink> link, std::sh
     if (auto *session = qobject_cast<device::Session *>(l)) {
         m_rawView->setLog(&session->rawLog());
         if (l->capabilities().testFlag(device::DeviceLink::Capability::Recording))
-            m_recording->setSession(session); // a HiPNUC module or an HEC495
-    }
-    if (device::DeviceSession *s = hipnucSession()) {
-        // The rate a detection found, at once (the statistics bring it only on their next tick).
-        connect(s, &device::DeviceSession::baudDetected, this, [this](int baud) {
-            m_baud = baud;
-            updateStatsLabel();
-        });
-        m_configPanel = new ConfigPanel(*s, m_configDock);
-        m_configPanel->setObjectName(QStringLiteral("configPanel"));
-        m_configDock->setWidget(m_configPanel);
+            m_recording->setSession(session); // a byte stream worth a capture
     }
     const auto caps = capabilities();
     m_console->setInputEnabled(caps.testFlag(device::DeviceLink::Capability::TextCommands));
@@ -396,24 +399,10 @@ void DeviceWorkspace::reclaimPort()
 void DeviceWorkspace::sendConsoleCommand(const QString &text)
 {
     if (const quint64 id = m_link->sendText(text, kCommandTimeoutMs))
-        showSent(id, text); // 0: the console takes no input for this link
+        showSentCommand(id, text); // 0: the console takes no input for this link
 }
 
-void DeviceWorkspace::sendCommand(const protocol::hipnuc::Command &command)
-{
-    device::DeviceSession *session = hipnucSession();
-    if (!session)
-        return;
-    QString error;
-    const quint64 id = session->sendCommand(command, kCommandTimeoutMs, &error);
-    if (id == 0) {
-        m_console->showError(error);
-        return;
-    }
-    showSent(id, QString::fromStdString(command.text));
-}
-
-void DeviceWorkspace::showSent(quint64 id, const QString &text)
+void DeviceWorkspace::showSentCommand(quint64 id, const QString &text)
 {
     m_console->showCommand(id, text);
     m_commandLog->record(id, text);
@@ -447,7 +436,7 @@ void DeviceWorkspace::refreshViews()
     // The 3D attitude on every tick, so that it moves smoothly.
     if (latest && latest->has(model::FieldQuat))
         m_attitude->setQuaternion(latest->quat);
-    else if (latest && latest->has(model::FieldEuler)) // links that send angles only (HEC495, Modbus)
+    else if (latest && latest->has(model::FieldEuler)) // links that send angles only
         m_attitude->setQuaternion(model::quatFromEnu312(model::Euler{latest->roll, latest->pitch, latest->yaw}));
     // The numbers at most ten times a second: digits that change faster cannot be read, and
     // their text layout is a good part of the GUI thread's work at 1 kHz. A tick that skips

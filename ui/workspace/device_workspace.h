@@ -1,20 +1,20 @@
 #pragma once
-// One connected device: its own session (and simulated device, for the simulator
-// entries), live views and counters. The main window shows one workspace per tab.
-// A workspace is a QMainWindow of its own so that its docks (values, console, ...)
-// can be rearranged; the arrangement is saved and restored by the main window.
+// One connected device: its link (any family's, with what it needs, e.g. a simulator), live
+// views and counters. The main window shows one workspace per tab. A workspace is a QMainWindow
+// of its own so that its docks (values, console, ...) can be rearranged; the arrangement is
+// saved and restored by the main window.
 //
 // Folder ui/workspace/: the application shell. MainWindow with one DeviceWorkspace per tab, the
-// connection bar, the port choice, the tool actions, the preferences and their dialog, window settings, the size of
-// work-place dialogs, the language switcher, the workspace's docks (console, command log, raw
-// bytes, status flags) and the painting helpers shared by self-painted widgets. It mirrors
-// core/device: a workspace holds one device::DeviceLink (DeviceSession, Hec495Session,
-// ModbusSession, CanSession, a replay) and shows the docks its capabilities() call for; a
-// family's UI plug-in (ui/families) adds that family's docks and tools; and, for
-// the simulator entries, a device from core/sim. Its views read the link's SampleStore and RawByteLog on the view clock;
-// the values dock shows models::LatestValuesModel and the command log models::CommandLogModel,
-// each in a QTableView (the console's completer uses a QStringListModel).
-#include "device/device_session.h"
+// connection bar, the port choice, the tool actions, the preferences and their dialog, window
+// settings, the size of work-place dialogs, the language switcher, the workspace's docks
+// (console, command log, raw bytes, status flags) and the painting helpers shared by
+// self-painted widgets. It mirrors core/device: a workspace holds one device::DeviceLink and
+// shows the docks its capabilities() call for; the family's UI plug-in (ui/families) adds that
+// family's docks, settings panel and tools. Its views read the link's SampleStore and
+// RawByteLog on the view clock; the values dock shows models::LatestValuesModel and the
+// command log models::CommandLogModel, each in a QTableView (the console's completer uses a
+// QStringListModel).
+#include "device/device_link.h"
 #include "workspace/preferences.h"
 
 #include <QElapsedTimer>
@@ -54,7 +54,7 @@ public:
     // attitude; Configure: the settings table and the console; Calibrate: values, a large
     // attitude view and the console; Analyse: charts, values, raw bytes and the command log.
     // The panels below the charts (console, raw bytes, command log, recording) start closed
-    // and open on demand; a link that has no use for them (Modbus, CAN, HEC495, replay)
+    // and open on demand; a link that has no use for them (by its capabilities)
     // does not offer them.
     enum class LayoutPreset { Monitor, Configure, Calibrate, Analyse };
     static constexpr int kPresetCount = 4;
@@ -81,12 +81,10 @@ public:
                     const QString &address = {});
     // Opens the attached link.
     void startLink();
-    // The link the views show (a HiPNUC serial session, not yet open, in a new workspace).
+    // The link the views show (device::NoLink in a new workspace).
     device::DeviceLink &link() { return *m_link; }
     const device::DeviceLink &link() const { return *m_link; }
     device::DeviceLink::Capabilities capabilities() const { return m_link->capabilities(); }
-    // The link as a HiPNUC serial session, or null for another family.
-    device::DeviceSession *hipnucSession() const;
     // Where a link's dock goes: as a tab in front of the 3D attitude (a view that replaces it,
     // the compass dial), as a tab behind the values (settings, registers: the values stay in
     // front), or below the charts (monitors and transport controls).
@@ -94,7 +92,19 @@ public:
     // What the attached link's family offers in the Tools and Calibrate menus beyond the
     // capabilities (a bus scan, the compass's own calibration, a firmware update over the port
     // or the bus). Offered by the family's UI plug-in (ui/families); withdrawn with the link.
-    enum class LinkTool { ScanBus, CompassCalibration, FirmwareUpdate };
+    // ReadVersion: ask the device who it is (Device > Version); TakeSample: one frame on request;
+    // Profiles: save and apply the device's settings; the calibrations of the Calibrate menu.
+    enum class LinkTool {
+        ScanBus,
+        CompassCalibration,
+        FirmwareUpdate,
+        ReadVersion,
+        TakeSample,
+        Profiles,
+        MagCalibration,
+        GyroCalibration,
+        AttitudeReset,
+    };
     using ToolRunner = std::function<void(QWidget *dialogParent)>;
     void offerTool(LinkTool tool, ToolRunner run);
     bool offersTool(LinkTool tool) const { return m_linkTools.contains(int(tool)); }
@@ -107,6 +117,10 @@ public:
     // The settings of a link with Capability::Settings (null for other links), and the
     // recording controls.
     ConfigPanel *configPanel() const { return m_configPanel; }
+    // The attached link's settings panel (its family's plug-in makes it); deleted with the link.
+    void setConfigPanel(ConfigPanel *panel);
+    // The rate the link runs at, as soon as a detection found it (the statistics bring it too).
+    void noteBaud(int baud);
     QDockWidget *configDock() const { return m_configDock; }
     RecordingControls *recordingControls() const { return m_recording; }
     QDockWidget *recordingDock() const { return m_recordingDock; }
@@ -117,12 +131,10 @@ public:
 
     // Sends a command as typed in the console (shown there with its reply).
     void sendConsoleCommand(const QString &text);
-    // Sends a command made by the typed builders (the Device menu), shown in the console and
-    // the command log like a typed one.
-    void sendCommand(const protocol::hipnuc::Command &command);
+    // A command a family's tool sent (typed, by its builders) under the link's request id:
+    // shown in the console and the command log like a typed one, its reply following by id.
+    void showSentCommand(quint64 id, const QString &text);
 
-    // The HiPNUC serial session; only while hipnucSession() is not null.
-    device::DeviceSession &session() const { return *hipnucSession(); }
     // The link's far end is a simulated device (what it needs is kept alive with it).
     bool isSimulated() const { return m_linkKeepAlive != nullptr; }
     // What the link needs (its simulator), for whoever made the link and knows its type.
@@ -205,8 +217,6 @@ protected:
     bool event(QEvent *event) override;
 
 private:
-    // A command just sent, in the console (its reply follows by id) and the command log.
-    void showSent(quint64 id, const QString &text);
     void createStatusBar();
     void fitDocks();
     // The docks that need a capability, with it.

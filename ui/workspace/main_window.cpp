@@ -1,6 +1,5 @@
 #include "workspace/main_window.h"
 
-#include "protocol/hipnuc/ascii_command.h"
 #include "ui/station/station_view.h"
 #include "workspace/preferences_dialog.h"
 #include "workspace/tool_actions.h"
@@ -378,11 +377,6 @@ void MainWindow::connectSelected()
     }
 }
 
-device::DeviceSession &MainWindow::session() const
-{
-    return currentWorkspace()->session();
-}
-
 bool MainWindow::isSimulated() const
 {
     return currentWorkspace()->isSimulated();
@@ -495,9 +489,9 @@ void MainWindow::updateActions()
     const bool busy = ws && ws->isBusy();
     m_connectAction->setEnabled(!busy);
     m_disconnectAction->setEnabled(busy);
-    m_versionAction->setEnabled(ws && ws->state() == SessionState::Connected
-                                && ws->capabilities().testFlag(device::DeviceLink::Capability::TextCommands));
-    m_takeSampleAction->setEnabled(m_versionAction->isEnabled());
+    const bool connected = ws && ws->state() == SessionState::Connected;
+    m_versionAction->setEnabled(connected && ws->offersTool(DeviceWorkspace::LinkTool::ReadVersion));
+    m_takeSampleAction->setEnabled(connected && ws->offersTool(DeviceWorkspace::LinkTool::TakeSample));
     m_tools->update(ws);
 }
 
@@ -640,26 +634,19 @@ void MainWindow::createActions()
 
     m_versionAction = new QAction(this);
     m_versionAction->setObjectName(QStringLiteral("versionAction"));
-    connect(m_versionAction, &QAction::triggered, this, [this] { 
-        // Shown in the console with its answer.
+    connect(m_versionAction, &QAction::triggered, this, [this] {
+        // The family's "who are you" (HiPNUC: LOG VERSION), shown in the console with its answer.
         if (DeviceWorkspace *ws = currentWorkspace())
-            ws->sendCommand(protocol::hipnuc::commands::logVersion());
+            ws->runTool(DeviceWorkspace::LinkTool::ReadVersion, this);
     });
 
     m_takeSampleAction = new QAction(this);
     m_takeSampleAction->setObjectName(QStringLiteral("takeSampleAction"));
     m_takeSampleAction->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_T));
     connect(m_takeSampleAction, &QAction::triggered, this, [this] {
-        // LOG <MSG> ONMARK ONCE (v1.7.1 manual 4.6.8.15: one frame, as a SYNC_IN pulse would give)
-        // of the frame type the module sends, HI91 when it sends none; shown in the console.
-        protocol::hipnuc::Message m = protocol::hipnuc::Message::HI91;
-        if (const DeviceWorkspace *ws = currentWorkspace())
-            if (const auto latest = ws->link().store().latest())
-                if (protocol::hipnuc::Message named; protocol::hipnuc::parseMessage(latest->source, named)
-                                                    && protocol::hipnuc::commands::logOnMark(named, true).ok())
-                    m = named;
+        // One frame on request (HiPNUC: LOG <MSG> ONMARK ONCE), shown in the console.
         if (DeviceWorkspace *ws = currentWorkspace())
-            ws->sendCommand(protocol::hipnuc::commands::logOnMark(m, true));
+            ws->runTool(DeviceWorkspace::LinkTool::TakeSample, this);
     });
 
     m_preferencesAction = new QAction(this);

@@ -2,7 +2,7 @@
 // ImuDesk's main window: the connection bar on top and one DeviceWorkspace per
 // connected device in tabs (its own session, views, console and counters). Menus act
 // on the current workspace. It shows session errors without ever blocking.
-#include "device/device_session.h"
+#include "device/device_link.h"
 #include "device/link_opener.h"
 #include "families/family_ui.h"
 #include "sim/hipnuc_simulator.h"
@@ -88,7 +88,6 @@ public:
     void setErrorPresenter(ErrorPresenter presenter) { m_errorPresenter = std::move(presenter); }
 
     // The current workspace's pieces (the main window always has one).
-    device::DeviceSession &session() const;
     bool isSimulated() const; // the current tab's device is a simulated one
     ConsoleWidget *console() const;
     QTableView *valuesView() const;

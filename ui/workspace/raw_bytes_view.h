@@ -1,5 +1,5 @@
 #pragma once
-// Hex + ASCII dump of the bytes a link carried (DeviceSession::rawLog()): one line per
+// Hex + ASCII dump of the bytes a link carried (Session::rawLog()): one line per
 // up to 16 bytes of one read or write, with the time since the view started, the
 // direction and the byte offset in that direction; received bytes in one colour, sent
 // bytes in another. refresh() (called on the workspace's clock) renders only what is new

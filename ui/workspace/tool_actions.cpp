@@ -1,10 +1,8 @@
 #include "workspace/tool_actions.h"
 
 #include "charts/analysis_window.h"
-#include "calibration/attitude_reset_wizard.h"
 #include "calibration/calibration_history_dialog.h"
-#include "calibration/gyro_scale_wizard.h"
-#include "calibration/mag_calibration_wizard.h"
+#include "calibration/calibration_run_saver.h"
 #include "charts/bandwidth_calculator.h"
 #include "bus/bus_connect_dialog.h"
 #include "configuration/config_panel.h"
@@ -13,7 +11,6 @@
 #include "recording/recording_controls.h"
 #include "ui/firmware/firmware_update_dialog.h"
 #include "workspace/preferences.h"
-#include "configuration/profile_dialog.h"
 #include "record/csv_capture_converter.h"
 #include "settings/configuration_controller.h"
 
@@ -155,16 +152,16 @@ void ToolActions::update(const DeviceWorkspace *ws)
     using Tool = DeviceWorkspace::LinkTool;
     m_scanModbus->setEnabled(connected && ws->offersTool(Tool::ScanBus));
     m_configuration->setEnabled(settings);
-    m_profiles->setEnabled(settings && connected);
+    m_profiles->setEnabled(connected && ws->offersTool(Tool::Profiles));
     m_record->setEnabled(caps.testFlag(C::Recording));
     // Every tab that was current may record: Export offers the last recording of any of them.
     if (ws && ws->recordingControls())
         connect(ws->recordingControls(), &RecordingControls::recordingStopped, this, &ToolActions::noteRecording,
                 Qt::UniqueConnection);
     const bool hasMag = ws && ws->identity() && ws->identity()->hasMagnetometer() && ws->identity()->firmware;
-    m_magCal->setEnabled(settings && connected && hasMag);
-    m_gyroCal->setEnabled(settings && connected);
-    m_attitudeReset->setEnabled(settings && connected);
+    m_magCal->setEnabled(connected && hasMag && ws->offersTool(Tool::MagCalibration));
+    m_gyroCal->setEnabled(connected && ws->offersTool(Tool::GyroCalibration));
+    m_attitudeReset->setEnabled(connected && ws->offersTool(Tool::AttitudeReset));
     m_compassCal->setEnabled(connected && ws->offersTool(Tool::CompassCalibration));
     // The update opens the port or the bus itself; the link's family offers it (a HiPNUC module
     // on its serial port or on a CANopen bus).
@@ -311,13 +308,9 @@ void ToolActions::noteRecording(const QString &path)
 
 void ToolActions::openProfiles()
 {
-    DeviceWorkspace *ws = m_host->currentWorkspace();
-    if (!ws || !ws->hipnucSession())
-        return;
-    auto *dialog = new ProfileDialog(ws->session(), m_host->dialogParent());
-    dialog->setAttribute(Qt::WA_DeleteOnClose);
-    dialog->open();
-    dialog->readDevice();
+    // The family's (ui/families: a HiPNUC module's settings and calibrations).
+    if (DeviceWorkspace *ws = m_host->currentWorkspace())
+        ws->runTool(DeviceWorkspace::LinkTool::Profiles, m_host->dialogParent());
 }
 
 void ToolActions::openCalculator()
@@ -332,37 +325,23 @@ void ToolActions::openCalculator()
 
 void ToolActions::openMagCal()
 {
-    DeviceWorkspace *ws = m_host->currentWorkspace();
-    if (!ws || !ws->hipnucSession() || !ws->identity() || !ws->identity()->firmware)
-        return;
-    auto *wizard = new MagCalibrationWizard(ws->session(), *ws->identity()->firmware, m_host->dialogParent());
-    wizard->runSaver().setIdentity(*ws->identity());
-    wizard->setAttribute(Qt::WA_DeleteOnClose);
-    wizard->show();
+    // The family's (ui/families: a HiPNUC module's settings and calibrations).
+    if (DeviceWorkspace *ws = m_host->currentWorkspace())
+        ws->runTool(DeviceWorkspace::LinkTool::MagCalibration, m_host->dialogParent());
 }
 
 void ToolActions::openGyroCal()
 {
-    DeviceWorkspace *ws = m_host->currentWorkspace();
-    if (!ws || !ws->hipnucSession())
-        return;
-    auto *wizard = new GyroScaleWizard(ws->session(), m_host->dialogParent());
-    if (ws->identity())
-        wizard->runSaver().setIdentity(*ws->identity());
-    wizard->setAttribute(Qt::WA_DeleteOnClose);
-    wizard->show();
+    // The family's (ui/families: a HiPNUC module's settings and calibrations).
+    if (DeviceWorkspace *ws = m_host->currentWorkspace())
+        ws->runTool(DeviceWorkspace::LinkTool::GyroCalibration, m_host->dialogParent());
 }
 
 void ToolActions::openAttitudeReset()
 {
-    DeviceWorkspace *ws = m_host->currentWorkspace();
-    if (!ws || !ws->hipnucSession())
-        return;
-    auto *wizard = new AttitudeResetWizard(ws->session(), m_host->dialogParent());
-    if (ws->identity())
-        wizard->runSaver().setIdentity(*ws->identity());
-    wizard->setAttribute(Qt::WA_DeleteOnClose);
-    wizard->show();
+    // The family's (ui/families: a HiPNUC module's settings and calibrations).
+    if (DeviceWorkspace *ws = m_host->currentWorkspace())
+        ws->runTool(DeviceWorkspace::LinkTool::AttitudeReset, m_host->dialogParent());
 }
 
 void ToolActions::openCompassCal()
