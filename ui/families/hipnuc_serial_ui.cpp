@@ -43,6 +43,16 @@ void sendShown(DeviceWorkspace &ws, device::DeviceSession &session, const hp::Co
     ws.showSentCommand(id, QString::fromStdString(command.text));
 }
 
+// A calibration wizard, its runs saved under the module's serial number, open until closed.
+template <class Wizard>
+void showWizard(const DeviceWorkspace &ws, Wizard *wizard)
+{
+    if (ws.identity())
+        wizard->runSaver().setIdentity(*ws.identity());
+    wizard->setAttribute(Qt::WA_DeleteOnClose);
+    wizard->show();
+}
+
 } // namespace
 
 void HipnucSerialUi::decorate(DeviceWorkspace &ws, device::DeviceLink &link, const device::LinkRequest &request) const
@@ -70,27 +80,13 @@ void HipnucSerialUi::decorate(DeviceWorkspace &ws, device::DeviceLink &link, con
     // Calibrate: the magnetometer (the firmware decides the manual's procedure), the gyro scale
     // and the attitude reset; each wizard saves its run under the module's serial number.
     ws.offerTool(DeviceWorkspace::LinkTool::MagCalibration, [&ws, session](QWidget *parent) {
-        if (!ws.identity() || !ws.identity()->firmware)
-            return;
-        auto *wizard = new MagCalibrationWizard(*session, *ws.identity()->firmware, parent);
-        wizard->runSaver().setIdentity(*ws.identity());
-        wizard->setAttribute(Qt::WA_DeleteOnClose);
-        wizard->show();
+        if (ws.identity() && ws.identity()->firmware)
+            showWizard(ws, new MagCalibrationWizard(*session, *ws.identity()->firmware, parent));
     });
-    ws.offerTool(DeviceWorkspace::LinkTool::GyroCalibration, [&ws, session](QWidget *parent) {
-        auto *wizard = new GyroScaleWizard(*session, parent);
-        if (ws.identity())
-            wizard->runSaver().setIdentity(*ws.identity());
-        wizard->setAttribute(Qt::WA_DeleteOnClose);
-        wizard->show();
-    });
-    ws.offerTool(DeviceWorkspace::LinkTool::AttitudeReset, [&ws, session](QWidget *parent) {
-        auto *wizard = new AttitudeResetWizard(*session, parent);
-        if (ws.identity())
-            wizard->runSaver().setIdentity(*ws.identity());
-        wizard->setAttribute(Qt::WA_DeleteOnClose);
-        wizard->show();
-    });
+    ws.offerTool(DeviceWorkspace::LinkTool::GyroCalibration,
+                 [&ws, session](QWidget *parent) { showWizard(ws, new GyroScaleWizard(*session, parent)); });
+    ws.offerTool(DeviceWorkspace::LinkTool::AttitudeReset,
+                 [&ws, session](QWidget *parent) { showWizard(ws, new AttitudeResetWizard(*session, parent)); });
     // The settings table (the workspace's settings dock, Capability::Settings), which names the
     // port in its advice; the rate as soon as a detection finds it.
     auto *panel = new ConfigPanel(*session);
