@@ -118,6 +118,21 @@ LinkOpener::Opened serialLink(const LinkRequest &r, std::unique_ptr<io::Transpor
     return o;
 }
 
+// A simulated serial device on a pseudo-terminal, started, as the request's far end.
+bool startOnPty(LinkRequest &r, std::shared_ptr<sim::PtySimulator> simulator, const QString &failure, QString *error)
+{
+    QString why;
+    if (!simulator->start(&why)) {
+        if (error)
+            *error = failure.arg(why);
+        return false;
+    }
+    r.address = simulator->devicePath();
+    r.autoReconnect = false; // a pty's number is reused: never wait for it to "come back"
+    r.keepAlive = std::move(simulator);
+    return true;
+}
+
 // Starts the simulated device a request asks for and points the request at it.
 bool startSimulator(LinkRequest &r, QString *error)
 {
@@ -125,33 +140,17 @@ bool startSimulator(LinkRequest &r, QString *error)
     switch (r.kind) {
     case LinkRequest::Kind::Serial: {
         if (r.family != SerialFamily::Hec495) {
-            auto simulator = std::make_shared<sim::PtySimulator>(r.hipnucSimulator);
-            if (!simulator->start(&why)) {
-                if (error)
-                    *error = LinkOpener::tr("The simulated device could not start: %1").arg(why);
-                return false;
-            }
             r.family = SerialFamily::Hipnuc;
-            r.address = simulator->devicePath();
-            r.autoReconnect = false; // a pty's number is reused: never wait for it to "come back"
-            r.keepAlive = simulator;
-            return true;
+            return startOnPty(r, std::make_shared<sim::PtySimulator>(r.hipnucSimulator),
+                              LinkOpener::tr("The simulated device could not start: %1"), error);
         }
         sim::Hec495Options options;
         options.motion = r.motion;
         options.rateHz = 50;
-        auto simulator = std::make_shared<sim::PtySimulator>(std::make_unique<sim::Hec495Simulator>(options));
-        if (!simulator->start(&why)) {
-            if (error)
-                *error = LinkOpener::tr("The simulated compass could not start: %1").arg(why);
-            return false;
-        }
-        r.address = simulator->devicePath();
         r.baud = options.baud;
         r.hec495Address = options.address;
-        r.autoReconnect = false; // a pty's number is reused: never wait for it to "come back"
-        r.keepAlive = simulator;
-        return true;
+        return startOnPty(r, std::make_shared<sim::PtySimulator>(std::make_unique<sim::Hec495Simulator>(options)),
+                          LinkOpener::tr("The simulated compass could not start: %1"), error);
     }
     case LinkRequest::Kind::Modbus: {
         sim::ModbusSimOptions so;
@@ -273,8 +272,7 @@ void LinkOpener::open(LinkRequest request)
             Q_EMIT detecting(detail);
         else if (s == SessionState::Failed && m_running) {
             m_running = false;
-            // The probe's own session goes later: this runs in its signal.
-            QTimer::singleShot(0, this, [p = m_probe.release()] { delete p; });
+            m_probe.release()->deleteLater(); // later: this runs in its signal
             Q_EMIT failed(detail);
         }
     });
@@ -297,7 +295,7 @@ void LinkOpener::onFound(SerialFamily family, int baud, int address)
         return;
     std::unique_ptr<io::Transport> port = m_probe->releaseTransport();
     m_probe->disconnect(this);
-    QTimer::singleShot(0, this, [p = m_probe.release()] { delete p; });
+    m_probe.release()->deleteLater(); // later: this runs in its signal
     m_request.family = family;
     m_request.baud = baud;
     if (address >= 0)

@@ -1,12 +1,12 @@
 #include "serial_family_scan.h"
 
 #include "device/session_engine.h"
-#include "protocol/hipnuc/frame_decoder.h"
 #include "protocol/witlink/commands.h"
-#include "protocol/witlink/frame_decoder.h"
 #include "protocol/witlink/reply.h"
 
 #include <QLoggingCategory>
+
+#include <algorithm>
 
 namespace imudesk::device {
 
@@ -43,25 +43,25 @@ const std::vector<int> &SerialFamilyScan::defaultBauds()
     return bauds;
 }
 
-SerialFamily SerialFamilyScan::classify(const QByteArray &bytes, int *hec495Address)
+SerialFamily SerialFamilyScan::classify(const QByteArray &bytes, qsizetype newFrom)
 {
-    const auto *p = reinterpret_cast<const uint8_t *>(bytes.constData());
-    const size_t n = size_t(bytes.size());
-    protocol::hipnuc::FrameDecoder hipnuc;
-    if (!hipnuc.feed(p, n).empty())
+    const auto *p = reinterpret_cast<const uint8_t *>(bytes.constData()) + newFrom;
+    const size_t n = size_t(bytes.size() - newFrom);
+    // Each byte goes through the frame decoders once; they keep an unfinished frame between calls.
+    if (!m_hipnucFrames.feed(p, n).empty())
         return SerialFamily::Hipnuc;
-    // A HiPNUC reply line ("OK", or the KEY=VALUE lines of LOG VERSION).
-    if (bytes.contains("\r\nOK\r\n") || bytes.startsWith("OK\r\n") || bytes.contains("PNAME="))
+    // A HiPNUC reply line ("OK", or the KEY=VALUE lines of LOG VERSION), looked for where the new
+    // bytes may complete one.
+    const qsizetype from = std::max<qsizetype>(0, newFrom - 5);
+    if (bytes.indexOf("\r\nOK\r\n", from) >= 0 || bytes.startsWith("OK\r\n") || bytes.indexOf("PNAME=", from) >= 0)
         return SerialFamily::Hipnuc;
-    wl::FrameDecoder witlink;
-    for (const auto &f : witlink.feed(p, n)) {
+    for (const auto &f : m_witlinkFrames.feed(p, n)) {
         const wl::Reply r = wl::decodeReply(f);
         if (!r.ok())
             continue;
         if (r.kind == wl::Reply::Kind::AllData || r.kind == wl::Reply::Kind::Angles
             || r.kind == wl::Reply::Kind::Address) {
-            if (hec495Address)
-                *hec495Address = r.kind == wl::Reply::Kind::Address ? r.deviceAddress : r.address;
+            m_seenAddress = r.kind == wl::Reply::Kind::Address ? r.deviceAddress : r.address;
             return SerialFamily::Hec495;
         }
     }
@@ -144,6 +144,8 @@ void SerialFamilyScan::stopping()
 void SerialFamilyScan::restartStream()
 {
     m_held.clear();
+    m_hipnucFrames.reset();
+    m_witlinkFrames.reset();
     m_seen = SerialFamily::Unknown;
     m_seenAddress = -1;
 }
@@ -153,8 +155,9 @@ void SerialFamilyScan::feed(const QByteArray &bytes, int64_t)
     m_bytesIn += quint64(bytes.size());
     if (m_seen != SerialFamily::Unknown || m_held.size() >= kMaxHeld)
         return;
-    m_held += bytes.left(kMaxHeld - m_held.size());
-    m_seen = classify(m_held, &m_seenAddress);
+    const qsizetype before = m_held.size();
+    m_held += bytes.left(kMaxHeld - before);
+    m_seen = classify(m_held, before);
     if (m_seen != SerialFamily::Unknown && engine().current()) {
         RequestResult r;
         r.status = RequestStatus::Ok;

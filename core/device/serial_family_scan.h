@@ -13,6 +13,8 @@
 // line; wait kAnswerMs for either answer, asking twice when nothing at all came back.
 #include "device/baud_scan.h"
 #include "device/family_plugin.h"
+#include "protocol/hipnuc/frame_decoder.h"
+#include "protocol/witlink/frame_decoder.h"
 
 #include <QByteArray>
 #include <QCoreApplication>
@@ -35,8 +37,6 @@ public:
 
     // HiPNUC's detection rates, then the HEC495's others (2400).
     static const std::vector<int> &defaultBauds();
-    // What a buffer of received bytes shows (exposed for tests); the HEC495's address with it.
-    static SerialFamily classify(const QByteArray &bytes, int *hec495Address = nullptr);
 
     // bauds empty: defaultBauds(). hec495Address: where "read all" is sent.
     explicit SerialFamilyScan(std::vector<int> bauds = {}, int hec495Address = 0);
@@ -59,11 +59,16 @@ Q_SIGNALS:
 
 private:
     void probe(BaudScan::Answer answer, int attempt);
+    // What the bytes held at this rate show, given that those from newFrom on just arrived
+    // (the HEC495's address goes to m_seenAddress).
+    SerialFamily classify(const QByteArray &bytes, qsizetype newFrom);
 
     std::vector<int> m_bauds;
     int m_hec495Address = 0;
     BaudScan m_scan{this};
     QByteArray m_held;   // what arrived at the current rate
+    protocol::hipnuc::FrameDecoder m_hipnucFrames;
+    protocol::witlink::FrameDecoder m_witlinkFrames;
     SerialFamily m_seen = SerialFamily::Unknown;
     int m_seenAddress = -1;
     quint64 m_bytesIn = 0;

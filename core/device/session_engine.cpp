@@ -130,18 +130,23 @@ void SessionEngine::open(const QString &address, int baud)
     m_family->opened(baud);
 }
 
-std::unique_ptr<io::Transport> SessionEngine::releaseTransport(QThread *thread)
+void SessionEngine::stopActivity(const QString &why)
 {
-    m_family->stopping();
     m_reconnector.stop();
-    m_reconnector.setEnabled(false);
     m_idleTimer.stop();
-    m_statsTimer.stop();
-    cancelAll(RequestStatus::Cancelled, tr("the link went to the device's own session"));
+    cancelAll(RequestStatus::Cancelled, why);
     if (m_recorder)
         finishRecording(QString());
+}
+
+std::unique_ptr<io::Transport> SessionEngine::releaseTransport(QThread *thread)
+{
     if (!m_transport)
         return {};
+    m_family->stopping();
+    stopActivity(tr("the link went to the device's own session"));
+    m_reconnector.setEnabled(false);
+    m_statsTimer.stop();
     m_transport->disconnect(this);
     io::Transport *t = std::exchange(m_transport, nullptr);
     t->setParent(nullptr);
@@ -156,11 +161,7 @@ void SessionEngine::close()
         return; // handed over (releaseTransport)
     m_family->stopping();
     const bool waiting = m_reconnector.waiting() || m_state == SessionState::Reconnecting;
-    m_reconnector.stop();
-    m_idleTimer.stop();
-    cancelAll(RequestStatus::Cancelled, tr("the connection was closed"));
-    if (m_recorder)
-        finishRecording(QString());
+    stopActivity(tr("the connection was closed"));
     if (m_transport->isOpen()) {
         m_transport->close();
         publishStats();

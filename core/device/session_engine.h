@@ -95,6 +95,9 @@ private:
     void onBytes(const QByteArray &bytes);
     void onLineIdle();
     void onTransportFailed(const QString &message);
+    // After the family stopped, what else runs on the link stops (reconnection, the idle timer,
+    // the requests, the recording); close() and releaseTransport() then part with the transport.
+    void stopActivity(const QString &why);
     void startNext();
     void sendCurrent();
     void writeCurrent();

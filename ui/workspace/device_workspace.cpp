@@ -213,6 +213,7 @@ void DeviceWorkspace::dropLink()
     }
     m_linkDockPlaces.clear();
     m_linkTools.clear();
+    m_start = {}; // it opens the link that goes now
     delete std::exchange(m_configPanel, nullptr);
     m_recording->setSession(nullptr);
     m_rawView->setLog(nullptr);
@@ -283,11 +284,7 @@ void DeviceWorkspace::bindLink(std::unique_ptr<device::DeviceLink> link, std::sh
     resetViews();
 
     device::DeviceLink *l = m_link.get();
-    connect(l, &device::DeviceLink::stateChanged, this, [this](SessionState state, const QString &detail) {
-        if (!busyState(state) && !m_portLent)
-            m_linkKeepAlive.reset(); // e.g. stop the simulator behind a closed link
-        onStateChanged(state, detail);
-    });
+    connect(l, &device::DeviceLink::stateChanged, this, &DeviceWorkspace::onStateChanged);
     connect(l, &device::DeviceLink::identityChanged, this, &DeviceWorkspace::onIdentityChanged);
     connect(l, &device::DeviceLink::statsUpdated, this, &DeviceWorkspace::onStatsUpdated);
     connect(l, &device::DeviceLink::errorOccurred, this, &DeviceWorkspace::onErrorOccurred);
@@ -315,7 +312,6 @@ void DeviceWorkspace::applyPreferences(const Preferences &prefs)
     m_valuesModel->setUnits(prefs.units);
     m_attitude->setDisplayFrame(prefs.frame == Preferences::Frame::Ned ? AttitudeWidget::DisplayFrame::Ned
                                                                        : AttitudeWidget::DisplayFrame::Enu);
-    m_autoReconnect = prefs.autoReconnect;
     m_recording->setFolder(prefs.effectiveRecordingFolder());
     m_recording->setPattern(prefs.recordingPattern);
     if (auto *session = qobject_cast<device::Session *>(m_link.get()); session && isBusy() && !isSimulated())
@@ -490,7 +486,7 @@ void DeviceWorkspace::onStateChanged(SessionState state, const QString &detail)
     m_state = state;
     m_stateDetail = detail;
     if (!busyState(state) && !m_portLent)
-        m_linkKeepAlive.reset(); // the port is closed already: what the link needed goes
+        m_linkKeepAlive.reset(); // the port is closed already: what the link needed (its simulator) goes
     m_console->setInputEnabled(state == SessionState::Connected);
     updateStateLabel();
     updateStatsLabel();

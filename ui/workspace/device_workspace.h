@@ -292,7 +292,6 @@ private:
     QString m_statsPlainText; // the stats label's text without the highlight
 
     QTimer m_refreshTimer;
-    bool m_autoReconnect = true;
     quint64 m_shownTotal = ~quint64(0);
 
     device::SessionState m_state = device::SessionState::Closed;

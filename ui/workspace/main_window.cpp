@@ -302,9 +302,7 @@ void MainWindow::connectPort(const QString &port, int baud)
         updateActions();
         presentError(message);
     });
-    device::LinkRequest request = device::LinkRequest::serial(port, 0);
-    request.autoReconnect = m_prefs.autoReconnect;
-    opener->open(request);
+    opener->open(withPreferences(device::LinkRequest::serial(port, 0)));
 }
 
 void MainWindow::connectDetected(QPointer<DeviceWorkspace> ws, device::LinkOpener *opener)
@@ -329,11 +327,18 @@ bool MainWindow::connectSimulated(const sim::SimOptions &options, int baud, QStr
     return openLink(device::LinkRequest::simulatedHipnuc(options, baud), error);
 }
 
-bool MainWindow::openLink(device::LinkRequest request, QString *error)
+device::LinkRequest MainWindow::withPreferences(device::LinkRequest request) const
 {
+    // A real serial device that is unplugged is waited for as the preferences say (a simulated
+    // one never is: its pseudo-terminal's number is reused).
     if (request.kind == device::LinkRequest::Kind::Serial && !request.simulate)
         request.autoReconnect = m_prefs.autoReconnect;
-    return openLinkIn(*freeWorkspace(), *m_families, std::move(request), error);
+    return request;
+}
+
+bool MainWindow::openLink(device::LinkRequest request, QString *error)
+{
+    return openLinkIn(*freeWorkspace(), *m_families, withPreferences(std::move(request)), error);
 }
 
 bool MainWindow::connectSimulatedHec495(QString *error)

@@ -131,6 +131,8 @@ private:
     void restoreSettings(const WindowSettings &settings);
 
     DeviceWorkspace *freeWorkspace(); // the current one if idle, else a new tab
+    // The request with what the preferences decide for it (auto-reconnect).
+    device::LinkRequest withPreferences(device::LinkRequest request) const;
     // After a family detection: shows the family's session, on the port the detection opened,
     // in ws (if it is still there).
     void connectDetected(QPointer<DeviceWorkspace> ws, device::LinkOpener *opener);

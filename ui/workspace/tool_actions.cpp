@@ -26,6 +26,15 @@ using device::SessionState;
 
 ToolActions::ToolActions(ToolHost *host, QObject *parent) : QObject(parent), m_host(host)
 {
+    // What the current tab's link family offers (ui/families: a bus scan, its settings profiles,
+    // its calibrations, a firmware update), run in that tab.
+    using Tool = DeviceWorkspace::LinkTool;
+    const auto linkTool = [this](Tool tool) {
+        return [this, tool] {
+            if (DeviceWorkspace *ws = m_host->currentWorkspace())
+                ws->runTool(tool, m_host->dialogParent());
+        };
+    };
     m_openCapture = make("openCaptureAction");
     m_openCapture->setShortcut(QKeySequence::Open);
     connect(m_openCapture, &QAction::triggered, this, &ToolActions::chooseCapture);
@@ -43,27 +52,27 @@ ToolActions::ToolActions(ToolHost *host, QObject *parent) : QObject(parent), m_h
     m_can->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_N));
     connect(m_can, &QAction::triggered, this, &ToolActions::connectCan);
     m_scanModbus = make("scanModbusAction");
-    connect(m_scanModbus, &QAction::triggered, this, &ToolActions::scanModbus);
+    connect(m_scanModbus, &QAction::triggered, this, linkTool(Tool::ScanBus));
     m_configuration = make("configurationAction");
     m_configuration->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_G));
     connect(m_configuration, &QAction::triggered, this, &ToolActions::showConfiguration);
     m_profiles = make("profilesAction");
-    connect(m_profiles, &QAction::triggered, this, &ToolActions::openProfiles);
+    connect(m_profiles, &QAction::triggered, this, linkTool(Tool::Profiles));
     m_calculator = make("calculatorAction");
     connect(m_calculator, &QAction::triggered, this, &ToolActions::openCalculator);
     m_firmware = make("firmwareAction");
-    connect(m_firmware, &QAction::triggered, this, &ToolActions::updateFirmware);
+    connect(m_firmware, &QAction::triggered, this, linkTool(Tool::FirmwareUpdate));
     m_record = make("recordAction");
     m_record->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_R));
     connect(m_record, &QAction::triggered, this, &ToolActions::record);
     m_magCal = make("magCalAction");
-    connect(m_magCal, &QAction::triggered, this, &ToolActions::openMagCal);
+    connect(m_magCal, &QAction::triggered, this, linkTool(Tool::MagCalibration));
     m_gyroCal = make("gyroCalAction");
-    connect(m_gyroCal, &QAction::triggered, this, &ToolActions::openGyroCal);
+    connect(m_gyroCal, &QAction::triggered, this, linkTool(Tool::GyroCalibration));
     m_attitudeReset = make("attitudeResetAction");
-    connect(m_attitudeReset, &QAction::triggered, this, &ToolActions::openAttitudeReset);
+    connect(m_attitudeReset, &QAction::triggered, this, linkTool(Tool::AttitudeReset));
     m_compassCal = make("compassCalAction");
-    connect(m_compassCal, &QAction::triggered, this, &ToolActions::openCompassCal);
+    connect(m_compassCal, &QAction::triggered, this, linkTool(Tool::CompassCalibration));
     m_calHistory = make("calibrationHistoryAction");
     m_calHistory->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_H));
     connect(m_calHistory, &QAction::triggered, this, &ToolActions::openCalHistory);
@@ -269,12 +278,6 @@ void ToolActions::connectCan()
     dialog->open();
 }
 
-void ToolActions::scanModbus()
-{
-    if (DeviceWorkspace *ws = m_host->currentWorkspace())
-        ws->runTool(DeviceWorkspace::LinkTool::ScanBus, m_host->dialogParent());
-}
-
 void ToolActions::showConfiguration()
 {
     if (DeviceWorkspace *ws = m_host->currentWorkspace()) {
@@ -306,13 +309,6 @@ void ToolActions::noteRecording(const QString &path)
     m_lastRecording = path;
 }
 
-void ToolActions::openProfiles()
-{
-    // The family's (ui/families: a HiPNUC module's settings and calibrations).
-    if (DeviceWorkspace *ws = m_host->currentWorkspace())
-        ws->runTool(DeviceWorkspace::LinkTool::Profiles, m_host->dialogParent());
-}
-
 void ToolActions::openCalculator()
 {
     auto *calculator = new BandwidthCalculator(m_host->dialogParent());
@@ -323,33 +319,6 @@ void ToolActions::openCalculator()
     calculator->show();
 }
 
-void ToolActions::openMagCal()
-{
-    // The family's (ui/families: a HiPNUC module's settings and calibrations).
-    if (DeviceWorkspace *ws = m_host->currentWorkspace())
-        ws->runTool(DeviceWorkspace::LinkTool::MagCalibration, m_host->dialogParent());
-}
-
-void ToolActions::openGyroCal()
-{
-    // The family's (ui/families: a HiPNUC module's settings and calibrations).
-    if (DeviceWorkspace *ws = m_host->currentWorkspace())
-        ws->runTool(DeviceWorkspace::LinkTool::GyroCalibration, m_host->dialogParent());
-}
-
-void ToolActions::openAttitudeReset()
-{
-    // The family's (ui/families: a HiPNUC module's settings and calibrations).
-    if (DeviceWorkspace *ws = m_host->currentWorkspace())
-        ws->runTool(DeviceWorkspace::LinkTool::AttitudeReset, m_host->dialogParent());
-}
-
-void ToolActions::openCompassCal()
-{
-    if (DeviceWorkspace *ws = m_host->currentWorkspace())
-        ws->runTool(DeviceWorkspace::LinkTool::CompassCalibration, m_host->dialogParent());
-}
-
 void ToolActions::openCalHistory()
 {
     auto *dialog = new CalibrationHistoryDialog(calib::CalibrationHistory::defaultRoot(), m_host->dialogParent());
@@ -358,14 +327,6 @@ void ToolActions::openCalHistory()
     if (ws && ws->identity())
         dialog->selectDevice(CalibrationRunSaver::serialOf(*ws->identity()));
     dialog->show();
-}
-
-void ToolActions::updateFirmware()
-{
-    // The family's update (ui/families): over the serial port for a HiPNUC module, over the bus
-    // for one on CANopen.
-    if (DeviceWorkspace *ws = m_host->currentWorkspace())
-        ws->runTool(DeviceWorkspace::LinkTool::FirmwareUpdate, m_host->dialogParent());
 }
 
 } // namespace imudesk::ui

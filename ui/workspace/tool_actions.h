@@ -61,18 +61,11 @@ private:
     void analyzeCapture();
     void connectModbus();
     void connectCan();
-    void scanModbus();
     void showConfiguration();
-    void openProfiles();
     void openCalculator();
-    void updateFirmware();
     // Device > Record: starts recording the current tab's device (the panel shows why when it cannot).
     void record();
     void noteRecording(const QString &path);
-    void openMagCal();
-    void openGyroCal();
-    void openAttitudeReset();
-    void openCompassCal();
     void openCalHistory();
 
     ToolHost *m_host;
