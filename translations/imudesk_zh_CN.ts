@@ -1242,7 +1242,7 @@
         <translation>请先断开连接，再连接 %1。</translation>
     </message>
     <message>
-        <location line="+34" />
+        <location line="+60" />
         <source>Nothing was opened.</source>
         <translation>没有打开任何连接。</translation>
     </message>
@@ -1424,6 +1424,19 @@
     </message>
 </context>
 <context>
+    <name>Hec495SerialKind</name>
+    <message>
+        <location filename="../core/device/hec495_serial_kind.cpp" line="+48" />
+        <source>an HEC495 compass</source>
+        <translation>HEC495 罗盘</translation>
+    </message>
+    <message>
+        <location line="+40" />
+        <source>The simulated compass could not start: %1</source>
+        <translation>模拟罗盘无法启动：%1</translation>
+    </message>
+</context>
+<context>
     <name>Hec495SerialUi</name>
     <message>
         <location filename="../ui/families/hec495_serial_ui.cpp" line="+20" />
@@ -1436,7 +1449,12 @@
         <translation>%1 上的 HEC495</translation>
     </message>
     <message>
-        <location line="+13" />
+        <location line="+9" />
+        <source>Simulated HEC495 compass</source>
+        <translation>模拟 HEC495 罗盘</translation>
+    </message>
+    <message>
+        <location line="+28" />
         <source>Compass</source>
         <translation>罗盘</translation>
     </message>
@@ -1447,9 +1465,23 @@
     </message>
 </context>
 <context>
+    <name>HipnucSerialKind</name>
+    <message>
+        <location filename="../core/device/hipnuc_serial_kind.cpp" line="+42" />
+        <source>a HiPNUC module</source>
+        <translation>HiPNUC 模块</translation>
+    </message>
+    <message>
+        <location line="+22" />
+        <source>The simulated device could not start: %1</source>
+        <translation>模拟设备无法启动：%1</translation>
+    </message>
+</context>
+<context>
     <name>HipnucSerialUi</name>
     <message>
-        <location filename="../ui/families/hipnuc_serial_ui.cpp" line="+25" />
+        <location filename="../ui/families/hipnuc_serial_ui.cpp" line="+37" />
+        <location line="+9" />
         <source>Simulated %1 (firmware %2)</source>
         <translation>模拟 %1（固件 %2）</translation>
     </message>
@@ -4507,17 +4539,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::device::LinkOpener</name>
     <message>
-        <location filename="../core/device/link_opener.cpp" line="+131" />
-        <source>The simulated device could not start: %1</source>
-        <translation>模拟设备无法启动：%1</translation>
+        <location filename="../core/device/link_opener.cpp" line="+117" />
+        <source>%1: no serial device family is called "%2"</source>
+        <translation>%1：没有名为“%2”的串口设备系列</translation>
     </message>
     <message>
-        <location line="+15" />
-        <source>The simulated compass could not start: %1</source>
-        <translation>模拟罗盘无法启动：%1</translation>
-    </message>
-    <message>
-        <location line="+19" />
+        <location line="+26" />
         <source>The simulated Modbus device could not start: %1</source>
         <translation>模拟 Modbus 设备无法启动：%1</translation>
     </message>
@@ -4537,12 +4564,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>%1：设备系列需要检测才能确定，检测不会立即完成</translation>
     </message>
     <message>
-        <location line="+21" />
+        <location line="+28" />
         <source>%1 cannot be read. Check that the file exists and that you may read it.</source>
         <translation>无法读取 %1。请检查文件是否存在，以及您是否有读取权限。</translation>
     </message>
     <message>
-        <location line="+76" />
+        <location line="+75" />
         <source>the port of %1 was lost while it was handed to the device's session</source>
         <translation>%1 的端口在交给设备会话时丢失</translation>
     </message>
@@ -4708,17 +4735,22 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::device::SerialFamilyScan</name>
     <message>
-        <location filename="../core/device/serial_family_scan.cpp" line="+93" />
+        <location filename="../core/device/serial_family_scan.cpp" line="+52" />
         <source>trying %1 baud</source>
         <translation>正在尝试 %1 波特</translation>
     </message>
     <message>
-        <location line="+17" />
-        <source>neither a HiPNUC module nor an HEC495 answered on %1 at %2 baud: check the power, the wiring and that no other program holds the port</source>
-        <translation>%1 上以 %2 波特均无 HiPNUC 模块或 HEC495 应答：请检查电源、接线，并确认没有其他程序占用该端口</translation>
+        <location line="+20" />
+        <source>no device answered on %1 at %2 baud (looked for %3): check the power, the wiring and that no other program holds the port</source>
+        <translation>%1 在 %2 波特率下没有设备应答（查找的是 %3）：请检查电源、接线，以及端口是否被其他程序占用</translation>
     </message>
     <message>
-        <location filename="../core/device/serial_family_scan.h" line="+44" />
+        <location line="+2" />
+        <source> or </source>
+        <translation> 或 </translation>
+    </message>
+    <message>
+        <location filename="../core/device/serial_family_scan.h" line="+36" />
         <source>serial</source>
         <translation>串口</translation>
     </message>
@@ -4726,17 +4758,17 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::device::SessionEngine</name>
     <message>
-        <location filename="../core/device/session_engine.cpp" line="+140" />
+        <location filename="../core/device/session_engine.cpp" line="+147" />
         <source>the link went to the device's own session</source>
         <translation>链路已交给设备自己的会话</translation>
     </message>
     <message>
-        <location line="+21" />
+        <location line="+17" />
         <source>the connection was closed</source>
         <translation>连接已关闭</translation>
     </message>
     <message>
-        <location line="+32" />
+        <location line="+30" />
         <source>disconnected — waiting for the device to come back</source>
         <translation>已断开，正在等待设备重新连接</translation>
     </message>
@@ -8388,7 +8420,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::ConnectionBar</name>
     <message>
-        <location filename="../ui/workspace/connection_bar.cpp" line="+192" />
+        <location filename="../ui/workspace/connection_bar.cpp" line="+182" />
         <source>SN %1</source>
         <translation>序列号 %1</translation>
     </message>
@@ -8458,9 +8490,9 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>连接到所选串口（Ctrl+K）</translation>
     </message>
     <message>
-        <location line="+9" />
-        <source>Simulated %1 compass</source>
-        <translation>模拟 %1 罗盘</translation>
+        <location line="+12" />
+        <source>Simulated %1</source>
+        <translation>模拟 %1</translation>
     </message>
     <message>
         <location line="+1" />
@@ -8473,7 +8505,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>%1（%2）</translation>
     </message>
     <message>
-        <location line="+25" />
+        <location line="+33" />
         <source>No serial port found</source>
         <translation>未找到串口</translation>
     </message>
@@ -8539,7 +8571,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::DeviceWorkspace</name>
     <message>
-        <location filename="../ui/workspace/device_workspace.cpp" line="+346" />
+        <location filename="../ui/workspace/device_workspace.cpp" line="+342" />
         <source>New connection</source>
         <translation>新连接</translation>
     </message>
@@ -10203,7 +10235,7 @@ Samples: %3</source>
 <context>
     <name>imudesk::ui::MainWindow</name>
     <message>
-        <location filename="../ui/workspace/main_window.cpp" line="+376" />
+        <location filename="../ui/workspace/main_window.cpp" line="+386" />
         <source>Choose a port first.</source>
         <translation>请先选择串口。</translation>
     </message>
@@ -10218,12 +10250,17 @@ Samples: %3</source>
         <translation>关于 ImuDesk</translation>
     </message>
     <message>
-        <location line="+1" />
-        <source>&lt;h3&gt;ImuDesk %1&lt;/h3&gt;&lt;p&gt;A bench tool for HiPNUC IMU modules: live values, the ASCII command console and simulated devices.&lt;/p&gt;&lt;p&gt;Built with Qt %2.&lt;/p&gt;</source>
-        <translation>&lt;h3&gt;ImuDesk %1&lt;/h3&gt;&lt;p&gt;HiPNUC IMU 模块测试工具：实时数值、ASCII 指令控制台和模拟设备。&lt;/p&gt;&lt;p&gt;基于 Qt %2 构建。&lt;/p&gt;</translation>
+        <location line="-132" />
+        <source>No device family simulates "%1".</source>
+        <translation>没有设备系列能模拟“%1”。</translation>
     </message>
     <message>
-        <location line="+19" />
+        <location line="+133" />
+        <source>&lt;h3&gt;ImuDesk %1&lt;/h3&gt;&lt;p&gt;A bench tool for IMU, AHRS and compass modules on serial, RS-485 Modbus and CAN links: live values and charts, settings, calibration, firmware updates, recordings and simulated devices.&lt;/p&gt;&lt;p&gt;Built with Qt %2.&lt;/p&gt;</source>
+        <translation>&lt;h3&gt;ImuDesk %1&lt;/h3&gt;&lt;p&gt;面向串口、RS-485 Modbus 和 CAN 链路上的 IMU、AHRS 与罗盘模块的台架工具：实时数值与曲线、设置、校准、固件升级、记录以及模拟设备。&lt;/p&gt;&lt;p&gt;基于 Qt %2 构建。&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <location line="+20" />
         <source>ImuDesk – IMU bench tool</source>
         <translation>ImuDesk – IMU 测试工具</translation>
     </message>
@@ -12147,7 +12184,7 @@ Edit it (Edit…) and start again.</source>
 <context>
     <name>imudesk::ui::ToolActions</name>
     <message>
-        <location filename="../ui/workspace/tool_actions.cpp" line="+101" />
+        <location filename="../ui/workspace/tool_actions.cpp" line="+110" />
         <source>&amp;Open capture…</source>
         <translation>打开记录(&amp;O)…</translation>
     </message>
@@ -12202,17 +12239,7 @@ Edit it (Edit…) and start again.</source>
         <translation>通过 CAN 连接(&amp;A)…</translation>
     </message>
     <message>
-        <location line="+1" />
-        <source>Listen to and configure a J1939, CANopen or HEC495 device on a CAN bus</source>
-        <translation>监听并配置 CAN 总线上的 J1939、CANopen 或 HEC495 设备</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>&amp;Scan Modbus bus…</source>
-        <translation>扫描 Modbus 总线(&amp;S)…</translation>
-    </message>
-    <message>
-        <location line="+1" />
+        <location line="+3" />
         <source>Find the node IDs that answer on the bus</source>
         <translation>查找总线上有应答的节点 ID</translation>
     </message>
@@ -12252,12 +12279,7 @@ Edit it (Edit…) and start again.</source>
         <translation>升级固件(&amp;U)…</translation>
     </message>
     <message>
-        <location line="+1" />
-        <source>Write a new firmware image to the module: over its serial port, verified by reading it back, or over CANopen, verified by the bootloader's CRC</source>
-        <translation>向模块写入新固件：经串口写入时回读校验，经 CANopen 写入时由引导程序的 CRC 校验</translation>
-    </message>
-    <message>
-        <location line="+1" />
+        <location line="+2" />
         <source>&amp;Record</source>
         <translation>记录(&amp;R)</translation>
     </message>
@@ -12297,14 +12319,29 @@ Edit it (Edit…) and start again.</source>
         <translation>确认模块静止后，将航向角清零或调平模块（ATT RST）</translation>
     </message>
     <message>
-        <location line="+1" />
-        <source>HEC495 &amp;compass…</source>
-        <translation>HEC495 罗盘(&amp;C)…</translation>
+        <location line="-18" />
+        <source>Listen to and configure a device on a CAN bus (J1939 or CANopen)</source>
+        <translation>监听并配置 CAN 总线上的设备（J1939 或 CANopen）</translation>
     </message>
     <message>
         <location line="+1" />
-        <source>The HEC495's own calibration methods, with the target poses to turn it to</source>
-        <translation>HEC495 自带的校准方法，并显示需转到的目标姿态</translation>
+        <source>&amp;Scan the bus…</source>
+        <translation>扫描总线(&amp;S)…</translation>
+    </message>
+    <message>
+        <location line="+9" />
+        <source>Write a new firmware image to the module over its serial port or its CAN bus, and verify it</source>
+        <translation>通过串口或 CAN 总线向模块写入新固件并校验</translation>
+    </message>
+    <message>
+        <location line="+9" />
+        <source>&amp;Compass calibration…</source>
+        <translation>罗盘校准(&amp;C)…</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The compass's own calibration methods, with the target poses to turn it to</source>
+        <translation>罗盘自带的校准方法，并给出要转到的目标姿态</translation>
     </message>
     <message>
         <location line="+1" />

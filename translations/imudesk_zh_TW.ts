@@ -1242,7 +1242,7 @@
         <translation>請先中斷連線，再連線 %1。</translation>
     </message>
     <message>
-        <location line="+34" />
+        <location line="+60" />
         <source>Nothing was opened.</source>
         <translation>沒有開啟任何連線。</translation>
     </message>
@@ -1424,6 +1424,19 @@
     </message>
 </context>
 <context>
+    <name>Hec495SerialKind</name>
+    <message>
+        <location filename="../core/device/hec495_serial_kind.cpp" line="+48" />
+        <source>an HEC495 compass</source>
+        <translation>HEC495 羅盤</translation>
+    </message>
+    <message>
+        <location line="+40" />
+        <source>The simulated compass could not start: %1</source>
+        <translation>模擬羅盤無法啟動：%1</translation>
+    </message>
+</context>
+<context>
     <name>Hec495SerialUi</name>
     <message>
         <location filename="../ui/families/hec495_serial_ui.cpp" line="+20" />
@@ -1436,7 +1449,12 @@
         <translation>%1 上的 HEC495</translation>
     </message>
     <message>
-        <location line="+13" />
+        <location line="+9" />
+        <source>Simulated HEC495 compass</source>
+        <translation>模擬 HEC495 羅盤</translation>
+    </message>
+    <message>
+        <location line="+28" />
         <source>Compass</source>
         <translation>羅盤</translation>
     </message>
@@ -1447,9 +1465,23 @@
     </message>
 </context>
 <context>
+    <name>HipnucSerialKind</name>
+    <message>
+        <location filename="../core/device/hipnuc_serial_kind.cpp" line="+42" />
+        <source>a HiPNUC module</source>
+        <translation>HiPNUC 模組</translation>
+    </message>
+    <message>
+        <location line="+22" />
+        <source>The simulated device could not start: %1</source>
+        <translation>模擬裝置無法啟動：%1</translation>
+    </message>
+</context>
+<context>
     <name>HipnucSerialUi</name>
     <message>
-        <location filename="../ui/families/hipnuc_serial_ui.cpp" line="+25" />
+        <location filename="../ui/families/hipnuc_serial_ui.cpp" line="+37" />
+        <location line="+9" />
         <source>Simulated %1 (firmware %2)</source>
         <translation>模擬 %1（韌體 %2）</translation>
     </message>
@@ -4507,17 +4539,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::device::LinkOpener</name>
     <message>
-        <location filename="../core/device/link_opener.cpp" line="+131" />
-        <source>The simulated device could not start: %1</source>
-        <translation>模擬裝置無法啟動：%1</translation>
+        <location filename="../core/device/link_opener.cpp" line="+117" />
+        <source>%1: no serial device family is called "%2"</source>
+        <translation>%1：沒有名為「%2」的序列埠裝置系列</translation>
     </message>
     <message>
-        <location line="+15" />
-        <source>The simulated compass could not start: %1</source>
-        <translation>模擬羅盤無法啟動：%1</translation>
-    </message>
-    <message>
-        <location line="+19" />
+        <location line="+26" />
         <source>The simulated Modbus device could not start: %1</source>
         <translation>模擬 Modbus 裝置無法啟動：%1</translation>
     </message>
@@ -4537,12 +4564,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>%1：裝置系列需要偵測才能確定，偵測不會立即完成</translation>
     </message>
     <message>
-        <location line="+21" />
+        <location line="+28" />
         <source>%1 cannot be read. Check that the file exists and that you may read it.</source>
         <translation>無法讀取 %1。請確認檔案存在且您有讀取權限。</translation>
     </message>
     <message>
-        <location line="+76" />
+        <location line="+75" />
         <source>the port of %1 was lost while it was handed to the device's session</source>
         <translation>%1 的連接埠在交給裝置工作階段時遺失</translation>
     </message>
@@ -4708,17 +4735,22 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::device::SerialFamilyScan</name>
     <message>
-        <location filename="../core/device/serial_family_scan.cpp" line="+93" />
+        <location filename="../core/device/serial_family_scan.cpp" line="+52" />
         <source>trying %1 baud</source>
         <translation>正在嘗試 %1 鮑率</translation>
     </message>
     <message>
-        <location line="+17" />
-        <source>neither a HiPNUC module nor an HEC495 answered on %1 at %2 baud: check the power, the wiring and that no other program holds the port</source>
-        <translation>%1 上以 %2 鮑率皆無 HiPNUC 模組或 HEC495 回應：請檢查電源、接線，並確認沒有其他程式佔用該連接埠</translation>
+        <location line="+20" />
+        <source>no device answered on %1 at %2 baud (looked for %3): check the power, the wiring and that no other program holds the port</source>
+        <translation>%1 在 %2 鮑率下沒有裝置回應（尋找的是 %3）：請檢查電源、接線，以及連接埠是否被其他程式佔用</translation>
     </message>
     <message>
-        <location filename="../core/device/serial_family_scan.h" line="+44" />
+        <location line="+2" />
+        <source> or </source>
+        <translation> 或 </translation>
+    </message>
+    <message>
+        <location filename="../core/device/serial_family_scan.h" line="+36" />
         <source>serial</source>
         <translation>序列埠</translation>
     </message>
@@ -4726,17 +4758,17 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::device::SessionEngine</name>
     <message>
-        <location filename="../core/device/session_engine.cpp" line="+140" />
+        <location filename="../core/device/session_engine.cpp" line="+147" />
         <source>the link went to the device's own session</source>
         <translation>連結已交給裝置自己的工作階段</translation>
     </message>
     <message>
-        <location line="+21" />
+        <location line="+17" />
         <source>the connection was closed</source>
         <translation>連線已關閉</translation>
     </message>
     <message>
-        <location line="+32" />
+        <location line="+30" />
         <source>disconnected — waiting for the device to come back</source>
         <translation>已中斷連線，正在等待裝置重新連線</translation>
     </message>
@@ -8388,7 +8420,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::ConnectionBar</name>
     <message>
-        <location filename="../ui/workspace/connection_bar.cpp" line="+192" />
+        <location filename="../ui/workspace/connection_bar.cpp" line="+182" />
         <source>SN %1</source>
         <translation>序號 %1</translation>
     </message>
@@ -8458,9 +8490,9 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>連線到所選串列埠（Ctrl+K）</translation>
     </message>
     <message>
-        <location line="+9" />
-        <source>Simulated %1 compass</source>
-        <translation>模擬 %1 羅盤</translation>
+        <location line="+12" />
+        <source>Simulated %1</source>
+        <translation>模擬 %1</translation>
     </message>
     <message>
         <location line="+1" />
@@ -8473,7 +8505,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>%1（%2）</translation>
     </message>
     <message>
-        <location line="+25" />
+        <location line="+33" />
         <source>No serial port found</source>
         <translation>找不到串列埠</translation>
     </message>
@@ -8539,7 +8571,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::DeviceWorkspace</name>
     <message>
-        <location filename="../ui/workspace/device_workspace.cpp" line="+346" />
+        <location filename="../ui/workspace/device_workspace.cpp" line="+342" />
         <source>New connection</source>
         <translation>新連線</translation>
     </message>
@@ -10203,7 +10235,7 @@ Samples: %3</source>
 <context>
     <name>imudesk::ui::MainWindow</name>
     <message>
-        <location filename="../ui/workspace/main_window.cpp" line="+376" />
+        <location filename="../ui/workspace/main_window.cpp" line="+386" />
         <source>Choose a port first.</source>
         <translation>請先選擇串列埠。</translation>
     </message>
@@ -10218,12 +10250,17 @@ Samples: %3</source>
         <translation>關於 ImuDesk</translation>
     </message>
     <message>
-        <location line="+1" />
-        <source>&lt;h3&gt;ImuDesk %1&lt;/h3&gt;&lt;p&gt;A bench tool for HiPNUC IMU modules: live values, the ASCII command console and simulated devices.&lt;/p&gt;&lt;p&gt;Built with Qt %2.&lt;/p&gt;</source>
-        <translation>&lt;h3&gt;ImuDesk %1&lt;/h3&gt;&lt;p&gt;HiPNUC IMU 模組測試工具：即時數值、ASCII 指令主控台和模擬裝置。&lt;/p&gt;&lt;p&gt;以 Qt %2 建置。&lt;/p&gt;</translation>
+        <location line="-132" />
+        <source>No device family simulates "%1".</source>
+        <translation>沒有裝置系列能模擬「%1」。</translation>
     </message>
     <message>
-        <location line="+19" />
+        <location line="+133" />
+        <source>&lt;h3&gt;ImuDesk %1&lt;/h3&gt;&lt;p&gt;A bench tool for IMU, AHRS and compass modules on serial, RS-485 Modbus and CAN links: live values and charts, settings, calibration, firmware updates, recordings and simulated devices.&lt;/p&gt;&lt;p&gt;Built with Qt %2.&lt;/p&gt;</source>
+        <translation>&lt;h3&gt;ImuDesk %1&lt;/h3&gt;&lt;p&gt;適用於序列埠、RS-485 Modbus 與 CAN 連線上的 IMU、AHRS 及羅盤模組的測試台工具：即時數值與曲線、設定、校準、韌體更新、記錄以及模擬裝置。&lt;/p&gt;&lt;p&gt;以 Qt %2 建置。&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <location line="+20" />
         <source>ImuDesk – IMU bench tool</source>
         <translation>ImuDesk – IMU 測試工具</translation>
     </message>
@@ -12147,7 +12184,7 @@ Edit it (Edit…) and start again.</source>
 <context>
     <name>imudesk::ui::ToolActions</name>
     <message>
-        <location filename="../ui/workspace/tool_actions.cpp" line="+101" />
+        <location filename="../ui/workspace/tool_actions.cpp" line="+110" />
         <source>&amp;Open capture…</source>
         <translation>開啟記錄檔(&amp;O)…</translation>
     </message>
@@ -12202,17 +12239,7 @@ Edit it (Edit…) and start again.</source>
         <translation>透過 CAN 連線(&amp;A)…</translation>
     </message>
     <message>
-        <location line="+1" />
-        <source>Listen to and configure a J1939, CANopen or HEC495 device on a CAN bus</source>
-        <translation>監聽並配置 CAN 匯流排上的 J1939、CANopen 或 HEC495 裝置</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>&amp;Scan Modbus bus…</source>
-        <translation>掃描 Modbus 匯流排(&amp;S)…</translation>
-    </message>
-    <message>
-        <location line="+1" />
+        <location line="+3" />
         <source>Find the node IDs that answer on the bus</source>
         <translation>找出匯流排上有回應的節點 ID</translation>
     </message>
@@ -12252,12 +12279,7 @@ Edit it (Edit…) and start again.</source>
         <translation>更新韌體(&amp;U)…</translation>
     </message>
     <message>
-        <location line="+1" />
-        <source>Write a new firmware image to the module: over its serial port, verified by reading it back, or over CANopen, verified by the bootloader's CRC</source>
-        <translation>將新韌體寫入模組：經串列埠寫入時回讀驗證，經 CANopen 寫入時由開機載入程式的 CRC 驗證</translation>
-    </message>
-    <message>
-        <location line="+1" />
+        <location line="+2" />
         <source>&amp;Record</source>
         <translation>記錄(&amp;R)</translation>
     </message>
@@ -12297,14 +12319,29 @@ Edit it (Edit…) and start again.</source>
         <translation>確認模組靜止後，將航向角歸零或將模組調平（ATT RST）</translation>
     </message>
     <message>
-        <location line="+1" />
-        <source>HEC495 &amp;compass…</source>
-        <translation>HEC495 羅盤(&amp;C)…</translation>
+        <location line="-18" />
+        <source>Listen to and configure a device on a CAN bus (J1939 or CANopen)</source>
+        <translation>監聽並設定 CAN 匯流排上的裝置（J1939 或 CANopen）</translation>
     </message>
     <message>
         <location line="+1" />
-        <source>The HEC495's own calibration methods, with the target poses to turn it to</source>
-        <translation>HEC495 自身的校準方法，並顯示需轉到的目標姿態</translation>
+        <source>&amp;Scan the bus…</source>
+        <translation>掃描匯流排(&amp;S)…</translation>
+    </message>
+    <message>
+        <location line="+9" />
+        <source>Write a new firmware image to the module over its serial port or its CAN bus, and verify it</source>
+        <translation>透過序列埠或 CAN 匯流排向模組寫入新韌體並驗證</translation>
+    </message>
+    <message>
+        <location line="+9" />
+        <source>&amp;Compass calibration…</source>
+        <translation>羅盤校準(&amp;C)…</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The compass's own calibration methods, with the target poses to turn it to</source>
+        <translation>羅盤本身的校準方法，並給出要轉到的目標姿態</translation>
     </message>
     <message>
         <location line="+1" />

@@ -124,7 +124,7 @@ int cmdProbe(const QStringList &args)
     device::LinkOpener::Opened link = opener.take();
     const int found = opener.request().baud;
     if (auto *compass = qobject_cast<device::Hec495Session *>(link.link.get())) {
-        printHec495Probe(port, found, opener.request().hec495Address, p.isSet(QStringLiteral("json")));
+        printHec495Probe(port, found, opener.request().deviceAddress, p.isSet(QStringLiteral("json")));
         compass->close();
         return ExitOk;
     }

@@ -1,7 +1,7 @@
 // ImuDesk GUI: command line, language, settings, main window.
 #include "workspace/device_workspace.h"
 #include "workspace/language_switcher.h"
-#include "device/serial_family_scan.h"
+#include "device/serial_family.h"
 #include "families/family_ui.h"
 #include "workspace/tool_actions.h"
 #include "workspace/main_window.h"
@@ -183,7 +183,7 @@ int main(int argc, char *argv[])
     if (parser.isSet(baudOption) && parser.value(baudOption) != QLatin1String("auto")) {
         bool ok = false;
         baud = parser.value(baudOption).toInt(&ok);
-        const auto &rates = imudesk::device::SerialFamilyScan::defaultBauds();
+        const auto &rates = imudesk::device::serialDetectionBauds();
         if (!ok || std::find(rates.begin(), rates.end(), baud) == rates.end()) {
             QStringList names;
             for (int r : rates)
@@ -225,7 +225,7 @@ int main(int argc, char *argv[])
 
     if (simulate) {
         QString error;
-        if (!window.connectSimulated(simOptions, baud, &error))
+        if (!window.openLink(imudesk::device::LinkRequest::simulatedHipnuc(simOptions, baud), &error))
             QMessageBox::warning(&window, QCoreApplication::translate("main", "ImuDesk"), error);
     } else if (parser.isSet(portOption)) {
         window.connectPort(parser.value(portOption), baud);
@@ -234,7 +234,7 @@ int main(int argc, char *argv[])
         QString error;
         bool ok = true;
         if (link == QLatin1String("hec495")) {
-            ok = window.connectSimulatedHec495(&error);
+            ok = window.openLink(imudesk::device::LinkRequest::simulatedHec495(simOptions.motion), &error);
         } else if (link == QLatin1String("modbus")) {
             imudesk::device::LinkRequest request = imudesk::device::LinkRequest::modbusDevice({});
             request.simulate = true;

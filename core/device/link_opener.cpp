@@ -1,14 +1,12 @@
 #include "link_opener.h"
 
 #include "device/can_session.h"
-#include "device/device_session.h"
-#include "device/hec495_session.h"
 #include "device/modbus_session.h"
+#include "device/serial_family_scan.h"
 #include "device/session.h"
 #include "io/serial_transport.h"
 #include "record/replay_session.h"
 #include "sim/can_simulator.h"
-#include "sim/hec495_simulator.h"
 #include "sim/modbus_simulator.h"
 #include "sim/pty_simulator.h"
 
@@ -22,8 +20,8 @@ namespace {
 // The detection phase of a serial link: the engine with SerialFamilyScan as its family.
 class ScanSession : public Session {
 public:
-    ScanSession(std::vector<int> bauds, int hec495Address, std::unique_ptr<io::Transport> transport)
-        : Session(std::make_unique<SerialFamilyScan>(std::move(bauds), hec495Address), std::move(transport),
+    ScanSession(std::vector<int> bauds, int deviceAddress, std::unique_ptr<io::Transport> transport)
+        : Session(std::make_unique<SerialFamilyScan>(std::move(bauds), deviceAddress), std::move(transport),
                   QStringLiteral("imudesk-detect"), SerialFamilyScan::kLineIdleMs)
     {
         setAutoReconnect(false);
@@ -38,7 +36,7 @@ public:
 
 } // namespace
 
-LinkRequest LinkRequest::serial(const QString &port, int baud, SerialFamily family)
+LinkRequest LinkRequest::serial(const QString &port, int baud, const QString &family)
 {
     LinkRequest r;
     r.kind = Kind::Serial;
@@ -74,51 +72,25 @@ LinkRequest LinkRequest::capture(const QString &path)
     return r;
 }
 
+LinkRequest LinkRequest::simulatedSerial(const QString &family, sim::Motion motion, std::any options, int baud)
+{
+    LinkRequest r = serial(QString(), baud, family);
+    r.simulate = true;
+    r.motion = motion;
+    r.simulator = std::move(options);
+    return r;
+}
+
 LinkRequest LinkRequest::simulatedHipnuc(const sim::SimOptions &options, int baud)
 {
-    LinkRequest r = serial(QString(), baud, SerialFamily::Hipnuc);
-    r.simulate = true;
-    r.motion = options.motion;
-    r.hipnucSimulator = options;
-    return r;
+    return simulatedSerial(QStringLiteral("hipnuc"), options.motion, options, baud);
 }
 
 LinkRequest LinkRequest::simulatedHec495(sim::Motion motion)
 {
-    LinkRequest r = serial(QString(), 0, SerialFamily::Hec495);
-    r.simulate = true;
-    r.motion = motion;
-    return r;
+    return simulatedSerial(QStringLiteral("hec495"), motion);
 }
 
-namespace {
-
-std::unique_ptr<io::Transport> transportFor(const LinkRequest &r)
-{
-    return r.transport ? r.transport() : std::make_unique<io::SerialTransport>();
-}
-
-// The family's session of a serial request whose family is known, over `transport`.
-LinkOpener::Opened serialLink(const LinkRequest &r, std::unique_ptr<io::Transport> transport)
-{
-    LinkOpener::Opened o;
-    if (r.family == SerialFamily::Hec495) {
-        auto s = std::make_unique<Hec495Session>(nullptr, std::move(transport));
-        s->setAutoReconnect(r.autoReconnect);
-        o.start = [p = s.get(), port = r.address, baud = r.baud, address = r.hec495Address] {
-            p->open(port, baud, address);
-        };
-        o.link = std::move(s);
-    } else {
-        auto s = std::make_unique<DeviceSession>(nullptr, std::move(transport));
-        s->setAutoReconnect(r.autoReconnect);
-        o.start = [p = s.get(), port = r.address, baud = r.baud] { p->open(port, baud); };
-        o.link = std::move(s);
-    }
-    return o;
-}
-
-// A simulated serial device on a pseudo-terminal, started, as the request's far end.
 bool startOnPty(LinkRequest &r, std::shared_ptr<sim::PtySimulator> simulator, const QString &failure, QString *error)
 {
     QString why;
@@ -133,24 +105,31 @@ bool startOnPty(LinkRequest &r, std::shared_ptr<sim::PtySimulator> simulator, co
     return true;
 }
 
+namespace {
+
+std::unique_ptr<io::Transport> transportFor(const LinkRequest &r)
+{
+    return r.transport ? r.transport() : std::make_unique<io::SerialTransport>();
+}
+
+QString unknownFamily(const LinkRequest &r)
+{
+    return LinkOpener::tr("%1: no serial device family is called \"%2\"").arg(r.address, r.family);
+}
+
 // Starts the simulated device a request asks for and points the request at it.
 bool startSimulator(LinkRequest &r, QString *error)
 {
     QString why;
     switch (r.kind) {
     case LinkRequest::Kind::Serial: {
-        if (r.family != SerialFamily::Hec495) {
-            r.family = SerialFamily::Hipnuc;
-            return startOnPty(r, std::make_shared<sim::PtySimulator>(r.hipnucSimulator),
-                              LinkOpener::tr("The simulated device could not start: %1"), error);
+        const SerialFamilyKind *family = serialFamily(r.family);
+        if (!family) {
+            if (error)
+                *error = unknownFamily(r);
+            return false;
         }
-        sim::Hec495Options options;
-        options.motion = r.motion;
-        options.rateHz = 50;
-        r.baud = options.baud;
-        r.hec495Address = options.address;
-        return startOnPty(r, std::make_shared<sim::PtySimulator>(std::make_unique<sim::Hec495Simulator>(options)),
-                          LinkOpener::tr("The simulated compass could not start: %1"), error);
+        return family->startSimulator(r, error);
     }
     case LinkRequest::Kind::Modbus: {
         sim::ModbusSimOptions so;
@@ -203,15 +182,22 @@ LinkOpener::Opened LinkOpener::openNow(LinkRequest &r, QString *error)
     if (r.simulate && !startSimulator(r, error))
         return o;
     switch (r.kind) {
-    case LinkRequest::Kind::Serial:
-        if (r.family == SerialFamily::Unknown) {
+    case LinkRequest::Kind::Serial: {
+        if (r.family.isEmpty()) {
             if (error)
                 *error = tr("%1: the device's family is found by a detection, which does not finish at once")
                              .arg(r.address);
             return o;
         }
-        o = serialLink(r, transportFor(r));
+        const SerialFamilyKind *family = serialFamily(r.family);
+        if (!family) {
+            if (error)
+                *error = unknownFamily(r);
+            return o;
+        }
+        o = family->open(r, transportFor(r));
         break;
+    }
     case LinkRequest::Kind::Modbus: {
         auto s = std::make_unique<ModbusSession>();
         o.start = [p = s.get(), options = r.modbus] { p->open(options); };
@@ -250,7 +236,7 @@ void LinkOpener::open(LinkRequest request)
     m_opened = {};
     m_request = std::move(request);
     m_running = true;
-    if (m_request.kind != LinkRequest::Kind::Serial || m_request.family != SerialFamily::Unknown) {
+    if (m_request.kind != LinkRequest::Kind::Serial || !m_request.family.isEmpty()) {
         QString error;
         Opened o = openNow(m_request, &error);
         if (!o.link) {
@@ -265,8 +251,8 @@ void LinkOpener::open(LinkRequest request)
     }
     auto probe = std::make_unique<ScanSession>(m_request.baud > 0 ? std::vector<int>{m_request.baud}
                                                                   : std::vector<int>{},
-                                               m_request.hec495Address, transportFor(m_request));
-    probe->onFound(this, [this](SerialFamily f, int baud, int address) { onFound(f, baud, address); });
+                                               m_request.deviceAddress, transportFor(m_request));
+    probe->onFound(this, [this](const QString &f, int baud, int address) { onFound(f, baud, address); });
     connect(probe.get(), &DeviceLink::stateChanged, this, [this](SessionState s, const QString &detail) {
         if (s == SessionState::Detecting && !detail.isEmpty())
             Q_EMIT detecting(detail);
@@ -289,7 +275,7 @@ void LinkOpener::cancel()
     }
 }
 
-void LinkOpener::onFound(SerialFamily family, int baud, int address)
+void LinkOpener::onFound(const QString &family, int baud, int address)
 {
     if (!m_probe || !m_running)
         return;
@@ -299,13 +285,13 @@ void LinkOpener::onFound(SerialFamily family, int baud, int address)
     m_request.family = family;
     m_request.baud = baud;
     if (address >= 0)
-        m_request.hec495Address = address;
+        m_request.deviceAddress = address;
     if (!port) {
         m_running = false;
         Q_EMIT failed(tr("the port of %1 was lost while it was handed to the device's session").arg(m_request.address));
         return;
     }
-    Opened o = serialLink(m_request, std::move(port));
+    Opened o = serialFamily(family)->open(m_request, std::move(port));
     o.keepAlive = std::move(m_request.keepAlive);
     finish(std::move(o));
 }

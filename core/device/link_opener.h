@@ -5,12 +5,13 @@
 //
 // A serial port whose family is not given is opened once: a session whose family plug-in is
 // the detection (SerialFamilyScan) scans the rates on it, and the port, still open, goes to the
-// found family's session (HiPNUC: DeviceSession; HEC495: Hec495Session) at the rate found.
-// Nothing blocks: ready() or failed() follows from the event loop.
+// found family's session at the rate found. The serial families are plug-ins
+// (serial_family.h); nothing here names one. Nothing blocks: ready() or failed() follows from
+// the event loop.
 #include "device/can_session_types.h"
 #include "device/device_link.h"
 #include "device/modbus_types.h"
-#include "device/serial_family_scan.h"
+#include "device/serial_family.h"
 #include "io/transport.h"
 #include "sim/hipnuc_simulator.h"
 #include "sim/motion_model.h"
@@ -18,8 +19,13 @@
 #include <QObject>
 #include <QString>
 
+#include <any>
 #include <functional>
 #include <memory>
+
+namespace imudesk::sim {
+class PtySimulator;
+}
 
 namespace imudesk::device {
 
@@ -30,28 +36,33 @@ struct LinkRequest {
     Kind kind = Kind::Serial;
     QString address;                              // serial port, or the capture file
     int baud = 0;                                 // serial: 0 = Auto
-    SerialFamily family = SerialFamily::Unknown;  // serial: Unknown = detect it
-    int hec495Address = 0;                        // serial HEC495: the module's address
+    QString family;                               // serial: a SerialFamilyKind's id; empty = detect it
+    int deviceAddress = 0;                        // serial: a polled device's bus address
     bool autoReconnect = true;                    // serial: wait for an unplugged device to return
     ModbusOptions modbus;
     CanSessionOptions can;
-    // A simulated device first, as the link's far end (HEC495 serial on a pseudo-terminal, a
-    // Modbus device on a pseudo-terminal, a CAN device on the same bus), moving as `motion`.
+    // A simulated device first, as the link's far end (a serial family's device or a Modbus
+    // device on a pseudo-terminal, a CAN device on the same bus), moving as `motion`.
     bool simulate = false;
     sim::Motion motion = sim::Motion::Static;
-    sim::SimOptions hipnucSimulator; // the simulated HiPNUC module (motion: its own)
+    // A simulated serial device's own options, as its family takes them (HiPNUC:
+    // sim::SimOptions, with a motion of their own); empty: the family's defaults.
+    std::any simulator;
     // What the link needs (its simulator): handed on with the link, released after it.
     std::shared_ptr<void> keepAlive;
     // A serial link's transport (tests: an in-process simulator); null: the serial port.
     std::function<std::unique_ptr<io::Transport>()> transport;
 
-    static LinkRequest serial(const QString &port, int baud = 0, SerialFamily family = SerialFamily::Unknown);
+    static LinkRequest serial(const QString &port, int baud = 0, const QString &family = {});
     static LinkRequest modbusDevice(const ModbusOptions &options);
     static LinkRequest canBus(const CanSessionOptions &options);
     static LinkRequest capture(const QString &path);
-    // A simulated HEC495 streaming at 50 Hz on a pseudo-terminal.
+    // A serial family's simulated device on a pseudo-terminal (options: as the family takes
+    // them, empty for its defaults), connected at baud (0: as the family finds it).
+    static LinkRequest simulatedSerial(const QString &family, sim::Motion motion, std::any options = {}, int baud = 0);
+    // Conveniences for the built-in families: a simulated HEC495 streaming at 50 Hz; a
+    // simulated HiPNUC module connected at baud (0: detected).
     static LinkRequest simulatedHec495(sim::Motion motion);
-    // A simulated HiPNUC module on a pseudo-terminal, connected at baud (0: detected).
     static LinkRequest simulatedHipnuc(const sim::SimOptions &options, int baud);
 };
 
@@ -67,14 +78,8 @@ public:
     void cancel();
     bool running() const { return m_running; }
 
-    // What ready() announces: the link of the right family, not yet started, and what it needs
-    // (released after it). Connect to the link's signals first, then call start(): its state,
-    // identity and errors follow from the link.
-    struct Opened {
-        std::unique_ptr<DeviceLink> link;
-        std::function<void()> start;
-        std::shared_ptr<void> keepAlive;
-    };
+    // What ready() announces: the link of the right family, not yet started (OpenedLink).
+    using Opened = OpenedLink;
     Opened take();
     // A request that needs no detection (anything but a serial port of unknown family), at
     // once: its simulator started, its link made. On failure no link, and `error` says why.
@@ -90,7 +95,7 @@ Q_SIGNALS:
     void failed(const QString &message);
 
 private:
-    void onFound(SerialFamily family, int baud, int address);
+    void onFound(const QString &family, int baud, int address);
     void finish(Opened opened);
 
     LinkRequest m_request;
@@ -98,5 +103,9 @@ private:
     Opened m_opened;
     bool m_running = false;
 };
+
+// Starts a simulated serial device and points r at it (address, keepAlive; never waited for
+// when unplugged: a pty's number is reused). failure: the message, %1 the reason.
+bool startOnPty(LinkRequest &r, std::shared_ptr<sim::PtySimulator> simulator, const QString &failure, QString *error);
 
 } // namespace imudesk::device

@@ -1,8 +1,6 @@
 #include "serial_family_scan.h"
 
 #include "device/session_engine.h"
-#include "protocol/witlink/commands.h"
-#include "protocol/witlink/reply.h"
 
 #include <QLoggingCategory>
 
@@ -14,65 +12,26 @@ namespace {
 
 Q_LOGGING_CATEGORY(lcDetect, "imudesk.core.device.detect")
 
-namespace wl = protocol::witlink;
-
-QByteArray familyQuery(int hec495Address)
-{
-    QByteArray query = QByteArrayLiteral("LOG VERSION\r\n");
-    for (const auto &frame : {wl::commands::readAll(uint8_t(hec495Address)), wl::commands::queryAddress()})
-        query.append(reinterpret_cast<const char *>(frame.data()), qsizetype(frame.size()));
-    query.append("\r\n");
-    return query;
-}
-
 } // namespace
 
-const char *serialFamilyName(SerialFamily f)
+const SerialFamilyKind *SerialFamilyScan::classify(qsizetype newFrom)
 {
-    switch (f) {
-    case SerialFamily::Hipnuc: return "hipnuc";
-    case SerialFamily::Hec495: return "hec495";
-    case SerialFamily::Unknown: break;
-    }
-    return "unknown";
+    // Each byte goes through each family's recogniser once.
+    for (auto &[family, recogniser] : m_recognisers)
+        if (recogniser->recognise(m_held, newFrom, &m_seenAddress))
+            return family;
+    return nullptr;
 }
 
-const std::vector<int> &SerialFamilyScan::defaultBauds()
+SerialFamilyScan::SerialFamilyScan(std::vector<int> bauds, int deviceAddress)
+    : m_bauds(bauds.empty() ? serialDetectionBauds() : std::move(bauds))
 {
-    static const std::vector<int> bauds = {115200, 921600, 460800, 230400, 256000, 57600, 38400, 19200, 9600, 4800, 2400};
-    return bauds;
+    for (const SerialFamilyKind *f : serialFamilies())
+        m_query += f->query(deviceAddress);
+    restartStream();
 }
 
-SerialFamily SerialFamilyScan::classify(const QByteArray &bytes, qsizetype newFrom)
-{
-    const auto *p = reinterpret_cast<const uint8_t *>(bytes.constData()) + newFrom;
-    const size_t n = size_t(bytes.size() - newFrom);
-    // Each byte goes through the frame decoders once; they keep an unfinished frame between calls.
-    if (!m_hipnucFrames.feed(p, n).empty())
-        return SerialFamily::Hipnuc;
-    // A HiPNUC reply line ("OK", or the KEY=VALUE lines of LOG VERSION), looked for where the new
-    // bytes may complete one.
-    const qsizetype from = std::max<qsizetype>(0, newFrom - 5);
-    if (bytes.indexOf("\r\nOK\r\n", from) >= 0 || bytes.startsWith("OK\r\n") || bytes.indexOf("PNAME=", from) >= 0)
-        return SerialFamily::Hipnuc;
-    for (const auto &f : m_witlinkFrames.feed(p, n)) {
-        const wl::Reply r = wl::decodeReply(f);
-        if (!r.ok())
-            continue;
-        if (r.kind == wl::Reply::Kind::AllData || r.kind == wl::Reply::Kind::Angles
-            || r.kind == wl::Reply::Kind::Address) {
-            m_seenAddress = r.kind == wl::Reply::Kind::Address ? r.deviceAddress : r.address;
-            return SerialFamily::Hec495;
-        }
-    }
-    return SerialFamily::Unknown;
-}
-
-SerialFamilyScan::SerialFamilyScan(std::vector<int> bauds, int hec495Address)
-    : m_bauds(bauds.empty() ? defaultBauds() : std::move(bauds)), m_hec495Address(hec495Address)
-{
-    qRegisterMetaType<SerialFamily>();
-}
+SerialFamilyScan::~SerialFamilyScan() = default;
 
 int SerialFamilyScan::firstBaud(int requestedBaud) const
 {
@@ -93,23 +52,26 @@ void SerialFamilyScan::opened(int requestedBaud)
         engine().setState(SessionState::Detecting, tr("trying %1 baud").arg(baud));
     };
     p.probe = [this](int, BaudScan::Answer answer) {
-        if (m_seen != SerialFamily::Unknown)
+        if (m_seen)
             answer(BaudScan::Outcome::Found); // it streamed while we listened
         else
             probe(std::move(answer), 0);
     };
     p.found = [this](int baud) {
-        qCDebug(lcDetect) << baud << "baud:" << serialFamilyName(m_seen) << "address" << m_seenAddress;
+        qCDebug(lcDetect) << baud << "baud:" << m_seen->id() << "address" << m_seenAddress;
         engine().setWorkingBaud(baud);
-        Q_EMIT found(m_seen, baud, m_seen == SerialFamily::Hec495 ? m_seenAddress : -1);
+        Q_EMIT found(m_seen->id(), baud, m_seenAddress);
     };
     p.exhausted = [this, bauds = p.bauds, port] {
         QStringList rates;
         for (int b : bauds)
             rates << QString::number(b);
-        engine().fail(tr("neither a HiPNUC module nor an HEC495 answered on %1 at %2 baud: check the power, the "
-                         "wiring and that no other program holds the port")
-                          .arg(port, rates.join(QLatin1Char('/'))));
+        QStringList families;
+        for (const SerialFamilyKind *f : serialFamilies())
+            families << f->displayName();
+        engine().fail(tr("no device answered on %1 at %2 baud (looked for %3): check the power, the wiring and "
+                         "that no other program holds the port")
+                          .arg(port, rates.join(QLatin1Char('/')), families.join(tr(" or "))));
     };
     m_scan.start(std::move(p));
 }
@@ -117,7 +79,7 @@ void SerialFamilyScan::opened(int requestedBaud)
 void SerialFamilyScan::probe(BaudScan::Answer answer, int attempt)
 {
     Request r;
-    r.wire = familyQuery(m_hec495Address);
+    r.wire = m_query;
     r.timeoutMs = kAnswerMs;
     r.done = [this, answer = std::move(answer), attempt](const RequestResult &res) {
         if (res.ok()) {
@@ -144,31 +106,32 @@ void SerialFamilyScan::stopping()
 void SerialFamilyScan::restartStream()
 {
     m_held.clear();
-    m_hipnucFrames.reset();
-    m_witlinkFrames.reset();
-    m_seen = SerialFamily::Unknown;
+    m_recognisers.clear();
+    for (const SerialFamilyKind *f : serialFamilies())
+        m_recognisers.emplace_back(f, f->recogniser());
+    m_seen = nullptr;
     m_seenAddress = -1;
 }
 
 void SerialFamilyScan::feed(const QByteArray &bytes, int64_t)
 {
     m_bytesIn += quint64(bytes.size());
-    if (m_seen != SerialFamily::Unknown || m_held.size() >= kMaxHeld)
+    if (m_seen || m_held.size() >= kMaxHeld)
         return;
     const qsizetype before = m_held.size();
     m_held += bytes.left(kMaxHeld - before);
-    m_seen = classify(m_held, before);
-    if (m_seen != SerialFamily::Unknown && engine().current()) {
+    m_seen = classify(before);
+    if (m_seen && engine().current()) {
         RequestResult r;
         r.status = RequestStatus::Ok;
-        r.reply = QVariant::fromValue(m_seen);
+        r.reply = m_seen->id();
         engine().finishCurrent(std::move(r));
     }
 }
 
 void SerialFamilyScan::unanswered(const Request &, RequestResult &result)
 {
-    result.reply = QVariant::fromValue(SerialFamily::Unknown);
+    result.reply = QString();
 }
 
 } // namespace imudesk::device

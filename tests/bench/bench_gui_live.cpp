@@ -289,7 +289,7 @@ int main(int argc, char **argv)
     };
     for (int i = 0; i < devices; ++i) {
         options.seed = uint64_t(devices - i);
-        if (!window.connectSimulated(options, 921600, &error)) {
+        if (!window.openLink(imudesk::device::LinkRequest::simulatedHipnuc(options, 921600), &error)) {
             std::fprintf(stderr, "%s: %s\n", name, qPrintable(error));
             return 1;
         }

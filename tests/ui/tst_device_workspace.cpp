@@ -184,7 +184,7 @@ private Q_SLOTS:
         window.show();
         QVERIFY(QTest::qWaitForWindowExposed(&window));
         QString error;
-        QVERIFY2(window.connectSimulatedHec495(&error), qPrintable(error));
+        QVERIFY2(window.connectSimulated(imudesk::ui::PortChoice::simulated(QStringLiteral("HEC495"), QString()), 0, &error), qPrintable(error));
         ui::DeviceWorkspace *ws = window.currentWorkspace();
         QTRY_COMPARE_WITH_TIMEOUT(ws->state(), SessionState::Connected, 15000);
         QTRY_VERIFY_WITH_TIMEOUT(ws->link().store().totalAppended() > 20, 15000);
@@ -206,7 +206,7 @@ private Q_SLOTS:
         QString error;
         QVERIFY2(ui::openLinkIn(ws, families,
                                 device::LinkRequest::serial(QStringLiteral("/dev/imudesk-no-such-port"), 115200,
-                                                            device::SerialFamily::Hipnuc),
+                                                            QStringLiteral("hipnuc")),
                                 &error),
                  qPrintable(error));
         QVERIFY(test::hipnucOf(ws));

@@ -106,7 +106,7 @@ private Q_SLOTS:
         sim::SimOptions o;
         o.motion = sim::Motion::Static;
         QString error;
-        QVERIFY2(w.connectSimulated(o, 0, &error), qPrintable(error));
+        QVERIFY2(w.openLink(imudesk::device::LinkRequest::simulatedHipnuc(o, 0), &error), qPrintable(error));
         ui::DeviceWorkspace *ws = w.currentWorkspace();
         auto *action = w.findChild<QAction *>(QStringLiteral("firmwareAction"));
         QTRY_VERIFY_WITH_TIMEOUT(ws->identity() && ws->identity()->firmware && action->isEnabled(), 15000);

@@ -196,13 +196,13 @@ class TstLayout : public QObject {
             options.model = "HI14";
             options.firmware = "1.7.1";
             options.motion = sim::Motion::Tumble;
-            return w.connectSimulated(options, 0, error);
+            return w.openLink(imudesk::device::LinkRequest::simulatedHipnuc(options, 0), error);
         }
         case Kind::SerialGnss: { // HI91 with NMEA GGA and RMC beside it: eight more rows
             sim::SimOptions options;
             options.model = "HI14";
             options.firmware = "1.7.1";
-            if (!w.connectSimulated(options, 115200, error))
+            if (!w.openLink(imudesk::device::LinkRequest::simulatedHipnuc(options, 115200), error))
                 return false;
             DeviceWorkspace *ws = w.currentWorkspace();
             if (!imudesk::test::waitFor([ws] { return ws->link().state() == device::SessionState::Connected; }, 5000))
@@ -217,7 +217,7 @@ class TstLayout : public QObject {
             options.model = "HI14";
             options.firmware = "1.7.1";
             options.ppsInput = true;
-            if (!w.connectSimulated(options, 115200, error))
+            if (!w.openLink(imudesk::device::LinkRequest::simulatedHipnuc(options, 115200), error))
                 return false;
             DeviceWorkspace *ws = w.currentWorkspace();
             if (!imudesk::test::waitFor([ws] { return ws->link().state() == device::SessionState::Connected; }, 5000))
@@ -227,7 +227,7 @@ class TstLayout : public QObject {
             test::hipnucOf(*ws)->sendCommand(hpc::logOnTime(protocol::hipnuc::Message::HI83, 0.05));
             return imudesk::test::waitFor([ws] { return !ws->detailsDock()->isHidden(); }, 5000);
         }
-        case Kind::Hec495: return w.connectSimulatedHec495(error);
+        case Kind::Hec495: return w.connectSimulated(imudesk::ui::PortChoice::simulated(QStringLiteral("HEC495"), QString()), 0, error);
         case Kind::Modbus: {
             device::LinkRequest request = device::LinkRequest::modbusDevice({});
             request.simulate = true;
@@ -478,7 +478,7 @@ private Q_SLOTS:
         QVERIFY(!ws->attitudeDock()->isHidden());
         sim::SimOptions options;
         options.motion = sim::Motion::Static;
-        QVERIFY2(w.connectSimulated(options, 0, &error), qPrintable(error));
+        QVERIFY2(w.openLink(imudesk::device::LinkRequest::simulatedHipnuc(options, 0), &error), qPrintable(error));
         QTRY_VERIFY_WITH_TIMEOUT(ws->state() == device::SessionState::Connected, 15000);
         // An ERR reply opens the console, where the user sees it.
         ws->sendConsoleCommand(QStringLiteral("NO SUCH COMMAND"));

@@ -5,6 +5,7 @@
 #include "../common/test_main.h"
 #include "recording/export_dialog.h"
 #include "recording/recording_controls.h"
+#include "families/family_ui.h"
 #include "workspace/connection_bar.h"
 #include "workspace/tool_actions.h"
 #include "workspace/console_widget.h"
@@ -114,7 +115,7 @@ private Q_SLOTS:
 
         imudesk::sim::SimOptions options; // HI14, firmware 1.7.1, HI91 at 100 Hz
         QString error;
-        QVERIFY2(w.connectSimulated(options, 0, &error), qPrintable(error));
+        QVERIFY2(w.openLink(imudesk::device::LinkRequest::simulatedHipnuc(options, 0), &error), qPrintable(error));
         QVERIFY(w.isSimulated());
 
         // Live values through the pty, the session and the 30 Hz view clock.
@@ -232,9 +233,9 @@ private Q_SLOTS:
         imudesk::sim::SimOptions options;
         options.motion = imudesk::sim::Motion::Spin;
         QString error;
-        QVERIFY2(w.connectSimulated(options, 0, &error), qPrintable(error));
+        QVERIFY2(w.openLink(imudesk::device::LinkRequest::simulatedHipnuc(options, 0), &error), qPrintable(error));
         w.newWorkspace();
-        QVERIFY2(w.connectSimulatedHec495(&error), qPrintable(error));
+        QVERIFY2(w.connectSimulated(imudesk::ui::PortChoice::simulated(QStringLiteral("HEC495"), QString()), 0, &error), qPrintable(error));
         QCOMPARE(w.workspaceCount(), 2);
         auto *tabs = w.findChild<QTabWidget *>();
         QVERIFY(tabs);
@@ -340,7 +341,7 @@ private Q_SLOTS:
         imudesk::sim::SimOptions options;
         options.ppsInput = true;
         QString error;
-        QVERIFY2(w.connectSimulated(options, 115200, &error), qPrintable(error));
+        QVERIFY2(w.openLink(imudesk::device::LinkRequest::simulatedHipnuc(options, 115200), &error), qPrintable(error));
         QTRY_VERIFY_WITH_TIMEOUT(cell(w, LatestValuesModel::DeviceTime).contains(QLatin1Char(':')), 5000);
         auto *take = w.findChild<QAction *>(QStringLiteral("takeSampleAction"));
         QVERIFY(take);
@@ -373,7 +374,7 @@ private Q_SLOTS:
         options.firmware = "1.6.6";
         options.motion = imudesk::sim::Motion::Spin;
         QString error;
-        QVERIFY2(w.connectSimulated(options, 115200, &error), qPrintable(error));
+        QVERIFY2(w.openLink(imudesk::device::LinkRequest::simulatedHipnuc(options, 115200), &error), qPrintable(error));
         QTRY_VERIFY_WITH_TIMEOUT(cell(w, LatestValuesModel::Yaw) != LatestValuesModel::missingText(), 5000);
         // Spinning at 30 deg/s: the yaw changes.
         const QString yaw = cell(w, LatestValuesModel::Yaw);
@@ -477,10 +478,16 @@ private Q_SLOTS:
 
     void connectionBarListsSimulators()
     {
+        // The simulated devices are the family plug-ins': none without them.
         imudesk::ui::ConnectionBar bar;
+        QVERIFY(!bar.portTexts().contains(QStringLiteral("Simulated HI14 (firmware 1.7.1)")));
+        imudesk::ui::FamilyUiRegistry families;
+        imudesk::ui::registerBuiltInFamilies(families);
+        bar.setSimulatedDevices([&families] { return families.simulatedDevices(); });
         const QStringList texts = bar.portTexts();
         QVERIFY(texts.contains(QStringLiteral("Simulated HI14 (firmware 1.7.1)")));
         QVERIFY(texts.contains(QStringLiteral("Simulated HI14 (firmware 1.6.6)")));
+        QVERIFY(texts.contains(QStringLiteral("Simulated HEC495 compass")));
         bar.selectPort(PortChoice::serial(QStringLiteral("/dev/pts/99")));
         QCOMPARE(bar.selectedPort(), PortChoice::serial(QStringLiteral("/dev/pts/99")));
         bar.refreshPorts(); // a rescan keeps the choice
@@ -555,7 +562,7 @@ private Q_SLOTS:
 
         imudesk::sim::SimOptions options;
         QString error;
-        QVERIFY2(w.connectSimulated(options, 0, &error), qPrintable(error));
+        QVERIFY2(w.openLink(imudesk::device::LinkRequest::simulatedHipnuc(options, 0), &error), qPrintable(error));
         QTRY_VERIFY_WITH_TIMEOUT(ws->state() == imudesk::device::SessionState::Connected, 10000);
         QTRY_VERIFY(record->isEnabled());
         QSignalSpy stopped(controls, &imudesk::ui::RecordingControls::recordingStopped);

@@ -18,7 +18,10 @@ class HipnucSerialUi : public FamilyUi {
 public:
     bool accepts(const device::DeviceLink &link) const override;
     QString target(const device::LinkRequest &request) const override;
-    void decorate(DeviceWorkspace &ws, device::DeviceLink &link, const device::LinkRequest &request) const override;
+    void decorate(DeviceWorkspace &ws, device::DeviceLink &link, const device::LinkRequest &request) const override;    std::vector<SimulatedDevice> simulatedDevices() const override;
+    std::optional<device::LinkRequest> simulatedRequest(const PortChoice &choice,
+                                                        const SimulationSetup &setup) const override;
+    std::optional<PortChoice> simulatedChoice(const device::LinkRequest &request) const override;
 };
 
 // The Witlink HEC495 on a serial port: the compass dial, its settings and its calibration.
@@ -27,7 +30,10 @@ class Hec495SerialUi : public FamilyUi {
 public:
     bool accepts(const device::DeviceLink &link) const override;
     QString target(const device::LinkRequest &request) const override;
-    void decorate(DeviceWorkspace &ws, device::DeviceLink &link, const device::LinkRequest &request) const override;
+    void decorate(DeviceWorkspace &ws, device::DeviceLink &link, const device::LinkRequest &request) const override;    std::vector<SimulatedDevice> simulatedDevices() const override;
+    std::optional<device::LinkRequest> simulatedRequest(const PortChoice &choice,
+                                                        const SimulationSetup &setup) const override;
+    std::optional<PortChoice> simulatedChoice(const device::LinkRequest &request) const override;
 };
 
 // A Modbus RTU device: the register browser and the bus scan.

@@ -33,6 +33,32 @@ const FamilyUi *FamilyUiRegistry::forLink(const device::DeviceLink &link) const
     return nullptr;
 }
 
+std::vector<SimulatedDevice> FamilyUiRegistry::simulatedDevices() const
+{
+    std::vector<SimulatedDevice> all;
+    for (const auto &f : m_families)
+        for (SimulatedDevice &d : f->simulatedDevices())
+            all.push_back(std::move(d));
+    return all;
+}
+
+std::optional<device::LinkRequest> FamilyUiRegistry::simulatedRequest(const PortChoice &choice,
+                                                                      const SimulationSetup &setup) const
+{
+    for (const auto &f : m_families)
+        if (auto r = f->simulatedRequest(choice, setup))
+            return r;
+    return std::nullopt;
+}
+
+std::optional<PortChoice> FamilyUiRegistry::simulatedChoice(const device::LinkRequest &request) const
+{
+    for (const auto &f : m_families)
+        if (auto c = f->simulatedChoice(request))
+            return c;
+    return std::nullopt;
+}
+
 void registerBuiltInFamilies(FamilyUiRegistry &registry)
 {
     registry.add(std::make_unique<HipnucSerialUi>());

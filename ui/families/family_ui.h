@@ -11,15 +11,27 @@
 // core plug-in, one class of this interface and one registration line.
 #include "device/device_link.h"
 #include "device/link_opener.h"
+#include "sim/motion_model.h"
+#include "workspace/port_choice.h"
 
 #include <QString>
 
+#include <cstdint>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace imudesk::ui {
 
 class DeviceWorkspace;
+
+// How the window starts a simulated device: at the connection bar's baud (0: Auto), moving as
+// the window's motion, with a seed of its own (serial number and noise) for each device.
+struct SimulationSetup {
+    int baud = 0;
+    sim::Motion motion = sim::Motion::Static;
+    uint64_t seed = 1;
+};
 
 class FamilyUi {
 public:
@@ -34,6 +46,24 @@ public:
                         QString *error) const;
     // Adds the family's docks and tools to ws, which shows `link` already.
     virtual void decorate(DeviceWorkspace &ws, device::DeviceLink &link, const device::LinkRequest &request) const = 0;
+
+    // The simulated devices the family lists in the connection bar (default: none).
+    virtual std::vector<SimulatedDevice> simulatedDevices() const { return {}; }
+    // The request that opens a simulated device of this family's (those it lists, or another
+    // model it simulates, e.g. a choice saved earlier); nullopt when the choice is not its.
+    virtual std::optional<device::LinkRequest> simulatedRequest(const PortChoice &choice,
+                                                                const SimulationSetup &setup) const
+    {
+        (void)choice;
+        (void)setup;
+        return std::nullopt;
+    }
+    // The connection bar's entry for a simulated request of this family's; nullopt when not its.
+    virtual std::optional<PortChoice> simulatedChoice(const device::LinkRequest &request) const
+    {
+        (void)request;
+        return std::nullopt;
+    }
 };
 
 class FamilyUiRegistry {
@@ -43,6 +73,12 @@ public:
     // views every link has).
     const FamilyUi *forLink(const device::DeviceLink &link) const;
     bool empty() const { return m_families.empty(); }
+    // Every family's simulated devices, in registration order.
+    std::vector<SimulatedDevice> simulatedDevices() const;
+    // The first family's request for a simulated choice; nullopt when no family simulates it.
+    std::optional<device::LinkRequest> simulatedRequest(const PortChoice &choice, const SimulationSetup &setup) const;
+    // The connection bar's entry for a simulated request; nullopt when no family claims it.
+    std::optional<PortChoice> simulatedChoice(const device::LinkRequest &request) const;
 
 private:
     std::vector<std::unique_ptr<FamilyUi>> m_families;

@@ -20,6 +20,30 @@ QString Hec495SerialUi::target(const device::LinkRequest &request) const
     return request.simulate ? tr("Simulated HEC495") : tr("HEC495 on %1").arg(request.address);
 }
 
+namespace {
+const QString kModel = QStringLiteral("HEC495");
+} // namespace
+
+std::vector<SimulatedDevice> Hec495SerialUi::simulatedDevices() const
+{
+    return {{PortChoice::simulated(kModel, QString()), tr("Simulated HEC495 compass")}};
+}
+
+std::optional<device::LinkRequest> Hec495SerialUi::simulatedRequest(const PortChoice &choice,
+                                                                    const SimulationSetup &setup) const
+{
+    if (choice.kind != PortChoice::Kind::Simulated || choice.model != kModel)
+        return std::nullopt;
+    return device::LinkRequest::simulatedHec495(setup.motion);
+}
+
+std::optional<PortChoice> Hec495SerialUi::simulatedChoice(const device::LinkRequest &request) const
+{
+    if (!request.simulate || request.kind != device::LinkRequest::Kind::Serial || request.family != QLatin1String("hec495"))
+        return std::nullopt;
+    return PortChoice::simulated(kModel, QString());
+}
+
 void Hec495SerialUi::decorate(DeviceWorkspace &ws, device::DeviceLink &link, const device::LinkRequest &) const
 {
     auto *session = static_cast<device::Hec495Session *>(&link);

@@ -18,12 +18,56 @@ bool HipnucSerialUi::accepts(const device::DeviceLink &link) const
     return qobject_cast<const device::DeviceSession *>(&link) != nullptr;
 }
 
+namespace {
+
+// The simulated module's options (its model and firmware) of a simulated request.
+sim::SimOptions simulatorOf(const device::LinkRequest &request)
+{
+    const auto *options = std::any_cast<sim::SimOptions>(&request.simulator);
+    return options ? *options : sim::SimOptions{};
+}
+
+} // namespace
+
 QString HipnucSerialUi::target(const device::LinkRequest &request) const
 {
     if (!request.simulate)
         return request.address;
+    const sim::SimOptions options = simulatorOf(request);
     return tr("Simulated %1 (firmware %2)")
-        .arg(QString::fromStdString(request.hipnucSimulator.model), QString::fromStdString(request.hipnucSimulator.firmware));
+        .arg(QString::fromStdString(options.model), QString::fromStdString(options.firmware));
+}
+
+std::vector<SimulatedDevice> HipnucSerialUi::simulatedDevices() const
+{
+    std::vector<SimulatedDevice> devices;
+    for (const char *firmware : {"1.7.1", "1.6.6"}) {
+        const PortChoice choice = PortChoice::simulated(QStringLiteral("HI14"), QLatin1String(firmware));
+        devices.push_back({choice, tr("Simulated %1 (firmware %2)").arg(choice.model, choice.firmware)});
+    }
+    return devices;
+}
+
+std::optional<device::LinkRequest> HipnucSerialUi::simulatedRequest(const PortChoice &choice,
+                                                                    const SimulationSetup &setup) const
+{
+    // Every simulated HiPNUC module has a firmware version; the model is any the simulator knows.
+    if (choice.kind != PortChoice::Kind::Simulated || choice.firmware.isEmpty())
+        return std::nullopt;
+    sim::SimOptions options;
+    options.model = choice.model.toStdString();
+    options.firmware = choice.firmware.toStdString();
+    options.motion = setup.motion;
+    options.seed = setup.seed;
+    return device::LinkRequest::simulatedHipnuc(options, setup.baud);
+}
+
+std::optional<PortChoice> HipnucSerialUi::simulatedChoice(const device::LinkRequest &request) const
+{
+    if (!request.simulate || request.kind != device::LinkRequest::Kind::Serial || request.family != QLatin1String("hipnuc"))
+        return std::nullopt;
+    const sim::SimOptions options = simulatorOf(request);
+    return PortChoice::simulated(QString::fromStdString(options.model), QString::fromStdString(options.firmware));
 }
 
 namespace {

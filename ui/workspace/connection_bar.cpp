@@ -1,6 +1,6 @@
 #include "workspace/connection_bar.h"
 
-#include "device/serial_family_scan.h"
+#include "device/serial_family.h"
 
 #include <QAbstractItemView>
 #include <QComboBox>
@@ -20,16 +20,6 @@ namespace imudesk::ui {
 namespace {
 
 constexpr int kKeyRole = Qt::UserRole;
-
-const std::vector<PortChoice> &simulatedChoices()
-{
-    static const std::vector<PortChoice> choices = {
-        PortChoice::simulated(QStringLiteral("HI14"), QStringLiteral("1.7.1")),
-        PortChoice::simulated(QStringLiteral("HI14"), QStringLiteral("1.6.6")),
-        PortChoice::simulated(QStringLiteral("HEC495"), QString()),
-    };
-    return choices;
-}
 
 bool isBusy(device::SessionState s)
 {
@@ -64,7 +54,7 @@ ConnectionBar::ConnectionBar(QWidget *parent) : QWidget(parent)
     m_baudCombo->setObjectName(QStringLiteral("baudCombo"));
     m_baudLabel->setBuddy(m_baudCombo);
     m_baudCombo->addItem(QString(), 0);
-    std::vector<int> rates = device::SerialFamilyScan::defaultBauds();
+    std::vector<int> rates = device::serialDetectionBauds();
     std::sort(rates.begin(), rates.end());
     for (int rate : rates)
         m_baudCombo->addItem(QString::number(rate), rate);
@@ -255,8 +245,11 @@ QString ConnectionBar::portText(const PortChoice &choice) const
 {
     switch (choice.kind) {
     case PortChoice::Kind::Simulated:
+        for (const auto &d : m_simulated)
+            if (d.choice == choice)
+                return d.text;
         if (choice.firmware.isEmpty())
-            return tr("Simulated %1 compass").arg(choice.model);
+            return tr("Simulated %1").arg(choice.model);
         return tr("Simulated %1 (firmware %2)").arg(choice.model, choice.firmware);
     case PortChoice::Kind::Serial: {
         for (const auto &e : m_serialPorts)
@@ -269,9 +262,17 @@ QString ConnectionBar::portText(const PortChoice &choice) const
     return QString();
 }
 
+void ConnectionBar::setSimulatedDevices(std::function<std::vector<SimulatedDevice>()> devices)
+{
+    m_simulatedDevices = std::move(devices);
+    rebuildPortCombo();
+}
+
 void ConnectionBar::rebuildPortCombo()
 {
     const QString current = m_portCombo->currentData(kKeyRole).toString();
+    // Asked each time: their texts follow the language.
+    m_simulated = m_simulatedDevices ? m_simulatedDevices() : std::vector<SimulatedDevice>{};
     const QSignalBlocker blocker(m_portCombo);
     m_portCombo->clear();
     auto add = [this](const PortChoice &choice, const QString &toolTip) {
@@ -292,8 +293,8 @@ void ConnectionBar::rebuildPortCombo()
     }
     m_portCombo->insertSeparator(m_portCombo->count());
     const QString simTip = tr("A simulated device on a pseudo-terminal, driven exactly like hardware");
-    for (const auto &c : simulatedChoices())
-        add(c, simTip);
+    for (const auto &d : m_simulated)
+        add(d.choice, simTip);
     for (const auto &c : m_extraPorts)
         if (c.kind == PortChoice::Kind::Simulated)
             add(c, simTip);

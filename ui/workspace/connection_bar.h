@@ -8,6 +8,9 @@
 #include <QTimer>
 #include <QWidget>
 
+#include <functional>
+#include <vector>
+
 class QComboBox;
 class QLabel;
 class QPushButton;
@@ -25,6 +28,9 @@ public:
     PortChoice selectedPort() const;
     // Selects `choice`, adding it to the list when it is not there (e.g. a path given on the command line).
     void selectPort(const PortChoice &choice);
+    // The simulated devices listed below the serial ports (the family plug-ins'), asked for
+    // whenever the list is rebuilt.
+    void setSimulatedDevices(std::function<std::vector<SimulatedDevice>()> devices);
     int selectedBaud() const; // 0 = auto-detect
     void selectBaud(int baud);
     // Enables the choosers and flips the button between Connect and Disconnect.
@@ -76,6 +82,8 @@ private:
     QTimer m_scanTimer;
     std::vector<PortEntry> m_serialPorts;
     std::vector<PortChoice> m_extraPorts; // chosen programmatically, not found by the scan
+    std::function<std::vector<SimulatedDevice>()> m_simulatedDevices;
+    std::vector<SimulatedDevice> m_simulated;
     device::SessionState m_state = device::SessionState::Closed;
 };
 

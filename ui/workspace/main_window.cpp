@@ -12,6 +12,8 @@
 #include "workspace/console_widget.h"
 #include "workspace/device_workspace.h"
 
+#include "device/serial_family.h"
+
 #include <QAction>
 #include <QActionGroup>
 #include <QScreen>
@@ -50,6 +52,7 @@ MainWindow::MainWindow(const WindowSettings &settings, QWidget *parent) : QMainW
 
     // Top: the connection bar, acting on the current workspace.
     m_connectionBar = new ConnectionBar(this);
+    m_connectionBar->setSimulatedDevices([this] { return m_families->simulatedDevices(); });
     m_connectionBar->setObjectName(QStringLiteral("connectionBar"));
     auto *toolBar = new QToolBar(this);
     toolBar->setObjectName(QStringLiteral("connectionToolBar"));
@@ -274,14 +277,15 @@ void MainWindow::connectPort(const QString &port, int baud)
     m_connectionBar->selectPort(PortChoice::serial(port));
     m_connectionBar->selectBaud(baud);
     if (baud != 0) {
-        // A rate given: a HiPNUC module there (the HEC495 is found with Auto or chosen by name).
+        // A rate given: the first serial family of the detection order is opened at it (the
+        // others are found with Auto, or chosen in the connection bar's list of devices).
         QString error;
-        if (!openLink(device::LinkRequest::serial(port, baud, device::SerialFamily::Hipnuc), &error))
+        if (!openLink(device::LinkRequest::serial(port, baud, device::serialFamilies().front()->id()), &error))
             presentError(error);
         return;
     }
-    // Baud "Auto": the port is opened once; the detection tells a HiPNUC module from a HEC495
-    // compass and finds the rate (device::LinkOpener), then the family's session takes the port.
+    // Baud "Auto": the port is opened once; the detection (device::LinkOpener) tells which of
+    // device::serialFamilies() is there and finds the rate, then the family's session takes the port.
     QPointer<DeviceWorkspace> ws = freeWorkspace();
     m_connectionBar->setSessionState(SessionState::Detecting);
     m_connectAction->setEnabled(false);
@@ -318,13 +322,21 @@ void MainWindow::connectDetected(QPointer<DeviceWorkspace> ws, device::LinkOpene
     updateActions();
 }
 
-bool MainWindow::connectSimulated(const sim::SimOptions &options, int baud, QString *error)
+bool MainWindow::connectSimulated(const PortChoice &choice, int baud, QString *error)
 {
-    const QString model = QString::fromStdString(options.model);
-    const QString firmware = QString::fromStdString(options.firmware);
-    m_connectionBar->selectPort(PortChoice::simulated(model, firmware));
-    m_connectionBar->selectBaud(baud);
-    return openLink(device::LinkRequest::simulatedHipnuc(options, baud), error);
+    SimulationSetup setup;
+    setup.baud = baud;
+    setup.motion = m_simMotion;
+    // Each simulated device its own serial number (and noise): two tabs on two simulated HI14
+    // are two devices. The demo's module (--demo, --simulate) keeps seed 1.
+    setup.seed = m_nextSimulatorSeed++;
+    std::optional<device::LinkRequest> request = m_families->simulatedRequest(choice, setup);
+    if (!request) {
+        if (error)
+            *error = tr("No device family simulates \"%1\".").arg(choice.model);
+        return false;
+    }
+    return openLink(std::move(*request), error);
 }
 
 device::LinkRequest MainWindow::withPreferences(device::LinkRequest request) const
@@ -336,15 +348,21 @@ device::LinkRequest MainWindow::withPreferences(device::LinkRequest request) con
     return request;
 }
 
-bool MainWindow::openLink(device::LinkRequest request, QString *error)
+void MainWindow::setFamilies(const FamilyUiRegistry *families)
 {
-    return openLinkIn(*freeWorkspace(), *m_families, withPreferences(std::move(request)), error);
+    m_families = families ? families : &m_builtInFamilies;
+    m_connectionBar->setSimulatedDevices([this] { return m_families->simulatedDevices(); });
 }
 
-bool MainWindow::connectSimulatedHec495(QString *error)
+bool MainWindow::openLink(device::LinkRequest request, QString *error)
 {
-    m_connectionBar->selectPort(PortChoice::simulated(QStringLiteral("HEC495"), QString()));
-    return openLink(device::LinkRequest::simulatedHec495(m_simMotion), error);
+    // A simulated serial device shows in the connection bar as the entry that opens it again.
+    if (request.simulate && request.kind == device::LinkRequest::Kind::Serial)
+        if (const std::optional<PortChoice> choice = m_families->simulatedChoice(request)) {
+            m_connectionBar->selectPort(*choice);
+            m_connectionBar->selectBaud(request.baud);
+        }
+    return openLinkIn(*freeWorkspace(), *m_families, withPreferences(std::move(request)), error);
 }
 
 void MainWindow::disconnectDevice()
@@ -360,21 +378,8 @@ void MainWindow::connectSelected()
     switch (choice.kind) {
     case PortChoice::Kind::Serial: connectPort(choice.port, baud); break;
     case PortChoice::Kind::Simulated: {
-        if (choice.model == QLatin1String("HEC495")) {
-            QString error;
-            if (!connectSimulatedHec495(&error))
-                presentError(error);
-            break;
-        }
-        sim::SimOptions options;
-        options.model = choice.model.toStdString();
-        options.firmware = choice.firmware.toStdString();
-        options.motion = m_simMotion;
-        // Each simulated module its own serial number (and noise): two tabs on two simulated
-        // HI14 are two devices. The demo's module (--demo, --simulate) keeps seed 1.
-        options.seed = m_nextSimulatorSeed++;
         QString error;
-        if (!connectSimulated(options, baud, &error))
+        if (!connectSimulated(choice, baud, &error))
             presentError(error);
         break;
     }
@@ -461,8 +466,9 @@ void MainWindow::presentError(const QString &message)
 void MainWindow::showAbout()
 {
     QMessageBox::about(this, tr("About ImuDesk"),
-                       tr("<h3>ImuDesk %1</h3><p>A bench tool for HiPNUC IMU modules: live values, the ASCII "
-                          "command console and simulated devices.</p><p>Built with Qt %2.</p>")
+                       tr("<h3>ImuDesk %1</h3><p>A bench tool for IMU, AHRS and compass modules on serial, RS-485 "
+                          "Modbus and CAN links: live values and charts, settings, calibration, firmware "
+                          "updates, recordings and simulated devices.</p><p>Built with Qt %2.</p>")
                            .arg(QCoreApplication::applicationVersion(), QString::fromLatin1(qVersion())));
 }
 
@@ -640,7 +646,7 @@ void MainWindow::createActions()
     m_versionAction = new QAction(this);
     m_versionAction->setObjectName(QStringLiteral("versionAction"));
     connect(m_versionAction, &QAction::triggered, this, [this] {
-        // The family's "who are you" (HiPNUC: LOG VERSION), shown in the console with its answer.
+        // The family's "who are you", shown in the console with its answer.
         if (DeviceWorkspace *ws = currentWorkspace())
             ws->runTool(DeviceWorkspace::LinkTool::ReadVersion, this);
     });
@@ -649,7 +655,7 @@ void MainWindow::createActions()
     m_takeSampleAction->setObjectName(QStringLiteral("takeSampleAction"));
     m_takeSampleAction->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_T));
     connect(m_takeSampleAction, &QAction::triggered, this, [this] {
-        // One frame on request (HiPNUC: LOG <MSG> ONMARK ONCE), shown in the console.
+        // One frame on request, shown in the console.
         if (DeviceWorkspace *ws = currentWorkspace())
             ws->runTool(DeviceWorkspace::LinkTool::TakeSample, this);
     });

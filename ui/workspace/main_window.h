@@ -5,7 +5,7 @@
 #include "device/device_link.h"
 #include "device/link_opener.h"
 #include "families/family_ui.h"
-#include "sim/hipnuc_simulator.h"
+#include "sim/motion_model.h"
 #include "workspace/preferences.h"
 #include "workspace/tool_host.h"
 #include "workspace/window_settings.h"
@@ -59,7 +59,9 @@ public:
 
     // Connect the current workspace (a new tab is opened when it is busy).
     void connectPort(const QString &port, int baud);
-    bool connectSimulated(const sim::SimOptions &options, int baud, QString *error = nullptr);
+    // A simulated device of the connection bar's list (a family plug-in's), at baud (0: Auto),
+    // with a serial number and noise of its own.
+    bool connectSimulated(const PortChoice &choice, int baud, QString *error = nullptr);
     void disconnectDevice();
     void setSimulatedMotion(sim::Motion motion) { m_simMotion = motion; }
     sim::Motion simulatedMotion() const override { return m_simMotion; }
@@ -68,14 +70,12 @@ public:
     bool openLink(device::LinkRequest request, QString *error) override;
     // The family UI plug-ins the window shows links with (app/gui/main.cpp registers them);
     // without this call, the built-in ones. The registry outlives the window.
-    void setFamilies(const FamilyUiRegistry *families) { m_families = families ? families : &m_builtInFamilies; }
+    void setFamilies(const FamilyUiRegistry *families);
     // Reports a problem to the user (a non-blocking message box, or the error presenter).
     void showError(const QString &message) override { presentError(message); }
     QWidget *dialogParent() override { return this; }
     void arrangeForConfiguration() override { applyLayoutPreset(DeviceWorkspace::LayoutPreset::Configure); }
     ToolActions *tools() const { return m_tools; }
-    // Connects a simulated HEC495 compass (the connection bar's "Simulated HEC495").
-    bool connectSimulatedHec495(QString *error = nullptr);
 
     // Workspaces (tabs).
     DeviceWorkspace *newWorkspace();

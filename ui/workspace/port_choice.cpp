@@ -20,7 +20,7 @@ PortChoice PortChoice::fromKey(const QString &key)
         return serial(key.mid(7));
     if (key.startsWith(QLatin1String("sim:"))) {
         const QStringList parts = key.mid(4).split(QLatin1Char(':'));
-        if (parts.size() == 2 && !parts[0].isEmpty()) // no firmware: the HEC495 compass
+        if (parts.size() == 2 && !parts[0].isEmpty()) // no firmware: a device without versions
             return simulated(parts[0], parts[1]);
     }
     return {};

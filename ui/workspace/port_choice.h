@@ -25,4 +25,10 @@ struct PortChoice {
     friend bool operator==(const PortChoice &, const PortChoice &) = default;
 };
 
+// A simulated device a family offers in the connection bar (FamilyUi::simulatedDevices).
+struct SimulatedDevice {
+    PortChoice choice; // PortChoice::simulated(model, firmware)
+    QString text;      // the entry's text, translated ("Simulated HEC495 compass")
+};
+
 } // namespace imudesk::ui

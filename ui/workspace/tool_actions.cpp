@@ -51,8 +51,8 @@ ToolActions::ToolActions(ToolHost *host, QObject *parent) : QObject(parent), m_h
     m_can = make("connectCanAction");
     m_can->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_N));
     connect(m_can, &QAction::triggered, this, &ToolActions::connectCan);
-    m_scanModbus = make("scanModbusAction");
-    connect(m_scanModbus, &QAction::triggered, this, linkTool(Tool::ScanBus));
+    m_scanBus = make("scanBusAction");
+    connect(m_scanBus, &QAction::triggered, this, linkTool(Tool::ScanBus));
     m_configuration = make("configurationAction");
     m_configuration->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_G));
     connect(m_configuration, &QAction::triggered, this, &ToolActions::showConfiguration);
@@ -92,7 +92,7 @@ void ToolActions::addToMenus(QMenu *fileMenu, QMenu *deviceMenu, QMenu *calibrat
     fileMenu->insertActions(firstFileEntry, {m_openCapture, m_importCsv, m_export});
     fileMenu->insertSeparator(firstFileEntry);
     deviceMenu->addSeparator();
-    deviceMenu->addActions({m_modbus, m_can, m_scanModbus});
+    deviceMenu->addActions({m_modbus, m_can, m_scanBus});
     deviceMenu->addSeparator();
     deviceMenu->addActions({m_configuration, m_profiles, m_record, m_firmware});
     m_calibrateMenu = calibrateMenu;
@@ -118,9 +118,9 @@ void ToolActions::retranslate()
     m_modbus->setText(tr("Connect over &Modbus RTU…"));
     m_modbus->setStatusTip(tr("Poll a module or compass on an RS-485 bus"));
     m_can->setText(tr("Connect over C&AN…"));
-    m_can->setStatusTip(tr("Listen to and configure a J1939, CANopen or HEC495 device on a CAN bus"));
-    m_scanModbus->setText(tr("&Scan Modbus bus…"));
-    m_scanModbus->setStatusTip(tr("Find the node IDs that answer on the bus"));
+    m_can->setStatusTip(tr("Listen to and configure a device on a CAN bus (J1939 or CANopen)"));
+    m_scanBus->setText(tr("&Scan the bus…"));
+    m_scanBus->setStatusTip(tr("Find the node IDs that answer on the bus"));
     m_configuration->setText(tr("Con&figuration"));
     m_configuration->setStatusTip(tr("Every setting of the connected module: read, edit, apply, save"));
     m_profiles->setText(tr("&Profiles…"));
@@ -128,7 +128,7 @@ void ToolActions::retranslate()
     m_calculator->setText(tr("Output-rate &calculator…"));
     m_calculator->setStatusTip(tr("Bytes per second of the chosen outputs against the link's capacity"));
     m_firmware->setText(tr("&Update firmware…"));
-    m_firmware->setStatusTip(tr("Write a new firmware image to the module: over its serial port, verified by reading it back, or over CANopen, verified by the bootloader's CRC"));
+    m_firmware->setStatusTip(tr("Write a new firmware image to the module over its serial port or its CAN bus, and verify it"));
     m_record->setText(tr("&Record"));
     m_record->setStatusTip(tr("Record this device to a capture file; the recording panel shows the progress and Stop"));
     m_magCal->setText(tr("&Magnetometer…"));
@@ -137,8 +137,8 @@ void ToolActions::retranslate()
     m_gyroCal->setStatusTip(tr("Turn the module a known angle about Z to correct the gyro's scale (CONFIG USRCAL)"));
     m_attitudeReset->setText(tr("&Attitude reset / level…"));
     m_attitudeReset->setStatusTip(tr("Zero the heading or level the module (ATT RST), after checking that it is still"));
-    m_compassCal->setText(tr("HEC495 &compass…"));
-    m_compassCal->setStatusTip(tr("The HEC495's own calibration methods, with the target poses to turn it to"));
+    m_compassCal->setText(tr("&Compass calibration…"));
+    m_compassCal->setStatusTip(tr("The compass's own calibration methods, with the target poses to turn it to"));
     m_calHistory->setText(tr("Calibration &history…"));
     m_calHistory->setStatusTip(tr("Every finished calibration run per device: metrics, samples, PDF report"));
     if (m_toolsMenu)
@@ -159,7 +159,7 @@ void ToolActions::update(const DeviceWorkspace *ws)
     m_openCapture->setEnabled(!busy);
     m_importCsv->setEnabled(!busy);
     using Tool = DeviceWorkspace::LinkTool;
-    m_scanModbus->setEnabled(connected && ws->offersTool(Tool::ScanBus));
+    m_scanBus->setEnabled(connected && ws->offersTool(Tool::ScanBus));
     m_configuration->setEnabled(settings);
     m_profiles->setEnabled(connected && ws->offersTool(Tool::Profiles));
     m_record->setEnabled(caps.testFlag(C::Recording));

@@ -35,7 +35,7 @@ public:
     QAction *analyzeAction() const { return m_analyze; }
     QAction *modbusAction() const { return m_modbus; }
     QAction *canAction() const { return m_can; }
-    QAction *scanModbusAction() const { return m_scanModbus; }
+    QAction *scanBusAction() const { return m_scanBus; }
     QAction *configurationAction() const { return m_configuration; }
     QAction *profilesAction() const { return m_profiles; }
     QAction *calculatorAction() const { return m_calculator; }
@@ -75,7 +75,7 @@ private:
     QAction *m_analyze = nullptr;
     QAction *m_modbus = nullptr;
     QAction *m_can = nullptr;
-    QAction *m_scanModbus = nullptr;
+    QAction *m_scanBus = nullptr;
     QAction *m_configuration = nullptr;
     QAction *m_profiles = nullptr;
     QAction *m_calculator = nullptr;

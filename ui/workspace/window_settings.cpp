@@ -1,6 +1,6 @@
 #include "workspace/window_settings.h"
 
-#include "device/serial_family_scan.h"
+#include "device/serial_family.h"
 
 #include <QSettings>
 
@@ -24,7 +24,7 @@ void WindowSettings::load(QSettings &settings)
     port = settings.value(key(kPortKey)).toString();
     bool ok = false;
     const int b = settings.value(key(kBaudKey), 0).toInt(&ok);
-    const auto &rates = device::SerialFamilyScan::defaultBauds();
+    const auto &rates = device::serialDetectionBauds();
     baud = ok && std::find(rates.begin(), rates.end(), b) != rates.end() ? b : 0;
 }
 
