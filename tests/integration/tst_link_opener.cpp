@@ -14,6 +14,7 @@
 #include <QSignalSpy>
 #include <QTest>
 
+#include <algorithm>
 #include <atomic>
 #include <memory>
 
@@ -140,6 +141,55 @@ private Q_SLOTS:
                      && message.contains(QLatin1String("wiring")),
                  qPrintable(message));
         QCOMPARE(opens->load(), 1);
+    }
+
+    // Every registered serial family (device::serialFamilies), the same checks: its simulated
+    // device, started through the family's own plug-in, is found by the detection at Auto as
+    // that family, at a rate the family lists, and the family's session connects and identifies.
+    void everySerialFamilyIsFoundByTheDetection_data()
+    {
+        QTest::addColumn<QString>("family");
+        for (const device::SerialFamilyKind *f : device::serialFamilies())
+            QTest::newRow(qPrintable(f->id())) << f->id();
+    }
+    void everySerialFamilyIsFoundByTheDetection()
+    {
+        QFETCH(QString, family);
+        const device::SerialFamilyKind *kind = device::serialFamily(family);
+        QVERIFY(kind);
+        QVERIFY(!kind->displayName().isEmpty());
+        LinkRequest simulated = LinkRequest::simulatedSerial(family, sim::Motion::Static);
+        QString error;
+        QVERIFY2(kind->startSimulator(simulated, &error), qPrintable(error));
+        QVERIFY(simulated.keepAlive);
+        LinkOpener opener;
+        QSignalSpy ready(&opener, &LinkOpener::ready);
+        QSignalSpy failed(&opener, &LinkOpener::failed);
+        LinkRequest request = LinkRequest::serial(simulated.address);
+        request.autoReconnect = false;
+        opener.open(request);
+        QTRY_VERIFY_WITH_TIMEOUT(!ready.isEmpty() || !failed.isEmpty(), 30000);
+        QVERIFY2(failed.isEmpty(), qPrintable(failed.value(0).value(0).toString()));
+        QCOMPARE(opener.request().family, family);
+        const std::vector<int> rates = kind->bauds();
+        QVERIFY(std::find(rates.begin(), rates.end(), opener.request().baud) != rates.end());
+        LinkOpener::Opened link = opener.take();
+        QSignalSpy identity(link.link.get(), &device::DeviceLink::identityChanged);
+        link.start();
+        QTRY_COMPARE_WITH_TIMEOUT(link.link->state(), SessionState::Connected, 15000);
+        QTRY_VERIFY_WITH_TIMEOUT(!identity.isEmpty(), 10000);
+        link.link.reset();
+    }
+
+    // An unknown family's name is refused with the name in the message, and nothing opens.
+    void unknownFamilyIsRefused()
+    {
+        LinkRequest request = LinkRequest::serial(QStringLiteral("/dev/imudesk-no-such-port"), 9600,
+                                                  QStringLiteral("no-such-family"));
+        QString error;
+        const LinkOpener::Opened o = LinkOpener::openNow(request, &error);
+        QVERIFY(!o.link);
+        QVERIFY2(error.contains(QLatin1String("no-such-family")), qPrintable(error));
     }
 
     // A port that does not exist: the serial port's own advice, and no link.
