@@ -2227,12 +2227,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
     <message>
         <location line="+6" />
         <location line="+9" />
-        <location line="+211" />
+        <location line="+217" />
         <source>A hard-iron-only fit (soft iron kept from before) is possible.</source>
         <translation>可以只拟合硬磁（沿用之前的软磁参数）。</translation>
     </message>
     <message>
-        <location line="-214" />
+        <location line="-220" />
         <source>No ellipsoid fits these samples, which cover only part of the sphere. %1, then fit again.</source>
         <translation>这些样本只覆盖了球面的一部分，没有椭球能拟合它们。%1，然后重新拟合。</translation>
     </message>
@@ -2267,7 +2267,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>模块水平时的预测航向误差 %1 deg 超过 %2 deg（硬铁 +-%3 µT）</translation>
     </message>
     <message>
-        <location line="+9" />
+        <location line="+7" />
+        <source>the heading error of a level module stays below %1 deg only 19 times in 20 (over %2 deg)</source>
+        <translation>模块水平时的航向误差只有 20 次中 19 次低于 %1 deg（超过 %2 deg）</translation>
+    </message>
+    <message>
+        <location line="+8" />
         <source>field strength %1 µT is outside the normal %2..%3 µT: move away from magnetic objects</source>
         <translation>磁场强度 %1 µT 超出正常范围 %2..%3 µT：请远离磁性物体</translation>
     </message>
@@ -2292,7 +2297,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>方向已覆盖，但样本太少或离散过大（相对拟合 %1 µT RMS）：请远离铁器和电子设备，缓慢均匀地旋转，采集更多样本。</translation>
     </message>
     <message>
-        <location line="-139" />
+        <location line="-145" />
         <source>Only %1 usable samples; the 2-D fit needs at least %2. Turn the module a full circle.</source>
         <translation>仅有 %1 个可用样本；二维拟合至少需要 %2 个。请将模块转动一整圈。</translation>
     </message>
@@ -2313,7 +2318,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>软磁比例 %1..%2 超出 %3..%4（模块附近很近处有磁体或铁质部件）</translation>
     </message>
     <message>
-        <location line="+22" />
+        <location line="+28" />
         <source>only %1 % of the directions are covered</source>
         <translation>方向覆盖率仅为 %1 %</translation>
     </message>

@@ -2227,12 +2227,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
     <message>
         <location line="+6" />
         <location line="+9" />
-        <location line="+211" />
+        <location line="+217" />
         <source>A hard-iron-only fit (soft iron kept from before) is possible.</source>
         <translation>可以只擬合硬鐵（保留先前的軟鐵參數）。</translation>
     </message>
     <message>
-        <location line="-214" />
+        <location line="-220" />
         <source>No ellipsoid fits these samples, which cover only part of the sphere. %1, then fit again.</source>
         <translation>這些樣本只覆蓋了球面的一部分，沒有橢球能擬合它們。%1，然後重新擬合。</translation>
     </message>
@@ -2267,7 +2267,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>模組水平時的預測航向誤差 %1 deg 超過 %2 deg（硬鐵 +-%3 µT）</translation>
     </message>
     <message>
-        <location line="+9" />
+        <location line="+7" />
+        <source>the heading error of a level module stays below %1 deg only 19 times in 20 (over %2 deg)</source>
+        <translation>模組水平時的航向誤差只有 20 次中 19 次低於 %1 deg（超過 %2 deg）</translation>
+    </message>
+    <message>
+        <location line="+8" />
         <source>field strength %1 µT is outside the normal %2..%3 µT: move away from magnetic objects</source>
         <translation>磁場強度 %1 µT 超出正常範圍 %2..%3 µT：請遠離磁性物體</translation>
     </message>
@@ -2292,7 +2297,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>方向已覆蓋，但樣本太少或離散過大（相對擬合 %1 µT RMS）：請遠離鐵器和電子設備，緩慢均勻地旋轉，擷取更多樣本。</translation>
     </message>
     <message>
-        <location line="-139" />
+        <location line="-145" />
         <source>Only %1 usable samples; the 2-D fit needs at least %2. Turn the module a full circle.</source>
         <translation>僅有 %1 個可用樣本；二維擬合至少需要 %2 個。請將模組轉動一整圈。</translation>
     </message>
@@ -2313,7 +2318,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>軟鐵縮放係數 %1..%2 超出 %3..%4（有磁鐵或鐵件非常靠近模組）</translation>
     </message>
     <message>
-        <location line="+22" />
+        <location line="+28" />
         <source>only %1 % of the directions are covered</source>
         <translation>方向僅覆蓋 %1 %</translation>
     </message>

@@ -279,6 +279,12 @@ void MagCalibrator::judge(MagCalResult &r, const std::vector<double> &residualsU
                      .arg(predicted, 0, 'f', 2)
                      .arg(kWarnHeadingErrorDeg, 0, 'f', 1)
                      .arg(r.hardIronSigmaUt, 0, 'f', 2);
+    // The 68 % bound within the limit, but the 95 % bound more than twice it: one fit in twenty
+    // of such data would be off by more than that.
+    else if (const double p95 = r.predictedHeadingError95Deg; std::isfinite(p95) && p95 > 2 * kWarnHeadingErrorDeg)
+        warns << tr("the heading error of a level module stays below %1 deg only 19 times in 20 (over %2 deg)")
+                     .arg(p95, 0, 'f', 2)
+                     .arg(2 * kWarnHeadingErrorDeg, 0, 'f', 1);
     // A full fit's accuracy says what its coverage is worth; the other fits keep the coverage warning.
     if (!full && r.coveragePct < kWarnCoveragePct)
         warns << tr("only %1 % of the directions are covered").arg(r.coveragePct, 0, 'f', 0);

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 
 namespace imudesk::calib {
 
@@ -95,6 +96,8 @@ bool covariance(const std::vector<Vector9d> &rows, const std::vector<double> &re
 // splitmix64 with Box-Muller: the same draws on every platform.
 class Normal {
 public:
+    Normal() = default;
+    explicit Normal(uint64_t seed) : m_state(seed) {}
     double next()
     {
         if (m_haveSpare) {
@@ -121,6 +124,23 @@ private:
     double m_spare = 0;
     bool m_haveSpare = false;
 };
+
+// FNV-1a over the samples' bits.
+uint64_t seedOf(const std::vector<Eigen::Vector3d> &points)
+{
+    uint64_t h = 0xCBF29CE484222325ull;
+    for (const auto &p : points)
+        for (int i = 0; i < 3; ++i) {
+            uint64_t bits;
+            const double v = p[i];
+            std::memcpy(&bits, &v, sizeof bits);
+            for (int b = 0; b < 8; ++b) {
+                h ^= (bits >> (8 * b)) & 0xFF;
+                h *= 0x100000001B3ull;
+            }
+        }
+    return h;
+}
 
 MagFitUncertainty::Figures singularFigures()
 {
@@ -265,7 +285,11 @@ MagFitUncertainty::Figures MagFitUncertainty::resampledEllipsoid(const std::vect
     // The fit took 9 degrees of freedom (10 with the radius) out of the residuals.
     const double sigma = std::sqrt(sumSq / double(clean.size() - kParams - 1));
 
-    Normal normal;
+    // The draws are seeded by the samples: the same data give the same figures, and other data
+    // other draws. (One fixed sequence for every data set made the replicates' errors of every
+    // fit of one geometry err together: the 68 % bound then held 53 % of the time on one
+    // coverage and 75 % on another.)
+    Normal normal(seedOf(points));
     std::vector<double> headings, hiSq, siSq;
     std::vector<Eigen::Vector3d> noisy(clean.size());
     const Eigen::Matrix3d shape = e.softIron();

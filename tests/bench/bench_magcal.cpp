@@ -14,12 +14,18 @@
 // bands (any yaw, roll and pitch within +-X). Per trial the fit's predicted heading error
 // (level module) is set against the true one over the same level turn, with the linear
 // covariance of the same fit as the baseline, and with an "oracle" that knows each case's
-// true median error (but not the trial's own geometry or noise). Goals: no trial with a true
-// error above 1 deg passes; the predicted hard-iron sigma follows the true RMS within a
+// true median error (but not the trial's own geometry or noise). Goals: at most two passes in
+// a thousand have a true error above 1 deg (twice the pass limit; a pass needs the 68 % bound
+// within 0.5 deg and the 95 % bound within 1 deg, so calibrated bounds let a few through in
+// thousands of trials: none can be promised), printed beside what the baseline would pass; the predicted hard-iron sigma follows the true RMS within a
 // factor of 2 wherever the fit does not run away; the predicted bounds are calibrated: in
 // every case the true error is below the predicted 68 % bound in 60-76 % of the fits given to
 // the user and below the predicted 95 % bound in >= 90 % (a refused fit comes with no bound to
-// trust; cases where fewer than 20 % of the trials were given are printed, not judged). (A "within a factor of 2 of the trial's own
+// trust; cases where fewer than 20 % of the trials were given are printed, not judged). The
+// sweep runs --sweep-trials trials per case (400): a share of a perfectly calibrated 68 %
+// bound over n trials scatters by sqrt(0.68 * 0.32 / n), 4.7 points at 100 and 2.3 at 400, and
+// with a dozen cases judged at 100 trials one of them would leave 60-76 % by chance alone
+// two times in three; at 400 about once in seventy. (A "within a factor of 2 of the trial's own
 // error" target is printed, x2, but not judged: one draw of noise gives one error, and on
 // part of the sphere that error varies so much from draw to draw that even the oracle, which
 // knows the case's true median, reaches only 54-65 % there.)
@@ -27,7 +33,7 @@
 // turntable doing two turns clockwise and two counter-clockwise) and feeds its HI91
 // frames, with the device's own timestamps, to calib::GyroScaleRun.
 //
-//   bench_magcal [--trials N] [--seed N]
+//   bench_magcal [--trials N] [--sweep-trials N] [--seed N]
 //
 // Prints every figure with its target and PASS/FAIL; exit status 1 when one misses, 2 on
 // bad arguments.
@@ -408,7 +414,7 @@ void coverageSweep(uint64_t seed, int trials)
     std::printf("%-19s %7s %7s %7s | %4s %4s | %4s %6s %6s | %7s %7s %7s | %6s %6s | %4s %4s %4s %4s %4s %6s\n", "case",
                 "pred", "true", "trueP95", "<68", "<95", "x2", "oracle", "linear", "HI", "HIpred", "HIlin", "SI", "SIpred",
                 "pass", "warn", "ref", "fail", ">1ok", "lin>1ok");
-    int within = 0, withinLinear = 0, withinOracle = 0, counted = 0, badPass = 0;
+    int within = 0, withinLinear = 0, withinOracle = 0, counted = 0, badPass = 0, badPassLinear = 0, passes = 0;
     double worstLow = 1e9, worstHigh = 0;
     double below68Low = 100, below68High = 0, below95Low = 100;
     const int kMinOffered = std::max(10, trials / 5);
@@ -494,6 +500,8 @@ void coverageSweep(uint64_t seed, int trials)
         withinOracle += wo;
         counted += int(truth.size());
         badPass += bad;
+        badPassLinear += badLinear;
+        passes += verdicts[int(calib::MagVerdict::Pass)];
         if (std::strcmp(c.name, "full, N=300") == 0)
             fullPred = median(pred);
         // Where the fit stays near the truth (not the runaway fits of a 25 % cap or a narrow
@@ -507,7 +515,9 @@ void coverageSweep(uint64_t seed, int trials)
     std::printf("all cases: prediction within x2 of the true error in %.1f %% of %d trials (oracle %.1f %%, linear %.1f %%)\n",
                 100 * within / all, counted, 100 * withinOracle / all, 100 * withinLinear / all);
     report("coverage sweep: full sphere N=300, predicted heading error", fullPred, "deg", "<", 0.5);
-    report("coverage sweep: trials with a true error > 1 deg given pass", badPass, "", "<=", 0);
+    std::printf("passes with a true error > 1 deg: %d of %d passes (baseline: %d)\n", badPass, passes, badPassLinear);
+    report("coverage sweep: passes with a true error > 1 deg, per 1000", 1000.0 * badPass / std::max(passes, 1), "",
+           "<=", 2.0);
     report("coverage sweep: predicted/true hard-iron RMS, lowest", worstLow, "", ">=", 0.5);
     report("coverage sweep: predicted/true hard-iron RMS, highest", worstHigh, "", "<=", 2.0);
     report("coverage sweep: true error below the 68 % bound, lowest case", below68Low, "%", ">=", 60);
@@ -565,25 +575,28 @@ void gyroScale(uint64_t seed)
 int main(int argc, char **argv)
 {
     int trials = 200;
+    int sweepTrials = 400;
     uint64_t seed = 1;
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
         if (a == "--trials" && i + 1 < argc) {
             trials = std::atoi(argv[++i]);
+        } else if (a == "--sweep-trials" && i + 1 < argc) {
+            sweepTrials = std::atoi(argv[++i]);
         } else if (a == "--seed" && i + 1 < argc) {
             seed = std::strtoull(argv[++i], nullptr, 10);
         } else {
-            std::fprintf(stderr, "usage: bench_magcal [--trials N (>= 100)] [--seed N]\n");
+            std::fprintf(stderr, "usage: bench_magcal [--trials N (>= 100)] [--sweep-trials N (>= 100)] [--seed N]\n");
             return 2;
         }
     }
-    if (trials < 100) {
-        std::fprintf(stderr, "bench_magcal: --trials must be at least 100\n");
+    if (trials < 100 || sweepTrials < 100) {
+        std::fprintf(stderr, "bench_magcal: --trials and --sweep-trials must be at least 100\n");
         return 2;
     }
     const auto t0 = std::chrono::steady_clock::now();
     magnetometer(seed, trials);
-    coverageSweep(seed, trials);
+    coverageSweep(seed, sweepTrials);
     gyroScale(seed);
     const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     std::printf("runtime %.1f s; %s\n", secs, g_failures == 0 ? "all figures met" : "some figures missed");
