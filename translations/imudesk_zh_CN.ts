@@ -9736,7 +9736,7 @@ Method: %3</source>
 <context>
     <name>imudesk::ui::MagCalibrationWizard</name>
     <message>
-        <location filename="../ui/calibration/mag_calibration_wizard.cpp" line="+40" />
+        <location filename="../ui/calibration/mag_calibration_wizard.cpp" line="+41" />
         <source>unknown</source>
         <translation>未知</translation>
     </message>
@@ -9769,7 +9769,7 @@ If the module is mounted on a PCB, in a housing or on a robot, calibrate it toge
 如果模块安装在 PCB 上、外壳中或机器人上，请将它们作为一个刚体一起校准：模块安装后，单独校准模块没有用。</translation>
     </message>
     <message>
-        <location line="+15" />
+        <location line="+19" />
         <location line="+240" />
         <source>Working mode</source>
         <translation>工作模式</translation>
@@ -11518,6 +11518,29 @@ Default: %2</source>
         <location line="+1" />
         <source>%1 / %2</source>
         <translation>%1 / %2</translation>
+    </message>
+</context>
+<context>
+    <name>imudesk::ui::RotationGuide</name>
+    <message>
+        <location filename="../ui/calibration/rotation_guide.cpp" line="+119" />
+        <source>Turn the module at least one full turn about each of its axes, slowly (20-100 deg/s), in any order</source>
+        <translation>绕模块的每根轴至少转一整圈，缓慢转动（20-100 deg/s），顺序不限</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>About X: roll it over</source>
+        <translation>绕 X 轴：侧向翻滚</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>About Y: tip it end over end</source>
+        <translation>绕 Y 轴：首尾翻转</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>About Z: turn it flat, like a compass</source>
+        <translation>绕 Z 轴：平放旋转，像指南针一样</translation>
     </message>
 </context>
 <context>

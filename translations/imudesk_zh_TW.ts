@@ -9736,7 +9736,7 @@ Method: %3</source>
 <context>
     <name>imudesk::ui::MagCalibrationWizard</name>
     <message>
-        <location filename="../ui/calibration/mag_calibration_wizard.cpp" line="+40" />
+        <location filename="../ui/calibration/mag_calibration_wizard.cpp" line="+41" />
         <source>unknown</source>
         <translation>未知</translation>
     </message>
@@ -9769,7 +9769,7 @@ If the module is mounted on a PCB, in a housing or on a robot, calibrate it toge
 若模組安裝在 PCB 上、外殼內或機器人上，請將它們作為一個剛體一起校準：模組安裝後，單獨校準模組並無幫助。</translation>
     </message>
     <message>
-        <location line="+15" />
+        <location line="+19" />
         <location line="+240" />
         <source>Working mode</source>
         <translation>工作模式</translation>
@@ -11518,6 +11518,29 @@ Default: %2</source>
         <location line="+1" />
         <source>%1 / %2</source>
         <translation>%1 / %2</translation>
+    </message>
+</context>
+<context>
+    <name>imudesk::ui::RotationGuide</name>
+    <message>
+        <location filename="../ui/calibration/rotation_guide.cpp" line="+119" />
+        <source>Turn the module at least one full turn about each of its axes, slowly (20-100 deg/s), in any order</source>
+        <translation>繞模組的每根軸至少轉一整圈，緩慢轉動（20-100 deg/s），順序不限</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>About X: roll it over</source>
+        <translation>繞 X 軸：側向翻滾</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>About Y: tip it end over end</source>
+        <translation>繞 Y 軸：首尾翻轉</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>About Z: turn it flat, like a compass</source>
+        <translation>繞 Z 軸：平放旋轉，像指南針一樣</translation>
     </message>
 </context>
 <context>

@@ -11,11 +11,13 @@
 #include "device/device_session.h"
 #include "calibration/mag_calibration_wizard.h"
 #include "calibration/mag_sphere_view.h"
+#include "calibration/rotation_guide.h"
 #include "settings/configuration_controller.h"
 #include "sim/pty_simulator.h"
 #include "../common/sim_session.h"
 #include "../common/test_main.h"
 
+#include <QImage>
 #include <QJsonObject>
 #include <QPushButton>
 #include <QLabel>
@@ -104,6 +106,20 @@ private Q_SLOTS:
         wizard.runSaver().setIdentity(id);
         wizard.show();
         QCOMPARE(wizard.currentId(), int(ui::MagCalibrationWizard::IntroPage));
+        // The first page draws the rotations to make: the module three times, each with its turn
+        // and caption, in view and painted (not an empty screen-sized page of text).
+        auto *guide = wizard.findChild<ui::RotationGuide *>(QStringLiteral("rotationGuide"));
+        QVERIFY(guide && guide->isVisible());
+        QCOMPARE(guide->captions().size(), 3);
+        QVERIFY(guide->height() >= guide->minimumSizeHint().height());
+        const QImage drawn = guide->grab().toImage();
+        int coloured = 0;
+        for (int y = 0; y < drawn.height(); y += 2)
+            for (int x = 0; x < drawn.width(); x += 2) {
+                const QColor c = drawn.pixelColor(x, y);
+                coloured += c.saturation() > 120 && c.value() > 80; // the axes and turns
+            }
+        QVERIFY2(coloured > 200, qPrintable(QString::number(coloured)));
         wizard.next();
         QCOMPARE(wizard.currentId(), int(ui::MagCalibrationWizard::ModePage));
         // The mode is read first: the module already runs in 9-axis mode, so no switch is offered.

@@ -4,6 +4,7 @@
 #include "device/device_session.h"
 #include "settings/setting_catalog.h"
 #include "calibration/mag_sphere_view.h"
+#include "calibration/rotation_guide.h"
 #include "workspace/work_place_size.h"
 
 #include <QHBoxLayout>
@@ -115,6 +116,10 @@ MagCalibrationWizard::MagCalibrationWizard(device::DeviceSession &session, const
     steps->setTextFormat(Qt::RichText);
     steps->setWordWrap(true);
     static_cast<QVBoxLayout *>(intro->layout())->insertWidget(1, steps);
+    // The rotations the calibration asks for, drawn.
+    auto *guide = new RotationGuide;
+    guide->setObjectName(QStringLiteral("rotationGuide"));
+    static_cast<QVBoxLayout *>(intro->layout())->insertWidget(2, guide, 1);
     setPage(IntroPage, intro);
 
     auto *mode = textPage(tr("Working mode"),
