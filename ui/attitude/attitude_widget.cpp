@@ -1,7 +1,7 @@
 #include "attitude/attitude_widget.h"
 
 #include "model/attitude.h"
-#include "workspace/paint_helpers.h"
+#include "common/paint_helpers.h"
 
 #include <QActionGroup>
 #include <QContextMenuEvent>

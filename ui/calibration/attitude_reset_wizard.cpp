@@ -1,6 +1,6 @@
 #include "calibration/attitude_reset_wizard.h"
 #include "protocol/hipnuc/ascii_command.h"
-#include "workspace/work_place_size.h"
+#include "common/work_place_size.h"
 
 #include "device/device_session.h"
 

@@ -1,6 +1,6 @@
 #include "calibration/gyro_scale_wizard.h"
 #include "calibration/turn_gauge.h"
-#include "workspace/work_place_size.h"
+#include "common/work_place_size.h"
 
 #include "device/device_session.h"
 #include "protocol/hipnuc/ascii_command.h"

@@ -1,5 +1,5 @@
 #include "calibration/hec495_calibration_wizard.h"
-#include "workspace/work_place_size.h"
+#include "common/work_place_size.h"
 
 #include "attitude/compass_pose_view.h"
 #include "device/hec495_session.h"

@@ -5,7 +5,7 @@
 #include "settings/setting_catalog.h"
 #include "calibration/mag_sphere_view.h"
 #include "calibration/rotation_guide.h"
-#include "workspace/work_place_size.h"
+#include "common/work_place_size.h"
 
 #include <QHBoxLayout>
 #include <QJsonObject>

@@ -1,6 +1,6 @@
 #include "calibration/turn_gauge.h"
 
-#include "workspace/paint_helpers.h"
+#include "common/paint_helpers.h"
 
 #include <QPainter>
 #include <QPainterPath>

@@ -1,6 +1,6 @@
 #include "charts/plot_canvas.h"
 
-#include "workspace/paint_helpers.h"
+#include "common/paint_helpers.h"
 
 #include <QEvent>
 #include <QMouseEvent>

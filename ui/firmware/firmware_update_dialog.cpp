@@ -5,7 +5,7 @@
 #include "protocol/ihex/intel_hex_loader.h"
 #include "protocol/ihex/intel_hex_writer.h"
 #include "sim/kboot_bootloader.h"
-#include "workspace/work_place_size.h"
+#include "common/work_place_size.h"
 
 #include <QCanBus>
 #include <QDir>

@@ -9,7 +9,7 @@
 #include "ui/station/station_model.h"
 #include "core/station/station_runner.h"
 #include "ui/station/station_tiles.h"
-#include "workspace/window_helpers.h"
+#include "common/window_helpers.h"
 
 #include <QCheckBox>
 #include <QCloseEvent>

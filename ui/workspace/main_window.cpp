@@ -3,7 +3,7 @@
 #include "ui/station/station_view.h"
 #include "workspace/preferences_dialog.h"
 #include "workspace/tool_actions.h"
-#include "workspace/window_helpers.h"
+#include "common/window_helpers.h"
 
 #include "charts/chart_panel.h"
 #include "charts/comparison_chart.h"

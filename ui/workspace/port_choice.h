@@ -28,7 +28,7 @@ struct PortChoice {
 // A simulated device a family offers in the connection bar (FamilyUi::simulatedDevices).
 struct SimulatedDevice {
     PortChoice choice; // PortChoice::simulated(model, firmware)
-    QString text;      // the entry's text, translated ("Simulated HEC495 compass")
+    QString text;      // the entry's text, translated
 };
 
 } // namespace imudesk::ui

@@ -1,4 +1,4 @@
-#include "workspace/window_helpers.h"
+#include "common/window_helpers.h"
 
 #include <QImageWriter>
 #include <QMessageBox>

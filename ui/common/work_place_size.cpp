@@ -1,4 +1,4 @@
-#include "workspace/work_place_size.h"
+#include "common/work_place_size.h"
 
 #include <QGuiApplication>
 #include <QScreen>
