@@ -4,13 +4,16 @@
 #include "device/can_session.h"
 #include "format/sample_json.h"
 #include "protocol/can/j1939.h"
+#include "settings/can_setting_catalog.h"
 #include "sim/can_simulator.h"
 
 #include <QCanBus>
 #include <QCommandLineParser>
 #include <QLoggingCategory>
 
+#include <algorithm>
 #include <cstdio>
+#include <optional>
 
 namespace imudesk::cli {
 
@@ -20,16 +23,18 @@ using protocol::can::CanProtocol;
 
 namespace {
 
-const char *kUsage = "imudesk-cli can [--plugin P] [--interface I] [--bitrate B] [--protocol auto|j1939|canopen|hec495] "
-                     "[--node N] [--json] list|scan|read|reg|sdo|sync|set|output ...\n"
+const char *kUsage = "imudesk-cli can [--plugin P] [--interface I] [--bitrate B] [--fd [--data-bitrate B]] "
+                     "[--protocol auto|j1939|canopen|hec495] [--node N] [--json] "
+                     "list|scan|read|get|set|config|reg|sdo|sync|output ...\n"
                      "  list                                 plugins and their interfaces\n"
                      "  scan [--duration S] [--active]       nodes heard (and, with --active, an SDO scan of 1..127)\n"
                      "  read [--duration S]                  decoded samples\n"
                      "  reg read ADDR | reg write ADDR VALUE J1939 configuration register\n"
                      "  sdo read INDEX SUB | sdo write INDEX SUB VALUE [--size 1..4]\n"
                      "  sync [PGN] [--count N] [--interval MS]  CANopen SYNC frames, or a J1939 one-shot PGN trigger\n"
-                     "  set incl-sign-x|incl-sign-y 0|1      inclinometer axis direction (J1939 0x9E/0x9F, CANopen 0x209E/0x209F)\n"
-                     "  set pdo-mode 0|1|3 | set work-mode 0x02|0x0A   HEC495 objects 0x1080 and 0x6245\n"
+                     "  get NAME                             a setting as the module holds it (config lists the names)\n"
+                     "  set NAME VALUE                       write a setting and read it back (bit rates in bit/s, e.g. 250000 or 250k)\n"
+                     "  config                               every setting: name, value on the module, unit, range, note\n"
                      "  output on|off [--all]                the node's output (--all: NMT to every node)\n"
                      "  --extended                           HEC495: the extended-frame variant (0x18FA....)";
 
@@ -120,6 +125,121 @@ int runRequest(CanSession &s, quint64 id, bool json, const QString &label)
     return ExitOk;
 }
 
+QStringList settingNames(const std::vector<settings::CanSetting> &all)
+{
+    QStringList names;
+    for (const auto &s : all)
+        names << s.name;
+    return names;
+}
+
+// Waits for request id; the result (ok false with the reason when it timed out).
+device::CanRequestResult waitResult(CanSession &s, quint64 id)
+{
+    device::CanRequestResult result;
+    bool done = false;
+    const auto c = QObject::connect(&s, &CanSession::requestFinished, &s, [&](const device::CanRequestResult &r) {
+        if (r.id == id) {
+            result = r;
+            done = true;
+        }
+    });
+    if (!waitFor([&] { return done; }, 30000))
+        result.message = interrupted() ? QStringLiteral("interrupted") : QStringLiteral("no result within 30 s");
+    QObject::disconnect(c);
+    return result;
+}
+
+QString settingJson(const settings::CanSetting &s, const device::CanRequestResult *read)
+{
+    QString o = QStringLiteral("{\"name\":%1,\"label\":%2,\"unit\":%3,\"range\":%4,\"writable\":%5")
+                    .arg(jsonString(s.name), jsonString(s.label), jsonString(s.unit), jsonString(s.range()),
+                         s.writable ? QStringLiteral("true") : QStringLiteral("false"));
+    if (read && read->ok)
+        o += QStringLiteral(",\"value\":%1,\"raw\":%2").arg(jsonString(s.show(read->value))).arg(read->value);
+    else
+        o += QStringLiteral(",\"value\":null,\"why\":%1").arg(jsonString(read ? read->message : s.note));
+    if (!s.note.isEmpty())
+        o += QStringLiteral(",\"note\":%1").arg(jsonString(s.note));
+    return o + QLatin1Char('}');
+}
+
+// can get NAME | set NAME VALUE | config: the settings by the device's catalogue.
+int typedSetting(CanSession &session, const QString &sub, const QStringList &pos, bool json)
+{
+    const std::vector<settings::CanSetting> all = session.settingsCatalogue();
+    auto find = [&](const QString &name) -> const settings::CanSetting * {
+        for (const auto &s : all)
+            if (s.name.compare(name, Qt::CaseInsensitive) == 0)
+                return &s;
+        return nullptr;
+    };
+    if (sub == QLatin1String("config")) {
+        if (pos.size() != 1)
+            return fail(QStringLiteral("usage: can config [--json]"), ExitUsage);
+        int unread = 0;
+        for (const auto &s : all) {
+            std::optional<device::CanRequestResult> r;
+            if (s.readable)
+                r = waitResult(session, session.readSetting(s));
+            unread += s.readable && !r->ok;
+            if (json) {
+                out(settingJson(s, r ? &*r : nullptr));
+                continue;
+            }
+            const QString value = !s.readable ? QStringLiteral("(not readable)")
+                                  : r->ok     ? s.show(r->value) + (s.unit.isEmpty() ? QString() : QLatin1Char(' ') + s.unit)
+                                              : QStringLiteral("(no answer: %1)").arg(r->message);
+            out(QStringLiteral("%1\t%2\t[%3]%4").arg(s.name, value, s.range(),
+                                                     s.note.isEmpty() ? QString() : QStringLiteral("\t%1").arg(s.note)));
+            if (interrupted())
+                return ExitInterrupted;
+        }
+        return unread == 0 ? ExitOk : ExitFailure;
+    }
+    if (pos.size() < 2)
+        return fail(QStringLiteral("usage: can get NAME | can set NAME VALUE; the names: %1")
+                        .arg(settingNames(all).join(QStringLiteral(", "))),
+                    ExitUsage);
+    const settings::CanSetting *s = find(pos[1]);
+    if (!s)
+        return fail(QStringLiteral("unknown setting '%1' for %2: %3")
+                        .arg(pos[1], QString::fromLatin1(protocol::can::protocolName(session.protocol())),
+                             settingNames(all).join(QStringLiteral(", "))),
+                    ExitUsage);
+    if (sub == QLatin1String("get")) {
+        if (pos.size() != 2)
+            return fail(QStringLiteral("usage: can get NAME"), ExitUsage);
+        if (!s->readable)
+            return fail(QStringLiteral("%1 cannot be read: %2").arg(s->name, s->note));
+        const device::CanRequestResult r = waitResult(session, session.readSetting(*s));
+        if (json) {
+            out(settingJson(*s, &r));
+            return r.ok ? ExitOk : ExitFailure;
+        }
+        if (!r.ok)
+            return fail(r.message);
+        out(QStringLiteral("%1: %2%3").arg(s->name, s->show(r.value), s->unit.isEmpty() ? QString() : QLatin1Char(' ') + s->unit));
+        return ExitOk;
+    }
+    if (pos.size() != 3)
+        return fail(QStringLiteral("usage: can set NAME VALUE"), ExitUsage);
+    QString why;
+    const std::optional<uint32_t> raw = s->parse(pos[2], &why);
+    if (!raw)
+        return fail(why, ExitUsage);
+    const device::CanRequestResult r = waitResult(session, session.writeSetting(*s, *raw));
+    if (json)
+        out(QStringLiteral("{\"name\":%1,\"value\":%2,\"ok\":%3,\"message\":%4}")
+                .arg(jsonString(s->name), jsonString(s->show(*raw)), r.ok ? QStringLiteral("true") : QStringLiteral("false"),
+                     jsonString(r.message)));
+    else if (r.ok)
+        out(r.message);
+    if (!r.ok)
+        return json ? ExitFailure : fail(r.message);
+    return ExitOk;
+}
+
 } // namespace
 
 int cmdCan(const QStringList &args)
@@ -131,6 +251,10 @@ int cmdCan(const QStringList &args)
     p.addOption(QCommandLineOption(QStringLiteral("interface"), QStringLiteral("Interface (default can0)."),
                                    QStringLiteral("I"), QStringLiteral("can0")));
     p.addOption(QCommandLineOption(QStringLiteral("bitrate"), QStringLiteral("Bit rate to set (default: leave)."), QStringLiteral("B")));
+    p.addOption(QCommandLineOption(QStringLiteral("fd"), QStringLiteral("CAN FD bus (the J1939 FF5A frame).")));
+    p.addOption(QCommandLineOption(QStringLiteral("data-bitrate"),
+                                   QStringLiteral("CAN FD data-phase bit rate (default 4000000, the manual's)."),
+                                   QStringLiteral("B")));
     p.addOption(QCommandLineOption(QStringLiteral("protocol"), QStringLiteral("auto (default), j1939, canopen or hec495."),
                                    QStringLiteral("PROTO"), QStringLiteral("auto")));
     p.addOption(QCommandLineOption(QStringLiteral("node"), QStringLiteral("Node ID / J1939 address (default: first heard)."),
@@ -174,6 +298,27 @@ int cmdCan(const QStringList &args)
         if (!parseNumber(p.value(QStringLiteral("bitrate")), &n) || n == 0)
             return fail(QStringLiteral("--bitrate needs a positive number"), ExitUsage);
         o.bitrate = int(n);
+        // The rates the protocol's manual lists (a bus at another rate never hears the module).
+        const std::vector<int> rates = settings::canBitrates(o.protocol).rates;
+        if (std::find(rates.begin(), rates.end(), o.bitrate) == rates.end()) {
+            QStringList listed;
+            for (int r : rates)
+                listed << QString::number(r);
+            return fail(QStringLiteral("--bitrate %1 is not a rate of %2 (%3)")
+                            .arg(o.bitrate)
+                            .arg(QString::fromLatin1(protocol::can::protocolName(o.protocol)), listed.join(QStringLiteral(", "))),
+                        ExitUsage);
+        }
+    }
+    o.canFd = p.isSet(QStringLiteral("fd"));
+    if (p.isSet(QStringLiteral("data-bitrate"))) {
+        if (!o.canFd)
+            return fail(QStringLiteral("--data-bitrate is the CAN FD data phase: give --fd too"), ExitUsage);
+        if (!parseNumber(p.value(QStringLiteral("data-bitrate")), &n) || n == 0)
+            return fail(QStringLiteral("--data-bitrate needs a positive number"), ExitUsage);
+        o.dataBitrate = int(n);
+    } else if (o.canFd) {
+        o.dataBitrate = 4000000; // v1.7.1 7.19.30: "usually 4 Mbps"
     }
     if (p.isSet(QStringLiteral("node"))) {
         if (!parseNumber(p.value(QStringLiteral("node")), &n) || n > 253)
@@ -188,9 +333,10 @@ int cmdCan(const QStringList &args)
             return fail(QStringLiteral("--duration needs a positive number of seconds"), ExitUsage);
     }
     // Requests need a known protocol: without --protocol, listen until traffic shows it.
+    const bool typed = sub == QLatin1String("get") || sub == QLatin1String("set") || sub == QLatin1String("config");
     const bool needsProtocol = sub == QLatin1String("reg") || sub == QLatin1String("sdo") || sub == QLatin1String("sync")
-                            || sub == QLatin1String("set") || sub == QLatin1String("output");
-    if (needsProtocol && o.protocol == CanProtocol::Auto && (sub == QLatin1String("set") || sub == QLatin1String("output")))
+                            || typed || sub == QLatin1String("output");
+    if (needsProtocol && o.protocol == CanProtocol::Auto && (typed || sub == QLatin1String("output")))
         return fail(QStringLiteral("'%1' needs --protocol j1939, canopen or hec495").arg(sub), ExitUsage);
     if (sub == QLatin1String("reg") && o.protocol == CanProtocol::Auto)
         o.protocol = CanProtocol::J1939;
@@ -304,24 +450,8 @@ int cmdCan(const QStringList &args)
             out(QStringLiteral("%1 sent: %2, frames received meanwhile: %3").arg(trigger ? QStringLiteral("triggers") : QStringLiteral("SYNC")).arg(sent).arg(received));
         return interrupted() ? ExitInterrupted : ExitOk;
     }
-    if (sub == QLatin1String("set")) {
-        uint32_t value = 0;
-        if (pos.size() != 3 || !parseNumber(pos[2], &value))
-            return fail(QStringLiteral("usage: can set NAME VALUE (incl-sign-x, incl-sign-y, pdo-mode, work-mode)"), ExitUsage);
-        const QString name = pos[1];
-        if (name == QLatin1String("incl-sign-x") || name == QLatin1String("incl-sign-y")) {
-            if (value > 1)
-                return fail(QStringLiteral("%1 is 0 (default) or 1 (reversed)").arg(name), ExitUsage);
-            return runRequest(session, session.setInclinometerSign(name.endsWith(QLatin1Char('x')) ? 0 : 1, value == 1),
-                              json, name);
-        }
-        if (name == QLatin1String("pdo-mode"))
-            return runRequest(session, session.setHec495PdoMode(int(value)), json, name);
-        if (name == QLatin1String("work-mode"))
-            return runRequest(session, session.setHec495WorkMode(int(value)), json, name);
-        return fail(QStringLiteral("unknown setting '%1': incl-sign-x, incl-sign-y, pdo-mode or work-mode").arg(name),
-                    ExitUsage);
-    }
+    if (typed)
+        return typedSetting(session, sub, pos, json);
     if (sub == QLatin1String("output")) {
         if (pos.size() != 2 || (pos[1] != QLatin1String("on") && pos[1] != QLatin1String("off")))
             return fail(QStringLiteral("usage: can output on|off [--all]"), ExitUsage);

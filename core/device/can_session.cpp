@@ -207,6 +207,66 @@ quint64 CanSession::hec495Write(uint16_t index, uint8_t value)
     return submitJob(CanJob{0, hec495::describeObject(index, value), {hecStep(index, value, hec495::describeObject(index, value))}});
 }
 
+std::vector<settings::CanSetting> CanSession::settingsCatalogue() const
+{
+    return settings::canSettings(protocol(), m_options.hipnucNodeIdObject);
+}
+
+quint64 CanSession::readSetting(const settings::CanSetting &setting)
+{
+    using A = settings::CanSetting::Access;
+    const QString title = tr("read %1").arg(setting.name);
+    if (!setting.readable)
+        return refuseJob(tr("%1 cannot be read: %2").arg(setting.name, setting.note));
+    switch (setting.access) {
+    case A::J1939Register:
+        if (protocol() != CanProtocol::J1939)
+            return refuseJob(tr("%1 is a J1939 register: the device speaks another protocol").arg(setting.name));
+        return submitJob(CanJob{0, title, {j1939Read(setting.address, title)}});
+    case A::CanOpenObject:
+        if (protocol() != CanProtocol::CanOpen)
+            return refuseJob(tr("%1 is a CANopen object: the device speaks another protocol").arg(setting.name));
+        return submitJob(CanJob{0, title, {sdoReadStep(setting.address, setting.sub, title)}});
+    case A::Hec495Object: break;
+    }
+    return refuseJob(tr("%1 cannot be read: %2").arg(setting.name, setting.note));
+}
+
+quint64 CanSession::writeSetting(const settings::CanSetting &setting, uint32_t raw)
+{
+    using A = settings::CanSetting::Access;
+    if (!setting.writable)
+        return refuseJob(tr("%1 is read only").arg(setting.name));
+    const QString shown = setting.show(raw);
+    switch (setting.access) {
+    case A::J1939Register: {
+        if (protocol() != CanProtocol::J1939)
+            return refuseJob(tr("%1 is a J1939 register: the device speaks another protocol").arg(setting.name));
+        CanJobStep rb = j1939Read(setting.address, tr("read back %1").arg(setting.name));
+        rb.expectValue = raw;
+        return submitJob(CanJob{0, tr("%1 = %2, verified by reading it back").arg(setting.name, shown),
+                                {j1939Write(setting.address, raw, tr("write %1").arg(setting.name)), rb}});
+    }
+    case A::CanOpenObject: {
+        if (protocol() != CanProtocol::CanOpen)
+            return refuseJob(tr("%1 is a CANopen object: the device speaks another protocol").arg(setting.name));
+        CanJobStep rb = sdoReadStep(setting.address, setting.sub, tr("read back %1").arg(setting.name));
+        rb.expectValue = raw;
+        return submitJob(CanJob{0, tr("%1 = %2, verified by reading it back").arg(setting.name, shown),
+                                {sdoWriteStep(setting.address, setting.sub, raw, setting.size, tr("write %1").arg(setting.name)),
+                                 rb}});
+    }
+    case A::Hec495Object:
+        if (protocol() != CanProtocol::Hec495)
+            return refuseJob(tr("%1 is an HEC495 object: the device speaks another protocol").arg(setting.name));
+        if (raw > 0xFF)
+            return refuseJob(tr("%1: the HEC495 takes one byte").arg(setting.name));
+        return submitJob(CanJob{0, tr("%1 = %2, confirmed by the module's reply (it cannot be read back)").arg(setting.name, shown),
+                                {hecStep(setting.address, uint8_t(raw), tr("write %1").arg(setting.name))}});
+    }
+    return refuseJob(tr("%1 cannot be written").arg(setting.name));
+}
+
 quint64 CanSession::setOutputPeriod(uint32_t pgnOrChannel, int ms)
 {
     switch (protocol()) {

@@ -105,6 +105,20 @@ private Q_SLOTS:
         QCOMPARE(r.code, 0);
         QVERIFY2(r.out.contains(QStringLiteral("\"node\":8")), qPrintable(r.out));
         QVERIFY2(r.out.contains(QStringLiteral("{\"sdo_scan\":[8]}")), qPrintable(r.out));
+        // Every setting by name (8.28): TPDO periods and transmission types, heartbeat, bit rate,
+        // node ID and inclinometer signs, read by SDO upload; a write read back.
+        const QStringList co = {QStringLiteral("--protocol"), QStringLiteral("canopen")};
+        r = cli(can(co + QStringList{QStringLiteral("config")}));
+        QVERIFY2(r.code == 0, qPrintable(r.err));
+        QVERIFY2(r.out.contains(QStringLiteral("tpdo1-period\t50 ms")), qPrintable(r.out));
+        QVERIFY2(r.out.contains(QStringLiteral("tpdo1-mode\ttimed")), qPrintable(r.out));
+        QVERIFY2(r.out.contains(QStringLiteral("bitrate\t500000 bit/s\t[1000000, 500000, 250000, 125000]")), qPrintable(r.out));
+        r = cli(can(co + QStringList{QStringLiteral("set"), QStringLiteral("heartbeat"), QStringLiteral("100")}));
+        QVERIFY2(r.code == 0, qPrintable(r.err));
+        r = cli(can(co + QStringList{QStringLiteral("get"), QStringLiteral("heartbeat")}));
+        QVERIFY2(r.code == 0 && r.out.trimmed() == QStringLiteral("heartbeat: 100 ms"), qPrintable(r.out + r.err));
+        // 800K is J1939's only (0x209A has no code for it).
+        QCOMPARE(cli(can(co + QStringList{QStringLiteral("set"), QStringLiteral("bitrate"), QStringLiteral("800000")})).code, 2);
         // SYNC frames.
         r = cli(can({QStringLiteral("--protocol"), QStringLiteral("canopen"), QStringLiteral("sync"), QStringLiteral("--count"), QStringLiteral("3")}));
         QCOMPARE(r.code, 0);
@@ -135,8 +149,33 @@ private Q_SLOTS:
         // Settings the protocol does not have, and bad values: refused with the reason.
         r = cli(can({QStringLiteral("--protocol"), QStringLiteral("j1939"), QStringLiteral("--node"), QStringLiteral("9"),
                      QStringLiteral("set"), QStringLiteral("work-mode"), QStringLiteral("2")}));
-        QCOMPARE(r.code, 1);
-        QVERIFY2(r.err.contains(QStringLiteral("HEC495")), qPrintable(r.err));
+        QCOMPARE(r.code, 2);
+        QVERIFY2(r.err.contains(QStringLiteral("unknown setting 'work-mode' for j1939")), qPrintable(r.err));
+        // Every setting by name (v1.7.1 7.23): the dump shows the module's values, a bit rate in
+        // bit/s is written as its code and read back, and shown in bit/s again.
+        const QStringList j = {QStringLiteral("--protocol"), QStringLiteral("j1939"), QStringLiteral("--node"), QStringLiteral("9")};
+        r = cli(can(j + QStringList{QStringLiteral("config")}));
+        QVERIFY2(r.code == 0, qPrintable(r.err));
+        QVERIFY2(r.out.contains(QStringLiteral("interval-ff37\t100 ms\t[5-1000 ms]")), qPrintable(r.out));
+        QVERIFY2(r.out.contains(QStringLiteral("bitrate\t500000 bit/s")), qPrintable(r.out));
+        QVERIFY2(r.out.contains(QStringLiteral("incl-sign-x\treversed")), qPrintable(r.out));
+        QVERIFY2(r.out.contains(QStringLiteral("node-id\t9")), qPrintable(r.out));
+        r = cli(can(j + QStringList{QStringLiteral("set"), QStringLiteral("bitrate"), QStringLiteral("250k")}));
+        QVERIFY2(r.code == 0 && r.out.contains(QStringLiteral("verified by reading it back")), qPrintable(r.out + r.err));
+        r = cli(can({QStringLiteral("--node"), QStringLiteral("9"), QStringLiteral("reg"), QStringLiteral("read"), QStringLiteral("0x009A")}));
+        QVERIFY2(r.out.startsWith(QStringLiteral("register 0x009a: 3")), qPrintable(r.out + r.err)); // 7.23: 3 = 250K
+        r = cli(can(j + QStringList{QStringLiteral("get"), QStringLiteral("bitrate"), QStringLiteral("--json")}));
+        QVERIFY2(r.code == 0, qPrintable(r.err));
+        const QJsonObject got = QJsonDocument::fromJson(r.out.toUtf8()).object();
+        QCOMPARE(got.value(QStringLiteral("value")).toString(), QStringLiteral("250000"));
+        QCOMPARE(got.value(QStringLiteral("raw")).toInt(), 3);
+        QCOMPARE(got.value(QStringLiteral("unit")).toString(), QStringLiteral("bit/s"));
+        // Out of the manual's range, or a rate J1939 does not have: refused before anything is sent.
+        QCOMPARE(cli(can(j + QStringList{QStringLiteral("set"), QStringLiteral("interval-ff34"), QStringLiteral("3")})).code, 2);
+        QCOMPARE(cli(can(j + QStringList{QStringLiteral("set"), QStringLiteral("bitrate"), QStringLiteral("300000")})).code, 2);
+        QCOMPARE(cli(can({QStringLiteral("--bitrate"), QStringLiteral("300000"), QStringLiteral("--protocol"),
+                          QStringLiteral("j1939"), QStringLiteral("read")})).code, 2);
+        QCOMPARE(cli(can(j + QStringList{QStringLiteral("set"), QStringLiteral("version"), QStringLiteral("1")})).code, 2);
         QCOMPARE(cli(can({QStringLiteral("--protocol"), QStringLiteral("j1939"), QStringLiteral("set"), QStringLiteral("incl-sign-x"),
                           QStringLiteral("2")})).code, 2);
         QCOMPARE(cli(can({QStringLiteral("set"), QStringLiteral("incl-sign-x"), QStringLiteral("1")})).code, 2); // no protocol
@@ -158,7 +197,19 @@ private Q_SLOTS:
         r = cli(can(hec + QStringList{QStringLiteral("set"), QStringLiteral("work-mode"), QStringLiteral("0x0A")}));
         QVERIFY2(r.code == 0, qPrintable(r.err));
         r = cli(can(hec + QStringList{QStringLiteral("set"), QStringLiteral("pdo-mode"), QStringLiteral("2")}));
+        QCOMPARE(r.code, 2);
+        QVERIFY2(r.err.contains(QStringLiteral("pdo-mode takes float, fixed point")), qPrintable(r.err));
+        // The HEC495's manual documents writes only: a read is refused with that reason, and the
+        // dump says "not readable" instead of a guess.
+        r = cli(can(hec + QStringList{QStringLiteral("get"), QStringLiteral("pdo-mode")}));
         QCOMPARE(r.code, 1);
+        QVERIFY2(r.err.contains(QStringLiteral("no way to read it back")), qPrintable(r.err));
+        r = cli(can(hec + QStringList{QStringLiteral("config"), QStringLiteral("--json")}));
+        QVERIFY2(r.code == 0, qPrintable(r.err));
+        QVERIFY2(r.out.contains(QStringLiteral("\"name\":\"pdo-rate\"")) && r.out.contains(QStringLiteral("\"value\":null")),
+                 qPrintable(r.out));
+        r = cli(can(hec + QStringList{QStringLiteral("set"), QStringLiteral("pdo-rate"), QStringLiteral("50 Hz")}));
+        QVERIFY2(r.code == 0 && r.out.contains(QStringLiteral("confirmed by the module's reply")), qPrintable(r.out + r.err));
         r = cli(can(hec + QStringList{QStringLiteral("output"), QStringLiteral("off"), QStringLiteral("--all")}));
         QVERIFY2(r.code == 0, qPrintable(r.err));
         r = cli(can(hec + QStringList{QStringLiteral("output"), QStringLiteral("on"), QStringLiteral("--all")}));
