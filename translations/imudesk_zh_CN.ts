@@ -621,6 +621,248 @@
     </message>
 </context>
 <context>
+    <name>CanSettingCatalog</name>
+    <message>
+        <location filename="../core/settings/can_setting_catalog.cpp" line="+55" />
+        <source>default</source>
+        <translation>默认</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>reversed</source>
+        <translation>反向</translation>
+    </message>
+    <message>
+        <location line="+9" />
+        <source>UTC time (FF2F) interval</source>
+        <translation>UTC 时间 (FF2F) 发送间隔</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Acceleration (FF34) interval</source>
+        <translation>加速度 (FF34) 发送间隔</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Angular rate (FF37) interval</source>
+        <translation>角速度 (FF37) 发送间隔</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Magnetic field (FF3A) interval</source>
+        <translation>磁场 (FF3A) 发送间隔</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Pitch and roll (FF3D) interval</source>
+        <translation>俯仰横滚 (FF3D) 发送间隔</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Heading (FF41) interval</source>
+        <translation>航向角 (FF41) 发送间隔</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Quaternion (FF46) interval</source>
+        <translation>四元数 (FF46) 发送间隔</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Inclinometer (FF4A) interval</source>
+        <translation>倾角仪 (FF4A) 发送间隔</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>CAN FD frame 0 (FF5A) interval</source>
+        <translation>CAN FD 数据帧 0 (FF5A) 发送间隔</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>only on a module with CAN FD output enabled; the manual gives no command to enable it</source>
+        <translation>仅在启用 CAN FD 输出的模块上有效；手册未给出启用它的命令</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <location line="+49" />
+        <location line="+48" />
+        <source>CAN bit rate</source>
+        <translation>CAN 波特率</translation>
+    </message>
+    <message>
+        <location line="-94" />
+        <location line="+49" />
+        <location line="+4" />
+        <source>takes effect after save and reset</source>
+        <translation>保存并复位后生效</translation>
+    </message>
+    <message>
+        <location line="-51" />
+        <source>Source address (node ID)</source>
+        <translation>源地址（节点 ID）</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <location line="+83" />
+        <source>Data output</source>
+        <translation>数据输出</translation>
+    </message>
+    <message>
+        <location line="-81" />
+        <location line="+69" />
+        <location line="+14" />
+        <source>off</source>
+        <translation>关</translation>
+    </message>
+    <message>
+        <location line="-83" />
+        <location line="+83" />
+        <source>on</source>
+        <translation>开</translation>
+    </message>
+    <message>
+        <location line="-81" />
+        <location line="+47" />
+        <source>Inclinometer X direction</source>
+        <translation>倾角仪 X 轴方向</translation>
+    </message>
+    <message>
+        <location line="-45" />
+        <location line="+47" />
+        <source>Inclinometer Y direction</source>
+        <translation>倾角仪 Y 轴方向</translation>
+    </message>
+    <message>
+        <location line="-45" />
+        <source>Firmware version</source>
+        <translation>固件版本</translation>
+    </message>
+    <message>
+        <location line="+14" />
+        <source>TPDO%1 (%2) period</source>
+        <translation>TPDO%1（%2）周期</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <location line="+14" />
+        <source>0 = off</source>
+        <translation>0 = 关闭</translation>
+    </message>
+    <message>
+        <location line="-12" />
+        <source>TPDO%1 transmission</source>
+        <translation>TPDO%1 传输方式</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>on each SYNC</source>
+        <translation>每个 SYNC 发送</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>timed (0xFE)</source>
+        <translation>定时 (0xFE)</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>timed (0xFF)</source>
+        <translation>定时 (0xFF)</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Heartbeat period</source>
+        <translation>心跳周期</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <location line="+48" />
+        <source>Node ID</source>
+        <translation>节点 ID</translation>
+    </message>
+    <message>
+        <location line="-34" />
+        <source>written only: the manual documents no way to read it back</source>
+        <translation>只能写入：手册未说明如何读回</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <source>Output rate</source>
+        <translation>输出速率</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>%1 Hz</source>
+        <translation>%1 Hz</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>PDO mode</source>
+        <translation>PDO 模式</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>float</source>
+        <translation>浮点</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>fixed point</source>
+        <translation>定点</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>float, 0x180/0x280 only</source>
+        <translation>浮点，仅 0x180/0x280</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Work mode</source>
+        <translation>工作模式</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>angles, acceleration, rate</source>
+        <translation>角度、加速度、角速度</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>rate at 500 Hz</source>
+        <translation>角速度 500 Hz</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>Heartbeat (100 ms x (N + 1))</source>
+        <translation>心跳（100 ms × (N + 1)）</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <location line="+4" />
+        <source>takes effect after a power cycle</source>
+        <translation>重新上电后生效</translation>
+    </message>
+    <message>
+        <location line="+14" />
+        <source>code %1 (not in the manual)</source>
+        <translation>代码 %1（手册中没有）</translation>
+    </message>
+    <message>
+        <location line="+12" />
+        <source>%1 is read only</source>
+        <translation>%1 为只读</translation>
+    </message>
+    <message>
+        <location line="+23" />
+        <source>%1: "%2" is not a number (%3)</source>
+        <translation>%1：“%2”不是数字（%3）</translation>
+    </message>
+    <message>
+        <location line="+9" />
+        <location line="+3" />
+        <source>%1 takes %2</source>
+        <translation>%1 可取 %2</translation>
+    </message>
+</context>
+<context>
     <name>CanUi</name>
     <message>
         <location filename="../ui/families/can_ui.cpp" line="+20" />
@@ -4061,7 +4303,74 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>SDO 写入</translation>
     </message>
     <message>
-        <location line="+13" />
+        <location line="+16" />
+        <source>read %1</source>
+        <translation>读取 %1</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <location line="+12" />
+        <source>%1 cannot be read: %2</source>
+        <translation>%1 无法读取：%2</translation>
+    </message>
+    <message>
+        <location line="-8" />
+        <location line="+20" />
+        <source>%1 is a J1939 register: the device speaks another protocol</source>
+        <translation>%1 是 J1939 寄存器：设备使用的是其他协议</translation>
+    </message>
+    <message>
+        <location line="-16" />
+        <location line="+24" />
+        <source>%1 is a CANopen object: the device speaks another protocol</source>
+        <translation>%1 是 CANopen 对象：设备使用的是其他协议</translation>
+    </message>
+    <message>
+        <location line="-13" />
+        <source>%1 is read only</source>
+        <translation>%1 为只读</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <location line="+8" />
+        <source>read back %1</source>
+        <translation>读回 %1</translation>
+    </message>
+    <message>
+        <location line="-6" />
+        <location line="+8" />
+        <source>%1 = %2, verified by reading it back</source>
+        <translation>%1 = %2，已读回校验</translation>
+    </message>
+    <message>
+        <location line="-7" />
+        <location line="+8" />
+        <location line="+9" />
+        <source>write %1</source>
+        <translation>写入 %1</translation>
+    </message>
+    <message>
+        <location line="-4" />
+        <source>%1 is an HEC495 object: the device speaks another protocol</source>
+        <translation>%1 是 HEC495 对象：设备使用的是其他协议</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>%1: the HEC495 takes one byte</source>
+        <translation>%1：HEC495 只接受一个字节</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>%1 = %2, confirmed by the module's reply (it cannot be read back)</source>
+        <translation>%1 = %2，已由模块应答确认（无法读回）</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>%1 cannot be written</source>
+        <translation>%1 无法写入</translation>
+    </message>
+    <message>
+        <location line="+8" />
         <source>0x%1 is not a data PGN</source>
         <translation>0x%1 不是数据 PGN</translation>
     </message>
@@ -4554,7 +4863,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>模拟 Modbus 设备无法启动：%1</translation>
     </message>
     <message>
-        <location line="+20" />
+        <location line="+21" />
         <source>The simulated CAN device could not start on %1:%2: %3</source>
         <translation>模拟 CAN 设备无法在 %1:%2 上启动：%3</translation>
     </message>
@@ -7049,7 +7358,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::BusConnect</name>
     <message>
-        <location filename="../ui/bus/bus_connect_dialog.cpp" line="+24" />
+        <location filename="../ui/bus/bus_connect_dialog.cpp" line="+27" />
         <source>Connect</source>
         <translation>连接</translation>
     </message>
@@ -7200,7 +7509,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::CanConfigPanel</name>
     <message>
-        <location filename="../ui/bus/can_config_panel.cpp" line="+30" />
+        <location filename="../ui/bus/can_config_panel.cpp" line="+32" />
         <location line="+2" />
         <location line="+1" />
         <location line="+1" />
@@ -7277,12 +7586,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>HEC495 工作模式，对象 0x6245：0x02 输出俯仰、横滚、加速度和角速度（默认）；0x0A 以 500 Hz 输出角速度</translation>
     </message>
     <message>
-        <location line="+195" />
+        <location line="+206" />
         <source>%1 kbit/s</source>
         <translation>%1 kbit/s</translation>
     </message>
     <message>
-        <location line="-204" />
+        <location line="-215" />
         <source>Heading reset (J1939 1)</source>
         <translation>航向角复位（J1939 1）</translation>
     </message>
@@ -7432,6 +7741,16 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>节点发现：</translation>
     </message>
     <message>
+        <location line="+9" />
+        <source>Settings</source>
+        <translation>设置</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Actions</source>
+        <translation>操作</translation>
+    </message>
+    <message>
         <location line="+8" />
         <source>SYNC mode on</source>
         <translation>开启 SYNC 模式</translation>
@@ -7527,7 +7846,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>恢复出厂设置</translation>
     </message>
     <message>
-        <location line="+45" />
+        <location line="+46" />
         <source>Scan cancelled; nodes answering so far: %1</source>
         <translation>扫描已取消；目前有应答的节点：%1</translation>
     </message>
@@ -7646,27 +7965,57 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>接口(&amp;I)：</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+3" />
+        <source>Bit rate of the bus: the rates the chosen device's manual lists, its factory rate chosen first (HiPNUC 500 kbit/s, HEC495 250 kbit/s)</source>
+        <translation>总线波特率：所选设备手册列出的速率，默认选中其出厂速率（HiPNUC 500 kbit/s，HEC495 250 kbit/s）</translation>
+    </message>
+    <message>
+        <location line="+79" />
         <source>Keep the interface's setting</source>
         <translation>保持接口现有设置</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+3" />
+        <source>%1 kbit/s (factory)</source>
+        <translation>%1 kbit/s（出厂）</translation>
+    </message>
+    <message>
+        <location line="+1" />
         <source>%1 kbit/s</source>
         <translation>%1 kbit/s</translation>
     </message>
     <message>
-        <location line="+2" />
-        <source>Bit rate of the bus; HiPNUC modules default to 500 kbit/s</source>
-        <translation>总线波特率；HiPNUC 模块默认为 500 kbit/s</translation>
-    </message>
-    <message>
-        <location line="+1" />
+        <location line="-81" />
         <source>&amp;Bit rate:</source>
         <translation>波特率(&amp;B)：</translation>
     </message>
     <message>
+        <location line="+7" />
+        <source>CAN FD</source>
+        <translation>CAN FD</translation>
+    </message>
+    <message>
         <location line="+2" />
+        <source>A CAN FD bus: needed for the J1939 FF5A frame (64 bytes); the module must have CAN FD output enabled, which its manual gives no command for</source>
+        <translation>CAN FD 总线：接收 J1939 FF5A 帧（64 字节）所需；模块必须已启用 CAN FD 输出，手册未给出相应命令</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>%1 Mbit/s</source>
+        <translation>%1 Mbit/s</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Bit rate of the CAN FD data phase (the manual: usually 4 Mbit/s)</source>
+        <translation>CAN FD 数据段波特率（手册：通常为 4 Mbit/s）</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>&amp;Data phase:</source>
+        <translation>数据段(&amp;D)：</translation>
+    </message>
+    <message>
+        <location line="+4" />
         <source>Detect from the traffic</source>
         <translation>根据总线报文自动检测</translation>
     </message>
@@ -7734,6 +8083,26 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <location line="+1" />
         <source>A simulated module of the chosen protocol answers on the bus (use the virtualcan plugin to try it without hardware)</source>
         <translation>所选协议的模拟模块会在总线上应答（无硬件时可用 virtualcan 插件试用）</translation>
+    </message>
+    <message>
+        <location line="+45" />
+        <source>The module can be switched to %1 kbit/s (register 0x9A, after save and reset).</source>
+        <translation>模块可切换到 %1 kbit/s（寄存器 0x9A，保存并复位后生效）。</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>The module can be switched to %1 kbit/s (object 0x209A, after save and reset; no 800 kbit/s in CANopen).</source>
+        <translation>模块可切换到 %1 kbit/s（对象 0x209A，保存并复位后生效；CANopen 没有 800 kbit/s）。</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>The compass can be switched to %1 kbit/s (object 0x1020, after a power cycle).</source>
+        <translation>罗盘可切换到 %1 kbit/s（对象 0x1020，重新上电后生效）。</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Choose the protocol to see the rates its devices use.</source>
+        <translation>选择协议以查看其设备使用的速率。</translation>
     </message>
 </context>
 <context>
@@ -7837,6 +8206,99 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <location line="+0" />
         <source>CSV files (*.csv)</source>
         <translation>CSV 文件 (*.csv)</translation>
+    </message>
+</context>
+<context>
+    <name>imudesk::ui::CanSettingsTable</name>
+    <message>
+        <location filename="../ui/bus/can_settings_table.cpp" line="+59" />
+        <source>Setting</source>
+        <translation>设置项</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>On the module</source>
+        <translation>模块中的值</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>New value</source>
+        <translation>新值</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Read back</source>
+        <translation>读回</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>&amp;Read from module</source>
+        <translation>从模块读取(&amp;R)</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Read every setting the module can report (J1939 register reads, CANopen SDO uploads)</source>
+        <translation>读取模块能报告的所有设置（J1939 寄存器读取、CANopen SDO 上传）</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>&amp;Write changed</source>
+        <translation>写入已更改项(&amp;W)</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Write the new values you changed; each is read back and marked verified or not</source>
+        <translation>写入已更改的新值；每项都会读回并标记是否已校验</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The value on the module is read before anything is written; a write is read back.</source>
+        <translation>写入前先读取模块中的值；写入后会读回校验。</translation>
+    </message>
+    <message>
+        <location line="+62" />
+        <source>not readable</source>
+        <translation>无法读取</translation>
+    </message>
+    <message>
+        <location line="+25" />
+        <source>%1; %2</source>
+        <translation>%1；%2</translation>
+    </message>
+    <message>
+        <location line="+88" />
+        <source>reading…</source>
+        <translation>正在读取…</translation>
+    </message>
+    <message>
+        <location line="+16" />
+        <source>writing…</source>
+        <translation>正在写入…</translation>
+    </message>
+    <message>
+        <location line="+26" />
+        <source>verified</source>
+        <translation>已校验</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>confirmed by its reply (cannot be read back)</source>
+        <translation>已由应答确认（无法读回）</translation>
+    </message>
+    <message>
+        <location line="+9" />
+        <source>not taken: the module holds %1</source>
+        <translation>未生效：模块中的值为 %1</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>not confirmed: %1</source>
+        <translation>未确认：%1</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>could not be read: %1</source>
+        <translation>无法读取：%1</translation>
     </message>
 </context>
 <context>
@@ -10473,7 +10935,7 @@ Samples: %3</source>
 <context>
     <name>imudesk::ui::ModbusConnectDialog</name>
     <message>
-        <location filename="../ui/bus/bus_connect_dialog.cpp" line="-125" />
+        <location filename="../ui/bus/bus_connect_dialog.cpp" line="-205" />
         <source>Connect over Modbus RTU</source>
         <translation>通过 Modbus RTU 连接</translation>
     </message>
@@ -12468,7 +12930,7 @@ Edit it (Edit…) and start again.</source>
 <context>
     <name>imudesk::ui::WindowHelpers</name>
     <message>
-        <location filename="../ui/workspace/window_helpers.cpp" line="+31" />
+        <location filename="../ui/common/window_helpers.cpp" line="+31" />
         <source>Could not save the screenshot to %1: %2</source>
         <translation>无法将截图保存到 %1：%2</translation>
     </message>

@@ -157,6 +157,7 @@ bool startSimulator(LinkRequest &r, QString *error)
         so.protocol = standardFrames ? protocol::can::CanProtocol::CanOpen : protocol::can::CanProtocol::J1939;
         so.node = r.can.node;
         so.motion = r.motion;
+        so.canFd = r.can.canFd && !so.hec495; // a HiPNUC J1939 module with CAN FD output: FF5A too
         auto simulator = std::make_shared<sim::CanSimulator>(so);
         if (!simulator->start(r.can.plugin, r.can.interfaceName, &why)) {
             if (error)

@@ -5,6 +5,7 @@
 // 0x60) on Qt's virtualcan bus. They check the bytes ImuDesk sends, answer with values of their
 // own, and ImuDesk must show those values. This executable uses its own virtualcan TCP port.
 #include "device/can_session.h"
+#include "device/link_opener.h"
 #include "settings/can_setting_catalog.h"
 #include "../common/test_main.h"
 
@@ -242,6 +243,35 @@ private Q_SLOTS:
         m_device.keeps.clear();
         QVERIFY(!r.ok);
         QVERIFY2(r.message.contains(QLatin1String("read back 0, expected 1")), qPrintable(r.message));
+    }
+
+    // A CAN FD bus (v1.7.1 7.19.30): the link opened as the window and the CLI open it, with a
+    // simulated J1939 module whose CAN FD output is on: its 64-byte FF5A frames arrive as FD
+    // frames and are decoded into samples (attitude and temperature among them, 7.21.39).
+    void canFdBusCarriesFf5a()
+    {
+        device::CanSessionOptions o;
+        o.plugin = kPlugin;
+        o.interfaceName = QStringLiteral("tcp://127.0.0.1:35492/can1");
+        o.protocol = CanProtocol::J1939;
+        o.canFd = true;
+        o.dataBitrate = 4000000;
+        device::LinkRequest request = device::LinkRequest::canBus(o);
+        request.simulate = true;
+        QString error;
+        device::LinkOpener::Opened link = device::LinkOpener::openNow(request, &error);
+        QVERIFY2(link.link, qPrintable(error));
+        auto *session = qobject_cast<CanSession *>(link.link.get());
+        QVERIFY(session);
+        int fdFrames = 0;
+        connect(session, &CanSession::framesSeen, this, [&](const device::CanFrameEvents &ev) {
+            for (const auto &e : ev)
+                fdFrames += !e.transmitted && e.frame.fd && e.frame.len == 64 && (e.frame.id & 0x00FFFF00u) == 0x00FF5A00u;
+        });
+        link.start();
+        QTRY_VERIFY_WITH_TIMEOUT(fdFrames >= 3, 5000);
+        QTRY_VERIFY(session->store().latest().has_value());
+        link.link.reset();
     }
 };
 

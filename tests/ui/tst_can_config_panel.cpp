@@ -2,6 +2,7 @@
 // controls follow the detected protocol, Apply writes and the log shows the confirmation,
 // Send SYNC makes a SYNC-mode TPDO answer, the node scan shows progress and its result.
 #include "bus/can_config_panel.h"
+#include "bus/can_settings_table.h"
 #include "device/can_session.h"
 #include "sim/can_simulator.h"
 #include "../common/test_main.h"
@@ -159,6 +160,84 @@ private Q_SLOTS:
         QCOMPARE(panel.pdoModeChoice()->count(), 2);
         QVERIFY(!panel.workModeChoice()->isEnabled());
         QVERIFY(!panel.allOnButton()->isEnabled());
+        panel.setSession(nullptr);
+    }
+
+    // The settings page reads before it writes (issue 35): the module's values as soon as the
+    // protocol is known, a changed value written and read back ("verified"), a value the module
+    // does not keep marked with what it holds, and the HEC495's settings "not readable".
+    void settingsPageReadsBeforeItWrites()
+    {
+        const QString iface = QStringLiteral("tcp://127.0.0.1:35487/can2");
+        sim::CanSimOptions o;
+        o.protocol = protocol::can::CanProtocol::J1939;
+        sim::CanSimulator simulator(o);
+        QString err;
+        QVERIFY2(simulator.start(QStringLiteral("virtualcan"), iface, &err), qPrintable(err));
+        device::CanSession session;
+        device::CanSessionOptions so;
+        so.interfaceName = iface;
+        so.protocol = protocol::can::CanProtocol::J1939;
+        so.node = 8;
+        ui::CanConfigPanel panel;
+        panel.resize(700, 600);
+        panel.show();
+        ui::CanSettingsTable *table = panel.settingsTable();
+        panel.setSession(&session);
+        session.open(so);
+        // Read first: every row shows what the simulated module holds (v1.7.1 defaults).
+        QTRY_COMPARE(table->moduleText(QStringLiteral("bitrate")), QStringLiteral("500000"));
+        QTRY_COMPARE(table->moduleText(QStringLiteral("interval-ff37")), QStringLiteral("100"));
+        QCOMPARE(table->moduleText(QStringLiteral("node-id")), QStringLiteral("8"));
+        QTRY_VERIFY(table->writeButton() && !table->busy());
+        QVERIFY(!table->writeButton()->isEnabled()); // nothing changed yet
+        // A new value: written, read back, verified; the module holds it.
+        QVERIFY(table->setNewValue(QStringLiteral("interval-ff37"), QStringLiteral("50")));
+        QVERIFY(table->setNewValue(QStringLiteral("bitrate"), QStringLiteral("250000")));
+        QVERIFY(table->writeButton()->isEnabled());
+        QSignalSpy idle(table, &ui::CanSettingsTable::idle);
+        table->writeButton()->click();
+        QTRY_VERIFY(idle.size() >= 1 && !table->busy());
+        QCOMPARE(table->statusText(QStringLiteral("interval-ff37")), QStringLiteral("verified"));
+        QCOMPARE(table->statusText(QStringLiteral("bitrate")), QStringLiteral("verified"));
+        QCOMPARE(table->moduleText(QStringLiteral("bitrate")), QStringLiteral("250000"));
+        QCOMPARE(simulator.device().hipnuc().pgnIntervalMs.at(0xFF37), 50u);
+        QCOMPARE(simulator.device().hipnuc().baudCode, 3u);
+        // FF5A (CAN FD frame 0): the module without CAN FD refuses it, and the row says so
+        // instead of "verified".
+        QVERIFY(table->setNewValue(QStringLiteral("interval-ff5a"), QStringLiteral("20")));
+        table->writeButton()->click();
+        QTRY_VERIFY(!table->statusText(QStringLiteral("interval-ff5a")).isEmpty()
+                    && table->statusText(QStringLiteral("interval-ff5a")) != QStringLiteral("writing…"));
+        QVERIFY2(table->statusText(QStringLiteral("interval-ff5a")).startsWith(QStringLiteral("not confirmed")),
+                 qPrintable(table->statusText(QStringLiteral("interval-ff5a"))));
+        panel.setSession(nullptr);
+    }
+
+    void settingsPageSaysWhatCannotBeRead()
+    {
+        const QString iface = QStringLiteral("tcp://127.0.0.1:35487/can3");
+        sim::CanSimOptions o;
+        o.protocol = protocol::can::CanProtocol::CanOpen;
+        o.hec495 = true;
+        sim::CanSimulator simulator(o);
+        QString err;
+        QVERIFY2(simulator.start(QStringLiteral("virtualcan"), iface, &err), qPrintable(err));
+        device::CanSession session;
+        device::CanSessionOptions so;
+        so.interfaceName = iface;
+        so.protocol = protocol::can::CanProtocol::Hec495;
+        ui::CanConfigPanel panel;
+        panel.show();
+        ui::CanSettingsTable *table = panel.settingsTable();
+        panel.setSession(&session);
+        session.open(so);
+        QTRY_COMPARE(table->moduleText(QStringLiteral("pdo-mode")), QStringLiteral("not readable"));
+        QVERIFY(!table->readButton()->isEnabled());
+        QVERIFY(table->setNewValue(QStringLiteral("pdo-rate"), QStringLiteral("100 Hz")));
+        table->writeButton()->click();
+        QTRY_VERIFY(table->statusText(QStringLiteral("pdo-rate")).startsWith(QStringLiteral("confirmed by its reply")));
+        QCOMPARE(simulator.device().hec().rateCode, 6u);
         panel.setSession(nullptr);
     }
 };

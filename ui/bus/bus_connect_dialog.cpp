@@ -1,12 +1,15 @@
 #include "bus/bus_connect_dialog.h"
 
 #include "device/can_session.h"
+#include "settings/can_setting_catalog.h"
 
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDialogButtonBox>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
+#include <QHBoxLayout>
+#include <QLabel>
 #include <QPushButton>
 #include <QSerialPortInfo>
 #include <QSpinBox>
@@ -133,12 +136,34 @@ CanConnectDialog::CanConnectDialog(QWidget *parent) : QDialog(parent)
     m_interface->setToolTip(tr("The interface of the plugin, e.g. can0"));
     form->addRow(tr("&Interface:"), m_interface);
     m_bitrate = new QComboBox(this);
-    m_bitrate->addItem(tr("Keep the interface's setting"), 0);
-    for (int b : {125000, 250000, 500000, 1000000})
-        m_bitrate->addItem(tr("%1 kbit/s").arg(b / 1000), b);
-    m_bitrate->setCurrentIndex(m_bitrate->findData(500000));
-    m_bitrate->setToolTip(tr("Bit rate of the bus; HiPNUC modules default to 500 kbit/s"));
+    m_bitrate->setObjectName(QStringLiteral("canBitrate"));
+    m_bitrate->setToolTip(tr("Bit rate of the bus: the rates the chosen device's manual lists, its factory rate "
+                             "chosen first (HiPNUC 500 kbit/s, HEC495 250 kbit/s)"));
     form->addRow(tr("&Bit rate:"), m_bitrate);
+    m_rateHint = new QLabel(this);
+    m_rateHint->setObjectName(QStringLiteral("canRateHint"));
+    m_rateHint->setWordWrap(true);
+    form->addRow(QString(), m_rateHint);
+    // CAN FD (v1.7.1 7.19.30): the arbitration phase at the bit rate above, the data phase
+    // faster ("usually 4 Mbps"); the J1939 FF5A frame of 64 bytes comes only on such a bus.
+    m_fd = new QCheckBox(tr("CAN FD"), this);
+    m_fd->setObjectName(QStringLiteral("canFd"));
+    m_fd->setToolTip(tr("A CAN FD bus: needed for the J1939 FF5A frame (64 bytes); the module must have CAN FD "
+                        "output enabled, which its manual gives no command for"));
+    m_dataBitrate = new QComboBox(this);
+    m_dataBitrate->setObjectName(QStringLiteral("canDataBitrate"));
+    for (int b : {1000000, 2000000, 4000000, 5000000, 8000000})
+        m_dataBitrate->addItem(tr("%1 Mbit/s").arg(b / 1000000), b);
+    m_dataBitrate->setCurrentIndex(m_dataBitrate->findData(4000000));
+    m_dataBitrate->setToolTip(tr("Bit rate of the CAN FD data phase (the manual: usually 4 Mbit/s)"));
+    auto *fdRow = new QWidget(this);
+    auto *fdLayout = new QHBoxLayout(fdRow);
+    fdLayout->setContentsMargins(0, 0, 0, 0);
+    fdLayout->addWidget(m_fd);
+    fdLayout->addWidget(m_dataBitrate, 1);
+    form->addRow(tr("&Data phase:"), fdRow);
+    connect(m_fd, &QCheckBox::toggled, m_dataBitrate, &QWidget::setEnabled);
+    m_dataBitrate->setEnabled(false);
     m_protocol = new QComboBox(this);
     m_protocol->addItem(tr("Detect from the traffic"), int(protocol::can::CanProtocol::Auto));
     m_protocol->addItem(QStringLiteral("J1939"), int(protocol::can::CanProtocol::J1939));
@@ -172,7 +197,9 @@ CanConnectDialog::CanConnectDialog(QWidget *parent) : QDialog(parent)
         m_hecExtended->setEnabled(m_protocol->currentData().toInt() == int(protocol::can::CanProtocol::Hec495));
     };
     connect(m_protocol, &QComboBox::currentIndexChanged, this, hecOnly);
+    connect(m_protocol, &QComboBox::currentIndexChanged, this, &CanConnectDialog::refreshRates);
     hecOnly();
+    refreshRates();
     const int virt = m_plugin->findText(QStringLiteral("virtualcan"));
     if (virt >= 0) {
         m_plugin->setCurrentIndex(virt);
@@ -180,6 +207,46 @@ CanConnectDialog::CanConnectDialog(QWidget *parent) : QDialog(parent)
         m_protocol->setCurrentIndex(1);
     }
     refreshInterfaces();
+}
+
+void CanConnectDialog::refreshRates()
+{
+    const auto protocol = protocol::can::CanProtocol(m_protocol->currentData().toInt());
+    const settings::CanBitrates rates = settings::canBitrates(protocol);
+    const int chosen = m_bitrate->currentData().toInt();
+    const bool keepChoice = m_bitrate->count() > 0 && m_protocolShown == int(protocol);
+    m_bitrate->clear();
+    m_bitrate->addItem(tr("Keep the interface's setting"), 0);
+    for (int r : rates.rates)
+        m_bitrate->addItem(r == rates.factory && protocol != protocol::can::CanProtocol::Auto
+                               ? tr("%1 kbit/s (factory)").arg(r / 1000)
+                               : tr("%1 kbit/s").arg(r / 1000),
+                           r);
+    const int index = m_bitrate->findData(keepChoice ? chosen : rates.factory);
+    m_bitrate->setCurrentIndex(index >= 0 ? index : m_bitrate->findData(rates.factory));
+    m_protocolShown = int(protocol);
+    // What the module itself can be switched to (its own bit-rate setting).
+    QStringList own;
+    for (int r : device::CanSession::moduleBitrates(protocol))
+        own << QString::number(r / 1000);
+    switch (protocol) {
+    case protocol::can::CanProtocol::J1939:
+        m_rateHint->setText(tr("The module can be switched to %1 kbit/s (register 0x9A, after save and reset).")
+                                .arg(own.join(QStringLiteral(", "))));
+        break;
+    case protocol::can::CanProtocol::CanOpen:
+        m_rateHint->setText(tr("The module can be switched to %1 kbit/s (object 0x209A, after save and reset; no "
+                               "800 kbit/s in CANopen).")
+                                .arg(own.join(QStringLiteral(", "))));
+        break;
+    case protocol::can::CanProtocol::Hec495:
+        m_rateHint->setText(tr("The compass can be switched to %1 kbit/s (object 0x1020, after a power cycle).")
+                                .arg(own.join(QStringLiteral(", "))));
+        break;
+    case protocol::can::CanProtocol::Auto:
+        m_rateHint->setText(tr("Choose the protocol to see the rates its devices use."));
+        break;
+    }
 }
 
 void CanConnectDialog::refreshInterfaces()
@@ -201,6 +268,8 @@ device::CanSessionOptions CanConnectDialog::options() const
     o.plugin = m_plugin->currentText();
     o.interfaceName = m_interface->currentText().trimmed();
     o.bitrate = m_bitrate->currentData().toInt();
+    o.canFd = m_fd->isChecked();
+    o.dataBitrate = o.canFd ? m_dataBitrate->currentData().toInt() : 0;
     o.protocol = protocol::can::CanProtocol(m_protocol->currentData().toInt());
     if (simulate() && o.protocol == protocol::can::CanProtocol::Auto)
         o.protocol = protocol::can::CanProtocol::J1939;

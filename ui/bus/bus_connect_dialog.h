@@ -16,6 +16,7 @@
 
 class QCheckBox;
 class QComboBox;
+class QLabel;
 class QDialogButtonBox;
 class QDoubleSpinBox;
 class QLineEdit;
@@ -62,9 +63,15 @@ public:
     QComboBox *protocolCombo() const { return m_protocol; }
     QCheckBox *simulateCheck() const { return m_simulate; }
     QCheckBox *hec495ExtendedCheck() const { return m_hecExtended; }
+    QComboBox *bitrateCombo() const { return m_bitrate; }
+    QLabel *rateHint() const { return m_rateHint; }
+    QCheckBox *fdCheck() const { return m_fd; }
+    QComboBox *dataBitrateCombo() const { return m_dataBitrate; }
 
 private:
     void refreshInterfaces();
+    // The bit rates the chosen protocol's manual lists, its factory rate preselected.
+    void refreshRates();
 
     QComboBox *m_plugin = nullptr;
     QComboBox *m_interface = nullptr;
@@ -74,6 +81,10 @@ private:
     QComboBox *m_firmware = nullptr;
     QCheckBox *m_simulate = nullptr;
     QCheckBox *m_hecExtended = nullptr; // HEC495: the extended-frame variant
+    QLabel *m_rateHint = nullptr;
+    QCheckBox *m_fd = nullptr;
+    QComboBox *m_dataBitrate = nullptr;
+    int m_protocolShown = -1;
 };
 
 } // namespace imudesk::ui

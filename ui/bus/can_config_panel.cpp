@@ -1,5 +1,6 @@
 #include "bus/can_config_panel.h"
 
+#include "bus/can_settings_table.h"
 #include "device/can_session.h"
 #include "protocol/can/canopen.h"
 #include "protocol/can/hec495_can.h"
@@ -17,6 +18,7 @@
 #include <QProgressBar>
 #include <QPushButton>
 #include <QSpinBox>
+#include <QTabWidget>
 #include <QVBoxLayout>
 
 namespace imudesk::ui {
@@ -94,9 +96,32 @@ CanConfigPanel::CanConfigPanel(QWidget *parent)
     form->addRow(tr("Every node:"), row(m_allOn, m_allOff));
     form->addRow(tr("Settings:"), row(m_save, m_reset, m_factory));
     form->addRow(tr("Discovery:"), row(m_scan, m_scanProgress, m_cancelScan));
+    // Two pages: every setting with the module's value beside the new one (each row says what
+    // its write found), and the actions (output, SYNC, attitude, save, scan) with their log.
+    m_settings = new CanSettingsTable(this);
+    m_settings->setObjectName(QStringLiteral("canSettings"));
+    auto *actions = new QWidget(this);
+    auto *actionsLayout = new QVBoxLayout(actions);
+    actionsLayout->addLayout(form);
+    actionsLayout->addWidget(m_log, 1);
+    m_tabs = new QTabWidget(this);
+    m_tabs->setObjectName(QStringLiteral("canConfigTabs"));
+    m_tabs->setDocumentMode(true);
+    m_tabs->addTab(m_settings, tr("Settings"));
+    m_tabs->addTab(actions, tr("Actions"));
+    // The dock's height is the page on show's, not the tallest page's: a hidden page asks for
+    // no room (QStackedLayout honours an ignored size policy).
+    auto sizeToCurrent = [this](int current) {
+        for (int i = 0; i < m_tabs->count(); ++i) {
+            const auto policy = i == current ? QSizePolicy::Preferred : QSizePolicy::Ignored;
+            m_tabs->widget(i)->setSizePolicy(policy, policy);
+        }
+    };
+    connect(m_tabs, &QTabWidget::currentChanged, this, sizeToCurrent);
+    sizeToCurrent(m_tabs->currentIndex());
     auto *lay = new QVBoxLayout(this);
-    lay->addLayout(form);
-    lay->addWidget(m_log, 1);
+    lay->setContentsMargins(0, 0, 0, 0);
+    lay->addWidget(m_tabs);
 
     connect(m_applyPeriod, &QPushButton::clicked, this, &CanConfigPanel::applyPeriod);
     connect(m_syncMode, &QCheckBox::clicked, this, [this](bool on) {
@@ -202,6 +227,7 @@ void CanConfigPanel::setSession(device::CanSession *session)
     m_connections.clear();
     m_pending.clear();
     m_session = session;
+    m_settings->setSession(session);
     if (session) {
         m_connections << connect(session, &device::CanSession::requestFinished, this, &CanConfigPanel::onResult);
         m_connections << connect(session, &device::CanSession::protocolDetected, this, &CanConfigPanel::refreshForProtocol);

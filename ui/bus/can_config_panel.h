@@ -5,7 +5,8 @@
 // inclinometer axis directions, the HEC495's PDO and work modes, output on/off for the node or
 // every node (NMT), save / reset / factory, and the node scan with progress and cancel. Every
 // write is confirmed by the device's reply, read back, or (NMT) seen in the PDOs; the outcome
-// goes to the panel's log. The rows a protocol does not have are disabled.
+// goes to the panel's log. The rows a protocol does not have are disabled. A first page lists
+// every setting of the device's catalogue with the value the module holds (CanSettingsTable).
 #include "device/can_session.h"
 
 #include <QPointer>
@@ -19,9 +20,12 @@ class QPlainTextEdit;
 class QProgressBar;
 class QPushButton;
 class QSpinBox;
+class QTabWidget;
 QT_END_NAMESPACE
 
 namespace imudesk::ui {
+
+class CanSettingsTable;
 
 class CanConfigPanel : public QWidget {
     Q_OBJECT
@@ -54,6 +58,9 @@ public:
     QPushButton *applyModesButton() const { return m_applyModes; }
     QPushButton *allOnButton() const { return m_allOn; }
     QPushButton *allOffButton() const { return m_allOff; }
+    // Every setting with the module's value (the first page).
+    CanSettingsTable *settingsTable() const { return m_settings; }
+    QTabWidget *tabs() const { return m_tabs; }
 
 Q_SIGNALS:
     // A request finished (also written to the log).
@@ -66,6 +73,8 @@ private:
     void applyPeriod();
 
     QPointer<device::CanSession> m_session;
+    CanSettingsTable *m_settings = nullptr;
+    QTabWidget *m_tabs = nullptr;
     QLabel *m_protocol;
     QComboBox *m_output;
     QSpinBox *m_period;
