@@ -6166,7 +6166,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>未傳送</translation>
     </message>
     <message>
-        <location line="+10" />
+        <location line="+11" />
         <source>the device has not been read yet (its model and firmware decide which settings exist)</source>
         <translation>尚未讀取裝置（可用的設定取決於其型號和韌體）</translation>
     </message>
@@ -6177,12 +6177,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
     <message>
         <location line="+18" />
-        <location line="+248" />
+        <location line="+268" />
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location line="-152" />
+        <location line="-172" />
         <source>the device did not tell its model and firmware (LOG VERSION: %1)</source>
         <translation>裝置未回報其型號和韌體（LOG VERSION：%1）</translation>
     </message>
@@ -6197,35 +6197,45 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>LOG COMCONFIG 失敗（%1）：顯示的設定可能不是最新的</translation>
     </message>
     <message>
-        <location line="+16" />
+        <location line="+18" />
         <location line="+13" />
-        <location line="+111" />
+        <location line="+129" />
         <source>another configuration step is still running</source>
         <translation>另一個配置步驟仍在執行中</translation>
     </message>
     <message>
-        <location line="-57" />
-        <location line="+79" />
+        <location line="-75" />
+        <location line="+97" />
         <source>the device answered %1</source>
         <translation>裝置回應 %1</translation>
     </message>
     <message>
-        <location line="-59" />
+        <location line="-79" />
+        <source>an empty reply</source>
+        <translation>空回應</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>the module did not answer the read-back (%1); check it with LOG COMCONFIG</source>
+        <translation>模組未回應讀回（%1）；請用 LOG COMCONFIG 檢查</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>LOG COMCONFIG did not report %1 in a form ImuDesk reads; the reply was: %2</source>
+        <translation>LOG COMCONFIG 未以 ImuDesk 能讀取的形式回報 %1；回應為：%2</translation>
+    </message>
+    <message>
+        <location line="+5" />
         <source>the device reports %1</source>
         <translation>裝置回報 %1</translation>
     </message>
     <message>
-        <location line="+0" />
-        <source>nothing</source>
-        <translation>無</translation>
-    </message>
-    <message>
-        <location line="+1" />
+        <location line="-261" />
         <source>could not be read back</source>
         <translation>無法回讀</translation>
     </message>
     <message>
-        <location line="+31" />
+        <location line="+292" />
         <source>unknown action '%1'</source>
         <translation>未知的操作「%1」</translation>
     </message>
@@ -7586,12 +7596,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>HEC495 工作模式，物件 0x6245：0x02 輸出俯仰、橫滾、加速度和角速度（預設）；0x0A 以 500 Hz 輸出角速度</translation>
     </message>
     <message>
-        <location line="+206" />
+        <location line="+219" />
         <source>%1 kbit/s</source>
         <translation>%1 kbit/s</translation>
     </message>
     <message>
-        <location line="-215" />
+        <location line="-228" />
         <source>Heading reset (J1939 1)</source>
         <translation>航向角重設（J1939 1）</translation>
     </message>
@@ -7741,7 +7751,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>節點探索：</translation>
     </message>
     <message>
-        <location line="+9" />
+        <location line="+12" />
         <source>Settings</source>
         <translation>設定</translation>
     </message>
@@ -7751,7 +7761,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>操作</translation>
     </message>
     <message>
-        <location line="+8" />
+        <location line="+18" />
         <source>SYNC mode on</source>
         <translation>SYNC 模式開啟</translation>
     </message>
@@ -8211,7 +8221,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::CanSettingsTable</name>
     <message>
-        <location filename="../ui/bus/can_settings_table.cpp" line="+59" />
+        <location filename="../ui/bus/can_settings_table.cpp" line="+56" />
         <source>Setting</source>
         <translation>設定項</translation>
     </message>
@@ -8251,12 +8261,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>寫入已更改的新值；每項都會讀回並標記是否已校驗</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+3" />
         <source>The value on the module is read before anything is written; a write is read back.</source>
         <translation>寫入前先讀取模組中的值；寫入後會讀回校驗。</translation>
     </message>
     <message>
-        <location line="+62" />
+        <location line="+65" />
         <source>not readable</source>
         <translation>無法讀取</translation>
     </message>
@@ -8291,7 +8301,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>未生效：模組中的值為 %1</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+6" />
         <source>not confirmed: %1</source>
         <translation>未確認：%1</translation>
     </message>
@@ -8774,7 +8784,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>%1=%2：%3 %4</translation>
     </message>
     <message>
-        <location line="+10" />
+        <location line="+14" />
         <source>%1 done</source>
         <translation>%1 完成</translation>
     </message>
@@ -8859,9 +8869,14 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>鏈路：%1 / %2 位元組/秒（%3 %），波特率 %4</translation>
     </message>
     <message>
-        <location line="+35" />
+        <location line="+39" />
         <source>✗ %1</source>
         <translation>✗ %1</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>? %1</source>
+        <translation>? %1</translation>
     </message>
     <message>
         <location line="+26" />

@@ -17,7 +17,9 @@ class CanSimDevice;
 
 namespace imudesk::cli {
 
-enum ExitCode { ExitOk = 0, ExitFailure = 1, ExitUsage = 2, ExitInterrupted = 130 };
+// ExitUnconfirmed: a setting was written but the module's read-back did not say whether it
+// was taken (config set, profile apply); ExitFailure covers "the module holds another value".
+enum ExitCode { ExitOk = 0, ExitFailure = 1, ExitUsage = 2, ExitUnconfirmed = 3, ExitInterrupted = 130 };
 
 // Writes a one-line error "imudesk-cli: <message>" to stderr and returns ExitFailure.
 int fail(const QString &message, int code = ExitFailure);

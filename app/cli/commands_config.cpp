@@ -159,9 +159,18 @@ int printReport(const ConfigurationController::ApplyReport &r)
         out(QStringLiteral("%1=%2\t%3%4")
                 .arg(c.key, c.requested, ConfigurationController::outcomeName(c.outcome),
                      c.detail.isEmpty() ? QString() : QStringLiteral(" (%1)").arg(c.detail)));
-    if (!r.ok)
-        return fail(r.error.isEmpty() ? QStringLiteral("not every setting was taken (see above)") : r.error);
-    return ExitOk;
+    if (r.ok)
+        return ExitOk;
+    // Only unconfirmed (the read-back said nothing) and no other failure: exit 3, not 1.
+    bool onlyUnconfirmed = r.error.isEmpty();
+    for (const auto &c : r.results)
+        onlyUnconfirmed = onlyUnconfirmed
+                       && (c.outcome == ConfigurationController::Outcome::Verified
+                           || c.outcome == ConfigurationController::Outcome::Unconfirmed);
+    if (onlyUnconfirmed)
+        return fail(QStringLiteral("written, but the module's LOG COMCONFIG reply did not confirm every setting (see above)"),
+                    ExitUnconfirmed);
+    return fail(r.error.isEmpty() ? QStringLiteral("not every setting was taken (see above)") : r.error);
 }
 
 int cmdSet(Device &d, const QString &port, const QStringList &assignments, bool save, bool reboot, bool dryRun)
@@ -258,7 +267,9 @@ int cmdApply(const QStringList &ports, int baud, const QString &path, bool save)
                          out(QStringLiteral("%1\t%2\t%3\t%4\t%5 changed%6")
                                  .arg(r.port, r.serial.isEmpty() ? QStringLiteral("-") : r.serial,
                                       r.product.isEmpty() ? QStringLiteral("-") : r.product,
-                                      r.ok ? QStringLiteral("OK") : QStringLiteral("FAILED"))
+                                      r.ok                  ? QStringLiteral("OK")
+                                      : r.onlyUnconfirmed   ? QStringLiteral("UNCONFIRMED")
+                                                            : QStringLiteral("FAILED"))
                                  .arg(r.changed)
                                  .arg(r.problems.isEmpty() ? QString()
                                                            : QStringLiteral("\t") + r.problems.join(QLatin1String("; "))));
@@ -267,11 +278,18 @@ int cmdApply(const QStringList &ports, int baud, const QString &path, bool save)
     waitFor([&] { return !batch.running(); }, -1);
     if (interrupted())
         return fail(QStringLiteral("interrupted"), ExitInterrupted);
-    int failed = 0;
-    for (const auto &r : batch.reports())
-        failed += r.ok ? 0 : 1;
+    int failed = 0, unconfirmed = 0;
+    for (const auto &r : batch.reports()) {
+        failed += r.ok || r.onlyUnconfirmed ? 0 : 1;
+        unconfirmed += !r.ok && r.onlyUnconfirmed ? 1 : 0;
+    }
     if (failed)
         return fail(QStringLiteral("%1 of %2 devices failed").arg(failed).arg(batch.reports().size()));
+    if (unconfirmed)
+        return fail(QStringLiteral("%1 of %2 devices: written, but their LOG COMCONFIG reply did not confirm every setting")
+                        .arg(unconfirmed)
+                        .arg(batch.reports().size()),
+                    ExitUnconfirmed);
     return ExitOk;
 }
 

@@ -26,6 +26,7 @@ QString ConfigurationController::outcomeName(Outcome o)
     case Outcome::Refused: return tr("refused (ERR)");
     case Outcome::Timeout: return tr("no reply");
     case Outcome::NotSent: return tr("not sent");
+    case Outcome::Unconfirmed: return tr("could not be read back");
     }
     return {};
 }
@@ -169,6 +170,8 @@ void ConfigurationController::read(std::function<void(bool, const QString &)> do
             }
             const model::DeviceIdentity id = m_config.identity;
             m_config = DeviceConfiguration::fromComConfig(id, c.values);
+            for (const std::string &line : c.lines)
+                m_config.rawLines << QString::fromStdString(line);
             Q_EMIT configurationChanged();
             done(true, QString());
         });
@@ -259,14 +262,32 @@ void ConfigurationController::finishApply()
         report.error = m_applyError;
         if (!ok && report.error.isEmpty())
             report.error = error;
+        // What the reply showed, for a setting it did not name (at most a few lines).
+        QStringList shown = m_config.rawLines.mid(0, 4);
+        if (m_config.rawLines.size() > 4)
+            shown << QStringLiteral("…");
+        const QString raw = shown.isEmpty() ? tr("an empty reply") : shown.join(QStringLiteral(" | "));
         for (ChangeResult &r : m_results) {
             const auto v = m_config.value(r.key);
             r.deviceValue = v.value_or(QString());
-            if (r.outcome == Outcome::Verified && (!ok || !v || *v != r.requested)) {
+            if (r.outcome != Outcome::Verified)
+                continue;
+            if (!ok) {
+                // No reply to read back from: neither taken nor refused, as far as anyone knows.
+                r.outcome = Outcome::Unconfirmed;
+                if (r.detail.isEmpty())
+                    r.detail = tr("the module did not answer the read-back (%1); check it with LOG COMCONFIG").arg(error);
+            } else if (!v) {
+                // The reply does not name the setting in a form ImuDesk reads: say so, with the
+                // reply, instead of "not taken".
+                r.outcome = Outcome::Unconfirmed;
+                if (r.detail.isEmpty())
+                    r.detail = tr("LOG COMCONFIG did not report %1 in a form ImuDesk reads; the reply was: %2")
+                                   .arg(QLatin1String(SettingCatalog::find(r.key)->comConfigKey), raw);
+            } else if (*v != r.requested) {
                 r.outcome = Outcome::Mismatch;
                 if (r.detail.isEmpty())
-                    r.detail = ok ? tr("the device reports %1").arg(v.value_or(tr("nothing")))
-                                  : tr("could not be read back");
+                    r.detail = tr("the device reports %1").arg(*v);
             }
         }
         report.results = m_results;

@@ -35,7 +35,10 @@ public:
         QStringList errors;                    // refused changes: nothing is sent when not empty
         bool ok() const { return errors.isEmpty(); }
     };
-    enum class Outcome { Verified, Mismatch, Refused, Timeout, NotSent };
+    // Mismatch: the module reports another value; Unconfirmed: its reply to LOG COMCONFIG did
+    // not say (a reply in a format ImuDesk does not understand, or no reply): the write may or
+    // may not have been taken.
+    enum class Outcome { Verified, Mismatch, Refused, Timeout, NotSent, Unconfirmed };
     struct ChangeResult {
         QString key;
         QString requested;

@@ -16,6 +16,7 @@ struct DeviceConfiguration {
     model::DeviceIdentity identity;
     std::map<QString, QString> values; // setting key -> canonical value
     QStringList unreadable;            // COMCONFIG lines no setting could understand ("KEY=VALUE")
+    QStringList rawLines;              // the LOG COMCONFIG reply as it came (before OK)
 
     // From the KEY=VALUE lines of a LOG COMCONFIG reply. Settings the device's edition or
     // family does not have are ignored.

@@ -113,6 +113,12 @@ void ProfileBatch::onApplied(const ConfigurationController::ApplyReport &report)
     if (!report.error.isEmpty())
         m_current.problems << report.error;
     m_current.ok = report.ok;
+    bool unconfirmedOnly = !report.ok && report.error.isEmpty();
+    for (const auto &r : report.results)
+        unconfirmedOnly = unconfirmedOnly
+                       && (r.outcome == ConfigurationController::Outcome::Verified
+                           || r.outcome == ConfigurationController::Outcome::Unconfirmed);
+    m_current.onlyUnconfirmed = unconfirmedOnly;
     if (report.ok && m_save)
         m_controller->save();
     else

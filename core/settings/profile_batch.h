@@ -27,6 +27,9 @@ public:
         bool ok = false;
         int changed = 0;            // settings applied and verified
         QStringList problems;       // what failed or could not be applied
+        // Not ok only because the module's read-back did not confirm some settings (none was
+        // refused or held at another value).
+        bool onlyUnconfirmed = false;
     };
 
     ProfileBatch(ConfigProfile profile, QStringList ports, QObject *parent = nullptr);

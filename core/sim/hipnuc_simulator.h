@@ -140,6 +140,11 @@ struct SimFaults {
     double unplugAtS = -1;
     // A rotation fixture turns the module through every attitude while its MCAL collects.
     bool magCalFixture = false;
+    // How LOG COMCONFIG answers (the manuals print no format but URFR=<CODE>): ImuDesk's
+    // KEY=VALUE lines; Spaced: lower-case keys, " : " between key and value, three settings a
+    // line separated by "; "; Unlabelled: the values alone, on one line.
+    enum class ComConfigStyle { KeyValue, Spaced, Unlabelled };
+    ComConfigStyle comConfigStyle = ComConfigStyle::KeyValue;
 
     friend bool operator==(const SimFaults &, const SimFaults &) = default;
 };
@@ -149,6 +154,7 @@ struct SimFaults {
 //   wrong-mounting    mountingErrorDeg = {90, 0, 0}           mounting=R/P/Y    degrees
 //   mag-disturbance   magDisturbanceUt = kMagDisturbanceUt    mag-disturbance=U uT >= 0
 //   unplug=T          unplugAtS = T (seconds >= 0)            fixture           magCalFixture
+//   comconfig=spaced|unlabelled   comConfigStyle (LOG COMCONFIG in another format)
 // An empty text is no fault. Words not in `text` keep their value in `out`. On a word or value
 // it does not accept it returns false, and *error (if given) says which and what is accepted.
 bool parseSimFaults(std::string_view text, SimFaults &out, std::string *error = nullptr);

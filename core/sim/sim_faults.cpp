@@ -11,7 +11,8 @@ namespace imudesk::sim {
 namespace {
 
 constexpr const char *kAccepted =
-    "noisy-gyro, noisy-gyro=F, mounting=R/P/Y, wrong-mounting, mag-disturbance, mag-disturbance=U, unplug=T, fixture";
+    "noisy-gyro, noisy-gyro=F, mounting=R/P/Y, wrong-mounting, mag-disturbance, mag-disturbance=U, unplug=T, fixture, "
+    "comconfig=spaced|unlabelled";
 
 std::string_view trimmed(std::string_view s)
 {
@@ -110,6 +111,14 @@ bool parseSimFaults(std::string_view text, SimFaults &out, std::string *error)
             if (hasValue)
                 return fail("fixture takes no value, got '" + shown + "'");
             f.magCalFixture = true;
+        } else if (word == "comconfig") {
+            const std::string style = lower(value);
+            if (style == "spaced")
+                f.comConfigStyle = SimFaults::ComConfigStyle::Spaced;
+            else if (style == "unlabelled")
+                f.comConfigStyle = SimFaults::ComConfigStyle::Unlabelled;
+            else
+                return fail("comconfig= needs spaced or unlabelled, got '" + shown + "'");
         } else {
             return fail("unknown fault '" + shown + "' (accepted: " + kAccepted + ")");
         }
@@ -135,6 +144,10 @@ std::string simFaultsText(const SimFaults &faults)
         add("unplug=" + number(faults.unplugAtS));
     if (faults.magCalFixture)
         add("fixture");
+    if (faults.comConfigStyle == SimFaults::ComConfigStyle::Spaced)
+        add("comconfig=spaced");
+    else if (faults.comConfigStyle == SimFaults::ComConfigStyle::Unlabelled)
+        add("comconfig=unlabelled");
     return out;
 }
 

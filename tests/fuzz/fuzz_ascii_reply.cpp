@@ -114,6 +114,12 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             checkVersion(value);
         }
         checkVersion(std::string(line));
+        // The tolerant reading of KEY=VALUE lines: keys without separators or blanks, values
+        // trimmed.
+        for (const auto &[k, v] : keyValuePairs(line)) {
+            FUZZ_CHECK(!k.empty() && k.find('=') == std::string::npos && k.find(' ') == std::string::npos);
+            FUZZ_CHECK(trimmed(k) && trimmed(v));
+        }
 
         const size_t before = collector.reply().lines.size();
         const bool done = collector.addLine(line);

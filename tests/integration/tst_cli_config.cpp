@@ -25,11 +25,13 @@ Result run(const QStringList &args, int timeoutMs = 60000)
     return imudesk::test::runCli(args, timeoutMs);
 }
 
-std::unique_ptr<sim::PtySimulator> simulator(uint64_t seed, const char *firmware = "1.7.1")
+std::unique_ptr<sim::PtySimulator> simulator(uint64_t seed, const char *firmware = "1.7.1",
+                                             sim::SimFaults::ComConfigStyle comConfig = sim::SimFaults::ComConfigStyle::KeyValue)
 {
     sim::SimOptions o;
     o.seed = seed;
     o.firmware = firmware;
+    o.faults.comConfigStyle = comConfig;
     auto s = std::make_unique<sim::PtySimulator>(o);
     QString error;
     if (!s->start(&error))
@@ -79,6 +81,30 @@ private Q_SLOTS:
         QCOMPARE(c.pmux2Div, 5);
         QCOMPARE(c.coord, 4);
         QCOMPARE(c.message(protocol::hipnuc::Message::HI91).periodMs, 20);
+    }
+
+    // The manual prints no format for LOG COMCONFIG's reply (v1.7.1 4.6.8.14) but URFR=<CODE>.
+    // A module that answers in another KEY : value layout (lower case, three a line) is read
+    // all the same; one whose reply ImuDesk cannot read gets "could not be read back" (exit 3),
+    // never "not taken" (exit 1), and the reply is shown.
+    void readBackOfAnotherFormat()
+    {
+        auto spaced = simulator(5, "1.7.1", sim::SimFaults::ComConfigStyle::Spaced);
+        auto r = run({"config", spaced->devicePath(), "set", "IMU.URFR=205", "ATT.MODE=0"});
+        QVERIFY2(r.code == 0, qPrintable(r.out + r.err));
+        QVERIFY2(r.out.contains(QLatin1String("IMU.URFR=205\tverified")), qPrintable(r.out));
+        QVERIFY(r.out.contains(QLatin1String("ATT.MODE=0\tverified")));
+
+        auto unlabelled = simulator(6, "1.7.1", sim::SimFaults::ComConfigStyle::Unlabelled);
+        r = run({"config", unlabelled->devicePath(), "set", "IMU.URFR=205"});
+        QCOMPARE(r.code, 3);
+        QVERIFY2(r.out.contains(QLatin1String("IMU.URFR=205\tcould not be read back")), qPrintable(r.out));
+        QVERIFY2(!r.out.contains(QLatin1String("not taken")), qPrintable(r.out));
+        QVERIFY2(r.out.contains(QLatin1String("the reply was: 115200 ENABLE")), qPrintable(r.out)); // the raw reply
+        // The module did take it (its running configuration says so).
+        sim::HipnucSimulator::Config running;
+        unlabelled->withDevice([&running](sim::HipnucSimulator &d) { running = d.runningConfig(); });
+        QCOMPARE(running.urfrCode, 205);
     }
 
     void legacyFirmware()

@@ -13,7 +13,9 @@
 #include <QClipboard>
 #include <QComboBox>
 #include <QPushButton>
+#include <QPlainTextEdit>
 #include <QSignalSpy>
+#include <QTextDocument>
 #include <QTableView>
 #include <QTest>
 
@@ -30,12 +32,17 @@ struct Bench {
     sim::PtySimulator simulator;
     device::DeviceSession session;
     ConfigPanel panel{session};
-    explicit Bench(const char *firmware = "1.7.1", const char *model = "HI14") : simulator(opts(firmware, model)) {}
-    static sim::SimOptions opts(const char *firmware, const char *model)
+    explicit Bench(const char *firmware = "1.7.1", const char *model = "HI14",
+                   sim::SimFaults::ComConfigStyle comConfig = sim::SimFaults::ComConfigStyle::KeyValue)
+        : simulator(opts(firmware, model, comConfig))
+    {
+    }
+    static sim::SimOptions opts(const char *firmware, const char *model, sim::SimFaults::ComConfigStyle comConfig)
     {
         sim::SimOptions o;
         o.firmware = firmware;
         o.model = model;
+        o.faults.comConfigStyle = comConfig;
         return o;
     }
     bool start()
@@ -147,6 +154,35 @@ private Q_SLOTS:
         QVERIFY(b.panel.model().pendingChanges().empty());
         QVERIFY(b.panel.replyLog().contains(QLatin1String("> CONFIG IMU URFR 205")));
         QVERIFY(b.panel.replyLog().contains(QLatin1String("IMU.URFR=205: verified")));
+    }
+
+    // A module whose LOG COMCONFIG reply ImuDesk cannot read: the write is "could not be read
+    // back", in amber, with the reply; never "not taken" (issue 35).
+    void unreadableReadBackIsNotNotTaken()
+    {
+        Bench b("1.7.1", "HI14", sim::SimFaults::ComConfigStyle::Unlabelled);
+        QVERIFY(b.start());
+        QVERIFY(b.panel.model().setPending(QStringLiteral("IMU.URFR"), QStringLiteral("205")));
+        QSignalSpy applied(&b.panel.controller(), &ConfigurationController::applyFinished);
+        b.panel.applyPending();
+        QVERIFY(applied.wait(15000));
+        const auto report = applied.first().at(0).value<ConfigurationController::ApplyReport>();
+        QVERIFY(!report.ok);
+        QCOMPARE(int(report.results.size()), 1);
+        QCOMPARE(report.results.front().outcome, ConfigurationController::Outcome::Unconfirmed);
+        QVERIFY2(b.panel.replyLog().contains(QLatin1String("IMU.URFR=205: could not be read back")), qPrintable(b.panel.replyLog()));
+        QVERIFY(!b.panel.replyLog().contains(QLatin1String("not taken")));
+        QVERIFY(b.panel.replyLog().contains(QLatin1String("the reply was: 115200")));
+        QPlainTextEdit *log = nullptr;
+        for (auto *e : b.panel.findChildren<QPlainTextEdit *>())
+            if (e->toPlainText().contains(QLatin1String("could not be read back")))
+                log = e;
+        QVERIFY(log);
+        QVERIFY2(log->document()->toHtml().contains(QLatin1String("#b26a00")), "the line is amber");
+        // The module took it all the same.
+        sim::HipnucSimulator::Config running;
+        b.simulator.withDevice([&running](sim::HipnucSimulator &d) { running = d.runningConfig(); });
+        QCOMPARE(running.urfrCode, 205);
     }
 
     void refusedReplyShown()

@@ -98,6 +98,36 @@ private Q_SLOTS:
         QVERIFY(!splitKeyValue("no equals", k, v));
     }
 
+    // LOG COMCONFIG read tolerantly (issue 35): the manual prints no format but URFR=<CODE>.
+    void keyValuePairs_data()
+    {
+        QTest::addColumn<QString>("line");
+        QTest::addColumn<QString>("pairs"); // "KEY=VALUE|KEY=VALUE"
+        QTest::newRow("ImuDesk's lines") << "ATT_MODE=1" << "ATT_MODE=1";
+        QTest::newRow("blanks around =") << "  URFR = 24 " << "URFR=24";
+        QTest::newRow("lower case") << "att_mode=0" << "ATT_MODE=0";
+        QTest::newRow("matrix keeps its commas") << "URFR=1,0,0,0,1,0,0,0,1" << "URFR=1,0,0,0,1,0,0,0,1";
+        QTest::newRow("a value of words") << "HI91=ONTIME 0.01" << "HI91=ONTIME 0.01";
+        QTest::newRow("three on a line") << "BAUD=115200; LOG=ENABLE; HI91=ONTIME 0.01"
+                                         << "BAUD=115200|LOG=ENABLE|HI91=ONTIME 0.01";
+        QTest::newRow("blank separated") << "ATT_MODE=1 COORD=0" << "ATT_MODE=1|COORD=0";
+        QTest::newRow("colon") << "att_mode : 1; coord : 4" << "ATT_MODE=1|COORD=4";
+        QTest::newRow("words before a colon") << "Att mode: 1" << "ATT_MODE=1";
+        QTest::newRow("dashes and dots") << "IMU.URFR=205" << "IMU.URFR=205";
+        QTest::newRow("a sentence") << "configuration follows" << "";
+        QTest::newRow("values alone") << "115200 ENABLE ONTIME 0.01 OFF" << "";
+        QTest::newRow("text before the key") << "the baud is BAUD=9600" << "";
+    }
+    void keyValuePairs()
+    {
+        QFETCH(QString, line);
+        QFETCH(QString, pairs);
+        QStringList got;
+        for (const auto &[k, v] : imudesk::protocol::hipnuc::keyValuePairs(line.toStdString()))
+            got << QString::fromStdString(k + "=" + v);
+        QCOMPARE(got.join(QLatin1Char('|')), pairs);
+    }
+
     void versions_data()
     {
         QTest::addColumn<QString>("text");

@@ -187,11 +187,15 @@ ConfigPanel::ConfigPanel(device::DeviceSession &session, QWidget *parent)
     });
     connect(m_controller.get(), &ConfigurationController::applyFinished, this,
             [this](const ConfigurationController::ApplyReport &r) {
-                for (const auto &c : r.results)
-                    log(tr("%1=%2: %3 %4")
-                            .arg(c.key, c.requested, ConfigurationController::outcomeName(c.outcome), c.detail)
-                            .trimmed(),
-                        c.outcome != ConfigurationController::Outcome::Verified);
+                for (const auto &c : r.results) {
+                    const QString line = tr("%1=%2: %3 %4")
+                                             .arg(c.key, c.requested, ConfigurationController::outcomeName(c.outcome), c.detail)
+                                             .trimmed();
+                    if (c.outcome == ConfigurationController::Outcome::Unconfirmed)
+                        logUnsure(line);
+                    else
+                        log(line, c.outcome != ConfigurationController::Outcome::Verified);
+                }
                 if (!r.error.isEmpty())
                     log(r.error, true);
                 updateState();
@@ -358,7 +362,16 @@ QString ConfigPanel::linkText() const
 
 void ConfigPanel::log(const QString &line, bool error)
 {
-    m_replies->appendPlainText(error ? tr("✗ %1").arg(line) : line);
+    if (!error) {
+        m_replies->appendPlainText(line);
+        return;
+    }
+    m_replies->appendHtml(QStringLiteral("<span style=\"color:#c62828\">%1</span>").arg(tr("✗ %1").arg(line).toHtmlEscaped()));
+}
+
+void ConfigPanel::logUnsure(const QString &line)
+{
+    m_replies->appendHtml(QStringLiteral("<span style=\"color:#b26a00\">%1</span>").arg(tr("? %1").arg(line).toHtmlEscaped()));
 }
 
 void ConfigPanel::showEvent(QShowEvent *event)

@@ -90,6 +90,9 @@ private:
     void updateState();
     void updatePending();
     void log(const QString &line, bool error = false);
+    // A line the module's read-back left open ("could not be read back"), in amber: not an
+    // error like a refused or differing value (red), not a success either.
+    void logUnsure(const QString &line);
 
     device::DeviceSession &m_session;
     std::unique_ptr<settings::ConfigurationController> m_controller;

@@ -5,6 +5,7 @@
 #include <map>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace imudesk::protocol::hipnuc {
@@ -39,5 +40,12 @@ private:
 
 // Splits "KEY=VALUE"; false when the line has no '=' or an empty key.
 bool splitKeyValue(std::string_view line, std::string &key, std::string &value);
+
+// Every KEY=VALUE pair of a line, read tolerantly (the manual prints no format for the replies
+// of the LOG queries but URFR=<CODE>): keys in upper case with blanks as '_' ("att mode" ->
+// "ATT_MODE"); several pairs on one line ("BAUD=115200; LOG=ENABLE", "A=1 B=2"); blanks around
+// the separator; "Key: value" when the line has no '='. A value keeps its commas and blanks
+// ("URFR=1,0,0,...", "HI91=ONTIME 0.01"). Empty when the line holds no pair.
+std::vector<std::pair<std::string, std::string>> keyValuePairs(std::string_view line);
 
 } // namespace imudesk::protocol::hipnuc
