@@ -4148,7 +4148,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::device::CanFamily</name>
     <message>
-        <location filename="../core/device/can_family.cpp" line="+102" />
+        <location filename="../core/device/can_family.cpp" line="+103" />
         <source>connected to %1</source>
         <translation>已连接到 %1</translation>
     </message>
@@ -4195,6 +4195,11 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
     <message>
         <location line="+13" />
+        <source>no answer within %1 ms: node %2 sent no PGN %3 after "%4" (a PGN its firmware or configuration does not send, or output off)</source>
+        <translation>%1 ms 内没有应答：节点 %2 在“%4”之后没有发送 PGN %3（固件或配置不发送该 PGN，或输出已关闭）</translation>
+    </message>
+    <message>
+        <location line="+7" />
         <source>node %1 sent no TPDO within %2 ms of "%3": if its TPDOs wait for SYNC, send one; otherwise check the node ID and that the module is powered</source>
         <translation>节点 %1 在“%3”后 %2 ms 内未发送 TPDO：若其 TPDO 处于 SYNC 模式，请发送一次 SYNC；否则请检查节点 ID 以及模块是否已上电</translation>
     </message>
@@ -4224,7 +4229,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>设备拒绝了“%1”：%2</translation>
     </message>
     <message>
-        <location line="+15" />
+        <location line="+21" />
         <source>node %1 still sends TPDOs after "%2": check the node ID</source>
         <translation>节点 %1 在“%2”后仍在发送 TPDO：请检查节点 ID</translation>
     </message>
@@ -4714,12 +4719,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>单次触发需要 J1939 设备和数据 PGN</translation>
     </message>
     <message>
-        <location line="+4" />
-        <source>trigger</source>
-        <translation>触发</translation>
-    </message>
-    <message>
-        <location line="+1" />
+        <location line="+7" />
         <source>trigger PGN %1</source>
         <translation>触发 PGN %1</translation>
     </message>

@@ -4148,7 +4148,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::device::CanFamily</name>
     <message>
-        <location filename="../core/device/can_family.cpp" line="+102" />
+        <location filename="../core/device/can_family.cpp" line="+103" />
         <source>connected to %1</source>
         <translation>已連線到 %1</translation>
     </message>
@@ -4195,6 +4195,11 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
     <message>
         <location line="+13" />
+        <source>no answer within %1 ms: node %2 sent no PGN %3 after "%4" (a PGN its firmware or configuration does not send, or output off)</source>
+        <translation>%1 ms 內沒有回應：節點 %2 在「%4」之後沒有傳送 PGN %3（韌體或設定不傳送該 PGN，或輸出已關閉）</translation>
+    </message>
+    <message>
+        <location line="+7" />
         <source>node %1 sent no TPDO within %2 ms of "%3": if its TPDOs wait for SYNC, send one; otherwise check the node ID and that the module is powered</source>
         <translation>節點 %1 在「%3」後 %2 ms 內未傳送 TPDO：若其 TPDO 處於 SYNC 模式，請傳送一次 SYNC；否則請檢查節點 ID 以及模組是否已上電</translation>
     </message>
@@ -4224,7 +4229,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>裝置拒絕了「%1」：%2</translation>
     </message>
     <message>
-        <location line="+15" />
+        <location line="+21" />
         <source>node %1 still sends TPDOs after "%2": check the node ID</source>
         <translation>節點 %1 在「%2」後仍在傳送 TPDO：請檢查節點 ID</translation>
     </message>
@@ -4714,12 +4719,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>單次觸發需要 J1939 裝置和資料 PGN</translation>
     </message>
     <message>
-        <location line="+4" />
-        <source>trigger</source>
-        <translation>觸發</translation>
-    </message>
-    <message>
-        <location line="+1" />
+        <location line="+7" />
         <source>trigger PGN %1</source>
         <translation>觸發 PGN %1</translation>
     </message>

@@ -4,6 +4,7 @@
 #include "io/can_transport.h"
 #include "protocol/can/canopen.h"
 #include "protocol/can/hec495_can.h"
+#include "protocol/can/j1939.h"
 #include "protocol/can/j1939_config.h"
 #include "protocol/can/sdo.h"
 
@@ -307,7 +308,14 @@ void CanFamily::unanswered(const Request &r, RequestResult &result)
         result.reply = m_lastValue;
         return;
     }
-    if (result.status == RequestStatus::Timeout && s.expect == CanJobStep::Expect::PdoFrom) {
+    if (result.status == RequestStatus::Timeout && s.expect == CanJobStep::Expect::PgnFrom) {
+        result.message = tr("no answer within %1 ms: node %2 sent no PGN %3 after \"%4\" (a PGN its firmware or "
+                            "configuration does not send, or output off)")
+                             .arg(s.timeoutMs)
+                             .arg(m_target)
+                             .arg(QString::number(s.pgn, 16).toUpper())
+                             .arg(s.what);
+    } else if (result.status == RequestStatus::Timeout && s.expect == CanJobStep::Expect::PdoFrom) {
         result.message = tr("node %1 sent no TPDO within %2 ms of \"%3\": if its TPDOs wait for SYNC, send one; "
                             "otherwise check the node ID and that the module is powered")
                              .arg(m_target)
@@ -380,6 +388,12 @@ bool CanFamily::matchStep(const CanFrame &f, const DecodedFrame &d)
         }
         return false;
     }
+    case CanJobStep::Expect::PgnFrom:
+        // The frame the trigger asked for, from the module it was sent to (7.23: the request has
+        // no reply; the data frame is the answer).
+        if (f.extended && j1939::parseId(f.id).pgn() == s.pgn && d.node == m_target)
+            answer(true, s.pgn, QString());
+        return false; // the frame still counts as data
     case CanJobStep::Expect::TrafficFrom:
         if (d.node == s.node && d.kind != FrameKind::Unknown && d.kind != FrameKind::Nmt)
             answer(true, uint32_t(s.node), QString());

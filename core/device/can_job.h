@@ -22,6 +22,7 @@ struct CanJobStep {
         TrafficFrom,   // any frame from node `node` (the session followed a node change)
         PdoFrom,       // a TPDO from the target node (NMT start took effect)
         NoPdoFrom,     // no TPDO from the target node until the timeout (NMT stop took effect)
+        PgnFrom,       // a J1939 data frame of PGN `pgn` from the target node (a trigger's answer)
     };
     bool hasTx = true;
     protocol::can::CanFrame tx;
@@ -29,6 +30,7 @@ struct CanJobStep {
     int timeoutMs = 1000;
     int pauseMs = 0;
     int node = -1;                        // TrafficFrom
+    uint32_t pgn = 0;                     // PgnFrom
     std::optional<uint32_t> expectValue;  // read-back must equal this
     int followNode = -1;                  // after this step the session follows this node
     QString what;                         // for messages: "read back PGN FF37 interval"

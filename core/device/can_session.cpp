@@ -532,11 +532,14 @@ quint64 CanSession::trigger(uint32_t pgn)
 {
     if (protocol() != CanProtocol::J1939 || !j1939::isDataPgn(pgn))
         return refuseJob(tr("a one-shot trigger needs a J1939 device and a data PGN"));
+    // Confirmed by the requested PGN arriving from the module (the request itself has no reply).
     CanJobStep s;
     s.tx = j1939::encodeReg(j1939::triggerRequest(node(), m_options.hostAddress, pgn));
-    s.expect = CanJobStep::Expect::Nothing;
-    s.what = tr("trigger");
-    return submitJob(CanJob{0, tr("trigger PGN %1").arg(QString::number(pgn, 16).toUpper()), {s}});
+    s.expect = CanJobStep::Expect::PgnFrom;
+    s.pgn = pgn;
+    s.timeoutMs = m_options.requestTimeoutMs;
+    s.what = tr("trigger PGN %1").arg(QString::number(pgn, 16).toUpper());
+    return submitJob(CanJob{0, s.what, {s}});
 }
 
 void CanSession::sendSync()

@@ -73,6 +73,13 @@ private:
             const uint8_t sa = uint8_t(f.frameId() & 0xFF);
             const uint16_t addr = uint16_t(uint8_t(d[0]) | uint8_t(d[1]) << 8);
             const uint8_t cmd = uint8_t(d[2]);
+            if (cmd == 0x06 && addr == 0x0096) {
+                // 7.23: no reply; the module sends the requested data frame once (here only the
+                // acceleration's, 0x0CFF34[SA]).
+                if (le32(d, 4) == 0xFF34)
+                    m_bus->writeFrame(QCanBusFrame(0x0CFF3400u | kNode, bytes({0, 0, 0, 0, 0x10, 0x27, 0, 0})));
+                return;
+            }
             if (cmd == 0x06 && !keeps.count(addr))
                 registers[addr] = le32(d, 4);
             const auto it = registers.find(addr);
@@ -230,6 +237,22 @@ private Q_SLOTS:
         QVERIFY2(r.ok, qPrintable(r.message));
         QCOMPARE(m_device.seen.first().payload(), bytes({0x2B, 0x17, 0x10, 0x00, 0x2C, 0x01, 0x00, 0x00}));
         QVERIFY(r.message.contains(QLatin1String("verified by reading it back")));
+    }
+
+    // The J1939 one-shot trigger (register 0x96) has no reply: it is confirmed by the requested
+    // PGN arriving from the module, and a PGN that does not come is "no answer within N ms".
+    void triggerIsConfirmedByThePgn()
+    {
+        auto s = openSession(CanProtocol::J1939);
+        QVERIFY(s);
+        m_device.seen.clear();
+        CanRequestResult r = waitResult(*s, s->trigger(0xFF34));
+        QVERIFY2(r.ok, qPrintable(r.message));
+        QCOMPARE(m_device.seen.first().payload(), bytes({0x96, 0x00, 0x06, 0x00, 0x34, 0xFF, 0x00, 0x00}));
+        r = waitResult(*s, s->trigger(0xFF3A));
+        QVERIFY(!r.ok);
+        QVERIFY2(r.message.contains(QLatin1String("no answer within 1000 ms")) && r.message.contains(QLatin1String("FF3A")),
+                 qPrintable(r.message));
     }
 
     // A device that acknowledges a write but keeps its value: "read back 0, expected 1", not "done".
