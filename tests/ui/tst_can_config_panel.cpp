@@ -20,6 +20,41 @@
 
 using namespace imudesk;
 
+namespace {
+
+// A simulated CAN device on its own virtualcan interface and the session the panel shows.
+struct Bus {
+    explicit Bus(const sim::CanSimOptions &o) : simulator(o) {}
+    // Starts the simulator, then opens the session (given protocol, node) shown in panel.
+    bool start(const QString &iface, ui::CanConfigPanel &panel, protocol::can::CanProtocol protocol, int node = -1)
+    {
+        QString err;
+        if (!simulator.start(QStringLiteral("virtualcan"), iface, &err)) {
+            qWarning() << err;
+            return false;
+        }
+        device::CanSessionOptions so;
+        so.interfaceName = iface;
+        so.protocol = protocol;
+        so.node = node;
+        panel.setSession(&session);
+        session.open(so);
+        return true;
+    }
+    sim::CanSimulator simulator;
+    device::CanSession session;
+};
+
+sim::CanSimOptions simOptions(protocol::can::CanProtocol protocol, bool hec495)
+{
+    sim::CanSimOptions o;
+    o.protocol = protocol;
+    o.hec495 = hec495;
+    return o;
+}
+
+} // namespace
+
 class TstCanConfigPanel : public QObject {
     Q_OBJECT
 private Q_SLOTS:
@@ -168,23 +203,13 @@ private Q_SLOTS:
     // does not keep marked with what it holds, and the HEC495's settings "not readable".
     void settingsPageReadsBeforeItWrites()
     {
-        const QString iface = QStringLiteral("tcp://127.0.0.1:35487/can2");
-        sim::CanSimOptions o;
-        o.protocol = protocol::can::CanProtocol::J1939;
-        sim::CanSimulator simulator(o);
-        QString err;
-        QVERIFY2(simulator.start(QStringLiteral("virtualcan"), iface, &err), qPrintable(err));
-        device::CanSession session;
-        device::CanSessionOptions so;
-        so.interfaceName = iface;
-        so.protocol = protocol::can::CanProtocol::J1939;
-        so.node = 8;
         ui::CanConfigPanel panel;
         panel.resize(700, 600);
         panel.show();
         ui::CanSettingsTable *table = panel.settingsTable();
-        panel.setSession(&session);
-        session.open(so);
+        Bus bus(simOptions(protocol::can::CanProtocol::J1939, false));
+        QVERIFY(bus.start(QStringLiteral("tcp://127.0.0.1:35487/can2"), panel, protocol::can::CanProtocol::J1939, 8));
+        sim::CanSimulator &simulator = bus.simulator;
         // Read first: every row shows what the simulated module holds (v1.7.1 defaults).
         QTRY_COMPARE(table->moduleText(QStringLiteral("bitrate")), QStringLiteral("500000"));
         QTRY_COMPARE(table->moduleText(QStringLiteral("interval-ff37")), QStringLiteral("100"));
@@ -216,22 +241,12 @@ private Q_SLOTS:
 
     void settingsPageSaysWhatCannotBeRead()
     {
-        const QString iface = QStringLiteral("tcp://127.0.0.1:35487/can3");
-        sim::CanSimOptions o;
-        o.protocol = protocol::can::CanProtocol::CanOpen;
-        o.hec495 = true;
-        sim::CanSimulator simulator(o);
-        QString err;
-        QVERIFY2(simulator.start(QStringLiteral("virtualcan"), iface, &err), qPrintable(err));
-        device::CanSession session;
-        device::CanSessionOptions so;
-        so.interfaceName = iface;
-        so.protocol = protocol::can::CanProtocol::Hec495;
         ui::CanConfigPanel panel;
         panel.show();
         ui::CanSettingsTable *table = panel.settingsTable();
-        panel.setSession(&session);
-        session.open(so);
+        Bus bus(simOptions(protocol::can::CanProtocol::CanOpen, true));
+        QVERIFY(bus.start(QStringLiteral("tcp://127.0.0.1:35487/can3"), panel, protocol::can::CanProtocol::Hec495));
+        sim::CanSimulator &simulator = bus.simulator;
         QTRY_COMPARE(table->moduleText(QStringLiteral("pdo-mode")), QStringLiteral("not readable"));
         QVERIFY(!table->readButton()->isEnabled());
         QVERIFY(table->setNewValue(QStringLiteral("pdo-rate"), QStringLiteral("100 Hz")));
