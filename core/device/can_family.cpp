@@ -66,6 +66,7 @@ void merge(model::Sample &dst, const model::Sample &src, uint32_t c)
     }
     if (c & CompDeviceTime) dst.deviceTimeMs = src.deviceTimeMs;
     if (c & CompMainStatus) dst.mainStatus = src.mainStatus;
+    if (c & CompUtcTime) dst.utcTimeOfDayS = src.utcTimeOfDayS;
     dst.fields |= src.fields;
     dst.source = src.source;
 }

@@ -12,6 +12,7 @@
 #include "protocol/can/sdo.h"
 #include "protocol/can/sdo_segmented_download.h"
 #include "../common/test_main.h"
+#include "format/sample_json.h"
 
 #include <QTest>
 
@@ -68,7 +69,15 @@ private Q_SLOTS:
         QCOMPARE(t, (j1939::UtcTime{2024, 6, 18, 14, 30, 45, 600}));
         QCOMPARE(j1939::encodeTime(8, t), f);
         CanDecoder d;
-        QVERIFY(d.decode(f).meaning.contains(QStringLiteral("2024-06-18 14:30:45.600")));
+        const DecodedFrame decoded = d.decode(f);
+        QVERIFY(decoded.meaning.contains(QStringLiteral("2024-06-18 14:30:45.600")));
+        // The time of day reaches the samples (values table, recording, JSON) like the serial
+        // side's UTC: 14:30:45.600 = 52245.6 s after midnight.
+        QVERIFY(decoded.sample.has_value());
+        QCOMPARE(decoded.sample->utcTimeOfDayS, 52245.6);
+        QVERIFY(decoded.sample->has(imudesk::model::FieldGnss));
+        QCOMPARE(decoded.components, uint32_t(CompUtcTime));
+        QVERIFY(QString::fromStdString(imudesk::format::sampleToJson(*decoded.sample)).contains(QStringLiteral("\"utc_time_s\":52245.6")));
     }
 
     void j1939DataPgns_data()

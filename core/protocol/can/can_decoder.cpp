@@ -109,6 +109,13 @@ bool CanDecoder::decodeJ1939(const CanFrame &f, DecodedFrame &d)
                             .arg(t.year).arg(t.month, 2, 10, QLatin1Char('0')).arg(t.day, 2, 10, QLatin1Char('0'))
                             .arg(t.hour, 2, 10, QLatin1Char('0')).arg(t.minute, 2, 10, QLatin1Char('0'))
                             .arg(t.second, 2, 10, QLatin1Char('0')).arg(t.ms, 3, 10, QLatin1Char('0'));
+            // The UTC time of day (7.21.31) joins the samples like the serial side's (values
+            // table, recording, JSON "utc_time_s"); the date stays in the monitor's line.
+            model::Sample s = r.data.sample;
+            s.utcTimeOfDayS = t.hour * 3600.0 + t.minute * 60.0 + t.second + t.ms / 1000.0;
+            s.fields |= model::FieldGnss;
+            d.sample = s;
+            d.components = CompUtcTime;
         } else {
             d.sample = r.data.sample;
             d.components = componentsOf(r.data.sample.fields);

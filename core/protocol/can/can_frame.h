@@ -26,6 +26,7 @@ enum Component : uint32_t {
     CompRoll = 1u << 9, CompPitch = 1u << 10, CompYaw = 1u << 11,
     CompQuat = 1u << 12, CompPressure = 1u << 13, CompTemperature = 1u << 14,
     CompInclination = 1u << 15, CompDeviceTime = 1u << 16, CompMainStatus = 1u << 17,
+    CompUtcTime = 1u << 18, // Sample::utcTimeOfDayS (J1939 FF2F)
 };
 // The components implied by Sample::fields (every axis of each group present).
 uint32_t componentsOf(uint32_t sampleFields);
