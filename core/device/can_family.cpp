@@ -75,7 +75,6 @@ void merge(model::Sample &dst, const model::Sample &src, uint32_t c)
 
 CanFamily::CanFamily()
 {
-    m_clock.start();
     m_syncTimer.setTimerType(Qt::PreciseTimer);
     connect(&m_syncTimer, &QTimer::timeout, this, [this] { write(canopen::encodeSync()); });
     m_scanTimer.setInterval(kScanSpacingMs);

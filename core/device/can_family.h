@@ -15,9 +15,10 @@
 #include "device/family_plugin.h"
 #include "protocol/can/can_record.h"
 
-#include <QElapsedTimer>
 #include <QSet>
 #include <QTimer>
+
+#include <chrono>
 
 #include <deque>
 #include <map>
@@ -81,7 +82,13 @@ private:
     void finishJob(bool ok, const QString &message, RequestStatus status = RequestStatus::NotSent);
     void noteNode(protocol::can::CanProtocol p, int node, const QString &how);
     void scanTick();
-    qint64 nowNs() const { return m_clock.nsecsElapsed(); }
+    // The host clock every session stamps with (SessionEngine's, steady_clock): the sample
+    // store ages its values and the views align devices on it.
+    static qint64 nowNs()
+    {
+        return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now().time_since_epoch())
+            .count();
+    }
 
     CanSessionOptions m_options;
     protocol::can::CanRecordReader m_reader;
@@ -105,7 +112,6 @@ private:
     QList<int> m_scanFound;
     QSet<QString> m_seenNodes;
     QSet<int> m_tpdoNodes; // CANopen nodes heard sending TPDOs (an NMT stop can be confirmed)
-    QElapsedTimer m_clock;
 
     uint64_t m_frames = 0, m_bytesIn = 0, m_errorFrames = 0;
     std::map<std::string, uint64_t> m_framesByType;

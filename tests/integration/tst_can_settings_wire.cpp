@@ -13,6 +13,8 @@
 #include <QCanBusDevice>
 #include <QTest>
 
+#include <chrono>
+#include <cstdlib>
 #include <map>
 #include <set>
 #include <memory>
@@ -294,6 +296,12 @@ private Q_SLOTS:
         link.start();
         QTRY_VERIFY_WITH_TIMEOUT(fdFrames >= 3, 5000);
         QTRY_VERIFY(session->store().latest().has_value());
+        // Stamped on the host clock every session uses (steady_clock), so the values table does
+        // not call fresh values hours old.
+        const qint64 now = std::chrono::duration_cast<std::chrono::nanoseconds>(
+                               std::chrono::steady_clock::now().time_since_epoch())
+                               .count();
+        QVERIFY(std::llabs(now - session->store().latest()->hostTimeNs) < 5'000'000'000LL);
         link.link.reset();
     }
 };
