@@ -299,7 +299,7 @@ int cmdCan(const QStringList &args)
             return fail(QStringLiteral("--bitrate needs a positive number"), ExitUsage);
         o.bitrate = int(n);
         // The rates the protocol's manual lists (a bus at another rate never hears the module).
-        const std::vector<int> rates = settings::canBitrates(o.protocol).rates;
+        const std::vector<int> rates = settings::canBitrates(o.protocol, o.hec495Extended).rates;
         if (std::find(rates.begin(), rates.end(), o.bitrate) == rates.end()) {
             QStringList listed;
             for (int r : rates)

@@ -54,7 +54,7 @@ QStringList CanSession::plugins()
     return QCanBus::instance()->plugins();
 }
 
-QList<int> CanSession::moduleBitrates(CanProtocol protocol)
+QList<int> CanSession::moduleBitrates(CanProtocol protocol, bool hec495Extended)
 {
     QList<int> out;
     for (uint32_t code = 0; code <= 8; ++code) {
@@ -62,7 +62,7 @@ QList<int> CanSession::moduleBitrates(CanProtocol protocol)
                          : protocol == CanProtocol::CanOpen ? hip::baudFromCode(code)
                          : protocol == CanProtocol::Hec495  ? hec495::baudFromCode(code)
                                                             : 0;
-        if (rate > 0)
+        if (rate > 0 && (protocol != CanProtocol::Hec495 || settings::hec495TakesBitrate(rate, hec495Extended)))
             out << rate;
     }
     std::sort(out.begin(), out.end(), std::greater<>());
@@ -209,7 +209,7 @@ quint64 CanSession::hec495Write(uint16_t index, uint8_t value)
 
 std::vector<settings::CanSetting> CanSession::settingsCatalogue() const
 {
-    return settings::canSettings(protocol(), m_options.hipnucNodeIdObject);
+    return settings::canSettings(protocol(), m_options.hipnucNodeIdObject, m_options.hec495Extended);
 }
 
 quint64 CanSession::readSetting(const settings::CanSetting &setting)

@@ -67,7 +67,7 @@ public:
     quint64 setHeartbeat(int ms);                          // HEC495: rounded to 100 ms * (N + 1)
     quint64 setNodeId(int newId);
     // The bit rates the module's own setting takes (setBitrate), fastest first.
-    static QList<int> moduleBitrates(protocol::can::CanProtocol protocol);
+    static QList<int> moduleBitrates(protocol::can::CanProtocol protocol, bool hec495Extended = false);
     quint64 setBitrate(int bitrate);
     quint64 attitudeReset(int mode);
     quint64 setOutputEnabled(bool on);

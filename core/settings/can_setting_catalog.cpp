@@ -144,7 +144,7 @@ std::vector<CanSetting> canopenSettings(uint16_t nodeIdObject)
     return out;
 }
 
-std::vector<CanSetting> hec495Settings()
+std::vector<CanSetting> hec495Settings(bool extended)
 {
     using A = CanSetting::Access;
     const QString notRead = Texts::tr("written only: the manual documents no way to read it back");
@@ -179,6 +179,7 @@ std::vector<CanSetting> hec495Settings()
     CanSetting bitrate = number(QStringLiteral("bitrate"), Texts::tr("CAN bit rate"), QStringLiteral("bit/s"),
                                 A::Hec495Object, hec495::ObjBaud, 1, 8);
     bitrate.choices = rateChoices(&hec495::baudFromCode);
+    std::erase_if(bitrate.choices, [extended](const auto &c) { return !hec495TakesBitrate(hec495::baudFromCode(c.first), extended); });
     bitrate.note = Texts::tr("takes effect after a power cycle");
     add(bitrate);
     CanSetting node = number(QStringLiteral("node-id"), Texts::tr("Node ID"), QString(), A::Hec495Object,
@@ -260,12 +261,17 @@ QString CanSetting::range() const
     return unit.isEmpty() ? r : r + QLatin1Char(' ') + unit;
 }
 
-std::vector<CanSetting> canSettings(CanProtocol protocol, uint16_t nodeIdObject)
+bool hec495TakesBitrate(int bitrate, bool extended)
+{
+    return bitrate > 0 && (extended || bitrate != 30000);
+}
+
+std::vector<CanSetting> canSettings(CanProtocol protocol, uint16_t nodeIdObject, bool hec495Extended)
 {
     switch (protocol) {
     case CanProtocol::J1939: return j1939Settings();
     case CanProtocol::CanOpen: return canopenSettings(nodeIdObject);
-    case CanProtocol::Hec495: return hec495Settings();
+    case CanProtocol::Hec495: return hec495Settings(hec495Extended);
     case CanProtocol::Auto: break;
     }
     return {};
@@ -279,7 +285,7 @@ std::optional<CanSetting> findCanSetting(CanProtocol protocol, const QString &na
     return std::nullopt;
 }
 
-CanBitrates canBitrates(CanProtocol protocol)
+CanBitrates canBitrates(CanProtocol protocol, bool hec495Extended)
 {
     CanBitrates b;
     auto rates = [](int (*rateOf)(uint32_t)) {
@@ -295,6 +301,7 @@ CanBitrates canBitrates(CanProtocol protocol)
     case CanProtocol::CanOpen: b.rates = rates(&hip::baudFromCode); break;     // 0x209A's four; 8.25: 500K
     case CanProtocol::Hec495:
         b.rates = rates(&hec495::baudFromCode);
+        std::erase_if(b.rates, [hec495Extended](int r) { return !hec495TakesBitrate(r, hec495Extended); });
         b.factory = hec495::kDefaultBitrate; // 250K
         break;
     case CanProtocol::Auto:

@@ -52,8 +52,10 @@ struct CanSetting {
 };
 
 // The settings of a device of that protocol. nodeIdObject: the HiPNUC CANopen firmware's
-// node-ID object (0x209C on 1.7.x, 0x20A0 on 1.6.6).
-std::vector<CanSetting> canSettings(protocol::can::CanProtocol protocol, uint16_t nodeIdObject = 0x209C);
+// node-ID object (0x209C on 1.7.x, 0x20A0 on 1.6.6); hec495Extended: the HEC495's
+// extended-frame variant (its manual lists 30 kbit/s for that variant only).
+std::vector<CanSetting> canSettings(protocol::can::CanProtocol protocol, uint16_t nodeIdObject = 0x209C,
+                                    bool hec495Extended = false);
 // The setting of that name (case-insensitive); nullopt when the protocol has none.
 std::optional<CanSetting> findCanSetting(protocol::can::CanProtocol protocol, const QString &name,
                                          uint16_t nodeIdObject = 0x209C);
@@ -64,6 +66,8 @@ struct CanBitrates {
     std::vector<int> rates;
     int factory = 500000;
 };
-CanBitrates canBitrates(protocol::can::CanProtocol protocol);
+CanBitrates canBitrates(protocol::can::CanProtocol protocol, bool hec495Extended = false);
+// The bit rates an HEC495 takes (its object 0x1020): 30 kbit/s on the extended variant only.
+bool hec495TakesBitrate(int bitrate, bool extended);
 
 } // namespace imudesk::settings

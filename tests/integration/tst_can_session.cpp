@@ -267,7 +267,9 @@ private Q_SLOTS:
     {
         QCOMPARE(CanSession::moduleBitrates(CanProtocol::CanOpen), (QList<int>{1000000, 500000, 250000, 125000}));
         QCOMPARE(CanSession::moduleBitrates(CanProtocol::J1939), (QList<int>{1000000, 800000, 500000, 250000, 125000}));
-        QVERIFY(CanSession::moduleBitrates(CanProtocol::Hec495).contains(30000));
+        // The HEC495's 30 kbit/s is its extended-frame variant's only (its manual).
+        QVERIFY(!CanSession::moduleBitrates(CanProtocol::Hec495).contains(30000));
+        QVERIFY(CanSession::moduleBitrates(CanProtocol::Hec495, true).contains(30000));
         Rig rig;
         sim::CanSimOptions o;
         o.protocol = CanProtocol::CanOpen;

@@ -48,11 +48,15 @@ private Q_SLOTS:
         QCOMPARE(dialog.bitrateCombo()->currentData().toInt(), 500000);
         // HEC495: its own list down to 10K, 250K from the factory.
         choose(dialog.protocolCombo(), CanProtocol::Hec495);
-        QCOMPARE(rates(dialog.bitrateCombo()), (QList<int>{500000, 250000, 125000, 100000, 50000, 30000, 20000, 10000}));
+        QCOMPARE(rates(dialog.bitrateCombo()), (QList<int>{500000, 250000, 125000, 100000, 50000, 20000, 10000}));
         QCOMPARE(dialog.bitrateCombo()->currentData().toInt(), 250000);
         QVERIFY(dialog.bitrateCombo()->currentText().contains(QStringLiteral("factory")));
         QCOMPARE(dialog.options().bitrate, 250000);
         QVERIFY(dialog.rateHint()->text().contains(QStringLiteral("0x1020")));
+        // 30 kbit/s on the extended-frame variant only (the HEC495 manual lists it there).
+        dialog.hec495ExtendedCheck()->setChecked(true);
+        QVERIFY(rates(dialog.bitrateCombo()).contains(30000));
+        QCOMPARE(dialog.bitrateCombo()->currentData().toInt(), 250000);
     }
 
     void canFdIntoTheOptions()

@@ -198,6 +198,7 @@ CanConnectDialog::CanConnectDialog(QWidget *parent) : QDialog(parent)
     };
     connect(m_protocol, &QComboBox::currentIndexChanged, this, hecOnly);
     connect(m_protocol, &QComboBox::currentIndexChanged, this, &CanConnectDialog::refreshRates);
+    connect(m_hecExtended, &QCheckBox::toggled, this, &CanConnectDialog::refreshRates);
     hecOnly();
     refreshRates();
     const int virt = m_plugin->findText(QStringLiteral("virtualcan"));
@@ -212,7 +213,8 @@ CanConnectDialog::CanConnectDialog(QWidget *parent) : QDialog(parent)
 void CanConnectDialog::refreshRates()
 {
     const auto protocol = protocol::can::CanProtocol(m_protocol->currentData().toInt());
-    const settings::CanBitrates rates = settings::canBitrates(protocol);
+    const bool extended = protocol == protocol::can::CanProtocol::Hec495 && m_hecExtended->isChecked();
+    const settings::CanBitrates rates = settings::canBitrates(protocol, extended);
     const int chosen = m_bitrate->currentData().toInt();
     const bool keepChoice = m_bitrate->count() > 0 && m_protocolShown == int(protocol);
     m_bitrate->clear();
@@ -227,7 +229,7 @@ void CanConnectDialog::refreshRates()
     m_protocolShown = int(protocol);
     // What the module itself can be switched to (its own bit-rate setting).
     QStringList own;
-    for (int r : device::CanSession::moduleBitrates(protocol))
+    for (int r : device::CanSession::moduleBitrates(protocol, extended))
         own << QString::number(r / 1000);
     switch (protocol) {
     case protocol::can::CanProtocol::J1939:

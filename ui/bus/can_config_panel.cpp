@@ -279,7 +279,7 @@ void CanConfigPanel::refreshForProtocol()
     // Only the rates the module's setting documents (CANopen 0x209A has no 800K).
     const int rate = m_bitrate->currentData().toInt();
     m_bitrate->clear();
-    for (int r : device::CanSession::moduleBitrates(p))
+    for (int r : device::CanSession::moduleBitrates(p, any && m_session->options().hec495Extended))
         m_bitrate->addItem(tr("%1 kbit/s").arg(r / 1000), r);
     if (const int i = m_bitrate->findData(rate); i >= 0)
         m_bitrate->setCurrentIndex(i);
