@@ -148,13 +148,19 @@ void ConfigurationController::onCommandFinished(quint64 id, const Reply &reply)
     done(reply);
 }
 
-void ConfigurationController::read(std::function<void(bool, const QString &)> done)
+void ConfigurationController::read(std::function<void(bool, const QString &)> done, int attempt)
 {
-    send(protocol::hipnuc::commands::logVersion(), kCommandTimeoutMs, [this, done](const Reply &r) {
+    send(protocol::hipnuc::commands::logVersion(), kCommandTimeoutMs, [this, done, attempt](const Reply &r) {
         if (r.ok()) {
             const auto id = model::DeviceIdentity::fromKeyValues(r.values);
             if (id.usable())
                 m_config.identity = id;
+        }
+        if (!m_config.identity.usable() && attempt == 0 && (r.ok() || r.status == Reply::Status::Timeout)) {
+            // An answer without model or firmware (its lines cut by frames of the module's
+            // output), or none: asked once more before giving up.
+            read(done, 1);
+            return;
         }
         if (!m_config.identity.usable()) {
             done(false, tr("the device did not tell its model and firmware (LOG VERSION: %1)")

@@ -93,7 +93,9 @@ private:
 
     void send(const protocol::hipnuc::Command &command, int timeoutMs, ReplyFn done);
     void onCommandFinished(quint64 id, const Reply &reply);
-    void read(std::function<void(bool ok, const QString &error)> done);
+    // attempt: LOG VERSION is asked twice at most (a reply cut short by the module's streaming
+    // is asked for again).
+    void read(std::function<void(bool ok, const QString &error)> done, int attempt = 0);
     void sendChanges(size_t index);
     void finishApply();
     void afterReset(const QString &key, const QList<int> &bauds);
