@@ -1,5 +1,6 @@
 #include "can_family.h"
 
+#include "device/host_clock.h"
 #include "device/session_engine.h"
 #include "io/can_transport.h"
 #include "protocol/can/canopen.h"
@@ -123,7 +124,7 @@ bool CanFamily::write(const CanFrame &f)
     const QByteArray record = toRecord(f);
     if (!engine().transport().isOpen() || engine().transport().write(record) != record.size())
         return false;
-    Q_EMIT framesSeen(CanFrameEvents{CanFrameEvent{f, nowNs(), true}});
+    Q_EMIT framesSeen(CanFrameEvents{CanFrameEvent{f, hostNowNs(), true}});
     return true;
 }
 
@@ -151,13 +152,13 @@ void CanFamily::resetCounters()
     m_framesByType.clear();
 }
 
-void CanFamily::feed(const QByteArray &bytes, int64_t)
+void CanFamily::feed(const QByteArray &bytes, int64_t now)
 {
     m_records.clear();
     m_reader.feed(bytes, m_records);
     CanFrameEvents events;
     m_batch.clear();
-    const qint64 now = nowNs();
+    // Stamped with the arrival time the engine took on the host clock (host_clock.h).
     for (const CanRecord &r : m_records) {
         if (r.error) {
             ++m_errorFrames;
@@ -288,7 +289,7 @@ void CanFamily::writing(const Request &r)
 {
     const CanJobStep &s = std::any_cast<Step>(&r.command)->step;
     if (s.hasTx) // on the monitor as sent (a write that then fails ends the step at once)
-        Q_EMIT framesSeen(CanFrameEvents{CanFrameEvent{s.tx, nowNs(), true}});
+        Q_EMIT framesSeen(CanFrameEvents{CanFrameEvent{s.tx, hostNowNs(), true}});
 }
 
 void CanFamily::unanswered(const Request &r, RequestResult &result)
@@ -475,10 +476,10 @@ void CanFamily::scanTick()
         ++m_scanNext;
         Q_EMIT scanProgress(m_scanNext - m_scanFrom, total);
         if (m_scanNext > m_scanTo)
-            m_scanTailUntil = nowNs() + qint64(kScanTailMs) * 1000000;
+            m_scanTailUntil = hostNowNs() + qint64(kScanTailMs) * 1000000;
         return;
     }
-    if (nowNs() < m_scanTailUntil)
+    if (hostNowNs() < m_scanTailUntil)
         return;
     m_scanTimer.stop();
     m_scanning = false;

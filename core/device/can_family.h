@@ -18,8 +18,6 @@
 #include <QSet>
 #include <QTimer>
 
-#include <chrono>
-
 #include <deque>
 #include <map>
 #include <optional>
@@ -82,14 +80,6 @@ private:
     void finishJob(bool ok, const QString &message, RequestStatus status = RequestStatus::NotSent);
     void noteNode(protocol::can::CanProtocol p, int node, const QString &how);
     void scanTick();
-    // The host clock every session stamps with (SessionEngine's, steady_clock): the sample
-    // store ages its values and the views align devices on it.
-    static qint64 nowNs()
-    {
-        return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now().time_since_epoch())
-            .count();
-    }
-
     CanSessionOptions m_options;
     protocol::can::CanRecordReader m_reader;
     std::vector<protocol::can::CanRecord> m_records;

@@ -1,5 +1,6 @@
 #include "modbus_family.h"
 
+#include "device/host_clock.h"
 #include "device/modbus_session.h"
 #include "device/session_engine.h"
 #include "protocol/modbus/hipnuc_writes.h"
@@ -10,7 +11,6 @@
 #include <QLoggingCategory>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <utility>
 
@@ -409,9 +409,7 @@ void ModbusFamily::onPollResult(const RequestResult &r)
         engine().setState(SessionState::Connected, ModbusSession::tr("Node %1 answers again").arg(m_nodeId));
     model::Sample s =
         RegisterDecoder::sample(m_options.kind, RegisterBlock(uint16_t(pollStart()), toVector(replyOf(r).values)));
-    s.hostTimeNs = std::chrono::duration_cast<std::chrono::nanoseconds>(
-                       std::chrono::steady_clock::now().time_since_epoch())
-                       .count();
+    s.hostTimeNs = hostNowNs();
     s.deviceTimeMs = double(m_clock.elapsed());
     ++m_polls;
     m_batch.clear();

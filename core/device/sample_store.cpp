@@ -1,8 +1,9 @@
 #include "sample_store.h"
 
+#include "device/host_clock.h"
+
 #include <algorithm>
 #include <bit>
-#include <chrono>
 
 namespace imudesk::device {
 
@@ -28,8 +29,7 @@ void SampleStore::append(const std::vector<model::Sample> &batch)
 
 SampleStore::FieldAges SampleStore::fieldAges() const
 {
-    const int64_t now =
-        std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now().time_since_epoch()).count();
+    const int64_t now = hostNowNs();
     std::lock_guard lock(m_mutex);
     FieldAges ages{};
     for (size_t f = 0; f < ages.size(); ++f)

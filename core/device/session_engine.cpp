@@ -1,5 +1,6 @@
 #include "session_engine.h"
 
+#include "device/host_clock.h"
 #include "device/stream_counters.h"
 #include "io/reading_priority.h"
 
@@ -9,7 +10,6 @@
 #include <QThread>
 
 #include <atomic>
-#include <chrono>
 #include <utility>
 
 Q_LOGGING_CATEGORY(lcEngine, "imudesk.core.device")
@@ -17,12 +17,6 @@ Q_LOGGING_CATEGORY(lcEngine, "imudesk.core.device")
 namespace imudesk::device {
 
 namespace {
-
-int64_t monotonicNs()
-{
-    return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now().time_since_epoch())
-        .count();
-}
 
 int64_t utcUs()
 {
@@ -225,7 +219,7 @@ void SessionEngine::onReopened()
 
 void SessionEngine::onBytes(const QByteArray &bytes)
 {
-    const int64_t arrivedNs = monotonicNs();
+    const int64_t arrivedNs = hostNowNs();
     m_rawLog.append(RawByteLog::Direction::Rx, bytes, arrivedNs);
     if (m_recorder && m_recorder->append(bytes.constData(), size_t(bytes.size()), arrivedNs, utcUs())) {
         m_recordedDecoder.feed(reinterpret_cast<const uint8_t *>(bytes.constData()), size_t(bytes.size()), arrivedNs,
@@ -248,7 +242,7 @@ void SessionEngine::onLineIdle()
         m_idleTimer.start();
         return;
     }
-    const int64_t now = monotonicNs();
+    const int64_t now = hostNowNs();
     if (m_recorder && m_recorder->appendLineIdle(now, utcUs()))
         m_recordedDecoder.lineIdle(now, m_noSink);
     m_family->lineIdle(now);
@@ -318,7 +312,7 @@ void SessionEngine::writeCurrent()
 {
     m_holdTimer.stop();
     m_family->writing(*m_current);
-    m_rawLog.append(RawByteLog::Direction::Tx, m_current->wire, monotonicNs());
+    m_rawLog.append(RawByteLog::Direction::Tx, m_current->wire, hostNowNs());
     if (m_transport->write(m_current->wire) != m_current->wire.size()) {
         RequestResult r;
         r.status = RequestStatus::NotSent;
