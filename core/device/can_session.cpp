@@ -56,17 +56,10 @@ QStringList CanSession::plugins()
 
 QList<int> CanSession::moduleBitrates(CanProtocol protocol, bool hec495Extended)
 {
-    QList<int> out;
-    for (uint32_t code = 0; code <= 8; ++code) {
-        const int rate = protocol == CanProtocol::J1939     ? j1939::baudFromCode(code)
-                         : protocol == CanProtocol::CanOpen ? hip::baudFromCode(code)
-                         : protocol == CanProtocol::Hec495  ? hec495::baudFromCode(code)
-                                                            : 0;
-        if (rate > 0 && (protocol != CanProtocol::Hec495 || settings::hec495TakesBitrate(rate, hec495Extended)))
-            out << rate;
-    }
-    std::sort(out.begin(), out.end(), std::greater<>());
-    return out;
+    if (protocol == CanProtocol::Auto)
+        return {}; // no device's setting yet
+    const std::vector<int> rates = settings::canBitrates(protocol, hec495Extended).rates;
+    return QList<int>(rates.begin(), rates.end());
 }
 
 QStringList CanSession::interfaces(const QString &plugin, QString *error)

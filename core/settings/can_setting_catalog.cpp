@@ -25,14 +25,41 @@ struct Texts {
     Q_DECLARE_TR_FUNCTIONS(CanSettingCatalog)
 };
 
-// The bit-rate codes of a protocol's object or register, as choices ("500000").
-std::vector<std::pair<uint32_t, QString>> rateChoices(int (*rateOf)(uint32_t))
+// The codes of a device's own bit-rate setting (J1939 register 0x9A, CANopen object 0x209A,
+// HEC495 object 0x1020) and the rate each stands for, fastest first (the codes' order).
+std::vector<std::pair<uint32_t, int>> rateCodes(CanProtocol protocol, bool hec495Extended)
 {
-    std::vector<std::pair<uint32_t, QString>> out;
+    int (*rateOf)(uint32_t) = nullptr;
+    switch (protocol) {
+    case CanProtocol::J1939: rateOf = &j1939::baudFromCode; break;  // 7.20: 125K-1000K incl. 800K
+    case CanProtocol::CanOpen: rateOf = &hip::baudFromCode; break;  // 0x209A's four
+    case CanProtocol::Hec495: rateOf = &hec495::baudFromCode; break;
+    case CanProtocol::Auto: return {};
+    }
+    std::vector<std::pair<uint32_t, int>> out;
     for (uint32_t code = 0; code <= 8; ++code)
-        if (const int rate = rateOf(code); rate > 0)
-            out.emplace_back(code, QString::number(rate));
+        if (const int rate = rateOf(code);
+            rate > 0 && (protocol != CanProtocol::Hec495 || hec495TakesBitrate(rate, hec495Extended)))
+            out.emplace_back(code, rate);
     return out;
+}
+
+// The bit-rate setting of a protocol's catalogue: shown and typed in bit/s, stored as its code.
+CanSetting bitRate(CanProtocol protocol, CanSetting::Access access, uint16_t address, const QString &note,
+                   bool hec495Extended = false)
+{
+    CanSetting s;
+    s.name = QStringLiteral("bitrate");
+    s.label = Texts::tr("CAN bit rate");
+    s.unit = QStringLiteral("bit/s");
+    s.access = access;
+    s.address = address;
+    for (const auto &[code, rate] : rateCodes(protocol, hec495Extended))
+        s.choices.emplace_back(code, QString::number(rate));
+    s.min = s.choices.front().first;
+    s.max = s.choices.back().first;
+    s.note = note;
+    return s;
 }
 
 CanSetting number(const QString &name, const QString &label, const QString &unit, CanSetting::Access access,
@@ -79,11 +106,8 @@ std::vector<CanSetting> j1939Settings()
             s.note = Texts::tr("only on a module with CAN FD output enabled; the manual gives no command to enable it");
         out.push_back(s);
     }
-    CanSetting rate = number(QStringLiteral("bitrate"), Texts::tr("CAN bit rate"), QStringLiteral("bit/s"),
-                             A::J1939Register, j1939::RegBaud, 0, 4);
-    rate.choices = rateChoices(&j1939::baudFromCode);
-    rate.note = Texts::tr("takes effect after save and reset");
-    out.push_back(rate);
+    out.push_back(bitRate(CanProtocol::J1939, A::J1939Register, j1939::RegBaud,
+                          Texts::tr("takes effect after save and reset")));
     out.push_back(number(QStringLiteral("node-id"), Texts::tr("Source address (node ID)"), QString(), A::J1939Register,
                          j1939::RegNodeId, 1, 127));
     CanSetting output = number(QStringLiteral("output"), Texts::tr("Data output"), QString(), A::J1939Register,
@@ -128,11 +152,8 @@ std::vector<CanSetting> canopenSettings(uint16_t nodeIdObject)
     heartbeat.size = 2;
     heartbeat.note = Texts::tr("0 = off");
     out.push_back(heartbeat);
-    CanSetting rate = number(QStringLiteral("bitrate"), Texts::tr("CAN bit rate"), QStringLiteral("bit/s"),
-                             A::CanOpenObject, hip::ObjBaud, 0, 4);
-    rate.choices = rateChoices(&hip::baudFromCode);
-    rate.note = Texts::tr("takes effect after save and reset");
-    out.push_back(rate);
+    out.push_back(bitRate(CanProtocol::CanOpen, A::CanOpenObject, hip::ObjBaud,
+                          Texts::tr("takes effect after save and reset")));
     CanSetting node = number(QStringLiteral("node-id"), Texts::tr("Node ID"), QString(), A::CanOpenObject, nodeIdObject,
                              1, 127);
     node.note = Texts::tr("takes effect after save and reset");
@@ -176,12 +197,8 @@ std::vector<CanSetting> hec495Settings(bool extended)
     CanSetting heartbeat = number(QStringLiteral("heartbeat"), Texts::tr("Heartbeat (100 ms x (N + 1))"), QString(),
                                   A::Hec495Object, hec495::ObjHeartbeat, 0, 255);
     add(heartbeat);
-    CanSetting bitrate = number(QStringLiteral("bitrate"), Texts::tr("CAN bit rate"), QStringLiteral("bit/s"),
-                                A::Hec495Object, hec495::ObjBaud, 1, 8);
-    bitrate.choices = rateChoices(&hec495::baudFromCode);
-    std::erase_if(bitrate.choices, [extended](const auto &c) { return !hec495TakesBitrate(hec495::baudFromCode(c.first), extended); });
-    bitrate.note = Texts::tr("takes effect after a power cycle");
-    add(bitrate);
+    add(bitRate(CanProtocol::Hec495, A::Hec495Object, hec495::ObjBaud, Texts::tr("takes effect after a power cycle"),
+                extended));
     CanSetting node = number(QStringLiteral("node-id"), Texts::tr("Node ID"), QString(), A::Hec495Object,
                              hec495::ObjNodeId, 1, 127);
     node.note = Texts::tr("takes effect after a power cycle");
@@ -288,20 +305,13 @@ std::optional<CanSetting> findCanSetting(CanProtocol protocol, const QString &na
 CanBitrates canBitrates(CanProtocol protocol, bool hec495Extended)
 {
     CanBitrates b;
-    auto rates = [](int (*rateOf)(uint32_t)) {
-        std::vector<int> out;
-        for (uint32_t code = 0; code <= 8; ++code)
-            if (const int r = rateOf(code); r > 0)
-                out.push_back(r);
-        std::sort(out.begin(), out.end(), std::greater<>());
-        return out;
-    };
+    for (const auto &[code, rate] : rateCodes(protocol, hec495Extended))
+        b.rates.push_back(rate);
     switch (protocol) {
-    case CanProtocol::J1939: b.rates = rates(&j1939::baudFromCode); break;     // 7.20: 125K-1000K incl. 800K
-    case CanProtocol::CanOpen: b.rates = rates(&hip::baudFromCode); break;     // 0x209A's four; 8.25: 500K
+    case CanProtocol::J1939:   // 7.20: 500K from the factory
+    case CanProtocol::CanOpen: // 8.25: 500K
+        break;
     case CanProtocol::Hec495:
-        b.rates = rates(&hec495::baudFromCode);
-        std::erase_if(b.rates, [hec495Extended](int r) { return !hec495TakesBitrate(r, hec495Extended); });
         b.factory = hec495::kDefaultBitrate; // 250K
         break;
     case CanProtocol::Auto:
