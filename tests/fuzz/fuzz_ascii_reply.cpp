@@ -3,7 +3,7 @@
 // The input is split into lines at LF (CR and other bytes stay in the line). The
 // lines are fed to ReplyCollectors for "LOG VERSION" (a new collector starts after
 // each complete reply, as in a session), and each line also goes through
-// classifyLine, splitKeyValue and FirmwareVersion::parse. Each complete reply's
+// classifyLine, keyValuePairs and FirmwareVersion::parse. Each complete reply's
 // KEY=VALUE map is turned into a DeviceIdentity.
 #include "model/device_identity.h"
 #include "protocol/hipnuc/ascii_reply.h"
@@ -105,20 +105,14 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         const LineKind kind = classifyLine(line);
         FUZZ_CHECK(classifyLine(std::string(line) + "\r") == kind); // trailing CR is whitespace
 
-        std::string key, value;
-        if (splitKeyValue(line, key, value)) {
-            FUZZ_CHECK(!key.empty());
-            FUZZ_CHECK(key.find('=') == std::string::npos);
-            FUZZ_CHECK(trimmed(key) && trimmed(value));
-            FUZZ_CHECK(line.find('=') != std::string_view::npos);
-            checkVersion(value);
-        }
         checkVersion(std::string(line));
         // The tolerant reading of KEY=VALUE lines: keys without separators or blanks, values
-        // trimmed.
+        // trimmed; a pair needs a separator in the line.
         for (const auto &[k, v] : keyValuePairs(line)) {
             FUZZ_CHECK(!k.empty() && k.find('=') == std::string::npos && k.find(' ') == std::string::npos);
             FUZZ_CHECK(trimmed(k) && trimmed(v));
+            FUZZ_CHECK(line.find('=') != std::string_view::npos || line.find(':') != std::string_view::npos);
+            checkVersion(v);
         }
 
         const size_t before = collector.reply().lines.size();

@@ -90,12 +90,12 @@ private Q_SLOTS:
 
     void keyValue()
     {
-        std::string k, v;
-        QVERIFY(splitKeyValue(" MB=14.14, -2.08, -8.75 ", k, v));
-        QCOMPARE(k, std::string("MB"));
-        QCOMPARE(v, std::string("14.14, -2.08, -8.75"));
-        QVERIFY(!splitKeyValue("=5", k, v));
-        QVERIFY(!splitKeyValue("no equals", k, v));
+        const auto pairs = imudesk::protocol::hipnuc::keyValuePairs(" MB=14.14, -2.08, -8.75 ");
+        QCOMPARE(pairs.size(), size_t(1));
+        QCOMPARE(pairs.front().first, std::string("MB"));
+        QCOMPARE(pairs.front().second, std::string("14.14, -2.08, -8.75"));
+        QVERIFY(imudesk::protocol::hipnuc::keyValuePairs("=5").empty());
+        QVERIFY(imudesk::protocol::hipnuc::keyValuePairs("no equals").empty());
     }
 
     // LOG COMCONFIG read tolerantly (issue 35): the manual prints no format but URFR=<CODE>.

@@ -6,6 +6,7 @@
 #include <QHeaderView>
 #include <QLabel>
 #include <QPushButton>
+#include <QSignalBlocker>
 #include <QSpinBox>
 #include <QTableWidget>
 #include <QVBoxLayout>
@@ -152,9 +153,7 @@ void CanSettingsTable::rebuild()
                 spin->setSuffix(QLatin1Char(' ') + s.unit);
             spin->setToolTip(tr("%1; %2").arg(s.range(), s.note.isEmpty() ? s.name : s.note));
             connect(spin, &QSpinBox::valueChanged, this, [this, i] {
-                if (!m_rows[size_t(i)].editor || m_rows[size_t(i)].editor->property("settingValue").toBool())
-                    return;
-                m_rows[size_t(i)].edited = true;
+                m_rows[size_t(i)].edited = true; // setEditorValue's own changes are not signalled
                 updateButtons();
             });
             row.editor = spin;
@@ -189,9 +188,8 @@ void CanSettingsTable::setEditorValue(Row &row, uint32_t raw)
         if (const int i = combo->findData(raw); i >= 0)
             combo->setCurrentIndex(i);
     } else if (auto *spin = qobject_cast<QSpinBox *>(row.editor)) {
-        spin->setProperty("settingValue", true); // not a person's edit
+        const QSignalBlocker notAnEdit(spin); // the module's value, not a person's edit
         spin->setValue(int(std::min<uint32_t>(raw, uint32_t(std::numeric_limits<int>::max()))));
-        spin->setProperty("settingValue", false);
     }
 }
 
@@ -286,7 +284,7 @@ void CanSettingsTable::onResult(const device::CanRequestResult &r)
                 setStatus(p.row, QString(), palette().color(QPalette::Text));
         } else if (p.write && r.status == device::RequestStatus::Invalid && s.readable) {
             // The read-back found another value: the module holds that one.
-            const QString held = r.value <= 0xFFFFFFFFu ? s.show(r.value) : QString();
+            const QString held = s.show(r.value);
             row.module = r.value;
             module->setText(held);
             setStatus(p.row, tr("not taken: the module holds %1").arg(held), kDiffers, r.message);

@@ -17,7 +17,6 @@
 #include <vector>
 
 QT_BEGIN_NAMESPACE
-class QLabel;
 class QPushButton;
 class QTableWidget;
 QT_END_NAMESPACE

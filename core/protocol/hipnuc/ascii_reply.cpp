@@ -53,17 +53,6 @@ LineKind classifyLine(std::string_view raw)
     return LineKind::Info;
 }
 
-bool splitKeyValue(std::string_view raw, std::string &key, std::string &value)
-{
-    const auto line = trim(raw);
-    const size_t eq = line.find('=');
-    if (eq == std::string_view::npos || eq == 0)
-        return false;
-    key = std::string(trim(line.substr(0, eq)));
-    value = std::string(trim(line.substr(eq + 1)));
-    return !key.empty();
-}
-
 namespace {
 
 std::string normalisedKey(std::string_view key)

@@ -38,9 +38,6 @@ private:
     AsciiReply m_reply;
 };
 
-// Splits "KEY=VALUE"; false when the line has no '=' or an empty key.
-bool splitKeyValue(std::string_view line, std::string &key, std::string &value);
-
 // Every KEY=VALUE pair of a line, read tolerantly (the manual prints no format for the replies
 // of the LOG queries but URFR=<CODE>): keys in upper case with blanks as '_' ("att mode" ->
 // "ATT_MODE"); several pairs on one line ("BAUD=115200; LOG=ENABLE", "A=1 B=2"); blanks around
