@@ -102,26 +102,40 @@ bool openSession(CanSession &s, const CanSessionOptions &o, QString *error)
     return false;
 }
 
+// The result of request id; nullopt when none came within 30 s (or on Ctrl+C).
+std::optional<device::CanRequestResult> waitResult(CanSession &s, quint64 id)
+{
+    std::optional<device::CanRequestResult> result;
+    const auto c = QObject::connect(&s, &CanSession::requestFinished, &s, [&](const device::CanRequestResult &r) {
+        if (r.id == id)
+            result = r;
+    });
+    waitFor([&] { return result.has_value(); }, 30000);
+    QObject::disconnect(c);
+    return result;
+}
+
+// What stands for a result that did not come.
+device::CanRequestResult noResult()
+{
+    device::CanRequestResult r;
+    r.message = interrupted() ? QStringLiteral("interrupted") : QStringLiteral("no result within 30 s");
+    return r;
+}
+
 // Runs one request and prints its outcome.
 int runRequest(CanSession &s, quint64 id, bool json, const QString &label)
 {
-    device::CanRequestResult result;
-    bool done = false;
-    QObject::connect(&s, &CanSession::requestFinished, &s, [&](const device::CanRequestResult &r) {
-        if (r.id == id) {
-            result = r;
-            done = true;
-        }
-    });
-    if (!waitFor([&] { return done; }, 30000))
+    const std::optional<device::CanRequestResult> result = waitResult(s, id);
+    if (!result)
         return fail(interrupted() ? QStringLiteral("interrupted") : QStringLiteral("%1: no result").arg(label),
                     interrupted() ? ExitInterrupted : ExitFailure);
-    if (!result.ok)
-        return fail(result.message);
+    if (!result->ok)
+        return fail(result->message);
     if (json)
-        out(QStringLiteral("{\"request\":%1,\"ok\":true,\"value\":%2}").arg(jsonString(label)).arg(result.value));
+        out(QStringLiteral("{\"request\":%1,\"ok\":true,\"value\":%2}").arg(jsonString(label)).arg(result->value));
     else
-        out(QStringLiteral("%1: %2 (0x%3)").arg(label).arg(result.value).arg(result.value, 0, 16));
+        out(QStringLiteral("%1: %2 (0x%3)").arg(label).arg(result->value).arg(result->value, 0, 16));
     return ExitOk;
 }
 
@@ -131,23 +145,6 @@ QStringList settingNames(const std::vector<settings::CanSetting> &all)
     for (const auto &s : all)
         names << s.name;
     return names;
-}
-
-// Waits for request id; the result (ok false with the reason when it timed out).
-device::CanRequestResult waitResult(CanSession &s, quint64 id)
-{
-    device::CanRequestResult result;
-    bool done = false;
-    const auto c = QObject::connect(&s, &CanSession::requestFinished, &s, [&](const device::CanRequestResult &r) {
-        if (r.id == id) {
-            result = r;
-            done = true;
-        }
-    });
-    if (!waitFor([&] { return done; }, 30000))
-        result.message = interrupted() ? QStringLiteral("interrupted") : QStringLiteral("no result within 30 s");
-    QObject::disconnect(c);
-    return result;
 }
 
 QString settingJson(const settings::CanSetting &s, const device::CanRequestResult *read)
@@ -181,7 +178,7 @@ int typedSetting(CanSession &session, const QString &sub, const QStringList &pos
         for (const auto &s : all) {
             std::optional<device::CanRequestResult> r;
             if (s.readable)
-                r = waitResult(session, session.readSetting(s));
+                r = waitResult(session, session.readSetting(s)).value_or(noResult());
             unread += s.readable && !r->ok;
             if (json) {
                 out(settingJson(s, r ? &*r : nullptr));
@@ -212,7 +209,7 @@ int typedSetting(CanSession &session, const QString &sub, const QStringList &pos
             return fail(QStringLiteral("usage: can get NAME"), ExitUsage);
         if (!s->readable)
             return fail(QStringLiteral("%1 cannot be read: %2").arg(s->name, s->note));
-        const device::CanRequestResult r = waitResult(session, session.readSetting(*s));
+        const device::CanRequestResult r = waitResult(session, session.readSetting(*s)).value_or(noResult());
         if (json) {
             out(settingJson(*s, &r));
             return r.ok ? ExitOk : ExitFailure;
@@ -228,7 +225,7 @@ int typedSetting(CanSession &session, const QString &sub, const QStringList &pos
     const std::optional<uint32_t> raw = s->parse(pos[2], &why);
     if (!raw)
         return fail(why, ExitUsage);
-    const device::CanRequestResult r = waitResult(session, session.writeSetting(*s, *raw));
+    const device::CanRequestResult r = waitResult(session, session.writeSetting(*s, *raw)).value_or(noResult());
     if (json)
         out(QStringLiteral("{\"name\":%1,\"value\":%2,\"ok\":%3,\"message\":%4}")
                 .arg(jsonString(s->name), jsonString(s->show(*raw)), r.ok ? QStringLiteral("true") : QStringLiteral("false"),

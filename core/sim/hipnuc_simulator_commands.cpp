@@ -14,7 +14,35 @@
 namespace imudesk::sim {
 
 namespace {
-std::vector<std::string> styledComConfig(std::vector<std::string> lines, SimFaults::ComConfigStyle style);
+
+// The KEY=VALUE lines in the style a fault asks for (SimFaults::ComConfigStyle).
+std::vector<std::string> styledComConfig(std::vector<std::string> lines, SimFaults::ComConfigStyle style)
+{
+    if (style == SimFaults::ComConfigStyle::KeyValue)
+        return lines;
+    std::vector<std::string> out;
+    std::string joined;
+    for (size_t i = 0; i < lines.size(); ++i) {
+        const size_t eq = lines[i].find('=');
+        std::string key = lines[i].substr(0, eq);
+        const std::string value = eq == std::string::npos ? std::string() : lines[i].substr(eq + 1);
+        if (style == SimFaults::ComConfigStyle::Unlabelled) {
+            joined += (joined.empty() ? "" : " ") + value;
+            continue;
+        }
+        for (char &c : key)
+            c = char(std::tolower(uint8_t(c)));
+        joined += (joined.empty() ? "" : "; ") + key + " : " + value;
+        if (i % 3 == 2) {
+            out.push_back(joined);
+            joined.clear();
+        }
+    }
+    if (!joined.empty())
+        out.push_back(joined);
+    return out;
+}
+
 } // namespace
 
 using namespace detail;
@@ -475,37 +503,6 @@ HipnucSimulator::Reply HipnucSimulator::cmdLog(const std::vector<std::string> &t
     return err;
 }
 
-namespace {
-
-// The KEY=VALUE lines in the style a fault asks for (SimFaults::ComConfigStyle).
-std::vector<std::string> styledComConfig(std::vector<std::string> lines, SimFaults::ComConfigStyle style)
-{
-    if (style == SimFaults::ComConfigStyle::KeyValue)
-        return lines;
-    std::vector<std::string> out;
-    std::string joined;
-    for (size_t i = 0; i < lines.size(); ++i) {
-        const size_t eq = lines[i].find('=');
-        std::string key = lines[i].substr(0, eq);
-        const std::string value = eq == std::string::npos ? std::string() : lines[i].substr(eq + 1);
-        if (style == SimFaults::ComConfigStyle::Unlabelled) {
-            joined += (joined.empty() ? "" : " ") + value;
-            continue;
-        }
-        for (char &c : key)
-            c = char(std::tolower(uint8_t(c)));
-        joined += (joined.empty() ? "" : "; ") + key + " : " + value;
-        if (i % 3 == 2) {
-            out.push_back(joined);
-            joined.clear();
-        }
-    }
-    if (!joined.empty())
-        out.push_back(joined);
-    return out;
-}
-
-} // namespace
 
 std::vector<std::string> HipnucSimulator::comConfigLines() const
 {
