@@ -10,6 +10,7 @@
 #include "protocol/can/j1939.h"
 #include "protocol/can/j1939_config.h"
 #include "sim/can_simulator.h"
+#include "../common/can_result.h"
 #include "../common/test_main.h"
 
 #include <QCanBus>
@@ -55,24 +56,6 @@ struct Frames {
         return n > 1 ? double(last - first) / 1e6 / (n - 1) : 0;
     }
 };
-
-// Waits for the result of request id.
-CanRequestResult waitResult(CanSession &s, quint64 id, int timeoutMs = 5000)
-{
-    CanRequestResult out;
-    bool done = false;
-    QMetaObject::Connection c = QObject::connect(&s, &CanSession::requestFinished, &s, [&](const CanRequestResult &r) {
-        if (r.id == id) {
-            out = r;
-            done = true;
-        }
-    });
-    const bool finished = imudesk::test::waitFor([&done] { return done; }, timeoutMs);
-    QObject::disconnect(c);
-    if (!finished)
-        out.message = QStringLiteral("no result");
-    return out;
-}
 
 } // namespace
 
@@ -163,7 +146,7 @@ private Q_SLOTS:
         QVERIFY(s && s->has(model::FieldAcc) && s->has(model::FieldEuler) && s->has(model::FieldQuat));
         QVERIFY(std::abs(std::sqrt(s->acc.x * s->acc.x + s->acc.y * s->acc.y + s->acc.z * s->acc.z) - 1.0) < 0.05);
         // 7.23 example: gyro PGN at 100 ms -> set 20 ms, reply + read back.
-        auto r = waitResult(*rig.session, rig.session->setOutputPeriod(j1939::PgnGyr, 20));
+        auto r = test::waitCanResult(*rig.session, rig.session->setOutputPeriod(j1939::PgnGyr, 20));
         QVERIFY2(r.ok, qPrintable(r.message));
         const qint64 from = mark(rig);
         // Enough frames at the new period to measure it (about a second of them: a stall of the
@@ -172,23 +155,23 @@ private Q_SLOTS:
         const double p = rig.frames.periodMs(0x0CFF3708, from + 50000000);
         QVERIFY2(p > 15 && p < 26, qPrintable(QString::number(p)));
         // Raw register write and read back.
-        r = waitResult(*rig.session, rig.session->writeRegister(0x0134, 50));
+        r = test::waitCanResult(*rig.session, rig.session->writeRegister(0x0134, 50));
         QVERIFY2(r.ok && r.value == 50, qPrintable(r.message));
-        r = waitResult(*rig.session, rig.session->readRegister(0x0134));
+        r = test::waitCanResult(*rig.session, rig.session->readRegister(0x0134));
         QVERIFY2(r.ok && r.value == 50, qPrintable(r.message));
         // Out of range: the device's status makes it a failure that says so.
-        r = waitResult(*rig.session, rig.session->writeRegister(0x0134, 3));
+        r = test::waitCanResult(*rig.session, rig.session->writeRegister(0x0134, 3));
         QVERIFY(!r.ok);
         QVERIFY(r.message.contains(QStringLiteral("status")));
         // Node ID 9: write, save, reset; the session follows.
         QSignalSpy follow(rig.session.get(), &CanSession::targetNodeChanged);
-        r = waitResult(*rig.session, rig.session->setNodeId(9));
+        r = test::waitCanResult(*rig.session, rig.session->setNodeId(9));
         QVERIFY2(r.ok, qPrintable(r.message));
         QCOMPARE(rig.session->targetNode(), 9);
         QCOMPARE(rig.sim->device().node(), 9);
         const quint64 before = rig.session->store().totalAppended();
         QTRY_VERIFY_WITH_TIMEOUT(rig.session->store().totalAppended() > before + 10, 3000);
-        r = waitResult(*rig.session, rig.session->readRegister(j1939::RegNodeId));
+        r = test::waitCanResult(*rig.session, rig.session->readRegister(j1939::RegNodeId));
         QVERIFY2(r.ok && r.value == 9, qPrintable(r.message));
         // A node that is not there: timeout with a useful message.
         CanSessionOptions so = rig.session->options();
@@ -199,7 +182,7 @@ private Q_SLOTS:
         so.requestTimeoutMs = 300;
         rig.session->open(so);
         QTRY_COMPARE(rig.session->state(), device::SessionState::Connected);
-        r = waitResult(*rig.session, rig.session->readRegister(j1939::RegNodeId));
+        r = test::waitCanResult(*rig.session, rig.session->readRegister(j1939::RegNodeId));
         QVERIFY(!r.ok);
         QVERIFY2(r.message.contains(QStringLiteral("node 42")), qPrintable(r.message));
     }
@@ -212,7 +195,7 @@ private Q_SLOTS:
         QVERIFY(makeRig(rig, o, CanProtocol::CanOpen, kIface1));
         QTRY_VERIFY_WITH_TIMEOUT(rig.frames.countRx(0x188) > 20, 5000);
         // Change TPDO1 to 50 ms and see the period change.
-        auto r = waitResult(*rig.session, rig.session->setOutputPeriod(0, 50));
+        auto r = test::waitCanResult(*rig.session, rig.session->setOutputPeriod(0, 50));
         QVERIFY2(r.ok && r.value == 50, qPrintable(r.message));
         qint64 from = mark(rig);
         // Enough frames at the new period to measure it (about a second of them).
@@ -220,7 +203,7 @@ private Q_SLOTS:
         double p = rig.frames.periodMs(0x188, from + 30000000);
         QVERIFY2(p > 40 && p < 62, qPrintable(QString::number(p)));
         // SYNC mode: no more periodic TPDO1; a SYNC brings exactly one.
-        r = waitResult(*rig.session, rig.session->setSyncMode(0, true));
+        r = test::waitCanResult(*rig.session, rig.session->setSyncMode(0, true));
         QVERIFY2(r.ok, qPrintable(r.message));
         QVERIFY(quietFor(rig, 0x188, 150));
         from = mark(rig);
@@ -232,11 +215,11 @@ private Q_SLOTS:
         QTRY_VERIFY_WITH_TIMEOUT(rig.frames.countRx(0x188, from + 1) >= 10, 3000);
         rig.session->setSyncPeriod(0);
         // Heartbeat, read back.
-        r = waitResult(*rig.session, rig.session->setHeartbeat(100));
+        r = test::waitCanResult(*rig.session, rig.session->setHeartbeat(100));
         QVERIFY2(r.ok, qPrintable(r.message));
         QTRY_VERIFY(rig.frames.countRx(0x708) >= 2);
         // Unknown object: abort text.
-        r = waitResult(*rig.session, rig.session->sdoWrite(0x2123, 0, 1, 4));
+        r = test::waitCanResult(*rig.session, rig.session->sdoWrite(0x2123, 0, 1, 4));
         QVERIFY(!r.ok);
         QVERIFY2(r.message.contains(QStringLiteral("does not exist")), qPrintable(r.message));
         // Active SDO scan with progress.
@@ -254,7 +237,7 @@ private Q_SLOTS:
         QTRY_COMPARE(done.size(), 2);
         QCOMPARE(done.at(1).at(1).toBool(), true);
         // Node ID change: the session follows the boot-up of node 12.
-        r = waitResult(*rig.session, rig.session->setNodeId(12));
+        r = test::waitCanResult(*rig.session, rig.session->setNodeId(12));
         QVERIFY2(r.ok, qPrintable(r.message));
         QCOMPARE(rig.session->targetNode(), 12);
         QTRY_VERIFY(rig.frames.countRx(0x28C) > 5); // TPDO1 stays in SYNC mode: it was saved
@@ -282,15 +265,15 @@ private Q_SLOTS:
                     && e.frame.data[2] == 0x20;
             return n;
         };
-        auto r = waitResult(*rig.session, rig.session->setBitrate(800000));
+        auto r = test::waitCanResult(*rig.session, rig.session->setBitrate(800000));
         QVERIFY(!r.ok);
         QVERIFY2(r.message.contains(QStringLiteral("0x209A")), qPrintable(r.message));
         QTest::qWait(100); // duration under test: the refused write reaches the bus within 100 ms or never
         QCOMPARE(baudWrites(), 0);
-        r = waitResult(*rig.session, rig.session->sdoWrite(canopen::hipnuc::ObjBaud, 0, 1, 4));
+        r = test::waitCanResult(*rig.session, rig.session->sdoWrite(canopen::hipnuc::ObjBaud, 0, 1, 4));
         QVERIFY(!r.ok);
         QVERIFY2(r.message.contains(QStringLiteral("invalid value")), qPrintable(r.message));
-        r = waitResult(*rig.session, rig.session->setBitrate(500000));
+        r = test::waitCanResult(*rig.session, rig.session->setBitrate(500000));
         QVERIFY2(r.ok, qPrintable(r.message));
         QTRY_COMPARE(baudWrites(), 2); // the raw write above and 0x209A = 2
     }
@@ -304,22 +287,22 @@ private Q_SLOTS:
         o.protocol = CanProtocol::CanOpen;
         QVERIFY(makeRig(rig, o, CanProtocol::CanOpen, kIface1));
         QTRY_VERIFY_WITH_TIMEOUT(rig.frames.countRx(0x188) > 5, 5000);
-        auto r = waitResult(*rig.session, rig.session->setOutputEnabled(false));
+        auto r = test::waitCanResult(*rig.session, rig.session->setOutputEnabled(false));
         QVERIFY2(r.ok, qPrintable(r.message));
         qint64 from = mark(rig);
         QTest::qWait(300); // duration under test: the stopped node sends no TPDO1 for 300 ms
         QCOMPARE(rig.frames.countRx(0x188, from + 1), 0);
         QElapsedTimer t;
         t.start();
-        r = waitResult(*rig.session, rig.session->setOutputEnabled(true));
+        r = test::waitCanResult(*rig.session, rig.session->setOutputEnabled(true));
         QVERIFY2(r.ok, qPrintable(r.message));
         QVERIFY(t.elapsed() < CanSession::kNmtConfirmMs); // the first TPDO ended the wait
         QVERIFY(rig.frames.countRx(0x188, from + 1) > 0);
         // In SYNC mode a started node sends nothing until a SYNC: the start is not confirmed.
         for (int c = 0; c < canopen::kTpdoCount; ++c) // SDO needs an operational node
-            QVERIFY(waitResult(*rig.session, rig.session->setSyncMode(c, true)).ok);
-        QVERIFY(waitResult(*rig.session, rig.session->setOutputEnabled(false)).ok);
-        r = waitResult(*rig.session, rig.session->setOutputEnabled(true), 5000);
+            QVERIFY(test::waitCanResult(*rig.session, rig.session->setSyncMode(c, true)).ok);
+        QVERIFY(test::waitCanResult(*rig.session, rig.session->setOutputEnabled(false)).ok);
+        r = test::waitCanResult(*rig.session, rig.session->setOutputEnabled(true), 5000);
         QVERIFY(!r.ok);
         QVERIFY2(r.message.contains(QStringLiteral("SYNC")), qPrintable(r.message));
         // A node that never sent a TPDO: a stop cannot be seen, and the session says so.
@@ -329,7 +312,7 @@ private Q_SLOTS:
         so.node = 9;
         rig.session->open(so);
         QTRY_COMPARE(rig.session->state(), device::SessionState::Connected);
-        r = waitResult(*rig.session, rig.session->setOutputEnabled(false), 5000);
+        r = test::waitCanResult(*rig.session, rig.session->setOutputEnabled(false), 5000);
         QVERIFY(!r.ok);
         QVERIFY2(r.message.contains(QStringLiteral("cannot be seen")), qPrintable(r.message));
     }
@@ -343,7 +326,7 @@ private Q_SLOTS:
         o.firmware = "1.6.6";
         QVERIFY(makeRig(rig, o, CanProtocol::CanOpen, kIface));
         QTRY_VERIFY_WITH_TIMEOUT(rig.frames.countRx(0x288) > 5, 5000);
-        auto r = waitResult(*rig.session, rig.session->setNodeId(20));
+        auto r = test::waitCanResult(*rig.session, rig.session->setNodeId(20));
         QVERIFY(!r.ok); // 0x209C does not exist on 1.6.6
         QVERIFY2(r.message.contains(QStringLiteral("does not exist")), qPrintable(r.message));
         CanSessionOptions so = rig.session->options();
@@ -352,7 +335,7 @@ private Q_SLOTS:
         so.hipnucNodeIdObject = canopen::hipnuc::nodeIdObject(1, 6, 6);
         rig.session->open(so);
         QTRY_COMPARE(rig.session->state(), device::SessionState::Connected);
-        r = waitResult(*rig.session, rig.session->setNodeId(20));
+        r = test::waitCanResult(*rig.session, rig.session->setNodeId(20));
         QVERIFY2(r.ok, qPrintable(r.message));
         QTRY_VERIFY(rig.frames.countRx(0x294) > 5);
     }
@@ -366,14 +349,14 @@ private Q_SLOTS:
         QVERIFY(makeRig(rig, o, CanProtocol::Auto));
         QTRY_VERIFY_WITH_TIMEOUT(rig.session->store().totalAppended() > 3, 5000);
         QTRY_COMPARE(rig.session->protocol(), CanProtocol::Hec495);
-        auto r = waitResult(*rig.session, rig.session->setHec495Rate(6));
+        auto r = test::waitCanResult(*rig.session, rig.session->setHec495Rate(6));
         QVERIFY2(r.ok, qPrintable(r.message));
         const qint64 from = mark(rig);
         // Enough frames at the new rate to measure its period (about a second of them).
         QVERIFY(runUntil([&] { return rig.frames.countRx(0x185, from + 30000000) >= 90; }));
         const double p = rig.frames.periodMs(0x185, from + 30000000);
         QVERIFY2(p > 7 && p < 14, qPrintable(QString::number(p)));
-        r = waitResult(*rig.session, rig.session->hec495Write(hec495::ObjPdoMode, hec495::ModeFixed));
+        r = test::waitCanResult(*rig.session, rig.session->hec495Write(hec495::ObjPdoMode, hec495::ModeFixed));
         QVERIFY2(r.ok, qPrintable(r.message));
         // The write is confirmed, then the job waits for the power cycle and follows node 16.
         QSignalSpy finished(rig.session.get(), &CanSession::requestFinished);
@@ -382,7 +365,7 @@ private Q_SLOTS:
         QCOMPARE(rig.sim->device().node(), 5);
         QCOMPARE(finished.size(), 0);
         rig.sim->powerCycle();
-        r = waitResult(*rig.session, id);
+        r = test::waitCanResult(*rig.session, id);
         QVERIFY2(r.ok, qPrintable(r.message));
         QCOMPARE(rig.session->targetNode(), 16);
         QTRY_VERIFY(rig.frames.countRx(0x190) > 3);
@@ -397,17 +380,17 @@ private Q_SLOTS:
             o.protocol = p;
             QVERIFY(makeRig(rig, o, p, p == CanProtocol::J1939 ? kIface : kIface1));
             QTRY_VERIFY_WITH_TIMEOUT(rig.session->store().totalAppended() > 5, 5000);
-            auto r = waitResult(*rig.session, rig.session->setInclinometerSign(0, true));
+            auto r = test::waitCanResult(*rig.session, rig.session->setInclinometerSign(0, true));
             QVERIFY2(r.ok, qPrintable(r.message));
             QCOMPARE(rig.sim->device().hipnuc().inclSignX, 1u);
-            r = waitResult(*rig.session, rig.session->setInclinometerSign(1, true));
+            r = test::waitCanResult(*rig.session, rig.session->setInclinometerSign(1, true));
             QVERIFY2(r.ok, qPrintable(r.message));
             QCOMPARE(rig.sim->device().hipnuc().inclSignY, 1u);
-            r = waitResult(*rig.session, rig.session->setInclinometerSign(0, false));
+            r = test::waitCanResult(*rig.session, rig.session->setInclinometerSign(0, false));
             QVERIFY2(r.ok, qPrintable(r.message));
             QCOMPARE(rig.sim->device().hipnuc().inclSignX, 0u);
-            QVERIFY(!waitResult(*rig.session, rig.session->setInclinometerSign(2, true)).ok);
-            QVERIFY(!waitResult(*rig.session, rig.session->setHec495WorkMode(2)).ok); // not an HEC495
+            QVERIFY(!test::waitCanResult(*rig.session, rig.session->setInclinometerSign(2, true)).ok);
+            QVERIFY(!test::waitCanResult(*rig.session, rig.session->setHec495WorkMode(2)).ok); // not an HEC495
         }
     }
 
@@ -419,23 +402,23 @@ private Q_SLOTS:
         o.hec495 = true;
         QVERIFY(makeRig(rig, o, CanProtocol::Hec495));
         QTRY_VERIFY_WITH_TIMEOUT(rig.frames.countRx(0x185) > 2, 5000);
-        auto r = waitResult(*rig.session, rig.session->setHec495PdoMode(hec495::ModeFloatShort));
+        auto r = test::waitCanResult(*rig.session, rig.session->setHec495PdoMode(hec495::ModeFloatShort));
         QVERIFY2(r.ok, qPrintable(r.message));
         QCOMPARE(rig.sim->device().hec().pdoMode, uint32_t(hec495::ModeFloatShort));
-        r = waitResult(*rig.session, rig.session->setHec495WorkMode(0x0A));
+        r = test::waitCanResult(*rig.session, rig.session->setHec495WorkMode(0x0A));
         QVERIFY2(r.ok, qPrintable(r.message));
         QCOMPARE(rig.sim->device().hec().workMode, 0x0Au);
-        QVERIFY(!waitResult(*rig.session, rig.session->setHec495PdoMode(2)).ok);  // not a documented mode
-        QVERIFY(!waitResult(*rig.session, rig.session->setHec495WorkMode(3)).ok);
-        QVERIFY(waitResult(*rig.session, rig.session->setHec495WorkMode(0x02)).ok);
+        QVERIFY(!test::waitCanResult(*rig.session, rig.session->setHec495PdoMode(2)).ok);  // not a documented mode
+        QVERIFY(!test::waitCanResult(*rig.session, rig.session->setHec495WorkMode(3)).ok);
+        QVERIFY(test::waitCanResult(*rig.session, rig.session->setHec495WorkMode(0x02)).ok);
         // NMT stop to every node: the PDOs stop (not saved); start: they come again.
-        r = waitResult(*rig.session, rig.session->setAllNodesOutput(false));
+        r = test::waitCanResult(*rig.session, rig.session->setAllNodesOutput(false));
         QVERIFY2(r.ok, qPrintable(r.message));
         QVERIFY(!rig.sim->device().hec().pdoStarted);
         const qint64 from = mark(rig);
         QTest::qWait(400); // duration under test: no PDO for 400 ms after the NMT stop
         QCOMPARE(rig.frames.countRx(0x185, from + 1), 0);
-        r = waitResult(*rig.session, rig.session->setAllNodesOutput(true));
+        r = test::waitCanResult(*rig.session, rig.session->setAllNodesOutput(true));
         QVERIFY2(r.ok, qPrintable(r.message));
         QVERIFY(rig.sim->device().hec().pdoStarted);
         QVERIFY(rig.frames.countRx(0x185, from + 1) > 0);
@@ -449,15 +432,15 @@ private Q_SLOTS:
         o.hec495 = true;
         QVERIFY(makeRig(rig, o, CanProtocol::Hec495, kIface1));
         QTRY_VERIFY_WITH_TIMEOUT(rig.frames.countRx(hec495::kExtDataXId) > 2, 5000);
-        const auto r = waitResult(*rig.session, rig.session->hec495Write(hec495::ObjPdoMode, 1));
+        const auto r = test::waitCanResult(*rig.session, rig.session->hec495Write(hec495::ObjPdoMode, 1));
         QVERIFY2(r.ok, qPrintable(r.message));
         QTRY_VERIFY_WITH_TIMEOUT(rig.frames.countRx(hec495::kExtDataYId) > 2, 3000);
         QVERIFY(rig.session->store().latest()->has(model::FieldEuler));
         // The typed PDO format of the variant (0 / 1); what it does not have is refused.
-        QVERIFY(waitResult(*rig.session, rig.session->setHec495PdoMode(0)).ok);
-        QVERIFY(!waitResult(*rig.session, rig.session->setHec495PdoMode(3)).ok);
-        QVERIFY(!waitResult(*rig.session, rig.session->setHec495WorkMode(0x0A)).ok);
-        QVERIFY(!waitResult(*rig.session, rig.session->setAllNodesOutput(false)).ok);
+        QVERIFY(test::waitCanResult(*rig.session, rig.session->setHec495PdoMode(0)).ok);
+        QVERIFY(!test::waitCanResult(*rig.session, rig.session->setHec495PdoMode(3)).ok);
+        QVERIFY(!test::waitCanResult(*rig.session, rig.session->setHec495WorkMode(0x0A)).ok);
+        QVERIFY(!test::waitCanResult(*rig.session, rig.session->setAllNodesOutput(false)).ok);
     }
 };
 

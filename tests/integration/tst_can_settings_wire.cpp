@@ -7,6 +7,7 @@
 #include "device/can_session.h"
 #include "device/link_opener.h"
 #include "settings/can_setting_catalog.h"
+#include "../common/can_result.h"
 #include "../common/test_main.h"
 
 #include <QCanBus>
@@ -129,22 +130,6 @@ private:
     std::unique_ptr<QCanBusDevice> m_bus;
 };
 
-CanRequestResult waitResult(CanSession &s, quint64 id)
-{
-    CanRequestResult out;
-    bool done = false;
-    const auto c = QObject::connect(&s, &CanSession::requestFinished, &s, [&](const CanRequestResult &r) {
-        if (r.id == id) {
-            out = r;
-            done = true;
-        }
-    });
-    if (!test::waitFor([&done] { return done; }, 5000))
-        out.message = QStringLiteral("no result");
-    QObject::disconnect(c);
-    return out;
-}
-
 std::unique_ptr<CanSession> openSession(CanProtocol protocol)
 {
     auto s = std::make_unique<CanSession>();
@@ -188,21 +173,21 @@ private Q_SLOTS:
         m_device.seen.clear();
         auto s = openSession(CanProtocol::J1939);
         QVERIFY(s);
-        CanRequestResult r = waitResult(*s, s->readSetting(setting(CanProtocol::J1939, "bitrate")));
+        CanRequestResult r = test::waitCanResult(*s, s->readSetting(setting(CanProtocol::J1939, "bitrate")));
         QVERIFY2(r.ok, qPrintable(r.message));
         QCOMPARE(setting(CanProtocol::J1939, "bitrate").show(r.value), QStringLiteral("250000"));
         QVERIFY(!m_device.seen.isEmpty());
         const QCanBusFrame req = m_device.seen.first();
         QCOMPARE(req.frameId(), 0x0CEF0855u);
         QCOMPARE(req.payload().left(4), bytes({0x9A, 0x00, 0x03, 0x00}));
-        r = waitResult(*s, s->readSetting(setting(CanProtocol::J1939, "interval-ff34")));
+        r = test::waitCanResult(*s, s->readSetting(setting(CanProtocol::J1939, "interval-ff34")));
         QVERIFY2(r.ok, qPrintable(r.message));
         QCOMPARE(r.value, 20u);
-        r = waitResult(*s, s->readSetting(setting(CanProtocol::J1939, "incl-sign-x")));
+        r = test::waitCanResult(*s, s->readSetting(setting(CanProtocol::J1939, "incl-sign-x")));
         QCOMPARE(setting(CanProtocol::J1939, "incl-sign-x").show(r.value), QStringLiteral("reversed"));
         // A write: 0x0CEF0855 37 01 06 00 64 00 00 00 (the manual's example), then read back.
         m_device.seen.clear();
-        r = waitResult(*s, s->writeSetting(setting(CanProtocol::J1939, "interval-ff37"), 100));
+        r = test::waitCanResult(*s, s->writeSetting(setting(CanProtocol::J1939, "interval-ff37"), 100));
         QVERIFY2(r.ok, qPrintable(r.message));
         QVERIFY(m_device.seen.size() >= 2);
         QCOMPARE(m_device.seen[0].payload(), bytes({0x37, 0x01, 0x06, 0x00, 0x64, 0x00, 0x00, 0x00}));
@@ -218,24 +203,24 @@ private Q_SLOTS:
         m_device.seen.clear();
         auto s = openSession(CanProtocol::CanOpen);
         QVERIFY(s);
-        CanRequestResult r = waitResult(*s, s->readSetting(setting(CanProtocol::CanOpen, "heartbeat")));
+        CanRequestResult r = test::waitCanResult(*s, s->readSetting(setting(CanProtocol::CanOpen, "heartbeat")));
         QVERIFY2(r.ok, qPrintable(r.message));
         QCOMPARE(r.value, 250u);
         QCOMPARE(m_device.seen.first().frameId(), 0x608u);
         QCOMPARE(m_device.seen.first().payload(), bytes({0x40, 0x17, 0x10, 0x00, 0, 0, 0, 0}));
-        r = waitResult(*s, s->readSetting(setting(CanProtocol::CanOpen, "bitrate")));
+        r = test::waitCanResult(*s, s->readSetting(setting(CanProtocol::CanOpen, "bitrate")));
         QVERIFY2(r.ok, qPrintable(r.message));
         QCOMPARE(setting(CanProtocol::CanOpen, "bitrate").show(r.value), QStringLiteral("125000"));
-        r = waitResult(*s, s->readSetting(setting(CanProtocol::CanOpen, "tpdo1-period")));
+        r = test::waitCanResult(*s, s->readSetting(setting(CanProtocol::CanOpen, "tpdo1-period")));
         QCOMPARE(r.value, 40u);
-        r = waitResult(*s, s->readSetting(setting(CanProtocol::CanOpen, "tpdo1-mode")));
+        r = test::waitCanResult(*s, s->readSetting(setting(CanProtocol::CanOpen, "tpdo1-mode")));
         QCOMPARE(setting(CanProtocol::CanOpen, "tpdo1-mode").show(r.value), QStringLiteral("on each SYNC"));
         // An object the device does not have: its abort, not a value.
-        r = waitResult(*s, s->readSetting(setting(CanProtocol::CanOpen, "incl-sign-x")));
+        r = test::waitCanResult(*s, s->readSetting(setting(CanProtocol::CanOpen, "incl-sign-x")));
         QVERIFY(!r.ok);
         // A write (2B 17 10 00 2C 01 = 300 ms), read back.
         m_device.seen.clear();
-        r = waitResult(*s, s->writeSetting(setting(CanProtocol::CanOpen, "heartbeat"), 300));
+        r = test::waitCanResult(*s, s->writeSetting(setting(CanProtocol::CanOpen, "heartbeat"), 300));
         QVERIFY2(r.ok, qPrintable(r.message));
         QCOMPARE(m_device.seen.first().payload(), bytes({0x2B, 0x17, 0x10, 0x00, 0x2C, 0x01, 0x00, 0x00}));
         QVERIFY(r.message.contains(QLatin1String("verified by reading it back")));
@@ -248,10 +233,10 @@ private Q_SLOTS:
         auto s = openSession(CanProtocol::J1939);
         QVERIFY(s);
         m_device.seen.clear();
-        CanRequestResult r = waitResult(*s, s->trigger(0xFF34));
+        CanRequestResult r = test::waitCanResult(*s, s->trigger(0xFF34));
         QVERIFY2(r.ok, qPrintable(r.message));
         QCOMPARE(m_device.seen.first().payload(), bytes({0x96, 0x00, 0x06, 0x00, 0x34, 0xFF, 0x00, 0x00}));
-        r = waitResult(*s, s->trigger(0xFF3A));
+        r = test::waitCanResult(*s, s->trigger(0xFF3A));
         QVERIFY(!r.ok);
         QVERIFY2(r.message.contains(QLatin1String("no answer within 1000 ms")) && r.message.contains(QLatin1String("FF3A")),
                  qPrintable(r.message));
@@ -264,7 +249,7 @@ private Q_SLOTS:
         m_device.keeps = {0x009F};
         auto s = openSession(CanProtocol::J1939);
         QVERIFY(s);
-        const CanRequestResult r = waitResult(*s, s->writeSetting(setting(CanProtocol::J1939, "incl-sign-y"), 1));
+        const CanRequestResult r = test::waitCanResult(*s, s->writeSetting(setting(CanProtocol::J1939, "incl-sign-y"), 1));
         m_device.keeps.clear();
         QVERIFY(!r.ok);
         QVERIFY2(r.message.contains(QLatin1String("read back 0, expected 1")), qPrintable(r.message));
