@@ -539,23 +539,23 @@
     </message>
     <message>
         <location line="+8" />
-        <location line="+77" />
+        <location line="+84" />
         <source>HEC495 write 0x%1 confirmed</source>
         <translation>HEC495 写入 0x%1 已确认</translation>
     </message>
     <message>
-        <location line="-76" />
-        <location line="+77" />
+        <location line="-83" />
+        <location line="+84" />
         <source>HEC495 write %1</source>
         <translation>HEC495 写入 %1</translation>
     </message>
     <message>
-        <location line="-65" />
+        <location line="-72" />
         <source>PGN %1 %2: %3-%4-%5 %6:%7:%8.%9</source>
         <translation>PGN %1 %2：%3-%4-%5 %6:%7:%8.%9</translation>
     </message>
     <message>
-        <location line="+14" />
+        <location line="+21" />
         <source>heading %1 deg (CW); %2</source>
         <translation>航向角 %1 deg（顺时针）；%2</translation>
     </message>
@@ -623,7 +623,7 @@
 <context>
     <name>CanSettingCatalog</name>
     <message>
-        <location filename="../core/settings/can_setting_catalog.cpp" line="+55" />
+        <location filename="../core/settings/can_setting_catalog.cpp" line="+82" />
         <source>default</source>
         <translation>默认</translation>
     </message>
@@ -683,57 +683,55 @@
         <translation>仅在启用 CAN FD 输出的模块上有效；手册未给出启用它的命令</translation>
     </message>
     <message>
-        <location line="+3" />
-        <location line="+49" />
-        <location line="+48" />
+        <location line="-53" />
         <source>CAN bit rate</source>
         <translation>CAN 波特率</translation>
     </message>
     <message>
-        <location line="-94" />
-        <location line="+49" />
-        <location line="+4" />
+        <location line="+57" />
+        <location line="+46" />
+        <location line="+3" />
         <source>takes effect after save and reset</source>
         <translation>保存并复位后生效</translation>
     </message>
     <message>
-        <location line="-51" />
+        <location line="-48" />
         <source>Source address (node ID)</source>
         <translation>源地址（节点 ID）</translation>
     </message>
     <message>
         <location line="+2" />
-        <location line="+83" />
+        <location line="+80" />
         <source>Data output</source>
         <translation>数据输出</translation>
     </message>
     <message>
-        <location line="-81" />
-        <location line="+69" />
+        <location line="-78" />
+        <location line="+66" />
         <location line="+14" />
         <source>off</source>
         <translation>关</translation>
     </message>
     <message>
-        <location line="-83" />
-        <location line="+83" />
+        <location line="-80" />
+        <location line="+80" />
         <source>on</source>
         <translation>开</translation>
     </message>
     <message>
-        <location line="-81" />
-        <location line="+47" />
+        <location line="-78" />
+        <location line="+44" />
         <source>Inclinometer X direction</source>
         <translation>倾角仪 X 轴方向</translation>
     </message>
     <message>
-        <location line="-45" />
-        <location line="+47" />
+        <location line="-42" />
+        <location line="+44" />
         <source>Inclinometer Y direction</source>
         <translation>倾角仪 Y 轴方向</translation>
     </message>
     <message>
-        <location line="-45" />
+        <location line="-42" />
         <source>Firmware version</source>
         <translation>固件版本</translation>
     </message>
@@ -774,13 +772,13 @@
         <translation>心跳周期</translation>
     </message>
     <message>
-        <location line="+10" />
-        <location line="+48" />
+        <location line="+7" />
+        <location line="+45" />
         <source>Node ID</source>
         <translation>节点 ID</translation>
     </message>
     <message>
-        <location line="-34" />
+        <location line="-31" />
         <source>written only: the manual documents no way to read it back</source>
         <translation>只能写入：手册未说明如何读回</translation>
     </message>
@@ -835,7 +833,7 @@
         <translation>心跳（100 ms × (N + 1)）</translation>
     </message>
     <message>
-        <location line="+6" />
+        <location line="+3" />
         <location line="+4" />
         <source>takes effect after a power cycle</source>
         <translation>重新上电后生效</translation>
@@ -4148,7 +4146,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::device::CanFamily</name>
     <message>
-        <location filename="../core/device/can_family.cpp" line="+103" />
+        <location filename="../core/device/can_family.cpp" line="+105" />
         <source>connected to %1</source>
         <translation>已连接到 %1</translation>
     </message>
@@ -4190,21 +4188,26 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
     <message>
         <location line="+56" />
-        <source>node %1 sent no TPDO before "%2" either, so its effect cannot be seen: check the node ID</source>
-        <translation>节点 %1 在“%2”之前也未发送任何 TPDO，因此无法确认其效果：请检查节点 ID</translation>
+        <source>node %1 sent no data before "%2" either, so its effect cannot be seen: check the node ID</source>
+        <translation>节点 %1 在“%2”之前也没有发送数据，因此看不到其效果：请检查节点 ID</translation>
     </message>
     <message>
-        <location line="+13" />
+        <location line="+20" />
+        <source>node %1 sent no data within %2 ms of "%3": if its TPDOs wait for SYNC, send one; otherwise check the node ID, its output intervals and that the module is powered</source>
+        <translation>节点 %1 在“%3”后 %2 ms 内没有发送数据：如果其 TPDO 等待 SYNC，请发送一个；否则请检查节点 ID、输出间隔以及模块是否上电</translation>
+    </message>
+    <message>
+        <location line="+88" />
+        <source>node %1 still sends data after "%2": check the node ID</source>
+        <translation>节点 %1 在“%2”之后仍在发送数据：请检查节点 ID</translation>
+    </message>
+    <message>
+        <location line="-95" />
         <source>no answer within %1 ms: node %2 sent no PGN %3 after "%4" (a PGN its firmware or configuration does not send, or output off)</source>
         <translation>%1 ms 内没有应答：节点 %2 在“%4”之后没有发送 PGN %3（固件或配置不发送该 PGN，或输出已关闭）</translation>
     </message>
     <message>
-        <location line="+7" />
-        <source>node %1 sent no TPDO within %2 ms of "%3": if its TPDOs wait for SYNC, send one; otherwise check the node ID and that the module is powered</source>
-        <translation>节点 %1 在“%3”后 %2 ms 内未发送 TPDO：若其 TPDO 处于 SYNC 模式，请发送一次 SYNC；否则请检查节点 ID 以及模块是否已上电</translation>
-    </message>
-    <message>
-        <location line="+7" />
+        <location line="+14" />
         <source>no answer from node %1 to "%2" within %3 ms: check the node ID, the bit rate and the wiring</source>
         <translation>节点 %1 在 %3 ms 内未应答“%2”：请检查节点 ID、波特率和接线</translation>
     </message>
@@ -4229,12 +4232,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>设备拒绝了“%1”：%2</translation>
     </message>
     <message>
-        <location line="+21" />
-        <source>node %1 still sends TPDOs after "%2": check the node ID</source>
-        <translation>节点 %1 在“%2”后仍在发送 TPDO：请检查节点 ID</translation>
-    </message>
-    <message>
-        <location line="+16" />
+        <location line="+37" />
         <source>"%1" read back %2, expected %3</source>
         <translation>“%1”回读值为 %2，应为 %3</translation>
     </message>
@@ -4252,7 +4250,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::device::CanSession</name>
     <message>
-        <location filename="../core/device/can_session.cpp" line="+98" />
+        <location filename="../core/device/can_session.cpp" line="+91" />
         <source>HiPNUC J1939</source>
         <translation>HiPNUC J1939</translation>
     </message>
@@ -4428,12 +4426,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <location line="+3" />
         <location line="+66" />
         <location line="+30" />
-        <location line="+112" />
+        <location line="+129" />
         <source>the protocol is not known yet: choose it or wait for traffic</source>
         <translation>协议尚未确定：请选择协议，或等待总线上出现数据</translation>
     </message>
     <message>
-        <location line="-202" />
+        <location line="-219" />
         <source>the HEC495 rate code is 0 (off) to 6 (100 Hz)</source>
         <translation>HEC495 频率代码为 0（关闭）至 6（100 Hz）</translation>
     </message>
@@ -4505,12 +4503,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
     <message>
         <location line="+3" />
         <location line="+8" />
-        <location line="+171" />
+        <location line="+188" />
         <source>reset</source>
         <translation>复位</translation>
     </message>
     <message>
-        <location line="-178" />
+        <location line="-195" />
         <location line="+5" />
         <location line="+8" />
         <source>set the node ID</source>
@@ -4674,7 +4672,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>NMT 停止，所有节点</translation>
     </message>
     <message>
-        <location line="+19" />
+        <location line="+29" />
         <source>output on</source>
         <translation>开启输出</translation>
     </message>
@@ -4684,12 +4682,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>关闭输出</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+4" />
         <source>output enable</source>
         <translation>输出使能</translation>
     </message>
     <message>
-        <location line="+6" />
+        <location line="+17" />
         <source>NMT start</source>
         <translation>NMT 启动</translation>
     </message>
@@ -4699,7 +4697,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>NMT 停止</translation>
     </message>
     <message>
-        <location line="+31" />
+        <location line="+23" />
         <source>"%1" needs a HiPNUC J1939 or CANopen device (the HEC495 saves at once)</source>
         <translation>“%1”需要 HiPNUC J1939 或 CANopen 设备（HEC495 会立即保存）</translation>
     </message>
@@ -4976,7 +4974,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>节点 %1 已恢复应答</translation>
     </message>
     <message>
-        <location line="+37" />
+        <location line="+35" />
         <source>not connected</source>
         <translation>未连接</translation>
     </message>
@@ -5072,7 +5070,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::device::SessionEngine</name>
     <message>
-        <location filename="../core/device/session_engine.cpp" line="+147" />
+        <location filename="../core/device/session_engine.cpp" line="+141" />
         <source>the link went to the device's own session</source>
         <translation>链路已交给设备自己的会话</translation>
     </message>
@@ -6177,7 +6175,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
     <message>
         <location line="+18" />
-        <location line="+268" />
+        <location line="+274" />
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
@@ -6230,12 +6228,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>设备报告 %1</translation>
     </message>
     <message>
-        <location line="-261" />
+        <location line="-267" />
         <source>could not be read back</source>
         <translation>无法回读</translation>
     </message>
     <message>
-        <location line="+292" />
+        <location line="+298" />
         <source>unknown action '%1'</source>
         <translation>未知操作“%1”</translation>
     </message>
@@ -7980,7 +7978,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>总线波特率：所选设备手册列出的速率，默认选中其出厂速率（HiPNUC 500 kbit/s，HEC495 250 kbit/s）</translation>
     </message>
     <message>
-        <location line="+79" />
+        <location line="+81" />
         <source>Keep the interface's setting</source>
         <translation>保持接口现有设置</translation>
     </message>
@@ -7995,7 +7993,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>%1 kbit/s</translation>
     </message>
     <message>
-        <location line="-81" />
+        <location line="-83" />
         <source>&amp;Bit rate:</source>
         <translation>波特率(&amp;B)：</translation>
     </message>
@@ -8095,7 +8093,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>所选协议的模拟模块会在总线上应答（无硬件时可用 virtualcan 插件试用）</translation>
     </message>
     <message>
-        <location line="+45" />
+        <location line="+47" />
         <source>The module can be switched to %1 kbit/s (register 0x9A, after save and reset).</source>
         <translation>模块可切换到 %1 kbit/s（寄存器 0x9A，保存并复位后生效）。</translation>
     </message>
@@ -8221,7 +8219,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::CanSettingsTable</name>
     <message>
-        <location filename="../ui/bus/can_settings_table.cpp" line="+56" />
+        <location filename="../ui/bus/can_settings_table.cpp" line="+57" />
         <source>Setting</source>
         <translation>设置项</translation>
     </message>
@@ -8276,7 +8274,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>%1；%2</translation>
     </message>
     <message>
-        <location line="+88" />
+        <location line="+85" />
         <source>reading…</source>
         <translation>正在读取…</translation>
     </message>
@@ -10950,7 +10948,7 @@ Samples: %3</source>
 <context>
     <name>imudesk::ui::ModbusConnectDialog</name>
     <message>
-        <location filename="../ui/bus/bus_connect_dialog.cpp" line="-205" />
+        <location filename="../ui/bus/bus_connect_dialog.cpp" line="-207" />
         <source>Connect over Modbus RTU</source>
         <translation>通过 Modbus RTU 连接</translation>
     </message>

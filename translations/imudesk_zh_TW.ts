@@ -539,23 +539,23 @@
     </message>
     <message>
         <location line="+8" />
-        <location line="+77" />
+        <location line="+84" />
         <source>HEC495 write 0x%1 confirmed</source>
         <translation>HEC495 寫入 0x%1 已確認</translation>
     </message>
     <message>
-        <location line="-76" />
-        <location line="+77" />
+        <location line="-83" />
+        <location line="+84" />
         <source>HEC495 write %1</source>
         <translation>HEC495 寫入 %1</translation>
     </message>
     <message>
-        <location line="-65" />
+        <location line="-72" />
         <source>PGN %1 %2: %3-%4-%5 %6:%7:%8.%9</source>
         <translation>PGN %1 %2：%3-%4-%5 %6:%7:%8.%9</translation>
     </message>
     <message>
-        <location line="+14" />
+        <location line="+21" />
         <source>heading %1 deg (CW); %2</source>
         <translation>航向角 %1 deg（順時針）；%2</translation>
     </message>
@@ -623,7 +623,7 @@
 <context>
     <name>CanSettingCatalog</name>
     <message>
-        <location filename="../core/settings/can_setting_catalog.cpp" line="+55" />
+        <location filename="../core/settings/can_setting_catalog.cpp" line="+82" />
         <source>default</source>
         <translation>預設</translation>
     </message>
@@ -683,57 +683,55 @@
         <translation>僅在啟用 CAN FD 輸出的模組上有效；手冊未給出啟用它的命令</translation>
     </message>
     <message>
-        <location line="+3" />
-        <location line="+49" />
-        <location line="+48" />
+        <location line="-53" />
         <source>CAN bit rate</source>
         <translation>CAN 鮑率</translation>
     </message>
     <message>
-        <location line="-94" />
-        <location line="+49" />
-        <location line="+4" />
+        <location line="+57" />
+        <location line="+46" />
+        <location line="+3" />
         <source>takes effect after save and reset</source>
         <translation>儲存並重設後生效</translation>
     </message>
     <message>
-        <location line="-51" />
+        <location line="-48" />
         <source>Source address (node ID)</source>
         <translation>來源位址（節點 ID）</translation>
     </message>
     <message>
         <location line="+2" />
-        <location line="+83" />
+        <location line="+80" />
         <source>Data output</source>
         <translation>資料輸出</translation>
     </message>
     <message>
-        <location line="-81" />
-        <location line="+69" />
+        <location line="-78" />
+        <location line="+66" />
         <location line="+14" />
         <source>off</source>
         <translation>關</translation>
     </message>
     <message>
-        <location line="-83" />
-        <location line="+83" />
+        <location line="-80" />
+        <location line="+80" />
         <source>on</source>
         <translation>開</translation>
     </message>
     <message>
-        <location line="-81" />
-        <location line="+47" />
+        <location line="-78" />
+        <location line="+44" />
         <source>Inclinometer X direction</source>
         <translation>傾角儀 X 軸方向</translation>
     </message>
     <message>
-        <location line="-45" />
-        <location line="+47" />
+        <location line="-42" />
+        <location line="+44" />
         <source>Inclinometer Y direction</source>
         <translation>傾角儀 Y 軸方向</translation>
     </message>
     <message>
-        <location line="-45" />
+        <location line="-42" />
         <source>Firmware version</source>
         <translation>韌體版本</translation>
     </message>
@@ -774,13 +772,13 @@
         <translation>心跳週期</translation>
     </message>
     <message>
-        <location line="+10" />
-        <location line="+48" />
+        <location line="+7" />
+        <location line="+45" />
         <source>Node ID</source>
         <translation>節點 ID</translation>
     </message>
     <message>
-        <location line="-34" />
+        <location line="-31" />
         <source>written only: the manual documents no way to read it back</source>
         <translation>只能寫入：手冊未說明如何讀回</translation>
     </message>
@@ -835,7 +833,7 @@
         <translation>心跳（100 ms × (N + 1)）</translation>
     </message>
     <message>
-        <location line="+6" />
+        <location line="+3" />
         <location line="+4" />
         <source>takes effect after a power cycle</source>
         <translation>重新上電後生效</translation>
@@ -4148,7 +4146,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::device::CanFamily</name>
     <message>
-        <location filename="../core/device/can_family.cpp" line="+103" />
+        <location filename="../core/device/can_family.cpp" line="+105" />
         <source>connected to %1</source>
         <translation>已連線到 %1</translation>
     </message>
@@ -4190,21 +4188,26 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
     <message>
         <location line="+56" />
-        <source>node %1 sent no TPDO before "%2" either, so its effect cannot be seen: check the node ID</source>
-        <translation>節點 %1 在「%2」之前也未傳送任何 TPDO，因此無法確認其效果：請檢查節點 ID</translation>
+        <source>node %1 sent no data before "%2" either, so its effect cannot be seen: check the node ID</source>
+        <translation>節點 %1 在「%2」之前也沒有傳送資料，因此看不到其效果：請檢查節點 ID</translation>
     </message>
     <message>
-        <location line="+13" />
+        <location line="+20" />
+        <source>node %1 sent no data within %2 ms of "%3": if its TPDOs wait for SYNC, send one; otherwise check the node ID, its output intervals and that the module is powered</source>
+        <translation>節點 %1 在「%3」後 %2 ms 內沒有傳送資料：如果其 TPDO 等待 SYNC，請傳送一個；否則請檢查節點 ID、輸出間隔以及模組是否上電</translation>
+    </message>
+    <message>
+        <location line="+88" />
+        <source>node %1 still sends data after "%2": check the node ID</source>
+        <translation>節點 %1 在「%2」之後仍在傳送資料：請檢查節點 ID</translation>
+    </message>
+    <message>
+        <location line="-95" />
         <source>no answer within %1 ms: node %2 sent no PGN %3 after "%4" (a PGN its firmware or configuration does not send, or output off)</source>
         <translation>%1 ms 內沒有回應：節點 %2 在「%4」之後沒有傳送 PGN %3（韌體或設定不傳送該 PGN，或輸出已關閉）</translation>
     </message>
     <message>
-        <location line="+7" />
-        <source>node %1 sent no TPDO within %2 ms of "%3": if its TPDOs wait for SYNC, send one; otherwise check the node ID and that the module is powered</source>
-        <translation>節點 %1 在「%3」後 %2 ms 內未傳送 TPDO：若其 TPDO 處於 SYNC 模式，請傳送一次 SYNC；否則請檢查節點 ID 以及模組是否已上電</translation>
-    </message>
-    <message>
-        <location line="+7" />
+        <location line="+14" />
         <source>no answer from node %1 to "%2" within %3 ms: check the node ID, the bit rate and the wiring</source>
         <translation>節點 %1 在 %3 ms 內未回應「%2」：請檢查節點 ID、位元速率和接線</translation>
     </message>
@@ -4229,12 +4232,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>裝置拒絕了「%1」：%2</translation>
     </message>
     <message>
-        <location line="+21" />
-        <source>node %1 still sends TPDOs after "%2": check the node ID</source>
-        <translation>節點 %1 在「%2」後仍在傳送 TPDO：請檢查節點 ID</translation>
-    </message>
-    <message>
-        <location line="+16" />
+        <location line="+37" />
         <source>"%1" read back %2, expected %3</source>
         <translation>「%1」回讀值為 %2，預期為 %3</translation>
     </message>
@@ -4252,7 +4250,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::device::CanSession</name>
     <message>
-        <location filename="../core/device/can_session.cpp" line="+98" />
+        <location filename="../core/device/can_session.cpp" line="+91" />
         <source>HiPNUC J1939</source>
         <translation>HiPNUC J1939</translation>
     </message>
@@ -4428,12 +4426,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <location line="+3" />
         <location line="+66" />
         <location line="+30" />
-        <location line="+112" />
+        <location line="+129" />
         <source>the protocol is not known yet: choose it or wait for traffic</source>
         <translation>尚未得知協定：請選擇協定或等待匯流排上的資料</translation>
     </message>
     <message>
-        <location line="-202" />
+        <location line="-219" />
         <source>the HEC495 rate code is 0 (off) to 6 (100 Hz)</source>
         <translation>HEC495 頻率代碼為 0（關閉）到 6（100 Hz）</translation>
     </message>
@@ -4505,12 +4503,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
     <message>
         <location line="+3" />
         <location line="+8" />
-        <location line="+171" />
+        <location line="+188" />
         <source>reset</source>
         <translation>重設</translation>
     </message>
     <message>
-        <location line="-178" />
+        <location line="-195" />
         <location line="+5" />
         <location line="+8" />
         <source>set the node ID</source>
@@ -4674,7 +4672,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>NMT 停止，所有節點</translation>
     </message>
     <message>
-        <location line="+19" />
+        <location line="+29" />
         <source>output on</source>
         <translation>開啟輸出</translation>
     </message>
@@ -4684,12 +4682,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>關閉輸出</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+4" />
         <source>output enable</source>
         <translation>輸出啟用</translation>
     </message>
     <message>
-        <location line="+6" />
+        <location line="+17" />
         <source>NMT start</source>
         <translation>NMT 啟動</translation>
     </message>
@@ -4699,7 +4697,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>NMT 停止</translation>
     </message>
     <message>
-        <location line="+31" />
+        <location line="+23" />
         <source>"%1" needs a HiPNUC J1939 or CANopen device (the HEC495 saves at once)</source>
         <translation>「%1」需要 HiPNUC J1939 或 CANopen 裝置（HEC495 會立即儲存）</translation>
     </message>
@@ -4976,7 +4974,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>節點 %1 已恢復回應</translation>
     </message>
     <message>
-        <location line="+37" />
+        <location line="+35" />
         <source>not connected</source>
         <translation>未連線</translation>
     </message>
@@ -5072,7 +5070,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::device::SessionEngine</name>
     <message>
-        <location filename="../core/device/session_engine.cpp" line="+147" />
+        <location filename="../core/device/session_engine.cpp" line="+141" />
         <source>the link went to the device's own session</source>
         <translation>連結已交給裝置自己的工作階段</translation>
     </message>
@@ -6177,7 +6175,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
     <message>
         <location line="+18" />
-        <location line="+268" />
+        <location line="+274" />
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
@@ -6230,12 +6228,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>裝置回報 %1</translation>
     </message>
     <message>
-        <location line="-261" />
+        <location line="-267" />
         <source>could not be read back</source>
         <translation>無法回讀</translation>
     </message>
     <message>
-        <location line="+292" />
+        <location line="+298" />
         <source>unknown action '%1'</source>
         <translation>未知的操作「%1」</translation>
     </message>
@@ -7980,7 +7978,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>匯流排鮑率：所選裝置手冊列出的速率，預設選中其出廠速率（HiPNUC 500 kbit/s，HEC495 250 kbit/s）</translation>
     </message>
     <message>
-        <location line="+79" />
+        <location line="+81" />
         <source>Keep the interface's setting</source>
         <translation>保留介面目前的設定</translation>
     </message>
@@ -7995,7 +7993,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>%1 kbit/s</translation>
     </message>
     <message>
-        <location line="-81" />
+        <location line="-83" />
         <source>&amp;Bit rate:</source>
         <translation>位元速率(&amp;B)：</translation>
     </message>
@@ -8095,7 +8093,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>由所選協定的模擬模組在匯流排上回應（使用 virtualcan 外掛程式，無需硬體即可試用）</translation>
     </message>
     <message>
-        <location line="+45" />
+        <location line="+47" />
         <source>The module can be switched to %1 kbit/s (register 0x9A, after save and reset).</source>
         <translation>模組可切換到 %1 kbit/s（暫存器 0x9A，儲存並重設後生效）。</translation>
     </message>
@@ -8221,7 +8219,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::CanSettingsTable</name>
     <message>
-        <location filename="../ui/bus/can_settings_table.cpp" line="+56" />
+        <location filename="../ui/bus/can_settings_table.cpp" line="+57" />
         <source>Setting</source>
         <translation>設定項</translation>
     </message>
@@ -8276,7 +8274,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>%1；%2</translation>
     </message>
     <message>
-        <location line="+88" />
+        <location line="+85" />
         <source>reading…</source>
         <translation>正在讀取…</translation>
     </message>
@@ -10950,7 +10948,7 @@ Samples: %3</source>
 <context>
     <name>imudesk::ui::ModbusConnectDialog</name>
     <message>
-        <location filename="../ui/bus/bus_connect_dialog.cpp" line="-205" />
+        <location filename="../ui/bus/bus_connect_dialog.cpp" line="-207" />
         <source>Connect over Modbus RTU</source>
         <translation>透過 Modbus RTU 連線</translation>
     </message>

@@ -72,7 +72,7 @@ int simulateHec495(const QCommandLineParser &p);
 int cmdCan(const QStringList &args);
 // simulate --can PLUGIN:INTERFACE: serves a simulated CAN device until SIGINT/SIGTERM (commands_can.cpp).
 int simulateCan(const QString &canSpec, const QString &protocol, const QString &deviceKind, int node, sim::Motion motion,
-                uint64_t seed, const QString &firmware, const QString &flashDump = QString());
+                uint64_t seed, const QString &firmware, bool canFd, const QString &flashDump = QString());
 int cmdMagcal(const QStringList &args);
 int cmdCalibrate(const QStringList &args); // commands_calibrate.cpp
 int cmdStation(const QStringList &args);   // commands_station.cpp

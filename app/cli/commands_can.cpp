@@ -239,6 +239,41 @@ int typedSetting(CanSession &session, const QString &sub, const QStringList &pos
 
 } // namespace
 
+// One text line of a CAN sample: the fields its frames carried, no zeros for the others.
+static QString sampleLine(const model::Sample &s, int node)
+{
+    QString line = QStringLiteral("%1 node %2").arg(QString::fromStdString(s.source)).arg(node);
+    const auto vec = [](const char *name, const model::Vec3 &v, int decimals, const char *unit) {
+        return QStringLiteral(" %1=[%2 %3 %4] %5")
+            .arg(QLatin1String(name))
+            .arg(v.x, 0, 'f', decimals)
+            .arg(v.y, 0, 'f', decimals)
+            .arg(v.z, 0, 'f', decimals)
+            .arg(QLatin1String(unit));
+    };
+    if (s.fields & model::FieldAcc)
+        line += vec("acc", s.acc, 3, "G");
+    if (s.fields & model::FieldGyr)
+        line += vec("gyr", s.gyr, 2, "deg/s");
+    if (s.fields & model::FieldMag)
+        line += vec("mag", s.mag, 1, "uT");
+    if (s.fields & model::FieldEuler)
+        line += vec("rpy", model::Vec3{s.roll, s.pitch, s.yaw}, 2, "deg");
+    if (s.fields & model::FieldInclination)
+        line += QStringLiteral(" incl=[%1 %2] deg").arg(s.inclinationX, 0, 'f', 2).arg(s.inclinationY, 0, 'f', 2);
+    if (s.fields & model::FieldTemperature)
+        line += QStringLiteral(" temp=%1 C").arg(s.temperatureC, 0, 'f', 1);
+    if (s.utcTimeOfDayS >= 0) {
+        const int ms = int(s.utcTimeOfDayS * 1000 + 0.5);
+        line += QStringLiteral(" utc=%1:%2:%3.%4")
+                    .arg(ms / 3600000, 2, 10, QLatin1Char('0'))
+                    .arg(ms / 60000 % 60, 2, 10, QLatin1Char('0'))
+                    .arg(ms / 1000 % 60, 2, 10, QLatin1Char('0'))
+                    .arg(ms % 1000, 3, 10, QLatin1Char('0'));
+    }
+    return line;
+}
+
 int cmdCan(const QStringList &args)
 {
     quietCanLogging();
@@ -377,6 +412,15 @@ int cmdCan(const QStringList &args)
     if (sub == QLatin1String("read")) {
         uint64_t seq = 0, printed = 0;
         int64_t lastTextNs = 0;
+        qint64 framesIn = 0, fdFramesIn = 0;
+        QObject::connect(&session, &device::CanSession::framesSeen, &session, [&](const device::CanFrameEvents &events) {
+            for (const auto &e : events) {
+                if (e.transmitted)
+                    continue;
+                ++framesIn;
+                fdFramesIn += e.frame.fd;
+            }
+        });
         auto drain = [&] {
             for (const auto &s : session.store().since(seq, SIZE_MAX, &seq)) {
                 ++printed;
@@ -384,9 +428,7 @@ int cmdCan(const QStringList &args)
                     outRaw(format::sampleToJson(s));
                 } else if (s.hostTimeNs - lastTextNs >= 100'000'000) {
                     lastTextNs = s.hostTimeNs;
-                    std::printf("%s node %d acc=[%.3f %.3f %.3f] G gyr=[%.2f %.2f %.2f] deg/s rpy=[%.2f %.2f %.2f] deg\n",
-                                s.source.c_str(), session.targetNode(), s.acc.x, s.acc.y, s.acc.z, s.gyr.x, s.gyr.y, s.gyr.z,
-                                s.roll, s.pitch, s.yaw);
+                    out(sampleLine(s, session.targetNode()));
                 }
             }
             std::fflush(stdout);
@@ -395,7 +437,11 @@ int cmdCan(const QStringList &args)
         waitFor(drain, duration > 0 ? int(duration * 1000) : -1);
         drain();
         if (!json)
-            out(QStringLiteral("samples: %1, protocol: %2").arg(printed).arg(QString::fromLatin1(protocol::can::protocolName(session.protocol()))));
+            out(QStringLiteral("samples: %1, protocol: %2, frames received: %3 (CAN FD: %4)")
+                    .arg(printed)
+                    .arg(QString::fromLatin1(protocol::can::protocolName(session.protocol())))
+                    .arg(framesIn)
+                    .arg(fdFramesIn));
         return interrupted() ? ExitInterrupted : ExitOk;
     }
     if (sub == QLatin1String("reg")) {
@@ -461,12 +507,12 @@ int cmdCan(const QStringList &args)
 }
 
 int simulateCan(const QString &canSpec, const QString &protocolText, const QString &deviceKind, int node, sim::Motion motion,
-                uint64_t seed, const QString &firmware, const QString &flashDump)
+                uint64_t seed, const QString &firmware, bool canFd, const QString &flashDump)
 {
     quietCanLogging();
     QString error;
     int dumped = ExitOk;
-    const int rc = sim::runCanSimulatorCommand(canSpec, protocolText, deviceKind, node, motion, seed, firmware, false, &error,
+    const int rc = sim::runCanSimulatorCommand(canSpec, protocolText, deviceKind, node, motion, seed, firmware, canFd, &error,
                                                [] { return interrupted(); },
                                                [&](sim::CanSimDevice &d) { dumped = writeCanFlashDump(d, flashDump); });
     if (rc != 0)

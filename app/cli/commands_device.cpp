@@ -377,11 +377,14 @@ int cmdSimulate(const QStringList &args)
                                    QStringLiteral("PROTO"), QStringLiteral("j1939")));
     p.addOption(QCommandLineOption(QStringLiteral("node"), QStringLiteral("CAN: node ID (default 8, HEC495 5)."),
                                    QStringLiteral("N"), QStringLiteral("-1")));
+    p.addOption(QCommandLineOption(QStringLiteral("fd"),
+                                   QStringLiteral("CAN: a HiPNUC J1939 module on a CAN FD bus, which also sends the "
+                                                  "64-byte PGN 0xFF5A every 10 ms.")));
     const QString usage = QStringLiteral("imudesk-cli simulate --pty [--device hipnuc|hec495] [--model HI14] "
                                          "[--firmware 1.7.1] [--baud 115200] [--address N] "
                                          "[--motion static|spin|tumble|turntable] [--pps] [--seed N] [--faults LIST] "
                                          "[--flash-dump FILE] [--modbus [--id N]] | --can PLUGIN:INTERFACE [--protocol j1939|canopen] "
-                                         "[--device hipnuc|hec495] [--node N] [--flash-dump FILE]");
+                                         "[--device hipnuc|hec495] [--node N] [--fd] [--flash-dump FILE]");
     if (!parseArgs(p, args, usage))
         return ExitUsage;
     if (p.isSet(QStringLiteral("faults"))
@@ -389,13 +392,20 @@ int cmdSimulate(const QStringList &args)
             || p.value(QStringLiteral("device")) != QLatin1String("hipnuc")))
         return fail(QStringLiteral("--faults is for a HiPNUC module on a pty (simulate --pty [--device hipnuc])"),
                     ExitUsage);
+    if (p.isSet(QStringLiteral("fd"))
+        && (!p.isSet(QStringLiteral("can")) || p.value(QStringLiteral("device")) != QLatin1String("hipnuc")
+            || p.value(QStringLiteral("protocol")).toLower() != QLatin1String("j1939")))
+        return fail(QStringLiteral("--fd is for a HiPNUC J1939 module on CAN (simulate --can PLUGIN:IF --protocol j1939 --fd): "
+                                   "the manuals give CAN FD output (PGN 0xFF5A) for J1939 only"),
+                    ExitUsage);
     if (p.isSet(QStringLiteral("can"))) {
         sim::Motion m = sim::Motion::Static;
         if (!sim::parseMotion(p.value(QStringLiteral("motion")).toStdString(), m))
             return fail(QStringLiteral("--motion must be static, spin, tumble or turntable"), ExitUsage);
         return simulateCan(p.value(QStringLiteral("can")), p.value(QStringLiteral("protocol")), p.value(QStringLiteral("device")),
                            p.value(QStringLiteral("node")).toInt(), m, p.value(QStringLiteral("seed")).toULongLong(),
-                           p.value(QStringLiteral("firmware")), p.value(QStringLiteral("flash-dump")));
+                           p.value(QStringLiteral("firmware")), p.isSet(QStringLiteral("fd")),
+                           p.value(QStringLiteral("flash-dump")));
     }
     if (!p.isSet(QStringLiteral("pty")))
         return fail(QStringLiteral("simulate needs --pty (usage: %1)").arg(usage), ExitUsage);

@@ -53,9 +53,10 @@ void usage(FILE *to)
                "  simulate --pty --device hec495 [--baud 9600] [--address N] [--motion M] [--seed N]\n"
                "  hec495 PORT [--baud B] [--address N] [--json] read|nmea|info|declination [VALUE]|baud B|rate HZ|\n"
                "         content C|address N|save|reset|calibrate METHOD   talk to a Witlink HEC495 compass\n"
-               "  simulate --can virtualcan:can0 --protocol j1939|canopen [--device hipnuc|hec495] [--node N]\n"
+               "  simulate --can virtualcan:can0 --protocol j1939|canopen [--device hipnuc|hec495] [--node N] [--fd]\n"
                "                                         serve a simulated CAN device\n"
-               "  can [--plugin P] [--interface I] [--bitrate B] list|scan|read|reg|sdo|sync|set|output [--json]\n"
+               "  can [--plugin P] [--interface I] [--bitrate B] [--fd [--data-bitrate B]]\n"
+               "      list|scan|read|get NAME|set NAME VALUE|config|reg|sdo|sync|output [--json]\n"
                "                                         CAN devices (J1939, CANopen, HEC495)\n"
                "Run 'imudesk-cli COMMAND --help' for a command's options.\n",
                to);

@@ -21,10 +21,11 @@ using namespace protocol::can;
 
 namespace {
 
-// A process data frame: a HiPNUC CANopen TPDO or an HEC495 PDO (what NMT starts and stops).
-bool isPdo(const protocol::can::DecodedFrame &d)
+// A node's periodic data: CANopen TPDOs, HEC495 PDOs, J1939 data PGNs.
+bool isDataFrame(const protocol::can::DecodedFrame &d)
 {
-    return d.kind == protocol::can::FrameKind::TpdoData || d.kind == protocol::can::FrameKind::Hec495Data;
+    return d.kind == protocol::can::FrameKind::TpdoData || d.kind == protocol::can::FrameKind::Hec495Data
+        || d.kind == protocol::can::FrameKind::J1939Data;
 }
 
 const char *kindName(FrameKind k)
@@ -100,7 +101,7 @@ void CanFamily::opened(int)
     m_target = m_options.node;
     m_merged = model::Sample{};
     m_seenNodes.clear();
-    m_tpdoNodes.clear();
+    m_dataNodes.clear();
     engine().setState(SessionState::Connected, tr("connected to %1").arg(engine().transport().address()));
     startJob();
 }
@@ -195,8 +196,8 @@ void CanFamily::handleFrame(const CanFrame &f, qint64 now, std::vector<model::Sa
             noteNode(CanProtocol::CanOpen, d.node, tr("SDO scan"));
         }
     }
-    if (isPdo(d) && d.node >= 0)
-        m_tpdoNodes.insert(d.node);
+    if (isDataFrame(d) && d.node >= 0)
+        m_dataNodes.insert(d.node);
     if (matchStep(f, d))
         return;
     if (!d.sample)
@@ -296,15 +297,15 @@ void CanFamily::unanswered(const Request &r, RequestResult &result)
 {
     const CanJobStep &s = std::any_cast<Step>(&r.command)->step;
     if (result.status == RequestStatus::Timeout && s.expect == CanJobStep::Expect::NoPdoFrom
-        && !m_tpdoNodes.contains(m_target)) {
-        result.message = tr("node %1 sent no TPDO before \"%2\" either, so its effect cannot be seen: check the node ID")
+        && !m_dataNodes.contains(m_target)) {
+        result.message = tr("node %1 sent no data before \"%2\" either, so its effect cannot be seen: check the node ID")
                              .arg(m_target)
                              .arg(s.what);
         return;
     }
     if (result.status == RequestStatus::Timeout
         && (s.expect == CanJobStep::Expect::Nothing || s.expect == CanJobStep::Expect::NoPdoFrom)) {
-        result.status = RequestStatus::Ok; // the pause is over; no TPDO came
+        result.status = RequestStatus::Ok; // the pause is over; no data came
         result.message.clear();
         result.reply = m_lastValue;
         return;
@@ -317,8 +318,8 @@ void CanFamily::unanswered(const Request &r, RequestResult &result)
                              .arg(QString::number(s.pgn, 16).toUpper())
                              .arg(s.what);
     } else if (result.status == RequestStatus::Timeout && s.expect == CanJobStep::Expect::PdoFrom) {
-        result.message = tr("node %1 sent no TPDO within %2 ms of \"%3\": if its TPDOs wait for SYNC, send one; "
-                            "otherwise check the node ID and that the module is powered")
+        result.message = tr("node %1 sent no data within %2 ms of \"%3\": if its TPDOs wait for SYNC, send one; "
+                            "otherwise check the node ID, its output intervals and that the module is powered")
                              .arg(m_target)
                              .arg(s.timeoutMs)
                              .arg(s.what);
@@ -400,12 +401,12 @@ bool CanFamily::matchStep(const CanFrame &f, const DecodedFrame &d)
             answer(true, uint32_t(s.node), QString());
         return false; // the frame still counts as data
     case CanJobStep::Expect::PdoFrom:
-        if (isPdo(d) && d.node == m_target)
+        if (isDataFrame(d) && d.node == m_target)
             answer(true, 1, QString());
         return false;
     case CanJobStep::Expect::NoPdoFrom:
-        if (isPdo(d) && d.node == m_target)
-            answer(false, 1, tr("node %1 still sends TPDOs after \"%2\": check the node ID").arg(m_target).arg(s.what));
+        if (isDataFrame(d) && d.node == m_target)
+            answer(false, 1, tr("node %1 still sends data after \"%2\": check the node ID").arg(m_target).arg(s.what));
         return false;
     }
     return false;

@@ -101,7 +101,7 @@ private:
     qint64 m_scanTailUntil = 0;
     QList<int> m_scanFound;
     QSet<QString> m_seenNodes;
-    QSet<int> m_tpdoNodes; // CANopen nodes heard sending TPDOs (an NMT stop can be confirmed)
+    QSet<int> m_dataNodes; // nodes heard sending data frames (output off can be confirmed)
 
     uint64_t m_frames = 0, m_bytesIn = 0, m_errorFrames = 0;
     std::map<std::string, uint64_t> m_framesByType;

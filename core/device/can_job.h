@@ -1,7 +1,7 @@
 #pragma once
 // One configuration job of a CAN session: a sequence of steps, each a frame to send and what
 // confirms it (a J1939 configuration reply, an SDO reply, an HEC495 write reply, traffic from
-// a node, TPDOs starting or stopping, or nothing but a pause). A failed or timed-out step
+// a node, data frames starting or stopping, or nothing but a pause). A failed or timed-out step
 // ends the job, except where silence is the confirmation (Nothing, NoPdoFrom).
 #include "protocol/can/can_frame.h"
 
@@ -20,8 +20,8 @@ struct CanJobStep {
         SdoReply,      // 0x60 / 0x4x reply to tx; 0x80 = abort
         Hec495Reply,   // 0x60 reply with tx's index
         TrafficFrom,   // any frame from node `node` (the session followed a node change)
-        PdoFrom,       // a TPDO from the target node (NMT start took effect)
-        NoPdoFrom,     // no TPDO from the target node until the timeout (NMT stop took effect)
+        PdoFrom,       // a data frame (TPDO, PDO, data PGN) from the target node (output on took effect)
+        NoPdoFrom,     // no data frame from the target node until the timeout (output off took effect)
         PgnFrom,       // a J1939 data frame of PGN `pgn` from the target node (a trigger's answer)
     };
     bool hasTx = true;

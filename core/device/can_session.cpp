@@ -455,43 +455,60 @@ quint64 CanSession::setAllNodesOutput(bool on)
     CanJobStep send;
     send.tx = canopen::encodeNmt(on ? canopen::NmtStart : canopen::NmtStop, 0);
     send.what = on ? tr("NMT start, every node") : tr("NMT stop, every node");
-    if (on) {
-        send.expect = CanJobStep::Expect::PdoFrom;
-        send.timeoutMs = kNmtConfirmMs;
-        return submitJob(CanJob{0, send.what, {send}});
-    }
+    std::vector<CanJobStep> steps{send};
+    for (auto &w : outputWatch(on, send.what))
+        steps.push_back(w);
+    return submitJob(CanJob{0, send.what, steps});
+}
+
+std::vector<CanJobStep> CanSession::outputWatch(bool on, const QString &what)
+{
+    // The data frames starting (the first one ends the wait) or staying away for kNmtConfirmMs,
+    // after kNmtSettleMs for frames already on their way.
     CanJobStep watch;
     watch.hasTx = false;
-    watch.what = send.what;
-    send.pauseMs = kNmtSettleMs;
-    watch.expect = CanJobStep::Expect::NoPdoFrom;
+    watch.what = what;
     watch.timeoutMs = kNmtConfirmMs;
-    return submitJob(CanJob{0, send.what, {send, watch}});
+    if (on) {
+        watch.expect = CanJobStep::Expect::PdoFrom;
+        return {watch};
+    }
+    CanJobStep settle;
+    settle.hasTx = false;
+    settle.what = what;
+    settle.pauseMs = kNmtSettleMs;
+    watch.expect = CanJobStep::Expect::NoPdoFrom;
+    return {settle, watch};
 }
 
 quint64 CanSession::setOutputEnabled(bool on)
 {
+    const QString title = on ? tr("output on") : tr("output off");
     switch (protocol()) {
-    case CanProtocol::J1939:
-        return submitJob(CanJob{0, on ? tr("output on") : tr("output off"), {j1939Write(j1939::RegOutputEnable, on ? 1 : 0, tr("output enable"))}});
-    case CanProtocol::Hec495: return hec495Write(hec495::ObjPdoStart, on ? 1 : 0);
+    case CanProtocol::J1939: {
+        // 0x9D is confirmed by its reply, its effect by the data PGNs starting or stopping.
+        std::vector<CanJobStep> steps{j1939Write(j1939::RegOutputEnable, on ? 1 : 0, tr("output enable"))};
+        for (auto &w : outputWatch(on, title))
+            steps.push_back(w);
+        return submitJob(CanJob{0, title, steps});
+    }
+    case CanProtocol::Hec495: {
+        // 0x1083 is answered by the module; its PDOs starting or stopping show it took effect.
+        const QString what = hec495::describeObject(hec495::ObjPdoStart, on ? 1 : 0);
+        std::vector<CanJobStep> steps{hecStep(hec495::ObjPdoStart, on ? 1 : 0, what)};
+        for (auto &w : outputWatch(on, what))
+            steps.push_back(w);
+        return submitJob(CanJob{0, what, steps});
+    }
     case CanProtocol::CanOpen: {
         // NMT has no reply (CiA 301): the TPDOs starting or stopping confirm it.
         CanJobStep send;
         send.tx = canopen::encodeNmt(on ? canopen::NmtStart : canopen::NmtStop, node());
         send.what = on ? tr("NMT start") : tr("NMT stop");
-        CanJobStep watch;
-        watch.hasTx = false;
-        watch.what = send.what;
-        if (on) {
-            send.expect = CanJobStep::Expect::PdoFrom; // the first TPDO ends the wait
-            send.timeoutMs = kNmtConfirmMs;
-            return submitJob(CanJob{0, send.what, {send}});
-        }
-        send.pauseMs = kNmtSettleMs; // frames already on their way
-        watch.expect = CanJobStep::Expect::NoPdoFrom;
-        watch.timeoutMs = kNmtConfirmMs;
-        return submitJob(CanJob{0, send.what, {send, watch}});
+        std::vector<CanJobStep> steps{send};
+        for (auto &w : outputWatch(on, send.what))
+            steps.push_back(w);
+        return submitJob(CanJob{0, send.what, steps});
     }
     case CanProtocol::Auto: break;
     }

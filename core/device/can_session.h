@@ -109,6 +109,8 @@ private:
     CanJobStep sdoWriteStep(uint16_t index, uint8_t sub, uint32_t value, int size, const QString &what) const;
     CanJobStep sdoReadStep(uint16_t index, uint8_t sub, const QString &what) const;
     CanJobStep hecStep(uint16_t index, uint8_t value, const QString &what) const;
+    // The steps that confirm output turned on or off by the target's data frames.
+    static std::vector<CanJobStep> outputWatch(bool on, const QString &what);
     quint64 commandJob(uint32_t value, const QString &title, int followNode);
 
     CanSessionOptions m_options;

@@ -176,8 +176,8 @@ int runCanSimulatorCommand(const QString &canSpec, const QString &protocolText, 
     CanSimulator sim(o);
     if (!sim.start(canSpec.left(colon), canSpec.mid(colon + 1), error))
         return 1;
-    std::printf("can: %s node %d protocol %s%s\n", qPrintable(canSpec), sim.device().node(), qPrintable(protocolText.toLower()),
-                o.hec495 ? " device hec495" : "");
+    std::printf("can: %s node %d protocol %s%s%s\n", qPrintable(canSpec), sim.device().node(),
+                qPrintable(protocolText.toLower()), o.hec495 ? " device hec495" : "", o.canFd ? " fd" : "");
     std::fflush(stdout);
     QEventLoop loop;
     QTimer poll;

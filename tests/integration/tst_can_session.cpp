@@ -424,6 +424,117 @@ private Q_SLOTS:
         QVERIFY(rig.frames.countRx(0x185, from + 1) > 0);
     }
 
+    // Every typed J1939 action (v1.7.1 7.23) confirmed on the wire: 0xA5 attitude resets seen in
+    // the data, 0x9D output off and on confirmed by the data PGNs stopping and starting, 0x00
+    // save / reset / factory defaults seen in what the module holds after the reset.
+    void j1939ActionsConfirmed()
+    {
+        Rig rig;
+        sim::CanSimOptions o;
+        o.protocol = CanProtocol::J1939;
+        QVERIFY(makeRig(rig, o, CanProtocol::J1939));
+        QTRY_VERIFY_WITH_TIMEOUT(rig.session->store().totalAppended() > 20, 5000);
+        const auto attitudeAfter = [&](const std::function<bool(const model::Sample &)> &pred) {
+            const quint64 from = rig.session->store().totalAppended();
+            return runUntil([&] {
+                const auto s = rig.session->store().latest();
+                return rig.session->store().totalAppended() > from + 12 && s && s->has(model::FieldEuler) && pred(*s);
+            });
+        };
+        const auto near = [](double a, double b) { return std::abs(a - b) < 0.3; };
+        QVERIFY(attitudeAfter([&](const model::Sample &s) { return near(s.yaw, 35) && near(s.roll, 1.5); }));
+        // 0xA5 = 1: heading reset; 2: relative zero of roll and pitch; 5: zero cleared.
+        auto r = test::waitCanResult(*rig.session, rig.session->attitudeReset(1));
+        QVERIFY2(r.ok, qPrintable(r.message));
+        QVERIFY(attitudeAfter([&](const model::Sample &s) { return near(s.yaw, 0) && near(s.roll, 1.5); }));
+        r = test::waitCanResult(*rig.session, rig.session->attitudeReset(2));
+        QVERIFY2(r.ok, qPrintable(r.message));
+        QVERIFY(attitudeAfter([&](const model::Sample &s) { return near(s.roll, 0) && near(s.pitch, 0); }));
+        r = test::waitCanResult(*rig.session, rig.session->attitudeReset(5));
+        QVERIFY2(r.ok, qPrintable(r.message));
+        QVERIFY(attitudeAfter([&](const model::Sample &s) { return near(s.roll, 1.5) && near(s.pitch, -2.5); }));
+        r = test::waitCanResult(*rig.session, rig.session->attitudeReset(4)); // not a mode of 7.23
+        QVERIFY(!r.ok);
+        // 0x9D = 0: the echo, then no data PGN for the confirmation time; = 1: the first one ends the wait.
+        r = test::waitCanResult(*rig.session, rig.session->setOutputEnabled(false), 5000);
+        QVERIFY2(r.ok, qPrintable(r.message));
+        QVERIFY(!rig.sim->device().hipnuc().outputEnabled);
+        const qint64 from = mark(rig);
+        QCOMPARE(rig.frames.countRx(0x0CFF3408, from + 1), 0);
+        QElapsedTimer t;
+        t.start();
+        r = test::waitCanResult(*rig.session, rig.session->setOutputEnabled(true), 5000);
+        QVERIFY2(r.ok, qPrintable(r.message));
+        QVERIFY(t.elapsed() < CanSession::kNmtConfirmMs);
+        QVERIFY(rig.sim->device().hipnuc().outputEnabled);
+        // 0x00: a saved interval survives the reset, an unsaved one does not; factory defaults
+        // bring back 100 ms (v1.6.6 chapter 6).
+        QVERIFY(test::waitCanResult(*rig.session, rig.session->setOutputPeriod(j1939::PgnAcc, 50)).ok);
+        r = test::waitCanResult(*rig.session, rig.session->save());
+        QVERIFY2(r.ok, qPrintable(r.message));
+        QVERIFY(test::waitCanResult(*rig.session, rig.session->setOutputPeriod(j1939::PgnAcc, 200)).ok);
+        r = test::waitCanResult(*rig.session, rig.session->reset());
+        QVERIFY2(r.ok, qPrintable(r.message));
+        r = test::waitCanResult(*rig.session, rig.session->readRegister(j1939::intervalRegister(j1939::PgnAcc)));
+        QVERIFY2(r.ok && r.value == 50, qPrintable(QStringLiteral("%1 %2").arg(r.value).arg(r.message)));
+        r = test::waitCanResult(*rig.session, rig.session->factoryReset());
+        QVERIFY2(r.ok, qPrintable(r.message));
+        r = test::waitCanResult(*rig.session, rig.session->readRegister(j1939::intervalRegister(j1939::PgnAcc)));
+        QVERIFY2(r.ok && r.value == 100, qPrintable(QStringLiteral("%1 %2").arg(r.value).arg(r.message)));
+    }
+
+    // CANopen 0x20A5 (2 set zero here, 5 clear) seen in the TPDO angles; mode 1 is J1939's only.
+    void canopenZeroing()
+    {
+        Rig rig;
+        sim::CanSimOptions o;
+        o.protocol = CanProtocol::CanOpen;
+        QVERIFY(makeRig(rig, o, CanProtocol::CanOpen, kIface1));
+        QTRY_VERIFY_WITH_TIMEOUT(rig.session->store().totalAppended() > 20, 5000);
+        const auto anglesAfter = [&](double roll, double pitch) {
+            const quint64 from = rig.session->store().totalAppended();
+            return runUntil([&] {
+                const auto s = rig.session->store().latest();
+                return rig.session->store().totalAppended() > from + 12 && s && s->has(model::FieldEuler)
+                    && std::abs(s->roll - roll) < 0.3 && std::abs(s->pitch - pitch) < 0.3;
+            });
+        };
+        QVERIFY(anglesAfter(1.5, -2.5));
+        auto r = test::waitCanResult(*rig.session, rig.session->attitudeReset(2));
+        QVERIFY2(r.ok, qPrintable(r.message));
+        QVERIFY(anglesAfter(0, 0));
+        r = test::waitCanResult(*rig.session, rig.session->attitudeReset(5));
+        QVERIFY2(r.ok, qPrintable(r.message));
+        QVERIFY(anglesAfter(1.5, -2.5));
+        QVERIFY(!test::waitCanResult(*rig.session, rig.session->attitudeReset(1)).ok);
+    }
+
+    // HEC495 0x1083 (PDO start/stop, saved): the module's reply, then its PDOs stopping and starting.
+    void hec495PdoStartStopConfirmed()
+    {
+        Rig rig;
+        sim::CanSimOptions o;
+        o.protocol = CanProtocol::CanOpen;
+        o.hec495 = true;
+        QVERIFY(makeRig(rig, o, CanProtocol::Hec495));
+        QTRY_VERIFY_WITH_TIMEOUT(rig.frames.countRx(0x185) > 2, 5000);
+        auto r = test::waitCanResult(*rig.session, rig.session->setOutputEnabled(false), 5000);
+        QVERIFY2(r.ok, qPrintable(r.message));
+        QVERIFY(!rig.sim->device().hec().pdoStarted);
+        const qint64 from = mark(rig);
+        QCOMPARE(rig.frames.countRx(0x185, from + 1), 0);
+        r = test::waitCanResult(*rig.session, rig.session->setOutputEnabled(true), 5000);
+        QVERIFY2(r.ok, qPrintable(r.message));
+        QVERIFY(rig.sim->device().hec().pdoStarted);
+        QVERIFY(rig.frames.countRx(0x185, from + 1) > 0);
+        // The write on the wire: 0x605 22 83 10 <value> (the manual's write frame).
+        bool wroteStop = false;
+        for (const auto &e : rig.frames.events)
+            wroteStop |= e.transmitted && e.frame.id == 0x605 && e.frame.len >= 5 && e.frame.data[1] == 0x83
+                && e.frame.data[2] == 0x10 && e.frame.data[4] == 0;
+        QVERIFY(wroteStop);
+    }
+
     void hec495Extended()
     {
         Rig rig;
