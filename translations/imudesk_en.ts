@@ -45,7 +45,7 @@
 <context>
     <name>imudesk::models::LatestValuesModel</name>
     <message numerus="yes">
-        <location filename="../core/itemmodels/latest_values_model.cpp" line="+157"/>
+        <location filename="../core/itemmodels/latest_values_model.cpp" line="+159"/>
         <source>No new value for %n s: the device stopped sending this quantity (another output content, a polled record that stopped, or a link that went quiet).</source>
         <translation>
             <numerusform>No new value for %n s: the device stopped sending this quantity (another output content, a polled record that stopped, or a link that went quiet).</numerusform>

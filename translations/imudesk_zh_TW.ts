@@ -528,7 +528,7 @@
 <context>
     <name>CanDecoder</name>
     <message>
-        <location filename="../core/protocol/can/can_decoder.cpp" line="+70" />
+        <location filename="../core/protocol/can/can_decoder.cpp" line="+71" />
         <source>unknown</source>
         <translation>未知</translation>
     </message>
@@ -1618,7 +1618,7 @@
 <context>
     <name>HEC495</name>
     <message>
-        <location filename="../core/protocol/can/hec495_can.cpp" line="+255" />
+        <location filename="../core/protocol/can/hec495_can.cpp" line="+257" />
         <source>node ID = %1</source>
         <translation>節點 ID = %1</translation>
     </message>
@@ -5426,7 +5426,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::models::LatestValuesModel</name>
     <message>
-        <location filename="../core/itemmodels/latest_values_model.cpp" line="+179" />
+        <location filename="../core/itemmodels/latest_values_model.cpp" line="+181" />
         <source>Quantity</source>
         <translation>物理量</translation>
     </message>
@@ -5508,7 +5508,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>磁北</translation>
     </message>
     <message>
-        <location line="+9" />
+        <location line="+11" />
         <source>none (%1)</source>
         <translation>無 (%1)</translation>
     </message>
@@ -5591,6 +5591,16 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <location line="+1" />
         <source>Heading (NMEA)</source>
         <translation>航向（NMEA）</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Magnetic field X Y Z (relative)</source>
+        <translation>磁場 X Y Z（相對值）</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Magnetic roll</source>
+        <translation>磁性橫滾</translation>
     </message>
     <message>
         <location line="+1" />
@@ -5689,23 +5699,23 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
     <message>
         <location line="+0" />
-        <location line="+17" />
+        <location line="+19" />
         <source>m/s²</source>
         <translation>m/s²</translation>
     </message>
     <message>
-        <location line="-16" />
+        <location line="-18" />
         <source>deg/s</source>
         <translation>°/s</translation>
     </message>
     <message>
         <location line="+0" />
-        <location line="+17" />
+        <location line="+19" />
         <source>rad/s</source>
         <translation>rad/s</translation>
     </message>
     <message>
-        <location line="-16" />
+        <location line="-18" />
         <source>µT</source>
         <translation>µT</translation>
     </message>
@@ -5714,11 +5724,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <location line="+4" />
         <location line="+3" />
         <location line="+1" />
+        <location line="+2" />
         <source>deg</source>
         <translation>°</translation>
     </message>
     <message>
-        <location line="-7" />
+        <location line="-9" />
         <source>Pa</source>
         <translation>Pa</translation>
     </message>
@@ -5735,18 +5746,23 @@ Keep the module in place while turning it, and calibrate it together with everyt
     <message>
         <location line="+1" />
         <location line="+2" />
-        <location line="+12" />
+        <location line="+14" />
         <source>m</source>
         <translation>m</translation>
     </message>
     <message>
-        <location line="-13" />
-        <location line="+12" />
+        <location line="-15" />
+        <location line="+14" />
         <source>m/s</source>
         <translation>m/s</translation>
     </message>
     <message>
-        <location line="-5" />
+        <location line="-10" />
+        <source>relative</source>
+        <translation>相對值</translation>
+    </message>
+    <message>
+        <location line="+5" />
         <source>Hz</source>
         <translation>Hz</translation>
     </message>
@@ -5826,6 +5842,16 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>最新一條 NMEA 航向語句給出的航向，單位度，自北順時針：HDT 為真北，HDM 為磁北（輸出內容設為 NMEA 0183 的 HEC495 傳送 HDT）。</translation>
     </message>
     <message>
+        <location line="+3" />
+        <source>The compass's magnetic field along its X, Y and Z axes as a relative value without unit: the horizontal component of the field pointing north is 1 (HEC495 manual 2.5, the same on CAN).</source>
+        <translation>羅盤沿 X、Y、Z 軸的磁場，為無因次的相對值：指向北的水平分量為 1（HEC495 手冊 2.5，CAN 上相同）。</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Magnetic roll (magnetic tool face), in degrees: the roll from the magnetic field, meaningful when the pitch is near ±90° (HEC495 manual 2.5).</source>
+        <translation>磁性橫滾（磁性工具面），單位為度：由磁場得到的橫滾角，俯仰接近 ±90° 時才有意義（HEC495 手冊 2.5）。</translation>
+    </message>
+    <message>
         <location line="+2" />
         <source>UTC date from the HI83 frame (bit 6), shown once GNSS time is known.</source>
         <translation>HI83 幀中的 UTC 日期（位 6），獲得 GNSS 時間後顯示。</translation>
@@ -5901,19 +5927,19 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>GNSS 原始速度（HI83 位 31）：東、北、天，單位 m/s。</translation>
     </message>
     <message>
-        <location line="-46" />
+        <location line="-52" />
         <source>Integrated navigation state: 0 invalid, 1 aligning, 3 navigating, 6 dead reckoning.</source>
         <translation>組合導航解狀態：0 解無效，1 對準中，3 組合導航中，6 慣性遞推中。</translation>
     </message>
     <message numerus="yes">
-        <location line="-334" />
+        <location line="-340" />
         <source>No new value for %n s: the device stopped sending this quantity (another output content, a polled record that stopped, or a link that went quiet).</source>
         <translation>
             <numerusform>%n 秒內無新值：裝置已停止傳送此量（輸出內容已更改、輪詢記錄已停止，或連線已靜默）。</numerusform>
         </translation>
     </message>
     <message>
-        <location line="+336" />
+        <location line="+342" />
         <source>Position from integrated navigation, in degrees (south and west negative).</source>
         <translation>組合導航解算的位置，單位 °（南緯和西經為負）。</translation>
     </message>
@@ -10095,7 +10121,7 @@ Method: %3</source>
 <context>
     <name>imudesk::ui::Hec495SettingsPanel</name>
     <message>
-        <location filename="../ui/configuration/hec495_settings_panel.cpp" line="+115" />
+        <location filename="../ui/configuration/hec495_settings_panel.cpp" line="+130" />
         <source>Factory reset</source>
         <translation>恢復出廠設定</translation>
     </message>
@@ -10110,12 +10136,12 @@ Method: %3</source>
         <translation>正在等待模組…</translation>
     </message>
     <message>
-        <location line="+15" />
+        <location line="+17" />
         <source>Failed: %1</source>
         <translation>失敗：%1</translation>
     </message>
     <message>
-        <location line="+21" />
+        <location line="+22" />
         <source>Magnetic declination</source>
         <translation>磁偏角</translation>
     </message>
@@ -10141,11 +10167,46 @@ Method: %3</source>
     </message>
     <message>
         <location line="+1" />
+        <source>Single reading</source>
+        <translation>單次讀取</translation>
+    </message>
+    <message>
+        <location line="+2" />
         <source>Read</source>
         <translation>讀取</translation>
     </message>
     <message>
+        <location line="+1" />
+        <source>Ask the module for its address (manual 2.17: sent to address 0, any module answers).</source>
+        <translation>向模組查詢其位址（手冊 2.17：發往位址 0，任何模組都會回應）。</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Ask the module once for the chosen angle (manual 2.1 to 2.4); the answer, in degrees, shows below.</source>
+        <translation>向模組讀取一次所選角度（手冊 2.1 至 2.4）；回應（單位為度）顯示在下方。</translation>
+    </message>
+    <message>
         <location line="+2" />
+        <source>Pitch</source>
+        <translation>俯仰</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Roll</source>
+        <translation>橫滾</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Heading</source>
+        <translation>航向</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Pitch, roll and heading</source>
+        <translation>俯仰、橫滾和航向</translation>
+    </message>
+    <message>
+        <location line="+4" />
         <source>Set</source>
         <translation>設定</translation>
     </message>

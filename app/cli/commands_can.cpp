@@ -257,6 +257,8 @@ static QString sampleLine(const model::Sample &s, int node)
         line += vec("gyr", s.gyr, 2, "deg/s");
     if (s.fields & model::FieldMag)
         line += vec("mag", s.mag, 1, "uT");
+    if (s.fields & model::FieldMagRelative)
+        line += vec("mag", s.magRelative, 3, "(relative)");
     if (s.fields & model::FieldEuler)
         line += vec("rpy", model::Vec3{s.roll, s.pitch, s.yaw}, 2, "deg");
     if (s.fields & model::FieldInclination)

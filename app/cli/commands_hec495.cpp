@@ -11,6 +11,9 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QRegularExpression>
+#include <QSocketNotifier>
+
+#include <unistd.h>
 
 #include <memory>
 #include <optional>
@@ -25,9 +28,10 @@ using device::Hec495Session;
 
 const QString kUsage = QStringLiteral(
     "imudesk-cli hec495 PORT [--baud B] [--address N] [--json] ACTION\n"
-    "  ACTION: read [--count N] | nmea [--count N] | info | declination [VALUE] | baud B | rate HZ\n"
-    "          | content default|internal|all|nmea"
-    "          | address N | save | reset | calibrate auto12|manual|all|small-tilt|planar [--timeout S]");
+    "  ACTION: read [--count N] | angle pitch|roll|heading|all | nmea [--count N] | info | declination [VALUE]\n"
+    "          | baud B | rate HZ | content default|internal|all|nmea | address N | save | reset\n"
+    "          | calibrate auto12|all|small-tilt|planar [--timeout S]\n"
+    "          | calibrate manual [--auto-interval S] [--save] [--timeout S]");
 
 void printJson(const QJsonObject &o)
 {
@@ -80,6 +84,145 @@ int report(const std::optional<Hec495Result> &r, bool json, const QString &actio
     return ExitOk;
 }
 
+// A line for the operator on stderr (stdout stays the command's output).
+void note(const QString &line)
+{
+    std::fprintf(stderr, "%s\n", qPrintable(line));
+    std::fflush(stderr);
+}
+
+// Lines from standard input (a terminal or a pipe) as they arrive, read inside the event loop
+// so the session keeps running while the operator takes their time.
+class OperatorInput {
+public:
+    OperatorInput() : m_notifier(STDIN_FILENO, QSocketNotifier::Read)
+    {
+        QObject::connect(&m_notifier, &QSocketNotifier::activated, &m_notifier, [this] { readSome(); });
+    }
+    // The next line without its end; nullopt at the end of the input or on Ctrl+C.
+    std::optional<QString> line()
+    {
+        waitFor([&] { return m_buffer.contains('\n') || m_eof || interrupted(); }, -1);
+        const int nl = int(m_buffer.indexOf('\n'));
+        if (nl < 0 || interrupted())
+            return std::nullopt;
+        const QString l = QString::fromLocal8Bit(m_buffer.left(nl)).trimmed();
+        m_buffer.remove(0, nl + 1);
+        return l;
+    }
+    // A yes/no question on stderr; anything but y/yes (or the end of the input) is no.
+    bool confirm(const QString &question)
+    {
+        std::fprintf(stderr, "%s [y/N] ", qPrintable(question));
+        std::fflush(stderr);
+        const auto answer = line();
+        return answer && (answer->compare(QLatin1String("y"), Qt::CaseInsensitive) == 0
+                          || answer->compare(QLatin1String("yes"), Qt::CaseInsensitive) == 0);
+    }
+
+private:
+    void readSome()
+    {
+        char buf[256];
+        const ssize_t n = ::read(STDIN_FILENO, buf, sizeof buf);
+        if (n <= 0) {
+            m_eof = true;
+            m_notifier.setEnabled(false);
+            if (!m_buffer.isEmpty() && !m_buffer.endsWith('\n'))
+                m_buffer += '\n'; // a last line without its end still counts
+            return;
+        }
+        m_buffer.append(buf, n);
+    }
+    QSocketNotifier m_notifier;
+    QByteArray m_buffer;
+    bool m_eof = false;
+};
+
+// The manual method (0x67 per point) paced by the operator: a prompt per point, Enter collects
+// it; "f" finishes once the minimum is reached, "q" stops without saving. --auto-interval S
+// collects every S seconds instead (scripts). The calibration is saved (0x09) only with --save
+// or the operator's yes; otherwise it is stopped (0x12) and the old one stays.
+int calibrateManual(Hec495Session &s, double autoIntervalS, bool saveWithoutAsking, int timeoutS, bool json)
+{
+    const int minimum = sim::Hec495Calibration::minimumPoints(wl::CalibrationMethod::Manual);
+    const auto started = await(s, s.startCalibration(wl::CalibrationMethod::Manual));
+    if (!started || !started->ok())
+        return report(started, json, QStringLiteral("calibrate"));
+    OperatorInput input;
+    int points = 0;
+    const auto collect = [&]() -> bool {
+        const auto r = await(s, s.collectCalibrationPoint());
+        if (!r || !r->ok()) {
+            note(QStringLiteral("point not collected: %1").arg(r ? r->message : QStringLiteral("interrupted")));
+            return false;
+        }
+        points = r->reply.points;
+        if (!json)
+            out(QStringLiteral("point %1").arg(points));
+        return true;
+    };
+    const auto stop = [&](const QString &why, int code) {
+        await(s, s.stopCalibration());
+        return fail(QStringLiteral("%1; calibration stopped, nothing saved (the previous calibration stays)").arg(why),
+                    code);
+    };
+    if (autoIntervalS > 0) {
+        QElapsedTimer t;
+        t.start();
+        while (points < minimum && t.elapsed() < qint64(timeoutS) * 1000 && !interrupted()) {
+            collect();
+            waitFor([] { return false; }, int(autoIntervalS * 1000));
+        }
+    } else {
+        bool finished = false;
+        while (!finished && !interrupted()) {
+            std::fprintf(stderr,
+                         "point %d: turn the compass to a new orientation and hold it still, then press Enter "
+                         "(f + Enter to finish%s, q + Enter to stop)\n",
+                         points + 1, points < minimum ? qPrintable(QStringLiteral(" after %1 points").arg(minimum)) : "");
+            std::fflush(stderr);
+            const auto l = input.line();
+            if (!l || *l == QLatin1String("f")) {
+                if (points >= minimum)
+                    finished = true;
+                else if (!l)
+                    return stop(QStringLiteral("the input ended after %1 of at least %2 points (pace the points "
+                                               "with Enter, or give --auto-interval S)")
+                                    .arg(points)
+                                    .arg(minimum),
+                                ExitFailure);
+                else
+                    note(QStringLiteral("at least %1 points are needed; %2 so far").arg(minimum).arg(points));
+            } else if (*l == QLatin1String("q")) {
+                return stop(QStringLiteral("stopped by the operator after %1 points").arg(points), ExitFailure);
+            } else {
+                collect();
+            }
+        }
+    }
+    if (interrupted())
+        return stop(QStringLiteral("interrupted"), ExitInterrupted);
+    if (points < minimum)
+        return stop(QStringLiteral("%1 of at least %2 points within %3 s").arg(points).arg(minimum).arg(timeoutS),
+                    ExitFailure);
+    if (!saveWithoutAsking
+        && !input.confirm(QStringLiteral("%1 points collected. Save this calibration to the compass?").arg(points)))
+        return stop(QStringLiteral("not confirmed (answer y, or give --save)"), ExitFailure);
+    const auto saved = await(s, s.saveCalibration());
+    if (!saved || !saved->ok())
+        return fail(QStringLiteral("calibration not saved after %1 points: %2")
+                        .arg(points)
+                        .arg(saved ? saved->message : QStringLiteral("interrupted")));
+    QJsonObject o;
+    o[QStringLiteral("method")] = QStringLiteral("manual");
+    o[QStringLiteral("fit_error")] = double(saved->reply.fitError);
+    o[QStringLiteral("points")] = saved->reply.points;
+    if (saved->reply.fitError > 10.0f && !json)
+        out(QStringLiteral("the fit error is above 10: calibrate again (the manual's advice)"));
+    return report(saved, json, QStringLiteral("calibrate"), o);
+}
+
 int calibrate(Hec495Session &s, const QString &methodName, int timeoutS, bool json)
 {
     wl::CalibrationMethod method;
@@ -97,21 +240,12 @@ int calibrate(Hec495Session &s, const QString &methodName, int timeoutS, bool js
     const auto started = await(s, s.startCalibration(method));
     if (!started || !started->ok())
         return report(started, json, QStringLiteral("calibrate"));
-    // Automatic methods collect by themselves (12 at most, 96 for "all"); the manual one
-    // takes a point every second, as an operator turning the compass would.
+    // Automatic methods collect by themselves (12 at most, 96 for "all").
     const int target = method == wl::CalibrationMethod::AllOrientation ? sim::Hec495Calibration::kMaxPoints : 12;
     QElapsedTimer t;
     t.start();
-    while (points < target && t.elapsed() < qint64(timeoutS) * 1000 && !interrupted()) {
-        if (method == wl::CalibrationMethod::Manual) {
-            const auto r = await(s, s.collectCalibrationPoint());
-            if (r && r->ok())
-                points = r->reply.points;
-            waitFor([] { return false; }, 1000);
-        } else {
-            waitFor([&] { return points >= target; }, 250);
-        }
-    }
+    while (points < target && t.elapsed() < qint64(timeoutS) * 1000 && !interrupted())
+        waitFor([&] { return points >= target; }, 250);
     if (interrupted()) {
         await(s, s.stopCalibration());
         return fail(QStringLiteral("interrupted; calibration stopped"), ExitInterrupted);
@@ -193,6 +327,12 @@ int cmdHec495(const QStringList &args)
     p.addOption(QCommandLineOption(QStringLiteral("timeout"),
                                    QStringLiteral("calibrate: seconds to collect points (default 30)."),
                                    QStringLiteral("S"), QStringLiteral("30")));
+    p.addOption(QCommandLineOption(QStringLiteral("auto-interval"),
+                                   QStringLiteral("calibrate manual: collect a point every S seconds instead of on "
+                                                  "the operator's Enter (scripts)."),
+                                   QStringLiteral("S")));
+    p.addOption(QCommandLineOption(QStringLiteral("save"),
+                                   QStringLiteral("calibrate manual: save the calibration without asking.")));
     p.addPositionalArgument(QStringLiteral("PORT"), QStringLiteral("Serial port"));
     p.addPositionalArgument(QStringLiteral("ACTION"), QStringLiteral("What to do (see usage)"));
     // A negative value ("declination -3.2") is an argument, not an option.
@@ -223,7 +363,7 @@ int cmdHec495(const QStringList &args)
     if (!ok || address < 0 || address > 255)
         return fail(QStringLiteral("--address must be 0 to 255"), ExitUsage);
     const bool json = p.isSet(QStringLiteral("json"));
-    static const QMap<QString, int> kArgs = {{"read", 0}, {"nmea", 0}, {"info", 0}, {"declination", -1}, {"baud", 1},
+    static const QMap<QString, int> kArgs = {{"read", 0}, {"angle", 1}, {"nmea", 0}, {"info", 0}, {"declination", -1}, {"baud", 1},
                                              {"rate", 1}, {"content", 1}, {"address", 1},    {"save", 0},
                                              {"reset", 0}, {"calibrate", 1}};
     if (!kArgs.contains(action))
@@ -232,6 +372,11 @@ int cmdHec495(const QStringList &args)
     if ((want >= 0 && rest.size() != want) || (want < 0 && rest.size() > 1))
         return fail(QStringLiteral("wrong number of arguments for '%1' (usage: %2)").arg(action, kUsage), ExitUsage);
 
+    if ((p.isSet(QStringLiteral("auto-interval")) || p.isSet(QStringLiteral("save")))
+        && !(action == QLatin1String("calibrate") && rest.value(0) == QLatin1String("manual")))
+        return fail(QStringLiteral("--auto-interval and --save are for 'calibrate manual' (the other methods collect "
+                                   "by themselves and save at their end)"),
+                    ExitUsage);
     Hec495Session s;
     s.setPollingRate(0); // only the requests asked for
     QString failure;
@@ -263,6 +408,27 @@ int cmdHec495(const QStringList &args)
                         .arg(double(rec.gyr[2]), 0, 'f', 2).arg(rec.timeMs));
         }
         return ExitOk;
+    }
+    if (action == QLatin1String("angle")) {
+        // The single reads of 2.1-2.4: pitch, roll, heading, or the three at once.
+        static const QMap<QString, wl::Command> kAngles = {{QStringLiteral("pitch"), wl::Command::ReadPitch},
+                                                           {QStringLiteral("roll"), wl::Command::ReadRoll},
+                                                           {QStringLiteral("heading"), wl::Command::ReadHeading},
+                                                           {QStringLiteral("all"), wl::Command::ReadAngles}};
+        if (!kAngles.contains(arg))
+            return fail(QStringLiteral("angle takes pitch, roll, heading or all"), ExitUsage);
+        const auto r = await(s, s.request(kAngles.value(arg)));
+        QJsonObject o;
+        if (r && r->ok()) {
+            if (r->reply.kind == wl::Reply::Kind::Angles) {
+                o[QStringLiteral("pitch")] = r->reply.pitch;
+                o[QStringLiteral("roll")] = r->reply.roll;
+                o[QStringLiteral("heading")] = r->reply.heading;
+            } else {
+                o[arg] = r->reply.angle;
+            }
+        }
+        return report(r, json, action, o);
     }
     if (action == QLatin1String("nmea")) {
         // The sentences of output content NMEA 0183 ("content nmea", then "rate HZ"), as they
@@ -363,6 +529,15 @@ int cmdHec495(const QStringList &args)
     const int timeoutS = p.value(QStringLiteral("timeout")).toInt(&ok);
     if (!ok || timeoutS <= 0)
         return fail(QStringLiteral("--timeout needs a positive number of seconds"), ExitUsage);
+    if (arg == QLatin1String("manual")) {
+        double interval = 0;
+        if (p.isSet(QStringLiteral("auto-interval"))) {
+            interval = p.value(QStringLiteral("auto-interval")).toDouble(&ok);
+            if (!ok || interval < 0.1 || interval > 60)
+                return fail(QStringLiteral("--auto-interval needs 0.1 to 60 seconds"), ExitUsage);
+        }
+        return calibrateManual(s, interval, p.isSet(QStringLiteral("save")), timeoutS, json);
+    }
     return calibrate(s, arg, timeoutS, json);
 }
 

@@ -176,6 +176,12 @@ std::string sampleToJson(const model::Sample &s)
         key(out, s.headingTrue ? "heading_true" : "heading_magnetic");
         out += number(s.headingDeg);
     }
+    if (s.has(FieldMagRelative))
+        vec(out, "mag_relative", s.magRelative); // no unit: the horizontal northward field is 1
+    if (s.has(FieldMagRoll)) {
+        key(out, "mag_roll");
+        out += number(s.magRollDeg);
+    }
     if (s.has(FieldHi83Extra) && s.hi83)
         hi83Extra(out, *s.hi83);
     out += '}';

@@ -69,6 +69,8 @@ uint32_t fieldOf(Row row)
     case Row::InclinationY: return model::FieldInclination;
     case Row::StatusFlags: return model::FieldMainStatus;
     case Row::Heading: return model::FieldHeading;
+    case Row::MagRelative: return model::FieldMagRelative;
+    case Row::MagRoll: return model::FieldMagRoll;
     default: break; // the channel rows (above), the frame type
     }
     return hi83BitOf(row) >= 0 ? model::FieldHi83Extra : 0;
@@ -327,6 +329,8 @@ QString LatestValuesModel::formatValue(Row row, const model::Sample &s) const
     case InclinationX: return fixed(s.inclinationX, 3);
     case InclinationY: return fixed(s.inclinationY, 3);
     case Heading: return QStringLiteral("%1 %2").arg(fixed(s.headingDeg, 1), s.headingTrue ? tr("true") : tr("magnetic"));
+    case MagRelative: return triple(std::array<double, 3>{s.magRelative.x, s.magRelative.y, s.magRelative.z}, 3);
+    case MagRoll: return fixed(s.magRollDeg, 1);
     case StatusFlags: {
         const model::MainStatus status(s.mainStatus);
         QStringList names;
@@ -403,6 +407,8 @@ QString LatestValuesModel::quantityName(Row row) const
     case InclinationX: return tr("Inclination X");
     case InclinationY: return tr("Inclination Y");
     case Heading: return tr("Heading (NMEA)");
+    case MagRelative: return tr("Magnetic field X Y Z (relative)");
+    case MagRoll: return tr("Magnetic roll");
     case UtcDate: return tr("UTC date");
     case HeaveSurgeSwayFreq: return tr("Heave/surge/sway frequency");
     case AccEnu: return tr("Acceleration E N U");
@@ -442,6 +448,8 @@ QString LatestValuesModel::unitName(Row row) const
     case model::FieldHeave: return tr("m");
     case model::FieldInclination: return tr("deg");
     case model::FieldHeading: return tr("deg");
+    case model::FieldMagRelative: return tr("relative");
+    case model::FieldMagRoll: return tr("deg");
     default: break;
     }
     switch (row) {
@@ -510,6 +518,12 @@ QString LatestValuesModel::toolTip(Row row) const
     case Heading:
         return tr("Heading from the latest NMEA heading sentence, in degrees clockwise from north: HDT true north, "
                   "HDM magnetic north (an HEC495 with output content NMEA 0183 sends HDT).");
+    case MagRelative:
+        return tr("The compass's magnetic field along its X, Y and Z axes as a relative value without unit: the "
+                  "horizontal component of the field pointing north is 1 (HEC495 manual 2.5, the same on CAN).");
+    case MagRoll:
+        return tr("Magnetic roll (magnetic tool face), in degrees: the roll from the magnetic field, meaningful when "
+                  "the pitch is near ±90° (HEC495 manual 2.5).");
     case UtcDate: return tr("UTC date from the HI83 frame (bit 6), shown once GNSS time is known.");
     case HeaveSurgeSwayFreq: return tr("Ship motion frequency (HI83 bit 11): heave, surge, sway, in Hz.");
     case AccEnu: return tr("Acceleration in the east-north-up frame from integrated navigation (HI83 bit 13): E, N, U, in m/s².");

@@ -53,6 +53,8 @@ public:
         InclinationX,
         InclinationY,
         Heading,         // NMEA HDT / HDM (a compass's NMEA output)
+        MagRelative,     // a compass's relative magnetic field (HEC495, serial and CAN)
+        MagRoll,         // the HEC495's magnetic tool face
         // HI83 fields beyond the ones above, one row per data_bitmap bit (v1.7.1 manual 5.9.12).
         UtcDate,         // bit 6
         HeaveSurgeSwayFreq, // bit 11

@@ -42,6 +42,8 @@ void mergeFields(Sample &dst, const Sample &src)
         if (src.utcTimeOfDayS >= 0)
             dst.utcTimeOfDayS = src.utcTimeOfDayS;
     }
+    if (f & FieldMagRelative) dst.magRelative = src.magRelative;
+    if (f & FieldMagRoll) dst.magRollDeg = src.magRollDeg;
     if (f & FieldHeading) {
         dst.headingDeg = src.headingDeg;
         dst.headingTrue = src.headingTrue;

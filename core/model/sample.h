@@ -75,6 +75,8 @@ enum SampleField : uint32_t {
     FieldGnss = 1u << 14,         // GNSS fix quality, satellites, UTC time of day (NMEA)
     FieldHeading = 1u << 15,      // a heading reported on its own (NMEA HDT, HDM)
     FieldHi83Extra = 1u << 16,    // Sample::hi83: HI83 fields beyond the ones above
+    FieldMagRelative = 1u << 17,  // a compass's relative magnetic field (HEC495: no unit)
+    FieldMagRoll = 1u << 18,      // magnetic tool face (HEC495 read-all record)
 };
 
 struct Sample {
@@ -98,6 +100,10 @@ struct Sample {
     double utcTimeOfDayS = -1;  // seconds since UTC midnight; -1: not reported
     double headingDeg = 0;      // FieldHeading, 0..360 clockwise from north
     bool headingTrue = true;    //   from true north (NMEA HDT) or magnetic north (HDM)
+    // FieldMagRelative: the HEC495's magnetic field on serial (2.5) and CAN alike, no unit: the
+    // horizontal northward field is 1. Not in uT, so never in `mag` (or its charts).
+    Vec3 magRelative;
+    double magRollDeg = 0;      // FieldMagRoll: magnetic tool face, deg (meaningful near pitch +-90)
     std::shared_ptr<const Hi83Extra> hi83; // FieldHi83Extra
 
     bool has(SampleField f) const { return (fields & f) != 0; }

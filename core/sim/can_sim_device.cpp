@@ -9,6 +9,7 @@
 #include "protocol/can/j1939.h"
 #include "protocol/can/j1939_config.h"
 #include "protocol/can/sdo.h"
+#include "sim/hec495_simulator.h"
 
 #include <cmath>
 
@@ -116,6 +117,18 @@ model::Sample CanSimDevice::sampleAt(double t)
     return s;
 }
 
+model::Sample CanSimDevice::hec495SampleAt(double t)
+{
+    // The compass's quantities as on its serial side (Hec495Simulator): the heading clockwise
+    // from north (+-180 as in the read-all record), the field relative to the horizontal one.
+    model::Sample s = sampleAt(t);
+    s.yaw = wrap180(-s.yaw);
+    s.magRelative = {s.mag.x / Hec495Simulator::kFieldUnitUt, s.mag.y / Hec495Simulator::kFieldUnitUt,
+                     s.mag.z / Hec495Simulator::kFieldUnitUt};
+    s.fields = (s.fields & ~uint32_t(model::FieldMag)) | model::FieldMagRelative;
+    return s;
+}
+
 void CanSimDevice::attitudeReset(uint32_t mode, double t)
 {
     const EulerAngles e = eulerEnu312(m_motion.at(t).q);
@@ -175,7 +188,7 @@ std::vector<CanSimDevice::Frame> CanSimDevice::poll(double t)
         if (!m_hec.pdoStarted)
             period = 0;
         if (due("pdo", period, t)) {
-            const model::Sample s = sampleAt(t);
+            const model::Sample s = hec495SampleAt(t);
             if (ext) {
                 out.push_back(hec::encodeExtended(false, s));
                 if (m_hecExtFormat2)

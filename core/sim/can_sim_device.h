@@ -81,6 +81,8 @@ public:
 
     // The true sample at tSeconds (after attitude zeroing), in ImuDesk's units.
     model::Sample sampleAt(double tSeconds);
+    // The HEC495's PDO contents: heading clockwise from north, relative magnetic field.
+    model::Sample hec495SampleAt(double tSeconds);
 
     static HipnucConfig hipnucDefaults(bool canFd);
 

@@ -161,6 +161,76 @@ private Q_SLOTS:
         QCOMPARE(r.json().value("baud").toInt(), 9600);
         QCOMPARE(r.json().value("declination").toDouble(), 0.0);
     }
+
+    // 2.1-2.4 single readings.
+    void singleAngles()
+    {
+        auto r = run({"hec495", m_pty, "angle", "heading", "--json"});
+        QVERIFY2(r.code == 0, qPrintable(r.err));
+        const double h = r.json().value("heading").toDouble(-1);
+        QVERIFY2(h >= 0 && h < 360, qPrintable(r.out));
+        r = run({"hec495", m_pty, "angle", "all", "--json"});
+        QVERIFY2(r.code == 0, qPrintable(r.err));
+        QVERIFY2(r.json().contains("pitch") && r.json().contains("roll") && r.json().contains("heading"), qPrintable(r.out));
+        r = run({"hec495", m_pty, "angle", "pitch"});
+        QVERIFY2(r.code == 0 && r.out.contains(QStringLiteral(" deg")), qPrintable(r.out + r.err));
+        QCOMPARE(run({"hec495", m_pty, "angle", "yaw"}).code, 2);
+        QCOMPARE(run({"hec495", m_pty, "angle"}).code, 2);
+    }
+
+    // The manual method is paced by the operator: one point per Enter, "f" refused before 12
+    // points, and nothing saved without a yes or --save; scripts pace it with --auto-interval.
+    void manualCalibrationPacedByTheOperator()
+    {
+        QProcess cli;
+        cli.start(QString::fromUtf8(IMUDESK_CLI_PATH), {"hec495", m_pty, "calibrate", "manual"});
+        QVERIFY(cli.waitForStarted());
+        QString err;
+        const auto waitErr = [&](const QString &text) {
+            for (int i = 0; i < 200 && !err.contains(text); ++i) {
+                cli.waitForReadyRead(50);
+                err += QString::fromUtf8(cli.readAllStandardError());
+            }
+            return err.contains(text);
+        };
+        QVERIFY2(waitErr(QStringLiteral("point 1: turn the compass")), qPrintable(err));
+        QVERIFY(cli.state() == QProcess::Running); // waits for the operator, collects nothing by itself
+        for (int n = 1; n <= 5; ++n) {
+            cli.write("\n");
+            QVERIFY2(waitErr(QStringLiteral("point %1: turn").arg(n + 1)), qPrintable(err));
+        }
+        cli.write("f\n");
+        QVERIFY2(waitErr(QStringLiteral("at least 12 points are needed; 5 so far")), qPrintable(err));
+        for (int n = 6; n <= 12; ++n) {
+            cli.write("\n");
+            QVERIFY2(waitErr(QStringLiteral("point %1: turn").arg(n + 1)), qPrintable(err));
+        }
+        cli.write("f\n");
+        QVERIFY2(waitErr(QStringLiteral("Save this calibration to the compass? [y/N]")), qPrintable(err));
+        cli.write("n\n");
+        QVERIFY(cli.waitForFinished(10000));
+        err += QString::fromUtf8(cli.readAllStandardError());
+        const QString out = QString::fromUtf8(cli.readAllStandardOutput());
+        QCOMPARE(cli.exitCode(), 1);
+        QVERIFY2(err.contains(QStringLiteral("not confirmed")) && err.contains(QStringLiteral("nothing saved")), qPrintable(err));
+        QVERIFY2(out.contains(QStringLiteral("point 12")) && !out.contains(QStringLiteral("calibration saved")), qPrintable(out));
+
+        // No operator and no interval: stopped at once, with what to do.
+        QProcess noInput;
+        noInput.start(QString::fromUtf8(IMUDESK_CLI_PATH), {"hec495", m_pty, "calibrate", "manual"});
+        QVERIFY(noInput.waitForStarted());
+        noInput.closeWriteChannel();
+        QVERIFY(noInput.waitForFinished(20000));
+        QCOMPARE(noInput.exitCode(), 1);
+        QVERIFY2(QString::fromUtf8(noInput.readAllStandardError()).contains(QStringLiteral("--auto-interval")), "no hint");
+
+        // A script: every 0.2 s, saved because --save says so.
+        auto r = run({"hec495", m_pty, "calibrate", "manual", "--auto-interval", "0.2", "--save", "--json"});
+        QVERIFY2(r.code == 0, qPrintable(r.err));
+        QCOMPARE(r.json().value("points").toInt(), 12);
+        QCOMPARE(run({"hec495", m_pty, "calibrate", "planar", "--save"}).code, 2);
+        QCOMPARE(run({"hec495", m_pty, "calibrate", "manual", "--auto-interval", "0"}).code, 2);
+    }
 };
 
 IMUDESK_TEST_GUILESS_MAIN(TstHec495Cli)

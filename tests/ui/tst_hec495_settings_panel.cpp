@@ -2,6 +2,7 @@
 // pseudo-terminal: each control sends its command, the result shows, the module changes.
 #include "device/hec495_session.h"
 #include "configuration/hec495_settings_panel.h"
+#include "protocol/witlink/commands.h"
 #include "sim/hec495_simulator.h"
 #include "sim/pty_simulator.h"
 #include "../common/test_main.h"
@@ -13,6 +14,7 @@
 #include <QSpinBox>
 #include <QTest>
 
+#include <cmath>
 #include <functional>
 #include <memory>
 
@@ -101,6 +103,39 @@ private Q_SLOTS:
         QVERIFY(click(panel, panel.resetButton()).ok());
         QTRY_COMPARE(m_session->baud(), 9600);
         QCOMPARE(panel.baudBox()->currentData().toInt(), 9600);
+        QCOMPARE(panel.addressBox()->value(), 0);
+    }
+
+    // 2.1-2.4: each single reading is sent and answered; the answer shows in the status line.
+    // 2.17: the address query puts the module's address in the box.
+    void singleReadingsAndAddressQuery()
+    {
+        Hec495SettingsPanel panel(m_session.get());
+        panel.angleBox()->setCurrentIndex(3); // pitch, roll and heading (2.4)
+        auto r = click(panel, panel.readAngleButton());
+        QVERIFY2(r.ok(), qPrintable(r.message));
+        QCOMPARE(r.reply.kind, protocol::witlink::Reply::Kind::Angles);
+        QVERIFY2(panel.statusText().contains(QLatin1String("heading")), qPrintable(panel.statusText()));
+        const double pitch = r.reply.pitch, heading = r.reply.heading;
+        const protocol::witlink::Command singles[] = {protocol::witlink::Command::ReadPitch,
+                                                      protocol::witlink::Command::ReadRoll,
+                                                      protocol::witlink::Command::ReadHeading};
+        for (int i = 0; i < 3; ++i) {
+            panel.angleBox()->setCurrentIndex(i);
+            r = click(panel, panel.readAngleButton());
+            QVERIFY2(r.ok(), qPrintable(r.message));
+            QCOMPARE(r.reply.kind, protocol::witlink::Reply::Kind::Angle);
+            QCOMPARE(r.reply.request, uint8_t(singles[i]));
+            QVERIFY2(panel.statusText().contains(QLatin1String(" deg")), qPrintable(panel.statusText()));
+        }
+        // The still module's heading (2.3) and pitch (2.1) agree with the three-angle reading.
+        QVERIFY2(std::abs(r.reply.angle - heading) < 2.0, qPrintable(QStringLiteral("%1 %2").arg(r.reply.angle).arg(heading)));
+        panel.angleBox()->setCurrentIndex(0);
+        r = click(panel, panel.readAngleButton());
+        QVERIFY(std::abs(r.reply.angle - pitch) < 1.0);
+        panel.addressBox()->setValue(42);
+        r = click(panel, panel.readAddressButton());
+        QVERIFY2(r.ok(), qPrintable(r.message));
         QCOMPARE(panel.addressBox()->value(), 0);
     }
 

@@ -439,7 +439,11 @@ private Q_SLOTS:
         // Round trip of all slots in both modes.
         Sample s;
         s.pitch = 12.34; s.roll = -5.67; s.yaw = 123.45;
-        s.acc = {0.1234, -0.5678, 0.9}; s.gyr = {1.5, -2.25, 3.0}; s.mag = {0.25, -0.3, 0.45};
+        s.acc = {0.1234, -0.5678, 0.9}; s.gyr = {1.5, -2.25, 3.0}; s.magRelative = {0.25, -0.3, 0.45};
+        // The field is relative on CAN as in the serial read-all record (2.5): never Sample::mag (uT).
+        const auto magYz = hec495::decodePdo(hec495::encodePdo(5, 5, s, false), 0);
+        QVERIFY(magYz && magYz->sample.has(imudesk::model::FieldMagRelative) && !magYz->sample.has(imudesk::model::FieldMag));
+        QVERIFY(near(magYz->sample.magRelative.y, -0.3, 1e-6) && near(magYz->sample.magRelative.z, 0.45, 1e-6));
         for (bool fixed : {false, true})
             for (int slot = 0; slot < hec495::kPdoCount; ++slot) {
                 const auto r = hec495::decodePdo(hec495::encodePdo(slot, 5, s, fixed), fixed ? 1 : 0);

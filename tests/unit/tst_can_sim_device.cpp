@@ -7,6 +7,7 @@
 #include "protocol/can/j1939_config.h"
 #include "protocol/can/sdo.h"
 #include "sim/can_sim_device.h"
+#include "sim/hec495_simulator.h"
 #include "../common/test_main.h"
 
 #include <QTest>
@@ -14,6 +15,10 @@
 using namespace imudesk::protocol::can;
 using imudesk::sim::CanSimDevice;
 using imudesk::sim::CanSimOptions;
+using imudesk::sim::Hec495Options;
+using imudesk::sim::Hec495Simulator;
+using imudesk::sim::Motion;
+namespace model = imudesk::model;
 
 namespace {
 // Frames with this id sent between t0 and t1 (s), polling every ms.
@@ -158,6 +163,33 @@ private Q_SLOTS:
         QVERIFY(countBetween(d, 0x190, 3.3, 4.3) > 0);
         d.handle(hec495::stopAll(), 4.3);
         QCOMPARE(countBetween(d, 0x190, 4.4, 5.0), 0);
+    }
+
+    // The compass on CAN reports what it reports on serial: the heading clockwise from north (the
+    // serial simulator's true heading, +-180 as in the read-all record), the field relative.
+    void hec495HeadingAndFieldAsOnSerial()
+    {
+        CanSimOptions o = opts(CanProtocol::CanOpen, true);
+        o.motion = Motion::Spin;
+        CanSimDevice d(o);
+        Hec495Options so;
+        so.motion = Motion::Spin;
+        Hec495Simulator serial(so);
+        int checked = 0;
+        for (double t = 0.2; t < 3.0; t += 0.2) {
+            const model::Sample s = d.hec495SampleAt(t);
+            double expected = serial.trueHeadingAt(int64_t(t * 1e6));
+            if (expected > 180)
+                expected -= 360;
+            double diff = std::abs(s.yaw - expected);
+            diff = std::min(diff, 360 - diff);
+            QVERIFY2(diff < 0.01, qPrintable(QStringLiteral("t %1: CAN %2, serial %3").arg(t).arg(s.yaw).arg(expected)));
+            QVERIFY(s.has(model::FieldMagRelative) && !s.has(model::FieldMag));
+            const double horizontal = std::hypot(s.magRelative.x, s.magRelative.y);
+            QVERIFY2(horizontal > 0.3 && horizontal < 3, qPrintable(QString::number(horizontal))); // about 1, not uT
+            ++checked;
+        }
+        QCOMPARE(checked, 14);
     }
 
     void hec495Extended()

@@ -4,6 +4,7 @@
 #include "model/main_status.h"
 #include "itemmodels/latest_values_model.h"
 #include "protocol/hipnuc/payloads.h"
+#include "protocol/witlink/all_data_record.h"
 
 #include <QAbstractItemModelTester>
 #include <QSignalSpy>
@@ -151,6 +152,27 @@ private Q_SLOTS:
         QCOMPARE(m.index(LatestValuesModel::GnssAccuracy, LatestValuesModel::UnitColumn).data().toString(),
                  QStringLiteral("m, m/s"));
         QVERIFY(!m.index(LatestValuesModel::EventCounters, 0).data(Qt::ToolTipRole).toString().isEmpty());
+    }
+
+    // The HEC495's read-all record (manual 2.5): its relative field and magnetic roll get rows of
+    // their own, never the uT magnetometer rows.
+    void hec495RelativeFieldAndMagRoll()
+    {
+        LatestValuesModel m;
+        imudesk::protocol::witlink::AllDataRecord r;
+        r.mag = {0.5f, 0.8f, -1.25f};
+        r.magRoll = 45.5f;
+        r.heading = 120;
+        m.refresh(r.toSample());
+        QVERIFY(m.everSeen(LatestValuesModel::MagRelative));
+        QVERIFY(m.everSeen(LatestValuesModel::MagRoll));
+        QVERIFY(!m.everSeen(LatestValuesModel::MagX));
+        QCOMPARE(value(m, LatestValuesModel::MagRelative), QStringLiteral("0.500  0.800  -1.250"));
+        QCOMPARE(value(m, LatestValuesModel::MagRoll), QStringLiteral("45.5"));
+        QCOMPARE(m.index(LatestValuesModel::MagRelative, LatestValuesModel::UnitColumn).data().toString(),
+                 QStringLiteral("relative"));
+        QCOMPARE(m.index(LatestValuesModel::MagRoll, LatestValuesModel::UnitColumn).data().toString(), QStringLiteral("deg"));
+        QVERIFY(m.index(LatestValuesModel::MagRelative, 0).data(Qt::ToolTipRole).toString().contains(QStringLiteral("north is 1")));
     }
 
     void deviceTimeAsUtcOncePpsAligned()

@@ -310,7 +310,11 @@ private Q_SLOTS:
         const auto s = rep.record.toSample(42);
         QCOMPARE(s.source, std::string("HEC495"));
         QVERIFY(s.has(imudesk::model::FieldEuler) && s.has(imudesk::model::FieldAcc) && s.has(imudesk::model::FieldGyr));
-        QVERIFY(!s.has(imudesk::model::FieldMag));
+        QVERIFY(!s.has(imudesk::model::FieldMag)); // relative, not uT: magRelative
+        QVERIFY(s.has(imudesk::model::FieldMagRelative) && s.has(imudesk::model::FieldMagRoll));
+        QCOMPARE(s.magRelative.x, 0.5);
+        QCOMPARE(s.magRelative.z, double(-1.2f));
+        QCOMPARE(s.magRollDeg, 45.0);
         QCOMPARE(s.pitch, -12.5);
         QCOMPARE(s.roll, 33.25);
         QCOMPARE(s.yaw, -170.75);

@@ -38,6 +38,9 @@ Hec495SettingsPanel::Hec495SettingsPanel(device::Hec495Session *session, QWidget
     m_address = new QSpinBox(this);
     m_address->setRange(0, 255);
     m_address->setValue(session ? session->address() : 0);
+    m_angle = new QComboBox(this);
+    for (wl::Command c : {wl::Command::ReadPitch, wl::Command::ReadRoll, wl::Command::ReadHeading, wl::Command::ReadAngles})
+        m_angle->addItem(QString(), int(c));
 
     m_readDeclination = new QPushButton(this);
     m_setDeclination = new QPushButton(this);
@@ -47,6 +50,8 @@ Hec495SettingsPanel::Hec495SettingsPanel(device::Hec495Session *session, QWidget
     m_setAddress = new QPushButton(this);
     m_save = new QPushButton(this);
     m_reset = new QPushButton(this);
+    m_readAngle = new QPushButton(this);
+    m_readAddress = new QPushButton(this);
     m_status = new QLabel(this);
     m_status->setWordWrap(true);
     m_note = new QLabel(this);
@@ -56,6 +61,7 @@ Hec495SettingsPanel::Hec495SettingsPanel(device::Hec495Session *session, QWidget
     m_rateLabel = new QLabel(this);
     m_contentLabel = new QLabel(this);
     m_addressLabel = new QLabel(this);
+    m_angleLabel = new QLabel(this);
 
     auto *grid = new QGridLayout(this);
     int row = 0;
@@ -67,13 +73,19 @@ Hec495SettingsPanel::Hec495SettingsPanel(device::Hec495Session *session, QWidget
         {m_baudLabel, {m_baud, m_setBaud}},
         {m_rateLabel, {m_rate, m_setRate}},
         {m_contentLabel, {m_content, m_setContent}},
-        {m_addressLabel, {m_address, m_setAddress}},
     };
     for (const auto &[label, w] : rows) {
         grid->addWidget(label, row, 0);
         grid->addWidget(w.first, row, 1, 1, 2);
         grid->addWidget(w.second, row++, 3);
     }
+    grid->addWidget(m_addressLabel, row, 0);
+    grid->addWidget(m_address, row, 1);
+    grid->addWidget(m_readAddress, row, 2);
+    grid->addWidget(m_setAddress, row++, 3);
+    grid->addWidget(m_angleLabel, row, 0);
+    grid->addWidget(m_angle, row, 1, 1, 2);
+    grid->addWidget(m_readAngle, row++, 3);
     grid->addWidget(m_save, row, 0, 1, 2);
     grid->addWidget(m_reset, row++, 2, 1, 2);
     grid->addWidget(m_note, row++, 0, 1, 4);
@@ -96,6 +108,9 @@ Hec495SettingsPanel::Hec495SettingsPanel(device::Hec495Session *session, QWidget
             track(m_session->setOutputContent(wl::OutputContent(m_content->currentData().toInt())));
         });
         connect(m_setAddress, &QPushButton::clicked, this, [this] { track(m_session->setAddress(m_address->value())); });
+        connect(m_readAddress, &QPushButton::clicked, this, [this] { track(m_session->queryAddress()); });
+        connect(m_readAngle, &QPushButton::clicked, this,
+                [this] { track(m_session->request(wl::Command(m_angle->currentData().toInt()))); });
         connect(m_save, &QPushButton::clicked, this, [this] { track(m_session->saveSettings()); });
         connect(m_reset, &QPushButton::clicked, this, &Hec495SettingsPanel::factoryReset);
     } else {
@@ -136,6 +151,8 @@ void Hec495SettingsPanel::onFinished(quint64 id, const device::Hec495Result &r)
     if (r.ok()) {
         if (r.reply.kind == wl::Reply::Kind::Declination)
             m_declination->setValue(r.reply.declination);
+        if (r.reply.kind == wl::Reply::Kind::Address)
+            m_address->setValue(r.reply.deviceAddress);
         m_status->setText(r.message);
     } else {
         m_status->setText(tr("Failed: %1").arg(r.message));
@@ -146,7 +163,8 @@ void Hec495SettingsPanel::onFinished(quint64 id, const device::Hec495Result &r)
 void Hec495SettingsPanel::setBusy(bool busy)
 {
     for (QWidget *w : std::initializer_list<QWidget *>{m_readDeclination, m_setDeclination, m_setBaud, m_setRate,
-                                                       m_setContent, m_setAddress, m_save, m_reset})
+                                                       m_setContent, m_setAddress, m_readAddress, m_readAngle,
+                                                       m_save, m_reset})
         w->setEnabled(!busy);
 }
 
@@ -164,7 +182,15 @@ void Hec495SettingsPanel::retranslate()
     m_rateLabel->setText(tr("Output rate"));
     m_contentLabel->setText(tr("Output content"));
     m_addressLabel->setText(tr("Module address"));
-    m_readDeclination->setText(tr("Read"));
+    m_angleLabel->setText(tr("Single reading"));
+    for (QPushButton *b : {m_readDeclination, m_readAddress, m_readAngle})
+        b->setText(tr("Read"));
+    m_readAddress->setToolTip(tr("Ask the module for its address (manual 2.17: sent to address 0, any module answers)."));
+    m_readAngle->setToolTip(tr("Ask the module once for the chosen angle (manual 2.1 to 2.4); the answer, in degrees, "
+                               "shows below."));
+    const QString angles[] = {tr("Pitch"), tr("Roll"), tr("Heading"), tr("Pitch, roll and heading")};
+    for (int i = 0; i < m_angle->count(); ++i)
+        m_angle->setItemText(i, angles[i]);
     for (QPushButton *b : {m_setDeclination, m_setBaud, m_setRate, m_setContent, m_setAddress})
         b->setText(tr("Set"));
     m_save->setText(tr("Save settings"));

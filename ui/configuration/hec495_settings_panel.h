@@ -1,7 +1,8 @@
 #pragma once
 // Settings of a Witlink HEC495, bound to its Hec495Session: magnetic declination (read and
-// set), baud, auto-output rate (question/answer or 5-100 Hz) and content, module address,
-// save settings and factory reset. One request at a time: the controls are disabled while
+// set), baud, auto-output rate (question/answer or 5-100 Hz) and content, module address (set,
+// and queried with 2.17), save settings and factory reset; and the single reads of pitch,
+// roll, heading or all three (manual 2.1-2.4), whose answer shows in the status line. One request at a time: the controls are disabled while
 // one is pending and the result (success, the module's failure, a timeout) shows in the
 // status line. The session follows baud and address changes by itself; the panel shows them.
 // Settings are lost at power-off unless saved (the manual's 2.18), which the panel says.
@@ -45,6 +46,9 @@ public:
     QPushButton *setAddressButton() const { return m_setAddress; }
     QPushButton *saveButton() const { return m_save; }
     QPushButton *resetButton() const { return m_reset; }
+    QComboBox *angleBox() const { return m_angle; }
+    QPushButton *readAngleButton() const { return m_readAngle; }
+    QPushButton *readAddressButton() const { return m_readAddress; }
 
 Q_SIGNALS:
     // A request finished (the same as the session's, for this panel's requests only).
@@ -64,12 +68,12 @@ private:
     quint64 m_pending = 0;
     bool m_confirmReset = true;
     QDoubleSpinBox *m_declination;
-    QComboBox *m_baud, *m_rate, *m_content;
+    QComboBox *m_baud, *m_rate, *m_content, *m_angle;
     QSpinBox *m_address;
     QPushButton *m_readDeclination, *m_setDeclination, *m_setBaud, *m_setRate, *m_setContent, *m_setAddress;
-    QPushButton *m_save, *m_reset;
+    QPushButton *m_save, *m_reset, *m_readAngle, *m_readAddress;
     QLabel *m_status, *m_note;
-    QLabel *m_declinationLabel, *m_baudLabel, *m_rateLabel, *m_contentLabel, *m_addressLabel;
+    QLabel *m_declinationLabel, *m_baudLabel, *m_rateLabel, *m_contentLabel, *m_addressLabel, *m_angleLabel;
 };
 
 } // namespace imudesk::ui

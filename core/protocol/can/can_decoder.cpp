@@ -46,7 +46,8 @@ QString sampleText(const model::Sample &s)
     QStringList parts;
     if (s.has(model::FieldAcc)) parts << QStringLiteral("acc %1 G").arg(vec(s.acc, 4));
     if (s.has(model::FieldGyr)) parts << QStringLiteral("gyr %1 deg/s").arg(vec(s.gyr, 2));
-    if (s.has(model::FieldMag)) parts << QStringLiteral("mag %1").arg(vec(s.mag, 3));
+    if (s.has(model::FieldMag)) parts << QStringLiteral("mag %1 uT").arg(vec(s.mag, 3));
+    if (s.has(model::FieldMagRelative)) parts << QStringLiteral("mag %1 (relative)").arg(vec(s.magRelative, 3));
     if (s.has(model::FieldEuler))
         parts << QStringLiteral("roll %1 pitch %2 yaw %3 deg").arg(s.roll, 0, 'f', 2).arg(s.pitch, 0, 'f', 2).arg(s.yaw, 0, 'f', 2);
     if (s.has(model::FieldQuat))

@@ -106,9 +106,10 @@ void assign(model::Sample &s, int q, double v)
     case 6: s.gyr.x = v; s.fields |= model::FieldGyr; break;
     case 7: s.gyr.y = v; s.fields |= model::FieldGyr; break;
     case 8: s.gyr.z = v; s.fields |= model::FieldGyr; break;
-    case 9: s.mag.x = v; s.fields |= model::FieldMag; break;
-    case 10: s.mag.y = v; s.fields |= model::FieldMag; break;
-    case 11: s.mag.z = v; s.fields |= model::FieldMag; break;
+    // The field is relative on CAN as on serial (manual 2.5): not uT, so not Sample::mag.
+    case 9: s.magRelative.x = v; s.fields |= model::FieldMagRelative; break;
+    case 10: s.magRelative.y = v; s.fields |= model::FieldMagRelative; break;
+    case 11: s.magRelative.z = v; s.fields |= model::FieldMagRelative; break;
     default: break;
     }
 }
@@ -120,7 +121,8 @@ void assign(PdoResult &r, int q, double v)
 }
 double pick(const model::Sample &s, int q)
 {
-    const double v[12] = {s.pitch, s.roll, s.yaw, s.acc.x, s.acc.y, s.acc.z, s.gyr.x, s.gyr.y, s.gyr.z, s.mag.x, s.mag.y, s.mag.z};
+    const double v[12] = {s.pitch, s.roll, s.yaw, s.acc.x, s.acc.y, s.acc.z, s.gyr.x, s.gyr.y, s.gyr.z,
+                          s.magRelative.x, s.magRelative.y, s.magRelative.z};
     return q >= 0 && q < 12 ? v[q] : 0;
 }
 // Quantities in the two halves of each slot.

@@ -80,12 +80,15 @@ model::Sample AllDataRecord::toSample(int64_t hostTimeNs) const
     model::Sample s;
     s.source = "HEC495";
     s.hostTimeNs = hostTimeNs;
-    s.fields = model::FieldEuler | model::FieldAcc | model::FieldGyr | model::FieldDeviceTime;
+    s.fields = model::FieldEuler | model::FieldAcc | model::FieldGyr | model::FieldDeviceTime | model::FieldMagRelative
+        | model::FieldMagRoll;
     s.pitch = pitch;
     s.roll = roll;
     s.yaw = heading;
     s.acc = {acc[0], acc[1], acc[2]};
     s.gyr = {gyr[0], gyr[1], gyr[2]};
+    s.magRelative = {mag[0], mag[1], mag[2]};
+    s.magRollDeg = magRoll;
     s.deviceTimeMs = timeMs;
     return s;
 }

@@ -33,8 +33,8 @@ struct AllDataRecord {
     std::vector<uint8_t> encode() const;
 
     // A Sample (source "HEC495"): Euler angles (yaw = the device's heading, clockwise from
-    // north), acc in G, gyr in deg/s, device time. The magnetic field is relative, not in uT,
-    // so it is not put into Sample::mag (read it from the record).
+    // north), acc in G, gyr in deg/s, device time, the relative magnetic field (magRelative:
+    // not in uT, so never in Sample::mag) and the magnetic roll.
     model::Sample toSample(int64_t hostTimeNs = 0) const;
 
     friend bool operator==(const AllDataRecord &, const AllDataRecord &) = default;
