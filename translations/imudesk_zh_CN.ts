@@ -1139,7 +1139,7 @@
 <context>
     <name>CaptureExporter</name>
     <message>
-        <location filename="../core/record/capture_exporter.cpp" line="+69" />
+        <location filename="../core/record/capture_exporter.cpp" line="+70" />
         <source>Cannot write %1: %2</source>
         <translation>无法写入 %1：%2</translation>
     </message>
@@ -1150,7 +1150,7 @@
         <translation>写入 %1 失败：%2。请检查磁盘剩余空间。</translation>
     </message>
     <message>
-        <location line="+111" />
+        <location line="+115" />
         <source>No output file was given.</source>
         <translation>未指定输出文件。</translation>
     </message>
@@ -1160,7 +1160,12 @@
         <translation>时间范围为空（从 %1 s 到 %2 s）。</translation>
     </message>
     <message>
-        <location line="+38" />
+        <location line="+13" />
+        <source>The module reports its attitude in North-West-Up (CONFIG IMU COORD 4); the vendor CSV's layout has no column to say so: its angles and quaternion are NWU.</source>
+        <translation>模块以北西天（NWU）坐标系输出姿态（CONFIG IMU COORD 4）；厂商 CSV 的格式没有列可以注明：其中的角度和四元数均为 NWU。</translation>
+    </message>
+    <message>
+        <location line="+29" />
         <source>Export cancelled.</source>
         <translation>导出已取消。</translation>
     </message>
@@ -1175,7 +1180,7 @@
 <context>
     <name>CaptureHeader</name>
     <message>
-        <location filename="../core/record/capture_header.cpp" line="+127" />
+        <location filename="../core/record/capture_header.cpp" line="+132" />
         <source>line %1 of the capture header is not a key=value entry</source>
         <translation>记录文件头第 %1 行不是“键=值”格式的条目</translation>
     </message>
@@ -4791,22 +4796,22 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::device::HipnucSerialFamily</name>
     <message>
-        <location filename="../core/device/hipnuc_family.cpp" line="+147" />
+        <location filename="../core/device/hipnuc_family.cpp" line="+186" />
         <source>The device that came back on %1 is a different one (serial %2, before %3). Its data continues in this session.</source>
         <translation>%1 上重新出现的是另一台设备（序列号 %2，之前为 %3）。其数据将继续记录在本会话中。</translation>
     </message>
     <message>
-        <location line="+28" />
+        <location line="+30" />
         <source>no reply within %1 ms (the device ignores commands it does not know)</source>
         <translation>%1 ms 内无应答（设备不响应它不认识的指令）</translation>
     </message>
     <message>
-        <location filename="../core/device/hipnuc_family_baud.cpp" line="+59" />
+        <location filename="../core/device/hipnuc_family_baud.cpp" line="+66" />
         <source>No HiPNUC device answered on %1 at any baud rate (115200, 921600, 460800, 230400, 256000, 57600, 38400, 19200, 9600, 4800). Check the cable and the power, and that no other program uses the port.</source>
         <translation>%1 上在所有波特率（115200、921600、460800、230400、256000、57600、38400、19200、9600、4800）下都没有 HiPNUC 设备应答。请检查线缆和电源，并确认没有其他程序占用该串口。</translation>
     </message>
     <message>
-        <location line="-13" />
+        <location line="-20" />
         <source>trying %1 baud</source>
         <translation>正在尝试 %1 波特率</translation>
     </message>
@@ -4816,7 +4821,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>%1，波特率 %2</translation>
     </message>
     <message>
-        <location line="+36" />
+        <location line="+43" />
         <location line="+50" />
         <source>the port is not open</source>
         <translation>串口未打开</translation>
@@ -4828,12 +4833,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
     <message>
         <location line="+11" />
-        <location line="+34" />
+        <location line="+36" />
         <source>the device answers at %1 baud</source>
         <translation>设备在波特率 %1 下应答</translation>
     </message>
     <message>
-        <location line="-29" />
+        <location line="-31" />
         <source>the device did not answer at %1 baud; it answers at %2 baud</source>
         <translation>设备在波特率 %1 下无应答；在波特率 %2 下有应答</translation>
     </message>
@@ -4843,7 +4848,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>设备在波特率 %1、%2 及其他任何波特率下均无应答：请检查线缆并给设备重新上电</translation>
     </message>
     <message>
-        <location line="+25" />
+        <location line="+27" />
         <source>the device does not answer at any baud rate</source>
         <translation>设备在任何波特率下均无应答</translation>
     </message>
@@ -5453,7 +5458,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>%1（%2 分钟前）</translation>
     </message>
     <message>
-        <location line="+92" />
+        <location line="+100" />
         <source>0 invalid</source>
         <translation>0 解无效</translation>
     </message>
@@ -5513,7 +5518,13 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>无 (%1)</translation>
     </message>
     <message>
-        <location line="+52" />
+        <location line="+53" />
+        <source>%1 (NWU)</source>
+        <comment>an attitude quantity of a module set to North-West-Up</comment>
+        <translation>%1（NWU）</translation>
+    </message>
+    <message>
+        <location line="+4" />
         <source>Device time</source>
         <translation>设备时间</translation>
     </message>
@@ -5802,12 +5813,32 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>沿传感器 %1 轴的磁场强度，单位 µT。</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+5" />
+        <source>%1 angle, in degrees: Euler angles 3-1-2 in the North-West-Up frame the module is set to (CONFIG IMU COORD 4); the yaw is 0 with the module's Y axis pointing west.</source>
+        <translation>%1角，单位为度：模块所设北西天坐标系（CONFIG IMU COORD 4）下的 3-1-2 欧拉角；模块 Y 轴指向西时航向角为 0。</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Roll</source>
+        <translation>横滚</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Pitch</source>
+        <translation>俯仰</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Yaw</source>
+        <translation>航向</translation>
+    </message>
+    <message>
+        <location line="+6" />
         <source>Roll angle, in degrees (Euler angles in the device's convention, ENU 312 by default).</source>
         <translation>横滚角，单位 °（设备约定的欧拉角，默认 ENU 312 顺序）。</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="-4" />
         <source>Pitch angle, in degrees (Euler angles in the device's convention, ENU 312 by default).</source>
         <translation>俯仰角，单位 °（设备约定的欧拉角，默认 ENU 312 顺序）。</translation>
     </message>
@@ -5817,7 +5848,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>航向角，单位 °（设备约定的欧拉角，默认 ENU 312 顺序）。</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+8" />
+        <source>Attitude quaternion, component %1 (body to the North-West-Up frame the module is set to), no unit.</source>
+        <translation>姿态四元数的 %1 分量（载体系到模块所设的北西天坐标系），无单位。</translation>
+    </message>
+    <message>
+        <location line="+2" />
         <source>Attitude quaternion, component %1 (body to navigation frame), no unit.</source>
         <translation>姿态四元数的 %1 分量（载体系到导航系），无单位。</translation>
     </message>
@@ -5932,14 +5968,14 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>组合导航解状态：0 解无效，1 对准中，3 组合导航中，6 惯性递推中。</translation>
     </message>
     <message numerus="yes">
-        <location line="-340" />
+        <location line="-365" />
         <source>No new value for %n s: the device stopped sending this quantity (another output content, a polled record that stopped, or a link that went quiet).</source>
         <translation>
             <numerusform>%n 秒内无新值：设备已停止发送该量（输出内容已更改、轮询记录已停止，或链路已静默）。</numerusform>
         </translation>
     </message>
     <message>
-        <location line="+342" />
+        <location line="+367" />
         <source>Position from integrated navigation, in degrees (south and west negative).</source>
         <translation>组合导航解算的位置，单位 °（南纬和西经为负）。</translation>
     </message>
@@ -7234,7 +7270,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::AttitudeWidget</name>
     <message>
-        <location filename="../ui/attitude/attitude_widget.cpp" line="+280" />
+        <location filename="../ui/attitude/attitude_widget.cpp" line="+295" />
         <source>X</source>
         <translation>X</translation>
     </message>
@@ -7254,7 +7290,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>N</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+7" />
         <source>E (x)</source>
         <translation>E (x)</translation>
     </message>
@@ -7264,23 +7300,36 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>N (y)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="-4" />
+        <location line="+5" />
         <source>U (z)</source>
         <translation>U (z)</translation>
     </message>
     <message>
         <location line="+1" />
-        <location line="+381" />
+        <location line="+382" />
         <source>ENU 3-1-2</source>
         <translation>ENU 3-1-2</translation>
     </message>
     <message>
-        <location line="-379" />
+        <location line="-390" />
+        <location line="+10" />
         <source>N (x)</source>
         <translation>N (x)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="-9" />
+        <source>W (y)</source>
+        <translation>W (y)</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <location line="+387" />
+        <source>NWU 3-1-2</source>
+        <translation>NWU 3-1-2</translation>
+    </message>
+    <message>
+        <location line="-379" />
         <source>E (y)</source>
         <translation>E (y)</translation>
     </message>
@@ -7291,12 +7340,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
     <message>
         <location line="+1" />
-        <location line="+377" />
+        <location line="+378" />
         <source>NED 3-2-1</source>
         <translation>NED 3-2-1</translation>
     </message>
     <message>
-        <location line="-375" />
+        <location line="-376" />
         <source>No attitude yet</source>
         <translation>尚无姿态数据</translation>
     </message>
@@ -7326,7 +7375,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>拖动以旋转视图，双击以复位</translation>
     </message>
     <message>
-        <location line="+381" />
+        <location line="+382" />
         <source>Reset view</source>
         <translation>复位视图</translation>
     </message>
@@ -9087,7 +9136,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>%2 上的 %1</translation>
     </message>
     <message>
-        <location line="+198" />
+        <location line="+201" />
         <source>Not connected</source>
         <translation>未连接</translation>
     </message>

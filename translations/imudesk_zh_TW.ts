@@ -1139,7 +1139,7 @@
 <context>
     <name>CaptureExporter</name>
     <message>
-        <location filename="../core/record/capture_exporter.cpp" line="+69" />
+        <location filename="../core/record/capture_exporter.cpp" line="+70" />
         <source>Cannot write %1: %2</source>
         <translation>無法寫入 %1：%2</translation>
     </message>
@@ -1150,7 +1150,7 @@
         <translation>寫入 %1 失敗：%2。請檢查可用磁碟空間。</translation>
     </message>
     <message>
-        <location line="+111" />
+        <location line="+115" />
         <source>No output file was given.</source>
         <translation>未指定輸出檔案。</translation>
     </message>
@@ -1160,7 +1160,12 @@
         <translation>時間範圍為空（從 %1 s 到 %2 s）。</translation>
     </message>
     <message>
-        <location line="+38" />
+        <location line="+13" />
+        <source>The module reports its attitude in North-West-Up (CONFIG IMU COORD 4); the vendor CSV's layout has no column to say so: its angles and quaternion are NWU.</source>
+        <translation>模組以北西天（NWU）座標系輸出姿態（CONFIG IMU COORD 4）；廠商 CSV 的格式沒有欄位可以註明：其中的角度和四元數均為 NWU。</translation>
+    </message>
+    <message>
+        <location line="+29" />
         <source>Export cancelled.</source>
         <translation>匯出已取消。</translation>
     </message>
@@ -1175,7 +1180,7 @@
 <context>
     <name>CaptureHeader</name>
     <message>
-        <location filename="../core/record/capture_header.cpp" line="+127" />
+        <location filename="../core/record/capture_header.cpp" line="+132" />
         <source>line %1 of the capture header is not a key=value entry</source>
         <translation>記錄檔檔頭第 %1 行不是「鍵=值」項目</translation>
     </message>
@@ -4791,22 +4796,22 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::device::HipnucSerialFamily</name>
     <message>
-        <location filename="../core/device/hipnuc_family.cpp" line="+147" />
+        <location filename="../core/device/hipnuc_family.cpp" line="+186" />
         <source>The device that came back on %1 is a different one (serial %2, before %3). Its data continues in this session.</source>
         <translation>%1 上重新出現的是另一台裝置（序號 %2，之前為 %3）。其資料將繼續記錄在此工作階段中。</translation>
     </message>
     <message>
-        <location line="+28" />
+        <location line="+30" />
         <source>no reply within %1 ms (the device ignores commands it does not know)</source>
         <translation>%1 ms 內無回應（裝置不回應它不認識的指令）</translation>
     </message>
     <message>
-        <location filename="../core/device/hipnuc_family_baud.cpp" line="+59" />
+        <location filename="../core/device/hipnuc_family_baud.cpp" line="+66" />
         <source>No HiPNUC device answered on %1 at any baud rate (115200, 921600, 460800, 230400, 256000, 57600, 38400, 19200, 9600, 4800). Check the cable and the power, and that no other program uses the port.</source>
         <translation>%1 上在所有波特率（115200、921600、460800、230400、256000、57600、38400、19200、9600、4800）下都沒有 HiPNUC 裝置回應。請檢查線材和電源，並確認沒有其他程式占用該串列埠。</translation>
     </message>
     <message>
-        <location line="-13" />
+        <location line="-20" />
         <source>trying %1 baud</source>
         <translation>正在嘗試 %1 波特率</translation>
     </message>
@@ -4816,7 +4821,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>%1，波特率 %2</translation>
     </message>
     <message>
-        <location line="+36" />
+        <location line="+43" />
         <location line="+50" />
         <source>the port is not open</source>
         <translation>串列埠未開啟</translation>
@@ -4828,12 +4833,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
     <message>
         <location line="+11" />
-        <location line="+34" />
+        <location line="+36" />
         <source>the device answers at %1 baud</source>
         <translation>裝置在波特率 %1 下回應</translation>
     </message>
     <message>
-        <location line="-29" />
+        <location line="-31" />
         <source>the device did not answer at %1 baud; it answers at %2 baud</source>
         <translation>裝置在波特率 %1 下無回應；改在波特率 %2 下回應</translation>
     </message>
@@ -4843,7 +4848,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>裝置在波特率 %1、%2 及其他任何速率下均無回應：請檢查纜線，並將裝置斷電重啟</translation>
     </message>
     <message>
-        <location line="+25" />
+        <location line="+27" />
         <source>the device does not answer at any baud rate</source>
         <translation>裝置在任何波特率下均無回應</translation>
     </message>
@@ -5453,7 +5458,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>%1（%2 分鐘前）</translation>
     </message>
     <message>
-        <location line="+92" />
+        <location line="+100" />
         <source>0 invalid</source>
         <translation>0 解無效</translation>
     </message>
@@ -5513,7 +5518,13 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>無 (%1)</translation>
     </message>
     <message>
-        <location line="+52" />
+        <location line="+53" />
+        <source>%1 (NWU)</source>
+        <comment>an attitude quantity of a module set to North-West-Up</comment>
+        <translation>%1（NWU）</translation>
+    </message>
+    <message>
+        <location line="+4" />
         <source>Device time</source>
         <translation>裝置時間</translation>
     </message>
@@ -5802,12 +5813,32 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>沿感測器 %1 軸的磁場強度，單位 µT。</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+5" />
+        <source>%1 angle, in degrees: Euler angles 3-1-2 in the North-West-Up frame the module is set to (CONFIG IMU COORD 4); the yaw is 0 with the module's Y axis pointing west.</source>
+        <translation>%1角，單位為度：模組所設北西天座標系（CONFIG IMU COORD 4）下的 3-1-2 歐拉角；模組 Y 軸指向西時航向角為 0。</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Roll</source>
+        <translation>橫滾</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Pitch</source>
+        <translation>俯仰</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Yaw</source>
+        <translation>航向</translation>
+    </message>
+    <message>
+        <location line="+6" />
         <source>Roll angle, in degrees (Euler angles in the device's convention, ENU 312 by default).</source>
         <translation>橫滾角，單位 °（裝置約定的歐拉角，預設 ENU 312 順序）。</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="-4" />
         <source>Pitch angle, in degrees (Euler angles in the device's convention, ENU 312 by default).</source>
         <translation>俯仰角，單位 °（裝置約定的歐拉角，預設 ENU 312 順序）。</translation>
     </message>
@@ -5817,7 +5848,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>航向角，單位 °（裝置約定的歐拉角，預設 ENU 312 順序）。</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+8" />
+        <source>Attitude quaternion, component %1 (body to the North-West-Up frame the module is set to), no unit.</source>
+        <translation>姿態四元數的 %1 分量（載體系到模組所設的北西天座標系），無單位。</translation>
+    </message>
+    <message>
+        <location line="+2" />
         <source>Attitude quaternion, component %1 (body to navigation frame), no unit.</source>
         <translation>姿態四元數的 %1 分量（載體座標系到導航座標系），無單位。</translation>
     </message>
@@ -5932,14 +5968,14 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>組合導航解狀態：0 解無效，1 對準中，3 組合導航中，6 慣性遞推中。</translation>
     </message>
     <message numerus="yes">
-        <location line="-340" />
+        <location line="-365" />
         <source>No new value for %n s: the device stopped sending this quantity (another output content, a polled record that stopped, or a link that went quiet).</source>
         <translation>
             <numerusform>%n 秒內無新值：裝置已停止傳送此量（輸出內容已更改、輪詢記錄已停止，或連線已靜默）。</numerusform>
         </translation>
     </message>
     <message>
-        <location line="+342" />
+        <location line="+367" />
         <source>Position from integrated navigation, in degrees (south and west negative).</source>
         <translation>組合導航解算的位置，單位 °（南緯和西經為負）。</translation>
     </message>
@@ -7234,7 +7270,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::AttitudeWidget</name>
     <message>
-        <location filename="../ui/attitude/attitude_widget.cpp" line="+280" />
+        <location filename="../ui/attitude/attitude_widget.cpp" line="+295" />
         <source>X</source>
         <translation>X</translation>
     </message>
@@ -7254,7 +7290,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>N</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+7" />
         <source>E (x)</source>
         <translation>E (x)</translation>
     </message>
@@ -7264,23 +7300,36 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>N (y)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="-4" />
+        <location line="+5" />
         <source>U (z)</source>
         <translation>U (z)</translation>
     </message>
     <message>
         <location line="+1" />
-        <location line="+381" />
+        <location line="+382" />
         <source>ENU 3-1-2</source>
         <translation>ENU 3-1-2</translation>
     </message>
     <message>
-        <location line="-379" />
+        <location line="-390" />
+        <location line="+10" />
         <source>N (x)</source>
         <translation>N (x)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="-9" />
+        <source>W (y)</source>
+        <translation>W (y)</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <location line="+387" />
+        <source>NWU 3-1-2</source>
+        <translation>NWU 3-1-2</translation>
+    </message>
+    <message>
+        <location line="-379" />
         <source>E (y)</source>
         <translation>E (y)</translation>
     </message>
@@ -7291,12 +7340,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
     <message>
         <location line="+1" />
-        <location line="+377" />
+        <location line="+378" />
         <source>NED 3-2-1</source>
         <translation>NED 3-2-1</translation>
     </message>
     <message>
-        <location line="-375" />
+        <location line="-376" />
         <source>No attitude yet</source>
         <translation>尚無姿態資料</translation>
     </message>
@@ -7326,7 +7375,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>拖曳以旋轉檢視，按兩下以重設</translation>
     </message>
     <message>
-        <location line="+381" />
+        <location line="+382" />
         <source>Reset view</source>
         <translation>重設檢視</translation>
     </message>
@@ -9087,7 +9136,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>%2 上的 %1</translation>
     </message>
     <message>
-        <location line="+198" />
+        <location line="+201" />
         <source>Not connected</source>
         <translation>未連線</translation>
     </message>

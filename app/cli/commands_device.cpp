@@ -52,6 +52,7 @@ QJsonObject identityJson(const model::DeviceIdentity &id)
     o[QStringLiteral("serial")] = QString::fromStdString(id.serial);
     o[QStringLiteral("build")] = QString::fromStdString(id.build);
     o[QStringLiteral("product_family")] = QString::fromLatin1(model::familyName(id.family()));
+    o[QStringLiteral("world_frame")] = QString::fromLatin1(model::worldFrameName(id.worldFrame));
     return o;
 }
 
@@ -150,6 +151,7 @@ int cmdProbe(const QStringList &args)
             out(QStringLiteral("bootloader: %1")
                     .arg(id.bootloader ? QString::fromStdString(id.bootloader->toString()) : QString()));
             out(QStringLiteral("serial: %1").arg(QString::fromStdString(id.serial)));
+            out(QStringLiteral("world frame: %1").arg(QString::fromLatin1(model::worldFrameName(id.worldFrame))));
         } else {
             out(QStringLiteral("identity: not answered (the device streams frames but ignored LOG VERSION)"));
         }
@@ -160,11 +162,12 @@ int cmdProbe(const QStringList &args)
 namespace {
 
 // One sample as a line of text (read's human output).
-void printSampleLine(const model::Sample &s)
+void printSampleLine(const model::Sample &s, model::WorldFrame frame)
 {
-    std::printf("%s t=%.0f ms acc=[%.3f %.3f %.3f] G gyr=[%.2f %.2f %.2f] deg/s rpy=[%.2f %.2f %.2f] deg\n",
-                s.source.c_str(), s.deviceTimeMs, s.acc.x, s.acc.y, s.acc.z, s.gyr.x, s.gyr.y, s.gyr.z, s.roll, s.pitch,
-                s.yaw);
+    // A module set to NWU (CONFIG IMU COORD 4): its angles say so.
+    std::printf("%s t=%.0f ms acc=[%.3f %.3f %.3f] G gyr=[%.2f %.2f %.2f] deg/s rpy%s=[%.2f %.2f %.2f] deg\n",
+                s.source.c_str(), s.deviceTimeMs, s.acc.x, s.acc.y, s.acc.z, s.gyr.x, s.gyr.y, s.gyr.z,
+                frame == model::WorldFrame::Nwu ? "(NWU)" : "", s.roll, s.pitch, s.yaw);
 }
 
 } // namespace
@@ -237,9 +240,9 @@ int cmdRead(const QStringList &args)
             return fail(QStringLiteral("no %1 frame came within 3 s of %2").arg(QString::fromStdString(type),
                                                                                 QString::fromStdString(once->text)));
         if (json)
-            outRaw(format::sampleToJson(*got));
+            outRaw(format::sampleToJson(*got, id.worldFrame));
         else
-            printSampleLine(*got);
+            printSampleLine(*got, id.worldFrame);
         std::fflush(stdout);
         return ExitOk;
     }
@@ -260,10 +263,10 @@ int cmdRead(const QStringList &args)
         for (const auto &s : batch) {
             ++printed;
             if (json) {
-                outRaw(format::sampleToJson(s));
+                outRaw(format::sampleToJson(s, id.worldFrame));
             } else if (s.hostTimeNs - lastTextNs >= 100'000'000) { // text: 10 lines/s at most
                 lastTextNs = s.hostTimeNs;
-                printSampleLine(s);
+                printSampleLine(s, id.worldFrame);
             }
         }
         std::fflush(stdout);

@@ -136,8 +136,47 @@ void HipnucSerialFamily::queryIdentity(int attempt)
             queryIdentity(attempt + 1);
             return;
         }
-        Q_EMIT identityQueryFinished(answered);
+        if (!answered) {
+            Q_EMIT identityQueryFinished(false);
+            return;
+        }
+        // The frame before "connected": the first sample shown is labelled right.
+        queryWorldFrame([this] { Q_EMIT identityQueryFinished(true); });
     }));
+}
+
+void HipnucSerialFamily::queryWorldFrame(std::function<void()> then)
+{
+    m_coordChangePending = false; // (re)connected: what the module reports now is in effect
+    if (engine().identity().edition() != model::ManualEdition::V171) {
+        then(); // COORD is a setting of firmware 1.7.1 and later; before, always ENU
+        return;
+    }
+    engine().submit(makeRequest(hp::commands::logComConfig(), kIdentityTimeoutMs, [this, then](const Reply &r) {
+        if (r.status == Reply::Status::Cancelled || r.status == Reply::Status::NotSent)
+            return; // the session stopped or the port closed meanwhile: nothing to go on with
+        if (r.ok())
+            noteWorldFrame(r);
+        then(); // no answer: the frame stays as it was (ENU at first)
+    }));
+}
+
+void HipnucSerialFamily::noteWorldFrame(const Reply &r)
+{
+    if (m_coordChangePending)
+        return;
+    std::optional<model::WorldFrame> frame;
+    for (const auto &line : r.lines)
+        for (const auto &[key, value] : hp::keyValuePairs(line))
+            if (key == "COORD")
+                frame = model::worldFrameOfCoord(value);
+    if (!frame)
+        frame = model::WorldFrame::Enu; // the default, and a reply that does not list it
+    if (*frame == engine().identity().worldFrame)
+        return;
+    model::DeviceIdentity id = engine().identity();
+    id.worldFrame = *frame;
+    engine().setIdentity(id);
 }
 
 void HipnucSerialFamily::noteIdentity(const model::DeviceIdentity &id)
@@ -151,7 +190,9 @@ void HipnucSerialFamily::noteIdentity(const model::DeviceIdentity &id)
     m_checkSameDevice = false;
     if (!id.serial.empty())
         m_deviceSerial = id.serial;
-    engine().setIdentity(id);
+    model::DeviceIdentity kept = id;
+    kept.worldFrame = engine().identity().worldFrame; // LOG VERSION does not tell it; LOG COMCONFIG does
+    engine().setIdentity(kept);
 }
 
 // ---------------------------------------------------------------------------------------
@@ -191,12 +232,16 @@ void HipnucSerialFamily::finished(const Request &r, const RequestResult &result)
     noteCommandDone(command.effect);
     // LOG VERSION asked for by someone (the console, a menu, a script) refreshes the identity
     // too; the family's own queries (id 0) set it where they are made.
-    if (r.id != 0 && QString::fromStdString(command.text).simplified().compare(QLatin1String("LOG VERSION"),
-                                                                                 Qt::CaseInsensitive) == 0) {
+    const QString text = QString::fromStdString(command.text).simplified().toUpper();
+    if (r.id != 0 && text == QLatin1String("LOG VERSION")) {
         const auto id = model::DeviceIdentity::fromKeyValues(result.reply.value<Reply>().values);
         if (id.usable())
             noteIdentity(id);
     }
+    if (text.startsWith(QLatin1String("CONFIG IMU COORD ")))
+        m_coordChangePending = true;
+    else if (r.id != 0 && text == QLatin1String("LOG COMCONFIG"))
+        noteWorldFrame(result.reply.value<Reply>());
 }
 
 void HipnucSerialFamily::noteCommandDone(const hp::OutputEffect &c)

@@ -73,6 +73,11 @@ private:
     void noteIdentity(const model::DeviceIdentity &id);
     void listenThenQueryIdentity();
     void queryIdentity(int attempt);
+    // LOG COMCONFIG's COORD= (v1.7.1 4.6.7.10): the frame of the module's attitude, kept in the
+    // identity. A COORD written since the last reset takes effect only after it, so a reply
+    // read in between does not change the frame.
+    void queryWorldFrame(std::function<void()> then);
+    void noteWorldFrame(const Reply &r);
     void noteCommandDone(const protocol::hipnuc::OutputEffect &effect);
 
     // Detection and recovery (hipnuc_family_baud.cpp)
@@ -102,6 +107,7 @@ private:
 
     std::string m_deviceSerial; // from LOG VERSION: tells whether the same module came back
     bool m_checkSameDevice = false;
+    bool m_coordChangePending = false; // CONFIG IMU COORD sent, the module not reset since
 };
 
 } // namespace imudesk::device

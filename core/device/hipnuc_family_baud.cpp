@@ -50,10 +50,17 @@ BaudScan::Plan HipnucSerialFamily::detectionPlan()
         engine().setWorkingBaud(baud);
         engine().restartStatistics();
         Q_EMIT baudDetected(baud);
-        if (m_found)
-            noteIdentity(*m_found);
-        engine().setState(SessionState::Connected, tr("%1 at %2 baud").arg(engine().transport().address()).arg(baud));
-        finishLink(true, baud);
+        const auto connected = [this, baud] {
+            engine().setState(SessionState::Connected,
+                              tr("%1 at %2 baud").arg(engine().transport().address()).arg(baud));
+            finishLink(true, baud);
+        };
+        if (!m_found) {
+            connected();
+            return;
+        }
+        noteIdentity(*m_found);
+        queryWorldFrame(connected); // the frame before "connected", as after a fixed-rate open
     };
     p.exhausted = [this] {
         engine().fail(tr("No HiPNUC device answered on %1 at any baud rate (115200, 921600, 460800, 230400, "
@@ -150,6 +157,8 @@ void HipnucSerialFamily::recoverLink(const QList<int> &bauds, int settleMs)
         order.push_back(current);
     QTimer::singleShot(std::max(0, settleMs), this, [this, order] {
         probeBauds(order, [this](bool reachable, int at) {
+            if (reachable)
+                m_coordChangePending = false; // the module was reset: its COORD is in effect now
             Q_EMIT linkRecovered(reachable, at,
                                  reachable ? tr("the device answers at %1 baud").arg(at)
                                            : tr("the device does not answer at any baud rate"));

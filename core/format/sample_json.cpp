@@ -98,7 +98,7 @@ void hi83Extra(std::string &out, const model::Hi83Extra &x)
 
 } // namespace
 
-std::string sampleToJson(const model::Sample &s)
+std::string sampleToJson(const model::Sample &s, model::WorldFrame worldFrame)
 {
     using namespace model;
     std::string out;
@@ -141,6 +141,10 @@ std::string sampleToJson(const model::Sample &s)
     if (s.has(FieldQuat)) {
         key(out, "quat");
         out += '[' + number(s.quat.w) + ',' + number(s.quat.x) + ',' + number(s.quat.y) + ',' + number(s.quat.z) + ']';
+    }
+    if (worldFrame != WorldFrame::Enu && (s.has(FieldEuler) || s.has(FieldQuat))) {
+        key(out, "world_frame");
+        out += std::string("\"") + worldFrameName(worldFrame) + '"';
     }
     if (s.has(FieldPosition)) {
         key(out, "lat");

@@ -263,6 +263,14 @@ void LatestValuesModel::setUnits(const model::DisplayUnits &units)
     retranslate(); // every value and unit text again
 }
 
+void LatestValuesModel::setWorldFrame(model::WorldFrame frame)
+{
+    if (frame == m_worldFrame)
+        return;
+    m_worldFrame = frame;
+    retranslate();
+}
+
 QString LatestValuesModel::formatValue(Row row, const model::Sample &s) const
 {
     if (row == FrameType)
@@ -388,8 +396,13 @@ QString LatestValuesModel::formatValue(Row row, const model::Sample &s) const
 
 QString LatestValuesModel::quantityName(Row row) const
 {
-    if (isChannel(row))
-        return plot::channelName(plot::Channel(row));
+    if (isChannel(row)) {
+        const QString name = plot::channelName(plot::Channel(row));
+        // A module set to NWU reports its attitude in that frame: its rows say so.
+        if (m_worldFrame == model::WorldFrame::Nwu && row >= Roll && row <= QuatZ)
+            return tr("%1 (NWU)", "an attitude quantity of a module set to North-West-Up").arg(name);
+        return name;
+    }
     switch (row) {
     case DeviceTime: return tr("Device time");
     case InsStatus: return tr("INS status");
@@ -482,15 +495,27 @@ QString LatestValuesModel::toolTip(Row row) const
     case MagX:
     case MagY:
     case MagZ: return tr("Magnetic field along the sensor's %1 axis, in µT.").arg(axisName(row));
-    case Roll: return tr("Roll angle, in degrees (Euler angles in the device's convention, ENU 312 by default).");
-    case Pitch: return tr("Pitch angle, in degrees (Euler angles in the device's convention, ENU 312 by default).");
+    case Roll:
+    case Pitch:
     case Yaw:
-        return tr("Yaw (heading) angle, in degrees (Euler angles in the device's convention, ENU 312 by default).");
+        if (m_worldFrame == model::WorldFrame::Nwu)
+            return tr("%1 angle, in degrees: Euler angles 3-1-2 in the North-West-Up frame the module is set to "
+                      "(CONFIG IMU COORD 4); the yaw is 0 with the module's Y axis pointing west.")
+                .arg(row == Roll ? tr("Roll") : row == Pitch ? tr("Pitch") : tr("Yaw"));
+        if (row == Pitch)
+            return tr("Pitch angle, in degrees (Euler angles in the device's convention, ENU 312 by default).");
+        if (row == Yaw)
+            return tr("Yaw (heading) angle, in degrees (Euler angles in the device's convention, ENU 312 by "
+                      "default).");
+        return tr("Roll angle, in degrees (Euler angles in the device's convention, ENU 312 by default).");
     case QuatW:
     case QuatX:
     case QuatY:
     case QuatZ:
-        return tr("Attitude quaternion, component %1 (body to navigation frame), no unit.").arg(axisName(row));
+        return m_worldFrame == model::WorldFrame::Nwu
+            ? tr("Attitude quaternion, component %1 (body to the North-West-Up frame the module is set to), no unit.")
+                  .arg(axisName(row))
+            : tr("Attitude quaternion, component %1 (body to navigation frame), no unit.").arg(axisName(row));
     case Pressure: return tr("Air pressure from the barometer, in Pa.");
     case Temperature: return tr("Sensor temperature, in °C.");
     case DeviceTime:

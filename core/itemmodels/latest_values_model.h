@@ -2,6 +2,7 @@
 // The latest Sample as a table: one row per quantity, columns Quantity / Value /
 // Unit. Views call refresh() on their clock (never per sample); only cells whose
 // text changed emit dataChanged. A field the sample does not carry shows "—".
+#include "model/device_identity.h"
 #include "model/display_units.h"
 #include "model/sample.h"
 
@@ -106,6 +107,10 @@ public:
     // Units for acceleration and angular rate (values and the unit column follow).
     void setUnits(const model::DisplayUnits &units);
     const model::DisplayUnits &units() const { return m_units; }
+    // The frame of the module's attitude (identity.worldFrame): the angle and quaternion rows
+    // say "NWU" for a module set to CONFIG IMU COORD 4.
+    void setWorldFrame(model::WorldFrame frame);
+    model::WorldFrame worldFrame() const { return m_worldFrame; }
 
     QString valueText(Row row) const { return m_values[size_t(row)]; }
     // True once any sample shown carried this row's field (the frame type row: any sample).
@@ -132,6 +137,7 @@ private:
     uint32_t m_seenFields = 0;
     uint32_t m_seenHi83Bits = 0;
     model::DisplayUnits m_units;
+    model::WorldFrame m_worldFrame = model::WorldFrame::Enu;
 };
 
 } // namespace imudesk::models

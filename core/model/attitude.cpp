@@ -179,6 +179,19 @@ Quat enuToNed(const Quat &qEnu)
     return canonical(fromEigen(m * toEigen(normalized(qEnu)) * m.conjugate()));
 }
 
+Quat nwuToEnu(const Quat &qNwu)
+{
+    // R_enu<-nwu: +90 deg about z (NWU x, north, is ENU y).
+    const Eigen::Quaterniond r(Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitZ()));
+    return canonical(fromEigen(r * toEigen(normalized(qNwu))));
+}
+
+Quat enuToNwu(const Quat &qEnu)
+{
+    const Eigen::Quaterniond r(Eigen::AngleAxisd(-M_PI / 2, Eigen::Vector3d::UnitZ()));
+    return canonical(fromEigen(r * toEigen(normalized(qEnu))));
+}
+
 Quat nedToEnu(const Quat &qNed)
 {
     // The swap is an involution, so the inverse is the same conjugation.

@@ -86,6 +86,11 @@ Quat quatFromNed321(const Euler &e);
 Quat enuToNed(const Quat &qEnu);
 Quat nedToEnu(const Quat &qNed);
 
+// body -> NWU (a module set to CONFIG IMU COORD 4)  <->  body -> ENU: the same body axes, the
+// navigation frame turned 90 deg about up (N = ENU y, W = -ENU x).
+Quat nwuToEnu(const Quat &qNwu);
+Quat enuToNwu(const Quat &qEnu);
+
 // Compass heading of the forward axis from a body -> ENU quaternion, 0 <= h < 360.
 double headingDeg(const Quat &qEnu);
 

@@ -87,6 +87,36 @@ ProductFamily familyOfProduct(const std::string &name)
     return ProductFamily::Unknown;
 }
 
+const char *worldFrameName(WorldFrame f)
+{
+    return f == WorldFrame::Nwu ? "NWU" : "ENU";
+}
+
+std::optional<WorldFrame> worldFrameOfCoord(const std::string &coord)
+{
+    size_t b = coord.find_first_not_of(" \t"), e = coord.find_last_not_of(" \t");
+    if (b == std::string::npos)
+        return std::nullopt;
+    const std::string v = coord.substr(b, e - b + 1);
+    if (v == "0")
+        return WorldFrame::Enu;
+    if (v == "4")
+        return WorldFrame::Nwu;
+    return std::nullopt;
+}
+
+std::optional<WorldFrame> parseWorldFrame(const std::string &name)
+{
+    std::string u;
+    for (char c : name)
+        u += char(std::toupper(static_cast<unsigned char>(c)));
+    if (u == "ENU")
+        return WorldFrame::Enu;
+    if (u == "NWU")
+        return WorldFrame::Nwu;
+    return std::nullopt;
+}
+
 const char *familyName(ProductFamily f)
 {
     switch (f) {

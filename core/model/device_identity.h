@@ -18,6 +18,15 @@ struct FirmwareVersion {
 // Which manual describes a firmware: v1.7.1 for >= 1.7.1, else v1.6.6 (1.5.5 - 1.7.0).
 enum class ManualEdition { V166, V171 };
 
+// The navigation frame a module reports its attitude in (v1.7.1 4.6.7.10, CONFIG IMU COORD):
+// 0 East-North-Up (the default, and every module before 1.7.1), 4 North-West-Up.
+enum class WorldFrame { Enu, Nwu };
+const char *worldFrameName(WorldFrame f); // "ENU", "NWU"
+// The frame of a COORD value ("0", "4"); nullopt for anything else.
+std::optional<WorldFrame> worldFrameOfCoord(const std::string &coord);
+// "ENU" / "NWU" (any case) back to the frame; nullopt for anything else.
+std::optional<WorldFrame> parseWorldFrame(const std::string &name);
+
 // Product families of the v1.7.1 feature table (chapter 3).
 enum class ProductFamily { Unknown, HI02, HI05_06, CH0x0_HI04_12_13_14, HI50, HI7x_9x };
 
@@ -28,6 +37,9 @@ struct DeviceIdentity {
     std::optional<FirmwareVersion> firmware;   // APP_VER or SW_VERSION
     std::optional<FirmwareVersion> bootloader; // BL_VER or BL_VERSION
     int busAddress = -1;       // a Witlink HEC495's module address (0..255); -1 for families without one
+    // Not from LOG VERSION: the frame of the module's quaternion and Euler angles, read with
+    // LOG COMCONFIG (COORD=) after the identity on firmware 1.7.1 and later.
+    WorldFrame worldFrame = WorldFrame::Enu;
 
     // Builds an identity from the KEY=VALUE lines of a LOG VERSION reply.
     static DeviceIdentity fromKeyValues(const std::map<std::string, std::string> &kv);

@@ -61,6 +61,7 @@ public:
     }
 
     int64_t firstNs = 0;
+    model::WorldFrame worldFrame = model::WorldFrame::Enu; // the capture's module (its header)
 
     bool open(const QString &path, const char *header, Output *&out)
     {
@@ -84,7 +85,7 @@ public:
     {
         if (m_o.format != CaptureExporter::Format::VendorCsv) {
             if (!m_single)
-                open(m_o.output, m_o.format == CaptureExporter::Format::TidyCsv ? CaptureExporter::tidyHeader() : nullptr,
+                open(m_o.output, m_o.format == CaptureExporter::Format::TidyCsv ? CaptureExporter::tidyHeader(worldFrame) : nullptr,
                      m_single);
             return m_single;
         }
@@ -129,7 +130,7 @@ public:
         case CaptureExporter::Format::JsonLines: {
             Output *out = output(QString(), nullptr);
             if (out) {
-                out->buf += format::sampleToJson(hp::toSample(p));
+                out->buf += format::sampleToJson(hp::toSample(p), worldFrame);
                 out->buf += '\n';
             }
             written(out);
@@ -151,7 +152,7 @@ public:
             if (m_o.format == CaptureExporter::Format::TidyCsv) {
                 CaptureExporter::appendTidyRow(out->buf, s, 0, double(hostNs - firstNs) / 1e9);
             } else {
-                out->buf += format::sampleToJson(s);
+                out->buf += format::sampleToJson(s, worldFrame);
                 out->buf += '\n';
             }
         }
@@ -243,8 +244,12 @@ QString CaptureExporter::vendorPath(const QString &output, const QString &type)
     return stem + QLatin1Char('_') + type + QLatin1Char('.') + suffix;
 }
 
-const char *CaptureExporter::tidyHeader()
+const char *CaptureExporter::tidyHeader(model::WorldFrame worldFrame)
 {
+    if (worldFrame == model::WorldFrame::Nwu)
+        return "time_s,host_time_s,frame_tag,main_status,acc_x_mps2,acc_y_mps2,acc_z_mps2,gyr_x_radps,gyr_y_radps,"
+               "gyr_z_radps,mag_x_uT,mag_y_uT,mag_z_uT,roll_nwu_deg,pitch_nwu_deg,yaw_nwu_deg,quat_nwu_w,quat_nwu_x,"
+               "quat_nwu_y,quat_nwu_z,pressure_Pa,temperature_degC,lat_deg,lon_deg,alt_m,vel_e_mps,vel_n_mps,vel_u_mps";
     return "time_s,host_time_s,frame_tag,main_status,acc_x_mps2,acc_y_mps2,acc_z_mps2,gyr_x_radps,gyr_y_radps,"
            "gyr_z_radps,mag_x_uT,mag_y_uT,mag_z_uT,roll_deg,pitch_deg,yaw_deg,quat_w,quat_x,quat_y,quat_z,"
            "pressure_Pa,temperature_degC,lat_deg,lon_deg,alt_m,vel_e_mps,vel_n_mps,vel_u_mps";
@@ -335,6 +340,10 @@ CaptureExporter::Result CaptureExporter::run(const QString &capturePath, const O
     r.notes = source.notes();
     const double total = double(std::max<qint64>(reader.size(), 1));
     ExportSink sink(options, r);
+    sink.worldFrame = reader.header().identity().worldFrame;
+    if (sink.worldFrame == model::WorldFrame::Nwu && options.format == Format::VendorCsv)
+        r.notes << tr("The module reports its attitude in North-West-Up (CONFIG IMU COORD 4); the vendor CSV's "
+                      "layout has no column to say so: its angles and quaternion are NWU.");
     CaptureDecoder decoder;
     decoder.configure(reader.header());
     CaptureReader::Chunk c;

@@ -4,6 +4,7 @@
 // written in 1 MB blocks, so memory does not grow with the file. Progress is reported as
 // a fraction of the capture read; returning false from it cancels (the partial outputs
 // are removed).
+#include "model/device_identity.h"
 #include "model/sample.h"
 
 #include <QCoreApplication>
@@ -49,8 +50,9 @@ public:
     static std::optional<Format> parseFormat(const QString &name); // "vendor-csv", "csv", "jsonl"
     static QString vendorPath(const QString &output, const QString &type);
 
-    // The tidy CSV: one header row, time_s from the device clock, SI units in the names.
-    static const char *tidyHeader();
+    // The tidy CSV: one header row, time_s from the device clock, SI units in the names. A
+    // module set to NWU names its attitude columns so (roll_nwu_deg ... quat_nwu_z).
+    static const char *tidyHeader(model::WorldFrame worldFrame = model::WorldFrame::Enu);
     static void appendTidyRow(std::string &out, const model::Sample &s, int frameTag, double hostS);
 };
 

@@ -59,6 +59,10 @@ void CaptureHeader::setIdentity(const model::DeviceIdentity &id)
     set(kBootloader, id.bootloader ? id.bootloader->toString() : std::string());
     set(kSerial, id.serial);
     set(kBuild, id.build);
+    if (id.worldFrame == model::WorldFrame::Enu)
+        values.erase(kWorldFrame);
+    else
+        set(kWorldFrame, model::worldFrameName(id.worldFrame));
 }
 
 model::DeviceIdentity CaptureHeader::identity() const
@@ -69,6 +73,7 @@ model::DeviceIdentity CaptureHeader::identity() const
     id.build = value(kBuild);
     id.firmware = model::FirmwareVersion::parse(value(kFirmware));
     id.bootloader = model::FirmwareVersion::parse(value(kBootloader));
+    id.worldFrame = model::parseWorldFrame(value(kWorldFrame)).value_or(model::WorldFrame::Enu);
     return id;
 }
 

@@ -13,6 +13,7 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include <cmath>
 #include <csignal>
 
 using namespace imudesk;
@@ -216,6 +217,47 @@ private Q_SLOTS:
         const auto [n, end] = chunks(path);
         QVERIFY(n > 0);
         QCOMPARE(end, record::CaptureReader::Result::End); // the partial chunk was cut off
+    }
+
+    // v1.7.1 4.6.7.10: a module set to CONFIG IMU COORD 4 reports its attitude in NWU. The
+    // probe says so, live JSON and text say so, and the recording's exports name their
+    // attitude columns for it (the static simulator's ENU yaw 35 is NWU -55).
+    void nwuModuleLabelledAsNwu()
+    {
+        QProcess sim;
+        sim.start(QString::fromUtf8(IMUDESK_CLI_PATH), {"simulate", "--pty", "--baud", "115200"});
+        QVERIFY(sim.waitForStarted());
+        QTRY_VERIFY_WITH_TIMEOUT(sim.canReadLine(), 10000);
+        const QString pty = QString::fromUtf8(sim.readLine()).trimmed().mid(5);
+        auto r = run({"probe", pty, "--json"});
+        QCOMPARE(r.json().value("world_frame").toString(), QStringLiteral("ENU"));
+        r = run({"config", pty, "--baud", "115200", "set", "IMU.COORD=4", "--save", "--reboot"});
+        QVERIFY2(r.code == 0, qPrintable(r.out + r.err));
+        r = run({"probe", pty, "--json"});
+        QCOMPARE(r.json().value("world_frame").toString(), QStringLiteral("NWU"));
+        r = run({"read", pty, "--baud", "115200", "--duration", "0.3", "--json"});
+        QVERIFY2(r.code == 0, qPrintable(r.err));
+        const QJsonObject o = QJsonDocument::fromJson(r.out.split(QLatin1Char('\n'), Qt::SkipEmptyParts).first().toUtf8()).object();
+        QCOMPARE(o.value("world_frame").toString(), QStringLiteral("NWU"));
+        QVERIFY2(std::abs(o.value("yaw").toDouble() + 55.0) < 0.5, qPrintable(r.out.left(400)));
+        r = run({"read", pty, "--baud", "115200", "--duration", "0.2"});
+        QVERIFY2(r.out.contains(QStringLiteral("rpy(NWU)=")), qPrintable(r.out.left(400)));
+        const QString capture = m_dir.filePath(QStringLiteral("nwu.imucap"));
+        r = run({"record", pty, "-o", capture, "--duration", "1", "--baud", "115200"});
+        QVERIFY2(r.code == 0, qPrintable(r.err));
+        ::kill(pid_t(sim.processId()), SIGTERM);
+        QVERIFY(sim.waitForFinished(5000));
+        const QString csv = m_dir.filePath(QStringLiteral("nwu.csv")), jsonl = m_dir.filePath(QStringLiteral("nwu.jsonl"));
+        QVERIFY(run({"export", capture, "--format", "csv", "-o", csv}).code == 0);
+        QFile c(csv);
+        QVERIFY(c.open(QIODevice::ReadOnly));
+        QVERIFY2(c.readLine().contains("mag_z_uT,roll_nwu_deg,pitch_nwu_deg,yaw_nwu_deg,quat_nwu_w"), "csv header");
+        QVERIFY(run({"export", capture, "--format", "jsonl", "-o", jsonl}).code == 0);
+        QFile j(jsonl);
+        QVERIFY(j.open(QIODevice::ReadOnly));
+        QVERIFY(j.readLine().contains("\"world_frame\":\"NWU\""));
+        r = run({"export", capture, "--format", "vendor-csv", "-o", m_dir.filePath(QStringLiteral("nwuv.csv"))});
+        QVERIFY2(r.code == 0 && (r.out + r.err).contains(QStringLiteral("North-West-Up")), qPrintable(r.out + r.err));
     }
 };
 

@@ -141,6 +141,7 @@ private Q_SLOTS:
     void pitch90PointsYUp();
     void readouts();
     void nedReadouts();
+    void nwuModule();
     void noDataState();
     void repaintsOnlyOnChange();
     void ignoresInvalidQuaternions();
@@ -311,6 +312,39 @@ void TestAttitudeWidget::nedReadouts()
     m_widget->setDisplayFrame(AttitudeWidget::DisplayFrame::Enu);
     QCOMPARE(spy.count(), 2);
     QCOMPARE(readout(m_widget->readoutText(), QStringLiteral("Yaw")), 50.0);
+}
+
+// A module set to CONFIG IMU COORD 4 sends body -> NWU: the scene shows the same physical
+// attitude as the ENU module (the box does not move), the read-out is NWU 3-1-2 (yaw 90 deg
+// less) and the heading is unchanged.
+void TestAttitudeWidget::nwuModule()
+{
+    const Quat enuQ = imudesk::model::quatFromEnu312(Euler{10, -5, 35});
+    const QImage enuImage = render(&enuQ);
+    const QString enuText = m_widget->readoutText();
+    const Quat nwuQ = imudesk::model::enuToNwu(enuQ);
+    m_widget->setWorldFrame(imudesk::model::WorldFrame::Nwu);
+    const QImage nwuImage = render(&nwuQ);
+    const QString nwuText = m_widget->readoutText();
+    QVERIFY2(nwuText.startsWith(QStringLiteral("NWU 3-1-2\n")), qPrintable(nwuText));
+    QCOMPARE(readout(nwuText, QStringLiteral("Yaw")), -55.0);
+    QCOMPARE(readout(nwuText, QStringLiteral("Roll")), readout(enuText, QStringLiteral("Roll")));
+    QCOMPARE(readout(nwuText, QStringLiteral("Heading")), readout(enuText, QStringLiteral("Heading")));
+    QVERIFY(imudesk::model::angleBetweenDeg(m_widget->quaternion(), enuQ) < 1e-6);
+    // The module is drawn where it was; only the triad's labels changed.
+    // (within 2 px: the round trip through NWU changes the last bits, and with them the
+    // antialiasing of the axis where the north label covers it; a 90 deg turn moves it ~100 px)
+    QVERIFY(dist(find(enuImage, isX).centroid, find(nwuImage, isX).centroid) < 2.0);
+    QVERIFY(dist(find(enuImage, isMark).centroid, find(nwuImage, isMark).centroid) < 2.0);
+    QVERIFY(differingPixels(enuImage, nwuImage) > 50);
+    // Taken as ENU, the same numbers would turn the module 90 deg.
+    m_widget->setWorldFrame(imudesk::model::WorldFrame::Enu);
+    QVERIFY(imudesk::model::angleBetweenDeg(m_widget->quaternion(), enuQ) > 80);
+    QVERIFY(m_widget->readoutText().startsWith(QStringLiteral("ENU 3-1-2\n")));
+    // NED stays the same physical attitude whichever frame the module sends.
+    m_widget->setWorldFrame(imudesk::model::WorldFrame::Nwu);
+    m_widget->setDisplayFrame(AttitudeWidget::DisplayFrame::Ned);
+    QCOMPARE(readout(m_widget->readoutText(), QStringLiteral("Yaw")), -35.0);
 }
 
 void TestAttitudeWidget::noDataState()

@@ -3,6 +3,7 @@
 // Euler conventions, the ENU <-> NED conversion and the heading.
 #include "model/attitude.h"
 #include "sim/motion_model.h"
+#include "sim/simulator_detail.h"
 #include "../common/test_main.h"
 
 #include <QTest>
@@ -81,6 +82,7 @@ private Q_SLOTS:
     void gimbalLockStillSameRotation();
     void enuNedRoundTrip();
     void enuNedSamePhysicalAttitude();
+    void nwuAgreesWithSimulator();
     void enuNedEulerRelation();
     void yaw30Heading();
     void heading_data();
@@ -428,6 +430,24 @@ void TestAttitude::agreesWithSimulator()
         const Eigen::Quaterniond back = imudesk::sim::quatFromEnu312(imudesk::sim::EulerAngles{e.roll, e.pitch, e.yaw});
         QVERIFY(angleBetweenDeg(Quat{back.w(), back.x(), back.y(), back.z()}, quatFromEnu312(e)) < 1e-9);
     }
+}
+
+// v1.7.1 4.6.7.10 COORD 4: the simulator rotates its ENU attitude into NWU (N = ENU y,
+// W = -ENU x); nwuToEnu undoes exactly that, enuToNwu is its inverse, and the module's
+// forward axis (body y) at NWU identity points west: heading 270.
+void TestAttitude::nwuAgreesWithSimulator()
+{
+    std::mt19937_64 rng(7);
+    for (int i = 0; i < 300; ++i) {
+        const Quat q = randomQuat(rng);
+        const Eigen::Quaterniond simNwu = imudesk::sim::detail::enuToNwu() * eig(q);
+        const Quat fromSim{simNwu.w(), simNwu.x(), simNwu.y(), simNwu.z()};
+        QVERIFY2(angleBetweenDeg(nwuToEnu(fromSim), q) < 1e-9, describe(q));
+        QVERIFY2(angleBetweenDeg(enuToNwu(q), fromSim) < 1e-9, describe(q));
+    }
+    QVERIFY(near(headingDeg(nwuToEnu(Quat{})), 270, 1e-9));
+    // ENU yaw 35 is NWU yaw -55 (the same 3-1-2 formulas in the other frame).
+    QVERIFY(near(eulerEnu312(enuToNwu(quatFromEnu312(Euler{0, 0, 35}))).yaw, -55, 1e-9));
 }
 
 IMUDESK_TEST_APPLESS_MAIN(TestAttitude)

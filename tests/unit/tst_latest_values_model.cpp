@@ -175,6 +175,21 @@ private Q_SLOTS:
         QVERIFY(m.index(LatestValuesModel::MagRelative, 0).data(Qt::ToolTipRole).toString().contains(QStringLiteral("north is 1")));
     }
 
+    // A module set to NWU: the attitude rows say so, the others do not change.
+    void nwuAttitudeRows()
+    {
+        LatestValuesModel m;
+        const auto name = [&](LatestValuesModel::Row row) { return m.index(row, 0).data().toString(); };
+        QCOMPARE(name(LatestValuesModel::Yaw), QStringLiteral("Yaw"));
+        m.setWorldFrame(imudesk::model::WorldFrame::Nwu);
+        QCOMPARE(name(LatestValuesModel::Yaw), QStringLiteral("Yaw (NWU)"));
+        QCOMPARE(name(LatestValuesModel::QuatW), QStringLiteral("Quaternion W (NWU)"));
+        QCOMPARE(name(LatestValuesModel::AccX), QStringLiteral("Acceleration X"));
+        QVERIFY(m.index(LatestValuesModel::Yaw, 0).data(Qt::ToolTipRole).toString().contains(QStringLiteral("West")));
+        m.setWorldFrame(imudesk::model::WorldFrame::Enu);
+        QCOMPARE(name(LatestValuesModel::Roll), QStringLiteral("Roll"));
+    }
+
     void deviceTimeAsUtcOncePpsAligned()
     {
         using namespace imudesk::model;

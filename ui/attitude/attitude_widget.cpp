@@ -48,11 +48,15 @@ Vector3d groundPoint(double x, double y)
     return Vector3d(x, y, kGroundZ);
 }
 
-// The navigation axes of the display frame (ENU or NED), drawn from the grid's south-west corner.
-std::array<Vector3d, 3> navigationTriad(bool enu)
+// The navigation axes of the display frame (ENU, NWU or NED) in the ENU scene, drawn from the
+// grid's south-west corner.
+std::array<Vector3d, 3> navigationTriad(AttitudeWidget::DisplayFrame frame, model::WorldFrame world)
 {
-    return enu ? std::array<Vector3d, 3>{Vector3d::UnitX(), Vector3d::UnitY(), Vector3d::UnitZ()}
-               : std::array<Vector3d, 3>{Vector3d::UnitY(), Vector3d::UnitX(), -Vector3d::UnitZ()};
+    if (frame == AttitudeWidget::DisplayFrame::Ned)
+        return {Vector3d::UnitY(), Vector3d::UnitX(), -Vector3d::UnitZ()};
+    if (world == model::WorldFrame::Nwu)
+        return {Vector3d::UnitY(), -Vector3d::UnitX(), Vector3d::UnitZ()};
+    return {Vector3d::UnitX(), Vector3d::UnitY(), Vector3d::UnitZ()};
 }
 
 // Box: vertex i has x sign bit 0, y sign bit 1, z sign bit 2 (set = +).
@@ -183,7 +187,7 @@ void AttitudeWidget::setQuaternion(const model::Quat &q)
     if (m_hasData && q == m_input)
         return;
     m_input = q;
-    m_quat = model::normalized(q);
+    m_quat = m_world == model::WorldFrame::Nwu ? model::nwuToEnu(q) : model::normalized(q);
     m_hasData = true;
     updateReadouts();
     update();
@@ -197,6 +201,17 @@ void AttitudeWidget::clear()
     m_input = model::Quat{};
     m_quat = model::Quat{};
     updateReadouts();
+    update();
+}
+
+void AttitudeWidget::setWorldFrame(model::WorldFrame frame)
+{
+    if (frame == m_world)
+        return;
+    m_world = frame;
+    if (m_hasData)
+        m_quat = m_world == model::WorldFrame::Nwu ? model::nwuToEnu(m_input) : model::normalized(m_input);
+    retranslate();
     update();
 }
 
@@ -281,7 +296,12 @@ void AttitudeWidget::retranslate()
     m_axisLabels[1].setText(tr("Y"));
     m_axisLabels[2].setText(tr("Z"));
     m_northLabel.setText(tr("N"));
-    if (m_frame == DisplayFrame::Enu) {
+    if (m_frame == DisplayFrame::Enu && m_world == model::WorldFrame::Nwu) {
+        m_worldLabels[0].setText(tr("N (x)"));
+        m_worldLabels[1].setText(tr("W (y)"));
+        m_worldLabels[2].setText(tr("U (z)"));
+        m_frameTitle = tr("NWU 3-1-2");
+    } else if (m_frame == DisplayFrame::Enu) {
         m_worldLabels[0].setText(tr("E (x)"));
         m_worldLabels[1].setText(tr("N (y)"));
         m_worldLabels[2].setText(tr("U (z)"));
@@ -336,8 +356,9 @@ void AttitudeWidget::updateReadouts()
         m_readoutValues.fill(QString());
         return;
     }
-    const model::Euler e =
-        m_frame == DisplayFrame::Enu ? model::eulerEnu312(m_quat) : model::eulerNed321(model::enuToNed(m_quat));
+    const model::Euler e = m_frame == DisplayFrame::Ned ? model::eulerNed321(model::enuToNed(m_quat))
+        : m_world == model::WorldFrame::Nwu      ? model::eulerEnu312(model::enuToNwu(m_quat)) // 3-1-2 in NWU
+                                                 : model::eulerEnu312(m_quat);
     double heading = model::headingDeg(m_quat);
     if (heading >= 359.95)
         heading = 0; // would print as 360.0
@@ -384,7 +405,7 @@ void AttitudeWidget::paintGround(QPainter &p, const View &v, bool labels) const
         const QColor ink = palette().color(QPalette::Text);
         const double g = kGridHalf;
         const Vector3d triadOrigin = groundPoint(-g, -g);
-        const std::array<Vector3d, 3> triad = navigationTriad(m_frame == DisplayFrame::Enu);
+        const std::array<Vector3d, 3> triad = navigationTriad(m_frame, m_world);
         QColor plate = palette().color(QPalette::Base);
         plate.setAlphaF(0.6);
         drawLabel(p, v.project(groundPoint(0, g + 0.55)), m_northLabel, ink, plate);
@@ -406,7 +427,7 @@ void AttitudeWidget::paintGroundLines(QPainter &p, const View &v) const
     const QColor ink = palette().color(QPalette::Text);
     const double g = kGridHalf;
     const Vector3d triadOrigin = groundPoint(-g, -g);
-    const std::array<Vector3d, 3> triad = navigationTriad(m_frame == DisplayFrame::Enu);
+    const std::array<Vector3d, 3> triad = navigationTriad(m_frame, m_world);
 
     // Grid: opaque and cosmetic: drawn pixel by pixel, not blended as a path.
     p.setPen(QPen(mixColours(palette().color(QPalette::Base), ink, 0.18), 0));
@@ -467,7 +488,7 @@ void AttitudeWidget::paintShadow(QPainter &p, const View &v) const
 void AttitudeWidget::paintCachedGround(QPainter &p, const View &v) const
 {
     const QPalette pal = palette();
-    const GroundKey key{size(), devicePixelRatioF(), m_azimuth, m_elevation, m_frame, m_hasData,
+    const GroundKey key{size(), devicePixelRatioF(), m_azimuth, m_elevation, m_frame, m_world, m_hasData,
                         pal.color(QPalette::Base).rgb(), pal.color(QPalette::Text).rgb()};
     if (m_ground.isNull() || !(key == m_groundKey)) {
         m_ground = QPixmap(size() * key.dpr);
@@ -666,7 +687,7 @@ void AttitudeWidget::contextMenuEvent(QContextMenuEvent *event)
 {
     QMenu menu(this);
     auto *group = new QActionGroup(&menu);
-    QAction *enu = menu.addAction(tr("ENU 3-1-2"));
+    QAction *enu = menu.addAction(m_world == model::WorldFrame::Nwu ? tr("NWU 3-1-2") : tr("ENU 3-1-2"));
     QAction *ned = menu.addAction(tr("NED 3-2-1"));
     for (QAction *a : {enu, ned}) {
         a->setCheckable(true);

@@ -18,6 +18,12 @@
 // roll and pitch agree, yaw_ned = -yaw_enu). The drawn body arrows stay the module's
 // printed X/Y/Z. Heading (0..360, clockwise from north) is the same in both.
 //
+// World frame: a module set to CONFIG IMU COORD 4 sends body -> NWU (North-West-Up). Given
+// setWorldFrame(Nwu), the widget turns its quaternion into ENU for the scene (so north is
+// where the grid's arrow points), and its own frame replaces ENU in the read-outs and the
+// menu: "NWU 3-1-2", the NWU Euler angles (yaw 0 with the module's Y axis west) and a triad
+// N (x), W (y), U (z). NED stays available and means the same physical attitude.
+//
 // Camera: looks at (0, 0, -1.1), just below the module's centre, from the south-east and
 // above: bearing kDefaultAzimuthDeg (compass bearing of the camera seen from the module,
 // clockwise from north) and kDefaultElevationDeg above the horizon, kCameraDistance scene
@@ -37,6 +43,7 @@
 // CompassPoseView draws the targets of core/calib's CompassPoseTracker. No item models: each
 // view is given the latest values on its owner's clock (the device workspace or the HEC495
 // calibration wizard).
+#include "model/device_identity.h"
 #include "model/sample.h"
 
 #include <QStaticText>
@@ -64,12 +71,15 @@ public:
     explicit AttitudeWidget(QWidget *parent = nullptr);
     ~AttitudeWidget() override;
 
-    // Body -> ENU quaternion (w, x, y, z), as the devices send it. Stored normalised; a
-    // repaint is scheduled only when the value differs from the last one. Non-finite or
-    // zero quaternions are ignored.
+    // Body -> world quaternion (w, x, y, z), as the devices send it (ENU, or NWU after
+    // setWorldFrame(Nwu)). Stored normalised; a repaint is scheduled only when the value
+    // differs from the last one. Non-finite or zero quaternions are ignored.
     void setQuaternion(const model::Quat &q);
-    // The last accepted quaternion, normalised (identity before the first one).
+    // The last accepted quaternion as body -> ENU, normalised (identity before the first one).
     model::Quat quaternion() const { return m_quat; }
+    // The module's world frame (identity.worldFrame); the last quaternion is taken again in it.
+    void setWorldFrame(model::WorldFrame frame);
+    model::WorldFrame worldFrame() const { return m_world; }
     bool hasData() const { return m_hasData; }
     // Back to the "no data" state.
     void clear();
@@ -134,6 +144,7 @@ private:
     model::Quat m_quat{};   // normalised
     bool m_hasData = false;
     DisplayFrame m_frame = DisplayFrame::Enu;
+    model::WorldFrame m_world = model::WorldFrame::Enu;
     double m_azimuth = kDefaultAzimuthDeg;
     double m_elevation = kDefaultElevationDeg;
 
@@ -145,6 +156,7 @@ private:
         qreal dpr = 0;
         double azimuth = 0, elevation = 0;
         DisplayFrame frame = DisplayFrame::Enu;
+        model::WorldFrame world = model::WorldFrame::Enu;
         bool hasData = false;
         QRgb base = 0, ink = 0;
         bool operator==(const GroundKey &) const = default;

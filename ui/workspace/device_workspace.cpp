@@ -498,6 +498,9 @@ void DeviceWorkspace::onIdentityChanged(const model::DeviceIdentity &identity)
 {
     m_identity = identity;
     m_shownTotal = ~quint64(0); // the identity decides whether MAIN_STATUS is shown
+    // A module set to NWU (CONFIG IMU COORD 4): drawn and labelled in that frame.
+    m_attitude->setWorldFrame(identity.worldFrame);
+    m_valuesModel->setWorldFrame(identity.worldFrame);
     updateIdentityLabel();
     Q_EMIT titleChanged(title());
 }
