@@ -91,6 +91,23 @@ void note(const QString &line)
     std::fflush(stderr);
 }
 
+// 0x09: the module fits and saves what it collected; prints the fit error and points.
+int saveCalibration(Hec495Session &s, const QString &methodName, int points, bool json)
+{
+    const auto saved = await(s, s.saveCalibration());
+    if (!saved || !saved->ok())
+        return fail(QStringLiteral("calibration not saved after %1 points: %2")
+                        .arg(points)
+                        .arg(saved ? saved->message : QStringLiteral("interrupted")));
+    QJsonObject o;
+    o[QStringLiteral("method")] = methodName;
+    o[QStringLiteral("fit_error")] = double(saved->reply.fitError);
+    o[QStringLiteral("points")] = saved->reply.points;
+    if (saved->reply.fitError > 10.0f && !json)
+        out(QStringLiteral("the fit error is above 10: calibrate again (the manual's advice)"));
+    return report(saved, json, QStringLiteral("calibrate"), o);
+}
+
 // Lines from standard input (a terminal or a pipe) as they arrive, read inside the event loop
 // so the session keeps running while the operator takes their time.
 class OperatorInput {
@@ -209,18 +226,7 @@ int calibrateManual(Hec495Session &s, double autoIntervalS, bool saveWithoutAski
     if (!saveWithoutAsking
         && !input.confirm(QStringLiteral("%1 points collected. Save this calibration to the compass?").arg(points)))
         return stop(QStringLiteral("not confirmed (answer y, or give --save)"), ExitFailure);
-    const auto saved = await(s, s.saveCalibration());
-    if (!saved || !saved->ok())
-        return fail(QStringLiteral("calibration not saved after %1 points: %2")
-                        .arg(points)
-                        .arg(saved ? saved->message : QStringLiteral("interrupted")));
-    QJsonObject o;
-    o[QStringLiteral("method")] = QStringLiteral("manual");
-    o[QStringLiteral("fit_error")] = double(saved->reply.fitError);
-    o[QStringLiteral("points")] = saved->reply.points;
-    if (saved->reply.fitError > 10.0f && !json)
-        out(QStringLiteral("the fit error is above 10: calibrate again (the manual's advice)"));
-    return report(saved, json, QStringLiteral("calibrate"), o);
+    return saveCalibration(s, QStringLiteral("manual"), points, json);
 }
 
 int calibrate(Hec495Session &s, const QString &methodName, int timeoutS, bool json)
@@ -250,18 +256,7 @@ int calibrate(Hec495Session &s, const QString &methodName, int timeoutS, bool js
         await(s, s.stopCalibration());
         return fail(QStringLiteral("interrupted; calibration stopped"), ExitInterrupted);
     }
-    const auto saved = await(s, s.saveCalibration());
-    if (!saved || !saved->ok())
-        return fail(QStringLiteral("calibration not saved after %1 points: %2")
-                        .arg(points)
-                        .arg(saved ? saved->message : QStringLiteral("interrupted")));
-    QJsonObject o;
-    o[QStringLiteral("method")] = methodName;
-    o[QStringLiteral("fit_error")] = double(saved->reply.fitError);
-    o[QStringLiteral("points")] = saved->reply.points;
-    if (saved->reply.fitError > 10.0f && !json)
-        out(QStringLiteral("the fit error is above 10: calibrate again (the manual's advice)"));
-    return report(saved, json, QStringLiteral("calibrate"), o);
+    return saveCalibration(s, methodName, points, json);
 }
 
 } // namespace

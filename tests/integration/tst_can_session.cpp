@@ -86,6 +86,15 @@ class TstCanSession : public QObject {
         rig.session->open(so);
         return imudesk::test::waitFor([&rig] { return rig.session->state() == device::SessionState::Connected; }, 5000);
     }
+    // An HEC495 on standard frames (node 5), its PDOs arriving.
+    bool makeHec495Rig(Rig &rig)
+    {
+        sim::CanSimOptions o;
+        o.protocol = CanProtocol::CanOpen;
+        o.hec495 = true;
+        return makeRig(rig, o, CanProtocol::Hec495)
+            && imudesk::test::waitFor([&rig] { return rig.frames.countRx(0x185) > 2; }, 5000);
+    }
     // Host-side time of the last event, as a "from here on" mark.
     static qint64 mark(const Rig &rig) { return rig.frames.events.isEmpty() ? 0 : rig.frames.events.last().hostTimeNs; }
     // Runs the event loop until pred holds (at most timeoutMs). Unlike QTRY_* and test::waitFor, which
@@ -397,11 +406,7 @@ private Q_SLOTS:
     void hec495ModesAndEveryNode()
     {
         Rig rig;
-        sim::CanSimOptions o;
-        o.protocol = CanProtocol::CanOpen;
-        o.hec495 = true;
-        QVERIFY(makeRig(rig, o, CanProtocol::Hec495));
-        QTRY_VERIFY_WITH_TIMEOUT(rig.frames.countRx(0x185) > 2, 5000);
+        QVERIFY(makeHec495Rig(rig));
         auto r = test::waitCanResult(*rig.session, rig.session->setHec495PdoMode(hec495::ModeFloatShort));
         QVERIFY2(r.ok, qPrintable(r.message));
         QCOMPARE(rig.sim->device().hec().pdoMode, uint32_t(hec495::ModeFloatShort));
@@ -513,11 +518,7 @@ private Q_SLOTS:
     void hec495PdoStartStopConfirmed()
     {
         Rig rig;
-        sim::CanSimOptions o;
-        o.protocol = CanProtocol::CanOpen;
-        o.hec495 = true;
-        QVERIFY(makeRig(rig, o, CanProtocol::Hec495));
-        QTRY_VERIFY_WITH_TIMEOUT(rig.frames.countRx(0x185) > 2, 5000);
+        QVERIFY(makeHec495Rig(rig));
         auto r = test::waitCanResult(*rig.session, rig.session->setOutputEnabled(false), 5000);
         QVERIFY2(r.ok, qPrintable(r.message));
         QVERIFY(!rig.sim->device().hec().pdoStarted);
