@@ -10,6 +10,7 @@
 #include <QCanBus>
 #include <QCommandLineParser>
 #include <QLoggingCategory>
+#include <QMap>
 
 #include <algorithm>
 #include <cstdio>
@@ -36,6 +37,8 @@ const char *kUsage = "imudesk-cli can [--plugin P] [--interface I] [--bitrate B]
                      "  set NAME VALUE                       write a setting and read it back (bit rates in bit/s, e.g. 250000 or 250k)\n"
                      "  config                               every setting: name, value on the module, unit, range, note\n"
                      "  output on|off [--all]                the node's output (--all: NMT to every node)\n"
+                     "  action save|reset|factory|heading-reset|zero|auto-level|clear-zero\n"
+                     "                                       J1939 0x00 / 0xA5, CANopen 0x2000 / 0x20A5\n"
                      "  --extended                           HEC495: the extended-frame variant (0x18FA....)";
 
 // Qt's CAN plugins log their connection chatter at info level; the CLI's stderr is for errors.
@@ -369,8 +372,9 @@ int cmdCan(const QStringList &args)
     // Requests need a known protocol: without --protocol, listen until traffic shows it.
     const bool typed = sub == QLatin1String("get") || sub == QLatin1String("set") || sub == QLatin1String("config");
     const bool needsProtocol = sub == QLatin1String("reg") || sub == QLatin1String("sdo") || sub == QLatin1String("sync")
-                            || typed || sub == QLatin1String("output");
-    if (needsProtocol && o.protocol == CanProtocol::Auto && (typed || sub == QLatin1String("output")))
+                            || typed || sub == QLatin1String("output") || sub == QLatin1String("action");
+    if (needsProtocol && o.protocol == CanProtocol::Auto
+        && (typed || sub == QLatin1String("output") || sub == QLatin1String("action")))
         return fail(QStringLiteral("'%1' needs --protocol j1939, canopen or hec495").arg(sub), ExitUsage);
     if (sub == QLatin1String("reg") && o.protocol == CanProtocol::Auto)
         o.protocol = CanProtocol::J1939;
@@ -504,6 +508,29 @@ int cmdCan(const QStringList &args)
         const bool all = p.isSet(QStringLiteral("all"));
         return runRequest(session, all ? session.setAllNodesOutput(on) : session.setOutputEnabled(on), json,
                           QStringLiteral("output %1%2").arg(pos[1], all ? QStringLiteral(", every node") : QString()));
+    }
+    if (sub == QLatin1String("action")) {
+        // The module's commands by name: J1939 0x0000 / 0x00A5 (v1.7.1 7.23), CANopen 0x2000 /
+        // 0x20A5 (8.28.44, 8.28.45.25); each confirmed by the module's reply, the session
+        // refusing what the protocol does not have (heading reset and auto level on CANopen).
+        static const QMap<QString, int> kResets = {{QStringLiteral("heading-reset"), 1}, {QStringLiteral("zero"), 2},
+                                                   {QStringLiteral("auto-level"), 3}, {QStringLiteral("clear-zero"), 5}};
+        const QString name = pos.value(1);
+        if (pos.size() != 2)
+            return fail(QStringLiteral("usage: can action save|reset|factory|heading-reset|zero|auto-level|clear-zero"),
+                        ExitUsage);
+        if (name == QLatin1String("save"))
+            return runRequest(session, session.save(), json, QStringLiteral("save"));
+        if (name == QLatin1String("reset"))
+            return runRequest(session, session.reset(), json, QStringLiteral("reset"));
+        if (name == QLatin1String("factory"))
+            return runRequest(session, session.factoryReset(), json, QStringLiteral("factory defaults"));
+        if (kResets.contains(name))
+            return runRequest(session, session.attitudeReset(kResets.value(name)), json, name);
+        return fail(QStringLiteral("unknown action '%1': save, reset, factory, heading-reset, zero, auto-level or "
+                                   "clear-zero")
+                        .arg(name),
+                    ExitUsage);
     }
     return fail(QStringLiteral("unknown can subcommand '%1' (usage: %2)").arg(sub, QString::fromLatin1(kUsage)), ExitUsage);
 }

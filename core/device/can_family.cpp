@@ -196,8 +196,8 @@ void CanFamily::handleFrame(const CanFrame &f, qint64 now, std::vector<model::Sa
             noteNode(CanProtocol::CanOpen, d.node, tr("SDO scan"));
         }
     }
-    if (isDataFrame(d) && d.node >= 0)
-        m_dataNodes.insert(d.node);
+    if (isDataFrame(d) && (d.node >= 0 || m_options.hec495Extended))
+        m_dataNodes.insert(dataSource(d));
     if (matchStep(f, d))
         return;
     if (!d.sample)
@@ -401,15 +401,22 @@ bool CanFamily::matchStep(const CanFrame &f, const DecodedFrame &d)
             answer(true, uint32_t(s.node), QString());
         return false; // the frame still counts as data
     case CanJobStep::Expect::PdoFrom:
-        if (isDataFrame(d) && d.node == m_target)
+        if (isDataFrame(d) && dataSource(d) == m_target)
             answer(true, 1, QString());
         return false;
     case CanJobStep::Expect::NoPdoFrom:
-        if (isDataFrame(d) && d.node == m_target)
+        if (isDataFrame(d) && dataSource(d) == m_target)
             answer(false, 1, tr("node %1 still sends data after \"%2\": check the node ID").arg(m_target).arg(s.what));
         return false;
     }
     return false;
+}
+
+int CanFamily::dataSource(const DecodedFrame &d) const
+{
+    // The HEC495's extended variant names no node in its data frames: on that bus they are the
+    // target's (the session talks to one such module).
+    return m_options.hec495Extended && d.kind == FrameKind::Hec495Data ? m_target : d.node;
 }
 
 void CanFamily::stepEnded(const RequestResult &r)
@@ -431,6 +438,14 @@ void CanFamily::stepEnded(const RequestResult &r)
         m_merged = model::Sample{};
         Q_EMIT targetNodeChanged(m_target);
     }
+    // An HEC495 PDO mode the module took (0x1080 on standard frames): the decoder reads its
+    // PDOs in that format from now on instead of guessing float or fixed point per frame.
+    if (s.expect == CanJobStep::Expect::Hec495Reply)
+        if (const auto w = hec495::parseWrite(s.tx); w && !w->extended && w->index == hec495::ObjPdoMode)
+        {
+            m_options.hec495Mode = int(w->value); // kept for a reopen: the module saves it at once
+            m_decoder.setHec495Mode(m_options.hec495Mode);
+        }
     if (++m_step >= m_job->steps.size()) {
         finishJob(true, tr("%1: done").arg(m_job->title));
         return;

@@ -101,6 +101,8 @@ private:
     qint64 m_scanTailUntil = 0;
     QList<int> m_scanFound;
     QSet<QString> m_seenNodes;
+    // The node a data frame counts for (its own; the target's for the HEC495 extended variant).
+    int dataSource(const protocol::can::DecodedFrame &d) const;
     QSet<int> m_dataNodes; // nodes heard sending data frames (output off can be confirmed)
 
     uint64_t m_frames = 0, m_bytesIn = 0, m_errorFrames = 0;

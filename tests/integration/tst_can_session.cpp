@@ -14,6 +14,8 @@
 #include "../common/test_main.h"
 
 #include <QCanBus>
+#include <QCanBusDevice>
+#include <QCanBusFrame>
 #include <QEventLoop>
 #include <QTimer>
 #include <QSignalSpy>
@@ -536,6 +538,27 @@ private Q_SLOTS:
         QVERIFY(wroteStop);
     }
 
+    // A float PDO of pitch 2.0 and roll 0.0 looks like fixed point (bytes 2, 5, 6, 7 small):
+    // once the session set the PDO mode (0x1080 = 0, float), the decoder reads it as float.
+    void hec495PdoModeReachesTheDecoder()
+    {
+        Rig rig;
+        QVERIFY(makeHec495Rig(rig));
+        QVERIFY(test::waitCanResult(*rig.session, rig.session->setOutputEnabled(false), 5000).ok);
+        std::unique_ptr<QCanBusDevice> other(QCanBus::instance()->createDevice(kPlugin, kIface));
+        QVERIFY(other && other->connectDevice());
+        QTRY_COMPARE(other->state(), QCanBusDevice::ConnectedState);
+        const auto sendPdo = [&] {
+            const quint64 before = rig.session->store().totalAppended();
+            QVERIFY(other->writeFrame(QCanBusFrame(0x185, QByteArray::fromHex("0000004000000000"))));
+            QTRY_VERIFY(rig.session->store().totalAppended() > before);
+        };
+        QVERIFY(test::waitCanResult(*rig.session, rig.session->setHec495PdoMode(hec495::ModeFloat)).ok);
+        sendPdo();
+        QCOMPARE(rig.session->store().latest()->pitch, 2.0);
+        QCOMPARE(rig.session->store().latest()->roll, 0.0);
+    }
+
     void hec495Extended()
     {
         Rig rig;
@@ -553,6 +576,14 @@ private Q_SLOTS:
         QVERIFY(!test::waitCanResult(*rig.session, rig.session->setHec495PdoMode(3)).ok);
         QVERIFY(!test::waitCanResult(*rig.session, rig.session->setHec495WorkMode(0x0A)).ok);
         QVERIFY(!test::waitCanResult(*rig.session, rig.session->setAllNodesOutput(false)).ok);
+        // Its own start/stop (0x18FA0227 22 83 10 00 CMD): confirmed by message one stopping and starting.
+        auto off = test::waitCanResult(*rig.session, rig.session->setOutputEnabled(false), 5000);
+        QVERIFY2(off.ok, qPrintable(off.message));
+        const qint64 from = mark(rig);
+        QCOMPARE(rig.frames.countRx(hec495::kExtDataXId, from + 1), 0);
+        auto on = test::waitCanResult(*rig.session, rig.session->setOutputEnabled(true), 5000);
+        QVERIFY2(on.ok, qPrintable(on.message));
+        QVERIFY(rig.frames.countRx(hec495::kExtDataXId, from + 1) > 0);
     }
 };
 

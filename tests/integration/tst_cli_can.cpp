@@ -205,6 +205,33 @@ private Q_SLOTS:
         QCOMPARE(cli({QStringLiteral("simulate"), QStringLiteral("--pty"), QStringLiteral("--fd")}).code, 2);
     }
 
+    // The module's commands by name (J1939 0x0000 / 0xA5; CANopen has no heading reset): a
+    // saved interval survives "action reset", an unsaved one does not.
+    void actionsByName()
+    {
+        QVERIFY(startSim({QStringLiteral("--protocol"), QStringLiteral("j1939")}, 35489));
+        const QStringList j = {QStringLiteral("--protocol"), QStringLiteral("j1939")};
+        const auto ok = [&](const QStringList &args) {
+            const Run r = cli(can(j + args));
+            return r.code == 0 ? QString() : r.out + r.err + QString::number(r.code);
+        };
+        QCOMPARE(ok({QStringLiteral("action"), QStringLiteral("heading-reset")}), QString());
+        QCOMPARE(ok({QStringLiteral("set"), QStringLiteral("interval-ff34"), QStringLiteral("50")}), QString());
+        QCOMPARE(ok({QStringLiteral("action"), QStringLiteral("save")}), QString());
+        QCOMPARE(ok({QStringLiteral("set"), QStringLiteral("interval-ff34"), QStringLiteral("200")}), QString());
+        QCOMPARE(ok({QStringLiteral("action"), QStringLiteral("reset")}), QString());
+        Run r = cli(can(j + QStringList{QStringLiteral("get"), QStringLiteral("interval-ff34")}));
+        QVERIFY2(r.code == 0 && r.out.trimmed() == QStringLiteral("interval-ff34: 50 ms"), qPrintable(r.out + r.err));
+        QCOMPARE(ok({QStringLiteral("action"), QStringLiteral("factory")}), QString());
+        r = cli(can(j + QStringList{QStringLiteral("get"), QStringLiteral("interval-ff34")}));
+        QVERIFY2(r.out.trimmed() == QStringLiteral("interval-ff34: 100 ms"), qPrintable(r.out + r.err));
+        QCOMPARE(cli(can(j + QStringList{QStringLiteral("action"), QStringLiteral("fly")})).code, 2);
+        r = cli(can({QStringLiteral("--protocol"), QStringLiteral("canopen"), QStringLiteral("action"),
+                     QStringLiteral("heading-reset")}));
+        QCOMPARE(r.code, 1); // 0x20A5 has set zero and clear only
+        QVERIFY2(r.err.contains(QStringLiteral("mode 2")), qPrintable(r.err));
+    }
+
     void hec495Session()
     {
         QVERIFY(startSim({QStringLiteral("--protocol"), QStringLiteral("canopen"), QStringLiteral("--device"), QStringLiteral("hec495")}, 35485));
