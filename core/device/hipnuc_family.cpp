@@ -74,6 +74,7 @@ int HipnucSerialFamily::firstBaud(int requestedBaud) const
 
 void HipnucSerialFamily::opened(int requestedBaud)
 {
+    m_clocks.clear();
     m_deviceSerial.clear();
     m_checkSameDevice = false;
     const QString port = engine().transport().address();
@@ -312,10 +313,13 @@ void HipnucSerialFamily::handleEvents(int64_t nowNs)
             if (!res.ok())
                 ++m_payloadErrors;
             for (size_t i = first; i < m_batch.size(); ++i) {
-                const model::Sample &sample = m_batch[i];
+                model::Sample &sample = m_batch[i];
                 m_frameBytes[sample.source] = e.payload.size() + hp::FrameDecoder::kHeaderSize;
-                if (sample.has(model::FieldDeviceTime))
-                    m_gaps.add(sample.source, sample.deviceTimeMs, model::MainStatus::timeBase(sample.has(model::FieldMainStatus), sample.mainStatus));
+                if (sample.has(model::FieldDeviceTime)) {
+                    const int timeBase = model::MainStatus::timeBase(sample.has(model::FieldMainStatus), sample.mainStatus);
+                    m_gaps.add(sample.source, sample.deviceTimeMs, timeBase);
+                    m_clocks.stamp(sample, timeBase);
+                }
             }
             break;
         }

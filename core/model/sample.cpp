@@ -86,6 +86,8 @@ void mergeFields(Sample &dst, const Sample &src)
     dst.fields |= f;
     dst.source = src.source;
     dst.hostTimeNs = src.hostTimeNs;
+    if (src.commonTimeNs != 0)
+        dst.commonTimeNs = src.commonTimeNs;
 }
 
 } // namespace imudesk::model

@@ -156,6 +156,35 @@ private Q_SLOTS:
         QCOMPARE(last.crcErrors, uint64_t(0));
     }
 
+    // Issue 36 point 1: each sample carries its common time, from the module's own clock through
+    // the clock model: HI91 frames 10 ms apart on the device clock are 10 ms apart there too,
+    // however the pty and the reading thread bunched their arrivals.
+    void samplesCarryTheirCommonTime()
+    {
+        test::SimSession sim(options());
+        DeviceSession &session = sim.session;
+        sim.open(115200);
+        QVERIFY(waitConnected(session));
+        const quint64 from = session.store().totalAppended();
+        QTRY_VERIFY_WITH_TIMEOUT(session.store().totalAppended() >= from + 300, 8000); // 3 s at 100 Hz
+        uint64_t seq = from + 100; // the model's first second is behind
+        std::vector<model::Sample> got = session.store().since(seq, SIZE_MAX, &seq);
+        QVERIFY(got.size() > 150);
+        double worstCommon = 0, worstArrival = 0;
+        for (size_t i = 1; i < got.size(); ++i) {
+            const model::Sample &a = got[i - 1], &b = got[i];
+            QVERIFY(a.commonTimeNs != 0 && b.commonTimeNs != 0);
+            const double device = (b.deviceTimeMs - a.deviceTimeMs) * 1e6;
+            worstCommon = std::max(worstCommon, std::abs(double(b.commonTimeNs - a.commonTimeNs) - device));
+            worstArrival = std::max(worstArrival, std::abs(double(b.hostTimeNs - a.hostTimeNs) - device));
+            // A sampling instant is never after the sample arrived.
+            QVERIFY2(b.commonTimeNs <= b.hostTimeNs + 1'000'000, qPrintable(QString::number(b.commonTimeNs - b.hostTimeNs)));
+        }
+        // The device's spacing to 0.5 ms (the line steps a little when a bin's minimum moves it);
+        // the arrivals keep the pty's and the thread's bunching (2 ms here).
+        QVERIFY2(worstCommon < 500'000, qPrintable(QStringLiteral("common %1 ns, arrival %2 ns").arg(worstCommon).arg(worstArrival)));
+    }
+
     void everyCommand_data()
     {
         QTest::addColumn<QString>("firmware");

@@ -1,0 +1,60 @@
+#include "sample_clocks.h"
+
+#include <cmath>
+
+namespace imudesk::clock {
+
+namespace {
+// The counter behind a frame type's device time: its unit and how many values it has.
+struct CounterSpec {
+    int64_t tickNs;
+    uint64_t modulus;
+};
+CounterSpec specOf(const std::string &source)
+{
+    if (source == "HI81")
+        return {1'000'000, 604'800'000}; // GPS time of week, ms
+    if (source == "HI83")
+        return {1'000, uint64_t(1) << 52}; // system_time_us: 64 bits, kept in a double's mantissa
+    return {1'000'000, uint64_t(1) << 32}; // system_time in ms, a u32 (HI91, HI92 and the others)
+}
+} // namespace
+
+void SampleClocks::stamp(model::Sample &s, int timeBase)
+{
+    if (!s.has(model::FieldDeviceTime) || s.hostTimeNs == 0 || !std::isfinite(s.deviceTimeMs) || s.deviceTimeMs < 0)
+        return;
+    auto it = m_streams.find(s.source);
+    if (it == m_streams.end()) {
+        const CounterSpec spec = specOf(s.source);
+        it = m_streams.emplace(s.source, Clock{CounterUnwrapper(spec.modulus, spec.tickNs), spec.tickNs, ClockModel(),
+                                               timeBase, 0})
+                 .first;
+    }
+    Clock &c = it->second;
+    if (timeBase != c.timeBase) { // another clock behind the same field: start again
+        c.timeBase = timeBase;
+        c.counter.clear();
+        c.model.reset();
+        ++c.restarts;
+    }
+    const auto raw = uint64_t(std::llround(s.deviceTimeMs * 1e6 / double(c.tickNs)));
+    const CounterUnwrapper::Result u = c.counter.feed(raw);
+    if (u.reset) {
+        c.model.reset();
+        ++c.restarts;
+    }
+    c.model.add(u.deviceNs, s.hostTimeNs);
+    if (const auto t = c.model.toHost(u.deviceNs))
+        s.commonTimeNs = *t;
+}
+
+std::vector<SampleClocks::Stream> SampleClocks::streams() const
+{
+    std::vector<Stream> out;
+    for (const auto &[source, c] : m_streams)
+        out.push_back(Stream{source, c.model.fit(), c.model.state(), c.restarts});
+    return out;
+}
+
+} // namespace imudesk::clock

@@ -1,0 +1,43 @@
+#pragma once
+// The clocks of one device's sample streams: each frame type with a device time (HI91's
+// system_time in ms, HI81's GPS time of week, HI83's µs counter, ...) gets its counter made
+// monotonic and its own ClockModel, and every such sample is stamped with its common time
+// (Sample::commonTimeNs). A time base that changes (the module's clock aligned to UTC by a PPS
+// input) or a counter reset starts that stream's model again.
+#include "clock/clock_model.h"
+#include "clock/counter_unwrapper.h"
+#include "model/sample.h"
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace imudesk::clock {
+
+class SampleClocks {
+public:
+    // timeBase: what the device time counts (0 since power-up, 1 UTC time of day, as
+    // model::MainStatus::timeBase says); a change restarts the stream's model.
+    void stamp(model::Sample &s, int timeBase = 0);
+
+    struct Stream {
+        std::string source;
+        ClockFit fit;
+        ClockModel::State state = ClockModel::State::FreeRunning;
+        int resets = 0; // counter resets and time-base changes seen
+    };
+    std::vector<Stream> streams() const;
+    void clear() { m_streams.clear(); }
+
+private:
+    struct Clock {
+        CounterUnwrapper counter;
+        int64_t tickNs = 1'000'000;
+        ClockModel model;
+        int timeBase = 0;
+        int restarts = 0;
+    };
+    std::map<std::string, Clock> m_streams;
+};
+
+} // namespace imudesk::clock
