@@ -166,23 +166,30 @@ private Q_SLOTS:
         sim.open(115200);
         QVERIFY(waitConnected(session));
         const quint64 from = session.store().totalAppended();
-        QTRY_VERIFY_WITH_TIMEOUT(session.store().totalAppended() >= from + 300, 8000); // 3 s at 100 Hz
-        uint64_t seq = from + 100; // the model's first second is behind
+        QTRY_VERIFY_WITH_TIMEOUT(session.store().totalAppended() >= from + 600, 15000); // 6 s at 100 Hz
+        uint64_t seq = from + 300; // the model aligned (2 s of bins) with a second to spare
         std::vector<model::Sample> got = session.store().since(seq, SIZE_MAX, &seq);
-        QVERIFY(got.size() > 150);
-        double worstCommon = 0, worstArrival = 0;
+        QVERIFY(got.size() > 250);
+        std::vector<double> common, arrival;
         for (size_t i = 1; i < got.size(); ++i) {
             const model::Sample &a = got[i - 1], &b = got[i];
             QVERIFY(a.commonTimeNs != 0 && b.commonTimeNs != 0);
             const double device = (b.deviceTimeMs - a.deviceTimeMs) * 1e6;
-            worstCommon = std::max(worstCommon, std::abs(double(b.commonTimeNs - a.commonTimeNs) - device));
-            worstArrival = std::max(worstArrival, std::abs(double(b.hostTimeNs - a.hostTimeNs) - device));
+            common.push_back(std::abs(double(b.commonTimeNs - a.commonTimeNs) - device));
+            arrival.push_back(std::abs(double(b.hostTimeNs - a.hostTimeNs) - device));
             // A sampling instant is never after the sample arrived.
             QVERIFY2(b.commonTimeNs <= b.hostTimeNs + 1'000'000, qPrintable(QString::number(b.commonTimeNs - b.hostTimeNs)));
         }
-        // The device's spacing to 0.5 ms (the line steps a little when a bin's minimum moves it);
-        // the arrivals keep the pty's and the thread's bunching (2 ms here).
-        QVERIFY2(worstCommon < 500'000, qPrintable(QStringLiteral("common %1 ns, arrival %2 ns").arg(worstCommon).arg(worstArrival)));
+        std::sort(common.begin(), common.end());
+        std::sort(arrival.begin(), arrival.end());
+        const double p99 = common[common.size() * 99 / 100], worst = common.back();
+        // The device's spacing: to 0.3 ms for 99 % (the line steps a little when a bin's minimum
+        // moves it), 1 ms at worst; the arrivals keep the pty's and the thread's bunching.
+        const QString figures = QStringLiteral("common p99 %1 ns, worst %2 ns; arrival p99 %3 ns")
+                                    .arg(p99)
+                                    .arg(worst)
+                                    .arg(arrival[arrival.size() * 99 / 100]);
+        QVERIFY2(p99 < 300'000 && worst < 1'000'000, qPrintable(figures));
     }
 
     void everyCommand_data()
