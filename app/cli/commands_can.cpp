@@ -3,6 +3,7 @@
 
 #include "device/can_session.h"
 #include "format/sample_json.h"
+#include "format/time_text.h"
 #include "protocol/can/j1939.h"
 #include "settings/can_setting_catalog.h"
 #include "sim/can_simulator.h"
@@ -240,10 +241,8 @@ int typedSetting(CanSession &session, const QString &sub, const QStringList &pos
     return ExitOk;
 }
 
-} // namespace
-
 // One text line of a CAN sample: the fields its frames carried, no zeros for the others.
-static QString sampleLine(const model::Sample &s, int node)
+QString sampleLine(const model::Sample &s, int node)
 {
     QString line = QStringLiteral("%1 node %2").arg(QString::fromStdString(s.source)).arg(node);
     const auto vec = [](const char *name, const model::Vec3 &v, int decimals, const char *unit) {
@@ -268,16 +267,12 @@ static QString sampleLine(const model::Sample &s, int node)
         line += QStringLiteral(" incl=[%1 %2] deg").arg(s.inclinationX, 0, 'f', 2).arg(s.inclinationY, 0, 'f', 2);
     if (s.fields & model::FieldTemperature)
         line += QStringLiteral(" temp=%1 C").arg(s.temperatureC, 0, 'f', 1);
-    if (s.utcTimeOfDayS >= 0) {
-        const int ms = int(s.utcTimeOfDayS * 1000 + 0.5);
-        line += QStringLiteral(" utc=%1:%2:%3.%4")
-                    .arg(ms / 3600000, 2, 10, QLatin1Char('0'))
-                    .arg(ms / 60000 % 60, 2, 10, QLatin1Char('0'))
-                    .arg(ms / 1000 % 60, 2, 10, QLatin1Char('0'))
-                    .arg(ms % 1000, 3, 10, QLatin1Char('0'));
-    }
+    if (s.utcTimeOfDayS >= 0)
+        line += QStringLiteral(" utc=") + format::timeOfDayText(s.utcTimeOfDayS, 3);
     return line;
 }
+
+} // namespace
 
 int cmdCan(const QStringList &args)
 {
@@ -371,10 +366,11 @@ int cmdCan(const QStringList &args)
     }
     // Requests need a known protocol: without --protocol, listen until traffic shows it.
     const bool typed = sub == QLatin1String("get") || sub == QLatin1String("set") || sub == QLatin1String("config");
+    // What only a named protocol can do (the raw reg, sdo and sync pick theirs below).
+    const bool protocolOnly = typed || sub == QLatin1String("output") || sub == QLatin1String("action");
     const bool needsProtocol = sub == QLatin1String("reg") || sub == QLatin1String("sdo") || sub == QLatin1String("sync")
-                            || typed || sub == QLatin1String("output") || sub == QLatin1String("action");
-    if (needsProtocol && o.protocol == CanProtocol::Auto
-        && (typed || sub == QLatin1String("output") || sub == QLatin1String("action")))
+                            || protocolOnly;
+    if (protocolOnly && o.protocol == CanProtocol::Auto)
         return fail(QStringLiteral("'%1' needs --protocol j1939, canopen or hec495").arg(sub), ExitUsage);
     if (sub == QLatin1String("reg") && o.protocol == CanProtocol::Auto)
         o.protocol = CanProtocol::J1939;

@@ -21,8 +21,7 @@ public:
     Result feed(uint64_t raw);
 
     int wraps() const { return m_wrapsTotal; }
-    int resets() const { return m_resets; }
-    int epoch() const { return m_resets; }
+    int resets() const { return m_resets; } // also the epoch: 0 until the first reset
     void clear();
 
 private:

@@ -440,12 +440,11 @@ void CanFamily::stepEnded(const RequestResult &r)
     }
     // An HEC495 PDO mode the module took (0x1080 on standard frames): the decoder reads its
     // PDOs in that format from now on instead of guessing float or fixed point per frame.
-    if (s.expect == CanJobStep::Expect::Hec495Reply)
-        if (const auto w = hec495::parseWrite(s.tx); w && !w->extended && w->index == hec495::ObjPdoMode)
-        {
-            m_options.hec495Mode = int(w->value); // kept for a reopen: the module saves it at once
-            m_decoder.setHec495Mode(m_options.hec495Mode);
-        }
+    const auto written = s.expect == CanJobStep::Expect::Hec495Reply ? hec495::parseWrite(s.tx) : std::nullopt;
+    if (written && !written->extended && written->index == hec495::ObjPdoMode) {
+        m_options.hec495Mode = int(written->value); // kept for a reopen: the module saves it at once
+        m_decoder.setHec495Mode(m_options.hec495Mode);
+    }
     if (++m_step >= m_job->steps.size()) {
         finishJob(true, tr("%1: done").arg(m_job->title));
         return;

@@ -455,60 +455,47 @@ quint64 CanSession::setAllNodesOutput(bool on)
     CanJobStep send;
     send.tx = canopen::encodeNmt(on ? canopen::NmtStart : canopen::NmtStop, 0);
     send.what = on ? tr("NMT start, every node") : tr("NMT stop, every node");
-    std::vector<CanJobStep> steps{send};
-    for (auto &w : outputWatch(on, send.what))
-        steps.push_back(w);
-    return submitJob(CanJob{0, send.what, steps});
+    return outputJob(send.what, send, on);
 }
 
-std::vector<CanJobStep> CanSession::outputWatch(bool on, const QString &what)
+quint64 CanSession::outputJob(const QString &title, const CanJobStep &action, bool on)
 {
-    // The data frames starting (the first one ends the wait) or staying away for kNmtConfirmMs,
-    // after kNmtSettleMs for frames already on their way.
+    // The action, then the data frames starting (the first one ends the wait) or staying away
+    // for kNmtConfirmMs, after kNmtSettleMs for frames already on their way.
     CanJobStep watch;
     watch.hasTx = false;
-    watch.what = what;
+    watch.what = title;
     watch.timeoutMs = kNmtConfirmMs;
     if (on) {
         watch.expect = CanJobStep::Expect::PdoFrom;
-        return {watch};
+        return submitJob(CanJob{0, title, {action, watch}});
     }
     CanJobStep settle;
     settle.hasTx = false;
-    settle.what = what;
+    settle.what = title;
     settle.pauseMs = kNmtSettleMs;
     watch.expect = CanJobStep::Expect::NoPdoFrom;
-    return {settle, watch};
+    return submitJob(CanJob{0, title, {action, settle, watch}});
 }
 
 quint64 CanSession::setOutputEnabled(bool on)
 {
     const QString title = on ? tr("output on") : tr("output off");
     switch (protocol()) {
-    case CanProtocol::J1939: {
+    case CanProtocol::J1939:
         // 0x9D is confirmed by its reply, its effect by the data PGNs starting or stopping.
-        std::vector<CanJobStep> steps{j1939Write(j1939::RegOutputEnable, on ? 1 : 0, tr("output enable"))};
-        for (auto &w : outputWatch(on, title))
-            steps.push_back(w);
-        return submitJob(CanJob{0, title, steps});
-    }
+        return outputJob(title, j1939Write(j1939::RegOutputEnable, on ? 1 : 0, tr("output enable")), on);
     case CanProtocol::Hec495: {
         // 0x1083 is answered by the module; its PDOs starting or stopping show it took effect.
         const QString what = hec495::describeObject(hec495::ObjPdoStart, on ? 1 : 0);
-        std::vector<CanJobStep> steps{hecStep(hec495::ObjPdoStart, on ? 1 : 0, what)};
-        for (auto &w : outputWatch(on, what))
-            steps.push_back(w);
-        return submitJob(CanJob{0, what, steps});
+        return outputJob(what, hecStep(hec495::ObjPdoStart, on ? 1 : 0, what), on);
     }
     case CanProtocol::CanOpen: {
         // NMT has no reply (CiA 301): the TPDOs starting or stopping confirm it.
         CanJobStep send;
         send.tx = canopen::encodeNmt(on ? canopen::NmtStart : canopen::NmtStop, node());
         send.what = on ? tr("NMT start") : tr("NMT stop");
-        std::vector<CanJobStep> steps{send};
-        for (auto &w : outputWatch(on, send.what))
-            steps.push_back(w);
-        return submitJob(CanJob{0, send.what, steps});
+        return outputJob(send.what, send, on);
     }
     case CanProtocol::Auto: break;
     }

@@ -109,8 +109,9 @@ private:
     CanJobStep sdoWriteStep(uint16_t index, uint8_t sub, uint32_t value, int size, const QString &what) const;
     CanJobStep sdoReadStep(uint16_t index, uint8_t sub, const QString &what) const;
     CanJobStep hecStep(uint16_t index, uint8_t value, const QString &what) const;
-    // The steps that confirm output turned on or off by the target's data frames.
-    static std::vector<CanJobStep> outputWatch(bool on, const QString &what);
+    // A job of `action` (a write, an NMT command) confirmed by the target's data frames
+    // starting (on) or stopping (off).
+    quint64 outputJob(const QString &title, const CanJobStep &action, bool on);
     quint64 commandJob(uint32_t value, const QString &title, int followNode);
 
     CanSessionOptions m_options;

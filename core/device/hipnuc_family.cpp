@@ -166,11 +166,10 @@ void HipnucSerialFamily::noteWorldFrame(const Reply &r)
 {
     if (m_coordChangePending)
         return;
+    // The reply's pairs were read tolerantly (keyValuePairs) as its lines came.
     std::optional<model::WorldFrame> frame;
-    for (const auto &line : r.lines)
-        for (const auto &[key, value] : hp::keyValuePairs(line))
-            if (key == "COORD")
-                frame = model::worldFrameOfCoord(value);
+    if (const auto coord = r.values.find("COORD"); coord != r.values.end())
+        frame = model::worldFrameOfCoord(coord->second);
     if (!frame)
         frame = model::WorldFrame::Enu; // the default, and a reply that does not list it
     if (*frame == engine().identity().worldFrame)

@@ -3,6 +3,7 @@
 #include <bit>
 #include <cmath>
 
+#include "format/time_text.h"
 #include "model/main_status.h"
 #include "plot/channel_catalog.h"
 
@@ -102,16 +103,6 @@ bool utcClock(const model::Sample &s)
 {
     return s.source == "HI91" && s.has(model::FieldDeviceTime) && s.has(model::FieldMainStatus)
         && !model::MainStatus(s.mainStatus).test(model::MainStatus::UtcUnsync);
-}
-
-// A time of day, hh:mm:ss with `decimals` digits of the second.
-QString clockText(double secondsOfDay, int decimals)
-{
-    const int whole = int(secondsOfDay);
-    return QStringLiteral("%1:%2:%3")
-        .arg(whole / 3600, 2, 10, QLatin1Char('0'))
-        .arg(whole / 60 % 60, 2, 10, QLatin1Char('0'))
-        .arg(secondsOfDay - whole / 60 * 60, decimals + 3, 'f', decimals, QLatin1Char('0'));
 }
 
 QString axisName(Row row)
@@ -294,7 +285,7 @@ QString LatestValuesModel::formatValue(Row row, const model::Sample &s) const
     switch (row) {
     case DeviceTime:
         if (utcClock(s)) // HI91 system_time aligned to the UTC day by PPS (v1.7.1 manual 2.2.2)
-            return clockText(double(int64_t(s.deviceTimeMs) % 86400000) / 1000.0, 3);
+            return format::timeOfDayText(double(int64_t(s.deviceTimeMs) % 86400000) / 1000.0, 3);
         return fixed(s.deviceTimeMs, 0);
     case InsStatus: {
         switch (s.insStatus) {
@@ -329,7 +320,7 @@ QString LatestValuesModel::formatValue(Row row, const model::Sample &s) const
     case UtcTime: {
         if (s.utcTimeOfDayS < 0)
             return missingText();
-        return clockText(s.utcTimeOfDayS, 2);
+        return format::timeOfDayText(s.utcTimeOfDayS, 2);
     }
     case Heave: return fixed(s.heaveSurgeSway.x, 2);
     case Surge: return fixed(s.heaveSurgeSway.y, 2);

@@ -179,17 +179,21 @@ Quat enuToNed(const Quat &qEnu)
     return canonical(fromEigen(m * toEigen(normalized(qEnu)) * m.conjugate()));
 }
 
+// The navigation frame turned about up by `rad` (counter-clockwise seen from above).
+static Quat navigationTurned(const Quat &q, double rad)
+{
+    const Eigen::Quaterniond r(Eigen::AngleAxisd(rad, Eigen::Vector3d::UnitZ()));
+    return canonical(fromEigen(r * toEigen(normalized(q))));
+}
+
 Quat nwuToEnu(const Quat &qNwu)
 {
-    // R_enu<-nwu: +90 deg about z (NWU x, north, is ENU y).
-    const Eigen::Quaterniond r(Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitZ()));
-    return canonical(fromEigen(r * toEigen(normalized(qNwu))));
+    return navigationTurned(qNwu, M_PI / 2); // R_enu<-nwu: NWU x, north, is ENU y
 }
 
 Quat enuToNwu(const Quat &qEnu)
 {
-    const Eigen::Quaterniond r(Eigen::AngleAxisd(-M_PI / 2, Eigen::Vector3d::UnitZ()));
-    return canonical(fromEigen(r * toEigen(normalized(qEnu))));
+    return navigationTurned(qEnu, -M_PI / 2);
 }
 
 Quat nedToEnu(const Quat &qNed)

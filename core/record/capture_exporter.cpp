@@ -246,13 +246,16 @@ QString CaptureExporter::vendorPath(const QString &output, const QString &type)
 
 const char *CaptureExporter::tidyHeader(model::WorldFrame worldFrame)
 {
-    if (worldFrame == model::WorldFrame::Nwu)
+    // One header, its attitude columns named for the frame the module reports in.
+    const auto header = [](const char *frame) {
+        const std::string f = frame;
         return "time_s,host_time_s,frame_tag,main_status,acc_x_mps2,acc_y_mps2,acc_z_mps2,gyr_x_radps,gyr_y_radps,"
-               "gyr_z_radps,mag_x_uT,mag_y_uT,mag_z_uT,roll_nwu_deg,pitch_nwu_deg,yaw_nwu_deg,quat_nwu_w,quat_nwu_x,"
-               "quat_nwu_y,quat_nwu_z,pressure_Pa,temperature_degC,lat_deg,lon_deg,alt_m,vel_e_mps,vel_n_mps,vel_u_mps";
-    return "time_s,host_time_s,frame_tag,main_status,acc_x_mps2,acc_y_mps2,acc_z_mps2,gyr_x_radps,gyr_y_radps,"
-           "gyr_z_radps,mag_x_uT,mag_y_uT,mag_z_uT,roll_deg,pitch_deg,yaw_deg,quat_w,quat_x,quat_y,quat_z,"
-           "pressure_Pa,temperature_degC,lat_deg,lon_deg,alt_m,vel_e_mps,vel_n_mps,vel_u_mps";
+               "gyr_z_radps,mag_x_uT,mag_y_uT,mag_z_uT,roll" + f + "_deg,pitch" + f + "_deg,yaw" + f + "_deg,quat" + f
+            + "_w,quat" + f + "_x,quat" + f + "_y,quat" + f + "_z,pressure_Pa,temperature_degC,lat_deg,lon_deg,alt_m,"
+              "vel_e_mps,vel_n_mps,vel_u_mps";
+    };
+    static const std::string enu = header(""), nwu = header("_nwu");
+    return (worldFrame == model::WorldFrame::Nwu ? nwu : enu).c_str();
 }
 
 void CaptureExporter::appendTidyRow(std::string &out, const model::Sample &s, int frameTag, double hostS)

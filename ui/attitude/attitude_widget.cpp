@@ -187,7 +187,7 @@ void AttitudeWidget::setQuaternion(const model::Quat &q)
     if (m_hasData && q == m_input)
         return;
     m_input = q;
-    m_quat = m_world == model::WorldFrame::Nwu ? model::nwuToEnu(q) : model::normalized(q);
+    m_quat = inScene(q);
     m_hasData = true;
     updateReadouts();
     update();
@@ -204,13 +204,23 @@ void AttitudeWidget::clear()
     update();
 }
 
+model::Quat AttitudeWidget::inScene(const model::Quat &q) const
+{
+    return m_world == model::WorldFrame::Nwu ? model::nwuToEnu(q) : model::normalized(q);
+}
+
+QString AttitudeWidget::ownFrameTitle() const
+{
+    return m_world == model::WorldFrame::Nwu ? tr("NWU 3-1-2") : tr("ENU 3-1-2");
+}
+
 void AttitudeWidget::setWorldFrame(model::WorldFrame frame)
 {
     if (frame == m_world)
         return;
     m_world = frame;
     if (m_hasData)
-        m_quat = m_world == model::WorldFrame::Nwu ? model::nwuToEnu(m_input) : model::normalized(m_input);
+        m_quat = inScene(m_input);
     retranslate();
     update();
 }
@@ -300,12 +310,12 @@ void AttitudeWidget::retranslate()
         m_worldLabels[0].setText(tr("N (x)"));
         m_worldLabels[1].setText(tr("W (y)"));
         m_worldLabels[2].setText(tr("U (z)"));
-        m_frameTitle = tr("NWU 3-1-2");
+        m_frameTitle = ownFrameTitle();
     } else if (m_frame == DisplayFrame::Enu) {
         m_worldLabels[0].setText(tr("E (x)"));
         m_worldLabels[1].setText(tr("N (y)"));
         m_worldLabels[2].setText(tr("U (z)"));
-        m_frameTitle = tr("ENU 3-1-2");
+        m_frameTitle = ownFrameTitle();
     } else {
         m_worldLabels[0].setText(tr("N (x)"));
         m_worldLabels[1].setText(tr("E (y)"));
@@ -687,7 +697,7 @@ void AttitudeWidget::contextMenuEvent(QContextMenuEvent *event)
 {
     QMenu menu(this);
     auto *group = new QActionGroup(&menu);
-    QAction *enu = menu.addAction(m_world == model::WorldFrame::Nwu ? tr("NWU 3-1-2") : tr("ENU 3-1-2"));
+    QAction *enu = menu.addAction(ownFrameTitle());
     QAction *ned = menu.addAction(tr("NED 3-2-1"));
     for (QAction *a : {enu, ned}) {
         a->setCheckable(true);

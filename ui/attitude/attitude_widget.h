@@ -124,6 +124,10 @@ protected:
     void changeEvent(QEvent *event) override;
 
 private:
+    // A quaternion as the module sends it, turned into the ENU scene.
+    model::Quat inScene(const model::Quat &q) const;
+    // The module's own frame and angles: "ENU 3-1-2", or "NWU 3-1-2" for a module set to NWU.
+    QString ownFrameTitle() const;
     struct View; // camera and projection, defined in the .cpp (Eigen stays out of this header)
 
     void retranslate();
