@@ -290,6 +290,8 @@ phase "benchmark (firmware update throughput over a pty at 115200 and 921600 bau
 "$bench/bench_update" --quick || echo "!! bench_update missed a target (see above)"
 phase "benchmark (production station: a plan on eight simulated modules against one; 10 s in CI, 60 s by default)"
 "$bench/bench_station" --plan-seconds 10 || echo "!! bench_station missed a target (see above)"
+phase "benchmark (one time base: 4 simulated devices, 10 min of device time accelerated, against the truth)"
+"$bench/bench_sync" || echo "!! bench_sync missed a target (see above)"
 phase "soak (1 kHz HI91 with recording and the GUI offscreen; 20 s in CI, one hour by default)"
 live_bench "$bench/soak" --seconds 20
 

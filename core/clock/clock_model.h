@@ -31,6 +31,8 @@ struct ClockFit {
     int bins = 0;             // minima in the window
     double spanS = 0;         // device time the window covers
     double driftPpm() const { return skew * 1e6; }
+    // How fast the device's clock runs against the host's (ppm, + : fast): what a sync panel shows.
+    double deviceDriftPpm() const { return -skew / (1 + skew) * 1e6; }
 };
 
 class ClockModel {

@@ -1,5 +1,6 @@
 #include "sample_clocks.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace imudesk::clock {
@@ -20,7 +21,7 @@ CounterSpec specOf(const std::string &source)
 }
 } // namespace
 
-void SampleClocks::stamp(model::Sample &s, int timeBase)
+void SampleClocks::stamp(model::Sample &s, int timeBase, int64_t wireNs, int64_t earlierBoundNs)
 {
     if (!s.has(model::FieldDeviceTime) || s.hostTimeNs == 0 || !std::isfinite(s.deviceTimeMs) || s.deviceTimeMs < 0)
         return;
@@ -44,7 +45,7 @@ void SampleClocks::stamp(model::Sample &s, int timeBase)
         c.model.reset();
         ++c.restarts;
     }
-    c.model.add(u.deviceNs, s.hostTimeNs);
+    c.model.add(u.deviceNs, std::min(s.hostTimeNs - wireNs, earlierBoundNs));
     if (const auto t = c.model.toHost(u.deviceNs))
         s.commonTimeNs = *t;
 }

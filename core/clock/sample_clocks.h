@@ -8,6 +8,7 @@
 #include "clock/counter_unwrapper.h"
 #include "model/sample.h"
 
+#include <cstdint>
 #include <map>
 #include <string>
 #include <vector>
@@ -18,7 +19,13 @@ class SampleClocks {
 public:
     // timeBase: what the device time counts (0 since power-up, 1 UTC time of day, as
     // model::MainStatus::timeBase says); a change restarts the stream's model.
-    void stamp(model::Sample &s, int timeBase = 0);
+    // What bounds the sampling instant from above (the model's input, clock_model.h): the
+    // sample's arrival less wireNs, the frame's own time on the wire (its bytes x 10 / baud);
+    // and earlierBoundNs when part of the frame came with an earlier read: that read's time less
+    // the time its bytes of the frame took (a USB adapter that releases its buffer when its
+    // timer runs out cuts frames anywhere, and the cut tells where the frame stood on the wire
+    // then, which the complete frame's arrival does not).
+    void stamp(model::Sample &s, int timeBase = 0, int64_t wireNs = 0, int64_t earlierBoundNs = INT64_MAX);
 
     struct Stream {
         std::string source;

@@ -166,7 +166,13 @@ void CanFamily::feed(const QByteArray &bytes, int64_t now)
             continue;
         }
         events.append(CanFrameEvent{r.frame, now, false});
+        const size_t first = m_batch.size();
         handleFrame(r.frame, now, m_batch);
+        // The sample was sent when the frame's bits began: its receive stamp less its time on
+        // the bus (issue 36: what a CAN device without a counter has for a common time).
+        if (r.stampNs > 0)
+            for (size_t i = first; i < m_batch.size(); ++i)
+                m_batch[i].commonTimeNs = r.stampNs - protocol::can::wireTimeNs(r.frame, engine().transport().baud());
     }
     engine().appendSamples(m_batch);
     if (!events.isEmpty())

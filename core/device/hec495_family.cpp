@@ -1,5 +1,6 @@
 #include "hec495_family.h"
 
+#include "clock/clock_model.h"
 #include "device/session_engine.h"
 #include "protocol/nmea/nmea_sample.h"
 #include "protocol/witlink/commands.h"
@@ -370,7 +371,15 @@ void Hec495Family::handleFrames(const std::vector<wl::Frame> &frames, int64_t no
         const bool data = r.ok() && (r.kind == wl::Reply::Kind::AllData || r.kind == wl::Reply::Kind::Angles);
         if (data) {
             ++m_framesByType[frameType(f.command)];
-            m_batch.push_back(*wl::sampleOf(r, nowNs));
+            model::Sample s = *wl::sampleOf(r, nowNs);
+            // Asked for: the module measured between the question and its answer. Sent on its
+            // own (continuous output) it has no bracket and keeps its arrival alone.
+            if (const Request *current = engine().current(); current && current->sentNs > 0 && answersCurrent(f)) {
+                const clock::BracketTime b = clock::bracketTime(current->sentNs, nowNs);
+                s.commonTimeNs = b.hostNs;
+                s.commonUncertaintyNs = b.uncertaintyNs;
+            }
+            m_batch.push_back(std::move(s));
         } else if (!r.ok()) {
             ++m_payloadErrors;
         }

@@ -99,6 +99,8 @@ private:
     uint64_t m_payloadErrors = 0;
     FrameGapCounter m_gaps;
     clock::SampleClocks m_clocks; // each frame type's device time against the host clock
+    size_t m_cutFrameBytes = 0;   // bytes of the frame the last read ended inside
+    int64_t m_cutFrameHostNs = 0; // and that read's time
     std::map<std::string, size_t> m_frameBytes; // last frame size per type (link load of a rate)
 
     QTimer m_listenTimer{this}; // before the identity query on a given rate

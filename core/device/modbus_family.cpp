@@ -1,5 +1,6 @@
 #include "modbus_family.h"
 
+#include "clock/clock_model.h"
 #include "device/host_clock.h"
 #include "device/modbus_session.h"
 #include "device/session_engine.h"
@@ -411,6 +412,12 @@ void ModbusFamily::onPollResult(const RequestResult &r)
         RegisterDecoder::sample(m_options.kind, RegisterBlock(uint16_t(pollStart()), toVector(replyOf(r).values)));
     s.hostTimeNs = hostNowNs();
     s.deviceTimeMs = double(m_clock.elapsed());
+    // The registers were read between the request's send and the answer's arrival.
+    if (r.sentNs > 0) {
+        const clock::BracketTime b = clock::bracketTime(r.sentNs, s.hostTimeNs);
+        s.commonTimeNs = b.hostNs;
+        s.commonUncertaintyNs = b.uncertaintyNs;
+    }
     ++m_polls;
     m_batch.clear();
     m_batch.push_back(std::move(s));

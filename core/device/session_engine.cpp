@@ -312,7 +312,8 @@ void SessionEngine::writeCurrent()
 {
     m_holdTimer.stop();
     m_family->writing(*m_current);
-    m_rawLog.append(RawByteLog::Direction::Tx, m_current->wire, hostNowNs());
+    m_current->sentNs = hostNowNs();
+    m_rawLog.append(RawByteLog::Direction::Tx, m_current->wire, m_current->sentNs);
     if (m_transport->write(m_current->wire) != m_current->wire.size()) {
         RequestResult r;
         r.status = RequestStatus::NotSent;
@@ -354,6 +355,7 @@ void SessionEngine::end(Request &r, RequestResult result)
 {
     result.id = r.id;
     result.attempts = r.attempts;
+    result.sentNs = r.sentNs;
     if (!result.reply.isValid()) // ended without an answer: the family says it in its own terms
         m_family->unanswered(r, result);
     m_family->finished(r, result);

@@ -1,5 +1,6 @@
 #include "can_transport.h"
 
+#include "device/host_clock.h"
 #include "protocol/can/can_record.h"
 
 #include <QCanBus>
@@ -7,6 +8,7 @@
 #include <QCoreApplication>
 #include <QVariant>
 
+#include <chrono>
 #include <vector>
 
 namespace imudesk::io {
@@ -127,9 +129,16 @@ qint64 CanTransport::write(const QByteArray &records)
 void CanTransport::onFramesReceived()
 {
     QByteArray out;
+    // The interface's stamp (SocketCAN: the kernel's, taken when the frame came in) is on the
+    // wall clock; the sessions' clock is the steady one: one offset, taken now, carries it over.
+    const int64_t wallToHost = device::hostNowNs()
+        - std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::system_clock::now().time_since_epoch()).count();
     while (m_bus && m_bus->framesAvailable()) {
         const QCanBusFrame q = m_bus->readFrame();
-        out.append(can::toRecord(can::fromQt(q), q.frameType() == QCanBusFrame::ErrorFrame));
+        const QCanBusFrame::TimeStamp t = q.timeStamp();
+        const int64_t wallNs = t.seconds() * 1'000'000'000 + t.microSeconds() * 1000;
+        out.append(can::toRecord(can::fromQt(q), q.frameType() == QCanBusFrame::ErrorFrame,
+                                 wallNs > 0 ? wallNs + wallToHost : 0));
     }
     if (!out.isEmpty())
         Q_EMIT bytesReceived(out);

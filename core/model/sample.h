@@ -86,6 +86,10 @@ struct Sample {
     // The sampling instant on the host clock, from the device's own time through its clock
     // model (core/clock); 0 where the sample has no device time or no model yet.
     int64_t commonTimeNs = 0;
+    // For a polled device without a counter (HEC495, Modbus), the common time is the middle of
+    // its request's send and its answer's arrival (clock::bracketTime), and this is half that
+    // interval: the sampling instant lies within commonTimeNs +- this. 0: from a clock model.
+    int64_t commonUncertaintyNs = 0;
     uint16_t mainStatus = 0;
     uint8_t insStatus = 0;
     double deviceTimeMs = 0;

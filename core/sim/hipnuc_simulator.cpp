@@ -399,7 +399,8 @@ void HipnucSimulator::tick(int64_t t)
 
 MotionState HipnucSimulator::moduleStateAt(int64_t t) const
 {
-    MotionState s = m_motion.at(double(t) * 1e-6);
+    // t is the module's own time; what moves it moves in true time (sim_clock.h).
+    MotionState s = m_motion.at(double(m_options.clock.trueUs(t)) * 1e-6);
     if (m_options.faults.magCalFixture && m_mcalStat == 1 && t >= m_mcalStartUs)
         s = m_fixtureMotion.at(double(t - m_mcalStartUs) * 1e-6);
     if (m_mounted) {

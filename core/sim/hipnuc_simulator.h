@@ -110,6 +110,7 @@
 #include "sim/kboot_bootloader.h"
 #include "sim/motion_model.h"
 #include "sim/sensor_model.h"
+#include "sim/sim_clock.h"
 
 #include <array>
 #include <cstdint>
@@ -175,6 +176,10 @@ struct SimOptions {
     // ms of the UTC day. Each edge is also a SYNC_IN pulse (ONMARK 1 messages, 2.2.1).
     bool ppsInput = false;
     SimFaults faults;                 // none by default
+    // The module's oscillator (sim_clock.h): the simulator's time is the module's own, so its
+    // output periods and system_time follow it; its motion is taken at the true time. Whoever
+    // moves the simulator's time (PtySimulator, a test) moves it to clock.deviceUs(true time).
+    ClockError clock;
 };
 
 class HipnucSimulator {

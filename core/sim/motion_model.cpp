@@ -43,6 +43,33 @@ std::pair<double, double> turntableLeg(double tau)
     return {total, 0.0};
 }
 
+// The yaw (deg) and its rate (deg/s) of Motion::Twists t seconds in: each twist turns by
+// peak * width / 2, alternately one way and the other (three one way, two back in a cycle).
+std::pair<double, double> twists(double t)
+{
+    static constexpr double kStartS[MotionModel::kTwistsPerCycle] = {2.0, 5.3, 9.1, 11.4, 15.8};
+    static constexpr double kSign[MotionModel::kTwistsPerCycle] = {1, -1, 1, -1, 1};
+    const double p = MotionModel::kTwistPeakDps, w = MotionModel::kTwistWidthS;
+    const double perTwist = p * w / 2;
+    const double cycle = std::floor(t / MotionModel::kTwistCycleS);
+    const double tau = t - cycle * MotionModel::kTwistCycleS;
+    double yaw = cycle * perTwist; // 3 - 2 twists' worth per cycle
+    double rate = 0;
+    for (int i = 0; i < MotionModel::kTwistsPerCycle; ++i) {
+        const double u = tau - kStartS[i];
+        if (u <= 0)
+            continue;
+        const double pi2 = 2 * 3.141592653589793;
+        if (u >= w) {
+            yaw += kSign[i] * perTwist;
+            continue;
+        }
+        yaw += kSign[i] * p / 2 * (u - w / pi2 * std::sin(pi2 * u / w));
+        rate = kSign[i] * p / 2 * (1 - std::cos(pi2 * u / w));
+    }
+    return {yaw, rate};
+}
+
 double unitFromSeed(uint64_t seed, uint64_t salt)
 {
     return double(mix(seed ^ (salt * 0xD1B54A32D192ED03ull)) >> 11) * (1.0 / 9007199254740992.0);
@@ -57,6 +84,7 @@ const char *motionName(Motion m)
     case Motion::Spin: return "spin";
     case Motion::Tumble: return "tumble";
     case Motion::Turntable: return "turntable";
+    case Motion::Twists: return "twists";
     }
     return "?";
 }
@@ -66,7 +94,7 @@ bool parseMotion(std::string_view text, Motion &out)
     std::string t;
     for (char c : text)
         t.push_back(char(std::tolower(uint8_t(c))));
-    for (Motion m : {Motion::Static, Motion::Spin, Motion::Tumble, Motion::Turntable})
+    for (Motion m : {Motion::Static, Motion::Spin, Motion::Tumble, Motion::Turntable, Motion::Twists})
         if (t == motionName(m)) {
             out = m;
             return true;
@@ -145,6 +173,14 @@ MotionState MotionModel::at(double t) const
         s.q = canonical(axisAngle(m_headingDeg - cwDeg + ccwDeg, Eigen::Vector3d::UnitZ()));
         s.rateDps = Eigen::Vector3d(0, 0, ccwRate - cwRate);
         s.moving = s.rateDps.z() != 0;
+        break;
+    }
+    case Motion::Twists: {
+        const auto [yaw, rate] = twists(t);
+        s.q = canonical(axisAngle(yaw, Eigen::Vector3d::UnitZ())
+                        * quatFromEnu312({kStaticRollDeg, kStaticPitchDeg, kStaticYawDeg}));
+        s.rateDps = s.q.conjugate() * Eigen::Vector3d(0, 0, rate);
+        s.moving = rate != 0;
         break;
     }
     }

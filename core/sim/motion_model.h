@@ -30,6 +30,11 @@ enum class Motion {
     // (720 deg) clockwise, still, two turns counter-clockwise, still from then on. Each
     // leg ramps to kTurntableRateDps in 1 s, turns evenly and ramps down in 1 s.
     Turntable,
+    // A fixture at rest that is turned sharply now and then (issue 36, twist to align): at the
+    // static attitude, with kTwistsPerCycle yaw twists in every kTwistCycleS at irregular times,
+    // each a raised-cosine rate pulse of kTwistPeakDps and kTwistWidthS. The same for every
+    // seed: modules on one fixture feel one motion.
+    Twists,
 };
 const char *motionName(Motion m);
 // "static", "spin", "tumble" (case-insensitive).
@@ -72,6 +77,10 @@ public:
     {
         return 2 * kTurntableRampS + (kTurntableLegDeg - kTurntableRateDps * kTurntableRampS) / kTurntableRateDps;
     }
+    static constexpr double kTwistCycleS = 20.0;
+    static constexpr int kTwistsPerCycle = 5;
+    static constexpr double kTwistPeakDps = 300.0;
+    static constexpr double kTwistWidthS = 0.25;
     // Static attitude (deg).
     static constexpr double kStaticRollDeg = 1.5;
     static constexpr double kStaticPitchDeg = -2.5;

@@ -1,5 +1,6 @@
 #include "pty_simulator.h"
 
+#include "device/host_clock.h"
 #include "device/thread_sync.h"
 #include "io/reading_priority.h"
 #include "sim/hipnuc_serial_device.h"
@@ -17,6 +18,7 @@
 #include <cmath>
 #include <cstring>
 #include <deque>
+#include <optional>
 #include <fcntl.h>
 #include <poll.h>
 #include <pty.h>
@@ -105,6 +107,12 @@ struct PtySimulator::Engine {
     std::atomic<bool> unplugged{false};
 
     int64_t nowUs() const { return clock.nsecsElapsed() / 1000; }
+    // The device's own time (its oscillator, sim_clock.h); the true time is nowUs().
+    int64_t deviceNowUs() const { return clockError.deviceUs(nowUs()); }
+
+    ClockError clockError;
+    std::optional<AdapterBatcher> adapter; // a USB adapter that batches (sim_clock.h)
+    int64_t startHostNs = 0;               // device::hostNowNs() when clock started
 
     uint8_t garbageByte()
     {
@@ -177,7 +185,7 @@ struct PtySimulator::Engine {
             const ssize_t n = ::read(master, buf, sizeof buf);
             if (n > 0) {
                 const int speed = readLineSpeed(master);
-                sim.advanceTo(nowUs());
+                sim.advanceTo(deviceNowUs());
                 if (speed == sim.baud()) {
                     sim.receive(buf, size_t(n));
                     bytesIn += uint64_t(n);
@@ -219,7 +227,7 @@ struct PtySimulator::Engine {
             pending.front().written > 0)
             ++framesPausedInside;
         lastServiceUs = now;
-        sim.advanceTo(now);
+        sim.advanceTo(clockError.deviceUs(now));
         auto segments = sim.takeOutputSegments();
         setClientPresent(probeClient());
         if (!clientPresent) {
@@ -244,11 +252,15 @@ struct PtySimulator::Engine {
             }
             if (droppingChunk != 0 && s.chunk == droppingChunk)
                 continue;
-            if (s.baud == speed)
-                push(std::move(s.bytes));
+            std::vector<uint8_t> bytes = s.baud == speed ? std::move(s.bytes) : garble(s.bytes.size(), s.baud, speed);
+            if (adapter)
+                adapter->push(bytes.data(), bytes.size(), now);
             else
-                push(garble(s.bytes.size(), s.baud, speed));
+                push(std::move(bytes));
         }
+        if (adapter)
+            for (AdapterBatcher::Release &r : adapter->take(now))
+                push(std::move(r.bytes));
         flush();
     }
 
@@ -325,6 +337,9 @@ bool PtySimulator::start(QString *error)
         m_device = std::make_unique<HipnucSerialDevice>(m_options);
     m_engine = std::make_unique<Engine>(std::move(m_device));
     m_engine->master = master;
+    m_engine->clockError = m_clock;
+    if (!m_adapter.isIdeal())
+        m_engine->adapter.emplace(m_adapter);
     if (!m_customDevice && m_options.faults.unplugAtS >= 0)
         m_engine->unplugAtUs = std::llround(m_options.faults.unplugAtS * 1e6);
 
@@ -343,6 +358,7 @@ bool PtySimulator::start(QString *error)
         // the session's reading, which is under test, rather than the device's sending.
         io::raiseCurrentThreadForReading();
         e->clock.start();
+        e->startHostNs = device::hostNowNs();
         e->notifier = new QSocketNotifier(qintptr(e->master), QSocketNotifier::Read, ctx);
         e->notifier->setEnabled(false);
         QObject::connect(e->notifier, &QSocketNotifier::activated, ctx, [e] { e->onReadable(); });
@@ -401,9 +417,22 @@ void PtySimulator::withSerialDevice(const std::function<void(SimulatedSerialDevi
         return;
     }
     device::callAndWait(m_context, [e, &fn] {
-        e->sim.advanceTo(e->nowUs());
+        e->sim.advanceTo(e->deviceNowUs());
         fn(e->sim);
     });
+}
+
+void PtySimulator::setClock(ClockError clock)
+{
+    m_clock = clock;
+    m_options.clock = clock;
+}
+
+int64_t PtySimulator::trueHostNs(int64_t deviceUs) const
+{
+    if (!m_engine)
+        return 0;
+    return m_engine->startHostNs + m_clock.trueUs(deviceUs) * 1000;
 }
 
 PtySimulator::Stats PtySimulator::stats() const

@@ -29,6 +29,7 @@
 // client's reads and writes fail (a hang-up, EIO), the slave goes away once the client closes
 // it, and the device never comes back (stats().unplugged; stop() and start() plug in a new one).
 #include "sim/hipnuc_simulator.h"
+#include "sim/sim_clock.h"
 #include "sim/simulated_serial_device.h"
 
 #include <QCoreApplication>
@@ -78,6 +79,16 @@ public:
     PtySimulator(const PtySimulator &) = delete;
     PtySimulator &operator=(const PtySimulator &) = delete;
 
+    // The device's oscillator and the USB adapter's batching (sim_clock.h), set before start():
+    // the device runs on clock.deviceUs(true time) (a HiPNUC module's motion stays in true
+    // time), and what it sends reaches the pty as the adapter releases it.
+    void setClock(ClockError clock);
+    void setAdapter(AdapterLatency adapter) { m_adapter = adapter; }
+    const ClockError &clock() const { return m_clock; }
+    // The host time (device::hostNowNs) of an instant of the device's own time, e.g. a HiPNUC
+    // module's sample at system_time s: trueHostNs(startedAtUs() + s * 1000). 0 before start().
+    int64_t trueHostNs(int64_t deviceUs) const;
+
     // Opens the pseudo-terminal and starts the simulator thread; blocks until ready.
     bool start(QString *error = nullptr);
     // Stops the thread and closes the master. Safe to call twice.
@@ -98,6 +109,8 @@ public:
 private:
     struct Engine;
     SimOptions m_options;
+    ClockError m_clock;
+    AdapterLatency m_adapter;
     std::unique_ptr<SimulatedSerialDevice> m_device; // until start() hands it to the engine
     bool m_customDevice = false; // a given device survives stop() (a HiPNUC one starts afresh)
     std::unique_ptr<Engine> m_engine;

@@ -6,6 +6,8 @@
 //   [1]    data length, 0..64
 //   [2..5] identifier
 //   [6..]  the data bytes
+// With flag bit 4 (stamped) eight bytes come before the data: the interface's receive stamp
+// (the kernel's, for SocketCAN) in ns on the host clock (device::hostNowNs), little-endian.
 // A record whose length byte exceeds 64 or whose flags have unknown bits set is not a record:
 // the reader skips one byte and looks again (counted).
 #include "protocol/can/can_frame.h"
@@ -20,9 +22,13 @@ namespace imudesk::protocol::can {
 struct CanRecord {
     CanFrame frame;
     bool error = false; // an error frame reported by the interface
+    int64_t stampNs = 0; // the interface's receive stamp on the host clock; 0: none
 };
 
-QByteArray toRecord(const CanFrame &f, bool errorFrame = false);
+QByteArray toRecord(const CanFrame &f, bool errorFrame = false, int64_t stampNs = 0);
+// The time a frame takes on the bus at bitrate (bit/s; FD frames at their arbitration rate,
+// a bound): its bits with the usual share of stuff bits. 0 when the bitrate is not known.
+int64_t wireTimeNs(const CanFrame &f, int bitrate);
 
 class CanRecordReader {
 public:
