@@ -95,4 +95,16 @@ inline BracketTime bracketTime(int64_t sentNs, int64_t receivedNs)
     return {sentNs + (receivedNs - sentNs) / 2, (receivedNs - sentNs + 1) / 2};
 }
 
+// The brackets of a polled device over its session: how many, and their mean half-width.
+struct BracketTally {
+    uint64_t count = 0;
+    double sumNs = 0;
+    void add(const BracketTime &b)
+    {
+        ++count;
+        sumNs += double(b.uncertaintyNs);
+    }
+    double meanNs() const { return count ? sumNs / double(count) : 0; }
+};
+
 } // namespace imudesk::clock

@@ -23,13 +23,22 @@ CounterSpec specOf(const std::string &source)
 
 void SampleClocks::stamp(model::Sample &s, int timeBase, int64_t wireNs, int64_t earlierBoundNs)
 {
-    if (!s.has(model::FieldDeviceTime) || s.hostTimeNs == 0 || !std::isfinite(s.deviceTimeMs) || s.deviceTimeMs < 0)
+    if (!s.has(model::FieldDeviceTime))
         return;
-    auto it = m_streams.find(s.source);
+    if (const auto t = commonTime(s.source, s.deviceTimeMs, s.hostTimeNs, timeBase, wireNs, earlierBoundNs))
+        s.commonTimeNs = *t;
+}
+
+std::optional<int64_t> SampleClocks::commonTime(const std::string &source, double deviceTimeMs, int64_t hostNs,
+                                                int timeBase, int64_t wireNs, int64_t earlierBoundNs)
+{
+    if (hostNs == 0 || !std::isfinite(deviceTimeMs) || deviceTimeMs < 0)
+        return std::nullopt;
+    auto it = m_streams.find(source);
     if (it == m_streams.end()) {
-        const CounterSpec spec = specOf(s.source);
-        it = m_streams.emplace(s.source, Clock{CounterUnwrapper(spec.modulus, spec.tickNs), spec.tickNs, ClockModel(),
-                                               timeBase, 0})
+        const CounterSpec spec = specOf(source);
+        it = m_streams.emplace(source, Clock{CounterUnwrapper(spec.modulus, spec.tickNs), spec.tickNs, ClockModel(),
+                                             timeBase, 0})
                  .first;
     }
     Clock &c = it->second;
@@ -39,15 +48,14 @@ void SampleClocks::stamp(model::Sample &s, int timeBase, int64_t wireNs, int64_t
         c.model.reset();
         ++c.restarts;
     }
-    const auto raw = uint64_t(std::llround(s.deviceTimeMs * 1e6 / double(c.tickNs)));
+    const auto raw = uint64_t(std::llround(deviceTimeMs * 1e6 / double(c.tickNs)));
     const CounterUnwrapper::Result u = c.counter.feed(raw);
     if (u.reset) {
         c.model.reset();
         ++c.restarts;
     }
-    c.model.add(u.deviceNs, std::min(s.hostTimeNs - wireNs, earlierBoundNs));
-    if (const auto t = c.model.toHost(u.deviceNs))
-        s.commonTimeNs = *t;
+    c.model.add(u.deviceNs, std::min(hostNs - wireNs, earlierBoundNs));
+    return c.model.toHost(u.deviceNs);
 }
 
 std::vector<SampleClocks::Stream> SampleClocks::streams() const

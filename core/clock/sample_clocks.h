@@ -10,6 +10,7 @@
 
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -26,6 +27,9 @@ public:
     // timer runs out cuts frames anywhere, and the cut tells where the frame stood on the wire
     // then, which the complete frame's arrival does not).
     void stamp(model::Sample &s, int timeBase = 0, int64_t wireNs = 0, int64_t earlierBoundNs = INT64_MAX);
+    // The same for a device time and arrival alone: the common time, nullopt without one.
+    std::optional<int64_t> commonTime(const std::string &source, double deviceTimeMs, int64_t hostNs, int timeBase = 0,
+                                      int64_t wireNs = 0, int64_t earlierBoundNs = INT64_MAX);
 
     struct Stream {
         std::string source;

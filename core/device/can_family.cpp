@@ -170,6 +170,7 @@ void CanFamily::feed(const QByteArray &bytes, int64_t now)
         handleFrame(r.frame, now, m_batch);
         // The sample was sent when the frame's bits began: its receive stamp less its time on
         // the bus (issue 36: what a CAN device without a counter has for a common time).
+        (r.stampNs > 0 ? m_stampedSamples : m_unstampedSamples) += m_batch.size() - first;
         if (r.stampNs > 0)
             for (size_t i = first; i < m_batch.size(); ++i)
                 m_batch[i].commonTimeNs = r.stampNs - protocol::can::wireTimeNs(r.frame, engine().transport().baud());
@@ -239,6 +240,15 @@ void CanFamily::fillCounters(SessionStats &s) const
     s.payloadErrors = m_errorFrames;
     s.bytesSkipped = m_decoder.counters().unknownFrames + m_reader.bytesSkipped();
     s.lengthErrors = m_decoder.counters().malformed;
+    if (m_stampedSamples + m_unstampedSamples > 0) {
+        ClockStats k;
+        k.source = "CAN";
+        k.method = ClockStats::Method::Stamp;
+        // Without the interface's stamps the samples have their arrival alone.
+        k.state = m_stampedSamples > 0 ? clock::ClockModel::State::Aligned : clock::ClockModel::State::FreeRunning;
+        k.samples = m_stampedSamples;
+        s.clocks.push_back(std::move(k));
+    }
 }
 
 // ---------------------------------------------------------------------------------------

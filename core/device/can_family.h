@@ -106,6 +106,7 @@ private:
     QSet<int> m_dataNodes; // nodes heard sending data frames (output off can be confirmed)
 
     uint64_t m_frames = 0, m_bytesIn = 0, m_errorFrames = 0;
+    uint64_t m_stampedSamples = 0, m_unstampedSamples = 0; // with and without a receive stamp
     std::map<std::string, uint64_t> m_framesByType;
 };
 

@@ -378,6 +378,7 @@ void Hec495Family::handleFrames(const std::vector<wl::Frame> &frames, int64_t no
                 const clock::BracketTime b = clock::bracketTime(current->sentNs, nowNs);
                 s.commonTimeNs = b.hostNs;
                 s.commonUncertaintyNs = b.uncertaintyNs;
+                m_brackets.add(b);
             }
             m_batch.push_back(std::move(s));
         } else if (!r.ok()) {
@@ -433,6 +434,15 @@ void Hec495Family::fillCounters(SessionStats &s) const
     s.framesByType = m_framesByType;
     s.nmeaSentences = m_text.counters().nmeaSentences;
     s.nmeaErrors = m_text.counters().nmeaErrors;
+    if (m_brackets.count) {
+        ClockStats k;
+        k.source = "HEC495";
+        k.method = ClockStats::Method::Bracket;
+        k.state = clock::ClockModel::State::Aligned;
+        k.uncertaintyNs = m_brackets.meanNs();
+        k.samples = m_brackets.count;
+        s.clocks.push_back(std::move(k));
+    }
 }
 
 } // namespace imudesk::device

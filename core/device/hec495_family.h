@@ -25,6 +25,7 @@
 //     protocol::nmea decodes become samples (HDT: the heading), the others are handed out
 //     raw (nmeaReceived). Text is not a data frame: polling goes on beside it, so pitch,
 //     roll and the rest keep coming.
+#include "clock/clock_model.h"
 #include "device/baud_scan.h"
 #include "device/family_plugin.h"
 #include "device/hec495_result.h"
@@ -122,6 +123,7 @@ private:
 
     std::map<std::string, uint64_t> m_framesByType;
     uint64_t m_payloadErrors = 0;
+    clock::BracketTally m_brackets; // the polled samples' request->answer intervals
     protocol::StreamDemux m_text;     // the text between frames: NMEA sentences
     std::vector<protocol::StreamEvent> m_textEvents;
     uint8_t m_content = 0xFF;         // output content (0x49) last set, 0xFF: unknown

@@ -75,7 +75,6 @@ int HipnucSerialFamily::firstBaud(int requestedBaud) const
 void HipnucSerialFamily::opened(int requestedBaud)
 {
     m_clocks.clear();
-    m_cutFrameBytes = 0;
     m_deviceSerial.clear();
     m_checkSameDevice = false;
     const QString port = engine().transport().address();
@@ -287,9 +286,8 @@ void HipnucSerialFamily::feed(const QByteArray &bytes, int64_t nowNs)
     m_events.clear();
     m_demux.feed(reinterpret_cast<const uint8_t *>(bytes.constData()), size_t(bytes.size()), m_events);
     handleEvents(nowNs);
-    // A frame this read ended inside: its bytes so far bound its sampling instant (SampleClocks).
-    m_cutFrameBytes = m_demux.pendingBytes();
-    m_cutFrameHostNs = nowNs;
+    // A frame this read ended inside: its bytes so far bound its sampling instant.
+    m_clocks.endRead(m_demux.pendingBytes(), nowNs);
 }
 
 void HipnucSerialFamily::lineIdle(int64_t nowNs)
@@ -297,7 +295,7 @@ void HipnucSerialFamily::lineIdle(int64_t nowNs)
     m_events.clear();
     m_demux.flushPending(m_events);
     m_demux.endQuarantine(); // the line went quiet: the next byte starts something new
-    m_cutFrameBytes = 0;
+    m_clocks.lineIdle();
     handleEvents(nowNs);
 }
 
@@ -306,15 +304,12 @@ void HipnucSerialFamily::handleEvents(int64_t nowNs)
     if (m_events.empty())
         return;
     m_batch.clear();
-    const int baud = engine().workingBaud();
+    m_clocks.setBaud(engine().workingBaud());
     for (auto &e : m_events) {
         switch (e.kind) {
         case StreamEvent::Kind::Frame: {
-            // The first frame completed here is the one the last read ended inside.
-            const int64_t cutBound = m_cutFrameBytes > 0 && baud > 0
-                ? m_cutFrameHostNs - int64_t(m_cutFrameBytes) * 10'000'000'000 / baud
-                : INT64_MAX;
-            m_cutFrameBytes = 0;
+            const size_t frameBytes = e.payload.size() + hp::FrameDecoder::kHeaderSize;
+            m_clocks.beginFrame(frameBytes);
             const size_t first = m_batch.size();
             const auto res = hp::forEachPacket(e.payload, [&](const hp::Packet &p) {
                 m_batch.push_back(hp::toSample(p));
@@ -324,12 +319,11 @@ void HipnucSerialFamily::handleEvents(int64_t nowNs)
                 ++m_payloadErrors;
             for (size_t i = first; i < m_batch.size(); ++i) {
                 model::Sample &sample = m_batch[i];
-                const size_t frameBytes = e.payload.size() + hp::FrameDecoder::kHeaderSize;
                 m_frameBytes[sample.source] = frameBytes;
                 if (sample.has(model::FieldDeviceTime)) {
                     const int timeBase = model::MainStatus::timeBase(sample.has(model::FieldMainStatus), sample.mainStatus);
                     m_gaps.add(sample.source, sample.deviceTimeMs, timeBase);
-                    m_clocks.stamp(sample, timeBase, baud > 0 ? int64_t(frameBytes) * 10'000'000'000 / baud : 0, cutBound);
+                    m_clocks.stamp(sample, timeBase);
                 }
             }
             break;
@@ -366,6 +360,18 @@ void HipnucSerialFamily::handleEvents(int64_t nowNs)
 void HipnucSerialFamily::fillCounters(SessionStats &s) const
 {
     fillStreamCounters(m_demux, m_payloadErrors, m_gaps, s);
+    for (const clock::SampleClocks::Stream &c : m_clocks.clocks().streams()) {
+        ClockStats k;
+        k.source = c.source;
+        k.method = ClockStats::Method::Counter;
+        k.state = c.state;
+        k.driftPpm = c.fit.valid ? c.fit.deviceDriftPpm() : 0;
+        k.jitterNs = c.fit.jitterNs;
+        k.resets = c.resets;
+        k.spanS = c.fit.spanS;
+        k.needSpanS = clock::ClockModel::Options{}.minSpanS;
+        s.clocks.push_back(std::move(k));
+    }
 }
 
 } // namespace imudesk::device

@@ -4,7 +4,7 @@
 // stream (protocol::StreamDemux), the baud-rate detection, the safe baud change and the link
 // recovery after a reset (hipnuc_family_baud.cpp), and the lost-frame counter, told by each
 // command's typed output effect (protocol::hipnuc::OutputEffect) when a gap is the command's.
-#include "clock/sample_clocks.h"
+#include "clock/serial_frame_clocks.h"
 #include "device/baud_scan.h"
 #include "device/family_plugin.h"
 #include "device/frame_gap_counter.h"
@@ -98,9 +98,7 @@ private:
     std::optional<protocol::hipnuc::ReplyCollector> m_collector; // the request on the line
     uint64_t m_payloadErrors = 0;
     FrameGapCounter m_gaps;
-    clock::SampleClocks m_clocks; // each frame type's device time against the host clock
-    size_t m_cutFrameBytes = 0;   // bytes of the frame the last read ended inside
-    int64_t m_cutFrameHostNs = 0; // and that read's time
+    clock::SerialFrameClocks m_clocks; // each frame type's device time against the host clock
     std::map<std::string, size_t> m_frameBytes; // last frame size per type (link load of a rate)
 
     QTimer m_listenTimer{this}; // before the identity query on a given rate

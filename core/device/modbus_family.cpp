@@ -311,6 +311,15 @@ void ModbusFamily::fillCounters(SessionStats &s) const
     s.framesLost = m_pollTimeouts;
     s.framesLostByType[type] = m_pollTimeouts;
     s.framesByType[type] = m_polls;
+    if (m_brackets.count) {
+        ClockStats k;
+        k.source = "Modbus";
+        k.method = ClockStats::Method::Bracket;
+        k.state = clock::ClockModel::State::Aligned;
+        k.uncertaintyNs = m_brackets.meanNs();
+        k.samples = m_brackets.count;
+        s.clocks.push_back(std::move(k));
+    }
 }
 
 // ---------------------------------------------------------------------------------------
@@ -417,6 +426,7 @@ void ModbusFamily::onPollResult(const RequestResult &r)
         const clock::BracketTime b = clock::bracketTime(r.sentNs, s.hostTimeNs);
         s.commonTimeNs = b.hostNs;
         s.commonUncertaintyNs = b.uncertaintyNs;
+        m_brackets.add(b);
     }
     ++m_polls;
     m_batch.clear();

@@ -12,6 +12,7 @@
 //   * the node/baud scan.
 // A request goes out only after the line was quiet for 3.5 characters (the RTU frame gap).
 // Replies that fail their CRC are counted and dropped; the engine's timeout sends again.
+#include "clock/clock_model.h"
 #include "device/family_plugin.h"
 #include "device/modbus_types.h"
 #include "model/sample.h"
@@ -125,6 +126,7 @@ private:
     int m_consecutiveTimeouts = 0; // kTimeoutsBeforeLost or more: reported Disconnected
 
     uint64_t m_responses = 0, m_exceptions = 0, m_crcErrors = 0, m_polls = 0, m_pollTimeouts = 0;
+    clock::BracketTally m_brackets; // the polls' request->answer intervals
     uint64_t m_bytesIn = 0, m_bytesSkipped = 0;
 
     bool m_scanning = false;

@@ -1,5 +1,6 @@
 #pragma once
 // Value types that cross from a session's worker thread to its users.
+#include "clock/clock_model.h"
 #include "model/device_identity.h"
 #include "protocol/hipnuc/ascii_reply.h"
 
@@ -9,6 +10,7 @@
 #include <cstdint>
 #include <map>
 #include <string>
+#include <vector>
 
 namespace imudesk::device {
 
@@ -22,6 +24,26 @@ enum class SessionState {
     Reconnecting, // disconnected, waiting for the same device to come back (auto-reconnect)
 };
 const char *stateName(SessionState s);
+
+// One clock of a session's device (issue 36): how its samples get their common time and how
+// well. A sync panel shows these; the numbers are the model's (core/clock).
+struct ClockStats {
+    enum class Method {
+        Counter, // the device's own counter through a clock model (HiPNUC system_time)
+        Bracket, // a polled device: the middle of request and answer (HEC495, Modbus)
+        Stamp,   // the interface's receive stamp less the frame's time on the bus (CAN)
+    };
+    std::string source; // "HI91", "HEC495", "Modbus", "CAN"
+    Method method = Method::Counter;
+    clock::ClockModel::State state = clock::ClockModel::State::FreeRunning;
+    double driftPpm = 0;      // Counter: how fast the device's clock runs (+ : fast)
+    double jitterNs = 0;      // Counter: the bound's scatter about the line
+    double uncertaintyNs = 0; // Bracket: mean half-width; Stamp: none known (0)
+    int resets = 0;           // counter resets and time-base changes
+    double spanS = 0;         // device time under the fit
+    double needSpanS = 0;     // the span it needs before it is aligned
+    uint64_t samples = 0;     // samples stamped so far (Bracket, Stamp)
+};
 
 struct SessionStats {
     uint64_t bytesIn = 0;
@@ -44,6 +66,7 @@ struct SessionStats {
     double bytesPerSecond = 0;
     double linkLoad = 0;                // bytes/s * 10 bits / baud (0..1+)
     int baud = 0;
+    std::vector<ClockStats> clocks;
 };
 
 } // namespace imudesk::device

@@ -104,6 +104,20 @@ std::string sampleToJson(const model::Sample &s, model::WorldFrame worldFrame)
     std::string out;
     out.reserve(400);
     out += "{\"type\":\"" + s.source + '"';
+    // The three times (issue 36): the device's own (system_time below), the arrival and the
+    // common time on the host clock (ns), with the common time's half-width for polled devices.
+    if (s.hostTimeNs != 0) {
+        key(out, "host_time_ns");
+        out += std::to_string(s.hostTimeNs);
+    }
+    if (s.commonTimeNs != 0) {
+        key(out, "common_time_ns");
+        out += std::to_string(s.commonTimeNs);
+    }
+    if (s.commonUncertaintyNs != 0) {
+        key(out, "common_uncertainty_ns");
+        out += std::to_string(s.commonUncertaintyNs);
+    }
     if (s.has(FieldMainStatus)) {
         key(out, "main_status");
         out += std::to_string(s.mainStatus);

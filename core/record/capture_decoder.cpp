@@ -1,5 +1,6 @@
 #include "capture_decoder.h"
 
+#include "model/main_status.h"
 #include "protocol/witlink/reply.h"
 
 namespace imudesk::record {
@@ -11,6 +12,8 @@ void CaptureDecoder::configure(const CaptureHeader &header)
 {
     m_timedIdle = header.value(CaptureHeader::kIdleMarkers) != "1";
     m_witlink = header.value(CaptureHeader::kLinkKind) == "HEC495 serial";
+    m_clocks.clear();
+    m_clocks.setBaud(header.baud());
 }
 
 void CaptureDecoder::feedWitlink(const uint8_t *data, size_t n, int64_t hostNs, Sink &sink, bool idle)
@@ -64,6 +67,7 @@ void CaptureDecoder::lineIdle(int64_t hostNs, Sink &sink)
     m_events.clear();
     m_demux.flushPending(m_events);
     m_demux.endQuarantine();
+    m_clocks.lineIdle();
     dispatch(hostNs, sink);
 }
 
@@ -80,6 +84,7 @@ void CaptureDecoder::feed(const uint8_t *data, size_t n, int64_t hostNs, Sink &s
     m_events.clear();
     m_demux.feed(data, n, m_events);
     dispatch(hostNs, sink);
+    m_clocks.endRead(m_demux.pendingBytes(), hostNs);
 }
 
 void CaptureDecoder::finish(Sink &sink)
@@ -96,6 +101,9 @@ void CaptureDecoder::reset()
     m_demux.reset();
     m_witlinkDecoder.reset();
     m_haveLast = false;
+    const int baud = m_clocks.baud();
+    m_clocks.clear(); // the counters jump where a seek lands
+    m_clocks.setBaud(baud);
 }
 
 void CaptureDecoder::resetCounters()
@@ -111,7 +119,15 @@ void CaptureDecoder::dispatch(int64_t hostNs, Sink &sink)
     for (const StreamEvent &e : m_events) {
         switch (e.kind) {
         case StreamEvent::Kind::Frame: {
-            const auto res = hp::forEachPacket(e.payload, [&](const hp::Packet &p) { sink.onPacket(p, hostNs); });
+            m_clocks.beginFrame(e.payload.size() + hp::FrameDecoder::kHeaderSize);
+            const auto res = hp::forEachPacket(e.payload, [&](const hp::Packet &p) {
+                const hp::PacketClock c = hp::packetClock(p);
+                m_packetCommonNs = c.has ? m_clocks.commonTime(c.source, c.deviceTimeMs, hostNs,
+                                                               model::MainStatus::timeBase(c.hasStatus, c.mainStatus))
+                                         : 0;
+                sink.onPacket(p, hostNs);
+            });
+            m_packetCommonNs = 0;
             if (!res.ok()) {
                 ++m_payloadErrors;
                 sink.onPayloadError(res, hostNs);

@@ -9,6 +9,7 @@
 // ends the text quarantine exactly as the session's idle timer does, so a replay decodes
 // what the live session decoded. Replay, export, analysis and `imudesk-cli decode` all decode
 // through it. Plain value class.
+#include "clock/serial_frame_clocks.h"
 #include "protocol/hipnuc/payloads.h"
 #include "record/capture_reader.h"
 #include "protocol/stream/stream_demux.h"
@@ -58,6 +59,10 @@ public:
     // HEC495 frames decoded into samples, by kind ("HEC495 record", "HEC495 angles").
     const std::map<std::string, uint64_t> &witlinkFramesByType() const { return m_witlinkByType; }
     uint64_t payloadErrors() const { return m_payloadErrors; }
+    // During Sink::onPacket: the packet's common time (ns on the capture's host clock), from its
+    // device time through the clock model the live session used (clock/serial_frame_clocks.h),
+    // fed with the same chunks; 0 without a device time or before the model has a sample.
+    int64_t packetCommonNs() const { return m_packetCommonNs; }
     void resetCounters();
 
 private:
@@ -75,6 +80,8 @@ private:
     bool m_haveLast = false;
     bool m_timedIdle = true; // no markers recorded: infer idle lines from pauses between chunks
     uint64_t m_payloadErrors = 0;
+    clock::SerialFrameClocks m_clocks;
+    int64_t m_packetCommonNs = 0;
 };
 
 } // namespace imudesk::record

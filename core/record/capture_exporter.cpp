@@ -61,6 +61,7 @@ public:
     }
 
     int64_t firstNs = 0;
+    const CaptureDecoder *decoder = nullptr;
     model::WorldFrame worldFrame = model::WorldFrame::Enu; // the capture's module (its header)
 
     bool open(const QString &path, const char *header, Output *&out)
@@ -98,6 +99,14 @@ public:
         return out;
     }
 
+    // A packet's sample with its arrival and its common time (the decoder's clock model).
+    model::Sample timed(model::Sample s, int64_t hostNs) const
+    {
+        s.hostTimeNs = hostNs;
+        s.commonTimeNs = decoder ? decoder->packetCommonNs() : 0;
+        return s;
+    }
+
     void onPacket(const hp::Packet &p, int64_t hostNs) override
     {
         const double hostMs = double(hostNs - firstNs) / 1e6;
@@ -123,14 +132,14 @@ public:
         case CaptureExporter::Format::TidyCsv: {
             Output *out = output(QString(), nullptr);
             if (out)
-                CaptureExporter::appendTidyRow(out->buf, hp::toSample(p), tagOf(p), hostMs / 1000.0);
+                CaptureExporter::appendTidyRow(out->buf, timed(hp::toSample(p), hostNs), tagOf(p), firstNs);
             written(out);
             break;
         }
         case CaptureExporter::Format::JsonLines: {
             Output *out = output(QString(), nullptr);
             if (out) {
-                out->buf += format::sampleToJson(hp::toSample(p), worldFrame);
+                out->buf += format::sampleToJson(timed(hp::toSample(p), hostNs), worldFrame);
                 out->buf += '\n';
             }
             written(out);
@@ -150,7 +159,9 @@ public:
         }
         if ((out = output(QString(), nullptr))) {
             if (m_o.format == CaptureExporter::Format::TidyCsv) {
-                CaptureExporter::appendTidyRow(out->buf, s, 0, double(hostNs - firstNs) / 1e9);
+                model::Sample t = s;
+                t.hostTimeNs = hostNs;
+                CaptureExporter::appendTidyRow(out->buf, t, 0, firstNs);
             } else {
                 out->buf += format::sampleToJson(s, worldFrame);
                 out->buf += '\n';
@@ -252,14 +263,15 @@ const char *CaptureExporter::tidyHeader(model::WorldFrame worldFrame)
         return "time_s,host_time_s,frame_tag,main_status,acc_x_mps2,acc_y_mps2,acc_z_mps2,gyr_x_radps,gyr_y_radps,"
                "gyr_z_radps,mag_x_uT,mag_y_uT,mag_z_uT,roll" + f + "_deg,pitch" + f + "_deg,yaw" + f + "_deg,quat" + f
             + "_w,quat" + f + "_x,quat" + f + "_y,quat" + f + "_z,pressure_Pa,temperature_degC,lat_deg,lon_deg,alt_m,"
-              "vel_e_mps,vel_n_mps,vel_u_mps";
+              "vel_e_mps,vel_n_mps,vel_u_mps,common_time_s,common_uncertainty_s";
     };
     static const std::string enu = header(""), nwu = header("_nwu");
     return (worldFrame == model::WorldFrame::Nwu ? nwu : enu).c_str();
 }
 
-void CaptureExporter::appendTidyRow(std::string &out, const model::Sample &s, int frameTag, double hostS)
+void CaptureExporter::appendTidyRow(std::string &out, const model::Sample &s, int frameTag, int64_t originNs)
 {
+    const double hostS = double(s.hostTimeNs - originNs) / 1e9;
     using namespace model;
     // Values come from single-precision frames: float text keeps every digit they have.
     auto num = [&](double v) {
@@ -320,6 +332,12 @@ void CaptureExporter::appendTidyRow(std::string &out, const model::Sample &s, in
         gap(3);
     }
     vec(FieldVelocity, s.velEnu, 1.0);
+    out += ',';
+    if (s.commonTimeNs != 0)
+        csv::appendFixed(out, double(s.commonTimeNs - originNs) / 1e9, 6);
+    out += ',';
+    if (s.commonUncertaintyNs != 0)
+        csv::appendFixed(out, double(s.commonUncertaintyNs) / 1e9, 6);
     out += '\n';
 }
 
@@ -349,6 +367,7 @@ CaptureExporter::Result CaptureExporter::run(const QString &capturePath, const O
                       "layout has no column to say so: its angles and quaternion are NWU.");
     CaptureDecoder decoder;
     decoder.configure(reader.header());
+    sink.decoder = &decoder;
     CaptureReader::Chunk c;
     CaptureReader::Result res;
     bool first = true;

@@ -53,7 +53,8 @@ public:
     // The tidy CSV: one header row, time_s from the device clock, SI units in the names. A
     // module set to NWU names its attitude columns so (roll_nwu_deg ... quat_nwu_z).
     static const char *tidyHeader(model::WorldFrame worldFrame = model::WorldFrame::Enu);
-    static void appendTidyRow(std::string &out, const model::Sample &s, int frameTag, double hostS);
+    // originNs: the host time that host_time_s and common_time_s count from.
+    static void appendTidyRow(std::string &out, const model::Sample &s, int frameTag, int64_t originNs);
 };
 
 } // namespace imudesk::record

@@ -31,7 +31,7 @@
 // Exit status: 0 when every target holds (common p99 <= 1 ms for A and B, |drift error| <= 2
 // ppm, A-B after twist-to-align <= 0.1 ms, HEC495 within its bracket >= 99 %, 100 % of the
 // triggered frames paired with the right pulse); 1 otherwise; 2 on bad arguments.
-#include "clock/sample_clocks.h"
+#include "clock/serial_frame_clocks.h"
 #include "clock/trigger_pairing.h"
 #include "clock/twist_align.h"
 #include "protocol/can/can_decoder.h"
@@ -104,19 +104,17 @@ struct HipnucPath {
     int baud;
     protocol::StreamDemux demux;
     std::vector<protocol::StreamEvent> events;
-    clock::SampleClocks clocks;
+    clock::SerialFrameClocks clocks;
     // Per decoded sample.
     std::vector<int64_t> truthNs, arrivalNs, commonNs, deviceNs;
     std::vector<double> gyroDps;
     std::vector<bool> aligned;
     uint64_t frames = 0;
-    // The frame the last read ended inside: its bytes then and that read's time.
-    size_t partialBytes = 0;
-    int64_t partialHostNs = 0;
 
     HipnucPath(std::string n, sim::ClockError c, sim::AdapterLatency a, int b, uint64_t seed)
         : name(std::move(n)), clock(c), device(options(c, b, seed)), adapter(a), baud(b)
     {
+        clocks.setBaud(b);
     }
     static sim::SimOptions options(sim::ClockError c, int baud, uint64_t seed)
     {
@@ -150,37 +148,36 @@ struct HipnucPath {
     {
         events.clear();
         demux.feed(bytes.data(), bytes.size(), events);
-        const double byteNs = 1e10 / baud;
-        int64_t earlierBound = partialBytes > 0 ? partialHostNs - int64_t(double(partialBytes) * byteNs) : INT64_MAX;
-        partialBytes = demux.pendingBytes();
-        partialHostNs = hostNs;
+        handle(hostNs);
+        clocks.endRead(demux.pendingBytes(), hostNs);
+    }
+    void handle(int64_t hostNs)
+    {
         for (const protocol::StreamEvent &e : events) {
             if (e.kind != protocol::StreamEvent::Kind::Frame)
                 continue;
             ++frames;
-            const size_t frameBytes = e.payload.size() + hp::FrameDecoder::kHeaderSize;
-            const int64_t bound = earlierBound;
-            earlierBound = INT64_MAX; // only the first frame was the one cut
+            clocks.beginFrame(e.payload.size() + hp::FrameDecoder::kHeaderSize);
             (void)hp::forEachPacket(e.payload, [&](const hp::Packet &p) {
                 model::Sample s = hp::toSample(p);
                 if (!s.has(model::FieldDeviceTime))
                     return;
                 s.hostTimeNs = hostNs;
-                clocks.stamp(s, 0, int64_t(frameBytes) * 10'000'000'000 / baud, bound);
+                clocks.stamp(s, 0);
                 const int64_t devUs = device.simulator().startedAtUs() + int64_t(std::llround(s.deviceTimeMs * 1000));
                 truthNs.push_back(clock.trueUs(devUs) * 1000);
                 arrivalNs.push_back(s.hostTimeNs);
                 commonNs.push_back(s.commonTimeNs);
                 deviceNs.push_back(int64_t(std::llround(s.deviceTimeMs * 1e6)));
                 gyroDps.push_back(std::sqrt(s.gyr.x * s.gyr.x + s.gyr.y * s.gyr.y + s.gyr.z * s.gyr.z));
-                const auto streams = clocks.streams();
+                const auto streams = clocks.clocks().streams();
                 aligned.push_back(!streams.empty() && streams.front().state == clock::ClockModel::State::Aligned);
             });
         }
     }
     clock::ClockFit fit() const
     {
-        const auto streams = clocks.streams();
+        const auto streams = clocks.clocks().streams();
         return streams.empty() ? clock::ClockFit{} : streams.front().fit;
     }
 };

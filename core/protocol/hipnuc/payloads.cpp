@@ -546,4 +546,18 @@ model::Sample toSample(const Packet &p)
         p);
 }
 
+PacketClock packetClock(const Packet &p)
+{
+    PacketClock c;
+    if (const auto *h = std::get_if<Hi91>(&p))
+        c = PacketClock{"HI91", true, double(h->systemTime), true, h->mainStatus};
+    else if (const auto *h81 = std::get_if<Hi81>(&p))
+        c = PacketClock{"HI81", true, double(h81->gpsTowMs), true, h81->mainStatus};
+    else if (const auto *h83 = std::get_if<Hi83>(&p))
+        c = PacketClock{"HI83", ((h83->bitmap >> 5) & 1u) != 0, double(h83->systemTimeUs) / 1000.0, true, h83->mainStatus};
+    else
+        c.source = "HI92";
+    return c;
+}
+
 } // namespace imudesk::protocol::hipnuc

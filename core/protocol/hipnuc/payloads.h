@@ -174,6 +174,16 @@ std::vector<uint8_t> encode(const Packet &p);
 std::vector<uint8_t> encode(const std::vector<Packet> &packets);
 
 std::string packetName(const Packet &p); // "HI91", ...
+// The device time a packet carries, as toSample gives it (without building the sample): HI91's
+// system_time, HI81's GPS time of week, HI83's system_time_us (when its bitmap has it).
+struct PacketClock {
+    const char *source = "";
+    bool has = false;
+    double deviceTimeMs = 0;
+    bool hasStatus = false;
+    uint16_t mainStatus = 0;
+};
+PacketClock packetClock(const Packet &p);
 model::Sample toSample(const Packet &p);
 model::Sample toSample(const Hi91 &p);
 
