@@ -53,6 +53,7 @@ int simulateModbus(const QCommandLineParser &p);
 int cmdConfig(const QStringList &args); // commands_config.cpp
 int cmdRecord(const QStringList &args);
 int cmdExport(const QStringList &args);
+int cmdAlign(const QStringList &args); // commands_session.cpp
 int cmdImport(const QStringList &args);
 int cmdAnalyze(const QStringList &args);
 int cmdUpdate(const QStringList &args);

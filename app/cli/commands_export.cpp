@@ -4,6 +4,7 @@
 #include "cli_context.h"
 #include "record/capture_exporter.h"
 #include "record/csv_capture_converter.h"
+#include "record/session_exporter.h"
 
 #include <QFileInfo>
 
@@ -24,9 +25,16 @@ int cmdExport(const QStringList &args)
     p.addOption(QCommandLineOption(QStringLiteral("to"), QStringLiteral("End, seconds since the recording began."),
                                    QStringLiteral("S")));
     p.addOption(QCommandLineOption(QStringLiteral("progress"), QStringLiteral("Print progress to stderr.")));
-    p.addPositionalArgument(QStringLiteral("FILE"), QStringLiteral("A capture, a vendor HI91 CSV or a raw byte dump (recognised by content)."));
+    p.addOption(QCommandLineOption(QStringLiteral("grid-ms"),
+                                   QStringLiteral("A recorded session: resample every device onto one grid of this many ms "
+                                                  "(tidy CSV)."),
+                                   QStringLiteral("MS")));
+    p.addPositionalArgument(QStringLiteral("FILE"),
+                            QStringLiteral("A capture, a vendor HI91 CSV, a raw byte dump (recognised by content), or the "
+                                           "folder of a recorded session (record PORT,PORT,...)."));
     if (!parseArgs(p, args,
-                   QStringLiteral("imudesk-cli export FILE --format vendor-csv|csv|jsonl [-o OUT] [--from S --to S]")))
+                   QStringLiteral("imudesk-cli export FILE --format vendor-csv|csv|jsonl [-o OUT] [--from S --to S]\n"
+                                  "       imudesk-cli export SESSION_FOLDER --format csv|jsonl [-o OUT] [--grid-ms MS]")))
         return ExitUsage;
     if (p.positionalArguments().size() != 1)
         return fail(QStringLiteral("export needs exactly one capture FILE"), ExitUsage);
@@ -37,6 +45,35 @@ int cmdExport(const QStringList &args)
     record::CaptureExporter::Options o;
     o.format = *format;
     const QString input = p.positionalArguments().front();
+    if (record::SessionManifest::isSessionFolder(input)) {
+        record::SessionExporter::Options so;
+        so.format = *format;
+        so.output = p.isSet(QStringLiteral("o")) ? p.value(QStringLiteral("o"))
+                                                 : input + (*format == record::CaptureExporter::Format::JsonLines
+                                                                ? QStringLiteral(".jsonl")
+                                                                : QStringLiteral(".csv"));
+        if (p.isSet(QStringLiteral("grid-ms"))) {
+            bool ok = false;
+            so.gridMs = p.value(QStringLiteral("grid-ms")).toDouble(&ok);
+            if (!ok || so.gridMs <= 0)
+                return fail(QStringLiteral("--grid-ms needs a positive number of ms"), ExitUsage);
+        }
+        if (p.isSet(QStringLiteral("from")) || p.isSet(QStringLiteral("to")))
+            return fail(QStringLiteral("--from/--to are for one capture; a session exports whole"), ExitUsage);
+        const auto r = record::SessionExporter::run(input, so);
+        if (!r.ok)
+            return fail(r.error);
+        for (const QString &n : r.notes)
+            std::fprintf(stderr, "imudesk-cli: note: %s\n", qPrintable(n));
+        QStringList per;
+        for (uint64_t n : r.samplesByDevice)
+            per << QString::number(n);
+        out(QStringLiteral("wrote %1").arg(so.output));
+        out(QStringLiteral("%1 rows (samples per device: %2)").arg(r.rows).arg(per.join(QStringLiteral(", "))));
+        return ExitOk;
+    }
+    if (p.isSet(QStringLiteral("grid-ms")))
+        return fail(QStringLiteral("--grid-ms is for a recorded session's folder"), ExitUsage);
     o.output = p.value(QStringLiteral("o"));
     if (o.output.isEmpty()) {
         const QFileInfo info(input);

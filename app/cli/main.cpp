@@ -27,8 +27,12 @@ void usage(FILE *to)
                "  config PORT [set KEY=VALUE...|action NAME|export F|diff F|apply F] [--save] [--reboot] [--json]\n"
                "                                         read, set, compare and apply device settings\n"
                "  record PORT -o FILE [--duration S] [--baud B]  record what the device sends to a capture file\n"
+               "  record PORT,PORT[,...] -o FOLDER [--duration S]  record several devices as one session\n"
+               "  align FOLDER [--reference NAME] [--from S --to S] [--dry-run]\n"
+               "                                         twist-to-align: the devices' offsets from a fixture's sharp turns\n"
                "  export FILE --format vendor-csv|csv|jsonl [-o OUT] [--from S --to S]\n"
                "                                         export a capture (or a time range of it)\n"
+               "  export FOLDER --format csv|jsonl [-o OUT] [--grid-ms MS]  a session, its devices aligned\n"
                "  import CSV [-o OUT.imucap]             turn a vendor HI91 CSV into a capture\n"
                "  analyze FILE [--json]                  statistics, output rate, Allan deviation of a capture or\n"
                "                                         vendor CSV\n"
@@ -148,6 +152,7 @@ int main(int argc, char **argv)
         {QStringLiteral("modbus"), cmdModbus},
         {QStringLiteral("config"), cmdConfig},
         {QStringLiteral("record"), cmdRecord},   {QStringLiteral("export"), cmdExport},
+        {QStringLiteral("align"), cmdAlign},
         {QStringLiteral("analyze"), cmdAnalyze}, {QStringLiteral("import"), cmdImport},
         {QStringLiteral("update"), cmdUpdate},
         {QStringLiteral("hec495"), cmdHec495},

@@ -314,6 +314,8 @@ void SessionEngine::writeCurrent()
     m_family->writing(*m_current);
     m_current->sentNs = hostNowNs();
     m_rawLog.append(RawByteLog::Direction::Tx, m_current->wire, m_current->sentNs);
+    if (m_recorder)
+        m_recorder->appendSent(m_current->wire.constData(), size_t(m_current->wire.size()), m_current->sentNs, utcUs());
     if (m_transport->write(m_current->wire) != m_current->wire.size()) {
         RequestResult r;
         r.status = RequestStatus::NotSent;

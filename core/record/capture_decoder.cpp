@@ -32,8 +32,16 @@ void CaptureDecoder::feedWitlink(const uint8_t *data, size_t n, int64_t hostNs, 
     }
     for (const auto &f : m_witlinkFrames) {
         const auto reply = protocol::witlink::decodeReply(f);
-        if (const auto s = protocol::witlink::sampleOf(reply, hostNs)) {
+        if (auto s = protocol::witlink::sampleOf(reply, hostNs)) {
             ++m_witlinkByType[reply.kind == protocol::witlink::Reply::Kind::AllData ? "HEC495 record" : "HEC495 angles"];
+            // The answer to the request recorded before it (as Hec495Family brackets it live);
+            // output the module sends on its own has its arrival alone.
+            if (m_lastSentNs > 0 && m_lastSentNs <= hostNs) {
+                const clock::BracketTime b = clock::bracketTime(m_lastSentNs, hostNs);
+                s->commonTimeNs = b.hostNs;
+                s->commonUncertaintyNs = b.uncertaintyNs;
+                m_lastSentNs = 0;
+            }
             sink.onSample(*s, hostNs);
         }
         else if (!reply.ok())
@@ -49,6 +57,9 @@ void CaptureDecoder::feedChunk(const CaptureReader::Chunk &chunk, Sink &sink)
         break;
     case capture::ChunkLineIdle:
         lineIdle(chunk.monotonicNs, sink);
+        break;
+    case capture::ChunkSent:
+        m_lastSentNs = chunk.monotonicNs; // a request: the next answer's bracket opens here
         break;
     default:
         break; // a kind this version does not know
@@ -101,6 +112,7 @@ void CaptureDecoder::reset()
     m_demux.reset();
     m_witlinkDecoder.reset();
     m_haveLast = false;
+    m_lastSentNs = 0;
     const int baud = m_clocks.baud();
     m_clocks.clear(); // the counters jump where a seek lands
     m_clocks.setBaud(baud);

@@ -9,6 +9,7 @@
 // ends the text quarantine exactly as the session's idle timer does, so a replay decodes
 // what the live session decoded. Replay, export, analysis and `imudesk-cli decode` all decode
 // through it. Plain value class.
+#include "clock/clock_model.h"
 #include "clock/serial_frame_clocks.h"
 #include "protocol/hipnuc/payloads.h"
 #include "record/capture_reader.h"
@@ -82,6 +83,7 @@ private:
     uint64_t m_payloadErrors = 0;
     clock::SerialFrameClocks m_clocks;
     int64_t m_packetCommonNs = 0;
+    int64_t m_lastSentNs = 0; // the last request's time, until its answer
 };
 
 } // namespace imudesk::record

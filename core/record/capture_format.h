@@ -31,6 +31,7 @@ inline constexpr uint32_t kMaxChunkPayload = 16u << 20;
 enum ChunkKind : uint16_t {
     ChunkReceived = 0, // bytes received from the device, exactly as they arrived
     ChunkLineIdle = 1, // the session found the line idle here and released held bytes (payload: one 0 byte)
+    ChunkSent = 2,     // bytes the host wrote to the device (a request), at the time it wrote them
 };
 
 std::vector<uint8_t> encodeFileHeader(const CaptureHeader &header);

@@ -153,6 +153,19 @@ bool CaptureWriter::appendLineIdle(int64_t monotonicNs, int64_t wallUs)
     return true;
 }
 
+bool CaptureWriter::appendSent(const char *data, size_t n, int64_t monotonicNs, int64_t wallUs)
+{
+    if (n == 0 || n > capture::kMaxChunkPayload)
+        return n == 0;
+    std::lock_guard lock(m_mutex);
+    if (!m_status.running || m_stopRequested)
+        return false;
+    m_queue.push_back(Pending{capture::ChunkSent, monotonicNs, wallUs, QByteArray(data, qsizetype(n))});
+    m_queuedBytes += n;
+    m_wake.notify_one();
+    return true;
+}
+
 bool CaptureWriter::writeAll(const uint8_t *data, size_t n)
 {
     size_t done = 0;

@@ -68,6 +68,9 @@ public:
     bool append(const char *data, size_t n, int64_t monotonicNs, int64_t wallUs);
     // Marks where the session found the line idle (capture::ChunkLineIdle).
     bool appendLineIdle(int64_t monotonicNs, int64_t wallUs);
+    // Bytes the host wrote to the device (capture::ChunkSent): a polled device's request, whose
+    // time and its answer's bracket the sampling instant in a replay as they did live.
+    bool appendSent(const char *data, size_t n, int64_t monotonicNs, int64_t wallUs);
     // Writes what is queued, closes the file and joins the thread. Returns the error, if any.
     QString stop();
     Status status() const;

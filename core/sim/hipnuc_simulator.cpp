@@ -400,7 +400,7 @@ void HipnucSimulator::tick(int64_t t)
 MotionState HipnucSimulator::moduleStateAt(int64_t t) const
 {
     // t is the module's own time; what moves it moves in true time (sim_clock.h).
-    MotionState s = m_motion.at(double(m_options.clock.trueUs(t)) * 1e-6);
+    MotionState s = m_motion.at(double(m_options.clock.trueUs(t) + m_options.motionEpochUs) * 1e-6);
     if (m_options.faults.magCalFixture && m_mcalStat == 1 && t >= m_mcalStartUs)
         s = m_fixtureMotion.at(double(t - m_mcalStartUs) * 1e-6);
     if (m_mounted) {

@@ -180,6 +180,9 @@ struct SimOptions {
     // output periods and system_time follow it; its motion is taken at the true time. Whoever
     // moves the simulator's time (PtySimulator, a test) moves it to clock.deviceUs(true time).
     ClockError clock;
+    // Added to the true time where the motion is taken (µs): simulators started at different
+    // instants feel one fixture's motion together (PtySimulator sets it for Motion::Twists).
+    int64_t motionEpochUs = 0;
 };
 
 class HipnucSimulator {

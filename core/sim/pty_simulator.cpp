@@ -5,7 +5,6 @@
 #include "io/reading_priority.h"
 #include "sim/hipnuc_serial_device.h"
 
-#include <QElapsedTimer>
 #include <QLoggingCategory>
 #include <QObject>
 #include <QSocketNotifier>
@@ -91,7 +90,6 @@ struct PtySimulator::Engine {
     int master = -1;
     QSocketNotifier *notifier = nullptr;
     QTimer *timer = nullptr;
-    QElapsedTimer clock;
     bool clientPresent = false;
     int64_t unplugAtUs = -1; // SimFaults::unplugAtS on the engine's clock; < 0: never
 
@@ -106,7 +104,8 @@ struct PtySimulator::Engine {
         framesPausedInside{0};
     std::atomic<bool> unplugged{false};
 
-    int64_t nowUs() const { return clock.nsecsElapsed() / 1000; }
+    // True time: µs on the host's clock since start() (startHostNs).
+    int64_t nowUs() const { return (device::hostNowNs() - startHostNs) / 1000; }
     // The device's own time (its oscillator, sim_clock.h); the true time is nowUs().
     int64_t deviceNowUs() const { return clockError.deviceUs(nowUs()); }
 
@@ -333,10 +332,16 @@ bool PtySimulator::start(QString *error)
     ::fcntl(master, F_SETFD, FD_CLOEXEC);
 
     m_path = QString::fromLocal8Bit(name);
+    const int64_t startHostNs = device::hostNowNs();
+    // Modules on one fixture: every simulator on this host sees the fixture's motion at the
+    // same instant, whenever it was started (the motion is counted from the host clock's zero).
+    if (m_options.motion == Motion::Twists)
+        m_options.motionEpochUs = startHostNs / 1000;
     if (!m_device)
         m_device = std::make_unique<HipnucSerialDevice>(m_options);
     m_engine = std::make_unique<Engine>(std::move(m_device));
     m_engine->master = master;
+    m_engine->startHostNs = startHostNs;
     m_engine->clockError = m_clock;
     if (!m_adapter.isIdeal())
         m_engine->adapter.emplace(m_adapter);
@@ -357,8 +362,6 @@ bool PtySimulator::start(QString *error)
         // the reading threads' priority (as far as the OS allows), so that a busy host delays
         // the session's reading, which is under test, rather than the device's sending.
         io::raiseCurrentThreadForReading();
-        e->clock.start();
-        e->startHostNs = device::hostNowNs();
         e->notifier = new QSocketNotifier(qintptr(e->master), QSocketNotifier::Read, ctx);
         e->notifier->setEnabled(false);
         QObject::connect(e->notifier, &QSocketNotifier::activated, ctx, [e] { e->onReadable(); });

@@ -1,0 +1,58 @@
+#include "capture_sample_stream.h"
+
+namespace imudesk::record {
+
+bool CaptureSampleStream::open(const QString &path, QString *error)
+{
+    if (!m_reader.open(path, error))
+        return false;
+    m_decoder.configure(m_reader.header());
+    return true;
+}
+
+const model::Sample *CaptureSampleStream::peek()
+{
+    while (m_queue.empty() && !m_ended) {
+        CaptureReader::Chunk c;
+        const CaptureReader::Result r = m_reader.next(c);
+        if (r == CaptureReader::Result::Chunk) {
+            m_decoder.feedChunk(c, *this);
+        } else if (r != CaptureReader::Result::Damaged) {
+            m_decoder.finish(*this);
+            m_ended = true;
+        }
+    }
+    return m_queue.empty() ? nullptr : &m_queue.front();
+}
+
+model::Sample CaptureSampleStream::take()
+{
+    model::Sample s = std::move(m_queue.front());
+    m_queue.pop_front();
+    ++samples;
+    return s;
+}
+
+void CaptureSampleStream::onPacket(const protocol::hipnuc::Packet &p, int64_t hostNs)
+{
+    model::Sample s = protocol::hipnuc::toSample(p);
+    s.hostTimeNs = hostNs;
+    s.commonTimeNs = m_decoder.packetCommonNs();
+    push(std::move(s));
+}
+
+void CaptureSampleStream::onSample(const model::Sample &sample, int64_t hostNs)
+{
+    model::Sample s = sample;
+    s.hostTimeNs = hostNs;
+    push(std::move(s));
+}
+
+void CaptureSampleStream::push(model::Sample s)
+{
+    if (s.commonTimeNs != 0)
+        s.commonTimeNs += offsetNs; // the aligned time is what a reader sees
+    m_queue.push_back(std::move(s));
+}
+
+} // namespace imudesk::record

@@ -1,0 +1,217 @@
+#include "session_exporter.h"
+
+#include "format/sample_json.h"
+#include "model/sample.h"
+#include "record/capture_sample_stream.h"
+#include "record/csv_number.h"
+
+#include <QDir>
+#include <QSaveFile>
+
+#include <cmath>
+#include <deque>
+#include <memory>
+#include <optional>
+
+namespace imudesk::record {
+
+namespace {
+
+int frameTagOf(const std::string &source)
+{
+    if (source == "HI91")
+        return 0x91;
+    if (source == "HI92")
+        return 0x92;
+    if (source == "HI81")
+        return 0x81;
+    if (source == "HI83")
+        return 0x83;
+    return 0;
+}
+
+// Linear interpolation of a device's values at t between two samples.
+struct Interpolated {
+    double acc[3], gyr[3], rpy[3];
+};
+std::optional<Interpolated> interpolate(const model::Sample &a, int64_t ta, const model::Sample &b, int64_t tb, int64_t t)
+{
+    if (tb <= ta || t < ta || t > tb)
+        return std::nullopt;
+    const double f = double(t - ta) / double(tb - ta);
+    auto mix = [f](double x, double y) { return x + (y - x) * f; };
+    // Angles across +-180: the short way round.
+    auto mixAngle = [f](double x, double y) {
+        double d = std::remainder(y - x, 360.0);
+        return std::remainder(x + d * f, 360.0);
+    };
+    Interpolated v{};
+    v.acc[0] = mix(a.acc.x, b.acc.x) * model::kGravity;
+    v.acc[1] = mix(a.acc.y, b.acc.y) * model::kGravity;
+    v.acc[2] = mix(a.acc.z, b.acc.z) * model::kGravity;
+    v.gyr[0] = mix(a.gyr.x, b.gyr.x) * model::kDegToRad;
+    v.gyr[1] = mix(a.gyr.y, b.gyr.y) * model::kDegToRad;
+    v.gyr[2] = mix(a.gyr.z, b.gyr.z) * model::kDegToRad;
+    v.rpy[0] = mixAngle(a.roll, b.roll);
+    v.rpy[1] = mixAngle(a.pitch, b.pitch);
+    v.rpy[2] = mixAngle(a.yaw, b.yaw);
+    return v;
+}
+
+} // namespace
+
+SessionExporter::Result SessionExporter::run(const QString &folder, const Options &o)
+{
+    Result r;
+    SessionManifest manifest;
+    if (!SessionManifest::load(folder, &manifest, &r.error))
+        return r;
+    if (o.format == CaptureExporter::Format::VendorCsv) {
+        r.error = tr("A session of several devices exports to tidy CSV or JSON Lines; the vendor's layout has one "
+                     "device per file (export each capture on its own for it).");
+        return r;
+    }
+    if (o.gridMs > 0 && o.format != CaptureExporter::Format::TidyCsv) {
+        r.error = tr("A grid is written as tidy CSV (--format csv).");
+        return r;
+    }
+    if (o.output.isEmpty()) {
+        r.error = tr("No output file was given.");
+        return r;
+    }
+    std::vector<std::unique_ptr<CaptureSampleStream>> streams;
+    for (const SessionManifest::Device &d : manifest.devices) {
+        auto s = std::make_unique<CaptureSampleStream>();
+        s->name = d.name;
+        s->offsetNs = std::llround(d.offsetNs);
+        QString error;
+        if (!s->open(QDir(folder).filePath(d.file), &error)) {
+            r.error = tr("Device %1: %2").arg(d.name, error);
+            return r;
+        }
+        if (d.droppedOut())
+            r.notes << tr("Device %1 dropped out during the recording (session.json says when); its data ends there.")
+                           .arg(d.name);
+        streams.push_back(std::move(s));
+    }
+    if (streams.empty()) {
+        r.error = tr("The session holds no device.");
+        return r;
+    }
+    QSaveFile file(o.output);
+    if (!file.open(QIODevice::WriteOnly)) {
+        r.error = tr("Cannot write %1: %2").arg(o.output, file.errorString());
+        return r;
+    }
+    const int64_t origin = manifest.startedHostNs;
+    std::string buf;
+    auto flush = [&](bool force) {
+        if (!force && buf.size() < (1u << 20))
+            return true;
+        const bool ok = file.write(buf.data(), qint64(buf.size())) == qint64(buf.size());
+        buf.clear();
+        return ok;
+    };
+    bool writeOk = true;
+    if (o.gridMs <= 0) {
+        if (o.format == CaptureExporter::Format::TidyCsv) {
+            buf += "device,";
+            buf += CaptureExporter::tidyHeader(streams.front()->worldFrame());
+            buf += '\n';
+        }
+        // The next sample of all devices, by aligned time.
+        for (;;) {
+            CaptureSampleStream *next = nullptr;
+            int64_t best = 0;
+            for (auto &s : streams)
+                if (const model::Sample *p = s->peek()) {
+                    const int64_t k = s->key(*p);
+                    if (!next || k < best) {
+                        next = s.get();
+                        best = k;
+                    }
+                }
+            if (!next)
+                break;
+            const model::Sample s = next->take();
+            const std::string name = next->name.toStdString();
+            if (o.format == CaptureExporter::Format::TidyCsv) {
+                buf += name;
+                buf += ',';
+                CaptureExporter::appendTidyRow(buf, s, frameTagOf(s.source), origin);
+            } else {
+                const std::string json = format::sampleToJson(s, next->worldFrame());
+                buf += "{\"device\":\"" + name + "\",";
+                buf.append(json, 1, std::string::npos);
+                buf += '\n';
+            }
+            ++r.rows;
+            if (!(writeOk = flush(false)))
+                break;
+        }
+    } else {
+        // The grid: each device's two samples around the instant.
+        buf += "time_s";
+        for (auto &s : streams)
+            for (const char *col : {"acc_x_mps2", "acc_y_mps2", "acc_z_mps2", "gyr_x_radps", "gyr_y_radps", "gyr_z_radps",
+                                    "roll_deg", "pitch_deg", "yaw_deg"})
+                buf += ',' + s->name.toStdString() + '_' + col;
+        buf += '\n';
+        struct Around {
+            std::optional<model::Sample> prev;
+            int64_t prevKey = 0;
+        };
+        std::vector<Around> around(streams.size());
+        const auto step = int64_t(o.gridMs * 1e6);
+        const auto maxGap = int64_t(o.maxGapMs * 1e6);
+        // The grid starts at the first sample of any device, on a whole step from the origin.
+        int64_t first = INT64_MAX;
+        for (auto &s : streams)
+            if (const model::Sample *p = s->peek())
+                first = std::min(first, s->key(*p));
+        if (first != INT64_MAX) {
+            int64_t t = origin + ((first - origin) / step + 1) * step;
+            for (;;) {
+                bool anyLeft = false;
+                std::string row;
+                csv::appendFixed(row, double(t - origin) / 1e9, 6);
+                for (size_t i = 0; i < streams.size(); ++i) {
+                    CaptureSampleStream &s = *streams[i];
+                    Around &a = around[i];
+                    const model::Sample *p = nullptr;
+                    while ((p = s.peek()) && s.key(*p) <= t) {
+                        a.prevKey = s.key(*p);
+                        a.prev = s.take();
+                    }
+                    anyLeft = anyLeft || p;
+                    std::optional<Interpolated> v;
+                    if (p && a.prev && s.key(*p) - a.prevKey <= maxGap)
+                        v = interpolate(*a.prev, a.prevKey, *p, s.key(*p), t);
+                    for (int k = 0; k < 9; ++k) {
+                        row += ',';
+                        if (v)
+                            csv::appendFixed(row, k < 3 ? v->acc[k] : k < 6 ? v->gyr[k - 3] : v->rpy[k - 6], 6);
+                    }
+                }
+                if (!anyLeft)
+                    break;
+                buf += row;
+                buf += '\n';
+                ++r.rows;
+                if (!(writeOk = flush(false)))
+                    break;
+                t += step;
+            }
+        }
+    }
+    for (auto &s : streams)
+        r.samplesByDevice.push_back(s->samples);
+    if (!writeOk || !flush(true) || !file.commit()) {
+        r.error = tr("Writing %1 failed: %2. Free some space or choose another place.").arg(o.output, file.errorString());
+        return r;
+    }
+    r.ok = true;
+    return r;
+}
+
+} // namespace imudesk::record

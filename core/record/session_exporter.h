@@ -1,0 +1,39 @@
+#pragma once
+// Exports a recorded session (a folder with session.json, device/group_recording.h) as one
+// file with the devices aligned on the common time (issue 36 points 3 and 7):
+//   * tidy CSV / JSON Lines: every sample of every device, in the order of its aligned time
+//     (its common time plus the device's offset from twist-to-align; its arrival where it has no
+//     common time), with a device column (key) before the capture's own columns (keys);
+//   * a grid (gridMs > 0): one row per instant of a regular grid over the time all devices were
+//     recording, each device's acceleration, rate and attitude interpolated linearly between
+//     its two samples around the instant (blank where it has none within maxGapMs).
+// The devices are read side by side, a sample at a time: memory does not grow with the session.
+#include "record/capture_exporter.h"
+#include "record/session_manifest.h"
+
+#include <QCoreApplication>
+#include <QString>
+
+namespace imudesk::record {
+
+class SessionExporter {
+    Q_DECLARE_TR_FUNCTIONS(SessionExporter)
+
+public:
+    struct Options {
+        CaptureExporter::Format format = CaptureExporter::Format::TidyCsv; // not VendorCsv
+        QString output;
+        double gridMs = 0;    // > 0: resample onto this grid (tidy CSV only)
+        double maxGapMs = 50; // grid: no value where a device's samples are further apart
+    };
+    struct Result {
+        bool ok = false;
+        QString error;
+        uint64_t rows = 0;
+        std::vector<uint64_t> samplesByDevice;
+        QStringList notes; // e.g. devices that dropped out
+    };
+    static Result run(const QString &folder, const Options &options);
+};
+
+} // namespace imudesk::record

@@ -1,0 +1,176 @@
+// imudesk-cli record PORT,PORT,... (issue 36 point 3): three simulated devices of two families
+// recorded as one session, one of them unplugged half-way; the session folder's manifest, the
+// captures (nothing lost of the devices that stayed), the HEC495's brackets from the recorded
+// requests, and the aligned export (merged by common time, and on a grid).
+#include "../common/cli_run.h"
+#include "../common/test_main.h"
+#include "record/capture_sample_stream.h"
+#include "record/session_manifest.h"
+#include "sim/hec495_simulator.h"
+#include "sim/pty_simulator.h"
+
+#include <QDir>
+#include <QFile>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include <algorithm>
+#include <memory>
+
+using namespace imudesk;
+
+namespace {
+
+std::vector<model::Sample> samplesOf(const QString &path)
+{
+    std::vector<model::Sample> out;
+    record::CaptureSampleStream s;
+    QString error;
+    if (!s.open(path, &error))
+        return out;
+    while (s.peek())
+        out.push_back(s.take());
+    return out;
+}
+
+QStringList linesOf(const QString &path)
+{
+    QFile f(path);
+    if (!f.open(QIODevice::ReadOnly))
+        return {};
+    return QString::fromUtf8(f.readAll()).split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+}
+
+} // namespace
+
+class TstCliSession : public QObject {
+    Q_OBJECT
+
+private Q_SLOTS:
+    void threeDevicesOneUnplugged()
+    {
+        sim::SimOptions a;
+        a.seed = 1;
+        sim::SimOptions b;
+        b.seed = 2;
+        b.faults.unplugAtS = 4;
+        sim::Hec495Options c;
+        c.baud = 9600;
+        sim::PtySimulator simA(a), simB(b), simC(std::make_unique<sim::Hec495Simulator>(c));
+        QString error;
+        QVERIFY2(simA.start(&error) && simB.start(&error) && simC.start(&error), qPrintable(error));
+        QTemporaryDir dir;
+        const QString folder = dir.filePath(QStringLiteral("bench-run"));
+        const QString ports = QStringLiteral("%1:115200,%2:115200,%3:9600")
+                                  .arg(simA.devicePath(), simB.devicePath(), simC.devicePath());
+        const auto r = test::runCli({"record", ports, "-o", folder, "--duration", "6"}, 60000);
+        QVERIFY2(r.code == 0, qPrintable(r.out + r.err));
+        QVERIFY2(r.out.contains(QStringLiteral("DROPPED OUT")), qPrintable(r.out));
+
+        record::SessionManifest m;
+        QVERIFY2(record::SessionManifest::load(folder, &m, &error), qPrintable(error));
+        QCOMPARE(int(m.devices.size()), 3);
+        QVERIFY(!m.devices[0].droppedOut());
+        QVERIFY(m.devices[1].droppedOut()); // the unplugged one is marked
+        QVERIFY(!m.devices[2].droppedOut());
+        QCOMPARE(m.devices[0].linkKind, QStringLiteral("HiPNUC serial"));
+        QCOMPARE(m.devices[2].linkKind, QStringLiteral("HEC495 serial"));
+        QVERIFY(!m.devices[0].clocks.empty() && m.devices[0].clocks.front().method == device::ClockStats::Method::Counter);
+        QVERIFY(!m.devices[2].clocks.empty() && m.devices[2].clocks.front().method == device::ClockStats::Method::Bracket);
+
+        // A: every frame of 6 s at 100 Hz, no gap in its device times, each with a common time
+        // no later than its arrival.
+        const auto sa = samplesOf(QDir(folder).filePath(m.devices[0].file));
+        QVERIFY2(sa.size() > 550 && sa.size() < 650, qPrintable(QString::number(sa.size())));
+        for (size_t i = 1; i < sa.size(); ++i)
+            QCOMPARE(sa[i].deviceTimeMs - sa[i - 1].deviceTimeMs, 10.0);
+        QVERIFY(std::all_of(sa.begin() + 200, sa.end(),
+                            [](const model::Sample &s) { return s.commonTimeNs != 0 && s.commonTimeNs <= s.hostTimeNs; }));
+        // B: what came before the cable was pulled is all there.
+        const auto sb = samplesOf(QDir(folder).filePath(m.devices[1].file));
+        QVERIFY2(sb.size() > 100, qPrintable(QString::number(sb.size())));
+        for (size_t i = 1; i < sb.size(); ++i)
+            QCOMPARE(sb[i].deviceTimeMs - sb[i - 1].deviceTimeMs, 10.0);
+        // C: the polled answers, each bracketed by its recorded request.
+        const auto sc = samplesOf(QDir(folder).filePath(m.devices[2].file));
+        QVERIFY2(sc.size() > 20, qPrintable(QString::number(sc.size())));
+        int bracketed = 0;
+        for (const model::Sample &s : sc)
+            if (s.commonUncertaintyNs > 0) {
+                ++bracketed;
+                QVERIFY(s.commonTimeNs + s.commonUncertaintyNs == s.hostTimeNs
+                        || s.commonTimeNs + s.commonUncertaintyNs == s.hostTimeNs + 1);
+            }
+        QVERIFY2(bracketed >= int(sc.size()) - 1, qPrintable(QStringLiteral("%1 of %2").arg(bracketed).arg(sc.size())));
+
+        // The merged export: every sample once, in the order of the common time.
+        const QString csv = dir.filePath(QStringLiteral("all.csv"));
+        const auto e = test::runCli({"export", folder, "--format", "csv", "-o", csv});
+        QVERIFY2(e.code == 0, qPrintable(e.err));
+        const QStringList rows = linesOf(csv);
+        QCOMPARE(rows.size() - 1, int(sa.size() + sb.size() + sc.size()));
+        const QStringList head = rows.front().split(QLatin1Char(','));
+        QCOMPARE(head.front(), QStringLiteral("device"));
+        const int common = int(head.indexOf(QStringLiteral("common_time_s")));
+        QVERIFY(common > 0);
+        double last = -1e9;
+        int withCommon = 0;
+        for (int i = 1; i < rows.size(); ++i) {
+            const QString v = rows[i].split(QLatin1Char(',')).value(common);
+            if (v.isEmpty())
+                continue;
+            ++withCommon;
+            QVERIFY2(v.toDouble() >= last - 1e-6, qPrintable(rows[i]));
+            last = v.toDouble();
+        }
+        QVERIFY(withCommon > int(rows.size()) * 8 / 10);
+        // On a 10 ms grid: about one row per 10 ms of the session.
+        const QString grid = dir.filePath(QStringLiteral("grid.csv"));
+        const auto g = test::runCli({"export", folder, "--format", "csv", "--grid-ms", "10", "-o", grid});
+        QVERIFY2(g.code == 0, qPrintable(g.err));
+        const QStringList gridRows = linesOf(grid);
+        QVERIFY2(gridRows.size() > 500 && gridRows.size() < 700, qPrintable(QString::number(gridRows.size())));
+        QCOMPARE(gridRows.front().split(QLatin1Char(',')).size(), 1 + 3 * 9);
+        simA.stop();
+        simB.stop();
+        simC.stop();
+    }
+
+    void manifestRefusesWhatIsNotOne()
+    {
+        record::SessionManifest m;
+        QString error;
+        QVERIFY(!record::SessionManifest::fromJson("{\"format\":\"something\"}", &m, &error));
+        QVERIFY(error.contains(QStringLiteral("not a session manifest")));
+        QVERIFY(!record::SessionManifest::fromJson("{\"format\":\"imudesk-session\",\"version\":1,\"devices\":"
+                                                   "[{\"name\":\"x\",\"file\":\"../etc/passwd\"}]}",
+                                                   &m, &error));
+        QVERIFY(error.contains(QStringLiteral("capture file")));
+        // A round trip keeps what a session needs.
+        record::SessionManifest a;
+        a.startedHostNs = 123456789012345;
+        record::SessionManifest::Device d;
+        d.name = QStringLiteral("A");
+        d.file = QStringLiteral("01-A.imucap");
+        d.offsetNs = -531234.5;
+        d.offsetMethod = QStringLiteral("twist");
+        d.events.push_back({987654321098765, QStringLiteral("disconnected"), QStringLiteral("pulled")});
+        device::ClockStats c;
+        c.source = "HI91";
+        c.state = clock::ClockModel::State::Aligned;
+        c.driftPpm = 39.99;
+        d.clocks.push_back(c);
+        a.devices.push_back(d);
+        record::SessionManifest b;
+        QVERIFY2(record::SessionManifest::fromJson(a.toJson(), &b, &error), qPrintable(error));
+        QCOMPARE(b.startedHostNs, a.startedHostNs);
+        QCOMPARE(b.devices.front().offsetNs, d.offsetNs);
+        QCOMPARE(b.devices.front().events.front().hostNs, int64_t(987654321098765));
+        QVERIFY(b.devices.front().droppedOut());
+        QCOMPARE(b.devices.front().clocks.front().driftPpm, 39.99);
+        QVERIFY(b.devices.front().clocks.front().state == clock::ClockModel::State::Aligned);
+    }
+};
+
+IMUDESK_TEST_GUILESS_MAIN(TstCliSession)
+#include "tst_cli_session.moc"
