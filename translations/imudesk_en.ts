@@ -4,7 +4,7 @@
 <context>
     <name>CaptureExporter</name>
     <message numerus="yes">
-        <location filename="../core/record/capture_exporter.cpp" line="+384"/>
+        <location filename="../core/record/capture_exporter.cpp" line="+406"/>
         <source>%n damaged chunk(s) were skipped</source>
         <translation>
             <numerusform>%n damaged chunk was skipped</numerusform>
@@ -45,7 +45,7 @@
 <context>
     <name>imudesk::models::LatestValuesModel</name>
     <message numerus="yes">
-        <location filename="../core/itemmodels/latest_values_model.cpp" line="+159"/>
+        <location filename="../core/itemmodels/latest_values_model.cpp" line="+150"/>
         <source>No new value for %n s: the device stopped sending this quantity (another output content, a polled record that stopped, or a link that went quiet).</source>
         <translation>
             <numerusform>No new value for %n s: the device stopped sending this quantity (another output content, a polled record that stopped, or a link that went quiet).</numerusform>
@@ -78,7 +78,7 @@
 <context>
     <name>imudesk::ui::ChartPanel</name>
     <message numerus="yes">
-        <location filename="../ui/charts/chart_panel.cpp" line="+347"/>
+        <location filename="../ui/charts/chart_panel.cpp" line="+348"/>
         <source>%n chart(s) saved as one PNG in %1 (%2)</source>
         <translation>
             <numerusform>%n chart saved as one PNG in %1 (%2)</numerusform>
@@ -165,6 +165,17 @@
         <translation>
             <numerusform>%n frame</numerusform>
             <numerusform>%n frames</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>imudesk::ui::SessionRecordingWindow</name>
+    <message numerus="yes">
+        <location filename="../ui/recording/session_recording_window.cpp" line="+184"/>
+        <source>Recording %n device(s) into %1…</source>
+        <translation>
+            <numerusform>Recording %n device into %1…</numerusform>
+            <numerusform>Recording %n devices into %1…</numerusform>
         </translation>
     </message>
 </context>

@@ -1139,18 +1139,18 @@
 <context>
     <name>CaptureExporter</name>
     <message>
-        <location filename="../core/record/capture_exporter.cpp" line="+70"/>
+        <location filename="../core/record/capture_exporter.cpp" line="+71"/>
         <source>Cannot write %1: %2</source>
         <translation>无法写入 %1：%2</translation>
     </message>
     <message>
-        <location line="+119"/>
+        <location line="+129"/>
         <location line="+24"/>
         <source>Writing %1 failed: %2. Check the free disk space.</source>
         <translation>写入 %1 失败：%2。请检查磁盘剩余空间。</translation>
     </message>
     <message>
-        <location line="+115"/>
+        <location line="+125"/>
         <source>No output file was given.</source>
         <translation>未指定输出文件。</translation>
     </message>
@@ -1165,7 +1165,7 @@
         <translation>模块以北西天（NWU）坐标系输出姿态（CONFIG IMU COORD 4）；厂商 CSV 的格式没有列可以注明：其中的角度和四元数均为 NWU。</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+30"/>
         <source>Export cancelled.</source>
         <translation>导出已取消。</translation>
     </message>
@@ -1315,7 +1315,7 @@
         <translation>记录已停止：磁盘写入速度跟不上（超过 %1 MB 数据等待写入）。请记录到速度更快的磁盘。</translation>
     </message>
     <message>
-        <location line="+98"/>
+        <location line="+111"/>
         <source>Recording stopped: writing %1 failed (%2). Everything up to that point is in the file; free some disk space and record again.</source>
         <translation>记录已停止：写入 %1 失败（%2）。此前的数据均已保存在文件中；请释放一些磁盘空间后重新记录。</translation>
     </message>
@@ -2764,7 +2764,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>PtySimulator</name>
     <message>
-        <location filename="../core/sim/pty_simulator.cpp" line="+307"/>
+        <location filename="../core/sim/pty_simulator.cpp" line="+318"/>
         <source>Cannot open a pseudo-terminal: %1</source>
         <translation>无法打开伪终端：%1</translation>
     </message>
@@ -3305,6 +3305,49 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <location line="+18"/>
         <source>reading from %1 failed: %2 (was the device unplugged?)</source>
         <translation>从 %1 读取失败：%2（设备是否已拔出？）</translation>
+    </message>
+</context>
+<context>
+    <name>SessionExporter</name>
+    <message>
+        <location filename="../core/record/session_exporter.cpp" line="+70"/>
+        <source>A session of several devices exports to tidy CSV or JSON Lines; the vendor&apos;s layout has one device per file (export each capture on its own for it).</source>
+        <translation>多设备会话只能导出为整洁 CSV 或 JSON Lines；厂商格式每个文件只含一台设备（如需该格式，请逐个导出各采集文件）。</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>A grid is written as tidy CSV (--format csv).</source>
+        <translation>按网格重采样时只能输出整洁 CSV（--format csv）。</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>No output file was given.</source>
+        <translation>未指定输出文件。</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Device %1: %2</source>
+        <translation>设备 %1：%2</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Device %1 dropped out during the recording (session.json says when); its data ends there.</source>
+        <translation>设备 %1 在录制期间掉线（时间见 session.json）；其数据到此为止。</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>The session holds no device.</source>
+        <translation>该会话中没有设备。</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Cannot write %1: %2</source>
+        <translation>无法写入 %1：%2</translation>
+    </message>
+    <message>
+        <location line="+107"/>
+        <source>Writing %1 failed: %2. Free some space or choose another place.</source>
+        <translation>写入 %1 失败：%2。请释放一些空间或选择其他位置。</translation>
     </message>
 </context>
 <context>
@@ -4167,7 +4210,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>无法发送帧 %1：CAN 接口未连接</translation>
     </message>
     <message>
-        <location line="+52"/>
+        <location line="+59"/>
         <source>boot-up</source>
         <translation>启动报文</translation>
     </message>
@@ -4187,7 +4230,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>SDO 扫描</translation>
     </message>
     <message>
-        <location line="+49"/>
+        <location line="+58"/>
         <source>too many requests are waiting; try again when they are done</source>
         <translation>等待中的请求过多；请在其完成后重试</translation>
     </message>
@@ -4242,7 +4285,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>“%1”回读值为 %2，应为 %3</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+17"/>
         <source>%1: done</source>
         <translation>%1：完成</translation>
     </message>
@@ -4431,12 +4474,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <location line="+3"/>
         <location line="+66"/>
         <location line="+30"/>
-        <location line="+129"/>
+        <location line="+116"/>
         <source>the protocol is not known yet: choose it or wait for traffic</source>
         <translation>协议尚未确定：请选择协议，或等待总线上出现数据</translation>
     </message>
     <message>
-        <location line="-219"/>
+        <location line="-206"/>
         <source>the HEC495 rate code is 0 (off) to 6 (100 Hz)</source>
         <translation>HEC495 频率代码为 0（关闭）至 6（100 Hz）</translation>
     </message>
@@ -4508,12 +4551,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
     <message>
         <location line="+3"/>
         <location line="+8"/>
-        <location line="+188"/>
+        <location line="+175"/>
         <source>reset</source>
         <translation>复位</translation>
     </message>
     <message>
-        <location line="-195"/>
+        <location line="-182"/>
         <location line="+5"/>
         <location line="+8"/>
         <source>set the node ID</source>
@@ -4677,7 +4720,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>NMT 停止，所有节点</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+26"/>
         <source>output on</source>
         <translation>开启输出</translation>
     </message>
@@ -4692,7 +4735,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>输出使能</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+10"/>
         <source>NMT start</source>
         <translation>NMT 启动</translation>
     </message>
@@ -4702,7 +4745,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>NMT 停止</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+20"/>
         <source>&quot;%1&quot; needs a HiPNUC J1939 or CANopen device (the HEC495 saves at once)</source>
         <translation>“%1”需要 HiPNUC J1939 或 CANopen 设备（HEC495 会立即保存）</translation>
     </message>
@@ -4728,9 +4771,37 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
 </context>
 <context>
+    <name>imudesk::device::GroupRecording</name>
+    <message>
+        <location filename="../core/device/group_recording.cpp" line="+41"/>
+        <source>A session recording is already running.</source>
+        <translation>会话录制已在进行中。</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>No device to record: connect one first.</source>
+        <translation>没有可录制的设备：请先连接一台设备。</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 already holds a recorded session; choose another folder.</source>
+        <translation>%1 中已有录制的会话；请选择其他文件夹。</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Cannot create the folder %1: check that the place exists and can be written to.</source>
+        <translation>无法创建文件夹 %1：请检查该位置是否存在且可写入。</translation>
+    </message>
+    <message>
+        <location line="+53"/>
+        <source>None of the devices could be recorded: %1.</source>
+        <translation>所有设备均无法录制：%1。</translation>
+    </message>
+</context>
+<context>
     <name>imudesk::device::Hec495Family</name>
     <message>
-        <location filename="../core/device/hec495_family.cpp" line="+77"/>
+        <location filename="../core/device/hec495_family.cpp" line="+78"/>
         <source>the request&apos;s data is longer than a Witlink frame can carry</source>
         <translation>请求数据超出 Witlink 帧所能承载的长度</translation>
     </message>
@@ -4750,7 +4821,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>“%1”尝试 %2 次（每次 %3 ms）均无应答（请检查波特率和模块地址；处于连续输出状态的 RS-485 模块可能漏收指令：请设为问答模式）</translation>
     </message>
     <message>
-        <location line="+185"/>
+        <location line="+194"/>
         <source>the module answered with an invalid reply: %1</source>
         <translation>模块返回了无效应答：%1</translation>
     </message>
@@ -4924,7 +4995,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>%2 处出现 Modbus 异常 %1。</translation>
     </message>
     <message>
-        <location filename="../core/device/modbus_family.cpp" line="+118"/>
+        <location filename="../core/device/modbus_family.cpp" line="+119"/>
         <source>Port open at %1 baud</source>
         <translation>串口已打开，波特率 %1</translation>
     </message>
@@ -4959,7 +5030,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>应答中的寄存器数量与请求的不一致</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+34"/>
         <source>Reading the identity of node %1</source>
         <translation>正在读取节点 %1 的设备标识</translation>
     </message>
@@ -4979,7 +5050,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>节点 %1 已恢复应答</translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+42"/>
         <source>not connected</source>
         <translation>未连接</translation>
     </message>
@@ -5105,7 +5176,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>串口未打开</translation>
     </message>
     <message>
-        <location line="+52"/>
+        <location line="+55"/>
         <source>writing to the port failed</source>
         <translation>向串口写入失败</translation>
     </message>
@@ -5115,7 +5186,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>%1 ms 内没有应答</translation>
     </message>
     <message>
-        <location line="+80"/>
+        <location line="+81"/>
         <source>Bytes keep arriving on %1 but none of them form a frame: the device probably runs at another baud rate now. Disconnect and connect again with the baud rate set to Auto.</source>
         <translation>%1 上持续收到字节，但无法组成任何数据帧：设备可能已改用其他波特率。请断开连接，并将波特率设为“自动”后重新连接。</translation>
     </message>
@@ -5123,7 +5194,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::io::CanTransport</name>
     <message>
-        <location filename="../core/io/can_transport.cpp" line="+64"/>
+        <location filename="../core/io/can_transport.cpp" line="+66"/>
         <source>the CAN plugin &quot;%1&quot; is not installed (available: %2)</source>
         <translation>未安装 CAN 插件“%1”（可用插件：%2）</translation>
     </message>
@@ -5376,6 +5447,114 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
 </context>
 <context>
+    <name>imudesk::models::ClockStatsModel</name>
+    <message>
+        <location filename="../core/itemmodels/clock_stats_model.cpp" line="+39"/>
+        <source>device counter</source>
+        <translation>设备计数器</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>request/answer</source>
+        <translation>请求/应答</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>receive stamp</source>
+        <translation>接收时间戳</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>aligned</source>
+        <translation>已对齐</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>uncertain: fitting, %1 s of the %2 s it needs</source>
+        <translation>不确定：正在拟合，已有 %1 s，需要 %2 s</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>free-running: the interface gives no receive stamps</source>
+        <translation>自由运行：接口不提供接收时间戳</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>free-running: no device time yet</source>
+        <translation>自由运行：尚无设备时间</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>The device&apos;s own time, fitted against the host&apos;s clock from its least delayed samples</source>
+        <translation>设备自身的时间，由延迟最小的样本对主机时钟拟合得到</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>No device time: the sample was taken between the request and its answer; the middle is used</source>
+        <translation>无设备时间：采样时刻位于请求与应答之间；取两者的中点</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>No device time: the interface&apos;s receive stamp less the frame&apos;s time on the bus</source>
+        <translation>无设备时间：取接口的接收时间戳减去该帧在总线上的传输时间</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>How fast the device&apos;s clock runs against the host&apos;s, in parts per million</source>
+        <translation>设备时钟相对主机时钟的快慢，单位 ppm（百万分之一）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Scatter of the least delayed samples about the fitted line, in ms</source>
+        <translation>延迟最小的样本相对拟合直线的离散程度，单位 ms</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Half the request-to-answer time: the sampling instant lies within this, in ms</source>
+        <translation>从请求到应答时间的一半：采样时刻位于此范围内，单位 ms</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Times the device&apos;s counter restarted or its time base changed (each starts the fit again)</source>
+        <translation>设备计数器重启或其时间基准改变的次数（每次都会重新开始拟合）</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>Stream</source>
+        <translation>数据流</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Time from</source>
+        <translation>时间来源</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>State</source>
+        <translation>状态</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Drift (ppm)</source>
+        <translation>漂移（ppm）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Jitter (ms)</source>
+        <translation>抖动（ms）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>± (ms)</source>
+        <translation>±（ms）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Resets</source>
+        <translation>复位次数</translation>
+    </message>
+</context>
+<context>
     <name>imudesk::models::CommandLogModel</name>
     <message>
         <location filename="../core/itemmodels/command_log_model.cpp" line="+88"/>
@@ -5431,7 +5610,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::models::LatestValuesModel</name>
     <message>
-        <location filename="../core/itemmodels/latest_values_model.cpp" line="+181"/>
+        <location filename="../core/itemmodels/latest_values_model.cpp" line="+172"/>
         <source>Quantity</source>
         <translation>物理量</translation>
     </message>
@@ -7270,7 +7449,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::AttitudeWidget</name>
     <message>
-        <location filename="../ui/attitude/attitude_widget.cpp" line="+295"/>
+        <location filename="../ui/attitude/attitude_widget.cpp" line="+305"/>
         <source>X</source>
         <translation>X</translation>
     </message>
@@ -7306,13 +7485,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>U (z)</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <location line="+382"/>
+        <location line="-103"/>
         <source>ENU 3-1-2</source>
         <translation>ENU 3-1-2</translation>
     </message>
     <message>
-        <location line="-390"/>
+        <location line="+96"/>
         <location line="+10"/>
         <source>N (x)</source>
         <translation>N (x)</translation>
@@ -7323,13 +7501,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>W (y)</translation>
     </message>
     <message>
-        <location line="+2"/>
-        <location line="+387"/>
+        <location line="-97"/>
         <source>NWU 3-1-2</source>
         <translation>NWU 3-1-2</translation>
     </message>
     <message>
-        <location line="-379"/>
+        <location line="+107"/>
         <source>E (y)</source>
         <translation>E (y)</translation>
     </message>
@@ -8438,16 +8615,16 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
     <message>
         <location line="+1"/>
-        <source>Host arrival time</source>
-        <translation>主机接收时间</translation>
+        <source>Common time</source>
+        <translation>公共时间</translation>
     </message>
     <message>
         <location line="+2"/>
-        <source>Device clock: the module&apos;s own timestamps, where lost samples show as gaps. Host arrival time: when the samples reached this computer.</source>
-        <translation>设备时钟：模块自身的时间戳，丢失的采样显示为间断。主机接收时间：采样到达本计算机的时间。</translation>
+        <source>Device clock: the module&apos;s own timestamps, where lost samples show as gaps. Common time: when each sample was taken, on this computer&apos;s clock (from the device&apos;s own clock where it has one, else when it arrived): every device on one time base.</source>
+        <translation>设备时钟：模块自身的时间戳，丢失的样本显示为空缺。公共时间：每个样本的采样时刻，以本机时钟表示（设备有自身时钟时据此换算，否则取样本的到达时间）：所有设备使用同一时间基准。</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>Cursor</source>
         <translation>游标</translation>
     </message>
@@ -8578,11 +8755,6 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>设备时间（s）</translation>
     </message>
     <message>
-        <location line="+0"/>
-        <source>Host arrival time (s)</source>
-        <translation>主机接收时间（s）</translation>
-    </message>
-    <message>
         <location line="+6"/>
         <source>%1 min</source>
         <translation>%1 min</translation>
@@ -8639,7 +8811,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>自动缩放</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="-148"/>
+        <source>Common time (s)</source>
+        <translation>公共时间（s）</translation>
+    </message>
+    <message>
+        <location line="+152"/>
         <source>Lower end of the vertical axis (no unit)</source>
         <translation>纵轴下限（无单位）</translation>
     </message>
@@ -9124,9 +9301,47 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
 </context>
 <context>
+    <name>imudesk::ui::CorrelationPlot</name>
+    <message>
+        <location filename="../ui/recording/twist_align_dialog.cpp" line="+168"/>
+        <source>Normalised cross-correlation of each device&apos;s gyro magnitude with the reference&apos;s, against the shift of its time (ms). The marker is the offset found; a good match peaks close to 1.</source>
+        <translation>各设备陀螺仪角速度模值与参考设备的归一化互相关，随该设备时间平移量（ms）的变化曲线。标记处为求得的偏移；匹配良好时峰值接近 1。</translation>
+    </message>
+    <message>
+        <location line="+32"/>
+        <source>Find offsets to see how each device&apos;s gyro magnitude matches the reference&apos;s.</source>
+        <translation>按“计算偏移”后，可在此查看各设备的陀螺仪角速度模值与参考设备的匹配情况。</translation>
+    </message>
+    <message>
+        <location line="+28"/>
+        <source>Correlation</source>
+        <translation>相关系数</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Shift of the device&apos;s time (ms)</source>
+        <translation>设备时间平移（ms）</translation>
+    </message>
+    <message>
+        <location line="+51"/>
+        <source>least correlation accepted</source>
+        <translation>可接受的最低相关系数</translation>
+    </message>
+    <message>
+        <location line="+41"/>
+        <source>%1: %2 ms, correlation %3</source>
+        <translation>%1：%2 ms，相关系数 %3</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1: not aligned</source>
+        <translation>%1：未对齐</translation>
+    </message>
+</context>
+<context>
     <name>imudesk::ui::DeviceWorkspace</name>
     <message>
-        <location filename="../ui/workspace/device_workspace.cpp" line="+342"/>
+        <location filename="../ui/workspace/device_workspace.cpp" line="+355"/>
         <source>New connection</source>
         <translation>新连接</translation>
     </message>
@@ -9136,7 +9351,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>%2 上的 %1</translation>
     </message>
     <message>
-        <location line="+201"/>
+        <location line="+203"/>
         <source>Not connected</source>
         <translation>未连接</translation>
     </message>
@@ -9273,6 +9488,11 @@ Link load = bytes per second × 10 bits / baud rate.</source>
         <translation>3D 姿态</translation>
     </message>
     <message>
+        <location line="+3"/>
+        <source>Time sync</source>
+        <translation>时间同步</translation>
+    </message>
+    <message>
         <location filename="../ui/workspace/device_workspace_layout.cpp" line="+168"/>
         <source>&amp;Monitor</source>
         <translation>监视(&amp;M)</translation>
@@ -9293,7 +9513,7 @@ Link load = bytes per second × 10 bits / baud rate.</source>
         <translation>分析(&amp;N)</translation>
     </message>
     <message>
-        <location line="+164"/>
+        <location line="+165"/>
         <source>%1 was floating off the screen</source>
         <translation>%1 浮动在屏幕之外</translation>
     </message>
@@ -9323,7 +9543,7 @@ Link load = bytes per second × 10 bits / baud rate.</source>
         <translation>数值表太窄，无法容纳其各列</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/device_workspace.cpp" line="+1"/>
+        <location filename="../ui/workspace/device_workspace.cpp" line="-2"/>
         <source>Configuration</source>
         <translation>配置</translation>
     </message>
@@ -10825,7 +11045,7 @@ Samples: %3</source>
 <context>
     <name>imudesk::ui::MainWindow</name>
     <message>
-        <location filename="../ui/workspace/main_window.cpp" line="+386"/>
+        <location filename="../ui/workspace/main_window.cpp" line="+394"/>
         <source>Choose a port first.</source>
         <translation>请先选择串口。</translation>
     </message>
@@ -12129,6 +12349,166 @@ Default: %2</source>
     </message>
 </context>
 <context>
+    <name>imudesk::ui::SessionRecordingWindow</name>
+    <message>
+        <location filename="../ui/recording/session_recording_window.cpp" line="+41"/>
+        <source>Folder for the session</source>
+        <translation>会话存放文件夹</translation>
+    </message>
+    <message>
+        <location line="+49"/>
+        <source>Exported the aligned session to %1.</source>
+        <translation>已将对齐后的会话导出到 %1。</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>Record all devices</source>
+        <translation>录制所有设备</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Records every connected device into one session folder: each device&apos;s capture and session.json with their clocks. Replays and exports put the devices on one time base.</source>
+        <translation>将所有已连接的设备录制到同一个会话文件夹：包括每台设备的采集文件，以及记录各设备时钟的 session.json。回放和导出时，所有设备使用同一时间基准。</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Into:</source>
+        <translation>保存到：</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A new folder session-&lt;date&gt;-&lt;time&gt; is made here for each session</source>
+        <translation>每次会话都会在此新建一个 session-&lt;date&gt;-&lt;time&gt; 文件夹</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Choose…</source>
+        <translation>选择…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Start</source>
+        <translation>开始(&amp;S)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Start recording every connected device</source>
+        <translation>开始录制所有已连接的设备</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>S&amp;top</source>
+        <translation>停止(&amp;T)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Export aligned…</source>
+        <translation>导出对齐数据(&amp;E)…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The last session as one tidy CSV, every device&apos;s samples in the order of the common time</source>
+        <translation>将最近一次会话导出为一个整洁 CSV，所有设备的样本按公共时间排序</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>T&amp;wist to align…</source>
+        <translation>扭转对齐(&amp;W)…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Find each device&apos;s constant offset from sharp turns of a shared fixture</source>
+        <translation>根据共用工装的急速转动，求出每台设备的固定时间偏移</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Device</source>
+        <translation>设备</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Link</source>
+        <translation>链路</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Bytes</source>
+        <translation>字节数</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Frames</source>
+        <translation>帧数</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>State</source>
+        <translation>状态</translation>
+    </message>
+    <message>
+        <location line="+41"/>
+        <source>No connected device can be recorded: connect the devices in their tabs first.</source>
+        <translation>没有可录制的已连接设备：请先在各设备的标签页中连接设备。</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+17"/>
+        <source>Recording %n device(s) into %1…</source>
+        <translation>
+            <numerusform>正在将 %n 台设备录制到 %1…</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+34"/>
+        <source>recording</source>
+        <translation>录制中</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>dropped out: %1</source>
+        <translation>已掉线：%1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>back after a drop-out, recording</source>
+        <translation>掉线后已恢复，录制中</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>stopped: %1</source>
+        <translation>已停止：%1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>dropped out (marked in the session)</source>
+        <translation>已掉线（已在会话中标记）</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>complete</source>
+        <translation>已完成</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Recording for %1 s into %2</source>
+        <translation>正在录制到 %2，已录制 %1 s</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Session recorded in %1.</source>
+        <translation>会话已录制到 %1。</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The recordings stopped, but the session&apos;s manifest could not be written: %1. The captures are in %2.</source>
+        <translation>录制已停止，但无法写入会话清单文件：%1。采集文件位于 %2。</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>Exporting the session…</source>
+        <translation>正在导出会话…</translation>
+    </message>
+</context>
+<context>
     <name>imudesk::ui::SettingValueDelegate</name>
     <message>
         <location filename="../ui/configuration/setting_value_delegate.cpp" line="+83"/>
@@ -12797,7 +13177,7 @@ Edit it (Edit…) and start again.</source>
 <context>
     <name>imudesk::ui::ToolActions</name>
     <message>
-        <location filename="../ui/workspace/tool_actions.cpp" line="+110"/>
+        <location filename="../ui/workspace/tool_actions.cpp" line="+118"/>
         <source>&amp;Open capture…</source>
         <translation>打开记录(&amp;O)…</translation>
     </message>
@@ -12903,6 +13283,26 @@ Edit it (Edit…) and start again.</source>
     </message>
     <message>
         <location line="+1"/>
+        <source>Record &amp;all devices…</source>
+        <translation>录制所有设备(&amp;A)…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Record every connected tab into one session folder, the devices on one time base</source>
+        <translation>将所有已连接的标签页录制到同一个会话文件夹，所有设备使用同一时间基准</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>T&amp;wist to align…</source>
+        <translation>扭转对齐(&amp;W)…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Align the devices of a recorded session from sharp turns of the fixture they share</source>
+        <translation>根据共用工装的急速转动，对齐已录制会话中的各设备</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>&amp;Magnetometer…</source>
         <translation>磁力计(&amp;M)…</translation>
     </message>
@@ -12932,7 +13332,7 @@ Edit it (Edit…) and start again.</source>
         <translation>确认模块静止后，将航向角清零或调平模块（ATT RST）</translation>
     </message>
     <message>
-        <location line="-18"/>
+        <location line="-22"/>
         <source>Listen to and configure a device on a CAN bus (J1939 or CANopen)</source>
         <translation>监听并配置 CAN 总线上的设备（J1939 或 CANopen）</translation>
     </message>
@@ -12947,7 +13347,7 @@ Edit it (Edit…) and start again.</source>
         <translation>通过串口或 CAN 总线向模块写入新固件并校验</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+13"/>
         <source>&amp;Compass calibration…</source>
         <translation>罗盘校准(&amp;C)…</translation>
     </message>
@@ -13038,6 +13438,326 @@ Edit it (Edit…) and start again.</source>
     </message>
 </context>
 <context>
+    <name>imudesk::ui::TwistAlignDialog</name>
+    <message>
+        <location filename="../ui/recording/twist_align_dialog.cpp" line="+27"/>
+        <source>Twist to align</source>
+        <translation>扭转对齐</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>For modules on one fixture. While every device records, turn the fixture sharply (faster than 60 deg/s) at least 3 times, at irregular intervals with a short rest between the turns, over at least 10 s. Then open the recorded session here: ImuDesk cross-correlates the devices&apos; gyro magnitudes and finds each device&apos;s constant time offset to the reference device.</source>
+        <translation>适用于装在同一工装上的多个模块。在所有设备录制期间，急速转动工装（快于 60 deg/s）至少 3 次，间隔不规则，每两次转动之间短暂停顿，总时长至少 10 s。然后在此打开录制的会话：ImuDesk 对各设备的陀螺仪角速度模值做互相关，求出每台设备相对参考设备的固定时间偏移。</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>The folder of a recorded session: the one with session.json and a capture per device</source>
+        <translation>已录制会话的文件夹：其中有 session.json，以及每台设备各一个采集文件</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Choose…</source>
+        <translation>选择…</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Open another recorded session</source>
+        <translation>打开另一个已录制的会话</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The device the others are aligned to: its offset is 0</source>
+        <translation>其他设备以此设备为基准对齐：其偏移为 0</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <location line="+6"/>
+        <source> s</source>
+        <translation> s</translation>
+    </message>
+    <message>
+        <location line="-5"/>
+        <source>Start of the twists, in seconds since the recording began (0: from the start)</source>
+        <translation>扭转时段的起点，即自录制开始起的秒数（0：从头开始）</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>end</source>
+        <translation>结尾</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>End of the twists, in seconds since the recording began (end: to the end of the session)</source>
+        <translation>扭转时段的终点，即自录制开始起的秒数（结尾：直到会话结束）</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Device</source>
+        <translation>设备</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Offset (ms)</source>
+        <translation>偏移（ms）</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>± (ms)</source>
+        <translation>±（ms）</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Correlation</source>
+        <translation>相关系数</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Twists</source>
+        <translation>扭转次数</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Status</source>
+        <translation>状态</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Added to the device&apos;s times to put them on the reference&apos;s, in milliseconds</source>
+        <translation>加到该设备的时间上，使其与参考设备的时间一致，单位为毫秒</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>One standard deviation of the offset, in milliseconds</source>
+        <translation>偏移的一倍标准差，单位为毫秒</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Normalised correlation at the offset (-1 to 1); a good match is close to 1</source>
+        <translation>该偏移处的归一化相关系数（-1 到 1）；匹配良好时接近 1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Sharp turns found in the device&apos;s gyro magnitude</source>
+        <translation>在该设备陀螺仪角速度模值中找到的急速转动次数</translation>
+    </message>
+    <message>
+        <location line="+30"/>
+        <source>Find offsets</source>
+        <translation>计算偏移</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Read the captures and cross-correlate each device&apos;s gyro magnitude with the reference&apos;s</source>
+        <translation>读取采集文件，将各设备的陀螺仪角速度模值与参考设备的做互相关</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Store offsets</source>
+        <translation>保存偏移</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Write the offsets found into the session&apos;s session.json; export and replay use them</source>
+        <translation>将求得的偏移写入该会话的 session.json；导出和回放时会使用这些偏移</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>to</source>
+        <translation>至</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Session:</source>
+        <translation>会话：</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Reference device:</source>
+        <translation>参考设备：</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Twists from:</source>
+        <translation>扭转时段：</translation>
+    </message>
+    <message>
+        <location line="+41"/>
+        <location line="+167"/>
+        <source>The session in %1 has one device only: twist to align needs two or more devices recorded together. Choose another session.</source>
+        <translation>%1 中的会话只有一台设备：扭转对齐需要两台或以上一起录制的设备。请选择其他会话。</translation>
+    </message>
+    <message>
+        <location line="-164"/>
+        <source>Press Find offsets to search the session&apos;s %1 devices for the twists.</source>
+        <translation>请按“计算偏移”，在该会话的 %1 台设备中查找扭转动作。</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>First device with gyroscope data</source>
+        <translation>第一台有陀螺仪数据的设备</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Choose the folder of a recorded session (the folder with session.json).</source>
+        <translation>请选择已录制会话的文件夹（包含 session.json 的文件夹）。</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1 is not a folder. Choose the folder of a recorded session.</source>
+        <translation>%1 不是文件夹。请选择已录制会话的文件夹。</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1 is not a recorded session: it has no session.json. Choose the folder a recording of several devices wrote.</source>
+        <translation>%1 不是已录制的会话：其中没有 session.json。请选择多设备录制所生成的文件夹。</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>The session in %1 cannot be read (%2). Choose another session folder.</source>
+        <translation>无法读取 %1 中的会话（%2）。请选择其他会话文件夹。</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The session in %1 lists no device. Choose another session folder.</source>
+        <translation>%1 中的会话未列出任何设备。请选择其他会话文件夹。</translation>
+    </message>
+    <message>
+        <location line="+37"/>
+        <source>Open a recorded session</source>
+        <translation>打开已录制的会话</translation>
+    </message>
+    <message>
+        <location line="+29"/>
+        <source>Cancel</source>
+        <translation>取消</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Close</source>
+        <translation>关闭</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Stop the search; nothing is changed</source>
+        <translation>停止搜索；不做任何更改</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Close this window</source>
+        <translation>关闭此窗口</translation>
+    </message>
+    <message>
+        <location line="+31"/>
+        <source>stored earlier (%1)</source>
+        <translation>此前已保存（%1）</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>not searched yet</source>
+        <translation>尚未搜索</translation>
+    </message>
+    <message>
+        <location line="+37"/>
+        <source>The end of the twists (%1 s) must be later than their start (%2 s); set To to end for the whole rest of the session.</source>
+        <translation>扭转时段的终点（%1 s）必须晚于起点（%2 s）；如需覆盖会话的其余全部，请将终点设为“结尾”。</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>Reading the captures of %1 devices…</source>
+        <translation>正在读取 %1 台设备的采集文件…</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>Widen From and To, or set them to 0 and end for the whole session.</source>
+        <translation>请放宽扭转时段的起点和终点，或将其设为 0 和“结尾”以覆盖整个会话。</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Search cancelled; nothing was changed.</source>
+        <translation>搜索已取消；未做任何更改。</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>No device of the session has gyroscope data with a common time in the searched part. %1 Devices need gyroscope output (HI91) while recording.</source>
+        <translation>该会话中没有任何设备在搜索范围内有带公共时间的陀螺仪数据。%1 录制时设备需要输出陀螺仪数据（HI91）。</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>The reference %1 has no gyroscope data with a common time in the searched part. Choose another reference device. %2</source>
+        <translation>参考设备 %1 在搜索范围内没有带公共时间的陀螺仪数据。请选择其他参考设备。%2</translation>
+    </message>
+    <message>
+        <location line="+57"/>
+        <source>Aligned to %1: devices aligned %2 of %3. Check that the correlation is close to 1 and the ± column small, then press Store offsets.</source>
+        <translation>已对齐到 %1：%3 台设备中已对齐 %2 台。请检查相关系数是否接近 1、± 列是否足够小，然后按“保存偏移”。</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>No device could be aligned to %1: see the Status column. Record the twists again (turn the fixture sharply at least 3 times at irregular intervals while every device records), or set From and To around the twists.</source>
+        <translation>没有设备能对齐到 %1：请查看“状态”列。请重新录制扭转动作（在所有设备录制期间，以不规则的间隔急速转动工装至少 3 次），或将起点和终点设在扭转动作的前后。</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>The captures of %1 could not be read: check that the session folder holds every file session.json names.</source>
+        <translation>无法读取 %1 的采集文件：请检查会话文件夹中是否有 session.json 列出的所有文件。</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>Capture unreadable: %1</source>
+        <translation>采集文件无法读取：%1</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>reference</source>
+        <translation>参考设备</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>No gyroscope data with a common time in the searched part; left as it was.</source>
+        <translation>搜索范围内没有带公共时间的陀螺仪数据；保持原样。</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>aligned</source>
+        <translation>已对齐</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Not aligned: %1</source>
+        <translation>未对齐：%1</translation>
+    </message>
+    <message>
+        <location line="+37"/>
+        <source>The search is still running: wait for it to end, then store the offsets.</source>
+        <translation>搜索仍在进行：请等待其结束后再保存偏移。</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Nothing to store: no device is aligned. Press Find offsets first.</source>
+        <translation>没有可保存的内容：没有任何设备已对齐。请先按“计算偏移”。</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>The session in %1 cannot be read any more (%2): nothing was stored. Check the folder, then find the offsets again.</source>
+        <translation>已无法读取 %1 中的会话（%2）：未保存任何内容。请检查该文件夹，然后重新计算偏移。</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>The devices in %1 changed since the search: nothing was stored. Find the offsets again.</source>
+        <translation>搜索之后 %1 中的设备已发生变化：未保存任何内容。请重新计算偏移。</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>The offsets could not be stored (%1). Check that the session folder is writable, then press Store offsets again.</source>
+        <translation>无法保存偏移（%1）。请检查会话文件夹是否可写，然后再次按“保存偏移”。</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Offsets stored in %2 (devices aligned: %1); export and replay of the session use them.</source>
+        <translation>偏移已保存到 %2（已对齐设备：%1 台）；导出和回放该会话时会使用这些偏移。</translation>
+    </message>
+</context>
+<context>
     <name>imudesk::ui::UserGuideDialog</name>
     <message>
         <location filename="../ui/workspace/help_dialogs.cpp" line="-39"/>
@@ -13061,7 +13781,7 @@ Edit it (Edit…) and start again.</source>
 <context>
     <name>main</name>
     <message>
-        <location filename="../app/gui/main.cpp" line="+91"/>
+        <location filename="../app/gui/main.cpp" line="+92"/>
         <source>ImuDesk: a bench tool for HiPNUC IMU modules.</source>
         <translation>ImuDesk：HiPNUC IMU 模块测试工具。</translation>
     </message>
@@ -13117,11 +13837,21 @@ Edit it (Edit…) and start again.</source>
     </message>
     <message>
         <location line="+6"/>
-        <source>Bring this panel to the front: configuration, recording, console, raw, commands or can (the CAN configuration).</source>
-        <translation>将此面板置于前台：configuration（配置）、recording（记录）、console（控制台）、raw（原始字节）、commands（指令日志）或 can（CAN 配置）。</translation>
+        <source>Bring this panel to the front: configuration, recording, console, raw, commands, can (the CAN configuration) or sync (the clocks).</source>
+        <translation>将此面板置于最前：configuration（配置）、recording（记录）、console（控制台）、raw（原始字节）、commands（指令日志）、can（CAN 配置）或 sync（时钟）。</translation>
     </message>
     <message>
         <location line="+5"/>
+        <source>Open Twist to align on a recorded session&apos;s FOLDER and find the devices&apos; offsets. With --screenshot the dialog is saved.</source>
+        <translation>在已录制会话的文件夹 FOLDER 上打开“扭转对齐”，并计算各设备的偏移。与 --screenshot 同用时保存该对话框。</translation>
+    </message>
+    <message>
+        <location line="+132"/>
+        <source>Unknown panel &quot;%1&quot;; use configuration, recording, console, raw, commands, can or sync.</source>
+        <translation>未知的面板“%1”；请使用 configuration、recording、console、raw、commands、can 或 sync。</translation>
+    </message>
+    <message>
+        <location line="-127"/>
         <source>Open the production station window; with PLAN (a test plan file), load that plan. With --screenshot the station window is saved.</source>
         <translation>打开生产测试台窗口；指定 PLAN（测试计划文件）时加载该计划。使用 --screenshot 时保存的是生产测试台窗口。</translation>
     </message>
@@ -13141,12 +13871,7 @@ Edit it (Edit…) and start again.</source>
         <translation>请指定型号（--simulate）或测试计划（--station），二者不能同时指定。</translation>
     </message>
     <message>
-        <location line="+101"/>
-        <source>Unknown panel &quot;%1&quot;; use configuration, recording, console, raw, commands or can.</source>
-        <translation>未知面板“%1”；请使用 configuration、recording、console、raw、commands 或 can。</translation>
-    </message>
-    <message>
-        <location line="-114"/>
+        <location line="-13"/>
         <source>Model to simulate with --simulate (default HI14).</source>
         <translation>--simulate 模拟的型号（默认 HI14）。</translation>
     </message>
@@ -13183,7 +13908,7 @@ Edit it (Edit…) and start again.</source>
     <message>
         <location line="+24"/>
         <location line="+26"/>
-        <location line="+43"/>
+        <location line="+44"/>
         <source>ImuDesk</source>
         <translation>ImuDesk</translation>
     </message>

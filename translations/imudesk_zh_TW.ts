@@ -1139,18 +1139,18 @@
 <context>
     <name>CaptureExporter</name>
     <message>
-        <location filename="../core/record/capture_exporter.cpp" line="+70"/>
+        <location filename="../core/record/capture_exporter.cpp" line="+71"/>
         <source>Cannot write %1: %2</source>
         <translation>無法寫入 %1：%2</translation>
     </message>
     <message>
-        <location line="+119"/>
+        <location line="+129"/>
         <location line="+24"/>
         <source>Writing %1 failed: %2. Check the free disk space.</source>
         <translation>寫入 %1 失敗：%2。請檢查可用磁碟空間。</translation>
     </message>
     <message>
-        <location line="+115"/>
+        <location line="+125"/>
         <source>No output file was given.</source>
         <translation>未指定輸出檔案。</translation>
     </message>
@@ -1165,7 +1165,7 @@
         <translation>模組以北西天（NWU）座標系輸出姿態（CONFIG IMU COORD 4）；廠商 CSV 的格式沒有欄位可以註明：其中的角度和四元數均為 NWU。</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+30"/>
         <source>Export cancelled.</source>
         <translation>匯出已取消。</translation>
     </message>
@@ -1315,7 +1315,7 @@
         <translation>記錄已停止：磁碟寫入速度跟不上（超過 %1 MB 等待寫入）。請記錄到速度較快的磁碟。</translation>
     </message>
     <message>
-        <location line="+98"/>
+        <location line="+111"/>
         <source>Recording stopped: writing %1 failed (%2). Everything up to that point is in the file; free some disk space and record again.</source>
         <translation>記錄已停止：寫入 %1 失敗（%2）。此前的內容均已寫入檔案；請釋放磁碟空間後重新記錄。</translation>
     </message>
@@ -2764,7 +2764,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>PtySimulator</name>
     <message>
-        <location filename="../core/sim/pty_simulator.cpp" line="+307"/>
+        <location filename="../core/sim/pty_simulator.cpp" line="+318"/>
         <source>Cannot open a pseudo-terminal: %1</source>
         <translation>無法開啟虛擬終端機：%1</translation>
     </message>
@@ -3305,6 +3305,49 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <location line="+18"/>
         <source>reading from %1 failed: %2 (was the device unplugged?)</source>
         <translation>從 %1 讀取失敗：%2（裝置是否已拔除？）</translation>
+    </message>
+</context>
+<context>
+    <name>SessionExporter</name>
+    <message>
+        <location filename="../core/record/session_exporter.cpp" line="+70"/>
+        <source>A session of several devices exports to tidy CSV or JSON Lines; the vendor&apos;s layout has one device per file (export each capture on its own for it).</source>
+        <translation>多裝置工作階段只能匯出為整潔 CSV 或 JSON Lines；原廠格式每個檔案只含一台裝置（如需此格式，請逐一匯出各擷取檔）。</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>A grid is written as tidy CSV (--format csv).</source>
+        <translation>依網格重新取樣時只能輸出整潔 CSV（--format csv）。</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>No output file was given.</source>
+        <translation>未指定輸出檔案。</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Device %1: %2</source>
+        <translation>裝置 %1：%2</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Device %1 dropped out during the recording (session.json says when); its data ends there.</source>
+        <translation>裝置 %1 在錄製期間斷線（時間見 session.json）；其資料到此為止。</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>The session holds no device.</source>
+        <translation>此工作階段中沒有裝置。</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Cannot write %1: %2</source>
+        <translation>無法寫入 %1：%2</translation>
+    </message>
+    <message>
+        <location line="+107"/>
+        <source>Writing %1 failed: %2. Free some space or choose another place.</source>
+        <translation>寫入 %1 失敗：%2。請釋放一些空間或選擇其他位置。</translation>
     </message>
 </context>
 <context>
@@ -4167,7 +4210,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>無法傳送幀 %1：CAN 介面未連線</translation>
     </message>
     <message>
-        <location line="+52"/>
+        <location line="+59"/>
         <source>boot-up</source>
         <translation>開機訊息</translation>
     </message>
@@ -4187,7 +4230,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>SDO 掃描</translation>
     </message>
     <message>
-        <location line="+49"/>
+        <location line="+58"/>
         <source>too many requests are waiting; try again when they are done</source>
         <translation>等待中的請求過多；請待其完成後再試</translation>
     </message>
@@ -4242,7 +4285,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>「%1」回讀值為 %2，預期為 %3</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+17"/>
         <source>%1: done</source>
         <translation>%1：完成</translation>
     </message>
@@ -4431,12 +4474,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <location line="+3"/>
         <location line="+66"/>
         <location line="+30"/>
-        <location line="+129"/>
+        <location line="+116"/>
         <source>the protocol is not known yet: choose it or wait for traffic</source>
         <translation>尚未得知協定：請選擇協定或等待匯流排上的資料</translation>
     </message>
     <message>
-        <location line="-219"/>
+        <location line="-206"/>
         <source>the HEC495 rate code is 0 (off) to 6 (100 Hz)</source>
         <translation>HEC495 頻率代碼為 0（關閉）到 6（100 Hz）</translation>
     </message>
@@ -4508,12 +4551,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
     <message>
         <location line="+3"/>
         <location line="+8"/>
-        <location line="+188"/>
+        <location line="+175"/>
         <source>reset</source>
         <translation>重設</translation>
     </message>
     <message>
-        <location line="-195"/>
+        <location line="-182"/>
         <location line="+5"/>
         <location line="+8"/>
         <source>set the node ID</source>
@@ -4677,7 +4720,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>NMT 停止，所有節點</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+26"/>
         <source>output on</source>
         <translation>開啟輸出</translation>
     </message>
@@ -4692,7 +4735,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>輸出啟用</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+10"/>
         <source>NMT start</source>
         <translation>NMT 啟動</translation>
     </message>
@@ -4702,7 +4745,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>NMT 停止</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+20"/>
         <source>&quot;%1&quot; needs a HiPNUC J1939 or CANopen device (the HEC495 saves at once)</source>
         <translation>「%1」需要 HiPNUC J1939 或 CANopen 裝置（HEC495 會立即儲存）</translation>
     </message>
@@ -4728,9 +4771,37 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
 </context>
 <context>
+    <name>imudesk::device::GroupRecording</name>
+    <message>
+        <location filename="../core/device/group_recording.cpp" line="+41"/>
+        <source>A session recording is already running.</source>
+        <translation>工作階段錄製已在進行中。</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>No device to record: connect one first.</source>
+        <translation>沒有可錄製的裝置：請先連線一台裝置。</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 already holds a recorded session; choose another folder.</source>
+        <translation>%1 中已有錄製的工作階段；請選擇其他資料夾。</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Cannot create the folder %1: check that the place exists and can be written to.</source>
+        <translation>無法建立資料夾 %1：請確認該位置存在且可寫入。</translation>
+    </message>
+    <message>
+        <location line="+53"/>
+        <source>None of the devices could be recorded: %1.</source>
+        <translation>所有裝置皆無法錄製：%1。</translation>
+    </message>
+</context>
+<context>
     <name>imudesk::device::Hec495Family</name>
     <message>
-        <location filename="../core/device/hec495_family.cpp" line="+77"/>
+        <location filename="../core/device/hec495_family.cpp" line="+78"/>
         <source>the request&apos;s data is longer than a Witlink frame can carry</source>
         <translation>請求的資料超過 Witlink 幀可承載的長度</translation>
     </message>
@@ -4750,7 +4821,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>嘗試 %2 次（每次 %3 ms）後仍未收到「%1」的回應（請檢查波特率和模組位址；持續輸出資料的 RS-485 模組可能漏收指令：請設為問答模式）</translation>
     </message>
     <message>
-        <location line="+185"/>
+        <location line="+194"/>
         <source>the module answered with an invalid reply: %1</source>
         <translation>模組的回應無效：%1</translation>
     </message>
@@ -4924,7 +4995,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>%2 發生 Modbus 例外 %1。</translation>
     </message>
     <message>
-        <location filename="../core/device/modbus_family.cpp" line="+118"/>
+        <location filename="../core/device/modbus_family.cpp" line="+119"/>
         <source>Port open at %1 baud</source>
         <translation>串列埠已開啟，波特率 %1</translation>
     </message>
@@ -4959,7 +5030,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>回應中的暫存器數量與請求的不一致</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+34"/>
         <source>Reading the identity of node %1</source>
         <translation>正在讀取節點 %1 的身分資訊</translation>
     </message>
@@ -4979,7 +5050,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>節點 %1 已恢復回應</translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+42"/>
         <source>not connected</source>
         <translation>未連線</translation>
     </message>
@@ -5105,7 +5176,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>串列埠未開啟</translation>
     </message>
     <message>
-        <location line="+52"/>
+        <location line="+55"/>
         <source>writing to the port failed</source>
         <translation>寫入串列埠失敗</translation>
     </message>
@@ -5115,7 +5186,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>%1 ms 內沒有回應</translation>
     </message>
     <message>
-        <location line="+80"/>
+        <location line="+81"/>
         <source>Bytes keep arriving on %1 but none of them form a frame: the device probably runs at another baud rate now. Disconnect and connect again with the baud rate set to Auto.</source>
         <translation>%1 上持續收到位元組，但無法組成任何資料框：裝置可能已改用其他波特率。請中斷連線，並將波特率設為「自動」後重新連線。</translation>
     </message>
@@ -5123,7 +5194,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::io::CanTransport</name>
     <message>
-        <location filename="../core/io/can_transport.cpp" line="+64"/>
+        <location filename="../core/io/can_transport.cpp" line="+66"/>
         <source>the CAN plugin &quot;%1&quot; is not installed (available: %2)</source>
         <translation>未安裝 CAN 外掛程式「%1」（可用：%2）</translation>
     </message>
@@ -5376,6 +5447,114 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
 </context>
 <context>
+    <name>imudesk::models::ClockStatsModel</name>
+    <message>
+        <location filename="../core/itemmodels/clock_stats_model.cpp" line="+39"/>
+        <source>device counter</source>
+        <translation>裝置計數器</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>request/answer</source>
+        <translation>請求/回應</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>receive stamp</source>
+        <translation>接收時間戳記</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>aligned</source>
+        <translation>已對齊</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>uncertain: fitting, %1 s of the %2 s it needs</source>
+        <translation>不確定：擬合中，已有 %1 s，需要 %2 s</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>free-running: the interface gives no receive stamps</source>
+        <translation>自由運行：介面不提供接收時間戳記</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>free-running: no device time yet</source>
+        <translation>自由運行：尚無裝置時間</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>The device&apos;s own time, fitted against the host&apos;s clock from its least delayed samples</source>
+        <translation>裝置自身的時間，由延遲最小的樣本對主機時鐘擬合而得</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>No device time: the sample was taken between the request and its answer; the middle is used</source>
+        <translation>無裝置時間：取樣時刻位於請求與回應之間；取兩者的中點</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>No device time: the interface&apos;s receive stamp less the frame&apos;s time on the bus</source>
+        <translation>無裝置時間：取介面的接收時間戳記減去該幀在匯流排上的傳輸時間</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>How fast the device&apos;s clock runs against the host&apos;s, in parts per million</source>
+        <translation>裝置時鐘相對於主機時鐘的快慢，單位 ppm（百萬分之一）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Scatter of the least delayed samples about the fitted line, in ms</source>
+        <translation>延遲最小的樣本相對於擬合直線的離散程度，單位 ms</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Half the request-to-answer time: the sampling instant lies within this, in ms</source>
+        <translation>從請求到回應時間的一半：取樣時刻落在此範圍內，單位 ms</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Times the device&apos;s counter restarted or its time base changed (each starts the fit again)</source>
+        <translation>裝置計數器重新啟動或其時間基準改變的次數（每次都會重新開始擬合）</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>Stream</source>
+        <translation>資料流</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Time from</source>
+        <translation>時間來源</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>State</source>
+        <translation>狀態</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Drift (ppm)</source>
+        <translation>漂移（ppm）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Jitter (ms)</source>
+        <translation>抖動（ms）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>± (ms)</source>
+        <translation>±（ms）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Resets</source>
+        <translation>重設次數</translation>
+    </message>
+</context>
+<context>
     <name>imudesk::models::CommandLogModel</name>
     <message>
         <location filename="../core/itemmodels/command_log_model.cpp" line="+88"/>
@@ -5431,7 +5610,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::models::LatestValuesModel</name>
     <message>
-        <location filename="../core/itemmodels/latest_values_model.cpp" line="+181"/>
+        <location filename="../core/itemmodels/latest_values_model.cpp" line="+172"/>
         <source>Quantity</source>
         <translation>物理量</translation>
     </message>
@@ -7270,7 +7449,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::AttitudeWidget</name>
     <message>
-        <location filename="../ui/attitude/attitude_widget.cpp" line="+295"/>
+        <location filename="../ui/attitude/attitude_widget.cpp" line="+305"/>
         <source>X</source>
         <translation>X</translation>
     </message>
@@ -7306,13 +7485,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>U (z)</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <location line="+382"/>
+        <location line="-103"/>
         <source>ENU 3-1-2</source>
         <translation>ENU 3-1-2</translation>
     </message>
     <message>
-        <location line="-390"/>
+        <location line="+96"/>
         <location line="+10"/>
         <source>N (x)</source>
         <translation>N (x)</translation>
@@ -7323,13 +7501,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>W (y)</translation>
     </message>
     <message>
-        <location line="+2"/>
-        <location line="+387"/>
+        <location line="-97"/>
         <source>NWU 3-1-2</source>
         <translation>NWU 3-1-2</translation>
     </message>
     <message>
-        <location line="-379"/>
+        <location line="+107"/>
         <source>E (y)</source>
         <translation>E (y)</translation>
     </message>
@@ -8438,16 +8615,16 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
     <message>
         <location line="+1"/>
-        <source>Host arrival time</source>
-        <translation>主機接收時間</translation>
+        <source>Common time</source>
+        <translation>共同時間</translation>
     </message>
     <message>
         <location line="+2"/>
-        <source>Device clock: the module&apos;s own timestamps, where lost samples show as gaps. Host arrival time: when the samples reached this computer.</source>
-        <translation>裝置時鐘：模組自身的時間戳記，遺失的取樣顯示為間斷。主機接收時間：取樣到達本電腦的時間。</translation>
+        <source>Device clock: the module&apos;s own timestamps, where lost samples show as gaps. Common time: when each sample was taken, on this computer&apos;s clock (from the device&apos;s own clock where it has one, else when it arrived): every device on one time base.</source>
+        <translation>裝置時鐘：模組自身的時間戳記，遺失的樣本會顯示為空缺。共同時間：每個樣本的取樣時刻，以這台電腦的時鐘表示（裝置有自身時鐘時據此換算，否則取樣本的到達時間）：所有裝置使用同一時間基準。</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>Cursor</source>
         <translation>游標</translation>
     </message>
@@ -8578,11 +8755,6 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>裝置時間（s）</translation>
     </message>
     <message>
-        <location line="+0"/>
-        <source>Host arrival time (s)</source>
-        <translation>主機接收時間（s）</translation>
-    </message>
-    <message>
         <location line="+6"/>
         <source>%1 min</source>
         <translation>%1 min</translation>
@@ -8639,7 +8811,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>自動縮放</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="-148"/>
+        <source>Common time (s)</source>
+        <translation>共同時間（s）</translation>
+    </message>
+    <message>
+        <location line="+152"/>
         <source>Lower end of the vertical axis (no unit)</source>
         <translation>縱軸下限（無單位）</translation>
     </message>
@@ -9124,9 +9301,47 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
 </context>
 <context>
+    <name>imudesk::ui::CorrelationPlot</name>
+    <message>
+        <location filename="../ui/recording/twist_align_dialog.cpp" line="+168"/>
+        <source>Normalised cross-correlation of each device&apos;s gyro magnitude with the reference&apos;s, against the shift of its time (ms). The marker is the offset found; a good match peaks close to 1.</source>
+        <translation>各裝置陀螺儀角速度大小與參考裝置的正規化互相關，隨該裝置時間平移量（ms）的變化曲線。標記處為求得的偏移；匹配良好時峰值接近 1。</translation>
+    </message>
+    <message>
+        <location line="+32"/>
+        <source>Find offsets to see how each device&apos;s gyro magnitude matches the reference&apos;s.</source>
+        <translation>按「計算偏移」後，可在此查看各裝置的陀螺儀角速度大小與參考裝置的匹配情形。</translation>
+    </message>
+    <message>
+        <location line="+28"/>
+        <source>Correlation</source>
+        <translation>相關係數</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Shift of the device&apos;s time (ms)</source>
+        <translation>裝置時間平移（ms）</translation>
+    </message>
+    <message>
+        <location line="+51"/>
+        <source>least correlation accepted</source>
+        <translation>可接受的最低相關係數</translation>
+    </message>
+    <message>
+        <location line="+41"/>
+        <source>%1: %2 ms, correlation %3</source>
+        <translation>%1：%2 ms，相關係數 %3</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1: not aligned</source>
+        <translation>%1：未對齊</translation>
+    </message>
+</context>
+<context>
     <name>imudesk::ui::DeviceWorkspace</name>
     <message>
-        <location filename="../ui/workspace/device_workspace.cpp" line="+342"/>
+        <location filename="../ui/workspace/device_workspace.cpp" line="+355"/>
         <source>New connection</source>
         <translation>新連線</translation>
     </message>
@@ -9136,7 +9351,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>%2 上的 %1</translation>
     </message>
     <message>
-        <location line="+201"/>
+        <location line="+203"/>
         <source>Not connected</source>
         <translation>未連線</translation>
     </message>
@@ -9273,6 +9488,11 @@ Link load = bytes per second × 10 bits / baud rate.</source>
         <translation>3D 姿態</translation>
     </message>
     <message>
+        <location line="+3"/>
+        <source>Time sync</source>
+        <translation>時間同步</translation>
+    </message>
+    <message>
         <location filename="../ui/workspace/device_workspace_layout.cpp" line="+168"/>
         <source>&amp;Monitor</source>
         <translation>監看(&amp;M)</translation>
@@ -9293,7 +9513,7 @@ Link load = bytes per second × 10 bits / baud rate.</source>
         <translation>分析(&amp;N)</translation>
     </message>
     <message>
-        <location line="+164"/>
+        <location line="+165"/>
         <source>%1 was floating off the screen</source>
         <translation>%1 浮動在螢幕之外</translation>
     </message>
@@ -9323,7 +9543,7 @@ Link load = bytes per second × 10 bits / baud rate.</source>
         <translation>數值表太窄，無法容納其各欄</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/device_workspace.cpp" line="+1"/>
+        <location filename="../ui/workspace/device_workspace.cpp" line="-2"/>
         <source>Configuration</source>
         <translation>配置</translation>
     </message>
@@ -10825,7 +11045,7 @@ Samples: %3</source>
 <context>
     <name>imudesk::ui::MainWindow</name>
     <message>
-        <location filename="../ui/workspace/main_window.cpp" line="+386"/>
+        <location filename="../ui/workspace/main_window.cpp" line="+394"/>
         <source>Choose a port first.</source>
         <translation>請先選擇串列埠。</translation>
     </message>
@@ -12129,6 +12349,166 @@ Default: %2</source>
     </message>
 </context>
 <context>
+    <name>imudesk::ui::SessionRecordingWindow</name>
+    <message>
+        <location filename="../ui/recording/session_recording_window.cpp" line="+41"/>
+        <source>Folder for the session</source>
+        <translation>工作階段存放資料夾</translation>
+    </message>
+    <message>
+        <location line="+49"/>
+        <source>Exported the aligned session to %1.</source>
+        <translation>已將對齊後的工作階段匯出到 %1。</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>Record all devices</source>
+        <translation>錄製所有裝置</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Records every connected device into one session folder: each device&apos;s capture and session.json with their clocks. Replays and exports put the devices on one time base.</source>
+        <translation>將所有已連線的裝置錄製到同一個工作階段資料夾：包括每台裝置的擷取檔，以及記錄各裝置時鐘的 session.json。重播與匯出時，所有裝置使用同一時間基準。</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Into:</source>
+        <translation>儲存到：</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A new folder session-&lt;date&gt;-&lt;time&gt; is made here for each session</source>
+        <translation>每個工作階段都會在此新建一個 session-&lt;date&gt;-&lt;time&gt; 資料夾</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Choose…</source>
+        <translation>選擇…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Start</source>
+        <translation>開始(&amp;S)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Start recording every connected device</source>
+        <translation>開始錄製所有已連線的裝置</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>S&amp;top</source>
+        <translation>停止(&amp;T)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Export aligned…</source>
+        <translation>匯出對齊資料(&amp;E)…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The last session as one tidy CSV, every device&apos;s samples in the order of the common time</source>
+        <translation>將最近一次工作階段匯出為單一整潔 CSV，所有裝置的樣本依共同時間排序</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>T&amp;wist to align…</source>
+        <translation>扭轉對齊(&amp;W)…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Find each device&apos;s constant offset from sharp turns of a shared fixture</source>
+        <translation>根據共用工裝的急速轉動，求出每台裝置的固定時間偏移</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Device</source>
+        <translation>裝置</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Link</source>
+        <translation>連線</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Bytes</source>
+        <translation>位元組數</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Frames</source>
+        <translation>幀數</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>State</source>
+        <translation>狀態</translation>
+    </message>
+    <message>
+        <location line="+41"/>
+        <source>No connected device can be recorded: connect the devices in their tabs first.</source>
+        <translation>沒有可錄製的已連線裝置：請先在各裝置的分頁中連線。</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+17"/>
+        <source>Recording %n device(s) into %1…</source>
+        <translation>
+            <numerusform>正在將 %n 台裝置錄製到 %1…</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+34"/>
+        <source>recording</source>
+        <translation>錄製中</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>dropped out: %1</source>
+        <translation>已斷線：%1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>back after a drop-out, recording</source>
+        <translation>斷線後已恢復，錄製中</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>stopped: %1</source>
+        <translation>已停止：%1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>dropped out (marked in the session)</source>
+        <translation>已斷線（已在工作階段中標記）</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>complete</source>
+        <translation>已完成</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Recording for %1 s into %2</source>
+        <translation>正在錄製到 %2，已錄製 %1 s</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Session recorded in %1.</source>
+        <translation>工作階段已錄製到 %1。</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The recordings stopped, but the session&apos;s manifest could not be written: %1. The captures are in %2.</source>
+        <translation>錄製已停止，但無法寫入工作階段清單檔：%1。擷取檔位於 %2。</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>Exporting the session…</source>
+        <translation>正在匯出工作階段…</translation>
+    </message>
+</context>
+<context>
     <name>imudesk::ui::SettingValueDelegate</name>
     <message>
         <location filename="../ui/configuration/setting_value_delegate.cpp" line="+83"/>
@@ -12797,7 +13177,7 @@ Edit it (Edit…) and start again.</source>
 <context>
     <name>imudesk::ui::ToolActions</name>
     <message>
-        <location filename="../ui/workspace/tool_actions.cpp" line="+110"/>
+        <location filename="../ui/workspace/tool_actions.cpp" line="+118"/>
         <source>&amp;Open capture…</source>
         <translation>開啟記錄檔(&amp;O)…</translation>
     </message>
@@ -12903,6 +13283,26 @@ Edit it (Edit…) and start again.</source>
     </message>
     <message>
         <location line="+1"/>
+        <source>Record &amp;all devices…</source>
+        <translation>錄製所有裝置(&amp;A)…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Record every connected tab into one session folder, the devices on one time base</source>
+        <translation>將所有已連線的分頁錄製到同一個工作階段資料夾，所有裝置使用同一時間基準</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>T&amp;wist to align…</source>
+        <translation>扭轉對齊(&amp;W)…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Align the devices of a recorded session from sharp turns of the fixture they share</source>
+        <translation>根據共用工裝的急速轉動，對齊已錄製工作階段中的各裝置</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>&amp;Magnetometer…</source>
         <translation>磁力計(&amp;M)…</translation>
     </message>
@@ -12932,7 +13332,7 @@ Edit it (Edit…) and start again.</source>
         <translation>確認模組靜止後，將航向角歸零或將模組調平（ATT RST）</translation>
     </message>
     <message>
-        <location line="-18"/>
+        <location line="-22"/>
         <source>Listen to and configure a device on a CAN bus (J1939 or CANopen)</source>
         <translation>監聽並設定 CAN 匯流排上的裝置（J1939 或 CANopen）</translation>
     </message>
@@ -12947,7 +13347,7 @@ Edit it (Edit…) and start again.</source>
         <translation>透過序列埠或 CAN 匯流排向模組寫入新韌體並驗證</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+13"/>
         <source>&amp;Compass calibration…</source>
         <translation>羅盤校準(&amp;C)…</translation>
     </message>
@@ -13038,6 +13438,326 @@ Edit it (Edit…) and start again.</source>
     </message>
 </context>
 <context>
+    <name>imudesk::ui::TwistAlignDialog</name>
+    <message>
+        <location filename="../ui/recording/twist_align_dialog.cpp" line="+27"/>
+        <source>Twist to align</source>
+        <translation>扭轉對齊</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>For modules on one fixture. While every device records, turn the fixture sharply (faster than 60 deg/s) at least 3 times, at irregular intervals with a short rest between the turns, over at least 10 s. Then open the recorded session here: ImuDesk cross-correlates the devices&apos; gyro magnitudes and finds each device&apos;s constant time offset to the reference device.</source>
+        <translation>適用於裝在同一工裝上的多個模組。在所有裝置錄製期間，急速轉動工裝（快於 60 deg/s）至少 3 次，間隔不規則，每兩次轉動之間短暫停頓，總時長至少 10 s。然後在此開啟錄製的工作階段：ImuDesk 會對各裝置的陀螺儀角速度大小做互相關，求出每台裝置相對於參考裝置的固定時間偏移。</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>The folder of a recorded session: the one with session.json and a capture per device</source>
+        <translation>已錄製工作階段的資料夾：其中有 session.json，以及每台裝置各一個擷取檔</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Choose…</source>
+        <translation>選擇…</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Open another recorded session</source>
+        <translation>開啟另一個已錄製的工作階段</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The device the others are aligned to: its offset is 0</source>
+        <translation>其他裝置以此裝置為基準對齊：其偏移為 0</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <location line="+6"/>
+        <source> s</source>
+        <translation> s</translation>
+    </message>
+    <message>
+        <location line="-5"/>
+        <source>Start of the twists, in seconds since the recording began (0: from the start)</source>
+        <translation>扭轉時段的起點，即自錄製開始起算的秒數（0：從頭開始）</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>end</source>
+        <translation>結尾</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>End of the twists, in seconds since the recording began (end: to the end of the session)</source>
+        <translation>扭轉時段的終點，即自錄製開始起算的秒數（結尾：直到工作階段結束）</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Device</source>
+        <translation>裝置</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Offset (ms)</source>
+        <translation>偏移（ms）</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>± (ms)</source>
+        <translation>±（ms）</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Correlation</source>
+        <translation>相關係數</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Twists</source>
+        <translation>扭轉次數</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Status</source>
+        <translation>狀態</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Added to the device&apos;s times to put them on the reference&apos;s, in milliseconds</source>
+        <translation>加到該裝置的時間上，使其與參考裝置的時間一致，單位為毫秒</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>One standard deviation of the offset, in milliseconds</source>
+        <translation>偏移的一倍標準差，單位為毫秒</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Normalised correlation at the offset (-1 to 1); a good match is close to 1</source>
+        <translation>該偏移處的正規化相關係數（-1 到 1）；匹配良好時接近 1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Sharp turns found in the device&apos;s gyro magnitude</source>
+        <translation>在該裝置陀螺儀角速度大小中找到的急速轉動次數</translation>
+    </message>
+    <message>
+        <location line="+30"/>
+        <source>Find offsets</source>
+        <translation>計算偏移</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Read the captures and cross-correlate each device&apos;s gyro magnitude with the reference&apos;s</source>
+        <translation>讀取擷取檔，將各裝置的陀螺儀角速度大小與參考裝置的做互相關</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Store offsets</source>
+        <translation>儲存偏移</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Write the offsets found into the session&apos;s session.json; export and replay use them</source>
+        <translation>將求得的偏移寫入此工作階段的 session.json；匯出與重播時會使用這些偏移</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>to</source>
+        <translation>至</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Session:</source>
+        <translation>工作階段：</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Reference device:</source>
+        <translation>參考裝置：</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Twists from:</source>
+        <translation>扭轉時段：</translation>
+    </message>
+    <message>
+        <location line="+41"/>
+        <location line="+167"/>
+        <source>The session in %1 has one device only: twist to align needs two or more devices recorded together. Choose another session.</source>
+        <translation>%1 中的工作階段只有一台裝置：扭轉對齊需要兩台以上一起錄製的裝置。請選擇其他工作階段。</translation>
+    </message>
+    <message>
+        <location line="-164"/>
+        <source>Press Find offsets to search the session&apos;s %1 devices for the twists.</source>
+        <translation>請按「計算偏移」，在此工作階段的 %1 台裝置中尋找扭轉動作。</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>First device with gyroscope data</source>
+        <translation>第一台有陀螺儀資料的裝置</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Choose the folder of a recorded session (the folder with session.json).</source>
+        <translation>請選擇已錄製工作階段的資料夾（含有 session.json 的資料夾）。</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1 is not a folder. Choose the folder of a recorded session.</source>
+        <translation>%1 不是資料夾。請選擇已錄製工作階段的資料夾。</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1 is not a recorded session: it has no session.json. Choose the folder a recording of several devices wrote.</source>
+        <translation>%1 不是已錄製的工作階段：其中沒有 session.json。請選擇多裝置錄製所產生的資料夾。</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>The session in %1 cannot be read (%2). Choose another session folder.</source>
+        <translation>無法讀取 %1 中的工作階段（%2）。請選擇其他工作階段資料夾。</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The session in %1 lists no device. Choose another session folder.</source>
+        <translation>%1 中的工作階段未列出任何裝置。請選擇其他工作階段資料夾。</translation>
+    </message>
+    <message>
+        <location line="+37"/>
+        <source>Open a recorded session</source>
+        <translation>開啟已錄製的工作階段</translation>
+    </message>
+    <message>
+        <location line="+29"/>
+        <source>Cancel</source>
+        <translation>取消</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Close</source>
+        <translation>關閉</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Stop the search; nothing is changed</source>
+        <translation>停止搜尋；不做任何變更</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Close this window</source>
+        <translation>關閉此視窗</translation>
+    </message>
+    <message>
+        <location line="+31"/>
+        <source>stored earlier (%1)</source>
+        <translation>先前已儲存（%1）</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>not searched yet</source>
+        <translation>尚未搜尋</translation>
+    </message>
+    <message>
+        <location line="+37"/>
+        <source>The end of the twists (%1 s) must be later than their start (%2 s); set To to end for the whole rest of the session.</source>
+        <translation>扭轉時段的終點（%1 s）必須晚於起點（%2 s）；若要涵蓋工作階段的其餘全部，請將終點設為「結尾」。</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>Reading the captures of %1 devices…</source>
+        <translation>正在讀取 %1 台裝置的擷取檔…</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>Widen From and To, or set them to 0 and end for the whole session.</source>
+        <translation>請放寬扭轉時段的起點與終點，或將其設為 0 和「結尾」以涵蓋整個工作階段。</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Search cancelled; nothing was changed.</source>
+        <translation>搜尋已取消；未做任何變更。</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>No device of the session has gyroscope data with a common time in the searched part. %1 Devices need gyroscope output (HI91) while recording.</source>
+        <translation>此工作階段中沒有任何裝置在搜尋範圍內有帶共同時間的陀螺儀資料。%1 錄製時裝置須輸出陀螺儀資料（HI91）。</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>The reference %1 has no gyroscope data with a common time in the searched part. Choose another reference device. %2</source>
+        <translation>參考裝置 %1 在搜尋範圍內沒有帶共同時間的陀螺儀資料。請選擇其他參考裝置。%2</translation>
+    </message>
+    <message>
+        <location line="+57"/>
+        <source>Aligned to %1: devices aligned %2 of %3. Check that the correlation is close to 1 and the ± column small, then press Store offsets.</source>
+        <translation>已對齊到 %1：%3 台裝置中已對齊 %2 台。請確認相關係數接近 1、± 欄數值夠小，然後按「儲存偏移」。</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>No device could be aligned to %1: see the Status column. Record the twists again (turn the fixture sharply at least 3 times at irregular intervals while every device records), or set From and To around the twists.</source>
+        <translation>沒有裝置能對齊到 %1：請查看「狀態」欄。請重新錄製扭轉動作（在所有裝置錄製期間，以不規則的間隔急速轉動工裝至少 3 次），或將起點與終點設在扭轉動作的前後。</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>The captures of %1 could not be read: check that the session folder holds every file session.json names.</source>
+        <translation>無法讀取 %1 的擷取檔：請確認工作階段資料夾中含有 session.json 列出的所有檔案。</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>Capture unreadable: %1</source>
+        <translation>擷取檔無法讀取：%1</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>reference</source>
+        <translation>參考裝置</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>No gyroscope data with a common time in the searched part; left as it was.</source>
+        <translation>搜尋範圍內沒有帶共同時間的陀螺儀資料；維持原狀。</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>aligned</source>
+        <translation>已對齊</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Not aligned: %1</source>
+        <translation>未對齊：%1</translation>
+    </message>
+    <message>
+        <location line="+37"/>
+        <source>The search is still running: wait for it to end, then store the offsets.</source>
+        <translation>搜尋仍在進行中：請待其結束後再儲存偏移。</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Nothing to store: no device is aligned. Press Find offsets first.</source>
+        <translation>沒有可儲存的內容：沒有任何裝置已對齊。請先按「計算偏移」。</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>The session in %1 cannot be read any more (%2): nothing was stored. Check the folder, then find the offsets again.</source>
+        <translation>已無法讀取 %1 中的工作階段（%2）：未儲存任何內容。請檢查該資料夾，然後重新計算偏移。</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>The devices in %1 changed since the search: nothing was stored. Find the offsets again.</source>
+        <translation>搜尋之後 %1 中的裝置已有變更：未儲存任何內容。請重新計算偏移。</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>The offsets could not be stored (%1). Check that the session folder is writable, then press Store offsets again.</source>
+        <translation>無法儲存偏移（%1）。請確認工作階段資料夾可寫入，然後再按一次「儲存偏移」。</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Offsets stored in %2 (devices aligned: %1); export and replay of the session use them.</source>
+        <translation>偏移已儲存到 %2（已對齊裝置：%1 台）；匯出與重播此工作階段時會使用這些偏移。</translation>
+    </message>
+</context>
+<context>
     <name>imudesk::ui::UserGuideDialog</name>
     <message>
         <location filename="../ui/workspace/help_dialogs.cpp" line="-39"/>
@@ -13061,7 +13781,7 @@ Edit it (Edit…) and start again.</source>
 <context>
     <name>main</name>
     <message>
-        <location filename="../app/gui/main.cpp" line="+91"/>
+        <location filename="../app/gui/main.cpp" line="+92"/>
         <source>ImuDesk: a bench tool for HiPNUC IMU modules.</source>
         <translation>ImuDesk：HiPNUC IMU 模組測試工具。</translation>
     </message>
@@ -13117,11 +13837,21 @@ Edit it (Edit…) and start again.</source>
     </message>
     <message>
         <location line="+6"/>
-        <source>Bring this panel to the front: configuration, recording, console, raw, commands or can (the CAN configuration).</source>
-        <translation>將此面板移到最前面：configuration（配置）、recording（記錄）、console（主控台）、raw（原始位元組）、commands（指令日誌）或 can（CAN 配置）。</translation>
+        <source>Bring this panel to the front: configuration, recording, console, raw, commands, can (the CAN configuration) or sync (the clocks).</source>
+        <translation>將此面板移到最前：configuration（配置）、recording（記錄）、console（主控台）、raw（原始位元組）、commands（指令日誌）、can（CAN 配置）或 sync（時鐘）。</translation>
     </message>
     <message>
         <location line="+5"/>
+        <source>Open Twist to align on a recorded session&apos;s FOLDER and find the devices&apos; offsets. With --screenshot the dialog is saved.</source>
+        <translation>在已錄製工作階段的資料夾 FOLDER 上開啟「扭轉對齊」，並計算各裝置的偏移。與 --screenshot 同用時儲存該對話框。</translation>
+    </message>
+    <message>
+        <location line="+132"/>
+        <source>Unknown panel &quot;%1&quot;; use configuration, recording, console, raw, commands, can or sync.</source>
+        <translation>未知的面板「%1」；請使用 configuration、recording、console、raw、commands、can 或 sync。</translation>
+    </message>
+    <message>
+        <location line="-127"/>
         <source>Open the production station window; with PLAN (a test plan file), load that plan. With --screenshot the station window is saved.</source>
         <translation>開啟生產測試臺視窗；指定 PLAN（測試計劃檔案）時載入該計劃。使用 --screenshot 時儲存的是生產測試臺視窗。</translation>
     </message>
@@ -13141,12 +13871,7 @@ Edit it (Edit…) and start again.</source>
         <translation>請指定型號（--simulate）或測試計劃（--station），二者不能同時指定。</translation>
     </message>
     <message>
-        <location line="+101"/>
-        <source>Unknown panel &quot;%1&quot;; use configuration, recording, console, raw, commands or can.</source>
-        <translation>未知的面板「%1」；請使用 configuration、recording、console、raw、commands 或 can。</translation>
-    </message>
-    <message>
-        <location line="-114"/>
+        <location line="-13"/>
         <source>Model to simulate with --simulate (default HI14).</source>
         <translation>--simulate 模擬的型號（預設 HI14）。</translation>
     </message>
@@ -13183,7 +13908,7 @@ Edit it (Edit…) and start again.</source>
     <message>
         <location line="+24"/>
         <location line="+26"/>
-        <location line="+43"/>
+        <location line="+44"/>
         <source>ImuDesk</source>
         <translation>ImuDesk</translation>
     </message>

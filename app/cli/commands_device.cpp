@@ -11,8 +11,10 @@
 #include <QSerialPortInfo>
 #include <QThread>
 
+#include <cmath>
 #include <cstdio>
 #include <optional>
+#include <vector>
 
 namespace imudesk::cli {
 
@@ -358,8 +360,10 @@ int cmdSimulate(const QStringList &args)
                                    QStringLiteral("A GNSS receiver on SYNC_IN/PPS: the clock aligns to UTC at the first "
                                                   "second (UTC_UNSYNC clears) and each second triggers ONMARK 1 output.")));
     p.addOption(QCommandLineOption(QStringLiteral("motion"),
-                                   QStringLiteral("static (default), spin, tumble or turntable (still 3 s, 720 deg "
-                                                  "one way at 45 deg/s, still, 720 deg back: a gyro-scale run)."),
+                                   QStringLiteral("static (default), spin, tumble, turntable (still 3 s, 720 deg "
+                                                  "one way at 45 deg/s, still, 720 deg back: a gyro-scale run) or twists "
+                                                  "(a fixture turned sharply now and then, the same for every module "
+                                                  "simulated on this host: twist-to-align)."),
                                    QStringLiteral("MOTION"), QStringLiteral("static")));
     p.addOption(QCommandLineOption(QStringLiteral("seed"), QStringLiteral("Random seed (default 1)."),
                                    QStringLiteral("N"), QStringLiteral("1")));
@@ -370,6 +374,14 @@ int cmdSimulate(const QStringList &args)
                        "default 40: MCAL fails), unplug=T (cable pulled T s after the start), fixture (turned "
                        "through every attitude while an MCAL runs)."),
         QStringLiteral("LIST")));
+    p.addOption(QCommandLineOption(QStringLiteral("clock"),
+                                   QStringLiteral("HiPNUC on a pty: the module's oscillator, PPM[,OFFSET_MS[,STEP_AT_S,STEP_MS]] "
+                                                  "(e.g. 40 or -25,0,30,5: -25 ppm, its time jumping 5 ms at 30 s)."),
+                                   QStringLiteral("SPEC")));
+    p.addOption(QCommandLineOption(QStringLiteral("adapter"),
+                                   QStringLiteral("On a pty: a USB adapter between the device and the host, TIMER_MS[,JITTER_US"
+                                                  "[,FIXED_US]] (e.g. 16: an FTDI's default latency timer)."),
+                                   QStringLiteral("SPEC")));
     addModbusSimulateOptions(p); // also --device hipnuc|hec495
     addFlashDumpOption(p);
     p.addOption(QCommandLineOption(QStringLiteral("address"), QStringLiteral("HEC495 module address (default 0)."),
@@ -385,7 +397,8 @@ int cmdSimulate(const QStringList &args)
                                                   "64-byte PGN 0xFF5A every 10 ms.")));
     const QString usage = QStringLiteral("imudesk-cli simulate --pty [--device hipnuc|hec495] [--model HI14] "
                                          "[--firmware 1.7.1] [--baud 115200] [--address N] "
-                                         "[--motion static|spin|tumble|turntable] [--pps] [--seed N] [--faults LIST] "
+                                         "[--motion static|spin|tumble|turntable|twists] [--pps] [--seed N] [--faults LIST] "
+                                         "[--clock PPM[,OFFSET_MS[,STEP_AT_S,STEP_MS]]] [--adapter TIMER_MS[,JITTER_US[,FIXED_US]]] "
                                          "[--flash-dump FILE] [--modbus [--id N]] | --can PLUGIN:INTERFACE [--protocol j1939|canopen] "
                                          "[--device hipnuc|hec495] [--node N] [--fd] [--flash-dump FILE]");
     if (!parseArgs(p, args, usage))
@@ -404,7 +417,7 @@ int cmdSimulate(const QStringList &args)
     if (p.isSet(QStringLiteral("can"))) {
         sim::Motion m = sim::Motion::Static;
         if (!sim::parseMotion(p.value(QStringLiteral("motion")).toStdString(), m))
-            return fail(QStringLiteral("--motion must be static, spin, tumble or turntable"), ExitUsage);
+            return fail(QStringLiteral("--motion must be static, spin, tumble, turntable or twists"), ExitUsage);
         return simulateCan(p.value(QStringLiteral("can")), p.value(QStringLiteral("protocol")), p.value(QStringLiteral("device")),
                            p.value(QStringLiteral("node")).toInt(), m, p.value(QStringLiteral("seed")).toULongLong(),
                            p.value(QStringLiteral("firmware")), p.isSet(QStringLiteral("fd")),
@@ -430,7 +443,7 @@ int cmdSimulate(const QStringList &args)
         return fail(QStringLiteral("--baud must be one of 4800 9600 19200 38400 57600 115200 230400 256000 460800 921600"),
                     ExitUsage);
     if (!sim::parseMotion(p.value(QStringLiteral("motion")).toStdString(), o.motion))
-        return fail(QStringLiteral("--motion must be static, spin, tumble or turntable"), ExitUsage);
+        return fail(QStringLiteral("--motion must be static, spin, tumble, turntable or twists"), ExitUsage);
     o.ppsInput = p.isSet(QStringLiteral("pps"));
     o.seed = p.value(QStringLiteral("seed")).toULongLong(&ok);
     if (!ok)
@@ -438,8 +451,44 @@ int cmdSimulate(const QStringList &args)
     std::string faultError;
     if (!sim::parseSimFaults(p.value(QStringLiteral("faults")).toStdString(), o.faults, &faultError))
         return fail(QStringLiteral("--faults: %1").arg(QString::fromStdString(faultError)), ExitUsage);
+    // Numbers separated by commas: at least `least`, at most `most`.
+    auto numbers = [&](const char *name, int least, int most, std::vector<double> *v) {
+        if (!p.isSet(QLatin1String(name)))
+            return true;
+        for (const QString &part : p.value(QLatin1String(name)).split(QLatin1Char(','))) {
+            bool good = false;
+            v->push_back(part.toDouble(&good));
+            if (!good)
+                return false;
+        }
+        return int(v->size()) >= least && int(v->size()) <= most;
+    };
+    std::vector<double> clockSpec, adapterSpec;
+    if (!numbers("clock", 1, 4, &clockSpec) || clockSpec.size() == 3)
+        return fail(QStringLiteral("--clock is PPM[,OFFSET_MS[,STEP_AT_S,STEP_MS]], e.g. 40 or -25,0,30,5"), ExitUsage);
+    if (!numbers("adapter", 1, 3, &adapterSpec) || (!adapterSpec.empty() && adapterSpec[0] < 0))
+        return fail(QStringLiteral("--adapter is TIMER_MS[,JITTER_US[,FIXED_US]], e.g. 16"), ExitUsage);
+    sim::ClockError clock;
+    if (!clockSpec.empty()) {
+        clock.driftPpm = clockSpec[0];
+        clock.offsetUs = clockSpec.size() > 1 ? clockSpec[1] * 1000 : 0;
+        if (clockSpec.size() == 4) {
+            clock.stepAtS = clockSpec[2];
+            clock.stepUs = clockSpec[3] * 1000;
+        }
+        if (std::abs(clock.driftPpm) > 1000 || clock.offsetUs < 0)
+            return fail(QStringLiteral("--clock: a drift within +-1000 ppm and an offset >= 0 ms"), ExitUsage);
+    }
+    sim::AdapterLatency adapter;
+    if (!adapterSpec.empty()) {
+        adapter.latencyTimerMs = adapterSpec[0];
+        adapter.jitterUs = adapterSpec.size() > 1 ? adapterSpec[1] : 0;
+        adapter.fixedUs = adapterSpec.size() > 2 ? adapterSpec[2] : 0;
+    }
 
     sim::PtySimulator simulator(o);
+    simulator.setClock(clock);
+    simulator.setAdapter(adapter);
     QString error;
     if (!simulator.start(&error))
         return fail(QStringLiteral("could not create a pseudo-terminal: %1").arg(error));

@@ -3,6 +3,7 @@
 #include "workspace/language_switcher.h"
 #include "device/serial_family.h"
 #include "families/family_ui.h"
+#include "recording/twist_align_dialog.h"
 #include "workspace/tool_actions.h"
 #include "workspace/main_window.h"
 #include "model/device_identity.h"
@@ -135,8 +136,13 @@ int main(int argc, char *argv[])
     const QCommandLineOption dockOption(
         QStringLiteral("dock"),
         QCoreApplication::translate("main", "Bring this panel to the front: configuration, recording, console, raw, "
-                                            "commands or can (the CAN configuration)."),
+                                            "commands, can (the CAN configuration) or sync (the clocks)."),
         QStringLiteral("panel"));
+    const QCommandLineOption alignOption(
+        QStringLiteral("align"),
+        QCoreApplication::translate("main", "Open Twist to align on a recorded session's FOLDER and find the devices' "
+                                            "offsets. With --screenshot the dialog is saved."),
+        QStringLiteral("folder"));
     const QCommandLineOption stationOption(
         QStringLiteral("station"),
         QCoreApplication::translate("main", "Open the production station window; with PLAN (a test plan file), "
@@ -149,7 +155,7 @@ int main(int argc, char *argv[])
                                             "firmware step without an image (the old module fails it) and its "
                                             "profile step off."));
     parser.addOptions({langOption, simulateOption, firmwareOption, motionOption, portOption, baudOption, demoOption,
-                       screenshotOption, afterOption, linkOption, dockOption, stationOption, stationDemoOption});
+                       screenshotOption, afterOption, linkOption, dockOption, alignOption, stationOption, stationDemoOption});
     parser.addPositionalArgument(QStringLiteral("MODEL"),
                                  QCoreApplication::translate("main", "Model to simulate with --simulate (default HI14)."),
                                  QStringLiteral("[MODEL]"));
@@ -262,11 +268,12 @@ int main(int argc, char *argv[])
             {QStringLiteral("raw"), QStringLiteral("rawBytesDock")},
             {QStringLiteral("commands"), QStringLiteral("commandLogDock")},
             {QStringLiteral("can"), QStringLiteral("canConfigDock")},
+            {QStringLiteral("sync"), QStringLiteral("syncDock")},
         };
         const auto it = docks.find(parser.value(dockOption));
         if (it == docks.end())
             return usageError(QCoreApplication::translate("main", "Unknown panel \"%1\"; use configuration, recording, "
-                                                                  "console, raw, commands or can.")
+                                                                  "console, raw, commands, can or sync.")
                                   .arg(parser.value(dockOption)));
         if (it->first == QLatin1String("configuration")) {
             // The Configure layout: the settings table gets the right column's height.
@@ -301,14 +308,30 @@ int main(int argc, char *argv[])
         }
     }
 
+    QPointer<imudesk::ui::TwistAlignDialog> alignDialog;
+    if (parser.isSet(alignOption)) {
+        alignDialog = new imudesk::ui::TwistAlignDialog(parser.value(alignOption), &window);
+        alignDialog->setAttribute(Qt::WA_DeleteOnClose);
+        alignDialog->show();
+        alignDialog->findOffsets();
+    }
+
     int screenshotRc = 0;
     if (parser.isSet(screenshotOption)) {
         const QString path = parser.value(screenshotOption);
-        QTimer::singleShot(int(screenshotAfter * 1000), &window, [&window, &screenshotRc, &stationView, station, path] {
+        QTimer::singleShot(int(screenshotAfter * 1000), &window,
+                           [&window, &screenshotRc, &stationView, &alignDialog, station, path] {
             QString error;
-            // With --station the station window is the picture (while it is open).
-            const bool saved = station && stationView ? stationView->saveScreenshot(path, &error)
-                                                      : window.saveScreenshot(path, &error);
+            // With --station the station window is the picture (while it is open), with --align the dialog.
+            bool saved = false;
+            if (alignDialog) {
+                saved = alignDialog->grab().save(path);
+                if (!saved)
+                    error = QStringLiteral("cannot write %1").arg(path);
+            } else {
+                saved = station && stationView ? stationView->saveScreenshot(path, &error)
+                                               : window.saveScreenshot(path, &error);
+            }
             if (!saved) {
                 std::fprintf(stderr, "imudesk: %s\n", qPrintable(error));
                 screenshotRc = 1;

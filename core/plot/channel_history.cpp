@@ -132,12 +132,14 @@ void ChannelHistory::updatePeriod(double step)
 
 void ChannelHistory::appendOne(const model::Sample &s)
 {
-    // Host time, relative to the first sample, never decreasing.
+    // Host time, relative to the first sample, never decreasing: the sampling instant on the
+    // host's clock (the common time, core/clock) where the sample has one, else its arrival.
+    const int64_t hostNs = s.commonTimeNs != 0 ? s.commonTimeNs : s.hostTimeNs;
     if (!m_haveOrigin) {
-        m_hostOriginNs = s.hostTimeNs;
+        m_hostOriginNs = hostNs;
         m_haveOrigin = true;
     }
-    double host = double(s.hostTimeNs - m_hostOriginNs) / 1e9;
+    double host = double(hostNs - m_hostOriginNs) / 1e9;
     const bool first = m_totalAppended == 0;
     if (!first && host < m_lastHost)
         host = m_lastHost;

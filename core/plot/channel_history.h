@@ -16,7 +16,9 @@
 //
 // Time axes (both in seconds, both non-decreasing from row to row, so every range
 // query is a binary search):
-//   Host   hostTimeNs relative to hostOriginNs() (the first sample after clear()).
+//   Host   the host clock: the sample's common time (its sampling instant on the host's
+//          clock, core/clock) where it has one, else its arrival (hostTimeNs), relative to
+//          hostOriginNs() (the first sample after clear()): every device on one time base.
 //          The host clock is monotonic; a sample stamped earlier than its predecessor
 //          is clamped to the predecessor's time.
 //   Device deviceTimeMs, "stitched": within one segment the device clock is kept as

@@ -226,6 +226,7 @@ void ReplayWorker::onPacket(const protocol::hipnuc::Packet &packet, int64_t host
     m_batch.push_back(protocol::hipnuc::toSample(packet));
     model::Sample &s = m_batch.back();
     s.hostTimeNs = hostNs;
+    s.commonTimeNs = m_decoder.packetCommonNs(); // as the live session had it
     if (s.has(model::FieldDeviceTime))
         m_gaps.add(s.source, s.deviceTimeMs, model::MainStatus::timeBase(s.has(model::FieldMainStatus), s.mainStatus));
 }

@@ -52,7 +52,7 @@ const QSet<QString> &keptWords()
 {
     static const QSet<QString> words = {
         QStringLiteral("deg"), QStringLiteral("rad"), QStringLiteral("min"), QStringLiteral("ms"),
-        QStringLiteral("Hz"), QStringLiteral("kHz"), QStringLiteral("ImuDesk"), QStringLiteral("HiPNUC"),
+        QStringLiteral("Hz"), QStringLiteral("kHz"), QStringLiteral("ppm"), QStringLiteral("ImuDesk"), QStringLiteral("HiPNUC"),
         QStringLiteral("Witlink"), QStringLiteral("English"), QStringLiteral("imudesk"), QStringLiteral("cli"),
         QStringLiteral("dev"), QStringLiteral("pts"), QStringLiteral("tty"), QStringLiteral("ttyUSB"),
         QStringLiteral("ttyACM"), QStringLiteral("Modbus"), QStringLiteral("CANopen"), QStringLiteral("imucap"),

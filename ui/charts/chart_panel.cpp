@@ -154,10 +154,11 @@ void ChartPanel::retranslateUi()
                                        : tr("Freeze every chart; the data keeps being recorded (Pause key)"));
     m_timeAxisLabel->setText(tr("&Time axis:"));
     m_timeAxisCombo->setItemText(0, tr("Device clock"));
-    m_timeAxisCombo->setItemText(1, tr("Host arrival time"));
+    m_timeAxisCombo->setItemText(1, tr("Common time"));
     m_timeAxisCombo->setToolTip(
         tr("Device clock: the module's own timestamps, where lost samples show as gaps. "
-           "Host arrival time: when the samples reached this computer."));
+           "Common time: when each sample was taken, on this computer's clock (from the device's own "
+           "clock where it has one, else when it arrived): every device on one time base."));
     m_cursorAction->setText(tr("Cursor"));
     m_cursorAction->setToolTip(tr("A crosshair that follows the mouse and reads out every chart at the same time"));
     m_saveAllAction->setText(tr("Save all as PNG…"));

@@ -146,7 +146,7 @@ int ChartView::valueDecimals(ChartKind kind)
 
 QString ChartView::timeAxisTitle(TimeAxis axis)
 {
-    return axis == TimeAxis::Device ? tr("Device time (s)") : tr("Host arrival time (s)");
+    return axis == TimeAxis::Device ? tr("Device time (s)") : tr("Common time (s)");
 }
 
 QString ChartView::windowText(double seconds)

@@ -10,6 +10,7 @@
 #include "workspace/command_log_widget.h"
 #include "workspace/console_widget.h"
 #include "workspace/raw_bytes_view.h"
+#include "itemmodels/clock_stats_model.h"
 #include "itemmodels/latest_values_model.h"
 #include "sim/pty_simulator.h"
 #include "workspace/status_flags_widget.h"
@@ -177,6 +178,17 @@ DeviceWorkspace::DeviceWorkspace(QWidget *parent) : QMainWindow(parent)
     m_recording = new RecordingControls(this);
     m_recording->setObjectName(QStringLiteral("recordingControls"));
     m_recordingDock = makeDock(m_recording, QStringLiteral("recordingDock"));
+    // The link's clocks: each stream's state, drift and jitter (refreshed with the statistics,
+    // twice a second).
+    m_clockModel = new models::ClockStatsModel(this);
+    m_syncView = new QTableView(this);
+    m_syncView->setObjectName(QStringLiteral("syncView"));
+    m_syncView->setModel(m_clockModel);
+    m_syncView->verticalHeader()->hide();
+    m_syncView->setSelectionMode(QAbstractItemView::NoSelection);
+    m_syncView->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    m_syncView->horizontalHeader()->setSectionResizeMode(models::ClockStatsModel::StateColumn, QHeaderView::Stretch);
+    m_syncDock = makeDock(m_syncView, QStringLiteral("syncDock"));
     connect(m_recording, &RecordingControls::recordingFailed, this, &DeviceWorkspace::onErrorOccurred);
     bindLink(std::make_unique<device::NoLink>(), {}); // nothing connected yet
     // The Monitor layout: the settings hidden until asked for (Device > Configuration, or the
@@ -326,6 +338,7 @@ void DeviceWorkspace::resetViews()
     m_detailsDock->hide();
     m_identity.reset();
     m_stats.reset();
+    m_clockModel->setClocks({});
     m_chartSeq = 0;
     m_shownTotal = ~quint64(0);
     m_charts->clear();
@@ -389,6 +402,7 @@ void DeviceWorkspace::reclaimPort()
         return;
     m_identity.reset();
     m_stats.reset();
+    m_clockModel->setClocks({});
     startLink();
 }
 
@@ -508,6 +522,7 @@ void DeviceWorkspace::onIdentityChanged(const model::DeviceIdentity &identity)
 void DeviceWorkspace::onStatsUpdated(const device::SessionStats &stats)
 {
     m_stats = stats;
+    m_clockModel->setClocks(stats.clocks);
     if (stats.baud > 0)
         m_baud = stats.baud; // the rate found by a detection, or followed after a change
     updateStatsLabel();
@@ -675,6 +690,7 @@ void DeviceWorkspace::retranslateUi()
     m_attitudeDock->setWindowTitle(tr("3D attitude"));
     m_configDock->setWindowTitle(tr("Configuration"));
     m_recordingDock->setWindowTitle(tr("Recording"));
+    m_syncDock->setWindowTitle(tr("Time sync"));
     m_valuesModel->retranslate();
     resizeValueColumns();
     updateStateLabel();

@@ -34,6 +34,7 @@ class QTableView;
 
 namespace imudesk::models {
 class LatestValuesModel;
+class ClockStatsModel;
 }
 
 namespace imudesk::ui {
@@ -189,6 +190,9 @@ public:
     QDockWidget *consoleDock() const { return m_consoleDock; }
     QDockWidget *rawBytesDock() const { return m_rawDock; }
     QDockWidget *commandLogDock() const { return m_commandLogDock; }
+    // The clocks of the link (issue 36): how each stream's samples get their common time.
+    QDockWidget *syncDock() const { return m_syncDock; }
+    const models::ClockStatsModel *clockModel() const { return m_clockModel; }
     // Whether the current link has a use for `dock` (by its capabilities).
     bool offersDock(const QDockWidget *dock) const;
     // Shows a dock the link offers and brings it to the front.
@@ -280,6 +284,9 @@ private:
     QDockWidget *m_configDock = nullptr;
     RecordingControls *m_recording = nullptr;
     QDockWidget *m_recordingDock = nullptr;
+    models::ClockStatsModel *m_clockModel = nullptr;
+    QTableView *m_syncView = nullptr;
+    QDockWidget *m_syncDock = nullptr;
     QList<QDockWidget *> m_linkDocks;
     QHash<QDockWidget *, LinkDockPlace> m_linkDockPlaces;
     void placeLinkDock(QDockWidget *dock);

@@ -226,7 +226,7 @@ void DeviceWorkspace::applyPreset(LayoutPreset preset)
     splitDockWidget(m_valuesDock, m_attitudeDock, Qt::Vertical);
     tabifyDockWidget(m_valuesDock, m_configDock);
     placeDetailsDock();
-    const QList<QDockWidget *> bottom{m_consoleDock, m_rawDock, m_commandLogDock, m_recordingDock};
+    const QList<QDockWidget *> bottom{m_consoleDock, m_rawDock, m_commandLogDock, m_recordingDock, m_syncDock};
     for (QDockWidget *dock : bottom) {
         dock->setFloating(false);
         addDockWidget(Qt::BottomDockWidgetArea, dock);
@@ -245,6 +245,7 @@ void DeviceWorkspace::applyPreset(LayoutPreset preset)
     m_rawDock->setVisible(offers(m_rawDock) && preset == LayoutPreset::Analyse);
     m_commandLogDock->setVisible(offers(m_commandLogDock) && preset == LayoutPreset::Analyse);
     m_recordingDock->setVisible(false);
+    m_syncDock->setVisible(preset == LayoutPreset::Analyse);
     if (preset == LayoutPreset::Configure)
         m_configDock->raise();
     else

@@ -152,6 +152,14 @@ int MainWindow::workspaceCount() const
     return m_tabs->count();
 }
 
+std::vector<DeviceWorkspace *> MainWindow::allWorkspaces() const
+{
+    std::vector<DeviceWorkspace *> out;
+    for (int i = 0; i < workspaceCount(); ++i)
+        out.push_back(workspace(i));
+    return out;
+}
+
 DeviceWorkspace *MainWindow::workspace(int index) const
 {
     return qobject_cast<DeviceWorkspace *>(m_tabs->widget(index));

@@ -80,6 +80,7 @@ public:
     // Workspaces (tabs).
     DeviceWorkspace *newWorkspace();
     DeviceWorkspace *currentWorkspace() const override;
+    std::vector<DeviceWorkspace *> allWorkspaces() const override;
     int workspaceCount() const;
     DeviceWorkspace *workspace(int index) const;
     void closeWorkspace(int index);

@@ -9,6 +9,8 @@
 #include "workspace/device_workspace.h"
 #include "recording/export_dialog.h"
 #include "recording/recording_controls.h"
+#include "recording/session_recording_window.h"
+#include "recording/twist_align_dialog.h"
 #include "ui/firmware/firmware_update_dialog.h"
 #include "workspace/preferences.h"
 #include "record/csv_capture_converter.h"
@@ -19,6 +21,7 @@
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QMenu>
+#include <QStandardPaths>
 
 namespace imudesk::ui {
 
@@ -65,6 +68,11 @@ ToolActions::ToolActions(ToolHost *host, QObject *parent) : QObject(parent), m_h
     m_record = make("recordAction");
     m_record->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_R));
     connect(m_record, &QAction::triggered, this, &ToolActions::record);
+    m_recordAll = make("recordAllAction");
+    m_recordAll->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_R));
+    connect(m_recordAll, &QAction::triggered, this, &ToolActions::recordAll);
+    m_twistAlign = make("twistAlignAction");
+    connect(m_twistAlign, &QAction::triggered, this, &ToolActions::openTwistAlign);
     m_magCal = make("magCalAction");
     connect(m_magCal, &QAction::triggered, this, linkTool(Tool::MagCalibration));
     m_gyroCal = make("gyroCalAction");
@@ -94,7 +102,7 @@ void ToolActions::addToMenus(QMenu *fileMenu, QMenu *deviceMenu, QMenu *calibrat
     deviceMenu->addSeparator();
     deviceMenu->addActions({m_modbus, m_can, m_scanBus});
     deviceMenu->addSeparator();
-    deviceMenu->addActions({m_configuration, m_profiles, m_record, m_firmware});
+    deviceMenu->addActions({m_configuration, m_profiles, m_record, m_recordAll, m_firmware});
     m_calibrateMenu = calibrateMenu;
     calibrateMenu->addActions({m_magCal, m_gyroCal, m_attitudeReset});
     calibrateMenu->addSeparator();
@@ -102,7 +110,7 @@ void ToolActions::addToMenus(QMenu *fileMenu, QMenu *deviceMenu, QMenu *calibrat
     calibrateMenu->addSeparator();
     calibrateMenu->addAction(m_calHistory);
     m_toolsMenu = toolsMenu;
-    toolsMenu->addActions({m_analyze, m_calculator});
+    toolsMenu->addActions({m_analyze, m_twistAlign, m_calculator});
 }
 
 void ToolActions::retranslate()
@@ -131,6 +139,10 @@ void ToolActions::retranslate()
     m_firmware->setStatusTip(tr("Write a new firmware image to the module over its serial port or its CAN bus, and verify it"));
     m_record->setText(tr("&Record"));
     m_record->setStatusTip(tr("Record this device to a capture file; the recording panel shows the progress and Stop"));
+    m_recordAll->setText(tr("Record &all devices…"));
+    m_recordAll->setStatusTip(tr("Record every connected tab into one session folder, the devices on one time base"));
+    m_twistAlign->setText(tr("T&wist to align…"));
+    m_twistAlign->setStatusTip(tr("Align the devices of a recorded session from sharp turns of the fixture they share"));
     m_magCal->setText(tr("&Magnetometer…"));
     m_magCal->setStatusTip(tr("Calibrate the magnetometer: turn the module while the sphere fills, then judge the fit"));
     m_gyroCal->setText(tr("&Gyro scale factor…"));
@@ -302,6 +314,43 @@ void ToolActions::record()
     // A second Ctrl+R while recording leaves it running (Stop is in the panel).
     if (!controls->isRecording())
         controls->startRecording();
+}
+
+void ToolActions::recordAll()
+{
+    if (!m_sessionWindow) {
+        ToolHost *host = m_host;
+        auto devices = [host] {
+            std::vector<SessionRecordingWindow::Device> out;
+            for (DeviceWorkspace *ws : host->allWorkspaces()) {
+                if (!ws || ws->state() != SessionState::Connected
+                    || !ws->capabilities().testFlag(device::DeviceLink::Capability::Recording))
+                    continue;
+                auto *session = qobject_cast<device::Session *>(&ws->link());
+                if (!session)
+                    continue;
+                out.push_back({session, ws->title(), ws->target(), ws->identity().value_or(model::DeviceIdentity{})});
+            }
+            return out;
+        };
+        QString folder = m_host->preferences().recordingFolder;
+        if (folder.isEmpty())
+            folder = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
+        m_sessionWindow = new SessionRecordingWindow(devices, folder, m_host->dialogParent());
+        m_sessionWindow->setAttribute(Qt::WA_DeleteOnClose);
+        connect(m_sessionWindow, &SessionRecordingWindow::recordingFinished, this,
+                [this](const QString &folder, bool) { m_lastSession = folder; });
+    }
+    m_sessionWindow->show();
+    m_sessionWindow->raise();
+    m_sessionWindow->activateWindow();
+}
+
+void ToolActions::openTwistAlign()
+{
+    auto *dialog = new TwistAlignDialog(m_lastSession, m_host->dialogParent());
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    dialog->show();
 }
 
 void ToolActions::noteRecording(const QString &path)

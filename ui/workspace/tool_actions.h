@@ -5,10 +5,12 @@
 // window, which hands over its menus and asks for an update when the tab or its state
 // changes; it reaches the window only through ToolHost (tool_host.h). Every long task runs
 // in a non-modal window with its own progress and cancel.
+#include "recording/session_recording_window.h"
 #include "workspace/tool_host.h"
 
 #include <QCoreApplication>
 #include <QObject>
+#include <QPointer>
 
 class QAction;
 class QMenu;
@@ -16,6 +18,7 @@ class QMenu;
 namespace imudesk::ui {
 
 class DeviceWorkspace;
+class SessionRecordingWindow;
 
 class ToolActions : public QObject {
     Q_OBJECT
@@ -41,6 +44,10 @@ public:
     QAction *calculatorAction() const { return m_calculator; }
     QAction *firmwareAction() const { return m_firmware; }
     QAction *recordAction() const { return m_record; }
+    QAction *recordAllAction() const { return m_recordAll; }
+    QAction *twistAlignAction() const { return m_twistAlign; }
+    // Device > Record all devices: the window (made on first use).
+    SessionRecordingWindow *sessionRecordingWindow() const { return m_sessionWindow; }
     QAction *magCalAction() const { return m_magCal; }
     QAction *gyroCalAction() const { return m_gyroCal; }
     QAction *attitudeResetAction() const { return m_attitudeReset; }
@@ -52,6 +59,8 @@ public:
     bool importVendorCsv(const QString &csvPath, const QString &capturePath);
     // The recording made last in this session (any tab), what Export offers first; empty: none.
     QString lastRecording() const { return m_lastRecording; }
+    // The session recorded last (Record all devices), what Twist to align offers first.
+    QString lastSession() const { return m_lastSession; }
 
 private:
     QAction *make(const char *objectName);
@@ -65,6 +74,8 @@ private:
     void openCalculator();
     // Device > Record: starts recording the current tab's device (the panel shows why when it cannot).
     void record();
+    void recordAll();
+    void openTwistAlign();
     void noteRecording(const QString &path);
     void openCalHistory();
 
@@ -78,6 +89,9 @@ private:
     QAction *m_scanBus = nullptr;
     QAction *m_configuration = nullptr;
     QAction *m_profiles = nullptr;
+    QAction *m_recordAll = nullptr;
+    QAction *m_twistAlign = nullptr;
+    QPointer<SessionRecordingWindow> m_sessionWindow;
     QAction *m_calculator = nullptr;
     QAction *m_firmware = nullptr;
     QAction *m_record = nullptr;
@@ -87,6 +101,7 @@ private:
     QAction *m_compassCal = nullptr;
     QAction *m_calHistory = nullptr;
     QString m_lastRecording;
+    QString m_lastSession;
     QMenu *m_toolsMenu = nullptr;
     QMenu *m_calibrateMenu = nullptr;
 };

@@ -8,6 +8,8 @@
 
 #include <QString>
 
+#include <vector>
+
 class QWidget;
 
 namespace imudesk::ui {
@@ -20,6 +22,8 @@ public:
     virtual ~ToolHost() = default;
     virtual QWidget *dialogParent() = 0;
     virtual DeviceWorkspace *currentWorkspace() const = 0;
+    // Every tab, in order (Record all devices).
+    virtual std::vector<DeviceWorkspace *> allWorkspaces() const = 0;
     // The current tab when it is idle, else a new one (for a link the user opens).
     virtual DeviceWorkspace *freeWorkspaceForLink() = 0;
     virtual const Preferences &preferences() const = 0;

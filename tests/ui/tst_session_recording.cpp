@@ -1,0 +1,110 @@
+// Issue 36 in the window: the Time sync panel of a tab shows its clocks, and Device > Record all
+// devices records every connected tab into one session folder that exports with the devices
+// aligned. Two simulated modules of two families (an HI14 and an HEC495 compass), end to end.
+#include "../common/test_main.h"
+#include "itemmodels/clock_stats_model.h"
+#include "record/session_manifest.h"
+#include "recording/session_recording_window.h"
+#include "workspace/device_workspace.h"
+#include "workspace/main_window.h"
+#include "workspace/port_choice.h"
+#include "workspace/tool_actions.h"
+
+#include <QAction>
+#include <QDir>
+#include <QDockWidget>
+#include <QFile>
+#include <QFileInfo>
+#include <QSignalSpy>
+#include <QLabel>
+#include <QPushButton>
+#include <QStandardPaths>
+#include <QTableWidget>
+#include <QTemporaryDir>
+#include <QTest>
+
+using namespace imudesk;
+using ui::MainWindow;
+
+class TstSessionRecording : public QObject {
+    Q_OBJECT
+
+private Q_SLOTS:
+    void initTestCase() { QStandardPaths::setTestModeEnabled(true); }
+
+    void recordAllDevicesAndTheirClocks()
+    {
+        MainWindow w;
+        QStringList errors;
+        w.setErrorPresenter([&errors](const QString &m) { errors << m; });
+        w.resize(1366, 768);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QString error;
+        QVERIFY2(w.openLink(device::LinkRequest::simulatedHipnuc(sim::SimOptions{}, 0), &error), qPrintable(error));
+        w.newWorkspace();
+        QVERIFY2(w.connectSimulated(ui::PortChoice::simulated(QStringLiteral("HEC495"), QString()), 0, &error),
+                 qPrintable(error));
+        QCOMPARE(w.workspaceCount(), 2);
+        ui::DeviceWorkspace *hi14 = w.workspace(0), *hec = w.workspace(1);
+        QTRY_VERIFY_WITH_TIMEOUT(hi14->state() == device::SessionState::Connected, 10000);
+        QTRY_VERIFY_WITH_TIMEOUT(hec->state() == device::SessionState::Connected, 15000);
+
+        // The Time sync panel: the HI14's HI91 counter aligned after a few seconds of data.
+        QVERIFY(hi14->syncDock());
+        const auto *clocks = hi14->clockModel();
+        QTRY_VERIFY_WITH_TIMEOUT(clocks->rowCount() >= 1, 5000);
+        const QModelIndex state = clocks->index(0, models::ClockStatsModel::StateColumn);
+        QTRY_COMPARE_WITH_TIMEOUT(clocks->data(state, models::ClockStatsModel::StateRole).toString(),
+                                  QStringLiteral("aligned"), 10000);
+        QCOMPARE(clocks->data(clocks->index(0, models::ClockStatsModel::StreamColumn)).toString(), QStringLiteral("HI91"));
+        QVERIFY(!clocks->data(clocks->index(0, models::ClockStatsModel::DriftColumn)).toString().isEmpty());
+
+        // Device > Record all devices.
+        QTemporaryDir dir;
+        QAction *recordAll = w.findChild<QAction *>(QStringLiteral("recordAllAction"));
+        QVERIFY(recordAll && recordAll->isEnabled());
+        recordAll->trigger();
+        auto *win = w.findChild<ui::SessionRecordingWindow *>();
+        QVERIFY(win && win->isVisible());
+        win->setParentFolder(dir.path());
+        win->start();
+        QVERIFY2(win->isRecording(), qPrintable(win->findChild<QLabel *>(QStringLiteral("sessionStatus"))->text()));
+        auto *table = win->findChild<QTableWidget *>(QStringLiteral("sessionDevices"));
+        QCOMPARE(table->rowCount(), 2);
+        QTest::qWait(3000);
+        QVERIFY(!win->findChild<QPushButton *>(QStringLiteral("startSessionRecording"))->isEnabled());
+        QSignalSpy finished(win, &ui::SessionRecordingWindow::recordingFinished);
+        win->stop();
+        QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 1, 10000);
+        QVERIFY(finished.at(0).at(1).toBool());
+        const QString folder = win->lastSession();
+        record::SessionManifest m;
+        QVERIFY2(record::SessionManifest::load(folder, &m, &error), qPrintable(error));
+        QCOMPARE(int(m.devices.size()), 2);
+        QCOMPARE(m.devices[0].linkKind, QStringLiteral("HiPNUC serial"));
+        QCOMPARE(m.devices[1].linkKind, QStringLiteral("HEC495 serial"));
+        QVERIFY2(m.devices[0].frames > 200, qPrintable(QString::number(m.devices[0].frames))); // 100 Hz for 3 s
+        QVERIFY(m.devices[1].frames > 10);
+        QVERIFY(!m.devices[0].clocks.empty());
+        QCOMPARE(table->item(0, 4)->text(), QStringLiteral("complete"));
+
+        // Export aligned: one CSV beside the folder, both devices in it.
+        QSignalSpy exported(win, &ui::SessionRecordingWindow::exportFinished);
+        auto *exportButton = win->findChild<QPushButton *>(QStringLiteral("exportSession"));
+        QVERIFY(exportButton->isEnabled());
+        exportButton->click();
+        QTRY_COMPARE_WITH_TIMEOUT(exported.size(), 1, 20000);
+        QVERIFY2(exported.at(0).at(0).toBool(), qPrintable(exported.at(0).at(1).toString()));
+        QFile csv(folder + QStringLiteral(".csv"));
+        QVERIFY(csv.open(QIODevice::ReadOnly));
+        const QByteArray text = csv.readAll();
+        QVERIFY(text.startsWith("device,time_s"));
+        QVERIFY(text.count('\n') > 250);
+        QVERIFY(errors.isEmpty());
+        win->close();
+    }
+};
+
+IMUDESK_TEST_MAIN(TstSessionRecording)
+#include "tst_session_recording.moc"
