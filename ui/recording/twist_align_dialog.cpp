@@ -324,7 +324,7 @@ void CorrelationPlot::paintEvent(QPaintEvent *)
     for (const QString &l : lines)
         textWidth = std::max(textWidth, fm.horizontalAdvance(l));
     const double swatch = 22, pad = 6;
-    const double w = std::min(area.width() - 8, pad * 3 + swatch + textWidth);
+    const double w = std::min(area.width() - 8, pad * 3 + swatch + textWidth + 2); // + 2: the advance rounds down
     const double h = pad * 2 + fm.height() * double(lines.size());
     const QRectF box(area.right() - w - 4, area.bottom() - h - 4, w, h);
     p.setPen(QPen(axis, 1));
