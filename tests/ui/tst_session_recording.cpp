@@ -88,6 +88,8 @@ private Q_SLOTS:
         QVERIFY(m.devices[1].frames > 10);
         QVERIFY(!m.devices[0].clocks.empty());
         QCOMPARE(table->item(0, 4)->text(), QStringLiteral("complete"));
+        if (const QString shots = qEnvironmentVariable("IMUDESK_TEST_SHOTS"); !shots.isEmpty())
+            win->grab().save(QDir(shots).filePath(QStringLiteral("record-all.png"))); // to look at it
 
         // Export aligned: one CSV beside the folder, both devices in it.
         QSignalSpy exported(win, &ui::SessionRecordingWindow::exportFinished);
