@@ -23,6 +23,8 @@
 #include "charts/chart_panel.h"
 #include "charts/chart_view.h"
 #include "device/device_session.h"
+#include "device/group_recording.h"
+#include "record/session_exporter.h"
 #include "workspace/device_workspace.h"
 #include "workspace/main_window.h"
 #include "record/capture_reader.h"
@@ -30,6 +32,7 @@
 
 #include <QDir>
 #include <QFile>
+#include <QFileInfo>
 #include <QTemporaryDir>
 
 #include <QApplication>
@@ -337,7 +340,28 @@ int main(int argc, char **argv)
     quint64 recordedFrames = 0, recordedBytes = 0;
     QString recordStop;
     bool recordStopped = false;
-    if (record) {
+    // Several modules: all of them recorded as one session (issue 36), as Device > Record all
+    // devices does; the session is read back and exported aligned at the end.
+    std::unique_ptr<device::GroupRecording> group;
+    QString groupManifest, groupError;
+    bool groupFinished = false;
+    if (record && devices > 1) {
+        group = std::make_unique<device::GroupRecording>();
+        QObject::connect(group.get(), &device::GroupRecording::finished, group.get(),
+                         [&](const QString &path, const QString &why) {
+                             groupFinished = true;
+                             groupManifest = path;
+                             groupError = why;
+                         });
+        std::vector<device::GroupRecording::Member> members;
+        for (ui::DeviceWorkspace *w : window.allWorkspaces())
+            members.push_back({&sessionOf(w), w->title(), w->target(), w->identity().value_or(model::DeviceIdentity{})});
+        if (!group->start(QDir(recordDir).filePath(QStringLiteral("session")), members, &groupError)) {
+            std::fprintf(stderr, "%s: %s\n", name, qPrintable(groupError));
+            return 1;
+        }
+        spin(200);
+    } else if (record) {
         QObject::connect(&session, &device::DeviceSession::recordingProgress, &session,
                          [&](quint64 bytes, quint64 frames) {
                              recordedBytes = bytes;
@@ -407,7 +431,41 @@ int main(int argc, char **argv)
     spin(500); // let the last frames arrive
     bool captureIntact = true;
     quint64 captureBytes = 0;
-    if (record) {
+    uint64_t exportRows = 0, exportWithoutCommon = 0;
+    if (group) {
+        group->stop();
+        for (int waited = 0; !groupFinished && waited < 10000; waited += 50)
+            spin(50);
+        captureIntact = groupFinished && groupError.isEmpty();
+        const QString folder = QFileInfo(groupManifest).absolutePath();
+        for (const auto &d : group->manifest().devices) {
+            recordedFrames += d.frames;
+            recordedBytes += d.bytes;
+            record::CaptureReader reader;
+            QString why;
+            bool ok = captureIntact && reader.open(QDir(folder).filePath(d.file), &why);
+            record::CaptureReader::Chunk chunk;
+            record::CaptureReader::Result r = record::CaptureReader::Result::Error;
+            while (ok && (r = reader.next(chunk)) == record::CaptureReader::Result::Chunk)
+                captureBytes += chunk.size;
+            captureIntact = ok && r == record::CaptureReader::Result::End && !d.droppedOut();
+        }
+        // The export aligned on the common time carries all three times.
+        record::SessionExporter::Options eo;
+        eo.format = record::CaptureExporter::Format::JsonLines;
+        eo.output = QDir(recordDir).filePath(QStringLiteral("session.jsonl"));
+        const auto er = record::SessionExporter::run(folder, eo);
+        QFile jsonl(eo.output);
+        if (er.ok && jsonl.open(QIODevice::ReadOnly))
+            while (!jsonl.atEnd()) {
+                const QByteArray line = jsonl.readLine();
+                ++exportRows;
+                if (!line.contains("\"common_time_ns\"") || !line.contains("\"host_time_ns\"")
+                    || !line.contains("\"system_time\""))
+                    ++exportWithoutCommon;
+            }
+        captureIntact = captureIntact && er.ok && exportRows > 0 && exportWithoutCommon == 0;
+    } else if (record) {
         session.stopRecording();
         for (int waited = 0; !recordStopped && waited < 10000; waited += 50)
             spin(50);
@@ -519,6 +577,10 @@ int main(int argc, char **argv)
                     (unsigned long long)captureBytes);
         std::printf("  %-34s %12s   %s\n", "capture intact (reads to its end)", captureIntact ? "yes" : "NO",
                     captureIntact ? "ok" : "MISSED");
+        if (group)
+            std::printf("  %-34s %12llu   (%llu without the three times)  %s\n", "session exported aligned (rows)",
+                        (unsigned long long)exportRows, (unsigned long long)exportWithoutCommon,
+                        exportWithoutCommon == 0 ? "ok" : "MISSED");
     }
     std::printf("  %-34s %12.1f Hz\n", "decoded rate (measured window)",
                 double(session.store().totalAppended() - decodedAtStart) / std::max(1e-3, wallS + 0.5));
