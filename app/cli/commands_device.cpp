@@ -382,6 +382,11 @@ int cmdSimulate(const QStringList &args)
                                    QStringLiteral("On a pty: a USB adapter between the device and the host, TIMER_MS[,JITTER_US"
                                                   "[,FIXED_US]] (e.g. 16: an FTDI's default latency timer)."),
                                    QStringLiteral("SPEC")));
+    p.addOption(QCommandLineOption(QStringLiteral("sync-in"),
+                                   QStringLiteral("HiPNUC on a pty: a pulse source on SYNC_IN at HZ; every module simulated "
+                                                  "on this host with the same rate sees the same edges (LOG HI91 ONMARK 1 "
+                                                  "then sends a frame at each)."),
+                                   QStringLiteral("HZ")));
     addModbusSimulateOptions(p); // also --device hipnuc|hec495
     addFlashDumpOption(p);
     p.addOption(QCommandLineOption(QStringLiteral("address"), QStringLiteral("HEC495 module address (default 0)."),
@@ -399,6 +404,7 @@ int cmdSimulate(const QStringList &args)
                                          "[--firmware 1.7.1] [--baud 115200] [--address N] "
                                          "[--motion static|spin|tumble|turntable|twists] [--pps] [--seed N] [--faults LIST] "
                                          "[--clock PPM[,OFFSET_MS[,STEP_AT_S,STEP_MS]]] [--adapter TIMER_MS[,JITTER_US[,FIXED_US]]] "
+                                         "[--sync-in HZ] "
                                          "[--flash-dump FILE] [--modbus [--id N]] | --can PLUGIN:INTERFACE [--protocol j1939|canopen] "
                                          "[--device hipnuc|hec495] [--node N] [--fd] [--flash-dump FILE]");
     if (!parseArgs(p, args, usage))
@@ -486,9 +492,17 @@ int cmdSimulate(const QStringList &args)
         adapter.fixedUs = adapterSpec.size() > 2 ? adapterSpec[2] : 0;
     }
 
+    double syncInHz = 0;
+    if (p.isSet(QStringLiteral("sync-in"))) {
+        syncInHz = p.value(QStringLiteral("sync-in")).toDouble(&ok);
+        if (!ok || syncInHz <= 0 || syncInHz > 1000)
+            return fail(QStringLiteral("--sync-in needs a pulse rate in Hz, up to 1000"), ExitUsage);
+    }
+
     sim::PtySimulator simulator(o);
     simulator.setClock(clock);
     simulator.setAdapter(adapter);
+    simulator.setSyncIn(syncInHz);
     QString error;
     if (!simulator.start(&error))
         return fail(QStringLiteral("could not create a pseudo-terminal: %1").arg(error));

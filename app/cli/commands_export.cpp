@@ -29,12 +29,16 @@ int cmdExport(const QStringList &args)
                                    QStringLiteral("A recorded session: resample every device onto one grid of this many ms "
                                                   "(tidy CSV)."),
                                    QStringLiteral("MS")));
+    p.addOption(QCommandLineOption(QStringLiteral("pulse-hz"),
+                                   QStringLiteral("A recorded session of modules triggered by one SYNC_IN pulse source "
+                                                  "(LOG ... ONMARK 1) at HZ: one row per pulse, each device's frame of it."),
+                                   QStringLiteral("HZ")));
     p.addPositionalArgument(QStringLiteral("FILE"),
                             QStringLiteral("A capture, a vendor HI91 CSV, a raw byte dump (recognised by content), or the "
                                            "folder of a recorded session (record PORT,PORT,...)."));
     if (!parseArgs(p, args,
                    QStringLiteral("imudesk-cli export FILE --format vendor-csv|csv|jsonl [-o OUT] [--from S --to S]\n"
-                                  "       imudesk-cli export SESSION_FOLDER --format csv|jsonl [-o OUT] [--grid-ms MS]")))
+                                  "       imudesk-cli export SESSION_FOLDER --format csv|jsonl [-o OUT] [--grid-ms MS | --pulse-hz HZ]")))
         return ExitUsage;
     if (p.positionalArguments().size() != 1)
         return fail(QStringLiteral("export needs exactly one capture FILE"), ExitUsage);
@@ -58,6 +62,12 @@ int cmdExport(const QStringList &args)
             if (!ok || so.gridMs <= 0)
                 return fail(QStringLiteral("--grid-ms needs a positive number of ms"), ExitUsage);
         }
+        if (p.isSet(QStringLiteral("pulse-hz"))) {
+            bool ok = false;
+            so.pulseHz = p.value(QStringLiteral("pulse-hz")).toDouble(&ok);
+            if (!ok || so.pulseHz <= 0 || so.gridMs > 0)
+                return fail(QStringLiteral("--pulse-hz needs the pulse rate in Hz (and no --grid-ms)"), ExitUsage);
+        }
         if (p.isSet(QStringLiteral("from")) || p.isSet(QStringLiteral("to")))
             return fail(QStringLiteral("--from/--to are for one capture; a session exports whole"), ExitUsage);
         const auto r = record::SessionExporter::run(input, so);
@@ -70,10 +80,12 @@ int cmdExport(const QStringList &args)
             per << QString::number(n);
         out(QStringLiteral("wrote %1").arg(so.output));
         out(QStringLiteral("%1 rows (samples per device: %2)").arg(r.rows).arg(per.join(QStringLiteral(", "))));
+        if (so.pulseHz > 0)
+            out(QStringLiteral("pulses: %1, with a frame of every device: %2").arg(r.pulses).arg(r.pulsesComplete));
         return ExitOk;
     }
-    if (p.isSet(QStringLiteral("grid-ms")))
-        return fail(QStringLiteral("--grid-ms is for a recorded session's folder"), ExitUsage);
+    if (p.isSet(QStringLiteral("grid-ms")) || p.isSet(QStringLiteral("pulse-hz")))
+        return fail(QStringLiteral("--grid-ms and --pulse-hz are for a recorded session's folder"), ExitUsage);
     o.output = p.value(QStringLiteral("o"));
     if (o.output.isEmpty()) {
         const QFileInfo info(input);

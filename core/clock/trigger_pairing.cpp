@@ -17,13 +17,38 @@ void TriggerPairing::add(int device, int64_t deviceNs, int64_t commonNs, bool al
         local = d.local.back() + std::max<int64_t>(1, std::llround(steps));
     }
     d.local.push_back(local);
+    d.commonNs.push_back(commonNs);
+    d.aligned.push_back(aligned);
     d.lastDeviceNs = deviceNs;
-    if (aligned && !d.base) {
-        if (!m_epochNs)
-            m_epochNs = commonNs;
-        const int64_t index = std::llround(double(commonNs - *m_epochNs) / double(m_periodNs));
-        d.base = index - local;
+}
+
+std::map<int, std::optional<int64_t>> TriggerPairing::bases() const
+{
+    // The pulses' phase on the common time: the circular mean of every aligned frame's.
+    const double period = double(m_periodNs);
+    double sx = 0, sy = 0;
+    for (const auto &[id, d] : m_devices)
+        for (size_t i = 0; i < d.local.size(); ++i)
+            if (d.aligned[i]) {
+                const double a = 2 * M_PI * double(((d.commonNs[i] % m_periodNs) + m_periodNs) % m_periodNs) / period;
+                sx += std::cos(a);
+                sy += std::sin(a);
+            }
+    const double phaseNs = std::atan2(sy, sx) / (2 * M_PI) * period;
+    std::map<int, std::optional<int64_t>> out;
+    for (const auto &[id, d] : m_devices) {
+        std::vector<int64_t> votes;
+        for (size_t i = 0; i < d.local.size(); ++i)
+            if (d.aligned[i])
+                votes.push_back(std::llround((double(d.commonNs[i]) - phaseNs) / period) - d.local[i]);
+        if (votes.empty()) {
+            out[id] = std::nullopt;
+            continue;
+        }
+        std::nth_element(votes.begin(), votes.begin() + std::ptrdiff_t(votes.size() / 2), votes.end());
+        out[id] = votes[votes.size() / 2];
     }
+    return out;
 }
 
 std::vector<std::optional<int64_t>> TriggerPairing::indices(int device) const
@@ -32,10 +57,10 @@ std::vector<std::optional<int64_t>> TriggerPairing::indices(int device) const
     const auto it = m_devices.find(device);
     if (it == m_devices.end())
         return out;
-    const Device &d = it->second;
-    out.reserve(d.local.size());
-    for (int64_t l : d.local)
-        out.push_back(d.base ? std::optional<int64_t>(l + *d.base) : std::nullopt);
+    const std::optional<int64_t> base = bases()[device];
+    out.reserve(it->second.local.size());
+    for (int64_t l : it->second.local)
+        out.push_back(base ? std::optional<int64_t>(l + *base) : std::nullopt);
     return out;
 }
 
@@ -43,16 +68,18 @@ TriggerPairing::Summary TriggerPairing::summary() const
 {
     Summary s;
     s.devices = int(m_devices.size());
+    const auto base = bases();
     std::map<int64_t, int> seen; // pulse index -> devices with a frame of it
     for (const auto &[id, d] : m_devices) {
         s.frames += int64_t(d.local.size());
-        if (!d.base) {
+        const std::optional<int64_t> b = base.at(id);
+        if (!b) {
             s.unindexed += int64_t(d.local.size());
             continue;
         }
         int64_t previous = INT64_MIN;
         for (int64_t l : d.local) {
-            const int64_t index = l + *d.base;
+            const int64_t index = l + *b;
             if (index != previous) // a device counts once per pulse
                 ++seen[index];
             previous = index;
@@ -63,9 +90,9 @@ TriggerPairing::Summary TriggerPairing::summary() const
         if (n == s.devices)
             ++s.complete;
     for (const auto &[id, d] : m_devices)
-        if (d.base)
+        if (const std::optional<int64_t> b = base.at(id))
             for (int64_t l : d.local)
-                if (seen[l + *d.base] > 1)
+                if (seen[l + *b] > 1)
                     ++s.framesPaired;
     return s;
 }

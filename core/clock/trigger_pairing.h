@@ -6,10 +6,13 @@
 //
 // Within a device the index follows its own counter: consecutive frames are as many pulses
 // apart as their device times are periods apart (a frame lost on the way leaves a gap, it does
-// not shift what follows). Across devices the first index is set by the common time (core/clock)
-// of the device's first frame once its clock model is aligned: the common times of one pulse
-// agree to well under a millisecond, a pulse period is several, so the nearest period is the
-// pulse. Frames that came before the model was aligned are indexed then, from the same base.
+// not shift what follows). Across devices the counts are tied by the common time (core/clock) of
+// the frames that came while the device's clock model was aligned: the common times of one
+// pulse agree to well under a millisecond, a pulse period is several, so the nearest period is
+// the pulse. Robustly: the pulses' phase on the common time is the circular mean over every
+// aligned frame, and each device's base is the median over its aligned frames, so a frame whose
+// time was off (the model's first seconds, a delayed read) does not shift a device's count.
+// Frames that came before the model was aligned are indexed from the same base.
 #include <cstdint>
 #include <map>
 #include <optional>
@@ -43,12 +46,14 @@ public:
 
 private:
     struct Device {
-        std::vector<int64_t> local; // index within the device, from its counter
+        std::vector<int64_t> local;   // index within the device, from its counter
+        std::vector<int64_t> commonNs; // each frame's common time
+        std::vector<bool> aligned;
         int64_t lastDeviceNs = 0;
-        std::optional<int64_t> base; // local index + base = pulse index
     };
+    // local index + base = pulse index, per device (nullopt: never aligned); worked out on demand.
+    std::map<int, std::optional<int64_t>> bases() const;
     int64_t m_periodNs;
-    std::optional<int64_t> m_epochNs; // common time of pulse index 0
     std::map<int, Device> m_devices;
 };
 

@@ -2,6 +2,7 @@
 
 #include "format/sample_json.h"
 #include "model/sample.h"
+#include "clock/trigger_pairing.h"
 #include "record/capture_sample_stream.h"
 #include "record/csv_number.h"
 
@@ -10,6 +11,7 @@
 
 #include <cmath>
 #include <deque>
+#include <map>
 #include <memory>
 #include <optional>
 
@@ -71,8 +73,8 @@ SessionExporter::Result SessionExporter::run(const QString &folder, const Option
                      "device per file (export each capture on its own for it).");
         return r;
     }
-    if (o.gridMs > 0 && o.format != CaptureExporter::Format::TidyCsv) {
-        r.error = tr("A grid is written as tidy CSV (--format csv).");
+    if ((o.gridMs > 0 || o.pulseHz > 0) && o.format != CaptureExporter::Format::TidyCsv) {
+        r.error = tr("A grid or trigger pairs are written as tidy CSV (--format csv).");
         return r;
     }
     if (o.output.isEmpty()) {
@@ -113,7 +115,81 @@ SessionExporter::Result SessionExporter::run(const QString &folder, const Option
         return ok;
     };
     bool writeOk = true;
-    if (o.gridMs <= 0) {
+    if (o.pulseHz > 0) {
+        // Every triggered frame (a frame with a device time) of every device, compactly; then one
+        // row per pulse index.
+        struct Frame {
+            int64_t commonNs;
+            double v[9];
+        };
+        const auto period = int64_t(1e9 / o.pulseHz);
+        clock::TriggerPairing pairing(period);
+        std::vector<std::vector<Frame>> frames(streams.size());
+        for (size_t i = 0; i < streams.size(); ++i) {
+            CaptureSampleStream &s = *streams[i];
+            int64_t first = 0;
+            while (s.peek()) {
+                const model::Sample x = s.take();
+                if (!x.has(model::FieldDeviceTime) || x.commonTimeNs == 0)
+                    continue;
+                if (first == 0)
+                    first = x.commonTimeNs;
+                // The clock model settles within its first 2 s: the frame that ties this
+                // device's count to the others' comes after them.
+                const bool aligned = x.commonTimeNs - first >= 2'000'000'000;
+                pairing.add(int(i), std::llround(x.deviceTimeMs * 1e6), x.commonTimeNs, aligned);
+                frames[i].push_back(Frame{x.commonTimeNs,
+                                          {x.acc.x * model::kGravity, x.acc.y * model::kGravity, x.acc.z * model::kGravity,
+                                           x.gyr.x * model::kDegToRad, x.gyr.y * model::kDegToRad,
+                                           x.gyr.z * model::kDegToRad, x.roll, x.pitch, x.yaw}});
+            }
+        }
+        std::map<int64_t, std::vector<const Frame *>> rows;
+        for (size_t i = 0; i < streams.size(); ++i) {
+            const auto idx = pairing.indices(int(i));
+            for (size_t j = 0; j < idx.size(); ++j)
+                if (idx[j]) {
+                    auto &row = rows[*idx[j]];
+                    row.resize(streams.size(), nullptr);
+                    row[i] = &frames[i][j];
+                }
+        }
+        buf += "pulse,time_s";
+        for (auto &s : streams)
+            for (const char *col : {"acc_x_mps2", "acc_y_mps2", "acc_z_mps2", "gyr_x_radps", "gyr_y_radps", "gyr_z_radps",
+                                    "roll_deg", "pitch_deg", "yaw_deg"})
+                buf += ',' + s->name.toStdString() + '_' + col;
+        buf += '\n';
+        const int64_t firstIndex = rows.empty() ? 0 : rows.begin()->first; // pulses counted from 0
+        for (const auto &[index, row] : rows) {
+            // The pulse's time: the mean of its frames' common times.
+            double sum = 0;
+            int n = 0;
+            for (const Frame *f : row)
+                if (f) {
+                    sum += double(f->commonNs - origin);
+                    ++n;
+                }
+            buf += std::to_string(index - firstIndex);
+            buf += ',';
+            csv::appendFixed(buf, sum / n / 1e9, 6);
+            for (const Frame *f : row)
+                for (int k = 0; k < 9; ++k) {
+                    buf += ',';
+                    if (f)
+                        csv::appendFixed(buf, f->v[k], 6);
+                }
+            buf += '\n';
+            ++r.rows;
+            if (!(writeOk = flush(false)))
+                break;
+        }
+        const clock::TriggerPairing::Summary sum = pairing.summary();
+        r.pulses = sum.pulses;
+        r.pulsesComplete = sum.complete;
+        if (sum.unindexed > 0)
+            r.notes << tr("%1 frames of devices whose clock never aligned have no pulse index.").arg(sum.unindexed);
+    } else if (o.gridMs <= 0) {
         if (o.format == CaptureExporter::Format::TidyCsv) {
             buf += "device,";
             buf += CaptureExporter::tidyHeader(streams.front()->worldFrame());

@@ -6,7 +6,11 @@
 //     common time), with a device column (key) before the capture's own columns (keys);
 //   * a grid (gridMs > 0): one row per instant of a regular grid over the time all devices were
 //     recording, each device's acceleration, rate and attitude interpolated linearly between
-//     its two samples around the instant (blank where it has none within maxGapMs).
+//     its two samples around the instant (blank where it has none within maxGapMs);
+//   * trigger pairs (pulseHz > 0, hardware trigger mode): modules that sent a frame at each
+//     SYNC_IN edge (LOG ... ONMARK 1): one row per pulse, each device's frame of that pulse
+//     (clock::TriggerPairing: by the device's counter, the devices' counts tied together by the
+//     common time of their first frame 2 s in, once their clock models are aligned).
 // The devices are read side by side, a sample at a time: memory does not grow with the session.
 #include "record/capture_exporter.h"
 #include "record/session_manifest.h"
@@ -25,12 +29,14 @@ public:
         QString output;
         double gridMs = 0;    // > 0: resample onto this grid (tidy CSV only)
         double maxGapMs = 50; // grid: no value where a device's samples are further apart
+        double pulseHz = 0;   // > 0: pair the triggered frames by pulse (tidy CSV only)
     };
     struct Result {
         bool ok = false;
         QString error;
         uint64_t rows = 0;
         std::vector<uint64_t> samplesByDevice;
+        int64_t pulses = 0, pulsesComplete = 0; // trigger pairs: pulses seen, pulses every device has
         QStringList notes; // e.g. devices that dropped out
     };
     static Result run(const QString &folder, const Options &options);

@@ -112,6 +112,8 @@ struct PtySimulator::Engine {
     ClockError clockError;
     std::optional<AdapterBatcher> adapter; // a USB adapter that batches (sim_clock.h)
     int64_t startHostNs = 0;               // device::hostNowNs() when clock started
+    int64_t syncPeriodNs = 0;              // SYNC_IN pulses (setSyncIn); 0: none
+    int64_t nextPulseNs = 0;               // the next edge on the host's clock
 
     uint8_t garbageByte()
     {
@@ -226,6 +228,14 @@ struct PtySimulator::Engine {
             pending.front().written > 0)
             ++framesPausedInside;
         lastServiceUs = now;
+        // SYNC_IN edges since the last tick, each at its own instant of the module's time.
+        if (syncPeriodNs > 0 && hipnuc) {
+            const int64_t nowNs = startHostNs + now * 1000;
+            for (; nextPulseNs <= nowNs; nextPulseNs += syncPeriodNs) {
+                sim.advanceTo(clockError.deviceUs((nextPulseNs - startHostNs) / 1000));
+                hipnuc->simulator().syncInPulse();
+            }
+        }
         sim.advanceTo(clockError.deviceUs(now));
         auto segments = sim.takeOutputSegments();
         setClientPresent(probeClient());
@@ -342,6 +352,10 @@ bool PtySimulator::start(QString *error)
     m_engine = std::make_unique<Engine>(std::move(m_device));
     m_engine->master = master;
     m_engine->startHostNs = startHostNs;
+    if (m_syncInHz > 0) {
+        m_engine->syncPeriodNs = int64_t(1e9 / m_syncInHz);
+        m_engine->nextPulseNs = (startHostNs / m_engine->syncPeriodNs + 1) * m_engine->syncPeriodNs;
+    }
     m_engine->clockError = m_clock;
     if (!m_adapter.isIdeal())
         m_engine->adapter.emplace(m_adapter);

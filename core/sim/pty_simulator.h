@@ -84,6 +84,11 @@ public:
     // time), and what it sends reaches the pty as the adapter releases it.
     void setClock(ClockError clock);
     void setAdapter(AdapterLatency adapter) { m_adapter = adapter; }
+    // A pulse source wired to SYNC_IN (v1.7.1 manual 2.2.1): a rising edge every 1/hz s, at
+    // whole multiples of the period on the host's clock, so every simulator on this host that
+    // has one sees the same edges (one source wired to several modules). A HiPNUC module then
+    // sends a frame of each message set to ONMARK 1 at each edge. 0: none. Before start().
+    void setSyncIn(double hz) { m_syncInHz = hz; }
     const ClockError &clock() const { return m_clock; }
     // The host time (device::hostNowNs) of an instant of the device's own time, e.g. a HiPNUC
     // module's sample at system_time s: trueHostNs(startedAtUs() + s * 1000). 0 before start().
@@ -111,6 +116,7 @@ private:
     SimOptions m_options;
     ClockError m_clock;
     AdapterLatency m_adapter;
+    double m_syncInHz = 0;
     std::unique_ptr<SimulatedSerialDevice> m_device; // until start() hands it to the engine
     bool m_customDevice = false; // a given device survives stop() (a HiPNUC one starts afresh)
     std::unique_ptr<Engine> m_engine;
