@@ -112,6 +112,22 @@ bool connectSession(device::DeviceSession &session, const QString &port, int bau
     return true;
 }
 
+bool fromToOptions(const QCommandLineParser &p, double *from, double *to)
+{
+    for (const char *name : {"from", "to"}) {
+        if (!p.isSet(QLatin1String(name)))
+            continue;
+        bool ok = false;
+        const double v = p.value(QLatin1String(name)).toDouble(&ok);
+        if (!ok || v < 0) {
+            fail(QStringLiteral("--%1 needs seconds >= 0").arg(QLatin1String(name)), ExitUsage);
+            return false;
+        }
+        *(name[0] == 'f' ? from : to) = v;
+    }
+    return true;
+}
+
 bool parseArgs(QCommandLineParser &p, const QStringList &args, const QString &usage)
 {
     p.addHelpOption();

@@ -78,6 +78,8 @@ int cmdMagcal(const QStringList &args);
 int cmdCalibrate(const QStringList &args); // commands_calibrate.cpp
 int cmdStation(const QStringList &args);   // commands_station.cpp
 
+// --from and --to (seconds >= 0) into *from and *to where given; false (usage printed) on a bad value.
+bool fromToOptions(const QCommandLineParser &p, double *from, double *to);
 // Parses args with the given parser; on error prints it and returns false.
 bool parseArgs(QCommandLineParser &p, const QStringList &args, const QString &usage);
 

@@ -92,15 +92,8 @@ int cmdExport(const QStringList &args)
         o.output = info.path() + QLatin1Char('/') + info.completeBaseName()
             + (o.format == record::CaptureExporter::Format::JsonLines ? QStringLiteral(".jsonl") : QStringLiteral(".csv"));
     }
-    for (const char *name : {"from", "to"}) {
-        if (!p.isSet(QLatin1String(name)))
-            continue;
-        bool ok = false;
-        const double v = p.value(QLatin1String(name)).toDouble(&ok);
-        if (!ok || v < 0)
-            return fail(QStringLiteral("--%1 needs seconds >= 0").arg(QLatin1String(name)), ExitUsage);
-        (name[0] == 'f' ? o.fromS : o.toS) = v;
-    }
+    if (!fromToOptions(p, &o.fromS, &o.toS))
+        return ExitUsage;
     const bool showProgress = p.isSet(QStringLiteral("progress"));
     int lastPercent = -1;
     const auto r = record::CaptureExporter::run(input, o, [&](double f) {

@@ -59,15 +59,8 @@ int cmdAlign(const QStringList &args)
     if (!record::SessionManifest::load(folder, &m, &error))
         return fail(error);
     double fromS = 0, toS = 1e12;
-    for (const char *name : {"from", "to"}) {
-        if (!p.isSet(QLatin1String(name)))
-            continue;
-        bool ok = false;
-        const double v = p.value(QLatin1String(name)).toDouble(&ok);
-        if (!ok || v < 0)
-            return fail(QStringLiteral("--%1 needs seconds >= 0").arg(QLatin1String(name)), ExitUsage);
-        (name[0] == 'f' ? fromS : toS) = v;
-    }
+    if (!fromToOptions(p, &fromS, &toS))
+        return ExitUsage;
     const int64_t fromNs = m.startedHostNs + int64_t(fromS * 1e9), toNs = m.startedHostNs + int64_t(std::min(toS, 1e9) * 1e9);
     std::vector<clock::TwistSeries> series;
     for (const auto &d : m.devices) {

@@ -434,15 +434,7 @@ void Hec495Family::fillCounters(SessionStats &s) const
     s.framesByType = m_framesByType;
     s.nmeaSentences = m_text.counters().nmeaSentences;
     s.nmeaErrors = m_text.counters().nmeaErrors;
-    if (m_brackets.count) {
-        ClockStats k;
-        k.source = "HEC495";
-        k.method = ClockStats::Method::Bracket;
-        k.state = clock::ClockModel::State::Aligned;
-        k.uncertaintyNs = m_brackets.meanNs();
-        k.samples = m_brackets.count;
-        s.clocks.push_back(std::move(k));
-    }
+    ClockStats::addBrackets(s.clocks, "HEC495", m_brackets);
 }
 
 } // namespace imudesk::device

@@ -311,15 +311,7 @@ void ModbusFamily::fillCounters(SessionStats &s) const
     s.framesLost = m_pollTimeouts;
     s.framesLostByType[type] = m_pollTimeouts;
     s.framesByType[type] = m_polls;
-    if (m_brackets.count) {
-        ClockStats k;
-        k.source = "Modbus";
-        k.method = ClockStats::Method::Bracket;
-        k.state = clock::ClockModel::State::Aligned;
-        k.uncertaintyNs = m_brackets.meanNs();
-        k.samples = m_brackets.count;
-        s.clocks.push_back(std::move(k));
-    }
+    ClockStats::addBrackets(s.clocks, "Modbus", m_brackets);
 }
 
 // ---------------------------------------------------------------------------------------

@@ -43,6 +43,20 @@ struct ClockStats {
     double spanS = 0;         // device time under the fit
     double needSpanS = 0;     // the span it needs before it is aligned
     uint64_t samples = 0;     // samples stamped so far (Bracket, Stamp)
+
+    // A polled device's clock: its brackets so far (none: no row).
+    static void addBrackets(std::vector<ClockStats> &out, std::string source, const clock::BracketTally &brackets)
+    {
+        if (!brackets.count)
+            return;
+        ClockStats k;
+        k.source = std::move(source);
+        k.method = Method::Bracket;
+        k.state = clock::ClockModel::State::Aligned;
+        k.uncertaintyNs = brackets.meanNs();
+        k.samples = brackets.count;
+        out.push_back(std::move(k));
+    }
 };
 
 struct SessionStats {
