@@ -482,8 +482,14 @@ int cmdSimulate(const QStringList &args)
             clock.stepAtS = clockSpec[2];
             clock.stepUs = clockSpec[3] * 1000;
         }
-        if (std::abs(clock.driftPpm) > 1000 || clock.offsetUs < 0)
-            return fail(QStringLiteral("--clock: a drift within +-1000 ppm and an offset >= 0 ms"), ExitUsage);
+        bool finite = true;
+        for (double v : clockSpec)
+            finite = finite && std::isfinite(v);
+        if (!finite || std::abs(clock.driftPpm) > 1000 || clock.offsetUs < 0 || clock.stepUs < 0
+            || (clockSpec.size() == 4 && clock.stepAtS < 0))
+            return fail(QStringLiteral("--clock: a drift within +-1000 ppm, an offset >= 0 ms and a step forward "
+                                       "(>= 0 ms, at >= 0 s)"),
+                        ExitUsage);
     }
     sim::AdapterLatency adapter;
     if (!adapterSpec.empty()) {
@@ -495,7 +501,7 @@ int cmdSimulate(const QStringList &args)
     double syncInHz = 0;
     if (p.isSet(QStringLiteral("sync-in"))) {
         syncInHz = p.value(QStringLiteral("sync-in")).toDouble(&ok);
-        if (!ok || syncInHz <= 0 || syncInHz > 1000)
+        if (!ok || !std::isfinite(syncInHz) || syncInHz <= 0 || syncInHz > 1000)
             return fail(QStringLiteral("--sync-in needs a pulse rate in Hz, up to 1000"), ExitUsage);
     }
 

@@ -8,6 +8,7 @@
 
 #include <QFileInfo>
 
+#include <cmath>
 #include <cstdio>
 
 namespace imudesk::cli {
@@ -59,13 +60,13 @@ int cmdExport(const QStringList &args)
         if (p.isSet(QStringLiteral("grid-ms"))) {
             bool ok = false;
             so.gridMs = p.value(QStringLiteral("grid-ms")).toDouble(&ok);
-            if (!ok || so.gridMs <= 0)
-                return fail(QStringLiteral("--grid-ms needs a positive number of ms"), ExitUsage);
+            if (!ok || !std::isfinite(so.gridMs) || so.gridMs < 0.01)
+                return fail(QStringLiteral("--grid-ms needs at least 0.01 ms"), ExitUsage);
         }
         if (p.isSet(QStringLiteral("pulse-hz"))) {
             bool ok = false;
             so.pulseHz = p.value(QStringLiteral("pulse-hz")).toDouble(&ok);
-            if (!ok || so.pulseHz <= 0 || so.gridMs > 0)
+            if (!ok || !std::isfinite(so.pulseHz) || so.pulseHz <= 0 || so.pulseHz > 10000 || so.gridMs > 0)
                 return fail(QStringLiteral("--pulse-hz needs the pulse rate in Hz (and no --grid-ms)"), ExitUsage);
         }
         if (p.isSet(QStringLiteral("from")) || p.isSet(QStringLiteral("to")))

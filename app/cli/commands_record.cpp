@@ -6,7 +6,10 @@
 #include "protocol/hipnuc/ascii_command.h"
 #include "record/capture_header.h"
 
+#include <QCoreApplication>
 #include <QDir>
+#include <QElapsedTimer>
+#include <QEventLoop>
 #include <QFileInfo>
 
 #include <memory>
@@ -174,7 +177,12 @@ int recordGroup(const QStringList &specs, const QString &folder, double duration
     clock.start();
     waitFor([&] { return finished; }, duration > 0 ? int(duration * 1000) : -1);
     group.stop();
-    waitFor([&] { return finished; }, 10000);
+    // Ctrl+C ends the waiting above; the recordings still get their 10 s to close their files
+    // and the manifest to be written (waitFor would return at once once a signal came).
+    QElapsedTimer closing;
+    closing.start();
+    while (!finished && closing.elapsed() < 10000)
+        QCoreApplication::processEvents(QEventLoop::WaitForMoreEvents, 50);
     if (!finished)
         return fail(QStringLiteral("the recordings did not stop within 10 s"));
     out(QStringLiteral("recorded %1 s into %2").arg(double(clock.elapsed()) / 1000.0, 0, 'f', 1).arg(folder));
@@ -195,7 +203,16 @@ int recordGroup(const QStringList &specs, const QString &folder, double duration
         d.link.link->close();
     if (!finishError.isEmpty())
         return fail(finishError);
-    return ExitOk;
+    // A device whose capture stopped on its own (a full disk) or that recorded nothing fails the
+    // command, as a single recording that stops does; one that dropped out is reported above.
+    for (const auto &d : group.manifest().devices) {
+        for (const auto &e : d.events)
+            if (e.what == QLatin1String("recording stopped"))
+                return fail(QStringLiteral("%1: %2").arg(d.name, e.detail));
+        if (d.bytes == 0)
+            return fail(QStringLiteral("%1: nothing was recorded").arg(d.name));
+    }
+    return ExitOk; // Ctrl+C is how a recording without --duration ends
 }
 
 } // namespace

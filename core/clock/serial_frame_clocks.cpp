@@ -9,11 +9,13 @@ void SerialFrameClocks::clear()
     m_frameBoundNs = INT64_MAX;
 }
 
-void SerialFrameClocks::beginFrame(size_t frameBytes)
+void SerialFrameClocks::beginFrame(size_t frameBytes, int64_t hostNs)
 {
     m_frameWireNs = wireNs(frameBytes);
     // Only the first frame a read completes can be the one the last read ended inside.
-    m_frameBoundNs = m_cutBytes > 0 && m_baud > 0 ? m_cutHostNs - wireNs(m_cutBytes) : INT64_MAX;
+    const bool cutFits = m_cutBytes > 0 && m_cutBytes < frameBytes && m_baud > 0
+        && hostNs - m_cutHostNs <= wireNs(frameBytes - m_cutBytes) + kMaxCutAgeNs;
+    m_frameBoundNs = cutFits ? m_cutHostNs - wireNs(m_cutBytes) : INT64_MAX;
     m_cutBytes = 0;
 }
 

@@ -19,8 +19,12 @@ public:
     void setBaud(int baud) { m_baud = baud; }
     int baud() const { return m_baud; }
     void clear();
-    // A frame of frameBytes (header and CRC included) completed by the current read.
-    void beginFrame(size_t frameBytes);
+    // A frame of frameBytes (header and CRC included) completed by the current read at hostNs.
+    // The last read's cut counts only if it can be this frame's beginning: fewer bytes than the
+    // frame has, read no longer before than the rest of the frame takes plus kMaxCutAgeNs (what
+    // a damaged candidate or an outage left held is no bound of this frame).
+    void beginFrame(size_t frameBytes, int64_t hostNs);
+    static constexpr int64_t kMaxCutAgeNs = 100'000'000;
     // The current frame's sample (its hostTimeNs set): commonTimeNs stamped.
     void stamp(model::Sample &s, int timeBase);
     // The same from a device time alone (replay: packets, no samples); 0 without a model yet.

@@ -65,19 +65,36 @@ bool GroupRecording::start(const QString &folder, const std::vector<Member> &mem
         d.serial = QString::fromStdString(m.identity.serial);
         d.firmware = m.identity.firmware ? QString::fromStdString(m.identity.firmware->toString()) : QString();
         m_manifest.devices.push_back(d);
-        m_entries.push_back(Entry{m.session, false, {}, m.session ? m.session->state() : SessionState::Closed});
+        Entry entry;
+        entry.session = m.session;
+        entry.state = m.session ? m.session->state() : SessionState::Closed;
+        m_entries.push_back(entry);
         Session *s = m.session;
         if (!s) {
             refused << m.name;
             continue;
         }
-        connect(s, &Session::recordingStarted, this, [this](const QString &) { Q_EMIT progress(); });
+        const QString path = QDir(folder).filePath(d.file);
+        connect(s, &Session::recordingStarted, this, [this, index, path](const QString &started) {
+            if (started == path)
+                m_entries[size_t(index)].started = true;
+            Q_EMIT progress();
+        });
         connect(s, &Session::recordingProgress, this, [this, index](quint64 bytes, quint64 frames) {
             m_manifest.devices[size_t(index)].bytes = bytes;
             m_manifest.devices[size_t(index)].frames = frames;
             Q_EMIT progress();
         });
-        connect(s, &Session::recordingStopped, this, [this, index](const QString &reason) { onStopped(index, reason); });
+        connect(s, &Session::recordingStopped, this, [this, index](const QString &reason) {
+            // The end of a recording the tab had made itself, before ours started: not ours.
+            if (m_entries[size_t(index)].started)
+                onStopped(index, reason);
+        });
+        // A tab closed (its session deleted) while recording: its capture ends there.
+        connect(s, &QObject::destroyed, this, [this, index] {
+            if (m_entries[size_t(index)].recording)
+                onStopped(index, tr("The device's tab was closed or its link replaced; its capture ends here."));
+        });
         connect(s, &DeviceLink::statsUpdated, this,
                 [this, index](const SessionStats &st) { m_entries[size_t(index)].lastStats = st; });
         connect(s, &DeviceLink::stateChanged, this, [this, index](SessionState st, const QString &detail) {
@@ -93,7 +110,8 @@ bool GroupRecording::start(const QString &folder, const std::vector<Member> &mem
             }
         });
         m_entries.back().recording = true;
-        s->startRecording(QDir(folder).filePath(d.file));
+        m_entries.back().path = path;
+        s->startRecording(path);
         ++started;
     }
     if (started == 0)
@@ -109,11 +127,17 @@ void GroupRecording::stop()
         return;
     m_stopping = true;
     bool any = false;
-    for (Entry &e : m_entries)
-        if (e.session && e.recording) {
+    for (size_t i = 0; i < m_entries.size(); ++i) {
+        Entry &e = m_entries[i];
+        if (!e.recording)
+            continue;
+        if (e.session) {
             any = true;
             e.session->stopRecording();
+        } else { // its session went away without saying so
+            e.recording = false;
         }
+    }
     if (!any)
         onStopped(-1, QString());
 }
@@ -134,8 +158,13 @@ void GroupRecording::onStopped(int index, const QString &reason)
         e.recording = false;
         if (e.session) // this group's connections end with its recording
             disconnect(e.session, nullptr, this, nullptr);
-        if (!reason.isEmpty()) // the disk filled, the file went away: this one stops, the others go on
+        // The disk filled, the file went away, the tab stopped it (Record, Disconnect): this one
+        // stops, the others go on.
+        if (!reason.isEmpty())
             noteEvent(index, QStringLiteral("recording stopped"), reason);
+        else if (!m_stopping)
+            noteEvent(index, QStringLiteral("recording stopped"),
+                      tr("Stopped in the device's own tab (Record or Disconnect) before the session ended."));
     }
     for (const Entry &e : m_entries)
         if (e.recording)

@@ -32,7 +32,7 @@ public:
     ~GroupRecording() override;
 
     // Creates the folder (it must not hold a session.json already) and starts every member's
-    // recording; false with a message when the folder cannot be made or no member started
+    // recording (a member that is recording on its own already ends that recording first); false with a message when the folder cannot be made or no member started
     // (the ones that did are stopped again).
     bool start(const QString &folder, const std::vector<Member> &members, QString *error);
     // Stops every recording; finished() follows once all have stopped and session.json is written.
@@ -57,6 +57,8 @@ private:
     struct Entry {
         QPointer<Session> session;
         bool recording = false; // asked to record and not stopped yet (started or starting)
+        bool started = false;   // our recording started (a stop before it ends another one)
+        QString path;           // our capture
         SessionStats lastStats;
         SessionState state = SessionState::Connected;
     };

@@ -270,6 +270,7 @@ void HipnucSerialFamily::noteCommandDone(const hp::OutputEffect &c)
 void HipnucSerialFamily::restartStream()
 {
     m_demux.reset();
+    m_clocks.lineIdle(); // what the last read held is gone
     m_gaps.resetTiming(); // an outage or a rate change is not lost frames
 }
 
@@ -309,7 +310,7 @@ void HipnucSerialFamily::handleEvents(int64_t nowNs)
         switch (e.kind) {
         case StreamEvent::Kind::Frame: {
             const size_t frameBytes = e.payload.size() + hp::FrameDecoder::kHeaderSize;
-            m_clocks.beginFrame(frameBytes);
+            m_clocks.beginFrame(frameBytes, nowNs);
             const size_t first = m_batch.size();
             const auto res = hp::forEachPacket(e.payload, [&](const hp::Packet &p) {
                 m_batch.push_back(hp::toSample(p));

@@ -43,9 +43,11 @@ void CaptureDecoder::feedWitlink(const uint8_t *data, size_t n, int64_t hostNs, 
                 m_lastSentNs = 0;
             }
             sink.onSample(*s, hostNs);
+        } else {
+            m_lastSentNs = 0; // another answer closed the request (live: it answered the current one)
+            if (!reply.ok())
+                ++m_payloadErrors;
         }
-        else if (!reply.ok())
-            ++m_payloadErrors;
     }
 }
 
@@ -131,7 +133,7 @@ void CaptureDecoder::dispatch(int64_t hostNs, Sink &sink)
     for (const StreamEvent &e : m_events) {
         switch (e.kind) {
         case StreamEvent::Kind::Frame: {
-            m_clocks.beginFrame(e.payload.size() + hp::FrameDecoder::kHeaderSize);
+            m_clocks.beginFrame(e.payload.size() + hp::FrameDecoder::kHeaderSize, hostNs);
             const auto res = hp::forEachPacket(e.payload, [&](const hp::Packet &p) {
                 const hp::PacketClock c = hp::packetClock(p);
                 m_packetCommonNs = c.has ? m_clocks.commonTime(c.source, c.deviceTimeMs, hostNs,

@@ -81,6 +81,11 @@ SessionExporter::Result SessionExporter::run(const QString &folder, const Option
         r.error = tr("No output file was given.");
         return r;
     }
+    if (!std::isfinite(o.gridMs) || !std::isfinite(o.pulseHz) || (o.gridMs > 0 && o.gridMs < 0.01)
+        || o.pulseHz > 10000 || (o.gridMs > 0 && o.pulseHz > 0)) {
+        r.error = tr("A grid of at least 0.01 ms, or a pulse rate up to 10 kHz, not both.");
+        return r;
+    }
     std::vector<std::unique_ptr<CaptureSampleStream>> streams;
     for (const SessionManifest::Device &d : manifest.devices) {
         auto s = std::make_unique<CaptureSampleStream>();
@@ -128,10 +133,19 @@ SessionExporter::Result SessionExporter::run(const QString &folder, const Option
         for (size_t i = 0; i < streams.size(); ++i) {
             CaptureSampleStream &s = *streams[i];
             int64_t first = 0;
+            std::string source; // the device's triggered frame type
             while (s.peek()) {
                 const model::Sample x = s.take();
                 if (!x.has(model::FieldDeviceTime) || x.commonTimeNs == 0)
                     continue;
+                if (source.empty())
+                    source = x.source;
+                if (x.source != source)
+                    continue;
+                if (o.cancelled && (s.samples & 0xFFF) == 0 && o.cancelled()) {
+                    r.error = tr("Export cancelled.");
+                    return r;
+                }
                 if (first == 0)
                     first = x.commonTimeNs;
                 // The clock model settles within its first 2 s: the frame that ties this
@@ -224,6 +238,10 @@ SessionExporter::Result SessionExporter::run(const QString &folder, const Option
             ++r.rows;
             if (!(writeOk = flush(false)))
                 break;
+            if (o.cancelled && (r.rows & 0xFFF) == 0 && o.cancelled()) {
+                r.error = tr("Export cancelled.");
+                return r;
+            }
         }
     } else {
         // The grid: each device's two samples around the instant.
@@ -280,8 +298,13 @@ SessionExporter::Result SessionExporter::run(const QString &folder, const Option
             }
         }
     }
-    for (auto &s : streams)
-        r.samplesByDevice.push_back(s->samples);
+    for (size_t i = 0; i < streams.size(); ++i) {
+        r.samplesByDevice.push_back(streams[i]->samples);
+        if (streams[i]->samples == 0)
+            r.notes << tr("Device %1 (%2): nothing in its capture that ImuDesk decodes offline (CAN and Modbus "
+                          "captures are not decoded yet); it is left out.")
+                           .arg(manifest.devices[i].name, manifest.devices[i].linkKind);
+    }
     if (!writeOk || !flush(true) || !file.commit()) {
         r.error = tr("Writing %1 failed: %2. Free some space or choose another place.").arg(o.output, file.errorString());
         return r;

@@ -10,13 +10,20 @@
 //   * trigger pairs (pulseHz > 0, hardware trigger mode): modules that sent a frame at each
 //     SYNC_IN edge (LOG ... ONMARK 1): one row per pulse, each device's frame of that pulse
 //     (clock::TriggerPairing: by the device's counter, the devices' counts tied together by the
-//     common time of their first frame 2 s in, once their clock models are aligned).
+//     common times of their frames from 2 s in, once their clock models are aligned). One frame
+//     type a device: the first with a device time (the other types count on other clocks).
+// The merge is by each sample's key as it comes; a stream whose key steps back (the clock model's
+// first refits, a compass's own output between its answers) is merged as it comes, so the order
+// is exact to within the stream's own steps back (at most an adapter's latency).
+// Devices whose link ImuDesk does not decode from a capture (CAN, Modbus) are left out, with a note.
 // The devices are read side by side, a sample at a time: memory does not grow with the session.
 #include "record/capture_exporter.h"
 #include "record/session_manifest.h"
 
 #include <QCoreApplication>
 #include <QString>
+
+#include <functional>
 
 namespace imudesk::record {
 
@@ -30,6 +37,7 @@ public:
         double gridMs = 0;    // > 0: resample onto this grid (tidy CSV only)
         double maxGapMs = 50; // grid: no value where a device's samples are further apart
         double pulseHz = 0;   // > 0: pair the triggered frames by pulse (tidy CSV only)
+        std::function<bool()> cancelled; // asked now and then; true: stop (the output is removed)
     };
     struct Result {
         bool ok = false;

@@ -439,6 +439,17 @@ void PtySimulator::withSerialDevice(const std::function<void(SimulatedSerialDevi
     });
 }
 
+void PtySimulator::unplug()
+{
+    if (!m_thread || !m_engine)
+        return;
+    Engine *e = m_engine.get();
+    device::callAndWait(m_context, [e] {
+        if (e->master >= 0)
+            e->unplug();
+    });
+}
+
 void PtySimulator::setClock(ClockError clock)
 {
     m_clock = clock;

@@ -107,6 +107,9 @@ public:
     // Any device.
     void withSerialDevice(const std::function<void(SimulatedSerialDevice &)> &fn);
     Stats stats() const;
+    // Pulls the cable now (as SimFaults::unplugAtS does at its time): for a test that needs it
+    // at a moment of its own choosing.
+    void unplug();
 
     // Line speed (bit/s) of a tty or pty (master: the slave's settings); -1 on failure.
     static int readLineSpeed(int fd);

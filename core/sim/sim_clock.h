@@ -25,7 +25,7 @@ struct ClockError {
     double offsetUs = 0;  // device time at true time 0
     double driftPpm = 0;  // + : the device's clock runs fast
     double stepAtS = -1;  // true time of a step of the device's clock; < 0: none
-    double stepUs = 0;    // the step (+ : the device's time jumps forward)
+    double stepUs = 0;    // the step, >= 0: the device's time jumps forward (a step back is not modelled)
 
     bool isIdeal() const { return offsetUs == 0 && driftPpm == 0 && (stepAtS < 0 || stepUs == 0); }
     double rate() const { return 1.0 + driftPpm * 1e-6; }

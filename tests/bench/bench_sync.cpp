@@ -157,7 +157,7 @@ struct HipnucPath {
             if (e.kind != protocol::StreamEvent::Kind::Frame)
                 continue;
             ++frames;
-            clocks.beginFrame(e.payload.size() + hp::FrameDecoder::kHeaderSize);
+            clocks.beginFrame(e.payload.size() + hp::FrameDecoder::kHeaderSize, hostNs);
             (void)hp::forEachPacket(e.payload, [&](const hp::Packet &p) {
                 model::Sample s = hp::toSample(p);
                 if (!s.has(model::FieldDeviceTime))

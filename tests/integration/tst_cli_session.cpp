@@ -11,11 +11,13 @@
 
 #include <QDir>
 #include <QFile>
+#include <QProcess>
 #include <QRegularExpression>
 #include <QTemporaryDir>
 #include <QTest>
 
 #include <algorithm>
+#include <csignal>
 #include <cmath>
 #include <memory>
 
@@ -54,8 +56,7 @@ private Q_SLOTS:
         sim::SimOptions a;
         a.seed = 1;
         sim::SimOptions b;
-        b.seed = 2;
-        b.faults.unplugAtS = 4;
+        b.seed = 2; // its cable is pulled 2 s into the recording (below)
         sim::Hec495Options c;
         c.baud = 9600;
         sim::PtySimulator simA(a), simB(b), simC(std::make_unique<sim::Hec495Simulator>(c));
@@ -65,9 +66,17 @@ private Q_SLOTS:
         const QString folder = dir.filePath(QStringLiteral("bench-run"));
         const QString ports = QStringLiteral("%1:115200,%2:115200,%3:9600")
                                   .arg(simA.devicePath(), simB.devicePath(), simC.devicePath());
-        const auto r = test::runCli({"record", ports, "-o", folder, "--duration", "6"}, 60000);
-        QVERIFY2(r.code == 0, qPrintable(r.out + r.err));
-        QVERIFY2(r.out.contains(QStringLiteral("DROPPED OUT")), qPrintable(r.out));
+        QProcess record;
+        record.start(QString::fromUtf8(IMUDESK_CLI_PATH), {"record", ports, "-o", folder, "--duration", "6"});
+        QVERIFY(record.waitForStarted());
+        // The recordings have started once the manifest is there; then the cable is pulled.
+        QTRY_VERIFY_WITH_TIMEOUT(record::SessionManifest::isSessionFolder(folder), 30000);
+        QTest::qWait(2000);
+        simB.unplug();
+        QVERIFY(record.waitForFinished(60000));
+        const QString out = QString::fromUtf8(record.readAllStandardOutput());
+        QVERIFY2(record.exitCode() == 0, qPrintable(out + QString::fromUtf8(record.readAllStandardError())));
+        QVERIFY2(out.contains(QStringLiteral("DROPPED OUT")), qPrintable(out));
 
         record::SessionManifest m;
         QVERIFY2(record::SessionManifest::load(folder, &m, &error), qPrintable(error));
@@ -196,6 +205,33 @@ private Q_SLOTS:
         QVERIFY2(twisting > 10, qPrintable(QString::number(twisting))); // an 8 s window holds a twist
         simA.stop();
         simB.stop();
+    }
+
+    // Ctrl+C ends a session recording without --duration: exit 0 and a finished manifest.
+    void interruptEndsTheSessionCleanly()
+    {
+        sim::PtySimulator simA, simB;
+        QString error;
+        QVERIFY2(simA.start(&error) && simB.start(&error), qPrintable(error));
+        QTemporaryDir dir;
+        const QString folder = dir.filePath(QStringLiteral("interrupted"));
+        QProcess record;
+        record.start(QString::fromUtf8(IMUDESK_CLI_PATH),
+                     {"record", simA.devicePath() + QStringLiteral(":115200,") + simB.devicePath() + QStringLiteral(":115200"),
+                      "-o", folder});
+        QVERIFY(record.waitForStarted());
+        QTRY_VERIFY_WITH_TIMEOUT(record::SessionManifest::isSessionFolder(folder), 30000);
+        QTest::qWait(1500);
+        ::kill(pid_t(record.processId()), SIGINT);
+        QVERIFY(record.waitForFinished(20000));
+        QVERIFY2(record.exitCode() == 0, qPrintable(QString::fromUtf8(record.readAllStandardError())));
+        record::SessionManifest m;
+        QVERIFY2(record::SessionManifest::load(folder, &m, &error), qPrintable(error));
+        QVERIFY(m.stoppedHostNs > m.startedHostNs);
+        for (const auto &d : m.devices) {
+            QVERIFY2(d.frames > 50, qPrintable(d.name)); // 1.5 s at 100 Hz
+            QVERIFY(!d.clocks.empty());
+        }
     }
 
     void manifestRefusesWhatIsNotOne()

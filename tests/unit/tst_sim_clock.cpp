@@ -1,6 +1,7 @@
 // The simulators' clocks and links (core/sim/sim_clock.h, issue 36 point 6) and the pairing of
 // triggered frames (core/clock/trigger_pairing.h, point 5): what the accuracy figures of
 // bench_sync rest on, checked against values worked out by hand.
+#include "clock/serial_frame_clocks.h"
 #include "clock/trigger_pairing.h"
 #include "sim/sim_clock.h"
 #include "../common/test_main.h"
@@ -78,6 +79,33 @@ private Q_SLOTS:
             }
         }
         QVERIFY(last > 190'000);
+    }
+
+    // A read that ended inside a frame bounds that frame's sampling instant, but only the frame
+    // it can have begun: not one completed long after (an outage, a damaged candidate held).
+    void aStaleCutIsNoBound()
+    {
+        using imudesk::clock::SerialFrameClocks;
+        auto common = [](bool stale) {
+            SerialFrameClocks c;
+            c.setBaud(115200); // 82-byte frames: 7.1 ms on the wire
+            const int64_t wire = 82LL * 10'000'000'000 / 115200;
+            int64_t last = 0;
+            for (int k = 0; k < 400; ++k) { // 100 Hz, each frame read 2 ms after its last byte
+                const int64_t host = 1'000'000'000 + int64_t(k) * 10'000'000 + wire + 2'000'000;
+                if (k == 399) // the last read before frame 399 held 40 bytes of something
+                    c.endRead(40, stale ? host - 3'000'000'000 : host - 2'000'000 - wire + 40LL * 10'000'000'000 / 115200);
+                c.beginFrame(82, host);
+                last = c.commonTime("HI91", double(k) * 10, host, 0);
+                c.endRead(0, host);
+            }
+            return last;
+        };
+        const int64_t truth = 1'000'000'000 + 399LL * 10'000'000;
+        // A fitting cut: the frame's start read off its first 40 bytes (within the ms rounding).
+        QVERIFY2(std::abs(common(false) - truth) < 2'100'000, qPrintable(QString::number(common(false) - truth)));
+        // A cut 3 s old is ignored: the same common time as without it, not 3 s early.
+        QVERIFY2(std::abs(common(true) - truth) < 2'100'000, qPrintable(QString::number(common(true) - truth)));
     }
 
     void triggeredFramesArePairedByTheirPulse()

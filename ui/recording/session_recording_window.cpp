@@ -136,9 +136,14 @@ void SessionRecordingWindow::changeEvent(QEvent *event)
 void SessionRecordingWindow::closeEvent(QCloseEvent *event)
 {
     if (isRecording()) {
-        // Closing the window must not lose the session: it stops and its manifest is written.
+        // Closing the window must not lose the session: the recordings stop, the manifest is
+        // written, then the window closes (onFinished).
+        m_closeWhenDone = true;
         stop();
+        event->ignore();
+        return;
     }
+    m_exportJob.cancel(); // a running export stops at its next rows, its partial file removed
     QWidget::closeEvent(event);
 }
 
@@ -247,6 +252,8 @@ void SessionRecordingWindow::onFinished(const QString &manifestPath, const QStri
     }
     updateButtons();
     Q_EMIT recordingFinished(ok ? m_lastSession : m_group->folder(), ok);
+    if (std::exchange(m_closeWhenDone, false))
+        close();
 }
 
 void SessionRecordingWindow::exportAligned()
@@ -258,8 +265,10 @@ void SessionRecordingWindow::exportAligned()
     m_exportOutput = o.output;
     const QString folder = m_lastSession;
     m_status->setText(tr("Exporting the session…"));
-    m_exportJob.launch(QStringLiteral("imudesk-export-session"), [folder, o](const jobs::BackgroundJob::Context &) {
-        const auto r = record::SessionExporter::run(folder, o);
+    m_exportJob.launch(QStringLiteral("imudesk-export-session"), [folder, o](const jobs::BackgroundJob::Context &job) {
+        record::SessionExporter::Options options = o;
+        options.cancelled = job.cancelled;
+        const auto r = record::SessionExporter::run(folder, options);
         return jobs::BackgroundJob::Outcome{r.ok, r.error, {}};
     });
     updateButtons();

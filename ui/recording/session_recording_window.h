@@ -83,6 +83,7 @@ private:
     QTimer m_refresh;
     QElapsedTimer m_elapsed;
     QString m_exportOutput;
+    bool m_closeWhenDone = false; // closed while recording: close once the session is written
     jobs::BackgroundJob m_exportJob; // last: cancelled and joined before the rest goes
 };
 
