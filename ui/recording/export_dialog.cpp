@@ -92,7 +92,12 @@ ExportDialog::ExportDialog(const QString &capturePath, QWidget *parent) : QDialo
     setCapture(capturePath);
 }
 
-ExportDialog::~ExportDialog() = default; // m_job cancels and joins a running export
+ExportDialog::~ExportDialog()
+{
+    // As in TwistAlignDialog: the field's editingFinished on the hide in QDialog's destructor.
+    disconnect(m_captureEdit, nullptr, this, nullptr);
+    // m_job cancels and joins a running export.
+}
 
 void ExportDialog::setCapture(const QString &path)
 {

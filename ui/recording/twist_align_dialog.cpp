@@ -468,7 +468,13 @@ TwistAlignDialog::TwistAlignDialog(const QString &sessionFolder, QWidget *parent
     setSessionFolder(sessionFolder);
 }
 
-TwistAlignDialog::~TwistAlignDialog() = default; // m_job cancels and joins a running search
+TwistAlignDialog::~TwistAlignDialog()
+{
+    // QDialog's destructor hides the window, which takes the focus from the folder field and
+    // emits its editingFinished after this class is gone: its slot must not run then.
+    disconnect(m_folderEdit, nullptr, this, nullptr);
+    // m_job cancels and joins a running search.
+}
 
 void TwistAlignDialog::setSessionFolder(const QString &path)
 {
