@@ -72,7 +72,10 @@ private Q_SLOTS:
         QVERIFY2(win->isRecording(), qPrintable(win->findChild<QLabel *>(QStringLiteral("sessionStatus"))->text()));
         auto *table = win->findChild<QTableWidget *>(QStringLiteral("sessionDevices"));
         QCOMPARE(table->rowCount(), 2);
-        QTest::qWait(3000);
+        // Three seconds' worth of the HI14 (100 Hz) and some answers of the compass in the files.
+        QTRY_VERIFY_WITH_TIMEOUT(win->group()->manifest().devices[0].frames > 300
+                                     && win->group()->manifest().devices[1].frames > 15,
+                                 20000);
         QVERIFY(!win->findChild<QPushButton *>(QStringLiteral("startSessionRecording"))->isEnabled());
         QSignalSpy finished(win, &ui::SessionRecordingWindow::recordingFinished);
         win->stop();
