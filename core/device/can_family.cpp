@@ -8,6 +8,7 @@
 #include "protocol/can/j1939.h"
 #include "protocol/can/j1939_config.h"
 #include "protocol/can/sdo.h"
+#include "record/capture_header.h"
 
 #include <QLoggingCategory>
 
@@ -26,51 +27,6 @@ bool isDataFrame(const protocol::can::DecodedFrame &d)
 {
     return d.kind == protocol::can::FrameKind::TpdoData || d.kind == protocol::can::FrameKind::Hec495Data
         || d.kind == protocol::can::FrameKind::J1939Data;
-}
-
-const char *kindName(FrameKind k)
-{
-    switch (k) {
-    case FrameKind::J1939Data: return "J1939 data";
-    case FrameKind::J1939Config: return "J1939 config";
-    case FrameKind::TpdoData: return "TPDO";
-    case FrameKind::Hec495Data: return "HEC495 PDO";
-    case FrameKind::Sdo: return "SDO";
-    case FrameKind::Hec495Sdo: return "HEC495 SDO";
-    case FrameKind::Nmt: return "NMT";
-    case FrameKind::Sync: return "SYNC";
-    case FrameKind::Heartbeat: return "heartbeat";
-    case FrameKind::Unknown: break;
-    }
-    return "other";
-}
-
-void merge(model::Sample &dst, const model::Sample &src, uint32_t c)
-{
-    if (c & CompAccX) dst.acc.x = src.acc.x;
-    if (c & CompAccY) dst.acc.y = src.acc.y;
-    if (c & CompAccZ) dst.acc.z = src.acc.z;
-    if (c & CompGyrX) dst.gyr.x = src.gyr.x;
-    if (c & CompGyrY) dst.gyr.y = src.gyr.y;
-    if (c & CompGyrZ) dst.gyr.z = src.gyr.z;
-    if (c & CompMagX) dst.mag.x = src.mag.x;
-    if (c & CompMagY) dst.mag.y = src.mag.y;
-    if (c & CompMagZ) dst.mag.z = src.mag.z;
-    if (c & CompRoll) dst.roll = src.roll;
-    if (c & CompPitch) dst.pitch = src.pitch;
-    if (c & CompYaw) dst.yaw = src.yaw;
-    if (c & CompQuat) dst.quat = src.quat;
-    if (c & CompPressure) dst.pressurePa = src.pressurePa;
-    if (c & CompTemperature) dst.temperatureC = src.temperatureC;
-    if (c & CompInclination) {
-        dst.inclinationX = src.inclinationX;
-        dst.inclinationY = src.inclinationY;
-    }
-    if (c & CompDeviceTime) dst.deviceTimeMs = src.deviceTimeMs;
-    if (c & CompMainStatus) dst.mainStatus = src.mainStatus;
-    if (c & CompUtcTime) dst.utcTimeOfDayS = src.utcTimeOfDayS;
-    dst.fields |= src.fields;
-    dst.source = src.source;
 }
 
 } // namespace
@@ -180,12 +136,22 @@ void CanFamily::feed(const QByteArray &bytes, int64_t now)
         Q_EMIT framesSeen(events);
 }
 
+void CanFamily::describeCapture(record::CaptureHeader &h) const
+{
+    const CanProtocol p = m_options.protocol == CanProtocol::Auto ? m_decoder.detected() : m_options.protocol;
+    h.set(record::CaptureHeader::kCanProtocol, protocolName(p));
+    if (m_target >= 0)
+        h.set(record::CaptureHeader::kCanNode, std::to_string(m_target));
+    if (m_options.hec495Mode >= 0)
+        h.set(record::CaptureHeader::kCanHec495Mode, std::to_string(m_options.hec495Mode));
+}
+
 void CanFamily::handleFrame(const CanFrame &f, qint64 now, std::vector<model::Sample> &batch)
 {
     ++m_frames;
     m_bytesIn += f.len;
     const DecodedFrame d = m_decoder.decode(f);
-    ++m_framesByType[kindName(d.kind)];
+    ++m_framesByType[frameKindName(d.kind)];
     if (m_decoder.detected() != m_lastDetected) {
         m_lastDetected = m_decoder.detected();
         Q_EMIT protocolDetected(int(m_lastDetected));
@@ -215,7 +181,7 @@ void CanFamily::handleFrame(const CanFrame &f, qint64 now, std::vector<model::Sa
     }
     if (d.node >= 0 && d.node != m_target)
         return;
-    merge(m_merged, *d.sample, d.components);
+    mergeComponents(m_merged, *d.sample, d.components);
     model::Sample s = m_merged;
     s.hostTimeNs = now;
     batch.push_back(std::move(s));

@@ -18,6 +18,10 @@
 
 #include <cstdint>
 
+namespace imudesk::record {
+class CaptureHeader;
+}
+
 namespace imudesk::device {
 
 class SessionEngine;
@@ -60,6 +64,9 @@ public:
     virtual void fillCounters(SessionStats &s) const = 0;
     // Called before each statistics snapshot.
     virtual void statsTick() {}
+    // What a recording's header should say for its bytes to be decoded offline as live (the
+    // CAN protocol and node followed); the engine writes the identity and the link itself.
+    virtual void describeCapture(record::CaptureHeader &) const {}
 
     // --- Requests
     // Before a request joins the queue: encode what the engine cannot (r.wire from r.command).

@@ -391,6 +391,8 @@ void SessionEngine::cancelAll(RequestStatus status, const QString &why)
 
 uint64_t SessionEngine::recordedFrames() const
 {
+    if (m_recordedDecoder.can())
+        return m_recordedDecoder.canCounters().frames;
     return m_recordedDecoder.witlink() ? m_recordedDecoder.witlinkCounters().frames
                                        : m_recordedDecoder.demux().frameCounters().frames;
 }
@@ -465,6 +467,7 @@ void SessionEngine::startRecording(const QString &path, const record::CaptureHea
           (QCoreApplication::applicationName() + QLatin1Char(' ') + QCoreApplication::applicationVersion())
               .trimmed()
               .toStdString());
+    m_family->describeCapture(h);
     for (const auto &[k, v] : header.values)
         h.set(k, v);
     auto writer = std::make_unique<record::CaptureWriter>();

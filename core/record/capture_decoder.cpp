@@ -12,6 +12,21 @@ void CaptureDecoder::configure(const CaptureHeader &header)
 {
     m_timedIdle = header.value(CaptureHeader::kIdleMarkers) != "1";
     m_witlink = header.value(CaptureHeader::kLinkKind) == "HEC495 serial";
+    m_can = header.value(CaptureHeader::kLinkKind) == "CAN";
+    m_canProtocol = protocol::can::parseProtocol(QString::fromStdString(header.value(CaptureHeader::kCanProtocol)))
+                        .value_or(protocol::can::CanProtocol::Auto);
+    const auto number = [&header](const char *key) {
+        bool ok = false;
+        const int v = QString::fromStdString(header.value(key)).toInt(&ok);
+        return ok ? v : -1;
+    };
+    m_canNodeConfigured = number(CaptureHeader::kCanNode);
+    m_canHecMode = number(CaptureHeader::kCanHec495Mode);
+    m_canBitrate = header.baud();
+    m_canDecoder = protocol::can::CanDecoder(m_canProtocol);
+    m_canDecoder.setHec495Mode(m_canHecMode);
+    m_canNode = m_canNodeConfigured;
+    m_canMerged = model::Sample{};
     m_clocks.clear();
     m_clocks.setBaud(header.baud());
 }
@@ -48,6 +63,32 @@ void CaptureDecoder::feedWitlink(const uint8_t *data, size_t n, int64_t hostNs, 
             if (!reply.ok())
                 ++m_payloadErrors;
         }
+    }
+}
+
+void CaptureDecoder::feedCan(const uint8_t *data, size_t n, int64_t hostNs, Sink &sink)
+{
+    using namespace protocol::can;
+    m_canRecords.clear();
+    m_canReader.feed(QByteArray::fromRawData(reinterpret_cast<const char *>(data), qsizetype(n)), m_canRecords);
+    for (const CanRecord &r : m_canRecords) {
+        if (r.error)
+            continue;
+        const DecodedFrame d = m_canDecoder.decode(r.frame);
+        ++m_canByType[frameKindName(d.kind)];
+        if (!d.sample)
+            continue;
+        // The node CanFamily followed: the one the header names, else the first that sent data.
+        if (m_canNode < 0 && d.node >= 0)
+            m_canNode = d.node;
+        if (d.node >= 0 && d.node != m_canNode)
+            continue;
+        mergeComponents(m_canMerged, *d.sample, d.components);
+        model::Sample s = m_canMerged;
+        s.hostTimeNs = hostNs;
+        if (r.stampNs > 0)
+            s.commonTimeNs = r.stampNs - wireTimeNs(r.frame, m_canBitrate);
+        sink.onSample(s, hostNs);
     }
 }
 
@@ -90,6 +131,10 @@ void CaptureDecoder::feed(const uint8_t *data, size_t n, int64_t hostNs, Sink &s
         lineIdle(m_lastNs + kLineIdleNs, sink);
     m_lastNs = hostNs;
     m_haveLast = true;
+    if (m_can) {
+        feedCan(data, n, hostNs, sink);
+        return;
+    }
     if (m_witlink) {
         feedWitlink(data, n, hostNs, sink, false);
         return;
@@ -113,6 +158,8 @@ void CaptureDecoder::reset()
 {
     m_demux.reset();
     m_witlinkDecoder.reset();
+    m_canReader.reset();
+    m_canMerged = model::Sample{};
     m_haveLast = false;
     m_lastSentNs = 0;
     const int baud = m_clocks.baud();
@@ -125,6 +172,8 @@ void CaptureDecoder::resetCounters()
     m_demux.resetCounters();
     m_witlinkDecoder = protocol::witlink::FrameDecoder{};
     m_witlinkByType.clear();
+    m_canDecoder.resetCounters();
+    m_canByType.clear();
     m_payloadErrors = 0;
 }
 

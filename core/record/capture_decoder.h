@@ -4,13 +4,18 @@
 // packets (HI91 fast path, then every sub-packet). A capture of an HEC495 (link kind "HEC495
 // serial") goes through the Witlink frame decoder instead, as Hec495Family does: its records
 // and angles frames become samples (Sink::onSample), the text between them (NMEA output)
-// sentences. Chunks are fed with their arrival time,
+// sentences. A CAN capture (link kind "CAN") holds frame records (protocol/can/can_record.h):
+// CanDecoder decodes them and the node's frames merge into samples as CanFamily does, each
+// with the interface's receive stamp less the frame's time on the bus as its common time.
+// Chunks are fed with their arrival time,
 // and a pause of kLineIdleNs between chunks releases an unfinished candidate frame and
 // ends the text quarantine exactly as the session's idle timer does, so a replay decodes
 // what the live session decoded. Replay, export, analysis and `imudesk-cli decode` all decode
 // through it. Plain value class.
 #include "clock/clock_model.h"
 #include "clock/serial_frame_clocks.h"
+#include "protocol/can/can_decoder.h"
+#include "protocol/can/can_record.h"
 #include "protocol/hipnuc/payloads.h"
 #include "record/capture_reader.h"
 #include "protocol/stream/stream_demux.h"
@@ -56,6 +61,10 @@ public:
 
     const protocol::StreamDemux &demux() const { return m_demux; }
     bool witlink() const { return m_witlink; }
+    bool can() const { return m_can; }
+    const protocol::can::CanDecoder::Counters &canCounters() const { return m_canDecoder.counters(); }
+    // CAN frames by kind ("TPDO", "SDO", "SYNC", ...), as the live session counts them.
+    const std::map<std::string, uint64_t> &canFramesByType() const { return m_canByType; }
     const protocol::witlink::FrameDecoder::Counters &witlinkCounters() const { return m_witlinkDecoder.counters(); }
     // HEC495 frames decoded into samples, by kind ("HEC495 record", "HEC495 angles").
     const std::map<std::string, uint64_t> &witlinkFramesByType() const { return m_witlinkByType; }
@@ -70,6 +79,7 @@ private:
     void dispatch(int64_t hostNs, Sink &sink);
 
     void feedWitlink(const uint8_t *data, size_t n, int64_t hostNs, Sink &sink, bool idle);
+    void feedCan(const uint8_t *data, size_t n, int64_t hostNs, Sink &sink);
 
     protocol::StreamDemux m_demux;
     std::vector<protocol::StreamEvent> m_events;
@@ -77,6 +87,15 @@ private:
     protocol::witlink::FrameDecoder m_witlinkDecoder;
     std::vector<protocol::witlink::Frame> m_witlinkFrames;
     std::map<std::string, uint64_t> m_witlinkByType;
+    bool m_can = false; // a CAN capture
+    protocol::can::CanDecoder m_canDecoder;
+    protocol::can::CanRecordReader m_canReader;
+    std::vector<protocol::can::CanRecord> m_canRecords;
+    std::map<std::string, uint64_t> m_canByType;
+    model::Sample m_canMerged;
+    protocol::can::CanProtocol m_canProtocol = protocol::can::CanProtocol::Auto;
+    int m_canNodeConfigured = -1, m_canNode = -1, m_canHecMode = -1;
+    int m_canBitrate = 0;
     int64_t m_lastNs = 0;
     bool m_haveLast = false;
     bool m_timedIdle = true; // no markers recorded: infer idle lines from pauses between chunks

@@ -30,6 +30,11 @@ public:
     static constexpr const char *kLinkKind = "link.kind";   // "HiPNUC serial"
     static constexpr const char *kPort = "link.port";
     static constexpr const char *kBaud = "link.baud";
+    // A CAN capture: the protocol ("j1939", "canopen", "hec495", "auto"), the node followed, the
+    // HEC495 PDO mode (CanFamily::describeCapture).
+    static constexpr const char *kCanProtocol = "can.protocol";
+    static constexpr const char *kCanNode = "can.node";
+    static constexpr const char *kCanHec495Mode = "can.hec495_mode";
     static constexpr const char *kStartedUtc = "capture.started_utc"; // ISO 8601
     static constexpr const char *kPart = "capture.part";    // 0 for the first file of a split recording
     static constexpr const char *kApplication = "capture.application";

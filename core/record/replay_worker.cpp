@@ -274,6 +274,12 @@ void ReplayWorker::publishStats()
         s.crcErrors = c.checksumErrors;
         s.lengthErrors = c.lengthErrors;
         s.framesByType = m_decoder.witlinkFramesByType();
+    } else if (m_decoder.can()) { // CAN frame records
+        const auto &c = m_decoder.canCounters();
+        s.frames = c.frames;
+        s.lengthErrors = c.malformed;
+        s.bytesSkipped = c.unknownFrames;
+        s.framesByType = m_decoder.canFramesByType();
     }
     s.baud = m_baud;
     const qint64 nowMs = m_statsClock.isValid() ? m_statsClock.elapsed() : 0;

@@ -301,7 +301,7 @@ SessionExporter::Result SessionExporter::run(const QString &folder, const Option
     for (size_t i = 0; i < streams.size(); ++i) {
         r.samplesByDevice.push_back(streams[i]->samples);
         if (streams[i]->samples == 0)
-            r.notes << tr("Device %1 (%2): nothing in its capture that ImuDesk decodes offline (CAN and Modbus "
+            r.notes << tr("Device %1 (%2): nothing in its capture that ImuDesk decodes offline (Modbus "
                           "captures are not decoded yet); it is left out.")
                            .arg(manifest.devices[i].name, manifest.devices[i].linkKind);
     }

@@ -221,4 +221,50 @@ bool CanDecoder::decodeStandard(const CanFrame &f, DecodedFrame &d)
     return false;
 }
 
+void mergeComponents(model::Sample &dst, const model::Sample &src, uint32_t c)
+{
+    if (c & CompAccX) dst.acc.x = src.acc.x;
+    if (c & CompAccY) dst.acc.y = src.acc.y;
+    if (c & CompAccZ) dst.acc.z = src.acc.z;
+    if (c & CompGyrX) dst.gyr.x = src.gyr.x;
+    if (c & CompGyrY) dst.gyr.y = src.gyr.y;
+    if (c & CompGyrZ) dst.gyr.z = src.gyr.z;
+    if (c & CompMagX) dst.mag.x = src.mag.x;
+    if (c & CompMagY) dst.mag.y = src.mag.y;
+    if (c & CompMagZ) dst.mag.z = src.mag.z;
+    if (c & CompRoll) dst.roll = src.roll;
+    if (c & CompPitch) dst.pitch = src.pitch;
+    if (c & CompYaw) dst.yaw = src.yaw;
+    if (c & CompQuat) dst.quat = src.quat;
+    if (c & CompPressure) dst.pressurePa = src.pressurePa;
+    if (c & CompTemperature) dst.temperatureC = src.temperatureC;
+    if (c & CompInclination) {
+        dst.inclinationX = src.inclinationX;
+        dst.inclinationY = src.inclinationY;
+    }
+    if (c & CompDeviceTime) dst.deviceTimeMs = src.deviceTimeMs;
+    if (c & CompMainStatus) dst.mainStatus = src.mainStatus;
+    if (c & CompUtcTime) dst.utcTimeOfDayS = src.utcTimeOfDayS;
+    dst.fields |= src.fields;
+    dst.source = src.source;
+}
+
+
+const char *frameKindName(FrameKind k)
+{
+    switch (k) {
+    case FrameKind::J1939Data: return "J1939 data";
+    case FrameKind::J1939Config: return "J1939 config";
+    case FrameKind::TpdoData: return "TPDO";
+    case FrameKind::Hec495Data: return "HEC495 PDO";
+    case FrameKind::Sdo: return "SDO";
+    case FrameKind::Hec495Sdo: return "HEC495 SDO";
+    case FrameKind::Nmt: return "NMT";
+    case FrameKind::Sync: return "SYNC";
+    case FrameKind::Heartbeat: return "heartbeat";
+    case FrameKind::Unknown: break;
+    }
+    return "other";
+}
+
 } // namespace imudesk::protocol::can

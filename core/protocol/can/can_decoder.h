@@ -32,6 +32,9 @@ enum class FrameKind {
     Heartbeat,
 };
 
+// "TPDO", "SDO", "J1939 data", ... ("other" for Unknown): the statistics' frame kinds.
+const char *frameKindName(FrameKind k);
+
 struct DecodedFrame {
     FrameKind kind = FrameKind::Unknown;
     CanProtocol protocol = CanProtocol::Auto; // which protocol the frame belongs to
@@ -75,5 +78,10 @@ private:
     int m_hecMode = -1;
     Counters m_counters;
 };
+
+// Copies the components c (Component bits) of src into dst, which keeps the latest value of
+// every component: a device whose quantities come in several frames (TPDOs, PGNs) gives
+// whole samples this way.
+void mergeComponents(model::Sample &dst, const model::Sample &src, uint32_t c);
 
 } // namespace imudesk::protocol::can
