@@ -218,7 +218,8 @@ LinkOpener::Opened LinkOpener::openNow(LinkRequest &r, QString *error)
             return o;
         }
         auto s = std::make_unique<record::ReplaySession>();
-        o.start = [p = s.get(), path = r.address] { p->open(path); };
+        s->setGroup(r.replayGroup);
+        o.start = [p = s.get(), path = r.address, timeline = r.replay] { p->open(path, timeline); };
         o.link = std::move(s);
         break;
     }

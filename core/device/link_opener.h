@@ -13,6 +13,7 @@
 #include "device/modbus_types.h"
 #include "device/serial_family.h"
 #include "io/transport.h"
+#include "record/replay_group.h"
 #include "sim/hipnuc_simulator.h"
 #include "sim/motion_model.h"
 
@@ -50,6 +51,10 @@ struct LinkRequest {
     std::any simulator;
     // What the link needs (its simulator): handed on with the link, released after it.
     std::shared_ptr<void> keepAlive;
+    // A capture of a multi-device session: its place on the session's timeline and the group
+    // of replays it plays with (record/replay_group.h); null: a capture of its own.
+    record::ReplayTimeline replay;
+    std::shared_ptr<record::ReplayGroup> replayGroup;
     // A serial link's transport (tests: an in-process simulator); null: the serial port.
     std::function<std::unique_ptr<io::Transport>()> transport;
 

@@ -30,13 +30,24 @@ ReplaySession::ReplaySession(QObject *parent) : DeviceLink(parent)
 
 ReplaySession::~ReplaySession()
 {
+    if (m_group)
+        m_group->remove(this);
     device::callAndWait(m_worker, [w = m_worker] { w->close(); });
     device::joinThread(m_thread);
 }
 
-void ReplaySession::open(const QString &path)
+void ReplaySession::open(const QString &path, const ReplayTimeline &timeline)
 {
-    device::postTo(m_worker, [w = m_worker, path] { w->open(path); });
+    device::postTo(m_worker, [w = m_worker, path, timeline] { w->open(path, timeline); });
+}
+
+void ReplaySession::setGroup(std::shared_ptr<ReplayGroup> group)
+{
+    if (m_group)
+        m_group->remove(this);
+    m_group = std::move(group);
+    if (m_group)
+        m_group->add(this);
 }
 
 void ReplaySession::close()
@@ -46,26 +57,66 @@ void ReplaySession::close()
 
 void ReplaySession::play()
 {
-    device::postTo(m_worker, [w = m_worker] { w->play(); });
+    if (m_group)
+        m_group->play();
+    else
+        playAlone();
 }
 
 void ReplaySession::pause()
 {
-    device::postTo(m_worker, [w = m_worker] { w->pause(); });
+    if (m_group)
+        m_group->pause();
+    else
+        pauseAlone();
 }
 
 void ReplaySession::setSpeed(double factor)
+{
+    if (m_group)
+        m_group->setSpeed(factor);
+    else
+        setSpeedAlone(factor);
+}
+
+void ReplaySession::seek(double seconds)
+{
+    if (m_group)
+        m_group->seek(seconds);
+    else
+        seekAlone(seconds);
+}
+
+void ReplaySession::setLoop(bool on)
+{
+    if (m_group)
+        m_group->setLoop(on);
+    else
+        setLoopAlone(on);
+}
+
+void ReplaySession::playAlone()
+{
+    device::postTo(m_worker, [w = m_worker] { w->play(); });
+}
+
+void ReplaySession::pauseAlone()
+{
+    device::postTo(m_worker, [w = m_worker] { w->pause(); });
+}
+
+void ReplaySession::setSpeedAlone(double factor)
 {
     const double f = factor <= 0 ? kAsFastAsPossible : std::clamp(factor, kMinSpeed, kMaxSpeed);
     device::postTo(m_worker, [w = m_worker, f] { w->setSpeed(f); });
 }
 
-void ReplaySession::seek(double seconds)
+void ReplaySession::seekAlone(double seconds)
 {
     device::postTo(m_worker, [w = m_worker, seconds] { w->seek(seconds); });
 }
 
-void ReplaySession::setLoop(bool on)
+void ReplaySession::setLoopAlone(bool on)
 {
     device::postTo(m_worker, [w = m_worker, on] { w->setLoop(on); });
 }

@@ -7,8 +7,11 @@
 // hostTimeNs. The worker runs in a private thread; all calls are queued.
 #include "device/device_link.h"
 #include "record/capture_header.h"
+#include "record/replay_group.h"
 
 #include <QThread>
+
+#include <memory>
 
 namespace imudesk::record {
 
@@ -25,8 +28,13 @@ public:
     ~ReplaySession() override;
 
     // Opens a capture: state Opening, then Connected and opened(duration, header), or Failed.
-    // Playback starts paused at 0 s.
-    void open(const QString &path);
+    // Playback starts paused at 0 s. A session's capture opens on the session's timeline
+    // (replay_group.h).
+    void open(const QString &path, const ReplayTimeline &timeline = {});
+    // Joins a group whose members play, pause, seek and change speed together: the calls
+    // below then act on every member. The group lives as long as its last member.
+    void setGroup(std::shared_ptr<ReplayGroup> group);
+    ReplayGroup *group() const { return m_group.get(); }
     void close() override;
     QString linkKind() const override { return QStringLiteral("HiPNUC replay"); }
     bool isLive() const override { return false; }
@@ -46,6 +54,14 @@ Q_SIGNALS:
     void nmeaReceived(const QString &sentence);
 
 private:
+    friend class ReplayGroup;
+    void playAlone();
+    void pauseAlone();
+    void setSpeedAlone(double factor);
+    void seekAlone(double seconds);
+    void setLoopAlone(bool on);
+
+    std::shared_ptr<ReplayGroup> m_group;
     QThread m_thread;
     ReplayWorker *m_worker = nullptr;
 };

@@ -32,9 +32,10 @@ ReplayWorker::ReplayWorker(device::SampleStore &store, QObject *parent) : QObjec
 
 ReplayWorker::~ReplayWorker() = default;
 
-void ReplayWorker::open(const QString &path)
+void ReplayWorker::open(const QString &path, const ReplayTimeline &timeline)
 {
     close();
+    m_timeline = timeline;
     Q_EMIT stateChanged(device::SessionState::Opening, path);
     QString error;
     // A capture, or a vendor CSV or raw byte dump converted to one (recognised by content).
@@ -53,7 +54,9 @@ void ReplayWorker::open(const QString &path)
         if (r != CaptureReader::Result::Chunk)
             continue;
         if (first) {
-            m_firstNs = c.monotonicNs;
+            // A session's capture counts from the session's start, as every other device's does
+            // (a chunk from before it plays at once).
+            m_firstNs = m_timeline.originNs != 0 ? m_timeline.originNs : c.monotonicNs;
             first = false;
         }
         const int64_t rel = c.monotonicNs - m_firstNs;
@@ -67,13 +70,14 @@ void ReplayWorker::open(const QString &path)
                                       m_reader.damagedChunks() > 0
                                           ? tr("%n damaged chunk(s) skipped", nullptr, int(m_reader.damagedChunks()))
                                           : m_reader.message()));
-    m_durationNs = lastNs;
+    m_durationNs = std::max(lastNs, m_timeline.endNs > m_firstNs ? m_timeline.endNs - m_firstNs : int64_t(0));
     m_reader.seek(m_reader.dataStart());
     m_decoder.reset();
     m_decoder.resetCounters();
     m_decoder.configure(m_reader.header());
     m_gaps.clear();
     m_posNs = 0;
+    m_drained = false;
     m_open = true;
     m_baud = m_reader.header().baud();
     m_lastStats = device::SessionStats{};
@@ -170,6 +174,7 @@ void ReplayWorker::seekTo(int64_t relNs)
         }
     }
     m_posNs = relNs;
+    m_drained = false;
 }
 
 void ReplayWorker::tick()
@@ -201,7 +206,18 @@ void ReplayWorker::tick()
         m_posNs = std::max(m_posNs, rel);
     }
     if (atEnd) {
-        m_decoder.finish(*this);
+        if (!m_drained) {
+            m_decoder.finish(*this);
+            m_drained = true;
+        }
+        if (m_speed > 0 && target < m_durationNs) {
+            // A device of a session whose data ends before the session does (it dropped out, or
+            // stopped first): its timeline goes on with the others'.
+            m_posNs = std::max(m_posNs, target);
+            flushBatch();
+            reportPosition(false);
+            return;
+        }
         m_posNs = m_durationNs;
     } else if (m_speed > 0) {
         m_posNs = std::clamp(target, m_posNs, m_durationNs);
@@ -227,6 +243,7 @@ void ReplayWorker::onPacket(const protocol::hipnuc::Packet &packet, int64_t host
     model::Sample &s = m_batch.back();
     s.hostTimeNs = hostNs;
     s.commonTimeNs = m_decoder.packetCommonNs(); // as the live session had it
+    applyOffset(s);
     if (s.has(model::FieldDeviceTime))
         m_gaps.add(s.source, s.deviceTimeMs, model::MainStatus::timeBase(s.has(model::FieldMainStatus), s.mainStatus));
 }
@@ -235,6 +252,15 @@ void ReplayWorker::onSample(const model::Sample &sample, int64_t hostNs)
 {
     m_batch.push_back(sample);
     m_batch.back().hostTimeNs = hostNs;
+    applyOffset(m_batch.back());
+}
+
+void ReplayWorker::applyOffset(model::Sample &s) const
+{
+    // Twist to align: the device's constant offset, on its common time (its arrival where it
+    // has none), as the session's export places it.
+    if (m_timeline.offsetNs != 0)
+        s.commonTimeNs = (s.commonTimeNs != 0 ? s.commonTimeNs : s.hostTimeNs) + m_timeline.offsetNs;
 }
 
 void ReplayWorker::onNmea(const std::string &sentence, int64_t hostNs)

@@ -8,6 +8,7 @@
 #include "record/capture_decoder.h"
 #include "record/capture_reader.h"
 #include "record/capture_source.h"
+#include "record/replay_group.h"
 
 #include <QElapsedTimer>
 #include <QObject>
@@ -24,7 +25,7 @@ public:
     ~ReplayWorker() override;
 
 public Q_SLOTS:
-    void open(const QString &path);
+    void open(const QString &path, const imudesk::record::ReplayTimeline &timeline = {});
     void close();
     void play();
     void pause();
@@ -66,13 +67,17 @@ private:
     device::FrameGapCounter m_gaps;
     std::vector<model::Sample> m_batch;
     std::vector<IndexEntry> m_index;
-    int64_t m_firstNs = 0;
+    void applyOffset(model::Sample &s) const;
+
+    ReplayTimeline m_timeline;
+    int64_t m_firstNs = 0; // the timeline's 0 on the capture's clock
     int64_t m_durationNs = 0;
     int64_t m_posNs = 0;
     int64_t m_anchorNs = 0;      // capture time at the anchor
     QElapsedTimer m_wall;        // host time since the anchor
     double m_speed = 1.0;
     bool m_playing = false;
+    bool m_drained = false; // the capture's end was reached and what the decoder held released
     bool m_loop = false;
     bool m_open = false;
     int m_baud = 0;

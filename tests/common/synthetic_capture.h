@@ -23,6 +23,7 @@ struct CaptureSpec {
     int framesPerChunk = 8;      // a 921600-baud read holds a few frames
     bool mixed = false;          // add HI81 and HI83 (every 10th frame) and RMC (every 100th)
     uint32_t seed = 1;
+    int64_t t0Ns = 5'000'000'000; // host time of the first frame's start (the chunks' clock)
 };
 
 inline imudesk::protocol::hipnuc::Hi91 hi91(uint64_t i, std::mt19937 &rng, double rateHz)
@@ -58,7 +59,7 @@ inline qint64 writeCapture(const QString &path, const CaptureSpec &spec)
     f.write(reinterpret_cast<const char *>(bytes.data()), qint64(bytes.size()));
     std::mt19937 rng(spec.seed);
     std::vector<uint8_t> chunk, out;
-    const int64_t t0 = 5'000'000'000;
+    const int64_t t0 = spec.t0Ns;
     int inChunk = 0;
     for (uint64_t i = 0; i < spec.frames; ++i) {
         const auto frame = hp::buildFrame(hp::encode(hi91(i, rng, spec.rateHz)));

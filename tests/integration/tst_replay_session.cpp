@@ -4,11 +4,13 @@
 // and a missing file.
 #include "../common/capture_bytes.h"
 #include "../common/sim_session.h"
+#include "../common/synthetic_capture.h"
 #include "../common/test_main.h"
 #include "device/device_session.h"
 #include "protocol/hipnuc/frame_decoder.h"
 #include "protocol/hipnuc/payloads.h"
 #include "record/capture_exporter.h"
+#include "record/replay_group.h"
 #include "record/replay_session.h"
 
 #include <QFile>
@@ -299,6 +301,94 @@ private Q_SLOTS:
         QCOMPARE(replay.store().totalAppended(), exported.frames);
         QVERIFY2(replay.store().totalAppended() + 1 >= m_live.size() && replay.store().totalAppended() <= m_live.size(),
                  qPrintable(QStringLiteral("%1 of %2").arg(replay.store().totalAppended()).arg(m_live.size())));
+    }
+
+    // A recorded session's devices (replay_group.h): each capture on the session's timeline, so
+    // one position is one instant in all of them; play, pause, seek and speed asked of one
+    // member act on all; the device's twist-to-align offset lands on its common times.
+    void sessionMembersShareTheTimeline()
+    {
+        synthetic::CaptureSpec a, b;
+        a.frames = 2000; // 5.0 .. 7.0 s on the host clock
+        b.frames = 1000;
+        b.rateHz = 500;
+        b.seed = 2;
+        b.t0Ns = 6'000'000'000; // 6.0 .. 8.0 s: started later
+        const QString pa = m_dir.filePath(QStringLiteral("a.imucap")), pb = m_dir.filePath(QStringLiteral("b.imucap"));
+        QVERIFY(synthetic::writeCapture(pa, a) > 0 && synthetic::writeCapture(pb, b) > 0);
+        // B alone, as a capture of its own: the reference for its offset.
+        ReplaySession alone;
+        QSignalSpy aloneOpened(&alone, &ReplaySession::opened);
+        alone.open(pb);
+        QVERIFY(aloneOpened.wait(5000));
+        QVERIFY(qAbs(aloneOpened.at(0).at(0).toDouble() - 1.984) < 1e-6); // its first chunk (8 frames in) to its last
+        QCOMPARE(playAll(alone).size(), size_t(1000));
+        alone.setSpeed(ReplaySession::kAsFastAsPossible);
+
+        auto group = std::make_shared<record::ReplayGroup>();
+        record::ReplayTimeline t{4'500'000'000, 8'500'000'000, 0};
+        auto ra = std::make_unique<ReplaySession>(), rb = std::make_unique<ReplaySession>();
+        ra->setGroup(group);
+        rb->setGroup(group);
+        QCOMPARE(int(group->members().size()), 2);
+        QSignalSpy openedA(ra.get(), &ReplaySession::opened), openedB(rb.get(), &ReplaySession::opened);
+        ra->open(pa, t);
+        t.offsetNs = 1'500'000; // B's clock 1.5 ms behind A's: twist to align found it
+        rb->open(pb, t);
+        QVERIFY(openedA.wait(5000) && (!openedB.isEmpty() || openedB.wait(5000)));
+        QCOMPARE(openedA.at(0).at(0).toDouble(), 4.0); // the session's start to its stop
+        QCOMPARE(openedB.at(0).at(0).toDouble(), 4.0);
+
+        // Seek one: both go to 2.0 s into the session (6.5 s on the host clock).
+        QSignalSpy posA(ra.get(), &ReplaySession::positionChanged), posB(rb.get(), &ReplaySession::positionChanged);
+        rb->seek(2.0);
+        QTRY_VERIFY(!posA.isEmpty() && !posB.isEmpty());
+        QCOMPARE(posA.last().at(0).toDouble(), 2.0);
+        QCOMPARE(posB.last().at(0).toDouble(), 2.0);
+        // Play one at 10x: both play; pause the other: both pause.
+        QSignalSpy playingA(ra.get(), &ReplaySession::playingChanged), playingB(rb.get(), &ReplaySession::playingChanged);
+        const uint64_t fromA = ra->store().totalAppended(), fromB = rb->store().totalAppended();
+        rb->setSpeed(10.0);
+        ra->play();
+        QTRY_VERIFY(!playingA.isEmpty() && !playingB.isEmpty());
+        QVERIFY(playingA.last().at(0).toBool() && playingB.last().at(0).toBool());
+        QTRY_VERIFY_WITH_TIMEOUT(ra->store().totalAppended() > fromA + 100 && rb->store().totalAppended() > fromB + 50, 5000);
+        rb->pause();
+        QTRY_VERIFY(!playingA.last().at(0).toBool() && !playingB.last().at(0).toBool());
+        const auto sa = ra->store().since(fromA), sb = rb->store().since(fromB);
+        // The first samples after the seek are the ones at 6.5 s in both captures.
+        QVERIFY(sa.front().hostTimeNs >= 6'500'000'000 && sa.front().hostTimeNs < 6'510'000'000);
+        QVERIFY(sb.front().hostTimeNs >= 6'500'000'000 && sb.front().hostTimeNs <= 6'516'000'000); // its chunks: 16 ms
+        // Paused together: at 10x their positions agree within a few ticks (5 ms of wall time is
+        // 50 ms of the session).
+        QTest::qWait(50);
+        QVERIFY2(qAbs(posA.last().at(0).toDouble() - posB.last().at(0).toDouble()) < 0.25,
+                 qPrintable(QStringLiteral("%1 / %2").arg(posA.last().at(0).toDouble()).arg(posB.last().at(0).toDouble())));
+        // B's common times are the capture's own plus the offset, sample for sample (B alone,
+        // played from the same instant: 6.5 s on the host clock, 0.484 s after its first chunk).
+        const uint64_t fromAlone = alone.store().totalAppended();
+        alone.seek(0.484);
+        const auto reference = [&] {
+            QSignalSpy finished(&alone, &ReplaySession::finished);
+            alone.play();
+            finished.wait(20000);
+            return alone.store().since(fromAlone);
+        }();
+        size_t k = 0;
+        while (k < reference.size() && reference[k].hostTimeNs != sb.front().hostTimeNs)
+            ++k;
+        QVERIFY(k + sb.size() <= reference.size());
+        for (size_t i = 0; i < sb.size(); ++i) {
+            const model::Sample &r = reference[k + i];
+            QCOMPARE(sb[i].hostTimeNs, r.hostTimeNs);
+            QCOMPARE(sb[i].commonTimeNs, (r.commonTimeNs != 0 ? r.commonTimeNs : r.hostTimeNs) + 1'500'000);
+        }
+        // A member that goes leaves the group; the other plays on its own.
+        ra.reset();
+        QCOMPARE(int(group->members().size()), 1);
+        QSignalSpy finishedB(rb.get(), &ReplaySession::finished);
+        rb->play();
+        QVERIFY(finishedB.wait(5000));
     }
 
     void missingFileFails()

@@ -3,7 +3,9 @@
 // aligned. Two simulated modules of two families (an HI14 and an HEC495 compass), end to end.
 #include "../common/test_main.h"
 #include "itemmodels/clock_stats_model.h"
+#include "record/replay_session.h"
 #include "record/session_manifest.h"
+#include "recording/replay_controls.h"
 #include "recording/session_recording_window.h"
 #include "workspace/device_workspace.h"
 #include "workspace/main_window.h"
@@ -11,6 +13,7 @@
 #include "workspace/tool_actions.h"
 
 #include <QAction>
+#include <QComboBox>
 #include <QDir>
 #include <QDockWidget>
 #include <QFile>
@@ -108,6 +111,56 @@ private Q_SLOTS:
         QVERIFY(text.count('\n') > 250);
         QVERIFY(errors.isEmpty());
         win->close();
+
+        // The session replays in the window: File > Open capture on its session.json opens one
+        // replay tab per device, on the session's timeline, and their controls move them together.
+        QVERIFY(w.tools()->openCapture(QDir(folder).filePath(QStringLiteral("session.json"))));
+        QVERIFY2(errors.isEmpty(), qPrintable(errors.join(QLatin1Char('\n'))));
+        QCOMPARE(w.workspaceCount(), 4);
+        std::vector<record::ReplaySession *> replays;
+        std::vector<ui::ReplayControls *> controls;
+        for (int i = 2; i < 4; ++i) {
+            auto *replay = qobject_cast<record::ReplaySession *>(&w.workspace(i)->link());
+            QVERIFY(replay && replay->group());
+            replays.push_back(replay);
+            controls.push_back(w.workspace(i)->findChild<ui::ReplayControls *>(QStringLiteral("replayControls")));
+            QVERIFY(controls.back());
+        }
+        QCOMPARE(replays[0]->group(), replays[1]->group());
+        QCOMPARE(int(replays[0]->group()->members().size()), 2);
+        // Both open on the session's length (from its start to its stop), and play at once.
+        QTRY_VERIFY_WITH_TIMEOUT(controls[0]->duration() > 2.5 && controls[1]->duration() > 2.5, 5000);
+        QCOMPARE(controls[0]->duration(), controls[1]->duration());
+        auto *linked = controls[1]->findChild<QLabel *>(QStringLiteral("linked"));
+        QVERIFY(linked && linked->isVisibleTo(controls[1]));
+        auto *speed = controls[1]->findChild<QComboBox *>(QStringLiteral("speed"));
+        QCOMPARE(speed->findData(0.0), -1); // no common pace: not offered
+        // Pause in one tab pauses both; seek in the other moves both.
+        auto *play1 = controls[1]->findChild<QPushButton *>(QStringLiteral("play"));
+        QTRY_COMPARE(play1->text(), QStringLiteral("Pause"));
+        play1->click();
+        auto *play0 = controls[0]->findChild<QPushButton *>(QStringLiteral("play"));
+        QTRY_COMPARE(play0->text(), QStringLiteral("Play"));
+        QTRY_COMPARE(play1->text(), QStringLiteral("Play"));
+        replays[0]->seek(1.0);
+        QTRY_COMPARE(controls[1]->position(), 1.0);
+        QTRY_COMPARE(controls[0]->position(), 1.0);
+        // Played from there, both devices' samples reach their tabs, the HiPNUC module's with
+        // common times, from one second into the session on.
+        const uint64_t from0 = replays[0]->store().totalAppended(), from1 = replays[1]->store().totalAppended();
+        play0->click();
+        QTRY_VERIFY_WITH_TIMEOUT(replays[0]->store().totalAppended() > from0 + 20 && replays[1]->store().totalAppended() > from1 + 2, 5000);
+        QTRY_COMPARE(play1->text(), QStringLiteral("Pause"));
+        play0->click();
+        const auto hipnuc = replays[0]->store().since(from0);
+        const auto compass = replays[1]->store().since(from1);
+        QVERIFY(hipnuc.front().commonTimeNs != 0);
+        const int64_t seekedTo = m.startedHostNs + 1'000'000'000;
+        QVERIFY(hipnuc.front().hostTimeNs >= seekedTo && compass.front().hostTimeNs >= seekedTo);
+        QVERIFY(hipnuc.front().hostTimeNs < seekedTo + 300'000'000 && compass.front().hostTimeNs < seekedTo + 300'000'000);
+        if (const QString shots = qEnvironmentVariable("IMUDESK_TEST_SHOTS"); !shots.isEmpty())
+            w.grab().save(QDir(shots).filePath(QStringLiteral("session-replay.png")));
+        QVERIFY2(errors.isEmpty(), qPrintable(errors.join(QLatin1Char('\n'))));
     }
 };
 

@@ -44,6 +44,9 @@ ReplayControls::ReplayControls(QWidget *parent) : QWidget(parent)
     m_loop->setObjectName(QStringLiteral("loop"));
     m_time = new QLabel(this);
     m_time->setObjectName(QStringLiteral("time"));
+    m_linked = new QLabel(this);
+    m_linked->setObjectName(QStringLiteral("linked"));
+    m_linked->hide();
 
     auto *layout = new QHBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
@@ -52,6 +55,7 @@ ReplayControls::ReplayControls(QWidget *parent) : QWidget(parent)
     layout->addWidget(m_timeline, 1);
     layout->addWidget(m_time);
     layout->addWidget(m_loop);
+    layout->addWidget(m_linked);
 
     connect(m_play, &QPushButton::clicked, this, [this] {
         if (!m_session)
@@ -86,6 +90,19 @@ void ReplayControls::setSession(record::ReplaySession *session)
     m_playing = false;
     m_duration = m_position = 0;
     setEnabled(m_session != nullptr);
+    // A device of a recorded session: every device's replay follows these controls, on the
+    // session's timeline; without a common pace, "as fast as possible" is not offered.
+    const bool grouped = m_session && m_session->group();
+    const int fastest = m_speed->findData(record::ReplaySession::kAsFastAsPossible);
+    if (grouped && fastest >= 0)
+        m_speed->removeItem(fastest);
+    else if (!grouped && fastest < 0)
+        m_speed->addItem(tr("As fast as possible"), record::ReplaySession::kAsFastAsPossible);
+    m_linked->setVisible(grouped);
+    m_linked->setText(tr("Session: all devices together"));
+    m_linked->setToolTip(tr("This capture is one device of a recorded session. Play, pause, seek, speed and loop "
+                            "act on every device of the session; the positions are times since the session "
+                            "started, so one position is the same instant in every tab."));
     if (m_session) {
         connect(m_session, &record::ReplaySession::opened, this, &ReplayControls::onOpened);
         connect(m_session, &record::ReplaySession::positionChanged, this, &ReplayControls::onPosition);

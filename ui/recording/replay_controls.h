@@ -41,6 +41,7 @@ private:
     QSlider *m_timeline = nullptr;
     QCheckBox *m_loop = nullptr;
     QLabel *m_time = nullptr;
+    QLabel *m_linked = nullptr; // a session's replay: the devices move together
     double m_duration = 0;
     double m_position = 0;
     bool m_playing = false;

@@ -284,8 +284,14 @@ bool DeviceWorkspace::attachLink(std::unique_ptr<device::DeviceLink> link, const
 
 void DeviceWorkspace::startLink()
 {
-    if (m_start && !isBusy())
-        m_start();
+    if (!m_start || isBusy())
+        return;
+    const SessionState before = m_state;
+    m_start();
+    // A link reports Opening from its own thread a moment later: the tab is taken from now on
+    // (a second link opened at once, as a session's replays are, goes to another tab).
+    if (m_state == before)
+        onStateChanged(SessionState::Opening, m_target);
 }
 
 void DeviceWorkspace::bindLink(std::unique_ptr<device::DeviceLink> link, std::shared_ptr<void> keepAlive)

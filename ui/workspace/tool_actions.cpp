@@ -14,14 +14,18 @@
 #include "ui/firmware/firmware_update_dialog.h"
 #include "workspace/preferences.h"
 #include "record/csv_capture_converter.h"
+#include "record/session_manifest.h"
 #include "settings/configuration_controller.h"
 
 #include <QAction>
 #include <QDockWidget>
 #include <QFileDialog>
+#include <QDir>
 #include <QFileInfo>
 #include <QMenu>
 #include <QStandardPaths>
+
+#include <cmath>
 
 namespace imudesk::ui {
 
@@ -116,7 +120,8 @@ void ToolActions::addToMenus(QMenu *fileMenu, QMenu *deviceMenu, QMenu *calibrat
 void ToolActions::retranslate()
 {
     m_openCapture->setText(tr("&Open capture…"));
-    m_openCapture->setStatusTip(tr("Play a recorded capture through the charts and views, as a live device"));
+    m_openCapture->setStatusTip(tr("Play a recorded capture through the charts and views, as a live device; a recorded session's "
+                                        "session.json opens every device, aligned"));
     m_importCsv->setText(tr("&Import vendor CSV…"));
     m_importCsv->setStatusTip(tr("Turn a CSV written by the vendor's PC tool into a capture and play it"));
     m_export->setText(tr("&Export capture…"));
@@ -191,12 +196,60 @@ void ToolActions::update(const DeviceWorkspace *ws)
 
 bool ToolActions::openCapture(const QString &path)
 {
+    const QFileInfo info(path);
+    if (record::SessionManifest::isSessionFolder(path))
+        return openSession(path);
+    if (info.fileName() == QLatin1String(record::SessionManifest::kFileName))
+        return openSession(info.absolutePath());
     QString error;
     if (!m_host->openLink(device::LinkRequest::capture(path), &error)) {
         m_host->showError(error);
         return false;
     }
     return true;
+}
+
+bool ToolActions::openSession(const QString &folder)
+{
+    record::SessionManifest manifest;
+    QString error;
+    if (!record::SessionManifest::load(folder, &manifest, &error)) {
+        m_host->showError(error);
+        return false;
+    }
+    // One timeline for all: the session's start on the recording host's clock, which every
+    // capture's chunks carry; each device with its twist-to-align offset.
+    auto group = std::make_shared<record::ReplayGroup>();
+    const QDir dir(folder);
+    QStringList problems;
+    int opened = 0;
+    for (const auto &d : manifest.devices) {
+        const QString path = dir.filePath(d.file);
+        if (d.file.isEmpty() || !QFileInfo::exists(path)) {
+            problems << tr("%1: its capture %2 is missing.").arg(d.name, d.file);
+            continue;
+        }
+        if (d.linkKind.contains(QLatin1String("Modbus"), Qt::CaseInsensitive)) {
+            problems << tr("%1 (%2): Modbus captures cannot be replayed yet; export the session to see its data.")
+                            .arg(d.name, d.linkKind);
+            continue;
+        }
+        device::LinkRequest r = device::LinkRequest::capture(path);
+        r.replay.originNs = manifest.startedHostNs;
+        r.replay.endNs = manifest.stoppedHostNs;
+        r.replay.offsetNs = int64_t(std::llround(d.offsetNs));
+        r.replayGroup = group;
+        if (!m_host->openLink(std::move(r), &error)) {
+            problems << tr("%1: %2").arg(d.name, error);
+            continue;
+        }
+        ++opened;
+    }
+    if (!problems.isEmpty())
+        m_host->showError((opened > 0 ? tr("The session opened without some of its devices:")
+                                      : tr("No device of the session could be replayed:"))
+                          + QLatin1Char('\n') + problems.join(QLatin1Char('\n')));
+    return opened > 0;
 }
 
 bool ToolActions::importVendorCsv(const QString &csvPath, const QString &capturePath)
@@ -212,8 +265,9 @@ bool ToolActions::importVendorCsv(const QString &csvPath, const QString &capture
 void ToolActions::chooseCapture()
 {
     // Any file: a capture, a vendor CSV or a raw byte dump is recognised by its content.
+    // A recorded session opens by its session.json (Device > Record all devices writes one).
     const QString path = QFileDialog::getOpenFileName(m_host->dialogParent(), tr("Open capture"), m_host->preferences().effectiveRecordingFolder(),
-                                                      tr("Captures, vendor CSV and raw dumps (*.imucap *.csv *.bin *.raw *.log *.dat *.txt);;All files (*)"));
+                                                      tr("Captures, sessions, vendor CSV and raw dumps (*.imucap session.json *.csv *.bin *.raw *.log *.dat *.txt);;All files (*)"));
     if (!path.isEmpty())
         openCapture(path);
 }

@@ -55,7 +55,10 @@ public:
     QAction *calHistoryAction() const { return m_calHistory; }
 
     // The steps behind the actions, callable without a file dialog (tests, command line).
+    // A capture file, or a recorded session (its folder or its session.json): one replay tab per
+    // device, on the session's timeline and moving together (record/replay_group.h).
     bool openCapture(const QString &path);
+    bool openSession(const QString &folder);
     bool importVendorCsv(const QString &csvPath, const QString &capturePath);
     // The recording made last in this session (any tab), what Export offers first; empty: none.
     QString lastRecording() const { return m_lastRecording; }
