@@ -131,7 +131,7 @@ int main(int argc, char *argv[])
         QStringLiteral("link"),
         QCoreApplication::translate("main", "Start connected to another simulated device: hec495 (compass on serial), "
                                             "modbus (HI14 over Modbus RTU), can (HI14 J1939 on virtualcan) or "
-                                            "canopen (HI14 CANopen on virtualcan); or replay a capture file."),
+                                            "canopen (HI14 CANopen on virtualcan); or replay a capture file, or a recorded session (its session.json or folder)."),
         QStringLiteral("device|file"));
     const QCommandLineOption dockOption(
         QStringLiteral("dock"),

@@ -1,5 +1,7 @@
 #include "can_simulator.h"
 
+#include "device/host_clock.h"
+
 #include <QCanBus>
 #include <QCanBusDevice>
 #include <QVariant>
@@ -126,8 +128,11 @@ void CanSimulator::send(const std::vector<CanFrame> &frames)
     if (!m_bus || m_bus->state() != QCanBusDevice::ConnectedState)
         return;
     for (const CanFrame &f : frames)
-        if (m_bus->writeFrame(protocol::can::toQt(f)))
+        if (m_bus->writeFrame(protocol::can::toQt(f))) {
             ++m_sent;
+            if (m_sentObserver)
+                m_sentObserver(f, device::hostNowNs());
+        }
 }
 
 void CanSimulator::applyBitrate()

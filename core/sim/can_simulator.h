@@ -39,6 +39,12 @@ public:
     double elapsedSeconds() const;
     // Simulates switching the module off and on (saved settings become active).
     void powerCycle();
+    // Called for every frame handed to the bus, with the host's steady clock (device::hostNowNs)
+    // at that moment: the truth a test measures the receiving side's times against.
+    void setSentObserver(std::function<void(const protocol::can::CanFrame &, int64_t hostNs)> observer)
+    {
+        m_sentObserver = std::move(observer);
+    }
 
 Q_SIGNALS:
     void connectedChanged(bool connected);
@@ -58,6 +64,7 @@ private:
     int m_bitrate = 0;
     uint64_t m_sent = 0;
     uint64_t m_received = 0;
+    std::function<void(const protocol::can::CanFrame &, int64_t)> m_sentObserver;
     bool m_stopping = false;
 };
 
