@@ -6,6 +6,8 @@
                                           (numerus entries take a list of forms)
 
 Only entries marked unfinished are touched; sources missing from the map stay unfinished.
+The file is written back by ElementTree: run the lupdate target afterwards, which restores
+Qt's own layout (otherwise every line of the file shows as changed).
 """
 import json
 import sys

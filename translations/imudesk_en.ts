@@ -56,7 +56,7 @@
 <context>
     <name>imudesk::record::ReplayWorker</name>
     <message numerus="yes">
-        <location filename="../core/record/replay_worker.cpp" line="+68"/>
+        <location filename="../core/record/replay_worker.cpp" line="+71"/>
         <source>%n damaged chunk(s) skipped</source>
         <translation>
             <numerusform>%n damaged chunk skipped</numerusform>
@@ -100,7 +100,7 @@
 <context>
     <name>imudesk::ui::ExportDialog</name>
     <message numerus="yes">
-        <location filename="../ui/recording/export_dialog.cpp" line="+192"/>
+        <location filename="../ui/recording/export_dialog.cpp" line="+197"/>
         <source>%n row(s) written to %1</source>
         <translation>
             <numerusform>%n row written to %1</numerusform>
@@ -171,7 +171,7 @@
 <context>
     <name>imudesk::ui::SessionRecordingWindow</name>
     <message numerus="yes">
-        <location filename="../ui/recording/session_recording_window.cpp" line="+184"/>
+        <location filename="../ui/recording/session_recording_window.cpp" line="+189"/>
         <source>Recording %n device(s) into %1…</source>
         <translation>
             <numerusform>Recording %n device into %1…</numerusform>

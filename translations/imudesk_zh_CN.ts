@@ -2764,7 +2764,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>PtySimulator</name>
     <message>
-        <location filename="../core/sim/pty_simulator.cpp" line="+318"/>
+        <location filename="../core/sim/pty_simulator.cpp" line="+328"/>
         <source>Cannot open a pseudo-terminal: %1</source>
         <translation>无法打开伪终端：%1</translation>
     </message>
@@ -3310,19 +3310,24 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>SessionExporter</name>
     <message>
-        <location filename="../core/record/session_exporter.cpp" line="+70"/>
+        <location filename="../core/record/session_exporter.cpp" line="+72"/>
         <source>A session of several devices exports to tidy CSV or JSON Lines; the vendor&apos;s layout has one device per file (export each capture on its own for it).</source>
         <translation>多设备会话只能导出为整洁 CSV 或 JSON Lines；厂商格式每个文件只含一台设备（如需该格式，请逐个导出各采集文件）。</translation>
     </message>
     <message>
         <location line="+5"/>
-        <source>A grid is written as tidy CSV (--format csv).</source>
-        <translation>按网格重采样时只能输出整洁 CSV（--format csv）。</translation>
+        <source>A grid or trigger pairs are written as tidy CSV (--format csv).</source>
+        <translation>网格或触发配对以整洁 CSV 写出（--format csv）。</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>No output file was given.</source>
         <translation>未指定输出文件。</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>A grid of at least 0.01 ms, or a pulse rate up to 10 kHz, not both.</source>
+        <translation>网格至少 0.01 ms，或脉冲频率不超过 10 kHz，二者不可同时指定。</translation>
     </message>
     <message>
         <location line="+10"/>
@@ -3345,7 +3350,23 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>无法写入 %1：%2</translation>
     </message>
     <message>
-        <location line="+107"/>
+        <location line="+36"/>
+        <location line="+96"/>
+        <source>Export cancelled.</source>
+        <translation>导出已取消。</translation>
+    </message>
+    <message>
+        <location line="-37"/>
+        <source>%1 frames of devices whose clock never aligned have no pulse index.</source>
+        <translation>时钟从未对齐的设备有 %1 帧没有脉冲序号。</translation>
+    </message>
+    <message>
+        <location line="+99"/>
+        <source>Device %1 (%2): nothing in its capture that ImuDesk decodes offline (Modbus captures are not decoded yet); it is left out.</source>
+        <translation>设备 %1（%2）：其记录中没有 ImuDesk 可离线解码的内容（Modbus 记录尚不能解码），已略去。</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>Writing %1 failed: %2. Free some space or choose another place.</source>
         <translation>写入 %1 失败：%2。请释放一些空间或选择其他位置。</translation>
     </message>
@@ -4194,7 +4215,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::device::CanFamily</name>
     <message>
-        <location filename="../core/device/can_family.cpp" line="+105"/>
+        <location filename="../core/device/can_family.cpp" line="+61"/>
         <source>connected to %1</source>
         <translation>已连接到 %1</translation>
     </message>
@@ -4210,7 +4231,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>无法发送帧 %1：CAN 接口未连接</translation>
     </message>
     <message>
-        <location line="+59"/>
+        <location line="+69"/>
         <source>boot-up</source>
         <translation>启动报文</translation>
     </message>
@@ -4793,9 +4814,19 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>无法创建文件夹 %1：请检查该位置是否存在且可写入。</translation>
     </message>
     <message>
-        <location line="+53"/>
+        <location line="+49"/>
+        <source>The device&apos;s tab was closed or its link replaced; its capture ends here.</source>
+        <translation>该设备的标签页已关闭或其连接已被替换；其记录到此结束。</translation>
+    </message>
+    <message>
+        <location line="+22"/>
         <source>None of the devices could be recorded: %1.</source>
         <translation>所有设备均无法录制：%1。</translation>
+    </message>
+    <message>
+        <location line="+49"/>
+        <source>Stopped in the device&apos;s own tab (Record or Disconnect) before the session ended.</source>
+        <translation>会话结束前已在该设备自己的标签页中停止（录制或断开）。</translation>
     </message>
 </context>
 <context>
@@ -4957,7 +4988,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>无法读取 %1。请检查文件是否存在，以及您是否有读取权限。</translation>
     </message>
     <message>
-        <location line="+75"/>
+        <location line="+76"/>
         <source>the port of %1 was lost while it was handed to the device&apos;s session</source>
         <translation>%1 的端口在交给设备会话时丢失</translation>
     </message>
@@ -5030,7 +5061,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>应答中的寄存器数量与请求的不一致</translation>
     </message>
     <message>
-        <location line="+34"/>
+        <location line="+26"/>
         <source>Reading the identity of node %1</source>
         <translation>正在读取节点 %1 的设备标识</translation>
     </message>
@@ -5186,7 +5217,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>%1 ms 内没有应答</translation>
     </message>
     <message>
-        <location line="+81"/>
+        <location line="+83"/>
         <source>Bytes keep arriving on %1 but none of them form a frame: the device probably runs at another baud rate now. Disconnect and connect again with the baud rate set to Auto.</source>
         <translation>%1 上持续收到字节，但无法组成任何数据帧：设备可能已改用其他波特率。请断开连接，并将波特率设为“自动”后重新连接。</translation>
     </message>
@@ -6365,7 +6396,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::record::ReplayWorker</name>
     <message>
-        <location filename="../core/record/replay_worker.cpp" line="+65"/>
+        <location filename="../core/record/replay_worker.cpp" line="+68"/>
         <source>%1: %2. Replaying what is intact.</source>
         <translation>%1：%2。将回放完好的部分。</translation>
     </message>
@@ -6505,7 +6536,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::sim::CanSimulator</name>
     <message>
-        <location filename="../core/sim/can_simulator.cpp" line="+43"/>
+        <location filename="../core/sim/can_simulator.cpp" line="+45"/>
         <source>cannot create CAN device %1:%2: %3</source>
         <translation>无法创建 CAN 设备 %1:%2：%3</translation>
     </message>
@@ -6515,7 +6546,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>无法打开 CAN 设备 %1:%2：%3</translation>
     </message>
     <message>
-        <location line="+97"/>
+        <location line="+100"/>
         <source>--can needs PLUGIN:INTERFACE, e.g. virtualcan:can0</source>
         <translation>--can 需要 PLUGIN:INTERFACE 格式的参数，例如 virtualcan:can0</translation>
     </message>
@@ -9341,7 +9372,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::DeviceWorkspace</name>
     <message>
-        <location filename="../ui/workspace/device_workspace.cpp" line="+355"/>
+        <location filename="../ui/workspace/device_workspace.cpp" line="+361"/>
         <source>New connection</source>
         <translation>新连接</translation>
     </message>
@@ -9556,12 +9587,12 @@ Link load = bytes per second × 10 bits / baud rate.</source>
 <context>
     <name>imudesk::ui::ExportDialog</name>
     <message>
-        <location filename="../ui/recording/export_dialog.cpp" line="+101"/>
+        <location filename="../ui/recording/export_dialog.cpp" line="+106"/>
         <source>Export %1</source>
         <translation>导出 %1</translation>
     </message>
     <message>
-        <location line="-70"/>
+        <location line="-75"/>
         <source>Vendor CSV (one file per frame type)</source>
         <translation>厂商 CSV（每种帧类型一个文件）</translation>
     </message>
@@ -9632,7 +9663,7 @@ Link load = bytes per second × 10 bits / baud rate.</source>
         <translation>结束：</translation>
     </message>
     <message>
-        <location line="+39"/>
+        <location line="+44"/>
         <source>Export capture</source>
         <translation>导出捕获</translation>
     </message>
@@ -12284,28 +12315,39 @@ Default: %2</source>
     <name>imudesk::ui::ReplayControls</name>
     <message>
         <location filename="../ui/recording/replay_controls.cpp" line="+33"/>
-        <location line="+64"/>
+        <location line="+81"/>
         <location line="+28"/>
         <source>Play</source>
         <translation>播放</translation>
     </message>
     <message>
-        <location line="-87"/>
+        <location line="-104"/>
         <source>%1×</source>
         <translation>%1×</translation>
     </message>
     <message>
         <location line="+0"/>
+        <location line="+62"/>
         <source>As fast as possible</source>
         <translation>尽可能快</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="-57"/>
         <source>Loop</source>
         <translation>循环</translation>
     </message>
     <message>
-        <location line="+61"/>
+        <location line="+59"/>
+        <source>Session: all devices together</source>
+        <translation>会话：所有设备同步</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>This capture is one device of a recorded session. Play, pause, seek, speed and loop act on every device of the session; the positions are times since the session started, so one position is the same instant in every tab.</source>
+        <translation>此记录是已录制会话中的一台设备。播放、暂停、定位、速度和循环作用于会话中的每台设备；位置是自会话开始以来的时间，因此同一位置在每个标签页中都是同一时刻。</translation>
+    </message>
+    <message>
+        <location line="+18"/>
         <source>This file is a raw byte dump: it has no arrival times, so the times come from the device&apos;s own clock (HI91/HI83 time stamps or NMEA UTC time).</source>
         <translation>此文件是原始字节转储：没有接收时间，因此时间取自设备自身的时钟（HI91/HI83 时间戳或 NMEA UTC 时间）。</translation>
     </message>
@@ -12446,7 +12488,7 @@ Default: %2</source>
         <translation>状态</translation>
     </message>
     <message>
-        <location line="+41"/>
+        <location line="+46"/>
         <source>No connected device can be recorded: connect the devices in their tabs first.</source>
         <translation>没有可录制的已连接设备：请先在各设备的标签页中连接设备。</translation>
     </message>
@@ -12503,7 +12545,7 @@ Default: %2</source>
         <translation>录制已停止，但无法写入会话清单文件：%1。采集文件位于 %2。</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+18"/>
         <source>Exporting the session…</source>
         <translation>正在导出会话…</translation>
     </message>
@@ -13177,17 +13219,12 @@ Edit it (Edit…) and start again.</source>
 <context>
     <name>imudesk::ui::ToolActions</name>
     <message>
-        <location filename="../ui/workspace/tool_actions.cpp" line="+118"/>
+        <location filename="../ui/workspace/tool_actions.cpp" line="+122"/>
         <source>&amp;Open capture…</source>
         <translation>打开记录(&amp;O)…</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>Play a recorded capture through the charts and views, as a live device</source>
-        <translation>像实时设备一样，在图表和视图中回放记录文件</translation>
-    </message>
-    <message>
-        <location line="+1"/>
+        <location line="+3"/>
         <source>&amp;Import vendor CSV…</source>
         <translation>导入厂商 CSV(&amp;I)…</translation>
     </message>
@@ -13337,7 +13374,12 @@ Edit it (Edit…) and start again.</source>
         <translation>监听并配置 CAN 总线上的设备（J1939 或 CANopen）</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-11"/>
+        <source>Play a recorded capture through the charts and views, as a live device; a recorded session&apos;s session.json opens every device, aligned</source>
+        <translation>像实时设备一样，通过图表和视图播放已录制的记录；打开已录制会话的 session.json 会以对齐方式打开每台设备</translation>
+    </message>
+    <message>
+        <location line="+12"/>
         <source>&amp;Scan the bus…</source>
         <translation>扫描总线(&amp;S)…</translation>
     </message>
@@ -13377,17 +13419,46 @@ Edit it (Edit…) and start again.</source>
         <translation>校准(&amp;C)</translation>
     </message>
     <message>
-        <location line="+47"/>
+        <location line="+65"/>
+        <source>%1: its capture %2 is missing.</source>
+        <translation>%1：其记录 %2 缺失。</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1 (%2): Modbus captures cannot be replayed yet; export the session to see its data.</source>
+        <translation>%1（%2）：Modbus 记录尚不能回放；请导出会话以查看其数据。</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>The session opened without some of its devices:</source>
+        <translation>会话已打开，但缺少以下设备：</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>No device of the session could be replayed:</source>
+        <translation>会话中没有可回放的设备：</translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>%1 could not be imported: %2</source>
         <translation>无法导入 %1：%2</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+10"/>
         <source>Open capture</source>
         <translation>打开记录文件</translation>
     </message>
     <message>
         <location line="+1"/>
+        <source>Captures, sessions, vendor CSV and raw dumps (*.imucap session.json *.csv *.bin *.raw *.log *.dat *.txt);;All files (*)</source>
+        <translation>记录、会话、厂商 CSV 和原始数据 (*.imucap session.json *.csv *.bin *.raw *.log *.dat *.txt);;所有文件 (*)</translation>
+    </message>
+    <message>
         <location line="+26"/>
         <location line="+11"/>
         <source>Captures, vendor CSV and raw dumps (*.imucap *.csv *.bin *.raw *.log *.dat *.txt);;All files (*)</source>
@@ -13581,7 +13652,7 @@ Edit it (Edit…) and start again.</source>
         <translation>扭转时段：</translation>
     </message>
     <message>
-        <location line="+41"/>
+        <location line="+47"/>
         <location line="+167"/>
         <source>The session in %1 has one device only: twist to align needs two or more devices recorded together. Choose another session.</source>
         <translation>%1 中的会话只有一台设备：扭转对齐需要两台或以上一起录制的设备。请选择其他会话。</translation>
@@ -13831,12 +13902,7 @@ Edit it (Edit…) and start again.</source>
         <translation>执行 --screenshot 前等待的秒数（默认 3）。</translation>
     </message>
     <message>
-        <location line="+4"/>
-        <source>Start connected to another simulated device: hec495 (compass on serial), modbus (HI14 over Modbus RTU), can (HI14 J1939 on virtualcan) or canopen (HI14 CANopen on virtualcan); or replay a capture file.</source>
-        <translation>启动后连接到另一个模拟设备：hec495（串口罗盘）、modbus（通过 Modbus RTU 连接的 HI14）、can（virtualcan 上的 HI14 J1939）或 canopen（virtualcan 上的 HI14 CANopen）；或回放一个记录文件。</translation>
-    </message>
-    <message>
-        <location line="+6"/>
+        <location line="+10"/>
         <source>Bring this panel to the front: configuration, recording, console, raw, commands, can (the CAN configuration) or sync (the clocks).</source>
         <translation>将此面板置于最前：configuration（配置）、recording（记录）、console（控制台）、raw（原始字节）、commands（指令日志）、can（CAN 配置）或 sync（时钟）。</translation>
     </message>
@@ -13876,7 +13942,12 @@ Edit it (Edit…) and start again.</source>
         <translation>--simulate 模拟的型号（默认 HI14）。</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="-28"/>
+        <source>Start connected to another simulated device: hec495 (compass on serial), modbus (HI14 over Modbus RTU), can (HI14 J1939 on virtualcan) or canopen (HI14 CANopen on virtualcan); or replay a capture file, or a recorded session (its session.json or folder).</source>
+        <translation>启动时连接另一种模拟设备：hec495（串口电子罗盘）、modbus（Modbus RTU 上的 HI14）、can（virtualcan 上的 HI14 J1939）或 canopen（virtualcan 上的 HI14 CANopen）；或回放一个记录文件，或一个已录制的会话（其 session.json 或文件夹）。</translation>
+    </message>
+    <message>
+        <location line="+44"/>
         <source>A model name is only accepted after --simulate.</source>
         <translation>型号名称只能跟在 --simulate 之后。</translation>
     </message>

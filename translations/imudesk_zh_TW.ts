@@ -2764,7 +2764,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>PtySimulator</name>
     <message>
-        <location filename="../core/sim/pty_simulator.cpp" line="+318"/>
+        <location filename="../core/sim/pty_simulator.cpp" line="+328"/>
         <source>Cannot open a pseudo-terminal: %1</source>
         <translation>無法開啟虛擬終端機：%1</translation>
     </message>
@@ -3310,19 +3310,24 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>SessionExporter</name>
     <message>
-        <location filename="../core/record/session_exporter.cpp" line="+70"/>
+        <location filename="../core/record/session_exporter.cpp" line="+72"/>
         <source>A session of several devices exports to tidy CSV or JSON Lines; the vendor&apos;s layout has one device per file (export each capture on its own for it).</source>
         <translation>多裝置工作階段只能匯出為整潔 CSV 或 JSON Lines；原廠格式每個檔案只含一台裝置（如需此格式，請逐一匯出各擷取檔）。</translation>
     </message>
     <message>
         <location line="+5"/>
-        <source>A grid is written as tidy CSV (--format csv).</source>
-        <translation>依網格重新取樣時只能輸出整潔 CSV（--format csv）。</translation>
+        <source>A grid or trigger pairs are written as tidy CSV (--format csv).</source>
+        <translation>網格或觸發配對以整齊 CSV 寫出（--format csv）。</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>No output file was given.</source>
         <translation>未指定輸出檔案。</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>A grid of at least 0.01 ms, or a pulse rate up to 10 kHz, not both.</source>
+        <translation>網格至少 0.01 ms，或脈衝頻率不超過 10 kHz，二者不可同時指定。</translation>
     </message>
     <message>
         <location line="+10"/>
@@ -3345,7 +3350,23 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>無法寫入 %1：%2</translation>
     </message>
     <message>
-        <location line="+107"/>
+        <location line="+36"/>
+        <location line="+96"/>
+        <source>Export cancelled.</source>
+        <translation>匯出已取消。</translation>
+    </message>
+    <message>
+        <location line="-37"/>
+        <source>%1 frames of devices whose clock never aligned have no pulse index.</source>
+        <translation>時鐘從未對齊的裝置有 %1 幀沒有脈衝序號。</translation>
+    </message>
+    <message>
+        <location line="+99"/>
+        <source>Device %1 (%2): nothing in its capture that ImuDesk decodes offline (Modbus captures are not decoded yet); it is left out.</source>
+        <translation>裝置 %1（%2）：其記錄中沒有 ImuDesk 可離線解碼的內容（Modbus 記錄尚不能解碼），已略去。</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>Writing %1 failed: %2. Free some space or choose another place.</source>
         <translation>寫入 %1 失敗：%2。請釋放一些空間或選擇其他位置。</translation>
     </message>
@@ -4194,7 +4215,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::device::CanFamily</name>
     <message>
-        <location filename="../core/device/can_family.cpp" line="+105"/>
+        <location filename="../core/device/can_family.cpp" line="+61"/>
         <source>connected to %1</source>
         <translation>已連線到 %1</translation>
     </message>
@@ -4210,7 +4231,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>無法傳送幀 %1：CAN 介面未連線</translation>
     </message>
     <message>
-        <location line="+59"/>
+        <location line="+69"/>
         <source>boot-up</source>
         <translation>開機訊息</translation>
     </message>
@@ -4793,9 +4814,19 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>無法建立資料夾 %1：請確認該位置存在且可寫入。</translation>
     </message>
     <message>
-        <location line="+53"/>
+        <location line="+49"/>
+        <source>The device&apos;s tab was closed or its link replaced; its capture ends here.</source>
+        <translation>該裝置的分頁已關閉或其連線已被取代；其記錄到此結束。</translation>
+    </message>
+    <message>
+        <location line="+22"/>
         <source>None of the devices could be recorded: %1.</source>
         <translation>所有裝置皆無法錄製：%1。</translation>
+    </message>
+    <message>
+        <location line="+49"/>
+        <source>Stopped in the device&apos;s own tab (Record or Disconnect) before the session ended.</source>
+        <translation>工作階段結束前已在該裝置自己的分頁中停止（錄製或中斷連線）。</translation>
     </message>
 </context>
 <context>
@@ -4957,7 +4988,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>無法讀取 %1。請確認檔案存在且您有讀取權限。</translation>
     </message>
     <message>
-        <location line="+75"/>
+        <location line="+76"/>
         <source>the port of %1 was lost while it was handed to the device&apos;s session</source>
         <translation>%1 的連接埠在交給裝置工作階段時遺失</translation>
     </message>
@@ -5030,7 +5061,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>回應中的暫存器數量與請求的不一致</translation>
     </message>
     <message>
-        <location line="+34"/>
+        <location line="+26"/>
         <source>Reading the identity of node %1</source>
         <translation>正在讀取節點 %1 的身分資訊</translation>
     </message>
@@ -5186,7 +5217,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>%1 ms 內沒有回應</translation>
     </message>
     <message>
-        <location line="+81"/>
+        <location line="+83"/>
         <source>Bytes keep arriving on %1 but none of them form a frame: the device probably runs at another baud rate now. Disconnect and connect again with the baud rate set to Auto.</source>
         <translation>%1 上持續收到位元組，但無法組成任何資料框：裝置可能已改用其他波特率。請中斷連線，並將波特率設為「自動」後重新連線。</translation>
     </message>
@@ -6365,7 +6396,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::record::ReplayWorker</name>
     <message>
-        <location filename="../core/record/replay_worker.cpp" line="+65"/>
+        <location filename="../core/record/replay_worker.cpp" line="+68"/>
         <source>%1: %2. Replaying what is intact.</source>
         <translation>%1：%2。將重播完好的部分。</translation>
     </message>
@@ -6505,7 +6536,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::sim::CanSimulator</name>
     <message>
-        <location filename="../core/sim/can_simulator.cpp" line="+43"/>
+        <location filename="../core/sim/can_simulator.cpp" line="+45"/>
         <source>cannot create CAN device %1:%2: %3</source>
         <translation>無法建立 CAN 裝置 %1:%2：%3</translation>
     </message>
@@ -6515,7 +6546,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>無法開啟 CAN 裝置 %1:%2：%3</translation>
     </message>
     <message>
-        <location line="+97"/>
+        <location line="+100"/>
         <source>--can needs PLUGIN:INTERFACE, e.g. virtualcan:can0</source>
         <translation>--can 需要 PLUGIN:INTERFACE 格式，例如 virtualcan:can0</translation>
     </message>
@@ -9341,7 +9372,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::DeviceWorkspace</name>
     <message>
-        <location filename="../ui/workspace/device_workspace.cpp" line="+355"/>
+        <location filename="../ui/workspace/device_workspace.cpp" line="+361"/>
         <source>New connection</source>
         <translation>新連線</translation>
     </message>
@@ -9556,12 +9587,12 @@ Link load = bytes per second × 10 bits / baud rate.</source>
 <context>
     <name>imudesk::ui::ExportDialog</name>
     <message>
-        <location filename="../ui/recording/export_dialog.cpp" line="+101"/>
+        <location filename="../ui/recording/export_dialog.cpp" line="+106"/>
         <source>Export %1</source>
         <translation>匯出 %1</translation>
     </message>
     <message>
-        <location line="-70"/>
+        <location line="-75"/>
         <source>Vendor CSV (one file per frame type)</source>
         <translation>原廠 CSV（每種幀類型一個檔案）</translation>
     </message>
@@ -9632,7 +9663,7 @@ Link load = bytes per second × 10 bits / baud rate.</source>
         <translation>結束：</translation>
     </message>
     <message>
-        <location line="+39"/>
+        <location line="+44"/>
         <source>Export capture</source>
         <translation>匯出擷取</translation>
     </message>
@@ -12284,28 +12315,39 @@ Default: %2</source>
     <name>imudesk::ui::ReplayControls</name>
     <message>
         <location filename="../ui/recording/replay_controls.cpp" line="+33"/>
-        <location line="+64"/>
+        <location line="+81"/>
         <location line="+28"/>
         <source>Play</source>
         <translation>播放</translation>
     </message>
     <message>
-        <location line="-87"/>
+        <location line="-104"/>
         <source>%1×</source>
         <translation>%1×</translation>
     </message>
     <message>
         <location line="+0"/>
+        <location line="+62"/>
         <source>As fast as possible</source>
         <translation>最快速度</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="-57"/>
         <source>Loop</source>
         <translation>循環播放</translation>
     </message>
     <message>
-        <location line="+61"/>
+        <location line="+59"/>
+        <source>Session: all devices together</source>
+        <translation>工作階段：所有裝置同步</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>This capture is one device of a recorded session. Play, pause, seek, speed and loop act on every device of the session; the positions are times since the session started, so one position is the same instant in every tab.</source>
+        <translation>此記錄是已錄製工作階段中的一台裝置。播放、暫停、定位、速度和循環作用於工作階段中的每台裝置；位置是自工作階段開始以來的時間，因此同一位置在每個分頁中都是同一時刻。</translation>
+    </message>
+    <message>
+        <location line="+18"/>
         <source>This file is a raw byte dump: it has no arrival times, so the times come from the device&apos;s own clock (HI91/HI83 time stamps or NMEA UTC time).</source>
         <translation>此檔案是原始位元組轉儲：沒有接收時間，因此時間取自裝置自身的時鐘（HI91/HI83 時間戳或 NMEA UTC 時間）。</translation>
     </message>
@@ -12446,7 +12488,7 @@ Default: %2</source>
         <translation>狀態</translation>
     </message>
     <message>
-        <location line="+41"/>
+        <location line="+46"/>
         <source>No connected device can be recorded: connect the devices in their tabs first.</source>
         <translation>沒有可錄製的已連線裝置：請先在各裝置的分頁中連線。</translation>
     </message>
@@ -12503,7 +12545,7 @@ Default: %2</source>
         <translation>錄製已停止，但無法寫入工作階段清單檔：%1。擷取檔位於 %2。</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+18"/>
         <source>Exporting the session…</source>
         <translation>正在匯出工作階段…</translation>
     </message>
@@ -13177,17 +13219,12 @@ Edit it (Edit…) and start again.</source>
 <context>
     <name>imudesk::ui::ToolActions</name>
     <message>
-        <location filename="../ui/workspace/tool_actions.cpp" line="+118"/>
+        <location filename="../ui/workspace/tool_actions.cpp" line="+122"/>
         <source>&amp;Open capture…</source>
         <translation>開啟記錄檔(&amp;O)…</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>Play a recorded capture through the charts and views, as a live device</source>
-        <translation>在圖表和檢視中重播記錄檔，如同連線的即時裝置</translation>
-    </message>
-    <message>
-        <location line="+1"/>
+        <location line="+3"/>
         <source>&amp;Import vendor CSV…</source>
         <translation>匯入原廠 CSV(&amp;I)…</translation>
     </message>
@@ -13337,7 +13374,12 @@ Edit it (Edit…) and start again.</source>
         <translation>監聽並設定 CAN 匯流排上的裝置（J1939 或 CANopen）</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-11"/>
+        <source>Play a recorded capture through the charts and views, as a live device; a recorded session&apos;s session.json opens every device, aligned</source>
+        <translation>像即時裝置一樣，透過圖表和檢視播放已錄製的記錄；開啟已錄製工作階段的 session.json 會以對齊方式開啟每台裝置</translation>
+    </message>
+    <message>
+        <location line="+12"/>
         <source>&amp;Scan the bus…</source>
         <translation>掃描匯流排(&amp;S)…</translation>
     </message>
@@ -13377,17 +13419,46 @@ Edit it (Edit…) and start again.</source>
         <translation>校準(&amp;C)</translation>
     </message>
     <message>
-        <location line="+47"/>
+        <location line="+65"/>
+        <source>%1: its capture %2 is missing.</source>
+        <translation>%1：其記錄 %2 遺失。</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1 (%2): Modbus captures cannot be replayed yet; export the session to see its data.</source>
+        <translation>%1（%2）：Modbus 記錄尚不能重播；請匯出工作階段以檢視其資料。</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>The session opened without some of its devices:</source>
+        <translation>工作階段已開啟，但缺少以下裝置：</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>No device of the session could be replayed:</source>
+        <translation>工作階段中沒有可重播的裝置：</translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>%1 could not be imported: %2</source>
         <translation>無法匯入 %1：%2</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+10"/>
         <source>Open capture</source>
         <translation>開啟記錄檔</translation>
     </message>
     <message>
         <location line="+1"/>
+        <source>Captures, sessions, vendor CSV and raw dumps (*.imucap session.json *.csv *.bin *.raw *.log *.dat *.txt);;All files (*)</source>
+        <translation>記錄、工作階段、廠商 CSV 和原始資料 (*.imucap session.json *.csv *.bin *.raw *.log *.dat *.txt);;所有檔案 (*)</translation>
+    </message>
+    <message>
         <location line="+26"/>
         <location line="+11"/>
         <source>Captures, vendor CSV and raw dumps (*.imucap *.csv *.bin *.raw *.log *.dat *.txt);;All files (*)</source>
@@ -13581,7 +13652,7 @@ Edit it (Edit…) and start again.</source>
         <translation>扭轉時段：</translation>
     </message>
     <message>
-        <location line="+41"/>
+        <location line="+47"/>
         <location line="+167"/>
         <source>The session in %1 has one device only: twist to align needs two or more devices recorded together. Choose another session.</source>
         <translation>%1 中的工作階段只有一台裝置：扭轉對齊需要兩台以上一起錄製的裝置。請選擇其他工作階段。</translation>
@@ -13831,12 +13902,7 @@ Edit it (Edit…) and start again.</source>
         <translation>執行 --screenshot 前等待的秒數（預設 3）。</translation>
     </message>
     <message>
-        <location line="+4"/>
-        <source>Start connected to another simulated device: hec495 (compass on serial), modbus (HI14 over Modbus RTU), can (HI14 J1939 on virtualcan) or canopen (HI14 CANopen on virtualcan); or replay a capture file.</source>
-        <translation>啟動後連線到其他模擬裝置：hec495（串列埠上的羅盤）、modbus（透過 Modbus RTU 連線的 HI14）、can（virtualcan 上的 HI14 J1939）或 canopen（virtualcan 上的 HI14 CANopen）；或重播記錄檔。</translation>
-    </message>
-    <message>
-        <location line="+6"/>
+        <location line="+10"/>
         <source>Bring this panel to the front: configuration, recording, console, raw, commands, can (the CAN configuration) or sync (the clocks).</source>
         <translation>將此面板移到最前：configuration（配置）、recording（記錄）、console（主控台）、raw（原始位元組）、commands（指令日誌）、can（CAN 配置）或 sync（時鐘）。</translation>
     </message>
@@ -13876,7 +13942,12 @@ Edit it (Edit…) and start again.</source>
         <translation>--simulate 模擬的型號（預設 HI14）。</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="-28"/>
+        <source>Start connected to another simulated device: hec495 (compass on serial), modbus (HI14 over Modbus RTU), can (HI14 J1939 on virtualcan) or canopen (HI14 CANopen on virtualcan); or replay a capture file, or a recorded session (its session.json or folder).</source>
+        <translation>啟動時連線另一種模擬裝置：hec495（序列埠電子羅盤）、modbus（Modbus RTU 上的 HI14）、can（virtualcan 上的 HI14 J1939）或 canopen（virtualcan 上的 HI14 CANopen）；或重播一個記錄檔，或一個已錄製的工作階段（其 session.json 或資料夾）。</translation>
+    </message>
+    <message>
+        <location line="+44"/>
         <source>A model name is only accepted after --simulate.</source>
         <translation>型號名稱只能接在 --simulate 之後。</translation>
     </message>

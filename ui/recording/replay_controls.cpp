@@ -50,6 +50,8 @@ ReplayControls::ReplayControls(QWidget *parent) : QWidget(parent)
 
     auto *layout = new QHBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
+    // One row: the dock below the charts keeps its height, the charts get the rest.
+    setSizePolicy(QSizePolicy::Preferred, QSizePolicy::Fixed);
     layout->addWidget(m_play);
     layout->addWidget(m_speed);
     layout->addWidget(m_timeline, 1);
