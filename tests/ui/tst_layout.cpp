@@ -30,7 +30,9 @@
 #include "device/modbus_types.h"
 #include "workspace/device_workspace.h"
 #include "workspace/language_switcher.h"
+#include "record/session_manifest.h"
 #include "workspace/main_window.h"
+#include "workspace/tool_actions.h"
 #include "model/main_status.h"
 #include "itemmodels/latest_values_model.h"
 #include "workspace/status_flags_widget.h"
@@ -78,11 +80,12 @@ bool laptopScreen()
     return qEnvironmentVariableIntValue("IMUDESK_LAYOUT_LAPTOP") == 1;
 }
 
-enum class Kind { Serial, Hec495, Modbus, J1939, CanOpen, Replay, SerialGnss, SerialIns };
+enum class Kind { Serial, Hec495, Modbus, J1939, CanOpen, Replay, SerialGnss, SerialIns, SessionReplay };
 const char *kindName(Kind k)
 {
     static const char *const names[] = {"HiPNUC serial", "HEC495", "Modbus", "J1939", "CANopen", "replay",
-                                                 "HiPNUC serial with NMEA", "HiPNUC serial with every HI83 field"};
+                                                 "HiPNUC serial with NMEA", "HiPNUC serial with every HI83 field",
+                                                 "session replay"};
     return names[int(k)];
 }
 
@@ -186,6 +189,7 @@ class TstLayout : public QObject {
     Q_OBJECT
     QTemporaryDir m_dir;
     QString m_capture;
+    QString m_session; // a session folder of two devices, both m_capture's recording
     ui::LanguageSwitcher m_language;
 
     bool connectKind(MainWindow &w, Kind kind, QString *error)
@@ -244,6 +248,15 @@ class TstLayout : public QObject {
         case Kind::Replay: {
             // The capture plays once it is open: runKind() waits for its data on the views.
             return w.openLink(device::LinkRequest::capture(m_capture), error);
+        }
+        case Kind::SessionReplay: {
+            // Two devices of a recorded session: two replay tabs, linked (the label beside the
+            // controls); the last one is in view.
+            if (!w.tools()->openCapture(m_session)) {
+                *error = QStringLiteral("the session did not open");
+                return false;
+            }
+            return true;
         }
         }
         return false;
@@ -352,6 +365,19 @@ private Q_SLOTS:
         synthetic::CaptureSpec spec;
         spec.frames = 10000;
         QVERIFY(synthetic::writeCapture(m_capture, spec) > 0);
+        m_session = m_dir.filePath(QStringLiteral("session"));
+        QVERIFY(QDir().mkpath(m_session));
+        record::SessionManifest manifest;
+        for (const QString &name : {QStringLiteral("A"), QStringLiteral("B")}) {
+            QVERIFY(QFile::copy(m_capture, QDir(m_session).filePath(name + QStringLiteral(".imucap"))));
+            record::SessionManifest::Device d;
+            d.name = name;
+            d.linkKind = QStringLiteral("HiPNUC serial");
+            d.file = name + QStringLiteral(".imucap");
+            manifest.devices.push_back(d);
+        }
+        QString error;
+        QVERIFY2(manifest.save(m_session, &error), qPrintable(error));
     }
 
     void everyWorkspaceKind_data()
@@ -361,7 +387,7 @@ private Q_SLOTS:
         QTest::addColumn<QString>("language");
         for (const QString &lang : {QStringLiteral("en"), QStringLiteral("zh_CN")})
             for (const QSize &size : {kSmall, kLarge})
-                for (int k = 0; k <= int(Kind::SerialIns); ++k)
+                for (int k = 0; k <= int(Kind::SessionReplay); ++k)
                     QTest::addRow("%s %dx%d %s", kindName(Kind(k)), size.width(), size.height(), qPrintable(lang))
                         << k << size << lang;
     }
