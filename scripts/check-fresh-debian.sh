@@ -177,6 +177,13 @@ if [ "${1:-}" = --inside ]; then
   inroot apt-get autoclean -q > /dev/null 2>&1 # keep only current .debs in the cache
   pass
 
+  begin "the tests' tools from npm: the official MCAP reader loads on Debian's Node.js"
+  # setup.sh install ran `npm ci --prefix tests/mcap`; the reader answers a missing file with its
+  # JSON error, which it can only do once every module it imports has loaded.
+  inroot node /src/tests/mcap/read_mcap.mjs /nonexistent.mcap > "$work/mcap-reader.log" 2>&1
+  grep -q '"error"' "$work/mcap-reader.log" || failstep "node could not run tests/mcap/read_mcap.mjs" "$work/mcap-reader.log"
+  pass
+
   begin "configure the project with tests and benchmarks (cmake -G Ninja, Release)"
   if ! inroot cmake -S /src -B /build -G Ninja -DCMAKE_BUILD_TYPE=Release \
        -DIMUDESK_BUILD_TESTS=ON -DIMUDESK_BUILD_BENCH=ON > "$work/configure.log" 2>&1; then

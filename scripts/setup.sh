@@ -30,6 +30,12 @@ install_packages() {
   mapfile -t pkgs < <(grep -Ev '^\s*(#|$)' "$here/debian-packages.txt")
   local missing=()
   for p in "${pkgs[@]}"; do
+    # Node.js from another source (NodeSource's nodejs carries npm and conflicts with Debian's
+    # npm package): the commands are what the tests need.
+    case "$p" in
+      nodejs) command -v node >/dev/null && continue ;;
+      npm) command -v npm >/dev/null && continue ;;
+    esac
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || missing+=("$p")
   done
   if ((${#missing[@]})); then
@@ -94,6 +100,15 @@ if [ "$mode" = later-builds ]; then
 fi
 
 install_packages
+# The test-only tools from npm, at the versions tests/mcap/package-lock.json pins: the official
+# MCAP reader (@mcap/core) and the ROS 2 message decoder the MCAP tests read files back with.
+install_test_tools() {
+  echo "== npm ci --prefix tests/mcap (the official MCAP reader, for the tests)"
+  npm ci --prefix "$root/tests/mcap" --no-audit --no-fund --loglevel=error
+}
+if [ "$mode" = install ] || [ "$mode" = test ]; then
+  install_test_tools
+fi
 [ "$mode" = install ] && exit 0
 
 if [ "$mode" = package ]; then

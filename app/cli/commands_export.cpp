@@ -16,10 +16,10 @@ namespace imudesk::cli {
 int cmdExport(const QStringList &args)
 {
     QCommandLineParser p;
-    p.addOption(QCommandLineOption(QStringLiteral("format"), QStringLiteral("vendor-csv, csv (tidy) or jsonl."),
+    p.addOption(QCommandLineOption(QStringLiteral("format"), QStringLiteral("vendor-csv, csv (tidy), jsonl or mcap (ROS 2 messages: PlotJuggler, Foxglove, Lichtblick)."),
                                    QStringLiteral("F"), QStringLiteral("csv")));
     p.addOption(QCommandLineOption({QStringLiteral("o"), QStringLiteral("output")},
-                                   QStringLiteral("Output file (default: the capture's name with .csv / .jsonl)."),
+                                   QStringLiteral("Output file (default: the capture's name with .csv / .jsonl / .mcap)."),
                                    QStringLiteral("OUT")));
     p.addOption(QCommandLineOption(QStringLiteral("from"), QStringLiteral("Start, seconds since the recording began."),
                                    QStringLiteral("S")));
@@ -38,19 +38,22 @@ int cmdExport(const QStringList &args)
                             QStringLiteral("A capture, a vendor HI91 CSV, a raw byte dump (recognised by content), or the "
                                            "folder of a recorded session (record PORT,PORT,...)."));
     if (!parseArgs(p, args,
-                   QStringLiteral("imudesk-cli export FILE --format vendor-csv|csv|jsonl [-o OUT] [--from S --to S]\n"
+                   QStringLiteral("imudesk-cli export FILE --format vendor-csv|csv|jsonl|mcap [-o OUT] [--from S --to S]\n"
                                   "       imudesk-cli export SESSION_FOLDER --format csv|jsonl [-o OUT] [--grid-ms MS | --pulse-hz HZ]")))
         return ExitUsage;
     if (p.positionalArguments().size() != 1)
         return fail(QStringLiteral("export needs exactly one capture FILE"), ExitUsage);
     const auto format = record::CaptureExporter::parseFormat(p.value(QStringLiteral("format")));
     if (!format)
-        return fail(QStringLiteral("unknown --format '%1' (vendor-csv, csv or jsonl)").arg(p.value(QStringLiteral("format"))),
+        return fail(QStringLiteral("unknown --format '%1' (vendor-csv, csv, jsonl or mcap)").arg(p.value(QStringLiteral("format"))),
                     ExitUsage);
     record::CaptureExporter::Options o;
     o.format = *format;
     const QString input = p.positionalArguments().front();
     if (record::SessionManifest::isSessionFolder(input)) {
+        if (*format == record::CaptureExporter::Format::Mcap)
+            return fail(QStringLiteral("a session exports to csv or jsonl; export its captures one by one to MCAP"),
+                        ExitUsage);
         record::SessionExporter::Options so;
         so.format = *format;
         so.output = p.isSet(QStringLiteral("o")) ? p.value(QStringLiteral("o"))
@@ -90,8 +93,7 @@ int cmdExport(const QStringList &args)
     o.output = p.value(QStringLiteral("o"));
     if (o.output.isEmpty()) {
         const QFileInfo info(input);
-        o.output = info.path() + QLatin1Char('/') + info.completeBaseName()
-            + (o.format == record::CaptureExporter::Format::JsonLines ? QStringLiteral(".jsonl") : QStringLiteral(".csv"));
+        o.output = info.path() + QLatin1Char('/') + info.completeBaseName() + record::CaptureExporter::extension(o.format);
     }
     if (!fromToOptions(p, &o.fromS, &o.toS))
         return ExitUsage;

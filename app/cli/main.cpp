@@ -30,7 +30,7 @@ void usage(FILE *to)
                "  record PORT,PORT[,...] -o FOLDER [--duration S]  record several devices as one session\n"
                "  align FOLDER [--reference NAME] [--from S --to S] [--dry-run]\n"
                "                                         twist-to-align: the devices' offsets from a fixture's sharp turns\n"
-               "  export FILE --format vendor-csv|csv|jsonl [-o OUT] [--from S --to S]\n"
+               "  export FILE --format vendor-csv|csv|jsonl|mcap [-o OUT] [--from S --to S]\n"
                "                                         export a capture (or a time range of it)\n"
                "  export FOLDER --format csv|jsonl [-o OUT] [--grid-ms MS]  a session, its devices aligned\n"
                "  import CSV [-o OUT.imucap]             turn a vendor HI91 CSV into a capture\n"

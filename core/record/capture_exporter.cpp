@@ -1,5 +1,7 @@
 #include "capture_exporter.h"
 
+#include "format/mcap/mcap_writer.h"
+#include "format/mcap/sample_channels.h"
 #include "format/sample_json.h"
 #include "record/capture_decoder.h"
 #include "record/capture_reader.h"
@@ -7,8 +9,12 @@
 #include "record/csv_number.h"
 #include "record/vendor_csv.h"
 
+#include <QCoreApplication>
+#include <QDateTime>
 #include <QFile>
 #include <QFileInfo>
+#include <QJsonDocument>
+#include <QJsonObject>
 
 #include <map>
 #include <memory>
@@ -61,8 +67,85 @@ public:
     }
 
     int64_t firstNs = 0;
+    int64_t epochOffsetNs = 0; // host clock to the Unix epoch (the first chunk's two times)
     const CaptureDecoder *decoder = nullptr;
+    const CaptureHeader *header = nullptr;
     model::WorldFrame worldFrame = model::WorldFrame::Enu; // the capture's module (its header)
+
+    // MCAP: one writer, the device's channels, the identity and configuration written first.
+    format::mcap::SampleChannels *mcap()
+    {
+        if (m_mcapChannels || m_failed)
+            return m_mcapChannels.get();
+        namespace fm = format::mcap;
+        m_mcap = std::make_unique<fm::McapWriter>();
+        fm::McapWriter::Options wo;
+        wo.library = (QStringLiteral("ImuDesk ") + QCoreApplication::applicationVersion()).trimmed().toStdString();
+        if (!m_mcap->open(m_o.output, wo)) {
+            m_r.error = CaptureExporter::tr("Cannot write %1: %2").arg(m_o.output, m_mcap->error());
+            m_failed = true;
+            return nullptr;
+        }
+        m_r.files << m_o.output;
+        const model::DeviceIdentity id = header ? header->identity() : model::DeviceIdentity{};
+        fm::McapWriter::StringMap device;
+        const auto put = [&device](const char *key, const std::string &v) {
+            if (!v.empty())
+                device[key] = v;
+        };
+        put("product", id.productName);
+        put("serial", id.serial);
+        put("build", id.build);
+        if (header) {
+            put("firmware", header->value(CaptureHeader::kFirmware));
+            put("bootloader", header->value(CaptureHeader::kBootloader));
+            put("link", header->value(CaptureHeader::kLinkKind));
+            put("port", header->value(CaptureHeader::kPort));
+            put("baud", header->value(CaptureHeader::kBaud));
+            put("recorded_utc", header->value(CaptureHeader::kStartedUtc));
+            put("recorded_by", header->value(CaptureHeader::kApplication));
+        }
+        device["world_frame"] = worldFrame == model::WorldFrame::Nwu ? "NWU" : "ENU";
+        m_mcap->addMetadata("device", device);
+        m_mcap->addMetadata("time", {{"log_time", "arrival on the recording host (its steady clock, on the Unix epoch "
+                                                  "from the capture's first chunk)"},
+                                     {"publish_time", "the sample's common time: its sampling instant on the same "
+                                                      "clock, from the device's counter through ImuDesk's clock model, "
+                                                      "or the arrival where there is none"},
+                                     {"sequence", "the device's time stamp in ms where it has one"}});
+        if (header && !header->config().empty()) {
+            QJsonObject config;
+            for (const auto &[k, v] : header->config())
+                config.insert(QString::fromStdString(k), QString::fromStdString(v));
+            const uint64_t now = uint64_t(QDateTime::currentMSecsSinceEpoch()) * 1'000'000u;
+            m_mcap->attach("configuration.json", "application/json",
+                           QJsonDocument(config).toJson(QJsonDocument::Indented).toStdString(), now, now);
+        }
+        fm::SampleChannels::Device d;
+        d.name = fm::SampleChannels::topicName(!id.serial.empty() ? id.serial
+                                                                   : !id.productName.empty() ? id.productName : "device");
+        d.frameId = "imu_" + d.name;
+        d.worldFrame = worldFrame;
+        d.metadata = device;
+        m_mcapChannels = std::make_unique<fm::SampleChannels>(*m_mcap, d);
+        return m_mcapChannels.get();
+    }
+    void mcapWrite(const model::Sample &s)
+    {
+        if (auto *c = mcap()) {
+            if (!c->write(s, epochOffsetNs))
+                mcapFailed();
+            else
+                ++m_r.frames;
+        }
+    }
+    void mcapFailed()
+    {
+        if (!m_failed) {
+            m_failed = true;
+            m_r.error = CaptureExporter::tr("Writing %1 failed: %2. Check the free disk space.").arg(m_o.output, m_mcap->error());
+        }
+    }
 
     bool open(const QString &path, const char *header, Output *&out)
     {
@@ -145,6 +228,9 @@ public:
             written(out);
             break;
         }
+        case CaptureExporter::Format::Mcap:
+            mcapWrite(timed(hp::toSample(p), hostNs));
+            break;
         }
     }
 
@@ -155,6 +241,12 @@ public:
         Output *out = nullptr;
         if (m_o.format == CaptureExporter::Format::VendorCsv) {
             ++m_r.skipped;
+            return;
+        }
+        if (m_o.format == CaptureExporter::Format::Mcap) {
+            model::Sample t = s;
+            t.hostTimeNs = hostNs;
+            mcapWrite(t);
             return;
         }
         if ((out = output(QString(), nullptr))) {
@@ -182,7 +274,7 @@ public:
             if ((out = output(QString(), nullptr)))
                 out->buf += "{\"type\":\"NMEA\",\"sentence\":\"" + sentence + "\"}\n";
         } else {
-            return; // the tidy CSV holds samples only
+            return; // the tidy CSV and MCAP hold samples only
         }
         written(out);
     }
@@ -190,6 +282,12 @@ public:
     bool failed() const { return m_failed; }
     bool finish()
     {
+        if (m_o.format == CaptureExporter::Format::Mcap) {
+            mcap(); // an empty range still gives a file (with the device's metadata)
+            if (m_mcap && m_mcap->isOpen() && !m_mcap->close())
+                mcapFailed();
+            return !m_failed;
+        }
         if (m_o.format != CaptureExporter::Format::VendorCsv && !m_single)
             output(QString(), nullptr); // an empty range still gives a file (with its header)
         for (auto &o : m_outputs) {
@@ -205,6 +303,10 @@ public:
     }
     void removeOutputs()
     {
+        if (m_mcap) {
+            m_mcap->abandon();
+            QFile::remove(m_o.output);
+        }
         for (auto &o : m_outputs) {
             o->file.close();
             QFile::remove(o->file.fileName());
@@ -232,9 +334,22 @@ private:
     std::map<QString, Output *> m_byType;
     Output *m_single = nullptr;
     bool m_failed = false;
+    std::unique_ptr<format::mcap::McapWriter> m_mcap;
+    std::unique_ptr<format::mcap::SampleChannels> m_mcapChannels;
 };
 
 } // namespace
+
+QString CaptureExporter::extension(Format format)
+{
+    switch (format) {
+    case Format::JsonLines: return QStringLiteral(".jsonl");
+    case Format::Mcap: return QStringLiteral(".mcap");
+    case Format::VendorCsv:
+    case Format::TidyCsv: break;
+    }
+    return QStringLiteral(".csv");
+}
 
 std::optional<CaptureExporter::Format> CaptureExporter::parseFormat(const QString &name)
 {
@@ -244,6 +359,8 @@ std::optional<CaptureExporter::Format> CaptureExporter::parseFormat(const QStrin
         return Format::TidyCsv;
     if (name == QLatin1String("jsonl"))
         return Format::JsonLines;
+    if (name == QLatin1String("mcap"))
+        return Format::Mcap;
     return std::nullopt;
 }
 
@@ -368,6 +485,7 @@ CaptureExporter::Result CaptureExporter::run(const QString &capturePath, const O
     CaptureDecoder decoder;
     decoder.configure(reader.header());
     sink.decoder = &decoder;
+    sink.header = &reader.header();
     CaptureReader::Chunk c;
     CaptureReader::Result res;
     bool first = true;
@@ -379,6 +497,8 @@ CaptureExporter::Result CaptureExporter::run(const QString &capturePath, const O
             continue;
         if (first) {
             sink.firstNs = c.monotonicNs;
+            // The capture's clock on the Unix epoch: the first chunk's wall time less its host time.
+            sink.epochOffsetNs = c.wallUs > 0 ? c.wallUs * 1000 - c.monotonicNs : 0;
             first = false;
         }
         const int64_t rel = c.monotonicNs - sink.firstNs;

@@ -1,5 +1,7 @@
 #pragma once
-// Exports a capture (or a time range of it) to vendor CSV, tidy CSV or JSON Lines
+// Exports a capture (or a time range of it) to vendor CSV, tidy CSV, JSON Lines or MCAP
+// (format/mcap: ROS 2 messages in CDR and a JSON channel per device, the device's identity as
+// metadata, its configuration snapshot as an attachment)
 // (README, "CSV layouts"), streaming: the capture is read chunk by chunk and the output
 // written in 1 MB blocks, so memory does not grow with the file. Progress is reported as
 // a fraction of the capture read; returning false from it cancels (the partial outputs
@@ -22,7 +24,7 @@ class CaptureExporter {
     Q_DECLARE_TR_FUNCTIONS(CaptureExporter)
 
 public:
-    enum class Format { VendorCsv, TidyCsv, JsonLines };
+    enum class Format { VendorCsv, TidyCsv, JsonLines, Mcap };
     struct Options {
         Format format = Format::TidyCsv;
         // Output file; for vendor CSV the stem of one file per frame type:
@@ -47,8 +49,10 @@ public:
     // capturePath: a capture, a vendor CSV or a raw byte dump (CaptureSource).
     static Result run(const QString &capturePath, const Options &options, const Progress &progress = {});
 
-    static std::optional<Format> parseFormat(const QString &name); // "vendor-csv", "csv", "jsonl"
+    static std::optional<Format> parseFormat(const QString &name); // "vendor-csv", "csv", "jsonl", "mcap"
     static QString vendorPath(const QString &output, const QString &type);
+    // ".csv", ".jsonl" or ".mcap": the default output's suffix.
+    static QString extension(Format format);
 
     // The tidy CSV: one header row, time_s from the device clock, SI units in the names. A
     // module set to NWU names its attitude columns so (roll_nwu_deg ... quat_nwu_z).

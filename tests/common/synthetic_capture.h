@@ -12,7 +12,9 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <map>
 #include <random>
+#include <string>
 #include <vector>
 
 namespace synthetic {
@@ -24,6 +26,8 @@ struct CaptureSpec {
     bool mixed = false;          // add HI81 and HI83 (every 10th frame) and RMC (every 100th)
     uint32_t seed = 1;
     int64_t t0Ns = 5'000'000'000; // host time of the first frame's start (the chunks' clock)
+    std::string serial;                          // device.serial in the header; empty: none
+    std::map<std::string, std::string> config;   // the header's configuration snapshot
 };
 
 inline imudesk::protocol::hipnuc::Hi91 hi91(uint64_t i, std::mt19937 &rng, double rateHz)
@@ -55,6 +59,9 @@ inline qint64 writeCapture(const QString &path, const CaptureSpec &spec)
     imudesk::record::CaptureHeader header;
     header.set(imudesk::record::CaptureHeader::kProduct, "HI14R3");
     header.set(imudesk::record::CaptureHeader::kBaud, "921600");
+    if (!spec.serial.empty())
+        header.set(imudesk::record::CaptureHeader::kSerial, spec.serial);
+    header.setConfig(spec.config);
     auto bytes = cap::encodeFileHeader(header);
     f.write(reinterpret_cast<const char *>(bytes.data()), qint64(bytes.size()));
     std::mt19937 rng(spec.seed);

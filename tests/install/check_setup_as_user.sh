@@ -34,6 +34,7 @@ stub cmake 'echo "cmake $*" >> '"$work"'/calls; for a in "$@"; do [ "$prev" = -B
 stub dpkg-deb 'echo "libc6"'
 stub cpack 'for a in "$@"; do case "$prev" in -B) mkdir -p "$a" && touch "$a/imudesk_0_amd64.deb";; esac; prev="$a"; done'
 stub lintian 'exit 0'
+stub npm 'echo "npm $*" >> '"$work"'/calls'
 # The suites pass, up to the last one (ThreadSanitizer's), which ends the run after the
 # fresh-root phase, which waits for the check and its safety test (they run beside fuzzing).
 stub ctest 'case "$*" in *"-L tsan"*) echo "ctest reached" >> '"$work"'/calls; exit 3;; esac; exit 0'

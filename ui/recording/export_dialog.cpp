@@ -31,6 +31,7 @@ ExportDialog::ExportDialog(const QString &capturePath, QWidget *parent) : QDialo
     m_format->addItem(tr("Vendor CSV (one file per frame type)"), int(Format::VendorCsv));
     m_format->addItem(tr("Tidy CSV (pandas, PlotJuggler)"), int(Format::TidyCsv));
     m_format->addItem(tr("JSON Lines"), int(Format::JsonLines));
+    m_format->addItem(tr("MCAP (ROS 2: PlotJuggler, Foxglove, Lichtblick)"), int(Format::Mcap));
     m_output = new QLineEdit(this);
     m_output->setObjectName(QStringLiteral("output"));
     m_from = new QDoubleSpinBox(this);
@@ -137,7 +138,7 @@ void ExportDialog::suggestOutput()
     const QFileInfo info(m_capture);
     const auto format = Format(m_format->currentData().toInt());
     m_output->setText(info.path() + QLatin1Char('/') + info.completeBaseName()
-                      + (format == Format::JsonLines ? QStringLiteral(".jsonl") : QStringLiteral(".csv")));
+                      + record::CaptureExporter::extension(format));
 }
 
 void ExportDialog::startExport()

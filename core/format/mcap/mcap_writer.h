@@ -1,0 +1,117 @@
+#pragma once
+// Writes an MCAP file (https://mcap.dev/spec, version 0 of the format, magic "\x89MCAP0\r\n"):
+// the header, schemas and channels, messages grouped in chunks (zstd-compressed or not) each
+// followed by its message indexes, attachments and metadata, then the data end, a summary
+// (schemas, channels, statistics, chunk, attachment and metadata indexes), the summary offsets
+// and the footer. Every CRC the format has is written (data section, chunks, attachments,
+// summary).
+//
+// A chunk closes when it holds chunkBytes of records or spans chunkSpanNs of log time, and is
+// then written out and flushed: a recording killed mid-run keeps every chunk closed before,
+// which a reader that streams the file (no summary) reads up to there.
+//
+// Plain value class over a QFile; not thread-safe. Every method after a failed write returns
+// false and error() says why (the disk full, the file gone).
+#include <QFile>
+#include <QString>
+
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace imudesk::format::mcap {
+
+class McapWriter {
+public:
+    enum class Compression { None, Zstd };
+    struct Options {
+        std::string profile = "ros2";  // the header's profile ("ros2": ROS 2 messages in CDR)
+        std::string library;           // the header's library ("ImuDesk 0.x")
+        Compression compression = Compression::Zstd;
+        size_t chunkBytes = 1u << 20;        // uncompressed records per chunk at most (about)
+        int64_t chunkSpanNs = 1'000'000'000; // a chunk never spans more log time than this
+    };
+    using StringMap = std::map<std::string, std::string>;
+
+    McapWriter() = default;
+    ~McapWriter();
+    McapWriter(const McapWriter &) = delete;
+    McapWriter &operator=(const McapWriter &) = delete;
+
+    bool open(const QString &path, const Options &options);
+    bool isOpen() const { return m_file.isOpen(); }
+    // Ids from 1; 0 on failure. A schema or channel is written at once, into the open chunk if
+    // there is one, before any message that uses it. The same schema, or the same channel, asked for again
+    // gives the id it has.
+    uint16_t addSchema(const std::string &name, const std::string &encoding, const std::string &data);
+    uint16_t addChannel(uint16_t schemaId, const std::string &topic, const std::string &messageEncoding,
+                        const StringMap &metadata = {});
+    // logTime, publishTime: ns (by convention since the Unix epoch).
+    bool write(uint16_t channelId, uint32_t sequence, uint64_t logTime, uint64_t publishTime, const void *data,
+               size_t size);
+    bool attach(const std::string &name, const std::string &mediaType, const std::string &data, uint64_t logTime,
+                uint64_t createTime);
+    bool addMetadata(const std::string &name, const StringMap &values);
+    // Closes the open chunk (if any) and flushes the file.
+    bool flush();
+    // Writes the summary and the footer and closes the file. Returns false (error()) when a
+    // write failed, now or before.
+    bool close();
+    // Closes the file as it stands, without a summary (what a crash leaves; tests).
+    void abandon();
+
+    const QString &error() const { return m_error; }
+    uint64_t messageCount() const { return m_messageCount; }
+    uint32_t chunkCount() const { return uint32_t(m_chunkIndexes.size()); }
+
+private:
+    struct Schema {
+        uint16_t id;
+        std::string name, encoding, data;
+    };
+    struct Channel {
+        uint16_t id, schemaId;
+        std::string topic, encoding;
+        StringMap metadata;
+    };
+    struct ChunkIndex {
+        uint64_t startTime, endTime, offset, length;
+        std::map<uint16_t, uint64_t> indexOffsets;
+        uint64_t indexLength, compressedSize, uncompressedSize;
+    };
+    struct AttachmentIndex {
+        uint64_t offset, length, logTime, createTime, dataSize;
+        std::string name, mediaType;
+    };
+    struct MetadataIndex {
+        uint64_t offset, length;
+        std::string name;
+    };
+
+    bool writeOut(const std::string &bytes); // to the file, counted in the data section's CRC
+    bool putRecord(uint8_t op, const std::string &content);
+    bool closeChunk();
+    bool failed(const QString &what);
+
+    QFile m_file;
+    Options m_options;
+    QString m_error;
+    bool m_failed = false;
+    uint64_t m_offset = 0;  // bytes written so far
+    uint32_t m_dataCrc = 0; // running CRC of the data section
+    std::vector<Schema> m_schemas;
+    std::vector<Channel> m_channels;
+    // The open chunk: its records, and per channel (log time, offset in the records).
+    std::string m_chunk;
+    std::map<uint16_t, std::vector<std::pair<uint64_t, uint64_t>>> m_chunkMessages;
+    uint64_t m_chunkStart = 0, m_chunkEnd = 0;
+    std::vector<ChunkIndex> m_chunkIndexes;
+    std::vector<AttachmentIndex> m_attachments;
+    std::vector<MetadataIndex> m_metadata;
+    std::map<uint16_t, uint64_t> m_channelCounts;
+    uint64_t m_messageCount = 0, m_firstTime = 0, m_lastTime = 0;
+    std::string m_compressed; // reused between chunks
+};
+
+} // namespace imudesk::format::mcap

@@ -1,0 +1,77 @@
+#pragma once
+// ROS 2 messages for MCAP files and the live bridge: their definitions as `ros2msg` schema text
+// (the message, then each type it uses after a line of '=' and "MSG: package/Type", as ros2 bag
+// and Foxglove write them) and their encoding in CDR (XCDR1, little-endian: the 4-byte
+// encapsulation header 00 01 00 00, then each field aligned to its own size counted from the end
+// of that header; strings as a uint32 length with the terminating NUL, then the bytes; fixed
+// arrays without a length, sequences with a uint32 count).
+//
+//   sensor_msgs/msg/Imu            orientation (the module's quaternion), angular velocity rad/s,
+//                                  linear acceleration m/s^2; a part the sample lacks has
+//                                  covariance[0] = -1 (ROS: "not available")
+//   sensor_msgs/msg/MagneticField  T (the module's uT x 1e-6)
+//   sensor_msgs/msg/FluidPressure  Pa
+//   sensor_msgs/msg/Temperature    degC
+//   sensor_msgs/msg/NavSatFix      deg, deg, m
+//   tf2_msgs/msg/TFMessage         the world frame to the module's frame, its attitude
+#include "model/sample.h"
+
+#include <cstdint>
+#include <string>
+
+namespace imudesk::format::mcap {
+
+class CdrWriter {
+public:
+    CdrWriter() { m_buf.assign("\x00\x01\x00\x00", 4); }
+    void u8(uint8_t v) { m_buf.push_back(char(v)); }
+    void i8(int8_t v) { m_buf.push_back(char(v)); }
+    void u16(uint16_t v) { put(&v, 2); }
+    void i32(int32_t v) { put(&v, 4); }
+    void u32(uint32_t v) { put(&v, 4); }
+    void f64(double v) { put(&v, 8); }
+    void str(const std::string &s)
+    {
+        u32(uint32_t(s.size() + 1));
+        m_buf += s;
+        m_buf.push_back('\0');
+    }
+    const std::string &data() const { return m_buf; }
+
+private:
+    void put(const void *v, size_t n)
+    {
+        while ((m_buf.size() - 4) % n != 0)
+            m_buf.push_back('\0');
+        m_buf.append(static_cast<const char *>(v), n); // little-endian host (static_assert in the .cpp)
+    }
+    std::string m_buf;
+};
+
+struct Ros2Type {
+    const char *name;       // "sensor_msgs/msg/Imu"
+    const char *definition; // the ros2msg schema text
+};
+const Ros2Type &imuType();
+const Ros2Type &magneticFieldType();
+const Ros2Type &fluidPressureType();
+const Ros2Type &temperatureType();
+const Ros2Type &navSatFixType();
+const Ros2Type &tfMessageType();
+
+// A header stamp from ns since the Unix epoch.
+struct Stamp {
+    int32_t sec = 0;
+    uint32_t nanosec = 0;
+    static Stamp fromNs(uint64_t ns) { return {int32_t(ns / 1'000'000'000u), uint32_t(ns % 1'000'000'000u)}; }
+};
+
+std::string encodeImu(const model::Sample &s, Stamp stamp, const std::string &frameId);
+std::string encodeMagneticField(const model::Sample &s, Stamp stamp, const std::string &frameId);
+std::string encodeFluidPressure(const model::Sample &s, Stamp stamp, const std::string &frameId);
+std::string encodeTemperature(const model::Sample &s, Stamp stamp, const std::string &frameId);
+std::string encodeNavSatFix(const model::Sample &s, Stamp stamp, const std::string &frameId);
+// One transform: worldFrame ("enu", "nwu") to frameId, rotated by the sample's quaternion.
+std::string encodeTf(const model::Sample &s, Stamp stamp, const std::string &worldFrame, const std::string &frameId);
+
+} // namespace imudesk::format::mcap
