@@ -1139,18 +1139,20 @@
 <context>
     <name>CaptureExporter</name>
     <message>
-        <location filename="../core/record/capture_exporter.cpp" line="+71"/>
+        <location filename="../core/record/capture_exporter.cpp" line="+85"/>
+        <location line="+69"/>
         <source>Cannot write %1: %2</source>
         <translation>无法写入 %1：%2</translation>
     </message>
     <message>
-        <location line="+129"/>
-        <location line="+24"/>
+        <location line="-8"/>
+        <location line="+152"/>
+        <location line="+28"/>
         <source>Writing %1 failed: %2. Check the free disk space.</source>
         <translation>写入 %1 失败：%2。请检查磁盘剩余空间。</translation>
     </message>
     <message>
-        <location line="+125"/>
+        <location line="+140"/>
         <source>No output file was given.</source>
         <translation>未指定输出文件。</translation>
     </message>
@@ -1165,7 +1167,7 @@
         <translation>模块以北西天（NWU）坐标系输出姿态（CONFIG IMU COORD 4）；厂商 CSV 的格式没有列可以注明：其中的角度和四元数均为 NWU。</translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+33"/>
         <source>Export cancelled.</source>
         <translation>导出已取消。</translation>
     </message>
@@ -9587,12 +9589,12 @@ Link load = bytes per second × 10 bits / baud rate.</source>
 <context>
     <name>imudesk::ui::ExportDialog</name>
     <message>
-        <location filename="../ui/recording/export_dialog.cpp" line="+106"/>
+        <location filename="../ui/recording/export_dialog.cpp" line="+107"/>
         <source>Export %1</source>
         <translation>导出 %1</translation>
     </message>
     <message>
-        <location line="-75"/>
+        <location line="-76"/>
         <source>Vendor CSV (one file per frame type)</source>
         <translation>厂商 CSV（每种帧类型一个文件）</translation>
     </message>
@@ -9620,6 +9622,11 @@ Link load = bytes per second × 10 bits / baud rate.</source>
         <location line="+1"/>
         <source>JSON Lines</source>
         <translation>JSON 行格式（JSONL）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>MCAP (ROS 2: PlotJuggler, Foxglove, Lichtblick)</source>
+        <translation>MCAP（ROS 2：PlotJuggler、Foxglove、Lichtblick）</translation>
     </message>
     <message>
         <location line="+7"/>
@@ -12315,29 +12322,29 @@ Default: %2</source>
     <name>imudesk::ui::ReplayControls</name>
     <message>
         <location filename="../ui/recording/replay_controls.cpp" line="+33"/>
-        <location line="+81"/>
+        <location line="+83"/>
         <location line="+28"/>
         <source>Play</source>
         <translation>播放</translation>
     </message>
     <message>
-        <location line="-104"/>
+        <location line="-106"/>
         <source>%1×</source>
         <translation>%1×</translation>
     </message>
     <message>
         <location line="+0"/>
-        <location line="+62"/>
+        <location line="+64"/>
         <source>As fast as possible</source>
         <translation>尽可能快</translation>
     </message>
     <message>
-        <location line="-57"/>
+        <location line="-59"/>
         <source>Loop</source>
         <translation>循环</translation>
     </message>
     <message>
-        <location line="+59"/>
+        <location line="+61"/>
         <source>Session: all devices together</source>
         <translation>会话：所有设备同步</translation>
     </message>
