@@ -11,6 +11,9 @@
 // folder), so that the figures are the exporter's and not the disk's: the vendor CSV of an
 // hour is about 820 MB, which a 100 MB/s disk alone needs 8 s to take.
 //
+// MCAP (issue 37) is measured against the vendor CSV of the same run: at least as fast, and the
+// file at most 30 % of its size.
+//
 // Exit status: 0 when each format meets the target and every frame was exported; 1 otherwise;
 // 2 on bad arguments.
 #include "../common/synthetic_capture.h"
@@ -152,7 +155,9 @@ int main(int argc, char **argv)
          base + QStringLiteral("_HI91.csv")},
         {"tidy CSV", record::CaptureExporter::Format::TidyCsv, base + QStringLiteral("_tidy.csv"),
          base + QStringLiteral("_tidy.csv")},
+        {"MCAP", record::CaptureExporter::Format::Mcap, base + QStringLiteral(".mcap"), base + QStringLiteral(".mcap")},
     };
+    double vendorSeconds = 0, vendorMb = 0;
     for (const Run &run : runs) {
         record::CaptureExporter::Options o;
         o.format = run.format;
@@ -166,6 +171,19 @@ int main(int argc, char **argv)
                     "%ld kB  target <= %.0f s: %s\n",
                     run.name, s, double(r.frames) / s, ref / s, double(QFileInfo(run.written).size()) / 1e6,
                     peakRssKb(), kTargetSeconds, met ? "met" : "MISSED");
+        const double mb = double(QFileInfo(run.written).size()) / 1e6;
+        if (run.format == record::CaptureExporter::Format::VendorCsv) {
+            vendorSeconds = s;
+            vendorMb = mb;
+        } else if (run.format == record::CaptureExporter::Format::Mcap) {
+            // r.frames counts samples (each is several messages).
+            const bool fast = s <= vendorSeconds, small = mb <= 0.30 * vendorMb;
+            ok = ok && fast && small;
+            std::printf("  MCAP against vendor CSV:     %.2fx its speed (target >= 1: %s), %.1f %% of its size (target "
+                        "<= 30 %%: %s)\n",
+                        vendorSeconds / s, fast ? "met" : "MISSED", 100.0 * mb / std::max(vendorMb, 1e-9),
+                        small ? "met" : "MISSED");
+        }
         if (!r.ok)
             std::printf("  error: %s\n", qPrintable(r.error));
         if (!keep)

@@ -34,6 +34,10 @@ std::string join(std::initializer_list<const char *> parts)
     return s;
 }
 
+// A value the module sent in single precision, scaled to SI: kept at that precision (the tidy CSV's
+// value exactly), which also leaves the double's low bits zero for the chunk's compression.
+double single(double v) { return double(float(v)); }
+
 void header(CdrWriter &w, Stamp stamp, const std::string &frameId)
 {
     w.i32(stamp.sec);
@@ -147,10 +151,10 @@ const Ros2Type &tfMessageType()
     return t;
 }
 
-std::string encodeImu(const model::Sample &s, Stamp stamp, const std::string &frameId)
+const std::string &encodeImu(CdrWriter &w, const model::Sample &s, Stamp stamp, const std::string &frameId)
 {
     using namespace model;
-    CdrWriter w;
+    w.reset();
     header(w, stamp, frameId);
     const bool q = s.has(FieldQuat), g = s.has(FieldGyr), a = s.has(FieldAcc);
     if (q) {
@@ -164,48 +168,48 @@ std::string encodeImu(const model::Sample &s, Stamp stamp, const std::string &fr
     }
     covariance(w, q);
     if (g)
-        vector3(w, s.gyr.x * kDegToRad, s.gyr.y * kDegToRad, s.gyr.z * kDegToRad);
+        vector3(w, single(s.gyr.x * kDegToRad), single(s.gyr.y * kDegToRad), single(s.gyr.z * kDegToRad));
     else
         vector3(w, 0, 0, 0);
     covariance(w, g);
     if (a)
-        vector3(w, s.acc.x * kGravity, s.acc.y * kGravity, s.acc.z * kGravity);
+        vector3(w, single(s.acc.x * kGravity), single(s.acc.y * kGravity), single(s.acc.z * kGravity));
     else
         vector3(w, 0, 0, 0);
     covariance(w, a);
     return w.data();
 }
 
-std::string encodeMagneticField(const model::Sample &s, Stamp stamp, const std::string &frameId)
+const std::string &encodeMagneticField(CdrWriter &w, const model::Sample &s, Stamp stamp, const std::string &frameId)
 {
-    CdrWriter w;
+    w.reset();
     header(w, stamp, frameId);
-    vector3(w, s.mag.x * 1e-6, s.mag.y * 1e-6, s.mag.z * 1e-6);
+    vector3(w, single(s.mag.x * 1e-6), single(s.mag.y * 1e-6), single(s.mag.z * 1e-6));
     covariance(w, true);
     return w.data();
 }
 
-std::string encodeFluidPressure(const model::Sample &s, Stamp stamp, const std::string &frameId)
+const std::string &encodeFluidPressure(CdrWriter &w, const model::Sample &s, Stamp stamp, const std::string &frameId)
 {
-    CdrWriter w;
+    w.reset();
     header(w, stamp, frameId);
     w.f64(s.pressurePa);
     w.f64(0);
     return w.data();
 }
 
-std::string encodeTemperature(const model::Sample &s, Stamp stamp, const std::string &frameId)
+const std::string &encodeTemperature(CdrWriter &w, const model::Sample &s, Stamp stamp, const std::string &frameId)
 {
-    CdrWriter w;
+    w.reset();
     header(w, stamp, frameId);
     w.f64(s.temperatureC);
     w.f64(0);
     return w.data();
 }
 
-std::string encodeNavSatFix(const model::Sample &s, Stamp stamp, const std::string &frameId)
+const std::string &encodeNavSatFix(CdrWriter &w, const model::Sample &s, Stamp stamp, const std::string &frameId)
 {
-    CdrWriter w;
+    w.reset();
     header(w, stamp, frameId);
     // NavSatStatus: a fix where the sample says so (or has no quality to say), GPS.
     w.i8(s.gnssQuality == 0 ? int8_t(-1) : int8_t(0));
@@ -219,9 +223,10 @@ std::string encodeNavSatFix(const model::Sample &s, Stamp stamp, const std::stri
     return w.data();
 }
 
-std::string encodeTf(const model::Sample &s, Stamp stamp, const std::string &worldFrame, const std::string &frameId)
+const std::string &encodeTf(CdrWriter &w, const model::Sample &s, Stamp stamp, const std::string &worldFrame,
+                            const std::string &frameId)
 {
-    CdrWriter w;
+    w.reset();
     w.u32(1); // one transform
     header(w, stamp, worldFrame);
     w.str(frameId);

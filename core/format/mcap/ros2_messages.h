@@ -6,6 +6,9 @@
 // of that header; strings as a uint32 length with the terminating NUL, then the bytes; fixed
 // arrays without a length, sequences with a uint32 count).
 //
+// Values the module sends in single precision are written as the double of the single-precision
+// SI value (what the tidy CSV holds).
+//
 //   sensor_msgs/msg/Imu            orientation (the module's quaternion), angular velocity rad/s,
 //                                  linear acceleration m/s^2; a part the sample lacks has
 //                                  covariance[0] = -1 (ROS: "not available")
@@ -23,7 +26,9 @@ namespace imudesk::format::mcap {
 
 class CdrWriter {
 public:
-    CdrWriter() { m_buf.assign("\x00\x01\x00\x00", 4); }
+    CdrWriter() { reset(); }
+    // Empty again (the encapsulation header only), keeping the buffer's memory.
+    void reset() { m_buf.assign("\x00\x01\x00\x00", 4); }
     void u8(uint8_t v) { m_buf.push_back(char(v)); }
     void i8(int8_t v) { m_buf.push_back(char(v)); }
     void u16(uint16_t v) { put(&v, 2); }
@@ -66,12 +71,14 @@ struct Stamp {
     static Stamp fromNs(uint64_t ns) { return {int32_t(ns / 1'000'000'000u), uint32_t(ns % 1'000'000'000u)}; }
 };
 
-std::string encodeImu(const model::Sample &s, Stamp stamp, const std::string &frameId);
-std::string encodeMagneticField(const model::Sample &s, Stamp stamp, const std::string &frameId);
-std::string encodeFluidPressure(const model::Sample &s, Stamp stamp, const std::string &frameId);
-std::string encodeTemperature(const model::Sample &s, Stamp stamp, const std::string &frameId);
-std::string encodeNavSatFix(const model::Sample &s, Stamp stamp, const std::string &frameId);
+// Each encodes into w (emptied first) and returns its data.
+const std::string &encodeImu(CdrWriter &w, const model::Sample &s, Stamp stamp, const std::string &frameId);
+const std::string &encodeMagneticField(CdrWriter &w, const model::Sample &s, Stamp stamp, const std::string &frameId);
+const std::string &encodeFluidPressure(CdrWriter &w, const model::Sample &s, Stamp stamp, const std::string &frameId);
+const std::string &encodeTemperature(CdrWriter &w, const model::Sample &s, Stamp stamp, const std::string &frameId);
+const std::string &encodeNavSatFix(CdrWriter &w, const model::Sample &s, Stamp stamp, const std::string &frameId);
 // One transform: worldFrame ("enu", "nwu") to frameId, rotated by the sample's quaternion.
-std::string encodeTf(const model::Sample &s, Stamp stamp, const std::string &worldFrame, const std::string &frameId);
+const std::string &encodeTf(CdrWriter &w, const model::Sample &s, Stamp stamp, const std::string &worldFrame,
+                            const std::string &frameId);
 
 } // namespace imudesk::format::mcap

@@ -14,6 +14,7 @@ constexpr const char *kStatusSchema = R"({"title":"imudesk/Sample","description"
 SampleChannels::SampleChannels(McapWriter &writer, Device device) : m_writer(writer), m_device(std::move(device))
 {
     m_prefix = "/imu/" + topicName(m_device.name) + "/";
+    m_world = m_device.worldFrame == model::WorldFrame::Nwu ? "nwu" : "enu";
 }
 
 std::string SampleChannels::topicName(const std::string &text)
@@ -36,7 +37,7 @@ SampleChannels::Channel *SampleChannels::channel(const std::string &topic, const
                                : 0;
     if (!id)
         return nullptr;
-    return &(m_channels[topic] = Channel{id, 0});
+    return &(m_channels[topic] = Channel{id, 0, 0});
 }
 
 SampleChannels::Channel *SampleChannels::jsonChannel()
@@ -49,17 +50,37 @@ SampleChannels::Channel *SampleChannels::jsonChannel()
     const uint16_t id = schema ? m_writer.addChannel(schema, topic, "json", m_device.metadata) : 0;
     if (!id)
         return nullptr;
-    return &(m_channels[topic] = Channel{id, 0});
+    return &(m_channels[topic] = Channel{id, 0, 0});
 }
 
-bool SampleChannels::put(Channel *c, const std::string &topic, const model::Sample &s, uint64_t logTime,
-                         uint64_t publishTime, const std::string &data)
+bool SampleChannels::put(Kind kind, const model::Sample &s, uint64_t logTime, uint64_t publishTime,
+                         std::string_view data)
 {
-    if (!c)
-        return false;
+    Channel *&c = m_byKind[kind];
+    if (!c) {
+        static const struct {
+            const char *suffix;
+            const Ros2Type &(*type)();
+        } kinds[] = {{"imu", imuType},           {"mag", magneticFieldType},   {"pressure", fluidPressureType},
+                     {"temperature", temperatureType}, {"fix", navSatFixType}, {"/tf", tfMessageType},
+                     {"status", nullptr}};
+        const auto &k = kinds[kind];
+        c = k.type ? channel(kind == Tf ? std::string(k.suffix) : m_prefix + k.suffix, k.type().name, k.type().definition)
+                   : jsonChannel();
+        if (!c)
+            return false;
+    }
     const uint32_t sequence = s.has(model::FieldDeviceTime) ? uint32_t(int64_t(s.deviceTimeMs)) : c->sequence++;
-    ++m_counts[topic];
+    ++c->count;
     return m_writer.write(c->id, sequence, logTime, publishTime, data.data(), data.size());
+}
+
+std::map<std::string, uint64_t> SampleChannels::counts() const
+{
+    std::map<std::string, uint64_t> out;
+    for (const auto &[topic, c] : m_channels)
+        out[topic] = c.count;
+    return out;
 }
 
 bool SampleChannels::write(const model::Sample &s, int64_t epochOffsetNs)
@@ -70,42 +91,27 @@ bool SampleChannels::write(const model::Sample &s, int64_t epochOffsetNs)
     const Stamp stamp = Stamp::fromNs(publishTime);
     const std::string &frame = m_device.frameId;
     bool ok = true;
-    if (s.fields & (FieldAcc | FieldGyr | FieldQuat)) {
-        const std::string topic = m_prefix + "imu";
-        ok = ok && put(channel(topic, imuType().name, imuType().definition), topic, s, logTime, publishTime,
-                       encodeImu(s, stamp, frame));
-    }
-    if (s.has(FieldMag)) {
-        const std::string topic = m_prefix + "mag";
-        ok = ok && put(channel(topic, magneticFieldType().name, magneticFieldType().definition), topic, s, logTime,
-                       publishTime, encodeMagneticField(s, stamp, frame));
-    }
-    if (s.has(FieldPressure)) {
-        const std::string topic = m_prefix + "pressure";
-        ok = ok && put(channel(topic, fluidPressureType().name, fluidPressureType().definition), topic, s, logTime,
-                       publishTime, encodeFluidPressure(s, stamp, frame));
-    }
-    if (s.has(FieldTemperature)) {
-        const std::string topic = m_prefix + "temperature";
-        ok = ok && put(channel(topic, temperatureType().name, temperatureType().definition), topic, s, logTime,
-                       publishTime, encodeTemperature(s, stamp, frame));
-    }
-    if (s.has(FieldPosition)) {
-        const std::string topic = m_prefix + "fix";
-        ok = ok && put(channel(topic, navSatFixType().name, navSatFixType().definition), topic, s, logTime,
-                       publishTime, encodeNavSatFix(s, stamp, frame));
-    }
-    if (s.has(FieldQuat)) {
-        const std::string world = m_device.worldFrame == WorldFrame::Nwu ? "nwu" : "enu";
-        ok = ok && put(channel("/tf", tfMessageType().name, tfMessageType().definition), "/tf", s, logTime,
-                       publishTime, encodeTf(s, stamp, world, frame));
+    if (s.fields & (FieldAcc | FieldGyr | FieldQuat))
+        ok = ok && put(Imu, s, logTime, publishTime, encodeImu(m_cdr, s, stamp, frame));
+    if (s.has(FieldMag))
+        ok = ok && put(Mag, s, logTime, publishTime, encodeMagneticField(m_cdr, s, stamp, frame));
+    if (s.has(FieldPressure))
+        ok = ok && put(Pressure, s, logTime, publishTime, encodeFluidPressure(m_cdr, s, stamp, frame));
+    if (s.has(FieldTemperature))
+        ok = ok && put(Temperature, s, logTime, publishTime, encodeTemperature(m_cdr, s, stamp, frame));
+    if (s.has(FieldPosition))
+        ok = ok && put(Fix, s, logTime, publishTime, encodeNavSatFix(m_cdr, s, stamp, frame));
+    // The 3D view's transform: 50 times a second is smooth, and a 1 kHz module's every sample
+    // would double the file for nothing the view shows.
+    if (s.has(FieldQuat) && (m_lastTf < 0 || s.hostTimeNs - m_lastTf >= kTfPeriodNs || s.hostTimeNs < m_lastTf)) {
+        m_lastTf = s.hostTimeNs;
+        ok = ok && put(Tf, s, logTime, publishTime, encodeTf(m_cdr, s, stamp, m_world, frame));
     }
     // The rest (what no ROS message holds): the same keys as the JSON Lines export, without the
     // quantities the messages above carry.
     model::Sample rest = s;
     rest.fields &= ~uint32_t(FieldAcc | FieldGyr | FieldMag | FieldQuat | FieldPressure | FieldTemperature | FieldPosition);
-    const std::string topic = m_prefix + "status";
-    ok = ok && put(jsonChannel(), topic, s, logTime, publishTime, sampleToJson(rest, m_device.worldFrame));
+    ok = ok && put(Status, s, logTime, publishTime, sampleToJson(rest, m_device.worldFrame));
     return ok;
 }
 

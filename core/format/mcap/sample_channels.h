@@ -9,18 +9,21 @@
 //   status       JSON (jsonschema)              what no ROS message holds, with the keys of the
 //                                               JSON Lines export: MAIN_STATUS, Euler angles,
 //                                               the HEC495's fields, the three times
-//   /tf          tf2_msgs/msg/TFMessage         the world frame to the device's frame
+//   /tf          tf2_msgs/msg/TFMessage         the world frame to the device's frame, at most
+//                                               50 times a second
 // A channel is added when the first sample that has its quantity arrives.
 //
 // Times: log_time is the sample's arrival, publish_time and header.stamp its common time (its
 // arrival where it has none), both on the Unix epoch (epochOffsetNs added to the host clock's
 // times). sequence: the device's time stamp (ms) where it has one, else a count per channel.
 #include "format/mcap/mcap_writer.h"
+#include "format/mcap/ros2_messages.h"
 #include "model/device_identity.h"
 #include "model/sample.h"
 
 #include <map>
 #include <string>
+#include <string_view>
 
 namespace imudesk::format::mcap {
 
@@ -39,24 +42,29 @@ public:
 
     bool write(const model::Sample &s, int64_t epochOffsetNs);
     // Messages written per topic.
-    const std::map<std::string, uint64_t> &counts() const { return m_counts; }
+    std::map<std::string, uint64_t> counts() const;
 
 private:
     struct Channel {
         uint16_t id = 0;
         uint32_t sequence = 0;
+        uint64_t count = 0;
     };
+    enum Kind { Imu, Mag, Pressure, Temperature, Fix, Tf, Status, KindCount };
     Channel *channel(const std::string &suffix, const char *type, const char *definition);
     Channel *jsonChannel();
-    bool put(Channel *c, const std::string &topic, const model::Sample &s, uint64_t logTime, uint64_t publishTime,
-             const std::string &data);
+    bool put(Kind kind, const model::Sample &s, uint64_t logTime, uint64_t publishTime, std::string_view data);
+    static constexpr int64_t kTfPeriodNs = 20'000'000;
 
     McapWriter &m_writer;
     Device m_device;
     std::string m_prefix;
     std::map<std::string, uint16_t> m_schemas; // by type name (shared by every device of the file)
-    std::map<std::string, Channel> m_channels; // by topic
-    std::map<std::string, uint64_t> m_counts;
+    std::map<std::string, Channel> m_channels; // by topic (a map: its elements stay where they are)
+    Channel *m_byKind[KindCount] = {};
+    std::string m_world;
+    CdrWriter m_cdr; // reused by every message
+    int64_t m_lastTf = -1;
 };
 
 } // namespace imudesk::format::mcap
