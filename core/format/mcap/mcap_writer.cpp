@@ -5,9 +5,13 @@
 #include <zstd.h>
 
 #include <algorithm>
+#include <bit>
+#include <cstring>
 #include <functional>
 
 namespace imudesk::format::mcap {
+
+static_assert(std::endian::native == std::endian::little, "message records are copied little-endian as they are");
 
 namespace {
 
@@ -78,6 +82,7 @@ McapWriter::~McapWriter()
 {
     if (m_file.isOpen())
         close();
+    ZSTD_freeCCtx(m_zstd);
 }
 
 bool McapWriter::failed(const QString &what)
@@ -180,13 +185,19 @@ bool McapWriter::write(uint16_t channelId, uint32_t sequence, uint64_t logTime, 
             return false;
     if (m_chunk.empty())
         m_chunkStart = m_chunkEnd = logTime;
+    if (channelId >= m_chunkMessages.size())
+        m_chunkMessages.resize(size_t(channelId) + 1);
     m_chunkMessages[channelId].emplace_back(logTime, m_chunk.size());
-    u8(m_chunk, OpMessage);
-    u64(m_chunk, 2 + 4 + 8 + 8 + size);
-    u16(m_chunk, channelId);
-    u32(m_chunk, sequence);
-    u64(m_chunk, logTime);
-    u64(m_chunk, publishTime);
+    // The record's fixed part in one piece (little-endian host: static_assert above).
+    char head[1 + 8 + 2 + 4 + 8 + 8];
+    const uint64_t length = 2 + 4 + 8 + 8 + size;
+    head[0] = char(OpMessage);
+    std::memcpy(head + 1, &length, 8);
+    std::memcpy(head + 9, &channelId, 2);
+    std::memcpy(head + 11, &sequence, 4);
+    std::memcpy(head + 15, &logTime, 8);
+    std::memcpy(head + 23, &publishTime, 8);
+    m_chunk.append(head, sizeof head);
     m_chunk.append(static_cast<const char *>(data), size);
     m_chunkStart = std::min(m_chunkStart, logTime);
     m_chunkEnd = std::max(m_chunkEnd, logTime);
@@ -197,7 +208,7 @@ bool McapWriter::write(uint16_t channelId, uint32_t sequence, uint64_t logTime, 
         m_lastTime = std::max(m_lastTime, logTime);
     }
     ++m_messageCount;
-    ++m_channelCounts[channelId];
+    ++m_channelCounts[channelId]; // a map, but one small enough
     return true;
 }
 
@@ -207,14 +218,21 @@ bool McapWriter::closeChunk()
         return false;
     if (m_chunk.empty())
         return true;
-    const uint32_t crc = record::crc32(0, m_chunk.data(), m_chunk.size());
     const bool zstd = m_options.compression == Compression::Zstd;
+    // A zstd chunk carries zstd's own checksum of its content (xxHash, a fraction of CRC-32's
+    // time); the chunk's CRC is then 0, "not computed" (the specification's word for it).
+    const uint32_t crc = zstd ? 0 : record::crc32(0, m_chunk.data(), m_chunk.size());
     const std::string *records = &m_chunk;
     if (zstd) {
+        if (!m_zstd) {
+            m_zstd = ZSTD_createCCtx();
+            // bench_export: levels -5 to 6 differ by a few % in size (the samples' noise is what
+            // does not compress), level 6 takes twice the time.
+            ZSTD_CCtx_setParameter(m_zstd, ZSTD_c_compressionLevel, 1);
+            ZSTD_CCtx_setParameter(m_zstd, ZSTD_c_checksumFlag, 1);
+        }
         m_compressed.resize(ZSTD_compressBound(m_chunk.size()));
-        // bench_export: levels -5 to 6 differ by a few % in size (the samples' noise is what
-        // does not compress), level 6 takes twice the time.
-        const size_t n = ZSTD_compress(m_compressed.data(), m_compressed.size(), m_chunk.data(), m_chunk.size(), 1);
+        const size_t n = ZSTD_compress2(m_zstd, m_compressed.data(), m_compressed.size(), m_chunk.data(), m_chunk.size());
         if (ZSTD_isError(n))
             return failed(QStringLiteral("zstd: %1").arg(QString::fromUtf8(ZSTD_getErrorName(n))));
         m_compressed.resize(n);
@@ -243,7 +261,10 @@ bool McapWriter::closeChunk()
     // The message indexes, one per channel with messages in the chunk, after it.
     uint64_t at = m_offset + out.size();
     const uint64_t indexesStart = at;
-    for (const auto &[channel, entries] : m_chunkMessages) {
+    for (uint16_t channel = 0; channel < m_chunkMessages.size(); ++channel) {
+        const auto &entries = m_chunkMessages[channel];
+        if (entries.empty())
+            continue;
         std::string content;
         u16(content, channel);
         u32(content, uint32_t(entries.size() * 16));
@@ -258,7 +279,8 @@ bool McapWriter::closeChunk()
     }
     index.indexLength = at - indexesStart;
     m_chunk.clear();
-    m_chunkMessages.clear();
+    for (auto &entries : m_chunkMessages)
+        entries.clear(); // their memory stays for the next chunk
     if (!writeOut(out))
         return false;
     m_chunkIndexes.push_back(std::move(index));

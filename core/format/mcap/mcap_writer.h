@@ -3,8 +3,8 @@
 // the header, schemas and channels, messages grouped in chunks (zstd-compressed or not) each
 // followed by its message indexes, attachments and metadata, then the data end, a summary
 // (schemas, channels, statistics, chunk, attachment and metadata indexes), the summary offsets
-// and the footer. Every CRC the format has is written (data section, chunks, attachments,
-// summary).
+// and the footer. Every CRC the format has is written (data section, attachments, summary;
+// a chunk's for uncompressed chunks, zstd's own content checksum in compressed ones).
 //
 // A chunk closes when it holds chunkBytes of records or spans chunkSpanNs of log time, and is
 // then written out and flushed: a recording killed mid-run keeps every chunk closed before,
@@ -14,6 +14,8 @@
 // false and error() says why (the disk full, the file gone).
 #include <QFile>
 #include <QString>
+
+struct ZSTD_CCtx_s; // zstd.h's compression context
 
 #include <cstdint>
 #include <map>
@@ -104,7 +106,7 @@ private:
     std::vector<Channel> m_channels;
     // The open chunk: its records, and per channel (log time, offset in the records).
     std::string m_chunk;
-    std::map<uint16_t, std::vector<std::pair<uint64_t, uint64_t>>> m_chunkMessages;
+    std::vector<std::vector<std::pair<uint64_t, uint64_t>>> m_chunkMessages; // by channel id
     uint64_t m_chunkStart = 0, m_chunkEnd = 0;
     std::vector<ChunkIndex> m_chunkIndexes;
     std::vector<AttachmentIndex> m_attachments;
@@ -112,6 +114,7 @@ private:
     std::map<uint16_t, uint64_t> m_channelCounts;
     uint64_t m_messageCount = 0, m_firstTime = 0, m_lastTime = 0;
     std::string m_compressed; // reused between chunks
+    ::ZSTD_CCtx_s *m_zstd = nullptr;
 };
 
 } // namespace imudesk::format::mcap

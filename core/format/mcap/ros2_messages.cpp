@@ -151,6 +151,23 @@ const Ros2Type &tfMessageType()
     return t;
 }
 
+const Ros2Type &vector3StampedType()
+{
+    static const std::string def = join({"std_msgs/Header header\n"
+                                         "geometry_msgs/Vector3 vector\n",
+                                         kHeaderDeps, kVector3});
+    static const Ros2Type t{"geometry_msgs/msg/Vector3Stamped", def.c_str()};
+    return t;
+}
+
+const std::string &encodeEuler(CdrWriter &w, const model::Sample &s, Stamp stamp, const std::string &frameId)
+{
+    w.reset();
+    header(w, stamp, frameId);
+    vector3(w, single(s.roll), single(s.pitch), single(s.yaw));
+    return w.data();
+}
+
 const std::string &encodeImu(CdrWriter &w, const model::Sample &s, Stamp stamp, const std::string &frameId)
 {
     using namespace model;

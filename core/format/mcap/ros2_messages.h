@@ -17,6 +17,7 @@
 //   sensor_msgs/msg/Temperature    degC
 //   sensor_msgs/msg/NavSatFix      deg, deg, m
 //   tf2_msgs/msg/TFMessage         the world frame to the module's frame, its attitude
+//   geometry_msgs/msg/Vector3Stamped  the Euler angles in deg (x roll, y pitch, z yaw)
 #include "model/sample.h"
 
 #include <cstdint>
@@ -63,6 +64,7 @@ const Ros2Type &fluidPressureType();
 const Ros2Type &temperatureType();
 const Ros2Type &navSatFixType();
 const Ros2Type &tfMessageType();
+const Ros2Type &vector3StampedType();
 
 // A header stamp from ns since the Unix epoch.
 struct Stamp {
@@ -77,6 +79,8 @@ const std::string &encodeMagneticField(CdrWriter &w, const model::Sample &s, Sta
 const std::string &encodeFluidPressure(CdrWriter &w, const model::Sample &s, Stamp stamp, const std::string &frameId);
 const std::string &encodeTemperature(CdrWriter &w, const model::Sample &s, Stamp stamp, const std::string &frameId);
 const std::string &encodeNavSatFix(CdrWriter &w, const model::Sample &s, Stamp stamp, const std::string &frameId);
+// The Euler angles (deg) as geometry_msgs/msg/Vector3Stamped: x roll, y pitch, z yaw.
+const std::string &encodeEuler(CdrWriter &w, const model::Sample &s, Stamp stamp, const std::string &frameId);
 // One transform: worldFrame ("enu", "nwu") to frameId, rotated by the sample's quaternion.
 const std::string &encodeTf(CdrWriter &w, const model::Sample &s, Stamp stamp, const std::string &worldFrame,
                             const std::string &frameId);

@@ -8,7 +8,7 @@ namespace imudesk::format::mcap {
 namespace {
 // The JSON channel's schema: an object per sample; the keys are the JSON Lines export's
 // (README, "JSON Lines"), each present only when the sample has the quantity.
-constexpr const char *kStatusSchema = R"({"title":"imudesk/Sample","description":"What of a sample no ROS message holds, with the keys of ImuDesk's JSON Lines export: main_status, Euler angles (deg), the HEC495's fields, system_time, host_time_ns, common_time_ns, common_uncertainty_ns.","type":"object"})";
+constexpr const char *kStatusSchema = R"({"title":"imudesk/Sample","description":"What of a sample no ROS message holds, with the keys of ImuDesk's JSON Lines export: main_status, the HEC495's and GNSS fields, system_time, host_time_ns, common_time_ns, common_uncertainty_ns.","type":"object"})";
 } // namespace
 
 SampleChannels::SampleChannels(McapWriter &writer, Device device) : m_writer(writer), m_device(std::move(device))
@@ -63,7 +63,7 @@ bool SampleChannels::put(Kind kind, const model::Sample &s, uint64_t logTime, ui
             const Ros2Type &(*type)();
         } kinds[] = {{"imu", imuType},           {"mag", magneticFieldType},   {"pressure", fluidPressureType},
                      {"temperature", temperatureType}, {"fix", navSatFixType}, {"/tf", tfMessageType},
-                     {"status", nullptr}};
+                     {"euler", vector3StampedType}, {"status", nullptr}};
         const auto &k = kinds[kind];
         c = k.type ? channel(kind == Tf ? std::string(k.suffix) : m_prefix + k.suffix, k.type().name, k.type().definition)
                    : jsonChannel();
@@ -107,11 +107,25 @@ bool SampleChannels::write(const model::Sample &s, int64_t epochOffsetNs)
         m_lastTf = s.hostTimeNs;
         ok = ok && put(Tf, s, logTime, publishTime, encodeTf(m_cdr, s, stamp, m_world, frame));
     }
-    // The rest (what no ROS message holds): the same keys as the JSON Lines export, without the
-    // quantities the messages above carry.
+    if (s.has(FieldEuler))
+        ok = ok && put(Euler, s, logTime, publishTime, encodeEuler(m_cdr, s, stamp, frame));
+    // The rest (what no ROS message holds), with the JSON Lines export's keys: at once when it
+    // holds more than the status word and the device's time stamp, or the status word changed;
+    // else ten times a second.
     model::Sample rest = s;
-    rest.fields &= ~uint32_t(FieldAcc | FieldGyr | FieldMag | FieldQuat | FieldPressure | FieldTemperature | FieldPosition);
-    ok = ok && put(Status, s, logTime, publishTime, sampleToJson(rest, m_device.worldFrame));
+    rest.fields &= ~uint32_t(FieldAcc | FieldGyr | FieldMag | FieldQuat | FieldPressure | FieldTemperature
+                             | FieldPosition | FieldEuler);
+    const bool more = (rest.fields & ~uint32_t(FieldMainStatus | FieldDeviceTime)) != 0;
+    const bool changed = s.has(FieldMainStatus) && (!m_haveStatus || s.mainStatus != m_lastStatus);
+    if (more || changed || m_lastStatusNs < 0 || s.hostTimeNs - m_lastStatusNs >= kStatusPeriodNs
+        || s.hostTimeNs < m_lastStatusNs) {
+        m_lastStatusNs = s.hostTimeNs;
+        if (s.has(FieldMainStatus)) {
+            m_lastStatus = s.mainStatus;
+            m_haveStatus = true;
+        }
+        ok = ok && put(Status, s, logTime, publishTime, sampleToJson(rest, m_device.worldFrame));
+    }
     return ok;
 }
 

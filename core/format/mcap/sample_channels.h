@@ -6,9 +6,12 @@
 //   pressure     sensor_msgs/msg/FluidPressure
 //   temperature  sensor_msgs/msg/Temperature
 //   fix          sensor_msgs/msg/NavSatFix      GNSS position
+//   euler        geometry_msgs/msg/Vector3Stamped  roll, pitch, yaw in deg (x, y, z)
 //   status       JSON (jsonschema)              what no ROS message holds, with the keys of the
-//                                               JSON Lines export: MAIN_STATUS, Euler angles,
-//                                               the HEC495's fields, the three times
+//                                               JSON Lines export: MAIN_STATUS, the HEC495's and
+//                                               GNSS fields, the three times; at once when the
+//                                               status word changes or the sample has more, else
+//                                               ten times a second
 //   /tf          tf2_msgs/msg/TFMessage         the world frame to the device's frame, at most
 //                                               50 times a second
 // A channel is added when the first sample that has its quantity arrives.
@@ -50,11 +53,12 @@ private:
         uint32_t sequence = 0;
         uint64_t count = 0;
     };
-    enum Kind { Imu, Mag, Pressure, Temperature, Fix, Tf, Status, KindCount };
+    enum Kind { Imu, Mag, Pressure, Temperature, Fix, Tf, Euler, Status, KindCount };
     Channel *channel(const std::string &suffix, const char *type, const char *definition);
     Channel *jsonChannel();
     bool put(Kind kind, const model::Sample &s, uint64_t logTime, uint64_t publishTime, std::string_view data);
     static constexpr int64_t kTfPeriodNs = 20'000'000;
+    static constexpr int64_t kStatusPeriodNs = 100'000'000;
 
     McapWriter &m_writer;
     Device m_device;
@@ -65,6 +69,9 @@ private:
     std::string m_world;
     CdrWriter m_cdr; // reused by every message
     int64_t m_lastTf = -1;
+    int64_t m_lastStatusNs = -1;
+    uint16_t m_lastStatus = 0;
+    bool m_haveStatus = false;
 };
 
 } // namespace imudesk::format::mcap
