@@ -1139,20 +1139,27 @@
 <context>
     <name>CaptureExporter</name>
     <message>
-        <location filename="../core/record/capture_exporter.cpp" line="+85"/>
+        <location filename="../core/record/capture_exporter.cpp" line="+86"/>
         <location line="+69"/>
+        <location line="+146"/>
+        <location line="+6"/>
         <source>Cannot write %1: %2</source>
         <translation>无法写入 %1：%2</translation>
     </message>
     <message>
-        <location line="-8"/>
-        <location line="+152"/>
+        <location line="-160"/>
+        <location line="+189"/>
         <location line="+28"/>
         <source>Writing %1 failed: %2. Check the free disk space.</source>
         <translation>写入 %1 失败：%2。请检查磁盘剩余空间。</translation>
     </message>
     <message>
-        <location line="+140"/>
+        <location line="-44"/>
+        <source>The capture holds %1 frame types; the vendor layout has a file for each: %2</source>
+        <translation>该记录含有 %1 种帧类型；厂商格式为每种各写一个文件：%2</translation>
+    </message>
+    <message>
+        <location line="+184"/>
         <source>No output file was given.</source>
         <translation>未指定输出文件。</translation>
     </message>
@@ -9594,12 +9601,7 @@ Link load = bytes per second × 10 bits / baud rate.</source>
         <translation>导出 %1</translation>
     </message>
     <message>
-        <location line="-76"/>
-        <source>Vendor CSV (one file per frame type)</source>
-        <translation>厂商 CSV（每种帧类型一个文件）</translation>
-    </message>
-    <message>
-        <location line="-6"/>
+        <location line="-82"/>
         <source>The capture to export: a recording, a vendor CSV or a raw byte dump</source>
         <translation>要导出的捕获：录制文件、厂商 CSV 或原始字节转储</translation>
     </message>
@@ -9614,7 +9616,12 @@ Link load = bytes per second × 10 bits / baud rate.</source>
         <translation>导出另一个捕获</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+3"/>
+        <source>Vendor CSV (the vendor tool&apos;s layout; a file per frame type when there are several)</source>
+        <translation>厂商 CSV（厂商工具的格式；有多种帧类型时每种一个文件）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>Tidy CSV (pandas, PlotJuggler)</source>
         <translation>整洁 CSV（适用于 pandas、PlotJuggler）</translation>
     </message>

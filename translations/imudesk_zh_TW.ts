@@ -1139,20 +1139,27 @@
 <context>
     <name>CaptureExporter</name>
     <message>
-        <location filename="../core/record/capture_exporter.cpp" line="+85"/>
+        <location filename="../core/record/capture_exporter.cpp" line="+86"/>
         <location line="+69"/>
+        <location line="+146"/>
+        <location line="+6"/>
         <source>Cannot write %1: %2</source>
         <translation>無法寫入 %1：%2</translation>
     </message>
     <message>
-        <location line="-8"/>
-        <location line="+152"/>
+        <location line="-160"/>
+        <location line="+189"/>
         <location line="+28"/>
         <source>Writing %1 failed: %2. Check the free disk space.</source>
         <translation>寫入 %1 失敗：%2。請檢查可用磁碟空間。</translation>
     </message>
     <message>
-        <location line="+140"/>
+        <location line="-44"/>
+        <source>The capture holds %1 frame types; the vendor layout has a file for each: %2</source>
+        <translation>該記錄含有 %1 種幀類型；廠商格式為每種各寫一個檔案：%2</translation>
+    </message>
+    <message>
+        <location line="+184"/>
         <source>No output file was given.</source>
         <translation>未指定輸出檔案。</translation>
     </message>
@@ -9594,12 +9601,7 @@ Link load = bytes per second × 10 bits / baud rate.</source>
         <translation>匯出 %1</translation>
     </message>
     <message>
-        <location line="-76"/>
-        <source>Vendor CSV (one file per frame type)</source>
-        <translation>原廠 CSV（每種幀類型一個檔案）</translation>
-    </message>
-    <message>
-        <location line="-6"/>
+        <location line="-82"/>
         <source>The capture to export: a recording, a vendor CSV or a raw byte dump</source>
         <translation>要匯出的擷取：錄製檔、廠商 CSV 或原始位元組傾印</translation>
     </message>
@@ -9614,7 +9616,12 @@ Link load = bytes per second × 10 bits / baud rate.</source>
         <translation>匯出另一個擷取</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+3"/>
+        <source>Vendor CSV (the vendor tool&apos;s layout; a file per frame type when there are several)</source>
+        <translation>廠商 CSV（廠商工具的格式；有多種幀類型時每種一個檔案）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>Tidy CSV (pandas, PlotJuggler)</source>
         <translation>整潔 CSV（適用 pandas、PlotJuggler）</translation>
     </message>

@@ -15,6 +15,7 @@
 #include <QFileInfo>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QRegularExpression>
 
 #include <map>
 #include <memory>
@@ -176,8 +177,16 @@ public:
         auto it = m_byType.find(type);
         if (it != m_byType.end())
             return it->second;
+        // Written where it is told: one frame type goes to the output as named; a second one
+        // moves the first to OUT_<type>.csv and goes to its own OUT_<type>.csv (finish() says so).
         Output *out = nullptr;
-        open(CaptureExporter::vendorPath(m_o.output, type), header, out);
+        if (m_byType.empty()) {
+            open(m_o.output, header, out);
+        } else {
+            if (m_byType.size() == 1 && !moveFirstAside())
+                return nullptr;
+            open(CaptureExporter::vendorPath(m_o.output, type), header, out);
+        }
         m_byType[type] = out;
         return out;
     }
@@ -279,9 +288,38 @@ public:
         written(out);
     }
 
+    // The first frame type's file, written as the output's name, becomes OUT_<type>.csv.
+    bool moveFirstAside()
+    {
+        const auto &[type, first] = *m_byType.begin();
+        const QString to = CaptureExporter::vendorPath(m_o.output, type);
+        first->flush();
+        first->file.close();
+        QFile::remove(to);
+        if (first->failed || !QFile::rename(m_o.output, to)) {
+            m_failed = true;
+            m_r.error = CaptureExporter::tr("Cannot write %1: %2").arg(to, first->file.errorString());
+            return false;
+        }
+        first->file.setFileName(to);
+        if (!first->file.open(QIODevice::WriteOnly | QIODevice::Append)) {
+            m_failed = true;
+            m_r.error = CaptureExporter::tr("Cannot write %1: %2").arg(to, first->file.errorString());
+            return false;
+        }
+        m_r.files.replaceInStrings(QRegularExpression(QStringLiteral("^") + QRegularExpression::escape(m_o.output)
+                                                      + QStringLiteral("$")),
+                                   to);
+        return true;
+    }
+
     bool failed() const { return m_failed; }
     bool finish()
     {
+        if (m_o.format == CaptureExporter::Format::VendorCsv && m_byType.size() > 1)
+            m_r.notes << CaptureExporter::tr("The capture holds %1 frame types; the vendor layout has a file for each: %2")
+                             .arg(m_byType.size())
+                             .arg(m_r.files.join(QStringLiteral(", ")));
         if (m_o.format == CaptureExporter::Format::Mcap) {
             mcap(); // an empty range still gives a file (with the device's metadata)
             if (m_mcap && m_mcap->isOpen() && !m_mcap->close())

@@ -27,8 +27,9 @@ public:
     enum class Format { VendorCsv, TidyCsv, JsonLines, Mcap };
     struct Options {
         Format format = Format::TidyCsv;
-        // Output file; for vendor CSV the stem of one file per frame type:
-        // run.csv -> run_HI91.csv, run_HI81.csv, run_HI83.csv, run_NMEA.txt.
+        // Output file. Vendor CSV has a layout per frame type: a capture of one type goes to this
+        // file, one of several to a file per type, run.csv -> run_HI91.csv, run_HI81.csv,
+        // run_HI83.csv, run_NMEA.txt (Result::notes says so, Result::files names them).
         QString output;
         double fromS = 0;                                     // seconds since the recording started
         double toS = std::numeric_limits<double>::infinity(); // inclusive

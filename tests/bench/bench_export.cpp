@@ -152,7 +152,7 @@ int main(int argc, char **argv)
     };
     const Run runs[] = {
         {"vendor CSV", record::CaptureExporter::Format::VendorCsv, base + QStringLiteral(".csv"),
-         base + QStringLiteral("_HI91.csv")},
+         base + QStringLiteral(".csv")}, // HI91 alone: the file named
         {"tidy CSV", record::CaptureExporter::Format::TidyCsv, base + QStringLiteral("_tidy.csv"),
          base + QStringLiteral("_tidy.csv")},
         {"MCAP", record::CaptureExporter::Format::Mcap, base + QStringLiteral(".mcap"), base + QStringLiteral(".mcap")},

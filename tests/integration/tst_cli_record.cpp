@@ -90,7 +90,8 @@ private Q_SLOTS:
         QTest::addColumn<QString>("format");
         QTest::addColumn<QString>("file");
         QTest::addColumn<QString>("firstLineStart");
-        QTest::newRow("vendor-csv") << "vendor-csv" << "v_HI91.csv" << "HI91,pc_counter,sys_time,";
+        // One frame type: the vendor layout goes to the file named (no _HI91 suffix).
+        QTest::newRow("vendor-csv") << "vendor-csv" << "vendor.csv" << "HI91,pc_counter,sys_time,";
         QTest::newRow("csv") << "csv" << "v.csv" << "time_s,";
         QTest::newRow("jsonl") << "jsonl" << "v.jsonl" << "{\"type\":\"HI91\"";
     }
@@ -99,7 +100,7 @@ private Q_SLOTS:
         QFETCH(QString, format);
         QFETCH(QString, file);
         QFETCH(QString, firstLineStart);
-        const QString out = m_dir.filePath(file.startsWith(QLatin1String("v_")) ? QStringLiteral("v.csv") : file);
+        const QString out = m_dir.filePath(file);
         const auto r = run({"export", m_capture, "--format", format, "-o", out, "--from", "0.5", "--to", "1.5"});
         QVERIFY2(r.code == 0, qPrintable(r.err));
         QFile f(m_dir.filePath(file));
@@ -119,7 +120,7 @@ private Q_SLOTS:
 
     void analyzeJson()
     {
-        for (const QString &input : {m_capture, m_dir.filePath(QStringLiteral("v_HI91.csv"))}) {
+        for (const QString &input : {m_capture, m_dir.filePath(QStringLiteral("vendor.csv"))}) {
             const auto r = run({"analyze", input, "--json", "--tau-max", "10"});
             QVERIFY2(r.code == 0, qPrintable(r.err));
             const auto o = QJsonDocument::fromJson(r.out.toUtf8()).object();
@@ -134,7 +135,7 @@ private Q_SLOTS:
 
     void importVendorCsv()
     {
-        const QString csv = m_dir.filePath(QStringLiteral("v_HI91.csv"));
+        const QString csv = m_dir.filePath(QStringLiteral("vendor.csv"));
         const QString cap = m_dir.filePath(QStringLiteral("imported.imucap"));
         const auto r = run({"import", csv, "-o", cap});
         QVERIFY2(r.code == 0, qPrintable(r.err));

@@ -60,7 +60,7 @@ private Q_SLOTS:
         QTest::addColumn<QString>("file");
         QTest::addColumn<double>("to");
         QTest::addColumn<int>("lines");
-        QTest::newRow("vendor csv") << int(Format::VendorCsv) << "out_HI91.csv" << -1.0 << 2001;
+        QTest::newRow("vendor csv") << int(Format::VendorCsv) << "out.csv" << -1.0 << 2001; // one frame type: the file named
         QTest::newRow("tidy csv, first second") << int(Format::TidyCsv) << "out.csv" << 1.0 << 1009;
         QTest::newRow("json lines") << int(Format::JsonLines) << "out.csv" << -1.0 << 2000;
     }

@@ -61,7 +61,7 @@ const QSet<QString> &keptWords()
         QStringLiteral("device"), QStringLiteral("product"), QStringLiteral("serial"), QStringLiteral("date"), QStringLiteral("time"),
         QStringLiteral("Ctrl"), QStringLiteral("Shift"), QStringLiteral("Alt"), QStringLiteral("Pause"), QStringLiteral("ttyS"),
         QStringLiteral("Linux"), QStringLiteral("socketcan"), QStringLiteral("peakcan"), QStringLiteral("can"),
-        QStringLiteral("kbit"), QStringLiteral("Mbit"), QStringLiteral("bit"), QStringLiteral("pandas"), QStringLiteral("PlotJuggler"),
+        QStringLiteral("kbit"), QStringLiteral("Mbit"), QStringLiteral("bit"), QStringLiteral("pandas"), QStringLiteral("PlotJuggler"), QStringLiteral("Foxglove"), QStringLiteral("Lichtblick"),
         QStringLiteral("Intel"), QStringLiteral("dialout"), QStringLiteral("KiB"), QStringLiteral("MiB"),
         QStringLiteral("GiB"), QStringLiteral("udev"), QStringLiteral("usermod"), QStringLiteral("sudo"),
         QStringLiteral("USER"), QStringLiteral("rules"), QStringLiteral("FitErr"), QStringLiteral("imucap"),

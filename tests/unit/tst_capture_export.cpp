@@ -12,6 +12,7 @@
 #include "record/vendor_csv_importer.h"
 
 #include <QBuffer>
+#include <QSet>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -115,6 +116,36 @@ private Q_SLOTS:
         const QStringList nmea = lines(m_dir.filePath(QStringLiteral("vendor_NMEA.txt")));
         QCOMPARE(nmea.size(), 30);
         QCOMPARE(nmea.front(), QString::fromLatin1(golden_rmc()));
+    }
+
+    // Written where it is told (issue 37): one frame type goes to the file named; several to a
+    // file each, which the result names and a note explains.
+    void vendorCsvWritesWhereItIsTold()
+    {
+        const QString single = m_dir.filePath(QStringLiteral("hi91_only.imucap"));
+        synthetic::CaptureSpec spec;
+        spec.frames = 500;
+        QVERIFY(synthetic::writeCapture(single, spec) > 0);
+        CaptureExporter::Options o;
+        o.format = CaptureExporter::Format::VendorCsv;
+        o.output = m_dir.filePath(QStringLiteral("one.csv"));
+        auto r = CaptureExporter::run(single, o);
+        QVERIFY2(r.ok, qPrintable(r.error));
+        QCOMPARE(r.files, QStringList{o.output});
+        QVERIFY(r.notes.isEmpty());
+        QCOMPARE(lines(o.output).size(), 501);
+        QVERIFY(!QFile::exists(m_dir.filePath(QStringLiteral("one_HI91.csv"))));
+        o.output = m_dir.filePath(QStringLiteral("several.csv"));
+        r = CaptureExporter::run(m_capture, o);
+        QVERIFY2(r.ok, qPrintable(r.error));
+        const QStringList want{m_dir.filePath(QStringLiteral("several_HI91.csv")), m_dir.filePath(QStringLiteral("several_HI81.csv")),
+                               m_dir.filePath(QStringLiteral("several_HI83.csv")), m_dir.filePath(QStringLiteral("several_NMEA.txt"))};
+        QCOMPARE(QSet<QString>(r.files.begin(), r.files.end()), QSet<QString>(want.begin(), want.end()));
+        QVERIFY(!QFile::exists(o.output));
+        QCOMPARE(lines(want[0]).size(), 3001); // the first type's rows, moved aside whole
+        QCOMPARE(r.notes.size(), 1);
+        QVERIFY2(r.notes.front().contains(QStringLiteral("4 frame types")) && r.notes.front().contains(want[1]),
+                 qPrintable(r.notes.front()));
     }
 
     void vendorCsvReimportsToSameValues()

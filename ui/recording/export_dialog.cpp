@@ -28,7 +28,7 @@ ExportDialog::ExportDialog(const QString &capturePath, QWidget *parent) : QDialo
     m_chooseCapture->setToolTip(tr("Export another capture"));
     m_format = new QComboBox(this);
     m_format->setObjectName(QStringLiteral("format"));
-    m_format->addItem(tr("Vendor CSV (one file per frame type)"), int(Format::VendorCsv));
+    m_format->addItem(tr("Vendor CSV (the vendor tool's layout; a file per frame type when there are several)"), int(Format::VendorCsv));
     m_format->addItem(tr("Tidy CSV (pandas, PlotJuggler)"), int(Format::TidyCsv));
     m_format->addItem(tr("JSON Lines"), int(Format::JsonLines));
     m_format->addItem(tr("MCAP (ROS 2: PlotJuggler, Foxglove, Lichtblick)"), int(Format::Mcap));
