@@ -4,6 +4,7 @@
 #include "device/link_opener.h"
 #include "protocol/can/can_decoder.h"
 #include "protocol/hipnuc/ascii_command.h"
+#include "record/mcap_recording.h"
 #include "record/capture_header.h"
 
 #include <QCoreApplication>
@@ -221,7 +222,7 @@ int cmdRecord(const QStringList &args)
 {
     QCommandLineParser p;
     p.addOption(QCommandLineOption({QStringLiteral("o"), QStringLiteral("output")},
-                                   QStringLiteral("Capture file to write (e.g. run.imucap)."), QStringLiteral("FILE")));
+                                   QStringLiteral("Capture file to write (e.g. run.imucap; a name ending in .mcap records MCAP: ROS 2 messages that PlotJuggler, Foxglove and Lichtblick open)."), QStringLiteral("FILE")));
     p.addOption(QCommandLineOption(QStringLiteral("duration"),
                                    QStringLiteral("Seconds to record (default: until Ctrl+C)."), QStringLiteral("S")));
     p.addOption(QCommandLineOption(QStringLiteral("baud"), QStringLiteral("Baud rate (default: auto-detect)."),
@@ -288,6 +289,8 @@ int cmdRecord(const QStringList &args)
     if (reply && reply->ok())
         extra.setConfig(reply->values);
 
+    if (record::McapRecording::isMcapPath(path) && (splitMb > 0 || splitMinutes > 0))
+        return fail(QStringLiteral("--split-mb and --split-minutes are for captures (.imucap), not MCAP"), ExitUsage);
     record::CaptureWriter::Options options;
     options.splitBytes = int64_t(splitMb * 1024 * 1024);
     options.splitSeconds = int64_t(splitMinutes * 60);

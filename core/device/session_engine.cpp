@@ -1,5 +1,7 @@
 #include "session_engine.h"
 
+#include "record/mcap_recording.h"
+
 #include "device/host_clock.h"
 #include "device/stream_counters.h"
 #include "io/reading_priority.h"
@@ -129,7 +131,7 @@ void SessionEngine::stopActivity(const QString &why)
     m_reconnector.stop();
     m_idleTimer.stop();
     cancelAll(RequestStatus::Cancelled, why);
-    if (m_recorder)
+    if (m_recorder || m_mcap)
         finishRecording(QString());
 }
 
@@ -250,8 +252,14 @@ void SessionEngine::onLineIdle()
 
 void SessionEngine::appendSamples(std::vector<model::Sample> &batch)
 {
-    if (!batch.empty())
-        m_store.append(batch); // the views read the store on their clock
+    if (batch.empty())
+        return;
+    // A live MCAP recording takes the samples as they come (a capture records the bytes instead).
+    if (m_mcap && !m_mcap->append(batch)) {
+        const QString why = tr("Recording to %1 stopped: %2. Check the free disk space.").arg(m_mcapPath, m_mcap->error());
+        QMetaObject::invokeMethod(this, [this, why] { finishRecording(why); }, Qt::QueuedConnection);
+    }
+    m_store.append(batch); // the views read the store on their clock
 }
 
 // ---------------------------------------------------------------------------------------
@@ -391,6 +399,8 @@ void SessionEngine::cancelAll(RequestStatus status, const QString &why)
 
 uint64_t SessionEngine::recordedFrames() const
 {
+    if (m_mcap)
+        return m_mcap->samples();
     if (m_recordedDecoder.can())
         return m_recordedDecoder.canCounters().frames;
     return m_recordedDecoder.witlink() ? m_recordedDecoder.witlinkCounters().frames
@@ -443,6 +453,10 @@ void SessionEngine::publishStats()
     Q_EMIT statsUpdated(s);
     if (m_recorder)
         Q_EMIT recordingProgress(m_recorder->status().bytesWritten, recordedFrames());
+    if (m_mcap && m_mcap->isOpen()) {
+        m_mcap->tick(); // a chunk a second at least: a killed recording keeps all but its last second
+        Q_EMIT recordingProgress(m_mcap->bytesWritten(), recordedFrames());
+    }
 }
 
 // ---------------------------------------------------------------------------------------
@@ -451,7 +465,7 @@ void SessionEngine::publishStats()
 void SessionEngine::startRecording(const QString &path, const record::CaptureHeader &header,
                                    const record::CaptureWriter::Options &options)
 {
-    if (m_recorder)
+    if (m_recorder || m_mcap)
         finishRecording(QString());
     if (!m_transport)
         return;
@@ -470,6 +484,21 @@ void SessionEngine::startRecording(const QString &path, const record::CaptureHea
     m_family->describeCapture(h);
     for (const auto &[k, v] : header.values)
         h.set(k, v);
+    if (record::McapRecording::isMcapPath(path)) {
+        // MCAP: the decoded samples, as the tools of the field open them (record/mcap_recording.h).
+        auto mcap = std::make_unique<record::McapRecording>();
+        const int64_t epochOffsetNs = QDateTime::currentMSecsSinceEpoch() * 1'000'000 - hostNowNs();
+        QString error;
+        if (!mcap->start(path, h, epochOffsetNs, &error)) {
+            Q_EMIT errorOccurred(error);
+            Q_EMIT recordingStopped(error);
+            return;
+        }
+        m_mcap = std::move(mcap);
+        m_mcapPath = path;
+        Q_EMIT recordingStarted(path);
+        return;
+    }
     auto writer = std::make_unique<record::CaptureWriter>();
     writer->setStoppedHandler([this](const QString &reason) {
         QMetaObject::invokeMethod(this, [this, reason] { finishRecording(reason); }, Qt::QueuedConnection);
@@ -488,12 +517,23 @@ void SessionEngine::startRecording(const QString &path, const record::CaptureHea
 
 void SessionEngine::stopRecording()
 {
-    if (m_recorder)
+    if (m_recorder || m_mcap)
         finishRecording(QString());
 }
 
 void SessionEngine::finishRecording(const QString &reason)
 {
+    if (m_mcap) {
+        const QString error = m_mcap->stop();
+        const uint64_t samples = m_mcap->samples(), bytes = m_mcap->bytesWritten();
+        m_mcap.reset();
+        Q_EMIT recordingProgress(bytes, samples);
+        const QString why = reason.isEmpty() ? error : reason;
+        if (!why.isEmpty())
+            Q_EMIT errorOccurred(why);
+        Q_EMIT recordingStopped(why);
+        return;
+    }
     if (!m_recorder)
         return;
     const QString error = m_recorder->stop();

@@ -25,6 +25,10 @@
 #include <optional>
 #include <vector>
 
+namespace imudesk::record {
+class McapRecording;
+}
+
 namespace imudesk::device {
 
 class SessionEngine : public QObject {
@@ -133,6 +137,8 @@ private:
     Reconnector m_reconnector;
 
     std::unique_ptr<record::CaptureWriter> m_recorder;
+    std::unique_ptr<record::McapRecording> m_mcap; // a recording to .mcap: samples, not bytes
+    QString m_mcapPath;
     // The recording's frames are counted from the bytes written to it, decoded as an export
     // or a replay will decode the file: a frame whose first bytes arrived before Record was
     // pressed is decoded by the session but is not in the file, so the session's own frame

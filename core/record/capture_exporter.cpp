@@ -1,20 +1,15 @@
 #include "capture_exporter.h"
 
-#include "format/mcap/mcap_writer.h"
-#include "format/mcap/sample_channels.h"
 #include "format/sample_json.h"
 #include "record/capture_decoder.h"
 #include "record/capture_reader.h"
 #include "record/capture_source.h"
 #include "record/csv_number.h"
+#include "record/mcap_recording.h"
 #include "record/vendor_csv.h"
 
-#include <QCoreApplication>
-#include <QDateTime>
 #include <QFile>
 #include <QFileInfo>
-#include <QJsonDocument>
-#include <QJsonObject>
 #include <QRegularExpression>
 
 #include <map>
@@ -73,68 +68,25 @@ public:
     const CaptureHeader *header = nullptr;
     model::WorldFrame worldFrame = model::WorldFrame::Enu; // the capture's module (its header)
 
-    // MCAP: one writer, the device's channels, the identity and configuration written first.
-    format::mcap::SampleChannels *mcap()
+    // MCAP: the device's channels, its identity and configuration written first (McapRecording).
+    McapRecording *mcap()
     {
-        if (m_mcapChannels || m_failed)
-            return m_mcapChannels.get();
-        namespace fm = format::mcap;
-        m_mcap = std::make_unique<fm::McapWriter>();
-        fm::McapWriter::Options wo;
-        wo.library = (QStringLiteral("ImuDesk ") + QCoreApplication::applicationVersion()).trimmed().toStdString();
-        if (!m_mcap->open(m_o.output, wo)) {
-            m_r.error = CaptureExporter::tr("Cannot write %1: %2").arg(m_o.output, m_mcap->error());
+        if (m_mcap || m_failed)
+            return m_mcap.get();
+        m_mcap = std::make_unique<McapRecording>();
+        QString error;
+        if (!m_mcap->start(m_o.output, header ? *header : CaptureHeader{}, epochOffsetNs, &error)) {
+            m_r.error = error;
             m_failed = true;
             return nullptr;
         }
         m_r.files << m_o.output;
-        const model::DeviceIdentity id = header ? header->identity() : model::DeviceIdentity{};
-        fm::McapWriter::StringMap device;
-        const auto put = [&device](const char *key, const std::string &v) {
-            if (!v.empty())
-                device[key] = v;
-        };
-        put("product", id.productName);
-        put("serial", id.serial);
-        put("build", id.build);
-        if (header) {
-            put("firmware", header->value(CaptureHeader::kFirmware));
-            put("bootloader", header->value(CaptureHeader::kBootloader));
-            put("link", header->value(CaptureHeader::kLinkKind));
-            put("port", header->value(CaptureHeader::kPort));
-            put("baud", header->value(CaptureHeader::kBaud));
-            put("recorded_utc", header->value(CaptureHeader::kStartedUtc));
-            put("recorded_by", header->value(CaptureHeader::kApplication));
-        }
-        device["world_frame"] = worldFrame == model::WorldFrame::Nwu ? "NWU" : "ENU";
-        m_mcap->addMetadata("device", device);
-        m_mcap->addMetadata("time", {{"log_time", "arrival on the recording host (its steady clock, on the Unix epoch "
-                                                  "from the capture's first chunk)"},
-                                     {"publish_time", "the sample's common time: its sampling instant on the same "
-                                                      "clock, from the device's counter through ImuDesk's clock model, "
-                                                      "or the arrival where there is none"},
-                                     {"sequence", "the device's time stamp in ms where it has one"}});
-        if (header && !header->config().empty()) {
-            QJsonObject config;
-            for (const auto &[k, v] : header->config())
-                config.insert(QString::fromStdString(k), QString::fromStdString(v));
-            const uint64_t now = uint64_t(QDateTime::currentMSecsSinceEpoch()) * 1'000'000u;
-            m_mcap->attach("configuration.json", "application/json",
-                           QJsonDocument(config).toJson(QJsonDocument::Indented).toStdString(), now, now);
-        }
-        fm::SampleChannels::Device d;
-        d.name = fm::SampleChannels::topicName(!id.serial.empty() ? id.serial
-                                                                   : !id.productName.empty() ? id.productName : "device");
-        d.frameId = "imu_" + d.name;
-        d.worldFrame = worldFrame;
-        d.metadata = device;
-        m_mcapChannels = std::make_unique<fm::SampleChannels>(*m_mcap, d);
-        return m_mcapChannels.get();
+        return m_mcap.get();
     }
     void mcapWrite(const model::Sample &s)
     {
-        if (auto *c = mcap()) {
-            if (!c->write(s, epochOffsetNs))
+        if (auto *m = mcap()) {
+            if (!m->append(s))
                 mcapFailed();
             else
                 ++m_r.frames;
@@ -322,7 +274,7 @@ public:
                              .arg(m_r.files.join(QStringLiteral(", ")));
         if (m_o.format == CaptureExporter::Format::Mcap) {
             mcap(); // an empty range still gives a file (with the device's metadata)
-            if (m_mcap && m_mcap->isOpen() && !m_mcap->close())
+            if (m_mcap && m_mcap->isOpen() && !m_mcap->stop().isEmpty())
                 mcapFailed();
             return !m_failed;
         }
@@ -372,8 +324,7 @@ private:
     std::map<QString, Output *> m_byType;
     Output *m_single = nullptr;
     bool m_failed = false;
-    std::unique_ptr<format::mcap::McapWriter> m_mcap;
-    std::unique_ptr<format::mcap::SampleChannels> m_mcapChannels;
+    std::unique_ptr<McapRecording> m_mcap;
 };
 
 } // namespace

@@ -4,12 +4,14 @@
 // schemas, channels, metadata, attachment and message counts are checked, and every decoded
 // value against the tidy CSV export of the same capture; a file cut short (a recording killed)
 // still reads up to its last whole chunk.
+#include "../common/cli_process.h"
 #include "../common/synthetic_capture.h"
 #include "../common/test_main.h"
 #include "../common/test_paths.h"
 #include "record/capture_exporter.h"
 
 #include <QDir>
+#include <QElapsedTimer>
 #include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -325,6 +327,45 @@ private Q_SLOTS:
         const double span = (f.value(QStringLiteral("messageEndTime")).toString().toDouble()
                              - f.value(QStringLiteral("messageStartTime")).toString().toDouble()) / 1e9;
         QVERIFY2(span >= spanAll * 2 / 3 - 1.05, qPrintable(QStringLiteral("%1 s of %2 s").arg(span).arg(spanAll)));
+    }
+
+    // A live MCAP recording of a simulated module at 1 kHz, killed (SIGKILL) after 30 s: the file,
+    // never closed, reads in the official reader up to its last closed chunk, 29 s or more.
+    void killedRecordingKeepsAllButItsLastSecond()
+    {
+        QProcess sim;
+        sim.start(QString::fromUtf8(IMUDESK_CLI_PATH), {QStringLiteral("simulate"), QStringLiteral("--pty"),
+                                                         QStringLiteral("--baud"), QStringLiteral("921600")});
+        QVERIFY(sim.waitForStarted());
+        QTRY_VERIFY_WITH_TIMEOUT(sim.canReadLine(), 10000);
+        const QString first = QString::fromUtf8(sim.readLine()).trimmed();
+        QVERIFY2(first.startsWith(QStringLiteral("pty: /dev/")), qPrintable(first));
+        const QString ptyPath = first.mid(5);
+        QProcess send;
+        send.start(QString::fromUtf8(IMUDESK_CLI_PATH), {QStringLiteral("send"), ptyPath, QStringLiteral("--baud"),
+                                                          QStringLiteral("921600"), QStringLiteral("LOG HI91 ONTIME 0.001")});
+        QVERIFY(send.waitForFinished(15000) && send.exitCode() == 0);
+        const QString out = m_dir.filePath(QStringLiteral("killed.mcap"));
+        QProcess rec;
+        QVERIFY(test::startCliUntil(rec, {QStringLiteral("record"), ptyPath, QStringLiteral("--baud"), QStringLiteral("921600"),
+                                          QStringLiteral("-o"), out, QStringLiteral("--duration"), QStringLiteral("120")},
+                                    "recording ", 15000));
+        QElapsedTimer t;
+        t.start();
+        QTest::qWait(30000); // the duration under test: 30 s recorded, then the process killed
+        rec.kill();
+        rec.waitForFinished(5000);
+        test::stopCli(sim);
+        QString error;
+        const QJsonObject f = readMcap(out, {QStringLiteral("--stream")}, &error);
+        QVERIFY2(error.isEmpty(), qPrintable(error));
+        QVERIFY(!f.value(QStringLiteral("complete")).toBool()); // no summary, no footer: killed
+        const double span = (f.value(QStringLiteral("messageEndTime")).toString().toDouble()
+                             - f.value(QStringLiteral("messageStartTime")).toString().toDouble()) / 1e9;
+        const qlonglong imu = f.value(QStringLiteral("channelMessageCounts")).toObject().value(QStringLiteral("1")).toString().toLongLong();
+        qInfo("killed after %.1f s: %.2f s of messages, %lld on the first channel", double(t.elapsed()) / 1000.0, span, imu);
+        QVERIFY2(span >= 29.0, qPrintable(QStringLiteral("%1 s of messages").arg(span)));
+        QVERIFY2(imu >= 28000, qPrintable(QString::number(imu))); // 1 kHz
     }
 
     void fromTheCommandLine()

@@ -1,0 +1,125 @@
+#include "mcap_recording.h"
+
+#include <QCoreApplication>
+#include <QDateTime>
+#include <QFileInfo>
+#include <QJsonDocument>
+#include <QJsonObject>
+
+namespace imudesk::record {
+
+namespace fm = format::mcap;
+
+McapRecording::McapRecording() = default;
+McapRecording::~McapRecording() = default;
+
+bool McapRecording::isMcapPath(const QString &path)
+{
+    return path.endsWith(QLatin1String(".mcap"), Qt::CaseInsensitive);
+}
+
+bool McapRecording::start(const QString &path, const CaptureHeader &header, int64_t epochOffsetNs, QString *error)
+{
+    m_path = path;
+    m_epochOffsetNs = epochOffsetNs;
+    m_samples = 0;
+    m_writer = std::make_unique<fm::McapWriter>();
+    fm::McapWriter::Options wo;
+    wo.library = (QStringLiteral("ImuDesk ") + QCoreApplication::applicationVersion()).trimmed().toStdString();
+    if (!m_writer->open(path, wo)) {
+        if (error)
+            *error = QCoreApplication::translate("McapRecording", "Cannot write %1: %2").arg(path, m_writer->error());
+        return false;
+    }
+    const model::DeviceIdentity id = header.identity();
+    fm::McapWriter::StringMap device;
+    const auto put = [&device](const char *key, const std::string &v) {
+        if (!v.empty())
+            device[key] = v;
+    };
+    put("product", id.productName);
+    put("serial", id.serial);
+    put("build", id.build);
+    put("firmware", header.value(CaptureHeader::kFirmware));
+    put("bootloader", header.value(CaptureHeader::kBootloader));
+    put("link", header.value(CaptureHeader::kLinkKind));
+    put("port", header.value(CaptureHeader::kPort));
+    put("baud", header.value(CaptureHeader::kBaud));
+    put("recorded_utc", header.value(CaptureHeader::kStartedUtc));
+    put("recorded_by", header.value(CaptureHeader::kApplication));
+    device["world_frame"] = id.worldFrame == model::WorldFrame::Nwu ? "NWU" : "ENU";
+    m_writer->addMetadata("device", device);
+    m_writer->addMetadata("time", {{"log_time", "arrival on the recording host (its steady clock, on the Unix epoch)"},
+                                   {"publish_time", "the sample's common time: its sampling instant on the same "
+                                                    "clock, from the device's counter through ImuDesk's clock model, "
+                                                    "or the arrival where there is none"},
+                                   {"sequence", "the device's time stamp in ms where it has one"}});
+    if (!header.config().empty()) {
+        QJsonObject config;
+        for (const auto &[k, v] : header.config())
+            config.insert(QString::fromStdString(k), QString::fromStdString(v));
+        const uint64_t now = uint64_t(QDateTime::currentMSecsSinceEpoch()) * 1'000'000u;
+        m_writer->attach("configuration.json", "application/json",
+                         QJsonDocument(config).toJson(QJsonDocument::Indented).toStdString(), now, now);
+    }
+    fm::SampleChannels::Device d;
+    d.name = fm::SampleChannels::topicName(!id.serial.empty() ? id.serial : !id.productName.empty() ? id.productName : "device");
+    d.frameId = "imu_" + d.name;
+    d.worldFrame = id.worldFrame;
+    d.metadata = device;
+    m_channels = std::make_unique<fm::SampleChannels>(*m_writer, d);
+    m_sinceFlush.start();
+    if (!m_writer->flush()) { // the header and metadata on disk before the first sample
+        if (error)
+            *error = m_writer->error();
+        return false;
+    }
+    return true;
+}
+
+bool McapRecording::append(const model::Sample &s)
+{
+    if (!m_channels || !m_channels->write(s, m_epochOffsetNs))
+        return false;
+    ++m_samples;
+    return true;
+}
+
+bool McapRecording::append(const std::vector<model::Sample> &batch)
+{
+    for (const model::Sample &s : batch)
+        if (!append(s))
+            return false;
+    return true;
+}
+
+void McapRecording::tick()
+{
+    // Called every half second (the session's statistics): a chunk closes 0.5 to 1 s after it
+    // opened, so a kill loses less than a second.
+    if (m_writer && m_writer->isOpen() && m_sinceFlush.elapsed() >= 450) {
+        m_writer->flush();
+        m_sinceFlush.restart();
+    }
+}
+
+QString McapRecording::stop()
+{
+    if (!m_writer)
+        return {};
+    m_writer->close();
+    return m_writer->error();
+}
+
+void McapRecording::abandon()
+{
+    if (m_writer)
+        m_writer->abandon();
+}
+
+uint64_t McapRecording::bytesWritten() const
+{
+    return uint64_t(QFileInfo(m_path).size());
+}
+
+} // namespace imudesk::record

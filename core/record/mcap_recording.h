@@ -1,0 +1,54 @@
+#pragma once
+// One device's samples into an MCAP file (format/mcap): what File > Export's MCAP and a live
+// MCAP recording share. start() writes the header, the device's identity as metadata ("device",
+// and "time": what the times mean) and its configuration snapshot as the attachment
+// configuration.json; append() writes samples as they come (SampleChannels); tick(), called
+// twice a second, closes the chunk, so a recording killed at any moment keeps all but its last
+// second; stop() writes the summary.
+//
+// Times: the samples' host-clock times plus epochOffsetNs (the Unix epoch). Plain class, used in
+// one thread.
+#include "format/mcap/mcap_writer.h"
+#include "format/mcap/sample_channels.h"
+#include "record/capture_header.h"
+
+#include <QElapsedTimer>
+#include <QString>
+
+#include <memory>
+#include <vector>
+
+namespace imudesk::record {
+
+class McapRecording {
+public:
+    McapRecording();
+    ~McapRecording();
+    // header: the device (identity, link, configuration snapshot) as a capture would have it.
+    bool start(const QString &path, const CaptureHeader &header, int64_t epochOffsetNs, QString *error);
+    bool append(const model::Sample &s);
+    bool append(const std::vector<model::Sample> &batch);
+    void tick();
+    // The summary and the footer; the error that stopped it, or empty.
+    QString stop();
+    // Closes the file as it stands (tests: what a crash leaves).
+    void abandon();
+
+    bool isOpen() const { return m_writer && m_writer->isOpen(); }
+    uint64_t samples() const { return m_samples; }
+    uint64_t bytesWritten() const;
+    QString error() const { return m_writer ? m_writer->error() : QString(); }
+
+    // "imudesk-cli record ... -o run.mcap", Record to a name ending in .mcap.
+    static bool isMcapPath(const QString &path);
+
+private:
+    std::unique_ptr<format::mcap::McapWriter> m_writer;
+    std::unique_ptr<format::mcap::SampleChannels> m_channels;
+    int64_t m_epochOffsetNs = 0;
+    uint64_t m_samples = 0;
+    QElapsedTimer m_sinceFlush;
+    QString m_path;
+};
+
+} // namespace imudesk::record
