@@ -55,6 +55,7 @@ int cmdRecord(const QStringList &args);
 int cmdExport(const QStringList &args);
 int cmdAlign(const QStringList &args); // commands_session.cpp
 int cmdImport(const QStringList &args);
+int cmdRepair(const QStringList &args);
 int cmdAnalyze(const QStringList &args);
 int cmdUpdate(const QStringList &args);
 // commands_update_can.cpp: update --can PLUGIN:INTERFACE (cmdUpdate hands over when --can is given),

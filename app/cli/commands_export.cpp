@@ -2,6 +2,7 @@
 // JSON Lines (README, "CSV layouts");
 // imudesk-cli import: a vendor HI91 CSV to a capture.
 #include "cli_context.h"
+#include "format/mcap/mcap_repair.h"
 #include "record/capture_exporter.h"
 #include "record/csv_capture_converter.h"
 #include "record/session_exporter.h"
@@ -154,6 +155,44 @@ int cmdImport(const QStringList &args)
             .arg(output)
             .arg(r.import.samples)
             .arg(r.import.badLines));
+    return ExitOk;
+}
+
+int cmdRepair(const QStringList &args)
+{
+    QCommandLineParser p;
+    p.addOption(QCommandLineOption({QStringLiteral("o"), QStringLiteral("output")},
+                                   QStringLiteral("Write the repaired file here (default: replace FILE, once the "
+                                                  "repaired copy is whole)."),
+                                   QStringLiteral("OUT")));
+    p.addPositionalArgument(QStringLiteral("FILE"), QStringLiteral("An MCAP file that was not closed (a recording killed)."));
+    if (!parseArgs(p, args, QStringLiteral("imudesk-cli repair FILE.mcap [-o OUT.mcap]")))
+        return ExitUsage;
+    if (p.positionalArguments().size() != 1)
+        return fail(QStringLiteral("repair needs exactly one MCAP file"), ExitUsage);
+    const QString input = p.positionalArguments().front();
+    const QString output = p.isSet(QStringLiteral("o")) ? p.value(QStringLiteral("o")) : input + QStringLiteral(".repairing");
+    if (QFileInfo(output).absoluteFilePath() == QFileInfo(input).absoluteFilePath())
+        return fail(QStringLiteral("-o must name another file (without -o the file is replaced when the repair is done)"),
+                    ExitUsage);
+    const auto r = format::mcap::repairMcap(input, output);
+    if (!r.ok) {
+        QFile::remove(output);
+        return fail(r.error);
+    }
+    if (!p.isSet(QStringLiteral("o"))) {
+        QFile::remove(input);
+        if (!QFile::rename(output, input))
+            return fail(QStringLiteral("the repaired file is %1: it could not replace %2").arg(output, input));
+    }
+    const QString written = p.isSet(QStringLiteral("o")) ? output : input;
+    out(QStringLiteral("%1 %2: %3 messages over %4 s, %5 chunks read%6")
+            .arg(r.wasComplete ? QStringLiteral("rewrote (it was complete)") : QStringLiteral("repaired"), written)
+            .arg(r.messages)
+            .arg(r.messages ? double(r.lastTimeNs - r.firstTimeNs) / 1e9 : 0.0, 0, 'f', 3)
+            .arg(r.chunksRead)
+            .arg(r.bytesLeftOut ? QStringLiteral("; %1 bytes at the end (a record cut short) left out").arg(r.bytesLeftOut)
+                                : QString()));
     return ExitOk;
 }
 

@@ -34,6 +34,7 @@ void usage(FILE *to)
                "                                         export a capture (or a time range of it)\n"
                "  export FOLDER --format csv|jsonl [-o OUT] [--grid-ms MS]  a session, its devices aligned\n"
                "  import CSV [-o OUT.imucap]             turn a vendor HI91 CSV into a capture\n"
+               "  repair FILE.mcap [-o OUT]              complete an MCAP recording that was not closed (killed)\n"
                "  analyze FILE [--json]                  statistics, output rate, Allan deviation of a capture or\n"
                "                                         vendor CSV\n"
                "  magcal FILE [--json] [--mode full|hard_iron_only|planar] [--field UT]\n"
@@ -154,6 +155,7 @@ int main(int argc, char **argv)
         {QStringLiteral("record"), cmdRecord},   {QStringLiteral("export"), cmdExport},
         {QStringLiteral("align"), cmdAlign},
         {QStringLiteral("analyze"), cmdAnalyze}, {QStringLiteral("import"), cmdImport},
+        {QStringLiteral("repair"), cmdRepair},
         {QStringLiteral("update"), cmdUpdate},
         {QStringLiteral("hec495"), cmdHec495},
         {QStringLiteral("can"), cmdCan},

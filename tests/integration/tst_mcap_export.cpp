@@ -93,6 +93,8 @@ class TstMcapExport : public QObject {
     Q_OBJECT
     QTemporaryDir m_dir;
     QString m_capture, m_csv, m_mcap;
+    QString m_killed;
+    qlonglong m_killedMessages = 0;
 
 private Q_SLOTS:
     void initTestCase()
@@ -366,6 +368,37 @@ private Q_SLOTS:
         qInfo("killed after %.1f s: %.2f s of messages, %lld on the first channel", double(t.elapsed()) / 1000.0, span, imu);
         QVERIFY2(span >= 29.0, qPrintable(QStringLiteral("%1 s of messages").arg(span)));
         QVERIFY2(imu >= 28000, qPrintable(QString::number(imu))); // 1 kHz
+        m_killed = out;
+        m_killedMessages = f.value(QStringLiteral("messageCount")).toString().toLongLong();
+    }
+
+    // imudesk-cli repair completes it: the indexed reader (summary, indexes) opens it with every
+    // message the stream had, the device's metadata and attachment kept.
+    void repairCompletesAKilledRecording()
+    {
+        if (m_killed.isEmpty())
+            QSKIP("needs the killed recording of the test before");
+        QProcess cli;
+        cli.start(QString::fromUtf8(IMUDESK_CLI_PATH), {QStringLiteral("repair"), m_killed});
+        QVERIFY(cli.waitForFinished(60000));
+        QVERIFY2(cli.exitCode() == 0, cli.readAllStandardError().constData());
+        QVERIFY(cli.readAllStandardOutput().startsWith("repaired "));
+        QString error;
+        const QJsonObject f = readMcap(m_killed, {QStringLiteral("--messages"), QStringLiteral("0")}, &error);
+        QVERIFY2(error.isEmpty(), qPrintable(error));
+        QCOMPARE(f.value(QStringLiteral("statistics")).toObject().value(QStringLiteral("messageCount")).toString().toLongLong(),
+                 m_killedMessages);
+        QCOMPARE(f.value(QStringLiteral("attachments")).toArray().size(), 1);
+        QCOMPARE(f.value(QStringLiteral("metadata")).toArray().size(), 2);
+        const QJsonObject stream = readMcap(m_killed, {QStringLiteral("--stream")}, &error);
+        QVERIFY(stream.value(QStringLiteral("complete")).toBool());
+        // Not an MCAP file: said, and nothing written.
+        cli.start(QString::fromUtf8(IMUDESK_CLI_PATH), {QStringLiteral("repair"), m_csv, QStringLiteral("-o"),
+                                                         m_dir.filePath(QStringLiteral("no.mcap"))});
+        QVERIFY(cli.waitForFinished(30000));
+        QCOMPARE(cli.exitCode(), 1);
+        QVERIFY(cli.readAllStandardError().contains("not an MCAP file"));
+        QVERIFY(!QFile::exists(m_dir.filePath(QStringLiteral("no.mcap"))));
     }
 
     void fromTheCommandLine()
