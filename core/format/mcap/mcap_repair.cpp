@@ -173,15 +173,25 @@ QString tr(const char *text) { return QCoreApplication::translate("McapRepair", 
 
 RepairResult repairMcap(const QString &in, const QString &out)
 {
-    RepairResult r;
     QFile file(in);
     if (!file.open(QIODevice::ReadOnly)) {
+        RepairResult r;
         r.error = tr("%1 cannot be read: %2").arg(in, file.errorString());
         return r;
     }
+    RepairResult r = repairMcap(file, out);
+    if (r.notMcap)
+        r.error = tr("%1 is not an MCAP file (it does not start with MCAP's magic bytes).").arg(in);
+    return r;
+}
+
+RepairResult repairMcap(QIODevice &file, const QString &out)
+{
+    RepairResult r;
     char magic[8];
     if (file.read(magic, 8) != 8 || std::memcmp(magic, kMagic, 8) != 0) {
-        r.error = tr("%1 is not an MCAP file (it does not start with MCAP's magic bytes).").arg(in);
+        r.notMcap = true;
+        r.error = tr("This is not an MCAP file (it does not start with MCAP's magic bytes).");
         return r;
     }
     // The header first: its profile and library carry over.
@@ -208,7 +218,11 @@ RepairResult repairMcap(const QString &in, const QString &out)
         return r;
     }
     Rewriter rewriter(w, r);
-    file.seek(afterHeader);
+    if (file.isSequential() || !file.seek(afterHeader)) {
+        r.error = tr("The file cannot be read from its start again.");
+        w.abandon();
+        return r;
+    }
     qint64 at = afterHeader;
     const qint64 size = file.size();
     while (true) {
