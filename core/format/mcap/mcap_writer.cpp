@@ -78,6 +78,27 @@ void record(std::string &o, uint8_t op, const std::string &content)
 
 } // namespace
 
+std::string McapWriter::schemaContent(const Schema &s)
+{
+    std::string c;
+    u16(c, s.id);
+    str(c, s.name);
+    str(c, s.encoding);
+    str(c, s.data); // bytes with a uint32 length, as a string is
+    return c;
+}
+
+std::string McapWriter::channelContent(const Channel &ch)
+{
+    std::string c;
+    u16(c, ch.id);
+    u16(c, ch.schemaId);
+    str(c, ch.topic);
+    str(c, ch.encoding);
+    stringMap(c, ch.metadata);
+    return c;
+}
+
 McapWriter::~McapWriter()
 {
     if (m_file.isOpen())
@@ -127,12 +148,7 @@ uint16_t McapWriter::addSchema(const std::string &name, const std::string &encod
     if (m_failed)
         return 0;
     Schema s{uint16_t(m_schemas.size() + 1), name, encoding, data};
-    std::string content;
-    u16(content, s.id);
-    str(content, s.name);
-    str(content, s.encoding);
-    str(content, s.data); // bytes with a uint32 length, as a string is
-    if (!putRecord(OpSchema, content))
+    if (!putRecord(OpSchema, schemaContent(s)))
         return 0;
     m_schemas.push_back(std::move(s));
     return m_schemas.back().id;
@@ -147,13 +163,7 @@ uint16_t McapWriter::addChannel(uint16_t schemaId, const std::string &topic, con
     if (m_failed)
         return 0;
     Channel c{uint16_t(m_channels.size() + 1), schemaId, topic, messageEncoding, metadata};
-    std::string content;
-    u16(content, c.id);
-    u16(content, c.schemaId);
-    str(content, c.topic);
-    str(content, c.encoding);
-    stringMap(content, c.metadata);
-    if (!putRecord(OpChannel, content))
+    if (!putRecord(OpChannel, channelContent(c)))
         return 0;
     m_channels.push_back(std::move(c));
     m_channelCounts[m_channels.back().id] = 0;
@@ -371,25 +381,12 @@ bool McapWriter::close()
             groups.push_back({op, summaryStart + before, summary.size() - before});
     };
     group(OpSchema, [&] {
-        for (const Schema &s : m_schemas) {
-            std::string c;
-            u16(c, s.id);
-            str(c, s.name);
-            str(c, s.encoding);
-            str(c, s.data);
-            record(summary, OpSchema, c);
-        }
+        for (const Schema &s : m_schemas)
+            record(summary, OpSchema, schemaContent(s));
     });
     group(OpChannel, [&] {
-        for (const Channel &ch : m_channels) {
-            std::string c;
-            u16(c, ch.id);
-            u16(c, ch.schemaId);
-            str(c, ch.topic);
-            str(c, ch.encoding);
-            stringMap(c, ch.metadata);
-            record(summary, OpChannel, c);
-        }
+        for (const Channel &ch : m_channels)
+            record(summary, OpChannel, channelContent(ch));
     });
     group(OpStatistics, [&] {
         std::string c;

@@ -91,6 +91,8 @@ private:
         std::string name;
     };
 
+    static std::string schemaContent(const Schema &s);
+    static std::string channelContent(const Channel &c);
     bool writeOut(const std::string &bytes); // to the file, counted in the data section's CRC
     bool putRecord(uint8_t op, const std::string &content);
     bool closeChunk();
