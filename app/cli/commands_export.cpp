@@ -40,7 +40,7 @@ int cmdExport(const QStringList &args)
                                            "folder of a recorded session (record PORT,PORT,...)."));
     if (!parseArgs(p, args,
                    QStringLiteral("imudesk-cli export FILE --format vendor-csv|csv|jsonl|mcap [-o OUT] [--from S --to S]\n"
-                                  "       imudesk-cli export SESSION_FOLDER --format csv|jsonl [-o OUT] [--grid-ms MS | --pulse-hz HZ]")))
+                                  "       imudesk-cli export SESSION_FOLDER --format csv|jsonl|mcap [-o OUT] [--grid-ms MS | --pulse-hz HZ]")))
         return ExitUsage;
     if (p.positionalArguments().size() != 1)
         return fail(QStringLiteral("export needs exactly one capture FILE"), ExitUsage);
@@ -52,15 +52,10 @@ int cmdExport(const QStringList &args)
     o.format = *format;
     const QString input = p.positionalArguments().front();
     if (record::SessionManifest::isSessionFolder(input)) {
-        if (*format == record::CaptureExporter::Format::Mcap)
-            return fail(QStringLiteral("a session exports to csv or jsonl; export its captures one by one to MCAP"),
-                        ExitUsage);
         record::SessionExporter::Options so;
         so.format = *format;
         so.output = p.isSet(QStringLiteral("o")) ? p.value(QStringLiteral("o"))
-                                                 : input + (*format == record::CaptureExporter::Format::JsonLines
-                                                                ? QStringLiteral(".jsonl")
-                                                                : QStringLiteral(".csv"));
+                                                 : input + record::CaptureExporter::extension(*format);
         if (p.isSet(QStringLiteral("grid-ms"))) {
             bool ok = false;
             so.gridMs = p.value(QStringLiteral("grid-ms")).toDouble(&ok);

@@ -32,7 +32,7 @@ void usage(FILE *to)
                "                                         twist-to-align: the devices' offsets from a fixture's sharp turns\n"
                "  export FILE --format vendor-csv|csv|jsonl|mcap [-o OUT] [--from S --to S]\n"
                "                                         export a capture (or a time range of it)\n"
-               "  export FOLDER --format csv|jsonl [-o OUT] [--grid-ms MS]  a session, its devices aligned\n"
+               "  export FOLDER --format csv|jsonl|mcap [-o OUT] [--grid-ms MS]  a session, its devices aligned\n"
                "  import CSV [-o OUT.imucap]             turn a vendor HI91 CSV into a capture\n"
                "  repair FILE.mcap [-o OUT]              complete an MCAP recording that was not closed (killed)\n"
                "  analyze FILE [--json]                  statistics, output rate, Allan deviation of a capture or\n"

@@ -20,6 +20,7 @@ public:
 
     bool open(const QString &path, QString *error);
     model::WorldFrame worldFrame() const { return m_reader.header().identity().worldFrame; }
+    const CaptureHeader &header() const { return m_reader.header(); }
     // The next sample (nullptr at the end of the capture).
     const model::Sample *peek();
     model::Sample take();

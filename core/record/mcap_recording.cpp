@@ -18,19 +18,8 @@ bool McapRecording::isMcapPath(const QString &path)
     return path.endsWith(QLatin1String(".mcap"), Qt::CaseInsensitive);
 }
 
-bool McapRecording::start(const QString &path, const CaptureHeader &header, int64_t epochOffsetNs, QString *error)
+fm::McapWriter::StringMap McapRecording::deviceMetadata(const CaptureHeader &header)
 {
-    m_path = path;
-    m_epochOffsetNs = epochOffsetNs;
-    m_samples = 0;
-    m_writer = std::make_unique<fm::McapWriter>();
-    fm::McapWriter::Options wo;
-    wo.library = (QStringLiteral("ImuDesk ") + QCoreApplication::applicationVersion()).trimmed().toStdString();
-    if (!m_writer->open(path, wo)) {
-        if (error)
-            *error = QCoreApplication::translate("McapRecording", "Cannot write %1: %2").arg(path, m_writer->error());
-        return false;
-    }
     const model::DeviceIdentity id = header.identity();
     fm::McapWriter::StringMap device;
     const auto put = [&device](const char *key, const std::string &v) {
@@ -48,25 +37,60 @@ bool McapRecording::start(const QString &path, const CaptureHeader &header, int6
     put("recorded_utc", header.value(CaptureHeader::kStartedUtc));
     put("recorded_by", header.value(CaptureHeader::kApplication));
     device["world_frame"] = id.worldFrame == model::WorldFrame::Nwu ? "NWU" : "ENU";
-    m_writer->addMetadata("device", device);
-    m_writer->addMetadata("time", {{"log_time", "arrival on the recording host (its steady clock, on the Unix epoch)"},
-                                   {"publish_time", "the sample's common time: its sampling instant on the same "
-                                                    "clock, from the device's counter through ImuDesk's clock model, "
-                                                    "or the arrival where there is none"},
-                                   {"sequence", "the device's time stamp in ms where it has one"}});
-    if (!header.config().empty()) {
-        QJsonObject config;
-        for (const auto &[k, v] : header.config())
-            config.insert(QString::fromStdString(k), QString::fromStdString(v));
-        const uint64_t now = uint64_t(QDateTime::currentMSecsSinceEpoch()) * 1'000'000u;
-        m_writer->attach("configuration.json", "application/json",
-                         QJsonDocument(config).toJson(QJsonDocument::Indented).toStdString(), now, now);
-    }
+    return device;
+}
+
+fm::McapWriter::StringMap McapRecording::timeMetadata()
+{
+    return {{"log_time", "arrival on the recording host (its steady clock, on the Unix epoch)"},
+            {"publish_time", "the sample's common time: its sampling instant on the same clock, from the device's "
+                             "counter through ImuDesk's clock model, or the arrival where there is none"},
+            {"sequence", "the device's time stamp in ms where it has one"}};
+}
+
+std::string McapRecording::configurationJson(const CaptureHeader &header)
+{
+    if (header.config().empty())
+        return {};
+    QJsonObject config;
+    for (const auto &[k, v] : header.config())
+        config.insert(QString::fromStdString(k), QString::fromStdString(v));
+    return QJsonDocument(config).toJson(QJsonDocument::Indented).toStdString();
+}
+
+fm::SampleChannels::Device McapRecording::channelsOf(const CaptureHeader &header, const std::string &name)
+{
+    const model::DeviceIdentity id = header.identity();
     fm::SampleChannels::Device d;
-    d.name = fm::SampleChannels::topicName(!id.serial.empty() ? id.serial : !id.productName.empty() ? id.productName : "device");
+    d.name = fm::SampleChannels::topicName(!name.empty() ? name
+                                           : !id.serial.empty() ? id.serial
+                                           : !id.productName.empty() ? id.productName : "device");
     d.frameId = "imu_" + d.name;
     d.worldFrame = id.worldFrame;
-    d.metadata = device;
+    d.metadata = deviceMetadata(header);
+    return d;
+}
+
+bool McapRecording::start(const QString &path, const CaptureHeader &header, int64_t epochOffsetNs, QString *error)
+{
+    m_path = path;
+    m_epochOffsetNs = epochOffsetNs;
+    m_samples = 0;
+    m_writer = std::make_unique<fm::McapWriter>();
+    fm::McapWriter::Options wo;
+    wo.library = (QStringLiteral("ImuDesk ") + QCoreApplication::applicationVersion()).trimmed().toStdString();
+    if (!m_writer->open(path, wo)) {
+        if (error)
+            *error = QCoreApplication::translate("McapRecording", "Cannot write %1: %2").arg(path, m_writer->error());
+        return false;
+    }
+    m_writer->addMetadata("device", deviceMetadata(header));
+    m_writer->addMetadata("time", timeMetadata());
+    if (const std::string config = configurationJson(header); !config.empty()) {
+        const uint64_t now = uint64_t(QDateTime::currentMSecsSinceEpoch()) * 1'000'000u;
+        m_writer->attach("configuration.json", "application/json", config, now, now);
+    }
+    const fm::SampleChannels::Device d = channelsOf(header);
     m_channels = std::make_unique<fm::SampleChannels>(*m_writer, d);
     m_sinceFlush.start();
     if (!m_writer->flush()) { // the header and metadata on disk before the first sample

@@ -41,6 +41,14 @@ public:
 
     // "imudesk-cli record ... -o run.mcap", Record to a name ending in .mcap.
     static bool isMcapPath(const QString &path);
+    // What the file says of a device: product, serial, firmware, link, ... from a capture's header.
+    static format::mcap::McapWriter::StringMap deviceMetadata(const CaptureHeader &header);
+    // The "time" metadata record: what log_time, publish_time and sequence are.
+    static format::mcap::McapWriter::StringMap timeMetadata();
+    // The configuration snapshot as JSON (empty when the header has none).
+    static std::string configurationJson(const CaptureHeader &header);
+    // The device's channels' names: its serial number, else its product.
+    static format::mcap::SampleChannels::Device channelsOf(const CaptureHeader &header, const std::string &name = {});
 
 private:
     std::unique_ptr<format::mcap::McapWriter> m_writer;

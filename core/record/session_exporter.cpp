@@ -5,9 +5,13 @@
 #include "clock/trigger_pairing.h"
 #include "record/capture_sample_stream.h"
 #include "record/csv_number.h"
+#include "record/mcap_recording.h"
 
+#include <QDateTime>
 #include <QDir>
+#include <QFile>
 #include <QSaveFile>
+#include <QSet>
 
 #include <cmath>
 #include <deque>
@@ -60,6 +64,83 @@ std::optional<Interpolated> interpolate(const model::Sample &a, int64_t ta, cons
     return v;
 }
 
+// The session as one MCAP file: each device's channels under its own name (its serial number,
+// or the session's name for it when two devices share one), every sample at its aligned time;
+// session.json and each device's configuration as attachments, each device's identity as metadata.
+void writeMcap(const QString &folder, const SessionManifest &manifest,
+               std::vector<std::unique_ptr<CaptureSampleStream>> &streams, const SessionExporter::Options &o,
+               SessionExporter::Result &r)
+{
+    namespace fm = format::mcap;
+    const QDateTime started = QDateTime::fromString(manifest.startedUtc, Qt::ISODateWithMs);
+    const int64_t epochOffsetNs =
+        started.isValid() && manifest.startedHostNs != 0 ? started.toMSecsSinceEpoch() * 1'000'000 - manifest.startedHostNs : 0;
+    fm::McapWriter w;
+    fm::McapWriter::Options wo;
+    wo.library = (QStringLiteral("ImuDesk ") + QCoreApplication::applicationVersion()).trimmed().toStdString();
+    if (!w.open(o.output, wo)) {
+        r.error = SessionExporter::tr("Cannot write %1: %2").arg(o.output, w.error());
+        return;
+    }
+    const uint64_t now = uint64_t(QDateTime::currentMSecsSinceEpoch()) * 1'000'000u;
+    w.addMetadata("session", {{"started_utc", manifest.startedUtc.toStdString()},
+                              {"devices", std::to_string(streams.size())}});
+    w.addMetadata("time", McapRecording::timeMetadata());
+    QFile json(QDir(folder).filePath(QLatin1String(SessionManifest::kFileName)));
+    if (json.open(QIODevice::ReadOnly))
+        w.attach("session.json", "application/json", json.readAll().toStdString(), now, now);
+    QSet<QString> serials, repeated;
+    for (const auto &st : streams) {
+        const QString serial = QString::fromStdString(st->header().identity().serial);
+        if (!serial.isEmpty() && serials.contains(serial))
+            repeated.insert(serial);
+        serials.insert(serial);
+    }
+    std::vector<std::unique_ptr<fm::SampleChannels>> channels;
+    for (size_t i = 0; i < streams.size(); ++i) {
+        const CaptureHeader &h = streams[i]->header();
+        const QString serial = QString::fromStdString(h.identity().serial);
+        const std::string name = serial.isEmpty() || repeated.contains(serial) ? manifest.devices[i].name.toStdString()
+                                                                                  : std::string();
+        const fm::SampleChannels::Device d = McapRecording::channelsOf(h, name);
+        w.addMetadata("device " + d.name, d.metadata);
+        if (const std::string config = McapRecording::configurationJson(h); !config.empty())
+            w.attach(d.name + "/configuration.json", "application/json", config, now, now);
+        channels.push_back(std::make_unique<fm::SampleChannels>(w, d));
+    }
+    for (;;) {
+        size_t next = streams.size();
+        int64_t best = 0;
+        for (size_t i = 0; i < streams.size(); ++i)
+            if (const model::Sample *p = streams[i]->peek()) {
+                const int64_t k = streams[i]->key(*p);
+                if (next == streams.size() || k < best) {
+                    next = i;
+                    best = k;
+                }
+            }
+        if (next == streams.size())
+            break;
+        if (!channels[next]->write(streams[next]->take(), epochOffsetNs))
+            break;
+        ++r.rows;
+        if (o.cancelled && (r.rows & 0xFFF) == 0 && o.cancelled()) {
+            w.abandon();
+            QFile::remove(o.output);
+            r.error = SessionExporter::tr("Export cancelled.");
+            return;
+        }
+    }
+    if (!w.close()) {
+        QFile::remove(o.output);
+        r.error = SessionExporter::tr("Writing %1 failed: %2. Free some space or choose another place.").arg(o.output, w.error());
+        return;
+    }
+    for (const auto &st : streams)
+        r.samplesByDevice.push_back(st->samples);
+    r.ok = true;
+}
+
 } // namespace
 
 SessionExporter::Result SessionExporter::run(const QString &folder, const Options &o)
@@ -69,8 +150,8 @@ SessionExporter::Result SessionExporter::run(const QString &folder, const Option
     if (!SessionManifest::load(folder, &manifest, &r.error))
         return r;
     if (o.format == CaptureExporter::Format::VendorCsv) {
-        r.error = tr("A session of several devices exports to tidy CSV or JSON Lines; the vendor's layout has one "
-                     "device per file (export each capture on its own for it).");
+        r.error = tr("A session of several devices exports to tidy CSV, JSON Lines or MCAP; the vendor's layout has "
+                     "one device per file (export each capture on its own for it).");
         return r;
     }
     if ((o.gridMs > 0 || o.pulseHz > 0) && o.format != CaptureExporter::Format::TidyCsv) {
@@ -103,6 +184,10 @@ SessionExporter::Result SessionExporter::run(const QString &folder, const Option
     }
     if (streams.empty()) {
         r.error = tr("The session holds no device.");
+        return r;
+    }
+    if (o.format == CaptureExporter::Format::Mcap) {
+        writeMcap(folder, manifest, streams, o, r);
         return r;
     }
     QSaveFile file(o.output);

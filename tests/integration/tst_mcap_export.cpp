@@ -9,7 +9,10 @@
 #include "../common/test_main.h"
 #include "../common/test_paths.h"
 #include "record/capture_exporter.h"
+#include "record/session_exporter.h"
+#include "record/session_manifest.h"
 
+#include <QDateTime>
 #include <QDir>
 #include <QElapsedTimer>
 #include <QFile>
@@ -399,6 +402,67 @@ private Q_SLOTS:
         QCOMPARE(cli.exitCode(), 1);
         QVERIFY(cli.readAllStandardError().contains("not an MCAP file"));
         QVERIFY(!QFile::exists(m_dir.filePath(QStringLiteral("no.mcap"))));
+    }
+
+    // A recorded session of two modules exports to one MCAP file: each module's channels under its
+    // serial number, every sample once, the devices' metadata and configurations, session.json.
+    void sessionToOneFile()
+    {
+        const QString folder = m_dir.filePath(QStringLiteral("session"));
+        QVERIFY(QDir().mkpath(folder));
+        record::SessionManifest manifest;
+        manifest.startedUtc = QStringLiteral("2026-11-29T20:00:00.000Z");
+        manifest.startedHostNs = 4'900'000'000;
+        for (int i = 0; i < 2; ++i) {
+            synthetic::CaptureSpec spec;
+            spec.frames = 1000 + 500 * uint64_t(i);
+            spec.seed = uint32_t(7 + i);
+            spec.serial = i == 0 ? "AAA1" : "BBB2";
+            spec.config = {{"device", std::to_string(i)}};
+            const QString file = QStringLiteral("%1.imucap").arg(QLatin1Char('A' + i));
+            QVERIFY(synthetic::writeCapture(QDir(folder).filePath(file), spec) > 0);
+            record::SessionManifest::Device d;
+            d.name = QString(QLatin1Char('A' + i));
+            d.linkKind = QStringLiteral("HiPNUC serial");
+            d.file = file;
+            manifest.devices.push_back(d);
+        }
+        QString error;
+        QVERIFY2(manifest.save(folder, &error), qPrintable(error));
+        record::SessionExporter::Options o;
+        o.format = record::CaptureExporter::Format::Mcap;
+        o.output = m_dir.filePath(QStringLiteral("session.mcap"));
+        const auto r = record::SessionExporter::run(folder, o);
+        QVERIFY2(r.ok, qPrintable(r.error));
+        QCOMPARE(r.samplesByDevice, (std::vector<uint64_t>{1000, 1500}));
+        QCOMPARE(r.rows, uint64_t(2500));
+        const QJsonObject f = readMcap(o.output, {QStringLiteral("--messages"), QStringLiteral("0")}, &error);
+        QVERIFY2(error.isEmpty(), qPrintable(error));
+        const QJsonObject perChannel = f.value(QStringLiteral("statistics")).toObject().value(QStringLiteral("channelMessageCounts")).toObject();
+        QHash<QString, qlonglong> count;
+        for (const QJsonValue v : f.value(QStringLiteral("channels")).toArray()) {
+            const QJsonObject c = v.toObject();
+            count.insert(c.value(QStringLiteral("topic")).toString(),
+                         perChannel.value(QString::number(c.value(QStringLiteral("id")).toInt())).toString().toLongLong());
+        }
+        QCOMPARE(count.value(QStringLiteral("/imu/AAA1/imu")), 1000);
+        QCOMPARE(count.value(QStringLiteral("/imu/BBB2/imu")), 1500);
+        QCOMPARE(count.value(QStringLiteral("/imu/BBB2/euler")), 1500);
+        QStringList attachments, metadata;
+        for (const QJsonValue v : f.value(QStringLiteral("attachments")).toArray())
+            attachments << v.toObject().value(QStringLiteral("name")).toString();
+        for (const QJsonValue v : f.value(QStringLiteral("metadata")).toArray())
+            metadata << v.toObject().value(QStringLiteral("name")).toString();
+        attachments.sort();
+        metadata.sort();
+        QCOMPARE(attachments, (QStringList{QStringLiteral("AAA1/configuration.json"), QStringLiteral("BBB2/configuration.json"),
+                                           QStringLiteral("session.json")}));
+        QCOMPARE(metadata, (QStringList{QStringLiteral("device AAA1"), QStringLiteral("device BBB2"), QStringLiteral("session"),
+                                        QStringLiteral("time")}));
+        // On the Unix epoch from the session's start: the first message a few seconds after 20:00:00.
+        const double start = f.value(QStringLiteral("statistics")).toObject().value(QStringLiteral("messageStartTime")).toString().toDouble() / 1e9;
+        const double expected = double(QDateTime::fromString(manifest.startedUtc, Qt::ISODateWithMs).toSecsSinceEpoch());
+        QVERIFY2(start > expected && start < expected + 1.0, qPrintable(QString::number(start - expected)));
     }
 
     void fromTheCommandLine()

@@ -167,7 +167,10 @@ private:
     std::map<uint16_t, uint16_t> m_schemas, m_channels;
 };
 
-QString tr(const char *text) { return QCoreApplication::translate("McapRepair", text); }
+// The messages' translation context.
+class McapRepair {
+    Q_DECLARE_TR_FUNCTIONS(McapRepair)
+};
 
 } // namespace
 
@@ -176,12 +179,12 @@ RepairResult repairMcap(const QString &in, const QString &out)
     QFile file(in);
     if (!file.open(QIODevice::ReadOnly)) {
         RepairResult r;
-        r.error = tr("%1 cannot be read: %2").arg(in, file.errorString());
+        r.error = McapRepair::tr("%1 cannot be read: %2").arg(in, file.errorString());
         return r;
     }
     RepairResult r = repairMcap(file, out);
     if (r.notMcap)
-        r.error = tr("%1 is not an MCAP file (it does not start with MCAP's magic bytes).").arg(in);
+        r.error = McapRepair::tr("%1 is not an MCAP file (it does not start with MCAP's magic bytes).").arg(in);
     return r;
 }
 
@@ -191,7 +194,7 @@ RepairResult repairMcap(QIODevice &file, const QString &out)
     char magic[8];
     if (file.read(magic, 8) != 8 || std::memcmp(magic, kMagic, 8) != 0) {
         r.notMcap = true;
-        r.error = tr("This is not an MCAP file (it does not start with MCAP's magic bytes).");
+        r.error = McapRepair::tr("This is not an MCAP file (it does not start with MCAP's magic bytes).");
         return r;
     }
     // The header first: its profile and library carry over.
@@ -214,12 +217,12 @@ RepairResult repairMcap(QIODevice &file, const QString &out)
     }
     McapWriter w;
     if (!w.open(out, options)) {
-        r.error = tr("Cannot write %1: %2").arg(out, w.error());
+        r.error = McapRepair::tr("Cannot write %1: %2").arg(out, w.error());
         return r;
     }
     Rewriter rewriter(w, r);
     if (file.isSequential() || !file.seek(afterHeader)) {
-        r.error = tr("The file cannot be read from its start again.");
+        r.error = McapRepair::tr("The file cannot be read from its start again.");
         w.abandon();
         return r;
     }
@@ -244,7 +247,7 @@ RepairResult repairMcap(QIODevice &file, const QString &out)
             break;
         if (!rewriter.handle(op, content.constData(), content.size())) {
             if (!w.error().isEmpty()) {
-                r.error = tr("Writing %1 failed: %2").arg(out, w.error());
+                r.error = McapRepair::tr("Writing %1 failed: %2").arg(out, w.error());
                 w.abandon();
                 return r;
             }
@@ -254,7 +257,7 @@ RepairResult repairMcap(QIODevice &file, const QString &out)
     }
     r.bytesLeftOut = uint64_t(std::max<qint64>(0, size - at));
     if (!w.close()) {
-        r.error = tr("Writing %1 failed: %2").arg(out, w.error());
+        r.error = McapRepair::tr("Writing %1 failed: %2").arg(out, w.error());
         return r;
     }
     r.ok = true;
