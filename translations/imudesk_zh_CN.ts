@@ -1139,8 +1139,7 @@
 <context>
     <name>CaptureExporter</name>
     <message>
-        <location filename="../core/record/capture_exporter.cpp" line="+86"/>
-        <location line="+69"/>
+        <location filename="../core/record/capture_exporter.cpp" line="+107"/>
         <location line="+146"/>
         <location line="+6"/>
         <source>Cannot write %1: %2</source>
@@ -1159,7 +1158,7 @@
         <translation>该记录含有 %1 种帧类型；厂商格式为每种各写一个文件：%2</translation>
     </message>
     <message>
-        <location line="+184"/>
+        <location line="+183"/>
         <source>No output file was given.</source>
         <translation>未指定输出文件。</translation>
     </message>
@@ -2679,6 +2678,48 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
 </context>
 <context>
+    <name>McapRecording</name>
+    <message>
+        <location filename="../core/record/mcap_recording.cpp" line="+84"/>
+        <source>Cannot write %1: %2</source>
+        <translation>无法写入 %1：%2</translation>
+    </message>
+</context>
+<context>
+    <name>McapRepair</name>
+    <message>
+        <location filename="../core/format/mcap/mcap_repair.cpp" line="+182"/>
+        <source>%1 cannot be read: %2</source>
+        <translation>无法读取 %1：%2</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1 is not an MCAP file (it does not start with MCAP&apos;s magic bytes).</source>
+        <translation>%1 不是 MCAP 文件（开头不是 MCAP 的标识字节）。</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>This is not an MCAP file (it does not start with MCAP&apos;s magic bytes).</source>
+        <translation>这不是 MCAP 文件（开头不是 MCAP 的标识字节）。</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>Cannot write %1: %2</source>
+        <translation>无法写入 %1：%2</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>The file cannot be read from its start again.</source>
+        <translation>无法从头重新读取该文件。</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <location line="+10"/>
+        <source>Writing %1 failed: %2</source>
+        <translation>写入 %1 失败：%2</translation>
+    </message>
+</context>
+<context>
     <name>ModbusSimulator</name>
     <message>
         <location filename="../core/sim/modbus_simulator.cpp" line="+45"/>
@@ -3319,12 +3360,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>SessionExporter</name>
     <message>
-        <location filename="../core/record/session_exporter.cpp" line="+72"/>
-        <source>A session of several devices exports to tidy CSV or JSON Lines; the vendor&apos;s layout has one device per file (export each capture on its own for it).</source>
-        <translation>多设备会话只能导出为整洁 CSV 或 JSON Lines；厂商格式每个文件只含一台设备（如需该格式，请逐个导出各采集文件）。</translation>
-    </message>
-    <message>
-        <location line="+5"/>
+        <location filename="../core/record/session_exporter.cpp" line="+158"/>
         <source>A grid or trigger pairs are written as tidy CSV (--format csv).</source>
         <translation>网格或触发配对以整洁 CSV 写出（--format csv）。</translation>
     </message>
@@ -3354,18 +3390,25 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>该会话中没有设备。</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="-104"/>
+        <location line="+113"/>
         <source>Cannot write %1: %2</source>
         <translation>无法写入 %1：%2</translation>
     </message>
     <message>
-        <location line="+36"/>
+        <location line="-65"/>
+        <location line="+101"/>
         <location line="+96"/>
         <source>Export cancelled.</source>
         <translation>导出已取消。</translation>
     </message>
     <message>
-        <location line="-37"/>
+        <location line="-174"/>
+        <source>A session of several devices exports to tidy CSV, JSON Lines or MCAP; the vendor&apos;s layout has one device per file (export each capture on its own for it).</source>
+        <translation>多设备会话可导出为整齐 CSV、JSON Lines 或 MCAP；厂商格式每个文件只含一台设备（如需该格式，请逐个导出各记录）。</translation>
+    </message>
+    <message>
+        <location line="+137"/>
         <source>%1 frames of devices whose clock never aligned have no pulse index.</source>
         <translation>时钟从未对齐的设备有 %1 帧没有脉冲序号。</translation>
     </message>
@@ -3375,7 +3418,8 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>设备 %1（%2）：其记录中没有 ImuDesk 可离线解码的内容（Modbus 记录尚不能解码），已略去。</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="-253"/>
+        <location line="+258"/>
         <source>Writing %1 failed: %2. Free some space or choose another place.</source>
         <translation>写入 %1 失败：%2。请释放一些空间或选择其他位置。</translation>
     </message>
@@ -5186,7 +5230,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::device::SessionEngine</name>
     <message>
-        <location filename="../core/device/session_engine.cpp" line="+141"/>
+        <location filename="../core/device/session_engine.cpp" line="+143"/>
         <source>the link went to the device&apos;s own session</source>
         <translation>链路已交给设备自己的会话</translation>
     </message>
@@ -5211,7 +5255,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>%1，波特率 %2（已重连）</translation>
     </message>
     <message>
-        <location line="+55"/>
+        <location line="+45"/>
+        <source>Recording to %1 stopped: %2. Check the free disk space.</source>
+        <translation>录制到 %1 已停止：%2。请检查剩余磁盘空间。</translation>
+    </message>
+    <message>
+        <location line="+16"/>
         <source>the port is not open</source>
         <translation>串口未打开</translation>
     </message>
@@ -5226,7 +5275,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>%1 ms 内没有应答</translation>
     </message>
     <message>
-        <location line="+83"/>
+        <location line="+85"/>
         <source>Bytes keep arriving on %1 but none of them form a frame: the device probably runs at another baud rate now. Disconnect and connect again with the baud rate set to Auto.</source>
         <translation>%1 上持续收到字节，但无法组成任何数据帧：设备可能已改用其他波特率。请断开连接，并将波特率设为“自动”后重新连接。</translation>
     </message>

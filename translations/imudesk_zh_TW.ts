@@ -1139,8 +1139,7 @@
 <context>
     <name>CaptureExporter</name>
     <message>
-        <location filename="../core/record/capture_exporter.cpp" line="+86"/>
-        <location line="+69"/>
+        <location filename="../core/record/capture_exporter.cpp" line="+107"/>
         <location line="+146"/>
         <location line="+6"/>
         <source>Cannot write %1: %2</source>
@@ -1159,7 +1158,7 @@
         <translation>該記錄含有 %1 種幀類型；廠商格式為每種各寫一個檔案：%2</translation>
     </message>
     <message>
-        <location line="+184"/>
+        <location line="+183"/>
         <source>No output file was given.</source>
         <translation>未指定輸出檔案。</translation>
     </message>
@@ -2679,6 +2678,48 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
 </context>
 <context>
+    <name>McapRecording</name>
+    <message>
+        <location filename="../core/record/mcap_recording.cpp" line="+84"/>
+        <source>Cannot write %1: %2</source>
+        <translation>無法寫入 %1：%2</translation>
+    </message>
+</context>
+<context>
+    <name>McapRepair</name>
+    <message>
+        <location filename="../core/format/mcap/mcap_repair.cpp" line="+182"/>
+        <source>%1 cannot be read: %2</source>
+        <translation>無法讀取 %1：%2</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1 is not an MCAP file (it does not start with MCAP&apos;s magic bytes).</source>
+        <translation>%1 不是 MCAP 檔案（開頭不是 MCAP 的識別位元組）。</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>This is not an MCAP file (it does not start with MCAP&apos;s magic bytes).</source>
+        <translation>這不是 MCAP 檔案（開頭不是 MCAP 的識別位元組）。</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>Cannot write %1: %2</source>
+        <translation>無法寫入 %1：%2</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>The file cannot be read from its start again.</source>
+        <translation>無法從頭重新讀取該檔案。</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <location line="+10"/>
+        <source>Writing %1 failed: %2</source>
+        <translation>寫入 %1 失敗：%2</translation>
+    </message>
+</context>
+<context>
     <name>ModbusSimulator</name>
     <message>
         <location filename="../core/sim/modbus_simulator.cpp" line="+45"/>
@@ -3319,12 +3360,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>SessionExporter</name>
     <message>
-        <location filename="../core/record/session_exporter.cpp" line="+72"/>
-        <source>A session of several devices exports to tidy CSV or JSON Lines; the vendor&apos;s layout has one device per file (export each capture on its own for it).</source>
-        <translation>多裝置工作階段只能匯出為整潔 CSV 或 JSON Lines；原廠格式每個檔案只含一台裝置（如需此格式，請逐一匯出各擷取檔）。</translation>
-    </message>
-    <message>
-        <location line="+5"/>
+        <location filename="../core/record/session_exporter.cpp" line="+158"/>
         <source>A grid or trigger pairs are written as tidy CSV (--format csv).</source>
         <translation>網格或觸發配對以整齊 CSV 寫出（--format csv）。</translation>
     </message>
@@ -3354,18 +3390,25 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>此工作階段中沒有裝置。</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="-104"/>
+        <location line="+113"/>
         <source>Cannot write %1: %2</source>
         <translation>無法寫入 %1：%2</translation>
     </message>
     <message>
-        <location line="+36"/>
+        <location line="-65"/>
+        <location line="+101"/>
         <location line="+96"/>
         <source>Export cancelled.</source>
         <translation>匯出已取消。</translation>
     </message>
     <message>
-        <location line="-37"/>
+        <location line="-174"/>
+        <source>A session of several devices exports to tidy CSV, JSON Lines or MCAP; the vendor&apos;s layout has one device per file (export each capture on its own for it).</source>
+        <translation>多裝置工作階段可匯出為整齊 CSV、JSON Lines 或 MCAP；廠商格式每個檔案只含一台裝置（如需該格式，請逐一匯出各記錄）。</translation>
+    </message>
+    <message>
+        <location line="+137"/>
         <source>%1 frames of devices whose clock never aligned have no pulse index.</source>
         <translation>時鐘從未對齊的裝置有 %1 幀沒有脈衝序號。</translation>
     </message>
@@ -3375,7 +3418,8 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>裝置 %1（%2）：其記錄中沒有 ImuDesk 可離線解碼的內容（Modbus 記錄尚不能解碼），已略去。</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="-253"/>
+        <location line="+258"/>
         <source>Writing %1 failed: %2. Free some space or choose another place.</source>
         <translation>寫入 %1 失敗：%2。請釋放一些空間或選擇其他位置。</translation>
     </message>
@@ -5186,7 +5230,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::device::SessionEngine</name>
     <message>
-        <location filename="../core/device/session_engine.cpp" line="+141"/>
+        <location filename="../core/device/session_engine.cpp" line="+143"/>
         <source>the link went to the device&apos;s own session</source>
         <translation>連結已交給裝置自己的工作階段</translation>
     </message>
@@ -5211,7 +5255,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>%1，波特率 %2（已重新連線）</translation>
     </message>
     <message>
-        <location line="+55"/>
+        <location line="+45"/>
+        <source>Recording to %1 stopped: %2. Check the free disk space.</source>
+        <translation>錄製到 %1 已停止：%2。請檢查剩餘磁碟空間。</translation>
+    </message>
+    <message>
+        <location line="+16"/>
         <source>the port is not open</source>
         <translation>串列埠未開啟</translation>
     </message>
@@ -5226,7 +5275,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>%1 ms 內沒有回應</translation>
     </message>
     <message>
-        <location line="+83"/>
+        <location line="+85"/>
         <source>Bytes keep arriving on %1 but none of them form a frame: the device probably runs at another baud rate now. Disconnect and connect again with the baud rate set to Auto.</source>
         <translation>%1 上持續收到位元組，但無法組成任何資料框：裝置可能已改用其他波特率。請中斷連線，並將波特率設為「自動」後重新連線。</translation>
     </message>
