@@ -58,9 +58,11 @@ if [ "${1:-}" = --inside ]; then
     [ -n "${2:-}" ] && [ -f "$2" ] && { say "   --- last lines of $(basename "$2"):"; tail -n 25 "$2" | sed 's/^/   | /'; }
     exit 1
   }
-  inroot() { # runs a command in the root with a clean environment
+  inroot() { # runs a command in the root with a clean environment (and the host's CAs, if it has its own)
+    local ca=()
+    [ -f "$rootfs/etc/imudesk-host-ca.pem" ] && ca=(NODE_EXTRA_CA_CERTS=/etc/imudesk-host-ca.pem)
     chroot "$rootfs" /usr/bin/env -i HOME=/root PATH=/usr/local/sbin:/usr/local/bin:/usr/sbin:/usr/bin:/sbin:/bin \
-      LANG=C.UTF-8 TERM=dumb DEBIAN_FRONTEND=noninteractive "$@"
+      LANG=C.UTF-8 TERM=dumb DEBIAN_FRONTEND=noninteractive "${ca[@]}" "$@"
   }
 
   begin "mount a private /dev (tmpfs), proc and read-only sysfs in the root"
@@ -83,6 +85,12 @@ if [ "${1:-}" = --inside ]; then
   mkdir -p "$cache/archives/partial"
   mount --bind "$cache/archives" "$rootfs/var/cache/apt/archives" || failstep "package cache"
   cp /etc/resolv.conf "$rootfs/etc/resolv.conf" 2>/dev/null
+  # The host's own certificate authorities, as its name servers above: where a proxy inspects TLS,
+  # the npm registry's certificate is signed by one of them (Node.js takes them from
+  # NODE_EXTRA_CA_CERTS beside its own; Debian's packages come over plain HTTP, signed by Debian).
+  if compgen -G "/usr/local/share/ca-certificates/*.crt" > /dev/null; then
+    cat /usr/local/share/ca-certificates/*.crt > "$rootfs/etc/imudesk-host-ca.pem"
+  fi
   pass
 
   # The Debian package in /tmp/imudesk-deb of the root: installed with apt-get as a user would (its
