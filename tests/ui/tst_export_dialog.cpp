@@ -3,9 +3,12 @@
 // running export and removes the partial files.
 #include "../common/synthetic_capture.h"
 #include "../common/test_main.h"
+#include "../common/layout_checks.h"
 #include "recording/export_dialog.h"
+#include "workspace/language_switcher.h"
 
 #include <QComboBox>
+#include <QDir>
 #include <QLabel>
 #include <QLineEdit>
 #include <QProgressBar>
@@ -109,6 +112,42 @@ private Q_SLOTS:
         QVERIFY(finished.wait(5000));
         QCOMPARE(finished.at(0).at(0).toBool(), false);
         QVERIFY(finished.at(0).at(1).toString().contains(QStringLiteral("missing.imucap")));
+    }
+
+    // Every format's name (MCAP's and the vendor layout's are long) in view, nothing cut, in en
+    // and zh_CN, at the dialog's own size: it opens so on a 1366x768 screen.
+    void fitsInEveryLanguage_data()
+    {
+        QTest::addColumn<QString>("language");
+        QTest::newRow("en") << QStringLiteral("en");
+        QTest::newRow("zh_CN") << QStringLiteral("zh_CN");
+    }
+    void fitsInEveryLanguage()
+    {
+        QFETCH(QString, language);
+        ui::LanguageSwitcher switcher;
+        QString error;
+        QVERIFY2(switcher.setLanguage(language, QString::fromUtf8(IMUDESK_QM_DIR), &error), qPrintable(error));
+        {
+            ExportDialog d(m_small);
+            d.setFormat(Format::Mcap);
+            d.show();
+            QVERIFY(QTest::qWaitForWindowExposed(&d));
+            QVERIFY(test::layout::layoutSettled(d));
+            QVERIFY2(d.width() <= 1366 && d.height() <= 700, qPrintable(QStringLiteral("%1x%2").arg(d.width()).arg(d.height())));
+            const QStringList problems = test::layout::cutOrOutside(d);
+            QVERIFY2(problems.isEmpty(), qPrintable(problems.join(QLatin1Char('\n'))));
+            auto *format = d.findChild<QComboBox *>(QStringLiteral("format"));
+            // The box is as wide as its longest name, which it shows whole when chosen.
+            int widest = 0;
+            for (int i = 0; i < format->count(); ++i)
+                widest = std::max(widest, format->fontMetrics().horizontalAdvance(format->itemText(i)));
+            QVERIFY2(format->width() >= widest, qPrintable(QStringLiteral("%1 < %2").arg(format->width()).arg(widest)));
+            QCOMPARE(format->currentData().toInt(), int(Format::Mcap));
+            if (const QString shots = qEnvironmentVariable("IMUDESK_TEST_SHOTS"); !shots.isEmpty())
+                d.grab().save(QDir(shots).filePath(QStringLiteral("export-mcap-%1.png").arg(language)));
+        }
+        QVERIFY(switcher.setLanguage(QStringLiteral("en"), QString::fromUtf8(IMUDESK_QM_DIR), &error));
     }
 };
 
