@@ -630,10 +630,15 @@ int main(int argc, char **argv)
                     (unsigned long long)live.stamped, live.arrivalErrorNs.size());
         printErrors("arrival time - truth (baseline)", statsOf(live.arrivalErrorNs));
         printErrors("stamp - wire - truth", statsOf(live.commonErrorNs));
-        std::printf("    data frames sent / samples, from 1 s in to 50 ms before the end: %llu / %llu\n",
+        std::printf("    data frames sent / samples, from 1 s in to 50 ms before the end: %llu / %llu (equal but for "
+                    "the window's edges)\n",
                     (unsigned long long)live.sentInWindow, (unsigned long long)live.samplesInWindow);
-        // Every sample that reached the session carries a common time, and every frame sent arrived.
-        if (live.stamped != live.arrivalErrorNs.size() || live.sentInWindow != live.samplesInWindow) {
+        // Every sample that reached the session carries a common time, and every frame sent arrived. A
+        // sample is matched to the latest frame sent before it arrived: frames of one burst leave
+        // the simulator microseconds apart, so at each edge of the window one may count on the
+        // other side (seen: 4551 sent / 4550 samples with 5107 / 5107 over the whole run).
+        const auto edge = std::max(live.sentInWindow, live.samplesInWindow) - std::min(live.sentInWindow, live.samplesInWindow);
+        if (live.stamped != live.arrivalErrorNs.size() || edge > 2) {
             std::printf("    !! samples without a stamp, or frames lost\n");
             ok = false;
         }
