@@ -256,7 +256,7 @@ void SessionEngine::appendSamples(std::vector<model::Sample> &batch)
         return;
     // A live MCAP recording takes the samples as they come (a capture records the bytes instead).
     if (m_mcap && !m_mcap->append(batch)) {
-        const QString why = tr("Recording to %1 stopped: %2. Check the free disk space.").arg(m_mcapPath, m_mcap->error());
+        const QString why = tr("Recording to %1 stopped: %2. Check the free disk space.").arg(m_mcap->path(), m_mcap->error());
         QMetaObject::invokeMethod(this, [this, why] { finishRecording(why); }, Qt::QueuedConnection);
     }
     m_store.append(batch); // the views read the store on their clock
@@ -495,7 +495,6 @@ void SessionEngine::startRecording(const QString &path, const record::CaptureHea
             return;
         }
         m_mcap = std::move(mcap);
-        m_mcapPath = path;
         Q_EMIT recordingStarted(path);
         return;
     }

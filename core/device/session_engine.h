@@ -138,7 +138,6 @@ private:
 
     std::unique_ptr<record::CaptureWriter> m_recorder;
     std::unique_ptr<record::McapRecording> m_mcap; // a recording to .mcap: samples, not bytes
-    QString m_mcapPath;
     // The recording's frames are counted from the bytes written to it, decoded as an export
     // or a replay will decode the file: a frame whose first bytes arrived before Record was
     // pressed is decoded by the session but is not in the file, so the session's own frame

@@ -13,19 +13,16 @@ void CaptureDecoder::configure(const CaptureHeader &header)
     m_timedIdle = header.value(CaptureHeader::kIdleMarkers) != "1";
     m_witlink = header.value(CaptureHeader::kLinkKind) == "HEC495 serial";
     m_can = header.value(CaptureHeader::kLinkKind) == "CAN";
-    m_canProtocol = protocol::can::parseProtocol(QString::fromStdString(header.value(CaptureHeader::kCanProtocol)))
-                        .value_or(protocol::can::CanProtocol::Auto);
     const auto number = [&header](const char *key) {
         bool ok = false;
         const int v = QString::fromStdString(header.value(key)).toInt(&ok);
         return ok ? v : -1;
     };
-    m_canNodeConfigured = number(CaptureHeader::kCanNode);
-    m_canHecMode = number(CaptureHeader::kCanHec495Mode);
-    m_canBitrate = header.baud();
-    m_canDecoder = protocol::can::CanDecoder(m_canProtocol);
-    m_canDecoder.setHec495Mode(m_canHecMode);
-    m_canNode = m_canNodeConfigured;
+    m_canDecoder = protocol::can::CanDecoder(
+        protocol::can::parseProtocol(QString::fromStdString(header.value(CaptureHeader::kCanProtocol)))
+            .value_or(protocol::can::CanProtocol::Auto));
+    m_canDecoder.setHec495Mode(number(CaptureHeader::kCanHec495Mode));
+    m_canNode = number(CaptureHeader::kCanNode);
     m_canMerged = model::Sample{};
     m_clocks.clear();
     m_clocks.setBaud(header.baud());
@@ -87,7 +84,7 @@ void CaptureDecoder::feedCan(const uint8_t *data, size_t n, int64_t hostNs, Sink
         model::Sample s = m_canMerged;
         s.hostTimeNs = hostNs;
         if (r.stampNs > 0)
-            s.commonTimeNs = r.stampNs - wireTimeNs(r.frame, m_canBitrate);
+            s.commonTimeNs = r.stampNs - wireTimeNs(r.frame, m_clocks.baud());
         sink.onSample(s, hostNs);
     }
 }

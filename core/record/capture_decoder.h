@@ -93,9 +93,7 @@ private:
     std::vector<protocol::can::CanRecord> m_canRecords;
     std::map<std::string, uint64_t> m_canByType;
     model::Sample m_canMerged;
-    protocol::can::CanProtocol m_canProtocol = protocol::can::CanProtocol::Auto;
-    int m_canNodeConfigured = -1, m_canNode = -1, m_canHecMode = -1;
-    int m_canBitrate = 0;
+    int m_canNode = -1; // the node followed: the header's, else the first that sends data
     int64_t m_lastNs = 0;
     bool m_haveLast = false;
     bool m_timedIdle = true; // no markers recorded: infer idle lines from pauses between chunks

@@ -10,7 +10,6 @@
 
 #include <QFile>
 #include <QFileInfo>
-#include <QRegularExpression>
 
 #include <map>
 #include <memory>
@@ -259,9 +258,7 @@ public:
             m_r.error = CaptureExporter::tr("Cannot write %1: %2").arg(to, first->file.errorString());
             return false;
         }
-        m_r.files.replaceInStrings(QRegularExpression(QStringLiteral("^") + QRegularExpression::escape(m_o.output)
-                                                      + QStringLiteral("$")),
-                                   to);
+        m_r.files.replace(m_r.files.indexOf(m_o.output), to);
         return true;
     }
 

@@ -2,7 +2,6 @@
 
 #include <QCoreApplication>
 #include <QDateTime>
-#include <QFileInfo>
 #include <QJsonDocument>
 #include <QJsonObject>
 
@@ -16,6 +15,13 @@ McapRecording::~McapRecording() = default;
 bool McapRecording::isMcapPath(const QString &path)
 {
     return path.endsWith(QLatin1String(".mcap"), Qt::CaseInsensitive);
+}
+
+fm::McapWriter::Options McapRecording::writerOptions()
+{
+    fm::McapWriter::Options o;
+    o.library = (QStringLiteral("ImuDesk ") + QCoreApplication::applicationVersion()).trimmed().toStdString();
+    return o;
 }
 
 fm::McapWriter::StringMap McapRecording::deviceMetadata(const CaptureHeader &header)
@@ -77,9 +83,7 @@ bool McapRecording::start(const QString &path, const CaptureHeader &header, int6
     m_epochOffsetNs = epochOffsetNs;
     m_samples = 0;
     m_writer = std::make_unique<fm::McapWriter>();
-    fm::McapWriter::Options wo;
-    wo.library = (QStringLiteral("ImuDesk ") + QCoreApplication::applicationVersion()).trimmed().toStdString();
-    if (!m_writer->open(path, wo)) {
+    if (!m_writer->open(path, writerOptions())) {
         if (error)
             *error = QCoreApplication::translate("McapRecording", "Cannot write %1: %2").arg(path, m_writer->error());
         return false;
@@ -139,11 +143,6 @@ void McapRecording::abandon()
 {
     if (m_writer)
         m_writer->abandon();
-}
-
-uint64_t McapRecording::bytesWritten() const
-{
-    return uint64_t(QFileInfo(m_path).size());
 }
 
 } // namespace imudesk::record

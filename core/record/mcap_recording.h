@@ -36,9 +36,12 @@ public:
 
     bool isOpen() const { return m_writer && m_writer->isOpen(); }
     uint64_t samples() const { return m_samples; }
-    uint64_t bytesWritten() const;
+    uint64_t bytesWritten() const { return m_writer ? m_writer->bytesWritten() : 0; }
+    const QString &path() const { return m_path; }
     QString error() const { return m_writer ? m_writer->error() : QString(); }
 
+    // The writer's options of every MCAP file ImuDesk writes (its library named).
+    static format::mcap::McapWriter::Options writerOptions();
     // "imudesk-cli record ... -o run.mcap", Record to a name ending in .mcap.
     static bool isMcapPath(const QString &path);
     // What the file says of a device: product, serial, firmware, link, ... from a capture's header.

@@ -64,6 +64,23 @@ std::optional<Interpolated> interpolate(const model::Sample &a, int64_t ta, cons
     return v;
 }
 
+// The stream whose next sample comes first on the session's aligned time; streams.size() when
+// every stream has ended.
+size_t nextInTime(const std::vector<std::unique_ptr<CaptureSampleStream>> &streams)
+{
+    size_t next = streams.size();
+    int64_t best = 0;
+    for (size_t i = 0; i < streams.size(); ++i)
+        if (const model::Sample *p = streams[i]->peek()) {
+            const int64_t k = streams[i]->key(*p);
+            if (next == streams.size() || k < best) {
+                next = i;
+                best = k;
+            }
+        }
+    return next;
+}
+
 // The session as one MCAP file: each device's channels under its own name (its serial number,
 // or the session's name for it when two devices share one), every sample at its aligned time;
 // session.json and each device's configuration as attachments, each device's identity as metadata.
@@ -76,9 +93,7 @@ void writeMcap(const QString &folder, const SessionManifest &manifest,
     const int64_t epochOffsetNs =
         started.isValid() && manifest.startedHostNs != 0 ? started.toMSecsSinceEpoch() * 1'000'000 - manifest.startedHostNs : 0;
     fm::McapWriter w;
-    fm::McapWriter::Options wo;
-    wo.library = (QStringLiteral("ImuDesk ") + QCoreApplication::applicationVersion()).trimmed().toStdString();
-    if (!w.open(o.output, wo)) {
+    if (!w.open(o.output, McapRecording::writerOptions())) {
         r.error = SessionExporter::tr("Cannot write %1: %2").arg(o.output, w.error());
         return;
     }
@@ -108,19 +123,7 @@ void writeMcap(const QString &folder, const SessionManifest &manifest,
             w.attach(d.name + "/configuration.json", "application/json", config, now, now);
         channels.push_back(std::make_unique<fm::SampleChannels>(w, d));
     }
-    for (;;) {
-        size_t next = streams.size();
-        int64_t best = 0;
-        for (size_t i = 0; i < streams.size(); ++i)
-            if (const model::Sample *p = streams[i]->peek()) {
-                const int64_t k = streams[i]->key(*p);
-                if (next == streams.size() || k < best) {
-                    next = i;
-                    best = k;
-                }
-            }
-        if (next == streams.size())
-            break;
+    for (size_t next; (next = nextInTime(streams)) < streams.size();) {
         if (!channels[next]->write(streams[next]->take(), epochOffsetNs))
             break;
         ++r.rows;
@@ -295,19 +298,8 @@ SessionExporter::Result SessionExporter::run(const QString &folder, const Option
             buf += '\n';
         }
         // The next sample of all devices, by aligned time.
-        for (;;) {
-            CaptureSampleStream *next = nullptr;
-            int64_t best = 0;
-            for (auto &s : streams)
-                if (const model::Sample *p = s->peek()) {
-                    const int64_t k = s->key(*p);
-                    if (!next || k < best) {
-                        next = s.get();
-                        best = k;
-                    }
-                }
-            if (!next)
-                break;
+        for (size_t i; (i = nextInTime(streams)) < streams.size();) {
+            CaptureSampleStream *next = streams[i].get();
             const model::Sample s = next->take();
             const std::string name = next->name.toStdString();
             if (o.format == CaptureExporter::Format::TidyCsv) {

@@ -360,10 +360,10 @@ private Q_SLOTS:
         QVERIFY(sa.front().hostTimeNs >= 6'500'000'000 && sa.front().hostTimeNs < 6'510'000'000);
         QVERIFY(sb.front().hostTimeNs >= 6'500'000'000 && sb.front().hostTimeNs <= 6'516'000'000); // its chunks: 16 ms
         // Paused together: at 10x their positions agree within a few ticks (5 ms of wall time is
-        // 50 ms of the session).
-        QTest::qWait(50);
-        QVERIFY2(qAbs(posA.last().at(0).toDouble() - posB.last().at(0).toDouble()) < 0.25,
-                 qPrintable(QStringLiteral("%1 / %2").arg(posA.last().at(0).toDouble()).arg(posB.last().at(0).toDouble())));
+        // 50 ms of the session), once each one's report from its pause is in (it follows its
+        // playingChanged).
+        QTRY_VERIFY2(qAbs(posA.last().at(0).toDouble() - posB.last().at(0).toDouble()) < 0.25,
+                     qPrintable(QStringLiteral("%1 / %2").arg(posA.last().at(0).toDouble()).arg(posB.last().at(0).toDouble())));
         // B's common times are the capture's own plus the offset, sample for sample (B alone,
         // played from the same instant: 6.5 s on the host clock, 0.484 s after its first chunk).
         const uint64_t fromAlone = alone.store().totalAppended();

@@ -471,6 +471,8 @@ bool McapWriter::close()
     tail.append(kMagic, kMagicSize);
     if (m_file.write(tail.data(), qint64(tail.size())) != qint64(tail.size()))
         failed(m_file.errorString());
+    else
+        m_offset += tail.size();
     m_file.close();
     return !m_failed;
 }

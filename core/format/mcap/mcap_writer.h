@@ -65,6 +65,8 @@ public:
 
     const QString &error() const { return m_error; }
     uint64_t messageCount() const { return m_messageCount; }
+    // Bytes in the file so far (the summary and footer included once closed).
+    uint64_t bytesWritten() const { return m_offset; }
     uint32_t chunkCount() const { return uint32_t(m_chunkIndexes.size()); }
 
 private:

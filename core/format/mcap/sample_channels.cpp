@@ -25,29 +25,15 @@ std::string SampleChannels::topicName(const std::string &text)
     return out.empty() ? std::string("device") : out;
 }
 
-SampleChannels::Channel *SampleChannels::channel(const std::string &topic, const char *type, const char *definition)
+SampleChannels::Channel *SampleChannels::open(const std::string &topic, const std::string &schemaName,
+                                              const char *schemaEncoding, const char *schemaData,
+                                              const char *messageEncoding)
 {
-    auto it = m_channels.find(topic);
-    if (it != m_channels.end())
-        return &it->second;
-    const uint16_t schema = m_writer.addSchema(type, "ros2msg", definition);
+    const uint16_t schema = m_writer.addSchema(schemaName, schemaEncoding, schemaData);
     // /tf is the file's, not the device's: no device metadata, so every device shares one channel.
-    const uint16_t id = schema ? m_writer.addChannel(schema, topic, "cdr", topic == "/tf" ? McapWriter::StringMap{}
-                                                                                           : m_device.metadata)
+    const uint16_t id = schema ? m_writer.addChannel(schema, topic, messageEncoding,
+                                                     topic == "/tf" ? McapWriter::StringMap{} : m_device.metadata)
                                : 0;
-    if (!id)
-        return nullptr;
-    return &(m_channels[topic] = Channel{id, 0, 0});
-}
-
-SampleChannels::Channel *SampleChannels::jsonChannel()
-{
-    const std::string topic = m_prefix + "status";
-    auto it = m_channels.find(topic);
-    if (it != m_channels.end())
-        return &it->second;
-    const uint16_t schema = m_writer.addSchema("imudesk/Sample", "jsonschema", kStatusSchema);
-    const uint16_t id = schema ? m_writer.addChannel(schema, topic, "json", m_device.metadata) : 0;
     if (!id)
         return nullptr;
     return &(m_channels[topic] = Channel{id, 0, 0});
@@ -65,8 +51,9 @@ bool SampleChannels::put(Kind kind, const model::Sample &s, uint64_t logTime, ui
                      {"temperature", temperatureType}, {"fix", navSatFixType}, {"/tf", tfMessageType},
                      {"euler", vector3StampedType}, {"status", nullptr}};
         const auto &k = kinds[kind];
-        c = k.type ? channel(kind == Tf ? std::string(k.suffix) : m_prefix + k.suffix, k.type().name, k.type().definition)
-                   : jsonChannel();
+        const std::string topic = kind == Tf ? std::string(k.suffix) : m_prefix + k.suffix;
+        c = k.type ? open(topic, k.type().name, "ros2msg", k.type().definition, "cdr")
+                   : open(topic, "imudesk/Sample", "jsonschema", kStatusSchema, "json");
         if (!c)
             return false;
     }

@@ -54,8 +54,9 @@ private:
         uint64_t count = 0;
     };
     enum Kind { Imu, Mag, Pressure, Temperature, Fix, Tf, Euler, Status, KindCount };
-    Channel *channel(const std::string &suffix, const char *type, const char *definition);
-    Channel *jsonChannel();
+    // The channel (and its schema) added to the file when the first sample that has it comes.
+    Channel *open(const std::string &topic, const std::string &schemaName, const char *schemaEncoding,
+                  const char *schemaData, const char *messageEncoding);
     bool put(Kind kind, const model::Sample &s, uint64_t logTime, uint64_t publishTime, std::string_view data);
     static constexpr int64_t kTfPeriodNs = 20'000'000;
     static constexpr int64_t kStatusPeriodNs = 100'000'000;
@@ -63,7 +64,6 @@ private:
     McapWriter &m_writer;
     Device m_device;
     std::string m_prefix;
-    std::map<std::string, uint16_t> m_schemas; // by type name (shared by every device of the file)
     std::map<std::string, Channel> m_channels; // by topic (a map: its elements stay where they are)
     Channel *m_byKind[KindCount] = {};
     std::string m_world;
