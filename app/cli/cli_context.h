@@ -56,6 +56,7 @@ int cmdExport(const QStringList &args);
 int cmdAlign(const QStringList &args); // commands_session.cpp
 int cmdImport(const QStringList &args);
 int cmdRepair(const QStringList &args);
+int cmdBridge(const QStringList &args); // commands_bridge.cpp
 int cmdAnalyze(const QStringList &args);
 int cmdUpdate(const QStringList &args);
 // commands_update_can.cpp: update --can PLUGIN:INTERFACE (cmdUpdate hands over when --can is given),

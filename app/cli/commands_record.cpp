@@ -1,5 +1,6 @@
 // imudesk-cli record: every byte a device sends, to a capture file (README, "Capture file format").
 #include "cli_context.h"
+#include "device_links.h"
 #include "device/group_recording.h"
 #include "device/link_opener.h"
 #include "protocol/can/can_decoder.h"
@@ -25,133 +26,17 @@ namespace imudesk::cli {
 
 namespace {
 
-// One device of `record PORT,PORT,...`: a serial port (its family found as probe finds it;
-// PORT:BAUD at that rate),
-// modbus:PORT[@ID] (a HiPNUC module's Modbus RTU; modbus-hec495:PORT[@ID] for the compass), or
-// can:PLUGIN:INTERFACE[:PROTOCOL] (protocol auto, j1939, canopen or hec495).
-bool linkOf(const QString &spec, int baud, device::LinkRequest *out, QString *error)
-{
-    auto bad = [&](const QString &why) {
-        *error = QStringLiteral("%1: %2").arg(spec, why);
-        return false;
-    };
-    if (spec.startsWith(QLatin1String("can:"))) {
-        const QStringList parts = spec.mid(4).split(QLatin1Char(':'));
-        if (parts.size() < 2 || parts.size() > 3 || parts[0].isEmpty() || parts[1].isEmpty())
-            return bad(QStringLiteral("a CAN device is can:PLUGIN:INTERFACE[:PROTOCOL], e.g. can:socketcan:can0:canopen"));
-        device::CanSessionOptions o;
-        o.plugin = parts[0];
-        o.interfaceName = parts[1];
-        if (parts.size() == 3) {
-            const auto proto = protocol::can::parseProtocol(parts[2]);
-            if (!proto)
-                return bad(QStringLiteral("unknown CAN protocol '%1' (auto, j1939, canopen, hec495)").arg(parts[2]));
-            o.protocol = *proto;
-        }
-        *out = device::LinkRequest::canBus(o);
-        return true;
-    }
-    for (const char *prefix : {"modbus:", "modbus-hec495:"}) {
-        if (!spec.startsWith(QLatin1String(prefix)))
-            continue;
-        QString rest = spec.mid(int(std::strlen(prefix)));
-        device::ModbusOptions o;
-        o.kind = std::strcmp(prefix, "modbus:") == 0 ? protocol::modbus::DeviceKind::Hipnuc
-                                                      : protocol::modbus::DeviceKind::Hec495;
-        const int at = int(rest.lastIndexOf(QLatin1Char('@')));
-        if (at >= 0) {
-            bool ok = false;
-            o.nodeId = rest.mid(at + 1).toInt(&ok);
-            if (!ok || o.nodeId < 1 || o.nodeId > 247)
-                return bad(QStringLiteral("a Modbus node ID is 1..247"));
-            rest = rest.left(at);
-        }
-        if (rest.isEmpty())
-            return bad(QStringLiteral("no port after '%1'").arg(QLatin1String(prefix)));
-        o.port = rest;
-        o.baud = baud;
-        *out = device::LinkRequest::modbusDevice(o);
-        return true;
-    }
-    // PORT:BAUD: that device's rate (the family is still recognised, at that rate only).
-    QString port = spec;
-    const int colon = int(spec.lastIndexOf(QLatin1Char(':')));
-    if (colon > 0) {
-        bool ok = false;
-        const int own = spec.mid(colon + 1).toInt(&ok);
-        if (!ok || own <= 0)
-            return bad(QStringLiteral("a serial device is PORT or PORT:BAUD"));
-        port = spec.left(colon);
-        baud = own;
-    }
-    *out = device::LinkRequest::serial(port, baud);
-    return true;
-}
-
 // record PORT,PORT,... -o FOLDER: every device into one session folder (device/group_recording.h).
 int recordGroup(const QStringList &specs, const QString &folder, double duration, int baud)
 {
-    struct Device {
-        QString spec;
-        std::unique_ptr<device::LinkOpener> opener;
-        device::OpenedLink link;
-        model::DeviceIdentity identity;
-        device::SessionState state = device::SessionState::Closed;
-        QString error;
-        bool ready = false;
-    };
-    std::vector<Device> devices(size_t(specs.size()));
-    for (int i = 0; i < specs.size(); ++i) {
-        Device &d = devices[size_t(i)];
-        d.spec = specs[i];
-        device::LinkRequest request;
-        QString error;
-        if (!linkOf(d.spec, baud, &request, &error))
-            return fail(error, ExitUsage);
-        d.opener = std::make_unique<device::LinkOpener>();
-        QObject::connect(d.opener.get(), &device::LinkOpener::ready, [&d] { d.ready = true; });
-        QObject::connect(d.opener.get(), &device::LinkOpener::failed, [&d](const QString &why) { d.error = why; });
-        d.opener->open(request);
-    }
-    // The detections run side by side: at most 11 rates of under a second each.
-    waitFor([&] {
-        for (const Device &d : devices)
-            if (!d.ready && d.error.isEmpty())
-                return false;
-        return true;
-    }, 30000);
-    for (Device &d : devices) {
-        if (!d.ready) {
-            d.opener->cancel();
-            return fail(QStringLiteral("%1: %2").arg(d.spec, d.error.isEmpty() ? QStringLiteral("timed out opening it") : d.error),
-                        interrupted() ? ExitInterrupted : ExitFailure);
-        }
-        d.link = d.opener->take();
-        QObject::connect(d.link.link.get(), &device::DeviceLink::identityChanged,
-                         [&d](const model::DeviceIdentity &id) { d.identity = id; });
-        QObject::connect(d.link.link.get(), &device::DeviceLink::stateChanged,
-                         [&d](device::SessionState st, const QString &detail) {
-                             d.state = st;
-                             if (st == device::SessionState::Failed)
-                                 d.error = detail;
-                         });
-        if (d.link.start)
-            d.link.start();
-    }
-    waitFor([&] {
-        for (const Device &d : devices)
-            if (d.state != device::SessionState::Connected && d.error.isEmpty())
-                return false;
-        return true;
-    }, 15000);
+    std::vector<OpenDevice> devices;
+    if (const int code = openDevices(specs, baud, devices); code != ExitOk)
+        return code;
     std::vector<device::GroupRecording::Member> members;
-    for (Device &d : devices) {
+    for (OpenDevice &d : devices) {
         auto *session = qobject_cast<device::Session *>(d.link.link.get());
-        if (d.state != device::SessionState::Connected || !session)
-            return fail(QStringLiteral("%1: %2").arg(d.spec, !session ? QStringLiteral("this link cannot be recorded")
-                                                     : d.error.isEmpty() ? QStringLiteral("did not connect within 15 s")
-                                                                         : d.error),
-                        interrupted() ? ExitInterrupted : ExitFailure);
+        if (!session)
+            return fail(QStringLiteral("%1: this link cannot be recorded").arg(d.spec));
         // A name for the file and the manifest: the port without /dev/ ("ttyUSB0", "pts-3").
         QString name = d.spec;
         if (name.startsWith(QLatin1String("/dev/")))
@@ -200,7 +85,7 @@ int recordGroup(const QStringList &specs, const QString &folder, double duration
                 .arg(d.file, clocks.isEmpty() ? QString() : QStringLiteral("; clocks: ") + clocks.join(QStringLiteral(", ")),
                      d.droppedOut() ? QStringLiteral("; DROPPED OUT (marked in session.json)") : QString()));
     }
-    for (Device &d : devices)
+    for (OpenDevice &d : devices)
         d.link.link->close();
     if (!finishError.isEmpty())
         return fail(finishError);

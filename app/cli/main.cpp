@@ -35,6 +35,9 @@ void usage(FILE *to)
                "  export FOLDER --format csv|jsonl|mcap [-o OUT] [--grid-ms MS]  a session, its devices aligned\n"
                "  import CSV [-o OUT.imucap]             turn a vendor HI91 CSV into a capture\n"
                "  repair FILE.mcap [-o OUT]              complete an MCAP recording that was not closed (killed)\n"
+               "  bridge PORT[,PORT...] [--listen ADDR:PORT] [--udp HOST:PORT] [--duration S]\n"
+               "                                         stream the devices live to Foxglove, Lichtblick and\n"
+               "                                         PlotJuggler (Foxglove WebSocket; PlotJuggler UDP JSON)\n"
                "  analyze FILE [--json]                  statistics, output rate, Allan deviation of a capture or\n"
                "                                         vendor CSV\n"
                "  magcal FILE [--json] [--mode full|hard_iron_only|planar] [--field UT]\n"
@@ -156,6 +159,7 @@ int main(int argc, char **argv)
         {QStringLiteral("align"), cmdAlign},
         {QStringLiteral("analyze"), cmdAnalyze}, {QStringLiteral("import"), cmdImport},
         {QStringLiteral("repair"), cmdRepair},
+        {QStringLiteral("bridge"), cmdBridge},
         {QStringLiteral("update"), cmdUpdate},
         {QStringLiteral("hec495"), cmdHec495},
         {QStringLiteral("can"), cmdCan},

@@ -13,6 +13,7 @@
 #include <QString>
 
 #include <atomic>
+#include <memory>
 
 namespace imudesk::device {
 
@@ -47,8 +48,10 @@ public:
     // The documented commands with representative arguments, for completing what is typed.
     virtual QStringList textCommands() const { return {}; }
 
-    SampleStore &store() { return m_store; }
-    const SampleStore &store() const { return m_store; }
+    SampleStore &store() { return *m_store; }
+    const SampleStore &store() const { return *m_store; }
+    // The store for a reader in another thread that may outlive the link (the live bridge).
+    std::shared_ptr<SampleStore> sharedStore() const { return m_store; }
     SessionState state() const { return m_state.load(); }
 
 Q_SIGNALS:
@@ -66,7 +69,7 @@ protected:
     void setState(SessionState s, const QString &detail);
 
 private:
-    SampleStore m_store;
+    std::shared_ptr<SampleStore> m_store = std::make_shared<SampleStore>();
     std::atomic<SessionState> m_state{SessionState::Closed};
 };
 

@@ -15,7 +15,6 @@ namespace imudesk::format::mcap {
 
 namespace {
 
-constexpr char kMagic[] = "\x89MCAP0\r\n";
 
 // A little-endian reader over one record's content; every read checks the bounds.
 struct Fields {

@@ -15,8 +15,6 @@ static_assert(std::endian::native == std::endian::little, "message records are c
 
 namespace {
 
-constexpr char kMagic[] = "\x89MCAP0\r\n";
-constexpr size_t kMagicSize = 8;
 
 enum Op : uint8_t {
     OpHeader = 0x01,

@@ -12,6 +12,8 @@
 //
 // Plain value class over a QFile; not thread-safe. Every method after a failed write returns
 // false and error() says why (the disk full, the file gone).
+#include "format/mcap/channel_sink.h"
+
 #include <QFile>
 #include <QString>
 
@@ -24,7 +26,11 @@ struct ZSTD_CCtx_s; // zstd.h's compression context
 
 namespace imudesk::format::mcap {
 
-class McapWriter {
+// The file's first and last eight bytes.
+inline constexpr char kMagic[] = "\x89MCAP0\r\n";
+inline constexpr size_t kMagicSize = 8;
+
+class McapWriter final : public ChannelSink {
 public:
     enum class Compression { None, Zstd };
     struct Options {
@@ -34,10 +40,8 @@ public:
         size_t chunkBytes = 1u << 20;        // uncompressed records per chunk at most (about)
         int64_t chunkSpanNs = 1'000'000'000; // a chunk never spans more log time than this
     };
-    using StringMap = std::map<std::string, std::string>;
-
     McapWriter() = default;
-    ~McapWriter();
+    ~McapWriter() override;
     McapWriter(const McapWriter &) = delete;
     McapWriter &operator=(const McapWriter &) = delete;
 
@@ -46,12 +50,12 @@ public:
     // Ids from 1; 0 on failure. A schema or channel is written at once, into the open chunk if
     // there is one, before any message that uses it. The same schema, or the same channel, asked for again
     // gives the id it has.
-    uint16_t addSchema(const std::string &name, const std::string &encoding, const std::string &data);
+    uint16_t addSchema(const std::string &name, const std::string &encoding, const std::string &data) override;
     uint16_t addChannel(uint16_t schemaId, const std::string &topic, const std::string &messageEncoding,
-                        const StringMap &metadata = {});
+                        const StringMap &metadata = {}) override;
     // logTime, publishTime: ns (by convention since the Unix epoch).
     bool write(uint16_t channelId, uint32_t sequence, uint64_t logTime, uint64_t publishTime, const void *data,
-               size_t size);
+               size_t size) override;
     bool attach(const std::string &name, const std::string &mediaType, const std::string &data, uint64_t logTime,
                 uint64_t createTime);
     bool addMetadata(const std::string &name, const StringMap &values);

@@ -11,7 +11,7 @@ namespace {
 constexpr const char *kStatusSchema = R"({"title":"imudesk/Sample","description":"What of a sample no ROS message holds, with the keys of ImuDesk's JSON Lines export: main_status, the HEC495's and GNSS fields, system_time, host_time_ns, common_time_ns, common_uncertainty_ns.","type":"object"})";
 } // namespace
 
-SampleChannels::SampleChannels(McapWriter &writer, Device device) : m_writer(writer), m_device(std::move(device))
+SampleChannels::SampleChannels(ChannelSink &sink, Device device) : m_sink(sink), m_device(std::move(device))
 {
     m_prefix = "/imu/" + topicName(m_device.name) + "/";
     m_world = m_device.worldFrame == model::WorldFrame::Nwu ? "nwu" : "enu";
@@ -29,10 +29,10 @@ SampleChannels::Channel *SampleChannels::open(const std::string &topic, const st
                                               const char *schemaEncoding, const char *schemaData,
                                               const char *messageEncoding)
 {
-    const uint16_t schema = m_writer.addSchema(schemaName, schemaEncoding, schemaData);
+    const uint16_t schema = m_sink.addSchema(schemaName, schemaEncoding, schemaData);
     // /tf is the file's, not the device's: no device metadata, so every device shares one channel.
-    const uint16_t id = schema ? m_writer.addChannel(schema, topic, messageEncoding,
-                                                     topic == "/tf" ? McapWriter::StringMap{} : m_device.metadata)
+    const uint16_t id = schema ? m_sink.addChannel(schema, topic, messageEncoding,
+                                                     topic == "/tf" ? ChannelSink::StringMap{} : m_device.metadata)
                                : 0;
     if (!id)
         return nullptr;
@@ -59,7 +59,7 @@ bool SampleChannels::put(Kind kind, const model::Sample &s, uint64_t logTime, ui
     }
     const uint32_t sequence = s.has(model::FieldDeviceTime) ? uint32_t(int64_t(s.deviceTimeMs)) : c->sequence++;
     ++c->count;
-    return m_writer.write(c->id, sequence, logTime, publishTime, data.data(), data.size());
+    return m_sink.write(c->id, sequence, logTime, publishTime, data.data(), data.size());
 }
 
 std::map<std::string, uint64_t> SampleChannels::counts() const

@@ -1,6 +1,6 @@
 #pragma once
-// One device's samples as MCAP channels (mcap_writer.h, ros2_messages.h), under a topic
-// namespace of its own, /imu/<name>/...:
+// One device's samples as MCAP channels (ros2_messages.h) of a ChannelSink (an MCAP file, the
+// live bridge), under a topic namespace of its own, /imu/<name>/...:
 //   imu          sensor_msgs/msg/Imu            attitude, rates, accelerations
 //   mag          sensor_msgs/msg/MagneticField
 //   pressure     sensor_msgs/msg/FluidPressure
@@ -19,7 +19,7 @@
 // Times: log_time is the sample's arrival, publish_time and header.stamp its common time (its
 // arrival where it has none), both on the Unix epoch (epochOffsetNs added to the host clock's
 // times). sequence: the device's time stamp (ms) where it has one, else a count per channel.
-#include "format/mcap/mcap_writer.h"
+#include "format/mcap/channel_sink.h"
 #include "format/mcap/ros2_messages.h"
 #include "model/device_identity.h"
 #include "model/sample.h"
@@ -36,9 +36,10 @@ public:
         std::string name;    // the topic namespace's last part: a serial number or a name ([A-Za-z0-9_])
         std::string frameId; // the device's frame in header.frame_id and /tf
         model::WorldFrame worldFrame = model::WorldFrame::Enu;
-        McapWriter::StringMap metadata; // on every channel of the device (product, serial, ...)
+        ChannelSink::StringMap metadata; // on every channel of the device (product, serial, ...)
     };
-    SampleChannels(McapWriter &writer, Device device);
+    SampleChannels(ChannelSink &sink, Device device);
+    const Device &device() const { return m_device; }
 
     // A topic-safe name: letters, digits and '_' kept, anything else '_'; "device" when empty.
     static std::string topicName(const std::string &text);
@@ -61,7 +62,7 @@ private:
     static constexpr int64_t kTfPeriodNs = 20'000'000;
     static constexpr int64_t kStatusPeriodNs = 100'000'000;
 
-    McapWriter &m_writer;
+    ChannelSink &m_sink;
     Device m_device;
     std::string m_prefix;
     std::map<std::string, Channel> m_channels; // by topic (a map: its elements stay where they are)
