@@ -10,6 +10,8 @@
 #include <QCoreApplication>
 #include <QDateTime>
 #include <QElapsedTimer>
+#include <QTcpServer>
+#include <QTcpSocket>
 #include <QTimer>
 #include <QUdpSocket>
 #include <QUuid>
@@ -110,6 +112,7 @@ private:
     void publish(uint32_t channelId, uint64_t timeNs, const char *data, size_t size);
     void poll();
     void sendTime(uint64_t ns);
+    void onTcpConnection();
     void onConnection();
     void onText(Client *c, const QString &text);
     void onBinary(Client *c, const QByteArray &data);
@@ -123,7 +126,9 @@ private:
 
     LiveBridge *m_owner;
     BridgeOptions m_options;
+    std::unique_ptr<QTcpServer> m_tcp;
     std::unique_ptr<QWebSocketServer> m_server;
+    std::map<QTcpSocket *, QString> m_handshaking; // connections not yet WebSockets, with their peer
     std::unique_ptr<QUdpSocket> m_udp;
     QTimer *m_poll = nullptr;
     QTimer *m_statsTimer = nullptr;
@@ -152,23 +157,25 @@ QString BridgeWorker::start(const BridgeOptions &o, quint16 *port)
         m_server = std::make_unique<QWebSocketServer>(QStringLiteral("ImuDesk"), QWebSocketServer::NonSecureMode);
         m_server->setSupportedSubprotocols(foxglove::subprotocols());
         m_server->setHandshakeTimeout(5000); // a connection that never finishes its handshake goes
-        m_server->setMaxPendingConnections(8);
-        if (!m_server->listen(o.address, o.port)) {
-            const QString why = m_server->errorString();
+        // The TCP side is ours, so that a connection that never becomes a WebSocket (bytes that
+        // are no handshake, nothing sent at all) is seen and logged; the WebSocket server takes
+        // each connection's handshake.
+        m_tcp = std::make_unique<QTcpServer>();
+        m_tcp->setMaxPendingConnections(8);
+        if (!m_tcp->listen(o.address, o.port)) {
+            const QString why = m_tcp->errorString();
+            m_tcp.reset();
             m_server.reset();
             return QCoreApplication::translate("imudesk::bridge::LiveBridge", "Cannot listen on %1 port %2: %3")
                 .arg(o.address.toString()).arg(o.port).arg(why);
         }
-        *port = m_server->serverPort();
+        *port = m_tcp->serverPort();
+        QObject::connect(m_tcp.get(), &QTcpServer::newConnection, this, [this] { onTcpConnection(); });
         QObject::connect(m_server.get(), &QWebSocketServer::newConnection, this, [this] { onConnection(); });
         QObject::connect(m_server.get(), &QWebSocketServer::serverError, this,
                          [this](QWebSocketProtocol::CloseCode code) {
                              log(QStringLiteral("a connection was refused during its handshake (%1: %2)")
                                      .arg(int(code)).arg(m_server->errorString()));
-                         });
-        QObject::connect(m_server.get(), &QWebSocketServer::acceptError, this,
-                         [this](QAbstractSocket::SocketError) {
-                             log(QStringLiteral("a connection could not be accepted: %1").arg(m_server->errorString()));
                          });
         log(QStringLiteral("Foxglove WebSocket server listening on ws://%1:%2%3")
                 .arg(o.address.protocol() == QAbstractSocket::IPv6Protocol ? QLatin1Char('[') + o.address.toString() + QLatin1Char(']')
@@ -212,6 +219,11 @@ void BridgeWorker::stop()
     for (auto &[id, ch] : m_channels)
         ch.subscribers.clear();
     if (m_server) {
+        for (const auto &[tcp, peer] : m_handshaking)
+            tcp->deleteLater();
+        m_handshaking.clear();
+        m_tcp->close();
+        m_tcp.reset();
         m_server->close();
         m_server.reset();
         log(QStringLiteral("bridge stopped: %1 messages sent, %2 dropped").arg(m_stats.messagesSent).arg(m_stats.messagesDropped));
@@ -379,10 +391,38 @@ void BridgeWorker::poll()
     checkCaughtUp();
 }
 
+void BridgeWorker::onTcpConnection()
+{
+    while (QTcpSocket *tcp = m_tcp->nextPendingConnection()) {
+        const QString peer = QStringLiteral("%1:%2").arg(tcp->peerAddress().toString()).arg(tcp->peerPort());
+        // Ours until it is a WebSocket (then the WebSocket's: onConnection), not the TCP
+        // server's, which goes when the bridge stops.
+        tcp->setParent(this);
+        m_handshaking[tcp] = peer;
+        QObject::connect(tcp, &QTcpSocket::disconnected, this, [this, tcp] {
+            const auto it = m_handshaking.find(tcp);
+            if (it == m_handshaking.end())
+                return; // a WebSocket by now, or the bridge stopped
+            log(QStringLiteral("connection %1 closed without a WebSocket handshake (not a WebSocket client, or it sent "
+                               "nothing for 5 s)").arg(it->second));
+            m_handshaking.erase(it);
+            tcp->deleteLater();
+        });
+        m_server->handleConnection(tcp);
+    }
+}
+
 void BridgeWorker::onConnection()
 {
     while (QWebSocket *socket = m_server->nextPendingConnection()) {
         const QString peer = peerOf(socket);
+        for (auto it = m_handshaking.begin(); it != m_handshaking.end(); ++it)
+            if (it->second == peer) {
+                if (it->first->parent() == this)
+                    it->first->setParent(socket); // goes with its WebSocket
+                m_handshaking.erase(it);
+                break;
+            }
         if (int(m_clients.size()) >= m_options.maxClients) {
             log(QStringLiteral("client %1 refused: %2 clients are connected already").arg(peer).arg(m_clients.size()));
             socket->close(QWebSocketProtocol::CloseCodePolicyViolated, QStringLiteral("too many clients"));

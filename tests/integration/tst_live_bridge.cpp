@@ -1,0 +1,425 @@
+// The live bridge (core/bridge/live_bridge.h, issue 37 point 2).
+//  - The official Foxglove client (@foxglove/ws-protocol, tests/mcap/foxglove_client.mjs) with
+//    each subprotocol name, both connected at once to `imudesk-cli bridge` over four simulated
+//    modules at 1 kHz for 60 s: every sample of every device arrives (no gap in the header stamps
+//    on the device's 1 ms grid), stamped with its common time, decoded without error, and the
+//    client's count is what the bridge says it sent.
+//  - Hostile clients against a session that records: bytes that are no handshake, a client that
+//    offers no subprotocol, garbage requests, an oversized message, 200 connects and disconnects,
+//    and a client that never reads. The session loses no frame, the recording holds every
+//    frame decoded, memory stays bounded, and each case is in the bridge's log.
+#include "bridge/live_bridge.h"
+#include "protocol/hipnuc/frame_decoder.h"
+#include "../common/capture_bytes.h"
+#include "../common/cli_process.h"
+#include "../common/session_send.h"
+#include "../common/sim_session.h"
+#include "../common/test_main.h"
+
+#include <QDir>
+#include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
+#include <QRegularExpression>
+#include <QTcpSocket>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QWebSocket>
+#include <QWebSocketHandshakeOptions>
+
+#include <arpa/inet.h>
+#include <netinet/in.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+#include <random>
+
+using namespace imudesk;
+
+namespace {
+
+QString toolsDir() { return QDir::cleanPath(QString::fromUtf8(IMUDESK_TEST_DATA) + QStringLiteral("/../mcap")); }
+
+// The process's resident memory, kB.
+long residentKb()
+{
+    QFile f(QStringLiteral("/proc/self/status"));
+    if (!f.open(QIODevice::ReadOnly))
+        return 0;
+    for (const QByteArray &line : f.readAll().split('\n'))
+        if (line.startsWith("VmRSS:"))
+            return line.mid(6).trimmed().split(' ').front().toLong();
+    return 0;
+}
+
+// A WebSocket client frame (masked, as a client's must be) holding text.
+QByteArray clientTextFrame(const QByteArray &text)
+{
+    QByteArray f;
+    f.append(char(0x81));
+    if (text.size() < 126) {
+        f.append(char(0x80 | text.size()));
+    } else {
+        f.append(char(0x80 | 126));
+        f.append(char((text.size() >> 8) & 0xff));
+        f.append(char(text.size() & 0xff));
+    }
+    const char mask[4] = {0x12, 0x34, 0x56, 0x78};
+    f.append(mask, 4);
+    for (qsizetype i = 0; i < text.size(); ++i)
+        f.append(char(text[i] ^ mask[i % 4]));
+    return f;
+}
+
+// A client on a plain socket that completes the handshake, subscribes to channels 1..n and then
+// never reads again (its receive buffer kept small).
+class NeverReadingClient {
+public:
+    bool connectTo(quint16 port, int channels)
+    {
+        m_fd = ::socket(AF_INET, SOCK_STREAM, 0);
+        int small = 4096;
+        ::setsockopt(m_fd, SOL_SOCKET, SO_RCVBUF, &small, sizeof small);
+        timeval tv{5, 0};
+        ::setsockopt(m_fd, SOL_SOCKET, SO_RCVTIMEO, &tv, sizeof tv);
+        sockaddr_in a{};
+        a.sin_family = AF_INET;
+        a.sin_port = htons(port);
+        a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+        if (::connect(m_fd, reinterpret_cast<sockaddr *>(&a), sizeof a) != 0)
+            return false;
+        const QByteArray hello = QStringLiteral("GET / HTTP/1.1\r\nHost: 127.0.0.1:%1\r\nUpgrade: websocket\r\n"
+                                                "Connection: Upgrade\r\nSec-WebSocket-Key: dGhlIHNhbXBsZSBub25jZQ==\r\n"
+                                                "Sec-WebSocket-Version: 13\r\nSec-WebSocket-Protocol: foxglove.websocket.v1\r\n\r\n")
+                                     .arg(port).toLatin1();
+        if (!sendAll(hello))
+            return false;
+        QByteArray reply;
+        char buf[512];
+        while (!reply.contains("\r\n\r\n")) {
+            const ssize_t n = ::recv(m_fd, buf, sizeof buf, 0);
+            if (n <= 0)
+                return false;
+            reply.append(buf, n);
+        }
+        if (!reply.startsWith("HTTP/1.1 101"))
+            return false;
+        QJsonArray subs;
+        for (int i = 1; i <= channels; ++i)
+            subs.append(QJsonObject{{QStringLiteral("id"), i}, {QStringLiteral("channelId"), i}});
+        return sendAll(clientTextFrame(QJsonDocument(QJsonObject{{QStringLiteral("op"), QStringLiteral("subscribe")},
+                                                                 {QStringLiteral("subscriptions"), subs}})
+                                           .toJson(QJsonDocument::Compact)));
+    }
+    void close()
+    {
+        if (m_fd >= 0)
+            ::close(m_fd);
+        m_fd = -1;
+    }
+    ~NeverReadingClient() { close(); }
+
+private:
+    bool sendAll(const QByteArray &b)
+    {
+        qsizetype done = 0;
+        while (done < b.size()) {
+            const ssize_t n = ::send(m_fd, b.constData() + done, size_t(b.size() - done), MSG_NOSIGNAL);
+            if (n <= 0)
+                return false;
+            done += n;
+        }
+        return true;
+    }
+    int m_fd = -1;
+};
+
+QWebSocketHandshakeOptions foxgloveOptions(const QString &protocol = QStringLiteral("foxglove.websocket.v1"))
+{
+    QWebSocketHandshakeOptions o;
+    if (!protocol.isEmpty())
+        o.setSubprotocols({protocol});
+    return o;
+}
+
+int countLines(const QStringList &log, const QString &pattern)
+{
+    const QRegularExpression re(pattern);
+    return int(std::count_if(log.begin(), log.end(), [&re](const QString &l) { return re.match(l).hasMatch(); }));
+}
+
+} // namespace
+
+class TstLiveBridge : public QObject {
+    Q_OBJECT
+private Q_SLOTS:
+    void initTestCase()
+    {
+        if (!QFile::exists(QDir(toolsDir()).filePath(QStringLiteral("node_modules/@foxglove/ws-protocol/package.json"))))
+            QFAIL(qPrintable(QStringLiteral("The official Foxglove client is not installed in %1: run `npm ci --prefix "
+                                            "tests/mcap` (the README's set-up commands do).").arg(toolsDir())));
+    }
+
+    void officialClientGetsEverySample()
+    {
+        constexpr int kDevices = 4;
+        const int seconds = qEnvironmentVariableIsSet("IMUDESK_BRIDGE_SECONDS")
+                                ? qEnvironmentVariableIntValue("IMUDESK_BRIDGE_SECONDS") : 60;
+        std::vector<std::unique_ptr<QProcess>> sims;
+        QStringList ports;
+        for (int i = 0; i < kDevices; ++i) {
+            auto sim = std::make_unique<QProcess>();
+            sim->start(QString::fromUtf8(IMUDESK_CLI_PATH), {QStringLiteral("simulate"), QStringLiteral("--pty"),
+                                                              QStringLiteral("--baud"), QStringLiteral("921600"),
+                                                              QStringLiteral("--seed"), QString::number(i + 1)});
+            QVERIFY(sim->waitForStarted());
+            QTRY_VERIFY_WITH_TIMEOUT(sim->canReadLine(), 10000);
+            const QString first = QString::fromUtf8(sim->readLine()).trimmed();
+            QVERIFY2(first.startsWith(QStringLiteral("pty: /dev/")), qPrintable(first));
+            const QString pty = first.mid(5);
+            QProcess send;
+            send.start(QString::fromUtf8(IMUDESK_CLI_PATH), {QStringLiteral("send"), pty, QStringLiteral("--baud"),
+                                                              QStringLiteral("921600"), QStringLiteral("LOG HI91 ONTIME 0.001")});
+            QVERIFY(send.waitForFinished(15000) && send.exitCode() == 0);
+            ports << pty + QStringLiteral(":921600");
+            sims.push_back(std::move(sim));
+        }
+        QProcess bridge;
+        bridge.start(QString::fromUtf8(IMUDESK_CLI_PATH), {QStringLiteral("bridge"), ports.join(QLatin1Char(',')),
+                                                            QStringLiteral("--listen"), QStringLiteral("127.0.0.1:0")});
+        QVERIFY(bridge.waitForStarted());
+        QByteArray said; // accumulated: a QTRY evaluates its condition again once it holds
+        QTRY_VERIFY_WITH_TIMEOUT((said += bridge.readAllStandardOutput()).contains("ws://"), 30000);
+        const QString url = QRegularExpression(QStringLiteral("ws://[0-9.]+:[0-9]+")).match(QString::fromUtf8(said)).captured(0);
+        QVERIFY(!url.isEmpty());
+
+        // Both names at once: each client gets every message.
+        const QStringList protocols{QStringLiteral("foxglove.websocket.v1"), QStringLiteral("foxglove.sdk.v1")};
+        std::vector<std::unique_ptr<QProcess>> clients;
+        for (const QString &protocol : protocols) {
+            auto c = std::make_unique<QProcess>();
+            // Every device's imu, mag, pressure, temperature and euler (the status channel comes
+            // at 10 Hz): 20 channels before the measured minute starts.
+            c->start(QStringLiteral("node"), {QDir(toolsDir()).filePath(QStringLiteral("foxglove_client.mjs")),
+                                               QStringLiteral("--url"), url, QStringLiteral("--subprotocol"), protocol,
+                                               QStringLiteral("--seconds"), QString::number(seconds + 60),
+                                               QStringLiteral("--period-ms"), QStringLiteral("1"),
+                                               QStringLiteral("--expect-channels"), QString::number(kDevices * 5)});
+            QVERIFY(c->waitForStarted());
+            clients.push_back(std::move(c));
+        }
+        for (auto &c : clients) {
+            QByteArray err;
+            QTRY_VERIFY_WITH_TIMEOUT((err += c->readAllStandardError()).contains("ready"), 30000);
+        }
+        QTest::qWait(seconds * 1000);
+        QList<QJsonObject> summaries;
+        for (auto &c : clients) {
+            c->terminate();
+            QVERIFY(c->waitForFinished(20000));
+            const QByteArray out = c->readAllStandardOutput();
+            summaries << QJsonDocument::fromJson(out).object();
+            QVERIFY2(!summaries.back().isEmpty() && !summaries.back().contains(QStringLiteral("error")), out.constData());
+        }
+        QTest::qWait(500);
+        test::stopCli(bridge);
+        const QString bridgeLog = QString::fromUtf8(bridge.readAllStandardError());
+        const QString bridgeOut = QString::fromUtf8(said + bridge.readAllStandardOutput());
+        for (auto &s : sims)
+            test::stopCli(*s);
+
+        for (int i = 0; i < protocols.size(); ++i) {
+            const QJsonObject &s = summaries[i];
+            QCOMPARE(s.value(QStringLiteral("protocol")).toString(), protocols[i]);
+            const QJsonObject info = s.value(QStringLiteral("serverInfo")).toObject();
+            QVERIFY(info.value(QStringLiteral("capabilities")).toArray().contains(QStringLiteral("time")));
+            QVERIFY(s.value(QStringLiteral("timeMessages")).toInt() > seconds * 10);
+            QCOMPARE(s.value(QStringLiteral("decodeErrors")).toInt(), 0);
+            QCOMPARE(s.value(QStringLiteral("protocolErrors")).toInt(), 0);
+            const QJsonObject counts = s.value(QStringLiteral("counts")).toObject();
+            const QJsonObject gaps = s.value(QStringLiteral("stampMissing")).toObject();
+            const QJsonObject mismatch = s.value(QStringLiteral("stampMismatch")).toObject();
+            const QJsonObject backwards = s.value(QStringLiteral("outOfOrder")).toObject();
+            int imuTopics = 0;
+            for (auto it = counts.begin(); it != counts.end(); ++it) {
+                QCOMPARE(gaps.value(it.key()).toInt(), 0);
+                QCOMPARE(mismatch.value(it.key()).toInt(), 0);
+                if (it.key() != QLatin1String("/tf"))
+                    QCOMPARE(backwards.value(it.key()).toInt(), 0);
+                if (!it.key().endsWith(QLatin1String("/imu")))
+                    continue;
+                ++imuTopics;
+                // A minute at 1 kHz, from the moment the client was ready to its end.
+                QVERIFY2(it.value().toInteger() >= qint64(seconds) * 1000 - 200,
+                         qPrintable(QStringLiteral("%1: %2").arg(it.key()).arg(it.value().toInteger())));
+                // Every sample's five messages: the same count on each of the device's topics, but
+                // for the few ms between the subscriptions to them (each is subscribed to as it
+                // is advertised); the gaps above prove each topic whole from its first message.
+                const QString prefix = it.key().chopped(3);
+                for (const char *topic : {"mag", "pressure", "temperature", "euler"})
+                    QVERIFY2(std::abs(counts.value(prefix + QLatin1String(topic)).toInteger() - it.value().toInteger()) <= 100,
+                             qPrintable(prefix + QLatin1String(topic)));
+            }
+            QCOMPARE(imuTopics, kDevices);
+            // The bridge dropped nothing for either client, and sent each at least what it
+            // counted (it goes on sending until the client's close arrives; the client stops
+            // counting when it is told to stop).
+            const QRegularExpression sent(QStringLiteral("disconnected \\(1000, done\\): (\\d+) messages sent, (\\d+) dropped"));
+            int closed = 0;
+            for (auto m = sent.globalMatch(bridgeLog); m.hasNext();) {
+                const auto match = m.next();
+                QCOMPARE(match.captured(2).toLongLong(), 0);
+                ++closed;
+            }
+            QCOMPARE(closed, int(protocols.size()));
+        }
+        QVERIFY2(bridgeOut.contains(QStringLiteral(", 0 missed;")) && bridgeOut.contains(QStringLiteral(", 0 dropped;")),
+                 qPrintable(bridgeOut));
+    }
+
+    void hostileClients()
+    {
+        QTemporaryDir dir;
+        sim::SimOptions options;
+        options.baud = 921600;
+        test::SimSession sim(options);
+        test::connectSession(sim, 921600);
+        // The frames decoded before the recording, counted while the module is quiet: the
+        // recording must then hold every frame decoded after.
+        device::SessionStats stats;
+        connect(&sim.session, &device::DeviceLink::statsUpdated, this, [&stats](const device::SessionStats &s) { stats = s; });
+        QVERIFY(test::sendAndWait(sim.session, QStringLiteral("LOG DISABLE"), 3000).ok());
+        QTest::qWait(1200); // two statistics updates
+        const uint64_t framesBefore = stats.frames;
+        const QString capture = dir.filePath(QStringLiteral("hostile.imucap"));
+        bool recording = false;
+        connect(&sim.session, &device::Session::recordingStarted, this, [&] { recording = true; });
+        sim.session.startRecording(capture);
+        QTRY_VERIFY(recording);
+        QVERIFY(test::sendAndWait(sim.session, QStringLiteral("LOG HI91 ONTIME 0.001"), 3000).ok());
+        QVERIFY(test::sendAndWait(sim.session, QStringLiteral("LOG ENABLE"), 3000).ok());
+
+        bridge::LiveBridge bridge;
+        QStringList log;
+        connect(&bridge, &bridge::LiveBridge::logged, this, [&log](const QString &l) { log << l; });
+        bridge::BridgeOptions o;
+        o.port = 0;
+        o.clientBufferBytes = 1 << 20;
+        QString error;
+        QVERIFY2(bridge.start(o, &error), qPrintable(error));
+        record::CaptureHeader header;
+        bridge.addDevice(sim.session.sharedStore(), header, QStringLiteral("SN-HOSTILE"));
+        const QUrl url(bridge.url());
+        QTRY_VERIFY(bridge.stats().samples > 100);
+        const long rssBefore = residentKb();
+
+        // 1. Bytes that are no WebSocket handshake: the connection is closed, logged.
+        {
+            QTcpSocket raw;
+            raw.connectToHost(QHostAddress::LocalHost, bridge.port());
+            QVERIFY(raw.waitForConnected(3000));
+            std::mt19937 rng(7);
+            QByteArray junk(8192, Qt::Uninitialized);
+            for (char &c : junk)
+                c = char(rng());
+            raw.write("GARBAGE / HTTP/0.0\r\n\r\n" + junk);
+            QTRY_COMPARE_WITH_TIMEOUT(raw.state(), QAbstractSocket::UnconnectedState, 10000);
+        }
+        // 2. A WebSocket client that offers no subprotocol: closed with a protocol error.
+        {
+            QWebSocket ws;
+            ws.open(url, foxgloveOptions(QString()));
+            QTRY_COMPARE_WITH_TIMEOUT(ws.state(), QAbstractSocket::UnconnectedState, 5000);
+            QTRY_VERIFY(countLines(log, QStringLiteral("offered no Foxglove subprotocol")) == 1);
+        }
+        // 3. Garbage requests (text that is no JSON, a binary message, an op not offered): a
+        //    status error for each, the client stays connected.
+        {
+            QWebSocket ws;
+            QList<QJsonObject> statuses;
+            connect(&ws, &QWebSocket::textMessageReceived, this, [&statuses](const QString &t) {
+                const QJsonObject o = QJsonDocument::fromJson(t.toUtf8()).object();
+                if (o.value(QStringLiteral("op")).toString() == QLatin1String("status"))
+                    statuses << o;
+            });
+            ws.open(url, foxgloveOptions(QStringLiteral("foxglove.sdk.v1")));
+            QTRY_COMPARE_WITH_TIMEOUT(ws.state(), QAbstractSocket::ConnectedState, 5000);
+            QCOMPARE(ws.subprotocol(), QStringLiteral("foxglove.sdk.v1"));
+            ws.sendTextMessage(QStringLiteral("{{{ this is not JSON"));
+            ws.sendBinaryMessage(QByteArray("\x01\x00\x00\x00\xff", 5));
+            ws.sendTextMessage(QStringLiteral(R"({"op":"setParameters","parameters":[]})"));
+            ws.sendTextMessage(QStringLiteral(R"({"op":"subscribe","subscriptions":[{"id":1,"channelId":99999}]})"));
+            QTRY_COMPARE_WITH_TIMEOUT(statuses.size(), 4, 5000);
+            for (const QJsonObject &s : statuses)
+                QCOMPARE(s.value(QStringLiteral("level")).toInt(), 2);
+            QCOMPARE(ws.state(), QAbstractSocket::ConnectedState);
+            ws.close();
+            QTRY_COMPARE(ws.state(), QAbstractSocket::UnconnectedState);
+        }
+        // 4. An oversized message (200 kB, the limit 64 kB): the server closes the connection
+        //    with "too much data".
+        {
+            QWebSocket ws;
+            ws.open(url, foxgloveOptions());
+            QTRY_COMPARE_WITH_TIMEOUT(ws.state(), QAbstractSocket::ConnectedState, 5000);
+            ws.sendTextMessage(QString(200 * 1024, QLatin1Char('x')));
+            QTRY_COMPARE_WITH_TIMEOUT(ws.state(), QAbstractSocket::UnconnectedState, 5000);
+            QCOMPARE(ws.closeCode(), QWebSocketProtocol::CloseCodeTooMuchData);
+        }
+        // 5. 200 connects and disconnects in a row.
+        for (int i = 0; i < 200; ++i) {
+            QWebSocket ws;
+            ws.open(url, foxgloveOptions(i % 2 ? QStringLiteral("foxglove.sdk.v1") : QStringLiteral("foxglove.websocket.v1")));
+            QTRY_COMPARE_WITH_TIMEOUT(ws.state(), QAbstractSocket::ConnectedState, 5000);
+            ws.close();
+            QTRY_COMPARE_WITH_TIMEOUT(ws.state(), QAbstractSocket::UnconnectedState, 5000);
+        }
+        QTRY_COMPARE_WITH_TIMEOUT(bridge.stats().clients, 0, 5000);
+        // 6. A client that never reads: once its unsent data passes 1 MB its messages are dropped,
+        //    counted and logged; memory stays bounded; its end is logged.
+        {
+            NeverReadingClient stuck;
+            QVERIFY(stuck.connectTo(bridge.port(), 8));
+            QTRY_VERIFY_WITH_TIMEOUT(bridge.stats().messagesDropped > 20000, 60000);
+            QVERIFY(countLines(log, QStringLiteral("does not keep up")) >= 1);
+            const long rssStuck = residentKb();
+            QVERIFY2(rssStuck - rssBefore < 64 * 1024, qPrintable(QStringLiteral("%1 kB -> %2 kB").arg(rssBefore).arg(rssStuck)));
+            stuck.close();
+            QTRY_COMPARE_WITH_TIMEOUT(bridge.stats().clients, 0, 10000);
+        }
+
+        // The session lost nothing and the recording holds every frame it decoded.
+        QVERIFY(test::sendAndWait(sim.session, QStringLiteral("LOG DISABLE"), 3000).ok());
+        QTest::qWait(1200);
+        bool stopped = false;
+        connect(&sim.session, &device::Session::recordingStopped, this, [&] { stopped = true; });
+        sim.session.stopRecording();
+        QTRY_VERIFY(stopped);
+        QCOMPARE(stats.framesLost, uint64_t(0));
+        QCOMPARE(stats.crcErrors, uint64_t(0));
+        const QByteArray bytes = test::receivedBytes(capture);
+        protocol::hipnuc::FrameDecoder decoder;
+        const auto frames = decoder.feed(reinterpret_cast<const uint8_t *>(bytes.constData()), size_t(bytes.size()));
+        QVERIFY(frames.size() > 10000);
+        QCOMPARE(uint64_t(frames.size()), stats.frames - framesBefore);
+        const bridge::BridgeStats b = bridge.stats();
+        QCOMPARE(b.samplesMissed, quint64(0));
+        bridge.stop();
+
+        // Each case in the log.
+        const QString all = log.join(QLatin1Char('\n'));
+        QVERIFY2(countLines(log, QStringLiteral("handshake")) >= 1, qPrintable(log.filter(QRegularExpression(QStringLiteral("^(?!client .* (dis)?connected)"))).join(QLatin1Char(10))));
+        QVERIFY(countLines(log, QStringLiteral("request ignored: not JSON")) == 1);
+        QVERIFY(countLines(log, QStringLiteral("binary message of 5 bytes ignored")) == 1);
+        QVERIFY(countLines(log, QStringLiteral("\"setParameters\" is not supported")) == 1);
+        QVERIFY(countLines(log, QStringLiteral("no channel 99999")) == 1);
+        QVERIFY2(countLines(log, QStringLiteral("disconnected \\(1009")) == 1, qPrintable(all.right(3000)));
+        QVERIFY(countLines(log, QStringLiteral(" connected \\(foxglove")) >= 203);
+        QVERIFY(countLines(log, QStringLiteral(" disconnected \\(")) >= 203);
+    }
+};
+
+IMUDESK_TEST_GUILESS_MAIN(TstLiveBridge)
+#include "tst_live_bridge.moc"
