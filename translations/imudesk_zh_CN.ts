@@ -1139,26 +1139,26 @@
 <context>
     <name>CaptureExporter</name>
     <message>
-        <location filename="../core/record/capture_exporter.cpp" line="+107"/>
-        <location line="+146"/>
+        <location filename="../core/record/capture_exporter.cpp" line="+121"/>
+        <location line="+152"/>
         <location line="+6"/>
         <source>Cannot write %1: %2</source>
         <translation>无法写入 %1：%2</translation>
     </message>
     <message>
-        <location line="-160"/>
-        <location line="+189"/>
+        <location line="-166"/>
+        <location line="+208"/>
         <location line="+28"/>
         <source>Writing %1 failed: %2. Check the free disk space.</source>
         <translation>写入 %1 失败：%2。请检查磁盘剩余空间。</translation>
     </message>
     <message>
-        <location line="-44"/>
+        <location line="-59"/>
         <source>The capture holds %1 frame types; the vendor layout has a file for each: %2</source>
         <translation>该记录含有 %1 种帧类型；厂商格式为每种各写一个文件：%2</translation>
     </message>
     <message>
-        <location line="+183"/>
+        <location line="+203"/>
         <source>No output file was given.</source>
         <translation>未指定输出文件。</translation>
     </message>
@@ -2680,7 +2680,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>McapRecording</name>
     <message>
-        <location filename="../core/record/mcap_recording.cpp" line="+84"/>
+        <location filename="../core/record/mcap_recording.cpp" line="+88"/>
         <source>Cannot write %1: %2</source>
         <translation>无法写入 %1：%2</translation>
     </message>
@@ -2688,7 +2688,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>McapRepair</name>
     <message>
-        <location filename="../core/format/mcap/mcap_repair.cpp" line="+182"/>
+        <location filename="../core/format/mcap/mcap_repair.cpp" line="+181"/>
         <source>%1 cannot be read: %2</source>
         <translation>无法读取 %1：%2</translation>
     </message>
@@ -3360,7 +3360,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>SessionExporter</name>
     <message>
-        <location filename="../core/record/session_exporter.cpp" line="+158"/>
+        <location filename="../core/record/session_exporter.cpp" line="+196"/>
+        <source>A session of several devices exports to tidy CSV, JSON Lines, MCAP or MATLAB; the vendor&apos;s layout has one device per file (export each capture on its own for it).</source>
+        <translation>多设备会话可导出为整齐 CSV、JSON Lines、MCAP 或 MATLAB；厂商格式每个文件只含一台设备（如需该格式，请逐个导出各记录）。</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>A grid or trigger pairs are written as tidy CSV (--format csv).</source>
         <translation>网格或触发配对以整洁 CSV 写出（--format csv）。</translation>
     </message>
@@ -3390,36 +3395,32 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>该会话中没有设备。</translation>
     </message>
     <message>
-        <location line="-104"/>
-        <location line="+113"/>
+        <location line="-131"/>
+        <location line="+144"/>
         <source>Cannot write %1: %2</source>
         <translation>无法写入 %1：%2</translation>
     </message>
     <message>
-        <location line="-65"/>
-        <location line="+101"/>
-        <location line="+96"/>
+        <location line="-108"/>
+        <location line="+40"/>
+        <location line="+104"/>
+        <location line="+85"/>
         <source>Export cancelled.</source>
         <translation>导出已取消。</translation>
     </message>
     <message>
-        <location line="-174"/>
-        <source>A session of several devices exports to tidy CSV, JSON Lines or MCAP; the vendor&apos;s layout has one device per file (export each capture on its own for it).</source>
-        <translation>多设备会话可导出为整齐 CSV、JSON Lines 或 MCAP；厂商格式每个文件只含一台设备（如需该格式，请逐个导出各记录）。</translation>
-    </message>
-    <message>
-        <location line="+137"/>
+        <location line="-26"/>
         <source>%1 frames of devices whose clock never aligned have no pulse index.</source>
         <translation>时钟从未对齐的设备有 %1 帧没有脉冲序号。</translation>
     </message>
     <message>
-        <location line="+99"/>
+        <location line="+88"/>
         <source>Device %1 (%2): nothing in its capture that ImuDesk decodes offline (Modbus captures are not decoded yet); it is left out.</source>
         <translation>设备 %1（%2）：其记录中没有 ImuDesk 可离线解码的内容（Modbus 记录尚不能解码），已略去。</translation>
     </message>
     <message>
-        <location line="-253"/>
-        <location line="+258"/>
+        <location line="-285"/>
+        <location line="+290"/>
         <source>Writing %1 failed: %2. Free some space or choose another place.</source>
         <translation>写入 %1 失败：%2。请释放一些空间或选择其他位置。</translation>
     </message>
@@ -4210,6 +4211,14 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <location line="+23"/>
         <source>the file is empty: no HI91 CSV header</source>
         <translation>文件为空：没有 HI91 CSV 表头</translation>
+    </message>
+</context>
+<context>
+    <name>imudesk::bridge::LiveBridge</name>
+    <message>
+        <location filename="../core/bridge/live_bridge.cpp" line="+169"/>
+        <source>Cannot listen on %1 port %2: %3</source>
+        <translation>无法在 %1 的端口 %2 上监听：%3</translation>
     </message>
 </context>
 <context>
@@ -7705,6 +7714,39 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
 </context>
 <context>
+    <name>imudesk::ui::BridgeController</name>
+    <message>
+        <location filename="../ui/bridge/bridge_controller.cpp" line="+90"/>
+        <source>Live bridge %1</source>
+        <translation>实时桥接 %1</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>clients: %1</source>
+        <translation>客户端：%1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>sent: %1</source>
+        <translation>已发送：%1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>dropped: %1</source>
+        <translation>已丢弃：%1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Live bridge</source>
+        <translation>实时桥接</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>UDP: %1</source>
+        <translation>UDP：%1</translation>
+    </message>
+</context>
+<context>
     <name>imudesk::ui::BusConnect</name>
     <message>
         <location filename="../ui/bus/bus_connect_dialog.cpp" line="+27"/>
@@ -9645,12 +9687,12 @@ Link load = bytes per second × 10 bits / baud rate.</source>
 <context>
     <name>imudesk::ui::ExportDialog</name>
     <message>
-        <location filename="../ui/recording/export_dialog.cpp" line="+107"/>
+        <location filename="../ui/recording/export_dialog.cpp" line="+108"/>
         <source>Export %1</source>
         <translation>导出 %1</translation>
     </message>
     <message>
-        <location line="-82"/>
+        <location line="-83"/>
         <source>The capture to export: a recording, a vendor CSV or a raw byte dump</source>
         <translation>要导出的捕获：录制文件、厂商 CSV 或原始字节转储</translation>
     </message>
@@ -9683,6 +9725,11 @@ Link load = bytes per second × 10 bits / baud rate.</source>
         <location line="+1"/>
         <source>MCAP (ROS 2: PlotJuggler, Foxglove, Lichtblick)</source>
         <translation>MCAP（ROS 2：PlotJuggler、Foxglove、Lichtblick）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>MATLAB .mat (a struct per device, SI units)</source>
+        <translation>MATLAB .mat（每台设备一个结构体，国际单位制）</translation>
     </message>
     <message>
         <location line="+7"/>
@@ -10633,6 +10680,148 @@ Method: %3</source>
     </message>
 </context>
 <context>
+    <name>imudesk::ui::LiveBridgeDialog</name>
+    <message>
+        <location filename="../ui/bridge/live_bridge_dialog.cpp" line="+148"/>
+        <source>Live bridge</source>
+        <translation>实时桥接</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Foxglove WebSocket (Foxglove, Lichtblick, PlotJuggler)</source>
+        <translation>Foxglove WebSocket（Foxglove、Lichtblick、PlotJuggler）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Address:</source>
+        <translation>地址(&amp;A)：</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>127.0.0.1 (this computer only)</source>
+        <translation>127.0.0.1（仅本机）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>0.0.0.0 (every network of this computer)</source>
+        <translation>0.0.0.0（本机的所有网络）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Where clients may connect from. Another address than 127.0.0.1 lets anyone on that network read the data: the Foxglove protocol has no password.</source>
+        <translation>客户端可从何处连接。127.0.0.1 以外的地址允许该网络上的任何人读取数据：Foxglove 协议没有密码。</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Port:</source>
+        <translation>端口(&amp;P)：</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>TCP port of the WebSocket server (Foxglove&apos;s usual port: 8765)</source>
+        <translation>WebSocket 服务器的 TCP 端口（Foxglove 常用端口：8765）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Foxglove and Lichtblick: Open connection &gt; Foxglove WebSocket, ws://127.0.0.1:%1. PlotJuggler: Streaming &gt; Foxglove Bridge. Each device&apos;s topics are /imu/&lt;serial&gt;/imu, mag, euler, status, ... as in an MCAP recording.</source>
+        <translation>Foxglove 和 Lichtblick：Open connection &gt; Foxglove WebSocket，ws://127.0.0.1:%1。PlotJuggler：Streaming &gt; Foxglove Bridge。每台设备的话题为 /imu/&lt;序列号&gt;/imu、mag、euler、status 等，与 MCAP 记录相同。</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>PlotJuggler UDP (JSON)</source>
+        <translation>PlotJuggler UDP（JSON）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Host:</source>
+        <translation>主机(&amp;H)：</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Computer running PlotJuggler&apos;s UDP server (Streaming &gt; UDP Server, message protocol JSON, time stamp from the field &quot;timestamp&quot;)</source>
+        <translation>运行 PlotJuggler UDP 服务器的计算机（Streaming &gt; UDP Server，消息协议 JSON，时间戳取自字段 &quot;timestamp&quot;）</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>P&amp;ort:</source>
+        <translation>端口(&amp;O)：</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>UDP port PlotJuggler listens on (its default: 9870)</source>
+        <translation>PlotJuggler 监听的 UDP 端口（默认：9870）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Log (clients, refused requests, dropped messages):</source>
+        <translation>日志(&amp;L)（客户端、被拒绝的请求、丢弃的消息）：</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Close</source>
+        <translation>关闭</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Warning: %1 is not this computer only. Anyone who can reach it on the network can read the devices&apos; data: the protocol has no password.</source>
+        <translation>警告：%1 不仅限本机。网络上能访问它的任何人都可以读取设备数据：该协议没有密码。</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>&amp;Stop</source>
+        <translation>停止(&amp;S)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>&amp;Start</source>
+        <translation>开始(&amp;S)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Stop the bridge (Ctrl+Shift+B opens this window)</source>
+        <translation>停止桥接（Ctrl+Shift+B 打开此窗口）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Send the connected devices&apos; samples from now on</source>
+        <translation>从现在起发送已连接设备的采样</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Stopped</source>
+        <translation>已停止</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1
+%2 device(s); samples: %3, missed: %4</source>
+        <translation>%1
+%2 台设备；采样：%3，遗漏：%4</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>Choose the Foxglove WebSocket server, PlotJuggler UDP or both.</source>
+        <translation>请选择 Foxglove WebSocket 服务器、PlotJuggler UDP 或两者。</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>&apos;%1&apos; is not an IP address. Use 127.0.0.1 for this computer only or 0.0.0.0 for every network.</source>
+        <translation>“%1”不是 IP 地址。仅本机请用 127.0.0.1，所有网络请用 0.0.0.0。</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>&apos;%1&apos; is not an IP address: give the address of the computer running PlotJuggler, e.g. 127.0.0.1.</source>
+        <translation>“%1”不是 IP 地址：请填写运行 PlotJuggler 的计算机地址，例如 127.0.0.1。</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1
+Choose another port, or close the program that uses this one.</source>
+        <translation>%1
+请选择其他端口，或关闭占用此端口的程序。</translation>
+    </message>
+</context>
+<context>
     <name>imudesk::ui::MagCalibrationWizard</name>
     <message>
         <location filename="../ui/calibration/mag_calibration_wizard.cpp" line="+41"/>
@@ -11139,12 +11328,12 @@ Samples: %3</source>
 <context>
     <name>imudesk::ui::MainWindow</name>
     <message>
-        <location filename="../ui/workspace/main_window.cpp" line="+394"/>
+        <location filename="../ui/workspace/main_window.cpp" line="+398"/>
         <source>Choose a port first.</source>
         <translation>请先选择串口。</translation>
     </message>
     <message>
-        <location line="+77"/>
+        <location line="+89"/>
         <source>ImuDesk</source>
         <translation>ImuDesk</translation>
     </message>
@@ -11154,12 +11343,12 @@ Samples: %3</source>
         <translation>关于 ImuDesk</translation>
     </message>
     <message>
-        <location line="-132"/>
+        <location line="-144"/>
         <source>No device family simulates &quot;%1&quot;.</source>
         <translation>没有设备系列能模拟“%1”。</translation>
     </message>
     <message>
-        <location line="+133"/>
+        <location line="+145"/>
         <source>&lt;h3&gt;ImuDesk %1&lt;/h3&gt;&lt;p&gt;A bench tool for IMU, AHRS and compass modules on serial, RS-485 Modbus and CAN links: live values and charts, settings, calibration, firmware updates, recordings and simulated devices.&lt;/p&gt;&lt;p&gt;Built with Qt %2.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;ImuDesk %1&lt;/h3&gt;&lt;p&gt;面向串口、RS-485 Modbus 和 CAN 链路上的 IMU、AHRS 与罗盘模块的台架工具：实时数值与曲线、设置、校准、固件升级、记录以及模拟设备。&lt;/p&gt;&lt;p&gt;基于 Qt %2 构建。&lt;/p&gt;</translation>
     </message>
@@ -11194,7 +11383,7 @@ Samples: %3</source>
         <translation>PNG 图像 (*.png)</translation>
     </message>
     <message>
-        <location line="+116"/>
+        <location line="+136"/>
         <source>&amp;File</source>
         <translation>文件(&amp;F)</translation>
     </message>
@@ -11350,6 +11539,21 @@ Samples: %3</source>
     </message>
     <message>
         <location line="+2"/>
+        <source>&amp;Live bridge…</source>
+        <translation>实时桥接(&amp;L)…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Send the connected devices&apos; samples live to Foxglove, Lichtblick and PlotJuggler</source>
+        <translation>将已连接设备的采样实时发送到 Foxglove、Lichtblick 和 PlotJuggler</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The live bridge is running: click to open its window</source>
+        <translation>实时桥接正在运行：点击打开其窗口</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>&amp;Reset layout</source>
         <translation>重置布局(&amp;R)</translation>
     </message>

@@ -1139,26 +1139,26 @@
 <context>
     <name>CaptureExporter</name>
     <message>
-        <location filename="../core/record/capture_exporter.cpp" line="+107"/>
-        <location line="+146"/>
+        <location filename="../core/record/capture_exporter.cpp" line="+121"/>
+        <location line="+152"/>
         <location line="+6"/>
         <source>Cannot write %1: %2</source>
         <translation>無法寫入 %1：%2</translation>
     </message>
     <message>
-        <location line="-160"/>
-        <location line="+189"/>
+        <location line="-166"/>
+        <location line="+208"/>
         <location line="+28"/>
         <source>Writing %1 failed: %2. Check the free disk space.</source>
         <translation>寫入 %1 失敗：%2。請檢查可用磁碟空間。</translation>
     </message>
     <message>
-        <location line="-44"/>
+        <location line="-59"/>
         <source>The capture holds %1 frame types; the vendor layout has a file for each: %2</source>
         <translation>該記錄含有 %1 種幀類型；廠商格式為每種各寫一個檔案：%2</translation>
     </message>
     <message>
-        <location line="+183"/>
+        <location line="+203"/>
         <source>No output file was given.</source>
         <translation>未指定輸出檔案。</translation>
     </message>
@@ -2680,7 +2680,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>McapRecording</name>
     <message>
-        <location filename="../core/record/mcap_recording.cpp" line="+84"/>
+        <location filename="../core/record/mcap_recording.cpp" line="+88"/>
         <source>Cannot write %1: %2</source>
         <translation>無法寫入 %1：%2</translation>
     </message>
@@ -2688,7 +2688,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>McapRepair</name>
     <message>
-        <location filename="../core/format/mcap/mcap_repair.cpp" line="+182"/>
+        <location filename="../core/format/mcap/mcap_repair.cpp" line="+181"/>
         <source>%1 cannot be read: %2</source>
         <translation>無法讀取 %1：%2</translation>
     </message>
@@ -3360,7 +3360,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>SessionExporter</name>
     <message>
-        <location filename="../core/record/session_exporter.cpp" line="+158"/>
+        <location filename="../core/record/session_exporter.cpp" line="+196"/>
+        <source>A session of several devices exports to tidy CSV, JSON Lines, MCAP or MATLAB; the vendor&apos;s layout has one device per file (export each capture on its own for it).</source>
+        <translation>多裝置工作階段可匯出為整齊 CSV、JSON Lines、MCAP 或 MATLAB；廠商格式每個檔案只含一台裝置（如需該格式，請逐一匯出各記錄）。</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>A grid or trigger pairs are written as tidy CSV (--format csv).</source>
         <translation>網格或觸發配對以整齊 CSV 寫出（--format csv）。</translation>
     </message>
@@ -3390,36 +3395,32 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>此工作階段中沒有裝置。</translation>
     </message>
     <message>
-        <location line="-104"/>
-        <location line="+113"/>
+        <location line="-131"/>
+        <location line="+144"/>
         <source>Cannot write %1: %2</source>
         <translation>無法寫入 %1：%2</translation>
     </message>
     <message>
-        <location line="-65"/>
-        <location line="+101"/>
-        <location line="+96"/>
+        <location line="-108"/>
+        <location line="+40"/>
+        <location line="+104"/>
+        <location line="+85"/>
         <source>Export cancelled.</source>
         <translation>匯出已取消。</translation>
     </message>
     <message>
-        <location line="-174"/>
-        <source>A session of several devices exports to tidy CSV, JSON Lines or MCAP; the vendor&apos;s layout has one device per file (export each capture on its own for it).</source>
-        <translation>多裝置工作階段可匯出為整齊 CSV、JSON Lines 或 MCAP；廠商格式每個檔案只含一台裝置（如需該格式，請逐一匯出各記錄）。</translation>
-    </message>
-    <message>
-        <location line="+137"/>
+        <location line="-26"/>
         <source>%1 frames of devices whose clock never aligned have no pulse index.</source>
         <translation>時鐘從未對齊的裝置有 %1 幀沒有脈衝序號。</translation>
     </message>
     <message>
-        <location line="+99"/>
+        <location line="+88"/>
         <source>Device %1 (%2): nothing in its capture that ImuDesk decodes offline (Modbus captures are not decoded yet); it is left out.</source>
         <translation>裝置 %1（%2）：其記錄中沒有 ImuDesk 可離線解碼的內容（Modbus 記錄尚不能解碼），已略去。</translation>
     </message>
     <message>
-        <location line="-253"/>
-        <location line="+258"/>
+        <location line="-285"/>
+        <location line="+290"/>
         <source>Writing %1 failed: %2. Free some space or choose another place.</source>
         <translation>寫入 %1 失敗：%2。請釋放一些空間或選擇其他位置。</translation>
     </message>
@@ -4210,6 +4211,14 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <location line="+23"/>
         <source>the file is empty: no HI91 CSV header</source>
         <translation>檔案為空：沒有 HI91 CSV 表頭</translation>
+    </message>
+</context>
+<context>
+    <name>imudesk::bridge::LiveBridge</name>
+    <message>
+        <location filename="../core/bridge/live_bridge.cpp" line="+169"/>
+        <source>Cannot listen on %1 port %2: %3</source>
+        <translation>無法在 %1 的連接埠 %2 上監聽：%3</translation>
     </message>
 </context>
 <context>
@@ -7705,6 +7714,39 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
 </context>
 <context>
+    <name>imudesk::ui::BridgeController</name>
+    <message>
+        <location filename="../ui/bridge/bridge_controller.cpp" line="+90"/>
+        <source>Live bridge %1</source>
+        <translation>即時橋接 %1</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>clients: %1</source>
+        <translation>用戶端：%1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>sent: %1</source>
+        <translation>已傳送：%1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>dropped: %1</source>
+        <translation>已捨棄：%1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Live bridge</source>
+        <translation>即時橋接</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>UDP: %1</source>
+        <translation>UDP：%1</translation>
+    </message>
+</context>
+<context>
     <name>imudesk::ui::BusConnect</name>
     <message>
         <location filename="../ui/bus/bus_connect_dialog.cpp" line="+27"/>
@@ -9645,12 +9687,12 @@ Link load = bytes per second × 10 bits / baud rate.</source>
 <context>
     <name>imudesk::ui::ExportDialog</name>
     <message>
-        <location filename="../ui/recording/export_dialog.cpp" line="+107"/>
+        <location filename="../ui/recording/export_dialog.cpp" line="+108"/>
         <source>Export %1</source>
         <translation>匯出 %1</translation>
     </message>
     <message>
-        <location line="-82"/>
+        <location line="-83"/>
         <source>The capture to export: a recording, a vendor CSV or a raw byte dump</source>
         <translation>要匯出的擷取：錄製檔、廠商 CSV 或原始位元組傾印</translation>
     </message>
@@ -9683,6 +9725,11 @@ Link load = bytes per second × 10 bits / baud rate.</source>
         <location line="+1"/>
         <source>MCAP (ROS 2: PlotJuggler, Foxglove, Lichtblick)</source>
         <translation>MCAP（ROS 2：PlotJuggler、Foxglove、Lichtblick）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>MATLAB .mat (a struct per device, SI units)</source>
+        <translation>MATLAB .mat（每台裝置一個結構，國際單位制）</translation>
     </message>
     <message>
         <location line="+7"/>
@@ -10633,6 +10680,148 @@ Method: %3</source>
     </message>
 </context>
 <context>
+    <name>imudesk::ui::LiveBridgeDialog</name>
+    <message>
+        <location filename="../ui/bridge/live_bridge_dialog.cpp" line="+148"/>
+        <source>Live bridge</source>
+        <translation>即時橋接</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Foxglove WebSocket (Foxglove, Lichtblick, PlotJuggler)</source>
+        <translation>Foxglove WebSocket（Foxglove、Lichtblick、PlotJuggler）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Address:</source>
+        <translation>位址(&amp;A)：</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>127.0.0.1 (this computer only)</source>
+        <translation>127.0.0.1（僅本機）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>0.0.0.0 (every network of this computer)</source>
+        <translation>0.0.0.0（本機的所有網路）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Where clients may connect from. Another address than 127.0.0.1 lets anyone on that network read the data: the Foxglove protocol has no password.</source>
+        <translation>用戶端可從何處連線。127.0.0.1 以外的位址允許該網路上的任何人讀取資料：Foxglove 協定沒有密碼。</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Port:</source>
+        <translation>連接埠(&amp;P)：</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>TCP port of the WebSocket server (Foxglove&apos;s usual port: 8765)</source>
+        <translation>WebSocket 伺服器的 TCP 連接埠（Foxglove 常用連接埠：8765）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Foxglove and Lichtblick: Open connection &gt; Foxglove WebSocket, ws://127.0.0.1:%1. PlotJuggler: Streaming &gt; Foxglove Bridge. Each device&apos;s topics are /imu/&lt;serial&gt;/imu, mag, euler, status, ... as in an MCAP recording.</source>
+        <translation>Foxglove 與 Lichtblick：Open connection &gt; Foxglove WebSocket，ws://127.0.0.1:%1。PlotJuggler：Streaming &gt; Foxglove Bridge。每台裝置的主題為 /imu/&lt;序號&gt;/imu、mag、euler、status 等，與 MCAP 記錄相同。</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>PlotJuggler UDP (JSON)</source>
+        <translation>PlotJuggler UDP（JSON）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Host:</source>
+        <translation>主機(&amp;H)：</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Computer running PlotJuggler&apos;s UDP server (Streaming &gt; UDP Server, message protocol JSON, time stamp from the field &quot;timestamp&quot;)</source>
+        <translation>執行 PlotJuggler UDP 伺服器的電腦（Streaming &gt; UDP Server，訊息協定 JSON，時間戳記取自欄位 &quot;timestamp&quot;）</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>P&amp;ort:</source>
+        <translation>連接埠(&amp;O)：</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>UDP port PlotJuggler listens on (its default: 9870)</source>
+        <translation>PlotJuggler 監聽的 UDP 連接埠（預設：9870）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Log (clients, refused requests, dropped messages):</source>
+        <translation>記錄(&amp;L)（用戶端、被拒絕的請求、捨棄的訊息）：</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Close</source>
+        <translation>關閉</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Warning: %1 is not this computer only. Anyone who can reach it on the network can read the devices&apos; data: the protocol has no password.</source>
+        <translation>警告：%1 不僅限本機。網路上能存取它的任何人都可以讀取裝置資料：此協定沒有密碼。</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>&amp;Stop</source>
+        <translation>停止(&amp;S)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>&amp;Start</source>
+        <translation>開始(&amp;S)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Stop the bridge (Ctrl+Shift+B opens this window)</source>
+        <translation>停止橋接（Ctrl+Shift+B 開啟此視窗）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Send the connected devices&apos; samples from now on</source>
+        <translation>從現在起傳送已連線裝置的取樣</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Stopped</source>
+        <translation>已停止</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1
+%2 device(s); samples: %3, missed: %4</source>
+        <translation>%1
+%2 台裝置；取樣：%3，遺漏：%4</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>Choose the Foxglove WebSocket server, PlotJuggler UDP or both.</source>
+        <translation>請選擇 Foxglove WebSocket 伺服器、PlotJuggler UDP 或兩者。</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>&apos;%1&apos; is not an IP address. Use 127.0.0.1 for this computer only or 0.0.0.0 for every network.</source>
+        <translation>「%1」不是 IP 位址。僅本機請用 127.0.0.1，所有網路請用 0.0.0.0。</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>&apos;%1&apos; is not an IP address: give the address of the computer running PlotJuggler, e.g. 127.0.0.1.</source>
+        <translation>「%1」不是 IP 位址：請填寫執行 PlotJuggler 的電腦位址，例如 127.0.0.1。</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1
+Choose another port, or close the program that uses this one.</source>
+        <translation>%1
+請選擇其他連接埠，或關閉佔用此連接埠的程式。</translation>
+    </message>
+</context>
+<context>
     <name>imudesk::ui::MagCalibrationWizard</name>
     <message>
         <location filename="../ui/calibration/mag_calibration_wizard.cpp" line="+41"/>
@@ -11139,12 +11328,12 @@ Samples: %3</source>
 <context>
     <name>imudesk::ui::MainWindow</name>
     <message>
-        <location filename="../ui/workspace/main_window.cpp" line="+394"/>
+        <location filename="../ui/workspace/main_window.cpp" line="+398"/>
         <source>Choose a port first.</source>
         <translation>請先選擇串列埠。</translation>
     </message>
     <message>
-        <location line="+77"/>
+        <location line="+89"/>
         <source>ImuDesk</source>
         <translation>ImuDesk</translation>
     </message>
@@ -11154,12 +11343,12 @@ Samples: %3</source>
         <translation>關於 ImuDesk</translation>
     </message>
     <message>
-        <location line="-132"/>
+        <location line="-144"/>
         <source>No device family simulates &quot;%1&quot;.</source>
         <translation>沒有裝置系列能模擬「%1」。</translation>
     </message>
     <message>
-        <location line="+133"/>
+        <location line="+145"/>
         <source>&lt;h3&gt;ImuDesk %1&lt;/h3&gt;&lt;p&gt;A bench tool for IMU, AHRS and compass modules on serial, RS-485 Modbus and CAN links: live values and charts, settings, calibration, firmware updates, recordings and simulated devices.&lt;/p&gt;&lt;p&gt;Built with Qt %2.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;ImuDesk %1&lt;/h3&gt;&lt;p&gt;適用於序列埠、RS-485 Modbus 與 CAN 連線上的 IMU、AHRS 及羅盤模組的測試台工具：即時數值與曲線、設定、校準、韌體更新、記錄以及模擬裝置。&lt;/p&gt;&lt;p&gt;以 Qt %2 建置。&lt;/p&gt;</translation>
     </message>
@@ -11194,7 +11383,7 @@ Samples: %3</source>
         <translation>PNG 影像 (*.png)</translation>
     </message>
     <message>
-        <location line="+116"/>
+        <location line="+136"/>
         <source>&amp;File</source>
         <translation>檔案(&amp;F)</translation>
     </message>
@@ -11350,6 +11539,21 @@ Samples: %3</source>
     </message>
     <message>
         <location line="+2"/>
+        <source>&amp;Live bridge…</source>
+        <translation>即時橋接(&amp;L)…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Send the connected devices&apos; samples live to Foxglove, Lichtblick and PlotJuggler</source>
+        <translation>將已連線裝置的取樣即時傳送到 Foxglove、Lichtblick 與 PlotJuggler</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The live bridge is running: click to open its window</source>
+        <translation>即時橋接正在執行：按一下開啟其視窗</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>&amp;Reset layout</source>
         <translation>重設版面配置(&amp;R)</translation>
     </message>

@@ -17,10 +17,10 @@ namespace imudesk::cli {
 int cmdExport(const QStringList &args)
 {
     QCommandLineParser p;
-    p.addOption(QCommandLineOption(QStringLiteral("format"), QStringLiteral("vendor-csv, csv (tidy), jsonl or mcap (ROS 2 messages: PlotJuggler, Foxglove, Lichtblick)."),
+    p.addOption(QCommandLineOption(QStringLiteral("format"), QStringLiteral("vendor-csv, csv (tidy), jsonl, mcap (ROS 2 messages: PlotJuggler, Foxglove, Lichtblick) or mat (MATLAB, a struct per device in SI units)."),
                                    QStringLiteral("F"), QStringLiteral("csv")));
     p.addOption(QCommandLineOption({QStringLiteral("o"), QStringLiteral("output")},
-                                   QStringLiteral("Output file (default: the capture's name with .csv / .jsonl / .mcap)."),
+                                   QStringLiteral("Output file (default: the capture's name with .csv / .jsonl / .mcap / .mat)."),
                                    QStringLiteral("OUT")));
     p.addOption(QCommandLineOption(QStringLiteral("from"), QStringLiteral("Start, seconds since the recording began."),
                                    QStringLiteral("S")));
@@ -39,14 +39,14 @@ int cmdExport(const QStringList &args)
                             QStringLiteral("A capture, a vendor HI91 CSV, a raw byte dump (recognised by content), or the "
                                            "folder of a recorded session (record PORT,PORT,...)."));
     if (!parseArgs(p, args,
-                   QStringLiteral("imudesk-cli export FILE --format vendor-csv|csv|jsonl|mcap [-o OUT] [--from S --to S]\n"
-                                  "       imudesk-cli export SESSION_FOLDER --format csv|jsonl|mcap [-o OUT] [--grid-ms MS | --pulse-hz HZ]")))
+                   QStringLiteral("imudesk-cli export FILE --format vendor-csv|csv|jsonl|mcap|mat [-o OUT] [--from S --to S]\n"
+                                  "       imudesk-cli export SESSION_FOLDER --format csv|jsonl|mcap|mat [-o OUT] [--grid-ms MS | --pulse-hz HZ]")))
         return ExitUsage;
     if (p.positionalArguments().size() != 1)
         return fail(QStringLiteral("export needs exactly one capture FILE"), ExitUsage);
     const auto format = record::CaptureExporter::parseFormat(p.value(QStringLiteral("format")));
     if (!format)
-        return fail(QStringLiteral("unknown --format '%1' (vendor-csv, csv, jsonl or mcap)").arg(p.value(QStringLiteral("format"))),
+        return fail(QStringLiteral("unknown --format '%1' (vendor-csv, csv, jsonl, mcap or mat)").arg(p.value(QStringLiteral("format"))),
                     ExitUsage);
     record::CaptureExporter::Options o;
     o.format = *format;

@@ -5,6 +5,7 @@
 #include "record/capture_reader.h"
 #include "record/capture_source.h"
 #include "record/csv_number.h"
+#include "record/mat_export.h"
 #include "record/mcap_recording.h"
 #include "record/vendor_csv.h"
 
@@ -90,6 +91,20 @@ public:
             else
                 ++m_r.frames;
         }
+    }
+    // MATLAB: the rows spooled as they come, the file written at the end.
+    void matWrite(const model::Sample &s)
+    {
+        if (!m_mat) {
+            m_mat = std::make_unique<MatExport>(firstNs, epochOffsetNs);
+            m_matDevice = m_mat->addDevice(header ? *header : CaptureHeader{});
+        }
+        if (m_matDevice < 0 || !m_mat->append(m_matDevice, s)) {
+            m_failed = true;
+            m_r.error = m_mat->error();
+            return;
+        }
+        ++m_r.frames;
     }
     void mcapFailed()
     {
@@ -191,6 +206,9 @@ public:
         case CaptureExporter::Format::Mcap:
             mcapWrite(timed(hp::toSample(p), hostNs));
             break;
+        case CaptureExporter::Format::Mat:
+            matWrite(timed(hp::toSample(p), hostNs));
+            break;
         }
     }
 
@@ -203,10 +221,13 @@ public:
             ++m_r.skipped;
             return;
         }
-        if (m_o.format == CaptureExporter::Format::Mcap) {
+        if (m_o.format == CaptureExporter::Format::Mcap || m_o.format == CaptureExporter::Format::Mat) {
             model::Sample t = s;
             t.hostTimeNs = hostNs;
-            mcapWrite(t);
+            if (m_o.format == CaptureExporter::Format::Mcap)
+                mcapWrite(t);
+            else
+                matWrite(t);
             return;
         }
         if ((out = output(QString(), nullptr))) {
@@ -234,7 +255,7 @@ public:
             if ((out = output(QString(), nullptr)))
                 out->buf += "{\"type\":\"NMEA\",\"sentence\":\"" + sentence + "\"}\n";
         } else {
-            return; // the tidy CSV and MCAP hold samples only
+            return; // the tidy CSV, MCAP and MATLAB hold samples only
         }
         written(out);
     }
@@ -274,6 +295,21 @@ public:
             if (m_mcap && m_mcap->isOpen() && !m_mcap->stop().isEmpty())
                 mcapFailed();
             return !m_failed;
+        }
+        if (m_o.format == CaptureExporter::Format::Mat) {
+            if (!m_mat) { // an empty range still gives a file (with the device's struct, 0 rows)
+                m_mat = std::make_unique<MatExport>(firstNs, epochOffsetNs);
+                m_matDevice = m_mat->addDevice(header ? *header : CaptureHeader{});
+            }
+            if (m_failed)
+                return false;
+            if (!m_mat->write(m_o.output)) {
+                m_failed = true;
+                m_r.error = m_mat->error();
+                return false;
+            }
+            m_r.files << m_o.output;
+            return true;
         }
         if (m_o.format != CaptureExporter::Format::VendorCsv && !m_single)
             output(QString(), nullptr); // an empty range still gives a file (with its header)
@@ -322,6 +358,8 @@ private:
     Output *m_single = nullptr;
     bool m_failed = false;
     std::unique_ptr<McapRecording> m_mcap;
+    std::unique_ptr<MatExport> m_mat;
+    int m_matDevice = -1;
 };
 
 } // namespace
@@ -331,6 +369,7 @@ QString CaptureExporter::extension(Format format)
     switch (format) {
     case Format::JsonLines: return QStringLiteral(".jsonl");
     case Format::Mcap: return QStringLiteral(".mcap");
+    case Format::Mat: return QStringLiteral(".mat");
     case Format::VendorCsv:
     case Format::TidyCsv: break;
     }
@@ -347,6 +386,8 @@ std::optional<CaptureExporter::Format> CaptureExporter::parseFormat(const QStrin
         return Format::JsonLines;
     if (name == QLatin1String("mcap"))
         return Format::Mcap;
+    if (name == QLatin1String("mat"))
+        return Format::Mat;
     return std::nullopt;
 }
 

@@ -1,7 +1,7 @@
 #pragma once
-// Exports a capture (or a time range of it) to vendor CSV, tidy CSV, JSON Lines or MCAP
+// Exports a capture (or a time range of it) to vendor CSV, tidy CSV, JSON Lines, MCAP
 // (format/mcap: ROS 2 messages in CDR and a JSON channel per device, the device's identity as
-// metadata, its configuration snapshot as an attachment)
+// metadata, its configuration snapshot as an attachment) or MATLAB .mat (record/mat_export.h)
 // (README, "CSV layouts"), streaming: the capture is read chunk by chunk and the output
 // written in 1 MB blocks, so memory does not grow with the file. Progress is reported as
 // a fraction of the capture read; returning false from it cancels (the partial outputs
@@ -24,7 +24,7 @@ class CaptureExporter {
     Q_DECLARE_TR_FUNCTIONS(CaptureExporter)
 
 public:
-    enum class Format { VendorCsv, TidyCsv, JsonLines, Mcap };
+    enum class Format { VendorCsv, TidyCsv, JsonLines, Mcap, Mat };
     struct Options {
         Format format = Format::TidyCsv;
         // Output file. Vendor CSV has a layout per frame type: a capture of one type goes to this
@@ -50,9 +50,9 @@ public:
     // capturePath: a capture, a vendor CSV or a raw byte dump (CaptureSource).
     static Result run(const QString &capturePath, const Options &options, const Progress &progress = {});
 
-    static std::optional<Format> parseFormat(const QString &name); // "vendor-csv", "csv", "jsonl", "mcap"
+    static std::optional<Format> parseFormat(const QString &name); // "vendor-csv", "csv", "jsonl", "mcap", "mat"
     static QString vendorPath(const QString &output, const QString &type);
-    // ".csv", ".jsonl" or ".mcap": the default output's suffix.
+    // ".csv", ".jsonl", ".mcap" or ".mat": the default output's suffix.
     static QString extension(Format format);
 
     // The tidy CSV: one header row, time_s from the device clock, SI units in the names. A

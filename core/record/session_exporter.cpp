@@ -5,6 +5,7 @@
 #include "clock/trigger_pairing.h"
 #include "record/capture_sample_stream.h"
 #include "record/csv_number.h"
+#include "record/mat_export.h"
 #include "record/mcap_recording.h"
 
 #include <QDateTime>
@@ -144,6 +145,45 @@ void writeMcap(const QString &folder, const SessionManifest &manifest,
     r.ok = true;
 }
 
+// A recorded session into one MATLAB file: a struct per device, its samples at their aligned
+// times, every device's times from the session's start.
+void writeMat(const SessionManifest &manifest, std::vector<std::unique_ptr<CaptureSampleStream>> &streams,
+              const SessionExporter::Options &o, SessionExporter::Result &r)
+{
+    const QDateTime started = QDateTime::fromString(manifest.startedUtc, Qt::ISODateWithMs);
+    const int64_t epochOffsetNs =
+        started.isValid() && manifest.startedHostNs != 0 ? started.toMSecsSinceEpoch() * 1'000'000 - manifest.startedHostNs : 0;
+    MatExport mat(manifest.startedHostNs, epochOffsetNs);
+    std::vector<int> structs;
+    for (size_t i = 0; i < streams.size(); ++i) {
+        const CaptureHeader &h = streams[i]->header();
+        const int index = mat.addDevice(h, h.identity().serial.empty() ? manifest.devices[i].name.toStdString() : std::string());
+        if (index < 0) {
+            r.error = mat.error();
+            return;
+        }
+        structs.push_back(index);
+    }
+    for (size_t next; (next = nextInTime(streams)) < streams.size();) {
+        if (!mat.append(structs[next], streams[next]->take())) {
+            r.error = mat.error();
+            return;
+        }
+        ++r.rows;
+        if (o.cancelled && (r.rows & 0xFFF) == 0 && o.cancelled()) {
+            r.error = SessionExporter::tr("Export cancelled.");
+            return;
+        }
+    }
+    if (!mat.write(o.output)) {
+        r.error = mat.error();
+        return;
+    }
+    for (const auto &st : streams)
+        r.samplesByDevice.push_back(st->samples);
+    r.ok = true;
+}
+
 } // namespace
 
 SessionExporter::Result SessionExporter::run(const QString &folder, const Options &o)
@@ -153,7 +193,7 @@ SessionExporter::Result SessionExporter::run(const QString &folder, const Option
     if (!SessionManifest::load(folder, &manifest, &r.error))
         return r;
     if (o.format == CaptureExporter::Format::VendorCsv) {
-        r.error = tr("A session of several devices exports to tidy CSV, JSON Lines or MCAP; the vendor's layout has "
+        r.error = tr("A session of several devices exports to tidy CSV, JSON Lines, MCAP or MATLAB; the vendor's layout has "
                      "one device per file (export each capture on its own for it).");
         return r;
     }
@@ -191,6 +231,10 @@ SessionExporter::Result SessionExporter::run(const QString &folder, const Option
     }
     if (o.format == CaptureExporter::Format::Mcap) {
         writeMcap(folder, manifest, streams, o, r);
+        return r;
+    }
+    if (o.format == CaptureExporter::Format::Mat) {
+        writeMat(manifest, streams, o, r);
         return r;
     }
     QSaveFile file(o.output);

@@ -10,6 +10,7 @@
 #include "charts/analysis_window.h"
 #include "calibration/mag_calibration_wizard.h"
 #include "configuration/profile_dialog.h"
+#include "bridge/live_bridge_dialog.h"
 #include "workspace/language_switcher.h"
 #include "workspace/main_window.h"
 #include "workspace/preferences_dialog.h"
@@ -62,6 +63,12 @@ const QSet<QString> &keptWords()
         QStringLiteral("Ctrl"), QStringLiteral("Shift"), QStringLiteral("Alt"), QStringLiteral("Pause"), QStringLiteral("ttyS"),
         QStringLiteral("Linux"), QStringLiteral("socketcan"), QStringLiteral("peakcan"), QStringLiteral("can"),
         QStringLiteral("kbit"), QStringLiteral("Mbit"), QStringLiteral("bit"), QStringLiteral("pandas"), QStringLiteral("PlotJuggler"), QStringLiteral("Foxglove"), QStringLiteral("Lichtblick"),
+        QStringLiteral("MATLAB"), QStringLiteral("mat"), QStringLiteral("WebSocket"),
+        // Other tools' menus as they name them (Foxglove's "Open connection", PlotJuggler's "Streaming >
+        // Foxglove Bridge" and "UDP Server", its "timestamp" field), and the topics a device streams.
+        QStringLiteral("Open"), QStringLiteral("connection"), QStringLiteral("Streaming"), QStringLiteral("Bridge"),
+        QStringLiteral("Server"), QStringLiteral("timestamp"), QStringLiteral("imu"), QStringLiteral("mag"), QStringLiteral("euler"),
+        QStringLiteral("status"),
         QStringLiteral("Intel"), QStringLiteral("dialout"), QStringLiteral("KiB"), QStringLiteral("MiB"),
         QStringLiteral("GiB"), QStringLiteral("udev"), QStringLiteral("usermod"), QStringLiteral("sudo"),
         QStringLiteral("USER"), QStringLiteral("rules"), QStringLiteral("FitErr"), QStringLiteral("imucap"),
@@ -242,6 +249,9 @@ private Q_SLOTS:
         verifyTranslated(&analysis);
         ui::FirmwareUpdateDialog firmware(QStringLiteral("/dev/ttyUSB0"), 115200, std::nullopt);
         verifyTranslated(&firmware);
+        ui::MainWindow window;
+        ui::LiveBridgeDialog bridge(window.liveBridge());
+        verifyTranslated(&bridge);
     }
 
     void wizardsUnderZhCN()

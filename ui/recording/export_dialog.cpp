@@ -32,6 +32,7 @@ ExportDialog::ExportDialog(const QString &capturePath, QWidget *parent) : QDialo
     m_format->addItem(tr("Tidy CSV (pandas, PlotJuggler)"), int(Format::TidyCsv));
     m_format->addItem(tr("JSON Lines"), int(Format::JsonLines));
     m_format->addItem(tr("MCAP (ROS 2: PlotJuggler, Foxglove, Lichtblick)"), int(Format::Mcap));
+    m_format->addItem(tr("MATLAB .mat (a struct per device, SI units)"), int(Format::Mat));
     m_output = new QLineEdit(this);
     m_output->setObjectName(QStringLiteral("output"));
     m_from = new QDoubleSpinBox(this);

@@ -1,6 +1,8 @@
 #include "workspace/main_window.h"
 
 #include "ui/station/station_view.h"
+#include "bridge/bridge_controller.h"
+#include "bridge/live_bridge_dialog.h"
 #include "workspace/preferences_dialog.h"
 #include "workspace/tool_actions.h"
 #include "common/window_helpers.h"
@@ -29,7 +31,9 @@
 #include <QTabBar>
 #include <QTabWidget>
 #include <QThread>
+#include <QStatusBar>
 #include <QToolBar>
+#include <QToolButton>
 
 #include <algorithm>
 #include <memory>
@@ -440,6 +444,18 @@ StationView *MainWindow::station() const
     return m_station;
 }
 
+LiveBridgeDialog *MainWindow::openLiveBridge()
+{
+    if (!m_bridgeDialog) {
+        m_bridgeDialog = new LiveBridgeDialog(m_bridge, this);
+        m_bridgeDialog->setAttribute(Qt::WA_DeleteOnClose);
+    }
+    m_bridgeDialog->show();
+    m_bridgeDialog->raise();
+    m_bridgeDialog->activateWindow();
+    return m_bridgeDialog;
+}
+
 StationView *MainWindow::openStation()
 {
     if (!m_station) {
@@ -679,6 +695,25 @@ void MainWindow::createActions()
     m_stationAction->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_P));
     connect(m_stationAction, &QAction::triggered, this, [this] { openStation(); });
 
+    // Tools > Live bridge; while it runs, the window's status bar says where and how it goes
+    // (a click on it opens the bridge's window).
+    m_bridge = new BridgeController(this, this);
+    m_bridgeAction = new QAction(this);
+    m_bridgeAction->setObjectName(QStringLiteral("liveBridgeAction"));
+    m_bridgeAction->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_B));
+    connect(m_bridgeAction, &QAction::triggered, this, [this] { openLiveBridge(); });
+    m_bridgeStatus = new QToolButton(this);
+    m_bridgeStatus->setObjectName(QStringLiteral("bridgeStatusButton"));
+    m_bridgeStatus->setAutoRaise(true);
+    connect(m_bridgeStatus, &QToolButton::clicked, this, [this] { openLiveBridge(); });
+    statusBar()->addPermanentWidget(m_bridgeStatus);
+    statusBar()->setSizeGripEnabled(false);
+    statusBar()->hide();
+    connect(m_bridge, &BridgeController::statusChanged, this, [this](const QString &text) {
+        m_bridgeStatus->setText(text);
+        statusBar()->setVisible(!text.isEmpty());
+    });
+
     m_aboutAction = new QAction(this);
     m_aboutAction->setObjectName(QStringLiteral("aboutAction"));
     m_aboutAction->setMenuRole(QAction::AboutRole);
@@ -736,6 +771,7 @@ void MainWindow::createMenus()
     m_tools->addToMenus(m_fileMenu, m_deviceMenu, m_calibrateMenu, m_toolsMenu);
     m_toolsMenu->addSeparator();
     m_toolsMenu->addAction(m_stationAction);
+    m_toolsMenu->addAction(m_bridgeAction);
     m_helpMenu = menuBar()->addMenu(QString());
     m_helpMenu->addAction(m_userGuideAction);
     m_helpMenu->addAction(m_shortcutsAction);
@@ -784,6 +820,9 @@ void MainWindow::retranslateUi()
     m_stationAction->setText(tr("&Production station…"));
     m_stationAction->setStatusTip(tr("Test a tray of modules at once against a test plan: a verdict and a report "
                                      "per serial number"));
+    m_bridgeAction->setText(tr("&Live bridge…"));
+    m_bridgeAction->setStatusTip(tr("Send the connected devices' samples live to Foxglove, Lichtblick and PlotJuggler"));
+    m_bridgeStatus->setToolTip(tr("The live bridge is running: click to open its window"));
     m_resetLayoutAction->setText(tr("&Reset layout"));
     m_resetLayoutAction->setStatusTip(tr("Put every panel of this tab back where the chosen layout has it"));
     m_tools->retranslate();

@@ -21,6 +21,7 @@
 class QAction;
 class QDialog;
 class QDockWidget;
+class QToolButton;
 class QMenu;
 class QMessageBox;
 class QTabWidget;
@@ -31,10 +32,12 @@ class LatestValuesModel;
 }
 namespace imudesk::ui {
 
+class BridgeController;
 class ComparisonChart;
 class ConnectionBar;
 class ConsoleWidget;
 class DeviceWorkspace;
+class LiveBridgeDialog;
 class PreferencesDialog;
 class StationView;
 class ToolActions;
@@ -115,6 +118,10 @@ public:
     // A module's workspace it asks for opens here, in a free tab or a new one.
     StationView *openStation();
     StationView *station() const;
+    // Tools > Live bridge: opens its window, or raises the one open. The bridge runs on when
+    // the window closes; the status bar shows it while it runs.
+    LiveBridgeDialog *openLiveBridge();
+    BridgeController *liveBridge() const { return m_bridge; }
 
 Q_SIGNALS:
     // The user accepted new preferences (the owner stores them).
@@ -181,6 +188,10 @@ private:
     QAction *m_resetLayoutAction = nullptr;
     QAction *m_stationAction = nullptr;
     QPointer<StationView> m_station;
+    QAction *m_bridgeAction = nullptr;
+    BridgeController *m_bridge = nullptr;
+    QPointer<LiveBridgeDialog> m_bridgeDialog;
+    QToolButton *m_bridgeStatus = nullptr;
     DeviceWorkspace::LayoutPreset m_preset = DeviceWorkspace::LayoutPreset::Monitor;
     Preferences m_prefs;
     FamilyUiRegistry m_builtInFamilies;
