@@ -296,6 +296,8 @@ phase "benchmark (issue 36's four devices in one window: two modules at 1000 Hz,
 session_dir=$(mktemp -d)
 live_bench "$root/build/test/tests/bench/bench_gui_live" --seconds 15 --devices 2 --mix --record "$session_dir"
 rm -rf "$session_dir"
+phase "benchmark (the live bridge: four modules at 1000 Hz in the window, two official Foxglove clients, every sample received; 15 s in CI, 60 s in the README)"
+live_bench "$root/build/test/tests/bench/bench_gui_live" --seconds 15 --devices 4 --bridge
 bench="$root/build/test/tests/bench"
 phase "benchmark (export of a 1 kHz HI91 capture, 10 min of it in CI; --frames 3600000 for the full hour)"
 "$bench/bench_export" --frames 600000 || echo "!! bench_export missed a target (see above)"

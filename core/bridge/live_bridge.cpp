@@ -19,6 +19,7 @@
 #include <QWebSocketServer>
 
 #include <algorithm>
+#include <cstdio>
 #include <list>
 #include <map>
 #include <set>
@@ -356,8 +357,12 @@ void BridgeWorker::checkCaughtUp()
 void BridgeWorker::sendDatagram(const Device &d, const model::Sample &s)
 {
     const int64_t t = (s.commonTimeNs != 0 ? s.commonTimeNs : s.hostTimeNs) + m_epochOffsetNs;
+    // Seconds with the µs (9 significant digits, as format::number gives, would keep whole seconds).
+    char stamp[32];
+    std::snprintf(stamp, sizeof stamp, "%lld.%06lld", static_cast<long long>(t / 1'000'000'000),
+                  static_cast<long long>((t % 1'000'000'000) / 1000));
     m_datagram.assign("{\"timestamp\":");
-    m_datagram += format::number(double(t) * 1e-9);
+    m_datagram += stamp;
     m_datagram += ",\"";
     m_datagram += d.name;
     m_datagram += "\":";

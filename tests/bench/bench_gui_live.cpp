@@ -14,6 +14,10 @@
 //        CANopen (virtualcan), each in its own tab (issue 36's set of four with --devices 2); with --record
 //        all of them are recorded as one session, and each of these two devices' frames counted by its
 //        session are compared with those in its capture (the sources are quiet at start and stop).
+//        --bridge: Tools > Live bridge runs (issue 37) and two official Foxglove clients (tests/mcap,
+//        foxglove_client.mjs on node; one per subprotocol name) subscribe to every channel: each must
+//        receive every sample of every module (no gap in the header stamps' 1 ms grid), nothing
+//        dropped or missed by the bridge, with the GUI thread's share measured as always.
 //        soak [--seconds N] [--record DIR] (the same run, by default one hour and recording
 //        to a temporary folder: frames recorded, resident memory at start and end, GUI
 //        stalls over 100 ms).
@@ -33,10 +37,14 @@
 #include "record/session_exporter.h"
 #include "workspace/device_workspace.h"
 #include "workspace/main_window.h"
+#include "bridge/bridge_controller.h"
 #include "record/capture_reader.h"
 #include "sim/pty_simulator.h"
 
 #include <QDir>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
 #include <QFile>
 #include <QFileInfo>
 #include <QTemporaryDir>
@@ -252,11 +260,14 @@ int main(int argc, char **argv)
     int warmupOverride = -1;
     int load = 0; // --load N: N busy threads beside the run
     bool memoryTrace = false;
+    bool bridged = false; // --bridge: the live bridge and two Foxglove clients
     for (int i = 1; i < argc; ++i) {
         if (QByteArray(argv[i]) == "--memory-trace")
             memoryTrace = true;
         if (QByteArray(argv[i]) == "--mix")
             mix = true;
+        if (QByteArray(argv[i]) == "--bridge")
+            bridged = true;
         if (i + 1 >= argc)
             break;
         if (QByteArray(argv[i]) == "--seconds")
@@ -271,6 +282,10 @@ int main(int argc, char **argv)
             record = true;
             recordDir = QString::fromLocal8Bit(argv[i + 1]);
         }
+    }
+    if (bridged && mix) {
+        std::fprintf(stderr, "%s: --bridge checks every module's 1 kHz grid; run it without --mix\n", name);
+        return 1;
     }
     QTemporaryDir scratch;
     if (record && recordDir.isEmpty())
@@ -440,6 +455,31 @@ int main(int argc, char **argv)
         session.startRecording(capturePath);
         spin(200);
     }
+    // --bridge: the bridge on a free port, a client per subprotocol name, subscribed to every
+    // channel as the modules' samples make them (5 per module).
+    std::vector<std::unique_ptr<QProcess>> clients;
+    const QStringList protocols{QStringLiteral("foxglove.websocket.v1"), QStringLiteral("foxglove.sdk.v1")};
+    if (bridged) {
+        bridge::BridgeOptions bo;
+        bo.port = 0;
+        if (!window.liveBridge()->start(bo, &error)) {
+            std::fprintf(stderr, "%s: the bridge did not start: %s\n", name, qPrintable(error));
+            return 1;
+        }
+        for (const QString &protocol : protocols) {
+            auto c = std::make_unique<QProcess>();
+            c->start(QStringLiteral("node"),
+                     {QStringLiteral(IMUDESK_SOURCE_DIR "/tests/mcap/foxglove_client.mjs"), QStringLiteral("--url"),
+                      window.liveBridge()->bridge().url(), QStringLiteral("--subprotocol"), protocol,
+                      QStringLiteral("--seconds"), QString::number(seconds * 4 + 120), QStringLiteral("--period-ms"),
+                      QStringLiteral("1"), QStringLiteral("--expect-channels"), QString::number(5 * devices)});
+            if (!c->waitForStarted(10000)) {
+                std::fprintf(stderr, "%s: node did not start (the README's set-up commands install it)\n", name);
+                return 1;
+            }
+            clients.push_back(std::move(c));
+        }
+    }
     // The load runs from before the module starts sending until the measured window ends: every
     // frame counted below was sent while the machine was busy.
     BusyLoad busyLoad(load);
@@ -478,6 +518,17 @@ int main(int argc, char **argv)
         traceTimer.start();
     }
     spin(warmupS * 1000);
+    for (auto &c : clients) {
+        QByteArray said;
+        for (int waited = 0; !said.contains("ready") && waited < 30000; waited += 100) {
+            spin(100);
+            said += c->readAllStandardError();
+        }
+        if (!said.contains("ready")) {
+            std::fprintf(stderr, "%s: a Foxglove client did not subscribe: %s\n", name, said.constData());
+            return 1;
+        }
+    }
     const double rssStart = currentRssMiB();
     const HeapFigures heapStart = heapFigures();
     const uint64_t decodedAtStart = session.store().totalAppended();
@@ -496,6 +547,16 @@ int main(int argc, char **argv)
     const ThreadSched readerAt1 = threadSched("imudesk-session");
     const ThreadSched simAt1 = threadSched("pty-simulator");
     busyLoad.stop();
+    // The clients' summaries: what each received, read while the modules still send.
+    std::vector<QJsonObject> summaries;
+    for (auto &c : clients) {
+        c->terminate();
+        for (int waited = 0; c->state() != QProcess::NotRunning && waited < 20000; waited += 50)
+            spin(50);
+        summaries.push_back(QJsonDocument::fromJson(c->readAllStandardOutput()).object());
+    }
+    const bridge::BridgeStats bridgeStats = window.liveBridge()->bridge().stats();
+    window.liveBridge()->stop();
 
     command(session, QStringLiteral("LOG HI91 ONTIME 0"));
     for (Extra &e : extras)
@@ -688,13 +749,43 @@ int main(int argc, char **argv)
                 double(session.store().totalAppended() - decodedAtStart) / std::max(1e-3, wallS + 0.5));
     if (devices > 1)
         std::printf("  (the decoded rate is the module in view; the frame counts above cover all %d)\n", devices);
-    const bool allMet = okLost && okRefresh && okBusy && okGrowth && stalls.over100 == 0 && okMixed;
+    bool okBridge = true;
+    for (size_t i = 0; i < summaries.size(); ++i) {
+        const QJsonObject &sum = summaries[i];
+        const QJsonObject counts = sum.value(QStringLiteral("counts")).toObject();
+        const QJsonObject missing = sum.value(QStringLiteral("stampMissing")).toObject();
+        long long imu = 0, gaps = 0, messages = 0;
+        int imuTopics = 0;
+        for (auto it = counts.begin(); it != counts.end(); ++it) {
+            messages += it.value().toInteger();
+            gaps += missing.value(it.key()).toInteger();
+            if (it.key().endsWith(QLatin1String("/imu"))) {
+                imu += it.value().toInteger();
+                ++imuTopics;
+            }
+        }
+        const bool ok = sum.value(QStringLiteral("protocol")).toString() == protocols[int(i)] && imuTopics == devices
+                        && gaps == 0 && sum.value(QStringLiteral("decodeErrors")).toInt() == 0
+                        && imu >= (long long)(seconds) * 1000 * devices;
+        okBridge = okBridge && ok;
+        std::printf("  %-34s %12lld   samples (imu), %lld messages, %lld missing in the stamps' grid, %d decode errors  %s\n",
+                    qPrintable(QStringLiteral("Foxglove client (%1)").arg(protocols[int(i)])), imu, messages, gaps,
+                    sum.value(QStringLiteral("decodeErrors")).toInt(), ok ? "ok" : "MISSED");
+    }
+    if (bridged) {
+        const bool ok = bridgeStats.messagesDropped == 0 && bridgeStats.samplesMissed == 0;
+        okBridge = okBridge && ok;
+        std::printf("  %-34s %12llu   messages sent, %llu dropped, %llu samples missed  %s\n", "live bridge",
+                    (unsigned long long)bridgeStats.messagesSent, (unsigned long long)bridgeStats.messagesDropped,
+                    (unsigned long long)bridgeStats.samplesMissed, ok ? "ok" : "MISSED");
+    }
+    const bool allMet = okLost && okRefresh && okBusy && okGrowth && stalls.over100 == 0 && okMixed && okBridge;
     std::printf("targets: %s\n", allMet ? "all met" : "NOT all met (see MISSED above)");
     window.close();
     // Exit 2: a frame that reached ImuDesk was lost, or the capture is damaged (correctness).
     // Exit 1: a target missed, frames dropped before the host among them (the machine did not
     // schedule the reader in time: a measurement of the machine's load as much as of ImuDesk).
-    if (lostInApp > 0 || !captureIntact || !okMixed)
+    if (lostInApp > 0 || !captureIntact || !okMixed || !okBridge)
         return 2;
     return okLost ? 0 : 1;
 }

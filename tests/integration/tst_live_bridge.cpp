@@ -24,6 +24,8 @@
 #include <QProcess>
 #include <QRegularExpression>
 #include <QTcpSocket>
+#include <QUdpSocket>
+#include <QDateTime>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QWebSocket>
@@ -277,6 +279,49 @@ private Q_SLOTS:
         }
         QVERIFY2(bridgeOut.contains(QStringLiteral(", 0 missed;")) && bridgeOut.contains(QStringLiteral(", 0 dropped;")),
                  qPrintable(bridgeOut));
+    }
+
+    // PlotJuggler's UDP JSON: a datagram per sample, one object with the sample's common time as
+    // "timestamp" (s since the Unix epoch) and the device's values under its name.
+    void plotJugglerUdp()
+    {
+        test::SimSession sim; // HI91 at 100 Hz
+        test::connectSession(sim);
+        QUdpSocket receiver;
+        QVERIFY(receiver.bind(QHostAddress::LocalHost, 0));
+        bridge::LiveBridge bridge;
+        bridge::BridgeOptions o;
+        o.websocket = false;
+        o.udp = true;
+        o.udpPort = receiver.localPort();
+        QString error;
+        QVERIFY2(bridge.start(o, &error), qPrintable(error));
+        bridge.addDevice(sim.session.sharedStore(), record::CaptureHeader{}, QStringLiteral("SN-UDP"));
+        QList<QJsonObject> got;
+        connect(&receiver, &QUdpSocket::readyRead, this, [&] {
+            while (receiver.hasPendingDatagrams()) {
+                QByteArray d(int(receiver.pendingDatagramSize()), Qt::Uninitialized);
+                receiver.readDatagram(d.data(), d.size());
+                got << QJsonDocument::fromJson(d).object();
+            }
+        });
+        QTRY_VERIFY_WITH_TIMEOUT(got.size() >= 200, 10000);
+        bridge.stop();
+        const double now = double(QDateTime::currentMSecsSinceEpoch()) / 1000.0;
+        double last = 0;
+        for (const QJsonObject &d : got) {
+            const double t = d.value(QStringLiteral("timestamp")).toDouble();
+            QVERIFY2(t > now - 10 && t <= now + 0.1, qPrintable(QString::number(t - now)));
+            QVERIFY(t > last); // one sample each, in order
+            last = t;
+            const QJsonObject values = d.value(QStringLiteral("SN_UDP")).toObject();
+            QCOMPARE(values.value(QStringLiteral("type")).toString(), QStringLiteral("HI91"));
+            QCOMPARE(values.value(QStringLiteral("acc")).toArray().size(), 3);
+        }
+        // 100 Hz: consecutive samples 10 ms apart on the device's clock.
+        const double span = got.back().value(QStringLiteral("timestamp")).toDouble() - got.front().value(QStringLiteral("timestamp")).toDouble();
+        QVERIFY2(std::abs(span / (got.size() - 1) - 0.010) < 0.001, qPrintable(QString::number(span / (got.size() - 1))));
+        QCOMPARE(bridge.stats().datagramErrors, quint64(0));
     }
 
     void hostileClients()
