@@ -160,7 +160,7 @@
 <context>
     <name>imudesk::ui::RecordingControls</name>
     <message numerus="yes">
-        <location filename="../ui/recording/recording_controls.cpp" line="+214"/>
+        <location filename="../ui/recording/recording_controls.cpp" line="+218"/>
         <source>%n frame(s)</source>
         <translation>
             <numerusform>%n frame</numerusform>

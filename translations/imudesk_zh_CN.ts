@@ -2680,9 +2680,14 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>McapRecording</name>
     <message>
-        <location filename="../core/record/mcap_recording.cpp" line="+88"/>
+        <location filename="../core/record/mcap_recording.cpp" line="+97"/>
         <source>Cannot write %1: %2</source>
         <translation>无法写入 %1：%2</translation>
+    </message>
+    <message>
+        <location filename="../core/record/mcap_group_recording.cpp" line="+52"/>
+        <source>Recording to %1 stopped: %2. Check the free disk space.</source>
+        <translation>录制到 %1 已停止：%2。请检查剩余磁盘空间。</translation>
     </message>
 </context>
 <context>
@@ -4216,7 +4221,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::bridge::LiveBridge</name>
     <message>
-        <location filename="../core/bridge/live_bridge.cpp" line="+169"/>
+        <location filename="../core/bridge/live_bridge.cpp" line="+170"/>
         <source>Cannot listen on %1 port %2: %3</source>
         <translation>无法在 %1 的端口 %2 上监听：%3</translation>
     </message>
@@ -12454,11 +12459,11 @@ Default: %2</source>
     </message>
     <message>
         <location line="+3"/>
-        <source>File name; {date}, {time}, {product} and {serial} are filled in</source>
-        <translation>文件名；{date}、{time}、{product} 和 {serial} 会自动填入</translation>
+        <source>File name; {date}, {time}, {product} and {serial} are filled in. Ending in .imucap: every byte, to replay and export later; ending in .mcap: the decoded samples as MCAP, which PlotJuggler, Foxglove and Lichtblick open</source>
+        <translation>文件名；{date}、{time}、{product} 和 {serial} 会自动填入。以 .imucap 结尾：记录每个字节，便于之后回放和导出；以 .mcap 结尾：以 MCAP 记录解码后的采样，可由 PlotJuggler、Foxglove 和 Lichtblick 打开</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+16"/>
         <source>Folder:</source>
         <translation>文件夹：</translation>
     </message>
@@ -12468,7 +12473,7 @@ Default: %2</source>
         <translation>文件：</translation>
     </message>
     <message>
-        <location line="+93"/>
+        <location line="+95"/>
         <source>Not recording: the device is not connected. Press Connect (Ctrl+K), then Record (Ctrl+R).</source>
         <translation>未在录制：设备未连接。请按“连接”(Ctrl+K)，再按“录制”(Ctrl+R)。</translation>
     </message>

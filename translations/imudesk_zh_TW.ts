@@ -2680,9 +2680,14 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>McapRecording</name>
     <message>
-        <location filename="../core/record/mcap_recording.cpp" line="+88"/>
+        <location filename="../core/record/mcap_recording.cpp" line="+97"/>
         <source>Cannot write %1: %2</source>
         <translation>無法寫入 %1：%2</translation>
+    </message>
+    <message>
+        <location filename="../core/record/mcap_group_recording.cpp" line="+52"/>
+        <source>Recording to %1 stopped: %2. Check the free disk space.</source>
+        <translation>錄製到 %1 已停止：%2。請檢查剩餘磁碟空間。</translation>
     </message>
 </context>
 <context>
@@ -4216,7 +4221,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::bridge::LiveBridge</name>
     <message>
-        <location filename="../core/bridge/live_bridge.cpp" line="+169"/>
+        <location filename="../core/bridge/live_bridge.cpp" line="+170"/>
         <source>Cannot listen on %1 port %2: %3</source>
         <translation>無法在 %1 的連接埠 %2 上監聽：%3</translation>
     </message>
@@ -12454,11 +12459,11 @@ Default: %2</source>
     </message>
     <message>
         <location line="+3"/>
-        <source>File name; {date}, {time}, {product} and {serial} are filled in</source>
-        <translation>檔名；會自動填入 {date}、{time}、{product} 和 {serial}</translation>
+        <source>File name; {date}, {time}, {product} and {serial} are filled in. Ending in .imucap: every byte, to replay and export later; ending in .mcap: the decoded samples as MCAP, which PlotJuggler, Foxglove and Lichtblick open</source>
+        <translation>檔名；{date}、{time}、{product} 與 {serial} 會自動填入。以 .imucap 結尾：記錄每個位元組，便於之後重播與匯出；以 .mcap 結尾：以 MCAP 記錄解碼後的取樣，可由 PlotJuggler、Foxglove 與 Lichtblick 開啟</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+16"/>
         <source>Folder:</source>
         <translation>資料夾：</translation>
     </message>
@@ -12468,7 +12473,7 @@ Default: %2</source>
         <translation>檔案：</translation>
     </message>
     <message>
-        <location line="+93"/>
+        <location line="+95"/>
         <source>Not recording: the device is not connected. Press Connect (Ctrl+K), then Record (Ctrl+R).</source>
         <translation>未在錄製：裝置未連線。請按「連線」(Ctrl+K)，再按「錄製」(Ctrl+R)。</translation>
     </message>

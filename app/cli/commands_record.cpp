@@ -5,6 +5,7 @@
 #include "device/link_opener.h"
 #include "protocol/can/can_decoder.h"
 #include "protocol/hipnuc/ascii_command.h"
+#include "record/mcap_group_recording.h"
 #include "record/mcap_recording.h"
 #include "record/capture_header.h"
 
@@ -101,6 +102,46 @@ int recordGroup(const QStringList &specs, const QString &folder, double duration
     return ExitOk; // Ctrl+C is how a recording without --duration ends
 }
 
+// record PORT,PORT,... -o run.mcap: every device's samples into one MCAP file
+// (record/mcap_group_recording.h).
+int recordGroupMcap(const QStringList &specs, const QString &path, double duration, int baud)
+{
+    std::vector<OpenDevice> devices;
+    if (const int code = openDevices(specs, baud, devices); code != ExitOk)
+        return code;
+    std::vector<record::McapGroupRecording::Member> members;
+    for (OpenDevice &d : devices) {
+        record::CaptureHeader header;
+        header.setIdentity(d.identity);
+        header.set(record::CaptureHeader::kLinkKind, d.link.link->linkKind().toStdString());
+        header.set(record::CaptureHeader::kPort, d.spec.toStdString());
+        // Named by its serial number; by its port when it has none ("pts-3").
+        QString name = d.spec.startsWith(QLatin1String("/dev/")) ? d.spec.mid(5).section(QLatin1Char(':'), 0, 0) : d.spec;
+        name.replace(QLatin1Char('/'), QLatin1Char('-'));
+        members.push_back({d.link.link->sharedStore(), header, d.identity.serial.empty() ? name.toStdString() : std::string()});
+    }
+    record::McapGroupRecording recording;
+    QString error;
+    if (!recording.start(path, members, &error))
+        return fail(error);
+    out(QStringLiteral("recording %1 devices to %2 (Ctrl+C stops)").arg(devices.size()).arg(path));
+    QElapsedTimer clock;
+    clock.start();
+    waitFor([&] { return !recording.error().isEmpty(); }, duration > 0 ? int(duration * 1000) : -1);
+    const QString why = recording.stop();
+    const std::vector<uint64_t> written = recording.samples();
+    out(QStringLiteral("recorded %1 s into %2: %3 bytes, %4 samples missed")
+            .arg(double(clock.elapsed()) / 1000.0, 0, 'f', 1)
+            .arg(path)
+            .arg(recording.bytesWritten())
+            .arg(recording.missed()));
+    for (size_t i = 0; i < devices.size(); ++i)
+        out(QStringLiteral("  %1: %2 samples").arg(devices[i].spec).arg(written[i]));
+    for (OpenDevice &d : devices)
+        d.link.link->close();
+    return why.isEmpty() ? ExitOk : fail(why);
+}
+
 } // namespace
 
 int cmdRecord(const QStringList &args)
@@ -119,10 +160,10 @@ int cmdRecord(const QStringList &args)
                                    QStringLiteral("Start a new file every N minutes."), QStringLiteral("N")));
     p.addPositionalArgument(QStringLiteral("PORT[,PORT...]"),
                             QStringLiteral("Serial port; several, comma-separated, record one session into the folder "
-                                           "-o names (a port may be PORT:BAUD, modbus:PORT[@ID], modbus-hec495:PORT[@ID] or "
+                                           "-o names (or, for a name ending in .mcap, into one MCAP file) (a port may be PORT:BAUD, modbus:PORT[@ID], modbus-hec495:PORT[@ID] or "
                                            "can:PLUGIN:INTERFACE[:PROTOCOL])"));
     const QString usage = QStringLiteral("imudesk-cli record PORT -o FILE [--duration S] [--baud B] [--split-mb N] "
-                                         "[--split-minutes N]\n       imudesk-cli record PORT,PORT[,...] -o FOLDER "
+                                         "[--split-minutes N]\n       imudesk-cli record PORT,PORT[,...] -o FOLDER|FILE.mcap "
                                          "[--duration S] [--baud B]");
     if (!parseArgs(p, args, usage))
         return ExitUsage;
@@ -148,6 +189,8 @@ int cmdRecord(const QStringList &args)
         if (splitMb > 0 || splitMinutes > 0)
             return fail(QStringLiteral("--split-mb and --split-minutes are for one device's capture"), ExitUsage);
         std::signal(SIGXFSZ, SIG_IGN);
+        if (record::McapRecording::isMcapPath(path))
+            return recordGroupMcap(specs, path, duration, int(baudValue));
         return recordGroup(specs, path, duration, int(baudValue));
     }
     // A file size limit (ulimit -f) must end the recording with a message, not kill it.

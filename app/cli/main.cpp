@@ -27,7 +27,7 @@ void usage(FILE *to)
                "  config PORT [set KEY=VALUE...|action NAME|export F|diff F|apply F] [--save] [--reboot] [--json]\n"
                "                                         read, set, compare and apply device settings\n"
                "  record PORT -o FILE [--duration S] [--baud B]  record what the device sends to a capture file\n"
-               "  record PORT,PORT[,...] -o FOLDER [--duration S]  record several devices as one session\n"
+               "  record PORT,PORT[,...] -o FOLDER|FILE.mcap [--duration S]  several devices: a session, or one MCAP\n"
                "  align FOLDER [--reference NAME] [--from S --to S] [--dry-run]\n"
                "                                         twist-to-align: the devices' offsets from a fixture's sharp turns\n"
                "  export FILE --format vendor-csv|csv|jsonl|mcap|mat [-o OUT] [--from S --to S]\n"

@@ -5,6 +5,8 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 
+#include <set>
+
 namespace imudesk::record {
 
 namespace fm = format::mcap;
@@ -79,23 +81,37 @@ fm::SampleChannels::Device McapRecording::channelsOf(const CaptureHeader &header
 
 bool McapRecording::start(const QString &path, const CaptureHeader &header, int64_t epochOffsetNs, QString *error)
 {
+    return start(path, std::vector<Device>{{header, {}}}, epochOffsetNs, error);
+}
+
+bool McapRecording::start(const QString &path, const std::vector<Device> &devices, int64_t epochOffsetNs,
+                          QString *error)
+{
     m_path = path;
     m_epochOffsetNs = epochOffsetNs;
     m_samples = 0;
+    m_channels.clear();
     m_writer = std::make_unique<fm::McapWriter>();
     if (!m_writer->open(path, writerOptions())) {
         if (error)
             *error = QCoreApplication::translate("McapRecording", "Cannot write %1: %2").arg(path, m_writer->error());
         return false;
     }
-    m_writer->addMetadata("device", deviceMetadata(header));
     m_writer->addMetadata("time", timeMetadata());
-    if (const std::string config = configurationJson(header); !config.empty()) {
-        const uint64_t now = uint64_t(QDateTime::currentMSecsSinceEpoch()) * 1'000'000u;
-        m_writer->attach("configuration.json", "application/json", config, now, now);
+    const uint64_t now = uint64_t(QDateTime::currentMSecsSinceEpoch()) * 1'000'000u;
+    // One device: its metadata "device" and attachment "configuration.json", as an export has them.
+    const bool one = devices.size() == 1;
+    std::set<std::string> names;
+    for (const Device &dev : devices) {
+        fm::SampleChannels::Device d = channelsOf(dev.header, dev.name);
+        for (int n = 2; !names.insert(d.name).second; ++n) // two devices of one name: _2, _3, ...
+            d = channelsOf(dev.header, channelsOf(dev.header, dev.name).name + "_" + std::to_string(n));
+        m_writer->addMetadata(one ? std::string("device") : "device " + d.name, d.metadata);
+        if (const std::string config = configurationJson(dev.header); !config.empty())
+            m_writer->attach(one ? std::string("configuration.json") : d.name + "/configuration.json", "application/json",
+                             config, now, now);
+        m_channels.push_back(std::make_unique<fm::SampleChannels>(*m_writer, d));
     }
-    const fm::SampleChannels::Device d = channelsOf(header);
-    m_channels = std::make_unique<fm::SampleChannels>(*m_writer, d);
     m_sinceFlush.start();
     if (!m_writer->flush()) { // the header and metadata on disk before the first sample
         if (error)
@@ -105,9 +121,9 @@ bool McapRecording::start(const QString &path, const CaptureHeader &header, int6
     return true;
 }
 
-bool McapRecording::append(const model::Sample &s)
+bool McapRecording::append(size_t device, const model::Sample &s)
 {
-    if (!m_channels || !m_channels->write(s, m_epochOffsetNs))
+    if (device >= m_channels.size() || !m_channels[device]->write(s, m_epochOffsetNs))
         return false;
     ++m_samples;
     return true;

@@ -26,7 +26,16 @@ public:
     ~McapRecording();
     // header: the device (identity, link, configuration snapshot) as a capture would have it.
     bool start(const QString &path, const CaptureHeader &header, int64_t epochOffsetNs, QString *error);
-    bool append(const model::Sample &s);
+    // Several devices in one file (a live recording of several): each one's channels under its
+    // name (channelsOf), its identity as the metadata "device <name>", its configuration as
+    // the attachment "<name>/configuration.json". append(index, ...) writes the index-th's.
+    struct Device {
+        CaptureHeader header;
+        std::string name; // empty: its serial number, else its product
+    };
+    bool start(const QString &path, const std::vector<Device> &devices, int64_t epochOffsetNs, QString *error);
+    bool append(size_t device, const model::Sample &s);
+    bool append(const model::Sample &s) { return append(0, s); }
     bool append(const std::vector<model::Sample> &batch);
     void tick();
     // The summary and the footer; the error that stopped it, or empty.
@@ -55,7 +64,7 @@ public:
 
 private:
     std::unique_ptr<format::mcap::McapWriter> m_writer;
-    std::unique_ptr<format::mcap::SampleChannels> m_channels;
+    std::vector<std::unique_ptr<format::mcap::SampleChannels>> m_channels;
     int64_t m_epochOffsetNs = 0;
     uint64_t m_samples = 0;
     QElapsedTimer m_sinceFlush;

@@ -20,6 +20,7 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QProcess>
+#include <QRegularExpression>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -479,6 +480,66 @@ private Q_SLOTS:
         const QJsonObject mine = readMcap(m_mcap, {QStringLiteral("--messages"), QStringLiteral("0")}, &error);
         QCOMPARE(f.value(QStringLiteral("statistics")).toObject().value(QStringLiteral("messageCount")),
                  mine.value(QStringLiteral("statistics")).toObject().value(QStringLiteral("messageCount")));
+    }
+
+    // Two live modules (HI91 at 500 Hz each) recorded into one MCAP file: each one's channels
+    // under its own name, as many Imu messages as samples the recording says it wrote, none missed.
+    void severalDevicesLiveIntoOneFile()
+    {
+        std::vector<std::unique_ptr<QProcess>> sims;
+        QStringList ports;
+        for (int i = 0; i < 2; ++i) {
+            auto sim = std::make_unique<QProcess>();
+            sim->start(QString::fromUtf8(IMUDESK_CLI_PATH), {QStringLiteral("simulate"), QStringLiteral("--pty"), QStringLiteral("--baud"),
+                                                              QStringLiteral("921600"), QStringLiteral("--seed"), QString::number(i + 3)});
+            QVERIFY(sim->waitForStarted());
+            QTRY_VERIFY_WITH_TIMEOUT(sim->canReadLine(), 10000);
+            const QString pty = QString::fromUtf8(sim->readLine()).trimmed().mid(5);
+            QProcess send;
+            send.start(QString::fromUtf8(IMUDESK_CLI_PATH), {QStringLiteral("send"), pty, QStringLiteral("--baud"),
+                                                              QStringLiteral("921600"), QStringLiteral("LOG HI91 ONTIME 0.002")});
+            QVERIFY(send.waitForFinished(15000) && send.exitCode() == 0);
+            ports << pty + QStringLiteral(":921600");
+            sims.push_back(std::move(sim));
+        }
+        const QString out = m_dir.filePath(QStringLiteral("two.mcap"));
+        QProcess rec;
+        rec.start(QString::fromUtf8(IMUDESK_CLI_PATH), {QStringLiteral("record"), ports.join(QLatin1Char(',')), QStringLiteral("-o"), out,
+                                                         QStringLiteral("--duration"), QStringLiteral("4")});
+        QVERIFY(rec.waitForFinished(60000));
+        const QString said = QString::fromUtf8(rec.readAllStandardOutput());
+        for (auto &s : sims)
+            test::stopCli(*s);
+        QVERIFY2(rec.exitCode() == 0, qPrintable(said + QString::fromUtf8(rec.readAllStandardError())));
+        QVERIFY2(said.contains(QStringLiteral(", 0 samples missed")), qPrintable(said));
+        QString error;
+        const QJsonObject f = readMcap(out, {QStringLiteral("--messages"), QStringLiteral("0")}, &error);
+        QVERIFY2(error.isEmpty(), qPrintable(error));
+        const QJsonObject perChannel = f.value(QStringLiteral("statistics")).toObject().value(QStringLiteral("channelMessageCounts")).toObject();
+        QMap<QString, qlonglong> imu;
+        for (const QJsonValue v : f.value(QStringLiteral("channels")).toArray()) {
+            const QJsonObject c = v.toObject();
+            const QString topic = c.value(QStringLiteral("topic")).toString();
+            if (topic.endsWith(QLatin1String("/imu")))
+                imu.insert(topic, perChannel.value(QString::number(c.value(QStringLiteral("id")).toInt())).toString().toLongLong());
+        }
+        QCOMPARE(imu.size(), 2);
+        // "  PORT: N samples", in the order given.
+        QList<qlonglong> written;
+        const QRegularExpression line(QStringLiteral(": (\\d+) samples"));
+        for (auto m = line.globalMatch(said); m.hasNext();)
+            written << m.next().captured(1).toLongLong();
+        QCOMPARE(written.size(), 2);
+        QList<qlonglong> counted = imu.values();
+        std::sort(counted.begin(), counted.end());
+        std::sort(written.begin(), written.end());
+        QCOMPARE(counted, written);
+        for (qlonglong n : counted)
+            QVERIFY2(n >= 1500, qPrintable(QString::number(n))); // 4 s at 500 Hz, less the start
+        QStringList metadata;
+        for (const QJsonValue v : f.value(QStringLiteral("metadata")).toArray())
+            metadata << v.toObject().value(QStringLiteral("name")).toString();
+        QCOMPARE(metadata.filter(QStringLiteral("device ")).size(), 2);
     }
 };
 

@@ -15,6 +15,7 @@
 #include <QPushButton>
 #include <QSignalSpy>
 #include <QTemporaryDir>
+#include <QFile>
 #include <QTest>
 
 #include <csignal>
@@ -60,6 +61,7 @@ private Q_SLOTS:
         QTest::newRow("suffix added") << "run" << "run.imucap";
         QTest::newRow("no path escape, no hidden file") << "../x/y" << "_._x_y.imucap";
         QTest::newRow("date") << "{date}" << QDate::currentDate().toString(QStringLiteral("yyyyMMdd")) + ".imucap";
+        QTest::newRow("MCAP kept") << "{product}.mcap" << "device.mcap";
     }
     void patternExpands()
     {
@@ -103,6 +105,30 @@ private Q_SLOTS:
         QCOMPARE(r.next(chunk), record::CaptureReader::Result::Chunk);
     }
 
+    // A pattern ending in .mcap records MCAP from the window: the file opens in the official
+    // reader's format (magic first), the controls count its samples.
+    void recordMcapFromTheWindow()
+    {
+        RecordingControls c;
+        c.setSession(m_session.get());
+        c.setFolder(m_dir.path());
+        c.setPattern(QStringLiteral("{product}-live.mcap"));
+        c.setIdentity(QString::fromStdString(m_identity.productName), QString::fromStdString(m_identity.serial));
+        QSignalSpy started(&c, &RecordingControls::recordingStarted);
+        QSignalSpy stopped(&c, &RecordingControls::recordingStopped);
+        c.startRecording();
+        QVERIFY(started.wait(5000));
+        QCOMPARE(started.at(0).at(0).toString(), m_dir.filePath(QStringLiteral("HI14R3-live.mcap")));
+        QTRY_VERIFY_WITH_TIMEOUT(c.findChild<QLabel *>(QStringLiteral("frames"))->text().startsWith(QLatin1String("1")), 3000);
+        c.stopRecording();
+        QVERIFY(stopped.wait(5000));
+        QFile f(c.currentPath());
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        const QByteArray all = f.readAll();
+        QVERIFY(all.startsWith(QByteArray("\x89MCAP0\r\n", 8)));
+        QVERIFY(all.endsWith(QByteArray("\x89MCAP0\r\n", 8))); // closed: summary and footer written
+    }
+
     void missingFolderIsReported()
     {
         RecordingControls c;
@@ -134,7 +160,7 @@ private Q_SLOTS:
         setrlimit(RLIMIT_FSIZE, &before);
         std::signal(SIGXFSZ, old);
         QVERIFY(sawFailure);
-        QVERIFY(failed.at(0).at(0).toString().contains(QStringLiteral("Recording stopped")));
+        QVERIFY2(failed.at(0).at(0).toString().contains(QStringLiteral("Recording stopped")), qPrintable(failed.at(0).at(0).toString()));
         QCOMPARE(c.findChild<QLabel *>(QStringLiteral("message"))->text(), failed.at(0).at(0).toString());
         QCOMPARE(stopped.size(), 1);
         QVERIFY(!c.isRecording());

@@ -63,7 +63,7 @@ const QSet<QString> &keptWords()
         QStringLiteral("Ctrl"), QStringLiteral("Shift"), QStringLiteral("Alt"), QStringLiteral("Pause"), QStringLiteral("ttyS"),
         QStringLiteral("Linux"), QStringLiteral("socketcan"), QStringLiteral("peakcan"), QStringLiteral("can"),
         QStringLiteral("kbit"), QStringLiteral("Mbit"), QStringLiteral("bit"), QStringLiteral("pandas"), QStringLiteral("PlotJuggler"), QStringLiteral("Foxglove"), QStringLiteral("Lichtblick"),
-        QStringLiteral("MATLAB"), QStringLiteral("mat"), QStringLiteral("WebSocket"),
+        QStringLiteral("MATLAB"), QStringLiteral("mat"), QStringLiteral("mcap"), QStringLiteral("WebSocket"),
         // Other tools' menus as they name them (Foxglove's "Open connection", PlotJuggler's "Streaming >
         // Foxglove Bridge" and "UDP Server", its "timestamp" field), and the topics a device streams.
         QStringLiteral("Open"), QStringLiteral("connection"), QStringLiteral("Streaming"), QStringLiteral("Bridge"),

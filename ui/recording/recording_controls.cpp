@@ -24,7 +24,9 @@ RecordingControls::RecordingControls(QWidget *parent) : QWidget(parent)
     m_folder->setToolTip(tr("Folder the capture files are written to"));
     m_pattern = new QLineEdit(QString::fromLatin1(kDefaultPattern), this);
     m_pattern->setObjectName(QStringLiteral("pattern"));
-    m_pattern->setToolTip(tr("File name; {date}, {time}, {product} and {serial} are filled in"));
+    m_pattern->setToolTip(tr("File name; {date}, {time}, {product} and {serial} are filled in. Ending in .imucap: every "
+                             "byte, to replay and export later; ending in .mcap: the decoded samples as MCAP, which "
+                             "PlotJuggler, Foxglove and Lichtblick open"));
     m_elapsed = new QLabel(this);
     m_elapsed->setObjectName(QStringLiteral("elapsed"));
     m_size = new QLabel(this);
@@ -123,7 +125,9 @@ QString RecordingControls::expandPattern(const QString &pattern, const QString &
     while (name.startsWith(QLatin1Char('.')))
         name.replace(0, 1, QLatin1Char('_'));
     name.truncate(200);
-    if (!name.endsWith(QLatin1String(".imucap")))
+    // A name ending in .mcap records MCAP (the decoded samples, for the field's tools); any other
+    // a capture.
+    if (!name.endsWith(QLatin1String(".imucap")) && !name.endsWith(QLatin1String(".mcap"), Qt::CaseInsensitive))
         name += QLatin1String(".imucap");
     return name;
 }

@@ -49,7 +49,8 @@ public:
     QString expandPattern(const QString &pattern) const;
     // The file name a pattern gives for this product, serial and time: {product}, {serial},
     // {date} (yyyyMMdd), {time} (HHmmss); characters that leave the folder or upset a file
-    // system become "_"; ".imucap" is added when missing. (Also the preferences' example.)
+    // system become "_"; ".imucap" is added unless it ends in .imucap or .mcap (an MCAP recording).
+    // (Also the preferences' example.)
     static QString expandPattern(const QString &pattern, const QString &product, const QString &serial,
                                  const QDateTime &when);
 
