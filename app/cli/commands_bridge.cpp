@@ -119,16 +119,8 @@ int cmdBridge(const QStringList &args)
     if (!bridge.start(o, &error))
         return fail(error);
     for (OpenDevice &d : devices) {
-        record::CaptureHeader header;
-        header.setIdentity(d.identity);
-        header.set(record::CaptureHeader::kLinkKind, d.link.link->linkKind().toStdString());
-        header.set(record::CaptureHeader::kPort, d.spec.toStdString());
-        QString name = QString::fromStdString(d.identity.serial);
-        if (name.isEmpty()) { // the port without /dev/ ("pts-3"), as a recorded session names it
-            name = d.spec.startsWith(QLatin1String("/dev/")) ? d.spec.mid(5).section(QLatin1Char(':'), 0, 0) : d.spec;
-            name.replace(QLatin1Char('/'), QLatin1Char('-'));
-        }
-        bridge.addDevice(d.link.link->sharedStore(), header, name);
+        const QString serial = QString::fromStdString(d.identity.serial);
+        bridge.addDevice(d.link.link->sharedStore(), headerOf(d), serial.isEmpty() ? portName(d.spec) : serial);
     }
     if (o.websocket)
         out(QStringLiteral("bridge %1 serving %2 device(s) (Ctrl+C stops)").arg(bridge.url()).arg(devices.size()));

@@ -38,12 +38,8 @@ int recordGroup(const QStringList &specs, const QString &folder, double duration
         auto *session = qobject_cast<device::Session *>(d.link.link.get());
         if (!session)
             return fail(QStringLiteral("%1: this link cannot be recorded").arg(d.spec));
-        // A name for the file and the manifest: the port without /dev/ ("ttyUSB0", "pts-3").
-        QString name = d.spec;
-        if (name.startsWith(QLatin1String("/dev/")))
-            name = name.mid(5).section(QLatin1Char(':'), 0, 0); // without its :BAUD
-        name.replace(QLatin1Char('/'), QLatin1Char('-'));
-        members.push_back({session, name, d.spec, d.identity});
+        // Named for the file and the manifest by its port ("ttyUSB0", "pts-3").
+        members.push_back({session, portName(d.spec), d.spec, d.identity});
     }
     device::GroupRecording group;
     QString error;
@@ -110,16 +106,9 @@ int recordGroupMcap(const QStringList &specs, const QString &path, double durati
     if (const int code = openDevices(specs, baud, devices); code != ExitOk)
         return code;
     std::vector<record::McapGroupRecording::Member> members;
-    for (OpenDevice &d : devices) {
-        record::CaptureHeader header;
-        header.setIdentity(d.identity);
-        header.set(record::CaptureHeader::kLinkKind, d.link.link->linkKind().toStdString());
-        header.set(record::CaptureHeader::kPort, d.spec.toStdString());
-        // Named by its serial number; by its port when it has none ("pts-3").
-        QString name = d.spec.startsWith(QLatin1String("/dev/")) ? d.spec.mid(5).section(QLatin1Char(':'), 0, 0) : d.spec;
-        name.replace(QLatin1Char('/'), QLatin1Char('-'));
-        members.push_back({d.link.link->sharedStore(), header, d.identity.serial.empty() ? name.toStdString() : std::string()});
-    }
+    for (OpenDevice &d : devices) // named by its serial number; by its port when it has none
+        members.push_back({d.link.link->sharedStore(), headerOf(d),
+                           d.identity.serial.empty() ? portName(d.spec).toStdString() : std::string()});
     record::McapGroupRecording recording;
     QString error;
     if (!recording.start(path, members, &error))

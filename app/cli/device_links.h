@@ -6,6 +6,7 @@
 #include "device/link_opener.h"
 #include "device/session_types.h"
 #include "model/device_identity.h"
+#include "record/capture_header.h"
 
 #include <QString>
 #include <QStringList>
@@ -26,6 +27,12 @@ struct OpenDevice {
     QString error;
     bool ready = false;
 };
+
+// A device's name where it has no serial number: its port without /dev/ and its :BAUD ("pts-3",
+// "ttyUSB0"), as a recorded session names its file.
+QString portName(const QString &spec);
+// What a recording or the bridge says of an opened device: its identity, link and port.
+record::CaptureHeader headerOf(const OpenDevice &d);
 
 // Opens every device of specs (baud: the serial ports' rate, 0 = detect) and waits until each
 // is connected (30 s to open, 15 s to connect). ExitOk when all are; else the exit code, the

@@ -173,18 +173,8 @@ private Q_SLOTS:
         QStringList ports;
         for (int i = 0; i < kDevices; ++i) {
             auto sim = std::make_unique<QProcess>();
-            sim->start(QString::fromUtf8(IMUDESK_CLI_PATH), {QStringLiteral("simulate"), QStringLiteral("--pty"),
-                                                              QStringLiteral("--baud"), QStringLiteral("921600"),
-                                                              QStringLiteral("--seed"), QString::number(i + 1)});
-            QVERIFY(sim->waitForStarted());
-            QTRY_VERIFY_WITH_TIMEOUT(sim->canReadLine(), 10000);
-            const QString first = QString::fromUtf8(sim->readLine()).trimmed();
-            QVERIFY2(first.startsWith(QStringLiteral("pty: /dev/")), qPrintable(first));
-            const QString pty = first.mid(5);
-            QProcess send;
-            send.start(QString::fromUtf8(IMUDESK_CLI_PATH), {QStringLiteral("send"), pty, QStringLiteral("--baud"),
-                                                              QStringLiteral("921600"), QStringLiteral("LOG HI91 ONTIME 0.001")});
-            QVERIFY(send.waitForFinished(15000) && send.exitCode() == 0);
+            const QString pty = test::startPtySimulator(*sim, i + 1, QStringLiteral("LOG HI91 ONTIME 0.001"));
+            QVERIFY(!pty.isEmpty());
             ports << pty + QStringLiteral(":921600");
             sims.push_back(std::move(sim));
         }

@@ -9,6 +9,7 @@
 #include "record/session_manifest.h"
 #include "../common/cli_run.h"
 #include "../common/synthetic_capture.h"
+#include "../common/synthetic_session.h"
 #include "../common/test_main.h"
 
 #include <QDir>
@@ -122,25 +123,9 @@ private Q_SLOTS:
     void sessionToOneFile()
     {
         const QString folder = m_dir.filePath(QStringLiteral("session"));
-        QVERIFY(QDir().mkpath(folder));
         record::SessionManifest manifest;
-        manifest.startedUtc = QStringLiteral("2026-11-29T20:00:00.000Z");
-        manifest.startedHostNs = 4'900'000'000;
-        for (int i = 0; i < 2; ++i) {
-            synthetic::CaptureSpec spec;
-            spec.frames = 1000 + 500 * uint64_t(i);
-            spec.seed = uint32_t(7 + i);
-            spec.serial = i == 0 ? "AAA1" : "BBB2";
-            const QString file = QStringLiteral("%1.imucap").arg(QLatin1Char('A' + i));
-            QVERIFY(synthetic::writeCapture(QDir(folder).filePath(file), spec) > 0);
-            record::SessionManifest::Device d;
-            d.name = QString(QLatin1Char('A' + i));
-            d.linkKind = QStringLiteral("HiPNUC serial");
-            d.file = file;
-            manifest.devices.push_back(d);
-        }
         QString error;
-        QVERIFY2(manifest.save(folder, &error), qPrintable(error));
+        QVERIFY2(test::writeTwoDeviceSession(folder, &manifest, &error), qPrintable(error));
         record::SessionExporter::Options o;
         o.format = record::CaptureExporter::Format::Mat;
         o.output = m_dir.filePath(QStringLiteral("session.mat"));

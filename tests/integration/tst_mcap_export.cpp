@@ -6,6 +6,7 @@
 // still reads up to its last whole chunk.
 #include "../common/cli_process.h"
 #include "../common/synthetic_capture.h"
+#include "../common/synthetic_session.h"
 #include "../common/test_main.h"
 #include "../common/test_paths.h"
 #include "record/capture_exporter.h"
@@ -340,17 +341,8 @@ private Q_SLOTS:
     void killedRecordingKeepsAllButItsLastSecond()
     {
         QProcess sim;
-        sim.start(QString::fromUtf8(IMUDESK_CLI_PATH), {QStringLiteral("simulate"), QStringLiteral("--pty"),
-                                                         QStringLiteral("--baud"), QStringLiteral("921600")});
-        QVERIFY(sim.waitForStarted());
-        QTRY_VERIFY_WITH_TIMEOUT(sim.canReadLine(), 10000);
-        const QString first = QString::fromUtf8(sim.readLine()).trimmed();
-        QVERIFY2(first.startsWith(QStringLiteral("pty: /dev/")), qPrintable(first));
-        const QString ptyPath = first.mid(5);
-        QProcess send;
-        send.start(QString::fromUtf8(IMUDESK_CLI_PATH), {QStringLiteral("send"), ptyPath, QStringLiteral("--baud"),
-                                                          QStringLiteral("921600"), QStringLiteral("LOG HI91 ONTIME 0.001")});
-        QVERIFY(send.waitForFinished(15000) && send.exitCode() == 0);
+        const QString ptyPath = test::startPtySimulator(sim, 1, QStringLiteral("LOG HI91 ONTIME 0.001"));
+        QVERIFY(!ptyPath.isEmpty());
         const QString out = m_dir.filePath(QStringLiteral("killed.mcap"));
         QProcess rec;
         QVERIFY(test::startCliUntil(rec, {QStringLiteral("record"), ptyPath, QStringLiteral("--baud"), QStringLiteral("921600"),
@@ -410,26 +402,9 @@ private Q_SLOTS:
     void sessionToOneFile()
     {
         const QString folder = m_dir.filePath(QStringLiteral("session"));
-        QVERIFY(QDir().mkpath(folder));
         record::SessionManifest manifest;
-        manifest.startedUtc = QStringLiteral("2026-11-29T20:00:00.000Z");
-        manifest.startedHostNs = 4'900'000'000;
-        for (int i = 0; i < 2; ++i) {
-            synthetic::CaptureSpec spec;
-            spec.frames = 1000 + 500 * uint64_t(i);
-            spec.seed = uint32_t(7 + i);
-            spec.serial = i == 0 ? "AAA1" : "BBB2";
-            spec.config = {{"device", std::to_string(i)}};
-            const QString file = QStringLiteral("%1.imucap").arg(QLatin1Char('A' + i));
-            QVERIFY(synthetic::writeCapture(QDir(folder).filePath(file), spec) > 0);
-            record::SessionManifest::Device d;
-            d.name = QString(QLatin1Char('A' + i));
-            d.linkKind = QStringLiteral("HiPNUC serial");
-            d.file = file;
-            manifest.devices.push_back(d);
-        }
         QString error;
-        QVERIFY2(manifest.save(folder, &error), qPrintable(error));
+        QVERIFY2(test::writeTwoDeviceSession(folder, &manifest, &error), qPrintable(error));
         record::SessionExporter::Options o;
         o.format = record::CaptureExporter::Format::Mcap;
         o.output = m_dir.filePath(QStringLiteral("session.mcap"));
@@ -490,15 +465,8 @@ private Q_SLOTS:
         QStringList ports;
         for (int i = 0; i < 2; ++i) {
             auto sim = std::make_unique<QProcess>();
-            sim->start(QString::fromUtf8(IMUDESK_CLI_PATH), {QStringLiteral("simulate"), QStringLiteral("--pty"), QStringLiteral("--baud"),
-                                                              QStringLiteral("921600"), QStringLiteral("--seed"), QString::number(i + 3)});
-            QVERIFY(sim->waitForStarted());
-            QTRY_VERIFY_WITH_TIMEOUT(sim->canReadLine(), 10000);
-            const QString pty = QString::fromUtf8(sim->readLine()).trimmed().mid(5);
-            QProcess send;
-            send.start(QString::fromUtf8(IMUDESK_CLI_PATH), {QStringLiteral("send"), pty, QStringLiteral("--baud"),
-                                                              QStringLiteral("921600"), QStringLiteral("LOG HI91 ONTIME 0.002")});
-            QVERIFY(send.waitForFinished(15000) && send.exitCode() == 0);
+            const QString pty = test::startPtySimulator(*sim, i + 3, QStringLiteral("LOG HI91 ONTIME 0.002"));
+            QVERIFY(!pty.isEmpty());
             ports << pty + QStringLiteral(":921600");
             sims.push_back(std::move(sim));
         }

@@ -47,36 +47,11 @@
 import { createWriteStream } from "node:fs";
 import wsProtocol from "@foxglove/ws-protocol"; // CommonJS: its named exports are not detectable
 import { WebSocket } from "ws";
-import { parse as parseMessageDefinition } from "@foxglove/rosmsg";
+import { ros2Definitions } from "./ros2_definitions.mjs";
 import { MessageReader } from "@foxglove/rosmsg2-serialization";
 
 const { FoxgloveClient } = wsProtocol;
 const utf8 = new TextDecoder("utf-8", { fatal: true });
-
-/**
- * Parses ros2msg schema text; as in read_mcap.mjs, builtin_interfaces/Time and Duration become
- * {int32 sec, uint32 nanosec} structs (same CDR layout) instead of ROS 1 style {sec, nsec}.
- */
-function ros2Definitions(text) {
-  const definitions = parseMessageDefinition(text, { ros2: true });
-  for (const { definitions: fields } of definitions) {
-    for (const field of fields) {
-      if (field.type === "time" || field.type === "duration") {
-        field.type = field.type === "time" ? "builtin_interfaces/msg/Time" : "builtin_interfaces/msg/Duration";
-        field.isComplex = true;
-      }
-    }
-  }
-  const secNanosec = [
-    { name: "sec", type: "int32", isComplex: false, isArray: false },
-    { name: "nanosec", type: "uint32", isComplex: false, isArray: false },
-  ];
-  definitions.push(
-    { name: "builtin_interfaces/msg/Time", definitions: secNanosec },
-    { name: "builtin_interfaces/msg/Duration", definitions: secNanosec },
-  );
-  return definitions;
-}
 
 /** Returns a function bytes -> decoded message for a channel; throws if it cannot decode it. */
 function makeDecoder(channel) {

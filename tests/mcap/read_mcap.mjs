@@ -27,7 +27,7 @@
 import { open } from "node:fs/promises";
 import { crc32Init, crc32Update, crc32Final } from "@foxglove/crc";
 import { McapIndexedReader, McapStreamReader } from "@mcap/core";
-import { parse as parseMessageDefinition } from "@foxglove/rosmsg";
+import { ros2Definitions } from "./ros2_definitions.mjs";
 import { MessageReader } from "@foxglove/rosmsg2-serialization";
 import { decompress as zstdDecompress } from "fzstd";
 
@@ -57,33 +57,6 @@ function toJson(v) {
     return Object.fromEntries(Object.entries(v).map(([k, x]) => [k, toJson(x)]));
   }
   return v;
-}
-
-/**
- * Parses ros2msg schema text. @foxglove/rosmsg turns builtin_interfaces/Time and Duration into
- * the primitive types "time"/"duration", which rosmsg2-serialization 2.x decodes as ROS 1 style
- * {sec, nsec}; model them as plain {int32 sec, uint32 nanosec} structs instead (same CDR layout)
- * so decoded messages carry the ROS 2 field names.
- */
-function ros2Definitions(text) {
-  const definitions = parseMessageDefinition(text, { ros2: true });
-  for (const { definitions: fields } of definitions) {
-    for (const field of fields) {
-      if (field.type === "time" || field.type === "duration") {
-        field.type = field.type === "time" ? "builtin_interfaces/msg/Time" : "builtin_interfaces/msg/Duration";
-        field.isComplex = true;
-      }
-    }
-  }
-  const secNanosec = [
-    { name: "sec", type: "int32", isComplex: false, isArray: false },
-    { name: "nanosec", type: "uint32", isComplex: false, isArray: false },
-  ];
-  definitions.push(
-    { name: "builtin_interfaces/msg/Time", definitions: secNanosec },
-    { name: "builtin_interfaces/msg/Duration", definitions: secNanosec },
-  );
-  return definitions;
 }
 
 /** Decodes message payloads; one MessageReader per schema id. */
