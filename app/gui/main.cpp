@@ -6,6 +6,7 @@
 #include "recording/twist_align_dialog.h"
 #include "workspace/tool_actions.h"
 #include "workspace/main_window.h"
+#include "bridge/bridge_controller.h"
 #include "model/device_identity.h"
 #include "sim/hipnuc_simulator.h"
 #include "sim/motion_model.h"
@@ -154,8 +155,14 @@ int main(int argc, char *argv[])
                                             "and run PLAN on it; without PLAN the built-in example plan, its "
                                             "firmware step without an image (the old module fails it) and its "
                                             "profile step off."));
+    const QCommandLineOption bridgeOption(
+        QStringLiteral("bridge"),
+        QCoreApplication::translate("main", "Start the live bridge (Tools > Live bridge) on ADDR:PORT, e.g. "
+                                            "127.0.0.1:8765: the connected devices to Foxglove, Lichtblick and PlotJuggler."),
+        QStringLiteral("ADDR:PORT"));
     parser.addOptions({langOption, simulateOption, firmwareOption, motionOption, portOption, baudOption, demoOption,
-                       screenshotOption, afterOption, linkOption, dockOption, alignOption, stationOption, stationDemoOption});
+                       screenshotOption, afterOption, linkOption, dockOption, alignOption, stationOption, stationDemoOption,
+                       bridgeOption});
     parser.addPositionalArgument(QStringLiteral("MODEL"),
                                  QCoreApplication::translate("main", "Model to simulate with --simulate (default HI14)."),
                                  QStringLiteral("[MODEL]"));
@@ -314,6 +321,26 @@ int main(int argc, char *argv[])
         alignDialog->setAttribute(Qt::WA_DeleteOnClose);
         alignDialog->show();
         alignDialog->findOffsets();
+    }
+
+    if (parser.isSet(bridgeOption)) {
+        const QString spec = parser.value(bridgeOption);
+        const int colon = int(spec.lastIndexOf(QLatin1Char(':')));
+        imudesk::bridge::BridgeOptions o;
+        bool ok = false;
+        const int port = spec.mid(colon + 1).toInt(&ok);
+        if (colon > 0)
+            o.address = QHostAddress(spec.left(colon).remove(QLatin1Char('[')).remove(QLatin1Char(']')));
+        QString error;
+        if (!ok || port < 0 || port > 65535 || o.address.isNull())
+            error = QStringLiteral("--bridge wants ADDR:PORT, e.g. 127.0.0.1:8765");
+        o.port = quint16(port);
+        if (error.isEmpty())
+            window.liveBridge()->start(o, &error);
+        if (!error.isEmpty())
+            std::fprintf(stderr, "imudesk: the live bridge did not start: %s\n", qPrintable(error));
+        else
+            std::fprintf(stderr, "imudesk: live bridge on %s\n", qPrintable(window.liveBridge()->bridge().url()));
     }
 
     int screenshotRc = 0;
