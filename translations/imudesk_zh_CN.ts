@@ -14124,7 +14124,7 @@ Edit it (Edit…) and start again.</source>
 <context>
     <name>main</name>
     <message>
-        <location filename="../app/gui/main.cpp" line="+92"/>
+        <location filename="../app/gui/main.cpp" line="+93"/>
         <source>ImuDesk: a bench tool for HiPNUC IMU modules.</source>
         <translation>ImuDesk：HiPNUC IMU 模块测试工具。</translation>
     </message>
@@ -14184,12 +14184,17 @@ Edit it (Edit…) and start again.</source>
         <translation>在已录制会话的文件夹 FOLDER 上打开“扭转对齐”，并计算各设备的偏移。与 --screenshot 同用时保存该对话框。</translation>
     </message>
     <message>
-        <location line="+132"/>
+        <location line="+16"/>
+        <source>Start the live bridge (Tools &gt; Live bridge) on ADDR:PORT, e.g. 127.0.0.1:8765: the connected devices to Foxglove, Lichtblick and PlotJuggler.</source>
+        <translation>在 ADDR:PORT（例如 127.0.0.1:8765）上启动实时桥接（工具 &gt; 实时桥接）：将已连接的设备发送到 Foxglove、Lichtblick 和 PlotJuggler。</translation>
+    </message>
+    <message>
+        <location line="+122"/>
         <source>Unknown panel &quot;%1&quot;; use configuration, recording, console, raw, commands, can or sync.</source>
         <translation>未知的面板“%1”；请使用 configuration、recording、console、raw、commands、can 或 sync。</translation>
     </message>
     <message>
-        <location line="-127"/>
+        <location line="-133"/>
         <source>Open the production station window; with PLAN (a test plan file), load that plan. With --screenshot the station window is saved.</source>
         <translation>打开生产测试台窗口；指定 PLAN（测试计划文件）时加载该计划。使用 --screenshot 时保存的是生产测试台窗口。</translation>
     </message>
@@ -14199,7 +14204,7 @@ Edit it (Edit…) and start again.</source>
         <translation>打开生产测试台，使用装有 8 个 HI14 模块的模拟托盘（一个陀螺仪噪声过大，一个安装方向错误，一个固件为 1.6.6），并在其上运行 PLAN；未指定 PLAN 时运行内置示例计划，其固件步骤不含镜像（旧固件模块在此步骤失败），配置方案步骤禁用。</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+17"/>
         <source>Test plan for --station or --station-demo.</source>
         <translation>--station 或 --station-demo 使用的测试计划。</translation>
     </message>
@@ -14214,12 +14219,12 @@ Edit it (Edit…) and start again.</source>
         <translation>--simulate 模拟的型号（默认 HI14）。</translation>
     </message>
     <message>
-        <location line="-28"/>
+        <location line="-34"/>
         <source>Start connected to another simulated device: hec495 (compass on serial), modbus (HI14 over Modbus RTU), can (HI14 J1939 on virtualcan) or canopen (HI14 CANopen on virtualcan); or replay a capture file, or a recorded session (its session.json or folder).</source>
         <translation>启动时连接另一种模拟设备：hec495（串口电子罗盘）、modbus（Modbus RTU 上的 HI14）、can（virtualcan 上的 HI14 J1939）或 canopen（virtualcan 上的 HI14 CANopen）；或回放一个记录文件，或一个已录制的会话（其 session.json 或文件夹）。</translation>
     </message>
     <message>
-        <location line="+44"/>
+        <location line="+50"/>
         <source>A model name is only accepted after --simulate.</source>
         <translation>型号名称只能跟在 --simulate 之后。</translation>
     </message>

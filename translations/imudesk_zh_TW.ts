@@ -14124,7 +14124,7 @@ Edit it (Edit…) and start again.</source>
 <context>
     <name>main</name>
     <message>
-        <location filename="../app/gui/main.cpp" line="+92"/>
+        <location filename="../app/gui/main.cpp" line="+93"/>
         <source>ImuDesk: a bench tool for HiPNUC IMU modules.</source>
         <translation>ImuDesk：HiPNUC IMU 模組測試工具。</translation>
     </message>
@@ -14184,12 +14184,17 @@ Edit it (Edit…) and start again.</source>
         <translation>在已錄製工作階段的資料夾 FOLDER 上開啟「扭轉對齊」，並計算各裝置的偏移。與 --screenshot 同用時儲存該對話框。</translation>
     </message>
     <message>
-        <location line="+132"/>
+        <location line="+16"/>
+        <source>Start the live bridge (Tools &gt; Live bridge) on ADDR:PORT, e.g. 127.0.0.1:8765: the connected devices to Foxglove, Lichtblick and PlotJuggler.</source>
+        <translation>在 ADDR:PORT（例如 127.0.0.1:8765）上啟動即時橋接（工具 &gt; 即時橋接）：將已連線的裝置傳送到 Foxglove、Lichtblick 與 PlotJuggler。</translation>
+    </message>
+    <message>
+        <location line="+122"/>
         <source>Unknown panel &quot;%1&quot;; use configuration, recording, console, raw, commands, can or sync.</source>
         <translation>未知的面板「%1」；請使用 configuration、recording、console、raw、commands、can 或 sync。</translation>
     </message>
     <message>
-        <location line="-127"/>
+        <location line="-133"/>
         <source>Open the production station window; with PLAN (a test plan file), load that plan. With --screenshot the station window is saved.</source>
         <translation>開啟生產測試臺視窗；指定 PLAN（測試計劃檔案）時載入該計劃。使用 --screenshot 時儲存的是生產測試臺視窗。</translation>
     </message>
@@ -14199,7 +14204,7 @@ Edit it (Edit…) and start again.</source>
         <translation>開啟生產測試臺，使用裝有 8 個 HI14 模組的模擬托盤（一個陀螺儀噪聲過大，一個安裝方向錯誤，一個韌體為 1.6.6），並在其上執行 PLAN；未指定 PLAN 時執行內建示例計劃，其韌體步驟不含映像（舊韌體模組在此步驟失敗），配置方案步驟禁用。</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+17"/>
         <source>Test plan for --station or --station-demo.</source>
         <translation>--station 或 --station-demo 使用的測試計劃。</translation>
     </message>
@@ -14214,12 +14219,12 @@ Edit it (Edit…) and start again.</source>
         <translation>--simulate 模擬的型號（預設 HI14）。</translation>
     </message>
     <message>
-        <location line="-28"/>
+        <location line="-34"/>
         <source>Start connected to another simulated device: hec495 (compass on serial), modbus (HI14 over Modbus RTU), can (HI14 J1939 on virtualcan) or canopen (HI14 CANopen on virtualcan); or replay a capture file, or a recorded session (its session.json or folder).</source>
         <translation>啟動時連線另一種模擬裝置：hec495（序列埠電子羅盤）、modbus（Modbus RTU 上的 HI14）、can（virtualcan 上的 HI14 J1939）或 canopen（virtualcan 上的 HI14 CANopen）；或重播一個記錄檔，或一個已錄製的工作階段（其 session.json 或資料夾）。</translation>
     </message>
     <message>
-        <location line="+44"/>
+        <location line="+50"/>
         <source>A model name is only accepted after --simulate.</source>
         <translation>型號名稱只能接在 --simulate 之後。</translation>
     </message>
