@@ -67,7 +67,7 @@
 <context>
     <name>imudesk::station::ModuleRunner</name>
     <message numerus="yes">
-        <location filename="../core/station/module_runner.cpp" line="+480"/>
+        <location filename="../core/station/module_runner.cpp" line="+484"/>
         <source>%n setting(s) applied and read back</source>
         <translation>
             <numerusform>%n setting applied and read back</numerusform>

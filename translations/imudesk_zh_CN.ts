@@ -6481,6 +6481,35 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
 </context>
 <context>
+    <name>imudesk::results::ResultsStore</name>
+    <message>
+        <location filename="../core/results/results_store.cpp" line="+98"/>
+        <source>Qt&apos;s SQLite driver is not installed (on Debian: the package libqt6sql6-sqlite).</source>
+        <translation>未安装 Qt 的 SQLite 驱动（Debian 上为软件包 libqt6sql6-sqlite）。</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Cannot open the results database %1: %2</source>
+        <translation>无法打开结果数据库 %1：%2</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>%1 was written by a newer ImuDesk (schema %2; this one knows %3): update ImuDesk to use it</source>
+        <translation>%1 由更新版本的 ImuDesk 写入（模式 %2；本版本支持 %3）：请更新 ImuDesk 后再使用</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>the results database is not open</source>
+        <translation>结果数据库未打开</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <location line="+64"/>
+        <source>Storing the result of %1 in %2 failed: %3. It is still in the run folder.</source>
+        <translation>将 %1 的结果存入 %2 失败：%3。结果仍保存在运行文件夹中。</translation>
+    </message>
+</context>
+<context>
     <name>imudesk::settings::ConfigurationController</name>
     <message>
         <location filename="../core/settings/configuration_controller.cpp" line="+24"/>
@@ -6670,13 +6699,13 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
     <message>
         <location line="+1"/>
-        <location line="+207"/>
+        <location line="+211"/>
         <location line="+1"/>
         <source>(none)</source>
         <translation>（无）</translation>
     </message>
     <message>
-        <location line="-191"/>
+        <location line="-194"/>
         <source>could not connect to %1: %2</source>
         <translation>无法连接到 %1：%2</translation>
     </message>
@@ -6696,12 +6725,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>计划中已停用</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+7"/>
         <source>cancelled by the operator</source>
         <translation>已由操作员取消</translation>
     </message>
     <message>
-        <location line="+57"/>
+        <location line="+58"/>
         <source>%1, firmware %2, serial %3</source>
         <translation>%1，固件 %2，序列号 %3</translation>
     </message>
@@ -6810,12 +6839,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>SAVECONFIG 失败：%1</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+43"/>
         <source>no data from the module for %1 s during &quot;%2&quot;: is its output on, is it still connected?</source>
         <translation>“%2”期间 %1 s 未收到模块数据：模块输出是否已开启？是否仍在连接中？</translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+36"/>
         <source>only %1 samples in %2 s: enable the module&apos;s output (HI91, at least 10 Hz)</source>
         <translation>%2 s 内仅有 %1 个样本：请开启模块的输出（HI91，至少 10 Hz）</translation>
     </message>

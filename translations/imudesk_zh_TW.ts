@@ -6481,6 +6481,35 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
 </context>
 <context>
+    <name>imudesk::results::ResultsStore</name>
+    <message>
+        <location filename="../core/results/results_store.cpp" line="+98"/>
+        <source>Qt&apos;s SQLite driver is not installed (on Debian: the package libqt6sql6-sqlite).</source>
+        <translation>未安裝 Qt 的 SQLite 驅動程式（Debian 上為套件 libqt6sql6-sqlite）。</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Cannot open the results database %1: %2</source>
+        <translation>無法開啟結果資料庫 %1：%2</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>%1 was written by a newer ImuDesk (schema %2; this one knows %3): update ImuDesk to use it</source>
+        <translation>%1 由較新版本的 ImuDesk 寫入（結構描述 %2；本版本支援 %3）：請更新 ImuDesk 後再使用</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>the results database is not open</source>
+        <translation>結果資料庫未開啟</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <location line="+64"/>
+        <source>Storing the result of %1 in %2 failed: %3. It is still in the run folder.</source>
+        <translation>將 %1 的結果存入 %2 失敗：%3。結果仍保存在執行資料夾中。</translation>
+    </message>
+</context>
+<context>
     <name>imudesk::settings::ConfigurationController</name>
     <message>
         <location filename="../core/settings/configuration_controller.cpp" line="+24"/>
@@ -6670,13 +6699,13 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
     <message>
         <location line="+1"/>
-        <location line="+207"/>
+        <location line="+211"/>
         <location line="+1"/>
         <source>(none)</source>
         <translation>（無）</translation>
     </message>
     <message>
-        <location line="-191"/>
+        <location line="-194"/>
         <source>could not connect to %1: %2</source>
         <translation>無法連線到 %1：%2</translation>
     </message>
@@ -6696,12 +6725,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>計畫中已停用</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+7"/>
         <source>cancelled by the operator</source>
         <translation>已由操作員取消</translation>
     </message>
     <message>
-        <location line="+57"/>
+        <location line="+58"/>
         <source>%1, firmware %2, serial %3</source>
         <translation>%1，韌體 %2，序列號 %3</translation>
     </message>
@@ -6810,12 +6839,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>SAVECONFIG 失敗：%1</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+43"/>
         <source>no data from the module for %1 s during &quot;%2&quot;: is its output on, is it still connected?</source>
         <translation>“%2”期間 %1 s 未收到模組資料：模組輸出是否已開啟？是否仍在連線中？</translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+36"/>
         <source>only %1 samples in %2 s: enable the module&apos;s output (HI91, at least 10 Hz)</source>
         <translation>%2 s 內僅有 %1 個樣本：請開啟模組的輸出（HI91，至少 10 Hz）</translation>
     </message>

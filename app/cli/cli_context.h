@@ -57,6 +57,7 @@ int cmdAlign(const QStringList &args); // commands_session.cpp
 int cmdImport(const QStringList &args);
 int cmdRepair(const QStringList &args);
 int cmdBridge(const QStringList &args); // commands_bridge.cpp
+int cmdResults(const QStringList &args); // commands_results.cpp
 int cmdAnalyze(const QStringList &args);
 int cmdUpdate(const QStringList &args);
 // commands_update_can.cpp: update --can PLUGIN:INTERFACE (cmdUpdate hands over when --can is given),

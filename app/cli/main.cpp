@@ -47,6 +47,8 @@ void usage(FILE *to)
                "  station PLAN.json PORT[,PORT...] [--report DIR] [--baud B] [--json]\n"
                "                                         run a production test plan on every module at once;\n"
                "                                         exit code 0 only when every module passed\n"
+               "  results serial SN | yield --plan NAME [--since DATE] [--db FILE] [--json]\n"
+               "                                         a station's results database: a module's history, a plan's yield\n"
                "  simulate --pty [--model HI14] [--firmware 1.7.1] [--baud 115200]\n"
                "           [--motion static|spin|tumble|turntable] [--seed N] [--faults LIST]\n"
                "                                         serve a simulated device on a pseudo-terminal; LIST:\n"
@@ -160,6 +162,7 @@ int main(int argc, char **argv)
         {QStringLiteral("analyze"), cmdAnalyze}, {QStringLiteral("import"), cmdImport},
         {QStringLiteral("repair"), cmdRepair},
         {QStringLiteral("bridge"), cmdBridge},
+        {QStringLiteral("results"), cmdResults},
         {QStringLiteral("update"), cmdUpdate},
         {QStringLiteral("hec495"), cmdHec495},
         {QStringLiteral("can"), cmdCan},

@@ -564,6 +564,12 @@ void BridgeWorker::log(const QString &line)
 void BridgeWorker::publishStats()
 {
     m_stats.clients = int(m_clients.size());
+    m_stats.queuedBytes = 0;
+    for (const Client &c : m_clients) {
+        const qint64 q = c.socket->bytesToWrite();
+        m_stats.queuedBytes += q;
+        m_stats.mostQueuedBytes = std::max(m_stats.mostQueuedBytes, q);
+    }
     const BridgeStats s = m_stats;
     QMetaObject::invokeMethod(m_owner, [o = m_owner, s] { o->setStats(s); }, Qt::QueuedConnection);
 }

@@ -53,6 +53,8 @@ struct BridgeStats {
     quint64 samples = 0;          // taken from the devices
     quint64 samplesMissed = 0;    // overwritten in a device's store before the bridge read them
     int devices = 0;
+    qint64 queuedBytes = 0;       // unsent to the clients now, all together
+    qint64 mostQueuedBytes = 0;   // the most any one client had unsent since the start
 };
 
 class LiveBridge : public QObject {

@@ -157,6 +157,7 @@ void ModuleRunner::onLinkLost(const QString &detail)
 {
     if (!m_running)
         return;
+    m_result.end = ModuleResult::End::EquipmentFailed;
     if (m_index < 0)
         fail(tr("could not connect to %1: %2").arg(m_port, detail));
     else
@@ -289,6 +290,8 @@ QString ModuleRunner::disabledDetail()
 
 void ModuleRunner::cancel()
 {
+    if (m_running)
+        m_result.end = ModuleResult::End::Cancelled;
     fail(tr("cancelled by the operator"));
 }
 
@@ -316,14 +319,15 @@ void ModuleRunner::finish()
 bool ModuleRunner::measure(const QString &name, double value, const QString &unit, double limit)
 {
     const bool ok = value <= limit;
-    step().values.push_back(Measurement{name, value, unit, upTo(limit), ok});
+    step().values.push_back(Measurement{name, value, unit, upTo(limit), ok, QStringLiteral("LE"), limit});
     return ok;
 }
 
 bool ModuleRunner::measureMagnitude(const QString &name, double value, const QString &unit, double limit)
 {
     const bool ok = std::abs(value) <= limit;
-    step().values.push_back(Measurement{name, value, unit, QStringLiteral("|x| ≤ %1").arg(number(limit)), ok});
+    step().values.push_back(Measurement{name, value, unit, QStringLiteral("|x| ≤ %1").arg(number(limit)), ok,
+                                        QStringLiteral("ABS_LE"), limit});
     return ok;
 }
 
@@ -535,6 +539,7 @@ void ModuleRunner::poll()
     }
     const bool waitsForData = m_collecting || m_gyroScale;
     if (waitsForData && m_lastData.elapsed() > kSilenceMs) {
+        m_result.end = ModuleResult::End::EquipmentFailed; // silent: the link or the module, not a measurement
         fail(tr("no data from the module for %1 s during \"%2\": is its output on, is it still connected?")
                  .arg(kSilenceMs / 1000)
                  .arg(step().title));
@@ -549,7 +554,8 @@ void ModuleRunner::poll()
             const double limit = planStep().number("max_error_pct");
             const bool ok = r.complete && r.acceptable && std::abs(r.scaleErrorPct) <= limit;
             step().values.push_back(Measurement{QStringLiteral("scale_error"), r.scaleErrorPct, QStringLiteral("%"),
-                                                QStringLiteral("|x| ≤ %1").arg(number(limit)), ok});
+                                                QStringLiteral("|x| ≤ %1").arg(number(limit)), ok,
+                                                QStringLiteral("ABS_LE"), limit});
             info(QStringLiteral("bias"), r.biasDps, QStringLiteral("°/s"));
             endStep(ok ? Verdict::Pass : Verdict::Fail, r.summary);
         }

@@ -25,6 +25,10 @@ struct Measurement {
     QString unit;   // e.g. "°/s"
     QString limit;  // e.g. "≤ 0.05"; empty: information only
     bool ok = true;
+    // The limit as numbers (the results database): "LE" value <= high, "ABS_LE" |value| <= high,
+    // "INFO" none (information only).
+    QString comparator = QStringLiteral("INFO");
+    double high = 0;
 };
 
 struct StepResult {
@@ -49,6 +53,11 @@ struct ModuleResult {
     QString evidencePath;              // the recording of the evidence step, if any
     QString reportPath;                // the PDF, once written
     int attempt = 1;                   // 1 + earlier runs of this serial in the same run folder
+    // How the run ended beside its verdict: the equipment failed (the module disappeared, its
+    // port could not be opened: not the product's fault, not counted against its yield) or the
+    // operator cancelled it.
+    enum class End { Completed, EquipmentFailed, Cancelled };
+    End end = End::Completed;
 
     // A module not yet tested: every step of the plan pending.
     static ModuleResult pending(const QString &port, const TestPlan &plan);

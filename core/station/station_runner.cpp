@@ -1,5 +1,10 @@
 #include "core/station/station_runner.h"
 
+#include <QCoreApplication>
+#include <QCryptographicHash>
+#include <QDir>
+#include <QFileInfo>
+#include <QSysInfo>
 #include <QTimer>
 
 #include <algorithm>
@@ -20,7 +25,22 @@ StationRunner::~StationRunner() = default;
 bool StationRunner::setRunFolder(const QString &dir, QString *error)
 {
     m_haveFolder = m_folder.open(dir, m_plan, error);
-    return m_haveFolder;
+    if (!m_haveFolder)
+        return false;
+    // The station's database beside the run folders; a run goes on without it (said in the
+    // report errors), its folder keeps every result.
+    QDir parent(QFileInfo(m_folder.path()).absolutePath());
+    QString why;
+    if (!m_results.open(parent.filePath(QLatin1String(results::ResultsStore::kFileName)), &why))
+        m_reportErrors << why;
+    m_run.uuid = results::newUuid();
+    m_run.stationId = QSysInfo::machineHostName();
+    m_run.operatorName = qEnvironmentVariable("USER");
+    m_run.planName = m_plan.name;
+    m_run.planSha256 = QString::fromLatin1(QCryptographicHash::hash(m_plan.toJson(), QCryptographicHash::Sha256).toHex());
+    m_run.imudeskVersion = QCoreApplication::applicationVersion();
+    m_run.started = QDateTime::currentDateTimeUtc();
+    return true;
 }
 
 const ModuleResult &StationRunner::module(int i) const
@@ -72,12 +92,20 @@ void StationRunner::onModuleFinished(int i)
     if (m_haveFolder) {
         r.attempt = m_folder.nextAttempt(r.serial);
         QString error;
+        // The database first: a result is never only in memory.
+        const results::ModuleRecord record = results::ModuleRecord::fromStation(r, m_run);
+        const bool stored = m_results.isOpen() && m_results.commit(record, &error);
+        if (m_results.isOpen() && !stored)
+            m_reportErrors << error;
         if (m_writer) {
             const QString pdf = m_folder.reportPath(r);
             r.reportPath = pdf;
             if (!m_writer(r, m_plan, pdf, &error)) {
                 r.reportPath.clear();
                 m_reportErrors << error;
+            } else if (stored) {
+                m_results.addArtifact(record.uuid, {QStringLiteral("report"), QStringLiteral("application/pdf"),
+                                                    results::fileSha256(pdf), pdf}, nullptr);
             }
         }
         if (!m_folder.append(r, &error))

@@ -3,8 +3,12 @@
 // engine session in its own worker thread, per port, all started together. A module that
 // fails or disappears does not stop the others. When a run folder is given, every finished
 // module is appended to its summary and gets its PDF report (through reportWriter, which the
-// GUI and the CLI supply: PDF needs QtGui, core does not link it).
+// GUI and the CLI supply: PDF needs QtGui, core does not link it). Before anything else, each
+// finished module's record (core/results) is committed to the station's results database,
+// results.sqlite in the folder that holds the run folders.
 #include "core/station/module_runner.h"
+#include "core/results/result_record.h"
+#include "core/results/results_store.h"
 #include "core/station/run_folder.h"
 
 #include <QObject>
@@ -37,6 +41,9 @@ public:
     // Where reports go; empty: nothing is written (the results stay in memory).
     bool setRunFolder(const QString &dir, QString *error);
     const QString &runFolder() const { return m_folder.path(); }
+    // The results database the run folder's parent holds (open once a run folder is set).
+    const results::ResultsStore &resultsStore() const { return m_results; }
+    const results::RunRecord &runRecord() const { return m_run; }
     void setReportWriter(ReportWriter writer) { m_writer = std::move(writer); }
 
     // Starts every module not yet run (or all of `only`, by index, again: a re-run).
@@ -72,6 +79,8 @@ private:
     RunFolder m_folder;
     bool m_haveFolder = false;
     ReportWriter m_writer;
+    results::ResultsStore m_results;
+    results::RunRecord m_run;
     std::vector<std::unique_ptr<ModuleRunner>> m_runners;
     std::vector<ModuleResult> m_modules; // the latest result per port
     QStringList m_reportErrors;

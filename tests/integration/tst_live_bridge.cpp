@@ -419,8 +419,20 @@ private Q_SLOTS:
             QVERIFY(stuck.connectTo(bridge.port(), 8));
             QTRY_VERIFY_WITH_TIMEOUT(bridge.stats().messagesDropped > 20000, 60000);
             QVERIFY(countLines(log, QStringLiteral("does not keep up")) >= 1);
+            // Bounded: what waits for the client never passes its buffer by more than one message
+            // (checked twice a second by the bridge itself), and the process does not grow with
+            // the messages dropped (not judged under AddressSanitizer, whose quarantine keeps
+            // freed memory resident by design).
+            QTest::qWait(1200);
+            const bridge::BridgeStats now = bridge.stats();
+            QVERIFY2(now.mostQueuedBytes <= o.clientBufferBytes + 64 * 1024,
+                     qPrintable(QStringLiteral("%1 bytes queued for one client").arg(now.mostQueuedBytes)));
             const long rssStuck = residentKb();
+#if !defined(__SANITIZE_ADDRESS__)
             QVERIFY2(rssStuck - rssBefore < 64 * 1024, qPrintable(QStringLiteral("%1 kB -> %2 kB").arg(rssBefore).arg(rssStuck)));
+#else
+            Q_UNUSED(rssStuck);
+#endif
             stuck.close();
             QTRY_COMPARE_WITH_TIMEOUT(bridge.stats().clients, 0, 10000);
         }

@@ -17,6 +17,7 @@
 #include "sim/pty_simulator.h"
 #include "sim/simulated_transport.h"
 #include "core/station/run_folder.h"
+#include "core/results/results_store.h"
 #include "core/station/station_runner.h"
 
 #include <QElapsedTimer>
@@ -257,6 +258,38 @@ void TestStation::trayOfFiveInParallel()
         return l.startsWith(noisy.serial) && l.contains(QStringLiteral(",static,fail,")) && l.contains(QStringLiteral("gyro_std_x"));
     }));
 
+    // The results database beside the run folder (issue 38): every module committed, the pulled
+    // one as ERROR (the equipment, not the product) and left out of the yield.
+    {
+        results::ResultsStore store;
+        QVERIFY2(store.open(dir.filePath(QStringLiteral("results.sqlite")), &error), qPrintable(error));
+        QCOMPARE(store.moduleCount(), 5);
+        const auto pulledHistory = store.history(pulled.serial);
+        QCOMPARE(int(pulledHistory.size()), 1);
+        QCOMPARE(pulledHistory[0].outcome, results::Outcome::Error);
+        const auto y = store.yield(plan.name, QDateTime());
+        QCOMPARE(y.total.pass, 2);
+        QCOMPARE(y.total.fail, 2);
+        QCOMPARE(y.total.error, 1);
+        QCOMPARE(y.total.yield(), 0.5);
+        QCOMPARE(y.byFirmware.at(QStringLiteral("1.6.6")).pass, 1);
+        const auto noisyHistory = store.history(noisy.serial);
+        QCOMPARE(int(noisyHistory.size()), 1);
+        QCOMPARE(noisyHistory[0].outcome, results::Outcome::Fail);
+        const auto m = std::find_if(noisyHistory[0].measurements.begin(), noisyHistory[0].measurements.end(),
+                                    [](const results::MeasurementRecord &v) { return v.name == QLatin1String("gyro_std_x"); });
+        QVERIFY(m != noisyHistory[0].measurements.end());
+        QCOMPARE(m->outcome, results::Outcome::Fail);
+        QCOMPARE(m->comparator, QStringLiteral("LE"));
+        QVERIFY(m->high && *m->high > 0 && m->value > *m->high);
+        QCOMPARE(noisyHistory[0].slot, tray.ports[0]);
+        const auto report = std::find_if(noisyHistory[0].artifacts.begin(), noisyHistory[0].artifacts.end(),
+                                         [](const results::ArtifactRecord &a) { return a.kind == QLatin1String("report"); });
+        QVERIFY(report != noisyHistory[0].artifacts.end());
+        QCOMPARE(report->sha256, results::fileSha256(noisy.reportPath));
+        QCOMPARE(report->sha256.size(), 64);
+    }
+
     // A re-run of the noisy module appends attempt 2 to the same run.
     QSignalSpy again(&runner, &station::StationRunner::moduleFinished);
     runner.rerun({0});
@@ -265,6 +298,11 @@ void TestStation::trayOfFiveInParallel()
     QCOMPARE(folder.entries().size(), 6);
     QCOMPARE(folder.nextAttempt(noisy.serial), 3);
     QVERIFY(runner.module(0).reportPath.endsWith(QStringLiteral("-attempt2.pdf")));
+    results::ResultsStore store;
+    QVERIFY(store.open(dir.filePath(QStringLiteral("results.sqlite")), &error));
+    const auto twice = store.history(noisy.serial);
+    QCOMPARE(int(twice.size()), 2);
+    QCOMPARE(twice[1].attempt, 2);
 }
 
 void TestStation::cliTray()
@@ -315,6 +353,23 @@ void TestStation::cliTray()
                                  120000);
     QVERIFY2(ok.code == 0, qPrintable(ok.out + ok.err));
     QVERIFY(ok.out.startsWith(QStringLiteral("PASS ")));
+    // The results database beside the run folder, from the command line: the module tested twice
+    // has two attempts, the plan's yield counts every module.
+    const QString db = dir.filePath(QStringLiteral("results.sqlite"));
+    const QString serial = byPort.value(tray.ports[3]).value(QStringLiteral("serial")).toString();
+    const auto history = test::runCli({QStringLiteral("results"), QStringLiteral("serial"), serial, QStringLiteral("--db"), db,
+                                       QStringLiteral("--json")});
+    QVERIFY2(history.code == 0, qPrintable(history.err));
+    const QJsonArray attempts = history.json().value(QStringLiteral("attempts")).toArray();
+    QCOMPARE(attempts.size(), 2);
+    QCOMPARE(attempts.at(1).toObject().value(QStringLiteral("attempt")).toInt(), 2);
+    QCOMPARE(attempts.at(0).toObject().value(QStringLiteral("outcome")).toString(), QStringLiteral("PASS"));
+    const auto yield = test::runCli({QStringLiteral("results"), QStringLiteral("yield"), QStringLiteral("--plan"), plan.name,
+                                     QStringLiteral("--db"), db, QStringLiteral("--json")});
+    QVERIFY2(yield.code == 0, qPrintable(yield.err));
+    const QJsonObject total = yield.json().value(QStringLiteral("total")).toObject();
+    QCOMPARE(total.value(QStringLiteral("pass")).toInt(), 3);
+    QCOMPARE(total.value(QStringLiteral("fail")).toInt(), 2);
     // A plan that does not load: a clear error, exit code 1, nothing run.
     test::writeFile(dir, QStringLiteral("bad.json"), R"({"format": "imudesk-station-plan", "version": 1,
         "steps": [{"step": "static", "seconds": 0}]})");

@@ -1,0 +1,83 @@
+#pragma once
+// One module's test, as the results database keeps it (issue 38), shaped like an OpenHTF test
+// record: the run it belongs to (station, operator, plan and its SHA-256, ImuDesk's version), the
+// module (fixture slot, serial, product, firmware before and after, attempt, outcome), its steps,
+// its measurements with their limits and outcome, and its artifacts (PDF, recording) with their
+// SHA-256. Outcomes: PASS, FAIL, ERROR (the equipment failed: the port went away, the module did
+// not answer; not counted against the product's yield) and ABORTED (the operator cancelled).
+// Value types; every record has a UUID, which makes storing it twice harmless.
+#include "core/station/station_result.h"
+
+#include <QDateTime>
+#include <QJsonObject>
+#include <QString>
+
+#include <optional>
+#include <vector>
+
+namespace imudesk::results {
+
+enum class Outcome { Pass, Fail, Error, Aborted };
+QString outcomeKey(Outcome o); // "PASS", "FAIL", "ERROR", "ABORTED"
+std::optional<Outcome> outcomeFromKey(const QString &key);
+
+struct RunRecord {
+    QString uuid;
+    QString stationId; // the station's host name unless set
+    QString operatorName;
+    QString planName;
+    QString planSha256; // of the plan's JSON as run
+    QString imudeskVersion;
+    QDateTime started, finished;
+};
+
+struct StepRecord {
+    int index = 0;
+    QString kind;  // the plan's step key ("static", ...)
+    QString name;  // as shown
+    Outcome outcome = Outcome::Pass;
+    bool skipped = false;
+    QString detail;
+    QDateTime started, finished;
+};
+
+struct MeasurementRecord {
+    int step = 0; // index of its step
+    QString name;
+    double value = 0;
+    QString unit;
+    QString comparator; // "LE", "ABS_LE", "INFO"
+    std::optional<double> low, high;
+    Outcome outcome = Outcome::Pass;
+};
+
+struct ArtifactRecord {
+    QString kind;  // "report", "recording"
+    QString mime;  // "application/pdf", ...
+    QString sha256;
+    QString location; // its path
+};
+
+struct ModuleRecord {
+    QString uuid;
+    RunRecord run;
+    QString slot; // the fixture slot (the port)
+    QString serial, product, firmwareBefore, firmwareAfter;
+    int attempt = 1;
+    Outcome outcome = Outcome::Pass;
+    QDateTime started, finished;
+    std::vector<StepRecord> steps;
+    std::vector<MeasurementRecord> measurements;
+    std::vector<ArtifactRecord> artifacts;
+
+    // The station's result of one module in this run; artifacts hashed from the files it names.
+    static ModuleRecord fromStation(const station::ModuleResult &r, const RunRecord &run);
+    QJsonObject toJson() const;
+};
+
+// A new UUID (RFC 4122 version 4), without braces.
+QString newUuid();
+// SHA-256 of a file in hex; empty when it cannot be read.
+QString fileSha256(const QString &path);
+
+} // namespace imudesk::results
