@@ -101,8 +101,7 @@ private:
         std::vector<Schema> m_schemas;
     };
     struct Device {
-        std::shared_ptr<device::SampleStore> store;
-        uint64_t next = 0;
+        device::SampleCursor cursor;
         std::string name;
         std::unique_ptr<DeviceSink> sink;
         std::unique_ptr<fm::SampleChannels> channels;
@@ -191,7 +190,7 @@ QString BridgeWorker::start(const BridgeOptions &o, quint16 *port)
         log(QStringLiteral("PlotJuggler UDP stream to %1:%2").arg(o.udpHost.toString()).arg(o.udpPort));
     }
     for (auto &[key, d] : m_devices)
-        d.next = d.store->totalAppended(); // what arrives from now on
+        d.cursor.skipToNow(); // what arrives from now on
     if (!m_poll) {
         m_poll = new QTimer(this);
         m_poll->setTimerType(Qt::PreciseTimer);
@@ -240,19 +239,11 @@ void BridgeWorker::addDevice(std::shared_ptr<device::SampleStore> store, const r
     if (m_devices.count(key))
         return;
     // A namespace of its own: two devices that give the same name get _2, _3, ...
-    std::string base = fm::SampleChannels::topicName(name.toStdString());
-    std::string unique = base;
-    for (int n = 2;; ++n) {
-        const bool taken = std::any_of(m_devices.begin(), m_devices.end(),
-                                       [&](const auto &e) { return e.second.name == unique; });
-        if (!taken)
-            break;
-        unique = base + "_" + std::to_string(n);
-    }
-    Device d;
-    d.store = std::move(store);
-    d.next = d.store->totalAppended();
-    d.name = unique;
+    const std::string unique = fm::SampleChannels::uniqueName(
+        fm::SampleChannels::topicName(name.toStdString()), [this](const std::string &n) {
+            return std::any_of(m_devices.begin(), m_devices.end(), [&n](const auto &e) { return e.second.name == n; });
+        });
+    Device d{device::SampleCursor(std::move(store)), unique, nullptr, nullptr};
     d.sink = std::make_unique<DeviceSink>(*this, key);
     d.channels = std::make_unique<fm::SampleChannels>(*d.sink, record::McapRecording::channelsOf(header, unique));
     m_devices.emplace(key, std::move(d));
@@ -377,11 +368,9 @@ void BridgeWorker::sendDatagram(const Device &d, const model::Sample &s)
 void BridgeWorker::poll()
 {
     for (auto &[key, d] : m_devices) {
-        uint64_t next = d.next;
-        const std::vector<model::Sample> batch = d.store->since(d.next, SIZE_MAX, &next);
-        if (next - d.next > batch.size())
-            m_stats.samplesMissed += next - d.next - batch.size();
-        d.next = next;
+        uint64_t missed = 0;
+        const std::vector<model::Sample> batch = d.cursor.take(&missed);
+        m_stats.samplesMissed += missed;
         for (const model::Sample &s : batch) {
             d.channels->write(s, m_epochOffsetNs);
             if (m_udp)

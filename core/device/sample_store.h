@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <mutex>
 #include <optional>
 #include <vector>
@@ -42,6 +43,33 @@ private:
     uint64_t m_total = 0;
     model::Sample m_perField;
     std::array<int64_t, 32> m_fieldTimes{}; // hostTimeNs of each field's newest sample
+};
+
+// A reader in another thread that takes every sample once, in order, from the moment it was made
+// (or skipToNow()), and counts the samples the ring overwrote before it read them: the live
+// bridge and a live MCAP recording of several devices.
+class SampleCursor {
+public:
+    explicit SampleCursor(std::shared_ptr<SampleStore> store)
+        : m_store(std::move(store)), m_next(m_store->totalAppended())
+    {
+    }
+    // What arrived since the last take; the samples lost to the ring before it are added to *missed.
+    std::vector<model::Sample> take(uint64_t *missed = nullptr)
+    {
+        uint64_t next = m_next;
+        std::vector<model::Sample> batch = m_store->since(m_next, SIZE_MAX, &next);
+        if (missed && next - m_next > batch.size())
+            *missed += next - m_next - batch.size();
+        m_next = next;
+        return batch;
+    }
+    void skipToNow() { m_next = m_store->totalAppended(); }
+    const SampleStore *store() const { return m_store.get(); }
+
+private:
+    std::shared_ptr<SampleStore> m_store;
+    uint64_t m_next;
 };
 
 } // namespace imudesk::device

@@ -24,9 +24,9 @@ bool McapGroupRecording::start(const QString &path, std::vector<Member> members,
     const int64_t epochOffsetNs = QDateTime::currentMSecsSinceEpoch() * 1'000'000 - device::hostNowNs();
     if (!m_recording.start(path, devices, epochOffsetNs, error))
         return false;
-    m_next.clear();
+    m_cursors.clear();
     for (const Member &m : m_members)
-        m_next.push_back(m.store->totalAppended()); // what arrives from now on
+        m_cursors.emplace_back(m.store); // what arrives from now on
     m_written = std::vector<std::atomic<uint64_t>>(m_members.size());
     m_missed = 0;
     m_stop = false;
@@ -41,11 +41,9 @@ bool McapGroupRecording::start(const QString &path, std::vector<Member> members,
 void McapGroupRecording::drain()
 {
     for (size_t i = 0; i < m_members.size(); ++i) {
-        uint64_t next = m_next[i];
-        const std::vector<model::Sample> batch = m_members[i].store->since(m_next[i], SIZE_MAX, &next);
-        if (next - m_next[i] > batch.size())
-            m_missed += next - m_next[i] - batch.size();
-        m_next[i] = next;
+        uint64_t missed = 0;
+        const std::vector<model::Sample> batch = m_cursors[i].take(&missed);
+        m_missed += missed;
         for (const model::Sample &s : batch) {
             if (!m_recording.append(i, s)) {
                 std::lock_guard lock(m_errorMutex);

@@ -50,9 +50,9 @@ private:
 
     McapRecording m_recording;
     std::vector<Member> m_members;
-    std::vector<uint64_t> m_next;
+    std::vector<device::SampleCursor> m_cursors; // one per member
     std::vector<std::atomic<uint64_t>> m_written;
-    std::atomic<uint64_t> m_missed{0}, m_bytes{0};
+    std::atomic<uint64_t> m_missed{0}, m_bytes{0}; // m_missed: written by the writer thread only
     std::atomic<bool> m_stop{false};
     std::thread m_thread;
     mutable std::mutex m_errorMutex;

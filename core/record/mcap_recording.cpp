@@ -103,9 +103,10 @@ bool McapRecording::start(const QString &path, const std::vector<Device> &device
     const bool one = devices.size() == 1;
     std::set<std::string> names;
     for (const Device &dev : devices) {
-        fm::SampleChannels::Device d = channelsOf(dev.header, dev.name);
-        for (int n = 2; !names.insert(d.name).second; ++n) // two devices of one name: _2, _3, ...
-            d = channelsOf(dev.header, channelsOf(dev.header, dev.name).name + "_" + std::to_string(n));
+        const std::string name = fm::SampleChannels::uniqueName(channelsOf(dev.header, dev.name).name,
+                                                                [&names](const std::string &n) { return names.count(n) > 0; });
+        names.insert(name);
+        const fm::SampleChannels::Device d = channelsOf(dev.header, name);
         m_writer->addMetadata(one ? std::string("device") : "device " + d.name, d.metadata);
         if (const std::string config = configurationJson(dev.header); !config.empty())
             m_writer->attach(one ? std::string("configuration.json") : d.name + "/configuration.json", "application/json",

@@ -25,6 +25,14 @@ std::string SampleChannels::topicName(const std::string &text)
     return out.empty() ? std::string("device") : out;
 }
 
+std::string SampleChannels::uniqueName(const std::string &name, const std::function<bool(const std::string &)> &taken)
+{
+    std::string unique = name;
+    for (int n = 2; taken(unique); ++n)
+        unique = name + "_" + std::to_string(n);
+    return unique;
+}
+
 SampleChannels::Channel *SampleChannels::open(const std::string &topic, const std::string &schemaName,
                                               const char *schemaEncoding, const char *schemaData,
                                               const char *messageEncoding)

@@ -24,6 +24,7 @@
 #include "model/device_identity.h"
 #include "model/sample.h"
 
+#include <functional>
 #include <map>
 #include <string>
 #include <string_view>
@@ -43,6 +44,8 @@ public:
 
     // A topic-safe name: letters, digits and '_' kept, anything else '_'; "device" when empty.
     static std::string topicName(const std::string &text);
+    // A namespace no other device of the file (or the bridge) has: name, else name_2, name_3, ...
+    static std::string uniqueName(const std::string &name, const std::function<bool(const std::string &)> &taken);
 
     bool write(const model::Sample &s, int64_t epochOffsetNs);
     // Messages written per topic.
