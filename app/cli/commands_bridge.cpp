@@ -11,41 +11,6 @@
 
 namespace imudesk::cli {
 
-namespace {
-
-// ADDR:PORT, [IPv6]:PORT or PORT alone (with the given address).
-bool hostPort(const QString &text, QHostAddress *address, quint16 *port, QString *error)
-{
-    QString host, portText = text;
-    const int colon = int(text.lastIndexOf(QLatin1Char(':')));
-    if (colon >= 0) {
-        host = text.left(colon);
-        portText = text.mid(colon + 1);
-        if (host.startsWith(QLatin1Char('[')) && host.endsWith(QLatin1Char(']')))
-            host = host.mid(1, host.size() - 2);
-    }
-    bool ok = false;
-    const int p = portText.toInt(&ok);
-    if (!ok || p < 0 || p > 65535) {
-        *error = QStringLiteral("'%1': the port must be 0..65535").arg(text);
-        return false;
-    }
-    *port = quint16(p);
-    if (!host.isEmpty()) {
-        if (host == QLatin1String("localhost"))
-            host = QStringLiteral("127.0.0.1");
-        QHostAddress a;
-        if (!a.setAddress(host)) {
-            *error = QStringLiteral("'%1' is not an IP address (e.g. 127.0.0.1, 0.0.0.0, ::1)").arg(host);
-            return false;
-        }
-        *address = a;
-    }
-    return true;
-}
-
-} // namespace
-
 int cmdBridge(const QStringList &args)
 {
     QCommandLineParser p;
@@ -76,11 +41,11 @@ int cmdBridge(const QStringList &args)
         return fail(QStringLiteral("bridge needs the devices: PORT or PORT,PORT,..."), ExitUsage);
     bridge::BridgeOptions o;
     QString error;
-    if (p.isSet(QStringLiteral("listen")) && !hostPort(p.value(QStringLiteral("listen")), &o.address, &o.port, &error))
+    if (p.isSet(QStringLiteral("listen")) && !bridge::LiveBridge::parseHostPort(p.value(QStringLiteral("listen")), &o.address, &o.port, &error))
         return fail(error, ExitUsage);
     if (p.isSet(QStringLiteral("udp"))) {
         o.udp = true;
-        if (!hostPort(p.value(QStringLiteral("udp")), &o.udpHost, &o.udpPort, &error))
+        if (!bridge::LiveBridge::parseHostPort(p.value(QStringLiteral("udp")), &o.udpHost, &o.udpPort, &error))
             return fail(error, ExitUsage);
     }
     o.websocket = !p.isSet(QStringLiteral("no-websocket"));

@@ -324,17 +324,9 @@ int main(int argc, char *argv[])
     }
 
     if (parser.isSet(bridgeOption)) {
-        const QString spec = parser.value(bridgeOption);
-        const int colon = int(spec.lastIndexOf(QLatin1Char(':')));
         imudesk::bridge::BridgeOptions o;
-        bool ok = false;
-        const int port = spec.mid(colon + 1).toInt(&ok);
-        if (colon > 0)
-            o.address = QHostAddress(spec.left(colon).remove(QLatin1Char('[')).remove(QLatin1Char(']')));
         QString error;
-        if (!ok || port < 0 || port > 65535 || o.address.isNull())
-            error = QStringLiteral("--bridge wants ADDR:PORT, e.g. 127.0.0.1:8765");
-        o.port = quint16(port);
+        imudesk::bridge::LiveBridge::parseHostPort(parser.value(bridgeOption), &o.address, &o.port, &error);
         if (error.isEmpty())
             window.liveBridge()->start(o, &error);
         if (!error.isEmpty())

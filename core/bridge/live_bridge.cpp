@@ -587,6 +587,36 @@ bool LiveBridge::isLoopback(const QHostAddress &address)
     return address.isLoopback();
 }
 
+bool LiveBridge::parseHostPort(const QString &text, QHostAddress *address, quint16 *port, QString *error)
+{
+    QString host, portText = text;
+    const int colon = int(text.lastIndexOf(QLatin1Char(':')));
+    if (colon >= 0) {
+        host = text.left(colon);
+        portText = text.mid(colon + 1);
+        if (host.startsWith(QLatin1Char('[')) && host.endsWith(QLatin1Char(']')))
+            host = host.mid(1, host.size() - 2);
+    }
+    bool ok = false;
+    const int p = portText.toInt(&ok);
+    if (!ok || p < 0 || p > 65535) {
+        *error = QStringLiteral("'%1': the port must be 0..65535").arg(text);
+        return false;
+    }
+    *port = quint16(p);
+    if (!host.isEmpty()) {
+        if (host == QLatin1String("localhost"))
+            host = QStringLiteral("127.0.0.1");
+        QHostAddress a;
+        if (!a.setAddress(host)) {
+            *error = QStringLiteral("'%1' is not an IP address (e.g. 127.0.0.1, 0.0.0.0, ::1)").arg(host);
+            return false;
+        }
+        *address = a;
+    }
+    return true;
+}
+
 QString LiveBridge::url() const
 {
     QString host = m_options.address.toString();

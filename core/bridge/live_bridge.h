@@ -73,6 +73,9 @@ public:
     quint16 port() const { return m_port; }
     QString url() const;
     static bool isLoopback(const QHostAddress &address);
+    // ADDR:PORT, [IPv6]:PORT or PORT alone (the address left as it is); "localhost" is 127.0.0.1.
+    // false with why (the CLI's --listen and --udp, the window's --bridge).
+    static bool parseHostPort(const QString &text, QHostAddress *address, quint16 *port, QString *error);
 
     // A device whose samples go out, under the topic namespace /imu/<name>/ (name: its serial
     // number; made unique); header: its identity, link and configuration, as a capture's.
