@@ -33,6 +33,21 @@ QVariant optional(const std::optional<double> &v)
     return v ? QVariant(*v) : QVariant(); // NULL
 }
 
+// Prepares sql, binds values in their order and runs it.
+bool run(QSqlQuery &q, const QString &sql, std::initializer_list<QVariant> values)
+{
+    q.prepare(sql);
+    for (const QVariant &v : values)
+        q.addBindValue(v);
+    return q.exec();
+}
+
+bool insertArtifact(QSqlQuery &q, const QString &moduleUuid, const ArtifactRecord &a)
+{
+    return run(q, QStringLiteral("INSERT OR REPLACE INTO artifact (module_uuid, kind, mime, sha256, location) VALUES (?, ?, ?, ?, ?)"),
+               {moduleUuid, a.kind, a.mime, a.sha256, a.location});
+}
+
 constexpr const char *kSchema[] = {
     "CREATE TABLE IF NOT EXISTS schema_version (version INTEGER NOT NULL)",
     "CREATE TABLE IF NOT EXISTS run (uuid TEXT PRIMARY KEY, station_id TEXT, operator TEXT, plan_name TEXT, "
@@ -150,58 +165,41 @@ bool ResultsStore::commit(const ModuleRecord &m, QString *error)
         return false;
     }
     QSqlQuery q(db);
-    q.prepare(QStringLiteral("SELECT 1 FROM module WHERE uuid = ?"));
-    q.addBindValue(m.uuid);
-    if (!q.exec())
+    if (!run(q, QStringLiteral("SELECT 1 FROM module WHERE uuid = ?"), {m.uuid}))
         return failed(q);
     if (q.next()) { // stored already: nothing to do
         db.rollback();
         return true;
     }
-    q.prepare(QStringLiteral("INSERT OR IGNORE INTO run (uuid, station_id, operator, plan_name, plan_sha256, "
-                             "imudesk_version, started, finished) VALUES (?, ?, ?, ?, ?, ?, ?, ?)"));
-    for (const QVariant &v : {QVariant(m.run.uuid), QVariant(m.run.stationId), QVariant(m.run.operatorName),
-                              QVariant(m.run.planName), QVariant(m.run.planSha256), QVariant(m.run.imudeskVersion),
-                              QVariant(iso(m.run.started)), QVariant(iso(m.run.finished))})
-        q.addBindValue(v);
-    if (!q.exec())
+    if (!run(q,
+             QStringLiteral("INSERT OR IGNORE INTO run (uuid, station_id, operator, plan_name, plan_sha256, imudesk_version, "
+                            "started, finished) VALUES (?, ?, ?, ?, ?, ?, ?, ?)"),
+             {m.run.uuid, m.run.stationId, m.run.operatorName, m.run.planName, m.run.planSha256, m.run.imudeskVersion,
+              iso(m.run.started), iso(m.run.finished)}))
         return failed(q);
-    q.prepare(QStringLiteral("INSERT INTO module (uuid, run_uuid, slot, serial, product, firmware_before, firmware_after, "
-                             "attempt, outcome, started, finished) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)"));
-    for (const QVariant &v : {QVariant(m.uuid), QVariant(m.run.uuid), QVariant(m.slot), QVariant(m.serial),
-                              QVariant(m.product), QVariant(m.firmwareBefore), QVariant(m.firmwareAfter),
-                              QVariant(m.attempt), QVariant(outcomeKey(m.outcome)), QVariant(iso(m.started)),
-                              QVariant(iso(m.finished))})
-        q.addBindValue(v);
-    if (!q.exec())
+    if (!run(q,
+             QStringLiteral("INSERT INTO module (uuid, run_uuid, slot, serial, product, firmware_before, firmware_after, "
+                            "attempt, outcome, started, finished) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)"),
+             {m.uuid, m.run.uuid, m.slot, m.serial, m.product, m.firmwareBefore, m.firmwareAfter, m.attempt,
+              outcomeKey(m.outcome), iso(m.started), iso(m.finished)}))
         return failed(q);
-    for (const StepRecord &s : m.steps) {
-        q.prepare(QStringLiteral("INSERT INTO step (module_uuid, idx, kind, name, outcome, skipped, detail, started, "
-                                 "finished) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?)"));
-        for (const QVariant &v : {QVariant(m.uuid), QVariant(s.index), QVariant(s.kind), QVariant(s.name),
-                                  QVariant(outcomeKey(s.outcome)), QVariant(s.skipped ? 1 : 0), QVariant(s.detail),
-                                  QVariant(iso(s.started)), QVariant(iso(s.finished))})
-            q.addBindValue(v);
-        if (!q.exec())
+    for (const StepRecord &s : m.steps)
+        if (!run(q,
+                 QStringLiteral("INSERT INTO step (module_uuid, idx, kind, name, outcome, skipped, detail, started, finished) "
+                                "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?)"),
+                 {m.uuid, s.index, s.kind, s.name, outcomeKey(s.outcome), s.skipped ? 1 : 0, s.detail, iso(s.started),
+                  iso(s.finished)}))
             return failed(q);
-    }
-    for (const MeasurementRecord &v : m.measurements) {
-        q.prepare(QStringLiteral("INSERT OR REPLACE INTO measurement (module_uuid, step, name, value, unit, comparator, "
-                                 "low, high, outcome) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?)"));
-        for (const QVariant &x : {QVariant(m.uuid), QVariant(v.step), QVariant(v.name), QVariant(v.value), QVariant(v.unit),
-                                  QVariant(v.comparator), optional(v.low), optional(v.high), QVariant(outcomeKey(v.outcome))})
-            q.addBindValue(x);
-        if (!q.exec())
+    for (const MeasurementRecord &v : m.measurements)
+        if (!run(q,
+                 QStringLiteral("INSERT OR REPLACE INTO measurement (module_uuid, step, name, value, unit, comparator, low, "
+                                "high, outcome) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?)"),
+                 {m.uuid, v.step, v.name, v.value, v.unit, v.comparator, optional(v.low), optional(v.high),
+                  outcomeKey(v.outcome)}))
             return failed(q);
-    }
-    for (const ArtifactRecord &a : m.artifacts) {
-        q.prepare(QStringLiteral("INSERT OR REPLACE INTO artifact (module_uuid, kind, mime, sha256, location) "
-                                 "VALUES (?, ?, ?, ?, ?)"));
-        for (const QVariant &x : {QVariant(m.uuid), QVariant(a.kind), QVariant(a.mime), QVariant(a.sha256), QVariant(a.location)})
-            q.addBindValue(x);
-        if (!q.exec())
+    for (const ArtifactRecord &a : m.artifacts)
+        if (!insertArtifact(q, m.uuid, a))
             return failed(q);
-    }
     if (!db.commit()) {
         if (error)
             *error = tr("Storing the result of %1 in %2 failed: %3. It is still in the run folder.").arg(m.serial, m_path, db.lastError().text());
@@ -214,10 +212,7 @@ bool ResultsStore::commit(const ModuleRecord &m, QString *error)
 bool ResultsStore::addArtifact(const QString &moduleUuid, const ArtifactRecord &a, QString *error)
 {
     QSqlQuery q(QSqlDatabase::database(m_connection, false));
-    q.prepare(QStringLiteral("INSERT OR REPLACE INTO artifact (module_uuid, kind, mime, sha256, location) VALUES (?, ?, ?, ?, ?)"));
-    for (const QVariant &x : {QVariant(moduleUuid), QVariant(a.kind), QVariant(a.mime), QVariant(a.sha256), QVariant(a.location)})
-        q.addBindValue(x);
-    if (q.exec())
+    if (insertArtifact(q, moduleUuid, a))
         return true;
     if (error)
         *error = q.lastError().text();
