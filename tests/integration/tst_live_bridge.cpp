@@ -23,6 +23,7 @@
 #include <QJsonObject>
 #include <QProcess>
 #include <QRegularExpression>
+#include <QSignalSpy>
 #include <QTcpSocket>
 #include <QUdpSocket>
 #include <QDateTime>
@@ -206,7 +207,7 @@ private Q_SLOTS:
             QByteArray err;
             QTRY_VERIFY_WITH_TIMEOUT((err += c->readAllStandardError()).contains("ready"), 30000);
         }
-        QTest::qWait(seconds * 1000);
+        QTest::qWait(seconds * 1000); // the minute under test
         QList<QJsonObject> summaries;
         for (auto &c : clients) {
             c->terminate();
@@ -215,9 +216,11 @@ private Q_SLOTS:
             summaries << QJsonDocument::fromJson(out).object();
             QVERIFY2(!summaries.back().isEmpty() && !summaries.back().contains(QStringLiteral("error")), out.constData());
         }
-        QTest::qWait(500);
+        // The bridge has logged both clients' ends before it is stopped.
+        QByteArray logged;
+        QTRY_COMPARE_WITH_TIMEOUT((logged += bridge.readAllStandardError()).count("disconnected (1000"), qsizetype(2), 10000);
         test::stopCli(bridge);
-        const QString bridgeLog = QString::fromUtf8(bridge.readAllStandardError());
+        const QString bridgeLog = QString::fromUtf8(logged + bridge.readAllStandardError());
         const QString bridgeOut = QString::fromUtf8(said + bridge.readAllStandardOutput());
         for (auto &s : sims)
             test::stopCli(*s);
@@ -323,10 +326,20 @@ private Q_SLOTS:
         test::connectSession(sim, 921600);
         // The frames decoded before the recording, counted while the module is quiet: the
         // recording must then hold every frame decoded after.
+        // Quiet: two statistics reports in a row with the same frame count (every frame in flight
+        // counted).
         device::SessionStats stats;
-        connect(&sim.session, &device::DeviceLink::statsUpdated, this, [&stats](const device::SessionStats &s) { stats = s; });
+        int sameFrames = 0;
+        connect(&sim.session, &device::DeviceLink::statsUpdated, this, [&](const device::SessionStats &s) {
+            sameFrames = s.frames == stats.frames ? sameFrames + 1 : 0;
+            stats = s;
+        });
+        const auto quiet = [&] {
+            sameFrames = 0;
+            return test::waitFor([&] { return sameFrames >= 1; }, 5000);
+        };
         QVERIFY(test::sendAndWait(sim.session, QStringLiteral("LOG DISABLE"), 3000).ok());
-        QTest::qWait(1200); // two statistics updates
+        QVERIFY(quiet());
         const uint64_t framesBefore = stats.frames;
         const QString capture = dir.filePath(QStringLiteral("hostile.imucap"));
         bool recording = false;
@@ -423,7 +436,8 @@ private Q_SLOTS:
             // (checked twice a second by the bridge itself), and the process does not grow with
             // the messages dropped (not judged under AddressSanitizer, whose quarantine keeps
             // freed memory resident by design).
-            QTest::qWait(1200);
+            QSignalSpy fresh(&bridge, &bridge::LiveBridge::statsChanged); // two reports while it is stuck
+            QTRY_VERIFY_WITH_TIMEOUT(fresh.count() >= 2, 5000);
             const bridge::BridgeStats now = bridge.stats();
             QVERIFY2(now.mostQueuedBytes <= o.clientBufferBytes + 64 * 1024,
                      qPrintable(QStringLiteral("%1 bytes queued for one client").arg(now.mostQueuedBytes)));
@@ -439,7 +453,7 @@ private Q_SLOTS:
 
         // The session lost nothing and the recording holds every frame it decoded.
         QVERIFY(test::sendAndWait(sim.session, QStringLiteral("LOG DISABLE"), 3000).ok());
-        QTest::qWait(1200);
+        QVERIFY(quiet());
         bool stopped = false;
         connect(&sim.session, &device::Session::recordingStopped, this, [&] { stopped = true; });
         sim.session.stopRecording();
