@@ -25,6 +25,19 @@ namespace {
 constexpr const char *kLoopback = "127.0.0.1";
 constexpr const char *kAll = "0.0.0.0";
 
+// A port field and its label, as a form's row.
+QSpinBox *portRow(QFormLayout *form, const char *name, int value, QLabel **label)
+{
+    auto *box = new QSpinBox(form->parentWidget());
+    box->setObjectName(QLatin1String(name));
+    box->setRange(1, 65535);
+    box->setValue(value);
+    *label = new QLabel(form->parentWidget());
+    (*label)->setBuddy(box);
+    form->addRow(*label, box);
+    return box;
+}
+
 QHostAddress addressOf(const QComboBox *box)
 {
     // The items carry the address as data; what is typed is taken as an address.
@@ -53,13 +66,8 @@ LiveBridgeDialog::LiveBridgeDialog(BridgeController *controller, QWidget *parent
     m_addressLabel = new QLabel(m_wsBox);
     m_addressLabel->setBuddy(m_address);
     wsForm->addRow(m_addressLabel, m_address);
-    m_port = new QSpinBox(m_wsBox);
-    m_port->setObjectName(QStringLiteral("bridgePort"));
-    m_port->setRange(1, 65535);
-    m_port->setValue(8765);
-    m_portLabel = new QLabel(m_wsBox);
-    m_portLabel->setBuddy(m_port);
-    wsForm->addRow(m_portLabel, m_port);
+    const bridge::BridgeOptions defaults;
+    m_port = portRow(wsForm, "bridgePort", defaults.port, &m_portLabel);
     m_warning = new QLabel(m_wsBox);
     m_warning->setObjectName(QStringLiteral("bridgeWarning"));
     m_warning->setWordWrap(true);
@@ -81,13 +89,7 @@ LiveBridgeDialog::LiveBridgeDialog(BridgeController *controller, QWidget *parent
     m_udpHostLabel = new QLabel(m_udpBox);
     m_udpHostLabel->setBuddy(m_udpHost);
     udpForm->addRow(m_udpHostLabel, m_udpHost);
-    m_udpPort = new QSpinBox(m_udpBox);
-    m_udpPort->setObjectName(QStringLiteral("udpPort"));
-    m_udpPort->setRange(1, 65535);
-    m_udpPort->setValue(9870);
-    m_udpPortLabel = new QLabel(m_udpBox);
-    m_udpPortLabel->setBuddy(m_udpPort);
-    udpForm->addRow(m_udpPortLabel, m_udpPort);
+    m_udpPort = portRow(udpForm, "udpPort", defaults.udpPort, &m_udpPortLabel);
     top->addWidget(m_udpBox);
 
     auto *row = new QHBoxLayout;
@@ -176,8 +178,6 @@ void LiveBridgeDialog::updateWarning()
     m_warning->setText(a.isNull() ? QString()
                                   : tr("Warning: %1 is not this computer only. Anyone who can reach it on the network can "
                                        "read the devices' data: the protocol has no password.").arg(a.toString()));
-    if (a.isNull())
-        m_warning->setVisible(false);
 }
 
 void LiveBridgeDialog::updateState()
@@ -248,10 +248,11 @@ void LiveBridgeDialog::loadSettings()
         m_address->setCurrentIndex(item);
     else
         m_address->setEditText(address);
-    m_port->setValue(s.value(QStringLiteral("port"), 8765).toInt());
+    const bridge::BridgeOptions defaults;
+    m_port->setValue(s.value(QStringLiteral("port"), defaults.port).toInt());
     m_udpBox->setChecked(s.value(QStringLiteral("udp"), false).toBool());
     m_udpHost->setText(s.value(QStringLiteral("udp_host"), QString::fromLatin1(kLoopback)).toString());
-    m_udpPort->setValue(s.value(QStringLiteral("udp_port"), 9870).toInt());
+    m_udpPort->setValue(s.value(QStringLiteral("udp_port"), defaults.udpPort).toInt());
 }
 
 void LiveBridgeDialog::saveSettings() const
