@@ -89,10 +89,11 @@ set(CPACK_DEBIAN_PACKAGE_PRIORITY optional)
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
 set(CPACK_DEBIAN_PACKAGE_CONTROL_STRICT_PERMISSION ON)
 # Loaded by Qt at run time, so dpkg-shlibdeps cannot see them: the SVG icon engine draws the
-# window icon (libqt6svg6), Qt SQL's SQLite driver keeps the station's results (libqt6sql6-sqlite).
+# window icon (libqt6svg6), Qt SQL's SQLite driver keeps the station's results (libqt6sql6-sqlite) and its PostgreSQL driver
+# sends them to the line's database (libqt6sql6-psql).
 # The platform plugins (xcb, offscreen) come with libqt6gui6, which the
 # executables link.
-set(CPACK_DEBIAN_PACKAGE_DEPENDS "libqt6svg6, libqt6sql6-sqlite")
+set(CPACK_DEBIAN_PACKAGE_DEPENDS "libqt6svg6, libqt6sql6-sqlite, libqt6sql6-psql")
 # Chinese text needs a CJK font; Qt's own dialog strings are translated by qt6-translations-l10n;
 # qt6-wayland runs the window natively on a Wayland desktop (XWayland otherwise).
 set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "fonts-noto-cjk, qt6-translations-l10n, qt6-wayland")

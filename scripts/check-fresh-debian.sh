@@ -82,6 +82,9 @@ if [ "${1:-}" = --inside ]; then
   ln -s /proc/self/fd/2 "$rootfs/dev/stderr"
   mount -t proc -o nosuid,nodev,noexec proc "$rootfs/proc" || failstep "proc"
   mount -t sysfs -o ro,nosuid,nodev,noexec sysfs "$rootfs/sys" || failstep "sysfs"
+  # Packages do not start services in the root (postgresql's cluster, as in a container image):
+  # the tests start the servers they need themselves.
+  printf '#!/bin/sh\nexit 101\n' > "$rootfs/usr/sbin/policy-rc.d" && chmod 0755 "$rootfs/usr/sbin/policy-rc.d"
   mkdir -p "$cache/archives/partial"
   mount --bind "$cache/archives" "$rootfs/var/cache/apt/archives" || failstep "package cache"
   cp /etc/resolv.conf "$rootfs/etc/resolv.conf" 2>/dev/null
@@ -183,6 +186,27 @@ if [ "${1:-}" = --inside ]; then
   inroot /src/scripts/setup.sh install > "$work/install.log" 2>&1 \
     || failstep "setup.sh install failed (apt could not install the list: see its output)" "$work/install.log"
   inroot apt-get autoclean -q > /dev/null 2>&1 # keep only current .debs in the cache
+  pass
+
+  # The results tests (tests/common/pg_server.h) start a PostgreSQL server of their own as the
+  # unprivileged user nobody: the same here, with the list's packages only, and psql reaches it.
+  begin "a PostgreSQL server from the list starts as nobody (initdb, pg_ctl) and answers psql"
+  inroot bash -c '
+    set -e
+    bin="$(ls -d /usr/lib/postgresql/*/bin | sort -V | tail -n 1)"
+    dir="$(mktemp -d /tmp/pg-XXXXXX)"; mkdir "$dir/sock"; chown -R 65534:65534 "$dir"
+    cd "$dir"
+    as_nobody() { setpriv --reuid=65534 --regid=65534 --clear-groups -- "$@"; }
+    as_nobody "$bin/initdb" -D "$dir/data" -U imudesk_admin --auth=trust -E UTF8 --no-locale --no-sync > /dev/null
+    as_nobody "$bin/pg_ctl" -D "$dir/data" -o "-k $dir/sock -p 25438 -c listen_addresses=" -l "$dir/log" -w start > /dev/null
+    psql -X -A -t -h "$dir/sock" -p 25438 -U imudesk_admin -d postgres -c "SELECT version()"
+    rc=0
+    ls /usr/lib/x86_64-linux-gnu/qt6/plugins/sqldrivers/libqsqlpsql.so > /dev/null || rc=1
+    as_nobody "$bin/pg_ctl" -D "$dir/data" -m fast -w stop > /dev/null
+    cd /; rm -rf "$dir"
+    exit $rc' > "$work/postgresql.log" 2>&1 \
+    || failstep "the PostgreSQL server or the QPSQL driver of Qt is missing or does not start" "$work/postgresql.log"
+  say "      $(head -n 1 "$work/postgresql.log" | cut -c1-60)"
   pass
 
   begin "the tests' tools from npm: the official MCAP reader loads on Debian's Node.js"

@@ -367,6 +367,10 @@ int cmdSimulate(const QStringList &args)
                                    QStringLiteral("MOTION"), QStringLiteral("static")));
     p.addOption(QCommandLineOption(QStringLiteral("seed"), QStringLiteral("Random seed (default 1)."),
                                    QStringLiteral("N"), QStringLiteral("1")));
+    p.addOption(QCommandLineOption(QStringLiteral("serial"),
+                                   QStringLiteral("HiPNUC on a pty: the serial number (UUID) it reports instead of the "
+                                                  "seed's, byte for byte; \\xNN writes any byte."),
+                                   QStringLiteral("TEXT")));
     p.addOption(QCommandLineOption(
         QStringLiteral("faults"),
         QStringLiteral("HiPNUC on a pty: faults of this module, comma-separated: noisy-gyro[=F] (gyro noise x F, "
@@ -451,6 +455,24 @@ int cmdSimulate(const QStringList &args)
     if (!sim::parseMotion(p.value(QStringLiteral("motion")).toStdString(), o.motion))
         return fail(QStringLiteral("--motion must be static, spin, tumble, turntable or twists"), ExitUsage);
     o.ppsInput = p.isSet(QStringLiteral("pps"));
+    if (p.isSet(QStringLiteral("serial"))) {
+        // \xNN escapes (a test's bytes that are not UTF-8), the rest as UTF-8.
+        const QByteArray text = p.value(QStringLiteral("serial")).toUtf8();
+        for (int i = 0; i < text.size(); ++i) {
+            if (text[i] == '\\' && i + 3 < text.size() && text[i + 1] == 'x') {
+                bool hex = false;
+                const int b = text.mid(i + 2, 2).toInt(&hex, 16);
+                if (hex) {
+                    o.serial.push_back(char(b));
+                    i += 3;
+                    continue;
+                }
+            }
+            o.serial.push_back(text[i]);
+        }
+        if (o.serial.empty() || o.serial.find_first_of("\r\n") != std::string::npos)
+            return fail(QStringLiteral("--serial needs text without line breaks"), ExitUsage);
+    }
     o.seed = p.value(QStringLiteral("seed")).toULongLong(&ok);
     if (!ok)
         return fail(QStringLiteral("--seed needs a whole number"), ExitUsage);

@@ -7,6 +7,7 @@
 // code is 0 only when every module passed.
 #include "cli_context.h"
 #include "reports/station_report.h"
+#include "core/results/results_uploader.h"
 #include "core/station/station_runner.h"
 
 #include <QCoreApplication>
@@ -21,7 +22,9 @@
 namespace imudesk::cli {
 
 namespace {
-const QString kUsage = QStringLiteral("imudesk-cli station PLAN.json PORT[,PORT...] [--report DIR] [--baud B] [--json]");
+const QString kUsage = QStringLiteral("imudesk-cli station PLAN.json PORT[,PORT...] [--report DIR] [--baud B] [--json]\n"
+                                      "       [--results postgresql://...] [--artifacts DIR] [--station-id ID] [--operator NAME]\n"
+                                      "       [--upload-wait S]");
 
 void progressLine(const QString &line)
 {
@@ -42,6 +45,20 @@ int cmdStation(const QStringList &args)
     p.addOption({QStringLiteral("baud"), QStringLiteral("Baud rate of every module (default: detect)."),
                  QStringLiteral("B")});
     p.addOption({QStringLiteral("json"), QStringLiteral("One JSON object per module, then a summary object.")});
+    p.addOption({QStringLiteral("results"),
+                 QStringLiteral("The line's results database (postgresql://user@host/db); results go to the station's "
+                                "results.sqlite first and are uploaded from there (needs --report)."),
+                 QStringLiteral("URL")});
+    p.addOption({QStringLiteral("artifacts"), QStringLiteral("Shared folder the reports are copied to on upload."),
+                 QStringLiteral("DIR")});
+    p.addOption({QStringLiteral("station-id"), QStringLiteral("The station's name in the records (default: the host name)."),
+                 QStringLiteral("ID")});
+    p.addOption({QStringLiteral("operator"), QStringLiteral("The operator's name in the records (default: $USER)."),
+                 QStringLiteral("NAME")});
+    p.addOption({QStringLiteral("upload-wait"),
+                 QStringLiteral("Seconds to wait at the end for the upload (default 30); what is left waits in "
+                                "results.sqlite for the next run or `results upload`."),
+                 QStringLiteral("S")});
     if (!parseArgs(p, args, kUsage))
         return ExitUsage;
     const QStringList pos = p.positionalArguments();
@@ -67,6 +84,20 @@ int cmdStation(const QStringList &args)
 
     station::StationRunner runner(*plan, ports);
     runner.setBaud(baud);
+    runner.setStation(p.value(QStringLiteral("station-id")), p.value(QStringLiteral("operator")));
+    const double uploadWaitS = p.isSet(QStringLiteral("upload-wait")) ? p.value(QStringLiteral("upload-wait")).toDouble(&ok) : 30.0;
+    if (!ok || uploadWaitS < 0)
+        return fail(QStringLiteral("--upload-wait needs a number of seconds"), ExitUsage);
+    if (p.isSet(QStringLiteral("results"))) {
+        if (!p.isSet(QStringLiteral("report")))
+            return fail(QStringLiteral("--results needs --report DIR: results are kept on the station first"), ExitUsage);
+        if (!results::ResultsStore::isServerUrl(p.value(QStringLiteral("results"))))
+            return fail(QStringLiteral("--results wants a postgresql:// URL"), ExitUsage);
+        results::UploaderOptions line;
+        line.server = p.value(QStringLiteral("results"));
+        line.artifactFolder = p.value(QStringLiteral("artifacts"));
+        runner.setLineDatabase(line);
+    }
     if (p.isSet(QStringLiteral("report"))) {
         if (!runner.setRunFolder(p.value(QStringLiteral("report")), &error))
             return fail(error);
@@ -120,12 +151,37 @@ int cmdStation(const QStringList &args)
         loop.exec();
     for (const QString &e : runner.reportErrors())
         progressLine(QStringLiteral("report: %1").arg(e));
+    int waiting = 0;
+    if (results::ResultsUploader *up = runner.uploader()) {
+        // Give the uploader its chance to send the last modules; what it cannot send stays in
+        // the station's database and goes with the next run or `results upload`.
+        QEventLoop wait;
+        QTimer deadline;
+        deadline.setSingleShot(true);
+        QObject::connect(&deadline, &QTimer::timeout, &wait, &QEventLoop::quit);
+        QObject::connect(up, &results::ResultsUploader::stateChanged, &wait, [&](int pending, bool connected) {
+            if (pending == 0 && connected)
+                wait.quit();
+        });
+        up->kick();
+        deadline.start(int(uploadWaitS * 1000));
+        if (!(up->pending() == 0 && up->connected() && up->uploadedCount() > 0))
+            wait.exec();
+        waiting = up->pending();
+        progressLine(waiting == 0 ? QStringLiteral("results: every result uploaded to %1")
+                                        .arg(results::ResultsStore::displayLocation(up->options().server))
+                                  : QStringLiteral("results: %1 results waiting to upload to %2 (kept in %3)")
+                                        .arg(waiting)
+                                        .arg(results::ResultsStore::displayLocation(up->options().server),
+                                             QDir::toNativeSeparators(up->options().outbox)));
+    }
     const auto s = runner.summary();
     if (json)
         out(QString::fromUtf8(QJsonDocument(QJsonObject{{QStringLiteral("event"), QStringLiteral("summary")},
                                                         {QStringLiteral("passed"), s.passed},
                                                         {QStringLiteral("failed"), s.failed},
                                                         {QStringLiteral("frames_lost"), qint64(runner.framesLost())},
+                                                        {QStringLiteral("waiting_upload"), waiting},
                                                         {QStringLiteral("run_folder"), runner.runFolder()}})
                                   .toJson(QJsonDocument::Compact)));
     else

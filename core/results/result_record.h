@@ -48,7 +48,10 @@ struct MeasurementRecord {
     QString unit;
     QString comparator; // "LE", "ABS_LE", "INFO"
     std::optional<double> low, high;
+    // The marginal band inside the limits (plan format 2): a pass beyond it is marked marginal.
+    std::optional<double> marginalLow, marginalHigh;
     Outcome outcome = Outcome::Pass;
+    bool marginal = false;
 };
 
 struct ArtifactRecord {
@@ -63,8 +66,10 @@ struct ModuleRecord {
     RunRecord run;
     QString slot; // the fixture slot (the port)
     QString serial, product, firmwareBefore, firmwareAfter;
+    QByteArray serialRaw; // the serial's bytes as the module sent them (serial shows them, escaped where not UTF-8)
     int attempt = 1;
     Outcome outcome = Outcome::Pass;
+    bool marginal = false; // a pass with a measurement in its marginal band
     QDateTime started, finished;
     std::vector<StepRecord> steps;
     std::vector<MeasurementRecord> measurements;
@@ -72,7 +77,15 @@ struct ModuleRecord {
 
     // The station's result of one module in this run; artifacts hashed from the files it names.
     static ModuleRecord fromStation(const station::ModuleResult &r, const RunRecord &run);
+    // The record as JSON, shaped like an OpenHTF test record (one per module: the run's fields
+    // at the top, the steps as phases with their measurements, the artifacts as attachments).
     QJsonObject toJson() const;
+    // A record written by toJson(), read back (results import, tests); nullopt when it is not one.
+    static std::optional<ModuleRecord> fromJson(const QJsonObject &o);
+    // The record in OpenHTF's own JSON layout (dut_id, phases with measurements keyed by name
+    // and their validators, outcome, marginal): the run folder holds one per module, for
+    // factories that collect OpenHTF records.
+    QJsonObject toOpenHtfJson() const;
 };
 
 // A new UUID (RFC 4122 version 4), without braces.

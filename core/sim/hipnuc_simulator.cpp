@@ -97,7 +97,7 @@ HipnucSimulator::HipnucSimulator(SimOptions options)
     m_family = model::familyOfProduct(m_options.model);
     char buf[20];
     std::snprintf(buf, sizeof buf, "%016llX", static_cast<unsigned long long>(mix(m_options.seed ^ 0x0439956980000000ull)));
-    m_uuid = buf;
+    m_uuid = m_options.serial.empty() ? std::string(buf) : m_options.serial;
 
     m_saved = factoryConfig();
     if (m_options.baud > 0)

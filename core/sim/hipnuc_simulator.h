@@ -169,6 +169,9 @@ struct SimOptions {
     int baud = 115200;                // saved baud at construction
     Motion motion = Motion::Static;
     uint64_t seed = 1;                // sensor noise, bias, iron, UUID, motion phases
+    // Reported as the UUID (the serial number) instead of the one made from the seed, byte for
+    // byte: a station's tests give it hostile values (SQL, bytes that are not UTF-8).
+    std::string serial;
     double gyroScaleError = 0;        // fraction: the gyro reads (1 + e) * the true rate
     // A GNSS receiver wired to SYNC_IN/PPS and to RX (v1.7.1 manual 2.2.2): a PPS rising edge
     // at every whole UTC second with its RMC inside the 200 ms window. At the first edge after

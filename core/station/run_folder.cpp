@@ -6,6 +6,7 @@
 #include <QFileInfo>
 #include <QJsonDocument>
 #include <QRegularExpression>
+#include <QSaveFile>
 
 namespace imudesk::station {
 
@@ -151,6 +152,20 @@ bool RunFolder::append(const ModuleResult &r, QString *error)
         csvData += row.toUtf8() + '\n';
     return appendTo(jsonl, QJsonDocument(r.toJson()).toJson(QJsonDocument::Compact) + '\n', error)
         && appendTo(csv, csvData, error);
+}
+
+bool RunFolder::writeOpenHtf(const QString &moduleUuid, const QJsonObject &record, QString *error)
+{
+    const QDir dir(QDir(m_dir).filePath(QLatin1String(kOpenHtfDir)));
+    QSaveFile f(dir.filePath(moduleUuid + QStringLiteral(".json")));
+    const QByteArray data = QJsonDocument(record).toJson(QJsonDocument::Indented);
+    if (!QDir().mkpath(dir.path()) || !f.open(QIODevice::WriteOnly) || f.write(data) != data.size() || !f.commit()) {
+        if (error)
+            *error = tr("Cannot write %1: %2. The result is in the results database and the summaries.")
+                         .arg(QDir::toNativeSeparators(f.fileName()), f.errorString());
+        return false;
+    }
+    return true;
 }
 
 } // namespace imudesk::station

@@ -33,6 +33,9 @@ public:
     QString reportPath(const ModuleResult &r) const;
     // Appends the module to summary.jsonl and summary.csv (with its header when new).
     bool append(const ModuleResult &r, QString *error);
+    // openhtf/<module uuid>.json: the module's record in OpenHTF's JSON layout (result_record.h).
+    bool writeOpenHtf(const QString &moduleUuid, const QJsonObject &record, QString *error);
+    static constexpr const char *kOpenHtfDir = "openhtf";
     // Every module result in the summary, oldest first (for re-runs and tests).
     QList<QJsonObject> entries() const;
 

@@ -2,6 +2,7 @@
 
 #include <QCoreApplication>
 #include <QJsonArray>
+#include <QStringDecoder>
 
 namespace imudesk::station {
 
@@ -34,15 +35,52 @@ QString isoUtc(const QDateTime &t)
     return t.isValid() ? t.toUTC().toString(Qt::ISODateWithMs) : QString();
 }
 
+QString bytesAsText(const QByteArray &raw)
+{
+    QString out;
+    out.reserve(raw.size());
+    int i = 0;
+    while (i < raw.size()) {
+        const auto b = static_cast<unsigned char>(raw[i]);
+        // The length of the UTF-8 sequence this byte starts (0: not a lead byte).
+        const int n = b < 0x80 ? 1 : (b >= 0xC2 && b <= 0xDF) ? 2 : (b >= 0xE0 && b <= 0xEF) ? 3 : (b >= 0xF0 && b <= 0xF4) ? 4 : 0;
+        if (n > 1 && i + n <= raw.size()) {
+            QString decoded;
+            QStringDecoder utf8(QStringDecoder::Utf8, QStringDecoder::Flag::Stateless);
+            decoded = utf8(raw.mid(i, n));
+            if (!utf8.hasError() && !decoded.contains(QChar::ReplacementCharacter)) {
+                out += decoded;
+                i += n;
+                continue;
+            }
+        }
+        if (n == 1 && b >= 0x20 && b != 0x7F && b != '\\')
+            out += QLatin1Char(char(b));
+        else if (n == 1 && b == '\\')
+            out += QStringLiteral("\\\\");
+        else
+            out += QStringLiteral("\\x%1").arg(b, 2, 16, QLatin1Char('0'));
+        ++i;
+    }
+    return out;
+}
+
 QJsonObject StepResult::toJson() const
 {
     QJsonArray vals;
-    for (const Measurement &m : values)
-        vals.append(QJsonObject{{QStringLiteral("name"), m.name},
-                                {QStringLiteral("value"), m.value},
-                                {QStringLiteral("unit"), m.unit},
-                                {QStringLiteral("limit"), m.limit},
-                                {QStringLiteral("ok"), m.ok}});
+    for (const Measurement &m : values) {
+        QJsonObject o{{QStringLiteral("name"), m.name},
+                      {QStringLiteral("value"), m.value},
+                      {QStringLiteral("unit"), m.unit},
+                      {QStringLiteral("limit"), m.limit},
+                      {QStringLiteral("ok"), m.ok}};
+        // Only where there is a band: the summaries of plans without one stay as they were.
+        if (m.marginalHigh)
+            o.insert(QStringLiteral("marginal_high"), *m.marginalHigh);
+        if (m.marginal)
+            o.insert(QStringLiteral("marginal"), true);
+        vals.append(o);
+    }
     return QJsonObject{{QStringLiteral("step"), TestPlan::key(kind)},
                        {QStringLiteral("verdict"), verdictKey(verdict)},
                        {QStringLiteral("detail"), detail},
@@ -86,6 +124,15 @@ QString ModuleResult::failureSummary() const
                          : QStringLiteral("%1: %2").arg(s.title, bad.join(QStringLiteral("; ")));
 }
 
+bool ModuleResult::marginal() const
+{
+    for (const StepResult &s : steps)
+        for (const Measurement &m : s.values)
+            if (m.marginal)
+                return true;
+    return false;
+}
+
 QJsonObject ModuleResult::toJson() const
 {
     QJsonArray st;
@@ -100,6 +147,7 @@ QJsonObject ModuleResult::toJson() const
                        {QStringLiteral("verdict"), verdictKey(verdict)},
                        {QStringLiteral("failed_step"), failed < 0 ? QString() : TestPlan::key(steps[size_t(failed)].kind)},
                        {QStringLiteral("failure"), failureSummary()},
+                       {QStringLiteral("marginal"), marginal()},
                        {QStringLiteral("attempt"), attempt},
                        {QStringLiteral("started"), isoUtc(started)},
                        {QStringLiteral("finished"), isoUtc(finished)},

@@ -9,6 +9,7 @@
 #include <QMetaType>
 #include <QString>
 
+#include <optional>
 #include <vector>
 
 namespace imudesk::station {
@@ -16,6 +17,9 @@ namespace imudesk::station {
 enum class Verdict { Pending, Running, Pass, Fail, Skipped };
 QString verdictKey(Verdict v);   // "pending", "running", "pass", "fail", "skipped"
 QString verdictText(Verdict v);  // translated
+// Bytes a module sent as text, shown verbatim: UTF-8 where they are UTF-8, any other byte and
+// any control character as \xNN (a serial number that is not UTF-8 stays readable and unique).
+QString bytesAsText(const QByteArray &raw);
 // A time as the summaries write it: UTC, ISO 8601 with ms; empty when not set.
 QString isoUtc(const QDateTime &t);
 
@@ -29,6 +33,10 @@ struct Measurement {
     // "INFO" none (information only).
     QString comparator = QStringLiteral("INFO");
     double high = 0;
+    // The plan's marginal band (plan format 2): a value past marginalHigh (|value| for ABS_LE)
+    // but within high passes marked marginal.
+    std::optional<double> marginalHigh = std::nullopt;
+    bool marginal = false;
 };
 
 struct StepResult {
@@ -44,6 +52,7 @@ struct StepResult {
 struct ModuleResult {
     QString port;
     QString serial, product, firmware; // firmware: as found (before any update)
+    QByteArray serialRaw;              // the serial number's bytes as the module sent them
     QString firmwareAfter;             // after an update, else empty
     Verdict verdict = Verdict::Pending;
     int currentStep = -1;              // index into steps while running
@@ -65,6 +74,8 @@ struct ModuleResult {
     int failedStep() const;
     // "Static noise and bias: gyro_std_x 0.41 °/s (limit ≤ 0.05)" for a failure; empty otherwise.
     QString failureSummary() const;
+    // Whether any value passed inside its marginal band (the module may still pass).
+    bool marginal() const;
     QJsonObject toJson() const;
 };
 

@@ -22,6 +22,19 @@ StationRunner::StationRunner(TestPlan plan, QStringList ports, QObject *parent)
 
 StationRunner::~StationRunner() = default;
 
+void StationRunner::setStation(const QString &stationId, const QString &operatorName)
+{
+    if (!stationId.isEmpty())
+        m_run.stationId = stationId;
+    if (!operatorName.isEmpty())
+        m_run.operatorName = operatorName;
+}
+
+void StationRunner::setLineDatabase(const results::UploaderOptions &options)
+{
+    m_line = options;
+}
+
 bool StationRunner::setRunFolder(const QString &dir, QString *error)
 {
     m_haveFolder = m_folder.open(dir, m_plan, error);
@@ -34,8 +47,10 @@ bool StationRunner::setRunFolder(const QString &dir, QString *error)
     if (!m_results.open(parent.filePath(QLatin1String(results::ResultsStore::kFileName)), &why))
         m_reportErrors << why;
     m_run.uuid = results::newUuid();
-    m_run.stationId = QSysInfo::machineHostName();
-    m_run.operatorName = qEnvironmentVariable("USER");
+    if (m_run.stationId.isEmpty())
+        m_run.stationId = QSysInfo::machineHostName();
+    if (m_run.operatorName.isEmpty())
+        m_run.operatorName = qEnvironmentVariable("USER");
     m_run.planName = m_plan.name;
     m_run.planSha256 = QString::fromLatin1(QCryptographicHash::hash(m_plan.toJson(), QCryptographicHash::Sha256).toHex());
     m_run.imudeskVersion = QCoreApplication::applicationVersion();
@@ -50,6 +65,12 @@ const ModuleResult &StationRunner::module(int i) const
 
 void StationRunner::start()
 {
+    if (m_line && m_results.isOpen() && !m_uploader) {
+        results::UploaderOptions o = *m_line;
+        o.outbox = m_results.location();
+        m_uploader = std::make_unique<results::ResultsUploader>(o);
+        m_uploader->start();
+    }
     for (int i = 0; i < int(m_modules.size()); ++i)
         if (!m_runners[size_t(i)])
             startModule(i);
@@ -108,6 +129,16 @@ void StationRunner::onModuleFinished(int i)
                                                     results::fileSha256(pdf), pdf}, nullptr);
             }
         }
+        if (stored) {
+            // The record as stored (with its report), in OpenHTF's layout, into the run folder.
+            results::ModuleRecord full = record;
+            if (auto back = m_results.module(record.uuid))
+                full = std::move(*back);
+            if (!m_folder.writeOpenHtf(full.uuid, full.toOpenHtfJson(), &error))
+                m_reportErrors << error;
+        }
+        if (m_uploader)
+            m_uploader->kick();
         if (!m_folder.append(r, &error))
             m_reportErrors << error;
     }

@@ -5,10 +5,13 @@
 // module is appended to its summary and gets its PDF report (through reportWriter, which the
 // GUI and the CLI supply: PDF needs QtGui, core does not link it). Before anything else, each
 // finished module's record (core/results) is committed to the station's results database,
-// results.sqlite in the folder that holds the run folders.
+// results.sqlite in the folder that holds the run folders, and its OpenHTF-shaped JSON is written
+// into the run folder (openhtf/<module uuid>.json). With a line database set, an uploader
+// forwards the station's database to it in the background (results_uploader.h).
 #include "core/station/module_runner.h"
 #include "core/results/result_record.h"
 #include "core/results/results_store.h"
+#include "core/results/results_uploader.h"
 #include "core/station/run_folder.h"
 
 #include <QObject>
@@ -45,6 +48,13 @@ public:
     const results::ResultsStore &resultsStore() const { return m_results; }
     const results::RunRecord &runRecord() const { return m_run; }
     void setReportWriter(ReportWriter writer) { m_writer = std::move(writer); }
+    // Who and where, as the records say; by default the host's name and $USER.
+    void setStation(const QString &stationId, const QString &operatorName);
+    // The line's database (options.outbox is set from the run folder); the uploader starts with
+    // the first module and goes on until the runner is destroyed.
+    void setLineDatabase(const results::UploaderOptions &options);
+    // nullptr without a line database.
+    results::ResultsUploader *uploader() const { return m_uploader.get(); }
 
     // Starts every module not yet run (or all of `only`, by index, again: a re-run).
     void start();
@@ -81,6 +91,8 @@ private:
     ReportWriter m_writer;
     results::ResultsStore m_results;
     results::RunRecord m_run;
+    std::optional<results::UploaderOptions> m_line;
+    std::unique_ptr<results::ResultsUploader> m_uploader;
     std::vector<std::unique_ptr<ModuleRunner>> m_runners;
     std::vector<ModuleResult> m_modules; // the latest result per port
     QStringList m_reportErrors;

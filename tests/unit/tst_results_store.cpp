@@ -4,12 +4,16 @@
 // station's result classified (a module gone is ERROR, a cancel ABORTED), a database of a newer
 // schema refused.
 #include "core/results/results_store.h"
+#include "../common/result_records.h"
 #include "../common/test_main.h"
 
+#include <QJsonArray>
 #include <QSqlDatabase>
 #include <QSqlQuery>
 #include <QTemporaryDir>
 #include <QTest>
+
+#include <cmath>
 
 using namespace imudesk;
 using namespace imudesk::results;
@@ -17,54 +21,12 @@ using namespace imudesk::results;
 namespace {
 RunRecord run(const QString &plan = QStringLiteral("HI14 incoming"))
 {
-    RunRecord r;
-    r.uuid = newUuid();
-    r.stationId = QStringLiteral("bench-3");
-    r.operatorName = QStringLiteral("li");
-    r.planName = plan;
-    r.planSha256 = QString(64, QLatin1Char('a'));
-    r.imudeskVersion = QStringLiteral("0.1.0");
-    r.started = QDateTime(QDate(2026, 11, 30), QTime(8, 0), Qt::UTC);
-    return r;
+    return test::sampleRun(plan);
 }
-
 ModuleRecord module(const RunRecord &r, const QString &serial, Outcome outcome, const QString &firmware = QStringLiteral("1.7.1"),
                     const QString &slot = QStringLiteral("/dev/ttyUSB0"), int attempt = 1, int minute = 0)
 {
-    ModuleRecord m;
-    m.uuid = newUuid();
-    m.run = r;
-    m.slot = slot;
-    m.serial = serial;
-    m.product = QStringLiteral("HI14R3");
-    m.firmwareBefore = firmware;
-    m.attempt = attempt;
-    m.outcome = outcome;
-    m.started = r.started.addSecs(60 * minute);
-    m.finished = m.started.addSecs(30);
-    m.steps.push_back({0, QStringLiteral("identify"), QStringLiteral("Identify"), Outcome::Pass, false, QStringLiteral("HI14R3"),
-                       m.started, m.started.addSecs(1)});
-    m.steps.push_back({1, QStringLiteral("static"), QStringLiteral("Static noise and bias"), outcome, false, QString(),
-                       m.started.addSecs(1), m.finished});
-    MeasurementRecord v;
-    v.step = 1;
-    v.name = QStringLiteral("gyro_std_x");
-    v.value = outcome == Outcome::Fail ? 0.41 : 0.012;
-    v.unit = QStringLiteral("°/s");
-    v.comparator = QStringLiteral("LE");
-    v.high = 0.05;
-    v.outcome = outcome == Outcome::Fail ? Outcome::Fail : Outcome::Pass;
-    m.measurements.push_back(v);
-    MeasurementRecord info;
-    info.step = 1;
-    info.name = QStringLiteral("temperature");
-    info.value = 31.5;
-    info.unit = QStringLiteral("°C");
-    info.comparator = QStringLiteral("INFO");
-    m.measurements.push_back(info);
-    m.artifacts.push_back({QStringLiteral("report"), QStringLiteral("application/pdf"), QString(64, QLatin1Char('b')),
-                           QStringLiteral("/runs/x.pdf")});
-    return m;
+    return test::sampleModule(r, serial, outcome, firmware, slot, attempt, minute);
 }
 } // namespace
 
@@ -232,6 +194,178 @@ private Q_SLOTS:
         QString error;
         QVERIFY(!store.open(path, &error));
         QVERIFY2(error.contains(QStringLiteral("newer ImuDesk")), qPrintable(error));
+    }
+
+    // A database of schema 1 (as the first stations wrote it) is migrated in place: its module
+    // is still there, and waits in the outbox.
+    void olderSchemaMigrated()
+    {
+        const QString path = m_dir.filePath(QStringLiteral("v1.sqlite"));
+        {
+            QSqlDatabase raw = QSqlDatabase::addDatabase(QStringLiteral("QSQLITE"), QStringLiteral("raw-v1"));
+            raw.setDatabaseName(path);
+            QVERIFY(raw.open());
+            QSqlQuery q(raw);
+            for (const char *sql :
+                 {"CREATE TABLE schema_version (version INTEGER NOT NULL)", "INSERT INTO schema_version VALUES (1)",
+                  "CREATE TABLE run (uuid TEXT PRIMARY KEY, station_id TEXT, operator TEXT, plan_name TEXT, plan_sha256 TEXT, "
+                  "imudesk_version TEXT, started TEXT, finished TEXT)",
+                  "CREATE TABLE module (uuid TEXT PRIMARY KEY, run_uuid TEXT NOT NULL REFERENCES run(uuid), slot TEXT, serial TEXT, "
+                  "product TEXT, firmware_before TEXT, firmware_after TEXT, attempt INTEGER, outcome TEXT NOT NULL, started TEXT, "
+                  "finished TEXT, uploaded INTEGER NOT NULL DEFAULT 0)",
+                  "CREATE TABLE step (module_uuid TEXT NOT NULL REFERENCES module(uuid), idx INTEGER NOT NULL, kind TEXT, name TEXT, "
+                  "outcome TEXT, skipped INTEGER, detail TEXT, started TEXT, finished TEXT, PRIMARY KEY (module_uuid, idx))",
+                  "CREATE TABLE measurement (module_uuid TEXT NOT NULL REFERENCES module(uuid), step INTEGER NOT NULL, name TEXT "
+                  "NOT NULL, value REAL, unit TEXT, comparator TEXT, low REAL, high REAL, outcome TEXT, PRIMARY KEY (module_uuid, "
+                  "step, name))",
+                  "CREATE TABLE artifact (module_uuid TEXT NOT NULL REFERENCES module(uuid), kind TEXT NOT NULL, mime TEXT, "
+                  "sha256 TEXT, location TEXT, PRIMARY KEY (module_uuid, kind))",
+                  "INSERT INTO run VALUES ('r1', 'bench-1', 'li', 'old plan', '', '0.1', '2026-11-01T08:00:00.000Z', '')",
+                  "INSERT INTO module VALUES ('m1', 'r1', '/dev/ttyUSB0', 'SN-OLD', 'HI14R3', '1.7.1', '', 1, 'PASS', "
+                  "'2026-11-01T08:00:00.000Z', '2026-11-01T08:01:00.000Z', 0)",
+                  "INSERT INTO measurement VALUES ('m1', 1, 'gyro_std_x', 0.01, '°/s', 'LE', NULL, 0.05, 'PASS')"})
+                QVERIFY2(q.exec(QString::fromUtf8(sql)), sql);
+            raw.close();
+        }
+        QSqlDatabase::removeDatabase(QStringLiteral("raw-v1"));
+        ResultsStore store;
+        QString error;
+        QVERIFY2(store.open(path, &error, false) == false, "a store told not to migrate must refuse schema 1");
+        QVERIFY2(error.contains(QStringLiteral("results setup")), qPrintable(error));
+        QVERIFY2(store.open(path, &error), qPrintable(error));
+        QCOMPARE(store.schemaVersion(), ResultsStore::kSchemaVersion);
+        const auto h = store.history(QStringLiteral("SN-OLD"));
+        QCOMPARE(int(h.size()), 1);
+        QCOMPARE(h[0].run.planName, QStringLiteral("old plan"));
+        QCOMPARE(int(h[0].measurements.size()), 1);
+        QVERIFY(!h[0].measurements[0].marginalHigh);
+        QCOMPARE(store.pendingCount(), 1);
+        // Open again: nothing to migrate, nothing changed.
+        store.close();
+        QVERIFY(store.open(path, &error));
+        QCOMPARE(store.moduleCount(), 1);
+    }
+
+    // The outbox: a module waits until its revision is marked uploaded; an artifact added later
+    // raises the revision, so the module waits again; an older revision's mark does not clear it.
+    void outboxFollowsRevisions()
+    {
+        ResultsStore store;
+        QString error;
+        QVERIFY(store.open(m_dir.filePath(QStringLiteral("outbox.sqlite")), &error));
+        const RunRecord r = run();
+        const ModuleRecord a = module(r, QStringLiteral("SN-A"), Outcome::Pass);
+        const ModuleRecord b = module(r, QStringLiteral("SN-B"), Outcome::Fail, QStringLiteral("1.7.1"), QStringLiteral("/dev/ttyUSB1"), 1, 1);
+        QVERIFY(store.commit(std::vector<ModuleRecord>{a, b}, &error));
+        auto pending = store.pendingUploads(10);
+        QCOMPARE(int(pending.size()), 2);
+        QCOMPARE(pending[0].first, a.uuid);
+        QCOMPARE(pending[0].second, 1);
+        QVERIFY(store.markUploaded(a.uuid, 1, &error));
+        QCOMPARE(store.pendingCount(), 1);
+        QVERIFY(store.addArtifact(a.uuid, {QStringLiteral("recording"), QStringLiteral("application/x-imudesk-capture"),
+                                           QString(64, QLatin1Char('c')), QStringLiteral("/runs/a.imudesk")},
+                                  &error));
+        pending = store.pendingUploads(10);
+        QCOMPARE(int(pending.size()), 2);
+        QCOMPARE(pending[0].second, 2);
+        QVERIFY(store.markUploaded(a.uuid, 1, &error)); // an upload that read revision 1 ends late
+        QCOMPARE(store.pendingCount(), 2);
+        QVERIFY(store.markUploaded(a.uuid, 2, &error));
+        QVERIFY(store.markUploaded(b.uuid, 1, &error));
+        QCOMPARE(store.pendingCount(), 0);
+        QCOMPARE(int(store.module(a.uuid)->artifacts.size()), 2);
+    }
+
+    // Search by a part of the serial (its % taken literally), by plan and station, newest first;
+    // a measurement's series leaves ERROR out; Cpk against the limits, computed by hand here.
+    void searchSeriesAndCapability()
+    {
+        ResultsStore store;
+        QString error;
+        QVERIFY(store.open(m_dir.filePath(QStringLiteral("search.sqlite")), &error));
+        const RunRecord r = run(QStringLiteral("trend plan"));
+        const double values[] = {0.01, 0.02, 0.03};
+        std::vector<ModuleRecord> all;
+        for (int i = 0; i < 3; ++i) {
+            ModuleRecord m = module(r, QStringLiteral("SN%1-7%").arg(i), Outcome::Pass, QStringLiteral("1.7.1"),
+                                    QStringLiteral("/dev/ttyUSB0"), 1, i);
+            m.measurements[0].value = values[i];
+            all.push_back(m);
+        }
+        ModuleRecord gone = module(r, QStringLiteral("SN9-x"), Outcome::Error, QStringLiteral("1.7.1"), QStringLiteral("/dev/ttyUSB0"), 1, 5);
+        gone.measurements[0].value = 9;
+        all.push_back(gone);
+        QVERIFY(store.commit(all, &error));
+        ResultsStore::Filter f;
+        f.serial = QStringLiteral("7%");
+        auto found = store.search(f, &error);
+        QCOMPARE(int(found.size()), 3);
+        QCOMPARE(found[0].serial, QStringLiteral("SN2-7%")); // newest first
+        f.serial = QStringLiteral("N_");
+        QCOMPARE(int(store.search(f).size()), 0); // _ is no wildcard
+        f = {};
+        f.plan = QStringLiteral("trend plan");
+        f.station = QStringLiteral("bench-3");
+        f.from = r.started.addSecs(60);
+        QCOMPARE(int(store.search(f).size()), 3); // minutes 1, 2 and 5
+        QCOMPARE(store.planNames(), QStringList{QStringLiteral("trend plan")});
+        QCOMPARE(store.measurementNames(QStringLiteral("trend plan")),
+                 (QStringList{QStringLiteral("gyro_std_x"), QStringLiteral("temperature")}));
+        const auto points = store.series(QStringLiteral("trend plan"), QStringLiteral("gyro_std_x"), {}, {}, &error);
+        QCOMPARE(int(points.size()), 3);
+        QCOMPARE(points[2].value, 0.03);
+        QCOMPARE(*points[0].high, 0.05);
+        const auto c = ResultsStore::capability(points);
+        QCOMPARE(c.n, 3);
+        QVERIFY(qFuzzyCompare(c.mean, 0.02));
+        QVERIFY(qFuzzyCompare(c.sigma, 0.01));
+        QVERIFY(qFuzzyCompare(c.cpk, 1.0)); // (0.05 - 0.02) / (3 * 0.01)
+        QVERIFY(std::isnan(ResultsStore::capability(store.series(QStringLiteral("trend plan"), QStringLiteral("temperature"), {}, {})).cpk));
+    }
+
+    // A pass with a value in its marginal band is counted as a pass and as marginal, and its
+    // band comes back; the OpenHTF JSON says so, with OpenHTF's validators.
+    void marginalPassAndOpenHtf()
+    {
+        ResultsStore store;
+        QString error;
+        QVERIFY(store.open(m_dir.filePath(QStringLiteral("marginal.sqlite")), &error));
+        const RunRecord r = run(QStringLiteral("marginal plan"));
+        ModuleRecord m = module(r, QStringLiteral("SN-M"), Outcome::Pass);
+        m.measurements[0].value = 0.045;
+        m.measurements[0].marginalHigh = 0.04;
+        m.measurements[0].marginal = true;
+        m.marginal = true;
+        QVERIFY(store.commit(std::vector<ModuleRecord>{m, module(r, QStringLiteral("SN-N"), Outcome::Pass)}, &error));
+        const auto y = store.yield(QStringLiteral("marginal plan"), {});
+        QCOMPARE(y.total.pass, 2);
+        QCOMPARE(y.total.marginal, 1);
+        const auto back = store.history(QStringLiteral("SN-M"));
+        QCOMPARE(int(back.size()), 1);
+        QVERIFY(back[0].marginal);
+        QCOMPARE(*back[0].measurements[0].marginalHigh, 0.04);
+        QVERIFY(back[0].measurements[0].marginal);
+        const QJsonObject htf = back[0].toOpenHtfJson();
+        QCOMPARE(htf.value(QStringLiteral("dut_id")).toString(), QStringLiteral("SN-M"));
+        QCOMPARE(htf.value(QStringLiteral("outcome")).toString(), QStringLiteral("PASS"));
+        QVERIFY(htf.value(QStringLiteral("marginal")).toBool());
+        const QJsonObject phase = htf.value(QStringLiteral("phases")).toArray().at(1).toObject();
+        QCOMPARE(phase.value(QStringLiteral("name")).toString(), QStringLiteral("static"));
+        const QJsonObject gyro = phase.value(QStringLiteral("measurements")).toObject().value(QStringLiteral("gyro_std_x")).toObject();
+        QCOMPARE(gyro.value(QStringLiteral("measured_value")).toDouble(), 0.045);
+        QCOMPARE(gyro.value(QStringLiteral("validators")).toArray().at(0).toString(), QStringLiteral("x <= 0.05"));
+        QCOMPARE(gyro.value(QStringLiteral("marginal_validators")).toArray().at(0).toString(), QStringLiteral("x < 0.04"));
+        QVERIFY(gyro.value(QStringLiteral("marginal")).toBool());
+        // The record's own JSON (results export --format jsonl) reads back whole.
+        const auto again = ModuleRecord::fromJson(back[0].toJson());
+        QVERIFY(again);
+        QCOMPARE(again->uuid, m.uuid);
+        QCOMPARE(again->run.planName, r.planName);
+        QCOMPARE(int(again->measurements.size()), 2);
+        QCOMPARE(*again->measurements[0].marginalHigh, 0.04);
+        QCOMPARE(again->serialRaw, back[0].serialRaw);
+        QVERIFY(!ModuleRecord::fromJson(QJsonObject{{QStringLiteral("uuid"), QStringLiteral("x")}}));
     }
 };
 
