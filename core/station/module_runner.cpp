@@ -124,7 +124,8 @@ void ModuleRunner::openSession()
                     return;
                 }
                 const auto &id = m_controller->identity();
-                m_result.serial = QString::fromStdString(id.serial);
+                m_result.serialRaw = QByteArray::fromStdString(id.serial);
+                m_result.serial = bytesAsText(m_result.serialRaw);
                 m_result.product = QString::fromStdString(id.productName);
                 const QString fw = versionText(id.firmware);
                 if (m_index < 0) {
@@ -242,6 +243,13 @@ void ModuleRunner::endStep(Verdict verdict, const QString &detail)
     r.verdict = verdict;
     if (!detail.isEmpty())
         r.detail = detail;
+    // A pass with values in a marginal band says which: the tiles and reports show the detail.
+    QStringList marginal;
+    for (const Measurement &m : r.values)
+        if (m.marginal)
+            marginal << m.name;
+    if (verdict == Verdict::Pass && !marginal.isEmpty())
+        r.detail = tr("%1; marginal: %2").arg(r.detail, marginal.join(QStringLiteral(", ")));
     r.finished = QDateTime::currentDateTimeUtc();
     if (verdict == Verdict::Fail) {
         // The steps after it are not run; one the plan turns off would not have run anyway,
@@ -316,19 +324,33 @@ void ModuleRunner::finish()
     Q_EMIT finished();
 }
 
-bool ModuleRunner::measure(const QString &name, double value, const QString &unit, double limit)
+Measurement ModuleRunner::limited(const QString &name, double value, const QString &unit, const char *limitKey,
+                                 bool magnitude) const
 {
-    const bool ok = value <= limit;
-    step().values.push_back(Measurement{name, value, unit, upTo(limit), ok, QStringLiteral("LE"), limit});
-    return ok;
+    const PlanStep &s = planStep();
+    const double limit = s.number(limitKey);
+    const auto band = s.marginalOf(limitKey);
+    const double x = magnitude ? std::abs(value) : value;
+    QString text = magnitude ? QStringLiteral("|x| ≤ %1").arg(number(limit)) : upTo(limit);
+    if (band)
+        text = tr("%1 (marginal > %2)").arg(text, number(*band));
+    Measurement m{name, value, unit, text, x <= limit,
+                  magnitude ? QStringLiteral("ABS_LE") : QStringLiteral("LE"), limit};
+    m.marginalHigh = band;
+    m.marginal = m.ok && band && x > *band;
+    return m;
 }
 
-bool ModuleRunner::measureMagnitude(const QString &name, double value, const QString &unit, double limit)
+bool ModuleRunner::measure(const QString &name, double value, const QString &unit, const char *limitKey)
 {
-    const bool ok = std::abs(value) <= limit;
-    step().values.push_back(Measurement{name, value, unit, QStringLiteral("|x| ≤ %1").arg(number(limit)), ok,
-                                        QStringLiteral("ABS_LE"), limit});
-    return ok;
+    step().values.push_back(limited(name, value, unit, limitKey, false));
+    return step().values.back().ok;
+}
+
+bool ModuleRunner::measureMagnitude(const QString &name, double value, const QString &unit, const char *limitKey)
+{
+    step().values.push_back(limited(name, value, unit, limitKey, true));
+    return step().values.back().ok;
 }
 
 void ModuleRunner::info(const QString &name, double value, const QString &unit)
@@ -551,11 +573,13 @@ void ModuleRunner::poll()
         if (m_gyroScale->state() == calib::GyroScaleRun::State::Finished) {
             const auto r = m_gyroScale->result();
             m_gyroScale.reset();
-            const double limit = planStep().number("max_error_pct");
-            const bool ok = r.complete && r.acceptable && std::abs(r.scaleErrorPct) <= limit;
-            step().values.push_back(Measurement{QStringLiteral("scale_error"), r.scaleErrorPct, QStringLiteral("%"),
-                                                QStringLiteral("|x| ≤ %1").arg(number(limit)), ok,
-                                                QStringLiteral("ABS_LE"), limit});
+            Measurement m = limited(QStringLiteral("scale_error"), r.scaleErrorPct, QStringLiteral("%"),
+                                    "max_error_pct", true);
+            // An incomplete or unacceptable run fails whatever its error: not marginal then.
+            m.ok = m.ok && r.complete && r.acceptable;
+            m.marginal = m.marginal && m.ok;
+            const bool ok = m.ok;
+            step().values.push_back(m);
             info(QStringLiteral("bias"), r.biasDps, QStringLiteral("°/s"));
             endStep(ok ? Verdict::Pass : Verdict::Fail, r.summary);
         }
@@ -603,7 +627,6 @@ double ModuleRunner::collectedSeconds() const
 
 void ModuleRunner::evaluateStatic()
 {
-    const PlanStep &s = planStep();
     const size_t n = m_samples.size();
     auto stats = [&](auto get, double &mean, double &sd) {
         double sum = 0, sum2 = 0;
@@ -614,26 +637,26 @@ void ModuleRunner::evaluateStatic()
             sum2 += (get(x) - mean) * (get(x) - mean);
         sd = std::sqrt(sum2 / double(n > 1 ? n - 1 : 1));
     };
-    const double gyroStd = s.number("gyro_std_max_dps"), gyroBias = s.number("gyro_bias_max_dps");
-    const double accStd = s.number("acc_std_max_mg"), tol = s.number("gravity_tol_mg");
     const char *axes[] = {"x", "y", "z"};
     Eigen::Vector3d accMean;
     bool ok = true;
     for (int a = 0; a < 3; ++a) {
         double mean = 0, sd = 0;
         stats([a](const model::Sample &x) { return a == 0 ? x.gyr.x : a == 1 ? x.gyr.y : x.gyr.z; }, mean, sd);
-        ok &= measure(QStringLiteral("gyro_std_%1").arg(QLatin1String(axes[a])), sd, QStringLiteral("°/s"), gyroStd);
+        ok &= measure(QStringLiteral("gyro_std_%1").arg(QLatin1String(axes[a])), sd, QStringLiteral("°/s"),
+                      "gyro_std_max_dps");
         ok &= measureMagnitude(QStringLiteral("gyro_bias_%1").arg(QLatin1String(axes[a])), mean, QStringLiteral("°/s"),
-                               gyroBias);
+                               "gyro_bias_max_dps");
     }
     for (int a = 0; a < 3; ++a) {
         double mean = 0, sd = 0;
         stats([a](const model::Sample &x) { return a == 0 ? x.acc.x : a == 1 ? x.acc.y : x.acc.z; }, mean, sd);
         accMean[a] = mean;
-        ok &= measure(QStringLiteral("acc_std_%1").arg(QLatin1String(axes[a])), sd * 1000, QStringLiteral("mG"), accStd);
+        ok &= measure(QStringLiteral("acc_std_%1").arg(QLatin1String(axes[a])), sd * 1000, QStringLiteral("mG"),
+                      "acc_std_max_mg");
     }
     const double gErr = (accMean.norm() - 1.0) * 1000.0;
-    ok &= measureMagnitude(QStringLiteral("gravity_error"), gErr, QStringLiteral("mG"), tol);
+    ok &= measureMagnitude(QStringLiteral("gravity_error"), gErr, QStringLiteral("mG"), "gravity_tol_mg");
     info(QStringLiteral("samples"), double(n), QString());
     endStep(ok ? Verdict::Pass : Verdict::Fail,
             ok ? tr("%1 samples within every limit").arg(n) : tr("%1 samples; values outside the limits are marked").arg(n));
@@ -642,7 +665,7 @@ void ModuleRunner::evaluateStatic()
 void ModuleRunner::evaluateAllan()
 {
     const PlanStep &s = planStep();
-    const double tau = s.number("tau_s"), limit = s.number("sigma_max_dps");
+    const double tau = s.number("tau_s");
     // The sample interval from the device's own clock (the host's arrival times jitter).
     const double spanMs = m_samples.back().deviceTimeMs - m_samples.front().deviceTimeMs;
     const double tau0 = spanMs > 0 ? spanMs / 1000.0 / double(m_samples.size() - 1)
@@ -665,7 +688,8 @@ void ModuleRunner::evaluateAllan()
                      .arg(std::ceil(tau * 10)));
             return;
         }
-        ok &= measure(QStringLiteral("allan_%1").arg(QLatin1String(axes[a])), sigma, QStringLiteral("°/s"), limit);
+        ok &= measure(QStringLiteral("allan_%1").arg(QLatin1String(axes[a])), sigma, QStringLiteral("°/s"),
+                      "sigma_max_dps");
     }
     endStep(ok ? Verdict::Pass : Verdict::Fail, tr("σ(%1 s) of each gyro axis").arg(tau));
 }
@@ -689,12 +713,12 @@ void ModuleRunner::evaluateAttitude()
         return;
     }
     const double roll = std::atan2(sr, cr) * model::kRadToDeg, pitch = std::atan2(sp, cp) * model::kRadToDeg;
-    const double tol = s.number("tolerance_deg");
     const double dRoll = wrapDeg(roll - s.number("roll_deg")), dPitch = wrapDeg(pitch - s.number("pitch_deg"));
     info(QStringLiteral("roll"), roll, QStringLiteral("°"));
     info(QStringLiteral("pitch"), pitch, QStringLiteral("°"));
-    const bool rollOk = measureMagnitude(QStringLiteral("roll_error"), dRoll, QStringLiteral("°"), tol);
-    const bool ok = measureMagnitude(QStringLiteral("pitch_error"), dPitch, QStringLiteral("°"), tol) && rollOk;
+    const bool rollOk = measureMagnitude(QStringLiteral("roll_error"), dRoll, QStringLiteral("°"), "tolerance_deg");
+    const bool pitchOk = measureMagnitude(QStringLiteral("pitch_error"), dPitch, QStringLiteral("°"), "tolerance_deg");
+    const bool ok = rollOk && pitchOk;
     endStep(ok ? Verdict::Pass : Verdict::Fail,
             ok ? tr("mounted as expected") : tr("roll %1°, pitch %2°: the module is not mounted as the plan expects")
                                                  .arg(number(roll), number(pitch)));

@@ -101,10 +101,14 @@ private:
     void updateProgress(double fraction);
     StepResult &step() { return m_result.steps[size_t(m_index)]; }
     const PlanStep &planStep() const { return m_plan.steps[size_t(m_index)]; }
-    // A value held against an upper limit (measure) or its magnitude against one
-    // (measureMagnitude), added to the running step; true when within.
-    bool measure(const QString &name, double value, const QString &unit, double limit);
-    bool measureMagnitude(const QString &name, double value, const QString &unit, double limit);
+    // A value held against the running step's limit parameter `limitKey` (measure) or its
+    // magnitude against it (measureMagnitude), with the limit's marginal band when the plan
+    // gives one, added to the running step; true when within the limit (marginal or not).
+    bool measure(const QString &name, double value, const QString &unit, const char *limitKey);
+    bool measureMagnitude(const QString &name, double value, const QString &unit, const char *limitKey);
+    // The measurement both build (not yet added).
+    Measurement limited(const QString &name, double value, const QString &unit, const char *limitKey,
+                        bool magnitude) const;
     void info(const QString &name, double value, const QString &unit);
 
     // steps

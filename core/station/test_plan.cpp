@@ -21,10 +21,21 @@ ParamSpec number(const char *key, const char *label, const char *unit, const cha
 {
     return ParamSpec{key, label, unit, tip, false, def, min, max, ""};
 }
+// A pass/fail upper limit: a number that may carry a marginal band (format 2).
+ParamSpec limitNumber(const char *key, const char *label, const char *unit, const char *tip, double def,
+                      double min, double max)
+{
+    ParamSpec p = number(key, label, unit, tip, def, min, max);
+    p.limit = true;
+    return p;
+}
 ParamSpec text(const char *key, const char *label, const char *tip, const char *def)
 {
     return ParamSpec{key, label, "", tip, true, 0, 0, 0, def};
 }
+// A limit with a band in the JSON: {"high": limit, "marginal_high": band}.
+constexpr const char *kHigh = "high";
+constexpr const char *kMarginalHigh = "marginal_high";
 } // namespace
 
 double PlanStep::number(const char *key) const
@@ -35,6 +46,16 @@ double PlanStep::number(const char *key) const
 QString PlanStep::text(const char *key) const
 {
     return params.value(QString::fromLatin1(key)).toString();
+}
+
+std::optional<double> PlanStep::marginalOf(const char *key) const
+{
+    const auto it = marginal.constFind(QString::fromLatin1(key));
+    if (it == marginal.constEnd())
+        return std::nullopt;
+    bool ok = false;
+    const double v = it->toDouble(&ok);
+    return ok ? std::optional<double>(v) : std::nullopt;
 }
 
 const std::vector<StepKind> &TestPlan::allKinds()
@@ -149,20 +170,21 @@ const std::vector<ParamSpec> &TestPlan::params(StepKind kind)
         number("seconds", QT_TRANSLATE_NOOP("imudesk::station::TestPlan", "Duration"), "s",
                QT_TRANSLATE_NOOP("imudesk::station::TestPlan", "How long the module is measured at rest"), 5, 1,
                600),
-        number("gyro_std_max_dps", QT_TRANSLATE_NOOP("imudesk::station::TestPlan", "Gyro noise max"), "°/s",
-               QT_TRANSLATE_NOOP("imudesk::station::TestPlan", "Largest standard deviation of each gyro axis"),
-               0.05, 0, 100),
-        number("gyro_bias_max_dps", QT_TRANSLATE_NOOP("imudesk::station::TestPlan", "Gyro bias max"), "°/s",
-               QT_TRANSLATE_NOOP("imudesk::station::TestPlan", "Largest magnitude of each gyro axis's mean at rest"),
-               0.5, 0, 100),
-        number("acc_std_max_mg", QT_TRANSLATE_NOOP("imudesk::station::TestPlan", "Accelerometer noise max"), "mG",
-               QT_TRANSLATE_NOOP("imudesk::station::TestPlan",
-                                 "Largest standard deviation of each accelerometer axis"),
-               3, 0, 1000),
-        number("gravity_tol_mg", QT_TRANSLATE_NOOP("imudesk::station::TestPlan", "Gravity tolerance"), "mG",
-               QT_TRANSLATE_NOOP("imudesk::station::TestPlan",
-                                 "The mean acceleration's magnitude may differ from 1 G by this much"),
-               20, 0, 1000),
+        limitNumber("gyro_std_max_dps", QT_TRANSLATE_NOOP("imudesk::station::TestPlan", "Gyro noise max"), "°/s",
+                    QT_TRANSLATE_NOOP("imudesk::station::TestPlan", "Largest standard deviation of each gyro axis"),
+                    0.05, 0, 100),
+        limitNumber("gyro_bias_max_dps", QT_TRANSLATE_NOOP("imudesk::station::TestPlan", "Gyro bias max"), "°/s",
+                    QT_TRANSLATE_NOOP("imudesk::station::TestPlan",
+                                      "Largest magnitude of each gyro axis's mean at rest"),
+                    0.5, 0, 100),
+        limitNumber("acc_std_max_mg", QT_TRANSLATE_NOOP("imudesk::station::TestPlan", "Accelerometer noise max"), "mG",
+                    QT_TRANSLATE_NOOP("imudesk::station::TestPlan",
+                                      "Largest standard deviation of each accelerometer axis"),
+                    3, 0, 1000),
+        limitNumber("gravity_tol_mg", QT_TRANSLATE_NOOP("imudesk::station::TestPlan", "Gravity tolerance"), "mG",
+                    QT_TRANSLATE_NOOP("imudesk::station::TestPlan",
+                                      "The mean acceleration's magnitude may differ from 1 G by this much"),
+                    20, 0, 1000),
     };
     static const std::vector<ParamSpec> allan{
         number("seconds", QT_TRANSLATE_NOOP("imudesk::station::TestPlan", "Duration"), "s",
@@ -172,9 +194,9 @@ const std::vector<ParamSpec> &TestPlan::params(StepKind kind)
         number("tau_s", QT_TRANSLATE_NOOP("imudesk::station::TestPlan", "Averaging time"), "s",
                QT_TRANSLATE_NOOP("imudesk::station::TestPlan", "τ at which the Allan deviation is read"), 1, 0.01,
                360),
-        number("sigma_max_dps", QT_TRANSLATE_NOOP("imudesk::station::TestPlan", "σ(τ) max"), "°/s",
-               QT_TRANSLATE_NOOP("imudesk::station::TestPlan", "Largest Allan deviation of any gyro axis at τ"),
-               0.01, 0, 100),
+        limitNumber("sigma_max_dps", QT_TRANSLATE_NOOP("imudesk::station::TestPlan", "σ(τ) max"), "°/s",
+                    QT_TRANSLATE_NOOP("imudesk::station::TestPlan", "Largest Allan deviation of any gyro axis at τ"),
+                    0.01, 0, 100),
     };
     static const std::vector<ParamSpec> attitude{
         number("roll_deg", QT_TRANSLATE_NOOP("imudesk::station::TestPlan", "Expected roll"), "°",
@@ -183,9 +205,9 @@ const std::vector<ParamSpec> &TestPlan::params(StepKind kind)
         number("pitch_deg", QT_TRANSLATE_NOOP("imudesk::station::TestPlan", "Expected pitch"), "°",
                QT_TRANSLATE_NOOP("imudesk::station::TestPlan", "Pitch of the module in its fixture (Z up: 0)"), 0,
                -90, 90),
-        number("tolerance_deg", QT_TRANSLATE_NOOP("imudesk::station::TestPlan", "Tolerance"), "°",
-               QT_TRANSLATE_NOOP("imudesk::station::TestPlan", "Largest difference of roll and of pitch"), 5, 0.1,
-               90),
+        limitNumber("tolerance_deg", QT_TRANSLATE_NOOP("imudesk::station::TestPlan", "Tolerance"), "°",
+                    QT_TRANSLATE_NOOP("imudesk::station::TestPlan", "Largest difference of roll and of pitch"), 5, 0.1,
+                    90),
         number("seconds", QT_TRANSLATE_NOOP("imudesk::station::TestPlan", "Duration"), "s",
                QT_TRANSLATE_NOOP("imudesk::station::TestPlan", "The angles are averaged over this time"), 2, 0.5, 60),
     };
@@ -195,9 +217,9 @@ const std::vector<ParamSpec> &TestPlan::params(StepKind kind)
                150, 10, 1200),
     };
     static const std::vector<ParamSpec> gyroScale{
-        number("max_error_pct", QT_TRANSLATE_NOOP("imudesk::station::TestPlan", "Scale error max"), "%",
-               QT_TRANSLATE_NOOP("imudesk::station::TestPlan", "Largest scale-factor error of the Z gyro"), 0.5, 0,
-               100),
+        limitNumber("max_error_pct", QT_TRANSLATE_NOOP("imudesk::station::TestPlan", "Scale error max"), "%",
+                    QT_TRANSLATE_NOOP("imudesk::station::TestPlan", "Largest scale-factor error of the Z gyro"), 0.5, 0,
+                    100),
         number("timeout_s", QT_TRANSLATE_NOOP("imudesk::station::TestPlan", "Time limit"), "s",
                QT_TRANSLATE_NOOP("imudesk::station::TestPlan", "The run fails when the turns have not ended by then"),
                180, 10, 1200),
@@ -288,6 +310,45 @@ QString TestPlan::checkValue(StepKind kind, const QString &k, const QVariant &va
     return {};
 }
 
+QString TestPlan::checkMarginal(StepKind kind, const QString &k, const QVariant &marginal, const QVariant &high)
+{
+    const ParamSpec *p = param(kind, k);
+    if (!p)
+        return tr("%1 has no parameter \"%2\"").arg(key(kind), k);
+    if (!p->limit)
+        return tr("\"%1\" is not a limit: it has no marginal band").arg(k);
+    bool ok = false;
+    const double v = marginal.toDouble(&ok);
+    if (!ok || !std::isfinite(v) || marginal.typeId() == QMetaType::QString || marginal.typeId() == QMetaType::Bool)
+        return tr("\"%1\": \"marginal_high\" must be a number").arg(k);
+    const QString unit = *p->unit ? QStringLiteral(" ") + QString::fromUtf8(p->unit) : QString();
+    if (v < p->min || v > p->max)
+        return tr("\"%1\": \"marginal_high\" = %2 is outside %3 … %4%5")
+            .arg(k)
+            .arg(v)
+            .arg(p->min)
+            .arg(p->max)
+            .arg(unit);
+    // Equal to the limit would be a band no value falls into: refused rather than kept silently.
+    if (!(v < high.toDouble()))
+        return tr("\"%1\": \"marginal_high\" = %2%4 is not below the limit %3%4")
+            .arg(k)
+            .arg(v)
+            .arg(high.toDouble())
+            .arg(unit);
+    return {};
+}
+
+QString TestPlan::conversionNote() const
+{
+    if (loadedVersion >= kVersion)
+        return {};
+    return tr("This plan was written in format version %1; it is converted to version %2 and will be saved as "
+              "version %2.")
+        .arg(loadedVersion)
+        .arg(kVersion);
+}
+
 std::optional<TestPlan> TestPlan::fromJson(const QByteArray &json, QString *error)
 {
     auto failWith = [error](const QString &why) -> std::optional<TestPlan> {
@@ -310,6 +371,7 @@ std::optional<TestPlan> TestPlan::fromJson(const QByteArray &json, QString *erro
                             .arg(root.value(QStringLiteral("version")).toVariant().toString())
                             .arg(kVersion));
     TestPlan plan;
+    plan.loadedVersion = version;
     plan.name = root.value(QStringLiteral("name")).toString();
     const QJsonArray steps = root.value(QStringLiteral("steps")).toArray();
     if (steps.isEmpty())
@@ -330,10 +392,36 @@ std::optional<TestPlan> TestPlan::fromJson(const QByteArray &json, QString *erro
                 s.enabled = it.value().toBool();
                 continue;
             }
-            const QVariant v = it.value().toVariant();
+            // A limit with a band (version 2): {"high": limit, "marginal_high": band}. In a
+            // version 1 plan, or for any other parameter, an object is refused as not a number.
+            QJsonValue value = it.value();
+            std::optional<QVariant> band;
+            const ParamSpec *spec = param(*kind, it.key());
+            if (version >= 2 && spec && spec->limit && value.isObject()) {
+                const QJsonObject limit = value.toObject();
+                for (auto f = limit.begin(); f != limit.end(); ++f)
+                    if (f.key() != QLatin1String(kHigh) && f.key() != QLatin1String(kMarginalHigh))
+                        return failWith(tr("step %1 (%2): \"%3\" has an unknown field \"%4\" (a limit is a number "
+                                           "or {\"high\": …, \"marginal_high\": …})")
+                                            .arg(i + 1)
+                                            .arg(k, it.key(), f.key()));
+                if (!limit.contains(QLatin1String(kHigh)))
+                    return failWith(tr("step %1 (%2): \"%3\" has no \"high\" (the limit itself)")
+                                        .arg(i + 1)
+                                        .arg(k, it.key()));
+                value = limit.value(QLatin1String(kHigh));
+                if (limit.contains(QLatin1String(kMarginalHigh)))
+                    band = limit.value(QLatin1String(kMarginalHigh)).toVariant();
+            }
+            const QVariant v = value.toVariant();
             if (const QString why = checkValue(*kind, it.key(), v); !why.isEmpty())
                 return failWith(tr("step %1 (%2): %3").arg(i + 1).arg(k, why));
-            s.params[it.key()] = param(*kind, it.key())->text ? QVariant(v.toString()) : QVariant(v.toDouble());
+            if (band) {
+                if (const QString why = checkMarginal(*kind, it.key(), *band, v); !why.isEmpty())
+                    return failWith(tr("step %1 (%2): %3").arg(i + 1).arg(k, why));
+                s.marginal[it.key()] = band->toDouble();
+            }
+            s.params[it.key()] = spec->text ? QVariant(v.toString()) : QVariant(v.toDouble());
         }
         plan.steps.push_back(std::move(s));
     }
@@ -350,7 +438,13 @@ QByteArray TestPlan::toJson() const
             o.insert(QStringLiteral("enabled"), false);
         for (const ParamSpec &p : params(s.kind)) {
             const QString k = QString::fromLatin1(p.key);
-            o.insert(k, p.text ? QJsonValue(s.text(p.key)) : QJsonValue(s.number(p.key)));
+            // Without a band a limit stays a plain number: such plans read as they did in version 1.
+            const auto band = p.limit ? s.marginalOf(p.key) : std::nullopt;
+            if (band)
+                o.insert(k, QJsonObject{{QLatin1String(kHigh), s.number(p.key)},
+                                        {QLatin1String(kMarginalHigh), *band}});
+            else
+                o.insert(k, p.text ? QJsonValue(s.text(p.key)) : QJsonValue(s.number(p.key)));
         }
         steps.append(o);
     }
@@ -404,6 +498,10 @@ QStringList TestPlan::problems() const
         const PlanStep &s = steps[i];
         for (auto it = s.params.begin(); it != s.params.end(); ++it)
             if (const QString why = checkValue(s.kind, it.key(), it.value()); !why.isEmpty())
+                out << tr("step %1 (%2): %3").arg(i + 1).arg(key(s.kind), why);
+        for (auto it = s.marginal.begin(); it != s.marginal.end(); ++it)
+            if (const QString why = checkMarginal(s.kind, it.key(), it.value(), s.params.value(it.key()));
+                !why.isEmpty())
                 out << tr("step %1 (%2): %3").arg(i + 1).arg(key(s.kind), why);
         if (!s.enabled)
             continue;

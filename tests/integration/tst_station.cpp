@@ -149,6 +149,7 @@ private Q_SLOTS:
     void cliTray();
     void examplePlanPassesOnCleanHi14();
     void disabledStepsSayDisabled();
+    void marginalBandPassesMarked();
 };
 
 void TestStation::trayOfFiveInParallel()
@@ -491,6 +492,46 @@ void TestStation::disabledStepsSayDisabled()
     QCOMPARE(g.steps[0].detail, disabled);
     QCOMPARE(g.steps[1].detail, disabled);
     QCOMPARE(g.steps[size_t(g.failedStep())].kind, StepKind::Save);
+}
+
+// A marginal band (plan format 2) on the gyro noise limit, below a clean module's noise
+// (SensorModel::kGyrNoiseDps, 0.02 °/s) while the limit is above it: the module passes, its gyro
+// noise values are marked marginal and the step's detail names them; the limits without a band
+// mark nothing.
+void TestStation::marginalBandPassesMarked()
+{
+    Tray tray(true, 4.0);
+    QVERIFY(tray.add("", "1.7.1", 51));
+    station::TestPlan plan;
+    plan.name = QStringLiteral("marginal band");
+    plan.steps.push_back(station::TestPlan::defaultStep(
+        station::StepKind::Static, {{QStringLiteral("seconds"), 2.0}, {QStringLiteral("gyro_std_max_dps"), 0.05}}));
+    plan.steps.back().marginal.insert(QStringLiteral("gyro_std_max_dps"), 0.01);
+    QVERIFY2(plan.problems().isEmpty(), qPrintable(plan.problems().join(u'\n')));
+    station::StationRunner runner(plan, tray.ports);
+    runner.setTransportFactory(tray.transports());
+    QSignalSpy done(&runner, &station::StationRunner::finished);
+    runner.start();
+    QVERIFY(done.wait(60000));
+    const station::ModuleResult &m = runner.module(0);
+    QVERIFY2(m.verdict == Verdict::Pass, qPrintable(m.failureSummary()));
+    QVERIFY(m.marginal());
+    QCOMPARE(m.toJson().value(QStringLiteral("marginal")).toBool(), true);
+    const station::StepResult *still = stepOf(m, station::StepKind::Static);
+    QVERIFY(still);
+    QCOMPARE(still->verdict, Verdict::Pass);
+    for (const char *axis : {"x", "y", "z"}) {
+        const station::Measurement *v = valueOf(*still, QStringLiteral("gyro_std_") + QLatin1String(axis));
+        QVERIFY(v);
+        QVERIFY2(v->ok && v->marginal, qPrintable(QString::number(v->value)));
+        QCOMPARE(v->marginalHigh.value_or(-1), 0.01);
+        QCOMPARE(v->limit, QStringLiteral("≤ 0.05 (marginal > 0.01)"));
+    }
+    const station::Measurement *bias = valueOf(*still, QStringLiteral("gyro_bias_x"));
+    QVERIFY(bias);
+    QVERIFY(!bias->marginal && !bias->marginalHigh);
+    QVERIFY2(still->detail.contains(QStringLiteral("marginal: gyro_std_x, gyro_std_y, gyro_std_z")),
+             qPrintable(still->detail));
 }
 
 IMUDESK_TEST_MAIN(TestStation)

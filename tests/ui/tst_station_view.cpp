@@ -7,7 +7,8 @@
 // Simplified Chinese: the 8 tiles in 4 columns on the small window and more on the large one,
 // every tile whole and inside the window, no scroll bar, no label cut short. Errors are reported
 // without stopping the window. The plan editor writes an edited number into the JSON and lists a
-// value typed outside its range as a problem.
+// value typed outside its range as a problem; it edits a limit's marginal band (plan format 2),
+// lists a band not below its limit, and says a version 1 plan is converted.
 //
 // The tray runs in this process (StationView::setSimulatedTrayInProcess: each module behind a
 // sim::SimulatedTransport, its clock kTimeScale times faster than real time), so a loaded host
@@ -28,6 +29,7 @@
 #include <QAbstractScrollArea>
 #include <QAction>
 #include <QApplication>
+#include <QCheckBox>
 #include <QDir>
 #include <QDoubleSpinBox>
 #include <QElapsedTimer>
@@ -556,6 +558,101 @@ private Q_SLOTS:
         editor.findChild<QPushButton *>(QStringLiteral("stepDown"))->click();
         QCOMPARE(editor.plan().steps[1].kind, StepKind::Identify);
         QCOMPARE(editor.currentStep(), 1);
+    }
+
+    void planEditorEditsAMarginalBand()
+    {
+        // A version 1 plan: the editor says it is converted, and everything still fits.
+        QString error;
+        const auto loaded = TestPlan::fromJson(R"({"format": "imudesk-station-plan", "version": 1, "name": "old plan",
+                                                   "steps": [{"step": "identify"},
+                                                             {"step": "static", "gyro_std_max_dps": 0.05}]})",
+                                               &error);
+        QVERIFY2(loaded, qPrintable(error));
+        ui::PlanEditorDialog editor(*loaded, QString());
+        editor.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&editor));
+        auto *note = editor.findChild<QLabel *>(QStringLiteral("conversionNote"));
+        QVERIFY(note);
+        QVERIFY(note->isVisible());
+        QVERIFY2(note->text().contains(QStringLiteral("version 1")), qPrintable(note->text()));
+        editor.selectStep(1); // static
+        auto *limit = qobject_cast<QDoubleSpinBox *>(editor.field(QStringLiteral("gyro_std_max_dps")));
+        auto *check = editor.findChild<QCheckBox *>(QStringLiteral("marginalBand_gyro_std_max_dps"));
+        auto *band = editor.findChild<QDoubleSpinBox *>(QStringLiteral("marginal_gyro_std_max_dps"));
+        QVERIFY(limit && check && band);
+        QVERIFY(!check->isChecked());
+        QVERIFY(!band->isEnabled());
+        QCOMPARE(band->suffix(), QStringLiteral(" °/s"));
+        QVERIFY2(band->toolTip().contains(QStringLiteral("marginal"))
+                     && band->toolTip().contains(QStringLiteral("°/s")),
+                 qPrintable(band->toolTip()));
+        // A parameter that is no limit has no band.
+        QVERIFY(!editor.findChild<QDoubleSpinBox *>(QStringLiteral("marginal_seconds")));
+        QCoreApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);
+        QCoreApplication::processEvents();
+        QVERIFY2(cutOrOutside(editor).isEmpty(), qPrintable(cutOrOutside(editor).join(QLatin1Char('\n'))));
+        const QSize frame = editor.frameGeometry().size();
+        QVERIFY2(frame.width() <= kSmall.width() && frame.height() <= kSmall.height(),
+                 qPrintable(QStringLiteral("%1x%2").arg(frame.width()).arg(frame.height())));
+        if (const QString shots = qEnvironmentVariable("IMUDESK_LAYOUT_SHOTS"); !shots.isEmpty())
+            editor.grab().save(QDir(shots).filePath(QStringLiteral("station-plan-editor-band.png")));
+
+        // Checked: a band below the limit at once; then one typed.
+        check->click();
+        QVERIFY(band->isEnabled());
+        QVERIFY(editor.isModified());
+        QCOMPARE(editor.plan().steps[1].marginalOf("gyro_std_max_dps").value_or(-1), 0.04);
+        band->selectAll();
+        QTest::keyClicks(band, QStringLiteral("0.03"));
+        QCOMPARE(editor.plan().steps[1].marginalOf("gyro_std_max_dps").value_or(-1), 0.03);
+        QVERIFY2(editor.problems().isEmpty(), qPrintable(editor.problems().join(QLatin1Char('\n'))));
+        const QJsonObject written = QJsonDocument::fromJson(editor.plan().toJson())
+                                        .object()
+                                        .value(QStringLiteral("steps"))
+                                        .toArray()
+                                        .at(1)
+                                        .toObject()
+                                        .value(QStringLiteral("gyro_std_max_dps"))
+                                        .toObject();
+        QCOMPARE(written.value(QStringLiteral("high")).toDouble(), 0.05);
+        QCOMPARE(written.value(QStringLiteral("marginal_high")).toDouble(), 0.03);
+
+        // A band at or above the limit is a problem naming the step and the limit, whichever moved.
+        auto *problems = editor.findChild<QLabel *>(QStringLiteral("planProblems"));
+        QVERIFY(problems);
+        band->selectAll();
+        QTest::keyClicks(band, QStringLiteral("0.06"));
+        QCOMPARE(editor.problems().size(), 1);
+        QVERIFY2(problems->text().contains(QStringLiteral("step 2 (static)"))
+                     && problems->text().contains(QStringLiteral("gyro_std_max_dps"))
+                     && problems->text().contains(QStringLiteral("not below the limit")),
+                 qPrintable(problems->text()));
+        band->selectAll();
+        QTest::keyClicks(band, QStringLiteral("0.03"));
+        QVERIFY2(editor.problems().isEmpty(), qPrintable(editor.problems().join(QLatin1Char('\n'))));
+        limit->selectAll();
+        QTest::keyClicks(limit, QStringLiteral("0.02"));
+        QCOMPARE(editor.problems().size(), 1);
+        // Unchecked: no band, and no problem with it.
+        check->click();
+        QVERIFY(!band->isEnabled());
+        QVERIFY(!editor.plan().steps[1].marginalOf("gyro_std_max_dps"));
+        QVERIFY2(editor.problems().isEmpty(), qPrintable(editor.problems().join(QLatin1Char('\n'))));
+
+        // Saved in version 2 with the band: the note goes, and the band comes back.
+        check->click();
+        band->selectAll();
+        QTest::keyClicks(band, QStringLiteral("0.015"));
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("plan.json"));
+        QVERIFY(editor.saveTo(path));
+        QVERIFY(!note->isVisible());
+        const auto saved = TestPlan::load(path, &error);
+        QVERIFY2(saved, qPrintable(error));
+        QCOMPARE(saved->loadedVersion, 2);
+        QCOMPARE(saved->steps[1].number("gyro_std_max_dps"), 0.02);
+        QCOMPARE(saved->steps[1].marginalOf("gyro_std_max_dps").value_or(-1), 0.015);
     }
 };
 

@@ -1,5 +1,6 @@
 #include "ui/station/plan_editor_dialog.h"
 
+#include <QCheckBox>
 #include <QCoreApplication>
 #include <QDialogButtonBox>
 #include <QDir>
@@ -21,6 +22,7 @@
 #include <QVBoxLayout>
 
 #include <cmath>
+#include <limits>
 
 namespace imudesk::ui {
 
@@ -54,6 +56,20 @@ QString number(double v)
     return QLocale().toString(v, 'g', 6);
 }
 
+// A spin box for a number of the catalogue: its range, unit and decimals.
+QDoubleSpinBox *numberSpin(const ParamSpec &spec, int decimals, double value, QWidget *parent)
+{
+    auto *spin = new QDoubleSpinBox(parent);
+    spin->setDecimals(decimals);
+    spin->setRange(spec.min, spec.max);
+    spin->setSingleStep(std::pow(10.0, -(decimals - 1)));
+    if (*spec.unit)
+        spin->setSuffix(QStringLiteral(" ") + QString::fromUtf8(spec.unit));
+    spin->setCorrectionMode(QAbstractSpinBox::CorrectToNearestValue);
+    spin->setValue(value);
+    return spin;
+}
+
 } // namespace
 
 PlanEditorDialog::PlanEditorDialog(TestPlan plan, QString path, QWidget *parent)
@@ -66,6 +82,10 @@ PlanEditorDialog::PlanEditorDialog(TestPlan plan, QString path, QWidget *parent)
     m_name = new QLineEdit(m_plan.name, this);
     m_name->setObjectName(QStringLiteral("planName"));
     m_nameLabel->setBuddy(m_name);
+    m_conversionNote = new QLabel(this);
+    m_conversionNote->setObjectName(QStringLiteral("conversionNote"));
+    m_conversionNote->setWordWrap(true);
+    m_conversionNote->setTextFormat(Qt::PlainText);
     connect(m_name, &QLineEdit::textEdited, this, [this](const QString &text) {
         m_plan.name = text;
         setModified();
@@ -165,6 +185,7 @@ PlanEditorDialog::PlanEditorDialog(TestPlan plan, QString path, QWidget *parent)
     nameRow->addWidget(m_name, 1);
     auto *layout = new QVBoxLayout(this);
     layout->addLayout(nameRow);
+    layout->addWidget(m_conversionNote);
     layout->addLayout(body, 1);
     layout->addWidget(m_buttons);
 
@@ -203,6 +224,7 @@ void PlanEditorDialog::retranslateUi()
     updateProblems();
     updateTitle();
     updateButtons();
+    updateConversionNote();
 }
 
 void PlanEditorDialog::changeEvent(QEvent *event)
@@ -319,21 +341,17 @@ void PlanEditorDialog::buildForm()
 QWidget *PlanEditorDialog::numberField(int step, const ParamSpec &spec)
 {
     const QString key = QString::fromLatin1(spec.key);
-    const double value = m_plan.steps[size_t(step)].number(spec.key);
+    const PlanStep &s = m_plan.steps[size_t(step)];
+    const double value = s.number(spec.key);
     const QString unit = QString::fromUtf8(spec.unit);
-    auto *spin = new QDoubleSpinBox(m_form);
+    // Enough decimals for the default, the least value, the value itself and its band, and one
+    // more to tighten a limit; at most 4 (0.0001 °/s is below any module's noise).
+    const int decimals = std::clamp(std::max({decimalsOf(spec.defaultValue), decimalsOf(spec.min), decimalsOf(value),
+                                              decimalsOf(s.marginalOf(spec.key).value_or(0))})
+                                        + 1,
+                                    1, 4);
+    auto *spin = numberSpin(spec, decimals, value, m_form);
     spin->setObjectName(QStringLiteral("param_") + key);
-    // Enough decimals for the default, the least value and the value itself, and one more to
-    // tighten a limit; at most 4 (0.0001 °/s is below any module's noise).
-    const int decimals = std::clamp(
-        std::max({decimalsOf(spec.defaultValue), decimalsOf(spec.min), decimalsOf(value)}) + 1, 1, 4);
-    spin->setDecimals(decimals);
-    spin->setRange(spec.min, spec.max);
-    spin->setSingleStep(std::pow(10.0, -(decimals - 1)));
-    if (!unit.isEmpty())
-        spin->setSuffix(QStringLiteral(" ") + unit);
-    spin->setCorrectionMode(QAbstractSpinBox::CorrectToNearestValue);
-    spin->setValue(value);
     const QString withUnit = unit.isEmpty() ? QString() : QStringLiteral(" ") + unit;
     spin->setToolTip(tr("%1\nFrom %2%4 to %3%4; default %5%4.")
                          .arg(planText(spec.tooltip), number(spec.min), number(spec.max), withUnit,
@@ -344,29 +362,87 @@ QWidget *PlanEditorDialog::numberField(int step, const ParamSpec &spec)
         m_plan.steps[size_t(step)].params[key] = v;
         setModified();
     });
+    watchTyped(spin, step, spec, key, false);
+    return spec.limit ? limitField(step, spec, spin) : spin;
+}
+
+QWidget *PlanEditorDialog::limitField(int step, const ParamSpec &spec, QDoubleSpinBox *limit)
+{
+    const QString key = QString::fromLatin1(spec.key);
+    const auto band = m_plan.steps[size_t(step)].marginalOf(spec.key);
+    auto *row = new QWidget(m_form);
+    row->setToolTip(limit->toolTip());
+    auto *layout = new QHBoxLayout(row);
+    layout->setContentsMargins(0, 0, 0, 0);
+    limit->setParent(row);
+    layout->addWidget(limit, 1);
+    auto *check = new QCheckBox(tr("Marginal band"), row);
+    check->setObjectName(QStringLiteral("marginalBand_") + key);
+    check->setToolTip(tr("Mark values close to the limit: they still pass, and the results say they were marginal"));
+    check->setChecked(band.has_value());
+    layout->addWidget(check);
+    // Without a band yet, one at four fifths of the limit is offered: checking the box gives a
+    // band that is valid at once.
+    auto *bandSpin = numberSpin(spec, limit->decimals(), band.value_or(limit->value() * 0.8), row);
+    bandSpin->setObjectName(QStringLiteral("marginal_") + key);
+    const QString unit = *spec.unit ? QStringLiteral(" ") + QString::fromUtf8(spec.unit) : QString();
+    bandSpin->setToolTip(tr("Values above this, up to the limit, pass marked marginal.\nFrom %1%3 to %2%3, below "
+                            "the limit.")
+                             .arg(number(spec.min), number(spec.max), unit));
+    bandSpin->setEnabled(check->isChecked());
+    layout->addWidget(bandSpin, 1);
+    row->setFocusProxy(limit);
+    connect(check, &QCheckBox::toggled, this, [this, step, key, bandSpin](bool on) {
+        if (step >= int(m_plan.steps.size()))
+            return;
+        bandSpin->setEnabled(on);
+        if (on) {
+            m_plan.steps[size_t(step)].marginal[key] = bandSpin->value();
+        } else {
+            m_plan.steps[size_t(step)].marginal.remove(key);
+            m_typedProblems.remove(QStringLiteral("marginal_") + key);
+        }
+        setModified();
+    });
+    connect(bandSpin, &QDoubleSpinBox::valueChanged, this, [this, step, key, check](double v) {
+        if (step >= int(m_plan.steps.size()) || !check->isChecked())
+            return;
+        m_plan.steps[size_t(step)].marginal[key] = v;
+        setModified(); // a band at or above the limit is listed by the plan's problems
+    });
+    watchTyped(bandSpin, step, spec, QStringLiteral("marginal_") + key, true);
+    return row;
+}
+
+void PlanEditorDialog::watchTyped(QDoubleSpinBox *spin, int step, const ParamSpec &spec, const QString &problemKey,
+                                  bool band)
+{
     // A value being typed outside the range is not taken by the spin box (it keeps the last
     // one, then corrects to the nearest limit): say so while it is typed.
-    if (auto *edit = spin->findChild<QLineEdit *>()) {
-        connect(edit, &QLineEdit::textChanged, this, [this, spin, step, key, spec] {
-            if (step >= int(m_plan.steps.size()))
-                return;
-            const StepKind kind = m_plan.steps[size_t(step)].kind;
-            const QString typed = spin->cleanText();
-            bool ok = false;
-            const double v = spin->locale().toDouble(typed, &ok);
-            QString why;
-            if (!ok)
-                why = tr("\"%1\" needs a number from %2 to %3").arg(key, number(spec.min), number(spec.max));
-            else
-                why = TestPlan::checkValue(kind, key, QVariant(v));
-            if (why.isEmpty())
-                m_typedProblems.remove(key);
-            else
-                m_typedProblems.insert(key, tr("step %1 (%2): %3").arg(step + 1).arg(TestPlan::key(kind), why));
-            updateProblems();
-        });
-    }
-    return spin;
+    auto *edit = spin->findChild<QLineEdit *>();
+    if (!edit)
+        return;
+    const QString key = QString::fromLatin1(spec.key);
+    connect(edit, &QLineEdit::textChanged, this, [this, spin, step, key, problemKey, spec, band] {
+        if (step >= int(m_plan.steps.size()))
+            return;
+        const StepKind kind = m_plan.steps[size_t(step)].kind;
+        const QString typed = spin->cleanText();
+        bool ok = false;
+        const double v = spin->locale().toDouble(typed, &ok);
+        QString why;
+        if (!ok)
+            why = tr("\"%1\" needs a number from %2 to %3").arg(key, number(spec.min), number(spec.max));
+        else if (band) // the range only: a band the box takes that is not below the limit is the plan's problem
+            why = TestPlan::checkMarginal(kind, key, QVariant(v), QVariant(std::numeric_limits<double>::infinity()));
+        else
+            why = TestPlan::checkValue(kind, key, QVariant(v));
+        if (why.isEmpty())
+            m_typedProblems.remove(problemKey);
+        else
+            m_typedProblems.insert(problemKey, tr("step %1 (%2): %3").arg(step + 1).arg(TestPlan::key(kind), why));
+        updateProblems();
+    });
 }
 
 QWidget *PlanEditorDialog::textField(int step, const ParamSpec &spec)
@@ -509,6 +585,13 @@ void PlanEditorDialog::updateTitle()
     setWindowTitle(tr("Test plan – %1 (%2)%3").arg(name, file, m_modified ? QStringLiteral(" *") : QString()));
 }
 
+void PlanEditorDialog::updateConversionNote()
+{
+    const QString note = m_plan.conversionNote();
+    m_conversionNote->setText(note);
+    m_conversionNote->setVisible(!note.isEmpty());
+}
+
 void PlanEditorDialog::updateButtons()
 {
     const int row = currentStep();
@@ -562,8 +645,10 @@ bool PlanEditorDialog::saveTo(const QString &path)
         return false;
     }
     m_plan = std::move(out);
+    m_plan.loadedVersion = TestPlan::kVersion; // written in the current format now
     m_path = QFileInfo(path).absoluteFilePath();
     m_modified = false;
+    updateConversionNote();
     buildForm(); // re-based paths, and "not found" problems judged from the new folder
     updateTitle();
     Q_EMIT saved(m_plan, m_path);

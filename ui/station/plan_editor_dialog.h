@@ -7,12 +7,17 @@
 // the plan from running (TestPlan::problems(), and a number being typed outside its range)
 // is listed under the form as it changes. Save (Ctrl+S) and Save as… write the JSON; a saved
 // plan is announced with saved(). Non-modal.
+//
+// A pass/fail limit (ParamSpec::limit) has beside it a "Marginal band" check box and a second
+// spin box for the band (plan format 2): values past the band, up to the limit, pass marked
+// marginal. A plan read in an older format says so above the steps (it is saved in the new one).
 #include "core/station/test_plan.h"
 
 #include <QDialog>
 #include <QMap>
 
 class QDialogButtonBox;
+class QDoubleSpinBox;
 class QLabel;
 class QLineEdit;
 class QListWidget;
@@ -64,6 +69,12 @@ private:
     QString stepItemText(int index) const;
     void buildForm();
     QWidget *numberField(int step, const station::ParamSpec &spec);
+    // The limit's spin box with its marginal band control beside it.
+    QWidget *limitField(int step, const station::ParamSpec &spec, QDoubleSpinBox *limit);
+    // Lists a value typed into `spin` that it will not take (out of range, not a number) under
+    // problemKey while it is typed; `band`: the spin box is a limit's marginal band.
+    void watchTyped(QDoubleSpinBox *spin, int step, const station::ParamSpec &spec, const QString &problemKey,
+                    bool band);
     QWidget *textField(int step, const station::ParamSpec &spec);
     void browse(int step, const QString &key, QLineEdit *edit);
     void addStep(station::StepKind kind);
@@ -74,6 +85,7 @@ private:
     void updateProblems();
     void updateTitle();
     void updateButtons();
+    void updateConversionNote();
     void showError(const QString &message);
     // A path relative to `dir` when the file is inside it, else absolute.
     static QString relativeIfInside(const QString &absolute, const QString &dir);
@@ -82,10 +94,11 @@ private:
     QString m_path;
     bool m_modified = false;
     bool m_filling = false;                // the list or the form is being filled, not edited
-    QMap<QString, QString> m_typedProblems; // key -> why, for the selected step's spin boxes
+    QMap<QString, QString> m_typedProblems; // key (marginal_<key>: a band) -> why, for the selected step's spin boxes
 
     QLabel *m_nameLabel = nullptr;
     QLineEdit *m_name = nullptr;
+    QLabel *m_conversionNote = nullptr; // a plan read in an older format: converted, saved in the new one
     QLabel *m_stepsLabel = nullptr;
     QListWidget *m_steps = nullptr;
     QPushButton *m_up = nullptr;
