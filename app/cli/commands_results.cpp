@@ -7,10 +7,13 @@
 #include "core/results/results_uploader.h"
 
 #include <QCommandLineParser>
+#include <QDir>
 #include <QFileInfo>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QSettings>
+#include <QStandardPaths>
 
 #include <cmath>
 
@@ -98,12 +101,24 @@ int cmdResults(const QStringList &args)
                                            QStringLiteral("setup")}.contains(what));
     if (!known)
         return fail(QStringLiteral("usage: %1").arg(kUsage), ExitUsage);
-    const QString server = p.value(QStringLiteral("results"));
+    // Without --db and --results: what the station window was set to (its line database, else
+    // results.sqlite in its report folder), unless this folder holds a results.sqlite.
+    const bool chosen = p.isSet(QStringLiteral("db")) || p.isSet(QStringLiteral("results"));
+    QSettings window(QStringLiteral("ImuDesk"), QStringLiteral("ImuDesk"));
+    const QString server = chosen || QFileInfo::exists(QStringLiteral("results.sqlite"))
+        ? p.value(QStringLiteral("results"))
+        : window.value(QStringLiteral("station/v1/lineDatabase")).toString();
     if (!server.isEmpty() && !results::ResultsStore::isServerUrl(server))
         return fail(QStringLiteral("--results wants a postgresql:// URL"), ExitUsage);
     if ((what == QLatin1String("upload") || what == QLatin1String("setup")) && server.isEmpty())
         return fail(QStringLiteral("%1 needs --results postgresql://...").arg(what), ExitUsage);
-    const QString db = p.isSet(QStringLiteral("db")) ? p.value(QStringLiteral("db")) : QStringLiteral("results.sqlite");
+    QString db = p.isSet(QStringLiteral("db")) ? p.value(QStringLiteral("db")) : QStringLiteral("results.sqlite");
+    if (!chosen && !QFileInfo::exists(db)) {
+        QString folder = window.value(QStringLiteral("station/v1/reportFolder")).toString();
+        if (folder.isEmpty())
+            folder = QDir(QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation)).filePath(QStringLiteral("ImuDesk/station"));
+        db = QDir(folder).filePath(QLatin1String(results::ResultsStore::kFileName));
+    }
     const bool fromServer = !server.isEmpty() && what != QLatin1String("upload");
     if (!fromServer && !QFileInfo::exists(db))
         return fail(QStringLiteral("no results database at %1: give its path with --db (a station writes results.sqlite "

@@ -154,20 +154,22 @@ int cmdStation(const QStringList &args)
     int waiting = 0;
     if (results::ResultsUploader *up = runner.uploader()) {
         // Give the uploader its chance to send the last modules; what it cannot send stays in
-        // the station's database and goes with the next run or `results upload`.
+        // the station's database and goes with the next run or `results upload`. The outbox
+        // itself says what is left (a pass that began before the last module was stored may
+        // report none).
         QEventLoop wait;
         QTimer deadline;
         deadline.setSingleShot(true);
         QObject::connect(&deadline, &QTimer::timeout, &wait, &QEventLoop::quit);
-        QObject::connect(up, &results::ResultsUploader::stateChanged, &wait, [&](int pending, bool connected) {
-            if (pending == 0 && connected)
+        QObject::connect(up, &results::ResultsUploader::stateChanged, &wait, [&] {
+            if (runner.resultsStore().pendingCount() == 0)
                 wait.quit();
         });
         up->kick();
         deadline.start(int(uploadWaitS * 1000));
-        if (!(up->pending() == 0 && up->connected() && up->uploadedCount() > 0))
+        if (runner.resultsStore().pendingCount() > 0)
             wait.exec();
-        waiting = up->pending();
+        waiting = runner.resultsStore().pendingCount();
         progressLine(waiting == 0 ? QStringLiteral("results: every result uploaded to %1")
                                         .arg(results::ResultsStore::displayLocation(up->options().server))
                                   : QStringLiteral("results: %1 results waiting to upload to %2 (kept in %3)")

@@ -367,7 +367,7 @@ std::optional<TestPlan> TestPlan::fromJson(const QByteArray &json, QString *erro
         return failWith(tr("not a station plan (\"format\" is not \"%1\")").arg(QLatin1String(kFormat)));
     const int version = root.value(QStringLiteral("version")).toInt(-1);
     if (version < 1 || version > kVersion)
-        return failWith(tr("plan version %1 is not supported (this ImuDesk reads version %2)")
+        return failWith(tr("plan version %1 is not supported (this ImuDesk reads versions 1 to %2)")
                             .arg(root.value(QStringLiteral("version")).toVariant().toString())
                             .arg(kVersion));
     TestPlan plan;

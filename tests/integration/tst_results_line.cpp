@@ -192,7 +192,7 @@ private Q_SLOTS:
         QVERIFY(done.wait(120000));
         QCOMPARE(runner.module(0).serial, QString::fromUtf8(evil));
         QVERIFY(runner.uploader());
-        QTRY_COMPARE_WITH_TIMEOUT(runner.uploader()->pending(), 0, 30000);
+        QTRY_COMPARE_WITH_TIMEOUT(runner.resultsStore().pendingCount(), 0, 30000); // the outbox itself
         ResultsStore server;
         QVERIFY2(server.open(m_pg.url(), &error), qPrintable(error));
         const auto a = server.history(QString::fromUtf8(evil));
@@ -376,7 +376,7 @@ private Q_SLOTS:
         QVERIFY(local.open(dir.filePath(QStringLiteral("results.sqlite")), &error));
         QCOMPARE(local.pendingCount(), 4);
         QVERIFY2(m_pg.start(&error), qPrintable(error));
-        QTRY_COMPARE_WITH_TIMEOUT(runner.uploader()->pending(), 0, 30000);
+        QTRY_COMPARE_WITH_TIMEOUT(runner.resultsStore().pendingCount(), 0, 30000); // the outbox itself
         const QString inPlan = QStringLiteral("FROM module m JOIN run r ON r.uuid = m.run_uuid WHERE r.plan_name = 'outage plan'");
         QCOMPARE(count(m_pg, QStringLiteral("SELECT COUNT(*) ") + inPlan), 4);
         // The same again by hand (`results upload`, and a batch whose answer was lost): once.
