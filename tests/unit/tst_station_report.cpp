@@ -50,7 +50,33 @@ class TestStationReport : public QObject {
 private Q_SLOTS:
     void namesWhatFailed();
     void writesPdfOrSaysWhy();
+    void marginalPassSaysSo();
 };
+
+// A module whose every step passed, one value inside its marginal band: the verdict reads
+// "pass (marginal)" and the value "marginal", the others "within".
+void TestStationReport::marginalPassSaysSo()
+{
+    auto m = failedModule();
+    m.verdict = Verdict::Pass;
+    m.steps[3].verdict = Verdict::Pass;
+    m.steps[3].detail = QStringLiteral("502 samples within every limit; marginal: gyro_std_x");
+    m.steps[3].values.clear();
+    station::Measurement noisy{QStringLiteral("gyro_std_x"), 0.045, QStringLiteral("°/s"), QStringLiteral("≤ 0.05 (marginal > 0.04)"),
+                               true, QStringLiteral("LE"), 0.05};
+    noisy.marginalHigh = 0.04;
+    noisy.marginal = true;
+    m.steps[3].values.push_back(noisy);
+    m.steps[3].values.push_back({QStringLiteral("gyro_bias_x"), 0.098, QStringLiteral("°/s"), QStringLiteral("|x| ≤ 0.5"), true});
+    QVERIFY(m.marginal());
+    QTextDocument doc;
+    doc.setHtml(ui::StationReport::html(m, station::TestPlan::example()));
+    const QString text = doc.toPlainText();
+    for (const char *want : {"pass (marginal)", "≤ 0.05 (marginal > 0.04)", "marginal", "within"})
+        QVERIFY2(text.contains(QString::fromUtf8(want)), want);
+    QVERIFY(!text.contains(QStringLiteral("outside")));
+    QVERIFY(!text.contains(QStringLiteral("Failed at")));
+}
 
 void TestStationReport::namesWhatFailed()
 {

@@ -47,7 +47,9 @@ QString StationReport::html(const station::ModuleResult &m, const station::TestP
     row(tr("Finished (UTC)"), timeText(m.finished));
     h += QStringLiteral("</table>");
     h += QStringLiteral("<h2>%1 <span style=\"color: %2;\">%3</span></h2>")
-             .arg(esc(tr("Verdict:")), colourOf(m.verdict), esc(station::verdictText(m.verdict)));
+             .arg(esc(tr("Verdict:")), colourOf(m.verdict),
+                  esc(m.verdict == Verdict::Pass && m.marginal() ? tr("%1 (marginal)").arg(station::verdictText(m.verdict))
+                                                                 : station::verdictText(m.verdict)));
     if (const QString f = m.failureSummary(); !f.isEmpty())
         h += QStringLiteral("<p>%1</p>").arg(esc(tr("Failed at %1").arg(f)));
 
@@ -66,11 +68,13 @@ QString StationReport::html(const station::ModuleResult &m, const station::TestP
                             "<th align=\"left\">%4</th></tr>")
                  .arg(esc(tr("Value")), esc(tr("Measured")), esc(tr("Limit")), esc(tr("Result")));
         for (const station::Measurement &v : s.values) {
-            const QString result = v.limit.isEmpty() ? QString() : v.ok ? tr("within") : tr("outside");
+            // A value inside its marginal band passes, in the colour of a warning.
+            const QString result = v.limit.isEmpty() ? QString() : !v.ok ? tr("outside") : v.marginal ? tr("marginal") : tr("within");
             h += QStringLiteral("<tr><td>%1</td><td align=\"right\">%2 %3</td><td>%4</td>"
                                 "<td style=\"color: %5;\">%6</td></tr>")
                      .arg(esc(v.name), esc(QString::number(v.value, 'g', 5)), esc(v.unit), esc(v.limit),
-                          v.ok ? colourOf(Verdict::Pass) : colourOf(Verdict::Fail), esc(result));
+                          !v.ok ? colourOf(Verdict::Fail) : v.marginal ? QStringLiteral("#b26a00") : colourOf(Verdict::Pass),
+                          esc(result));
         }
         h += QStringLiteral("</table>");
     }

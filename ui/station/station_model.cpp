@@ -113,7 +113,8 @@ QString StationModel::resultText(const ModuleResult &r)
             const QString value = QStringLiteral("%1 %2").arg(m.value, 0, 'g', 4).arg(m.unit).trimmed();
             lines << (m.limit.isEmpty() ? tr("    %1 = %2").arg(m.name, value)
                                         : tr("    %1 = %2 (limit %3)%4")
-                                              .arg(m.name, value, m.limit, m.ok ? QString() : tr(" ✗")));
+                                              .arg(m.name, value, m.limit,
+                                                   !m.ok ? tr(" ✗") : m.marginal ? tr(" (marginal)") : QString()));
         }
     }
     if (!r.reportPath.isEmpty())
@@ -126,7 +127,8 @@ StationModel::Row StationModel::rowFor(const ModuleResult &r)
     Row row;
     row.result = r;
     row.step = stepText(r);
-    row.verdictText = station::verdictText(r.verdict);
+    row.verdictText = r.verdict == Verdict::Pass && r.marginal() ? tr("%1 (marginal)").arg(station::verdictText(r.verdict))
+                                                                 : station::verdictText(r.verdict);
     row.failure = r.failureSummary();
     row.progressPermille = int(std::lround(std::clamp(r.progress, 0.0, 1.0) * 1000));
     row.toolTip = resultText(r);
