@@ -67,7 +67,7 @@
 <context>
     <name>imudesk::station::ModuleRunner</name>
     <message numerus="yes">
-        <location filename="../core/station/module_runner.cpp" line="+484"/>
+        <location filename="../core/station/module_runner.cpp" line="+506"/>
         <source>%n setting(s) applied and read back</source>
         <translation>
             <numerusform>%n setting applied and read back</numerusform>
@@ -109,6 +109,17 @@
     </message>
 </context>
 <context>
+    <name>imudesk::ui::LineDatabaseStatus</name>
+    <message numerus="yes">
+        <location filename="../ui/station/line_database_dialog.cpp" line="+217"/>
+        <source> · %n result(s) waiting to upload</source>
+        <translation>
+            <numerusform> · %n result waiting to upload</numerusform>
+            <numerusform> · %n results waiting to upload</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>imudesk::ui::MagCalibrationWizard</name>
     <message numerus="yes">
         <location filename="../ui/calibration/mag_calibration_wizard.cpp" line="+676"/>
@@ -139,6 +150,17 @@
     </message>
 </context>
 <context>
+    <name>imudesk::ui::ModuleHistoryView</name>
+    <message numerus="yes">
+        <location filename="../ui/results/module_history_view.cpp" line="+124"/>
+        <source>History of %1: %n attempt(s)</source>
+        <translation>
+            <numerusform>History of %1: %n attempt</numerusform>
+            <numerusform>History of %1: %n attempts</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>imudesk::ui::RawBytesView</name>
     <message numerus="yes">
         <location filename="../ui/workspace/raw_bytes_view.cpp" line="+196"/>
@@ -165,6 +187,25 @@
         <translation>
             <numerusform>%n frame</numerusform>
             <numerusform>%n frames</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>imudesk::ui::ResultsWindow</name>
+    <message numerus="yes">
+        <location filename="../ui/results/results_window.cpp" line="+424"/>
+        <source>The newest %n module(s) found; there are more: narrow the filter to see them.</source>
+        <translation>
+            <numerusform>The newest %n module found; there are more: narrow the filter to see them.</numerusform>
+            <numerusform>The newest %n modules found; there are more: narrow the filter to see them.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+3"/>
+        <source>%n module(s) found.</source>
+        <translation>
+            <numerusform>%n module found.</numerusform>
+            <numerusform>%n modules found.</numerusform>
         </translation>
     </message>
 </context>

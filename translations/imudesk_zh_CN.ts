@@ -2685,7 +2685,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>无法写入 %1：%2</translation>
     </message>
     <message>
-        <location filename="../core/record/mcap_group_recording.cpp" line="+52"/>
+        <location filename="../core/record/mcap_group_recording.cpp" line="+50"/>
         <source>Recording to %1 stopped: %2. Check the free disk space.</source>
         <translation>录制到 %1 已停止：%2。请检查剩余磁盘空间。</translation>
     </message>
@@ -4221,7 +4221,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::bridge::LiveBridge</name>
     <message>
-        <location filename="../core/bridge/live_bridge.cpp" line="+170"/>
+        <location filename="../core/bridge/live_bridge.cpp" line="+169"/>
         <source>Cannot listen on %1 port %2: %3</source>
         <translation>无法在 %1 的端口 %2 上监听：%3</translation>
     </message>
@@ -6483,30 +6483,78 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::results::ResultsStore</name>
     <message>
-        <location filename="../core/results/results_store.cpp" line="+98"/>
+        <location filename="../core/results/results_store.cpp" line="+219"/>
+        <source>Updating the results database %1 to schema %2 failed: %3</source>
+        <translation>将结果数据库 %1 升级到架构 %2 失败：%3</translation>
+    </message>
+    <message>
+        <location line="+32"/>
+        <source>Qt&apos;s PostgreSQL driver is not installed (on Debian: the package libqt6sql6-psql).</source>
+        <translation>未安装 Qt 的 PostgreSQL 驱动（Debian 上为软件包 libqt6sql6-psql）。</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>Qt&apos;s SQLite driver is not installed (on Debian: the package libqt6sql6-sqlite).</source>
         <translation>未安装 Qt 的 SQLite 驱动（Debian 上为软件包 libqt6sql6-sqlite）。</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+29"/>
         <source>Cannot open the results database %1: %2</source>
         <translation>无法打开结果数据库 %1：%2</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+12"/>
         <source>%1 was written by a newer ImuDesk (schema %2; this one knows %3): update ImuDesk to use it</source>
         <translation>%1 由更新版本的 ImuDesk 写入（模式 %2；本版本支持 %3）：请更新 ImuDesk 后再使用</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+7"/>
+        <source>The results database %1 has schema %2, this ImuDesk needs %3: have its owner run &quot;imudesk-cli results setup&quot; on it.</source>
+        <translation>结果数据库 %1 的架构为 %2，本 ImuDesk 需要 %3：请让其所有者对它运行 “imudesk-cli results setup”。</translation>
+    </message>
+    <message>
+        <location line="+21"/>
         <source>the results database is not open</source>
         <translation>结果数据库未打开</translation>
     </message>
     <message>
-        <location line="+5"/>
-        <location line="+64"/>
+        <location line="+11"/>
         <source>Storing the result of %1 in %2 failed: %3. It is still in the run folder.</source>
         <translation>将 %1 的结果存入 %2 失败：%3。结果仍保存在运行文件夹中。</translation>
+    </message>
+    <message>
+        <location line="+48"/>
+        <source>Storing results in %1 failed: %2. They are still in the run folder.</source>
+        <translation>将结果存入 %1 失败：%2。结果仍保存在运行文件夹中。</translation>
+    </message>
+    <message>
+        <location line="+321"/>
+        <source>Roles are a PostgreSQL server&apos;s; %1 is an SQLite file.</source>
+        <translation>角色属于 PostgreSQL 服务器；%1 是 SQLite 文件。</translation>
+    </message>
+</context>
+<context>
+    <name>imudesk::results::ResultsUploader</name>
+    <message>
+        <location filename="../core/results/results_uploader.cpp" line="+28"/>
+        <source>%1 is gone from the station; its record keeps the station&apos;s path</source>
+        <translation>%1 已不在测试站上；其记录保留测试站上的路径</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Cannot create %1 in the shared artifact folder: check that it is mounted and writable.</source>
+        <translation>无法在共享附件文件夹中创建 %1：请检查它已挂载且可写。</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <location line="+10"/>
+        <source>Cannot copy %1 to %2: check that the shared folder is mounted and has room.</source>
+        <translation>无法将 %1 复制到 %2：请检查共享文件夹已挂载且有足够空间。</translation>
+    </message>
+    <message>
+        <location line="-5"/>
+        <source>The copy of %1 in the shared folder does not match its SHA-256; it will be copied again.</source>
+        <translation>共享文件夹中 %1 的副本与其 SHA-256 不符；将重新复制。</translation>
     </message>
 </context>
 <context>
@@ -6688,7 +6736,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>无法读取模块的设置：%1</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+19"/>
         <source>updated from %1 to %2 and verified</source>
         <translation>已从 %1 升级到 %2 并校验通过</translation>
     </message>
@@ -6699,13 +6747,13 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
     <message>
         <location line="+1"/>
-        <location line="+211"/>
+        <location line="+232"/>
         <location line="+1"/>
         <source>(none)</source>
         <translation>（无）</translation>
     </message>
     <message>
-        <location line="-194"/>
+        <location line="-215"/>
         <source>could not connect to %1: %2</source>
         <translation>无法连接到 %1：%2</translation>
     </message>
@@ -6715,7 +6763,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>模块在“%1”期间断开（%2）：请检查其线缆；其他模块继续测试</translation>
     </message>
     <message>
-        <location line="+88"/>
+        <location line="+87"/>
+        <source>%1; marginal: %2</source>
+        <translation>%1；临界：%2</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>not run: &quot;%1&quot; failed</source>
         <translation>未运行：“%1”失败</translation>
     </message>
@@ -6730,7 +6783,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>已由操作员取消</translation>
     </message>
     <message>
-        <location line="+58"/>
+        <location line="+33"/>
+        <source>%1 (marginal &gt; %2)</source>
+        <translation>%1（临界 &gt; %2）</translation>
+    </message>
+    <message>
+        <location line="+39"/>
         <source>%1, firmware %2, serial %3</source>
         <translation>%1，固件 %2，序列号 %3</translation>
     </message>
@@ -6844,12 +6902,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>“%2”期间 %1 s 未收到模块数据：模块输出是否已开启？是否仍在连接中？</translation>
     </message>
     <message>
-        <location line="+36"/>
+        <location line="+38"/>
         <source>only %1 samples in %2 s: enable the module&apos;s output (HI91, at least 10 Hz)</source>
         <translation>%2 s 内仅有 %1 个样本：请开启模块的输出（HI91，至少 10 Hz）</translation>
     </message>
     <message>
-        <location line="+60"/>
+        <location line="+59"/>
         <source>%1 samples within every limit</source>
         <translation>%1 个样本，均在限值内</translation>
     </message>
@@ -6864,7 +6922,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>%1 s 的数据不足以达到 τ = %2 s：请至少测量 %3 s</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+9"/>
         <source>σ(%1 s) of each gyro axis</source>
         <translation>陀螺仪各轴的 σ(%1 s)</translation>
     </message>
@@ -6912,7 +6970,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::station::RunFolder</name>
     <message>
-        <location filename="../core/station/run_folder.cpp" line="+34"/>
+        <location filename="../core/station/run_folder.cpp" line="+35"/>
         <source>cannot write %1: %2. Free some space or choose another report folder.</source>
         <translation>无法写入 %1：%2。请释放一些空间或选择其他报告文件夹。</translation>
     </message>
@@ -6926,11 +6984,16 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <source>%1 holds a run of another plan; choose a new folder so that results stay comparable</source>
         <translation>%1 中已有其他测试计划的运行结果；请选择新文件夹，以保证结果可比</translation>
     </message>
+    <message>
+        <location line="+99"/>
+        <source>Cannot write %1: %2. The result is in the results database and the summaries.</source>
+        <translation>无法写入 %1：%2。结果已保存在结果数据库和汇总文件中。</translation>
+    </message>
 </context>
 <context>
     <name>imudesk::station::TestPlan</name>
     <message>
-        <location filename="../core/station/test_plan.cpp" line="+77"/>
+        <location filename="../core/station/test_plan.cpp" line="+98"/>
         <source>Identify</source>
         <translation>识别</translation>
     </message>
@@ -7091,14 +7154,14 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
     <message>
         <location line="+6"/>
-        <location line="+19"/>
+        <location line="+20"/>
         <location line="+21"/>
         <location line="+18"/>
         <source>Duration</source>
         <translation>时长</translation>
     </message>
     <message>
-        <location line="-57"/>
+        <location line="-58"/>
         <source>How long the module is measured at rest</source>
         <translation>模块静止测量的时长</translation>
     </message>
@@ -7123,7 +7186,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>静止时陀螺仪各轴均值绝对值的最大允许值</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>Accelerometer noise max</source>
         <translation>加速度计噪声上限</translation>
     </message>
@@ -7235,11 +7298,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
     <message>
         <location line="+61"/>
+        <location line="+26"/>
         <source>%1 has no parameter &quot;%2&quot;</source>
         <translation>%1 没有参数“%2”</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="-23"/>
         <source>&quot;%1&quot; must be a text</source>
         <translation>“%1”必须是文本</translation>
     </message>
@@ -7259,7 +7323,32 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>“%1” = %2 超出 %3 … %4 %5</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+11"/>
+        <source>&quot;%1&quot; is not a limit: it has no marginal band</source>
+        <translation>“%1”不是限值：没有临界区间</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>&quot;%1&quot;: &quot;marginal_high&quot; must be a number</source>
+        <translation>“%1”：“marginal_high”必须是数字</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>&quot;%1&quot;: &quot;marginal_high&quot; = %2 is outside %3 … %4%5</source>
+        <translation>“%1”：“marginal_high” = %2 超出 %3 … %4%5</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>&quot;%1&quot;: &quot;marginal_high&quot; = %2%4 is not below the limit %3%4</source>
+        <translation>“%1”：“marginal_high” = %2%4 不低于限值 %3%4</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>This plan was written in format version %1; it is converted to version %2 and will be saved as version %2.</source>
+        <translation>此测试计划以格式版本 %1 编写；已转换为版本 %2，并将以版本 %2 保存。</translation>
+    </message>
+    <message>
+        <location line="+14"/>
         <source>the plan is larger than %1 KiB</source>
         <translation>测试计划大于 %1 KiB</translation>
     </message>
@@ -7275,17 +7364,17 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
     <message>
         <location line="+3"/>
-        <source>plan version %1 is not supported (this ImuDesk reads version %2)</source>
-        <translation>不支持测试计划版本 %1（本 ImuDesk 读取版本 %2）</translation>
+        <source>plan version %1 is not supported (this ImuDesk reads versions 1 to %2)</source>
+        <translation>不支持测试计划版本 %1（本 ImuDesk 读取版本 1 至 %2）</translation>
     </message>
     <message>
-        <location line="+7"/>
-        <location line="+86"/>
+        <location line="+8"/>
+        <location line="+118"/>
         <source>the plan has no steps</source>
         <translation>测试计划中没有步骤</translation>
     </message>
     <message>
-        <location line="-80"/>
+        <location line="-112"/>
         <source>step %1: unknown step &quot;%2&quot;</source>
         <translation>步骤 %1：未知步骤“%2”</translation>
     </message>
@@ -7295,13 +7384,25 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>步骤 %1（%2）：&quot;enabled&quot; 必须为 true 或 false</translation>
     </message>
     <message>
-        <location line="+6"/>
-        <location line="+72"/>
+        <location line="+13"/>
+        <source>step %1 (%2): &quot;%3&quot; has an unknown field &quot;%4&quot; (a limit is a number or {&quot;high&quot;: …, &quot;marginal_high&quot;: …})</source>
+        <translation>步骤 %1（%2）：“%3”含有未知字段“%4”（限值应为数字或 {&quot;high&quot;: …, &quot;marginal_high&quot;: …}）</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>step %1 (%2): &quot;%3&quot; has no &quot;high&quot; (the limit itself)</source>
+        <translation>步骤 %1（%2）：“%3”缺少“high”（限值本身）</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <location line="+3"/>
+        <location line="+80"/>
+        <location line="+4"/>
         <source>step %1 (%2): %3</source>
         <translation>步骤 %1（%2）：%3</translation>
     </message>
     <message>
-        <location line="-38"/>
+        <location line="-42"/>
         <source>cannot open %1: %2</source>
         <translation>无法打开 %1：%2</translation>
     </message>
@@ -7311,7 +7412,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>无法写入 %1：%2。请选择其他文件夹或释放一些空间。</translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+34"/>
         <source>step %1 (%2): no %3 file given</source>
         <translation>步骤 %1（%2）：未指定 %3 文件</translation>
     </message>
@@ -7324,7 +7425,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::station::Verdict</name>
     <message>
-        <location filename="../core/station/station_result.cpp" line="+23"/>
+        <location filename="../core/station/station_result.cpp" line="+24"/>
         <source>waiting</source>
         <translation>等待中</translation>
     </message>
@@ -10714,9 +10815,119 @@ Method: %3</source>
     </message>
 </context>
 <context>
+    <name>imudesk::ui::LineDatabaseDialog</name>
+    <message>
+        <location filename="../ui/station/line_database_dialog.cpp" line="+91"/>
+        <source>Line database</source>
+        <translation>产线数据库</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Every module this station tests is stored in its own database first (results.sqlite in the report folder); with a line database set, the station also sends each result there, and keeps it until the server has it.</source>
+        <translation>本测试台测试的每个模块都会先存入自己的数据库（报告文件夹中的 results.sqlite）；设置产线数据库后，测试台还会把每个结果发送到那里，并在服务器收到之前一直保留。</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Server:</source>
+        <translation>服务器：</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The line&apos;s PostgreSQL database: postgresql://user@host[:port]/database. Empty: none. A password typed here (user:password@host) is stored with the station&apos;s settings as typed; put it into ~/.pgpass instead, which PostgreSQL reads by itself.</source>
+        <translation>产线的 PostgreSQL 数据库：postgresql://用户@主机[:端口]/数据库。留空：不使用。在此输入的密码（用户:密码@主机）会原样保存在测试台的设置中；请改为写入 ~/.pgpass，PostgreSQL 会自行读取。</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Shared artifact folder:</source>
+        <translation>共享附件文件夹：</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A folder every station and the office can reach (a network share): each module&apos;s PDF report and recording are copied there, checked against their SHA-256, and the line database records that copy. Empty: the files stay on this station.</source>
+        <translation>每个测试台和办公室都能访问的文件夹（网络共享）：每个模块的 PDF 报告和录制文件会复制到这里，并用 SHA-256 校验，产线数据库记录这份副本。留空：文件只保留在本测试台。</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Browse…</source>
+        <translation>浏览…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Test connection</source>
+        <translation>测试连接</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Connect to the server now, as the station will (a fresh database gets ImuDesk&apos;s tables)</source>
+        <translation>现在按测试台的方式连接服务器（全新的数据库会创建 ImuDesk 的数据表）</translation>
+    </message>
+    <message>
+        <location line="+29"/>
+        <source>A line database is a PostgreSQL server: its address starts with postgresql://</source>
+        <translation>产线数据库是 PostgreSQL 服务器：地址以 postgresql:// 开头</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The password is stored with the station&apos;s settings as typed; ~/.pgpass keeps it out of them.</source>
+        <translation>密码会原样保存在测试台的设置中；写入 ~/.pgpass 可避免这一点。</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Shared artifact folder</source>
+        <translation>共享附件文件夹</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Connecting to %1…</source>
+        <translation>正在连接 %1…</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>Connected: schema %1</source>
+        <translation>已连接：数据库结构版本 %1</translation>
+    </message>
+</context>
+<context>
+    <name>imudesk::ui::LineDatabaseStatus</name>
+    <message>
+        <location line="+33"/>
+        <source> · connecting to the line database…</source>
+        <translation> · 正在连接产线数据库…</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source> · upload failing: %1</source>
+        <translation> · 上传失败：%1</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+2"/>
+        <source> · %n result(s) waiting to upload</source>
+        <translation>
+            <numerusform> · %n 个结果等待上传</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source> · every result uploaded</source>
+        <translation> · 所有结果均已上传</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Uploading to %1 fails: %2
+The results wait in this station&apos;s database and go as soon as the server answers; nothing is lost.</source>
+        <translation>上传到 %1 失败：%2
+结果暂存在本测试台的数据库中，服务器一有响应就会发送；不会丢失任何数据。</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Results go to the line database %1.</source>
+        <translation>结果会发送到产线数据库 %1。</translation>
+    </message>
+</context>
+<context>
     <name>imudesk::ui::LiveBridgeDialog</name>
     <message>
-        <location filename="../ui/bridge/live_bridge_dialog.cpp" line="+148"/>
+        <location filename="../ui/bridge/live_bridge_dialog.cpp" line="+150"/>
         <source>Live bridge</source>
         <translation>实时桥接</translation>
     </message>
@@ -10801,7 +11012,7 @@ Method: %3</source>
         <translation>警告：%1 不仅限本机。网络上能访问它的任何人都可以读取设备数据：该协议没有密码。</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+7"/>
         <source>&amp;Stop</source>
         <translation>停止(&amp;S)</translation>
     </message>
@@ -11362,12 +11573,12 @@ Samples: %3</source>
 <context>
     <name>imudesk::ui::MainWindow</name>
     <message>
-        <location filename="../ui/workspace/main_window.cpp" line="+398"/>
+        <location filename="../ui/workspace/main_window.cpp" line="+399"/>
         <source>Choose a port first.</source>
         <translation>请先选择串口。</translation>
     </message>
     <message>
-        <location line="+89"/>
+        <location line="+103"/>
         <source>ImuDesk</source>
         <translation>ImuDesk</translation>
     </message>
@@ -11377,12 +11588,12 @@ Samples: %3</source>
         <translation>关于 ImuDesk</translation>
     </message>
     <message>
-        <location line="-144"/>
+        <location line="-158"/>
         <source>No device family simulates &quot;%1&quot;.</source>
         <translation>没有设备系列能模拟“%1”。</translation>
     </message>
     <message>
-        <location line="+145"/>
+        <location line="+159"/>
         <source>&lt;h3&gt;ImuDesk %1&lt;/h3&gt;&lt;p&gt;A bench tool for IMU, AHRS and compass modules on serial, RS-485 Modbus and CAN links: live values and charts, settings, calibration, firmware updates, recordings and simulated devices.&lt;/p&gt;&lt;p&gt;Built with Qt %2.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;ImuDesk %1&lt;/h3&gt;&lt;p&gt;面向串口、RS-485 Modbus 和 CAN 链路上的 IMU、AHRS 与罗盘模块的台架工具：实时数值与曲线、设置、校准、固件升级、记录以及模拟设备。&lt;/p&gt;&lt;p&gt;基于 Qt %2 构建。&lt;/p&gt;</translation>
     </message>
@@ -11417,7 +11628,7 @@ Samples: %3</source>
         <translation>PNG 图像 (*.png)</translation>
     </message>
     <message>
-        <location line="+136"/>
+        <location line="+142"/>
         <source>&amp;File</source>
         <translation>文件(&amp;F)</translation>
     </message>
@@ -11588,6 +11799,16 @@ Samples: %3</source>
     </message>
     <message>
         <location line="+1"/>
+        <source>&amp;Results…</source>
+        <translation>测试结果(&amp;R)…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Every module the station tested: search by serial number, each attempt&apos;s measurements, the yield and a measurement&apos;s trend with Cpk</source>
+        <translation>测试台测试过的每个模块：按序列号搜索、每次尝试的测量项、良率，以及某一测量项的趋势和 Cpk</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>&amp;Reset layout</source>
         <translation>重置布局(&amp;R)</translation>
     </message>
@@ -11808,6 +12029,184 @@ Samples: %3</source>
     </message>
 </context>
 <context>
+    <name>imudesk::ui::ModuleHistoryView</name>
+    <message>
+        <location filename="../ui/results/module_history_view.cpp" line="+100"/>
+        <source>Attempt, step, measurement</source>
+        <translation>尝试、步骤、测量项</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Value</source>
+        <translation>数值</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Unit</source>
+        <translation>单位</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Limits</source>
+        <translation>限值</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Marginal band</source>
+        <translation>临界区间</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Outcome</source>
+        <translation>结果</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A pass whose value lies beyond this band, but inside its limits, is marked marginal</source>
+        <translation>数值超出此范围但仍在限值内的通过结果标记为临界</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Attempt</source>
+        <translation>尝试次数</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Kind</source>
+        <translation>类型</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>File</source>
+        <translation>文件</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Files:</source>
+        <translation>文件：</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Open</source>
+        <translation>打开</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Open the chosen file (the PDF report, the evidence recording) in the desktop&apos;s application for it</source>
+        <translation>用桌面上的相应程序打开所选文件（PDF 报告、证据录制文件）</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Select a module above to see every attempt of its serial number.</source>
+        <translation>在上方选择一个模块，即可查看该序列号的每一次尝试。</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+4"/>
+        <source>History of %1: %n attempt(s)</source>
+        <translation>
+            <numerusform>%1 的历史：%n 次尝试</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+36"/>
+        <source>Attempt %1 · %2</source>
+        <translation>第 %1 次尝试 · %2</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Plan: %1
+Station: %2 · slot %3 · operator %4
+Product: %5 · firmware %6
+Finished: %7
+Record: %8</source>
+        <translation>测试计划：%1
+测试台：%2 · 工位 %3 · 操作员 %4
+产品：%5 · 固件 %6
+结束：%7
+记录：%8</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>skipped</source>
+        <translation>已跳过</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>for information</source>
+        <translation>仅供参考</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The value&apos;s magnitude is compared with the limit</source>
+        <translation>以数值的绝对值与限值比较</translation>
+    </message>
+    <message>
+        <location line="+26"/>
+        <source>PDF report</source>
+        <translation>PDF 报告</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Recording</source>
+        <translation>录制文件</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1
+SHA-256: %2</source>
+        <translation>%1
+SHA-256：%2</translation>
+    </message>
+</context>
+<context>
+    <name>imudesk::ui::ModuleTableModel</name>
+    <message>
+        <location filename="../ui/results/module_table_model.cpp" line="+108"/>
+        <source>Started</source>
+        <translation>开始时间</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Serial number</source>
+        <translation>序列号</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Outcome</source>
+        <translation>结果</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Plan</source>
+        <translation>测试计划</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Station</source>
+        <translation>测试台</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Slot</source>
+        <translation>工位</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Product</source>
+        <translation>产品</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Firmware</source>
+        <translation>固件</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Attempt</source>
+        <translation>尝试次数</translation>
+    </message>
+</context>
+<context>
     <name>imudesk::ui::MountingPicker</name>
     <message>
         <location filename="../ui/configuration/mounting_picker.cpp" line="+28"/>
@@ -11876,7 +12275,7 @@ Samples: %3</source>
 <context>
     <name>imudesk::ui::PlanEditorDialog</name>
     <message>
-        <location filename="../ui/station/plan_editor_dialog.cpp" line="+178"/>
+        <location filename="../ui/station/plan_editor_dialog.cpp" line="+199"/>
         <source>Plan &amp;name:</source>
         <translation>计划名称(&amp;N)：</translation>
     </message>
@@ -11951,7 +12350,7 @@ Samples: %3</source>
         <translation>将测试计划写入另一个文件；其引用的文件路径随之调整</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+22"/>
         <source>The plan has changes that are not saved.</source>
         <translation>测试计划有未保存的更改。</translation>
     </message>
@@ -11991,24 +12390,41 @@ Samples: %3</source>
         <translation>%1：</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+23"/>
         <source>%1
 From %2%4 to %3%4; default %5%4.</source>
         <translation>%1
 范围 %2%4 至 %3%4；默认 %5%4。</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+23"/>
+        <source>Marginal band</source>
+        <translation>临界区间</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Mark values close to the limit: they still pass, and the results say they were marginal</source>
+        <translation>标记接近限值的数值：它们仍判为通过，但结果中注明为临界</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Values above this, up to the limit, pass marked marginal.
+From %1%3 to %2%3, below the limit.</source>
+        <translation>高于此值且不超过限值的数值判为通过，并标记为临界。
+范围 %1%3 至 %2%3，须低于限值。</translation>
+    </message>
+    <message>
+        <location line="+46"/>
         <source>&quot;%1&quot; needs a number from %2 to %3</source>
         <translation>“%1”需要 %2 至 %3 之间的数值</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+8"/>
         <source>step %1 (%2): %3</source>
         <translation>步骤 %1（%2）：%3</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+13"/>
         <source>%1
 Default: %2</source>
         <translation>%1
@@ -12065,7 +12481,7 @@ Default: %2</source>
         <translation>测试计划 – %1（%2）%3</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+33"/>
         <source>Save test plan</source>
         <translation>保存测试计划</translation>
     </message>
@@ -12075,7 +12491,7 @@ Default: %2</source>
         <translation>测试计划 (*.json)</translation>
     </message>
     <message>
-        <location line="+41"/>
+        <location line="+43"/>
         <source>Test plan</source>
         <translation>测试计划</translation>
     </message>
@@ -12669,6 +13085,248 @@ Default: %2</source>
     </message>
 </context>
 <context>
+    <name>imudesk::ui::ResultsFormat</name>
+    <message>
+        <location filename="../ui/results/results_format.cpp" line="+13"/>
+        <source>PASS (marginal)</source>
+        <translation>通过（临界）</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>PASS</source>
+        <translation>通过</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>FAIL</source>
+        <translation>失败</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>ERROR</source>
+        <translation>错误</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>ABORTED</source>
+        <translation>中止</translation>
+    </message>
+</context>
+<context>
+    <name>imudesk::ui::ResultsWindow</name>
+    <message>
+        <location filename="../ui/results/results_window.cpp" line="+308"/>
+        <source>Results</source>
+        <translation>测试结果</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Database:</source>
+        <translation>数据库：</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Open…</source>
+        <translation>打开…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Read another results file (an SQLite file a station wrote: results.sqlite)</source>
+        <translation>读取另一个结果文件（测试台写入的 SQLite 文件：results.sqlite）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Serial:</source>
+        <translation>序列号：</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>part of a serial number</source>
+        <translation>序列号的一部分</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Modules whose serial number contains this text, as it is written</source>
+        <translation>序列号中包含此文本（按原样匹配）的模块</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Plan:</source>
+        <translation>测试计划：</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Station:</source>
+        <translation>测试台：</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Any</source>
+        <translation>全部</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>From</source>
+        <translation>从</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Only modules started on this day or later (also for the yield and the trend)</source>
+        <translation>仅包括在此日期或之后开始的模块（良率和趋势也按此筛选）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>To</source>
+        <translation>至</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Only modules started on this day or earlier (also for the trend)</source>
+        <translation>仅包括在此日期或之前开始的模块（趋势也按此筛选）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Search</source>
+        <translation>搜索</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>List the modules that match the filter, and count the yield of its plan (Enter)</source>
+        <translation>列出符合筛选条件的模块，并统计其测试计划的良率 (Enter)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+95"/>
+        <source>Reading the results database…</source>
+        <translation>正在读取结果数据库…</translation>
+    </message>
+    <message>
+        <location line="-94"/>
+        <source>Modules</source>
+        <translation>模块</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The modules found; select one to see every attempt of its serial number</source>
+        <translation>找到的模块；选择一个即可查看该序列号的每一次尝试</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Yield</source>
+        <translation>良率</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Pass, fail and yield of the chosen plan, per firmware and fixture slot</source>
+        <translation>所选测试计划的通过数、失败数和良率，按固件和夹具工位统计</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Trend</source>
+        <translation>趋势</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>One measurement of the chosen plan over time, with its limits and Cpk</source>
+        <translation>所选测试计划中某一测量项随时间的变化，含限值和 Cpk</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <location line="+242"/>
+        <source>Choose a plan in the filter above: the yield is counted per plan.</source>
+        <translation>请在上方筛选栏中选择测试计划：良率按测试计划统计。</translation>
+    </message>
+    <message>
+        <location line="-241"/>
+        <location line="+261"/>
+        <source>Choose a plan in the filter above to see its measurements over time.</source>
+        <translation>请在上方筛选栏中选择测试计划，以查看其测量项随时间的变化。</translation>
+    </message>
+    <message>
+        <location line="-215"/>
+        <source>Open a results database</source>
+        <translation>打开结果数据库</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Results databases (*.sqlite *.db);;All files (*)</source>
+        <translation>结果数据库 (*.sqlite *.db);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>none</source>
+        <translation>无</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>the line database, %1</source>
+        <translation>产线数据库，%1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the file %1</source>
+        <translation>文件 %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>this station&apos;s database, %1</source>
+        <translation>本测试台的数据库，%1</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+24"/>
+        <source>The newest %n module(s) found; there are more: narrow the filter to see them.</source>
+        <translation>
+            <numerusform>显示最新的 %n 个模块；还有更多：请缩小筛选范围以查看。</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+3"/>
+        <source>%n module(s) found.</source>
+        <translation>
+            <numerusform>找到 %n 个模块。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>The line database %1 could not be read: %2
+Check the network and that the server runs, then press Search to try again; or read this station&apos;s own file with Open….</source>
+        <translation>无法读取产线数据库 %1：%2
+请检查网络以及服务器是否在运行，然后按“搜索”重试；或用“打开…”读取本测试台自己的文件。</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1 could not be read: %2
+Is it a results database that ImuDesk wrote? Choose another file with Open….</source>
+        <translation>无法读取 %1：%2
+它是 ImuDesk 写入的结果数据库吗？请用“打开…”选择其他文件。</translation>
+    </message>
+    <message>
+        <location line="+72"/>
+        <source>There are no results in %1 yet: the station writes this file with its first run. Open another file with Open…, or set the line database in the station window.</source>
+        <translation>%1 中还没有结果：测试台在第一次运行时才会写入此文件。请用“打开…”打开其他文件，或在测试台窗口中设置产线数据库。</translation>
+    </message>
+    <message>
+        <location line="+43"/>
+        <source>Reading the history of %1…</source>
+        <translation>正在读取 %1 的历史…</translation>
+    </message>
+    <message>
+        <location line="+58"/>
+        <source>The plan&apos;s modules have no measurements here.</source>
+        <translation>此测试计划的模块在这里没有测量项。</translation>
+    </message>
+    <message>
+        <location line="+27"/>
+        <source>%1 is not on this computer (it may be on the station that tested the module, or moved). Look for it in that station&apos;s report folder or in the shared artifact folder.</source>
+        <translation>%1 不在这台计算机上（可能在测试该模块的测试台上，或已被移动）。请在该测试台的报告文件夹或共享附件文件夹中查找。</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>%1 could not be opened: no application on this computer opens it. Open it from the file manager instead.</source>
+        <translation>无法打开 %1：这台计算机上没有能打开它的程序。请改从文件管理器中打开。</translation>
+    </message>
+</context>
+<context>
     <name>imudesk::ui::RotationGuide</name>
     <message>
         <location filename="../ui/calibration/rotation_guide.cpp" line="+119"/>
@@ -12952,14 +13610,24 @@ Default: %2</source>
         <translation>    %1 = %2（限值 %3）%4</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source> ✗</source>
         <translation> ✗</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source> (marginal)</source>
+        <translation>（临界）</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Report: %1</source>
         <translation>报告：%1</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>%1 (marginal)</source>
+        <translation>%1（临界）</translation>
     </message>
 </context>
 <context>
@@ -13030,7 +13698,12 @@ Default: %2</source>
         <translation>结论：</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+1"/>
+        <source>%1 (marginal)</source>
+        <translation>%1（临界）</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>Failed at %1</source>
         <translation>失败步骤：%1</translation>
     </message>
@@ -13060,7 +13733,7 @@ Default: %2</source>
         <translation>结果</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>within</source>
         <translation>在限值内</translation>
     </message>
@@ -13070,7 +13743,12 @@ Default: %2</source>
         <translation>超出限值</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+0"/>
+        <source>marginal</source>
+        <translation>临界</translation>
+    </message>
+    <message>
+        <location line="+11"/>
         <source>Evidence recording: %1</source>
         <translation>证据记录：%1</translation>
     </message>
@@ -13146,13 +13824,13 @@ Default: %2</source>
 <context>
     <name>imudesk::ui::StationView</name>
     <message>
-        <location filename="../ui/station/station_view.cpp" line="+252"/>
-        <location line="+75"/>
+        <location filename="../ui/station/station_view.cpp" line="+270"/>
+        <location line="+78"/>
         <source>Production station</source>
         <translation>生产测试台</translation>
     </message>
     <message>
-        <location line="-74"/>
+        <location line="-77"/>
         <source>Plan:</source>
         <translation>测试计划：</translation>
     </message>
@@ -13238,6 +13916,16 @@ Default: %2</source>
     </message>
     <message>
         <location line="+1"/>
+        <source>Line database…</source>
+        <translation>产线数据库…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Send every result to the line&apos;s PostgreSQL database too, and copy the reports to a shared folder</source>
+        <translation>同时把每个结果发送到产线的 PostgreSQL 数据库，并把报告复制到共享文件夹</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Start</source>
         <translation>开始</translation>
     </message>
@@ -13403,7 +14091,7 @@ Default: %2</source>
         <translation>模块数量：</translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+47"/>
         <source>Folder for the station&apos;s reports</source>
         <translation>生产测试台的报告文件夹</translation>
     </message>
@@ -13432,7 +14120,7 @@ Edit it (Edit…) and start again.</source>
         <translation>报告文件夹无法使用：%1</translation>
     </message>
     <message>
-        <location line="+67"/>
+        <location line="+74"/>
         <source>A report could not be written:
 %1</source>
         <translation>无法写入报告：
@@ -13797,6 +14485,61 @@ Edit it (Edit…) and start again.</source>
     </message>
 </context>
 <context>
+    <name>imudesk::ui::TrendView</name>
+    <message>
+        <location filename="../ui/results/trend_view.cpp" line="+113"/>
+        <source>Measurement:</source>
+        <translation>测量项：</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Pass</source>
+        <translation>通过</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Fail</source>
+        <translation>失败</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+1"/>
+        <source>Limits</source>
+        <translation>限值</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+1"/>
+        <source>Marginal band</source>
+        <translation>临界区间</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Module started</source>
+        <translation>模块开始测试时间</translation>
+    </message>
+    <message>
+        <location line="+137"/>
+        <source>No values of this measurement in the time chosen.</source>
+        <translation>所选时间内没有该测量项的数值。</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>n = %1 · mean = %2 · σ = %3 · Cpk = %4</source>
+        <translation>n = %1 · 均值 = %2 · σ = %3 · Cpk = %4</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Cpk, the process capability index: how far the mean lies from the nearer limit, in units of three standard deviations: min(USL − mean, mean − LSL) / 3σ, against the latest module&apos;s limits (%1). 1.33 or more is commonly asked for; below 1, some modules will fail. &quot;–&quot;: no limit, or no spread (fewer than two values, or all equal).</source>
+        <translation>Cpk（过程能力指数）：均值距较近限值的距离，以三倍标准差为单位：min(USL − 均值, 均值 − LSL) / 3σ，按最新模块的限值（%1）计算。通常要求 1.33 以上；低于 1 时会有部分模块不合格。“–”：没有限值，或没有离散（少于两个数值，或全部相等）。</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>none</source>
+        <translation>无</translation>
+    </message>
+</context>
+<context>
     <name>imudesk::ui::TurnGauge</name>
     <message>
         <location filename="../ui/calibration/turn_gauge.cpp" line="+78"/>
@@ -14148,6 +14891,90 @@ Edit it (Edit…) and start again.</source>
         <location filename="../ui/common/window_helpers.cpp" line="+31"/>
         <source>Could not save the screenshot to %1: %2</source>
         <translation>无法将截图保存到 %1：%2</translation>
+    </message>
+</context>
+<context>
+    <name>imudesk::ui::YieldView</name>
+    <message>
+        <location filename="../ui/results/yield_view.cpp" line="+54"/>
+        <source>Modules</source>
+        <translation>模块</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Pass</source>
+        <translation>通过</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Fail</source>
+        <translation>失败</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Marginal</source>
+        <translation>临界</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Error</source>
+        <translation>错误</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Aborted</source>
+        <translation>中止</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Yield</source>
+        <translation>良率</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Passed, with a value beyond its marginal band (counted among the passes too)</source>
+        <translation>通过，但有数值超出临界带（同时计入通过数）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Pass / (pass + fail)</source>
+        <translation>通过 / (通过 + 失败)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>ERROR (the equipment failed: a port went away, a module did not answer) and ABORTED (the operator cancelled) are not counted in the yield: yield = pass / (pass + fail).</source>
+        <translation>错误（设备故障：串口断开、模块无应答）和中止（操作员取消）不计入良率：良率 = 通过 / (通过 + 失败)。</translation>
+    </message>
+    <message>
+        <location line="+34"/>
+        <source>Plan %1, since %2</source>
+        <translation>测试计划 %1，自 %2 起</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Plan %1, every module</source>
+        <translation>测试计划 %1，全部模块</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>All modules</source>
+        <translation>全部模块</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Firmware %1</source>
+        <translation>固件 %1</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <location line="+2"/>
+        <source>(unknown)</source>
+        <translation>（未知）</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Slot %1</source>
+        <translation>工位 %1</translation>
     </message>
 </context>
 <context>

@@ -2685,7 +2685,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>無法寫入 %1：%2</translation>
     </message>
     <message>
-        <location filename="../core/record/mcap_group_recording.cpp" line="+52"/>
+        <location filename="../core/record/mcap_group_recording.cpp" line="+50"/>
         <source>Recording to %1 stopped: %2. Check the free disk space.</source>
         <translation>錄製到 %1 已停止：%2。請檢查剩餘磁碟空間。</translation>
     </message>
@@ -4221,7 +4221,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::bridge::LiveBridge</name>
     <message>
-        <location filename="../core/bridge/live_bridge.cpp" line="+170"/>
+        <location filename="../core/bridge/live_bridge.cpp" line="+169"/>
         <source>Cannot listen on %1 port %2: %3</source>
         <translation>無法在 %1 的連接埠 %2 上監聽：%3</translation>
     </message>
@@ -6483,30 +6483,78 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::results::ResultsStore</name>
     <message>
-        <location filename="../core/results/results_store.cpp" line="+98"/>
+        <location filename="../core/results/results_store.cpp" line="+219"/>
+        <source>Updating the results database %1 to schema %2 failed: %3</source>
+        <translation>將結果資料庫 %1 升級到結構描述 %2 失敗：%3</translation>
+    </message>
+    <message>
+        <location line="+32"/>
+        <source>Qt&apos;s PostgreSQL driver is not installed (on Debian: the package libqt6sql6-psql).</source>
+        <translation>未安裝 Qt 的 PostgreSQL 驅動程式（Debian 上為套件 libqt6sql6-psql）。</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>Qt&apos;s SQLite driver is not installed (on Debian: the package libqt6sql6-sqlite).</source>
         <translation>未安裝 Qt 的 SQLite 驅動程式（Debian 上為套件 libqt6sql6-sqlite）。</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+29"/>
         <source>Cannot open the results database %1: %2</source>
         <translation>無法開啟結果資料庫 %1：%2</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+12"/>
         <source>%1 was written by a newer ImuDesk (schema %2; this one knows %3): update ImuDesk to use it</source>
         <translation>%1 由較新版本的 ImuDesk 寫入（結構描述 %2；本版本支援 %3）：請更新 ImuDesk 後再使用</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+7"/>
+        <source>The results database %1 has schema %2, this ImuDesk needs %3: have its owner run &quot;imudesk-cli results setup&quot; on it.</source>
+        <translation>結果資料庫 %1 的結構描述為 %2，本 ImuDesk 需要 %3：請讓其擁有者對它執行「imudesk-cli results setup」。</translation>
+    </message>
+    <message>
+        <location line="+21"/>
         <source>the results database is not open</source>
         <translation>結果資料庫未開啟</translation>
     </message>
     <message>
-        <location line="+5"/>
-        <location line="+64"/>
+        <location line="+11"/>
         <source>Storing the result of %1 in %2 failed: %3. It is still in the run folder.</source>
         <translation>將 %1 的結果存入 %2 失敗：%3。結果仍保存在執行資料夾中。</translation>
+    </message>
+    <message>
+        <location line="+48"/>
+        <source>Storing results in %1 failed: %2. They are still in the run folder.</source>
+        <translation>將結果存入 %1 失敗：%2。結果仍保存在執行資料夾中。</translation>
+    </message>
+    <message>
+        <location line="+321"/>
+        <source>Roles are a PostgreSQL server&apos;s; %1 is an SQLite file.</source>
+        <translation>角色屬於 PostgreSQL 伺服器；%1 是 SQLite 檔案。</translation>
+    </message>
+</context>
+<context>
+    <name>imudesk::results::ResultsUploader</name>
+    <message>
+        <location filename="../core/results/results_uploader.cpp" line="+28"/>
+        <source>%1 is gone from the station; its record keeps the station&apos;s path</source>
+        <translation>%1 已不在測試站上；其記錄保留測試站上的路徑</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Cannot create %1 in the shared artifact folder: check that it is mounted and writable.</source>
+        <translation>無法在共用附件資料夾中建立 %1：請檢查它已掛載且可寫入。</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <location line="+10"/>
+        <source>Cannot copy %1 to %2: check that the shared folder is mounted and has room.</source>
+        <translation>無法將 %1 複製到 %2：請檢查共用資料夾已掛載且有足夠空間。</translation>
+    </message>
+    <message>
+        <location line="-5"/>
+        <source>The copy of %1 in the shared folder does not match its SHA-256; it will be copied again.</source>
+        <translation>共用資料夾中 %1 的副本與其 SHA-256 不符；將重新複製。</translation>
     </message>
 </context>
 <context>
@@ -6688,7 +6736,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>無法讀取模組的設定：%1</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+19"/>
         <source>updated from %1 to %2 and verified</source>
         <translation>已從 %1 升級到 %2 並校驗通過</translation>
     </message>
@@ -6699,13 +6747,13 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
     <message>
         <location line="+1"/>
-        <location line="+211"/>
+        <location line="+232"/>
         <location line="+1"/>
         <source>(none)</source>
         <translation>（無）</translation>
     </message>
     <message>
-        <location line="-194"/>
+        <location line="-215"/>
         <source>could not connect to %1: %2</source>
         <translation>無法連線到 %1：%2</translation>
     </message>
@@ -6715,7 +6763,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>模組在“%1”期間斷開（%2）：請檢查其線纜；其他模組繼續測試</translation>
     </message>
     <message>
-        <location line="+88"/>
+        <location line="+87"/>
+        <source>%1; marginal: %2</source>
+        <translation>%1；臨界：%2</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>not run: &quot;%1&quot; failed</source>
         <translation>未執行：“%1”失敗</translation>
     </message>
@@ -6730,7 +6783,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>已由操作員取消</translation>
     </message>
     <message>
-        <location line="+58"/>
+        <location line="+33"/>
+        <source>%1 (marginal &gt; %2)</source>
+        <translation>%1（臨界 &gt; %2）</translation>
+    </message>
+    <message>
+        <location line="+39"/>
         <source>%1, firmware %2, serial %3</source>
         <translation>%1，韌體 %2，序列號 %3</translation>
     </message>
@@ -6844,12 +6902,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>“%2”期間 %1 s 未收到模組資料：模組輸出是否已開啟？是否仍在連線中？</translation>
     </message>
     <message>
-        <location line="+36"/>
+        <location line="+38"/>
         <source>only %1 samples in %2 s: enable the module&apos;s output (HI91, at least 10 Hz)</source>
         <translation>%2 s 內僅有 %1 個樣本：請開啟模組的輸出（HI91，至少 10 Hz）</translation>
     </message>
     <message>
-        <location line="+60"/>
+        <location line="+59"/>
         <source>%1 samples within every limit</source>
         <translation>%1 個樣本，均在限值內</translation>
     </message>
@@ -6864,7 +6922,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>%1 s 的資料不足以達到 τ = %2 s：請至少測量 %3 s</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+9"/>
         <source>σ(%1 s) of each gyro axis</source>
         <translation>陀螺儀各軸的 σ(%1 s)</translation>
     </message>
@@ -6912,7 +6970,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::station::RunFolder</name>
     <message>
-        <location filename="../core/station/run_folder.cpp" line="+34"/>
+        <location filename="../core/station/run_folder.cpp" line="+35"/>
         <source>cannot write %1: %2. Free some space or choose another report folder.</source>
         <translation>無法寫入 %1：%2。請釋放一些空間或選擇其他報告資料夾。</translation>
     </message>
@@ -6926,11 +6984,16 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <source>%1 holds a run of another plan; choose a new folder so that results stay comparable</source>
         <translation>%1 中已有其他測試計劃的執行結果；請選擇新資料夾，以保證結果可比</translation>
     </message>
+    <message>
+        <location line="+99"/>
+        <source>Cannot write %1: %2. The result is in the results database and the summaries.</source>
+        <translation>無法寫入 %1：%2。結果已保存在結果資料庫與摘要檔中。</translation>
+    </message>
 </context>
 <context>
     <name>imudesk::station::TestPlan</name>
     <message>
-        <location filename="../core/station/test_plan.cpp" line="+77"/>
+        <location filename="../core/station/test_plan.cpp" line="+98"/>
         <source>Identify</source>
         <translation>識別</translation>
     </message>
@@ -7091,14 +7154,14 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
     <message>
         <location line="+6"/>
-        <location line="+19"/>
+        <location line="+20"/>
         <location line="+21"/>
         <location line="+18"/>
         <source>Duration</source>
         <translation>時長</translation>
     </message>
     <message>
-        <location line="-57"/>
+        <location line="-58"/>
         <source>How long the module is measured at rest</source>
         <translation>模組靜止測量的時長</translation>
     </message>
@@ -7123,7 +7186,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>靜止時陀螺儀各軸均值絕對值的最大允許值</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>Accelerometer noise max</source>
         <translation>加速度計噪聲上限</translation>
     </message>
@@ -7235,11 +7298,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
     <message>
         <location line="+61"/>
+        <location line="+26"/>
         <source>%1 has no parameter &quot;%2&quot;</source>
         <translation>%1 沒有參數“%2”</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="-23"/>
         <source>&quot;%1&quot; must be a text</source>
         <translation>“%1”必須是文字</translation>
     </message>
@@ -7259,7 +7323,32 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>“%1” = %2 超出 %3 … %4 %5</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+11"/>
+        <source>&quot;%1&quot; is not a limit: it has no marginal band</source>
+        <translation>“%1”不是限值：沒有臨界區間</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>&quot;%1&quot;: &quot;marginal_high&quot; must be a number</source>
+        <translation>“%1”：“marginal_high”必須是數字</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>&quot;%1&quot;: &quot;marginal_high&quot; = %2 is outside %3 … %4%5</source>
+        <translation>“%1”：“marginal_high” = %2 超出 %3 … %4%5</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>&quot;%1&quot;: &quot;marginal_high&quot; = %2%4 is not below the limit %3%4</source>
+        <translation>“%1”：“marginal_high” = %2%4 不低於限值 %3%4</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>This plan was written in format version %1; it is converted to version %2 and will be saved as version %2.</source>
+        <translation>此測試計劃以格式版本 %1 撰寫；已轉換為版本 %2，並將以版本 %2 儲存。</translation>
+    </message>
+    <message>
+        <location line="+14"/>
         <source>the plan is larger than %1 KiB</source>
         <translation>測試計劃大於 %1 KiB</translation>
     </message>
@@ -7275,17 +7364,17 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
     <message>
         <location line="+3"/>
-        <source>plan version %1 is not supported (this ImuDesk reads version %2)</source>
-        <translation>不支援測試計劃版本 %1（本 ImuDesk 讀取版本 %2）</translation>
+        <source>plan version %1 is not supported (this ImuDesk reads versions 1 to %2)</source>
+        <translation>不支援測試計劃版本 %1（本 ImuDesk 讀取版本 1 至 %2）</translation>
     </message>
     <message>
-        <location line="+7"/>
-        <location line="+86"/>
+        <location line="+8"/>
+        <location line="+118"/>
         <source>the plan has no steps</source>
         <translation>測試計劃中沒有步驟</translation>
     </message>
     <message>
-        <location line="-80"/>
+        <location line="-112"/>
         <source>step %1: unknown step &quot;%2&quot;</source>
         <translation>步驟 %1：未知步驟“%2”</translation>
     </message>
@@ -7295,13 +7384,25 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>步驟 %1（%2）：&quot;enabled&quot; 必須為 true 或 false</translation>
     </message>
     <message>
-        <location line="+6"/>
-        <location line="+72"/>
+        <location line="+13"/>
+        <source>step %1 (%2): &quot;%3&quot; has an unknown field &quot;%4&quot; (a limit is a number or {&quot;high&quot;: …, &quot;marginal_high&quot;: …})</source>
+        <translation>步驟 %1（%2）：“%3”含有未知欄位“%4”（限值應為數字或 {&quot;high&quot;: …, &quot;marginal_high&quot;: …}）</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>step %1 (%2): &quot;%3&quot; has no &quot;high&quot; (the limit itself)</source>
+        <translation>步驟 %1（%2）：“%3”缺少“high”（限值本身）</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <location line="+3"/>
+        <location line="+80"/>
+        <location line="+4"/>
         <source>step %1 (%2): %3</source>
         <translation>步驟 %1（%2）：%3</translation>
     </message>
     <message>
-        <location line="-38"/>
+        <location line="-42"/>
         <source>cannot open %1: %2</source>
         <translation>無法開啟 %1：%2</translation>
     </message>
@@ -7311,7 +7412,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>無法寫入 %1：%2。請選擇其他資料夾或釋放一些空間。</translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+34"/>
         <source>step %1 (%2): no %3 file given</source>
         <translation>步驟 %1（%2）：未指定 %3 檔案</translation>
     </message>
@@ -7324,7 +7425,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::station::Verdict</name>
     <message>
-        <location filename="../core/station/station_result.cpp" line="+23"/>
+        <location filename="../core/station/station_result.cpp" line="+24"/>
         <source>waiting</source>
         <translation>等待中</translation>
     </message>
@@ -10714,9 +10815,119 @@ Method: %3</source>
     </message>
 </context>
 <context>
+    <name>imudesk::ui::LineDatabaseDialog</name>
+    <message>
+        <location filename="../ui/station/line_database_dialog.cpp" line="+91"/>
+        <source>Line database</source>
+        <translation>產線資料庫</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Every module this station tests is stored in its own database first (results.sqlite in the report folder); with a line database set, the station also sends each result there, and keeps it until the server has it.</source>
+        <translation>本測試臺測試的每個模組都會先存入自己的資料庫（報告資料夾中的 results.sqlite）；設定產線資料庫後，測試臺還會把每個結果傳送到那裡，並在伺服器收到之前一直保留。</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Server:</source>
+        <translation>伺服器：</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The line&apos;s PostgreSQL database: postgresql://user@host[:port]/database. Empty: none. A password typed here (user:password@host) is stored with the station&apos;s settings as typed; put it into ~/.pgpass instead, which PostgreSQL reads by itself.</source>
+        <translation>產線的 PostgreSQL 資料庫：postgresql://使用者@主機[:連接埠]/資料庫。留空：不使用。在此輸入的密碼（使用者:密碼@主機）會原樣儲存在測試臺的設定中；請改寫入 ~/.pgpass，PostgreSQL 會自行讀取。</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Shared artifact folder:</source>
+        <translation>共用附件資料夾：</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A folder every station and the office can reach (a network share): each module&apos;s PDF report and recording are copied there, checked against their SHA-256, and the line database records that copy. Empty: the files stay on this station.</source>
+        <translation>每個測試臺和辦公室都能存取的資料夾（網路共用）：每個模組的 PDF 報告和錄製檔會複製到這裡，並以 SHA-256 核對，產線資料庫記錄這份副本。留空：檔案只保留在本測試臺。</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Browse…</source>
+        <translation>瀏覽…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Test connection</source>
+        <translation>測試連線</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Connect to the server now, as the station will (a fresh database gets ImuDesk&apos;s tables)</source>
+        <translation>現在依測試臺的方式連線到伺服器（全新的資料庫會建立 ImuDesk 的資料表）</translation>
+    </message>
+    <message>
+        <location line="+29"/>
+        <source>A line database is a PostgreSQL server: its address starts with postgresql://</source>
+        <translation>產線資料庫是 PostgreSQL 伺服器：位址以 postgresql:// 開頭</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The password is stored with the station&apos;s settings as typed; ~/.pgpass keeps it out of them.</source>
+        <translation>密碼會原樣儲存在測試臺的設定中；寫入 ~/.pgpass 可避免這一點。</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Shared artifact folder</source>
+        <translation>共用附件資料夾</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Connecting to %1…</source>
+        <translation>正在連線到 %1…</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>Connected: schema %1</source>
+        <translation>已連線：資料庫結構版本 %1</translation>
+    </message>
+</context>
+<context>
+    <name>imudesk::ui::LineDatabaseStatus</name>
+    <message>
+        <location line="+33"/>
+        <source> · connecting to the line database…</source>
+        <translation> · 正在連線到產線資料庫…</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source> · upload failing: %1</source>
+        <translation> · 上傳失敗：%1</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+2"/>
+        <source> · %n result(s) waiting to upload</source>
+        <translation>
+            <numerusform> · %n 筆結果等待上傳</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source> · every result uploaded</source>
+        <translation> · 所有結果皆已上傳</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Uploading to %1 fails: %2
+The results wait in this station&apos;s database and go as soon as the server answers; nothing is lost.</source>
+        <translation>上傳到 %1 失敗：%2
+結果暫存在本測試臺的資料庫中，伺服器一有回應就會傳送；不會遺失任何資料。</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Results go to the line database %1.</source>
+        <translation>結果會傳送到產線資料庫 %1。</translation>
+    </message>
+</context>
+<context>
     <name>imudesk::ui::LiveBridgeDialog</name>
     <message>
-        <location filename="../ui/bridge/live_bridge_dialog.cpp" line="+148"/>
+        <location filename="../ui/bridge/live_bridge_dialog.cpp" line="+150"/>
         <source>Live bridge</source>
         <translation>即時橋接</translation>
     </message>
@@ -10801,7 +11012,7 @@ Method: %3</source>
         <translation>警告：%1 不僅限本機。網路上能存取它的任何人都可以讀取裝置資料：此協定沒有密碼。</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+7"/>
         <source>&amp;Stop</source>
         <translation>停止(&amp;S)</translation>
     </message>
@@ -11362,12 +11573,12 @@ Samples: %3</source>
 <context>
     <name>imudesk::ui::MainWindow</name>
     <message>
-        <location filename="../ui/workspace/main_window.cpp" line="+398"/>
+        <location filename="../ui/workspace/main_window.cpp" line="+399"/>
         <source>Choose a port first.</source>
         <translation>請先選擇串列埠。</translation>
     </message>
     <message>
-        <location line="+89"/>
+        <location line="+103"/>
         <source>ImuDesk</source>
         <translation>ImuDesk</translation>
     </message>
@@ -11377,12 +11588,12 @@ Samples: %3</source>
         <translation>關於 ImuDesk</translation>
     </message>
     <message>
-        <location line="-144"/>
+        <location line="-158"/>
         <source>No device family simulates &quot;%1&quot;.</source>
         <translation>沒有裝置系列能模擬「%1」。</translation>
     </message>
     <message>
-        <location line="+145"/>
+        <location line="+159"/>
         <source>&lt;h3&gt;ImuDesk %1&lt;/h3&gt;&lt;p&gt;A bench tool for IMU, AHRS and compass modules on serial, RS-485 Modbus and CAN links: live values and charts, settings, calibration, firmware updates, recordings and simulated devices.&lt;/p&gt;&lt;p&gt;Built with Qt %2.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;ImuDesk %1&lt;/h3&gt;&lt;p&gt;適用於序列埠、RS-485 Modbus 與 CAN 連線上的 IMU、AHRS 及羅盤模組的測試台工具：即時數值與曲線、設定、校準、韌體更新、記錄以及模擬裝置。&lt;/p&gt;&lt;p&gt;以 Qt %2 建置。&lt;/p&gt;</translation>
     </message>
@@ -11417,7 +11628,7 @@ Samples: %3</source>
         <translation>PNG 影像 (*.png)</translation>
     </message>
     <message>
-        <location line="+136"/>
+        <location line="+142"/>
         <source>&amp;File</source>
         <translation>檔案(&amp;F)</translation>
     </message>
@@ -11588,6 +11799,16 @@ Samples: %3</source>
     </message>
     <message>
         <location line="+1"/>
+        <source>&amp;Results…</source>
+        <translation>測試結果(&amp;R)…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Every module the station tested: search by serial number, each attempt&apos;s measurements, the yield and a measurement&apos;s trend with Cpk</source>
+        <translation>測試臺測試過的每個模組：依序號搜尋、每次嘗試的量測項、良率，以及某一量測項的趨勢與 Cpk</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>&amp;Reset layout</source>
         <translation>重設版面配置(&amp;R)</translation>
     </message>
@@ -11808,6 +12029,184 @@ Samples: %3</source>
     </message>
 </context>
 <context>
+    <name>imudesk::ui::ModuleHistoryView</name>
+    <message>
+        <location filename="../ui/results/module_history_view.cpp" line="+100"/>
+        <source>Attempt, step, measurement</source>
+        <translation>嘗試、步驟、量測項</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Value</source>
+        <translation>數值</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Unit</source>
+        <translation>單位</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Limits</source>
+        <translation>限值</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Marginal band</source>
+        <translation>臨界區間</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Outcome</source>
+        <translation>結果</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A pass whose value lies beyond this band, but inside its limits, is marked marginal</source>
+        <translation>數值超出此範圍但仍在限值內的通過結果會標記為臨界</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Attempt</source>
+        <translation>嘗試次數</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Kind</source>
+        <translation>類型</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>File</source>
+        <translation>檔案</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Files:</source>
+        <translation>檔案：</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Open</source>
+        <translation>開啟</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Open the chosen file (the PDF report, the evidence recording) in the desktop&apos;s application for it</source>
+        <translation>以桌面上的對應程式開啟所選檔案（PDF 報告、證據錄製檔）</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Select a module above to see every attempt of its serial number.</source>
+        <translation>在上方選擇一個模組，即可檢視該序號的每一次嘗試。</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+4"/>
+        <source>History of %1: %n attempt(s)</source>
+        <translation>
+            <numerusform>%1 的歷史：%n 次嘗試</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+36"/>
+        <source>Attempt %1 · %2</source>
+        <translation>第 %1 次嘗試 · %2</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Plan: %1
+Station: %2 · slot %3 · operator %4
+Product: %5 · firmware %6
+Finished: %7
+Record: %8</source>
+        <translation>測試計劃：%1
+測試臺：%2 · 工位 %3 · 作業員 %4
+產品：%5 · 韌體 %6
+結束：%7
+記錄：%8</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>skipped</source>
+        <translation>已略過</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>for information</source>
+        <translation>僅供參考</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The value&apos;s magnitude is compared with the limit</source>
+        <translation>以數值的絕對值與限值比較</translation>
+    </message>
+    <message>
+        <location line="+26"/>
+        <source>PDF report</source>
+        <translation>PDF 報告</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Recording</source>
+        <translation>錄製檔</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1
+SHA-256: %2</source>
+        <translation>%1
+SHA-256：%2</translation>
+    </message>
+</context>
+<context>
+    <name>imudesk::ui::ModuleTableModel</name>
+    <message>
+        <location filename="../ui/results/module_table_model.cpp" line="+108"/>
+        <source>Started</source>
+        <translation>開始時間</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Serial number</source>
+        <translation>序號</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Outcome</source>
+        <translation>結果</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Plan</source>
+        <translation>測試計劃</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Station</source>
+        <translation>測試臺</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Slot</source>
+        <translation>工位</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Product</source>
+        <translation>產品</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Firmware</source>
+        <translation>韌體</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Attempt</source>
+        <translation>嘗試次數</translation>
+    </message>
+</context>
+<context>
     <name>imudesk::ui::MountingPicker</name>
     <message>
         <location filename="../ui/configuration/mounting_picker.cpp" line="+28"/>
@@ -11876,7 +12275,7 @@ Samples: %3</source>
 <context>
     <name>imudesk::ui::PlanEditorDialog</name>
     <message>
-        <location filename="../ui/station/plan_editor_dialog.cpp" line="+178"/>
+        <location filename="../ui/station/plan_editor_dialog.cpp" line="+199"/>
         <source>Plan &amp;name:</source>
         <translation>計劃名稱(&amp;N)：</translation>
     </message>
@@ -11951,7 +12350,7 @@ Samples: %3</source>
         <translation>將測試計劃寫入另一個檔案；其引用的檔案路徑隨之調整</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+22"/>
         <source>The plan has changes that are not saved.</source>
         <translation>測試計劃有未儲存的更改。</translation>
     </message>
@@ -11991,24 +12390,41 @@ Samples: %3</source>
         <translation>%1：</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+23"/>
         <source>%1
 From %2%4 to %3%4; default %5%4.</source>
         <translation>%1
 範圍 %2%4 至 %3%4；預設 %5%4。</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+23"/>
+        <source>Marginal band</source>
+        <translation>臨界區間</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Mark values close to the limit: they still pass, and the results say they were marginal</source>
+        <translation>標記接近限值的數值：它們仍判為通過，但結果中註明為臨界</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Values above this, up to the limit, pass marked marginal.
+From %1%3 to %2%3, below the limit.</source>
+        <translation>高於此值且不超過限值的數值判為通過，並標記為臨界。
+範圍 %1%3 至 %2%3，須低於限值。</translation>
+    </message>
+    <message>
+        <location line="+46"/>
         <source>&quot;%1&quot; needs a number from %2 to %3</source>
         <translation>“%1”需要 %2 至 %3 之間的數值</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+8"/>
         <source>step %1 (%2): %3</source>
         <translation>步驟 %1（%2）：%3</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+13"/>
         <source>%1
 Default: %2</source>
         <translation>%1
@@ -12065,7 +12481,7 @@ Default: %2</source>
         <translation>測試計劃 – %1（%2）%3</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+33"/>
         <source>Save test plan</source>
         <translation>儲存測試計劃</translation>
     </message>
@@ -12075,7 +12491,7 @@ Default: %2</source>
         <translation>測試計劃 (*.json)</translation>
     </message>
     <message>
-        <location line="+41"/>
+        <location line="+43"/>
         <source>Test plan</source>
         <translation>測試計劃</translation>
     </message>
@@ -12669,6 +13085,248 @@ Default: %2</source>
     </message>
 </context>
 <context>
+    <name>imudesk::ui::ResultsFormat</name>
+    <message>
+        <location filename="../ui/results/results_format.cpp" line="+13"/>
+        <source>PASS (marginal)</source>
+        <translation>通過（臨界）</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>PASS</source>
+        <translation>通過</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>FAIL</source>
+        <translation>失敗</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>ERROR</source>
+        <translation>錯誤</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>ABORTED</source>
+        <translation>中止</translation>
+    </message>
+</context>
+<context>
+    <name>imudesk::ui::ResultsWindow</name>
+    <message>
+        <location filename="../ui/results/results_window.cpp" line="+308"/>
+        <source>Results</source>
+        <translation>測試結果</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Database:</source>
+        <translation>資料庫：</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Open…</source>
+        <translation>開啟…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Read another results file (an SQLite file a station wrote: results.sqlite)</source>
+        <translation>讀取另一個結果檔（測試臺寫入的 SQLite 檔案：results.sqlite）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Serial:</source>
+        <translation>序號：</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>part of a serial number</source>
+        <translation>序號的一部分</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Modules whose serial number contains this text, as it is written</source>
+        <translation>序號中包含此文字（依原樣比對）的模組</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Plan:</source>
+        <translation>測試計劃：</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Station:</source>
+        <translation>測試臺：</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Any</source>
+        <translation>全部</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>From</source>
+        <translation>從</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Only modules started on this day or later (also for the yield and the trend)</source>
+        <translation>僅包含在此日期或之後開始的模組（良率與趨勢也依此篩選）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>To</source>
+        <translation>至</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Only modules started on this day or earlier (also for the trend)</source>
+        <translation>僅包含在此日期或之前開始的模組（趨勢也依此篩選）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Search</source>
+        <translation>搜尋</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>List the modules that match the filter, and count the yield of its plan (Enter)</source>
+        <translation>列出符合篩選條件的模組，並統計其測試計劃的良率 (Enter)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+95"/>
+        <source>Reading the results database…</source>
+        <translation>正在讀取結果資料庫…</translation>
+    </message>
+    <message>
+        <location line="-94"/>
+        <source>Modules</source>
+        <translation>模組</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The modules found; select one to see every attempt of its serial number</source>
+        <translation>找到的模組；選擇一個即可檢視該序號的每一次嘗試</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Yield</source>
+        <translation>良率</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Pass, fail and yield of the chosen plan, per firmware and fixture slot</source>
+        <translation>所選測試計劃的通過數、失敗數與良率，依韌體和治具工位統計</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Trend</source>
+        <translation>趨勢</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>One measurement of the chosen plan over time, with its limits and Cpk</source>
+        <translation>所選測試計劃中某一量測項隨時間的變化，含限值與 Cpk</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <location line="+242"/>
+        <source>Choose a plan in the filter above: the yield is counted per plan.</source>
+        <translation>請在上方篩選列中選擇測試計劃：良率依測試計劃統計。</translation>
+    </message>
+    <message>
+        <location line="-241"/>
+        <location line="+261"/>
+        <source>Choose a plan in the filter above to see its measurements over time.</source>
+        <translation>請在上方篩選列中選擇測試計劃，以檢視其量測項隨時間的變化。</translation>
+    </message>
+    <message>
+        <location line="-215"/>
+        <source>Open a results database</source>
+        <translation>開啟結果資料庫</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Results databases (*.sqlite *.db);;All files (*)</source>
+        <translation>結果資料庫 (*.sqlite *.db);;所有檔案 (*)</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>none</source>
+        <translation>無</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>the line database, %1</source>
+        <translation>產線資料庫，%1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the file %1</source>
+        <translation>檔案 %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>this station&apos;s database, %1</source>
+        <translation>本測試臺的資料庫，%1</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+24"/>
+        <source>The newest %n module(s) found; there are more: narrow the filter to see them.</source>
+        <translation>
+            <numerusform>顯示最新的 %n 個模組；還有更多：請縮小篩選範圍以檢視。</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+3"/>
+        <source>%n module(s) found.</source>
+        <translation>
+            <numerusform>找到 %n 個模組。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>The line database %1 could not be read: %2
+Check the network and that the server runs, then press Search to try again; or read this station&apos;s own file with Open….</source>
+        <translation>無法讀取產線資料庫 %1：%2
+請檢查網路以及伺服器是否在執行，然後按「搜尋」重試；或以「開啟…」讀取本測試臺自己的檔案。</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1 could not be read: %2
+Is it a results database that ImuDesk wrote? Choose another file with Open….</source>
+        <translation>無法讀取 %1：%2
+它是 ImuDesk 寫入的結果資料庫嗎？請以「開啟…」選擇其他檔案。</translation>
+    </message>
+    <message>
+        <location line="+72"/>
+        <source>There are no results in %1 yet: the station writes this file with its first run. Open another file with Open…, or set the line database in the station window.</source>
+        <translation>%1 中還沒有結果：測試臺在第一次執行時才會寫入此檔案。請以「開啟…」開啟其他檔案，或在測試臺視窗中設定產線資料庫。</translation>
+    </message>
+    <message>
+        <location line="+43"/>
+        <source>Reading the history of %1…</source>
+        <translation>正在讀取 %1 的歷史…</translation>
+    </message>
+    <message>
+        <location line="+58"/>
+        <source>The plan&apos;s modules have no measurements here.</source>
+        <translation>此測試計劃的模組在這裡沒有量測項。</translation>
+    </message>
+    <message>
+        <location line="+27"/>
+        <source>%1 is not on this computer (it may be on the station that tested the module, or moved). Look for it in that station&apos;s report folder or in the shared artifact folder.</source>
+        <translation>%1 不在這台電腦上（可能在測試該模組的測試臺上，或已被移動）。請在該測試臺的報告資料夾或共用附件資料夾中尋找。</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>%1 could not be opened: no application on this computer opens it. Open it from the file manager instead.</source>
+        <translation>無法開啟 %1：這台電腦上沒有能開啟它的程式。請改從檔案總管中開啟。</translation>
+    </message>
+</context>
+<context>
     <name>imudesk::ui::RotationGuide</name>
     <message>
         <location filename="../ui/calibration/rotation_guide.cpp" line="+119"/>
@@ -12952,14 +13610,24 @@ Default: %2</source>
         <translation>    %1 = %2（限值 %3）%4</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source> ✗</source>
         <translation> ✗</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source> (marginal)</source>
+        <translation>（臨界）</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Report: %1</source>
         <translation>報告：%1</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>%1 (marginal)</source>
+        <translation>%1（臨界）</translation>
     </message>
 </context>
 <context>
@@ -13030,7 +13698,12 @@ Default: %2</source>
         <translation>結論：</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+1"/>
+        <source>%1 (marginal)</source>
+        <translation>%1（臨界）</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>Failed at %1</source>
         <translation>失敗步驟：%1</translation>
     </message>
@@ -13060,7 +13733,7 @@ Default: %2</source>
         <translation>結果</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>within</source>
         <translation>在限值內</translation>
     </message>
@@ -13070,7 +13743,12 @@ Default: %2</source>
         <translation>超出限值</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+0"/>
+        <source>marginal</source>
+        <translation>臨界</translation>
+    </message>
+    <message>
+        <location line="+11"/>
         <source>Evidence recording: %1</source>
         <translation>證據記錄：%1</translation>
     </message>
@@ -13146,13 +13824,13 @@ Default: %2</source>
 <context>
     <name>imudesk::ui::StationView</name>
     <message>
-        <location filename="../ui/station/station_view.cpp" line="+252"/>
-        <location line="+75"/>
+        <location filename="../ui/station/station_view.cpp" line="+270"/>
+        <location line="+78"/>
         <source>Production station</source>
         <translation>生產測試臺</translation>
     </message>
     <message>
-        <location line="-74"/>
+        <location line="-77"/>
         <source>Plan:</source>
         <translation>測試計劃：</translation>
     </message>
@@ -13238,6 +13916,16 @@ Default: %2</source>
     </message>
     <message>
         <location line="+1"/>
+        <source>Line database…</source>
+        <translation>產線資料庫…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Send every result to the line&apos;s PostgreSQL database too, and copy the reports to a shared folder</source>
+        <translation>同時把每個結果傳送到產線的 PostgreSQL 資料庫，並把報告複製到共用資料夾</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Start</source>
         <translation>開始</translation>
     </message>
@@ -13403,7 +14091,7 @@ Default: %2</source>
         <translation>模組數量：</translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+47"/>
         <source>Folder for the station&apos;s reports</source>
         <translation>生產測試臺的報告資料夾</translation>
     </message>
@@ -13432,7 +14120,7 @@ Edit it (Edit…) and start again.</source>
         <translation>報告資料夾無法使用：%1</translation>
     </message>
     <message>
-        <location line="+67"/>
+        <location line="+74"/>
         <source>A report could not be written:
 %1</source>
         <translation>無法寫入報告：
@@ -13797,6 +14485,61 @@ Edit it (Edit…) and start again.</source>
     </message>
 </context>
 <context>
+    <name>imudesk::ui::TrendView</name>
+    <message>
+        <location filename="../ui/results/trend_view.cpp" line="+113"/>
+        <source>Measurement:</source>
+        <translation>量測項：</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Pass</source>
+        <translation>通過</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Fail</source>
+        <translation>失敗</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+1"/>
+        <source>Limits</source>
+        <translation>限值</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+1"/>
+        <source>Marginal band</source>
+        <translation>臨界區間</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Module started</source>
+        <translation>模組開始測試時間</translation>
+    </message>
+    <message>
+        <location line="+137"/>
+        <source>No values of this measurement in the time chosen.</source>
+        <translation>所選時間內沒有該量測項的數值。</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>n = %1 · mean = %2 · σ = %3 · Cpk = %4</source>
+        <translation>n = %1 · 平均值 = %2 · σ = %3 · Cpk = %4</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Cpk, the process capability index: how far the mean lies from the nearer limit, in units of three standard deviations: min(USL − mean, mean − LSL) / 3σ, against the latest module&apos;s limits (%1). 1.33 or more is commonly asked for; below 1, some modules will fail. &quot;–&quot;: no limit, or no spread (fewer than two values, or all equal).</source>
+        <translation>Cpk（製程能力指數）：平均值距較近限值的距離，以三倍標準差為單位：min(USL − 平均值, 平均值 − LSL) / 3σ，依最新模組的限值（%1）計算。通常要求 1.33 以上；低於 1 時會有部分模組不合格。「–」：沒有限值，或沒有離散（少於兩個數值，或全部相等）。</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>none</source>
+        <translation>無</translation>
+    </message>
+</context>
+<context>
     <name>imudesk::ui::TurnGauge</name>
     <message>
         <location filename="../ui/calibration/turn_gauge.cpp" line="+78"/>
@@ -14148,6 +14891,90 @@ Edit it (Edit…) and start again.</source>
         <location filename="../ui/common/window_helpers.cpp" line="+31"/>
         <source>Could not save the screenshot to %1: %2</source>
         <translation>無法將截圖保存到 %1：%2</translation>
+    </message>
+</context>
+<context>
+    <name>imudesk::ui::YieldView</name>
+    <message>
+        <location filename="../ui/results/yield_view.cpp" line="+54"/>
+        <source>Modules</source>
+        <translation>模組</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Pass</source>
+        <translation>通過</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Fail</source>
+        <translation>失敗</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Marginal</source>
+        <translation>臨界</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Error</source>
+        <translation>錯誤</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Aborted</source>
+        <translation>中止</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Yield</source>
+        <translation>良率</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Passed, with a value beyond its marginal band (counted among the passes too)</source>
+        <translation>通過，但有數值超出臨界帶（同時計入通過數）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Pass / (pass + fail)</source>
+        <translation>通過 / (通過 + 失敗)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>ERROR (the equipment failed: a port went away, a module did not answer) and ABORTED (the operator cancelled) are not counted in the yield: yield = pass / (pass + fail).</source>
+        <translation>錯誤（設備故障：串列埠中斷、模組無回應）和中止（作業員取消）不計入良率：良率 = 通過 / (通過 + 失敗)。</translation>
+    </message>
+    <message>
+        <location line="+34"/>
+        <source>Plan %1, since %2</source>
+        <translation>測試計劃 %1，自 %2 起</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Plan %1, every module</source>
+        <translation>測試計劃 %1，全部模組</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>All modules</source>
+        <translation>全部模組</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Firmware %1</source>
+        <translation>韌體 %1</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <location line="+2"/>
+        <source>(unknown)</source>
+        <translation>（未知）</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Slot %1</source>
+        <translation>工位 %1</translation>
     </message>
 </context>
 <context>

@@ -4,6 +4,7 @@
 #include "sim/hipnuc_serial_device.h"
 #include "sim/pty_simulator.h"
 #include "sim/simulated_transport.h"
+#include "ui/station/line_database_dialog.h"
 #include "ui/station/plan_editor_dialog.h"
 #include "core/station/run_folder.h"
 #include "ui/station/station_model.h"
@@ -58,18 +59,29 @@ void StationSettings::load(QSettings &settings)
 {
     reportFolder = settings.value(QLatin1String(kReportFolderKey)).toString();
     planPath = settings.value(QLatin1String(kPlanKey)).toString();
+    lineDatabase = settings.value(QLatin1String(kLineDatabaseKey)).toString();
+    artifactFolder = settings.value(QLatin1String(kArtifactFolderKey)).toString();
 }
 
 void StationSettings::save(QSettings &settings) const
 {
     settings.setValue(QLatin1String(kReportFolderKey), reportFolder);
     settings.setValue(QLatin1String(kPlanKey), planPath);
+    settings.setValue(QLatin1String(kLineDatabaseKey), lineDatabase);
+    settings.setValue(QLatin1String(kArtifactFolderKey), artifactFolder);
 }
 
 QString StationSettings::defaultReportFolder()
 {
     return QDir(QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation))
         .filePath(QStringLiteral("ImuDesk/station"));
+}
+
+QString StationSettings::resultsDatabase() const
+{
+    if (!lineDatabase.isEmpty())
+        return lineDatabase;
+    return QDir(reportFolder.isEmpty() ? defaultReportFolder() : reportFolder).filePath(QLatin1String(results::ResultsStore::kFileName));
 }
 
 // ---------------------------------------------------------------- the window
@@ -138,9 +150,15 @@ StationView::StationView(QWidget *parent) : QWidget(parent)
     m_chooseFolder = new QPushButton(this);
     m_chooseFolder->setObjectName(QStringLiteral("chooseReportFolder"));
     connect(m_chooseFolder, &QPushButton::clicked, this, &StationView::chooseReportFolder);
+    m_lineDatabase = new QPushButton(this);
+    m_lineDatabase->setObjectName(QStringLiteral("lineDatabaseButton"));
+    connect(m_lineDatabase, &QPushButton::clicked, this, &StationView::editLineDatabase);
+    m_upload = new LineDatabaseStatus(this);
+    connect(m_upload, &LineDatabaseStatus::changed, this, &StationView::updateSummary);
     auto *folderRow = new QHBoxLayout;
     folderRow->addWidget(m_folder, 1);
     folderRow->addWidget(m_chooseFolder);
+    folderRow->addWidget(m_lineDatabase);
 
     // Start, Cancel, Re-run failed; their keys are shortcuts of this window (Ctrl+R here is
     // not the main window's Record).
@@ -270,6 +288,9 @@ void StationView::retranslateUi()
                             "report per module and the evidence recordings"));
     m_chooseFolder->setText(tr("Choose…"));
     m_chooseFolder->setToolTip(tr("Choose the folder for the run folders"));
+    m_lineDatabase->setText(tr("Line database…"));
+    m_lineDatabase->setToolTip(tr("Send every result to the line's PostgreSQL database too, and copy the reports to "
+                                  "a shared folder"));
     m_start->setText(tr("Start"));
     m_start->setToolTip(tr("Run the plan on every checked port at once (Ctrl+R)"));
     m_cancel->setText(tr("Cancel"));
@@ -654,6 +675,18 @@ void StationView::setReportFolder(const QString &dir)
     }
 }
 
+void StationView::editLineDatabase()
+{
+    auto *dialog = new LineDatabaseDialog(m_settings.lineDatabase, m_settings.artifactFolder, this);
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    connect(dialog, &QDialog::accepted, this, [this, dialog] {
+        m_settings.lineDatabase = dialog->url();
+        m_settings.artifactFolder = dialog->artifactFolder();
+        rememberSettings(); // the next Start uploads there
+    });
+    dialog->open();
+}
+
 void StationView::chooseReportFolder()
 {
     const QString dir = QFileDialog::getExistingDirectory(this, tr("Folder for the station's reports"), reportFolder());
@@ -709,6 +742,12 @@ bool StationView::start()
         return false;
     }
     runner->setReportWriter(&writeStationReport);
+    if (!m_settings.lineDatabase.isEmpty()) {
+        results::UploaderOptions line;
+        line.server = m_settings.lineDatabase;
+        line.artifactFolder = m_settings.artifactFolder;
+        runner->setLineDatabase(line);
+    }
     connect(runner.get(), &StationRunner::moduleFinished, this, &StationView::onModuleFinished);
     connect(runner.get(), &StationRunner::finished, this, [this] {
         m_model->refresh();
@@ -721,6 +760,7 @@ bool StationView::start()
     m_model->setRunner(runner.get()); // the tiles follow (modelReset)
     m_runner = std::move(runner);     // the previous run's runner (finished) goes
     m_runner->start();
+    m_upload->follow(m_runner->uploader());
     m_model->refresh();
     updateSummary();
     updateActions();
@@ -891,8 +931,11 @@ void StationView::updateSummary()
             ? tr(" — the workspace of %1 opens when its test has ended").arg(ports.first())
             : tr(" — the workspaces of %1 open when their tests have ended").arg(ports.join(QStringLiteral(", ")));
     }
-    m_summary->setFullText(text);
-    m_summary->setExtraToolTip(tr("Reports of this run: %1").arg(QDir::toNativeSeparators(m_runner->runFolder())));
+    m_summary->setFullText(text + m_upload->text());
+    QString tip = tr("Reports of this run: %1").arg(QDir::toNativeSeparators(m_runner->runFolder()));
+    if (const QString upload = m_upload->toolTip(); !upload.isEmpty())
+        tip += QLatin1Char('\n') + upload;
+    m_summary->setExtraToolTip(tip);
 }
 
 void StationView::updateActions()

@@ -50,6 +50,7 @@ class StationRunner;
 namespace imudesk::ui {
 
 class ElidedLabel;
+class LineDatabaseStatus;
 class PlanEditorDialog;
 class StationModel;
 class StationTile;
@@ -59,14 +60,20 @@ class TileGridLayout;
 struct StationSettings {
     static constexpr const char *kReportFolderKey = "station/v1/reportFolder";
     static constexpr const char *kPlanKey = "station/v1/plan";
+    static constexpr const char *kLineDatabaseKey = "station/v1/lineDatabase";
+    static constexpr const char *kArtifactFolderKey = "station/v1/artifactFolder";
 
     QString reportFolder; // empty: defaultReportFolder()
     QString planPath;     // the plan opened last; empty: none
+    QString lineDatabase;   // the line's PostgreSQL URL (line_database_dialog.h); empty: none
+    QString artifactFolder; // where the uploader copies reports and recordings; empty: they stay here
 
     void load(QSettings &settings);
     void save(QSettings &settings) const;
     // <Documents>/ImuDesk/station
     static QString defaultReportFolder();
+    // What Tools > Results reads: the line database when set, else <report folder>/results.sqlite.
+    QString resultsDatabase() const;
 };
 
 class StationView : public QWidget {
@@ -126,6 +133,9 @@ public:
     // Whether the report folder and the plan opened are remembered for the next time (off for
     // automation: a --screenshot run or a test leaves the user's settings alone).
     void setRemembering(bool on) { m_remember = on; }
+    const StationSettings &settings() const { return m_settings; }
+    // The line database button: its dialog (window-modal); OK stores URL and artifact folder.
+    void editLineDatabase();
 
     // Runs the plan on the checked ports; false (and the reason shown) when it cannot.
     bool start();
@@ -215,6 +225,8 @@ private:
     QLabel *m_folderTitle = nullptr;
     QLineEdit *m_folder = nullptr;
     QPushButton *m_chooseFolder = nullptr;
+    QPushButton *m_lineDatabase = nullptr;
+    LineDatabaseStatus *m_upload = nullptr; // the summary line's words for the run's uploader
     QPushButton *m_start = nullptr;
     QPushButton *m_cancel = nullptr;
     QPushButton *m_rerun = nullptr;

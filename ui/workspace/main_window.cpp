@@ -1,5 +1,6 @@
 #include "workspace/main_window.h"
 
+#include "ui/results/results_window.h"
 #include "ui/station/station_view.h"
 #include "bridge/bridge_controller.h"
 #include "bridge/live_bridge_dialog.h"
@@ -456,6 +457,20 @@ LiveBridgeDialog *MainWindow::openLiveBridge()
     return m_bridgeDialog;
 }
 
+ResultsWindow *MainWindow::openResults()
+{
+    if (!m_results) {
+        m_results = new ResultsWindow(this);
+        m_results->setAttribute(Qt::WA_DeleteOnClose);
+        // The station window's settings as they are now, else as saved.
+        m_results->openLocation(m_station ? m_station->settings().resultsDatabase() : ResultsWindow::stationDatabase());
+    }
+    m_results->show();
+    m_results->raise();
+    m_results->activateWindow();
+    return m_results;
+}
+
 StationView *MainWindow::openStation()
 {
     if (!m_station) {
@@ -702,6 +717,11 @@ void MainWindow::createActions()
     m_bridgeAction->setObjectName(QStringLiteral("liveBridgeAction"));
     m_bridgeAction->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_B));
     connect(m_bridgeAction, &QAction::triggered, this, [this] { openLiveBridge(); });
+    // Tools > Results. (Ctrl+Shift+H is Calibration history's: D for database.)
+    m_resultsAction = new QAction(this);
+    m_resultsAction->setObjectName(QStringLiteral("resultsAction"));
+    m_resultsAction->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_D));
+    connect(m_resultsAction, &QAction::triggered, this, [this] { openResults(); });
     m_bridgeStatus = new QToolButton(this);
     m_bridgeStatus->setObjectName(QStringLiteral("bridgeStatusButton"));
     m_bridgeStatus->setAutoRaise(true);
@@ -772,6 +792,7 @@ void MainWindow::createMenus()
     m_toolsMenu->addSeparator();
     m_toolsMenu->addAction(m_stationAction);
     m_toolsMenu->addAction(m_bridgeAction);
+    m_toolsMenu->addAction(m_resultsAction);
     m_helpMenu = menuBar()->addMenu(QString());
     m_helpMenu->addAction(m_userGuideAction);
     m_helpMenu->addAction(m_shortcutsAction);
@@ -823,6 +844,9 @@ void MainWindow::retranslateUi()
     m_bridgeAction->setText(tr("&Live bridge…"));
     m_bridgeAction->setStatusTip(tr("Send the connected devices' samples live to Foxglove, Lichtblick and PlotJuggler"));
     m_bridgeStatus->setToolTip(tr("The live bridge is running: click to open its window"));
+    m_resultsAction->setText(tr("&Results…"));
+    m_resultsAction->setStatusTip(tr("Every module the station tested: search by serial number, each attempt's "
+                                     "measurements, the yield and a measurement's trend with Cpk"));
     m_resetLayoutAction->setText(tr("&Reset layout"));
     m_resetLayoutAction->setStatusTip(tr("Put every panel of this tab back where the chosen layout has it"));
     m_tools->retranslate();

@@ -39,6 +39,7 @@ class ConsoleWidget;
 class DeviceWorkspace;
 class LiveBridgeDialog;
 class PreferencesDialog;
+class ResultsWindow;
 class StationView;
 class ToolActions;
 class StatusFlagsWidget;
@@ -122,6 +123,9 @@ public:
     // the window closes; the status bar shows it while it runs.
     LiveBridgeDialog *openLiveBridge();
     BridgeController *liveBridge() const { return m_bridge; }
+    // Tools > Results: opens the results window on the station's database (the line database
+    // when one is set), or raises the one open.
+    ResultsWindow *openResults();
 
 Q_SIGNALS:
     // The user accepted new preferences (the owner stores them).
@@ -191,6 +195,8 @@ private:
     QAction *m_bridgeAction = nullptr;
     BridgeController *m_bridge = nullptr;
     QPointer<LiveBridgeDialog> m_bridgeDialog;
+    QAction *m_resultsAction = nullptr;
+    QPointer<ResultsWindow> m_results;
     QToolButton *m_bridgeStatus = nullptr;
     DeviceWorkspace::LayoutPreset m_preset = DeviceWorkspace::LayoutPreset::Monitor;
     Preferences m_prefs;
