@@ -182,13 +182,21 @@ void TrendView::showSeries(const QString &measurement, std::vector<Point> points
     }
     m_pass->replace(pass);
     m_fail->replace(fail);
+    m_chart->setTitle(ResultsFormat::shortText(measurement).toHtmlEscaped());
+    m_view->setToolTip(ResultsFormat::toolTip(measurement));
+    fitAxes();
+    // The limits run across the whole time axis: modules tested within a minute of each other
+    // would otherwise draw them as a dot.
+    const double left = double(m_x->min().toMSecsSinceEpoch()), right = double(m_x->max().toMSecsSinceEpoch());
+    for (QList<QPointF> *line : {&low, &high, &marginalLow, &marginalHigh})
+        if (!line->isEmpty()) {
+            line->prepend(QPointF(left, line->first().y()));
+            line->append(QPointF(right, line->last().y()));
+        }
     m_low->replace(low);
     m_high->replace(high);
     m_marginalLow->replace(marginalLow);
     m_marginalHigh->replace(marginalHigh);
-    m_chart->setTitle(ResultsFormat::shortText(measurement).toHtmlEscaped());
-    m_view->setToolTip(ResultsFormat::toolTip(measurement));
-    fitAxes();
     updateStats();
 }
 
