@@ -226,7 +226,9 @@ StationView::StationView(QWidget *parent) : QWidget(parent)
     auto *layout = new QVBoxLayout(this);
     layout->addLayout(top);
     layout->addWidget(m_summary);
-    layout->addWidget(m_placeholder);
+    // The placeholder and the tiles take turns; either takes the height the form leaves (the
+    // port list would otherwise stretch into it before a run).
+    layout->addWidget(m_placeholder, 1);
     layout->addWidget(m_scroll, 1);
 
     connect(m_model, &QAbstractItemModel::dataChanged, this,
