@@ -48,6 +48,13 @@ ModuleResult sampleResult(const QString &serial, Verdict verdict)
     r.steps = {id, st};
     return r;
 }
+
+// The value of a parameter of the plan's first step, as the plan's JSON writes it.
+QJsonValue firstStepValue(const TestPlan &plan, const QString &key)
+{
+    return QJsonDocument::fromJson(plan.toJson()).object().value(QStringLiteral("steps")).toArray().at(0).toObject().value(key);
+}
+
 } // namespace
 
 class TestTestPlan : public QObject {
@@ -182,14 +189,7 @@ void TestTestPlan::marginalRoundTrip()
     QCOMPARE(plan->steps[0].marginalOf(k.constData()).value_or(-1), band);
     QVERIFY2(plan->problems().isEmpty(), qPrintable(plan->problems().join(u'\n')));
     // Written back as the object, and read back the same.
-    const QJsonObject written = QJsonDocument::fromJson(plan->toJson())
-                                    .object()
-                                    .value(QStringLiteral("steps"))
-                                    .toArray()
-                                    .at(0)
-                                    .toObject()
-                                    .value(key)
-                                    .toObject();
+    const QJsonObject written = firstStepValue(*plan, key).toObject();
     QCOMPARE(written.value(QStringLiteral("high")).toDouble(), high);
     QCOMPARE(written.value(QStringLiteral("marginal_high")).toDouble(), band);
     QCOMPARE(written.size(), 2);
@@ -200,14 +200,7 @@ void TestTestPlan::marginalRoundTrip()
     // Without the band the limit is a plain number again.
     TestPlan plain = *back;
     plain.steps[0].marginal.remove(key);
-    QVERIFY(QJsonDocument::fromJson(plain.toJson())
-                .object()
-                .value(QStringLiteral("steps"))
-                .toArray()
-                .at(0)
-                .toObject()
-                .value(key)
-                .isDouble());
+    QVERIFY(firstStepValue(plain, key).isDouble());
 }
 
 void TestTestPlan::marginalProblems_data()
