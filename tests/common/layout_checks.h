@@ -2,7 +2,9 @@
 // The layout test's eye (issue 14), shared by every window that is judged by it (tst_layout,
 // tst_station_view): every visible widget inside the window and no label cut short.
 #include <QAbstractScrollArea>
+#include <QApplication>
 #include <QDockWidget>
+#include <QFile>
 #include <QFontMetrics>
 #include <QGraphicsView>
 #include <QLabel>
@@ -10,6 +12,7 @@
 #include <QScrollArea>
 #include <QStringList>
 #include <QTabBar>
+#include <QTemporaryDir>
 #include <QTest>
 #include <QTextDocumentFragment>
 #include <QWidget>
@@ -128,6 +131,42 @@ inline bool layoutSettled(const QWidget &top, int timeoutMs = 5000)
             return same >= 3;
         },
         timeoutMs);
+}
+
+// A layout test's rows: every size in English and in Simplified Chinese (columns "size" and
+// "language").
+inline void addSizesAndLanguages(std::initializer_list<QSize> sizes)
+{
+    QTest::addColumn<QSize>("size");
+    QTest::addColumn<QString>("language");
+    for (const QString &lang : {QStringLiteral("en"), QStringLiteral("zh_CN")})
+        for (const QSize &size : sizes)
+            QTest::addRow("%dx%d %s", size.width(), size.height(), qPrintable(lang)) << size << lang;
+}
+
+// Runs a window's test object on an offscreen screen of this size (the platform's default is
+// 800x600), with settings of its own (organisation ImuDeskTest, application name).
+template <class TestObject>
+int runOnOffscreenScreen(int argc, char **argv, QSize screen, const QString &name)
+{
+    QTemporaryDir dir;
+    const QString config = dir.filePath(QStringLiteral("screen.json"));
+    QFile file(config);
+    if (!file.open(QIODevice::WriteOnly))
+        return 2;
+    file.write(QStringLiteral("{\"screens\": [{\"name\": \"%1\", \"x\": 0, \"y\": 0, \"width\": %2, "
+                              "\"height\": %3, \"logicalDpi\": 96, \"logicalBaseDpi\": 96, \"dpr\": 1}]}")
+                   .arg(name)
+                   .arg(screen.width())
+                   .arg(screen.height())
+                   .toLatin1());
+    file.close();
+    qputenv("QT_QPA_PLATFORM", "offscreen:configfile=" + config.toLocal8Bit());
+    QApplication app(argc, argv);
+    app.setOrganizationName(QStringLiteral("ImuDeskTest"));
+    app.setApplicationName(name);
+    TestObject test;
+    return QTest::qExec(&test, argc, argv);
 }
 
 } // namespace imudesk::test::layout

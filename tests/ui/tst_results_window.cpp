@@ -430,14 +430,7 @@ private Q_SLOTS:
         QCOMPARE(ran, 1);
     }
 
-    void layout_data()
-    {
-        QTest::addColumn<QSize>("size");
-        QTest::addColumn<QString>("language");
-        for (const QString &lang : {QStringLiteral("en"), QStringLiteral("zh_CN")})
-            for (const QSize &size : {kSmall, kLarge})
-                QTest::addRow("%dx%d %s", size.width(), size.height(), qPrintable(lang)) << size << lang;
-    }
+    void layout_data() { test::layout::addSizesAndLanguages({kSmall, kLarge}); }
 
     void layout()
     {
@@ -661,24 +654,7 @@ private Q_SLOTS:
 
 static int testMain(int argc, char **argv)
 {
-    // A 1920x1080 screen (the offscreen platform's default is 800x600), as tst_station_view has.
-    QTemporaryDir dir;
-    const QString config = dir.filePath(QStringLiteral("screen.json"));
-    QFile file(config);
-    if (!file.open(QIODevice::WriteOnly))
-        return 2;
-    file.write(QStringLiteral("{\"screens\": [{\"name\": \"results-test\", \"x\": 0, \"y\": 0, \"width\": %1, "
-                              "\"height\": %2, \"logicalDpi\": 96, \"logicalBaseDpi\": 96, \"dpr\": 1}]}")
-                   .arg(kLarge.width())
-                   .arg(kLarge.height())
-                   .toLatin1());
-    file.close();
-    qputenv("QT_QPA_PLATFORM", "offscreen:configfile=" + config.toLocal8Bit());
-    QApplication app(argc, argv);
-    app.setOrganizationName(QStringLiteral("ImuDeskTest"));
-    app.setApplicationName(QStringLiteral("tst_results_window"));
-    TstResultsWindow test;
-    return QTest::qExec(&test, argc, argv);
+    return test::layout::runOnOffscreenScreen<TstResultsWindow>(argc, argv, kLarge, QStringLiteral("tst_results_window"));
 }
 
 IMUDESK_TEST_CUSTOM_MAIN(testMain)
