@@ -92,6 +92,52 @@ const std::vector<std::vector<const char *>> &migrations()
     return m;
 }
 
+// An INSERT of many rows in one statement (one round trip to a server instead of one per row),
+// prepared once per row count; a row already there is left as it is.
+class RowsInsert {
+public:
+    RowsInsert(const QSqlDatabase &db, const char *head, int columns) : m_db(db), m_head(QString::fromLatin1(head)), m_columns(columns) {}
+
+    // values: the rows one after the other, `columns` each.
+    bool insert(const QVariantList &values, QString *why)
+    {
+        const int rows = int(values.size()) / m_columns;
+        for (int first = 0; first < rows; first += kMaxRows) {
+            const int n = std::min(kMaxRows, rows - first);
+            QSqlQuery &q = query(n);
+            for (int i = 0; i < n * m_columns; ++i)
+                q.bindValue(i, values[first * m_columns + i]);
+            if (!q.exec()) {
+                *why = q.lastError().text().trimmed();
+                return false;
+            }
+        }
+        return true;
+    }
+
+private:
+    static constexpr int kMaxRows = 50;
+
+    QSqlQuery &query(int rows)
+    {
+        auto it = m_prepared.find(rows);
+        if (it == m_prepared.end()) {
+            QStringList marks(m_columns, QStringLiteral("?"));
+            const QString row = QLatin1Char('(') + marks.join(QStringLiteral(", ")) + QLatin1Char(')');
+            QStringList all(rows, row);
+            QSqlQuery q(m_db);
+            q.prepare(m_head + QStringLiteral(" VALUES ") + all.join(QStringLiteral(", ")) + QStringLiteral(" ON CONFLICT DO NOTHING"));
+            it = m_prepared.emplace(rows, std::move(q)).first;
+        }
+        return it->second;
+    }
+
+    QSqlDatabase m_db;
+    QString m_head;
+    int m_columns;
+    std::map<int, QSqlQuery> m_prepared;
+};
+
 constexpr const char *kModuleColumns =
     "m.uuid, m.slot, m.serial, m.product, m.firmware_before, m.firmware_after, m.attempt, m.outcome, m.started, "
     "m.finished, r.uuid, r.station_id, r.operator, r.plan_name, r.plan_sha256, r.imudesk_version, r.started, "
@@ -327,53 +373,51 @@ bool ResultsStore::commit(const std::vector<ModuleRecord> &modules, QString *err
         return false;
     }
     const ModuleRecord *current = nullptr;
-    const auto failed = [&](const QSqlQuery &q) {
+    const auto failed = [&](const QString &why) {
         if (error)
             *error = tr("Storing the result of %1 in %2 failed: %3. It is still in the run folder.")
-                         .arg(current ? current->serial : QString(), displayLocation(m_location), q.lastError().text().trimmed());
+                         .arg(current ? current->serial : QString(), displayLocation(m_location), why);
         db.rollback();
         return false;
     };
-    // One prepared statement per table for the whole batch (a batch of uploads is many rows).
-    QSqlQuery runQ(db), moduleQ(db), stepQ(db), measureQ(db), artifactQ(db);
-    runQ.prepare(QStringLiteral("INSERT INTO run (uuid, station_id, operator, plan_name, plan_sha256, imudesk_version, "
-                                "started, finished) VALUES (?, ?, ?, ?, ?, ?, ?, ?) ON CONFLICT DO NOTHING"));
-    moduleQ.prepare(QStringLiteral("INSERT INTO module (uuid, run_uuid, slot, serial, product, firmware_before, "
-                                   "firmware_after, attempt, outcome, started, finished, serial_raw, marginal) "
-                                   "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?) ON CONFLICT DO NOTHING"));
-    stepQ.prepare(QStringLiteral("INSERT INTO step (module_uuid, idx, kind, name, outcome, skipped, detail, started, "
-                                 "finished) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?) ON CONFLICT DO NOTHING"));
-    measureQ.prepare(QStringLiteral("INSERT INTO measurement (module_uuid, step, name, value, unit, comparator, low, "
-                                    "high, outcome, marginal_low, marginal_high, marginal) "
-                                    "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?) ON CONFLICT DO NOTHING"));
-    artifactQ.prepare(QStringLiteral("INSERT INTO artifact (module_uuid, kind, mime, sha256, location) "
-                                     "VALUES (?, ?, ?, ?, ?) ON CONFLICT DO NOTHING"));
-    const auto exec = [](QSqlQuery &q, const QVariantList &values) {
-        for (int i = 0; i < values.size(); ++i)
-            q.bindValue(i, values[i]);
-        return q.exec();
-    };
+    // One prepared statement per table for the whole batch, a module's steps and measurements
+    // each in one statement.
+    RowsInsert runs(db, "INSERT INTO run (uuid, station_id, operator, plan_name, plan_sha256, imudesk_version, started, finished)", 8);
+    RowsInsert mods(db, "INSERT INTO module (uuid, run_uuid, slot, serial, product, firmware_before, firmware_after, attempt, "
+                        "outcome, started, finished, serial_raw, marginal)", 13);
+    RowsInsert steps(db, "INSERT INTO step (module_uuid, idx, kind, name, outcome, skipped, detail, started, finished)", 9);
+    RowsInsert values(db, "INSERT INTO measurement (module_uuid, step, name, value, unit, comparator, low, high, outcome, "
+                          "marginal_low, marginal_high, marginal)", 12);
+    RowsInsert files(db, "INSERT INTO artifact (module_uuid, kind, mime, sha256, location)", 5);
+    QString why;
     for (const ModuleRecord &m : modules) {
         current = &m;
-        if (!exec(runQ, {m.run.uuid, m.run.stationId, m.run.operatorName, m.run.planName, m.run.planSha256,
-                         m.run.imudeskVersion, iso(m.run.started), iso(m.run.finished)}))
-            return failed(runQ);
-        if (!exec(moduleQ, {m.uuid, m.run.uuid, m.slot, m.serial, m.product, m.firmwareBefore, m.firmwareAfter,
-                            m.attempt, outcomeKey(m.outcome), iso(m.started), iso(m.finished),
-                            m.serialRaw.isNull() ? QVariant(QByteArray("")) : QVariant(m.serialRaw), m.marginal ? 1 : 0}))
-            return failed(moduleQ);
+        if (!runs.insert({m.run.uuid, m.run.stationId, m.run.operatorName, m.run.planName, m.run.planSha256,
+                          m.run.imudeskVersion, iso(m.run.started), iso(m.run.finished)},
+                         &why))
+            return failed(why);
+        if (!mods.insert({m.uuid, m.run.uuid, m.slot, m.serial, m.product, m.firmwareBefore, m.firmwareAfter, m.attempt,
+                          outcomeKey(m.outcome), iso(m.started), iso(m.finished),
+                          m.serialRaw.isNull() ? QVariant(QByteArray("")) : QVariant(m.serialRaw), m.marginal ? 1 : 0},
+                         &why))
+            return failed(why);
+        QVariantList rows;
         for (const StepRecord &s : m.steps)
-            if (!exec(stepQ, {m.uuid, s.index, s.kind, s.name, outcomeKey(s.outcome), s.skipped ? 1 : 0, s.detail,
-                              iso(s.started), iso(s.finished)}))
-                return failed(stepQ);
+            rows << m.uuid << s.index << s.kind << s.name << outcomeKey(s.outcome) << (s.skipped ? 1 : 0) << s.detail
+                 << iso(s.started) << iso(s.finished);
+        if (!steps.insert(rows, &why))
+            return failed(why);
+        rows.clear();
         for (const MeasurementRecord &v : m.measurements)
-            if (!exec(measureQ, {m.uuid, v.step, v.name, v.value, v.unit, v.comparator, optional(v.low), optional(v.high),
-                                 outcomeKey(v.outcome), optional(v.marginalLow), optional(v.marginalHigh),
-                                 v.marginal ? 1 : 0}))
-                return failed(measureQ);
+            rows << m.uuid << v.step << v.name << v.value << v.unit << v.comparator << optional(v.low) << optional(v.high)
+                 << outcomeKey(v.outcome) << optional(v.marginalLow) << optional(v.marginalHigh) << (v.marginal ? 1 : 0);
+        if (!values.insert(rows, &why))
+            return failed(why);
+        rows.clear();
         for (const ArtifactRecord &a : m.artifacts)
-            if (!exec(artifactQ, {m.uuid, a.kind, a.mime, a.sha256, a.location}))
-                return failed(artifactQ);
+            rows << m.uuid << a.kind << a.mime << a.sha256 << a.location;
+        if (!files.insert(rows, &why))
+            return failed(why);
     }
     if (!db.commit()) {
         if (error)
