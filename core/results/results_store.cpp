@@ -138,6 +138,8 @@ private:
     std::map<int, QSqlQuery> m_prepared;
 };
 
+constexpr const char *kArtifactInsert = "INSERT INTO artifact (module_uuid, kind, mime, sha256, location)";
+
 constexpr const char *kModuleColumns =
     "m.uuid, m.slot, m.serial, m.product, m.firmware_before, m.firmware_after, m.attempt, m.outcome, m.started, "
     "m.finished, r.uuid, r.station_id, r.operator, r.plan_name, r.plan_sha256, r.imudesk_version, r.started, "
@@ -388,7 +390,7 @@ bool ResultsStore::commit(const std::vector<ModuleRecord> &modules, QString *err
     RowsInsert steps(db, "INSERT INTO step (module_uuid, idx, kind, name, outcome, skipped, detail, started, finished)", 9);
     RowsInsert values(db, "INSERT INTO measurement (module_uuid, step, name, value, unit, comparator, low, high, outcome, "
                           "marginal_low, marginal_high, marginal)", 12);
-    RowsInsert files(db, "INSERT INTO artifact (module_uuid, kind, mime, sha256, location)", 5);
+    RowsInsert files(db, kArtifactInsert, 5);
     QString why;
     for (const ModuleRecord &m : modules) {
         current = &m;
@@ -434,15 +436,14 @@ bool ResultsStore::addArtifact(const QString &moduleUuid, const ArtifactRecord &
     QSqlDatabase db = QSqlDatabase::database(m_connection, false);
     db.transaction();
     QSqlQuery q(db);
-    if (run(q, QStringLiteral("INSERT INTO artifact (module_uuid, kind, mime, sha256, location) VALUES (?, ?, ?, ?, ?) "
-                              "ON CONFLICT DO NOTHING"),
-            {moduleUuid, a.kind, a.mime, a.sha256, a.location})
+    QString why;
+    if (RowsInsert(db, kArtifactInsert, 5).insert({moduleUuid, a.kind, a.mime, a.sha256, a.location}, &why)
         && (m_kind == Kind::PostgreSQL
             || run(q, QStringLiteral("UPDATE module SET rev = rev + 1 WHERE uuid = ?"), {moduleUuid}))
         && db.commit())
         return true;
     if (error)
-        *error = q.lastError().text();
+        *error = why.isEmpty() ? q.lastError().text() : why;
     db.rollback();
     return false;
 }

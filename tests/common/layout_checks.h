@@ -144,16 +144,15 @@ inline void addSizesAndLanguages(std::initializer_list<QSize> sizes)
             QTest::addRow("%dx%d %s", size.width(), size.height(), qPrintable(lang)) << size << lang;
 }
 
-// Runs a window's test object on an offscreen screen of this size (the platform's default is
-// 800x600), with settings of its own (organisation ImuDeskTest, application name).
-template <class TestObject>
-int runOnOffscreenScreen(int argc, char **argv, QSize screen, const QString &name)
+// Points the offscreen platform at one screen of this size in pixels (its default is 800x600).
+// The configuration file goes into dir, which must outlive the application; false when it
+// cannot be written.
+inline bool useOffscreenScreen(const QTemporaryDir &dir, QSize screen, const QString &name)
 {
-    QTemporaryDir dir;
     const QString config = dir.filePath(QStringLiteral("screen.json"));
     QFile file(config);
     if (!file.open(QIODevice::WriteOnly))
-        return 2;
+        return false;
     file.write(QStringLiteral("{\"screens\": [{\"name\": \"%1\", \"x\": 0, \"y\": 0, \"width\": %2, "
                               "\"height\": %3, \"logicalDpi\": 96, \"logicalBaseDpi\": 96, \"dpr\": 1}]}")
                    .arg(name)
@@ -162,6 +161,17 @@ int runOnOffscreenScreen(int argc, char **argv, QSize screen, const QString &nam
                    .toLatin1());
     file.close();
     qputenv("QT_QPA_PLATFORM", "offscreen:configfile=" + config.toLocal8Bit());
+    return true;
+}
+
+// Runs a window's test object on an offscreen screen of this size, with settings of its own
+// (organisation ImuDeskTest, application name).
+template <class TestObject>
+int runOnOffscreenScreen(int argc, char **argv, QSize screen, const QString &name)
+{
+    QTemporaryDir dir;
+    if (!useOffscreenScreen(dir, screen, name))
+        return 2;
     QApplication app(argc, argv);
     app.setOrganizationName(QStringLiteral("ImuDeskTest"));
     app.setApplicationName(name);

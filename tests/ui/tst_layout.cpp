@@ -710,17 +710,9 @@ static int testMain(int argc, char **argv)
     if (scale != 1.0)
         qputenv("QT_SCALE_FACTOR", QByteArray::number(scale));
     QTemporaryDir dir;
-    const QString config = dir.filePath(QStringLiteral("screen.json"));
-    QFile file(config);
-    if (!file.open(QIODevice::WriteOnly))
+    if (!imudesk::test::layout::useOffscreenScreen(
+            dir, QSize(qRound(screen.width() * scale), qRound(screen.height() * scale)), QStringLiteral("layout-test")))
         return 2;
-    file.write(QStringLiteral("{\"screens\": [{\"name\": \"layout-test\", \"x\": 0, \"y\": 0, \"width\": %1, "
-                              "\"height\": %2, \"logicalDpi\": 96, \"logicalBaseDpi\": 96, \"dpr\": 1}]}")
-                   .arg(qRound(screen.width() * scale))
-                   .arg(qRound(screen.height() * scale))
-                   .toLatin1());
-    file.close();
-    qputenv("QT_QPA_PLATFORM", "offscreen:configfile=" + config.toLocal8Bit());
     qputenv("IMUDESK_NO_SAVE_LAYOUT", "1");
     // The wizards keep their runs under the data location: a temporary one, never the user's
     // ~/.local/share (the GUI that screenshotRunLeavesSettingsAlone starts inherits it too).
