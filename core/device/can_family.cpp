@@ -286,7 +286,8 @@ void CanFamily::unanswered(const Request &r, RequestResult &result)
         return;
     }
     if (result.status == RequestStatus::Timeout
-        && (s.expect == CanJobStep::Expect::Nothing || s.expect == CanJobStep::Expect::NoPdoFrom)) {
+        && (s.expect == CanJobStep::Expect::Nothing || s.expect == CanJobStep::Expect::NoPdoFrom
+            || s.expect == CanJobStep::Expect::DataSeen)) {
         result.status = RequestStatus::Ok; // the pause is over; no data came
         result.message.clear();
         result.reply = m_lastValue;
@@ -383,6 +384,10 @@ bool CanFamily::matchStep(const CanFrame &f, const DecodedFrame &d)
             answer(true, uint32_t(s.node), QString());
         return false; // the frame still counts as data
     case CanJobStep::Expect::PdoFrom:
+        if (isDataFrame(d) && dataSource(d) == m_target)
+            answer(true, 1, QString());
+        return false;
+    case CanJobStep::Expect::DataSeen:
         if (isDataFrame(d) && dataSource(d) == m_target)
             answer(true, 1, QString());
         return false;

@@ -23,6 +23,7 @@ struct CanJobStep {
         PdoFrom,       // a data frame (TPDO, PDO, data PGN) from the target node (output on took effect)
         NoPdoFrom,     // no data frame from the target node until the timeout (output off took effect)
         PgnFrom,       // a J1939 data frame of PGN `pgn` from the target node (a trigger's answer)
+        DataSeen,      // a data frame from the target ends the wait early; the timeout goes on too
     };
     bool hasTx = true;
     protocol::can::CanFrame tx;

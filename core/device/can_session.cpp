@@ -470,12 +470,19 @@ quint64 CanSession::outputJob(const QString &title, const CanJobStep &action, bo
         watch.expect = CanJobStep::Expect::PdoFrom;
         return submitJob(CanJob{0, title, {action, watch}});
     }
+    // Off is confirmed by data that stops, so a session that has not seen the target's data yet
+    // (one just opened) first waits for a frame of it, up to kNmtConfirmMs.
+    CanJobStep before;
+    before.hasTx = false;
+    before.what = title;
+    before.expect = CanJobStep::Expect::DataSeen;
+    before.timeoutMs = kNmtConfirmMs;
     CanJobStep settle;
     settle.hasTx = false;
     settle.what = title;
     settle.pauseMs = kNmtSettleMs;
     watch.expect = CanJobStep::Expect::NoPdoFrom;
-    return submitJob(CanJob{0, title, {action, settle, watch}});
+    return submitJob(CanJob{0, title, {before, action, settle, watch}});
 }
 
 quint64 CanSession::setOutputEnabled(bool on)

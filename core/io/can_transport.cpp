@@ -9,6 +9,7 @@
 #include <QVariant>
 
 #include <chrono>
+#include <utility>
 #include <vector>
 
 namespace imudesk::io {
@@ -82,6 +83,8 @@ bool CanTransport::open(const QString &address, int bitrate, QString *error)
             Q_EMIT notice(tr("CAN interface error: %1").arg(m_bus->errorString()));
     });
     connect(m_bus.get(), &QCanBusDevice::stateChanged, this, [this](QCanBusDevice::CanBusDeviceState s) {
+        if (s == QCanBusDevice::ConnectedState)
+            sendBacklog();
         if (s == QCanBusDevice::UnconnectedState && m_bus)
             Q_EMIT failed(tr("the CAN interface %1 closed; received data is kept").arg(m_address));
     });
@@ -101,6 +104,7 @@ void CanTransport::close()
     if (!m_bus)
         return;
     auto bus = std::move(m_bus);
+    m_backlog.clear();
     bus->disconnect(this);
     if (bus->state() != QCanBusDevice::UnconnectedState)
         bus->disconnectDevice();
@@ -108,7 +112,8 @@ void CanTransport::close()
 
 bool CanTransport::isOpen() const
 {
-    return m_bus && m_bus->state() == QCanBusDevice::ConnectedState;
+    return m_bus
+        && (m_bus->state() == QCanBusDevice::ConnectedState || m_bus->state() == QCanBusDevice::ConnectingState);
 }
 
 qint64 CanTransport::write(const QByteArray &records)
@@ -117,6 +122,12 @@ qint64 CanTransport::write(const QByteArray &records)
         return 0;
     if (!isOpen())
         return -1;
+    if (m_bus->state() == QCanBusDevice::ConnectingState) {
+        if (m_backlog.size() + records.size() > kBacklogBytes)
+            return -1;
+        m_backlog.append(records);
+        return records.size();
+    }
     can::CanRecordReader reader;
     std::vector<can::CanRecord> frames;
     reader.feed(records, frames);
@@ -124,6 +135,13 @@ qint64 CanTransport::write(const QByteArray &records)
         if (!m_bus->writeFrame(can::toQt(r.frame)))
             return -1;
     return records.size();
+}
+
+void CanTransport::sendBacklog()
+{
+    const QByteArray backlog = std::exchange(m_backlog, QByteArray());
+    if (!backlog.isEmpty() && write(backlog) != backlog.size())
+        Q_EMIT notice(tr("frames written while the CAN interface %1 was connecting could not be sent").arg(m_address));
 }
 
 void CanTransport::onFramesReceived()

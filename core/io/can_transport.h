@@ -36,8 +36,10 @@ public:
 
     bool open(const QString &address, int bitrate, QString *error) override;
     void close() override;
-    // Open and connected: frames can go out.
+    // Open: frames can go out. While the interface is still connecting (virtualcan's TCP link
+    // to its bus server) they wait, kBacklogBytes of records at most, and leave in order once connected.
     bool isOpen() const override;
+    static constexpr qsizetype kBacklogBytes = 256 * 1024;
     // A new bit rate needs the interface reopened: not done under a running session.
     bool setBaud(int bitrate) override { return bitrate == m_bitrate; }
     int baud() const override { return m_bitrate; }
@@ -49,12 +51,14 @@ public:
 
 private:
     void onFramesReceived();
+    void sendBacklog();
 
     std::unique_ptr<QCanBusDevice> m_bus;
     QString m_address;
     int m_bitrate = 0;
     bool m_fd = false;
     int m_dataBitrate = 0;
+    QByteArray m_backlog; // records written while connecting
 };
 
 } // namespace imudesk::io

@@ -3,6 +3,7 @@
 // virtualcan TCP port; the simulator process owns the plugin's server.
 
 #include "../common/cli_process.h"
+#include "../common/cli_run.h"
 #include "../common/test_main.h"
 
 #include <QCanBus>
@@ -13,28 +14,12 @@
 #include <QTest>
 
 namespace {
-const QString kCli = QString::fromUtf8(IMUDESK_CLI_PATH);
+using Run = imudesk::test::CliResult;
 
-struct Run {
-    int code = -1;
-    QString out, err;
-};
-
-Run cli(const QStringList &args, int timeoutMs = 20000)
+// Each command's own waits end within 30 s, so a minute is a hang (reported with its stacks).
+Run cli(const QStringList &args)
 {
-    QProcess p;
-    p.start(kCli, args);
-    Run r;
-    if (!p.waitForFinished(timeoutMs)) {
-        p.kill();
-        p.waitForFinished();
-        r.err = QStringLiteral("timed out");
-        return r;
-    }
-    r.code = p.exitCode();
-    r.out = QString::fromUtf8(p.readAllStandardOutput());
-    r.err = QString::fromUtf8(p.readAllStandardError());
-    return r;
+    return imudesk::test::runCli(args, 60000);
 }
 } // namespace
 
