@@ -4328,17 +4328,17 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>节点 %1 在“%2”之前也没有发送数据，因此看不到其效果：请检查节点 ID</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+21"/>
         <source>node %1 sent no data within %2 ms of &quot;%3&quot;: if its TPDOs wait for SYNC, send one; otherwise check the node ID, its output intervals and that the module is powered</source>
         <translation>节点 %1 在“%3”后 %2 ms 内没有发送数据：如果其 TPDO 等待 SYNC，请发送一个；否则请检查节点 ID、输出间隔以及模块是否上电</translation>
     </message>
     <message>
-        <location line="+88"/>
+        <location line="+92"/>
         <source>node %1 still sends data after &quot;%2&quot;: check the node ID</source>
         <translation>节点 %1 在“%2”之后仍在发送数据：请检查节点 ID</translation>
     </message>
     <message>
-        <location line="-95"/>
+        <location line="-99"/>
         <source>no answer within %1 ms: node %2 sent no PGN %3 after &quot;%4&quot; (a PGN its firmware or configuration does not send, or output off)</source>
         <translation>%1 ms 内没有应答：节点 %2 在“%4”之后没有发送 PGN %3（固件或配置不发送该 PGN，或输出已关闭）</translation>
     </message>
@@ -4368,7 +4368,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>设备拒绝了“%1”：%2</translation>
     </message>
     <message>
-        <location line="+44"/>
+        <location line="+48"/>
         <source>&quot;%1&quot; read back %2, expected %3</source>
         <translation>“%1”回读值为 %2，应为 %3</translation>
     </message>
@@ -4562,12 +4562,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <location line="+3"/>
         <location line="+66"/>
         <location line="+30"/>
-        <location line="+116"/>
+        <location line="+123"/>
         <source>the protocol is not known yet: choose it or wait for traffic</source>
         <translation>协议尚未确定：请选择协议，或等待总线上出现数据</translation>
     </message>
     <message>
-        <location line="-206"/>
+        <location line="-213"/>
         <source>the HEC495 rate code is 0 (off) to 6 (100 Hz)</source>
         <translation>HEC495 频率代码为 0（关闭）至 6（100 Hz）</translation>
     </message>
@@ -4639,12 +4639,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
     <message>
         <location line="+3"/>
         <location line="+8"/>
-        <location line="+175"/>
+        <location line="+182"/>
         <source>reset</source>
         <translation>复位</translation>
     </message>
     <message>
-        <location line="-182"/>
+        <location line="-189"/>
         <location line="+5"/>
         <location line="+8"/>
         <source>set the node ID</source>
@@ -4808,7 +4808,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>NMT 停止，所有节点</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+33"/>
         <source>output on</source>
         <translation>开启输出</translation>
     </message>
@@ -5297,7 +5297,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::io::CanTransport</name>
     <message>
-        <location filename="../core/io/can_transport.cpp" line="+66"/>
+        <location filename="../core/io/can_transport.cpp" line="+67"/>
         <source>the CAN plugin &quot;%1&quot; is not installed (available: %2)</source>
         <translation>未安装 CAN 插件“%1”（可用插件：%2）</translation>
     </message>
@@ -5312,7 +5312,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>CAN 接口错误：%1</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+6"/>
         <source>the CAN interface %1 closed; received data is kept</source>
         <translation>CAN 接口 %1 已关闭；已接收的数据会保留</translation>
     </message>
@@ -5320,6 +5320,11 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <location line="+6"/>
         <source>cannot open CAN interface %1: %2 (check the interface name, that it is up, and your permissions)</source>
         <translation>无法打开 CAN 接口 %1：%2（请检查接口名称、接口是否已启用以及访问权限）</translation>
+    </message>
+    <message>
+        <location line="+49"/>
+        <source>frames written while the CAN interface %1 was connecting could not be sent</source>
+        <translation>CAN 接口 %1 连接期间写入的帧未能发出</translation>
     </message>
 </context>
 <context>
@@ -6483,7 +6488,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::results::ResultsStore</name>
     <message>
-        <location filename="../core/results/results_store.cpp" line="+219"/>
+        <location filename="../core/results/results_store.cpp" line="+267"/>
         <source>Updating the results database %1 to schema %2 failed: %3</source>
         <translation>将结果数据库 %1 升级到架构 %2 失败：%3</translation>
     </message>
@@ -6523,12 +6528,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>将 %1 的结果存入 %2 失败：%3。结果仍保存在运行文件夹中。</translation>
     </message>
     <message>
-        <location line="+48"/>
+        <location line="+46"/>
         <source>Storing results in %1 failed: %2. They are still in the run folder.</source>
         <translation>将结果存入 %1 失败：%2。结果仍保存在运行文件夹中。</translation>
     </message>
     <message>
-        <location line="+321"/>
+        <location line="+320"/>
         <source>Roles are a PostgreSQL server&apos;s; %1 is an SQLite file.</source>
         <translation>角色属于 PostgreSQL 服务器；%1 是 SQLite 文件。</translation>
     </message>
@@ -13824,7 +13829,7 @@ Is it a results database that ImuDesk wrote? Choose another file with Open….</
 <context>
     <name>imudesk::ui::StationView</name>
     <message>
-        <location filename="../ui/station/station_view.cpp" line="+270"/>
+        <location filename="../ui/station/station_view.cpp" line="+272"/>
         <location line="+78"/>
         <source>Production station</source>
         <translation>生产测试台</translation>
@@ -14519,7 +14524,7 @@ Edit it (Edit…) and start again.</source>
         <translation>模块开始测试时间</translation>
     </message>
     <message>
-        <location line="+137"/>
+        <location line="+145"/>
         <source>No values of this measurement in the time chosen.</source>
         <translation>所选时间内没有该测量项的数值。</translation>
     </message>

@@ -4328,17 +4328,17 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>節點 %1 在「%2」之前也沒有傳送資料，因此看不到其效果：請檢查節點 ID</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+21"/>
         <source>node %1 sent no data within %2 ms of &quot;%3&quot;: if its TPDOs wait for SYNC, send one; otherwise check the node ID, its output intervals and that the module is powered</source>
         <translation>節點 %1 在「%3」後 %2 ms 內沒有傳送資料：如果其 TPDO 等待 SYNC，請傳送一個；否則請檢查節點 ID、輸出間隔以及模組是否上電</translation>
     </message>
     <message>
-        <location line="+88"/>
+        <location line="+92"/>
         <source>node %1 still sends data after &quot;%2&quot;: check the node ID</source>
         <translation>節點 %1 在「%2」之後仍在傳送資料：請檢查節點 ID</translation>
     </message>
     <message>
-        <location line="-95"/>
+        <location line="-99"/>
         <source>no answer within %1 ms: node %2 sent no PGN %3 after &quot;%4&quot; (a PGN its firmware or configuration does not send, or output off)</source>
         <translation>%1 ms 內沒有回應：節點 %2 在「%4」之後沒有傳送 PGN %3（韌體或設定不傳送該 PGN，或輸出已關閉）</translation>
     </message>
@@ -4368,7 +4368,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>裝置拒絕了「%1」：%2</translation>
     </message>
     <message>
-        <location line="+44"/>
+        <location line="+48"/>
         <source>&quot;%1&quot; read back %2, expected %3</source>
         <translation>「%1」回讀值為 %2，預期為 %3</translation>
     </message>
@@ -4562,12 +4562,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <location line="+3"/>
         <location line="+66"/>
         <location line="+30"/>
-        <location line="+116"/>
+        <location line="+123"/>
         <source>the protocol is not known yet: choose it or wait for traffic</source>
         <translation>尚未得知協定：請選擇協定或等待匯流排上的資料</translation>
     </message>
     <message>
-        <location line="-206"/>
+        <location line="-213"/>
         <source>the HEC495 rate code is 0 (off) to 6 (100 Hz)</source>
         <translation>HEC495 頻率代碼為 0（關閉）到 6（100 Hz）</translation>
     </message>
@@ -4639,12 +4639,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
     <message>
         <location line="+3"/>
         <location line="+8"/>
-        <location line="+175"/>
+        <location line="+182"/>
         <source>reset</source>
         <translation>重設</translation>
     </message>
     <message>
-        <location line="-182"/>
+        <location line="-189"/>
         <location line="+5"/>
         <location line="+8"/>
         <source>set the node ID</source>
@@ -4808,7 +4808,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>NMT 停止，所有節點</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+33"/>
         <source>output on</source>
         <translation>開啟輸出</translation>
     </message>
@@ -5297,7 +5297,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::io::CanTransport</name>
     <message>
-        <location filename="../core/io/can_transport.cpp" line="+66"/>
+        <location filename="../core/io/can_transport.cpp" line="+67"/>
         <source>the CAN plugin &quot;%1&quot; is not installed (available: %2)</source>
         <translation>未安裝 CAN 外掛程式「%1」（可用：%2）</translation>
     </message>
@@ -5312,7 +5312,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>CAN 介面錯誤：%1</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+6"/>
         <source>the CAN interface %1 closed; received data is kept</source>
         <translation>CAN 介面 %1 已關閉；已接收的資料會保留</translation>
     </message>
@@ -5320,6 +5320,11 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <location line="+6"/>
         <source>cannot open CAN interface %1: %2 (check the interface name, that it is up, and your permissions)</source>
         <translation>無法開啟 CAN 介面 %1：%2（請檢查介面名稱、介面是否已啟用以及存取權限）</translation>
+    </message>
+    <message>
+        <location line="+49"/>
+        <source>frames written while the CAN interface %1 was connecting could not be sent</source>
+        <translation>CAN 介面 %1 連線期間寫入的訊框未能送出</translation>
     </message>
 </context>
 <context>
@@ -6483,7 +6488,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::results::ResultsStore</name>
     <message>
-        <location filename="../core/results/results_store.cpp" line="+219"/>
+        <location filename="../core/results/results_store.cpp" line="+267"/>
         <source>Updating the results database %1 to schema %2 failed: %3</source>
         <translation>將結果資料庫 %1 升級到結構描述 %2 失敗：%3</translation>
     </message>
@@ -6523,12 +6528,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>將 %1 的結果存入 %2 失敗：%3。結果仍保存在執行資料夾中。</translation>
     </message>
     <message>
-        <location line="+48"/>
+        <location line="+46"/>
         <source>Storing results in %1 failed: %2. They are still in the run folder.</source>
         <translation>將結果存入 %1 失敗：%2。結果仍保存在執行資料夾中。</translation>
     </message>
     <message>
-        <location line="+321"/>
+        <location line="+320"/>
         <source>Roles are a PostgreSQL server&apos;s; %1 is an SQLite file.</source>
         <translation>角色屬於 PostgreSQL 伺服器；%1 是 SQLite 檔案。</translation>
     </message>
@@ -13824,7 +13829,7 @@ Is it a results database that ImuDesk wrote? Choose another file with Open….</
 <context>
     <name>imudesk::ui::StationView</name>
     <message>
-        <location filename="../ui/station/station_view.cpp" line="+270"/>
+        <location filename="../ui/station/station_view.cpp" line="+272"/>
         <location line="+78"/>
         <source>Production station</source>
         <translation>生產測試臺</translation>
@@ -14519,7 +14524,7 @@ Edit it (Edit…) and start again.</source>
         <translation>模組開始測試時間</translation>
     </message>
     <message>
-        <location line="+137"/>
+        <location line="+145"/>
         <source>No values of this measurement in the time chosen.</source>
         <translation>所選時間內沒有該量測項的數值。</translation>
     </message>
