@@ -208,12 +208,14 @@ private Q_SLOTS:
         r.serialRaw = notUtf8;
         r.serial = station::bytesAsText(notUtf8);
         QCOMPARE(r.serial, QStringLiteral("\\xff\\xfe\\x80SN-\\x00\\xc3"));
+        // In a database of its own: the runner's uploader, still polling its results.sqlite,
+        // would otherwise send it before the CLI does.
         ResultsStore local;
-        QVERIFY(local.open(dir.filePath(QStringLiteral("results.sqlite")), &error));
+        QVERIFY(local.open(dir.filePath(QStringLiteral("other-station.sqlite")), &error));
         QVERIFY2(local.commit(results::ModuleRecord::fromStation(r, runner.runRecord()), &error), qPrintable(error));
         QCOMPARE(local.pendingCount(), 1);
         const auto upload = test::runCli({QStringLiteral("results"), QStringLiteral("upload"), QStringLiteral("--db"),
-                                          dir.filePath(QStringLiteral("results.sqlite")), QStringLiteral("--results"),
+                                          dir.filePath(QStringLiteral("other-station.sqlite")), QStringLiteral("--results"),
                                           m_pg.url(QStringLiteral("imudesk_station"))});
         QVERIFY2(upload.code == 0, qPrintable(upload.out + upload.err));
         QVERIFY2(upload.out.startsWith(QStringLiteral("1 uploaded")), qPrintable(upload.out));
