@@ -164,11 +164,10 @@ private Q_SLOTS:
                  2);
     }
 
-    // A module that reports the serial x'); DROP TABLE run;-- under a plan named with 10 kB,
-    // through the station, its SQLite and the upload; and a record whose serial's bytes are not
-    // UTF-8 (the HiPNUC ASCII protocol carries printable ASCII only: such bytes come from other
-    // links, or an operator's name) through the same database and `results upload`. Stored and
-    // read back verbatim, every table still there.
+    // Modules that report the serial x'); DROP TABLE run;-- and one whose bytes are not UTF-8,
+    // under a plan named with 10 kB, through the station, its SQLite and the upload; and a record
+    // whose serial holds a NUL through `results upload`. Stored and read back verbatim, every
+    // table still there.
     void hostileValuesVerbatim()
     {
         QTemporaryDir dir;
@@ -179,8 +178,15 @@ private Q_SLOTS:
         o.serial = evil.toStdString();
         sim::PtySimulator sim(o);
         QVERIFY(sim.start());
+        // A second module whose serial's bytes are not UTF-8 (erased flash reads 0xFF).
+        const QByteArray raw("\xff\xfe\x80SN-\xc3", 7);
+        sim::SimOptions o2;
+        o2.seed = 78;
+        o2.serial = raw.toStdString();
+        sim::PtySimulator sim2(o2);
+        QVERIFY(sim2.start());
         const station::TestPlan plan = shortPlan(QString(10 * 1024, QLatin1Char('P')) + QStringLiteral("'); DROP TABLE module;--"));
-        station::StationRunner runner(plan, {sim.devicePath()});
+        station::StationRunner runner(plan, {sim.devicePath(), sim2.devicePath()});
         QString error;
         QVERIFY2(runner.setRunFolder(dir.filePath(QStringLiteral("run")), &error), qPrintable(error));
         results::UploaderOptions line;
@@ -191,6 +197,9 @@ private Q_SLOTS:
         runner.start();
         QVERIFY(done.wait(120000));
         QCOMPARE(runner.module(0).serial, QString::fromUtf8(evil));
+        QCOMPARE(runner.module(1).serialRaw, raw);
+        QCOMPARE(runner.module(1).serial, QStringLiteral("\\xff\\xfe\\x80SN-\\xc3"));
+        QCOMPARE(runner.module(1).verdict, station::Verdict::Pass);
         QVERIFY(runner.uploader());
         QTRY_COMPARE_WITH_TIMEOUT(runner.resultsStore().pendingCount(), 0, 30000); // the outbox itself
         ResultsStore server;
@@ -199,10 +208,13 @@ private Q_SLOTS:
         QCOMPARE(int(a.size()), 1);
         QCOMPARE(a[0].serialRaw, evil);
         QCOMPARE(a[0].run.planName, plan.name);
-        QCOMPARE(QDir(dir.filePath(QStringLiteral("run/openhtf"))).entryList(QDir::Files).size(), 1);
+        const auto a2 = server.history(runner.module(1).serial);
+        QCOMPARE(int(a2.size()), 1);
+        QCOMPARE(a2[0].serialRaw, raw);
+        QCOMPARE(QDir(dir.filePath(QStringLiteral("run/openhtf"))).entryList(QDir::Files).size(), 2);
 
-        // Bytes that are not UTF-8, and a NUL, which PostgreSQL's text cannot hold: the bytes kept
-        // as they are, the text shows them as \xNN.
+        // And a NUL, which no serial line's reply carries and PostgreSQL's text cannot hold: the
+        // bytes kept as they are, the text shows them as \xNN.
         const QByteArray notUtf8("\xff\xfe\x80SN-\x00\xc3", 8);
         station::ModuleResult r = runner.module(0);
         r.serialRaw = notUtf8;

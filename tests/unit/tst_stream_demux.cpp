@@ -88,6 +88,22 @@ private Q_SLOTS:
         QCOMPARE(d.counters().lineBytes + d.counters().garbageBytes, d.frameCounters().bytesSkipped);
     }
 
+    void bytesAbove0x7FAfterALineStartAreKept()
+    {
+        // A serial read from erased flash (0xFF) or written in UTF-8 arrives as it was sent; the
+        // same bytes before a line's first character are junk, dropped as before.
+        QByteArray s = QByteArray("UUID=\xff\xfe\x80SN-\xc3\r\n") + QByteArray::fromHex("FF80") + "OK\r\n"
+            + "NAME=\xe6\xb5\x8b\xe8\xaf\x95\r\n";
+        StreamDemux d;
+        d.endQuarantine();
+        const auto ev = d.feed(reinterpret_cast<const uint8_t *>(s.constData()), size_t(s.size()));
+        QCOMPARE(ev.size(), size_t(3));
+        QCOMPARE(ev[0].text, std::string("UUID=\xff\xfe\x80SN-\xc3"));
+        QCOMPARE(ev[1].text, std::string("OK"));
+        QCOMPARE(QString::fromStdString(ev[2].text), QStringLiteral("NAME=\u6d4b\u8bd5"));
+        QCOMPARE(d.counters().garbageBytes, uint64_t(2));
+    }
+
     void overlongLineDiscarded()
     {
         QByteArray s(2000, 'x');

@@ -88,7 +88,9 @@ void StreamDemux::textBytes(const uint8_t *p, size_t n, std::vector<StreamEvent>
             // A new sentence start aborts a partial one (NMEA) or unterminated junk.
             dropPartialLine();
             m_line.push_back('$');
-        } else if (c >= 0x20 && c < 0x7F) {
+        } else if ((c >= 0x20 && c < 0x7F) || (c >= 0x80 && !m_line.empty())) {
+            // A line starts with printable ASCII (a reply's key, "$"); after that, bytes from
+            // 0x80 up are its own (a serial read from erased flash, UTF-8 text), kept as sent.
             if (m_line.size() < kMaxLine)
                 m_line.push_back(char(c));
             else

@@ -1,7 +1,9 @@
 #pragma once
 // Splits one serial byte stream into HiPNUC binary frames, NMEA sentences and
 // ASCII reply lines (they share the UART). Binary frames take precedence: only
-// bytes that belong to no CRC-valid frame are considered as text.
+// bytes that belong to no CRC-valid frame are considered as text. A line begins with
+// printable ASCII and holds no control bytes but CR; bytes from 0x80 up after its
+// first are kept as they came (they are not necessarily UTF-8).
 #include "protocol/hipnuc/frame_decoder.h"
 #include "protocol/nmea/nmea_parser.h"
 
