@@ -211,6 +211,11 @@ private Q_SLOTS:
         const auto a2 = server.history(runner.module(1).serial);
         QCOMPARE(int(a2.size()), 1);
         QCOMPARE(a2[0].serialRaw, raw);
+        ResultsStore::Filter typed; // found by a part of it typed as shown
+        typed.serial = QStringLiteral("\\xfe\\x80SN");
+        const auto found = server.search(typed);
+        QCOMPARE(int(found.size()), 1);
+        QCOMPARE(found[0].serialRaw, raw);
         QCOMPARE(QDir(dir.filePath(QStringLiteral("run/openhtf"))).entryList(QDir::Files).size(), 2);
 
         // And a NUL, which no serial line's reply carries and PostgreSQL's text cannot hold: the
