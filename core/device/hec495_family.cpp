@@ -66,6 +66,10 @@ Request Hec495Family::makeRequest(uint8_t command, const QByteArray &data, int t
     r.command = Command{command, std::vector<uint8_t>(data.begin(), data.end())};
     r.timeoutMs = timeoutMs > 0 ? timeoutMs : kReplyTimeoutMs;
     r.maxAttempts = kAttempts;
+    if (command == uint8_t(wl::Command::CollectPoint)) {
+        r.maxAttempts = 1;
+        r.timeoutMs = std::max(r.timeoutMs, kCollectTimeoutMs);
+    }
     return r;
 }
 

@@ -48,6 +48,9 @@ class Hec495Family : public FamilyPlugin {
 public:
     static constexpr int kReplyTimeoutMs = 300;
     static constexpr int kAttempts = 3;
+    // "Collect a point" (0x67) is sent once: every one the module hears adds a point, so one
+    // sent again because its reply was late would add two. It waits longer instead.
+    static constexpr int kCollectTimeoutMs = 1000;
     static constexpr int kListenMs = 200;
     static constexpr int kIdentifyWindowMs = 3500;
     static constexpr int kLineIdleMs = 30;

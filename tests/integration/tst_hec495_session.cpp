@@ -23,6 +23,9 @@
 #include <QTest>
 #include <QTimer>
 
+#include <atomic>
+#include <chrono>
+#include <thread>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -394,6 +397,44 @@ private Q_SLOTS:
         uint64_t lost = 0;
         c.withSim([&](Hec495Simulator &d) { lost = d.commandsLost(); });
         QCOMPARE(lost > 0, retried > 0);
+    }
+
+    // "Collect a point" whose reply comes late (a busy machine) is not sent again: the module
+    // counts every one it hears, and a second would be a second point.
+    void manualPointSentOnceWhenItsReplyIsLate()
+    {
+        Hec495Options o;
+        o.baud = 115200;
+        auto c = servePty(o);
+        Hec495Session &s = *c.session;
+        s.open(c.port, 115200);
+        QTRY_COMPARE_WITH_TIMEOUT(s.state(), SessionState::Connected, 5000);
+        QVERIFY(AWAIT_OK(s, s.startCalibration(wl::CalibrationMethod::Manual)));
+        // The compass's thread stalls for 700 ms (more than two reply timeouts) from before
+        // the request is written until after.
+        std::atomic<bool> stalled{false};
+        std::thread stall([&] {
+            c.withSim([&](Hec495Simulator &) {
+                stalled = true;
+                std::this_thread::sleep_for(std::chrono::milliseconds(700));
+            });
+        });
+        while (!stalled)
+            std::this_thread::yield();
+        const quint64 id = s.collectCalibrationPoint();
+        stall.join();
+        const auto r = await(s, id);
+        QVERIFY(r);
+        QVERIFY2(r->ok(), qPrintable(r->message));
+        QCOMPARE(r->attempts, 1);
+        QCOMPARE(r->reply.points, 1);
+        int held = 0;
+        c.withSim([&](Hec495Simulator &d) { held = d.calibration().points(); });
+        QCOMPARE(held, 1);
+        const auto next = AWAIT_OK(s, s.collectCalibrationPoint());
+        QVERIFY(next);
+        QCOMPARE(next->reply.points, 2);
+        QVERIFY(AWAIT_OK(s, s.stopCalibration()));
     }
 
     void planarCalibrationRun()
