@@ -42,6 +42,7 @@ std::optional<int64_t> SampleClocks::commonTime(const std::string &source, doubl
                  .first;
     }
     Clock &c = it->second;
+    const int restartsBefore = c.restarts;
     if (timeBase != c.timeBase) { // another clock behind the same field: start again
         c.timeBase = timeBase;
         c.counter.clear();
@@ -54,8 +55,17 @@ std::optional<int64_t> SampleClocks::commonTime(const std::string &source, doubl
         c.model.reset();
         ++c.restarts;
     }
+    if (c.restarts != restartsBefore)
+        c.lastDeviceNs = -1; // a new epoch: nothing to stay in order with
     c.model.add(u.deviceNs, std::min(hostNs - wireNs, earlierBoundNs));
-    return c.model.toHost(u.deviceNs);
+    std::optional<int64_t> t = c.model.toHost(u.deviceNs);
+    if (!t)
+        return t;
+    if (c.lastDeviceNs >= 0 && u.deviceNs > c.lastDeviceNs)
+        t = std::max(*t, c.lastCommonNs + (u.deviceNs - c.lastDeviceNs) / 2);
+    c.lastDeviceNs = u.deviceNs;
+    c.lastCommonNs = *t;
+    return t;
 }
 
 std::vector<SampleClocks::Stream> SampleClocks::streams() const

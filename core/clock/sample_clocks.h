@@ -4,6 +4,9 @@
 // monotonic and its own ClockModel, and every such sample is stamped with its common time
 // (Sample::commonTimeNs). A time base that changes (the module's clock aligned to UTC by a PPS
 // input) or a counter reset starts that stream's model again.
+// A stream's common time never steps back: when its line moves down (a sample that waited
+// less than every one before), later samples advance at half their device pace until they
+// meet the line again, so a live view or a file gets its samples in order.
 #include "clock/clock_model.h"
 #include "clock/counter_unwrapper.h"
 #include "model/sample.h"
@@ -47,6 +50,8 @@ private:
         ClockModel model;
         int timeBase = 0;
         int restarts = 0;
+        int64_t lastDeviceNs = -1; // the last sample's device time and common time given
+        int64_t lastCommonNs = 0;
     };
     std::map<std::string, Clock> m_streams;
 };

@@ -146,8 +146,11 @@ void checkEvents(const std::vector<StreamEvent> &events, const StreamDemux &demu
         }
         if (e.kind != StreamEvent::Kind::Frame) {
             FUZZ_CHECK(e.text.size() <= StreamDemux::kMaxLine);
-            for (char ch : e.text) // lines hold printable ASCII only (CR dropped, LF ends them)
-                FUZZ_CHECK(uint8_t(ch) >= 0x20 && uint8_t(ch) < 0x7F);
+            // A line begins with printable ASCII and holds no control byte (CR dropped, LF ends
+            // it); after its first character, bytes from 0x80 up are kept as they came.
+            FUZZ_CHECK(uint8_t(e.text.front()) >= 0x20 && uint8_t(e.text.front()) < 0x7F);
+            for (char ch : e.text)
+                FUZZ_CHECK((uint8_t(ch) >= 0x20 && uint8_t(ch) < 0x7F) || uint8_t(ch) >= 0x80);
         }
     }
     FUZZ_CHECK(nFrames == frames.size());

@@ -3,6 +3,7 @@
 // (a USB serial adapter's 16 ms latency timer) measured against the true sampling instants.
 #include "clock/clock_model.h"
 #include "clock/counter_unwrapper.h"
+#include "clock/sample_clocks.h"
 #include "../common/test_main.h"
 
 #include <QTest>
@@ -191,6 +192,42 @@ private Q_SLOTS:
         ClockModel wire(o);
         wire.add(0, 1'000'000);
         QCOMPARE(*wire.toHost(0), int64_t(200'000));
+    }
+
+    // A loaded host: each sample waits 0.2 ms plus an exponential delay (mean 2 ms), and now
+    // and then one waits much less than the ones before. The fitted line moves under each new
+    // least delay; where it jumps down by more than a period, a stream stamped by the line
+    // alone steps back. SampleClocks' common times stay in order, at least half a period apart,
+    // and never further than the jump from the line.
+    void sampleClocksNeverStepBack()
+    {
+        imudesk::clock::SampleClocks clocks;
+        ClockModel line; // the same fit without the ordering
+        std::mt19937_64 rng(5);
+        std::exponential_distribution<double> wait(1.0 / 2'000'000);
+        int64_t last = 0, lastLine = 0;
+        int64_t minStep = INT64_MAX, lineWorst = 0, aboveLine = 0;
+        for (int i = 0; i < 120'000; ++i) {
+            const int64_t deviceNs = int64_t(i) * 1'000'000;
+            const int64_t hostNs = 1'000'000'000 + deviceNs + 200'000 + int64_t(wait(rng));
+            const auto t = clocks.commonTime("HI91", double(i), hostNs);
+            line.add(deviceNs, hostNs);
+            QVERIFY(t);
+            const int64_t l = *line.toHost(deviceNs);
+            if (i > 0) {
+                minStep = std::min(minStep, *t - last);
+                lineWorst = std::min(lineWorst, l - lastLine);
+            }
+            aboveLine = std::max(aboveLine, *t - l);
+            QVERIFY(*t >= l);
+            last = *t;
+            lastLine = l;
+        }
+        qInfo("line alone: worst step %lld ns; ordered: least step %lld ns, at most %lld ns above the line",
+              (long long)lineWorst, (long long)minStep, (long long)aboveLine);
+        QVERIFY(lineWorst < -1'000'000); // the line alone steps back by more than a period here
+        QVERIFY2(minStep >= 500'000, qPrintable(QString::number(minStep)));
+        QVERIFY(aboveLine <= -lineWorst + 500'000); // the jump less the half period it moved on
     }
 
     void pollBracket()
