@@ -383,10 +383,7 @@ bool CanFamily::matchStep(const CanFrame &f, const DecodedFrame &d)
         if (d.node == s.node && d.kind != FrameKind::Unknown && d.kind != FrameKind::Nmt)
             answer(true, uint32_t(s.node), QString());
         return false; // the frame still counts as data
-    case CanJobStep::Expect::PdoFrom:
-        if (isDataFrame(d) && dataSource(d) == m_target)
-            answer(true, 1, QString());
-        return false;
+    case CanJobStep::Expect::PdoFrom:  // the timeouts differ (unanswered): here the same
     case CanJobStep::Expect::DataSeen:
         if (isDataFrame(d) && dataSource(d) == m_target)
             answer(true, 1, QString());

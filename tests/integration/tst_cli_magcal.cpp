@@ -1,14 +1,13 @@
 // imudesk-cli magcal as a process: CSV in, the fit's result out (text and --json) with the
 // accuracy the data gives, exit codes (0 usable, 1 fail/refused or unreadable input, 2 usage).
+#include "../common/cli_run.h"
 #include "../common/test_main.h"
 
 #include <Eigen/Geometry>
 
 #include <QJsonArray>
-#include <QJsonDocument>
 #include <QJsonObject>
 #include <QFile>
-#include <QProcess>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -16,17 +15,11 @@
 
 namespace {
 
-struct Run {
-    int code = -1;
-    QByteArray out, err;
-};
+using Run = imudesk::test::CliResult;
 
 Run cli(const QStringList &args)
 {
-    QProcess p;
-    p.start(QString::fromUtf8(IMUDESK_CLI_PATH), args);
-    p.waitForFinished(30000);
-    return {p.exitCode(), p.readAllStandardOutput(), p.readAllStandardError()};
+    return imudesk::test::runCli(args, 30000);
 }
 
 enum class Shape { Sphere, Planar, HalfSphere };
@@ -73,7 +66,7 @@ private Q_SLOTS:
         QTemporaryDir dir;
         const Run r = cli({QStringLiteral("magcal"), writeCsv(dir, QStringLiteral("full.csv"), Shape::Sphere), QStringLiteral("--json")});
         QCOMPARE(r.code, 0);
-        const QJsonObject o = QJsonDocument::fromJson(r.out).object();
+        const QJsonObject o = r.json();
         QCOMPARE(o.value(QStringLiteral("verdict")).toString(), QStringLiteral("pass"));
         const QJsonArray hi = o.value(QStringLiteral("hard_iron")).toArray();
         QCOMPARE(hi.size(), 3);
@@ -107,7 +100,7 @@ private Q_SLOTS:
         // A steeper field leaves less horizontal field: a larger predicted heading error.
         const Run steep = cli({QStringLiteral("magcal"), dir.filePath(QStringLiteral("full.csv")), QStringLiteral("--json"),
                                QStringLiteral("--inclination"), QStringLiteral("75")});
-        QVERIFY(QJsonDocument::fromJson(steep.out).object().value(QStringLiteral("predicted_heading_error_deg")).toDouble()
+        QVERIFY(steep.json().value(QStringLiteral("predicted_heading_error_deg")).toDouble()
                 > 1.5 * predicted);
     }
 
@@ -118,7 +111,7 @@ private Q_SLOTS:
         const Run r = cli({QStringLiteral("magcal"), writeCsv(dir, QStringLiteral("half.csv"), Shape::HalfSphere),
                            QStringLiteral("--json")});
         QCOMPARE(r.code, 1);
-        const QJsonObject o = QJsonDocument::fromJson(r.out).object();
+        const QJsonObject o = r.json();
         QCOMPARE(o.value(QStringLiteral("verdict")).toString(), QStringLiteral("refused"));
         QVERIFY(o.value(QStringLiteral("predicted_heading_error_deg")).toDouble() > 1.0);
         const QString reason = o.value(QStringLiteral("reason")).toString();
@@ -132,12 +125,12 @@ private Q_SLOTS:
         const QString path = writeCsv(dir, QStringLiteral("planar.csv"), Shape::Planar);
         const Run r = cli({QStringLiteral("magcal"), path, QStringLiteral("--json")});
         QCOMPARE(r.code, 1);
-        const QJsonObject o = QJsonDocument::fromJson(r.out).object();
+        const QJsonObject o = r.json();
         QCOMPARE(o.value(QStringLiteral("verdict")).toString(), QStringLiteral("refused"));
         QCOMPARE(o.value(QStringLiteral("planar_offered")).toBool(), true);
         const Run p = cli({QStringLiteral("magcal"), path, QStringLiteral("--json"), QStringLiteral("--mode"), QStringLiteral("planar")});
         QCOMPARE(p.code, 0);
-        QCOMPARE(QJsonDocument::fromJson(p.out).object().value(QStringLiteral("mode")).toString(), QStringLiteral("planar"));
+        QCOMPARE(p.json().value(QStringLiteral("mode")).toString(), QStringLiteral("planar"));
     }
 
     void errors_data()
@@ -158,7 +151,7 @@ private Q_SLOTS:
         QFETCH(QString, message);
         const Run r = cli(args);
         QCOMPARE(r.code, code);
-        QVERIFY2(QString::fromUtf8(r.err).contains(message), r.err.constData());
+        QVERIFY2(r.err.contains(message), qPrintable(r.err));
     }
 
     void missingColumnsNamed()
