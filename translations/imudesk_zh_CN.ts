@@ -3892,14 +3892,14 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>UpdateFlow</name>
     <message>
-        <location filename="../core/firmware/update_flow.cpp" line="+39"/>
-        <location line="+196"/>
-        <location line="+174"/>
+        <location filename="../core/firmware/update_flow.cpp" line="+44"/>
+        <location line="+213"/>
+        <location line="+177"/>
         <source>unknown</source>
         <translation>未知</translation>
     </message>
     <message>
-        <location line="-362"/>
+        <location line="-382"/>
         <source>idle</source>
         <translation>空闲</translation>
     </message>
@@ -4009,7 +4009,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>镜像起始地址 %1 低于应用程序区起始地址 %2</translation>
     </message>
     <message>
-        <location line="+84"/>
+        <location line="+101"/>
         <source>reading the maximum packet size failed: %1</source>
         <translation>读取最大数据包大小失败：%1</translation>
     </message>
@@ -4155,14 +4155,29 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>镜像已写入并校验通过，但重启失败：%1。请将模块断电重启</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+12"/>
         <source>the image is written and verified, but the application did not answer LOG VERSION within %1 s after the restart; the image may not be a firmware for this module</source>
         <translation>镜像已写入并校验通过，但重启后 %1 s 内应用程序未应答 LOG VERSION；该镜像可能不是本模块的固件</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+3"/>
+        <source>the image is written and verified, but the application did not answer LOG VERSION at %1 baud within %2 s after the restart, nor at any other rate; the image may not be a firmware for this module</source>
+        <translation>镜像已写入并校验，但重启后应用程序在 %2 秒内未在 %1 波特率下应答 LOG VERSION，在其他波特率下也没有；该镜像可能不是本模块的固件</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>updated: firmware %1 → %2, %3 bytes verified by read-back</source>
         <translation>已更新：固件 %1 → %2，已通过回读校验 %3 字节</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>. The module restarted at %1 baud, the rate saved in it: the update ran at %2 baud, a rate that was set but not saved. It is connected again at %1 baud</source>
+        <translation>。模块以其保存的波特率 %1 重新启动：更新是在 %2 波特率下进行的，该波特率已设置但未保存。现已重新以 %1 波特率连接</translation>
+    </message>
+    <message>
+        <location line="+28"/>
+        <source>no answer at %1 baud: looking for the application at %2 baud</source>
+        <translation>%1 波特率下无应答：改在 %2 波特率下查找应用程序</translation>
     </message>
 </context>
 <context>
@@ -4333,12 +4348,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>节点 %1 在“%3”后 %2 ms 内没有发送数据：如果其 TPDO 等待 SYNC，请发送一个；否则请检查节点 ID、输出间隔以及模块是否上电</translation>
     </message>
     <message>
-        <location line="+92"/>
+        <location line="+89"/>
         <source>node %1 still sends data after &quot;%2&quot;: check the node ID</source>
         <translation>节点 %1 在“%2”之后仍在发送数据：请检查节点 ID</translation>
     </message>
     <message>
-        <location line="-99"/>
+        <location line="-96"/>
         <source>no answer within %1 ms: node %2 sent no PGN %3 after &quot;%4&quot; (a PGN its firmware or configuration does not send, or output off)</source>
         <translation>%1 ms 内没有应答：节点 %2 在“%4”之后没有发送 PGN %3（固件或配置不发送该 PGN，或输出已关闭）</translation>
     </message>
@@ -4368,7 +4383,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>设备拒绝了“%1”：%2</translation>
     </message>
     <message>
-        <location line="+48"/>
+        <location line="+45"/>
         <source>&quot;%1&quot; read back %2, expected %3</source>
         <translation>“%1”回读值为 %2，应为 %3</translation>
     </message>
@@ -4899,7 +4914,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::device::Hec495Family</name>
     <message>
-        <location filename="../core/device/hec495_family.cpp" line="+78"/>
+        <location filename="../core/device/hec495_family.cpp" line="+82"/>
         <source>the request&apos;s data is longer than a Witlink frame can carry</source>
         <translation>请求数据超出 Witlink 帧所能承载的长度</translation>
     </message>
@@ -9622,7 +9637,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>%2 上的 %1</translation>
     </message>
     <message>
-        <location line="+203"/>
+        <location line="+210"/>
         <source>Not connected</source>
         <translation>未连接</translation>
     </message>
@@ -10035,11 +10050,12 @@ Link load = bytes per second × 10 bits / baud rate.</source>
     </message>
     <message>
         <location line="+2"/>
+        <location line="+252"/>
         <source>ready</source>
         <translation>就绪</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="-250"/>
         <source>Step:</source>
         <translation>步骤：</translation>
     </message>
@@ -10060,12 +10076,12 @@ Link load = bytes per second × 10 bits / baud rate.</source>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+275"/>
+        <location line="+299"/>
         <source>Close</source>
         <translation>关闭</translation>
     </message>
     <message>
-        <location line="-240"/>
+        <location line="-264"/>
         <source>CAN bus</source>
         <translation>CAN 总线</translation>
     </message>
@@ -10151,7 +10167,12 @@ Link load = bytes per second × 10 bits / baud rate.</source>
         <translation>%1 字节，地址 %2 至 %3，CRC-32 %4；目标型号：文件中未记录</translation>
     </message>
     <message>
-        <location line="+38"/>
+        <location line="+26"/>
+        <source>waiting for the tab to close the port...</source>
+        <translation>正在等待标签页关闭端口...</translation>
+    </message>
+    <message>
+        <location line="+36"/>
         <source>cancelling after the current packet...</source>
         <translation>将在当前数据包完成后取消...</translation>
     </message>

@@ -3892,14 +3892,14 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>UpdateFlow</name>
     <message>
-        <location filename="../core/firmware/update_flow.cpp" line="+39"/>
-        <location line="+196"/>
-        <location line="+174"/>
+        <location filename="../core/firmware/update_flow.cpp" line="+44"/>
+        <location line="+213"/>
+        <location line="+177"/>
         <source>unknown</source>
         <translation>未知</translation>
     </message>
     <message>
-        <location line="-362"/>
+        <location line="-382"/>
         <source>idle</source>
         <translation>閒置</translation>
     </message>
@@ -4009,7 +4009,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>映像起始於 %1，低於位於 %2 的應用程式區</translation>
     </message>
     <message>
-        <location line="+84"/>
+        <location line="+101"/>
         <source>reading the maximum packet size failed: %1</source>
         <translation>讀取最大封包大小失敗：%1</translation>
     </message>
@@ -4155,14 +4155,29 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>映像已寫入並驗證，但重新啟動失敗：%1。請將模組斷電重啟</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+12"/>
         <source>the image is written and verified, but the application did not answer LOG VERSION within %1 s after the restart; the image may not be a firmware for this module</source>
         <translation>映像已寫入並驗證，但重新啟動後 %1 s 內應用程式未回應 LOG VERSION；該映像可能不是此模組的韌體</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+3"/>
+        <source>the image is written and verified, but the application did not answer LOG VERSION at %1 baud within %2 s after the restart, nor at any other rate; the image may not be a firmware for this module</source>
+        <translation>映像已寫入並校驗，但重新啟動後應用程式在 %2 秒內未在 %1 波特率下回應 LOG VERSION，在其他波特率下也沒有；該映像可能不是本模組的韌體</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>updated: firmware %1 → %2, %3 bytes verified by read-back</source>
         <translation>已更新：韌體 %1 → %2，已透過回讀驗證 %3 位元組</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>. The module restarted at %1 baud, the rate saved in it: the update ran at %2 baud, a rate that was set but not saved. It is connected again at %1 baud</source>
+        <translation>。模組以其儲存的波特率 %1 重新啟動：更新是在 %2 波特率下進行的，該波特率已設定但未儲存。現已重新以 %1 波特率連線</translation>
+    </message>
+    <message>
+        <location line="+28"/>
+        <source>no answer at %1 baud: looking for the application at %2 baud</source>
+        <translation>%1 波特率下無應答：改在 %2 波特率下尋找應用程式</translation>
     </message>
 </context>
 <context>
@@ -4333,12 +4348,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>節點 %1 在「%3」後 %2 ms 內沒有傳送資料：如果其 TPDO 等待 SYNC，請傳送一個；否則請檢查節點 ID、輸出間隔以及模組是否上電</translation>
     </message>
     <message>
-        <location line="+92"/>
+        <location line="+89"/>
         <source>node %1 still sends data after &quot;%2&quot;: check the node ID</source>
         <translation>節點 %1 在「%2」之後仍在傳送資料：請檢查節點 ID</translation>
     </message>
     <message>
-        <location line="-99"/>
+        <location line="-96"/>
         <source>no answer within %1 ms: node %2 sent no PGN %3 after &quot;%4&quot; (a PGN its firmware or configuration does not send, or output off)</source>
         <translation>%1 ms 內沒有回應：節點 %2 在「%4」之後沒有傳送 PGN %3（韌體或設定不傳送該 PGN，或輸出已關閉）</translation>
     </message>
@@ -4368,7 +4383,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>裝置拒絕了「%1」：%2</translation>
     </message>
     <message>
-        <location line="+48"/>
+        <location line="+45"/>
         <source>&quot;%1&quot; read back %2, expected %3</source>
         <translation>「%1」回讀值為 %2，預期為 %3</translation>
     </message>
@@ -4899,7 +4914,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::device::Hec495Family</name>
     <message>
-        <location filename="../core/device/hec495_family.cpp" line="+78"/>
+        <location filename="../core/device/hec495_family.cpp" line="+82"/>
         <source>the request&apos;s data is longer than a Witlink frame can carry</source>
         <translation>請求的資料超過 Witlink 幀可承載的長度</translation>
     </message>
@@ -9622,7 +9637,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>%2 上的 %1</translation>
     </message>
     <message>
-        <location line="+203"/>
+        <location line="+210"/>
         <source>Not connected</source>
         <translation>未連線</translation>
     </message>
@@ -10035,11 +10050,12 @@ Link load = bytes per second × 10 bits / baud rate.</source>
     </message>
     <message>
         <location line="+2"/>
+        <location line="+252"/>
         <source>ready</source>
         <translation>就緒</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="-250"/>
         <source>Step:</source>
         <translation>步驟：</translation>
     </message>
@@ -10060,12 +10076,12 @@ Link load = bytes per second × 10 bits / baud rate.</source>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+275"/>
+        <location line="+299"/>
         <source>Close</source>
         <translation>關閉</translation>
     </message>
     <message>
-        <location line="-240"/>
+        <location line="-264"/>
         <source>CAN bus</source>
         <translation>CAN 匯流排</translation>
     </message>
@@ -10151,7 +10167,12 @@ Link load = bytes per second × 10 bits / baud rate.</source>
         <translation>%1 位元組，位址 %2 至 %3，CRC-32 %4；目標型號：檔案中未記錄</translation>
     </message>
     <message>
-        <location line="+38"/>
+        <location line="+26"/>
+        <source>waiting for the tab to close the port...</source>
+        <translation>正在等待分頁關閉連接埠...</translation>
+    </message>
+    <message>
+        <location line="+36"/>
         <source>cancelling after the current packet...</source>
         <translation>將在目前封包完成後取消...</translation>
     </message>

@@ -3,6 +3,9 @@
 #include "cli_context.h"
 #include "protocol/can/can_decoder.h"
 
+#include <QElapsedTimer>
+
+#include <cstdio>
 #include <cstring>
 
 namespace imudesk::cli {
@@ -82,6 +85,54 @@ record::CaptureHeader headerOf(const OpenDevice &d)
     return header;
 }
 
+namespace {
+
+constexpr int kOpenMs = 30000;    // the detections, side by side
+constexpr int kConnectMs = 15000; // each link from its start to Connected
+constexpr int kQuietMs = 2000;    // a device that takes longer says what it is doing
+
+// "did not connect within 15 s; it was still Detecting: trying 921600 baud"
+QString waitedFor(const OpenDevice &d, const QString &what, int ms)
+{
+    QString text = QStringLiteral("did not %1 within %2 s").arg(what).arg(ms / 1000);
+    if (!d.doing.isEmpty())
+        text += QStringLiteral("; it was still at: %1").arg(d.doing);
+    if (d.state == device::SessionState::Closed && d.doing.isEmpty())
+        text += QStringLiteral("; nothing was heard from it (is the port right, the device powered?)");
+    return text;
+}
+
+// After kQuietMs of waiting, each device's step on stderr whenever it changes ("/dev/ttyUSB0:
+// Detecting: trying 460800 baud"): a slow detection on a loaded machine is seen, not silent.
+class ProgressNotes {
+public:
+    explicit ProgressNotes(const std::vector<OpenDevice> &devices) : m_devices(devices), m_told(devices.size())
+    {
+        m_clock.start();
+    }
+    void restart() { m_clock.restart(); }
+    void tell()
+    {
+        if (m_clock.elapsed() < kQuietMs)
+            return;
+        for (size_t i = 0; i < m_devices.size(); ++i) {
+            const OpenDevice &d = m_devices[i];
+            if (d.doing.isEmpty() || d.doing == m_told[i] || d.state == device::SessionState::Connected)
+                continue;
+            m_told[i] = d.doing;
+            std::fprintf(stderr, "%s: %s\n", qPrintable(d.spec), qPrintable(d.doing));
+            std::fflush(stderr);
+        }
+    }
+
+private:
+    const std::vector<OpenDevice> &m_devices;
+    std::vector<QString> m_told;
+    QElapsedTimer m_clock;
+};
+
+} // namespace
+
 int openDevices(const QStringList &specs, int baud, std::vector<OpenDevice> &devices)
 {
     devices = std::vector<OpenDevice>(size_t(specs.size()));
@@ -95,19 +146,23 @@ int openDevices(const QStringList &specs, int baud, std::vector<OpenDevice> &dev
         d.opener = std::make_unique<device::LinkOpener>();
         QObject::connect(d.opener.get(), &device::LinkOpener::ready, [&d] { d.ready = true; });
         QObject::connect(d.opener.get(), &device::LinkOpener::failed, [&d](const QString &why) { d.error = why; });
+        QObject::connect(d.opener.get(), &device::LinkOpener::detecting, [&d](const QString &what) { d.doing = what; });
         d.opener->open(request);
     }
-    // The detections run side by side: at most 11 rates of under a second each.
+    // The detections run side by side: at most 11 rates of under a second each. A device that
+    // takes longer than a moment says what it is doing (stderr), so a wait is never silent.
+    ProgressNotes notes(devices);
     waitFor([&] {
+        notes.tell();
         for (const OpenDevice &d : devices)
             if (!d.ready && d.error.isEmpty())
                 return false;
         return true;
-    }, 30000);
+    }, kOpenMs);
     for (OpenDevice &d : devices) {
         if (!d.ready) {
             d.opener->cancel();
-            return fail(QStringLiteral("%1: %2").arg(d.spec, d.error.isEmpty() ? QStringLiteral("timed out opening it") : d.error),
+            return fail(QStringLiteral("%1: %2").arg(d.spec, d.error.isEmpty() ? waitedFor(d, QStringLiteral("open"), kOpenMs) : d.error),
                         interrupted() ? ExitInterrupted : ExitFailure);
         }
         d.link = d.opener->take();
@@ -116,21 +171,25 @@ int openDevices(const QStringList &specs, int baud, std::vector<OpenDevice> &dev
         QObject::connect(d.link.link.get(), &device::DeviceLink::stateChanged,
                          [&d](device::SessionState st, const QString &detail) {
                              d.state = st;
+                             d.doing = QStringLiteral("%1%2").arg(QString::fromLatin1(device::stateName(st)),
+                                                                 detail.isEmpty() ? QString() : QStringLiteral(": ") + detail);
                              if (st == device::SessionState::Failed)
                                  d.error = detail;
                          });
         if (d.link.start)
             d.link.start();
     }
+    notes.restart();
     waitFor([&] {
+        notes.tell();
         for (const OpenDevice &d : devices)
             if (d.state != device::SessionState::Connected && d.error.isEmpty())
                 return false;
         return true;
-    }, 15000);
+    }, kConnectMs);
     for (const OpenDevice &d : devices)
         if (d.state != device::SessionState::Connected)
-            return fail(QStringLiteral("%1: %2").arg(d.spec, d.error.isEmpty() ? QStringLiteral("did not connect within 15 s") : d.error),
+            return fail(QStringLiteral("%1: %2").arg(d.spec, d.error.isEmpty() ? waitedFor(d, QStringLiteral("connect"), kConnectMs) : d.error),
                         interrupted() ? ExitInterrupted : ExitFailure);
     return ExitOk;
 }

@@ -25,6 +25,7 @@ struct OpenDevice {
     model::DeviceIdentity identity;
     device::SessionState state = device::SessionState::Closed;
     QString error;
+    QString doing; // its last step while it opens ("trying 115200 baud", "Detecting: ...")
     bool ready = false;
 };
 

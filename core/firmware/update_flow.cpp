@@ -25,9 +25,14 @@ constexpr size_t kMaxDataPacket = 512; // notes 3.3 step 8: min(MaxPacketSize, 5
 constexpr int kRebootBlPauseMs = 50;
 constexpr int kAfterPingPauseMs = 300;
 constexpr int64_t kQuietMs = 30;
+// Before LOG VERSION: listened to for at most this long, for a frame boundary (see queryVersion).
+constexpr int64_t kListenBeforeQueryMs = 150;
 // A module left in its bootloader by an interrupted update: pings 100 ms apart (their answers
 // count however late they come while the pings last).
 constexpr int kResumePingAttempts = 5;
+// Confirming: how long the restarted application is waited for at the update's rate before the
+// other rates are tried.
+constexpr int kConfirmAtUpdateBaudMs = 1500;
 
 QString hex32(uint64_t v)
 {
@@ -157,14 +162,31 @@ std::optional<model::DeviceIdentity> UpdateFlow::queryVersion(int timeoutMs, QSt
 {
     using protocol::hipnuc::ReplyCollector;
     m_link.clearInput();
-    if (!m_link.write({'L', 'O', 'G', ' ', 'V', 'E', 'R', 'S', 'I', 'O', 'N', '\r', '\n'}, error))
-        return std::nullopt;
     protocol::StreamDemux demux;
-    demux.endQuarantine();
-    ReplyCollector reply("LOG VERSION");
-    const int64_t deadline = m_link.nowUs() + int64_t(timeoutMs) * 1000;
     std::vector<uint8_t> buf;
     std::vector<protocol::StreamEvent> events;
+    // Listen before asking, as the session does: a module that streams is joined mid-frame,
+    // and that frame's tail (bytes that may look like text) would be glued to the reply's first
+    // line. The demux's text quarantine ends at the first CRC-valid frame, or here when the
+    // line falls quiet; a line that stays busy with neither is asked all the same.
+    const int64_t listenUntil = m_link.nowUs() + kListenBeforeQueryMs * 1000;
+    while (demux.quarantined() && m_link.nowUs() < listenUntil) {
+        buf.clear();
+        if (!m_link.read(buf, int(kQuietMs), error))
+            return std::nullopt;
+        events.clear();
+        if (buf.empty()) {
+            demux.flushPending(events); // quiet: no frame is under way
+            break;
+        }
+        demux.feed(buf.data(), buf.size(), events);
+    }
+    demux.endQuarantine();
+    const std::string query = protocol::hipnuc::commands::logVersion().wire();
+    if (!m_link.write(std::vector<uint8_t>(query.begin(), query.end()), error))
+        return std::nullopt;
+    ReplyCollector reply("LOG VERSION");
+    const int64_t deadline = m_link.nowUs() + int64_t(timeoutMs) * 1000;
     while (m_link.nowUs() < deadline) {
         buf.clear();
         const int64_t left = std::max<int64_t>(1, (deadline - m_link.nowUs()) / 1000);
@@ -392,23 +414,74 @@ UpdateFlow::Result UpdateFlow::run(const FirmwareImage &image)
                                            "Power-cycle the module")
                                             .arg(e));
     setState(State::Confirming);
-    const int64_t until = m_link.nowUs() + int64_t(m_options.appStartTimeoutMs) * 1000;
-    while (!r.after && m_link.nowUs() < until) {
-        m_link.sleepMs(100);
-        r.after = queryVersion(m_options.identifyTimeoutMs, &e);
-        if (!e.isEmpty())
-            return finish(r, State::Failed, e);
-    }
+    e.clear();
+    r.after = awaitApplication(&r.afterBaud, &e);
     r.totalSeconds = double(m_link.nowUs() - t0) / 1e6;
+    if (!e.isEmpty())
+        return finish(r, State::Failed, e);
     if (!r.after)
-        return finish(r, State::Failed, tr("the image is written and verified, but the application did not answer "
-                                           "LOG VERSION within %1 s after the restart; the image may not be a "
-                                           "firmware for this module")
-                                            .arg(m_options.appStartTimeoutMs / 1000.0));
-    return finish(r, State::Done, tr("updated: firmware %1 → %2, %3 bytes verified by read-back")
-                                      .arg(r.before ? versionText(r.before->firmware) : tr("unknown"),
-                                           versionText(r.after->firmware))
-                                      .arg(r.bytesWritten));
+        return finish(r, State::Failed,
+                      m_options.otherBauds.empty()
+                          ? tr("the image is written and verified, but the application did not answer LOG VERSION "
+                               "within %1 s after the restart; the image may not be a firmware for this module")
+                                .arg(m_options.appStartTimeoutMs / 1000.0)
+                          : tr("the image is written and verified, but the application did not answer LOG VERSION "
+                               "at %1 baud within %2 s after the restart, nor at any other rate; the image may not "
+                               "be a firmware for this module")
+                                .arg(m_options.baud)
+                                .arg(m_options.appStartTimeoutMs / 1000.0));
+    QString done = tr("updated: firmware %1 → %2, %3 bytes verified by read-back")
+                       .arg(r.before ? versionText(r.before->firmware) : tr("unknown"), versionText(r.after->firmware))
+                       .arg(r.bytesWritten);
+    if (r.afterBaud != m_options.baud)
+        done += tr(". The module restarted at %1 baud, the rate saved in it: the update ran at %2 baud, a rate that "
+                   "was set but not saved. It is connected again at %1 baud")
+                    .arg(r.afterBaud)
+                    .arg(m_options.baud);
+    return finish(r, State::Done, done);
+}
+
+std::optional<model::DeviceIdentity> UpdateFlow::awaitApplication(int *baud, QString *error)
+{
+    const auto attempt = [&](int at) -> std::optional<model::DeviceIdentity> {
+        auto id = queryVersion(m_options.identifyTimeoutMs, error);
+        if (id)
+            *baud = at;
+        return id;
+    };
+    const int64_t t0 = m_link.nowUs();
+    const int64_t until = t0 + int64_t(m_options.appStartTimeoutMs) * 1000;
+    const int64_t lookElsewhere = t0 + int64_t(std::min(m_options.appStartTimeoutMs, kConfirmAtUpdateBaudMs)) * 1000;
+    bool lookedElsewhere = false;
+    while (m_link.nowUs() < until || !lookedElsewhere) {
+        if (!lookedElsewhere && m_link.nowUs() >= lookElsewhere) {
+            lookedElsewhere = true;
+            for (int other : m_options.otherBauds) {
+                if (other == m_options.baud)
+                    continue;
+                m_link.close();
+                if (!m_link.open(other, error))
+                    return std::nullopt;
+                log(tr("no answer at %1 baud: looking for the application at %2 baud").arg(m_options.baud).arg(other));
+                if (auto id = attempt(other))
+                    return id;
+                if (!error->isEmpty())
+                    return std::nullopt;
+            }
+            if (!m_options.otherBauds.empty()) {
+                m_link.close();
+                if (!m_link.open(m_options.baud, error))
+                    return std::nullopt;
+            }
+            continue;
+        }
+        m_link.sleepMs(100);
+        if (auto id = attempt(m_options.baud))
+            return id;
+        if (!error->isEmpty())
+            return std::nullopt;
+    }
+    return std::nullopt;
 }
 
 } // namespace imudesk::firmware

@@ -16,7 +16,10 @@
 //   Verifying         ReadMemory of the written range, compared byte for byte ("read-back");
 //                     a bootloader without ReadMemory fails the update as "not verified"
 //   Resetting         Reset
-//   Confirming        LOG VERSION at the application baud until the application answers
+//   Confirming        LOG VERSION at the application baud until the application answers; a
+//                     module silent there for kConfirmAtUpdateBaudMs is looked for at the other
+//                     rates of Options::otherBauds (it restarts at its *saved* rate, and the update
+//                     may have run at a rate set but not saved), then at the update's rate again
 //   Done / Failed / Cancelled
 // A failure or cancel after erasing leaves the module in its bootloader (its application
 // is invalid), where the next run finds it and finishes the update.
@@ -30,6 +33,7 @@
 #include <atomic>
 #include <functional>
 #include <optional>
+#include <vector>
 
 namespace imudesk::firmware {
 
@@ -59,6 +63,9 @@ public:
         int maxPacketRetries = 3;
         int appStartTimeoutMs = 5000;    // the application must answer LOG VERSION after Reset
         int identifyTimeoutMs = 600;
+        // Where the restarted application is looked for when it is silent at `baud` (the
+        // module's serial rates); empty: only at `baud`.
+        std::vector<int> otherBauds = {115200, 921600, 460800, 230400, 256000, 57600, 38400, 19200, 9600, 4800};
     };
     struct Progress {
         State state = State::Idle;
@@ -82,6 +89,7 @@ public:
         double writeSeconds = 0;         // data phase only
         double totalSeconds = 0;
         uint64_t bytesWritten = 0;
+        int afterBaud = 0;               // the rate the application answered at after the restart
     };
     struct Observer {
         std::function<void(State)> stateChanged;
@@ -105,6 +113,8 @@ private:
     void setState(State s);
     void log(const QString &line);
     std::optional<model::DeviceIdentity> queryVersion(int timeoutMs, QString *error);
+    // Confirming: the application's answer after the restart, at the update's rate or another.
+    std::optional<model::DeviceIdentity> awaitApplication(int *baud, QString *error);
     bool readProperties(KbootClient &kb, DeviceInfo &info, QString *error);
     Result finish(Result r, State state, const QString &message);
     bool progressTick(uint64_t done, uint64_t total, int64_t startUs);

@@ -5,6 +5,7 @@
 #include "workspace/device_workspace.h"
 #include "ui/firmware/firmware_update_dialog.h"
 #include "workspace/main_window.h"
+#include "bridge/live_bridge_dialog.h"
 #include "protocol/ihex/intel_hex_writer.h"
 #include "sim/kboot_bootloader.h"
 #include "sim/pty_simulator.h"
@@ -17,6 +18,8 @@
 #include <QProgressBar>
 #include <QPushButton>
 #include <QSignalSpy>
+#include <QSpinBox>
+#include <QTcpServer>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -41,6 +44,37 @@ bool flashHolds(sim::PtySimulator &s, const protocol::ihex::FirmwareImage &img)
         same = std::equal(img.data.begin(), img.data.end(), d.bootloader().flash().begin() + img.startAddress);
     });
     return same;
+}
+
+// Device > Update firmware with the demo image, as a user does: the dialog takes the tab's
+// port, the update runs, the dialog is closed and the tab connects again, at the new version.
+void updateFromTheMenu(ui::MainWindow &w, ui::DeviceWorkspace *ws)
+{
+    auto *action = w.findChild<QAction *>(QStringLiteral("firmwareAction"));
+    QTRY_VERIFY_WITH_TIMEOUT(ws->state() == device::SessionState::Connected && ws->identity()
+                                 && ws->identity()->firmware && action->isEnabled(),
+                             15000);
+    action->trigger();
+    auto *dlg = w.findChild<FirmwareUpdateDialog *>();
+    QVERIFY(dlg);
+    dlg->findChild<QPushButton *>(QStringLiteral("demoImage"))->click();
+    QSignalSpy finished(dlg, &FirmwareUpdateDialog::updateFinished);
+    QVERIFY(dlg->startUpdate()); // at once, as a user may: the tab's link may still be closing
+    QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 1, 60000);
+    QVERIFY2(finished.at(0).at(0).toBool(),
+             qPrintable(dlg->findChild<QLabel *>(QStringLiteral("outcome"))->text()));
+    dlg->close();
+    QTRY_VERIFY(!w.findChild<FirmwareUpdateDialog *>());
+    QTRY_VERIFY_WITH_TIMEOUT(ws->state() == device::SessionState::Connected && ws->identity()
+                                 && ws->identity()->firmware && ws->identity()->firmware->toString() == "1.7.2",
+                             20000);
+}
+
+quint16 freeTcpPort()
+{
+    QTcpServer s;
+    s.listen(QHostAddress::LocalHost, 0);
+    return s.serverPort();
 }
 
 } // namespace
@@ -134,6 +168,43 @@ private Q_SLOTS:
                                      && ws->identity()->firmware->toString() == "1.7.2",
                                  20000);
         QVERIFY(before != QStringLiteral("1.7.2"));
+        w.disconnectDevice();
+    }
+
+    // Issue 53: the demo's update worked once, then said "nothing answered" (and the tab
+    // complained of bytes that form no frame): twice in a row with the live bridge running,
+    // as the demo's user did, then on a second tab's fresh simulated module.
+    void demoUpdatesTwiceWithTheBridgeAndOnASecondTab()
+    {
+        QStandardPaths::setTestModeEnabled(true);
+        ui::MainWindow w;
+        QStringList errors;
+        w.setErrorPresenter([&errors](const QString &m) { errors << m; });
+        w.show();
+        sim::SimOptions o; // as the demo: HI14, firmware 1.7.1, HI91 at 100 Hz, tumbling, rate detected
+        o.motion = sim::Motion::Tumble;
+        QString error;
+        QVERIFY2(w.openLink(imudesk::device::LinkRequest::simulatedHipnuc(o, 0), &error), qPrintable(error));
+        ui::DeviceWorkspace *first = w.currentWorkspace();
+        QTRY_COMPARE_WITH_TIMEOUT(first->state(), device::SessionState::Connected, 15000);
+        ui::LiveBridgeDialog *bridge = w.openLiveBridge();
+        bridge->findChild<QSpinBox *>(QStringLiteral("bridgePort"))->setValue(freeTcpPort());
+        QVERIFY2(bridge->startBridge(), qPrintable(bridge->lastError()));
+        bridge->close(); // the bridge runs on
+        updateFromTheMenu(w, first);
+        if (QTest::currentTestFailed())
+            return;
+        updateFromTheMenu(w, first);
+        if (QTest::currentTestFailed())
+            return;
+        QVERIFY2(w.openLink(imudesk::device::LinkRequest::simulatedHipnuc(o, 0), &error), qPrintable(error));
+        ui::DeviceWorkspace *second = w.currentWorkspace();
+        QVERIFY(second != first);
+        updateFromTheMenu(w, second);
+        if (QTest::currentTestFailed())
+            return;
+        QVERIFY2(errors.isEmpty(), qPrintable(errors.join(QLatin1Char('\n'))));
+        QCOMPARE(first->state(), device::SessionState::Connected);
         w.disconnectDevice();
     }
 

@@ -139,7 +139,9 @@ void HipnucSerialUi::decorate(DeviceWorkspace &ws, device::DeviceLink &link, con
     QObject::connect(session, &device::DeviceSession::baudDetected, &ws, &DeviceWorkspace::noteBaud);
     // Device > Update firmware: the dialog opens the port itself; the session lends it out (a
     // simulated module keeps running, its bootloader takes the update) and takes it back.
-    ws.offerTool(DeviceWorkspace::LinkTool::FirmwareUpdate, [&ws, requestedBaud = request.baud](QWidget *parent) {
+    // After an update the module is looked for at the rate the update found its application at
+    // (a rate set but not saved is gone after the restart); after a failed one, at every rate.
+    ws.offerTool(DeviceWorkspace::LinkTool::FirmwareUpdate, [&ws, session, requestedBaud = request.baud](QWidget *parent) {
         const int baud = ws.baud() > 0 ? ws.baud() : requestedBaud;
         const auto identity = ws.identity();
         const bool simulated = ws.isSimulated();
@@ -147,7 +149,21 @@ void HipnucSerialUi::decorate(DeviceWorkspace &ws, device::DeviceLink &link, con
         auto *dialog = new FirmwareUpdateDialog(port, baud, identity, parent);
         dialog->setAttribute(Qt::WA_DeleteOnClose);
         dialog->setDemoImageOffered(simulated);
-        QObject::connect(dialog, &QDialog::finished, &ws, [&ws] { ws.reclaimPort(); });
+        // The link closes on its own thread: the update waits until the port is free.
+        dialog->setPortFree(!ws.isBusy());
+        QObject::connect(&ws, &DeviceWorkspace::stateChanged, dialog, [&ws, dialog] {
+            if (!ws.isBusy())
+                dialog->setPortFree(true);
+        });
+        QObject::connect(dialog, &QDialog::finished, &ws, [&ws, session, dialog, port] {
+            const auto &r = dialog->result();
+            const bool ran = r.finalState != firmware::UpdateFlow::State::Idle;
+            const int at = r.ok ? r.afterBaud : 0; // 0: detect
+            if (!ran)
+                ws.reclaimPort();
+            else
+                ws.reclaimPort([session, port, at] { session->open(port, at); });
+        });
         dialog->open();
     });
 }

@@ -296,10 +296,28 @@ bool FirmwareUpdateDialog::loadFile(const QString &path)
     return true;
 }
 
+void FirmwareUpdateDialog::setPortFree(bool free)
+{
+    m_portFree = free;
+    if (free && m_startWhenFree) {
+        m_startWhenFree = false;
+        startUpdate();
+        return;
+    }
+    updateButtons();
+}
+
 bool FirmwareUpdateDialog::startUpdate()
 {
-    if (!m_image || isRunning())
+    if (!m_image || isRunning() || m_startWhenFree)
         return false;
+    if (!m_portFree && link() == Link::Serial) {
+        // The tab's link is still closing: the port would have two readers.
+        m_startWhenFree = true;
+        m_state->setText(tr("waiting for the tab to close the port..."));
+        updateButtons();
+        return true;
+    }
     m_log->clear();
     m_outcome->clear();
     m_progress->setValue(0);
@@ -324,6 +342,12 @@ bool FirmwareUpdateDialog::startUpdate()
 
 void FirmwareUpdateDialog::cancelUpdate()
 {
+    if (m_startWhenFree) {
+        m_startWhenFree = false;
+        m_state->setText(tr("ready"));
+        updateButtons();
+        return;
+    }
     if (!isRunning())
         return;
     m_state->setText(tr("cancelling after the current packet..."));
@@ -385,7 +409,7 @@ void FirmwareUpdateDialog::onFinished(bool ok, const QString &message)
 
 void FirmwareUpdateDialog::updateButtons()
 {
-    const bool running = isRunning();
+    const bool running = isRunning() || m_startWhenFree;
     const bool canReady = link() != Link::Can || (!m_canPlugin->currentText().isEmpty() && !m_canInterface->text().trimmed().isEmpty());
     m_start->setEnabled(!running && m_image.has_value() && canReady);
     m_link->setEnabled(!running);

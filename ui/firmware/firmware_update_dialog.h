@@ -61,8 +61,12 @@ public:
     bool loadDemoImage();
     // Loads and checks a firmware file (also what "Choose..." does); false shows why.
     bool loadFile(const QString &path);
-    // Starts the update with the loaded image; false if none or one is running.
+    // Starts the update with the loaded image; false if none or one is running. While the port
+    // is not free yet (setPortFree), the update starts as soon as it is.
     bool startUpdate();
+    // The serial port is free for the update (the tab that lent it has closed its link); true
+    // unless told otherwise.
+    void setPortFree(bool free);
     void cancelUpdate();
     bool isRunning() const;
     // After a finished serial update: the result (ok, message, versions).
@@ -92,6 +96,8 @@ private:
     firmware::FirmwareUpdater *m_updater = nullptr;
     firmware::CanFirmwareUpdater *m_canUpdater = nullptr;
     bool m_lastWasCan = false;
+    bool m_portFree = true;
+    bool m_startWhenFree = false;
 
     QComboBox *m_link = nullptr;
     QGroupBox *m_canBox = nullptr;

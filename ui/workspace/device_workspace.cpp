@@ -401,7 +401,7 @@ QString DeviceWorkspace::releasePort()
     return m_address;
 }
 
-void DeviceWorkspace::reclaimPort()
+void DeviceWorkspace::reclaimPort(const std::function<void()> &open)
 {
     m_portLent = false;
     if (isBusy())
@@ -409,7 +409,14 @@ void DeviceWorkspace::reclaimPort()
     m_identity.reset();
     m_stats.reset();
     m_clockModel->setClocks({});
-    startLink();
+    if (!open || !m_start) {
+        startLink();
+        return;
+    }
+    const SessionState before = m_state;
+    open();
+    if (m_state == before)
+        onStateChanged(SessionState::Opening, m_target);
 }
 
 void DeviceWorkspace::sendConsoleCommand(const QString &text)

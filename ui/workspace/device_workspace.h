@@ -143,7 +143,9 @@ public:
     // Frees the link's port for another user (the firmware update), keeping a simulated module
     // running behind it; returns the port. reclaimPort() opens the link on it again.
     QString releasePort();
-    void reclaimPort();
+    // `open`: how to open the link again this once (e.g. at the rate a firmware update found
+    // the module at); empty: as it was opened first.
+    void reclaimPort(const std::function<void()> &open = {});
     // What the link opens ("/dev/ttyUSB0", the simulator's pseudo-terminal).
     QString address() const { return m_address; }
     device::SessionState state() const { return m_state; }
