@@ -410,7 +410,7 @@ QString LatestValuesModel::quantityName(Row row) const
     case Sway: return tr("Sway");
     case InclinationX: return tr("Inclination X");
     case InclinationY: return tr("Inclination Y");
-    case Heading: return tr("Heading (NMEA)");
+    case Heading: return tr("Heading");
     case MagRelative: return tr("Magnetic field X Y Z (relative)");
     case MagRoll: return tr("Magnetic roll");
     case UtcDate: return tr("UTC date");

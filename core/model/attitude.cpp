@@ -210,6 +210,14 @@ double headingDeg(const Quat &qEnu)
     return wrap360(-eulerEnu312(qEnu).yaw);
 }
 
+void setCompassHeading(Sample &s, double headingCwDeg, bool trueNorth)
+{
+    s.headingDeg = wrap360(headingCwDeg);
+    s.headingTrue = trueNorth;
+    s.yaw = wrap180(-headingCwDeg);
+    s.fields |= FieldHeading;
+}
+
 double wrap180(double deg)
 {
     if (!std::isfinite(deg))

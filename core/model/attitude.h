@@ -94,6 +94,12 @@ Quat enuToNwu(const Quat &qEnu);
 // Compass heading of the forward axis from a body -> ENU quaternion, 0 <= h < 360.
 double headingDeg(const Quat &qEnu);
 
+// A compass's heading (clockwise from north, any range) as a sample carries it: the heading
+// itself (FieldHeading, 0..360, true or magnetic north) and, as for every other device, the
+// world frame's yaw (ENU, counter-clockwise: -heading, wrapped to [-180, 180)). Sets no Euler
+// flag: the caller does with pitch and roll.
+void setCompassHeading(Sample &s, double headingCwDeg, bool trueNorth);
+
 // Angle wrapped into [-180, 180) and [0, 360) degrees.
 double wrap180(double deg);
 double wrap360(double deg);

@@ -2,6 +2,7 @@
 
 #include "kboot_bootloader.h"
 
+#include "model/attitude.h"
 #include "model/device_identity.h"
 #include "protocol/can/canopen.h"
 #include "protocol/can/hec495_can.h"
@@ -122,7 +123,7 @@ model::Sample CanSimDevice::hec495SampleAt(double t)
     // The compass's quantities as on its serial side (Hec495Simulator): the heading clockwise
     // from north (+-180 as in the read-all record), the field relative to the horizontal one.
     model::Sample s = sampleAt(t);
-    s.yaw = wrap180(-s.yaw);
+    model::setCompassHeading(s, -s.yaw, false);
     s.magRelative = {s.mag.x / Hec495Simulator::kFieldUnitUt, s.mag.y / Hec495Simulator::kFieldUnitUt,
                      s.mag.z / Hec495Simulator::kFieldUnitUt};
     s.fields = (s.fields & ~uint32_t(model::FieldMag)) | model::FieldMagRelative;

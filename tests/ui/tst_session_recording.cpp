@@ -5,6 +5,7 @@
 #include "itemmodels/clock_stats_model.h"
 #include "record/replay_session.h"
 #include "record/session_manifest.h"
+#include "recording/recording_controls.h"
 #include "recording/replay_controls.h"
 #include "recording/session_recording_window.h"
 #include "workspace/device_workspace.h"
@@ -18,8 +19,9 @@
 #include <QDockWidget>
 #include <QFile>
 #include <QFileInfo>
-#include <QSignalSpy>
 #include <QLabel>
+#include <QLineEdit>
+#include <QSignalSpy>
 #include <QPushButton>
 #include <QStandardPaths>
 #include <QTableWidget>
@@ -80,10 +82,28 @@ private Q_SLOTS:
                                      && win->group()->manifest().devices[1].frames > 15,
                                  20000);
         QVERIFY(!win->findChild<QPushButton *>(QStringLiteral("startSessionRecording"))->isEnabled());
+        // Issue 53: each tab's Recording panel shows this session's folder and its device's file,
+        // not the default folder and the file name's template, and its clock runs.
+        const QString sessionFolder = win->group()->folder();
+        for (ui::DeviceWorkspace *ws : {hi14, hec}) {
+            auto *panel = ws->recordingControls();
+            QTRY_VERIFY(panel->isRecording());
+            const QString shownFolder = panel->findChild<QLineEdit *>(QStringLiteral("folder"))->text();
+            const QString shownFile = panel->findChild<QLineEdit *>(QStringLiteral("pattern"))->text();
+            QCOMPARE(QDir::cleanPath(QDir::fromNativeSeparators(shownFolder)), QDir::cleanPath(sessionFolder));
+            QVERIFY2(!shownFile.contains(QLatin1Char('{')) && QFileInfo::exists(QDir(sessionFolder).filePath(shownFile)),
+                     qPrintable(shownFile));
+            QCOMPARE(QDir(shownFolder).filePath(shownFile), panel->currentPath());
+        }
+        auto *elapsed = hi14->recordingControls()->findChild<QLabel *>(QStringLiteral("elapsed"));
+        QTRY_VERIFY_WITH_TIMEOUT(elapsed->text() != QStringLiteral("00:00:00"), 5000);
         QSignalSpy finished(win, &ui::SessionRecordingWindow::recordingFinished);
         win->stop();
         QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 1, 10000);
         QVERIFY(finished.at(0).at(1).toBool());
+        // Stopped: the panel's own folder and file name template are back.
+        QTRY_VERIFY(!hi14->recordingControls()->isRecording());
+        QVERIFY(hi14->recordingControls()->findChild<QLineEdit *>(QStringLiteral("pattern"))->text().contains(QLatin1Char('{')));
         const QString folder = win->lastSession();
         record::SessionManifest m;
         QVERIFY2(record::SessionManifest::load(folder, &m, &error), qPrintable(error));

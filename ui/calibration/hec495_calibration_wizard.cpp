@@ -3,6 +3,7 @@
 
 #include "attitude/compass_pose_view.h"
 #include "device/hec495_session.h"
+#include "model/attitude.h"
 
 #include <QButtonGroup>
 #include <QGridLayout>
@@ -24,6 +25,12 @@ using device::Hec495Result;
 namespace wl = protocol::witlink;
 
 namespace {
+
+// The compass's heading, clockwise from north 0..360 (a sample's yaw is the world frame's, ENU).
+double headingOf(const model::Sample &s)
+{
+    return s.has(model::FieldHeading) ? s.headingDeg : model::wrap360(-s.yaw);
+}
 
 constexpr CompassCalMethod kMethods[] = {CompassCalMethod::Auto12, CompassCalMethod::Manual,
                                          CompassCalMethod::AutoAllOrientation, CompassCalMethod::Auto12SmallTilt,
@@ -244,7 +251,7 @@ void Hec495CalibrationWizard::refresh()
             if (m_rows.rows.size() >= CalibrationRunSaver::kMaxRows || !(x.fields & model::FieldEuler))
                 continue;
             const bool mag = x.fields & model::FieldMag;
-            m_rows.rows.push_back({double(x.deviceTimeMs), x.yaw, x.pitch, x.roll, mag ? x.mag.x : 0.0,
+            m_rows.rows.push_back({double(x.deviceTimeMs), headingOf(x), x.pitch, x.roll, mag ? x.mag.x : 0.0,
                                    mag ? x.mag.y : 0.0, mag ? x.mag.z : 0.0});
         }
     }
@@ -253,9 +260,7 @@ void Hec495CalibrationWizard::refresh()
         m_view->setPose(std::nullopt);
         return;
     }
-    double heading = std::fmod(s->yaw, 360.0);
-    if (heading < 0)
-        heading += 360.0;
+    const double heading = headingOf(*s);
     m_tracker.updatePose(heading, s->pitch, s->roll);
     m_view->setPose(CompassPoseView::Pose{heading, s->pitch, s->roll});
     if (m_running)

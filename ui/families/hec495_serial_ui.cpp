@@ -4,6 +4,7 @@
 #include "calibration/hec495_calibration_wizard.h"
 #include "configuration/hec495_settings_panel.h"
 #include "device/hec495_session.h"
+#include "model/attitude.h"
 #include "workspace/device_workspace.h"
 
 #include <QDockWidget>
@@ -52,7 +53,7 @@ void Hec495SerialUi::decorate(DeviceWorkspace &ws, device::DeviceLink &link, con
     dial->setObjectName(QStringLiteral("headingDial"));
     QObject::connect(&ws, &DeviceWorkspace::viewTick, dial, [dial, session] {
         if (const auto s = session->store().latest(); s && s->has(model::FieldEuler))
-            dial->setAttitude(s->yaw, s->pitch, s->roll);
+            dial->setAttitude(s->has(model::FieldHeading) ? s->headingDeg : model::wrap360(-s->yaw), s->pitch, s->roll);
     });
     ws.addLinkDock(familyDock(dial, QStringLiteral("headingDialDock"), tr("Compass")),
                    DeviceWorkspace::LinkDockPlace::OverAttitude);

@@ -4,6 +4,7 @@
 
 #include <QDateTime>
 #include <QDir>
+#include <QFileInfo>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
@@ -87,22 +88,28 @@ void RecordingControls::setIdentity(const QString &product, const QString &seria
 
 void RecordingControls::setFolder(const QString &folder)
 {
-    m_folder->setText(folder);
+    if (m_showingRecording)
+        m_userFolder = folder;
+    else
+        m_folder->setText(folder);
 }
 
 QString RecordingControls::folder() const
 {
-    return m_folder->text();
+    return m_showingRecording ? m_userFolder : m_folder->text();
 }
 
 void RecordingControls::setPattern(const QString &pattern)
 {
-    m_pattern->setText(pattern);
+    if (m_showingRecording)
+        m_userPattern = pattern;
+    else
+        m_pattern->setText(pattern);
 }
 
 QString RecordingControls::pattern() const
 {
-    return m_pattern->text();
+    return m_showingRecording ? m_userPattern : m_pattern->text();
 }
 
 QString RecordingControls::expandPattern(const QString &pattern) const
@@ -141,6 +148,12 @@ void RecordingControls::startRecording()
                               "(Ctrl+R)."));
         return;
     }
+    if (m_showingRecording) { // a recording that ended with a drop-out: the user's fields again
+        m_showingRecording = false;
+        m_interrupted = false;
+        m_folder->setText(m_userFolder);
+        m_pattern->setText(m_userPattern);
+    }
     const QDir dir(m_folder->text());
     if (!dir.exists()) {
         m_message->setText(tr("The folder %1 does not exist. Choose another one.").arg(m_folder->text()));
@@ -161,12 +174,31 @@ void RecordingControls::stopRecording()
 
 void RecordingControls::onStarted(const QString &path)
 {
+    // The same file again after a drop-out (a device that comes back goes on recording into
+    // it): the recording goes on, and so does its clock.
+    const bool goesOn = !m_recording && path == m_path && m_since.isValid() && m_interrupted;
     m_pending = false;
     m_recording = true;
+    m_interrupted = false;
     m_path = path;
-    m_bytes = m_frameCount = 0;
-    m_since.start();
+    if (!goesOn) {
+        m_bytes = m_frameCount = 0;
+        m_since.start();
+    }
     m_clock.start();
+    // While recording, the fields show where this recording goes (a session's folder and this
+    // device's file when Record all devices started it), not the template; the user's own
+    // folder and pattern come back when it stops.
+    if (!m_showingRecording) {
+        m_userFolder = m_folder->text();
+        m_userPattern = m_pattern->text();
+        m_showingRecording = true;
+    }
+    const QFileInfo info(path);
+    m_folder->setText(QDir::toNativeSeparators(info.absolutePath()));
+    m_pattern->setText(info.fileName());
+    m_folder->setCursorPosition(0);
+    m_pattern->setCursorPosition(0);
     m_message->setText(tr("Recording to %1").arg(path));
     refresh();
     updateButtons();
@@ -178,7 +210,13 @@ void RecordingControls::onStopped(const QString &reason)
     const bool was = m_recording;
     m_pending = false;
     m_recording = false;
+    m_interrupted = was && !reason.isEmpty();
     m_clock.stop();
+    if (m_showingRecording && !m_interrupted) {
+        m_showingRecording = false;
+        m_folder->setText(m_userFolder);
+        m_pattern->setText(m_userPattern);
+    }
     refresh();
     updateButtons();
     if (!reason.isEmpty()) {
@@ -200,7 +238,7 @@ void RecordingControls::onProgress(quint64 bytes, quint64 frames)
 
 void RecordingControls::refresh()
 {
-    const qint64 s = m_recording && m_since.isValid() ? m_since.elapsed() / 1000 : 0;
+    const qint64 s = (m_recording || m_interrupted) && m_since.isValid() ? m_since.elapsed() / 1000 : 0;
     m_elapsed->setText(tr("%1:%2:%3")
                            .arg(s / 3600, 2, 10, QLatin1Char('0'))
                            .arg(s / 60 % 60, 2, 10, QLatin1Char('0'))

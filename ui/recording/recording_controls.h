@@ -83,6 +83,9 @@ private:
     QElapsedTimer m_since;
     bool m_recording = false;
     bool m_pending = false;
+    bool m_interrupted = false;      // stopped by a drop-out; the same file may go on
+    bool m_showingRecording = false; // the fields show the recording's folder and file
+    QString m_userFolder, m_userPattern;
     QString m_path;
     QString m_product, m_serial;
     quint64 m_bytes = 0, m_frameCount = 0;

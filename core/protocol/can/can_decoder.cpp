@@ -234,7 +234,12 @@ void mergeComponents(model::Sample &dst, const model::Sample &src, uint32_t c)
     if (c & CompMagZ) dst.mag.z = src.mag.z;
     if (c & CompRoll) dst.roll = src.roll;
     if (c & CompPitch) dst.pitch = src.pitch;
-    if (c & CompYaw) dst.yaw = src.yaw;
+    if (c & CompYaw) {
+        dst.yaw = src.yaw;
+        dst.headingDeg = src.headingDeg;
+        dst.headingTrue = src.headingTrue;
+        dst.fields |= src.fields & model::FieldHeading;
+    }
     if (c & CompQuat) dst.quat = src.quat;
     if (c & CompPressure) dst.pressurePa = src.pressurePa;
     if (c & CompTemperature) dst.temperatureC = src.temperatureC;

@@ -99,7 +99,7 @@ void assign(model::Sample &s, int q, double v)
     switch (q) {
     case 0: s.pitch = v; s.fields |= model::FieldEuler; break;
     case 1: s.roll = v; s.fields |= model::FieldEuler; break;
-    case 2: s.yaw = v; s.fields |= model::FieldEuler; break;
+    case 2: model::setCompassHeading(s, v, false); s.fields |= model::FieldEuler; break;
     case 3: s.acc.x = v; s.fields |= model::FieldAcc; break;
     case 4: s.acc.y = v; s.fields |= model::FieldAcc; break;
     case 5: s.acc.z = v; s.fields |= model::FieldAcc; break;
@@ -121,7 +121,9 @@ void assign(PdoResult &r, int q, double v)
 }
 double pick(const model::Sample &s, int q)
 {
-    const double v[12] = {s.pitch, s.roll, s.yaw, s.acc.x, s.acc.y, s.acc.z, s.gyr.x, s.gyr.y, s.gyr.z,
+    // The compass sends its heading (clockwise), ±180 as its serial record does.
+    const double heading = s.has(model::FieldHeading) ? model::wrap180(s.headingDeg) : model::wrap180(-s.yaw);
+    const double v[12] = {s.pitch, s.roll, heading, s.acc.x, s.acc.y, s.acc.z, s.gyr.x, s.gyr.y, s.gyr.z,
                           s.magRelative.x, s.magRelative.y, s.magRelative.z};
     return q >= 0 && q < 12 ? v[q] : 0;
 }

@@ -81,7 +81,7 @@ model::Sample RegisterDecoder::hec495Sample(const RegisterBlock &b)
     if (pitch && roll && heading) {
         s.pitch = *pitch;
         s.roll = *roll;
-        s.yaw = model::wrap180(*heading); // one convention for the compass on every link: ±180
+        model::setCompassHeading(s, *heading, false); // one convention for every device and link
         s.fields |= model::FieldEuler;
     }
     return s;

@@ -1,4 +1,5 @@
 #include "nmea_sample.h"
+#include "model/attitude.h"
 
 #include <cmath>
 
@@ -64,7 +65,7 @@ std::optional<model::Sample> toSample(const Sentence &sentence)
         if (x->rollDeg && x->pitchDeg && x->headingDeg) {
             s.roll = *x->rollDeg;
             s.pitch = *x->pitchDeg;
-            s.yaw = *x->headingDeg;
+            model::setCompassHeading(s, *x->headingDeg, true); // yaw: ENU, counter-clockwise
             s.fields |= model::FieldEuler;
         }
         if (x->velEnuMs[0] && x->velEnuMs[1] && x->velEnuMs[2]) {

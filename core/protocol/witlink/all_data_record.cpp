@@ -1,4 +1,5 @@
 #include "all_data_record.h"
+#include "model/attitude.h"
 
 #include <cstring>
 
@@ -84,7 +85,7 @@ model::Sample AllDataRecord::toSample(int64_t hostTimeNs) const
         | model::FieldMagRoll;
     s.pitch = pitch;
     s.roll = roll;
-    s.yaw = heading;
+    model::setCompassHeading(s, heading, false); // yaw: ENU, counter-clockwise; heading as sent
     s.acc = {acc[0], acc[1], acc[2]};
     s.gyr = {gyr[0], gyr[1], gyr[2]};
     s.magRelative = {mag[0], mag[1], mag[2]};

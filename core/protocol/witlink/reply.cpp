@@ -234,9 +234,10 @@ std::optional<model::Sample> sampleOf(const Reply &reply, int64_t hostTimeNs)
     s.fields = model::FieldEuler;
     s.pitch = reply.pitch;
     s.roll = reply.roll;
-    // One convention per device: the angles reply counts the heading 0..360 (manual 2.4:
-    // 313.71), the full record (2.9) and every chart and table ±180, as Sample::yaw does.
-    s.yaw = model::wrap180(reply.heading);
+    // One convention for every device: the heading clockwise from magnetic north as its own
+    // quantity (the angles reply counts it 0..360, manual 2.4: 313.71; the full record ±180),
+    // and the world frame's yaw (ENU, counter-clockwise) as for a HiPNUC module.
+    model::setCompassHeading(s, reply.heading, false);
     return s;
 }
 
