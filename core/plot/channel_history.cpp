@@ -184,8 +184,6 @@ void ChannelHistory::appendOne(const model::Sample &s)
             m_clockOwnerRows = m_clockOtherRows = 0;
         }
         ownClock = s.source == m_clockSource;
-        if (ownClock)
-            m_clockSeenHost = host;
     }
     if (ownClock) {
         f |= FlagDeviceTime;
@@ -211,7 +209,10 @@ void ChannelHistory::appendOne(const model::Sample &s)
         }
         m_lastRawDevice = raw;
         m_haveRawDevice = true;
-        m_standing = false;
+        // The rows that stood at the clock's previous time since (another frame type between
+        // two of its rows) go where their host time puts them, before this row.
+        restampStanding(device);
+        m_clockSeenHost = host;
     } else if (m_haveRawDevice && !(m_period > 0.0 && host - m_clockSeenHost > kOverduePeriods * m_period)
                && host - m_clockSeenHost <= kClockHandOverS) {
         // Between two rows of the clock (another frame type interleaved): at the clock's time,
@@ -275,11 +276,13 @@ void ChannelHistory::appendOne(const model::Sample &s)
         dropFront(1);
 }
 
-void ChannelHistory::restampStanding()
+void ChannelHistory::restampStanding(double upTo)
 {
     if (!m_standing)
         return;
     m_standing = false;
+    if (m_totalAppended == 0)
+        return;
     // Row indices among the rows kept: the oldest kept row is m_totalAppended - m_size.
     const uint64_t oldest = m_totalAppended - m_size;
     const uint64_t from = std::max(m_clockRow + 1, oldest);
@@ -287,7 +290,7 @@ void ChannelHistory::restampStanding()
         const size_t p = phys(size_t(r - oldest));
         if (m_flags[p] & FlagDeviceTime)
             continue;
-        m_device[p] = std::max(m_device[p], m_clockDevice + (m_host[p] - m_clockSeenHost));
+        m_device[p] = std::max(m_device[p], std::min(upTo, m_clockDevice + (m_host[p] - m_clockSeenHost)));
     }
     if (m_size > 0)
         m_lastDevice = m_device[phys(m_size - 1)];

@@ -28,10 +28,11 @@
 //          row carries FlagSegmentStart. deviceTimeOffset() is stitched minus raw
 //          device time in the current segment, so the newest data can be shown on the
 //          device's own clock. A row without a device time between the clock's rows (another
-//          frame type interleaved) repeats the previous row's device time; once the clock is
-//          overdue (silent for more than kOverduePeriods of its period) such rows follow the
-//          host clock from the clock's last row, and the rows that stood at its time are
-//          restamped the same way (an HEC495 that streams angles without a time after its
+//          frame type interleaved) stands at the previous row's device time until the clock's
+//          next row comes, then goes where its host time since the clock's row puts it (never
+//          past the next row); once the clock is overdue (silent for more than kOverduePeriods
+//          of its period) such rows follow the host clock from the clock's last row at once,
+//          and the rows that stood at its time are restamped the same way (an HEC495 that streams angles without a time after its
 //          polled records: no pile of rows at one instant, no frozen axis). Before any device
 //          time, and once the clock's frame type has been silent for kClockHandOverS with no
 //          other clock to take over, rows advance the axis by their host-time step (a device
@@ -57,6 +58,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -206,8 +208,9 @@ private:
     void dropFront(size_t count);
     void reserveRows(size_t rows);
     void updatePeriod(double step);
-    // Rows after the clock's newest row that stood at its time follow the host clock from it.
-    void restampStanding();
+    // Rows after the clock's newest row that stood at its time follow the host clock from it,
+    // up to upTo (the device time of the clock's next row).
+    void restampStanding(double upTo = std::numeric_limits<double>::infinity());
 
     double m_maxDuration;
     size_t m_maxRows;
