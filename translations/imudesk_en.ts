@@ -78,7 +78,7 @@
 <context>
     <name>imudesk::ui::ChartPanel</name>
     <message numerus="yes">
-        <location filename="../ui/charts/chart_panel.cpp" line="+348"/>
+        <location filename="../ui/charts/chart_panel.cpp" line="+420"/>
         <source>%n chart(s) saved as one PNG in %1 (%2)</source>
         <translation>
             <numerusform>%n chart saved as one PNG in %1 (%2)</numerusform>
@@ -122,7 +122,7 @@
 <context>
     <name>imudesk::ui::MagCalibrationWizard</name>
     <message numerus="yes">
-        <location filename="../ui/calibration/mag_calibration_wizard.cpp" line="+676"/>
+        <location filename="../ui/calibration/mag_calibration_wizard.cpp" line="+719"/>
         <source>The device now corrects its own output, so ImuDesk&apos;s fit keeps the %n raw sample(s) collected before.</source>
         <translation>
             <numerusform>The device now corrects its own output, so ImuDesk&apos;s fit keeps the %n raw sample collected before.</numerusform>

@@ -1677,6 +1677,34 @@
     </message>
 </context>
 <context>
+    <name>HeadingCheck</name>
+    <message>
+        <location filename="../core/calib/heading_check.cpp" line="+138"/>
+        <source>Passed: %1 deg turned level, the heading followed without a jump (largest step %2 deg).</source>
+        <translation>通过：水平转动了 %1°，航向平滑跟随，没有跳变（最大步长 %2°）。</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The heading jumped by %1 deg while the module was level and the field steady: the heading does not follow the calibration. Calibrate again (chapter 9.31).</source>
+        <translation>模块水平且磁场稳定时航向跳变了 %1°：航向不符合校准。请重新校准（第 9.31 章）。</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Keep the module level while you turn it: it is tilted by %1 deg, at most %2 deg is judged. The heading of a tilted module also moves with the tilt, so the check cannot judge it (%3 of %4 deg turned level so far).</source>
+        <translation>转动时请保持模块水平：当前倾斜 %1°，最多 %2° 才会被判定。倾斜模块的航向也会随倾斜变化，因此无法据此判定（目前已水平转动 %3°/%4°）。</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>The field is disturbed here (|B| %1 % off the level turn&apos;s): iron, a magnet or a current nearby. The check cannot judge the heading in a disturbed field; move away from it and turn on.</source>
+        <translation>此处磁场受到干扰（|B| 偏离水平转动时的值 %1 %）：附近有铁、磁铁或电流。磁场受扰时无法判定航向；请远离干扰源后继续转动。</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Keep turning, level and slowly: %1 of %2 deg turned.</source>
+        <translation>请保持水平、缓慢地继续转动：已转动 %1°/%2°。</translation>
+    </message>
+</context>
+<context>
     <name>Hec495SerialKind</name>
     <message>
         <location filename="../core/device/hec495_serial_kind.cpp" line="+48"/>
@@ -1692,7 +1720,7 @@
 <context>
     <name>Hec495SerialUi</name>
     <message>
-        <location filename="../ui/families/hec495_serial_ui.cpp" line="+20"/>
+        <location filename="../ui/families/hec495_serial_ui.cpp" line="+21"/>
         <source>Simulated HEC495</source>
         <translation>模拟 HEC495</translation>
     </message>
@@ -1715,6 +1743,11 @@
         <location line="+4"/>
         <source>Compass settings</source>
         <translation>罗盘设置</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Switch the output to all data</source>
+        <translation>将输出切换为全部数据</translation>
     </message>
 </context>
 <context>
@@ -8850,7 +8883,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::ChartPanel</name>
     <message>
-        <location filename="../ui/charts/chart_panel.cpp" line="+145"/>
+        <location filename="../ui/charts/chart_panel.cpp" line="+146"/>
         <source>Charts</source>
         <translation>图表</translation>
     </message>
@@ -8929,8 +8962,43 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <source>Save the charts shown as one PNG image</source>
         <translation>将显示的图表保存为一张 PNG 图片</translation>
     </message>
+    <message>
+        <location line="+40"/>
+        <source>This device&apos;s output carries no acceleration at its current setting.</source>
+        <translation>该设备当前设置下的输出不含加速度。</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>This device&apos;s output carries no angular rate at its current setting.</source>
+        <translation>该设备当前设置下的输出不含角速度。</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>This device&apos;s output carries no magnetic field at its current setting.</source>
+        <translation>该设备当前设置下的输出不含磁场。</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>This device&apos;s output carries no Euler angles at its current setting.</source>
+        <translation>该设备当前设置下的输出不含欧拉角。</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>This device&apos;s output carries no quaternion at its current setting.</source>
+        <translation>该设备当前设置下的输出不含四元数。</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>This device&apos;s output carries no pressure at its current setting.</source>
+        <translation>该设备当前设置下的输出不含气压。</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>This device&apos;s output carries no temperature at its current setting.</source>
+        <translation>该设备当前设置下的输出不含温度。</translation>
+    </message>
     <message numerus="yes">
-        <location line="+183"/>
+        <location line="+208"/>
         <source>%n chart(s) saved as one PNG in %1 (%2)</source>
         <translation>
             <numerusform>已将 %n 个图表保存为一张 PNG，位于 %1（%2）</numerusform>
@@ -8940,7 +9008,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::ChartView</name>
     <message>
-        <location filename="../ui/charts/chart_view.cpp" line="+87"/>
+        <location filename="../ui/charts/chart_view.cpp" line="+89"/>
         <source>Accelerometer</source>
         <translation>加速度计</translation>
     </message>
@@ -9061,7 +9129,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>无法将图表保存为 %1：%2</translation>
     </message>
     <message>
-        <location line="+100"/>
+        <location line="+123"/>
         <source>%1 (%2)</source>
         <comment>quantity (unit)</comment>
         <translation>%1（%2）</translation>
@@ -9097,12 +9165,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>自动缩放</translation>
     </message>
     <message>
-        <location line="-148"/>
+        <location line="-171"/>
         <source>Common time (s)</source>
         <translation>公共时间（s）</translation>
     </message>
     <message>
-        <location line="+152"/>
+        <location line="+175"/>
         <source>Lower end of the vertical axis (no unit)</source>
         <translation>纵轴下限（无单位）</translation>
     </message>
@@ -9142,7 +9210,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>rad/s</translation>
     </message>
     <message>
-        <location line="+127"/>
+        <location line="+174"/>
         <source>t = %1 s</source>
         <translation>t = %1 s</translation>
     </message>
@@ -9627,7 +9695,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::DeviceWorkspace</name>
     <message>
-        <location filename="../ui/workspace/device_workspace.cpp" line="+361"/>
+        <location filename="../ui/workspace/device_workspace.cpp" line="+362"/>
         <source>New connection</source>
         <translation>新连接</translation>
     </message>
@@ -11095,7 +11163,7 @@ Choose another port, or close the program that uses this one.</source>
 <context>
     <name>imudesk::ui::MagCalibrationWizard</name>
     <message>
-        <location filename="../ui/calibration/mag_calibration_wizard.cpp" line="+41"/>
+        <location filename="../ui/calibration/mag_calibration_wizard.cpp" line="+42"/>
         <source>unknown</source>
         <translation>未知</translation>
     </message>
@@ -11129,12 +11197,12 @@ If the module is mounted on a PCB, in a housing or on a robot, calibrate it toge
     </message>
     <message>
         <location line="+19"/>
-        <location line="+245"/>
+        <location line="+263"/>
         <source>Working mode</source>
         <translation>工作模式</translation>
     </message>
     <message>
-        <location line="-244"/>
+        <location line="-262"/>
         <source>The calibration needs the 9-axis (AHRS) mode, CONFIG ATT MODE 1 (the factory setting). ImuDesk reads the module&apos;s mode first and offers a switch only when it runs in a 6-axis mode; the switch sends CONFIG ATT MODE 1, SAVECONFIG and REBOOT.</source>
         <translation>校准需要 9 轴（AHRS）模式，即 CONFIG ATT MODE 1（出厂设置）。ImuDesk 先读取模块的模式，仅当其运行在 6 轴模式时才提供切换；切换会发送 CONFIG ATT MODE 1、SAVECONFIG 和 REBOOT。</translation>
     </message>
@@ -11175,12 +11243,12 @@ If the module is mounted on a PCB, in a housing or on a robot, calibrate it toge
     </message>
     <message>
         <location line="+9"/>
-        <location line="+177"/>
+        <location line="+195"/>
         <source>Environment check</source>
         <translation>环境检查</translation>
     </message>
     <message>
-        <location line="-176"/>
+        <location line="-194"/>
         <source>At the calibration spot, turn the module slowly through many orientations. The module&apos;s own iron is taken out of the field first; what is left must be the Earth&apos;s field (20-65 µT), the same in every orientation (within 10 µT), and steady while the module is still.</source>
         <translation>在校准位置把模块缓慢转过多个朝向。先从磁场中去除模块自身的铁磁干扰；剩下的必须是地磁场（20-65 µT），在各朝向上相同（相差不超过 10 µT），并且在模块静止时保持稳定。</translation>
     </message>
@@ -11195,7 +11263,17 @@ If the module is mounted on a PCB, in a housing or on a robot, calibrate it toge
         <translation>模块输出的原始磁场（µT），每个样本一个点</translation>
     </message>
     <message>
-        <location line="+167"/>
+        <location line="+12"/>
+        <source>Coverage: share of the 80 sphere cells the field direction has pointed into, with the module&apos;s own iron fitted out by the live fit (before a usable fit: the raw directions). The sphere, its readout and the verdict give this one figure. Largest gap: radius of the biggest uncovered area. Raw |B|: the field strength before calibration (its spread is the iron the fit removes). Fit: the field and the residual of ImuDesk&apos;s fit on the samples so far, refreshed every second. Samples: every sample taken for ImuDesk&apos;s fit (the sphere draws a thinned share of them).</source>
+        <translation>覆盖率：磁场方向已指向的 80 个球面单元所占比例，模块自身的铁磁已由实时拟合去除（尚无可用拟合时：原始方向）。球面、其读数和结论给出的是同一个数值。最大空缺：最大未覆盖区域的半径。原始 |B|：校准前的磁场强度（其波动即拟合要去除的铁磁）。拟合：ImuDesk 对目前样本拟合的磁场和残差，每秒刷新。样本：为 ImuDesk 拟合采集的全部样本（球面只绘制其中抽稀的一部分）。</translation>
+    </message>
+    <message>
+        <location line="+56"/>
+        <source>Place the module level (roll and pitch within 15 deg) and turn it slowly one full turn (360 deg). The heading must change continuously, without jumps of more than 10 deg; within +-5 deg of the true directions is acceptable. Turns made while the module is tilted or the field is disturbed are not judged: the check says so.</source>
+        <translation>将模块水平放置（横滚和俯仰在 15° 以内），缓慢转动一整圈（360°）。航向必须连续变化，跳变不得超过 10°；与真实方向相差 ±5° 以内即可接受。模块倾斜或磁场受扰时的转动不作判定：检查会给出提示。</translation>
+    </message>
+    <message>
+        <location line="+117"/>
         <source>read from the module; a switch to 9-axis is offered when needed</source>
         <translation>从模块读取；需要时提供切换到 9 轴模式</translation>
     </message>
@@ -11325,12 +11403,32 @@ If the module is mounted on a PCB, in a housing or on a robot, calibrate it toge
         <translation>&lt;tr&gt;&lt;td&gt;预测航向误差&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1°&lt;/b&gt;&lt;/td&gt;&lt;td&gt;水平模块，68 %；95 %：%2°&lt;/td&gt;&lt;/tr&gt;</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+11"/>
+        <source>&lt;tr&gt;&lt;td&gt;Coverage&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1 %&lt;/b&gt;&lt;/td&gt;&lt;td&gt;(%2 of %3 cells, the module&apos;s iron fitted out)&lt;/td&gt;&lt;/tr&gt;</source>
+        <translation>&lt;tr&gt;&lt;td&gt;覆盖率&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1 %&lt;/b&gt;&lt;/td&gt;&lt;td&gt;（%2/%3 个单元，已去除模块自身铁磁）&lt;/td&gt;&lt;/tr&gt;</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&lt;tr&gt;&lt;td&gt;Coverage&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1 %&lt;/b&gt;&lt;/td&gt;&lt;td&gt;(%2 of %3 cells, raw directions: no usable fit yet)&lt;/td&gt;&lt;/tr&gt;</source>
+        <translation>&lt;tr&gt;&lt;td&gt;覆盖率&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1 %&lt;/b&gt;&lt;/td&gt;&lt;td&gt;（%2/%3 个单元，原始方向：尚无可用拟合）&lt;/td&gt;&lt;/tr&gt;</translation>
+    </message>
+    <message>
+        <location line="+18"/>
         <source>&lt;tr&gt;&lt;td&gt;Predicted heading error&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1°&lt;/b&gt;&lt;/td&gt;&lt;td&gt;level, 68 % (95 %: %4°; pass &amp;lt; %2°, refused &amp;gt; %3°)&lt;/td&gt;&lt;/tr&gt;</source>
         <translation>&lt;tr&gt;&lt;td&gt;预测航向误差&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1°&lt;/b&gt;&lt;/td&gt;&lt;td&gt;水平，68 %（95 %：%4°；通过 &amp;lt; %2°，拒绝 &amp;gt; %3°）&lt;/td&gt;&lt;/tr&gt;</translation>
     </message>
+    <message>
+        <location line="+143"/>
+        <source>The module&apos;s own calibration (MCAL) passed on the turns it collected, but its heading jumps in a level turn here: the field or the module&apos;s mounting changed since, or the collected turns did not represent this place.</source>
+        <translation>模块自身的校准（MCAL）在其采集的转动上通过了，但此处水平转动时其航向跳变：之后磁场或模块安装发生了变化，或采集的转动不能代表此处。</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>ImuDesk&apos;s fit passed on the collected samples, but the module computes its heading with its own calibration, which was not run to its end here: run the module&apos;s calibration (MCAL) too.</source>
+        <translation>ImuDesk 的拟合在采集的样本上通过了，但模块用自身的校准计算航向，而该校准此处未运行完毕：请同时运行模块的校准（MCAL）。</translation>
+    </message>
     <message numerus="yes">
-        <location line="+201"/>
+        <location line="+70"/>
         <source>The device now corrects its own output, so ImuDesk&apos;s fit keeps the %n raw sample(s) collected before.</source>
         <translation>
             <numerusform>设备现在会自行校正其输出，因此 ImuDesk 的拟合只保留此前采集的 %n 个原始样本。</numerusform>
@@ -11375,23 +11473,18 @@ Residual RMS: %6 µT
 </translation>
     </message>
     <message>
-        <location line="-542"/>
-        <location line="+161"/>
+        <location line="-584"/>
+        <location line="+179"/>
         <source>Turn the module</source>
         <translation>转动模块</translation>
     </message>
     <message>
-        <location line="-160"/>
+        <location line="-178"/>
         <source>Keep it in place and turn it slowly (20-100 deg/s) at least one full turn about each axis, until the sphere is green all over. Usually 30-60 s.</source>
         <translation>保持模块位置不变，缓慢转动（20-100 deg/s），绕每个轴至少转一整圈，直到球面全部变绿。通常需要 30-60 s。</translation>
     </message>
     <message>
-        <location line="+3"/>
-        <source>Coverage: share of the 80 sphere cells the field has pointed into. Largest gap: radius of the biggest uncovered area. Raw |B|: the field strength before calibration (its spread is the iron the fit removes). Fit: the field and the residual of ImuDesk&apos;s fit on the samples so far, refreshed every second.</source>
-        <translation>覆盖率：磁场方向已覆盖的 80 个球面单元的比例。最大空缺：最大未覆盖区域的半径。原始 |B|：校准前的磁场强度（其离散程度即拟合要消除的铁磁干扰）。拟合：ImuDesk 对当前样本拟合得到的磁场强度和残差，每秒刷新。</translation>
-    </message>
-    <message>
-        <location line="+8"/>
+        <location line="+14"/>
         <source>Start the device&apos;s calibration</source>
         <translation>启动设备校准</translation>
     </message>
@@ -11402,23 +11495,18 @@ Residual RMS: %6 µT
     </message>
     <message>
         <location line="+10"/>
-        <location line="+140"/>
+        <location line="+155"/>
         <source>Result</source>
         <translation>结果</translation>
     </message>
     <message>
-        <location line="-111"/>
-        <location line="+112"/>
+        <location line="-126"/>
+        <location line="+127"/>
         <source>Heading check</source>
         <translation>航向角检查</translation>
     </message>
     <message>
-        <location line="-111"/>
-        <source>Place the module level and turn it slowly one full turn (360 deg). The heading must change continuously, without jumps of more than 10 deg; within +-5 deg of the true directions is acceptable.</source>
-        <translation>将模块水平放置，缓慢转动一整圈（360 deg）。航向角须连续变化，跳变不超过 10 deg；与真实方向相差 +-5 deg 以内即可接受。</translation>
-    </message>
-    <message>
-        <location line="+359"/>
+        <location line="+272"/>
         <location line="+16"/>
         <source>ImuDesk&apos;s fit: %1. %2</source>
         <translation>ImuDesk 拟合：%1。%2</translation>
@@ -11431,7 +11519,7 @@ Residual RMS: %6 µT
 %3</translation>
     </message>
     <message>
-        <location line="-349"/>
+        <location line="-385"/>
         <source>Reading the working mode from the module (LOG COMCONFIG)…</source>
         <translation>正在从模块读取工作模式（LOG COMCONFIG）…</translation>
     </message>
@@ -11456,7 +11544,7 @@ Residual RMS: %6 µT
         <translation>未报告</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+39"/>
         <source>So far: %1. %2</source>
         <translation>目前：%1。%2</translation>
     </message>
@@ -11471,12 +11559,7 @@ Residual RMS: %6 µT
         <translation>&lt;tr&gt;&lt;td&gt;覆盖率&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1 %&lt;/b&gt;&lt;/td&gt;&lt;td&gt;磁场方向&lt;/td&gt;&lt;/tr&gt;</translation>
     </message>
     <message>
-        <location line="+16"/>
-        <source>&lt;tr&gt;&lt;td&gt;Coverage&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1 %&lt;/b&gt;&lt;/td&gt;&lt;td&gt;(%2 of %3 cells)&lt;/td&gt;&lt;/tr&gt;</source>
-        <translation>&lt;tr&gt;&lt;td&gt;覆盖率&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1 %&lt;/b&gt;&lt;/td&gt;&lt;td&gt;（%3 个单元中的 %2 个）&lt;/td&gt;&lt;/tr&gt;</translation>
-    </message>
-    <message>
-        <location line="+4"/>
+        <location line="+27"/>
         <source>&lt;tr&gt;&lt;td&gt;Largest gap&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1°&lt;/b&gt;&lt;/td&gt;&lt;td&gt;radius&lt;/td&gt;&lt;/tr&gt;</source>
         <translation>&lt;tr&gt;&lt;td&gt;最大空缺&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1°&lt;/b&gt;&lt;/td&gt;&lt;td&gt;半径&lt;/td&gt;&lt;/tr&gt;</translation>
     </message>
@@ -11486,14 +11569,14 @@ Residual RMS: %6 µT
         <translation>&lt;tr&gt;&lt;td&gt;原始 |B|&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1–%2&lt;/b&gt;&lt;/td&gt;&lt;td&gt;µT&lt;/td&gt;&lt;/tr&gt;</translation>
     </message>
     <message>
-        <location line="-20"/>
-        <location line="+24"/>
+        <location line="-27"/>
+        <location line="+31"/>
         <source>&lt;tr&gt;&lt;td&gt;Fitted field&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1&lt;/b&gt;&lt;/td&gt;&lt;td&gt;µT&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Fit residual&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%2&lt;/b&gt;&lt;/td&gt;&lt;td&gt;µT RMS (%3 %)&lt;/td&gt;&lt;/tr&gt;</source>
         <translation>&lt;tr&gt;&lt;td&gt;拟合磁场&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1&lt;/b&gt;&lt;/td&gt;&lt;td&gt;µT&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;拟合残差&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%2&lt;/b&gt;&lt;/td&gt;&lt;td&gt;µT RMS（%3 %）&lt;/td&gt;&lt;/tr&gt;</translation>
     </message>
     <message>
-        <location line="-15"/>
-        <location line="+27"/>
+        <location line="-22"/>
+        <location line="+34"/>
         <source>&lt;tr&gt;&lt;td&gt;Samples&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1&lt;/b&gt;&lt;/td&gt;&lt;td&gt;&lt;/td&gt;&lt;/tr&gt;</source>
         <translation>&lt;tr&gt;&lt;td&gt;样本数&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1&lt;/b&gt;&lt;/td&gt;&lt;td&gt;&lt;/td&gt;&lt;/tr&gt;</translation>
     </message>
@@ -11503,27 +11586,7 @@ Residual RMS: %6 µT
         <translation>正在设置 ATT MODE 1…</translation>
     </message>
     <message>
-        <location line="+106"/>
-        <source>Turned %1 deg, largest step %2 deg: %3</source>
-        <translation>已转动 %1 deg，最大跳变 %2 deg：%3</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>the heading follows the turn smoothly.</source>
-        <translation>航向角随转动平稳变化。</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>the heading jumps: calibrate again (chapter 9.31).</source>
-        <translation>航向角有跳变：请重新校准（见第 9.31 章）。</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>keep turning.</source>
-        <translation>请继续转动。</translation>
-    </message>
-    <message>
-        <location line="+146"/>
+        <location line="+275"/>
         <source>No fit yet.</source>
         <translation>尚无拟合结果。</translation>
     </message>
@@ -11576,7 +11639,7 @@ Samples: %3</source>
         <translation>球面上的磁力计样本：被磁场方向覆盖到的单元格会变绿。拖动可旋转视图，双击可复位视图。</translation>
     </message>
     <message>
-        <location line="+85"/>
+        <location line="+88"/>
         <source>|B| %1 µT   coverage %2 %   %3 samples</source>
         <translation>|B| %1 µT   覆盖率 %2 %   %3 个样本</translation>
     </message>

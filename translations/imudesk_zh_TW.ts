@@ -1677,6 +1677,34 @@
     </message>
 </context>
 <context>
+    <name>HeadingCheck</name>
+    <message>
+        <location filename="../core/calib/heading_check.cpp" line="+138"/>
+        <source>Passed: %1 deg turned level, the heading followed without a jump (largest step %2 deg).</source>
+        <translation>通過：水平轉動了 %1°，航向平滑跟隨，沒有跳變（最大步長 %2°）。</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The heading jumped by %1 deg while the module was level and the field steady: the heading does not follow the calibration. Calibrate again (chapter 9.31).</source>
+        <translation>模組水平且磁場穩定時航向跳變了 %1°：航向不符合校準。請重新校準（第 9.31 章）。</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Keep the module level while you turn it: it is tilted by %1 deg, at most %2 deg is judged. The heading of a tilted module also moves with the tilt, so the check cannot judge it (%3 of %4 deg turned level so far).</source>
+        <translation>轉動時請保持模組水平：目前傾斜 %1°，最多 %2° 才會被判定。傾斜模組的航向也會隨傾斜變化，因此無法據此判定（目前已水平轉動 %3°/%4°）。</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>The field is disturbed here (|B| %1 % off the level turn&apos;s): iron, a magnet or a current nearby. The check cannot judge the heading in a disturbed field; move away from it and turn on.</source>
+        <translation>此處磁場受到干擾（|B| 偏離水平轉動時的值 %1 %）：附近有鐵、磁鐵或電流。磁場受擾時無法判定航向；請遠離干擾源後繼續轉動。</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Keep turning, level and slowly: %1 of %2 deg turned.</source>
+        <translation>請保持水平、緩慢地繼續轉動：已轉動 %1°/%2°。</translation>
+    </message>
+</context>
+<context>
     <name>Hec495SerialKind</name>
     <message>
         <location filename="../core/device/hec495_serial_kind.cpp" line="+48"/>
@@ -1692,7 +1720,7 @@
 <context>
     <name>Hec495SerialUi</name>
     <message>
-        <location filename="../ui/families/hec495_serial_ui.cpp" line="+20"/>
+        <location filename="../ui/families/hec495_serial_ui.cpp" line="+21"/>
         <source>Simulated HEC495</source>
         <translation>模擬 HEC495</translation>
     </message>
@@ -1715,6 +1743,11 @@
         <location line="+4"/>
         <source>Compass settings</source>
         <translation>羅盤設定</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Switch the output to all data</source>
+        <translation>將輸出切換為全部資料</translation>
     </message>
 </context>
 <context>
@@ -8850,7 +8883,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::ChartPanel</name>
     <message>
-        <location filename="../ui/charts/chart_panel.cpp" line="+145"/>
+        <location filename="../ui/charts/chart_panel.cpp" line="+146"/>
         <source>Charts</source>
         <translation>圖表</translation>
     </message>
@@ -8929,8 +8962,43 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <source>Save the charts shown as one PNG image</source>
         <translation>將顯示的圖表儲存為一張 PNG 圖片</translation>
     </message>
+    <message>
+        <location line="+40"/>
+        <source>This device&apos;s output carries no acceleration at its current setting.</source>
+        <translation>該裝置目前設定下的輸出不含加速度。</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>This device&apos;s output carries no angular rate at its current setting.</source>
+        <translation>該裝置目前設定下的輸出不含角速度。</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>This device&apos;s output carries no magnetic field at its current setting.</source>
+        <translation>該裝置目前設定下的輸出不含磁場。</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>This device&apos;s output carries no Euler angles at its current setting.</source>
+        <translation>該裝置目前設定下的輸出不含歐拉角。</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>This device&apos;s output carries no quaternion at its current setting.</source>
+        <translation>該裝置目前設定下的輸出不含四元數。</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>This device&apos;s output carries no pressure at its current setting.</source>
+        <translation>該裝置目前設定下的輸出不含氣壓。</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>This device&apos;s output carries no temperature at its current setting.</source>
+        <translation>該裝置目前設定下的輸出不含溫度。</translation>
+    </message>
     <message numerus="yes">
-        <location line="+183"/>
+        <location line="+208"/>
         <source>%n chart(s) saved as one PNG in %1 (%2)</source>
         <translation>
             <numerusform>已將 %n 個圖表儲存為一張 PNG，位於 %1（%2）</numerusform>
@@ -8940,7 +9008,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::ChartView</name>
     <message>
-        <location filename="../ui/charts/chart_view.cpp" line="+87"/>
+        <location filename="../ui/charts/chart_view.cpp" line="+89"/>
         <source>Accelerometer</source>
         <translation>加速度計</translation>
     </message>
@@ -9061,7 +9129,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>無法將圖表儲存為 %1：%2</translation>
     </message>
     <message>
-        <location line="+100"/>
+        <location line="+123"/>
         <source>%1 (%2)</source>
         <comment>quantity (unit)</comment>
         <translation>%1（%2）</translation>
@@ -9097,12 +9165,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>自動縮放</translation>
     </message>
     <message>
-        <location line="-148"/>
+        <location line="-171"/>
         <source>Common time (s)</source>
         <translation>共同時間（s）</translation>
     </message>
     <message>
-        <location line="+152"/>
+        <location line="+175"/>
         <source>Lower end of the vertical axis (no unit)</source>
         <translation>縱軸下限（無單位）</translation>
     </message>
@@ -9142,7 +9210,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>rad/s</translation>
     </message>
     <message>
-        <location line="+127"/>
+        <location line="+174"/>
         <source>t = %1 s</source>
         <translation>t = %1 s</translation>
     </message>
@@ -9627,7 +9695,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::DeviceWorkspace</name>
     <message>
-        <location filename="../ui/workspace/device_workspace.cpp" line="+361"/>
+        <location filename="../ui/workspace/device_workspace.cpp" line="+362"/>
         <source>New connection</source>
         <translation>新連線</translation>
     </message>
@@ -11095,7 +11163,7 @@ Choose another port, or close the program that uses this one.</source>
 <context>
     <name>imudesk::ui::MagCalibrationWizard</name>
     <message>
-        <location filename="../ui/calibration/mag_calibration_wizard.cpp" line="+41"/>
+        <location filename="../ui/calibration/mag_calibration_wizard.cpp" line="+42"/>
         <source>unknown</source>
         <translation>未知</translation>
     </message>
@@ -11129,12 +11197,12 @@ If the module is mounted on a PCB, in a housing or on a robot, calibrate it toge
     </message>
     <message>
         <location line="+19"/>
-        <location line="+245"/>
+        <location line="+263"/>
         <source>Working mode</source>
         <translation>工作模式</translation>
     </message>
     <message>
-        <location line="-244"/>
+        <location line="-262"/>
         <source>The calibration needs the 9-axis (AHRS) mode, CONFIG ATT MODE 1 (the factory setting). ImuDesk reads the module&apos;s mode first and offers a switch only when it runs in a 6-axis mode; the switch sends CONFIG ATT MODE 1, SAVECONFIG and REBOOT.</source>
         <translation>校準需要 9 軸（AHRS）模式，即 CONFIG ATT MODE 1（出廠設定）。ImuDesk 先讀取模組的模式，僅當其執行於 6 軸模式時才提供切換；切換會傳送 CONFIG ATT MODE 1、SAVECONFIG 和 REBOOT。</translation>
     </message>
@@ -11175,12 +11243,12 @@ If the module is mounted on a PCB, in a housing or on a robot, calibrate it toge
     </message>
     <message>
         <location line="+9"/>
-        <location line="+177"/>
+        <location line="+195"/>
         <source>Environment check</source>
         <translation>環境檢查</translation>
     </message>
     <message>
-        <location line="-176"/>
+        <location line="-194"/>
         <source>At the calibration spot, turn the module slowly through many orientations. The module&apos;s own iron is taken out of the field first; what is left must be the Earth&apos;s field (20-65 µT), the same in every orientation (within 10 µT), and steady while the module is still.</source>
         <translation>在校準位置把模組緩慢轉過多個朝向。先從磁場中去除模組自身的鐵磁干擾；剩下的必須是地磁場（20-65 µT），在各朝向上相同（相差不超過 10 µT），並且在模組靜止時保持穩定。</translation>
     </message>
@@ -11195,7 +11263,17 @@ If the module is mounted on a PCB, in a housing or on a robot, calibrate it toge
         <translation>模組輸出的原始磁場（µT），每個樣本一個點</translation>
     </message>
     <message>
-        <location line="+167"/>
+        <location line="+12"/>
+        <source>Coverage: share of the 80 sphere cells the field direction has pointed into, with the module&apos;s own iron fitted out by the live fit (before a usable fit: the raw directions). The sphere, its readout and the verdict give this one figure. Largest gap: radius of the biggest uncovered area. Raw |B|: the field strength before calibration (its spread is the iron the fit removes). Fit: the field and the residual of ImuDesk&apos;s fit on the samples so far, refreshed every second. Samples: every sample taken for ImuDesk&apos;s fit (the sphere draws a thinned share of them).</source>
+        <translation>覆蓋率：磁場方向已指向的 80 個球面單元所占比例，模組自身的鐵磁已由即時擬合去除（尚無可用擬合時：原始方向）。球面、其讀數和結論給出的是同一個數值。最大空缺：最大未覆蓋區域的半徑。原始 |B|：校準前的磁場強度（其波動即擬合要去除的鐵磁）。擬合：ImuDesk 對目前樣本擬合的磁場和殘差，每秒更新。樣本：為 ImuDesk 擬合採集的全部樣本（球面只繪製其中抽稀的一部分）。</translation>
+    </message>
+    <message>
+        <location line="+56"/>
+        <source>Place the module level (roll and pitch within 15 deg) and turn it slowly one full turn (360 deg). The heading must change continuously, without jumps of more than 10 deg; within +-5 deg of the true directions is acceptable. Turns made while the module is tilted or the field is disturbed are not judged: the check says so.</source>
+        <translation>將模組水平放置（橫滾和俯仰在 15° 以內），緩慢轉動一整圈（360°）。航向必須連續變化，跳變不得超過 10°；與真實方向相差 ±5° 以內即可接受。模組傾斜或磁場受擾時的轉動不作判定：檢查會給出提示。</translation>
+    </message>
+    <message>
+        <location line="+117"/>
         <source>read from the module; a switch to 9-axis is offered when needed</source>
         <translation>從模組讀取；需要時提供切換到 9 軸模式</translation>
     </message>
@@ -11325,12 +11403,32 @@ If the module is mounted on a PCB, in a housing or on a robot, calibrate it toge
         <translation>&lt;tr&gt;&lt;td&gt;預測航向誤差&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1°&lt;/b&gt;&lt;/td&gt;&lt;td&gt;水平模組，68 %；95 %：%2°&lt;/td&gt;&lt;/tr&gt;</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+11"/>
+        <source>&lt;tr&gt;&lt;td&gt;Coverage&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1 %&lt;/b&gt;&lt;/td&gt;&lt;td&gt;(%2 of %3 cells, the module&apos;s iron fitted out)&lt;/td&gt;&lt;/tr&gt;</source>
+        <translation>&lt;tr&gt;&lt;td&gt;覆蓋率&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1 %&lt;/b&gt;&lt;/td&gt;&lt;td&gt;（%2/%3 個單元，已去除模組自身鐵磁）&lt;/td&gt;&lt;/tr&gt;</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&lt;tr&gt;&lt;td&gt;Coverage&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1 %&lt;/b&gt;&lt;/td&gt;&lt;td&gt;(%2 of %3 cells, raw directions: no usable fit yet)&lt;/td&gt;&lt;/tr&gt;</source>
+        <translation>&lt;tr&gt;&lt;td&gt;覆蓋率&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1 %&lt;/b&gt;&lt;/td&gt;&lt;td&gt;（%2/%3 個單元，原始方向：尚無可用擬合）&lt;/td&gt;&lt;/tr&gt;</translation>
+    </message>
+    <message>
+        <location line="+18"/>
         <source>&lt;tr&gt;&lt;td&gt;Predicted heading error&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1°&lt;/b&gt;&lt;/td&gt;&lt;td&gt;level, 68 % (95 %: %4°; pass &amp;lt; %2°, refused &amp;gt; %3°)&lt;/td&gt;&lt;/tr&gt;</source>
         <translation>&lt;tr&gt;&lt;td&gt;預測航向誤差&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1°&lt;/b&gt;&lt;/td&gt;&lt;td&gt;水平，68 %（95 %：%4°；通過 &amp;lt; %2°，拒絕 &amp;gt; %3°）&lt;/td&gt;&lt;/tr&gt;</translation>
     </message>
+    <message>
+        <location line="+143"/>
+        <source>The module&apos;s own calibration (MCAL) passed on the turns it collected, but its heading jumps in a level turn here: the field or the module&apos;s mounting changed since, or the collected turns did not represent this place.</source>
+        <translation>模組自身的校準（MCAL）在其採集的轉動上通過了，但此處水平轉動時其航向跳變：之後磁場或模組安裝發生了變化，或採集的轉動不能代表此處。</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>ImuDesk&apos;s fit passed on the collected samples, but the module computes its heading with its own calibration, which was not run to its end here: run the module&apos;s calibration (MCAL) too.</source>
+        <translation>ImuDesk 的擬合在採集的樣本上通過了，但模組用自身的校準計算航向，而該校準此處未執行完畢：請同時執行模組的校準（MCAL）。</translation>
+    </message>
     <message numerus="yes">
-        <location line="+201"/>
+        <location line="+70"/>
         <source>The device now corrects its own output, so ImuDesk&apos;s fit keeps the %n raw sample(s) collected before.</source>
         <translation>
             <numerusform>裝置現在會自行校正其輸出，因此 ImuDesk 的擬合只保留此前擷取的 %n 個原始樣本。</numerusform>
@@ -11375,23 +11473,18 @@ Residual RMS: %6 µT
 </translation>
     </message>
     <message>
-        <location line="-542"/>
-        <location line="+161"/>
+        <location line="-584"/>
+        <location line="+179"/>
         <source>Turn the module</source>
         <translation>轉動模組</translation>
     </message>
     <message>
-        <location line="-160"/>
+        <location line="-178"/>
         <source>Keep it in place and turn it slowly (20-100 deg/s) at least one full turn about each axis, until the sphere is green all over. Usually 30-60 s.</source>
         <translation>讓模組保持在原地，繞每個軸緩慢轉動（20-100 deg/s）至少一整圈，直到球面全部變綠。通常需要 30-60 s。</translation>
     </message>
     <message>
-        <location line="+3"/>
-        <source>Coverage: share of the 80 sphere cells the field has pointed into. Largest gap: radius of the biggest uncovered area. Raw |B|: the field strength before calibration (its spread is the iron the fit removes). Fit: the field and the residual of ImuDesk&apos;s fit on the samples so far, refreshed every second.</source>
-        <translation>覆蓋率：磁場方向已覆蓋的 80 個球面單元的比例。最大空缺：最大未覆蓋區域的半徑。原始 |B|：校準前的磁場強度（其離散程度即擬合要消除的鐵磁干擾）。擬合：ImuDesk 對目前樣本擬合得到的磁場強度和殘差，每秒更新。</translation>
-    </message>
-    <message>
-        <location line="+8"/>
+        <location line="+14"/>
         <source>Start the device&apos;s calibration</source>
         <translation>啟動裝置校準</translation>
     </message>
@@ -11402,23 +11495,18 @@ Residual RMS: %6 µT
     </message>
     <message>
         <location line="+10"/>
-        <location line="+140"/>
+        <location line="+155"/>
         <source>Result</source>
         <translation>結果</translation>
     </message>
     <message>
-        <location line="-111"/>
-        <location line="+112"/>
+        <location line="-126"/>
+        <location line="+127"/>
         <source>Heading check</source>
         <translation>航向角檢查</translation>
     </message>
     <message>
-        <location line="-111"/>
-        <source>Place the module level and turn it slowly one full turn (360 deg). The heading must change continuously, without jumps of more than 10 deg; within +-5 deg of the true directions is acceptable.</source>
-        <translation>將模組水平放置並緩慢轉動一整圈（360 deg）。航向角必須連續變化，不得跳變超過 10 deg；與真實方向相差 +-5 deg 以內即可接受。</translation>
-    </message>
-    <message>
-        <location line="+359"/>
+        <location line="+272"/>
         <location line="+16"/>
         <source>ImuDesk&apos;s fit: %1. %2</source>
         <translation>ImuDesk 擬合：%1。%2</translation>
@@ -11431,7 +11519,7 @@ Residual RMS: %6 µT
 %3</translation>
     </message>
     <message>
-        <location line="-349"/>
+        <location line="-385"/>
         <source>Reading the working mode from the module (LOG COMCONFIG)…</source>
         <translation>正在從模組讀取工作模式（LOG COMCONFIG）…</translation>
     </message>
@@ -11456,7 +11544,7 @@ Residual RMS: %6 µT
         <translation>未回報</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+39"/>
         <source>So far: %1. %2</source>
         <translation>目前：%1。%2</translation>
     </message>
@@ -11471,12 +11559,7 @@ Residual RMS: %6 µT
         <translation>&lt;tr&gt;&lt;td&gt;覆蓋率&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1 %&lt;/b&gt;&lt;/td&gt;&lt;td&gt;磁場方向&lt;/td&gt;&lt;/tr&gt;</translation>
     </message>
     <message>
-        <location line="+16"/>
-        <source>&lt;tr&gt;&lt;td&gt;Coverage&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1 %&lt;/b&gt;&lt;/td&gt;&lt;td&gt;(%2 of %3 cells)&lt;/td&gt;&lt;/tr&gt;</source>
-        <translation>&lt;tr&gt;&lt;td&gt;覆蓋率&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1 %&lt;/b&gt;&lt;/td&gt;&lt;td&gt;（%3 個單元中的 %2 個）&lt;/td&gt;&lt;/tr&gt;</translation>
-    </message>
-    <message>
-        <location line="+4"/>
+        <location line="+27"/>
         <source>&lt;tr&gt;&lt;td&gt;Largest gap&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1°&lt;/b&gt;&lt;/td&gt;&lt;td&gt;radius&lt;/td&gt;&lt;/tr&gt;</source>
         <translation>&lt;tr&gt;&lt;td&gt;最大空缺&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1°&lt;/b&gt;&lt;/td&gt;&lt;td&gt;半徑&lt;/td&gt;&lt;/tr&gt;</translation>
     </message>
@@ -11486,14 +11569,14 @@ Residual RMS: %6 µT
         <translation>&lt;tr&gt;&lt;td&gt;原始 |B|&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1–%2&lt;/b&gt;&lt;/td&gt;&lt;td&gt;µT&lt;/td&gt;&lt;/tr&gt;</translation>
     </message>
     <message>
-        <location line="-20"/>
-        <location line="+24"/>
+        <location line="-27"/>
+        <location line="+31"/>
         <source>&lt;tr&gt;&lt;td&gt;Fitted field&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1&lt;/b&gt;&lt;/td&gt;&lt;td&gt;µT&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Fit residual&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%2&lt;/b&gt;&lt;/td&gt;&lt;td&gt;µT RMS (%3 %)&lt;/td&gt;&lt;/tr&gt;</source>
         <translation>&lt;tr&gt;&lt;td&gt;擬合磁場&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1&lt;/b&gt;&lt;/td&gt;&lt;td&gt;µT&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;擬合殘差&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%2&lt;/b&gt;&lt;/td&gt;&lt;td&gt;µT RMS（%3 %）&lt;/td&gt;&lt;/tr&gt;</translation>
     </message>
     <message>
-        <location line="-15"/>
-        <location line="+27"/>
+        <location line="-22"/>
+        <location line="+34"/>
         <source>&lt;tr&gt;&lt;td&gt;Samples&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1&lt;/b&gt;&lt;/td&gt;&lt;td&gt;&lt;/td&gt;&lt;/tr&gt;</source>
         <translation>&lt;tr&gt;&lt;td&gt;樣本數&lt;/td&gt;&lt;td align=right&gt;&lt;b&gt;%1&lt;/b&gt;&lt;/td&gt;&lt;td&gt;&lt;/td&gt;&lt;/tr&gt;</translation>
     </message>
@@ -11503,27 +11586,7 @@ Residual RMS: %6 µT
         <translation>正在設定 ATT MODE 1…</translation>
     </message>
     <message>
-        <location line="+106"/>
-        <source>Turned %1 deg, largest step %2 deg: %3</source>
-        <translation>已轉動 %1 deg，最大跳變 %2 deg：%3</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>the heading follows the turn smoothly.</source>
-        <translation>航向角隨轉動平穩變化。</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>the heading jumps: calibrate again (chapter 9.31).</source>
-        <translation>航向角出現跳變：請重新校準（第 9.31 章）。</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>keep turning.</source>
-        <translation>請繼續轉動。</translation>
-    </message>
-    <message>
-        <location line="+146"/>
+        <location line="+275"/>
         <source>No fit yet.</source>
         <translation>尚未擬合。</translation>
     </message>
@@ -11576,7 +11639,7 @@ Samples: %3</source>
         <translation>球面上的磁力計樣本：磁場方向覆蓋到的格子會變綠。拖曳可旋轉檢視，按兩下可重設檢視。</translation>
     </message>
     <message>
-        <location line="+85"/>
+        <location line="+88"/>
         <source>|B| %1 µT   coverage %2 %   %3 samples</source>
         <translation>|B| %1 µT   覆蓋率 %2 %   %3 個樣本</translation>
     </message>

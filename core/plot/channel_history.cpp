@@ -5,6 +5,7 @@
 #include <QtGlobal>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <limits>
 
@@ -29,6 +30,7 @@ ChannelHistory::ChannelHistory(double maxDurationS, size_t maxRows)
 {
     m_maxDuration = kMaxDurationS;
     m_maxRows = kMaxRows;
+    m_channelSeen.fill(-std::numeric_limits<double>::infinity());
     setLimits(maxDurationS, maxRows);
 }
 
@@ -53,6 +55,7 @@ void ChannelHistory::clear()
     m_size = 0;
     m_totalAppended = 0;
     m_presentChannels = 0;
+    m_channelSeen.fill(-std::numeric_limits<double>::infinity());
     m_segments = 0;
     m_hostOriginNs = 0;
     m_haveOrigin = false;
@@ -63,6 +66,9 @@ void ChannelHistory::clear()
     m_deviceOffset = 0.0;
     m_clockSource.clear();
     m_clockSeenHost = 0.0;
+    m_clockDevice = 0.0;
+    m_clockRow = 0;
+    m_standing = false;
     m_clockOwnerRows = m_clockOtherRows = 0;
     m_clockOther.clear();
     m_stepCount = 0;
@@ -178,8 +184,6 @@ void ChannelHistory::appendOne(const model::Sample &s)
             m_clockOwnerRows = m_clockOtherRows = 0;
         }
         ownClock = s.source == m_clockSource;
-        if (ownClock)
-            m_clockSeenHost = host;
     }
     if (ownClock) {
         f |= FlagDeviceTime;
@@ -205,17 +209,30 @@ void ChannelHistory::appendOne(const model::Sample &s)
         }
         m_lastRawDevice = raw;
         m_haveRawDevice = true;
-    } else if (m_haveRawDevice && host - m_clockSeenHost <= kClockHandOverS) {
-        device = m_lastDevice; // keeps the device axis non-decreasing
+        // The rows that stood at the clock's previous time since (another frame type between
+        // two of its rows) go where their host time puts them, before this row.
+        restampStanding(device);
+        m_clockSeenHost = host;
+    } else if (m_haveRawDevice && !(m_period > 0.0 && host - m_clockSeenHost > kOverduePeriods * m_period)
+               && host - m_clockSeenHost <= kClockHandOverS) {
+        // Between two rows of the clock (another frame type interleaved): at the clock's time,
+        // which keeps the device axis non-decreasing.
+        device = m_lastDevice;
+        m_standing = true;
+    } else if (m_haveRawDevice) {
+        // The clock is overdue while other rows go on (an HEC495 streams angles without a time
+        // after its polled records): the host clock carries the axis on from the clock's last
+        // row, so the charts keep moving, and the rows that stood at its time move with it.
+        // A device time that comes back within kClockHandOverS continues its segment; after
+        // that, it starts a new one.
+        restampStanding();
+        device = m_clockDevice + (host - m_clockSeenHost);
+        if (host - m_clockSeenHost > kClockHandOverS)
+            m_haveRawDevice = false;
     } else {
-        // No device clock yet, or it fell silent while other rows go on (an HEC495 streams
-        // angles without a time after its full records): the host clock carries the axis on
-        // from the last row, so the charts keep moving. A device time that comes back starts
-        // a new segment.
-        // The rows of the hand-over second stood at the clock's last time: the first row
-        // after it steps by the host time since that clock was seen.
-        device = first ? host : m_lastDevice + (m_haveRawDevice ? host - m_clockSeenHost : hostStep);
-        m_haveRawDevice = false;
+        // No device clock yet, or it was handed over to the host clock: the axis advances by
+        // the host time.
+        device = first ? host : m_lastDevice + hostStep;
         if (first)
             m_segments = 1;
     }
@@ -244,13 +261,39 @@ void ChannelHistory::appendOne(const model::Sample &s)
     ++m_size;
     ++m_totalAppended;
     m_presentChannels |= f & kChannelMask;
+    for (uint32_t bits = f & kChannelMask; bits; bits &= bits - 1)
+        m_channelSeen[size_t(std::countr_zero(bits))] = host;
     m_lastHost = host;
     m_lastDevice = device;
+    if (f & FlagDeviceTime) {
+        m_clockDevice = device;
+        m_clockRow = m_totalAppended - 1;
+    }
 
     // Bounded by duration (host clock): drop what fell out of the window.
     const double oldest = host - m_maxDuration;
     while (m_size > 1 && m_host[m_head] < oldest)
         dropFront(1);
+}
+
+void ChannelHistory::restampStanding(double upTo)
+{
+    if (!m_standing)
+        return;
+    m_standing = false;
+    if (m_totalAppended == 0)
+        return;
+    // Row indices among the rows kept: the oldest kept row is m_totalAppended - m_size.
+    const uint64_t oldest = m_totalAppended - m_size;
+    const uint64_t from = std::max(m_clockRow + 1, oldest);
+    for (uint64_t r = from; r < m_totalAppended; ++r) {
+        const size_t p = phys(size_t(r - oldest));
+        if (m_flags[p] & FlagDeviceTime)
+            continue;
+        m_device[p] = std::max(m_device[p], std::min(upTo, m_clockDevice + (m_host[p] - m_clockSeenHost)));
+    }
+    if (m_size > 0)
+        m_lastDevice = m_device[phys(m_size - 1)];
 }
 
 double ChannelHistory::time(TimeAxis axis, size_t row) const

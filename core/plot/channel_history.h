@@ -27,10 +27,17 @@
 //          previous row (by the host-time step, or one sample period), and its first
 //          row carries FlagSegmentStart. deviceTimeOffset() is stitched minus raw
 //          device time in the current segment, so the newest data can be shown on the
-//          device's own clock. A row without a device time repeats the previous
-//          row's device time; before any device time, and once the clock's frame type has
-//          been silent for kClockHandOverS with no other clock to take over, rows advance the
-//          axis by their host-time step (a device that stops sending its clock still charts).
+//          device's own clock. A row without a device time between the clock's rows (another
+//          frame type interleaved) stands at the previous row's device time until the clock's
+//          next row comes, then goes where its host time since the clock's row puts it (never
+//          past the next row); once the clock is overdue (silent for more than kOverduePeriods
+//          of its period) such rows follow the host clock from the clock's last row at once,
+//          and the rows that stood at its time are restamped the same way (an HEC495 that streams angles without a time after its
+//          polled records: no pile of rows at one instant, no frozen axis). Before any device
+//          time, and once the clock's frame type has been silent for kClockHandOverS with no
+//          other clock to take over, rows advance the axis by their host-time step (a device
+//          that stops sending its clock still charts); a device time that comes back after
+//          that starts a segment.
 //          One frame type's clock drives the axis (the first with a device time, then the
 //          busiest: another type with more than twice its rows in kClockWindow takes over);
 //          the rows of other types count as rows without one; when the owner has sent
@@ -51,6 +58,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -104,6 +112,7 @@ public:
     static constexpr double kGapPeriods = 5.0;     // a device-clock step above this many periods is a gap
     static constexpr int kPeriodWindow = 15;       // recent positive steps in the period median
     static constexpr double kClockHandOverS = 1.0; // the axis's frame type silent this long (host s): another's clock takes over
+    static constexpr double kOverduePeriods = 2.0; // the clock silent this many periods: rows without one follow the host clock
     static constexpr int kClockWindow = 100;       // rows with a device time per check of which type is busiest
 
     static constexpr uint32_t kChannelMask = (1u << kChannelCount) - 1;
@@ -148,6 +157,8 @@ public:
     uint64_t dropped() const { return m_totalAppended - m_size; }
     // Union of the channels present in any row appended since clear().
     uint32_t presentChannels() const { return m_presentChannels; }
+    // Host time (s) of the newest row that had the channel since clear(); -inf before one.
+    double channelSeenHost(Channel c) const { return m_channelSeen[size_t(c)]; }
     // Segments of the device clock since clear() (0 when empty).
     int segmentCount() const { return m_segments; }
 
@@ -197,6 +208,9 @@ private:
     void dropFront(size_t count);
     void reserveRows(size_t rows);
     void updatePeriod(double step);
+    // Rows after the clock's newest row that stood at its time follow the host clock from it,
+    // up to upTo (the device time of the clock's next row).
+    void restampStanding(double upTo = std::numeric_limits<double>::infinity());
 
     double m_maxDuration;
     size_t m_maxRows;
@@ -213,6 +227,7 @@ private:
     uint64_t m_generation = 0;
     uint64_t m_totalAppended = 0;
     uint32_t m_presentChannels = 0;
+    std::array<double, kChannelCount> m_channelSeen; // host time of each channel's newest row
     int m_segments = 0;
 
     // Time bookkeeping.
@@ -225,6 +240,9 @@ private:
     double m_deviceOffset = 0.0;
     std::string m_clockSource;      // the frame type whose device time drives the device axis
     double m_clockSeenHost = 0.0;   // host time of its newest row
+    double m_clockDevice = 0.0;     // stitched device time of its newest row
+    uint64_t m_clockRow = 0;        // that row's index among all rows appended since clear()
+    bool m_standing = false;        // rows after it stand at its time (restamped once it is overdue)
     int m_clockOwnerRows = 0, m_clockOtherRows = 0; // rows with a device time in this window
     std::string m_clockOther;       // the newest other type among them
     std::array<double, kPeriodWindow> m_steps{};

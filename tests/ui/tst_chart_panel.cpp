@@ -20,6 +20,7 @@
 #include <QLineSeries>
 #include <QMainWindow>
 #include <QMouseEvent>
+#include <QPushButton>
 #include <QRegularExpression>
 #include <QScrollArea>
 #include <QAction>
@@ -535,6 +536,70 @@ private Q_SLOTS:
         panel.refresh();
         QVERIFY(!panel.chart(ChartKind::Pressure)->isHidden());
         QCOMPARE(panel.chart(ChartKind::Accelerometer)->linePoints(Channel::AccX).size(), qsizetype(0));
+    }
+
+    // Issue 53 point 6: a chart whose quantity stops arriving while other data goes on (an
+    // HEC495 streaming its angles after its first polled records) says why on the chart, and
+    // offers the device's switch when its family gives one; the note goes when the data comes.
+    void saysWhyAChartStaysEmpty()
+    {
+        ChartPanel panel;
+        panel.resize(1200, 900);
+        panel.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&panel));
+        ChartView *acc = panel.chart(ChartKind::Accelerometer);
+        ChartView *euler = panel.chart(ChartKind::Euler);
+        const uint32_t anglesOnly = model::FieldEuler | model::FieldDeviceTime;
+        feed(panel, 0, 1000);
+        QVERIFY(!acc->hasNote());
+        // Angles alone: within kMissingAfterS nothing is said yet, then the accelerometer says so.
+        feed(panel, 1000, 2500, true, anglesOnly);
+        QVERIFY(!acc->hasNote());
+        feed(panel, 2500, 4000, true, anglesOnly);
+        QVERIFY(!acc->isHidden());
+        QVERIFY(acc->hasNote());
+        QCOMPARE(acc->noteText(), ChartPanel::missingText(ChartKind::Accelerometer));
+        QVERIFY2(acc->noteText().contains(QStringLiteral("carries no acceleration at its current setting")),
+                 qPrintable(acc->noteText()));
+        QVERIFY(acc->findChild<QWidget *>(QStringLiteral("chartNote"))->isVisible());
+        QVERIFY(panel.chart(ChartKind::Gyroscope)->hasNote());
+        QVERIFY(!euler->hasNote());
+        // Nothing to offer: no button.
+        QVERIFY(acc->noteButton()->isHidden());
+
+        // The family offers a switch for the accelerometer and the gyroscope.
+        int switched = 0;
+        panel.offerOutputSwitch((1u << int(ChartKind::Accelerometer)) | (1u << int(ChartKind::Gyroscope)),
+                                [] { return QStringLiteral("All data"); }, [&switched] { ++switched; });
+        panel.refresh();
+        QVERIFY(acc->hasNote());
+        QVERIFY(acc->noteButton()->isVisible());
+        QCOMPARE(acc->noteButton()->text(), QStringLiteral("All data"));
+        // The note lies over the plot area, within the chart.
+        const QWidget *note = acc->findChild<QWidget *>(QStringLiteral("chartNote"));
+        QVERIFY(acc->canvas()->rect().contains(note->geometry()));
+        QTest::mouseClick(acc->noteButton(), Qt::LeftButton);
+        QCOMPARE(switched, 1);
+        // Clicked once: both charts' buttons wait for the data (kSwitchWaitS).
+        feed(panel, 4000, 4100, true, anglesOnly);
+        QVERIFY(!acc->noteButton()->isEnabled());
+        QVERIFY(!panel.chart(ChartKind::Gyroscope)->noteButton()->isEnabled());
+        // The data comes: the notes go.
+        feed(panel, 4100, 4200);
+        QVERIFY(!acc->hasNote());
+        QVERIFY(!panel.chart(ChartKind::Gyroscope)->hasNote());
+
+        // A device that never sent acceleration: with the offer its chart shows, and says why.
+        panel.clear();
+        feed(panel, 0, 3000, true, anglesOnly);
+        QVERIFY(!acc->isHidden());
+        QVERIFY(acc->hasNote());
+        QVERIFY(acc->noteButton()->isEnabled());
+        QVERIFY(panel.chart(ChartKind::Magnetometer)->isHidden()); // not offered: hidden as before
+        // Without the offer (the link went) it is hidden again.
+        panel.offerOutputSwitch(0, {}, {});
+        panel.refresh();
+        QVERIFY(acc->isHidden());
     }
 
     void timeAxisForAllCharts()

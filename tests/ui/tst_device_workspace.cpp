@@ -3,6 +3,7 @@
 // (its simulator) is released when it closes.
 #include "attitude/attitude_widget.h"
 #include "charts/chart_panel.h"
+#include "charts/chart_view.h"
 #include "workspace/device_workspace.h"
 #include "device/device_link.h"
 #include "families/family_ui.h"
@@ -15,7 +16,10 @@
 #include <QApplication>
 #include <QDockWidget>
 #include <QLabel>
+#include <QPushButton>
 #include <QTest>
+
+#include <cmath>
 
 using namespace imudesk;
 using device::SessionState;
@@ -173,6 +177,81 @@ private Q_SLOTS:
         ws.openDock(ws.rawBytesDock());
         QTRY_VERIFY_WITH_TIMEOUT((ws.rawBytesView()->refresh(), ws.rawBytesView()->text().contains(QStringLiteral("77 "))),
                                  5000);
+        ws.disconnectDevice();
+        QTRY_COMPARE(ws.state(), SessionState::Closed);
+    }
+
+    // Issue 53 point 6. The simulated compass streams its default content (angles) at 50 Hz
+    // after its 3 s quiet window, in which the session polls "read all" (records with
+    // acceleration, rate and the module's clock). Its Euler chart runs on smoothly across that
+    // change (before: the angles of a whole second stood at the records' last device time, a
+    // step and then a flat stretch), and the acceleration and rate charts say why they stay
+    // empty, with a switch of the output to all data that fills them.
+    void compassChartsAcrossItsOutput()
+    {
+        ui::DeviceWorkspace ws;
+        ws.resize(1200, 800);
+        ws.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&ws));
+        QString error;
+        ui::FamilyUiRegistry families;
+        ui::registerBuiltInFamilies(families);
+        QVERIFY2(ui::openLinkIn(ws, families, device::LinkRequest::simulatedHec495(sim::Motion::Spin), &error),
+                 qPrintable(error));
+        QTRY_COMPARE_WITH_TIMEOUT(ws.state(), SessionState::Connected, 15000);
+        const plot::ChannelHistory &h = ws.chartPanel()->history();
+        QTRY_VERIFY_WITH_TIMEOUT(!h.empty() && h.newestTime(plot::TimeAxis::Host) > 6.5, 20000);
+
+        // The yaw on the device axis: the compass turns at 30 deg/s, smoothly. No pile of rows at
+        // one instant turning through more than kPileDeg (a step: the bug piled a second's rows,
+        // about 30 deg, at the records' last time; frames without a clock that a loaded host
+        // reads in one go share their arrival, a pile of a few degrees), no stretch of the axis
+        // without a row (a flat line: the bug's axis jumped a second), no turn faster than the
+        // motion's.
+        constexpr double kPileDeg = 12.0;
+        double pile = 0.0;
+        int rows = 0;
+        size_t previous = SIZE_MAX;
+        for (size_t i = 0; i < h.size(); ++i) {
+            if (!h.has(plot::Channel::Yaw, i))
+                continue;
+            ++rows;
+            if (previous != SIZE_MAX) {
+                const double dt = h.deviceTime(i) - h.deviceTime(previous);
+                double dyaw = double(h.value(plot::Channel::Yaw, i)) - double(h.value(plot::Channel::Yaw, previous));
+                dyaw -= 360.0 * std::round(dyaw / 360.0);
+                const QString where = QStringLiteral("row %1 at %2 s (host %3 s): %4 s and %5 deg after the one before")
+                                          .arg(i)
+                                          .arg(h.deviceTime(i))
+                                          .arg(h.hostTime(i))
+                                          .arg(dt)
+                                          .arg(dyaw);
+                QVERIFY2(dt >= 0.0 && dt < 0.4, qPrintable(where));
+                pile = dt < 1e-6 ? pile + std::abs(dyaw) : 0.0;
+                QVERIFY2(pile < kPileDeg, qPrintable(where + QStringLiteral(", %1 deg at this instant").arg(pile)));
+                if (dt >= 1e-6)
+                    QVERIFY2(std::abs(dyaw) <= 1.0 + 120.0 * dt, qPrintable(where));
+            }
+            previous = i;
+        }
+        QVERIFY2(rows > 200, qPrintable(QString::number(rows)));
+
+        // Angles only since the quiet window: the acceleration chart says why it is empty and
+        // offers the switch.
+        ui::ChartView *acc = ws.chartPanel()->chart(ui::ChartKind::Accelerometer);
+        QTRY_VERIFY_WITH_TIMEOUT(acc->hasNote(), 5000);
+        QVERIFY(acc->isVisible());
+        QVERIFY2(acc->noteText().contains(QStringLiteral("carries no acceleration at its current setting")),
+                 qPrintable(acc->noteText()));
+        QVERIFY(ws.chartPanel()->chart(ui::ChartKind::Gyroscope)->hasNote());
+        QVERIFY(!ws.chartPanel()->chart(ui::ChartKind::Euler)->hasNote());
+        QVERIFY(acc->noteButton()->isVisible() && acc->noteButton()->isEnabled());
+        // One click: the compass outputs all data (0x49 02), acceleration and rate arrive.
+        const double clicked = h.newestTime(plot::TimeAxis::Host);
+        QTest::mouseClick(acc->noteButton(), Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(h.channelSeenHost(plot::Channel::AccZ) > clicked, 10000);
+        QTRY_VERIFY_WITH_TIMEOUT(!acc->hasNote(), 5000);
+        QVERIFY(!ws.chartPanel()->chart(ui::ChartKind::Gyroscope)->hasNote());
         ws.disconnectDevice();
         QTRY_COMPARE(ws.state(), SessionState::Closed);
     }

@@ -314,7 +314,7 @@ private Q_SLOTS:
     {
         // HI91 at 100 Hz on the UTC day (08:00:00 on, PPS-aligned) interleaved with HI83 at
         // 100 Hz whose system_time_us still counts from power-on: the axis follows HI91 alone,
-        // one segment, 10 ms a row pair, and an HI83 row sits at the HI91 time before it.
+        // one segment, 10 ms a row pair, and an HI83 row sits between the HI91 rows.
         ChannelHistory h;
         for (int i = 0; i < 400; ++i) {
             Sample a = makeSample(int64_t(i) * 10'000'000, 28'800'000.0 + i * 10.0, double(i));
@@ -325,7 +325,9 @@ private Q_SLOTS:
         QCOMPARE(h.segmentCount(), 1);
         QVERIFY(nonDecreasing(h, TimeAxis::Device));
         QCOMPARE(h.deviceTime(h.size() - 1) - h.deviceTime(0), 3.99);
-        QCOMPARE(h.deviceTime(1), h.deviceTime(0));
+        // An HI83 row between two HI91 rows goes where its host time puts it (5 ms after the HI91
+        // row before it), not on that row's time.
+        QVERIFY(std::abs(h.deviceTime(1) - h.deviceTime(0) - 0.005) < 1e-9);
         QVERIFY(!(h.flags(1) & ChannelHistory::FlagDeviceTime));
         // HI91 stops; after kClockHandOverS of host time HI83's clock takes over (a new segment).
         for (int i = 400; i < 700; ++i) {
@@ -422,9 +424,11 @@ private Q_SLOTS:
     }
 
     // A device that sends its clock in some frames only and then stops sending them (the
-    // HEC495's full records, then angles alone): after kClockHandOverS the host clock carries
-    // the device axis on, so the charts keep moving; a device time that comes back starts a
-    // new segment.
+    // HEC495's full records, then angles alone): once the clock is overdue (kOverduePeriods)
+    // the host clock carries the device axis on from the clock's last row, so the charts keep
+    // moving (issue 53: the rows of a whole second stood at one instant, a step and then a flat
+    // stretch in the Euler chart); a device time that comes back after kClockHandOverS starts
+    // a new segment.
     void deviceClockFallsSilent()
     {
         ChannelHistory h;
@@ -435,10 +439,15 @@ private Q_SLOTS:
         for (int i = 100; i < 400; ++i) // 3 s of angles without a device time
             h.append(makeSample(int64_t(i) * 10'000'000, 0.0, 0.0, angles));
         QVERIFY(nonDecreasing(h, TimeAxis::Device));
-        // Within the hand-over time the rows repeat the last device time, then they follow
-        // the host clock: the axis has moved on by the host time since the clock fell silent
-        // (0.99 s to 3.99 s).
-        QCOMPARE(h.deviceTime(150), lastClocked);
+        // The rows follow the host clock from the clock's last row (0.99 s): none stands at
+        // its time, not even the two before it was overdue; the axis has moved on by the host
+        // time since the clock fell silent (0.99 s to 3.99 s).
+        QVERIFY(std::abs(h.deviceTime(150) - lastClocked - 0.51) < 1e-9);
+        for (int i = 100; i < 400; ++i)
+            QVERIFY2(std::abs(h.deviceTime(size_t(i)) - h.deviceTime(size_t(i - 1)) - 0.01) < 1e-9,
+                     qPrintable(QStringLiteral("row %1: %2 s after the one before")
+                                    .arg(i)
+                                    .arg(h.deviceTime(size_t(i)) - h.deviceTime(size_t(i - 1)))));
         QVERIFY2(std::abs(h.newestTime(TimeAxis::Device) - lastClocked - 3.0) < 1e-6,
                  qPrintable(QString::number(h.newestTime(TimeAxis::Device) - lastClocked)));
         QVERIFY(h.deviceTime(399) > h.deviceTime(398));

@@ -1,5 +1,6 @@
 #include "calibration/mag_calibration_wizard.h"
 
+#include "calib/ellipsoid_fit.h"
 #include "calib/mag_calibrator.h"
 #include "device/device_session.h"
 #include "settings/setting_catalog.h"
@@ -212,9 +213,12 @@ MagCalibrationWizard::MagCalibrationWizard(device::DeviceSession &session, const
         tr("Keep it in place and turn it slowly (20-100 deg/s) at least one full turn about each axis, until the "
            "sphere is green all over. Usually 30-60 s."),
         QStringLiteral("live"), 360,
-        tr("Coverage: share of the 80 sphere cells the field has pointed into. Largest gap: radius of the biggest "
-           "uncovered area. Raw |B|: the field strength before calibration (its spread is the iron the fit removes). "
-           "Fit: the field and the residual of ImuDesk's fit on the samples so far, refreshed every second."));
+        tr("Coverage: share of the 80 sphere cells the field direction has pointed into, with the module's own iron "
+           "fitted out by the live fit (before a usable fit: the raw directions). The sphere, its readout and the "
+           "verdict give this one figure. Largest gap: radius of the biggest uncovered area. Raw "
+           "|B|: the field strength before calibration (its spread is the iron the fit removes). Fit: the field and "
+           "the residual of ImuDesk's fit on the samples so far, refreshed every second. Samples: every sample taken "
+           "for ImuDesk's fit (the sphere draws a thinned share of them)."));
     m_sphere = rot.sphere;
     m_liveVerdict = rot.verdict;
     m_figures = rot.figures;
@@ -265,11 +269,14 @@ MagCalibrationWizard::MagCalibrationWizard(device::DeviceSession &session, const
     setPage(ResultPage, res);
 
     auto *heading = textPage(tr("Heading check"),
-                             tr("Place the module level and turn it slowly one full turn (360 deg). The heading must "
-                                "change continuously, without jumps of more than 10 deg; within +-5 deg of the true "
-                                "directions is acceptable."));
+                             tr("Place the module level (roll and pitch within 15 deg) and turn it slowly one full turn "
+                                "(360 deg). The heading must change continuously, without jumps of more than 10 deg; "
+                                "within +-5 deg of the true directions is acceptable. Turns made while the module is "
+                                "tilted or the field is disturbed are not judged: the check says so."));
     m_headingStatus = new QLabel;
-    heading->layout()->addWidget(m_headingStatus);
+    m_headingStatus->setObjectName(QStringLiteral("headingStatus"));
+    m_headingStatus->setWordWrap(true);
+    static_cast<QVBoxLayout *>(heading->layout())->insertWidget(1, m_headingStatus);
     setPage(HeadingPage, heading);
 
     connect(m_startDevice, &QPushButton::clicked, this, [this] {
@@ -337,12 +344,15 @@ void MagCalibrationWizard::liveFit()
 {
     if (currentId() != RotationPage || !m_collecting || m_showingRun || m_samples.size() < 30)
         return;
-    // Every n-th sample, at most 3000: a second's work stays a few milliseconds.
-    const size_t step = std::max<size_t>(1, m_samples.size() / 3000);
+    // The samples the sphere keeps (every sample, thinned evenly once there are more than
+    // MagSphereView::kMaxSamples): a second's work stays a few milliseconds, and the sphere,
+    // corrected by this fit, covers exactly the cells the fit counts (one coverage on the page).
+    const std::vector<Eigen::Vector3d> &kept = m_sphere->samples();
+    const size_t step = std::max<size_t>(1, kept.size() / MagSphereView::kMaxSamples);
     std::vector<Eigen::Vector3d> subset;
-    subset.reserve(m_samples.size() / step + 1);
-    for (size_t i = 0; i < m_samples.size(); i += step)
-        subset.push_back(m_samples[i]);
+    subset.reserve(kept.size() / step + 1);
+    for (size_t i = 0; i < kept.size(); i += step)
+        subset.push_back(kept[i]);
     // Fewer resampled fits than the final fit: the live verdict refreshes every second.
     calib::MagCalibrator::Options live;
     live.replicates = kLiveReplicates;
@@ -353,6 +363,15 @@ void MagCalibrationWizard::liveFit()
     if (m_live.verdict == calib::MagVerdict::Pass)
         m_live = calib::MagCalibrator().calibrate(subset);
     m_haveLive = true;
+    // The sphere shows the directions as this fit corrects them, so its cells and coverage are
+    // the ones the fit judges; without a usable fit, around the centre of the best-fitting
+    // sphere, as the fit counts the coverage of raw samples.
+    if (m_live.usable())
+        m_sphere->setCalibration(m_live.hardIron, m_live.softIron);
+    else if (const auto sphere = calib::EllipsoidFit::sphere(subset))
+        m_sphere->setCalibration(sphere->first, Eigen::Matrix3d::Identity());
+    else
+        m_sphere->clearCalibration();
     setVerdictHeadline(m_liveVerdict, m_live.verdict,
                        tr("So far: %1. %2").arg(calib::MagCalResult::verdictText(m_live.verdict), m_live.reason));
     m_figures->setText(liveFiguresText());
@@ -454,8 +473,15 @@ QString MagCalibrationWizard::liveFiguresText() const
         rows += tr("<tr><td>Samples</td><td align=right><b>%1</b></td><td></td></tr>").arg(r.samples);
         return QStringLiteral("<table cellspacing=4>") + rows + QStringLiteral("</table>");
     }
+    // One coverage and one sample count: the sphere's (its cells are the ones drawn, corrected
+    // by the live fit once there is a usable one, as the fit counts them) and the samples
+    // taken, which the sphere's readout gives too.
     const calib::SphereCoverage &cov = m_sphere->coverage();
-    QString rows = tr("<tr><td>Coverage</td><td align=right><b>%1 %</b></td><td>(%2 of %3 cells)</td></tr>")
+    const bool corrected = m_haveLive && m_live.usable();
+    QString rows = (corrected ? tr("<tr><td>Coverage</td><td align=right><b>%1 %</b></td><td>(%2 of %3 cells, the "
+                                   "module's iron fitted out)</td></tr>")
+                              : tr("<tr><td>Coverage</td><td align=right><b>%1 %</b></td><td>(%2 of %3 cells, raw "
+                                   "directions: no usable fit yet)</td></tr>"))
                        .arg(cov.percent(), 0, 'f', 0)
                        .arg(cov.coveredCells())
                        .arg(calib::SphereCoverage::kCells);
@@ -516,8 +542,17 @@ void MagCalibrationWizard::pageChanged(int id)
         m_figures->setText(liveFiguresText());
     }
     if (id == HeadingPage) {
-        m_haveYaw = false;
-        m_headingTurned = m_headingMaxJump = 0;
+        // The field is judged corrected: by the module itself once its own calibration
+        // succeeded, else by ImuDesk's fit of the raw samples; without either it is not judged.
+        if (m_device.procedure().state() == calib::MagCalProcedure::State::Succeeded)
+            m_heading.setFieldCorrection(Eigen::Vector3d::Zero(), Eigen::Matrix3d::Identity());
+        else if (m_fitted && m_result.usable())
+            m_heading.setFieldCorrection(m_result.hardIron, m_result.softIron);
+        else
+            m_heading.clearFieldCorrection();
+        m_heading.reset();
+        m_headingStatus->setStyleSheet(QString());
+        m_headingStatus->setText(headingText());
     }
     if (id == ResultPage) {
         // Samples came in after a refused fit: the result is the fit of all of them.
@@ -575,37 +610,45 @@ void MagCalibrationWizard::refresh()
                 m_sphere->addSample(m);
             }
         }
-        if (page == HeadingPage && (s.fields & model::FieldEuler)) {
-            if (m_haveYaw) {
-                double d = s.yaw - m_lastYaw;
-                while (d > 180)
-                    d -= 360;
-                while (d < -180)
-                    d += 360;
-                m_headingTurned += std::abs(d);
-                m_headingMaxJump = std::max(m_headingMaxJump, std::abs(d));
-            }
-            m_lastYaw = s.yaw;
-            m_haveYaw = true;
-        }
+        if (page == HeadingPage)
+            m_heading.add(s);
     }
     if (page == EnvironmentPage)
         showEnvironment();
     if (page == RotationPage && added)
         m_figures->setText(liveFiguresText());
-    if (page == HeadingPage)
-        m_headingStatus->setText(tr("Turned %1 deg, largest step %2 deg: %3")
-                                     .arg(m_headingTurned, 0, 'f', 0)
-                                     .arg(m_headingMaxJump, 0, 'f', 1)
-                                     .arg(headingCheckPassed() ? tr("the heading follows the turn smoothly.")
-                                          : m_headingMaxJump > kMaxHeadingJumpDeg
-                                          ? tr("the heading jumps: calibrate again (chapter 9.31).")
-                                          : tr("keep turning.")));
+    if (page == HeadingPage && !samples.empty()) {
+        using S = calib::HeadingCheck::Status;
+        const S status = m_heading.status();
+        // Green when it passed, red when the heading jumped where it could be judged, amber
+        // while it waits for a level turn in a steady field.
+        setVerdictHeadline(m_headingStatus,
+                           status == S::Passed  ? calib::MagVerdict::Pass
+                           : status == S::Jumps ? calib::MagVerdict::Fail
+                                                : calib::MagVerdict::Warn,
+                           headingText());
+    }
 }
 
-bool MagCalibrationWizard::headingCheckPassed() const
+QString MagCalibrationWizard::headingText() const
 {
-    return m_headingTurned >= 360.0 && m_headingMaxJump <= kMaxHeadingJumpDeg;
+    QString text = m_heading.advice();
+    if (m_heading.status() != calib::HeadingCheck::Status::Jumps)
+        return text;
+    // A jump after calibrations that passed: say why the two do not contradict each other.
+    calib::MagVerdict device;
+    const bool devicePassed = deviceVerdict(device) && device == calib::MagVerdict::Pass;
+    const bool fitPassed = m_fitted && m_result.usable();
+    if (devicePassed)
+        text += QLatin1Char(' ')
+            + tr("The module's own calibration (MCAL) passed on the turns it collected, but its heading jumps in a level "
+                 "turn here: the field or the module's mounting changed since, or the collected turns did not "
+                 "represent this place.");
+    else if (fitPassed)
+        text += QLatin1Char(' ')
+            + tr("ImuDesk's fit passed on the collected samples, but the module computes its heading with its own "
+                 "calibration, which was not run to its end here: run the module's calibration (MCAL) too.");
+    return text;
 }
 
 void MagCalibrationWizard::runFit()

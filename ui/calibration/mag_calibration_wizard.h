@@ -6,8 +6,9 @@
 //   missing rotation; the device-side run, calib::MagCalSession, beside it; "Fit" runs our
 //   calib::MagCalibrator on the same samples) -> result (verdict, metrics, before/after
 //   sphere, the predicted heading error with the hard- and soft-iron uncertainty, the
-//   troubleshooting of 9.31 when it is not usable) -> heading check (turn
-//   360 deg flat: the heading must change continuously, no jump > 10 deg).
+//   troubleshooting of 9.31 when it is not usable) -> heading check (calib::HeadingCheck: turn
+//   360 deg level, the heading must change continuously, no jump > 10 deg; tilted or in a
+//   disturbed field it says what to do instead of judging the calibration).
 // Constructed with the device's session and its firmware (which picks the device flow);
 // reads the SampleStore on a 20 Hz clock. Each fit shown on the result page is kept in the
 // calibration history (runSaver(): root and the device's identity); the page says where.
@@ -30,6 +31,7 @@
 // SphereCoverage) and runs are stored by calib::CalibrationHistory. The wizards take the
 // device's DeviceSession or Hec495Session and read its SampleStore on a clock; the history
 // dialog lists runs through models::CalibrationHistoryModel in a QTableView.
+#include "calib/heading_check.h"
 #include "calib/mag_cal_result.h"
 #include "calib/mag_cal_session.h"
 #include "calib/mag_environment_judge.h"
@@ -62,7 +64,7 @@ class MagCalibrationWizard : public QWizard {
 public:
     enum PageId { IntroPage, ModePage, EnvironmentPage, RotationPage, ResultPage, HeadingPage };
     static constexpr size_t kMaxSamples = 20000;
-    static constexpr double kMaxHeadingJumpDeg = 10.0;
+    static constexpr double kMaxHeadingJumpDeg = calib::HeadingCheck::kMaxJumpDeg;
     static constexpr int kLiveReplicates = 12; // resampled fits behind the live verdict (final fit: more)
     static constexpr int kRebootSettleMs = 2500; // after REBOOT, before reading the mode back
 
@@ -99,10 +101,14 @@ public:
     QString deviceResultText() const;
     // The device's run for the saved result ("device_calibration"); empty when not started.
     QJsonObject deviceResultJson() const;
-    // Heading check: degrees turned so far, the largest jump between samples, passed.
-    double headingTurnedDeg() const { return m_headingTurned; }
-    double headingMaxJumpDeg() const { return m_headingMaxJump; }
-    bool headingCheckPassed() const;
+    // Heading check (calib::HeadingCheck): degrees turned so far (level or not), the largest
+    // step judged (level, in a steady field), passed; its line on the page.
+    double headingTurnedDeg() const { return m_heading.totalTurnDeg(); }
+    double headingMaxJumpDeg() const { return m_heading.largestJudgedStepDeg(); }
+    bool headingCheckPassed() const { return m_heading.passed(); }
+    const calib::HeadingCheck &headingCheck() const { return m_heading; }
+    QLabel *headingStatus() const { return m_headingStatus; }
+    QString headingText() const;
     // Where finished runs are kept: set its root and the device's identity before the run.
     CalibrationRunSaver &runSaver() { return m_saver; }
 
@@ -167,10 +173,7 @@ private:
     QTimer m_fitClock;
     double m_minField = 0, m_maxField = 0;
     QLabel *m_headingStatus = nullptr;
-    double m_lastYaw = 0;
-    bool m_haveYaw = false;
-    double m_headingTurned = 0;
-    double m_headingMaxJump = 0;
+    calib::HeadingCheck m_heading;
 };
 
 } // namespace imudesk::ui

@@ -27,6 +27,7 @@ MagSphereView::MagSphereView(QWidget *parent)
 void MagSphereView::clear()
 {
     m_samples.clear();
+    m_total = 0;
     m_sum.setZero();
     m_coverage.clear();
     m_showsRun = false;
@@ -67,6 +68,7 @@ void MagSphereView::addSample(const Eigen::Vector3d &magUt)
             m_sum += s;
     }
     m_samples.push_back(magUt);
+    ++m_total;
     m_sum += magUt;
     m_lastField = m_calibrated ? corrected(magUt).norm() : magUt.norm();
     if (m_calibrated) {
@@ -92,6 +94,7 @@ void MagSphereView::setSamples(const std::vector<Eigen::Vector3d> &magUt)
             m_samples.push_back(m);
             m_sum += m;
         }
+    m_total = m_samples.size();
     rebuild();
 }
 
@@ -108,7 +111,7 @@ QString MagSphereView::readoutText() const
         return tr("|B| %1 µT   coverage %2 %   %3 samples")
                    .arg(m_lastField, 0, 'f', 1)
                    .arg(m_coverage.percent(), 0, 'f', 0)
-                   .arg(m_samples.size())
+                   .arg(m_total)
             + QLatin1Char('\n') + hint();
     // The run's own figures, as its result states them. The coverage is that of the corrected
     // directions: a raw view (no usable correction) centres the samples elsewhere, so it

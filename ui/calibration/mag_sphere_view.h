@@ -10,7 +10,7 @@
 // centres' depth. Left-drag turns the view, double-click resets it. While samples come in
 // (addSample) at most kMaxSamples are kept (every second one is dropped when full, so the
 // spread stays); setSamples() keeps every sample of a finished run, so that its cells are
-// the run's coverage.
+// the run's coverage. The readout counts every sample given, not the ones kept.
 //
 // A finished run (showRun) is read out from its result, not from the view's own counts: the
 // samples, coverage and predicted heading error the result page, the report and the saved
@@ -51,7 +51,11 @@ public:
     double coveragePercent() const { return m_coverage.percent(); }
     QString hint() const { return m_coverage.missingRotationHint(); }
     double lastFieldUt() const { return m_lastField; }
+    // The samples kept (at most kMaxSamples while they come in: thinned evenly), and every
+    // sample given since clear() (what the readout counts: the samples taken, not the kept).
     size_t sampleCount() const { return m_samples.size(); }
+    size_t totalSamples() const { return m_total; }
+    const std::vector<Eigen::Vector3d> &samples() const { return m_samples; }
 
     QSize sizeHint() const override { return {360, 360}; }
     QSize minimumSizeHint() const override { return {160, 160}; }
@@ -67,6 +71,7 @@ private:
     void rebuild();
 
     std::vector<Eigen::Vector3d> m_samples;
+    size_t m_total = 0;
     Eigen::Vector3d m_sum = Eigen::Vector3d::Zero();
     bool m_calibrated = false;
     Eigen::Vector3d m_hardIron = Eigen::Vector3d::Zero();

@@ -13,6 +13,7 @@
 #include <QMenu>
 #include <QPainter>
 #include <QPixmap>
+#include <QPushButton>
 #include <QScreen>
 #include <QStatusBar>
 #include <QStyle>
@@ -186,12 +187,82 @@ void ChartPanel::appendSamples(const std::vector<model::Sample> &batch)
 void ChartPanel::clear()
 {
     m_history.clear();
+    m_switchClickedAt = -1.0;
+}
+
+void ChartPanel::offerOutputSwitch(uint32_t charts, std::function<QString()> label, std::function<void()> action)
+{
+    m_offerCharts = charts;
+    m_offerLabel = std::move(label);
+    m_offerAction = std::move(action);
+    for (ChartView *chart : m_charts)
+        chart->clearNote(); // offered again on the next refresh
+    updateChartVisibility(true);
+}
+
+QString ChartPanel::missingText(ChartKind kind)
+{
+    switch (kind) {
+    case ChartKind::Accelerometer: return tr("This device's output carries no acceleration at its current setting.");
+    case ChartKind::Gyroscope: return tr("This device's output carries no angular rate at its current setting.");
+    case ChartKind::Magnetometer: return tr("This device's output carries no magnetic field at its current setting.");
+    case ChartKind::Euler: return tr("This device's output carries no Euler angles at its current setting.");
+    case ChartKind::Quaternion: return tr("This device's output carries no quaternion at its current setting.");
+    case ChartKind::Pressure: return tr("This device's output carries no pressure at its current setting.");
+    case ChartKind::Temperature: return tr("This device's output carries no temperature at its current setting.");
+    }
+    return {};
+}
+
+void ChartPanel::updateNotes()
+{
+    const double newest = m_history.empty() ? 0.0 : m_history.newestTime(TimeAxis::Host);
+    const bool switchEnabled = m_switchClickedAt < 0.0 || newest - m_switchClickedAt > kSwitchWaitS;
+    for (ChartView *chart : m_charts) {
+        if (m_history.empty() || chart->isHidden()) {
+            if (chart->hasNote())
+                chart->clearNote();
+            continue;
+        }
+        // Host time 0 is the first row: a quantity that never came counts from there.
+        double seen = 0.0;
+        for (plot::Channel c : ChartView::channelsOf(chart->kind()))
+            seen = std::max(seen, m_history.channelSeenHost(c));
+        if (newest - seen <= kMissingAfterS) {
+            if (chart->hasNote())
+                chart->clearNote();
+            continue;
+        }
+        const bool offered = ((m_offerCharts >> int(chart->kind())) & 1u) && m_offerAction;
+        const QString text = missingText(chart->kind());
+        const QString label = offered && m_offerLabel ? m_offerLabel() : QString();
+        if (chart->hasNote() && chart->noteText() == text && chart->noteButton()->text() == label
+            && (!offered || chart->noteButton()->isEnabled() == switchEnabled))
+            continue;
+        if (!offered) {
+            chart->setNote(text);
+            continue;
+        }
+        chart->setNote(text, label,
+                       [this] {
+                           m_switchClickedAt = m_history.empty() ? 0.0 : m_history.newestTime(TimeAxis::Host);
+                           for (ChartView *other : m_charts)
+                               other->noteButton()->setEnabled(false);
+                           m_offerAction();
+                       },
+                       switchEnabled);
+    }
 }
 
 void ChartPanel::updateChartVisibility(bool force)
 {
-    // Before any data every chosen chart shows; after, only those with something to show.
-    const uint32_t present = m_history.empty() ? ~0u : m_history.presentChannels();
+    // Before any data every chosen chart shows; after, only those with something to show (or
+    // that the device's output can be switched to fill: they say so on the chart).
+    uint32_t offered = 0;
+    for (int k = 0; k < kChartKindCount; ++k)
+        if ((m_offerCharts >> k) & 1u)
+            offered |= ChartView::channelMask(ChartKind(k));
+    const uint32_t present = m_history.empty() ? ~0u : m_history.presentChannels() | offered;
     if (present == m_shownPresence && !force)
         return;
     m_shownPresence = present;
@@ -245,6 +316,7 @@ void ChartPanel::layoutCharts()
 void ChartPanel::refresh()
 {
     updateChartVisibility();
+    updateNotes();
     for (ChartView *chart : m_charts)
         if (chart->refresh())
             ++m_refreshCount;

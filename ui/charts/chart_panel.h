@@ -27,6 +27,7 @@
 #include <QWidget>
 
 #include <array>
+#include <functional>
 #include <vector>
 
 class QAction;
@@ -82,6 +83,18 @@ public:
     void setSettings(const ChartSettings &settings);
 
     static constexpr int kSavedMessageMs = 10000; // how long the status bar says where the PNG went
+    // A chart whose quantity has not arrived for this long (host s) while other data does says
+    // so on the chart: the device's output carries none at its current setting.
+    static constexpr double kMissingAfterS = 2.0;
+    // After the output switch was clicked, its button waits this long (host s) for the data.
+    static constexpr double kSwitchWaitS = 5.0;
+
+    // A device whose output can be set to carry what some charts miss (an HEC495 that streams
+    // its angles only): those charts (bit per ChartKind) show even before their quantity
+    // arrives, and their note offers a button, label(), that calls action().
+    void offerOutputSwitch(uint32_t charts, std::function<QString()> label, std::function<void()> action);
+    // What a chart's note says when its quantity does not arrive.
+    static QString missingText(ChartKind kind);
 
     // All charts shown, as one PNG.
     bool saveAllPng(const QString &path, QString *error = nullptr) const;
@@ -113,6 +126,7 @@ private:
     void updateChartVisibility(bool force = false);
     void layoutCharts();
     void tellSaved(const QString &path);
+    void updateNotes();
 
     plot::ChannelHistory m_history;
     plot::TimeAxis m_timeAxis = plot::TimeAxis::Device;
@@ -124,6 +138,10 @@ private:
     uint32_t m_shownPresence = ~0u;
     uint32_t m_shownCharts = 0; // bit per ChartKind, as laid out
     int m_columns = 0;
+    uint32_t m_offerCharts = 0; // bit per ChartKind
+    std::function<QString()> m_offerLabel;
+    std::function<void()> m_offerAction;
+    double m_switchClickedAt = -1.0; // host time (s) of the newest row when the switch was clicked
 
     std::array<ChartView *, kChartKindCount> m_charts{};
     std::array<QAction *, kChartKindCount> m_chartActions{};

@@ -11,6 +11,7 @@
 #include <QEvent>
 #include <QFileDialog>
 #include <QFont>
+#include <QFrame>
 #include <QHBoxLayout>
 #include <QImageWriter>
 #include <QLabel>
@@ -20,6 +21,7 @@
 #include <QPainter>
 #include <QPen>
 #include <QPixmap>
+#include <QPushButton>
 #include <QVBoxLayout>
 #include <QWidgetAction>
 
@@ -219,6 +221,29 @@ ChartView::ChartView(ChartKind kind, QWidget *parent)
     });
     m_canvas->installEventFilter(this);
     m_decimator.setExtremaOnly(true);
+
+    // The note over the plot area: why the chart stays empty, and what would fill it.
+    m_note = new QFrame(m_canvas);
+    m_note->setObjectName(QStringLiteral("chartNote"));
+    m_note->setFrameShape(QFrame::StyledPanel);
+    m_note->setAutoFillBackground(true);
+    auto *noteLayout = new QVBoxLayout(m_note);
+    noteLayout->setContentsMargins(10, 8, 10, 8);
+    m_noteLabel = new QLabel(m_note);
+    m_noteLabel->setObjectName(QStringLiteral("chartNoteText"));
+    m_noteLabel->setWordWrap(true);
+    m_noteLabel->setAlignment(Qt::AlignCenter);
+    noteLayout->addWidget(m_noteLabel);
+    m_noteButton = new QPushButton(m_note);
+    m_noteButton->setObjectName(QStringLiteral("chartNoteButton"));
+    noteLayout->addWidget(m_noteButton, 0, Qt::AlignHCenter);
+    connect(m_noteButton, &QPushButton::clicked, this, [this] {
+        m_noteButton->setEnabled(false); // until the panel offers it again
+        if (m_noteAction)
+            m_noteAction();
+    });
+    connect(m_canvas, &PlotCanvas::plotAreaChanged, this, [this](const QRectF &) { placeNote(); });
+    m_note->hide();
 
     // The context menu: the vertical range and saving this chart.
     m_menu = new QMenu(this);
@@ -567,8 +592,55 @@ bool ChartView::refresh()
 
 // ---------------------------------------------------------------- crosshair
 
+void ChartView::setNote(const QString &text, const QString &actionText, const std::function<void()> &action,
+                        bool actionEnabled)
+{
+    m_noteLabel->setText(text);
+    m_noteAction = action;
+    m_noteButton->setText(actionText);
+    m_noteButton->setVisible(!actionText.isEmpty());
+    m_noteButton->setEnabled(actionEnabled);
+    m_note->show();
+    placeNote();
+}
+
+void ChartView::clearNote()
+{
+    m_note->hide();
+    m_noteAction = {};
+}
+
+bool ChartView::hasNote() const
+{
+    return !m_note->isHidden();
+}
+
+QString ChartView::noteText() const
+{
+    return hasNote() ? m_noteLabel->text() : QString();
+}
+
+void ChartView::placeNote()
+{
+    if (m_note->isHidden())
+        return;
+    // Centred on the plot area, as wide as it allows (at most 460 px), never wider than the canvas.
+    const QRect area = m_canvas->plotArea().toAlignedRect().isValid() ? m_canvas->plotArea().toAlignedRect()
+                                                                       : m_canvas->rect();
+    const int width = std::max(1, std::min({460, area.width() - 16, m_canvas->width()}));
+    m_note->setFixedWidth(width);
+    const int height = std::min(m_note->heightForWidth(width) > 0 ? m_note->heightForWidth(width)
+                                                                 : m_note->sizeHint().height(),
+                                m_canvas->height());
+    m_note->setFixedHeight(height);
+    m_note->move(area.center().x() - width / 2, std::max(0, area.center().y() - height / 2));
+    m_note->raise();
+}
+
 bool ChartView::eventFilter(QObject *watched, QEvent *event)
 {
+    if (watched == m_canvas && event->type() == QEvent::Resize)
+        placeNote();
     if (watched == m_canvas && m_cursorEnabled) {
         if (event->type() == QEvent::MouseMove) {
             const QPointF pos = static_cast<QMouseEvent *>(event)->position();

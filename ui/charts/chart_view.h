@@ -34,6 +34,8 @@ class QComboBox;
 class QDoubleSpinBox;
 class QLabel;
 class QMenu;
+class QFrame;
+class QPushButton;
 
 namespace imudesk::ui {
 
@@ -130,6 +132,17 @@ public:
     int plotWidthPx() const;
     int drawnWidthPx() const { return m_drawnWidth; }
 
+    // A note over the plot area (ChartPanel's: the device's output carries no data for this
+    // chart at its current setting), with a button when actionText is given; clicking it calls
+    // `action` and disables the button until the note is set again with enabled true.
+    // clearNote() removes it.
+    void setNote(const QString &text, const QString &actionText = {}, const std::function<void()> &action = {},
+                 bool actionEnabled = true);
+    void clearNote();
+    bool hasNote() const;
+    QString noteText() const;
+    QPushButton *noteButton() const { return m_noteButton; }
+
     // The surface the chart is drawn on: ranges, titles, plot area, legend entries.
     PlotCanvas *canvas() const { return m_canvas; }
     // The decimated points drawn for an axis at the last redraw (empty while hidden).
@@ -169,6 +182,7 @@ private:
     Window liveWindow() const;
     void saveAsPngInteractive();
     void markDirty() { m_dirty = true; }
+    void placeNote();
 
     const ChartKind m_kind;
     const std::vector<plot::Channel> m_channels;
@@ -208,6 +222,10 @@ private:
     QDoubleSpinBox *m_minSpin = nullptr;
     QDoubleSpinBox *m_maxSpin = nullptr;
     QLabel *m_readout = nullptr;
+    QFrame *m_note = nullptr;
+    QLabel *m_noteLabel = nullptr;
+    QPushButton *m_noteButton = nullptr;
+    std::function<void()> m_noteAction;
 };
 
 } // namespace imudesk::ui

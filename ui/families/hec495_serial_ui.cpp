@@ -2,6 +2,7 @@
 
 #include "attitude/heading_dial.h"
 #include "calibration/hec495_calibration_wizard.h"
+#include "charts/chart_panel.h"
 #include "configuration/hec495_settings_panel.h"
 #include "device/hec495_session.h"
 #include "model/attitude.h"
@@ -61,6 +62,14 @@ void Hec495SerialUi::decorate(DeviceWorkspace &ws, device::DeviceLink &link, con
     panel->setObjectName(QStringLiteral("hec495SettingsPanel"));
     ws.addLinkDock(familyDock(panel, QStringLiteral("hec495SettingsDock"), tr("Compass settings")),
                    DeviceWorkspace::LinkDockPlace::BehindValues);
+    // Streaming its default content (the 0x84 angles), the compass sends no acceleration or
+    // rate: those charts say so, with a switch of the output content to all data (0x49 02, the
+    // 0x14 record: angles, acceleration, rate and its clock). Not saved: the compass settings'
+    // Save keeps it over a restart.
+    ws.chartPanel()->offerOutputSwitch(
+        (1u << int(ChartKind::Accelerometer)) | (1u << int(ChartKind::Gyroscope)),
+        [] { return tr("Switch the output to all data"); },
+        [session] { session->setOutputContent(protocol::witlink::OutputContent::AllData); });
     // Tools > Calibrate > HEC495 compass: the compass's own calibration methods.
     ws.offerTool(DeviceWorkspace::LinkTool::CompassCalibration, [&ws, session](QWidget *parent) {
         auto *wizard = new Hec495CalibrationWizard(*session, parent);

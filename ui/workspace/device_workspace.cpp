@@ -225,6 +225,7 @@ void DeviceWorkspace::dropLink()
     }
     m_linkDockPlaces.clear();
     m_linkTools.clear();
+    m_charts->offerOutputSwitch(0, {}, {}); // it calls the link that goes now
     m_start = {}; // it opens the link that goes now
     delete std::exchange(m_configPanel, nullptr);
     m_recording->setSession(nullptr);
