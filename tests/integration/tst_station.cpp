@@ -20,6 +20,7 @@
 #include "core/results/results_store.h"
 #include "core/station/station_runner.h"
 
+#include <QDir>
 #include <QElapsedTimer>
 #include <QFile>
 #include <QGuiApplication>
@@ -354,9 +355,9 @@ void TestStation::cliTray()
                                  120000);
     QVERIFY2(ok.code == 0, qPrintable(ok.out + ok.err));
     QVERIFY(ok.out.startsWith(QStringLiteral("PASS ")));
-    // The results database beside the run folder, from the command line: the module tested twice
+    // The results database in the run folder the command line named: the module tested twice
     // has two attempts, the plan's yield counts every module.
-    const QString db = dir.filePath(QStringLiteral("results.sqlite"));
+    const QString db = QDir(runDir).filePath(QStringLiteral("results.sqlite"));
     const QString serial = byPort.value(tray.ports[3]).value(QStringLiteral("serial")).toString();
     const auto history = test::runCli({QStringLiteral("results"), QStringLiteral("serial"), serial, QStringLiteral("--db"), db,
                                        QStringLiteral("--json")});
