@@ -1139,15 +1139,15 @@
 <context>
     <name>CaptureExporter</name>
     <message>
-        <location filename="../core/record/capture_exporter.cpp" line="+121"/>
-        <location line="+152"/>
+        <location filename="../core/record/capture_exporter.cpp" line="+125"/>
+        <location line="+153"/>
         <location line="+6"/>
         <source>Cannot write %1: %2</source>
         <translation>无法写入 %1：%2</translation>
     </message>
     <message>
-        <location line="-166"/>
-        <location line="+208"/>
+        <location line="-167"/>
+        <location line="+209"/>
         <location line="+28"/>
         <source>Writing %1 failed: %2. Check the free disk space.</source>
         <translation>写入 %1 失败：%2。请检查磁盘剩余空间。</translation>
@@ -1173,7 +1173,7 @@
         <translation>模块以北西天（NWU）坐标系输出姿态（CONFIG IMU COORD 4）；厂商 CSV 的格式没有列可以注明：其中的角度和四元数均为 NWU。</translation>
     </message>
     <message>
-        <location line="+33"/>
+        <location line="+42"/>
         <source>Export cancelled.</source>
         <translation>导出已取消。</translation>
     </message>
@@ -2711,6 +2711,101 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
 </context>
 <context>
+    <name>MagnetometerFile</name>
+    <message>
+        <location filename="../core/record/magnetometer_file.cpp" line="+80"/>
+        <source>%1 holds no magnetometer samples in µT (a %2): record the module&apos;s output with its magnetometer (HI91, HI81 or HI83)</source>
+        <translation>%1 中没有以 µT 为单位的磁力计样本（%2）：请录制包含磁力计的模块输出（HI91、HI81 或 HI83）</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>the session %1 has no device %2; its devices: %3</source>
+        <translation>会话 %1 中没有设备 %2；其设备：%3</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>the session %1 holds %2 devices (%3): choose one with --device NAME</source>
+        <translation>会话 %1 包含 %2 个设备（%3）：请用 --device NAME 选择一个</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>session</source>
+        <translation>会话</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>line %1 is not a JSON object: %2</source>
+        <translation>第 %1 行不是 JSON 对象：%2</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>line %1, key mag: three numbers [x, y, z] in µT are needed</source>
+        <translation>第 %1 行，键 mag：需要三个以 µT 为单位的数 [x, y, z]</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>more than %1 samples</source>
+        <translation>超过 %1 个样本</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <location line="+28"/>
+        <source>the file holds %1 devices (%2): choose one with --device NAME</source>
+        <translation>文件包含 %1 个设备（%2）：请用 --device NAME 选择一个</translation>
+    </message>
+    <message>
+        <location line="-24"/>
+        <location line="+30"/>
+        <source>the file has no device %1; its devices: %2</source>
+        <translation>文件中没有设备 %1；其设备：%2</translation>
+    </message>
+    <message>
+        <location line="-28"/>
+        <source>no line has a key mag (the magnetometer, µT)</source>
+        <translation>没有任何一行包含键 mag（磁力计，µT）</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 lines without a magnetometer passed over</source>
+        <translation>已跳过 %1 行无磁力计数据的行</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>--device %1: the file has no device column</source>
+        <translation>--device %1：文件中没有 device 列</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1 rows without a magnetometer passed over</source>
+        <translation>已跳过 %1 行无磁力计数据的行</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>%1 is a folder without session.json: give a file, or a recorded session&apos;s folder</source>
+        <translation>%1 是不含 session.json 的文件夹：请给出一个文件，或已录制会话的文件夹</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>cannot read %1: %2</source>
+        <translation>无法读取 %1：%2</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>--device chooses a device of a session: %1 is not one</source>
+        <translation>--device 用于选择会话中的设备：%1 不是会话</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1 is larger than %2 MB; split it</source>
+        <translation>%1 大于 %2 MB；请将其拆分</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
+    </message>
+</context>
+<context>
     <name>McapRecording</name>
     <message>
         <location filename="../core/record/mcap_recording.cpp" line="+97"/>
@@ -2781,6 +2876,34 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <location line="+1"/>
         <source>%1, Modbus node %2</source>
         <translation>%1，Modbus 节点 %2</translation>
+    </message>
+</context>
+<context>
+    <name>MotionCheck</name>
+    <message>
+        <location filename="../core/calib/motion_check.cpp" line="+87"/>
+        <source>the module moved: Allan deviation needs a still recording</source>
+        <translation>模块移动过：阿伦方差需要静止状态下的记录</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>gyro std dev %1 °/s, a module at rest stays below %2 °/s</source>
+        <translation>陀螺仪标准差 %1 °/s，静止的模块低于 %2 °/s</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>its rate changed by %1 °/s between 1-s windows: it was turned</source>
+        <translation>其角速度在 1 秒窗口之间变化了 %1 °/s：模块被转动过</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>it turned steadily at %1 °/s; a gyro&apos;s bias stays below %2 °/s</source>
+        <translation>模块以 %1 °/s 匀速转动；陀螺仪零偏低于 %2 °/s</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>its acceleration changed by %1 G between 1-s windows: it was tilted or pushed</source>
+        <translation>其加速度在 1 秒窗口之间变化了 %1 G：模块被倾斜或推动过</translation>
     </message>
 </context>
 <context>
@@ -3327,46 +3450,58 @@ Keep the module in place while turning it, and calibrate it together with everyt
     <name>SampleCsv</name>
     <message>
         <location filename="../core/calib/sample_csv.cpp" line="+34"/>
+        <location line="+82"/>
         <source>line %1 is longer than %2 characters</source>
         <translation>第 %1 行超过 %2 个字符</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="-74"/>
+        <location line="+82"/>
         <source>line %1 has more than %2 columns</source>
         <translation>第 %1 行超过 %2 列</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="-77"/>
         <source>line %1: the header has an empty column name</source>
         <translation>第 %1 行：表头中有空列名</translation>
     </message>
     <message>
         <location line="+4"/>
+        <location line="+101"/>
         <source>line %1: a header row of column names is required (e.g. mag_x,mag_y,mag_z)</source>
         <translation>第 %1 行：需要一行列名作为表头（例如 mag_x,mag_y,mag_z）</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="-93"/>
+        <location line="+104"/>
         <source>line %1 has %2 values, the header has %3 columns</source>
         <translation>第 %1 行有 %2 个值，表头有 %3 列</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="-99"/>
+        <location line="+120"/>
         <source>more than %1 rows</source>
         <translation>超过 %1 行</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="-113"/>
+        <location line="+121"/>
         <source>line %1, column %2: &apos;%3&apos; is not a number</source>
         <translation>第 %1 行第 %2 列：“%3”不是数字</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="-112"/>
+        <location line="+121"/>
         <source>the file is empty: a header row and samples are needed</source>
         <translation>文件为空：需要表头行和样本数据</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="-57"/>
+        <source>line %1: the column %2 is missing (needed: %3); the header has: %4</source>
+        <translation>第 %1 行：缺少列 %2（需要：%3）；表头为：%4</translation>
+    </message>
+    <message>
+        <location line="+89"/>
         <source>the columns mag_x, mag_y and mag_z (µT) are needed; the header has: %1</source>
         <translation>需要 mag_x、mag_y 和 mag_z 列（单位 µT）；表头中只有：%1</translation>
     </message>
@@ -4216,7 +4351,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>VendorCsvImporter</name>
     <message>
-        <location filename="../core/record/vendor_csv_importer.cpp" line="+79"/>
+        <location filename="../core/record/vendor_csv_importer.cpp" line="+95"/>
         <source>Cannot open %1: %2</source>
         <translation>无法打开 %1：%2</translation>
     </message>
@@ -4226,7 +4361,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+28"/>
         <source>line %1 is longer than %2 characters</source>
         <translation>第 %1 行超过 %2 个字符</translation>
     </message>
@@ -4236,7 +4371,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>第 %1 行不是厂商的 HI91 CSV 表头（其开头为“%2”）</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+14"/>
         <source>the header has no %1 column</source>
         <translation>表头中没有 %1 列</translation>
     </message>
@@ -4261,7 +4396,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>第 %1 行：pc_counter %2 不是以 ms 为单位的时间</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+27"/>
         <source>the file is empty: no HI91 CSV header</source>
         <translation>文件为空：没有 HI91 CSV 表头</translation>
     </message>
@@ -6779,7 +6914,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::station::ModuleRunner</name>
     <message>
-        <location filename="../core/station/module_runner.cpp" line="+83"/>
+        <location filename="../core/station/module_runner.cpp" line="+84"/>
         <source>the module did not answer on %1 within %2 s: check the cable, the power and the port</source>
         <translation>模块在 %2 s 内未在 %1 上应答：请检查线缆、电源和串口</translation>
     </message>
@@ -6960,7 +7095,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>%2 s 内仅有 %1 个样本：请开启模块的输出（HI91，至少 10 Hz）</translation>
     </message>
     <message>
-        <location line="+59"/>
+        <location line="+38"/>
+        <source>cannot judge: %1 (%2). Keep the module still on the fixture and test it again.</source>
+        <translation>无法判定：%1（%2）。请让模块在夹具上保持静止后重新测试。</translation>
+    </message>
+    <message>
+        <location line="+40"/>
         <source>%1 samples within every limit</source>
         <translation>%1 个样本，均在限值内</translation>
     </message>
@@ -6970,7 +7110,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>%1 个样本；超出限值的数值已标出</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+25"/>
         <source>%1 s of data do not reach τ = %2 s: measure for at least %3 s</source>
         <translation>%1 s 的数据不足以达到 τ = %2 s：请至少测量 %3 s</translation>
     </message>
@@ -7547,11 +7687,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
     <message>
         <location line="+2"/>
+        <location line="+72"/>
         <source>Allan deviation</source>
         <translation>阿伦方差</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="-54"/>
         <source>Analysing %1…</source>
         <translation>正在分析 %1…</translation>
     </message>
@@ -7561,7 +7702,17 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>%1：%3 s 内共 %2 帧，输出频率 %4 Hz，帧间隔 %5 ± %6 ms，丢帧 %7</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+11"/>
+        <source>Allan deviation: %1 (%2)</source>
+        <translation>阿伦方差：%1（%2）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Allan deviation: %1</source>
+        <translation>阿伦方差：%1</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>ARW %1 deg/√h</source>
         <translation>ARW %1 deg/√h</translation>
     </message>

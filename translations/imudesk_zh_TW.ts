@@ -1139,15 +1139,15 @@
 <context>
     <name>CaptureExporter</name>
     <message>
-        <location filename="../core/record/capture_exporter.cpp" line="+121"/>
-        <location line="+152"/>
+        <location filename="../core/record/capture_exporter.cpp" line="+125"/>
+        <location line="+153"/>
         <location line="+6"/>
         <source>Cannot write %1: %2</source>
         <translation>無法寫入 %1：%2</translation>
     </message>
     <message>
-        <location line="-166"/>
-        <location line="+208"/>
+        <location line="-167"/>
+        <location line="+209"/>
         <location line="+28"/>
         <source>Writing %1 failed: %2. Check the free disk space.</source>
         <translation>寫入 %1 失敗：%2。請檢查可用磁碟空間。</translation>
@@ -1173,7 +1173,7 @@
         <translation>模組以北西天（NWU）座標系輸出姿態（CONFIG IMU COORD 4）；廠商 CSV 的格式沒有欄位可以註明：其中的角度和四元數均為 NWU。</translation>
     </message>
     <message>
-        <location line="+33"/>
+        <location line="+42"/>
         <source>Export cancelled.</source>
         <translation>匯出已取消。</translation>
     </message>
@@ -2711,6 +2711,101 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
 </context>
 <context>
+    <name>MagnetometerFile</name>
+    <message>
+        <location filename="../core/record/magnetometer_file.cpp" line="+80"/>
+        <source>%1 holds no magnetometer samples in µT (a %2): record the module&apos;s output with its magnetometer (HI91, HI81 or HI83)</source>
+        <translation>%1 中沒有以 µT 為單位的磁力計樣本（%2）：請錄製包含磁力計的模組輸出（HI91、HI81 或 HI83）</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>the session %1 has no device %2; its devices: %3</source>
+        <translation>工作階段 %1 中沒有裝置 %2；其裝置：%3</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>the session %1 holds %2 devices (%3): choose one with --device NAME</source>
+        <translation>工作階段 %1 包含 %2 個裝置（%3）：請用 --device NAME 選擇一個</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>session</source>
+        <translation>工作階段</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>line %1 is not a JSON object: %2</source>
+        <translation>第 %1 行不是 JSON 物件：%2</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>line %1, key mag: three numbers [x, y, z] in µT are needed</source>
+        <translation>第 %1 行，鍵 mag：需要三個以 µT 為單位的數 [x, y, z]</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>more than %1 samples</source>
+        <translation>超過 %1 個樣本</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <location line="+28"/>
+        <source>the file holds %1 devices (%2): choose one with --device NAME</source>
+        <translation>檔案包含 %1 個裝置（%2）：請用 --device NAME 選擇一個</translation>
+    </message>
+    <message>
+        <location line="-24"/>
+        <location line="+30"/>
+        <source>the file has no device %1; its devices: %2</source>
+        <translation>檔案中沒有裝置 %1；其裝置：%2</translation>
+    </message>
+    <message>
+        <location line="-28"/>
+        <source>no line has a key mag (the magnetometer, µT)</source>
+        <translation>沒有任何一行包含鍵 mag（磁力計，µT）</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 lines without a magnetometer passed over</source>
+        <translation>已略過 %1 行無磁力計資料的行</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>--device %1: the file has no device column</source>
+        <translation>--device %1：檔案中沒有 device 欄</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1 rows without a magnetometer passed over</source>
+        <translation>已略過 %1 列無磁力計資料的列</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>%1 is a folder without session.json: give a file, or a recorded session&apos;s folder</source>
+        <translation>%1 是不含 session.json 的資料夾：請給出一個檔案，或已錄製工作階段的資料夾</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>cannot read %1: %2</source>
+        <translation>無法讀取 %1：%2</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>--device chooses a device of a session: %1 is not one</source>
+        <translation>--device 用於選擇工作階段中的裝置：%1 不是工作階段</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1 is larger than %2 MB; split it</source>
+        <translation>%1 大於 %2 MB；請將其分割</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
+    </message>
+</context>
+<context>
     <name>McapRecording</name>
     <message>
         <location filename="../core/record/mcap_recording.cpp" line="+97"/>
@@ -2781,6 +2876,34 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <location line="+1"/>
         <source>%1, Modbus node %2</source>
         <translation>%1，Modbus 節點 %2</translation>
+    </message>
+</context>
+<context>
+    <name>MotionCheck</name>
+    <message>
+        <location filename="../core/calib/motion_check.cpp" line="+87"/>
+        <source>the module moved: Allan deviation needs a still recording</source>
+        <translation>模組移動過：阿倫方差需要靜止狀態下的記錄</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>gyro std dev %1 °/s, a module at rest stays below %2 °/s</source>
+        <translation>陀螺儀標準差 %1 °/s，靜止的模組低於 %2 °/s</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>its rate changed by %1 °/s between 1-s windows: it was turned</source>
+        <translation>其角速度在 1 秒視窗之間變化了 %1 °/s：模組被轉動過</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>it turned steadily at %1 °/s; a gyro&apos;s bias stays below %2 °/s</source>
+        <translation>模組以 %1 °/s 等速轉動；陀螺儀零偏低於 %2 °/s</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>its acceleration changed by %1 G between 1-s windows: it was tilted or pushed</source>
+        <translation>其加速度在 1 秒視窗之間變化了 %1 G：模組被傾斜或推動過</translation>
     </message>
 </context>
 <context>
@@ -3327,46 +3450,58 @@ Keep the module in place while turning it, and calibrate it together with everyt
     <name>SampleCsv</name>
     <message>
         <location filename="../core/calib/sample_csv.cpp" line="+34"/>
+        <location line="+82"/>
         <source>line %1 is longer than %2 characters</source>
         <translation>第 %1 行超過 %2 個字元</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="-74"/>
+        <location line="+82"/>
         <source>line %1 has more than %2 columns</source>
         <translation>第 %1 行超過 %2 欄</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="-77"/>
         <source>line %1: the header has an empty column name</source>
         <translation>第 %1 行：標題列有空白的欄位名稱</translation>
     </message>
     <message>
         <location line="+4"/>
+        <location line="+101"/>
         <source>line %1: a header row of column names is required (e.g. mag_x,mag_y,mag_z)</source>
         <translation>第 %1 行：必須有欄位名稱標題列（例如 mag_x,mag_y,mag_z）</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="-93"/>
+        <location line="+104"/>
         <source>line %1 has %2 values, the header has %3 columns</source>
         <translation>第 %1 行有 %2 個值，標題列有 %3 欄</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="-99"/>
+        <location line="+120"/>
         <source>more than %1 rows</source>
         <translation>超過 %1 列</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="-113"/>
+        <location line="+121"/>
         <source>line %1, column %2: &apos;%3&apos; is not a number</source>
         <translation>第 %1 行第 %2 欄：「%3」不是數字</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="-112"/>
+        <location line="+121"/>
         <source>the file is empty: a header row and samples are needed</source>
         <translation>檔案為空：需要標題列和樣本</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="-57"/>
+        <source>line %1: the column %2 is missing (needed: %3); the header has: %4</source>
+        <translation>第 %1 行：缺少欄 %2（需要：%3）；表頭為：%4</translation>
+    </message>
+    <message>
+        <location line="+89"/>
         <source>the columns mag_x, mag_y and mag_z (µT) are needed; the header has: %1</source>
         <translation>需要 mag_x、mag_y 和 mag_z 列（單位 µT）；表頭中只有：%1</translation>
     </message>
@@ -4216,7 +4351,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>VendorCsvImporter</name>
     <message>
-        <location filename="../core/record/vendor_csv_importer.cpp" line="+79"/>
+        <location filename="../core/record/vendor_csv_importer.cpp" line="+95"/>
         <source>Cannot open %1: %2</source>
         <translation>無法開啟 %1：%2</translation>
     </message>
@@ -4226,7 +4361,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+28"/>
         <source>line %1 is longer than %2 characters</source>
         <translation>第 %1 行超過 %2 個字元</translation>
     </message>
@@ -4236,7 +4371,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>第 %1 行不是廠商的 HI91 CSV 表頭（開頭為「%2」）</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+14"/>
         <source>the header has no %1 column</source>
         <translation>表頭中沒有 %1 欄</translation>
     </message>
@@ -4261,7 +4396,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>第 %1 行：pc_counter %2 不是以 ms 為單位的時間</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+27"/>
         <source>the file is empty: no HI91 CSV header</source>
         <translation>檔案為空：沒有 HI91 CSV 表頭</translation>
     </message>
@@ -6779,7 +6914,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::station::ModuleRunner</name>
     <message>
-        <location filename="../core/station/module_runner.cpp" line="+83"/>
+        <location filename="../core/station/module_runner.cpp" line="+84"/>
         <source>the module did not answer on %1 within %2 s: check the cable, the power and the port</source>
         <translation>模組在 %2 s 內未在 %1 上應答：請檢查線纜、電源和串列埠</translation>
     </message>
@@ -6960,7 +7095,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>%2 s 內僅有 %1 個樣本：請開啟模組的輸出（HI91，至少 10 Hz）</translation>
     </message>
     <message>
-        <location line="+59"/>
+        <location line="+38"/>
+        <source>cannot judge: %1 (%2). Keep the module still on the fixture and test it again.</source>
+        <translation>無法判定：%1（%2）。請讓模組在治具上保持靜止後重新測試。</translation>
+    </message>
+    <message>
+        <location line="+40"/>
         <source>%1 samples within every limit</source>
         <translation>%1 個樣本，均在限值內</translation>
     </message>
@@ -6970,7 +7110,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>%1 個樣本；超出限值的數值已標出</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+25"/>
         <source>%1 s of data do not reach τ = %2 s: measure for at least %3 s</source>
         <translation>%1 s 的資料不足以達到 τ = %2 s：請至少測量 %3 s</translation>
     </message>
@@ -7547,11 +7687,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
     <message>
         <location line="+2"/>
+        <location line="+72"/>
         <source>Allan deviation</source>
         <translation>艾倫變異</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="-54"/>
         <source>Analysing %1…</source>
         <translation>正在分析 %1…</translation>
     </message>
@@ -7561,7 +7702,17 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>%1：%3 s 內共 %2 幀，輸出速率 %4 Hz，間隔 %5 ± %6 ms，遺失 %7 幀</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+11"/>
+        <source>Allan deviation: %1 (%2)</source>
+        <translation>阿倫方差：%1（%2）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Allan deviation: %1</source>
+        <translation>阿倫方差：%1</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>ARW %1 deg/√h</source>
         <translation>ARW %1 deg/√h</translation>
     </message>

@@ -57,7 +57,17 @@ QJsonObject resultJson(const record::SampleAnalyzer::Result &r)
         }
         allan[QString::fromStdString(a.name)] = ax;
     }
-    o[QStringLiteral("allan")] = allan;
+    // A module that moved: no Allan figures (null), and why.
+    o[QStringLiteral("allan")] = r.motion.moved ? QJsonValue() : QJsonValue(allan);
+    o[QStringLiteral("moved")] = r.motion.moved;
+    if (r.motion.moved) {
+        o[QStringLiteral("allan_reason")] = r.motion.reason();
+        o[QStringLiteral("allan_reason_detail")] = r.motion.detail();
+    }
+    o[QStringLiteral("motion")] = QJsonObject{{QStringLiteral("gyro_std_dps"), r.motion.gyroStdDps},
+                                              {QStringLiteral("window_rate_change_dps"), r.motion.rateChangeDps},
+                                              {QStringLiteral("window_acc_change_g"), r.motion.accChangeG},
+                                              {QStringLiteral("mean_rate_dps"), r.motion.meanRateDps}};
     o[QStringLiteral("tau_max_s")] = r.tauMax;
     o[QStringLiteral("recommended_length_s")] = r.recommendedLengthS;
     return o;
@@ -79,7 +89,12 @@ void printText(const record::SampleAnalyzer::Result &r)
     for (const auto &c : r.channels)
         std::printf("%-12s %-6s %14.6g %14.6g %14.6g %14.6g\n", c.name.c_str(), c.unit.c_str(), c.mean, c.std, c.min,
                     c.max);
-    std::printf("Allan deviation (overlapping):\n");
+    if (r.motion.moved) {
+        // Not the sensor's noise: no Allan deviation, random walk or bias instability.
+        std::printf("Allan deviation: %s (%s)\n", qPrintable(r.motion.reason()), qPrintable(r.motion.detail()));
+    } else {
+        std::printf("Allan deviation (overlapping):\n");
+    }
     for (const auto &a : r.axes) {
         const bool gyro = a.unit == "deg/s";
         std::printf("  %s:", a.name.c_str());

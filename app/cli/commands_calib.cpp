@@ -1,18 +1,16 @@
-// imudesk-cli commands for calibration: magcal (the wizard's magnetometer fit on a file).
+// imudesk-cli commands for calibration: magcal (the wizard's magnetometer fit on a file: any file
+// ImuDesk writes or imports that carries a magnetometer, record/magnetometer_file.h).
 #include "calib/mag_calibrator.h"
-#include "calib/sample_csv.h"
 #include "cli_context.h"
+#include "record/magnetometer_file.h"
 
-#include <QFile>
+#include <QDir>
 #include <QJsonDocument>
 
 #include <cmath>
+#include <cstdio>
 
 namespace imudesk::cli {
-
-namespace {
-constexpr qint64 kMaxCsvBytes = 512ll * 1024 * 1024;
-}
 
 int cmdMagcal(const QStringList &args)
 {
@@ -29,10 +27,14 @@ int cmdMagcal(const QStringList &args)
                                                   "heading error; default %1.")
                                        .arg(calib::MagFitUncertainty::kDefaultInclinationDeg),
                                    QStringLiteral("DEG")));
+    p.addOption(QCommandLineOption(QStringLiteral("device"),
+                                   QStringLiteral("The device of a recorded session (its folder or its export) to fit."),
+                                   QStringLiteral("NAME")));
     p.addPositionalArgument(QStringLiteral("FILE"),
-                            QStringLiteral("CSV with a header row and the columns mag_x,mag_y,mag_z (uT)."));
+                            QStringLiteral("A capture (.imucap), a recorded session's folder, a vendor CSV, a tidy CSV "
+                                           "or JSON Lines export, or a CSV with the columns mag_x,mag_y,mag_z (uT)."));
     if (!parseArgs(p, args, QStringLiteral("imudesk-cli magcal FILE [--json] [--mode full|hard_iron_only|planar] [--field UT] "
-                                                 "[--inclination DEG]")))
+                                                 "[--inclination DEG] [--device NAME]")))
         return ExitUsage;
     if (p.positionalArguments().size() != 1)
         return fail(QStringLiteral("magcal needs exactly one FILE"), ExitUsage);
@@ -58,16 +60,16 @@ int cmdMagcal(const QStringList &args)
     }
 
     const QString path = p.positionalArguments().front();
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly))
-        return fail(QStringLiteral("cannot read %1: %2").arg(path, file.errorString()));
-    if (file.size() > kMaxCsvBytes)
-        return fail(QStringLiteral("%1 is larger than %2 MB; split it").arg(path).arg(kMaxCsvBytes >> 20));
-    calib::SampleTable table;
-    QString error;
-    std::vector<Eigen::Vector3d> samples;
-    if (!calib::SampleCsv::parse(file.readAll(), table, &error) || !calib::SampleCsv::magnetometer(table, samples, &error))
-        return fail(QStringLiteral("%1: %2").arg(path, error));
+    const auto input = record::MagnetometerFile::read(path, p.value(QStringLiteral("device")));
+    if (!input.ok)
+        return fail(input.error);
+    for (const QString &note : input.notes)
+        std::fprintf(stderr, "imudesk-cli: note: %s\n", qPrintable(note));
+    std::fprintf(stderr, "imudesk-cli: %s: %s%s, %zu magnetometer samples (%s)\n",
+                 qPrintable(QDir::toNativeSeparators(path)), qPrintable(input.kind),
+                 input.device.isEmpty() ? "" : qPrintable(QStringLiteral(", device ") + input.device),
+                 input.samples.size(), qPrintable(input.source));
+    const std::vector<Eigen::Vector3d> &samples = input.samples;
 
     const calib::MagCalResult r = calib::MagCalibrator(options).calibrate(samples, mode);
     if (p.isSet(QStringLiteral("json"))) {

@@ -74,8 +74,9 @@ QString countsText(const results::ResultsStore::Counts &c)
 int cmdResults(const QStringList &args)
 {
     QCommandLineParser p;
-    p.addOption({QStringLiteral("db"), QStringLiteral("The results database (default: results.sqlite here; a station "
-                                                      "writes it beside its run folders)."), QStringLiteral("FILE")});
+    p.addOption({QStringLiteral("db"), QStringLiteral("The results database (default: results.sqlite here; the station "
+                                                      "window writes it in its report folder, `station --report DIR` "
+                                                      "in DIR)."), QStringLiteral("FILE")});
     p.addOption({QStringLiteral("plan"), QStringLiteral("yield: the plan's name."), QStringLiteral("NAME")});
     p.addOption({QStringLiteral("since"), QStringLiteral("yield: modules started on or after DATE (2026-11-01 or an ISO time)."),
                  QStringLiteral("DATE")});
@@ -121,8 +122,9 @@ int cmdResults(const QStringList &args)
     }
     const bool fromServer = !server.isEmpty() && what != QLatin1String("upload");
     if (!fromServer && !QFileInfo::exists(db))
-        return fail(QStringLiteral("no results database at %1: give its path with --db (a station writes results.sqlite "
-                                   "beside its run folders)").arg(db));
+        return fail(QStringLiteral("no results database at %1: give its path with --db (the station window writes "
+                                   "results.sqlite in its report folder, `imudesk-cli station --report DIR` in DIR)")
+                        .arg(db));
     results::ResultsStore store;
     QString error;
     if (!store.open(fromServer ? server : db, &error))

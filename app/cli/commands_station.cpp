@@ -3,7 +3,9 @@
 // progress goes to stderr, one result line per module to stdout (--json: the module's JSON
 // object, the same as a line of summary.jsonl, then a summary object). With --report DIR the
 // run folder gets plan.json, summary.jsonl, summary.csv, the evidence recordings and a PDF per
-// module; a DIR that already holds a run of the same plan is appended to (re-runs). The exit
+// module, and the station's results database results.sqlite (in DIR itself, where the user looks
+// for it; the window keeps it in its report folder, which holds its run folders); a DIR that
+// already holds a run of the same plan is appended to (re-runs). The exit
 // code is 0 only when every module passed.
 #include "cli_context.h"
 #include "reports/station_report.h"
@@ -40,7 +42,8 @@ int cmdStation(const QStringList &args)
     p.addPositionalArgument(QStringLiteral("plan"), QStringLiteral("The test plan (JSON, see docs/examples)."));
     p.addPositionalArgument(QStringLiteral("ports"), QStringLiteral("Serial ports, separated by commas or spaces."));
     p.addOption({QStringLiteral("report"),
-                 QStringLiteral("Run folder for the reports (created; an existing run of the same plan is appended to)."),
+                 QStringLiteral("Run folder for the reports and results.sqlite (created; an existing run of the same plan "
+                                "is appended to)."),
                  QStringLiteral("DIR")});
     p.addOption({QStringLiteral("baud"), QStringLiteral("Baud rate of every module (default: detect)."),
                  QStringLiteral("B")});
@@ -99,8 +102,13 @@ int cmdStation(const QStringList &args)
         runner.setLineDatabase(line);
     }
     if (p.isSet(QStringLiteral("report"))) {
-        if (!runner.setRunFolder(p.value(QStringLiteral("report")), &error))
+        // The run folder the user named holds the results database too (not its parent folder).
+        const QString report = p.value(QStringLiteral("report"));
+        if (!runner.setRunFolder(report, &error, report))
             return fail(error);
+        if (runner.resultsStore().isOpen())
+            progressLine(QStringLiteral("results database: %1")
+                             .arg(QDir::toNativeSeparators(runner.resultsStore().location())));
         runner.setReportWriter(&ui::writeStationReport);
     }
     const bool json = p.isSet(QStringLiteral("json"));
@@ -184,15 +192,21 @@ int cmdStation(const QStringList &args)
                                                         {QStringLiteral("failed"), s.failed},
                                                         {QStringLiteral("frames_lost"), qint64(runner.framesLost())},
                                                         {QStringLiteral("waiting_upload"), waiting},
-                                                        {QStringLiteral("run_folder"), runner.runFolder()}})
+                                                        {QStringLiteral("run_folder"), runner.runFolder()},
+                                                        {QStringLiteral("results_db"), runner.resultsStore().isOpen()
+                                                                                           ? runner.resultsStore().location()
+                                                                                           : QString()}})
                                   .toJson(QJsonDocument::Compact)));
     else
-        out(QStringLiteral("%1 passed, %2 failed%3")
+        out(QStringLiteral("%1 passed, %2 failed%3%4")
                 .arg(s.passed)
                 .arg(s.failed)
                 .arg(runner.runFolder().isEmpty() ? QString()
                                                   : QStringLiteral("; reports in %1")
-                                                        .arg(QDir::toNativeSeparators(runner.runFolder()))));
+                                                        .arg(QDir::toNativeSeparators(runner.runFolder())))
+                .arg(runner.resultsStore().isOpen() ? QStringLiteral("; results in %1")
+                                                          .arg(QDir::toNativeSeparators(runner.resultsStore().location()))
+                                                    : QString()));
     if (cancelled)
         return ExitInterrupted;
     return runner.allPassed() && runner.reportErrors().isEmpty() ? ExitOk : ExitFailure;

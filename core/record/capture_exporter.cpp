@@ -66,6 +66,10 @@ public:
     int64_t epochOffsetNs = 0; // host clock to the Unix epoch (the first chunk's two times)
     const CaptureDecoder *decoder = nullptr;
     const CaptureHeader *header = nullptr;
+    // An imported vendor CSV (CsvCaptureConverter): the chunk times are its pc_counter, written
+    // back as they were, and the cells its next HI91 frame cannot give back.
+    bool pcCounterIsChunkTime = false;
+    vendor_csv::Cells keptCells;
     model::WorldFrame worldFrame = model::WorldFrame::Enu; // the capture's module (its header)
 
     // MCAP: the device's channels, its identity and configuration written first (McapRecording).
@@ -173,7 +177,8 @@ public:
             Output *out = nullptr;
             if (const auto *h = std::get_if<hp::Hi91>(&p)) {
                 if ((out = output(QStringLiteral("HI91"), vendor_csv::hi91Header())))
-                    vendor_csv::appendRow(out->buf, *h, hostMs);
+                    vendor_csv::appendRow(out->buf, *h, pcCounterIsChunkTime ? double(hostNs) / 1e6 : hostMs, keptCells);
+                keptCells.clear();
             } else if (const auto *h81 = std::get_if<hp::Hi81>(&p)) {
                 if ((out = output(QStringLiteral("HI81"), vendor_csv::hi81Header())))
                     vendor_csv::appendRow(out->buf, *h81, hostMs);
@@ -518,6 +523,7 @@ CaptureExporter::Result CaptureExporter::run(const QString &capturePath, const O
     decoder.configure(reader.header());
     sink.decoder = &decoder;
     sink.header = &reader.header();
+    sink.pcCounterIsChunkTime = reader.header().value(CaptureHeader::kPcCounter) == "chunk time";
     CaptureReader::Chunk c;
     CaptureReader::Result res;
     bool first = true;
@@ -536,8 +542,16 @@ CaptureExporter::Result CaptureExporter::run(const QString &capturePath, const O
         const int64_t rel = c.monotonicNs - sink.firstNs;
         if (double(rel) > toNs)
             break;
+        if (c.kind == capture::ChunkVendorCells) {
+            // For the frame of the next chunk (only the vendor CSV has columns for them).
+            if (rel >= fromNs && options.format == Format::VendorCsv)
+                sink.keptCells =
+                    vendor_csv::decodeCells(std::string_view(reinterpret_cast<const char *>(c.data), c.size));
+            continue;
+        }
         if (rel >= fromNs)
             decoder.feedChunk(c, sink);
+        sink.keptCells.clear();
         if (sink.failed())
             break;
         if (progress && reader.position() >= nextReport) {

@@ -43,6 +43,9 @@ public:
     // "absent": the bytes came without arrival times (a raw byte dump); the chunk times are the
     // device's own clock (CaptureSource).
     static constexpr const char *kHostTime = "capture.host_time";
+    // "chunk time": an imported vendor CSV's chunk times are its pc_counter column (ms) on the
+    // file's own origin, which its vendor CSV export writes back as they were (not from 0).
+    static constexpr const char *kPcCounter = "capture.pc_counter";
     static constexpr const char *kConfigPrefix = "config.";
     static constexpr size_t kMaxBodyBytes = 1u << 20;
 

@@ -24,9 +24,9 @@ bool ConvertedCapture::open(const QString &path, const QString &sourcePath, cons
     return true;
 }
 
-void ConvertedCapture::append(int64_t monotonicNs, const uint8_t *data, size_t n)
+void ConvertedCapture::append(int64_t monotonicNs, const uint8_t *data, size_t n, capture::ChunkKind kind)
 {
-    capture::appendChunk(m_buf, capture::ChunkReceived, monotonicNs, 0, data, n);
+    capture::appendChunk(m_buf, kind, monotonicNs, 0, data, n);
     if (m_buf.size() >= (1u << 20))
         flush();
 }

@@ -2,6 +2,7 @@
 // A capture written in one go by a converter (a vendor CSV, a raw byte dump): the header, then
 // received-bytes chunks gathered in 1 MB blocks. A failed write is kept and reported once, by
 // finish(), which removes the partial file then.
+#include "record/capture_format.h"
 #include "record/capture_header.h"
 
 #include <QCoreApplication>
@@ -21,7 +22,7 @@ public:
     // added. False with a message when the file cannot be written.
     bool open(const QString &path, const QString &sourcePath, const char *linkKind, const CaptureHeader &header,
               QString *error);
-    void append(int64_t monotonicNs, const uint8_t *data, size_t n);
+    void append(int64_t monotonicNs, const uint8_t *data, size_t n, capture::ChunkKind kind = capture::ChunkReceived);
     // Writes what is buffered and closes; false (file removed) with a message when a write failed.
     bool finish(QString *error);
     // Closes and removes the file (the conversion failed).

@@ -3,6 +3,7 @@
 #include "protocol/hipnuc/frame_decoder.h"
 #include "protocol/hipnuc/payloads.h"
 #include "record/converted_capture.h"
+#include "record/vendor_csv.h"
 
 #include <cmath>
 
@@ -14,9 +15,12 @@ CsvCaptureConverter::Result CsvCaptureConverter::convert(const QString &csvPath,
 {
     Result r;
     ConvertedCapture out;
-    if (!out.open(capturePath, csvPath, "vendor CSV import", {}, &r.error))
+    CaptureHeader header;
+    header.set(CaptureHeader::kPcCounter, "chunk time");
+    if (!out.open(capturePath, csvPath, "vendor CSV import", header, &r.error))
         return r;
-    r.import = VendorCsvImporter::read(csvPath, [&](const model::Sample &s) {
+    const std::vector<std::string> layout = vendor_csv::hi91Names();
+    r.import = VendorCsvImporter::readRows(csvPath, [&](const model::Sample &s, const VendorCsvImporter::Row &row) {
         hp::Hi91 h;
         h.temperature = int8_t(std::lround(std::clamp(s.temperatureC, -128.0, 127.0)));
         h.pressure = float(s.pressurePa);
@@ -28,6 +32,20 @@ CsvCaptureConverter::Result CsvCaptureConverter::convert(const QString &csvPath,
         h.pitch = float(s.pitch);
         h.yaw = float(s.yaw);
         h.quat = {float(s.quat.w), float(s.quat.x), float(s.quat.y), float(s.quat.z)};
+        // Every cell the export would not write as the file has it (pps_sync_stamp, incli_x,
+        // incli_y: HI91 has no such field; a norm or a time written otherwise) goes into the
+        // capture beside the frame.
+        const std::vector<std::string> again = vendor_csv::hi91Cells(h, double(s.hostTimeNs) / 1e6);
+        vendor_csv::Cells keep;
+        for (size_t i = 1; i < row.names.size() && i < row.cells.size(); ++i)
+            for (size_t c = 1; c < layout.size() && c < again.size(); ++c)
+                if (row.names[i] == layout[c] && row.cells[i] != again[c])
+                    keep.emplace_back(layout[c], std::string(row.cells[i]));
+        if (!keep.empty()) {
+            const std::string cells = vendor_csv::encodeCells(keep);
+            out.append(s.hostTimeNs, reinterpret_cast<const uint8_t *>(cells.data()), cells.size(),
+                       capture::ChunkVendorCells);
+        }
         const auto frame = hp::buildFrame(hp::encode(h));
         out.append(s.hostTimeNs, frame.data(), frame.size());
     });

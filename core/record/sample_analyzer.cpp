@@ -57,6 +57,8 @@ void SampleAnalyzer::add(const model::Sample &s)
         m_axes[3].push_back(float(s.acc.x));
         m_axes[4].push_back(float(s.acc.y));
         m_axes[5].push_back(float(s.acc.z));
+        const double timeS = s.has(FieldDeviceTime) ? s.deviceTimeMs / 1000.0 : double(s.hostTimeNs) / 1e9;
+        m_motion.add(timeS, Eigen::Vector3d(s.gyr.x, s.gyr.y, s.gyr.z), Eigen::Vector3d(s.acc.x, s.acc.y, s.acc.z));
     }
     if (s.has(FieldDeviceTime)) {
         if (m_haveTime)
@@ -123,8 +125,9 @@ SampleAnalyzer::Result SampleAnalyzer::finish(double tauMax, int histogramBins) 
             ++r.intervals[size_t(b)].count;
         }
     }
-    // Allan deviation at the output period.
-    const double tau0 = r.rateHz > 0 ? 1.0 / r.rateHz : 0;
+    // Allan deviation at the output period, of a module that stayed still.
+    r.motion = m_motion.result();
+    const double tau0 = r.rateHz > 0 && !r.motion.moved ? 1.0 / r.rateHz : 0;
     static const char *names[6] = {"gyr_x", "gyr_y", "gyr_z", "acc_x", "acc_y", "acc_z"};
     for (size_t a = 0; a < 6 && tau0 > 0; ++a) {
         if (m_axes[a].size() < 3)

@@ -8,6 +8,10 @@
 // Samples of one frame type are analysed (the first type that carries gyro data, or the
 // one asked for). Statistics stream; the six IMU axes are kept as floats (24 bytes per
 // frame) for the Allan deviation.
+//
+// A recording of a module that moved (calib/motion_check.h says how that is told) gets no
+// Allan deviation, random walk or bias instability: Result::motion says why (issue 53).
+#include "calib/motion_check.h"
 #include "device/frame_gap_counter.h"
 #include "model/sample.h"
 #include "record/allan_deviation.h"
@@ -47,7 +51,8 @@ public:
         uint64_t framesLost = 0;
         uint64_t deviceResets = 0;
         std::vector<Channel> channels;
-        std::vector<Axis> axes;         // gyr_x..z, acc_x..z
+        std::vector<Axis> axes;         // gyr_x..z, acc_x..z; empty when the module moved
+        calib::MotionCheck::Result motion; // motion.moved: no Allan figures, motion.reason() why
         double tauMax = 0;              // the tau range asked for
         double recommendedLengthS = 0;  // for tauMax at 10 % uncertainty
     };
@@ -70,6 +75,7 @@ private:
     std::array<std::vector<float>, 6> m_axes;
     std::vector<float> m_intervals;  // ms
     device::FrameGapCounter m_gaps;
+    calib::MotionCheck m_motion;
     uint64_t m_frames = 0;
     bool m_haveTime = false;
     double m_firstMs = 0, m_lastMs = 0;

@@ -112,6 +112,83 @@ void appendRow(std::string &out, const hp::Hi91 &p, double pcCounterMs)
     out += '\n';
 }
 
+namespace {
+std::vector<std::string> splitCells(std::string_view row)
+{
+    std::vector<std::string> cells;
+    size_t start = 0;
+    for (;;) {
+        const size_t comma = row.find(',', start);
+        cells.emplace_back(row.substr(start, comma == std::string_view::npos ? std::string_view::npos : comma - start));
+        if (comma == std::string_view::npos)
+            return cells;
+        start = comma + 1;
+    }
+}
+} // namespace
+
+std::vector<std::string> hi91Names()
+{
+    return splitCells(hi91Header());
+}
+
+std::vector<std::string> hi91Cells(const hp::Hi91 &p, double pcCounterMs)
+{
+    std::string row;
+    appendRow(row, p, pcCounterMs);
+    if (!row.empty() && row.back() == '\n')
+        row.pop_back();
+    return splitCells(row);
+}
+
+std::string encodeCells(const Cells &cells)
+{
+    std::string out;
+    for (const auto &[name, text] : cells) {
+        out += name;
+        out += '=';
+        out += text;
+        out += '\n';
+    }
+    return out;
+}
+
+Cells decodeCells(std::string_view text)
+{
+    Cells cells;
+    while (!text.empty()) {
+        const size_t end = text.find('\n');
+        const std::string_view line = text.substr(0, end);
+        const size_t eq = line.find('=');
+        if (eq != std::string_view::npos && eq > 0)
+            cells.emplace_back(std::string(line.substr(0, eq)), std::string(line.substr(eq + 1)));
+        if (end == std::string_view::npos)
+            break;
+        text.remove_prefix(end + 1);
+    }
+    return cells;
+}
+
+void appendRow(std::string &out, const hp::Hi91 &p, double pcCounterMs, const Cells &keep)
+{
+    if (keep.empty()) {
+        appendRow(out, p, pcCounterMs);
+        return;
+    }
+    static const std::vector<std::string> names = hi91Names();
+    std::vector<std::string> cells = hi91Cells(p, pcCounterMs);
+    for (const auto &[name, text] : keep)
+        for (size_t i = 1; i < names.size() && i < cells.size(); ++i)
+            if (names[i] == name && text.find_first_of(",\n\r") == std::string::npos)
+                cells[i] = text;
+    for (size_t i = 0; i < cells.size(); ++i) {
+        if (i)
+            out += ',';
+        out += cells[i];
+    }
+    out += '\n';
+}
+
 void appendRow(std::string &out, const hp::Hi81 &p, double pcCounterMs)
 {
     constexpr double kDeg = 57.29577951308232;

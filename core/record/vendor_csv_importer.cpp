@@ -73,24 +73,42 @@ bool VendorCsvImporter::looksLikeVendorCsv(const QString &path)
 
 VendorCsvImporter::Result VendorCsvImporter::read(const QString &path, const SampleFn &onSample)
 {
+    return readRows(path, [&onSample](const model::Sample &s, const Row &) {
+        if (onSample)
+            onSample(s);
+    });
+}
+
+VendorCsvImporter::Result VendorCsvImporter::read(QIODevice &device, const SampleFn &onSample)
+{
+    return readRows(device, [&onSample](const model::Sample &s, const Row &) {
+        if (onSample)
+            onSample(s);
+    });
+}
+
+VendorCsvImporter::Result VendorCsvImporter::readRows(const QString &path, const RowFn &onRow)
+{
     QFile f(path);
     if (!f.open(QIODevice::ReadOnly)) {
         Result r;
         r.error = tr("Cannot open %1: %2").arg(path, f.errorString());
         return r;
     }
-    Result r = read(f, onSample);
+    Result r = readRows(f, onRow);
     if (!r.ok)
         r.error = tr("%1: %2").arg(path, r.error);
     return r;
 }
 
-VendorCsvImporter::Result VendorCsvImporter::read(QIODevice &device, const SampleFn &onSample)
+VendorCsvImporter::Result VendorCsvImporter::readRows(QIODevice &device, const RowFn &onRow)
 {
     Result r;
     std::array<int, ColumnCount> index{};
     index.fill(-1);
     size_t columns = 0;
+    std::vector<std::string> names;
+    std::vector<std::string_view> cells;
     uint64_t lineNo = 0;
     bool haveHeader = false;
     auto bad = [&](const QString &why) {
@@ -125,6 +143,9 @@ VendorCsvImporter::Result VendorCsvImporter::read(QIODevice &device, const Sampl
                               .arg(QString::fromUtf8(line.substr(0, 40).data(), qsizetype(std::min<size_t>(line.size(), 40))));
                 return r;
             }
+            names.clear();
+            for (const auto &f : fields)
+                names.emplace_back(trimmed(f));
             for (size_t i = 1; i < fields.size(); ++i)
                 for (size_t c = 0; c < kNames.size(); ++c)
                     if (trimmed(fields[i]) == kNames[c])
@@ -173,7 +194,7 @@ VendorCsvImporter::Result VendorCsvImporter::read(QIODevice &device, const Sampl
         s.source = "HI91";
         s.fields = model::FieldAcc | model::FieldGyr | model::FieldMag | model::FieldEuler | model::FieldQuat
             | model::FieldPressure | model::FieldTemperature | model::FieldDeviceTime;
-        s.hostTimeNs = int64_t(pc * 1e6);
+        s.hostTimeNs = std::llround(pc * 1e6); // to the ns: pc_counter reads back as written
         s.deviceTimeMs = sysTime;
         s.acc = {v[AccX], v[AccY], v[AccZ]};
         s.gyr = {v[GyrX], v[GyrY], v[GyrZ]};
@@ -185,8 +206,12 @@ VendorCsvImporter::Result VendorCsvImporter::read(QIODevice &device, const Sampl
         s.temperatureC = v[Temperature];
         s.pressurePa = v[Pressure];
         ++r.samples;
-        if (onSample)
-            onSample(s);
+        if (onRow) {
+            cells.clear();
+            for (const auto &f : fields)
+                cells.push_back(trimmed(f));
+            onRow(s, Row{names, cells});
+        }
     }
     if (!haveHeader) {
         r.error = tr("the file is empty: no HI91 CSV header");

@@ -11,6 +11,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -35,9 +36,18 @@ public:
         std::vector<LineError> errors; // the first kMaxReportedErrors bad lines
     };
     using SampleFn = std::function<void(const model::Sample &)>;
+    // A row as the file has it: the header's names and the row's cells (as many; trimmed).
+    struct Row {
+        const std::vector<std::string> &names;
+        const std::vector<std::string_view> &cells;
+    };
+    using RowFn = std::function<void(const model::Sample &, const Row &)>;
 
     static Result read(const QString &path, const SampleFn &onSample);
     static Result read(QIODevice &device, const SampleFn &onSample);
+    // The same, with each row's cells beside its sample (the converter keeps what HI91 lacks).
+    static Result readRows(const QString &path, const RowFn &onRow);
+    static Result readRows(QIODevice &device, const RowFn &onRow);
     // Does the file start with the vendor's HI91 header?
     static bool looksLikeVendorCsv(const QString &path);
 };

@@ -58,7 +58,8 @@ ModuleRecord ModuleRecord::fromStation(const station::ModuleResult &r, const Run
     m.started = r.started;
     m.finished = r.finished;
     switch (r.end) {
-    case station::ModuleResult::End::EquipmentFailed: m.outcome = Outcome::Error; break;
+    case station::ModuleResult::End::EquipmentFailed:
+    case station::ModuleResult::End::NotJudged: m.outcome = Outcome::Error; break;
     case station::ModuleResult::End::Cancelled: m.outcome = Outcome::Aborted; break;
     case station::ModuleResult::End::Completed: m.outcome = r.verdict == Verdict::Pass ? Outcome::Pass : Outcome::Fail; break;
     }

@@ -7,6 +7,7 @@
 #include "io/transport.h"
 #include "model/sample.h"
 #include "protocol/ihex/intel_hex_loader.h"
+#include "calib/motion_check.h"
 #include "record/allan_deviation.h"
 #include "settings/config_profile.h"
 #include "settings/configuration_controller.h"
@@ -625,8 +626,27 @@ double ModuleRunner::collectedSeconds() const
     return std::max(0.0, span * double(n) / double(n - 1));
 }
 
+bool ModuleRunner::judgeableStill()
+{
+    calib::MotionCheck motion;
+    for (const auto &x : m_samples)
+        motion.add(x.has(model::FieldDeviceTime) ? x.deviceTimeMs / 1000.0 : double(x.hostTimeNs) / 1e9,
+                   Eigen::Vector3d(x.gyr.x, x.gyr.y, x.gyr.z), Eigen::Vector3d(x.acc.x, x.acc.y, x.acc.z));
+    const calib::MotionCheck::Result r = motion.result();
+    if (!r.moved)
+        return true;
+    // Its noise, bias and Allan deviation would be the motion's: no number is judged, and the
+    // module is not counted against the product (its record is ERROR).
+    info(QStringLiteral("motion_gyro_std"), r.gyroStdDps, QStringLiteral("°/s"));
+    m_result.end = ModuleResult::End::NotJudged;
+    fail(tr("cannot judge: %1 (%2). Keep the module still on the fixture and test it again.").arg(r.reason(), r.detail()));
+    return false;
+}
+
 void ModuleRunner::evaluateStatic()
 {
+    if (!judgeableStill())
+        return;
     const size_t n = m_samples.size();
     auto stats = [&](auto get, double &mean, double &sd) {
         double sum = 0, sum2 = 0;
@@ -664,6 +684,8 @@ void ModuleRunner::evaluateStatic()
 
 void ModuleRunner::evaluateAllan()
 {
+    if (!judgeableStill())
+        return;
     const PlanStep &s = planStep();
     const double tau = s.number("tau_s");
     // The sample interval from the device's own clock (the host's arrival times jitter).

@@ -119,6 +119,9 @@ private:
     // Seconds of device time the collected samples cover.
     double collectedSeconds() const;
     void evaluateStatic();
+    // The module stayed still during the step (calib/motion_check.h); otherwise the step ends
+    // "cannot judge" and the module's record is ERROR.
+    bool judgeableStill();
     void evaluateAllan();
     void evaluateAttitude();
     void runMagCal();

@@ -64,8 +64,9 @@ struct ModuleResult {
     int attempt = 1;                   // 1 + earlier runs of this serial in the same run folder
     // How the run ended beside its verdict: the equipment failed (the module disappeared, its
     // port could not be opened: not the product's fault, not counted against its yield) or the
-    // operator cancelled it.
-    enum class End { Completed, EquipmentFailed, Cancelled };
+    // operator cancelled it, or a measurement could not be judged (the module moved during a
+    // step that needs it still: its figures would be the motion's, not the product's).
+    enum class End { Completed, EquipmentFailed, Cancelled, NotJudged };
     End end = End::Completed;
 
     // A module not yet tested: every step of the plan pending.

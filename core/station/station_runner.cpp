@@ -35,16 +35,17 @@ void StationRunner::setLineDatabase(const results::UploaderOptions &options)
     m_line = options;
 }
 
-bool StationRunner::setRunFolder(const QString &dir, QString *error)
+bool StationRunner::setRunFolder(const QString &dir, QString *error, const QString &resultsFolder)
 {
     m_haveFolder = m_folder.open(dir, m_plan, error);
     if (!m_haveFolder)
         return false;
-    // The station's database beside the run folders; a run goes on without it (said in the
-    // report errors), its folder keeps every result.
-    QDir parent(QFileInfo(m_folder.path()).absolutePath());
+    // The station's database in the folder the user named (by default beside the run folders);
+    // a run goes on without it (said in the report errors), its folder keeps every result.
+    const QDir place(resultsFolder.isEmpty() ? QFileInfo(m_folder.path()).absolutePath()
+                                             : QFileInfo(resultsFolder).absoluteFilePath());
     QString why;
-    if (!m_results.open(parent.filePath(QLatin1String(results::ResultsStore::kFileName)), &why))
+    if (!m_results.open(place.filePath(QLatin1String(results::ResultsStore::kFileName)), &why))
         m_reportErrors << why;
     m_run.uuid = results::newUuid();
     if (m_run.stationId.isEmpty())

@@ -5,7 +5,8 @@
 // module is appended to its summary and gets its PDF report (through reportWriter, which the
 // GUI and the CLI supply: PDF needs QtGui, core does not link it). Before anything else, each
 // finished module's record (core/results) is committed to the station's results database,
-// results.sqlite in the folder that holds the run folders, and its OpenHTF-shaped JSON is written
+// results.sqlite in the folder the user named (the window's report folder, which holds its run
+// folders; the CLI's --report DIR, the run folder itself), and its OpenHTF-shaped JSON is written
 // into the run folder (openhtf/<module uuid>.json). With a line database set, an uploader
 // forwards the station's database to it in the background (results_uploader.h).
 #include "core/station/module_runner.h"
@@ -41,10 +42,13 @@ public:
     // The transport each module's session opens its port with (module_runner.h); by default
     // the serial port. For modules started from now on.
     void setTransportFactory(TransportFactory factory) { m_transport = std::move(factory); }
-    // Where reports go; empty: nothing is written (the results stay in memory).
-    bool setRunFolder(const QString &dir, QString *error);
+    // Where reports go; empty: nothing is written (the results stay in memory). The results
+    // database (results.sqlite) is kept in resultsFolder: the folder the user named. Empty: the
+    // run folder's parent, the station window's report folder that holds its run folders
+    // (`imudesk-cli station --report DIR` names the run folder itself and keeps it in DIR).
+    bool setRunFolder(const QString &dir, QString *error, const QString &resultsFolder = QString());
     const QString &runFolder() const { return m_folder.path(); }
-    // The results database the run folder's parent holds (open once a run folder is set).
+    // The results database (open once a run folder is set); resultsStore().location() says where.
     const results::ResultsStore &resultsStore() const { return m_results; }
     const results::RunRecord &runRecord() const { return m_run; }
     void setReportWriter(ReportWriter writer) { m_writer = std::move(writer); }

@@ -1,5 +1,6 @@
-// libFuzzer target: the sample CSV reader behind `imudesk-cli magcal` and the calibration
-// history, followed by the magnetometer fit on whatever mag columns it finds.
+// libFuzzer target: the sample CSV readers behind `imudesk-cli magcal` (parseColumns, only the
+// magnetometer's columns of a wider file) and the calibration history (parse), followed by the
+// magnetometer fit on whatever mag columns it finds.
 //
 // Whatever the input, parsing must not crash. When it parses, every row has one value per
 // column and all values are finite; writing the table and parsing it again gives the same
@@ -30,6 +31,28 @@ using namespace imudesk::calib;
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
+    // The reader `magcal` uses on every CSV (vendor, tidy, session export): only the
+    // magnetometer's columns are read, each row has one finite value per wanted column.
+    {
+        SampleCsv::ColumnChoice choice;
+        choice.wanted = SampleCsv::magnetometerColumns();
+        choice.keyColumn = QStringLiteral("device");
+        SampleTable picked;
+        SampleCsv::ColumnInfo info;
+        if (SampleCsv::parseColumns(QByteArrayView(reinterpret_cast<const char *>(data), qsizetype(size)), choice, picked,
+                                    nullptr, &info)) {
+            FUZZ_CHECK(picked.columns.size() == 3);
+            for (const auto &row : picked.rows) {
+                FUZZ_CHECK(row.size() == 3);
+                for (double v : row)
+                    FUZZ_CHECK(std::isfinite(v));
+            }
+            FUZZ_CHECK(info.keys.size() <= 100);
+            std::vector<Eigen::Vector3d> picks;
+            FUZZ_CHECK(SampleCsv::magnetometer(picked, picks));
+            FUZZ_CHECK(picks.size() == picked.rows.size());
+        }
+    }
     SampleTable table;
     if (!SampleCsv::parse(QByteArrayView(reinterpret_cast<const char *>(data), qsizetype(size)), table))
         return 0;

@@ -306,7 +306,7 @@ private Q_SLOTS:
         int local = 0;
         for (int s = 0; s < 4; ++s) {
             ResultsStore db;
-            QVERIFY(db.open(dir.filePath(QStringLiteral("station%1/results.sqlite").arg(s)), &error));
+            QVERIFY(db.open(dir.filePath(QStringLiteral("station%1/run/results.sqlite").arg(s)), &error));
             QCOMPARE(db.pendingCount(), 0);
             for (const auto &m : db.search({}))
                 local += int(db.module(m.uuid)->measurements.size());

@@ -20,6 +20,7 @@
 #include "core/results/results_store.h"
 #include "core/station/station_runner.h"
 
+#include <QDir>
 #include <QElapsedTimer>
 #include <QFile>
 #include <QGuiApplication>
@@ -50,9 +51,11 @@ struct Tray {
     explicit Tray(bool inProc = false, double scale = 1.0) : inProcess(inProc), timeScale(scale) {}
 
     // overPty: this module on a pseudo-terminal even in an in-process tray.
-    bool add(const char *faults, const char *firmware, uint64_t seed, bool overPty = false)
+    bool add(const char *faults, const char *firmware, uint64_t seed, bool overPty = false,
+             sim::Motion motion = sim::Motion::Static)
     {
         sim::SimOptions o;
+        o.motion = motion;
         o.firmware = firmware;
         o.seed = seed;
         std::string error;
@@ -150,6 +153,8 @@ private Q_SLOTS:
     void examplePlanPassesOnCleanHi14();
     void disabledStepsSayDisabled();
     void marginalBandPassesMarked();
+    void movedModuleCannotBeJudged_data();
+    void movedModuleCannotBeJudged();
 };
 
 void TestStation::trayOfFiveInParallel()
@@ -354,9 +359,9 @@ void TestStation::cliTray()
                                  120000);
     QVERIFY2(ok.code == 0, qPrintable(ok.out + ok.err));
     QVERIFY(ok.out.startsWith(QStringLiteral("PASS ")));
-    // The results database beside the run folder, from the command line: the module tested twice
+    // The results database in the run folder the command line named: the module tested twice
     // has two attempts, the plan's yield counts every module.
-    const QString db = dir.filePath(QStringLiteral("results.sqlite"));
+    const QString db = QDir(runDir).filePath(QStringLiteral("results.sqlite"));
     const QString serial = byPort.value(tray.ports[3]).value(QStringLiteral("serial")).toString();
     const auto history = test::runCli({QStringLiteral("results"), QStringLiteral("serial"), serial, QStringLiteral("--db"), db,
                                        QStringLiteral("--json")});
@@ -532,6 +537,61 @@ void TestStation::marginalBandPassesMarked()
     QVERIFY(!bias->marginal && !bias->marginalHigh);
     QVERIFY2(still->detail.contains(QStringLiteral("marginal: gyro_std_x, gyro_std_y, gyro_std_z")),
              qPrintable(still->detail));
+}
+
+// Issue 53: a module that moves during the noise/bias or the Allan step is not judged on
+// numbers that are the motion's: the step says "cannot judge" and why, no limit is applied, and
+// its record is ERROR (not counted against the product); a still module is judged as before.
+void TestStation::movedModuleCannotBeJudged_data()
+{
+    QTest::addColumn<int>("step");
+    QTest::addColumn<int>("motion");
+    QTest::addColumn<bool>("judged");
+    QTest::newRow("static, tumbling") << int(station::StepKind::Static) << int(sim::Motion::Tumble) << false;
+    QTest::newRow("allan, on a turntable") << int(station::StepKind::Allan) << int(sim::Motion::Spin) << false;
+    QTest::newRow("allan, still") << int(station::StepKind::Allan) << int(sim::Motion::Static) << true;
+}
+
+void TestStation::movedModuleCannotBeJudged()
+{
+    QFETCH(int, step);
+    QFETCH(int, motion);
+    QFETCH(bool, judged);
+    Tray tray(true, 4.0);
+    QVERIFY(tray.add("", "1.7.1", 61, false, sim::Motion(motion)));
+    station::TestPlan plan;
+    plan.name = QStringLiteral("moved");
+    // Limits no number of a moving module could fail: only the motion check stops it.
+    if (station::StepKind(step) == station::StepKind::Static)
+        plan.steps.push_back(station::TestPlan::defaultStep(
+            station::StepKind::Static, {{QStringLiteral("seconds"), 3.0}, {QStringLiteral("gyro_std_max_dps"), 100.0},
+                                        {QStringLiteral("gyro_bias_max_dps"), 100.0}, {QStringLiteral("acc_std_max_mg"), 1000.0},
+                                        {QStringLiteral("gravity_tol_mg"), 1000.0}}));
+    else
+        plan.steps.push_back(station::TestPlan::defaultStep(
+            station::StepKind::Allan, {{QStringLiteral("seconds"), 5.0}, {QStringLiteral("tau_s"), 0.1},
+                                       {QStringLiteral("sigma_max_dps"), 100.0}}));
+    QVERIFY2(plan.problems().isEmpty(), qPrintable(plan.problems().join(u'\n')));
+    station::StationRunner runner(plan, tray.ports);
+    runner.setTransportFactory(tray.transports());
+    QSignalSpy done(&runner, &station::StationRunner::finished);
+    runner.start();
+    QVERIFY(done.wait(60000));
+    const station::ModuleResult &m = runner.module(0);
+    const station::StepResult *s = stepOf(m, station::StepKind(step));
+    QVERIFY(s);
+    if (judged) {
+        QVERIFY2(m.verdict == Verdict::Pass, qPrintable(m.failureSummary()));
+        QCOMPARE(m.end, station::ModuleResult::End::Completed);
+        return;
+    }
+    QCOMPARE(s->verdict, Verdict::Fail); // never a pass
+    QVERIFY2(s->detail.startsWith(QStringLiteral("cannot judge: the module moved: Allan deviation needs a still recording")),
+             qPrintable(s->detail));
+    QCOMPARE(m.end, station::ModuleResult::End::NotJudged);
+    for (const station::Measurement &v : s->values)
+        QVERIFY2(v.comparator == QStringLiteral("INFO"), qPrintable(v.name)); // nothing judged on a number
+    QVERIFY(m.failureSummary().contains(QStringLiteral("cannot judge")));
 }
 
 IMUDESK_TEST_MAIN(TestStation)

@@ -1,6 +1,7 @@
 // AnalysisWindow offscreen: analysing a generated capture fills the statistics table, the
 // summary (rate, random walk, bias instability, recommended length), the interval histogram
 // and the log-log Allan chart; a file that is no recording is reported.
+#include "../common/motion_csv.h"
 #include "../common/synthetic_capture.h"
 #include "../common/test_main.h"
 #include "charts/analysis_window.h"
@@ -50,6 +51,34 @@ private Q_SLOTS:
         w.resize(1000, 700);
         w.show();
         QVERIFY(QTest::qWaitForWindowExposed(&w));
+    }
+
+    // Issue 53: a module that moved gets no Allan figures, and the window says why.
+    void allanOnlyOfAStillModule_data()
+    {
+        QTest::addColumn<int>("motion");
+        QTest::addColumn<bool>("moved");
+        QTest::newRow("still") << int(motion_csv::Motion::Still) << false;
+        QTest::newRow("moved by hand") << int(motion_csv::Motion::ByHand) << true;
+    }
+    void allanOnlyOfAStillModule()
+    {
+        QFETCH(int, motion);
+        QFETCH(bool, moved);
+        const QString path = m_dir.filePath(QStringLiteral("motion-%1.csv").arg(motion));
+        QVERIFY(motion_csv::write(path, motion_csv::Motion(motion), 30));
+        AnalysisWindow w;
+        QSignalSpy done(&w, &AnalysisWindow::analysisFinished);
+        w.analyzeFile(path, 10.0);
+        QVERIFY(done.wait(20000));
+        QVERIFY2(done.at(0).at(0).toBool(), qPrintable(done.at(0).at(1).toString()));
+        const QString reason = QStringLiteral("the module moved: Allan deviation needs a still recording");
+        QCOMPARE(w.summaryText().contains(reason), moved);
+        QCOMPARE(w.summaryText().contains(QStringLiteral("ARW")), !moved);
+        QCOMPARE(w.summaryText().contains(QStringLiteral("bias instability")), !moved);
+        QCOMPARE(w.allanChart()->series().isEmpty(), moved);
+        QCOMPARE(w.allanChart()->title().contains(reason), moved);
+        QCOMPARE(w.statsTable()->rowCount(), 14); // the statistics stay
     }
 
     void reportsOtherFiles()

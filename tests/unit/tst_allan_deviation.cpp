@@ -128,7 +128,8 @@ private Q_SLOTS:
             s.fields = model::FieldAcc | model::FieldGyr | model::FieldDeviceTime | model::FieldTemperature;
             s.deviceTimeMs = t + (jitter(rng) == 0 ? 1 : 0); // occasional 1 ms late stamp
             s.acc = {double(i % 2), 0, 1};
-            s.gyr = {0.5, -0.5, double(i)};
+            // A module at rest (a ramp of rates would be a module that moved: no Allan figures).
+            s.gyr = {0.5, -0.5, 0.01 * double(i % 5)};
             s.temperatureC = 25;
             a.add(s);
             ++added;
@@ -158,6 +159,7 @@ private Q_SLOTS:
         QCOMPARE(r.axes.size(), size_t(6));
         QCOMPARE(r.axes.front().name, std::string("gyr_x"));
         QCOMPARE(r.recommendedLengthS, 5100.0);
+        QVERIFY(!r.motion.moved);
     }
 };
 

@@ -64,6 +64,67 @@ private Q_SLOTS:
         QVERIFY(error.contains(QStringLiteral("mag_x")));
     }
 
+    // Only the columns needed are read (issue 53): the vendor CSV's frame tag, the tidy CSV's
+    // empty cells and text elsewhere are passed over; the needed ones are still checked.
+    void parseColumns_data()
+    {
+        QTest::addColumn<QByteArray>("text");
+        QTest::addColumn<QString>("device");
+        QTest::addColumn<int>("rows");        // -1: refused
+        QTest::addColumn<int>("emptyRows");
+        QTest::addColumn<QString>("errorContains");
+        QTest::newRow("vendor HI91 row") << QByteArray("HI91,pc_counter,mag_x,mag_y,mag_z\nHI91,123456,1,2,3\n")
+                                         << QString() << 1 << 0 << "";
+        QTest::newRow("tidy: empty cells elsewhere")
+            << QByteArray("time_s,mag_x_uT,mag_y_uT,mag_z_uT,lat_deg,lon_deg\n0,1,2,3,,\n0.01,4,5,6,,\n") << QString() << 2 << 0
+            << "";
+        QTest::newRow("tidy: a frame without mag") << QByteArray("frame_tag,mag_x_uT,mag_y_uT,mag_z_uT\n145,1,2,3\n129,,,\n")
+                                                   << QString() << 1 << 1 << "";
+        QTest::newRow("session: device B") << QByteArray("device,mag_x_uT,mag_y_uT,mag_z_uT\nA,1,2,3\nB,4,5,6\nB,7,8,9\n")
+                                           << QStringLiteral("B") << 2 << 0 << "";
+        QTest::newRow("wider than kMaxColumns") << (QByteArray("mag_x,mag_y,mag_z") + QByteArray(",c").repeated(100) + "\n1,2,3"
+                                                    + QByteArray(",x").repeated(100) + "\n")
+                                                << QString() << 1 << 0 << "";
+        QTest::newRow("missing column") << QByteArray("HI91,mag_x,mag_y\nHI91,1,2\n") << QString() << -1 << 0
+                                        << "line 1: the column mag_z or mag_z_uT is missing";
+        QTest::newRow("bad needed number") << QByteArray("HI91,mag_x,mag_y,mag_z\nHI91,1,2,3\nHI91,1,two,3\n") << QString()
+                                           << -1 << 0 << "line 3, column mag_y: 'two' is not a number";
+        QTest::newRow("one needed cell empty") << QByteArray("mag_x_uT,mag_y_uT,mag_z_uT,t\n1,,3,0\n") << QString() << -1 << 0
+                                               << "line 2, column mag_y_uT";
+        QTest::newRow("short row") << QByteArray("HI91,mag_x,mag_y,mag_z\nHI91,1,2\n") << QString() << -1 << 0 << "line 2 has 3";
+    }
+    void parseColumns()
+    {
+        QFETCH(QByteArray, text);
+        QFETCH(QString, device);
+        QFETCH(int, rows);
+        QFETCH(int, emptyRows);
+        QFETCH(QString, errorContains);
+        SampleCsv::ColumnChoice choice;
+        choice.wanted = SampleCsv::magnetometerColumns();
+        choice.keyColumn = QStringLiteral("device");
+        choice.keyValue = device;
+        SampleTable t;
+        SampleCsv::ColumnInfo info;
+        QString error;
+        const bool ok = SampleCsv::parseColumns(text, choice, t, &error, &info);
+        QVERIFY2(ok == (rows >= 0), qPrintable(error));
+        if (!ok) {
+            QVERIFY2(error.contains(errorContains), qPrintable(error));
+            return;
+        }
+        QCOMPARE(int(t.rows.size()), rows);
+        QCOMPARE(int(info.emptyRows), emptyRows);
+        QCOMPARE(t.columns.size(), 3);
+        std::vector<Eigen::Vector3d> mag;
+        QVERIFY2(SampleCsv::magnetometer(t, mag, &error), qPrintable(error));
+        QCOMPARE(int(mag.size()), rows);
+        if (rows > 0 && device == QLatin1String("B"))
+            QCOMPARE(mag[0], Eigen::Vector3d(4, 5, 6));
+        else if (rows > 0)
+            QCOMPARE(mag[0], Eigen::Vector3d(1, 2, 3));
+    }
+
     void roundTrip()
     {
         SampleTable t;
