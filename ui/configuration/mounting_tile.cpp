@@ -83,10 +83,10 @@ void MountingTile::paintEvent(QPaintEvent *)
     // projection: scaled to the tile above its caption, room for an axis letter above an
     // arrow's end (16 px) and beside it (9 px), so nothing is ever cut.
     const int caption = fontMetrics().height() + 4;
-    const double top = 17, bottom = 4, side = 10;
-    const double area = height() - caption - top - bottom;
+    const double above = 17, below = 4, side = 10;
+    const double area = height() - caption - above - below;
     const double s = std::max(1.0, std::min((width() - 2 * side) / 3.08, area / 2.5));
-    const QPointF o(width() / 2.0, top + 1.5 * s + std::max(0.0, (area - 2.5 * s) / 2));
+    const QPointF o(width() / 2.0, above + 1.5 * s + std::max(0.0, (area - 2.5 * s) / 2));
     // The body: a flat box 2 x 2.4 x 0.5, its front edge (forward) drawn thicker.
     const double bx = 1.0, by = 1.2, bz = 0.25;
     auto P = [&](double x, double y, double z) { return project(x, y, z, o, s); };

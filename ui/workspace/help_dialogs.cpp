@@ -91,6 +91,7 @@ UserGuideDialog::UserGuideDialog(QWidget *parent) : QDialog(parent)
     } else {
         m_browser->setMarkdown(guide);
         fitPictures();
+        m_browser->viewport()->installEventFilter(this);
     }
     fillContents();
     connect(m_contents, &QTreeWidget::itemClicked, this, [this](QTreeWidgetItem *item) { showSection(item); });
@@ -165,12 +166,22 @@ void UserGuideDialog::showSection(const QTreeWidgetItem *item)
     m_browser->verticalScrollBar()->setValue(int(r.top()));
 }
 
+bool UserGuideDialog::eventFilter(QObject *watched, QEvent *event)
+{
+    if (watched == m_browser->viewport() && event->type() == QEvent::Resize)
+        fitPictures();
+    return QDialog::eventFilter(watched, event);
+}
+
 void UserGuideDialog::fitPictures()
 {
-    // The screenshots are 1366 or 1920 px wide: each at most a column's width (two of them side
-    // by side in a table), so the guide reads without scrolling sideways; the picture is whole,
-    // only smaller.
+    // The screenshots are 1366 or 1920 px wide: each at most the guide's width (a table's two
+    // side by side half of it), so the guide reads without scrolling sideways; the picture is
+    // whole, only smaller. Its own width is kept in the format (kNaturalWidth) for the next fit.
+    constexpr int kNaturalWidth = QTextFormat::UserProperty + 1;
+    constexpr int kNaturalHeight = QTextFormat::UserProperty + 2;
     QTextDocument *doc = m_browser->document();
+    const int column = std::max(240, m_browser->viewport()->width() - 2 * int(doc->documentMargin()) - 24);
     struct Picture {
         int position, length;
         QTextImageFormat format;
@@ -183,19 +194,28 @@ void UserGuideDialog::fitPictures()
             if (!f.isValid() || !f.charFormat().isImageFormat())
                 continue;
             QTextImageFormat image = f.charFormat().toImageFormat();
-            const QVariant res = doc->resource(QTextDocument::ImageResource, QUrl(image.name()));
-            QImage picture;
-            if (res.canConvert<QImage>() && res.typeId() == QMetaType::QImage)
-                picture = res.value<QImage>();
-            else if (res.typeId() == QMetaType::QPixmap)
-                picture = res.value<QPixmap>().toImage();
-            else if (res.typeId() == QMetaType::QByteArray)
-                picture = QImage::fromData(res.toByteArray());
-            const int most = inTable ? 420 : 840;
-            if (picture.isNull() || picture.width() <= most)
+            int natural = image.intProperty(kNaturalWidth), naturalHeight = image.intProperty(kNaturalHeight);
+            if (natural <= 0) {
+                const QVariant res = doc->resource(QTextDocument::ImageResource, QUrl(image.name()));
+                QImage picture;
+                if (res.typeId() == QMetaType::QImage)
+                    picture = res.value<QImage>();
+                else if (res.typeId() == QMetaType::QPixmap)
+                    picture = res.value<QPixmap>().toImage();
+                else if (res.typeId() == QMetaType::QByteArray)
+                    picture = QImage::fromData(res.toByteArray());
+                if (picture.isNull())
+                    continue;
+                natural = picture.width();
+                naturalHeight = picture.height();
+                image.setProperty(kNaturalWidth, natural);
+                image.setProperty(kNaturalHeight, naturalHeight);
+            }
+            const int width = std::min(natural, inTable ? (column - 24) / 2 : column);
+            if (qFuzzyCompare(image.width(), double(width)))
                 continue;
-            image.setWidth(most);
-            image.setHeight(double(most) * picture.height() / picture.width());
+            image.setWidth(width);
+            image.setHeight(double(width) * naturalHeight / natural);
             pictures.push_back({f.position(), f.length(), image});
         }
     }

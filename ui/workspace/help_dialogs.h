@@ -33,10 +33,12 @@ public:
 
 protected:
     void changeEvent(QEvent *event) override;
+    bool eventFilter(QObject *watched, QEvent *event) override;
 
 private:
     void retranslateUi();
     void fillContents();
+    // Each picture at most the guide's width (two side by side in a table), never larger than it is.
     void fitPictures();
 
     QTextBrowser *m_browser = nullptr;
