@@ -152,7 +152,7 @@
 <context>
     <name>imudesk::ui::ModuleHistoryView</name>
     <message numerus="yes">
-        <location filename="../ui/results/module_history_view.cpp" line="+124"/>
+        <location filename="../ui/results/module_history_view.cpp" line="+151"/>
         <source>History of %1: %n attempt(s)</source>
         <translation>
             <numerusform>History of %1: %n attempt</numerusform>

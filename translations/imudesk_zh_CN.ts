@@ -1188,7 +1188,7 @@
 <context>
     <name>CaptureHeader</name>
     <message>
-        <location filename="../core/record/capture_header.cpp" line="+132"/>
+        <location filename="../core/record/capture_header.cpp" line="+140"/>
         <source>line %1 of the capture header is not a key=value entry</source>
         <translation>记录文件头第 %1 行不是“键=值”格式的条目</translation>
     </message>
@@ -3533,7 +3533,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>SessionExporter</name>
     <message>
-        <location filename="../core/record/session_exporter.cpp" line="+196"/>
+        <location filename="../core/record/session_exporter.cpp" line="+193"/>
         <source>A session of several devices exports to tidy CSV, JSON Lines, MCAP or MATLAB; the vendor&apos;s layout has one device per file (export each capture on its own for it).</source>
         <translation>多设备会话可导出为整齐 CSV、JSON Lines、MCAP 或 MATLAB；厂商格式每个文件只含一台设备（如需该格式，请逐个导出各记录）。</translation>
     </message>
@@ -3568,8 +3568,8 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>该会话中没有设备。</translation>
     </message>
     <message>
-        <location line="-131"/>
-        <location line="+144"/>
+        <location line="-127"/>
+        <location line="+140"/>
         <source>Cannot write %1: %2</source>
         <translation>无法写入 %1：%2</translation>
     </message>
@@ -4404,7 +4404,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::bridge::LiveBridge</name>
     <message>
-        <location filename="../core/bridge/live_bridge.cpp" line="+169"/>
+        <location filename="../core/bridge/live_bridge.cpp" line="+170"/>
         <source>Cannot listen on %1 port %2: %3</source>
         <translation>无法在 %1 的端口 %2 上监听：%3</translation>
     </message>
@@ -4569,7 +4569,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::device::CanSession</name>
     <message>
-        <location filename="../core/device/can_session.cpp" line="+91"/>
+        <location filename="../core/device/can_session.cpp" line="+93"/>
         <source>HiPNUC J1939</source>
         <translation>HiPNUC J1939</translation>
     </message>
@@ -4589,7 +4589,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>CAN</translation>
     </message>
     <message>
-        <location line="+81"/>
+        <location line="+89"/>
         <location line="+7"/>
         <source>register access needs a J1939 device</source>
         <translation>寄存器访问需要 J1939 设备</translation>
@@ -5044,7 +5044,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::device::GroupRecording</name>
     <message>
-        <location filename="../core/device/group_recording.cpp" line="+41"/>
+        <location filename="../core/device/group_recording.cpp" line="+45"/>
         <source>A session recording is already running.</source>
         <translation>会话录制已在进行中。</translation>
     </message>
@@ -5064,7 +5064,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>无法创建文件夹 %1：请检查该位置是否存在且可写入。</translation>
     </message>
     <message>
-        <location line="+49"/>
+        <location line="+57"/>
         <source>The device&apos;s tab was closed or its link replaced; its capture ends here.</source>
         <translation>该设备的标签页已关闭或其连接已被替换；其记录到此结束。</translation>
     </message>
@@ -5321,7 +5321,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>Modbus 节点 %1</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>Node %1 at %2 baud</source>
         <translation>节点 %1，波特率 %2</translation>
     </message>
@@ -8055,7 +8055,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::BridgeController</name>
     <message>
-        <location filename="../ui/bridge/bridge_controller.cpp" line="+90"/>
+        <location filename="../ui/bridge/bridge_controller.cpp" line="+89"/>
         <source>Live bridge %1</source>
         <translation>实时桥接 %1</translation>
     </message>
@@ -11813,7 +11813,7 @@ Samples: %3</source>
 <context>
     <name>imudesk::ui::MainWindow</name>
     <message>
-        <location filename="../ui/workspace/main_window.cpp" line="+399"/>
+        <location filename="../ui/workspace/main_window.cpp" line="+408"/>
         <source>Choose a port first.</source>
         <translation>请先选择串口。</translation>
     </message>
@@ -12271,7 +12271,7 @@ Samples: %3</source>
 <context>
     <name>imudesk::ui::ModuleHistoryView</name>
     <message>
-        <location filename="../ui/results/module_history_view.cpp" line="+100"/>
+        <location filename="../ui/results/module_history_view.cpp" line="+125"/>
         <source>Attempt, step, measurement</source>
         <translation>尝试、步骤、测量项</translation>
     </message>
@@ -12327,6 +12327,16 @@ Samples: %3</source>
     </message>
     <message>
         <location line="+1"/>
+        <source>Details:</source>
+        <translation>详细信息：</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Select an attempt, a step or a measurement to read all of it here.</source>
+        <translation>选择一次尝试、一个步骤或一项测量，在此阅读其全部内容。</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>Open</source>
         <translation>打开</translation>
     </message>
@@ -12353,7 +12363,7 @@ Samples: %3</source>
         <translation>第 %1 次尝试 · %2</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+6"/>
         <source>Plan: %1
 Station: %2 · slot %3 · operator %4
 Product: %5 · firmware %6
@@ -12366,12 +12376,12 @@ Record: %8</source>
 记录：%8</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+15"/>
         <source>skipped</source>
         <translation>已跳过</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+20"/>
         <source>for information</source>
         <translation>仅供参考</translation>
     </message>
@@ -12381,7 +12391,22 @@ Record: %8</source>
         <translation>以数值的绝对值与限值比较</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+4"/>
+        <source>%1 = %2 %3</source>
+        <translation>%1 = %2 %3</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Limits: %1</source>
+        <translation>限值：%1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Marginal band: %1</source>
+        <translation>临界区间：%1</translation>
+    </message>
+    <message>
+        <location line="+31"/>
         <source>PDF report</source>
         <translation>PDF 报告</translation>
     </message>
@@ -12449,7 +12474,7 @@ SHA-256：%2</translation>
 <context>
     <name>imudesk::ui::MountingPicker</name>
     <message>
-        <location filename="../ui/configuration/mounting_picker.cpp" line="+28"/>
+        <location filename="../ui/configuration/mounting_picker.cpp" line="+34"/>
         <source>Mounting (URFR)</source>
         <translation>安装方式（URFR）</translation>
     </message>
@@ -12479,7 +12504,7 @@ SHA-256：%2</translation>
         <translation>IMU Z 指向：</translation>
     </message>
     <message>
-        <location line="+75"/>
+        <location line="+89"/>
         <source>(no right-handed mounting)</source>
         <translation>（无法构成右手系的安装方式）</translation>
     </message>
@@ -13760,7 +13785,7 @@ Is it a results database that ImuDesk wrote? Choose another file with Open….</
 <context>
     <name>imudesk::ui::ShortcutsDialog</name>
     <message>
-        <location filename="../ui/workspace/help_dialogs.cpp" line="+76"/>
+        <location filename="../ui/workspace/help_dialogs.cpp" line="+233"/>
         <source>Keyboard shortcuts</source>
         <translation>键盘快捷键</translation>
     </message>
@@ -15115,12 +15140,22 @@ Edit it (Edit…) and start again.</source>
 <context>
     <name>imudesk::ui::UserGuideDialog</name>
     <message>
-        <location filename="../ui/workspace/help_dialogs.cpp" line="-39"/>
+        <location filename="../ui/workspace/help_dialogs.cpp" line="-195"/>
+        <source>The user guide is written in English; it is not available in your language yet. The menus and dialogs it describes are shown in your language.</source>
+        <translation>用户指南以英文编写，暂无您所用语言的版本。指南中描述的菜单和对话框以您的语言显示。</translation>
+    </message>
+    <message>
+        <location line="+69"/>
         <source>ImuDesk user guide</source>
         <translation>ImuDesk 用户指南</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+1"/>
+        <source>Contents</source>
+        <translation>目录</translation>
+    </message>
+    <message>
+        <location line="-37"/>
         <source>The user guide is not part of this build. It is docs/USER_GUIDE.md in ImuDesk&apos;s source.</source>
         <translation>此版本未包含用户指南。它位于 ImuDesk 源代码中的 docs/USER_GUIDE.md。</translation>
     </message>

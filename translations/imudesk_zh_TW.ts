@@ -1188,7 +1188,7 @@
 <context>
     <name>CaptureHeader</name>
     <message>
-        <location filename="../core/record/capture_header.cpp" line="+132"/>
+        <location filename="../core/record/capture_header.cpp" line="+140"/>
         <source>line %1 of the capture header is not a key=value entry</source>
         <translation>記錄檔檔頭第 %1 行不是「鍵=值」項目</translation>
     </message>
@@ -3533,7 +3533,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>SessionExporter</name>
     <message>
-        <location filename="../core/record/session_exporter.cpp" line="+196"/>
+        <location filename="../core/record/session_exporter.cpp" line="+193"/>
         <source>A session of several devices exports to tidy CSV, JSON Lines, MCAP or MATLAB; the vendor&apos;s layout has one device per file (export each capture on its own for it).</source>
         <translation>多裝置工作階段可匯出為整齊 CSV、JSON Lines、MCAP 或 MATLAB；廠商格式每個檔案只含一台裝置（如需該格式，請逐一匯出各記錄）。</translation>
     </message>
@@ -3568,8 +3568,8 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>此工作階段中沒有裝置。</translation>
     </message>
     <message>
-        <location line="-131"/>
-        <location line="+144"/>
+        <location line="-127"/>
+        <location line="+140"/>
         <source>Cannot write %1: %2</source>
         <translation>無法寫入 %1：%2</translation>
     </message>
@@ -4404,7 +4404,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::bridge::LiveBridge</name>
     <message>
-        <location filename="../core/bridge/live_bridge.cpp" line="+169"/>
+        <location filename="../core/bridge/live_bridge.cpp" line="+170"/>
         <source>Cannot listen on %1 port %2: %3</source>
         <translation>無法在 %1 的連接埠 %2 上監聽：%3</translation>
     </message>
@@ -4569,7 +4569,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::device::CanSession</name>
     <message>
-        <location filename="../core/device/can_session.cpp" line="+91"/>
+        <location filename="../core/device/can_session.cpp" line="+93"/>
         <source>HiPNUC J1939</source>
         <translation>HiPNUC J1939</translation>
     </message>
@@ -4589,7 +4589,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>CAN</translation>
     </message>
     <message>
-        <location line="+81"/>
+        <location line="+89"/>
         <location line="+7"/>
         <source>register access needs a J1939 device</source>
         <translation>暫存器存取需要 J1939 裝置</translation>
@@ -5044,7 +5044,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::device::GroupRecording</name>
     <message>
-        <location filename="../core/device/group_recording.cpp" line="+41"/>
+        <location filename="../core/device/group_recording.cpp" line="+45"/>
         <source>A session recording is already running.</source>
         <translation>工作階段錄製已在進行中。</translation>
     </message>
@@ -5064,7 +5064,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>無法建立資料夾 %1：請確認該位置存在且可寫入。</translation>
     </message>
     <message>
-        <location line="+49"/>
+        <location line="+57"/>
         <source>The device&apos;s tab was closed or its link replaced; its capture ends here.</source>
         <translation>該裝置的分頁已關閉或其連線已被取代；其記錄到此結束。</translation>
     </message>
@@ -5321,7 +5321,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>Modbus 節點 %1</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>Node %1 at %2 baud</source>
         <translation>節點 %1，波特率 %2</translation>
     </message>
@@ -8055,7 +8055,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::BridgeController</name>
     <message>
-        <location filename="../ui/bridge/bridge_controller.cpp" line="+90"/>
+        <location filename="../ui/bridge/bridge_controller.cpp" line="+89"/>
         <source>Live bridge %1</source>
         <translation>即時橋接 %1</translation>
     </message>
@@ -11813,7 +11813,7 @@ Samples: %3</source>
 <context>
     <name>imudesk::ui::MainWindow</name>
     <message>
-        <location filename="../ui/workspace/main_window.cpp" line="+399"/>
+        <location filename="../ui/workspace/main_window.cpp" line="+408"/>
         <source>Choose a port first.</source>
         <translation>請先選擇串列埠。</translation>
     </message>
@@ -12271,7 +12271,7 @@ Samples: %3</source>
 <context>
     <name>imudesk::ui::ModuleHistoryView</name>
     <message>
-        <location filename="../ui/results/module_history_view.cpp" line="+100"/>
+        <location filename="../ui/results/module_history_view.cpp" line="+125"/>
         <source>Attempt, step, measurement</source>
         <translation>嘗試、步驟、量測項</translation>
     </message>
@@ -12327,6 +12327,16 @@ Samples: %3</source>
     </message>
     <message>
         <location line="+1"/>
+        <source>Details:</source>
+        <translation>詳細資訊：</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Select an attempt, a step or a measurement to read all of it here.</source>
+        <translation>選擇一次嘗試、一個步驟或一項量測，在此閱讀其全部內容。</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>Open</source>
         <translation>開啟</translation>
     </message>
@@ -12353,7 +12363,7 @@ Samples: %3</source>
         <translation>第 %1 次嘗試 · %2</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+6"/>
         <source>Plan: %1
 Station: %2 · slot %3 · operator %4
 Product: %5 · firmware %6
@@ -12366,12 +12376,12 @@ Record: %8</source>
 記錄：%8</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+15"/>
         <source>skipped</source>
         <translation>已略過</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+20"/>
         <source>for information</source>
         <translation>僅供參考</translation>
     </message>
@@ -12381,7 +12391,22 @@ Record: %8</source>
         <translation>以數值的絕對值與限值比較</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+4"/>
+        <source>%1 = %2 %3</source>
+        <translation>%1 = %2 %3</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Limits: %1</source>
+        <translation>限值：%1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Marginal band: %1</source>
+        <translation>臨界區間：%1</translation>
+    </message>
+    <message>
+        <location line="+31"/>
         <source>PDF report</source>
         <translation>PDF 報告</translation>
     </message>
@@ -12449,7 +12474,7 @@ SHA-256：%2</translation>
 <context>
     <name>imudesk::ui::MountingPicker</name>
     <message>
-        <location filename="../ui/configuration/mounting_picker.cpp" line="+28"/>
+        <location filename="../ui/configuration/mounting_picker.cpp" line="+34"/>
         <source>Mounting (URFR)</source>
         <translation>安裝方式（URFR）</translation>
     </message>
@@ -12479,7 +12504,7 @@ SHA-256：%2</translation>
         <translation>IMU Z 指向：</translation>
     </message>
     <message>
-        <location line="+75"/>
+        <location line="+89"/>
         <source>(no right-handed mounting)</source>
         <translation>（無法構成右手座標系的安裝方式）</translation>
     </message>
@@ -13760,7 +13785,7 @@ Is it a results database that ImuDesk wrote? Choose another file with Open….</
 <context>
     <name>imudesk::ui::ShortcutsDialog</name>
     <message>
-        <location filename="../ui/workspace/help_dialogs.cpp" line="+76"/>
+        <location filename="../ui/workspace/help_dialogs.cpp" line="+233"/>
         <source>Keyboard shortcuts</source>
         <translation>鍵盤快捷鍵</translation>
     </message>
@@ -15115,12 +15140,22 @@ Edit it (Edit…) and start again.</source>
 <context>
     <name>imudesk::ui::UserGuideDialog</name>
     <message>
-        <location filename="../ui/workspace/help_dialogs.cpp" line="-39"/>
+        <location filename="../ui/workspace/help_dialogs.cpp" line="-195"/>
+        <source>The user guide is written in English; it is not available in your language yet. The menus and dialogs it describes are shown in your language.</source>
+        <translation>使用者指南以英文撰寫，尚無您所用語言的版本。指南中描述的選單和對話框以您的語言顯示。</translation>
+    </message>
+    <message>
+        <location line="+69"/>
         <source>ImuDesk user guide</source>
         <translation>ImuDesk 使用者指南</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+1"/>
+        <source>Contents</source>
+        <translation>目錄</translation>
+    </message>
+    <message>
+        <location line="-37"/>
         <source>The user guide is not part of this build. It is docs/USER_GUIDE.md in ImuDesk&apos;s source.</source>
         <translation>此版本未包含使用者指南。它位於 ImuDesk 原始碼中的 docs/USER_GUIDE.md。</translation>
     </message>

@@ -137,7 +137,12 @@ bool parseArgs(QCommandLineParser &p, const QStringList &args, const QString &us
     }
     if (p.isSet(QStringLiteral("help"))) {
         out(QStringLiteral("usage: ") + usage);
-        std::fputs(p.helpText().toUtf8().constData(), stdout);
+        // Qt's own first line names the program alone ("Usage: /usr/bin/imudesk-cli [options]
+        // FILE"), not the command: the usage above says it, so that line goes.
+        QString help = p.helpText();
+        if (help.startsWith(QLatin1String("Usage:")))
+            help = help.mid(help.indexOf(QLatin1Char('\n')) + 1);
+        std::fputs(help.toUtf8().constData(), stdout);
         std::exit(ExitOk);
     }
     return true;

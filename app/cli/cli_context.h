@@ -19,7 +19,9 @@ namespace imudesk::cli {
 
 // ExitUnconfirmed: a setting was written but the module's read-back did not say whether it
 // was taken (config set, profile apply); ExitFailure covers "the module holds another value".
-enum ExitCode { ExitOk = 0, ExitFailure = 1, ExitUsage = 2, ExitUnconfirmed = 3, ExitInterrupted = 130 };
+// ExitNotFound: a query ran and found nothing (results serial SN of no module, a yield of no
+// module, an export of no record), as grep says "no match" apart from an error.
+enum ExitCode { ExitOk = 0, ExitFailure = 1, ExitUsage = 2, ExitUnconfirmed = 3, ExitNotFound = 4, ExitInterrupted = 130 };
 
 // Writes a one-line error "imudesk-cli: <message>" to stderr and returns ExitFailure.
 int fail(const QString &message, int code = ExitFailure);

@@ -34,7 +34,7 @@ int cmdBridge(const QStringList &args)
                             QStringLiteral("Devices: serial ports (PORT or PORT:BAUD), modbus:PORT[@ID], modbus-hec495:PORT[@ID] "
                                            "or can:PLUGIN:INTERFACE[:PROTOCOL]"));
     const QString usage = QStringLiteral("imudesk-cli bridge PORT[,PORT...] [--listen ADDR:PORT] [--udp HOST:PORT] "
-                                         "[--no-websocket] [--duration S] [--baud B]");
+                                         "[--no-websocket] [--duration S] [--baud B] [--client-buffer-mb N]");
     if (!parseArgs(p, args, usage))
         return ExitUsage;
     if (p.positionalArguments().size() != 1)
@@ -83,10 +83,8 @@ int cmdBridge(const QStringList &args)
                      [](const QString &line) { std::fprintf(stderr, "bridge: %s\n", qPrintable(line)); });
     if (!bridge.start(o, &error))
         return fail(error);
-    for (OpenDevice &d : devices) {
-        const QString serial = QString::fromStdString(d.identity.serial);
-        bridge.addDevice(d.link.link->sharedStore(), headerOf(d), serial.isEmpty() ? portName(d.spec) : serial);
-    }
+    for (OpenDevice &d : devices) // named by record::deviceName: its serial, else family and address
+        bridge.addDevice(d.link.link->sharedStore(), headerOf(d));
     if (o.websocket)
         out(QStringLiteral("bridge %1 serving %2 device(s) (Ctrl+C stops)").arg(bridge.url()).arg(devices.size()));
     else

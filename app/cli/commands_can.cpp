@@ -26,8 +26,8 @@ using protocol::can::CanProtocol;
 namespace {
 
 const char *kUsage = "imudesk-cli can [--plugin P] [--interface I] [--bitrate B] [--fd [--data-bitrate B]] "
-                     "[--protocol auto|j1939|canopen|hec495] [--node N] [--json] "
-                     "list|scan|read|get|set|config|reg|sdo|sync|output ...\n"
+                     "[--protocol auto|j1939|canopen|hec495] [--node N] [--extended] [--json] "
+                     "list|scan|read|get|set|config|reg|sdo|sync|output|action ...\n"
                      "  list                                 plugins and their interfaces\n"
                      "  scan [--duration S] [--active]       nodes heard (and, with --active, an SDO scan of 1..127)\n"
                      "  read [--duration S]                  decoded samples\n"
@@ -304,7 +304,9 @@ int cmdCan(const QStringList &args)
     p.addOption(QCommandLineOption(QStringLiteral("all"), QStringLiteral("output: NMT start/stop to every node (node 0).")));
     p.addOption(QCommandLineOption(QStringLiteral("extended"),
                                    QStringLiteral("HEC495: the extended-frame variant (requests on 0x18FA0227).")));
-    p.addPositionalArgument(QStringLiteral("SUBCOMMAND"), QStringLiteral("list, scan, read, reg, sdo, sync, set or output"));
+    p.addPositionalArgument(QStringLiteral("SUBCOMMAND"),
+                            QStringLiteral("list, scan, read, get, set, config, reg, sdo, sync, output or action"),
+                            QStringLiteral("SUBCOMMAND [ARGUMENTS...]"));
     if (!parseArgs(p, args, QString::fromLatin1(kUsage)))
         return ExitUsage;
     const QStringList pos = p.positionalArguments();

@@ -299,7 +299,7 @@ int cmdSend(const QStringList &args)
                                    QStringLiteral("MS"), QStringLiteral("1000")));
     p.addPositionalArgument(QStringLiteral("PORT"), QStringLiteral("Serial port"));
     p.addPositionalArgument(QStringLiteral("COMMAND"), QStringLiteral("ASCII command, e.g. \"LOG VERSION\""));
-    if (!parseArgs(p, args, QStringLiteral("imudesk-cli send PORT [--baud B] \"COMMAND\"")))
+    if (!parseArgs(p, args, QStringLiteral("imudesk-cli send PORT [--baud B] [--timeout MS] \"COMMAND\"")))
         return ExitUsage;
     if (p.positionalArguments().size() != 2)
         return fail(QStringLiteral("send needs PORT and one quoted COMMAND"), ExitUsage);
@@ -405,7 +405,7 @@ int cmdSimulate(const QStringList &args)
                                    QStringLiteral("CAN: a HiPNUC J1939 module on a CAN FD bus, which also sends the "
                                                   "64-byte PGN 0xFF5A every 10 ms.")));
     const QString usage = QStringLiteral("imudesk-cli simulate --pty [--device hipnuc|hec495] [--model HI14] "
-                                         "[--firmware 1.7.1] [--baud 115200] [--address N] "
+                                         "[--firmware 1.7.1] [--serial SN] [--baud 115200] [--address N] "
                                          "[--motion static|spin|tumble|turntable|twists] [--pps] [--seed N] [--faults LIST] "
                                          "[--clock PPM[,OFFSET_MS[,STEP_AT_S,STEP_MS]]] [--adapter TIMER_MS[,JITTER_US[,FIXED_US]]] "
                                          "[--sync-in HZ] "

@@ -39,7 +39,7 @@ int cmdExport(const QStringList &args)
                             QStringLiteral("A capture, a vendor HI91 CSV, a raw byte dump (recognised by content), or the "
                                            "folder of a recorded session (record PORT,PORT,...)."));
     if (!parseArgs(p, args,
-                   QStringLiteral("imudesk-cli export FILE --format vendor-csv|csv|jsonl|mcap|mat [-o OUT] [--from S --to S]\n"
+                   QStringLiteral("imudesk-cli export FILE --format vendor-csv|csv|jsonl|mcap|mat [-o OUT] [--from S --to S] [--progress]\n"
                                   "       imudesk-cli export SESSION_FOLDER --format csv|jsonl|mcap|mat [-o OUT] [--grid-ms MS | --pulse-hz HZ]")))
         return ExitUsage;
     if (p.positionalArguments().size() != 1)

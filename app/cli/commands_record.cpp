@@ -38,8 +38,8 @@ int recordGroup(const QStringList &specs, const QString &folder, double duration
         auto *session = qobject_cast<device::Session *>(d.link.link.get());
         if (!session)
             return fail(QStringLiteral("%1: this link cannot be recorded").arg(d.spec));
-        // Named for the file and the manifest by its port ("ttyUSB0", "pts-3").
-        members.push_back({session, portName(d.spec), d.spec, d.identity});
+        // Named for the file and the manifest by GroupRecording (record::deviceName), not by its port.
+        members.push_back({session, QString(), d.spec, d.identity});
     }
     device::GroupRecording group;
     QString error;
@@ -106,9 +106,8 @@ int recordGroupMcap(const QStringList &specs, const QString &path, double durati
     if (const int code = openDevices(specs, baud, devices); code != ExitOk)
         return code;
     std::vector<record::McapGroupRecording::Member> members;
-    for (OpenDevice &d : devices) // named by its serial number; by its port when it has none
-        members.push_back({d.link.link->sharedStore(), headerOf(d),
-                           d.identity.serial.empty() ? portName(d.spec).toStdString() : std::string()});
+    for (OpenDevice &d : devices) // named by record::deviceName: its serial number, else family and address
+        members.push_back({d.link.link->sharedStore(), headerOf(d), std::string()});
     record::McapGroupRecording recording;
     QString error;
     if (!recording.start(path, members, &error))

@@ -168,7 +168,7 @@ int cmdResults(const QStringList &args)
         if (format == QLatin1String("jsonl")) {
             for (const auto &m : records)
                 outRaw(QJsonDocument(m.toJson()).toJson(QJsonDocument::Compact).toStdString());
-            return ExitOk;
+            return records.empty() ? ExitNotFound : ExitOk;
         }
         out(QStringLiteral("module_uuid,run_uuid,station_id,plan,serial,product,slot,firmware_before,firmware_after,attempt,"
                            "module_outcome,marginal,started,step,measurement,value,unit,comparator,low,high,marginal_low,"
@@ -185,7 +185,7 @@ int cmdResults(const QStringList &args)
                                 v.marginal && v.outcome == results::Outcome::Pass ? QStringLiteral("PASS_MARGINAL")
                                                                                    : results::outcomeKey(v.outcome)}
                         .join(QLatin1Char(',')));
-        return ExitOk;
+        return records.empty() ? ExitNotFound : ExitOk;
     }
     if (what == QLatin1String("serial")) {
         const std::vector<results::ModuleRecord> h = store.history(pos[1], &error);
@@ -197,11 +197,12 @@ int cmdResults(const QStringList &args)
                 attempts.append(m.toJson());
             outRaw(QJsonDocument(QJsonObject{{QStringLiteral("serial"), pos[1]}, {QStringLiteral("attempts"), attempts}})
                        .toJson(QJsonDocument::Compact).toStdString());
-            return ExitOk;
+            return h.empty() ? ExitNotFound : ExitOk;
         }
         if (h.empty()) {
-            out(QStringLiteral("%1: no results in %2").arg(pos[1], source));
-            return ExitOk;
+            // stderr, like every other "nothing" of the CLI: stdout stays the results (none).
+            fail(QStringLiteral("%1: no results in %2").arg(pos[1], source), ExitNotFound);
+            return ExitNotFound;
         }
         for (const auto &m : h) {
             out(QStringLiteral("%1  %2  attempt %3  %4  plan \"%5\"  slot %6  firmware %7%8  station %9")
@@ -230,6 +231,8 @@ int cmdResults(const QStringList &args)
     const results::ResultsStore::Yield y = store.yield(p.value(QStringLiteral("plan")), since, &error);
     if (!error.isEmpty())
         return fail(error);
+    const results::ResultsStore::Counts &t = y.total;
+    const bool none = t.pass + t.fail + t.error + t.aborted == 0;
     if (json) {
         QJsonObject firmware, slots;
         for (const auto &[k, c] : y.byFirmware)
@@ -241,8 +244,10 @@ int cmdResults(const QStringList &args)
                                          {QStringLiteral("by_firmware"), firmware},
                                          {QStringLiteral("by_slot"), slots}})
                    .toJson(QJsonDocument::Compact).toStdString());
-        return ExitOk;
+        return none ? ExitNotFound : ExitOk;
     }
+    if (none)
+        return fail(QStringLiteral("plan \"%1\": no modules in %2").arg(p.value(QStringLiteral("plan")), source), ExitNotFound);
     out(QStringLiteral("plan \"%1\": %2 (ERROR and ABORTED are not counted in the yield)")
             .arg(p.value(QStringLiteral("plan")), countsText(y.total)));
     for (const auto &[k, c] : y.byFirmware)

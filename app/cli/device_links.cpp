@@ -69,19 +69,13 @@ bool linkOf(const QString &spec, int baud, device::LinkRequest *out, QString *er
     return true;
 }
 
-QString portName(const QString &spec)
-{
-    QString name = spec.startsWith(QLatin1String("/dev/")) ? spec.mid(5).section(QLatin1Char(':'), 0, 0) : spec;
-    name.replace(QLatin1Char('/'), QLatin1Char('-'));
-    return name;
-}
-
 record::CaptureHeader headerOf(const OpenDevice &d)
 {
     record::CaptureHeader header;
     header.setIdentity(d.identity);
     header.set(record::CaptureHeader::kLinkKind, d.link.link->linkKind().toStdString());
     header.set(record::CaptureHeader::kPort, d.spec.toStdString());
+    d.link.link->describeLink(header);
     return header;
 }
 

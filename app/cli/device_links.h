@@ -29,9 +29,6 @@ struct OpenDevice {
     bool ready = false;
 };
 
-// A device's name where it has no serial number: its port without /dev/ and its :BAUD ("pts-3",
-// "ttyUSB0"), as a recorded session names its file.
-QString portName(const QString &spec);
 // What a recording or the bridge says of an opened device: its identity, link and port.
 record::CaptureHeader headerOf(const OpenDevice &d);
 

@@ -68,8 +68,8 @@ void usage(FILE *to)
                "                                         talk to a Witlink HEC495 compass\n"
                "  simulate --can virtualcan:can0 --protocol j1939|canopen [--device hipnuc|hec495] [--node N] [--fd]\n"
                "                                         serve a simulated CAN device\n"
-               "  can [--plugin P] [--interface I] [--bitrate B] [--fd [--data-bitrate B]]\n"
-               "      list|scan|read|get NAME|set NAME VALUE|config|reg|sdo|sync|output [--json]\n"
+               "  can [--plugin P] [--interface I] [--bitrate B] [--fd [--data-bitrate B]] [--protocol P] [--node N]\n"
+               "      list|scan|read|get NAME|set NAME VALUE|config|reg|sdo|sync|output on|off|action NAME [--json]\n"
                "                                         CAN devices (J1939, CANopen, HEC495)\n"
                "Run 'imudesk-cli COMMAND --help' for a command's options.\n",
                to);

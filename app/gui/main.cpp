@@ -234,7 +234,7 @@ int main(int argc, char *argv[])
         changed.save(store);
     });
     window.setSimulatedMotion(simOptions.motion);
-    window.show();
+    window.showAsSaved();
 
     if (simulate) {
         QString error;

@@ -5,6 +5,7 @@
 #include "format/mcap/channel_sink.h"
 #include "format/mcap/sample_channels.h"
 #include "format/sample_json.h"
+#include "record/device_name.h"
 #include "record/mcap_recording.h"
 
 #include <QCoreApplication>
@@ -48,7 +49,7 @@ public:
 
     QString start(const BridgeOptions &o, quint16 *port);
     void stop();
-    void addDevice(std::shared_ptr<device::SampleStore> store, const record::CaptureHeader &header, const QString &name);
+    void addDevice(std::shared_ptr<device::SampleStore> store, const record::CaptureHeader &header, const QString &label);
     void removeDevice(const device::SampleStore *store);
 
 private:
@@ -233,14 +234,14 @@ void BridgeWorker::stop()
 }
 
 void BridgeWorker::addDevice(std::shared_ptr<device::SampleStore> store, const record::CaptureHeader &header,
-                             const QString &name)
+                             const QString &label)
 {
     const device::SampleStore *key = store.get();
     if (m_devices.count(key))
         return;
     // A namespace of its own: two devices that give the same name get _2, _3, ...
     const std::string unique = fm::SampleChannels::uniqueName(
-        fm::SampleChannels::topicName(name.toStdString()), [this](const std::string &n) {
+        record::deviceName(header, label.toStdString()), [this](const std::string &n) {
             return std::any_of(m_devices.begin(), m_devices.end(), [&n](const auto &e) { return e.second.name == n; });
         });
     Device d{device::SampleCursor(std::move(store)), unique, nullptr, nullptr};
@@ -650,10 +651,10 @@ void LiveBridge::stop()
 }
 
 void LiveBridge::addDevice(std::shared_ptr<device::SampleStore> store, const record::CaptureHeader &header,
-                           const QString &name)
+                           const QString &label)
 {
-    QMetaObject::invokeMethod(m_worker, [w = m_worker, store = std::move(store), header, name]() mutable {
-        w->addDevice(std::move(store), header, name);
+    QMetaObject::invokeMethod(m_worker, [w = m_worker, store = std::move(store), header, label]() mutable {
+        w->addDevice(std::move(store), header, label);
     }, Qt::QueuedConnection);
 }
 

@@ -77,10 +77,11 @@ public:
     // false with why (the CLI's --listen and --udp, the window's --bridge).
     static bool parseHostPort(const QString &text, QHostAddress *address, quint16 *port, QString *error);
 
-    // A device whose samples go out, under the topic namespace /imu/<name>/ (name: its serial
-    // number; made unique); header: its identity, link and configuration, as a capture's.
-    // The store is what the bridge knows it by.
-    void addDevice(std::shared_ptr<device::SampleStore> store, const record::CaptureHeader &header, const QString &name);
+    // A device whose samples go out, under the topic namespace /imu/<name>/ (name:
+    // record::deviceName(header, label), its serial number first; made unique); header: its
+    // identity, link and configuration, as a capture's. The store is what the bridge knows it by.
+    void addDevice(std::shared_ptr<device::SampleStore> store, const record::CaptureHeader &header,
+                   const QString &label = QString());
     void removeDevice(const device::SampleStore *store);
 
     BridgeStats stats() const;

@@ -1,6 +1,8 @@
 #include "can_session.h"
 #include "device/can_family.h"
 #include "io/can_transport.h"
+#include "protocol/can/can_decoder.h"
+#include "record/capture_header.h"
 
 #include "protocol/can/canopen.h"
 #include "protocol/can/hec495_can.h"
@@ -94,6 +96,14 @@ QString CanSession::linkKind() const
     case CanProtocol::Auto: break;
     }
     return tr("CAN");
+}
+
+void CanSession::describeLink(record::CaptureHeader &header) const
+{
+    if (protocol() == CanProtocol::Auto)
+        return;
+    header.set(record::CaptureHeader::kCanProtocol, ::imudesk::protocol::can::protocolName(protocol()));
+    header.set(record::CaptureHeader::kCanNode, std::to_string(node()));
 }
 
 uint8_t CanSession::node() const

@@ -15,6 +15,10 @@
 #include <atomic>
 #include <memory>
 
+namespace imudesk::record {
+class CaptureHeader;
+}
+
 namespace imudesk::device {
 
 class DeviceLink : public QObject {
@@ -40,6 +44,9 @@ public:
     // Samples stamped with the host clock as they arrive (false for a replayed capture, whose
     // host times are the recording's): a view can tell a value that stopped arriving by its age.
     virtual bool isLive() const { return true; }
+    // Adds what names the device on its link beyond its identity to a header that names it
+    // (record/device_name.h): a CAN link's protocol and node. Nothing for the others.
+    virtual void describeLink(record::CaptureHeader &) const {}
 
     // Capability::TextCommands: a command as a person typed it (the console); the reply comes
     // in textReplied(id, ...). 0 when this link takes no text. The only place where command text

@@ -1,10 +1,14 @@
 #include "group_recording.h"
 
 #include "device/host_clock.h"
+#include "format/mcap/sample_channels.h"
+#include "record/device_name.h"
 
 #include <QDateTime>
 #include <QDir>
 #include <QFileInfo>
+
+#include <set>
 
 namespace imudesk::device {
 
@@ -53,14 +57,22 @@ bool GroupRecording::start(const QString &folder, const std::vector<Member> &mem
     m_stopping = false;
     int started = 0;
     QStringList refused;
+    std::set<std::string> names;
     for (size_t i = 0; i < members.size(); ++i) {
         const Member &m = members[i];
         const int index = int(i);
+        record::CaptureHeader header;
+        header.setIdentity(m.identity);
+        if (m.session)
+            m.session->describeLink(header);
+        const std::string name = format::mcap::SampleChannels::uniqueName(
+            record::deviceName(header, m.label.toStdString()), [&names](const std::string &n) { return names.count(n) > 0; });
+        names.insert(name);
         record::SessionManifest::Device d;
-        d.name = m.name;
+        d.name = QString::fromStdString(name);
         d.address = m.address;
         d.linkKind = m.session ? m.session->linkKind() : QString();
-        d.file = fileStem(m.name, index) + QStringLiteral(".imucap");
+        d.file = fileStem(d.name, index) + QStringLiteral(".imucap");
         d.product = QString::fromStdString(m.identity.productName);
         d.serial = QString::fromStdString(m.identity.serial);
         d.firmware = m.identity.firmware ? QString::fromStdString(m.identity.firmware->toString()) : QString();
@@ -71,7 +83,7 @@ bool GroupRecording::start(const QString &folder, const std::vector<Member> &mem
         m_entries.push_back(entry);
         Session *s = m.session;
         if (!s) {
-            refused << m.name;
+            refused << d.name;
             continue;
         }
         const QString path = QDir(folder).filePath(d.file);

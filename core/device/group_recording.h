@@ -8,6 +8,7 @@
 // reconnects by itself) goes on recording into the same file.
 #include "device/session.h"
 #include "device/session_types.h"
+#include "record/capture_header.h"
 #include "record/session_manifest.h"
 
 #include <QObject>
@@ -23,7 +24,8 @@ class GroupRecording : public QObject {
 public:
     struct Member {
         Session *session = nullptr;
-        QString name;    // for the file and the manifest ("A", the tab's title, ...)
+        QString label;   // a label the user set, or empty; the file and the manifest name the
+                         // device by record::deviceName (its serial, else family and address)
         QString address; // the link as the user gave it
         model::DeviceIdentity identity;
     };

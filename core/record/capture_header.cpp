@@ -1,5 +1,6 @@
 #include "capture_header.h"
 
+#include <algorithm>
 #include <charconv>
 
 namespace imudesk::record {
@@ -59,6 +60,10 @@ void CaptureHeader::setIdentity(const model::DeviceIdentity &id)
     set(kBootloader, id.bootloader ? id.bootloader->toString() : std::string());
     set(kSerial, id.serial);
     set(kBuild, id.build);
+    if (id.busAddress >= 0)
+        set(kAddress, std::to_string(id.busAddress));
+    else
+        values.erase(kAddress);
     if (id.worldFrame == model::WorldFrame::Enu)
         values.erase(kWorldFrame);
     else
@@ -74,6 +79,9 @@ model::DeviceIdentity CaptureHeader::identity() const
     id.firmware = model::FirmwareVersion::parse(value(kFirmware));
     id.bootloader = model::FirmwareVersion::parse(value(kBootloader));
     id.worldFrame = model::parseWorldFrame(value(kWorldFrame)).value_or(model::WorldFrame::Enu);
+    if (const std::string a = value(kAddress); !a.empty() && a.size() < 4
+        && std::all_of(a.begin(), a.end(), [](char c) { return c >= '0' && c <= '9'; }))
+        id.busAddress = std::stoi(a);
     return id;
 }
 

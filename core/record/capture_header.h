@@ -25,6 +25,8 @@ public:
     static constexpr const char *kBootloader = "device.bootloader";
     static constexpr const char *kSerial = "device.serial";
     static constexpr const char *kBuild = "device.build";
+    // The module's address on its bus (DeviceIdentity::busAddress): a Witlink HEC495's, a Modbus node's.
+    static constexpr const char *kAddress = "device.address";
     // "NWU" for a module set to CONFIG IMU COORD 4; absent: ENU.
     static constexpr const char *kWorldFrame = "device.world_frame";
     static constexpr const char *kLinkKind = "link.kind";   // "HiPNUC serial"

@@ -1,5 +1,6 @@
 #include "mat_export.h"
 
+#include "record/device_name.h"
 #include "record/mcap_recording.h"
 
 #include <QDateTime>
@@ -37,7 +38,7 @@ MatExport::MatExport(int64_t originNs, int64_t epochOffsetNs)
 {
 }
 
-int MatExport::addDevice(const CaptureHeader &header, const std::string &name)
+int MatExport::addDevice(const CaptureHeader &header, const std::string &label)
 {
     std::map<std::string, std::string> info = McapRecording::deviceMetadata(header);
     if (m_epochOffsetNs != 0) {
@@ -49,7 +50,8 @@ int MatExport::addDevice(const CaptureHeader &header, const std::string &name)
     info["time_common"] = "the sample's sampling instant on the host's clock, from the device's counter through "
                           "ImuDesk's clock model (NaN: none)";
     info["world_frame"] = header.identity().worldFrame == model::WorldFrame::Nwu ? "NWU" : "ENU";
-    return m_file.addStruct(McapRecording::channelsOf(header, name).name, info, fields());
+    // "SN_0042": the name the user guide's MATLAB example uses (record/device_name.h).
+    return m_file.addStruct(matlabDeviceName(header, label), info, fields());
 }
 
 bool MatExport::append(int device, const model::Sample &s)

@@ -20,7 +20,7 @@ bool McapGroupRecording::start(const QString &path, std::vector<Member> members,
     m_members = std::move(members);
     std::vector<McapRecording::Device> devices;
     for (const Member &m : m_members)
-        devices.push_back({m.header, m.name});
+        devices.push_back({m.header, m.label});
     const int64_t epochOffsetNs = QDateTime::currentMSecsSinceEpoch() * 1'000'000 - device::hostNowNs();
     if (!m_recording.start(path, devices, epochOffsetNs, error))
         return false;

@@ -24,7 +24,7 @@ public:
     struct Member {
         std::shared_ptr<device::SampleStore> store;
         CaptureHeader header;
-        std::string name; // empty: its serial number
+        std::string label; // a label the user set, or empty (its name: record::deviceName)
     };
 
     McapGroupRecording() = default;

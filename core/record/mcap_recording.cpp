@@ -1,5 +1,7 @@
 #include "mcap_recording.h"
 
+#include "record/device_name.h"
+
 #include <QCoreApplication>
 #include <QDateTime>
 #include <QJsonDocument>
@@ -70,9 +72,7 @@ fm::SampleChannels::Device McapRecording::channelsOf(const CaptureHeader &header
 {
     const model::DeviceIdentity id = header.identity();
     fm::SampleChannels::Device d;
-    d.name = fm::SampleChannels::topicName(!name.empty() ? name
-                                           : !id.serial.empty() ? id.serial
-                                           : !id.productName.empty() ? id.productName : "device");
+    d.name = name.empty() ? deviceName(header) : fm::SampleChannels::topicName(name);
     d.frameId = "imu_" + d.name;
     d.worldFrame = id.worldFrame;
     d.metadata = deviceMetadata(header);
@@ -103,7 +103,7 @@ bool McapRecording::start(const QString &path, const std::vector<Device> &device
     const bool one = devices.size() == 1;
     std::set<std::string> names;
     for (const Device &dev : devices) {
-        const std::string name = fm::SampleChannels::uniqueName(channelsOf(dev.header, dev.name).name,
+        const std::string name = fm::SampleChannels::uniqueName(deviceName(dev.header, dev.label),
                                                                 [&names](const std::string &n) { return names.count(n) > 0; });
         names.insert(name);
         const fm::SampleChannels::Device d = channelsOf(dev.header, name);

@@ -5,6 +5,7 @@
 #include "clock/trigger_pairing.h"
 #include "record/capture_sample_stream.h"
 #include "record/csv_number.h"
+#include "record/device_name.h"
 #include "record/mat_export.h"
 #include "record/mcap_recording.h"
 
@@ -12,13 +13,13 @@
 #include <QDir>
 #include <QFile>
 #include <QSaveFile>
-#include <QSet>
 
 #include <cmath>
 #include <deque>
 #include <map>
 #include <memory>
 #include <optional>
+#include <set>
 
 namespace imudesk::record {
 
@@ -105,19 +106,15 @@ void writeMcap(const QString &folder, const SessionManifest &manifest,
     QFile json(QDir(folder).filePath(QLatin1String(SessionManifest::kFileName)));
     if (json.open(QIODevice::ReadOnly))
         w.attach("session.json", "application/json", json.readAll().toStdString(), now, now);
-    QSet<QString> serials, repeated;
-    for (const auto &st : streams) {
-        const QString serial = QString::fromStdString(st->header().identity().serial);
-        if (!serial.isEmpty() && serials.contains(serial))
-            repeated.insert(serial);
-        serials.insert(serial);
-    }
     std::vector<std::unique_ptr<fm::SampleChannels>> channels;
+    std::set<std::string> names;
     for (size_t i = 0; i < streams.size(); ++i) {
         const CaptureHeader &h = streams[i]->header();
-        const QString serial = QString::fromStdString(h.identity().serial);
-        const std::string name = serial.isEmpty() || repeated.contains(serial) ? manifest.devices[i].name.toStdString()
-                                                                                  : std::string();
+        // The manifest's name is the label (an older session's names its port): the device's
+        // own name first (record/device_name.h), _2 for a second of the same.
+        const std::string name = fm::SampleChannels::uniqueName(deviceName(h, manifest.devices[i].name.toStdString()),
+                                                                [&names](const std::string &n) { return names.count(n) > 0; });
+        names.insert(name);
         const fm::SampleChannels::Device d = McapRecording::channelsOf(h, name);
         w.addMetadata("device " + d.name, d.metadata);
         if (const std::string config = McapRecording::configurationJson(h); !config.empty())
@@ -157,7 +154,7 @@ void writeMat(const SessionManifest &manifest, std::vector<std::unique_ptr<Captu
     std::vector<int> structs;
     for (size_t i = 0; i < streams.size(); ++i) {
         const CaptureHeader &h = streams[i]->header();
-        const int index = mat.addDevice(h, h.identity().serial.empty() ? manifest.devices[i].name.toStdString() : std::string());
+        const int index = mat.addDevice(h, manifest.devices[i].name.toStdString());
         if (index < 0) {
             r.error = mat.error();
             return;

@@ -436,7 +436,7 @@ int main(int argc, char **argv)
         std::vector<device::GroupRecording::Member> members;
         for (ui::DeviceWorkspace *w : window.allWorkspaces())
             if (auto *s = qobject_cast<device::Session *>(&w->link()))
-                members.push_back({s, w->title(), w->target(), w->identity().value_or(model::DeviceIdentity{})});
+                members.push_back({s, QString(), w->target(), w->identity().value_or(model::DeviceIdentity{})});
         if (!group->start(QDir(recordDir).filePath(QStringLiteral("session")), members, &groupError)) {
             std::fprintf(stderr, "%s: %s\n", name, qPrintable(groupError));
             return 1;

@@ -119,7 +119,8 @@ private Q_SLOTS:
         QVERIFY(info.value(QStringLiteral("time_origin_utc")).toString().contains(QLatin1Char('T')));
     }
 
-    // A session of two devices: one file, a struct per device named by its serial number.
+    // A session of two devices: one file, a struct per device named by its serial number
+    // ("SN_" before it: the user guide's s.SN_0042).
     void sessionToOneFile()
     {
         const QString folder = m_dir.filePath(QStringLiteral("session"));
@@ -134,13 +135,47 @@ private Q_SLOTS:
         QCOMPARE(r.samplesByDevice, (std::vector<uint64_t>{1000, 1500}));
         // Read whole by the reader: the structs, their sizes, their devices (the values are the
         // capture test's, above; here the CSV is only the reader's argument).
-        const QJsonObject a = compare(o.output, QStringLiteral("AAA1"), m_csv, &error);
+        const QJsonObject a = compare(o.output, QStringLiteral("SN_AAA1"), m_csv, &error);
         QVERIFY2(error.isEmpty(), qPrintable(error));
-        QCOMPARE(a.value(QStringLiteral("variables")).toArray(), (QJsonArray{QStringLiteral("AAA1"), QStringLiteral("BBB2")}));
+        QCOMPARE(a.value(QStringLiteral("variables")).toArray(), (QJsonArray{QStringLiteral("SN_AAA1"), QStringLiteral("SN_BBB2")}));
         QCOMPARE(a.value(QStringLiteral("shapes")).toObject().value(QStringLiteral("acc")).toArray(), (QJsonArray{1000, 3}));
-        const QJsonObject b = compare(o.output, QStringLiteral("BBB2"), m_csv, &error);
+        const QJsonObject b = compare(o.output, QStringLiteral("SN_BBB2"), m_csv, &error);
         QCOMPARE(b.value(QStringLiteral("shapes")).toObject().value(QStringLiteral("acc")).toArray(), (QJsonArray{1500, 3}));
         QCOMPARE(b.value(QStringLiteral("info")).toObject().value(QStringLiteral("serial")).toString(), QStringLiteral("BBB2"));
+    }
+
+    // The struct's name is the user guide's (s.SN_0042): "SN_" and the serial number, a valid
+    // MATLAB name whatever the serial begins with (a module's 16 hex digits were x2181B60A...).
+    void structNamedAsTheGuideSays_data()
+    {
+        QTest::addColumn<QByteArray>("serial");
+        QTest::addColumn<QString>("variable");
+        QTest::newRow("digits") << QByteArray("0042") << QStringLiteral("SN_0042");
+        QTest::newRow("hex uuid") << QByteArray("2181B60A6FDA63DF") << QStringLiteral("SN_2181B60A6FDA63DF");
+        QTest::newRow("SN- already") << QByteArray("SN-7") << QStringLiteral("SN_7");
+    }
+    void structNamedAsTheGuideSays()
+    {
+        QFETCH(QByteArray, serial);
+        QFETCH(QString, variable);
+        synthetic::CaptureSpec spec;
+        spec.frames = 200;
+        spec.serial = serial.toStdString();
+        const QString capture = m_dir.filePath(QStringLiteral("named-%1.imucap").arg(QString::fromLatin1(serial)));
+        QVERIFY(synthetic::writeCapture(capture, spec) > 0);
+        record::CaptureExporter::Options o;
+        o.format = record::CaptureExporter::Format::TidyCsv;
+        o.output = m_dir.filePath(QStringLiteral("named-%1.csv").arg(QString::fromLatin1(serial)));
+        QVERIFY(record::CaptureExporter::run(capture, o).ok);
+        const QString csv = o.output;
+        o.format = record::CaptureExporter::Format::Mat;
+        o.output = m_dir.filePath(QStringLiteral("named-%1.mat").arg(QString::fromLatin1(serial)));
+        const auto r = record::CaptureExporter::run(capture, o);
+        QVERIFY2(r.ok, qPrintable(r.error));
+        QString error;
+        const QJsonObject c = compare(o.output, variable, csv, &error);
+        QVERIFY2(error.isEmpty(), qPrintable(error));
+        QCOMPARE(c.value(QStringLiteral("variables")).toArray(), QJsonArray{variable});
     }
 
     void fromTheCommandLine()

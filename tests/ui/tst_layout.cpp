@@ -24,6 +24,9 @@
 #include "charts/chart_panel.h"
 #include "charts/comparison_chart.h"
 #include "configuration/config_panel.h"
+#include "configuration/mounting_picker.h"
+#include "configuration/mounting_tile.h"
+#include "model/mounting.h"
 #include "charts/chart_view.h"
 #include "workspace/connection_bar.h"
 #include "device/can_session_types.h"
@@ -49,6 +52,7 @@
 #include <QHeaderView>
 #include <QLabel>
 #include <QMainWindow>
+#include <QImage>
 #include <QProcess>
 #include <QScreen>
 #include <QScrollArea>
@@ -487,6 +491,87 @@ private Q_SLOTS:
                          && !written.contains(QLatin1String(ui::WindowSettings::kGeometryKey)),
                      qPrintable(written.allKeys().join(QLatin1Char(' '))));
         }
+    }
+
+    // Fresh settings on this 1920x1080 screen (1366x768 with IMUDESK_LAYOUT_LAPTOP): the GUI
+    // opens maximised, not at 1280x860 in the middle of a larger screen (issue 53 point 17d).
+    void freshSettingsOpenMaximised()
+    {
+        QTemporaryDir config;
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment(); // this screen's platform
+        env.insert(QStringLiteral("XDG_CONFIG_HOME"), config.path());
+        QProcess gui;
+        gui.setProcessEnvironment(env);
+        const QString shot = m_dir.filePath(QStringLiteral("fresh.png"));
+        gui.start(QString::fromUtf8(IMUDESK_GUI_PATH),
+                  {QStringLiteral("--demo"), QStringLiteral("--screenshot"), shot, QStringLiteral("--after"),
+                   QStringLiteral("1")});
+        QVERIFY(gui.waitForFinished(60000));
+        QCOMPARE(gui.exitCode(), 0);
+        const QImage image(shot);
+        const QSize screen = laptopScreen() ? kSmall : kLarge;
+        // Maximised: the whole screen but the platform's frame (the offscreen one's is 2 px).
+        QVERIFY2(image.width() >= screen.width() - 16 && image.height() >= screen.height() - 16,
+                 qPrintable(QStringLiteral("%1x%2 on %3x%4").arg(image.width()).arg(image.height()).arg(screen.width()).arg(
+                     screen.height())));
+        // A saved geometry is kept: the window restored from it is not maximised.
+        ui::WindowSettings saved;
+        {
+            MainWindow w;
+            w.resize(1000, 700);
+            saved = w.windowSettings();
+        }
+        MainWindow restored(saved);
+        restored.showAsSaved();
+        QVERIFY(QTest::qWaitForWindowExposed(&restored));
+        QVERIFY(!restored.isMaximized());
+        QCOMPARE(restored.width(), 1000); // its height: at least what its layout needs
+        MainWindow fresh;
+        fresh.showAsSaved();
+        QVERIFY(QTest::qWaitForWindowExposed(&fresh));
+        QVERIFY(fresh.isMaximized());
+    }
+
+    // The mounting picker (issue 53 point 17e): on this screen (1920x1080, or 1366x768 with
+    // IMUDESK_LAYOUT_LAPTOP), in English and Chinese, all 24 pictures in sight at once, each at
+    // least the size at which it reads, none cut by the dialog or its scroll area.
+    void mountingPicker_data()
+    {
+        QTest::addColumn<QString>("language");
+        QTest::newRow("en") << QStringLiteral("en");
+        QTest::newRow("zh_CN") << QStringLiteral("zh_CN");
+    }
+    void mountingPicker()
+    {
+        QFETCH(QString, language);
+        QString error;
+        QVERIFY2(m_language.setLanguage(language, QString::fromUtf8(IMUDESK_QM_DIR), &error), qPrintable(error));
+        ui::MountingPicker picker(205, false);
+        picker.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&picker));
+        QVERIFY(layoutSettled(picker));
+        const QRect avail = picker.screen()->availableGeometry();
+        QVERIFY2(avail.contains(picker.frameGeometry()) || avail.contains(picker.geometry()),
+                 qPrintable(QStringLiteral("%1x%2").arg(picker.width()).arg(picker.height())));
+        const QWidget *viewport = picker.tileArea()->viewport();
+        QStringList problems = cutOrOutside(picker);
+        for (int code : model::Mounting::validCodes()) {
+            const ui::MountingTile *tile = picker.tile(code);
+            QVERIFY(tile);
+            const QRect inView(tile->mapTo(viewport, QPoint(0, 0)), tile->size());
+            if (tile->width() < 120 || tile->height() < 110 || tile->width() < tile->readableSize().width()
+                || tile->height() < tile->readableSize().height())
+                problems << QStringLiteral("URFR %1: %2x%3 px").arg(code).arg(tile->width()).arg(tile->height());
+            if (!viewport->rect().contains(inView))
+                problems << QStringLiteral("URFR %1 cut by the scroll area").arg(code);
+        }
+        // IMUDESK_LAYOUT_SHOTS=DIR: the picker as a PNG there (scripts/screenshots.sh).
+        if (const QString shots = qEnvironmentVariable("IMUDESK_LAYOUT_SHOTS"); !shots.isEmpty())
+            picker.grab().save(QDir(shots).filePath(QStringLiteral("mounting-picker-%1x%2-%3.png")
+                                                        .arg(avail.width())
+                                                        .arg(avail.height())
+                                                        .arg(language)));
+        QVERIFY2(problems.isEmpty(), qPrintable(problems.join(QLatin1Char('\n'))));
     }
 
     void presetsAndPanelsOnDemand()

@@ -58,15 +58,14 @@ void BridgeController::syncDevices()
         present.insert(store.get());
         if (m_devices.count(store.get()))
             continue;
+        // Named by record::deviceName (its serial, else family and address): never by the tab's
+        // title, which names the port and differs per run.
         record::CaptureHeader header;
-        QString name = ws->title();
-        if (ws->identity()) {
+        if (ws->identity())
             header.setIdentity(*ws->identity());
-            if (!ws->identity()->serial.empty())
-                name = QString::fromStdString(ws->identity()->serial);
-        }
         header.set(record::CaptureHeader::kLinkKind, link.linkKind().toStdString());
-        m_bridge.addDevice(store, header, name);
+        link.describeLink(header);
+        m_bridge.addDevice(store, header);
         m_devices.emplace(store.get(), std::move(store));
     }
     for (auto it = m_devices.begin(); it != m_devices.end();) {

@@ -4,13 +4,19 @@
 #include "configuration/mounting_tile.h"
 #include "protocol/hipnuc/ascii_command.h"
 
+#include "common/work_place_size.h"
+
 #include <QComboBox>
 #include <QDialogButtonBox>
 #include <QFormLayout>
 #include <QGridLayout>
+#include <QGuiApplication>
 #include <QLabel>
+#include <QScreen>
 #include <QScrollArea>
 #include <QVBoxLayout>
+
+#include <algorithm>
 
 namespace imudesk::ui {
 
@@ -58,6 +64,11 @@ MountingPicker::MountingPicker(int currentCode, bool legacyMatrix, QWidget *pare
     m_error->setWordWrap(true);
     layout->addWidget(m_error);
 
+    // The 24 pictures in 6 columns of 4, or 8 of 3 on a screen too low for four rows (a
+    // 1366x768 laptop): each at least MountingTile::readableSize(), all in sight at once; the
+    // scroll area only for a screen smaller still.
+    const QScreen *screen = parent ? parent->screen() : QGuiApplication::primaryScreen();
+    const int columns = screen && screen->availableGeometry().height() < 900 ? 8 : 6;
     auto *grid = new QGridLayout;
     int i = 0;
     for (int code : model::Mounting::validCodes()) {
@@ -65,15 +76,16 @@ MountingPicker::MountingPicker(int currentCode, bool legacyMatrix, QWidget *pare
         t->setToolTip(MountingChoice::description(code));
         connect(t, &MountingTile::clicked, this, [this](int c) { setCode(c); });
         m_tiles[code] = t;
-        grid->addWidget(t, i / 6, i % 6);
+        grid->addWidget(t, i / columns, i % columns);
         ++i;
     }
     auto *tiles = new QWidget(this);
     tiles->setLayout(grid);
-    auto *scroll = new QScrollArea(this);
-    scroll->setWidget(tiles);
-    scroll->setWidgetResizable(true);
-    layout->addWidget(scroll, 1);
+    m_scroll = new QScrollArea(this);
+    m_scroll->setWidget(tiles);
+    m_scroll->setWidgetResizable(true);
+    m_scroll->setFrameShape(QFrame::NoFrame);
+    layout->addWidget(m_scroll, 1);
 
     m_description = new QLabel(this);
     m_command = new QLabel(this);
@@ -92,6 +104,14 @@ MountingPicker::MountingPicker(int currentCode, bool legacyMatrix, QWidget *pare
     connect(m_xBox, &QComboBox::currentIndexChanged, this, &MountingPicker::onDirectionsEdited);
     connect(m_yBox, &QComboBox::currentIndexChanged, this, &MountingPicker::onDirectionsEdited);
     refresh();
+    // Large enough for every picture at its preferred size (a scroll area asks for less), on
+    // the screen it opens on.
+    layout->activate();
+    const QSize pictures = tiles->sizeHint();
+    const QSize rest = layout->sizeHint() - m_scroll->sizeHint();
+    fitWorkPlace(this, QSize(std::max(layout->sizeHint().width(), pictures.width() + 2 * layout->contentsMargins().left()),
+                             rest.height() + pictures.height() + 4),
+                 parent);
 }
 
 bool MountingPicker::setCode(int code)

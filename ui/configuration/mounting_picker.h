@@ -11,6 +11,7 @@
 
 class QComboBox;
 class QLabel;
+class QScrollArea;
 
 namespace imudesk::ui {
 
@@ -31,6 +32,7 @@ public:
     QString errorText() const;
     MountingTile *tile(int code) const;
     QComboBox *codeBox() const { return m_codeBox; }
+    QScrollArea *tileArea() const { return m_scroll; }
 
 Q_SIGNALS:
     void codeChanged(int code);
@@ -50,6 +52,7 @@ private:
     QLabel *m_description = nullptr;
     QLabel *m_command = nullptr;
     QLabel *m_error = nullptr;
+    QScrollArea *m_scroll = nullptr;
 };
 
 } // namespace imudesk::ui

@@ -2,10 +2,12 @@
 
 #include "model/mounting.h"
 
+#include <QFontMetrics>
 #include <QMouseEvent>
 #include <QPainter>
 #include <QPainterPath>
 
+#include <algorithm>
 #include <array>
 
 namespace imudesk::ui {
@@ -38,6 +40,21 @@ MountingTile::MountingTile(int code, QWidget *parent) : QWidget(parent), m_code(
 {
     setCursor(Qt::PointingHandCursor);
     setToolTip(QString::number(code));
+    setSizePolicy(QSizePolicy::Preferred, QSizePolicy::Preferred);
+}
+
+QSize MountingTile::readableSize() const
+{
+    // The caption's width, and a picture whose axes are about 45 px long at a 13 px font.
+    const QFontMetrics fm = fontMetrics();
+    const int unit = std::max(10, fm.height());
+    return {std::max(fm.horizontalAdvance(QStringLiteral("URFR 000")) + 16, unit * 8),
+            unit * 13 / 2 + fm.height() + 4};
+}
+
+QSize MountingTile::sizeHint() const
+{
+    return readableSize() * 1.15;
 }
 
 void MountingTile::setChecked(bool checked)
@@ -62,8 +79,14 @@ void MountingTile::paintEvent(QPaintEvent *)
     p.setPen(QPen(m_checked ? palette().highlight().color() : palette().mid().color(), m_checked ? 2 : 1));
     p.drawRect(rect().adjusted(0, 0, -1, -1));
 
-    const double s = std::min(width(), height() - 16) / 4.2;
-    const QPointF o(width() * 0.42, (height() - 16) * 0.62);
+    // Every mounting's drawing spans x -1.54 .. 1.54 and (up) 1.5 .. (down) 1.0 units of the
+    // projection: scaled to the tile above its caption, room for an axis letter above an
+    // arrow's end (16 px) and beside it (9 px), so nothing is ever cut.
+    const int caption = fontMetrics().height() + 4;
+    const double above = 17, below = 4, side = 10;
+    const double area = height() - caption - above - below;
+    const double s = std::max(1.0, std::min((width() - 2 * side) / 3.08, area / 2.5));
+    const QPointF o(width() / 2.0, above + 1.5 * s + std::max(0.0, (area - 2.5 * s) / 2));
     // The body: a flat box 2 x 2.4 x 0.5, its front edge (forward) drawn thicker.
     const double bx = 1.0, by = 1.2, bz = 0.25;
     auto P = [&](double x, double y, double z) { return project(x, y, z, o, s); };
@@ -104,7 +127,7 @@ void MountingTile::paintEvent(QPaintEvent *)
         arrow(p, c, end, colours[j], QLatin1String(names[j]));
     }
     p.setPen(palette().text().color());
-    p.drawText(QRectF(0, height() - 17, width(), 16), Qt::AlignCenter,
+    p.drawText(QRectF(0, height() - caption, width(), caption - 1), Qt::AlignCenter,
                QStringLiteral("URFR %1").arg(QString::fromStdString(model::Mounting::codeText(m_code))));
 }
 

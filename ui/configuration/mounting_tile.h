@@ -2,7 +2,8 @@
 // A small 3D picture of one URFR mounting: a body (a box, its front marked) with the
 // module on it and the module's X (red), Y (green) and Z (blue) axes drawn where the code
 // puts them (body: X right, Y forward, Z up). Painted with QPainter in an oblique view;
-// clickable, with a checked state.
+// clickable, with a checked state. Never smaller than readableSize(); the picture is scaled to
+// the tile, the axes and their letters always inside it.
 #include <QWidget>
 
 namespace imudesk::ui {
@@ -14,7 +15,10 @@ public:
     int code() const { return m_code; }
     void setChecked(bool checked);
     bool isChecked() const { return m_checked; }
-    QSize sizeHint() const override { return {150, 132}; }
+    QSize sizeHint() const override;
+    QSize minimumSizeHint() const override { return readableSize(); }
+    // The smallest tile whose picture and caption ("URFR 205") read at this font.
+    QSize readableSize() const;
 
 Q_SIGNALS:
     void clicked(int code);

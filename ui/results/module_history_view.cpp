@@ -7,6 +7,7 @@
 #include <QEvent>
 #include <QHeaderView>
 #include <QLabel>
+#include <QPlainTextEdit>
 #include <QPushButton>
 #include <QSplitter>
 #include <QTreeWidget>
@@ -20,6 +21,7 @@ using results::Outcome;
 namespace {
 constexpr int kUuidRole = Qt::UserRole + 1;     // an attempt's module UUID (every item of it)
 constexpr int kLocationRole = Qt::UserRole + 2; // a file's path
+constexpr int kDetailsRole = Qt::UserRole + 3;  // a row's whole text, for the Details pane
 } // namespace
 
 ModuleHistoryView::ModuleHistoryView(QWidget *parent) : QWidget(parent)
@@ -63,6 +65,22 @@ ModuleHistoryView::ModuleHistoryView(QWidget *parent) : QWidget(parent)
     connect(m_files, &QTreeWidget::currentItemChanged, this,
             [this](QTreeWidgetItem *current) { m_open->setEnabled(current != nullptr); });
 
+    // The current row's whole text: wrapped, selectable, never cut (issue 53 point 17f).
+    m_detailsTitle = new QLabel(this);
+    m_details = new QPlainTextEdit(this);
+    m_details->setObjectName(QStringLiteral("historyDetails"));
+    m_details->setReadOnly(true);
+    m_details->setLineWrapMode(QPlainTextEdit::WidgetWidth);
+    m_details->setWordWrapMode(QTextOption::WrapAtWordBoundaryOrAnywhere);
+    m_details->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    m_detailsTitle->setBuddy(m_details);
+    connect(m_tree, &QTreeWidget::currentItemChanged, this, [this](QTreeWidgetItem *current) { showDetails(current); });
+    auto *detailsPanel = new QWidget(this);
+    auto *detailsLayout = new QVBoxLayout(detailsPanel);
+    detailsLayout->setContentsMargins(0, 0, 0, 0);
+    detailsLayout->addWidget(m_detailsTitle);
+    detailsLayout->addWidget(m_details, 1);
+
     auto *filesPanel = new QWidget(this);
     auto *filesLayout = new QVBoxLayout(filesPanel);
     filesLayout->setContentsMargins(0, 0, 0, 0);
@@ -76,8 +94,15 @@ ModuleHistoryView::ModuleHistoryView(QWidget *parent) : QWidget(parent)
     m_split = new QSplitter(Qt::Horizontal, this);
     m_split->setObjectName(QStringLiteral("historySplitter"));
     m_split->setChildrenCollapsible(false);
+    m_side = new QSplitter(Qt::Vertical, this);
+    m_side->setObjectName(QStringLiteral("historySideSplitter"));
+    m_side->setChildrenCollapsible(false);
+    m_side->addWidget(detailsPanel);
+    m_side->addWidget(filesPanel);
+    m_side->setStretchFactor(0, 1);
+    m_side->setStretchFactor(1, 1);
     m_split->addWidget(m_tree);
-    m_split->addWidget(filesPanel);
+    m_split->addWidget(m_side);
     m_split->setStretchFactor(0, 2);
     m_split->setStretchFactor(1, 1);
 
@@ -103,6 +128,8 @@ void ModuleHistoryView::retranslateUi()
                                                   "is marked marginal"));
     m_files->setHeaderLabels({tr("Attempt"), tr("Kind"), tr("File")});
     m_filesTitle->setText(tr("Files:"));
+    m_detailsTitle->setText(tr("Details:"));
+    m_details->setPlaceholderText(tr("Select an attempt, a step or a measurement to read all of it here."));
     m_open->setText(tr("Open"));
     m_open->setToolTip(tr("Open the chosen file (the PDF report, the evidence recording) in the desktop's "
                           "application for it"));
@@ -163,11 +190,13 @@ void ModuleHistoryView::fillTree(const QString &selectedUuid)
         attempt->setFont(NameColumn, bold);
         attempt->setFont(OutcomeColumn, bold);
         setOutcome(attempt, m.outcome, m.marginal);
-        attempt->setToolTip(NameColumn, ResultsFormat::toolTip(
-                                      tr("Plan: %1\nStation: %2 · slot %3 · operator %4\nProduct: %5 · firmware %6\n"
-                                         "Finished: %7\nRecord: %8")
-                                          .arg(m.run.planName, m.run.stationId, m.slot, m.run.operatorName, m.product,
-                                               ModuleTableModel::firmwareText(m), ResultsFormat::time(m.finished), m.uuid)));
+        const QString about = tr("Plan: %1\nStation: %2 · slot %3 · operator %4\nProduct: %5 · firmware %6\n"
+                                 "Finished: %7\nRecord: %8")
+                                  .arg(m.run.planName, m.run.stationId, m.slot, m.run.operatorName, m.product,
+                                       ModuleTableModel::firmwareText(m), ResultsFormat::time(m.finished), m.uuid);
+        attempt->setToolTip(NameColumn, ResultsFormat::toolTip(about));
+        attempt->setData(0, kDetailsRole, attempt->text(NameColumn) + QStringLiteral(" · ")
+                                              + attempt->text(OutcomeColumn) + QLatin1Char('\n') + about);
         if (m.uuid == selectedUuid)
             current = attempt;
         for (const results::StepRecord &s : m.steps) {
@@ -183,6 +212,8 @@ void ModuleHistoryView::fillTree(const QString &selectedUuid)
                 step->setText(ValueColumn, ResultsFormat::shortText(s.detail));
                 step->setToolTip(ValueColumn, ResultsFormat::toolTip(s.detail));
             }
+            step->setData(0, kDetailsRole, s.name + QStringLiteral(" · ") + step->text(OutcomeColumn)
+                                               + (s.detail.isEmpty() ? QString() : QLatin1Char('\n') + s.detail));
             for (const results::MeasurementRecord &v : m.measurements) {
                 if (v.step != s.index)
                     continue;
@@ -200,6 +231,13 @@ void ModuleHistoryView::fillTree(const QString &selectedUuid)
                 item->setText(MarginalColumn, ResultsFormat::range(v.marginalLow, v.marginalHigh));
                 if (!info)
                     setOutcome(item, v.outcome, v.marginal);
+                QString text = tr("%1 = %2 %3").arg(v.name, item->text(ValueColumn), v.unit).trimmed();
+                text += QLatin1Char('\n') + tr("Limits: %1").arg(item->text(LimitsColumn));
+                if (!item->text(MarginalColumn).isEmpty())
+                    text += QLatin1Char('\n') + tr("Marginal band: %1").arg(item->text(MarginalColumn));
+                if (!info)
+                    text += QLatin1Char('\n') + item->text(OutcomeColumn);
+                item->setData(0, kDetailsRole, text);
             }
         }
         attempt->setExpanded(true);
@@ -212,6 +250,11 @@ void ModuleHistoryView::fillTree(const QString &selectedUuid)
         m_tree->setCurrentItem(current);
         m_tree->scrollToItem(current, QAbstractItemView::PositionAtTop);
     }
+}
+
+void ModuleHistoryView::showDetails(const QTreeWidgetItem *item)
+{
+    m_details->setPlainText(item ? item->data(0, kDetailsRole).toString() : QString());
 }
 
 void ModuleHistoryView::fillFiles(const QString &selectedUuid)

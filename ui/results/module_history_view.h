@@ -3,7 +3,10 @@
 // oldest first, as a tree (attempt, its steps, each step's measurements with value, unit,
 // limits, marginal band and outcome), and the attempts' files (the PDF report, the evidence
 // recording) with their SHA-256; Open (or a double click) asks the window to open the file
-// chosen, the report of the selected attempt to begin with.
+// chosen, the report of the selected attempt to begin with. The tree's columns show a line of
+// each text; the Details pane beside it holds the current row's whole text, wrapped (a step's
+// detail, a measurement's value and limits, an attempt's plan and station), in a splitter that
+// gives it more room when dragged.
 #include "core/results/result_record.h"
 
 #include <QWidget>
@@ -12,6 +15,7 @@
 
 QT_BEGIN_NAMESPACE
 class QLabel;
+class QPlainTextEdit;
 class QPushButton;
 class QSplitter;
 class QTreeWidget;
@@ -39,6 +43,7 @@ public:
     QTreeWidget *tree() const { return m_tree; }
     QTreeWidget *files() const { return m_files; }
     QSplitter *splitter() const { return m_split; }
+    QPlainTextEdit *details() const { return m_details; }
     // What the Open button does: asks for the chosen file (openRequested); false without one.
     bool openSelected();
 
@@ -54,6 +59,7 @@ private:
     void fillTree(const QString &selectedUuid);
     void fillFiles(const QString &selectedUuid);
     static void setOutcome(QTreeWidgetItem *item, results::Outcome o, bool marginal);
+    void showDetails(const QTreeWidgetItem *item);
 
     QString m_serial;
     std::vector<results::ModuleRecord> m_attempts;
@@ -61,6 +67,9 @@ private:
     ElidedLabel *m_title = nullptr;
     QSplitter *m_split = nullptr;
     QTreeWidget *m_tree = nullptr;
+    QLabel *m_detailsTitle = nullptr;
+    QPlainTextEdit *m_details = nullptr;
+    QSplitter *m_side = nullptr;
     QLabel *m_filesTitle = nullptr;
     QTreeWidget *m_files = nullptr;
     QPushButton *m_open = nullptr;

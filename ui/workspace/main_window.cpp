@@ -227,8 +227,9 @@ PreferencesDialog *MainWindow::openPreferences()
 
 void MainWindow::restoreSettings(const WindowSettings &settings)
 {
-    if (settings.geometry.isEmpty() || !restoreGeometry(settings.geometry))
-        resize(1280, 860);
+    m_geometryRestored = !settings.geometry.isEmpty() && restoreGeometry(settings.geometry);
+    if (!m_geometryRestored)
+        resize(1280, 860); // the size it returns to from maximised (showAsSaved())
     fitToScreen();
     if (!settings.windowState.isEmpty())
         restoreState(settings.windowState, WindowSettings::kVersion);
@@ -266,6 +267,14 @@ bool MainWindow::fitToScreen()
     if (fitted.width() >= room.width() - 8 || fitted.height() >= room.height() - 8)
         setWindowState(windowState() | Qt::WindowMaximized);
     return changed;
+}
+
+void MainWindow::showAsSaved()
+{
+    if (m_geometryRestored)
+        show();
+    else
+        showMaximized();
 }
 
 void MainWindow::applyLayoutPreset(DeviceWorkspace::LayoutPreset preset)

@@ -111,6 +111,9 @@ public:
     // Fits the window onto the screen it opens on (a geometry saved on a larger screen);
     // true when it had to change something.
     bool fitToScreen();
+    // Shows the window as the settings left it; maximised on its screen when they hold no
+    // geometry (a first run, or settings reset), whatever the screen's size (issue 53 point 17d).
+    void showAsSaved();
 
     // Saves the window as a PNG; false with a reason when it cannot be written.
     bool saveScreenshot(const QString &path, QString *error = nullptr);
@@ -164,6 +167,7 @@ private:
     QTabWidget *m_tabs = nullptr;
     ConnectionBar *m_connectionBar = nullptr;
     QByteArray m_workspaceLayout; // applied to every new workspace
+    bool m_geometryRestored = false; // the settings' geometry was restored (showAsSaved())
     ComparisonChart *m_comparison = nullptr;
     QDockWidget *m_comparisonDock = nullptr;
     QTimer m_comparisonTimer; // the comparison's view clock, only while it is shown
