@@ -4,7 +4,7 @@
 <context>
     <name>CaptureExporter</name>
     <message numerus="yes">
-        <location filename="../core/record/capture_exporter.cpp" line="+567"/>
+        <location filename="../core/record/capture_exporter.cpp" line="+572"/>
         <source>%n damaged chunk(s) were skipped</source>
         <translation>
             <numerusform>%n damaged chunk was skipped</numerusform>
@@ -182,7 +182,7 @@
 <context>
     <name>imudesk::ui::RecordingControls</name>
     <message numerus="yes">
-        <location filename="../ui/recording/recording_controls.cpp" line="+218"/>
+        <location filename="../ui/recording/recording_controls.cpp" line="+256"/>
         <source>%n frame(s)</source>
         <translation>
             <numerusform>%n frame</numerusform>

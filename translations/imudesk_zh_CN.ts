@@ -1158,7 +1158,7 @@
         <translation>该记录含有 %1 种帧类型；厂商格式为每种各写一个文件：%2</translation>
     </message>
     <message>
-        <location line="+203"/>
+        <location line="+208"/>
         <source>No output file was given.</source>
         <translation>未指定输出文件。</translation>
     </message>
@@ -1631,7 +1631,7 @@
 <context>
     <name>HEC495</name>
     <message>
-        <location filename="../core/protocol/can/hec495_can.cpp" line="+257"/>
+        <location filename="../core/protocol/can/hec495_can.cpp" line="+259"/>
         <source>node ID = %1</source>
         <translation>节点 ID = %1</translation>
     </message>
@@ -1720,7 +1720,7 @@
 <context>
     <name>Hec495SerialUi</name>
     <message>
-        <location filename="../ui/families/hec495_serial_ui.cpp" line="+21"/>
+        <location filename="../ui/families/hec495_serial_ui.cpp" line="+22"/>
         <source>Simulated HEC495</source>
         <translation>模拟 HEC495</translation>
     </message>
@@ -6069,12 +6069,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>Y 轴倾角</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>Heading (NMEA)</source>
-        <translation>航向（NMEA）</translation>
-    </message>
-    <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Magnetic field X Y Z (relative)</source>
         <translation>磁场 X Y Z（相对值）</translation>
     </message>
@@ -6313,7 +6308,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>俯仰角，单位 °（设备约定的欧拉角，默认 ENU 312 顺序）。</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="-84"/>
+        <source>Heading</source>
+        <translation>航向</translation>
+    </message>
+    <message>
+        <location line="+86"/>
         <source>Yaw (heading) angle, in degrees (Euler angles in the device&apos;s convention, ENU 312 by default).</source>
         <translation>航向角，单位 °（设备约定的欧拉角，默认 ENU 312 顺序）。</translation>
     </message>
@@ -10642,7 +10642,7 @@ Link load = bytes per second × 10 bits / baud rate.</source>
 <context>
     <name>imudesk::ui::Hec495CalibrationWizard</name>
     <message>
-        <location filename="../ui/calibration/hec495_calibration_wizard.cpp" line="+37"/>
+        <location filename="../ui/calibration/hec495_calibration_wizard.cpp" line="+44"/>
         <source>Suits: the compass and its mount can be turned to the poses of the table. Good results; in a complex magnetic environment slightly less accurate than all-orientation. Limit: pitch must exceed 45 deg and roll 30 deg. The manual recommends trying this method first.</source>
         <translation>适用：罗盘及其安装结构能转到表中的各个姿态。效果良好；在复杂磁场环境中精度略低于全姿态校准。限制：俯仰角须超过 45 deg，横滚角须超过 30 deg。手册建议优先尝试此方法。</translation>
     </message>
@@ -10767,7 +10767,7 @@ Link load = bytes per second × 10 bits / baud rate.</source>
         <translation>方法：%1</translation>
     </message>
     <message>
-        <location line="+50"/>
+        <location line="+48"/>
         <source>Starting the calibration...</source>
         <translation>正在开始校准...</translation>
     </message>
@@ -13153,7 +13153,7 @@ Default: %2</source>
 <context>
     <name>imudesk::ui::RecordingControls</name>
     <message>
-        <location filename="../ui/recording/recording_controls.cpp" line="+18"/>
+        <location filename="../ui/recording/recording_controls.cpp" line="+19"/>
         <source>Record</source>
         <translation>记录</translation>
     </message>
@@ -13183,22 +13183,22 @@ Default: %2</source>
         <translation>文件：</translation>
     </message>
     <message>
-        <location line="+95"/>
+        <location line="+101"/>
         <source>Not recording: the device is not connected. Press Connect (Ctrl+K), then Record (Ctrl+R).</source>
         <translation>未在录制：设备未连接。请按“连接”(Ctrl+K)，再按“录制”(Ctrl+R)。</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+12"/>
         <source>The folder %1 does not exist. Choose another one.</source>
         <translation>文件夹 %1 不存在。请另选一个文件夹。</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+43"/>
         <source>Recording to %1</source>
         <translation>正在记录到 %1</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+24"/>
         <source>Saved %1</source>
         <translation>已保存 %1</translation>
     </message>

@@ -1158,7 +1158,7 @@
         <translation>該記錄含有 %1 種幀類型；廠商格式為每種各寫一個檔案：%2</translation>
     </message>
     <message>
-        <location line="+203"/>
+        <location line="+208"/>
         <source>No output file was given.</source>
         <translation>未指定輸出檔案。</translation>
     </message>
@@ -1631,7 +1631,7 @@
 <context>
     <name>HEC495</name>
     <message>
-        <location filename="../core/protocol/can/hec495_can.cpp" line="+257"/>
+        <location filename="../core/protocol/can/hec495_can.cpp" line="+259"/>
         <source>node ID = %1</source>
         <translation>節點 ID = %1</translation>
     </message>
@@ -1720,7 +1720,7 @@
 <context>
     <name>Hec495SerialUi</name>
     <message>
-        <location filename="../ui/families/hec495_serial_ui.cpp" line="+21"/>
+        <location filename="../ui/families/hec495_serial_ui.cpp" line="+22"/>
         <source>Simulated HEC495</source>
         <translation>模擬 HEC495</translation>
     </message>
@@ -6069,12 +6069,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>Y 軸傾角</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>Heading (NMEA)</source>
-        <translation>航向（NMEA）</translation>
-    </message>
-    <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Magnetic field X Y Z (relative)</source>
         <translation>磁場 X Y Z（相對值）</translation>
     </message>
@@ -6313,7 +6308,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>俯仰角，單位 °（裝置約定的歐拉角，預設 ENU 312 順序）。</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="-84"/>
+        <source>Heading</source>
+        <translation>航向</translation>
+    </message>
+    <message>
+        <location line="+86"/>
         <source>Yaw (heading) angle, in degrees (Euler angles in the device&apos;s convention, ENU 312 by default).</source>
         <translation>航向角，單位 °（裝置約定的歐拉角，預設 ENU 312 順序）。</translation>
     </message>
@@ -10642,7 +10642,7 @@ Link load = bytes per second × 10 bits / baud rate.</source>
 <context>
     <name>imudesk::ui::Hec495CalibrationWizard</name>
     <message>
-        <location filename="../ui/calibration/hec495_calibration_wizard.cpp" line="+37"/>
+        <location filename="../ui/calibration/hec495_calibration_wizard.cpp" line="+44"/>
         <source>Suits: the compass and its mount can be turned to the poses of the table. Good results; in a complex magnetic environment slightly less accurate than all-orientation. Limit: pitch must exceed 45 deg and roll 30 deg. The manual recommends trying this method first.</source>
         <translation>適用：羅盤及其安裝座可轉到表中的各個姿態。效果良好；在複雜磁場環境下精度略低於全姿態校準。限制：俯仰角需超過 45 deg，橫滾角需超過 30 deg。手冊建議優先嘗試此方法。</translation>
     </message>
@@ -10767,7 +10767,7 @@ Link load = bytes per second × 10 bits / baud rate.</source>
         <translation>方法：%1</translation>
     </message>
     <message>
-        <location line="+50"/>
+        <location line="+48"/>
         <source>Starting the calibration...</source>
         <translation>正在啟動校準...</translation>
     </message>
@@ -13153,7 +13153,7 @@ Default: %2</source>
 <context>
     <name>imudesk::ui::RecordingControls</name>
     <message>
-        <location filename="../ui/recording/recording_controls.cpp" line="+18"/>
+        <location filename="../ui/recording/recording_controls.cpp" line="+19"/>
         <source>Record</source>
         <translation>開始記錄</translation>
     </message>
@@ -13183,22 +13183,22 @@ Default: %2</source>
         <translation>檔案：</translation>
     </message>
     <message>
-        <location line="+95"/>
+        <location line="+101"/>
         <source>Not recording: the device is not connected. Press Connect (Ctrl+K), then Record (Ctrl+R).</source>
         <translation>未在錄製：裝置未連線。請按「連線」(Ctrl+K)，再按「錄製」(Ctrl+R)。</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+12"/>
         <source>The folder %1 does not exist. Choose another one.</source>
         <translation>資料夾 %1 不存在。請選擇其他資料夾。</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+43"/>
         <source>Recording to %1</source>
         <translation>正在記錄到 %1</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+24"/>
         <source>Saved %1</source>
         <translation>已儲存 %1</translation>
     </message>
