@@ -516,8 +516,7 @@ void MagCalibrationWizard::pageChanged(int id)
         m_figures->setText(liveFiguresText());
     }
     if (id == HeadingPage) {
-        m_haveYaw = false;
-        m_headingTurned = m_headingMaxJump = 0;
+        m_headingCheck.reset();
     }
     if (id == ResultPage) {
         // Samples came in after a refused fit: the result is the fit of all of them.
@@ -575,19 +574,8 @@ void MagCalibrationWizard::refresh()
                 m_sphere->addSample(m);
             }
         }
-        if (page == HeadingPage && (s.fields & model::FieldEuler)) {
-            if (m_haveYaw) {
-                double d = s.yaw - m_lastYaw;
-                while (d > 180)
-                    d -= 360;
-                while (d < -180)
-                    d += 360;
-                m_headingTurned += std::abs(d);
-                m_headingMaxJump = std::max(m_headingMaxJump, std::abs(d));
-            }
-            m_lastYaw = s.yaw;
-            m_haveYaw = true;
-        }
+        if (page == HeadingPage && (s.fields & model::FieldEuler))
+            m_headingCheck.add(s.yaw);
     }
     if (page == EnvironmentPage)
         showEnvironment();
@@ -595,17 +583,17 @@ void MagCalibrationWizard::refresh()
         m_figures->setText(liveFiguresText());
     if (page == HeadingPage)
         m_headingStatus->setText(tr("Turned %1 deg, largest step %2 deg: %3")
-                                     .arg(m_headingTurned, 0, 'f', 0)
-                                     .arg(m_headingMaxJump, 0, 'f', 1)
+                                     .arg(m_headingCheck.turnedDeg(), 0, 'f', 0)
+                                     .arg(m_headingCheck.maxJumpDeg(), 0, 'f', 1)
                                      .arg(headingCheckPassed() ? tr("the heading follows the turn smoothly.")
-                                          : m_headingMaxJump > kMaxHeadingJumpDeg
+                                          : m_headingCheck.verdict() == calib::HeadingTurnCheck::Verdict::Jumped
                                           ? tr("the heading jumps: calibrate again (chapter 9.31).")
                                           : tr("keep turning.")));
 }
 
 bool MagCalibrationWizard::headingCheckPassed() const
 {
-    return m_headingTurned >= 360.0 && m_headingMaxJump <= kMaxHeadingJumpDeg;
+    return m_headingCheck.passed();
 }
 
 void MagCalibrationWizard::runFit()

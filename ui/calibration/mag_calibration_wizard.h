@@ -30,6 +30,7 @@
 // SphereCoverage) and runs are stored by calib::CalibrationHistory. The wizards take the
 // device's DeviceSession or Hec495Session and read its SampleStore on a clock; the history
 // dialog lists runs through models::CalibrationHistoryModel in a QTableView.
+#include "calib/heading_turn_check.h"
 #include "calib/mag_cal_result.h"
 #include "calib/mag_cal_session.h"
 #include "calib/mag_environment_judge.h"
@@ -62,7 +63,7 @@ class MagCalibrationWizard : public QWizard {
 public:
     enum PageId { IntroPage, ModePage, EnvironmentPage, RotationPage, ResultPage, HeadingPage };
     static constexpr size_t kMaxSamples = 20000;
-    static constexpr double kMaxHeadingJumpDeg = 10.0;
+    static constexpr double kMaxHeadingJumpDeg = calib::HeadingTurnCheck::kMaxJumpDeg;
     static constexpr int kLiveReplicates = 12; // resampled fits behind the live verdict (final fit: more)
     static constexpr int kRebootSettleMs = 2500; // after REBOOT, before reading the mode back
 
@@ -100,8 +101,8 @@ public:
     // The device's run for the saved result ("device_calibration"); empty when not started.
     QJsonObject deviceResultJson() const;
     // Heading check: degrees turned so far, the largest jump between samples, passed.
-    double headingTurnedDeg() const { return m_headingTurned; }
-    double headingMaxJumpDeg() const { return m_headingMaxJump; }
+    double headingTurnedDeg() const { return m_headingCheck.turnedDeg(); }
+    double headingMaxJumpDeg() const { return m_headingCheck.maxJumpDeg(); }
     bool headingCheckPassed() const;
     // Where finished runs are kept: set its root and the device's identity before the run.
     CalibrationRunSaver &runSaver() { return m_saver; }
@@ -167,10 +168,7 @@ private:
     QTimer m_fitClock;
     double m_minField = 0, m_maxField = 0;
     QLabel *m_headingStatus = nullptr;
-    double m_lastYaw = 0;
-    bool m_haveYaw = false;
-    double m_headingTurned = 0;
-    double m_headingMaxJump = 0;
+    calib::HeadingTurnCheck m_headingCheck; // the heading page's turn (core: the CLI runs the same)
 };
 
 } // namespace imudesk::ui
