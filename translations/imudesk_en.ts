@@ -122,7 +122,7 @@
 <context>
     <name>imudesk::ui::MagCalibrationWizard</name>
     <message numerus="yes">
-        <location filename="../ui/calibration/mag_calibration_wizard.cpp" line="+676"/>
+        <location filename="../ui/calibration/mag_calibration_wizard.cpp" line="+664"/>
         <source>The device now corrects its own output, so ImuDesk&apos;s fit keeps the %n raw sample(s) collected before.</source>
         <translation>
             <numerusform>The device now corrects its own output, so ImuDesk&apos;s fit keeps the %n raw sample collected before.</numerusform>
