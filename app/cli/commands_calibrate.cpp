@@ -1,6 +1,8 @@
 // imudesk-cli calibrate PORT ACTION: the device-side calibrations of the GUI's wizards, driven
 // by the same core procedures, for scripts on a bench.
-//   mag            CONFIG MCAL START, STAT/PROGRESS polled (calib::MagCalSession)
+//   mag            CONFIG MCAL START, STAT/PROGRESS polled (calib::MagCalSession), then the
+//                  wizard's heading check (calib::HeadingCheck) unless --no-heading-check
+//   heading-check  the heading check alone: one level turn, the heading followed
 //   gyro-scale     CONFIG USRCAL START <ANGLE>, the turn followed on the samples
 //                  (calib::GyroScaleRun), CONFIG USRCAL STOP once the module stopped
 //                  (calib::GyroCalSession); the device's OK/ERR is the verdict
@@ -11,6 +13,7 @@
 // when the calibration passed.
 #include "calib/gyro_cal_session.h"
 #include "calib/gyro_scale_run.h"
+#include "calib/heading_check.h"
 #include "calib/mag_cal_session.h"
 #include "cli_context.h"
 #include "device/hec495_session.h"
@@ -28,8 +31,12 @@ namespace imudesk::cli {
 namespace {
 
 const QString kUsage = QStringLiteral(
-    "imudesk-cli calibrate PORT mag|gyro-scale|level|heading-reset|hec495-clear [--baud B] [--json]\n"
-    "  mag [--timeout S]                turn the module through every direction until the device reports success\n"
+    "imudesk-cli calibrate PORT mag|heading-check|gyro-scale|level|heading-reset|hec495-clear [--baud B] [--json]\n"
+    "  mag [--timeout S] [--heading-timeout S] [--no-heading-check]\n"
+    "                                   turn the module through every direction until the device reports success,\n"
+    "                                   then turn it level one full turn: the heading must follow without a jump\n"
+    "                                   above 10 deg (the wizard's heading check)\n"
+    "  heading-check [--heading-timeout S]  the heading check alone\n"
     "  gyro-scale [--angle DEG] [--timeout S]  turn the module DEG (720..1800) about its Z axis at 20..100 deg/s,\n"
     "                                   then hold it still\n"
     "  level | heading-reset            keep the module still (level: within 5 deg of level or upside down)\n"
@@ -185,6 +192,75 @@ Outcome magnetometer(device::DeviceSession &s, const model::DeviceIdentity &id, 
     return o;
 }
 
+// The wizard's heading check (calib::HeadingCheck): one level turn of 360 deg in a steady field,
+// the heading followed; it fails on a jump above 10 deg while level, and otherwise says what to
+// do (keep the module level, the field is disturbed, keep turning).
+Outcome headingCheck(device::DeviceSession &s, int timeoutS)
+{
+    Outcome o;
+    calib::HeadingCheck check;
+    progress(QStringLiteral("heading: turn the module level one full turn (360 deg), slowly"));
+    uint64_t seq = s.store().totalAppended();
+    int reported = 0;
+    bool any = false;
+    const auto done = [&] {
+        const auto st = check.status();
+        return st == calib::HeadingCheck::Status::Passed || st == calib::HeadingCheck::Status::Jumps;
+    };
+    waitFor([&] {
+        for (const model::Sample &x : s.store().since(seq, SIZE_MAX, &seq)) {
+            any = any || (x.fields & model::FieldEuler);
+            check.add(x);
+        }
+        if (int(check.levelTurnDeg() / 90) > reported) {
+            reported = int(check.levelTurnDeg() / 90);
+            progress(QStringLiteral("heading: turned %1 deg level, largest step %2 deg")
+                         .arg(check.levelTurnDeg(), 0, 'f', 0)
+                         .arg(check.largestJudgedStepDeg(), 0, 'f', 1));
+        }
+        return done();
+    }, timeoutS * 1000);
+    o.passed = check.passed();
+    switch (check.status()) {
+    case calib::HeadingCheck::Status::Passed:
+        o.message = QStringLiteral("the heading followed the turn smoothly (largest step %1 deg)")
+                        .arg(check.largestJudgedStepDeg(), 0, 'f', 1);
+        break;
+    case calib::HeadingCheck::Status::Jumps:
+        o.message = QStringLiteral("the heading jumped %1 deg (more than %2) while the module was level: calibrate "
+                                   "again (chapter 9.31)")
+                        .arg(check.largestJudgedStepDeg(), 0, 'f', 1)
+                        .arg(calib::HeadingCheck::kMaxJumpDeg, 0, 'f', 0);
+        break;
+    default:
+        o.message = interrupted() ? QStringLiteral("interrupted")
+                    : !any ? QStringLiteral("no heading arrived in %1 s: the module's output has no Euler angles").arg(timeoutS)
+                           : QStringLiteral("cannot judge after %1 s: %2").arg(timeoutS).arg(check.advice());
+        break;
+    }
+    o.details[QStringLiteral("heading_turned_deg")] = std::round(check.levelTurnDeg() * 10) / 10;
+    o.details[QStringLiteral("heading_max_step_deg")] = std::round(check.largestJudgedStepDeg() * 100) / 100;
+    o.details[QStringLiteral("heading_check")] = o.passed ? QStringLiteral("pass") : QStringLiteral("fail");
+    return o;
+}
+
+// MCAL, then (when it passed, and unless skipped) the heading check: both must pass.
+Outcome magnetometerChecked(device::DeviceSession &s, const model::DeviceIdentity &id, int timeoutS, bool heading,
+                            int headingTimeoutS)
+{
+    Outcome o = magnetometer(s, id, timeoutS);
+    if (!heading || !o.passed || interrupted()) {
+        o.details[QStringLiteral("heading_check")] = heading ? QStringLiteral("not run") : QStringLiteral("skipped");
+        return o;
+    }
+    const Outcome h = headingCheck(s, headingTimeoutS);
+    for (auto it = h.details.begin(); it != h.details.end(); ++it)
+        o.details[it.key()] = it.value();
+    o.passed = h.passed;
+    o.message = QStringLiteral("%1; heading check: %2").arg(o.message, h.message);
+    return o;
+}
+
 Outcome gyroScale(device::DeviceSession &s, int angle, int timeoutS)
 {
     Outcome o;
@@ -291,19 +367,25 @@ int cmdCalibrate(const QStringList &args)
     p.addOption(QCommandLineOption(QStringLiteral("timeout"),
                                    QStringLiteral("mag, gyro-scale: seconds to wait (default 180 and 120)."),
                                    QStringLiteral("S")));
+    p.addOption(QCommandLineOption(QStringLiteral("heading-timeout"),
+                                   QStringLiteral("mag, heading-check: seconds for the level turn (default 60)."),
+                                   QStringLiteral("S"), QStringLiteral("60")));
+    p.addOption(QCommandLineOption(QStringLiteral("no-heading-check"), QStringLiteral("mag: skip the heading check.")));
     p.addOption(QCommandLineOption(QStringLiteral("angle"), QStringLiteral("gyro-scale: the turn, 720..1800 deg (default 720)."),
                                    QStringLiteral("DEG"), QStringLiteral("720")));
     p.addOption(QCommandLineOption(QStringLiteral("address"), QStringLiteral("hec495-clear: the module address (default 0)."),
                                    QStringLiteral("N"), QStringLiteral("0")));
     p.addPositionalArgument(QStringLiteral("PORT"), QStringLiteral("Serial port"));
-    p.addPositionalArgument(QStringLiteral("ACTION"), QStringLiteral("mag, gyro-scale, level, heading-reset or hec495-clear"));
+    p.addPositionalArgument(QStringLiteral("ACTION"),
+                            QStringLiteral("mag, heading-check, gyro-scale, level, heading-reset or hec495-clear"));
     if (!parseArgs(p, args, kUsage))
         return ExitUsage;
     const QStringList pos = p.positionalArguments();
     if (pos.size() != 2)
         return fail(QStringLiteral("calibrate needs PORT and ACTION (usage: %1)").arg(kUsage), ExitUsage);
     const QString port = pos.at(0), action = pos.at(1);
-    static const QStringList kActions = {QStringLiteral("mag"), QStringLiteral("gyro-scale"), QStringLiteral("level"),
+    static const QStringList kActions = {QStringLiteral("mag"), QStringLiteral("heading-check"), QStringLiteral("gyro-scale"),
+                                         QStringLiteral("level"),
                                          QStringLiteral("heading-reset"), QStringLiteral("hec495-clear")};
     if (!kActions.contains(action))
         return fail(QStringLiteral("unknown calibration '%1' (usage: %2)").arg(action, kUsage), ExitUsage);
@@ -323,6 +405,9 @@ int cmdCalibrate(const QStringList &args)
         if (!ok || timeoutS <= 0 || timeoutS > 3600)
             return fail(QStringLiteral("--timeout needs 1 to 3600 s"), ExitUsage);
     }
+    const int headingTimeoutS = p.value(QStringLiteral("heading-timeout")).toInt(&ok);
+    if (!ok || headingTimeoutS <= 0 || headingTimeoutS > 3600)
+        return fail(QStringLiteral("--heading-timeout needs 1 to 3600 s"), ExitUsage);
     const bool json = p.isSet(QStringLiteral("json"));
     if (action == QLatin1String("hec495-clear")) {
         const int address = p.value(QStringLiteral("address")).toInt(&ok, 0);
@@ -337,7 +422,12 @@ int cmdCalibrate(const QStringList &args)
     if (!connectSession(session, port, baud, &identity, nullptr, &error))
         return fail(error, interrupted() ? ExitInterrupted : ExitFailure);
     if (action == QLatin1String("mag"))
-        return finish(action, magnetometer(session, identity, timeoutS), json);
+        return finish(action,
+                      magnetometerChecked(session, identity, timeoutS, !p.isSet(QStringLiteral("no-heading-check")),
+                                          headingTimeoutS),
+                      json);
+    if (action == QLatin1String("heading-check"))
+        return finish(action, headingCheck(session, headingTimeoutS), json);
     if (action == QLatin1String("gyro-scale"))
         return finish(action, gyroScale(session, angle, timeoutS), json);
     return finish(action, attitudeReset(session, action == QLatin1String("level") ? 3 : 1), json);

@@ -31,16 +31,18 @@ const char *kUsage = "imudesk-cli can [--plugin P] [--interface I] [--bitrate B]
                      "  list                                 plugins and their interfaces\n"
                      "  scan [--duration S] [--active]       nodes heard (and, with --active, an SDO scan of 1..127)\n"
                      "  read [--duration S]                  decoded samples\n"
-                     "  reg read ADDR | reg write ADDR VALUE J1939 configuration register\n"
+                     "  reg read ADDR | reg write ADDR VALUE J1939 configuration register (--node 255: every node answers)\n"
                      "  sdo read INDEX SUB | sdo write INDEX SUB VALUE [--size 1..4]\n"
                      "  sync [PGN] [--count N] [--interval MS]  CANopen SYNC frames, or a J1939 one-shot PGN trigger\n"
+                     "                                       (each confirmed by that PGN arriving; exit 1 when one is not)\n"
                      "  get NAME                             a setting as the module holds it (config lists the names)\n"
                      "  set NAME VALUE                       write a setting and read it back (bit rates in bit/s, e.g. 250000 or 250k)\n"
                      "  config                               every setting: name, value on the module, unit, range, note\n"
                      "  output on|off [--all]                the node's output (--all: NMT to every node)\n"
                      "  action save|reset|factory|heading-reset|zero|auto-level|clear-zero\n"
                      "                                       J1939 0x00 / 0xA5, CANopen 0x2000 / 0x20A5\n"
-                     "  --extended                           HEC495: the extended-frame variant (0x18FA....)";
+                     "  --extended                           HEC495: the extended-frame variant (0x18FA....)\n"
+                     "  --source-address SA                  J1939: the host's source address (default 0x55, 0..253)";
 
 // Qt's CAN plugins log their connection chatter at info level; the CLI's stderr is for errors.
 void quietCanLogging()
@@ -136,6 +138,27 @@ int runRequest(CanSession &s, quint64 id, bool json, const QString &label)
                     interrupted() ? ExitInterrupted : ExitFailure);
     if (!result->ok)
         return fail(result->message);
+    if (!result->answers.isEmpty()) {
+        // A J1939 request to every node (255): one line per node that answered.
+        int refused = 0;
+        for (const device::CanNodeAnswer &a : result->answers) {
+            refused += a.ok ? 0 : 1;
+            if (json)
+                out(QStringLiteral("{\"request\":%1,\"node\":%2,\"ok\":%3,\"value\":%4,\"status\":%5}")
+                        .arg(jsonString(label))
+                        .arg(a.node)
+                        .arg(a.ok ? QStringLiteral("true") : QStringLiteral("false"))
+                        .arg(a.value)
+                        .arg(a.status));
+            else if (a.ok)
+                out(QStringLiteral("%1 node %2: %3 (0x%4)").arg(label).arg(a.node).arg(a.value).arg(a.value, 0, 16));
+            else
+                out(QStringLiteral("%1 node %2: refused (status %3)").arg(label).arg(a.node).arg(a.status));
+        }
+        if (refused > 0)
+            return fail(QStringLiteral("%1: %2 of %3 nodes refused").arg(label).arg(refused).arg(result->answers.size()));
+        return ExitOk;
+    }
     if (json)
         out(QStringLiteral("{\"request\":%1,\"ok\":true,\"value\":%2}").arg(jsonString(label)).arg(result->value));
     else
@@ -151,13 +174,21 @@ QStringList settingNames(const std::vector<settings::CanSetting> &all)
     return names;
 }
 
+// A setting's value as read: a value of several registers from all of them.
+QString shownValue(const settings::CanSetting &s, const device::CanRequestResult &read)
+{
+    if (s.words > 1)
+        return s.showWords(std::vector<uint32_t>(read.values.begin(), read.values.end()));
+    return s.show(read.value);
+}
+
 QString settingJson(const settings::CanSetting &s, const device::CanRequestResult *read)
 {
     QString o = QStringLiteral("{\"name\":%1,\"label\":%2,\"unit\":%3,\"range\":%4,\"writable\":%5")
                     .arg(jsonString(s.name), jsonString(s.label), jsonString(s.unit), jsonString(s.range()),
                          s.writable ? QStringLiteral("true") : QStringLiteral("false"));
     if (read && read->ok)
-        o += QStringLiteral(",\"value\":%1,\"raw\":%2").arg(jsonString(s.show(read->value))).arg(read->value);
+        o += QStringLiteral(",\"value\":%1,\"raw\":%2").arg(jsonString(shownValue(s, *read))).arg(read->value);
     else
         o += QStringLiteral(",\"value\":null,\"why\":%1").arg(jsonString(read ? read->message : s.note));
     if (!s.note.isEmpty())
@@ -189,7 +220,7 @@ int typedSetting(CanSession &session, const QString &sub, const QStringList &pos
                 continue;
             }
             const QString value = !s.readable ? QStringLiteral("(not readable)")
-                                  : r->ok     ? s.show(r->value) + (s.unit.isEmpty() ? QString() : QLatin1Char(' ') + s.unit)
+                                  : r->ok     ? shownValue(s, *r) + (s.unit.isEmpty() ? QString() : QLatin1Char(' ') + s.unit)
                                               : QStringLiteral("(no answer: %1)").arg(r->message);
             out(QStringLiteral("%1\t%2\t[%3]%4").arg(s.name, value, s.range(),
                                                      s.note.isEmpty() ? QString() : QStringLiteral("\t%1").arg(s.note)));
@@ -220,7 +251,7 @@ int typedSetting(CanSession &session, const QString &sub, const QStringList &pos
         }
         if (!r.ok)
             return fail(r.message);
-        out(QStringLiteral("%1: %2%3").arg(s->name, s->show(r.value), s->unit.isEmpty() ? QString() : QLatin1Char(' ') + s->unit));
+        out(QStringLiteral("%1: %2%3").arg(s->name, shownValue(*s, r), s->unit.isEmpty() ? QString() : QLatin1Char(' ') + s->unit));
         return ExitOk;
     }
     if (pos.size() != 3)
@@ -289,8 +320,12 @@ int cmdCan(const QStringList &args)
                                    QStringLiteral("B")));
     p.addOption(QCommandLineOption(QStringLiteral("protocol"), QStringLiteral("auto (default), j1939, canopen or hec495."),
                                    QStringLiteral("PROTO"), QStringLiteral("auto")));
-    p.addOption(QCommandLineOption(QStringLiteral("node"), QStringLiteral("Node ID / J1939 address (default: first heard)."),
+    p.addOption(QCommandLineOption(QStringLiteral("node"),
+                                   QStringLiteral("Node ID / J1939 address (default: first heard; J1939 reg: 255 = every node)."),
                                    QStringLiteral("N")));
+    p.addOption(QCommandLineOption(QStringLiteral("source-address"),
+                                   QStringLiteral("J1939: the host's source address in requests (default 0x55, 0..253)."),
+                                   QStringLiteral("SA")));
     p.addOption(QCommandLineOption(QStringLiteral("duration"), QStringLiteral("Seconds (scan: 2, read: until Ctrl+C)."),
                                    QStringLiteral("S")));
     p.addOption(QCommandLineOption(QStringLiteral("active"), QStringLiteral("scan: also read 0x1000 from nodes 1..127 (SDO).")));
@@ -355,9 +390,19 @@ int cmdCan(const QStringList &args)
         o.dataBitrate = 4000000; // v1.7.1 7.19.30: "usually 4 Mbps"
     }
     if (p.isSet(QStringLiteral("node"))) {
-        if (!parseNumber(p.value(QStringLiteral("node")), &n) || n > 253)
-            return fail(QStringLiteral("--node needs 0..253"), ExitUsage);
+        const bool broadcastOk = sub == QLatin1String("reg") && o.protocol != CanProtocol::CanOpen && o.protocol != CanProtocol::Hec495;
+        if (!parseNumber(p.value(QStringLiteral("node")), &n) || (n > 253 && !(n == protocol::can::j1939::kBroadcast && broadcastOk)))
+            return fail(QStringLiteral("--node needs 0..253 (255, every node, for J1939 reg read/write)"), ExitUsage);
         o.node = int(n);
+    }
+    if (p.isSet(QStringLiteral("source-address"))) {
+        if (o.protocol != CanProtocol::J1939 && !(sub == QLatin1String("reg") && o.protocol == CanProtocol::Auto))
+            return fail(QStringLiteral("--source-address is J1939's: give --protocol j1939 too"), ExitUsage);
+        if (!parseNumber(p.value(QStringLiteral("source-address")), &n) || n > 253)
+            return fail(QStringLiteral("--source-address needs 0..253 (254 is J1939's null address, 255 every node)"), ExitUsage);
+        if (o.node >= 0 && int(n) == o.node)
+            return fail(QStringLiteral("--source-address must differ from the module's address %1").arg(o.node), ExitUsage);
+        o.hostAddress = uint8_t(n);
     }
     double duration = -1;
     if (p.isSet(QStringLiteral("duration"))) {
@@ -477,25 +522,50 @@ int cmdCan(const QStringList &args)
         const bool trigger = o.protocol == CanProtocol::J1939;
         if (trigger && (pos.size() != 2 || !parseNumber(pos[1], &pgn) || !protocol::can::j1939::isDataPgn(pgn)))
             return fail(QStringLiteral("J1939 sync needs a data PGN, e.g. can --protocol j1939 sync 0xFF34"), ExitUsage);
-        uint32_t sent = 0;
+        uint32_t sent = 0, confirmed = 0;
         uint64_t received = 0;
+        QString unconfirmed; // the first trigger the module did not answer, and why
         QObject::connect(&session, &CanSession::framesSeen, &session, [&](const device::CanFrameEvents &ev) {
             for (const auto &e : ev)
                 received += e.transmitted ? 0 : 1;
         });
         for (; sent < count && !interrupted(); ++sent) {
-            if (trigger)
-                session.trigger(pgn);
-            else
+            if (trigger) {
+                // Confirmed as the session and the CAN panel confirm it: the requested PGN
+                // arriving from the module (v1.7.1 7.23: the request itself has no reply).
+                const device::CanRequestResult r = waitResult(session, session.trigger(pgn)).value_or(noResult());
+                if (r.ok)
+                    ++confirmed;
+                else if (unconfirmed.isEmpty())
+                    unconfirmed = r.message;
+            } else {
                 session.sendSync();
+            }
             waitFor([] { return false; }, int(interval));
         }
         waitFor([] { return false; }, 100);
-        if (json)
+        if (json && trigger)
+            out(QStringLiteral("{\"sent\":%1,\"confirmed\":%2,\"frames_received\":%3}").arg(sent).arg(confirmed).arg(received));
+        else if (json)
             out(QStringLiteral("{\"sent\":%1,\"frames_received\":%2}").arg(sent).arg(received));
+        else if (trigger)
+            out(QStringLiteral("triggers sent: %1, confirmed by PGN %2: %3, frames received meanwhile: %4")
+                    .arg(sent)
+                    .arg(QString::number(pgn, 16).toUpper())
+                    .arg(confirmed)
+                    .arg(received));
         else
-            out(QStringLiteral("%1 sent: %2, frames received meanwhile: %3").arg(trigger ? QStringLiteral("triggers") : QStringLiteral("SYNC")).arg(sent).arg(received));
-        return interrupted() ? ExitInterrupted : ExitOk;
+            out(QStringLiteral("SYNC sent: %1, frames received meanwhile: %2").arg(sent).arg(received));
+        if (interrupted())
+            return ExitInterrupted;
+        if (trigger && confirmed < sent)
+            return fail(QStringLiteral("%1 of %2 triggers of PGN %3 were not answered by node %4: %5")
+                            .arg(sent - confirmed)
+                            .arg(sent)
+                            .arg(QString::number(pgn, 16).toUpper())
+                            .arg(session.targetNode())
+                            .arg(unconfirmed));
+        return ExitOk;
     }
     if (typed)
         return typedSetting(session, sub, pos, json);

@@ -30,8 +30,9 @@ const QString kUsage = QStringLiteral(
     "imudesk-cli hec495 PORT [--baud B] [--address N] [--json] ACTION\n"
     "  ACTION: read [--count N] | angle pitch|roll|heading|all | nmea [--count N] | info | declination [VALUE]\n"
     "          | baud B | rate HZ | content default|internal|all|nmea | address N | save | reset\n"
-    "          | calibrate auto12|all|small-tilt|planar [--timeout S]\n"
-    "          | calibrate manual [--auto-interval S] [--save] [--timeout S]");
+    "          | calibrate auto12|all|small-tilt|planar [--save] [--timeout S]\n"
+    "          | calibrate manual [--auto-interval S] [--save] [--timeout S]\n"
+    "  calibrate asks on stdin before it saves (0x09); --save saves without asking (scripts).");
 
 void printJson(const QJsonObject &o)
 {
@@ -229,7 +230,10 @@ int calibrateManual(Hec495Session &s, double autoIntervalS, bool saveWithoutAski
     return saveCalibration(s, QStringLiteral("manual"), points, json);
 }
 
-int calibrate(Hec495Session &s, const QString &methodName, int timeoutS, bool json)
+// An automatic method (0x63, 0x08, 0x64, 0x60): the module collects by itself; at the end the
+// calibration is saved (0x09) only with --save or the operator's yes, as the manual method's;
+// otherwise it is stopped (0x12) and the old one stays.
+int calibrate(Hec495Session &s, const QString &methodName, bool saveWithoutAsking, int timeoutS, bool json)
 {
     wl::CalibrationMethod method;
     if (!wl::commands::parseCalibrationMethod(methodName.toStdString(), method))
@@ -252,9 +256,17 @@ int calibrate(Hec495Session &s, const QString &methodName, int timeoutS, bool js
     t.start();
     while (points < target && t.elapsed() < qint64(timeoutS) * 1000 && !interrupted())
         waitFor([&] { return points >= target; }, 250);
-    if (interrupted()) {
+    const auto stop = [&](const QString &why, int code) {
         await(s, s.stopCalibration());
-        return fail(QStringLiteral("interrupted; calibration stopped"), ExitInterrupted);
+        return fail(QStringLiteral("%1; calibration stopped, nothing saved (the previous calibration stays)").arg(why),
+                    code);
+    };
+    if (interrupted())
+        return stop(QStringLiteral("interrupted"), ExitInterrupted);
+    if (!saveWithoutAsking) {
+        OperatorInput input;
+        if (!input.confirm(QStringLiteral("%1 points collected. Save this calibration to the compass?").arg(points)))
+            return stop(QStringLiteral("not confirmed (answer y, or give --save)"), ExitFailure);
     }
     return saveCalibration(s, methodName, points, json);
 }
@@ -327,7 +339,7 @@ int cmdHec495(const QStringList &args)
                                                   "the operator's Enter (scripts)."),
                                    QStringLiteral("S")));
     p.addOption(QCommandLineOption(QStringLiteral("save"),
-                                   QStringLiteral("calibrate manual: save the calibration without asking.")));
+                                   QStringLiteral("calibrate: save the calibration without asking.")));
     p.addPositionalArgument(QStringLiteral("PORT"), QStringLiteral("Serial port"));
     p.addPositionalArgument(QStringLiteral("ACTION"), QStringLiteral("What to do (see usage)"));
     // A negative value ("declination -3.2") is an argument, not an option.
@@ -367,11 +379,12 @@ int cmdHec495(const QStringList &args)
     if ((want >= 0 && rest.size() != want) || (want < 0 && rest.size() > 1))
         return fail(QStringLiteral("wrong number of arguments for '%1' (usage: %2)").arg(action, kUsage), ExitUsage);
 
-    if ((p.isSet(QStringLiteral("auto-interval")) || p.isSet(QStringLiteral("save")))
+    if (p.isSet(QStringLiteral("auto-interval"))
         && !(action == QLatin1String("calibrate") && rest.value(0) == QLatin1String("manual")))
-        return fail(QStringLiteral("--auto-interval and --save are for 'calibrate manual' (the other methods collect "
-                                   "by themselves and save at their end)"),
+        return fail(QStringLiteral("--auto-interval is for 'calibrate manual' (the other methods collect by themselves)"),
                     ExitUsage);
+    if (p.isSet(QStringLiteral("save")) && action != QLatin1String("calibrate"))
+        return fail(QStringLiteral("--save is for 'calibrate' (save the calibration without asking)"), ExitUsage);
     Hec495Session s;
     s.setPollingRate(0); // only the requests asked for
     QString failure;
@@ -533,7 +546,7 @@ int cmdHec495(const QStringList &args)
         }
         return calibrateManual(s, interval, p.isSet(QStringLiteral("save")), timeoutS, json);
     }
-    return calibrate(s, arg, timeoutS, json);
+    return calibrate(s, arg, p.isSet(QStringLiteral("save")), timeoutS, json);
 }
 
 } // namespace imudesk::cli

@@ -72,7 +72,7 @@ void CanFamily::stopping()
     while (!m_jobs.empty()) {
         const quint64 id = m_jobs.front().id;
         m_jobs.pop_front();
-        Q_EMIT jobFinished(CanRequestResult{id, false, 0, tr("the session was closed"), RequestStatus::Cancelled});
+        Q_EMIT jobFinished(CanRequestResult{id, false, 0, tr("the session was closed"), RequestStatus::Cancelled, {}, {}});
     }
 }
 
@@ -225,7 +225,7 @@ void CanFamily::submitJob(const CanJob &job)
     if (int(m_jobs.size()) >= kMaxQueuedJobs) {
         Q_EMIT jobFinished(
             CanRequestResult{job.id, false, 0, tr("too many requests are waiting; try again when they are done"),
-                             RequestStatus::NotSent});
+                             RequestStatus::NotSent, {}, {}});
         return;
     }
     m_jobs.push_back(job);
@@ -240,6 +240,8 @@ void CanFamily::startJob()
     m_jobs.pop_front();
     m_step = 0;
     m_lastValue = 0;
+    m_answers.clear();
+    m_values.clear();
     if (m_job->steps.empty()) {
         finishJob(true, QString());
         return;
@@ -278,6 +280,21 @@ void CanFamily::writing(const Request &r)
 void CanFamily::unanswered(const Request &r, RequestResult &result)
 {
     const CanJobStep &s = std::any_cast<Step>(&r.command)->step;
+    const auto reg = s.expect == CanJobStep::Expect::J1939Reply ? j1939::parseReg(s.tx) : std::nullopt;
+    if (result.status == RequestStatus::Timeout && reg && reg->da == j1939::kBroadcast) {
+        // A broadcast request ends with its timeout: the answers that came are its result.
+        if (!m_answers.isEmpty()) {
+            result.status = RequestStatus::Ok;
+            result.message.clear();
+            result.reply = m_answers.front().value;
+            return;
+        }
+        result.message = tr("no node answered \"%1\" to every node (address 255) within %2 ms: check the bit rate and "
+                            "the wiring")
+                             .arg(s.what)
+                             .arg(s.timeoutMs);
+        return;
+    }
     if (result.status == RequestStatus::Timeout && s.expect == CanJobStep::Expect::NoPdoFrom
         && !m_dataNodes.contains(m_target)) {
         result.message = tr("node %1 sent no data before \"%2\" either, so its effect cannot be seen: check the node ID")
@@ -342,6 +359,11 @@ bool CanFamily::matchStep(const CanFrame &f, const DecodedFrame &d)
         const auto req = j1939::parseReg(s.tx);
         if (!rep || !req || !j1939::answers(*rep, *req))
             return false;
+        if (req->da == j1939::kBroadcast) {
+            // Every node answers a request to 255: each answer is kept until the step's timeout.
+            m_answers.append(CanNodeAnswer{rep->sa, rep->status == 0, rep->value, rep->status});
+            return true;
+        }
         if (rep->status != 0)
             answer(false, rep->value, tr("the device refused \"%1\" (status %2)").arg(s.what).arg(rep->status));
         else
@@ -405,13 +427,26 @@ int CanFamily::dataSource(const DecodedFrame &d) const
 
 void CanFamily::stepEnded(const RequestResult &r)
 {
+    const CanJobStep &s = m_job->steps[m_step];
+    if (!r.ok() && s.optional) {
+        qCInfo(lcCan) << "optional step not answered:" << r.message;
+        if (const auto adapt = s.adapt)
+            adapt(std::nullopt, *m_job, m_step);
+        if (++m_step >= m_job->steps.size()) {
+            finishJob(true, tr("%1: done").arg(m_job->title));
+            return;
+        }
+        submitStep(true);
+        return;
+    }
     if (!r.ok()) {
         finishJob(false, r.message, r.status);
         return;
     }
-    const CanJobStep &s = m_job->steps[m_step];
     const uint32_t value = r.reply.toUInt();
     m_lastValue = value;
+    if (s.expect == CanJobStep::Expect::J1939Reply || s.expect == CanJobStep::Expect::SdoReply)
+        m_values.append(value);
     if (s.expectValue && *s.expectValue != value) {
         finishJob(false, tr("\"%1\" read back %2, expected %3").arg(s.what).arg(value).arg(*s.expectValue),
                   RequestStatus::Invalid);
@@ -429,6 +464,8 @@ void CanFamily::stepEnded(const RequestResult &r)
         m_options.hec495Mode = int(written->value); // kept for a reopen: the module saves it at once
         m_decoder.setHec495Mode(m_options.hec495Mode);
     }
+    if (const auto adapt = s.adapt)
+        adapt(value, *m_job, m_step);
     if (++m_step >= m_job->steps.size()) {
         finishJob(true, tr("%1: done").arg(m_job->title));
         return;
@@ -440,8 +477,11 @@ void CanFamily::finishJob(bool ok, const QString &message, RequestStatus status)
 {
     if (!m_job)
         return;
-    const CanRequestResult r{m_job->id, ok, m_lastValue, ok ? message : tr("%1 failed: %2").arg(m_job->title, message),
-                             ok ? RequestStatus::Ok : status};
+    CanRequestResult r{m_job->id, ok, m_lastValue, ok ? message : tr("%1 failed: %2").arg(m_job->title, message),
+                       ok ? RequestStatus::Ok : status, {}, {}};
+    r.answers = m_answers;
+    r.values = m_values;
+    std::sort(r.answers.begin(), r.answers.end(), [](const CanNodeAnswer &a, const CanNodeAnswer &b) { return a.node < b.node; });
     m_job.reset();
     if (!ok)
         qCInfo(lcCan) << r.message;

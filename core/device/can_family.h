@@ -94,6 +94,8 @@ private:
     std::optional<CanJob> m_job;
     size_t m_step = 0;
     uint32_t m_lastValue = 0;
+    QList<CanNodeAnswer> m_answers; // the job's broadcast answers
+    QList<quint32> m_values;        // the job's replies' values, in step order
 
     QTimer m_syncTimer{this};
     QTimer m_scanTimer{this};

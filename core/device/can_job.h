@@ -8,10 +8,13 @@
 #include <QString>
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <vector>
 
 namespace imudesk::device {
+
+struct CanJob;
 
 struct CanJobStep {
     enum class Expect {
@@ -35,6 +38,12 @@ struct CanJobStep {
     std::optional<uint32_t> expectValue;  // read-back must equal this
     int followNode = -1;                  // after this step the session follows this node
     QString what;                         // for messages: "read back PGN FF37 interval"
+    // A step whose refusal or silence does not end the job: the job goes on without its value.
+    bool optional = false;
+    // Called when this step ends, before the next is sent, with its value (nullopt: an optional
+    // step that was refused or not answered): may change the steps after `at` and the title
+    // (the CANopen node-ID object chosen by the firmware version the module reports).
+    std::function<void(std::optional<uint32_t> value, CanJob &job, size_t at)> adapt;
 };
 
 struct CanJob {

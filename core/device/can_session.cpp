@@ -125,7 +125,7 @@ quint64 CanSession::submitJob(CanJob job)
 quint64 CanSession::refuseJob(const QString &why)
 {
     const quint64 id = takeRequestId();
-    const CanRequestResult r{id, false, 0, why, RequestStatus::NotSent};
+    const CanRequestResult r{id, false, 0, why, RequestStatus::NotSent, {}, {}};
     QMetaObject::invokeMethod(this, [this, r] { Q_EMIT requestFinished(r); }, Qt::QueuedConnection);
     return id;
 }
@@ -181,6 +181,34 @@ CanJobStep CanSession::hecStep(uint16_t index, uint8_t value, const QString &wha
     return s;
 }
 
+CanJobStep CanSession::firmwareProbe(FirmwareAdapt then) const
+{
+    CanJobStep probe = sdoReadStep(hip::ObjIdentity, hip::kSubRevision, tr("read the firmware version"));
+    probe.optional = true;
+    probe.adapt = std::move(then);
+    return probe;
+}
+
+CanJobStep CanSession::nodeIdObjectProbe() const
+{
+    return firmwareProbe([fallback = m_options.hipnucNodeIdObject](std::optional<uint32_t> revision, CanJob &job, size_t at) {
+        const std::optional<uint16_t> reported = revision ? hip::nodeIdObjectOfRevision(*revision) : std::nullopt;
+        const uint16_t object = reported.value_or(fallback);
+        for (size_t i = at + 1; i < job.steps.size(); ++i) {
+            CanJobStep &step = job.steps[i];
+            const auto sdo = step.hasTx ? canopen::parseSdo(step.tx) : std::nullopt;
+            if (sdo && hip::isNodeIdObject(sdo->index))
+                step.tx = hip::retarget(step.tx, object);
+        }
+        job.title += reported ? tr(" (object 0x%1, firmware %2.%3.%4)")
+                                    .arg(object, 4, 16, QLatin1Char('0'))
+                                    .arg(*revision >> 16)
+                                    .arg((*revision >> 8) & 0xFF)
+                                    .arg(*revision & 0xFF)
+                              : tr(" (object 0x%1: the module reports no firmware version)").arg(object, 4, 16, QLatin1Char('0'));
+    });
+}
+
 quint64 CanSession::readRegister(uint16_t addr)
 {
     if (protocol() != CanProtocol::J1939)
@@ -192,7 +220,10 @@ quint64 CanSession::writeRegister(uint16_t addr, uint32_t value)
 {
     if (protocol() != CanProtocol::J1939)
         return refuseJob(tr("register access needs a J1939 device"));
-    return submitJob(CanJob{0, tr("write register 0x%1").arg(addr, 4, 16, QLatin1Char('0')), {j1939Write(addr, value, tr("write register"))}});
+    CanJobStep write = j1939Write(addr, value, tr("write register"));
+    if (node() == j1939::kBroadcast)
+        write.expectValue.reset(); // every node's echo is in the result's answers
+    return submitJob(CanJob{0, tr("write register 0x%1").arg(addr, 4, 16, QLatin1Char('0')), {write}});
 }
 
 quint64 CanSession::sdoRead(uint16_t index, uint8_t sub)
@@ -222,13 +253,21 @@ quint64 CanSession::readSetting(const settings::CanSetting &setting)
     if (!setting.readable)
         return refuseJob(tr("%1 cannot be read: %2").arg(setting.name, setting.note));
     switch (setting.access) {
-    case A::J1939Register:
+    case A::J1939Register: {
         if (protocol() != CanProtocol::J1939)
             return refuseJob(tr("%1 is a J1939 register: the device speaks another protocol").arg(setting.name));
-        return submitJob(CanJob{0, title, {j1939Read(setting.address, title)}});
+        // A value of several registers (the Modbus list's R_H/R_L, PNAME, SN): each register in
+        // turn, the result's values in register order.
+        CanJob job{0, title, {}};
+        for (int i = 0; i < std::max(1, setting.words); ++i)
+            job.steps.push_back(j1939Read(uint16_t(setting.address + i), title));
+        return submitJob(std::move(job));
+    }
     case A::CanOpenObject:
         if (protocol() != CanProtocol::CanOpen)
             return refuseJob(tr("%1 is a CANopen object: the device speaks another protocol").arg(setting.name));
+        if (hip::isNodeIdObject(setting.address))
+            return submitJob(CanJob{0, title, {nodeIdObjectProbe(), sdoReadStep(setting.address, setting.sub, title)}});
         return submitJob(CanJob{0, title, {sdoReadStep(setting.address, setting.sub, title)}});
     case A::Hec495Object: break;
     }
@@ -245,6 +284,9 @@ quint64 CanSession::writeSetting(const settings::CanSetting &setting, uint32_t r
     case A::J1939Register: {
         if (protocol() != CanProtocol::J1939)
             return refuseJob(tr("%1 is a J1939 register: the device speaks another protocol").arg(setting.name));
+        if (!setting.readable) // URFR 0xA6: the manual gives no read
+            return submitJob(CanJob{0, tr("%1 = %2, confirmed by the module's reply (it cannot be read back)").arg(setting.name, shown),
+                                    {j1939Write(setting.address, raw, tr("write %1").arg(setting.name))}});
         CanJobStep rb = j1939Read(setting.address, tr("read back %1").arg(setting.name));
         rb.expectValue = raw;
         return submitJob(CanJob{0, tr("%1 = %2, verified by reading it back").arg(setting.name, shown),
@@ -255,9 +297,11 @@ quint64 CanSession::writeSetting(const settings::CanSetting &setting, uint32_t r
             return refuseJob(tr("%1 is a CANopen object: the device speaks another protocol").arg(setting.name));
         CanJobStep rb = sdoReadStep(setting.address, setting.sub, tr("read back %1").arg(setting.name));
         rb.expectValue = raw;
-        return submitJob(CanJob{0, tr("%1 = %2, verified by reading it back").arg(setting.name, shown),
-                                {sdoWriteStep(setting.address, setting.sub, raw, setting.size, tr("write %1").arg(setting.name)),
-                                 rb}});
+        CanJob job{0, tr("%1 = %2, verified by reading it back").arg(setting.name, shown),
+                   {sdoWriteStep(setting.address, setting.sub, raw, setting.size, tr("write %1").arg(setting.name)), rb}};
+        if (hip::isNodeIdObject(setting.address))
+            job.steps.insert(job.steps.begin(), nodeIdObjectProbe());
+        return submitJob(std::move(job));
     }
     case A::Hec495Object:
         if (protocol() != CanProtocol::Hec495)
@@ -321,8 +365,12 @@ quint64 CanSession::setSyncMode(int channel, bool sync)
 quint64 CanSession::setHeartbeat(int ms)
 {
     if (protocol() == CanProtocol::Hec495) {
-        const int n = std::clamp((ms + 50) / 100 - 1, 0, 255);
-        return hec495Write(hec495::ObjHeartbeat, uint8_t(n));
+        const std::optional<uint8_t> n = hec495::heartbeatCode(ms);
+        if (!n)
+            return refuseJob(tr("the HEC495's heartbeat is 100 ms x (N + 1): %1 to %2 ms (it cannot be turned off)")
+                                 .arg(hec495::kMinHeartbeatMs)
+                                 .arg(hec495::kMaxHeartbeatMs));
+        return hec495Write(hec495::ObjHeartbeat, *n);
     }
     if (protocol() != CanProtocol::CanOpen || ms < 0 || ms > 0xFFFF)
         return refuseJob(tr("the heartbeat needs a CANopen or HEC495 device and 0..65535 ms"));
@@ -351,7 +399,7 @@ quint64 CanSession::setNodeId(int newId)
     }
     case CanProtocol::CanOpen: {
         const uint16_t obj = m_options.hipnucNodeIdObject;
-        return submitJob(CanJob{0, title, {sdoWriteStep(obj, 0, uint32_t(newId), 4, tr("set the node ID")),
+        return submitJob(CanJob{0, title, {nodeIdObjectProbe(), sdoWriteStep(obj, 0, uint32_t(newId), 4, tr("set the node ID")),
                                         sdoWriteStep(hip::ObjCommand, 0, hip::CommandSave, 4, tr("save")),
                                         sdoWriteStep(hip::ObjCommand, 0, hip::CommandReset, 4, tr("reset")), follow}});
     }
@@ -538,8 +586,20 @@ quint64 CanSession::save() { return commandJob(j1939::CommandSave, tr("save conf
 quint64 CanSession::reset() { return commandJob(j1939::CommandReset, tr("reset"), -1); }
 quint64 CanSession::factoryReset()
 {
-    // Factory defaults bring back the default node ID; the session follows it.
-    return commandJob(j1939::CommandFactory, tr("factory defaults"), canopen::kDefaultNode);
+    // Factory defaults bring back the default node ID; the session follows it. On CANopen the
+    // firmware decides when: 1.7.1 saves and resets at once (8.28.44.22), 1.6.6 takes them at
+    // the next power-up (5.4.1), so the session stays with the node it has until then.
+    if (protocol() != CanProtocol::CanOpen)
+        return commandJob(j1939::CommandFactory, tr("factory defaults"), canopen::kDefaultNode);
+    CanJobStep command = sdoWriteStep(hip::ObjCommand, 0, hip::CommandFactory, 4, tr("factory defaults"));
+    command.followNode = canopen::kDefaultNode;
+    const CanJobStep probe = firmwareProbe([](std::optional<uint32_t> revision, CanJob &job, size_t at) {
+        if (!revision || !hip::isV166Revision(*revision))
+            return;
+        job.steps[at + 1].followNode = -1;
+        job.title += tr(" (firmware 1.6: they take effect at the next power-up)");
+    });
+    return submitJob(CanJob{0, tr("factory defaults"), {probe, command}});
 }
 
 quint64 CanSession::trigger(uint32_t pgn)

@@ -43,7 +43,8 @@ public:
     protocol::can::CanProtocol protocol() const; // the configured one, else the detected one
     int targetNode() const { return m_target.load(); }
 
-    // Raw access.
+    // Raw access. J1939 to node 255 (the broadcast address): every node answers within the
+    // request timeout, each answer in the result's answers.
     quint64 readRegister(uint16_t addr);                  // J1939
     quint64 writeRegister(uint16_t addr, uint32_t value); // J1939, confirmed by the echo
     quint64 sdoRead(uint16_t index, uint8_t sub);         // CANopen
@@ -65,7 +66,7 @@ public:
     quint64 setOutputPeriod(uint32_t pgnOrChannel, int ms); // J1939: data PGN; CANopen: TPDO channel 0..5
     quint64 setHec495Rate(int code);
     quint64 setSyncMode(int channel, bool sync);
-    quint64 setHeartbeat(int ms);                          // HEC495: rounded to 100 ms * (N + 1)
+    quint64 setHeartbeat(int ms);                          // HEC495: the nearest 100 ms * (N + 1), 100..25600 ms
     quint64 setNodeId(int newId);
     // The bit rates the module's own setting takes (setBitrate), fastest first.
     static QList<int> moduleBitrates(protocol::can::CanProtocol protocol, bool hec495Extended = false);
@@ -110,6 +111,14 @@ private:
     CanJobStep sdoWriteStep(uint16_t index, uint8_t sub, uint32_t value, int size, const QString &what) const;
     CanJobStep sdoReadStep(uint16_t index, uint8_t sub, const QString &what) const;
     CanJobStep hecStep(uint16_t index, uint8_t value, const QString &what) const;
+    // CANopen: reads the firmware version the module reports (0x1018:3, optional: a module
+    // without it aborts) and hands it to `then` (nullopt: none reported) before the next step.
+    using FirmwareAdapt = std::function<void(std::optional<uint32_t> revision, CanJob &job, size_t at)>;
+    CanJobStep firmwareProbe(FirmwareAdapt then) const;
+    // A firmwareProbe that points the job's later requests to a node-ID object at that
+    // firmware's object (0x209C from 1.7, 0x20A0 on 1.6.6); a module that reports none keeps
+    // the configured one (hipnucNodeIdObject).
+    CanJobStep nodeIdObjectProbe() const;
     // A job of `action` (a write, an NMT command) confirmed by the target's data frames
     // starting (on) or stopping (off).
     quint64 outputJob(const QString &title, const CanJobStep &action, bool on);

@@ -25,7 +25,7 @@ struct CanSessionOptions {
     // canopen::hipnuc::nodeIdObject(major, minor, patch).
     uint16_t hipnucNodeIdObject = 0x209C;
     bool hec495Extended = false; // HEC495 extended-frame variant (0x18FA....)
-    uint8_t hostAddress = 0x55; // J1939 source address of the host
+    uint8_t hostAddress = 0x55; // J1939 source address of the host (vendor tools' 0x55; 0..253)
     int requestTimeoutMs = 1000;
 };
 
@@ -42,12 +42,22 @@ struct CanNodeInfo {
     QString seenAs; // "data", "heartbeat", "boot-up", "SDO scan", "configuration reply"
 };
 
+// One node's answer to a J1939 request to the broadcast address 255.
+struct CanNodeAnswer {
+    int node = -1;
+    bool ok = false;     // status 0
+    quint32 value = 0;
+    int status = 0;      // the reply's STATUS byte
+};
+
 struct CanRequestResult {
     quint64 id = 0;
     bool ok = false;
     quint32 value = 0;  // value read back or echoed
     QString message;    // what happened (error text when !ok)
     RequestStatus status = RequestStatus::NotSent; // how it ended (Ok when ok)
+    QList<CanNodeAnswer> answers; // a J1939 broadcast request: every node's answer, by node
+    QList<quint32> values;        // every reply's value in step order (a setting of several registers)
 };
 
 } // namespace imudesk::device

@@ -158,7 +158,9 @@ void HipnucSerialFamily::queryWorldFrame(std::function<void()> then)
             return; // the session stopped or the port closed meanwhile: nothing to go on with
         if (r.ok())
             noteWorldFrame(r);
-        then(); // no answer: the frame stays as it was (ENU at first)
+        else
+            noteWorldFrameAssumed(); // no answer: the frame stays as it was (ENU at first), unconfirmed
+        then();
     }));
 }
 
@@ -170,12 +172,25 @@ void HipnucSerialFamily::noteWorldFrame(const Reply &r)
     std::optional<model::WorldFrame> frame;
     if (const auto coord = r.values.find("COORD"); coord != r.values.end())
         frame = model::worldFrameOfCoord(coord->second);
+    // A reply that names no COORD (or a value of none of the manual's frames): ENU, the default,
+    // is assumed, and the identity says so (the attitude view and the status bar warn).
+    const bool assumed = !frame;
     if (!frame)
-        frame = model::WorldFrame::Enu; // the default, and a reply that does not list it
-    if (*frame == engine().identity().worldFrame)
+        frame = model::WorldFrame::Enu;
+    if (*frame == engine().identity().worldFrame && assumed == engine().identity().worldFrameAssumed)
         return;
     model::DeviceIdentity id = engine().identity();
     id.worldFrame = *frame;
+    id.worldFrameAssumed = assumed;
+    engine().setIdentity(id);
+}
+
+void HipnucSerialFamily::noteWorldFrameAssumed()
+{
+    if (m_coordChangePending || engine().identity().worldFrameAssumed)
+        return;
+    model::DeviceIdentity id = engine().identity();
+    id.worldFrameAssumed = true;
     engine().setIdentity(id);
 }
 
@@ -192,6 +207,7 @@ void HipnucSerialFamily::noteIdentity(const model::DeviceIdentity &id)
         m_deviceSerial = id.serial;
     model::DeviceIdentity kept = id;
     kept.worldFrame = engine().identity().worldFrame; // LOG VERSION does not tell it; LOG COMCONFIG does
+    kept.worldFrameAssumed = engine().identity().worldFrameAssumed;
     engine().setIdentity(kept);
 }
 

@@ -76,9 +76,11 @@ private:
     void queryIdentity(int attempt);
     // LOG COMCONFIG's COORD= (v1.7.1 4.6.7.10): the frame of the module's attitude, kept in the
     // identity. A COORD written since the last reset takes effect only after it, so a reply
-    // read in between does not change the frame.
+    // read in between does not change the frame. A reply that names no COORD leaves ENU,
+    // marked as assumed (DeviceIdentity::worldFrameAssumed).
     void queryWorldFrame(std::function<void()> then);
     void noteWorldFrame(const Reply &r);
+    void noteWorldFrameAssumed(); // no reply: the frame kept is not confirmed by the module
     void noteCommandDone(const protocol::hipnuc::OutputEffect &effect);
 
     // Detection and recovery (hipnuc_family_baud.cpp)

@@ -40,6 +40,10 @@ struct DeviceIdentity {
     // Not from LOG VERSION: the frame of the module's quaternion and Euler angles, read with
     // LOG COMCONFIG (COORD=) after the identity on firmware 1.7.1 and later.
     WorldFrame worldFrame = WorldFrame::Enu;
+    // The module did not say its frame: its LOG COMCONFIG reply named no COORD (or there was no
+    // reply), so worldFrame is ENU by assumption (the default), not by its word. Firmware before
+    // 1.7.1 has no COORD setting: always ENU, not assumed.
+    bool worldFrameAssumed = false;
 
     // Builds an identity from the KEY=VALUE lines of a LOG VERSION reply.
     static DeviceIdentity fromKeyValues(const std::map<std::string, std::string> &kv);

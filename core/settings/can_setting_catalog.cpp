@@ -5,6 +5,7 @@
 #include "protocol/can/hipnuc_canopen_objects.h"
 #include "protocol/can/j1939.h"
 #include "protocol/can/j1939_config.h"
+#include "protocol/modbus/register_map.h"
 
 #include <QCoreApplication>
 #include <QStringList>
@@ -83,6 +84,76 @@ CanSetting sign(const QString &name, const QString &label, CanSetting::Access ac
     return s;
 }
 
+// URFR 0xA6 takes the v1.6.6 index (0..4) or a v1.7.1 URFR code (6.17.25): the J1939 session
+// does not know which manual its module follows, and the two sets do not overlap.
+bool urfrAccepts(uint32_t raw)
+{
+    namespace mb = protocol::modbus;
+    if (raw > 0xFFFF)
+        return false;
+    for (const mb::RegisterDef &d : mb::RegisterMap::hipnucAll().registers())
+        if (d.address == mb::reg::kUrfr && mb::RegisterMap::accepts(d, uint16_t(raw)))
+            return true;
+    return false;
+}
+
+// 7.22.41: "the register address map: see the register list of the Modbus chapter" (6.16). Its
+// registers by the list's names, but for CTRL (the save, factory and reset actions), SW_VERSION
+// (the catalogue's "version") and 0xA5 (the attitude-reset actions).
+void modbusListRegisters(std::vector<CanSetting> &out)
+{
+    namespace mb = protocol::modbus;
+    using A = CanSetting::Access;
+    using F = CanSetting::Format;
+    for (const mb::RegisterDef &d : mb::RegisterMap::hipnuc(model::ManualEdition::V171).registers()) {
+        if (d.address == mb::reg::kCtrl || d.address == mb::reg::kSwVersion || d.address == mb::reg::kAutoLevel)
+            continue;
+        CanSetting s = number(QString::fromLatin1(d.name), mb::RegisterMap::describe(d), QString::fromLatin1(d.unit),
+                              A::J1939Register, d.address, 0, 0xFFFF);
+        s.readable = d.readable();
+        s.writable = d.writable();
+        s.words = d.words;
+        s.scale = d.scale;
+        switch (d.type) {
+        case mb::RegType::I16: s.format = F::Signed16; break;
+        case mb::RegType::I32: s.format = F::Signed32; break;
+        case mb::RegType::Ascii: s.format = F::Ascii; break;
+        case mb::RegType::Bytes: s.format = F::Hex; break;
+        case mb::RegType::U16:
+        case mb::RegType::F32LE: break;
+        }
+        switch (d.rule) {
+        case mb::ValueRule::BaudCode: {
+            static const int bauds[] = {4800, 9600, 19200, 38400, 57600, 115200, 230400, 460800, 921600};
+            for (uint32_t code = 0; code < 9; ++code)
+                s.choices.emplace_back(code, QString::number(bauds[code]));
+            s.unit = QStringLiteral("bit/s");
+            s.note = Texts::tr("the serial port's baud rate; takes effect after save and reset");
+            break;
+        }
+        case mb::ValueRule::NodeId:
+            s.min = 1;
+            s.max = 128;
+            s.note = Texts::tr("the Modbus address of the serial port");
+            break;
+        case mb::ValueRule::HeadingMode:
+            s.choices = {{0, Texts::tr("6-axis (relative heading)")}, {1, Texts::tr("9-axis (absolute heading)")}};
+            break;
+        case mb::ValueRule::UrfrCode:
+        case mb::ValueRule::UrfrIndex:
+            s.accepts = &urfrAccepts;
+            s.min = 1; // [min, max] empty: urfrAccepts alone decides
+            s.max = 0;
+            s.note = Texts::tr("v1.6.6: 0-4; v1.7.1: the URFR code (0x18 = 024 ...); the manual gives no read");
+            break;
+        default: break;
+        }
+        if (!s.writable && s.note.isEmpty())
+            s.note = Texts::tr("read only");
+        out.push_back(s);
+    }
+}
+
 std::vector<CanSetting> j1939Settings()
 {
     using A = CanSetting::Access;
@@ -122,6 +193,7 @@ std::vector<CanSetting> j1939Settings()
                                 j1939::RegVersion, 0, 0xFFFFFFFF);
     version.writable = false;
     out.push_back(version);
+    modbusListRegisters(out);
     return out;
 }
 
@@ -210,12 +282,45 @@ std::vector<CanSetting> hec495Settings(bool extended)
 
 QString CanSetting::show(uint32_t raw) const
 {
+    if (format == Format::Signed16)
+        return QString::number(double(int16_t(uint16_t(raw))) * scale, 'g', 6);
+    if (format == Format::Signed32)
+        return QString::number(double(int32_t(raw)) * scale, 'g', 8);
+    if (format != Format::Code)
+        return showWords({raw});
     if (choices.empty())
         return QString::number(raw);
     for (const auto &[code, text] : choices)
         if (code == raw)
             return text;
     return Texts::tr("code %1 (not in the manual)").arg(raw);
+}
+
+QString CanSetting::showWords(const std::vector<uint32_t> &registers) const
+{
+    switch (format) {
+    case Format::Signed32:
+        // High word first (R_H, R_L).
+        if (registers.size() >= 2)
+            return show((registers[0] & 0xFFFF) << 16 | (registers[1] & 0xFFFF));
+        break;
+    case Format::Ascii: {
+        QByteArray text;
+        for (uint32_t r : registers)
+            text.append(char((r >> 8) & 0xFF)).append(char(r & 0xFF));
+        const int end = text.indexOf('\0');
+        return QString::fromLatin1(end < 0 ? text : text.left(end)).trimmed();
+    }
+    case Format::Hex: {
+        QString text;
+        for (uint32_t r : registers)
+            text += QStringLiteral("%1").arg(r & 0xFFFF, 4, 16, QLatin1Char('0')).toUpper();
+        return text;
+    }
+    case Format::Code:
+    case Format::Signed16: break;
+    }
+    return registers.empty() ? QString() : show(registers.back());
 }
 
 std::optional<uint32_t> CanSetting::parse(const QString &input, QString *error) const
@@ -261,7 +366,7 @@ std::optional<uint32_t> CanSetting::parse(const QString &input, QString *error) 
                 return code;
         return fail(Texts::tr("%1 takes %2").arg(name, range()));
     }
-    if (v < min || v > max)
+    if ((v < min || v > max) && !(accepts && accepts(uint32_t(v))))
         return fail(Texts::tr("%1 takes %2").arg(name, range()));
     return uint32_t(v);
 }
@@ -274,6 +379,10 @@ QString CanSetting::range() const
             shown << text;
         return shown.join(QStringLiteral(", "));
     }
+    if (accepts && min > max)
+        return note;
+    if (!writable && format != Format::Code)
+        return unit.isEmpty() ? Texts::tr("read only") : unit;
     const QString r = QStringLiteral("%1-%2").arg(min).arg(max);
     return unit.isEmpty() ? r : r + QLatin1Char(' ') + unit;
 }

@@ -4,7 +4,12 @@
 // serial settings catalogue (setting_catalog.h) on CAN.
 //   * J1939 (v1.7.1 manual 7.22-7.23): registers read with the manual's read request (CMD 0x03)
 //     and written with CMD 0x06: the data PGNs' intervals (0x0100 | PS), bit rate 0x9A, node
-//     address 0x9C, output 0x9D, inclinometer signs 0x9E/0x9F, firmware version 0x78 (read only).
+//     address 0x9C, output 0x9D, inclinometer signs 0x9E/0x9F, firmware version 0x78 (read only),
+//     and the registers 7.22.41 maps to the Modbus register list (6.16), by the list's names:
+//     UART1_BAUD, MD_ID and HEADING_MODE (read and written), the sensor registers 0x34..0x51,
+//     PNAME, BL_VERSION and SN (read only), URFR 0xA6 (written only). Each J1939 register holds
+//     one Modbus register (16 bits) in VAL; a value of several registers (R_H/R_L, PNAME, SN) is
+//     read register by register and shown whole (CanSetting::showWords).
 //   * HiPNUC CANopen (8.28): objects read by SDO upload and written by SDO download: the TPDO
 //     channels' event timer (sub 5) and transmission type (sub 2, SYNC or not), heartbeat
 //     0x1017, bit rate 0x209A, node ID 0x209C (0x20A0 on 1.6.6), inclinometer signs
@@ -41,9 +46,21 @@ struct CanSetting {
     std::vector<std::pair<uint32_t, QString>> choices;
     uint32_t min = 0;
     uint32_t max = 0xFFFFFFFF;
+    // How the value reads (a register of the Modbus list): a code or number as it is, a signed
+    // 16- or 32-bit number times `scale` in `unit`, ASCII text (two characters a register, the
+    // first in the high byte) or hex bytes; `words` consecutive registers hold it.
+    enum class Format { Code, Signed16, Signed32, Ascii, Hex };
+    Format format = Format::Code;
+    double scale = 1.0;
+    int words = 1;
+    // Besides [min, max] or the choices: what else the module takes (nullptr: nothing else).
+    bool (*accepts)(uint32_t raw) = nullptr;
 
-    // The module's raw value as shown ("500000", "100"); a code it does not document as such.
+    // The module's raw value as shown ("500000", "100", "-0.0156"); a code it does not document
+    // as such.
     QString show(uint32_t raw) const;
+    // A value of `words` registers, in register order (each register's 16 bits in the low half).
+    QString showWords(const std::vector<uint32_t> &registers) const;
     // What a person typed ("500000", "500k", "0x64", "100") as the module's raw value;
     // nullopt with why when it is not one the module takes.
     std::optional<uint32_t> parse(const QString &text, QString *error) const;

@@ -46,9 +46,20 @@ CanSimDevice::HipnucConfig CanSimDevice::hipnucDefaults(bool canFd)
     return c;
 }
 
+namespace {
+ModbusSimOptions registerSide(const CanSimOptions &o)
+{
+    ModbusSimOptions m;
+    m.firmware = o.firmware;
+    m.motion = o.motion;
+    m.seed = o.seed;
+    return m;
+}
+} // namespace
+
 CanSimDevice::CanSimDevice(CanSimOptions options)
     : m_options(std::move(options)), m_motion(MotionModel::Options{m_options.seed, m_options.motion}),
-      m_sensor(m_options.seed)
+      m_sensor(m_options.seed), m_registers(registerSide(m_options))
 {
     m_ram = hipnucDefaults(m_options.canFd);
     if (m_options.node > 0)
@@ -179,8 +190,8 @@ std::vector<CanSimDevice::Frame> CanSimDevice::poll(double t)
     std::vector<Frame> out;
     if (m_options.hec495) {
         const bool ext = isJ1939();
-        if (!ext && m_hec.heartbeatN != 0xFF
-            && due("hb", hec::heartbeatPeriodMs(m_hec.heartbeatN), t))
+        // 100 ms * (N + 1) for every N the byte holds (N = 255: 25.6 s); the manual has no "off".
+        if (!ext && due("hb", hec::heartbeatPeriodMs(m_hec.heartbeatN), t))
             out.push_back(co::encodeHeartbeat(uint8_t(m_activeNode), m_hec.pdoStarted && m_hec.rateCode ? 0x05 : 0x04));
         double period = hec::rateHzFromCode(m_hec.rateCode) > 0 ? 1000.0 / hec::rateHzFromCode(m_hec.rateCode) : 0;
         const bool gyroOnly = m_hec.workMode == 0x0A;
@@ -299,7 +310,13 @@ std::vector<CanSimDevice::Frame> CanSimDevice::handleJ1939(const Frame &in, doub
         else if (req->addr == j::RegVersion) {
             const auto fw = model::FirmwareVersion::parse(m_options.firmware);
             v = fw ? uint32_t(fw->major * 100 + fw->minor * 10 + fw->patch) : 0;
-        } else known = false;
+        } else {
+            // 7.22.41: a register of the Modbus list (a write-only one or an address it does not
+            // have: status 1).
+            const auto r = m_registers.read(req->addr, 1, int64_t(t * 1e6));
+            known = r.exception == 0 && r.values.size() == 1;
+            v = known ? r.values[0] : 0;
+        }
         reply.value = v;
         known ? ok() : bad();
         return out;
@@ -336,6 +353,16 @@ std::vector<CanSimDevice::Frame> CanSimDevice::handleJ1939(const Frame &in, doub
             resetAfter = true;
         } else if (v == j::CommandReset) resetAfter = true;
         else return bad(), out;
+        m_registers.write(protocol::modbus::reg::kCtrl, uint16_t(v), int64_t(t * 1e6)); // the list's registers too
+        break;
+    case protocol::modbus::reg::kBaud:
+    case protocol::modbus::reg::kNodeId:
+    case protocol::modbus::reg::kHeadingMode:
+    case protocol::modbus::reg::kUrfr:
+        // 7.22.41: the Modbus list's writable registers (the serial port's baud and Modbus ID
+        // take effect on that port; the J1939 side goes on as it is).
+        if (v > 0xFFFF || m_registers.write(uint16_t(req->addr), uint16_t(v), int64_t(t * 1e6)).exception != 0)
+            return bad(), out;
         break;
     case j::RegBaud:
         if (v > 4) return bad(), out;
@@ -387,8 +414,10 @@ bool CanSimDevice::writeHipnucObject(uint16_t index, uint8_t sub, uint32_t value
     if (index == co::hipnuc::ObjCommand) {
         if (value == co::hipnuc::CommandSave) m_flash = m_ram;
         else if (value == co::hipnuc::CommandFactory) {
+            // v1.7.1 8.28.44.22: saved and reset at once; v1.6.6 5.4.1: "takes effect after a
+            // power-up" (the defaults are saved; the running configuration stays).
             m_flash = hipnucDefaults(m_options.canFd);
-            *resetAfter = true;
+            *resetAfter = m_options.firmware != "1.6.6";
         } else if (value == co::hipnuc::CommandReset) *resetAfter = true;
         else return *abort = co::AbortValueRange, false;
         return true;

@@ -6,7 +6,11 @@
 // is J1939). Settings live in RAM; "save" copies them to flash, a reset or power cycle loads
 // flash, so node ID and baud changes take effect after save + reset as the manuals say
 // (HEC495 stores its writes at once and applies node and baud at the next power cycle).
+// J1939 also answers the registers 7.22.41 maps to the Modbus register list (UART1_BAUD, MD_ID,
+// HEADING_MODE, the sensor block 0x34..0x51, PNAME..SN 0x70..0x82, URFR 0xA6), each J1939
+// register one Modbus register in VAL, as ModbusDeviceModel holds them.
 #include "can_bootloader.h"
+#include "modbus_device_model.h"
 #include "motion_model.h"
 #include "protocol/can/can_decoder.h"
 #include "protocol/can/can_frame.h"
@@ -114,6 +118,9 @@ private:
     double m_yawOffset = 0, m_rollOffset = 0, m_pitchOffset = 0;
     CanBootloader m_boot;
     bool m_inBootloader = false;
+    // J1939 7.22.41: the registers of the Modbus register list (6.16), one J1939 register each:
+    // the same register side as the Modbus simulator's, on the same motion.
+    ModbusDeviceModel m_registers;
 };
 
 } // namespace imudesk::sim

@@ -26,6 +26,7 @@
 #include <QSignalSpy>
 #include <QTest>
 
+#include <algorithm>
 #include <functional>
 
 using namespace imudesk;
@@ -201,6 +202,55 @@ private Q_SLOTS:
         r = test::waitCanResult(*rig.session, rig.session->readRegister(j1939::RegNodeId));
         QVERIFY(!r.ok);
         QVERIFY2(r.message.contains(QStringLiteral("node 42")), qPrintable(r.message));
+    }
+
+    // J1939 requests to the broadcast address 255 from a chosen host source address (0x21): two
+    // modules (8 and 9) on the bus each answer from their own address to 0x21, and the result
+    // lists every node's answer; a write to 255 reaches both.
+    void j1939BroadcastFromChosenSource()
+    {
+        Rig rig;
+        sim::CanSimOptions o;
+        o.protocol = CanProtocol::J1939;
+        QVERIFY(makeRig(rig, o, CanProtocol::J1939));
+        sim::CanSimOptions o9 = o;
+        o9.node = 9;
+        sim::CanSimulator second(o9);
+        QString err;
+        QVERIFY2(second.start(kPlugin, kIface, &err), qPrintable(err));
+        QTRY_VERIFY_WITH_TIMEOUT(rig.frames.countRx(0x0CFF3408) > 2 && rig.frames.countRx(0x0CFF3409) > 2, 5000);
+        CanSessionOptions so = rig.session->options();
+        rig.session->close();
+        QTRY_COMPARE(rig.session->state(), device::SessionState::Closed);
+        so.node = j1939::kBroadcast;
+        so.hostAddress = 0x21;
+        so.requestTimeoutMs = 400;
+        rig.session->open(so);
+        QTRY_COMPARE(rig.session->state(), device::SessionState::Connected);
+        const qint64 from = mark(rig);
+        auto r = test::waitCanResult(*rig.session, rig.session->readRegister(j1939::RegNodeId));
+        QVERIFY2(r.ok, qPrintable(r.message));
+        QCOMPARE(r.answers.size(), 2);
+        QCOMPARE(r.answers[0].node, 8);
+        QCOMPARE(r.answers[0].value, 8u);
+        QCOMPARE(r.answers[1].node, 9);
+        QCOMPARE(r.answers[1].value, 9u);
+        QVERIFY(r.answers[0].ok && r.answers[1].ok);
+        // On the wire: 0x0CEFFF21 (PGN 0xEF00 to 255 from 0x21), answered on 0x0CEF2108 and 0x0CEF2109.
+        int sent = 0;
+        for (const auto &e : rig.frames.events)
+            if (e.transmitted && e.hostTimeNs >= from) {
+                QCOMPARE(e.frame.id, 0x0CEFFF21u);
+                QCOMPARE(e.frame.payload().toHex().toUpper(), QByteArray("9C00030001000000"));
+                ++sent;
+            }
+        QCOMPARE(sent, 1);
+        QCOMPARE(rig.frames.countRx(0x0CEF2108, from), 1);
+        QCOMPARE(rig.frames.countRx(0x0CEF2109, from), 1);
+        r = test::waitCanResult(*rig.session, rig.session->writeRegister(j1939::RegInclSignX, 1));
+        QVERIFY2(r.ok && r.answers.size() == 2, qPrintable(r.message));
+        QCOMPARE(rig.sim->device().hipnuc().inclSignX, 1u);
+        QCOMPARE(second.device().hipnuc().inclSignX, 1u);
     }
 
     // virtualcan connects to its bus server after open() has returned: frames written before
@@ -447,27 +497,142 @@ private Q_SLOTS:
         QVERIFY2(r.message.contains(QStringLiteral("cannot be seen")), qPrintable(r.message));
     }
 
-    // v1.6.6 keeps the node ID in 0x20A0 (chapter 5.4.1); the session is told so.
+    // v1.6.6 keeps the node ID in 0x20A0 (chapter 5.4.1), 1.7.1 in 0x209C (8.28.44.24): the
+    // session reads the firmware version the module reports (0x1018:3) and writes that
+    // firmware's object, whatever the connect dialog said; 0x209C itself is aborted by 1.6.6.
     void canopenV166NodeId()
     {
+        for (const char *firmware : {"1.6.6", "1.7.1"}) {
+            Rig rig;
+            sim::CanSimOptions o;
+            o.protocol = CanProtocol::CanOpen;
+            o.firmware = firmware;
+            QVERIFY(makeRig(rig, o, CanProtocol::CanOpen, kIface));
+            QTRY_VERIFY_WITH_TIMEOUT(rig.frames.countRx(0x288) > 5, 5000);
+            const bool v166 = QByteArray(firmware) == "1.6.6";
+            // The raw SDO to the other firmware's object: the module has no such object.
+            auto r = test::waitCanResult(*rig.session, rig.session->sdoWrite(v166 ? 0x209C : 0x20A0, 0, 20, 4));
+            QVERIFY(!r.ok);
+            QVERIFY2(r.message.contains(QStringLiteral("does not exist")), qPrintable(r.message));
+            const qint64 from = mark(rig);
+            r = test::waitCanResult(*rig.session, rig.session->setNodeId(20));
+            QVERIFY2(r.ok, qPrintable(r.message));
+            QVERIFY2(r.message.contains(v166 ? QStringLiteral("object 0x20a0, firmware 1.6.6")
+                                             : QStringLiteral("object 0x209c, firmware 1.7.1")),
+                     qPrintable(r.message));
+            // On the wire: the version read (40 18 10 03), then the manual's write to node 8.
+            QStringList sent;
+            for (const auto &e : rig.frames.events)
+                if (e.transmitted && e.hostTimeNs >= from && e.frame.id == 0x608)
+                    sent << QString::fromLatin1(e.frame.payload().toHex().toUpper());
+            QCOMPARE(sent.value(0), QStringLiteral("4018100300000000"));
+            QCOMPARE(sent.value(1), v166 ? QStringLiteral("23A0200014000000") : QStringLiteral("239C200014000000"));
+            QTRY_VERIFY(rig.frames.countRx(0x294) > 5);
+            // The catalogue's node-id reads the same object.
+            const auto catalogue = rig.session->settingsCatalogue();
+            const auto node = std::find_if(catalogue.begin(), catalogue.end(),
+                                           [](const auto &s) { return s.name == QLatin1String("node-id"); });
+            QVERIFY(node != catalogue.end());
+            r = test::waitCanResult(*rig.session, rig.session->readSetting(*node));
+            QVERIFY2(r.ok && r.value == 20, qPrintable(r.message));
+        }
+    }
+
+    // Save, reset and factory defaults (object 0x2000, v1.7.1 8.28.44.20-22, v1.6.6 5.4.1) on
+    // the wire: the manual's bytes to 0x600+ID, the simulator's answer, and their effect: a
+    // saved period survives the reset, an unsaved one does not; factory defaults bring back
+    // 10 ms and node 8, at once on 1.7.1 (the session follows), at the next power-up on 1.6.6
+    // (the session stays on node 9 until then).
+    void canopenCommandObject()
+    {
+        for (const char *firmware : {"1.7.1", "1.6.6"}) {
+            const bool v166 = QByteArray(firmware) == "1.6.6";
+            Rig rig;
+            sim::CanSimOptions o;
+            o.protocol = CanProtocol::CanOpen;
+            o.firmware = firmware;
+            o.node = 9;
+            QVERIFY(makeRig(rig, o, CanProtocol::CanOpen, kIface));
+            QTRY_VERIFY_WITH_TIMEOUT(rig.frames.countRx(0x189) > 5, 5000);
+            QCOMPARE(rig.session->targetNode(), 9);
+            const auto sentTo609 = [&rig](qint64 from) {
+                QStringList sent;
+                for (const auto &e : rig.frames.events)
+                    if (e.transmitted && e.hostTimeNs >= from && e.frame.id == 0x609)
+                        sent << QString::fromLatin1(e.frame.payload().toHex().toUpper());
+                return sent;
+            };
+            const auto period = [&rig] {
+                const auto r = test::waitCanResult(*rig.session, rig.session->sdoRead(0x1800, 5));
+                return r.ok ? int(r.value) : -1;
+            };
+            auto r = test::waitCanResult(*rig.session, rig.session->setOutputPeriod(0, 50));
+            QVERIFY2(r.ok, qPrintable(r.message));
+            qint64 from = mark(rig);
+            r = test::waitCanResult(*rig.session, rig.session->save());
+            QVERIFY2(r.ok, qPrintable(r.message));
+            QCOMPARE(sentTo609(from), QStringList{QStringLiteral("2300200000000000")});
+            QCOMPARE(rig.frames.countRx(0x589, from), 1); // 60 00 20 00: written
+            r = test::waitCanResult(*rig.session, rig.session->setOutputPeriod(0, 200));
+            QVERIFY2(r.ok, qPrintable(r.message));
+            from = mark(rig);
+            r = test::waitCanResult(*rig.session, rig.session->reset());
+            QVERIFY2(r.ok, qPrintable(r.message));
+            QCOMPARE(sentTo609(from), QStringList{QStringLiteral("23002000FF000000")});
+            QTRY_VERIFY(rig.frames.countRx(0x709, from) >= 1); // the boot-up after the reset
+            QCOMPARE(period(), 50);
+            from = mark(rig);
+            r = test::waitCanResult(*rig.session, rig.session->factoryReset());
+            QVERIFY2(r.ok, qPrintable(r.message));
+            const QStringList sent = sentTo609(from);
+            QCOMPARE(sent.value(0), QStringLiteral("4018100300000000")); // the firmware version, 0x1018:3
+            QCOMPARE(sent.value(1), QStringLiteral("2300200001000000"));
+            if (v166) {
+                QVERIFY2(r.message.contains(QStringLiteral("next power-up")), qPrintable(r.message));
+                QCOMPARE(rig.session->targetNode(), 9);
+                QCOMPARE(period(), 50); // running as before
+                QCOMPARE(rig.sim->device().node(), 9);
+                from = mark(rig);
+                rig.sim->powerCycle();
+                QTRY_VERIFY(rig.frames.countRx(0x188, from) > 5); // node 8 after the power-up
+                continue;
+            }
+            QTRY_COMPARE(rig.sim->device().node(), 8);
+            QTRY_COMPARE(rig.session->targetNode(), 8);
+            from = mark(rig);
+            QTRY_VERIFY(rig.frames.countRx(0x188, from) > 5);
+            QCOMPARE(period(), 10);
+        }
+    }
+
+    // The HEC495's heartbeat in ms (manual: 100 ms * (N + 1), N the byte of 0x1017): 350 ms is
+    // sent as N = 3 and the module's heartbeat comes every 400 ms; 0 (no "off") and 30 s
+    // (beyond N = 255) are refused before anything is sent.
+    void hec495HeartbeatRounding()
+    {
         Rig rig;
-        sim::CanSimOptions o;
-        o.protocol = CanProtocol::CanOpen;
-        o.firmware = "1.6.6";
-        QVERIFY(makeRig(rig, o, CanProtocol::CanOpen, kIface));
-        QTRY_VERIFY_WITH_TIMEOUT(rig.frames.countRx(0x288) > 5, 5000);
-        auto r = test::waitCanResult(*rig.session, rig.session->setNodeId(20));
-        QVERIFY(!r.ok); // 0x209C does not exist on 1.6.6
-        QVERIFY2(r.message.contains(QStringLiteral("does not exist")), qPrintable(r.message));
-        CanSessionOptions so = rig.session->options();
-        rig.session->close();
-        QTRY_COMPARE(rig.session->state(), device::SessionState::Closed);
-        so.hipnucNodeIdObject = canopen::hipnuc::nodeIdObject(1, 6, 6);
-        rig.session->open(so);
-        QTRY_COMPARE(rig.session->state(), device::SessionState::Connected);
-        r = test::waitCanResult(*rig.session, rig.session->setNodeId(20));
+        QVERIFY(makeHec495Rig(rig));
+        const qint64 from = mark(rig);
+        auto r = test::waitCanResult(*rig.session, rig.session->setHeartbeat(350));
         QVERIFY2(r.ok, qPrintable(r.message));
-        QTRY_VERIFY(rig.frames.countRx(0x294) > 5);
+        QVERIFY2(r.message.contains(QStringLiteral("heartbeat = 400 ms")), qPrintable(r.message));
+        QStringList sent;
+        for (const auto &e : rig.frames.events)
+            if (e.transmitted && e.hostTimeNs >= from && e.frame.id == 0x605)
+                sent << QString::fromLatin1(e.frame.payload().toHex().toUpper());
+        QCOMPARE(sent, QStringList{QStringLiteral("2217100003000000")});
+        const qint64 taken = mark(rig); // heartbeats from here on are the new period's
+        QVERIFY(runUntil([&] { return rig.frames.countRx(0x705, taken + 1) >= 5; }, 5000));
+        const double p = rig.frames.periodMs(0x705, taken + 1);
+        QVERIFY2(p > 330 && p < 470, qPrintable(QString::number(p))); // N = 3: 400 ms (2: 300, 4: 500)
+        for (int ms : {0, 30000}) {
+            const qint64 before = mark(rig);
+            r = test::waitCanResult(*rig.session, rig.session->setHeartbeat(ms));
+            QVERIFY(!r.ok);
+            QVERIFY2(r.message.contains(QStringLiteral("100 to 25600 ms")), qPrintable(r.message));
+            for (const auto &e : rig.frames.events)
+                QVERIFY(!(e.transmitted && e.hostTimeNs > before && e.frame.id == 0x605));
+        }
     }
 
     void hec495Standard()

@@ -83,11 +83,32 @@ private Q_SLOTS:
         QVERIFY2(r.err.contains(QStringLiteral("mag: STAT 1")), qPrintable(r.err));
         QVERIFY(r.json().value("progress").toInt() > 0);
         QCOMPARE(r.json().value("verdict").toString(), QStringLiteral("fail"));
+        QCOMPARE(r.json().value("heading_check").toString(), QStringLiteral("not run")); // after a failed MCAL
         // A module without a magnetometer refuses MCAL: said, exit code 1.
         auto hi02 = serve(sim::Motion::Tumble, "HI02");
         r = calibrate(*hi02, {"mag", "--timeout", "10"});
         QCOMPARE(r.code, 1);
         QVERIFY2(!r.json().value("message").toString().isEmpty(), qPrintable(r.out));
+    }
+
+    // The wizard's heading check (one level turn, the heading following without a jump above
+    // 10 deg), also run after "calibrate mag": a module turning level at 30 deg/s passes within
+    // the time given; one at rest has turned nothing when the time is up.
+    void headingCheck()
+    {
+        auto spin = serve(sim::Motion::Spin);
+        auto r = calibrate(*spin, {"heading-check", "--heading-timeout", "40"});
+        QVERIFY2(r.code == 0, qPrintable(r.out + r.err));
+        QCOMPARE(r.json().value("heading_check").toString(), QStringLiteral("pass"));
+        QVERIFY2(r.json().value("heading_turned_deg").toDouble() >= 360, qPrintable(r.out));
+        QVERIFY2(r.json().value("heading_max_step_deg").toDouble() < 10, qPrintable(r.out));
+        QVERIFY2(r.err.contains(QStringLiteral("heading: turned ")), qPrintable(r.err)); // progress on stderr
+        auto still = serve(sim::Motion::Static);
+        r = calibrate(*still, {"heading-check", "--heading-timeout", "2"});
+        QCOMPARE(r.code, 1);
+        QCOMPARE(r.json().value("heading_check").toString(), QStringLiteral("fail"));
+        QVERIFY2(r.json().value("message").toString().contains(QStringLiteral("turned only")), qPrintable(r.out));
+        QCOMPARE(calibrate(*still, {"heading-check", "--heading-timeout", "0"}).code, 2);
     }
 
     void levelAndHeadingReset()

@@ -13,6 +13,8 @@
 #include <QRegularExpression>
 #include <QTest>
 
+#include <cmath>
+
 namespace {
 using Run = imudesk::test::CliResult;
 
@@ -165,6 +167,125 @@ private Q_SLOTS:
         QCOMPARE(cli(can({QStringLiteral("--protocol"), QStringLiteral("j1939"), QStringLiteral("set"), QStringLiteral("incl-sign-x"),
                           QStringLiteral("2")})).code, 2);
         QCOMPARE(cli(can({QStringLiteral("set"), QStringLiteral("incl-sign-x"), QStringLiteral("1")})).code, 2); // no protocol
+    }
+
+    // "can --protocol j1939 sync PGN" is confirmed as the session confirms a trigger (v1.7.1
+    // 7.23: no reply; the PGN arriving from the module is the answer): with the module's output
+    // off, FF34 comes only as the triggers' answers; FF5A, which a module without CAN FD never
+    // sends, leaves the trigger unconfirmed and the command exits 1 saying so.
+    void j1939SyncConfirmed()
+    {
+        QVERIFY(startSim({QStringLiteral("--protocol"), QStringLiteral("j1939")}, 35501));
+        const QStringList j = {QStringLiteral("--protocol"), QStringLiteral("j1939")};
+        Run r = cli(can(j + QStringList{QStringLiteral("output"), QStringLiteral("off")}));
+        QVERIFY2(r.code == 0, qPrintable(r.err));
+        r = cli(can(j + QStringList{QStringLiteral("sync"), QStringLiteral("0xFF34"), QStringLiteral("--count"), QStringLiteral("2"),
+                                    QStringLiteral("--json")}));
+        QVERIFY2(r.code == 0, qPrintable(r.out + r.err));
+        const QJsonObject o = QJsonDocument::fromJson(r.out.toUtf8()).object();
+        QCOMPARE(o.value(QStringLiteral("sent")).toInt(), 2);
+        QCOMPARE(o.value(QStringLiteral("confirmed")).toInt(), 2);
+        r = cli(can(j + QStringList{QStringLiteral("sync"), QStringLiteral("0xFF5A")}));
+        QCOMPARE(r.code, 1);
+        QVERIFY2(r.out.contains(QStringLiteral("confirmed by PGN FF5A: 0")), qPrintable(r.out));
+        QVERIFY2(r.err.contains(QStringLiteral("1 of 1 triggers of PGN FF5A were not answered by node 8")), qPrintable(r.err));
+        QVERIFY2(r.err.contains(QStringLiteral("sent no PGN FF5A")), qPrintable(r.err));
+    }
+
+    // "can set node-id" on a v1.6.6 CANopen module writes 0x20A0 (5.4.1), chosen by the firmware
+    // version the module reports; the 1.7.1 object 0x209C is aborted by it.
+    void canopenV166NodeId()
+    {
+        QVERIFY(startSim({QStringLiteral("--protocol"), QStringLiteral("canopen"), QStringLiteral("--firmware"),
+                          QStringLiteral("1.6.6")},
+                         35502));
+        const QStringList co = {QStringLiteral("--protocol"), QStringLiteral("canopen")};
+        Run r = cli(can(co + QStringList{QStringLiteral("sdo"), QStringLiteral("write"), QStringLiteral("0x209C"), QStringLiteral("0"),
+                                         QStringLiteral("9")}));
+        QCOMPARE(r.code, 1);
+        QVERIFY2(r.err.contains(QStringLiteral("does not exist")), qPrintable(r.err));
+        r = cli(can(co + QStringList{QStringLiteral("set"), QStringLiteral("node-id"), QStringLiteral("9")}));
+        QVERIFY2(r.code == 0, qPrintable(r.out + r.err));
+        QVERIFY2(r.out.contains(QStringLiteral("object 0x20a0, firmware 1.6.6")), qPrintable(r.out));
+        r = cli(can(co + QStringList{QStringLiteral("sdo"), QStringLiteral("read"), QStringLiteral("0x20A0"), QStringLiteral("0")}));
+        QVERIFY2(r.code == 0 && r.out.startsWith(QStringLiteral("0x20a0.00: 9")), qPrintable(r.out + r.err));
+        r = cli(can(co + QStringList{QStringLiteral("get"), QStringLiteral("node-id")}));
+        QVERIFY2(r.code == 0 && r.out.trimmed() == QStringLiteral("node-id: 9"), qPrintable(r.out + r.err));
+    }
+
+    // The simulated module has no GNSS time: its FF2F frames carry a zero date and its running
+    // time, which is no UTC time of day in the samples (here every 50 ms).
+    void j1939TimeWithoutDateIsNotUtc()
+    {
+        QVERIFY(startSim({QStringLiteral("--protocol"), QStringLiteral("j1939")}, 35503));
+        const QStringList j = {QStringLiteral("--protocol"), QStringLiteral("j1939")};
+        Run r = cli(can(j + QStringList{QStringLiteral("set"), QStringLiteral("interval-ff2f"), QStringLiteral("50")}));
+        QVERIFY2(r.code == 0, qPrintable(r.err));
+        r = cli(can(j + QStringList{QStringLiteral("read"), QStringLiteral("--duration"), QStringLiteral("0.5"), QStringLiteral("--json")}));
+        QVERIFY2(r.code == 0 && r.out.contains(QStringLiteral("\"acc\"")), qPrintable(r.out + r.err));
+        QVERIFY2(!r.out.contains(QStringLiteral("utc_time_s")), qPrintable(r.out.left(2000)));
+    }
+
+    // A register read from every node (255) with the host at source address 0x21: one line per
+    // node that answered; 254 is J1939's null address, not a host's; CANopen has no broadcast SDO.
+    void j1939BroadcastFromSourceAddress()
+    {
+        QVERIFY(startSim({QStringLiteral("--protocol"), QStringLiteral("j1939")}, 35504));
+        const QStringList j = {QStringLiteral("--protocol"), QStringLiteral("j1939")};
+        Run r = cli(can(j + QStringList{QStringLiteral("--node"), QStringLiteral("255"), QStringLiteral("--source-address"),
+                                        QStringLiteral("0x21"), QStringLiteral("reg"), QStringLiteral("read"), QStringLiteral("0x9C"),
+                                        QStringLiteral("--json")}));
+        QVERIFY2(r.code == 0, qPrintable(r.out + r.err));
+        const QJsonObject answer = QJsonDocument::fromJson(r.out.trimmed().toUtf8()).object();
+        QCOMPARE(answer.value(QStringLiteral("node")).toInt(), 8);
+        QCOMPARE(answer.value(QStringLiteral("value")).toInt(), 8);
+        r = cli(can(j + QStringList{QStringLiteral("--node"), QStringLiteral("255"), QStringLiteral("reg"), QStringLiteral("read"),
+                                    QStringLiteral("0x9C")}));
+        QVERIFY2(r.code == 0 && r.out.trimmed() == QStringLiteral("register 0x009c node 8: 8 (0x8)"), qPrintable(r.out + r.err));
+        QCOMPARE(cli(can(j + QStringList{QStringLiteral("--source-address"), QStringLiteral("254"), QStringLiteral("reg"),
+                                         QStringLiteral("read"), QStringLiteral("0x9C")})).code,
+                 2);
+        QCOMPARE(cli(can({QStringLiteral("--protocol"), QStringLiteral("canopen"), QStringLiteral("--node"), QStringLiteral("255"),
+                          QStringLiteral("sdo"), QStringLiteral("read"), QStringLiteral("0x1000"), QStringLiteral("0")})).code,
+                 2);
+    }
+
+    // 7.22.41: the J1939 registers mapped to the Modbus register list, by the list's names:
+    // HEADING_MODE read, written and read back; PNAME (8 registers) as text; ACCZ in G; R_H/R_L
+    // as one roll; URFR written (no read: refused with why); a read-only register not written.
+    void j1939ModbusListByName()
+    {
+        QVERIFY(startSim({QStringLiteral("--protocol"), QStringLiteral("j1939")}, 35505));
+        const QStringList j = {QStringLiteral("--protocol"), QStringLiteral("j1939")};
+        Run r = cli(can(j + QStringList{QStringLiteral("get"), QStringLiteral("heading_mode")}));
+        QVERIFY2(r.code == 0 && r.out.trimmed() == QStringLiteral("HEADING_MODE: 9-axis (absolute heading)"), qPrintable(r.out + r.err));
+        r = cli(can(j + QStringList{QStringLiteral("set"), QStringLiteral("HEADING_MODE"), QStringLiteral("0")}));
+        QVERIFY2(r.code == 0 && r.out.contains(QStringLiteral("verified by reading it back")), qPrintable(r.out + r.err));
+        r = cli(can({QStringLiteral("reg"), QStringLiteral("read"), QStringLiteral("0x06")}));
+        QVERIFY2(r.code == 0 && r.out.startsWith(QStringLiteral("register 0x0006: 0")), qPrintable(r.out + r.err));
+        r = cli(can(j + QStringList{QStringLiteral("get"), QStringLiteral("pname")}));
+        QVERIFY2(r.code == 0 && r.out.trimmed() == QStringLiteral("PNAME: HI14R3N-485-000"), qPrintable(r.out + r.err));
+        r = cli(can(j + QStringList{QStringLiteral("get"), QStringLiteral("accz"), QStringLiteral("--json")}));
+        QVERIFY2(r.code == 0, qPrintable(r.err));
+        const QJsonObject acc = QJsonDocument::fromJson(r.out.toUtf8()).object();
+        QCOMPARE(acc.value(QStringLiteral("unit")).toString(), QStringLiteral("G"));
+        QVERIFY2(std::abs(acc.value(QStringLiteral("value")).toString().toDouble() - 1.0) < 0.05, qPrintable(r.out));
+        r = cli(can(j + QStringList{QStringLiteral("get"), QStringLiteral("r_h")}));
+        QVERIFY2(r.code == 0 && r.out.startsWith(QStringLiteral("R_H: ")) && r.out.trimmed().endsWith(QStringLiteral(" deg")),
+                 qPrintable(r.out + r.err));
+        QVERIFY2(std::abs(r.out.mid(5).section(QLatin1Char(' '), 0, 0).toDouble()) < 10, qPrintable(r.out));
+        r = cli(can(j + QStringList{QStringLiteral("set"), QStringLiteral("urfr"), QStringLiteral("0x18")}));
+        QVERIFY2(r.code == 0 && r.out.contains(QStringLiteral("confirmed by the module's reply")), qPrintable(r.out + r.err));
+        r = cli(can(j + QStringList{QStringLiteral("get"), QStringLiteral("urfr")}));
+        QCOMPARE(r.code, 1);
+        QVERIFY2(r.err.contains(QStringLiteral("cannot be read")), qPrintable(r.err));
+        QCOMPARE(cli(can(j + QStringList{QStringLiteral("set"), QStringLiteral("accx"), QStringLiteral("1")})).code, 2);
+        QCOMPARE(cli(can(j + QStringList{QStringLiteral("set"), QStringLiteral("md_id"), QStringLiteral("129")})).code, 2);
+        QCOMPARE(cli(can(j + QStringList{QStringLiteral("set"), QStringLiteral("urfr"), QStringLiteral("7")})).code, 2);
+        r = cli(can(j + QStringList{QStringLiteral("config")}));
+        QVERIFY2(r.code == 0, qPrintable(r.out + r.err));
+        QVERIFY2(r.out.contains(QStringLiteral("UART1_BAUD\t115200 bit/s")), qPrintable(r.out));
+        QVERIFY2(r.out.contains(QStringLiteral("SN\t")), qPrintable(r.out));
     }
 
     // A J1939 module on a CAN FD bus: its 64-byte FF5A frames reach "can read" as FD frames, the

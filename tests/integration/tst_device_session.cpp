@@ -137,6 +137,28 @@ private Q_SLOTS:
         QVERIFY(qAbs(std::sqrt(s->acc.x * s->acc.x + s->acc.y * s->acc.y + s->acc.z * s->acc.z) - 1.0) < 0.05);
     }
 
+    // A module whose LOG COMCONFIG reply names no COORD (here one that answers with its values
+    // alone): its world frame is ENU by ImuDesk's assumption, and the identity says so (the
+    // attitude view and the status bar warn); one whose reply names COORD=0 is ENU by its word.
+    void worldFrameAssumedWithoutCoord()
+    {
+        for (const auto style : {sim::SimFaults::ComConfigStyle::KeyValue, sim::SimFaults::ComConfigStyle::Unlabelled}) {
+            sim::SimOptions o = options();
+            o.faults.comConfigStyle = style;
+            sim::PtySimulator simulator(o);
+            QString error;
+            QVERIFY2(simulator.start(&error), qPrintable(error));
+            DeviceSession session;
+            QSignalSpy identity(&session, &DeviceSession::identityChanged);
+            session.open(simulator.devicePath(), 115200);
+            QVERIFY(waitConnected(session));
+            QTRY_VERIFY(!identity.isEmpty());
+            const auto id = identity.last().at(0).value<model::DeviceIdentity>();
+            QCOMPARE(id.worldFrame, model::WorldFrame::Enu);
+            QCOMPARE(id.worldFrameAssumed, style == sim::SimFaults::ComConfigStyle::Unlabelled);
+        }
+    }
+
     void statsReportRateAndLoad()
     {
         test::SimSession sim(options());

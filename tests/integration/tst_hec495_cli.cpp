@@ -149,8 +149,26 @@ private Q_SLOTS:
     {
         auto r = run({"hec495", m_pty, "baud", "115200", "--json"});
         QVERIFY2(r.code == 0, qPrintable(r.err));
-        r = run({"hec495", m_pty, "--baud", "115200", "calibrate", "planar", "--json"});
+        // An automatic method asks before it saves: "n" stops it (0x12), nothing saved.
+        QProcess asked;
+        asked.start(QString::fromUtf8(IMUDESK_CLI_PATH), {"hec495", m_pty, "--baud", "115200", "calibrate", "planar"});
+        QVERIFY(asked.waitForStarted());
+        QString err;
+        for (int i = 0; i < 1200 && !err.contains(QStringLiteral("[y/N]")); ++i) {
+            asked.waitForReadyRead(50);
+            err += QString::fromUtf8(asked.readAllStandardError());
+        }
+        QVERIFY2(err.contains(QStringLiteral("points collected. Save this calibration to the compass? [y/N]")), qPrintable(err));
+        asked.write("n\n");
+        QVERIFY(asked.waitForFinished(10000));
+        err += QString::fromUtf8(asked.readAllStandardError());
+        QCOMPARE(asked.exitCode(), 1);
+        QVERIFY2(err.contains(QStringLiteral("not confirmed")) && err.contains(QStringLiteral("nothing saved")), qPrintable(err));
+        QVERIFY(!QString::fromUtf8(asked.readAllStandardOutput()).contains(QStringLiteral("calibration saved")));
+        // A script saves with --save, without a question.
+        r = run({"hec495", m_pty, "--baud", "115200", "calibrate", "planar", "--save", "--json"});
         QVERIFY2(r.code == 0, qPrintable(r.err));
+        QVERIFY(!r.err.contains(QStringLiteral("[y/N]")));
         const auto o = r.json();
         QCOMPARE(o.value("points").toInt(), 12);
         QVERIFY(o.value("fit_error").toDouble() > 0.0);
@@ -228,7 +246,8 @@ private Q_SLOTS:
         auto r = run({"hec495", m_pty, "calibrate", "manual", "--auto-interval", "0.2", "--save", "--json"});
         QVERIFY2(r.code == 0, qPrintable(r.err));
         QCOMPARE(r.json().value("points").toInt(), 12);
-        QCOMPARE(run({"hec495", m_pty, "calibrate", "planar", "--save"}).code, 2);
+        QCOMPARE(run({"hec495", m_pty, "calibrate", "planar", "--auto-interval", "1", "--save"}).code, 2);
+        QCOMPARE(run({"hec495", m_pty, "info", "--save"}).code, 2);
         QCOMPARE(run({"hec495", m_pty, "calibrate", "manual", "--auto-interval", "0"}).code, 2);
     }
 };

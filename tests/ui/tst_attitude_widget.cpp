@@ -142,6 +142,7 @@ private Q_SLOTS:
     void readouts();
     void nedReadouts();
     void nwuModule();
+    void assumedWorldFrame();
     void noDataState();
     void repaintsOnlyOnChange();
     void ignoresInvalidQuaternions();
@@ -345,6 +346,34 @@ void TestAttitudeWidget::nwuModule()
     m_widget->setWorldFrame(imudesk::model::WorldFrame::Nwu);
     m_widget->setDisplayFrame(AttitudeWidget::DisplayFrame::Ned);
     QCOMPARE(readout(m_widget->readoutText(), QStringLiteral("Yaw")), -35.0);
+}
+
+// A module whose LOG COMCONFIG reply named no COORD: drawn in ENU, the default, with the
+// read-out's title marked "(assumed)" and a warning under the scene (amber pixels).
+void TestAttitudeWidget::assumedWorldFrame()
+{
+    const Quat q = imudesk::model::quatFromEnu312(Euler{10, -5, 35});
+    const QImage plain = render(&q);
+    QVERIFY(m_widget->frameWarning().isEmpty());
+    m_widget->setWorldFrame(imudesk::model::WorldFrame::Enu, true);
+    QVERIFY(m_widget->worldFrameAssumed());
+    const QImage warned = render(&q);
+    const QString text = m_widget->readoutText();
+    QVERIFY2(text.startsWith(QStringLiteral("ENU 3-1-2 (assumed)\nWorld frame assumed ENU: the module's LOG COMCONFIG "
+                                            "reply names no COORD\n")),
+             qPrintable(text));
+    QCOMPARE(readout(text, QStringLiteral("Yaw")), 35.0); // the numbers are the same
+    QVERIFY(m_widget->toolTip().contains(QStringLiteral("names no COORD")));
+    int amber = 0;
+    for (int y = 0; y < warned.height(); ++y)
+        for (int x = 0; x < warned.width(); ++x) {
+            const QColor c = warned.pixelColor(x, y);
+            amber += c.red() > 150 && c.green() > 60 && c.green() < 130 && c.blue() < 60 ? 1 : 0;
+        }
+    QVERIFY2(amber > 5, qPrintable(QString::number(amber)));
+    QVERIFY(differingPixels(plain, warned) > 20);
+    m_widget->setWorldFrame(imudesk::model::WorldFrame::Enu, false);
+    QVERIFY(m_widget->readoutText().startsWith(QStringLiteral("ENU 3-1-2\nRoll")));
 }
 
 void TestAttitudeWidget::noDataState()

@@ -137,7 +137,24 @@ private Q_SLOTS:
         QVERIFY(w.saveButton()->isEnabled());
         QTRY_VERIFY_WITH_TIMEOUT(w.tracker().validPoints() >= 6 && w.tracker().collectedCount() >= 3, 12000);
         QVERIFY(!w.poseView()->grab().isNull());
-        const auto r = click(w, w.saveButton());
+        // An automatic method asks first: "Not yet" sends nothing and the run goes on.
+        QVERIFY(w.saveConfirmation()->isHidden());
+        QSignalSpy sent(&w, &Hec495CalibrationWizard::requestFinished);
+        w.saveButton()->click();
+        QVERIFY(w.saveConfirmation()->isVisibleTo(&w));
+        QVERIFY(!w.saveButton()->isEnabled());
+        w.cancelSaveButton()->click();
+        QVERIFY(w.saveConfirmation()->isHidden());
+        QTest::qWait(300);
+        QCOMPARE(sent.size(), 0);
+        QVERIFY(w.running() && !w.saved());
+        bool active = false;
+        withSim(*m_pty, [&](Hec495Simulator &d) { active = d.calibration().active(); });
+        QVERIFY(active); // the module still collects: nothing was saved
+        QVERIFY(w.statusText().contains(QStringLiteral("Not saved yet")));
+        w.saveButton()->click();
+        QVERIFY(w.saveConfirmation()->isVisibleTo(&w));
+        const auto r = click(w, w.confirmSaveButton());
         QVERIFY2(r.ok(), qPrintable(w.errorText()));
         QTRY_COMPARE(w.currentId(), int(Hec495CalibrationWizard::ResultPage));
         QVERIFY(w.saved());
@@ -213,7 +230,8 @@ private Q_SLOTS:
         Hec495CalibrationWizard w(*m_session);
         toRunPage(w, CompassCalMethod::Planar);
         QVERIFY(click(w, w.startButton()).ok());
-        const auto r = click(w, w.saveButton());
+        w.saveButton()->click();
+        const auto r = click(w, w.confirmSaveButton());
         QCOMPARE(r.status, Hec495Result::Status::Failed);
         QCOMPARE(w.currentId(), int(Hec495CalibrationWizard::RunPage));
         QVERIFY(!w.saved());

@@ -80,6 +80,34 @@ private Q_SLOTS:
         QVERIFY(QString::fromStdString(imudesk::format::sampleToJson(*decoded.sample)).contains(QStringLiteral("\"utc_time_s\":52245.6")));
     }
 
+    // A time frame without a date (v1.6.6 6.1.1: year byte 20, month 0, day 0 when the module
+    // has no UTC; the zero date of a v1.7.1 module without GNSS time) carries the module's own
+    // clock: no UTC time of day reaches the samples, and the monitor says "date unknown".
+    void j1939TimeDateUnknown_data()
+    {
+        QTest::addColumn<QByteArray>("data");
+        QTest::newRow("v1.6.6 year 20, month 0, day 0") << QByteArray("1400000E1E2D5802");
+        QTest::newRow("zero date") << QByteArray("0000000102035802");
+        QTest::newRow("month 0") << QByteArray("1800120E1E2D5802");
+        QTest::newRow("day 0") << QByteArray("1806000E1E2D5802");
+    }
+    void j1939TimeDateUnknown()
+    {
+        QFETCH(QByteArray, data);
+        const CanFrame f = CanFrame::fromHex(0x0CFF2F08, true, data.constData());
+        const auto r = j1939::decodeData(f);
+        QVERIFY(r.ok() && r.data.time.has_value());
+        QVERIFY(!r.data.time->dateKnown());
+        CanDecoder d;
+        const DecodedFrame decoded = d.decode(f);
+        QCOMPARE(decoded.kind, FrameKind::J1939Data);
+        QCOMPARE(decoded.node, 8);
+        QVERIFY2(decoded.meaning.contains(QStringLiteral("date unknown, not UTC")), qPrintable(decoded.meaning));
+        QVERIFY(!decoded.sample.has_value());
+        QCOMPARE(decoded.components, 0u);
+        QVERIFY((j1939::UtcTime{2024, 6, 18, 14, 30, 45, 600}).dateKnown());
+    }
+
     void j1939DataPgns_data()
     {
         QTest::addColumn<uint>("id");
@@ -279,6 +307,8 @@ private Q_SLOTS:
         };
         row("node id 0x209C = 9", setNodeId(8, 9), "239C200009000000");
         row("v1.6.6 node id 0x20A0 = 9", setNodeId(8, 9, ObjNodeIdV166), "23A0200009000000");
+        // A node-ID write moved to the v1.6.6 object.
+        row("node id 0x209C moved to 0x20A0", retarget(setNodeId(8, 9), ObjNodeIdV166), "23A0200009000000");
         row("save", command(8, CommandSave), "2300200000000000");
         row("reset", command(8, CommandReset), "23002000FF000000");
         row("factory", command(8, CommandFactory), "2300200001000000");
@@ -320,6 +350,23 @@ private Q_SLOTS:
         QVERIFY(m);
         QCOMPARE(m->kind, canopen::SdoKind::DownloadExpedited);
         QCOMPARE(int(m->node), 8);
+    }
+
+    // The node-ID object by the firmware version the module reports (0x1018:3, major << 16 |
+    // minor << 8 | patch): 0x20A0 up to 1.6.x (v1.6.6 5.4.1), 0x209C from 1.7 (v1.7.1 8.28).
+    void nodeIdObjectByRevision()
+    {
+        using namespace canopen::hipnuc;
+        QCOMPARE(nodeIdObjectOfRevision(0x010606), std::optional<uint16_t>(ObjNodeIdV166));
+        QCOMPARE(nodeIdObjectOfRevision(0x010505), std::optional<uint16_t>(ObjNodeIdV166));
+        QCOMPARE(nodeIdObjectOfRevision(0x010701), std::optional<uint16_t>(ObjNodeId));
+        QCOMPARE(nodeIdObjectOfRevision(0x010700), std::optional<uint16_t>(ObjNodeId));
+        QCOMPARE(nodeIdObjectOfRevision(0), std::nullopt);
+        QVERIFY(isNodeIdObject(0x209C) && isNodeIdObject(0x20A0) && !isNodeIdObject(0x209A));
+        QVERIFY(isV166Revision(0x010606) && !isV166Revision(0x010701) && !isV166Revision(0));
+        const CanFrame read = readRevision(8); // CiA 301 upload request: 40, index, sub
+        QCOMPARE(read.id, 0x608u);
+        QCOMPARE(read.payload().toHex().toUpper(), QByteArray("4018100300000000"));
     }
 
     void sdoReplyAndAbort()
@@ -481,6 +528,18 @@ private Q_SLOTS:
         QCOMPARE(hec495::baudFromCode(2), 250000);
         QCOMPARE(hec495::heartbeatPeriodMs(9), 1000);
         QCOMPARE(hec495::rateHzFromCode(1), 5.0);
+        // 100 ms * (N + 1): the nearest N, half-way up; no "off" below 100 ms, none above N = 255.
+        QCOMPARE(hec495::heartbeatCode(1000), std::optional<uint8_t>(9)); // the default, 1 s
+        QCOMPARE(hec495::heartbeatCode(100), std::optional<uint8_t>(0));
+        QCOMPARE(hec495::heartbeatCode(149), std::optional<uint8_t>(0));
+        QCOMPARE(hec495::heartbeatCode(150), std::optional<uint8_t>(1));
+        QCOMPARE(hec495::heartbeatCode(350), std::optional<uint8_t>(3));
+        QCOMPARE(hec495::heartbeatCode(25600), std::optional<uint8_t>(255));
+        QCOMPARE(hec495::heartbeatCode(0), std::nullopt);
+        QCOMPARE(hec495::heartbeatCode(99), std::nullopt);
+        QCOMPARE(hec495::heartbeatCode(25601), std::nullopt);
+        for (int n = 0; n <= 255; ++n)
+            QCOMPARE(hec495::heartbeatCode(hec495::heartbeatPeriodMs(uint32_t(n))), std::optional<uint8_t>(uint8_t(n)));
     }
 
     void decoderAutoDetect()

@@ -12,6 +12,8 @@
 
 #include <QTest>
 
+#include <cmath>
+
 using namespace imudesk::protocol::can;
 using imudesk::sim::CanSimDevice;
 using imudesk::sim::CanSimOptions;
@@ -64,6 +66,40 @@ private Q_SLOTS:
         QCOMPARE(int(j1939::parseReg(bad[0])->status), 1);
         // Another node's request is ignored.
         QVERIFY(d.handle(j1939::encodeReg(j1939::intervalRequest(9, 0x55, j1939::PgnGyr, 50)), 2.0).empty());
+    }
+
+    // 7.22.41: the J1939 registers are the Modbus register list's (6.16), one register in VAL:
+    // HEADING_MODE read and written, PNAME as ASCII two characters a register, ACCZ about 1 G
+    // at rest, URFR written but not read, a Modbus ID out of 1..128 refused.
+    void j1939ModbusListRegisters()
+    {
+        CanSimDevice d(opts(CanProtocol::J1939));
+        d.poll(0);
+        const auto ask = [&d](const j1939::RegMessage &m, double t) {
+            const auto out = d.handle(j1939::encodeReg(m), t);
+            return out.size() == 1 ? j1939::parseReg(out[0]) : std::nullopt;
+        };
+        auto r = ask(j1939::readRequest(8, 0x55, 0x06), 0.1);
+        QVERIFY(r && r->status == 0);
+        QCOMPARE(r->value, 1u); // 9-axis from the factory
+        r = ask(j1939::writeRequest(8, 0x55, 0x06, 0), 0.2);
+        QVERIFY(r && r->status == 0);
+        QCOMPARE(ask(j1939::readRequest(8, 0x55, 0x06), 0.3)->value, 0u);
+        QByteArray name;
+        for (uint16_t a = 0x70; a <= 0x77; ++a) {
+            r = ask(j1939::readRequest(8, 0x55, a), 0.4);
+            QVERIFY(r && r->status == 0 && r->value <= 0xFFFF);
+            name.append(char(r->value >> 8)).append(char(r->value & 0xFF));
+        }
+        QVERIFY2(name.startsWith("HI14R3N-485"), name.constData());
+        r = ask(j1939::readRequest(8, 0x55, 0x36), 0.5);
+        QVERIFY(r && r->status == 0);
+        const double accZ = int16_t(uint16_t(r->value)) * 0.00048828;
+        QVERIFY2(std::abs(accZ - 1.0) < 0.05, qPrintable(QString::number(accZ)));
+        QCOMPARE(int(ask(j1939::writeRequest(8, 0x55, 0xA6, 0x18), 0.6)->status), 0);
+        QCOMPARE(int(ask(j1939::readRequest(8, 0x55, 0xA6), 0.6)->status), 1);
+        QCOMPARE(int(ask(j1939::writeRequest(8, 0x55, 0x05, 200), 0.7)->status), 1);
+        QCOMPARE(int(ask(j1939::writeRequest(8, 0x55, 0x34, 1), 0.7)->status), 1); // read only
     }
 
     void j1939TriggerEnableNode()
@@ -163,6 +199,21 @@ private Q_SLOTS:
         QVERIFY(countBetween(d, 0x190, 3.3, 4.3) > 0);
         d.handle(hec495::stopAll(), 4.3);
         QCOMPARE(countBetween(d, 0x190, 4.4, 5.0), 0);
+    }
+
+    // The heartbeat's period after a write of N (manual: 100 ms * (N + 1)), for N = 3 and for
+    // N = 255 (25.6 s: the manual has no "off").
+    void hec495HeartbeatPeriod()
+    {
+        CanSimDevice d(opts(CanProtocol::CanOpen, true));
+        QVERIFY(about(countBetween(d, 0x705, 0, 3.0), 3)); // N = 9: 1 s
+        auto r = d.handle(hec495::writeRequest(5, hec495::ObjHeartbeat, 3), 3.0);
+        QCOMPARE(r[0].payload(), QByteArray::fromHex("6017100000000000"));
+        QVERIFY(about(countBetween(d, 0x705, 3.0, 7.0), 10)); // 400 ms
+        r = d.handle(hec495::writeRequest(5, hec495::ObjHeartbeat, 255), 7.0);
+        QCOMPARE(r[0].payload(), QByteArray::fromHex("6017100000000000"));
+        QCOMPARE(countBetween(d, 0x705, 7.001, 32.5), 1);  // 25.6 s after the write
+        QCOMPARE(countBetween(d, 0x705, 32.5, 58.1), 1);
     }
 
     // The compass on CAN reports what it reports on serial: the heading clockwise from north (the

@@ -211,14 +211,27 @@ model::Quat AttitudeWidget::inScene(const model::Quat &q) const
 
 QString AttitudeWidget::ownFrameTitle() const
 {
+    if (m_worldAssumed)
+        return m_world == model::WorldFrame::Nwu ? tr("NWU 3-1-2 (assumed)") : tr("ENU 3-1-2 (assumed)");
     return m_world == model::WorldFrame::Nwu ? tr("NWU 3-1-2") : tr("ENU 3-1-2");
 }
 
-void AttitudeWidget::setWorldFrame(model::WorldFrame frame)
+QString AttitudeWidget::frameWarning() const
 {
-    if (frame == m_world)
+    if (!m_worldAssumed)
+        return QString();
+    return tr("World frame assumed %1: the module's LOG COMCONFIG reply names no COORD")
+        .arg(QLatin1String(model::worldFrameName(m_world)));
+}
+
+void AttitudeWidget::setWorldFrame(model::WorldFrame frame, bool assumed)
+{
+    if (frame == m_world && assumed == m_worldAssumed)
         return;
     m_world = frame;
+    m_worldAssumed = assumed;
+    setToolTip(frameWarning().isEmpty() ? tr("Drag to turn the view, double-click to reset it")
+                                        : frameWarning() + QLatin1Char('\n') + tr("Drag to turn the view, double-click to reset it"));
     if (m_hasData)
         m_quat = inScene(m_input);
     retranslate();
@@ -258,6 +271,8 @@ QString AttitudeWidget::readoutText() const
     if (!m_hasData)
         return m_noDataText;
     QString text = m_frameTitle;
+    if (m_worldAssumed)
+        text += QLatin1Char('\n') + frameWarning();
     for (size_t i = 0; i < m_readoutNames.size(); ++i)
         text += QLatin1Char('\n') + m_readoutNames[i] + QLatin1Char(' ') + m_readoutValues[i];
     return text;
@@ -320,11 +335,12 @@ void AttitudeWidget::retranslate()
         m_worldLabels[0].setText(tr("N (x)"));
         m_worldLabels[1].setText(tr("E (y)"));
         m_worldLabels[2].setText(tr("D (z)"));
-        m_frameTitle = tr("NED 3-2-1");
+        m_frameTitle = m_worldAssumed ? tr("NED 3-2-1 (assumed)") : tr("NED 3-2-1");
     }
     m_noDataText = tr("No attitude yet");
     m_readoutNames = {tr("Roll"), tr("Pitch"), tr("Yaw"), tr("Heading")};
-    setToolTip(tr("Drag to turn the view, double-click to reset it"));
+    setToolTip(frameWarning().isEmpty() ? tr("Drag to turn the view, double-click to reset it")
+                                        : frameWarning() + QLatin1Char('\n') + tr("Drag to turn the view, double-click to reset it"));
     const QFont normal = font();
     m_boldFont = normal;
     m_boldFont.setBold(true);
@@ -644,6 +660,12 @@ void AttitudeWidget::paintReadouts(QPainter &p) const
         y += m_lineSpacing;
         p.drawStaticText(QPointF(left, y), m_nameStatic[i]);
         p.drawStaticText(QPointF(right - m_valueStatic[i].size().width(), y), m_valueStatic[i]);
+    }
+    if (m_worldAssumed) {
+        // The frame is ImuDesk's assumption, not the module's word: said under the scene, in amber.
+        p.setPen(QColor(0xb0, 0x60, 0x00));
+        p.drawText(QRectF(rect()).adjusted(kPanelMargin, 0, -kPanelMargin, -kPanelMargin),
+                   Qt::AlignLeft | Qt::AlignBottom | Qt::TextWordWrap, frameWarning());
     }
 }
 

@@ -78,8 +78,13 @@ public:
     // The last accepted quaternion as body -> ENU, normalised (identity before the first one).
     model::Quat quaternion() const { return m_quat; }
     // The module's world frame (identity.worldFrame); the last quaternion is taken again in it.
-    void setWorldFrame(model::WorldFrame frame);
+    // assumed: the module did not name it (identity.worldFrameAssumed: LOG COMCONFIG without
+    // COORD): the read-out's title says so and the view shows frameWarning().
+    void setWorldFrame(model::WorldFrame frame, bool assumed = false);
     model::WorldFrame worldFrame() const { return m_world; }
+    bool worldFrameAssumed() const { return m_worldAssumed; }
+    // Why the frame is in doubt ("" when the module named it), drawn under the read-out.
+    QString frameWarning() const;
     bool hasData() const { return m_hasData; }
     // Back to the "no data" state.
     void clear();
@@ -149,6 +154,7 @@ private:
     bool m_hasData = false;
     DisplayFrame m_frame = DisplayFrame::Enu;
     model::WorldFrame m_world = model::WorldFrame::Enu;
+    bool m_worldAssumed = false;
     double m_azimuth = kDefaultAzimuthDeg;
     double m_elevation = kDefaultElevationDeg;
 

@@ -273,7 +273,9 @@ void CanSettingsTable::onResult(const device::CanRequestResult &r)
             // object with no read, the one its reply confirmed).
             const uint32_t value = p.write ? p.raw : r.value;
             row.module = value;
-            if (s.readable)
+            if (s.readable && !p.write && s.words > 1) // a value of several registers (PNAME, R_H/R_L, SN)
+                module->setText(s.showWords(std::vector<uint32_t>(r.values.begin(), r.values.end())));
+            else if (s.readable)
                 module->setText(s.show(value));
             if (!row.edited)
                 setEditorValue(row, value);

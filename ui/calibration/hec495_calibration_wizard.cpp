@@ -158,6 +158,22 @@ void Hec495CalibrationWizard::buildRunPage()
     buttons->addWidget(m_save, 1, 1);
     buttons->addWidget(m_clearButton, 2, 0, 1, 2);
     side->addLayout(buttons);
+    // An automatic method's question before 0x09 (the module chose its points itself).
+    m_confirm = new QWidget;
+    auto *confirmLayout = new QVBoxLayout(m_confirm);
+    confirmLayout->setContentsMargins(0, 0, 0, 0);
+    m_confirmText = new QLabel;
+    m_confirmText->setWordWrap(true);
+    confirmLayout->addWidget(m_confirmText);
+    auto *confirmButtons = new QHBoxLayout;
+    m_confirmSave = new QPushButton(tr("Save to the compass"));
+    m_cancelSave = new QPushButton(tr("Not yet"));
+    m_cancelSave->setToolTip(tr("Keeps the run going: turn the compass to more targets, or stop without saving."));
+    confirmButtons->addWidget(m_confirmSave);
+    confirmButtons->addWidget(m_cancelSave);
+    confirmLayout->addLayout(confirmButtons);
+    m_confirm->hide();
+    side->addWidget(m_confirm);
     m_status = new QLabel;
     m_status->setWordWrap(true);
     side->addWidget(m_status);
@@ -178,7 +194,29 @@ void Hec495CalibrationWizard::buildRunPage()
     connect(m_collect, &QPushButton::clicked, this,
             [this] { send(RunState::Collecting, m_session.collectCalibrationPoint()); });
     connect(m_stop, &QPushButton::clicked, this, [this] { send(RunState::Stopping, m_session.stopCalibration()); });
-    connect(m_save, &QPushButton::clicked, this, [this] { send(RunState::Saving, m_session.saveCalibration()); });
+    connect(m_save, &QPushButton::clicked, this, [this] {
+        if (method() == CompassCalMethod::Manual) { // every point was the operator's own choice
+            send(RunState::Saving, m_session.saveCalibration());
+            return;
+        }
+        const int max = CompassPoseTracker::maxPoints(method());
+        m_confirmText->setText(
+            tr("The module collected %1 points (at most %2) by itself. Saving computes the calibration from them and "
+               "replaces the compass's current calibration; this cannot be undone. Save now?")
+                .arg(m_tracker.validPoints())
+                .arg(max));
+        m_confirm->show();
+        updateControls();
+    });
+    connect(m_confirmSave, &QPushButton::clicked, this, [this] {
+        m_confirm->hide();
+        send(RunState::Saving, m_session.saveCalibration());
+    });
+    connect(m_cancelSave, &QPushButton::clicked, this, [this] {
+        m_confirm->hide();
+        m_status->setText(tr("Not saved yet: the run goes on."));
+        updateControls();
+    });
     connect(m_clearButton, &QPushButton::clicked, this,
             [this] { send(RunState::Clearing, m_session.clearCalibration()); });
 }
@@ -417,7 +455,10 @@ void Hec495CalibrationWizard::updateControls()
     m_collect->setVisible(method() == CompassCalMethod::Manual);
     m_collect->setEnabled(idle && m_running && method() == CompassCalMethod::Manual);
     m_stop->setEnabled(idle && m_running);
-    m_save->setEnabled(idle && m_running);
+    m_save->setEnabled(idle && m_running && m_confirm->isHidden());
+    m_confirmSave->setEnabled(idle && m_running);
+    if (!m_running) // stopped, failed or closed meanwhile: nothing left to confirm
+        m_confirm->hide();
     m_clearButton->setEnabled(idle && !m_running);
 }
 

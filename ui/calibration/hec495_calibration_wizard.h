@@ -8,7 +8,9 @@
 //      Hec495Session::calibrationPoint), the live attitude from the session's SampleStore on
 //      a 30 Hz clock, the valid-point count, "Collect point" (0x67, manual method), Stop
 //      (0x12), Save (0x09) and Clear (0x10). Failures (FF replies, timeouts) are shown on
-//      the page with what to do.
+//      the page with what to do. An automatic method, whose points the module took by itself,
+//      asks before it saves: Save shows how many points were collected and that the compass's
+//      calibration will be replaced; only "Save to the compass" sends 0x09, "Not yet" goes on.
 //   3. Result page: FitErr and point count of the save reply (77 09 00 89 FitErr...), and the
 //      verdict: above 10 the manual says calibrate again, offered with one button.
 // A saved calibration is kept in the calibration history (runSaver()): the method, FitErr,
@@ -29,6 +31,7 @@ class QButtonGroup;
 class QLabel;
 class QProgressBar;
 class QPushButton;
+class QWidget;
 QT_END_NAMESPACE
 
 namespace imudesk::device {
@@ -68,6 +71,10 @@ public:
     QPushButton *collectButton() const { return m_collect; }
     QPushButton *stopButton() const { return m_stop; }
     QPushButton *saveButton() const { return m_save; }
+    // The confirmation an automatic method asks before it saves (hidden otherwise).
+    QWidget *saveConfirmation() const { return m_confirm; }
+    QPushButton *confirmSaveButton() const { return m_confirmSave; }
+    QPushButton *cancelSaveButton() const { return m_cancelSave; }
     QPushButton *clearButton() const { return m_clearButton; }
     QPushButton *againButton() const { return m_again; }
     CompassPoseView *poseView() const { return m_view; }
@@ -126,6 +133,10 @@ private:
     QPushButton *m_collect = nullptr;
     QPushButton *m_stop = nullptr;
     QPushButton *m_save = nullptr;
+    QWidget *m_confirm = nullptr;
+    QLabel *m_confirmText = nullptr;
+    QPushButton *m_confirmSave = nullptr;
+    QPushButton *m_cancelSave = nullptr;
     QPushButton *m_clearButton = nullptr;
     QLabel *m_result = nullptr;
     QPushButton *m_again = nullptr;

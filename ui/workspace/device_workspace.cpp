@@ -527,7 +527,7 @@ void DeviceWorkspace::onIdentityChanged(const model::DeviceIdentity &identity)
     m_identity = identity;
     m_shownTotal = ~quint64(0); // the identity decides whether MAIN_STATUS is shown
     // A module set to NWU (CONFIG IMU COORD 4): drawn and labelled in that frame.
-    m_attitude->setWorldFrame(identity.worldFrame);
+    m_attitude->setWorldFrame(identity.worldFrame, identity.worldFrameAssumed);
     m_valuesModel->setWorldFrame(identity.worldFrame);
     updateIdentityLabel();
     Q_EMIT titleChanged(title());
@@ -595,6 +595,8 @@ void DeviceWorkspace::updateIdentityLabel()
             parts << tr("firmware %1").arg(QString::fromStdString(m_identity->firmware->toString()));
         if (!m_identity->serial.empty())
             parts << tr("SN %1").arg(QString::fromStdString(m_identity->serial));
+        if (m_identity->worldFrameAssumed) // LOG COMCONFIG named no COORD
+            parts << tr("world frame %1 assumed").arg(QLatin1String(model::worldFrameName(m_identity->worldFrame)));
     }
     m_identityLabel->setText(parts.join(QStringLiteral(" · ")));
     m_identityLabel->setVisible(!parts.isEmpty());
@@ -605,6 +607,10 @@ void DeviceWorkspace::updateIdentityLabel()
             tip << tr("Build: %1").arg(QString::fromStdString(m_identity->build));
         if (m_identity->bootloader)
             tip << tr("Bootloader: %1").arg(QString::fromStdString(m_identity->bootloader->toString()));
+        if (m_identity->worldFrameAssumed)
+            tip << tr("The module's LOG COMCONFIG reply names no COORD: its attitude is drawn as %1, the default, "
+                      "which it did not confirm (CONFIG IMU COORD sets it)")
+                       .arg(QLatin1String(model::worldFrameName(m_identity->worldFrame)));
         m_identityLabel->setToolTip(tip.join(QLatin1Char('\n')));
     }
 }

@@ -103,7 +103,15 @@ bool CanDecoder::decodeJ1939(const CanFrame &f, DecodedFrame &d)
         d.protocol = CanProtocol::J1939;
         d.node = r.data.sourceAddress;
         const char *name = j1939::pgnName(r.data.pgn);
-        if (r.data.time) {
+        if (r.data.time && !r.data.time->dateKnown()) {
+            // No UTC: the frame's clock is the module's own (its running time), so it becomes no
+            // UTC time of day in the samples; the monitor says so.
+            const auto &t = *r.data.time;
+            d.meaning = tr("PGN %1 %2: date unknown, not UTC (module clock %3:%4:%5.%6)")
+                            .arg(QString::number(r.data.pgn, 16).toUpper(), QLatin1String(name))
+                            .arg(t.hour, 2, 10, QLatin1Char('0')).arg(t.minute, 2, 10, QLatin1Char('0'))
+                            .arg(t.second, 2, 10, QLatin1Char('0')).arg(t.ms, 3, 10, QLatin1Char('0'));
+        } else if (r.data.time) {
             const auto &t = *r.data.time;
             d.meaning = tr("PGN %1 %2: %3-%4-%5 %6:%7:%8.%9")
                             .arg(QString::number(r.data.pgn, 16).toUpper(), QLatin1String(name))

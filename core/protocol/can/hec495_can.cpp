@@ -49,6 +49,13 @@ int heartbeatPeriodMs(uint32_t n)
     return 100 * (int(n & 0xFF) + 1);
 }
 
+std::optional<uint8_t> heartbeatCode(int ms)
+{
+    if (ms < kMinHeartbeatMs || ms > kMaxHeartbeatMs)
+        return std::nullopt;
+    return uint8_t((ms + 50) / 100 - 1);
+}
+
 uint32_t pdoBase(int slot)
 {
     return slot >= 0 && slot < kPdoCount ? kBases[slot] : 0;

@@ -40,6 +40,12 @@ int baudFromCode(uint32_t code);  // 0 when unknown
 int codeFromBaud(int bitrate);    // -1 when unknown
 double rateHzFromCode(uint32_t code); // 0 = off / unknown
 int heartbeatPeriodMs(uint32_t n);
+// The N (0x1017's byte) of a heartbeat period: the manual's 100 ms * (N + 1) nearest to ms,
+// half-way up (350 ms: N = 3, 400 ms); nullopt outside 100 ms (N = 0) .. 25600 ms (N = 255):
+// the manual gives no "off".
+inline constexpr int kMinHeartbeatMs = 100;
+inline constexpr int kMaxHeartbeatMs = 25600;
+std::optional<uint8_t> heartbeatCode(int ms);
 
 // PDO slots, index 0..5 = 0x180, 0x280, 0x380, 0x480, 0x1C0, 0x2C0.
 inline constexpr int kPdoCount = 6;

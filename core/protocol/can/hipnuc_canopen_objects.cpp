@@ -11,6 +11,33 @@ uint16_t nodeIdObject(int major, int minor, int patch)
     return (major > 1 || (major == 1 && minor >= 7)) ? ObjNodeId : ObjNodeIdV166;
 }
 
+bool isNodeIdObject(uint16_t index)
+{
+    return index == ObjNodeId || index == ObjNodeIdV166;
+}
+
+CanFrame readRevision(uint8_t node) { return sdoRead(node, ObjIdentity, kSubRevision); }
+
+std::optional<uint16_t> nodeIdObjectOfRevision(uint32_t revision)
+{
+    if (revision == 0)
+        return std::nullopt;
+    return nodeIdObject(int(revision >> 16), int((revision >> 8) & 0xFF), int(revision & 0xFF));
+}
+
+bool isV166Revision(uint32_t revision)
+{
+    return revision != 0 && nodeIdObjectOfRevision(revision) == ObjNodeIdV166;
+}
+
+CanFrame retarget(const CanFrame &sdoRequest, uint16_t index)
+{
+    CanFrame f = sdoRequest;
+    f.data[1] = uint8_t(index & 0xFF); // CiA 301: the index follows the command byte, low byte first
+    f.data[2] = uint8_t(index >> 8);
+    return f;
+}
+
 CanFrame setNodeId(uint8_t node, uint8_t newId, uint16_t object) { return sdoWrite(node, object, 0, newId, 4); }
 CanFrame command(uint8_t node, CommandValue v) { return sdoWrite(node, ObjCommand, 0, v, 4); }
 CanFrame setBaud(uint8_t node, uint8_t code) { return sdoWrite(node, ObjBaud, 0, code, 4); }

@@ -4,6 +4,7 @@
 #include "can_frame.h"
 
 #include <cstdint>
+#include <optional>
 
 namespace imudesk::protocol::can::canopen::hipnuc {
 
@@ -27,6 +28,21 @@ enum CommandValue : uint32_t { CommandSave = 0x00, CommandFactory = 0x01, Comman
 
 // Node-ID object of a firmware version (major, minor, patch): 0x20A0 before 1.7.0.
 uint16_t nodeIdObject(int major, int minor, int patch);
+bool isNodeIdObject(uint16_t index); // 0x209C or 0x20A0
+
+// The firmware version a module reports: the identity object's revision number (0x1018:3),
+// major << 16 | minor << 8 | patch (the manuals name no version object; ImuDesk's CAN update
+// reads the same entry). 0 is no version.
+inline constexpr uint16_t ObjIdentity = 0x1018;
+inline constexpr uint8_t kSubRevision = 3;
+CanFrame readRevision(uint8_t node); // 40 18 10 03 00 00 00 00
+// The node-ID object of the firmware that revision names; nullopt for 0.
+std::optional<uint16_t> nodeIdObjectOfRevision(uint32_t revision);
+// Does the revision name a firmware of the v1.6.6 manual (before 1.7.0)? Its factory defaults
+// (0x2000 = 1) take effect at the next power-up (5.4.1) instead of at once (v1.7.1 8.28.44.22).
+bool isV166Revision(uint32_t revision);
+// The same expedited SDO request (a write or a read) addressed to another object.
+CanFrame retarget(const CanFrame &sdoRequest, uint16_t index);
 
 // The manual's requests, byte for byte.
 CanFrame setNodeId(uint8_t node, uint8_t newId, uint16_t object = ObjNodeId); // 23 9C 20 00 id 00 00 00

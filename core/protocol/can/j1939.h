@@ -57,6 +57,10 @@ uint32_t makeId(uint8_t priority, uint32_t pgn, uint8_t sa, uint8_t da = kBroadc
 
 struct UtcTime {
     int year = 0, month = 0, day = 0, hour = 0, minute = 0, second = 0, ms = 0;
+    // A module without UTC sends month 0 and day 0 (v1.6.6 6.1.1: year byte 20, month 0, day 0
+    // "when the UTC time cannot be obtained"; v1.7.1 7.21.31: month and day 0..12 / 0..31) and
+    // its running time in the hour, minute and second: such a frame is no UTC time.
+    bool dateKnown() const { return month >= 1 && month <= 12 && day >= 1 && day <= 31; }
     friend bool operator==(const UtcTime &, const UtcTime &) = default;
 };
 

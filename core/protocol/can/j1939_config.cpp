@@ -91,7 +91,9 @@ RegMessage triggerRequest(uint8_t da, uint8_t sa, uint32_t pgn)
 
 bool answers(const RegMessage &reply, const RegMessage &request)
 {
-    return reply.sa == request.da && reply.da == request.sa && reply.addr == request.addr && reply.cmd == request.cmd;
+    // A request to the broadcast address 255 is answered by every node, each from its own address.
+    return (request.da == kBroadcast || reply.sa == request.da) && reply.da == request.sa && reply.addr == request.addr
+        && reply.cmd == request.cmd;
 }
 
 QString describe(const RegMessage &m)

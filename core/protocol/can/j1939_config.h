@@ -3,6 +3,7 @@
 // 0x0CEF[DA][SA] carrying ADDR (u16) + CMD (0x03 read, 0x06 write) + STATUS + VAL (u32), all
 // little-endian; the device answers with the same layout from its address to the host's.
 #include "can_frame.h"
+#include "j1939.h"
 
 #include <QString>
 
@@ -61,7 +62,8 @@ RegMessage writeRequest(uint8_t da, uint8_t sa, uint16_t addr, uint32_t value);
 RegMessage intervalRequest(uint8_t da, uint8_t sa, uint32_t pgn, uint32_t ms);
 RegMessage triggerRequest(uint8_t da, uint8_t sa, uint32_t pgn);
 
-// Does reply answer request (from the addressed device to the requester, same ADDR and CMD)?
+// Does reply answer request (from the addressed device, or any device for a request to the
+// broadcast address 255, to the requester; same ADDR and CMD)?
 bool answers(const RegMessage &reply, const RegMessage &request);
 
 // What a configuration frame means, e.g. "write PGN FF37 interval = 100 ms".
