@@ -539,18 +539,23 @@
     </message>
     <message>
         <location line="+8"/>
-        <location line="+84"/>
+        <location line="+92"/>
         <source>HEC495 write 0x%1 confirmed</source>
         <translation>HEC495 写入 0x%1 已确认</translation>
     </message>
     <message>
-        <location line="-83"/>
-        <location line="+84"/>
+        <location line="-91"/>
+        <location line="+92"/>
         <source>HEC495 write %1</source>
         <translation>HEC495 写入 %1</translation>
     </message>
     <message>
-        <location line="-72"/>
+        <location line="-78"/>
+        <source>PGN %1 %2: date unknown, not UTC (module clock %3:%4:%5.%6)</source>
+        <translation>PGN %1 %2：日期未知，不是 UTC（模块时钟 %3:%4:%5.%6）</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>PGN %1 %2: %3-%4-%5 %6:%7:%8.%9</source>
         <translation>PGN %1 %2：%3-%4-%5 %6:%7:%8.%9</translation>
     </message>
@@ -623,7 +628,7 @@
 <context>
     <name>CanSettingCatalog</name>
     <message>
-        <location filename="../core/settings/can_setting_catalog.cpp" line="+82"/>
+        <location filename="../core/settings/can_setting_catalog.cpp" line="+83"/>
         <source>default</source>
         <translation>默认</translation>
     </message>
@@ -633,7 +638,7 @@
         <translation>反向</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+79"/>
         <source>UTC time (FF2F) interval</source>
         <translation>UTC 时间 (FF2F) 发送间隔</translation>
     </message>
@@ -683,60 +688,91 @@
         <translation>仅在启用 CAN FD 输出的模块上有效；手册未给出启用它的命令</translation>
     </message>
     <message>
-        <location line="-53"/>
+        <location line="-123"/>
         <source>CAN bit rate</source>
         <translation>CAN 波特率</translation>
     </message>
     <message>
-        <location line="+57"/>
-        <location line="+46"/>
+        <location line="+77"/>
+        <source>the serial port&apos;s baud rate; takes effect after save and reset</source>
+        <translation>串口波特率；保存并复位后生效</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>the Modbus address of the serial port</source>
+        <translation>串口的 Modbus 地址</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>6-axis (relative heading)</source>
+        <translation>6 轴（相对航向）</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>9-axis (absolute heading)</source>
+        <translation>9 轴（绝对航向）</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>v1.6.6: 0-4; v1.7.1: the URFR code (0x18 = 024 ...); the manual gives no read</source>
+        <translation>v1.6.6：0-4；v1.7.1：URFR 代码（0x18 = 024 ...）；手册未给出读取方法</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <location line="+233"/>
+        <source>read only</source>
+        <translation>只读</translation>
+    </message>
+    <message>
+        <location line="-204"/>
+        <location line="+47"/>
         <location line="+3"/>
         <source>takes effect after save and reset</source>
         <translation>保存并复位后生效</translation>
     </message>
     <message>
-        <location line="-48"/>
+        <location line="-49"/>
         <source>Source address (node ID)</source>
         <translation>源地址（节点 ID）</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+80"/>
+        <location line="+81"/>
         <source>Data output</source>
         <translation>数据输出</translation>
     </message>
     <message>
-        <location line="-78"/>
-        <location line="+66"/>
+        <location line="-79"/>
+        <location line="+67"/>
         <location line="+14"/>
         <source>off</source>
         <translation>关</translation>
     </message>
     <message>
-        <location line="-80"/>
-        <location line="+80"/>
+        <location line="-81"/>
+        <location line="+81"/>
         <source>on</source>
         <translation>开</translation>
     </message>
     <message>
-        <location line="-78"/>
-        <location line="+44"/>
+        <location line="-79"/>
+        <location line="+45"/>
         <source>Inclinometer X direction</source>
         <translation>倾角仪 X 轴方向</translation>
     </message>
     <message>
-        <location line="-42"/>
-        <location line="+44"/>
+        <location line="-43"/>
+        <location line="+45"/>
         <source>Inclinometer Y direction</source>
         <translation>倾角仪 Y 轴方向</translation>
     </message>
     <message>
-        <location line="-42"/>
+        <location line="-43"/>
         <source>Firmware version</source>
         <translation>固件版本</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+15"/>
         <source>TPDO%1 (%2) period</source>
         <translation>TPDO%1（%2）周期</translation>
     </message>
@@ -839,12 +875,12 @@
         <translation>重新上电后生效</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+20"/>
         <source>code %1 (not in the manual)</source>
         <translation>代码 %1（手册中没有）</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+39"/>
         <source>%1 is read only</source>
         <translation>%1 为只读</translation>
     </message>
@@ -1631,7 +1667,7 @@
 <context>
     <name>HEC495</name>
     <message>
-        <location filename="../core/protocol/can/hec495_can.cpp" line="+259"/>
+        <location filename="../core/protocol/can/hec495_can.cpp" line="+266"/>
         <source>node ID = %1</source>
         <translation>节点 ID = %1</translation>
     </message>
@@ -1961,7 +1997,7 @@
 <context>
     <name>J1939</name>
     <message>
-        <location filename="../core/protocol/can/j1939_config.cpp" line="+102"/>
+        <location filename="../core/protocol/can/j1939_config.cpp" line="+104"/>
         <source>PGN %1 interval</source>
         <translation>PGN %1 发送间隔</translation>
     </message>
@@ -4506,7 +4542,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>等待中的请求过多；请在其完成后重试</translation>
     </message>
     <message>
-        <location line="+56"/>
+        <location line="+65"/>
+        <source>no node answered &quot;%1&quot; to every node (address 255) within %2 ms: check the bit rate and the wiring</source>
+        <translation>%2 ms 内没有节点应答发往所有节点（地址 255）的“%1”：请检查波特率和接线</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>node %1 sent no data before &quot;%2&quot; either, so its effect cannot be seen: check the node ID</source>
         <translation>节点 %1 在“%2”之前也没有发送数据，因此看不到其效果：请检查节点 ID</translation>
     </message>
@@ -4516,12 +4557,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>节点 %1 在“%3”后 %2 ms 内没有发送数据：如果其 TPDO 等待 SYNC，请发送一个；否则请检查节点 ID、输出间隔以及模块是否上电</translation>
     </message>
     <message>
-        <location line="+89"/>
+        <location line="+94"/>
         <source>node %1 still sends data after &quot;%2&quot;: check the node ID</source>
         <translation>节点 %1 在“%2”之后仍在发送数据：请检查节点 ID</translation>
     </message>
     <message>
-        <location line="-96"/>
+        <location line="-101"/>
         <source>no answer within %1 ms: node %2 sent no PGN %3 after &quot;%4&quot; (a PGN its firmware or configuration does not send, or output off)</source>
         <translation>%1 ms 内没有应答：节点 %2 在“%4”之后没有发送 PGN %3（固件或配置不发送该 PGN，或输出已关闭）</translation>
     </message>
@@ -4536,7 +4577,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>无法发送“%1”：CAN 接口未连接</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+34"/>
         <source>the device refused &quot;%1&quot; (status %2)</source>
         <translation>设备拒绝了“%1”（状态 %2）</translation>
     </message>
@@ -4551,12 +4592,13 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>设备拒绝了“%1”：%2</translation>
     </message>
     <message>
-        <location line="+45"/>
+        <location line="+58"/>
         <source>&quot;%1&quot; read back %2, expected %3</source>
         <translation>“%1”回读值为 %2，应为 %3</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="-15"/>
+        <location line="+34"/>
         <source>%1: done</source>
         <translation>%1：完成</translation>
     </message>
@@ -4589,7 +4631,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>CAN</translation>
     </message>
     <message>
-        <location line="+89"/>
+        <location line="+117"/>
         <location line="+7"/>
         <source>register access needs a J1939 device</source>
         <translation>寄存器访问需要 J1939 设备</translation>
@@ -4605,17 +4647,17 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>读取寄存器</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+10"/>
         <source>write register 0x%1</source>
         <translation>写入寄存器 0x%1</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="-3"/>
         <source>write register</source>
         <translation>写入寄存器</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+8"/>
         <source>SDO read</source>
         <translation>SDO 读取</translation>
     </message>
@@ -4631,29 +4673,29 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
     <message>
         <location line="+2"/>
-        <location line="+12"/>
+        <location line="+20"/>
         <source>%1 cannot be read: %2</source>
         <translation>%1 无法读取：%2</translation>
     </message>
     <message>
-        <location line="-8"/>
-        <location line="+20"/>
+        <location line="-16"/>
+        <location line="+28"/>
         <source>%1 is a J1939 register: the device speaks another protocol</source>
         <translation>%1 是 J1939 寄存器：设备使用的是其他协议</translation>
     </message>
     <message>
-        <location line="-16"/>
-        <location line="+24"/>
+        <location line="-18"/>
+        <location line="+29"/>
         <source>%1 is a CANopen object: the device speaks another protocol</source>
         <translation>%1 是 CANopen 对象：设备使用的是其他协议</translation>
     </message>
     <message>
-        <location line="-13"/>
+        <location line="-16"/>
         <source>%1 is read only</source>
         <translation>%1 为只读</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+9"/>
         <location line="+8"/>
         <source>read back %1</source>
         <translation>读回 %1</translation>
@@ -4665,9 +4707,10 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>%1 = %2，已读回校验</translation>
     </message>
     <message>
-        <location line="-7"/>
+        <location line="-11"/>
+        <location line="+4"/>
         <location line="+8"/>
-        <location line="+9"/>
+        <location line="+11"/>
         <source>write %1</source>
         <translation>写入 %1</translation>
     </message>
@@ -4682,12 +4725,28 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>%1：HEC495 只接受一个字节</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-22"/>
+        <location line="+23"/>
         <source>%1 = %2, confirmed by the module&apos;s reply (it cannot be read back)</source>
         <translation>%1 = %2，已由模块应答确认（无法读回）</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="-125"/>
+        <source>read the firmware version</source>
+        <translation>读取固件版本</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source> (object 0x%1, firmware %2.%3.%4)</source>
+        <translation>（对象 0x%1，固件 %2.%3.%4）</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source> (object 0x%1: the module reports no firmware version)</source>
+        <translation>（对象 0x%1：模块未报告固件版本）</translation>
+    </message>
+    <message>
+        <location line="+106"/>
         <source>%1 cannot be written</source>
         <translation>%1 无法写入</translation>
     </message>
@@ -4743,14 +4802,14 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
     <message>
         <location line="+3"/>
-        <location line="+66"/>
+        <location line="+70"/>
         <location line="+30"/>
         <location line="+123"/>
         <source>the protocol is not known yet: choose it or wait for traffic</source>
         <translation>协议尚未确定：请选择协议，或等待总线上出现数据</translation>
     </message>
     <message>
-        <location line="-213"/>
+        <location line="-217"/>
         <source>the HEC495 rate code is 0 (off) to 6 (100 Hz)</source>
         <translation>HEC495 频率代码为 0（关闭）至 6（100 Hz）</translation>
     </message>
@@ -4785,7 +4844,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>设置传输类型</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+8"/>
+        <source>the HEC495&apos;s heartbeat is 100 ms x (N + 1): %1 to %2 ms (it cannot be turned off)</source>
+        <translation>HEC495 的心跳周期为 100 ms ×（N + 1）：%1 至 %2 ms（不能关闭）</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>the heartbeat needs a CANopen or HEC495 device and 0..65535 ms</source>
         <translation>心跳需要 CANopen 或 HEC495 设备，周期为 0..65535 ms</translation>
     </message>
@@ -5026,12 +5090,19 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>保存配置</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+8"/>
+        <location line="+1"/>
+        <location line="+8"/>
         <source>factory defaults</source>
         <translation>恢复出厂设置</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="-2"/>
+        <source> (firmware 1.6: they take effect at the next power-up)</source>
+        <translation>（固件 1.6：下次上电后生效）</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>a one-shot trigger needs a J1939 device and a data PGN</source>
         <translation>单次触发需要 J1939 设备和数据 PGN</translation>
     </message>
@@ -5148,12 +5219,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::device::HipnucSerialFamily</name>
     <message>
-        <location filename="../core/device/hipnuc_family.cpp" line="+186"/>
+        <location filename="../core/device/hipnuc_family.cpp" line="+201"/>
         <source>The device that came back on %1 is a different one (serial %2, before %3). Its data continues in this session.</source>
         <translation>%1 上重新出现的是另一台设备（序列号 %2，之前为 %3）。其数据将继续记录在本会话中。</translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+31"/>
         <source>no reply within %1 ms (the device ignores commands it does not know)</source>
         <translation>%1 ms 内无应答（设备不响应它不认识的指令）</translation>
     </message>
@@ -7886,7 +7957,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::AttitudeWidget</name>
     <message>
-        <location filename="../ui/attitude/attitude_widget.cpp" line="+305"/>
+        <location filename="../ui/attitude/attitude_widget.cpp" line="+320"/>
         <source>X</source>
         <translation>X</translation>
     </message>
@@ -7922,12 +7993,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>U (z)</translation>
     </message>
     <message>
-        <location line="-103"/>
+        <location line="-116"/>
         <source>ENU 3-1-2</source>
         <translation>ENU 3-1-2</translation>
     </message>
     <message>
-        <location line="+96"/>
+        <location line="+109"/>
         <location line="+10"/>
         <source>N (x)</source>
         <translation>N (x)</translation>
@@ -7938,12 +8009,27 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>W (y)</translation>
     </message>
     <message>
-        <location line="-97"/>
+        <location line="-110"/>
         <source>NWU 3-1-2</source>
         <translation>NWU 3-1-2</translation>
     </message>
     <message>
-        <location line="+107"/>
+        <location line="-1"/>
+        <source>NWU 3-1-2 (assumed)</source>
+        <translation>NWU 3-1-2（假定）</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>ENU 3-1-2 (assumed)</source>
+        <translation>ENU 3-1-2（假定）</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>World frame assumed %1: the module&apos;s LOG COMCONFIG reply names no COORD</source>
+        <translation>假定世界坐标系为 %1：模块的 LOG COMCONFIG 应答中没有 COORD</translation>
+    </message>
+    <message>
+        <location line="+113"/>
         <source>E (y)</source>
         <translation>E (y)</translation>
     </message>
@@ -7954,12 +8040,17 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
     <message>
         <location line="+1"/>
-        <location line="+378"/>
+        <location line="+385"/>
         <source>NED 3-2-1</source>
         <translation>NED 3-2-1</translation>
     </message>
     <message>
-        <location line="-376"/>
+        <location line="-385"/>
+        <source>NED 3-2-1 (assumed)</source>
+        <translation>NED 3-2-1（假定）</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>No attitude yet</source>
         <translation>尚无姿态数据</translation>
     </message>
@@ -7984,12 +8075,15 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>方位角</translation>
     </message>
     <message>
+        <location line="-108"/>
+        <location line="+1"/>
+        <location line="+108"/>
         <location line="+1"/>
         <source>Drag to turn the view, double-click to reset it</source>
         <translation>拖动以旋转视图，双击以复位</translation>
     </message>
     <message>
-        <location line="+382"/>
+        <location line="+388"/>
         <source>Reset view</source>
         <translation>复位视图</translation>
     </message>
@@ -9006,7 +9100,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>正在写入…</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+28"/>
         <source>verified</source>
         <translation>已校验</translation>
     </message>
@@ -9901,6 +9995,11 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>序列号 %1</translation>
     </message>
     <message>
+        <location line="+2"/>
+        <source>world frame %1 assumed</source>
+        <translation>假定世界坐标系 %1</translation>
+    </message>
+    <message>
         <location line="+6"/>
         <source>Product: %1</source>
         <translation>产品：%1</translation>
@@ -9916,7 +10015,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>引导程序：%1</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+2"/>
+        <source>The module&apos;s LOG COMCONFIG reply names no COORD: its attitude is drawn as %1, the default, which it did not confirm (CONFIG IMU COORD sets it)</source>
+        <translation>模块的 LOG COMCONFIG 应答中没有 COORD：其姿态按默认的 %1 显示，但模块并未确认（可用 CONFIG IMU COORD 设置）</translation>
+    </message>
+    <message>
+        <location line="+10"/>
         <location line="+9"/>
         <source>%1 baud</source>
         <translation>波特率 %1</translation>
@@ -10747,7 +10851,32 @@ Link load = bytes per second × 10 bits / baud rate.</source>
         <translation>擦除模块中保存的环境校准（0x10）。</translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+15"/>
+        <source>Save to the compass</source>
+        <translation>保存到罗盘</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Not yet</source>
+        <translation>暂不保存</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Keeps the run going: turn the compass to more targets, or stop without saving.</source>
+        <translation>继续本次校准：把罗盘转到更多目标姿态，或停止而不保存。</translation>
+    </message>
+    <message>
+        <location line="+33"/>
+        <source>The module collected %1 points (at most %2) by itself. Saving computes the calibration from them and replaces the compass&apos;s current calibration; this cannot be undone. Save now?</source>
+        <translation>模块已自动采集 %1 个点（最多 %2 个）。保存将据此计算校准并替换罗盘当前的校准，且无法撤销。现在保存吗？</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Not saved yet: the run goes on.</source>
+        <translation>尚未保存：校准继续进行。</translation>
+    </message>
+    <message>
+        <location line="+10"/>
         <source>Result</source>
         <translation>结果</translation>
     </message>
@@ -10874,7 +11003,7 @@ Link load = bytes per second × 10 bits / baud rate.</source>
         <translation>有效点：%1（至少 %2）</translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+38"/>
         <source>No calibration was saved.</source>
         <translation>未保存校准。</translation>
     </message>

@@ -539,18 +539,23 @@
     </message>
     <message>
         <location line="+8"/>
-        <location line="+84"/>
+        <location line="+92"/>
         <source>HEC495 write 0x%1 confirmed</source>
         <translation>HEC495 寫入 0x%1 已確認</translation>
     </message>
     <message>
-        <location line="-83"/>
-        <location line="+84"/>
+        <location line="-91"/>
+        <location line="+92"/>
         <source>HEC495 write %1</source>
         <translation>HEC495 寫入 %1</translation>
     </message>
     <message>
-        <location line="-72"/>
+        <location line="-78"/>
+        <source>PGN %1 %2: date unknown, not UTC (module clock %3:%4:%5.%6)</source>
+        <translation>PGN %1 %2：日期未知，不是 UTC（模組時鐘 %3:%4:%5.%6）</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>PGN %1 %2: %3-%4-%5 %6:%7:%8.%9</source>
         <translation>PGN %1 %2：%3-%4-%5 %6:%7:%8.%9</translation>
     </message>
@@ -623,7 +628,7 @@
 <context>
     <name>CanSettingCatalog</name>
     <message>
-        <location filename="../core/settings/can_setting_catalog.cpp" line="+82"/>
+        <location filename="../core/settings/can_setting_catalog.cpp" line="+83"/>
         <source>default</source>
         <translation>預設</translation>
     </message>
@@ -633,7 +638,7 @@
         <translation>反向</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+79"/>
         <source>UTC time (FF2F) interval</source>
         <translation>UTC 時間 (FF2F) 傳送間隔</translation>
     </message>
@@ -683,60 +688,91 @@
         <translation>僅在啟用 CAN FD 輸出的模組上有效；手冊未給出啟用它的命令</translation>
     </message>
     <message>
-        <location line="-53"/>
+        <location line="-123"/>
         <source>CAN bit rate</source>
         <translation>CAN 鮑率</translation>
     </message>
     <message>
-        <location line="+57"/>
-        <location line="+46"/>
+        <location line="+77"/>
+        <source>the serial port&apos;s baud rate; takes effect after save and reset</source>
+        <translation>串列埠鮑率；儲存並復位後生效</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>the Modbus address of the serial port</source>
+        <translation>串列埠的 Modbus 位址</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>6-axis (relative heading)</source>
+        <translation>6 軸（相對航向）</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>9-axis (absolute heading)</source>
+        <translation>9 軸（絕對航向）</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>v1.6.6: 0-4; v1.7.1: the URFR code (0x18 = 024 ...); the manual gives no read</source>
+        <translation>v1.6.6：0-4；v1.7.1：URFR 代碼（0x18 = 024 ...）；手冊未提供讀取方式</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <location line="+233"/>
+        <source>read only</source>
+        <translation>唯讀</translation>
+    </message>
+    <message>
+        <location line="-204"/>
+        <location line="+47"/>
         <location line="+3"/>
         <source>takes effect after save and reset</source>
         <translation>儲存並重設後生效</translation>
     </message>
     <message>
-        <location line="-48"/>
+        <location line="-49"/>
         <source>Source address (node ID)</source>
         <translation>來源位址（節點 ID）</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+80"/>
+        <location line="+81"/>
         <source>Data output</source>
         <translation>資料輸出</translation>
     </message>
     <message>
-        <location line="-78"/>
-        <location line="+66"/>
+        <location line="-79"/>
+        <location line="+67"/>
         <location line="+14"/>
         <source>off</source>
         <translation>關</translation>
     </message>
     <message>
-        <location line="-80"/>
-        <location line="+80"/>
+        <location line="-81"/>
+        <location line="+81"/>
         <source>on</source>
         <translation>開</translation>
     </message>
     <message>
-        <location line="-78"/>
-        <location line="+44"/>
+        <location line="-79"/>
+        <location line="+45"/>
         <source>Inclinometer X direction</source>
         <translation>傾角儀 X 軸方向</translation>
     </message>
     <message>
-        <location line="-42"/>
-        <location line="+44"/>
+        <location line="-43"/>
+        <location line="+45"/>
         <source>Inclinometer Y direction</source>
         <translation>傾角儀 Y 軸方向</translation>
     </message>
     <message>
-        <location line="-42"/>
+        <location line="-43"/>
         <source>Firmware version</source>
         <translation>韌體版本</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+15"/>
         <source>TPDO%1 (%2) period</source>
         <translation>TPDO%1（%2）週期</translation>
     </message>
@@ -839,12 +875,12 @@
         <translation>重新上電後生效</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+20"/>
         <source>code %1 (not in the manual)</source>
         <translation>代碼 %1（手冊中沒有）</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+39"/>
         <source>%1 is read only</source>
         <translation>%1 為唯讀</translation>
     </message>
@@ -1631,7 +1667,7 @@
 <context>
     <name>HEC495</name>
     <message>
-        <location filename="../core/protocol/can/hec495_can.cpp" line="+259"/>
+        <location filename="../core/protocol/can/hec495_can.cpp" line="+266"/>
         <source>node ID = %1</source>
         <translation>節點 ID = %1</translation>
     </message>
@@ -1961,7 +1997,7 @@
 <context>
     <name>J1939</name>
     <message>
-        <location filename="../core/protocol/can/j1939_config.cpp" line="+102"/>
+        <location filename="../core/protocol/can/j1939_config.cpp" line="+104"/>
         <source>PGN %1 interval</source>
         <translation>PGN %1 間隔</translation>
     </message>
@@ -4506,7 +4542,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>等待中的請求過多；請待其完成後再試</translation>
     </message>
     <message>
-        <location line="+56"/>
+        <location line="+65"/>
+        <source>no node answered &quot;%1&quot; to every node (address 255) within %2 ms: check the bit rate and the wiring</source>
+        <translation>%2 ms 內沒有節點回應發往所有節點（位址 255）的「%1」：請檢查鮑率與接線</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>node %1 sent no data before &quot;%2&quot; either, so its effect cannot be seen: check the node ID</source>
         <translation>節點 %1 在「%2」之前也沒有傳送資料，因此看不到其效果：請檢查節點 ID</translation>
     </message>
@@ -4516,12 +4557,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>節點 %1 在「%3」後 %2 ms 內沒有傳送資料：如果其 TPDO 等待 SYNC，請傳送一個；否則請檢查節點 ID、輸出間隔以及模組是否上電</translation>
     </message>
     <message>
-        <location line="+89"/>
+        <location line="+94"/>
         <source>node %1 still sends data after &quot;%2&quot;: check the node ID</source>
         <translation>節點 %1 在「%2」之後仍在傳送資料：請檢查節點 ID</translation>
     </message>
     <message>
-        <location line="-96"/>
+        <location line="-101"/>
         <source>no answer within %1 ms: node %2 sent no PGN %3 after &quot;%4&quot; (a PGN its firmware or configuration does not send, or output off)</source>
         <translation>%1 ms 內沒有回應：節點 %2 在「%4」之後沒有傳送 PGN %3（韌體或設定不傳送該 PGN，或輸出已關閉）</translation>
     </message>
@@ -4536,7 +4577,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>無法傳送「%1」：CAN 介面未連線</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+34"/>
         <source>the device refused &quot;%1&quot; (status %2)</source>
         <translation>裝置拒絕了「%1」（狀態 %2）</translation>
     </message>
@@ -4551,12 +4592,13 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>裝置拒絕了「%1」：%2</translation>
     </message>
     <message>
-        <location line="+45"/>
+        <location line="+58"/>
         <source>&quot;%1&quot; read back %2, expected %3</source>
         <translation>「%1」回讀值為 %2，預期為 %3</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="-15"/>
+        <location line="+34"/>
         <source>%1: done</source>
         <translation>%1：完成</translation>
     </message>
@@ -4589,7 +4631,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>CAN</translation>
     </message>
     <message>
-        <location line="+89"/>
+        <location line="+117"/>
         <location line="+7"/>
         <source>register access needs a J1939 device</source>
         <translation>暫存器存取需要 J1939 裝置</translation>
@@ -4605,17 +4647,17 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>讀取暫存器</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+10"/>
         <source>write register 0x%1</source>
         <translation>寫入暫存器 0x%1</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="-3"/>
         <source>write register</source>
         <translation>寫入暫存器</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+8"/>
         <source>SDO read</source>
         <translation>SDO 讀取</translation>
     </message>
@@ -4631,29 +4673,29 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
     <message>
         <location line="+2"/>
-        <location line="+12"/>
+        <location line="+20"/>
         <source>%1 cannot be read: %2</source>
         <translation>%1 無法讀取：%2</translation>
     </message>
     <message>
-        <location line="-8"/>
-        <location line="+20"/>
+        <location line="-16"/>
+        <location line="+28"/>
         <source>%1 is a J1939 register: the device speaks another protocol</source>
         <translation>%1 是 J1939 暫存器：裝置使用的是其他協定</translation>
     </message>
     <message>
-        <location line="-16"/>
-        <location line="+24"/>
+        <location line="-18"/>
+        <location line="+29"/>
         <source>%1 is a CANopen object: the device speaks another protocol</source>
         <translation>%1 是 CANopen 物件：裝置使用的是其他協定</translation>
     </message>
     <message>
-        <location line="-13"/>
+        <location line="-16"/>
         <source>%1 is read only</source>
         <translation>%1 為唯讀</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+9"/>
         <location line="+8"/>
         <source>read back %1</source>
         <translation>讀回 %1</translation>
@@ -4665,9 +4707,10 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>%1 = %2，已讀回校驗</translation>
     </message>
     <message>
-        <location line="-7"/>
+        <location line="-11"/>
+        <location line="+4"/>
         <location line="+8"/>
-        <location line="+9"/>
+        <location line="+11"/>
         <source>write %1</source>
         <translation>寫入 %1</translation>
     </message>
@@ -4682,12 +4725,28 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>%1：HEC495 只接受一個位元組</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-22"/>
+        <location line="+23"/>
         <source>%1 = %2, confirmed by the module&apos;s reply (it cannot be read back)</source>
         <translation>%1 = %2，已由模組應答確認（無法讀回）</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="-125"/>
+        <source>read the firmware version</source>
+        <translation>讀取韌體版本</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source> (object 0x%1, firmware %2.%3.%4)</source>
+        <translation>（物件 0x%1，韌體 %2.%3.%4）</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source> (object 0x%1: the module reports no firmware version)</source>
+        <translation>（物件 0x%1：模組未回報韌體版本）</translation>
+    </message>
+    <message>
+        <location line="+106"/>
         <source>%1 cannot be written</source>
         <translation>%1 無法寫入</translation>
     </message>
@@ -4743,14 +4802,14 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
     <message>
         <location line="+3"/>
-        <location line="+66"/>
+        <location line="+70"/>
         <location line="+30"/>
         <location line="+123"/>
         <source>the protocol is not known yet: choose it or wait for traffic</source>
         <translation>尚未得知協定：請選擇協定或等待匯流排上的資料</translation>
     </message>
     <message>
-        <location line="-213"/>
+        <location line="-217"/>
         <source>the HEC495 rate code is 0 (off) to 6 (100 Hz)</source>
         <translation>HEC495 頻率代碼為 0（關閉）到 6（100 Hz）</translation>
     </message>
@@ -4785,7 +4844,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>設定傳輸類型</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+8"/>
+        <source>the HEC495&apos;s heartbeat is 100 ms x (N + 1): %1 to %2 ms (it cannot be turned off)</source>
+        <translation>HEC495 的心跳週期為 100 ms ×（N + 1）：%1 至 %2 ms（無法關閉）</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>the heartbeat needs a CANopen or HEC495 device and 0..65535 ms</source>
         <translation>心跳需要 CANopen 或 HEC495 裝置以及 0..65535 ms</translation>
     </message>
@@ -5026,12 +5090,19 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>儲存配置</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+8"/>
+        <location line="+1"/>
+        <location line="+8"/>
         <source>factory defaults</source>
         <translation>恢復出廠設定</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="-2"/>
+        <source> (firmware 1.6: they take effect at the next power-up)</source>
+        <translation>（韌體 1.6：下次上電後生效）</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>a one-shot trigger needs a J1939 device and a data PGN</source>
         <translation>單次觸發需要 J1939 裝置和資料 PGN</translation>
     </message>
@@ -5148,12 +5219,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::device::HipnucSerialFamily</name>
     <message>
-        <location filename="../core/device/hipnuc_family.cpp" line="+186"/>
+        <location filename="../core/device/hipnuc_family.cpp" line="+201"/>
         <source>The device that came back on %1 is a different one (serial %2, before %3). Its data continues in this session.</source>
         <translation>%1 上重新出現的是另一台裝置（序號 %2，之前為 %3）。其資料將繼續記錄在此工作階段中。</translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+31"/>
         <source>no reply within %1 ms (the device ignores commands it does not know)</source>
         <translation>%1 ms 內無回應（裝置不回應它不認識的指令）</translation>
     </message>
@@ -7886,7 +7957,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::AttitudeWidget</name>
     <message>
-        <location filename="../ui/attitude/attitude_widget.cpp" line="+305"/>
+        <location filename="../ui/attitude/attitude_widget.cpp" line="+320"/>
         <source>X</source>
         <translation>X</translation>
     </message>
@@ -7922,12 +7993,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>U (z)</translation>
     </message>
     <message>
-        <location line="-103"/>
+        <location line="-116"/>
         <source>ENU 3-1-2</source>
         <translation>ENU 3-1-2</translation>
     </message>
     <message>
-        <location line="+96"/>
+        <location line="+109"/>
         <location line="+10"/>
         <source>N (x)</source>
         <translation>N (x)</translation>
@@ -7938,12 +8009,27 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>W (y)</translation>
     </message>
     <message>
-        <location line="-97"/>
+        <location line="-110"/>
         <source>NWU 3-1-2</source>
         <translation>NWU 3-1-2</translation>
     </message>
     <message>
-        <location line="+107"/>
+        <location line="-1"/>
+        <source>NWU 3-1-2 (assumed)</source>
+        <translation>NWU 3-1-2（假定）</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>ENU 3-1-2 (assumed)</source>
+        <translation>ENU 3-1-2（假定）</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>World frame assumed %1: the module&apos;s LOG COMCONFIG reply names no COORD</source>
+        <translation>假定世界座標系為 %1：模組的 LOG COMCONFIG 回覆中沒有 COORD</translation>
+    </message>
+    <message>
+        <location line="+113"/>
         <source>E (y)</source>
         <translation>E (y)</translation>
     </message>
@@ -7954,12 +8040,17 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
     <message>
         <location line="+1"/>
-        <location line="+378"/>
+        <location line="+385"/>
         <source>NED 3-2-1</source>
         <translation>NED 3-2-1</translation>
     </message>
     <message>
-        <location line="-376"/>
+        <location line="-385"/>
+        <source>NED 3-2-1 (assumed)</source>
+        <translation>NED 3-2-1（假定）</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>No attitude yet</source>
         <translation>尚無姿態資料</translation>
     </message>
@@ -7984,12 +8075,15 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>方位角</translation>
     </message>
     <message>
+        <location line="-108"/>
+        <location line="+1"/>
+        <location line="+108"/>
         <location line="+1"/>
         <source>Drag to turn the view, double-click to reset it</source>
         <translation>拖曳以旋轉檢視，按兩下以重設</translation>
     </message>
     <message>
-        <location line="+382"/>
+        <location line="+388"/>
         <source>Reset view</source>
         <translation>重設檢視</translation>
     </message>
@@ -9006,7 +9100,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>正在寫入…</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+28"/>
         <source>verified</source>
         <translation>已校驗</translation>
     </message>
@@ -9901,6 +9995,11 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>序號 %1</translation>
     </message>
     <message>
+        <location line="+2"/>
+        <source>world frame %1 assumed</source>
+        <translation>假定世界座標系 %1</translation>
+    </message>
+    <message>
         <location line="+6"/>
         <source>Product: %1</source>
         <translation>產品：%1</translation>
@@ -9916,7 +10015,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>開機載入程式：%1</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+2"/>
+        <source>The module&apos;s LOG COMCONFIG reply names no COORD: its attitude is drawn as %1, the default, which it did not confirm (CONFIG IMU COORD sets it)</source>
+        <translation>模組的 LOG COMCONFIG 回覆中沒有 COORD：其姿態按預設的 %1 顯示，但模組並未確認（可用 CONFIG IMU COORD 設定）</translation>
+    </message>
+    <message>
+        <location line="+10"/>
         <location line="+9"/>
         <source>%1 baud</source>
         <translation>波特率 %1</translation>
@@ -10747,7 +10851,32 @@ Link load = bytes per second × 10 bits / baud rate.</source>
         <translation>清除模組中儲存的環境校準（0x10）。</translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+15"/>
+        <source>Save to the compass</source>
+        <translation>儲存到羅盤</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Not yet</source>
+        <translation>暫不儲存</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Keeps the run going: turn the compass to more targets, or stop without saving.</source>
+        <translation>繼續本次校準：將羅盤轉到更多目標姿態，或停止而不儲存。</translation>
+    </message>
+    <message>
+        <location line="+33"/>
+        <source>The module collected %1 points (at most %2) by itself. Saving computes the calibration from them and replaces the compass&apos;s current calibration; this cannot be undone. Save now?</source>
+        <translation>模組已自動採集 %1 個點（最多 %2 個）。儲存將據此計算校準並取代羅盤目前的校準，且無法復原。現在儲存嗎？</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Not saved yet: the run goes on.</source>
+        <translation>尚未儲存：校準繼續進行。</translation>
+    </message>
+    <message>
+        <location line="+10"/>
         <source>Result</source>
         <translation>結果</translation>
     </message>
@@ -10874,7 +11003,7 @@ Link load = bytes per second × 10 bits / baud rate.</source>
         <translation>有效點：%1 個（至少 %2 個）</translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+38"/>
         <source>No calibration was saved.</source>
         <translation>未儲存任何校準。</translation>
     </message>
