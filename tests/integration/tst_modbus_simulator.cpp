@@ -292,7 +292,8 @@ private Q_SLOTS:
         // The registers hold the clockwise heading (0..360); the sample keeps the device's one
         // convention, ±180, as its other links.
         QVERIFY(std::abs(*blockOf(r).f32le(0x08) - (360.0 - sim::MotionModel::kStaticYawDeg)) < 0.01);
-        QVERIFY(std::abs(s.yaw - model::wrap180(360.0 - sim::MotionModel::kStaticYawDeg)) < 0.01);
+        QVERIFY(std::abs(s.headingDeg - model::wrap360(360.0 - sim::MotionModel::kStaticYawDeg)) < 0.01);
+        QVERIFY(std::abs(s.yaw - model::wrap180(sim::MotionModel::kStaticYawDeg)) < 0.01); // ENU, as every device
         // The manual's single-pitch request (0x0005, 2) answers the pitch float.
         const Outcome p = readRegs(*c, 1, reg::kHecPitchSingle, 2);
         QCOMPARE(p.error, QModbusDevice::NoError);

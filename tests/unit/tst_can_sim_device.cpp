@@ -1,5 +1,6 @@
 // The simulated CAN device without a bus: J1939 configuration, CANopen SDO/SYNC/NMT and the
 // HEC495 SDO writes answer as the manuals describe; periodic output follows the settings.
+#include "model/attitude.h"
 #include "protocol/can/canopen.h"
 #include "protocol/can/hec495_can.h"
 #include "protocol/can/hipnuc_canopen_objects.h"
@@ -232,9 +233,12 @@ private Q_SLOTS:
             double expected = serial.trueHeadingAt(int64_t(t * 1e6));
             if (expected > 180)
                 expected -= 360;
-            double diff = std::abs(s.yaw - expected);
+            // The heading as its own quantity, and the world frame's yaw its opposite (issue 53 point 7).
+            QVERIFY(s.has(model::FieldHeading));
+            QVERIFY(std::abs(model::wrap180(s.headingDeg + s.yaw)) < 1e-6);
+            double diff = std::abs(model::wrap180(s.headingDeg) - expected);
             diff = std::min(diff, 360 - diff);
-            QVERIFY2(diff < 0.01, qPrintable(QStringLiteral("t %1: CAN %2, serial %3").arg(t).arg(s.yaw).arg(expected)));
+            QVERIFY2(diff < 0.01, qPrintable(QStringLiteral("t %1: CAN %2, serial %3").arg(t).arg(s.headingDeg).arg(expected)));
             QVERIFY(s.has(model::FieldMagRelative) && !s.has(model::FieldMag));
             const double horizontal = std::hypot(s.magRelative.x, s.magRelative.y);
             QVERIFY2(horizontal > 0.3 && horizontal < 3, qPrintable(QString::number(horizontal))); // about 1, not uT

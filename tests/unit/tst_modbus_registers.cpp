@@ -310,7 +310,8 @@ private Q_SLOTS:
             QVERIFY(s.has(imudesk::model::FieldEuler));
             QVERIFY(std::abs(s.pitch - 3.5) < 1e-5);
             QVERIFY(std::abs(s.roll + 20.4) < 1e-5);
-            QVERIFY(std::abs(s.yaw - 89.3) < 1e-5);
+            QVERIFY(std::abs(s.headingDeg - 89.3) < 1e-5); // the compass's heading, clockwise
+            QVERIFY(std::abs(s.yaw + 89.3) < 1e-5);        // the world frame's yaw (ENU, issue 53 point 7)
             // Encoding the floats back gives the manual's bytes.
             std::vector<uint16_t> regs;
             for (double a : angles) {

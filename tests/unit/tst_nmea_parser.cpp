@@ -147,7 +147,9 @@ private Q_SLOTS:
         QVERIFY(s->has(imudesk::model::FieldPosition) && s->has(imudesk::model::FieldEuler)
                 && s->has(imudesk::model::FieldVelocity) && s->has(imudesk::model::FieldGnss));
         QCOMPARE(s->latitudeDeg, -31.208333);
-        QCOMPARE(s->yaw, 35.25);
+        QCOMPARE(s->headingDeg, 35.25); // clockwise from true north
+        QVERIFY(s->headingTrue);
+        QCOMPARE(s->yaw, -35.25); // the world frame's yaw, ENU (issue 53 point 7)
         QCOMPARE(s->velEnu.y, 2.0);
         QCOMPARE(s->gnssQuality, 4);
         QCOMPARE(s->utcTimeOfDayS, 8 * 3600 + 12 * 60 + 33.4);

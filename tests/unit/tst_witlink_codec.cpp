@@ -317,7 +317,8 @@ private Q_SLOTS:
         QCOMPARE(s.magRollDeg, 45.0);
         QCOMPARE(s.pitch, -12.5);
         QCOMPARE(s.roll, 33.25);
-        QCOMPARE(s.yaw, -170.75);
+        QCOMPARE(s.headingDeg, 189.25); // the record's -170.75, clockwise 0..360
+        QCOMPARE(s.yaw, 170.75);        // the world frame's yaw, ENU (issue 53 point 7)
         QCOMPARE(s.gyr.z, 30.0);
         QCOMPARE(s.deviceTimeMs, 123456.0);
         QCOMPARE(s.hostTimeNs, int64_t(42));
