@@ -3485,59 +3485,57 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>SampleCsv</name>
     <message>
-        <location filename="../core/calib/sample_csv.cpp" line="+34"/>
-        <location line="+82"/>
+        <location filename="../core/calib/sample_csv.cpp" line="+26"/>
         <source>line %1 is longer than %2 characters</source>
         <translation>第 %1 行超过 %2 个字符</translation>
     </message>
     <message>
-        <location line="-74"/>
-        <location line="+82"/>
+        <location line="+8"/>
         <source>line %1 has more than %2 columns</source>
         <translation>第 %1 行超过 %2 列</translation>
     </message>
     <message>
-        <location line="-77"/>
+        <location line="+31"/>
         <source>line %1: the header has an empty column name</source>
         <translation>第 %1 行：表头中有空列名</translation>
     </message>
     <message>
         <location line="+4"/>
-        <location line="+101"/>
+        <location line="+86"/>
         <source>line %1: a header row of column names is required (e.g. mag_x,mag_y,mag_z)</source>
         <translation>第 %1 行：需要一行列名作为表头（例如 mag_x,mag_y,mag_z）</translation>
     </message>
     <message>
-        <location line="-93"/>
-        <location line="+104"/>
+        <location line="-78"/>
+        <location line="+89"/>
         <source>line %1 has %2 values, the header has %3 columns</source>
         <translation>第 %1 行有 %2 个值，表头有 %3 列</translation>
     </message>
     <message>
-        <location line="-99"/>
-        <location line="+120"/>
+        <location line="-84"/>
+        <location line="+105"/>
         <source>more than %1 rows</source>
         <translation>超过 %1 行</translation>
     </message>
     <message>
-        <location line="-113"/>
-        <location line="+121"/>
+        <location line="-98"/>
+        <location line="+106"/>
         <source>line %1, column %2: &apos;%3&apos; is not a number</source>
         <translation>第 %1 行第 %2 列：“%3”不是数字</translation>
     </message>
     <message>
-        <location line="-112"/>
-        <location line="+121"/>
+        <location line="-94"/>
+        <location line="+106"/>
         <source>the file is empty: a header row and samples are needed</source>
         <translation>文件为空：需要表头行和样本数据</translation>
     </message>
     <message>
-        <location line="-57"/>
+        <location line="-60"/>
         <source>line %1: the column %2 is missing (needed: %3); the header has: %4</source>
         <translation>第 %1 行：缺少列 %2（需要：%3）；表头为：%4</translation>
     </message>
     <message>
-        <location line="+89"/>
+        <location line="+92"/>
         <source>the columns mag_x, mag_y and mag_z (µT) are needed; the header has: %1</source>
         <translation>需要 mag_x、mag_y 和 mag_z 列（单位 µT）；表头中只有：%1</translation>
     </message>

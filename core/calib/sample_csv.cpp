@@ -4,6 +4,42 @@
 
 namespace imudesk::calib {
 
+namespace {
+
+// The rows of a CSV text: each line that is neither empty nor a comment ('#'), CR and spaces
+// trimmed, split at commas, with its line number. Stops (false) at a line longer than
+// kMaxLineLength or with more than maxColumns fields (failWith says which), or when row()
+// returns false (it has said why).
+template <typename Fail, typename Row>
+bool forEachRow(QByteArrayView data, int maxColumns, const Fail &failWith, const Row &row)
+{
+    qsizetype pos = 0;
+    int lineNo = 0;
+    while (pos < data.size()) {
+        qsizetype end = pos;
+        while (end < data.size() && data[end] != '\n')
+            ++end;
+        ++lineNo;
+        QByteArrayView line = data.sliced(pos, end - pos);
+        pos = end + 1;
+        if (line.size() > SampleCsv::kMaxLineLength)
+            return failWith(SampleCsv::tr("line %1 is longer than %2 characters").arg(lineNo).arg(SampleCsv::kMaxLineLength));
+        if (!line.isEmpty() && line.back() == '\r')
+            line.chop(1);
+        const QByteArray trimmed = line.toByteArray().trimmed();
+        if (trimmed.isEmpty() || trimmed.startsWith('#'))
+            continue;
+        const QList<QByteArray> fields = trimmed.split(',');
+        if (fields.size() > maxColumns)
+            return failWith(SampleCsv::tr("line %1 has more than %2 columns").arg(lineNo).arg(maxColumns));
+        if (!row(lineNo, fields))
+            return false;
+    }
+    return true;
+}
+
+} // namespace
+
 int SampleTable::columnIndex(const QString &name) const
 {
     for (int i = 0; i < columns.size(); ++i)
@@ -21,25 +57,7 @@ bool SampleCsv::parse(QByteArrayView data, SampleTable &out, QString *error)
     };
     SampleTable table;
     bool haveHeader = false;
-    qsizetype pos = 0;
-    int lineNo = 0;
-    while (pos < data.size()) {
-        qsizetype end = pos;
-        while (end < data.size() && data[end] != '\n')
-            ++end;
-        ++lineNo;
-        QByteArrayView line = data.sliced(pos, end - pos);
-        pos = end + 1;
-        if (line.size() > kMaxLineLength)
-            return failWith(tr("line %1 is longer than %2 characters").arg(lineNo).arg(kMaxLineLength));
-        if (!line.isEmpty() && line.back() == '\r')
-            line.chop(1);
-        const QByteArray trimmed = line.toByteArray().trimmed();
-        if (trimmed.isEmpty() || trimmed.startsWith('#'))
-            continue;
-        const QList<QByteArray> fields = trimmed.split(',');
-        if (fields.size() > kMaxColumns)
-            return failWith(tr("line %1 has more than %2 columns").arg(lineNo).arg(kMaxColumns));
+    const bool read = forEachRow(data, kMaxColumns, failWith, [&](int lineNo, const QList<QByteArray> &fields) {
         if (!haveHeader) {
             for (const QByteArray &f : fields) {
                 const QString name = QString::fromUtf8(f.trimmed());
@@ -53,7 +71,7 @@ bool SampleCsv::parse(QByteArrayView data, SampleTable &out, QString *error)
                 table.columns << name;
             }
             haveHeader = true;
-            continue;
+            return true;
         }
         if (fields.size() != table.columns.size())
             return failWith(tr("line %1 has %2 values, the header has %3 columns")
@@ -75,7 +93,10 @@ bool SampleCsv::parse(QByteArrayView data, SampleTable &out, QString *error)
             row.push_back(v);
         }
         table.rows.push_back(std::move(row));
-    }
+        return true;
+    });
+    if (!read)
+        return false;
     if (!haveHeader)
         return failWith(tr("the file is empty: a header row and samples are needed"));
     out = std::move(table);
@@ -103,25 +124,7 @@ bool SampleCsv::parseColumns(QByteArrayView data, const ColumnChoice &choice, Sa
     int keyIndex = -1;
     int headerColumns = 0;
     bool haveHeader = false;
-    qsizetype pos = 0;
-    int lineNo = 0;
-    while (pos < data.size()) {
-        qsizetype end = pos;
-        while (end < data.size() && data[end] != '\n')
-            ++end;
-        ++lineNo;
-        QByteArrayView line = data.sliced(pos, end - pos);
-        pos = end + 1;
-        if (line.size() > kMaxLineLength)
-            return failWith(tr("line %1 is longer than %2 characters").arg(lineNo).arg(kMaxLineLength));
-        if (!line.isEmpty() && line.back() == '\r')
-            line.chop(1);
-        const QByteArray trimmed = line.toByteArray().trimmed();
-        if (trimmed.isEmpty() || trimmed.startsWith('#'))
-            continue;
-        const QList<QByteArray> fields = trimmed.split(',');
-        if (fields.size() > kMaxFileColumns)
-            return failWith(tr("line %1 has more than %2 columns").arg(lineNo).arg(kMaxFileColumns));
+    const bool read = forEachRow(data, kMaxFileColumns, failWith, [&](int lineNo, const QList<QByteArray> &fields) {
         if (!haveHeader) {
             QStringList names;
             for (const QByteArray &f : fields)
@@ -157,7 +160,7 @@ bool SampleCsv::parseColumns(QByteArrayView data, const ColumnChoice &choice, Sa
             keyIndex = choice.keyColumn.isEmpty() ? -1 : columnOf(choice.keyColumn);
             headerColumns = int(fields.size());
             haveHeader = true;
-            continue;
+            return true;
         }
         if (fields.size() != headerColumns)
             return failWith(tr("line %1 has %2 values, the header has %3 columns")
@@ -170,7 +173,7 @@ bool SampleCsv::parseColumns(QByteArrayView data, const ColumnChoice &choice, Sa
                 found.keys << key;
             if (!choice.keyValue.isEmpty() && key != choice.keyValue) {
                 ++found.otherRows;
-                continue;
+                return true;
             }
         }
         bool allEmpty = true;
@@ -178,7 +181,7 @@ bool SampleCsv::parseColumns(QByteArrayView data, const ColumnChoice &choice, Sa
             allEmpty = allEmpty && fields.at(at).trimmed().isEmpty();
         if (allEmpty && !index.empty()) {
             ++found.emptyRows;
-            continue;
+            return true;
         }
         if (table.rows.size() >= kMaxRows)
             return failWith(tr("more than %1 rows").arg(kMaxRows));
@@ -196,7 +199,10 @@ bool SampleCsv::parseColumns(QByteArrayView data, const ColumnChoice &choice, Sa
             row.push_back(v);
         }
         table.rows.push_back(std::move(row));
-    }
+        return true;
+    });
+    if (!read)
+        return false;
     if (!haveHeader)
         return failWith(tr("the file is empty: a header row and samples are needed"));
     out = std::move(table);
