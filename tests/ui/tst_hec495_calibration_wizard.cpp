@@ -145,7 +145,7 @@ private Q_SLOTS:
         QVERIFY(!w.saveButton()->isEnabled());
         w.cancelSaveButton()->click();
         QVERIFY(w.saveConfirmation()->isHidden());
-        QTest::qWait(300);
+        QTest::qWait(300); // duration under test: "Not yet" sends no save request within 300 ms
         QCOMPARE(sent.size(), 0);
         QVERIFY(w.running() && !w.saved());
         bool active = false;
