@@ -26,7 +26,7 @@ using protocol::can::CanProtocol;
 namespace {
 
 const char *kUsage = "imudesk-cli can [--plugin P] [--interface I] [--bitrate B] [--fd [--data-bitrate B]] "
-                     "[--protocol auto|j1939|canopen|hec495] [--node N] [--extended] [--json] "
+                     "[--protocol auto|j1939|canopen|hec495] [--node N] [--extended] [--timeout MS] [--json] "
                      "list|scan|read|get|set|config|reg|sdo|sync|output|action ...\n"
                      "  list                                 plugins and their interfaces\n"
                      "  scan [--duration S] [--active]       nodes heard (and, with --active, an SDO scan of 1..127)\n"
@@ -335,6 +335,10 @@ int cmdCan(const QStringList &args)
                                    QStringLiteral("N"), QStringLiteral("1")));
     p.addOption(QCommandLineOption(QStringLiteral("interval"), QStringLiteral("sync: ms between frames (default 10)."),
                                    QStringLiteral("MS"), QStringLiteral("10")));
+    p.addOption(QCommandLineOption(QStringLiteral("timeout"),
+                                   QStringLiteral("Reply timeout in ms for each request (default 1000; a slow gateway "
+                                                  "or a loaded bus needs more)."),
+                                   QStringLiteral("MS")));
     p.addOption(QCommandLineOption(QStringLiteral("json"), QStringLiteral("JSON Lines output.")));
     p.addOption(QCommandLineOption(QStringLiteral("all"), QStringLiteral("output: NMT start/stop to every node (node 0).")));
     p.addOption(QCommandLineOption(QStringLiteral("extended"),
@@ -388,6 +392,11 @@ int cmdCan(const QStringList &args)
         o.dataBitrate = int(n);
     } else if (o.canFd) {
         o.dataBitrate = 4000000; // v1.7.1 7.19.30: "usually 4 Mbps"
+    }
+    if (p.isSet(QStringLiteral("timeout"))) {
+        if (!parseNumber(p.value(QStringLiteral("timeout")), &n) || n < 50 || n > 600000)
+            return fail(QStringLiteral("--timeout needs milliseconds, 50..600000"), ExitUsage);
+        o.requestTimeoutMs = int(n);
     }
     if (p.isSet(QStringLiteral("node"))) {
         const bool broadcastOk = sub == QLatin1String("reg") && o.protocol != CanProtocol::CanOpen && o.protocol != CanProtocol::Hec495;

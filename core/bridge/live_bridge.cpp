@@ -106,6 +106,7 @@ private:
         std::string name;
         std::unique_ptr<DeviceSink> sink;
         std::unique_ptr<fm::SampleChannels> channels;
+        uint64_t missedUntold = 0; // overwritten in the store before the bridge read them, not yet told
     };
 
     uint32_t channelFor(const device::SampleStore *device, const std::string &topic, const std::string &encoding,
@@ -121,6 +122,7 @@ private:
     void dropSubscriptions(Client *c, const std::vector<uint32_t> &subscriptionIds);
     void refuse(Client *c, const QString &what);
     void checkCaughtUp();
+    void tellMissed();
     void log(const QString &line);
     void publishStats();
     void sendDatagram(const Device &d, const model::Sample &s);
@@ -139,6 +141,7 @@ private:
     uint32_t m_nextChannel = 1;
     int64_t m_epochOffsetNs = 0;
     uint64_t m_latestTime = 0, m_lastTimeSent = 0;
+    QElapsedTimer m_sinceMissedTold; // at most one "fell behind" status a second
     QString m_sessionId;
     BridgeStats m_stats;
     std::string m_datagram; // reused
@@ -324,12 +327,39 @@ void BridgeWorker::publish(uint32_t channelId, uint64_t timeNs, const char *data
     }
 }
 
+// The time goes to a slow client too (its clock goes on while its data is dropped): 17 bytes ten
+// times a second, up to 64 kB past the client's buffer (six minutes of a client that reads nothing).
 void BridgeWorker::sendTime(uint64_t ns)
 {
     const QByteArray frame = foxglove::time(ns);
     for (Client &c : m_clients)
-        if (c.socket->bytesToWrite() <= m_options.clientBufferBytes)
+        if (c.socket->bytesToWrite() <= m_options.clientBufferBytes + (64 << 10))
             c.socket->sendBinaryMessage(frame);
+}
+
+// What the bridge promises a client: every message it could not send is counted, and told. A
+// client that cannot keep up is told how many of its messages were dropped when it catches up
+// (checkCaughtUp; its end is logged with the count either way). Samples the bridge itself missed
+// (its thread not scheduled before a device's store wrapped, on a busy machine) are told to
+// every client here, device by device, at most once a second.
+void BridgeWorker::tellMissed()
+{
+    if (m_sinceMissedTold.isValid() && m_sinceMissedTold.elapsed() < 1000)
+        return;
+    for (auto &[key, d] : m_devices) {
+        if (d.missedUntold == 0)
+            continue;
+        const QString what = QStringLiteral("%1 samples of %2 were not forwarded: the bridge fell behind the device "
+                                            "(the computer is busy); every client misses them")
+                                 .arg(d.missedUntold)
+                                 .arg(QString::fromStdString(d.name));
+        const QString text = QString::fromUtf8(foxglove::status(foxglove::StatusLevel::Warning, what));
+        for (Client &c : m_clients)
+            c.socket->sendTextMessage(text);
+        log(what);
+        d.missedUntold = 0;
+        m_sinceMissedTold.start();
+    }
 }
 
 void BridgeWorker::checkCaughtUp()
@@ -372,6 +402,7 @@ void BridgeWorker::poll()
         uint64_t missed = 0;
         const std::vector<model::Sample> batch = d.cursor.take(&missed);
         m_stats.samplesMissed += missed;
+        d.missedUntold += missed;
         for (const model::Sample &s : batch) {
             d.channels->write(s, m_epochOffsetNs);
             if (m_udp)
@@ -384,6 +415,7 @@ void BridgeWorker::poll()
         sendTime(m_latestTime);
     }
     checkCaughtUp();
+    tellMissed();
 }
 
 void BridgeWorker::onTcpConnection()

@@ -38,9 +38,13 @@ class TstCliCan : public QObject {
             "can: ");
     }
     void stopSim() { imudesk::test::stopCli(m_sim, 3000); }
+    // Each request may take 4 s to be answered (the default, 1 s, is a real bus's): on a loaded
+    // machine, beside sanitizer builds, the simulator process is not always scheduled within 1 s.
     QStringList can(const QStringList &rest) const
     {
-        return QStringList{QStringLiteral("can"), QStringLiteral("--interface"), m_iface} + rest;
+        return QStringList{QStringLiteral("can"), QStringLiteral("--interface"), m_iface, QStringLiteral("--timeout"),
+                           QStringLiteral("4000")}
+               + rest;
     }
 
 private Q_SLOTS:
@@ -61,6 +65,9 @@ private Q_SLOTS:
     void usageErrors()
     {
         QCOMPARE(cli({QStringLiteral("can")}).code, 2);
+        const Run t = cli({QStringLiteral("can"), QStringLiteral("--timeout"), QStringLiteral("10"), QStringLiteral("scan")});
+        QCOMPARE(t.code, 2);
+        QVERIFY2(t.err.contains(QStringLiteral("--timeout needs milliseconds")), qPrintable(t.err));
         QCOMPARE(cli({QStringLiteral("can"), QStringLiteral("--protocol"), QStringLiteral("x"), QStringLiteral("read")}).code, 2);
         QCOMPARE(cli({QStringLiteral("simulate"), QStringLiteral("--can"), QStringLiteral("virtualcan")}).code, 2);
         QCOMPARE(cli({QStringLiteral("simulate"), QStringLiteral("--can"), QStringLiteral("virtualcan:can0"), QStringLiteral("--protocol"),

@@ -27,6 +27,7 @@
 #include <QTcpSocket>
 #include <QUdpSocket>
 #include <QDateTime>
+#include <QElapsedTimer>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QWebSocket>
@@ -34,6 +35,7 @@
 
 #include <arpa/inet.h>
 #include <netinet/in.h>
+#include <poll.h>
 #include <sys/socket.h>
 #include <unistd.h>
 
@@ -115,6 +117,35 @@ public:
         return sendAll(clientTextFrame(QJsonDocument(QJsonObject{{QStringLiteral("op"), QStringLiteral("subscribe")},
                                                                  {QStringLiteral("subscriptions"), subs}})
                                            .toJson(QJsonDocument::Compact)));
+    }
+    // Reads what the server sent, for up to `ms`, until `until` appears in it (the server's text
+    // frames are not masked: their text is in the stream as it is). Returns what it read from the
+    // last `keep` bytes before the end on.
+    QByteArray readUntil(const QByteArray &until, int ms, qsizetype keep = 4096)
+    {
+        QByteArray tail;
+        QElapsedTimer t;
+        t.start();
+        char buf[65536];
+        while (t.elapsed() < ms) {
+            pollfd p{m_fd, POLLIN, 0};
+            if (::poll(&p, 1, 100) <= 0)
+                continue;
+            const ssize_t n = ::recv(m_fd, buf, sizeof buf, 0);
+            if (n <= 0)
+                break;
+            tail.append(buf, n);
+            if (tail.contains(until)) {
+                // Up to the end of the JSON object that holds it.
+                const qsizetype at = tail.indexOf(until);
+                const qsizetype end = tail.indexOf('}', at);
+                if (end >= 0)
+                    return tail.mid(std::max<qsizetype>(0, at - 200), end + 1 - std::max<qsizetype>(0, at - 200));
+            }
+            if (tail.size() > 2 * keep)
+                tail = tail.right(keep);
+        }
+        return {};
     }
     void close()
     {
@@ -225,6 +256,37 @@ private Q_SLOTS:
         for (auto &s : sims)
             test::stopCli(*s);
 
+        // What the bridge promises (docs: the live bridge): a message it could not send to a client
+        // is counted, logged at the client's end and told to the client when it catches up; a sample
+        // it missed itself (its thread not scheduled in time) is told to every client. On an idle
+        // machine nothing is dropped; on a loaded one (the sanitizer suite beside two builds)
+        // something may be, and then every message missing from a client's stamps is one the
+        // bridge counted: nothing is lost silently.
+        quint64 droppedForClients = 0;
+        const QRegularExpression sent(QStringLiteral("disconnected \\(1000, done\\): (\\d+) messages sent, (\\d+) dropped"));
+        int closed = 0;
+        for (auto m = sent.globalMatch(bridgeLog); m.hasNext();) {
+            droppedForClients += m.next().captured(2).toULongLong();
+            ++closed;
+        }
+        QCOMPARE(closed, int(protocols.size()));
+        const auto summary = QRegularExpression(QStringLiteral("(\\d+) missed; .*?(\\d+) dropped;")).match(bridgeOut);
+        QVERIFY2(summary.hasMatch(), qPrintable(bridgeOut));
+        // The devices' mean rate while bridged ("bridged S s: N samples from D device(s)").
+        const auto rate = QRegularExpression(QStringLiteral("bridged ([0-9.]+) s: (\\d+) samples from (\\d+) device")).match(bridgeOut);
+        QVERIFY2(rate.hasMatch() && rate.captured(3).toInt() == kDevices, qPrintable(bridgeOut));
+        const double deviceRate = rate.captured(2).toDouble() / kDevices / std::max(1.0, rate.captured(1).toDouble());
+        QVERIFY2(deviceRate > 500, qPrintable(bridgeOut));
+        quint64 missed = summary.captured(1).toULongLong(); // (the summary's figures are the bridge's last report)
+        quint64 missedTold = 0;
+        for (auto m = QRegularExpression(QStringLiteral("(\\d+) samples of \\S+ were not forwarded")).globalMatch(bridgeLog); m.hasNext();)
+            missedTold += m.next().captured(1).toULongLong();
+        QVERIFY2(missed == 0 || missedTold > 0, qPrintable(QStringLiteral("%1 samples missed, none told").arg(missed)));
+        missed = std::max(missed, missedTold);
+        // A sample is five messages of its device's (imu, mag, pressure, temperature, euler) and
+        // one of /tf.
+        constexpr quint64 kMessagesPerSample = 6;
+        quint64 missingInClients = 0;
         for (int i = 0; i < protocols.size(); ++i) {
             const QJsonObject &s = summaries[i];
             QCOMPARE(s.value(QStringLiteral("protocol")).toString(), protocols[i]);
@@ -237,41 +299,58 @@ private Q_SLOTS:
             const QJsonObject gaps = s.value(QStringLiteral("stampMissing")).toObject();
             const QJsonObject mismatch = s.value(QStringLiteral("stampMismatch")).toObject();
             const QJsonObject backwards = s.value(QStringLiteral("outOfOrder")).toObject();
+            // The warnings this client was sent: what it was told it lost.
+            quint64 toldDropped = 0;
+            for (const QJsonValue v : s.value(QStringLiteral("statuses")).toArray()) {
+                const auto m = QRegularExpression(QStringLiteral("^(\\d+) messages were dropped")).match(v.toObject().value(QStringLiteral("message")).toString());
+                if (m.hasMatch())
+                    toldDropped += m.captured(1).toULongLong();
+            }
+            QVERIFY(toldDropped <= droppedForClients);
             int imuTopics = 0;
             for (auto it = counts.begin(); it != counts.end(); ++it) {
-                QCOMPARE(gaps.value(it.key()).toInt(), 0);
+                const qint64 missing = gaps.value(it.key()).toInteger();
+                missingInClients += quint64(missing);
                 QCOMPARE(mismatch.value(it.key()).toInt(), 0);
                 if (it.key() != QLatin1String("/tf"))
                     QCOMPARE(backwards.value(it.key()).toInt(), 0);
                 if (!it.key().endsWith(QLatin1String("/imu")))
                     continue;
                 ++imuTopics;
-                // A minute at 1 kHz, from the moment the client was ready to its end.
-                QVERIFY2(it.value().toInteger() >= qint64(seconds) * 1000 - 200,
-                         qPrintable(QStringLiteral("%1: %2").arg(it.key()).arg(it.value().toInteger())));
+                // A minute of what the devices sent, from the moment the client was ready to its
+                // end: received, or counted by the bridge as missing. (The devices' rate is 1 kHz
+                // on an idle machine; a simulator process that a loaded machine does not schedule
+                // sends fewer, which the bridge cannot forward.)
+                QVERIFY2(double(it.value().toInteger() + missing) >= 0.95 * deviceRate * seconds - 200,
+                         qPrintable(QStringLiteral("%1: %2 + %3 missing, the devices sent %4 a second")
+                                        .arg(it.key()).arg(it.value().toInteger()).arg(missing).arg(deviceRate)));
                 // Every sample's five messages: the same count on each of the device's topics, but
                 // for the few ms between the subscriptions to them (each is subscribed to as it
-                // is advertised); the gaps above prove each topic whole from its first message.
+                // is advertised) and what was dropped.
                 const QString prefix = it.key().chopped(3);
-                for (const char *topic : {"mag", "pressure", "temperature", "euler"})
-                    QVERIFY2(std::abs(counts.value(prefix + QLatin1String(topic)).toInteger() - it.value().toInteger()) <= 100,
-                             qPrintable(prefix + QLatin1String(topic)));
+                for (const char *topic : {"mag", "pressure", "temperature", "euler"}) {
+                    const QString other = prefix + QLatin1String(topic);
+                    QVERIFY2(std::abs(counts.value(other).toInteger() + gaps.value(other).toInteger() - it.value().toInteger() - missing) <= 100,
+                             qPrintable(other));
+                }
             }
             QCOMPARE(imuTopics, kDevices);
-            // The bridge dropped nothing for either client, and sent each at least what it
-            // counted (it goes on sending until the client's close arrives; the client stops
-            // counting when it is told to stop).
-            const QRegularExpression sent(QStringLiteral("disconnected \\(1000, done\\): (\\d+) messages sent, (\\d+) dropped"));
-            int closed = 0;
-            for (auto m = sent.globalMatch(bridgeLog); m.hasNext();) {
-                const auto match = m.next();
-                QCOMPARE(match.captured(2).toLongLong(), 0);
-                ++closed;
-            }
-            QCOMPARE(closed, int(protocols.size()));
         }
-        QVERIFY2(bridgeOut.contains(QStringLiteral(", 0 missed;")) && bridgeOut.contains(QStringLiteral(", 0 dropped;")),
-                 qPrintable(bridgeOut));
+        // Nothing lost silently: every message missing from the clients' stamps was dropped by
+        // the bridge for a client or missed by it, and counted.
+        // (Frames that never reached ImuDesk, a pty that overflowed while the machine did not
+        // schedule the reader, are counted by the sessions and said in the bridge's summary.)
+        const auto lost = QRegularExpression(QStringLiteral("frames lost before the bridge \\(.*\\): (\\d+)")).match(bridgeOut);
+        QVERIFY2(lost.hasMatch(), qPrintable(bridgeOut));
+        const quint64 lostBefore = lost.captured(1).toULongLong();
+        QVERIFY2(missingInClients <= droppedForClients + (missed + lostBefore) * kMessagesPerSample * quint64(protocols.size()),
+                 qPrintable(QStringLiteral("%1 messages missing in the clients; the bridge counted %2 dropped, %3 samples "
+                                           "missed and %4 frames lost before it")
+                                .arg(missingInClients).arg(droppedForClients).arg(missed).arg(lostBefore)));
+        qInfo("bridge under this run's load: %llu messages dropped for the clients, %llu samples missed (%llu told), "
+              "%llu frames lost before it, %llu missing in the clients' stamps",
+              (unsigned long long)droppedForClients, (unsigned long long)missed, (unsigned long long)missedTold,
+              (unsigned long long)lostBefore, (unsigned long long)missingInClients);
     }
 
     // PlotJuggler's UDP JSON: a datagram per sample, one object with the sample's common time as
@@ -447,6 +526,19 @@ private Q_SLOTS:
 #else
             Q_UNUSED(rssStuck);
 #endif
+            // Told: once it reads again and catches up, the client gets a warning with the count
+            // of its messages that were dropped (never lost silently), and the bridge logs it.
+            const QByteArray told = stuck.readUntil("messages were dropped because this client", 30000);
+            QVERIFY2(!told.isEmpty(), "no warning of the dropped messages reached the client once it read again");
+            const auto m = QRegularExpression(QStringLiteral("\"level\":1,\"message\":\"(\\d+) messages were dropped"))
+                               .match(QString::fromUtf8(told));
+            QVERIFY2(m.hasMatch(), told.constData());
+            const quint64 toldCount = m.captured(1).toULongLong();
+            QVERIFY2(toldCount > 20000, qPrintable(QString::number(toldCount)));
+            // (the statistics are the bridge's report of twice a second)
+            QTRY_VERIFY2(toldCount <= bridge.stats().messagesDropped,
+                         qPrintable(QStringLiteral("told %1, counted %2").arg(toldCount).arg(bridge.stats().messagesDropped)));
+            QTRY_VERIFY(countLines(log, QStringLiteral("caught up after %1 messages were dropped").arg(toldCount)) == 1);
             stuck.close();
             QTRY_COMPARE_WITH_TIMEOUT(bridge.stats().clients, 0, 10000);
         }
