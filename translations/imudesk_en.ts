@@ -4,7 +4,7 @@
 <context>
     <name>CaptureExporter</name>
     <message numerus="yes">
-        <location filename="../core/record/capture_exporter.cpp" line="+572"/>
+        <location filename="../core/record/capture_exporter.cpp" line="+579"/>
         <source>%n damaged chunk(s) were skipped</source>
         <translation>
             <numerusform>%n damaged chunk was skipped</numerusform>
@@ -100,7 +100,7 @@
 <context>
     <name>imudesk::ui::ExportDialog</name>
     <message numerus="yes">
-        <location filename="../ui/recording/export_dialog.cpp" line="+199"/>
+        <location filename="../ui/recording/export_dialog.cpp" line="+268"/>
         <source>%n row(s) written to %1</source>
         <translation>
             <numerusform>%n row written to %1</numerusform>
@@ -182,7 +182,7 @@
 <context>
     <name>imudesk::ui::RecordingControls</name>
     <message numerus="yes">
-        <location filename="../ui/recording/recording_controls.cpp" line="+256"/>
+        <location filename="../ui/recording/recording_controls.cpp" line="+293"/>
         <source>%n frame(s)</source>
         <translation>
             <numerusform>%n frame</numerusform>

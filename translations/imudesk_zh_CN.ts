@@ -1194,7 +1194,7 @@
         <translation>该记录含有 %1 种帧类型；厂商格式为每种各写一个文件：%2</translation>
     </message>
     <message>
-        <location line="+208"/>
+        <location line="+215"/>
         <source>No output file was given.</source>
         <translation>未指定输出文件。</translation>
     </message>
@@ -4438,7 +4438,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::bridge::LiveBridge</name>
     <message>
-        <location filename="../core/bridge/live_bridge.cpp" line="+170"/>
+        <location filename="../core/bridge/live_bridge.cpp" line="+173"/>
         <source>Cannot listen on %1 port %2: %3</source>
         <translation>无法在 %1 的端口 %2 上监听：%3</translation>
     </message>
@@ -5501,7 +5501,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>链路已交给设备自己的会话</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+18"/>
         <source>the connection was closed</source>
         <translation>连接已关闭</translation>
     </message>
@@ -5593,8 +5593,8 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
     <message>
         <location line="+5"/>
-        <source>No permission to open %1. On Linux add your user to the dialout group (sudo usermod -aG dialout $USER), then log out and in again; or install the udev rule from ImuDesk&apos;s README (60-imudesk-serial.rules).</source>
-        <translation>没有打开 %1 的权限。在 Linux 上请将当前用户加入 dialout 组（sudo usermod -aG dialout $USER），然后注销并重新登录；或安装 ImuDesk README 中的 udev 规则（60-imudesk-serial.rules）。</translation>
+        <source>No permission to open %1. On Linux add your user to the dialout group (sudo usermod -aG dialout $USER), then log out and in again; or install the udev rule that docs/INSTALLING.md describes (60-imudesk-serial.rules).</source>
+        <translation>没有打开 %1 的权限。在 Linux 上请将当前用户加入 dialout 组（sudo usermod -aG dialout $USER），然后注销并重新登录；或安装 docs/INSTALLING.md 中所述的 udev 规则（60-imudesk-serial.rules）。</translation>
     </message>
     <message>
         <location line="+9"/>
@@ -9938,7 +9938,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::DeviceWorkspace</name>
     <message>
-        <location filename="../ui/workspace/device_workspace.cpp" line="+362"/>
+        <location filename="../ui/workspace/device_workspace.cpp" line="+363"/>
         <source>New connection</source>
         <translation>新连接</translation>
     </message>
@@ -9948,7 +9948,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>%2 上的 %1</translation>
     </message>
     <message>
-        <location line="+210"/>
+        <location line="+206"/>
+        <source>Frames arrive again on %1.</source>
+        <translation>%1 上又收到帧了。</translation>
+    </message>
+    <message>
+        <location line="+18"/>
         <source>Not connected</source>
         <translation>未连接</translation>
     </message>
@@ -10065,7 +10070,7 @@ Link load = bytes per second × 10 bits / baud rate.</source>
 链路负载 = 每秒字节数 × 10 位 / 波特率。</translation>
     </message>
     <message>
-        <location line="+49"/>
+        <location line="+55"/>
         <source>Console</source>
         <translation>控制台</translation>
     </message>
@@ -10163,17 +10168,17 @@ Link load = bytes per second × 10 bits / baud rate.</source>
 <context>
     <name>imudesk::ui::ExportDialog</name>
     <message>
-        <location filename="../ui/recording/export_dialog.cpp" line="+108"/>
+        <location filename="../ui/recording/export_dialog.cpp" line="+130"/>
         <source>Export %1</source>
         <translation>导出 %1</translation>
     </message>
     <message>
-        <location line="-83"/>
-        <source>The capture to export: a recording, a vendor CSV or a raw byte dump</source>
-        <translation>要导出的捕获：录制文件、厂商 CSV 或原始字节转储</translation>
+        <location line="-98"/>
+        <source>The capture to export: a recording, a vendor CSV or a raw byte dump; or a recorded session&apos;s folder (or its session.json): every device, aligned in one file</source>
+        <translation>要导出的捕获：录制文件、厂商 CSV 或原始字节转储；或已录制会话的文件夹（或其 session.json）：所有设备对齐写入一个文件</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Choose…</source>
         <translation>选择…</translation>
     </message>
@@ -10224,7 +10229,17 @@ Link load = bytes per second × 10 bits / baud rate.</source>
         <translation>导出</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+4"/>
+        <source>Show in folder</source>
+        <translation>在文件夹中显示</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Open the folder of the written file in the file manager</source>
+        <translation>在文件管理器中打开所写文件的文件夹</translation>
+    </message>
+    <message>
+        <location line="+7"/>
         <source>Capture:</source>
         <translation>捕获：</translation>
     </message>
@@ -10249,27 +10264,47 @@ Link load = bytes per second × 10 bits / baud rate.</source>
         <translation>结束：</translation>
     </message>
     <message>
-        <location line="+44"/>
+        <location line="+46"/>
+        <source>Export the session %1</source>
+        <translation>导出会话 %1</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>A recorded session is exported whole, every device aligned on the session&apos;s time base</source>
+        <translation>已录制的会话整体导出，所有设备按会话的时间基准对齐</translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>Export capture</source>
         <translation>导出捕获</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>Captures, vendor CSV and raw dumps (*.imucap *.csv *.bin *.raw *.log *.dat *.txt);;All files (*)</source>
-        <translation>捕获、厂商 CSV 和原始转储 (*.imucap *.csv *.bin *.raw *.log *.dat *.txt);;所有文件 (*)</translation>
+        <source>Captures, sessions, vendor CSV and raw dumps (*.imucap session.json *.csv *.bin *.raw *.log *.dat *.txt);;All files (*)</source>
+        <translation>捕获、会话、厂商 CSV 和原始转储 (*.imucap session.json *.csv *.bin *.raw *.log *.dat *.txt);;所有文件 (*)</translation>
     </message>
     <message>
-        <location line="+41"/>
+        <location line="+45"/>
         <source>Exporting…</source>
         <translation>正在导出…</translation>
     </message>
     <message>
-        <location line="+36"/>
+        <location line="+5"/>
+        <source>Cancel</source>
+        <translation>取消</translation>
+    </message>
+    <message>
+        <location line="+57"/>
         <source>Export cancelled; the partial files were removed.</source>
         <translation>导出已取消；不完整的文件已删除。</translation>
     </message>
+    <message>
+        <location line="+8"/>
+        <source>Close</source>
+        <translation>关闭</translation>
+    </message>
     <message numerus="yes">
-        <location line="+6"/>
+        <location line="+2"/>
         <source>%n row(s) written to %1</source>
         <translation>
             <numerusform>已向 %1 写入 %n 行</numerusform>
@@ -13280,7 +13315,7 @@ Default: %2</source>
 <context>
     <name>imudesk::ui::RecordingControls</name>
     <message>
-        <location filename="../ui/recording/recording_controls.cpp" line="+19"/>
+        <location filename="../ui/recording/recording_controls.cpp" line="+21"/>
         <source>Record</source>
         <translation>记录</translation>
     </message>
@@ -13300,7 +13335,22 @@ Default: %2</source>
         <translation>文件名；{date}、{time}、{product} 和 {serial} 会自动填入。以 .imucap 结尾：记录每个字节，便于之后回放和导出；以 .mcap 结尾：以 MCAP 记录解码后的采样，可由 PlotJuggler、Foxglove 和 Lichtblick 打开</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+6"/>
+        <source> s</source>
+        <translation> 秒</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>until Stop</source>
+        <translation>直到按下停止</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Stop the recording by itself after this many seconds (0: until you press Stop)</source>
+        <translation>录制到这么多秒后自动停止（0：直到按下“停止”）</translation>
+    </message>
+    <message>
+        <location line="+23"/>
         <source>Folder:</source>
         <translation>文件夹：</translation>
     </message>
@@ -13310,7 +13360,12 @@ Default: %2</source>
         <translation>文件：</translation>
     </message>
     <message>
-        <location line="+101"/>
+        <location line="+2"/>
+        <source>Stop after:</source>
+        <translation>自动停止：</translation>
+    </message>
+    <message>
+        <location line="+111"/>
         <source>Not recording: the device is not connected. Press Connect (Ctrl+K), then Record (Ctrl+R).</source>
         <translation>未在录制：设备未连接。请按“连接”(Ctrl+K)，再按“录制”(Ctrl+R)。</translation>
     </message>
@@ -13320,12 +13375,17 @@ Default: %2</source>
         <translation>文件夹 %1 不存在。请另选一个文件夹。</translation>
     </message>
     <message>
-        <location line="+43"/>
+        <location line="+47"/>
         <source>Recording to %1</source>
         <translation>正在记录到 %1</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+26"/>
+        <source>Saved %1 (stopped after %2 s, as set)</source>
+        <translation>已保存 %1（按设定在 %2 秒后停止）</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Saved %1</source>
         <translation>已保存 %1</translation>
     </message>
@@ -14605,7 +14665,12 @@ Edit it (Edit…) and start again.</source>
         <translation>打开记录(&amp;O)…</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+1"/>
+        <source>Play a recorded capture through the charts and views, as a live device (in a tab of its own when this one is connected); a recorded session&apos;s session.json opens every device, aligned</source>
+        <translation>像实时设备一样在图表和视图中回放录制的捕获（当前标签页已连接时在新标签页中打开）；已录制会话的 session.json 会打开所有设备并对齐</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>&amp;Import vendor CSV…</source>
         <translation>导入厂商 CSV(&amp;I)…</translation>
     </message>
@@ -14755,12 +14820,7 @@ Edit it (Edit…) and start again.</source>
         <translation>监听并配置 CAN 总线上的设备（J1939 或 CANopen）</translation>
     </message>
     <message>
-        <location line="-11"/>
-        <source>Play a recorded capture through the charts and views, as a live device; a recorded session&apos;s session.json opens every device, aligned</source>
-        <translation>像实时设备一样，通过图表和视图播放已录制的记录；打开已录制会话的 session.json 会以对齐方式打开每台设备</translation>
-    </message>
-    <message>
-        <location line="+12"/>
+        <location line="+1"/>
         <source>&amp;Scan the bus…</source>
         <translation>扫描总线(&amp;S)…</translation>
     </message>
@@ -14800,7 +14860,7 @@ Edit it (Edit…) and start again.</source>
         <translation>校准(&amp;C)</translation>
     </message>
     <message>
-        <location line="+65"/>
+        <location line="+66"/>
         <source>%1: its capture %2 is missing.</source>
         <translation>%1：其记录 %2 缺失。</translation>
     </message>
@@ -14836,17 +14896,17 @@ Edit it (Edit…) and start again.</source>
     </message>
     <message>
         <location line="+1"/>
+        <location line="+27"/>
         <source>Captures, sessions, vendor CSV and raw dumps (*.imucap session.json *.csv *.bin *.raw *.log *.dat *.txt);;All files (*)</source>
         <translation>记录、会话、厂商 CSV 和原始数据 (*.imucap session.json *.csv *.bin *.raw *.log *.dat *.txt);;所有文件 (*)</translation>
     </message>
     <message>
-        <location line="+26"/>
         <location line="+11"/>
         <source>Captures, vendor CSV and raw dumps (*.imucap *.csv *.bin *.raw *.log *.dat *.txt);;All files (*)</source>
         <translation>采集文件、厂商 CSV 和原始转储 (*.imucap *.csv *.bin *.raw *.log *.dat *.txt);;所有文件 (*)</translation>
     </message>
     <message>
-        <location line="-30"/>
+        <location line="-31"/>
         <source>Import vendor CSV</source>
         <translation>导入厂商 CSV</translation>
     </message>
@@ -14866,7 +14926,7 @@ Edit it (Edit…) and start again.</source>
         <translation>记录文件 (*.imucap)</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+12"/>
         <source>Export capture</source>
         <translation>导出记录文件</translation>
     </message>

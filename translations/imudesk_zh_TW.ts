@@ -1194,7 +1194,7 @@
         <translation>該記錄含有 %1 種幀類型；廠商格式為每種各寫一個檔案：%2</translation>
     </message>
     <message>
-        <location line="+208"/>
+        <location line="+215"/>
         <source>No output file was given.</source>
         <translation>未指定輸出檔案。</translation>
     </message>
@@ -4438,7 +4438,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::bridge::LiveBridge</name>
     <message>
-        <location filename="../core/bridge/live_bridge.cpp" line="+170"/>
+        <location filename="../core/bridge/live_bridge.cpp" line="+173"/>
         <source>Cannot listen on %1 port %2: %3</source>
         <translation>無法在 %1 的連接埠 %2 上監聽：%3</translation>
     </message>
@@ -5501,7 +5501,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>連結已交給裝置自己的工作階段</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+18"/>
         <source>the connection was closed</source>
         <translation>連線已關閉</translation>
     </message>
@@ -5593,8 +5593,8 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
     <message>
         <location line="+5"/>
-        <source>No permission to open %1. On Linux add your user to the dialout group (sudo usermod -aG dialout $USER), then log out and in again; or install the udev rule from ImuDesk&apos;s README (60-imudesk-serial.rules).</source>
-        <translation>沒有開啟 %1 的權限。在 Linux 上請將使用者加入 dialout 群組（sudo usermod -aG dialout $USER），然後登出再重新登入；或安裝 ImuDesk README 中的 udev 規則（60-imudesk-serial.rules）。</translation>
+        <source>No permission to open %1. On Linux add your user to the dialout group (sudo usermod -aG dialout $USER), then log out and in again; or install the udev rule that docs/INSTALLING.md describes (60-imudesk-serial.rules).</source>
+        <translation>沒有開啟 %1 的權限。在 Linux 上請將使用者加入 dialout 群組（sudo usermod -aG dialout $USER），然後登出再重新登入；或安裝 docs/INSTALLING.md 中所述的 udev 規則（60-imudesk-serial.rules）。</translation>
     </message>
     <message>
         <location line="+9"/>
@@ -9938,7 +9938,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::DeviceWorkspace</name>
     <message>
-        <location filename="../ui/workspace/device_workspace.cpp" line="+362"/>
+        <location filename="../ui/workspace/device_workspace.cpp" line="+363"/>
         <source>New connection</source>
         <translation>新連線</translation>
     </message>
@@ -9948,7 +9948,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>%2 上的 %1</translation>
     </message>
     <message>
-        <location line="+210"/>
+        <location line="+206"/>
+        <source>Frames arrive again on %1.</source>
+        <translation>%1 上又收到幀了。</translation>
+    </message>
+    <message>
+        <location line="+18"/>
         <source>Not connected</source>
         <translation>未連線</translation>
     </message>
@@ -10065,7 +10070,7 @@ Link load = bytes per second × 10 bits / baud rate.</source>
 鏈路負載 = 每秒位元組數 × 10 位元 / 波特率。</translation>
     </message>
     <message>
-        <location line="+49"/>
+        <location line="+55"/>
         <source>Console</source>
         <translation>主控台</translation>
     </message>
@@ -10163,17 +10168,17 @@ Link load = bytes per second × 10 bits / baud rate.</source>
 <context>
     <name>imudesk::ui::ExportDialog</name>
     <message>
-        <location filename="../ui/recording/export_dialog.cpp" line="+108"/>
+        <location filename="../ui/recording/export_dialog.cpp" line="+130"/>
         <source>Export %1</source>
         <translation>匯出 %1</translation>
     </message>
     <message>
-        <location line="-83"/>
-        <source>The capture to export: a recording, a vendor CSV or a raw byte dump</source>
-        <translation>要匯出的擷取：錄製檔、廠商 CSV 或原始位元組傾印</translation>
+        <location line="-98"/>
+        <source>The capture to export: a recording, a vendor CSV or a raw byte dump; or a recorded session&apos;s folder (or its session.json): every device, aligned in one file</source>
+        <translation>要匯出的擷取：錄製檔、廠商 CSV 或原始位元組傾印；或已錄製工作階段的資料夾（或其 session.json）：所有裝置對齊寫入一個檔案</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Choose…</source>
         <translation>選擇…</translation>
     </message>
@@ -10224,7 +10229,17 @@ Link load = bytes per second × 10 bits / baud rate.</source>
         <translation>匯出</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+4"/>
+        <source>Show in folder</source>
+        <translation>在資料夾中顯示</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Open the folder of the written file in the file manager</source>
+        <translation>在檔案管理員中開啟所寫檔案的資料夾</translation>
+    </message>
+    <message>
+        <location line="+7"/>
         <source>Capture:</source>
         <translation>擷取：</translation>
     </message>
@@ -10249,27 +10264,47 @@ Link load = bytes per second × 10 bits / baud rate.</source>
         <translation>結束：</translation>
     </message>
     <message>
-        <location line="+44"/>
+        <location line="+46"/>
+        <source>Export the session %1</source>
+        <translation>匯出工作階段 %1</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>A recorded session is exported whole, every device aligned on the session&apos;s time base</source>
+        <translation>已錄製的工作階段整體匯出，所有裝置依工作階段的時間基準對齊</translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>Export capture</source>
         <translation>匯出擷取</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>Captures, vendor CSV and raw dumps (*.imucap *.csv *.bin *.raw *.log *.dat *.txt);;All files (*)</source>
-        <translation>擷取、廠商 CSV 與原始傾印 (*.imucap *.csv *.bin *.raw *.log *.dat *.txt);;所有檔案 (*)</translation>
+        <source>Captures, sessions, vendor CSV and raw dumps (*.imucap session.json *.csv *.bin *.raw *.log *.dat *.txt);;All files (*)</source>
+        <translation>擷取、工作階段、廠商 CSV 與原始傾印 (*.imucap session.json *.csv *.bin *.raw *.log *.dat *.txt);;所有檔案 (*)</translation>
     </message>
     <message>
-        <location line="+41"/>
+        <location line="+45"/>
         <source>Exporting…</source>
         <translation>正在匯出…</translation>
     </message>
     <message>
-        <location line="+36"/>
+        <location line="+5"/>
+        <source>Cancel</source>
+        <translation>取消</translation>
+    </message>
+    <message>
+        <location line="+57"/>
         <source>Export cancelled; the partial files were removed.</source>
         <translation>匯出已取消；已刪除未完成的檔案。</translation>
     </message>
+    <message>
+        <location line="+8"/>
+        <source>Close</source>
+        <translation>關閉</translation>
+    </message>
     <message numerus="yes">
-        <location line="+6"/>
+        <location line="+2"/>
         <source>%n row(s) written to %1</source>
         <translation>
             <numerusform>已將 %n 列寫入 %1</numerusform>
@@ -13280,7 +13315,7 @@ Default: %2</source>
 <context>
     <name>imudesk::ui::RecordingControls</name>
     <message>
-        <location filename="../ui/recording/recording_controls.cpp" line="+19"/>
+        <location filename="../ui/recording/recording_controls.cpp" line="+21"/>
         <source>Record</source>
         <translation>開始記錄</translation>
     </message>
@@ -13300,7 +13335,22 @@ Default: %2</source>
         <translation>檔名；{date}、{time}、{product} 與 {serial} 會自動填入。以 .imucap 結尾：記錄每個位元組，便於之後重播與匯出；以 .mcap 結尾：以 MCAP 記錄解碼後的取樣，可由 PlotJuggler、Foxglove 與 Lichtblick 開啟</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+6"/>
+        <source> s</source>
+        <translation> 秒</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>until Stop</source>
+        <translation>直到按下停止</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Stop the recording by itself after this many seconds (0: until you press Stop)</source>
+        <translation>錄製到這麼多秒後自動停止（0：直到按下「停止」）</translation>
+    </message>
+    <message>
+        <location line="+23"/>
         <source>Folder:</source>
         <translation>資料夾：</translation>
     </message>
@@ -13310,7 +13360,12 @@ Default: %2</source>
         <translation>檔案：</translation>
     </message>
     <message>
-        <location line="+101"/>
+        <location line="+2"/>
+        <source>Stop after:</source>
+        <translation>自動停止：</translation>
+    </message>
+    <message>
+        <location line="+111"/>
         <source>Not recording: the device is not connected. Press Connect (Ctrl+K), then Record (Ctrl+R).</source>
         <translation>未在錄製：裝置未連線。請按「連線」(Ctrl+K)，再按「錄製」(Ctrl+R)。</translation>
     </message>
@@ -13320,12 +13375,17 @@ Default: %2</source>
         <translation>資料夾 %1 不存在。請選擇其他資料夾。</translation>
     </message>
     <message>
-        <location line="+43"/>
+        <location line="+47"/>
         <source>Recording to %1</source>
         <translation>正在記錄到 %1</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+26"/>
+        <source>Saved %1 (stopped after %2 s, as set)</source>
+        <translation>已儲存 %1（依設定在 %2 秒後停止）</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Saved %1</source>
         <translation>已儲存 %1</translation>
     </message>
@@ -14605,7 +14665,12 @@ Edit it (Edit…) and start again.</source>
         <translation>開啟記錄檔(&amp;O)…</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+1"/>
+        <source>Play a recorded capture through the charts and views, as a live device (in a tab of its own when this one is connected); a recorded session&apos;s session.json opens every device, aligned</source>
+        <translation>像即時裝置一樣在圖表與檢視中重播錄製的擷取（目前分頁已連線時在新分頁中開啟）；已錄製工作階段的 session.json 會開啟所有裝置並對齊</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>&amp;Import vendor CSV…</source>
         <translation>匯入原廠 CSV(&amp;I)…</translation>
     </message>
@@ -14755,12 +14820,7 @@ Edit it (Edit…) and start again.</source>
         <translation>監聽並設定 CAN 匯流排上的裝置（J1939 或 CANopen）</translation>
     </message>
     <message>
-        <location line="-11"/>
-        <source>Play a recorded capture through the charts and views, as a live device; a recorded session&apos;s session.json opens every device, aligned</source>
-        <translation>像即時裝置一樣，透過圖表和檢視播放已錄製的記錄；開啟已錄製工作階段的 session.json 會以對齊方式開啟每台裝置</translation>
-    </message>
-    <message>
-        <location line="+12"/>
+        <location line="+1"/>
         <source>&amp;Scan the bus…</source>
         <translation>掃描匯流排(&amp;S)…</translation>
     </message>
@@ -14800,7 +14860,7 @@ Edit it (Edit…) and start again.</source>
         <translation>校準(&amp;C)</translation>
     </message>
     <message>
-        <location line="+65"/>
+        <location line="+66"/>
         <source>%1: its capture %2 is missing.</source>
         <translation>%1：其記錄 %2 遺失。</translation>
     </message>
@@ -14836,17 +14896,17 @@ Edit it (Edit…) and start again.</source>
     </message>
     <message>
         <location line="+1"/>
+        <location line="+27"/>
         <source>Captures, sessions, vendor CSV and raw dumps (*.imucap session.json *.csv *.bin *.raw *.log *.dat *.txt);;All files (*)</source>
         <translation>記錄、工作階段、廠商 CSV 和原始資料 (*.imucap session.json *.csv *.bin *.raw *.log *.dat *.txt);;所有檔案 (*)</translation>
     </message>
     <message>
-        <location line="+26"/>
         <location line="+11"/>
         <source>Captures, vendor CSV and raw dumps (*.imucap *.csv *.bin *.raw *.log *.dat *.txt);;All files (*)</source>
         <translation>採集檔案、廠商 CSV 和原始轉儲 (*.imucap *.csv *.bin *.raw *.log *.dat *.txt);;所有檔案 (*)</translation>
     </message>
     <message>
-        <location line="-30"/>
+        <location line="-31"/>
         <source>Import vendor CSV</source>
         <translation>匯入原廠 CSV</translation>
     </message>
@@ -14866,7 +14926,7 @@ Edit it (Edit…) and start again.</source>
         <translation>記錄檔 (*.imucap)</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+12"/>
         <source>Export capture</source>
         <translation>匯出記錄檔</translation>
     </message>

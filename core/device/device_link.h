@@ -66,6 +66,8 @@ Q_SIGNALS:
     void identityChanged(const imudesk::model::DeviceIdentity &identity);
     void statsUpdated(const imudesk::device::SessionStats &stats);
     void errorOccurred(const QString &message);
+    // A condition of the stream shown while it lasts (not a modal error); empty: it is over.
+    void streamWarning(const QString &message);
     // Capability::TextCommands: the outcome of a command sent as text, or of a typed command a
     // view showed as text (by the same id); and lines the device sent that answer no command.
     void textReplied(quint64 id, const imudesk::device::TextReply &reply);

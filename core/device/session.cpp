@@ -25,6 +25,7 @@ Session::Session(std::unique_ptr<FamilyPlugin> family, std::unique_ptr<io::Trans
     connect(m_engine, &SessionEngine::identityChanged, this, &Session::identityChanged);
     connect(m_engine, &SessionEngine::statsUpdated, this, &Session::statsUpdated);
     connect(m_engine, &SessionEngine::errorOccurred, this, &Session::errorOccurred);
+    connect(m_engine, &SessionEngine::streamWarning, this, &Session::streamWarning);
     connect(m_engine, &SessionEngine::requestFinished, this, &Session::requestEnded);
     connect(m_engine, &SessionEngine::reconnected, this, &Session::reconnected);
     connect(m_engine, &SessionEngine::recordingStarted, this, &Session::recordingStarted);

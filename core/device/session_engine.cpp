@@ -156,6 +156,7 @@ void SessionEngine::close()
     if (!m_transport)
         return; // handed over (releaseTransport)
     m_family->stopping();
+    withdrawGarbageWarning();
     const bool waiting = m_reconnector.waiting() || m_state == SessionState::Reconnecting;
     stopActivity(tr("the connection was closed"));
     if (m_transport->isOpen()) {
@@ -423,17 +424,26 @@ void SessionEngine::watchForGarbage(const SessionStats &now, qint64 nowMs)
     if (decoded || now.bytesIn < m_lastStats.bytesIn + 64 || !damaged) {
         m_garbageSinceMs = -1;
         if (decoded)
-            m_garbageReported = false;
+            withdrawGarbageWarning();
         return;
     }
     if (m_garbageSinceMs < 0)
         m_garbageSinceMs = m_lastStatsMs;
     if (!m_garbageReported && nowMs - m_garbageSinceMs >= kGarbageReportMs) {
         m_garbageReported = true;
-        Q_EMIT errorOccurred(tr("Bytes keep arriving on %1 but none of them form a frame: the device probably runs at "
+        Q_EMIT streamWarning(tr("Bytes keep arriving on %1 but none of them form a frame: the device probably runs at "
                                 "another baud rate now. Disconnect and connect again with the baud rate set to Auto.")
                                  .arg(m_transport->address()));
     }
+}
+
+void SessionEngine::withdrawGarbageWarning()
+{
+    m_garbageSinceMs = -1;
+    if (!m_garbageReported)
+        return;
+    m_garbageReported = false;
+    Q_EMIT streamWarning(QString());
 }
 
 void SessionEngine::publishStats()

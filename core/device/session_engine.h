@@ -89,6 +89,9 @@ Q_SIGNALS:
     void identityChanged(const imudesk::model::DeviceIdentity &identity);
     void statsUpdated(const imudesk::device::SessionStats &stats);
     void errorOccurred(const QString &message);
+    // A condition of the stream worth a note that stays in view while it lasts (bytes that form
+    // no frame); an empty message withdraws it (frames again, or the port closed).
+    void streamWarning(const QString &message);
     void requestFinished(const imudesk::device::RequestResult &result);
     void reconnected();
     void recordingStarted(const QString &path);
@@ -110,6 +113,7 @@ private:
     void onReopened();
     void finishRecording(const QString &reason);
     void watchForGarbage(const SessionStats &now, qint64 nowMs);
+    void withdrawGarbageWarning();
     // Frames whole in the recording: what the capture file decodes to (recordingProgress).
     uint64_t recordedFrames() const;
 

@@ -38,7 +38,7 @@ QString SerialTransport::describeOpenError(const QString &portName, OpenErrorKin
         return QCoreApplication::translate("imudesk::io::SerialTransport",
                                            "No permission to open %1. On Linux add your user to the dialout "
                                            "group (sudo usermod -aG dialout $USER), then log out and in again; or "
-                                           "install the udev rule from ImuDesk's README (60-imudesk-serial.rules).")
+                                           "install the udev rule that docs/INSTALLING.md describes (60-imudesk-serial.rules).")
             .arg(portName);
     case OpenErrorKind::Other:
     case OpenErrorKind::None:

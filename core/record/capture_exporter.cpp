@@ -412,7 +412,8 @@ const char *CaptureExporter::tidyHeader(model::WorldFrame worldFrame)
         return "time_s,host_time_s,frame_tag,main_status,acc_x_mps2,acc_y_mps2,acc_z_mps2,gyr_x_radps,gyr_y_radps,"
                "gyr_z_radps,mag_x_uT,mag_y_uT,mag_z_uT,roll" + f + "_deg,pitch" + f + "_deg,yaw" + f + "_deg,quat" + f
             + "_w,quat" + f + "_x,quat" + f + "_y,quat" + f + "_z,pressure_Pa,temperature_degC,lat_deg,lon_deg,alt_m,"
-              "vel_e_mps,vel_n_mps,vel_u_mps,common_time_s,common_uncertainty_s,heading_deg";
+              "vel_e_mps,vel_n_mps,vel_u_mps,common_time_s,common_uncertainty_s,heading_deg,mag_rel_x,mag_rel_y,"
+              "mag_rel_z,mag_roll_deg";
     };
     static const std::string enu = header(""), nwu = header("_nwu");
     return (worldFrame == model::WorldFrame::Nwu ? nwu : enu).c_str();
@@ -490,6 +491,12 @@ void CaptureExporter::appendTidyRow(std::string &out, const model::Sample &s, in
     // A compass's heading, clockwise from north 0..360 (yaw above is the world frame's, ENU).
     if (s.has(FieldHeading))
         num(s.headingDeg);
+    else
+        gap(1);
+    // The HEC495's relative magnetic field (no unit) and magnetic roll (tool face, deg).
+    vec(FieldMagRelative, s.magRelative, 1.0);
+    if (s.has(FieldMagRoll))
+        num(s.magRollDeg);
     else
         gap(1);
     out += '\n';

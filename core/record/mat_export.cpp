@@ -28,9 +28,13 @@ std::vector<format::mat::MatFile::Field> fields()
             {"pressure", "Pa", {}},
             {"temperature", "degC", {}},
             {"position", "deg, deg, m", {"lat", "lon", "alt"}},
-            {"vel", "m/s", {"e", "n", "u"}}};
+            {"vel", "m/s", {"e", "n", "u"}},
+            // A compass's (HEC495): heading clockwise from north, its relative field, magnetic roll.
+            {"heading", "rad", {}},
+            {"mag_relative", "1", {"x", "y", "z"}},
+            {"mag_roll", "rad", {}}};
 }
-constexpr size_t kColumns = 1 + 1 + 1 + 1 + 1 + 3 + 3 + 3 + 3 + 4 + 1 + 1 + 3 + 3;
+constexpr size_t kColumns = 1 + 1 + 1 + 1 + 1 + 3 + 3 + 3 + 3 + 4 + 1 + 1 + 3 + 3 + 1 + 3 + 1;
 } // namespace
 
 MatExport::MatExport(int64_t originNs, int64_t epochOffsetNs)
@@ -80,6 +84,9 @@ bool MatExport::append(int device, const model::Sample &s)
     for (double p : {s.latitudeDeg, s.longitudeDeg, s.altitudeM})
         put(s.has(FieldPosition) ? p : kNaN);
     vec(FieldVelocity, s.velEnu, 1.0);
+    put(s.has(FieldHeading) ? s.headingDeg * kDegToRad : kNaN);
+    vec(FieldMagRelative, s.magRelative, 1.0);
+    put(s.has(FieldMagRoll) ? s.magRollDeg * kDegToRad : kNaN);
     return m_file.appendRow(device, m_row.data());
 }
 

@@ -1,5 +1,5 @@
 // imudesk-cli results over a station's results.sqlite (issue 53 point 17a): a query that finds
-// something exits 0, one that finds nothing exits 4 (ExitNotFound, README "imudesk-cli"), so a
+// something exits 0, one that finds nothing exits 4 (ExitNotFound, docs/CLI.md), so a
 // script tells "no such module" from a hit and from an error (1) or a usage mistake (2).
 #include "../common/cli_run.h"
 #include "../common/result_records.h"

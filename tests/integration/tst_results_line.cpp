@@ -70,8 +70,8 @@ private Q_SLOTS:
     {
         QString error;
         QVERIFY2(m_pg.start(&error), qPrintable(error));
-        // The line's set-up, as the README gives it: the schema by ImuDesk, a login role for the
-        // stations that may read and insert only.
+        // The line's set-up, as docs/RESULTS_DATABASE.md gives it: the schema by ImuDesk, a login
+        // role for the stations that may read and insert only.
         QVERIFY2(m_pg.psql(QStringLiteral("CREATE ROLE imudesk_station LOGIN"), nullptr, &error), qPrintable(error));
         const auto setup = test::runCli({QStringLiteral("results"), QStringLiteral("setup"), QStringLiteral("--results"), m_pg.url(),
                                          QStringLiteral("--station-role"), QStringLiteral("imudesk_station")});

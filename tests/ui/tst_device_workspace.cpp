@@ -17,6 +17,7 @@
 #include <QDockWidget>
 #include <QLabel>
 #include <QPushButton>
+#include <QSignalSpy>
 #include <QTest>
 
 #include <cmath>
@@ -150,6 +151,33 @@ private Q_SLOTS:
         Q_EMIT raw->statsUpdated(stats);
         QCOMPARE(label->text().count(QLatin1String("#ef6c00")), 2);
         QVERIFY(!ws.statusText().contains(QLatin1Char('<')));
+        ws.disconnectDevice();
+    }
+
+    // Bytes that form no frame (issue 53, 2): a note in the tab's status area while it lasts, not
+    // a modal error; it goes when frames arrive again, and the console keeps both ends.
+    void streamWarningIsANoteThatGoes()
+    {
+        ui::DeviceWorkspace ws;
+        ws.resize(1200, 800);
+        ws.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&ws));
+        auto link = std::make_unique<ScriptedLink>();
+        ScriptedLink *raw = link.get();
+        QVERIFY(ws.attachLink(std::move(link), QStringLiteral("Scripted bus")));
+        raw->connectNow(model::DeviceIdentity{});
+        QSignalSpy errors(&ws, &ui::DeviceWorkspace::errorReported);
+        auto *note = ws.findChild<QLabel *>(QStringLiteral("streamWarningLabel"));
+        QVERIFY(note);
+        QVERIFY(!note->isVisible());
+        const QString text = QStringLiteral("Bytes keep arriving on Scripted bus but none of them form a frame");
+        Q_EMIT raw->streamWarning(text);
+        QVERIFY(note->isVisible());
+        QCOMPARE(note->text(), text);
+        QVERIFY(errors.isEmpty()); // no modal: the main window shows errorReported as one
+        Q_EMIT raw->streamWarning(QString());
+        QVERIFY(!note->isVisible());
+        QVERIFY(errors.isEmpty());
         ws.disconnectDevice();
     }
 

@@ -2,6 +2,7 @@
 // files with the progress bar at 100 %, a time range limits the rows, and Cancel stops a
 // running export and removes the partial files.
 #include "../common/synthetic_capture.h"
+#include "../common/synthetic_session.h"
 #include "../common/test_main.h"
 #include "../common/layout_checks.h"
 #include "recording/export_dialog.h"
@@ -9,6 +10,8 @@
 
 #include <QComboBox>
 #include <QDir>
+#include <QDoubleSpinBox>
+#include <QStandardItemModel>
 #include <QLabel>
 #include <QLineEdit>
 #include <QProgressBar>
@@ -84,6 +87,57 @@ private Q_SLOTS:
         QCOMPARE(d.findChild<QProgressBar *>(QStringLiteral("progress"))->value(), 1000);
         QCOMPARE(lineCount(m_dir.filePath(file)), lines);
         QVERIFY(d.findChild<QLabel *>(QStringLiteral("status"))->text().contains(m_dir.filePath(file)));
+    }
+
+    // A success leaves nothing to cancel: the button reads Close (and closes), and the folder
+    // of what was written is one click away.
+    void afterASuccessCloseAndShowFolder()
+    {
+        ExportDialog d(m_small);
+        d.setFormat(Format::JsonLines);
+        d.setOutput(m_dir.filePath(QStringLiteral("closing.jsonl")));
+        auto *cancel = d.findChild<QPushButton *>(QStringLiteral("cancel"));
+        auto *show = d.findChild<QPushButton *>(QStringLiteral("showFolder"));
+        QVERIFY(cancel && show);
+        QVERIFY(show->isHidden());
+        d.show();
+        QSignalSpy finished(&d, &ExportDialog::exportFinished);
+        d.startExport();
+        QVERIFY(finished.wait(10000));
+        QVERIFY(finished.at(0).at(0).toBool());
+        QCOMPARE(cancel->text(), ui::ExportDialog::tr("Close"));
+        QVERIFY(show->isVisible());
+        QSignalSpy rejected(&d, &QDialog::rejected);
+        QTest::mouseClick(cancel, Qt::LeftButton);
+        QCOMPARE(rejected.size(), 1);
+        QVERIFY(!d.isVisible());
+    }
+
+    // A recorded session (its folder or its session.json) is exported whole from the window, as
+    // imudesk-cli export FOLDER does: every device's rows in one file; no range, no vendor CSV.
+    void exportsAWholeSession()
+    {
+        const QString folder = m_dir.filePath(QStringLiteral("session-1"));
+        record::SessionManifest manifest;
+        QString error;
+        QVERIFY2(test::writeTwoDeviceSession(folder, &manifest, &error), qPrintable(error));
+        ExportDialog d(QDir(folder).filePath(QStringLiteral("session.json")));
+        QVERIFY(d.isSession());
+        QCOMPARE(d.capture(), folder);
+        auto *output = d.findChild<QLineEdit *>(QStringLiteral("output"));
+        QCOMPARE(output->text(), folder + QStringLiteral(".csv"));
+        QVERIFY(!d.findChild<QDoubleSpinBox *>(QStringLiteral("from"))->isEnabled());
+        auto *format = d.findChild<QComboBox *>(QStringLiteral("format"));
+        auto *model = qobject_cast<QStandardItemModel *>(format->model());
+        QVERIFY(!model->item(format->findData(int(Format::VendorCsv)))->isEnabled());
+        d.setFormat(Format::JsonLines);
+        QSignalSpy finished(&d, &ExportDialog::exportFinished);
+        QTest::mouseClick(d.findChild<QPushButton *>(QStringLiteral("export")), Qt::LeftButton);
+        QVERIFY(finished.wait(20000));
+        QVERIFY2(finished.at(0).at(0).toBool(), qPrintable(finished.at(0).at(1).toString()));
+        // 1000 samples of A and 1500 of B, a line each.
+        QCOMPARE(lineCount(folder + QStringLiteral(".jsonl")), 2500);
+        QCOMPARE(d.findChild<QProgressBar *>(QStringLiteral("progress"))->value(), 1000);
     }
 
     void cancelRemovesPartialFiles()

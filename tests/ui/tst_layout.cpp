@@ -468,7 +468,7 @@ private Q_SLOTS:
 
     void screenshotRunLeavesSettingsAlone()
     {
-        // The GUI itself, as the README runs it: --screenshot must not write the user's layout.
+        // The GUI itself, as docs/WINDOW.md runs it: --screenshot must not write the user's layout.
         QTemporaryDir config;
         QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
         env.insert(QStringLiteral("XDG_CONFIG_HOME"), config.path());

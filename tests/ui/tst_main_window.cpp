@@ -589,6 +589,22 @@ private Q_SLOTS:
         QVERIFY(exporter->windowTitle().contains(QFileInfo(path).fileName()));
         exporter->close();
 
+        // Open capture stays offered in the connected tab (the capture opens in a tab of its
+        // own), and a capture opened so leaves the device's tab as it was.
+        QAction *open = w.findChild<QAction *>(QStringLiteral("openCaptureAction"));
+        QVERIFY(open);
+        QVERIFY(open->isEnabled());
+        QVERIFY(open->statusTip().contains(QStringLiteral("tab of its own")));
+        const int before = int(w.allWorkspaces().size());
+        QVERIFY(w.tools()->openCapture(path));
+        QCOMPARE(int(w.allWorkspaces().size()), before + 1);
+        QCOMPARE(ws->state(), imudesk::device::SessionState::Connected);
+        QVERIFY(open->isEnabled());
+        auto *tabs = w.findChild<QTabWidget *>();
+        QVERIFY(tabs);
+        tabs->setCurrentIndex(tabs->indexOf(ws));
+        QCOMPARE(w.currentWorkspace(), ws);
+
         // Not connected: Record says what to press instead of opening an idle panel.
         w.disconnectDevice();
         QTRY_VERIFY_WITH_TIMEOUT(ws->state() != imudesk::device::SessionState::Connected, 5000);

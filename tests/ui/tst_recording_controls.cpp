@@ -16,6 +16,9 @@
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QFile>
+#include <QSpinBox>
+#include <QElapsedTimer>
+#include <QFileInfo>
 #include <QTest>
 
 #include <csignal>
@@ -103,6 +106,37 @@ private Q_SLOTS:
         QVERIFY2(r.open(c.currentPath(), &error), qPrintable(error));
         record::CaptureReader::Chunk chunk;
         QCOMPARE(r.next(chunk), record::CaptureReader::Result::Chunk);
+    }
+
+    // "Stop after": the recording ends by itself after the seconds set, says so, and the field
+    // is remembered for the next panel (0: until Stop).
+    void stopsAfterTheDurationSet()
+    {
+        RecordingControls c;
+        c.setSession(m_session.get());
+        c.setFolder(m_dir.path());
+        c.setPattern(QStringLiteral("{product}-timed"));
+        auto *duration = c.findChild<QSpinBox *>(QStringLiteral("duration"));
+        QVERIFY(duration);
+        duration->setValue(2);
+        QCOMPARE(RecordingControls().durationS(), 2); // remembered
+        QSignalSpy started(&c, &RecordingControls::recordingStarted);
+        QSignalSpy stopped(&c, &RecordingControls::recordingStopped);
+        QElapsedTimer t;
+        t.start();
+        c.startRecording();
+        QVERIFY(started.wait(5000));
+        QVERIFY(!duration->isEnabled());
+        QVERIFY(stopped.wait(10000)); // nobody pressed Stop
+        const qint64 ms = t.elapsed();
+        QVERIFY2(ms >= 1900, qPrintable(QString::number(ms)));
+        QVERIFY(!c.isRecording());
+        QVERIFY(duration->isEnabled());
+        const QString message = c.findChild<QLabel *>(QStringLiteral("message"))->text();
+        QVERIFY2(message.contains(QStringLiteral("stopped after 2 s")), qPrintable(message));
+        QVERIFY(QFileInfo(c.currentPath()).size() > 0);
+        c.setDurationS(0);
+        QCOMPARE(RecordingControls().durationS(), 0);
     }
 
     // A pattern ending in .mcap records MCAP from the window: the file opens in the official

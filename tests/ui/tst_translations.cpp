@@ -72,6 +72,7 @@ const QSet<QString> &keptWords()
         QStringLiteral("Intel"), QStringLiteral("dialout"), QStringLiteral("KiB"), QStringLiteral("MiB"),
         QStringLiteral("GiB"), QStringLiteral("udev"), QStringLiteral("usermod"), QStringLiteral("sudo"),
         QStringLiteral("USER"), QStringLiteral("rules"), QStringLiteral("FitErr"), QStringLiteral("imucap"),
+        QStringLiteral("session"), // session.json, a recorded session's file name
         // Qt CAN plugin names, as QCanBus lists them.
         QStringLiteral("passthrucan"), QStringLiteral("tinycan"), QStringLiteral("vectorcan"),
         QStringLiteral("systeccan"), QStringLiteral("virtualcan"),

@@ -85,6 +85,35 @@ private Q_SLOTS:
         QCOMPARE(m_decoded.nmea.size(), size_t(30));
     }
 
+    // The HEC495's own quantities in the tidy CSV (issue 53, 13): its heading, its relative
+    // field (no unit) and its magnetic roll, named columns at the end; empty for a module.
+    void tidyCsvCarriesTheCompassQuantities()
+    {
+        const QStringList head = QString::fromLatin1(record::CaptureExporter::tidyHeader()).split(QLatin1Char(','));
+        QCOMPARE(head.mid(head.size() - 5), (QStringList{QStringLiteral("heading_deg"), QStringLiteral("mag_rel_x"),
+                                                          QStringLiteral("mag_rel_y"), QStringLiteral("mag_rel_z"),
+                                                          QStringLiteral("mag_roll_deg")}));
+        model::Sample s;
+        s.fields = model::FieldHeading | model::FieldMagRelative | model::FieldMagRoll;
+        s.headingDeg = 296.4;
+        s.magRelative = {0.5, -0.25, 0.75};
+        s.magRollDeg = 12.5;
+        std::string row;
+        record::CaptureExporter::appendTidyRow(row, s, 0, 0);
+        QStringList cells = QString::fromStdString(row).trimmed().split(QLatin1Char(','));
+        QCOMPARE(cells.size(), head.size());
+        QCOMPARE(cells.mid(cells.size() - 5), (QStringList{QStringLiteral("296.4"), QStringLiteral("0.5"),
+                                                            QStringLiteral("-0.25"), QStringLiteral("0.75"),
+                                                            QStringLiteral("12.5")}));
+        s.fields = model::FieldAcc; // a module: the compass's columns empty
+        row.clear();
+        record::CaptureExporter::appendTidyRow(row, s, 0, 0);
+        cells = QString::fromStdString(row).split(QLatin1Char(','));
+        QCOMPARE(cells.size(), head.size());
+        for (const QString &c : cells.mid(cells.size() - 5))
+            QVERIFY(c.trimmed().isEmpty());
+    }
+
     void vendorCsvLayout()
     {
         CaptureExporter::Options o;

@@ -332,7 +332,7 @@ private Q_SLOTS:
         QVERIFY(!SettingCatalog::availability(*yaw, v171).available);
     }
 
-    // A COMCONFIG reply as the simulator prints it (README "LOG COMCONFIG").
+    // A COMCONFIG reply as the simulator prints it (docs/DEVICES_AND_LINKS.md, "The simulator").
     void fromComConfig()
     {
         const std::map<std::string, std::string> kv = {

@@ -1,6 +1,13 @@
 #include "recording/export_dialog.h"
 
+#include "record/session_exporter.h"
+#include "record/session_manifest.h"
+
 #include <QComboBox>
+#include <QDesktopServices>
+#include <QDir>
+#include <QStandardItemModel>
+#include <QUrl>
 #include <QDialogButtonBox>
 #include <QDoubleSpinBox>
 #include <QFileDialog>
@@ -22,7 +29,8 @@ ExportDialog::ExportDialog(const QString &capturePath, QWidget *parent) : QDialo
 {
     m_captureEdit = new QLineEdit(this);
     m_captureEdit->setObjectName(QStringLiteral("capture"));
-    m_captureEdit->setToolTip(tr("The capture to export: a recording, a vendor CSV or a raw byte dump"));
+    m_captureEdit->setToolTip(tr("The capture to export: a recording, a vendor CSV or a raw byte dump; or a recorded "
+                                 "session's folder (or its session.json): every device, aligned in one file"));
     m_chooseCapture = new QPushButton(tr("Choose…"), this);
     m_chooseCapture->setObjectName(QStringLiteral("chooseCapture"));
     m_chooseCapture->setToolTip(tr("Export another capture"));
@@ -59,6 +67,10 @@ ExportDialog::ExportDialog(const QString &capturePath, QWidget *parent) : QDialo
     m_export->setObjectName(QStringLiteral("export"));
     m_cancel = buttons->addButton(QDialogButtonBox::Cancel);
     m_cancel->setObjectName(QStringLiteral("cancel"));
+    m_showFolder = buttons->addButton(tr("Show in folder"), QDialogButtonBox::ActionRole);
+    m_showFolder->setObjectName(QStringLiteral("showFolder"));
+    m_showFolder->setToolTip(tr("Open the folder of the written file in the file manager"));
+    m_showFolder->hide();
 
     auto *captureRow = new QHBoxLayout;
     captureRow->addWidget(m_captureEdit, 1);
@@ -82,6 +94,9 @@ ExportDialog::ExportDialog(const QString &capturePath, QWidget *parent) : QDialo
     connect(m_chooseCapture, &QPushButton::clicked, this, &ExportDialog::chooseCapture);
     connect(m_format, &QComboBox::currentIndexChanged, this, &ExportDialog::suggestOutput);
     connect(m_export, &QPushButton::clicked, this, &ExportDialog::startExport);
+    connect(m_showFolder, &QPushButton::clicked, this, [this] {
+        QDesktopServices::openUrl(QUrl::fromLocalFile(QFileInfo(m_output->text()).absolutePath()));
+    });
     connect(m_cancel, &QPushButton::clicked, this, [this] {
         if (m_job.isRunning())
             cancelExport();
@@ -103,17 +118,37 @@ ExportDialog::~ExportDialog()
 
 void ExportDialog::setCapture(const QString &path)
 {
-    m_capture = path;
-    m_captureEdit->setText(path);
-    setWindowTitle(tr("Export %1").arg(QFileInfo(path).fileName()));
+    // A session by its folder or its session.json.
+    const QFileInfo info(path);
+    QString capture = path;
+    if (info.fileName() == QLatin1String(record::SessionManifest::kFileName))
+        capture = info.absolutePath();
+    m_session = record::SessionManifest::isSessionFolder(capture);
+    m_capture = capture;
+    m_captureEdit->setText(capture);
+    setWindowTitle(m_session ? tr("Export the session %1").arg(QFileInfo(capture).fileName())
+                             : tr("Export %1").arg(info.fileName()));
+    // A session is exported whole, its devices on one time base, in the formats that hold
+    // several devices (the vendor's CSV is one module's layout).
+    const int vendor = m_format->findData(int(Format::VendorCsv));
+    if (auto *model = qobject_cast<QStandardItemModel *>(m_format->model()))
+        if (QStandardItem *item = model->item(vendor))
+            item->setEnabled(!m_session);
+    if (m_session && m_format->currentIndex() == vendor)
+        m_format->setCurrentIndex(m_format->findData(int(Format::TidyCsv)));
+    m_from->setEnabled(!m_session);
+    m_to->setEnabled(!m_session);
+    const QString whole = tr("A recorded session is exported whole, every device aligned on the session's time base");
+    m_from->setToolTip(m_session ? whole : QString());
+    m_to->setToolTip(m_session ? whole : QString());
     suggestOutput();
 }
 
 void ExportDialog::chooseCapture()
 {
     const QString path = QFileDialog::getOpenFileName(
-        this, tr("Export capture"), QFileInfo(m_capture).absolutePath(),
-        tr("Captures, vendor CSV and raw dumps (*.imucap *.csv *.bin *.raw *.log *.dat *.txt);;All files (*)"));
+        this, tr("Export capture"), m_session ? m_capture : QFileInfo(m_capture).absolutePath(),
+        tr("Captures, sessions, vendor CSV and raw dumps (*.imucap session.json *.csv *.bin *.raw *.log *.dat *.txt);;All files (*)"));
     if (!path.isEmpty())
         setCapture(path);
 }
@@ -138,15 +173,19 @@ void ExportDialog::suggestOutput()
 {
     const QFileInfo info(m_capture);
     const auto format = Format(m_format->currentData().toInt());
-    m_output->setText(info.path() + QLatin1Char('/') + info.completeBaseName()
-                      + record::CaptureExporter::extension(format));
+    if (m_session) // beside the folder, named after it (as imudesk-cli export FOLDER does)
+        m_output->setText(QDir::cleanPath(info.absoluteFilePath()) + record::CaptureExporter::extension(format));
+    else
+        m_output->setText(info.path() + QLatin1Char('/') + info.completeBaseName()
+                          + record::CaptureExporter::extension(format));
 }
 
 void ExportDialog::startExport()
 {
     if (m_job.isRunning())
         return;
-    m_capture = m_captureEdit->text(); // typed, and Export pressed without leaving the field
+    if (m_captureEdit->text() != m_capture) // typed, and Export pressed without leaving the field
+        setCapture(m_captureEdit->text());
     record::CaptureExporter::Options o;
     o.format = Format(m_format->currentData().toInt());
     o.output = m_output->text();
@@ -158,7 +197,32 @@ void ExportDialog::startExport()
     m_export->setEnabled(false);
     m_captureEdit->setEnabled(false);
     m_chooseCapture->setEnabled(false);
+    m_showFolder->hide();
+    m_cancel->setText(tr("Cancel"));
     const QString capture = m_capture;
+    if (m_session) {
+        m_progress->setRange(0, 0); // the session's exporter tells no fraction: busy until done
+        record::SessionExporter::Options so;
+        so.format = o.format;
+        so.output = o.output;
+        m_job.launch(QStringLiteral("imudesk-export"), [this, capture, so](const jobs::BackgroundJob::Context &job) mutable {
+            so.cancelled = [&job] { return job.cancelled(); };
+            const auto r = record::SessionExporter::run(capture, so);
+            record::CaptureExporter::Result result;
+            result.ok = r.ok;
+            result.error = r.error;
+            result.cancelled = job.cancelled() && !r.ok;
+            result.frames = r.rows;
+            if (r.ok)
+                result.files << so.output;
+            result.notes = r.notes;
+            jobs::BackgroundJob::Outcome outcome{result.ok, result.error, {}};
+            outcome.apply = [this, result = std::move(result)] { m_result = result; };
+            return outcome;
+        });
+        m_poll.start();
+        return;
+    }
     m_job.launch(QStringLiteral("imudesk-export"), [this, capture, o](const jobs::BackgroundJob::Context &job) {
         auto result = record::CaptureExporter::run(capture, o, [&job](double f) {
             job.setProgress(f);
@@ -185,6 +249,7 @@ void ExportDialog::pollProgress()
 void ExportDialog::onFinished()
 {
     m_poll.stop();
+    m_progress->setRange(0, 1000);
     m_export->setEnabled(true);
     m_captureEdit->setEnabled(true);
     m_chooseCapture->setEnabled(true);
@@ -196,6 +261,10 @@ void ExportDialog::onFinished()
         message = m_result.error;
     } else {
         m_progress->setValue(1000);
+        // Done: nothing is left to cancel. Close, or look at what was written (Export again
+        // writes another format or range).
+        m_cancel->setText(tr("Close"));
+        m_showFolder->show();
         message = tr("%n row(s) written to %1", nullptr, int(std::min<uint64_t>(m_result.frames, INT32_MAX)))
                       .arg(m_result.files.join(QStringLiteral(", ")));
         for (const QString &note : m_result.notes)

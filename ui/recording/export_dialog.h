@@ -25,9 +25,11 @@ public:
     explicit ExportDialog(const QString &capturePath, QWidget *parent = nullptr);
     ~ExportDialog() override;
 
-    // The capture to export; the output file is suggested beside it.
+    // The capture to export (or a recorded session: its folder or its session.json, exported
+    // whole, every device aligned); the output file is suggested beside it.
     void setCapture(const QString &path);
     QString capture() const { return m_capture; }
+    bool isSession() const { return m_session; }
     void setFormat(record::CaptureExporter::Format format);
     void setOutput(const QString &path);
     // to < 0: until the end.
@@ -59,6 +61,8 @@ private:
     QLabel *m_status = nullptr;
     QPushButton *m_export = nullptr;
     QPushButton *m_cancel = nullptr;
+    QPushButton *m_showFolder = nullptr; // after a success: the folder of what was written
+    bool m_session = false;              // m_capture is a recorded session's folder
     QTimer m_poll;
     record::CaptureExporter::Result m_result;
     jobs::BackgroundJob m_job; // last: cancelled and joined before the rest goes

@@ -11,6 +11,8 @@
 #include <QLocale>
 #include <QPushButton>
 #include <QRegularExpression>
+#include <QSettings>
+#include <QSpinBox>
 
 namespace imudesk::ui {
 
@@ -28,6 +30,21 @@ RecordingControls::RecordingControls(QWidget *parent) : QWidget(parent)
     m_pattern->setToolTip(tr("File name; {date}, {time}, {product} and {serial} are filled in. Ending in .imucap: every "
                              "byte, to replay and export later; ending in .mcap: the decoded samples as MCAP, which "
                              "PlotJuggler, Foxglove and Lichtblick open"));
+    m_duration = new QSpinBox(this);
+    m_duration->setObjectName(QStringLiteral("duration"));
+    m_duration->setRange(0, 7 * 24 * 3600);
+    m_duration->setSuffix(tr(" s"));
+    m_duration->setSpecialValueText(tr("until Stop"));
+    m_duration->setToolTip(tr("Stop the recording by itself after this many seconds (0: until you press Stop)"));
+    m_duration->setValue(QSettings().value(QStringLiteral("recording/durationS"), 0).toInt());
+    connect(m_duration, &QSpinBox::valueChanged, this,
+            [](int s) { QSettings().setValue(QStringLiteral("recording/durationS"), s); });
+    m_stopTimer.setSingleShot(true);
+    connect(&m_stopTimer, &QTimer::timeout, this, [this] {
+        if (m_recording || m_pending)
+            m_stoppedByDuration = true;
+        stopRecording();
+    });
     m_elapsed = new QLabel(this);
     m_elapsed->setObjectName(QStringLiteral("elapsed"));
     m_size = new QLabel(this);
@@ -45,6 +62,8 @@ RecordingControls::RecordingControls(QWidget *parent) : QWidget(parent)
     row->addWidget(m_folder, 2);
     row->addWidget(new QLabel(tr("File:"), this));
     row->addWidget(m_pattern, 2);
+    row->addWidget(new QLabel(tr("Stop after:"), this));
+    row->addWidget(m_duration);
     row->addWidget(m_elapsed);
     row->addWidget(m_size);
     row->addWidget(m_frames);
@@ -139,6 +158,16 @@ QString RecordingControls::expandPattern(const QString &pattern, const QString &
     return name;
 }
 
+void RecordingControls::setDurationS(int seconds)
+{
+    m_duration->setValue(seconds);
+}
+
+int RecordingControls::durationS() const
+{
+    return m_duration->value();
+}
+
 void RecordingControls::startRecording()
 {
     if (!m_session || m_recording || m_pending)
@@ -184,6 +213,10 @@ void RecordingControls::onStarted(const QString &path)
     if (!goesOn) {
         m_bytes = m_frameCount = 0;
         m_since.start();
+        m_stoppedByDuration = false;
+        m_stopTimer.stop();
+        if (m_duration->value() > 0)
+            m_stopTimer.start(m_duration->value() * 1000);
     }
     m_clock.start();
     // While recording, the fields show where this recording goes (a session's folder and this
@@ -212,6 +245,8 @@ void RecordingControls::onStopped(const QString &reason)
     m_recording = false;
     m_interrupted = was && !reason.isEmpty();
     m_clock.stop();
+    if (!m_interrupted)
+        m_stopTimer.stop(); // (a drop-out's recording goes on when the device comes back, and so does its end)
     if (m_showingRecording && !m_interrupted) {
         m_showingRecording = false;
         m_folder->setText(m_userFolder);
@@ -222,6 +257,8 @@ void RecordingControls::onStopped(const QString &reason)
     if (!reason.isEmpty()) {
         m_message->setText(reason);
         Q_EMIT recordingFailed(reason);
+    } else if (was && m_stoppedByDuration) {
+        m_message->setText(tr("Saved %1 (stopped after %2 s, as set)").arg(m_path).arg(m_duration->value()));
     } else if (was) {
         m_message->setText(tr("Saved %1").arg(m_path));
     }
@@ -263,6 +300,7 @@ void RecordingControls::updateButtons()
     m_stop->setEnabled(m_session && busy);
     m_folder->setEnabled(!busy);
     m_pattern->setEnabled(!busy);
+    m_duration->setEnabled(!busy);
 }
 
 } // namespace imudesk::ui

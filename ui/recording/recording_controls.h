@@ -20,6 +20,8 @@ class QLabel;
 class QLineEdit;
 class QPushButton;
 
+class QSpinBox;
+
 namespace imudesk::device {
 class Session;
 }
@@ -42,6 +44,9 @@ public:
     QString folder() const;
     void setPattern(const QString &pattern);
     QString pattern() const;
+    // Seconds after which a recording stops by itself; 0: until Stop. Remembered (QSettings).
+    void setDurationS(int seconds);
+    int durationS() const;
     bool isRecording() const { return m_recording; }
     QString currentPath() const { return m_path; }
 
@@ -75,6 +80,9 @@ private:
     QPushButton *m_stop = nullptr;
     QLineEdit *m_folder = nullptr;
     QLineEdit *m_pattern = nullptr;
+    QSpinBox *m_duration = nullptr;
+    QTimer m_stopTimer; // the duration's end
+    bool m_stoppedByDuration = false;
     QLabel *m_elapsed = nullptr;
     QLabel *m_size = nullptr;
     QLabel *m_frames = nullptr;

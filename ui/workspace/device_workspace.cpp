@@ -307,6 +307,7 @@ void DeviceWorkspace::bindLink(std::unique_ptr<device::DeviceLink> link, std::sh
     connect(l, &device::DeviceLink::identityChanged, this, &DeviceWorkspace::onIdentityChanged);
     connect(l, &device::DeviceLink::statsUpdated, this, &DeviceWorkspace::onStatsUpdated);
     connect(l, &device::DeviceLink::errorOccurred, this, &DeviceWorkspace::onErrorOccurred);
+    connect(l, &device::DeviceLink::streamWarning, this, &DeviceWorkspace::onStreamWarning);
     connect(l, &device::DeviceLink::textReplied, this, &DeviceWorkspace::onTextReplied);
     connect(l, &device::DeviceLink::textReceived, m_console, &ConsoleWidget::showText);
     m_console->setCompletions(l->textCommands());
@@ -556,6 +557,20 @@ void DeviceWorkspace::onErrorOccurred(const QString &message)
     Q_EMIT errorReported(message);
 }
 
+// Not a modal: the condition may end by itself (the device back at its rate), and the note goes
+// when it does; the console keeps both ends.
+void DeviceWorkspace::onStreamWarning(const QString &message)
+{
+    const bool wasShown = !m_streamWarningLabel->isHidden();
+    m_streamWarningLabel->setText(message);
+    m_streamWarningLabel->setToolTip(message);
+    m_streamWarningLabel->setVisible(!message.isEmpty());
+    if (!message.isEmpty())
+        m_console->showError(message);
+    else if (wasShown)
+        m_console->showText(tr("Frames arrive again on %1.").arg(m_target));
+}
+
 QString DeviceWorkspace::statusText() const
 {
     QStringList parts;
@@ -677,6 +692,11 @@ void DeviceWorkspace::createStatusBar()
     m_statsLabel = new QLabel(this);
     m_statsLabel->setObjectName(QStringLiteral("statsLabel"));
     m_statsLabel->setTextFormat(Qt::RichText);
+    m_streamWarningLabel = new QLabel(this);
+    m_streamWarningLabel->setObjectName(QStringLiteral("streamWarningLabel"));
+    m_streamWarningLabel->setWordWrap(true);
+    m_streamWarningLabel->setStyleSheet(QStringLiteral("QLabel { color: #a04000; font-weight: bold; }"));
+    m_streamWarningLabel->hide();
     m_flags = new StatusFlagsWidget(this);
     m_flags->setObjectName(QStringLiteral("statusFlags"));
     m_flags->setSizePolicy(QSizePolicy::Fixed, QSizePolicy::Preferred);
@@ -694,6 +714,7 @@ void DeviceWorkspace::createStatusBar()
     lines->setContentsMargins(2, 0, 2, 0);
     lines->setSpacing(0);
     lines->addLayout(firstLine);
+    lines->addWidget(m_streamWarningLabel);
     lines->addWidget(m_statsLabel);
     statusBar()->addWidget(info, 1);
     statusBar()->addPermanentWidget(m_flags);

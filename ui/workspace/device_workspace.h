@@ -243,6 +243,7 @@ private:
     void onStatsUpdated(const device::SessionStats &stats);
     void onTextReplied(quint64 id, const device::TextReply &reply);
     void onErrorOccurred(const QString &message);
+    void onStreamWarning(const QString &message);
 
     void updateStateLabel();
     void updateIdentityLabel();
@@ -298,6 +299,7 @@ private:
     QLabel *m_stateLabel = nullptr;
     QLabel *m_identityLabel = nullptr;
     QLabel *m_statsLabel = nullptr;
+    QLabel *m_streamWarningLabel = nullptr; // shown while the link's stream warning lasts
     QString m_statsPlainText; // the stats label's text without the highlight
 
     QTimer m_refreshTimer;

@@ -120,8 +120,8 @@ void ToolActions::addToMenus(QMenu *fileMenu, QMenu *deviceMenu, QMenu *calibrat
 void ToolActions::retranslate()
 {
     m_openCapture->setText(tr("&Open capture…"));
-    m_openCapture->setStatusTip(tr("Play a recorded capture through the charts and views, as a live device; a recorded session's "
-                                        "session.json opens every device, aligned"));
+    m_openCapture->setStatusTip(tr("Play a recorded capture through the charts and views, as a live device (in a tab of its own "
+                                        "when this one is connected); a recorded session's session.json opens every device, aligned"));
     m_importCsv->setText(tr("&Import vendor CSV…"));
     m_importCsv->setStatusTip(tr("Turn a CSV written by the vendor's PC tool into a capture and play it"));
     m_export->setText(tr("&Export capture…"));
@@ -173,8 +173,9 @@ void ToolActions::update(const DeviceWorkspace *ws)
     const bool connected = ws && ws->state() == SessionState::Connected;
     m_modbus->setEnabled(!busy);
     m_can->setEnabled(!busy);
-    m_openCapture->setEnabled(!busy);
-    m_importCsv->setEnabled(!busy);
+    // A capture opens in a tab of its own when this one is connected (MainWindow::freeWorkspace).
+    m_openCapture->setEnabled(true);
+    m_importCsv->setEnabled(true);
     using Tool = DeviceWorkspace::LinkTool;
     m_scanBus->setEnabled(connected && ws->offersTool(Tool::ScanBus));
     m_configuration->setEnabled(settings);
@@ -266,7 +267,7 @@ void ToolActions::chooseCapture()
 {
     // Any file: a capture, a vendor CSV or a raw byte dump is recognised by its content.
     // A recorded session opens by its session.json (Device > Record all devices writes one).
-    const QString path = QFileDialog::getOpenFileName(m_host->dialogParent(), tr("Open capture"), m_host->preferences().effectiveRecordingFolder(),
+    const QString path = QFileDialog::getOpenFileName(m_host->dialogParent(), tr("Open capture"), lastRecordedFolder(),
                                                       tr("Captures, sessions, vendor CSV and raw dumps (*.imucap session.json *.csv *.bin *.raw *.log *.dat *.txt);;All files (*)"));
     if (!path.isEmpty())
         openCapture(path);
@@ -288,12 +289,13 @@ void ToolActions::chooseCsv()
 
 void ToolActions::exportCapture()
 {
-    // The recording just made is what is usually exported: the dialog opens with it (its
+    // The recording just made is what is usually exported: the dialog opens with it, a single
+    // device's capture or the session Record all devices wrote, whichever came last (its
     // Choose… picks another); without one, the file is asked for first.
-    QString path = QFileInfo::exists(m_lastRecording) ? m_lastRecording : QString();
+    QString path = QFileInfo::exists(m_lastRecorded) ? m_lastRecorded : QString();
     if (path.isEmpty())
-        path = QFileDialog::getOpenFileName(m_host->dialogParent(), tr("Export capture"), m_host->preferences().effectiveRecordingFolder(),
-                                            tr("Captures, vendor CSV and raw dumps (*.imucap *.csv *.bin *.raw *.log *.dat *.txt);;All files (*)"));
+        path = QFileDialog::getOpenFileName(m_host->dialogParent(), tr("Export capture"), lastRecordedFolder(),
+                                            tr("Captures, sessions, vendor CSV and raw dumps (*.imucap session.json *.csv *.bin *.raw *.log *.dat *.txt);;All files (*)"));
     if (path.isEmpty())
         return;
     auto *dialog = new ExportDialog(path, m_host->dialogParent());
@@ -393,7 +395,10 @@ void ToolActions::recordAll()
         m_sessionWindow = new SessionRecordingWindow(devices, folder, m_host->dialogParent());
         m_sessionWindow->setAttribute(Qt::WA_DeleteOnClose);
         connect(m_sessionWindow, &SessionRecordingWindow::recordingFinished, this,
-                [this](const QString &folder, bool) { m_lastSession = folder; });
+                [this](const QString &folder, bool) {
+                    m_lastSession = folder;
+                    m_lastRecorded = folder;
+                });
     }
     m_sessionWindow->show();
     m_sessionWindow->raise();
@@ -410,6 +415,17 @@ void ToolActions::openTwistAlign()
 void ToolActions::noteRecording(const QString &path)
 {
     m_lastRecording = path;
+    m_lastRecorded = path;
+}
+
+// Where the file dialogs for a recording start: the session just recorded (its session.json in
+// view), else the folder of the capture just recorded, else the recording folder.
+QString ToolActions::lastRecordedFolder() const
+{
+    const QFileInfo last(m_lastRecorded);
+    if (!m_lastRecorded.isEmpty() && last.exists())
+        return last.isDir() ? last.absoluteFilePath() : last.absolutePath();
+    return m_host->preferences().effectiveRecordingFolder();
 }
 
 void ToolActions::openCalculator()

@@ -105,6 +105,8 @@ private:
     QAction *m_calHistory = nullptr;
     QString m_lastRecording;
     QString m_lastSession;
+    QString m_lastRecorded; // the newer of the two above
+    QString lastRecordedFolder() const;
     QMenu *m_toolsMenu = nullptr;
     QMenu *m_calibrateMenu = nullptr;
 };
