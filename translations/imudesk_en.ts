@@ -45,7 +45,7 @@
 <context>
     <name>imudesk::models::LatestValuesModel</name>
     <message numerus="yes">
-        <location filename="../core/itemmodels/latest_values_model.cpp" line="+150"/>
+        <location filename="../core/itemmodels/latest_values_model.cpp" line="+149"/>
         <source>No new value for %n s: the device stopped sending this quantity (another output content, a polled record that stopped, or a link that went quiet).</source>
         <translation>
             <numerusform>No new value for %n s: the device stopped sending this quantity (another output content, a polled record that stopped, or a link that went quiet).</numerusform>
@@ -78,7 +78,7 @@
 <context>
     <name>imudesk::ui::ChartPanel</name>
     <message numerus="yes">
-        <location filename="../ui/charts/chart_panel.cpp" line="+420"/>
+        <location filename="../ui/charts/chart_panel.cpp" line="+424"/>
         <source>%n chart(s) saved as one PNG in %1 (%2)</source>
         <translation>
             <numerusform>%n chart saved as one PNG in %1 (%2)</numerusform>

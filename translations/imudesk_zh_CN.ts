@@ -5970,7 +5970,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::models::LatestValuesModel</name>
     <message>
-        <location filename="../core/itemmodels/latest_values_model.cpp" line="+172"/>
+        <location filename="../core/itemmodels/latest_values_model.cpp" line="+171"/>
         <source>Quantity</source>
         <translation>物理量</translation>
     </message>
@@ -5997,7 +5997,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>%1（%2 分钟前）</translation>
     </message>
     <message>
-        <location line="+100"/>
+        <location line="+101"/>
         <source>0 invalid</source>
         <translation>0 解无效</translation>
     </message>
@@ -6052,7 +6052,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>磁北</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+9"/>
         <source>none (%1)</source>
         <translation>无 (%1)</translation>
     </message>
@@ -6139,16 +6139,6 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
     <message>
         <location line="+2"/>
-        <source>Magnetic field X Y Z (relative)</source>
-        <translation>磁场 X Y Z（相对值）</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Magnetic roll</source>
-        <translation>磁性横滚</translation>
-    </message>
-    <message>
-        <location line="+1"/>
         <source>UTC date</source>
         <translation>UTC 日期</translation>
     </message>
@@ -6377,12 +6367,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>俯仰角，单位 °（设备约定的欧拉角，默认 ENU 312 顺序）。</translation>
     </message>
     <message>
-        <location line="-84"/>
+        <location line="-82"/>
         <source>Heading</source>
         <translation>航向</translation>
     </message>
     <message>
-        <location line="+86"/>
+        <location line="+84"/>
         <source>Yaw (heading) angle, in degrees (Euler angles in the device&apos;s convention, ENU 312 by default).</source>
         <translation>航向角，单位 °（设备约定的欧拉角，默认 ENU 312 顺序）。</translation>
     </message>
@@ -6417,7 +6407,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>最新一条 NMEA 航向语句给出的航向，单位度，自北顺时针：HDT 为真北，HDM 为磁北（输出内容设为 NMEA 0183 的 HEC495 发送 HDT）。</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+5"/>
         <source>The compass&apos;s magnetic field along its X, Y and Z axes as a relative value without unit: the horizontal component of the field pointing north is 1 (HEC495 manual 2.5, the same on CAN).</source>
         <translation>罗盘沿 X、Y、Z 轴的磁场，为无量纲的相对值：指向北的水平分量为 1（HEC495 手册 2.5，CAN 上相同）。</translation>
     </message>
@@ -6502,19 +6492,19 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>GNSS 原始速度（HI83 位 31）：东、北、天，单位 m/s。</translation>
     </message>
     <message>
-        <location line="-52"/>
+        <location line="-54"/>
         <source>Integrated navigation state: 0 invalid, 1 aligning, 3 navigating, 6 dead reckoning.</source>
         <translation>组合导航解状态：0 解无效，1 对准中，3 组合导航中，6 惯性递推中。</translation>
     </message>
     <message numerus="yes">
-        <location line="-365"/>
+        <location line="-362"/>
         <source>No new value for %n s: the device stopped sending this quantity (another output content, a polled record that stopped, or a link that went quiet).</source>
         <translation>
             <numerusform>%n 秒内无新值：设备已停止发送该量（输出内容已更改、轮询记录已停止，或链路已静默）。</numerusform>
         </translation>
     </message>
     <message>
-        <location line="+367"/>
+        <location line="+364"/>
         <source>Position from integrated navigation, in degrees (south and west negative).</source>
         <translation>组合导航解算的位置，单位 °（南纬和西经为负）。</translation>
     </message>
@@ -6720,6 +6710,18 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <location line="+1"/>
         <source>Temperature</source>
         <translation>温度</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+1"/>
+        <location line="+1"/>
+        <source>Relative magnetic field %1</source>
+        <translation>相对磁场 %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Magnetic roll</source>
+        <translation>磁性横滚</translation>
     </message>
 </context>
 <context>
@@ -9240,8 +9242,13 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <source>This device&apos;s output carries no temperature at its current setting.</source>
         <translation>该设备当前设置下的输出不含温度。</translation>
     </message>
+    <message>
+        <location line="+2"/>
+        <source>This device&apos;s output carries no relative magnetic field at its current setting.</source>
+        <translation>该设备当前设置下的输出不含相对磁场。</translation>
+    </message>
     <message numerus="yes">
-        <location line="+208"/>
+        <location line="+210"/>
         <source>%n chart(s) saved as one PNG in %1 (%2)</source>
         <translation>
             <numerusform>已将 %n 个图表保存为一张 PNG，位于 %1（%2）</numerusform>
@@ -9251,7 +9258,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::ChartView</name>
     <message>
-        <location filename="../ui/charts/chart_view.cpp" line="+89"/>
+        <location filename="../ui/charts/chart_view.cpp" line="+91"/>
         <source>Accelerometer</source>
         <translation>加速度计</translation>
     </message>
@@ -9282,12 +9289,17 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
     <message>
         <location line="+1"/>
-        <location line="+14"/>
+        <location line="+15"/>
         <source>Temperature</source>
         <translation>温度</translation>
     </message>
     <message>
-        <location line="-6"/>
+        <location line="-14"/>
+        <source>Relative magnetic field</source>
+        <translation>相对磁场</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>Acceleration</source>
         <translation>加速度</translation>
     </message>
@@ -9317,7 +9329,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>气压</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+2"/>
+        <source>Magnetic field (north = 1)</source>
+        <translation>磁场（北向 = 1）</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>G</source>
         <translation>G</translation>
     </message>
@@ -9347,7 +9364,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>°C</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+29"/>
         <source>Device time (s)</source>
         <translation>设备时间（s）</translation>
     </message>

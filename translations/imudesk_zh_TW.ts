@@ -5970,7 +5970,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::models::LatestValuesModel</name>
     <message>
-        <location filename="../core/itemmodels/latest_values_model.cpp" line="+172"/>
+        <location filename="../core/itemmodels/latest_values_model.cpp" line="+171"/>
         <source>Quantity</source>
         <translation>物理量</translation>
     </message>
@@ -5997,7 +5997,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>%1（%2 分鐘前）</translation>
     </message>
     <message>
-        <location line="+100"/>
+        <location line="+101"/>
         <source>0 invalid</source>
         <translation>0 解無效</translation>
     </message>
@@ -6052,7 +6052,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>磁北</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+9"/>
         <source>none (%1)</source>
         <translation>無 (%1)</translation>
     </message>
@@ -6139,16 +6139,6 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
     <message>
         <location line="+2"/>
-        <source>Magnetic field X Y Z (relative)</source>
-        <translation>磁場 X Y Z（相對值）</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Magnetic roll</source>
-        <translation>磁性橫滾</translation>
-    </message>
-    <message>
-        <location line="+1"/>
         <source>UTC date</source>
         <translation>UTC 日期</translation>
     </message>
@@ -6377,12 +6367,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>俯仰角，單位 °（裝置約定的歐拉角，預設 ENU 312 順序）。</translation>
     </message>
     <message>
-        <location line="-84"/>
+        <location line="-82"/>
         <source>Heading</source>
         <translation>航向</translation>
     </message>
     <message>
-        <location line="+86"/>
+        <location line="+84"/>
         <source>Yaw (heading) angle, in degrees (Euler angles in the device&apos;s convention, ENU 312 by default).</source>
         <translation>航向角，單位 °（裝置約定的歐拉角，預設 ENU 312 順序）。</translation>
     </message>
@@ -6417,7 +6407,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>最新一條 NMEA 航向語句給出的航向，單位度，自北順時針：HDT 為真北，HDM 為磁北（輸出內容設為 NMEA 0183 的 HEC495 傳送 HDT）。</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+5"/>
         <source>The compass&apos;s magnetic field along its X, Y and Z axes as a relative value without unit: the horizontal component of the field pointing north is 1 (HEC495 manual 2.5, the same on CAN).</source>
         <translation>羅盤沿 X、Y、Z 軸的磁場，為無因次的相對值：指向北的水平分量為 1（HEC495 手冊 2.5，CAN 上相同）。</translation>
     </message>
@@ -6502,19 +6492,19 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>GNSS 原始速度（HI83 位 31）：東、北、天，單位 m/s。</translation>
     </message>
     <message>
-        <location line="-52"/>
+        <location line="-54"/>
         <source>Integrated navigation state: 0 invalid, 1 aligning, 3 navigating, 6 dead reckoning.</source>
         <translation>組合導航解狀態：0 解無效，1 對準中，3 組合導航中，6 慣性遞推中。</translation>
     </message>
     <message numerus="yes">
-        <location line="-365"/>
+        <location line="-362"/>
         <source>No new value for %n s: the device stopped sending this quantity (another output content, a polled record that stopped, or a link that went quiet).</source>
         <translation>
             <numerusform>%n 秒內無新值：裝置已停止傳送此量（輸出內容已更改、輪詢記錄已停止，或連線已靜默）。</numerusform>
         </translation>
     </message>
     <message>
-        <location line="+367"/>
+        <location line="+364"/>
         <source>Position from integrated navigation, in degrees (south and west negative).</source>
         <translation>組合導航解算的位置，單位 °（南緯和西經為負）。</translation>
     </message>
@@ -6720,6 +6710,18 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <location line="+1"/>
         <source>Temperature</source>
         <translation>溫度</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+1"/>
+        <location line="+1"/>
+        <source>Relative magnetic field %1</source>
+        <translation>相對磁場 %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Magnetic roll</source>
+        <translation>磁性橫滾</translation>
     </message>
 </context>
 <context>
@@ -9240,8 +9242,13 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <source>This device&apos;s output carries no temperature at its current setting.</source>
         <translation>該裝置目前設定下的輸出不含溫度。</translation>
     </message>
+    <message>
+        <location line="+2"/>
+        <source>This device&apos;s output carries no relative magnetic field at its current setting.</source>
+        <translation>該裝置目前設定下的輸出不含相對磁場。</translation>
+    </message>
     <message numerus="yes">
-        <location line="+208"/>
+        <location line="+210"/>
         <source>%n chart(s) saved as one PNG in %1 (%2)</source>
         <translation>
             <numerusform>已將 %n 個圖表儲存為一張 PNG，位於 %1（%2）</numerusform>
@@ -9251,7 +9258,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::ChartView</name>
     <message>
-        <location filename="../ui/charts/chart_view.cpp" line="+89"/>
+        <location filename="../ui/charts/chart_view.cpp" line="+91"/>
         <source>Accelerometer</source>
         <translation>加速度計</translation>
     </message>
@@ -9282,12 +9289,17 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
     <message>
         <location line="+1"/>
-        <location line="+14"/>
+        <location line="+15"/>
         <source>Temperature</source>
         <translation>溫度</translation>
     </message>
     <message>
-        <location line="-6"/>
+        <location line="-14"/>
+        <source>Relative magnetic field</source>
+        <translation>相對磁場</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>Acceleration</source>
         <translation>加速度</translation>
     </message>
@@ -9317,7 +9329,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>氣壓</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+2"/>
+        <source>Magnetic field (north = 1)</source>
+        <translation>磁場（北向 = 1）</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>G</source>
         <translation>G</translation>
     </message>
@@ -9347,7 +9364,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>°C</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+29"/>
         <source>Device time (s)</source>
         <translation>裝置時間（s）</translation>
     </message>

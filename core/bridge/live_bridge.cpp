@@ -1,7 +1,7 @@
 #include "live_bridge.h"
 
 #include "bridge/foxglove_protocol.h"
-#include "device/host_clock.h"
+#include "clock/host_clock.h"
 #include "format/mcap/channel_sink.h"
 #include "format/mcap/sample_channels.h"
 #include "format/sample_json.h"
@@ -156,7 +156,7 @@ QString BridgeWorker::start(const BridgeOptions &o, quint16 *port)
     m_stats = BridgeStats{};
     m_stats.devices = int(m_devices.size());
     m_sessionId = QUuid::createUuid().toString(QUuid::WithoutBraces);
-    m_epochOffsetNs = QDateTime::currentMSecsSinceEpoch() * 1'000'000 - device::hostNowNs();
+    m_epochOffsetNs = QDateTime::currentMSecsSinceEpoch() * 1'000'000 - clock::hostNowNs();
     if (o.websocket) {
         m_server = std::make_unique<QWebSocketServer>(QStringLiteral("ImuDesk"), QWebSocketServer::NonSecureMode);
         m_server->setSupportedSubprotocols(foxglove::subprotocols());

@@ -1,6 +1,6 @@
 #include "can_family.h"
 
-#include "device/host_clock.h"
+#include "clock/host_clock.h"
 #include "device/session_engine.h"
 #include "io/can_transport.h"
 #include "protocol/can/canopen.h"
@@ -115,7 +115,7 @@ void CanFamily::feed(const QByteArray &bytes, int64_t now)
     m_reader.feed(bytes, m_records);
     CanFrameEvents events;
     m_batch.clear();
-    // Stamped with the arrival time the engine took on the host clock (host_clock.h).
+    // Stamped with the arrival time the engine took on the host clock (clock/host_clock.h).
     for (const CanRecord &r : m_records) {
         if (r.error) {
             ++m_errorFrames;

@@ -1,6 +1,6 @@
 #include "group_recording.h"
 
-#include "device/host_clock.h"
+#include "clock/host_clock.h"
 #include "format/mcap/sample_channels.h"
 #include "record/device_name.h"
 

@@ -1,7 +1,7 @@
 #include "modbus_family.h"
 
 #include "clock/clock_model.h"
-#include "device/host_clock.h"
+#include "clock/host_clock.h"
 #include "device/modbus_session.h"
 #include "device/session_engine.h"
 #include "protocol/modbus/hipnuc_writes.h"

@@ -29,7 +29,7 @@ struct RequestResult {
     int attempts = 0;       // times it went on the line
     QString message;        // what happened, for the user (empty on a plain success)
     QVariant reply;         // the family's typed reply
-    int64_t sentNs = 0;     // when the last attempt was written (device::hostNowNs); 0: never
+    int64_t sentNs = 0;     // when the last attempt was written (clock::hostNowNs); 0: never
     bool ok() const { return status == RequestStatus::Ok; }
 };
 
@@ -39,7 +39,7 @@ struct Request {
     int timeoutMs = 1000;      // per attempt
     int maxAttempts = 1;       // sent again after a timeout, up to this many times in all
     int attempts = 0;
-    int64_t sentNs = 0;        // when its last attempt was written (device::hostNowNs)
+    int64_t sentNs = 0;        // when its last attempt was written (clock::hostNowNs)
     std::any command;          // the family's description (for matching replies and effects)
     // Called in the engine's thread when the request ends, before requestFinished.
     std::function<void(const RequestResult &)> done;

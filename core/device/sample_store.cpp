@@ -1,6 +1,6 @@
 #include "sample_store.h"
 
-#include "device/host_clock.h"
+#include "clock/host_clock.h"
 
 #include <algorithm>
 #include <bit>

@@ -1,8 +1,8 @@
 #include "session.h"
 
 #include "device/session_engine.h"
-#include "device/thread_sync.h"
 #include "io/serial_transport.h"
+#include "jobs/thread_sync.h"
 
 namespace imudesk::device {
 
@@ -32,7 +32,7 @@ Session::Session(std::unique_ptr<FamilyPlugin> family, std::unique_ptr<io::Trans
     connect(m_engine, &SessionEngine::recordingStopped, this, &Session::recordingStopped);
     connect(m_engine, &SessionEngine::recordingProgress, this, &Session::recordingProgress);
     if (!m_sharedThread) {
-        announceJoin(m_thread);
+        jobs::announceJoin(m_thread);
         m_thread.start();
     }
 }
@@ -50,53 +50,53 @@ Session::~Session()
         if (m_sharedThread == QThread::currentThread() || !m_sharedThread->isRunning())
             finish();
         else
-            callAndWait(e, finish);
+            jobs::callAndWait(e, finish);
         return;
     }
-    callAndWait(m_engine, [e = m_engine] { e->close(); });
-    joinThread(m_thread);
+    jobs::callAndWait(m_engine, [e = m_engine] { e->close(); });
+    jobs::joinThread(m_thread);
 }
 
 void Session::openLink(const QString &address, int baud)
 {
-    postTo(m_engine, [e = m_engine, address, baud] { e->open(address, baud); });
+    jobs::postTo(m_engine, [e = m_engine, address, baud] { e->open(address, baud); });
 }
 
 std::unique_ptr<io::Transport> Session::releaseTransport()
 {
     std::unique_ptr<io::Transport> taken;
     QThread *here = QThread::currentThread();
-    callAndWait(m_engine, [e = m_engine, &taken, here] { taken = e->releaseTransport(here); });
+    jobs::callAndWait(m_engine, [e = m_engine, &taken, here] { taken = e->releaseTransport(here); });
     return taken;
 }
 
 void Session::close()
 {
-    postTo(m_engine, [e = m_engine] { e->close(); });
+    jobs::postTo(m_engine, [e = m_engine] { e->close(); });
 }
 
 void Session::setAutoReconnect(bool on)
 {
     m_autoReconnect = on;
-    postTo(m_engine, [e = m_engine, on] { e->setAutoReconnect(on); });
+    jobs::postTo(m_engine, [e = m_engine, on] { e->setAutoReconnect(on); });
 }
 
 void Session::startRecording(const QString &path, const record::CaptureHeader &header,
                              const record::CaptureWriter::Options &options)
 {
-    postTo(m_engine, [e = m_engine, path, header, options] { e->startRecording(path, header, options); });
+    jobs::postTo(m_engine, [e = m_engine, path, header, options] { e->startRecording(path, header, options); });
 }
 
 void Session::stopRecording()
 {
-    postTo(m_engine, [e = m_engine] { e->stopRecording(); });
+    jobs::postTo(m_engine, [e = m_engine] { e->stopRecording(); });
 }
 
 quint64 Session::submit(Request request)
 {
     const quint64 id = m_nextId++;
     request.id = id;
-    postTo(m_engine, [e = m_engine, r = std::move(request)]() mutable { e->submit(std::move(r)); });
+    jobs::postTo(m_engine, [e = m_engine, r = std::move(request)]() mutable { e->submit(std::move(r)); });
     return id;
 }
 

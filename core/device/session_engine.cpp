@@ -2,7 +2,7 @@
 
 #include "record/mcap_recording.h"
 
-#include "device/host_clock.h"
+#include "clock/host_clock.h"
 #include "device/stream_counters.h"
 #include "io/reading_priority.h"
 

@@ -1,6 +1,6 @@
 #include "can_transport.h"
 
-#include "device/host_clock.h"
+#include "clock/host_clock.h"
 #include "protocol/can/can_record.h"
 
 #include <QCanBus>
@@ -149,7 +149,7 @@ void CanTransport::onFramesReceived()
     QByteArray out;
     // The interface's stamp (SocketCAN: the kernel's, taken when the frame came in) is on the
     // wall clock; the sessions' clock is the steady one: one offset, taken now, carries it over.
-    const int64_t wallToHost = device::hostNowNs()
+    const int64_t wallToHost = clock::hostNowNs()
         - std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::system_clock::now().time_since_epoch()).count();
     while (m_bus && m_bus->framesAvailable()) {
         const QCanBusFrame q = m_bus->readFrame();

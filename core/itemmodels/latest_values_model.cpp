@@ -18,7 +18,8 @@ using model::SampleField;
 using Row = LatestValuesModel::Row;
 
 // The first rows are the chartable channels, in plot::Channel order (the catalogue names them).
-static_assert(int(Row::Temperature) + 1 == plot::kChannelCount && int(Row::AccX) == int(plot::Channel::AccX));
+static_assert(int(Row::MagRoll) + 1 == plot::kChannelCount && int(Row::AccX) == int(plot::Channel::AccX)
+              && int(Row::MagRelX) == int(plot::Channel::MagRelX));
 bool isChannel(Row row)
 {
     return int(row) < plot::kChannelCount;
@@ -70,8 +71,6 @@ uint32_t fieldOf(Row row)
     case Row::InclinationY: return model::FieldInclination;
     case Row::StatusFlags: return model::FieldMainStatus;
     case Row::Heading: return model::FieldHeading;
-    case Row::MagRelative: return model::FieldMagRelative;
-    case Row::MagRoll: return model::FieldMagRoll;
     default: break; // the channel rows (above), the frame type
     }
     return hi83BitOf(row) >= 0 ? model::FieldHi83Extra : 0;
@@ -275,8 +274,9 @@ QString LatestValuesModel::formatValue(Row row, const model::Sample &s) const
         case plot::ChannelGroup::Accelerometer: return fixed(v * m_units.accelFactor(), 4);
         case plot::ChannelGroup::Gyroscope:
             return fixed(v * m_units.rateFactor(), m_units.rate == model::RateUnit::RadiansPerSecond ? 5 : 3);
-        case plot::ChannelGroup::Magnetometer: return fixed(v, 3);
-        case plot::ChannelGroup::Euler: return fixed(v, 2);
+        case plot::ChannelGroup::Magnetometer:
+        case plot::ChannelGroup::MagneticRelative: return fixed(v, 3);
+        case plot::ChannelGroup::Euler: return fixed(v, row == MagRoll ? 1 : 2);
         case plot::ChannelGroup::Quaternion: return fixed(v, 4);
         case plot::ChannelGroup::Pressure:
         case plot::ChannelGroup::Temperature: return fixed(v, 1);
@@ -328,8 +328,6 @@ QString LatestValuesModel::formatValue(Row row, const model::Sample &s) const
     case InclinationX: return fixed(s.inclinationX, 3);
     case InclinationY: return fixed(s.inclinationY, 3);
     case Heading: return QStringLiteral("%1 %2").arg(fixed(s.headingDeg, 1), s.headingTrue ? tr("true") : tr("magnetic"));
-    case MagRelative: return triple(std::array<double, 3>{s.magRelative.x, s.magRelative.y, s.magRelative.z}, 3);
-    case MagRoll: return fixed(s.magRollDeg, 1);
     case StatusFlags: {
         const model::MainStatus status(s.mainStatus);
         QStringList names;
@@ -411,8 +409,6 @@ QString LatestValuesModel::quantityName(Row row) const
     case InclinationX: return tr("Inclination X");
     case InclinationY: return tr("Inclination Y");
     case Heading: return tr("Heading");
-    case MagRelative: return tr("Magnetic field X Y Z (relative)");
-    case MagRoll: return tr("Magnetic roll");
     case UtcDate: return tr("UTC date");
     case HeaveSurgeSwayFreq: return tr("Heave/surge/sway frequency");
     case AccEnu: return tr("Acceleration E N U");
@@ -534,7 +530,9 @@ QString LatestValuesModel::toolTip(Row row) const
     case Heading:
         return tr("Heading from the latest NMEA heading sentence, in degrees clockwise from north: HDT true north, "
                   "HDM magnetic north (an HEC495 with output content NMEA 0183 sends HDT).");
-    case MagRelative:
+    case MagRelX:
+    case MagRelY:
+    case MagRelZ:
         return tr("The compass's magnetic field along its X, Y and Z axes as a relative value without unit: the "
                   "horizontal component of the field pointing north is 1 (HEC495 manual 2.5, the same on CAN).");
     case MagRoll:

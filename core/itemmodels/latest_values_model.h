@@ -36,6 +36,10 @@ public:
         QuatZ,
         Pressure,
         Temperature,
+        MagRelX, // a compass's relative magnetic field (HEC495, serial and CAN)
+        MagRelY,
+        MagRelZ,
+        MagRoll, // the HEC495's magnetic tool face
         DeviceTime,
         // Fields only some frame types carry (HI81/HI83 INS, HI92/HI83 ship motion, HI50 inclinometer);
         // their rows are offered once a frame carried them (everSeen()).
@@ -54,8 +58,6 @@ public:
         InclinationX,
         InclinationY,
         Heading,         // NMEA HDT / HDM (a compass's NMEA output)
-        MagRelative,     // a compass's relative magnetic field (HEC495, serial and CAN)
-        MagRoll,         // the HEC495's magnetic tool face
         // HI83 fields beyond the ones above, one row per data_bitmap bit (v1.7.1 manual 5.9.12).
         UtcDate,         // bit 6
         HeaveSurgeSwayFreq, // bit 11
@@ -116,7 +118,7 @@ public:
     // True once any sample shown carried this row's field (the frame type row: any sample).
     bool everSeen(Row row) const;
     // True for the rows that always show (the IMU and attitude quantities every frame type has).
-    static bool isCoreRow(Row row) { return row < InsStatus || row >= StatusFlags; }
+    static bool isCoreRow(Row row) { return (row < InsStatus && (row < MagRelX || row > MagRoll)) || row >= StatusFlags; }
     // The HI83 fields only an INS configuration sends (UtcDate ... GnssVelocity): the workspace
     // shows them in a table of their own, so that the values table keeps every row in view.
     static bool isDetailRow(Row row) { return row >= UtcDate && row <= GnssVelocity; }

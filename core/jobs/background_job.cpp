@@ -1,6 +1,6 @@
 #include "jobs/background_job.h"
 
-#include "device/thread_sync.h"
+#include "jobs/thread_sync.h"
 
 #include <QThread>
 
@@ -36,7 +36,7 @@ BackgroundJob::~BackgroundJob()
 {
     if (m_thread) {
         cancel();
-        device::waitForThread(*m_thread);
+        waitForThread(*m_thread);
         delete m_thread;
         m_thread = nullptr;
     }
@@ -63,7 +63,7 @@ bool BackgroundJob::launch(const QString &threadName, Job job)
     });
     m_thread->setObjectName(threadName);
     connect(m_thread, &QThread::finished, this, &BackgroundJob::onWorkerDone);
-    device::announceJoin(*m_thread);
+    announceJoin(*m_thread);
     m_thread->start();
     return true;
 }
@@ -78,7 +78,7 @@ void BackgroundJob::onWorkerDone()
 {
     if (!m_thread)
         return;
-    device::waitForThread(*m_thread); // the outcome below was written by the thread
+    waitForThread(*m_thread); // the outcome below was written by the thread
     delete m_thread;
     m_thread = nullptr;
     m_shared.reset();

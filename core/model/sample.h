@@ -82,7 +82,7 @@ enum SampleField : uint32_t {
 struct Sample {
     std::string source;      // "HI91", "HI92", "HI81", "HI83", ...
     uint32_t fields = 0;     // SampleField bits
-    int64_t hostTimeNs = 0;  // arrival on the host clock (device::hostNowNs)
+    int64_t hostTimeNs = 0;  // arrival on the host clock (clock::hostNowNs)
     // The sampling instant on the host clock, from the device's own time through its clock
     // model (core/clock); 0 where the sample has no device time or no model yet.
     int64_t commonTimeNs = 0;

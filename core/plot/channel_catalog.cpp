@@ -33,6 +33,11 @@ constexpr ChannelInfo kCatalog[] = {
     {Channel::QuatZ, G::Quaternion, "Z", QT_TRANSLATE_NOOP("imudesk::plot::Channel", "Quaternion %1"), model::FieldQuat, kBlue, [](const S &s) { return s.quat.z; }},
     {Channel::Pressure, G::Pressure, "", QT_TRANSLATE_NOOP("imudesk::plot::Channel", "Air pressure"), model::FieldPressure, kPurple, [](const S &s) { return s.pressurePa; }},
     {Channel::Temperature, G::Temperature, "", QT_TRANSLATE_NOOP("imudesk::plot::Channel", "Temperature"), model::FieldTemperature, kOrange, [](const S &s) { return s.temperatureC; }},
+    {Channel::MagRelX, G::MagneticRelative, "X", QT_TRANSLATE_NOOP("imudesk::plot::Channel", "Relative magnetic field %1"), model::FieldMagRelative, kRed, [](const S &s) { return s.magRelative.x; }},
+    {Channel::MagRelY, G::MagneticRelative, "Y", QT_TRANSLATE_NOOP("imudesk::plot::Channel", "Relative magnetic field %1"), model::FieldMagRelative, kGreen, [](const S &s) { return s.magRelative.y; }},
+    {Channel::MagRelZ, G::MagneticRelative, "Z", QT_TRANSLATE_NOOP("imudesk::plot::Channel", "Relative magnetic field %1"), model::FieldMagRelative, kBlue, [](const S &s) { return s.magRelative.z; }},
+    // An angle beside the Euler angles, on their chart (deg).
+    {Channel::MagRoll, G::Euler, "", QT_TRANSLATE_NOOP("imudesk::plot::Channel", "Magnetic roll"), model::FieldMagRoll, kPurple, [](const S &s) { return s.magRollDeg; }},
 };
 // clang-format on
 

@@ -18,8 +18,18 @@
 namespace imudesk::plot {
 
 // The groups, in the order of the charts.
-enum class ChannelGroup : uint8_t { Accelerometer, Gyroscope, Magnetometer, Euler, Quaternion, Pressure, Temperature };
-inline constexpr int kChannelGroupCount = 7;
+// MagneticRelative: a compass's field without unit (the HEC495's; the northward horizontal field is 1).
+enum class ChannelGroup : uint8_t {
+    Accelerometer,
+    Gyroscope,
+    Magnetometer,
+    Euler,
+    Quaternion,
+    Pressure,
+    Temperature,
+    MagneticRelative
+};
+inline constexpr int kChannelGroupCount = 8;
 
 struct ChannelInfo {
     Channel channel;

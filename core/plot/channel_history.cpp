@@ -104,8 +104,9 @@ void ChannelHistory::reserveRows(size_t rows)
             fresh[i] = column[phys(i)];
         column.swap(fresh);
     };
-    for (auto &column : m_values)
-        move(column);
+    for (int c = 0; c < kChannelCount; ++c)
+        if (m_allocated & channelBit(Channel(c)))
+            move(m_values[size_t(c)]);
     move(m_host);
     move(m_device);
     move(m_flags);
@@ -247,7 +248,14 @@ void ChannelHistory::appendOne(const model::Sample &s)
 
     const size_t p = phys(m_size);
     const uint32_t want = channelsOfField(s.fields);
+    // A channel's first sample: its column, no value in the rows before.
+    for (uint32_t fresh = want & ~m_allocated; fresh != 0; fresh &= fresh - 1) {
+        m_values[size_t(std::countr_zero(fresh))].assign(m_capacity, kNoValue);
+        m_allocated |= fresh & -fresh;
+    }
     auto put = [&](Channel c, double v) {
+        if (!(m_allocated & channelBit(c)))
+            return; // never carried: no column, has() false
         const bool ok = (want & channelBit(c)) && std::isfinite(v);
         m_values[size_t(c)][p] = ok ? float(v) : kNoValue;
         if (ok)

@@ -4,12 +4,15 @@
 // not Samples.
 //
 // Memory, at full size (kMaxRows = 600 000 rows = 10 min at 1 kHz):
-//   18 channels x 4 B (float)      72 B
+//   18 channels x 4 B (float)      72 B   (a module's: a channel's column is allocated when a
+//                                         sample first carries it, so the compass's four
+//                                         channels cost a module nothing)
 //   host time   (double, s)         8 B
 //   device time (double, s)         8 B
 //   flags       (uint32)            4 B
 //   ----------------------------------
-//   kBytesPerRow                   92 B  -> 55.2 MB (52.6 MiB) for 600 000 rows.
+//                                  92 B  -> 55.2 MB (52.6 MiB) for 600 000 rows;
+//   kBytesPerRow, every channel:  108 B  -> 64.8 MB.
 // The ring starts at kInitialRows and doubles on demand (one column at a time, so
 // the transient peak is the full size plus one column), so a 100 Hz device never
 // allocates more than about 6 MB.
@@ -57,6 +60,7 @@
 
 #include <array>
 #include <cstddef>
+#include <bit>
 #include <cstdint>
 #include <limits>
 #include <string>
@@ -83,8 +87,13 @@ enum class Channel : uint8_t {
     QuatZ,
     Pressure,
     Temperature,
+    // A compass's (HEC495): its relative magnetic field (no unit) and its magnetic roll (deg).
+    MagRelX,
+    MagRelY,
+    MagRelZ,
+    MagRoll,
 };
-inline constexpr int kChannelCount = 18;
+inline constexpr int kChannelCount = 22;
 
 constexpr uint32_t channelBit(Channel c)
 {
@@ -146,8 +155,11 @@ public:
     size_t size() const { return m_size; }
     bool empty() const { return m_size == 0; }
     size_t capacity() const { return m_capacity; }
-    // Bytes held by the columns (capacity x kBytesPerRow).
-    size_t memoryBytes() const { return m_capacity * kBytesPerRow; }
+    // Bytes held by the columns (capacity x the bytes of a row of the allocated columns).
+    size_t memoryBytes() const
+    {
+        return m_capacity * (kBytesPerRow - (kChannelCount - size_t(std::popcount(m_allocated))) * sizeof(float));
+    }
     // Changes whenever rows are appended, dropped or cleared.
     uint64_t revision() const { return m_revision; }
     // Changes on clear() only: rows of another generation are not comparable.
@@ -166,7 +178,12 @@ public:
     double time(TimeAxis axis, size_t row) const;
     double hostTime(size_t row) const { return m_host[phys(row)]; }
     double deviceTime(size_t row) const { return m_device[phys(row)]; }
-    float value(Channel channel, size_t row) const { return m_values[size_t(channel)][phys(row)]; }
+    // NaN where the row lacks the channel (and for a channel no row has carried).
+    float value(Channel channel, size_t row) const
+    {
+        const auto &column = m_values[size_t(channel)];
+        return column.empty() ? std::numeric_limits<float>::quiet_NaN() : column[phys(row)];
+    }
     uint32_t flags(size_t row) const { return m_flags[phys(row)]; }
     bool has(Channel channel, size_t row) const { return (flags(row) & channelBit(channel)) != 0; }
 
@@ -191,7 +208,12 @@ public:
     // For hot loops: rows [first, last) as at most two runs of physical storage, and
     // the raw columns those runs index.
     std::array<Run, 2> physicalRuns(size_t first, size_t last) const;
-    const float *columnData(Channel channel) const { return m_values[size_t(channel)].data(); }
+    // nullptr for a channel no row has carried since the history was made (its column is not
+    // allocated; has() is false for every row).
+    const float *columnData(Channel channel) const
+    {
+        return m_values[size_t(channel)].empty() ? nullptr : m_values[size_t(channel)].data();
+    }
     const double *timeData(TimeAxis axis) const
     {
         return axis == TimeAxis::Host ? m_host.data() : m_device.data();
@@ -216,6 +238,7 @@ private:
     size_t m_maxRows;
 
     std::array<std::vector<float>, kChannelCount> m_values;
+    uint32_t m_allocated = 0; // channelBit() of the columns that m_values holds (capacity rows each)
     std::vector<double> m_host;
     std::vector<double> m_device;
     std::vector<uint32_t> m_flags;

@@ -30,6 +30,8 @@ MinMaxDecimator::Result MinMaxDecimator::decimate(const ChannelHistory &history,
         out.reserve(qsizetype(maxPoints(widthPx)));
 
     const float *values = history.columnData(channel);
+    if (!values)
+        return result; // no row has carried the channel
     const double *times = history.timeData(axis);
     const uint32_t *flags = history.flagData();
     const uint32_t bit = channelBit(channel);

@@ -1,6 +1,6 @@
 #include "capture_format.h"
 
-#include "record/crc32.h"
+#include "format/crc32.h"
 
 #include <cstring>
 
@@ -12,7 +12,7 @@ template<typename T>
 void put(std::vector<uint8_t> &out, T v)
 {
     uint8_t b[sizeof(T)];
-    std::memcpy(b, &v, sizeof(T)); // little-endian host (see crc32.cpp)
+    std::memcpy(b, &v, sizeof(T)); // little-endian host (see format/crc32.cpp)
     out.insert(out.end(), b, b + sizeof(T));
 }
 
@@ -26,7 +26,7 @@ std::vector<uint8_t> encodeFileHeader(const CaptureHeader &header)
     put<uint16_t>(out, 0);
     put<uint32_t>(out, uint32_t(body.size()));
     out.insert(out.end(), body.begin(), body.end());
-    put<uint32_t>(out, crc32(0, out.data(), out.size()));
+    put<uint32_t>(out, format::crc32(0, out.data(), out.size()));
     return out;
 }
 
@@ -41,7 +41,7 @@ void appendChunk(std::vector<uint8_t> &out, ChunkKind kind, int64_t monotonicNs,
     put<int64_t>(out, monotonicNs);
     put<int64_t>(out, wallUs);
     out.insert(out.end(), data, data + n);
-    put<uint32_t>(out, crc32(0, out.data() + start, out.size() - start));
+    put<uint32_t>(out, format::crc32(0, out.data() + start, out.size() - start));
 }
 
 } // namespace imudesk::record::capture

@@ -1,6 +1,6 @@
 #include "capture_reader.h"
 
-#include "record/crc32.h"
+#include "format/crc32.h"
 
 #include <QFile>
 
@@ -128,7 +128,7 @@ bool CaptureReader::readHeader(QString *error)
     const size_t total = capture::kFileHeaderFixed + bodyLen + 4;
     if (!fill(total))
         return bad(tr("the file ends inside the capture header: nothing was recorded"));
-    if (crc32(0, m_buf.data(), total - 4) != get<uint32_t>(m_buf.data() + total - 4))
+    if (format::crc32(0, m_buf.data(), total - 4) != get<uint32_t>(m_buf.data() + total - 4))
         return bad(tr("the capture header's CRC does not match: the file is damaged"));
     QString why;
     if (!CaptureHeader::decodeBody(m_buf.data() + capture::kFileHeaderFixed, bodyLen, m_header, &why))
@@ -225,7 +225,7 @@ CaptureReader::Result CaptureReader::next(Chunk &chunk)
             return Result::Truncated;
         }
         h = m_buf.data() + m_pos;
-        if (crc32(0, h, total - 4) != get<uint32_t>(h + total - 4)) {
+        if (format::crc32(0, h, total - 4) != get<uint32_t>(h + total - 4)) {
             ++m_damaged;
             m_message = tr("damaged chunk at offset %1 (CRC mismatch); skipped").arg(at);
             ++m_pos;

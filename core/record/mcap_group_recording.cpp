@@ -1,6 +1,6 @@
 #include "mcap_group_recording.h"
 
-#include "device/host_clock.h"
+#include "clock/host_clock.h"
 
 #include <QCoreApplication>
 #include <QDateTime>
@@ -21,7 +21,7 @@ bool McapGroupRecording::start(const QString &path, std::vector<Member> members,
     std::vector<McapRecording::Device> devices;
     for (const Member &m : m_members)
         devices.push_back({m.header, m.label});
-    const int64_t epochOffsetNs = QDateTime::currentMSecsSinceEpoch() * 1'000'000 - device::hostNowNs();
+    const int64_t epochOffsetNs = QDateTime::currentMSecsSinceEpoch() * 1'000'000 - clock::hostNowNs();
     if (!m_recording.start(path, devices, epochOffsetNs, error))
         return false;
     m_cursors.clear();

@@ -1,6 +1,6 @@
 #include "replay_session.h"
 
-#include "device/thread_sync.h"
+#include "jobs/thread_sync.h"
 #include "record/replay_worker.h"
 
 #include <algorithm>
@@ -24,7 +24,7 @@ ReplaySession::ReplaySession(QObject *parent) : DeviceLink(parent)
     connect(m_worker, &ReplayWorker::statsUpdated, this, &ReplaySession::statsUpdated);
     connect(m_worker, &ReplayWorker::nmeaReceived, this, &ReplaySession::nmeaReceived);
     connect(m_worker, &ReplayWorker::errorOccurred, this, &ReplaySession::errorOccurred);
-    device::announceJoin(m_thread);
+    jobs::announceJoin(m_thread);
     m_thread.start();
 }
 
@@ -32,13 +32,13 @@ ReplaySession::~ReplaySession()
 {
     if (m_group)
         m_group->remove(this);
-    device::callAndWait(m_worker, [w = m_worker] { w->close(); });
-    device::joinThread(m_thread);
+    jobs::callAndWait(m_worker, [w = m_worker] { w->close(); });
+    jobs::joinThread(m_thread);
 }
 
 void ReplaySession::open(const QString &path, const ReplayTimeline &timeline)
 {
-    device::postTo(m_worker, [w = m_worker, path, timeline] { w->open(path, timeline); });
+    jobs::postTo(m_worker, [w = m_worker, path, timeline] { w->open(path, timeline); });
 }
 
 void ReplaySession::setGroup(std::shared_ptr<ReplayGroup> group)
@@ -52,7 +52,7 @@ void ReplaySession::setGroup(std::shared_ptr<ReplayGroup> group)
 
 void ReplaySession::close()
 {
-    device::postTo(m_worker, [w = m_worker] { w->close(); });
+    jobs::postTo(m_worker, [w = m_worker] { w->close(); });
 }
 
 void ReplaySession::play()
@@ -97,28 +97,28 @@ void ReplaySession::setLoop(bool on)
 
 void ReplaySession::playAlone()
 {
-    device::postTo(m_worker, [w = m_worker] { w->play(); });
+    jobs::postTo(m_worker, [w = m_worker] { w->play(); });
 }
 
 void ReplaySession::pauseAlone()
 {
-    device::postTo(m_worker, [w = m_worker] { w->pause(); });
+    jobs::postTo(m_worker, [w = m_worker] { w->pause(); });
 }
 
 void ReplaySession::setSpeedAlone(double factor)
 {
     const double f = factor <= 0 ? kAsFastAsPossible : std::clamp(factor, kMinSpeed, kMaxSpeed);
-    device::postTo(m_worker, [w = m_worker, f] { w->setSpeed(f); });
+    jobs::postTo(m_worker, [w = m_worker, f] { w->setSpeed(f); });
 }
 
 void ReplaySession::seekAlone(double seconds)
 {
-    device::postTo(m_worker, [w = m_worker, seconds] { w->seek(seconds); });
+    jobs::postTo(m_worker, [w = m_worker, seconds] { w->seek(seconds); });
 }
 
 void ReplaySession::setLoopAlone(bool on)
 {
-    device::postTo(m_worker, [w = m_worker, on] { w->setLoop(on); });
+    jobs::postTo(m_worker, [w = m_worker, on] { w->setLoop(on); });
 }
 
 } // namespace imudesk::record

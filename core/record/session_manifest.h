@@ -13,7 +13,7 @@
 //                   "jitter_ns": 48000, "uncertainty_ns": 0, "resets": 0}],
 //       "events": [{"host_ns": 1234, "what": "disconnected", "detail": "..."}]}]}
 //
-// Host times are the recording host's steady clock (device::hostNowNs), the clock of every
+// Host times are the recording host's steady clock (clock::hostNowNs), the clock of every
 // capture's chunks and of the common times: the devices are aligned on it.
 #include "device/session_types.h"
 

@@ -5,9 +5,9 @@
 // its measurements with their limits and outcome, and its artifacts (PDF, recording) with their
 // SHA-256. Outcomes: PASS, FAIL, ERROR (the equipment failed: the port went away, the module did
 // not answer; not counted against the product's yield) and ABORTED (the operator cancelled).
-// Value types; every record has a UUID, which makes storing it twice harmless.
-#include "core/station/station_result.h"
-
+// Value types; every record has a UUID, which makes storing it twice harmless. A station's
+// result becomes one in core/station (result_conversion.h): this folder knows no station.
+#include <QByteArray>
 #include <QDateTime>
 #include <QJsonObject>
 #include <QString>
@@ -75,8 +75,6 @@ struct ModuleRecord {
     std::vector<MeasurementRecord> measurements;
     std::vector<ArtifactRecord> artifacts;
 
-    // The station's result of one module in this run; artifacts hashed from the files it names.
-    static ModuleRecord fromStation(const station::ModuleResult &r, const RunRecord &run);
     // The record as JSON, shaped like an OpenHTF test record (one per module: the run's fields
     // at the top, the steps as phases with their measurements, the artifacts as attachments).
     QJsonObject toJson() const;

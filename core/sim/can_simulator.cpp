@@ -1,6 +1,6 @@
 #include "can_simulator.h"
 
-#include "device/host_clock.h"
+#include "clock/host_clock.h"
 
 #include <QCanBus>
 #include <QCanBusDevice>
@@ -131,7 +131,7 @@ void CanSimulator::send(const std::vector<CanFrame> &frames)
         if (m_bus->writeFrame(protocol::can::toQt(f))) {
             ++m_sent;
             if (m_sentObserver)
-                m_sentObserver(f, device::hostNowNs());
+                m_sentObserver(f, clock::hostNowNs());
         }
 }
 

@@ -39,7 +39,7 @@ public:
     double elapsedSeconds() const;
     // Simulates switching the module off and on (saved settings become active).
     void powerCycle();
-    // Called for every frame handed to the bus, with the host's steady clock (device::hostNowNs)
+    // Called for every frame handed to the bus, with the host's steady clock (clock::hostNowNs)
     // at that moment: the truth a test measures the receiving side's times against.
     void setSentObserver(std::function<void(const protocol::can::CanFrame &, int64_t hostNs)> observer)
     {

@@ -1,6 +1,6 @@
 #include "modbus_simulator.h"
 
-#include "device/thread_sync.h"
+#include "jobs/thread_sync.h"
 #include "sim/modbus_rtu_server.h"
 
 #include <QLoggingCategory>
@@ -29,13 +29,13 @@ bool ModbusSimulator::start(QString *error)
     m_thread->setObjectName(QStringLiteral("modbus-simulator"));
     m_server = new ModbusRtuServer(m_options);
     m_server->moveToThread(m_thread);
-    device::announceJoin(*m_thread);
+    jobs::announceJoin(*m_thread);
     m_thread->start();
     bool ok = false;
     QString why;
     ModbusRtuServer *server = m_server;
     const QString path = m_bridge.serverPath();
-    device::callAndWait(m_server, [server, path, &ok, &why] {
+    jobs::callAndWait(m_server, [server, path, &ok, &why] {
         ok = server->listen(path);
         if (!ok)
             why = server->errorString();
@@ -54,12 +54,12 @@ void ModbusSimulator::stop()
 {
     if (m_thread) {
         ModbusRtuServer *server = m_server;
-        device::callAndWait(m_server, [server] {
+        jobs::callAndWait(m_server, [server] {
             server->disconnectDevice();
             delete server;
         });
         m_server = nullptr;
-        device::joinThread(*m_thread);
+        jobs::joinThread(*m_thread);
         delete m_thread;
         m_thread = nullptr;
     }
@@ -71,7 +71,7 @@ void ModbusSimulator::withDevice(const std::function<void(ModbusDeviceModel &)> 
     if (!m_thread)
         return;
     ModbusRtuServer *server = m_server;
-    device::callAndWait(m_server, [server, &fn] { fn(server->model()); });
+    jobs::callAndWait(m_server, [server, &fn] { fn(server->model()); });
 }
 
 int ModbusSimulator::nodeId()
@@ -79,7 +79,7 @@ int ModbusSimulator::nodeId()
     int id = 0;
     if (m_thread) {
         ModbusRtuServer *server = m_server;
-        device::callAndWait(m_server, [server, &id] { id = server->serverAddress(); });
+        jobs::callAndWait(m_server, [server, &id] { id = server->serverAddress(); });
     }
     return id;
 }
@@ -89,7 +89,7 @@ int ModbusSimulator::baud()
     int b = 0;
     if (m_thread) {
         ModbusRtuServer *server = m_server;
-        device::callAndWait(m_server, [server, &b] { b = server->connectionParameter(QModbusDevice::SerialBaudRateParameter).toInt(); });
+        jobs::callAndWait(m_server, [server, &b] { b = server->connectionParameter(QModbusDevice::SerialBaudRateParameter).toInt(); });
     }
     return b;
 }

@@ -1,8 +1,8 @@
 #include "pty_simulator.h"
 
-#include "device/host_clock.h"
-#include "device/thread_sync.h"
+#include "clock/host_clock.h"
 #include "io/reading_priority.h"
+#include "jobs/thread_sync.h"
 #include "sim/hipnuc_serial_device.h"
 
 #include <QLoggingCategory>
@@ -105,13 +105,13 @@ struct PtySimulator::Engine {
     std::atomic<bool> unplugged{false};
 
     // True time: µs on the host's clock since start() (startHostNs).
-    int64_t nowUs() const { return (device::hostNowNs() - startHostNs) / 1000; }
+    int64_t nowUs() const { return (clock::hostNowNs() - startHostNs) / 1000; }
     // The device's own time (its oscillator, sim_clock.h); the true time is nowUs().
     int64_t deviceNowUs() const { return clockError.deviceUs(nowUs()); }
 
     ClockError clockError;
     std::optional<AdapterBatcher> adapter; // a USB adapter that batches (sim_clock.h)
-    int64_t startHostNs = 0;               // device::hostNowNs() when clock started
+    int64_t startHostNs = 0;               // clock::hostNowNs() when clock started
     int64_t syncPeriodNs = 0;              // SYNC_IN pulses (setSyncIn); 0: none
     int64_t nextPulseNs = 0;               // the next edge on the host's clock
 
@@ -342,7 +342,7 @@ bool PtySimulator::start(QString *error)
     ::fcntl(master, F_SETFD, FD_CLOEXEC);
 
     m_path = QString::fromLocal8Bit(name);
-    const int64_t startHostNs = device::hostNowNs();
+    const int64_t startHostNs = clock::hostNowNs();
     // Modules on one fixture: every simulator on this host sees the fixture's motion at the
     // same instant, whenever it was started (the motion is counted from the host clock's zero).
     if (m_options.motion == Motion::Twists)
@@ -366,12 +366,12 @@ bool PtySimulator::start(QString *error)
     m_thread->setObjectName(QStringLiteral("pty-simulator"));
     m_context = new QObject;
     m_context->moveToThread(m_thread);
-    device::announceJoin(*m_thread);
+    jobs::announceJoin(*m_thread);
     m_thread->start();
 
     Engine *e = m_engine.get();
     QObject *ctx = m_context;
-    device::callAndWait(m_context, [e, ctx] {
+    jobs::callAndWait(m_context, [e, ctx] {
         // The simulated module stands in for a device with a CPU of its own: its thread gets
         // the reading threads' priority (as far as the OS allows), so that a busy host delays
         // the session's reading, which is under test, rather than the device's sending.
@@ -399,13 +399,13 @@ void PtySimulator::stop()
     if (!m_thread)
         return;
     Engine *e = m_engine.get();
-    device::callAndWait(m_context, [e] {
+    jobs::callAndWait(m_context, [e] {
         delete e->timer;
         e->timer = nullptr;
         delete e->notifier;
         e->notifier = nullptr;
     });
-    device::joinThread(*m_thread);
+    jobs::joinThread(*m_thread);
     delete m_context;
     m_context = nullptr;
     delete m_thread;
@@ -433,7 +433,7 @@ void PtySimulator::withSerialDevice(const std::function<void(SimulatedSerialDevi
         fn(e->sim);
         return;
     }
-    device::callAndWait(m_context, [e, &fn] {
+    jobs::callAndWait(m_context, [e, &fn] {
         e->sim.advanceTo(e->deviceNowUs());
         fn(e->sim);
     });
@@ -444,7 +444,7 @@ void PtySimulator::unplug()
     if (!m_thread || !m_engine)
         return;
     Engine *e = m_engine.get();
-    device::callAndWait(m_context, [e] {
+    jobs::callAndWait(m_context, [e] {
         if (e->master >= 0)
             e->unplug();
     });

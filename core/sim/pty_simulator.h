@@ -90,7 +90,7 @@ public:
     // sends a frame of each message set to ONMARK 1 at each edge. 0: none. Before start().
     void setSyncIn(double hz) { m_syncInHz = hz; }
     const ClockError &clock() const { return m_clock; }
-    // The host time (device::hostNowNs) of an instant of the device's own time, e.g. a HiPNUC
+    // The host time (clock::hostNowNs) of an instant of the device's own time, e.g. a HiPNUC
     // module's sample at system_time s: trueHostNs(startedAtUs() + s * 1000). 0 before start().
     int64_t trueHostNs(int64_t deviceUs) const;
 

@@ -1,5 +1,7 @@
 #include "core/station/station_runner.h"
 
+#include "core/station/result_conversion.h"
+
 #include <QCoreApplication>
 #include <QCryptographicHash>
 #include <QDir>
@@ -115,7 +117,7 @@ void StationRunner::onModuleFinished(int i)
         r.attempt = m_folder.nextAttempt(r.serial);
         QString error;
         // The database first: a result is never only in memory.
-        const results::ModuleRecord record = results::ModuleRecord::fromStation(r, m_run);
+        const results::ModuleRecord record = toResultRecord(r, m_run);
         const bool stored = m_results.isOpen() && m_results.commit(record, &error);
         if (m_results.isOpen() && !stored)
             m_reportErrors << error;

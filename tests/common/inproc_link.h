@@ -3,7 +3,7 @@
 // sits behind sim::SimulatedTransport in the session's own worker thread, so no
 // pseudo-terminal and no simulator thread are involved, and nothing a loaded host does can drop
 // bytes between them. The tests that prove the real serial path keep their pseudo-terminals.
-#include "device/thread_sync.h"
+#include "jobs/thread_sync.h"
 #include "sim/simulated_transport.h"
 
 #include <QString>
@@ -18,7 +18,7 @@ namespace imudesk::test {
 template <class Device>
 void withLinkDevice(sim::SimulatedTransport *link, const std::function<void(Device &)> &fn)
 {
-    device::callAndWait(link, [link, &fn] { fn(dynamic_cast<Device &>(link->device())); });
+    jobs::callAndWait(link, [link, &fn] { fn(dynamic_cast<Device &>(link->device())); });
 }
 
 // A session of type S (Hec495Session, ModbusSession, DeviceSession: any with the constructor

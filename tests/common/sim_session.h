@@ -11,7 +11,7 @@
 #include "inproc_link.h"
 
 #include "device/device_session.h"
-#include "device/thread_sync.h"
+#include "jobs/thread_sync.h"
 #include "sim/hipnuc_serial_device.h"
 #include "sim/simulated_transport.h"
 
@@ -74,7 +74,7 @@ private:
     void inLink(void (*fn)(sim::SimulatedTransport &))
     {
         sim::SimulatedTransport *link = m_link;
-        device::callAndWait(link, [link, fn] { fn(*link); });
+        jobs::callAndWait(link, [link, fn] { fn(*link); });
     }
 
     sim::SimulatedTransport *m_link; // owned by the session

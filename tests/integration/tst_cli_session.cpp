@@ -108,7 +108,10 @@ private Q_SLOTS:
         const auto sb = samplesOf(QDir(folder).filePath(m.devices[1].file));
         QVERIFY2(sb.size() > 100, qPrintable(QString::number(sb.size())));
         for (size_t i = 1; i < sb.size(); ++i)
-            QCOMPARE(sb[i].deviceTimeMs - sb[i - 1].deviceTimeMs, 10.0);
+            QVERIFY2(sb[i].deviceTimeMs - sb[i - 1].deviceTimeMs == 10.0,
+                     qPrintable(QStringLiteral("sample %1 of %2: %3 ms after the one before (host %4 ms after)")
+                                    .arg(i).arg(sb.size()).arg(sb[i].deviceTimeMs - sb[i - 1].deviceTimeMs)
+                                    .arg(double(sb[i].hostTimeNs - sb[i - 1].hostTimeNs) / 1e6)));
         // C: the polled answers, each bracketed by its recorded request.
         const auto sc = samplesOf(QDir(folder).filePath(m.devices[2].file));
         QVERIFY2(sc.size() > 20, qPrintable(QString::number(sc.size())));

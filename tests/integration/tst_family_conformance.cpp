@@ -11,7 +11,7 @@
 #include "device/device_session.h"
 #include "device/hec495_session.h"
 #include "device/modbus_session.h"
-#include "device/thread_sync.h"
+#include "jobs/thread_sync.h"
 #include "protocol/can/j1939_config.h"
 #include "protocol/hipnuc/ascii_command.h"
 #include "protocol/modbus/register_map.h"
@@ -88,8 +88,8 @@ FamilyCase serialCase(const char *name, const QString &kind, Caps caps, bool str
         return session(std::move(t));
     };
     c.deafen = [rig](bool on) { rig->link->setDeaf(on); };
-    c.unplug = [rig] { device::callAndWait(rig->link, [l = rig->link] { l->unplug(); }); };
-    c.replug = [rig] { device::callAndWait(rig->link, [l = rig->link] { l->replug(); }); };
+    c.unplug = [rig] { jobs::callAndWait(rig->link, [l = rig->link] { l->unplug(); }); };
+    c.replug = [rig] { jobs::callAndWait(rig->link, [l = rig->link] { l->replug(); }); };
     c.keep = rig;
     return c;
 }

@@ -14,6 +14,7 @@
 #include "sim/simulated_transport.h"
 #include "core/results/results_store.h"
 #include "core/results/results_uploader.h"
+#include "core/station/result_conversion.h"
 #include "core/station/station_runner.h"
 
 #include <QCryptographicHash>
@@ -229,7 +230,7 @@ private Q_SLOTS:
         // would otherwise send it before the CLI does.
         ResultsStore local;
         QVERIFY(local.open(dir.filePath(QStringLiteral("other-station.sqlite")), &error));
-        QVERIFY2(local.commit(results::ModuleRecord::fromStation(r, runner.runRecord()), &error), qPrintable(error));
+        QVERIFY2(local.commit(station::toResultRecord(r, runner.runRecord()), &error), qPrintable(error));
         QCOMPARE(local.pendingCount(), 1);
         const auto upload = test::runCli({QStringLiteral("results"), QStringLiteral("upload"), QStringLiteral("--db"),
                                           dir.filePath(QStringLiteral("other-station.sqlite")), QStringLiteral("--results"),

@@ -275,11 +275,25 @@ private Q_SLOTS:
         QVERIFY(!ws.chartPanel()->chart(ui::ChartKind::Euler)->hasNote());
         QVERIFY(acc->noteButton()->isVisible() && acc->noteButton()->isEnabled());
         // One click: the compass outputs all data (0x49 02), acceleration and rate arrive.
+        // The relative field is not in the angles' output (only the identification's read-all
+        // record had it): its chart is not there, or says why it is empty.
+        ui::ChartView *relative = ws.chartPanel()->chart(ui::ChartKind::MagneticRelative);
+        QTRY_VERIFY_WITH_TIMEOUT(!relative->isVisible() || relative->hasNote(), 5000);
         const double clicked = h.newestTime(plot::TimeAxis::Host);
         QTest::mouseClick(acc->noteButton(), Qt::LeftButton);
         QTRY_VERIFY_WITH_TIMEOUT(h.channelSeenHost(plot::Channel::AccZ) > clicked, 10000);
         QTRY_VERIFY_WITH_TIMEOUT(!acc->hasNote(), 5000);
         QVERIFY(!ws.chartPanel()->chart(ui::ChartKind::Gyroscope)->hasNote());
+        // All data carries the compass's relative field (its own chart, one line per axis) and its
+        // magnetic roll (a line on the Euler chart), and the values table has their rows.
+        QTRY_VERIFY_WITH_TIMEOUT(h.channelSeenHost(plot::Channel::MagRelX) > clicked, 10000);
+        QVERIFY(h.channelSeenHost(plot::Channel::MagRoll) > clicked);
+        QTRY_VERIFY_WITH_TIMEOUT(relative->isVisible(), 5000);
+        QVERIFY(!relative->hasNote());
+        QCOMPARE(ui::ChartView::kindOf(plot::Channel::MagRoll), ui::ChartKind::Euler);
+        QVERIFY(ws.valuesModel()->everSeen(models::LatestValuesModel::MagRelZ));
+        QVERIFY(!ws.chartPanel()->chart(ui::ChartKind::Magnetometer)->isVisible() ||
+                ws.chartPanel()->chart(ui::ChartKind::Magnetometer)->hasNote()); // no µT field: not its magnetometer chart
         ws.disconnectDevice();
         QTRY_COMPARE(ws.state(), SessionState::Closed);
     }

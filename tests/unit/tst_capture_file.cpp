@@ -2,10 +2,10 @@
 // trip with random chunking, a file cut at every offset of its last chunk, a damaged chunk,
 // a disk that fills (an emulated device and a real file under RLIMIT_FSIZE), split by size
 // and the at-least-once-a-second flush.
+#include "format/crc32.h"
 #include "record/capture_format.h"
 #include "record/capture_reader.h"
 #include "record/capture_writer.h"
-#include "record/crc32.h"
 #include "../common/test_main.h"
 
 #include <QBuffer>
@@ -134,6 +134,7 @@ class TstCaptureFile : public QObject {
 private Q_SLOTS:
     void crc32CheckValue()
     {
+        using imudesk::format::crc32;
         // The CRC catalogue's check value for CRC-32/ISO-HDLC.
         QCOMPARE(crc32(0, "123456789", 9), 0xCBF43926u);
         QCOMPARE(crc32(crc32(0, "12345", 5), "6789", 4), 0xCBF43926u);

@@ -92,7 +92,8 @@ class TstChannelHistory : public QObject {
 private Q_SLOTS:
     void memoryAtFullSize()
     {
-        QCOMPARE(ChannelHistory::kBytesPerRow, size_t(92));
+        QCOMPARE(ChannelHistory::kBytesPerRow, size_t(108)); // every channel, the compass's four too
+        // A module's rows: its 18 channels' columns only (92 B a row).
         ChannelHistory h; // defaults: 10 min, 600 000 rows
         QCOMPARE(h.maxRows(), size_t(600000));
         QCOMPARE(h.maxDuration(), 600.0);
@@ -165,7 +166,14 @@ private Q_SLOTS:
         QVERIFY(h.has(Channel::Yaw, 2));
         QVERIFY(!h.has(Channel::AccX, 2));
         QVERIFY(!h.has(Channel::QuatW, 2));
-        QCOMPARE(h.presentChannels(), ChannelHistory::kChannelMask);
+        // Every channel these samples carry (the compass's relative field and magnetic roll are
+        // not among them).
+        QCOMPARE(h.presentChannels(), ChannelHistory::kChannelMask & ~(imudesk::plot::channelBit(Channel::MagRelX)
+                                                                       | imudesk::plot::channelBit(Channel::MagRelY)
+                                                                       | imudesk::plot::channelBit(Channel::MagRelZ)
+                                                                       | imudesk::plot::channelBit(Channel::MagRoll)));
+        QVERIFY(std::isnan(h.value(Channel::MagRelX, 1)));
+        QVERIFY(!h.columnData(Channel::MagRoll)); // never carried: no column
 
         ChannelHistory onlyImu;
         onlyImu.append(makeSample(0, 0.0, 1.0, model::FieldAcc | model::FieldGyr));
@@ -527,6 +535,8 @@ private Q_SLOTS:
         s.quat = {13, 14, 15, 16};
         s.pressurePa = 17;
         s.temperatureC = 18;
+        s.magRelative = {19, 20, 21};
+        s.magRollDeg = 22;
         const auto catalog = imudesk::plot::channelCatalog();
         QCOMPARE(int(catalog.size()), imudesk::plot::kChannelCount);
         for (int c = 0; c < imudesk::plot::kChannelCount; ++c) {

@@ -164,15 +164,24 @@ private Q_SLOTS:
         r.magRoll = 45.5f;
         r.heading = 120;
         m.refresh(r.toSample());
-        QVERIFY(m.everSeen(LatestValuesModel::MagRelative));
-        QVERIFY(m.everSeen(LatestValuesModel::MagRoll));
+        for (auto row : {LatestValuesModel::MagRelX, LatestValuesModel::MagRelY, LatestValuesModel::MagRelZ,
+                         LatestValuesModel::MagRoll})
+            QVERIFY(m.everSeen(row));
         QVERIFY(!m.everSeen(LatestValuesModel::MagX));
-        QCOMPARE(value(m, LatestValuesModel::MagRelative), QStringLiteral("0.500  0.800  -1.250"));
+        // One row per axis, as the chart of the relative field has one line per axis.
+        QCOMPARE(value(m, LatestValuesModel::MagRelX), QStringLiteral("0.500"));
+        QCOMPARE(value(m, LatestValuesModel::MagRelY), QStringLiteral("0.800"));
+        QCOMPARE(value(m, LatestValuesModel::MagRelZ), QStringLiteral("-1.250"));
         QCOMPARE(value(m, LatestValuesModel::MagRoll), QStringLiteral("45.5"));
-        QCOMPARE(m.index(LatestValuesModel::MagRelative, LatestValuesModel::UnitColumn).data().toString(),
+        QCOMPARE(m.index(LatestValuesModel::MagRelY, LatestValuesModel::UnitColumn).data().toString(),
                  QStringLiteral("relative"));
         QCOMPARE(m.index(LatestValuesModel::MagRoll, LatestValuesModel::UnitColumn).data().toString(), QStringLiteral("deg"));
-        QVERIFY(m.index(LatestValuesModel::MagRelative, 0).data(Qt::ToolTipRole).toString().contains(QStringLiteral("north is 1")));
+        QVERIFY(m.index(LatestValuesModel::MagRelZ, 0).data(Qt::ToolTipRole).toString().contains(QStringLiteral("north is 1")));
+        QVERIFY(m.index(LatestValuesModel::MagRelX, 0).data().toString().contains(QStringLiteral("Relative magnetic field X")));
+        // Not rows of a module before any data.
+        QVERIFY(!LatestValuesModel::isCoreRow(LatestValuesModel::MagRelX));
+        QVERIFY(!LatestValuesModel::isCoreRow(LatestValuesModel::MagRoll));
+        QVERIFY(LatestValuesModel::isCoreRow(LatestValuesModel::Temperature));
     }
 
     // A module set to NWU: the attitude rows say so, the others do not change.
@@ -234,15 +243,18 @@ private Q_SLOTS:
         m.refresh(s);
         // The example's status word 0x1508 has bit 11 (UTC_SYNCED in the manual's table: 0 =
         // synchronised) clear, so its system_time is the ms of the UTC day: the device time's
-        // unit changes first. Then every row HI91 carries changed from "—": two ranges in the
-        // value column, around the INS / ship-motion / inclinometer rows that HI91 does not carry.
-        QCOMPARE(spy.count(), 3);
+        // unit changes first. Then every row HI91 carries changed from "—": three ranges in the
+        // value column, around the compass rows (relative field, magnetic roll) and the INS /
+        // ship-motion / inclinometer rows that HI91 does not carry.
+        QCOMPARE(spy.count(), 4);
         QCOMPARE(spy.at(0).at(0).toModelIndex().row(), int(LatestValuesModel::DeviceTime));
         QCOMPARE(spy.at(0).at(0).toModelIndex().column(), int(LatestValuesModel::UnitColumn));
         QCOMPARE(spy.at(1).at(0).toModelIndex().row(), 0);
-        QCOMPARE(spy.at(1).at(1).toModelIndex().row(), int(LatestValuesModel::DeviceTime));
-        QCOMPARE(spy.at(2).at(0).toModelIndex().row(), int(LatestValuesModel::StatusFlags));
-        QCOMPARE(spy.at(2).at(1).toModelIndex().row(), int(LatestValuesModel::RowCount) - 1);
+        QCOMPARE(spy.at(1).at(1).toModelIndex().row(), int(LatestValuesModel::Temperature));
+        QCOMPARE(spy.at(2).at(0).toModelIndex().row(), int(LatestValuesModel::DeviceTime));
+        QCOMPARE(spy.at(2).at(1).toModelIndex().row(), int(LatestValuesModel::DeviceTime));
+        QCOMPARE(spy.at(3).at(0).toModelIndex().row(), int(LatestValuesModel::StatusFlags));
+        QCOMPARE(spy.at(3).at(1).toModelIndex().row(), int(LatestValuesModel::RowCount) - 1);
         QCOMPARE(spy.at(1).at(0).toModelIndex().column(), int(LatestValuesModel::ValueColumn));
         QVERIFY(m.everSeen(LatestValuesModel::Roll));
         QVERIFY(!m.everSeen(LatestValuesModel::Latitude));

@@ -4,6 +4,7 @@
 // station's result classified (a module gone is ERROR, a cancel ABORTED), a database of a newer
 // schema refused.
 #include "core/results/results_store.h"
+#include "core/station/result_conversion.h"
 #include "../common/result_records.h"
 #include "../common/test_main.h"
 
@@ -160,17 +161,17 @@ private Q_SLOTS:
         s.values.push_back(station::Measurement{QStringLiteral("gyro_bias_z"), -0.3, QStringLiteral("°/s"),
                                                 QStringLiteral("|x| ≤ 0.2"), false, QStringLiteral("ABS_LE"), 0.2});
         r.steps.push_back(s);
-        const ModuleRecord failed = ModuleRecord::fromStation(r, run());
+        const ModuleRecord failed = station::toResultRecord(r, run());
         QCOMPARE(failed.outcome, Outcome::Fail);
         QCOMPARE(failed.slot, QStringLiteral("/dev/ttyUSB2"));
         QCOMPARE(failed.measurements[0].low.value_or(0), -0.2);
         QCOMPARE(failed.measurements[0].high.value_or(0), 0.2);
         QCOMPARE(failed.measurements[0].outcome, Outcome::Fail);
         r.end = station::ModuleResult::End::EquipmentFailed;
-        QCOMPARE(ModuleRecord::fromStation(r, run()).outcome, Outcome::Error);
+        QCOMPARE(station::toResultRecord(r, run()).outcome, Outcome::Error);
         r.end = station::ModuleResult::End::Cancelled;
-        QCOMPARE(ModuleRecord::fromStation(r, run()).outcome, Outcome::Aborted);
-        QVERIFY(ModuleRecord::fromStation(r, run()).uuid != ModuleRecord::fromStation(r, run()).uuid);
+        QCOMPARE(station::toResultRecord(r, run()).outcome, Outcome::Aborted);
+        QVERIFY(station::toResultRecord(r, run()).uuid != station::toResultRecord(r, run()).uuid);
     }
 
     void newerSchemaRefused()

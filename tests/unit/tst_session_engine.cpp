@@ -5,7 +5,7 @@
 #include "device/device_session.h"
 #include "device/hec495_session.h"
 #include "device/modbus_session.h"
-#include "device/thread_sync.h"
+#include "jobs/thread_sync.h"
 #include "protocol/modbus/register_map.h"
 #include "protocol/hipnuc/ascii_command.h"
 #include "sim/hec495_simulator.h"
@@ -128,13 +128,13 @@ private Q_SLOTS:
         QTRY_VERIFY(s.store().size() > 50);
         const size_t before = s.store().size();
 
-        device::callAndWait(link, [link] { link->unplug(); });
+        jobs::callAndWait(link, [link] { link->unplug(); });
         QTRY_COMPARE_WITH_TIMEOUT(s.state(), SessionState::Reconnecting, 2000);
         QCOMPARE(s.sendCommand(hp::commands::logVersion()) > 0, true); // ends NotSent, nothing hangs
         QTest::qWait(700); // duration under test: away past a reopen poll (Reconnector::kPollMs, 500 ms)
         QVERIFY(s.store().size() >= before);
 
-        device::callAndWait(link, [link] { link->replug(); });
+        jobs::callAndWait(link, [link] { link->replug(); });
         QTRY_COMPARE_WITH_TIMEOUT(s.state(), SessionState::Connected, 3000);
         QCOMPARE(reconnected.count(), 1);
         QTRY_VERIFY(s.store().size() > before + 50);
@@ -204,7 +204,7 @@ private Q_SLOTS:
         QVERIFY2(r.ok && r.message.contains(QStringLiteral("Read back")), qPrintable(r.message));
         QCOMPARE(bauds.last().at(0).toInt(), 9600);
         int deviceBaud = 0;
-        device::callAndWait(link, [link, &deviceBaud] { deviceBaud = link->device().baud(); });
+        jobs::callAndWait(link, [link, &deviceBaud] { deviceBaud = link->device().baud(); });
         QCOMPARE(deviceBaud, 9600);
         const quint64 n = s.store().totalAppended();
         QTRY_VERIFY_WITH_TIMEOUT(s.store().totalAppended() >= n + 3, 3000);

@@ -210,6 +210,8 @@ QString ChartPanel::missingText(ChartKind kind)
     case ChartKind::Quaternion: return tr("This device's output carries no quaternion at its current setting.");
     case ChartKind::Pressure: return tr("This device's output carries no pressure at its current setting.");
     case ChartKind::Temperature: return tr("This device's output carries no temperature at its current setting.");
+    case ChartKind::MagneticRelative:
+        return tr("This device's output carries no relative magnetic field at its current setting.");
     }
     return {};
 }
@@ -262,7 +264,9 @@ void ChartPanel::updateChartVisibility(bool force)
     for (int k = 0; k < kChartKindCount; ++k)
         if ((m_offerCharts >> k) & 1u)
             offered |= ChartView::channelMask(ChartKind(k));
-    const uint32_t present = m_history.empty() ? ~0u : m_history.presentChannels() | offered;
+    // (A compass's relative field, which only the HEC495 sends, waits for its data.)
+    const uint32_t beforeData = ~ChartView::channelMask(ChartKind::MagneticRelative);
+    const uint32_t present = m_history.empty() ? beforeData : m_history.presentChannels() | offered;
     if (present == m_shownPresence && !force)
         return;
     m_shownPresence = present;

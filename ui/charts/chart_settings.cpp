@@ -16,7 +16,8 @@ QString key(const char *k)
 
 constexpr std::array<const char *, plot::kChannelCount> kChannelKeys = {
     "accX", "accY", "accZ", "gyrX", "gyrY", "gyrZ", "magX",  "magY",  "magZ",
-    "roll", "pitch", "yaw", "quatW", "quatX", "quatY", "quatZ", "pressure", "temperature"};
+    "roll", "pitch", "yaw", "quatW", "quatX", "quatY", "quatZ", "pressure", "temperature",
+    "magRelX", "magRelY", "magRelZ", "magRoll"};
 
 } // namespace
 
@@ -28,7 +29,8 @@ const char *ChartSettings::channelKey(plot::Channel channel)
 const char *ChartSettings::chartKey(ChartKind kind)
 {
     static constexpr std::array<const char *, kChartKindCount> keys = {
-        "accelerometer", "gyroscope", "magnetometer", "euler", "quaternion", "pressure", "temperature"};
+        "accelerometer", "gyroscope", "magnetometer", "euler", "quaternion", "pressure", "temperature",
+        "magneticRelative"};
     return keys[size_t(kind)];
 }
 

@@ -12,8 +12,9 @@ class QSettings;
 namespace imudesk::ui {
 
 // The charts of one device, in the panel's order.
-enum class ChartKind : int { Accelerometer, Gyroscope, Magnetometer, Euler, Quaternion, Pressure, Temperature };
-inline constexpr int kChartKindCount = 7;
+// MagneticRelative: a compass's field without unit (the HEC495's), shown once a device sends it.
+enum class ChartKind : int { Accelerometer, Gyroscope, Magnetometer, Euler, Quaternion, Pressure, Temperature, MagneticRelative };
+inline constexpr int kChartKindCount = 8;
 
 struct ChartSettings {
     // Bump the version in the keys when a value changes meaning; old keys are then ignored.
@@ -25,7 +26,7 @@ struct ChartSettings {
         "ui/v1/charts/accelerometer/windowSeconds", "ui/v1/charts/gyroscope/windowSeconds",
         "ui/v1/charts/magnetometer/windowSeconds",  "ui/v1/charts/euler/windowSeconds",
         "ui/v1/charts/quaternion/windowSeconds",    "ui/v1/charts/pressure/windowSeconds",
-        "ui/v1/charts/temperature/windowSeconds"};
+        "ui/v1/charts/temperature/windowSeconds",   "ui/v1/charts/magneticRelative/windowSeconds"};
     // The time windows the charts offer (s): 2 s ... 10 min.
     static constexpr std::array<double, 8> kWindowChoices = {2, 5, 10, 30, 60, 120, 300, 600};
     static constexpr double kDefaultWindowSeconds = 10;
@@ -36,7 +37,7 @@ struct ChartSettings {
     static constexpr uint32_t kDefaultHiddenCharts =
         (1u << int(ChartKind::Quaternion)) | (1u << int(ChartKind::Pressure)) | (1u << int(ChartKind::Temperature));
 
-    std::array<double, kChartKindCount> windowSeconds = {10, 10, 10, 10, 10, 10, 10};
+    std::array<double, kChartKindCount> windowSeconds = {10, 10, 10, 10, 10, 10, 10, 10};
     plot::TimeAxis timeAxis = plot::TimeAxis::Device;
     uint32_t hiddenChannels = 0; // plot::channelBit() of each hidden axis
     uint32_t hiddenCharts = kDefaultHiddenCharts;

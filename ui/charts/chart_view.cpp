@@ -51,6 +51,7 @@ constexpr std::array<KindTraits, kChartKindCount> kTraits = {{
     {-1.0, 1.0, 0.0002, 3, 4, "quaternion"},
     {95000.0, 105000.0, 2.0, 0, 1, "pressure"},
     {-20.0, 60.0, 0.02, 1, 2, "temperature"},
+    {-2.0, 2.0, 0.002, 3, 3, "magnetic_relative"},
 }};
 
 const KindTraits &traits(ChartKind kind)
@@ -65,6 +66,7 @@ const KindTraits &traits(ChartKind kind)
 std::vector<Channel> ChartView::channelsOf(ChartKind kind)
 {
     static_assert(int(plot::ChannelGroup::Temperature) == int(ChartKind::Temperature)
+                      && int(plot::ChannelGroup::MagneticRelative) == int(ChartKind::MagneticRelative)
                       && plot::kChannelGroupCount == kChartKindCount,
                   "one chart per channel group, in the same order");
     return plot::channelsOf(plot::ChannelGroup(kind));
@@ -93,6 +95,7 @@ QString ChartView::title(ChartKind kind)
     case ChartKind::Quaternion: return tr("Quaternion");
     case ChartKind::Pressure: return tr("Air pressure");
     case ChartKind::Temperature: return tr("Temperature");
+    case ChartKind::MagneticRelative: return tr("Relative magnetic field");
     }
     return {};
 }
@@ -107,6 +110,7 @@ QString ChartView::quantity(ChartKind kind)
     case ChartKind::Quaternion: return tr("Quaternion component");
     case ChartKind::Pressure: return tr("Pressure");
     case ChartKind::Temperature: return tr("Temperature");
+    case ChartKind::MagneticRelative: return tr("Magnetic field (north = 1)");
     }
     return {};
 }
@@ -121,6 +125,7 @@ QString ChartView::unit(ChartKind kind)
     case ChartKind::Quaternion: return QString();
     case ChartKind::Pressure: return tr("Pa");
     case ChartKind::Temperature: return tr("°C");
+    case ChartKind::MagneticRelative: return QString(); // relative: the horizontal northward field is 1
     }
     return {};
 }

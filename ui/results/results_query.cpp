@@ -1,6 +1,6 @@
 #include "ui/results/results_query.h"
 
-#include "core/device/thread_sync.h"
+#include "core/jobs/thread_sync.h"
 
 #include <QThread>
 
@@ -18,7 +18,7 @@ ResultsQuery::ResultsQuery(QObject *parent) : QObject(parent)
     m_thread->setObjectName(QStringLiteral("imudesk-results-query"));
     m_worker = new Worker;
     m_worker->moveToThread(m_thread);
-    device::announceJoin(*m_thread);
+    jobs::announceJoin(*m_thread);
     m_thread->start();
 }
 
@@ -26,8 +26,8 @@ ResultsQuery::~ResultsQuery()
 {
     m_shared->closing = true;
     // The jobs still queued see `closing` and do nothing; the connection closes in its thread.
-    device::callAndWait(m_worker, [w = m_worker] { w->store.close(); });
-    device::joinThread(*m_thread);
+    jobs::callAndWait(m_worker, [w = m_worker] { w->store.close(); });
+    jobs::joinThread(*m_thread);
     delete m_worker;
     delete m_thread;
 }
@@ -38,13 +38,13 @@ void ResultsQuery::post(int channel, Job job)
     const quint64 generation = ++m_shared->generation[size_t(channel)];
     if (++m_outstanding == 1)
         Q_EMIT busyChanged(true);
-    device::postTo(m_worker, [this, w = m_worker, shared = m_shared, channel, generation, job = std::move(job)] {
+    jobs::postTo(m_worker, [this, w = m_worker, shared = m_shared, channel, generation, job = std::move(job)] {
         std::function<void()> apply;
         if (!shared->closing && shared->generation[size_t(channel)] == generation)
             apply = job(w->store);
         // Even a skipped job answers: the owner counts what is outstanding. An owner that is
         // gone (its destructor waits for this thread) drops the event with itself.
-        device::postTo(this, [this, apply = std::move(apply), channel, generation] { answered(apply, channel, generation); });
+        jobs::postTo(this, [this, apply = std::move(apply), channel, generation] { answered(apply, channel, generation); });
     });
 }
 

@@ -1,6 +1,6 @@
 #include "mcap_writer.h"
 
-#include "record/crc32.h"
+#include "format/crc32.h"
 
 #include <zstd.h>
 
@@ -133,7 +133,7 @@ bool McapWriter::writeOut(const std::string &bytes)
         return false;
     if (m_file.write(bytes.data(), qint64(bytes.size())) != qint64(bytes.size()))
         return failed(m_file.errorString());
-    m_dataCrc = record::crc32(m_dataCrc, bytes.data(), bytes.size());
+    m_dataCrc = format::crc32(m_dataCrc, bytes.data(), bytes.size());
     m_offset += bytes.size();
     return true;
 }
@@ -229,7 +229,7 @@ bool McapWriter::closeChunk()
     const bool zstd = m_options.compression == Compression::Zstd;
     // A zstd chunk carries zstd's own checksum of its content (xxHash, a fraction of CRC-32's
     // time); the chunk's CRC is then 0, "not computed" (the specification's word for it).
-    const uint32_t crc = zstd ? 0 : record::crc32(0, m_chunk.data(), m_chunk.size());
+    const uint32_t crc = zstd ? 0 : format::crc32(0, m_chunk.data(), m_chunk.size());
     const std::string *records = &m_chunk;
     if (zstd) {
         if (!m_zstd) {
@@ -309,7 +309,7 @@ bool McapWriter::attach(const std::string &name, const std::string &mediaType, c
     str(content, mediaType);
     u64(content, data.size());
     content += data;
-    u32(content, record::crc32(0, content.data(), content.size())); // over every field before it
+    u32(content, format::crc32(0, content.data(), content.size())); // over every field before it
     std::string out;
     record(out, OpAttachment, content);
     AttachmentIndex index{m_offset, out.size(), logTime, createTime, data.size(), name, mediaType};
@@ -462,8 +462,8 @@ bool McapWriter::close()
     u64(footer, 8 + 8 + 4);
     u64(footer, summaryStart);
     u64(footer, summaryOffsetStart);
-    uint32_t crc = record::crc32(0, summary.data(), summary.size());
-    crc = record::crc32(crc, footer.data(), footer.size());
+    uint32_t crc = format::crc32(0, summary.data(), summary.size());
+    crc = format::crc32(crc, footer.data(), footer.size());
     u32(footer, crc);
     std::string tail = summary + footer;
     tail.append(kMagic, kMagicSize);

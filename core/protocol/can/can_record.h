@@ -7,7 +7,7 @@
 //   [2..5] identifier
 //   [6..]  the data bytes
 // With flag bit 4 (stamped) eight bytes come before the data: the interface's receive stamp
-// (the kernel's, for SocketCAN) in ns on the host clock (device::hostNowNs), little-endian.
+// (the kernel's, for SocketCAN) in ns on the host clock (clock::hostNowNs), little-endian.
 // A record whose length byte exceeds 64 or whose flags have unknown bits set is not a record:
 // the reader skips one byte and looks again (counted).
 #include "protocol/can/can_frame.h"

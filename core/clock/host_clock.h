@@ -5,7 +5,7 @@
 #include <chrono>
 #include <cstdint>
 
-namespace imudesk::device {
+namespace imudesk::clock {
 
 inline int64_t hostNowNs()
 {
@@ -13,4 +13,9 @@ inline int64_t hostNowNs()
         .count();
 }
 
+} // namespace imudesk::clock
+
+// The sessions and families of core/device call it unqualified, as their own.
+namespace imudesk::device {
+using clock::hostNowNs;
 } // namespace imudesk::device

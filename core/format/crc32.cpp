@@ -4,7 +4,7 @@
 #include <bit>
 #include <cstring>
 
-namespace imudesk::record {
+namespace imudesk::format {
 
 namespace {
 
@@ -54,4 +54,4 @@ uint32_t crc32(uint32_t crc, const void *data, size_t n)
     return ~c;
 }
 
-} // namespace imudesk::record
+} // namespace imudesk::format

@@ -28,7 +28,7 @@ extern "C" void __tsan_acquire(void *addr);
 extern "C" void __tsan_release(void *addr);
 #endif
 
-namespace imudesk::device {
+namespace imudesk::jobs {
 
 // What this thread wrote so far is seen by a thread that calls takeOver(token) afterwards.
 inline void handOver([[maybe_unused]] const void *token)
@@ -100,4 +100,4 @@ inline void joinThread(QThread &thread)
     waitForThread(thread);
 }
 
-} // namespace imudesk::device
+} // namespace imudesk::jobs

@@ -5,9 +5,9 @@
 #include <cstddef>
 #include <cstdint>
 
-namespace imudesk::record {
+namespace imudesk::format {
 
 // Continues a running CRC: crc32(crc32(0, a), b) == crc32 of a followed by b.
 uint32_t crc32(uint32_t crc, const void *data, size_t n);
 
-} // namespace imudesk::record
+} // namespace imudesk::format
