@@ -278,7 +278,9 @@ private Q_SLOTS:
         // The relative field is not in the angles' output (only the identification's read-all
         // record had it): its chart is not there, or says why it is empty.
         ui::ChartView *relative = ws.chartPanel()->chart(ui::ChartKind::MagneticRelative);
-        QTRY_VERIFY_WITH_TIMEOUT(!relative->isVisible() || relative->hasNote(), 5000);
+        QTRY_VERIFY_WITH_TIMEOUT(relative->isVisible() && relative->hasNote(), 5000);
+        QVERIFY(relative->noteText().contains(QStringLiteral("no relative magnetic field")));
+        QVERIFY(relative->noteButton()->isVisible()); // the same switch as the acceleration's
         const double clicked = h.newestTime(plot::TimeAxis::Host);
         QTest::mouseClick(acc->noteButton(), Qt::LeftButton);
         QTRY_VERIFY_WITH_TIMEOUT(h.channelSeenHost(plot::Channel::AccZ) > clicked, 10000);

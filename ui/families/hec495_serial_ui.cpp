@@ -64,10 +64,11 @@ void Hec495SerialUi::decorate(DeviceWorkspace &ws, device::DeviceLink &link, con
                    DeviceWorkspace::LinkDockPlace::BehindValues);
     // Streaming its default content (the 0x84 angles), the compass sends no acceleration or
     // rate: those charts say so, with a switch of the output content to all data (0x49 02, the
-    // 0x14 record: angles, acceleration, rate and its clock). Not saved: the compass settings'
-    // Save keeps it over a restart.
+    // 0x14 record: angles, acceleration, rate, the relative field, the magnetic roll and its
+    // clock). Not saved: the compass settings' Save keeps it over a restart.
     ws.chartPanel()->offerOutputSwitch(
-        (1u << int(ChartKind::Accelerometer)) | (1u << int(ChartKind::Gyroscope)),
+        (1u << int(ChartKind::Accelerometer)) | (1u << int(ChartKind::Gyroscope))
+            | (1u << int(ChartKind::MagneticRelative)),
         [] { return tr("Switch the output to all data"); },
         [session] { session->setOutputContent(protocol::witlink::OutputContent::AllData); });
     // Tools > Calibrate > HEC495 compass: the compass's own calibration methods.
