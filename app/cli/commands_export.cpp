@@ -1,5 +1,5 @@
 // imudesk-cli export: a capture (or a vendor CSV or raw byte dump) to vendor CSV, tidy CSV or
-// JSON Lines (README, "CSV layouts");
+// JSON Lines (docs/FILE_FORMATS.md, "CSV layouts");
 // imudesk-cli import: a vendor HI91 CSV to a capture.
 #include "cli_context.h"
 #include "format/mcap/mcap_repair.h"

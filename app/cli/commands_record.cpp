@@ -1,4 +1,4 @@
-// imudesk-cli record: every byte a device sends, to a capture file (README, "Capture file format").
+// imudesk-cli record: every byte a device sends, to a capture file (docs/FILE_FORMATS.md, "Capture file format").
 #include "cli_context.h"
 #include "device_links.h"
 #include "device/group_recording.h"

@@ -1,6 +1,6 @@
 #pragma once
 // Several devices recorded as one session (issue 36 point 3): a folder that holds each
-// device's capture (README, "Capture file format"), written by its own session as a single
+// device's capture (docs/FILE_FORMATS.md, "Capture file format"), written by its own session as a single
 // recording is, and session.json (record/session_manifest.h): the devices, their links and
 // identities, the clock models they ended with, and what happened to each (a cable pulled, a
 // recording stopped by a full disk). A device that drops out is marked there and the others go

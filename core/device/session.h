@@ -46,7 +46,7 @@ public:
     void setAutoReconnect(bool on);
     bool autoReconnect() const { return m_autoReconnect.load(); }
 
-    // Records every byte received, as received, to a capture file (README, "Capture file
+    // Records every byte received, as received, to a capture file (docs/FILE_FORMATS.md, "Capture file
     // format") until stopRecording(), close() or a write error: recordingStarted(path), then
     // recordingProgress every 500 ms and recordingStopped(reason) (empty reason: as asked).
     // header adds entries (e.g. config.* from LOG COMCONFIG) to the identity, port and baud.

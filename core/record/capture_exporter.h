@@ -2,7 +2,7 @@
 // Exports a capture (or a time range of it) to vendor CSV, tidy CSV, JSON Lines, MCAP
 // (format/mcap: ROS 2 messages in CDR and a JSON channel per device, the device's identity as
 // metadata, its configuration snapshot as an attachment) or MATLAB .mat (record/mat_export.h)
-// (README, "CSV layouts"), streaming: the capture is read chunk by chunk and the output
+// (docs/FILE_FORMATS.md, "CSV layouts"), streaming: the capture is read chunk by chunk and the output
 // written in 1 MB blocks, so memory does not grow with the file. Progress is reported as
 // a fraction of the capture read; returning false from it cancels (the partial outputs
 // are removed).

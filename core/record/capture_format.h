@@ -1,5 +1,5 @@
 #pragma once
-// Byte layout of an ImuDesk capture file (see README, "Capture file format"). All
+// Byte layout of an ImuDesk capture file (see docs/FILE_FORMATS.md, "Capture file format"). All
 // integers little-endian.
 //
 //   file    = file-header chunk*

@@ -1,5 +1,5 @@
 #pragma once
-// The header of a capture file (README, "Capture file format"): a string map with
+// The header of a capture file (docs/FILE_FORMATS.md, "Capture file format"): a string map with
 // well-known keys for the device identity, the link and the recording, plus the
 // device's configuration snapshot under "config.". Encoded as UTF-8 "key=value" lines.
 #include "model/device_identity.h"

@@ -1,5 +1,5 @@
 #pragma once
-// Plays a capture file (README, "Capture file format") as if the device were connected:
+// Plays a capture file (docs/FILE_FORMATS.md, "Capture file format") as if the device were connected:
 // the recorded bytes go through the live session's decoder path (StreamDemux, HiPNUC
 // payloads) into the same bounded SampleStore, so charts, the attitude view and the
 // values table work unchanged. Play/pause, speed 0.1x to 10x or as fast as possible,

@@ -7,7 +7,7 @@ namespace imudesk::format::mcap {
 
 namespace {
 // The JSON channel's schema: an object per sample; the keys are the JSON Lines export's
-// (README, "JSON Lines"), each present only when the sample has the quantity.
+// (docs/FILE_FORMATS.md, "JSON Lines"), each present only when the sample has the quantity.
 constexpr const char *kStatusSchema = R"({"title":"imudesk/Sample","description":"What of a sample no ROS message holds, with the keys of ImuDesk's JSON Lines export: main_status, the HEC495's and GNSS fields, system_time, host_time_ns, common_time_ns, common_uncertainty_ns.","type":"object"})";
 } // namespace
 
