@@ -235,8 +235,11 @@ private Q_SLOTS:
         // about 30 deg, at the records' last time; frames without a clock that a loaded host
         // reads in one go share their arrival, a pile of a few degrees), no stretch of the axis
         // without a row (a flat line: the bug's axis jumped a second), no turn faster than the
-        // motion's.
+        // motion's, but for kJitterDeg: frames without a clock are stamped at their arrival, and a
+        // loaded host (the suite beside two builds) reads two frames sent 70 ms apart 6 ms apart
+        // (2 deg; seen in CI), far below the bug's 30 deg.
         constexpr double kPileDeg = 12.0;
+        constexpr double kJitterDeg = 4.0;
         double pile = 0.0;
         int rows = 0;
         size_t previous = SIZE_MAX;
@@ -258,7 +261,7 @@ private Q_SLOTS:
                 pile = dt < 1e-6 ? pile + std::abs(dyaw) : 0.0;
                 QVERIFY2(pile < kPileDeg, qPrintable(where + QStringLiteral(", %1 deg at this instant").arg(pile)));
                 if (dt >= 1e-6)
-                    QVERIFY2(std::abs(dyaw) <= 1.0 + 120.0 * dt, qPrintable(where));
+                    QVERIFY2(std::abs(dyaw) <= kJitterDeg + 120.0 * dt, qPrintable(where));
             }
             previous = i;
         }
