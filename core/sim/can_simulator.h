@@ -28,7 +28,7 @@ public:
     explicit CanSimulator(CanSimOptions options, QObject *parent = nullptr);
     ~CanSimulator() override;
 
-    // Opens plugin/interface (e.g. "virtualcan", "can0" or "tcp://localhost:35500/can0").
+    // Opens plugin/interface (e.g. "virtualcan", "can0" or "tcp://localhost:24500/can0").
     bool start(const QString &plugin, const QString &interfaceName, QString *error = nullptr);
     void stop();
     bool isRunning() const;

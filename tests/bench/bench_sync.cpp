@@ -445,7 +445,7 @@ LiveCan runLiveCan(double seconds)
         r.error = QStringLiteral("Qt's virtualcan plugin is not installed");
         return r;
     }
-    const QString iface = QStringLiteral("tcp://127.0.0.1:35497/can0"); // off the tests' ports
+    const QString iface = QStringLiteral("tcp://127.0.0.1:24497/can0"); // off the tests' ports
     sim::CanSimOptions o;
     o.protocol = protocol::can::CanProtocol::CanOpen;
     o.motion = sim::Motion::Tumble;

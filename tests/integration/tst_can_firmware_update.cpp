@@ -31,7 +31,7 @@ using protocol::ihex::IntelHexWriter;
 
 namespace {
 
-constexpr int kPort = 35491;
+constexpr int kPort = 24491;
 constexpr uint32_t kAppStart = 0x8000;
 constexpr uint32_t kFlashSize = 512 * 1024;
 

@@ -5,8 +5,8 @@
 // 0x60) on Qt's virtualcan bus. They check the bytes ImuDesk sends, answer with values of their
 // own, and ImuDesk must show those values. This executable uses its own virtualcan TCP port.
 #include "device/can_session.h"
-#include "device/link_opener.h"
-#include "settings/can_setting_catalog.h"
+#include "links/link_opener.h"
+#include "protocol/can/can_setting_catalog.h"
 #include "../common/can_result.h"
 #include "../common/test_main.h"
 
@@ -28,7 +28,7 @@ using protocol::can::CanProtocol;
 namespace {
 
 const QString kPlugin = QStringLiteral("virtualcan");
-const QString kIface = QStringLiteral("tcp://127.0.0.1:35492/can0");
+const QString kIface = QStringLiteral("tcp://127.0.0.1:24492/can0");
 constexpr uint8_t kNode = 8;
 constexpr uint8_t kHost = 0x55;
 
@@ -145,9 +145,9 @@ std::unique_ptr<CanSession> openSession(CanProtocol protocol)
     return s;
 }
 
-settings::CanSetting setting(CanProtocol p, const char *name)
+protocol::can::CanSetting setting(CanProtocol p, const char *name)
 {
-    return *settings::findCanSetting(p, QLatin1String(name));
+    return *protocol::can::findCanSetting(p, QLatin1String(name));
 }
 
 } // namespace
@@ -262,7 +262,7 @@ private Q_SLOTS:
     {
         device::CanSessionOptions o;
         o.plugin = kPlugin;
-        o.interfaceName = QStringLiteral("tcp://127.0.0.1:35492/can1");
+        o.interfaceName = QStringLiteral("tcp://127.0.0.1:24492/can1");
         o.protocol = CanProtocol::J1939;
         o.canFd = true;
         o.dataBitrate = 4000000;

@@ -76,7 +76,7 @@ private Q_SLOTS:
 
     void canopenSession()
     {
-        QVERIFY(startSim({QStringLiteral("--protocol"), QStringLiteral("canopen"), QStringLiteral("--motion"), QStringLiteral("tumble")}, 35483));
+        QVERIFY(startSim({QStringLiteral("--protocol"), QStringLiteral("canopen"), QStringLiteral("--motion"), QStringLiteral("tumble")}, 24483));
         // 8.28.45.24: TPDO1 period 50 ms, read back.
         Run r = cli(can({QStringLiteral("sdo"), QStringLiteral("write"), QStringLiteral("0x1800"), QStringLiteral("5"), QStringLiteral("50"),
                          QStringLiteral("--size"), QStringLiteral("2")}));
@@ -122,7 +122,7 @@ private Q_SLOTS:
 
     void j1939Session()
     {
-        QVERIFY(startSim({QStringLiteral("--protocol"), QStringLiteral("j1939"), QStringLiteral("--node"), QStringLiteral("9")}, 35484));
+        QVERIFY(startSim({QStringLiteral("--protocol"), QStringLiteral("j1939"), QStringLiteral("--node"), QStringLiteral("9")}, 24484));
         Run r = cli(can({QStringLiteral("--node"), QStringLiteral("9"), QStringLiteral("reg"), QStringLiteral("write"), QStringLiteral("0x0137"),
                          QStringLiteral("100")}));
         QVERIFY2(r.code == 0, qPrintable(r.err));
@@ -182,7 +182,7 @@ private Q_SLOTS:
     // sends, leaves the trigger unconfirmed and the command exits 1 saying so.
     void j1939SyncConfirmed()
     {
-        QVERIFY(startSim({QStringLiteral("--protocol"), QStringLiteral("j1939")}, 35501));
+        QVERIFY(startSim({QStringLiteral("--protocol"), QStringLiteral("j1939")}, 24501));
         const QStringList j = {QStringLiteral("--protocol"), QStringLiteral("j1939")};
         Run r = cli(can(j + QStringList{QStringLiteral("output"), QStringLiteral("off")}));
         QVERIFY2(r.code == 0, qPrintable(r.err));
@@ -205,7 +205,7 @@ private Q_SLOTS:
     {
         QVERIFY(startSim({QStringLiteral("--protocol"), QStringLiteral("canopen"), QStringLiteral("--firmware"),
                           QStringLiteral("1.6.6")},
-                         35502));
+                         24502));
         const QStringList co = {QStringLiteral("--protocol"), QStringLiteral("canopen")};
         Run r = cli(can(co + QStringList{QStringLiteral("sdo"), QStringLiteral("write"), QStringLiteral("0x209C"), QStringLiteral("0"),
                                          QStringLiteral("9")}));
@@ -224,7 +224,7 @@ private Q_SLOTS:
     // time, which is no UTC time of day in the samples (here every 50 ms).
     void j1939TimeWithoutDateIsNotUtc()
     {
-        QVERIFY(startSim({QStringLiteral("--protocol"), QStringLiteral("j1939")}, 35503));
+        QVERIFY(startSim({QStringLiteral("--protocol"), QStringLiteral("j1939")}, 24503));
         const QStringList j = {QStringLiteral("--protocol"), QStringLiteral("j1939")};
         Run r = cli(can(j + QStringList{QStringLiteral("set"), QStringLiteral("interval-ff2f"), QStringLiteral("50")}));
         QVERIFY2(r.code == 0, qPrintable(r.err));
@@ -237,7 +237,7 @@ private Q_SLOTS:
     // node that answered; 254 is J1939's null address, not a host's; CANopen has no broadcast SDO.
     void j1939BroadcastFromSourceAddress()
     {
-        QVERIFY(startSim({QStringLiteral("--protocol"), QStringLiteral("j1939")}, 35504));
+        QVERIFY(startSim({QStringLiteral("--protocol"), QStringLiteral("j1939")}, 24504));
         const QStringList j = {QStringLiteral("--protocol"), QStringLiteral("j1939")};
         Run r = cli(can(j + QStringList{QStringLiteral("--node"), QStringLiteral("255"), QStringLiteral("--source-address"),
                                         QStringLiteral("0x21"), QStringLiteral("reg"), QStringLiteral("read"), QStringLiteral("0x9C"),
@@ -262,7 +262,7 @@ private Q_SLOTS:
     // as one roll; URFR written (no read: refused with why); a read-only register not written.
     void j1939ModbusListByName()
     {
-        QVERIFY(startSim({QStringLiteral("--protocol"), QStringLiteral("j1939")}, 35505));
+        QVERIFY(startSim({QStringLiteral("--protocol"), QStringLiteral("j1939")}, 24505));
         const QStringList j = {QStringLiteral("--protocol"), QStringLiteral("j1939")};
         Run r = cli(can(j + QStringList{QStringLiteral("get"), QStringLiteral("heading_mode")}));
         QVERIFY2(r.code == 0 && r.out.trimmed() == QStringLiteral("HEADING_MODE: 9-axis (absolute heading)"), qPrintable(r.out + r.err));
@@ -299,7 +299,7 @@ private Q_SLOTS:
     // text lines show only what the frames carried, and --fd is refused where no manual has it.
     void j1939CanFd()
     {
-        QVERIFY(startSim({QStringLiteral("--protocol"), QStringLiteral("j1939"), QStringLiteral("--fd")}, 35486));
+        QVERIFY(startSim({QStringLiteral("--protocol"), QStringLiteral("j1939"), QStringLiteral("--fd")}, 24486));
         Run r = cli(can({QStringLiteral("--fd"), QStringLiteral("--data-bitrate"), QStringLiteral("2000000"), QStringLiteral("--protocol"),
                          QStringLiteral("j1939"), QStringLiteral("read"), QStringLiteral("--duration"), QStringLiteral("0.6")}));
         QVERIFY2(r.code == 0, qPrintable(r.err));
@@ -322,7 +322,7 @@ private Q_SLOTS:
     // saved interval survives "action reset", an unsaved one does not.
     void actionsByName()
     {
-        QVERIFY(startSim({QStringLiteral("--protocol"), QStringLiteral("j1939")}, 35489));
+        QVERIFY(startSim({QStringLiteral("--protocol"), QStringLiteral("j1939")}, 24489));
         const QStringList j = {QStringLiteral("--protocol"), QStringLiteral("j1939")};
         const auto ok = [&](const QStringList &args) {
             const Run r = cli(can(j + args));
@@ -347,7 +347,7 @@ private Q_SLOTS:
 
     void hec495Session()
     {
-        QVERIFY(startSim({QStringLiteral("--protocol"), QStringLiteral("canopen"), QStringLiteral("--device"), QStringLiteral("hec495")}, 35485));
+        QVERIFY(startSim({QStringLiteral("--protocol"), QStringLiteral("canopen"), QStringLiteral("--device"), QStringLiteral("hec495")}, 24485));
         Run r = cli(can({QStringLiteral("--protocol"), QStringLiteral("hec495"), QStringLiteral("sdo"), QStringLiteral("write"),
                          QStringLiteral("0x6200"), QStringLiteral("0"), QStringLiteral("6")}));
         QVERIFY2(r.code == 0, qPrintable(r.err));

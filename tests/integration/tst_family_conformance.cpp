@@ -43,7 +43,7 @@ using Cap = DeviceLink::Capability;
 
 // virtualcan: a port of this executable's own (the plugin starts one server per process).
 const QString kCanPlugin = QStringLiteral("virtualcan");
-const QString kCanIface = QStringLiteral("tcp://127.0.0.1:35495/can0"); // 35493 is the CAN update dialog test's
+const QString kCanIface = QStringLiteral("tcp://127.0.0.1:24495/can0"); // 24493 is the CAN update dialog test's
 
 // One family under test: how to make and open its session over a simulated device, two
 // requests (one the device answers, one it cannot), and how to break and mend the link.

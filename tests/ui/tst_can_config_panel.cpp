@@ -69,7 +69,7 @@ private Q_SLOTS:
 
     void canopenPanel()
     {
-        const QString iface = QStringLiteral("tcp://127.0.0.1:35487/can0");
+        const QString iface = QStringLiteral("tcp://127.0.0.1:24487/can0");
         sim::CanSimOptions o;
         o.protocol = protocol::can::CanProtocol::CanOpen;
         sim::CanSimulator simulator(o);
@@ -155,7 +155,7 @@ private Q_SLOTS:
     {
         // An HEC495 on standard frames: its PDO and work modes, every node on/off; on the
         // extended variant the work mode and NMT are not there, and its PDO formats are two.
-        const QString iface = QStringLiteral("tcp://127.0.0.1:35487/can1");
+        const QString iface = QStringLiteral("tcp://127.0.0.1:24487/can1");
         sim::CanSimOptions o;
         o.protocol = protocol::can::CanProtocol::CanOpen;
         o.hec495 = true;
@@ -211,7 +211,7 @@ private Q_SLOTS:
         panel.show();
         ui::CanSettingsTable *table = panel.settingsTable();
         Bus bus(simOptions(protocol::can::CanProtocol::J1939, false));
-        QVERIFY(bus.start(QStringLiteral("tcp://127.0.0.1:35487/can2"), panel, protocol::can::CanProtocol::J1939, 8));
+        QVERIFY(bus.start(QStringLiteral("tcp://127.0.0.1:24487/can2"), panel, protocol::can::CanProtocol::J1939, 8));
         sim::CanSimulator &simulator = bus.simulator;
         // Read first: every row shows what the simulated module holds (v1.7.1 defaults).
         QTRY_COMPARE(table->moduleText(QStringLiteral("bitrate")), QStringLiteral("500000"));
@@ -248,7 +248,7 @@ private Q_SLOTS:
         panel.show();
         ui::CanSettingsTable *table = panel.settingsTable();
         Bus bus(simOptions(protocol::can::CanProtocol::CanOpen, true));
-        QVERIFY(bus.start(QStringLiteral("tcp://127.0.0.1:35487/can3"), panel, protocol::can::CanProtocol::Hec495));
+        QVERIFY(bus.start(QStringLiteral("tcp://127.0.0.1:24487/can3"), panel, protocol::can::CanProtocol::Hec495));
         sim::CanSimulator &simulator = bus.simulator;
         QTRY_COMPARE(table->moduleText(QStringLiteral("pdo-mode")), QStringLiteral("not readable"));
         QVERIFY(!table->readButton()->isEnabled());

@@ -34,7 +34,7 @@ using ui::FirmwareUpdateDialog;
 
 namespace {
 
-const QString kInterface = QStringLiteral("tcp://127.0.0.1:35493/can0");
+const QString kInterface = QStringLiteral("tcp://127.0.0.1:24493/can0");
 
 protocol::ihex::FirmwareImage image(const std::string &version, size_t size)
 {
