@@ -5,7 +5,7 @@
 #include "format/sample_json.h"
 #include "format/time_text.h"
 #include "protocol/can/j1939.h"
-#include "settings/can_setting_catalog.h"
+#include "protocol/can/can_setting_catalog.h"
 #include "sim/can_simulator.h"
 
 #include <QCanBus>
@@ -166,7 +166,7 @@ int runRequest(CanSession &s, quint64 id, bool json, const QString &label)
     return ExitOk;
 }
 
-QStringList settingNames(const std::vector<settings::CanSetting> &all)
+QStringList settingNames(const std::vector<protocol::can::CanSetting> &all)
 {
     QStringList names;
     for (const auto &s : all)
@@ -175,14 +175,14 @@ QStringList settingNames(const std::vector<settings::CanSetting> &all)
 }
 
 // A setting's value as read: a value of several registers from all of them.
-QString shownValue(const settings::CanSetting &s, const device::CanRequestResult &read)
+QString shownValue(const protocol::can::CanSetting &s, const device::CanRequestResult &read)
 {
     if (s.words > 1)
         return s.showWords(std::vector<uint32_t>(read.values.begin(), read.values.end()));
     return s.show(read.value);
 }
 
-QString settingJson(const settings::CanSetting &s, const device::CanRequestResult *read)
+QString settingJson(const protocol::can::CanSetting &s, const device::CanRequestResult *read)
 {
     QString o = QStringLiteral("{\"name\":%1,\"label\":%2,\"unit\":%3,\"range\":%4,\"writable\":%5")
                     .arg(jsonString(s.name), jsonString(s.label), jsonString(s.unit), jsonString(s.range()),
@@ -199,8 +199,8 @@ QString settingJson(const settings::CanSetting &s, const device::CanRequestResul
 // can get NAME | set NAME VALUE | config: the settings by the device's catalogue.
 int typedSetting(CanSession &session, const QString &sub, const QStringList &pos, bool json)
 {
-    const std::vector<settings::CanSetting> all = session.settingsCatalogue();
-    auto find = [&](const QString &name) -> const settings::CanSetting * {
+    const std::vector<protocol::can::CanSetting> all = session.settingsCatalogue();
+    auto find = [&](const QString &name) -> const protocol::can::CanSetting * {
         for (const auto &s : all)
             if (s.name.compare(name, Qt::CaseInsensitive) == 0)
                 return &s;
@@ -233,7 +233,7 @@ int typedSetting(CanSession &session, const QString &sub, const QStringList &pos
         return fail(QStringLiteral("usage: can get NAME | can set NAME VALUE; the names: %1")
                         .arg(settingNames(all).join(QStringLiteral(", "))),
                     ExitUsage);
-    const settings::CanSetting *s = find(pos[1]);
+    const protocol::can::CanSetting *s = find(pos[1]);
     if (!s)
         return fail(QStringLiteral("unknown setting '%1' for %2: %3")
                         .arg(pos[1], QString::fromLatin1(protocol::can::protocolName(session.protocol())),
@@ -372,7 +372,7 @@ int cmdCan(const QStringList &args)
             return fail(QStringLiteral("--bitrate needs a positive number"), ExitUsage);
         o.bitrate = int(n);
         // The rates the protocol's manual lists (a bus at another rate never hears the module).
-        const std::vector<int> rates = settings::canBitrates(o.protocol, o.hec495Extended).rates;
+        const std::vector<int> rates = protocol::can::canBitrates(o.protocol, o.hec495Extended).rates;
         if (std::find(rates.begin(), rates.end(), o.bitrate) == rates.end()) {
             QStringList listed;
             for (int r : rates)

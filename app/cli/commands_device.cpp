@@ -1,7 +1,7 @@
 // imudesk-cli commands that talk to a device: ports, probe, read, send, simulate.
 #include "cli_context.h"
 #include "device/hec495_session.h"
-#include "device/link_opener.h"
+#include "links/link_opener.h"
 #include "format/sample_json.h"
 #include "sim/pty_simulator.h"
 

@@ -2,7 +2,7 @@
 #include "cli_context.h"
 #include "format/sample_json.h"
 #include "protocol/hipnuc/payloads.h"
-#include "record/capture_decoder.h"
+#include "capture/capture_decoder.h"
 
 #include <QElapsedTimer>
 #include <QFile>

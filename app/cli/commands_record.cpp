@@ -1,13 +1,13 @@
 // imudesk-cli record: every byte a device sends, to a capture file (docs/FILE_FORMATS.md, "Capture file format").
 #include "cli_context.h"
 #include "device_links.h"
-#include "device/group_recording.h"
-#include "device/link_opener.h"
+#include "record/group_recording.h"
+#include "links/link_opener.h"
 #include "protocol/can/can_decoder.h"
 #include "protocol/hipnuc/ascii_command.h"
 #include "record/mcap_group_recording.h"
-#include "record/mcap_recording.h"
-#include "record/capture_header.h"
+#include "capture/mcap_recording.h"
+#include "capture/capture_header.h"
 
 #include <QCoreApplication>
 #include <QDir>
@@ -27,7 +27,7 @@ namespace imudesk::cli {
 
 namespace {
 
-// record PORT,PORT,... -o FOLDER: every device into one session folder (device/group_recording.h).
+// record PORT,PORT,... -o FOLDER: every device into one session folder (record/group_recording.h).
 int recordGroup(const QStringList &specs, const QString &folder, double duration, int baud)
 {
     std::vector<OpenDevice> devices;

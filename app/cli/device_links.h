@@ -3,10 +3,10 @@
 // side by side and connected: a serial port (its family found as probe finds it; PORT:BAUD at
 // that rate), modbus:PORT[@ID] (a HiPNUC module's Modbus RTU; modbus-hec495:PORT[@ID] for the
 // compass) or can:PLUGIN:INTERFACE[:PROTOCOL] (protocol auto, j1939, canopen or hec495).
-#include "device/link_opener.h"
+#include "links/link_opener.h"
 #include "device/session_types.h"
 #include "model/device_identity.h"
-#include "record/capture_header.h"
+#include "capture/capture_header.h"
 
 #include <QString>
 #include <QStringList>

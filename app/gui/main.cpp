@@ -1,7 +1,7 @@
 // ImuDesk GUI: command line, language, settings, main window.
 #include "workspace/device_workspace.h"
 #include "workspace/language_switcher.h"
-#include "device/serial_family.h"
+#include "links/serial_family.h"
 #include "families/family_ui.h"
 #include "recording/twist_align_dialog.h"
 #include "workspace/tool_actions.h"

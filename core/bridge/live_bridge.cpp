@@ -5,8 +5,8 @@
 #include "format/mcap/channel_sink.h"
 #include "format/mcap/sample_channels.h"
 #include "format/sample_json.h"
-#include "record/device_name.h"
-#include "record/mcap_recording.h"
+#include "capture/device_name.h"
+#include "capture/mcap_recording.h"
 
 #include <QCoreApplication>
 #include <QDateTime>

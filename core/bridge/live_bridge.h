@@ -17,7 +17,7 @@
 //
 // Listens on the loopback address unless told otherwise: the protocol has no authentication.
 #include "device/sample_store.h"
-#include "record/capture_header.h"
+#include "capture/capture_header.h"
 
 #include <QHostAddress>
 #include <QObject>

@@ -17,7 +17,7 @@
 #include "protocol/can/can_decoder.h"
 #include "protocol/can/can_record.h"
 #include "protocol/hipnuc/payloads.h"
-#include "record/capture_reader.h"
+#include "capture/capture_reader.h"
 #include "protocol/stream/stream_demux.h"
 #include "protocol/witlink/frame_decoder.h"
 

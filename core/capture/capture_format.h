@@ -11,7 +11,7 @@
 //
 // A reader accepts chunks up to the first one that is incomplete (the writer was killed,
 // the cable was pulled, the disk filled) and never trusts a chunk whose CRC fails.
-#include "record/capture_header.h"
+#include "capture/capture_header.h"
 
 #include <cstddef>
 #include <cstdint>

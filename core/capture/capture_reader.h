@@ -1,11 +1,11 @@
 #pragma once
-// Reads a capture file (record/capture_format.h) chunk by chunk with a bounded buffer.
+// Reads a capture file (capture/capture_format.h) chunk by chunk with a bounded buffer.
 // A file that ends inside a chunk (the writer was killed, the cable pulled, the disk
 // filled) reads up to its last complete chunk and reports Truncated; a chunk whose CRC
 // or framing is wrong is reported as Damaged and the next call searches for the next
 // valid chunk after it, so one bad sector costs only the chunks it touched.
-#include "record/capture_format.h"
-#include "record/capture_header.h"
+#include "capture/capture_format.h"
+#include "capture/capture_header.h"
 
 #include <QCoreApplication>
 #include <QIODevice>

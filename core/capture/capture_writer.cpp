@@ -1,6 +1,6 @@
 #include "capture_writer.h"
 
-#include "record/capture_format.h"
+#include "capture/capture_format.h"
 
 #include <QFile>
 #include <QFileInfo>

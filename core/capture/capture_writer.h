@@ -1,5 +1,5 @@
 #pragma once
-// Background writer of capture files (record/capture_format.h). append() is cheap and
+// Background writer of capture files (capture/capture_format.h). append() is cheap and
 // thread-safe (the session's worker calls it for every read from the port): it queues
 // the bytes with their time stamps; the writer's own thread encodes and writes them,
 // and makes them durable (fdatasync) at least every flushIntervalMs.
@@ -11,8 +11,8 @@
 //
 // Optional split: a new file (same header, capture.part incremented, name "-001" etc.
 // before the suffix) once a file exceeds splitBytes or spans splitSeconds.
-#include "record/capture_format.h"
-#include "record/capture_header.h"
+#include "capture/capture_format.h"
+#include "capture/capture_header.h"
 
 #include <QCoreApplication>
 #include <QIODevice>

@@ -2,7 +2,7 @@
 // A device's one name (issue 53 point 16): the same in every run, wherever a device is named by
 // ImuDesk: its MCAP and live-bridge topics (/imu/<name>/...), its frame (imu_<name>), the struct
 // of a MATLAB file, a session's file and manifest entry. Decided here alone, from what the
-// device says of itself and of its link (a capture header, record/capture_header.h):
+// device says of itself and of its link (a capture header, capture/capture_header.h):
 //   1. its serial number, when it has one that is text ("0042", "2181B60A6FDA63DF");
 //   2. else its family and bus address: "HEC495_addr2" (Witlink address), "HI14R3_addr1" (a
 //      Modbus node), "canopen_node5" / "j1939_node8" / "hec495_node5" (a CAN protocol and node);
@@ -10,7 +10,7 @@
 //   4. else its product name ("HI14R3"), else "device".
 // Never a port or a tab's title: /dev/pts/10 and "HI14R3 on /dev/pts/10" differ per run.
 // Characters other than letters, digits and '_' become '_' (record::deviceName is topic-safe).
-#include "record/capture_header.h"
+#include "capture/capture_header.h"
 
 #include <string>
 

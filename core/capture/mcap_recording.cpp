@@ -1,6 +1,6 @@
 #include "mcap_recording.h"
 
-#include "record/device_name.h"
+#include "capture/device_name.h"
 
 #include <QCoreApplication>
 #include <QDateTime>

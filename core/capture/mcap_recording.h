@@ -10,7 +10,7 @@
 // one thread.
 #include "format/mcap/mcap_writer.h"
 #include "format/mcap/sample_channels.h"
-#include "record/capture_header.h"
+#include "capture/capture_header.h"
 
 #include <QElapsedTimer>
 #include <QString>

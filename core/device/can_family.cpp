@@ -8,7 +8,7 @@
 #include "protocol/can/j1939.h"
 #include "protocol/can/j1939_config.h"
 #include "protocol/can/sdo.h"
-#include "record/capture_header.h"
+#include "capture/capture_header.h"
 
 #include <QLoggingCategory>
 

@@ -2,7 +2,7 @@
 #include "device/can_family.h"
 #include "io/can_transport.h"
 #include "protocol/can/can_decoder.h"
-#include "record/capture_header.h"
+#include "capture/capture_header.h"
 
 #include "protocol/can/canopen.h"
 #include "protocol/can/hec495_can.h"
@@ -60,7 +60,7 @@ QList<int> CanSession::moduleBitrates(CanProtocol protocol, bool hec495Extended)
 {
     if (protocol == CanProtocol::Auto)
         return {}; // no device's setting yet
-    const std::vector<int> rates = settings::canBitrates(protocol, hec495Extended).rates;
+    const std::vector<int> rates = protocol::can::canBitrates(protocol, hec495Extended).rates;
     return QList<int>(rates.begin(), rates.end());
 }
 
@@ -241,14 +241,14 @@ quint64 CanSession::hec495Write(uint16_t index, uint8_t value)
     return submitJob(CanJob{0, hec495::describeObject(index, value), {hecStep(index, value, hec495::describeObject(index, value))}});
 }
 
-std::vector<settings::CanSetting> CanSession::settingsCatalogue() const
+std::vector<protocol::can::CanSetting> CanSession::settingsCatalogue() const
 {
-    return settings::canSettings(protocol(), m_options.hipnucNodeIdObject, m_options.hec495Extended);
+    return protocol::can::canSettings(protocol(), m_options.hipnucNodeIdObject, m_options.hec495Extended);
 }
 
-quint64 CanSession::readSetting(const settings::CanSetting &setting)
+quint64 CanSession::readSetting(const protocol::can::CanSetting &setting)
 {
-    using A = settings::CanSetting::Access;
+    using A = protocol::can::CanSetting::Access;
     const QString title = tr("read %1").arg(setting.name);
     if (!setting.readable)
         return refuseJob(tr("%1 cannot be read: %2").arg(setting.name, setting.note));
@@ -274,9 +274,9 @@ quint64 CanSession::readSetting(const settings::CanSetting &setting)
     return refuseJob(tr("%1 cannot be read: %2").arg(setting.name, setting.note));
 }
 
-quint64 CanSession::writeSetting(const settings::CanSetting &setting, uint32_t raw)
+quint64 CanSession::writeSetting(const protocol::can::CanSetting &setting, uint32_t raw)
 {
-    using A = settings::CanSetting::Access;
+    using A = protocol::can::CanSetting::Access;
     if (!setting.writable)
         return refuseJob(tr("%1 is read only").arg(setting.name));
     const QString shown = setting.show(raw);

@@ -8,7 +8,7 @@
 #include "can_job.h"
 #include "can_session_types.h"
 #include "device/session.h"
-#include "settings/can_setting_catalog.h"
+#include "protocol/can/can_setting_catalog.h"
 
 #include <QStringList>
 
@@ -51,16 +51,16 @@ public:
     quint64 sdoWrite(uint16_t index, uint8_t sub, uint32_t value, int size);
     quint64 hec495Write(uint16_t index, uint8_t value);
 
-    // A setting of the device's catalogue (settings/can_setting_catalog.h), by its request:
+    // A setting of the device's catalogue (protocol/can/can_setting_catalog.h), by its request:
     // readSetting reads the module's value (the result's value is the raw code); writeSetting
     // writes the raw code and reads it back, failing with both values when they differ. A
     // setting the manual gives no read for (HEC495) is confirmed by the module's write reply
     // only (the result's message says so); reading one is refused with that reason.
-    quint64 readSetting(const settings::CanSetting &setting);
-    quint64 writeSetting(const settings::CanSetting &setting, uint32_t raw);
+    quint64 readSetting(const protocol::can::CanSetting &setting);
+    quint64 writeSetting(const protocol::can::CanSetting &setting, uint32_t raw);
     // The catalogue of the session's protocol (configured or detected), with the node-ID object
     // of its firmware.
-    std::vector<settings::CanSetting> settingsCatalogue() const;
+    std::vector<protocol::can::CanSetting> settingsCatalogue() const;
 
     // Configuration (all protocols where the device has it).
     quint64 setOutputPeriod(uint32_t pgnOrChannel, int ms); // J1939: data PGN; CANopen: TPDO channel 0..5

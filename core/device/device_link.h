@@ -45,7 +45,7 @@ public:
     // host times are the recording's): a view can tell a value that stopped arriving by its age.
     virtual bool isLive() const { return true; }
     // Adds what names the device on its link beyond its identity to a header that names it
-    // (record/device_name.h): a CAN link's protocol and node. Nothing for the others.
+    // (capture/device_name.h): a CAN link's protocol and node. Nothing for the others.
     virtual void describeLink(record::CaptureHeader &) const {}
 
     // Capability::TextCommands: a command as a person typed it (the console); the reply comes

@@ -347,7 +347,7 @@ void ModbusFamily::identify()
         }
         if (id.productName.empty())
             id.productName = ModbusSession::tr("Modbus node %1").arg(m_nodeId).toStdString();
-        id.busAddress = m_nodeId; // its name without a serial number (record/device_name.h)
+        id.busAddress = m_nodeId; // its name without a serial number (capture/device_name.h)
         m_identity = id;
         engine().setIdentity(id);
         engine().setState(SessionState::Connected,

@@ -12,7 +12,7 @@
 #include "device/raw_byte_log.h"
 #include "device/request.h"
 #include "io/transport.h"
-#include "record/capture_writer.h"
+#include "capture/capture_writer.h"
 
 #include <QThread>
 #include <QTimer>

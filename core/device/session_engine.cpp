@@ -1,6 +1,6 @@
 #include "session_engine.h"
 
-#include "record/mcap_recording.h"
+#include "capture/mcap_recording.h"
 
 #include "clock/host_clock.h"
 #include "device/stream_counters.h"
@@ -495,7 +495,7 @@ void SessionEngine::startRecording(const QString &path, const record::CaptureHea
     for (const auto &[k, v] : header.values)
         h.set(k, v);
     if (record::McapRecording::isMcapPath(path)) {
-        // MCAP: the decoded samples, as the tools of the field open them (record/mcap_recording.h).
+        // MCAP: the decoded samples, as the tools of the field open them (capture/mcap_recording.h).
         auto mcap = std::make_unique<record::McapRecording>();
         const int64_t epochOffsetNs = QDateTime::currentMSecsSinceEpoch() * 1'000'000 - hostNowNs();
         QString error;

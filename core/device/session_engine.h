@@ -13,8 +13,8 @@
 #include "device/sample_store.h"
 #include "device/session_types.h"
 #include "io/transport.h"
-#include "record/capture_decoder.h"
-#include "record/capture_writer.h"
+#include "capture/capture_decoder.h"
+#include "capture/capture_writer.h"
 
 #include <QElapsedTimer>
 #include <QObject>

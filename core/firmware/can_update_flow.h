@@ -21,7 +21,7 @@
 //   Done / Failed / Cancelled
 // A failure or cancel after the download began leaves the module in its bootloader (the
 // application was erased), where the next run finds it and finishes the update.
-#include "core/firmware/can_frame_link.h"
+#include "io/can_frame_link.h"
 #include "core/firmware/update_flow.h"
 #include "model/device_identity.h"
 #include "protocol/can/sdo_segmented_download.h"

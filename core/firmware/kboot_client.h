@@ -9,7 +9,7 @@
 // A NAK'd command or data packet is sent again, up to Timeouts::maxRetries times; a data
 // packet whose ACK does not come is not sent again (KBOOT has no sequence numbers, a second
 // copy could be written twice): the transfer fails and the update must be run again.
-#include "core/firmware/byte_link.h"
+#include "io/byte_link.h"
 #include "protocol/kboot/command.h"
 #include "protocol/kboot/packet_decoder.h"
 

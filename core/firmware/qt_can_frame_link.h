@@ -2,7 +2,7 @@
 // firmware::CanFrameLink on a QCanBusDevice (plugin, interface, bit rate as CanSession takes
 // them). Create, open and use it in one thread (the update's worker thread): receive() and
 // sleepMs() run a local event loop so the plugin's notifications arrive.
-#include "core/firmware/can_frame_link.h"
+#include "io/can_frame_link.h"
 
 #include <QCoreApplication>
 #include <QElapsedTimer>

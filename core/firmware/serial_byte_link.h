@@ -1,7 +1,7 @@
 #pragma once
 // ByteLink over a QSerialPort (8N1, no flow control), blocking. Create, use and destroy it
 // in one thread (the update's worker thread); the port is opened by open().
-#include "core/firmware/byte_link.h"
+#include "io/byte_link.h"
 
 #include <QCoreApplication>
 #include <QElapsedTimer>

@@ -23,7 +23,7 @@
 //   Done / Failed / Cancelled
 // A failure or cancel after erasing leaves the module in its bootloader (its application
 // is invalid), where the next run finds it and finishes the update.
-#include "core/firmware/byte_link.h"
+#include "io/byte_link.h"
 #include "model/device_identity.h"
 #include "protocol/ihex/firmware_image.h"
 

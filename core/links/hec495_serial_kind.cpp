@@ -3,8 +3,8 @@
 // Hec495Session is its session.
 #include "device/hec495_family.h"
 #include "device/hec495_session.h"
-#include "device/link_opener.h"
-#include "device/serial_family.h"
+#include "links/link_opener.h"
+#include "links/serial_family.h"
 #include "protocol/witlink/commands.h"
 #include "protocol/witlink/frame_decoder.h"
 #include "protocol/witlink/reply.h"

@@ -2,8 +2,8 @@
 // 5A A5 frames or an answer to LOG VERSION show one; DeviceSession is its session.
 #include "device/device_session.h"
 #include "device/hipnuc_family.h"
-#include "device/link_opener.h"
-#include "device/serial_family.h"
+#include "links/link_opener.h"
+#include "links/serial_family.h"
 #include "protocol/hipnuc/ascii_command.h"
 #include "protocol/hipnuc/frame_decoder.h"
 #include "sim/pty_simulator.h"

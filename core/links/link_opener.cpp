@@ -2,7 +2,7 @@
 
 #include "device/can_session.h"
 #include "device/modbus_session.h"
-#include "device/serial_family_scan.h"
+#include "links/serial_family_scan.h"
 #include "device/session.h"
 #include "io/serial_transport.h"
 #include "record/replay_session.h"

@@ -11,7 +11,7 @@
 #include "device/can_session_types.h"
 #include "device/device_link.h"
 #include "device/modbus_types.h"
-#include "device/serial_family.h"
+#include "links/serial_family.h"
 #include "io/transport.h"
 #include "record/replay_group.h"
 #include "sim/hipnuc_simulator.h"

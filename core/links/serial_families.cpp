@@ -1,5 +1,5 @@
 // The serial families ImuDesk knows, in detection order: one line each.
-#include "device/serial_family.h"
+#include "links/serial_family.h"
 
 #include <algorithm>
 

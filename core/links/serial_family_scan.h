@@ -10,7 +10,7 @@
 // wait kAnswerMs for any family's answer, asking twice when nothing at all came back.
 #include "device/baud_scan.h"
 #include "device/family_plugin.h"
-#include "device/serial_family.h"
+#include "links/serial_family.h"
 
 #include <QByteArray>
 #include <QCoreApplication>

@@ -1,12 +1,12 @@
 #include "capture_exporter.h"
 
 #include "format/sample_json.h"
-#include "record/capture_decoder.h"
-#include "record/capture_reader.h"
+#include "capture/capture_decoder.h"
+#include "capture/capture_reader.h"
 #include "record/capture_source.h"
 #include "record/csv_number.h"
 #include "record/mat_export.h"
-#include "record/mcap_recording.h"
+#include "capture/mcap_recording.h"
 #include "record/vendor_csv.h"
 
 #include <QFile>

@@ -2,8 +2,8 @@
 // One capture read a sample at a time, each with its arrival and its common time (the clock
 // model the live session used, rebuilt from the capture's chunks: CaptureDecoder) plus an
 // offset (a session's twist-to-align result): what a session's export and alignment read.
-#include "record/capture_decoder.h"
-#include "record/capture_reader.h"
+#include "capture/capture_decoder.h"
+#include "capture/capture_reader.h"
 
 #include <QString>
 

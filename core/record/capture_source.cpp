@@ -3,9 +3,9 @@
 #include "protocol/hipnuc/payloads.h"
 #include "protocol/nmea/nmea_sample.h"
 #include "protocol/stream/stream_demux.h"
-#include "record/capture_format.h"
+#include "capture/capture_format.h"
 #include "record/converted_capture.h"
-#include "record/capture_reader.h"
+#include "capture/capture_reader.h"
 #include "record/csv_capture_converter.h"
 #include "record/vendor_csv_importer.h"
 

@@ -1,7 +1,7 @@
 #pragma once
 // Every file a capture is accepted in place of (replay, export, analysis, File > Open),
 // recognised by its content, never its name:
-//   * a capture (record/capture_format.h, the magic "IMUDCAP1");
+//   * a capture (capture/capture_format.h, the magic "IMUDCAP1");
 //   * a CSV written by the vendor's PC tool (first line "HI91,..."), converted as
 //     CsvCaptureConverter does;
 //   * a raw byte dump, as a serial terminal or the vendor's tools write what the module sent:
@@ -11,7 +11,7 @@
 //     (CaptureHeader::kHostTime = "absent").
 // A converted file lives in a temporary directory that this object owns: keep it while the
 // capture is read.
-#include "record/capture_header.h"
+#include "capture/capture_header.h"
 
 #include <QCoreApplication>
 #include <QString>

@@ -1,6 +1,6 @@
 #include "converted_capture.h"
 
-#include "record/capture_format.h"
+#include "capture/capture_format.h"
 
 #include <QFileInfo>
 

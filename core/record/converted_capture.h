@@ -2,8 +2,8 @@
 // A capture written in one go by a converter (a vendor CSV, a raw byte dump): the header, then
 // received-bytes chunks gathered in 1 MB blocks. A failed write is kept and reported once, by
 // finish(), which removes the partial file then.
-#include "record/capture_format.h"
-#include "record/capture_header.h"
+#include "capture/capture_format.h"
+#include "capture/capture_header.h"
 
 #include <QCoreApplication>
 #include <QFile>

@@ -1,7 +1,7 @@
 #include "file_analysis.h"
 
-#include "record/capture_decoder.h"
-#include "record/capture_reader.h"
+#include "capture/capture_decoder.h"
+#include "capture/capture_reader.h"
 #include "record/capture_source.h"
 #include "record/vendor_csv_importer.h"
 

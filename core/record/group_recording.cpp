@@ -2,7 +2,7 @@
 
 #include "clock/host_clock.h"
 #include "format/mcap/sample_channels.h"
-#include "record/device_name.h"
+#include "capture/device_name.h"
 
 #include <QDateTime>
 #include <QDir>

@@ -8,7 +8,7 @@
 // reconnects by itself) goes on recording into the same file.
 #include "device/session.h"
 #include "device/session_types.h"
-#include "record/capture_header.h"
+#include "capture/capture_header.h"
 #include "record/session_manifest.h"
 
 #include <QObject>

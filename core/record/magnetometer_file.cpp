@@ -1,9 +1,9 @@
 #include "magnetometer_file.h"
 
 #include "calib/sample_csv.h"
-#include "record/capture_decoder.h"
-#include "record/capture_format.h"
-#include "record/capture_reader.h"
+#include "capture/capture_decoder.h"
+#include "capture/capture_format.h"
+#include "capture/capture_reader.h"
 #include "record/capture_source.h"
 #include "record/session_manifest.h"
 

@@ -1,7 +1,7 @@
 #include "mat_export.h"
 
-#include "record/device_name.h"
-#include "record/mcap_recording.h"
+#include "capture/device_name.h"
+#include "capture/mcap_recording.h"
 
 #include <QDateTime>
 
@@ -54,7 +54,7 @@ int MatExport::addDevice(const CaptureHeader &header, const std::string &label)
     info["time_common"] = "the sample's sampling instant on the host's clock, from the device's counter through "
                           "ImuDesk's clock model (NaN: none)";
     info["world_frame"] = header.identity().worldFrame == model::WorldFrame::Nwu ? "NWU" : "ENU";
-    // "SN_0042": the name the user guide's MATLAB example uses (record/device_name.h).
+    // "SN_0042": the name the user guide's MATLAB example uses (capture/device_name.h).
     return m_file.addStruct(matlabDeviceName(header, label), info, fields());
 }
 

@@ -16,7 +16,7 @@
 // `imudesk-cli export --format mat` write, for a capture and for a recorded session.
 #include "format/mat/mat_file.h"
 #include "model/sample.h"
-#include "record/capture_header.h"
+#include "capture/capture_header.h"
 
 #include <QString>
 

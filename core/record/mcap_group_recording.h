@@ -7,7 +7,7 @@
 // The sessions never wait for it. Samples a store overwrote before the writer read them (it
 // holds 100 s at 1 kHz) are counted as missed.
 #include "device/sample_store.h"
-#include "record/mcap_recording.h"
+#include "capture/mcap_recording.h"
 
 #include <QString>
 

@@ -6,7 +6,7 @@
 // seek on the capture's timeline, loop. Samples carry the recorded arrival time as
 // hostTimeNs. The worker runs in a private thread; all calls are queued.
 #include "device/device_link.h"
-#include "record/capture_header.h"
+#include "capture/capture_header.h"
 #include "record/replay_group.h"
 
 #include <QThread>

@@ -5,8 +5,8 @@
 #include "device/frame_gap_counter.h"
 #include "device/sample_store.h"
 #include "device/session_types.h"
-#include "record/capture_decoder.h"
-#include "record/capture_reader.h"
+#include "capture/capture_decoder.h"
+#include "capture/capture_reader.h"
 #include "record/capture_source.h"
 #include "record/replay_group.h"
 

@@ -5,9 +5,9 @@
 #include "clock/trigger_pairing.h"
 #include "record/capture_sample_stream.h"
 #include "record/csv_number.h"
-#include "record/device_name.h"
+#include "capture/device_name.h"
 #include "record/mat_export.h"
-#include "record/mcap_recording.h"
+#include "capture/mcap_recording.h"
 
 #include <QDateTime>
 #include <QDir>
@@ -111,7 +111,7 @@ void writeMcap(const QString &folder, const SessionManifest &manifest,
     for (size_t i = 0; i < streams.size(); ++i) {
         const CaptureHeader &h = streams[i]->header();
         // The manifest's name is the label (an older session's names its port): the device's
-        // own name first (record/device_name.h), _2 for a second of the same.
+        // own name first (capture/device_name.h), _2 for a second of the same.
         const std::string name = fm::SampleChannels::uniqueName(deviceName(h, manifest.devices[i].name.toStdString()),
                                                                 [&names](const std::string &n) { return names.count(n) > 0; });
         names.insert(name);

@@ -1,5 +1,5 @@
 #pragma once
-// Exports a recorded session (a folder with session.json, device/group_recording.h) as one
+// Exports a recorded session (a folder with session.json, record/group_recording.h) as one
 // file with the devices aligned on the common time (issue 36 points 3 and 7):
 //   * tidy CSV / JSON Lines: every sample of every device, in the order of its aligned time
 //     (its common time plus the device's offset from twist-to-align; its arrival where it has no

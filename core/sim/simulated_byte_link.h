@@ -4,7 +4,7 @@
 // so an update runs in milliseconds of real time and deterministically. Bytes sent at a
 // baud other than the link's arrive as 0xFF (framing errors); bytes written while the
 // module listens at another baud are lost. Not thread-safe; for tests and benchmarks.
-#include "core/firmware/byte_link.h"
+#include "io/byte_link.h"
 #include "sim/hipnuc_simulator.h"
 
 namespace imudesk::sim {

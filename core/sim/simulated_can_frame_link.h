@@ -5,7 +5,7 @@
 // real time and deterministically. Every frame sent is kept (sent()) for golden tests. Not
 // thread-safe; for tests and benchmarks.
 #include "can_sim_device.h"
-#include "core/firmware/can_frame_link.h"
+#include "io/can_frame_link.h"
 
 #include <deque>
 

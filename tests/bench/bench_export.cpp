@@ -17,9 +17,9 @@
 // Exit status: 0 when each format meets the target and every frame was exported; 1 otherwise;
 // 2 on bad arguments.
 #include "../common/synthetic_capture.h"
-#include "record/capture_decoder.h"
+#include "capture/capture_decoder.h"
 #include "record/capture_exporter.h"
-#include "record/capture_reader.h"
+#include "capture/capture_reader.h"
 
 #include <QCoreApplication>
 #include <QDir>

@@ -31,14 +31,14 @@
 #include "charts/chart_view.h"
 #include "device/can_session.h"
 #include "device/device_session.h"
-#include "device/group_recording.h"
+#include "record/group_recording.h"
 #include "device/hec495_session.h"
 #include "sim/hec495_simulator.h"
 #include "record/session_exporter.h"
 #include "workspace/device_workspace.h"
 #include "workspace/main_window.h"
 #include "bridge/bridge_controller.h"
-#include "record/capture_reader.h"
+#include "capture/capture_reader.h"
 #include "sim/pty_simulator.h"
 
 #include <QDir>

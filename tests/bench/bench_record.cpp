@@ -10,8 +10,8 @@
 //
 // Exit status: 0 when no frame was lost; 1 otherwise; 2 on bad arguments.
 #include "device/device_session.h"
-#include "record/capture_decoder.h"
-#include "record/capture_reader.h"
+#include "capture/capture_decoder.h"
+#include "capture/capture_reader.h"
 #include "sim/pty_simulator.h"
 
 #include <QCoreApplication>

@@ -1,7 +1,7 @@
 #pragma once
 // The bytes a capture recorded, as a serial terminal would have saved them: its received-bytes
 // chunks one after the other, without the header, times or idle markers.
-#include "record/capture_reader.h"
+#include "capture/capture_reader.h"
 
 #include <QByteArray>
 #include <QString>

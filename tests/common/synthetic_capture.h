@@ -4,7 +4,7 @@
 // sentences in between, grouped into chunks the way a UART read delivers them.
 #include "protocol/hipnuc/frame_decoder.h"
 #include "protocol/hipnuc/payloads.h"
-#include "record/capture_format.h"
+#include "capture/capture_format.h"
 
 #include <QFile>
 #include <QString>

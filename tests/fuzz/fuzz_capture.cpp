@@ -1,4 +1,4 @@
-// libFuzzer target: capture file reader (record/capture_reader.h) and the decoder path a
+// libFuzzer target: capture file reader (capture/capture_reader.h) and the decoder path a
 // replay feeds its chunks through.
 //
 // Whatever the bytes, reading must not crash and must end. A header that opens re-encodes
@@ -6,9 +6,9 @@
 // increasing offsets, and re-encoding it with appendChunk gives back exactly the bytes at
 // its offset (so its CRC held). Damaged chunks are counted; the last result is End or
 // Truncated.
-#include "record/capture_decoder.h"
-#include "record/capture_format.h"
-#include "record/capture_reader.h"
+#include "capture/capture_decoder.h"
+#include "capture/capture_format.h"
+#include "capture/capture_reader.h"
 
 #include <QBuffer>
 #include <QByteArray>

@@ -8,7 +8,7 @@
 #include "../common/test_main.h"
 #include "device/device_session.h"
 #include "protocol/hipnuc/frame_decoder.h"
-#include "record/capture_reader.h"
+#include "capture/capture_reader.h"
 
 #include <QSignalSpy>
 #include <QTemporaryDir>

@@ -5,7 +5,7 @@
 #include "../common/test_main.h"
 #include "device/device_session.h"
 #include "device/hec495_session.h"
-#include "device/link_opener.h"
+#include "links/link_opener.h"
 #include "sim/hec495_simulator.h"
 #include "sim/hipnuc_serial_device.h"
 #include "sim/pty_simulator.h"

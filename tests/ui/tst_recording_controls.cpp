@@ -6,7 +6,7 @@
 #include "../common/test_main.h"
 #include "device/device_session.h"
 #include "record/capture_exporter.h"
-#include "record/capture_reader.h"
+#include "capture/capture_reader.h"
 #include "recording/recording_controls.h"
 #include "sim/pty_simulator.h"
 

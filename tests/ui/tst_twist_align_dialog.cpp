@@ -11,7 +11,7 @@
 #include "../common/try_bounds.h"
 #include "protocol/hipnuc/frame_decoder.h"
 #include "protocol/hipnuc/payloads.h"
-#include "record/capture_format.h"
+#include "capture/capture_format.h"
 #include "record/session_manifest.h"
 #include "recording/twist_align_dialog.h"
 

@@ -3,9 +3,9 @@
 // a disk that fills (an emulated device and a real file under RLIMIT_FSIZE), split by size
 // and the at-least-once-a-second flush.
 #include "format/crc32.h"
-#include "record/capture_format.h"
-#include "record/capture_reader.h"
-#include "record/capture_writer.h"
+#include "capture/capture_format.h"
+#include "capture/capture_reader.h"
+#include "capture/capture_writer.h"
 #include "../common/test_main.h"
 
 #include <QBuffer>

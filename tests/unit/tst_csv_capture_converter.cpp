@@ -4,7 +4,7 @@
 // a norm the vendor's tool wrote with other digits is kept as written too.
 #include "../common/test_main.h"
 #include "record/capture_exporter.h"
-#include "record/capture_reader.h"
+#include "capture/capture_reader.h"
 #include "record/csv_capture_converter.h"
 #include "record/vendor_csv.h"
 

@@ -1,10 +1,10 @@
-// A device's one name (issue 53 point 16, record/device_name.h): its serial number, else its
+// A device's one name (issue 53 point 16, capture/device_name.h): its serial number, else its
 // family and bus address, else a label the user set, else its product; never the port or the
 // tab it was opened in, which change per run. MCAP topics (McapRecording::channelsOf), the
 // live bridge and session files take it; MATLAB's struct is "SN_<serial>" (the user guide).
-#include "record/capture_header.h"
-#include "record/device_name.h"
-#include "record/mcap_recording.h"
+#include "capture/capture_header.h"
+#include "capture/device_name.h"
+#include "capture/mcap_recording.h"
 #include "../common/test_main.h"
 
 #include <QTest>

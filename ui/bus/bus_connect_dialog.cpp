@@ -1,7 +1,7 @@
 #include "bus/bus_connect_dialog.h"
 
 #include "device/can_session.h"
-#include "settings/can_setting_catalog.h"
+#include "protocol/can/can_setting_catalog.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -214,7 +214,7 @@ void CanConnectDialog::refreshRates()
 {
     const auto protocol = protocol::can::CanProtocol(m_protocol->currentData().toInt());
     const bool extended = protocol == protocol::can::CanProtocol::Hec495 && m_hecExtended->isChecked();
-    const settings::CanBitrates rates = settings::canBitrates(protocol, extended);
+    const protocol::can::CanBitrates rates = protocol::can::canBitrates(protocol, extended);
     const int chosen = m_bitrate->currentData().toInt();
     const bool keepChoice = m_bitrate->count() > 0 && m_protocolShown == int(protocol);
     m_bitrate->clear();

@@ -109,7 +109,7 @@ void CanSettingsTable::rebuild()
     m_rows.clear();
     m_table->clearContents();
     if (m_session && m_protocol != CanProtocol::Auto)
-        for (settings::CanSetting &s : m_session->settingsCatalogue())
+        for (protocol::can::CanSetting &s : m_session->settingsCatalogue())
             m_rows.push_back(Row{std::move(s), std::nullopt, false, nullptr});
     m_table->setRowCount(int(m_rows.size()));
     for (int i = 0; i < int(m_rows.size()); ++i) {
@@ -117,7 +117,7 @@ void CanSettingsTable::rebuild()
         for (const Row &o : old)
             if (o.setting.name == row.setting.name)
                 row.module = o.module;
-        const settings::CanSetting &s = row.setting;
+        const protocol::can::CanSetting &s = row.setting;
         auto *label = new QTableWidgetItem(s.label);
         label->setToolTip(QStringLiteral("%1 (%2)%3").arg(s.name, s.range(), s.note.isEmpty() ? QString() : QStringLiteral(": ") + s.note));
         m_table->setItem(i, SettingColumn, label);
@@ -266,7 +266,7 @@ void CanSettingsTable::onResult(const device::CanRequestResult &r)
     m_pending.erase(it);
     if (p.row >= 0 && p.row < int(m_rows.size())) {
         Row &row = m_rows[size_t(p.row)];
-        const settings::CanSetting &s = row.setting;
+        const protocol::can::CanSetting &s = row.setting;
         QTableWidgetItem *module = m_table->item(p.row, ModuleColumn);
         if (r.ok) {
             // A read: the module's value; a write: the value it took (read back, or for an

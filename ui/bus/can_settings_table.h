@@ -1,5 +1,5 @@
 #pragma once
-// The settings a CAN device documents (settings/can_setting_catalog.h), like the serial
+// The settings a CAN device documents (protocol/can/can_setting_catalog.h), like the serial
 // configuration table: per setting the value the module holds, read from it first (J1939
 // register reads, CANopen SDO uploads), beside the new value to write, and after a write what
 // the read-back found: "verified", "the module holds X" or why there was no answer. Settings the
@@ -7,7 +7,7 @@
 // write reply only. The module's values are read when the device's protocol is known, and on
 // "Read from module".
 #include "device/can_session.h"
-#include "settings/can_setting_catalog.h"
+#include "protocol/can/can_setting_catalog.h"
 
 #include <QHash>
 #include <QPointer>
@@ -57,7 +57,7 @@ protected:
 
 private:
     struct Row {
-        settings::CanSetting setting;
+        protocol::can::CanSetting setting;
         std::optional<uint32_t> module; // what the module holds, as last read or written
         bool edited = false;
         QWidget *editor = nullptr;      // QComboBox (choices) or QSpinBox

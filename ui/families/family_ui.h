@@ -10,7 +10,7 @@
 // the window finds the one for a link with FamilyUiRegistry::forLink. A new device family is a
 // core plug-in, one class of this interface and one registration line.
 #include "device/device_link.h"
-#include "device/link_opener.h"
+#include "links/link_opener.h"
 #include "sim/motion_model.h"
 #include "workspace/port_choice.h"
 

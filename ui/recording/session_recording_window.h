@@ -5,7 +5,7 @@
 // going on. Afterwards the folder can be exported with the devices aligned on the common time
 // (record::SessionExporter, in a worker thread) or aligned by twisting the fixture
 // (TwistAlignDialog). Not modal: the tabs stay live behind it.
-#include "device/group_recording.h"
+#include "record/group_recording.h"
 #include "jobs/background_job.h"
 
 #include <QElapsedTimer>

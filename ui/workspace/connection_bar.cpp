@@ -1,6 +1,6 @@
 #include "workspace/connection_bar.h"
 
-#include "device/serial_family.h"
+#include "links/serial_family.h"
 
 #include <QAbstractItemView>
 #include <QComboBox>

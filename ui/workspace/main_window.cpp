@@ -15,7 +15,7 @@
 #include "workspace/console_widget.h"
 #include "workspace/device_workspace.h"
 
-#include "device/serial_family.h"
+#include "links/serial_family.h"
 
 #include <QAction>
 #include <QActionGroup>

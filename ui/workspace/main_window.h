@@ -3,7 +3,7 @@
 // connected device in tabs (its own session, views, console and counters). Menus act
 // on the current workspace. It shows session errors without ever blocking.
 #include "device/device_link.h"
-#include "device/link_opener.h"
+#include "links/link_opener.h"
 #include "families/family_ui.h"
 #include "sim/motion_model.h"
 #include "workspace/preferences.h"

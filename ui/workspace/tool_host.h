@@ -3,7 +3,7 @@
 // a tab free for a new link, the preferences, where to report a problem, and the parent of
 // their dialogs. MainWindow provides it; ToolActions knows only this, so the two do not call
 // into each other's classes.
-#include "device/link_opener.h"
+#include "links/link_opener.h"
 #include "sim/motion_model.h"
 
 #include <QString>

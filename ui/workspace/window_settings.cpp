@@ -1,6 +1,6 @@
 #include "workspace/window_settings.h"
 
-#include "device/serial_family.h"
+#include "links/serial_family.h"
 
 #include <QSettings>
 

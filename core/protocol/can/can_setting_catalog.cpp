@@ -1,4 +1,4 @@
-#include "settings/can_setting_catalog.h"
+#include "protocol/can/can_setting_catalog.h"
 
 #include "protocol/can/canopen.h"
 #include "protocol/can/hec495_can.h"
@@ -12,13 +12,9 @@
 
 #include <algorithm>
 
-namespace imudesk::settings {
+namespace imudesk::protocol::can {
 
-using protocol::can::CanProtocol;
-namespace j1939 = protocol::can::j1939;
-namespace canopen = protocol::can::canopen;
 namespace hip = protocol::can::canopen::hipnuc;
-namespace hec495 = protocol::can::hec495;
 
 namespace {
 
@@ -434,4 +430,4 @@ CanBitrates canBitrates(CanProtocol protocol, bool hec495Extended)
     return b;
 }
 
-} // namespace imudesk::settings
+} // namespace imudesk::protocol::can

@@ -27,7 +27,7 @@
 #include <utility>
 #include <vector>
 
-namespace imudesk::settings {
+namespace imudesk::protocol::can {
 
 struct CanSetting {
     enum class Access { J1939Register, CanOpenObject, Hec495Object };
@@ -87,4 +87,4 @@ CanBitrates canBitrates(protocol::can::CanProtocol protocol, bool hec495Extended
 // The bit rates an HEC495 takes (its object 0x1020): 30 kbit/s on the extended variant only.
 bool hec495TakesBitrate(int bitrate, bool extended);
 
-} // namespace imudesk::settings
+} // namespace imudesk::protocol::can
