@@ -1,8 +1,9 @@
 // ImuDesk GUI: command line, language, settings, main window.
 #include "workspace/device_workspace.h"
 #include "workspace/language_switcher.h"
+#include "families/built_in_families.h"
 #include "links/serial_family.h"
-#include "families/family_ui.h"
+#include "workspace/family_ui.h"
 #include "recording/twist_align_dialog.h"
 #include "workspace/tool_actions.h"
 #include "workspace/main_window.h"
@@ -226,8 +227,7 @@ int main(int argc, char *argv[])
     // The device families the window shows, each with its docks and tools: registered once, here.
     imudesk::ui::FamilyUiRegistry families;
     imudesk::ui::registerBuiltInFamilies(families);
-    MainWindow window(settings);
-    window.setFamilies(&families);
+    MainWindow window(families, settings);
     window.setPreferences(prefs);
     QObject::connect(&window, &MainWindow::preferencesChanged, &window, [](const Preferences &changed) {
         QSettings store;

@@ -27,6 +27,7 @@
 //        to tell memory the application holds from memory the allocator keeps.
 // Exit code 0: every target met; 1: a target missed (frames lost before ImuDesk among them); 2: a
 // frame that reached ImuDesk was lost, or the recording is damaged.
+#include "../common/ui_families.h"
 #include "charts/chart_panel.h"
 #include "charts/chart_view.h"
 #include "device/can_session.h"
@@ -291,7 +292,7 @@ int main(int argc, char **argv)
     if (record && recordDir.isEmpty())
         recordDir = scratch.path();
 
-    ui::MainWindow window;
+    ui::MainWindow window(imudesk::test::builtInFamilies());
     window.resize(1280, 860);
     window.show();
     sim::SimOptions options; // HI14, firmware 1.7.1

@@ -1,12 +1,13 @@
 // DeviceWorkspace shows any family's link (DeviceLink) in its live views: samples reach the
 // charts and the values table, the state reaches the status bar, and what the link needs
 // (its simulator) is released when it closes.
+#include "../common/ui_families.h"
 #include "attitude/attitude_widget.h"
 #include "charts/chart_panel.h"
 #include "charts/chart_view.h"
 #include "workspace/device_workspace.h"
 #include "device/device_link.h"
-#include "families/family_ui.h"
+#include "workspace/family_ui.h"
 #include "workspace/main_window.h"
 #include "workspace/raw_bytes_view.h"
 #include "itemmodels/latest_values_model.h"
@@ -188,8 +189,7 @@ private Q_SLOTS:
         ws.show();
         QVERIFY(QTest::qWaitForWindowExposed(&ws));
         QString error;
-        ui::FamilyUiRegistry families;
-        ui::registerBuiltInFamilies(families);
+        const ui::FamilyUiRegistry &families = test::builtInFamilies();
         QVERIFY2(ui::openLinkIn(ws, families, device::LinkRequest::simulatedHec495(sim::Motion::Spin), &error),
                  qPrintable(error));
         QTRY_COMPARE_WITH_TIMEOUT(ws.state(), SessionState::Connected, 15000);
@@ -222,8 +222,7 @@ private Q_SLOTS:
         ws.show();
         QVERIFY(QTest::qWaitForWindowExposed(&ws));
         QString error;
-        ui::FamilyUiRegistry families;
-        ui::registerBuiltInFamilies(families);
+        const ui::FamilyUiRegistry &families = test::builtInFamilies();
         QVERIFY2(ui::openLinkIn(ws, families, device::LinkRequest::simulatedHec495(sim::Motion::Spin), &error),
                  qPrintable(error));
         QTRY_COMPARE_WITH_TIMEOUT(ws.state(), SessionState::Connected, 15000);
@@ -305,7 +304,7 @@ private Q_SLOTS:
 
     void mainWindowShowsTheSimulatedCompass()
     {
-        ui::MainWindow window;
+        ui::MainWindow window(imudesk::test::builtInFamilies());
         window.resize(1280, 860);
         window.show();
         QVERIFY(QTest::qWaitForWindowExposed(&window));
@@ -327,8 +326,7 @@ private Q_SLOTS:
         ws.refreshViews();
         QCOMPARE(ws.chartPanel()->history().size(), size_t(50));
         // Connecting a serial port drops the attached link and starts the views afresh.
-        ui::FamilyUiRegistry families;
-        ui::registerBuiltInFamilies(families);
+        const ui::FamilyUiRegistry &families = test::builtInFamilies();
         QString error;
         QVERIFY2(ui::openLinkIn(ws, families,
                                 device::LinkRequest::serial(QStringLiteral("/dev/imudesk-no-such-port"), 115200,

@@ -1,5 +1,6 @@
 // The firmware update dialog, offscreen, against the simulated module on a pty: file
 // information, a refused file, progress to the new version, cancel and finishing later.
+#include "../common/ui_families.h"
 #include "../common/firmware_files.h"
 #include "../common/test_main.h"
 #include "workspace/device_workspace.h"
@@ -134,7 +135,7 @@ private Q_SLOTS:
     void demoDeviceUpdatesFromTheMenu()
     {
         QStandardPaths::setTestModeEnabled(true);
-        ui::MainWindow w;
+        ui::MainWindow w(imudesk::test::builtInFamilies());
         w.setErrorPresenter([](const QString &m) { QFAIL(qPrintable(m)); });
         w.show();
         sim::SimOptions o;
@@ -177,7 +178,7 @@ private Q_SLOTS:
     void demoUpdatesTwiceWithTheBridgeAndOnASecondTab()
     {
         QStandardPaths::setTestModeEnabled(true);
-        ui::MainWindow w;
+        ui::MainWindow w(imudesk::test::builtInFamilies());
         QStringList errors;
         w.setErrorPresenter([&errors](const QString &m) { errors << m; });
         w.show();

@@ -2,6 +2,7 @@
 // served in this process on Qt's virtualcan bus (its own TCP port): the link choice shows the CAN
 // fields, the update reaches the new version verified by the bootloader's CRC, and a cancel
 // mid-download leaves the module in its bootloader where a second update finishes.
+#include "../common/ui_families.h"
 #include "workspace/device_workspace.h"
 #include "../common/firmware_files.h"
 #include "../common/test_main.h"
@@ -144,7 +145,7 @@ private Q_SLOTS:
     void deviceMenuOpensTheCanUpdate()
     {
         QStandardPaths::setTestModeEnabled(true);
-        ui::MainWindow w;
+        ui::MainWindow w(imudesk::test::builtInFamilies());
         w.setErrorPresenter([](const QString &m) { QFAIL(qPrintable(m)); });
         w.show();
         ui::DeviceWorkspace *ws = w.freeWorkspaceForLink();

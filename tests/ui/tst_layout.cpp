@@ -6,6 +6,7 @@
 // window. The same after restoring a layout saved in a small automation window and one
 // saved at another size; a --screenshot run leaves the user's settings alone; the layout
 // presets and the bottom panels that open on demand.
+#include "../common/ui_families.h"
 #include "../common/layout_checks.h"
 #include "../common/synthetic_capture.h"
 #include "../common/hipnuc_link.h"
@@ -269,7 +270,7 @@ class TstLayout : public QObject {
     // Connects, waits for data on the views, returns the problems.
     QStringList runKind(Kind kind, const QSize &size, const ui::WindowSettings &settings = {})
     {
-        MainWindow w(settings);
+        MainWindow w(imudesk::test::builtInFamilies(), settings);
         w.setErrorPresenter([](const QString &) {});
         showAt(w, size);
         if (!QTest::qWaitForWindowExposed(&w))
@@ -415,7 +416,7 @@ private Q_SLOTS:
         // a small window with the right column squeezed.
         ui::WindowSettings small;
         {
-            MainWindow w;
+            MainWindow w(imudesk::test::builtInFamilies());
             w.resize(800, 600);
             w.show();
             QVERIFY(QTest::qWaitForWindowExposed(&w));
@@ -432,7 +433,7 @@ private Q_SLOTS:
         // A layout saved at 1920x1080, opened at 1366x768, and the other way round.
         ui::WindowSettings large;
         {
-            MainWindow w;
+            MainWindow w(imudesk::test::builtInFamilies());
             w.showMaximized();
             QVERIFY(QTest::qWaitForWindowExposed(&w));
             QCoreApplication::processEvents();
@@ -442,7 +443,7 @@ private Q_SLOTS:
         QVERIFY2(problems.isEmpty(), qPrintable(problems.join(QLatin1Char('\n'))));
         ui::WindowSettings fromSmall;
         {
-            MainWindow w;
+            MainWindow w(imudesk::test::builtInFamilies());
             w.resize(kSmall);
             w.show();
             QVERIFY(QTest::qWaitForWindowExposed(&w));
@@ -455,11 +456,11 @@ private Q_SLOTS:
         // A window saved larger than this screen fits on it.
         ui::WindowSettings huge;
         {
-            MainWindow w;
+            MainWindow w(imudesk::test::builtInFamilies());
             w.setGeometry(QRect(QPoint(400, 300), QSize(2560, 1600)));
             huge = w.windowSettings();
         }
-        MainWindow fitted(huge);
+        MainWindow fitted(imudesk::test::builtInFamilies(), huge);
         const QRect avail = fitted.screen()->availableGeometry();
         QVERIFY2(avail.contains(fitted.geometry()) || fitted.isMaximized(),
                  qPrintable(QStringLiteral("%1,%2 %3x%4").arg(fitted.x()).arg(fitted.y()).arg(fitted.width()).arg(
@@ -517,16 +518,16 @@ private Q_SLOTS:
         // A saved geometry is kept: the window restored from it is not maximised.
         ui::WindowSettings saved;
         {
-            MainWindow w;
+            MainWindow w(imudesk::test::builtInFamilies());
             w.resize(1000, 700);
             saved = w.windowSettings();
         }
-        MainWindow restored(saved);
+        MainWindow restored(imudesk::test::builtInFamilies(), saved);
         restored.showAsSaved();
         QVERIFY(QTest::qWaitForWindowExposed(&restored));
         QVERIFY(!restored.isMaximized());
         QCOMPARE(restored.width(), 1000); // its height: at least what its layout needs
-        MainWindow fresh;
+        MainWindow fresh(imudesk::test::builtInFamilies());
         fresh.showAsSaved();
         QVERIFY(QTest::qWaitForWindowExposed(&fresh));
         QVERIFY(fresh.isMaximized());
@@ -578,7 +579,7 @@ private Q_SLOTS:
     {
         QString error;
         QVERIFY(m_language.setLanguage(QStringLiteral("en"), QString::fromUtf8(IMUDESK_QM_DIR), &error));
-        MainWindow w;
+        MainWindow w(imudesk::test::builtInFamilies());
         w.setErrorPresenter([](const QString &) {});
         showAt(w, kSmall);
         QVERIFY(QTest::qWaitForWindowExposed(&w));

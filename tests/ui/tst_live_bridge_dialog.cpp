@@ -3,6 +3,7 @@
 // status bar shows the bridge and its client, a closed tab's channels are withdrawn; a port in
 // use is a clear error; another address than loopback is warned about; the choices are
 // remembered; the window fits in en and zh_CN.
+#include "../common/ui_families.h"
 #include "../common/layout_checks.h"
 #include "../common/test_main.h"
 #include "bridge/bridge_controller.h"
@@ -49,7 +50,7 @@ private Q_SLOTS:
 
     void bridgesTheTabsDevice()
     {
-        MainWindow w;
+        MainWindow w(imudesk::test::builtInFamilies());
         w.setErrorPresenter([](const QString &) {});
         w.show();
         QVERIFY(QTest::qWaitForWindowExposed(&w));
@@ -115,7 +116,7 @@ private Q_SLOTS:
     {
         QTcpServer taken;
         QVERIFY(taken.listen(QHostAddress::LocalHost, 0));
-        MainWindow w;
+        MainWindow w(imudesk::test::builtInFamilies());
         LiveBridgeDialog *d = w.openLiveBridge();
         d->findChild<QSpinBox *>(QStringLiteral("bridgePort"))->setValue(taken.serverPort());
         QVERIFY(!d->startBridge());
@@ -125,7 +126,7 @@ private Q_SLOTS:
 
     void otherAddressesAreWarnedAbout()
     {
-        MainWindow w;
+        MainWindow w(imudesk::test::builtInFamilies());
         LiveBridgeDialog *d = w.openLiveBridge();
         auto *address = d->findChild<QComboBox *>(QStringLiteral("bridgeAddress"));
         auto *warning = d->findChild<QLabel *>(QStringLiteral("bridgeWarning"));
@@ -145,7 +146,7 @@ private Q_SLOTS:
     {
         const quint16 port = freePort();
         {
-            MainWindow w;
+            MainWindow w(imudesk::test::builtInFamilies());
             LiveBridgeDialog *d = w.openLiveBridge();
             d->findChild<QSpinBox *>(QStringLiteral("bridgePort"))->setValue(port);
             d->findChild<QGroupBox *>(QStringLiteral("udpBox"))->setChecked(true);
@@ -153,7 +154,7 @@ private Q_SLOTS:
             QVERIFY2(d->startBridge(), qPrintable(d->lastError()));
             d->stopBridge();
         }
-        MainWindow w;
+        MainWindow w(imudesk::test::builtInFamilies());
         LiveBridgeDialog *d = w.openLiveBridge();
         QCOMPARE(d->findChild<QSpinBox *>(QStringLiteral("bridgePort"))->value(), int(port));
         QVERIFY(d->findChild<QGroupBox *>(QStringLiteral("udpBox"))->isChecked());
@@ -173,7 +174,7 @@ private Q_SLOTS:
         QString error;
         QVERIFY2(switcher.setLanguage(language, QString::fromUtf8(IMUDESK_QM_DIR), &error), qPrintable(error));
         {
-            MainWindow w;
+            MainWindow w(imudesk::test::builtInFamilies());
             LiveBridgeDialog *d = w.openLiveBridge();
             d->findChild<QComboBox *>(QStringLiteral("bridgeAddress"))->setCurrentIndex(1); // the warning shown too
             d->findChild<QGroupBox *>(QStringLiteral("udpBox"))->setChecked(true);

@@ -1,11 +1,12 @@
 // MainWindow offscreen against a simulated HI14 on a pseudo-terminal: live values,
 // identity and rates in the status bar, the console, screenshots, run-time language.
+#include "../common/ui_families.h"
 #include "../common/layout_checks.h"
 #include "../common/hipnuc_link.h"
 #include "../common/test_main.h"
 #include "recording/export_dialog.h"
 #include "recording/recording_controls.h"
-#include "families/family_ui.h"
+#include "workspace/family_ui.h"
 #include "workspace/connection_bar.h"
 #include "workspace/tool_actions.h"
 #include "workspace/console_widget.h"
@@ -105,7 +106,7 @@ private Q_SLOTS:
 
     void simulatedHi14()
     {
-        MainWindow w;
+        MainWindow w(imudesk::test::builtInFamilies());
         QStringList errors;
         w.setErrorPresenter([&errors](const QString &m) { errors << m; });
         w.show();
@@ -224,7 +225,7 @@ private Q_SLOTS:
     // (before, only the front tab's history grew), and still with an unconnected tab in front.
     void compareDrawsEveryDeviceWhicheverTabIsInFront()
     {
-        MainWindow w;
+        MainWindow w(imudesk::test::builtInFamilies());
         QStringList errors;
         w.setErrorPresenter([&errors](const QString &m) { errors << m; });
         w.resize(1366, 768);
@@ -277,7 +278,7 @@ private Q_SLOTS:
     // number, and the comparison tells them apart (before, one serial and one legend name).
     void twoSimulatedModulesAreTwoDevices()
     {
-        MainWindow w;
+        MainWindow w(imudesk::test::builtInFamilies());
         w.setErrorPresenter([](const QString &) {});
         w.show();
         QVERIFY(QTest::qWaitForWindowExposed(&w));
@@ -303,7 +304,7 @@ private Q_SLOTS:
     // window's actions), beside About.
     void helpMenuGuideAndShortcuts()
     {
-        MainWindow w;
+        MainWindow w(imudesk::test::builtInFamilies());
         w.setErrorPresenter([](const QString &) {});
         w.show();
         auto *guide = w.findChild<QAction *>(QStringLiteral("userGuideAction"));
@@ -334,7 +335,7 @@ private Q_SLOTS:
     {
         // A module with a PPS receiver: its HI91 clock aligns to UTC (the device time reads as
         // a UTC time); with output off, Device > Take one sample brings exactly one HI91.
-        MainWindow w;
+        MainWindow w(imudesk::test::builtInFamilies());
         QStringList errors;
         w.setErrorPresenter([&errors](const QString &m) { errors << m; });
         w.show();
@@ -366,7 +367,7 @@ private Q_SLOTS:
 
     void simulatedOldFirmware()
     {
-        MainWindow w;
+        MainWindow w(imudesk::test::builtInFamilies());
         QStringList errors;
         w.setErrorPresenter([&errors](const QString &m) { errors << m; });
         w.show();
@@ -398,7 +399,7 @@ private Q_SLOTS:
 
     void missingPortReportsWithoutBlocking()
     {
-        MainWindow w;
+        MainWindow w(imudesk::test::builtInFamilies());
         QStringList errors;
         w.setErrorPresenter([&errors](const QString &m) { errors << m; });
         w.show();
@@ -413,7 +414,7 @@ private Q_SLOTS:
 
     void errorBoxDoesNotBlock()
     {
-        MainWindow w; // the default presenter: a non-modal message box
+        MainWindow w(imudesk::test::builtInFamilies()); // the default presenter: a non-modal message box
         w.show();
         w.connectPort(QStringLiteral("/dev/imudesk-no-such-port"), 115200);
         QMessageBox *box = nullptr;
@@ -439,13 +440,13 @@ private Q_SLOTS:
         QString error;
         QVERIFY2(simulator.start(&error), qPrintable(error));
         {
-            MainWindow w;
+            MainWindow w(imudesk::test::builtInFamilies());
             w.setErrorPresenter([](const QString &) {});
             w.connectPort(simulator.devicePath(), 0);
             QTRY_COMPARE_WITH_TIMEOUT(w.currentWorkspace()->state(), imudesk::device::SessionState::Connected, 20000);
         }
         {
-            MainWindow w;
+            MainWindow w(imudesk::test::builtInFamilies());
             w.setErrorPresenter([](const QString &) {});
             w.connectPort(simulator.devicePath(), 0); // still probing when the window goes
         }
@@ -463,7 +464,7 @@ private Q_SLOTS:
         imudesk::sim::PtySimulator simulator(std::make_unique<imudesk::sim::Hec495Simulator>(o));
         QString error;
         QVERIFY2(simulator.start(&error), qPrintable(error));
-        MainWindow w;
+        MainWindow w(imudesk::test::builtInFamilies());
         QStringList errors;
         w.setErrorPresenter([&errors](const QString &e) { errors << e; });
         w.connectPort(simulator.devicePath(), 0);
@@ -481,8 +482,7 @@ private Q_SLOTS:
         // The simulated devices are the family plug-ins': none without them.
         imudesk::ui::ConnectionBar bar;
         QVERIFY(!bar.portTexts().contains(QStringLiteral("Simulated HI14 (firmware 1.7.1)")));
-        imudesk::ui::FamilyUiRegistry families;
-        imudesk::ui::registerBuiltInFamilies(families);
+        const imudesk::ui::FamilyUiRegistry &families = imudesk::test::builtInFamilies();
         bar.setSimulatedDevices([&families] { return families.simulatedDevices(); });
         const QStringList texts = bar.portTexts();
         QVERIFY(texts.contains(QStringLiteral("Simulated HI14 (firmware 1.7.1)")));
@@ -548,7 +548,7 @@ private Q_SLOTS:
     {
         QTemporaryDir dir;
         QVERIFY(dir.isValid());
-        MainWindow w;
+        MainWindow w(imudesk::test::builtInFamilies());
         w.setErrorPresenter([](const QString &) {});
         imudesk::ui::Preferences prefs = w.preferences();
         prefs.recordingFolder = dir.path();
@@ -637,7 +637,7 @@ private Q_SLOTS:
         b.load(store);
         QCOMPARE(b.baud, 0);
 
-        MainWindow w(a);
+        MainWindow w(imudesk::test::builtInFamilies(), a);
         QCOMPARE(w.connectionBar()->selectedPort().key(), a.port);
         QCOMPARE(w.windowSettings().baud, 460800);
     }

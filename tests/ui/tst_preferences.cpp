@@ -1,5 +1,6 @@
 // Preferences: stored under versioned keys, validated on load, edited in the dialog and
 // applied to the live views (units, attitude frame, refresh clock, history, reconnect).
+#include "../common/ui_families.h"
 #include "attitude/attitude_widget.h"
 #include "charts/chart_panel.h"
 #include "charts/chart_view.h"
@@ -160,7 +161,7 @@ private Q_SLOTS:
 
     void mainWindowAppliesToNewTabs()
     {
-        ui::MainWindow window;
+        ui::MainWindow window(imudesk::test::builtInFamilies());
         Preferences p;
         p.frame = Preferences::Frame::Ned;
         window.setPreferences(p);

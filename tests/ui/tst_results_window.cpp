@@ -11,6 +11,7 @@
 // the long plan name elided. The station's line database dialog stores its fields, and its Test
 // connection against a server that never answers says so without freezing the dialog; the
 // station's summary words for the upload follow a real uploader.
+#include "../common/ui_families.h"
 #include "../common/layout_checks.h"
 #include "../common/pg_server.h"
 #include "../common/result_records.h"
@@ -20,7 +21,7 @@
 #include "ui/results/module_history_view.h"
 #include "ui/results/module_table_model.h"
 #include "ui/results/results_format.h"
-#include "ui/results/results_query.h"
+#include "core/results/results_query.h"
 #include "ui/results/results_window.h"
 #include "ui/results/trend_view.h"
 #include "ui/results/yield_view.h"
@@ -394,7 +395,7 @@ private Q_SLOTS:
 
     void staleAnswersAreDropped()
     {
-        ui::ResultsQuery query;
+        results::ResultsQuery query;
         QSignalSpy busy(&query, &ui::ResultsQuery::busyChanged);
         QStringList applied;
         // The first is under way when the second comes: its answer is dropped. The third is on
@@ -500,7 +501,7 @@ private Q_SLOTS:
     void openedFromTheMainWindow()
     {
         QSettings().remove(QStringLiteral("station"));
-        ui::MainWindow main;
+        ui::MainWindow main(imudesk::test::builtInFamilies());
         auto *action = main.findChild<QAction *>(QStringLiteral("resultsAction"));
         QVERIFY(action);
         QCOMPARE(action->shortcut(), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_D));
@@ -509,7 +510,7 @@ private Q_SLOTS:
         QVERIFY(w && w->isVisible());
         QVERIFY(w->isWindow());
         // The station's saved database (nothing saved here: the default report folder's file).
-        QCOMPARE(w->location(), ui::StationSettings().resultsDatabase());
+        QCOMPARE(w->location(), station::StationSettings().resultsDatabase());
         action->trigger();
         QCOMPARE(main.findChildren<ui::ResultsWindow *>().size(), 1); // one instance
         QVERIFY(settle(*w));
@@ -559,11 +560,11 @@ private Q_SLOTS:
         QCOMPARE(view.settings().lineDatabase, QStringLiteral("postgresql://station@line.example/imudesk"));
         QCOMPARE(view.settings().artifactFolder, m_dir.filePath(QStringLiteral("shared")));
         QSettings saved;
-        QCOMPARE(saved.value(QLatin1String(ui::StationSettings::kLineDatabaseKey)).toString(),
+        QCOMPARE(saved.value(QLatin1String(station::StationSettings::kLineDatabaseKey)).toString(),
                  QStringLiteral("postgresql://station@line.example/imudesk"));
-        QCOMPARE(saved.value(QLatin1String(ui::StationSettings::kArtifactFolderKey)).toString(), m_dir.filePath(QStringLiteral("shared")));
+        QCOMPARE(saved.value(QLatin1String(station::StationSettings::kArtifactFolderKey)).toString(), m_dir.filePath(QStringLiteral("shared")));
         // What the results window reads now.
-        ui::StationSettings loaded;
+        station::StationSettings loaded;
         loaded.load(saved);
         QCOMPARE(loaded.resultsDatabase(), QStringLiteral("postgresql://station@line.example/imudesk"));
         QCOMPARE(ui::ResultsWindow::stationDatabase(), loaded.resultsDatabase());

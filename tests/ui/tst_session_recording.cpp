@@ -1,6 +1,7 @@
 // Issue 36 in the window: the Time sync panel of a tab shows its clocks, and Device > Record all
 // devices records every connected tab into one session folder that exports with the devices
 // aligned. Two simulated modules of two families (an HI14 and an HEC495 compass), end to end.
+#include "../common/ui_families.h"
 #include "../common/test_main.h"
 #include "itemmodels/clock_stats_model.h"
 #include "record/replay_session.h"
@@ -39,7 +40,7 @@ private Q_SLOTS:
 
     void recordAllDevicesAndTheirClocks()
     {
-        MainWindow w;
+        MainWindow w(imudesk::test::builtInFamilies());
         QStringList errors;
         w.setErrorPresenter([&errors](const QString &m) { errors << m; });
         w.resize(1366, 768);

@@ -15,6 +15,7 @@
 // cannot starve pseudo-terminals and their simulator threads into "did not answer" or "no
 // data" failures (issue 33). The workspace the main window opens for a module still goes
 // through a pseudo-terminal, and bench_station measures the tray over pseudo-terminals.
+#include "../common/ui_families.h"
 #include "../common/layout_checks.h"
 #include "../common/test_main.h"
 #include "sim/pty_simulator.h"
@@ -409,7 +410,7 @@ private Q_SLOTS:
         sim::PtySimulator module(o);
         QString error;
         QVERIFY2(module.start(&error), qPrintable(error));
-        ui::MainWindow window;
+        ui::MainWindow window(imudesk::test::builtInFamilies());
         window.setErrorPresenter([](const QString &) {});
         window.show();
         QVERIFY(QTest::qWaitForWindowExposed(&window));

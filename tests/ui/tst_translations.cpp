@@ -1,5 +1,6 @@
 // The translations are complete: no .ts entry is unfinished or obsolete, and under zh_CN
 // no English word is left in the main window, its docks and menus, or the dialogs.
+#include "../common/ui_families.h"
 #include "calibration/attitude_reset_wizard.h"
 #include "charts/bandwidth_calculator.h"
 #include "bus/bus_connect_dialog.h"
@@ -217,7 +218,7 @@ private Q_SLOTS:
         QString error;
         QVERIFY2(language.setLanguage(QStringLiteral("zh_CN"), QString::fromUtf8(IMUDESK_QM_DIR), &error),
                  qPrintable(error));
-        ui::MainWindow window;
+        ui::MainWindow window(imudesk::test::builtInFamilies());
         window.resize(1280, 860);
         window.show();
         QVERIFY(QTest::qWaitForWindowExposed(&window));
@@ -250,7 +251,7 @@ private Q_SLOTS:
         verifyTranslated(&analysis);
         ui::FirmwareUpdateDialog firmware(QStringLiteral("/dev/ttyUSB0"), 115200, std::nullopt);
         verifyTranslated(&firmware);
-        ui::MainWindow window;
+        ui::MainWindow window(imudesk::test::builtInFamilies());
         ui::LiveBridgeDialog bridge(window.liveBridge());
         verifyTranslated(&bridge);
     }

@@ -1,15 +1,13 @@
 #include "bridge_controller.h"
 
-#include "workspace/device_workspace.h"
-#include "workspace/tool_host.h"
-
 #include <QLocale>
 
 #include <set>
 
 namespace imudesk::ui {
 
-BridgeController::BridgeController(ToolHost *host, QObject *parent) : QObject(parent), m_host(host)
+BridgeController::BridgeController(std::function<std::vector<BridgedLink>()> links, QObject *parent)
+    : QObject(parent), m_links(std::move(links))
 {
     m_sync.setInterval(1000);
     connect(&m_sync, &QTimer::timeout, this, &BridgeController::syncDevices);
@@ -50,8 +48,8 @@ void BridgeController::syncDevices()
     if (!m_bridge.isRunning())
         return;
     std::set<const device::SampleStore *> present;
-    for (DeviceWorkspace *ws : m_host->allWorkspaces()) {
-        const device::DeviceLink &link = ws->link();
+    for (const BridgedLink &shown : m_links()) {
+        const device::DeviceLink &link = *shown.link;
         if (!link.isLive() || link.linkKind().isEmpty() || link.state() != device::SessionState::Connected)
             continue;
         std::shared_ptr<device::SampleStore> store = link.sharedStore();
@@ -61,8 +59,8 @@ void BridgeController::syncDevices()
         // Named by record::deviceName (its serial, else family and address): never by the tab's
         // title, which names the port and differs per run.
         record::CaptureHeader header;
-        if (ws->identity())
-            header.setIdentity(*ws->identity());
+        if (shown.identity)
+            header.setIdentity(*shown.identity);
         header.set(record::CaptureHeader::kLinkKind, link.linkKind().toStdString());
         link.describeLink(header);
         m_bridge.addDevice(store, header);

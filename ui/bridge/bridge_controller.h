@@ -4,22 +4,33 @@
 // once a second and when the window says tabs changed), and the text of the window's status
 // bar. A replayed capture is not bridged: its times are the recording's, not now.
 #include "bridge/live_bridge.h"
+#include "device/device_link.h"
+#include "model/device_identity.h"
 
 #include <QObject>
 #include <QString>
 #include <QTimer>
 
+#include <functional>
 #include <map>
 #include <memory>
+#include <optional>
+#include <vector>
 
 namespace imudesk::ui {
 
-class ToolHost;
+// A device the window shows: its link and what it said of itself (the workspace keeps the
+// identity; the link's own signal has passed by the time the bridge starts).
+struct BridgedLink {
+    const device::DeviceLink *link = nullptr;
+    std::optional<model::DeviceIdentity> identity;
+};
 
 class BridgeController : public QObject {
     Q_OBJECT
 public:
-    BridgeController(ToolHost *host, QObject *parent = nullptr);
+    // links: every device the window shows now (the controller keeps the connected, live ones).
+    explicit BridgeController(std::function<std::vector<BridgedLink>()> links, QObject *parent = nullptr);
     ~BridgeController() override;
 
     bridge::LiveBridge &bridge() { return m_bridge; }
@@ -36,7 +47,7 @@ Q_SIGNALS:
     void runningChanged(bool running);
 
 private:
-    ToolHost *m_host;
+    std::function<std::vector<BridgedLink>()> m_links;
     bridge::LiveBridge m_bridge;
     QTimer m_sync;
     // The stores bridged (kept alive by the bridge while it reads them), by store.

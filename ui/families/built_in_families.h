@@ -1,7 +1,7 @@
 #pragma once
 // The family UI plug-ins ImuDesk ships (family_ui.h), one file each. registerBuiltInFamilies
 // adds them; nothing else names these classes.
-#include "families/family_ui.h"
+#include "workspace/family_ui.h"
 
 #include <QCoreApplication>
 
@@ -64,6 +64,10 @@ public:
 };
 
 // A dock around a family's widget.
+// The families ImuDesk ships: HiPNUC serial, HEC495 serial, Modbus RTU, CAN and replayed captures.
+void registerBuiltInFamilies(FamilyUiRegistry &registry);
+
+// A family's dock: content under title, named for the window's saved layout.
 QDockWidget *familyDock(QWidget *content, const QString &objectName, const QString &title);
 
 } // namespace imudesk::ui

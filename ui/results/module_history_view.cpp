@@ -2,7 +2,7 @@
 
 #include "ui/results/module_table_model.h"
 #include "ui/results/results_format.h"
-#include "ui/station/station_tiles.h"
+#include "ui/common/elided_label.h"
 
 #include <QEvent>
 #include <QHeaderView>

@@ -4,11 +4,11 @@
 #include "ui/results/module_history_view.h"
 #include "ui/results/module_table_model.h"
 #include "ui/results/results_format.h"
-#include "ui/results/results_query.h"
+#include "core/results/results_query.h"
 #include "ui/results/trend_view.h"
 #include "ui/results/yield_view.h"
-#include "ui/station/station_tiles.h"
-#include "ui/station/station_view.h"
+#include "ui/common/elided_label.h"
+#include "core/station/station_settings.h"
 
 #include <QCheckBox>
 #include <QCloseEvent>
@@ -123,7 +123,7 @@ void ResultsWindowSettings::save(QSettings &settings) const
 QString ResultsWindow::stationDatabase()
 {
     QSettings store;
-    StationSettings s;
+    station::StationSettings s;
     s.load(store);
     return s.resultsDatabase();
 }

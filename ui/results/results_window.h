@@ -34,12 +34,17 @@ class QTableView;
 class QUrl;
 QT_END_NAMESPACE
 
+namespace imudesk::results {
+class ResultsQuery;
+}
+
 namespace imudesk::ui {
+
+using results::ResultsQuery;
 
 class ElidedLabel;
 class ModuleHistoryView;
 class ModuleTableModel;
-class ResultsQuery;
 class TrendView;
 class YieldView;
 

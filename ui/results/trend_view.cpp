@@ -1,7 +1,7 @@
 #include "ui/results/trend_view.h"
 
 #include "ui/results/results_format.h"
-#include "ui/station/station_tiles.h"
+#include "ui/common/elided_label.h"
 
 #include <QChart>
 #include <QChartView>

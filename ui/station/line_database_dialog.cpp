@@ -2,7 +2,7 @@
 
 #include "core/results/results_store.h"
 #include "core/results/results_uploader.h"
-#include "ui/results/results_query.h"
+#include "core/results/results_query.h"
 
 #include <QDialogButtonBox>
 #include <QDir>

@@ -22,12 +22,13 @@ class QPushButton;
 QT_END_NAMESPACE
 
 namespace imudesk::results {
+class ResultsQuery;
 class ResultsUploader;
 }
 
 namespace imudesk::ui {
 
-class ResultsQuery;
+using results::ResultsQuery;
 
 class LineDatabaseDialog : public QDialog {
     Q_OBJECT

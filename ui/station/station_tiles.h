@@ -2,6 +2,7 @@
 // The pieces of the station window's tile grid: a label that elides over a fixed number of
 // lines, one tile per module, and the layout that puts the tiles in as many columns as fit.
 #include "core/station/station_result.h"
+#include "ui/common/elided_label.h"
 
 #include <QCoreApplication>
 #include <QFrame>
@@ -17,32 +18,6 @@ class QToolButton;
 QT_END_NAMESPACE
 
 namespace imudesk::ui {
-
-// A label that shows as much of its text as fits in up to maxLines lines, the last one
-// elided, and the whole text in its tooltip when anything was left out; it never asks for
-// more width than it gets, so a long serial number or failure cannot widen the grid.
-class ElidedLabel : public QLabel {
-public:
-    ElidedLabel(int maxLines, QWidget *parent);
-
-    void setFullText(const QString &text);
-    const QString &fullText() const { return m_full; }
-    // Shown in the tooltip after the full text (or alone when nothing is elided).
-    void setExtraToolTip(const QString &extra);
-
-    QSize minimumSizeHint() const override;
-    QSize sizeHint() const override;
-
-protected:
-    void resizeEvent(QResizeEvent *event) override;
-    void changeEvent(QEvent *event) override;
-
-private:
-    void relayout();
-
-    int m_maxLines;
-    QString m_full, m_extra;
-};
 
 // One module of the tray: port and verdict (word and colour), serial number and product, the
 // step under way, progress, and for a failure the failing step with its values. A click,

@@ -53,37 +53,6 @@ using station::TestPlan;
 using station::Verdict;
 
 
-// ---------------------------------------------------------------- settings
-
-void StationSettings::load(QSettings &settings)
-{
-    reportFolder = settings.value(QLatin1String(kReportFolderKey)).toString();
-    planPath = settings.value(QLatin1String(kPlanKey)).toString();
-    lineDatabase = settings.value(QLatin1String(kLineDatabaseKey)).toString();
-    artifactFolder = settings.value(QLatin1String(kArtifactFolderKey)).toString();
-}
-
-void StationSettings::save(QSettings &settings) const
-{
-    settings.setValue(QLatin1String(kReportFolderKey), reportFolder);
-    settings.setValue(QLatin1String(kPlanKey), planPath);
-    settings.setValue(QLatin1String(kLineDatabaseKey), lineDatabase);
-    settings.setValue(QLatin1String(kArtifactFolderKey), artifactFolder);
-}
-
-QString StationSettings::defaultReportFolder()
-{
-    return QDir(QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation))
-        .filePath(QStringLiteral("ImuDesk/station"));
-}
-
-QString StationSettings::resultsDatabase() const
-{
-    if (!lineDatabase.isEmpty())
-        return lineDatabase;
-    return QDir(reportFolder.isEmpty() ? defaultReportFolder() : reportFolder).filePath(QLatin1String(results::ResultsStore::kFileName));
-}
-
 // ---------------------------------------------------------------- the window
 
 StationView::StationView(QWidget *parent) : QWidget(parent)
@@ -244,7 +213,7 @@ StationView::StationView(QWidget *parent) : QWidget(parent)
         m_settings.load(store);
     }
     m_folder->setText(QDir::toNativeSeparators(
-        m_settings.reportFolder.isEmpty() ? StationSettings::defaultReportFolder() : m_settings.reportFolder));
+        m_settings.reportFolder.isEmpty() ? station::StationSettings::defaultReportFolder() : m_settings.reportFolder));
     retranslateUi();
     refreshPorts();
     rebuildTiles();
@@ -665,7 +634,7 @@ void StationView::openTrayDialog()
 QString StationView::reportFolder() const
 {
     const QString dir = QDir::fromNativeSeparators(m_folder->text().trimmed());
-    return dir.isEmpty() ? StationSettings::defaultReportFolder() : dir;
+    return dir.isEmpty() ? station::StationSettings::defaultReportFolder() : dir;
 }
 
 void StationView::setReportFolder(const QString &dir)

@@ -16,6 +16,7 @@
 // threads, the tiles and the summary follow a StationModel that reads it on a 5 Hz clock,
 // and problems (a plan that does not load, a folder that cannot be written, a report that
 // failed) are shown in a message that does not wait for an answer.
+#include "core/station/station_settings.h"
 #include "core/station/test_plan.h"
 
 #include <QCoreApplication>
@@ -56,25 +57,6 @@ class StationModel;
 class StationTile;
 class TileGridLayout;
 
-// What the station window remembers between sessions (versioned keys, as Preferences).
-struct StationSettings {
-    static constexpr const char *kReportFolderKey = "station/v1/reportFolder";
-    static constexpr const char *kPlanKey = "station/v1/plan";
-    static constexpr const char *kLineDatabaseKey = "station/v1/lineDatabase";
-    static constexpr const char *kArtifactFolderKey = "station/v1/artifactFolder";
-
-    QString reportFolder; // empty: defaultReportFolder()
-    QString planPath;     // the plan opened last; empty: none
-    QString lineDatabase;   // the line's PostgreSQL URL (line_database_dialog.h); empty: none
-    QString artifactFolder; // where the uploader copies reports and recordings; empty: they stay here
-
-    void load(QSettings &settings);
-    void save(QSettings &settings) const;
-    // <Documents>/ImuDesk/station
-    static QString defaultReportFolder();
-    // What Tools > Results reads: the line database when set, else <report folder>/results.sqlite.
-    QString resultsDatabase() const;
-};
 
 class StationView : public QWidget {
     Q_OBJECT
@@ -133,7 +115,7 @@ public:
     // Whether the report folder and the plan opened are remembered for the next time (off for
     // automation: a --screenshot run or a test leaves the user's settings alone).
     void setRemembering(bool on) { m_remember = on; }
-    const StationSettings &settings() const { return m_settings; }
+    const station::StationSettings &settings() const { return m_settings; }
     // The line database button: its dialog (window-modal); OK stores URL and artifact folder.
     void editLineDatabase();
 
@@ -196,7 +178,7 @@ private:
     station::TestPlan m_plan;
     QString m_planPath;
     bool m_havePlan = false;
-    StationSettings m_settings;
+    station::StationSettings m_settings;
     bool m_remember = true;
 
     std::unique_ptr<station::StationRunner> m_runner;

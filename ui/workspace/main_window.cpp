@@ -43,10 +43,10 @@ namespace imudesk::ui {
 
 using device::SessionState;
 
-MainWindow::MainWindow(const WindowSettings &settings, QWidget *parent) : QMainWindow(parent)
+MainWindow::MainWindow(const FamilyUiRegistry &families, const WindowSettings &settings, QWidget *parent)
+    : QMainWindow(parent), m_families(&families)
 {
     setObjectName(QStringLiteral("mainWindow"));
-    registerBuiltInFamilies(m_builtInFamilies);
 
     m_tabs = new QTabWidget(this);
     m_tabs->setObjectName(QStringLiteral("workspaceTabs"));
@@ -368,12 +368,6 @@ device::LinkRequest MainWindow::withPreferences(device::LinkRequest request) con
     if (request.kind == device::LinkRequest::Kind::Serial && !request.simulate)
         request.autoReconnect = m_prefs.autoReconnect;
     return request;
-}
-
-void MainWindow::setFamilies(const FamilyUiRegistry *families)
-{
-    m_families = families ? families : &m_builtInFamilies;
-    m_connectionBar->setSimulatedDevices([this] { return m_families->simulatedDevices(); });
 }
 
 bool MainWindow::openLink(device::LinkRequest request, QString *error)
@@ -721,7 +715,14 @@ void MainWindow::createActions()
 
     // Tools > Live bridge; while it runs, the window's status bar says where and how it goes
     // (a click on it opens the bridge's window).
-    m_bridge = new BridgeController(this, this);
+    m_bridge = new BridgeController(
+        [this] {
+            std::vector<BridgedLink> shown;
+            for (DeviceWorkspace *ws : allWorkspaces())
+                shown.push_back(BridgedLink{&ws->link(), ws->identity()});
+            return shown;
+        },
+        this);
     m_bridgeAction = new QAction(this);
     m_bridgeAction->setObjectName(QStringLiteral("liveBridgeAction"));
     m_bridgeAction->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_B));

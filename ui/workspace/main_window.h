@@ -4,12 +4,12 @@
 // on the current workspace. It shows session errors without ever blocking.
 #include "device/device_link.h"
 #include "links/link_opener.h"
-#include "families/family_ui.h"
 #include "sim/motion_model.h"
+#include "workspace/device_workspace.h"
+#include "workspace/family_ui.h"
 #include "workspace/preferences.h"
 #include "workspace/tool_host.h"
 #include "workspace/window_settings.h"
-#include "workspace/device_workspace.h"
 
 #include <QMainWindow>
 #include <QList>
@@ -49,7 +49,9 @@ class MainWindow : public QMainWindow, public ToolHost {
 public:
     using ErrorPresenter = std::function<void(const QString &message)>;
 
-    explicit MainWindow(const WindowSettings &settings = {}, QWidget *parent = nullptr);
+    // families: the family UI plug-ins the window shows links with (app/gui/main.cpp registers
+    // them); the registry outlives the window.
+    explicit MainWindow(const FamilyUiRegistry &families, const WindowSettings &settings = {}, QWidget *parent = nullptr);
     ~MainWindow() override;
 
     // Applies preferences to every device tab (and to tabs opened later).
@@ -72,9 +74,6 @@ public:
     // The current tab when it is idle, else a new one (for a link the user opens).
     DeviceWorkspace *freeWorkspaceForLink() override { return freeWorkspace(); }
     bool openLink(device::LinkRequest request, QString *error) override;
-    // The family UI plug-ins the window shows links with (app/gui/main.cpp registers them);
-    // without this call, the built-in ones. The registry outlives the window.
-    void setFamilies(const FamilyUiRegistry *families);
     // Reports a problem to the user (a non-blocking message box, or the error presenter).
     void showError(const QString &message) override { presentError(message); }
     QWidget *dialogParent() override { return this; }
@@ -204,8 +203,7 @@ private:
     QToolButton *m_bridgeStatus = nullptr;
     DeviceWorkspace::LayoutPreset m_preset = DeviceWorkspace::LayoutPreset::Monitor;
     Preferences m_prefs;
-    FamilyUiRegistry m_builtInFamilies;
-    const FamilyUiRegistry *m_families = &m_builtInFamilies;
+    const FamilyUiRegistry *m_families;
 
     sim::Motion m_simMotion = sim::Motion::Static;
     uint64_t m_nextSimulatorSeed = 2;

@@ -1,15 +1,15 @@
-#include "ui/results/results_query.h"
+#include "core/results/results_query.h"
 
 #include "core/jobs/thread_sync.h"
 
 #include <QThread>
 
-namespace imudesk::ui {
+namespace imudesk::results {
 
 // Lives in the query thread; its store's connection is opened, used and closed there.
 class ResultsQuery::Worker : public QObject {
 public:
-    results::ResultsStore store;
+    ResultsStore store;
 };
 
 ResultsQuery::ResultsQuery(QObject *parent) : QObject(parent)
@@ -64,4 +64,4 @@ void ResultsQuery::answered(const std::function<void()> &apply, int channel, qui
         Q_EMIT busyChanged(false);
 }
 
-} // namespace imudesk::ui
+} // namespace imudesk::results

@@ -1,10 +1,8 @@
-#include "families/family_ui.h"
+#include "workspace/family_ui.h"
 
-#include "families/built_in_families.h"
 #include "workspace/device_workspace.h"
 
 #include <QCoreApplication>
-#include <QDockWidget>
 
 namespace imudesk::ui {
 
@@ -57,23 +55,6 @@ std::optional<PortChoice> FamilyUiRegistry::simulatedChoice(const device::LinkRe
         if (auto c = f->simulatedChoice(request))
             return c;
     return std::nullopt;
-}
-
-void registerBuiltInFamilies(FamilyUiRegistry &registry)
-{
-    registry.add(std::make_unique<HipnucSerialUi>());
-    registry.add(std::make_unique<Hec495SerialUi>());
-    registry.add(std::make_unique<ModbusUi>());
-    registry.add(std::make_unique<CanUi>());
-    registry.add(std::make_unique<ReplayUi>());
-}
-
-QDockWidget *familyDock(QWidget *content, const QString &objectName, const QString &title)
-{
-    auto *dock = new QDockWidget(title);
-    dock->setObjectName(objectName);
-    dock->setWidget(content);
-    return dock;
 }
 
 bool showLink(DeviceWorkspace &ws, const FamilyUiRegistry &families, device::LinkOpener::Opened opened,

@@ -6,9 +6,11 @@
 // CAN monitor, replay controls), the tools it offers in the menus (a bus scan, the compass's
 // calibration, an update over the bus) and the workspace's title for the link.
 //
-// The built-in plug-ins are registered once, in app/gui/main.cpp (registerBuiltInFamilies);
-// the window finds the one for a link with FamilyUiRegistry::forLink. A new device family is a
-// core plug-in, one class of this interface and one registration line.
+// This interface is the shell's (ui/workspace), which names no family; the plug-ins live in
+// ui/families. The built-in ones are registered once, in app/gui/main.cpp
+// (families/built_in_families.h: registerBuiltInFamilies), and the window is given the registry;
+// it finds the plug-in for a link with FamilyUiRegistry::forLink. A new device family is a core
+// plug-in, one class of this interface and one registration line.
 #include "device/device_link.h"
 #include "links/link_opener.h"
 #include "sim/motion_model.h"
@@ -84,8 +86,6 @@ private:
     std::vector<std::unique_ptr<FamilyUi>> m_families;
 };
 
-// The families ImuDesk ships: HEC495 serial, Modbus RTU, CAN and replayed captures.
-void registerBuiltInFamilies(FamilyUiRegistry &registry);
 
 // Shows an opened link in ws: attaches it under the family's name for it, lets the family's
 // plug-in add its docks and tools, then starts the link. False (with why) while ws is busy.

@@ -21,7 +21,7 @@ QT_BEGIN_NAMESPACE
 class QThread;
 QT_END_NAMESPACE
 
-namespace imudesk::ui {
+namespace imudesk::results {
 
 class ResultsQuery : public QObject {
     Q_OBJECT
@@ -30,7 +30,7 @@ public:
     static constexpr int kChannels = 8;
     // Runs in the worker thread with its store; returns what to do with the answer in the
     // owner's thread (nothing: an empty function).
-    using Job = std::function<std::function<void()>(results::ResultsStore &store)>;
+    using Job = std::function<std::function<void()>(ResultsStore &store)>;
 
     explicit ResultsQuery(QObject *parent = nullptr);
     // Waits for the job under way (a server that does not answer: at most its 5 s connect
@@ -43,7 +43,7 @@ public:
     template <typename ReadFn, typename ApplyFn>
     void ask(int channel, ReadFn job, ApplyFn apply)
     {
-        post(channel, [job = std::move(job), apply = std::move(apply)](results::ResultsStore &store) -> std::function<void()> {
+        post(channel, [job = std::move(job), apply = std::move(apply)](ResultsStore &store) -> std::function<void()> {
             auto answer = std::make_shared<decltype(job(store))>(job(store));
             return [apply, answer] { apply(std::move(*answer)); };
         });
@@ -70,4 +70,4 @@ private:
     int m_outstanding = 0;
 };
 
-} // namespace imudesk::ui
+} // namespace imudesk::results
