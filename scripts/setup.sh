@@ -253,6 +253,9 @@ phase "Debian package: build it and lint it (cpack from build/test, lintian)"
 make_package "$root/build/test"
 lint_package "$root/build/test"
 
+phase "Windows compile check: core, ui and app for Windows with mingw-w64, syntax only (scripts/check_windows.py)"
+python3 "$root/scripts/check_windows.py" "$root/build/test"
+
 phase "build with AddressSanitizer and UndefinedBehaviorSanitizer"
 # The core, imudesk-cli and every test that needs no widgets (unit, integration, threads), without
 # debug information. The widget tests and the window run in the release suite above only: on a

@@ -1,6 +1,7 @@
 // imudesk-cli commands for the Witlink HEC495 compass: "hec495 PORT ACTION", the family
 // detection behind "probe", and "simulate --device hec495".
 #include "cli_context.h"
+#include "operator_input.h"
 #include "device/hec495_session.h"
 #include "protocol/nmea/nmea_sample.h"
 #include "sim/hec495_simulator.h"
@@ -11,9 +12,7 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QRegularExpression>
-#include <QSocketNotifier>
 
-#include <unistd.h>
 
 #include <memory>
 #include <optional>
@@ -108,54 +107,6 @@ int saveCalibration(Hec495Session &s, const QString &methodName, int points, boo
         out(QStringLiteral("the fit error is above 10: calibrate again (the manual's advice)"));
     return report(saved, json, QStringLiteral("calibrate"), o);
 }
-
-// Lines from standard input (a terminal or a pipe) as they arrive, read inside the event loop
-// so the session keeps running while the operator takes their time.
-class OperatorInput {
-public:
-    OperatorInput() : m_notifier(STDIN_FILENO, QSocketNotifier::Read)
-    {
-        QObject::connect(&m_notifier, &QSocketNotifier::activated, &m_notifier, [this] { readSome(); });
-    }
-    // The next line without its end; nullopt at the end of the input or on Ctrl+C.
-    std::optional<QString> line()
-    {
-        waitFor([&] { return m_buffer.contains('\n') || m_eof || interrupted(); }, -1);
-        const int nl = int(m_buffer.indexOf('\n'));
-        if (nl < 0 || interrupted())
-            return std::nullopt;
-        const QString l = QString::fromLocal8Bit(m_buffer.left(nl)).trimmed();
-        m_buffer.remove(0, nl + 1);
-        return l;
-    }
-    // A yes/no question on stderr; anything but y/yes (or the end of the input) is no.
-    bool confirm(const QString &question)
-    {
-        std::fprintf(stderr, "%s [y/N] ", qPrintable(question));
-        std::fflush(stderr);
-        const auto answer = line();
-        return answer && (answer->compare(QLatin1String("y"), Qt::CaseInsensitive) == 0
-                          || answer->compare(QLatin1String("yes"), Qt::CaseInsensitive) == 0);
-    }
-
-private:
-    void readSome()
-    {
-        char buf[256];
-        const ssize_t n = ::read(STDIN_FILENO, buf, sizeof buf);
-        if (n <= 0) {
-            m_eof = true;
-            m_notifier.setEnabled(false);
-            if (!m_buffer.isEmpty() && !m_buffer.endsWith('\n'))
-                m_buffer += '\n'; // a last line without its end still counts
-            return;
-        }
-        m_buffer.append(buf, n);
-    }
-    QSocketNotifier m_notifier;
-    QByteArray m_buffer;
-    bool m_eof = false;
-};
 
 // The manual method (0x67 per point) paced by the operator: a prompt per point, Enter collects
 // it; "f" finishes once the minimum is reached, "q" stops without saving. --auto-interval S

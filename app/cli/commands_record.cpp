@@ -1,5 +1,6 @@
 // imudesk-cli record: every byte a device sends, to a capture file (docs/FILE_FORMATS.md, "Capture file format").
 #include "cli_context.h"
+#include "file_size_limit.h"
 #include "device_links.h"
 #include "record/group_recording.h"
 #include "links/link_opener.h"
@@ -18,7 +19,6 @@
 #include <memory>
 #include <vector>
 
-#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <optional>
@@ -176,13 +176,13 @@ int cmdRecord(const QStringList &args)
     if (specs.size() > 1) {
         if (splitMb > 0 || splitMinutes > 0)
             return fail(QStringLiteral("--split-mb and --split-minutes are for one device's capture"), ExitUsage);
-        std::signal(SIGXFSZ, SIG_IGN);
+        outliveFileSizeLimit();
         if (record::McapRecording::isMcapPath(path))
             return recordGroupMcap(specs, path, duration, int(baudValue));
         return recordGroup(specs, path, duration, int(baudValue));
     }
     // A file size limit (ulimit -f) must end the recording with a message, not kill it.
-    std::signal(SIGXFSZ, SIG_IGN);
+    outliveFileSizeLimit();
 
     device::DeviceSession session;
     session.setAutoReconnect(true); // a pulled cable pauses the recording; the file stays open

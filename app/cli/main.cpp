@@ -102,22 +102,22 @@ QString closestCommand(const QString &word, const QStringList &commands)
 {
     const QString typed = word.toLower();
     const int allowed = typed.size() <= 4 ? 1 : 2;
-    QStringList near, starts;
+    QStringList closest, starts;
     int best = allowed + 1;
     for (const QString &c : commands) {
         const int d = editDistance(typed, c);
         if (d < best) {
             best = d;
-            near = QStringList{c};
+            closest = QStringList{c};
         } else if (d == best) {
-            near << c;
+            closest << c;
         }
         if (typed.size() >= 3 && c.startsWith(typed))
             starts << c;
     }
-    if (near.size() == 1)
-        return near.front();
-    if (near.isEmpty() && starts.size() == 1)
+    if (closest.size() == 1)
+        return closest.front();
+    if (closest.isEmpty() && starts.size() == 1)
         return starts.front();
     return {};
 }

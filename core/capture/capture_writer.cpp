@@ -1,6 +1,7 @@
 #include "capture_writer.h"
 
 #include "capture/capture_format.h"
+#include "io/file_sync.h"
 
 #include <QFile>
 #include <QFileInfo>
@@ -8,8 +9,6 @@
 
 #include <algorithm>
 #include <chrono>
-
-#include <unistd.h>
 
 Q_LOGGING_CATEGORY(lcRecord, "imudesk.core.record")
 
@@ -183,11 +182,8 @@ bool CaptureWriter::writeAll(const uint8_t *data, size_t n)
 
 void CaptureWriter::sync()
 {
-    if (auto *file = qobject_cast<QFileDevice *>(m_device.get())) {
-        file->flush();
-        if (file->handle() >= 0)
-            ::fdatasync(file->handle());
-    }
+    if (auto *file = qobject_cast<QFileDevice *>(m_device.get()))
+        io::syncFileData(*file);
 }
 
 void CaptureWriter::fail(const QString &message)

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <numbers>
 
 namespace imudesk::clock {
 
@@ -30,11 +31,11 @@ std::map<int, std::optional<int64_t>> TriggerPairing::bases() const
     for (const auto &[id, d] : m_devices)
         for (size_t i = 0; i < d.local.size(); ++i)
             if (d.aligned[i]) {
-                const double a = 2 * M_PI * double(((d.commonNs[i] % m_periodNs) + m_periodNs) % m_periodNs) / period;
+                const double a = 2 * std::numbers::pi * double(((d.commonNs[i] % m_periodNs) + m_periodNs) % m_periodNs) / period;
                 sx += std::cos(a);
                 sy += std::sin(a);
             }
-    const double phaseNs = std::atan2(sy, sx) / (2 * M_PI) * period;
+    const double phaseNs = std::atan2(sy, sx) / (2 * std::numbers::pi) * period;
     std::map<int, std::optional<int64_t>> out;
     for (const auto &[id, d] : m_devices) {
         std::vector<int64_t> votes;

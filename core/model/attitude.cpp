@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 namespace imudesk::model {
 
@@ -188,12 +189,12 @@ static Quat navigationTurned(const Quat &q, double rad)
 
 Quat nwuToEnu(const Quat &qNwu)
 {
-    return navigationTurned(qNwu, M_PI / 2); // R_enu<-nwu: NWU x, north, is ENU y
+    return navigationTurned(qNwu, std::numbers::pi / 2); // R_enu<-nwu: NWU x, north, is ENU y
 }
 
 Quat enuToNwu(const Quat &qEnu)
 {
-    return navigationTurned(qEnu, -M_PI / 2);
+    return navigationTurned(qEnu, -std::numbers::pi / 2);
 }
 
 Quat nedToEnu(const Quat &qNed)

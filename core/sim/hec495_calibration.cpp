@@ -3,6 +3,7 @@
 #include <Eigen/Dense>
 
 #include <cmath>
+#include <numbers>
 
 namespace imudesk::sim {
 
@@ -108,7 +109,7 @@ int Hec495Calibration::slotFor(const Pose &p, const Eigen::Vector3d &rawMag) con
             return -1;
         const Eigen::Vector3d u = rawMag / n;
         const int band = std::min(kBands - 1, int((u.z() + 1.0) / 2.0 * kBands));
-        const double az = std::atan2(u.y(), u.x()) * 180.0 / M_PI + 180.0;
+        const double az = std::atan2(u.y(), u.x()) * 180.0 / std::numbers::pi + 180.0;
         const int sector = std::min(kSectors - 1, int(az / (360.0 / kSectors)));
         return band * kSectors + sector;
     }

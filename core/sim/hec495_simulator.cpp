@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <numbers>
 
 namespace imudesk::sim {
 
@@ -111,12 +112,12 @@ Hec495Simulator::Reading Hec495Simulator::readingAt(int64_t tUs)
     r.rawMag = m_sample.mag;
     r.mag = m_calibrated ? Eigen::Vector3d(m_sample.mag - m_hardIron) : m_sample.mag;
     // Tilt compensation: R = Rz(yaw) Rx(pitch) Ry(roll), so Rx Ry m is the field turned by yaw only.
-    const Eigen::Matrix3d tilt = (Eigen::AngleAxisd(e.pitch * M_PI / 180.0, Eigen::Vector3d::UnitX())
-                                  * Eigen::AngleAxisd(e.roll * M_PI / 180.0, Eigen::Vector3d::UnitY()))
+    const Eigen::Matrix3d tilt = (Eigen::AngleAxisd(e.pitch * std::numbers::pi / 180.0, Eigen::Vector3d::UnitX())
+                                  * Eigen::AngleAxisd(e.roll * std::numbers::pi / 180.0, Eigen::Vector3d::UnitY()))
                                      .toRotationMatrix();
     const Eigen::Vector3d h = tilt * r.mag;
-    r.heading = wrap360(std::atan2(-h.x(), h.y()) * 180.0 / M_PI + m_running.declination);
-    r.magRoll = std::atan2(r.mag.x(), -r.mag.z()) * 180.0 / M_PI;
+    r.heading = wrap360(std::atan2(-h.x(), h.y()) * 180.0 / std::numbers::pi + m_running.declination);
+    r.magRoll = std::atan2(r.mag.x(), -r.mag.z()) * 180.0 / std::numbers::pi;
     r.timeMs = uint32_t((tUs - m_powerOnUs) / 1000);
     return r;
 }

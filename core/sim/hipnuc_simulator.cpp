@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <numbers>
 
 #include "simulator_detail.h"
 
@@ -54,7 +55,7 @@ void HipnucSimulator::Coverage::add(const Eigen::Vector3d &d, double fieldUt)
     constexpr int kBands = 6, kSectors = kMagCalCells / kBands;
     const int band = std::clamp(int(std::floor((d.z() + 1.0) * 0.5 * kBands)), 0, kBands - 1);
     const double az = std::atan2(d.y(), d.x()); // -pi..pi
-    const int sector = std::clamp(int(std::floor((az + M_PI) / (2 * M_PI) * kSectors)), 0, kSectors - 1);
+    const int sector = std::clamp(int(std::floor((az + std::numbers::pi) / (2 * std::numbers::pi) * kSectors)), 0, kSectors - 1);
     bool &cell = cells[size_t(band * kSectors + sector)];
     if (!cell) {
         cell = true;
@@ -417,8 +418,8 @@ Eigen::Vector3d HipnucSimulator::magDisturbanceAt(int64_t t) const
     if (a == 0)
         return Eigen::Vector3d::Zero();
     const double s = double(t) * 1e-6;
-    const double azimuth = 2 * M_PI * s / kMagDisturbanceTurnS;
-    const double elevation = 0.5 * M_PI * std::sin(2 * M_PI * s / kMagDisturbanceTiltS);
+    const double azimuth = 2 * std::numbers::pi * s / kMagDisturbanceTurnS;
+    const double elevation = 0.5 * std::numbers::pi * std::sin(2 * std::numbers::pi * s / kMagDisturbanceTiltS);
     return a * Eigen::Vector3d(std::cos(elevation) * std::cos(azimuth), std::cos(elevation) * std::sin(azimuth),
                                std::sin(elevation));
 }

@@ -104,9 +104,11 @@ private Q_SLOTS:
             QCOMPARE(sa[i].deviceTimeMs - sa[i - 1].deviceTimeMs, 10.0);
         QVERIFY(std::all_of(sa.begin() + 200, sa.end(),
                             [](const model::Sample &s) { return s.commonTimeNs != 0 && s.commonTimeNs <= s.hostTimeNs; }));
-        // B: what came before the cable was pulled is all there.
+        // B: what came before the cable was pulled is all there: the second of frames sent after
+        // the recording began, less the few still in the pseudo-terminal when it was pulled
+        // (lost with the cable; a loaded machine reads them late), and no gap among them.
         const auto sb = samplesOf(QDir(folder).filePath(m.devices[1].file));
-        QVERIFY2(sb.size() > 100, qPrintable(QString::number(sb.size())));
+        QVERIFY2(sb.size() >= 90, qPrintable(QString::number(sb.size())));
         for (size_t i = 1; i < sb.size(); ++i)
             QVERIFY2(sb[i].deviceTimeMs - sb[i - 1].deviceTimeMs == 10.0,
                      qPrintable(QStringLiteral("sample %1 of %2: %3 ms after the one before (host %4 ms after)")

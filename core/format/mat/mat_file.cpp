@@ -9,10 +9,6 @@
 
 #include <matio.h>
 
-#include <fcntl.h>
-#include <sys/mman.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <cerrno>
 #include <chrono>
@@ -79,28 +75,6 @@ std::string uniqueName(const std::string &name, const std::vector<std::string> &
         if (!isTaken(n))
             return n;
     }
-}
-
-QString errnoText(int errnoValue) { return QString::fromLocal8Bit(std::strerror(errnoValue)); }
-
-// 0, or the errno of the failed pwrite().
-int pwriteAll(int fd, const void *data, size_t size, uint64_t offset)
-{
-    auto p = static_cast<const char *>(data);
-    while (size > 0) {
-        const ssize_t n = ::pwrite(fd, p, size, off_t(offset));
-        if (n < 0) {
-            if (errno == EINTR)
-                continue;
-            return errno;
-        }
-        if (n == 0)
-            return EIO;
-        p += n;
-        size -= size_t(n);
-        offset += uint64_t(n);
-    }
-    return 0;
 }
 
 // The stream matio writes through: the FILE * its struct _mat_t (matio_private.h) begins with,
@@ -209,7 +183,7 @@ matvar_t *structVariable(const std::string &name, const std::vector<MatFile::Fie
 class MappingTrimmer {
 public:
     static constexpr std::chrono::milliseconds kTrimPeriod{25};
-    MappingTrimmer(void *map, size_t bytes) : m_map(map), m_bytes(bytes)
+    MappingTrimmer(const void *map, size_t bytes) : m_map(map), m_bytes(bytes)
     {
         if (!m_map)
             return;
@@ -238,10 +212,10 @@ private:
     {
         std::unique_lock lock(m_mutex);
         while (!m_wake.wait_for(lock, kTrimPeriod, [this] { return m_stop; }))
-            ::madvise(m_map, m_bytes, MADV_DONTNEED);
+            SpoolFile::dropPages(m_map, m_bytes);
     }
 
-    void *m_map;
+    const void *m_map;
     size_t m_bytes;
     std::mutex m_mutex;
     std::condition_variable m_wake;
@@ -253,8 +227,8 @@ private:
 // then), and the room left on its disk.
 QString writeFailure(const QString &path, int errnoValue)
 {
-    const bool telling = errnoValue == ENOSPC || errnoValue == EDQUOT || errnoValue == EFBIG || errnoValue == EIO;
-    const QString why = telling ? errnoText(errnoValue) : QStringLiteral("a write failed");
+    const QString why = SpoolFile::saysDiskFull(errnoValue) ? QString::fromLocal8Bit(std::strerror(errnoValue))
+                                                            : QStringLiteral("a write failed");
     const qint64 room = QStorageInfo(QFileInfo(path).absolutePath()).bytesAvailable();
     return QStringLiteral("Writing %1 failed: %2 (%3 bytes free on its disk)").arg(path, why).arg(room);
 }
@@ -265,21 +239,13 @@ MatFile::MatFile(const QString &spoolParent) : m_spoolParent(spoolParent) {}
 
 MatFile::~MatFile()
 {
-    for (Var &v : m_vars)
-        if (v.spoolFd >= 0)
-            ::close(v.spoolFd);
-    // m_dir removes the folder and the spools.
+    m_vars.clear(); // closes the spools; m_dir then removes the folder with them
 }
 
 bool MatFile::fail(const QString &what)
 {
     m_error = what;
     return false;
-}
-
-bool MatFile::fail(const QString &what, int errnoValue)
-{
-    return fail(QStringLiteral("%1: %2").arg(what, errnoText(errnoValue)));
 }
 
 bool MatFile::ensureSpoolDir()
@@ -348,9 +314,8 @@ int MatFile::addStruct(const std::string &varName, const std::map<std::string, s
         return -1;
     const size_t index = m_vars.size();
     v.spoolPath = m_dir->filePath(QStringLiteral("%1.spool").arg(index));
-    v.spoolFd = ::open(QFile::encodeName(v.spoolPath).constData(), O_RDWR | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
-    if (v.spoolFd < 0) {
-        fail(QStringLiteral("Cannot create the spool %1").arg(v.spoolPath), errno);
+    if (const QString e = v.spool.create(v.spoolPath, true); !e.isEmpty()) {
+        fail(QStringLiteral("Cannot create the spool %1: %2").arg(v.spoolPath, e));
         return -1;
     }
     v.tail.assign(v.columns * kBlockRows, 0.0);
@@ -362,9 +327,9 @@ int MatFile::addStruct(const std::string &varName, const std::map<std::string, s
 bool MatFile::flushBlock(Var &v)
 {
     const size_t bytes = v.tail.size() * sizeof(double);
-    if (const int e = pwriteAll(v.spoolFd, v.tail.data(), bytes, v.spooledBlocks * bytes)) {
+    if (const QString e = v.spool.writeAt(v.tail.data(), bytes, v.spooledBlocks * bytes); !e.isEmpty()) {
         const QString name = QString::fromStdString(v.name);
-        return fail(QStringLiteral("Cannot spool the rows of %1 to %2").arg(name, v.spoolPath), e);
+        return fail(QStringLiteral("Cannot spool the rows of %1 to %2: %3").arg(name, v.spoolPath, e));
     }
     ++v.spooledBlocks;
     v.tailRows = 0;
@@ -413,84 +378,48 @@ const std::string &MatFile::variableName(int structIndex) const
     return m_vars[size_t(structIndex)].name;
 }
 
-int MatFile::copyRange(int in, uint64_t inOffset, int out, uint64_t outOffset, size_t size)
-{
-    while (size > 0 && m_copyRangeWorks) {
-        off_t from = off_t(inOffset), to = off_t(outOffset);
-        const ssize_t n = ::copy_file_range(in, &from, out, &to, size, 0);
-        if (n > 0) {
-            inOffset += uint64_t(n);
-            outOffset += uint64_t(n);
-            size -= size_t(n);
-        } else if (n == 0) {
-            return EIO; // the spool ends early
-        } else if (errno == ENOSYS || errno == EXDEV || errno == EOPNOTSUPP || errno == EINVAL) {
-            m_copyRangeWorks = false; // not here: read and write
-        } else if (errno != EINTR) {
-            return errno;
-        }
-    }
-    m_copyBuffer.resize(kBlockRows * sizeof(double));
-    while (size > 0) {
-        const ssize_t n = ::pread(in, m_copyBuffer.data(), std::min(size, m_copyBuffer.size()), off_t(inOffset));
-        if (n < 0 && errno == EINTR)
-            continue;
-        if (n <= 0)
-            return n < 0 ? errno : EIO;
-        if (const int e = pwriteAll(out, m_copyBuffer.data(), size_t(n), outOffset))
-            return e;
-        inOffset += uint64_t(n);
-        outOffset += uint64_t(n);
-        size -= size_t(n);
-    }
-    return 0;
-}
-
-bool MatFile::assemble(const Var &v, size_t index, Assembled &a)
+bool MatFile::assemble(Var &v, size_t index, Assembled &a)
 {
     const uint64_t rowCount = rows(int(index));
     a.bytes = size_t(rowCount * v.columns * sizeof(double));
     if (a.bytes == 0)
         return true;
-    a.path = m_dir->filePath(QStringLiteral("%1.data").arg(index));
-    a.fd = ::open(QFile::encodeName(a.path).constData(), O_RDWR | O_CREAT | O_TRUNC | O_CLOEXEC, 0600);
-    if (a.fd < 0)
-        return fail(QStringLiteral("Cannot create %1").arg(a.path), errno);
-    // Room for all of it now, or a clear failure (a file system without fallocate goes on).
-    if (const int e = ::posix_fallocate(a.fd, 0, off_t(a.bytes)); e != 0 && e != EOPNOTSUPP && e != EINVAL)
-        return fail(QStringLiteral("Cannot make room for %1 bytes in %2").arg(a.bytes).arg(a.path), e);
+    const QString path = m_dir->filePath(QStringLiteral("%1.data").arg(index));
+    if (const QString e = a.file.create(path, false); !e.isEmpty())
+        return fail(QStringLiteral("Cannot create %1: %2").arg(path, e));
+    // Room for all of it now, or a clear failure (a file system that cannot say goes on).
+    if (const QString e = a.file.reserve(a.bytes); !e.isEmpty())
+        return fail(QStringLiteral("Cannot make room for %1 bytes in %2: %3").arg(a.bytes).arg(path, e));
     const QString failure =
-        QStringLiteral("Cannot gather the rows of %1 in %2").arg(QString::fromStdString(v.name), a.path);
+        QStringLiteral("Cannot gather the rows of %1 in %2").arg(QString::fromStdString(v.name), path);
     const size_t segment = kBlockRows * sizeof(double);
     const uint64_t blockBytes = uint64_t(segment) * v.columns;
     for (size_t c = 0; c < v.columns; ++c) {
         const uint64_t column = uint64_t(c) * rowCount * sizeof(double);
         for (uint64_t b = 0; b < v.spooledBlocks; ++b)
-            if (const int e = copyRange(v.spoolFd, b * blockBytes + c * segment, a.fd, column + b * segment, segment))
-                return fail(failure, e);
+            if (const QString e = v.spool.copyTo(b * blockBytes + c * segment, a.file, column + b * segment, segment,
+                                                 m_copyBuffer);
+                !e.isEmpty())
+                return fail(QStringLiteral("%1: %2").arg(failure, e));
         if (v.tailRows > 0) {
             const uint64_t at = column + v.spooledBlocks * segment;
-            if (const int e = pwriteAll(a.fd, v.tail.data() + c * kBlockRows, v.tailRows * sizeof(double), at))
-                return fail(failure, e);
+            if (const QString e = a.file.writeAt(v.tail.data() + c * kBlockRows, v.tailRows * sizeof(double), at);
+                !e.isEmpty())
+                return fail(QStringLiteral("%1: %2").arg(failure, e));
         }
     }
-    void *map = ::mmap(nullptr, a.bytes, PROT_READ, MAP_SHARED, a.fd, 0);
-    if (map == MAP_FAILED)
-        return fail(QStringLiteral("Cannot map %1").arg(a.path), errno);
-    a.map = map;
-    ::madvise(a.map, a.bytes, MADV_SEQUENTIAL); // read once, front to back
+    QString error;
+    a.map = a.file.map(a.bytes, &error);
+    if (!a.map)
+        return fail(QStringLiteral("Cannot map %1: %2").arg(path, error));
     return true;
 }
 
 void MatFile::release(Assembled &a)
 {
-    if (a.map)
-        ::munmap(a.map, a.bytes);
-    if (a.fd >= 0) {
-        ::close(a.fd);
-        ::unlink(QFile::encodeName(a.path).constData());
-    }
-    a = Assembled();
+    a.file.close(true);
+    a.map = nullptr;
+    a.bytes = 0;
 }
 
 bool MatFile::checkTags(const QString &path, size_t variables)
@@ -543,7 +472,7 @@ bool MatFile::write(const QString &path, Compression compression)
     const matio_compression how = compression == Compression::Zlib ? MAT_COMPRESSION_ZLIB : MAT_COMPRESSION_NONE;
     bool ok = true;
     for (size_t i = 0; ok && i < m_vars.size(); ++i) {
-        const Var &v = m_vars[i];
+        Var &v = m_vars[i];
         Assembled a;
         ok = assemble(v, i, a);
         if (ok) {

@@ -48,6 +48,8 @@
 // spools' disk full) adds no row and changes nothing else.
 //
 // Linux (file descriptors, copy_file_range, mmap). Plain value class; not thread-safe.
+#include "format/mat/spool_file.h"
+
 #include <QString>
 
 #include <cstddef>
@@ -109,34 +111,30 @@ private:
         size_t columns = 0;
         uint64_t maxRows = 0;
         QString spoolPath;
-        int spoolFd = -1;
+        SpoolFile spool;
         uint64_t spooledBlocks = 0;
         size_t tailRows = 0;
         std::vector<double> tail; // the partial block: kBlockRows values per column
     };
     // A struct's rows assembled column-major into a data file, mapped read-only.
     struct Assembled {
-        QString path;
-        int fd = -1;
-        void *map = nullptr;
+        SpoolFile file;
+        const void *map = nullptr;
         size_t bytes = 0;
     };
 
     bool fail(const QString &what);
-    bool fail(const QString &what, int errnoValue); // what: strerror(errnoValue)
     bool ensureSpoolDir();
     bool flushBlock(Var &v);
-    bool assemble(const Var &v, size_t index, Assembled &out);
+    bool assemble(Var &v, size_t index, Assembled &out);
     static void release(Assembled &a);
-    int copyRange(int in, uint64_t inOffset, int out, uint64_t outOffset, size_t size); // 0 or an errno
     bool checkTags(const QString &path, size_t variables);
 
     QString m_spoolParent;
     std::unique_ptr<QTemporaryDir> m_dir;
     std::vector<Var> m_vars;
     QString m_error;
-    bool m_copyRangeWorks = true;   // false once copy_file_range is found unsupported
-    std::vector<char> m_copyBuffer; // its replacement's buffer
+    std::vector<char> m_copyBuffer; // for a copy between two spools that the system cannot make
 };
 
 } // namespace imudesk::format::mat

@@ -1,0 +1,162 @@
+#!/usr/bin/env python3
+"""Windows compile check (issue 54): core, ui and the two applications compiled for Windows with
+Debian's mingw-w64 cross compiler against Qt's headers, syntax only.
+
+  scripts/check_windows.py BUILD_DIR            every translation unit of BUILD_DIR's core, ui
+                                                and app targets (its compile_commands.json)
+  scripts/check_windows.py BUILD_DIR --probe F  one source F, with the flags of core's engine floor
+
+What is checked: that every line parses and type-checks as C++20 for x86_64 Windows (mingw-w64's
+headers, Qt's public headers, Eigen), with <windows.h> included first in every unit, so that a name
+Windows defines as a macro (ERROR, DELETE, min, max, near, ...) or a POSIX-only header or call
+outside its platform file fails. The units are the build's own: its unity batches, the files
+compiled alone and the moc outputs. What is not checked: nothing links or runs (Qt for Windows
+cannot be installed here), so a missing Windows implementation of a function is not found, and
+Qt's headers are Linux's build of them (the same API; Windows-only Qt classes are not there).
+Left out by design: the POSIX platform files (<name>_posix.cpp; their <name>_windows.cpp is
+compiled instead) and the simulators' pseudo-terminals (core/sim/pty_*.cpp, Unix-only).
+Exit 0: every unit compiled; 1: a unit failed (its first errors are printed); 2: usage or set-up.
+"""
+import json
+import os
+import re
+import shlex
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+from concurrent.futures import ThreadPoolExecutor
+
+COMPILER = "x86_64-w64-mingw32-g++-posix"
+# <windows.h> as every unit sees it first; precompiled once per run (it is a third of a second
+# of every unit otherwise).
+WINDOWS_DEFINES = ["-DNOMINMAX", "-DWIN32_LEAN_AND_MEAN", "-DUNICODE", "-D_UNICODE"]
+BASE_FLAGS = ["-std=c++20", "-w"]
+UNIX_ONLY = re.compile(r"(_posix\.cpp|/core/sim/pty_[a-z_]+\.cpp)$")
+# Headers the build finds in /usr/include, which cannot be on a cross compiler's path (glibc's
+# headers are there too): copied into a folder of their own.
+USR_INCLUDE_HEADERS = ["zstd.h", "zstd_errors.h", "zdict.h", "matio.h", "matio_pubconf.h"]
+
+
+def fail_setup(message):
+    print(f"check-windows: {message}", file=sys.stderr)
+    sys.exit(2)
+
+
+def output_of(args):
+    return args[args.index("-o") + 1] if "-o" in args else ""
+
+
+def windows_args(args, extra_include):
+    """The Linux compile command made a Windows syntax check: its defines and include folders."""
+    out = [COMPILER, "-fsyntax-only"] + BASE_FLAGS + WINDOWS_DEFINES + [
+        "-include", os.path.join(extra_include, "imudesk_windows.h"), "-isystem", extra_include]
+    i = 1
+    while i < len(args):
+        a = args[i]
+        if a in ("-o", "-MT", "-MF", "-c"):
+            i += 2 if a != "-c" else 1
+            continue
+        if a in ("-I", "-isystem", "-D", "-U", "-include"):
+            value = args[i + 1]
+            if a == "-isystem" and value.endswith("/mkspecs/linux-g++"):
+                value = value[: -len("linux-g++")] + "win32-g++"
+            if a == "-include" and value.endswith((".h", ".hxx")) and "cmake_pch" in value:
+                i += 2
+                continue
+            out += [a, value]
+            i += 2
+            continue
+        if a.startswith(("-I", "-D", "-U")):
+            out.append(a)
+        # -O, -g, -W, -f, -std and the rest: Linux's code generation, not needed for a syntax check
+        i += 1
+    return out
+
+
+def units(build):
+    path = os.path.join(build, "compile_commands.json")
+    if not os.path.exists(path):
+        fail_setup(f"{path} not found: configure BUILD_DIR with CMake first (it exports compile commands)")
+    entries = json.load(open(path))
+    chosen, by_file = [], {}
+    for e in entries:
+        args = shlex.split(e["command"])
+        out = output_of(args)
+        if not out.startswith(("core/", "ui/", "app/")) or "/.rcc/" in e["file"]:
+            continue  # tests, benchmarks, the floors' probes; the resources' data
+        by_file[os.path.realpath(e["file"])] = args
+        if UNIX_ONLY.search(e["file"]):
+            continue
+        chosen.append((e["file"], args))
+    # The Windows side of each platform file, with the flags of its POSIX twin.
+    for posix, args in list(by_file.items()):
+        if posix.endswith("_posix.cpp"):
+            win = posix[: -len("_posix.cpp")] + "_windows.cpp"
+            if not os.path.exists(win):
+                fail_setup(f"{posix} has no Windows twin {win}")
+            chosen.append((win, args))
+    return chosen
+
+
+def engine_flags(build):
+    for f, args in units(build):
+        if "imudesk_core_engine" in output_of(args) or "imudesk_core_engine" in f:
+            return args
+    fail_setup("no unit of core's engine floor in the build")
+
+
+def compile_one(item, extra_include):
+    source, args = item
+    cmd = windows_args(args, extra_include)
+    if source not in cmd:
+        cmd.append(source)
+    t = time.monotonic()
+    r = subprocess.run(cmd, capture_output=True, text=True)
+    return source, r.returncode, r.stderr, time.monotonic() - t
+
+
+def main():
+    if len(sys.argv) not in (2, 4) or (len(sys.argv) == 4 and sys.argv[2] != "--probe"):
+        print(__doc__, file=sys.stderr)
+        sys.exit(2)
+    if not shutil.which(COMPILER):
+        fail_setup(f"{COMPILER} not found: install Debian's g++-mingw-w64-x86-64-posix (scripts/debian-packages.txt)")
+    build = os.path.abspath(sys.argv[1])
+    with tempfile.TemporaryDirectory(prefix="imudesk-windows-") as extra:
+        for h in USR_INCLUDE_HEADERS:
+            if os.path.exists(f"/usr/include/{h}"):
+                shutil.copy(f"/usr/include/{h}", extra)
+        header = os.path.join(extra, "imudesk_windows.h")
+        with open(header, "w") as f:
+            f.write("#pragma once\n#include <windows.h>\n")
+        pch = subprocess.run([COMPILER, "-x", "c++-header"] + BASE_FLAGS + WINDOWS_DEFINES + [header, "-o", header + ".gch"],
+                             capture_output=True, text=True)
+        if pch.returncode != 0:
+            fail_setup(f"cannot precompile <windows.h>:\n{pch.stderr}")
+        if len(sys.argv) == 4:
+            probe = os.path.abspath(sys.argv[3])
+            args = engine_flags(build)
+            source, rc, err, _ = compile_one((probe, args), extra)
+            sys.stderr.write(err)
+            print(f"check-windows: {os.path.basename(probe)} {'compiles' if rc == 0 else 'does not compile'} for Windows")
+            sys.exit(0 if rc == 0 else 1)
+        todo = units(build)
+        jobs = int(os.environ.get("CHECK_JOBS", os.cpu_count() or 2))
+        start = time.monotonic()
+        failed = []
+        with ThreadPoolExecutor(max_workers=jobs) as pool:
+            for source, rc, err, secs in pool.map(lambda u: compile_one(u, extra), todo):
+                if rc != 0:
+                    failed.append((source, err))
+        print(f"check-windows: {len(todo) - len(failed)} of {len(todo)} units of core, ui and app compile for "
+              f"Windows (mingw-w64, syntax only) in {time.monotonic() - start:.0f} s")
+        for source, err in failed:
+            lines = [l for l in err.splitlines() if "error" in l][:8]
+            print(f"!! {source}:\n   " + "\n   ".join(lines), file=sys.stderr)
+        sys.exit(1 if failed else 0)
+
+
+if __name__ == "__main__":
+    main()
