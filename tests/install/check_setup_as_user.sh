@@ -21,6 +21,8 @@ printf '#!/bin/sh\necho "fuzzing ran" >> %s/calls\n' "$work" > "$work/tree/tests
 for s in check-fresh-debian.sh test-check-fresh-debian.sh; do
   printf '#!/bin/sh\necho "$0 ran as uid $(id -u)" >> %s/calls\n' "$work" > "$work/tree/scripts/$s"
 done
+printf 'import os\nopen("%s/calls", "a").write("check_windows.py ran as uid %%d\\n" %% os.getuid())\n' "$work" \
+  > "$work/tree/scripts/check_windows.py"
 stub() { # name, body
   printf '#!/bin/sh\n%s\n' "$2" > "$work/bin/$1"
 }
