@@ -1,0 +1,25 @@
+# ctest source_sizes: no source file of core, ui, app or the tests is over 900 lines (issue 54: a
+# file that long holds more than one subject; split it by subject).
+#   cmake -DROOT=<source folder> -P check_source_sizes.cmake
+cmake_minimum_required(VERSION 3.16)
+if(NOT ROOT)
+  message(FATAL_ERROR "usage: cmake -DROOT=<source folder> -P check_source_sizes.cmake")
+endif()
+set(limit 900)
+set(failures 0)
+file(GLOB_RECURSE sources ${ROOT}/core/*.h ${ROOT}/core/*.cpp ${ROOT}/ui/*.h ${ROOT}/ui/*.cpp
+     ${ROOT}/app/*.h ${ROOT}/app/*.cpp ${ROOT}/tests/*.h ${ROOT}/tests/*.cpp)
+foreach(source ${sources})
+  file(READ ${source} text)
+  string(REGEX MATCHALL "\n" ends "${text}")
+  list(LENGTH ends count)
+  if(count GREATER limit)
+    file(RELATIVE_PATH name ${ROOT} ${source})
+    message(SEND_ERROR "${name}: ${count} lines, over ${limit}: split it by subject")
+    math(EXPR failures "${failures} + 1")
+  endif()
+endforeach()
+if(failures GREATER 0)
+  message(FATAL_ERROR "${failures} source file(s) over ${limit} lines")
+endif()
+message(STATUS "every source file is at most ${limit} lines")
