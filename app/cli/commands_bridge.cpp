@@ -90,7 +90,7 @@ int cmdBridge(const QStringList &args)
     auto framesLost = std::make_shared<std::vector<uint64_t>>(devices.size(), 0); // outlives the links' signals
     for (size_t i = 0; i < devices.size(); ++i) {
         OpenDevice &d = devices[i];
-        bridge.addDevice(d.link.link->sharedStore(), headerOf(d)); // named by record::deviceName
+        bridge.addDevice(d.link.link->sharedStore(), headerOf(d)); // named by capture::deviceName
         QObject::connect(d.link.link.get(), &device::DeviceLink::statsUpdated,
                          [framesLost, i](const device::SessionStats &st) { (*framesLost)[i] = st.framesLost; });
     }

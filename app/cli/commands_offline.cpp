@@ -28,9 +28,9 @@ int cmdDecode(const QStringList &args)
         return fail(QStringLiteral("cannot read %1: %2").arg(path, file.errorString()));
     const bool json = p.isSet(QStringLiteral("json"));
 
-    // The same decoding path as replay and export (record::CaptureDecoder); a raw file has no
+    // The same decoding path as replay and export (capture::CaptureDecoder); a raw file has no
     // arrival times, so nothing is released by a pause, only by the end of the file.
-    struct Printer : record::CaptureDecoder::Sink {
+    struct Printer : capture::CaptureDecoder::Sink {
         bool json = false;
         std::string line;
         std::map<std::string, uint64_t> errorKinds;
@@ -58,7 +58,7 @@ int cmdDecode(const QStringList &args)
         }
     } printer;
     printer.json = json;
-    record::CaptureDecoder decoder;
+    capture::CaptureDecoder decoder;
     std::vector<char> buf(1 << 20);
     QElapsedTimer clock;
     clock.start();

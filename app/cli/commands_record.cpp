@@ -38,7 +38,7 @@ int recordGroup(const QStringList &specs, const QString &folder, double duration
         auto *session = qobject_cast<device::Session *>(d.link.link.get());
         if (!session)
             return fail(QStringLiteral("%1: this link cannot be recorded").arg(d.spec));
-        // Named for the file and the manifest by GroupRecording (record::deviceName), not by its port.
+        // Named for the file and the manifest by GroupRecording (capture::deviceName), not by its port.
         members.push_back({session, QString(), d.spec, d.identity});
     }
     device::GroupRecording group;
@@ -106,7 +106,7 @@ int recordGroupMcap(const QStringList &specs, const QString &path, double durati
     if (const int code = openDevices(specs, baud, devices); code != ExitOk)
         return code;
     std::vector<record::McapGroupRecording::Member> members;
-    for (OpenDevice &d : devices) // named by record::deviceName: its serial number, else family and address
+    for (OpenDevice &d : devices) // named by capture::deviceName: its serial number, else family and address
         members.push_back({d.link.link->sharedStore(), headerOf(d), std::string()});
     record::McapGroupRecording recording;
     QString error;
@@ -177,7 +177,7 @@ int cmdRecord(const QStringList &args)
         if (splitMb > 0 || splitMinutes > 0)
             return fail(QStringLiteral("--split-mb and --split-minutes are for one device's capture"), ExitUsage);
         outliveFileSizeLimit();
-        if (record::McapRecording::isMcapPath(path))
+        if (capture::McapRecording::isMcapPath(path))
             return recordGroupMcap(specs, path, duration, int(baudValue));
         return recordGroup(specs, path, duration, int(baudValue));
     }
@@ -193,7 +193,7 @@ int cmdRecord(const QStringList &args)
         return fail(error, interrupted() ? ExitInterrupted : ExitFailure);
 
     // The configuration snapshot: the KEY=VALUE lines of LOG COMCONFIG, when the device answers.
-    record::CaptureHeader extra;
+    capture::CaptureHeader extra;
     std::optional<protocol::hipnuc::AsciiReply> reply;
     const quint64 query = session.sendCommand(protocol::hipnuc::commands::logComConfig(), 1000);
     QObject::connect(&session, &device::DeviceSession::commandFinished,
@@ -205,9 +205,9 @@ int cmdRecord(const QStringList &args)
     if (reply && reply->ok())
         extra.setConfig(reply->values);
 
-    if (record::McapRecording::isMcapPath(path) && (splitMb > 0 || splitMinutes > 0))
+    if (capture::McapRecording::isMcapPath(path) && (splitMb > 0 || splitMinutes > 0))
         return fail(QStringLiteral("--split-mb and --split-minutes are for captures (.imucap), not MCAP"), ExitUsage);
-    record::CaptureWriter::Options options;
+    capture::CaptureWriter::Options options;
     options.splitBytes = int64_t(splitMb * 1024 * 1024);
     options.splitSeconds = int64_t(splitMinutes * 60);
     bool started = false, stopped = false;

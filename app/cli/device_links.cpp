@@ -69,12 +69,12 @@ bool linkOf(const QString &spec, int baud, device::LinkRequest *out, QString *er
     return true;
 }
 
-record::CaptureHeader headerOf(const OpenDevice &d)
+capture::CaptureHeader headerOf(const OpenDevice &d)
 {
-    record::CaptureHeader header;
+    capture::CaptureHeader header;
     header.setIdentity(d.identity);
-    header.set(record::CaptureHeader::kLinkKind, d.link.link->linkKind().toStdString());
-    header.set(record::CaptureHeader::kPort, d.spec.toStdString());
+    header.set(capture::CaptureHeader::kLinkKind, d.link.link->linkKind().toStdString());
+    header.set(capture::CaptureHeader::kPort, d.spec.toStdString());
     d.link.link->describeLink(header);
     return header;
 }

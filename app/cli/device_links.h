@@ -30,7 +30,7 @@ struct OpenDevice {
 };
 
 // What a recording or the bridge says of an opened device: its identity, link and port.
-record::CaptureHeader headerOf(const OpenDevice &d);
+capture::CaptureHeader headerOf(const OpenDevice &d);
 
 // Opens every device of specs (baud: the serial ports' rate, 0 = detect) and waits until each
 // is connected (30 s to open, 15 s to connect). ExitOk when all are; else the exit code, the

@@ -49,7 +49,7 @@ public:
 
     QString start(const BridgeOptions &o, quint16 *port);
     void stop();
-    void addDevice(std::shared_ptr<device::SampleStore> store, const record::CaptureHeader &header, const QString &label);
+    void addDevice(std::shared_ptr<device::SampleStore> store, const capture::CaptureHeader &header, const QString &label);
     void removeDevice(const device::SampleStore *store);
 
 private:
@@ -236,7 +236,7 @@ void BridgeWorker::stop()
     publishStats();
 }
 
-void BridgeWorker::addDevice(std::shared_ptr<device::SampleStore> store, const record::CaptureHeader &header,
+void BridgeWorker::addDevice(std::shared_ptr<device::SampleStore> store, const capture::CaptureHeader &header,
                              const QString &label)
 {
     const device::SampleStore *key = store.get();
@@ -244,12 +244,12 @@ void BridgeWorker::addDevice(std::shared_ptr<device::SampleStore> store, const r
         return;
     // A namespace of its own: two devices that give the same name get _2, _3, ...
     const std::string unique = fm::SampleChannels::uniqueName(
-        record::deviceName(header, label.toStdString()), [this](const std::string &n) {
+        capture::deviceName(header, label.toStdString()), [this](const std::string &n) {
             return std::any_of(m_devices.begin(), m_devices.end(), [&n](const auto &e) { return e.second.name == n; });
         });
     Device d{device::SampleCursor(std::move(store)), unique, nullptr, nullptr};
     d.sink = std::make_unique<DeviceSink>(*this, key);
-    d.channels = std::make_unique<fm::SampleChannels>(*d.sink, record::McapRecording::channelsOf(header, unique));
+    d.channels = std::make_unique<fm::SampleChannels>(*d.sink, capture::McapRecording::channelsOf(header, unique));
     m_devices.emplace(key, std::move(d));
     m_stats.devices = int(m_devices.size());
     log(QStringLiteral("device %1 added (/imu/%1/...)").arg(QString::fromStdString(unique)));
@@ -682,7 +682,7 @@ void LiveBridge::stop()
     m_port = 0;
 }
 
-void LiveBridge::addDevice(std::shared_ptr<device::SampleStore> store, const record::CaptureHeader &header,
+void LiveBridge::addDevice(std::shared_ptr<device::SampleStore> store, const capture::CaptureHeader &header,
                            const QString &label)
 {
     QMetaObject::invokeMethod(m_worker, [w = m_worker, store = std::move(store), header, label]() mutable {

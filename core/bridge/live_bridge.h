@@ -78,9 +78,9 @@ public:
     static bool parseHostPort(const QString &text, QHostAddress *address, quint16 *port, QString *error);
 
     // A device whose samples go out, under the topic namespace /imu/<name>/ (name:
-    // record::deviceName(header, label), its serial number first; made unique); header: its
+    // capture::deviceName(header, label), its serial number first; made unique); header: its
     // identity, link and configuration, as a capture's. The store is what the bridge knows it by.
-    void addDevice(std::shared_ptr<device::SampleStore> store, const record::CaptureHeader &header,
+    void addDevice(std::shared_ptr<device::SampleStore> store, const capture::CaptureHeader &header,
                    const QString &label = QString());
     void removeDevice(const device::SampleStore *store);
 

@@ -3,7 +3,7 @@
 #include "model/main_status.h"
 #include "protocol/witlink/reply.h"
 
-namespace imudesk::record {
+namespace imudesk::capture {
 
 namespace hp = protocol::hipnuc;
 using protocol::StreamEvent;
@@ -207,4 +207,4 @@ void CaptureDecoder::dispatch(int64_t hostNs, Sink &sink)
     m_events.clear();
 }
 
-} // namespace imudesk::record
+} // namespace imudesk::capture

@@ -26,7 +26,7 @@
 #include <string>
 #include <vector>
 
-namespace imudesk::record {
+namespace imudesk::capture {
 
 class CaptureDecoder {
 public:
@@ -103,4 +103,4 @@ private:
     int64_t m_lastSentNs = 0; // the last request's time, until its answer
 };
 
-} // namespace imudesk::record
+} // namespace imudesk::capture

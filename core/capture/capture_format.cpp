@@ -4,7 +4,7 @@
 
 #include <cstring>
 
-namespace imudesk::record::capture {
+namespace imudesk::capture {
 
 namespace {
 
@@ -44,4 +44,4 @@ void appendChunk(std::vector<uint8_t> &out, ChunkKind kind, int64_t monotonicNs,
     put<uint32_t>(out, format::crc32(0, out.data() + start, out.size() - start));
 }
 
-} // namespace imudesk::record::capture
+} // namespace imudesk::capture

@@ -17,7 +17,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace imudesk::record::capture {
+namespace imudesk::capture {
 
 inline constexpr char kMagic[8] = {'I', 'M', 'U', 'D', 'C', 'A', 'P', '1'};
 inline constexpr uint16_t kVersion = 1;
@@ -43,4 +43,4 @@ std::vector<uint8_t> encodeFileHeader(const CaptureHeader &header);
 void appendChunk(std::vector<uint8_t> &out, ChunkKind kind, int64_t monotonicNs, int64_t wallUs, const uint8_t *data,
                  size_t n);
 
-} // namespace imudesk::record::capture
+} // namespace imudesk::capture

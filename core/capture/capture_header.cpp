@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <charconv>
 
-namespace imudesk::record {
+namespace imudesk::capture {
 
 namespace {
 
@@ -145,4 +145,4 @@ bool CaptureHeader::decodeBody(const uint8_t *data, size_t n, CaptureHeader &out
     return true;
 }
 
-} // namespace imudesk::record
+} // namespace imudesk::capture

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-namespace imudesk::record {
+namespace imudesk::capture {
 
 class CaptureHeader {
     Q_DECLARE_TR_FUNCTIONS(CaptureHeader)
@@ -70,6 +70,6 @@ public:
     friend bool operator==(const CaptureHeader &, const CaptureHeader &) = default;
 };
 
-} // namespace imudesk::record
+} // namespace imudesk::capture
 
-Q_DECLARE_METATYPE(imudesk::record::CaptureHeader)
+Q_DECLARE_METATYPE(imudesk::capture::CaptureHeader)

@@ -6,7 +6,7 @@
 
 #include <cstring>
 
-namespace imudesk::record {
+namespace imudesk::capture {
 
 namespace {
 
@@ -243,4 +243,4 @@ CaptureReader::Result CaptureReader::next(Chunk &chunk)
     }
 }
 
-} // namespace imudesk::record
+} // namespace imudesk::capture

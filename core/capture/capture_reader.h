@@ -15,7 +15,7 @@
 #include <memory>
 #include <vector>
 
-namespace imudesk::record {
+namespace imudesk::capture {
 
 class CaptureReader {
     Q_DECLARE_TR_FUNCTIONS(CaptureReader)
@@ -76,4 +76,4 @@ private:
     QString m_message;
 };
 
-} // namespace imudesk::record
+} // namespace imudesk::capture

@@ -12,7 +12,7 @@
 
 Q_LOGGING_CATEGORY(lcRecord, "imudesk.core.record")
 
-namespace imudesk::record {
+namespace imudesk::capture {
 
 namespace {
 
@@ -302,4 +302,4 @@ CaptureWriter::Status CaptureWriter::status() const
     return m_status;
 }
 
-} // namespace imudesk::record
+} // namespace imudesk::capture

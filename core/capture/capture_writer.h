@@ -27,7 +27,7 @@
 #include <mutex>
 #include <thread>
 
-namespace imudesk::record {
+namespace imudesk::capture {
 
 class CaptureWriter {
     Q_DECLARE_TR_FUNCTIONS(CaptureWriter)
@@ -114,4 +114,4 @@ private:
     bool m_partHasChunks = false;
 };
 
-} // namespace imudesk::record
+} // namespace imudesk::capture

@@ -4,7 +4,7 @@
 
 #include <algorithm>
 
-namespace imudesk::record {
+namespace imudesk::capture {
 
 namespace {
 
@@ -63,4 +63,4 @@ std::string matlabDeviceName(const CaptureHeader &header, const std::string &lab
     return prefixed ? name : "SN_" + name;
 }
 
-} // namespace imudesk::record
+} // namespace imudesk::capture

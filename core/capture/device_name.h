@@ -9,12 +9,12 @@
 //   3. else a label the user set;
 //   4. else its product name ("HI14R3"), else "device".
 // Never a port or a tab's title: /dev/pts/10 and "HI14R3 on /dev/pts/10" differ per run.
-// Characters other than letters, digits and '_' become '_' (record::deviceName is topic-safe).
+// Characters other than letters, digits and '_' become '_' (capture::deviceName is topic-safe).
 #include "capture/capture_header.h"
 
 #include <string>
 
-namespace imudesk::record {
+namespace imudesk::capture {
 
 // The device's name (topic-safe: [A-Za-z0-9_], never empty).
 std::string deviceName(const CaptureHeader &header, const std::string &label = {});
@@ -26,4 +26,4 @@ std::string matlabDeviceName(const CaptureHeader &header, const std::string &lab
 // unwritten 0xFF bytes), else empty.
 std::string usableSerial(const CaptureHeader &header);
 
-} // namespace imudesk::record
+} // namespace imudesk::capture

@@ -9,7 +9,7 @@
 
 #include <set>
 
-namespace imudesk::record {
+namespace imudesk::capture {
 
 namespace fm = format::mcap;
 
@@ -162,4 +162,4 @@ void McapRecording::abandon()
         m_writer->abandon();
 }
 
-} // namespace imudesk::record
+} // namespace imudesk::capture

@@ -18,7 +18,7 @@
 #include <memory>
 #include <vector>
 
-namespace imudesk::record {
+namespace imudesk::capture {
 
 class McapRecording {
 public:
@@ -31,7 +31,7 @@ public:
     // the attachment "<name>/configuration.json". append(index, ...) writes the index-th's.
     struct Device {
         CaptureHeader header;
-        std::string label; // a label the user set, or empty (its name: record::deviceName)
+        std::string label; // a label the user set, or empty (its name: capture::deviceName)
     };
     bool start(const QString &path, const std::vector<Device> &devices, int64_t epochOffsetNs, QString *error);
     bool append(size_t device, const model::Sample &s);
@@ -59,7 +59,7 @@ public:
     static format::mcap::McapWriter::StringMap timeMetadata();
     // The configuration snapshot as JSON (empty when the header has none).
     static std::string configurationJson(const CaptureHeader &header);
-    // The device's channels under name, or when empty under its own (record::deviceName).
+    // The device's channels under name, or when empty under its own (capture::deviceName).
     static format::mcap::SampleChannels::Device channelsOf(const CaptureHeader &header, const std::string &name = {});
 
 private:
@@ -71,4 +71,4 @@ private:
     QString m_path;
 };
 
-} // namespace imudesk::record
+} // namespace imudesk::capture

@@ -136,14 +136,14 @@ void CanFamily::feed(const QByteArray &bytes, int64_t now)
         Q_EMIT framesSeen(events);
 }
 
-void CanFamily::describeCapture(record::CaptureHeader &h) const
+void CanFamily::describeCapture(capture::CaptureHeader &h) const
 {
     const CanProtocol p = m_options.protocol == CanProtocol::Auto ? m_decoder.detected() : m_options.protocol;
-    h.set(record::CaptureHeader::kCanProtocol, protocolName(p));
+    h.set(capture::CaptureHeader::kCanProtocol, protocolName(p));
     if (m_target >= 0)
-        h.set(record::CaptureHeader::kCanNode, std::to_string(m_target));
+        h.set(capture::CaptureHeader::kCanNode, std::to_string(m_target));
     if (m_options.hec495Mode >= 0)
-        h.set(record::CaptureHeader::kCanHec495Mode, std::to_string(m_options.hec495Mode));
+        h.set(capture::CaptureHeader::kCanHec495Mode, std::to_string(m_options.hec495Mode));
 }
 
 void CanFamily::handleFrame(const CanFrame &f, qint64 now, std::vector<model::Sample> &batch)

@@ -43,7 +43,7 @@ public:
     void cancelScan();
 
     QString linkKind() const override { return QStringLiteral("CAN"); }
-    void describeCapture(record::CaptureHeader &h) const override;
+    void describeCapture(capture::CaptureHeader &h) const override;
     int firstBaud(int requestedBaud) const override { return requestedBaud; }
     void opened(int requestedBaud) override;
     void stopping() override;

@@ -98,12 +98,12 @@ QString CanSession::linkKind() const
     return tr("CAN");
 }
 
-void CanSession::describeLink(record::CaptureHeader &header) const
+void CanSession::describeLink(capture::CaptureHeader &header) const
 {
     if (protocol() == CanProtocol::Auto)
         return;
-    header.set(record::CaptureHeader::kCanProtocol, ::imudesk::protocol::can::protocolName(protocol()));
-    header.set(record::CaptureHeader::kCanNode, std::to_string(node()));
+    header.set(capture::CaptureHeader::kCanProtocol, ::imudesk::protocol::can::protocolName(protocol()));
+    header.set(capture::CaptureHeader::kCanNode, std::to_string(node()));
 }
 
 uint8_t CanSession::node() const

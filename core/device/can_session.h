@@ -35,7 +35,7 @@ public:
 
     void open(const CanSessionOptions &options);
     QString linkKind() const override;
-    void describeLink(record::CaptureHeader &header) const override;
+    void describeLink(capture::CaptureHeader &header) const override;
     // Frames, not bytes: the CAN monitor shows them (no raw bytes).
     Capabilities capabilities() const override { return {}; }
 

@@ -15,7 +15,7 @@
 #include <atomic>
 #include <memory>
 
-namespace imudesk::record {
+namespace imudesk::capture {
 class CaptureHeader;
 }
 
@@ -46,7 +46,7 @@ public:
     virtual bool isLive() const { return true; }
     // Adds what names the device on its link beyond its identity to a header that names it
     // (capture/device_name.h): a CAN link's protocol and node. Nothing for the others.
-    virtual void describeLink(record::CaptureHeader &) const {}
+    virtual void describeLink(capture::CaptureHeader &) const {}
 
     // Capability::TextCommands: a command as a person typed it (the console); the reply comes
     // in textReplied(id, ...). 0 when this link takes no text. The only place where command text

@@ -18,7 +18,7 @@
 
 #include <cstdint>
 
-namespace imudesk::record {
+namespace imudesk::capture {
 class CaptureHeader;
 }
 
@@ -66,7 +66,7 @@ public:
     virtual void statsTick() {}
     // What a recording's header should say for its bytes to be decoded offline as live (the
     // CAN protocol and node followed); the engine writes the identity and the link itself.
-    virtual void describeCapture(record::CaptureHeader &) const {}
+    virtual void describeCapture(capture::CaptureHeader &) const {}
 
     // --- Requests
     // Before a request joins the queue: encode what the engine cannot (r.wire from r.command).

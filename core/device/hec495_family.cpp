@@ -308,7 +308,7 @@ void Hec495Family::handleText(int64_t nowNs)
 {
     namespace nmea = protocol::nmea;
     // The bytes that belong to no frame: NMEA output, or noise. The same demultiplexer as a
-    // replay's (record::CaptureDecoder) splits them into sentences, so both see the same ones.
+    // replay's (capture::CaptureDecoder) splits them into sentences, so both see the same ones.
     const std::string text = m_decoder.takeSkipped();
     if (text.empty())
         return;

@@ -29,7 +29,7 @@ public:
     explicit Hec495Session(QObject *parent = nullptr, std::unique_ptr<io::Transport> transport = nullptr);
 
     // The wire both ways, and captures of what the compass sends (replayed and exported through
-    // record::CaptureDecoder's HEC495 path).
+    // capture::CaptureDecoder's HEC495 path).
     Capabilities capabilities() const override { return Capability::Recording | Capability::RawBytes; }
 
     // baud 0: try 9600, 115200, 19200, 4800, 2400. address: the module's (default 0).

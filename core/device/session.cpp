@@ -81,8 +81,8 @@ void Session::setAutoReconnect(bool on)
     jobs::postTo(m_engine, [e = m_engine, on] { e->setAutoReconnect(on); });
 }
 
-void Session::startRecording(const QString &path, const record::CaptureHeader &header,
-                             const record::CaptureWriter::Options &options)
+void Session::startRecording(const QString &path, const capture::CaptureHeader &header,
+                             const capture::CaptureWriter::Options &options)
 {
     jobs::postTo(m_engine, [e = m_engine, path, header, options] { e->startRecording(path, header, options); });
 }

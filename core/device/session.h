@@ -50,8 +50,8 @@ public:
     // format") until stopRecording(), close() or a write error: recordingStarted(path), then
     // recordingProgress every 500 ms and recordingStopped(reason) (empty reason: as asked).
     // header adds entries (e.g. config.* from LOG COMCONFIG) to the identity, port and baud.
-    void startRecording(const QString &path, const record::CaptureHeader &header = {},
-                        const record::CaptureWriter::Options &options = {});
+    void startRecording(const QString &path, const capture::CaptureHeader &header = {},
+                        const capture::CaptureWriter::Options &options = {});
     void stopRecording();
 
     // Raw bytes of the link, both directions (bounded).

@@ -472,31 +472,31 @@ void SessionEngine::publishStats()
 // ---------------------------------------------------------------------------------------
 // Recording
 
-void SessionEngine::startRecording(const QString &path, const record::CaptureHeader &header,
-                                   const record::CaptureWriter::Options &options)
+void SessionEngine::startRecording(const QString &path, const capture::CaptureHeader &header,
+                                   const capture::CaptureWriter::Options &options)
 {
     if (m_recorder || m_mcap)
         finishRecording(QString());
     if (!m_transport)
         return;
-    record::CaptureHeader h;
+    capture::CaptureHeader h;
     h.setIdentity(m_identity);
-    h.set(record::CaptureHeader::kLinkKind, m_family->linkKind().toStdString());
-    h.set(record::CaptureHeader::kPort, m_transport->address().toStdString());
-    h.set(record::CaptureHeader::kBaud, std::to_string(m_transport->baud()));
-    h.set(record::CaptureHeader::kStartedUtc,
+    h.set(capture::CaptureHeader::kLinkKind, m_family->linkKind().toStdString());
+    h.set(capture::CaptureHeader::kPort, m_transport->address().toStdString());
+    h.set(capture::CaptureHeader::kBaud, std::to_string(m_transport->baud()));
+    h.set(capture::CaptureHeader::kStartedUtc,
           QDateTime::currentDateTimeUtc().toString(Qt::ISODateWithMs).toStdString());
-    h.set(record::CaptureHeader::kIdleMarkers, "1");
-    h.set(record::CaptureHeader::kApplication,
+    h.set(capture::CaptureHeader::kIdleMarkers, "1");
+    h.set(capture::CaptureHeader::kApplication,
           (QCoreApplication::applicationName() + QLatin1Char(' ') + QCoreApplication::applicationVersion())
               .trimmed()
               .toStdString());
     m_family->describeCapture(h);
     for (const auto &[k, v] : header.values)
         h.set(k, v);
-    if (record::McapRecording::isMcapPath(path)) {
+    if (capture::McapRecording::isMcapPath(path)) {
         // MCAP: the decoded samples, as the tools of the field open them (capture/mcap_recording.h).
-        auto mcap = std::make_unique<record::McapRecording>();
+        auto mcap = std::make_unique<capture::McapRecording>();
         const int64_t epochOffsetNs = QDateTime::currentMSecsSinceEpoch() * 1'000'000 - hostNowNs();
         QString error;
         if (!mcap->start(path, h, epochOffsetNs, &error)) {
@@ -508,7 +508,7 @@ void SessionEngine::startRecording(const QString &path, const record::CaptureHea
         Q_EMIT recordingStarted(path);
         return;
     }
-    auto writer = std::make_unique<record::CaptureWriter>();
+    auto writer = std::make_unique<capture::CaptureWriter>();
     writer->setStoppedHandler([this](const QString &reason) {
         QMetaObject::invokeMethod(this, [this, reason] { finishRecording(reason); }, Qt::QueuedConnection);
     });
@@ -519,7 +519,7 @@ void SessionEngine::startRecording(const QString &path, const record::CaptureHea
         return;
     }
     m_recorder = std::move(writer);
-    m_recordedDecoder = record::CaptureDecoder{};
+    m_recordedDecoder = capture::CaptureDecoder{};
     m_recordedDecoder.configure(h);
     Q_EMIT recordingStarted(path);
 }

@@ -25,7 +25,7 @@
 #include <optional>
 #include <vector>
 
-namespace imudesk::record {
+namespace imudesk::capture {
 class McapRecording;
 }
 
@@ -79,8 +79,8 @@ public Q_SLOTS:
     void open(const QString &address, int baud);
     void close();
     void setAutoReconnect(bool on);
-    void startRecording(const QString &path, const imudesk::record::CaptureHeader &header,
-                        const imudesk::record::CaptureWriter::Options &options);
+    void startRecording(const QString &path, const imudesk::capture::CaptureHeader &header,
+                        const imudesk::capture::CaptureWriter::Options &options);
     void stopRecording();
     void publishStats();
 
@@ -140,16 +140,16 @@ private:
 
     Reconnector m_reconnector;
 
-    std::unique_ptr<record::CaptureWriter> m_recorder;
-    std::unique_ptr<record::McapRecording> m_mcap; // a recording to .mcap: samples, not bytes
+    std::unique_ptr<capture::CaptureWriter> m_recorder;
+    std::unique_ptr<capture::McapRecording> m_mcap; // a recording to .mcap: samples, not bytes
     // The recording's frames are counted from the bytes written to it, decoded as an export
     // or a replay will decode the file: a frame whose first bytes arrived before Record was
     // pressed is decoded by the session but is not in the file, so the session's own frame
     // counter would count one frame more than the file holds.
-    struct NoSink : record::CaptureDecoder::Sink {
+    struct NoSink : capture::CaptureDecoder::Sink {
         void onPacket(const protocol::hipnuc::Packet &, int64_t) override {}
     };
-    record::CaptureDecoder m_recordedDecoder;
+    capture::CaptureDecoder m_recordedDecoder;
     NoSink m_noSink;
 };
 

@@ -56,7 +56,7 @@ int tagOf(const hp::Packet &p)
     }
 }
 
-class ExportSink : public CaptureDecoder::Sink {
+class ExportSink : public capture::CaptureDecoder::Sink {
 public:
     ExportSink(const CaptureExporter::Options &o, CaptureExporter::Result &r) : m_o(o), m_r(r)
     {
@@ -64,8 +64,8 @@ public:
 
     int64_t firstNs = 0;
     int64_t epochOffsetNs = 0; // host clock to the Unix epoch (the first chunk's two times)
-    const CaptureDecoder *decoder = nullptr;
-    const CaptureHeader *header = nullptr;
+    const capture::CaptureDecoder *decoder = nullptr;
+    const capture::CaptureHeader *header = nullptr;
     // An imported vendor CSV (CsvCaptureConverter): the chunk times are its pc_counter, written
     // back as they were, and the cells its next HI91 frame cannot give back.
     bool pcCounterIsChunkTime = false;
@@ -73,13 +73,13 @@ public:
     model::WorldFrame worldFrame = model::WorldFrame::Enu; // the capture's module (its header)
 
     // MCAP: the device's channels, its identity and configuration written first (McapRecording).
-    McapRecording *mcap()
+    capture::McapRecording *mcap()
     {
         if (m_mcap || m_failed)
             return m_mcap.get();
-        m_mcap = std::make_unique<McapRecording>();
+        m_mcap = std::make_unique<capture::McapRecording>();
         QString error;
-        if (!m_mcap->start(m_o.output, header ? *header : CaptureHeader{}, epochOffsetNs, &error)) {
+        if (!m_mcap->start(m_o.output, header ? *header : capture::CaptureHeader{}, epochOffsetNs, &error)) {
             m_r.error = error;
             m_failed = true;
             return nullptr;
@@ -101,7 +101,7 @@ public:
     {
         if (!m_mat) {
             m_mat = std::make_unique<MatExport>(firstNs, epochOffsetNs);
-            m_matDevice = m_mat->addDevice(header ? *header : CaptureHeader{});
+            m_matDevice = m_mat->addDevice(header ? *header : capture::CaptureHeader{});
         }
         if (m_matDevice < 0 || !m_mat->append(m_matDevice, s)) {
             m_failed = true;
@@ -304,7 +304,7 @@ public:
         if (m_o.format == CaptureExporter::Format::Mat) {
             if (!m_mat) { // an empty range still gives a file (with the device's struct, 0 rows)
                 m_mat = std::make_unique<MatExport>(firstNs, epochOffsetNs);
-                m_matDevice = m_mat->addDevice(header ? *header : CaptureHeader{});
+                m_matDevice = m_mat->addDevice(header ? *header : capture::CaptureHeader{});
             }
             if (m_failed)
                 return false;
@@ -362,7 +362,7 @@ private:
     std::map<QString, Output *> m_byType;
     Output *m_single = nullptr;
     bool m_failed = false;
-    std::unique_ptr<McapRecording> m_mcap;
+    std::unique_ptr<capture::McapRecording> m_mcap;
     std::unique_ptr<MatExport> m_mat;
     int m_matDevice = -1;
 };
@@ -516,7 +516,7 @@ CaptureExporter::Result CaptureExporter::run(const QString &capturePath, const O
     }
     // A capture, or a vendor CSV or raw byte dump converted to one (recognised by content).
     CaptureSource source;
-    CaptureReader reader;
+    capture::CaptureReader reader;
     if (!source.prepare(capturePath, &r.error) || !reader.open(source.capturePath(), &r.error))
         return r;
     r.notes = source.notes();
@@ -526,19 +526,19 @@ CaptureExporter::Result CaptureExporter::run(const QString &capturePath, const O
     if (sink.worldFrame == model::WorldFrame::Nwu && options.format == Format::VendorCsv)
         r.notes << tr("The module reports its attitude in North-West-Up (CONFIG IMU COORD 4); the vendor CSV's "
                       "layout has no column to say so: its angles and quaternion are NWU.");
-    CaptureDecoder decoder;
+    capture::CaptureDecoder decoder;
     decoder.configure(reader.header());
     sink.decoder = &decoder;
     sink.header = &reader.header();
-    sink.pcCounterIsChunkTime = reader.header().value(CaptureHeader::kPcCounter) == "chunk time";
-    CaptureReader::Chunk c;
-    CaptureReader::Result res;
+    sink.pcCounterIsChunkTime = reader.header().value(capture::CaptureHeader::kPcCounter) == "chunk time";
+    capture::CaptureReader::Chunk c;
+    capture::CaptureReader::Result res;
     bool first = true;
     qint64 nextReport = 0;
     const int64_t fromNs = int64_t(options.fromS * 1e9);
     const double toNs = options.toS * 1e9;
-    while ((res = reader.next(c)) == CaptureReader::Result::Chunk || res == CaptureReader::Result::Damaged) {
-        if (res == CaptureReader::Result::Damaged)
+    while ((res = reader.next(c)) == capture::CaptureReader::Result::Chunk || res == capture::CaptureReader::Result::Damaged) {
+        if (res == capture::CaptureReader::Result::Damaged)
             continue;
         if (first) {
             sink.firstNs = c.monotonicNs;
@@ -573,7 +573,7 @@ CaptureExporter::Result CaptureExporter::run(const QString &capturePath, const O
     }
     if (!sink.failed())
         decoder.finish(sink);
-    if (res == CaptureReader::Result::Truncated)
+    if (res == capture::CaptureReader::Result::Truncated)
         r.warning = reader.message();
     else if (reader.damagedChunks() > 0)
         r.warning = tr("%n damaged chunk(s) were skipped", nullptr, int(reader.damagedChunks()));

@@ -13,11 +13,11 @@ bool CaptureSampleStream::open(const QString &path, QString *error)
 const model::Sample *CaptureSampleStream::peek()
 {
     while (m_queue.empty() && !m_ended) {
-        CaptureReader::Chunk c;
-        const CaptureReader::Result r = m_reader.next(c);
-        if (r == CaptureReader::Result::Chunk) {
+        capture::CaptureReader::Chunk c;
+        const capture::CaptureReader::Result r = m_reader.next(c);
+        if (r == capture::CaptureReader::Result::Chunk) {
             m_decoder.feedChunk(c, *this);
-        } else if (r != CaptureReader::Result::Damaged) {
+        } else if (r != capture::CaptureReader::Result::Damaged) {
             m_decoder.finish(*this);
             m_ended = true;
         }

@@ -12,7 +12,7 @@
 
 namespace imudesk::record {
 
-class CaptureSampleStream : public CaptureDecoder::Sink {
+class CaptureSampleStream : public capture::CaptureDecoder::Sink {
 public:
     QString name;
     int64_t offsetNs = 0;  // added to every common time
@@ -20,7 +20,7 @@ public:
 
     bool open(const QString &path, QString *error);
     model::WorldFrame worldFrame() const { return m_reader.header().identity().worldFrame; }
-    const CaptureHeader &header() const { return m_reader.header(); }
+    const capture::CaptureHeader &header() const { return m_reader.header(); }
     // The next sample (nullptr at the end of the capture).
     const model::Sample *peek();
     model::Sample take();
@@ -34,8 +34,8 @@ public:
 private:
     void push(model::Sample s);
 
-    CaptureReader m_reader;
-    CaptureDecoder m_decoder;
+    capture::CaptureReader m_reader;
+    capture::CaptureDecoder m_decoder;
     std::deque<model::Sample> m_queue;
     bool m_ended = false;
 };

@@ -215,10 +215,10 @@ CaptureSource::RawResult CaptureSource::convertRawDump(const QString &rawPath, c
         r.error = tr("%1 cannot be read: %2").arg(rawPath, in.errorString());
         return r;
     }
-    CaptureHeader header;
-    header.set(CaptureHeader::kHostTime, "absent");
+    capture::CaptureHeader header;
+    header.set(capture::CaptureHeader::kHostTime, "absent");
     // No pause was recorded: like `imudesk-cli decode`, only the end of the file releases held bytes.
-    header.set(CaptureHeader::kIdleMarkers, "1");
+    header.set(capture::CaptureHeader::kIdleMarkers, "1");
     ConvertedCapture out;
     if (!out.open(capturePath, rawPath, "raw byte dump", header, &r.error))
         return r;

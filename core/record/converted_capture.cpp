@@ -7,7 +7,7 @@
 namespace imudesk::record {
 
 bool ConvertedCapture::open(const QString &path, const QString &sourcePath, const char *linkKind,
-                            const CaptureHeader &header, QString *error)
+                            const capture::CaptureHeader &header, QString *error)
 {
     m_file.setFileName(path);
     if (!m_file.open(QIODevice::WriteOnly | QIODevice::Truncate)) {
@@ -15,10 +15,10 @@ bool ConvertedCapture::open(const QString &path, const QString &sourcePath, cons
             *error = tr("Cannot write %1: %2").arg(path, m_file.errorString());
         return false;
     }
-    CaptureHeader h = header;
-    h.set(CaptureHeader::kLinkKind, linkKind);
-    h.set(CaptureHeader::kPort, QFileInfo(sourcePath).fileName().toStdString());
-    h.set(CaptureHeader::kApplication, "imudesk");
+    capture::CaptureHeader h = header;
+    h.set(capture::CaptureHeader::kLinkKind, linkKind);
+    h.set(capture::CaptureHeader::kPort, QFileInfo(sourcePath).fileName().toStdString());
+    h.set(capture::CaptureHeader::kApplication, "imudesk");
     m_buf = capture::encodeFileHeader(h);
     m_failed = false;
     return true;

@@ -15,8 +15,8 @@ CsvCaptureConverter::Result CsvCaptureConverter::convert(const QString &csvPath,
 {
     Result r;
     ConvertedCapture out;
-    CaptureHeader header;
-    header.set(CaptureHeader::kPcCounter, "chunk time");
+    capture::CaptureHeader header;
+    header.set(capture::CaptureHeader::kPcCounter, "chunk time");
     if (!out.open(capturePath, csvPath, "vendor CSV import", header, &r.error))
         return r;
     const std::vector<std::string> layout = vendor_csv::hi91Names();

@@ -28,23 +28,23 @@ FileAnalysis::Outcome FileAnalysis::run(const QString &path, const std::string &
     }
     if (kind != CaptureSource::Kind::VendorCsv) {
         const QString capturePath = kind == CaptureSource::Kind::RawDump ? source.capturePath() : path;
-        struct Sink : CaptureDecoder::Sink {
+        struct Sink : capture::CaptureDecoder::Sink {
             SampleAnalyzer *a = nullptr;
             void onPacket(const protocol::hipnuc::Packet &p, int64_t) override { a->add(protocol::hipnuc::toSample(p)); }
             void onSample(const model::Sample &s, int64_t) override { a->add(s); }
         } sink;
         sink.a = &analyzer;
-        CaptureReader reader;
+        capture::CaptureReader reader;
         if (!reader.open(capturePath, &o.error))
             return o;
         const double total = double(std::max<qint64>(reader.size(), 1));
-        CaptureDecoder decoder;
+        capture::CaptureDecoder decoder;
         decoder.configure(reader.header());
-        CaptureReader::Chunk c;
-        CaptureReader::Result r;
+        capture::CaptureReader::Chunk c;
+        capture::CaptureReader::Result r;
         qint64 nextReport = 0;
-        while ((r = reader.next(c)) == CaptureReader::Result::Chunk || r == CaptureReader::Result::Damaged) {
-            if (r == CaptureReader::Result::Chunk)
+        while ((r = reader.next(c)) == capture::CaptureReader::Result::Chunk || r == capture::CaptureReader::Result::Damaged) {
+            if (r == capture::CaptureReader::Result::Chunk)
                 decoder.feedChunk(c, sink);
             if (progress && reader.position() >= nextReport) {
                 nextReport = reader.position() + (1 << 20);
@@ -56,7 +56,7 @@ FileAnalysis::Outcome FileAnalysis::run(const QString &path, const std::string &
             }
         }
         decoder.finish(sink);
-        if (r == CaptureReader::Result::Truncated)
+        if (r == capture::CaptureReader::Result::Truncated)
             o.warnings << reader.message();
         if (reader.damagedChunks() > 0)
             o.warnings << tr("%n damaged chunk(s) were skipped", nullptr, int(reader.damagedChunks()));

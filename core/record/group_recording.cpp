@@ -61,12 +61,12 @@ bool GroupRecording::start(const QString &folder, const std::vector<Member> &mem
     for (size_t i = 0; i < members.size(); ++i) {
         const Member &m = members[i];
         const int index = int(i);
-        record::CaptureHeader header;
+        capture::CaptureHeader header;
         header.setIdentity(m.identity);
         if (m.session)
             m.session->describeLink(header);
         const std::string name = format::mcap::SampleChannels::uniqueName(
-            record::deviceName(header, m.label.toStdString()), [&names](const std::string &n) { return names.count(n) > 0; });
+            capture::deviceName(header, m.label.toStdString()), [&names](const std::string &n) { return names.count(n) > 0; });
         names.insert(name);
         record::SessionManifest::Device d;
         d.name = QString::fromStdString(name);

@@ -25,7 +25,7 @@ public:
     struct Member {
         Session *session = nullptr;
         QString label;   // a label the user set, or empty; the file and the manifest name the
-                         // device by record::deviceName (its serial, else family and address)
+                         // device by capture::deviceName (its serial, else family and address)
         QString address; // the link as the user gave it
         model::DeviceIdentity identity;
     };

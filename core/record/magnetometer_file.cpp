@@ -43,10 +43,10 @@ Result readCapture(const QString &path)
         return r;
     r.kind = QString::fromLatin1(CaptureSource::kindName(source.kind()));
     r.notes << source.notes();
-    CaptureReader reader;
+    capture::CaptureReader reader;
     if (!reader.open(source.capturePath(), &r.error))
         return r;
-    struct Sink : CaptureDecoder::Sink {
+    struct Sink : capture::CaptureDecoder::Sink {
         Result *r = nullptr;
         std::string type;    // the frame type read: the first with a magnetometer
         uint64_t others = 0; // samples of that type without one
@@ -66,15 +66,15 @@ Result readCapture(const QString &path)
         void onSample(const model::Sample &s, int64_t) override { take(s); }
     } sink;
     sink.r = &r;
-    CaptureDecoder decoder;
+    capture::CaptureDecoder decoder;
     decoder.configure(reader.header());
-    CaptureReader::Chunk c;
-    CaptureReader::Result res;
-    while ((res = reader.next(c)) == CaptureReader::Result::Chunk || res == CaptureReader::Result::Damaged)
-        if (res == CaptureReader::Result::Chunk)
+    capture::CaptureReader::Chunk c;
+    capture::CaptureReader::Result res;
+    while ((res = reader.next(c)) == capture::CaptureReader::Result::Chunk || res == capture::CaptureReader::Result::Damaged)
+        if (res == capture::CaptureReader::Result::Chunk)
             decoder.feedChunk(c, sink);
     decoder.finish(sink);
-    if (res == CaptureReader::Result::Truncated)
+    if (res == capture::CaptureReader::Result::Truncated)
         r.notes << reader.message();
     if (r.samples.empty()) {
         r.error = MagnetometerFile::tr("%1 holds no magnetometer samples in µT (a %2): record the module's output "

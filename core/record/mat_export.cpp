@@ -42,9 +42,9 @@ MatExport::MatExport(int64_t originNs, int64_t epochOffsetNs)
 {
 }
 
-int MatExport::addDevice(const CaptureHeader &header, const std::string &label)
+int MatExport::addDevice(const capture::CaptureHeader &header, const std::string &label)
 {
-    std::map<std::string, std::string> info = McapRecording::deviceMetadata(header);
+    std::map<std::string, std::string> info = capture::McapRecording::deviceMetadata(header);
     if (m_epochOffsetNs != 0) {
         const int64_t originUnixNs = m_originNs + m_epochOffsetNs;
         info["time_origin_unix_ns"] = std::to_string(originUnixNs);

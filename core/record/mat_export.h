@@ -29,9 +29,9 @@ public:
     // originNs: the host time the three time vectors count from; epochOffsetNs: host clock to
     // the Unix epoch (0: unknown).
     MatExport(int64_t originNs, int64_t epochOffsetNs);
-    // A device's struct, named record::matlabDeviceName(header, label) ("SN_0042"; _2, _3, ...
+    // A device's struct, named capture::matlabDeviceName(header, label) ("SN_0042"; _2, _3, ...
     // when another has that name); -1 when it cannot be made (error()).
-    int addDevice(const CaptureHeader &header, const std::string &label = {});
+    int addDevice(const capture::CaptureHeader &header, const std::string &label = {});
     bool append(int device, const model::Sample &s);
     // Writes the file; false with error() (the file is not left behind).
     bool write(const QString &path);

@@ -18,7 +18,7 @@ bool McapGroupRecording::start(const QString &path, std::vector<Member> members,
 {
     stop();
     m_members = std::move(members);
-    std::vector<McapRecording::Device> devices;
+    std::vector<capture::McapRecording::Device> devices;
     for (const Member &m : m_members)
         devices.push_back({m.header, m.label});
     const int64_t epochOffsetNs = QDateTime::currentMSecsSinceEpoch() * 1'000'000 - clock::hostNowNs();
@@ -47,7 +47,7 @@ void McapGroupRecording::drain()
         for (const model::Sample &s : batch) {
             if (!m_recording.append(i, s)) {
                 std::lock_guard lock(m_errorMutex);
-                m_error = QCoreApplication::translate("McapRecording", "Recording to %1 stopped: %2. Check the free disk space.")
+                m_error = QCoreApplication::translate("capture::McapRecording", "Recording to %1 stopped: %2. Check the free disk space.")
                               .arg(m_recording.path(), m_recording.error());
                 m_stop = true;
                 return;

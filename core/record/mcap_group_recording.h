@@ -23,8 +23,8 @@ class McapGroupRecording {
 public:
     struct Member {
         std::shared_ptr<device::SampleStore> store;
-        CaptureHeader header;
-        std::string label; // a label the user set, or empty (its name: record::deviceName)
+        capture::CaptureHeader header;
+        std::string label; // a label the user set, or empty (its name: capture::deviceName)
     };
 
     McapGroupRecording() = default;
@@ -48,7 +48,7 @@ private:
     void run();
     void drain();
 
-    McapRecording m_recording;
+    capture::McapRecording m_recording;
     std::vector<Member> m_members;
     std::vector<device::SampleCursor> m_cursors; // one per member
     std::vector<std::atomic<uint64_t>> m_written;

@@ -9,7 +9,7 @@ namespace imudesk::record {
 
 ReplaySession::ReplaySession(QObject *parent) : DeviceLink(parent)
 {
-    qRegisterMetaType<CaptureHeader>();
+    qRegisterMetaType<capture::CaptureHeader>();
     m_thread.setObjectName(QStringLiteral("imudesk-replay"));
     m_worker = new ReplayWorker(store());
     m_worker->moveToThread(&m_thread);

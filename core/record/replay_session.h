@@ -47,7 +47,7 @@ public:
     void setLoop(bool on);
 
 Q_SIGNALS:
-    void opened(double durationS, const imudesk::record::CaptureHeader &header);
+    void opened(double durationS, const imudesk::capture::CaptureHeader &header);
     void positionChanged(double seconds);
     void playingChanged(bool playing);
     void finished(); // reached the end (not looping)

@@ -46,12 +46,12 @@ void ReplayWorker::open(const QString &path, const ReplayTimeline &timeline)
     }
     // Index the timeline (one entry per kIndexStepNs) so that seeking reads little.
     m_index.clear();
-    CaptureReader::Chunk c;
-    CaptureReader::Result r;
+    capture::CaptureReader::Chunk c;
+    capture::CaptureReader::Result r;
     bool first = true;
     int64_t lastNs = 0;
-    while ((r = m_reader.next(c)) == CaptureReader::Result::Chunk || r == CaptureReader::Result::Damaged) {
-        if (r != CaptureReader::Result::Chunk)
+    while ((r = m_reader.next(c)) == capture::CaptureReader::Result::Chunk || r == capture::CaptureReader::Result::Damaged) {
+        if (r != capture::CaptureReader::Result::Chunk)
             continue;
         if (first) {
             // A session's capture counts from the session's start, as every other device's does
@@ -64,7 +64,7 @@ void ReplayWorker::open(const QString &path, const ReplayTimeline &timeline)
             m_index.push_back({c.offset, rel});
         lastNs = std::max(lastNs, rel);
     }
-    if (r == CaptureReader::Result::Truncated || m_reader.damagedChunks() > 0)
+    if (r == capture::CaptureReader::Result::Truncated || m_reader.damagedChunks() > 0)
         Q_EMIT errorOccurred(tr("%1: %2. Replaying what is intact.")
                                  .arg(QFileInfo(path).fileName(),
                                       m_reader.damagedChunks() > 0
@@ -165,10 +165,10 @@ void ReplayWorker::seekTo(int64_t relNs)
     m_reader.seek(it == m_index.begin() ? m_reader.dataStart() : std::prev(it)->offset);
     m_decoder.reset();
     m_gaps.resetTiming();
-    CaptureReader::Chunk c;
-    CaptureReader::Result r;
-    while ((r = m_reader.next(c)) == CaptureReader::Result::Chunk || r == CaptureReader::Result::Damaged) {
-        if (r == CaptureReader::Result::Chunk && c.monotonicNs - m_firstNs >= relNs) {
+    capture::CaptureReader::Chunk c;
+    capture::CaptureReader::Result r;
+    while ((r = m_reader.next(c)) == capture::CaptureReader::Result::Chunk || r == capture::CaptureReader::Result::Damaged) {
+        if (r == capture::CaptureReader::Result::Chunk && c.monotonicNs - m_firstNs >= relNs) {
             m_reader.seek(c.offset);
             break;
         }
@@ -185,15 +185,15 @@ void ReplayWorker::tick()
     busy.start();
     const int64_t target = m_speed > 0 ? m_anchorNs + int64_t(double(m_wall.nsecsElapsed()) * m_speed)
                                        : std::numeric_limits<int64_t>::max();
-    CaptureReader::Chunk c;
+    capture::CaptureReader::Chunk c;
     bool atEnd = false;
     for (;;) {
         if (m_speed <= 0 && busy.elapsed() >= kMaxBusyMs)
             break;
-        const CaptureReader::Result r = m_reader.next(c);
-        if (r == CaptureReader::Result::Damaged)
+        const capture::CaptureReader::Result r = m_reader.next(c);
+        if (r == capture::CaptureReader::Result::Damaged)
             continue;
-        if (r != CaptureReader::Result::Chunk) {
+        if (r != capture::CaptureReader::Result::Chunk) {
             atEnd = true;
             break;
         }

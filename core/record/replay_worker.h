@@ -18,7 +18,7 @@
 
 namespace imudesk::record {
 
-class ReplayWorker : public QObject, private CaptureDecoder::Sink {
+class ReplayWorker : public QObject, private capture::CaptureDecoder::Sink {
     Q_OBJECT
 public:
     explicit ReplayWorker(device::SampleStore &store, QObject *parent = nullptr);
@@ -36,7 +36,7 @@ public Q_SLOTS:
 Q_SIGNALS:
     void stateChanged(imudesk::device::SessionState state, const QString &detail);
     void identityChanged(const imudesk::model::DeviceIdentity &identity);
-    void opened(double durationS, const imudesk::record::CaptureHeader &header);
+    void opened(double durationS, const imudesk::capture::CaptureHeader &header);
     void positionChanged(double seconds);
     void playingChanged(bool playing);
     void finished();
@@ -62,8 +62,8 @@ private:
 
     device::SampleStore &m_store;
     CaptureSource m_source; // owns a converted vendor CSV or raw dump while it plays
-    CaptureReader m_reader;
-    CaptureDecoder m_decoder;
+    capture::CaptureReader m_reader;
+    capture::CaptureDecoder m_decoder;
     device::FrameGapCounter m_gaps;
     std::vector<model::Sample> m_batch;
     std::vector<IndexEntry> m_index;

@@ -95,29 +95,29 @@ void writeMcap(const QString &folder, const SessionManifest &manifest,
     const int64_t epochOffsetNs =
         started.isValid() && manifest.startedHostNs != 0 ? started.toMSecsSinceEpoch() * 1'000'000 - manifest.startedHostNs : 0;
     fm::McapWriter w;
-    if (!w.open(o.output, McapRecording::writerOptions())) {
+    if (!w.open(o.output, capture::McapRecording::writerOptions())) {
         r.error = SessionExporter::tr("Cannot write %1: %2").arg(o.output, w.error());
         return;
     }
     const uint64_t now = uint64_t(QDateTime::currentMSecsSinceEpoch()) * 1'000'000u;
     w.addMetadata("session", {{"started_utc", manifest.startedUtc.toStdString()},
                               {"devices", std::to_string(streams.size())}});
-    w.addMetadata("time", McapRecording::timeMetadata());
+    w.addMetadata("time", capture::McapRecording::timeMetadata());
     QFile json(QDir(folder).filePath(QLatin1String(SessionManifest::kFileName)));
     if (json.open(QIODevice::ReadOnly))
         w.attach("session.json", "application/json", json.readAll().toStdString(), now, now);
     std::vector<std::unique_ptr<fm::SampleChannels>> channels;
     std::set<std::string> names;
     for (size_t i = 0; i < streams.size(); ++i) {
-        const CaptureHeader &h = streams[i]->header();
+        const capture::CaptureHeader &h = streams[i]->header();
         // The manifest's name is the label (an older session's names its port): the device's
         // own name first (capture/device_name.h), _2 for a second of the same.
         const std::string name = fm::SampleChannels::uniqueName(deviceName(h, manifest.devices[i].name.toStdString()),
                                                                 [&names](const std::string &n) { return names.count(n) > 0; });
         names.insert(name);
-        const fm::SampleChannels::Device d = McapRecording::channelsOf(h, name);
+        const fm::SampleChannels::Device d = capture::McapRecording::channelsOf(h, name);
         w.addMetadata("device " + d.name, d.metadata);
-        if (const std::string config = McapRecording::configurationJson(h); !config.empty())
+        if (const std::string config = capture::McapRecording::configurationJson(h); !config.empty())
             w.attach(d.name + "/configuration.json", "application/json", config, now, now);
         channels.push_back(std::make_unique<fm::SampleChannels>(w, d));
     }
@@ -153,7 +153,7 @@ void writeMat(const SessionManifest &manifest, std::vector<std::unique_ptr<Captu
     MatExport mat(manifest.startedHostNs, epochOffsetNs);
     std::vector<int> structs;
     for (size_t i = 0; i < streams.size(); ++i) {
-        const CaptureHeader &h = streams[i]->header();
+        const capture::CaptureHeader &h = streams[i]->header();
         const int index = mat.addDevice(h, manifest.devices[i].name.toStdString());
         if (index < 0) {
             r.error = mat.error();

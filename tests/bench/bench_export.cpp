@@ -45,7 +45,7 @@ long peakRssKb()
 }
 
 // The reference: decode, then printf-style formatting of every field, one row per frame.
-struct ReferenceSink : record::CaptureDecoder::Sink {
+struct ReferenceSink : capture::CaptureDecoder::Sink {
     FILE *out = nullptr;
     int64_t firstNs = 0;
     uint64_t rows = 0;
@@ -71,7 +71,7 @@ double referenceExport(const QString &capture, const QString &output, uint64_t *
 {
     QElapsedTimer t;
     t.start();
-    record::CaptureReader reader;
+    capture::CaptureReader reader;
     QString error;
     if (!reader.open(capture, &error))
         return -1;
@@ -80,10 +80,10 @@ double referenceExport(const QString &capture, const QString &output, uint64_t *
     if (!sink.out)
         return -1;
     std::fputs("HI91,pc_counter,sys_time,...\n", sink.out);
-    record::CaptureDecoder decoder;
-    record::CaptureReader::Chunk c;
+    capture::CaptureDecoder decoder;
+    capture::CaptureReader::Chunk c;
     bool first = true;
-    while (reader.next(c) == record::CaptureReader::Result::Chunk) {
+    while (reader.next(c) == capture::CaptureReader::Result::Chunk) {
         if (first) {
             sink.firstNs = c.monotonicNs;
             first = false;

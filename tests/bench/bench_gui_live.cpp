@@ -586,14 +586,14 @@ int main(int argc, char **argv)
         for (const auto &d : group->manifest().devices) {
             recordedFrames += d.frames;
             recordedBytes += d.bytes;
-            record::CaptureReader reader;
+            capture::CaptureReader reader;
             QString why;
             bool ok = captureIntact && reader.open(QDir(folder).filePath(d.file), &why);
-            record::CaptureReader::Chunk chunk;
-            record::CaptureReader::Result r = record::CaptureReader::Result::Error;
-            while (ok && (r = reader.next(chunk)) == record::CaptureReader::Result::Chunk)
+            capture::CaptureReader::Chunk chunk;
+            capture::CaptureReader::Result r = capture::CaptureReader::Result::Error;
+            while (ok && (r = reader.next(chunk)) == capture::CaptureReader::Result::Chunk)
                 captureBytes += chunk.size;
-            captureIntact = ok && r == record::CaptureReader::Result::End && !d.droppedOut();
+            captureIntact = ok && r == capture::CaptureReader::Result::End && !d.droppedOut();
         }
         // The export aligned on the common time carries all three times.
         record::SessionExporter::Options eo;
@@ -619,14 +619,14 @@ int main(int argc, char **argv)
         session.stopRecording();
         for (int waited = 0; !recordStopped && waited < 10000; waited += 50)
             spin(50);
-        record::CaptureReader reader;
+        capture::CaptureReader reader;
         QString why;
         captureIntact = recordStopped && recordStop.isEmpty() && reader.open(capturePath, &why);
-        record::CaptureReader::Chunk chunk;
-        record::CaptureReader::Result r = record::CaptureReader::Result::Error;
-        while (captureIntact && (r = reader.next(chunk)) == record::CaptureReader::Result::Chunk)
+        capture::CaptureReader::Chunk chunk;
+        capture::CaptureReader::Result r = capture::CaptureReader::Result::Error;
+        while (captureIntact && (r = reader.next(chunk)) == capture::CaptureReader::Result::Chunk)
             captureBytes += chunk.size;
-        captureIntact = captureIntact && r == record::CaptureReader::Result::End;
+        captureIntact = captureIntact && r == capture::CaptureReader::Result::End;
     }
     uint64_t queued1 = 0, uartDrops1 = 0;
     counters(ws, queued1, uartDrops1);

@@ -29,7 +29,7 @@ namespace {
 
 // Frames and the 1 ms slots their system_time spans (a stamp may sit a slot early or late:
 // the deficit over the whole run is what was lost).
-struct Counter : record::CaptureDecoder::Sink {
+struct Counter : capture::CaptureDecoder::Sink {
     uint64_t frames = 0, gaps = 0;
     bool have = false;
     uint32_t first = 0, last = 0;
@@ -119,16 +119,16 @@ int main(int argc, char **argv)
     dropped += simulator.stats().chunksDropped - stalledBefore;
     session.close();
 
-    record::CaptureReader reader;
+    capture::CaptureReader reader;
     if (!reader.open(path, &error)) {
         std::fprintf(stderr, "bench_record: %s\n", qPrintable(error));
         return 1;
     }
     Counter counter;
-    record::CaptureDecoder decoder;
+    capture::CaptureDecoder decoder;
     decoder.configure(reader.header());
-    record::CaptureReader::Chunk c;
-    while (reader.next(c) == record::CaptureReader::Result::Chunk)
+    capture::CaptureReader::Chunk c;
+    while (reader.next(c) == capture::CaptureReader::Result::Chunk)
         decoder.feedChunk(c, counter);
     decoder.finish(counter);
     const qint64 size = QFile(path).size();

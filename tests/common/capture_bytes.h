@@ -10,14 +10,14 @@ namespace imudesk::test {
 
 inline QByteArray receivedBytes(const QString &capturePath)
 {
-    record::CaptureReader reader;
+    capture::CaptureReader reader;
     QString error;
     QByteArray raw;
     if (!reader.open(capturePath, &error))
         return raw;
-    record::CaptureReader::Chunk c;
-    while (reader.next(c) == record::CaptureReader::Result::Chunk)
-        if (c.kind == record::capture::ChunkReceived)
+    capture::CaptureReader::Chunk c;
+    while (reader.next(c) == capture::CaptureReader::Result::Chunk)
+        if (c.kind == capture::ChunkReceived)
             raw.append(reinterpret_cast<const char *>(c.data), qsizetype(c.size));
     return raw;
 }

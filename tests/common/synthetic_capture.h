@@ -52,15 +52,15 @@ inline imudesk::protocol::hipnuc::Hi91 hi91(uint64_t i, std::mt19937 &rng, doubl
 inline qint64 writeCapture(const QString &path, const CaptureSpec &spec)
 {
     namespace hp = imudesk::protocol::hipnuc;
-    namespace cap = imudesk::record::capture;
+    namespace cap = imudesk::capture;
     QFile f(path);
     if (!f.open(QIODevice::WriteOnly | QIODevice::Truncate))
         return 0;
-    imudesk::record::CaptureHeader header;
-    header.set(imudesk::record::CaptureHeader::kProduct, "HI14R3");
-    header.set(imudesk::record::CaptureHeader::kBaud, "921600");
+    imudesk::capture::CaptureHeader header;
+    header.set(imudesk::capture::CaptureHeader::kProduct, "HI14R3");
+    header.set(imudesk::capture::CaptureHeader::kBaud, "921600");
     if (!spec.serial.empty())
-        header.set(imudesk::record::CaptureHeader::kSerial, spec.serial);
+        header.set(imudesk::capture::CaptureHeader::kSerial, spec.serial);
     header.setConfig(spec.config);
     auto bytes = cap::encodeFileHeader(header);
     f.write(reinterpret_cast<const char *>(bytes.data()), qint64(bytes.size()));

@@ -25,7 +25,8 @@
         }                                                                                          \
     } while (0)
 
-using namespace imudesk::record;
+using namespace imudesk::capture;
+using namespace imudesk;
 
 namespace {
 struct CountingSink : CaptureDecoder::Sink {

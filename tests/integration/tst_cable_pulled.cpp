@@ -168,16 +168,16 @@ private Q_SLOTS:
         checkStalls(stalls, "mid-recording");
 
         // The file is whole: its received chunks are, byte for byte, what the device sent.
-        record::CaptureReader reader;
+        capture::CaptureReader reader;
         QString error;
         QVERIFY2(reader.open(path, &error), qPrintable(error));
         std::vector<uint8_t> received;
-        record::CaptureReader::Chunk c;
-        record::CaptureReader::Result r;
-        while ((r = reader.next(c)) == record::CaptureReader::Result::Chunk)
-            if (c.kind == record::capture::ChunkReceived)
+        capture::CaptureReader::Chunk c;
+        capture::CaptureReader::Result r;
+        while ((r = reader.next(c)) == capture::CaptureReader::Result::Chunk)
+            if (c.kind == capture::ChunkReceived)
                 received.insert(received.end(), c.data, c.data + c.size);
-        QCOMPARE(int(r), int(record::CaptureReader::Result::End));
+        QCOMPARE(int(r), int(capture::CaptureReader::Result::End));
         QCOMPARE(reader.damagedChunks(), uint64_t(0));
         QCOMPARE(received.size(), all.size());
         QVERIFY(received == all);

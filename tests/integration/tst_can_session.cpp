@@ -377,20 +377,20 @@ private Q_SLOTS:
         QTRY_COMPARE(stopped.size(), 1);
         const std::vector<model::Sample> live = rig.session->store().since(fromSeq);
 
-        struct Collect : record::CaptureDecoder::Sink {
+        struct Collect : capture::CaptureDecoder::Sink {
             std::vector<model::Sample> samples;
             void onPacket(const protocol::hipnuc::Packet &, int64_t) override {}
             void onSample(const model::Sample &s, int64_t) override { samples.push_back(s); }
         } offline;
-        record::CaptureReader reader;
+        capture::CaptureReader reader;
         QString error;
         QVERIFY2(reader.open(path, &error), qPrintable(error));
-        QCOMPARE(reader.header().value(record::CaptureHeader::kLinkKind), std::string("CAN"));
-        QCOMPARE(reader.header().value(record::CaptureHeader::kCanProtocol), std::string(protocolName(CanProtocol(protocol))));
-        record::CaptureDecoder decoder;
+        QCOMPARE(reader.header().value(capture::CaptureHeader::kLinkKind), std::string("CAN"));
+        QCOMPARE(reader.header().value(capture::CaptureHeader::kCanProtocol), std::string(protocolName(CanProtocol(protocol))));
+        capture::CaptureDecoder decoder;
         decoder.configure(reader.header());
-        record::CaptureReader::Chunk c;
-        while (reader.next(c) == record::CaptureReader::Result::Chunk)
+        capture::CaptureReader::Chunk c;
+        while (reader.next(c) == capture::CaptureReader::Result::Chunk)
             decoder.feedChunk(c, offline);
         decoder.finish(offline);
         QVERIFY2(offline.samples.size() > 250, qPrintable(QString::number(offline.samples.size())));

@@ -27,16 +27,16 @@ test::CliResult run(const QStringList &args, const QString &program = QString::f
 }
 
 // Chunks of a capture and how reading ended.
-std::pair<int, record::CaptureReader::Result> chunks(const QString &path)
+std::pair<int, capture::CaptureReader::Result> chunks(const QString &path)
 {
-    record::CaptureReader r;
+    capture::CaptureReader r;
     QString error;
     if (!r.open(path, &error))
-        return {-1, record::CaptureReader::Result::Error};
-    record::CaptureReader::Chunk c;
-    record::CaptureReader::Result res;
+        return {-1, capture::CaptureReader::Result::Error};
+    capture::CaptureReader::Chunk c;
+    capture::CaptureReader::Result res;
     int n = 0;
-    while ((res = r.next(c)) == record::CaptureReader::Result::Chunk)
+    while ((res = r.next(c)) == capture::CaptureReader::Result::Chunk)
         ++n;
     return {n, res};
 }
@@ -74,7 +74,7 @@ private Q_SLOTS:
         const auto r = run({"record", m_pty, "-o", m_capture, "--duration", "2", "--baud", "921600"});
         QVERIFY2(r.code == 0, qPrintable(r.err));
         QVERIFY(r.out.contains(QStringLiteral("recorded")));
-        record::CaptureReader reader;
+        capture::CaptureReader reader;
         QString error;
         QVERIFY2(reader.open(m_capture, &error), qPrintable(error));
         QCOMPARE(reader.header().baud(), 921600);
@@ -82,7 +82,7 @@ private Q_SLOTS:
         QCOMPARE(reader.header().config().at("HI91"), std::string("ONTIME 0.01"));
         const auto [n, end] = chunks(m_capture);
         QVERIFY(n > 20);
-        QCOMPARE(end, record::CaptureReader::Result::End);
+        QCOMPARE(end, capture::CaptureReader::Result::End);
     }
 
     void exportFormats_data()
@@ -142,7 +142,7 @@ private Q_SLOTS:
         QVERIFY(r.out.contains(QStringLiteral("0 malformed lines")));
         const auto [n, end] = chunks(cap);
         QCOMPARE(n, m_rangeRows); // one chunk per row of the 1 s export
-        QCOMPARE(end, record::CaptureReader::Result::End);
+        QCOMPARE(end, capture::CaptureReader::Result::End);
         // Broken rows are reported with their line numbers and left out.
         QFile f(csv);
         QVERIFY(f.open(QIODevice::Append));
@@ -217,7 +217,7 @@ private Q_SLOTS:
         QVERIFY(QFileInfo(path).size() <= 6144);
         const auto [n, end] = chunks(path);
         QVERIFY(n > 0);
-        QCOMPARE(end, record::CaptureReader::Result::End); // the partial chunk was cut off
+        QCOMPARE(end, capture::CaptureReader::Result::End); // the partial chunk was cut off
     }
 
     // v1.7.1 4.6.7.10: a module set to CONFIG IMU COORD 4 reports its attitude in NWU. The

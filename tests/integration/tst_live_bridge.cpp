@@ -368,7 +368,7 @@ private Q_SLOTS:
         o.udpPort = receiver.localPort();
         QString error;
         QVERIFY2(bridge.start(o, &error), qPrintable(error));
-        bridge.addDevice(sim.session.sharedStore(), record::CaptureHeader{}, QStringLiteral("SN-UDP"));
+        bridge.addDevice(sim.session.sharedStore(), capture::CaptureHeader{}, QStringLiteral("SN-UDP"));
         QList<QJsonObject> got;
         connect(&receiver, &QUdpSocket::readyRead, this, [&] {
             while (receiver.hasPendingDatagrams()) {
@@ -436,7 +436,7 @@ private Q_SLOTS:
         o.clientBufferBytes = 1 << 20;
         QString error;
         QVERIFY2(bridge.start(o, &error), qPrintable(error));
-        record::CaptureHeader header;
+        capture::CaptureHeader header;
         bridge.addDevice(sim.session.sharedStore(), header, QStringLiteral("SN-HOSTILE"));
         const QUrl url(bridge.url());
         QTRY_VERIFY(bridge.stats().samples > 100);

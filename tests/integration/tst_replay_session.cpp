@@ -171,9 +171,9 @@ private Q_SLOTS:
         QCOMPARE(replay.state(), SessionState::Connected);
         m_duration = opened.at(0).at(0).toDouble();
         QVERIFY(m_duration > 1.8 && m_duration < 2.5);
-        const auto header = opened.at(0).at(1).value<record::CaptureHeader>();
+        const auto header = opened.at(0).at(1).value<capture::CaptureHeader>();
         QCOMPARE(header.baud(), 921600);
-        QCOMPARE(header.value(record::CaptureHeader::kLinkKind), std::string("HiPNUC serial"));
+        QCOMPARE(header.value(capture::CaptureHeader::kLinkKind), std::string("HiPNUC serial"));
         QCOMPARE(identity.size(), 1);
         QCOMPARE(identity.at(0).at(0).value<model::DeviceIdentity>().productName, std::string("HI14R3"));
 
@@ -282,8 +282,8 @@ private Q_SLOTS:
         QSignalSpy finished(&replay, &ReplaySession::finished);
         replay.open(dump);
         QVERIFY(opened.wait(10000));
-        const auto header = opened.at(0).at(1).value<record::CaptureHeader>();
-        QCOMPARE(header.value(record::CaptureHeader::kHostTime), std::string("absent"));
+        const auto header = opened.at(0).at(1).value<capture::CaptureHeader>();
+        QCOMPARE(header.value(capture::CaptureHeader::kHostTime), std::string("absent"));
         const double duration = opened.at(0).at(0).toDouble();
         QVERIFY2(duration > 1.5 && duration < 2.5, qPrintable(QString::number(duration))); // 2 s of device time
         replay.setSpeed(0);

@@ -101,11 +101,11 @@ private Q_SLOTS:
         QTest::mouseClick(stop, Qt::LeftButton);
         QVERIFY(stopped.wait(5000));
         QVERIFY(!c.isRecording());
-        record::CaptureReader r;
+        capture::CaptureReader r;
         QString error;
         QVERIFY2(r.open(c.currentPath(), &error), qPrintable(error));
-        record::CaptureReader::Chunk chunk;
-        QCOMPARE(r.next(chunk), record::CaptureReader::Result::Chunk);
+        capture::CaptureReader::Chunk chunk;
+        QCOMPARE(r.next(chunk), capture::CaptureReader::Result::Chunk);
     }
 
     // "Stop after": the recording ends by itself after the seconds set, says so, and the field

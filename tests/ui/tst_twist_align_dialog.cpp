@@ -90,13 +90,13 @@ struct DeviceSpec {
 quint64 writeCapture(const QString &path, const DeviceSpec &d, double durationS)
 {
     namespace hp = protocol::hipnuc;
-    namespace cap = record::capture;
+    namespace cap = capture;
     QFile f(path);
     if (!f.open(QIODevice::WriteOnly | QIODevice::Truncate))
         return 0;
-    record::CaptureHeader header;
-    header.set(record::CaptureHeader::kProduct, "HI14R3");
-    header.set(record::CaptureHeader::kBaud, "921600");
+    capture::CaptureHeader header;
+    header.set(capture::CaptureHeader::kProduct, "HI14R3");
+    header.set(capture::CaptureHeader::kBaud, "921600");
     auto bytes = cap::encodeFileHeader(header);
     f.write(reinterpret_cast<const char *>(bytes.data()), qint64(bytes.size()));
     std::mt19937 rng(d.seed);

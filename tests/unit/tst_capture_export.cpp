@@ -30,9 +30,9 @@ struct Decoded {
 // What the live decoder path makes of a capture.
 Decoded decodeCapture(const QString &path)
 {
-    struct Sink : record::CaptureDecoder::Sink {
+    struct Sink : capture::CaptureDecoder::Sink {
         Decoded d;
-        const record::CaptureDecoder *decoder = nullptr;
+        const capture::CaptureDecoder *decoder = nullptr;
         void onPacket(const protocol::hipnuc::Packet &p, int64_t hostNs) override
         {
             d.samples.push_back(protocol::hipnuc::toSample(p));
@@ -41,14 +41,14 @@ Decoded decodeCapture(const QString &path)
         }
         void onNmea(const std::string &s, int64_t) override { d.nmea.push_back(s); }
     } sink;
-    record::CaptureReader r;
+    capture::CaptureReader r;
     QString error;
     r.open(path, &error);
-    record::CaptureDecoder decoder;
+    capture::CaptureDecoder decoder;
     decoder.configure(r.header());
     sink.decoder = &decoder;
-    record::CaptureReader::Chunk c;
-    while (r.next(c) == record::CaptureReader::Result::Chunk)
+    capture::CaptureReader::Chunk c;
+    while (r.next(c) == capture::CaptureReader::Result::Chunk)
         decoder.feedChunk(c, sink);
     decoder.finish(sink);
     return sink.d;
@@ -255,19 +255,19 @@ private Q_SLOTS:
         QFETCH(bool, marker);
         QFETCH(int, gapMs);
         QFETCH(int, frames);
-        struct Sink : record::CaptureDecoder::Sink {
+        struct Sink : capture::CaptureDecoder::Sink {
             int packets = 0;
             void onPacket(const protocol::hipnuc::Packet &, int64_t) override { ++packets; }
         } sink;
-        record::CaptureHeader h;
+        capture::CaptureHeader h;
         if (markersRecorded)
-            h.set(record::CaptureHeader::kIdleMarkers, "1");
-        record::CaptureDecoder d;
+            h.set(capture::CaptureHeader::kIdleMarkers, "1");
+        capture::CaptureDecoder d;
         d.configure(h);
         std::mt19937 rng(1);
         const auto frame = protocol::hipnuc::buildFrame(protocol::hipnuc::encode(synthetic::hi91(0, rng, 100)));
-        auto chunk = [](record::capture::ChunkKind kind, int64_t ns, const uint8_t *p, size_t n) {
-            record::CaptureReader::Chunk c;
+        auto chunk = [](capture::ChunkKind kind, int64_t ns, const uint8_t *p, size_t n) {
+            capture::CaptureReader::Chunk c;
             c.kind = kind;
             c.monotonicNs = ns;
             c.data = p;
@@ -275,10 +275,10 @@ private Q_SLOTS:
             return c;
         };
         const uint8_t zero = 0;
-        d.feedChunk(chunk(record::capture::ChunkReceived, 0, frame.data(), 40), sink);
+        d.feedChunk(chunk(capture::ChunkReceived, 0, frame.data(), 40), sink);
         if (marker)
-            d.feedChunk(chunk(record::capture::ChunkLineIdle, 30'000'000, &zero, 1), sink);
-        d.feedChunk(chunk(record::capture::ChunkReceived, int64_t(gapMs) * 1'000'000, frame.data() + 40,
+            d.feedChunk(chunk(capture::ChunkLineIdle, 30'000'000, &zero, 1), sink);
+        d.feedChunk(chunk(capture::ChunkReceived, int64_t(gapMs) * 1'000'000, frame.data() + 40,
                           frame.size() - 40),
                     sink);
         QCOMPARE(sink.packets, frames);

@@ -19,7 +19,8 @@
 
 #include <sys/resource.h>
 
-using namespace imudesk::record;
+using namespace imudesk;
+using namespace imudesk::capture;
 
 namespace {
 

@@ -20,6 +20,7 @@
 
 using namespace imudesk;
 using namespace imudesk::record;
+using namespace imudesk::capture;
 namespace hp = imudesk::protocol::hipnuc;
 
 namespace {

@@ -13,6 +13,8 @@
 #include <QTest>
 
 using namespace imudesk::record;
+using namespace imudesk::capture;
+using namespace imudesk;
 
 namespace {
 

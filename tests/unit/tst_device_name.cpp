@@ -10,7 +10,7 @@
 #include <QTest>
 
 using namespace imudesk;
-using record::CaptureHeader;
+using capture::CaptureHeader;
 
 namespace {
 
@@ -29,7 +29,7 @@ CaptureHeader headerOf(const std::string &product, const std::string &serial, in
 
 std::string topicName(const CaptureHeader &h)
 {
-    return record::McapRecording::channelsOf(h).name;
+    return capture::McapRecording::channelsOf(h).name;
 }
 
 } // namespace
@@ -41,8 +41,8 @@ private Q_SLOTS:
     {
         const CaptureHeader h = headerOf("HI14R3", "0042", 1);
         QCOMPARE(topicName(h), std::string("0042"));
-        QCOMPARE(record::deviceName(h, "bench left"), std::string("0042"));
-        QCOMPARE(record::McapRecording::channelsOf(h).frameId, std::string("imu_0042"));
+        QCOMPARE(capture::deviceName(h, "bench left"), std::string("0042"));
+        QCOMPARE(capture::McapRecording::channelsOf(h).frameId, std::string("imu_0042"));
     }
 
     // Without a serial number: family and address, the same in every run.
@@ -73,18 +73,18 @@ private Q_SLOTS:
     void labelThenProduct()
     {
         const CaptureHeader h = headerOf("HI14R3", "");
-        QCOMPARE(record::deviceName(h, "left wing"), std::string("left_wing"));
-        QCOMPARE(record::deviceName(h), std::string("HI14R3"));
-        QCOMPARE(record::deviceName(CaptureHeader{}), std::string("device"));
+        QCOMPARE(capture::deviceName(h, "left wing"), std::string("left_wing"));
+        QCOMPARE(capture::deviceName(h), std::string("HI14R3"));
+        QCOMPARE(capture::deviceName(CaptureHeader{}), std::string("device"));
         QVERIFY(topicName(h).find("pts") == std::string::npos);
     }
 
     void matlabName()
     {
-        QCOMPARE(record::matlabDeviceName(headerOf("HI14R3", "0042")), std::string("SN_0042"));
-        QCOMPARE(record::matlabDeviceName(headerOf("HI14R3", "2181B60A6FDA63DF")), std::string("SN_2181B60A6FDA63DF"));
-        QCOMPARE(record::matlabDeviceName(headerOf("HI14R3", "SN-0042/a")), std::string("SN_0042_a"));
-        QCOMPARE(record::matlabDeviceName(headerOf("HEC495", "", 2)), std::string("HEC495_addr2"));
+        QCOMPARE(capture::matlabDeviceName(headerOf("HI14R3", "0042")), std::string("SN_0042"));
+        QCOMPARE(capture::matlabDeviceName(headerOf("HI14R3", "2181B60A6FDA63DF")), std::string("SN_2181B60A6FDA63DF"));
+        QCOMPARE(capture::matlabDeviceName(headerOf("HI14R3", "SN-0042/a")), std::string("SN_0042_a"));
+        QCOMPARE(capture::matlabDeviceName(headerOf("HEC495", "", 2)), std::string("HEC495_addr2"));
     }
 };
 

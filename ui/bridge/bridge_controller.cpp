@@ -56,12 +56,12 @@ void BridgeController::syncDevices()
         present.insert(store.get());
         if (m_devices.count(store.get()))
             continue;
-        // Named by record::deviceName (its serial, else family and address): never by the tab's
+        // Named by capture::deviceName (its serial, else family and address): never by the tab's
         // title, which names the port and differs per run.
-        record::CaptureHeader header;
+        capture::CaptureHeader header;
         if (shown.identity)
             header.setIdentity(*shown.identity);
-        header.set(record::CaptureHeader::kLinkKind, link.linkKind().toStdString());
+        header.set(capture::CaptureHeader::kLinkKind, link.linkKind().toStdString());
         link.describeLink(header);
         m_bridge.addDevice(store, header);
         m_devices.emplace(store.get(), std::move(store));

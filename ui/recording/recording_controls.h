@@ -6,7 +6,7 @@
 //
 // Folder ui/recording/: recording, replay and export of captures. These RecordingControls, the
 // ReplayControls and the ExportDialog. It mirrors core/record: recording goes through the
-// link's session (device::Session: its engine writes the capture with record::CaptureWriter, a
+// link's session (device::Session: its engine writes the capture with capture::CaptureWriter, a
 // HiPNUC module or an HEC495), replay drives a record::ReplaySession and export runs
 // record::CaptureExporter in a worker thread. No item models.
 #include <QString>

@@ -117,9 +117,9 @@ void ReplayControls::setSession(record::ReplaySession *session)
     updateLabel();
 }
 
-void ReplayControls::onOpened(double durationS, const record::CaptureHeader &header)
+void ReplayControls::onOpened(double durationS, const capture::CaptureHeader &header)
 {
-    m_deviceClock = header.value(record::CaptureHeader::kHostTime) == "absent";
+    m_deviceClock = header.value(capture::CaptureHeader::kHostTime) == "absent";
     m_time->setToolTip(m_deviceClock ? tr("This file is a raw byte dump: it has no arrival times, so the times come "
                                           "from the device's own clock (HI91/HI83 time stamps or NMEA UTC time).")
                                      : QString());

@@ -9,9 +9,12 @@ class QLabel;
 class QPushButton;
 class QSlider;
 
+namespace imudesk::capture {
+class CaptureHeader;
+}
+
 namespace imudesk::record {
 class ReplaySession;
-class CaptureHeader;
 }
 
 namespace imudesk::ui {
@@ -29,7 +32,7 @@ public:
     static const QList<double> &speeds();
 
 private:
-    void onOpened(double durationS, const record::CaptureHeader &header);
+    void onOpened(double durationS, const capture::CaptureHeader &header);
     void onPosition(double seconds);
     void onPlaying(bool playing);
     void seekToSlider();

@@ -167,7 +167,7 @@ void SessionRecordingWindow::start()
     std::vector<device::GroupRecording::Member> members;
     for (const Device &d : m_devices)
         if (d.session)
-            members.push_back({d.session.data(), QString(), d.address, d.identity}); // named by record::deviceName
+            members.push_back({d.session.data(), QString(), d.address, d.identity}); // named by capture::deviceName
     if (members.empty()) {
         m_status->setText(tr("No connected device can be recorded: connect the devices in their tabs first."));
         return;
