@@ -118,6 +118,28 @@ qsizetype breaksIn(const QList<QPointF> &points)
 class TstChartPanel : public QObject {
     Q_OBJECT
 private Q_SLOTS:
+    // The Euler chart's legend lists magnetic roll only once a device sends it (an HEC495's
+    // read-all record): beside a module's angles it would name a line that never comes.
+    void legendListsWhatTheDeviceSends()
+    {
+        ChartPanel panel;
+        panel.resize(1200, 900);
+        panel.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&panel));
+        ChartView *euler = panel.chart(ChartKind::Euler);
+        QCOMPARE(euler->canvas()->lineCount(), 4); // roll, pitch, yaw, magnetic roll
+        panel.refresh();
+        for (int line = 0; line < 4; ++line)
+            QVERIFY(euler->canvas()->isLineListed(line)); // nothing yet: every quantity it can show
+        feed(panel, 0, 500);
+        QVERIFY(euler->canvas()->isLineListed(0) && euler->canvas()->isLineListed(2));
+        QVERIFY(!euler->canvas()->isLineListed(3));
+        QVERIFY(euler->canvas()->legendEntryRect(3).isEmpty());
+        QVERIFY(!euler->canvas()->legendEntryRect(2).isEmpty());
+        feed(panel, 500, 600, true, kHi91Fields | model::FieldMagRoll);
+        QVERIFY(euler->canvas()->isLineListed(3));
+        QVERIFY(!euler->canvas()->legendEntryRect(3).isEmpty());
+    }
     void seriesAreDecimated()
     {
         ChartPanel panel;

@@ -551,6 +551,13 @@ bool ChartView::refresh()
             return false;
     }
 
+    // The legend lists the quantities the device sends (every one while none has come yet): an
+    // HEC495's magnetic roll has no entry beside a module's Euler angles.
+    const bool anyCarried = std::any_of(m_channels.begin(), m_channels.end(),
+                                        [this](Channel c) { return m_history->columnData(c) != nullptr; });
+    for (Channel c : m_channels)
+        m_canvas->setLineListed(m_lineOf[size_t(c)], !anyCarried || m_history->columnData(c) != nullptr);
+
     double lo = 0.0, hi = 0.0;
     bool any = false;
     for (Channel c : m_channels) {

@@ -85,6 +85,15 @@ void PlotCanvas::setLineVisible(int line, bool visible)
     update();
 }
 
+void PlotCanvas::setLineListed(int line, bool listed)
+{
+    Line &l = m_lines[size_t(line)];
+    if (l.listed == listed)
+        return;
+    l.listed = listed;
+    relayout();
+}
+
 void PlotCanvas::setLegendVisible(bool visible)
 {
     if (visible == m_legendVisible)
@@ -215,10 +224,11 @@ int PlotCanvas::legendWidth() const
     if (!m_legendVisible || m_lines.empty())
         return 0;
     const QFontMetrics fm = fontMetrics();
-    int widest = 0;
+    int widest = -1;
     for (const Line &l : m_lines)
-        widest = std::max(widest, fm.horizontalAdvance(l.name));
-    return kSwatch + kGap + widest;
+        if (l.listed)
+            widest = std::max(widest, fm.horizontalAdvance(l.name));
+    return widest < 0 ? 0 : kSwatch + kGap + widest;
 }
 
 QSize PlotCanvas::minimumSizeHint() const
@@ -250,9 +260,13 @@ void PlotCanvas::relayout()
     if (legend > 0) {
         const double x = m_card.right() - kPad - legend;
         const double entry = std::max(line, kSwatch) + 2;
-        double y = area.center().y() - entry * double(m_lines.size()) / 2.0;
-        for (size_t i = 0; i < m_lines.size(); ++i, y += entry)
-            m_legendRects[i] = QRectF(x - 2, y, legend + 4, entry);
+        const auto listed = std::count_if(m_lines.begin(), m_lines.end(), [](const Line &l) { return l.listed; });
+        double y = area.center().y() - entry * double(listed) / 2.0;
+        for (size_t i = 0; i < m_lines.size(); ++i)
+            if (m_lines[i].listed) {
+                m_legendRects[i] = QRectF(x - 2, y, legend + 4, entry);
+                y += entry;
+            }
     }
     if (area != m_area) {
         m_area = area;
@@ -453,6 +467,8 @@ void PlotCanvas::drawLegend(QPainter &p)
     for (size_t i = 0; i < m_lines.size() && i < m_legendRects.size(); ++i) {
         const Line &l = m_lines[i];
         const QRectF r = m_legendRects[i];
+        if (!l.listed || r.isEmpty())
+            continue;
         QColor swatch = l.colour, label = text;
         if (!l.visible) {
             swatch.setAlphaF(kHiddenAlpha);

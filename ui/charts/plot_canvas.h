@@ -52,6 +52,10 @@ public:
     // A hidden line keeps its legend entry, dimmed, so that a click brings it back.
     void setLineVisible(int line, bool visible);
     bool isLineVisible(int line) const { return m_lines[size_t(line)].visible; }
+    // An unlisted line has no legend entry (a quantity the device has not sent, such as an
+    // HEC495's magnetic roll beside a module's Euler angles); lines are listed by default.
+    void setLineListed(int line, bool listed);
+    bool isLineListed(int line) const { return m_lines[size_t(line)].listed; }
     void setLegendVisible(bool visible);
     bool isLegendVisible() const { return m_legendVisible; }
     // Where a line's legend entry is (widget coordinates); empty without a legend.
@@ -100,6 +104,7 @@ private:
         QString name;
         QList<QPointF> points;
         bool visible = true;
+        bool listed = true;
     };
     struct Axis {
         double min = 0.0;
