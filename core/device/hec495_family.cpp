@@ -36,19 +36,6 @@ QString commandText(const Request &r)
 
 } // namespace
 
-const char *statusName(Hec495Result::Status s)
-{
-    switch (s) {
-    case Hec495Result::Status::Ok: return "ok";
-    case Hec495Result::Status::Failed: return "failed";
-    case Hec495Result::Status::Invalid: return "invalid";
-    case Hec495Result::Status::Timeout: return "timeout";
-    case Hec495Result::Status::NotSent: return "not sent";
-    case Hec495Result::Status::Cancelled: return "cancelled";
-    }
-    return "?";
-}
-
 const std::vector<int> &Hec495Family::detectionBauds()
 {
     static const std::vector<int> bauds = {9600, 115200, 19200, 4800, 2400};

@@ -1,5 +1,6 @@
 #pragma once
 // The outcome of one request to an HEC495, as it crosses from the session's worker thread.
+#include "device/request.h"
 #include "protocol/witlink/reply.h"
 
 #include <QMetaType>
@@ -10,14 +11,10 @@
 namespace imudesk::device {
 
 struct Hec495Result {
-    enum class Status {
-        Ok,        // answered; for status replies: 00 (success)
-        Failed,    // answered FF (the device reports failure)
-        Invalid,   // answered with a reply the manual does not allow (see message)
-        Timeout,   // no reply after every attempt
-        NotSent,   // the port is not open, or writing failed
-        Cancelled, // the session was closed
-    };
+    // Every request's one shape of outcome (device/request.h). For the HEC495: Ok, answered (a
+    // status reply 00, success); Refused, answered FF (the device reports failure); Invalid, a
+    // reply the manual does not allow there (see message); Timeout, NotSent, Cancelled.
+    using Status = RequestStatus;
     Status status = Status::NotSent;
     uint8_t request = 0;   // command byte sent
     int attempts = 0;      // how many times it was sent (RS-485 retries)
@@ -26,8 +23,6 @@ struct Hec495Result {
 
     bool ok() const { return status == Status::Ok; }
 };
-
-const char *statusName(Hec495Result::Status s);
 
 } // namespace imudesk::device
 

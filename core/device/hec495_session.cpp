@@ -13,14 +13,7 @@ namespace {
 Hec495Result toResult(const RequestResult &r)
 {
     Hec495Result typed = r.reply.value<Hec495Result>();
-    switch (r.status) {
-    case RequestStatus::Ok: typed.status = Hec495Result::Status::Ok; break;
-    case RequestStatus::Refused: typed.status = Hec495Result::Status::Failed; break;
-    case RequestStatus::Invalid: typed.status = Hec495Result::Status::Invalid; break;
-    case RequestStatus::Timeout: typed.status = Hec495Result::Status::Timeout; break;
-    case RequestStatus::NotSent: typed.status = Hec495Result::Status::NotSent; break;
-    case RequestStatus::Cancelled: typed.status = Hec495Result::Status::Cancelled; break;
-    }
+    typed.status = r.status;
     typed.attempts = r.attempts;
     typed.message = r.message;
     return typed;

@@ -101,7 +101,7 @@ std::optional<Hec495Result> await(Hec495Session &s, quint64 id, int timeoutMs = 
         const quint64 id_ = (call);                                                                 \
         auto r_ = await(session, id_);                                                              \
         if (!r_ || !r_->ok())                                                                       \
-            qWarning("%s -> %s: %s", #call, r_ ? statusName(r_->status) : "no result",             \
+            qWarning("%s -> %s: %s", #call, r_ ? requestStatusName(r_->status) : "no result",             \
                      r_ ? qPrintable(r_->message) : "");                                             \
         return r_ && r_->ok() ? r_ : std::nullopt;                                                  \
     }()
@@ -468,7 +468,7 @@ private Q_SLOTS:
         // A second save without a run: the module reports failure.
         const auto again = await(s, s.saveCalibration());
         QVERIFY(again);
-        QCOMPARE(again->status, Hec495Result::Status::Failed);
+        QCOMPARE(again->status, Hec495Result::Status::Refused);
     }
 
     // The demo compass (imudesk --link hec495): polled full records, then 50 Hz angles without

@@ -232,7 +232,7 @@ private Q_SLOTS:
         QVERIFY(click(w, w.startButton()).ok());
         w.saveButton()->click();
         const auto r = click(w, w.confirmSaveButton());
-        QCOMPARE(r.status, Hec495Result::Status::Failed);
+        QCOMPARE(r.status, Hec495Result::Status::Refused);
         QCOMPARE(w.currentId(), int(Hec495CalibrationWizard::RunPage));
         QVERIFY(!w.saved());
         QVERIFY(w.errorText().startsWith(QStringLiteral("Failed")));

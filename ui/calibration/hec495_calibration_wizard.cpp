@@ -403,7 +403,7 @@ void Hec495CalibrationWizard::handleFailure(RunState state, const Hec495Result &
     case Hec495Result::Status::Invalid:
         todo = tr("The reply was not one the manual allows: check that the device is an HEC495 and try again.");
         break;
-    case Hec495Result::Status::Failed:
+    case Hec495Result::Status::Refused:
     case Hec495Result::Status::Ok:
         switch (state) {
         case RunState::Saving:
@@ -421,7 +421,7 @@ void Hec495CalibrationWizard::handleFailure(RunState state, const Hec495Result &
         }
         break;
     }
-    if (state == RunState::Starting || (state == RunState::Saving && result.status == Hec495Result::Status::Failed)
+    if (state == RunState::Starting || (state == RunState::Saving && result.status == Hec495Result::Status::Refused)
         || result.status == Hec495Result::Status::NotSent
         || result.status == Hec495Result::Status::Cancelled)
         m_running = false;
