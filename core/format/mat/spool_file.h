@@ -1,9 +1,10 @@
 #pragma once
 // The MAT writer's scratch files (mat_file.h): a struct's rows spooled block by block, then
 // gathered column by column into a data file that matio reads through a read-only mapping.
-// One platform file each: spool_file_posix.cpp (pwrite and pread, copy_file_range inside the
-// kernel where the file system has it, posix_fallocate, mmap) and spool_file_windows.cpp
-// (QFile's positioned reads and writes, resize and map, which use Win32 there).
+// Its lifetime and moves are in spool_file.cpp; the rest is one platform file each:
+// spool_file_posix.cpp (pwrite and pread, copy_file_range inside the kernel where the file
+// system has it, posix_fallocate, mmap) and spool_file_windows.cpp (QFile's positioned reads
+// and writes, resize and map, which use Win32 there).
 // Every call that fails returns why, as a sentence; an empty string is success.
 #include <QString>
 
@@ -46,7 +47,9 @@ public:
     static bool saysDiskFull(int errnoValue);
 
 private:
-    struct Impl;
+    struct Impl; // the platform's state, defined with its platform file
+    static Impl *newImpl();
+    static void deleteImpl(Impl *impl);
     Impl *m = nullptr;
     QString m_path;
 };

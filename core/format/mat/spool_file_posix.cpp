@@ -9,7 +9,6 @@
 #include <algorithm>
 #include <cerrno>
 #include <cstring>
-#include <utility>
 
 namespace imudesk::format::mat {
 
@@ -46,25 +45,9 @@ struct SpoolFile::Impl {
     bool copyRangeWorks = true; // false once copy_file_range is found unsupported
 };
 
-SpoolFile::SpoolFile() : m(new Impl) {}
+SpoolFile::Impl *SpoolFile::newImpl() { return new Impl; }
 
-SpoolFile::~SpoolFile()
-{
-    close(false);
-    delete m;
-}
-
-SpoolFile::SpoolFile(SpoolFile &&other) noexcept : m(std::exchange(other.m, new Impl)), m_path(std::move(other.m_path)) {}
-
-SpoolFile &SpoolFile::operator=(SpoolFile &&other) noexcept
-{
-    if (this != &other) {
-        close(false);
-        std::swap(m, other.m);
-        m_path = std::move(other.m_path);
-    }
-    return *this;
-}
+void SpoolFile::deleteImpl(Impl *impl) { delete impl; }
 
 QString SpoolFile::create(const QString &path, bool exclusive)
 {

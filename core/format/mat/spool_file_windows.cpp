@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cerrno>
-#include <utility>
 
 namespace imudesk::format::mat {
 
@@ -35,25 +34,9 @@ QString writeAll(QFile &file, const void *data, size_t size, uint64_t offset)
 
 } // namespace
 
-SpoolFile::SpoolFile() : m(new Impl) {}
+SpoolFile::Impl *SpoolFile::newImpl() { return new Impl; }
 
-SpoolFile::~SpoolFile()
-{
-    close(false);
-    delete m;
-}
-
-SpoolFile::SpoolFile(SpoolFile &&other) noexcept : m(std::exchange(other.m, new Impl)), m_path(std::move(other.m_path)) {}
-
-SpoolFile &SpoolFile::operator=(SpoolFile &&other) noexcept
-{
-    if (this != &other) {
-        close(false);
-        std::swap(m, other.m);
-        m_path = std::move(other.m_path);
-    }
-    return *this;
-}
+void SpoolFile::deleteImpl(Impl *impl) { delete impl; }
 
 QString SpoolFile::create(const QString &path, bool exclusive)
 {
