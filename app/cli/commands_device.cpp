@@ -363,7 +363,8 @@ int cmdSimulate(const QStringList &args)
                                    QStringLiteral("static (default), spin, tumble, turntable (still 3 s, 720 deg "
                                                   "one way at 45 deg/s, still, 720 deg back: a gyro-scale run) or twists "
                                                   "(a fixture turned sharply now and then, the same for every module "
-                                                  "simulated on this host: twist-to-align)."),
+                                                  "simulated on this host: twist-to-align) or poses (turned by hand "
+                                                  "through 12 still poses: verify)."),
                                    QStringLiteral("MOTION"), QStringLiteral("static")));
     p.addOption(QCommandLineOption(QStringLiteral("seed"), QStringLiteral("Random seed (default 1)."),
                                    QStringLiteral("N"), QStringLiteral("1")));
@@ -376,7 +377,9 @@ int cmdSimulate(const QStringList &args)
         QStringLiteral("HiPNUC on a pty: faults of this module, comma-separated: noisy-gyro[=F] (gyro noise x F, "
                        "default 20), mounting=R/P/Y or wrong-mounting (90/0/0; deg), mag-disturbance[=U] (uT, "
                        "default 40: MCAL fails), unplug=T (cable pulled T s after the start), fixture (turned "
-                       "through every attitude while an MCAL runs)."),
+                       "through every attitude while an MCAL runs), acc-bias=X/Y/Z (mg), acc-scale=X/Y/Z (%), "
+                       "acc-misalignment=YX/ZX/ZY (deg), acc-error=MG/PCT (every axis), gyro-scale=PCT or X/Y/Z (%), "
+                       "attitude-bias=R/P/H (deg, heading clockwise), filter-lag=MS (the attitude late)."),
         QStringLiteral("LIST")));
     p.addOption(QCommandLineOption(QStringLiteral("clock"),
                                    QStringLiteral("HiPNUC on a pty: the module's oscillator, PPM[,OFFSET_MS[,STEP_AT_S,STEP_MS]] "
@@ -406,7 +409,7 @@ int cmdSimulate(const QStringList &args)
                                                   "64-byte PGN 0xFF5A every 10 ms.")));
     const QString usage = QStringLiteral("imudesk-cli simulate --pty [--device hipnuc|hec495] [--model HI14] "
                                          "[--firmware 1.7.1] [--serial SN] [--baud 115200] [--address N] "
-                                         "[--motion static|spin|tumble|turntable|twists] [--pps] [--seed N] [--faults LIST] "
+                                         "[--motion static|spin|tumble|turntable|twists|poses] [--pps] [--seed N] [--faults LIST] "
                                          "[--clock PPM[,OFFSET_MS[,STEP_AT_S,STEP_MS]]] [--adapter TIMER_MS[,JITTER_US[,FIXED_US]]] "
                                          "[--sync-in HZ] "
                                          "[--flash-dump FILE] [--modbus [--id N]] | --can PLUGIN:INTERFACE [--protocol j1939|canopen] "
@@ -427,7 +430,7 @@ int cmdSimulate(const QStringList &args)
     if (p.isSet(QStringLiteral("can"))) {
         sim::Motion m = sim::Motion::Static;
         if (!sim::parseMotion(p.value(QStringLiteral("motion")).toStdString(), m))
-            return fail(QStringLiteral("--motion must be static, spin, tumble, turntable or twists"), ExitUsage);
+            return fail(QStringLiteral("--motion must be static, spin, tumble, turntable, twists or poses"), ExitUsage);
         return simulateCan(p.value(QStringLiteral("can")), p.value(QStringLiteral("protocol")), p.value(QStringLiteral("device")),
                            p.value(QStringLiteral("node")).toInt(), m, p.value(QStringLiteral("seed")).toULongLong(),
                            p.value(QStringLiteral("firmware")), p.isSet(QStringLiteral("fd")),
@@ -453,7 +456,7 @@ int cmdSimulate(const QStringList &args)
         return fail(QStringLiteral("--baud must be one of 4800 9600 19200 38400 57600 115200 230400 256000 460800 921600"),
                     ExitUsage);
     if (!sim::parseMotion(p.value(QStringLiteral("motion")).toStdString(), o.motion))
-        return fail(QStringLiteral("--motion must be static, spin, tumble, turntable or twists"), ExitUsage);
+        return fail(QStringLiteral("--motion must be static, spin, tumble, turntable, twists or poses"), ExitUsage);
     o.ppsInput = p.isSet(QStringLiteral("pps"));
     if (p.isSet(QStringLiteral("serial"))) {
         // \xNN escapes (a test's bytes that are not UTF-8), the rest as UTF-8.

@@ -89,7 +89,10 @@ HipnucSimulator::HipnucSimulator(SimOptions options)
         fw = model::FirmwareVersion{1, 7, 1};
     }
     m_firmware = *fw;
-    m_sensor.setGyroScaleError(m_options.gyroScaleError);
+    const auto &gs = m_options.faults.gyroScalePct;
+    m_sensor.setGyroScaleErrors(Eigen::Vector3d::Constant(m_options.gyroScaleError)
+                                + Eigen::Vector3d(gs[0], gs[1], gs[2]) * 0.01);
+    m_sensor.setAccError(accErrorOf(m_options.faults));
     m_sensor.setGyroNoiseFactor(m_options.faults.gyroNoiseFactor);
     const auto &mount = m_options.faults.mountingErrorDeg;
     m_mounted = mount != std::array<double, 3>{0, 0, 0};
@@ -508,8 +511,16 @@ HipnucSimulator::Snapshot HipnucSimulator::snapshotAt(int64_t t)
     s.acc = m * m_sample.acc;
     s.gyr = m * m_sample.gyr;
     s.mag = m * mag;
-    s.q = attitudeAt(t, true);
+    // The attitude the module's filter reports: late by filterLagMs, off by attitudeBiasDeg.
+    s.q = attitudeAt(t - int64_t(std::llround(m_options.faults.filterLagMs * 1000)), true);
     s.euler = eulerEnu312(s.q);
+    if (const auto &b = m_options.faults.attitudeBiasDeg; b != std::array<double, 3>{0, 0, 0}) {
+        s.euler.roll += b[0];
+        s.euler.pitch += b[1];
+        s.euler.yaw -= b[2]; // heading clockwise, yaw counter-clockwise
+        s.q = canonical(sim::quatFromEnu312(s.euler));
+        s.euler = eulerEnu312(s.q);
+    }
     s.pressurePa = m_sample.pressurePa;
     s.temperatureC = m_sample.temperatureC;
     s.mainStatus = mainStatusAt(t);

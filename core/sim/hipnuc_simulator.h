@@ -146,6 +146,17 @@ struct SimFaults {
     // line separated by "; "; Unlabelled: the values alone, on one line.
     enum class ComConfigStyle { KeyValue, Spaced, Unlabelled };
     ComConfigStyle comConfigStyle = ComConfigStyle::KeyValue;
+    // A module whose sensors and attitude are wrong (issue 55; SensorModel::AccError): the
+    // accelerometer's bias (mg), scale error (%) and misalignment (deg: y towards x, z towards x,
+    // z towards y), the gyro's scale error per axis (%, on top of SimOptions::gyroScaleError),
+    // offsets added to the attitude it reports (roll, pitch, heading clockwise; deg) and a lag
+    // of its attitude behind the motion (ms).
+    std::array<double, 3> accBiasMg{0, 0, 0};
+    std::array<double, 3> accScalePct{0, 0, 0};
+    std::array<double, 3> accMisalignmentDeg{0, 0, 0};
+    std::array<double, 3> gyroScalePct{0, 0, 0};
+    std::array<double, 3> attitudeBiasDeg{0, 0, 0};
+    double filterLagMs = 0;
 
     friend bool operator==(const SimFaults &, const SimFaults &) = default;
 };
@@ -156,12 +167,16 @@ struct SimFaults {
 //   mag-disturbance   magDisturbanceUt = kMagDisturbanceUt    mag-disturbance=U uT >= 0
 //   unplug=T          unplugAtS = T (seconds >= 0)            fixture           magCalFixture
 //   comconfig=spaced|unlabelled   comConfigStyle (LOG COMCONFIG in another format)
+//   acc-bias=X/Y/Z (mg)  acc-scale=X/Y/Z (%)  acc-misalignment=YX/ZX/ZY (deg)  acc-error=MG/PCT (all axes)
+//   gyro-scale=PCT or X/Y/Z (%)  attitude-bias=R/P/H (deg, heading clockwise)  filter-lag=MS
 // An empty text is no fault. Words not in `text` keep their value in `out`. On a word or value
 // it does not accept it returns false, and *error (if given) says which and what is accepted.
 bool parseSimFaults(std::string_view text, SimFaults &out, std::string *error = nullptr);
 // The same faults as parseSimFaults reads them back ("" when there is none), e.g.
 // "noisy-gyro=20,mounting=90/0/0,mag-disturbance=40,unplug=2.5,fixture".
 std::string simFaultsText(const SimFaults &faults);
+// The accelerometer's errors the faults give (SensorModel units: G, fractions, radians).
+SensorModel::AccError accErrorOf(const SimFaults &faults);
 
 struct SimOptions {
     std::string model = "HI14";       // product name without the hardware revision

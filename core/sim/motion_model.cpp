@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <utility>
 
@@ -85,6 +86,7 @@ const char *motionName(Motion m)
     case Motion::Tumble: return "tumble";
     case Motion::Turntable: return "turntable";
     case Motion::Twists: return "twists";
+    case Motion::Poses: return "poses";
     }
     return "?";
 }
@@ -94,7 +96,7 @@ bool parseMotion(std::string_view text, Motion &out)
     std::string t;
     for (char c : text)
         t.push_back(char(std::tolower(uint8_t(c))));
-    for (Motion m : {Motion::Static, Motion::Spin, Motion::Tumble, Motion::Turntable, Motion::Twists})
+    for (Motion m : {Motion::Static, Motion::Spin, Motion::Tumble, Motion::Turntable, Motion::Twists, Motion::Poses})
         if (t == motionName(m)) {
             out = m;
             return true;
@@ -134,6 +136,105 @@ MotionModel::MotionModel(Options options) : m_options(options)
 {
     m_headingDeg = 360.0 * unitFromSeed(options.seed, 1);
     m_phaseDeg = 360.0 * unitFromSeed(options.seed, 2);
+    if (options.motion != Motion::Poses)
+        return;
+    // The body axis that points up in each pose: the six faces, then six between them.
+    static const double kUp[kPoseCount][3] = {{0, 0, 1},  {1, 0, 0},  {0, 1, 0},   {0, 0, -1},  {-1, 0, 0}, {0, -1, 0},
+                                              {1, 1, 0},  {-1, 0, 1}, {0, 1, -1},  {1, -1, 1},  {-1, -1, -1}, {1, 0, -1}};
+    uint64_t salt = 100;
+    auto u = [&](double lo, double hi) { return lo + (hi - lo) * unitFromSeed(options.seed, salt++); };
+    auto poseAt = [&](int i) {
+        const Eigen::Vector3d up = Eigen::Vector3d(kUp[i][0], kUp[i][1], kUp[i][2]).normalized();
+        // Body to nav: the axis `up` onto the vertical, then the hand's tilt and heading.
+        const Eigen::Quaterniond base = Eigen::Quaterniond::FromTwoVectors(up, Eigen::Vector3d::UnitZ());
+        const Eigen::Quaterniond tilt = axisAngle(u(-10, 10), Eigen::Vector3d::UnitX()) * axisAngle(u(-10, 10), Eigen::Vector3d::UnitY());
+        return canonical(axisAngle(u(0, 360), Eigen::Vector3d::UnitZ()) * tilt * base);
+    };
+    double t = 0;
+    Eigen::Quaterniond previous = poseAt(0);
+    m_poses.push_back(PoseMove{0, 0, u(kPoseHoldMinS, kPoseHoldMaxS), previous, previous});
+    t = m_poses.back().holdS;
+    for (int i = 1; i < kPoseCount; ++i) {
+        for (int pass = 0; pass < (i == kBriefPoseAfter ? 2 : 1); ++pass) {
+            const bool brief = pass == 1;
+            PoseMove m;
+            m.brief = brief;
+            m.startS = t;
+            m.moveS = u(kPoseMoveMinS, kPoseMoveMaxS);
+            m.holdS = brief ? kBriefPoseHoldS : u(kPoseHoldMinS, kPoseHoldMaxS);
+            m.from = previous;
+            // The brief pose: part of the way to a pose of its own (the hand pauses, then goes on).
+            m.to = brief ? canonical(previous * axisAngle(u(30, 60), Eigen::Vector3d(u(-1, 1), u(-1, 1), 1).normalized()))
+                         : poseAt(i);
+            const Eigen::AngleAxisd d(m.from.conjugate() * m.to);
+            m.angleDeg = d.angle() * (180.0 / 3.141592653589793);
+            m.axis = d.angle() > 1e-9 ? d.axis() : Eigen::Vector3d::UnitX();
+            m.wobbleAxis = m.axis.unitOrthogonal();
+            m.wobbleDeg = u(-25, 25);
+            m.wobbleCycles = u(0, 1) < 0.5 ? 1 : 2;
+            m.jerk = u(0.05, 0.25);
+            m_poses.push_back(m);
+            previous = m.to;
+            t += m.moveS + m.holdS;
+        }
+    }
+    m_poses.back().holdS = std::numeric_limits<double>::infinity();
+}
+
+std::vector<MotionModel::PoseHold> MotionModel::poseHolds() const
+{
+    std::vector<PoseHold> out;
+    for (const PoseMove &m : m_poses)
+        out.push_back(PoseHold{m.startS + m.moveS, m.startS + m.moveS + m.holdS, m.to, m.brief});
+    return out;
+}
+
+double MotionModel::posesEndS() const
+{
+    return m_poses.empty() ? 0.0 : m_poses.back().startS + m_poses.back().moveS;
+}
+
+namespace {
+// sin^2(pi u) sin(2 pi n u): zero with its slope at u = 0 and u = 1; and its derivative.
+double bump(double x, int n)
+{
+    const double pi = 3.141592653589793;
+    const double s = std::sin(pi * x);
+    return s * s * std::sin(2 * pi * n * x);
+}
+double bumpRate(double x, int n)
+{
+    const double pi = 3.141592653589793;
+    const double s = std::sin(pi * x);
+    return pi * std::sin(2 * pi * x) * std::sin(2 * pi * n * x) + 2 * pi * n * s * s * std::cos(2 * pi * n * x);
+}
+} // namespace
+
+MotionState MotionModel::poseState(double t) const
+{
+    MotionState s;
+    auto it = std::upper_bound(m_poses.begin(), m_poses.end(), t,
+                               [](double v, const PoseMove &m) { return v < m.startS; });
+    const PoseMove &m = it == m_poses.begin() ? m_poses.front() : *(it - 1);
+    const double x = m.moveS > 0 ? (t - m.startS) / m.moveS : 1.0;
+    if (x >= 1.0 || x <= 0.0) {
+        s.q = x <= 0.0 ? m.from : m.to;
+        s.rateDps.setZero();
+        s.moving = false;
+        return s;
+    }
+    // q = from * turn(f(x) angle about axis) * wobble(g(x) about wobbleAxis); the rate in the
+    // body: R_wobble^T * f' angle axis + g' wobbleAxis (per second: / moveS).
+    const double pi = 3.141592653589793;
+    const double f = x - std::sin(2 * pi * x) / (2 * pi) + m.jerk * bump(x, 2);
+    const double fRate = 1 - std::cos(2 * pi * x) + m.jerk * bumpRate(x, 2);
+    const double g = m.wobbleDeg * bump(x, m.wobbleCycles);
+    const double gRate = m.wobbleDeg * bumpRate(x, m.wobbleCycles);
+    const Eigen::Quaterniond wobble = axisAngle(g, m.wobbleAxis);
+    s.q = canonical(m.from * axisAngle(f * m.angleDeg, m.axis) * wobble);
+    s.rateDps = (wobble.conjugate() * (m.axis * (fRate * m.angleDeg)) + m.wobbleAxis * gRate) / m.moveS;
+    s.moving = true;
+    return s;
 }
 
 MotionState MotionModel::at(double t) const
@@ -183,6 +284,9 @@ MotionState MotionModel::at(double t) const
         s.moving = rate != 0;
         break;
     }
+    case Motion::Poses:
+        s = poseState(t);
+        break;
     }
     return s;
 }

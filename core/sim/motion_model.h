@@ -19,6 +19,7 @@
 
 #include <cstdint>
 #include <string_view>
+#include <vector>
 
 namespace imudesk::sim {
 
@@ -35,6 +36,13 @@ enum class Motion {
     // each a raised-cosine rate pulse of kTwistPeakDps and kTwistWidthS. The same for every
     // seed: modules on one fixture feel one motion.
     Twists,
+    // A module turned by hand through still poses (issue 55, verify): kPoseCount orientations
+    // (each face up and down, six between them), each at a heading and a tilt of the hand's
+    // choosing (from the seed), held still kPoseHoldMinS..kPoseHoldMaxS, the moves between them
+    // jerky (an uneven rate and a wobble about a second axis) and kPoseMoveMinS..kPoseMoveMaxS
+    // long; after the kBriefPoseAfter-th pose one more is held only kBriefPoseHoldS, too briefly
+    // to count. The last pose is held from then on. MotionModel::poseHolds() gives the truth.
+    Poses,
 };
 const char *motionName(Motion m);
 // "static", "spin", "tumble" (case-insensitive).
@@ -85,6 +93,21 @@ public:
     static constexpr double kStaticRollDeg = 1.5;
     static constexpr double kStaticPitchDeg = -2.5;
     static constexpr double kStaticYawDeg = 35.0;
+    static constexpr int kPoseCount = 12;
+    static constexpr double kPoseHoldMinS = 2.5, kPoseHoldMaxS = 5.0;
+    static constexpr double kPoseMoveMinS = 0.8, kPoseMoveMaxS = 2.0;
+    static constexpr int kBriefPoseAfter = 5;
+    static constexpr double kBriefPoseHoldS = 0.6;
+
+    // Motion::Poses: where the module rests, and when (s).
+    struct PoseHold {
+        double fromS = 0, toS = 0; // toS infinite for the last
+        Eigen::Quaterniond q = Eigen::Quaterniond::Identity();
+        bool brief = false;        // the one held too briefly
+    };
+    std::vector<PoseHold> poseHolds() const;
+    // The time the last pose is reached (s); 0 for other motions.
+    double posesEndS() const;
 
     MotionModel();
     explicit MotionModel(Options options);
@@ -99,6 +122,18 @@ private:
     Options m_options;
     double m_headingDeg = 0; // initial heading of Spin/Tumble
     double m_phaseDeg = 0;   // initial Y angle of Tumble
+    struct PoseMove {
+        double startS = 0, moveS = 1, holdS = 1; // the move from the previous pose, then the hold
+        Eigen::Quaterniond from, to;
+        Eigen::Vector3d axis = Eigen::Vector3d::UnitX();   // of the turn, in the body at `from`
+        double angleDeg = 0;
+        Eigen::Vector3d wobbleAxis = Eigen::Vector3d::UnitY();
+        double wobbleDeg = 0, jerk = 0;
+        int wobbleCycles = 1;
+        bool brief = false;
+    };
+    std::vector<PoseMove> m_poses; // Motion::Poses: the first starts at 0 with no move
+    MotionState poseState(double t) const;
 };
 
 } // namespace imudesk::sim

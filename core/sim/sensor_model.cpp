@@ -23,12 +23,27 @@ SensorModel::SensorModel(uint64_t seed) : m_rng(seed)
             m_softIron(i, j) = m_softIron(j, i) = -0.02 + 0.04 * u(g);
 }
 
+Eigen::Matrix3d SensorModel::AccError::matrix() const
+{
+    Eigen::Matrix3d n = Eigen::Matrix3d::Identity();
+    n(1, 0) = misalignmentRad[0];
+    n(2, 0) = misalignmentRad[1];
+    n(2, 1) = misalignmentRad[2];
+    return (Eigen::Vector3d::Ones() + scale).asDiagonal() * n;
+}
+
+void SensorModel::setIronLeft(double fraction)
+{
+    m_hardIron *= fraction;
+    m_softIron = Eigen::Matrix3d::Identity() + fraction * (m_softIron - Eigen::Matrix3d::Identity());
+}
+
 SensorReading SensorModel::ideal(const MotionState &s) const
 {
     const Eigen::Matrix3d rT = s.q.toRotationMatrix().transpose();
     SensorReading r;
-    r.acc = rT * Eigen::Vector3d(0, 0, 1);
-    r.gyr = (1.0 + m_gyroScaleError) * s.rateDps + m_gyroBias;
+    r.acc = m_accMatrix * (rT * Eigen::Vector3d(0, 0, 1)) + m_accError.biasG;
+    r.gyr = (Eigen::Vector3d::Ones() + m_gyroScaleError).cwiseProduct(s.rateDps) + m_gyroBias;
     r.mag = m_softIron * (rT * fieldNav()) + m_hardIron;
     r.pressurePa = kPressurePa;
     r.temperatureC = kTemperatureC;

@@ -1,8 +1,11 @@
 #pragma once
 // Synthesises what a module's sensors measure for a true motion state, in the sensor
 // (body) frame and the manual's units:
-//   acc (G)    = R^T * (0, 0, 1)            specific force of gravity in ENU (no centripetal term)
-//   gyr (deg/s) = (1 + scale error) * true rate + bias + white noise (kGyrNoiseDps * noise factor)
+//   acc (G)    = A * R^T * (0, 0, 1) + b     specific force of gravity in ENU (no centripetal term);
+//                A = diag(1 + scale) * (I + N), N strictly lower triangular (the y axis leans
+//                towards x by N(1,0), z towards x by N(2,0) and towards y by N(2,1), radians),
+//                b the bias: the identity and zero unless AccError is set
+//   gyr (deg/s) = diag(1 + scale errors) * true rate + bias + white noise (kGyrNoiseDps * noise factor)
 //   mag (uT)   = S * (R^T * B_nav) + h + white noise, B_nav = (0, 28, -42) uT in ENU
 //   pressure about 100 kPa, temperature about 30 degC, each with a little noise.
 // Bias, hard iron h and soft iron S are drawn from the seed; the noise comes from a
@@ -44,8 +47,23 @@ public:
     SensorReading ideal(const MotionState &s) const;
 
     // Gyro scale error (fraction, all axes): measured rate = (1 + e) * true rate + bias.
-    void setGyroScaleError(double e) { m_gyroScaleError = e; }
-    double gyroScaleError() const { return m_gyroScaleError; }
+    void setGyroScaleError(double e) { m_gyroScaleError = Eigen::Vector3d::Constant(e); }
+    // The same per axis.
+    void setGyroScaleErrors(const Eigen::Vector3d &e) { m_gyroScaleError = e; }
+    const Eigen::Vector3d &gyroScaleErrors() const { return m_gyroScaleError; }
+    // The accelerometer's errors (a module's factory calibration left imperfect).
+    struct AccError {
+        Eigen::Vector3d biasG = Eigen::Vector3d::Zero();
+        Eigen::Vector3d scale = Eigen::Vector3d::Zero();        // fractions
+        Eigen::Vector3d misalignmentRad = Eigen::Vector3d::Zero(); // N(1,0), N(2,0), N(2,1)
+        // A: measured = A * true + bias.
+        Eigen::Matrix3d matrix() const;
+    };
+    void setAccError(const AccError &e) { m_accError = e; m_accMatrix = e.matrix(); }
+    const AccError &accError() const { return m_accError; }
+    // The magnetometer's iron as a module calibrated by its MCAL has it left: hard iron and soft
+    // iron scaled by `fraction` (0: a perfect calibration, 1: none).
+    void setIronLeft(double fraction);
     // Gyro white noise: the standard deviation per axis is factor * kGyrNoiseDps (1: a good
     // module; a larger factor is a noisy one, SimFaults::gyroNoiseFactor).
     void setGyroNoiseFactor(double factor) { m_gyroNoiseFactor = factor; }
@@ -60,7 +78,9 @@ private:
     Eigen::Vector3d m_gyroBias;
     Eigen::Vector3d m_hardIron;
     Eigen::Matrix3d m_softIron;
-    double m_gyroScaleError = 0;
+    Eigen::Vector3d m_gyroScaleError = Eigen::Vector3d::Zero();
+    AccError m_accError;
+    Eigen::Matrix3d m_accMatrix = Eigen::Matrix3d::Identity();
     double m_gyroNoiseFactor = 1;
 };
 

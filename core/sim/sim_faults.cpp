@@ -3,6 +3,7 @@
 #include "hipnuc_simulator.h"
 
 #include <cctype>
+#include <array>
 #include <charconv>
 #include <cmath>
 
@@ -12,7 +13,8 @@ namespace {
 
 constexpr const char *kAccepted =
     "noisy-gyro, noisy-gyro=F, mounting=R/P/Y, wrong-mounting, mag-disturbance, mag-disturbance=U, unplug=T, fixture, "
-    "comconfig=spaced|unlabelled";
+    "comconfig=spaced|unlabelled, acc-bias=X/Y/Z, acc-scale=X/Y/Z, acc-misalignment=YX/ZX/ZY, acc-error=MG/PCT, "
+    "gyro-scale=PCT or X/Y/Z, attitude-bias=R/P/H, filter-lag=MS";
 
 std::string_view trimmed(std::string_view s)
 {
@@ -51,6 +53,33 @@ std::string number(double v)
     return std::string(buf, r.ptr);
 }
 
+// "A/B/C" (or, with `single`, one number for all three): finite numbers.
+bool parseTriple(std::string_view value, std::array<double, 3> &out, bool single = false)
+{
+    std::array<double, 3> v{};
+    size_t parts = 0;
+    for (std::string_view rest = value;;) {
+        const size_t slash = rest.find('/');
+        if (parts >= 3 || !parseNumber(rest.substr(0, slash), v[parts]))
+            return false;
+        ++parts;
+        if (slash == std::string_view::npos)
+            break;
+        rest = rest.substr(slash + 1);
+    }
+    if (parts == 1 && single)
+        v = {v[0], v[0], v[0]};
+    else if (parts != 3)
+        return false;
+    out = v;
+    return true;
+}
+
+std::string tripleText(const std::array<double, 3> &v)
+{
+    return number(v[0]) + "/" + number(v[1]) + "/" + number(v[2]);
+}
+
 } // namespace
 
 bool parseSimFaults(std::string_view text, SimFaults &out, std::string *error)
@@ -83,20 +112,42 @@ bool parseSimFaults(std::string_view text, SimFaults &out, std::string *error)
                 return fail("wrong-mounting takes no value (mounting=R/P/Y gives the angles), got '" + shown + "'");
             f.mountingErrorDeg = {SimFaults::kWrongMountingRollDeg, 0, 0};
         } else if (word == "mounting") {
-            std::array<double, 3> angles{};
-            size_t parts = 0;
-            bool good = hasValue;
-            for (std::string_view rest = value; good;) {
-                const size_t slash = rest.find('/');
-                good = parts < 3 && parseNumber(rest.substr(0, slash), angles[parts]);
-                ++parts;
-                if (slash == std::string_view::npos)
-                    break;
-                rest = rest.substr(slash + 1);
-            }
-            if (!good || parts != 3)
+            if (!hasValue || !parseTriple(value, f.mountingErrorDeg))
                 return fail("mounting=R/P/Y needs roll/pitch/yaw in degrees (e.g. mounting=90/0/0), got '" + shown + "'");
-            f.mountingErrorDeg = angles;
+        } else if (word == "acc-bias") {
+            if (!hasValue || !parseTriple(value, f.accBiasMg))
+                return fail("acc-bias=X/Y/Z needs the accelerometer's bias per axis in mg (e.g. acc-bias=12/-5/8), got '"
+                            + shown + "'");
+        } else if (word == "acc-scale") {
+            if (!hasValue || !parseTriple(value, f.accScalePct))
+                return fail("acc-scale=X/Y/Z needs the accelerometer's scale error per axis in % (e.g. acc-scale=1/0/-0.5), "
+                            "got '" + shown + "'");
+        } else if (word == "acc-misalignment") {
+            if (!hasValue || !parseTriple(value, f.accMisalignmentDeg))
+                return fail("acc-misalignment=YX/ZX/ZY needs three angles in degrees (y towards x, z towards x, z towards "
+                            "y), got '" + shown + "'");
+        } else if (word == "acc-error") {
+            std::array<double, 3> pair{};
+            const size_t slash = value.find('/');
+            if (!hasValue || slash == std::string_view::npos || !parseNumber(value.substr(0, slash), pair[0])
+                || !parseNumber(value.substr(slash + 1), pair[1]))
+                return fail("acc-error=MG/PCT needs a bias in mg and a scale error in % for every axis (e.g. "
+                            "acc-error=20/1), got '" + shown + "'");
+            f.accBiasMg = {pair[0], pair[0], pair[0]};
+            f.accScalePct = {pair[1], pair[1], pair[1]};
+        } else if (word == "gyro-scale") {
+            if (!hasValue || !parseTriple(value, f.gyroScalePct, true))
+                return fail("gyro-scale=PCT (or X/Y/Z) needs the gyro's scale error in % (e.g. gyro-scale=0.5), got '"
+                            + shown + "'");
+        } else if (word == "attitude-bias") {
+            if (!hasValue || !parseTriple(value, f.attitudeBiasDeg))
+                return fail("attitude-bias=R/P/H needs roll/pitch/heading offsets in degrees (heading clockwise, e.g. "
+                            "attitude-bias=0/0/3), got '" + shown + "'");
+        } else if (word == "filter-lag") {
+            double ms = 0;
+            if (!hasValue || !parseNumber(value, ms) || ms < 0 || ms > 10000)
+                return fail("filter-lag=MS needs the attitude's lag in ms (0..10000), got '" + shown + "'");
+            f.filterLagMs = ms;
         } else if (word == "mag-disturbance") {
             double ut = SimFaults::kMagDisturbanceUt;
             if (hasValue && (!parseNumber(value, ut) || ut < 0))
@@ -127,6 +178,17 @@ bool parseSimFaults(std::string_view text, SimFaults &out, std::string *error)
     return true;
 }
 
+SensorModel::AccError accErrorOf(const SimFaults &faults)
+{
+    SensorModel::AccError e;
+    for (int i = 0; i < 3; ++i) {
+        e.biasG[i] = faults.accBiasMg[size_t(i)] * 1e-3;
+        e.scale[i] = faults.accScalePct[size_t(i)] * 1e-2;
+        e.misalignmentRad[i] = faults.accMisalignmentDeg[size_t(i)] * 3.141592653589793 / 180.0;
+    }
+    return e;
+}
+
 std::string simFaultsText(const SimFaults &faults)
 {
     const SimFaults none;
@@ -136,8 +198,20 @@ std::string simFaultsText(const SimFaults &faults)
         add("noisy-gyro=" + number(faults.gyroNoiseFactor));
     if (faults.mountingErrorDeg != none.mountingErrorDeg) {
         const auto &m = faults.mountingErrorDeg;
-        add("mounting=" + number(m[0]) + "/" + number(m[1]) + "/" + number(m[2]));
+        add("mounting=" + tripleText(m));
     }
+    if (faults.accBiasMg != none.accBiasMg)
+        add("acc-bias=" + tripleText(faults.accBiasMg));
+    if (faults.accScalePct != none.accScalePct)
+        add("acc-scale=" + tripleText(faults.accScalePct));
+    if (faults.accMisalignmentDeg != none.accMisalignmentDeg)
+        add("acc-misalignment=" + tripleText(faults.accMisalignmentDeg));
+    if (faults.gyroScalePct != none.gyroScalePct)
+        add("gyro-scale=" + tripleText(faults.gyroScalePct));
+    if (faults.attitudeBiasDeg != none.attitudeBiasDeg)
+        add("attitude-bias=" + tripleText(faults.attitudeBiasDeg));
+    if (faults.filterLagMs != none.filterLagMs)
+        add("filter-lag=" + number(faults.filterLagMs));
     if (faults.magDisturbanceUt != none.magDisturbanceUt)
         add("mag-disturbance=" + number(faults.magDisturbanceUt));
     if (faults.unplugAtS >= 0)
