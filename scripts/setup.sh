@@ -319,6 +319,8 @@ phase "benchmark (production station: a plan on eight simulated modules against 
 "$bench/bench_station" --plan-seconds 10 || echo "!! bench_station missed a target (see above)"
 phase "benchmark (one time base: 4 simulated devices, 10 min of device time accelerated, against the truth)"
 "$bench/bench_sync" || echo "!! bench_sync missed a target (see above)"
+phase "benchmark (the module check: 200 simulated modules of known errors turned through 12 poses, bounds calibrated, 15 min at 400 Hz analysed)"
+"$bench/bench_verify" || echo "!! bench_verify missed a target (see above)"
 phase "benchmark (results database: 1,000 module records uploaded to PostgreSQL, queries over 100,000 measurements)"
 "$bench/bench_results" || echo "!! bench_results missed a target (see above)"
 phase "soak (1 kHz HI91 with recording and the GUI offscreen; 20 s in CI, one hour by default)"

@@ -82,6 +82,7 @@ int simulateCan(const QString &canSpec, const QString &protocol, const QString &
 int cmdMagcal(const QStringList &args);
 int cmdCalibrate(const QStringList &args); // commands_calibrate.cpp
 int cmdStation(const QStringList &args);   // commands_station.cpp
+int cmdVerify(const QStringList &args);    // commands_verify.cpp
 
 // --from and --to (seconds >= 0) into *from and *to where given; false (usage printed) on a bad value.
 bool fromToOptions(const QCommandLineParser &p, double *from, double *to);

@@ -42,6 +42,10 @@ void usage(FILE *to)
                "                                         vendor CSV\n"
                "  magcal FILE [--json] [--mode full|hard_iron_only|planar] [--field UT]\n"
                "                                         magnetometer calibration of a CSV (mag_x,mag_y,mag_z uT)\n"
+               "  verify CAPTURE|SESSION|PORT [--gravity M_S2 | --latitude DEG --height M] [--json]\n"
+               "                                         is the module right? its accelerometer, gyro and attitude\n"
+               "                                         judged from still poses; exit 0 pass, 1 fail or warn,\n"
+               "                                         2 cannot judge\n"
                "  calibrate PORT mag|gyro-scale|level|heading-reset|hec495-clear [--json]\n"
                "                                         run a device-side calibration, progress on stderr\n"
                "  station PLAN.json PORT[,PORT...] [--report DIR] [--baud B] [--json] [--results URL]\n"
@@ -52,10 +56,12 @@ void usage(FILE *to)
                "                                         a results database: a module's history, a plan's yield,\n"
                "                                         records as CSV/JSONL, a station's upload, the line's schema\n"
                "  simulate --pty [--model HI14] [--firmware 1.7.1] [--baud 115200]\n"
-               "           [--motion static|spin|tumble|turntable] [--seed N] [--faults LIST]\n"
+               "           [--motion static|spin|tumble|turntable|twists|poses] [--seed N] [--faults LIST]\n"
                "                                         serve a simulated device on a pseudo-terminal; LIST:\n"
                "                                         noisy-gyro[=F],mounting=R/P/Y|wrong-mounting,\n"
-               "                                         mag-disturbance[=U],unplug=T,fixture\n"
+               "                                         mag-disturbance[=U],unplug=T,fixture,acc-bias=X/Y/Z,\n"
+               "                                         acc-scale=X/Y/Z,acc-error=MG/PCT,gyro-scale=PCT,\n"
+               "                                         attitude-bias=R/P/H,filter-lag=MS\n"
                "  simulate --pty --modbus [--device hipnuc|hec495] [--id N] [--baud B]\n"
                "                                         serve a simulated Modbus RTU device\n"
                "  modbus PORT [--id N] [--baud B] info|read [REG [COUNT]]|scan|write REG VALUE [--json]\n"
@@ -171,6 +177,7 @@ int main(int argc, char **argv)
         {QStringLiteral("magcal"), cmdMagcal},
         {QStringLiteral("calibrate"), cmdCalibrate},
         {QStringLiteral("station"), cmdStation},
+        {QStringLiteral("verify"), cmdVerify},
     };
     const auto it = commands.find(cmd);
     if (it == commands.end()) {

@@ -1,11 +1,9 @@
 #include "magnetometer_file.h"
 
 #include "calib/sample_csv.h"
-#include "capture/capture_decoder.h"
 #include "capture/capture_format.h"
-#include "capture/capture_reader.h"
 #include "record/capture_source.h"
-#include "record/session_manifest.h"
+#include "record/sample_file.h"
 
 #include <QDir>
 #include <QFile>
@@ -35,85 +33,35 @@ QString nameList(const QStringList &names)
     return names.join(QStringLiteral(", "));
 }
 
-Result readCapture(const QString &path)
+// A capture, vendor CSV, raw dump or a session's member: the first frame type that carries a
+// magnetometer in uT.
+Result readRecording(const QString &path, const QString &device)
 {
     Result r;
-    CaptureSource source;
-    if (!source.prepare(path, &r.error))
+    std::string type;
+    const SampleFile::Opened opened = SampleFile::forEachSample(path, device, [&](const model::Sample &s) {
+        if (!s.has(model::FieldMag) || r.samples.size() >= MagnetometerFile::kMaxSamples)
+            return;
+        if (type.empty())
+            type = s.source;
+        if (s.source == type)
+            r.samples.emplace_back(s.mag.x, s.mag.y, s.mag.z);
+    });
+    r.kind = opened.kind;
+    r.device = opened.device;
+    r.notes = opened.notes;
+    if (!opened.ok) {
+        r.error = opened.error;
         return r;
-    r.kind = QString::fromLatin1(CaptureSource::kindName(source.kind()));
-    r.notes << source.notes();
-    capture::CaptureReader reader;
-    if (!reader.open(source.capturePath(), &r.error))
-        return r;
-    struct Sink : capture::CaptureDecoder::Sink {
-        Result *r = nullptr;
-        std::string type;    // the frame type read: the first with a magnetometer
-        uint64_t others = 0; // samples of that type without one
-        void take(const model::Sample &s)
-        {
-            if (!s.has(model::FieldMag) || r->samples.size() >= MagnetometerFile::kMaxSamples) {
-                if (!type.empty() && s.source == type)
-                    ++others;
-                return;
-            }
-            if (type.empty())
-                type = s.source;
-            if (s.source == type)
-                r->samples.emplace_back(s.mag.x, s.mag.y, s.mag.z);
-        }
-        void onPacket(const protocol::hipnuc::Packet &p, int64_t) override { take(protocol::hipnuc::toSample(p)); }
-        void onSample(const model::Sample &s, int64_t) override { take(s); }
-    } sink;
-    sink.r = &r;
-    capture::CaptureDecoder decoder;
-    decoder.configure(reader.header());
-    capture::CaptureReader::Chunk c;
-    capture::CaptureReader::Result res;
-    while ((res = reader.next(c)) == capture::CaptureReader::Result::Chunk || res == capture::CaptureReader::Result::Damaged)
-        if (res == capture::CaptureReader::Result::Chunk)
-            decoder.feedChunk(c, sink);
-    decoder.finish(sink);
-    if (res == capture::CaptureReader::Result::Truncated)
-        r.notes << reader.message();
+    }
     if (r.samples.empty()) {
         r.error = MagnetometerFile::tr("%1 holds no magnetometer samples in µT (a %2): record the module's output "
                                        "with its magnetometer (HI91, HI81 or HI83)")
                       .arg(QDir::toNativeSeparators(path), r.kind);
         return r;
     }
-    r.source = QString::fromStdString(sink.type);
+    r.source = QString::fromStdString(type);
     r.ok = true;
-    return r;
-}
-
-Result readSession(const QString &folder, const QString &device)
-{
-    SessionManifest manifest;
-    QString error;
-    if (!SessionManifest::load(folder, &manifest, &error))
-        return failed(error);
-    QStringList names;
-    const SessionManifest::Device *chosen = nullptr;
-    for (const auto &d : manifest.devices) {
-        names << d.name;
-        if (d.name == device)
-            chosen = &d;
-    }
-    if (!device.isEmpty() && !chosen)
-        return failed(MagnetometerFile::tr("the session %1 has no device %2; its devices: %3")
-                          .arg(QDir::toNativeSeparators(folder), device, nameList(names)));
-    if (!chosen) {
-        if (manifest.devices.size() != 1)
-            return failed(MagnetometerFile::tr("the session %1 holds %2 devices (%3): choose one with --device NAME")
-                              .arg(QDir::toNativeSeparators(folder))
-                              .arg(manifest.devices.size())
-                              .arg(nameList(names)));
-        chosen = &manifest.devices.front();
-    }
-    Result r = readCapture(QDir(folder).filePath(chosen->file));
-    r.kind = MagnetometerFile::tr("session");
-    r.device = chosen->name;
     return r;
 }
 
@@ -209,13 +157,8 @@ Result readCsv(const QByteArray &text, const QString &device)
 
 MagnetometerFile::Result MagnetometerFile::read(const QString &path, const QString &device)
 {
-    const QFileInfo fi(path);
-    if (fi.isDir()) {
-        if (!SessionManifest::isSessionFolder(path))
-            return failed(tr("%1 is a folder without session.json: give a file, or a recorded session's folder")
-                              .arg(QDir::toNativeSeparators(path)));
-        return readSession(path, device);
-    }
+    if (QFileInfo(path).isDir())
+        return readRecording(path, device);
     QFile f(path);
     if (!f.open(QIODevice::ReadOnly))
         return failed(tr("cannot read %1: %2").arg(QDir::toNativeSeparators(path), f.errorString()));
@@ -229,10 +172,8 @@ MagnetometerFile::Result MagnetometerFile::read(const QString &path, const QStri
     const bool json = text && start.startsWith('{');
     const bool csv = text && !json && firstLine.contains(',') && !firstLine.startsWith('$');
     if (!json && !csv) {
-        if (!capture && !device.isEmpty())
-            return failed(tr("--device chooses a device of a session: %1 is not one").arg(QDir::toNativeSeparators(path)));
         f.close();
-        return readCapture(path);
+        return readRecording(path, device);
     }
     if (f.size() > kMaxTextBytes)
         return failed(tr("%1 is larger than %2 MB; split it").arg(QDir::toNativeSeparators(path)).arg(kMaxTextBytes >> 20));

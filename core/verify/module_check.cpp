@@ -37,6 +37,7 @@ constexpr NamedLimit kLimitNames[] = {
 struct Judged {
     Verdict verdict = Verdict::CannotJudge;
     QString text;
+    bool required = true; // a verdict needs it judged (else: cannot judge, unless a figure fails)
 };
 
 Verdict judge(double value, double sigma, const Limit &limit)
@@ -101,7 +102,7 @@ Judged judgeFigure(const QString &what, const QString &unit, int decimals, const
 
 Judged notJudged(const QString &what, const QString &why)
 {
-    return Judged{Verdict::CannotJudge, CheckReport::tr("%1: cannot judge, %2").arg(what, why)};
+    return Judged{Verdict::CannotJudge, CheckReport::tr("%1: cannot judge, %2").arg(what, why), true};
 }
 
 } // namespace
@@ -199,11 +200,15 @@ CheckReport checkModule(const std::vector<MotionSample> &samples, const CheckOpt
     add1(CheckReport::tr("roll error"), QStringLiteral("°"), 3, r.rollErrDeg, l.tiltDeg);
     add1(CheckReport::tr("pitch error"), QStringLiteral("°"), 3, r.pitchErrDeg, l.tiltDeg);
     add1(CheckReport::tr("heading error"), QStringLiteral("°"), 2, r.headingErrDeg, l.headingDeg);
+    // The gyro's scale (it needs turns about every axis) and the heading (a magnetometer) may
+    // stay unjudged in a verdict; the accelerometer, the gyro's bias and the tilt may not.
+    judged[4].required = judged[7].required = false;
+    // (indices as added above: 4 gyro scale, 7 heading; sorted below)
     std::stable_sort(judged.begin(), judged.end(),
                      [](const Judged &a, const Judged &b) { return severity(a.verdict) > severity(b.verdict); });
-    // Cannot-judge lines after the judged ones, whatever their order.
-    std::stable_partition(judged.begin(), judged.end(), [](const Judged &j) { return j.verdict != Verdict::CannotJudge; });
-    r.verdict = judged.front().verdict;
+    const bool missing = std::any_of(judged.begin(), judged.end(),
+                                     [](const Judged &j) { return j.required && j.verdict == Verdict::CannotJudge; });
+    r.verdict = judged.front().verdict == Verdict::Fail || !missing ? judged.front().verdict : Verdict::CannotJudge;
     for (const Judged &j : judged)
         r.reasons << j.text;
     if (!r.gravityGiven)

@@ -124,16 +124,47 @@ AttitudeCheck checkAttitude(std::vector<Pose> &poses, const AccFit &acc, const C
         rollErr.push_back(p.rollErrDeg);
         pitchErr.push_back(p.pitchErrDeg);
     }
-    // The reference's own noise: the calibrated gravity direction's (rad -> deg).
-    const double tiltFloor = acc.rmsResidualG * kRadToDeg / std::sqrt(double(std::max<size_t>(1, rollErr.size())));
+    // The reference's own error: the accelerometer fit's, the same at every pose (so the poses'
+    // spread does not show it), carried through the mean roll and pitch of the poses used.
+    Eigen::Matrix<double, 9, 1> params;
+    params << acc.biasG, acc.correction(0, 0), acc.correction(1, 0), acc.correction(1, 1), acc.correction(2, 0),
+        acc.correction(2, 1), acc.correction(2, 2);
+    auto meanTilt = [&](const Eigen::Matrix<double, 9, 1> &q) {
+        Eigen::Matrix3d c = Eigen::Matrix3d::Zero();
+        c(0, 0) = q[3];
+        c(1, 0) = q[4];
+        c(1, 1) = q[5];
+        c(2, 0) = q[6];
+        c(2, 1) = q[7];
+        c(2, 2) = q[8];
+        Eigen::Vector2d sum = Eigen::Vector2d::Zero();
+        for (const Pose &p : poses)
+            if (p.tiltUsed) {
+                const Eigen::Vector3d u = (c * (p.acc - q.head<3>())).normalized();
+                sum += Eigen::Vector2d(std::atan2(-u.x(), u.z()), std::asin(std::clamp(u.y(), -1.0, 1.0)));
+            }
+        return Eigen::Vector2d(sum * kRadToDeg / double(std::max<size_t>(1, rollErr.size())));
+    };
+    Eigen::Matrix<double, 2, 9> jac;
+    for (int k = 0; k < 9; ++k) {
+        Eigen::Matrix<double, 9, 1> plus = params, minus = params;
+        plus[k] += 1e-6;
+        minus[k] -= 1e-6;
+        jac.col(k) = (meanTilt(plus) - meanTilt(minus)) / 2e-6;
+    }
+    const Eigen::Vector2d refSigma = (jac * acc.covariance * jac.transpose()).diagonal().cwiseMax(0).cwiseSqrt();
     if (rollErr.size() < 3) {
         out.roll.why = out.pitch.why =
             CheckReport::tr("needs at least 3 still poses with the module's attitude and a pitch within ±%1° (found %2)")
                 .arg(options.maxPitchDeg)
                 .arg(rollErr.size());
     } else {
-        out.roll = meanFigure(rollErr, tiltFloor);
-        out.pitch = meanFigure(pitchErr, tiltFloor);
+        out.roll = meanFigure(rollErr, 0.0);
+        out.pitch = meanFigure(pitchErr, 0.0);
+        // The poses' spread holds the reference's noise at each pose as well as the module's:
+        // the larger of the two, not their sum, or that noise would count twice.
+        out.roll.sigma = std::max(out.roll.sigma, refSigma[0]);
+        out.pitch.sigma = std::max(out.pitch.sigma, refSigma[1]);
     }
 
     // Heading against the tilt-compensated magnetometer.
