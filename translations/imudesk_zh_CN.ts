@@ -628,7 +628,7 @@
 <context>
     <name>CanSettingCatalog</name>
     <message>
-        <location filename="../core/settings/can_setting_catalog.cpp" line="+83"/>
+        <location filename="../core/protocol/can/can_setting_catalog.cpp" line="+79"/>
         <source>default</source>
         <translation>默认</translation>
     </message>
@@ -1224,7 +1224,7 @@
 <context>
     <name>CaptureHeader</name>
     <message>
-        <location filename="../core/record/capture_header.cpp" line="+140"/>
+        <location filename="../core/capture/capture_header.cpp" line="+140"/>
         <source>line %1 of the capture header is not a key=value entry</source>
         <translation>记录文件头第 %1 行不是“键=值”格式的条目</translation>
     </message>
@@ -1232,7 +1232,7 @@
 <context>
     <name>CaptureReader</name>
     <message>
-        <location filename="../core/record/capture_reader.cpp" line="+43"/>
+        <location filename="../core/capture/capture_reader.cpp" line="+43"/>
         <source>Cannot open %1: %2</source>
         <translation>无法打开 %1：%2</translation>
     </message>
@@ -1344,7 +1344,7 @@
 <context>
     <name>CaptureWriter</name>
     <message>
-        <location filename="../core/record/capture_writer.cpp" line="+95"/>
+        <location filename="../core/capture/capture_writer.cpp" line="+94"/>
         <source>Cannot create the capture file %1: %2. Choose a folder you can write to.</source>
         <translation>无法创建记录文件 %1：%2。请选择有写入权限的文件夹。</translation>
     </message>
@@ -1359,9 +1359,199 @@
         <translation>记录已停止：磁盘写入速度跟不上（超过 %1 MB 数据等待写入）。请记录到速度更快的磁盘。</translation>
     </message>
     <message>
-        <location line="+111"/>
+        <location line="+108"/>
         <source>Recording stopped: writing %1 failed (%2). Everything up to that point is in the file; free some disk space and record again.</source>
         <translation>记录已停止：写入 %1 失败（%2）。此前的数据均已保存在文件中；请释放一些磁盘空间后重新记录。</translation>
+    </message>
+</context>
+<context>
+    <name>CheckReport</name>
+    <message>
+        <location filename="../core/verify/gyro_fit.cpp" line="+64"/>
+        <source>no still pose</source>
+        <translation>没有静止姿态</translation>
+    </message>
+    <message>
+        <location filename="../core/verify/dynamic_check.cpp" line="+56"/>
+        <location filename="../core/verify/gyro_fit.cpp" line="+27"/>
+        <source>needs the accelerometer calibrated from at least 9 still poses</source>
+        <translation>需要先用至少 9 个静止姿态校准加速度计</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>needs a still pose with the module&apos;s attitude to start from</source>
+        <translation>需要一个带有模块姿态输出的静止姿态作为起点</translation>
+    </message>
+    <message>
+        <location line="+50"/>
+        <source>the module did not move enough between the poses (%1 s, %2° turned; %3 s and %4° needed)</source>
+        <translation>模块在静止姿态之间运动不足（运动 %1 s，转过 %2°；需要 %3 s 和 %4°）</translation>
+    </message>
+    <message>
+        <location line="+55"/>
+        <source>the module&apos;s attitude follows the reference by more than %1 ms or not at all</source>
+        <translation>模块姿态滞后参考超过 %1 ms，或根本不跟随参考</translation>
+    </message>
+    <message>
+        <location filename="../core/verify/gyro_fit.cpp" line="+27"/>
+        <source>needs at least 3 turns of more than 20° between still poses (found %1)</source>
+        <translation>静止姿态之间需要至少 3 次超过 20° 的转动（找到 %1 次）</translation>
+    </message>
+    <message>
+        <location line="+35"/>
+        <source>the turns between poses did not turn the module about its %1 axis enough: turn it about each axis while that axis is level</source>
+        <translation>姿态之间的转动中，模块绕其 %1 轴转动不足：请在每个轴保持水平时绕该轴转动模块</translation>
+    </message>
+    <message>
+        <location filename="../core/verify/module_check.cpp" line="+68"/>
+        <source>pass</source>
+        <translation>通过</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>warn</source>
+        <translation>警告</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>fail</source>
+        <translation>不合格</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>cannot judge</source>
+        <translation>无法判定</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>%1: %2 ± %3 %4%5 (95 %), pass at most %6, fail above %7: %8</source>
+        <translation>%1：%2 ± %3 %4%5（95 %），不超过 %6 为通过，超过 %7 为不合格：%8</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>%1: cannot judge, %2</source>
+        <translation>%1：无法判定，%2</translation>
+    </message>
+    <message>
+        <location line="+32"/>
+        <source>hold the module still for 3 s in each of at least %1 orientations (every face up and down, then between them)</source>
+        <translation>请在至少 %1 个朝向上各让模块静止 3 s（每个面分别朝上和朝下，再加上介于它们之间的朝向）</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <location line="+10"/>
+        <source>no still pose: %1</source>
+        <translation>没有静止姿态：%1</translation>
+    </message>
+    <message>
+        <location line="-8"/>
+        <source>%1 distinct still poses, %2 needed: %3</source>
+        <translation>只有 %1 个不同的静止姿态，需要 %2 个：%3</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the poses do not pin the accelerometer&apos;s errors: %1</source>
+        <translation>这些姿态不足以确定加速度计的误差：%1</translation>
+    </message>
+    <message>
+        <location line="+33"/>
+        <source>accelerometer bias</source>
+        <translation>加速度计零偏</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>accelerometer scale error</source>
+        <translation>加速度计标度因数误差</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>accelerometer misalignment</source>
+        <translation>加速度计轴间失准</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>gyro bias</source>
+        <translation>陀螺仪零偏</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>gyro scale error</source>
+        <translation>陀螺仪标度因数误差</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>roll error</source>
+        <translation>横滚误差</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>pitch error</source>
+        <translation>俯仰误差</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>heading error</source>
+        <translation>航向误差</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>attitude error while moving (RMS)</source>
+        <translation>运动中的姿态误差（RMS）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>attitude lag</source>
+        <translation>姿态滞后</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>the bench&apos;s gravity was not given: standard gravity (9.80665 m/s²) assumed, its uncertainty (±0.3 %) is in the scale figures; give --gravity or --latitude and --height</source>
+        <translation>未给出测试台处的重力加速度：已按标准重力（9.80665 m/s²）计算，其不确定度（±0.3 %）已计入标度因数的数值；请给出 --gravity，或 --latitude 和 --height</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>a hard iron of %1 µT (the poses&apos; fields off centre) was removed for the heading reference: calibrate the magnetometer</source>
+        <translation>为得到航向参考，已扣除 %1 µT 的硬铁（各姿态的磁场偏离中心）：请校准磁力计</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>pose at %1 s set aside for the heading: %2</source>
+        <translation>%1 s 处的姿态已从航向判定中剔除：%2</translation>
+    </message>
+    <message>
+        <location filename="../core/verify/pose_attitude.cpp" line="+98"/>
+        <source>needs the accelerometer calibrated from at least 9 still poses: an uncalibrated one is no reference for the tilt</source>
+        <translation>需要先用至少 9 个静止姿态校准加速度计：未校准的加速度计不能作为倾角的参考</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>pitch %1°: roll and heading have no meaning near ±90°</source>
+        <translation>俯仰角 %1°：在 ±90° 附近，横滚和航向没有意义</translation>
+    </message>
+    <message>
+        <location line="+42"/>
+        <source>needs at least 3 still poses with the module&apos;s attitude and a pitch within ±%1° (found %2)</source>
+        <translation>需要至少 3 个带有模块姿态输出、且俯仰角在 ±%1° 以内的静止姿态（找到 %2 个）</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>needs at least 3 still poses with a magnetometer, the module&apos;s attitude and a pitch within ±%1° (found %2)</source>
+        <translation>需要至少 3 个带有磁力计数据和模块姿态输出、且俯仰角在 ±%1° 以内的静止姿态（找到 %2 个）</translation>
+    </message>
+    <message>
+        <location line="+47"/>
+        <source>field %1 µT, %2 % from the other poses&apos;: a magnetic disturbance here</source>
+        <translation>磁场 %1 µT，与其他姿态的磁场相差 %2 %：此处有磁干扰</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>field inclination %1°, %2° from the other poses&apos;: a magnetic disturbance here</source>
+        <translation>磁倾角 %1°，与其他姿态的磁倾角相差 %2°：此处有磁干扰</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>the magnetic field disagreed between the poses (%1 of %2 set aside): calibrate the magnetometer, move away from steel and motors, and record again</source>
+        <translation>各姿态的磁场不一致（%2 个中剔除了 %1 个）：请校准磁力计，远离钢铁和电机，然后重新录制</translation>
     </message>
 </context>
 <context>
@@ -1526,12 +1716,12 @@
 <context>
     <name>FamilyUi</name>
     <message>
-        <location filename="../ui/families/family_ui.cpp" line="+24"/>
+        <location filename="../ui/workspace/family_ui.cpp" line="+22"/>
         <source>Disconnect first, then connect to %1.</source>
         <translation>请先断开连接，再连接 %1。</translation>
     </message>
     <message>
-        <location line="+60"/>
+        <location line="+43"/>
         <source>Nothing was opened.</source>
         <translation>没有打开任何连接。</translation>
     </message>
@@ -1743,7 +1933,7 @@
 <context>
     <name>Hec495SerialKind</name>
     <message>
-        <location filename="../core/device/hec495_serial_kind.cpp" line="+48"/>
+        <location filename="../core/links/hec495_serial_kind.cpp" line="+48"/>
         <source>an HEC495 compass</source>
         <translation>HEC495 罗盘</translation>
     </message>
@@ -1781,7 +1971,7 @@
         <translation>罗盘设置</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+9"/>
         <source>Switch the output to all data</source>
         <translation>将输出切换为全部数据</translation>
     </message>
@@ -1789,7 +1979,7 @@
 <context>
     <name>HipnucSerialKind</name>
     <message>
-        <location filename="../core/device/hipnuc_serial_kind.cpp" line="+42"/>
+        <location filename="../core/links/hipnuc_serial_kind.cpp" line="+42"/>
         <source>a HiPNUC module</source>
         <translation>HiPNUC 模块</translation>
     </message>
@@ -2749,27 +2939,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>MagnetometerFile</name>
     <message>
-        <location filename="../core/record/magnetometer_file.cpp" line="+80"/>
+        <location filename="../core/record/magnetometer_file.cpp" line="+58"/>
         <source>%1 holds no magnetometer samples in µT (a %2): record the module&apos;s output with its magnetometer (HI91, HI81 or HI83)</source>
         <translation>%1 中没有以 µT 为单位的磁力计样本（%2）：请录制包含磁力计的模块输出（HI91、HI81 或 HI83）</translation>
     </message>
     <message>
-        <location line="+24"/>
-        <source>the session %1 has no device %2; its devices: %3</source>
-        <translation>会话 %1 中没有设备 %2；其设备：%3</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>the session %1 holds %2 devices (%3): choose one with --device NAME</source>
-        <translation>会话 %1 包含 %2 个设备（%3）：请用 --device NAME 选择一个</translation>
-    </message>
-    <message>
-        <location line="+7"/>
-        <source>session</source>
-        <translation>会话</translation>
-    </message>
-    <message>
-        <location line="+25"/>
+        <location line="+30"/>
         <source>line %1 is not a JSON object: %2</source>
         <translation>第 %1 行不是 JSON 对象：%2</translation>
     </message>
@@ -2816,22 +2991,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>已跳过 %1 行无磁力计数据的行</translation>
     </message>
     <message>
-        <location line="+14"/>
-        <source>%1 is a folder without session.json: give a file, or a recorded session&apos;s folder</source>
-        <translation>%1 是不含 session.json 的文件夹：请给出一个文件，或已录制会话的文件夹</translation>
-    </message>
-    <message>
-        <location line="+6"/>
+        <location line="+15"/>
         <source>cannot read %1: %2</source>
         <translation>无法读取 %1：%2</translation>
     </message>
     <message>
-        <location line="+12"/>
-        <source>--device chooses a device of a session: %1 is not one</source>
-        <translation>--device 用于选择会话中的设备：%1 不是会话</translation>
-    </message>
-    <message>
-        <location line="+5"/>
+        <location line="+15"/>
         <source>%1 is larger than %2 MB; split it</source>
         <translation>%1 大于 %2 MB；请将其拆分</translation>
     </message>
@@ -2844,14 +3009,9 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>McapRecording</name>
     <message>
-        <location filename="../core/record/mcap_recording.cpp" line="+97"/>
+        <location filename="../core/capture/mcap_recording.cpp" line="+97"/>
         <source>Cannot write %1: %2</source>
         <translation>无法写入 %1：%2</translation>
-    </message>
-    <message>
-        <location filename="../core/record/mcap_group_recording.cpp" line="+50"/>
-        <source>Recording to %1 stopped: %2. Check the free disk space.</source>
-        <translation>录制到 %1 已停止：%2。请检查剩余磁盘空间。</translation>
     </message>
 </context>
 <context>
@@ -3538,6 +3698,34 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <location line="+92"/>
         <source>the columns mag_x, mag_y and mag_z (µT) are needed; the header has: %1</source>
         <translation>需要 mag_x、mag_y 和 mag_z 列（单位 µT）；表头中只有：%1</translation>
+    </message>
+</context>
+<context>
+    <name>SampleFile</name>
+    <message>
+        <location filename="../core/record/sample_file.cpp" line="+52"/>
+        <source>--device chooses a device of a session: %1 is not one</source>
+        <translation>--device 用于选择会话中的设备：%1 不是会话</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>%1 is a folder without session.json: give a file, or a recorded session&apos;s folder</source>
+        <translation>%1 是不含 session.json 的文件夹：请给出一个文件，或已录制会话的文件夹</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>the session %1 has no device %2; its devices: %3</source>
+        <translation>会话 %1 中没有设备 %2；其设备：%3</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>the session %1 holds %2 devices (%3): choose one with --device NAME</source>
+        <translation>会话 %1 包含 %2 个设备（%3）：请用 --device NAME 选择一个</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>session</source>
+        <translation>会话</translation>
     </message>
 </context>
 <context>
@@ -4436,6 +4624,14 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
 </context>
 <context>
+    <name>capture::McapRecording</name>
+    <message>
+        <location filename="../core/record/mcap_group_recording.cpp" line="+50"/>
+        <source>Recording to %1 stopped: %2. Check the free disk space.</source>
+        <translation>录制到 %1 已停止：%2。请检查剩余磁盘空间。</translation>
+    </message>
+</context>
+<context>
     <name>imudesk::bridge::LiveBridge</name>
     <message>
         <location filename="../core/bridge/live_bridge.cpp" line="+173"/>
@@ -5113,7 +5309,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::device::GroupRecording</name>
     <message>
-        <location filename="../core/device/group_recording.cpp" line="+45"/>
+        <location filename="../core/record/group_recording.cpp" line="+45"/>
         <source>A session recording is already running.</source>
         <translation>会话录制已在进行中。</translation>
     </message>
@@ -5151,7 +5347,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::device::Hec495Family</name>
     <message>
-        <location filename="../core/device/hec495_family.cpp" line="+82"/>
+        <location filename="../core/device/hec495_family.cpp" line="+69"/>
         <source>the request&apos;s data is longer than a Witlink frame can carry</source>
         <translation>请求数据超出 Witlink 帧所能承载的长度</translation>
     </message>
@@ -5189,7 +5385,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::device::Hec495Session</name>
     <message>
-        <location filename="../core/device/hec495_session.cpp" line="+84"/>
+        <location filename="../core/device/hec495_session.cpp" line="+77"/>
         <source>the declination must be between -99.9 and 99.9 degrees (got %1)</source>
         <translation>磁偏角必须在 -99.9 至 99.9 度之间（当前为 %1）</translation>
     </message>
@@ -5277,7 +5473,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::device::LinkOpener</name>
     <message>
-        <location filename="../core/device/link_opener.cpp" line="+117"/>
+        <location filename="../core/links/link_opener.cpp" line="+117"/>
         <source>%1: no serial device family is called &quot;%2&quot;</source>
         <translation>%1：没有名为“%2”的串口设备系列</translation>
     </message>
@@ -5473,7 +5669,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::device::SerialFamilyScan</name>
     <message>
-        <location filename="../core/device/serial_family_scan.cpp" line="+52"/>
+        <location filename="../core/links/serial_family_scan.cpp" line="+52"/>
         <source>trying %1 baud</source>
         <translation>正在尝试 %1 波特</translation>
     </message>
@@ -5488,7 +5684,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation> 或 </translation>
     </message>
     <message>
-        <location filename="../core/device/serial_family_scan.h" line="+36"/>
+        <location filename="../core/links/serial_family_scan.h" line="+36"/>
         <source>serial</source>
         <translation>串口</translation>
     </message>
@@ -8149,7 +8345,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::BridgeController</name>
     <message>
-        <location filename="../ui/bridge/bridge_controller.cpp" line="+89"/>
+        <location filename="../ui/bridge/bridge_controller.cpp" line="+87"/>
         <source>Live bridge %1</source>
         <translation>实时桥接 %1</translation>
     </message>
@@ -9470,7 +9666,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>rad/s</translation>
     </message>
     <message>
-        <location line="+174"/>
+        <location line="+181"/>
         <source>t = %1 s</source>
         <translation>t = %1 s</translation>
     </message>
@@ -11992,7 +12188,7 @@ Samples: %3</source>
 <context>
     <name>imudesk::ui::MainWindow</name>
     <message>
-        <location filename="../ui/workspace/main_window.cpp" line="+408"/>
+        <location filename="../ui/workspace/main_window.cpp" line="+402"/>
         <source>Choose a port first.</source>
         <translation>请先选择串口。</translation>
     </message>
@@ -12007,12 +12203,12 @@ Samples: %3</source>
         <translation>关于 ImuDesk</translation>
     </message>
     <message>
-        <location line="-158"/>
+        <location line="-152"/>
         <source>No device family simulates &quot;%1&quot;.</source>
         <translation>没有设备系列能模拟“%1”。</translation>
     </message>
     <message>
-        <location line="+159"/>
+        <location line="+153"/>
         <source>&lt;h3&gt;ImuDesk %1&lt;/h3&gt;&lt;p&gt;A bench tool for IMU, AHRS and compass modules on serial, RS-485 Modbus and CAN links: live values and charts, settings, calibration, firmware updates, recordings and simulated devices.&lt;/p&gt;&lt;p&gt;Built with Qt %2.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;ImuDesk %1&lt;/h3&gt;&lt;p&gt;面向串口、RS-485 Modbus 和 CAN 链路上的 IMU、AHRS 与罗盘模块的台架工具：实时数值与曲线、设置、校准、固件升级、记录以及模拟设备。&lt;/p&gt;&lt;p&gt;基于 Qt %2 构建。&lt;/p&gt;</translation>
     </message>
@@ -12047,7 +12243,7 @@ Samples: %3</source>
         <translation>PNG 图像 (*.png)</translation>
     </message>
     <message>
-        <location line="+142"/>
+        <location line="+149"/>
         <source>&amp;File</source>
         <translation>文件(&amp;F)</translation>
     </message>
@@ -14230,7 +14426,7 @@ Is it a results database that ImuDesk wrote? Choose another file with Open….</
 <context>
     <name>imudesk::ui::StationTile</name>
     <message>
-        <location filename="../ui/station/station_tiles.cpp" line="+199"/>
+        <location filename="../ui/station/station_tiles.cpp" line="+103"/>
         <source>%1 → %2</source>
         <translation>%1 → %2</translation>
     </message>
@@ -14293,7 +14489,7 @@ Is it a results database that ImuDesk wrote? Choose another file with Open….</
 <context>
     <name>imudesk::ui::StationView</name>
     <message>
-        <location filename="../ui/station/station_view.cpp" line="+272"/>
+        <location filename="../ui/station/station_view.cpp" line="+235"/>
         <location line="+78"/>
         <source>Production station</source>
         <translation>生产测试台</translation>
@@ -14505,7 +14701,7 @@ Is it a results database that ImuDesk wrote? Choose another file with Open….</
         <translation>%1（%2）</translation>
     </message>
     <message>
-        <location line="+33"/>
+        <location filename="../ui/station/station_view_tray.cpp" line="+31"/>
         <source>Wait for the run to end, or cancel it, before changing the simulated tray.</source>
         <translation>请等待运行结束或将其取消，然后再更改模拟托盘。</translation>
     </message>
@@ -14560,7 +14756,7 @@ Is it a results database that ImuDesk wrote? Choose another file with Open….</
         <translation>模块数量：</translation>
     </message>
     <message>
-        <location line="+47"/>
+        <location filename="../ui/station/station_view.cpp" line="+55"/>
         <source>Folder for the station&apos;s reports</source>
         <translation>生产测试台的报告文件夹</translation>
     </message>
@@ -15459,7 +15655,7 @@ Edit it (Edit…) and start again.</source>
 <context>
     <name>main</name>
     <message>
-        <location filename="../app/gui/main.cpp" line="+93"/>
+        <location filename="../app/gui/main.cpp" line="+94"/>
         <source>ImuDesk: a bench tool for HiPNUC IMU modules.</source>
         <translation>ImuDesk：HiPNUC IMU 模块测试工具。</translation>
     </message>
@@ -15524,12 +15720,12 @@ Edit it (Edit…) and start again.</source>
         <translation>在 ADDR:PORT（例如 127.0.0.1:8765）上启动实时桥接（工具 &gt; 实时桥接）：将已连接的设备发送到 Foxglove、Lichtblick 和 PlotJuggler。</translation>
     </message>
     <message>
-        <location line="+122"/>
+        <location line="+121"/>
         <source>Unknown panel &quot;%1&quot;; use configuration, recording, console, raw, commands, can or sync.</source>
         <translation>未知的面板“%1”；请使用 configuration、recording、console、raw、commands、can 或 sync。</translation>
     </message>
     <message>
-        <location line="-133"/>
+        <location line="-132"/>
         <source>Open the production station window; with PLAN (a test plan file), load that plan. With --screenshot the station window is saved.</source>
         <translation>打开生产测试台窗口；指定 PLAN（测试计划文件）时加载该计划。使用 --screenshot 时保存的是生产测试台窗口。</translation>
     </message>
@@ -15589,7 +15785,7 @@ Edit it (Edit…) and start again.</source>
         <translation>未知的运动方式“%1”；请使用 static、spin 或 tumble。</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+23"/>
         <location line="+26"/>
         <location line="+44"/>
         <source>ImuDesk</source>

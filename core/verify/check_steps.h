@@ -37,8 +37,19 @@ struct AttitudeCheck {
     Figure roll, pitch, heading;
     Eigen::Vector3d hardIronUt = Eigen::Vector3d::Zero();
     bool hardIronRemoved = false;
+    // The field the poses agreed on (when the heading was judged): its magnitude and inclination.
+    bool fieldKnown = false;
+    double fieldUt = 0, inclinationDeg = 0;
 };
 AttitudeCheck checkAttitude(std::vector<Pose> &poses, const AccFit &acc, const CheckOptions &options);
+
+// Step 5: the attitude while the module moves, against ImuDesk's reference filter
+// (reference_filter.h) started at the first still pose on the calibrated sensors.
+struct DynamicCheck {
+    Figure rmsDeg, maxDeg, lagMs;
+};
+DynamicCheck checkDynamic(const std::vector<MotionSample> &samples, const std::vector<Pose> &poses, const AccFit &acc,
+                          const GyroFit &gyro, const AttitudeCheck &attitude, const CheckOptions &options);
 
 // Student's t quantile (two-sided level `p`, e.g. 0.6827) for nu degrees of freedom, relative
 // to the normal's: what a sigma from n samples' spread is scaled by to hold its coverage.

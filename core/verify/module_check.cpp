@@ -30,7 +30,8 @@ constexpr NamedLimit kLimitNames[] = {
     {"acc_bias_mg", &Limits::accBiasMg},         {"acc_scale_error_pct", &Limits::accScalePct},
     {"acc_misalignment_deg", &Limits::accMisalignmentDeg}, {"gyro_bias_dps", &Limits::gyroBiasDps},
     {"gyro_scale_error_pct", &Limits::gyroScalePct}, {"tilt_deg", &Limits::tiltDeg},
-    {"heading_deg", &Limits::headingDeg},
+    {"heading_deg", &Limits::headingDeg},        {"dynamic_rms_deg", &Limits::dynamicRmsDeg},
+    {"lag_ms", &Limits::lagMs},
 };
 
 // One figure's judgement: the worst axis's.
@@ -178,8 +179,10 @@ CheckReport checkModule(const std::vector<MotionSample> &samples, const CheckOpt
     r.headingErrDeg = att.heading;
     r.hardIronUt = att.hardIronUt;
     r.hardIronRemoved = att.hardIronRemoved;
-    r.dynamicRmsDeg.why = r.dynamicMaxDeg.why = r.dynamicLagMs.why =
-        CheckReport::tr("not judged by this version: the attitude while the module moves needs a reference filter");
+    const DynamicCheck dyn = checkDynamic(samples, r.poses, acc, gyro, att, options);
+    r.dynamicRmsDeg = dyn.rmsDeg;
+    r.dynamicMaxDeg = dyn.maxDeg;
+    r.dynamicLagMs = dyn.lagMs;
 
     // The verdict: every figure judged, the worst decides.
     const Limits &l = options.limits;
@@ -200,10 +203,12 @@ CheckReport checkModule(const std::vector<MotionSample> &samples, const CheckOpt
     add1(CheckReport::tr("roll error"), QStringLiteral("°"), 3, r.rollErrDeg, l.tiltDeg);
     add1(CheckReport::tr("pitch error"), QStringLiteral("°"), 3, r.pitchErrDeg, l.tiltDeg);
     add1(CheckReport::tr("heading error"), QStringLiteral("°"), 2, r.headingErrDeg, l.headingDeg);
+    add1(CheckReport::tr("attitude error while moving (RMS)"), QStringLiteral("°"), 2, r.dynamicRmsDeg, l.dynamicRmsDeg);
+    add1(CheckReport::tr("attitude lag"), QStringLiteral("ms"), 1, r.dynamicLagMs, l.lagMs);
     // The gyro's scale (it needs turns about every axis) and the heading (a magnetometer) may
     // stay unjudged in a verdict; the accelerometer, the gyro's bias and the tilt may not.
-    judged[4].required = judged[7].required = false;
-    // (indices as added above: 4 gyro scale, 7 heading; sorted below)
+    // (indices as added above: 4 gyro scale, 7 heading, 8 and 9 the attitude while moving)
+    judged[4].required = judged[7].required = judged[8].required = judged[9].required = false;
     std::stable_sort(judged.begin(), judged.end(),
                      [](const Judged &a, const Judged &b) { return severity(a.verdict) > severity(b.verdict); });
     const bool missing = std::any_of(judged.begin(), judged.end(),

@@ -77,6 +77,8 @@ struct Limits {
     Limit gyroScalePct{0.5, 1.0};
     Limit tiltDeg{0.3, 1.0};
     Limit headingDeg{1.0, 2.5};
+    Limit dynamicRmsDeg{1.0, 3.0};  // the attitude while moving against the reference filter
+    Limit lagMs{20, 100};
     // By name ("acc_bias_mg", ...) for a user's --limit NAME=PASS/FAIL; nullptr for another.
     Limit *byName(const QString &name);
     static QStringList names();

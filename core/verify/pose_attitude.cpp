@@ -255,6 +255,9 @@ AttitudeCheck checkAttitude(std::vector<Pose> &poses, const AccFit &acc, const C
         return out;
     }
     out.heading = meanFigure(headingErr, 0.0);
+    out.fieldKnown = true;
+    out.fieldUt = medMagnitude;
+    out.inclinationDeg = medInclination;
     return out;
 }
 

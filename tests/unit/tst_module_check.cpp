@@ -197,6 +197,35 @@ private Q_SLOTS:
                                                                               : QLatin1String("accelerometer scale error")));
     }
 
+    // The attitude while moving: a module whose filter is 40 ms late shows that lag against the
+    // reference filter, a good one none and a small error.
+    void attitudeWhileMovingAndItsLag_data()
+    {
+        QTest::addColumn<double>("lagMs");
+        QTest::newRow("no lag") << 0.0;
+        QTest::newRow("40 ms") << 40.0;
+        QTest::newRow("120 ms") << 120.0;
+    }
+    void attitudeWhileMovingAndItsLag()
+    {
+        QFETCH(double, lagMs);
+        test::HandTurnedModule module;
+        module.seed = 71;
+        module.lagMs = lagMs;
+        const auto r = verify::checkModule(module.record(), simOptions());
+        QVERIFY2(r.dynamicLagMs.judged, qPrintable(r.dynamicLagMs.why));
+        QVERIFY2(std::fabs(r.dynamicLagMs.value - lagMs) < 3.0,
+                 qPrintable(QStringLiteral("lag %1 ms, sigma %2").arg(r.dynamicLagMs.value).arg(r.dynamicLagMs.sigma)));
+        QVERIFY(r.dynamicRmsDeg.judged);
+        if (lagMs == 0)
+            QVERIFY2(r.dynamicRmsDeg.value < 0.2 && r.dynamicMaxDeg.value < 1.0,
+                     qPrintable(QStringLiteral("RMS %1, max %2").arg(r.dynamicRmsDeg.value).arg(r.dynamicMaxDeg.value)));
+        else
+            QVERIFY2(r.dynamicRmsDeg.value > 1.0, qPrintable(QString::number(r.dynamicRmsDeg.value)));
+        // A late attitude is far off while a hand turns the module (hundreds of degrees a second).
+        QCOMPARE(r.verdict, lagMs > 0 ? verify::Verdict::Fail : verify::Verdict::Pass);
+    }
+
     // Waved about with no still pose: nothing is judged, and the reason says what to do.
     void noStillPoseCannotJudge()
     {
