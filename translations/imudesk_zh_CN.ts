@@ -1403,7 +1403,7 @@
         <translation>姿态之间的转动中，模块绕其 %1 轴转动不足：请在每个轴保持水平时绕该轴转动模块</translation>
     </message>
     <message>
-        <location filename="../core/verify/module_check.cpp" line="+68"/>
+        <location filename="../core/verify/module_check.cpp" line="+70"/>
         <source>pass</source>
         <translation>通过</translation>
     </message>
@@ -1423,7 +1423,7 @@
         <translation>无法判定</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+24"/>
         <source>%1: %2 ± %3 %4%5 (95 %), pass at most %6, fail above %7: %8</source>
         <translation>%1：%2 ± %3 %4%5（95 %），不超过 %6 为通过，超过 %7 为不合格：%8</translation>
     </message>
@@ -1433,7 +1433,7 @@
         <translation>%1：无法判定，%2</translation>
     </message>
     <message>
-        <location line="+32"/>
+        <location line="+40"/>
         <source>hold the module still for 3 s in each of at least %1 orientations (every face up and down, then between them)</source>
         <translation>请在至少 %1 个朝向上各让模块静止 3 s（每个面分别朝上和朝下，再加上介于它们之间的朝向）</translation>
     </message>
@@ -1454,7 +1454,7 @@
         <translation>这些姿态不足以确定加速度计的误差：%1</translation>
     </message>
     <message>
-        <location line="+33"/>
+        <location line="+40"/>
         <source>accelerometer bias</source>
         <translation>加速度计零偏</translation>
     </message>
@@ -1992,7 +1992,7 @@
 <context>
     <name>HipnucSerialUi</name>
     <message>
-        <location filename="../ui/families/hipnuc_serial_ui.cpp" line="+37"/>
+        <location filename="../ui/families/hipnuc_serial_ui.cpp" line="+38"/>
         <location line="+9"/>
         <source>Simulated %1 (firmware %2)</source>
         <translation>模拟 %1（固件 %2）</translation>
@@ -13137,6 +13137,14 @@ Default: %2</source>
     </message>
 </context>
 <context>
+    <name>imudesk::ui::PoseTiles</name>
+    <message>
+        <location filename="../ui/calibration/verify_module_wizard.cpp" line="+73"/>
+        <source>%1 up</source>
+        <translation>%1 朝上</translation>
+    </message>
+</context>
+<context>
     <name>imudesk::ui::PreferencesDialog</name>
     <message>
         <location filename="../ui/workspace/preferences_dialog.cpp" line="+23"/>
@@ -14873,7 +14881,7 @@ Edit it (Edit…) and start again.</source>
 <context>
     <name>imudesk::ui::ToolActions</name>
     <message>
-        <location filename="../ui/workspace/tool_actions.cpp" line="+122"/>
+        <location filename="../ui/workspace/tool_actions.cpp" line="+127"/>
         <source>&amp;Open capture…</source>
         <translation>打开记录(&amp;O)…</translation>
     </message>
@@ -15044,6 +15052,16 @@ Edit it (Edit…) and start again.</source>
     </message>
     <message>
         <location line="+13"/>
+        <source>&amp;Verify module…</source>
+        <translation>验证模块(&amp;V)…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Is the module right? Turn it through still poses: its accelerometer, gyro and attitude judged, each figure with its bounds</source>
+        <translation>模块是否正确？将它依次转到各个静止姿态：判定其加速度计、陀螺仪和姿态，每项数值都带有置信界限</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>&amp;Compass calibration…</source>
         <translation>罗盘校准(&amp;C)…</translation>
     </message>
@@ -15073,7 +15091,7 @@ Edit it (Edit…) and start again.</source>
         <translation>校准(&amp;C)</translation>
     </message>
     <message>
-        <location line="+66"/>
+        <location line="+67"/>
         <source>%1: its capture %2 is missing.</source>
         <translation>%1：其记录 %2 缺失。</translation>
     </message>
@@ -15558,6 +15576,235 @@ Edit it (Edit…) and start again.</source>
         <location line="-37"/>
         <source>The user guide is not part of this build. It is docs/USER_GUIDE.md in ImuDesk&apos;s source.</source>
         <translation>此版本未包含用户指南。它位于 ImuDesk 源代码中的 docs/USER_GUIDE.md。</translation>
+    </message>
+</context>
+<context>
+    <name>imudesk::ui::VerifyModuleWizard</name>
+    <message>
+        <location filename="../ui/calibration/verify_module_wizard.cpp" line="+47"/>
+        <source>Verify module</source>
+        <translation>验证模块</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Turn the module through still poses</source>
+        <translation>将模块依次转到各个静止姿态</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Press Start, then hold the module still for 3 s in each orientation below (every face up and down, then between them) and turn it to the next; the order does not matter. 9 poses are needed, 12 give the best figures. Keep it away from steel and magnets.</source>
+        <translation>按“开始”，然后让模块在下面每个朝向（每个面朝上和朝下，再加上它们之间的朝向）各保持静止 3 s，再转到下一个；顺序不限。至少需要 9 个姿态，12 个可得到最好的结果。请远离钢铁和磁铁。</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>The bench&apos;s latitude (degrees, north positive): its normal gravity, WGS 84</source>
+        <translation>测试台所在纬度（度，北纬为正）：用于计算 WGS 84 正常重力</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>The bench&apos;s height above the ellipsoid (metres)</source>
+        <translation>测试台的椭球高（米）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Measured gravity:</source>
+        <translation>实测重力：</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>The bench&apos;s gravity from a survey (m/s²), instead of latitude and height</source>
+        <translation>测量得到的测试台重力值（m/s²），代替纬度和高度</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>height</source>
+        <translation>高度</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Bench latitude:</source>
+        <translation>测试台纬度：</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <location line="+179"/>
+        <source>Press Start.</source>
+        <translation>请按“开始”。</translation>
+    </message>
+    <message>
+        <location line="-169"/>
+        <source>%v of 12 poses</source>
+        <translation>%v / 12 个姿态</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Start</source>
+        <translation>开始</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Start recording the poses (Ctrl+R)</source>
+        <translation>开始记录姿态（Ctrl+R）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Stop</source>
+        <translation>停止</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Result</source>
+        <translation>结果</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Figure</source>
+        <translation>项目</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Value</source>
+        <translation>数值</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>95 % bound</source>
+        <translation>95 % 界限</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Limits (pass / fail)</source>
+        <translation>限值（通过 / 不合格）</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Verdict</source>
+        <translation>判定</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Export report (PDF)…</source>
+        <translation>导出报告（PDF）…</translation>
+    </message>
+    <message>
+        <location line="+86"/>
+        <source>The recording is full (%1 samples): press Next.</source>
+        <translation>记录已满（%1 个样本）：请按“下一步”。</translation>
+    </message>
+    <message>
+        <location line="+47"/>
+        <source>Recorded: press Next for the result.</source>
+        <translation>已记录：按“下一步”查看结果。</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Stopped: press Start to record again, or Next to judge what was recorded.</source>
+        <translation>已停止：按“开始”重新记录，或按“下一步”判定已记录的数据。</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Turn the module to the next pose.</source>
+        <translation>将模块转到下一个姿态。</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Hold still: %1 s</source>
+        <translation>保持静止：%1 s</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Pose recorded: turn to the next.</source>
+        <translation>姿态已记录：转到下一个。</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 distinct poses held (9 needed, 12 suggested); %2 s recorded, %3 samples.</source>
+        <translation>已保持 %1 个不同姿态（至少 9 个，建议 12 个）；已记录 %2 s，%3 个样本。</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Nothing recorded yet: press Start and turn the module through the poses.</source>
+        <translation>尚未记录：请按“开始”并将模块依次转到各个姿态。</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>Verdict: %1</source>
+        <translation>判定：%1</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>Accelerometer bias (mg; X, Y, Z)</source>
+        <translation>加速度计零偏（mg；X、Y、Z）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Accelerometer scale error (%; X, Y, Z)</source>
+        <translation>加速度计标度因数误差（%；X、Y、Z）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Accelerometer misalignment, largest (°)</source>
+        <translation>加速度计轴间失准，最大值（°）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Gyro bias (°/s; X, Y, Z)</source>
+        <translation>陀螺仪零偏（°/s；X、Y、Z）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Gyro scale error (%; X, Y, Z)</source>
+        <translation>陀螺仪标度因数误差（%；X、Y、Z）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Roll error (°)</source>
+        <translation>横滚误差（°）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Pitch error (°)</source>
+        <translation>俯仰误差（°）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Heading error (°)</source>
+        <translation>航向误差（°）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Attitude error while moving, RMS (°)</source>
+        <translation>运动中的姿态误差，RMS（°）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Attitude lag (ms)</source>
+        <translation>姿态滞后（ms）</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>%1 still intervals, %2 distinct poses, gravity %3 m/s²</source>
+        <translation>%1 个静止区间，%2 个不同姿态，重力 %3 m/s²</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Verify module wizard</source>
+        <translation>验证模块向导</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>Export report</source>
+        <translation>导出报告</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>PDF (*.pdf)</source>
+        <translation>PDF (*.pdf)</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Report written to %1</source>
+        <translation>报告已写入 %1</translation>
     </message>
 </context>
 <context>

@@ -1403,7 +1403,7 @@
         <translation>姿態之間的轉動中，模組繞其 %1 軸轉動不足：請在每個軸保持水平時繞該軸轉動模組</translation>
     </message>
     <message>
-        <location filename="../core/verify/module_check.cpp" line="+68"/>
+        <location filename="../core/verify/module_check.cpp" line="+70"/>
         <source>pass</source>
         <translation>通過</translation>
     </message>
@@ -1423,7 +1423,7 @@
         <translation>無法判定</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+24"/>
         <source>%1: %2 ± %3 %4%5 (95 %), pass at most %6, fail above %7: %8</source>
         <translation>%1：%2 ± %3 %4%5（95 %），不超過 %6 為通過，超過 %7 為不合格：%8</translation>
     </message>
@@ -1433,7 +1433,7 @@
         <translation>%1：無法判定，%2</translation>
     </message>
     <message>
-        <location line="+32"/>
+        <location line="+40"/>
         <source>hold the module still for 3 s in each of at least %1 orientations (every face up and down, then between them)</source>
         <translation>請在至少 %1 個朝向上各讓模組靜止 3 s（每個面分別朝上和朝下，再加上介於它們之間的朝向）</translation>
     </message>
@@ -1454,7 +1454,7 @@
         <translation>這些姿態不足以確定加速度計的誤差：%1</translation>
     </message>
     <message>
-        <location line="+33"/>
+        <location line="+40"/>
         <source>accelerometer bias</source>
         <translation>加速度計零偏</translation>
     </message>
@@ -1992,7 +1992,7 @@
 <context>
     <name>HipnucSerialUi</name>
     <message>
-        <location filename="../ui/families/hipnuc_serial_ui.cpp" line="+37"/>
+        <location filename="../ui/families/hipnuc_serial_ui.cpp" line="+38"/>
         <location line="+9"/>
         <source>Simulated %1 (firmware %2)</source>
         <translation>模擬 %1（韌體 %2）</translation>
@@ -13137,6 +13137,14 @@ Default: %2</source>
     </message>
 </context>
 <context>
+    <name>imudesk::ui::PoseTiles</name>
+    <message>
+        <location filename="../ui/calibration/verify_module_wizard.cpp" line="+73"/>
+        <source>%1 up</source>
+        <translation>%1 朝上</translation>
+    </message>
+</context>
+<context>
     <name>imudesk::ui::PreferencesDialog</name>
     <message>
         <location filename="../ui/workspace/preferences_dialog.cpp" line="+23"/>
@@ -14873,7 +14881,7 @@ Edit it (Edit…) and start again.</source>
 <context>
     <name>imudesk::ui::ToolActions</name>
     <message>
-        <location filename="../ui/workspace/tool_actions.cpp" line="+122"/>
+        <location filename="../ui/workspace/tool_actions.cpp" line="+127"/>
         <source>&amp;Open capture…</source>
         <translation>開啟記錄檔(&amp;O)…</translation>
     </message>
@@ -15044,6 +15052,16 @@ Edit it (Edit…) and start again.</source>
     </message>
     <message>
         <location line="+13"/>
+        <source>&amp;Verify module…</source>
+        <translation>驗證模組(&amp;V)…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Is the module right? Turn it through still poses: its accelerometer, gyro and attitude judged, each figure with its bounds</source>
+        <translation>模組是否正確？將它依次轉到各個靜止姿態：判定其加速度計、陀螺儀和姿態，每項數值都帶有信賴界限</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>&amp;Compass calibration…</source>
         <translation>羅盤校準(&amp;C)…</translation>
     </message>
@@ -15073,7 +15091,7 @@ Edit it (Edit…) and start again.</source>
         <translation>校準(&amp;C)</translation>
     </message>
     <message>
-        <location line="+66"/>
+        <location line="+67"/>
         <source>%1: its capture %2 is missing.</source>
         <translation>%1：其記錄 %2 遺失。</translation>
     </message>
@@ -15558,6 +15576,235 @@ Edit it (Edit…) and start again.</source>
         <location line="-37"/>
         <source>The user guide is not part of this build. It is docs/USER_GUIDE.md in ImuDesk&apos;s source.</source>
         <translation>此版本未包含使用者指南。它位於 ImuDesk 原始碼中的 docs/USER_GUIDE.md。</translation>
+    </message>
+</context>
+<context>
+    <name>imudesk::ui::VerifyModuleWizard</name>
+    <message>
+        <location filename="../ui/calibration/verify_module_wizard.cpp" line="+47"/>
+        <source>Verify module</source>
+        <translation>驗證模組</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Turn the module through still poses</source>
+        <translation>將模組依次轉到各個靜止姿態</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Press Start, then hold the module still for 3 s in each orientation below (every face up and down, then between them) and turn it to the next; the order does not matter. 9 poses are needed, 12 give the best figures. Keep it away from steel and magnets.</source>
+        <translation>按「開始」，然後讓模組在下面每個朝向（每個面朝上和朝下，再加上它們之間的朝向）各保持靜止 3 s，再轉到下一個；順序不限。至少需要 9 個姿態，12 個可得到最好的結果。請遠離鋼鐵和磁鐵。</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>The bench&apos;s latitude (degrees, north positive): its normal gravity, WGS 84</source>
+        <translation>測試台所在緯度（度，北緯為正）：用於計算 WGS 84 正常重力</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>The bench&apos;s height above the ellipsoid (metres)</source>
+        <translation>測試台的橢球高（公尺）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Measured gravity:</source>
+        <translation>實測重力：</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>The bench&apos;s gravity from a survey (m/s²), instead of latitude and height</source>
+        <translation>測量得到的測試台重力值（m/s²），取代緯度和高度</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>height</source>
+        <translation>高度</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Bench latitude:</source>
+        <translation>測試台緯度：</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <location line="+179"/>
+        <source>Press Start.</source>
+        <translation>請按「開始」。</translation>
+    </message>
+    <message>
+        <location line="-169"/>
+        <source>%v of 12 poses</source>
+        <translation>%v / 12 個姿態</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Start</source>
+        <translation>開始</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Start recording the poses (Ctrl+R)</source>
+        <translation>開始記錄姿態（Ctrl+R）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Stop</source>
+        <translation>停止</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Result</source>
+        <translation>結果</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Figure</source>
+        <translation>項目</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Value</source>
+        <translation>數值</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>95 % bound</source>
+        <translation>95 % 界限</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Limits (pass / fail)</source>
+        <translation>限值（通過 / 不合格）</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Verdict</source>
+        <translation>判定</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Export report (PDF)…</source>
+        <translation>匯出報告（PDF）…</translation>
+    </message>
+    <message>
+        <location line="+86"/>
+        <source>The recording is full (%1 samples): press Next.</source>
+        <translation>記錄已滿（%1 個樣本）：請按「下一步」。</translation>
+    </message>
+    <message>
+        <location line="+47"/>
+        <source>Recorded: press Next for the result.</source>
+        <translation>已記錄：按「下一步」查看結果。</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Stopped: press Start to record again, or Next to judge what was recorded.</source>
+        <translation>已停止：按「開始」重新記錄，或按「下一步」判定已記錄的資料。</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Turn the module to the next pose.</source>
+        <translation>將模組轉到下一個姿態。</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Hold still: %1 s</source>
+        <translation>保持靜止：%1 s</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Pose recorded: turn to the next.</source>
+        <translation>姿態已記錄：轉到下一個。</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 distinct poses held (9 needed, 12 suggested); %2 s recorded, %3 samples.</source>
+        <translation>已保持 %1 個不同姿態（至少 9 個，建議 12 個）；已記錄 %2 s，%3 個樣本。</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Nothing recorded yet: press Start and turn the module through the poses.</source>
+        <translation>尚未記錄：請按「開始」並將模組依次轉到各個姿態。</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>Verdict: %1</source>
+        <translation>判定：%1</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>Accelerometer bias (mg; X, Y, Z)</source>
+        <translation>加速度計零偏（mg；X、Y、Z）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Accelerometer scale error (%; X, Y, Z)</source>
+        <translation>加速度計標度誤差（%；X、Y、Z）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Accelerometer misalignment, largest (°)</source>
+        <translation>加速度計軸間失準，最大值（°）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Gyro bias (°/s; X, Y, Z)</source>
+        <translation>陀螺儀零偏（°/s；X、Y、Z）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Gyro scale error (%; X, Y, Z)</source>
+        <translation>陀螺儀標度誤差（%；X、Y、Z）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Roll error (°)</source>
+        <translation>橫滾誤差（°）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Pitch error (°)</source>
+        <translation>俯仰誤差（°）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Heading error (°)</source>
+        <translation>航向誤差（°）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Attitude error while moving, RMS (°)</source>
+        <translation>運動中的姿態誤差，RMS（°）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Attitude lag (ms)</source>
+        <translation>姿態延遲（ms）</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>%1 still intervals, %2 distinct poses, gravity %3 m/s²</source>
+        <translation>%1 個靜止區間，%2 個不同姿態，重力 %3 m/s²</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Verify module wizard</source>
+        <translation>驗證模組精靈</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>Export report</source>
+        <translation>匯出報告</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>PDF (*.pdf)</source>
+        <translation>PDF (*.pdf)</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Report written to %1</source>
+        <translation>報告已寫入 %1</translation>
     </message>
 </context>
 <context>

@@ -62,7 +62,9 @@ int severity(Verdict v)
     return 0;
 }
 
-QString verdictWord(Verdict v)
+} // namespace
+
+QString verdictText(Verdict v)
 {
     switch (v) {
     case Verdict::Pass: return CheckReport::tr("pass");
@@ -72,6 +74,8 @@ QString verdictWord(Verdict v)
     }
     return {};
 }
+
+namespace {
 
 // "accelerometer bias: 12.3 ± 0.8 mg (Z; 95 %), pass at most 10, fail above 25: warn".
 Judged judgeFigure(const QString &what, const QString &unit, int decimals, const Eigen::Vector3d &value,
@@ -97,7 +101,7 @@ Judged judgeFigure(const QString &what, const QString &unit, int decimals, const
                  .arg(unit, axis)
                  .arg(limit.pass)
                  .arg(limit.fail)
-                 .arg(verdictWord(v));
+                 .arg(verdictText(v));
     return j;
 }
 
@@ -122,6 +126,14 @@ QStringList Limits::names()
     for (const NamedLimit &n : kLimitNames)
         out << QLatin1String(n.name);
     return out;
+}
+
+Verdict CheckReport::figureVerdict(const QString &limitName) const
+{
+    for (const auto &[name, verdict] : figureVerdicts)
+        if (name == limitName)
+            return verdict;
+    return Verdict::CannotJudge;
 }
 
 CheckReport checkModule(const std::vector<MotionSample> &samples, const CheckOptions &options)
@@ -187,24 +199,31 @@ CheckReport checkModule(const std::vector<MotionSample> &samples, const CheckOpt
     // The verdict: every figure judged, the worst decides.
     const Limits &l = options.limits;
     std::vector<Judged> judged;
-    auto add3 = [&](const QString &what, const QString &unit, int decimals, const Figure3 &f, const Limit &limit) {
-        judged.push_back(f.judged ? judgeFigure(what, unit, decimals, f.value, f.sigma, 3, limit) : notJudged(what, f.why));
+    auto note = [&r, &judged](const char *key) {
+        r.figureVerdicts.emplace_back(QLatin1String(key), judged.back().verdict);
     };
-    auto add1 = [&](const QString &what, const QString &unit, int decimals, const Figure &f, const Limit &limit) {
+    auto add3 = [&](const char *key, const QString &what, const QString &unit, int decimals, const Figure3 &f,
+                    const Limit &limit) {
+        judged.push_back(f.judged ? judgeFigure(what, unit, decimals, f.value, f.sigma, 3, limit) : notJudged(what, f.why));
+        note(key);
+    };
+    auto add1 = [&](const char *key, const QString &what, const QString &unit, int decimals, const Figure &f,
+                    const Limit &limit) {
         judged.push_back(f.judged ? judgeFigure(what, unit, decimals, Eigen::Vector3d(f.value, 0, 0),
                                                 Eigen::Vector3d(f.sigma, 0, 0), 1, limit)
                                   : notJudged(what, f.why));
+        note(key);
     };
-    add3(CheckReport::tr("accelerometer bias"), QStringLiteral("mg"), 2, r.accBiasMg, l.accBiasMg);
-    add3(CheckReport::tr("accelerometer scale error"), QStringLiteral("%"), 3, r.accScalePct, l.accScalePct);
-    add1(CheckReport::tr("accelerometer misalignment"), QStringLiteral("°"), 3, r.accMisalignmentDeg, l.accMisalignmentDeg);
-    add3(CheckReport::tr("gyro bias"), QStringLiteral("°/s"), 3, r.gyroBiasDps, l.gyroBiasDps);
-    add3(CheckReport::tr("gyro scale error"), QStringLiteral("%"), 3, r.gyroScalePct, l.gyroScalePct);
-    add1(CheckReport::tr("roll error"), QStringLiteral("°"), 3, r.rollErrDeg, l.tiltDeg);
-    add1(CheckReport::tr("pitch error"), QStringLiteral("°"), 3, r.pitchErrDeg, l.tiltDeg);
-    add1(CheckReport::tr("heading error"), QStringLiteral("°"), 2, r.headingErrDeg, l.headingDeg);
-    add1(CheckReport::tr("attitude error while moving (RMS)"), QStringLiteral("°"), 2, r.dynamicRmsDeg, l.dynamicRmsDeg);
-    add1(CheckReport::tr("attitude lag"), QStringLiteral("ms"), 1, r.dynamicLagMs, l.lagMs);
+    add3("acc_bias_mg", CheckReport::tr("accelerometer bias"), QStringLiteral("mg"), 2, r.accBiasMg, l.accBiasMg);
+    add3("acc_scale_error_pct", CheckReport::tr("accelerometer scale error"), QStringLiteral("%"), 3, r.accScalePct, l.accScalePct);
+    add1("acc_misalignment_deg", CheckReport::tr("accelerometer misalignment"), QStringLiteral("°"), 3, r.accMisalignmentDeg, l.accMisalignmentDeg);
+    add3("gyro_bias_dps", CheckReport::tr("gyro bias"), QStringLiteral("°/s"), 3, r.gyroBiasDps, l.gyroBiasDps);
+    add3("gyro_scale_error_pct", CheckReport::tr("gyro scale error"), QStringLiteral("%"), 3, r.gyroScalePct, l.gyroScalePct);
+    add1("roll_deg", CheckReport::tr("roll error"), QStringLiteral("°"), 3, r.rollErrDeg, l.tiltDeg);
+    add1("pitch_deg", CheckReport::tr("pitch error"), QStringLiteral("°"), 3, r.pitchErrDeg, l.tiltDeg);
+    add1("heading_deg", CheckReport::tr("heading error"), QStringLiteral("°"), 2, r.headingErrDeg, l.headingDeg);
+    add1("dynamic_rms_deg", CheckReport::tr("attitude error while moving (RMS)"), QStringLiteral("°"), 2, r.dynamicRmsDeg, l.dynamicRmsDeg);
+    add1("lag_ms", CheckReport::tr("attitude lag"), QStringLiteral("ms"), 1, r.dynamicLagMs, l.lagMs);
     // The gyro's scale (it needs turns about every axis) and the heading (a magnetometer) may
     // stay unjudged in a verdict; the accelerometer, the gyro's bias and the tilt may not.
     // (indices as added above: 4 gyro scale, 7 heading, 8 and 9 the attitude while moving)

@@ -49,6 +49,7 @@ struct MotionSample {
 
 enum class Verdict { Pass, Warn, Fail, CannotJudge };
 const char *verdictName(Verdict v); // "pass", "warn", "fail", "cannot judge"
+QString verdictText(Verdict v);     // the same, translated
 
 // One figure: its value and 1-sigma, or why it cannot be judged.
 struct Figure {
@@ -142,6 +143,9 @@ public:
 
     Verdict verdict = Verdict::CannotJudge;
     QStringList reasons;                  // every figure's judgement in words, worst first
+    // Each figure's own verdict by its limit's name ("acc_bias_mg", ... Limits::names()).
+    std::vector<std::pair<QString, Verdict>> figureVerdicts;
+    Verdict figureVerdict(const QString &limitName) const;
 };
 
 // The whole check on a recording (samples in time order).

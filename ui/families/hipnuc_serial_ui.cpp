@@ -2,6 +2,7 @@
 
 #include "calibration/attitude_reset_wizard.h"
 #include "calibration/gyro_scale_wizard.h"
+#include "calibration/verify_module_wizard.h"
 #include "calibration/mag_calibration_wizard.h"
 #include "configuration/config_panel.h"
 #include "configuration/profile_dialog.h"
@@ -131,6 +132,8 @@ void HipnucSerialUi::decorate(DeviceWorkspace &ws, device::DeviceLink &link, con
                  [&ws, session](QWidget *parent) { showWizard(ws, new GyroScaleWizard(*session, parent)); });
     ws.offerTool(DeviceWorkspace::LinkTool::AttitudeReset,
                  [&ws, session](QWidget *parent) { showWizard(ws, new AttitudeResetWizard(*session, parent)); });
+    ws.offerTool(DeviceWorkspace::LinkTool::VerifyModule,
+                 [&ws, session](QWidget *parent) { showWizard(ws, new VerifyModuleWizard(*session, parent)); });
     // The settings table (the workspace's settings dock, Capability::Settings), which names the
     // port in its advice; the rate as soon as a detection finds it.
     auto *panel = new ConfigPanel(*session);

@@ -105,6 +105,7 @@ public:
         MagCalibration,
         GyroCalibration,
         AttitudeReset,
+        VerifyModule,
     };
     using ToolRunner = std::function<void(QWidget *dialogParent)>;
     void offerTool(LinkTool tool, ToolRunner run);

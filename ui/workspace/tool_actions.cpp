@@ -83,6 +83,9 @@ ToolActions::ToolActions(ToolHost *host, QObject *parent) : QObject(parent), m_h
     connect(m_gyroCal, &QAction::triggered, this, linkTool(Tool::GyroCalibration));
     m_attitudeReset = make("attitudeResetAction");
     connect(m_attitudeReset, &QAction::triggered, this, linkTool(Tool::AttitudeReset));
+    m_verifyModule = make("verifyModuleAction");
+    m_verifyModule->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_V));
+    connect(m_verifyModule, &QAction::triggered, this, linkTool(Tool::VerifyModule));
     m_compassCal = make("compassCalAction");
     connect(m_compassCal, &QAction::triggered, this, linkTool(Tool::CompassCalibration));
     m_calHistory = make("calibrationHistoryAction");
@@ -109,6 +112,8 @@ void ToolActions::addToMenus(QMenu *fileMenu, QMenu *deviceMenu, QMenu *calibrat
     deviceMenu->addActions({m_configuration, m_profiles, m_record, m_recordAll, m_firmware});
     m_calibrateMenu = calibrateMenu;
     calibrateMenu->addActions({m_magCal, m_gyroCal, m_attitudeReset});
+    calibrateMenu->addSeparator();
+    calibrateMenu->addAction(m_verifyModule);
     calibrateMenu->addSeparator();
     calibrateMenu->addAction(m_compassCal);
     calibrateMenu->addSeparator();
@@ -154,6 +159,9 @@ void ToolActions::retranslate()
     m_gyroCal->setStatusTip(tr("Turn the module a known angle about Z to correct the gyro's scale (CONFIG USRCAL)"));
     m_attitudeReset->setText(tr("&Attitude reset / level…"));
     m_attitudeReset->setStatusTip(tr("Zero the heading or level the module (ATT RST), after checking that it is still"));
+    m_verifyModule->setText(tr("&Verify module…"));
+    m_verifyModule->setStatusTip(tr("Is the module right? Turn it through still poses: its accelerometer, gyro and attitude "
+                                    "judged, each figure with its bounds"));
     m_compassCal->setText(tr("&Compass calibration…"));
     m_compassCal->setStatusTip(tr("The compass's own calibration methods, with the target poses to turn it to"));
     m_calHistory->setText(tr("Calibration &history…"));
@@ -189,6 +197,7 @@ void ToolActions::update(const DeviceWorkspace *ws)
     m_magCal->setEnabled(connected && hasMag && ws->offersTool(Tool::MagCalibration));
     m_gyroCal->setEnabled(connected && ws->offersTool(Tool::GyroCalibration));
     m_attitudeReset->setEnabled(connected && ws->offersTool(Tool::AttitudeReset));
+    m_verifyModule->setEnabled(connected && ws->offersTool(Tool::VerifyModule));
     m_compassCal->setEnabled(connected && ws->offersTool(Tool::CompassCalibration));
     // The update opens the port or the bus itself; the link's family offers it (a HiPNUC module
     // on its serial port or on a CANopen bus).

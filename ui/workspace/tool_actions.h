@@ -51,6 +51,7 @@ public:
     QAction *magCalAction() const { return m_magCal; }
     QAction *gyroCalAction() const { return m_gyroCal; }
     QAction *attitudeResetAction() const { return m_attitudeReset; }
+    QAction *verifyModuleAction() const { return m_verifyModule; }
     QAction *compassCalAction() const { return m_compassCal; }
     QAction *calHistoryAction() const { return m_calHistory; }
 
@@ -101,6 +102,7 @@ private:
     QAction *m_magCal = nullptr;
     QAction *m_gyroCal = nullptr;
     QAction *m_attitudeReset = nullptr;
+    QAction *m_verifyModule = nullptr;
     QAction *m_compassCal = nullptr;
     QAction *m_calHistory = nullptr;
     QString m_lastRecording;
