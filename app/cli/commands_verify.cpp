@@ -6,6 +6,7 @@
 #include "record/sample_file.h"
 #include "verify/local_gravity.h"
 #include "verify/motion_input.h"
+#include "verify/report_json.h"
 
 #include <QDir>
 #include <QFileInfo>
@@ -24,89 +25,6 @@ namespace {
 constexpr const char *kUsage =
     "imudesk-cli verify CAPTURE|SESSION|PORT [--gravity M_S2 | --latitude DEG --height M] [--declination DEG] "
     "[--device NAME] [--duration S] [--baud B] [--limit NAME=PASS/FAIL ...] [--json]";
-
-QJsonValue number(double v, bool judged)
-{
-    return judged && std::isfinite(v) ? QJsonValue(v) : QJsonValue();
-}
-
-QJsonValue triple(const Eigen::Vector3d &v, bool judged)
-{
-    if (!judged)
-        return QJsonValue();
-    return QJsonArray{v.x(), v.y(), v.z()};
-}
-
-void putFigure3(QJsonObject &o, const char *name, const verify::Figure3 &f)
-{
-    const QString key = QLatin1String(name);
-    o[key] = triple(f.value, f.judged);
-    o[key + QLatin1String("_sigma")] = triple(f.sigma, f.judged);
-    if (!f.judged)
-        o[key + QLatin1String("_why")] = f.why;
-}
-
-void putFigure(QJsonObject &o, const QString &key, const verify::Figure &f)
-{
-    o[key] = number(f.value, f.judged);
-    o[key + QLatin1String("_sigma")] = number(f.sigma, f.judged);
-    if (!f.judged)
-        o[key + QLatin1String("_why")] = f.why;
-}
-
-QJsonObject reportJson(const verify::CheckReport &r, const QString &source)
-{
-    QJsonObject o;
-    o[QStringLiteral("source")] = source;
-    o[QStringLiteral("samples")] = double(r.samples);
-    o[QStringLiteral("duration_s")] = r.durationS;
-    o[QStringLiteral("still_intervals")] = int(r.poses.size());
-    o[QStringLiteral("poses")] = r.distinctPoses;
-    o[QStringLiteral("gravity_m_s2")] = r.gravityG * model::kGravity;
-    o[QStringLiteral("gravity_given")] = r.gravityGiven;
-    putFigure3(o, "acc_bias_mg", r.accBiasMg);
-    putFigure3(o, "acc_scale_error_pct", r.accScalePct);
-    putFigure(o, QStringLiteral("acc_misalignment_deg"), r.accMisalignmentDeg);
-    o[QStringLiteral("acc_misalignment_axes_deg")] =
-        r.accMisalignmentDeg.judged ? QJsonValue(QJsonObject{{QStringLiteral("xy"), r.accMisalignmentAxesDeg.x()},
-                                                             {QStringLiteral("xz"), r.accMisalignmentAxesDeg.y()},
-                                                             {QStringLiteral("yz"), r.accMisalignmentAxesDeg.z()}})
-                                    : QJsonValue();
-    if (r.accBiasMg.judged)
-        o[QStringLiteral("acc_fit_residual_mg")] = r.accResidualMg;
-    putFigure3(o, "gyro_bias_dps", r.gyroBiasDps);
-    putFigure3(o, "gyro_scale_error_pct", r.gyroScalePct);
-    o[QStringLiteral("gyro_turns")] = r.gyroTurns;
-    QJsonObject att;
-    putFigure(att, QStringLiteral("roll"), r.rollErrDeg);
-    putFigure(att, QStringLiteral("pitch"), r.pitchErrDeg);
-    putFigure(att, QStringLiteral("heading"), r.headingErrDeg);
-    o[QStringLiteral("attitude_error_deg")] = att;
-    QJsonObject dyn;
-    putFigure(dyn, QStringLiteral("rms_deg"), r.dynamicRmsDeg);
-    putFigure(dyn, QStringLiteral("max_deg"), r.dynamicMaxDeg);
-    putFigure(dyn, QStringLiteral("lag_ms"), r.dynamicLagMs);
-    o[QStringLiteral("dynamic")] = dyn;
-    if (r.hardIronRemoved)
-        o[QStringLiteral("hard_iron_removed_ut")] = QJsonArray{r.hardIronUt.x(), r.hardIronUt.y(), r.hardIronUt.z()};
-    QJsonArray poses;
-    for (const verify::Pose &p : r.poses) {
-        QJsonObject j{{QStringLiteral("from_s"), p.fromS},
-                      {QStringLiteral("to_s"), p.toS},
-                      {QStringLiteral("distinct"), p.distinct},
-                      {QStringLiteral("acc_g"), QJsonArray{p.acc.x(), p.acc.y(), p.acc.z()}},
-                      {QStringLiteral("roll_error_deg"), number(p.rollErrDeg, p.tiltUsed)},
-                      {QStringLiteral("pitch_error_deg"), number(p.pitchErrDeg, p.tiltUsed)},
-                      {QStringLiteral("heading_error_deg"), number(p.headingErrDeg, p.headingUsed)}};
-        if (!p.setAside.isEmpty())
-            j[QStringLiteral("set_aside")] = p.setAside;
-        poses.append(j);
-    }
-    o[QStringLiteral("pose_list")] = poses;
-    o[QStringLiteral("verdict")] = QString::fromLatin1(verify::verdictName(r.verdict));
-    o[QStringLiteral("reasons")] = QJsonArray::fromStringList(r.reasons);
-    return o;
-}
 
 void printText(const verify::CheckReport &r, const QString &source)
 {
@@ -289,7 +207,7 @@ int cmdVerify(const QStringList &args)
 
     const verify::CheckReport report = verify::checkModule(input.samples(), options);
     if (p.isSet(QStringLiteral("json")))
-        outRaw(QJsonDocument(reportJson(report, source)).toJson(QJsonDocument::Compact).toStdString());
+        outRaw(QJsonDocument(verify::toJson(report, source)).toJson(QJsonDocument::Compact).toStdString());
     else
         printText(report, source);
     std::fflush(stdout);
