@@ -67,7 +67,7 @@
 <context>
     <name>imudesk::station::ModuleRunner</name>
     <message numerus="yes">
-        <location filename="../core/station/module_runner.cpp" line="+507"/>
+        <location filename="../core/station/module_runner.cpp" line="+509"/>
         <source>%n setting(s) applied and read back</source>
         <translation>
             <numerusform>%n setting applied and read back</numerusform>

@@ -7202,13 +7202,13 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
     <message>
         <location line="+1"/>
-        <location line="+232"/>
+        <location line="+234"/>
         <location line="+1"/>
         <source>(none)</source>
         <translation>（无）</translation>
     </message>
     <message>
-        <location line="-215"/>
+        <location line="-217"/>
         <source>could not connect to %1: %2</source>
         <translation>无法连接到 %1：%2</translation>
     </message>
@@ -7218,7 +7218,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>模块在“%1”期间断开（%2）：请检查其线缆；其他模块继续测试</translation>
     </message>
     <message>
-        <location line="+87"/>
+        <location line="+89"/>
         <source>%1; marginal: %2</source>
         <translation>%1；临界：%2</translation>
     </message>
@@ -7362,7 +7362,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>%2 s 内仅有 %1 个样本：请开启模块的输出（HI91，至少 10 Hz）</translation>
     </message>
     <message>
-        <location line="+38"/>
+        <location line="+39"/>
         <source>cannot judge: %1 (%2). Keep the module still on the fixture and test it again.</source>
         <translation>无法判定：%1（%2）。请让模块在夹具上保持静止后重新测试。</translation>
     </message>
@@ -7426,6 +7426,16 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <source>the recording stopped: %1</source>
         <translation>记录已停止：%1</translation>
     </message>
+    <message>
+        <location filename="../core/station/module_runner_verify.cpp" line="+42"/>
+        <source>cannot judge: %1</source>
+        <translation>无法判定：%1</translation>
+    </message>
+    <message>
+        <location line="+29"/>
+        <source>%1 poses; %2</source>
+        <translation>%1 个姿态；%2</translation>
+    </message>
 </context>
 <context>
     <name>imudesk::station::RunFolder</name>
@@ -7453,7 +7463,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::station::TestPlan</name>
     <message>
-        <location filename="../core/station/test_plan.cpp" line="+98"/>
+        <location filename="../core/station/test_plan.cpp" line="+99"/>
         <source>Identify</source>
         <translation>识别</translation>
     </message>
@@ -7491,6 +7501,11 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <location line="+1"/>
         <source>Gyro scale factor</source>
         <translation>陀螺仪标度因数</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Verify module</source>
+        <translation>验证模块</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -7543,7 +7558,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>在转台上：正反方向各转两圈；陀螺仪标度因数误差低于限值。</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
+        <source>Turned through at least 9 still poses (by hand or a fixture): the accelerometer&apos;s bias and scale, the gyro&apos;s bias and scale and the attitude&apos;s tilt and heading, each within its limit.</source>
+        <translation>依次转到至少 9 个静止姿态（手持或用夹具）：加速度计的零偏和标度因数、陀螺仪的零偏和标度因数以及姿态的倾角和航向，各自在限值之内。</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>SAVECONFIG: the module keeps its settings after a restart.</source>
         <translation>SAVECONFIG：模块重启后保留其设置。</translation>
     </message>
@@ -7616,12 +7636,13 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <location line="+6"/>
         <location line="+20"/>
         <location line="+21"/>
-        <location line="+18"/>
+        <location line="+17"/>
+        <location line="+28"/>
         <source>Duration</source>
         <translation>时长</translation>
     </message>
     <message>
-        <location line="-58"/>
+        <location line="-85"/>
         <source>How long the module is measured at rest</source>
         <translation>模块静止测量的时长</translation>
     </message>
@@ -7637,11 +7658,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
     <message>
         <location line="+2"/>
+        <location line="+66"/>
         <source>Gyro bias max</source>
         <translation>陀螺仪零偏上限</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-65"/>
         <source>Largest magnitude of each gyro axis&apos;s mean at rest</source>
         <translation>静止时陀螺仪各轴均值绝对值的最大允许值</translation>
     </message>
@@ -7752,12 +7774,82 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>到时转动仍未结束则本次测试失败</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+5"/>
+        <source>How long the module is turned through its poses (3 s still in each, at least 9)</source>
+        <translation>模块依次转过各姿态的时长（每个姿态静止 3 s，至少 9 个）</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Local gravity</source>
+        <translation>当地重力</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The station&apos;s gravity (m/s²); 0: standard gravity assumed, with its uncertainty</source>
+        <translation>工位的重力（m/s²）；0：假定为标准重力，并计入其不确定度</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Accelerometer bias max</source>
+        <translation>加速度计零偏上限</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Largest accelerometer bias of any axis</source>
+        <translation>任一轴加速度计零偏的最大值</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Accelerometer scale error max</source>
+        <translation>加速度计标度因数误差上限</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Largest accelerometer scale error of any axis</source>
+        <translation>任一轴加速度计标度因数误差的最大值</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Largest gyro bias of any axis</source>
+        <translation>任一轴陀螺仪零偏的最大值</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Gyro scale error max</source>
+        <translation>陀螺仪标度因数误差上限</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Largest gyro scale error of any axis</source>
+        <translation>任一轴陀螺仪标度因数误差的最大值</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Tilt error max</source>
+        <translation>倾角误差上限</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Largest roll or pitch error of the module&apos;s attitude</source>
+        <translation>模块姿态横滚或俯仰误差的最大值</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Heading error max</source>
+        <translation>航向误差上限</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Largest heading error of the module&apos;s attitude (needs a magnetometer)</source>
+        <translation>模块姿态航向误差的最大值（需要磁力计）</translation>
+    </message>
+    <message>
+        <location line="+7"/>
         <source>How long the module&apos;s output is recorded</source>
         <translation>记录模块输出的时长</translation>
     </message>
     <message>
-        <location line="+61"/>
+        <location line="+62"/>
         <location line="+26"/>
         <source>%1 has no parameter &quot;%2&quot;</source>
         <translation>%1 没有参数“%2”</translation>
@@ -15627,12 +15719,12 @@ Edit it (Edit…) and start again.</source>
     </message>
     <message>
         <location line="+13"/>
-        <location line="+179"/>
+        <location line="+182"/>
         <source>Press Start.</source>
         <translation>请按“开始”。</translation>
     </message>
     <message>
-        <location line="-169"/>
+        <location line="-172"/>
         <source>%v of 12 poses</source>
         <translation>%v / 12 个姿态</translation>
     </message>
@@ -15682,7 +15774,7 @@ Edit it (Edit…) and start again.</source>
         <translation>判定</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+16"/>
         <source>Export report (PDF)…</source>
         <translation>导出报告（PDF）…</translation>
     </message>
@@ -15782,7 +15874,7 @@ Edit it (Edit…) and start again.</source>
         <translation>姿态滞后（ms）</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+23"/>
         <source>%1 still intervals, %2 distinct poses, gravity %3 m/s²</source>
         <translation>%1 个静止区间，%2 个不同姿态，重力 %3 m/s²</translation>
     </message>

@@ -7202,13 +7202,13 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
     <message>
         <location line="+1"/>
-        <location line="+232"/>
+        <location line="+234"/>
         <location line="+1"/>
         <source>(none)</source>
         <translation>（無）</translation>
     </message>
     <message>
-        <location line="-215"/>
+        <location line="-217"/>
         <source>could not connect to %1: %2</source>
         <translation>無法連線到 %1：%2</translation>
     </message>
@@ -7218,7 +7218,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>模組在“%1”期間斷開（%2）：請檢查其線纜；其他模組繼續測試</translation>
     </message>
     <message>
-        <location line="+87"/>
+        <location line="+89"/>
         <source>%1; marginal: %2</source>
         <translation>%1；臨界：%2</translation>
     </message>
@@ -7362,7 +7362,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>%2 s 內僅有 %1 個樣本：請開啟模組的輸出（HI91，至少 10 Hz）</translation>
     </message>
     <message>
-        <location line="+38"/>
+        <location line="+39"/>
         <source>cannot judge: %1 (%2). Keep the module still on the fixture and test it again.</source>
         <translation>無法判定：%1（%2）。請讓模組在治具上保持靜止後重新測試。</translation>
     </message>
@@ -7426,6 +7426,16 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <source>the recording stopped: %1</source>
         <translation>記錄已停止：%1</translation>
     </message>
+    <message>
+        <location filename="../core/station/module_runner_verify.cpp" line="+42"/>
+        <source>cannot judge: %1</source>
+        <translation>無法判定：%1</translation>
+    </message>
+    <message>
+        <location line="+29"/>
+        <source>%1 poses; %2</source>
+        <translation>%1 個姿態；%2</translation>
+    </message>
 </context>
 <context>
     <name>imudesk::station::RunFolder</name>
@@ -7453,7 +7463,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::station::TestPlan</name>
     <message>
-        <location filename="../core/station/test_plan.cpp" line="+98"/>
+        <location filename="../core/station/test_plan.cpp" line="+99"/>
         <source>Identify</source>
         <translation>識別</translation>
     </message>
@@ -7491,6 +7501,11 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <location line="+1"/>
         <source>Gyro scale factor</source>
         <translation>陀螺儀標度因數</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Verify module</source>
+        <translation>驗證模組</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -7543,7 +7558,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>在轉檯上：正反方向各轉兩圈；陀螺儀標度因數誤差低於限值。</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
+        <source>Turned through at least 9 still poses (by hand or a fixture): the accelerometer&apos;s bias and scale, the gyro&apos;s bias and scale and the attitude&apos;s tilt and heading, each within its limit.</source>
+        <translation>依次轉到至少 9 個靜止姿態（手持或用治具）：加速度計的零偏和標度、陀螺儀的零偏和標度以及姿態的傾角和航向，各自在限值之內。</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>SAVECONFIG: the module keeps its settings after a restart.</source>
         <translation>SAVECONFIG：模組重啟後保留其設定。</translation>
     </message>
@@ -7616,12 +7636,13 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <location line="+6"/>
         <location line="+20"/>
         <location line="+21"/>
-        <location line="+18"/>
+        <location line="+17"/>
+        <location line="+28"/>
         <source>Duration</source>
         <translation>時長</translation>
     </message>
     <message>
-        <location line="-58"/>
+        <location line="-85"/>
         <source>How long the module is measured at rest</source>
         <translation>模組靜止測量的時長</translation>
     </message>
@@ -7637,11 +7658,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
     <message>
         <location line="+2"/>
+        <location line="+66"/>
         <source>Gyro bias max</source>
         <translation>陀螺儀零偏上限</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-65"/>
         <source>Largest magnitude of each gyro axis&apos;s mean at rest</source>
         <translation>靜止時陀螺儀各軸均值絕對值的最大允許值</translation>
     </message>
@@ -7752,12 +7774,82 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>到時轉動仍未結束則本次測試失敗</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+5"/>
+        <source>How long the module is turned through its poses (3 s still in each, at least 9)</source>
+        <translation>模組依次轉過各姿態的時長（每個姿態靜止 3 s，至少 9 個）</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Local gravity</source>
+        <translation>當地重力</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The station&apos;s gravity (m/s²); 0: standard gravity assumed, with its uncertainty</source>
+        <translation>工作站的重力（m/s²）；0：假定為標準重力，並計入其不確定度</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Accelerometer bias max</source>
+        <translation>加速度計零偏上限</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Largest accelerometer bias of any axis</source>
+        <translation>任一軸加速度計零偏的最大值</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Accelerometer scale error max</source>
+        <translation>加速度計標度誤差上限</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Largest accelerometer scale error of any axis</source>
+        <translation>任一軸加速度計標度誤差的最大值</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Largest gyro bias of any axis</source>
+        <translation>任一軸陀螺儀零偏的最大值</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Gyro scale error max</source>
+        <translation>陀螺儀標度誤差上限</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Largest gyro scale error of any axis</source>
+        <translation>任一軸陀螺儀標度誤差的最大值</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Tilt error max</source>
+        <translation>傾角誤差上限</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Largest roll or pitch error of the module&apos;s attitude</source>
+        <translation>模組姿態橫滾或俯仰誤差的最大值</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Heading error max</source>
+        <translation>航向誤差上限</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Largest heading error of the module&apos;s attitude (needs a magnetometer)</source>
+        <translation>模組姿態航向誤差的最大值（需要磁力計）</translation>
+    </message>
+    <message>
+        <location line="+7"/>
         <source>How long the module&apos;s output is recorded</source>
         <translation>記錄模組輸出的時長</translation>
     </message>
     <message>
-        <location line="+61"/>
+        <location line="+62"/>
         <location line="+26"/>
         <source>%1 has no parameter &quot;%2&quot;</source>
         <translation>%1 沒有參數“%2”</translation>
@@ -15627,12 +15719,12 @@ Edit it (Edit…) and start again.</source>
     </message>
     <message>
         <location line="+13"/>
-        <location line="+179"/>
+        <location line="+182"/>
         <source>Press Start.</source>
         <translation>請按「開始」。</translation>
     </message>
     <message>
-        <location line="-169"/>
+        <location line="-172"/>
         <source>%v of 12 poses</source>
         <translation>%v / 12 個姿態</translation>
     </message>
@@ -15682,7 +15774,7 @@ Edit it (Edit…) and start again.</source>
         <translation>判定</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+16"/>
         <source>Export report (PDF)…</source>
         <translation>匯出報告（PDF）…</translation>
     </message>
@@ -15782,7 +15874,7 @@ Edit it (Edit…) and start again.</source>
         <translation>姿態延遲（ms）</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+23"/>
         <source>%1 still intervals, %2 distinct poses, gravity %3 m/s²</source>
         <translation>%1 個靜止區間，%2 個不同姿態，重力 %3 m/s²</translation>
     </message>

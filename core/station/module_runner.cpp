@@ -175,6 +175,7 @@ double ModuleRunner::stepWeight(const PlanStep &s) const
     case StepKind::Static:
     case StepKind::Allan:
     case StepKind::Attitude:
+    case StepKind::Verify:
     case StepKind::Evidence: return std::max(1.0, s.number("seconds"));
     case StepKind::MagCal: return 40;
     case StepKind::GyroScale: return 60;
@@ -226,7 +227,8 @@ void ModuleRunner::runStep()
     case StepKind::Profile: runProfile(); break;
     case StepKind::Static:
     case StepKind::Allan:
-    case StepKind::Attitude: startCollecting(s.number("seconds")); break;
+    case StepKind::Attitude:
+    case StepKind::Verify: startCollecting(s.number("seconds")); break;
     case StepKind::MagCal: runMagCal(); break;
     case StepKind::GyroScale: runGyroScale(); break;
     case StepKind::Save: runSave(); break;
@@ -610,6 +612,7 @@ void ModuleRunner::poll()
     case StepKind::Static: evaluateStatic(); break;
     case StepKind::Allan: evaluateAllan(); break;
     case StepKind::Attitude: evaluateAttitude(); break;
+    case StepKind::Verify: evaluateVerify(); break; // module_runner_verify.cpp
     default: break;
     }
 }

@@ -124,6 +124,7 @@ private:
     bool judgeableStill();
     void evaluateAllan();
     void evaluateAttitude();
+    void evaluateVerify();
     void runMagCal();
     void runGyroScale();
     void runSave();

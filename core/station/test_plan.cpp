@@ -62,8 +62,8 @@ const std::vector<StepKind> &TestPlan::allKinds()
 {
     static const std::vector<StepKind> kinds{StepKind::Identify, StepKind::Firmware,  StepKind::Profile,
                                              StepKind::Static,   StepKind::Allan,     StepKind::Attitude,
-                                             StepKind::MagCal,   StepKind::GyroScale, StepKind::Save,
-                                             StepKind::Evidence};
+                                             StepKind::MagCal,   StepKind::GyroScale, StepKind::Verify,
+                                             StepKind::Save,     StepKind::Evidence};
     return kinds;
 }
 
@@ -78,6 +78,7 @@ QString TestPlan::key(StepKind kind)
     case StepKind::Attitude: return QStringLiteral("attitude");
     case StepKind::MagCal: return QStringLiteral("magcal");
     case StepKind::GyroScale: return QStringLiteral("gyro_scale");
+    case StepKind::Verify: return QStringLiteral("verify");
     case StepKind::Save: return QStringLiteral("save");
     case StepKind::Evidence: return QStringLiteral("evidence");
     }
@@ -103,6 +104,7 @@ QString TestPlan::title(StepKind kind)
     case StepKind::Attitude: return tr("Attitude (mounting)");
     case StepKind::MagCal: return tr("Magnetometer calibration");
     case StepKind::GyroScale: return tr("Gyro scale factor");
+    case StepKind::Verify: return tr("Verify module");
     case StepKind::Save: return tr("Save configuration");
     case StepKind::Evidence: return tr("Record evidence");
     }
@@ -131,6 +133,9 @@ QString TestPlan::description(StepKind kind)
                   "must be turned through every attitude meanwhile (a rotation fixture).");
     case StepKind::GyroScale:
         return tr("On a turntable: two turns each way; the gyro's scale-factor error below the limit.");
+    case StepKind::Verify:
+        return tr("Turned through at least 9 still poses (by hand or a fixture): the accelerometer's bias and scale, "
+                  "the gyro's bias and scale and the attitude's tilt and heading, each within its limit.");
     case StepKind::Save: return tr("SAVECONFIG: the module keeps its settings after a restart.");
     case StepKind::Evidence: return tr("The module's output is recorded into the run folder as evidence.");
     }
@@ -224,6 +229,33 @@ const std::vector<ParamSpec> &TestPlan::params(StepKind kind)
                QT_TRANSLATE_NOOP("imudesk::station::TestPlan", "The run fails when the turns have not ended by then"),
                180, 10, 1200),
     };
+    static const std::vector<ParamSpec> verify{
+        number("seconds", QT_TRANSLATE_NOOP("imudesk::station::TestPlan", "Duration"), "s",
+               QT_TRANSLATE_NOOP("imudesk::station::TestPlan",
+                                 "How long the module is turned through its poses (3 s still in each, at least 9)"),
+               90, 20, 1200),
+        number("gravity_ms2", QT_TRANSLATE_NOOP("imudesk::station::TestPlan", "Local gravity"), "m/s²",
+               QT_TRANSLATE_NOOP("imudesk::station::TestPlan",
+                                 "The station's gravity (m/s²); 0: standard gravity assumed, with its uncertainty"),
+               0, 0, 9.9),
+        limitNumber("acc_bias_max_mg", QT_TRANSLATE_NOOP("imudesk::station::TestPlan", "Accelerometer bias max"), "mg",
+                    QT_TRANSLATE_NOOP("imudesk::station::TestPlan", "Largest accelerometer bias of any axis"), 10, 0,
+                    1000),
+        limitNumber("acc_scale_max_pct", QT_TRANSLATE_NOOP("imudesk::station::TestPlan", "Accelerometer scale error max"),
+                    "%", QT_TRANSLATE_NOOP("imudesk::station::TestPlan", "Largest accelerometer scale error of any axis"),
+                    0.5, 0, 100),
+        limitNumber("gyro_bias_max_dps", QT_TRANSLATE_NOOP("imudesk::station::TestPlan", "Gyro bias max"), "°/s",
+                    QT_TRANSLATE_NOOP("imudesk::station::TestPlan", "Largest gyro bias of any axis"), 0.5, 0, 100),
+        limitNumber("gyro_scale_max_pct", QT_TRANSLATE_NOOP("imudesk::station::TestPlan", "Gyro scale error max"), "%",
+                    QT_TRANSLATE_NOOP("imudesk::station::TestPlan", "Largest gyro scale error of any axis"), 0.5, 0, 100),
+        limitNumber("tilt_max_deg", QT_TRANSLATE_NOOP("imudesk::station::TestPlan", "Tilt error max"), "°",
+                    QT_TRANSLATE_NOOP("imudesk::station::TestPlan", "Largest roll or pitch error of the module's attitude"),
+                    0.3, 0, 90),
+        limitNumber("heading_max_deg", QT_TRANSLATE_NOOP("imudesk::station::TestPlan", "Heading error max"), "°",
+                    QT_TRANSLATE_NOOP("imudesk::station::TestPlan",
+                                      "Largest heading error of the module's attitude (needs a magnetometer)"),
+                    1.0, 0, 180),
+    };
     static const std::vector<ParamSpec> none;
     static const std::vector<ParamSpec> evidence{
         number("seconds", QT_TRANSLATE_NOOP("imudesk::station::TestPlan", "Duration"), "s",
@@ -239,6 +271,7 @@ const std::vector<ParamSpec> &TestPlan::params(StepKind kind)
     case StepKind::Attitude: return attitude;
     case StepKind::MagCal: return magcal;
     case StepKind::GyroScale: return gyroScale;
+    case StepKind::Verify: return verify;
     case StepKind::Save: return none;
     case StepKind::Evidence: return evidence;
     }
@@ -279,6 +312,8 @@ TestPlan TestPlan::example()
             s.params[QStringLiteral("profile")] = QStringLiteral("station-hi14-profile.json");
         if (kind == StepKind::GyroScale)
             s.enabled = false; // needs a turntable
+        if (kind == StepKind::Verify)
+            s.enabled = false; // needs the module turned through its poses (by hand or a fixture)
         plan.steps.push_back(s);
     }
     return plan;

@@ -37,6 +37,7 @@ enum class StepKind {
     Attitude,  // roll/pitch against the expected orientation (mounting verified)
     MagCal,    // device-side magnetometer calibration (MCAL), must succeed
     GyroScale, // gyro scale-factor run on a turntable (optional)
+    Verify,    // the module check (issue 55): turned through still poses, its sensors and attitude judged
     Save,      // SAVECONFIG
     Evidence,  // record M seconds into the run folder
 };

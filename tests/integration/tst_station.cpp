@@ -155,6 +155,7 @@ private Q_SLOTS:
     void marginalBandPassesMarked();
     void movedModuleCannotBeJudged_data();
     void movedModuleCannotBeJudged();
+    void verifyStepJudgesTheModule();
 };
 
 void TestStation::trayOfFiveInParallel()
@@ -418,7 +419,7 @@ void TestStation::examplePlanPassesOnCleanHi14()
     const auto &clean = runner.module(0);
     QVERIFY2(clean.verdict == Verdict::Pass, qPrintable(clean.failureSummary()));
     for (const auto &s : clean.steps)
-        QCOMPARE(s.verdict, s.kind == station::StepKind::GyroScale ? Verdict::Skipped : Verdict::Pass);
+        QCOMPARE(s.verdict, s.kind == station::StepKind::GyroScale || s.kind == station::StepKind::Verify ? Verdict::Skipped : Verdict::Pass);
     QVERIFY(QFile::exists(clean.evidencePath));
     const auto &disturbed = runner.module(1);
     QCOMPARE(disturbed.verdict, Verdict::Fail);
@@ -592,6 +593,48 @@ void TestStation::movedModuleCannotBeJudged()
     for (const station::Measurement &v : s->values)
         QVERIFY2(v.comparator == QStringLiteral("INFO"), qPrintable(v.name)); // nothing judged on a number
     QVERIFY(m.failureSummary().contains(QStringLiteral("cannot judge")));
+}
+
+// The verify step (issue 55) on three simulated modules turned by hand through their poses at
+// four times real time: a good one passes with every figure measured against its limit, one
+// whose heading is 3° off fails on it, one left on the table cannot be judged.
+void TestStation::verifyStepJudgesTheModule()
+{
+    Tray tray(true, 4.0);
+    QVERIFY(tray.add("", "1.7.1", 71, false, sim::Motion::Poses));
+    QVERIFY(tray.add("attitude-bias=0/0/3", "1.7.1", 72, false, sim::Motion::Poses));
+    QVERIFY(tray.add("", "1.7.1", 73, false, sim::Motion::Static));
+    station::TestPlan plan;
+    plan.name = QStringLiteral("verify");
+    plan.steps.push_back(station::TestPlan::defaultStep(
+        station::StepKind::Verify, {{QStringLiteral("seconds"), 80.0}, {QStringLiteral("gravity_ms2"), 9.8}}));
+    QVERIFY2(plan.problems().isEmpty(), qPrintable(plan.problems().join(u'\n')));
+    station::StationRunner runner(plan, tray.ports);
+    runner.setTransportFactory(tray.transports());
+    QSignalSpy done(&runner, &station::StationRunner::finished);
+    runner.start();
+    QVERIFY(done.wait(120000));
+
+    const station::ModuleResult &good = runner.module(0);
+    QVERIFY2(good.verdict == Verdict::Pass, qPrintable(good.failureSummary()));
+    const station::StepResult *g = stepOf(good, station::StepKind::Verify);
+    QVERIFY(g);
+    for (const char *name : {"acc_bias", "acc_scale_error", "gyro_bias", "gyro_scale_error", "tilt_error", "heading_error"}) {
+        const station::Measurement *v = valueOf(*g, QLatin1String(name));
+        QVERIFY2(v && v->comparator != QStringLiteral("INFO") && v->ok, name);
+    }
+    QVERIFY(valueOf(*g, QStringLiteral("poses"))->value >= 9);
+
+    const station::ModuleResult &bad = runner.module(1);
+    QCOMPARE(bad.verdict, Verdict::Fail);
+    const station::Measurement *h = valueOf(*stepOf(bad, station::StepKind::Verify), QStringLiteral("heading_error"));
+    QVERIFY(h && !h->ok);
+    QVERIFY2(std::fabs(h->value - 3.0) < 0.5, qPrintable(QString::number(h->value)));
+
+    const station::ModuleResult &still = runner.module(2);
+    QCOMPARE(still.end, station::ModuleResult::End::NotJudged);
+    QVERIFY2(stepOf(still, station::StepKind::Verify)->detail.startsWith(QStringLiteral("cannot judge: ")),
+             qPrintable(stepOf(still, station::StepKind::Verify)->detail));
 }
 
 IMUDESK_TEST_MAIN(TestStation)

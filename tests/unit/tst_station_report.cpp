@@ -87,7 +87,7 @@ void TestStationReport::namesWhatFailed()
     const QString text = doc.toPlainText();
     for (const char *want : {"3B3F4C95B9D2358B", "HI14R3", "1.6.6, updated to 1.7.1", "HI14 incoming test", "fail",
                              "Failed at Static noise and bias: gyro_std_x 0.4087 °/s (≤ 0.05)", "outside", "within",
-                             "10. Record evidence skipped", "2026-11-27 08:01:15"})
+                             "11. Record evidence skipped", "2026-11-27 08:01:15"})
         QVERIFY2(text.contains(QString::fromUtf8(want)), want);
     if (const QByteArray png = qgetenv("IMUDESK_REPORT_PNG"); !png.isEmpty()) {
         doc.setTextWidth(800);

@@ -215,8 +215,11 @@ VerifyModuleWizard::VerifyModuleWizard(device::DeviceSession &session, QWidget *
         m_table->horizontalHeader()->setSectionResizeMode(c, QHeaderView::ResizeToContents);
     m_table->verticalHeader()->hide();
     m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
-    rl->addWidget(m_table, 3);
+    m_table->setSizeAdjustPolicy(QAbstractScrollArea::AdjustToContents);
+    m_table->setVerticalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    rl->addWidget(m_table);
     m_reasons = new QPlainTextEdit;
+    m_reasons->setObjectName(QStringLiteral("verifyReasons"));
     m_reasons->setReadOnly(true);
     rl->addWidget(m_reasons, 1);
     auto *bottom = new QHBoxLayout;
@@ -451,7 +454,11 @@ void VerifyModuleWizard::showResult()
                                                              : QColor(0xa6, 0x64, 0x00));
         m_table->setItem(i, 4, verdict);
     }
-    m_table->resizeRowsToContents();
+    // Every row as tall as one line, the table as tall as its rows: the reasons below get the rest.
+    m_table->verticalHeader()->setSectionResizeMode(QHeaderView::Fixed);
+    m_table->verticalHeader()->setDefaultSectionSize(m_table->fontMetrics().height() + 8);
+    m_table->setFixedHeight(m_table->horizontalHeader()->height() + int(rows.size()) * m_table->verticalHeader()->defaultSectionSize()
+                            + 2 * m_table->frameWidth() + 2);
     m_reasons->setPlainText(tr("%1 still intervals, %2 distinct poses, gravity %3 m/s²")
                                 .arg(r.poses.size())
                                 .arg(r.distinctPoses)
