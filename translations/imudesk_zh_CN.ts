@@ -1383,7 +1383,7 @@
         <translation>需要一个带有模块姿态输出的静止姿态作为起点</translation>
     </message>
     <message>
-        <location line="+50"/>
+        <location line="+67"/>
         <source>the module did not move enough between the poses (%1 s, %2° turned; %3 s and %4° needed)</source>
         <translation>模块在静止姿态之间运动不足（运动 %1 s，转过 %2°；需要 %3 s 和 %4°）</translation>
     </message>
@@ -7849,7 +7849,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>记录模块输出的时长</translation>
     </message>
     <message>
-        <location line="+62"/>
+        <location line="+64"/>
         <location line="+26"/>
         <source>%1 has no parameter &quot;%2&quot;</source>
         <translation>%1 没有参数“%2”</translation>
@@ -8245,7 +8245,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::AttitudeWidget</name>
     <message>
-        <location filename="../ui/attitude/attitude_widget.cpp" line="+320"/>
+        <location filename="../ui/attitude/attitude_widget.cpp" line="+376"/>
         <source>X</source>
         <translation>X</translation>
     </message>
@@ -8328,12 +8328,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
     <message>
         <location line="+1"/>
-        <location line="+385"/>
+        <location line="+386"/>
         <source>NED 3-2-1</source>
         <translation>NED 3-2-1</translation>
     </message>
     <message>
-        <location line="-385"/>
+        <location line="-386"/>
         <source>NED 3-2-1 (assumed)</source>
         <translation>NED 3-2-1（假定）</translation>
     </message>
@@ -8371,7 +8371,17 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>拖动以旋转视图，双击以复位</translation>
     </message>
     <message>
-        <location line="+388"/>
+        <location line="+389"/>
+        <source>Show ImuDesk&apos;s reference attitude</source>
+        <translation>显示 ImuDesk 的参考姿态</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>ImuDesk&apos;s own filter on the module&apos;s raw gyro and accelerometer, drawn as an outline: started from the module&apos;s heading when it last rested for 1 s</source>
+        <translation>ImuDesk 用模块原始陀螺仪和加速度计数据自行解算的姿态，以轮廓线显示：从模块上次静止 1 s 时的航向开始</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Reset view</source>
         <translation>复位视图</translation>
     </message>
@@ -10243,7 +10253,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::DeviceWorkspace</name>
     <message>
-        <location filename="../ui/workspace/device_workspace.cpp" line="+363"/>
+        <location filename="../ui/workspace/device_workspace.cpp" line="+365"/>
         <source>New connection</source>
         <translation>新连接</translation>
     </message>
@@ -10253,7 +10263,17 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>%2 上的 %1</translation>
     </message>
     <message>
-        <location line="+206"/>
+        <location line="+123"/>
+        <source>Reference %1° apart (±%2°)</source>
+        <translation>参考姿态相差 %1°（±%2°）</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Reference: hold the module still for 1 s to start it</source>
+        <translation>参考姿态：让模块静止 1 s 以启动</translation>
+    </message>
+    <message>
+        <location line="+108"/>
         <source>Frames arrive again on %1.</source>
         <translation>%1 上又收到帧了。</translation>
     </message>

@@ -1383,7 +1383,7 @@
         <translation>需要一個帶有模組姿態輸出的靜止姿態作為起點</translation>
     </message>
     <message>
-        <location line="+50"/>
+        <location line="+67"/>
         <source>the module did not move enough between the poses (%1 s, %2° turned; %3 s and %4° needed)</source>
         <translation>模組在靜止姿態之間運動不足（運動 %1 s，轉過 %2°；需要 %3 s 和 %4°）</translation>
     </message>
@@ -7849,7 +7849,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>記錄模組輸出的時長</translation>
     </message>
     <message>
-        <location line="+62"/>
+        <location line="+64"/>
         <location line="+26"/>
         <source>%1 has no parameter &quot;%2&quot;</source>
         <translation>%1 沒有參數“%2”</translation>
@@ -8245,7 +8245,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::AttitudeWidget</name>
     <message>
-        <location filename="../ui/attitude/attitude_widget.cpp" line="+320"/>
+        <location filename="../ui/attitude/attitude_widget.cpp" line="+376"/>
         <source>X</source>
         <translation>X</translation>
     </message>
@@ -8328,12 +8328,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
     <message>
         <location line="+1"/>
-        <location line="+385"/>
+        <location line="+386"/>
         <source>NED 3-2-1</source>
         <translation>NED 3-2-1</translation>
     </message>
     <message>
-        <location line="-385"/>
+        <location line="-386"/>
         <source>NED 3-2-1 (assumed)</source>
         <translation>NED 3-2-1（假定）</translation>
     </message>
@@ -8371,7 +8371,17 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>拖曳以旋轉檢視，按兩下以重設</translation>
     </message>
     <message>
-        <location line="+388"/>
+        <location line="+389"/>
+        <source>Show ImuDesk&apos;s reference attitude</source>
+        <translation>顯示 ImuDesk 的參考姿態</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>ImuDesk&apos;s own filter on the module&apos;s raw gyro and accelerometer, drawn as an outline: started from the module&apos;s heading when it last rested for 1 s</source>
+        <translation>ImuDesk 以模組原始陀螺儀和加速度計資料自行解算的姿態，以輪廓線顯示：從模組上次靜止 1 s 時的航向開始</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Reset view</source>
         <translation>重設檢視</translation>
     </message>
@@ -10243,7 +10253,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::DeviceWorkspace</name>
     <message>
-        <location filename="../ui/workspace/device_workspace.cpp" line="+363"/>
+        <location filename="../ui/workspace/device_workspace.cpp" line="+365"/>
         <source>New connection</source>
         <translation>新連線</translation>
     </message>
@@ -10253,7 +10263,17 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>%2 上的 %1</translation>
     </message>
     <message>
-        <location line="+206"/>
+        <location line="+123"/>
+        <source>Reference %1° apart (±%2°)</source>
+        <translation>參考姿態相差 %1°（±%2°）</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Reference: hold the module still for 1 s to start it</source>
+        <translation>參考姿態：讓模組靜止 1 s 以啟動</translation>
+    </message>
+    <message>
+        <location line="+108"/>
         <source>Frames arrive again on %1.</source>
         <translation>%1 上又收到幀了。</translation>
     </message>

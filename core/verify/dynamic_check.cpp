@@ -79,8 +79,25 @@ DynamicCheck checkDynamic(const std::vector<MotionSample> &samples, const std::v
         s.fieldNav = Eigen::AngleAxisd(-options.declinationDeg * kDegToRad, Eigen::Vector3d::UnitZ())
             * Eigen::Vector3d(0, std::cos(inc), -std::sin(inc));
     }
+    // The magnetometer is trusted as far as the poses agreed on north: the spread of their heading
+    // differences (iron the fit left, a field that is not the same everywhere) is its error.
+    double startSigmaDeg = 0.05;
+    if (att.fieldKnown) {
+        std::vector<double> h;
+        for (const Pose &p : poses)
+            if (p.headingUsed)
+                h.push_back(p.headingErrDeg);
+        double mean = 0, var = 0;
+        for (double v : h)
+            mean += v / double(h.size());
+        for (double v : h)
+            var += (v - mean) * (v - mean) / double(std::max<size_t>(1, h.size() - 1));
+        const double spreadDeg = std::sqrt(var);
+        s.magSigmaRad = std::max(s.magSigmaRad, spreadDeg * kDegToRad);
+        startSigmaDeg = std::max(startSigmaDeg, spreadDeg);
+    }
     ReferenceFilter filter(s);
-    filter.start(poseReference(*first, acc, att, options), 0.05);
+    filter.start(poseReference(*first, acc, att, options), startSigmaDeg);
 
     // Run from the first pose on; keep the reference and the report at every sample.
     const auto begin = std::lower_bound(samples.begin(), samples.end(), first->fromS,

@@ -90,7 +90,7 @@ void ReferenceFilter::update(double tS, const Eigen::Vector3d &acc, const Eigen:
     if (m_s.useMag && hasMag) {
         const Eigen::Vector3d m = mag - m_s.hardIron;
         if (std::fabs(m.norm() - m_s.fieldUt) <= kMagGate * m_s.fieldUt)
-            correct(m.normalized(), m_s.fieldNav, 0.02);
+            correct(m.normalized(), m_s.fieldNav, m_s.magSigmaRad);
     }
 }
 

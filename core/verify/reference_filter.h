@@ -34,6 +34,7 @@ public:
         Eigen::Vector3d hardIron = Eigen::Vector3d::Zero();          // uT
         Eigen::Vector3d fieldNav = Eigen::Vector3d(0, 1, 0);         // the field's direction in ENU
         double fieldUt = 50;
+        double magSigmaRad = 0.02; // the field direction's error (1 sigma): its noise and what iron is left
     };
 
     explicit ReferenceFilter(const Sensors &sensors);

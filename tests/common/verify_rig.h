@@ -5,6 +5,7 @@
 // `lagMs` and off by `attitudeBiasDeg` (roll, pitch, heading clockwise), as HipnucSimulator
 // reports it with the faults attitude-bias and filter-lag.
 #include "model/attitude.h"
+#include "model/sample.h"
 #include "sim/motion_model.h"
 #include "sim/sensor_model.h"
 #include "verify/module_check.h"
@@ -54,6 +55,24 @@ struct HandTurnedModule {
             e.yaw -= attitudeBiasDeg[2];
             s.q = sim::quatFromEnu312(e);
             s.hasAttitude = true;
+            out.push_back(s);
+        }
+        return out;
+    }
+
+    // The same as a HiPNUC module's HI91 samples (its own clock, the quaternion it reports).
+    std::vector<model::Sample> hi91Samples() const
+    {
+        std::vector<model::Sample> out;
+        for (const verify::MotionSample &m : record()) {
+            model::Sample s;
+            s.source = "HI91";
+            s.deviceTimeMs = m.tS * 1000;
+            s.acc = {m.acc.x(), m.acc.y(), m.acc.z()};
+            s.gyr = {m.gyr.x(), m.gyr.y(), m.gyr.z()};
+            s.mag = {m.mag.x(), m.mag.y(), m.mag.z()};
+            s.quat = {m.q.w(), m.q.x(), m.q.y(), m.q.z()};
+            s.fields = model::FieldAcc | model::FieldGyr | model::FieldMag | model::FieldQuat | model::FieldDeviceTime;
             out.push_back(s);
         }
         return out;

@@ -182,6 +182,33 @@ private Q_SLOTS:
         ws.disconnectDevice();
     }
 
+    // The attitude view's reference (issue 55): asked for from its context menu, it starts once
+    // the simulated module has rested 1 s and is drawn beside the module with how far apart
+    // they are; taken away again on request.
+    void referenceAttitudeBesideTheModule()
+    {
+        ui::DeviceWorkspace ws;
+        ws.resize(1200, 800);
+        ws.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&ws));
+        QString error;
+        QVERIFY2(ui::openLinkIn(ws, test::builtInFamilies(), device::LinkRequest::simulatedHipnuc(sim::SimOptions{}, 115200), &error),
+                 qPrintable(error));
+        QTRY_COMPARE_WITH_TIMEOUT(ws.state(), SessionState::Connected, 15000);
+        ui::AttitudeWidget *view = ws.attitudeWidget();
+        Q_EMIT view->ghostRequested(true);
+        QVERIFY(view->ghostShown());
+        QTRY_VERIFY_WITH_TIMEOUT(view->ghostCaption().startsWith(QStringLiteral("Reference ")), 10000);
+        QTRY_VERIFY_WITH_TIMEOUT(view->ghostCaption().contains(QStringLiteral("apart")), 10000);
+        // The simulated module reports the truth: the reference agrees within a few tenths of a degree.
+        const double apart = view->ghostCaption().section(QLatin1Char(' '), 1, 1).chopped(1).toDouble();
+        QVERIFY2(apart < 0.5, qPrintable(view->ghostCaption()));
+        Q_EMIT view->ghostRequested(false);
+        QVERIFY(!view->ghostShown());
+        ws.disconnectDevice();
+        QTRY_COMPARE(ws.state(), SessionState::Closed);
+    }
+
     void simulatedCompassReachesTheViews()
     {
         ui::DeviceWorkspace ws;

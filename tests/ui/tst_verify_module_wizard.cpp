@@ -25,27 +25,6 @@
 
 using namespace imudesk;
 
-namespace {
-
-// The rig's samples as a HiPNUC module's HI91 samples.
-std::vector<model::Sample> hi91Of(const test::HandTurnedModule &module)
-{
-    std::vector<model::Sample> out;
-    for (const verify::MotionSample &m : module.record()) {
-        model::Sample s;
-        s.source = "HI91";
-        s.deviceTimeMs = m.tS * 1000;
-        s.acc = {m.acc.x(), m.acc.y(), m.acc.z()};
-        s.gyr = {m.gyr.x(), m.gyr.y(), m.gyr.z()};
-        s.mag = {m.mag.x(), m.mag.y(), m.mag.z()};
-        s.quat = {m.q.w(), m.q.x(), m.q.y(), m.q.z()};
-        s.fields = model::FieldAcc | model::FieldGyr | model::FieldMag | model::FieldQuat | model::FieldDeviceTime;
-        out.push_back(s);
-    }
-    return out;
-}
-
-} // namespace
 
 class TstVerifyModuleWizard : public QObject {
     Q_OBJECT
@@ -72,7 +51,7 @@ class TstVerifyModuleWizard : public QObject {
         // The recording as if the module had been turned while the wizard recorded (without
         // Start: the session's own static module would add its samples).
         wizard.show();
-        wizard.addSamples(hi91Of(module));
+        wizard.addSamples(module.hi91Samples());
         for (bool done : wizard.tiles()->done())
             QVERIFY(done); // every tile: the rig turns through the twelve
         if (english)

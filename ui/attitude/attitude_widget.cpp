@@ -204,6 +204,62 @@ void AttitudeWidget::clear()
     update();
 }
 
+void AttitudeWidget::setGhost(const model::Quat &q, const QString &caption)
+{
+    if (!model::isUsableQuat(q))
+        return;
+    m_ghost = inScene(q);
+    m_ghostCaption = caption;
+    m_ghostShown = true;
+    update();
+}
+
+void AttitudeWidget::setGhostShown(bool shown)
+{
+    if (shown == m_ghostShown)
+        return;
+    m_ghostShown = shown;
+    if (!shown)
+        m_ghostCaption.clear();
+    update();
+}
+
+void AttitudeWidget::paintGhost(QPainter &p) const
+{
+    if (!m_ghostShown || !m_hasData)
+        return;
+    const View g(m_azimuth, m_elevation, modelArea(), m_ghost, false);
+    QColor pen = palette().color(QPalette::Highlight);
+    p.save();
+    p.setPen(QPen(pen, 2.0, Qt::DashLine, Qt::RoundCap));
+    p.setBrush(Qt::NoBrush);
+    // The box's twelve edges: corners that differ in one coordinate.
+    for (int i = 0; i < 8; ++i)
+        for (int bit : {1, 2, 4})
+            if (!(i & bit)) {
+                const int j = i | bit;
+                auto corner = [&g](int k) {
+                    return g.project(g.bodyPoint(k & 1 ? kHalfX : -kHalfX, k & 2 ? kHalfY : -kHalfY, k & 4 ? kHalfZ : -kHalfZ));
+                };
+                p.drawLine(corner(i), corner(j));
+            }
+    // Its forward (+Y) axis, as the module's nose.
+    p.setPen(QPen(pen, 2.0, Qt::SolidLine, Qt::RoundCap));
+    p.drawLine(g.project(g.bodyPoint(0, 0, 0)), g.project(g.bodyPoint(0, kHalfY + 0.8, 0)));
+    if (!m_ghostCaption.isEmpty()) {
+        const QRectF scene = sceneRect();
+        const QFontMetricsF fm(font());
+        const QRectF box(scene.left() + kPanelMargin, scene.bottom() - fm.height() - 2 * kPanelMargin,
+                         fm.horizontalAdvance(m_ghostCaption) + 2 * kPanelPadding, fm.height() + kPanelPadding);
+        QColor plate = palette().color(QPalette::Base);
+        plate.setAlphaF(0.8);
+        p.fillRect(box, plate);
+        p.setPen(pen);
+        p.drawText(box, Qt::AlignCenter, m_ghostCaption);
+    }
+    p.restore();
+}
+
 model::Quat AttitudeWidget::inScene(const model::Quat &q) const
 {
     return m_world == model::WorldFrame::Nwu ? model::nwuToEnu(q) : model::normalized(q);
@@ -422,6 +478,7 @@ void AttitudeWidget::paintEvent(QPaintEvent *)
         paintGround(p, v, false);
     paintGround(p, v, true);
     paintAxes(p, v, false, true);
+    paintGhost(p);
     paintReadouts(p);
 }
 
@@ -728,8 +785,15 @@ void AttitudeWidget::contextMenuEvent(QContextMenuEvent *event)
     enu->setChecked(m_frame == DisplayFrame::Enu);
     ned->setChecked(m_frame == DisplayFrame::Ned);
     menu.addSeparator();
+    QAction *ghost = menu.addAction(tr("Show ImuDesk's reference attitude"));
+    ghost->setCheckable(true);
+    ghost->setChecked(m_ghostShown);
+    ghost->setToolTip(tr("ImuDesk's own filter on the module's raw gyro and accelerometer, drawn as an outline: "
+                         "started from the module's heading when it last rested for 1 s"));
     QAction *reset = menu.addAction(tr("Reset view"));
     QAction *chosen = menu.exec(event->globalPos());
+    if (chosen == ghost)
+        Q_EMIT ghostRequested(ghost->isChecked());
     if (chosen == enu)
         setDisplayFrame(DisplayFrame::Enu);
     else if (chosen == ned)

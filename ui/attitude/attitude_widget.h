@@ -89,6 +89,16 @@ public:
     // Back to the "no data" state.
     void clear();
 
+    // A second attitude drawn as an outline beside the module (issue 55: ImuDesk's reference
+    // filter, verify/live_reference.h), in the same world frame as setQuaternion's, with a
+    // caption under the scene ("Reference 1.2° apart"). The context menu offers it
+    // (ghostRequested); setGhostShown(false) takes it away.
+    void setGhost(const model::Quat &q, const QString &caption);
+    void setGhostShown(bool shown);
+    bool ghostShown() const { return m_ghostShown; }
+    model::Quat ghost() const { return m_ghost; }
+    QString ghostCaption() const { return m_ghostCaption; }
+
     void setDisplayFrame(DisplayFrame frame);
     DisplayFrame displayFrame() const { return m_frame; }
 
@@ -118,6 +128,8 @@ public:
 
 Q_SIGNALS:
     void displayFrameChanged(imudesk::ui::AttitudeWidget::DisplayFrame frame);
+    // The user asked for the reference attitude to be shown or hidden (context menu).
+    void ghostRequested(bool shown);
 
 protected:
     void paintEvent(QPaintEvent *event) override;
@@ -148,7 +160,11 @@ private:
     void paintBody(QPainter &p, const View &v) const;
     void paintAxes(QPainter &p, const View &v, bool nearSide, bool labels) const;
     void paintReadouts(QPainter &p) const;
+    void paintGhost(QPainter &p) const;
 
+    bool m_ghostShown = false;
+    model::Quat m_ghost{};  // normalised, in the scene's frame
+    QString m_ghostCaption;
     model::Quat m_input{};  // last value passed in, as given (change detection)
     model::Quat m_quat{};   // normalised
     bool m_hasData = false;

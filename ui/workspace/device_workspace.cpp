@@ -1,4 +1,5 @@
 #include "workspace/device_workspace.h"
+#include "verify/live_reference.h"
 
 #include "device/session.h"
 
@@ -159,6 +160,7 @@ DeviceWorkspace::DeviceWorkspace(QWidget *parent) : QMainWindow(parent)
     m_attitude = new AttitudeWidget(this);
     m_attitude->setObjectName(QStringLiteral("attitudeWidget"));
     m_attitudeDock = makeDock(m_attitude, QStringLiteral("attitudeDock"));
+    connect(m_attitude, &AttitudeWidget::ghostRequested, this, &DeviceWorkspace::showReference);
     // The right column runs the whole height: the panels below the charts never shorten the
     // attitude view.
     setCorner(Qt::TopRightCorner, Qt::RightDockWidgetArea);
@@ -439,6 +441,18 @@ void DeviceWorkspace::pullSamples()
     const auto batch = link().store().since(m_chartSeq, kMaxSamplesPerTick, &m_chartSeq);
     if (!batch.empty())
         m_charts->appendSamples(batch);
+    if (m_reference)
+        for (const model::Sample &s : batch)
+            m_reference->add(s);
+}
+
+void DeviceWorkspace::showReference(bool shown)
+{
+    if (shown)
+        m_reference = std::make_unique<verify::LiveReference>();
+    else
+        m_reference.reset();
+    m_attitude->setGhostShown(shown);
 }
 
 void DeviceWorkspace::refreshViews()
@@ -463,6 +477,21 @@ void DeviceWorkspace::refreshViews()
         m_attitude->setQuaternion(latest->quat);
     else if (latest && latest->has(model::FieldEuler)) // links that send angles only
         m_attitude->setQuaternion(model::quatFromEnu312(model::Euler{latest->roll, latest->pitch, latest->yaw}));
+    // ImuDesk's reference beside it (the attitude view's context menu), in the module's frame.
+    if (m_reference && latest && (latest->has(model::FieldQuat) || latest->has(model::FieldEuler))) {
+        const model::Quat reported = latest->has(model::FieldQuat)
+            ? latest->quat
+            : model::quatFromEnu312(model::Euler{latest->roll, latest->pitch, latest->yaw});
+        if (m_reference->started()) {
+            const Eigen::Quaterniond r = m_reference->attitude();
+            const double apart =
+                m_reference->differenceDeg(Eigen::Quaterniond(reported.w, reported.x, reported.y, reported.z));
+            m_attitude->setGhost(model::Quat{r.w(), r.x(), r.y(), r.z()},
+                                 tr("Reference %1° apart (±%2°)").arg(apart, 0, 'f', 1).arg(m_reference->sigmaDeg(), 0, 'f', 1));
+        } else {
+            m_attitude->setGhost(reported, tr("Reference: hold the module still for 1 s to start it"));
+        }
+    }
     // The numbers at most ten times a second: digits that change faster cannot be read, and
     // their text layout is a good part of the GUI thread's work at 1 kHz. A tick that skips
     // them leaves m_shownTotal behind, so the newest values always arrive.

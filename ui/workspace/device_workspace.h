@@ -32,6 +32,10 @@ class QDockWidget;
 class QLabel;
 class QTableView;
 
+namespace imudesk::verify {
+class LiveReference;
+}
+
 namespace imudesk::models {
 class LatestValuesModel;
 class ClockStatsModel;
@@ -265,6 +269,9 @@ private:
     QDockWidget *m_valuesDock = nullptr;
     ChartPanel *m_charts = nullptr;
     AttitudeWidget *m_attitude = nullptr;
+    // ImuDesk's reference attitude, while the attitude view shows it (its context menu).
+    std::unique_ptr<verify::LiveReference> m_reference;
+    void showReference(bool shown);
     QDockWidget *m_attitudeDock = nullptr;
     LayoutPreset m_preset = LayoutPreset::Monitor;
     bool m_layoutRestored = false;
