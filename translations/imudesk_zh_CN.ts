@@ -1553,6 +1553,41 @@
         <source>the magnetic field disagreed between the poses (%1 of %2 set aside): calibrate the magnetometer, move away from steel and motors, and record again</source>
         <translation>各姿态的磁场不一致（%2 个中剔除了 %1 个）：请校准磁力计，远离钢铁和电机，然后重新录制</translation>
     </message>
+    <message>
+        <location filename="../core/verify/compass_check.cpp" line="+106"/>
+        <source>the compass was not held still for %1 s at the bearings %2°: turn it to each marked bearing of a level compass rose and hold it there</source>
+        <translation>罗盘未在方位 %2° 处静止保持 %1 s：请在水平的罗经盘上将它依次转到每个标记方位并保持不动</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>heading error: cannot judge, %1</source>
+        <translation>航向误差：无法判定，%1</translation>
+    </message>
+    <message>
+        <location line="+31"/>
+        <source>%1: %2 ± %3 ° (95 %), pass at most %4, fail above %5: %6</source>
+        <translation>%1：%2 ± %3 °（95 %），不超过 %4 为通过，超过 %5 为不合格：%6</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>heading error at %1°, the worst bearing</source>
+        <translation>%1° 处的航向误差（最差方位）</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>heading offset, mean of the bearings</source>
+        <translation>航向偏移（各方位平均）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>pitch on the level rose</source>
+        <translation>水平罗经盘上的俯仰</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>roll on the level rose</source>
+        <translation>水平罗经盘上的横滚</translation>
+    </message>
 </context>
 <context>
     <name>CompassPoseTracker</name>

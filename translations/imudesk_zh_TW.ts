@@ -1553,6 +1553,41 @@
         <source>the magnetic field disagreed between the poses (%1 of %2 set aside): calibrate the magnetometer, move away from steel and motors, and record again</source>
         <translation>各姿態的磁場不一致（%2 個中剔除了 %1 個）：請校準磁力計，遠離鋼鐵和馬達，然後重新錄製</translation>
     </message>
+    <message>
+        <location filename="../core/verify/compass_check.cpp" line="+106"/>
+        <source>the compass was not held still for %1 s at the bearings %2°: turn it to each marked bearing of a level compass rose and hold it there</source>
+        <translation>羅盤未在方位 %2° 處靜止保持 %1 s：請在水平的羅經盤上將它依次轉到每個標記方位並保持不動</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>heading error: cannot judge, %1</source>
+        <translation>航向誤差：無法判定，%1</translation>
+    </message>
+    <message>
+        <location line="+31"/>
+        <source>%1: %2 ± %3 ° (95 %), pass at most %4, fail above %5: %6</source>
+        <translation>%1：%2 ± %3 °（95 %），不超過 %4 為通過，超過 %5 為不合格：%6</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>heading error at %1°, the worst bearing</source>
+        <translation>%1° 處的航向誤差（最差方位）</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>heading offset, mean of the bearings</source>
+        <translation>航向偏移（各方位平均）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>pitch on the level rose</source>
+        <translation>水平羅經盤上的俯仰</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>roll on the level rose</source>
+        <translation>水平羅經盤上的橫滾</translation>
+    </message>
 </context>
 <context>
     <name>CompassPoseTracker</name>

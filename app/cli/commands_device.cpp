@@ -364,7 +364,8 @@ int cmdSimulate(const QStringList &args)
                                                   "one way at 45 deg/s, still, 720 deg back: a gyro-scale run) or twists "
                                                   "(a fixture turned sharply now and then, the same for every module "
                                                   "simulated on this host: twist-to-align) or poses (turned by hand "
-                                                  "through 12 still poses: verify)."),
+                                                  "through 12 still poses: verify) or bearings (a compass turned to the 8 marks of a "
+                                                  "level rose: verify --bearings)."),
                                    QStringLiteral("MOTION"), QStringLiteral("static")));
     p.addOption(QCommandLineOption(QStringLiteral("seed"), QStringLiteral("Random seed (default 1)."),
                                    QStringLiteral("N"), QStringLiteral("1")));
@@ -379,7 +380,8 @@ int cmdSimulate(const QStringList &args)
                        "default 40: MCAL fails), unplug=T (cable pulled T s after the start), fixture (turned "
                        "through every attitude while an MCAL runs), acc-bias=X/Y/Z (mg), acc-scale=X/Y/Z (%), "
                        "acc-misalignment=YX/ZX/ZY (deg), acc-error=MG/PCT (every axis), gyro-scale=PCT or X/Y/Z (%), "
-                       "attitude-bias=R/P/H (deg, heading clockwise), filter-lag=MS (the attitude late)."),
+                       "attitude-bias=R/P/H (deg, heading clockwise), filter-lag=MS (the attitude late). "
+                       "HEC495: calibrated (its hard iron corrected and saved before), heading-bias=DEG."),
         QStringLiteral("LIST")));
     p.addOption(QCommandLineOption(QStringLiteral("clock"),
                                    QStringLiteral("HiPNUC on a pty: the module's oscillator, PPM[,OFFSET_MS[,STEP_AT_S,STEP_MS]] "
@@ -409,7 +411,7 @@ int cmdSimulate(const QStringList &args)
                                                   "64-byte PGN 0xFF5A every 10 ms.")));
     const QString usage = QStringLiteral("imudesk-cli simulate --pty [--device hipnuc|hec495] [--model HI14] "
                                          "[--firmware 1.7.1] [--serial SN] [--baud 115200] [--address N] "
-                                         "[--motion static|spin|tumble|turntable|twists|poses] [--pps] [--seed N] [--faults LIST] "
+                                         "[--motion static|spin|tumble|turntable|twists|poses|bearings] [--pps] [--seed N] [--faults LIST] "
                                          "[--clock PPM[,OFFSET_MS[,STEP_AT_S,STEP_MS]]] [--adapter TIMER_MS[,JITTER_US[,FIXED_US]]] "
                                          "[--sync-in HZ] "
                                          "[--flash-dump FILE] [--modbus [--id N]] | --can PLUGIN:INTERFACE [--protocol j1939|canopen] "
@@ -418,8 +420,10 @@ int cmdSimulate(const QStringList &args)
         return ExitUsage;
     if (p.isSet(QStringLiteral("faults"))
         && (p.isSet(QStringLiteral("can")) || p.isSet(QStringLiteral("modbus"))
-            || p.value(QStringLiteral("device")) != QLatin1String("hipnuc")))
-        return fail(QStringLiteral("--faults is for a HiPNUC module on a pty (simulate --pty [--device hipnuc])"),
+            || (p.value(QStringLiteral("device")) != QLatin1String("hipnuc")
+                && p.value(QStringLiteral("device")) != QLatin1String("hec495"))))
+        return fail(QStringLiteral("--faults is for a HiPNUC module or an HEC495 on a pty (simulate --pty [--device "
+                                   "hipnuc|hec495])"),
                     ExitUsage);
     if (p.isSet(QStringLiteral("fd"))
         && (!p.isSet(QStringLiteral("can")) || p.value(QStringLiteral("device")) != QLatin1String("hipnuc")
@@ -430,7 +434,7 @@ int cmdSimulate(const QStringList &args)
     if (p.isSet(QStringLiteral("can"))) {
         sim::Motion m = sim::Motion::Static;
         if (!sim::parseMotion(p.value(QStringLiteral("motion")).toStdString(), m))
-            return fail(QStringLiteral("--motion must be static, spin, tumble, turntable, twists or poses"), ExitUsage);
+            return fail(QStringLiteral("--motion must be static, spin, tumble, turntable, twists, poses or bearings"), ExitUsage);
         return simulateCan(p.value(QStringLiteral("can")), p.value(QStringLiteral("protocol")), p.value(QStringLiteral("device")),
                            p.value(QStringLiteral("node")).toInt(), m, p.value(QStringLiteral("seed")).toULongLong(),
                            p.value(QStringLiteral("firmware")), p.isSet(QStringLiteral("fd")),
@@ -456,7 +460,7 @@ int cmdSimulate(const QStringList &args)
         return fail(QStringLiteral("--baud must be one of 4800 9600 19200 38400 57600 115200 230400 256000 460800 921600"),
                     ExitUsage);
     if (!sim::parseMotion(p.value(QStringLiteral("motion")).toStdString(), o.motion))
-        return fail(QStringLiteral("--motion must be static, spin, tumble, turntable, twists or poses"), ExitUsage);
+        return fail(QStringLiteral("--motion must be static, spin, tumble, turntable, twists, poses or bearings"), ExitUsage);
     o.ppsInput = p.isSet(QStringLiteral("pps"));
     if (p.isSet(QStringLiteral("serial"))) {
         // \xNN escapes (a test's bytes that are not UTF-8), the rest as UTF-8.

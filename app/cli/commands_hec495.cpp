@@ -9,6 +9,8 @@
 
 #include <QElapsedTimer>
 #include <QJsonArray>
+
+#include <cmath>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QRegularExpression>
@@ -258,10 +260,24 @@ int simulateHec495(const QCommandLineParser &p)
         return fail(QStringLiteral("--address must be 0 to 255"), ExitUsage);
     o.address = uint8_t(address);
     if (!sim::parseMotion(p.value(QStringLiteral("motion")).toStdString(), o.motion))
-        return fail(QStringLiteral("--motion must be static, spin or tumble"), ExitUsage);
+        return fail(QStringLiteral("--motion must be static, spin, tumble or bearings (turned to the 8 marks of a compass rose)"), ExitUsage);
     o.seed = p.value(QStringLiteral("seed")).toULongLong(&ok);
     if (!ok)
         return fail(QStringLiteral("--seed needs a whole number"), ExitUsage);
+    // The compass's faults: calibrated before (its hard iron corrected), a heading off by DEG.
+    for (const QString &item : p.value(QStringLiteral("faults")).split(QLatin1Char(','), Qt::SkipEmptyParts)) {
+        const QString word = item.section(QLatin1Char('='), 0, 0).trimmed().toLower();
+        if (word == QLatin1String("calibrated") && !item.contains(QLatin1Char('='))) {
+            o.calibrated = true;
+        } else if (word == QLatin1String("heading-bias")) {
+            o.headingBiasDeg = item.section(QLatin1Char('='), 1).toDouble(&ok);
+            if (!ok || std::fabs(o.headingBiasDeg) > 180)
+                return fail(QStringLiteral("heading-bias=DEG needs degrees in -180..180, got '%1'").arg(item), ExitUsage);
+        } else {
+            return fail(QStringLiteral("unknown HEC495 fault '%1' (accepted: calibrated, heading-bias=DEG)").arg(item),
+                        ExitUsage);
+        }
+    }
     sim::PtySimulator simulator(std::make_unique<sim::Hec495Simulator>(o));
     QString error;
     if (!simulator.start(&error))

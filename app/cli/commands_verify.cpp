@@ -3,7 +3,9 @@
 // poses: a capture, a vendor CSV, a raw dump, a recorded session (one device), or a port whose
 // module is recorded for --duration seconds while the operator turns it.
 #include "cli_context.h"
+#include "device/hec495_session.h"
 #include "record/sample_file.h"
+#include "verify/compass_check.h"
 #include "verify/local_gravity.h"
 #include "verify/motion_input.h"
 #include "verify/report_json.h"
@@ -24,7 +26,99 @@ namespace {
 
 constexpr const char *kUsage =
     "imudesk-cli verify CAPTURE|SESSION|PORT [--gravity M_S2 | --latitude DEG --height M] [--declination DEG] "
-    "[--device NAME] [--duration S] [--baud B] [--limit NAME=PASS/FAIL ...] [--json]";
+    "[--device NAME] [--duration S] [--baud B] [--limit NAME=PASS/FAIL ...] [--json]\n"
+    "       imudesk-cli verify HEC495_PORT|CAPTURE --bearings DEG,DEG,... [--address N] [--duration S] [--baud B] [--json]";
+
+// A compass's sample: its heading and, with it, its pitch and roll.
+bool compassSampleOf(const model::Sample &s, verify::CompassSample &out)
+{
+    if (!s.has(model::FieldHeading) || !s.has(model::FieldEuler))
+        return false;
+    out.tS = s.has(model::FieldDeviceTime) ? s.deviceTimeMs * 1e-3 : double(s.hostTimeNs) * 1e-9;
+    out.headingDeg = s.headingDeg;
+    out.pitchDeg = s.pitch;
+    out.rollDeg = s.roll;
+    return true;
+}
+
+QJsonObject compassJson(const verify::CompassReport &r, const verify::CompassCheckOptions &o, const QString &source)
+{
+    auto figure = [](QJsonObject &j, const QString &key, const verify::Figure &f) {
+        j[key] = f.judged ? QJsonValue(f.value) : QJsonValue();
+        j[key + QLatin1String("_sigma")] = f.judged ? QJsonValue(f.sigma) : QJsonValue();
+        if (!f.judged)
+            j[key + QLatin1String("_why")] = f.why;
+    };
+    QJsonObject j;
+    j[QStringLiteral("source")] = source;
+    QJsonArray bearings;
+    for (double b : o.bearingsDeg)
+        bearings.append(b);
+    j[QStringLiteral("bearings_deg")] = bearings;
+    j[QStringLiteral("bearings_held")] = r.bearingsHeld;
+    QJsonArray stops;
+    for (const verify::CompassStop &s : r.stops)
+        stops.append(QJsonObject{{QStringLiteral("from_s"), s.fromS},
+                                 {QStringLiteral("to_s"), s.toS},
+                                 {QStringLiteral("heading_deg"), s.headingDeg},
+                                 {QStringLiteral("bearing_deg"), s.bearing >= 0 ? QJsonValue(o.bearingsDeg[size_t(s.bearing)]) : QJsonValue()},
+                                 {QStringLiteral("error_deg"), s.bearing >= 0 ? QJsonValue(s.errorDeg) : QJsonValue()},
+                                 {QStringLiteral("pitch_deg"), s.pitchDeg},
+                                 {QStringLiteral("roll_deg"), s.rollDeg}});
+    j[QStringLiteral("stops")] = stops;
+    figure(j, QStringLiteral("heading_error_deg"), r.worstHeadingErrDeg);
+    if (r.worstHeadingErrDeg.judged)
+        j[QStringLiteral("heading_error_bearing_deg")] = r.worstBearingDeg;
+    figure(j, QStringLiteral("heading_offset_deg"), r.meanHeadingErrDeg);
+    QJsonObject tilt;
+    figure(tilt, QStringLiteral("pitch"), r.pitchErrDeg);
+    figure(tilt, QStringLiteral("roll"), r.rollErrDeg);
+    j[QStringLiteral("tilt_error_deg")] = tilt;
+    j[QStringLiteral("verdict")] = QString::fromLatin1(verify::verdictName(r.verdict));
+    j[QStringLiteral("reasons")] = QJsonArray::fromStringList(r.reasons);
+    return j;
+}
+
+// The live compass: its samples for `duration` seconds (the session polls it), stops counted on stderr.
+int recordCompass(const QString &port, int baud, int address, double duration, std::vector<verify::CompassSample> &out,
+                  QString *source)
+{
+    device::Hec495Session session;
+    QString failure;
+    QObject::connect(&session, &device::Hec495Session::errorOccurred, &session, [&](const QString &m) { failure = m; });
+    session.open(port, baud, address);
+    waitFor([&] { return session.state() == device::SessionState::Connected || !failure.isEmpty(); }, 30000);
+    if (session.state() != device::SessionState::Connected)
+        return fail(failure.isEmpty() ? QStringLiteral("interrupted") : failure, interrupted() ? ExitInterrupted : ExitFailure);
+    std::fprintf(stderr,
+                 "imudesk-cli: verify: recording the compass on %s for %.0f s: turn it on a level compass rose to each "
+                 "marked bearing and hold it there for 3 s; Ctrl+C ends early\n",
+                 qPrintable(port), duration);
+    uint64_t seq = session.store().totalAppended();
+    auto drain = [&] {
+        for (const auto &s : session.store().since(seq, SIZE_MAX, &seq))
+            if (verify::CompassSample c; compassSampleOf(s, c) && out.size() < verify::MotionInput::kMaxSamples)
+                out.push_back(c);
+        return false;
+    };
+    waitFor([&] { return drain() || !failure.isEmpty(); }, int(duration * 1000));
+    drain();
+    if (!failure.isEmpty())
+        std::fprintf(stderr, "imudesk-cli: verify: %s; judging what arrived before\n", qPrintable(failure));
+    *source = QStringLiteral("%1 (HEC495, address %2)").arg(port).arg(address);
+    return ExitOk;
+}
+
+int exitOf(verify::Verdict v)
+{
+    switch (v) {
+    case verify::Verdict::Pass: return ExitOk;
+    case verify::Verdict::Warn:
+    case verify::Verdict::Fail: return ExitFailure;
+    case verify::Verdict::CannotJudge: return 2;
+    }
+    return ExitFailure;
+}
 
 void printText(const verify::CheckReport &r, const QString &source)
 {
@@ -113,6 +207,13 @@ int cmdVerify(const QStringList &args)
                                                   "names: %1.")
                                        .arg(verify::Limits::names().join(QStringLiteral(", "))),
                                    QStringLiteral("NAME=PASS/FAIL")));
+    p.addOption(QCommandLineOption(QStringLiteral("bearings"),
+                                   QStringLiteral("A compass (HEC495): the marked bearings of a level compass rose it is "
+                                                  "turned to, degrees clockwise from north, comma-separated (e.g. "
+                                                  "0,90,180,270)."),
+                                   QStringLiteral("DEG,DEG,...")));
+    p.addOption(QCommandLineOption(QStringLiteral("address"), QStringLiteral("A compass on a port: its address (default 0)."),
+                                   QStringLiteral("N"), QStringLiteral("0")));
     p.addPositionalArgument(QStringLiteral("SOURCE"),
                             QStringLiteral("A capture, a vendor CSV, a raw dump, a recorded session's folder, or a "
                                            "serial port to record from."));
@@ -170,6 +271,59 @@ int cmdVerify(const QStringList &args)
     const bool isPort = !fi.isFile() && !fi.isDir()
         && (target.startsWith(QLatin1String("/dev/"))
             || QRegularExpression(QStringLiteral("^COM[0-9]+$"), QRegularExpression::CaseInsensitiveOption).match(target).hasMatch());
+    if (p.isSet(QStringLiteral("bearings"))) {
+        verify::CompassCheckOptions co;
+        co.bearingsDeg.clear();
+        for (const QString &b : p.value(QStringLiteral("bearings")).split(QLatin1Char(','), Qt::SkipEmptyParts)) {
+            bool ok = false;
+            const double v = b.trimmed().toDouble(&ok);
+            if (!ok || v < 0 || v >= 360)
+                return fail(QStringLiteral("--bearings needs degrees in 0..360 separated by commas, got '%1'").arg(b), ExitUsage);
+            co.bearingsDeg.push_back(v);
+        }
+        if (co.bearingsDeg.size() < 2)
+            return fail(QStringLiteral("--bearings needs at least two bearings (e.g. 0,90,180,270)"), ExitUsage);
+        std::vector<verify::CompassSample> compass;
+        if (isPort) {
+            double duration = 60;
+            if (!numberOption("duration", 1, 3600, &duration))
+                return fail(QStringLiteral("--duration needs seconds in 1..3600"), ExitUsage);
+            bool ok = false;
+            const int address = p.value(QStringLiteral("address")).toInt(&ok);
+            const int baud = p.isSet(QStringLiteral("baud")) ? p.value(QStringLiteral("baud")).toInt() : 0;
+            if (!ok || address < 0 || address > 255)
+                return fail(QStringLiteral("--address needs 0..255"), ExitUsage);
+            if (const int rc = recordCompass(target, baud, address, duration, compass, &source); rc != ExitOk)
+                return rc;
+        } else {
+            const auto opened = record::SampleFile::forEachSample(target, p.value(QStringLiteral("device")), [&](const model::Sample &s) {
+                if (verify::CompassSample c; compassSampleOf(s, c) && compass.size() < verify::MotionInput::kMaxSamples)
+                    compass.push_back(c);
+            });
+            if (!opened.ok)
+                return fail(opened.error);
+            source = QStringLiteral("%1 (%2)").arg(QDir::toNativeSeparators(target), opened.kind);
+        }
+        if (compass.empty())
+            return fail(QStringLiteral("%1 gave no heading with pitch and roll: a compass (HEC495) is needed for --bearings")
+                            .arg(QDir::toNativeSeparators(target)));
+        if (const verify::Limit *h = options.limits.byName(QStringLiteral("heading_deg")))
+            co.headingDeg = *h;
+        if (const verify::Limit *t = options.limits.byName(QStringLiteral("tilt_deg")))
+            co.tiltDeg = *t;
+        const verify::CompassReport report = verify::checkCompass(compass, co);
+        if (p.isSet(QStringLiteral("json"))) {
+            outRaw(QJsonDocument(compassJson(report, co, source)).toJson(QJsonDocument::Compact).toStdString());
+        } else {
+            std::printf("%s: %zu samples, %zu stops, %d of %zu bearings held\n", qPrintable(source), compass.size(),
+                        report.stops.size(), report.bearingsHeld, co.bearingsDeg.size());
+            std::printf("verdict: %s\n", verify::verdictName(report.verdict));
+            for (const QString &reason : report.reasons)
+                std::printf("  %s\n", qPrintable(reason));
+        }
+        std::fflush(stdout);
+        return exitOf(report.verdict);
+    }
     if (isPort) {
         double duration = 120;
         if (!numberOption("duration", 1, 3600, &duration) || duration <= 0)
@@ -211,13 +365,7 @@ int cmdVerify(const QStringList &args)
     else
         printText(report, source);
     std::fflush(stdout);
-    switch (report.verdict) {
-    case verify::Verdict::Pass: return ExitOk;
-    case verify::Verdict::Warn:
-    case verify::Verdict::Fail: return ExitFailure;
-    case verify::Verdict::CannotJudge: return 2;
-    }
-    return ExitFailure;
+    return exitOf(report.verdict);
 }
 
 } // namespace imudesk::cli

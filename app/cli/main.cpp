@@ -56,7 +56,7 @@ void usage(FILE *to)
                "                                         a results database: a module's history, a plan's yield,\n"
                "                                         records as CSV/JSONL, a station's upload, the line's schema\n"
                "  simulate --pty [--model HI14] [--firmware 1.7.1] [--baud 115200]\n"
-               "           [--motion static|spin|tumble|turntable|twists|poses] [--seed N] [--faults LIST]\n"
+               "           [--motion static|spin|tumble|turntable|twists|poses|bearings] [--seed N] [--faults LIST]\n"
                "                                         serve a simulated device on a pseudo-terminal; LIST:\n"
                "                                         noisy-gyro[=F],mounting=R/P/Y|wrong-mounting,\n"
                "                                         mag-disturbance[=U],unplug=T,fixture,acc-bias=X/Y/Z,\n"

@@ -116,7 +116,7 @@ Hec495Simulator::Reading Hec495Simulator::readingAt(int64_t tUs)
                                   * Eigen::AngleAxisd(e.roll * std::numbers::pi / 180.0, Eigen::Vector3d::UnitY()))
                                      .toRotationMatrix();
     const Eigen::Vector3d h = tilt * r.mag;
-    r.heading = wrap360(std::atan2(-h.x(), h.y()) * 180.0 / std::numbers::pi + m_running.declination);
+    r.heading = wrap360(std::atan2(-h.x(), h.y()) * 180.0 / std::numbers::pi + m_running.declination + m_options.headingBiasDeg);
     r.magRoll = std::atan2(r.mag.x(), -r.mag.z()) * 180.0 / std::numbers::pi;
     r.timeMs = uint32_t((tUs - m_powerOnUs) / 1000);
     return r;

@@ -66,6 +66,7 @@ struct Hec495Options {
     bool rs485 = false;
     bool calibrated = false; // calibrated and saved before: the hard iron of its sensor corrected
     bool echo = false;       // a 2-wire RS-485 adapter: the host hears what it sends, at once
+    double headingBiasDeg = 0; // a compass whose heading is off by this much (issue 55, verify)
 };
 
 class Hec495Simulator : public SimulatedSerialDevice {

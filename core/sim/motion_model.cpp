@@ -87,6 +87,7 @@ const char *motionName(Motion m)
     case Motion::Turntable: return "turntable";
     case Motion::Twists: return "twists";
     case Motion::Poses: return "poses";
+    case Motion::Bearings: return "bearings";
     }
     return "?";
 }
@@ -96,7 +97,7 @@ bool parseMotion(std::string_view text, Motion &out)
     std::string t;
     for (char c : text)
         t.push_back(char(std::tolower(uint8_t(c))));
-    for (Motion m : {Motion::Static, Motion::Spin, Motion::Tumble, Motion::Turntable, Motion::Twists, Motion::Poses})
+    for (Motion m : {Motion::Static, Motion::Spin, Motion::Tumble, Motion::Turntable, Motion::Twists, Motion::Poses, Motion::Bearings})
         if (t == motionName(m)) {
             out = m;
             return true;
@@ -287,6 +288,22 @@ MotionState MotionModel::at(double t) const
     case Motion::Poses:
         s = poseState(t);
         break;
+    case Motion::Bearings: {
+        // Heading (clockwise) 45° further at each turn; the yaw is its negative.
+        const double step = 360.0 / kBearingCount, cycle = kBearingHoldS + kBearingTurnS;
+        const int k = std::min(int(t / cycle), kBearingCount);
+        const double u = k < kBearingCount ? (t - k * cycle - kBearingHoldS) / kBearingTurnS : -1.0;
+        double heading = k * step, rate = 0;
+        if (u > 0) {
+            const double pi2 = 2 * 3.141592653589793;
+            heading += step * (u - std::sin(pi2 * u) / pi2);
+            rate = step / kBearingTurnS * (1 - std::cos(pi2 * u));
+        }
+        s.q = canonical(axisAngle(-heading, Eigen::Vector3d::UnitZ()));
+        s.rateDps = Eigen::Vector3d(0, 0, -rate);
+        s.moving = rate != 0;
+        break;
+    }
     }
     return s;
 }

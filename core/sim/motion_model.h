@@ -43,6 +43,10 @@ enum class Motion {
     // long; after the kBriefPoseAfter-th pose one more is held only kBriefPoseHoldS, too briefly
     // to count. The last pose is held from then on. MotionModel::poseHolds() gives the truth.
     Poses,
+    // A compass turned on a level compass rose to its 8 marked bearings (0, 45, ... 315°
+    // clockwise from north), held still kBearingHoldS at each, each turn kBearingTurnS (a raised
+    // cosine), then back to 0° and held there (issue 55: a compass's heading against known bearings).
+    Bearings,
 };
 const char *motionName(Motion m);
 // "static", "spin", "tumble" (case-insensitive).
@@ -93,6 +97,8 @@ public:
     static constexpr double kStaticRollDeg = 1.5;
     static constexpr double kStaticPitchDeg = -2.5;
     static constexpr double kStaticYawDeg = 35.0;
+    static constexpr int kBearingCount = 8;
+    static constexpr double kBearingHoldS = 3.5, kBearingTurnS = 1.5;
     static constexpr int kPoseCount = 12;
     static constexpr double kPoseHoldMinS = 2.5, kPoseHoldMaxS = 5.0;
     static constexpr double kPoseMoveMinS = 0.8, kPoseMoveMaxS = 2.0;

@@ -8,6 +8,7 @@
 #include "../common/test_main.h"
 #include "../common/verify_rig.h"
 #include "record/vendor_csv.h"
+#include "sim/hec495_simulator.h"
 #include "sim/hipnuc_simulator.h"
 #include "sim/pty_simulator.h"
 
@@ -159,6 +160,29 @@ private Q_SLOTS:
         for (int a = 0; a < 3; ++a)
             QVERIFY2(std::fabs(bias[a].toDouble() - truth.gyroBias()[a]) < 0.02, qPrintable(r.out));
         QVERIFY(r.err.contains(QLatin1String("hold the module still for 3 s")));
+    }
+
+    // A compass (the simulated HEC495 on a pseudo-terminal, turned to the marks of a level
+    // rose) whose heading is 10° off: the stops are matched to the bearings and the offset found.
+    void compassAgainstBearings()
+    {
+        sim::Hec495Options o;
+        o.motion = sim::Motion::Bearings;
+        o.calibrated = true;
+        o.headingBiasDeg = 10;
+        sim::PtySimulator pty(std::make_unique<sim::Hec495Simulator>(o));
+        QString error;
+        QVERIFY2(pty.start(&error), qPrintable(error));
+        const auto r = test::runCli({QStringLiteral("verify"), pty.devicePath(), QStringLiteral("--bearings"),
+                                     QStringLiteral("45,90,135"), QStringLiteral("--duration"), QStringLiteral("18"),
+                                     QStringLiteral("--baud"), QStringLiteral("9600"), QStringLiteral("--json")},
+                                    60000);
+        QVERIFY2(r.code == 1, qPrintable(r.out + r.err));
+        const QJsonObject j = r.json();
+        QCOMPARE(j.value(QLatin1String("bearings_held")).toInt(), 3);
+        QCOMPARE(j.value(QLatin1String("verdict")).toString(), QStringLiteral("fail"));
+        QVERIFY2(std::fabs(j.value(QLatin1String("heading_offset_deg")).toDouble() - 10) < 4, qPrintable(r.out));
+        QVERIFY(j.value(QLatin1String("tilt_error_deg")).toObject().contains(QLatin1String("pitch")));
     }
 
     void badArguments()
