@@ -11,18 +11,11 @@ namespace {
 
 constexpr double kRadToDeg = 57.29577951308232;
 
-using Params = Eigen::Matrix<double, 9, 1>;
+using Params = AccParams;
 
 Eigen::Matrix3d correctionOf(const Params &p)
 {
-    Eigen::Matrix3d c = Eigen::Matrix3d::Zero();
-    c(0, 0) = p[3];
-    c(1, 0) = p[4];
-    c(1, 1) = p[5];
-    c(2, 0) = p[6];
-    c(2, 1) = p[7];
-    c(2, 2) = p[8];
-    return c;
+    return accCorrectionOf(p);
 }
 
 // The 95 % quantile of chi-square with nu degrees of freedom (Wilson and Hilferty).
@@ -45,6 +38,26 @@ Eigen::Matrix<double, 9, 1> figuresOf(const Params &p)
 }
 
 } // namespace
+
+Eigen::Matrix3d accCorrectionOf(const AccParams &p)
+{
+    Eigen::Matrix3d c = Eigen::Matrix3d::Zero();
+    c(0, 0) = p[3];
+    c(1, 0) = p[4];
+    c(1, 1) = p[5];
+    c(2, 0) = p[6];
+    c(2, 1) = p[7];
+    c(2, 2) = p[8];
+    return c;
+}
+
+AccParams accParams(const AccFit &fit)
+{
+    const Eigen::Matrix3d &c = fit.correction;
+    AccParams p;
+    p << fit.biasG, c(0, 0), c(1, 0), c(1, 1), c(2, 0), c(2, 1), c(2, 2);
+    return p;
+}
 
 void accFiguresOf(const Eigen::Matrix3d &a, Eigen::Vector3d &scalePct, Eigen::Vector3d &misalignmentDeg)
 {
@@ -123,9 +136,7 @@ AccFit fitAccelerometer(const std::vector<Pose> &poses, double gravityG)
 
 AccFigures accFigures(const AccFit &fit)
 {
-    Params p;
-    const Eigen::Matrix3d &c = fit.correction;
-    p << fit.biasG, c(0, 0), c(1, 0), c(1, 1), c(2, 0), c(2, 1), c(2, 2);
+    const Params p = accParams(fit);
     const Eigen::Matrix<double, 9, 1> f0 = figuresOf(p);
     Eigen::Matrix<double, 9, 9> jac;
     for (int k = 0; k < 9; ++k) {

@@ -16,6 +16,10 @@ struct AccFit {
     double inflation = 1; // the residuals showed more than the poses' noise: covariance scaled by this
 };
 AccFit fitAccelerometer(const std::vector<Pose> &poses, double gravityG);
+// The fit's nine parameters in the covariance's order, and C from them.
+using AccParams = Eigen::Matrix<double, 9, 1>;
+AccParams accParams(const AccFit &fit);
+Eigen::Matrix3d accCorrectionOf(const AccParams &p);
 // Bias (mg), scale error (%), misalignment x-y, x-z, y-z (deg) of a fit, and their 1-sigma.
 struct AccFigures {
     Eigen::Vector3d biasMg, scalePct, misalignmentDeg;

@@ -126,17 +126,9 @@ AttitudeCheck checkAttitude(std::vector<Pose> &poses, const AccFit &acc, const C
     }
     // The reference's own error: the accelerometer fit's, the same at every pose (so the poses'
     // spread does not show it), carried through the mean roll and pitch of the poses used.
-    Eigen::Matrix<double, 9, 1> params;
-    params << acc.biasG, acc.correction(0, 0), acc.correction(1, 0), acc.correction(1, 1), acc.correction(2, 0),
-        acc.correction(2, 1), acc.correction(2, 2);
-    auto meanTilt = [&](const Eigen::Matrix<double, 9, 1> &q) {
-        Eigen::Matrix3d c = Eigen::Matrix3d::Zero();
-        c(0, 0) = q[3];
-        c(1, 0) = q[4];
-        c(1, 1) = q[5];
-        c(2, 0) = q[6];
-        c(2, 1) = q[7];
-        c(2, 2) = q[8];
+    const AccParams params = accParams(acc);
+    auto meanTilt = [&](const AccParams &q) {
+        const Eigen::Matrix3d c = accCorrectionOf(q);
         Eigen::Vector2d sum = Eigen::Vector2d::Zero();
         for (const Pose &p : poses)
             if (p.tiltUsed) {
@@ -147,7 +139,7 @@ AttitudeCheck checkAttitude(std::vector<Pose> &poses, const AccFit &acc, const C
     };
     Eigen::Matrix<double, 2, 9> jac;
     for (int k = 0; k < 9; ++k) {
-        Eigen::Matrix<double, 9, 1> plus = params, minus = params;
+        AccParams plus = params, minus = params;
         plus[k] += 1e-6;
         minus[k] -= 1e-6;
         jac.col(k) = (meanTilt(plus) - meanTilt(minus)) / 2e-6;
