@@ -1529,7 +1529,7 @@
         <translation>俯仰角 %1°：在 ±90° 附近，横滚和航向没有意义</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+34"/>
         <source>needs at least 3 still poses with the module&apos;s attitude and a pitch within ±%1° (found %2)</source>
         <translation>需要至少 3 个带有模块姿态输出、且俯仰角在 ±%1° 以内的静止姿态（找到 %2 个）</translation>
     </message>
@@ -8280,7 +8280,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::AttitudeWidget</name>
     <message>
-        <location filename="../ui/attitude/attitude_widget.cpp" line="+376"/>
+        <location filename="../ui/attitude/attitude_widget.cpp" line="+409"/>
         <source>X</source>
         <translation>X</translation>
     </message>
@@ -8337,7 +8337,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>NWU 3-1-2</translation>
     </message>
     <message>
-        <location line="-1"/>
+        <location line="-15"/>
+        <source>%1° in %2 s</source>
+        <translation>%2 s 内最大 %1°</translation>
+    </message>
+    <message>
+        <location line="+14"/>
         <source>NWU 3-1-2 (assumed)</source>
         <translation>NWU 3-1-2（假定）</translation>
     </message>
@@ -10298,12 +10303,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>%2 上的 %1</translation>
     </message>
     <message>
-        <location line="+123"/>
+        <location line="+124"/>
         <source>Reference %1° apart (±%2°)</source>
         <translation>参考姿态相差 %1°（±%2°）</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>Reference: hold the module still for 1 s to start it</source>
         <translation>参考姿态：让模块静止 1 s 以启动</translation>
     </message>

@@ -203,8 +203,13 @@ private Q_SLOTS:
         // The simulated module reports the truth: the reference agrees within a few tenths of a degree.
         const double apart = view->ghostCaption().section(QLatin1Char(' '), 1, 1).chopped(1).toDouble();
         QVERIFY2(apart < 0.5, qPrintable(view->ghostCaption()));
+        // The chart of their difference fills on the view's clock.
+        QTRY_VERIFY_WITH_TIMEOUT(view->ghostTrace().size() >= 5, 5000);
+        for (const QPointF &v : view->ghostTrace())
+            QVERIFY(v.y() < 0.5);
         Q_EMIT view->ghostRequested(false);
         QVERIFY(!view->ghostShown());
+        QVERIFY(view->ghostTrace().empty());
         ws.disconnectDevice();
         QTRY_COMPARE(ws.state(), SessionState::Closed);
     }

@@ -219,9 +219,22 @@ void AttitudeWidget::setGhostShown(bool shown)
     if (shown == m_ghostShown)
         return;
     m_ghostShown = shown;
-    if (!shown)
+    if (!shown) {
         m_ghostCaption.clear();
+        m_ghostTrace.clear();
+    }
     update();
+}
+
+void AttitudeWidget::addGhostDifference(double tS, double apartDeg)
+{
+    if (!std::isfinite(tS) || !std::isfinite(apartDeg) || (!m_ghostTrace.empty() && tS <= m_ghostTrace.back().x()))
+        return;
+    m_ghostTrace.emplace_back(tS, apartDeg);
+    size_t drop = 0;
+    while (drop < m_ghostTrace.size() && (tS - m_ghostTrace[drop].x() > kGhostTraceS || m_ghostTrace.size() - drop > kGhostTraceMax))
+        ++drop;
+    m_ghostTrace.erase(m_ghostTrace.begin(), m_ghostTrace.begin() + std::ptrdiff_t(drop));
 }
 
 void AttitudeWidget::paintGhost(QPainter &p) const
@@ -256,6 +269,28 @@ void AttitudeWidget::paintGhost(QPainter &p) const
         p.fillRect(box, plate);
         p.setPen(pen);
         p.drawText(box, Qt::AlignCenter, m_ghostCaption);
+        // The last kGhostTraceS of the angle apart, above the caption across the scene: 0 at the
+        // bottom, the largest angle (at least 1°) at the top, now at the right edge.
+        if (m_ghostTrace.size() >= 2) {
+            const double h = 2.5 * fm.height();
+            const QRectF chart(scene.left() + kPanelMargin, box.top() - h - kPanelMargin / 2,
+                               std::max(40.0, scene.width() - 2 * kPanelMargin), h);
+            p.fillRect(chart, plate);
+            double top = 1.0;
+            for (const QPointF &v : m_ghostTrace)
+                top = std::max(top, v.y());
+            const double now = m_ghostTrace.back().x();
+            QPolygonF line;
+            for (const QPointF &v : m_ghostTrace)
+                line << QPointF(chart.right() - (now - v.x()) / kGhostTraceS * chart.width(),
+                                chart.bottom() - v.y() / top * chart.height());
+            p.setPen(QPen(pen, 1.5));
+            p.drawPolyline(line);
+            p.setPen(QPen(pen, 0));
+            p.drawRect(chart);
+            p.drawText(chart.adjusted(4, 2, -4, 0), Qt::AlignTop | Qt::AlignLeft,
+                       tr("%1° in %2 s").arg(top, 0, 'f', 1).arg(kGhostTraceS, 0, 'f', 0));
+        }
     }
     p.restore();
 }

@@ -50,6 +50,8 @@
 #include <QPixmap>
 #include <QWidget>
 
+#include <vector>
+
 #include <array>
 
 namespace imudesk::ui {
@@ -94,6 +96,12 @@ public:
     // caption under the scene ("Reference 1.2° apart"). The context menu offers it
     // (ghostRequested); setGhostShown(false) takes it away.
     void setGhost(const model::Quat &q, const QString &caption);
+    // The angle between the module and the reference at tS (seconds, any clock that only goes
+    // forward): the last kGhostTraceS of it drawn as a small chart under the caption.
+    static constexpr double kGhostTraceS = 30.0;
+    static constexpr size_t kGhostTraceMax = 2000;
+    void addGhostDifference(double tS, double apartDeg);
+    const std::vector<QPointF> &ghostTrace() const { return m_ghostTrace; }
     void setGhostShown(bool shown);
     bool ghostShown() const { return m_ghostShown; }
     model::Quat ghost() const { return m_ghost; }
@@ -165,6 +173,7 @@ private:
     bool m_ghostShown = false;
     model::Quat m_ghost{};  // normalised, in the scene's frame
     QString m_ghostCaption;
+    std::vector<QPointF> m_ghostTrace; // (t, angle apart), oldest first
     model::Quat m_input{};  // last value passed in, as given (change detection)
     model::Quat m_quat{};   // normalised
     bool m_hasData = false;

@@ -448,9 +448,10 @@ void DeviceWorkspace::pullSamples()
 
 void DeviceWorkspace::showReference(bool shown)
 {
-    if (shown)
+    if (shown) {
         m_reference = std::make_unique<verify::LiveReference>();
-    else
+        m_referenceClock.start();
+    } else
         m_reference.reset();
     m_attitude->setGhostShown(shown);
 }
@@ -488,6 +489,7 @@ void DeviceWorkspace::refreshViews()
                 m_reference->differenceDeg(Eigen::Quaterniond(reported.w, reported.x, reported.y, reported.z));
             m_attitude->setGhost(model::Quat{r.w(), r.x(), r.y(), r.z()},
                                  tr("Reference %1° apart (±%2°)").arg(apart, 0, 'f', 1).arg(m_reference->sigmaDeg(), 0, 'f', 1));
+            m_attitude->addGhostDifference(double(m_referenceClock.nsecsElapsed()) * 1e-9, apart);
         } else {
             m_attitude->setGhost(reported, tr("Reference: hold the module still for 1 s to start it"));
         }

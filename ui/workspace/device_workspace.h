@@ -271,6 +271,7 @@ private:
     AttitudeWidget *m_attitude = nullptr;
     // ImuDesk's reference attitude, while the attitude view shows it (its context menu).
     std::unique_ptr<verify::LiveReference> m_reference;
+    QElapsedTimer m_referenceClock; // the difference chart's time
     void showReference(bool shown);
     QDockWidget *m_attitudeDock = nullptr;
     LayoutPreset m_preset = LayoutPreset::Monitor;
