@@ -1367,7 +1367,7 @@
 <context>
     <name>CheckReport</name>
     <message>
-        <location filename="../core/verify/gyro_fit.cpp" line="+64"/>
+        <location filename="../core/verify/gyro_fit.cpp" line="+118"/>
         <source>no still pose</source>
         <translation>没有静止姿态</translation>
     </message>
@@ -1398,12 +1398,22 @@
         <translation>静止姿态之间需要至少 3 次超过 20° 的转动（找到 %1 次）</translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+7"/>
+        <source>the turns between poses do not pin the gyro&apos;s scale: turn it about each axis while that axis is level</source>
+        <translation>姿态之间的转动不足以确定陀螺仪的标度因数：请在各轴水平时绕该轴转动模块</translation>
+    </message>
+    <message>
+        <location line="+37"/>
+        <source>the turns between poses do not pin the gyro&apos;s axes (at least 6 turns of more than 20°, about every axis, are needed; found %1)</source>
+        <translation>姿态之间的转动不足以确定陀螺仪的轴向（需要至少 6 次超过 20° 且覆盖各轴的转动；找到 %1 次）</translation>
+    </message>
+    <message>
+        <location line="+14"/>
         <source>the turns between poses did not turn the module about its %1 axis enough: turn it about each axis while that axis is level</source>
         <translation>姿态之间的转动中，模块绕其 %1 轴转动不足：请在每个轴保持水平时绕该轴转动模块</translation>
     </message>
     <message>
-        <location filename="../core/verify/module_check.cpp" line="+70"/>
+        <location filename="../core/verify/module_check.cpp" line="+71"/>
         <source>pass</source>
         <translation>通过</translation>
     </message>
@@ -1438,7 +1448,7 @@
         <translation>请在至少 %1 个朝向上各让模块静止 3 s（每个面分别朝上和朝下，再加上介于它们之间的朝向）</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+25"/>
         <location line="+10"/>
         <source>no still pose: %1</source>
         <translation>没有静止姿态：%1</translation>
@@ -1454,7 +1464,7 @@
         <translation>这些姿态不足以确定加速度计的误差：%1</translation>
     </message>
     <message>
-        <location line="+40"/>
+        <location line="+45"/>
         <source>accelerometer bias</source>
         <translation>加速度计零偏</translation>
     </message>
@@ -1480,6 +1490,11 @@
     </message>
     <message>
         <location line="+1"/>
+        <source>gyro misalignment</source>
+        <translation>陀螺仪轴间失准</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>roll error</source>
         <translation>横滚误差</translation>
     </message>
@@ -1504,7 +1519,7 @@
         <translation>姿态滞后</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+15"/>
         <source>the bench&apos;s gravity was not given: standard gravity (9.80665 m/s²) assumed, its uncertainty (±0.3 %) is in the scale figures; give --gravity or --latitude and --height</source>
         <translation>未给出测试台处的重力加速度：已按标准重力（9.80665 m/s²）计算，其不确定度（±0.3 %）已计入标度因数的数值；请给出 --gravity，或 --latitude 和 --height</translation>
     </message>
@@ -7467,7 +7482,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>无法判定：%1</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+31"/>
         <source>%1 poses; %2</source>
         <translation>%1 个姿态；%2</translation>
     </message>
@@ -8280,7 +8295,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::AttitudeWidget</name>
     <message>
-        <location filename="../ui/attitude/attitude_widget.cpp" line="+409"/>
+        <location filename="../ui/attitude/attitude_widget.cpp" line="+411"/>
         <source>X</source>
         <translation>X</translation>
     </message>
@@ -15910,6 +15925,11 @@ Edit it (Edit…) and start again.</source>
     </message>
     <message>
         <location line="+1"/>
+        <source>Gyro misalignment, largest (°)</source>
+        <translation>陀螺仪轴间失准，最大值（°）</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Roll error (°)</source>
         <translation>横滚误差（°）</translation>
     </message>

@@ -1367,7 +1367,7 @@
 <context>
     <name>CheckReport</name>
     <message>
-        <location filename="../core/verify/gyro_fit.cpp" line="+64"/>
+        <location filename="../core/verify/gyro_fit.cpp" line="+118"/>
         <source>no still pose</source>
         <translation>沒有靜止姿態</translation>
     </message>
@@ -1398,12 +1398,22 @@
         <translation>靜止姿態之間需要至少 3 次超過 20° 的轉動（找到 %1 次）</translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+7"/>
+        <source>the turns between poses do not pin the gyro&apos;s scale: turn it about each axis while that axis is level</source>
+        <translation>姿態之間的轉動不足以確定陀螺儀的標度：請在各軸水平時繞該軸轉動模組</translation>
+    </message>
+    <message>
+        <location line="+37"/>
+        <source>the turns between poses do not pin the gyro&apos;s axes (at least 6 turns of more than 20°, about every axis, are needed; found %1)</source>
+        <translation>姿態之間的轉動不足以確定陀螺儀的軸向（需要至少 6 次超過 20° 且涵蓋各軸的轉動；找到 %1 次）</translation>
+    </message>
+    <message>
+        <location line="+14"/>
         <source>the turns between poses did not turn the module about its %1 axis enough: turn it about each axis while that axis is level</source>
         <translation>姿態之間的轉動中，模組繞其 %1 軸轉動不足：請在每個軸保持水平時繞該軸轉動模組</translation>
     </message>
     <message>
-        <location filename="../core/verify/module_check.cpp" line="+70"/>
+        <location filename="../core/verify/module_check.cpp" line="+71"/>
         <source>pass</source>
         <translation>通過</translation>
     </message>
@@ -1438,7 +1448,7 @@
         <translation>請在至少 %1 個朝向上各讓模組靜止 3 s（每個面分別朝上和朝下，再加上介於它們之間的朝向）</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+25"/>
         <location line="+10"/>
         <source>no still pose: %1</source>
         <translation>沒有靜止姿態：%1</translation>
@@ -1454,7 +1464,7 @@
         <translation>這些姿態不足以確定加速度計的誤差：%1</translation>
     </message>
     <message>
-        <location line="+40"/>
+        <location line="+45"/>
         <source>accelerometer bias</source>
         <translation>加速度計零偏</translation>
     </message>
@@ -1480,6 +1490,11 @@
     </message>
     <message>
         <location line="+1"/>
+        <source>gyro misalignment</source>
+        <translation>陀螺儀軸間失準</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>roll error</source>
         <translation>橫滾誤差</translation>
     </message>
@@ -1504,7 +1519,7 @@
         <translation>姿態延遲</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+15"/>
         <source>the bench&apos;s gravity was not given: standard gravity (9.80665 m/s²) assumed, its uncertainty (±0.3 %) is in the scale figures; give --gravity or --latitude and --height</source>
         <translation>未給出測試台處的重力加速度：已按標準重力（9.80665 m/s²）計算，其不確定度（±0.3 %）已計入標度的數值；請給出 --gravity，或 --latitude 和 --height</translation>
     </message>
@@ -7467,7 +7482,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>無法判定：%1</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+31"/>
         <source>%1 poses; %2</source>
         <translation>%1 個姿態；%2</translation>
     </message>
@@ -8280,7 +8295,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::AttitudeWidget</name>
     <message>
-        <location filename="../ui/attitude/attitude_widget.cpp" line="+409"/>
+        <location filename="../ui/attitude/attitude_widget.cpp" line="+411"/>
         <source>X</source>
         <translation>X</translation>
     </message>
@@ -15910,6 +15925,11 @@ Edit it (Edit…) and start again.</source>
     </message>
     <message>
         <location line="+1"/>
+        <source>Gyro misalignment, largest (°)</source>
+        <translation>陀螺儀軸間失準，最大值（°）</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Roll error (°)</source>
         <translation>橫滾誤差（°）</translation>
     </message>

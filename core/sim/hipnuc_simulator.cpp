@@ -93,6 +93,8 @@ HipnucSimulator::HipnucSimulator(SimOptions options)
     m_sensor.setGyroScaleErrors(Eigen::Vector3d::Constant(m_options.gyroScaleError)
                                 + Eigen::Vector3d(gs[0], gs[1], gs[2]) * 0.01);
     m_sensor.setAccError(accErrorOf(m_options.faults));
+    const auto &gm = m_options.faults.gyroMisalignmentDeg;
+    m_sensor.setGyroMisalignment(Eigen::Vector3d(gm[0], gm[1], gm[2]) * (std::numbers::pi / 180.0));
     m_sensor.setGyroNoiseFactor(m_options.faults.gyroNoiseFactor);
     const auto &mount = m_options.faults.mountingErrorDeg;
     m_mounted = mount != std::array<double, 3>{0, 0, 0};

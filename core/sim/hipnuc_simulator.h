@@ -155,6 +155,7 @@ struct SimFaults {
     std::array<double, 3> accScalePct{0, 0, 0};
     std::array<double, 3> accMisalignmentDeg{0, 0, 0};
     std::array<double, 3> gyroScalePct{0, 0, 0};
+    std::array<double, 3> gyroMisalignmentDeg{0, 0, 0}; // as accMisalignmentDeg
     std::array<double, 3> attitudeBiasDeg{0, 0, 0};
     double filterLagMs = 0;
 
@@ -168,7 +169,8 @@ struct SimFaults {
 //   unplug=T          unplugAtS = T (seconds >= 0)            fixture           magCalFixture
 //   comconfig=spaced|unlabelled   comConfigStyle (LOG COMCONFIG in another format)
 //   acc-bias=X/Y/Z (mg)  acc-scale=X/Y/Z (%)  acc-misalignment=YX/ZX/ZY (deg)  acc-error=MG/PCT (all axes)
-//   gyro-scale=PCT or X/Y/Z (%)  attitude-bias=R/P/H (deg, heading clockwise)  filter-lag=MS
+//   gyro-scale=PCT or X/Y/Z (%)  gyro-misalignment=YX/ZX/ZY (deg)  attitude-bias=R/P/H (deg, heading clockwise)
+//   filter-lag=MS
 // An empty text is no fault. Words not in `text` keep their value in `out`. On a word or value
 // it does not accept it returns false, and *error (if given) says which and what is accepted.
 bool parseSimFaults(std::string_view text, SimFaults &out, std::string *error = nullptr);

@@ -32,6 +32,14 @@ Eigen::Matrix3d SensorModel::AccError::matrix() const
     return (Eigen::Vector3d::Ones() + scale).asDiagonal() * n;
 }
 
+Eigen::Matrix3d SensorModel::gyroMatrix() const
+{
+    AccError shape; // the same lower-triangular form as the accelerometer's
+    shape.scale = m_gyroScaleError;
+    shape.misalignmentRad = m_gyroMisalignment;
+    return shape.matrix();
+}
+
 void SensorModel::setIronLeft(double fraction)
 {
     m_hardIron *= fraction;
@@ -43,7 +51,7 @@ SensorReading SensorModel::ideal(const MotionState &s) const
     const Eigen::Matrix3d rT = s.q.toRotationMatrix().transpose();
     SensorReading r;
     r.acc = m_accMatrix * (rT * Eigen::Vector3d(0, 0, 1)) + m_accError.biasG;
-    r.gyr = (Eigen::Vector3d::Ones() + m_gyroScaleError).cwiseProduct(s.rateDps) + m_gyroBias;
+    r.gyr = gyroMatrix() * s.rateDps + m_gyroBias;
     r.mag = m_softIron * (rT * fieldNav()) + m_hardIron;
     r.pressurePa = kPressurePa;
     r.temperatureC = kTemperatureC;

@@ -5,7 +5,8 @@
 //                A = diag(1 + scale) * (I + N), N strictly lower triangular (the y axis leans
 //                towards x by N(1,0), z towards x by N(2,0) and towards y by N(2,1), radians),
 //                b the bias: the identity and zero unless AccError is set
-//   gyr (deg/s) = diag(1 + scale errors) * true rate + bias + white noise (kGyrNoiseDps * noise factor)
+//   gyr (deg/s) = diag(1 + scale errors) (I + N_g) * true rate + bias + white noise (kGyrNoiseDps * noise
+//                factor), N_g the gyro's misalignment as the accelerometer's N
 //   mag (uT)   = S * (R^T * B_nav) + h + white noise, B_nav = (0, 28, -42) uT in ENU
 //   pressure about 100 kPa, temperature about 30 degC, each with a little noise.
 // Bias, hard iron h and soft iron S are drawn from the seed; the noise comes from a
@@ -50,6 +51,12 @@ public:
     void setGyroScaleError(double e) { m_gyroScaleError = Eigen::Vector3d::Constant(e); }
     // The same per axis.
     void setGyroScaleErrors(const Eigen::Vector3d &e) { m_gyroScaleError = e; }
+    // The gyro's axes leaning as the accelerometer's may (AccError::misalignmentRad's order):
+    // measured = diag(1 + scale) (I + N) true + bias.
+    void setGyroMisalignment(const Eigen::Vector3d &rad) { m_gyroMisalignment = rad; }
+    const Eigen::Vector3d &gyroMisalignment() const { return m_gyroMisalignment; }
+    // diag(1 + scale) (I + N): the gyro's measured per true.
+    Eigen::Matrix3d gyroMatrix() const;
     const Eigen::Vector3d &gyroScaleErrors() const { return m_gyroScaleError; }
     // The accelerometer's errors (a module's factory calibration left imperfect).
     struct AccError {
@@ -79,6 +86,7 @@ private:
     Eigen::Vector3d m_hardIron;
     Eigen::Matrix3d m_softIron;
     Eigen::Vector3d m_gyroScaleError = Eigen::Vector3d::Zero();
+    Eigen::Vector3d m_gyroMisalignment = Eigen::Vector3d::Zero();
     AccError m_accError;
     Eigen::Matrix3d m_accMatrix = Eigen::Matrix3d::Identity();
     double m_gyroNoiseFactor = 1;

@@ -14,7 +14,7 @@ namespace {
 constexpr const char *kAccepted =
     "noisy-gyro, noisy-gyro=F, mounting=R/P/Y, wrong-mounting, mag-disturbance, mag-disturbance=U, unplug=T, fixture, "
     "comconfig=spaced|unlabelled, acc-bias=X/Y/Z, acc-scale=X/Y/Z, acc-misalignment=YX/ZX/ZY, acc-error=MG/PCT, "
-    "gyro-scale=PCT or X/Y/Z, attitude-bias=R/P/H, filter-lag=MS";
+    "gyro-scale=PCT or X/Y/Z, gyro-misalignment=YX/ZX/ZY, attitude-bias=R/P/H, filter-lag=MS";
 
 std::string_view trimmed(std::string_view s)
 {
@@ -139,6 +139,10 @@ bool parseSimFaults(std::string_view text, SimFaults &out, std::string *error)
             if (!hasValue || !parseTriple(value, f.gyroScalePct, true))
                 return fail("gyro-scale=PCT (or X/Y/Z) needs the gyro's scale error in % (e.g. gyro-scale=0.5), got '"
                             + shown + "'");
+        } else if (word == "gyro-misalignment") {
+            if (!hasValue || !parseTriple(value, f.gyroMisalignmentDeg))
+                return fail("gyro-misalignment=YX/ZX/ZY needs three angles in degrees (y towards x, z towards x, z "
+                            "towards y), got '" + shown + "'");
         } else if (word == "attitude-bias") {
             if (!hasValue || !parseTriple(value, f.attitudeBiasDeg))
                 return fail("attitude-bias=R/P/H needs roll/pitch/heading offsets in degrees (heading clockwise, e.g. "
@@ -208,6 +212,8 @@ std::string simFaultsText(const SimFaults &faults)
         add("acc-misalignment=" + tripleText(faults.accMisalignmentDeg));
     if (faults.gyroScalePct != none.gyroScalePct)
         add("gyro-scale=" + tripleText(faults.gyroScalePct));
+    if (faults.gyroMisalignmentDeg != none.gyroMisalignmentDeg)
+        add("gyro-misalignment=" + tripleText(faults.gyroMisalignmentDeg));
     if (faults.attitudeBiasDeg != none.attitudeBiasDeg)
         add("attitude-bias=" + tripleText(faults.attitudeBiasDeg));
     if (faults.filterLagMs != none.filterLagMs)

@@ -54,6 +54,8 @@ void ModuleRunner::evaluateVerify()
     worst3(QStringLiteral("gyro_bias"), r.gyroBiasDps, QStringLiteral("°/s"), "gyro_bias_max_dps");
     if (r.gyroScalePct.judged)
         worst3(QStringLiteral("gyro_scale_error"), r.gyroScalePct, QStringLiteral("%"), "gyro_scale_max_pct");
+    if (r.gyroMisalignmentDeg.judged)
+        info(QStringLiteral("gyro_misalignment"), r.gyroMisalignmentDeg.value, QStringLiteral("°"));
     const verify::Figure &tilt =
         std::fabs(r.rollErrDeg.value) >= std::fabs(r.pitchErrDeg.value) ? r.rollErrDeg : r.pitchErrDeg;
     ok = measureMagnitude(QStringLiteral("tilt_error"), tilt.value, QStringLiteral("°"), "tilt_max_deg") && ok;

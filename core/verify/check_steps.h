@@ -32,6 +32,10 @@ void accFiguresOf(const Eigen::Matrix3d &a, Eigen::Vector3d &scalePct, Eigen::Ve
 // Step 3: the gyro's bias and scale.
 struct GyroFit {
     Figure3 biasDps, scalePct;
+    Figure misalignmentDeg; // the largest of the three
+    Eigen::Vector3d misalignmentAxesDeg = Eigen::Vector3d::Zero(); // x-y, x-z, y-z
+    Eigen::Vector3d misalignmentAxesSigmaDeg = Eigen::Vector3d::Zero();
+    Eigen::Matrix3d correction = Eigen::Matrix3d::Identity(); // true = correction (measured - bias)
     int turns = 0;
 };
 GyroFit fitGyro(const std::vector<MotionSample> &samples, const std::vector<Pose> &poses, const AccFit &acc);

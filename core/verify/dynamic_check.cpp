@@ -64,7 +64,7 @@ DynamicCheck checkDynamic(const std::vector<MotionSample> &samples, const std::v
     s.gravityG = (acc.correction * (first->acc - acc.biasG)).norm(); // the fitted gravity
     s.gyroBias = gyro.biasDps.judged ? gyro.biasDps.value : Eigen::Vector3d::Zero();
     if (gyro.scalePct.judged)
-        s.gyroScale = gyro.scalePct.value / 100.0;
+        s.gyroCorrection = gyro.correction;
     std::vector<double> noise;
     for (const Pose &p : poses)
         noise.push_back(p.gyrSigma.norm() / std::sqrt(3.0) * std::sqrt(double(p.samples)));

@@ -14,6 +14,7 @@ namespace {
 constexpr double kDegToRad = 0.017453292519943295;
 constexpr double kMaxTurnS = 30;       // longer between two poses: the bias's error grows too large
 constexpr double kMaxScaleSigmaPct = 0.3; // a scale known worse than this is not judged
+constexpr double kMaxMisalignmentSigmaDeg = 0.3; // nor a misalignment known worse than this
 
 // One turn between two poses: the rate samples (bias removed) and the calibrated gravity
 // direction at each end.
@@ -23,14 +24,14 @@ struct Turn {
     Eigen::Vector3d upFrom, upTo;
 };
 
-// The rotation of the body over a turn (q_to = q_from * result) with the rate divided by
-// (1 + scale): trapezoidal rates, the exact rotation of each step.
-Eigen::Quaterniond integrate(const Turn &t, const Eigen::Vector3d &scale)
+// The rotation of the body over a turn (q_to = q_from * result) with the true rate taken as
+// `correction` times the measured one (bias removed): trapezoidal rates, the exact rotation of
+// each step.
+Eigen::Quaterniond integrate(const Turn &t, const Eigen::Matrix3d &correction)
 {
     Eigen::Quaterniond q = Eigen::Quaterniond::Identity();
-    const Eigen::Vector3d inv = (Eigen::Vector3d::Ones() + scale).cwiseInverse();
     for (size_t i = 0; i + 1 < t.rate.size(); ++i) {
-        const Eigen::Vector3d w = 0.5 * (t.rate[i] + t.rate[i + 1]).cwiseProduct(inv) * kDegToRad;
+        const Eigen::Vector3d w = correction * (0.5 * (t.rate[i] + t.rate[i + 1])) * kDegToRad;
         const double angle = w.norm() * t.dt[i];
         if (angle > 0)
             q = q * Eigen::Quaterniond(Eigen::AngleAxisd(angle, w.normalized()));
@@ -38,15 +39,68 @@ Eigen::Quaterniond integrate(const Turn &t, const Eigen::Vector3d &scale)
     return q.normalized();
 }
 
-// Residuals of every turn: the first pose's gravity carried to the second minus the second's.
-Eigen::VectorXd residuals(const std::vector<Turn> &turns, const Eigen::Vector3d &scale)
+// The gyro's model: measured = G true + bias, G = diag(1 + scale) (I + N), N strictly lower
+// triangular (the accelerometer's form); the parameters: three scales, then (with
+// misalignment) N(1,0), N(2,0), N(2,1).
+Eigen::Matrix3d gyroMatrixOf(const Eigen::VectorXd &p)
 {
+    Eigen::Matrix3d n = Eigen::Matrix3d::Identity();
+    if (p.size() == 6) {
+        n(1, 0) = p[3];
+        n(2, 0) = p[4];
+        n(2, 1) = p[5];
+    }
+    return (Eigen::Vector3d::Ones() + p.head<3>()).asDiagonal() * n;
+}
+
+// Residuals of every turn: the first pose's gravity carried to the second minus the second's.
+Eigen::VectorXd residuals(const std::vector<Turn> &turns, const Eigen::VectorXd &p)
+{
+    const Eigen::Matrix3d correction = gyroMatrixOf(p).inverse();
     Eigen::VectorXd r(3 * turns.size());
     for (size_t k = 0; k < turns.size(); ++k) {
-        const Eigen::Quaterniond q = integrate(turns[k], scale);
+        const Eigen::Quaterniond q = integrate(turns[k], correction);
         r.segment<3>(3 * Eigen::Index(k)) = q.conjugate() * turns[k].upFrom - turns[k].upTo;
     }
     return r;
+}
+
+struct GyroSolution {
+    Eigen::VectorXd p;
+    Eigen::MatrixXd covariance;
+    bool ok = false;
+};
+
+// Gauss-Newton over `count` parameters (3: scales; 6: with misalignment).
+GyroSolution solve(const std::vector<Turn> &turns, int count)
+{
+    GyroSolution out;
+    out.p = Eigen::VectorXd::Zero(count);
+    Eigen::MatrixXd j(3 * turns.size(), count);
+    Eigen::VectorXd r;
+    for (int iteration = 0; iteration < 8; ++iteration) {
+        r = residuals(turns, out.p);
+        for (int c = 0; c < count; ++c) {
+            Eigen::VectorXd h = Eigen::VectorXd::Zero(count);
+            h[c] = 1e-5;
+            j.col(c) = (residuals(turns, out.p + h) - residuals(turns, out.p - h)) / 2e-5;
+        }
+        const Eigen::VectorXd step = (j.transpose() * j).ldlt().solve(-j.transpose() * r);
+        if (!step.allFinite())
+            return out;
+        out.p += step;
+        if (step.norm() < 1e-9)
+            break;
+    }
+    r = residuals(turns, out.p);
+    // Each residual is the difference of two unit vectors: two of its three components count.
+    const int dof = 2 * int(turns.size()) - count;
+    if (dof <= 0)
+        return out;
+    const double factor = smallSampleFactor(dof);
+    out.covariance = (j.transpose() * j).inverse() * (r.squaredNorm() / dof) * factor * factor;
+    out.ok = out.covariance.allFinite();
+    return out;
 }
 
 size_t indexAt(const std::vector<MotionSample> &s, double t)
@@ -119,31 +173,54 @@ GyroFit fitGyro(const std::vector<MotionSample> &samples, const std::vector<Pose
                                .arg(turns.size());
         return fit;
     }
-    Eigen::Vector3d scale = Eigen::Vector3d::Zero();
-    Eigen::MatrixXd j(3 * turns.size(), 3);
-    Eigen::VectorXd r;
-    for (int iteration = 0; iteration < 8; ++iteration) {
-        r = residuals(turns, scale);
-        for (int c = 0; c < 3; ++c) {
-            Eigen::Vector3d h = Eigen::Vector3d::Zero();
-            h[c] = 1e-5;
-            j.col(c) = (residuals(turns, scale + h) - residuals(turns, scale - h)) / 2e-5;
-        }
-        const Eigen::Vector3d step = (j.transpose() * j).ldlt().solve(-j.transpose() * r);
-        if (!step.allFinite())
-            break;
-        scale += step;
-        if (step.norm() < 1e-9)
-            break;
+    // Scales alone, then with the axes' misalignment where the turns pin it.
+    const GyroSolution scales = solve(turns, 3);
+    if (!scales.ok) {
+        fit.scalePct.why = CheckReport::tr("the turns between poses do not pin the gyro's scale: turn it about each axis "
+                                           "while that axis is level");
+        return fit;
     }
-    r = residuals(turns, scale);
-    // Each residual is the difference of two unit vectors: two of its three components count.
-    const int dof = 2 * int(turns.size()) - 3;
-    const double s2 = r.squaredNorm() / dof;
-    const Eigen::Matrix3d cov = (j.transpose() * j).inverse() * s2;
-    const Eigen::Vector3d sigma = cov.diagonal().cwiseMax(0).cwiseSqrt() * 100.0 * smallSampleFactor(dof);
-    fit.scalePct.value = scale * 100.0;
-    fit.scalePct.sigma = sigma;
+    GyroSolution full = turns.size() >= 6 ? solve(turns, 6) : GyroSolution{};
+    Eigen::Vector3d misSigma = Eigen::Vector3d::Constant(INFINITY);
+    if (full.ok) {
+        // The figures of the full model and their sigmas (numeric propagation).
+        auto figures = [](const Eigen::VectorXd &p) {
+            Eigen::Vector3d scalePct, misDeg;
+            accFiguresOf(gyroMatrixOf(p), scalePct, misDeg);
+            Eigen::Matrix<double, 6, 1> f;
+            f << scalePct, misDeg;
+            return f;
+        };
+        Eigen::Matrix<double, 6, 6> jac;
+        for (int k = 0; k < 6; ++k) {
+            Eigen::VectorXd plus = full.p, minus = full.p;
+            plus[k] += 1e-7;
+            minus[k] -= 1e-7;
+            jac.col(k) = (figures(plus) - figures(minus)) / 2e-7;
+        }
+        const Eigen::Matrix<double, 6, 1> f = figures(full.p);
+        const Eigen::Matrix<double, 6, 1> sigma = (jac * full.covariance * jac.transpose()).diagonal().cwiseMax(0).cwiseSqrt();
+        misSigma = sigma.tail<3>();
+        if ((misSigma.array() <= kMaxMisalignmentSigmaDeg).all()) {
+            fit.misalignmentAxesDeg = f.tail<3>();
+            fit.misalignmentAxesSigmaDeg = misSigma;
+            Eigen::Index worst = 0;
+            fit.misalignmentAxesDeg.cwiseAbs().maxCoeff(&worst);
+            fit.misalignmentDeg = Figure{true, fit.misalignmentAxesDeg[worst], misSigma[worst], {}};
+            fit.correction = gyroMatrixOf(full.p).inverse();
+            fit.scalePct.value = f.head<3>();
+            fit.scalePct.sigma = sigma.head<3>();
+        }
+    }
+    if (!fit.misalignmentDeg.judged) {
+        fit.misalignmentDeg.why = CheckReport::tr("the turns between poses do not pin the gyro's axes (at least 6 turns "
+                                                  "of more than 20°, about every axis, are needed; found %1)")
+                                      .arg(turns.size());
+        fit.correction = gyroMatrixOf(scales.p).inverse();
+        fit.scalePct.value = scales.p * 100.0;
+        fit.scalePct.sigma = scales.covariance.diagonal().cwiseMax(0).cwiseSqrt() * 100.0;
+    }
+    const Eigen::Vector3d &sigma = fit.scalePct.sigma;
     static const char *const kAxis[3] = {"X", "Y", "Z"};
     QStringList weak;
     for (int c = 0; c < 3; ++c)
@@ -153,6 +230,8 @@ GyroFit fitGyro(const std::vector<MotionSample> &samples, const std::vector<Pose
         fit.scalePct.why = CheckReport::tr("the turns between poses did not turn the module about its %1 axis enough: "
                                            "turn it about each axis while that axis is level")
                                .arg(weak.join(QStringLiteral(", ")));
+        fit.misalignmentDeg = Figure{false, 0, 0, fit.scalePct.why};
+        fit.correction = Eigen::Matrix3d::Identity();
         return fit;
     }
     fit.scalePct.judged = true;

@@ -29,7 +29,8 @@ struct NamedLimit {
 constexpr NamedLimit kLimitNames[] = {
     {"acc_bias_mg", &Limits::accBiasMg},         {"acc_scale_error_pct", &Limits::accScalePct},
     {"acc_misalignment_deg", &Limits::accMisalignmentDeg}, {"gyro_bias_dps", &Limits::gyroBiasDps},
-    {"gyro_scale_error_pct", &Limits::gyroScalePct}, {"tilt_deg", &Limits::tiltDeg},
+    {"gyro_scale_error_pct", &Limits::gyroScalePct}, {"gyro_misalignment_deg", &Limits::gyroMisalignmentDeg},
+    {"tilt_deg", &Limits::tiltDeg},
     {"heading_deg", &Limits::headingDeg},        {"dynamic_rms_deg", &Limits::dynamicRmsDeg},
     {"lag_ms", &Limits::lagMs},
 };
@@ -166,6 +167,7 @@ CheckReport checkModule(const std::vector<MotionSample> &samples, const CheckOpt
                              .cwiseSqrt();
         r.accScalePct = Figure3{true, f.scalePct, scaleSigma, {}};
         r.accMisalignmentAxesDeg = f.misalignmentDeg;
+        r.accMisalignmentAxesSigmaDeg = f.misalignmentSigma;
         Eigen::Index worst = 0;
         f.misalignmentDeg.cwiseAbs().maxCoeff(&worst);
         r.accMisalignmentDeg = Figure{true, f.misalignmentDeg[worst], f.misalignmentSigma[worst], {}};
@@ -183,6 +185,11 @@ CheckReport checkModule(const std::vector<MotionSample> &samples, const CheckOpt
     if (r.poses.empty())
         r.gyroBiasDps.why = CheckReport::tr("no still pose: %1").arg(holdStill);
     r.gyroScalePct = gyro.scalePct;
+    r.gyroMisalignmentDeg = gyro.misalignmentDeg;
+    r.gyroMisalignmentAxesDeg = gyro.misalignmentAxesDeg;
+    r.gyroMisalignmentAxesSigmaDeg = gyro.misalignmentAxesSigmaDeg;
+    if (!r.gyroMisalignmentDeg.judged && r.gyroMisalignmentDeg.why.isEmpty())
+        r.gyroMisalignmentDeg.why = r.gyroScalePct.why;
     r.gyroTurns = gyro.turns;
 
     const AttitudeCheck att = checkAttitude(r.poses, acc, options);
@@ -219,6 +226,8 @@ CheckReport checkModule(const std::vector<MotionSample> &samples, const CheckOpt
     add1("acc_misalignment_deg", CheckReport::tr("accelerometer misalignment"), QStringLiteral("°"), 3, r.accMisalignmentDeg, l.accMisalignmentDeg);
     add3("gyro_bias_dps", CheckReport::tr("gyro bias"), QStringLiteral("°/s"), 3, r.gyroBiasDps, l.gyroBiasDps);
     add3("gyro_scale_error_pct", CheckReport::tr("gyro scale error"), QStringLiteral("%"), 3, r.gyroScalePct, l.gyroScalePct);
+    add1("gyro_misalignment_deg", CheckReport::tr("gyro misalignment"), QStringLiteral("°"), 3, r.gyroMisalignmentDeg,
+         l.gyroMisalignmentDeg);
     add1("roll_deg", CheckReport::tr("roll error"), QStringLiteral("°"), 3, r.rollErrDeg, l.tiltDeg);
     add1("pitch_deg", CheckReport::tr("pitch error"), QStringLiteral("°"), 3, r.pitchErrDeg, l.tiltDeg);
     add1("heading_deg", CheckReport::tr("heading error"), QStringLiteral("°"), 2, r.headingErrDeg, l.headingDeg);
@@ -226,8 +235,10 @@ CheckReport checkModule(const std::vector<MotionSample> &samples, const CheckOpt
     add1("lag_ms", CheckReport::tr("attitude lag"), QStringLiteral("ms"), 1, r.dynamicLagMs, l.lagMs);
     // The gyro's scale (it needs turns about every axis) and the heading (a magnetometer) may
     // stay unjudged in a verdict; the accelerometer, the gyro's bias and the tilt may not.
-    // (indices as added above: 4 gyro scale, 7 heading, 8 and 9 the attitude while moving)
-    judged[4].required = judged[7].required = judged[8].required = judged[9].required = false;
+    // (indices as added above: 4 gyro scale, 5 its misalignment, 8 heading, 9 and 10 the attitude
+    // while moving)
+    for (size_t optional : {4, 5, 8, 9, 10})
+        judged[optional].required = false;
     std::stable_sort(judged.begin(), judged.end(),
                      [](const Judged &a, const Judged &b) { return severity(a.verdict) > severity(b.verdict); });
     const bool missing = std::any_of(judged.begin(), judged.end(),

@@ -76,6 +76,7 @@ struct Limits {
     Limit accMisalignmentDeg{0.5, 1.0};
     Limit gyroBiasDps{0.5, 1.0};
     Limit gyroScalePct{0.5, 1.0};
+    Limit gyroMisalignmentDeg{0.5, 1.0};
     Limit tiltDeg{0.3, 1.0};
     Limit headingDeg{1.0, 2.5};
     Limit dynamicRmsDeg{1.0, 3.0};  // the attitude while moving against the reference filter
@@ -131,10 +132,14 @@ public:
     Figure3 accBiasMg, accScalePct;
     Figure accMisalignmentDeg;            // the largest of the three
     Eigen::Vector3d accMisalignmentAxesDeg = Eigen::Vector3d::Zero(); // x-y, x-z, y-z
+    Eigen::Vector3d accMisalignmentAxesSigmaDeg = Eigen::Vector3d::Zero();
     Eigen::Matrix3d accCorrection = Eigen::Matrix3d::Identity(); // C: a_true = C (a - b)
     Eigen::Vector3d accBiasG = Eigen::Vector3d::Zero();
     double accResidualMg = 0;             // RMS of |C (a - b)| - g over the poses
     Figure3 gyroBiasDps, gyroScalePct;
+    Figure gyroMisalignmentDeg;           // the largest of the three
+    Eigen::Vector3d gyroMisalignmentAxesDeg = Eigen::Vector3d::Zero(); // x-y, x-z, y-z
+    Eigen::Vector3d gyroMisalignmentAxesSigmaDeg = Eigen::Vector3d::Zero();
     int gyroTurns = 0;                    // turns between poses the gyro scale used
     Figure rollErrDeg, pitchErrDeg, headingErrDeg; // reported minus true
     Eigen::Vector3d hardIronUt = Eigen::Vector3d::Zero(); // what ImuDesk removed (zero: none)

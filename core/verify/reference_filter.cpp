@@ -66,8 +66,7 @@ void ReferenceFilter::correct(const Eigen::Vector3d &measured, const Eigen::Vect
 void ReferenceFilter::update(double tS, const Eigen::Vector3d &acc, const Eigen::Vector3d &gyr, const Eigen::Vector3d &mag,
                              bool hasMag)
 {
-    const Eigen::Vector3d inv = (Eigen::Vector3d::Ones() + m_s.gyroScale).cwiseInverse();
-    const Eigen::Vector3d rate = gyr.cwiseProduct(inv) * kDegToRad; // rad/s, bias not yet removed
+    const Eigen::Vector3d rate = m_s.gyroCorrection * gyr * kDegToRad; // rad/s, bias not yet removed
     if (m_lastS > 0 && tS > m_lastS) {
         const double dt = tS - m_lastS;
         const Eigen::Vector3d w = 0.5 * (rate + m_lastRate) - m_bias;

@@ -28,7 +28,7 @@ public:
         Eigen::Vector3d accBias = Eigen::Vector3d::Zero();           // G
         double gravityG = 1;
         Eigen::Vector3d gyroBias = Eigen::Vector3d::Zero();          // deg/s, the start value
-        Eigen::Vector3d gyroScale = Eigen::Vector3d::Zero();         // fractions
+        Eigen::Matrix3d gyroCorrection = Eigen::Matrix3d::Identity(); // true = this * measured (scale, axes)
         double gyroNoiseDps = 0.05;                                  // per sample, 1 sigma
         bool useMag = false;
         Eigen::Vector3d hardIron = Eigen::Vector3d::Zero();          // uT

@@ -63,6 +63,12 @@ QJsonObject toJson(const CheckReport &r, const QString &source)
         o[QStringLiteral("acc_fit_residual_mg")] = r.accResidualMg;
     putFigure3(o, "gyro_bias_dps", r.gyroBiasDps);
     putFigure3(o, "gyro_scale_error_pct", r.gyroScalePct);
+    putFigure(o, QStringLiteral("gyro_misalignment_deg"), r.gyroMisalignmentDeg);
+    o[QStringLiteral("gyro_misalignment_axes_deg")] =
+        r.gyroMisalignmentDeg.judged ? QJsonValue(QJsonObject{{QStringLiteral("xy"), r.gyroMisalignmentAxesDeg.x()},
+                                                              {QStringLiteral("xz"), r.gyroMisalignmentAxesDeg.y()},
+                                                              {QStringLiteral("yz"), r.gyroMisalignmentAxesDeg.z()}})
+                                     : QJsonValue();
     o[QStringLiteral("gyro_turns")] = r.gyroTurns;
     QJsonObject att;
     putFigure(att, QStringLiteral("roll"), r.rollErrDeg);

@@ -2,7 +2,7 @@
 // errors are known.
 //
 // --modules N (200) modules, each with random errors drawn from its seed: accelerometer bias
-// ±30 mg, scale ±1.5 % and misalignment ±0.5° per axis, gyro scale ±1 % per axis, an attitude
+// ±30 mg, scale ±1.5 % and misalignment ±0.5° per axis, gyro scale ±1 % and misalignment ±0.5° per axis, an attitude
 // off by ±0.5° in roll and pitch and ±3° in heading and late by 0..80 ms; each turned by hand through 12 poses
 // (sim::Motion::Poses: unequal holds, jerky moves, one pose held too briefly) at 400 Hz, its
 // magnetometer as an MCAL left it (2 % of its iron). Printed with their targets:
@@ -87,6 +87,7 @@ test::HandTurnedModule randomModule(uint64_t seed)
         m.accError.scale[a] = 0.015 * u(g);
         m.accError.misalignmentRad[a] = 0.5 * u(g) * M_PI / 180;
         m.gyroScale[a] = 0.01 * u(g);
+        m.gyroMisalignment[a] = 0.5 * u(g) * M_PI / 180;
     }
     m.attitudeBiasDeg = {0.5 * u(g), 0.5 * u(g), 3.0 * u(g)};
     m.lagMs = 40.0 + 40.0 * u(g);
@@ -115,8 +116,8 @@ int main(int argc, char **argv)
     verify::CheckOptions options;
     options.gravityMs2 = model::kGravity; // the simulator's gravity is the module's 1 G
 
-    std::vector<double> biasErr, scaleErr, misErr, gyroErr, tiltErr, headingErr, baselineTiltErr, lagErr;
-    Coverage covBias, covScale, covMis, covGyro, covTilt, covHeading;
+    std::vector<double> biasErr, scaleErr, misErr, gyroErr, gyroMisErr, tiltErr, headingErr, baselineTiltErr, lagErr;
+    Coverage covBias, covScale, covMis, covGyro, covGyroMis, covTilt, covHeading;
     int judgedAll = 0;
     for (int k = 0; k < modules; ++k) {
         const test::HandTurnedModule m = randomModule(uint64_t(1000 + k));
@@ -131,11 +132,23 @@ int main(int argc, char **argv)
         ++judgedAll;
         Eigen::Vector3d scaleTruth, misTruth;
         verify::accFiguresOf(m.accError.matrix(), scaleTruth, misTruth);
+        Eigen::Vector3d gyroScaleTruth, gyroMisTruth;
+        {
+            sim::SensorModel gyro(m.seed);
+            gyro.setGyroScaleErrors(m.gyroScale);
+            gyro.setGyroMisalignment(m.gyroMisalignment);
+            verify::accFiguresOf(gyro.gyroMatrix(), gyroScaleTruth, gyroMisTruth);
+        }
+        if (r.gyroMisalignmentDeg.judged)
+            for (int a = 0; a < 3; ++a) {
+                gyroMisErr.push_back(std::fabs(r.gyroMisalignmentAxesDeg[a] - gyroMisTruth[a]));
+                covGyroMis.add(r.gyroMisalignmentAxesDeg[a] - gyroMisTruth[a], r.gyroMisalignmentAxesSigmaDeg[a]);
+            }
         for (int a = 0; a < 3; ++a) {
             const double eb = r.accBiasMg.value[a] - m.accError.biasG[a] * 1000;
             const double es = r.accScalePct.value[a] - scaleTruth[a];
             const double em = r.accMisalignmentAxesDeg[a] - misTruth[a];
-            const double eg = r.gyroScalePct.value[a] - m.gyroScale[a] * 100;
+            const double eg = r.gyroScalePct.value[a] - gyroScaleTruth[a];
             biasErr.push_back(std::fabs(eb));
             scaleErr.push_back(std::fabs(es));
             misErr.push_back(std::fabs(em));
@@ -144,10 +157,8 @@ int main(int argc, char **argv)
             covScale.add(es, r.accScalePct.sigma[a]);
             covGyro.add(eg, r.gyroScalePct.sigma[a]);
         }
-        // The misalignment's sigma is given for the largest of the three only.
-        Eigen::Index worst = 0;
-        r.accMisalignmentAxesDeg.cwiseAbs().maxCoeff(&worst);
-        covMis.add(r.accMisalignmentAxesDeg[worst] - misTruth[worst], r.accMisalignmentDeg.sigma);
+        for (int a = 0; a < 3; ++a)
+            covMis.add(r.accMisalignmentAxesDeg[a] - misTruth[a], r.accMisalignmentAxesSigmaDeg[a]);
         const double er = r.rollErrDeg.value - m.attitudeBiasDeg[0];
         const double ep = r.pitchErrDeg.value - m.attitudeBiasDeg[1];
         const double eh = r.headingErrDeg.value - m.attitudeBiasDeg[2];
@@ -177,6 +188,8 @@ int main(int argc, char **argv)
     target("accelerometer scale", percentile(scaleErr, 0.95), "%", 0.05);
     std::printf("  %-52s %10.4f %-4s (printed)\n", "accelerometer misalignment", percentile(misErr, 0.95), "deg");
     target("gyro scale", percentile(gyroErr, 0.95), "%", 0.1);
+    std::printf("  %-52s %10.4f %-4s (printed; %zu of %d modules judged)\n", "gyro misalignment", percentile(gyroMisErr, 0.95),
+                "deg", gyroMisErr.size() / 3, judgedAll);
     char beside[96];
     std::snprintf(beside, sizeof beside, "   baseline (raw accelerometer as reference): %.4f deg",
                   percentile(baselineTiltErr, 0.95));
@@ -186,8 +199,9 @@ int main(int argc, char **argv)
     std::printf("bounds (the truth inside the figure's 68 %% and 95 %% bounds):\n");
     coverageTarget("accelerometer bias", covBias);
     coverageTarget("accelerometer scale", covScale);
-    coverageTarget("accelerometer misalignment (largest)", covMis);
+    coverageTarget("accelerometer misalignment", covMis);
     coverageTarget("gyro scale", covGyro);
+    coverageTarget("gyro misalignment", covGyroMis);
     coverageTarget("tilt", covTilt);
     coverageTarget("heading", covHeading);
 

@@ -22,6 +22,7 @@ struct HandTurnedModule {
     double tailS = 3;                                 // still after the last pose
     sim::SensorModel::AccError accError;
     Eigen::Vector3d gyroScale = Eigen::Vector3d::Zero(); // fractions
+    Eigen::Vector3d gyroMisalignment = Eigen::Vector3d::Zero(); // rad, as AccError::misalignmentRad
     std::array<double, 3> attitudeBiasDeg{0, 0, 0};
     double lagMs = 0;
     double ironLeft = 0.02; // the magnetometer as a module's MCAL left it
@@ -33,6 +34,7 @@ struct HandTurnedModule {
         sim::SensorModel sensors(seed);
         sensors.setAccError(accError);
         sensors.setGyroScaleErrors(gyroScale);
+        sensors.setGyroMisalignment(gyroMisalignment);
         sensors.setIronLeft(ironLeft);
         const double end = motion.posesEndS() + tailS;
         std::vector<verify::MotionSample> out;

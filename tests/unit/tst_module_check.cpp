@@ -51,11 +51,12 @@ private Q_SLOTS:
         sim::SimFaults f;
         std::string error;
         QVERIFY(sim::parseSimFaults("acc-bias=12/-5/8, acc-scale=1/0/-0.5, acc-misalignment=0.2/0/-0.1, gyro-scale=0.5, "
-                                    "attitude-bias=0/0/3, filter-lag=40",
+                                    "gyro-misalignment=0.1/0/-0.2, attitude-bias=0/0/3, filter-lag=40",
                                     f, &error));
         QCOMPARE(f.accBiasMg, (std::array<double, 3>{12, -5, 8}));
         QCOMPARE(f.accScalePct, (std::array<double, 3>{1, 0, -0.5}));
         QCOMPARE(f.gyroScalePct, (std::array<double, 3>{0.5, 0.5, 0.5}));
+        QCOMPARE(f.gyroMisalignmentDeg, (std::array<double, 3>{0.1, 0, -0.2}));
         QCOMPARE(f.attitudeBiasDeg, (std::array<double, 3>{0, 0, 3}));
         QCOMPARE(f.filterLagMs, 40.0);
         sim::SimFaults back;
@@ -141,6 +142,7 @@ private Q_SLOTS:
         module.accError.scale = {0.004, -0.003, 0.002};
         module.accError.misalignmentRad = {0.2 * M_PI / 180, -0.15 * M_PI / 180, 0.1 * M_PI / 180};
         module.gyroScale = {0.005, -0.003, 0.008};
+        module.gyroMisalignment = {0.3 * M_PI / 180, -0.2 * M_PI / 180, 0.25 * M_PI / 180};
         module.attitudeBiasDeg = {0.4, -0.3, 1.5};
         const auto r = verify::checkModule(module.record(), simOptions());
         QCOMPARE(r.distinctPoses, 12);
@@ -157,6 +159,19 @@ private Q_SLOTS:
             QVERIFY(r.gyroScalePct.judged);
             QVERIFY2(std::fabs(r.gyroScalePct.value[a] - module.gyroScale[a] * 100) < 0.1,
                      qPrintable(QStringLiteral("gyro scale %1: %2 %").arg(a).arg(r.gyroScalePct.value[a])));
+        }
+        // The gyro's axes: the same truth as the accelerometer's form gives.
+        Eigen::Vector3d gyroScaleTruth, gyroMisTruth;
+        sim::SensorModel withErrors(seed);
+        withErrors.setGyroScaleErrors(module.gyroScale);
+        withErrors.setGyroMisalignment(module.gyroMisalignment);
+        verify::accFiguresOf(withErrors.gyroMatrix(), gyroScaleTruth, gyroMisTruth);
+        QVERIFY2(r.gyroMisalignmentDeg.judged, qPrintable(r.gyroMisalignmentDeg.why));
+        for (int a = 0; a < 3; ++a) {
+            QVERIFY2(std::fabs(r.gyroMisalignmentAxesDeg[a] - gyroMisTruth[a]) < 0.05,
+                     qPrintable(QStringLiteral("gyro misalignment %1: %2 deg, true %3").arg(a).arg(r.gyroMisalignmentAxesDeg[a]).arg(gyroMisTruth[a])));
+            QVERIFY2(std::fabs(r.gyroScalePct.value[a] - gyroScaleTruth[a]) < 0.1,
+                     qPrintable(QStringLiteral("gyro scale %1: %2 %, true %3").arg(a).arg(r.gyroScalePct.value[a]).arg(gyroScaleTruth[a])));
         }
         QVERIFY(r.gyroBiasDps.judged);
         const sim::SensorModel sensors(seed);

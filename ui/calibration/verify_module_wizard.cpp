@@ -432,6 +432,8 @@ void VerifyModuleWizard::showResult()
         row1("acc_misalignment_deg", tr("Accelerometer misalignment, largest (°)"), QStringLiteral("°"), 3, r.accMisalignmentDeg, l.accMisalignmentDeg),
         row3("gyro_bias_dps", tr("Gyro bias (°/s; X, Y, Z)"), QStringLiteral("°/s"), 3, r.gyroBiasDps, l.gyroBiasDps),
         row3("gyro_scale_error_pct", tr("Gyro scale error (%; X, Y, Z)"), QStringLiteral("%"), 3, r.gyroScalePct, l.gyroScalePct),
+        row1("gyro_misalignment_deg", tr("Gyro misalignment, largest (°)"), QStringLiteral("°"), 3, r.gyroMisalignmentDeg,
+             l.gyroMisalignmentDeg),
         row1("roll_deg", tr("Roll error (°)"), QStringLiteral("°"), 3, r.rollErrDeg, l.tiltDeg),
         row1("pitch_deg", tr("Pitch error (°)"), QStringLiteral("°"), 3, r.pitchErrDeg, l.tiltDeg),
         row1("heading_deg", tr("Heading error (°)"), QStringLiteral("°"), 2, r.headingErrDeg, l.headingDeg),
