@@ -39,6 +39,14 @@ void putFigure(QJsonObject &o, const QString &key, const Figure &f)
         o[key + QLatin1String("_why")] = f.why;
 }
 
+// The three misalignment angles by the pair of axes they join.
+QJsonValue pairs(const Eigen::Vector3d &deg, bool judged)
+{
+    if (!judged)
+        return QJsonValue();
+    return QJsonObject{{QStringLiteral("xy"), deg.x()}, {QStringLiteral("xz"), deg.y()}, {QStringLiteral("yz"), deg.z()}};
+}
+
 } // namespace
 
 QJsonObject toJson(const CheckReport &r, const QString &source)
@@ -54,21 +62,13 @@ QJsonObject toJson(const CheckReport &r, const QString &source)
     putFigure3(o, "acc_bias_mg", r.accBiasMg);
     putFigure3(o, "acc_scale_error_pct", r.accScalePct);
     putFigure(o, QStringLiteral("acc_misalignment_deg"), r.accMisalignmentDeg);
-    o[QStringLiteral("acc_misalignment_axes_deg")] =
-        r.accMisalignmentDeg.judged ? QJsonValue(QJsonObject{{QStringLiteral("xy"), r.accMisalignmentAxesDeg.x()},
-                                                             {QStringLiteral("xz"), r.accMisalignmentAxesDeg.y()},
-                                                             {QStringLiteral("yz"), r.accMisalignmentAxesDeg.z()}})
-                                    : QJsonValue();
+    o[QStringLiteral("acc_misalignment_axes_deg")] = pairs(r.accMisalignmentAxesDeg, r.accMisalignmentDeg.judged);
     if (r.accBiasMg.judged)
         o[QStringLiteral("acc_fit_residual_mg")] = r.accResidualMg;
     putFigure3(o, "gyro_bias_dps", r.gyroBiasDps);
     putFigure3(o, "gyro_scale_error_pct", r.gyroScalePct);
     putFigure(o, QStringLiteral("gyro_misalignment_deg"), r.gyroMisalignmentDeg);
-    o[QStringLiteral("gyro_misalignment_axes_deg")] =
-        r.gyroMisalignmentDeg.judged ? QJsonValue(QJsonObject{{QStringLiteral("xy"), r.gyroMisalignmentAxesDeg.x()},
-                                                              {QStringLiteral("xz"), r.gyroMisalignmentAxesDeg.y()},
-                                                              {QStringLiteral("yz"), r.gyroMisalignmentAxesDeg.z()}})
-                                     : QJsonValue();
+    o[QStringLiteral("gyro_misalignment_axes_deg")] = pairs(r.gyroMisalignmentAxesDeg, r.gyroMisalignmentDeg.judged);
     o[QStringLiteral("gyro_turns")] = r.gyroTurns;
     QJsonObject att;
     putFigure(att, QStringLiteral("roll"), r.rollErrDeg);
