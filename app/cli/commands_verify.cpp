@@ -34,7 +34,7 @@ bool compassSampleOf(const model::Sample &s, verify::CompassSample &out)
 {
     if (!s.has(model::FieldHeading) || !s.has(model::FieldEuler))
         return false;
-    out.tS = s.has(model::FieldDeviceTime) ? s.deviceTimeMs * 1e-3 : double(s.hostTimeNs) * 1e-9;
+    out.tS = verify::sampleTimeS(s);
     out.headingDeg = s.headingDeg;
     out.pitchDeg = s.pitch;
     out.rollDeg = s.roll;

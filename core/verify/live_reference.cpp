@@ -1,35 +1,11 @@
 #include "live_reference.h"
 
-#include "model/attitude.h"
+#include "verify/motion_input.h"
 
 #include <cmath>
 
 namespace imudesk::verify {
 
-namespace {
-
-// The sample's time on the module's clock where it has one, else its arrival.
-double timeOf(const model::Sample &s)
-{
-    return s.has(model::FieldDeviceTime) ? s.deviceTimeMs * 1e-3 : double(s.hostTimeNs) * 1e-9;
-}
-
-Eigen::Quaterniond reportedOf(const model::Sample &s, bool *ok)
-{
-    *ok = true;
-    if (s.has(model::FieldQuat) && model::isUsableQuat(s.quat)) {
-        const model::Quat q = model::normalized(s.quat);
-        return Eigen::Quaterniond(q.w, q.x, q.y, q.z);
-    }
-    if (s.has(model::FieldEuler)) {
-        const model::Quat q = model::quatFromEnu312(model::Euler{s.roll, s.pitch, s.yaw});
-        return Eigen::Quaterniond(q.w, q.x, q.y, q.z);
-    }
-    *ok = false;
-    return Eigen::Quaterniond::Identity();
-}
-
-} // namespace
 
 void LiveReference::reset()
 {
@@ -46,7 +22,7 @@ void LiveReference::add(const model::Sample &s)
         m_source = s.source;
     if (s.source != m_source)
         return;
-    const double t = timeOf(s);
+    const double t = sampleTimeS(s);
     const Eigen::Vector3d acc(s.acc.x, s.acc.y, s.acc.z), gyr(s.gyr.x, s.gyr.y, s.gyr.z);
     if (m_filter) {
         m_filter->update(t, acc, gyr, Eigen::Vector3d::Zero(), false);
@@ -76,9 +52,8 @@ void LiveReference::add(const model::Sample &s)
     if (std::sqrt(va / double(m_window.size())) > limits.maxAccStdG || std::sqrt(vg / double(m_window.size())) > limits.maxGyroStdDps
         || mg.norm() > limits.maxGyroMeanDps)
         return;
-    bool ok = false;
-    const Eigen::Quaterniond reported = reportedOf(s, &ok);
-    if (!ok)
+    Eigen::Quaterniond reported;
+    if (!reportedAttitude(s, reported))
         return;
     // The tilt from gravity, the heading from the module: the module's attitude turned so that
     // its up matches the accelerometer's.

@@ -4,6 +4,24 @@
 
 namespace imudesk::verify {
 
+double sampleTimeS(const model::Sample &s)
+{
+    return s.has(model::FieldDeviceTime) ? s.deviceTimeMs * 1e-3 : double(s.hostTimeNs) * 1e-9;
+}
+
+bool reportedAttitude(const model::Sample &s, Eigen::Quaterniond &out)
+{
+    model::Quat q;
+    if (s.has(model::FieldQuat) && model::isUsableQuat(s.quat))
+        q = model::normalized(s.quat);
+    else if (s.has(model::FieldEuler))
+        q = model::quatFromEnu312(model::Euler{s.roll, s.pitch, s.yaw});
+    else
+        return false;
+    out = Eigen::Quaterniond(q.w, q.x, q.y, q.z);
+    return true;
+}
+
 void MotionInput::add(const model::Sample &s)
 {
     const bool motion = s.has(model::FieldAcc) && s.has(model::FieldGyr);
@@ -19,8 +37,7 @@ void MotionInput::add(const model::Sample &s)
         return;
     }
     MotionSample m;
-    double t = s.has(model::FieldDeviceTime) ? double(s.deviceTimeMs) * 1e-3 : double(s.hostTimeNs) * 1e-9;
-    t += m_offsetS;
+    double t = sampleTimeS(s) + m_offsetS;
     if (!m_samples.empty()) {
         const double last = m_samples.back().tS;
         if (t <= last) { // the device restarted or its counter wrapped: carry the time across
@@ -38,15 +55,7 @@ void MotionInput::add(const model::Sample &s)
         m.mag = Eigen::Vector3d(s.mag.x, s.mag.y, s.mag.z);
         m.hasMag = true;
     }
-    if (s.has(model::FieldQuat) && model::isUsableQuat(s.quat)) {
-        const model::Quat q = model::normalized(s.quat);
-        m.q = Eigen::Quaterniond(q.w, q.x, q.y, q.z);
-        m.hasAttitude = true;
-    } else if (s.has(model::FieldEuler)) {
-        const model::Quat q = model::quatFromEnu312(model::Euler{s.roll, s.pitch, s.yaw});
-        m.q = Eigen::Quaterniond(q.w, q.x, q.y, q.z);
-        m.hasAttitude = true;
-    }
+    m.hasAttitude = reportedAttitude(s, m.q);
     m_samples.push_back(m);
 }
 

@@ -13,6 +13,12 @@
 
 namespace imudesk::verify {
 
+// A sample's time (s): the module's own clock where the frame carries one, else its arrival.
+double sampleTimeS(const model::Sample &s);
+// The attitude a sample reports (body to its world frame): the quaternion, else the Euler
+// angles (ENU 3-1-2); false when it carries neither.
+bool reportedAttitude(const model::Sample &s, Eigen::Quaterniond &out);
+
 class MotionInput {
 public:
     static constexpr size_t kMaxSamples = 2'000'000;
