@@ -321,6 +321,8 @@ phase "benchmark (one time base: 4 simulated devices, 10 min of device time acce
 "$bench/bench_sync" || echo "!! bench_sync missed a target (see above)"
 phase "benchmark (the module check: 200 simulated modules of known errors turned through 12 poses, bounds calibrated, 15 min at 400 Hz analysed)"
 "$bench/bench_verify" || echo "!! bench_verify missed a target (see above)"
+phase "benchmark (one sweep finds every device of a simulated bench: 4 ports and a CAN bus, against the same checks one after the other)"
+"$bench/bench_discover" || echo "!! bench_discover missed a target (see above)"
 phase "benchmark (results database: 1,000 module records uploaded to PostgreSQL, queries over 100,000 measurements)"
 "$bench/bench_results" || echo "!! bench_results missed a target (see above)"
 phase "soak (1 kHz HI91 with recording and the GUI offscreen; 20 s in CI, one hour by default)"

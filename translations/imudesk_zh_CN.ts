@@ -897,6 +897,74 @@
     </message>
 </context>
 <context>
+    <name>CanSurvey</name>
+    <message>
+        <location filename="../core/discovery/can_survey.cpp" line="+67"/>
+        <source>node %1 sent its boot-up message twice while the bus was only listened to: two devices started with that node ID</source>
+        <translation>仅监听总线期间，节点 %1 发送了两次启动报文：有两台设备以该节点 ID 启动</translation>
+    </message>
+    <message>
+        <location line="+82"/>
+        <source>SDO read of %1:%2</source>
+        <translation>对 %1:%2 的 SDO 读取</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>J1939 read of register %1</source>
+        <translation>对寄存器 %1 的 J1939 读取</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>refused</source>
+        <translation>被拒绝</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1 answers from node %2 to one %3, with different contents (%4)</source>
+        <translation>节点 %2 对同一次%3给出 %1 个应答，内容不同（%4）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 answers from node %2 to one %3 (%4)</source>
+        <translation>节点 %2 对同一次%3给出 %1 个应答（%4）</translation>
+    </message>
+    <message>
+        <location line="+46"/>
+        <source>HiPNUC module (J1939)</source>
+        <translation>HiPNUC 模块（J1939）</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>HiPNUC module (CANopen)</source>
+        <translation>HiPNUC 模块（CANopen）</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>vendor %1, product code %2</source>
+        <translation>厂商 %1，产品代码 %2</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>the module&apos;s own bit-rate setting (the interface cannot measure one)</source>
+        <translation>模块自身的波特率设置（该接口无法测得波特率）</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>sends no data; answered when asked</source>
+        <translation>不主动发送数据；询问时有应答</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+8"/>
+        <source>%1 (and %n more time(s) like it)</source>
+        <translation><numerusform>%1（另有 %n 次同类情况）</numerusform></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Power the devices one at a time and give each its own node ID (its CAN tab, Settings, node ID; save and reset), then sweep again.</source>
+        <translation>逐台给设备上电，并为每台设置各自的节点 ID（在其 CAN 标签页的“设置”中修改节点 ID，保存并复位），然后重新扫描。</translation>
+    </message>
+</context>
+<context>
     <name>CanUi</name>
     <message>
         <location filename="../ui/families/can_ui.cpp" line="+20"/>
@@ -5523,7 +5591,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::device::LinkOpener</name>
     <message>
-        <location filename="../core/links/link_opener.cpp" line="+117"/>
+        <location filename="../core/links/link_opener.cpp" line="+118"/>
         <source>%1: no serial device family is called &quot;%2&quot;</source>
         <translation>%1：没有名为“%2”的串口设备系列</translation>
     </message>
@@ -5553,7 +5621,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>无法读取 %1。请检查文件是否存在，以及您是否有读取权限。</translation>
     </message>
     <message>
-        <location line="+76"/>
+        <location line="+78"/>
         <source>the port of %1 was lost while it was handed to the device&apos;s session</source>
         <translation>%1 的端口在交给设备会话时丢失</translation>
     </message>
@@ -5621,7 +5689,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>对节点 %1 的请求失败：%2</translation>
     </message>
     <message>
-        <location line="+80"/>
+        <location line="+93"/>
         <source>the reply carries another number of registers than asked for</source>
         <translation>应答中的寄存器数量与请求的不一致</translation>
     </message>
@@ -5691,12 +5759,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>回读值：%1。</translation>
     </message>
     <message>
-        <location line="+65"/>
+        <location line="+99"/>
         <source>The serial port %1 cannot run at %2 baud.</source>
         <translation>串口 %1 无法以 %2 波特率运行。</translation>
     </message>
     <message>
-        <location line="+33"/>
+        <location line="+44"/>
         <source>HEC495 compass (pitch %1 deg)</source>
         <translation>HEC495 罗盘（俯仰角 %1 deg）</translation>
     </message>
@@ -5734,7 +5802,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation> 或 </translation>
     </message>
     <message>
-        <location filename="../core/links/serial_family_scan.h" line="+36"/>
+        <location filename="../core/links/serial_family_scan.h" line="+37"/>
         <source>serial</source>
         <translation>串口</translation>
     </message>
@@ -5790,6 +5858,158 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <location line="+85"/>
         <source>Bytes keep arriving on %1 but none of them form a frame: the device probably runs at another baud rate now. Disconnect and connect again with the baud rate set to Auto.</source>
         <translation>%1 上持续收到字节，但无法组成任何数据帧：设备可能已改用其他波特率。请断开连接，并将波特率设为“自动”后重新连接。</translation>
+    </message>
+</context>
+<context>
+    <name>imudesk::discovery::BenchSweep</name>
+    <message>
+        <location filename="../core/discovery/bench_sweep.cpp" line="+85"/>
+        <source>looking for a serial device</source>
+        <translation>正在查找串口设备</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>no serial device answered; as a Modbus line %1 of %2 addresses and rates were asked before the time was up (nothing answered): give the sweep more time</source>
+        <translation>没有串口设备应答；作为 Modbus 线路，在时间用完前已询问 %2 个地址与波特率组合中的 %1 个（均无应答）：请给扫描更多时间</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>the sweep was cancelled while the port was asked as a Modbus line</source>
+        <translation>该端口作为 Modbus 线路询问期间扫描被取消</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>the time was up before anything answered</source>
+        <translation>在有设备应答之前时间已用完</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+278"/>
+        <source>the sweep was cancelled</source>
+        <translation>扫描已取消</translation>
+    </message>
+    <message>
+        <location line="-259"/>
+        <source>%1 at %2 baud: reading its identity</source>
+        <translation>%1，波特率 %2：正在读取其身份信息</translation>
+    </message>
+    <message>
+        <location line="+29"/>
+        <source>it streams, but did not say who it is within %1 s</source>
+        <translation>设备在输出数据，但 %1 s 内未报告其身份</translation>
+    </message>
+    <message>
+        <location line="+60"/>
+        <source>asking it as a Modbus RTU line</source>
+        <translation>正在作为 Modbus RTU 线路询问</translation>
+    </message>
+    <message>
+        <location line="+30"/>
+        <source>known by its answer at the angle registers (no identity block)</source>
+        <translation>根据其角度寄存器的应答识别（无身份信息块）</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>%1 replies to id %2 failed their CRC while other ids&apos; replies were whole: two devices answering at once garble each other</source>
+        <translation>发往 ID %2 的应答中有 %1 个 CRC 校验失败，而其他 ID 的应答完好：两台设备同时应答，相互干扰</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Connect the devices one at a time and give each its own Modbus id (Settings, MD_ID; save and reset), then sweep again.</source>
+        <translation>逐台连接设备，并为每台设置各自的 Modbus ID（设置中的 MD_ID，保存并复位），然后重新扫描。</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Modbus id %1 answers at %2 baud</source>
+        <translation>Modbus ID %1 在波特率 %2 下应答</translation>
+    </message>
+    <message>
+        <location line="+29"/>
+        <source>%1 bytes arrived but none formed a frame of any family at any rate%2: check the wiring (A/B swapped on RS-485, TX/RX), the parity and that the device is one ImuDesk knows</source>
+        <translation>收到 %1 字节，但在任何波特率下都不构成任何设备系列的帧%2：请检查接线（RS-485 的 A/B 是否接反、TX/RX）、校验位，以及该设备是否为 ImuDesk 支持的设备</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>, nor a Modbus reply</source>
+        <translation>，也不是 Modbus 应答</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>nothing answered at any rate%1: check the power and the wiring, or that a device is connected at all</source>
+        <translation>在任何波特率下均无应答%1：请检查电源和接线，或确认是否连接了设备</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source> (serial families and Modbus ids 1-247)</source>
+        <translation>（串口设备系列及 Modbus ID 1-247）</translation>
+    </message>
+    <message>
+        <location line="+82"/>
+        <source>the time was up before the bus was heard at every bit rate</source>
+        <translation>尚未在所有波特率下监听总线，时间已用完</translation>
+    </message>
+    <message>
+        <location line="+49"/>
+        <source>%1 bit/s</source>
+        <translation>%1 bit/s</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>the interface&apos;s rate</source>
+        <translation>接口当前的波特率</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>errors at every bit rate tried (%1): check the termination (120 Ω at each end), CAN-H/CAN-L and the ground; nothing was sent on this bus</source>
+        <translation>尝试的每个波特率（%1）下都有错误：请检查终端电阻（两端各 120 Ω）、CAN-H/CAN-L 和地线；未向该总线发送任何报文</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>listening at %1</source>
+        <translation>正在以 %1 监听</translation>
+    </message>
+    <message>
+        <location line="+35"/>
+        <source>asking the nodes at %1</source>
+        <translation>正在以 %1 询问各节点</translation>
+    </message>
+    <message>
+        <location line="+31"/>
+        <source>Qt&apos;s virtualcan interface has no bit rate</source>
+        <translation>Qt 的 virtualcan 接口没有波特率</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>%1 frames at %2, none of a device ImuDesk knows, and nothing answered</source>
+        <translation>以 %2 收到 %1 帧，均不属于 ImuDesk 支持的设备，且无应答</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>no traffic at any bit rate (%1) and nothing answered when asked at %2: check the power and the wiring</source>
+        <translation>在任何波特率（%1）下均无报文，以 %2 询问时也无应答：请检查电源和接线</translation>
+    </message>
+</context>
+<context>
+    <name>imudesk::discovery::SimulatedBench</name>
+    <message>
+        <location filename="../core/discovery/simulated_bench.cpp" line="+25"/>
+        <source>%1 could not start: %2</source>
+        <translation>%1 无法启动：%2</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>A simulated serial device</source>
+        <translation>一个模拟串口设备</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>The simulated Modbus module</source>
+        <translation>模拟 Modbus 模块</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>A simulated CAN module</source>
+        <translation>一个模拟 CAN 模块</translation>
     </message>
 </context>
 <context>
@@ -10119,7 +10339,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::ConnectionBar</name>
     <message>
-        <location filename="../ui/workspace/connection_bar.cpp" line="+182"/>
+        <location filename="../ui/workspace/connection_bar.cpp" line="+190"/>
         <source>SN %1</source>
         <translation>序列号 %1</translation>
     </message>
@@ -10142,6 +10362,16 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <location line="+1"/>
         <source>Serial port of the IMU, or a simulated device that runs inside ImuDesk</source>
         <translation>IMU 所连接的串口，或在 ImuDesk 内部运行的模拟设备</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Find devices…</source>
+        <translation>查找设备…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Sweep every serial port and CAN bus for devices (Ctrl+Shift+F)</source>
+        <translation>扫描所有串口和 CAN 总线上的设备（Ctrl+Shift+F）</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -10689,6 +10919,335 @@ Link load = bytes per second × 10 bits / baud rate.</source>
         <translation>
             <numerusform>已向 %1 写入 %n 行</numerusform>
         </translation>
+    </message>
+</context>
+<context>
+    <name>imudesk::ui::FindDevicesDialog</name>
+    <message>
+        <location filename="../ui/discovery/find_devices_dialog.cpp" line="+157"/>
+        <source>Find devices</source>
+        <translation>查找设备</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>One sweep of every serial port and CAN bus: each serial family at its rates, silent ports as Modbus RTU lines, CAN buses listened to before anything is sent. Nothing is written to a device and every port is closed afterwards.</source>
+        <translation>一次扫描所有串口和 CAN 总线：按各串口设备系列的波特率逐一尝试，无应答的端口作为 Modbus RTU 线路询问，CAN 总线先监听再发送。不会向设备写入任何内容，结束后关闭所有端口。</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>More &amp;serial ports:</source>
+        <translation>更多串口(&amp;S)：</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>beside the machine&apos;s, comma-separated, e.g. /dev/pts/3,/dev/ttyUSB4</source>
+        <translation>本机串口之外的端口，用逗号分隔，例如 /dev/pts/3,/dev/ttyUSB4</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Ports the machine does not list, such as pseudo-terminals</source>
+        <translation>本机未列出的端口，例如伪终端</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;CAN buses:</source>
+        <translation>CAN 总线(&amp;C)：</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>PLUGIN:INTERFACE, comma-separated, e.g. socketcan:can1,virtualcan:can0</source>
+        <translation>插件:接口，用逗号分隔，例如 socketcan:can1,virtualcan:can0</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Every socketcan interface is swept anyway; name the others here</source>
+        <translation>所有 socketcan 接口都会被扫描；其他接口请在此填写</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Only these</source>
+        <translation>仅扫描这些(&amp;O)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Sweep only the ports and buses named above, not every serial port and socketcan interface of the machine</source>
+        <translation>只扫描上面列出的端口和总线，不扫描本机所有串口和 socketcan 接口</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Ask silent ports as &amp;Modbus lines</source>
+        <translation>将无应答端口作为 &amp;Modbus 线路询问</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Ids 80 and 1 at every rate first, then ids 1-247 at each rate, fastest first, until a device answers or the time is up</source>
+        <translation>先在每个波特率下询问 ID 80 和 1，再从最快的波特率开始逐个询问 ID 1-247，直到有设备应答或时间用完</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Time limit:</source>
+        <translation>时间上限(&amp;T)：</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source> s</source>
+        <translation> s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The whole sweep at most, in seconds</source>
+        <translation>整个扫描的最长时间，单位为秒</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Simulated &amp;bench</source>
+        <translation>模拟测试台(&amp;B)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Start simulated devices to find: a HiPNUC module at 460800 baud, an HEC495 at 4800 baud address 7, a Modbus module at 38400 baud id 17, a silent port, and on virtualcan can1 a J1939 module and two CANopen modules sharing node 5</source>
+        <translation>启动供查找的模拟设备：一个波特率 460800 的 HiPNUC 模块，一个波特率 4800、地址 7 的 HEC495，一个波特率 38400、ID 17 的 Modbus 模块，一个无应答端口，以及 virtualcan can1 上的一个 J1939 模块和两个共用节点 5 的 CANopen 模块</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>&amp;Sweep</source>
+        <translation>扫描(&amp;S)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Start the sweep (F5)</source>
+        <translation>开始扫描（F5）</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Cancel</source>
+        <translation>取消</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Connect &amp;all</source>
+        <translation>全部连接(&amp;A)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Open every device found in a tab of its own</source>
+        <translation>在各自的标签页中打开找到的每台设备</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Close</source>
+        <translation>关闭</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Conflicts and ports where nothing was found:</source>
+        <translation>冲突及未找到设备的端口：</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Link</source>
+        <translation>链路</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Port</source>
+        <translation>端口</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Rate</source>
+        <translation>速率</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Family</source>
+        <translation>系列</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Model</source>
+        <translation>型号</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Serial number</source>
+        <translation>序列号</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Address / node</source>
+        <translation>地址 / 节点</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Firmware</source>
+        <translation>固件</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Serial: baud; CAN: bit/s</source>
+        <translation>串口：波特率；CAN：bit/s</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <location line="+174"/>
+        <source>Connect</source>
+        <translation>连接</translation>
+    </message>
+    <message>
+        <location line="-172"/>
+        <source>Press Sweep to look at every port and bus.</source>
+        <translation>按“扫描”检查所有端口和总线。</translation>
+    </message>
+    <message>
+        <location line="+98"/>
+        <source>&quot;%1&quot; is not PLUGIN:INTERFACE (e.g. socketcan:can0): correct the CAN buses field.</source>
+        <translation>“%1”不是 插件:接口 格式（例如 socketcan:can0）：请更正 CAN 总线一栏。</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>No serial port and no CAN bus to sweep: plug in an adapter, or name ports and buses above (or tick Simulated bench).</source>
+        <translation>没有可扫描的串口或 CAN 总线：请插入适配器，或在上方填写端口和总线（或勾选“模拟测试台”）。</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+4"/>
+        <source>Sweeping %n port(s)</source>
+        <translation><numerusform>正在扫描 %n 个端口</numerusform></translation>
+    </message>
+    <message numerus="yes">
+        <location line="+0"/>
+        <source> and %n CAN bus(es)…</source>
+        <translation><numerusform>和 %n 条 CAN 总线…</numerusform></translation>
+    </message>
+    <message>
+        <location line="+28"/>
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Serial</source>
+        <translation>串口</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Modbus RTU</source>
+        <translation>Modbus RTU</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>CAN</source>
+        <translation>CAN</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1 kbit/s</source>
+        <translation>%1 kbit/s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>heard without errors at this rate</source>
+        <translation>在此波特率下监听无错误</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 baud</source>
+        <translation>%1 波特</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>node %1</source>
+        <translation>节点 %1</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Open this device in a tab of its own</source>
+        <translation>在单独的标签页中打开此设备</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>Could not connect %1: %2</source>
+        <translation>无法连接 %1：%2</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1 opened in its own tab.</source>
+        <translation>%1 已在单独的标签页中打开。</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Conflict on %1, %2 %3: %4 What to do: %5</source>
+        <translation>%1 上的冲突，%2 %3：%4 处理方法：%5</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>node</source>
+        <translation>节点</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>address</source>
+        <translation>地址</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>busy</source>
+        <translation>被占用</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>silent</source>
+        <translation>无应答</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>garbage</source>
+        <translation>乱码</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>no permission</source>
+        <translation>无权限</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>could not open</source>
+        <translation>无法打开</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>out of time</source>
+        <translation>超时</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>cancelled</source>
+        <translation>已取消</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 (%2): %3</source>
+        <translation>%1（%2）：%3</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+10"/>
+        <source>%n device(s) found</source>
+        <translation><numerusform>找到 %n 台设备</numerusform></translation>
+    </message>
+    <message numerus="yes">
+        <location line="+2"/>
+        <source>, %n conflict(s): see below</source>
+        <translation><numerusform>，%n 处冲突：见下方</numerusform></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source> in %1 s.</source>
+        <translation>，用时 %1 s。</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source> Cancelled: what was found so far is listed.</source>
+        <translation>已取消：列出的是目前已找到的设备。</translation>
     </message>
 </context>
 <context>
@@ -12355,7 +12914,7 @@ Samples: %3</source>
 <context>
     <name>imudesk::ui::MainWindow</name>
     <message>
-        <location filename="../ui/workspace/main_window.cpp" line="+402"/>
+        <location filename="../ui/workspace/main_window.cpp" line="+406"/>
         <source>Choose a port first.</source>
         <translation>请先选择串口。</translation>
     </message>
@@ -15048,7 +15607,7 @@ Edit it (Edit…) and start again.</source>
 <context>
     <name>imudesk::ui::ToolActions</name>
     <message>
-        <location filename="../ui/workspace/tool_actions.cpp" line="+127"/>
+        <location filename="../ui/workspace/tool_actions.cpp" line="+131"/>
         <source>&amp;Open capture…</source>
         <translation>打开记录(&amp;O)…</translation>
     </message>
@@ -15089,6 +15648,16 @@ Edit it (Edit…) and start again.</source>
     </message>
     <message>
         <location line="+1"/>
+        <source>&amp;Find devices…</source>
+        <translation>查找设备(&amp;F)…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>One sweep of every serial port and CAN bus: what is connected, at what rate and address, and two devices at one address</source>
+        <translation>一次扫描所有串口和 CAN 总线：连接了哪些设备、速率和地址是多少，以及同一地址上的两台设备</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Connect over &amp;Modbus RTU…</source>
         <translation>通过 Modbus RTU 连接(&amp;M)…</translation>
     </message>
@@ -16074,7 +16643,7 @@ Edit it (Edit…) and start again.</source>
 <context>
     <name>main</name>
     <message>
-        <location filename="../app/gui/main.cpp" line="+94"/>
+        <location filename="../app/gui/main.cpp" line="+95"/>
         <source>ImuDesk: a bench tool for HiPNUC IMU modules.</source>
         <translation>ImuDesk：HiPNUC IMU 模块测试工具。</translation>
     </message>
@@ -16139,12 +16708,22 @@ Edit it (Edit…) and start again.</source>
         <translation>在 ADDR:PORT（例如 127.0.0.1:8765）上启动实时桥接（工具 &gt; 实时桥接）：将已连接的设备发送到 Foxglove、Lichtblick 和 PlotJuggler。</translation>
     </message>
     <message>
-        <location line="+121"/>
+        <location line="+5"/>
+        <source>Open Device &gt; Find devices… at start (a first start without a device to open does so anyway).</source>
+        <translation>启动时打开“设备 &gt; 查找设备…”（首次启动且没有要打开的设备时也会自动打开）。</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Open Device &gt; Find devices… on a simulated bench (six devices on four ports and a virtualcan bus, two of them sharing a node ID) and sweep it.</source>
+        <translation>在模拟测试台（四个端口和一条 virtualcan 总线上的六台设备，其中两台共用一个节点 ID）上打开“设备 &gt; 查找设备…”并进行扫描。</translation>
+    </message>
+    <message>
+        <location line="+136"/>
         <source>Unknown panel &quot;%1&quot;; use configuration, recording, console, raw, commands, can or sync.</source>
         <translation>未知的面板“%1”；请使用 configuration、recording、console、raw、commands、can 或 sync。</translation>
     </message>
     <message>
-        <location line="-132"/>
+        <location line="-156"/>
         <source>Open the production station window; with PLAN (a test plan file), load that plan. With --screenshot the station window is saved.</source>
         <translation>打开生产测试台窗口；指定 PLAN（测试计划文件）时加载该计划。使用 --screenshot 时保存的是生产测试台窗口。</translation>
     </message>
@@ -16154,7 +16733,7 @@ Edit it (Edit…) and start again.</source>
         <translation>打开生产测试台，使用装有 8 个 HI14 模块的模拟托盘（一个陀螺仪噪声过大，一个安装方向错误，一个固件为 1.6.6），并在其上运行 PLAN；未指定 PLAN 时运行内置示例计划，其固件步骤不含镜像（旧固件模块在此步骤失败），配置方案步骤禁用。</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+25"/>
         <source>Test plan for --station or --station-demo.</source>
         <translation>--station 或 --station-demo 使用的测试计划。</translation>
     </message>
@@ -16169,12 +16748,12 @@ Edit it (Edit…) and start again.</source>
         <translation>--simulate 模拟的型号（默认 HI14）。</translation>
     </message>
     <message>
-        <location line="-34"/>
+        <location line="-42"/>
         <source>Start connected to another simulated device: hec495 (compass on serial), modbus (HI14 over Modbus RTU), can (HI14 J1939 on virtualcan) or canopen (HI14 CANopen on virtualcan); or replay a capture file, or a recorded session (its session.json or folder).</source>
         <translation>启动时连接另一种模拟设备：hec495（串口电子罗盘）、modbus（Modbus RTU 上的 HI14）、can（virtualcan 上的 HI14 J1939）或 canopen（virtualcan 上的 HI14 CANopen）；或回放一个记录文件，或一个已录制的会话（其 session.json 或文件夹）。</translation>
     </message>
     <message>
-        <location line="+50"/>
+        <location line="+58"/>
         <source>A model name is only accepted after --simulate.</source>
         <translation>型号名称只能跟在 --simulate 之后。</translation>
     </message>
@@ -16206,7 +16785,7 @@ Edit it (Edit…) and start again.</source>
     <message>
         <location line="+23"/>
         <location line="+26"/>
-        <location line="+44"/>
+        <location line="+60"/>
         <source>ImuDesk</source>
         <translation>ImuDesk</translation>
     </message>

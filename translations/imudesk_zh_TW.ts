@@ -897,6 +897,74 @@
     </message>
 </context>
 <context>
+    <name>CanSurvey</name>
+    <message>
+        <location filename="../core/discovery/can_survey.cpp" line="+67"/>
+        <source>node %1 sent its boot-up message twice while the bus was only listened to: two devices started with that node ID</source>
+        <translation>僅監聽匯流排期間，節點 %1 送出了兩次開機訊息：有兩台裝置以該節點 ID 啟動</translation>
+    </message>
+    <message>
+        <location line="+82"/>
+        <source>SDO read of %1:%2</source>
+        <translation>對 %1:%2 的 SDO 讀取</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>J1939 read of register %1</source>
+        <translation>對暫存器 %1 的 J1939 讀取</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>refused</source>
+        <translation>被拒絕</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1 answers from node %2 to one %3, with different contents (%4)</source>
+        <translation>節點 %2 對同一次%3給出 %1 個回應，內容不同（%4）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 answers from node %2 to one %3 (%4)</source>
+        <translation>節點 %2 對同一次%3給出 %1 個回應（%4）</translation>
+    </message>
+    <message>
+        <location line="+46"/>
+        <source>HiPNUC module (J1939)</source>
+        <translation>HiPNUC 模組（J1939）</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>HiPNUC module (CANopen)</source>
+        <translation>HiPNUC 模組（CANopen）</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>vendor %1, product code %2</source>
+        <translation>廠商 %1，產品代碼 %2</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>the module&apos;s own bit-rate setting (the interface cannot measure one)</source>
+        <translation>模組本身的鮑率設定（該介面無法量得鮑率）</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>sends no data; answered when asked</source>
+        <translation>不主動傳送資料；詢問時有回應</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+8"/>
+        <source>%1 (and %n more time(s) like it)</source>
+        <translation><numerusform>%1（另有 %n 次同類情況）</numerusform></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Power the devices one at a time and give each its own node ID (its CAN tab, Settings, node ID; save and reset), then sweep again.</source>
+        <translation>逐台為裝置上電，並為每台設定各自的節點 ID（在其 CAN 分頁的「設定」中修改節點 ID，儲存並重設），然後重新掃描。</translation>
+    </message>
+</context>
+<context>
     <name>CanUi</name>
     <message>
         <location filename="../ui/families/can_ui.cpp" line="+20"/>
@@ -5523,7 +5591,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::device::LinkOpener</name>
     <message>
-        <location filename="../core/links/link_opener.cpp" line="+117"/>
+        <location filename="../core/links/link_opener.cpp" line="+118"/>
         <source>%1: no serial device family is called &quot;%2&quot;</source>
         <translation>%1：沒有名為「%2」的序列埠裝置系列</translation>
     </message>
@@ -5553,7 +5621,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>無法讀取 %1。請確認檔案存在且您有讀取權限。</translation>
     </message>
     <message>
-        <location line="+76"/>
+        <location line="+78"/>
         <source>the port of %1 was lost while it was handed to the device&apos;s session</source>
         <translation>%1 的連接埠在交給裝置工作階段時遺失</translation>
     </message>
@@ -5621,7 +5689,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>對節點 %1 的請求失敗：%2</translation>
     </message>
     <message>
-        <location line="+80"/>
+        <location line="+93"/>
         <source>the reply carries another number of registers than asked for</source>
         <translation>回應中的暫存器數量與請求的不一致</translation>
     </message>
@@ -5691,12 +5759,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>回讀值：%1。</translation>
     </message>
     <message>
-        <location line="+65"/>
+        <location line="+99"/>
         <source>The serial port %1 cannot run at %2 baud.</source>
         <translation>串列埠 %1 無法以 %2 波特率運作。</translation>
     </message>
     <message>
-        <location line="+33"/>
+        <location line="+44"/>
         <source>HEC495 compass (pitch %1 deg)</source>
         <translation>HEC495 羅盤（俯仰角 %1 deg）</translation>
     </message>
@@ -5734,7 +5802,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation> 或 </translation>
     </message>
     <message>
-        <location filename="../core/links/serial_family_scan.h" line="+36"/>
+        <location filename="../core/links/serial_family_scan.h" line="+37"/>
         <source>serial</source>
         <translation>序列埠</translation>
     </message>
@@ -5790,6 +5858,158 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <location line="+85"/>
         <source>Bytes keep arriving on %1 but none of them form a frame: the device probably runs at another baud rate now. Disconnect and connect again with the baud rate set to Auto.</source>
         <translation>%1 上持續收到位元組，但無法組成任何資料框：裝置可能已改用其他波特率。請中斷連線，並將波特率設為「自動」後重新連線。</translation>
+    </message>
+</context>
+<context>
+    <name>imudesk::discovery::BenchSweep</name>
+    <message>
+        <location filename="../core/discovery/bench_sweep.cpp" line="+85"/>
+        <source>looking for a serial device</source>
+        <translation>正在尋找序列埠裝置</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>no serial device answered; as a Modbus line %1 of %2 addresses and rates were asked before the time was up (nothing answered): give the sweep more time</source>
+        <translation>沒有序列埠裝置回應；作為 Modbus 線路，在時間用完前已詢問 %2 個位址與鮑率組合中的 %1 個（均無回應）：請給掃描更多時間</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>the sweep was cancelled while the port was asked as a Modbus line</source>
+        <translation>該連接埠作為 Modbus 線路詢問期間掃描被取消</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>the time was up before anything answered</source>
+        <translation>在有裝置回應之前時間已用完</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+278"/>
+        <source>the sweep was cancelled</source>
+        <translation>掃描已取消</translation>
+    </message>
+    <message>
+        <location line="-259"/>
+        <source>%1 at %2 baud: reading its identity</source>
+        <translation>%1，鮑率 %2：正在讀取其身分資訊</translation>
+    </message>
+    <message>
+        <location line="+29"/>
+        <source>it streams, but did not say who it is within %1 s</source>
+        <translation>裝置在輸出資料，但 %1 s 內未回報其身分</translation>
+    </message>
+    <message>
+        <location line="+60"/>
+        <source>asking it as a Modbus RTU line</source>
+        <translation>正在作為 Modbus RTU 線路詢問</translation>
+    </message>
+    <message>
+        <location line="+30"/>
+        <source>known by its answer at the angle registers (no identity block)</source>
+        <translation>依其角度暫存器的回應識別（無身分資訊區塊）</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>%1 replies to id %2 failed their CRC while other ids&apos; replies were whole: two devices answering at once garble each other</source>
+        <translation>發往 ID %2 的回應中有 %1 個 CRC 檢查失敗，而其他 ID 的回應完好：兩台裝置同時回應，相互干擾</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Connect the devices one at a time and give each its own Modbus id (Settings, MD_ID; save and reset), then sweep again.</source>
+        <translation>逐台連接裝置，並為每台設定各自的 Modbus ID（設定中的 MD_ID，儲存並重設），然後重新掃描。</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Modbus id %1 answers at %2 baud</source>
+        <translation>Modbus ID %1 在鮑率 %2 下回應</translation>
+    </message>
+    <message>
+        <location line="+29"/>
+        <source>%1 bytes arrived but none formed a frame of any family at any rate%2: check the wiring (A/B swapped on RS-485, TX/RX), the parity and that the device is one ImuDesk knows</source>
+        <translation>收到 %1 位元組，但在任何鮑率下都不構成任何裝置系列的封包%2：請檢查接線（RS-485 的 A/B 是否接反、TX/RX）、同位檢查，以及該裝置是否為 ImuDesk 支援的裝置</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>, nor a Modbus reply</source>
+        <translation>，也不是 Modbus 回應</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>nothing answered at any rate%1: check the power and the wiring, or that a device is connected at all</source>
+        <translation>在任何鮑率下均無回應%1：請檢查電源和接線，或確認是否連接了裝置</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source> (serial families and Modbus ids 1-247)</source>
+        <translation>（序列埠裝置系列及 Modbus ID 1-247）</translation>
+    </message>
+    <message>
+        <location line="+82"/>
+        <source>the time was up before the bus was heard at every bit rate</source>
+        <translation>尚未在所有鮑率下監聽匯流排，時間已用完</translation>
+    </message>
+    <message>
+        <location line="+49"/>
+        <source>%1 bit/s</source>
+        <translation>%1 bit/s</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>the interface&apos;s rate</source>
+        <translation>介面目前的鮑率</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>errors at every bit rate tried (%1): check the termination (120 Ω at each end), CAN-H/CAN-L and the ground; nothing was sent on this bus</source>
+        <translation>嘗試的每個鮑率（%1）下都有錯誤：請檢查終端電阻（兩端各 120 Ω）、CAN-H/CAN-L 和接地；未向該匯流排送出任何訊息</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>listening at %1</source>
+        <translation>正在以 %1 監聽</translation>
+    </message>
+    <message>
+        <location line="+35"/>
+        <source>asking the nodes at %1</source>
+        <translation>正在以 %1 詢問各節點</translation>
+    </message>
+    <message>
+        <location line="+31"/>
+        <source>Qt&apos;s virtualcan interface has no bit rate</source>
+        <translation>Qt 的 virtualcan 介面沒有鮑率</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>%1 frames at %2, none of a device ImuDesk knows, and nothing answered</source>
+        <translation>以 %2 收到 %1 個訊框，均不屬於 ImuDesk 支援的裝置，且無回應</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>no traffic at any bit rate (%1) and nothing answered when asked at %2: check the power and the wiring</source>
+        <translation>在任何鮑率（%1）下均無訊息，以 %2 詢問時也無回應：請檢查電源和接線</translation>
+    </message>
+</context>
+<context>
+    <name>imudesk::discovery::SimulatedBench</name>
+    <message>
+        <location filename="../core/discovery/simulated_bench.cpp" line="+25"/>
+        <source>%1 could not start: %2</source>
+        <translation>%1 無法啟動：%2</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>A simulated serial device</source>
+        <translation>一個模擬序列埠裝置</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>The simulated Modbus module</source>
+        <translation>模擬 Modbus 模組</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>A simulated CAN module</source>
+        <translation>一個模擬 CAN 模組</translation>
     </message>
 </context>
 <context>
@@ -10119,7 +10339,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::ConnectionBar</name>
     <message>
-        <location filename="../ui/workspace/connection_bar.cpp" line="+182"/>
+        <location filename="../ui/workspace/connection_bar.cpp" line="+190"/>
         <source>SN %1</source>
         <translation>序號 %1</translation>
     </message>
@@ -10142,6 +10362,16 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <location line="+1"/>
         <source>Serial port of the IMU, or a simulated device that runs inside ImuDesk</source>
         <translation>IMU 所連接的串列埠，或在 ImuDesk 內部執行的模擬裝置</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Find devices…</source>
+        <translation>尋找裝置…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Sweep every serial port and CAN bus for devices (Ctrl+Shift+F)</source>
+        <translation>掃描所有序列埠和 CAN 匯流排上的裝置（Ctrl+Shift+F）</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -10689,6 +10919,335 @@ Link load = bytes per second × 10 bits / baud rate.</source>
         <translation>
             <numerusform>已將 %n 列寫入 %1</numerusform>
         </translation>
+    </message>
+</context>
+<context>
+    <name>imudesk::ui::FindDevicesDialog</name>
+    <message>
+        <location filename="../ui/discovery/find_devices_dialog.cpp" line="+157"/>
+        <source>Find devices</source>
+        <translation>尋找裝置</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>One sweep of every serial port and CAN bus: each serial family at its rates, silent ports as Modbus RTU lines, CAN buses listened to before anything is sent. Nothing is written to a device and every port is closed afterwards.</source>
+        <translation>一次掃描所有序列埠和 CAN 匯流排：依各序列埠裝置系列的鮑率逐一嘗試，無回應的連接埠作為 Modbus RTU 線路詢問，CAN 匯流排先監聽再傳送。不會向裝置寫入任何內容，結束後關閉所有連接埠。</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>More &amp;serial ports:</source>
+        <translation>更多序列埠(&amp;S)：</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>beside the machine&apos;s, comma-separated, e.g. /dev/pts/3,/dev/ttyUSB4</source>
+        <translation>本機序列埠以外的連接埠，以逗號分隔，例如 /dev/pts/3,/dev/ttyUSB4</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Ports the machine does not list, such as pseudo-terminals</source>
+        <translation>本機未列出的連接埠，例如虛擬終端</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;CAN buses:</source>
+        <translation>CAN 匯流排(&amp;C)：</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>PLUGIN:INTERFACE, comma-separated, e.g. socketcan:can1,virtualcan:can0</source>
+        <translation>外掛:介面，以逗號分隔，例如 socketcan:can1,virtualcan:can0</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Every socketcan interface is swept anyway; name the others here</source>
+        <translation>所有 socketcan 介面都會被掃描；其他介面請在此填寫</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Only these</source>
+        <translation>僅掃描這些(&amp;O)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Sweep only the ports and buses named above, not every serial port and socketcan interface of the machine</source>
+        <translation>只掃描上面列出的連接埠和匯流排，不掃描本機所有序列埠和 socketcan 介面</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Ask silent ports as &amp;Modbus lines</source>
+        <translation>將無回應連接埠作為 &amp;Modbus 線路詢問</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Ids 80 and 1 at every rate first, then ids 1-247 at each rate, fastest first, until a device answers or the time is up</source>
+        <translation>先在每個鮑率下詢問 ID 80 和 1，再從最快的鮑率開始逐個詢問 ID 1-247，直到有裝置回應或時間用完</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Time limit:</source>
+        <translation>時間上限(&amp;T)：</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source> s</source>
+        <translation> s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The whole sweep at most, in seconds</source>
+        <translation>整個掃描的最長時間，單位為秒</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Simulated &amp;bench</source>
+        <translation>模擬測試台(&amp;B)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Start simulated devices to find: a HiPNUC module at 460800 baud, an HEC495 at 4800 baud address 7, a Modbus module at 38400 baud id 17, a silent port, and on virtualcan can1 a J1939 module and two CANopen modules sharing node 5</source>
+        <translation>啟動供尋找的模擬裝置：一個鮑率 460800 的 HiPNUC 模組，一個鮑率 4800、位址 7 的 HEC495，一個鮑率 38400、ID 17 的 Modbus 模組，一個無回應連接埠，以及 virtualcan can1 上的一個 J1939 模組和兩個共用節點 5 的 CANopen 模組</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>&amp;Sweep</source>
+        <translation>掃描(&amp;S)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Start the sweep (F5)</source>
+        <translation>開始掃描（F5）</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Cancel</source>
+        <translation>取消</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Connect &amp;all</source>
+        <translation>全部連線(&amp;A)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Open every device found in a tab of its own</source>
+        <translation>在各自的分頁中開啟找到的每台裝置</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Close</source>
+        <translation>關閉</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Conflicts and ports where nothing was found:</source>
+        <translation>衝突及未找到裝置的連接埠：</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Link</source>
+        <translation>鏈路</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Port</source>
+        <translation>連接埠</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Rate</source>
+        <translation>速率</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Family</source>
+        <translation>系列</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Model</source>
+        <translation>型號</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Serial number</source>
+        <translation>序號</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Address / node</source>
+        <translation>位址 / 節點</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Firmware</source>
+        <translation>韌體</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Serial: baud; CAN: bit/s</source>
+        <translation>序列埠：鮑率；CAN：bit/s</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <location line="+174"/>
+        <source>Connect</source>
+        <translation>連線</translation>
+    </message>
+    <message>
+        <location line="-172"/>
+        <source>Press Sweep to look at every port and bus.</source>
+        <translation>按「掃描」檢查所有連接埠和匯流排。</translation>
+    </message>
+    <message>
+        <location line="+98"/>
+        <source>&quot;%1&quot; is not PLUGIN:INTERFACE (e.g. socketcan:can0): correct the CAN buses field.</source>
+        <translation>「%1」不是 外掛:介面 格式（例如 socketcan:can0）：請更正 CAN 匯流排一欄。</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>No serial port and no CAN bus to sweep: plug in an adapter, or name ports and buses above (or tick Simulated bench).</source>
+        <translation>沒有可掃描的序列埠或 CAN 匯流排：請插入轉接器，或在上方填寫連接埠和匯流排（或勾選「模擬測試台」）。</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+4"/>
+        <source>Sweeping %n port(s)</source>
+        <translation><numerusform>正在掃描 %n 個連接埠</numerusform></translation>
+    </message>
+    <message numerus="yes">
+        <location line="+0"/>
+        <source> and %n CAN bus(es)…</source>
+        <translation><numerusform>和 %n 條 CAN 匯流排…</numerusform></translation>
+    </message>
+    <message>
+        <location line="+28"/>
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Serial</source>
+        <translation>序列埠</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Modbus RTU</source>
+        <translation>Modbus RTU</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>CAN</source>
+        <translation>CAN</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1 kbit/s</source>
+        <translation>%1 kbit/s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>heard without errors at this rate</source>
+        <translation>在此鮑率下監聽無錯誤</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 baud</source>
+        <translation>%1 鮑</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>node %1</source>
+        <translation>節點 %1</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Open this device in a tab of its own</source>
+        <translation>在單獨的分頁中開啟此裝置</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>Could not connect %1: %2</source>
+        <translation>無法連線 %1：%2</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1 opened in its own tab.</source>
+        <translation>%1 已在單獨的分頁中開啟。</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Conflict on %1, %2 %3: %4 What to do: %5</source>
+        <translation>%1 上的衝突，%2 %3：%4 處理方法：%5</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>node</source>
+        <translation>節點</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>address</source>
+        <translation>位址</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>busy</source>
+        <translation>被佔用</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>silent</source>
+        <translation>無回應</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>garbage</source>
+        <translation>亂碼</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>no permission</source>
+        <translation>無權限</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>could not open</source>
+        <translation>無法開啟</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>out of time</source>
+        <translation>逾時</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>cancelled</source>
+        <translation>已取消</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 (%2): %3</source>
+        <translation>%1（%2）：%3</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+10"/>
+        <source>%n device(s) found</source>
+        <translation><numerusform>找到 %n 台裝置</numerusform></translation>
+    </message>
+    <message numerus="yes">
+        <location line="+2"/>
+        <source>, %n conflict(s): see below</source>
+        <translation><numerusform>，%n 處衝突：見下方</numerusform></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source> in %1 s.</source>
+        <translation>，用時 %1 s。</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source> Cancelled: what was found so far is listed.</source>
+        <translation>已取消：列出的是目前已找到的裝置。</translation>
     </message>
 </context>
 <context>
@@ -12355,7 +12914,7 @@ Samples: %3</source>
 <context>
     <name>imudesk::ui::MainWindow</name>
     <message>
-        <location filename="../ui/workspace/main_window.cpp" line="+402"/>
+        <location filename="../ui/workspace/main_window.cpp" line="+406"/>
         <source>Choose a port first.</source>
         <translation>請先選擇串列埠。</translation>
     </message>
@@ -15048,7 +15607,7 @@ Edit it (Edit…) and start again.</source>
 <context>
     <name>imudesk::ui::ToolActions</name>
     <message>
-        <location filename="../ui/workspace/tool_actions.cpp" line="+127"/>
+        <location filename="../ui/workspace/tool_actions.cpp" line="+131"/>
         <source>&amp;Open capture…</source>
         <translation>開啟記錄檔(&amp;O)…</translation>
     </message>
@@ -15089,6 +15648,16 @@ Edit it (Edit…) and start again.</source>
     </message>
     <message>
         <location line="+1"/>
+        <source>&amp;Find devices…</source>
+        <translation>尋找裝置(&amp;F)…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>One sweep of every serial port and CAN bus: what is connected, at what rate and address, and two devices at one address</source>
+        <translation>一次掃描所有序列埠和 CAN 匯流排：連接了哪些裝置、速率和位址是多少，以及同一位址上的兩台裝置</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Connect over &amp;Modbus RTU…</source>
         <translation>透過 Modbus RTU 連線(&amp;M)…</translation>
     </message>
@@ -16074,7 +16643,7 @@ Edit it (Edit…) and start again.</source>
 <context>
     <name>main</name>
     <message>
-        <location filename="../app/gui/main.cpp" line="+94"/>
+        <location filename="../app/gui/main.cpp" line="+95"/>
         <source>ImuDesk: a bench tool for HiPNUC IMU modules.</source>
         <translation>ImuDesk：HiPNUC IMU 模組測試工具。</translation>
     </message>
@@ -16139,12 +16708,22 @@ Edit it (Edit…) and start again.</source>
         <translation>在 ADDR:PORT（例如 127.0.0.1:8765）上啟動即時橋接（工具 &gt; 即時橋接）：將已連線的裝置傳送到 Foxglove、Lichtblick 與 PlotJuggler。</translation>
     </message>
     <message>
-        <location line="+121"/>
+        <location line="+5"/>
+        <source>Open Device &gt; Find devices… at start (a first start without a device to open does so anyway).</source>
+        <translation>啟動時開啟「裝置 &gt; 尋找裝置…」（首次啟動且沒有要開啟的裝置時也會自動開啟）。</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Open Device &gt; Find devices… on a simulated bench (six devices on four ports and a virtualcan bus, two of them sharing a node ID) and sweep it.</source>
+        <translation>在模擬測試台（四個連接埠和一條 virtualcan 匯流排上的六台裝置，其中兩台共用一個節點 ID）上開啟「裝置 &gt; 尋找裝置…」並進行掃描。</translation>
+    </message>
+    <message>
+        <location line="+136"/>
         <source>Unknown panel &quot;%1&quot;; use configuration, recording, console, raw, commands, can or sync.</source>
         <translation>未知的面板「%1」；請使用 configuration、recording、console、raw、commands、can 或 sync。</translation>
     </message>
     <message>
-        <location line="-132"/>
+        <location line="-156"/>
         <source>Open the production station window; with PLAN (a test plan file), load that plan. With --screenshot the station window is saved.</source>
         <translation>開啟生產測試臺視窗；指定 PLAN（測試計劃檔案）時載入該計劃。使用 --screenshot 時儲存的是生產測試臺視窗。</translation>
     </message>
@@ -16154,7 +16733,7 @@ Edit it (Edit…) and start again.</source>
         <translation>開啟生產測試臺，使用裝有 8 個 HI14 模組的模擬托盤（一個陀螺儀噪聲過大，一個安裝方向錯誤，一個韌體為 1.6.6），並在其上執行 PLAN；未指定 PLAN 時執行內建示例計劃，其韌體步驟不含映像（舊韌體模組在此步驟失敗），配置方案步驟禁用。</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+25"/>
         <source>Test plan for --station or --station-demo.</source>
         <translation>--station 或 --station-demo 使用的測試計劃。</translation>
     </message>
@@ -16169,12 +16748,12 @@ Edit it (Edit…) and start again.</source>
         <translation>--simulate 模擬的型號（預設 HI14）。</translation>
     </message>
     <message>
-        <location line="-34"/>
+        <location line="-42"/>
         <source>Start connected to another simulated device: hec495 (compass on serial), modbus (HI14 over Modbus RTU), can (HI14 J1939 on virtualcan) or canopen (HI14 CANopen on virtualcan); or replay a capture file, or a recorded session (its session.json or folder).</source>
         <translation>啟動時連線另一種模擬裝置：hec495（序列埠電子羅盤）、modbus（Modbus RTU 上的 HI14）、can（virtualcan 上的 HI14 J1939）或 canopen（virtualcan 上的 HI14 CANopen）；或重播一個記錄檔，或一個已錄製的工作階段（其 session.json 或資料夾）。</translation>
     </message>
     <message>
-        <location line="+50"/>
+        <location line="+58"/>
         <source>A model name is only accepted after --simulate.</source>
         <translation>型號名稱只能接在 --simulate 之後。</translation>
     </message>
@@ -16206,7 +16785,7 @@ Edit it (Edit…) and start again.</source>
     <message>
         <location line="+23"/>
         <location line="+26"/>
-        <location line="+44"/>
+        <location line="+60"/>
         <source>ImuDesk</source>
         <translation>ImuDesk</translation>
     </message>

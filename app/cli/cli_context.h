@@ -83,6 +83,7 @@ int cmdMagcal(const QStringList &args);
 int cmdCalibrate(const QStringList &args); // commands_calibrate.cpp
 int cmdStation(const QStringList &args);   // commands_station.cpp
 int cmdVerify(const QStringList &args);    // commands_verify.cpp
+int cmdDiscover(const QStringList &args);  // commands_discover.cpp
 
 // --from and --to (seconds >= 0) into *from and *to where given; false (usage printed) on a bad value.
 bool fromToOptions(const QCommandLineParser &p, double *from, double *to);

@@ -20,6 +20,9 @@ void usage(FILE *to)
     std::fputs("usage: imudesk-cli COMMAND [options]\n"
                "  ports [--json]                         list serial ports\n"
                "  probe PORT [--baud B] [--json]         detect baud rate and identity\n"
+               "  discover [--ports P1,P2] [--can PLUGIN:IF,...] [--only-listed] [--timeout S] [--json]\n"
+               "                                         one sweep finds every device: serial ports and rates, Modbus\n"
+               "                                         ids, CAN bit rates and nodes; exit 0 found, 1 conflict, 2 none\n"
                "  read PORT [--baud B] [--duration S | --once TYPE] [--json]\n"
                "                                         print decoded samples\n"
                "  send PORT [--baud B] \"COMMAND\"         send an ASCII command, print the reply\n"
@@ -178,6 +181,7 @@ int main(int argc, char **argv)
         {QStringLiteral("calibrate"), cmdCalibrate},
         {QStringLiteral("station"), cmdStation},
         {QStringLiteral("verify"), cmdVerify},
+        {QStringLiteral("discover"), cmdDiscover},
     };
     const auto it = commands.find(cmd);
     if (it == commands.end()) {

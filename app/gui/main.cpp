@@ -11,6 +11,7 @@
 #include "model/device_identity.h"
 #include "sim/hipnuc_simulator.h"
 #include "sim/motion_model.h"
+#include "ui/discovery/find_devices_dialog.h"
 #include "ui/station/station_view.h"
 #include "workspace/preferences.h"
 #include "workspace/window_settings.h"
@@ -161,9 +162,17 @@ int main(int argc, char *argv[])
         QCoreApplication::translate("main", "Start the live bridge (Tools > Live bridge) on ADDR:PORT, e.g. "
                                             "127.0.0.1:8765: the connected devices to Foxglove, Lichtblick and PlotJuggler."),
         QStringLiteral("ADDR:PORT"));
+    const QCommandLineOption findOption(
+        QStringLiteral("find-devices"),
+        QCoreApplication::translate("main", "Open Device > Find devices… at start (a first start without a device "
+                                            "to open does so anyway)."));
+    const QCommandLineOption findBenchOption(
+        QStringLiteral("find-devices-bench"),
+        QCoreApplication::translate("main", "Open Device > Find devices… on a simulated bench (six devices on four "
+                                            "ports and a virtualcan bus, two of them sharing a node ID) and sweep it."));
     parser.addOptions({langOption, simulateOption, firmwareOption, motionOption, portOption, baudOption, demoOption,
                        screenshotOption, afterOption, linkOption, dockOption, alignOption, stationOption, stationDemoOption,
-                       bridgeOption});
+                       bridgeOption, findOption, findBenchOption});
     parser.addPositionalArgument(QStringLiteral("MODEL"),
                                  QCoreApplication::translate("main", "Model to simulate with --simulate (default HI14)."),
                                  QStringLiteral("[MODEL]"));
@@ -266,6 +275,22 @@ int main(int argc, char *argv[])
         }
         if (!ok && !error.isEmpty())
             QMessageBox::warning(&window, QCoreApplication::translate("main", "ImuDesk"), error);
+    }
+    // Device > Find devices…: asked for, or the first thing a first start offers when nothing
+    // else was asked for (remembered: offered once).
+    {
+        QSettings store;
+        const bool nothingAsked = !simulate && !parser.isSet(portOption) && !parser.isSet(linkOption) && !station
+            && !parser.isSet(screenshotOption);
+        const bool firstStart = nothingAsked && !store.value(QStringLiteral("findDevices/offered")).toBool();
+        if (parser.isSet(findOption) || parser.isSet(findBenchOption) || firstStart) {
+            store.setValue(QStringLiteral("findDevices/offered"), true);
+            window.tools()->findDevicesAction()->trigger();
+            if (parser.isSet(findBenchOption))
+                if (auto *find = window.findChild<imudesk::ui::FindDevicesDialog *>())
+                    if (find->useSimulatedBench(true))
+                        find->start();
+        }
     }
     if (parser.isSet(dockOption)) {
         static const std::map<QString, QString> docks = {

@@ -247,6 +247,14 @@ void ModbusFamily::parseReplies()
     while (!m_rx.isEmpty()) {
         const Request *current = engine().current();
         if (!current) { // nothing asked: a late reply, another master, noise
+            // A scan between two probes: a whole reply still names an id that answered late.
+            if (m_scanning) {
+                const RtuAdu::Parsed p = RtuAdu::parseResponse(m_rx.left(kMaxAdu));
+                if (p.error == RtuAdu::Error::Incomplete)
+                    return;
+                if (p.ok() && (p.functionCode & ~kExceptionBit) == kReadHolding)
+                    noteLateAnswer(p.serverAddress);
+            }
             m_bytesSkipped += uint64_t(m_rx.size());
             m_rx.clear();
             return;
@@ -264,8 +272,11 @@ void ModbusFamily::parseReplies()
         if (p.error == RtuAdu::Error::Incomplete)
             return;
         if (!p.ok()) {
-            if (p.error == RtuAdu::Error::CrcMismatch)
+            if (p.error == RtuAdu::Error::CrcMismatch) {
                 ++m_crcErrors;
+                if (m_scanning && m_scanCurrentId > 0)
+                    ++m_scanDamaged[m_scanCurrentId];
+            }
             m_bytesSkipped += uint64_t(m_rx.size());
             m_rx.clear(); // the frame is damaged: the request times out and goes again
             return;
@@ -276,6 +287,8 @@ void ModbusFamily::parseReplies()
         const uint8_t expected = op.write ? kWriteSingle : kReadHolding;
         if (p.serverAddress != op.nodeId || (p.functionCode & ~kExceptionBit) != expected) {
             m_bytesSkipped += uint64_t(used); // another node's or another request's answer
+            if (p.serverAddress != op.nodeId && (p.functionCode & ~kExceptionBit) == kReadHolding)
+                noteLateAnswer(p.serverAddress);
             continue;
         }
         ++m_responses;
@@ -565,17 +578,42 @@ void ModbusFamily::scan(const ModbusScanOptions &options)
     m_scan.firstId = std::clamp(options.firstId, 1, 247);
     m_scan.lastId = std::clamp(options.lastId, m_scan.firstId, 247);
     m_scanRestoreBaud = engine().transport().baud();
-    m_scanBauds = options.bauds.isEmpty() ? QList<int>{m_scanRestoreBaud} : options.bauds;
-    m_scanBaudIndex = 0;
-    m_scanId = m_scan.firstId;
+    m_scanPlan = options.plan;
+    if (m_scanPlan.isEmpty()) {
+        const QList<int> bauds = options.bauds.isEmpty() ? QList<int>{m_scanRestoreBaud} : options.bauds;
+        for (int baud : bauds)
+            for (int id = m_scan.firstId; id <= m_scan.lastId; ++id)
+                m_scanPlan.append({baud, id, 0});
+    }
+    m_scanAt = 0;
+    m_scanRecheck.clear();
+    m_scanAsked.clear();
+    m_scanDamaged.clear();
+    m_scanHitBaud = 0;
+    m_scanCurrentId = -1;
     m_scanDone = 0;
-    m_scanTotal = int(m_scanBauds.size()) * (m_scan.lastId - m_scan.firstId + 1);
+    m_scanTotal = int(m_scanPlan.size());
     m_hits.clear();
     m_scanCancel = false;
     m_scanning = true;
     m_pollTimer.stop();
     Q_EMIT scanProgress(0, m_scanTotal);
     scanNext();
+}
+
+void ModbusFamily::noteLateAnswer(int nodeId)
+{
+    // A valid reply from another id than the one asked: that id answered after its probe's
+    // time (a slow device, a busy host). It is asked again, slowly, before the plan goes on.
+    if (!m_scanning || nodeId == m_scanCurrentId || !m_scanAsked.contains(nodeId))
+        return;
+    for (const auto &hit : std::as_const(m_hits))
+        if (hit.nodeId == nodeId)
+            return;
+    for (const auto &r : std::as_const(m_scanRecheck))
+        if (r.id == nodeId)
+            return;
+    m_scanRecheck.append({engine().transport().baud(), nodeId, -1});
 }
 
 void ModbusFamily::scanNext()
@@ -586,15 +624,24 @@ void ModbusFamily::scanNext()
         finishScan(true, true);
         return;
     }
-    if (m_scanId > m_scan.lastId) {
-        ++m_scanBaudIndex;
-        m_scanId = m_scan.firstId;
+    ModbusScanOptions::Probe next;
+    bool recheck = false;
+    if (!m_scanRecheck.isEmpty()) {
+        next = m_scanRecheck.takeFirst();
+        recheck = true;
+    } else {
+        while (m_scanAt < m_scanPlan.size() && m_scan.oneRate && m_scanHitBaud > 0
+               && m_scanPlan.at(m_scanAt).baud != m_scanHitBaud) {
+            ++m_scanAt; // the bus's rate is known: the others are skipped
+            Q_EMIT scanProgress(++m_scanDone, m_scanTotal);
+        }
+        if (m_scanAt >= m_scanPlan.size()) {
+            finishScan(false, true);
+            return;
+        }
+        next = m_scanPlan.at(m_scanAt++);
     }
-    if (m_scanBaudIndex >= m_scanBauds.size()) {
-        finishScan(false, true);
-        return;
-    }
-    const int baud = m_scanBauds.at(m_scanBaudIndex);
+    const int baud = next.baud > 0 ? next.baud : engine().transport().baud();
     if (baud != engine().transport().baud()) {
         if (!engine().transport().setBaud(baud)) {
             engine().reportError(ModbusSession::tr("The serial port %1 cannot run at %2 baud.")
@@ -604,18 +651,24 @@ void ModbusFamily::scanNext()
             return;
         }
         m_rx.clear();
+        m_scanAsked.clear();
     }
-    const int id = m_scanId++;
+    const int id = next.id;
+    m_scanCurrentId = id;
+    if (!m_scanAsked.contains(id))
+        m_scanAsked.append(id);
     Op probe;
     probe.nodeId = id;
     probe.start = reg::kHecAngles; // HiPNUC: UART1_BAUD, MD_ID; HEC495: pitch
     probe.count = 2;
-    probe.timeoutMs = probeTimeoutMs(baud);
-    auto advance = [this] {
-        Q_EMIT scanProgress(++m_scanDone, m_scanTotal);
+    // A recheck waits as long as a careful scan would, and twice that for a slow device.
+    probe.timeoutMs = recheck ? 2 * probeTimeoutMs(baud) : next.timeoutMs > 0 ? next.timeoutMs : probeTimeoutMs(baud);
+    auto advance = [this, recheck] {
+        if (!recheck)
+            Q_EMIT scanProgress(++m_scanDone, m_scanTotal);
         QMetaObject::invokeMethod(this, &ModbusFamily::scanNext, Qt::QueuedConnection);
     };
-    engine().submit(makeRequest(probe, 1, [this, id, baud, advance](const RequestResult &r) {
+    engine().submit(makeRequest(probe, 1, [this, id, baud, advance, recheck](const RequestResult &r) {
         if (!m_scanning)
             return;
         const Reply reply = replyOf(r);
@@ -623,10 +676,15 @@ void ModbusFamily::scanNext()
             advance();
             return;
         }
+        if (m_scanHitBaud == 0)
+            m_scanHitBaud = baud;
         ModbusScanHit hit;
         hit.nodeId = id;
         hit.baud = baud;
+        hit.late = recheck;
+        hit.damaged = m_scanDamaged.count(id) ? m_scanDamaged.at(id) : 0;
         hit.exception = reply.exception != 0;
+        hit.probeValues = reply.values;
         if (m_options.kind == DeviceKind::Hec495 || reply.exception) {
             hit.summary = reply.exception
                 ? ModbusSession::tr("answers with Modbus exception %1").arg(reply.exception)

@@ -21,6 +21,8 @@
 #include <QList>
 #include <QTimer>
 
+#include <map>
+
 #include <atomic>
 #include <functional>
 #include <string>
@@ -102,6 +104,7 @@ private:
     void onPollResult(const RequestResult &r);
     void followBaud(int baud);
     void scanNext();
+    void noteLateAnswer(int nodeId);
     void finishScan(bool cancelled, bool linkStaysOpen);
     int probeTimeoutMs(int baud) const;
 
@@ -132,9 +135,13 @@ private:
     bool m_scanning = false;
     std::atomic<bool> m_scanCancel{false};
     ModbusScanOptions m_scan;
-    QList<int> m_scanBauds;
-    int m_scanBaudIndex = 0;
-    int m_scanId = 0;
+    QList<ModbusScanOptions::Probe> m_scanPlan;
+    qsizetype m_scanAt = 0;
+    QList<ModbusScanOptions::Probe> m_scanRecheck; // ids whose answer came late: asked again, slowly
+    QList<int> m_scanAsked;                         // ids probed at the current baud (a late answer's)
+    int m_scanHitBaud = 0;                          // oneRate: the baud a device answered at
+    int m_scanCurrentId = -1;
+    std::map<int, int> m_scanDamaged;               // id -> damaged replies while it was probed
     int m_scanDone = 0;
     int m_scanTotal = 0;
     int m_scanRestoreBaud = 0;

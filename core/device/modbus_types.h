@@ -33,6 +33,16 @@ struct ModbusScanOptions {
     int lastId = 247;
     QList<int> bauds;     // empty: the session's baud only
     int timeoutMs = 0;    // per probe; 0: from the baud (a few frame times)
+    // Instead of every id at every baud: these probes in this order (a sweep asks the likely
+    // addresses first). A probe's timeoutMs 0: from the baud.
+    struct Probe {
+        int baud = 0;
+        int id = 0;
+        int timeoutMs = 0;
+    };
+    QList<Probe> plan;
+    // A bus runs at one rate: once a device answered at a baud, probes at other bauds are skipped.
+    bool oneRate = false;
 };
 
 struct ModbusScanHit {
@@ -40,6 +50,9 @@ struct ModbusScanHit {
     int baud = 0;
     bool exception = false;             // answered with a Modbus exception (present, but refused the probe)
     bool identified = false;            // HiPNUC identity block read
+    bool late = false;                  // its answer came after its probe's time, and a second probe confirmed it
+    QList<quint16> probeValues;         // the probe's two registers (HiPNUC: UART1_BAUD code and MD_ID; HEC495: pitch)
+    int damaged = 0;                    // replies to this id whose CRC failed (two devices answering at once garble each other)
     model::DeviceIdentity identity;
     QString summary;                    // "HI14R3N-485-000 V1.71 SN 0123..." or the HEC495 angles
 };

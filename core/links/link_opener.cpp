@@ -32,6 +32,7 @@ public:
         connect(static_cast<SerialFamilyScan *>(family()), &SerialFamilyScan::found, context, std::move(f));
     }
     void start(const QString &port, int baud) { openLink(port, baud); }
+    quint64 bytesHeard() const { return static_cast<SerialFamilyScan *>(family())->bytesHeard(); }
 };
 
 } // namespace
@@ -236,6 +237,7 @@ void LinkOpener::open(LinkRequest request)
 {
     cancel();
     m_opened = {};
+    m_bytesHeard = 0;
     m_request = std::move(request);
     m_running = true;
     if (m_request.kind != LinkRequest::Kind::Serial || !m_request.family.isEmpty()) {
@@ -260,6 +262,7 @@ void LinkOpener::open(LinkRequest request)
             Q_EMIT detecting(detail);
         else if (s == SessionState::Failed && m_running) {
             m_running = false;
+            m_bytesHeard = static_cast<ScanSession *>(m_probe.get())->bytesHeard();
             m_probe.release()->deleteLater(); // later: this runs in its signal
             Q_EMIT failed(detail);
         }

@@ -91,6 +91,8 @@ public:
     static Opened openNow(LinkRequest &request, QString *error);
     // The request that was opened (for a serial Auto request: family and baud as found).
     const LinkRequest &request() const { return m_request; }
+    // After failed(): the bytes a serial detection heard without finding a family (0: silence).
+    quint64 bytesHeard() const { return m_bytesHeard; }
 
 Q_SIGNALS:
     // Detection progress ("trying 115200 baud").
@@ -107,6 +109,7 @@ private:
     std::unique_ptr<Session> m_probe;
     Opened m_opened;
     bool m_running = false;
+    quint64 m_bytesHeard = 0;
 };
 
 // Starts a simulated serial device and points r at it (address, keepAlive; never waited for

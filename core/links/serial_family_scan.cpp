@@ -116,6 +116,7 @@ void SerialFamilyScan::restartStream()
 void SerialFamilyScan::feed(const QByteArray &bytes, int64_t)
 {
     m_bytesIn += quint64(bytes.size());
+    m_heard += quint64(bytes.size());
     if (m_seen || m_held.size() >= kMaxHeld)
         return;
     const qsizetype before = m_held.size();

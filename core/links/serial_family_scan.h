@@ -15,6 +15,7 @@
 #include <QByteArray>
 #include <QCoreApplication>
 
+#include <atomic>
 #include <memory>
 #include <vector>
 
@@ -44,6 +45,9 @@ public:
     void lineIdle(int64_t) override {}
     void fillCounters(SessionStats &s) const override { s.bytesIn = m_bytesIn; }
     void unanswered(const Request &r, RequestResult &result) override;
+    // Bytes that arrived at any rate since the port opened (a port that sends garbage, not
+    // silence, when no family was found). Safe from any thread.
+    quint64 bytesHeard() const { return m_heard.load(); }
 
 Q_SIGNALS:
     // A family (its SerialFamilyKind id) answers at this rate (address: the device's bus
@@ -64,6 +68,7 @@ private:
     const SerialFamilyKind *m_seen = nullptr;
     int m_seenAddress = -1;
     quint64 m_bytesIn = 0;
+    std::atomic<quint64> m_heard{0};
 };
 
 } // namespace imudesk::device

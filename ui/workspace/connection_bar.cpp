@@ -63,8 +63,15 @@ ConnectionBar::ConnectionBar(QWidget *parent) : QWidget(parent)
     m_connectButton->setObjectName(QStringLiteral("connectButton"));
     m_connectButton->setDefault(true);
 
+    m_findButton = new QToolButton(this);
+    m_findButton->setObjectName(QStringLiteral("findDevicesButton"));
+    m_findButton->setIcon(style()->standardIcon(QStyle::SP_FileDialogContentsView));
+    m_findButton->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
+
     auto *layout = new QHBoxLayout(this);
     layout->setContentsMargins(6, 4, 6, 4);
+    layout->addWidget(m_findButton);
+    layout->addSpacing(6);
     layout->addWidget(m_portLabel);
     layout->addWidget(m_portCombo, 1);
     layout->addWidget(m_targetLabel, 1);
@@ -76,6 +83,7 @@ ConnectionBar::ConnectionBar(QWidget *parent) : QWidget(parent)
     layout->addWidget(m_connectButton);
 
     connect(m_refreshButton, &QToolButton::clicked, this, &ConnectionBar::refreshPorts);
+    connect(m_findButton, &QToolButton::clicked, this, &ConnectionBar::findDevicesRequested);
     connect(m_connectButton, &QPushButton::clicked, this, &ConnectionBar::onButtonClicked);
     m_scanTimer.setInterval(kPortScanIntervalMs);
     connect(&m_scanTimer, &QTimer::timeout, this, &ConnectionBar::refreshPorts);
@@ -227,6 +235,8 @@ void ConnectionBar::retranslateUi()
 {
     m_portLabel->setText(tr("&Port:"));
     m_portCombo->setToolTip(tr("Serial port of the IMU, or a simulated device that runs inside ImuDesk"));
+    m_findButton->setText(tr("Find devices…"));
+    m_findButton->setToolTip(tr("Sweep every serial port and CAN bus for devices (Ctrl+Shift+F)"));
     m_refreshButton->setText(tr("Refresh"));
     m_refreshButton->setToolTip(tr("Scan for serial ports again (the list also refreshes every 2 s)"));
     m_baudLabel->setText(tr("&Baud rate:"));

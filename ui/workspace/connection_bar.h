@@ -49,6 +49,8 @@ public Q_SLOTS:
 
 Q_SIGNALS:
     void connectRequested();
+    // "Find devices…": one sweep of every port and bus (Device > Find devices…).
+    void findDevicesRequested();
     void disconnectRequested();
 
 protected:
@@ -76,6 +78,7 @@ private:
     QLabel *m_targetLabel = nullptr;
     QString m_target;
     QToolButton *m_refreshButton = nullptr;
+    QToolButton *m_findButton = nullptr;
     QLabel *m_baudLabel = nullptr;
     QComboBox *m_baudCombo = nullptr;
     QPushButton *m_connectButton = nullptr;

@@ -93,6 +93,10 @@ MainWindow::MainWindow(const FamilyUiRegistry &families, const WindowSettings &s
 
     connect(m_connectionBar, &ConnectionBar::connectRequested, this, &MainWindow::connectSelected);
     connect(m_connectionBar, &ConnectionBar::disconnectRequested, this, &MainWindow::disconnectDevice);
+    connect(m_connectionBar, &ConnectionBar::findDevicesRequested, this, [this] {
+        if (m_tools)
+            m_tools->findDevicesAction()->trigger();
+    });
     connect(m_tabs, &QTabWidget::currentChanged, this, &MainWindow::onCurrentChanged);
     connect(m_tabs, &QTabWidget::tabCloseRequested, this, &MainWindow::closeWorkspace);
 

@@ -5,6 +5,7 @@
 #include "calibration/calibration_run_saver.h"
 #include "charts/bandwidth_calculator.h"
 #include "bus/bus_connect_dialog.h"
+#include "ui/discovery/find_devices_dialog.h"
 #include "configuration/config_panel.h"
 #include "workspace/device_workspace.h"
 #include "recording/export_dialog.h"
@@ -52,6 +53,9 @@ ToolActions::ToolActions(ToolHost *host, QObject *parent) : QObject(parent), m_h
     connect(m_export, &QAction::triggered, this, &ToolActions::exportCapture);
     m_analyze = make("analyzeCaptureAction");
     connect(m_analyze, &QAction::triggered, this, &ToolActions::analyzeCapture);
+    m_findDevices = make("findDevicesAction");
+    m_findDevices->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_F));
+    connect(m_findDevices, &QAction::triggered, this, &ToolActions::findDevices);
     m_modbus = make("connectModbusAction");
     m_modbus->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_M));
     connect(m_modbus, &QAction::triggered, this, &ToolActions::connectModbus);
@@ -107,7 +111,7 @@ void ToolActions::addToMenus(QMenu *fileMenu, QMenu *deviceMenu, QMenu *calibrat
     fileMenu->insertActions(firstFileEntry, {m_openCapture, m_importCsv, m_export});
     fileMenu->insertSeparator(firstFileEntry);
     deviceMenu->addSeparator();
-    deviceMenu->addActions({m_modbus, m_can, m_scanBus});
+    deviceMenu->addActions({m_findDevices, m_modbus, m_can, m_scanBus});
     deviceMenu->addSeparator();
     deviceMenu->addActions({m_configuration, m_profiles, m_record, m_recordAll, m_firmware});
     m_calibrateMenu = calibrateMenu;
@@ -133,6 +137,9 @@ void ToolActions::retranslate()
     m_export->setStatusTip(tr("Write a capture as vendor CSV, tidy CSV or JSON Lines"));
     m_analyze->setText(tr("&Analyze capture…"));
     m_analyze->setStatusTip(tr("Statistics, output rate and jitter, lost frames and Allan deviation of a capture"));
+    m_findDevices->setText(tr("&Find devices…"));
+    m_findDevices->setStatusTip(tr("One sweep of every serial port and CAN bus: what is connected, at what rate and "
+                                   "address, and two devices at one address"));
     m_modbus->setText(tr("Connect over &Modbus RTU…"));
     m_modbus->setStatusTip(tr("Poll a module or compass on an RS-485 bus"));
     m_can->setText(tr("Connect over C&AN…"));
@@ -338,6 +345,24 @@ void ToolActions::connectModbus()
             m_host->showError(error);
     });
     dialog->open();
+}
+
+void ToolActions::findDevices()
+{
+    if (m_findDialog) {
+        m_findDialog->raise();
+        m_findDialog->activateWindow();
+        return;
+    }
+    auto *dialog = new FindDevicesDialog(
+        [this](device::LinkRequest request, QString *error) {
+            request.motion = m_host->simulatedMotion();
+            return m_host->openLink(std::move(request), error);
+        },
+        m_host->dialogParent());
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    m_findDialog = dialog;
+    dialog->show();
 }
 
 void ToolActions::connectCan()

@@ -10,6 +10,7 @@
 
 #include <QCoreApplication>
 #include <QObject>
+#include <QDialog>
 #include <QPointer>
 
 class QAction;
@@ -39,6 +40,7 @@ public:
     QAction *modbusAction() const { return m_modbus; }
     QAction *canAction() const { return m_can; }
     QAction *scanBusAction() const { return m_scanBus; }
+    QAction *findDevicesAction() const { return m_findDevices; }
     QAction *configurationAction() const { return m_configuration; }
     QAction *profilesAction() const { return m_profiles; }
     QAction *calculatorAction() const { return m_calculator; }
@@ -74,6 +76,8 @@ private:
     void analyzeCapture();
     void connectModbus();
     void connectCan();
+    // Device > Find devices…: the sweep's window (one at a time).
+    void findDevices();
     void showConfiguration();
     void openCalculator();
     // Device > Record: starts recording the current tab's device (the panel shows why when it cannot).
@@ -91,6 +95,8 @@ private:
     QAction *m_modbus = nullptr;
     QAction *m_can = nullptr;
     QAction *m_scanBus = nullptr;
+    QAction *m_findDevices = nullptr;
+    QPointer<QDialog> m_findDialog;
     QAction *m_configuration = nullptr;
     QAction *m_profiles = nullptr;
     QAction *m_recordAll = nullptr;
