@@ -6,9 +6,9 @@
     <message numerus="yes">
         <location filename="../core/discovery/can_survey.cpp" line="+242"/>
         <source>%1 (and %n more time(s) like it)</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%1 (and %n more time like it)</numerusform>
+            <numerusform>%1 (and %n more times like it)</numerusform>
         </translation>
     </message>
 </context>
@@ -124,33 +124,33 @@
     <message numerus="yes">
         <location filename="../ui/discovery/find_devices_dialog.cpp" line="+309"/>
         <source>Sweeping %n port(s)</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>Sweeping %n port</numerusform>
+            <numerusform>Sweeping %n ports</numerusform>
         </translation>
     </message>
     <message numerus="yes">
         <location line="+0"/>
         <source> and %n CAN bus(es)…</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform> and %n CAN bus…</numerusform>
+            <numerusform> and %n CAN buses…</numerusform>
         </translation>
     </message>
     <message numerus="yes">
         <location line="+118"/>
         <source>%n device(s) found</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%n device found</numerusform>
+            <numerusform>%n devices found</numerusform>
         </translation>
     </message>
     <message numerus="yes">
         <location line="+2"/>
         <source>, %n conflict(s): see below</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>, %n conflict: see below</numerusform>
+            <numerusform>, %n conflicts: see below</numerusform>
         </translation>
     </message>
 </context>

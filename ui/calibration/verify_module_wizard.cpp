@@ -395,6 +395,9 @@ void VerifyModuleWizard::initializePage(int id)
 
 void VerifyModuleWizard::analyse()
 {
+    // The bench's gravity the result was judged with is the next run's too (also when the
+    // samples came without Start, from a file or a test).
+    rememberGravity();
     m_report = verify::checkModule(m_input.samples(), options());
 }
 
