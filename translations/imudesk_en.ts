@@ -4,7 +4,7 @@
 <context>
     <name>CanSurvey</name>
     <message numerus="yes">
-        <location filename="../core/discovery/can_survey.cpp" line="+242"/>
+        <location filename="../core/discovery/can_survey.cpp" line="+249"/>
         <source>%1 (and %n more time(s) like it)</source>
         <translation>
             <numerusform>%1 (and %n more time like it)</numerusform>
@@ -138,7 +138,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location line="+118"/>
+        <location line="+133"/>
         <source>%n device(s) found</source>
         <translation>
             <numerusform>%n device found</numerusform>
@@ -147,10 +147,10 @@
     </message>
     <message numerus="yes">
         <location line="+2"/>
-        <source>, %n conflict(s): see below</source>
+        <source> %n conflict(s): see below, in red.</source>
         <translation>
-            <numerusform>, %n conflict: see below</numerusform>
-            <numerusform>, %n conflicts: see below</numerusform>
+            <numerusform> %n conflict: see below, in red.</numerusform>
+            <numerusform> %n conflicts: see below, in red.</numerusform>
         </translation>
     </message>
 </context>

@@ -904,7 +904,7 @@
         <translation>仅监听总线期间，节点 %1 发送了两次启动报文：有两台设备以该节点 ID 启动</translation>
     </message>
     <message>
-        <location line="+82"/>
+        <location line="+84"/>
         <source>SDO read of %1:%2</source>
         <translation>对 %1:%2 的 SDO 读取</translation>
     </message>
@@ -929,7 +929,7 @@
         <translation>节点 %2 对同一次%3给出 %1 个应答（%4）</translation>
     </message>
     <message>
-        <location line="+46"/>
+        <location line="+51"/>
         <source>HiPNUC module (J1939)</source>
         <translation>HiPNUC 模块（J1939）</translation>
     </message>
@@ -956,7 +956,9 @@
     <message numerus="yes">
         <location line="+8"/>
         <source>%1 (and %n more time(s) like it)</source>
-        <translation><numerusform>%1（另有 %n 次同类情况）</numerusform></translation>
+        <translation>
+            <numerusform>%1（另有 %n 次同类情况）</numerusform>
+        </translation>
     </message>
     <message>
         <location line="+2"/>
@@ -11112,12 +11114,16 @@ Link load = bytes per second × 10 bits / baud rate.</source>
     <message numerus="yes">
         <location line="+4"/>
         <source>Sweeping %n port(s)</source>
-        <translation><numerusform>正在扫描 %n 个端口</numerusform></translation>
+        <translation>
+            <numerusform>正在扫描 %n 个端口</numerusform>
+        </translation>
     </message>
     <message numerus="yes">
         <location line="+0"/>
         <source> and %n CAN bus(es)…</source>
-        <translation><numerusform>和 %n 条 CAN 总线…</numerusform></translation>
+        <translation>
+            <numerusform>和 %n 条 CAN 总线…</numerusform>
+        </translation>
     </message>
     <message>
         <location line="+28"/>
@@ -11175,7 +11181,12 @@ Link load = bytes per second × 10 bits / baud rate.</source>
         <translation>%1 已在单独的标签页中打开。</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+18"/>
+        <source>Two devices at this address: %1</source>
+        <translation>此地址上有两台设备：%1</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>Conflict on %1, %2 %3: %4 What to do: %5</source>
         <translation>%1 上的冲突，%2 %3：%4 处理方法：%5</translation>
     </message>
@@ -11232,17 +11243,19 @@ Link load = bytes per second × 10 bits / baud rate.</source>
     <message numerus="yes">
         <location line="+10"/>
         <source>%n device(s) found</source>
-        <translation><numerusform>找到 %n 台设备</numerusform></translation>
+        <translation>
+            <numerusform>找到 %n 台设备</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source> in %1 s.</source>
+        <translation>，用时 %1 s。</translation>
     </message>
     <message numerus="yes">
         <location line="+2"/>
-        <source>, %n conflict(s): see below</source>
-        <translation><numerusform>，%n 处冲突：见下方</numerusform></translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source> in %1 s.</source>
-        <translation>，用时 %1 s。</translation>
+        <source> %n conflict(s): see below, in red.</source>
+        <translation><numerusform> %n 处冲突：见下方红色部分。</numerusform></translation>
     </message>
     <message>
         <location line="+2"/>
@@ -16463,7 +16476,7 @@ Edit it (Edit…) and start again.</source>
         <translation>尚未记录：请按“开始”并将模块依次转到各个姿态。</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+27"/>
         <source>Verdict: %1</source>
         <translation>判定：%1</translation>
     </message>

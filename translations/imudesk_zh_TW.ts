@@ -904,7 +904,7 @@
         <translation>僅監聽匯流排期間，節點 %1 送出了兩次開機訊息：有兩台裝置以該節點 ID 啟動</translation>
     </message>
     <message>
-        <location line="+82"/>
+        <location line="+84"/>
         <source>SDO read of %1:%2</source>
         <translation>對 %1:%2 的 SDO 讀取</translation>
     </message>
@@ -929,7 +929,7 @@
         <translation>節點 %2 對同一次%3給出 %1 個回應（%4）</translation>
     </message>
     <message>
-        <location line="+46"/>
+        <location line="+51"/>
         <source>HiPNUC module (J1939)</source>
         <translation>HiPNUC 模組（J1939）</translation>
     </message>
@@ -956,7 +956,9 @@
     <message numerus="yes">
         <location line="+8"/>
         <source>%1 (and %n more time(s) like it)</source>
-        <translation><numerusform>%1（另有 %n 次同類情況）</numerusform></translation>
+        <translation>
+            <numerusform>%1（另有 %n 次同類情況）</numerusform>
+        </translation>
     </message>
     <message>
         <location line="+2"/>
@@ -11112,12 +11114,16 @@ Link load = bytes per second × 10 bits / baud rate.</source>
     <message numerus="yes">
         <location line="+4"/>
         <source>Sweeping %n port(s)</source>
-        <translation><numerusform>正在掃描 %n 個連接埠</numerusform></translation>
+        <translation>
+            <numerusform>正在掃描 %n 個連接埠</numerusform>
+        </translation>
     </message>
     <message numerus="yes">
         <location line="+0"/>
         <source> and %n CAN bus(es)…</source>
-        <translation><numerusform>和 %n 條 CAN 匯流排…</numerusform></translation>
+        <translation>
+            <numerusform>和 %n 條 CAN 匯流排…</numerusform>
+        </translation>
     </message>
     <message>
         <location line="+28"/>
@@ -11175,7 +11181,12 @@ Link load = bytes per second × 10 bits / baud rate.</source>
         <translation>%1 已在單獨的分頁中開啟。</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+18"/>
+        <source>Two devices at this address: %1</source>
+        <translation>此位址上有兩台裝置：%1</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>Conflict on %1, %2 %3: %4 What to do: %5</source>
         <translation>%1 上的衝突，%2 %3：%4 處理方法：%5</translation>
     </message>
@@ -11232,17 +11243,19 @@ Link load = bytes per second × 10 bits / baud rate.</source>
     <message numerus="yes">
         <location line="+10"/>
         <source>%n device(s) found</source>
-        <translation><numerusform>找到 %n 台裝置</numerusform></translation>
+        <translation>
+            <numerusform>找到 %n 台裝置</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source> in %1 s.</source>
+        <translation>，用時 %1 s。</translation>
     </message>
     <message numerus="yes">
         <location line="+2"/>
-        <source>, %n conflict(s): see below</source>
-        <translation><numerusform>，%n 處衝突：見下方</numerusform></translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source> in %1 s.</source>
-        <translation>，用時 %1 s。</translation>
+        <source> %n conflict(s): see below, in red.</source>
+        <translation><numerusform> %n 處衝突：見下方紅色部分。</numerusform></translation>
     </message>
     <message>
         <location line="+2"/>
@@ -16463,7 +16476,7 @@ Edit it (Edit…) and start again.</source>
         <translation>尚未記錄：請按「開始」並將模組依次轉到各個姿態。</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+27"/>
         <source>Verdict: %1</source>
         <translation>判定：%1</translation>
     </message>

@@ -111,7 +111,17 @@ private Q_SLOTS:
         }
         QVERIFY(conflict);
         QVERIFY(silent);
-        QVERIFY2(m_dialog->statusText().contains(QLatin1String("conflict")), qPrintable(m_dialog->statusText()));
+        QVERIFY2(m_dialog->statusText().contains(QLatin1String("conflict")) && m_dialog->statusText().contains(QLatin1String("see below")),
+                 qPrintable(m_dialog->statusText()));
+        // Node 5's row in red as well, the evidence in its tooltip.
+        const QTableWidget *t = m_dialog->table();
+        bool redRow = false;
+        for (int r = 0; r < t->rowCount(); ++r)
+            if (t->item(r, FindDevicesDialog::ColAddress)->text() == QLatin1String("node 5")) {
+                redRow = t->item(r, FindDevicesDialog::ColPort)->foreground().color() == QColor(0xB0, 0x00, 0x20)
+                    && t->item(r, FindDevicesDialog::ColPort)->toolTip().contains(QLatin1String("answers from node 5"));
+            }
+        QVERIFY(redRow);
     }
 
     void connectOpensTheDeviceAsFound()

@@ -392,6 +392,21 @@ bool FindDevicesDialog::connectRow(int row)
 void FindDevicesDialog::showFindings()
 {
     const discovery::SweepResult &r = m_sweep.result();
+    // The rows of a conflict's address in red too, its evidence in their tooltips.
+    const QColor red(0xB0, 0x00, 0x20);
+    for (int row = 0; row < m_found.size() && row < m_table->rowCount(); ++row) {
+        const FoundDevice &d = m_found.at(row);
+        for (const auto &c : r.conflicts) {
+            const int at = d.link == FoundDevice::Link::Can ? d.node : d.address;
+            if (c.port != d.port || c.address != at)
+                continue;
+            for (int col = 0; col < ColConnect; ++col)
+                if (QTableWidgetItem *item = m_table->item(row, col)) {
+                    item->setForeground(red);
+                    item->setToolTip(tr("Two devices at this address: %1").arg(c.evidence));
+                }
+        }
+    }
     for (const auto &c : r.conflicts) {
         auto *item = new QListWidgetItem(tr("Conflict on %1, %2 %3: %4 What to do: %5")
                                              .arg(c.port, c.link == QLatin1String("can") ? tr("node") : tr("address"))
@@ -424,10 +439,9 @@ void FindDevicesDialog::onFinished()
     setRunning(false);
     showFindings();
     const discovery::SweepResult &r = m_sweep.result();
-    QString text = tr("%n device(s) found", nullptr, int(r.devices.size()));
+    QString text = tr("%n device(s) found", nullptr, int(r.devices.size())) + tr(" in %1 s.").arg(r.seconds, 0, 'f', 1);
     if (!r.conflicts.isEmpty())
-        text += tr(", %n conflict(s): see below", nullptr, int(r.conflicts.size()));
-    text += tr(" in %1 s.").arg(r.seconds, 0, 'f', 1);
+        text += tr(" %n conflict(s): see below, in red.", nullptr, int(r.conflicts.size()));
     if (r.cancelled)
         text += tr(" Cancelled: what was found so far is listed.");
     m_status->setText(text);
