@@ -122,7 +122,15 @@
 <context>
     <name>imudesk::ui::FindDevicesDialog</name>
     <message numerus="yes">
-        <location filename="../ui/discovery/find_devices_dialog.cpp" line="+309"/>
+        <location filename="../ui/discovery/find_devices_dialog.cpp" line="+141"/>
+        <source>%n device(s) opened, each in a tab of its own.</source>
+        <translation>
+            <numerusform>%n device opened, in a tab of its own.</numerusform>
+            <numerusform>%n devices opened, each in a tab of its own.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+176"/>
         <source>Sweeping %n port(s)</source>
         <translation>
             <numerusform>Sweeping %n port</numerusform>

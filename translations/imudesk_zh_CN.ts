@@ -10545,7 +10545,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>新连接</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+4"/>
         <source>%1 on %2</source>
         <translation>%2 上的 %1</translation>
     </message>
@@ -10925,8 +10925,13 @@ Link load = bytes per second × 10 bits / baud rate.</source>
 </context>
 <context>
     <name>imudesk::ui::FindDevicesDialog</name>
+    <message numerus="yes">
+        <location filename="../ui/discovery/find_devices_dialog.cpp" line="+141"/>
+        <source>%n device(s) opened, each in a tab of its own.</source>
+        <translation><numerusform>已打开 %n 台设备，每台在单独的标签页中。</numerusform></translation>
+    </message>
     <message>
-        <location filename="../ui/discovery/find_devices_dialog.cpp" line="+157"/>
+        <location line="+24"/>
         <source>Find devices</source>
         <translation>查找设备</translation>
     </message>
@@ -11255,7 +11260,9 @@ Link load = bytes per second × 10 bits / baud rate.</source>
     <message numerus="yes">
         <location line="+2"/>
         <source> %n conflict(s): see below, in red.</source>
-        <translation><numerusform> %n 处冲突：见下方红色部分。</numerusform></translation>
+        <translation>
+            <numerusform> %n 处冲突：见下方红色部分。</numerusform>
+        </translation>
     </message>
     <message>
         <location line="+2"/>

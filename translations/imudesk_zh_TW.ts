@@ -10545,7 +10545,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>新連線</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+4"/>
         <source>%1 on %2</source>
         <translation>%2 上的 %1</translation>
     </message>
@@ -10925,8 +10925,13 @@ Link load = bytes per second × 10 bits / baud rate.</source>
 </context>
 <context>
     <name>imudesk::ui::FindDevicesDialog</name>
+    <message numerus="yes">
+        <location filename="../ui/discovery/find_devices_dialog.cpp" line="+141"/>
+        <source>%n device(s) opened, each in a tab of its own.</source>
+        <translation><numerusform>已開啟 %n 台裝置，每台在單獨的分頁中。</numerusform></translation>
+    </message>
     <message>
-        <location filename="../ui/discovery/find_devices_dialog.cpp" line="+157"/>
+        <location line="+24"/>
         <source>Find devices</source>
         <translation>尋找裝置</translation>
     </message>
@@ -11255,7 +11260,9 @@ Link load = bytes per second × 10 bits / baud rate.</source>
     <message numerus="yes">
         <location line="+2"/>
         <source> %n conflict(s): see below, in red.</source>
-        <translation><numerusform> %n 處衝突：見下方紅色部分。</numerusform></translation>
+        <translation>
+            <numerusform> %n 處衝突：見下方紅色部分。</numerusform>
+        </translation>
     </message>
     <message>
         <location line="+2"/>

@@ -144,6 +144,11 @@ private Q_SLOTS:
         QCOMPARE(m_opened.back().family, QStringLiteral("hec495"));
         QCOMPARE(m_opened.back().baud, 4800);
         QCOMPARE(m_opened.back().deviceAddress, 7);
+        // Connect all opens the rest, each once.
+        m_opened.clear();
+        m_dialog->connectAllButton()->click();
+        QCOMPARE(m_opened.size(), m_dialog->table()->rowCount() - 2);
+        QVERIFY(!m_dialog->connectAllButton()->isEnabled());
     }
 
     void fitsAt1366x768_data()

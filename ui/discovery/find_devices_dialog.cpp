@@ -128,9 +128,17 @@ FindDevicesDialog::FindDevicesDialog(ConnectFn connect, QWidget *parent) : QDial
     QObject::connect(m_cancel, &QPushButton::clicked, this, &FindDevicesDialog::cancel);
     QObject::connect(m_close, &QPushButton::clicked, this, &QDialog::reject);
     QObject::connect(m_connectAll, &QPushButton::clicked, this, [this] {
-        for (int row = 0; row < m_table->rowCount(); ++row)
+        int opened = 0;
+        for (int row = 0; row < m_table->rowCount(); ++row) {
+            auto *b = qobject_cast<QPushButton *>(m_table->cellWidget(row, ColConnect));
+            if (b && !b->isEnabled())
+                continue; // opened already
             if (!connectRow(row))
-                break;
+                return; // the status says why
+            ++opened;
+        }
+        m_connectAll->setEnabled(false);
+        m_status->setText(tr("%n device(s) opened, each in a tab of its own.", nullptr, opened));
     });
     QObject::connect(m_table, &QTableWidget::cellDoubleClicked, this, [this](int row, int) { connectRow(row); });
     QObject::connect(m_simulated, &QCheckBox::toggled, this, [this](bool on) {

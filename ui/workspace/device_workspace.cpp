@@ -363,8 +363,10 @@ QString DeviceWorkspace::title() const
 {
     if (m_target.isEmpty())
         return tr("New connection");
-    if (m_identity && !m_identity->productName.empty())
-        return tr("%1 on %2").arg(QString::fromStdString(m_identity->productName), m_target);
+    // A target that names the product already ("HEC495 on /dev/ttyUSB0") is not named twice.
+    const QString product = m_identity ? QString::fromStdString(m_identity->productName) : QString();
+    if (!product.isEmpty() && !m_target.startsWith(product))
+        return tr("%1 on %2").arg(product, m_target);
     return m_target;
 }
 
