@@ -44,15 +44,54 @@ int fastTimeoutMs(int baud)
 } // namespace
 
 // ---------------------------------------------------------------------------------------
+// What a probe of one port or bus reports to the sweep, and what it found.
+struct SweepSink {
+    std::function<void(const QString &)> progress;
+    std::function<void(const FoundDevice &)> found;
+    std::function<void(const Conflict &)> conflict;
+    std::function<void()> done;
+};
+
+class SweepProbe : public QObject {
+public:
+    explicit SweepProbe(SweepSink sink) : m_sink(std::move(sink)) {}
+    bool finished() const { return m_finished; }
+    QList<FoundDevice> devices;
+    QList<Conflict> conflicts;
+    QList<PortNote> notes;
+
+protected:
+    void addDevice(const FoundDevice &d)
+    {
+        devices.append(d);
+        m_sink.found(d);
+    }
+    void addConflict(const Conflict &c)
+    {
+        conflicts.append(c);
+        m_sink.conflict(c);
+    }
+    void progress(const QString &detail) { m_sink.progress(detail); }
+    // The probe ended by itself: the sweep hears of it.
+    void end()
+    {
+        if (m_finished)
+            return;
+        m_finished = true;
+        m_sink.done();
+    }
+
+    SweepSink m_sink;
+    bool m_finished = false;
+};
+
+// ---------------------------------------------------------------------------------------
 // One serial port: the serial families, then Modbus RTU.
 
-class PortSweep : public QObject {
+class PortSweep : public SweepProbe {
 public:
-    PortSweep(QString port, const SweepOptions &options, std::function<void(const QString &)> progress,
-              std::function<void(const FoundDevice &)> found, std::function<void(const Conflict &)> conflict,
-              std::function<void()> done)
-        : m_port(std::move(port)), m_options(options), m_progress(std::move(progress)), m_found(std::move(found)),
-          m_conflict(std::move(conflict)), m_done(std::move(done))
+    PortSweep(QString port, const SweepOptions &options, SweepSink sink)
+        : SweepProbe(std::move(sink)), m_port(std::move(port)), m_options(options)
     {
         m_identifyTimer.setSingleShot(true);
         connect(&m_identifyTimer, &QTimer::timeout, this, [this] { finishSerial(); });
@@ -61,10 +100,6 @@ public:
 
     const QString &port() const { return m_port; }
     double fraction() const { return m_finished ? 1.0 : m_fraction; }
-    bool finished() const { return m_finished; }
-    QList<FoundDevice> devices;
-    QList<Conflict> conflicts;
-    QList<PortNote> notes;
 
     void start()
     {
@@ -72,7 +107,7 @@ public:
             ++m_ratesTried;
             const double rates = double(std::max<size_t>(1, device::serialDetectionBauds().size()));
             m_fraction = std::min(0.3, 0.3 * m_ratesTried / rates);
-            m_progress(detail);
+            progress(detail);
         });
         connect(&m_opener, &device::LinkOpener::ready, this, [this] { serialFound(); });
         connect(&m_opener, &device::LinkOpener::failed, this, [this](const QString &why) { serialFailed(why); });
@@ -82,7 +117,7 @@ public:
         }
         device::LinkRequest r = device::LinkRequest::serial(m_port);
         r.autoReconnect = false;
-        m_progress(BenchSweep::tr("looking for a serial device"));
+        progress(BenchSweep::tr("looking for a serial device"));
         m_opener.open(r);
     }
 
@@ -132,7 +167,7 @@ private:
             return;
         }
         if (const auto *kind = device::serialFamily(m_family))
-            m_progress(BenchSweep::tr("%1 at %2 baud: reading its identity").arg(kind->displayName()).arg(m_baud));
+            progress(BenchSweep::tr("%1 at %2 baud: reading its identity").arg(kind->displayName()).arg(m_baud));
         connect(m_link.link.get(), &device::DeviceLink::identityChanged, this, [this](const model::DeviceIdentity &id) {
             m_identity = id;
             if (id.usable())
@@ -167,8 +202,7 @@ private:
             m_link.link->close();
             m_link = {};
         }
-        devices.append(d);
-        m_found(d);
+        addDevice(d);
         end();
     }
 
@@ -221,7 +255,7 @@ private:
                 [this, scan](device::SessionState s, const QString &detail) {
                     if (s == device::SessionState::Connected && !m_scanStarted) {
                         m_scanStarted = true;
-                        m_progress(BenchSweep::tr("asking it as a Modbus RTU line"));
+                        progress(BenchSweep::tr("asking it as a Modbus RTU line"));
                         m_modbus->scan(scan);
                     } else if (s == device::SessionState::Failed && !m_scanStarted) {
                         notes.append({m_port, PortNote::Kind::Failed, detail});
@@ -267,12 +301,10 @@ private:
                                  .arg(hit.nodeId);
                 c.advice = BenchSweep::tr("Connect the devices one at a time and give each its own Modbus id (Settings, MD_ID; "
                               "save and reset), then sweep again.");
-                conflicts.append(c);
-                m_conflict(c);
+                addConflict(c);
             }
-            m_progress(BenchSweep::tr("Modbus id %1 answers at %2 baud").arg(hit.nodeId).arg(hit.baud));
-            devices.append(d);
-            m_found(d);
+            progress(BenchSweep::tr("Modbus id %1 answers at %2 baud").arg(hit.nodeId).arg(hit.baud));
+            addDevice(d);
         });
         connect(m_modbus.get(), &device::ModbusSession::scanFinished, this,
                 [this](const QList<device::ModbusScanHit> &, bool) {
@@ -311,20 +343,8 @@ private:
                               .arg(m_options.modbus ? BenchSweep::tr(" (serial families and Modbus ids 1-247)") : QString())});
     }
 
-    void end()
-    {
-        if (m_finished)
-            return;
-        m_finished = true;
-        m_done();
-    }
-
     QString m_port;
     SweepOptions m_options;
-    std::function<void(const QString &)> m_progress;
-    std::function<void(const FoundDevice &)> m_found;
-    std::function<void(const Conflict &)> m_conflict;
-    std::function<void()> m_done;
     device::LinkOpener m_opener;
     device::OpenedLink m_link;
     std::unique_ptr<device::ModbusSession> m_modbus;
@@ -339,19 +359,15 @@ private:
     int m_modbusTotal = 0;
     bool m_scanStarted = false;
     double m_fraction = 0;
-    bool m_finished = false;
 };
 
 // ---------------------------------------------------------------------------------------
 // One CAN bus: listen at each bit rate, then ask at the one that showed clean traffic.
 
-class CanSweep : public QObject {
+class CanSweep : public SweepProbe {
 public:
-    CanSweep(QString bus, const SweepOptions &options, std::function<void(const QString &)> progress,
-             std::function<void(const FoundDevice &)> found, std::function<void(const Conflict &)> conflict,
-             std::function<void()> done)
-        : m_bus(std::move(bus)), m_options(options), m_progress(std::move(progress)), m_found(std::move(found)),
-          m_conflict(std::move(conflict)), m_done(std::move(done)), m_survey(m_bus)
+    CanSweep(QString bus, const SweepOptions &options, SweepSink sink)
+        : SweepProbe(std::move(sink)), m_bus(std::move(bus)), m_options(options), m_survey(m_bus)
     {
         m_timer.setSingleShot(true);
         const qsizetype colon = m_bus.indexOf(QLatin1Char(':'));
@@ -373,10 +389,6 @@ public:
             return 0.6 + 0.4 * double(m_question) / std::max<size_t>(1, m_questions.size());
         return 0.6 * double(m_rateIndex) / std::max<qsizetype>(1, m_rates.size());
     }
-    bool finished() const { return m_finished; }
-    QList<FoundDevice> devices;
-    QList<Conflict> conflicts;
-    QList<PortNote> notes;
 
     void start() { listenAt(0); }
 
@@ -463,7 +475,7 @@ private:
             return;
         }
         m_rate = m_rates.at(i);
-        m_progress(BenchSweep::tr("listening at %1").arg(rateText(m_rate)));
+        progress(BenchSweep::tr("listening at %1").arg(rateText(m_rate)));
         m_survey = CanSurvey(m_bus);
         openSession(m_rate);
         m_timer.disconnect();
@@ -498,7 +510,7 @@ private:
         m_asking = true;
         m_questions = m_survey.questions();
         m_question = 0;
-        m_progress(BenchSweep::tr("asking the nodes at %1").arg(rateText(m_rate)));
+        progress(BenchSweep::tr("asking the nodes at %1").arg(rateText(m_rate)));
         askNext();
     }
 
@@ -530,12 +542,13 @@ private:
             return;
         m_collected = true;
         const QString why = m_rate > 0 ? QString() : BenchSweep::tr("Qt's virtualcan interface has no bit rate");
-        const qsizetype before = devices.size(), conflictsBefore = conflicts.size();
-        m_survey.collect(m_rate, why, &devices, &conflicts);
-        for (qsizetype k = conflictsBefore; k < conflicts.size(); ++k)
-            m_conflict(conflicts.at(k));
-        for (qsizetype k = before; k < devices.size(); ++k)
-            m_found(devices.at(k));
+        QList<FoundDevice> found;
+        QList<Conflict> shown;
+        m_survey.collect(m_rate, why, &found, &shown);
+        for (const Conflict &c : shown)
+            addConflict(c);
+        for (const FoundDevice &d : found)
+            addDevice(d);
         if (devices.isEmpty())
             notes.append({m_bus, PortNote::Kind::Silent,
                           m_survey.framesHeard() > 0
@@ -547,20 +560,8 @@ private:
                                     .arg(ratesText(), rateText(m_rate))});
     }
 
-    void end()
-    {
-        if (m_finished)
-            return;
-        m_finished = true;
-        m_done();
-    }
-
     QString m_bus, m_plugin, m_interface;
     SweepOptions m_options;
-    std::function<void(const QString &)> m_progress;
-    std::function<void(const FoundDevice &)> m_found;
-    std::function<void(const Conflict &)> m_conflict;
-    std::function<void()> m_done;
     CanSurvey m_survey;
     std::unique_ptr<device::CanSession> m_session;
     QTimer m_timer;
@@ -574,7 +575,6 @@ private:
     bool m_collected = false;
     std::vector<CanSurvey::Question> m_questions;
     size_t m_question = 0;
-    bool m_finished = false;
 };
 
 // ---------------------------------------------------------------------------------------
@@ -668,6 +668,13 @@ QList<std::pair<int, int>> BenchSweep::modbusPlan(int *likelyCount)
     return plan;
 }
 
+SweepSink BenchSweep::sinkFor(const QString &port)
+{
+    return SweepSink{[this, port](const QString &d) { publishProgress(port, d); },
+                     [this](const FoundDevice &d) { Q_EMIT deviceFound(d); },
+                     [this](const Conflict &c) { Q_EMIT conflictFound(c); }, [this] { probeDone(); }};
+}
+
 void BenchSweep::start(const SweepOptions &options)
 {
     cancel();
@@ -678,17 +685,11 @@ void BenchSweep::start(const SweepOptions &options)
     m_running = true;
     m_clock.start();
     for (const QString &port : serialPortsOf(options)) {
-        auto p = std::make_unique<PortSweep>(
-            port, options, [this, port](const QString &d) { publishProgress(port, d); },
-            [this](const FoundDevice &d) { Q_EMIT deviceFound(d); },
-            [this](const Conflict &c) { Q_EMIT conflictFound(c); }, [this] { probeDone(); });
+        auto p = std::make_unique<PortSweep>(port, options, sinkFor(port));
         m_ports.push_back(std::move(p));
     }
     for (const QString &bus : canBusesOf(options)) {
-        auto b = std::make_unique<CanSweep>(
-            bus, options, [this, bus](const QString &d) { publishProgress(bus, d); },
-            [this](const FoundDevice &d) { Q_EMIT deviceFound(d); },
-            [this](const Conflict &c) { Q_EMIT conflictFound(c); }, [this] { probeDone(); });
+        auto b = std::make_unique<CanSweep>(bus, options, sinkFor(bus));
         m_buses.push_back(std::move(b));
     }
     if (m_ports.empty() && m_buses.empty()) {

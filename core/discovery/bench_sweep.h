@@ -40,6 +40,7 @@ struct SweepOptions {
 
 class PortSweep;
 class CanSweep;
+struct SweepSink;
 
 class BenchSweep : public QObject {
     Q_OBJECT
@@ -71,6 +72,7 @@ Q_SIGNALS:
 
 private:
     void probeDone();
+    SweepSink sinkFor(const QString &port);
     void finish(bool cancelled);
     void publishProgress(const QString &port, const QString &detail);
 
