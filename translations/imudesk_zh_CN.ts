@@ -5865,7 +5865,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::discovery::BenchSweep</name>
     <message>
-        <location filename="../core/discovery/bench_sweep.cpp" line="+85"/>
+        <location filename="../core/discovery/bench_sweep.cpp" line="+120"/>
         <source>looking for a serial device</source>
         <translation>正在查找串口设备</translation>
     </message>
@@ -5886,22 +5886,27 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
     <message>
         <location line="+1"/>
-        <location line="+278"/>
+        <location line="+257"/>
         <source>the sweep was cancelled</source>
         <translation>扫描已取消</translation>
     </message>
     <message>
-        <location line="-259"/>
+        <location line="-238"/>
         <source>%1 at %2 baud: reading its identity</source>
         <translation>%1，波特率 %2：正在读取其身份信息</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+30"/>
+        <source>the sweep ended before it said who it is</source>
+        <translation>扫描在其报告身份之前已结束</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>it streams, but did not say who it is within %1 s</source>
         <translation>设备在输出数据，但 %1 s 内未报告其身份</translation>
     </message>
     <message>
-        <location line="+60"/>
+        <location line="+59"/>
         <source>asking it as a Modbus RTU line</source>
         <translation>正在作为 Modbus RTU 线路询问</translation>
     </message>
@@ -5921,12 +5926,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>逐台连接设备，并为每台设置各自的 Modbus ID（设置中的 MD_ID，保存并复位），然后重新扫描。</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+4"/>
         <source>Modbus id %1 answers at %2 baud</source>
         <translation>Modbus ID %1 在波特率 %2 下应答</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+28"/>
         <source>%1 bytes arrived but none formed a frame of any family at any rate%2: check the wiring (A/B swapped on RS-485, TX/RX), the parity and that the device is one ImuDesk knows</source>
         <translation>收到 %1 字节，但在任何波特率下都不构成任何设备系列的帧%2：请检查接线（RS-485 的 A/B 是否接反、TX/RX）、校验位，以及该设备是否为 ImuDesk 支持的设备</translation>
     </message>
@@ -5946,7 +5951,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>（串口设备系列及 Modbus ID 1-247）</translation>
     </message>
     <message>
-        <location line="+82"/>
+        <location line="+62"/>
         <source>the time was up before the bus was heard at every bit rate</source>
         <translation>尚未在所有波特率下监听总线，时间已用完</translation>
     </message>
@@ -5981,7 +5986,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>Qt 的 virtualcan 接口没有波特率</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+11"/>
         <source>%1 frames at %2, none of a device ImuDesk knows, and nothing answered</source>
         <translation>以 %2 收到 %1 帧，均不属于 ImuDesk 支持的设备，且无应答</translation>
     </message>
@@ -10928,7 +10933,9 @@ Link load = bytes per second × 10 bits / baud rate.</source>
     <message numerus="yes">
         <location filename="../ui/discovery/find_devices_dialog.cpp" line="+141"/>
         <source>%n device(s) opened, each in a tab of its own.</source>
-        <translation><numerusform>已打开 %n 台设备，每台在单独的标签页中。</numerusform></translation>
+        <translation>
+            <numerusform>已打开 %n 台设备，每台在单独的标签页中。</numerusform>
+        </translation>
     </message>
     <message>
         <location line="+24"/>

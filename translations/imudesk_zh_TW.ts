@@ -5865,7 +5865,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::discovery::BenchSweep</name>
     <message>
-        <location filename="../core/discovery/bench_sweep.cpp" line="+85"/>
+        <location filename="../core/discovery/bench_sweep.cpp" line="+120"/>
         <source>looking for a serial device</source>
         <translation>正在尋找序列埠裝置</translation>
     </message>
@@ -5886,22 +5886,27 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
     <message>
         <location line="+1"/>
-        <location line="+278"/>
+        <location line="+257"/>
         <source>the sweep was cancelled</source>
         <translation>掃描已取消</translation>
     </message>
     <message>
-        <location line="-259"/>
+        <location line="-238"/>
         <source>%1 at %2 baud: reading its identity</source>
         <translation>%1，鮑率 %2：正在讀取其身分資訊</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+30"/>
+        <source>the sweep ended before it said who it is</source>
+        <translation>掃描在其回報身分之前已結束</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>it streams, but did not say who it is within %1 s</source>
         <translation>裝置在輸出資料，但 %1 s 內未回報其身分</translation>
     </message>
     <message>
-        <location line="+60"/>
+        <location line="+59"/>
         <source>asking it as a Modbus RTU line</source>
         <translation>正在作為 Modbus RTU 線路詢問</translation>
     </message>
@@ -5921,12 +5926,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>逐台連接裝置，並為每台設定各自的 Modbus ID（設定中的 MD_ID，儲存並重設），然後重新掃描。</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+4"/>
         <source>Modbus id %1 answers at %2 baud</source>
         <translation>Modbus ID %1 在鮑率 %2 下回應</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+28"/>
         <source>%1 bytes arrived but none formed a frame of any family at any rate%2: check the wiring (A/B swapped on RS-485, TX/RX), the parity and that the device is one ImuDesk knows</source>
         <translation>收到 %1 位元組，但在任何鮑率下都不構成任何裝置系列的封包%2：請檢查接線（RS-485 的 A/B 是否接反、TX/RX）、同位檢查，以及該裝置是否為 ImuDesk 支援的裝置</translation>
     </message>
@@ -5946,7 +5951,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>（序列埠裝置系列及 Modbus ID 1-247）</translation>
     </message>
     <message>
-        <location line="+82"/>
+        <location line="+62"/>
         <source>the time was up before the bus was heard at every bit rate</source>
         <translation>尚未在所有鮑率下監聽匯流排，時間已用完</translation>
     </message>
@@ -5981,7 +5986,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>Qt 的 virtualcan 介面沒有鮑率</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+11"/>
         <source>%1 frames at %2, none of a device ImuDesk knows, and nothing answered</source>
         <translation>以 %2 收到 %1 個訊框，均不屬於 ImuDesk 支援的裝置，且無回應</translation>
     </message>
@@ -10928,7 +10933,9 @@ Link load = bytes per second × 10 bits / baud rate.</source>
     <message numerus="yes">
         <location filename="../ui/discovery/find_devices_dialog.cpp" line="+141"/>
         <source>%n device(s) opened, each in a tab of its own.</source>
-        <translation><numerusform>已開啟 %n 台裝置，每台在單獨的分頁中。</numerusform></translation>
+        <translation>
+            <numerusform>已開啟 %n 台裝置，每台在單獨的分頁中。</numerusform>
+        </translation>
     </message>
     <message>
         <location line="+24"/>

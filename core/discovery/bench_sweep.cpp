@@ -127,12 +127,12 @@ public:
         if (m_finished)
             return;
         m_opener.cancel();
-        m_identifyTimer.stop();
         if (m_link.link) {
-            m_link.link->disconnect(this);
-            m_link.link->close();
-            m_link = {};
+            // Found, its identity not read yet: listed with what the detection told.
+            finishSerial(true);
+            return;
         }
+        m_identifyTimer.stop();
         if (m_modbus) {
             m_modbus->disconnect(this);
             m_modbus->close();
@@ -177,7 +177,8 @@ private:
         m_link.start();
     }
 
-    void finishSerial()
+    // cutShort: the sweep ended before the device said who it is.
+    void finishSerial(bool cutShort = false)
     {
         if (m_finished)
             return;
@@ -196,7 +197,8 @@ private:
         else if (m_family == QLatin1String("hec495") && m_address >= 0)
             d.address = m_address;
         if (!m_identity.usable())
-            d.note = BenchSweep::tr("it streams, but did not say who it is within %1 s").arg(kIdentifyMs / 1000);
+            d.note = cutShort ? BenchSweep::tr("the sweep ended before it said who it is")
+                              : BenchSweep::tr("it streams, but did not say who it is within %1 s").arg(kIdentifyMs / 1000);
         if (m_link.link) {
             m_link.link->disconnect(this);
             m_link.link->close();
