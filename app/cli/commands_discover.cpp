@@ -4,6 +4,7 @@
 // Exit 0: something found and no conflict; 1: a conflict; 2: nothing found.
 #include "cli_context.h"
 #include "discovery/bench_sweep.h"
+#include "io/can_transport.h"
 
 #include <QJsonDocument>
 
@@ -41,7 +42,7 @@ int cmdDiscover(const QStringList &args)
     if (p.isSet(QStringLiteral("can"))) {
         o.canBuses = p.value(QStringLiteral("can")).split(QLatin1Char(','), Qt::SkipEmptyParts);
         for (const QString &bus : o.canBuses)
-            if (!bus.contains(QLatin1Char(':')))
+            if (!io::CanAddress::parse(bus).complete())
                 return fail(QStringLiteral("--can wants PLUGIN:INTERFACE (e.g. socketcan:can0), not '%1'").arg(bus),
                             ExitUsage);
     }

@@ -5,6 +5,7 @@
 #include "update_common.h"
 
 #include "core/firmware/can_firmware_updater.h"
+#include "io/can_transport.h"
 #include "sim/can_sim_device.h"
 
 #include <QCommandLineParser>
@@ -42,8 +43,8 @@ int cmdUpdateCan(const QStringList &args)
     if (pos.size() != 1)
         return fail(QStringLiteral("update --can needs exactly one FILE (usage: %1)").arg(usage), ExitUsage);
     const QString spec = p.value(QStringLiteral("can"));
-    const int colon = spec.indexOf(QLatin1Char(':'));
-    if (colon <= 0 || colon == spec.size() - 1)
+    const io::CanAddress address = io::CanAddress::parse(spec);
+    if (!address.complete())
         return fail(QStringLiteral("--can needs PLUGIN:INTERFACE, e.g. socketcan:can0 or virtualcan:can0"), ExitUsage);
     CanUpdateFlow::Options o;
     const auto node = parseNumber(p.value(QStringLiteral("node")));
@@ -60,7 +61,7 @@ int cmdUpdateCan(const QStringList &args)
     if (!image)
         return ExitFailure;
     CanFirmwareUpdater updater;
-    const CanFirmwareUpdater::Bus bus{spec.left(colon), spec.mid(colon + 1), int(*bitrate)};
+    const CanFirmwareUpdater::Bus bus{address.plugin, address.interfaceName, int(*bitrate)};
     runUpdate(updater, common.json, [&] { updater.start(bus, *image, o); });
     const auto &r = updater.result();
     if (common.json) {

@@ -3,6 +3,7 @@
 #include "device/can_session.h"
 #include "device/hec495_family.h"
 #include "device/modbus_session.h"
+#include "io/can_transport.h"
 #include "io/serial_transport.h"
 #include "links/link_opener.h"
 #include "links/serial_family.h"
@@ -98,7 +99,6 @@ public:
     }
     ~PortSweep() override { stop(); }
 
-    const QString &port() const { return m_port; }
     double fraction() const { return m_finished ? 1.0 : m_fraction; }
 
     void start()
@@ -372,9 +372,9 @@ public:
         : SweepProbe(std::move(sink)), m_bus(std::move(bus)), m_options(options), m_survey(m_bus)
     {
         m_timer.setSingleShot(true);
-        const qsizetype colon = m_bus.indexOf(QLatin1Char(':'));
-        m_plugin = colon > 0 ? m_bus.left(colon) : m_bus;
-        m_interface = colon > 0 ? m_bus.mid(colon + 1) : QString();
+        const io::CanAddress address = io::CanAddress::parse(m_bus);
+        m_plugin = address.plugin;
+        m_interface = address.interfaceName;
         // Qt's virtualcan keeps no bit rate (its backend ignores the key): one listen tells all.
         if (m_plugin == QLatin1String("virtualcan"))
             m_rates = {0};

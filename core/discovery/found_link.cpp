@@ -1,5 +1,7 @@
 #include "discovery/found_link.h"
 
+#include "io/can_transport.h"
+
 namespace imudesk::discovery {
 
 device::LinkRequest linkRequestFor(const FoundDevice &d)
@@ -22,9 +24,9 @@ device::LinkRequest linkRequestFor(const FoundDevice &d)
     }
     case FoundDevice::Link::Can: {
         device::CanSessionOptions o;
-        const qsizetype colon = d.port.indexOf(QLatin1Char(':'));
-        o.plugin = colon > 0 ? d.port.left(colon) : d.port;
-        o.interfaceName = colon > 0 ? d.port.mid(colon + 1) : QString();
+        const io::CanAddress address = io::CanAddress::parse(d.port);
+        o.plugin = address.plugin;
+        o.interfaceName = address.interfaceName;
         // The rate heard on the bus; an interface that takes none (virtualcan) is left as it is.
         o.bitrate = d.bitrateWhy.isEmpty() ? d.bitrate : 0;
         o.node = d.node;

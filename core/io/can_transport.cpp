@@ -32,6 +32,14 @@ void stopCanThread()
 
 } // namespace
 
+CanAddress CanAddress::parse(const QString &address)
+{
+    const qsizetype colon = address.indexOf(QLatin1Char(':'));
+    if (colon <= 0)
+        return {address, QString()};
+    return {address.left(colon), address.mid(colon + 1)};
+}
+
 QThread *canThread()
 {
     if (!g_canThread) {
@@ -55,9 +63,9 @@ bool CanTransport::open(const QString &address, int bitrate, QString *error)
     close();
     m_address = address;
     m_bitrate = bitrate;
-    const qsizetype colon = address.indexOf(QLatin1Char(':'));
-    const QString plugin = colon > 0 ? address.left(colon) : address;
-    const QString interfaceName = colon > 0 ? address.mid(colon + 1) : QString();
+    const CanAddress parsed = CanAddress::parse(address);
+    const QString &plugin = parsed.plugin;
+    const QString &interfaceName = parsed.interfaceName;
     const auto fail = [error](const QString &why) {
         if (error)
             *error = why;

@@ -7,6 +7,7 @@
 // virtualcan plug-in keeps its bus server in the thread of the first device opened.
 #include "io/transport.h"
 
+#include <QString>
 #include <QThread>
 
 #include <memory>
@@ -16,6 +17,17 @@ class QCanBusDevice;
 QT_END_NAMESPACE
 
 namespace imudesk::io {
+
+// A CAN bus as the user names it, "plugin:interface": the first colon ends the plug-in's name,
+// so that an interface may hold colons of its own ("virtualcan:tcp://127.0.0.1:24500/can0").
+// Without a colon the whole text is the plug-in's name.
+struct CanAddress {
+    QString plugin;
+    QString interfaceName;
+    static CanAddress parse(const QString &address);
+    // Both parts given (what --can and the bus fields require).
+    bool complete() const { return !plugin.isEmpty() && !interfaceName.isEmpty(); }
+};
 
 // The thread every CAN session's engine lives in (started on first use, stopped when the
 // application object is destroyed).

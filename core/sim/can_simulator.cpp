@@ -1,6 +1,7 @@
 #include "can_simulator.h"
 
 #include "clock/host_clock.h"
+#include "io/can_transport.h"
 
 #include <QCanBus>
 #include <QCanBusDevice>
@@ -151,8 +152,8 @@ int runCanSimulatorCommand(const QString &canSpec, const QString &protocolText, 
                            Motion motion, uint64_t seed, const QString &firmware, bool canFd, QString *error,
                            const std::function<bool()> &stopRequested, const std::function<void(CanSimDevice &)> &atExit)
 {
-    const int colon = canSpec.indexOf(QLatin1Char(':'));
-    if (colon <= 0 || colon == canSpec.size() - 1) {
+    const io::CanAddress address = io::CanAddress::parse(canSpec);
+    if (!address.complete()) {
         *error = CanSimulator::tr("--can needs PLUGIN:INTERFACE, e.g. virtualcan:can0");
         return 2;
     }
@@ -179,7 +180,7 @@ int runCanSimulatorCommand(const QString &canSpec, const QString &protocolText, 
     o.firmware = firmware.toStdString();
     o.canFd = canFd;
     CanSimulator sim(o);
-    if (!sim.start(canSpec.left(colon), canSpec.mid(colon + 1), error))
+    if (!sim.start(address.plugin, address.interfaceName, error))
         return 1;
     std::printf("can: %s node %d protocol %s%s%s\n", qPrintable(canSpec), sim.device().node(),
                 qPrintable(protocolText.toLower()), o.hec495 ? " device hec495" : "", o.canFd ? " fd" : "");

@@ -2,6 +2,7 @@
 
 #include "core/discovery/found_link.h"
 #include "core/discovery/simulated_bench.h"
+#include "io/can_transport.h"
 
 #include <QCheckBox>
 #include <QEvent>
@@ -233,18 +234,25 @@ void FindDevicesDialog::saveSettings() const
     QSettings s;
     s.beginGroup(QLatin1String(kGroup));
     // The simulated bench's ports are this run's only.
-    QStringList ports = splitList(m_ports->text()), buses = splitList(m_buses->text());
-    if (m_bench) {
-        for (const QString &p : m_bench->ports())
-            ports.removeAll(p);
-        for (const QString &b : m_bench->canBuses())
-            buses.removeAll(b);
-    }
+    QStringList ports, buses;
+    listedWithoutBench(&ports, &buses);
     s.setValue(QStringLiteral("ports"), ports.join(QLatin1Char(',')));
     s.setValue(QStringLiteral("canBuses"), buses.join(QLatin1Char(',')));
     s.setValue(QStringLiteral("modbus"), m_modbus->isChecked());
     s.setValue(QStringLiteral("onlyListed"), m_onlyListed->isChecked());
     s.setValue(QStringLiteral("seconds"), m_time->value());
+}
+
+void FindDevicesDialog::listedWithoutBench(QStringList *ports, QStringList *buses) const
+{
+    *ports = splitList(m_ports->text());
+    *buses = splitList(m_buses->text());
+    if (!m_bench)
+        return;
+    for (const QString &p : m_bench->ports())
+        ports->removeAll(p);
+    for (const QString &b : m_bench->canBuses())
+        buses->removeAll(b);
 }
 
 void FindDevicesDialog::setTimeLimit(int seconds)
@@ -254,14 +262,9 @@ void FindDevicesDialog::setTimeLimit(int seconds)
 
 bool FindDevicesDialog::useSimulatedBench(bool on, const QString &canInterface)
 {
-    QStringList ports = splitList(m_ports->text()), buses = splitList(m_buses->text());
-    if (m_bench) {
-        for (const QString &p : m_bench->ports())
-            ports.removeAll(p);
-        for (const QString &b : m_bench->canBuses())
-            buses.removeAll(b);
-        m_bench.reset(); // a tab connected to one of its devices keeps it running
-    }
+    QStringList ports, buses;
+    listedWithoutBench(&ports, &buses);
+    m_bench.reset(); // a tab connected to one of its devices keeps it running
     if (on) {
         auto bench = std::make_shared<discovery::SimulatedBench>(canInterface);
         QString error;
@@ -297,7 +300,7 @@ void FindDevicesDialog::start()
 {
     const discovery::SweepOptions o = options();
     for (const QString &bus : o.canBuses)
-        if (!bus.contains(QLatin1Char(':'))) {
+        if (!io::CanAddress::parse(bus).complete()) {
             m_status->setText(tr("\"%1\" is not PLUGIN:INTERFACE (e.g. socketcan:can0): correct the CAN buses field.").arg(bus));
             m_buses->setFocus();
             return;

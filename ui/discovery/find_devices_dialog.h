@@ -79,6 +79,8 @@ private:
     void setRunning(bool on);
     void loadSettings();
     void saveSettings() const;
+    // The ports and buses in the fields, the simulated bench's left out.
+    void listedWithoutBench(QStringList *ports, QStringList *buses) const;
 
     ConnectFn m_connect;
     discovery::BenchSweep m_sweep;
