@@ -668,7 +668,7 @@ void ModbusFamily::scanNext()
             Q_EMIT scanProgress(++m_scanDone, m_scanTotal);
         QMetaObject::invokeMethod(this, &ModbusFamily::scanNext, Qt::QueuedConnection);
     };
-    engine().submit(makeRequest(probe, 1, [this, id, baud, advance, recheck](const RequestResult &r) {
+    engine().submit(makeRequest(probe, 1, [this, id, baud, advance](const RequestResult &r) {
         if (!m_scanning)
             return;
         const Reply reply = replyOf(r);
@@ -681,7 +681,6 @@ void ModbusFamily::scanNext()
         ModbusScanHit hit;
         hit.nodeId = id;
         hit.baud = baud;
-        hit.late = recheck;
         hit.damaged = m_scanDamaged.count(id) ? m_scanDamaged.at(id) : 0;
         hit.exception = reply.exception != 0;
         hit.probeValues = reply.values;

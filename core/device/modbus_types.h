@@ -50,7 +50,6 @@ struct ModbusScanHit {
     int baud = 0;
     bool exception = false;             // answered with a Modbus exception (present, but refused the probe)
     bool identified = false;            // HiPNUC identity block read
-    bool late = false;                  // its answer came after its probe's time, and a second probe confirmed it
     QList<quint16> probeValues;         // the probe's two registers (HiPNUC: UART1_BAUD code and MD_ID; HEC495: pitch)
     int damaged = 0;                    // replies to this id whose CRC failed (two devices answering at once garble each other)
     model::DeviceIdentity identity;

@@ -252,8 +252,12 @@ private Q_SLOTS:
     {
         auto silent = startPty(std::make_unique<sim::SilentLine>());
         BenchSweep s;
+        bool detecting = false; // the detection has the port open and tries a rate
+        connect(&s, &BenchSweep::progress, this, [&](int, int, const QString &, const QString &detail) {
+            detecting = detecting || detail.contains(QLatin1String("baud"));
+        });
         s.start(listed({silent->devicePath()}));
-        QTest::qWait(300);
+        QVERIFY(test::waitFor([&] { return detecting; }, 5000));
         s.cancel();
         QVERIFY(!s.running());
         QVERIFY(s.result().cancelled);
