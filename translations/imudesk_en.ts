@@ -15,7 +15,7 @@
 <context>
     <name>CaptureExporter</name>
     <message numerus="yes">
-        <location filename="../core/record/capture_exporter.cpp" line="+579"/>
+        <location filename="../core/record/capture_exporter.cpp" line="+540"/>
         <source>%n damaged chunk(s) were skipped</source>
         <translation>
             <numerusform>%n damaged chunk was skipped</numerusform>
@@ -26,7 +26,7 @@
 <context>
     <name>CaptureSource</name>
     <message numerus="yes">
-        <location filename="../core/record/capture_source.cpp" line="+185"/>
+        <location filename="../core/record/capture_source.cpp" line="+186"/>
         <source>%1 is a vendor CSV: %n row(s) read, times from its pc_counter column</source>
         <translation>
             <numerusform>%1 is a vendor CSV: %n row read, times from its pc_counter column</numerusform>
@@ -45,7 +45,7 @@
 <context>
     <name>FileAnalysis</name>
     <message numerus="yes">
-        <location filename="../core/record/file_analysis.cpp" line="+62"/>
+        <location filename="../core/record/file_analysis.cpp" line="+64"/>
         <source>%n damaged chunk(s) were skipped</source>
         <translation>
             <numerusform>%n damaged chunk was skipped</numerusform>
@@ -67,7 +67,7 @@
 <context>
     <name>imudesk::record::ReplayWorker</name>
     <message numerus="yes">
-        <location filename="../core/record/replay_worker.cpp" line="+71"/>
+        <location filename="../core/record/replay_worker.cpp" line="+78"/>
         <source>%n damaged chunk(s) skipped</source>
         <translation>
             <numerusform>%n damaged chunk skipped</numerusform>
@@ -122,7 +122,7 @@
 <context>
     <name>imudesk::ui::FindDevicesDialog</name>
     <message numerus="yes">
-        <location filename="../ui/discovery/find_devices_dialog.cpp" line="+141"/>
+        <location filename="../ui/discovery/find_devices_dialog.cpp" line="+142"/>
         <source>%n device(s) opened, each in a tab of its own.</source>
         <translation>
             <numerusform>%n device opened, in a tab of its own.</numerusform>
@@ -130,7 +130,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location line="+176"/>
+        <location line="+178"/>
         <source>Sweeping %n port(s)</source>
         <translation>
             <numerusform>Sweeping %n port</numerusform>

@@ -1245,15 +1245,15 @@
 <context>
     <name>CaptureExporter</name>
     <message>
-        <location filename="../core/record/capture_exporter.cpp" line="+125"/>
-        <location line="+153"/>
+        <location filename="../core/record/capture_exporter.cpp" line="+116"/>
+        <location line="+118"/>
         <location line="+6"/>
         <source>Cannot write %1: %2</source>
         <translation>无法写入 %1：%2</translation>
     </message>
     <message>
-        <location line="-167"/>
-        <location line="+209"/>
+        <location line="-132"/>
+        <location line="+174"/>
         <location line="+28"/>
         <source>Writing %1 failed: %2. Check the free disk space.</source>
         <translation>写入 %1 失败：%2。请检查磁盘剩余空间。</translation>
@@ -1279,7 +1279,7 @@
         <translation>模块以北西天（NWU）坐标系输出姿态（CONFIG IMU COORD 4）；厂商 CSV 的格式没有列可以注明：其中的角度和四元数均为 NWU。</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+47"/>
         <source>Export cancelled.</source>
         <translation>导出已取消。</translation>
     </message>
@@ -1294,7 +1294,7 @@
 <context>
     <name>CaptureHeader</name>
     <message>
-        <location filename="../core/capture/capture_header.cpp" line="+140"/>
+        <location filename="../core/capture/capture_header.cpp" line="+146"/>
         <source>line %1 of the capture header is not a key=value entry</source>
         <translation>记录文件头第 %1 行不是“键=值”格式的条目</translation>
     </message>
@@ -1361,7 +1361,7 @@
 <context>
     <name>CaptureSource</name>
     <message>
-        <location filename="../core/record/capture_source.cpp" line="+128"/>
+        <location filename="../core/record/capture_source.cpp" line="+129"/>
         <location line="+87"/>
         <source>%1 cannot be read: %2</source>
         <translation>无法读取 %1：%2</translation>
@@ -1828,7 +1828,7 @@
         <translation>无法写入 %1：%2</translation>
     </message>
     <message>
-        <location line="+36"/>
+        <location line="+37"/>
         <source>Writing %1 failed: %2. Check the free disk space.</source>
         <translation>写入 %1 失败：%2。请检查磁盘剩余空间。</translation>
     </message>
@@ -1859,7 +1859,7 @@
 <context>
     <name>FileAnalysis</name>
     <message>
-        <location filename="../core/record/file_analysis.cpp" line="+53"/>
+        <location filename="../core/record/file_analysis.cpp" line="+55"/>
         <source>Analysis cancelled.</source>
         <translation>分析已取消。</translation>
     </message>
@@ -3823,7 +3823,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>SampleFile</name>
     <message>
-        <location filename="../core/record/sample_file.cpp" line="+52"/>
+        <location filename="../core/record/sample_file.cpp" line="+53"/>
         <source>--device chooses a device of a session: %1 is not one</source>
         <translation>--device 用于选择会话中的设备：%1 不是会话</translation>
     </message>
@@ -3875,7 +3875,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>SessionExporter</name>
     <message>
-        <location filename="../core/record/session_exporter.cpp" line="+193"/>
+        <location filename="../core/record/session_exporter.cpp" line="+195"/>
         <source>A session of several devices exports to tidy CSV, JSON Lines, MCAP or MATLAB; the vendor&apos;s layout has one device per file (export each capture on its own for it).</source>
         <translation>多设备会话可导出为整齐 CSV、JSON Lines、MCAP 或 MATLAB；厂商格式每个文件只含一台设备（如需该格式，请逐个导出各记录）。</translation>
     </message>
@@ -4400,6 +4400,19 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
 </context>
 <context>
+    <name>StreamDecoder</name>
+    <message>
+        <location filename="../core/decode/stream_decoder.cpp" line="+51"/>
+        <source>The capture is of a %1 link: its registers were polled, and ImuDesk does not decode Modbus captures offline yet.</source>
+        <translation>该采集文件来自 %1 链路：其寄存器是轮询读取的，ImuDesk 暂不支持离线解码 Modbus 采集文件。</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>The capture is of a &quot;%1&quot; link, which this version of ImuDesk cannot decode (it decodes: %2). Open it with the version that recorded it.</source>
+        <translation>该采集文件来自“%1”链路，此版本的 ImuDesk 无法解码（可解码：%2）。请用录制它的版本打开。</translation>
+    </message>
+</context>
+<context>
     <name>UpdateFlow</name>
     <message>
         <location filename="../core/firmware/update_flow.cpp" line="+44"/>
@@ -4815,7 +4828,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::device::CanFamily</name>
     <message>
-        <location filename="../core/device/can_family.cpp" line="+61"/>
+        <location filename="../core/device/can_family.cpp" line="+63"/>
         <source>connected to %1</source>
         <translation>已连接到 %1</translation>
     </message>
@@ -4836,7 +4849,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>启动报文</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+2"/>
         <source>heartbeat</source>
         <translation>心跳</translation>
     </message>
@@ -4851,7 +4864,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>SDO 扫描</translation>
     </message>
     <message>
-        <location line="+58"/>
+        <location line="+41"/>
         <source>too many requests are waiting; try again when they are done</source>
         <translation>等待中的请求过多；请在其完成后重试</translation>
     </message>
@@ -4912,7 +4925,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
     <message>
         <location line="-15"/>
-        <location line="+34"/>
+        <location line="+31"/>
         <source>%1: done</source>
         <translation>%1：完成</translation>
     </message>
@@ -5467,7 +5480,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::device::Hec495Family</name>
     <message>
-        <location filename="../core/device/hec495_family.cpp" line="+69"/>
+        <location filename="../core/device/hec495_family.cpp" line="+66"/>
         <source>the request&apos;s data is longer than a Witlink frame can carry</source>
         <translation>请求数据超出 Witlink 帧所能承载的长度</translation>
     </message>
@@ -5487,7 +5500,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>“%1”尝试 %2 次（每次 %3 ms）均无应答（请检查波特率和模块地址；处于连续输出状态的 RS-485 模块可能漏收指令：请设为问答模式）</translation>
     </message>
     <message>
-        <location line="+194"/>
+        <location line="+160"/>
         <source>the module answered with an invalid reply: %1</source>
         <translation>模块返回了无效应答：%1</translation>
     </message>
@@ -5497,7 +5510,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>模块对“%1”报告失败（FF）</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+23"/>
         <source>the module streams: identified without a request</source>
         <translation>模块正在连续输出：无需请求即已识别</translation>
     </message>
@@ -5533,7 +5546,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::device::HipnucSerialFamily</name>
     <message>
-        <location filename="../core/device/hipnuc_family.cpp" line="+201"/>
+        <location filename="../core/device/hipnuc_family.cpp" line="+202"/>
         <source>The device that came back on %1 is a different one (serial %2, before %3). Its data continues in this session.</source>
         <translation>%1 上重新出现的是另一台设备（序列号 %2，之前为 %3）。其数据将继续记录在本会话中。</translation>
     </message>
@@ -5766,7 +5779,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>串口 %1 无法以 %2 波特率运行。</translation>
     </message>
     <message>
-        <location line="+44"/>
+        <location line="+43"/>
         <source>HEC495 compass (pitch %1 deg)</source>
         <translation>HEC495 罗盘（俯仰角 %1 deg）</translation>
     </message>
@@ -5857,7 +5870,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>%1 ms 内没有应答</translation>
     </message>
     <message>
-        <location line="+85"/>
+        <location line="+82"/>
         <source>Bytes keep arriving on %1 but none of them form a frame: the device probably runs at another baud rate now. Disconnect and connect again with the baud rate set to Auto.</source>
         <translation>%1 上持续收到字节，但无法组成任何数据帧：设备可能已改用其他波特率。请断开连接，并将波特率设为“自动”后重新连接。</translation>
     </message>
@@ -6022,7 +6035,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::io::CanTransport</name>
     <message>
-        <location filename="../core/io/can_transport.cpp" line="+67"/>
+        <location filename="../core/io/can_transport.cpp" line="+75"/>
         <source>the CAN plugin &quot;%1&quot; is not installed (available: %2)</source>
         <translation>未安装 CAN 插件“%1”（可用插件：%2）</translation>
     </message>
@@ -7200,7 +7213,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::record::ReplayWorker</name>
     <message>
-        <location filename="../core/record/replay_worker.cpp" line="+68"/>
+        <location filename="../core/record/replay_worker.cpp" line="+48"/>
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
+    </message>
+    <message>
+        <location line="+27"/>
         <source>%1: %2. Replaying what is intact.</source>
         <translation>%1：%2。将回放完好的部分。</translation>
     </message>
@@ -7417,7 +7435,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::sim::CanSimulator</name>
     <message>
-        <location filename="../core/sim/can_simulator.cpp" line="+45"/>
+        <location filename="../core/sim/can_simulator.cpp" line="+46"/>
         <source>cannot create CAN device %1:%2: %3</source>
         <translation>无法创建 CAN 设备 %1:%2：%3</translation>
     </message>
@@ -10931,7 +10949,7 @@ Link load = bytes per second × 10 bits / baud rate.</source>
 <context>
     <name>imudesk::ui::FindDevicesDialog</name>
     <message numerus="yes">
-        <location filename="../ui/discovery/find_devices_dialog.cpp" line="+141"/>
+        <location filename="../ui/discovery/find_devices_dialog.cpp" line="+142"/>
         <source>%n device(s) opened, each in a tab of its own.</source>
         <translation>
             <numerusform>已打开 %n 台设备，每台在单独的标签页中。</numerusform>
@@ -11104,17 +11122,17 @@ Link load = bytes per second × 10 bits / baud rate.</source>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+174"/>
+        <location line="+176"/>
         <source>Connect</source>
         <translation>连接</translation>
     </message>
     <message>
-        <location line="-172"/>
+        <location line="-174"/>
         <source>Press Sweep to look at every port and bus.</source>
         <translation>按“扫描”检查所有端口和总线。</translation>
     </message>
     <message>
-        <location line="+98"/>
+        <location line="+100"/>
         <source>&quot;%1&quot; is not PLUGIN:INTERFACE (e.g. socketcan:can0): correct the CAN buses field.</source>
         <translation>“%1”不是 插件:接口 格式（例如 socketcan:can0）：请更正 CAN 总线一栏。</translation>
     </message>

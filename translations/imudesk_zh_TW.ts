@@ -1245,15 +1245,15 @@
 <context>
     <name>CaptureExporter</name>
     <message>
-        <location filename="../core/record/capture_exporter.cpp" line="+125"/>
-        <location line="+153"/>
+        <location filename="../core/record/capture_exporter.cpp" line="+116"/>
+        <location line="+118"/>
         <location line="+6"/>
         <source>Cannot write %1: %2</source>
         <translation>無法寫入 %1：%2</translation>
     </message>
     <message>
-        <location line="-167"/>
-        <location line="+209"/>
+        <location line="-132"/>
+        <location line="+174"/>
         <location line="+28"/>
         <source>Writing %1 failed: %2. Check the free disk space.</source>
         <translation>寫入 %1 失敗：%2。請檢查可用磁碟空間。</translation>
@@ -1279,7 +1279,7 @@
         <translation>模組以北西天（NWU）座標系輸出姿態（CONFIG IMU COORD 4）；廠商 CSV 的格式沒有欄位可以註明：其中的角度和四元數均為 NWU。</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+47"/>
         <source>Export cancelled.</source>
         <translation>匯出已取消。</translation>
     </message>
@@ -1294,7 +1294,7 @@
 <context>
     <name>CaptureHeader</name>
     <message>
-        <location filename="../core/capture/capture_header.cpp" line="+140"/>
+        <location filename="../core/capture/capture_header.cpp" line="+146"/>
         <source>line %1 of the capture header is not a key=value entry</source>
         <translation>記錄檔檔頭第 %1 行不是「鍵=值」項目</translation>
     </message>
@@ -1361,7 +1361,7 @@
 <context>
     <name>CaptureSource</name>
     <message>
-        <location filename="../core/record/capture_source.cpp" line="+128"/>
+        <location filename="../core/record/capture_source.cpp" line="+129"/>
         <location line="+87"/>
         <source>%1 cannot be read: %2</source>
         <translation>無法讀取 %1：%2</translation>
@@ -1828,7 +1828,7 @@
         <translation>無法寫入 %1：%2</translation>
     </message>
     <message>
-        <location line="+36"/>
+        <location line="+37"/>
         <source>Writing %1 failed: %2. Check the free disk space.</source>
         <translation>寫入 %1 失敗：%2。請檢查磁碟剩餘空間。</translation>
     </message>
@@ -1859,7 +1859,7 @@
 <context>
     <name>FileAnalysis</name>
     <message>
-        <location filename="../core/record/file_analysis.cpp" line="+53"/>
+        <location filename="../core/record/file_analysis.cpp" line="+55"/>
         <source>Analysis cancelled.</source>
         <translation>分析已取消。</translation>
     </message>
@@ -3823,7 +3823,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>SampleFile</name>
     <message>
-        <location filename="../core/record/sample_file.cpp" line="+52"/>
+        <location filename="../core/record/sample_file.cpp" line="+53"/>
         <source>--device chooses a device of a session: %1 is not one</source>
         <translation>--device 用於選擇工作階段中的裝置：%1 不是工作階段</translation>
     </message>
@@ -3875,7 +3875,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>SessionExporter</name>
     <message>
-        <location filename="../core/record/session_exporter.cpp" line="+193"/>
+        <location filename="../core/record/session_exporter.cpp" line="+195"/>
         <source>A session of several devices exports to tidy CSV, JSON Lines, MCAP or MATLAB; the vendor&apos;s layout has one device per file (export each capture on its own for it).</source>
         <translation>多裝置工作階段可匯出為整齊 CSV、JSON Lines、MCAP 或 MATLAB；廠商格式每個檔案只含一台裝置（如需該格式，請逐一匯出各記錄）。</translation>
     </message>
@@ -4400,6 +4400,19 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
 </context>
 <context>
+    <name>StreamDecoder</name>
+    <message>
+        <location filename="../core/decode/stream_decoder.cpp" line="+51"/>
+        <source>The capture is of a %1 link: its registers were polled, and ImuDesk does not decode Modbus captures offline yet.</source>
+        <translation>此擷取檔來自 %1 鏈路：其暫存器是輪詢讀取的，ImuDesk 尚不支援離線解碼 Modbus 擷取檔。</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>The capture is of a &quot;%1&quot; link, which this version of ImuDesk cannot decode (it decodes: %2). Open it with the version that recorded it.</source>
+        <translation>此擷取檔來自「%1」鏈路，此版本的 ImuDesk 無法解碼（可解碼：%2）。請用錄製它的版本開啟。</translation>
+    </message>
+</context>
+<context>
     <name>UpdateFlow</name>
     <message>
         <location filename="../core/firmware/update_flow.cpp" line="+44"/>
@@ -4815,7 +4828,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::device::CanFamily</name>
     <message>
-        <location filename="../core/device/can_family.cpp" line="+61"/>
+        <location filename="../core/device/can_family.cpp" line="+63"/>
         <source>connected to %1</source>
         <translation>已連線到 %1</translation>
     </message>
@@ -4836,7 +4849,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>開機訊息</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+2"/>
         <source>heartbeat</source>
         <translation>心跳</translation>
     </message>
@@ -4851,7 +4864,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>SDO 掃描</translation>
     </message>
     <message>
-        <location line="+58"/>
+        <location line="+41"/>
         <source>too many requests are waiting; try again when they are done</source>
         <translation>等待中的請求過多；請待其完成後再試</translation>
     </message>
@@ -4912,7 +4925,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
     <message>
         <location line="-15"/>
-        <location line="+34"/>
+        <location line="+31"/>
         <source>%1: done</source>
         <translation>%1：完成</translation>
     </message>
@@ -5467,7 +5480,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::device::Hec495Family</name>
     <message>
-        <location filename="../core/device/hec495_family.cpp" line="+69"/>
+        <location filename="../core/device/hec495_family.cpp" line="+66"/>
         <source>the request&apos;s data is longer than a Witlink frame can carry</source>
         <translation>請求的資料超過 Witlink 幀可承載的長度</translation>
     </message>
@@ -5487,7 +5500,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>嘗試 %2 次（每次 %3 ms）後仍未收到「%1」的回應（請檢查波特率和模組位址；持續輸出資料的 RS-485 模組可能漏收指令：請設為問答模式）</translation>
     </message>
     <message>
-        <location line="+194"/>
+        <location line="+160"/>
         <source>the module answered with an invalid reply: %1</source>
         <translation>模組的回應無效：%1</translation>
     </message>
@@ -5497,7 +5510,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>模組回報「%1」失敗（FF）</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+23"/>
         <source>the module streams: identified without a request</source>
         <translation>模組正在持續輸出：無需請求即已識別</translation>
     </message>
@@ -5533,7 +5546,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::device::HipnucSerialFamily</name>
     <message>
-        <location filename="../core/device/hipnuc_family.cpp" line="+201"/>
+        <location filename="../core/device/hipnuc_family.cpp" line="+202"/>
         <source>The device that came back on %1 is a different one (serial %2, before %3). Its data continues in this session.</source>
         <translation>%1 上重新出現的是另一台裝置（序號 %2，之前為 %3）。其資料將繼續記錄在此工作階段中。</translation>
     </message>
@@ -5766,7 +5779,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>串列埠 %1 無法以 %2 波特率運作。</translation>
     </message>
     <message>
-        <location line="+44"/>
+        <location line="+43"/>
         <source>HEC495 compass (pitch %1 deg)</source>
         <translation>HEC495 羅盤（俯仰角 %1 deg）</translation>
     </message>
@@ -5857,7 +5870,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>%1 ms 內沒有回應</translation>
     </message>
     <message>
-        <location line="+85"/>
+        <location line="+82"/>
         <source>Bytes keep arriving on %1 but none of them form a frame: the device probably runs at another baud rate now. Disconnect and connect again with the baud rate set to Auto.</source>
         <translation>%1 上持續收到位元組，但無法組成任何資料框：裝置可能已改用其他波特率。請中斷連線，並將波特率設為「自動」後重新連線。</translation>
     </message>
@@ -6022,7 +6035,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::io::CanTransport</name>
     <message>
-        <location filename="../core/io/can_transport.cpp" line="+67"/>
+        <location filename="../core/io/can_transport.cpp" line="+75"/>
         <source>the CAN plugin &quot;%1&quot; is not installed (available: %2)</source>
         <translation>未安裝 CAN 外掛程式「%1」（可用：%2）</translation>
     </message>
@@ -7200,7 +7213,12 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::record::ReplayWorker</name>
     <message>
-        <location filename="../core/record/replay_worker.cpp" line="+68"/>
+        <location filename="../core/record/replay_worker.cpp" line="+48"/>
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
+    </message>
+    <message>
+        <location line="+27"/>
         <source>%1: %2. Replaying what is intact.</source>
         <translation>%1：%2。將重播完好的部分。</translation>
     </message>
@@ -7417,7 +7435,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::sim::CanSimulator</name>
     <message>
-        <location filename="../core/sim/can_simulator.cpp" line="+45"/>
+        <location filename="../core/sim/can_simulator.cpp" line="+46"/>
         <source>cannot create CAN device %1:%2: %3</source>
         <translation>無法建立 CAN 裝置 %1:%2：%3</translation>
     </message>
@@ -10931,7 +10949,7 @@ Link load = bytes per second × 10 bits / baud rate.</source>
 <context>
     <name>imudesk::ui::FindDevicesDialog</name>
     <message numerus="yes">
-        <location filename="../ui/discovery/find_devices_dialog.cpp" line="+141"/>
+        <location filename="../ui/discovery/find_devices_dialog.cpp" line="+142"/>
         <source>%n device(s) opened, each in a tab of its own.</source>
         <translation>
             <numerusform>已開啟 %n 台裝置，每台在單獨的分頁中。</numerusform>
@@ -11104,17 +11122,17 @@ Link load = bytes per second × 10 bits / baud rate.</source>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+174"/>
+        <location line="+176"/>
         <source>Connect</source>
         <translation>連線</translation>
     </message>
     <message>
-        <location line="-172"/>
+        <location line="-174"/>
         <source>Press Sweep to look at every port and bus.</source>
         <translation>按「掃描」檢查所有連接埠和匯流排。</translation>
     </message>
     <message>
-        <location line="+98"/>
+        <location line="+100"/>
         <source>&quot;%1&quot; is not PLUGIN:INTERFACE (e.g. socketcan:can0): correct the CAN buses field.</source>
         <translation>「%1」不是 外掛:介面 格式（例如 socketcan:can0）：請更正 CAN 匯流排一欄。</translation>
     </message>

@@ -2,7 +2,7 @@
 #include "cli_context.h"
 #include "format/sample_json.h"
 #include "protocol/hipnuc/payloads.h"
-#include "capture/capture_decoder.h"
+#include "decode/hipnuc_stream_decoder.h"
 
 #include <QElapsedTimer>
 #include <QFile>
@@ -28,37 +28,37 @@ int cmdDecode(const QStringList &args)
         return fail(QStringLiteral("cannot read %1: %2").arg(path, file.errorString()));
     const bool json = p.isSet(QStringLiteral("json"));
 
-    // The same decoding path as replay and export (capture::CaptureDecoder); a raw file has no
-    // arrival times, so nothing is released by a pause, only by the end of the file.
-    struct Printer : capture::CaptureDecoder::Sink {
+    // The HiPNUC family's decoder, as the live session and a replay decode (decode/); a raw
+    // file has no arrival times, so nothing is released by a pause, only by the end of the file.
+    struct Printer : decode::Sink {
         bool json = false;
         std::string line;
         std::map<std::string, uint64_t> errorKinds;
-        void onPacket(const protocol::hipnuc::Packet &packet, int64_t) override
+        void onSample(const model::Sample &sample, const decode::Record &) override
         {
             if (json)
-                outRaw(format::sampleToJson(protocol::hipnuc::toSample(packet)));
+                outRaw(format::sampleToJson(sample));
         }
-        void onNmea(const std::string &sentence, int64_t) override
+        void onText(decode::TextKind kind, const std::string &sentence, int64_t) override
         {
-            if (!json)
+            if (!json || kind == decode::TextKind::Line)
                 return;
             line = "{\"type\":\"NMEA\",\"sentence\":\"" + sentence + "\"}";
             outRaw(line);
         }
-        void onPayloadError(const protocol::hipnuc::PayloadResult &res, int64_t) override
+        void onPayloadError(const decode::PayloadError &e, int64_t) override
         {
-            ++errorKinds[protocol::hipnuc::payloadErrorText(res.error)];
+            ++errorKinds[e.what];
             if (!json)
                 return;
             char tag[8];
-            std::snprintf(tag, sizeof tag, "0x%02X", res.errorTag);
-            outRaw(std::string("{\"type\":\"unsupported\",\"error\":\"") + protocol::hipnuc::payloadErrorText(res.error)
-                   + "\",\"tag\":\"" + tag + "\",\"offset\":" + std::to_string(res.errorOffset) + "}");
+            std::snprintf(tag, sizeof tag, "0x%02X", e.tag);
+            outRaw(std::string("{\"type\":\"unsupported\",\"error\":\"") + e.what + "\",\"tag\":\"" + tag
+                   + "\",\"offset\":" + std::to_string(e.offset) + "}");
         }
     } printer;
     printer.json = json;
-    capture::CaptureDecoder decoder;
+    decode::HipnucStreamDecoder decoder;
     std::vector<char> buf(1 << 20);
     QElapsedTimer clock;
     clock.start();
@@ -72,7 +72,7 @@ int cmdDecode(const QStringList &args)
         if (interrupted())
             return fail(QStringLiteral("interrupted"), ExitInterrupted);
     }
-    decoder.finish(printer);
+    decoder.finish(0, printer);
     const double seconds = double(clock.nsecsElapsed()) / 1e9;
     const protocol::StreamDemux &demux = decoder.demux();
     // Skipped: bytes that were neither a frame nor an NMEA sentence nor a text line (a reply's
@@ -80,7 +80,7 @@ int cmdDecode(const QStringList &args)
     auto c = demux.frameCounters();
     c.bytesSkipped -= std::min<uint64_t>(c.bytesSkipped, demux.counters().lineBytes);
     if (json) {
-        outRaw(format::summaryToJson(c, demux.counters().nmeaSentences, decoder.payloadErrors(), seconds));
+        outRaw(format::summaryToJson(c, demux.counters().nmeaSentences, decoder.counters().payloadErrors, seconds));
     } else {
         out(QStringLiteral("bytes: %1").arg(c.bytesIn));
         for (int tag = 0; tag < 256; ++tag)

@@ -33,7 +33,7 @@ enum ChunkKind : uint16_t {
     ChunkLineIdle = 1, // the session found the line idle here and released held bytes (payload: one 0 byte)
     ChunkSent = 2,     // bytes the host wrote to the device (a request), at the time it wrote them
     // An imported vendor CSV's cells that the frame of the next received chunk cannot give back
-    // (vendor_csv::encodeCells: "pps_sync_stamp=12,incli_x=..." as lines); its vendor CSV export
+    // (decode::vendor_csv::encodeCells: "pps_sync_stamp=12,incli_x=..." as lines); its vendor CSV export
     // writes them back. Readers that do not know it pass over it.
     ChunkVendorCells = 3,
 };

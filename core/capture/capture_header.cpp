@@ -85,6 +85,12 @@ model::DeviceIdentity CaptureHeader::identity() const
     return id;
 }
 
+std::string CaptureHeader::family() const
+{
+    const std::string f = value(kFamily);
+    return f.empty() ? value(kLinkKind) : f;
+}
+
 int CaptureHeader::baud() const
 {
     const std::string v = value(kBaud);

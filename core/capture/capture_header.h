@@ -30,6 +30,9 @@ public:
     // "NWU" for a module set to CONFIG IMU COORD 4; absent: ENU.
     static constexpr const char *kWorldFrame = "device.world_frame";
     static constexpr const char *kLinkKind = "link.kind";   // "HiPNUC serial"
+    // The family whose decoder reads the stream (decode::decoderFor), where the link kind names
+    // something else (a converted file: "raw byte dump" of a HiPNUC module's bytes).
+    static constexpr const char *kFamily = "link.family";
     static constexpr const char *kPort = "link.port";
     static constexpr const char *kBaud = "link.baud";
     // A CAN capture: the protocol ("j1939", "canopen", "hec495", "auto"), the node followed, the
@@ -58,6 +61,8 @@ public:
     void setIdentity(const model::DeviceIdentity &id);
     model::DeviceIdentity identity() const;
     int baud() const; // 0 when unknown
+    // The family of the stream: kFamily, else the link kind (a live recording's link is its family).
+    std::string family() const;
     // The configuration snapshot (keys without the "config." prefix).
     std::map<std::string, std::string> config() const;
     void setConfig(const std::map<std::string, std::string> &kv);

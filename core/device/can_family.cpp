@@ -2,6 +2,7 @@
 
 #include "clock/host_clock.h"
 #include "device/session_engine.h"
+#include "device/stream_counters.h"
 #include "io/can_transport.h"
 #include "protocol/can/canopen.h"
 #include "protocol/can/hec495_can.h"
@@ -33,6 +34,7 @@ bool isDataFrame(const protocol::can::DecodedFrame &d)
 
 CanFamily::CanFamily()
 {
+    m_decoder.setHook(this);
     m_syncTimer.setTimerType(Qt::PreciseTimer);
     connect(&m_syncTimer, &QTimer::timeout, this, [this] { write(canopen::encodeSync()); });
     m_scanTimer.setInterval(kScanSpacingMs);
@@ -51,11 +53,11 @@ void CanFamily::configure(const CanSessionOptions &options)
 
 void CanFamily::opened(int)
 {
-    m_decoder = CanDecoder(m_options.protocol);
-    m_decoder.setHec495Mode(m_options.hec495Mode);
+    m_decoder.decoder() = CanDecoder(m_options.protocol);
+    m_decoder.decoder().setHec495Mode(m_options.hec495Mode);
     m_lastDetected = CanProtocol::Auto;
     m_target = m_options.node;
-    m_merged = model::Sample{};
+    m_decoder.setNode(m_target);
     m_seenNodes.clear();
     m_dataNodes.clear();
     engine().setState(SessionState::Connected, tr("connected to %1").arg(engine().transport().address()));
@@ -105,40 +107,42 @@ void CanFamily::setSyncPeriod(int ms)
 
 void CanFamily::resetCounters()
 {
-    m_frames = m_bytesIn = m_errorFrames = 0;
-    m_framesByType.clear();
+    m_decoder.resetCounters();
 }
 
 void CanFamily::feed(const QByteArray &bytes, int64_t now)
 {
-    m_records.clear();
-    m_reader.feed(bytes, m_records);
-    CanFrameEvents events;
     m_batch.clear();
+    m_frameEvents.clear();
     // Stamped with the arrival time the engine took on the host clock (clock/host_clock.h).
-    for (const CanRecord &r : m_records) {
-        if (r.error) {
-            ++m_errorFrames;
-            continue;
-        }
-        events.append(CanFrameEvent{r.frame, now, false});
-        const size_t first = m_batch.size();
-        handleFrame(r.frame, now, m_batch);
-        // The sample was sent when the frame's bits began: its receive stamp less its time on
-        // the bus (issue 36: what a CAN device without a counter has for a common time).
-        (r.stampNs > 0 ? m_stampedSamples : m_unstampedSamples) += m_batch.size() - first;
-        if (r.stampNs > 0)
-            for (size_t i = first; i < m_batch.size(); ++i)
-                m_batch[i].commonTimeNs = r.stampNs - protocol::can::wireTimeNs(r.frame, engine().transport().baud());
-    }
+    m_decoder.setBaud(engine().transport().baud());
+    m_decoder.feed(reinterpret_cast<const uint8_t *>(bytes.constData()), size_t(bytes.size()), now, *this);
     engine().appendSamples(m_batch);
-    if (!events.isEmpty())
-        Q_EMIT framesSeen(events);
+    if (!m_frameEvents.isEmpty())
+        Q_EMIT framesSeen(m_frameEvents);
+}
+
+void CanFamily::onSample(const model::Sample &sample, const decode::Record &)
+{
+    m_batch.push_back(sample);
+}
+
+void CanFamily::nodeFollowed(int node)
+{
+    m_target = node;
+    Q_EMIT targetNodeChanged(m_target);
+}
+
+void CanFamily::follow(int node)
+{
+    m_target = node;
+    m_decoder.setNode(node);
+    Q_EMIT targetNodeChanged(m_target);
 }
 
 void CanFamily::describeCapture(capture::CaptureHeader &h) const
 {
-    const CanProtocol p = m_options.protocol == CanProtocol::Auto ? m_decoder.detected() : m_options.protocol;
+    const CanProtocol p = m_options.protocol == CanProtocol::Auto ? m_decoder.decoder().detected() : m_options.protocol;
     h.set(capture::CaptureHeader::kCanProtocol, protocolName(p));
     if (m_target >= 0)
         h.set(capture::CaptureHeader::kCanNode, std::to_string(m_target));
@@ -146,21 +150,18 @@ void CanFamily::describeCapture(capture::CaptureHeader &h) const
         h.set(capture::CaptureHeader::kCanHec495Mode, std::to_string(m_options.hec495Mode));
 }
 
-void CanFamily::handleFrame(const CanFrame &f, qint64 now, std::vector<model::Sample> &batch)
+bool CanFamily::frame(const CanFrame &f, const DecodedFrame &d, int64_t now)
 {
-    ++m_frames;
-    m_bytesIn += f.len;
-    const DecodedFrame d = m_decoder.decode(f);
-    ++m_framesByType[frameKindName(d.kind)];
-    if (m_decoder.detected() != m_lastDetected) {
-        m_lastDetected = m_decoder.detected();
+    m_frameEvents.append(CanFrameEvent{f, now, false});
+    const CanProtocol detected = m_decoder.decoder().detected();
+    if (detected != m_lastDetected) {
+        m_lastDetected = detected;
         Q_EMIT protocolDetected(int(m_lastDetected));
     }
     if (d.kind == FrameKind::Heartbeat && f.data[0] == canopen::StateBootUp)
         noteNode(d.protocol == CanProtocol::Auto ? CanProtocol::CanOpen : d.protocol, d.node, tr("boot-up"));
     else if (d.kind == FrameKind::Heartbeat)
-        noteNode(m_decoder.detected() == CanProtocol::Hec495 ? CanProtocol::Hec495 : CanProtocol::CanOpen, d.node,
-                 tr("heartbeat"));
+        noteNode(detected == CanProtocol::Hec495 ? CanProtocol::Hec495 : CanProtocol::CanOpen, d.node, tr("heartbeat"));
     else if (d.sample && d.node >= 0)
         noteNode(d.protocol, d.node, tr("data"));
     if (m_scanning && d.kind == FrameKind::Sdo && d.node >= m_scanFrom && d.node <= m_scanTo) {
@@ -171,20 +172,7 @@ void CanFamily::handleFrame(const CanFrame &f, qint64 now, std::vector<model::Sa
     }
     if (isDataFrame(d) && (d.node >= 0 || m_options.hec495Extended))
         m_dataNodes.insert(dataSource(d));
-    if (matchStep(f, d))
-        return;
-    if (!d.sample)
-        return;
-    if (m_target < 0 && d.node >= 0) {
-        m_target = d.node;
-        Q_EMIT targetNodeChanged(m_target);
-    }
-    if (d.node >= 0 && d.node != m_target)
-        return;
-    mergeComponents(m_merged, *d.sample, d.components);
-    model::Sample s = m_merged;
-    s.hostTimeNs = now;
-    batch.push_back(std::move(s));
+    return matchStep(f, d); // a job's answer is not a sample
 }
 
 void CanFamily::noteNode(CanProtocol p, int node, const QString &how)
@@ -200,19 +188,15 @@ void CanFamily::noteNode(CanProtocol p, int node, const QString &how)
 
 void CanFamily::fillCounters(SessionStats &s) const
 {
-    s.frames = m_frames;
-    s.bytesIn = m_bytesIn;
-    s.framesByType = m_framesByType;
-    s.payloadErrors = m_errorFrames;
-    s.bytesSkipped = m_decoder.counters().unknownFrames + m_reader.bytesSkipped();
-    s.lengthErrors = m_decoder.counters().malformed;
-    if (m_stampedSamples + m_unstampedSamples > 0) {
+    addDecodeCounters(m_decoder.counters(), s);
+    const uint64_t stamped = m_decoder.stampedSamples();
+    if (stamped + m_decoder.unstampedSamples() > 0) {
         ClockStats k;
         k.source = "CAN";
         k.method = ClockStats::Method::Stamp;
         // Without the interface's stamps the samples have their arrival alone.
-        k.state = m_stampedSamples > 0 ? clock::ClockModel::State::Aligned : clock::ClockModel::State::FreeRunning;
-        k.samples = m_stampedSamples;
+        k.state = stamped > 0 ? clock::ClockModel::State::Aligned : clock::ClockModel::State::FreeRunning;
+        k.samples = stamped;
         s.clocks.push_back(std::move(k));
     }
 }
@@ -452,17 +436,14 @@ void CanFamily::stepEnded(const RequestResult &r)
                   RequestStatus::Invalid);
         return;
     }
-    if (s.followNode >= 0 && s.followNode != m_target) {
-        m_target = s.followNode;
-        m_merged = model::Sample{};
-        Q_EMIT targetNodeChanged(m_target);
-    }
+    if (s.followNode >= 0 && s.followNode != m_target)
+        follow(s.followNode);
     // An HEC495 PDO mode the module took (0x1080 on standard frames): the decoder reads its
     // PDOs in that format from now on instead of guessing float or fixed point per frame.
     const auto written = s.expect == CanJobStep::Expect::Hec495Reply ? hec495::parseWrite(s.tx) : std::nullopt;
     if (written && !written->extended && written->index == hec495::ObjPdoMode) {
         m_options.hec495Mode = int(written->value); // kept for a reopen: the module saves it at once
-        m_decoder.setHec495Mode(m_options.hec495Mode);
+        m_decoder.decoder().setHec495Mode(m_options.hec495Mode);
     }
     if (const auto adapt = s.adapt)
         adapt(value, *m_job, m_step);

@@ -13,6 +13,7 @@
 #include "device/can_job.h"
 #include "device/can_session_types.h"
 #include "device/family_plugin.h"
+#include "decode/can_stream_decoder.h"
 #include "protocol/can/can_record.h"
 
 #include <QSet>
@@ -25,7 +26,7 @@
 
 namespace imudesk::device {
 
-class CanFamily : public FamilyPlugin {
+class CanFamily : public FamilyPlugin, private decode::Sink, private decode::CanStreamDecoder::FrameHook {
     Q_OBJECT
 public:
     static constexpr int kMaxQueuedJobs = 64;
@@ -47,7 +48,7 @@ public:
     int firstBaud(int requestedBaud) const override { return requestedBaud; }
     void opened(int requestedBaud) override;
     void stopping() override;
-    void restartStream() override { m_reader.reset(); }
+    void restartStream() override { m_decoder.restart(); }
     void resetCounters() override;
     void feed(const QByteArray &bytes, int64_t nowNs) override;
     bool midUnit() const override { return false; } // records arrive whole
@@ -72,7 +73,6 @@ private:
         quint64 job = 0;
         CanJobStep step;
     };
-    void handleFrame(const protocol::can::CanFrame &f, qint64 now, std::vector<model::Sample> &batch);
     bool matchStep(const protocol::can::CanFrame &f, const protocol::can::DecodedFrame &d);
     bool write(const protocol::can::CanFrame &f); // beside the queue (SYNC, NMT, raw frames, scan probes)
     void startJob();
@@ -82,12 +82,16 @@ private:
     void noteNode(protocol::can::CanProtocol p, int node, const QString &how);
     void scanTick();
     CanSessionOptions m_options;
-    protocol::can::CanRecordReader m_reader;
-    std::vector<protocol::can::CanRecord> m_records;
-    protocol::can::CanDecoder m_decoder;
+    // The stream: records, frames, the followed node's merged samples and the counters (also a
+    // replay's: decode/can_stream_decoder.h). The family sees each frame first (frame()).
+    decode::CanStreamDecoder m_decoder;
+    CanFrameEvents m_frameEvents; // this read's frames, for the monitor
+    void onSample(const model::Sample &sample, const decode::Record &record) override;
+    bool frame(const protocol::can::CanFrame &f, const protocol::can::DecodedFrame &d, int64_t hostNs) override;
+    void nodeFollowed(int node) override;
+    void follow(int node);
     protocol::can::CanProtocol m_lastDetected = protocol::can::CanProtocol::Auto;
-    int m_target = -1;
-    model::Sample m_merged;
+    int m_target = -1; // the node followed (the decoder's)
     std::vector<model::Sample> m_batch;
 
     std::deque<CanJob> m_jobs;
@@ -108,9 +112,6 @@ private:
     int dataSource(const protocol::can::DecodedFrame &d) const;
     QSet<int> m_dataNodes; // nodes heard sending data frames (output off can be confirmed)
 
-    uint64_t m_frames = 0, m_bytesIn = 0, m_errorFrames = 0;
-    uint64_t m_stampedSamples = 0, m_unstampedSamples = 0; // with and without a receive stamp
-    std::map<std::string, uint64_t> m_framesByType;
 };
 
 } // namespace imudesk::device

@@ -2,7 +2,7 @@
 
 #include "clock/clock_model.h"
 #include "device/session_engine.h"
-#include "protocol/nmea/nmea_sample.h"
+#include "device/stream_counters.h"
 #include "protocol/witlink/commands.h"
 
 #include <QLoggingCategory>
@@ -18,11 +18,6 @@ Q_LOGGING_CATEGORY(lcHec495, "imudesk.core.device.hec495")
 namespace wl = protocol::witlink;
 
 constexpr int kStreamingLostMs = 1500; // no auto-output frame for this long: question/answer again
-
-const char *frameType(uint8_t command)
-{
-    return command == 0x84 ? "HEC495 angles" : "HEC495 record";
-}
 
 const Hec495Family::Command &commandOf(const Request &r)
 {
@@ -45,6 +40,8 @@ const std::vector<int> &Hec495Family::detectionBauds()
 Hec495Family::Hec495Family()
 {
     connect(&m_pollTimer, &QTimer::timeout, this, &Hec495Family::poll);
+    m_decoder.setHook(this);
+    m_decoder.setNmeaSamples(true); // positions, fixes and times in the values
 }
 
 Request Hec495Family::makeRequest(uint8_t command, const QByteArray &data, int timeoutMs)
@@ -91,7 +88,7 @@ void Hec495Family::opened(int requestedBaud)
     p.tune = [this](int baud) {
         engine().transport().setBaud(baud);
         engine().transport().clear();
-        m_decoder.reset();
+        m_decoder.restart();
         qCDebug(lcHec495) << "listening at" << baud;
     };
     // A single rate given: use the 3 s window after power-on; scanning rates: two tries each.
@@ -203,7 +200,7 @@ void Hec495Family::followBaud(int baud)
 {
     engine().transport().setBaud(baud);
     engine().setWorkingBaud(baud);
-    m_decoder.reset();
+    m_decoder.restart();
     Q_EMIT baudChanged(baud);
 }
 
@@ -263,57 +260,35 @@ void Hec495Family::finished(const Request &r, const RequestResult &result)
 
 void Hec495Family::resetCounters()
 {
-    m_decoder = wl::FrameDecoder{};
-    m_framesByType.clear();
-    m_payloadErrors = 0;
-    m_text.resetCounters();
+    m_decoder.resetCounters();
 }
 
 void Hec495Family::feed(const QByteArray &bytes, int64_t nowNs)
 {
-    m_frames.clear();
     m_batch.clear();
-    m_decoder.feed(reinterpret_cast<const uint8_t *>(bytes.constData()), size_t(bytes.size()), m_frames);
-    handleText(nowNs);
-    handleFrames(m_frames, nowNs);
-    if (!m_batch.empty())
-        engine().appendSamples(m_batch);
+    m_unsolicitedData = false;
+    m_decoder.feed(reinterpret_cast<const uint8_t *>(bytes.constData()), size_t(bytes.size()), nowNs, *this);
+    afterFrames();
 }
 
 void Hec495Family::lineIdle(int64_t nowNs)
 {
-    m_frames.clear();
     m_batch.clear();
-    m_decoder.flushIdle(m_frames);
-    handleText(nowNs);
-    handleFrames(m_frames, nowNs);
-    if (!m_batch.empty())
-        engine().appendSamples(m_batch);
+    m_unsolicitedData = false;
+    m_decoder.lineIdle(nowNs, *this);
+    afterFrames();
 }
 
-void Hec495Family::handleText(int64_t nowNs)
+void Hec495Family::onSample(const model::Sample &sample, const decode::Record &)
 {
-    namespace nmea = protocol::nmea;
-    // The bytes that belong to no frame: NMEA output, or noise. The same demultiplexer as a
-    // replay's (capture::CaptureDecoder) splits them into sentences, so both see the same ones.
-    const std::string text = m_decoder.takeSkipped();
-    if (text.empty())
-        return;
-    m_textEvents.clear();
-    m_text.feed(reinterpret_cast<const uint8_t *>(text.data()), text.size(), m_textEvents);
-    for (const protocol::StreamEvent &e : m_textEvents) {
-        if (e.kind != protocol::StreamEvent::Kind::Nmea)
-            continue;
-        const nmea::ParseResult parsed = nmea::parseSentence(e.text);
-        if (!parsed.sentence)
-            continue;
-        ++m_framesByType["NMEA " + parsed.sentence->type];
-        if (auto sample = nmea::toSample(*parsed.sentence)) {
-            sample->hostTimeNs = nowNs;
-            m_batch.push_back(std::move(*sample));
-        }
-        Q_EMIT nmeaReceived(QString::fromStdString(e.text));
-    }
+    m_batch.push_back(sample);
+}
+
+void Hec495Family::onText(decode::TextKind kind, const std::string &text, int64_t)
+{
+    // The bytes that belong to no frame: NMEA output (its positions already among the samples), or noise.
+    if (kind != decode::TextKind::Line)
+        Q_EMIT nmeaReceived(QString::fromStdString(text));
 }
 
 bool Hec495Family::answersCurrent(const wl::Frame &f) const
@@ -330,77 +305,69 @@ bool Hec495Family::answersCurrent(const wl::Frame &f) const
     return anyAddress || f.address == m_address;
 }
 
-void Hec495Family::handleFrames(const std::vector<wl::Frame> &frames, int64_t nowNs)
+decode::WitlinkStreamDecoder::FrameVerdict Hec495Family::frame(const wl::Frame &f, const wl::Reply &r)
 {
-    if (frames.empty())
-        return;
-    bool unsolicitedData = false;
-    for (const auto &f : frames) {
-        if (const Request *current = engine().current()) {
-            const std::vector<uint8_t> heard = wl::encodeFrame(f);
-            if (QByteArray::fromRawData(reinterpret_cast<const char *>(heard.data()), qsizetype(heard.size()))
-                == current->wire) {
-                // Our own request heard back (an RS-485 echo), or, for a command the manual
-                // answers with its own bytes (0x49 prints 49: "77 05 00 49 00 4E" is both "set
-                // content 00" and its success), the reply itself. A request that is no valid
-                // reply (the identification's "read all" has no record) is an echo, and then
-                // the link echoes everything: there the first identical frame is the echo.
-                const bool validReply = wl::decodeReply(f).ok() && answersCurrent(f);
-                if (!validReply) {
-                    m_linkEchoes = true;
-                    continue;
-                }
-                // An echoing link: the first identical frame of this attempt is the echo.
-                const std::pair<const Request *, int> attempt{current, current->attempts};
-                if (m_linkEchoes && m_echoHeard != attempt) {
-                    m_echoHeard = attempt;
-                    continue;
-                }
+    decode::WitlinkStreamDecoder::FrameVerdict v;
+    const Request *current = engine().current();
+    if (current) {
+        const std::vector<uint8_t> heard = wl::encodeFrame(f);
+        if (QByteArray::fromRawData(reinterpret_cast<const char *>(heard.data()), qsizetype(heard.size()))
+            == current->wire) {
+            // Our own request heard back (an RS-485 echo), or, for a command the manual
+            // answers with its own bytes (0x49 prints 49: "77 05 00 49 00 4E" is both "set
+            // content 00" and its success), the reply itself. A request that is no valid
+            // reply (the identification's "read all" has no record) is an echo, and then
+            // the link echoes everything: there the first identical frame is the echo.
+            const bool validReply = r.ok() && answersCurrent(f);
+            if (!validReply) {
+                m_linkEchoes = true;
+                v.skip = true;
+                return v;
+            }
+            // An echoing link: the first identical frame of this attempt is the echo.
+            const std::pair<const Request *, int> attempt{current, current->attempts};
+            if (m_linkEchoes && m_echoHeard != attempt) {
+                m_echoHeard = attempt;
+                v.skip = true;
+                return v;
             }
         }
-        const wl::Reply r = wl::decodeReply(f);
-        const bool data = r.ok() && (r.kind == wl::Reply::Kind::AllData || r.kind == wl::Reply::Kind::Angles);
-        if (data) {
-            ++m_framesByType[frameType(f.command)];
-            model::Sample s = *wl::sampleOf(r, nowNs);
-            // Asked for: the module measured between the question and its answer. Sent on its
-            // own (continuous output) it has no bracket and keeps its arrival alone.
-            if (const Request *current = engine().current(); current && current->sentNs > 0 && answersCurrent(f)) {
-                const clock::BracketTime b = clock::bracketTime(current->sentNs, nowNs);
-                s.commonTimeNs = b.hostNs;
-                s.commonUncertaintyNs = b.uncertaintyNs;
-                m_brackets.add(b);
-            }
-            m_batch.push_back(std::move(s));
-        } else if (!r.ok()) {
-            ++m_payloadErrors;
-        }
-        if (answersCurrent(f)) {
-            RequestResult res;
-            Hec495Result typed;
-            typed.request = commandOf(*engine().current()).command;
-            typed.reply = r;
-            res.reply = QVariant::fromValue(typed);
-            if (!r.ok()) {
-                res.status = RequestStatus::Invalid;
-                res.message = tr("the module answered with an invalid reply: %1").arg(wl::Reply::errorText(r.error));
-            } else if (!r.success) {
-                res.status = RequestStatus::Refused;
-                res.message = tr("the module reported failure (FF) for \"%1\"").arg(commandText(*engine().current()));
-            } else {
-                res.status = RequestStatus::Ok;
-                res.message = r.describe();
-            }
-            m_echoHeard = {};
-            engine().finishCurrent(std::move(res));
-            continue;
-        }
-        if (data)
-            unsolicitedData = true;
-        else if (r.ok() && r.kind == wl::Reply::Kind::CalibrationPoint)
-            Q_EMIT calibrationPoint(r.points);
     }
-    if (unsolicitedData) {
+    const bool data = r.ok() && (r.kind == wl::Reply::Kind::AllData || r.kind == wl::Reply::Kind::Angles);
+    if (answersCurrent(f)) {
+        // Asked for: the module measured between the question and its answer (the decoder
+        // stamps the sample with the bracket).
+        v.answers = current->sentNs > 0;
+        v.sentNs = current->sentNs;
+        RequestResult res;
+        Hec495Result typed;
+        typed.request = commandOf(*current).command;
+        typed.reply = r;
+        res.reply = QVariant::fromValue(typed);
+        if (!r.ok()) {
+            res.status = RequestStatus::Invalid;
+            res.message = tr("the module answered with an invalid reply: %1").arg(wl::Reply::errorText(r.error));
+        } else if (!r.success) {
+            res.status = RequestStatus::Refused;
+            res.message = tr("the module reported failure (FF) for \"%1\"").arg(commandText(*current));
+        } else {
+            res.status = RequestStatus::Ok;
+            res.message = r.describe();
+        }
+        m_echoHeard = {};
+        engine().finishCurrent(std::move(res));
+        return v;
+    }
+    if (data)
+        m_unsolicitedData = true;
+    else if (r.ok() && r.kind == wl::Reply::Kind::CalibrationPoint)
+        Q_EMIT calibrationPoint(r.points);
+    return v;
+}
+
+void Hec495Family::afterFrames()
+{
+    if (m_unsolicitedData) {
         m_lastStreamFrame.restart();
         setStreaming(true);
         if (m_scan.running()) {
@@ -411,21 +378,14 @@ void Hec495Family::handleFrames(const std::vector<wl::Frame> &frames, int64_t no
             engine().releaseHeldWrite(); // the line is quiet until the next frame
         }
     }
+    if (!m_batch.empty())
+        engine().appendSamples(m_batch);
 }
 
 void Hec495Family::fillCounters(SessionStats &s) const
 {
-    const auto &c = m_decoder.counters();
-    s.bytesIn = c.bytesIn;
-    s.frames = c.frames;
-    s.crcErrors = c.checksumErrors;
-    s.lengthErrors = c.lengthErrors;
-    s.bytesSkipped = c.bytesSkipped;
-    s.payloadErrors = m_payloadErrors;
-    s.framesByType = m_framesByType;
-    s.nmeaSentences = m_text.counters().nmeaSentences;
-    s.nmeaErrors = m_text.counters().nmeaErrors;
-    ClockStats::addBrackets(s.clocks, "HEC495", m_brackets);
+    addDecodeCounters(m_decoder.counters(), s);
+    ClockStats::addBrackets(s.clocks, "HEC495", m_decoder.brackets());
 }
 
 } // namespace imudesk::device

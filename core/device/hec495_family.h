@@ -30,8 +30,7 @@
 #include "device/family_plugin.h"
 #include "device/hec495_result.h"
 #include "model/sample.h"
-#include "protocol/stream/stream_demux.h"
-#include "protocol/witlink/frame_decoder.h"
+#include "decode/witlink_stream_decoder.h"
 
 #include <QElapsedTimer>
 #include <QTimer>
@@ -43,7 +42,7 @@
 
 namespace imudesk::device {
 
-class Hec495Family : public FamilyPlugin {
+class Hec495Family : public FamilyPlugin, private decode::Sink, private decode::WitlinkStreamDecoder::FrameHook {
     Q_OBJECT
 public:
     static constexpr int kReplyTimeoutMs = 300;
@@ -74,14 +73,10 @@ public:
     int firstBaud(int requestedBaud) const override;
     void opened(int requestedBaud) override;
     void stopping() override;
-    void restartStream() override
-    {
-        m_decoder.reset();
-        m_text.reset();
-    }
+    void restartStream() override { m_decoder.restart(); }
     void resetCounters() override;
     void feed(const QByteArray &bytes, int64_t nowNs) override;
-    bool midUnit() const override { return m_decoder.pendingBytes() > 0; }
+    bool midUnit() const override { return m_decoder.midUnit(); }
     void lineIdle(int64_t nowNs) override;
     void fillCounters(SessionStats &s) const override;
     void statsTick() override;
@@ -101,17 +96,22 @@ Q_SIGNALS:
     void nmeaReceived(const QString &sentence);
 
 private:
-    void handleText(int64_t nowNs);
-    void handleFrames(const std::vector<protocol::witlink::Frame> &frames, int64_t nowNs);
+    // What the family's decoder (decode/witlink_stream_decoder.h) gives: samples, NMEA text,
+    // and each frame first, to match it to the request on the line.
+    void onSample(const model::Sample &sample, const decode::Record &record) override;
+    void onText(decode::TextKind kind, const std::string &text, int64_t hostNs) override;
+    decode::WitlinkStreamDecoder::FrameVerdict frame(const protocol::witlink::Frame &f,
+                                                     const protocol::witlink::Reply &r) override;
+    void afterFrames();
     bool answersCurrent(const protocol::witlink::Frame &f) const;
     void followBaud(int baud);
     void poll();
     void setStreaming(bool on);
     void identified(int baud, const protocol::witlink::Reply *reply);
 
-    protocol::witlink::FrameDecoder m_decoder;
+    decode::WitlinkStreamDecoder m_decoder; // the stream, its brackets and counters (also a replay's)
     std::vector<model::Sample> m_batch;
-    std::vector<protocol::witlink::Frame> m_frames;
+    bool m_unsolicitedData = false; // this read brought data frames no request asked for
     QTimer m_pollTimer{this};
     BaudScan m_scan{this}; // the identification: rates in turn
     protocol::witlink::Reply m_identifyReply;
@@ -124,11 +124,6 @@ private:
     std::pair<const Request *, int> m_echoHeard{}; // the attempt whose echo was skipped
     QElapsedTimer m_lastStreamFrame; // since the last auto-output frame
 
-    std::map<std::string, uint64_t> m_framesByType;
-    uint64_t m_payloadErrors = 0;
-    clock::BracketTally m_brackets; // the polled samples' request->answer intervals
-    protocol::StreamDemux m_text;     // the text between frames: NMEA sentences
-    std::vector<protocol::StreamEvent> m_textEvents;
     uint8_t m_content = 0xFF;         // output content (0x49) last set, 0xFF: unknown
 };
 

@@ -62,6 +62,7 @@ Request HipnucSerialFamily::makeRequest(const hp::Command &command, int timeoutM
 HipnucSerialFamily::HipnucSerialFamily()
 {
     m_listenTimer.setSingleShot(true);
+    m_decoder.setNmeaSamples(true); // positions, fixes and times in the values
 }
 
 // ---------------------------------------------------------------------------------------
@@ -74,7 +75,7 @@ int HipnucSerialFamily::firstBaud(int requestedBaud) const
 
 void HipnucSerialFamily::opened(int requestedBaud)
 {
-    m_clocks.clear();
+    m_decoder.reset(); // a new link: the device's clocks start again
     m_deviceSerial.clear();
     m_checkSameDevice = false;
     const QString port = engine().transport().address();
@@ -217,7 +218,7 @@ void HipnucSerialFamily::noteIdentity(const model::DeviceIdentity &id)
 void HipnucSerialFamily::writing(const Request &r)
 {
     m_collector.emplace(commandOf(r).text);
-    m_demux.endQuarantine(); // what answers now starts after a boundary the device keeps
+    m_decoder.endQuarantine(); // what answers now starts after a boundary the device keeps
     if (commandOf(r).effect.changesOutput)
         m_gaps.resetTiming();
 }
@@ -285,99 +286,74 @@ void HipnucSerialFamily::noteCommandDone(const hp::OutputEffect &c)
 
 void HipnucSerialFamily::restartStream()
 {
-    m_demux.reset();
-    m_clocks.lineIdle(); // what the last read held is gone
+    m_decoder.restart();
     m_gaps.resetTiming(); // an outage or a rate change is not lost frames
 }
 
 void HipnucSerialFamily::resetCounters()
 {
-    m_demux.resetCounters();
-    m_payloadErrors = 0;
+    m_decoder.resetCounters();
     m_gaps.clear();
     m_frameBytes.clear();
 }
 
 void HipnucSerialFamily::feed(const QByteArray &bytes, int64_t nowNs)
 {
-    m_events.clear();
-    m_demux.feed(reinterpret_cast<const uint8_t *>(bytes.constData()), size_t(bytes.size()), m_events);
-    handleEvents(nowNs);
-    // A frame this read ended inside: its bytes so far bound its sampling instant.
-    m_clocks.endRead(m_demux.pendingBytes(), nowNs);
+    m_batch.clear();
+    m_decoder.setBaud(engine().workingBaud());
+    m_decoder.feed(reinterpret_cast<const uint8_t *>(bytes.constData()), size_t(bytes.size()), nowNs, *this);
+    engine().appendSamples(m_batch);
 }
 
 void HipnucSerialFamily::lineIdle(int64_t nowNs)
 {
-    m_events.clear();
-    m_demux.flushPending(m_events);
-    m_demux.endQuarantine(); // the line went quiet: the next byte starts something new
-    m_clocks.lineIdle();
-    handleEvents(nowNs);
+    m_batch.clear();
+    m_decoder.lineIdle(nowNs, *this);
+    engine().appendSamples(m_batch);
 }
 
-void HipnucSerialFamily::handleEvents(int64_t nowNs)
+void HipnucSerialFamily::onSample(const model::Sample &sample, const decode::Record &record)
 {
-    if (m_events.empty())
-        return;
-    m_batch.clear();
-    m_clocks.setBaud(engine().workingBaud());
-    for (auto &e : m_events) {
-        switch (e.kind) {
-        case StreamEvent::Kind::Frame: {
-            const size_t frameBytes = e.payload.size() + hp::FrameDecoder::kHeaderSize;
-            m_clocks.beginFrame(frameBytes, nowNs);
-            const size_t first = m_batch.size();
-            const auto res = hp::forEachPacket(e.payload, [&](const hp::Packet &p) {
-                m_batch.push_back(hp::toSample(p));
-                m_batch.back().hostTimeNs = nowNs;
-            });
-            if (!res.ok())
-                ++m_payloadErrors;
-            for (size_t i = first; i < m_batch.size(); ++i) {
-                model::Sample &sample = m_batch[i];
-                m_frameBytes[sample.source] = frameBytes;
-                if (sample.has(model::FieldDeviceTime)) {
-                    const int timeBase = model::MainStatus::timeBase(sample.has(model::FieldMainStatus), sample.mainStatus);
-                    m_gaps.add(sample.source, sample.deviceTimeMs, timeBase);
-                    m_clocks.stamp(sample, timeBase);
-                }
-            }
-            break;
+    m_batch.push_back(sample);
+    if (!record.native)
+        return; // an NMEA sentence's position, fix and time
+    m_frameBytes[sample.source] = record.unitBytes;
+    if (sample.has(model::FieldDeviceTime))
+        m_gaps.add(sample.source, sample.deviceTimeMs,
+                   model::MainStatus::timeBase(sample.has(model::FieldMainStatus), sample.mainStatus));
+}
+
+void HipnucSerialFamily::onText(decode::TextKind kind, const std::string &text, int64_t)
+{
+    switch (kind) {
+    case decode::TextKind::NmeaUndecoded:
+        Q_EMIT textReceived(QString::fromStdString(text)); // a sentence ImuDesk does not decode: shown raw
+        Q_EMIT nmeaReceived(QString::fromStdString(text));
+        break;
+    case decode::TextKind::Nmea:
+        Q_EMIT nmeaReceived(QString::fromStdString(text));
+        break;
+    case decode::TextKind::Line:
+        if (m_collector && engine().current() && m_collector->addLine(text)) {
+            RequestResult r;
+            Reply reply = m_collector->take();
+            r.status = reply.ok() ? RequestStatus::Ok : RequestStatus::Refused;
+            if (!reply.ok())
+                r.message = QString::fromStdString(reply.errorLine);
+            r.reply = QVariant::fromValue(std::move(reply));
+            engine().finishCurrent(std::move(r));
+        } else if (!m_collector) {
+            Q_EMIT textReceived(QString::fromStdString(text));
         }
-        case StreamEvent::Kind::Nmea:
-            if (auto s = protocol::nmea::sampleOf(e.text)) { // position, fix and time for the values
-                s->hostTimeNs = nowNs;
-                m_batch.push_back(std::move(*s));
-            } else {
-                Q_EMIT textReceived(QString::fromStdString(e.text)); // a sentence ImuDesk does not decode: shown raw
-            }
-            Q_EMIT nmeaReceived(QString::fromStdString(e.text));
-            break;
-        case StreamEvent::Kind::NmeaError:
-            break;
-        case StreamEvent::Kind::Line:
-            if (m_collector && engine().current() && m_collector->addLine(e.text)) {
-                RequestResult r;
-                Reply reply = m_collector->take();
-                r.status = reply.ok() ? RequestStatus::Ok : RequestStatus::Refused;
-                if (!reply.ok())
-                    r.message = QString::fromStdString(reply.errorLine);
-                r.reply = QVariant::fromValue(std::move(reply));
-                engine().finishCurrent(std::move(r));
-            } else if (!m_collector) {
-                Q_EMIT textReceived(QString::fromStdString(e.text));
-            }
-            break;
-        }
+        break;
     }
-    engine().appendSamples(m_batch);
 }
 
 void HipnucSerialFamily::fillCounters(SessionStats &s) const
 {
-    fillStreamCounters(m_demux, m_payloadErrors, m_gaps, s);
-    for (const clock::SampleClocks::Stream &c : m_clocks.clocks().streams()) {
+    addDecodeCounters(m_decoder.counters(), s);
+    addGapCounters(m_gaps, s);
+    for (const clock::SampleClocks::Stream &c : m_decoder.frameClocks().clocks().streams()) {
         ClockStats k;
         k.source = c.source;
         k.method = ClockStats::Method::Counter;

@@ -11,7 +11,7 @@
 #include "model/sample.h"
 #include "protocol/hipnuc/ascii_command.h"
 #include "protocol/hipnuc/ascii_reply.h"
-#include "protocol/stream/stream_demux.h"
+#include "decode/hipnuc_stream_decoder.h"
 
 #include <QList>
 #include <QTimer>
@@ -24,7 +24,7 @@
 
 namespace imudesk::device {
 
-class HipnucSerialFamily : public FamilyPlugin {
+class HipnucSerialFamily : public FamilyPlugin, private decode::Sink {
     Q_OBJECT
 public:
     // A module sends a frame without pauses, but a USB adapter's latency timer (16 ms on FTDI
@@ -54,7 +54,7 @@ public:
     void restartStream() override;
     void resetCounters() override;
     void feed(const QByteArray &bytes, int64_t nowNs) override;
-    bool midUnit() const override { return m_demux.pendingBytes() > 0; }
+    bool midUnit() const override { return m_decoder.midUnit(); }
     void lineIdle(int64_t nowNs) override;
     void fillCounters(SessionStats &s) const override;
     void writing(const Request &r) override;
@@ -70,7 +70,10 @@ Q_SIGNALS:
     void linkRecovered(bool reachable, int baud, const QString &detail);
 
 private:
-    void handleEvents(int64_t nowNs);
+    // What the family's decoder (decode/hipnuc_stream_decoder.h) gives: samples to the engine,
+    // reply lines to the request on the line.
+    void onSample(const model::Sample &sample, const decode::Record &record) override;
+    void onText(decode::TextKind kind, const std::string &text, int64_t hostNs) override;
     void noteIdentity(const model::DeviceIdentity &id);
     void listenThenQueryIdentity();
     void queryIdentity(int attempt);
@@ -94,13 +97,10 @@ private:
     bool takeIdentity(const Reply &r);
     void finishLink(bool reachable, int baud);
 
-    protocol::StreamDemux m_demux;
-    std::vector<protocol::StreamEvent> m_events;
+    decode::HipnucStreamDecoder m_decoder; // the stream, its clocks and counters (also a replay's)
     std::vector<model::Sample> m_batch;
     std::optional<protocol::hipnuc::ReplyCollector> m_collector; // the request on the line
-    uint64_t m_payloadErrors = 0;
     FrameGapCounter m_gaps;
-    clock::SerialFrameClocks m_clocks; // each frame type's device time against the host clock
     std::map<std::string, size_t> m_frameBytes; // last frame size per type (link load of a rate)
 
     QTimer m_listenTimer{this}; // before the identity query on a given rate

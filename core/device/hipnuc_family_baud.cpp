@@ -40,9 +40,9 @@ BaudScan::Plan HipnucSerialFamily::detectionPlan()
     p.tune = [this](int baud) {
         engine().transport().setBaud(baud);
         engine().transport().clear();
-        m_demux.reset();
+        m_decoder.restart();
         m_found.reset();
-        m_framesAtDetectStart = m_demux.frameCounters().frames;
+        m_framesAtDetectStart = m_decoder.demux().frameCounters().frames;
         engine().setState(SessionState::Detecting, tr("trying %1 baud").arg(baud));
     };
     p.probe = [this](int, BaudScan::Answer answer) { detectQuery(false, std::move(answer)); };
@@ -79,7 +79,7 @@ void HipnucSerialFamily::detectQuery(bool retry, BaudScan::Answer answer)
             answer(Outcome::Found);
             return;
         }
-        const bool sawFrames = m_demux.frameCounters().frames > m_framesAtDetectStart;
+        const bool sawFrames = m_decoder.demux().frameCounters().frames > m_framesAtDetectStart;
         if (sawFrames && !retry && m_scan.running())
             detectQuery(true, answer);
         else if (sawFrames)

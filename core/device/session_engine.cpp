@@ -402,10 +402,7 @@ uint64_t SessionEngine::recordedFrames() const
 {
     if (m_mcap)
         return m_mcap->samples();
-    if (m_recordedDecoder.can())
-        return m_recordedDecoder.canCounters().frames;
-    return m_recordedDecoder.witlink() ? m_recordedDecoder.witlinkCounters().frames
-                                       : m_recordedDecoder.demux().frameCounters().frames;
+    return m_recordedDecoder.counters().frames;
 }
 
 void SessionEngine::restartStatistics()

@@ -147,7 +147,7 @@ private:
     // pressed is decoded by the session but is not in the file, so the session's own frame
     // counter would count one frame more than the file holds.
     struct NoSink : capture::CaptureDecoder::Sink {
-        void onPacket(const protocol::hipnuc::Packet &, int64_t) override {}
+        void onSample(const model::Sample &, const decode::Record &) override {}
     };
     capture::CaptureDecoder m_recordedDecoder;
     NoSink m_noSink;

@@ -1,33 +1,24 @@
 #include "stream_counters.h"
 
 #include <algorithm>
-#include <cstdio>
 
 namespace imudesk::device {
 
-void fillStreamCounters(const protocol::StreamDemux &demux, uint64_t payloadErrors, const FrameGapCounter &gaps,
-                        SessionStats &s)
+void addDecodeCounters(const decode::Counters &c, SessionStats &s)
 {
-    const auto &fc = demux.frameCounters();
-    const auto &dc = demux.counters();
-    s.bytesIn = fc.bytesIn;
-    s.frames = fc.frames;
-    s.crcErrors = fc.crcErrors;
-    s.lengthErrors = fc.lengthErrors;
-    // Bytes that were neither a frame nor a reply or NMEA line (a command's OK is not damage).
-    s.bytesSkipped = fc.bytesSkipped > dc.lineBytes ? fc.bytesSkipped - dc.lineBytes : 0;
-    s.nmeaSentences = dc.nmeaSentences;
-    s.nmeaErrors = dc.nmeaErrors;
-    s.payloadErrors = payloadErrors;
-    for (int tag = 0; tag < 256; ++tag) {
-        if (!fc.perTag[size_t(tag)])
-            continue;
-        char name[8];
-        std::snprintf(name, sizeof name, "HI%02X", tag);
-        s.framesByType[name] = fc.perTag[size_t(tag)];
-    }
-    if (dc.nmeaSentences)
-        s.framesByType["NMEA"] = dc.nmeaSentences;
+    s.bytesIn = c.bytesIn;
+    s.frames = c.frames;
+    s.crcErrors = c.crcErrors;
+    s.lengthErrors = c.lengthErrors;
+    s.bytesSkipped = c.bytesSkipped;
+    s.nmeaSentences = c.nmeaSentences;
+    s.nmeaErrors = c.nmeaErrors;
+    s.payloadErrors = c.payloadErrors;
+    s.framesByType = c.framesByType;
+}
+
+void addGapCounters(const FrameGapCounter &gaps, SessionStats &s)
+{
     s.framesLost = gaps.lost();
     s.framesLostByType = gaps.lostByType();
     s.deviceResets = gaps.resets();

@@ -3,11 +3,11 @@
 #include "format/sample_json.h"
 #include "capture/capture_decoder.h"
 #include "capture/capture_reader.h"
+#include "decode/vendor_layout.h"
 #include "record/capture_source.h"
-#include "record/csv_number.h"
+#include "format/csv_number.h"
 #include "record/mat_export.h"
 #include "capture/mcap_recording.h"
-#include "record/vendor_csv.h"
 
 #include <QFile>
 #include <QFileInfo>
@@ -17,7 +17,7 @@
 
 namespace imudesk::record {
 
-namespace hp = protocol::hipnuc;
+namespace csv = format::csv;
 using csv::appendInt;
 using csv::appendNumber;
 
@@ -46,16 +46,6 @@ struct Output {
     }
 };
 
-int tagOf(const hp::Packet &p)
-{
-    switch (p.index()) {
-    case 0: return hp::TagHi91;
-    case 1: return hp::TagHi92;
-    case 2: return hp::TagHi81;
-    default: return hp::TagHi83;
-    }
-}
-
 class ExportSink : public capture::CaptureDecoder::Sink {
 public:
     ExportSink(const CaptureExporter::Options &o, CaptureExporter::Result &r) : m_o(o), m_r(r)
@@ -64,12 +54,13 @@ public:
 
     int64_t firstNs = 0;
     int64_t epochOffsetNs = 0; // host clock to the Unix epoch (the first chunk's two times)
-    const capture::CaptureDecoder *decoder = nullptr;
     const capture::CaptureHeader *header = nullptr;
     // An imported vendor CSV (CsvCaptureConverter): the chunk times are its pc_counter, written
     // back as they were, and the cells its next HI91 frame cannot give back.
     bool pcCounterIsChunkTime = false;
-    vendor_csv::Cells keptCells;
+    // The capture's family's own layout (VendorCsv): null when its vendor has none.
+    const decode::VendorLayout *layout = nullptr;
+    decode::VendorLayout::Cells keptCells;
     model::WorldFrame worldFrame = model::WorldFrame::Enu; // the capture's module (its header)
 
     // MCAP: the device's channels, its identity and configuration written first (McapRecording).
@@ -161,95 +152,60 @@ public:
         return out;
     }
 
-    // A packet's sample with its arrival and its common time (the decoder's clock model).
-    model::Sample timed(model::Sample s, int64_t hostNs) const
+    // The record's row in the vendor's layout; false when the layout has none for it.
+    bool vendorRow(const decode::Record &rec, int64_t hostNs)
     {
-        s.hostTimeNs = hostNs;
-        s.commonTimeNs = decoder ? decoder->packetCommonNs() : 0;
-        return s;
+        std::string_view type;
+        const char *head = nullptr;
+        if (!layout || !layout->fileOf(rec, type, head))
+            return false;
+        // An imported vendor CSV's pc_counter is the chunks' time, written back as it was.
+        const double pcCounterMs = pcCounterIsChunkTime ? double(hostNs) / 1e6 : double(hostNs - firstNs) / 1e6;
+        Output *out = output(QString::fromLatin1(type.data(), qsizetype(type.size())), head);
+        if (out)
+            layout->appendRow(out->buf, rec, pcCounterMs, keptCells);
+        keptCells.clear();
+        written(out);
+        return true;
     }
 
-    void onPacket(const hp::Packet &p, int64_t hostNs) override
+    // Each sample of the capture's family, stamped by its decoder as the live session stamped it.
+    void onSample(const model::Sample &s, const decode::Record &rec) override
     {
-        const double hostMs = double(hostNs - firstNs) / 1e6;
         switch (m_o.format) {
-        case CaptureExporter::Format::VendorCsv: {
-            Output *out = nullptr;
-            if (const auto *h = std::get_if<hp::Hi91>(&p)) {
-                if ((out = output(QStringLiteral("HI91"), vendor_csv::hi91Header())))
-                    vendor_csv::appendRow(out->buf, *h, pcCounterIsChunkTime ? double(hostNs) / 1e6 : hostMs, keptCells);
-                keptCells.clear();
-            } else if (const auto *h81 = std::get_if<hp::Hi81>(&p)) {
-                if ((out = output(QStringLiteral("HI81"), vendor_csv::hi81Header())))
-                    vendor_csv::appendRow(out->buf, *h81, hostMs);
-            } else if (const auto *h83 = std::get_if<hp::Hi83>(&p)) {
-                if ((out = output(QStringLiteral("HI83"), vendor_csv::hi83Header())))
-                    vendor_csv::appendRow(out->buf, *h83, hostMs);
-            } else {
-                ++m_r.skipped;
-                return;
-            }
-            written(out);
+        case CaptureExporter::Format::VendorCsv:
+            if (!vendorRow(rec, s.hostTimeNs))
+                ++m_r.skipped; // the vendor's tool has no layout for it
             break;
-        }
         case CaptureExporter::Format::TidyCsv: {
             Output *out = output(QString(), nullptr);
             if (out)
-                CaptureExporter::appendTidyRow(out->buf, timed(hp::toSample(p), hostNs), tagOf(p), firstNs);
+                CaptureExporter::appendTidyRow(out->buf, s, rec.tag, firstNs);
             written(out);
             break;
         }
         case CaptureExporter::Format::JsonLines: {
             Output *out = output(QString(), nullptr);
             if (out) {
-                out->buf += format::sampleToJson(timed(hp::toSample(p), hostNs), worldFrame);
+                out->buf += format::sampleToJson(s, worldFrame);
                 out->buf += '\n';
             }
             written(out);
             break;
         }
         case CaptureExporter::Format::Mcap:
-            mcapWrite(timed(hp::toSample(p), hostNs));
+            mcapWrite(s);
             break;
         case CaptureExporter::Format::Mat:
-            matWrite(timed(hp::toSample(p), hostNs));
+            matWrite(s);
             break;
         }
     }
 
-    // An HEC495 capture's records and angles: tidy CSV and JSON Lines; the vendor's tool has no
-    // layout for them.
-    void onSample(const model::Sample &s, int64_t hostNs) override
+    void onText(decode::TextKind kind, const std::string &sentence, int64_t) override
     {
-        Output *out = nullptr;
-        if (m_o.format == CaptureExporter::Format::VendorCsv) {
-            ++m_r.skipped;
+        if (kind == decode::TextKind::Line)
             return;
-        }
-        if (m_o.format == CaptureExporter::Format::Mcap || m_o.format == CaptureExporter::Format::Mat) {
-            model::Sample t = s;
-            t.hostTimeNs = hostNs;
-            if (m_o.format == CaptureExporter::Format::Mcap)
-                mcapWrite(t);
-            else
-                matWrite(t);
-            return;
-        }
-        if ((out = output(QString(), nullptr))) {
-            if (m_o.format == CaptureExporter::Format::TidyCsv) {
-                model::Sample t = s;
-                t.hostTimeNs = hostNs;
-                CaptureExporter::appendTidyRow(out->buf, t, 0, firstNs);
-            } else {
-                out->buf += format::sampleToJson(s, worldFrame);
-                out->buf += '\n';
-            }
-        }
-        written(out);
-    }
-
-    void onNmea(const std::string &sentence, int64_t) override
-    {
         Output *out = nullptr;
         if (m_o.format == CaptureExporter::Format::VendorCsv) {
             if ((out = output(QStringLiteral("NMEA"), nullptr))) {
@@ -527,9 +483,13 @@ CaptureExporter::Result CaptureExporter::run(const QString &capturePath, const O
         r.notes << tr("The module reports its attitude in North-West-Up (CONFIG IMU COORD 4); the vendor CSV's "
                       "layout has no column to say so: its angles and quaternion are NWU.");
     capture::CaptureDecoder decoder;
-    decoder.configure(reader.header());
-    sink.decoder = &decoder;
+    if (!decoder.configure(reader.header())) {
+        r.error = decoder.error();
+        return r;
+    }
     sink.header = &reader.header();
+    if (options.format == Format::VendorCsv)
+        sink.layout = decode::vendorLayoutFor(decoder.family());
     sink.pcCounterIsChunkTime = reader.header().value(capture::CaptureHeader::kPcCounter) == "chunk time";
     capture::CaptureReader::Chunk c;
     capture::CaptureReader::Result res;
@@ -552,8 +512,9 @@ CaptureExporter::Result CaptureExporter::run(const QString &capturePath, const O
         if (c.kind == capture::ChunkVendorCells) {
             // For the frame of the next chunk (only the vendor CSV has columns for them).
             if (rel >= fromNs && options.format == Format::VendorCsv)
-                sink.keptCells =
-                    vendor_csv::decodeCells(std::string_view(reinterpret_cast<const char *>(c.data), c.size));
+                if (sink.layout)
+                    sink.keptCells =
+                        sink.layout->decodeCells(std::string_view(reinterpret_cast<const char *>(c.data), c.size));
             continue;
         }
         if (rel >= fromNs)

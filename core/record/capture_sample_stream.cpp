@@ -6,6 +6,8 @@ bool CaptureSampleStream::open(const QString &path, QString *error)
 {
     if (!m_reader.open(path, error))
         return false;
+    // A family without an offline decoder (Modbus) gives no samples: the session's export
+    // leaves the device out and says so.
     m_decoder.configure(m_reader.header());
     return true;
 }
@@ -33,19 +35,9 @@ model::Sample CaptureSampleStream::take()
     return s;
 }
 
-void CaptureSampleStream::onPacket(const protocol::hipnuc::Packet &p, int64_t hostNs)
+void CaptureSampleStream::onSample(const model::Sample &sample, const decode::Record &)
 {
-    model::Sample s = protocol::hipnuc::toSample(p);
-    s.hostTimeNs = hostNs;
-    s.commonTimeNs = m_decoder.packetCommonNs();
-    push(std::move(s));
-}
-
-void CaptureSampleStream::onSample(const model::Sample &sample, int64_t hostNs)
-{
-    model::Sample s = sample;
-    s.hostTimeNs = hostNs;
-    push(std::move(s));
+    push(sample);
 }
 
 void CaptureSampleStream::push(model::Sample s)

@@ -28,8 +28,7 @@ public:
     // arrival plus the offset where it has no common time.
     int64_t key(const model::Sample &s) const { return s.commonTimeNs != 0 ? s.commonTimeNs : s.hostTimeNs + offsetNs; }
 
-    void onPacket(const protocol::hipnuc::Packet &p, int64_t hostNs) override;
-    void onSample(const model::Sample &sample, int64_t hostNs) override;
+    void onSample(const model::Sample &sample, const decode::Record &record) override;
 
 private:
     void push(model::Sample s);

@@ -4,6 +4,7 @@
 #include "protocol/nmea/nmea_sample.h"
 #include "protocol/stream/stream_demux.h"
 #include "capture/capture_format.h"
+#include "decode/hipnuc_stream_decoder.h"
 #include "record/converted_capture.h"
 #include "capture/capture_reader.h"
 #include "record/csv_capture_converter.h"
@@ -220,7 +221,7 @@ CaptureSource::RawResult CaptureSource::convertRawDump(const QString &rawPath, c
     // No pause was recorded: like `imudesk-cli decode`, only the end of the file releases held bytes.
     header.set(capture::CaptureHeader::kIdleMarkers, "1");
     ConvertedCapture out;
-    if (!out.open(capturePath, rawPath, "raw byte dump", header, &r.error))
+    if (!out.open(capturePath, rawPath, "raw byte dump", decode::HipnucStreamDecoder::kFamily, header, &r.error))
         return r;
     Scan scan;
     DeviceClock clock;

@@ -6,7 +6,7 @@
 
 namespace imudesk::record {
 
-bool ConvertedCapture::open(const QString &path, const QString &sourcePath, const char *linkKind,
+bool ConvertedCapture::open(const QString &path, const QString &sourcePath, const char *linkKind, const char *family,
                             const capture::CaptureHeader &header, QString *error)
 {
     m_file.setFileName(path);
@@ -17,6 +17,7 @@ bool ConvertedCapture::open(const QString &path, const QString &sourcePath, cons
     }
     capture::CaptureHeader h = header;
     h.set(capture::CaptureHeader::kLinkKind, linkKind);
+    h.set(capture::CaptureHeader::kFamily, family);
     h.set(capture::CaptureHeader::kPort, QFileInfo(sourcePath).fileName().toStdString());
     h.set(capture::CaptureHeader::kApplication, "imudesk");
     m_buf = capture::encodeFileHeader(h);

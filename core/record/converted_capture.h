@@ -20,7 +20,8 @@ class ConvertedCapture {
 public:
     // Creates path with a header naming the link kind and the source file; header's keys are
     // added. False with a message when the file cannot be written.
-    bool open(const QString &path, const QString &sourcePath, const char *linkKind, const capture::CaptureHeader &header,
+    bool open(const QString &path, const QString &sourcePath, const char *linkKind, const char *family,
+              const capture::CaptureHeader &header,
               QString *error);
     void append(int64_t monotonicNs, const uint8_t *data, size_t n, capture::ChunkKind kind = capture::ChunkReceived);
     // Writes what is buffered and closes; false (file removed) with a message when a write failed.

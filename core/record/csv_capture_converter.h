@@ -1,5 +1,5 @@
 #pragma once
-// Turns a CSV written by the vendor's PC tool (HI91 layout, see vendor_csv.h) into a
+// Turns a CSV written by the vendor's PC tool (HI91 layout, see decode/hipnuc_vendor_csv.h) into a
 // capture file, so that old logs are replayed, exported and analysed like recordings:
 // each row becomes an HI91 frame (main_status 0: the layout has no status column) in its
 // own chunk, stamped with pc_counter as the arrival time. Malformed lines are reported

@@ -30,8 +30,7 @@ FileAnalysis::Outcome FileAnalysis::run(const QString &path, const std::string &
         const QString capturePath = kind == CaptureSource::Kind::RawDump ? source.capturePath() : path;
         struct Sink : capture::CaptureDecoder::Sink {
             SampleAnalyzer *a = nullptr;
-            void onPacket(const protocol::hipnuc::Packet &p, int64_t) override { a->add(protocol::hipnuc::toSample(p)); }
-            void onSample(const model::Sample &s, int64_t) override { a->add(s); }
+            void onSample(const model::Sample &s, const decode::Record &) override { a->add(s); }
         } sink;
         sink.a = &analyzer;
         capture::CaptureReader reader;
@@ -39,7 +38,10 @@ FileAnalysis::Outcome FileAnalysis::run(const QString &path, const std::string &
             return o;
         const double total = double(std::max<qint64>(reader.size(), 1));
         capture::CaptureDecoder decoder;
-        decoder.configure(reader.header());
+        if (!decoder.configure(reader.header())) {
+            o.error = decoder.error();
+            return o;
+        }
         capture::CaptureReader::Chunk c;
         capture::CaptureReader::Result r;
         qint64 nextReport = 0;

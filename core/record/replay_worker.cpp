@@ -1,10 +1,8 @@
 #include "replay_worker.h"
 
 #include "model/main_status.h"
-#include "protocol/nmea/nmea_sample.h"
 
 #include "device/stream_counters.h"
-#include "protocol/hipnuc/frame_decoder.h"
 
 #include <QFileInfo>
 
@@ -44,6 +42,15 @@ void ReplayWorker::open(const QString &path, const ReplayTimeline &timeline)
         Q_EMIT errorOccurred(error);
         return;
     }
+    // The decoder of the family the capture names; a family without one is refused by name.
+    m_decoder.setNmeaSamples(true); // positions and fixes in the values, as live
+    if (!m_decoder.configure(m_reader.header())) {
+        error = tr("%1: %2").arg(QFileInfo(path).fileName(), m_decoder.error());
+        m_reader.close();
+        Q_EMIT stateChanged(device::SessionState::Failed, error);
+        Q_EMIT errorOccurred(error);
+        return;
+    }
     // Index the timeline (one entry per kIndexStepNs) so that seeking reads little.
     m_index.clear();
     capture::CaptureReader::Chunk c;
@@ -72,9 +79,8 @@ void ReplayWorker::open(const QString &path, const ReplayTimeline &timeline)
                                           : m_reader.message()));
     m_durationNs = std::max(lastNs, m_timeline.endNs > m_firstNs ? m_timeline.endNs - m_firstNs : int64_t(0));
     m_reader.seek(m_reader.dataStart());
-    m_decoder.reset();
-    m_decoder.resetCounters();
     m_decoder.configure(m_reader.header());
+    m_decoder.resetCounters();
     m_gaps.clear();
     m_posNs = 0;
     m_drained = false;
@@ -237,22 +243,13 @@ void ReplayWorker::tick()
     Q_EMIT finished();
 }
 
-void ReplayWorker::onPacket(const protocol::hipnuc::Packet &packet, int64_t hostNs)
+void ReplayWorker::onSample(const model::Sample &sample, const decode::Record &)
 {
-    m_batch.push_back(protocol::hipnuc::toSample(packet));
+    m_batch.push_back(sample); // its arrival and common time as the live session had them
     model::Sample &s = m_batch.back();
-    s.hostTimeNs = hostNs;
-    s.commonTimeNs = m_decoder.packetCommonNs(); // as the live session had it
     applyOffset(s);
     if (s.has(model::FieldDeviceTime))
         m_gaps.add(s.source, s.deviceTimeMs, model::MainStatus::timeBase(s.has(model::FieldMainStatus), s.mainStatus));
-}
-
-void ReplayWorker::onSample(const model::Sample &sample, int64_t hostNs)
-{
-    m_batch.push_back(sample);
-    m_batch.back().hostTimeNs = hostNs;
-    applyOffset(m_batch.back());
 }
 
 void ReplayWorker::applyOffset(model::Sample &s) const
@@ -263,13 +260,10 @@ void ReplayWorker::applyOffset(model::Sample &s) const
         s.commonTimeNs = (s.commonTimeNs != 0 ? s.commonTimeNs : s.hostTimeNs) + m_timeline.offsetNs;
 }
 
-void ReplayWorker::onNmea(const std::string &sentence, int64_t hostNs)
+void ReplayWorker::onText(decode::TextKind kind, const std::string &text, int64_t)
 {
-    if (auto s = protocol::nmea::sampleOf(sentence)) {
-        s->hostTimeNs = hostNs;
-        m_batch.push_back(std::move(*s));
-    }
-    Q_EMIT nmeaReceived(QString::fromStdString(sentence));
+    if (kind != decode::TextKind::Line)
+        Q_EMIT nmeaReceived(QString::fromStdString(text));
 }
 
 void ReplayWorker::flushBatch()
@@ -292,21 +286,8 @@ void ReplayWorker::reportPosition(bool force)
 void ReplayWorker::publishStats()
 {
     device::SessionStats s;
-    device::fillStreamCounters(m_decoder.demux(), m_decoder.payloadErrors(), m_gaps, s);
-    if (m_decoder.witlink()) { // an HEC495 capture: its own frames (the demultiplexer saw only the text)
-        const auto &c = m_decoder.witlinkCounters();
-        s.bytesIn = c.bytesIn;
-        s.frames = c.frames;
-        s.crcErrors = c.checksumErrors;
-        s.lengthErrors = c.lengthErrors;
-        s.framesByType = m_decoder.witlinkFramesByType();
-    } else if (m_decoder.can()) { // CAN frame records
-        const auto &c = m_decoder.canCounters();
-        s.frames = c.frames;
-        s.lengthErrors = c.malformed;
-        s.bytesSkipped = c.unknownFrames;
-        s.framesByType = m_decoder.canFramesByType();
-    }
+    device::addDecodeCounters(m_decoder.counters(), s); // the family's decoder's, as live
+    device::addGapCounters(m_gaps, s);
     s.baud = m_baud;
     const qint64 nowMs = m_statsClock.isValid() ? m_statsClock.elapsed() : 0;
     const double dt = double(nowMs - m_lastStatsMs) / 1000.0;

@@ -49,9 +49,8 @@ private:
         qint64 offset;
         int64_t relNs; // chunk time since the first chunk
     };
-    void onPacket(const protocol::hipnuc::Packet &packet, int64_t hostNs) override;
-    void onSample(const model::Sample &sample, int64_t hostNs) override;
-    void onNmea(const std::string &sentence, int64_t hostNs) override;
+    void onSample(const model::Sample &sample, const decode::Record &record) override;
+    void onText(decode::TextKind kind, const std::string &text, int64_t hostNs) override;
     void tick();
     void seekTo(int64_t relNs);
     void anchor();

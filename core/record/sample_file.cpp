@@ -2,7 +2,6 @@
 
 #include "capture/capture_decoder.h"
 #include "capture/capture_reader.h"
-#include "protocol/hipnuc/payloads.h"
 #include "record/capture_source.h"
 #include "record/session_manifest.h"
 
@@ -25,12 +24,14 @@ SampleFile::Opened SampleFile::forEachCaptureSample(const QString &path,
         return r;
     struct Sink : capture::CaptureDecoder::Sink {
         const std::function<void(const model::Sample &)> *fn = nullptr;
-        void onPacket(const protocol::hipnuc::Packet &p, int64_t) override { (*fn)(protocol::hipnuc::toSample(p)); }
-        void onSample(const model::Sample &s, int64_t) override { (*fn)(s); }
+        void onSample(const model::Sample &s, const decode::Record &) override { (*fn)(s); }
     } sink;
     sink.fn = &onSample;
     capture::CaptureDecoder decoder;
-    decoder.configure(reader.header());
+    if (!decoder.configure(reader.header())) {
+        r.error = decoder.error();
+        return r;
+    }
     capture::CaptureReader::Chunk c;
     capture::CaptureReader::Result res;
     while ((res = reader.next(c)) == capture::CaptureReader::Result::Chunk || res == capture::CaptureReader::Result::Damaged)

@@ -4,7 +4,7 @@
 #include "model/sample.h"
 #include "clock/trigger_pairing.h"
 #include "record/capture_sample_stream.h"
-#include "record/csv_number.h"
+#include "format/csv_number.h"
 #include "capture/device_name.h"
 #include "record/mat_export.h"
 #include "capture/mcap_recording.h"
@@ -22,6 +22,8 @@
 #include <set>
 
 namespace imudesk::record {
+
+namespace csv = format::csv;
 
 namespace {
 

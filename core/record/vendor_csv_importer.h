@@ -1,5 +1,5 @@
 #pragma once
-// Reads HI91 CSV files in the layout of the vendor's PC tool (vendor_csv.h) back into
+// Reads HI91 CSV files in the layout of the vendor's PC tool (decode/hipnuc_vendor_csv.h) back into
 // samples, streaming, so old logs can be replayed, plotted, analysed and used for
 // magnetometer calibration. Columns are found by their header names (the vendor's order
 // is not required); a malformed line is reported with its line number and skipped.

@@ -49,9 +49,11 @@ struct ReferenceSink : capture::CaptureDecoder::Sink {
     FILE *out = nullptr;
     int64_t firstNs = 0;
     uint64_t rows = 0;
-    void onPacket(const protocol::hipnuc::Packet &p, int64_t hostNs) override
+    void onSample(const model::Sample &s, const decode::Record &r) override
     {
-        const auto *h = std::get_if<protocol::hipnuc::Hi91>(&p);
+        const int64_t hostNs = s.hostTimeNs;
+        const auto *p = r.family == std::string_view("HiPNUC serial") ? static_cast<const protocol::hipnuc::Packet *>(r.native) : nullptr;
+        const auto *h = p ? std::get_if<protocol::hipnuc::Hi91>(p) : nullptr;
         if (!h)
             return;
         const double an = std::sqrt(h->acc[0] * h->acc[0] + h->acc[1] * h->acc[1] + h->acc[2] * h->acc[2]);

@@ -34,9 +34,10 @@ struct Counter : capture::CaptureDecoder::Sink {
     bool have = false;
     uint32_t first = 0, last = 0;
     uint64_t slots() const { return have ? uint64_t(last - first) + 1 : 0; }
-    void onPacket(const protocol::hipnuc::Packet &p, int64_t) override
+    void onSample(const model::Sample &, const decode::Record &r) override
     {
-        const auto *h = std::get_if<protocol::hipnuc::Hi91>(&p);
+        const auto *p = r.family == std::string_view("HiPNUC serial") ? static_cast<const protocol::hipnuc::Packet *>(r.native) : nullptr;
+        const auto *h = p ? std::get_if<protocol::hipnuc::Hi91>(p) : nullptr;
         if (!h)
             return;
         ++frames;
@@ -142,7 +143,7 @@ int main(int argc, char **argv)
                 seconds, static_cast<unsigned long long>(counter.frames), double(size) / 1e6,
                 static_cast<unsigned long long>(missing), static_cast<unsigned long long>(counter.gaps),
                 static_cast<unsigned long long>(dropped),
-                static_cast<unsigned long long>(decoder.demux().frameCounters().crcErrors),
+                static_cast<unsigned long long>(decoder.counters().crcErrors),
                 static_cast<unsigned long long>(lost), reason.isEmpty() ? "" : qPrintable(QStringLiteral("; ") + reason));
     return lost == 0 && reason.isEmpty() && counter.frames > uint64_t(seconds) * 900 ? 0 : 1;
 }

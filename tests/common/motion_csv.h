@@ -2,7 +2,7 @@
 // Vendor HI91 CSV files of a module at rest or moved (issue 53: Allan deviation needs a still
 // recording), for the analysis's tests: 100 Hz, the given seconds, deterministic noise.
 #include "protocol/hipnuc/payloads.h"
-#include "record/vendor_csv.h"
+#include "decode/hipnuc_vendor_csv.h"
 
 #include <QFile>
 #include <QString>
@@ -29,7 +29,7 @@ inline bool write(const QString &path, Motion motion, double seconds = 60, uint3
     std::mt19937 rng(seed);
     std::normal_distribution<double> n;
     const double gyroNoise = motion == Motion::NoisyStill ? 0.4 : 0.02;
-    std::string text = imudesk::record::vendor_csv::hi91Header();
+    std::string text = imudesk::decode::vendor_csv::hi91Header();
     text += '\n';
     const int rows = int(seconds * 100);
     for (int i = 0; i < rows; ++i) {
@@ -52,7 +52,7 @@ inline bool write(const QString &path, Motion motion, double seconds = 60, uint3
         h.gyr = {float(gx + gyroNoise * n(rng)), float(gy + gyroNoise * n(rng)), float(gz + gyroNoise * n(rng))};
         h.acc = {float(std::sin(tilt) + 0.001 * n(rng)), float(0.001 * n(rng)), float(std::cos(tilt) + 0.001 * n(rng))};
         h.mag = {20, -5, 40};
-        imudesk::record::vendor_csv::appendRow(text, h, 10.0 * i);
+        imudesk::decode::vendor_csv::appendRow(text, h, 10.0 * i);
     }
     QFile f(path);
     return f.open(QIODevice::WriteOnly) && f.write(text.data(), qint64(text.size())) == qint64(text.size());

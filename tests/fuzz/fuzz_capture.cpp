@@ -31,7 +31,7 @@ using namespace imudesk;
 namespace {
 struct CountingSink : CaptureDecoder::Sink {
     uint64_t packets = 0;
-    void onPacket(const imudesk::protocol::hipnuc::Packet &, int64_t) override { ++packets; }
+    void onSample(const imudesk::model::Sample &, const imudesk::decode::Record &) override { ++packets; }
 };
 } // namespace
 

@@ -379,8 +379,7 @@ private Q_SLOTS:
 
         struct Collect : capture::CaptureDecoder::Sink {
             std::vector<model::Sample> samples;
-            void onPacket(const protocol::hipnuc::Packet &, int64_t) override {}
-            void onSample(const model::Sample &s, int64_t) override { samples.push_back(s); }
+            void onSample(const model::Sample &s, const decode::Record &) override { samples.push_back(s); }
         } offline;
         capture::CaptureReader reader;
         QString error;
@@ -388,14 +387,15 @@ private Q_SLOTS:
         QCOMPARE(reader.header().value(capture::CaptureHeader::kLinkKind), std::string("CAN"));
         QCOMPARE(reader.header().value(capture::CaptureHeader::kCanProtocol), std::string(protocolName(CanProtocol(protocol))));
         capture::CaptureDecoder decoder;
-        decoder.configure(reader.header());
+        QVERIFY2(decoder.configure(reader.header()), qPrintable(decoder.error()));
+        QCOMPARE(decoder.family(), std::string("CAN"));
         capture::CaptureReader::Chunk c;
         while (reader.next(c) == capture::CaptureReader::Result::Chunk)
             decoder.feedChunk(c, offline);
         decoder.finish(offline);
         QVERIFY2(offline.samples.size() > 250, qPrintable(QString::number(offline.samples.size())));
-        QVERIFY(decoder.canCounters().frames >= offline.samples.size());
-        QCOMPARE(decoder.canCounters().malformed, 0u);
+        QVERIFY(decoder.counters().frames >= offline.samples.size());
+        QCOMPARE(decoder.counters().lengthErrors, 0u); // malformed frames
         // A recording starts and ends between reads: the decoded samples are a run of the live ones,
         // one for one (same arrival), with the same values and common times.
         size_t j0 = 0;

@@ -5,7 +5,7 @@
 #include "record/capture_exporter.h"
 #include "record/csv_capture_converter.h"
 #include "record/session_manifest.h"
-#include "record/vendor_csv.h"
+#include "decode/hipnuc_vendor_csv.h"
 
 #include <Eigen/Geometry>
 
@@ -71,7 +71,7 @@ QString writeVendorCsv(const QTemporaryDir &dir, const QString &name, int rows =
     const Eigen::Vector3d field(0, 25, -43.30127), b(25, -18, 12);
     std::mt19937_64 g(17);
     std::normal_distribution<double> n;
-    std::string text = imudesk::record::vendor_csv::hi91Header();
+    std::string text = imudesk::decode::vendor_csv::hi91Header();
     text += '\n';
     for (int i = 0; i < rows; ++i) {
         const Eigen::Quaterniond q(Eigen::Vector4d(n(g), n(g), n(g), n(g)).normalized());
@@ -83,7 +83,7 @@ QString writeVendorCsv(const QTemporaryDir &dir, const QString &name, int rows =
         h.acc = {0.01f, -0.02f, 1.0f};
         h.gyr = {0.1f, -0.1f, 0.05f};
         h.mag = {float(m.x()), float(m.y()), float(m.z())};
-        imudesk::record::vendor_csv::appendRow(text, h, 5000.0 + 10 * i);
+        imudesk::decode::vendor_csv::appendRow(text, h, 5000.0 + 10 * i);
     }
     const QString path = dir.filePath(name);
     QFile f(path);

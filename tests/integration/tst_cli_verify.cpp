@@ -7,7 +7,7 @@
 #include "../common/motion_csv.h"
 #include "../common/test_main.h"
 #include "../common/verify_rig.h"
-#include "record/vendor_csv.h"
+#include "decode/hipnuc_vendor_csv.h"
 #include "sim/hec495_simulator.h"
 #include "sim/hipnuc_simulator.h"
 #include "sim/pty_simulator.h"
@@ -23,7 +23,7 @@ namespace {
 // The module's samples as the vendor's PC tool writes its HI91 output (200 Hz: whole ms).
 bool writeVendorCsv(const QString &path, const test::HandTurnedModule &module)
 {
-    std::string text = record::vendor_csv::hi91Header();
+    std::string text = decode::vendor_csv::hi91Header();
     text += '\n';
     for (const verify::MotionSample &s : module.record()) {
         protocol::hipnuc::Hi91 h;
@@ -40,7 +40,7 @@ bool writeVendorCsv(const QString &path, const test::HandTurnedModule &module)
         h.pitch = float(e.pitch);
         h.yaw = float(e.yaw);
         h.quat = {float(s.q.w()), float(s.q.x()), float(s.q.y()), float(s.q.z())};
-        record::vendor_csv::appendRow(text, h, s.tS * 1000);
+        decode::vendor_csv::appendRow(text, h, s.tS * 1000);
     }
     QFile f(path);
     return f.open(QIODevice::WriteOnly) && f.write(text.data(), qint64(text.size())) == qint64(text.size());

@@ -8,7 +8,7 @@
 #include "record/capture_exporter.h"
 #include "capture/capture_reader.h"
 #include "record/csv_capture_converter.h"
-#include "record/vendor_csv.h"
+#include "decode/hipnuc_vendor_csv.h"
 #include "record/vendor_csv_importer.h"
 
 #include <QBuffer>
@@ -32,21 +32,18 @@ Decoded decodeCapture(const QString &path)
 {
     struct Sink : capture::CaptureDecoder::Sink {
         Decoded d;
-        const capture::CaptureDecoder *decoder = nullptr;
-        void onPacket(const protocol::hipnuc::Packet &p, int64_t hostNs) override
+        void onSample(const model::Sample &s, const decode::Record &) override { d.samples.push_back(s); }
+        void onText(decode::TextKind kind, const std::string &s, int64_t) override
         {
-            d.samples.push_back(protocol::hipnuc::toSample(p));
-            d.samples.back().hostTimeNs = hostNs;
-            d.samples.back().commonTimeNs = decoder->packetCommonNs();
+            if (kind != decode::TextKind::Line)
+                d.nmea.push_back(s);
         }
-        void onNmea(const std::string &s, int64_t) override { d.nmea.push_back(s); }
     } sink;
     capture::CaptureReader r;
     QString error;
     r.open(path, &error);
     capture::CaptureDecoder decoder;
     decoder.configure(r.header());
-    sink.decoder = &decoder;
     capture::CaptureReader::Chunk c;
     while (r.next(c) == capture::CaptureReader::Result::Chunk)
         decoder.feedChunk(c, sink);
@@ -257,7 +254,7 @@ private Q_SLOTS:
         QFETCH(int, frames);
         struct Sink : capture::CaptureDecoder::Sink {
             int packets = 0;
-            void onPacket(const protocol::hipnuc::Packet &, int64_t) override { ++packets; }
+            void onSample(const model::Sample &, const decode::Record &) override { ++packets; }
         } sink;
         capture::CaptureHeader h;
         if (markersRecorded)
@@ -390,7 +387,7 @@ private Q_SLOTS:
         QTest::addColumn<int>("samples");
         QTest::addColumn<int>("badLine");
         QTest::addColumn<QString>("message");
-        const QByteArray head = QByteArray(record::vendor_csv::hi91Header()) + "\n";
+        const QByteArray head = QByteArray(decode::vendor_csv::hi91Header()) + "\n";
         const QByteArray good = "HI91,1,100,0.1,0.2,1,0,0,0,20,-5,40,1,2,3,0,0,0,1,0,0,0,25,100000,1,0,45\n";
         QTest::newRow("good") << head + good + good << 2 << 0 << QString();
         QTest::newRow("bad number") << head + good + QByteArray(good).replace("0.2", "0.2x") + good << 2 << 3

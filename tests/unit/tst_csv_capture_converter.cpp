@@ -6,13 +6,14 @@
 #include "record/capture_exporter.h"
 #include "capture/capture_reader.h"
 #include "record/csv_capture_converter.h"
-#include "record/vendor_csv.h"
+#include "decode/hipnuc_vendor_csv.h"
 
 #include <QFile>
 #include <QTemporaryDir>
 #include <QTest>
 
 using namespace imudesk::record;
+using namespace imudesk::decode;
 using namespace imudesk::capture;
 using namespace imudesk;
 

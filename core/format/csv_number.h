@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <string>
 
-namespace imudesk::record::csv {
+namespace imudesk::format::csv {
 
 inline void appendNumber(std::string &out, float v)
 {
@@ -64,4 +64,4 @@ inline void appendFixed(std::string &out, double v, int decimals)
     out.append(frac, size_t(decimals));
 }
 
-} // namespace imudesk::record::csv
+} // namespace imudesk::format::csv

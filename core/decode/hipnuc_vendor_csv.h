@@ -1,5 +1,5 @@
 #pragma once
-// Rows in the layout of the vendor's PC tool (one file per frame type, one row per
+// HiPNUC: rows in the layout of the vendor's PC tool (one file per frame type, one row per
 // frame, the first column holding the frame type). The HI91 header is exactly the
 // vendor's; HI81 and HI83 follow the same pattern with every field of their frame
 // (docs/FILE_FORMATS.md, "CSV layouts"). pc_counter is the host's arrival time in ms since the start of
@@ -12,7 +12,7 @@
 #include <utility>
 #include <vector>
 
-namespace imudesk::record::vendor_csv {
+namespace imudesk::decode::vendor_csv {
 
 const char *hi91Header();
 const char *hi81Header();
@@ -36,4 +36,4 @@ std::vector<std::string> hi91Cells(const protocol::hipnuc::Hi91 &p, double pcCou
 std::vector<std::string> hi91Names();
 void appendRow(std::string &out, const protocol::hipnuc::Hi83 &p, double pcCounterMs);
 
-} // namespace imudesk::record::vendor_csv
+} // namespace imudesk::decode::vendor_csv

@@ -1,15 +1,18 @@
-#include "vendor_csv.h"
+#include "hipnuc_vendor_csv.h"
 
-#include "record/csv_number.h"
+#include "decode/hipnuc_stream_decoder.h"
+#include "decode/vendor_layout.h"
+
+#include "format/csv_number.h"
 
 #include <cmath>
 #include <cstdio>
 
-namespace imudesk::record::vendor_csv {
+namespace imudesk::decode::vendor_csv {
 
 namespace hp = protocol::hipnuc;
-using csv::appendInt;
-using csv::appendNumber;
+using format::csv::appendInt;
+using format::csv::appendNumber;
 
 const char *hi91Header()
 {
@@ -309,4 +312,64 @@ void appendRow(std::string &out, const hp::Hi83 &p, double pcCounterMs)
     out += '\n';
 }
 
-} // namespace imudesk::record::vendor_csv
+} // namespace imudesk::decode::vendor_csv
+
+namespace imudesk::decode {
+
+namespace {
+
+// The vendor's CSV of a HiPNUC module's packets: HI91, HI81 and HI83 have a layout; HI92
+// (raw integers) has none in the vendor's tool.
+class HipnucVendorLayout final : public VendorLayout {
+public:
+    static const protocol::hipnuc::Packet *packetOf(const Record &r)
+    {
+        return r.family == std::string_view(HipnucStreamDecoder::kFamily)
+                   ? static_cast<const protocol::hipnuc::Packet *>(r.native)
+                   : nullptr;
+    }
+    bool fileOf(const Record &record, std::string_view &type, const char *&header) const override
+    {
+        const auto *p = packetOf(record);
+        if (!p)
+            return false;
+        if (std::holds_alternative<protocol::hipnuc::Hi91>(*p)) {
+            type = "HI91";
+            header = vendor_csv::hi91Header();
+        } else if (std::holds_alternative<protocol::hipnuc::Hi81>(*p)) {
+            type = "HI81";
+            header = vendor_csv::hi81Header();
+        } else if (std::holds_alternative<protocol::hipnuc::Hi83>(*p)) {
+            type = "HI83";
+            header = vendor_csv::hi83Header();
+        } else {
+            return false;
+        }
+        return true;
+    }
+    void appendRow(std::string &out, const Record &record, double pcCounterMs, const Cells &keep) const override
+    {
+        const auto *p = packetOf(record);
+        if (!p)
+            return;
+        if (const auto *h = std::get_if<protocol::hipnuc::Hi91>(p))
+            vendor_csv::appendRow(out, *h, pcCounterMs, keep);
+        else if (const auto *h81 = std::get_if<protocol::hipnuc::Hi81>(p))
+            vendor_csv::appendRow(out, *h81, pcCounterMs);
+        else if (const auto *h83 = std::get_if<protocol::hipnuc::Hi83>(p))
+            vendor_csv::appendRow(out, *h83, pcCounterMs);
+    }
+    Cells decodeCells(std::string_view text) const override { return vendor_csv::decodeCells(text); }
+};
+
+} // namespace
+
+const VendorLayout *vendorLayoutFor(const std::string &family)
+{
+    static const HipnucVendorLayout hipnuc;
+    if (family == HipnucStreamDecoder::kFamily)
+        return &hipnuc;
+    return nullptr;
+}
+
+} // namespace imudesk::decode
