@@ -28,6 +28,7 @@ struct CaptureSpec {
     int64_t t0Ns = 5'000'000'000; // host time of the first frame's start (the chunks' clock)
     std::string serial;                          // device.serial in the header; empty: none
     std::map<std::string, std::string> config;   // the header's configuration snapshot
+    std::string linkKind;                        // link.kind in the header; empty: none (HiPNUC serial)
 };
 
 inline imudesk::protocol::hipnuc::Hi91 hi91(uint64_t i, std::mt19937 &rng, double rateHz)
@@ -61,6 +62,8 @@ inline qint64 writeCapture(const QString &path, const CaptureSpec &spec)
     header.set(imudesk::capture::CaptureHeader::kBaud, "921600");
     if (!spec.serial.empty())
         header.set(imudesk::capture::CaptureHeader::kSerial, spec.serial);
+    if (!spec.linkKind.empty())
+        header.set(imudesk::capture::CaptureHeader::kLinkKind, spec.linkKind);
     header.setConfig(spec.config);
     auto bytes = cap::encodeFileHeader(header);
     f.write(reinterpret_cast<const char *>(bytes.data()), qint64(bytes.size()));

@@ -391,6 +391,27 @@ private Q_SLOTS:
         QVERIFY(finishedB.wait(5000));
     }
 
+    // A capture of a family ImuDesk has no decoder for is refused with its name, not played
+    // as a HiPNUC stream that decodes as nothing (its bytes here are HiPNUC frames: decoded as
+    // HiPNUC they would play).
+    void aFamilyWithoutADecoderIsRefused()
+    {
+        synthetic::CaptureSpec spec;
+        spec.frames = 200;
+        spec.linkKind = "Xsens MTi serial";
+        const QString path = m_dir.filePath(QStringLiteral("xsens.imucap"));
+        QVERIFY(synthetic::writeCapture(path, spec) > 0);
+        ReplaySession replay;
+        QSignalSpy error(&replay, &ReplaySession::errorOccurred);
+        replay.open(path);
+        QVERIFY(error.wait(5000));
+        QCOMPARE(replay.state(), SessionState::Failed);
+        const QString why = error.at(0).at(0).toString();
+        QVERIFY2(why.contains(QStringLiteral("xsens.imucap")) && why.contains(QStringLiteral("\"Xsens MTi serial\" link")),
+                 qPrintable(why));
+        QCOMPARE(replay.store().totalAppended(), uint64_t(0));
+    }
+
     void missingFileFails()
     {
         ReplaySession replay;
