@@ -20,6 +20,7 @@ bool CaptureDecoder::configure(const CaptureHeader &header)
     m_error.clear();
     m_stream->setNmeaSamples(m_nmeaSamples);
     m_stream->configure(header.values);
+    m_stream->setBaud(header.baud()); // a frame's time on the wire
     return true;
 }
 

@@ -30,7 +30,8 @@ public:
     CaptureDecoder &operator=(CaptureDecoder &&) noexcept;
     ~CaptureDecoder();
 
-    // Follows the capture's header: its family's decoder, configured as the header says.
+    // Follows the capture's header: its family's decoder, configured as the header says (until
+    // then, and for a header naming no family: HiPNUC serial's, as captures before link kinds).
     // False (error() says why) when ImuDesk has no decoder for the family it names.
     bool configure(const CaptureHeader &header);
     const QString &error() const { return m_error; }

@@ -27,7 +27,6 @@ void CanStreamDecoder::configure(const std::map<std::string, std::string> &heade
                                .value_or(CanProtocol::Auto));
     m_decoder.setHec495Mode(numberOf(header, "can.hec495_mode"));
     m_node = numberOf(header, "can.node");
-    m_bitrate = std::max(0, numberOf(header, "link.baud"));
     m_merged = model::Sample{};
     m_reader.reset();
 }

@@ -31,7 +31,7 @@ public:
     void setHook(FrameHook *hook) { m_hook = hook; }
 
     const char *family() const override { return kFamily; }
-    // can.protocol, can.node, can.hec495_mode and link.baud (the bit rate).
+    // can.protocol, can.node and can.hec495_mode (the bit rate comes by setBaud).
     void configure(const std::map<std::string, std::string> &header) override;
     void setBaud(int bitrate) override { m_bitrate = bitrate; }
     void feed(const uint8_t *data, size_t n, int64_t hostNs, Sink &sink) override;

@@ -5,6 +5,8 @@
 #include "protocol/hipnuc/payloads.h"
 
 #include <cstdio>
+#include <iterator>
+#include <variant>
 
 namespace imudesk::decode {
 
@@ -13,37 +15,20 @@ using protocol::StreamEvent;
 
 namespace {
 
-const char *packetType(const hp::Packet &p)
-{
-    switch (p.index()) {
-    case 0: return "HI91";
-    case 1: return "HI92";
-    case 2: return "HI81";
-    default: return "HI83";
-    }
-}
-
-int packetTag(const hp::Packet &p)
-{
-    switch (p.index()) {
-    case 0: return hp::TagHi91;
-    case 1: return hp::TagHi92;
-    case 2: return hp::TagHi81;
-    default: return hp::TagHi83;
-    }
-}
+// The packet's name and tag, by its alternative in hp::Packet (Hi91, Hi92, Hi81, Hi83).
+struct PacketKind {
+    const char *type;
+    int tag;
+};
+constexpr PacketKind kPacketKinds[] = {{"HI91", hp::TagHi91}, {"HI92", hp::TagHi92}, {"HI81", hp::TagHi81}, {"HI83", hp::TagHi83}};
+static_assert(std::variant_size_v<hp::Packet> == std::size(kPacketKinds));
 
 } // namespace
 
-void HipnucStreamDecoder::configure(const std::map<std::string, std::string> &header)
+void HipnucStreamDecoder::configure(const std::map<std::string, std::string> &)
 {
-    const auto it = header.find("link.baud");
-    int baud = 0;
-    if (it != header.end())
-        std::sscanf(it->second.c_str(), "%d", &baud);
     m_demux.reset();
     m_clocks.clear();
-    m_clocks.setBaud(baud);
 }
 
 void HipnucStreamDecoder::feed(const uint8_t *data, size_t n, int64_t hostNs, Sink &sink)
@@ -133,8 +118,8 @@ void HipnucStreamDecoder::dispatch(int64_t hostNs, Sink &sink)
                     m_clocks.stamp(s, model::MainStatus::timeBase(s.has(model::FieldMainStatus), s.mainStatus));
                 Record r;
                 r.family = kFamily;
-                r.type = packetType(p);
-                r.tag = packetTag(p);
+                r.type = kPacketKinds[p.index()].type;
+                r.tag = kPacketKinds[p.index()].tag;
                 r.unitBytes = frameBytes;
                 r.native = &p;
                 sink.onSample(s, r);

@@ -328,19 +328,19 @@ public:
                    ? static_cast<const protocol::hipnuc::Packet *>(r.native)
                    : nullptr;
     }
-    bool fileOf(const Record &record, std::string_view &type, const char *&header) const override
+    bool fileOf(const Record &record, QString &type, const char *&header) const override
     {
         const auto *p = packetOf(record);
         if (!p)
             return false;
         if (std::holds_alternative<protocol::hipnuc::Hi91>(*p)) {
-            type = "HI91";
+            type = m_hi91;
             header = vendor_csv::hi91Header();
         } else if (std::holds_alternative<protocol::hipnuc::Hi81>(*p)) {
-            type = "HI81";
+            type = m_hi81;
             header = vendor_csv::hi81Header();
         } else if (std::holds_alternative<protocol::hipnuc::Hi83>(*p)) {
-            type = "HI83";
+            type = m_hi83;
             header = vendor_csv::hi83Header();
         } else {
             return false;
@@ -360,6 +360,9 @@ public:
             vendor_csv::appendRow(out, *h83, pcCounterMs);
     }
     Cells decodeCells(std::string_view text) const override { return vendor_csv::decodeCells(text); }
+
+private:
+    const QString m_hi91 = QStringLiteral("HI91"), m_hi81 = QStringLiteral("HI81"), m_hi83 = QStringLiteral("HI83");
 };
 
 } // namespace

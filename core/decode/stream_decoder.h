@@ -79,8 +79,8 @@ public:
     virtual ~StreamDecoder() = default;
     // The family's link kind ("HiPNUC serial"), as capture headers name it.
     virtual const char *family() const = 0;
-    // What a capture's header says about its stream (the header's key-value pairs: baud, CAN
-    // protocol and node). Also resets partial state and the clocks.
+    // What a capture's header says about its stream (the header's key-value pairs: the CAN
+    // protocol and node). Also resets partial state and the clocks. The rate comes by setBaud.
     virtual void configure(const std::map<std::string, std::string> &header) = 0;
     // The line's rate (a frame's time on the wire).
     virtual void setBaud(int baud) = 0;

@@ -5,6 +5,8 @@
 // made; a family without one has none, and its records are skipped (and counted).
 #include "decode/stream_decoder.h"
 
+#include <QString>
+
 #include <string>
 #include <string_view>
 #include <utility>
@@ -19,9 +21,10 @@ public:
     using Cells = std::vector<std::pair<std::string, std::string>>;
 
     virtual ~VendorLayout() = default;
-    // The file a record's row goes to: its type (the file's suffix: "HI91") and the header
-    // line; false when the layout has no row for the record.
-    virtual bool fileOf(const Record &record, std::string_view &type, const char *&header) const = 0;
+    // The file a record's row goes to: its type (the file's suffix: "HI91"; a string the layout
+    // keeps, shared, not made per row) and the header line; false when the layout has no row for
+    // the record.
+    virtual bool fileOf(const Record &record, QString &type, const char *&header) const = 0;
     // The record's row, pcCounterMs in its time column; `keep` overrides the cells it names.
     virtual void appendRow(std::string &out, const Record &record, double pcCounterMs, const Cells &keep) const = 0;
     // The kept cells as the capture stores them, back.

@@ -56,8 +56,7 @@ void CanFamily::opened(int)
     m_decoder.decoder() = CanDecoder(m_options.protocol);
     m_decoder.decoder().setHec495Mode(m_options.hec495Mode);
     m_lastDetected = CanProtocol::Auto;
-    m_target = m_options.node;
-    m_decoder.setNode(m_target);
+    m_decoder.setNode(m_options.node);
     m_seenNodes.clear();
     m_dataNodes.clear();
     engine().setState(SessionState::Connected, tr("connected to %1").arg(engine().transport().address()));
@@ -129,23 +128,21 @@ void CanFamily::onSample(const model::Sample &sample, const decode::Record &)
 
 void CanFamily::nodeFollowed(int node)
 {
-    m_target = node;
-    Q_EMIT targetNodeChanged(m_target);
+    Q_EMIT targetNodeChanged(node);
 }
 
 void CanFamily::follow(int node)
 {
-    m_target = node;
     m_decoder.setNode(node);
-    Q_EMIT targetNodeChanged(m_target);
+    Q_EMIT targetNodeChanged(node);
 }
 
 void CanFamily::describeCapture(capture::CaptureHeader &h) const
 {
     const CanProtocol p = m_options.protocol == CanProtocol::Auto ? m_decoder.decoder().detected() : m_options.protocol;
     h.set(capture::CaptureHeader::kCanProtocol, protocolName(p));
-    if (m_target >= 0)
-        h.set(capture::CaptureHeader::kCanNode, std::to_string(m_target));
+    if (m_decoder.node() >= 0)
+        h.set(capture::CaptureHeader::kCanNode, std::to_string(m_decoder.node()));
     if (m_options.hec495Mode >= 0)
         h.set(capture::CaptureHeader::kCanHec495Mode, std::to_string(m_options.hec495Mode));
 }
@@ -280,9 +277,9 @@ void CanFamily::unanswered(const Request &r, RequestResult &result)
         return;
     }
     if (result.status == RequestStatus::Timeout && s.expect == CanJobStep::Expect::NoPdoFrom
-        && !m_dataNodes.contains(m_target)) {
+        && !m_dataNodes.contains(m_decoder.node())) {
         result.message = tr("node %1 sent no data before \"%2\" either, so its effect cannot be seen: check the node ID")
-                             .arg(m_target)
+                             .arg(m_decoder.node())
                              .arg(s.what);
         return;
     }
@@ -298,17 +295,17 @@ void CanFamily::unanswered(const Request &r, RequestResult &result)
         result.message = tr("no answer within %1 ms: node %2 sent no PGN %3 after \"%4\" (a PGN its firmware or "
                             "configuration does not send, or output off)")
                              .arg(s.timeoutMs)
-                             .arg(m_target)
+                             .arg(m_decoder.node())
                              .arg(QString::number(s.pgn, 16).toUpper())
                              .arg(s.what);
     } else if (result.status == RequestStatus::Timeout && s.expect == CanJobStep::Expect::PdoFrom) {
         result.message = tr("node %1 sent no data within %2 ms of \"%3\": if its TPDOs wait for SYNC, send one; "
                             "otherwise check the node ID, its output intervals and that the module is powered")
-                             .arg(m_target)
+                             .arg(m_decoder.node())
                              .arg(s.timeoutMs)
                              .arg(s.what);
     } else if (result.status == RequestStatus::Timeout) {
-        const int node = s.expect == CanJobStep::Expect::TrafficFrom ? s.node : m_target;
+        const int node = s.expect == CanJobStep::Expect::TrafficFrom ? s.node : m_decoder.node();
         result.message = tr("no answer from node %1 to \"%2\" within %3 ms: check the node ID, the bit rate and the "
                             "wiring")
                              .arg(node)
@@ -382,7 +379,7 @@ bool CanFamily::matchStep(const CanFrame &f, const DecodedFrame &d)
     case CanJobStep::Expect::PgnFrom:
         // The frame the trigger asked for, from the module it was sent to (7.23: the request has
         // no reply; the data frame is the answer).
-        if (f.extended && j1939::parseId(f.id).pgn() == s.pgn && d.node == m_target)
+        if (f.extended && j1939::parseId(f.id).pgn() == s.pgn && d.node == m_decoder.node())
             answer(true, s.pgn, QString());
         return false; // the frame still counts as data
     case CanJobStep::Expect::TrafficFrom:
@@ -391,12 +388,12 @@ bool CanFamily::matchStep(const CanFrame &f, const DecodedFrame &d)
         return false; // the frame still counts as data
     case CanJobStep::Expect::PdoFrom:  // the timeouts differ (unanswered): here the same
     case CanJobStep::Expect::DataSeen:
-        if (isDataFrame(d) && dataSource(d) == m_target)
+        if (isDataFrame(d) && dataSource(d) == m_decoder.node())
             answer(true, 1, QString());
         return false;
     case CanJobStep::Expect::NoPdoFrom:
-        if (isDataFrame(d) && dataSource(d) == m_target)
-            answer(false, 1, tr("node %1 still sends data after \"%2\": check the node ID").arg(m_target).arg(s.what));
+        if (isDataFrame(d) && dataSource(d) == m_decoder.node())
+            answer(false, 1, tr("node %1 still sends data after \"%2\": check the node ID").arg(m_decoder.node()).arg(s.what));
         return false;
     }
     return false;
@@ -406,7 +403,7 @@ int CanFamily::dataSource(const DecodedFrame &d) const
 {
     // The HEC495's extended variant names no node in its data frames: on that bus they are the
     // target's (the session talks to one such module).
-    return m_options.hec495Extended && d.kind == FrameKind::Hec495Data ? m_target : d.node;
+    return m_options.hec495Extended && d.kind == FrameKind::Hec495Data ? m_decoder.node() : d.node;
 }
 
 void CanFamily::stepEnded(const RequestResult &r)
@@ -436,7 +433,7 @@ void CanFamily::stepEnded(const RequestResult &r)
                   RequestStatus::Invalid);
         return;
     }
-    if (s.followNode >= 0 && s.followNode != m_target)
+    if (s.followNode >= 0 && s.followNode != m_decoder.node())
         follow(s.followNode);
     // An HEC495 PDO mode the module took (0x1080 on standard frames): the decoder reads its
     // PDOs in that format from now on instead of guessing float or fixed point per frame.

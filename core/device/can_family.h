@@ -91,7 +91,6 @@ private:
     void nodeFollowed(int node) override;
     void follow(int node);
     protocol::can::CanProtocol m_lastDetected = protocol::can::CanProtocol::Auto;
-    int m_target = -1; // the node followed (the decoder's)
     std::vector<model::Sample> m_batch;
 
     std::deque<CanJob> m_jobs;

@@ -155,13 +155,13 @@ public:
     // The record's row in the vendor's layout; false when the layout has none for it.
     bool vendorRow(const decode::Record &rec, int64_t hostNs)
     {
-        std::string_view type;
+        QString type;
         const char *head = nullptr;
         if (!layout || !layout->fileOf(rec, type, head))
             return false;
         // An imported vendor CSV's pc_counter is the chunks' time, written back as it was.
         const double pcCounterMs = pcCounterIsChunkTime ? double(hostNs) / 1e6 : double(hostNs - firstNs) / 1e6;
-        Output *out = output(QString::fromLatin1(type.data(), qsizetype(type.size())), head);
+        Output *out = output(type, head);
         if (out)
             layout->appendRow(out->buf, rec, pcCounterMs, keptCells);
         keptCells.clear();

@@ -79,9 +79,7 @@ void ReplayWorker::open(const QString &path, const ReplayTimeline &timeline)
                                           : m_reader.message()));
     m_durationNs = std::max(lastNs, m_timeline.endNs > m_firstNs ? m_timeline.endNs - m_firstNs : int64_t(0));
     m_reader.seek(m_reader.dataStart());
-    m_decoder.configure(m_reader.header());
-    m_decoder.resetCounters();
-    m_gaps.clear();
+    m_gaps.clear(); // the decoder configured above is fresh: indexing fed it nothing
     m_posNs = 0;
     m_drained = false;
     m_open = true;
