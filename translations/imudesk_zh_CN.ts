@@ -3763,6 +3763,19 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
 </context>
 <context>
+    <name>SampleAnalyzer</name>
+    <message>
+        <location filename="../core/record/sample_analyzer.cpp" line="+157"/>
+        <source>cannot judge: the recording is too short</source>
+        <translation>无法判断：记录太短</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>%1 frames over %2 s; the random walk is read at τ = %3 s, which needs at least %4 s of a still module (%5 s for 10 % uncertainty)</source>
+        <translation>%2 s 内共 %1 帧；随机游走取自 τ = %3 s，至少需要模块静止 %4 s 的数据（不确定度 10 % 需要 %5 s）</translation>
+    </message>
+</context>
+<context>
     <name>SampleCsv</name>
     <message>
         <location filename="../core/calib/sample_csv.cpp" line="+26"/>
@@ -4828,7 +4841,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::device::CanFamily</name>
     <message>
-        <location filename="../core/device/can_family.cpp" line="+63"/>
+        <location filename="../core/device/can_family.cpp" line="+62"/>
         <source>connected to %1</source>
         <translation>已连接到 %1</translation>
     </message>
@@ -4844,7 +4857,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>无法发送帧 %1：CAN 接口未连接</translation>
     </message>
     <message>
-        <location line="+69"/>
+        <location line="+67"/>
         <source>boot-up</source>
         <translation>启动报文</translation>
     </message>

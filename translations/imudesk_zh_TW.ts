@@ -3763,6 +3763,19 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
 </context>
 <context>
+    <name>SampleAnalyzer</name>
+    <message>
+        <location filename="../core/record/sample_analyzer.cpp" line="+157"/>
+        <source>cannot judge: the recording is too short</source>
+        <translation>無法判斷：記錄太短</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>%1 frames over %2 s; the random walk is read at τ = %3 s, which needs at least %4 s of a still module (%5 s for 10 % uncertainty)</source>
+        <translation>%2 s 內共 %1 幀；隨機遊走取自 τ = %3 s，至少需要模組靜止 %4 s 的資料（不確定度 10 % 需要 %5 s）</translation>
+    </message>
+</context>
+<context>
     <name>SampleCsv</name>
     <message>
         <location filename="../core/calib/sample_csv.cpp" line="+26"/>
@@ -4828,7 +4841,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::device::CanFamily</name>
     <message>
-        <location filename="../core/device/can_family.cpp" line="+63"/>
+        <location filename="../core/device/can_family.cpp" line="+62"/>
         <source>connected to %1</source>
         <translation>已連線到 %1</translation>
     </message>
@@ -4844,7 +4857,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>無法傳送幀 %1：CAN 介面未連線</translation>
     </message>
     <message>
-        <location line="+69"/>
+        <location line="+67"/>
         <source>boot-up</source>
         <translation>開機訊息</translation>
     </message>

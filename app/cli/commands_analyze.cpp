@@ -57,12 +57,13 @@ QJsonObject resultJson(const record::SampleAnalyzer::Result &r)
         }
         allan[QString::fromStdString(a.name)] = ax;
     }
-    // A module that moved: no Allan figures (null), and why.
-    o[QStringLiteral("allan")] = r.motion.moved ? QJsonValue() : QJsonValue(allan);
+    // A module that moved or a recording too short: no Allan figures (null), and why.
+    o[QStringLiteral("allan")] = r.allanJudged() ? QJsonValue(allan) : QJsonValue();
     o[QStringLiteral("moved")] = r.motion.moved;
-    if (r.motion.moved) {
-        o[QStringLiteral("allan_reason")] = r.motion.reason();
-        o[QStringLiteral("allan_reason_detail")] = r.motion.detail();
+    o[QStringLiteral("too_short")] = r.allanWhyNot == record::SampleAnalyzer::AllanWhyNot::TooShort;
+    if (!r.allanJudged()) {
+        o[QStringLiteral("allan_reason")] = r.allanReason();
+        o[QStringLiteral("allan_reason_detail")] = r.allanDetail();
     }
     o[QStringLiteral("motion")] = QJsonObject{{QStringLiteral("gyro_std_dps"), r.motion.gyroStdDps},
                                               {QStringLiteral("window_rate_change_dps"), r.motion.rateChangeDps},
@@ -89,9 +90,10 @@ void printText(const record::SampleAnalyzer::Result &r)
     for (const auto &c : r.channels)
         std::printf("%-12s %-6s %14.6g %14.6g %14.6g %14.6g\n", c.name.c_str(), c.unit.c_str(), c.mean, c.std, c.min,
                     c.max);
-    if (r.motion.moved) {
-        // Not the sensor's noise: no Allan deviation, random walk or bias instability.
-        std::printf("Allan deviation: %s (%s)\n", qPrintable(r.motion.reason()), qPrintable(r.motion.detail()));
+    if (!r.allanJudged()) {
+        // Not the sensor's noise, or too little of it: no Allan deviation, random walk or bias
+        // instability.
+        std::printf("Allan deviation: %s (%s)\n", qPrintable(r.allanReason()), qPrintable(r.allanDetail()));
     } else {
         std::printf("Allan deviation (overlapping):\n");
     }

@@ -125,23 +125,57 @@ SampleAnalyzer::Result SampleAnalyzer::finish(double tauMax, int histogramBins) 
             ++r.intervals[size_t(b)].count;
         }
     }
-    // Allan deviation at the output period, of a module that stayed still.
+    // Allan deviation at the output period, of a module that stayed still, over a recording
+    // long enough for the curve to reach the random walk's τ.
     r.motion = m_motion.result();
-    const double tau0 = r.rateHz > 0 && !r.motion.moved ? 1.0 / r.rateHz : 0;
+    r.tau0S = r.rateHz > 0 ? 1.0 / r.rateHz : 0;
+    const size_t n = m_axes[0].size();
+    const size_t longestCluster = n >= 3 ? (n - 1) / 2 : 0;
+    if (r.motion.moved)
+        r.allanWhyNot = AllanWhyNot::Moved;
+    else if (r.tau0S <= 0 || double(longestCluster) * r.tau0S < kRandomWalkTauS * (1.0 - 1e-9))
+        r.allanWhyNot = AllanWhyNot::TooShort;
     static const char *names[6] = {"gyr_x", "gyr_y", "gyr_z", "acc_x", "acc_y", "acc_z"};
-    for (size_t a = 0; a < 6 && tau0 > 0; ++a) {
-        if (m_axes[a].size() < 3)
-            break;
+    for (size_t a = 0; a < 6 && r.allanJudged(); ++a) {
         Axis axis;
         axis.name = names[a];
         axis.unit = a < 3 ? "deg/s" : "G";
-        axis.curve = AllanDeviation::compute(m_axes[a].data(), m_axes[a].size(), tau0);
+        axis.curve = AllanDeviation::compute(m_axes[a].data(), m_axes[a].size(), r.tau0S);
         axis.summary = AllanDeviation::summarize(axis.curve);
         r.axes.push_back(std::move(axis));
     }
     r.tauMax = tauMax;
     r.recommendedLengthS = AllanDeviation::recommendedLength(tauMax);
     return r;
+}
+
+QString SampleAnalyzer::Result::allanReason() const
+{
+    switch (allanWhyNot) {
+    case AllanWhyNot::Judged: return QString();
+    case AllanWhyNot::Moved: return motion.reason();
+    case AllanWhyNot::TooShort: return SampleAnalyzer::tr("cannot judge: the recording is too short");
+    }
+    return QString();
+}
+
+QString SampleAnalyzer::Result::allanDetail() const
+{
+    switch (allanWhyNot) {
+    case AllanWhyNot::Judged: return QString();
+    case AllanWhyNot::Moved: return motion.detail();
+    case AllanWhyNot::TooShort:
+        // The curve reaches τ = 1 s from 2 s of data; its uncertainty there is 10 % from the
+        // recommended length.
+        return SampleAnalyzer::tr("%1 frames over %2 s; the random walk is read at τ = %3 s, which needs at least %4 s "
+                                  "of a still module (%5 s for 10 % uncertainty)")
+            .arg(frames)
+            .arg(durationS, 0, 'f', 2)
+            .arg(kRandomWalkTauS, 0, 'g', 3)
+            .arg(2.0 * kRandomWalkTauS, 0, 'g', 3)
+            .arg(AllanDeviation::recommendedLength(kRandomWalkTauS), 0, 'f', 0);
+    }
+    return QString();
 }
 
 } // namespace imudesk::record

@@ -10,11 +10,16 @@
 // frame) for the Allan deviation.
 //
 // A recording of a module that moved (calib/motion_check.h says how that is told) gets no
-// Allan deviation, random walk or bias instability: Result::motion says why (issue 53).
+// Allan deviation, random walk or bias instability: Result::motion says why (issue 53). Nor
+// does one too short for the curve to reach τ = 1 s, where the random walk is read (under
+// 2 s of still data): Result::allanWhyNot says which, allanReason() and allanDetail() why.
 #include "calib/motion_check.h"
 #include "device/frame_gap_counter.h"
 #include "model/sample.h"
 #include "record/allan_deviation.h"
+
+#include <QCoreApplication>
+#include <QString>
 
 #include <array>
 #include <cstdint>
@@ -24,7 +29,11 @@
 namespace imudesk::record {
 
 class SampleAnalyzer {
+    Q_DECLARE_TR_FUNCTIONS(SampleAnalyzer)
+
 public:
+    static constexpr double kRandomWalkTauS = 1.0; // the random walk is read at τ = 1 s
+    enum class AllanWhyNot { Judged, Moved, TooShort };
     struct Channel {
         std::string name;   // "acc_x", ...
         std::string unit;   // "G", ...
@@ -51,8 +60,15 @@ public:
         uint64_t framesLost = 0;
         uint64_t deviceResets = 0;
         std::vector<Channel> channels;
-        std::vector<Axis> axes;         // gyr_x..z, acc_x..z; empty when the module moved
+        std::vector<Axis> axes;         // gyr_x..z, acc_x..z; empty unless allanWhyNot is Judged
         calib::MotionCheck::Result motion; // motion.moved: no Allan figures, motion.reason() why
+        AllanWhyNot allanWhyNot = AllanWhyNot::Judged;
+        double tau0S = 0;               // the output period the curve starts at
+        bool allanJudged() const { return allanWhyNot == AllanWhyNot::Judged; }
+        // "the module moved: …" / "cannot judge: the recording is too short" and what showed it
+        // (translated); empty when judged.
+        QString allanReason() const;
+        QString allanDetail() const;
         double tauMax = 0;              // the tau range asked for
         double recommendedLengthS = 0;  // for tauMax at 10 % uncertainty
     };

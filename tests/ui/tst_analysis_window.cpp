@@ -81,6 +81,24 @@ private Q_SLOTS:
         QCOMPARE(w.statsTable()->rowCount(), 14); // the statistics stay
     }
 
+    // A recording too short for τ = 1 s: no Allan figures either, and the window says so.
+    void tooShortARecordingIsNotJudged()
+    {
+        const QString path = m_dir.filePath(QStringLiteral("short.csv"));
+        QVERIFY(motion_csv::write(path, motion_csv::Motion::Still, 1.5));
+        AnalysisWindow w;
+        QSignalSpy done(&w, &AnalysisWindow::analysisFinished);
+        w.analyzeFile(path, 10.0);
+        QVERIFY(done.wait(20000));
+        QVERIFY2(done.at(0).at(0).toBool(), qPrintable(done.at(0).at(1).toString()));
+        const QString reason = QStringLiteral("cannot judge: the recording is too short");
+        QVERIFY2(w.summaryText().contains(reason), qPrintable(w.summaryText()));
+        QVERIFY(!w.summaryText().contains(QStringLiteral("ARW")));
+        QVERIFY(w.allanChart()->series().isEmpty());
+        QVERIFY(w.allanChart()->title().contains(reason));
+        QCOMPARE(w.statsTable()->rowCount(), 14);
+    }
+
     void reportsOtherFiles()
     {
         const QString path = m_dir.filePath(QStringLiteral("notes.txt"));

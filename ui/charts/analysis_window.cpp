@@ -105,11 +105,11 @@ void AnalysisWindow::setResult(const record::SampleAnalyzer::Result &r)
                  .arg(r.intervalMeanMs, 0, 'f', 3)
                  .arg(r.intervalStdMs, 0, 'f', 3)
                  .arg(r.framesLost);
-    // A module that moved: not the sensor's noise, so no Allan figures (the chart stays empty
-    // and says why).
-    if (r.motion.moved)
-        lines << tr("Allan deviation: %1 (%2)").arg(r.motion.reason(), r.motion.detail());
-    m_allan->setTitle(r.motion.moved ? tr("Allan deviation: %1").arg(r.motion.reason()) : tr("Allan deviation"));
+    // A module that moved (not the sensor's noise) or a recording too short for τ = 1 s: no
+    // Allan figures; the chart stays empty and says why.
+    if (!r.allanJudged())
+        lines << tr("Allan deviation: %1 (%2)").arg(r.allanReason(), r.allanDetail());
+    m_allan->setTitle(r.allanJudged() ? tr("Allan deviation") : tr("Allan deviation: %1").arg(r.allanReason()));
     for (const auto &a : r.axes) {
         const bool gyro = a.unit == "deg/s";
         QString line = QString::fromStdString(a.name) + QLatin1String(": ");
