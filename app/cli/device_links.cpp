@@ -5,6 +5,7 @@
 
 #include <QElapsedTimer>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstring>
 
@@ -83,6 +84,7 @@ namespace {
 
 constexpr int kOpenMs = 30000;    // the detections, side by side
 constexpr int kConnectMs = 15000; // each link from its start to Connected
+constexpr int kIdentityMs = 10000; // LOG VERSION asked three times, then LOG COMCONFIG
 constexpr int kQuietMs = 2000;    // a device that takes longer says what it is doing
 
 // "did not connect within 15 s; it was still Detecting: trying 921600 baud"
@@ -111,7 +113,8 @@ public:
             return;
         for (size_t i = 0; i < m_devices.size(); ++i) {
             const OpenDevice &d = m_devices[i];
-            if (d.doing.isEmpty() || d.doing == m_told[i] || d.state == device::SessionState::Connected)
+            const bool settled = d.state == device::SessionState::Connected && !(d.link.link && d.link.link->identityPending());
+            if (d.doing.isEmpty() || d.doing == m_told[i] || settled)
                 continue;
             m_told[i] = d.doing;
             std::fprintf(stderr, "%s: %s\n", qPrintable(d.spec), qPrintable(d.doing));
@@ -185,7 +188,22 @@ int openDevices(const QStringList &specs, int baud, std::vector<OpenDevice> &dev
         if (d.state != device::SessionState::Connected)
             return fail(QStringLiteral("%1: %2").arg(d.spec, d.error.isEmpty() ? waitedFor(d, QStringLiteral("connect"), kConnectMs) : d.error),
                         interrupted() ? ExitInterrupted : ExitFailure);
-    return ExitOk;
+    // Its serial and product name it in files and topics: a module found at a known rate is
+    // connected before it has said who it is (LOG VERSION), and named "device" if not waited for.
+    for (OpenDevice &d : devices)
+        if (d.link.link->identityPending())
+            d.doing = QStringLiteral("asking who it is (LOG VERSION)");
+    notes.restart();
+    waitFor([&] {
+        notes.tell();
+        return std::none_of(devices.begin(), devices.end(),
+                            [](const OpenDevice &d) { return d.link.link->identityPending(); });
+    }, kIdentityMs);
+    for (const OpenDevice &d : devices)
+        if (d.link.link->identityPending())
+            std::fprintf(stderr, "imudesk-cli: warning: %s did not say who it is within %d s (LOG VERSION): it is named "
+                                 "by its link\n", qPrintable(d.spec), kIdentityMs / 1000);
+    return interrupted() ? ExitInterrupted : ExitOk;
 }
 
 } // namespace imudesk::cli

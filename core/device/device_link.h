@@ -47,6 +47,10 @@ public:
     // Adds what names the device on its link beyond its identity to a header that names it
     // (capture/device_name.h): a CAN link's protocol and node. Nothing for the others.
     virtual void describeLink(capture::CaptureHeader &) const {}
+    // True while the link still asks the device who it is after it connected (a HiPNUC module
+    // opened at a known rate is Connected first and answers LOG VERSION after): its serial and
+    // product, which name it in files and topics (capture/device_name.h), are not known yet.
+    virtual bool identityPending() const { return false; }
 
     // Capability::TextCommands: a command as a person typed it (the console); the reply comes
     // in textReplied(id, ...). 0 when this link takes no text. The only place where command text

@@ -36,7 +36,14 @@ DeviceSession::DeviceSession(QObject *parent, std::unique_ptr<io::Transport> tra
         Q_EMIT textReplied(r.id, textReplyOf(reply));
     });
     connect(f, &HipnucSerialFamily::baudDetected, this, &DeviceSession::baudDetected);
-    connect(f, &HipnucSerialFamily::identityQueryFinished, this, &DeviceSession::identityQueryFinished);
+    connect(f, &HipnucSerialFamily::identityQueryFinished, this, [this](bool answered) {
+        m_identityPending = false;
+        Q_EMIT identityQueryFinished(answered);
+    });
+    connect(this, &DeviceLink::stateChanged, this, [this](SessionState s) {
+        if (s == SessionState::Failed || s == SessionState::Closed)
+            m_identityPending = false;
+    });
     connect(f, &HipnucSerialFamily::nmeaReceived, this, &DeviceSession::nmeaReceived);
     connect(f, &HipnucSerialFamily::textReceived, this, &DeviceSession::textReceived);
     connect(f, &HipnucSerialFamily::baudChangeFinished, this, &DeviceSession::baudChangeFinished);
@@ -45,6 +52,7 @@ DeviceSession::DeviceSession(QObject *parent, std::unique_ptr<io::Transport> tra
 
 void DeviceSession::open(const QString &portName, int baud)
 {
+    m_identityPending = baud > 0; // auto-detection knows it before "connected"
     openLink(portName, baud);
 }
 

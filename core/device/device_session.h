@@ -30,6 +30,8 @@ public:
 
     // baud 0 = auto-detect (listen first, then LOG VERSION at each rate).
     void open(const QString &portName, int baud = 0);
+    // Opened at a known rate: from open() until its LOG VERSION query has finished.
+    bool identityPending() const override { return m_identityPending; }
     // Text as a person typed it (the console, imudesk-cli send), through the same queue; the
     // reply arrives in commandFinished(id, reply) and textReplied. Unknown commands get no reply
     // and finish as a timeout. The only place where command text is parsed: every other caller
@@ -69,6 +71,9 @@ Q_SIGNALS:
     void baudChangeFinished(bool changed, int baud, const QString &detail);
     // recoverLink finished.
     void linkRecovered(bool reachable, int baud, const QString &detail);
+
+private:
+    bool m_identityPending = false;
 };
 
 } // namespace imudesk::device

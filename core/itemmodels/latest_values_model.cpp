@@ -73,7 +73,7 @@ uint32_t fieldOf(Row row)
     case Row::Heading: return model::FieldHeading;
     default: break; // the channel rows (above), the frame type
     }
-    return hi83BitOf(row) >= 0 ? model::FieldHi83Extra : 0;
+    return hi83BitOf(row) >= 0 ? uint32_t(model::FieldHi83Extra) : 0u;
 }
 
 // Fixed-point text without a "-0.000" that would flicker around zero.

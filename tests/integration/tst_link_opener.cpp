@@ -100,8 +100,13 @@ private Q_SLOTS:
         LinkOpener::Opened link = opener.take();
         QVERIFY(link.link && link.start);
         QSignalSpy identity(link.link.get(), &device::DeviceLink::identityChanged);
+        QStringList states; // what it went through, said when it fails
+        connect(link.link.get(), &device::DeviceLink::stateChanged, this, [&states](SessionState s, const QString &detail) {
+            states << QStringLiteral("%1 (%2)").arg(QLatin1String(device::stateName(s)), detail);
+        });
         link.start();
-        QTRY_COMPARE_WITH_TIMEOUT(link.link->state(), SessionState::Connected, 15000);
+        QTRY_VERIFY2_WITH_TIMEOUT(link.link->state() == SessionState::Connected, qPrintable(states.join(QStringLiteral("; "))),
+                                  15000);
         QTRY_VERIFY_WITH_TIMEOUT(!identity.isEmpty(), 10000);
         const auto id = identity.last().at(0).value<model::DeviceIdentity>();
         if (family == QLatin1String("hipnuc")) {
@@ -175,8 +180,13 @@ private Q_SLOTS:
         QVERIFY(std::find(rates.begin(), rates.end(), opener.request().baud) != rates.end());
         LinkOpener::Opened link = opener.take();
         QSignalSpy identity(link.link.get(), &device::DeviceLink::identityChanged);
+        QStringList states; // what it went through, said when it fails
+        connect(link.link.get(), &device::DeviceLink::stateChanged, this, [&states](SessionState s, const QString &detail) {
+            states << QStringLiteral("%1 (%2)").arg(QLatin1String(device::stateName(s)), detail);
+        });
         link.start();
-        QTRY_COMPARE_WITH_TIMEOUT(link.link->state(), SessionState::Connected, 15000);
+        QTRY_VERIFY2_WITH_TIMEOUT(link.link->state() == SessionState::Connected, qPrintable(states.join(QStringLiteral("; "))),
+                                  15000);
         QTRY_VERIFY_WITH_TIMEOUT(!identity.isEmpty(), 10000);
         link.link.reset();
     }

@@ -255,6 +255,9 @@ private Q_SLOTS:
         const QString bridgeOut = QString::fromUtf8(said + bridge.readAllStandardOutput());
         for (auto &s : sims)
             test::stopCli(*s);
+        // Each module's topics named by its serial (issue 53 point 16), not "device", "device_2".
+        QCOMPARE(bridgeLog.count(QRegularExpression(QStringLiteral("device [0-9A-F]{16} added \\(/imu/[0-9A-F]{16}/"))),
+                 kDevices);
 
         // What the bridge promises (docs: the live bridge): a message it could not send to a client
         // is counted, logged at the client's end and told to the client when it catches up; a sample
