@@ -26,7 +26,7 @@
 <context>
     <name>CaptureSource</name>
     <message numerus="yes">
-        <location filename="../core/record/capture_source.cpp" line="+186"/>
+        <location filename="../core/record/capture_source.cpp" line="+120"/>
         <source>%1 is a vendor CSV: %n row(s) read, times from its pc_counter column</source>
         <translation>
             <numerusform>%1 is a vendor CSV: %n row read, times from its pc_counter column</numerusform>
@@ -34,7 +34,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location line="+18"/>
+        <location line="+12"/>
         <source>The device clock restarted or jumped %n time(s); the times go on across each jump.</source>
         <translation>
             <numerusform>The device clock restarted or jumped %n time; the times go on across each jump.</numerusform>
@@ -45,7 +45,7 @@
 <context>
     <name>FileAnalysis</name>
     <message numerus="yes">
-        <location filename="../core/record/file_analysis.cpp" line="+64"/>
+        <location filename="../core/record/file_analysis.cpp" line="+54"/>
         <source>%n damaged chunk(s) were skipped</source>
         <translation>
             <numerusform>%n damaged chunk was skipped</numerusform>

@@ -1361,35 +1361,49 @@
 <context>
     <name>CaptureSource</name>
     <message>
-        <location filename="../core/record/capture_source.cpp" line="+129"/>
-        <location line="+87"/>
+        <location filename="../core/record/capture_source.cpp" line="+46"/>
         <source>%1 cannot be read: %2</source>
         <translation>无法读取 %1：%2</translation>
     </message>
     <message>
-        <location line="-81"/>
+        <location line="+6"/>
         <source>%1 is empty</source>
         <translation>%1 是空文件</translation>
     </message>
     <message>
-        <location line="+14"/>
-        <source>%1 is neither an ImuDesk capture, a vendor CSV (first line &quot;HI91,...&quot;) nor a raw dump of what a module sent: its first %2 KiB hold no HiPNUC frame and no NMEA sentence</source>
-        <translation>%1 既不是 ImuDesk 采集文件，也不是厂商 CSV（首行为 &quot;HI91,...&quot;），也不是模块输出的原始字节转储：其前 %2 KiB 中没有 HiPNUC 帧，也没有 NMEA 语句</translation>
-    </message>
-    <message>
-        <location line="+26"/>
+        <location line="+106"/>
         <source>No temporary folder to convert %1 in: %2</source>
         <translation>没有可用于转换 %1 的临时文件夹：%2</translation>
     </message>
     <message numerus="yes">
-        <location line="+11"/>
+        <location line="-38"/>
         <source>%1 is a vendor CSV: %n row(s) read, times from its pc_counter column</source>
         <translation>
             <numerusform>%1 是厂商 CSV：已读取 %n 行，时间取自 pc_counter 列</numerusform>
         </translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="-52"/>
+        <source>%1 is neither an ImuDesk capture nor %2</source>
+        <translation>%1 既不是 ImuDesk 记录文件，也不是%2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 is neither an ImuDesk capture, %2 nor %3</source>
+        <translation>%1 既不是 ImuDesk 记录文件，也不是%2或%3</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>%1 is already an ImuDesk capture</source>
+        <translation>%1 已经是 ImuDesk 记录文件</translation>
+    </message>
+    <message>
+        <location line="+36"/>
+        <source>%1 malformed lines in all</source>
+        <translation>共 %1 行格式错误</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>%1 is a raw byte dump without arrival times: the times shown come from the device&apos;s own clock</source>
         <translation>%1 是原始字节转储，没有接收时间：显示的时间取自设备自身的时钟</translation>
     </message>
@@ -1404,11 +1418,6 @@
         <translation>
             <numerusform>设备时钟重启或跳变了 %n 次；时间在每次跳变处连续延续。</numerusform>
         </translation>
-    </message>
-    <message>
-        <location line="+29"/>
-        <source>Reading %1 failed: %2</source>
-        <translation>读取 %1 失败：%2</translation>
     </message>
 </context>
 <context>
@@ -1823,7 +1832,7 @@
 <context>
     <name>ConvertedCapture</name>
     <message>
-        <location filename="../core/record/converted_capture.cpp" line="+15"/>
+        <location filename="../core/capture/converted_capture.cpp" line="+15"/>
         <source>Cannot write %1: %2</source>
         <translation>无法写入 %1：%2</translation>
     </message>
@@ -1859,7 +1868,7 @@
 <context>
     <name>FileAnalysis</name>
     <message>
-        <location filename="../core/record/file_analysis.cpp" line="+55"/>
+        <location filename="../core/record/file_analysis.cpp" line="+45"/>
         <source>Analysis cancelled.</source>
         <translation>分析已取消。</translation>
     </message>
@@ -1869,16 +1878,6 @@
         <translation>
             <numerusform>已跳过 %n 个损坏的数据块</numerusform>
         </translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>%1 (neither a capture file nor a vendor HI91 CSV)</source>
-        <translation>%1（既不是记录文件，也不是厂商的 HI91 CSV 文件）</translation>
-    </message>
-    <message>
-        <location line="+6"/>
-        <source>%1 malformed lines in all</source>
-        <translation>共 %1 行格式错误</translation>
     </message>
     <message>
         <location line="+4"/>
@@ -2097,6 +2096,24 @@
     </message>
 </context>
 <context>
+    <name>HipnucRawDumpImport</name>
+    <message>
+        <location filename="../core/decode/hipnuc_file_import.cpp" line="+186"/>
+        <source>a raw dump of what a module sent (HiPNUC frames or NMEA sentences in its first %1 KiB)</source>
+        <translation>模块发送内容的原始转储（前 %1 KiB 中含 HiPNUC 帧或 NMEA 语句）</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>%1 cannot be read: %2</source>
+        <translation>无法读取 %1：%2</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Reading %1 failed: %2</source>
+        <translation>读取 %1 失败：%2</translation>
+    </message>
+</context>
+<context>
     <name>HipnucSerialKind</name>
     <message>
         <location filename="../core/links/hipnuc_serial_kind.cpp" line="+42"/>
@@ -2116,6 +2133,14 @@
         <location line="+9"/>
         <source>Simulated %1 (firmware %2)</source>
         <translation>模拟 %1（固件 %2）</translation>
+    </message>
+</context>
+<context>
+    <name>HipnucVendorCsvImport</name>
+    <message>
+        <location filename="../core/decode/hipnuc_file_import.cpp" line="-82"/>
+        <source>a vendor CSV (first line &quot;HI91,...&quot;)</source>
+        <translation>厂商 CSV（首行为“HI91,...”）</translation>
     </message>
 </context>
 <context>
@@ -3059,7 +3084,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>MagnetometerFile</name>
     <message>
-        <location filename="../core/record/magnetometer_file.cpp" line="+58"/>
+        <location filename="../core/record/magnetometer_file.cpp" line="+59"/>
         <source>%1 holds no magnetometer samples in µT (a %2): record the module&apos;s output with its magnetometer (HI91, HI81 or HI83)</source>
         <translation>%1 中没有以 µT 为单位的磁力计样本（%2）：请录制包含磁力计的模块输出（HI91、HI81 或 HI83）</translation>
     </message>
@@ -4719,7 +4744,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>VendorCsvImporter</name>
     <message>
-        <location filename="../core/record/vendor_csv_importer.cpp" line="+95"/>
+        <location filename="../core/decode/hipnuc_vendor_csv_reader.cpp" line="+95"/>
         <source>Cannot open %1: %2</source>
         <translation>无法打开 %1：%2</translation>
     </message>

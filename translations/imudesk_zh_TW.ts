@@ -1361,35 +1361,49 @@
 <context>
     <name>CaptureSource</name>
     <message>
-        <location filename="../core/record/capture_source.cpp" line="+129"/>
-        <location line="+87"/>
+        <location filename="../core/record/capture_source.cpp" line="+46"/>
         <source>%1 cannot be read: %2</source>
         <translation>無法讀取 %1：%2</translation>
     </message>
     <message>
-        <location line="-81"/>
+        <location line="+6"/>
         <source>%1 is empty</source>
         <translation>%1 是空檔案</translation>
     </message>
     <message>
-        <location line="+14"/>
-        <source>%1 is neither an ImuDesk capture, a vendor CSV (first line &quot;HI91,...&quot;) nor a raw dump of what a module sent: its first %2 KiB hold no HiPNUC frame and no NMEA sentence</source>
-        <translation>%1 既不是 ImuDesk 採集檔案，也不是廠商 CSV（首行為 &quot;HI91,...&quot;），也不是模組輸出的原始位元組轉儲：其前 %2 KiB 中沒有 HiPNUC 幀，也沒有 NMEA 語句</translation>
-    </message>
-    <message>
-        <location line="+26"/>
+        <location line="+106"/>
         <source>No temporary folder to convert %1 in: %2</source>
         <translation>沒有可用於轉換 %1 的臨時資料夾：%2</translation>
     </message>
     <message numerus="yes">
-        <location line="+11"/>
+        <location line="-38"/>
         <source>%1 is a vendor CSV: %n row(s) read, times from its pc_counter column</source>
         <translation>
             <numerusform>%1 是廠商 CSV：已讀取 %n 行，時間取自 pc_counter 欄</numerusform>
         </translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="-52"/>
+        <source>%1 is neither an ImuDesk capture nor %2</source>
+        <translation>%1 既不是 ImuDesk 記錄檔，也不是%2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 is neither an ImuDesk capture, %2 nor %3</source>
+        <translation>%1 既不是 ImuDesk 記錄檔，也不是%2或%3</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>%1 is already an ImuDesk capture</source>
+        <translation>%1 已經是 ImuDesk 記錄檔</translation>
+    </message>
+    <message>
+        <location line="+36"/>
+        <source>%1 malformed lines in all</source>
+        <translation>共 %1 行格式錯誤</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>%1 is a raw byte dump without arrival times: the times shown come from the device&apos;s own clock</source>
         <translation>%1 是原始位元組轉儲，沒有接收時間：顯示的時間取自裝置自身的時鐘</translation>
     </message>
@@ -1404,11 +1418,6 @@
         <translation>
             <numerusform>裝置時鐘重啟或跳變了 %n 次；時間在每次跳變處連續延續。</numerusform>
         </translation>
-    </message>
-    <message>
-        <location line="+29"/>
-        <source>Reading %1 failed: %2</source>
-        <translation>讀取 %1 失敗：%2</translation>
     </message>
 </context>
 <context>
@@ -1823,7 +1832,7 @@
 <context>
     <name>ConvertedCapture</name>
     <message>
-        <location filename="../core/record/converted_capture.cpp" line="+15"/>
+        <location filename="../core/capture/converted_capture.cpp" line="+15"/>
         <source>Cannot write %1: %2</source>
         <translation>無法寫入 %1：%2</translation>
     </message>
@@ -1859,7 +1868,7 @@
 <context>
     <name>FileAnalysis</name>
     <message>
-        <location filename="../core/record/file_analysis.cpp" line="+55"/>
+        <location filename="../core/record/file_analysis.cpp" line="+45"/>
         <source>Analysis cancelled.</source>
         <translation>分析已取消。</translation>
     </message>
@@ -1869,16 +1878,6 @@
         <translation>
             <numerusform>已略過 %n 個損壞的資料區塊</numerusform>
         </translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>%1 (neither a capture file nor a vendor HI91 CSV)</source>
-        <translation>%1（既不是記錄檔，也不是廠商的 HI91 CSV）</translation>
-    </message>
-    <message>
-        <location line="+6"/>
-        <source>%1 malformed lines in all</source>
-        <translation>共 %1 行格式錯誤</translation>
     </message>
     <message>
         <location line="+4"/>
@@ -2097,6 +2096,24 @@
     </message>
 </context>
 <context>
+    <name>HipnucRawDumpImport</name>
+    <message>
+        <location filename="../core/decode/hipnuc_file_import.cpp" line="+186"/>
+        <source>a raw dump of what a module sent (HiPNUC frames or NMEA sentences in its first %1 KiB)</source>
+        <translation>模組傳送內容的原始傾印（前 %1 KiB 中含 HiPNUC 幀或 NMEA 語句）</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>%1 cannot be read: %2</source>
+        <translation>無法讀取 %1：%2</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Reading %1 failed: %2</source>
+        <translation>讀取 %1 失敗：%2</translation>
+    </message>
+</context>
+<context>
     <name>HipnucSerialKind</name>
     <message>
         <location filename="../core/links/hipnuc_serial_kind.cpp" line="+42"/>
@@ -2116,6 +2133,14 @@
         <location line="+9"/>
         <source>Simulated %1 (firmware %2)</source>
         <translation>模擬 %1（韌體 %2）</translation>
+    </message>
+</context>
+<context>
+    <name>HipnucVendorCsvImport</name>
+    <message>
+        <location filename="../core/decode/hipnuc_file_import.cpp" line="-82"/>
+        <source>a vendor CSV (first line &quot;HI91,...&quot;)</source>
+        <translation>廠商 CSV（首行為「HI91,...」）</translation>
     </message>
 </context>
 <context>
@@ -3059,7 +3084,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>MagnetometerFile</name>
     <message>
-        <location filename="../core/record/magnetometer_file.cpp" line="+58"/>
+        <location filename="../core/record/magnetometer_file.cpp" line="+59"/>
         <source>%1 holds no magnetometer samples in µT (a %2): record the module&apos;s output with its magnetometer (HI91, HI81 or HI83)</source>
         <translation>%1 中沒有以 µT 為單位的磁力計樣本（%2）：請錄製包含磁力計的模組輸出（HI91、HI81 或 HI83）</translation>
     </message>
@@ -4719,7 +4744,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>VendorCsvImporter</name>
     <message>
-        <location filename="../core/record/vendor_csv_importer.cpp" line="+95"/>
+        <location filename="../core/decode/hipnuc_vendor_csv_reader.cpp" line="+95"/>
         <source>Cannot open %1: %2</source>
         <translation>無法開啟 %1：%2</translation>
     </message>

@@ -4,7 +4,7 @@
 #include "cli_context.h"
 #include "format/mcap/mcap_repair.h"
 #include "record/capture_exporter.h"
-#include "record/csv_capture_converter.h"
+#include "record/capture_source.h"
 #include "record/session_exporter.h"
 
 #include <QFileInfo>
@@ -141,15 +141,15 @@ int cmdImport(const QStringList &args)
         const QFileInfo info(input);
         output = info.path() + QLatin1Char('/') + info.completeBaseName() + QStringLiteral(".imucap");
     }
-    const auto r = record::CsvCaptureConverter::convert(input, output);
-    for (const auto &e : r.import.errors)
-        std::fprintf(stderr, "imudesk-cli: %s\n", qPrintable(e.message));
+    const auto r = record::CaptureSource::convert(input, output);
+    for (const QString &note : r.notes)
+        std::fprintf(stderr, "imudesk-cli: %s\n", qPrintable(note));
     if (!r.ok)
         return fail(r.error);
-    out(QStringLiteral("wrote %1: %2 frames, %3 malformed lines left out")
-            .arg(output)
-            .arg(r.import.samples)
-            .arg(r.import.badLines));
+    if (r.kind == record::CaptureSource::Kind::VendorCsv)
+        out(QStringLiteral("wrote %1: %2 frames, %3 malformed lines left out").arg(output).arg(r.rows).arg(r.badLines));
+    else
+        out(QStringLiteral("wrote %1: %2 bytes, %3 frames, %4 NMEA sentences").arg(output).arg(r.bytes).arg(r.frames).arg(r.sentences));
     return ExitOk;
 }
 

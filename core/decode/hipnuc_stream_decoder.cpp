@@ -25,6 +25,14 @@ static_assert(std::variant_size_v<hp::Packet> == std::size(kPacketKinds));
 
 } // namespace
 
+int HipnucStreamDecoder::tagOf(const std::string &source)
+{
+    for (const PacketKind &k : kPacketKinds)
+        if (source == k.type)
+            return k.tag;
+    return 0;
+}
+
 void HipnucStreamDecoder::configure(const std::map<std::string, std::string> &)
 {
     m_demux.reset();

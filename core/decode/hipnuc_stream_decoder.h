@@ -16,6 +16,8 @@ class HipnucStreamDecoder final : public StreamDecoder {
 public:
     static constexpr const char *kFamily = "HiPNUC serial";
     const char *family() const override { return kFamily; }
+    // A packet's tag by its name ("HI91" -> 0x91); 0 for any other source.
+    static int tagOf(const std::string &source);
     void configure(const std::map<std::string, std::string> &header) override;
     void setBaud(int baud) override { m_clocks.setBaud(baud); }
     void feed(const uint8_t *data, size_t n, int64_t hostNs, Sink &sink) override;

@@ -44,6 +44,11 @@ std::vector<std::string> decodedFamilies()
     return {HipnucStreamDecoder::kFamily, WitlinkStreamDecoder::kFamily, CanStreamDecoder::kFamily};
 }
 
+int recordTagOf(const std::string &source)
+{
+    return HipnucStreamDecoder::tagOf(source);
+}
+
 QString unsupportedWhy(const std::string &linkKind)
 {
     const QString kind = QString::fromStdString(linkKind);

@@ -118,5 +118,8 @@ private:
 std::unique_ptr<StreamDecoder> decoderFor(const std::string &linkKind);
 QString unsupportedWhy(const std::string &linkKind);
 std::vector<std::string> decodedFamilies();
+// The numeric type a sample's source has in its family, as Record::tag gives it beside the sample
+// (a HiPNUC packet's tag: "HI91" -> 0x91); 0 when no family gives it one.
+int recordTagOf(const std::string &source);
 
 } // namespace imudesk::decode

@@ -55,7 +55,7 @@ public:
     int64_t firstNs = 0;
     int64_t epochOffsetNs = 0; // host clock to the Unix epoch (the first chunk's two times)
     const capture::CaptureHeader *header = nullptr;
-    // An imported vendor CSV (CsvCaptureConverter): the chunk times are its pc_counter, written
+    // An imported vendor CSV (CaptureSource::convert): the chunk times are its pc_counter, written
     // back as they were, and the cells its next HI91 frame cannot give back.
     bool pcCounterIsChunkTime = false;
     // The capture's family's own layout (VendorCsv): null when its vendor has none.

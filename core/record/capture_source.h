@@ -2,15 +2,11 @@
 // Every file a capture is accepted in place of (replay, export, analysis, File > Open),
 // recognised by its content, never its name:
 //   * a capture (capture/capture_format.h, the magic "IMUDCAP1");
-//   * a CSV written by the vendor's PC tool (first line "HI91,..."), converted as
-//     CsvCaptureConverter does;
-//   * a raw byte dump, as a serial terminal or the vendor's tools write what the module sent:
-//     HiPNUC frames and NMEA sentences found in its first kSniffBytes. It has no arrival
-//     times, so its chunks are stamped with the device's clock (HI91 system_time, HI83
-//     system_time_us, else the UTC time of NMEA sentences) and the header says so
+//   * a file of a family's own that an importer of core/decode takes (decode/file_import.h: a
+//     vendor's CSV, a raw dump of what a module sent), converted to a capture in a temporary
+//     directory that this object owns: keep it while the capture is read. A file without
+//     arrival times gets its chunks stamped with the device's clock, and the header says so
 //     (CaptureHeader::kHostTime = "absent").
-// A converted file lives in a temporary directory that this object owns: keep it while the
-// capture is read.
 #include "capture/capture_header.h"
 
 #include <QCoreApplication>
@@ -22,6 +18,10 @@
 
 class QTemporaryDir;
 
+namespace imudesk::decode {
+class FileImporter;
+}
+
 namespace imudesk::record {
 
 class CaptureSource {
@@ -29,8 +29,6 @@ class CaptureSource {
 
 public:
     enum class Kind { Capture, VendorCsv, RawDump, Unknown };
-    static constexpr qint64 kSniffBytes = 64 * 1024;
-    static constexpr size_t kRawChunkBytes = 512; // a raw dump's bytes per chunk (one time stamp each)
 
     CaptureSource();
     ~CaptureSource();
@@ -49,19 +47,25 @@ public:
     // What the conversion did, for the user (no arrival times, malformed CSV lines, ...).
     const QStringList &notes() const { return m_notes; }
 
-    struct RawResult {
+    struct Converted {
         bool ok = false;
         QString error;
-        uint64_t bytes = 0;
-        uint64_t frames = 0;     // CRC-valid HiPNUC frames
+        Kind kind = Kind::Unknown;
+        QStringList notes;       // as notes() says them
+        uint64_t rows = 0;       // a vendor CSV's rows, each one frame of the capture
+        uint64_t badLines = 0;   // its malformed lines, left out (their messages lead the notes)
+        uint64_t bytes = 0;      // a raw dump's bytes
+        uint64_t frames = 0;     // CRC-valid frames found in a raw dump
         uint64_t sentences = 0;  // NMEA sentences with a valid checksum
         uint64_t clockJumps = 0; // device clock restarts or jumps the times were carried across
-        bool deviceClock = false; // false: nothing in the dump carried a time, every stamp is 0
+        bool deviceClock = false; // false: nothing in a raw dump carried a time, every stamp is 0
     };
-    // Writes rawPath's bytes, unchanged, as a capture at capturePath (kRawChunkBytes per chunk).
-    static RawResult convertRawDump(const QString &rawPath, const QString &capturePath);
+    // Converts a file an importer takes (not a capture) to a capture at capturePath.
+    static Converted convert(const QString &path, const QString &capturePath);
 
 private:
+    static const decode::FileImporter *importerOf(const QString &path, Kind *kind, QString *error);
+
     Kind m_kind = Kind::Unknown;
     QString m_capturePath;
     QStringList m_notes;

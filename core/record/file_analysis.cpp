@@ -3,7 +3,6 @@
 #include "capture/capture_decoder.h"
 #include "capture/capture_reader.h"
 #include "record/capture_source.h"
-#include "record/vendor_csv_importer.h"
 
 namespace imudesk::record {
 
@@ -12,29 +11,20 @@ FileAnalysis::Outcome FileAnalysis::run(const QString &path, const std::string &
 {
     Outcome o;
     SampleAnalyzer analyzer(frameType);
-    // Recognised by content: a capture, a raw byte dump (converted to one) or a vendor CSV (read
-    // directly).
-    QString kindError;
-    const CaptureSource::Kind kind = CaptureSource::detect(path, &kindError);
-    if (kind == CaptureSource::Kind::Unknown) {
-        o.error = kindError;
-        return o;
-    }
+    // Recognised by content: a capture, or a file a family's importer converts to one (a
+    // vendor CSV, a raw byte dump).
     CaptureSource source;
-    if (kind == CaptureSource::Kind::RawDump) {
-        if (!source.prepare(path, &o.error))
-            return o;
-        o.warnings << source.notes();
-    }
-    if (kind != CaptureSource::Kind::VendorCsv) {
-        const QString capturePath = kind == CaptureSource::Kind::RawDump ? source.capturePath() : path;
+    if (!source.prepare(path, &o.error))
+        return o;
+    o.warnings << source.notes();
+    {
         struct Sink : capture::CaptureDecoder::Sink {
             SampleAnalyzer *a = nullptr;
             void onSample(const model::Sample &s, const decode::Record &) override { a->add(s); }
         } sink;
         sink.a = &analyzer;
         capture::CaptureReader reader;
-        if (!reader.open(capturePath, &o.error))
+        if (!reader.open(source.capturePath(), &o.error))
             return o;
         const double total = double(std::max<qint64>(reader.size(), 1));
         capture::CaptureDecoder decoder;
@@ -62,16 +52,6 @@ FileAnalysis::Outcome FileAnalysis::run(const QString &path, const std::string &
             o.warnings << reader.message();
         if (reader.damagedChunks() > 0)
             o.warnings << tr("%n damaged chunk(s) were skipped", nullptr, int(reader.damagedChunks()));
-    } else {
-        const auto r = VendorCsvImporter::read(path, [&](const model::Sample &s) { analyzer.add(s); });
-        if (!r.ok) {
-            o.error = tr("%1 (neither a capture file nor a vendor HI91 CSV)").arg(r.error);
-            return o;
-        }
-        for (const auto &e : r.errors)
-            o.warnings << e.message;
-        if (r.badLines > r.errors.size())
-            o.warnings << tr("%1 malformed lines in all").arg(r.badLines);
     }
     o.result = analyzer.finish(tauMax);
     if (o.result.frames == 0) {

@@ -2,6 +2,7 @@
 
 #include "calib/sample_csv.h"
 #include "capture/capture_format.h"
+#include "decode/file_import.h"
 #include "record/capture_source.h"
 #include "record/sample_file.h"
 
@@ -162,7 +163,7 @@ MagnetometerFile::Result MagnetometerFile::read(const QString &path, const QStri
     QFile f(path);
     if (!f.open(QIODevice::ReadOnly))
         return failed(tr("cannot read %1: %2").arg(QDir::toNativeSeparators(path), f.errorString()));
-    const QByteArray head = f.peek(CaptureSource::kSniffBytes);
+    const QByteArray head = f.peek(decode::kSniffBytes);
     const QByteArray start = head.trimmed();
     const bool capture = head.startsWith(QByteArray(capture::kMagic, sizeof capture::kMagic));
     const QByteArray firstLine = start.left(start.indexOf('\n')).trimmed();

@@ -17,6 +17,11 @@ ReplaySession::ReplaySession(QObject *parent) : DeviceLink(parent)
     connect(m_worker, &ReplayWorker::stateChanged, this,
             [this](device::SessionState s, const QString &detail) { setState(s, detail); });
     connect(m_worker, &ReplayWorker::identityChanged, this, &ReplaySession::identityChanged);
+    // The link is named by the family of the bytes it plays ("HiPNUC serial replay"), before
+    // anyone hears it opened.
+    connect(m_worker, &ReplayWorker::opened, this, [this](double, const capture::CaptureHeader &header) {
+        m_linkKind = QString::fromStdString(header.family()) + QStringLiteral(" replay");
+    });
     connect(m_worker, &ReplayWorker::opened, this, &ReplaySession::opened);
     connect(m_worker, &ReplayWorker::positionChanged, this, &ReplaySession::positionChanged);
     connect(m_worker, &ReplayWorker::playingChanged, this, &ReplaySession::playingChanged);

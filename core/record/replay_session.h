@@ -36,7 +36,7 @@ public:
     void setGroup(std::shared_ptr<ReplayGroup> group);
     ReplayGroup *group() const { return m_group.get(); }
     void close() override;
-    QString linkKind() const override { return QStringLiteral("HiPNUC replay"); }
+    QString linkKind() const override { return m_linkKind; }
     bool isLive() const override { return false; }
 
     void play();
@@ -54,6 +54,7 @@ Q_SIGNALS:
     void nmeaReceived(const QString &sentence);
 
 private:
+    QString m_linkKind = QStringLiteral("replay");
     friend class ReplayGroup;
     void playAlone();
     void pauseAlone();

@@ -1,5 +1,6 @@
 #include "session_exporter.h"
 
+#include "decode/stream_decoder.h"
 #include "format/sample_json.h"
 #include "model/sample.h"
 #include "clock/trigger_pairing.h"
@@ -26,19 +27,6 @@ namespace imudesk::record {
 namespace csv = format::csv;
 
 namespace {
-
-int frameTagOf(const std::string &source)
-{
-    if (source == "HI91")
-        return 0x91;
-    if (source == "HI92")
-        return 0x92;
-    if (source == "HI81")
-        return 0x81;
-    if (source == "HI83")
-        return 0x83;
-    return 0;
-}
 
 // Linear interpolation of a device's values at t between two samples.
 struct Interpolated {
@@ -348,7 +336,7 @@ SessionExporter::Result SessionExporter::run(const QString &folder, const Option
             if (o.format == CaptureExporter::Format::TidyCsv) {
                 buf += name;
                 buf += ',';
-                CaptureExporter::appendTidyRow(buf, s, frameTagOf(s.source), origin);
+                CaptureExporter::appendTidyRow(buf, s, decode::recordTagOf(s.source), origin);
             } else {
                 const std::string json = format::sampleToJson(s, next->worldFrame());
                 buf += "{\"device\":\"" + name + "\",";

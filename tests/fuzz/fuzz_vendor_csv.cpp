@@ -1,10 +1,10 @@
-// libFuzzer target: import of the vendor's HI91 CSV (record/vendor_csv_importer.h).
+// libFuzzer target: import of the vendor's HI91 CSV (decode/hipnuc_vendor_csv_reader.h).
 //
 // Whatever the bytes, the import must not crash. Samples plus malformed lines never exceed
 // the lines of the input; reported errors carry increasing line numbers inside the input and
 // at most kMaxReportedErrors are kept; every sample is an HI91 sample with finite-or-parsed
 // values from the row (no NaN introduced by the importer itself unless the text said "nan").
-#include "record/vendor_csv_importer.h"
+#include "decode/hipnuc_vendor_csv_reader.h"
 
 #include <QBuffer>
 #include <QByteArray>
@@ -20,7 +20,7 @@
         }                                                                                             \
     } while (0)
 
-using imudesk::record::VendorCsvImporter;
+using imudesk::decode::VendorCsvImporter;
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {

@@ -3,7 +3,7 @@
 #include "../common/cli_run.h"
 #include "../common/test_main.h"
 #include "record/capture_exporter.h"
-#include "record/csv_capture_converter.h"
+#include "record/capture_source.h"
 #include "record/session_manifest.h"
 #include "decode/hipnuc_vendor_csv.h"
 
@@ -250,7 +250,7 @@ private Q_SLOTS:
         QVERIFY(dir.isValid());
         const QString vendor = writeVendorCsv(dir, QStringLiteral("vendor.csv"));
         const QString capture = dir.filePath(QStringLiteral("run.imucap"));
-        const auto converted = CsvCaptureConverter::convert(vendor, capture);
+        const auto converted = CaptureSource::convert(vendor, capture);
         QVERIFY2(converted.ok, qPrintable(converted.error));
         auto exported = [&](CaptureExporter::Format format, const QString &name) {
             CaptureExporter::Options o;

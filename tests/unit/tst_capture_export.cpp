@@ -7,9 +7,9 @@
 #include "capture/capture_decoder.h"
 #include "record/capture_exporter.h"
 #include "capture/capture_reader.h"
-#include "record/csv_capture_converter.h"
+#include "record/capture_source.h"
 #include "decode/hipnuc_vendor_csv.h"
-#include "record/vendor_csv_importer.h"
+#include "decode/hipnuc_vendor_csv_reader.h"
 
 #include <QBuffer>
 #include <QSet>
@@ -18,7 +18,7 @@
 
 using namespace imudesk;
 using record::CaptureExporter;
-using record::VendorCsvImporter;
+using decode::VendorCsvImporter;
 
 namespace {
 
@@ -213,9 +213,9 @@ private Q_SLOTS:
         o.output = m_dir.filePath(QStringLiteral("old.csv"));
         QVERIFY(CaptureExporter::run(m_capture, o).ok);
         const QString converted = m_dir.filePath(QStringLiteral("old.imucap"));
-        const auto r = record::CsvCaptureConverter::convert(m_dir.filePath(QStringLiteral("old_HI91.csv")), converted);
+        const auto r = record::CaptureSource::convert(m_dir.filePath(QStringLiteral("old_HI91.csv")), converted);
         QVERIFY2(r.ok, qPrintable(r.error));
-        QCOMPARE(r.import.samples, uint64_t(3000));
+        QCOMPARE(r.rows, uint64_t(3000));
         const Decoded back = decodeCapture(converted);
         std::vector<model::Sample> want;
         for (const auto &s : m_decoded.samples)
@@ -230,7 +230,7 @@ private Q_SLOTS:
             QCOMPARE(format::sampleToJson(b), format::sampleToJson(a));
         }
         // Not a vendor CSV: nothing is left behind.
-        const auto bad = record::CsvCaptureConverter::convert(m_capture, m_dir.filePath(QStringLiteral("bad.imucap")));
+        const auto bad = record::CaptureSource::convert(m_capture, m_dir.filePath(QStringLiteral("bad.imucap")));
         QVERIFY(!bad.ok);
         QVERIFY(!QFile::exists(m_dir.filePath(QStringLiteral("bad.imucap"))));
     }

@@ -87,7 +87,7 @@ private Q_SLOTS:
         QString why;
         const QString text = write(dir, QStringLiteral("notes.imucap"), "hello, this is not a capture\n");
         QCOMPARE(CaptureSource::detect(text, &why), CaptureSource::Kind::Unknown);
-        QVERIFY2(why.contains(QStringLiteral("no HiPNUC frame")), qPrintable(why));
+        QVERIFY2(why.contains(QStringLiteral("HiPNUC frames or NMEA sentences in its first 64 KiB")), qPrintable(why));
         QCOMPARE(CaptureSource::detect(write(dir, QStringLiteral("empty"), {}), &why), CaptureSource::Kind::Unknown);
         QVERIFY(why.contains(QStringLiteral("empty")));
         QCOMPARE(CaptureSource::detect(dir.filePath(QStringLiteral("missing")), &why), CaptureSource::Kind::Unknown);
@@ -131,7 +131,7 @@ private Q_SLOTS:
         const double lastS = double(times.back()) / 1e9;
         QVERIFY2(lastS > 4.9 && lastS <= 4.99, qPrintable(QString::number(lastS)));
 
-        const auto r = CaptureSource::convertRawDump(dump, dir.filePath(QStringLiteral("again.imucap")));
+        const auto r = CaptureSource::convert(dump, dir.filePath(QStringLiteral("again.imucap")));
         QVERIFY(r.ok);
         QCOMPARE(r.frames, uint64_t(500));
         QCOMPARE(r.clockJumps, uint64_t(1));
@@ -158,7 +158,7 @@ private Q_SLOTS:
         }
         QTemporaryDir dir;
         const QString dump = write(dir, QStringLiteral("hi81-first.bin"), bytesOf(raw));
-        const auto r = CaptureSource::convertRawDump(dump, dir.filePath(QStringLiteral("c.imucap")));
+        const auto r = CaptureSource::convert(dump, dir.filePath(QStringLiteral("c.imucap")));
         QVERIFY2(r.ok, qPrintable(r.error));
         QCOMPARE(r.frames, uint64_t(220));
         QCOMPARE(r.clockJumps, uint64_t(0));

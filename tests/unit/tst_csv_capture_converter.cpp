@@ -1,11 +1,11 @@
-// A vendor CSV imported (CsvCaptureConverter, or read in place through CaptureSource) and exported
+// A vendor CSV imported (CaptureSource::convert, or read in place through CaptureSource) and exported
 // again as vendor CSV gives back every cell it had (issue 53): pps_sync_stamp, incli_x and
 // incli_y, which an HI91 frame does not carry, came back as 0, and pc_counter restarted at 0;
 // a norm the vendor's tool wrote with other digits is kept as written too.
 #include "../common/test_main.h"
 #include "record/capture_exporter.h"
 #include "capture/capture_reader.h"
-#include "record/csv_capture_converter.h"
+#include "record/capture_source.h"
 #include "decode/hipnuc_vendor_csv.h"
 
 #include <QFile>
@@ -87,9 +87,9 @@ private Q_SLOTS:
         QString source = in;
         if (!inPlace) {
             source = dir.filePath(QStringLiteral("imported.imucap"));
-            const auto c = CsvCaptureConverter::convert(in, source);
+            const auto c = CaptureSource::convert(in, source);
             QVERIFY2(c.ok, qPrintable(c.error));
-            QCOMPARE(c.import.badLines, uint64_t(0));
+            QCOMPARE(c.badLines, uint64_t(0));
         }
         CaptureExporter::Options o;
         o.format = CaptureExporter::Format::VendorCsv;
@@ -123,7 +123,7 @@ private Q_SLOTS:
             f.write(vendorFile(123456, "77", "1.25", "-0.75", false));
         }
         const QString cap = dir.filePath(QStringLiteral("imported.imucap"));
-        QVERIFY(CsvCaptureConverter::convert(in, cap).ok);
+        QVERIFY(CaptureSource::convert(in, cap).ok);
         CaptureReader reader;
         QString error;
         QVERIFY2(reader.open(cap, &error), qPrintable(error));

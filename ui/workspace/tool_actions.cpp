@@ -14,7 +14,7 @@
 #include "recording/twist_align_dialog.h"
 #include "ui/firmware/firmware_update_dialog.h"
 #include "workspace/preferences.h"
-#include "record/csv_capture_converter.h"
+#include "record/capture_source.h"
 #include "record/session_manifest.h"
 #include "settings/configuration_controller.h"
 
@@ -271,7 +271,7 @@ bool ToolActions::openSession(const QString &folder)
 
 bool ToolActions::importVendorCsv(const QString &csvPath, const QString &capturePath)
 {
-    const auto r = record::CsvCaptureConverter::convert(csvPath, capturePath);
+    const auto r = record::CaptureSource::convert(csvPath, capturePath);
     if (!r.ok) {
         m_host->showError(tr("%1 could not be imported: %2").arg(QFileInfo(csvPath).fileName(), r.error));
         return false;

@@ -1,4 +1,4 @@
-#include "vendor_csv_importer.h"
+#include "hipnuc_vendor_csv_reader.h"
 
 #include <QFile>
 
@@ -8,7 +8,7 @@
 #include <string>
 #include <cmath>
 
-namespace imudesk::record {
+namespace imudesk::decode {
 
 namespace {
 
@@ -221,4 +221,4 @@ VendorCsvImporter::Result VendorCsvImporter::readRows(QIODevice &device, const R
     return r;
 }
 
-} // namespace imudesk::record
+} // namespace imudesk::decode

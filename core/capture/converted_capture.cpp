@@ -4,7 +4,7 @@
 
 #include <QFileInfo>
 
-namespace imudesk::record {
+namespace imudesk::capture {
 
 bool ConvertedCapture::open(const QString &path, const QString &sourcePath, const char *linkKind, const char *family,
                             const capture::CaptureHeader &header, QString *error)
@@ -60,4 +60,4 @@ void ConvertedCapture::discard()
     QFile::remove(m_file.fileName());
 }
 
-} // namespace imudesk::record
+} // namespace imudesk::capture

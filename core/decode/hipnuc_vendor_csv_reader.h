@@ -15,7 +15,7 @@
 #include <string_view>
 #include <vector>
 
-namespace imudesk::record {
+namespace imudesk::decode {
 
 class VendorCsvImporter {
     Q_DECLARE_TR_FUNCTIONS(VendorCsvImporter)
@@ -52,4 +52,4 @@ public:
     static bool looksLikeVendorCsv(const QString &path);
 };
 
-} // namespace imudesk::record
+} // namespace imudesk::decode

@@ -1,9 +1,10 @@
 #pragma once
-// A capture written in one go by a converter (a vendor CSV, a raw byte dump): the header, then
-// received-bytes chunks gathered in 1 MB blocks. A failed write is kept and reported once, by
-// finish(), which removes the partial file then.
+// A capture written in one go by a converter (a vendor CSV, a raw byte dump: decode/file_import.h):
+// the header, then received-bytes chunks gathered in 1 MB blocks. A failed write is kept and
+// reported once, by finish(), which removes the partial file then.
 #include "capture/capture_format.h"
 #include "capture/capture_header.h"
+#include "decode/file_import.h"
 
 #include <QCoreApplication>
 #include <QFile>
@@ -12,9 +13,9 @@
 #include <cstdint>
 #include <vector>
 
-namespace imudesk::record {
+namespace imudesk::capture {
 
-class ConvertedCapture {
+class ConvertedCapture : public decode::ChunkSink {
     Q_DECLARE_TR_FUNCTIONS(ConvertedCapture)
 
 public:
@@ -24,6 +25,11 @@ public:
               const capture::CaptureHeader &header,
               QString *error);
     void append(int64_t monotonicNs, const uint8_t *data, size_t n, capture::ChunkKind kind = capture::ChunkReceived);
+    // An importer's chunk: received bytes, or a vendor row's kept cells (ChunkVendorCells).
+    void chunk(int64_t ns, const uint8_t *data, size_t n, Role role = Role::Received) override
+    {
+        append(ns, data, n, role == Role::KeptCells ? capture::ChunkVendorCells : capture::ChunkReceived);
+    }
     // Writes what is buffered and closes; false (file removed) with a message when a write failed.
     bool finish(QString *error);
     // Closes and removes the file (the conversion failed).
@@ -37,4 +43,4 @@ private:
     bool m_failed = false;
 };
 
-} // namespace imudesk::record
+} // namespace imudesk::capture
