@@ -106,7 +106,8 @@ bool McapRecording::start(const QString &path, const std::vector<Device> &device
         const std::string name = fm::SampleChannels::uniqueName(deviceName(dev.header, dev.label),
                                                                 [&names](const std::string &n) { return names.count(n) > 0; });
         names.insert(name);
-        const fm::SampleChannels::Device d = channelsOf(dev.header, name);
+        fm::SampleChannels::Device d = channelsOf(dev.header, name);
+        d.onChangeOnly = true; // a file's layout
         m_writer->addMetadata(one ? std::string("device") : "device " + d.name, d.metadata);
         if (const std::string config = configurationJson(dev.header); !config.empty())
             m_writer->attach(one ? std::string("configuration.json") : d.name + "/configuration.json", "application/json",
@@ -143,7 +144,7 @@ void McapRecording::tick()
     // Called every half second (the session's statistics): a chunk closes 0.5 to 1 s after it
     // opened, so a kill loses less than a second.
     if (m_writer && m_writer->isOpen() && m_sinceFlush.elapsed() >= 450) {
-        m_writer->flush();
+        m_writer->endChunk(); // compressed, written and flushed by the writer's thread
         m_sinceFlush.restart();
     }
 }

@@ -105,7 +105,8 @@ void writeMcap(const QString &folder, const SessionManifest &manifest,
         const std::string name = fm::SampleChannels::uniqueName(deviceName(h, manifest.devices[i].name.toStdString()),
                                                                 [&names](const std::string &n) { return names.count(n) > 0; });
         names.insert(name);
-        const fm::SampleChannels::Device d = capture::McapRecording::channelsOf(h, name);
+        fm::SampleChannels::Device d = capture::McapRecording::channelsOf(h, name);
+        d.onChangeOnly = true; // a file's layout
         w.addMetadata("device " + d.name, d.metadata);
         if (const std::string config = capture::McapRecording::configurationJson(h); !config.empty())
             w.attach(d.name + "/configuration.json", "application/json", config, now, now);

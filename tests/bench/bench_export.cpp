@@ -11,8 +11,11 @@
 // folder), so that the figures are the exporter's and not the disk's: the vendor CSV of an
 // hour is about 820 MB, which a 100 MB/s disk alone needs 8 s to take.
 //
-// MCAP (issue 37) is measured against the vendor CSV of the same run: at least as fast, and the
-// file at most 30 % of its size.
+// MCAP (issues 37 and 54) is measured against the vendor CSV of the same run: at least as fast
+// (its chunks compressed and written by a thread of the writer's own), and the file at most 65 %
+// of its size with every index kept (Imu, MagneticField and the Euler angles each sample;
+// pressure and temperature when they change; the status ten times a second or when it changes).
+// The capture is a module's as one sends it: the status word steady, the barometer at 50 Hz.
 //
 // Exit status: 0 when each format meets the target and every frame was exported; 1 otherwise;
 // 2 on bad arguments.
@@ -129,6 +132,9 @@ int main(int argc, char **argv)
     synthetic::CaptureSpec spec;
     spec.frames = frames;
     spec.rateHz = 1000;
+    // A module's: its status word steady (a change a second here), its barometer at 50 Hz.
+    spec.statusEveryFrames = 1000;
+    spec.pressureEveryFrames = 20;
     const qint64 bytes = synthetic::writeCapture(capture, spec);
     if (bytes <= 0) {
         std::fprintf(stderr, "bench_export: cannot write %s\n", qPrintable(capture));
@@ -179,10 +185,10 @@ int main(int argc, char **argv)
             vendorMb = mb;
         } else if (run.format == record::CaptureExporter::Format::Mcap) {
             // r.frames counts samples (each is several messages).
-            const bool fast = s <= vendorSeconds, small = mb <= 0.30 * vendorMb;
+            const bool fast = s <= vendorSeconds, small = mb <= 0.65 * vendorMb;
             ok = ok && fast && small;
             std::printf("  MCAP against vendor CSV:     %.2fx its speed (target >= 1: %s), %.1f %% of its size (target "
-                        "<= 30 %%: %s)\n",
+                        "<= 65 %%: %s)\n",
                         vendorSeconds / s, fast ? "met" : "MISSED", 100.0 * mb / std::max(vendorMb, 1e-9),
                         small ? "met" : "MISSED");
         }

@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <algorithm>
 #include <map>
 #include <random>
 #include <string>
@@ -29,15 +30,24 @@ struct CaptureSpec {
     std::string serial;                          // device.serial in the header; empty: none
     std::map<std::string, std::string> config;   // the header's configuration snapshot
     std::string linkKind;                        // link.kind in the header; empty: none (HiPNUC serial)
+    // As a module has them: a status word that stays while nothing happens and a barometer that
+    // reads at its own rate (a new value every pressureEveryFrames frames, the last one repeated
+    // in between). 1 and 1: both change every frame (the decoders' tests).
+    int statusEveryFrames = 1;
+    int pressureEveryFrames = 1;
 };
 
-inline imudesk::protocol::hipnuc::Hi91 hi91(uint64_t i, std::mt19937 &rng, double rateHz)
+inline imudesk::protocol::hipnuc::Hi91 hi91(uint64_t i, std::mt19937 &rng, double rateHz, int statusEveryFrames = 1,
+                                            int pressureEveryFrames = 1)
 {
     std::normal_distribution<float> noise(0.f, 0.01f);
     imudesk::protocol::hipnuc::Hi91 h;
-    h.mainStatus = uint16_t(0x1508 + (i % 3));
+    h.mainStatus = uint16_t(0x1508 + (i / uint64_t(std::max(1, statusEveryFrames))) % 3);
     h.temperature = int8_t(25 + (i / 1000) % 10);
-    h.pressure = 100676.07f + noise(rng);
+    // The barometer's reading of frame i: its own noise, the same for the frames it spans.
+    const uint64_t reading = i / uint64_t(std::max(1, pressureEveryFrames));
+    h.pressure = 100676.07f + (pressureEveryFrames <= 1 ? noise(rng)
+                                                        : float(int64_t((reading * 2654435761u) % 4001u) - 2000) * 1e-5f);
     h.systemTime = uint32_t(double(i) * 1000.0 / rateHz);
     h.acc = {noise(rng), noise(rng), 1.0f + noise(rng)};
     h.gyr = {0.1f + noise(rng), -0.2f + noise(rng), noise(rng)};
@@ -72,7 +82,8 @@ inline qint64 writeCapture(const QString &path, const CaptureSpec &spec)
     const int64_t t0 = spec.t0Ns;
     int inChunk = 0;
     for (uint64_t i = 0; i < spec.frames; ++i) {
-        const auto frame = hp::buildFrame(hp::encode(hi91(i, rng, spec.rateHz)));
+        const auto frame =
+            hp::buildFrame(hp::encode(hi91(i, rng, spec.rateHz, spec.statusEveryFrames, spec.pressureEveryFrames)));
         chunk.insert(chunk.end(), frame.begin(), frame.end());
         if (spec.mixed && i % 10 == 5) {
             hp::Hi81 h81;

@@ -304,6 +304,41 @@ private Q_SLOTS:
         QCOMPARE(mag, magMsgs.size());
         QCOMPARE(fix, fixMsgs.size());
         QVERIFY(checked > 2000);
+
+        // A file's pressure and temperature (issue 54, point 7): a message when the value changes,
+        // none while it stays, and no change dropped. Walking the rows: each change of the CSV's
+        // value is the next message's value (the messages between are values the CSV prints
+        // alike, if any).
+        const auto onChange = [&](const char *column, const QString &topic, const char *field) {
+            const auto &msgs = byTopic[topic];
+            QVERIFY2(!msgs.empty(), column);
+            const auto valueOf = [&](size_t m) { return msgs[m].value(QStringLiteral("data")).toObject().value(QLatin1String(field)).toDouble(); };
+            size_t m = 0, rows = 0, changes = 0;
+            QByteArray last;
+            for (size_t i = 0; i < csv.rows.size(); ++i) {
+                const QByteArray v = csv.at(i, column);
+                if (v.isEmpty())
+                    continue;
+                ++rows;
+                if (v == last)
+                    continue;
+                ++changes;
+                while (m < msgs.size() && !last.isEmpty() && near(valueOf(m), last) && !near(valueOf(m), v))
+                    ++m; // a value the CSV prints as the one before
+                QVERIFY2(m < msgs.size() && near(valueOf(m), v),
+                         qPrintable(QStringLiteral("%1 row %2: %3, message %4 of %5").arg(QLatin1String(column)).arg(i).arg(QString::fromUtf8(v)).arg(m).arg(msgs.size())));
+                ++m;
+                last = v;
+            }
+            QCOMPARE(m, msgs.size());
+            QVERIFY2(msgs.size() < rows || changes == rows, qPrintable(QStringLiteral("%1: %2 messages for %3 rows").arg(QLatin1String(column)).arg(msgs.size()).arg(rows)));
+        };
+        onChange("pressure_Pa", QStringLiteral("pressure"), "fluid_pressure");
+        onChange("temperature_degC", QStringLiteral("temperature"), "temperature");
+        // HI91's temperature changes once a second here (HI83's, every tenth frame, differs): far
+        // fewer messages than samples.
+        QVERIFY2(byTopic[QStringLiteral("temperature")].size() < csv.rows.size() / 3,
+                 qPrintable(QString::number(byTopic[QStringLiteral("temperature")].size())));
     }
 
     // What a recording killed mid-write leaves: everything up to the last whole chunk reads.

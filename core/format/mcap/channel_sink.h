@@ -22,6 +22,10 @@ public:
     // logTime, publishTime: ns since the Unix epoch. False when the sink failed for good.
     virtual bool write(uint16_t channelId, uint32_t sequence, uint64_t logTime, uint64_t publishTime,
                        const void *data, size_t size) = 0;
+    // A message encoded in place (an MCAP file's chunk): the buffer its bytes are appended to,
+    // then endMessage(); null when this sink takes finished messages only (write), or failed.
+    virtual std::string *beginMessage(uint16_t, uint32_t, uint64_t, uint64_t) { return nullptr; }
+    virtual bool endMessage() { return false; }
 };
 
 } // namespace imudesk::format::mcap

@@ -101,16 +101,92 @@ McapWriter::~McapWriter()
 {
     if (m_file.isOpen())
         close();
+    stopWorker();
     ZSTD_freeCCtx(m_zstd);
 }
 
 bool McapWriter::failed(const QString &what)
 {
+    const std::lock_guard<std::mutex> lock(m_errorMutex);
     if (!m_failed) {
-        m_failed = true;
         m_error = what;
+        m_failed = true;
     }
     return false;
+}
+
+QString McapWriter::error() const
+{
+    const std::lock_guard<std::mutex> lock(m_errorMutex);
+    return m_error;
+}
+
+uint32_t McapWriter::chunkCount() const
+{
+    const std::lock_guard<std::mutex> lock(m_mutex);
+    return uint32_t(m_chunkIndexes.size());
+}
+
+bool McapWriter::submit(Job &&job)
+{
+    if (!m_worker.joinable()) { // no writing thread: at once
+        const bool ok = job.chunk ? writeChunk(job) : writeOut(job.bytes);
+        job.bytes.clear();
+        m_spare.push_back(std::move(job));
+        return ok;
+    }
+    std::unique_lock<std::mutex> lock(m_mutex);
+    m_idle.wait(lock, [this] { return m_jobs.size() < kChunksInFlight; });
+    m_jobs.push_back(std::move(job));
+    lock.unlock();
+    m_wake.notify_one();
+    return !m_failed;
+}
+
+void McapWriter::workerLoop()
+{
+    std::unique_lock<std::mutex> lock(m_mutex);
+    for (;;) {
+        m_wake.wait(lock, [this] { return m_stop || !m_jobs.empty(); });
+        if (m_jobs.empty())
+            return; // stopped, with nothing left to write
+        Job job = std::move(m_jobs.front());
+        m_jobs.pop_front();
+        m_busy = true;
+        lock.unlock();
+        if (!m_failed) {
+            if (job.chunk)
+                writeChunk(job);
+            else
+                writeOut(job.bytes);
+        }
+        job.bytes.clear();
+        lock.lock();
+        m_busy = false;
+        if (m_spare.size() <= kChunksInFlight)
+            m_spare.push_back(std::move(job)); // its buffers, for a chunk to come
+        m_idle.notify_all();
+    }
+}
+
+void McapWriter::drain()
+{
+    if (!m_worker.joinable())
+        return;
+    std::unique_lock<std::mutex> lock(m_mutex);
+    m_idle.wait(lock, [this] { return m_jobs.empty() && !m_busy; });
+}
+
+void McapWriter::stopWorker()
+{
+    if (!m_worker.joinable())
+        return;
+    {
+        const std::lock_guard<std::mutex> lock(m_mutex);
+        m_stop = true;
+    }
+    m_wake.notify_one();
+    m_worker.join();
 }
 
 bool McapWriter::open(const QString &path, const Options &options)
@@ -124,7 +200,13 @@ bool McapWriter::open(const QString &path, const Options &options)
     str(header, m_options.profile);
     str(header, m_options.library);
     record(out, OpHeader, header);
-    return writeOut(out);
+    if (!writeOut(out))
+        return false;
+    if (m_options.background) {
+        m_stop = false;
+        m_worker = std::thread([this] { workerLoop(); });
+    }
+    return true;
 }
 
 bool McapWriter::writeOut(const std::string &bytes)
@@ -176,37 +258,36 @@ bool McapWriter::putRecord(uint8_t op, const std::string &content)
         record(m_chunk, op, content);
         return true;
     }
-    std::string out;
-    record(out, op, content);
-    return writeOut(out);
+    Job job;
+    record(job.bytes, op, content);
+    return submit(std::move(job));
 }
 
-bool McapWriter::write(uint16_t channelId, uint32_t sequence, uint64_t logTime, uint64_t publishTime,
-                       const void *data, size_t size)
+std::string *McapWriter::beginMessage(uint16_t channelId, uint32_t sequence, uint64_t logTime, uint64_t publishTime)
 {
     if (m_failed)
-        return false;
+        return nullptr;
     if (!m_chunk.empty()
         && (m_chunk.size() >= m_options.chunkBytes || int64_t(logTime - m_chunkStart) >= m_options.chunkSpanNs
             || logTime < m_chunkStart))
         if (!closeChunk())
-            return false;
+            return nullptr;
     if (m_chunk.empty())
         m_chunkStart = m_chunkEnd = logTime;
     if (channelId >= m_chunkMessages.size())
         m_chunkMessages.resize(size_t(channelId) + 1);
     m_chunkMessages[channelId].emplace_back(logTime, m_chunk.size());
-    // The record's fixed part in one piece (little-endian host: static_assert above).
+    // The record's fixed part in one piece (little-endian host: static_assert above); its
+    // length when the message is complete (endMessage).
+    m_messageAt = m_chunk.size();
     char head[1 + 8 + 2 + 4 + 8 + 8];
-    const uint64_t length = 2 + 4 + 8 + 8 + size;
     head[0] = char(OpMessage);
-    std::memcpy(head + 1, &length, 8);
+    std::memset(head + 1, 0, 8);
     std::memcpy(head + 9, &channelId, 2);
     std::memcpy(head + 11, &sequence, 4);
     std::memcpy(head + 15, &logTime, 8);
     std::memcpy(head + 23, &publishTime, 8);
     m_chunk.append(head, sizeof head);
-    m_chunk.append(static_cast<const char *>(data), size);
     m_chunkStart = std::min(m_chunkStart, logTime);
     m_chunkEnd = std::max(m_chunkEnd, logTime);
     if (m_messageCount == 0) {
@@ -217,7 +298,24 @@ bool McapWriter::write(uint16_t channelId, uint32_t sequence, uint64_t logTime, 
     }
     ++m_messageCount;
     ++m_channelCounts[channelId]; // a map, but one small enough
-    return true;
+    return &m_chunk;
+}
+
+bool McapWriter::endMessage()
+{
+    const uint64_t length = m_chunk.size() - m_messageAt - 1 - 8;
+    std::memcpy(m_chunk.data() + m_messageAt + 1, &length, 8);
+    return !m_failed;
+}
+
+bool McapWriter::write(uint16_t channelId, uint32_t sequence, uint64_t logTime, uint64_t publishTime,
+                       const void *data, size_t size)
+{
+    std::string *chunk = beginMessage(channelId, sequence, logTime, publishTime);
+    if (!chunk)
+        return false;
+    chunk->append(static_cast<const char *>(data), size);
+    return endMessage();
 }
 
 bool McapWriter::closeChunk()
@@ -226,11 +324,37 @@ bool McapWriter::closeChunk()
         return false;
     if (m_chunk.empty())
         return true;
+    // The chunk goes to the writing side with its message indexes; the next one is filled in a
+    // spare job's buffers.
+    Job job;
+    {
+        const std::lock_guard<std::mutex> lock(m_mutex);
+        if (!m_spare.empty()) {
+            job = std::move(m_spare.back());
+            m_spare.pop_back();
+        }
+    }
+    job.chunk = true;
+    job.start = m_chunkStart;
+    job.end = m_chunkEnd;
+    std::swap(job.bytes, m_chunk);
+    std::swap(job.messages, m_chunkMessages);
+    m_chunk.clear();
+    if (m_chunkMessages.size() < job.messages.size())
+        m_chunkMessages.resize(job.messages.size());
+    for (auto &entries : m_chunkMessages)
+        entries.clear(); // their memory stays for the next chunk
+    return submit(std::move(job));
+}
+
+bool McapWriter::writeChunk(Job &job)
+{
+    const std::string &chunk = job.bytes;
     const bool zstd = m_options.compression == Compression::Zstd;
     // A zstd chunk carries zstd's own checksum of its content (xxHash, a fraction of CRC-32's
     // time); the chunk's CRC is then 0, "not computed" (the specification's word for it).
-    const uint32_t crc = zstd ? 0 : format::crc32(0, m_chunk.data(), m_chunk.size());
-    const std::string *records = &m_chunk;
+    const uint32_t crc = zstd ? 0 : format::crc32(0, chunk.data(), chunk.size());
+    const std::string *records = &chunk;
     if (zstd) {
         if (!m_zstd) {
             m_zstd = ZSTD_createCCtx();
@@ -239,25 +363,26 @@ bool McapWriter::closeChunk()
             ZSTD_CCtx_setParameter(m_zstd, ZSTD_c_compressionLevel, 1);
             ZSTD_CCtx_setParameter(m_zstd, ZSTD_c_checksumFlag, 1);
         }
-        m_compressed.resize(ZSTD_compressBound(m_chunk.size()));
-        const size_t n = ZSTD_compress2(m_zstd, m_compressed.data(), m_compressed.size(), m_chunk.data(), m_chunk.size());
+        m_compressed.resize(ZSTD_compressBound(chunk.size()));
+        const size_t n = ZSTD_compress2(m_zstd, m_compressed.data(), m_compressed.size(), chunk.data(), chunk.size());
         if (ZSTD_isError(n))
             return failed(QStringLiteral("zstd: %1").arg(QString::fromUtf8(ZSTD_getErrorName(n))));
         m_compressed.resize(n);
         records = &m_compressed;
     }
+    const uint64_t offset = m_offset.load();
     ChunkIndex index;
-    index.startTime = m_chunkStart;
-    index.endTime = m_chunkEnd;
-    index.offset = m_offset;
+    index.startTime = job.start;
+    index.endTime = job.end;
+    index.offset = offset;
     index.compressedSize = records->size();
-    index.uncompressedSize = m_chunk.size();
+    index.uncompressedSize = chunk.size();
     std::string out;
     out.reserve(records->size() + 128);
     std::string head;
-    u64(head, m_chunkStart);
-    u64(head, m_chunkEnd);
-    u64(head, m_chunk.size());
+    u64(head, job.start);
+    u64(head, job.end);
+    u64(head, chunk.size());
     u32(head, crc);
     str(head, zstd ? "zstd" : "");
     u64(head, records->size());
@@ -267,18 +392,18 @@ bool McapWriter::closeChunk()
     out += *records;
     index.length = out.size();
     // The message indexes, one per channel with messages in the chunk, after it.
-    uint64_t at = m_offset + out.size();
+    uint64_t at = offset + out.size();
     const uint64_t indexesStart = at;
-    for (uint16_t channel = 0; channel < m_chunkMessages.size(); ++channel) {
-        const auto &entries = m_chunkMessages[channel];
+    for (uint16_t channel = 0; channel < job.messages.size(); ++channel) {
+        const auto &entries = job.messages[channel];
         if (entries.empty())
             continue;
         std::string content;
         u16(content, channel);
         u32(content, uint32_t(entries.size() * 16));
-        for (const auto &[time, offset] : entries) {
+        for (const auto &[time, position] : entries) {
             u64(content, time);
-            u64(content, offset);
+            u64(content, position);
         }
         index.indexOffsets[channel] = at;
         const size_t before = out.size();
@@ -286,12 +411,14 @@ bool McapWriter::closeChunk()
         at += out.size() - before;
     }
     index.indexLength = at - indexesStart;
-    m_chunk.clear();
-    for (auto &entries : m_chunkMessages)
-        entries.clear(); // their memory stays for the next chunk
+    for (auto &entries : job.messages)
+        entries.clear(); // their memory stays for a chunk to come
     if (!writeOut(out))
         return false;
-    m_chunkIndexes.push_back(std::move(index));
+    {
+        const std::lock_guard<std::mutex> lock(m_mutex);
+        m_chunkIndexes.push_back(std::move(index));
+    }
     if (!m_file.flush())
         return failed(m_file.errorString());
     return true;
@@ -302,6 +429,7 @@ bool McapWriter::attach(const std::string &name, const std::string &mediaType, c
 {
     if (m_failed || !closeChunk())
         return false;
+    drain(); // its offset is where the writing side has got to
     std::string content;
     u64(content, logTime);
     u64(content, createTime);
@@ -323,6 +451,7 @@ bool McapWriter::addMetadata(const std::string &name, const StringMap &values)
 {
     if (m_failed || !closeChunk())
         return false;
+    drain(); // its offset is where the writing side has got to
     std::string content;
     str(content, name);
     stringMap(content, values);
@@ -339,11 +468,21 @@ bool McapWriter::flush()
 {
     if (!closeChunk())
         return false;
+    drain();
+    if (m_failed)
+        return false;
     return m_file.flush() || failed(m_file.errorString());
+}
+
+bool McapWriter::endChunk()
+{
+    return closeChunk();
 }
 
 void McapWriter::abandon()
 {
+    drain();
+    stopWorker();
     m_file.close();
 }
 
@@ -351,7 +490,10 @@ bool McapWriter::close()
 {
     if (!m_file.isOpen())
         return !m_failed;
-    if (!closeChunk()) {
+    const bool closed = closeChunk();
+    drain();
+    stopWorker(); // the rest is written here
+    if (!closed || m_failed) {
         m_file.close();
         return false;
     }

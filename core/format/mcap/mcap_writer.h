@@ -7,15 +7,27 @@
 // a chunk's for uncompressed chunks, zstd's own content checksum in compressed ones).
 //
 // A chunk closes when it holds chunkBytes of records or spans chunkSpanNs of log time, and is
-// then written out and flushed: a recording killed mid-run keeps every chunk closed before,
-// which a reader that streams the file (no summary) reads up to there.
+// then written out and flushed: a recording killed mid-run keeps every chunk closed before
+// (but those still being compressed), which a reader that streams the file (no summary) reads
+// up to there.
 //
-// Plain value class over a QFile; not thread-safe. Every method after a failed write returns
-// false and error() says why (the disk full, the file gone).
+// With Options::background (the default), a closed chunk is compressed and written by a thread
+// of the writer's own (issue 54, point 7), while the caller goes on filling the next: at most
+// kChunksInFlight wait for it, then the caller waits (the memory stays bounded). Whatever is
+// written outside a chunk goes through the same thread, in order.
+//
+// Not thread-safe for its callers: one thread calls it. Every method after a failed write
+// returns false and error() says why (the disk full, the file gone).
 #include "format/mcap/channel_sink.h"
 
 #include <QFile>
 #include <QString>
+
+#include <atomic>
+#include <condition_variable>
+#include <deque>
+#include <mutex>
+#include <thread>
 
 struct ZSTD_CCtx_s; // zstd.h's compression context
 
@@ -39,7 +51,9 @@ public:
         Compression compression = Compression::Zstd;
         size_t chunkBytes = 1u << 20;        // uncompressed records per chunk at most (about)
         int64_t chunkSpanNs = 1'000'000'000; // a chunk never spans more log time than this
+        bool background = true;              // chunks compressed and written by a thread of its own
     };
+    static constexpr size_t kChunksInFlight = 2;
     McapWriter() = default;
     ~McapWriter() override;
     McapWriter(const McapWriter &) = delete;
@@ -56,22 +70,28 @@ public:
     // logTime, publishTime: ns (by convention since the Unix epoch).
     bool write(uint16_t channelId, uint32_t sequence, uint64_t logTime, uint64_t publishTime, const void *data,
                size_t size) override;
+    // The open chunk, to append one message's bytes to, then endMessage(): no copy.
+    std::string *beginMessage(uint16_t channelId, uint32_t sequence, uint64_t logTime, uint64_t publishTime) override;
+    bool endMessage() override;
     bool attach(const std::string &name, const std::string &mediaType, const std::string &data, uint64_t logTime,
                 uint64_t createTime);
     bool addMetadata(const std::string &name, const StringMap &values);
-    // Closes the open chunk (if any) and flushes the file.
+    // Closes the open chunk (if any) and flushes the file, once everything before is written.
     bool flush();
+    // Closes the open chunk (if any); it is written (and the file flushed) in the background.
+    bool endChunk();
     // Writes the summary and the footer and closes the file. Returns false (error()) when a
     // write failed, now or before.
     bool close();
     // Closes the file as it stands, without a summary (what a crash leaves; tests).
     void abandon();
 
-    const QString &error() const { return m_error; }
+    QString error() const;
     uint64_t messageCount() const { return m_messageCount; }
     // Bytes in the file so far (the summary and footer included once closed).
-    uint64_t bytesWritten() const { return m_offset; }
-    uint32_t chunkCount() const { return uint32_t(m_chunkIndexes.size()); }
+    uint64_t bytesWritten() const { return m_offset.load(std::memory_order_relaxed); }
+    // Chunks written (once flushed or closed: every chunk).
+    uint32_t chunkCount() const;
 
 private:
     struct Schema {
@@ -99,16 +119,30 @@ private:
 
     static std::string schemaContent(const Schema &s);
     static std::string channelContent(const Channel &c);
+    // What the writing side does, in order: bytes outside a chunk, or a chunk to compress and
+    // write with its message indexes.
+    struct Job {
+        std::string bytes; // a chunk's records, or bytes to write as they are
+        bool chunk = false;
+        std::vector<std::vector<std::pair<uint64_t, uint64_t>>> messages; // a chunk's, by channel
+        uint64_t start = 0, end = 0;
+    };
     bool writeOut(const std::string &bytes); // to the file, counted in the data section's CRC
     bool putRecord(uint8_t op, const std::string &content);
     bool closeChunk();
     bool failed(const QString &what);
+    bool submit(Job &&job);                  // to the writing thread, or done at once without one
+    bool writeChunk(Job &job);               // compresses and writes; the writing side's
+    void drain();                            // waits until the writing side has done every job
+    void stopWorker();
+    void workerLoop();
 
     QFile m_file;
     Options m_options;
+    mutable std::mutex m_errorMutex;
     QString m_error;
-    bool m_failed = false;
-    uint64_t m_offset = 0;  // bytes written so far
+    std::atomic<bool> m_failed{false};
+    std::atomic<uint64_t> m_offset{0}; // bytes written so far
     uint32_t m_dataCrc = 0; // running CRC of the data section
     std::vector<Schema> m_schemas;
     std::vector<Channel> m_channels;
@@ -116,6 +150,7 @@ private:
     std::string m_chunk;
     std::vector<std::vector<std::pair<uint64_t, uint64_t>>> m_chunkMessages; // by channel id
     uint64_t m_chunkStart = 0, m_chunkEnd = 0;
+    size_t m_messageAt = 0; // where the message under way (beginMessage) starts in the chunk
     std::vector<ChunkIndex> m_chunkIndexes;
     std::vector<AttachmentIndex> m_attachments;
     std::vector<MetadataIndex> m_metadata;
@@ -123,6 +158,13 @@ private:
     uint64_t m_messageCount = 0, m_firstTime = 0, m_lastTime = 0;
     std::string m_compressed; // reused between chunks
     ::ZSTD_CCtx_s *m_zstd = nullptr;
+    // The writing thread and its queue (Options::background).
+    std::thread m_worker;
+    mutable std::mutex m_mutex;
+    std::condition_variable m_wake, m_idle;
+    std::deque<Job> m_jobs;
+    std::vector<Job> m_spare; // jobs done, their buffers kept for the next chunks
+    bool m_busy = false, m_stop = false;
 };
 
 } // namespace imudesk::format::mcap

@@ -47,17 +47,16 @@ void header(CdrWriter &w, Stamp stamp, const std::string &frameId)
 
 void vector3(CdrWriter &w, double x, double y, double z)
 {
-    w.f64(x);
-    w.f64(y);
-    w.f64(z);
+    const double v[3] = {x, y, z};
+    w.f64s(v, 3);
 }
 
 // A covariance nobody measured: all zero ("unknown"), or -1 first ("this part is not available").
 void covariance(CdrWriter &w, bool available)
 {
-    w.f64(available ? 0.0 : -1.0);
-    for (int i = 1; i < 9; ++i)
-        w.f64(0.0);
+    static constexpr double kUnknown[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};
+    static constexpr double kNotAvailable[9] = {-1, 0, 0, 0, 0, 0, 0, 0, 0};
+    w.f64s(available ? kUnknown : kNotAvailable, 9);
 }
 
 } // namespace
@@ -160,25 +159,21 @@ const Ros2Type &vector3StampedType()
     return t;
 }
 
-const std::string &encodeEuler(CdrWriter &w, const model::Sample &s, Stamp stamp, const std::string &frameId)
+std::string_view encodeEuler(CdrWriter &w, const model::Sample &s, Stamp stamp, const std::string &frameId)
 {
-    w.reset();
     header(w, stamp, frameId);
     vector3(w, single(s.roll), single(s.pitch), single(s.yaw));
     return w.data();
 }
 
-const std::string &encodeImu(CdrWriter &w, const model::Sample &s, Stamp stamp, const std::string &frameId)
+std::string_view encodeImu(CdrWriter &w, const model::Sample &s, Stamp stamp, const std::string &frameId)
 {
     using namespace model;
-    w.reset();
     header(w, stamp, frameId);
     const bool q = s.has(FieldQuat), g = s.has(FieldGyr), a = s.has(FieldAcc);
     if (q) {
-        w.f64(s.quat.x);
-        w.f64(s.quat.y);
-        w.f64(s.quat.z);
-        w.f64(s.quat.w);
+        const double quat[4] = {s.quat.x, s.quat.y, s.quat.z, s.quat.w};
+        w.f64s(quat, 4);
     } else {
         vector3(w, 0, 0, 0);
         w.f64(1);
@@ -197,36 +192,32 @@ const std::string &encodeImu(CdrWriter &w, const model::Sample &s, Stamp stamp, 
     return w.data();
 }
 
-const std::string &encodeMagneticField(CdrWriter &w, const model::Sample &s, Stamp stamp, const std::string &frameId)
+std::string_view encodeMagneticField(CdrWriter &w, const model::Sample &s, Stamp stamp, const std::string &frameId)
 {
-    w.reset();
     header(w, stamp, frameId);
     vector3(w, single(s.mag.x * 1e-6), single(s.mag.y * 1e-6), single(s.mag.z * 1e-6));
     covariance(w, true);
     return w.data();
 }
 
-const std::string &encodeFluidPressure(CdrWriter &w, const model::Sample &s, Stamp stamp, const std::string &frameId)
+std::string_view encodeFluidPressure(CdrWriter &w, const model::Sample &s, Stamp stamp, const std::string &frameId)
 {
-    w.reset();
     header(w, stamp, frameId);
     w.f64(s.pressurePa);
     w.f64(0);
     return w.data();
 }
 
-const std::string &encodeTemperature(CdrWriter &w, const model::Sample &s, Stamp stamp, const std::string &frameId)
+std::string_view encodeTemperature(CdrWriter &w, const model::Sample &s, Stamp stamp, const std::string &frameId)
 {
-    w.reset();
     header(w, stamp, frameId);
     w.f64(s.temperatureC);
     w.f64(0);
     return w.data();
 }
 
-const std::string &encodeNavSatFix(CdrWriter &w, const model::Sample &s, Stamp stamp, const std::string &frameId)
+std::string_view encodeNavSatFix(CdrWriter &w, const model::Sample &s, Stamp stamp, const std::string &frameId)
 {
-    w.reset();
     header(w, stamp, frameId);
     // NavSatStatus: a fix where the sample says so (or has no quality to say), GPS.
     w.i8(s.gnssQuality == 0 ? int8_t(-1) : int8_t(0));
@@ -240,10 +231,9 @@ const std::string &encodeNavSatFix(CdrWriter &w, const model::Sample &s, Stamp s
     return w.data();
 }
 
-const std::string &encodeTf(CdrWriter &w, const model::Sample &s, Stamp stamp, const std::string &worldFrame,
+std::string_view encodeTf(CdrWriter &w, const model::Sample &s, Stamp stamp, const std::string &worldFrame,
                             const std::string &frameId)
 {
-    w.reset();
     w.u32(1); // one transform
     header(w, stamp, worldFrame);
     w.str(frameId);

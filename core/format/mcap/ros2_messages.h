@@ -22,36 +22,63 @@
 
 #include <cstdint>
 #include <string>
+#include <string_view>
 
 namespace imudesk::format::mcap {
 
 class CdrWriter {
 public:
     CdrWriter() { reset(); }
-    // Empty again (the encapsulation header only), keeping the buffer's memory.
-    void reset() { m_buf.assign("\x00\x01\x00\x00", 4); }
-    void u8(uint8_t v) { m_buf.push_back(char(v)); }
-    void i8(int8_t v) { m_buf.push_back(char(v)); }
+    // Empty again (the encapsulation header only), in its own buffer, keeping its memory.
+    void reset()
+    {
+        m_out = &m_own;
+        m_base = 0;
+        m_own.assign(kEncapsulation, 4);
+    }
+    // Encodes at the end of out instead, from its encapsulation header on (an MCAP chunk: the
+    // message is written where it stays, not copied there), until reset().
+    void into(std::string &out)
+    {
+        m_out = &out;
+        m_base = out.size();
+        out.append(kEncapsulation, 4);
+    }
+    void u8(uint8_t v) { m_out->push_back(char(v)); }
+    void i8(int8_t v) { m_out->push_back(char(v)); }
     void u16(uint16_t v) { put(&v, 2); }
     void i32(int32_t v) { put(&v, 4); }
     void u32(uint32_t v) { put(&v, 4); }
     void f64(double v) { put(&v, 8); }
+    // n doubles in a row (a vector or a fixed array), aligned once.
+    void f64s(const double *v, size_t n)
+    {
+        align(8);
+        m_out->append(reinterpret_cast<const char *>(v), n * 8);
+    }
     void str(const std::string &s)
     {
         u32(uint32_t(s.size() + 1));
-        m_buf += s;
-        m_buf.push_back('\0');
+        m_out->append(s.data(), s.size() + 1); // with its NUL
     }
-    const std::string &data() const { return m_buf; }
+    // The message encoded so far.
+    std::string_view data() const { return std::string_view(*m_out).substr(m_base); }
 
 private:
+    static constexpr char kEncapsulation[4] = {0x00, 0x01, 0x00, 0x00};
+    void align(size_t n)
+    {
+        if (const size_t over = (m_out->size() - m_base - 4) % n; over != 0)
+            m_out->append(n - over, '\0');
+    }
     void put(const void *v, size_t n)
     {
-        while ((m_buf.size() - 4) % n != 0)
-            m_buf.push_back('\0');
-        m_buf.append(static_cast<const char *>(v), n); // little-endian host (static_assert in the .cpp)
+        align(n);
+        m_out->append(static_cast<const char *>(v), n); // little-endian host (static_assert in the .cpp)
     }
-    std::string m_buf;
+    std::string m_own;
+    std::string *m_out = &m_own;
+    size_t m_base = 0;
 };
 
 struct Ros2Type {
@@ -73,16 +100,16 @@ struct Stamp {
     static Stamp fromNs(uint64_t ns) { return {int32_t(ns / 1'000'000'000u), uint32_t(ns % 1'000'000'000u)}; }
 };
 
-// Each encodes into w (emptied first) and returns its data.
-const std::string &encodeImu(CdrWriter &w, const model::Sample &s, Stamp stamp, const std::string &frameId);
-const std::string &encodeMagneticField(CdrWriter &w, const model::Sample &s, Stamp stamp, const std::string &frameId);
-const std::string &encodeFluidPressure(CdrWriter &w, const model::Sample &s, Stamp stamp, const std::string &frameId);
-const std::string &encodeTemperature(CdrWriter &w, const model::Sample &s, Stamp stamp, const std::string &frameId);
-const std::string &encodeNavSatFix(CdrWriter &w, const model::Sample &s, Stamp stamp, const std::string &frameId);
+// Each encodes into w where it stands (reset() or into() first) and returns the message.
+std::string_view encodeImu(CdrWriter &w, const model::Sample &s, Stamp stamp, const std::string &frameId);
+std::string_view encodeMagneticField(CdrWriter &w, const model::Sample &s, Stamp stamp, const std::string &frameId);
+std::string_view encodeFluidPressure(CdrWriter &w, const model::Sample &s, Stamp stamp, const std::string &frameId);
+std::string_view encodeTemperature(CdrWriter &w, const model::Sample &s, Stamp stamp, const std::string &frameId);
+std::string_view encodeNavSatFix(CdrWriter &w, const model::Sample &s, Stamp stamp, const std::string &frameId);
 // The Euler angles (deg) as geometry_msgs/msg/Vector3Stamped: x roll, y pitch, z yaw.
-const std::string &encodeEuler(CdrWriter &w, const model::Sample &s, Stamp stamp, const std::string &frameId);
+std::string_view encodeEuler(CdrWriter &w, const model::Sample &s, Stamp stamp, const std::string &frameId);
 // One transform: worldFrame ("enu", "nwu") to frameId, rotated by the sample's quaternion.
-const std::string &encodeTf(CdrWriter &w, const model::Sample &s, Stamp stamp, const std::string &worldFrame,
+std::string_view encodeTf(CdrWriter &w, const model::Sample &s, Stamp stamp, const std::string &worldFrame,
                             const std::string &frameId);
 
 } // namespace imudesk::format::mcap

@@ -47,8 +47,7 @@ SampleChannels::Channel *SampleChannels::open(const std::string &topic, const st
     return &(m_channels[topic] = Channel{id, 0, 0});
 }
 
-bool SampleChannels::put(Kind kind, const model::Sample &s, uint64_t logTime, uint64_t publishTime,
-                         std::string_view data)
+SampleChannels::Channel *SampleChannels::channel(Kind kind)
 {
     Channel *&c = m_byKind[kind];
     if (!c) {
@@ -62,12 +61,42 @@ bool SampleChannels::put(Kind kind, const model::Sample &s, uint64_t logTime, ui
         const std::string topic = kind == Tf ? std::string(k.suffix) : m_prefix + k.suffix;
         c = k.type ? open(topic, k.type().name, "ros2msg", k.type().definition, "cdr")
                    : open(topic, "imudesk/Sample", "jsonschema", kStatusSchema, "json");
-        if (!c)
-            return false;
     }
-    const uint32_t sequence = s.has(model::FieldDeviceTime) ? uint32_t(int64_t(s.deviceTimeMs)) : c->sequence++;
-    ++c->count;
+    return c;
+}
+
+uint32_t SampleChannels::sequenceOf(Channel &c, const model::Sample &s)
+{
+    ++c.count;
+    return s.has(model::FieldDeviceTime) ? uint32_t(int64_t(s.deviceTimeMs)) : c.sequence++;
+}
+
+template <typename Encode>
+bool SampleChannels::put(Kind kind, const model::Sample &s, uint64_t logTime, uint64_t publishTime, Encode &&encode)
+{
+    Channel *c = channel(kind);
+    if (!c)
+        return false;
+    const uint32_t sequence = sequenceOf(*c, s);
+    if (std::string *out = m_sink.beginMessage(c->id, sequence, logTime, publishTime)) {
+        m_cdr.into(*out);
+        encode(m_cdr);
+        m_cdr.reset();
+        return m_sink.endMessage();
+    }
+    m_cdr.reset();
+    const std::string_view data = encode(m_cdr);
     return m_sink.write(c->id, sequence, logTime, publishTime, data.data(), data.size());
+}
+
+bool SampleChannels::putJson(Kind kind, const model::Sample &s, uint64_t logTime, uint64_t publishTime,
+                             const std::string &json)
+{
+    Channel *c = channel(kind);
+    if (!c)
+        return false;
+    const uint32_t sequence = sequenceOf(*c, s);
+    return m_sink.write(c->id, sequence, logTime, publishTime, json.data(), json.size());
 }
 
 std::map<std::string, uint64_t> SampleChannels::counts() const
@@ -87,30 +116,41 @@ bool SampleChannels::write(const model::Sample &s, int64_t epochOffsetNs)
     const std::string &frame = m_device.frameId;
     bool ok = true;
     if (s.fields & (FieldAcc | FieldGyr | FieldQuat))
-        ok = ok && put(Imu, s, logTime, publishTime, encodeImu(m_cdr, s, stamp, frame));
+        ok = ok && put(Imu, s, logTime, publishTime, [&](CdrWriter &w) { return encodeImu(w, s, stamp, frame); });
     if (s.has(FieldMag))
-        ok = ok && put(Mag, s, logTime, publishTime, encodeMagneticField(m_cdr, s, stamp, frame));
-    if (s.has(FieldPressure))
-        ok = ok && put(Pressure, s, logTime, publishTime, encodeFluidPressure(m_cdr, s, stamp, frame));
-    if (s.has(FieldTemperature))
-        ok = ok && put(Temperature, s, logTime, publishTime, encodeTemperature(m_cdr, s, stamp, frame));
+        ok = ok && put(Mag, s, logTime, publishTime, [&](CdrWriter &w) { return encodeMagneticField(w, s, stamp, frame); });
+    // A file's pressure and temperature when they change: a module's temperature moves a degree in
+    // minutes, and a message each sample would be a third of the file. A change is never dropped.
+    const auto differs = [this](bool have, double last, double now) {
+        return !m_device.onChangeOnly || !have || last != now;
+    };
+    if (s.has(FieldPressure) && differs(m_havePressure, m_lastPressure, s.pressurePa)) {
+        m_havePressure = true;
+        m_lastPressure = s.pressurePa;
+        ok = ok && put(Pressure, s, logTime, publishTime, [&](CdrWriter &w) { return encodeFluidPressure(w, s, stamp, frame); });
+    }
+    if (s.has(FieldTemperature) && differs(m_haveTemperature, m_lastTemperature, s.temperatureC)) {
+        m_haveTemperature = true;
+        m_lastTemperature = s.temperatureC;
+        ok = ok && put(Temperature, s, logTime, publishTime, [&](CdrWriter &w) { return encodeTemperature(w, s, stamp, frame); });
+    }
     if (s.has(FieldPosition))
-        ok = ok && put(Fix, s, logTime, publishTime, encodeNavSatFix(m_cdr, s, stamp, frame));
+        ok = ok && put(Fix, s, logTime, publishTime, [&](CdrWriter &w) { return encodeNavSatFix(w, s, stamp, frame); });
     // The 3D view's transform: 50 times a second is smooth, and a 1 kHz module's every sample
     // would double the file for nothing the view shows.
     if (s.has(FieldQuat) && (m_lastTf < 0 || s.hostTimeNs - m_lastTf >= kTfPeriodNs || s.hostTimeNs < m_lastTf)) {
         m_lastTf = s.hostTimeNs;
-        ok = ok && put(Tf, s, logTime, publishTime, encodeTf(m_cdr, s, stamp, m_world, frame));
+        ok = ok && put(Tf, s, logTime, publishTime, [&](CdrWriter &w) { return encodeTf(w, s, stamp, m_world, frame); });
     }
     if (s.has(FieldEuler))
-        ok = ok && put(Euler, s, logTime, publishTime, encodeEuler(m_cdr, s, stamp, frame));
+        ok = ok && put(Euler, s, logTime, publishTime, [&](CdrWriter &w) { return encodeEuler(w, s, stamp, frame); });
     // The rest (what no ROS message holds), with the JSON Lines export's keys: at once when it
     // holds more than the status word and the device's time stamp, or the status word changed;
     // else ten times a second.
-    model::Sample rest = s;
-    rest.fields &= ~uint32_t(FieldAcc | FieldGyr | FieldMag | FieldQuat | FieldPressure | FieldTemperature
-                             | FieldPosition | FieldEuler);
-    const bool more = (rest.fields & ~uint32_t(FieldMainStatus | FieldDeviceTime)) != 0;
+    constexpr uint32_t kInMessages = FieldAcc | FieldGyr | FieldMag | FieldQuat | FieldPressure | FieldTemperature
+                                     | FieldPosition | FieldEuler;
+    const uint32_t restFields = s.fields & ~kInMessages;
+    const bool more = (restFields & ~uint32_t(FieldMainStatus | FieldDeviceTime)) != 0;
     const bool changed = s.has(FieldMainStatus) && (!m_haveStatus || s.mainStatus != m_lastStatus);
     if (more || changed || m_lastStatusNs < 0 || s.hostTimeNs - m_lastStatusNs >= kStatusPeriodNs
         || s.hostTimeNs < m_lastStatusNs) {
@@ -119,7 +159,9 @@ bool SampleChannels::write(const model::Sample &s, int64_t epochOffsetNs)
             m_lastStatus = s.mainStatus;
             m_haveStatus = true;
         }
-        ok = ok && put(Status, s, logTime, publishTime, sampleToJson(rest, m_device.worldFrame));
+        model::Sample rest = s; // copied only when written
+        rest.fields = restFields;
+        ok = ok && putJson(Status, s, logTime, publishTime, sampleToJson(rest, m_device.worldFrame));
     }
     return ok;
 }

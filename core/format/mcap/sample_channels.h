@@ -3,8 +3,8 @@
 // live bridge), under a topic namespace of its own, /imu/<name>/...:
 //   imu          sensor_msgs/msg/Imu            attitude, rates, accelerations
 //   mag          sensor_msgs/msg/MagneticField
-//   pressure     sensor_msgs/msg/FluidPressure
-//   temperature  sensor_msgs/msg/Temperature
+//   pressure     sensor_msgs/msg/FluidPressure  (a file's: when it changes, Device::onChangeOnly)
+//   temperature  sensor_msgs/msg/Temperature    (likewise)
 //   fix          sensor_msgs/msg/NavSatFix      GNSS position
 //   euler        geometry_msgs/msg/Vector3Stamped  roll, pitch, yaw in deg (x, y, z)
 //   status       JSON (jsonschema)              what no ROS message holds, with the keys of the
@@ -38,6 +38,10 @@ public:
         std::string frameId; // the device's frame in header.frame_id and /tf
         model::WorldFrame worldFrame = model::WorldFrame::Enu;
         ChannelSink::StringMap metadata; // on every channel of the device (product, serial, ...)
+        // A file's layout (issue 54, point 7): pressure and temperature written when their
+        // value changes (and first), never dropped; a live client (the bridge) gets each with
+        // every sample.
+        bool onChangeOnly = false;
     };
     SampleChannels(ChannelSink &sink, Device device);
     const Device &device() const { return m_device; }
@@ -61,7 +65,12 @@ private:
     // The channel (and its schema) added to the file when the first sample that has it comes.
     Channel *open(const std::string &topic, const std::string &schemaName, const char *schemaEncoding,
                   const char *schemaData, const char *messageEncoding);
-    bool put(Kind kind, const model::Sample &s, uint64_t logTime, uint64_t publishTime, std::string_view data);
+    Channel *channel(Kind kind);
+    // The message that encode(CdrWriter &) writes, in place where the sink allows (an MCAP chunk).
+    template <typename Encode>
+    bool put(Kind kind, const model::Sample &s, uint64_t logTime, uint64_t publishTime, Encode &&encode);
+    bool putJson(Kind kind, const model::Sample &s, uint64_t logTime, uint64_t publishTime, const std::string &json);
+    uint32_t sequenceOf(Channel &c, const model::Sample &s);
     static constexpr int64_t kTfPeriodNs = 20'000'000;
     static constexpr int64_t kStatusPeriodNs = 100'000'000;
 
@@ -74,6 +83,8 @@ private:
     CdrWriter m_cdr; // reused by every message
     int64_t m_lastTf = -1;
     int64_t m_lastStatusNs = -1;
+    double m_lastPressure = 0, m_lastTemperature = 0;
+    bool m_havePressure = false, m_haveTemperature = false;
     uint16_t m_lastStatus = 0;
     bool m_haveStatus = false;
 };
