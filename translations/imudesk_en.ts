@@ -87,6 +87,25 @@
     </message>
 </context>
 <context>
+    <name>imudesk::ui::AnalysisWindow</name>
+    <message numerus="yes">
+        <location filename="../ui/charts/analysis_window.cpp" line="+207"/>
+        <source>%1 to %2 ms: %n frame(s)</source>
+        <translation>
+            <numerusform>%1 to %2 ms: %n frame</numerusform>
+            <numerusform>%1 to %2 ms: %n frames</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+3"/>
+        <source>%1 ms or more: %n frame(s)</source>
+        <translation>
+            <numerusform>%1 ms or more: %n frame</numerusform>
+            <numerusform>%1 ms or more: %n frames</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>imudesk::ui::ChartPanel</name>
     <message numerus="yes">
         <location filename="../ui/charts/chart_panel.cpp" line="+424"/>

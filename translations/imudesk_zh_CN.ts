@@ -3913,7 +3913,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>SessionExporter</name>
     <message>
-        <location filename="../core/record/session_exporter.cpp" line="+195"/>
+        <location filename="../core/record/session_exporter.cpp" line="+184"/>
         <source>A session of several devices exports to tidy CSV, JSON Lines, MCAP or MATLAB; the vendor&apos;s layout has one device per file (export each capture on its own for it).</source>
         <translation>多设备会话可导出为整齐 CSV、JSON Lines、MCAP 或 MATLAB；厂商格式每个文件只含一台设备（如需该格式，请逐个导出各记录）。</translation>
     </message>
@@ -3948,8 +3948,8 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>该会话中没有设备。</translation>
     </message>
     <message>
-        <location line="-127"/>
-        <location line="+140"/>
+        <location line="-128"/>
+        <location line="+141"/>
         <source>Cannot write %1: %2</source>
         <translation>无法写入 %1：%2</translation>
     </message>
@@ -4440,7 +4440,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>StreamDecoder</name>
     <message>
-        <location filename="../core/decode/stream_decoder.cpp" line="+51"/>
+        <location filename="../core/decode/stream_decoder.cpp" line="+56"/>
         <source>The capture is of a %1 link: its registers were polled, and ImuDesk does not decode Modbus captures offline yet.</source>
         <translation>该采集文件来自 %1 链路：其寄存器是轮询读取的，ImuDesk 暂不支持离线解码 Modbus 采集文件。</translation>
     </message>
@@ -8338,7 +8338,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::AnalysisWindow</name>
     <message>
-        <location filename="../ui/charts/analysis_window.cpp" line="+27"/>
+        <location filename="../ui/charts/analysis_window.cpp" line="+33"/>
         <source>Analysis</source>
         <translation>分析</translation>
     </message>
@@ -8373,13 +8373,13 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>最大值</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+11"/>
         <source>Frame intervals (device clock)</source>
         <translation>帧间隔（设备时钟）</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+72"/>
+        <location line="+113"/>
         <source>Allan deviation</source>
         <translation>阿伦方差</translation>
     </message>
@@ -8429,18 +8429,32 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>τ 最大到 %1 s 时建议的最短记录时长：%2 h</translation>
     </message>
     <message>
-        <location line="+12"/>
-        <location line="+13"/>
+        <location line="+14"/>
+        <location line="+30"/>
         <source>frames</source>
         <translation>帧数</translation>
     </message>
     <message>
-        <location line="-9"/>
+        <location line="-24"/>
         <source>≥%1</source>
         <translation>≥%1</translation>
     </message>
+    <message numerus="yes">
+        <location line="+11"/>
+        <source>%1 to %2 ms: %n frame(s)</source>
+        <translation>
+            <numerusform>%1 至 %2 ms：%n 帧</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+3"/>
+        <source>%1 ms or more: %n frame(s)</source>
+        <translation>
+            <numerusform>%1 ms 及以上：%n 帧</numerusform>
+        </translation>
+    </message>
     <message>
-        <location line="+7"/>
+        <location line="+8"/>
         <source>interval, ms</source>
         <translation>帧间隔（ms）</translation>
     </message>

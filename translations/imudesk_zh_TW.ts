@@ -3913,7 +3913,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>SessionExporter</name>
     <message>
-        <location filename="../core/record/session_exporter.cpp" line="+195"/>
+        <location filename="../core/record/session_exporter.cpp" line="+184"/>
         <source>A session of several devices exports to tidy CSV, JSON Lines, MCAP or MATLAB; the vendor&apos;s layout has one device per file (export each capture on its own for it).</source>
         <translation>多裝置工作階段可匯出為整齊 CSV、JSON Lines、MCAP 或 MATLAB；廠商格式每個檔案只含一台裝置（如需該格式，請逐一匯出各記錄）。</translation>
     </message>
@@ -3948,8 +3948,8 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>此工作階段中沒有裝置。</translation>
     </message>
     <message>
-        <location line="-127"/>
-        <location line="+140"/>
+        <location line="-128"/>
+        <location line="+141"/>
         <source>Cannot write %1: %2</source>
         <translation>無法寫入 %1：%2</translation>
     </message>
@@ -4440,7 +4440,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>StreamDecoder</name>
     <message>
-        <location filename="../core/decode/stream_decoder.cpp" line="+51"/>
+        <location filename="../core/decode/stream_decoder.cpp" line="+56"/>
         <source>The capture is of a %1 link: its registers were polled, and ImuDesk does not decode Modbus captures offline yet.</source>
         <translation>此擷取檔來自 %1 鏈路：其暫存器是輪詢讀取的，ImuDesk 尚不支援離線解碼 Modbus 擷取檔。</translation>
     </message>
@@ -8338,7 +8338,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::AnalysisWindow</name>
     <message>
-        <location filename="../ui/charts/analysis_window.cpp" line="+27"/>
+        <location filename="../ui/charts/analysis_window.cpp" line="+33"/>
         <source>Analysis</source>
         <translation>分析</translation>
     </message>
@@ -8373,13 +8373,13 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>最大值</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+11"/>
         <source>Frame intervals (device clock)</source>
         <translation>幀間隔（裝置時鐘）</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+72"/>
+        <location line="+113"/>
         <source>Allan deviation</source>
         <translation>艾倫變異</translation>
     </message>
@@ -8429,18 +8429,32 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>τ 最大至 %1 s 時，建議的最短記錄時長：%2 h</translation>
     </message>
     <message>
-        <location line="+12"/>
-        <location line="+13"/>
+        <location line="+14"/>
+        <location line="+30"/>
         <source>frames</source>
         <translation>幀數</translation>
     </message>
     <message>
-        <location line="-9"/>
+        <location line="-24"/>
         <source>≥%1</source>
         <translation>≥%1</translation>
     </message>
+    <message numerus="yes">
+        <location line="+11"/>
+        <source>%1 to %2 ms: %n frame(s)</source>
+        <translation>
+            <numerusform>%1 至 %2 ms：%n 幀</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+3"/>
+        <source>%1 ms or more: %n frame(s)</source>
+        <translation>
+            <numerusform>%1 ms 以上：%n 幀</numerusform>
+        </translation>
+    </message>
     <message>
-        <location line="+7"/>
+        <location line="+8"/>
         <source>interval, ms</source>
         <translation>間隔，ms</translation>
     </message>

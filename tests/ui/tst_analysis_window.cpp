@@ -10,6 +10,8 @@
 #include <QBarSeries>
 #include <QChart>
 #include <QLogValueAxis>
+#include <QScreen>
+#include <QSettings>
 #include <QSignalSpy>
 #include <QTableWidget>
 #include <QTemporaryDir>
@@ -97,6 +99,28 @@ private Q_SLOTS:
         QVERIFY(w.allanChart()->series().isEmpty());
         QVERIFY(w.allanChart()->title().contains(reason));
         QCOMPARE(w.statsTable()->rowCount(), 14);
+    }
+
+    // It opens big enough to read (within the screen), and as it was last closed.
+    void opensReadableAndRemembersItsSize()
+    {
+        QSettings().remove(QStringLiteral("analysisWindow"));
+        {
+            AnalysisWindow w;
+            w.show();
+            QVERIFY(QTest::qWaitForWindowExposed(&w));
+            const QSize room = w.screen()->availableGeometry().size();
+            QCOMPARE(w.size(), AnalysisWindow::kDefaultSize.boundedTo(room * 95 / 100));
+            w.resize(700, 500);
+            QTRY_COMPARE(w.size(), QSize(700, 500));
+            w.close();
+        }
+        AnalysisWindow again;
+        again.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&again));
+        QCOMPARE(again.size(), QSize(700, 500));
+        again.close();
+        QSettings().remove(QStringLiteral("analysisWindow"));
     }
 
     void reportsOtherFiles()

@@ -11,12 +11,18 @@
 #include <QLabel>
 #include <QLineSeries>
 #include <QLogValueAxis>
+#include <QScreen>
+#include <QSettings>
 #include <QSplitter>
 #include <QTableWidget>
 #include <QThread>
+#include <QToolTip>
+#include <QCursor>
+#include <QTimer>
 #include <QValueAxis>
 #include <QVBoxLayout>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 
@@ -30,6 +36,9 @@ AnalysisWindow::AnalysisWindow(QWidget *parent) : QWidget(parent)
     m_table->setHorizontalHeaderLabels({tr("Channel"), tr("Unit"), tr("Mean"), tr("Std. dev."), tr("Min"), tr("Max")});
     m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
     m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    // Rows of a line of text: the fourteen channels and the charts in view at once.
+    m_table->verticalHeader()->setDefaultSectionSize(fontMetrics().height() + 4);
+    m_table->verticalHeader()->hide();
     m_summary = new QLabel(this);
     m_summary->setObjectName(QStringLiteral("summary"));
     m_summary->setWordWrap(true);
@@ -44,9 +53,50 @@ AnalysisWindow::AnalysisWindow(QWidget *parent) : QWidget(parent)
     auto *split = new QSplitter(Qt::Vertical, this);
     split->addWidget(m_table);
     split->addWidget(charts);
+
     auto *layout = new QVBoxLayout(this);
     layout->addWidget(m_summary);
     layout->addWidget(split, 1);
+    m_split = split;
+
+    // Big enough to read the table and both charts at once, within the screen; the size and the
+    // split a user last left it at are kept.
+    QSettings settings;
+    const QByteArray geometry = settings.value(QLatin1String(kGeometryKey)).toByteArray();
+    if (geometry.isEmpty() || !restoreGeometry(geometry)) {
+        const QSize room = screen() ? screen()->availableGeometry().size() : QSize(1366, 768);
+        resize(kDefaultSize.boundedTo(room * 95 / 100));
+    }
+    if (const QByteArray state = settings.value(QLatin1String(kSplitKey)).toByteArray(); !state.isEmpty())
+        m_splitRestored = split->restoreState(state);
+    connect(split, &QSplitter::splitterMoved, this, [this] { m_splitRestored = true; }); // the user's from now on
+}
+
+void AnalysisWindow::showEvent(QShowEvent *event)
+{
+    QWidget::showEvent(event);
+    if (m_splitRestored || m_splitPlaced)
+        return;
+    // The table as tall as its fourteen rows, the charts the rest (until the user moves it), once
+    // the window has its size.
+    m_splitPlaced = true;
+    QTimer::singleShot(0, this, [this] { placeSplit(); });
+}
+
+void AnalysisWindow::placeSplit()
+{
+    const int table = m_table->horizontalHeader()->sizeHint().height() + 14 * m_table->verticalHeader()->defaultSectionSize()
+        + 2 * m_table->frameWidth() + 4;
+    const int total = m_split->height() > 0 ? m_split->height() : kDefaultSize.height() * 3 / 4;
+    m_split->setSizes({std::min(table, total * 3 / 5), std::max(total - table, total * 2 / 5)});
+}
+
+void AnalysisWindow::closeEvent(QCloseEvent *event)
+{
+    QSettings settings;
+    settings.setValue(QLatin1String(kGeometryKey), saveGeometry());
+    settings.setValue(QLatin1String(kSplitKey), m_split->saveState());
+    QWidget::closeEvent(event);
 }
 
 AnalysisWindow::~AnalysisWindow() = default; // m_job cancels and joins a running analysis
@@ -100,7 +150,7 @@ void AnalysisWindow::setResult(const record::SampleAnalyzer::Result &r)
     lines << tr("%1: %2 frames over %3 s, output rate %4 Hz, interval %5 ± %6 ms, frames lost %7")
                  .arg(QString::fromStdString(r.source))
                  .arg(r.frames)
-                 .arg(r.durationS, 0, 'f', 1)
+                 .arg(r.durationS, 0, 'f', r.durationS < 10 ? 2 : 1)
                  .arg(r.rateHz, 0, 'f', 2)
                  .arg(r.intervalMeanMs, 0, 'f', 3)
                  .arg(r.intervalStdMs, 0, 'f', 3)
@@ -126,6 +176,8 @@ void AnalysisWindow::setResult(const record::SampleAnalyzer::Result &r)
     lines << tr("Recommended minimum recording length for τ up to %1 s: %2 h").arg(r.tauMax).arg(
         r.recommendedLengthS / 3600.0, 0, 'f', 1);
     m_summary->setText(lines.join(QLatin1Char('\n')));
+    if (!m_splitRestored) // the summary's lines take their room first
+        QTimer::singleShot(0, this, [this] { placeSplit(); });
     fillHistogram(r);
     fillAllan(r);
 }
@@ -139,8 +191,25 @@ void AnalysisWindow::fillHistogram(const record::SampleAnalyzer::Result &r)
     QStringList labels;
     for (const auto &b : r.intervals) {
         *set << double(b.count);
-        labels << (std::isfinite(b.toMs) ? QString::number(b.fromMs, 'f', 2) : tr("≥%1").arg(b.fromMs, 0, 'f', 2));
+        // Two significant digits: twenty bins' lower edges fit side by side under the bars (a
+        // bar's tooltip and the CLI give the edges to the µs).
+        labels << (std::isfinite(b.toMs) ? QString::number(b.fromMs, 'g', 2) : tr("≥%1").arg(b.fromMs, 0, 'g', 2));
     }
+    // A bar's edges to the µs and its count, where the pointer rests.
+    const auto bins = r.intervals;
+    connect(set, &QBarSet::hovered, this, [this, bins](bool over, int index) {
+        if (!over || index < 0 || index >= int(bins.size())) {
+            QToolTip::hideText();
+            return;
+        }
+        const auto &b = bins[size_t(index)];
+        QToolTip::showText(QCursor::pos(),
+                           (std::isfinite(b.toMs) ? tr("%1 to %2 ms: %n frame(s)", nullptr, int(b.count))
+                                                        .arg(b.fromMs, 0, 'f', 3)
+                                                        .arg(b.toMs, 0, 'f', 3)
+                                                  : tr("%1 ms or more: %n frame(s)", nullptr, int(b.count)).arg(b.fromMs, 0, 'f', 3)),
+                           this);
+    });
     auto *series = new QBarSeries;
     series->append(set);
     m_histogram->addSeries(series);

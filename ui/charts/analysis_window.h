@@ -3,13 +3,16 @@
 // statistics, a summary (output rate, jitter, frames lost, random walk, bias instability,
 // recommended recording length), a histogram of frame intervals and the Allan deviation of
 // the gyro and accelerometer axes on log-log axes. analyzeFile() runs as a
-// jobs::BackgroundJob; closing the window cancels it.
+// jobs::BackgroundJob; closing the window cancels it. It opens at kDefaultSize (within 95 % of
+// the screen) the first time, then at the size and split it was last closed with.
 #include "jobs/background_job.h"
 #include "record/sample_analyzer.h"
 
+#include <QSize>
 #include <QWidget>
 
 class QChart;
+class QSplitter;
 class QLabel;
 class QTableWidget;
 
@@ -18,6 +21,10 @@ namespace imudesk::ui {
 class AnalysisWindow : public QWidget {
     Q_OBJECT
 public:
+    static constexpr QSize kDefaultSize{1100, 760};
+    static constexpr const char *kGeometryKey = "analysisWindow/geometry";
+    static constexpr const char *kSplitKey = "analysisWindow/split";
+
     explicit AnalysisWindow(QWidget *parent = nullptr);
     ~AnalysisWindow() override;
 
@@ -32,11 +39,18 @@ public:
 Q_SIGNALS:
     void analysisFinished(bool ok, const QString &message);
 
+protected:
+    void closeEvent(QCloseEvent *event) override;
+    void showEvent(QShowEvent *event) override;
+
 private:
+    void placeSplit();
     void fillHistogram(const record::SampleAnalyzer::Result &r);
     void fillAllan(const record::SampleAnalyzer::Result &r);
 
     QTableWidget *m_table = nullptr;
+    QSplitter *m_split = nullptr;
+    bool m_splitRestored = false, m_splitPlaced = false;
     QLabel *m_summary = nullptr;
     QChart *m_histogram = nullptr;
     QChart *m_allan = nullptr;
