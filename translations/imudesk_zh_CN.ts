@@ -5863,7 +5863,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::device::SessionEngine</name>
     <message>
-        <location filename="../core/device/session_engine.cpp" line="+143"/>
+        <location filename="../core/device/session_engine.cpp" line="+130"/>
         <source>the link went to the device&apos;s own session</source>
         <translation>链路已交给设备自己的会话</translation>
     </message>
@@ -6454,6 +6454,11 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <location line="+1"/>
         <source>ERR</source>
         <translation>ERR</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>invalid</source>
+        <translation>无效应答</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -10145,7 +10150,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::CommandLogWidget</name>
     <message>
-        <location filename="../ui/workspace/command_log_widget.cpp" line="+169"/>
+        <location filename="../ui/workspace/command_log_widget.cpp" line="+170"/>
         <source>Copy</source>
         <translation>复制</translation>
     </message>
@@ -10537,6 +10542,11 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <location line="+1"/>
         <source>ERR: %1</source>
         <translation>错误：%1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Invalid reply: %1</source>
+        <translation>无效应答：%1</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -12025,7 +12035,7 @@ Link load = bytes per second × 10 bits / baud rate.</source>
         <translation>请检查线缆、电源、波特率和模块地址，然后重试。</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>The connection is closed: connect to the compass again, then restart the calibration.</source>
         <translation>连接已关闭：请重新连接罗盘，然后重新开始校准。</translation>
     </message>

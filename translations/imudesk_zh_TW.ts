@@ -5863,7 +5863,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::device::SessionEngine</name>
     <message>
-        <location filename="../core/device/session_engine.cpp" line="+143"/>
+        <location filename="../core/device/session_engine.cpp" line="+130"/>
         <source>the link went to the device&apos;s own session</source>
         <translation>連結已交給裝置自己的工作階段</translation>
     </message>
@@ -6454,6 +6454,11 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <location line="+1"/>
         <source>ERR</source>
         <translation>ERR</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>invalid</source>
+        <translation>無效應答</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -10145,7 +10150,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::ui::CommandLogWidget</name>
     <message>
-        <location filename="../ui/workspace/command_log_widget.cpp" line="+169"/>
+        <location filename="../ui/workspace/command_log_widget.cpp" line="+170"/>
         <source>Copy</source>
         <translation>複製</translation>
     </message>
@@ -10537,6 +10542,11 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <location line="+1"/>
         <source>ERR: %1</source>
         <translation>錯誤：%1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Invalid reply: %1</source>
+        <translation>無效應答：%1</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -12025,7 +12035,7 @@ Link load = bytes per second × 10 bits / baud rate.</source>
         <translation>請檢查電纜、電源、波特率和模組位址，然後重試。</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>The connection is closed: connect to the compass again, then restart the calibration.</source>
         <translation>連線已關閉：請重新連線到羅盤，然後重新開始校準。</translation>
     </message>

@@ -333,7 +333,7 @@ int cmdSend(const QStringList &args)
     case S::Ok:
         out(QStringLiteral("OK"));
         return ExitOk;
-    case S::Error:
+    case S::Refused:
         return fail(QStringLiteral("device answered %1 to '%2'").arg(QString::fromStdString(reply->errorLine), command));
     case S::Timeout:
         return fail(QStringLiteral("no reply to '%1' within %2 ms (the device does not answer commands it does not "

@@ -109,7 +109,7 @@ void HipnucSerialFamily::changeBaud(int baud)
             Q_EMIT baudChangeFinished(false, 0, QString::fromStdString(r.errorLine));
             return;
         }
-        if (r.status == Reply::Status::Error) {
+        if (r.status == Reply::Status::Refused) {
             // Refused: the module keeps its rate. Confirm that it is still there.
             probeBauds({old}, [this, baud, old, r](bool reachable, int at) {
                 Q_EMIT baudChangeFinished(false, reachable ? at : 0,

@@ -7,21 +7,15 @@
 #include <QString>
 #include <QVariant>
 
+#include "model/request_outcome.h"
+
 #include <any>
 #include <cstdint>
 #include <functional>
 
 namespace imudesk::device {
 
-enum class RequestStatus {
-    Ok,        // answered, and the answer says it worked
-    Refused,   // answered, and the device says it did not (ERR, FF)
-    Invalid,   // answered with something the manual does not allow there
-    Timeout,   // no answer after every attempt
-    NotSent,   // the link is not open, writing failed, or the arguments were refused
-    Cancelled, // the session was closed first
-};
-const char *requestStatusName(RequestStatus s);
+using RequestStatus = model::RequestOutcome; // its name: model::outcomeName
 
 struct RequestResult {
     quint64 id = 0;

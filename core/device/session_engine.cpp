@@ -41,19 +41,6 @@ void raiseReadingThread()
 
 } // namespace
 
-const char *requestStatusName(RequestStatus s)
-{
-    switch (s) {
-    case RequestStatus::Ok: return "ok";
-    case RequestStatus::Refused: return "refused";
-    case RequestStatus::Invalid: return "invalid";
-    case RequestStatus::Timeout: return "timeout";
-    case RequestStatus::NotSent: return "not sent";
-    case RequestStatus::Cancelled: return "cancelled";
-    }
-    return "?";
-}
-
 SessionEngine::SessionEngine(FamilyPlugin *family, io::Transport *transport, SampleStore &store,
                              RawByteLog &rawLog, int lineIdleMs)
     : m_family(family), m_transport(transport), m_store(store), m_rawLog(rawLog), m_reconnector(*transport, this)

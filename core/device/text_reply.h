@@ -2,6 +2,8 @@
 // A reply to a command typed as text (the console, the command log), whatever the family that
 // takes text commands: its outcome, the lines it brought and, when it failed, why. A family
 // fills it from its own reply (HiPNUC: protocol::hipnuc::AsciiReply, textReplyOf).
+#include "model/request_outcome.h"
+
 #include <QMetaType>
 #include <QString>
 #include <QStringList>
@@ -13,7 +15,7 @@ struct AsciiReply;
 namespace imudesk::device {
 
 struct TextReply {
-    enum class Status { Pending, Ok, Error, Timeout, Cancelled, NotSent };
+    using Status = model::RequestOutcome; // the device's error line: Refused
     Status status = Status::Pending;
     QString command;  // what it answers, as the device understood it
     QStringList lines; // the lines before the outcome (KEY=VALUE and others)
@@ -21,7 +23,7 @@ struct TextReply {
     bool ok() const { return status == Status::Ok; }
 };
 
-// A HiPNUC ASCII reply in these terms (the statuses correspond one to one).
+// A HiPNUC ASCII reply in these terms (the same outcome).
 TextReply textReplyOf(const protocol::hipnuc::AsciiReply &reply);
 
 } // namespace imudesk::device

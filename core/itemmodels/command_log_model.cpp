@@ -87,7 +87,8 @@ QString CommandLogModel::statusText(Status status)
     switch (status) {
     case Status::Pending: return tr("waiting");
     case Status::Ok: return tr("OK");
-    case Status::Error: return tr("ERR");
+    case Status::Refused: return tr("ERR");
+    case Status::Invalid: return tr("invalid");
     case Status::Timeout: return tr("timeout");
     case Status::Cancelled: return tr("cancelled");
     case Status::NotSent: return tr("not sent");

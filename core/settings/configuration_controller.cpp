@@ -170,7 +170,7 @@ void ConfigurationController::read(std::function<void(bool, const QString &)> do
         send(protocol::hipnuc::commands::logComConfig(), kReadTimeoutMs, [this, done](const Reply &c) {
             if (!c.ok()) {
                 done(false, tr("LOG COMCONFIG failed (%1): the settings shown may be out of date")
-                                .arg(c.errorLine.empty() ? QString::fromLatin1(protocol::hipnuc::statusName(c.status))
+                                .arg(c.errorLine.empty() ? QString::fromLatin1(model::outcomeName(c.status))
                                                          : QString::fromStdString(c.errorLine)));
                 return;
             }
@@ -250,10 +250,10 @@ void ConfigurationController::sendChanges(size_t index)
             sendChanges(index + 1);
             return;
         }
-        res.outcome = r.status == Reply::Status::Error ? Outcome::Refused
+        res.outcome = r.status == Reply::Status::Refused ? Outcome::Refused
             : r.status == Reply::Status::Timeout       ? Outcome::Timeout
                                                         : Outcome::NotSent;
-        res.detail = r.status == Reply::Status::Error
+        res.detail = r.status == Reply::Status::Refused
             ? tr("the device answered %1").arg(QString::fromStdString(r.errorLine))
             : QString::fromStdString(r.errorLine);
         // The rest is not sent: the device's state is read back as it is now.
@@ -350,7 +350,7 @@ void ConfigurationController::runAction(const QString &key, const QString &argum
         if (!r.ok()) {
             setBusy(false);
             Q_EMIT actionFinished(name, false,
-                                  r.status == Reply::Status::Error
+                                  r.status == Reply::Status::Refused
                                       ? tr("the device answered %1").arg(QString::fromStdString(r.errorLine))
                                       : QString::fromStdString(r.errorLine));
             return;

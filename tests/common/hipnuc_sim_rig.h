@@ -135,7 +135,7 @@ inline std::string outcome(const AsciiReply &r)
 {
     switch (r.status) {
     case AsciiReply::Status::Ok: return "OK";
-    case AsciiReply::Status::Error: return "ERR";
+    case AsciiReply::Status::Refused: return "ERR";
     case AsciiReply::Status::Pending: return "-";
     default: return "?";
     }

@@ -122,9 +122,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         FUZZ_CHECK(r.lines.size() <= before + 1);
         if (done) {
             FUZZ_CHECK(r.lines.size() == before);
-            FUZZ_CHECK(r.status == AsciiReply::Status::Ok || r.status == AsciiReply::Status::Error);
+            FUZZ_CHECK(r.status == AsciiReply::Status::Ok || r.status == AsciiReply::Status::Refused);
             FUZZ_CHECK((r.status == AsciiReply::Status::Ok) == (kind == LineKind::Ok));
-            if (r.status == AsciiReply::Status::Error) {
+            if (r.status == AsciiReply::Status::Refused) {
                 FUZZ_CHECK(kind == LineKind::Error);
                 FUZZ_CHECK(!r.errorLine.empty() && trimmed(r.errorLine));
             }
@@ -132,7 +132,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             FUZZ_CHECK(collector.addLine("OK"));
             FUZZ_CHECK(collector.addLine("PNAME=X"));
             FUZZ_CHECK(collector.reply().lines.size() == before);
-            FUZZ_CHECK(statusName(r.status) != nullptr);
+            FUZZ_CHECK(outcomeName(r.status) != nullptr);
             checkIdentity(r);
             collector = ReplyCollector(kCommand);
         } else {

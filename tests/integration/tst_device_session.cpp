@@ -271,7 +271,7 @@ private Q_SLOTS:
         QTest::addColumn<QString>("command");
         QTest::addColumn<Status>("expected");
         QTest::addColumn<QString>("mustContain"); // a KEY=VALUE or line the reply must include
-        const Status ok = Status::Ok, err = Status::Error, silent = Status::Timeout;
+        const Status ok = Status::Ok, err = Status::Refused, silent = Status::Timeout;
         struct Row {
             const char *fw, *cmd;
             Status st;
@@ -362,7 +362,7 @@ private Q_SLOTS:
                 found = found || QString::fromStdString(l).contains(mustContain);
             QVERIFY2(found, qPrintable(mustContain));
         }
-        if (expected == Status::Error)
+        if (expected == Status::Refused)
             QVERIFY(!r.errorLine.empty());
     }
 

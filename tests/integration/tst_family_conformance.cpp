@@ -278,7 +278,7 @@ private Q_SLOTS:
         QVERIFY(ok > 0);
         const auto r = waitEnded(ended, ok, 5000);
         QVERIFY2(r, "the answered request never ended");
-        QVERIFY2(r->ok(), qPrintable(QStringLiteral("%1: %2").arg(QLatin1String(device::requestStatusName(r->status)),
+        QVERIFY2(r->ok(), qPrintable(QStringLiteral("%1: %2").arg(QLatin1String(model::outcomeName(r->status)),
                                                                       r->message)));
 
         c.deafen(true);

@@ -101,7 +101,7 @@ std::optional<Hec495Result> await(Hec495Session &s, quint64 id, int timeoutMs = 
         const quint64 id_ = (call);                                                                 \
         auto r_ = await(session, id_);                                                              \
         if (!r_ || !r_->ok())                                                                       \
-            qWarning("%s -> %s: %s", #call, r_ ? requestStatusName(r_->status) : "no result",             \
+            qWarning("%s -> %s: %s", #call, r_ ? model::outcomeName(r_->status) : "no result",             \
                      r_ ? qPrintable(r_->message) : "");                                             \
         return r_ && r_->ok() ? r_ : std::nullopt;                                                  \
     }()

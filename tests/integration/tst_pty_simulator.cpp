@@ -215,14 +215,14 @@ void TestPtySimulator::versionAt115200()
     QVERIFY(openPort(port, 115200));
     QCOMPARE(PtySimulator::readLineSpeed(int(port.handle())), 115200);
     const AsciiReply r = command(port, "LOG VERSION");
-    QVERIFY2(r.ok(), protocol::hipnuc::statusName(r.status));
+    QVERIFY2(r.ok(), model::outcomeName(r.status));
     QCOMPARE(r.values.at("PNAME"), std::string("HI14R3"));
     QCOMPARE(r.values.at("APP_VER"), std::string("171"));
     QCOMPARE(r.values.at("BL_VER"), std::string("109"));
     QCOMPARE(r.values.at("UUID").size(), size_t(16));
     // Unknown commands stay unanswered.
     QCOMPARE(command(port, "HELLO", 500).status, AsciiReply::Status::Pending);
-    QCOMPARE(command(port, "CONFIG ATT MODE 9").status, AsciiReply::Status::Error);
+    QCOMPARE(command(port, "CONFIG ATT MODE 9").status, AsciiReply::Status::Refused);
 }
 
 void TestPtySimulator::receivesHi91Frames()

@@ -295,7 +295,7 @@ private Q_SLOTS:
         QCOMPARE(model.index(0, CommandLogModel::StatusColumn).data().toString(), QStringLiteral("waiting"));
 
         QVERIFY(model.complete(1, reply(TextReply::Status::Ok, {"PNAME=HI14R3", "APP_VER=171"})));
-        QVERIFY(model.complete(2, reply(TextReply::Status::Error, {}, QStringLiteral("ERR"))));
+        QVERIFY(model.complete(2, reply(TextReply::Status::Refused, {}, QStringLiteral("ERR"))));
         QVERIFY(model.complete(3, reply(TextReply::Status::Timeout, {}, QStringLiteral("no reply within 1000 ms"))));
         QVERIFY(!model.complete(99, reply(TextReply::Status::Ok, {})));
 
@@ -308,7 +308,7 @@ private Q_SLOTS:
         QCOMPARE(cell(1, CommandLogModel::ReplyColumn), QStringLiteral("ERR"));
         QCOMPARE(cell(2, CommandLogModel::StatusColumn), QStringLiteral("timeout"));
         QCOMPARE(cell(2, CommandLogModel::ReplyColumn), QStringLiteral("no reply within 1000 ms"));
-        QCOMPARE(model.index(1, 0).data(CommandLogModel::StatusRole).toInt(), int(TextReply::Status::Error));
+        QCOMPARE(model.index(1, 0).data(CommandLogModel::StatusRole).toInt(), int(TextReply::Status::Refused));
         QCOMPARE(model.index(2, 0).data(CommandLogModel::IdRole).toULongLong(), quint64(3));
 
         // Copy as text: tab-separated, rows in order, a header when asked.
@@ -338,7 +338,7 @@ private Q_SLOTS:
         widget.record(2, QStringLiteral("CONFIG ATT MODE 7"));
         widget.record(3, QStringLiteral("LOG COMCONFIG"));
         QVERIFY(widget.complete(1, reply(TextReply::Status::Ok, {"PNAME=HI14R3"})));
-        QVERIFY(widget.complete(2, reply(TextReply::Status::Error, {}, QStringLiteral("ERR"))));
+        QVERIFY(widget.complete(2, reply(TextReply::Status::Refused, {}, QStringLiteral("ERR"))));
         QVERIFY(!widget.complete(42, reply(TextReply::Status::Ok, {})));
         QCOMPARE(widget.model()->rowCount(), 3);
 

@@ -535,7 +535,7 @@ private Q_SLOTS:
         QCOMPARE(console.input()->text(), QStringLiteral("draft"));
 
         imudesk::device::TextReply err;
-        err.status = imudesk::device::TextReply::Status::Error;
+        err.status = imudesk::device::TextReply::Status::Refused;
         err.why = QStringLiteral("ERR");
         console.showCommand(7, QStringLiteral("CONFIG ATT MODE 9"));
         console.showReply(7, err);

@@ -71,11 +71,11 @@ private Q_SLOTS:
     {
         ReplyCollector c("CONFIG USRCAL STOP");
         QVERIFY(c.addLine("ERR"));
-        QCOMPARE(c.reply().status, AsciiReply::Status::Error);
+        QCOMPARE(c.reply().status, AsciiReply::Status::Refused);
         QCOMPARE(c.reply().errorLine, std::string("ERR"));
         // Lines after completion are ignored.
         QVERIFY(c.addLine("OK"));
-        QCOMPARE(c.reply().status, AsciiReply::Status::Error);
+        QCOMPARE(c.reply().status, AsciiReply::Status::Refused);
     }
 
     void mcalStat()

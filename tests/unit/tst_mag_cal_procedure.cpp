@@ -139,7 +139,7 @@ private Q_SLOTS:
     {
         MagCalProcedure p;
         p.start(MagCalProcedure::Flow::Mcal);
-        p.handleReply(reply(AsciiReply::Status::Error), 5);
+        p.handleReply(reply(AsciiReply::Status::Refused), 5);
         QCOMPARE(p.state(), MagCalProcedure::State::Failed);
         p.start(MagCalProcedure::Flow::Mcal);
         p.handleReply(reply(AsciiReply::Status::Timeout), 1000);

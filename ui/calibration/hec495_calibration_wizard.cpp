@@ -398,6 +398,7 @@ void Hec495CalibrationWizard::handleFailure(RunState state, const Hec495Result &
         break;
     case Hec495Result::Status::NotSent:
     case Hec495Result::Status::Cancelled:
+    case Hec495Result::Status::Pending: // (a failure has an outcome)
         todo = tr("The connection is closed: connect to the compass again, then restart the calibration.");
         break;
     case Hec495Result::Status::Invalid:

@@ -176,7 +176,7 @@ ConfigPanel::ConfigPanel(device::DeviceSession &session, QWidget *parent)
                 if (r.ok())
                     log(tr("OK"));
                 else
-                    log(tr("%1: %2").arg(QString::fromLatin1(protocol::hipnuc::statusName(r.status)),
+                    log(tr("%1: %2").arg(QString::fromLatin1(model::outcomeName(r.status)),
                                          QString::fromStdString(r.errorLine)),
                         true);
             });

@@ -37,7 +37,8 @@ protected:
         switch (Status(index.data(CommandLogModel::StatusRole).toInt())) {
         case Status::Ok: color = QColor(0x2E, 0x7D, 0x32); break;
         case Status::Pending: color = QColor(0x75, 0x75, 0x75); break;
-        case Status::Error:
+        case Status::Refused:
+        case Status::Invalid:
         case Status::Timeout:
         case Status::Cancelled:
         case Status::NotSent: color = QColor(0xC6, 0x28, 0x28); break;

@@ -93,7 +93,8 @@ void ConsoleWidget::showReply(quint64 id, const device::TextReply &reply)
     const QString &why = reply.why;
     switch (reply.status) {
     case device::TextReply::Status::Ok: appendLine(tr("OK"), kOkColor, true); break;
-    case device::TextReply::Status::Error: appendLine(tr("ERR: %1").arg(why), kErrorColor, true); break;
+    case device::TextReply::Status::Refused: appendLine(tr("ERR: %1").arg(why), kErrorColor, true); break;
+    case device::TextReply::Status::Invalid: appendLine(tr("Invalid reply: %1").arg(why), kErrorColor, true); break;
     case device::TextReply::Status::Timeout: appendLine(tr("Timeout: %1").arg(why), kErrorColor, true); break;
     case device::TextReply::Status::Cancelled: appendLine(tr("Cancelled: %1").arg(why), kErrorColor, true); break;
     case device::TextReply::Status::NotSent: appendLine(tr("Not sent: %1").arg(why), kErrorColor, true); break;

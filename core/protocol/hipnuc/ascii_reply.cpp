@@ -30,19 +30,6 @@ bool startsWithWord(std::string_view s, std::string_view word)
 
 } // namespace
 
-const char *statusName(AsciiReply::Status s)
-{
-    switch (s) {
-    case AsciiReply::Status::Pending: return "pending";
-    case AsciiReply::Status::Ok: return "ok";
-    case AsciiReply::Status::Error: return "error";
-    case AsciiReply::Status::Timeout: return "timeout";
-    case AsciiReply::Status::Cancelled: return "cancelled";
-    case AsciiReply::Status::NotSent: return "not sent";
-    }
-    return "?";
-}
-
 LineKind classifyLine(std::string_view raw)
 {
     const auto line = trim(raw);
@@ -147,7 +134,7 @@ bool ReplyCollector::addLine(std::string_view raw)
         m_reply.status = AsciiReply::Status::Ok;
         return true;
     case LineKind::Error:
-        m_reply.status = AsciiReply::Status::Error;
+        m_reply.status = AsciiReply::Status::Refused;
         m_reply.errorLine = std::string(line);
         return true;
     case LineKind::Info: {

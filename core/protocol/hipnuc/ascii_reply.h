@@ -2,6 +2,8 @@
 // Replies to ASCII commands: zero or more info lines (often KEY=VALUE), then `OK`,
 // or a line starting with ERR/ERROR/FAIL. Unknown commands get no reply at all;
 // the session turns that into a timeout.
+#include "model/request_outcome.h"
+
 #include <map>
 #include <string>
 #include <string_view>
@@ -11,7 +13,7 @@
 namespace imudesk::protocol::hipnuc {
 
 struct AsciiReply {
-    enum class Status { Pending, Ok, Error, Timeout, Cancelled, NotSent };
+    using Status = model::RequestOutcome; // an ERR line: Refused
     Status status = Status::Pending;
     std::string command;                       // the command this answers
     std::vector<std::string> lines;            // info lines before OK/ERR (echo removed)
@@ -19,7 +21,6 @@ struct AsciiReply {
     std::string errorLine;                     // the ERR line, or why it failed
     bool ok() const { return status == Status::Ok; }
 };
-const char *statusName(AsciiReply::Status s);
 
 enum class LineKind { Ok, Error, Info };
 LineKind classifyLine(std::string_view line);
