@@ -70,7 +70,6 @@ bool connectSession(device::DeviceSession &session, const QString &port, int bau
 {
     bool done = false;
     bool ok = false;
-    bool identityDone = false;
     QString message;
     int found = baud;
     auto c1 = QObject::connect(&session, &device::DeviceSession::identityChanged,
@@ -78,8 +77,6 @@ bool connectSession(device::DeviceSession &session, const QString &port, int bau
                                    if (identity)
                                        *identity = id;
                                });
-    auto c4 = QObject::connect(&session, &device::DeviceSession::identityQueryFinished,
-                               [&](bool) { identityDone = true; });
     auto c2 = QObject::connect(&session, &device::DeviceSession::baudDetected, [&](int b) { found = b; });
     auto c3 = QObject::connect(&session, &device::DeviceSession::stateChanged,
                                [&](device::SessionState s, const QString &detail) {
@@ -96,11 +93,10 @@ bool connectSession(device::DeviceSession &session, const QString &port, int bau
     // Auto-detection visits at most 10 rates (~0.7 s each); leave room.
     waitFor([&] { return done; }, 20000);
     if (ok && baud > 0)
-        waitFor([&] { return identityDone; }, 10000); // the identity query runs after Connected
+        waitFor([&] { return !session.identityPending(); }, 10000); // the identity query runs after Connected
     QObject::disconnect(c1);
     QObject::disconnect(c2);
     QObject::disconnect(c3);
-    QObject::disconnect(c4);
     if (detectedBaud)
         *detectedBaud = found;
     if (!ok) {

@@ -147,9 +147,9 @@ int cmdImport(const QStringList &args)
     if (!r.ok)
         return fail(r.error);
     if (r.kind == record::CaptureSource::Kind::VendorCsv)
-        out(QStringLiteral("wrote %1: %2 frames, %3 malformed lines left out").arg(output).arg(r.rows).arg(r.badLines));
+        out(QStringLiteral("wrote %1: %2 frames, %3 malformed lines left out").arg(output).arg(r.import.rows).arg(r.import.badLines));
     else
-        out(QStringLiteral("wrote %1: %2 bytes, %3 frames, %4 NMEA sentences").arg(output).arg(r.bytes).arg(r.frames).arg(r.sentences));
+        out(QStringLiteral("wrote %1: %2 bytes, %3 frames, %4 NMEA sentences").arg(output).arg(r.import.bytes).arg(r.import.frames).arg(r.import.sentences));
     return ExitOk;
 }
 

@@ -88,8 +88,16 @@ CaptureSource::Converted CaptureSource::convert(const QString &path, const QStri
             c.error = tr("%1 is already an ImuDesk capture").arg(path);
         return c;
     }
+    return convertWith(*importer, c.kind, path, capturePath);
+}
+
+CaptureSource::Converted CaptureSource::convertWith(const decode::FileImporter &importer, Kind kind,
+                                                    const QString &path, const QString &capturePath)
+{
+    Converted c;
+    c.kind = kind;
     capture::CaptureHeader header;
-    if (importer->times() == decode::FileImporter::Times::PcCounter) {
+    if (importer.times() == decode::FileImporter::Times::PcCounter) {
         header.set(capture::CaptureHeader::kPcCounter, "chunk time");
     } else {
         header.set(capture::CaptureHeader::kHostTime, "absent");
@@ -98,16 +106,10 @@ CaptureSource::Converted CaptureSource::convert(const QString &path, const QStri
         header.set(capture::CaptureHeader::kIdleMarkers, "1");
     }
     capture::ConvertedCapture out;
-    if (!out.open(capturePath, path, importer->linkKind(), importer->family(), header, &c.error))
+    if (!out.open(capturePath, path, importer.linkKind(), importer.family(), header, &c.error))
         return c;
-    const decode::FileImporter::Result r = importer->convert(path, out);
-    c.rows = r.rows;
-    c.badLines = r.badLines;
-    c.bytes = r.bytes;
-    c.frames = r.frames;
-    c.sentences = r.sentences;
-    c.clockJumps = r.clockJumps;
-    c.deviceClock = r.deviceClock;
+    c.import = importer.convert(path, out);
+    const decode::FileImporter::Result &r = c.import;
     if (!r.ok) {
         out.discard();
         c.error = r.error;
@@ -117,20 +119,20 @@ CaptureSource::Converted CaptureSource::convert(const QString &path, const QStri
         return c;
     const QString name = QFileInfo(path).fileName();
     if (c.kind == Kind::VendorCsv) {
-        c.notes << tr("%1 is a vendor CSV: %n row(s) read, times from its pc_counter column", nullptr, int(c.rows))
+        c.notes << tr("%1 is a vendor CSV: %n row(s) read, times from its pc_counter column", nullptr, int(r.rows))
                        .arg(name);
         c.notes << r.lineErrors;
-        if (c.badLines > uint64_t(r.lineErrors.size()))
-            c.notes << tr("%1 malformed lines in all").arg(c.badLines);
+        if (r.badLines > uint64_t(r.lineErrors.size()))
+            c.notes << tr("%1 malformed lines in all").arg(r.badLines);
     } else {
-        c.notes << (c.deviceClock ? tr("%1 is a raw byte dump without arrival times: the times shown come from the "
+        c.notes << (r.deviceClock ? tr("%1 is a raw byte dump without arrival times: the times shown come from the "
                                        "device's own clock")
                                   : tr("%1 is a raw byte dump without arrival times, and nothing in it carries a "
                                        "device time: every time is 0"))
                        .arg(name);
-        if (c.clockJumps > 0)
+        if (r.clockJumps > 0)
             c.notes << tr("The device clock restarted or jumped %n time(s); the times go on across each jump.", nullptr,
-                          int(c.clockJumps));
+                          int(r.clockJumps));
     }
     c.ok = true;
     return c;
@@ -142,7 +144,7 @@ bool CaptureSource::prepare(const QString &path, QString *error)
     m_temp.reset();
     m_capturePath.clear();
     QString why;
-    m_kind = detect(path, &why);
+    const decode::FileImporter *importer = importerOf(path, &m_kind, &why); // the file's head read once
     if (m_kind == Kind::Unknown) {
         if (error)
             *error = why;
@@ -159,7 +161,7 @@ bool CaptureSource::prepare(const QString &path, QString *error)
         return false;
     }
     const QString converted = m_temp->filePath(QFileInfo(path).completeBaseName() + QStringLiteral(".imucap"));
-    const Converted c = convert(path, converted);
+    const Converted c = convertWith(*importer, m_kind, path, converted);
     if (!c.ok) {
         if (error)
             *error = c.error;

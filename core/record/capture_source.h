@@ -8,6 +8,7 @@
 //     arrival times gets its chunks stamped with the device's clock, and the header says so
 //     (CaptureHeader::kHostTime = "absent").
 #include "capture/capture_header.h"
+#include "decode/file_import.h"
 
 #include <QCoreApplication>
 #include <QString>
@@ -17,10 +18,6 @@
 #include <memory>
 
 class QTemporaryDir;
-
-namespace imudesk::decode {
-class FileImporter;
-}
 
 namespace imudesk::record {
 
@@ -51,20 +48,16 @@ public:
         bool ok = false;
         QString error;
         Kind kind = Kind::Unknown;
-        QStringList notes;       // as notes() says them
-        uint64_t rows = 0;       // a vendor CSV's rows, each one frame of the capture
-        uint64_t badLines = 0;   // its malformed lines, left out (their messages lead the notes)
-        uint64_t bytes = 0;      // a raw dump's bytes
-        uint64_t frames = 0;     // CRC-valid frames found in a raw dump
-        uint64_t sentences = 0;  // NMEA sentences with a valid checksum
-        uint64_t clockJumps = 0; // device clock restarts or jumps the times were carried across
-        bool deviceClock = false; // false: nothing in a raw dump carried a time, every stamp is 0
+        QStringList notes;                    // as notes() says them
+        decode::FileImporter::Result import;  // what the importer read (rows, frames, clock jumps, ...)
     };
     // Converts a file an importer takes (not a capture) to a capture at capturePath.
     static Converted convert(const QString &path, const QString &capturePath);
 
 private:
     static const decode::FileImporter *importerOf(const QString &path, Kind *kind, QString *error);
+    static Converted convertWith(const decode::FileImporter &importer, Kind kind, const QString &path,
+                                 const QString &capturePath);
 
     Kind m_kind = Kind::Unknown;
     QString m_capturePath;

@@ -215,7 +215,7 @@ private Q_SLOTS:
         const QString converted = m_dir.filePath(QStringLiteral("old.imucap"));
         const auto r = record::CaptureSource::convert(m_dir.filePath(QStringLiteral("old_HI91.csv")), converted);
         QVERIFY2(r.ok, qPrintable(r.error));
-        QCOMPARE(r.rows, uint64_t(3000));
+        QCOMPARE(r.import.rows, uint64_t(3000));
         const Decoded back = decodeCapture(converted);
         std::vector<model::Sample> want;
         for (const auto &s : m_decoded.samples)

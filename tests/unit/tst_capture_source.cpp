@@ -133,10 +133,10 @@ private Q_SLOTS:
 
         const auto r = CaptureSource::convert(dump, dir.filePath(QStringLiteral("again.imucap")));
         QVERIFY(r.ok);
-        QCOMPARE(r.frames, uint64_t(500));
-        QCOMPARE(r.clockJumps, uint64_t(1));
-        QVERIFY(r.deviceClock);
-        QCOMPARE(r.bytes, uint64_t(raw.size()));
+        QCOMPARE(r.import.frames, uint64_t(500));
+        QCOMPARE(r.import.clockJumps, uint64_t(1));
+        QVERIFY(r.import.deviceClock);
+        QCOMPARE(r.import.bytes, uint64_t(raw.size()));
     }
 
     void rawDumpFollowsTheModulesCounterOverGnssTime()
@@ -160,9 +160,9 @@ private Q_SLOTS:
         const QString dump = write(dir, QStringLiteral("hi81-first.bin"), bytesOf(raw));
         const auto r = CaptureSource::convert(dump, dir.filePath(QStringLiteral("c.imucap")));
         QVERIFY2(r.ok, qPrintable(r.error));
-        QCOMPARE(r.frames, uint64_t(220));
-        QCOMPARE(r.clockJumps, uint64_t(0));
-        QVERIFY(r.deviceClock);
+        QCOMPARE(r.import.frames, uint64_t(220));
+        QCOMPARE(r.import.clockJumps, uint64_t(0));
+        QVERIFY(r.import.deviceClock);
         CaptureReader reader;
         QString error;
         QVERIFY2(reader.open(dir.filePath(QStringLiteral("c.imucap")), &error), qPrintable(error));

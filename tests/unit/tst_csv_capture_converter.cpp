@@ -89,7 +89,7 @@ private Q_SLOTS:
             source = dir.filePath(QStringLiteral("imported.imucap"));
             const auto c = CaptureSource::convert(in, source);
             QVERIFY2(c.ok, qPrintable(c.error));
-            QCOMPARE(c.badLines, uint64_t(0));
+            QCOMPARE(c.import.badLines, uint64_t(0));
         }
         CaptureExporter::Options o;
         o.format = CaptureExporter::Format::VendorCsv;

@@ -68,24 +68,14 @@ AnalysisWindow::AnalysisWindow(QWidget *parent) : QWidget(parent)
         resize(kDefaultSize.boundedTo(room * 95 / 100));
     }
     if (const QByteArray state = settings.value(QLatin1String(kSplitKey)).toByteArray(); !state.isEmpty())
-        m_splitRestored = split->restoreState(state);
-    connect(split, &QSplitter::splitterMoved, this, [this] { m_splitRestored = true; }); // the user's from now on
-}
-
-void AnalysisWindow::showEvent(QShowEvent *event)
-{
-    QWidget::showEvent(event);
-    if (m_splitRestored || m_splitPlaced)
-        return;
-    // The table as tall as its fourteen rows, the charts the rest (until the user moves it), once
-    // the window has its size.
-    m_splitPlaced = true;
-    QTimer::singleShot(0, this, [this] { placeSplit(); });
+        m_splitKept = split->restoreState(state);
+    connect(split, &QSplitter::splitterMoved, this, [this] { m_splitKept = true; }); // the user's from now on
 }
 
 void AnalysisWindow::placeSplit()
 {
-    const int table = m_table->horizontalHeader()->sizeHint().height() + 14 * m_table->verticalHeader()->defaultSectionSize()
+    // The table as tall as its rows, the charts the rest (until the user moves the split).
+    const int table = m_table->horizontalHeader()->sizeHint().height() + m_table->rowCount() * m_table->verticalHeader()->defaultSectionSize()
         + 2 * m_table->frameWidth() + 4;
     const int total = m_split->height() > 0 ? m_split->height() : kDefaultSize.height() * 3 / 4;
     m_split->setSizes({std::min(table, total * 3 / 5), std::max(total - table, total * 2 / 5)});
@@ -176,7 +166,7 @@ void AnalysisWindow::setResult(const record::SampleAnalyzer::Result &r)
     lines << tr("Recommended minimum recording length for τ up to %1 s: %2 h").arg(r.tauMax).arg(
         r.recommendedLengthS / 3600.0, 0, 'f', 1);
     m_summary->setText(lines.join(QLatin1Char('\n')));
-    if (!m_splitRestored) // the summary's lines take their room first
+    if (!m_splitKept) // once the summary's lines have taken their room
         QTimer::singleShot(0, this, [this] { placeSplit(); });
     fillHistogram(r);
     fillAllan(r);

@@ -41,7 +41,6 @@ Q_SIGNALS:
 
 protected:
     void closeEvent(QCloseEvent *event) override;
-    void showEvent(QShowEvent *event) override;
 
 private:
     void placeSplit();
@@ -50,7 +49,7 @@ private:
 
     QTableWidget *m_table = nullptr;
     QSplitter *m_split = nullptr;
-    bool m_splitRestored = false, m_splitPlaced = false;
+    bool m_splitKept = false; // as the user left it (restored or moved): not placed again
     QLabel *m_summary = nullptr;
     QChart *m_histogram = nullptr;
     QChart *m_allan = nullptr;

@@ -131,8 +131,7 @@ bool McapWriter::submit(Job &&job)
 {
     if (!m_worker.joinable()) { // no writing thread: at once
         const bool ok = job.chunk ? writeChunk(job) : writeOut(job.bytes);
-        job.bytes.clear();
-        m_spare.push_back(std::move(job));
+        m_spare.push_back(std::move(job)); // emptied when it is taken again (closeChunk)
         return ok;
     }
     std::unique_lock<std::mutex> lock(m_mutex);
@@ -160,7 +159,6 @@ void McapWriter::workerLoop()
             else
                 writeOut(job.bytes);
         }
-        job.bytes.clear();
         lock.lock();
         m_busy = false;
         if (m_spare.size() <= kChunksInFlight)
@@ -339,11 +337,11 @@ bool McapWriter::closeChunk()
     job.end = m_chunkEnd;
     std::swap(job.bytes, m_chunk);
     std::swap(job.messages, m_chunkMessages);
-    m_chunk.clear();
+    m_chunk.clear(); // a spare's buffers, emptied here only; their memory stays
     if (m_chunkMessages.size() < job.messages.size())
         m_chunkMessages.resize(job.messages.size());
     for (auto &entries : m_chunkMessages)
-        entries.clear(); // their memory stays for the next chunk
+        entries.clear();
     return submit(std::move(job));
 }
 
@@ -411,8 +409,6 @@ bool McapWriter::writeChunk(Job &job)
         at += out.size() - before;
     }
     index.indexLength = at - indexesStart;
-    for (auto &entries : job.messages)
-        entries.clear(); // their memory stays for a chunk to come
     if (!writeOut(out))
         return false;
     {

@@ -121,19 +121,15 @@ bool SampleChannels::write(const model::Sample &s, int64_t epochOffsetNs)
         ok = ok && put(Mag, s, logTime, publishTime, [&](CdrWriter &w) { return encodeMagneticField(w, s, stamp, frame); });
     // A file's pressure and temperature when they change: a module's temperature moves a degree in
     // minutes, and a message each sample would be a third of the file. A change is never dropped.
-    const auto differs = [this](bool have, double last, double now) {
-        return !m_device.onChangeOnly || !have || last != now;
+    const auto due = [this](std::optional<double> &last, double now) { // and noted as written
+        const bool write = !m_device.onChangeOnly || last != now;
+        last = now;
+        return write;
     };
-    if (s.has(FieldPressure) && differs(m_havePressure, m_lastPressure, s.pressurePa)) {
-        m_havePressure = true;
-        m_lastPressure = s.pressurePa;
+    if (s.has(FieldPressure) && due(m_lastPressure, s.pressurePa))
         ok = ok && put(Pressure, s, logTime, publishTime, [&](CdrWriter &w) { return encodeFluidPressure(w, s, stamp, frame); });
-    }
-    if (s.has(FieldTemperature) && differs(m_haveTemperature, m_lastTemperature, s.temperatureC)) {
-        m_haveTemperature = true;
-        m_lastTemperature = s.temperatureC;
+    if (s.has(FieldTemperature) && due(m_lastTemperature, s.temperatureC))
         ok = ok && put(Temperature, s, logTime, publishTime, [&](CdrWriter &w) { return encodeTemperature(w, s, stamp, frame); });
-    }
     if (s.has(FieldPosition))
         ok = ok && put(Fix, s, logTime, publishTime, [&](CdrWriter &w) { return encodeNavSatFix(w, s, stamp, frame); });
     // The 3D view's transform: 50 times a second is smooth, and a 1 kHz module's every sample

@@ -26,6 +26,7 @@
 
 #include <functional>
 #include <map>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -83,8 +84,7 @@ private:
     CdrWriter m_cdr; // reused by every message
     int64_t m_lastTf = -1;
     int64_t m_lastStatusNs = -1;
-    double m_lastPressure = 0, m_lastTemperature = 0;
-    bool m_havePressure = false, m_haveTemperature = false;
+    std::optional<double> m_lastPressure, m_lastTemperature; // the last written (onChangeOnly)
     uint16_t m_lastStatus = 0;
     bool m_haveStatus = false;
 };
