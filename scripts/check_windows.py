@@ -16,7 +16,19 @@ Qt's headers are Linux's build of them (the same API; Windows-only Qt classes ar
 Left out by design: the POSIX platform files (<name>_posix.cpp; their <name>_windows.cpp is
 compiled instead) and the simulators' pseudo-terminals (core/sim/pty_*.cpp, Unix-only).
 Exit 0: every unit compiled; 1: a unit failed (its first errors are printed); 2: usage or set-up.
+
+A unit that compiled is remembered, as ccache remembers an object, in
+${XDG_CACHE_HOME:-~/.cache}/imudesk/windows-check (IMUDESK_WINDOWS_CHECK_CACHE names another folder;
+"off" turns it off): a run compiles again only the units whose key changed. The key holds the
+cross compiler's version, the Debian packages of the headers it reads (Qt, mingw-w64, Eigen), this
+script, the unit's Windows command (paths below the checkout and the build written relative to
+them, so a clone in another folder finds what an earlier one left), the text of the unit and of
+every header the Linux build of the same unit read (ninja's dependency log), and the text of every
+*_windows.* file of core, ui and app (a header only Windows includes is not in that log). A unit
+without a valid entry in the log (the Windows twins of platform files) is always compiled; a unit
+that failed is never remembered.
 """
+import hashlib
 import json
 import os
 import re
@@ -107,14 +119,113 @@ def engine_flags(build):
     fail_setup("no unit of core's engine floor in the build")
 
 
-def compile_one(item, extra_include):
+def windows_command(item, extra_include):
     source, args = item
     cmd = windows_args(args, extra_include)
     if source not in cmd:
         cmd.append(source)
+    return cmd
+
+
+def compile_one(item, extra_include, keys=None, cache=None):
+    """(source, exit code, stderr, seconds, remembered): remembered when the cache had it."""
+    source, args = item
+    cmd = windows_command(item, extra_include)
+    key = keys.key(source, args, cmd) if keys and cache else None
+    marker = os.path.join(cache, key[:2], key) if key else None
+    if marker and os.path.exists(marker):
+        return source, 0, "", 0.0, True
     t = time.monotonic()
     r = subprocess.run(cmd, capture_output=True, text=True)
-    return source, r.returncode, r.stderr, time.monotonic() - t
+    if r.returncode == 0 and marker:
+        os.makedirs(os.path.dirname(marker), exist_ok=True)
+        with open(marker, "w") as f:
+            f.write(os.path.relpath(source, keys.root) + "\n")
+    return source, r.returncode, r.stderr, time.monotonic() - t, False
+
+
+def cache_folder():
+    chosen = os.environ.get("IMUDESK_WINDOWS_CHECK_CACHE", "")
+    if chosen == "off":
+        return None
+    if chosen:
+        return chosen
+    base = os.environ.get("XDG_CACHE_HOME") or os.path.join(os.path.expanduser("~"), ".cache")
+    return os.path.join(base, "imudesk", "windows-check")
+
+
+def ninja_deps(build):
+    """Object (as the build names it) -> the files its Linux compile read; only entries ninja marks VALID."""
+    r = subprocess.run(["ninja", "-C", build, "-t", "deps"], capture_output=True, text=True)
+    deps, current = {}, None
+    if r.returncode != 0:
+        return deps
+    for line in r.stdout.splitlines():
+        if not line.strip():
+            current = None
+        elif not line[0].isspace():
+            obj, _, status = line.partition(": ")
+            current = [] if status.rstrip().endswith("(VALID)") else None
+            if current is not None:
+                deps[obj] = current
+        elif current is not None:
+            current.append(line.strip())
+    return deps
+
+
+class UnitKeys:
+    """The cache key of a unit (the module docstring says what it holds)."""
+
+    def __init__(self, build, extra_include):
+        self.build = build
+        self.root = os.path.dirname(os.path.dirname(os.path.realpath(__file__)))
+        self.extra = extra_include
+        self.deps = ninja_deps(build)
+        self.texts = {}
+        common = hashlib.sha256()
+        for args in ([COMPILER, "--version"],
+                     ["dpkg-query", "-W", "qt6-base-dev", "mingw-w64-x86-64-dev", "libeigen3-dev",
+                      "g++-mingw-w64-x86-64-posix"]):
+            try:
+                common.update(subprocess.run(args, capture_output=True).stdout)
+            except OSError:
+                pass
+        common.update(open(os.path.realpath(__file__), "rb").read())
+        for folder in ("core", "ui", "app"):
+            for base, _, files in sorted(os.walk(os.path.join(self.root, folder))):
+                for name in sorted(files):
+                    if "_windows." in name:
+                        path = os.path.join(base, name)
+                        common.update(self.relative(path).encode() + b"\0" + self.text_hash(path))
+        self.common = common.digest()
+
+    def relative(self, path):
+        path = os.path.normpath(path if os.path.isabs(path) else os.path.join(self.build, path))
+        for prefix, name in ((self.build, "@BUILD@"), (self.root, "@ROOT@"), (self.extra, "@EXTRA@")):
+            if path == prefix or path.startswith(prefix + os.sep):
+                return name + path[len(prefix):]
+        return path
+
+    def text_hash(self, path):
+        path = os.path.normpath(path if os.path.isabs(path) else os.path.join(self.build, path))
+        if path not in self.texts:
+            try:
+                self.texts[path] = hashlib.sha256(open(path, "rb").read()).digest()
+            except OSError:
+                self.texts[path] = b"missing"
+        return self.texts[path]
+
+    def key(self, source, linux_args, cmd):
+        read = self.deps.get(output_of(linux_args))
+        if read is None or source.endswith("_windows.cpp"):
+            return None  # nothing says what it reads: compile it
+        h = hashlib.sha256(self.common)
+        for a in cmd:
+            h.update(self.relative(a).encode() if a.startswith("/") else a.encode())
+            h.update(b"\0")
+        for path in [source] + read:
+            h.update(self.relative(path).encode() + b"\0" + self.text_hash(path))
+        return h.hexdigest()
 
 
 def main():
@@ -138,20 +249,24 @@ def main():
         if len(sys.argv) == 4:
             probe = os.path.abspath(sys.argv[3])
             args = engine_flags(build)
-            source, rc, err, _ = compile_one((probe, args), extra)
+            source, rc, err, _, _ = compile_one((probe, args), extra)
             sys.stderr.write(err)
             print(f"check-windows: {os.path.basename(probe)} {'compiles' if rc == 0 else 'does not compile'} for Windows")
             sys.exit(0 if rc == 0 else 1)
         todo = units(build)
         jobs = int(os.environ.get("CHECK_JOBS", os.cpu_count() or 2))
         start = time.monotonic()
-        failed = []
+        cache = cache_folder()
+        keys = UnitKeys(build, extra) if cache else None
+        failed, remembered = [], 0
         with ThreadPoolExecutor(max_workers=jobs) as pool:
-            for source, rc, err, secs in pool.map(lambda u: compile_one(u, extra), todo):
+            for source, rc, err, secs, hit in pool.map(lambda u: compile_one(u, extra, keys, cache), todo):
+                remembered += hit
                 if rc != 0:
                     failed.append((source, err))
+        where = f"; {remembered} of them unchanged since a run that compiled them ({cache})" if cache else ""
         print(f"check-windows: {len(todo) - len(failed)} of {len(todo)} units of core, ui and app compile for "
-              f"Windows (mingw-w64, syntax only) in {time.monotonic() - start:.0f} s")
+              f"Windows (mingw-w64, syntax only) in {time.monotonic() - start:.0f} s{where}")
         for source, err in failed:
             lines = [l for l in err.splitlines() if "error" in l][:8]
             print(f"!! {source}:\n   " + "\n   ".join(lines), file=sys.stderr)

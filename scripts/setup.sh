@@ -6,9 +6,10 @@
 #                             build/release/package/imudesk_<version>_amd64.deb (cpack) and lint it (lintian)
 #   scripts/setup.sh test     install packages, build, make and lint the Debian package, prove the package
 #                             list and the package in a fresh Debian 12 root (scripts/check-fresh-debian.sh:
-#                             it installs the .deb there with apt-get), run the whole test suite headless and the
-#                             benchmarks, then the suite's tests without widgets again in an
-#                             AddressSanitizer + UBSan build, then every fuzz target (clang, libFuzzer) for FUZZ_SECONDS (default 20)
+#                             it installs the .deb there with apt-get), run the whole test suite headless (the
+#                             widget tests in the release build, every other test in an AddressSanitizer + UBSan
+#                             build) and the benchmarks, then every fuzz target (clang, libFuzzer) for
+#                             FUZZ_SECONDS (default 20) and the threads' tests with ThreadSanitizer
 #   scripts/setup.sh install  only install the Debian packages (the fresh-root check runs this inside its root)
 #   (scripts/setup.sh later-builds: the ThreadSanitizer and fuzz builds alone; `test` runs it in the background)
 set -euo pipefail
@@ -234,14 +235,14 @@ wait_later_builds() {
   fi
 }
 trap '[ -z "$background_pid" ] || kill -TERM "$background_pid" 2>/dev/null; signal_later_builds CONT; signal_later_builds TERM; phase_summary' EXIT
-# The suites run eight tests at a time on two cores: most of them wait on a simulated device's
-# clock, and ctest's resource allocation (tests/CMakeLists.txt gives each test its CPU share,
-# the build writes ctest-cpu-slots.json) keeps the CPU they need within the cores.
+# The suites run up to eight tests a core: most of them wait on a simulated device's clock, and
+# ctest's resource allocation (tests/CMakeLists.txt gives each test its measured CPU share, the
+# build writes ctest-cpu-slots.json) keeps the CPU they need within the cores.
 # A test that fails is run once more: only a test that fails twice stops the run (the pty and
 # timing tests share two cores with everything else on a CI machine).
 run_suite() { # build dir, extra ctest args...
   local dir="$1"; shift
-  (cd "$dir" && ctest --output-on-failure -j "$((jobs * 4))" --resource-spec-file "$dir/ctest-cpu-slots.json" \
+  (cd "$dir" && ctest --output-on-failure -j "$((jobs * 8))" --resource-spec-file "$dir/ctest-cpu-slots.json" \
     --repeat until-pass:2 "$@")
 }
 
@@ -269,9 +270,12 @@ phase "build with AddressSanitizer and UndefinedBehaviorSanitizer"
 configure_and_build "$root/build/asan" Release -DCMAKE_CXX_FLAGS_RELEASE="-O0 -DNDEBUG" \
   -DIMUDESK_TEST_OPTIMIZE=-O0 -DIMUDESK_CORE_OPTIMIZE=-O1 -DIMUDESK_SANITIZE=ON \
   -DIMUDESK_BUILD_GUI=OFF -DIMUDESK_BUILD_TESTS=ON -DIMUDESK_BUILD_BENCH=OFF
-phase "test suite (beside it, at nice 19: the ThreadSanitizer and fuzz builds)"
+# Each test of the suite runs once: the widget tests (label gui) here, in the release build; every
+# other test in the sanitizer build below, which builds all of them and finds what the release
+# build would not (the release build's speed is the benchmarks' to measure, after this phase).
+phase "test suite, the widget tests in the release build (ctest -L gui; the others run in the sanitizer build below; beside it, at nice 19: the ThreadSanitizer and fuzz builds)"
 start_later_builds
-run_suite "$root/build/test" --timeout 600
+run_suite "$root/build/test" -L gui --timeout 600
 signal_later_builds STOP
 phase "benchmark (decode throughput against the manual's byte-at-a-time decoder)"
 "$root/build/test/tests/bench/bench_decode" --mb 50
@@ -330,7 +334,7 @@ live_bench "$bench/soak" --seconds 20
 
 export ASAN_OPTIONS="detect_leaks=0:abort_on_error=1:strict_string_checks=1"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
-phase "test suite again, in the sanitizer build (beside it, at nice 19: the rest of the ThreadSanitizer and fuzz builds)"
+phase "test suite, every test without widgets in the sanitizer build (beside it, at nice 19: the rest of the ThreadSanitizer and fuzz builds)"
 signal_later_builds CONT
 run_suite "$root/build/asan" --timeout 900
 unset ASAN_OPTIONS UBSAN_OPTIONS
