@@ -168,11 +168,11 @@ fi
 # killed during its package install leaves the host's /dev untouched and its root removable.
 # Both mostly wait on tar, apt, dpkg and the mirror (together about one core for two minutes),
 # so they run in the background, one after the other (they share the cache and the roots'
-# folder), each into its own log, printed when they are waited for. They run beside fuzzing,
-# whose length is set in seconds per parser whatever else runs, so they cost the run no time
-# there (beside a build they cost the build their CPU; beside a suite or the benchmarks they
-# would disturb what those measure). A run that stops early stops them too (SIGTERM: the check
-# removes its root).
+# folder), each into its own log, printed when they are waited for. They run beside the test
+# suite at nice 19, as the later builds below: the suite mostly waits on simulated devices'
+# clocks and measures no speed (a test's waits stretch on a busy machine), and the scheduler
+# gives them only the CPU it leaves idle; they are waited for before the benchmarks, which they
+# would disturb. A run that stops early stops them too (SIGTERM: the check removes its root).
 background_checks() { # the safety test, then the check of the package made from build/test
   if [ -n "${IMUDESK_IN_FRESH_ROOT:-}" ]; then
     for name in fresh-root-safety fresh-root-check; do
@@ -183,10 +183,10 @@ background_checks() { # the safety test, then the check of the package made from
   (
     child=""
     trap '[ -z "$child" ] || kill -TERM "$child" 2>/dev/null; wait; exit 143' TERM
-    "${as_root[@]}" "$here/test-check-fresh-debian.sh" > "$root/build/fresh-root-safety.log" 2>&1 &
+    nice -n 19 "${as_root[@]}" "$here/test-check-fresh-debian.sh" > "$root/build/fresh-root-safety.log" 2>&1 &
     child=$!
     wait "$child" || exit 1
-    "${as_root[@]}" "$here/check-fresh-debian.sh" --build "$root/build/test" > "$root/build/fresh-root-check.log" 2>&1 &
+    nice -n 19 "${as_root[@]}" "$here/check-fresh-debian.sh" --build "$root/build/test" > "$root/build/fresh-root-check.log" 2>&1 &
     child=$!
     wait "$child" || exit 2
   ) &
@@ -209,12 +209,12 @@ wait_background_checks() { # prints their logs; fails the run when one failed
     *) echo "!! the fresh-root check failed (above; log: build/fresh-root-check.log)" >&2; exit 1 ;;
   esac
 }
-# The ThreadSanitizer and fuzz builds (`later-builds` above) run in the background from the first
-# suite on, at nice 19: the suites mostly wait on simulated devices' clocks (the release suite is
-# about 100 CPU-s in 106 s on two cores), and the scheduler gives a nice-19 build only the CPU
-# they leave idle, so the builds advance without taking time from the tests. Stopped (SIGSTOP to
-# their process group) while the benchmarks measure speed, continued for the sanitizer suite,
-# waited for before fuzzing. In their own session (setsid), so the group can be signalled.
+# The ThreadSanitizer and fuzz builds (`later-builds` above) run in the background from the
+# suite on, at nice 19: the suite mostly waits on simulated devices' clocks (it leaves the two
+# cores about a fifth idle), and the scheduler gives a nice-19 build only the CPU it leaves
+# idle, so the builds advance without taking time from the tests. Stopped (SIGSTOP to their
+# process group) while the benchmarks measure speed, continued and waited for after them,
+# before fuzzing. In their own session (setsid), so the group can be signalled.
 later_pid=""
 start_later_builds() {
   setsid nice -n 19 "$here/setup.sh" later-builds > "$root/build/later-builds.log" 2>&1 &
@@ -235,14 +235,14 @@ wait_later_builds() {
   fi
 }
 trap '[ -z "$background_pid" ] || kill -TERM "$background_pid" 2>/dev/null; signal_later_builds CONT; signal_later_builds TERM; phase_summary' EXIT
-# The suites run up to eight tests a core: most of them wait on a simulated device's clock, and
+# The suites run up to twelve tests a core: most of them wait on a simulated device's clock, and
 # ctest's resource allocation (tests/CMakeLists.txt gives each test its measured CPU share, the
 # build writes ctest-cpu-slots.json) keeps the CPU they need within the cores.
 # A test that fails is run once more: only a test that fails twice stops the run (the pty and
 # timing tests share two cores with everything else on a CI machine).
 run_suite() { # build dir, extra ctest args...
   local dir="$1"; shift
-  (cd "$dir" && ctest --output-on-failure -j "$((jobs * 8))" --resource-spec-file "$dir/ctest-cpu-slots.json" \
+  (cd "$dir" && ctest --output-on-failure -j "$((jobs * 12))" --resource-spec-file "$dir/ctest-cpu-slots.json" \
     --repeat until-pass:2 "$@")
 }
 
@@ -259,7 +259,7 @@ python3 "$root/scripts/check_windows.py" "$root/build/test"
 
 phase "build with AddressSanitizer and UndefinedBehaviorSanitizer"
 # The core, imudesk-cli and every test that needs no widgets (unit, integration, threads), without
-# debug information. The widget tests and the window run in the release suite above only: on a
+# debug information. The widget tests and the window run from the release build only: on a
 # fresh 2-core machine their instrumented build and run (the UI library, the GUI, tests_ui; the
 # slowest tests of the suite) cost about 500 s of a cold run that issue 53 bounds at 1,800 s, and
 # the code they exercise beyond the core is the widgets'. The tests and the application compile
@@ -270,12 +270,21 @@ phase "build with AddressSanitizer and UndefinedBehaviorSanitizer"
 configure_and_build "$root/build/asan" Release -DCMAKE_CXX_FLAGS_RELEASE="-O0 -DNDEBUG" \
   -DIMUDESK_TEST_OPTIMIZE=-O0 -DIMUDESK_CORE_OPTIMIZE=-O1 -DIMUDESK_SANITIZE=ON \
   -DIMUDESK_BUILD_GUI=OFF -DIMUDESK_BUILD_TESTS=ON -DIMUDESK_BUILD_BENCH=OFF
-# Each test of the suite runs once: the widget tests (label gui) here, in the release build; every
-# other test in the sanitizer build below, which builds all of them and finds what the release
-# build would not (the release build's speed is the benchmarks' to measure, after this phase).
-phase "test suite, the widget tests in the release build (ctest -L gui; the others run in the sanitizer build below; beside it, at nice 19: the ThreadSanitizer and fuzz builds)"
+# Each test of the suite runs once, all in one ctest run (one pool of the cores for both builds'
+# tests): the widget tests (label gui) from the release build, every other test from the
+# sanitizer build, which builds all of them and finds what the release build would not (the
+# release build's speed is the benchmarks' to measure, after this phase).
+phase "test suite: the widget tests of the release build and every other test in the sanitizer build, one run (scripts/combine_suites.py; beside it, at nice 19: the ThreadSanitizer and fuzz builds, the fresh-root check's safety test, then the check)"
 start_later_builds
-run_suite "$root/build/test" -L gui --timeout 600
+background_checks
+python3 "$here/combine_suites.py" "$root/build/suites" "$root/build/test/ctest-cpu-slots.json" \
+  "$root/build/test=^gui$" "$root/build/asan=^sanitized$"
+export ASAN_OPTIONS="detect_leaks=0:abort_on_error=1:strict_string_checks=1"
+export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+run_suite "$root/build/suites" --timeout 900
+unset ASAN_OPTIONS UBSAN_OPTIONS
+phase "fresh Debian 12 root (what was left of it after the suite): the package list alone configures the project, the .deb installs and runs; a check killed midway leaves the host's /dev as it was"
+wait_background_checks
 signal_later_builds STOP
 phase "benchmark (decode throughput against the manual's byte-at-a-time decoder)"
 "$root/build/test/tests/bench/bench_decode" --mb 50
@@ -332,21 +341,13 @@ phase "benchmark (results database: 1,000 module records uploaded to PostgreSQL,
 phase "soak (1 kHz HI91 with recording and the GUI offscreen; 20 s in CI, one hour by default)"
 live_bench "$bench/soak" --seconds 20
 
-export ASAN_OPTIONS="detect_leaks=0:abort_on_error=1:strict_string_checks=1"
-export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
-phase "test suite, every test without widgets in the sanitizer build (beside it, at nice 19: the rest of the ThreadSanitizer and fuzz builds)"
+phase "the ThreadSanitizer and fuzz builds: what was left of them after the suite and the benchmarks (log: build/later-builds.log)"
 signal_later_builds CONT
-run_suite "$root/build/asan" --timeout 900
-unset ASAN_OPTIONS UBSAN_OPTIONS
-phase "the ThreadSanitizer and fuzz builds: what was left of them after the suites (log: build/later-builds.log)"
 wait_later_builds
 
-phase "fuzzing every parser, ${FUZZ_SECONDS:-20} s each (beside it: the fresh-root check's safety test, then the check)"
+phase "fuzzing every parser, ${FUZZ_SECONDS:-20} s each"
 mkdir -p "$root/build"
-background_checks
 FUZZ_JOBS="$jobs" "$root/tests/fuzz/run.sh" "${FUZZ_SECONDS:-20}" "$root/build/fuzz"
-phase "fresh Debian 12 root (waited for after fuzzing): the package list alone configures the project, the .deb installs and runs; a check killed midway leaves the host's /dev as it was"
-wait_background_checks
 
 phase "the threads' tests in the ThreadSanitizer build (any report fails; later-builds built core and these tests, ctest label tsan)"
 # The session engine, recording, replay, station and firmware tests (tests/CMakeLists.txt lists

@@ -23,6 +23,7 @@ for s in check-fresh-debian.sh test-check-fresh-debian.sh; do
 done
 printf 'import os\nopen("%s/calls", "a").write("check_windows.py ran as uid %%d\\n" %% os.getuid())\n' "$work" \
   > "$work/tree/scripts/check_windows.py"
+printf 'import os\nimport sys\nos.makedirs(sys.argv[1], exist_ok=True)\nopen("%s/calls", "a").write("combine_suites.py ran\\n")\n' "$work" > "$work/tree/scripts/combine_suites.py"
 stub() { # name, body
   printf '#!/bin/sh\n%s\n' "$2" > "$work/bin/$1"
 }
@@ -38,7 +39,7 @@ stub cpack 'for a in "$@"; do case "$prev" in -B) mkdir -p "$a" && touch "$a/imu
 stub lintian 'exit 0'
 stub npm 'echo "npm $*" >> '"$work"'/calls'
 # The suites pass, up to the last one (ThreadSanitizer's), which ends the run after the
-# fresh-root phase, which waits for the check and its safety test (they run beside fuzzing).
+# fresh-root phase, which waits for the check and its safety test (they run beside the suite).
 stub ctest 'case "$*" in *"-L tsan"*) echo "ctest reached" >> '"$work"'/calls; exit 3;; esac; exit 0'
 stub sudo 'echo "sudo $*" >> '"$work"'/calls; while [ "${1#-}" != "$1" ]; do shift; done; exec "$@"'
 chmod -R a+rX "$work" && chmod 777 "$work" "$work/home" && chmod a+x "$work"/bin/* "$work"/tree/scripts/*.sh "$work/tree/tests/fuzz/run.sh"

@@ -321,13 +321,24 @@ private Q_SLOTS:
                 if (!it.key().endsWith(QLatin1String("/imu")))
                     continue;
                 ++imuTopics;
-                // What the devices sent, from the moment the client was ready to its
-                // end: received, or counted by the bridge as missing. (The devices' rate is 1 kHz
+                // Every stamp of the device's 1 ms grid in the client's span received, or counted
+                // as missing (a gap nobody counted would leave the sum short).
+                const double spanMs = (s.value(QStringLiteral("lastTimestamp")).toObject().value(it.key()).toString().toDouble()
+                                       - s.value(QStringLiteral("firstTimestamp")).toObject().value(it.key()).toString().toDouble())
+                                      / 1e6;
+                QVERIFY2(double(it.value().toInteger() + missing) >= spanMs - 2,
+                         qPrintable(QStringLiteral("%1: %2 + %3 missing in a span of %4 ms")
+                                        .arg(it.key()).arg(it.value().toInteger()).arg(missing).arg(spanMs)));
+                // The span: the time under test, from the moment the client was ready, but for
+                // what was still on its way to the client when it was stopped (up to 1.9 s seen
+                // with the sanitizer suite beside it on two cores). (The devices' rate is 1 kHz
                 // on an idle machine; a simulator process that a loaded machine does not schedule
-                // sends fewer, which the bridge cannot forward.)
-                QVERIFY2(double(it.value().toInteger() + missing) >= 0.95 * deviceRate * seconds - 200,
-                         qPrintable(QStringLiteral("%1: %2 + %3 missing, the devices sent %4 a second")
-                                        .arg(it.key()).arg(it.value().toInteger()).arg(missing).arg(deviceRate)));
+                // sends fewer, which the bridge cannot forward: its stamps then jump, and the
+                // client counts the jump as missing.)
+                constexpr double kInFlightMs = 3000;
+                QVERIFY2(spanMs >= 0.95 * seconds * 1000 - kInFlightMs,
+                         qPrintable(QStringLiteral("%1: a span of %2 ms in %3 s; the devices sent %4 a second")
+                                        .arg(it.key()).arg(spanMs).arg(seconds).arg(deviceRate)));
                 // Every sample's five messages: the same count on each of the device's topics, but
                 // for the few ms between the subscriptions to them (each is subscribed to as it
                 // is advertised) and what was dropped.
