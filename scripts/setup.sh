@@ -168,11 +168,12 @@ fi
 # killed during its package install leaves the host's /dev untouched and its root removable.
 # Both mostly wait on tar, apt, dpkg and the mirror (together about one core for two minutes),
 # so they run in the background, one after the other (they share the cache and the roots'
-# folder), each into its own log, printed when they are waited for. They run beside the test
-# suite at nice 19, as the later builds below: the suite mostly waits on simulated devices'
-# clocks and measures no speed (a test's waits stretch on a busy machine), and the scheduler
-# gives them only the CPU it leaves idle; they are waited for before the benchmarks, which they
-# would disturb. A run that stops early stops them too (SIGTERM: the check removes its root).
+# folder), each into its own log, printed when they are waited for. They run beside fuzzing,
+# whose length is set in seconds per parser whatever else runs, so they cost the run no time
+# there (beside a build they cost the build their CPU; beside a benchmark they would disturb what
+# it measures; beside the suite, even at nice 19, their package installs made four of its pty
+# tests miss a reply once, in the run's first minutes). A run that stops early stops them too
+# (SIGTERM: the check removes its root).
 background_checks() { # the safety test, then the check of the package made from build/test
   if [ -n "${IMUDESK_IN_FRESH_ROOT:-}" ]; then
     for name in fresh-root-safety fresh-root-check; do
@@ -183,10 +184,10 @@ background_checks() { # the safety test, then the check of the package made from
   (
     child=""
     trap '[ -z "$child" ] || kill -TERM "$child" 2>/dev/null; wait; exit 143' TERM
-    nice -n 19 "${as_root[@]}" "$here/test-check-fresh-debian.sh" > "$root/build/fresh-root-safety.log" 2>&1 &
+    "${as_root[@]}" "$here/test-check-fresh-debian.sh" > "$root/build/fresh-root-safety.log" 2>&1 &
     child=$!
     wait "$child" || exit 1
-    nice -n 19 "${as_root[@]}" "$here/check-fresh-debian.sh" --build "$root/build/test" > "$root/build/fresh-root-check.log" 2>&1 &
+    "${as_root[@]}" "$here/check-fresh-debian.sh" --build "$root/build/test" > "$root/build/fresh-root-check.log" 2>&1 &
     child=$!
     wait "$child" || exit 2
   ) &
@@ -274,17 +275,14 @@ configure_and_build "$root/build/asan" Release -DCMAKE_CXX_FLAGS_RELEASE="-O0 -D
 # tests): the widget tests (label gui) from the release build, every other test from the
 # sanitizer build, which builds all of them and finds what the release build would not (the
 # release build's speed is the benchmarks' to measure, after this phase).
-phase "test suite: the widget tests of the release build and every other test in the sanitizer build, one run (scripts/combine_suites.py; beside it, at nice 19: the ThreadSanitizer and fuzz builds, the fresh-root check's safety test, then the check)"
+phase "test suite: the widget tests of the release build and every other test in the sanitizer build, one run (scripts/combine_suites.py; beside it, at nice 19: the ThreadSanitizer and fuzz builds)"
 start_later_builds
-background_checks
 python3 "$here/combine_suites.py" "$root/build/suites" "$root/build/test/ctest-cpu-slots.json" \
   "$root/build/test=^gui$" "$root/build/asan=^sanitized$"
 export ASAN_OPTIONS="detect_leaks=0:abort_on_error=1:strict_string_checks=1"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 run_suite "$root/build/suites" --timeout 900
 unset ASAN_OPTIONS UBSAN_OPTIONS
-phase "fresh Debian 12 root (what was left of it after the suite): the package list alone configures the project, the .deb installs and runs; a check killed midway leaves the host's /dev as it was"
-wait_background_checks
 signal_later_builds STOP
 phase "benchmark (decode throughput against the manual's byte-at-a-time decoder)"
 "$root/build/test/tests/bench/bench_decode" --mb 50
@@ -345,9 +343,12 @@ phase "the ThreadSanitizer and fuzz builds: what was left of them after the suit
 signal_later_builds CONT
 wait_later_builds
 
-phase "fuzzing every parser, ${FUZZ_SECONDS:-20} s each"
+phase "fuzzing every parser, ${FUZZ_SECONDS:-20} s each (beside it: the fresh-root check's safety test, then the check)"
 mkdir -p "$root/build"
+background_checks
 FUZZ_JOBS="$jobs" "$root/tests/fuzz/run.sh" "${FUZZ_SECONDS:-20}" "$root/build/fuzz"
+phase "fresh Debian 12 root (waited for after fuzzing): the package list alone configures the project, the .deb installs and runs; a check killed midway leaves the host's /dev as it was"
+wait_background_checks
 
 phase "the threads' tests in the ThreadSanitizer build (any report fails; later-builds built core and these tests, ctest label tsan)"
 # The session engine, recording, replay, station and firmware tests (tests/CMakeLists.txt lists

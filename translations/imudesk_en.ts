@@ -26,7 +26,7 @@
 <context>
     <name>CaptureSource</name>
     <message numerus="yes">
-        <location filename="../core/record/capture_source.cpp" line="+120"/>
+        <location filename="../core/record/capture_source.cpp" line="+122"/>
         <source>%1 is a vendor CSV: %n row(s) read, times from its pc_counter column</source>
         <translation>
             <numerusform>%1 is a vendor CSV: %n row read, times from its pc_counter column</numerusform>
@@ -89,7 +89,7 @@
 <context>
     <name>imudesk::ui::AnalysisWindow</name>
     <message numerus="yes">
-        <location filename="../ui/charts/analysis_window.cpp" line="+207"/>
+        <location filename="../ui/charts/analysis_window.cpp" line="+197"/>
         <source>%1 to %2 ms: %n frame(s)</source>
         <translation>
             <numerusform>%1 to %2 ms: %n frame</numerusform>

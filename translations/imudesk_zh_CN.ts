@@ -1371,7 +1371,7 @@
         <translation>%1 是空文件</translation>
     </message>
     <message>
-        <location line="+106"/>
+        <location line="+108"/>
         <source>No temporary folder to convert %1 in: %2</source>
         <translation>没有可用于转换 %1 的临时文件夹：%2</translation>
     </message>
@@ -1383,7 +1383,7 @@
         </translation>
     </message>
     <message>
-        <location line="-52"/>
+        <location line="-54"/>
         <source>%1 is neither an ImuDesk capture nor %2</source>
         <translation>%1 既不是 ImuDesk 记录文件，也不是%2</translation>
     </message>
@@ -1398,7 +1398,7 @@
         <translation>%1 已经是 ImuDesk 记录文件</translation>
     </message>
     <message>
-        <location line="+36"/>
+        <location line="+38"/>
         <source>%1 malformed lines in all</source>
         <translation>共 %1 行格式错误</translation>
     </message>
@@ -7799,6 +7799,93 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
 </context>
 <context>
+    <name>imudesk::station::StationSession</name>
+    <message>
+        <location filename="../core/station/station_session.cpp" line="+81"/>
+        <source>The plan %1 could not be opened: %2</source>
+        <translation>无法打开测试计划 %1：%2</translation>
+    </message>
+    <message>
+        <location line="+26"/>
+        <source>Wait for the run to end, or cancel it, before changing the simulated tray.</source>
+        <translation>请等待运行结束或将其取消，然后再更改模拟托盘。</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>a good module</source>
+        <translation>正常模块</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>a noisy gyro (%1 times the noise)</source>
+        <translation>陀螺仪噪声过大（噪声为正常的 %1 倍）</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>mounted wrongly (on its side, roll %1°)</source>
+        <translation>安装方向错误（侧放，横滚 %1°）</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>old firmware</source>
+        <translation>旧版固件</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>The simulated modules could not start: %1</source>
+        <translation>模拟模块无法启动：%1</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Simulated HI14 %1 of %2, firmware %3: %4</source>
+        <translation>模拟 HI14（第 %1 个，共 %2 个），固件 %3：%4</translation>
+    </message>
+    <message>
+        <location line="+74"/>
+        <source>Open a test plan first (Open…), or start from the example.</source>
+        <translation>请先打开测试计划（“打开…”），或从示例新建。</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The plan &quot;%1&quot; cannot run:
+• %2
+Edit it (Edit…) and start again.</source>
+        <translation>测试计划“%1”无法运行：
+• %2
+请编辑该计划（“编辑…”）后重新开始。</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Check the ports of the modules to test first.</source>
+        <translation>请先勾选待测模块的串口。</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>The report folder cannot be used: %1</source>
+        <translation>报告文件夹无法使用：%1</translation>
+    </message>
+    <message>
+        <location line="+72"/>
+        <source>No run yet.</source>
+        <translation>尚未运行。</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 passed · %2 failed · %3 running · %4 waiting</source>
+        <translation>%1 通过 · %2 失败 · %3 运行中 · %4 等待</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source> — the workspace of %1 opens when its test has ended</source>
+        <translation> — %1 的工作区将在其测试结束后打开</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source> — the workspaces of %1 open when their tests have ended</source>
+        <translation> — %1 的工作区将在各自测试结束后打开</translation>
+    </message>
+</context>
+<context>
     <name>imudesk::station::TestPlan</name>
     <message>
         <location filename="../core/station/test_plan.cpp" line="+99"/>
@@ -8384,7 +8471,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
     </message>
     <message>
         <location line="+2"/>
-        <location line="+113"/>
+        <location line="+103"/>
         <source>Allan deviation</source>
         <translation>阿伦方差</translation>
     </message>
@@ -15330,13 +15417,13 @@ Is it a results database that ImuDesk wrote? Choose another file with Open….</
 <context>
     <name>imudesk::ui::StationView</name>
     <message>
-        <location filename="../ui/station/station_view.cpp" line="+235"/>
-        <location line="+78"/>
+        <location filename="../ui/station/station_view.cpp" line="+252"/>
+        <location line="+77"/>
         <source>Production station</source>
         <translation>生产测试台</translation>
     </message>
     <message>
-        <location line="-77"/>
+        <location line="-76"/>
         <source>Plan:</source>
         <translation>测试计划：</translation>
     </message>
@@ -15477,22 +15564,17 @@ Is it a results database that ImuDesk wrote? Choose another file with Open….</
     </message>
     <message>
         <location line="+7"/>
-        <location line="+179"/>
+        <location line="+149"/>
         <source>%1 (simulated)</source>
         <translation>%1（模拟）</translation>
     </message>
     <message>
-        <location line="-107"/>
-        <source>The plan %1 could not be opened: %2</source>
-        <translation>无法打开测试计划 %1：%2</translation>
-    </message>
-    <message>
-        <location line="+23"/>
+        <location line="-87"/>
         <source>No plan yet: open one, or start from the example</source>
         <translation>尚无测试计划：请打开一个，或从示例新建</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+10"/>
         <source>✓ %1</source>
         <translation>✓ %1</translation>
     </message>
@@ -15517,7 +15599,7 @@ Is it a results database that ImuDesk wrote? Choose another file with Open….</
         <translation>（未命名）</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+13"/>
         <source>Open test plan</source>
         <translation>打开测试计划</translation>
     </message>
@@ -15542,42 +15624,7 @@ Is it a results database that ImuDesk wrote? Choose another file with Open….</
         <translation>%1（%2）</translation>
     </message>
     <message>
-        <location filename="../ui/station/station_view_tray.cpp" line="+31"/>
-        <source>Wait for the run to end, or cancel it, before changing the simulated tray.</source>
-        <translation>请等待运行结束或将其取消，然后再更改模拟托盘。</translation>
-    </message>
-    <message>
-        <location line="+21"/>
-        <source>a good module</source>
-        <translation>正常模块</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>a noisy gyro (%1 times the noise)</source>
-        <translation>陀螺仪噪声过大（噪声为正常的 %1 倍）</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>mounted wrongly (on its side, roll %1°)</source>
-        <translation>安装方向错误（侧放，横滚 %1°）</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>old firmware</source>
-        <translation>旧版固件</translation>
-    </message>
-    <message>
-        <location line="+14"/>
-        <source>The simulated modules could not start: %1</source>
-        <translation>模拟模块无法启动：%1</translation>
-    </message>
-    <message>
-        <location line="+7"/>
-        <source>Simulated HI14 %1 of %2, firmware %3: %4</source>
-        <translation>模拟 HI14（第 %1 个，共 %2 个），固件 %3：%4</translation>
-    </message>
-    <message>
-        <location line="+58"/>
+        <location filename="../ui/station/station_view_tray.cpp" line="+37"/>
         <source>Simulated tray</source>
         <translation>模拟托盘</translation>
     </message>
@@ -15597,48 +15644,24 @@ Is it a results database that ImuDesk wrote? Choose another file with Open….</
         <translation>模块数量：</translation>
     </message>
     <message>
-        <location filename="../ui/station/station_view.cpp" line="+55"/>
+        <location filename="../ui/station/station_view.cpp" line="+49"/>
         <source>Folder for the station&apos;s reports</source>
         <translation>生产测试台的报告文件夹</translation>
     </message>
     <message>
-        <location line="+22"/>
-        <source>Open a test plan first (Open…), or start from the example.</source>
-        <translation>请先打开测试计划（“打开…”），或从示例新建。</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>The plan &quot;%1&quot; cannot run:
-• %2
-Edit it (Edit…) and start again.</source>
-        <translation>测试计划“%1”无法运行：
-• %2
-请编辑该计划（“编辑…”）后重新开始。</translation>
-    </message>
-    <message>
-        <location line="+6"/>
-        <source>Check the ports of the modules to test first.</source>
-        <translation>请先勾选待测模块的串口。</translation>
-    </message>
-    <message>
-        <location line="+17"/>
-        <source>The report folder cannot be used: %1</source>
-        <translation>报告文件夹无法使用：%1</translation>
-    </message>
-    <message>
-        <location line="+74"/>
+        <location line="+25"/>
         <source>A report could not be written:
 %1</source>
         <translation>无法写入报告：
 %1</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+8"/>
         <source>%1 could not be opened: no application on this computer opens it. Open it from the file manager instead.</source>
         <translation>无法打开 %1：这台电脑上没有能打开它的应用程序。请改从文件管理器打开。</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+14"/>
         <source>The report of %1 is written when its test has ended.</source>
         <translation>%1 的报告在其测试结束后写出。</translation>
     </message>
@@ -15653,27 +15676,7 @@ Edit it (Edit…) and start again.</source>
         <translation>还没有运行文件夹：请先按“开始”(Ctrl+R)。</translation>
     </message>
     <message>
-        <location line="+53"/>
-        <source>No run yet.</source>
-        <translation>尚未运行。</translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <source>%1 passed · %2 failed · %3 running · %4 waiting</source>
-        <translation>%1 通过 · %2 失败 · %3 运行中 · %4 等待</translation>
-    </message>
-    <message>
-        <location line="+12"/>
-        <source> — the workspace of %1 opens when its test has ended</source>
-        <translation> — %1 的工作区将在其测试结束后打开</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source> — the workspaces of %1 open when their tests have ended</source>
-        <translation> — %1 的工作区将在各自测试结束后打开</translation>
-    </message>
-    <message>
-        <location line="+3"/>
+        <location line="+59"/>
         <source>Reports of this run: %1</source>
         <translation>本次运行的报告：%1</translation>
     </message>

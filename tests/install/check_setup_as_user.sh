@@ -39,7 +39,7 @@ stub cpack 'for a in "$@"; do case "$prev" in -B) mkdir -p "$a" && touch "$a/imu
 stub lintian 'exit 0'
 stub npm 'echo "npm $*" >> '"$work"'/calls'
 # The suites pass, up to the last one (ThreadSanitizer's), which ends the run after the
-# fresh-root phase, which waits for the check and its safety test (they run beside the suite).
+# fresh-root phase, which waits for the check and its safety test (they run beside fuzzing).
 stub ctest 'case "$*" in *"-L tsan"*) echo "ctest reached" >> '"$work"'/calls; exit 3;; esac; exit 0'
 stub sudo 'echo "sudo $*" >> '"$work"'/calls; while [ "${1#-}" != "$1" ]; do shift; done; exec "$@"'
 chmod -R a+rX "$work" && chmod 777 "$work" "$work/home" && chmod a+x "$work"/bin/* "$work"/tree/scripts/*.sh "$work/tree/tests/fuzz/run.sh"

@@ -17,6 +17,7 @@
 // through a pseudo-terminal, and bench_station measures the tray over pseudo-terminals.
 #include "../common/ui_families.h"
 #include "../common/layout_checks.h"
+#include "../common/station_plans.h"
 #include "../common/test_main.h"
 #include "sim/pty_simulator.h"
 #include "ui/station/plan_editor_dialog.h"
@@ -87,20 +88,7 @@ StepKind expectedFailure(int module, bool *fails)
 
 TestPlan shortPlan()
 {
-    TestPlan plan;
-    plan.name = QStringLiteral("short tray test");
-    auto add = [&plan](StepKind kind, QVariantMap params = {}) {
-        plan.steps.push_back(station::TestPlan::defaultStep(kind, params));
-    };
-    add(StepKind::Identify, {{QStringLiteral("products"), QStringLiteral("HI14")},
-                             {QStringLiteral("firmware_min"), QStringLiteral("1.6.6")}});
-    add(StepKind::Firmware, {{QStringLiteral("minimum"), QStringLiteral("1.7.1")}, {QStringLiteral("image"), QString()}});
-    add(StepKind::Static, {{QStringLiteral("seconds"), 2.0}});
-    add(StepKind::Attitude, {{QStringLiteral("seconds"), 1.0}});
-    // Off in the plan: every tile says so, also on the modules that failed before it.
-    add(StepKind::Save);
-    plan.steps.back().enabled = false;
-    return plan;
+    return test::shortTrayPlan(QStringLiteral("short tray test"));
 }
 
 QList<int> numbersIn(const QString &text)

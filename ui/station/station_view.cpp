@@ -1,8 +1,6 @@
 #include "ui/station/station_view.h"
 
 #include "reports/station_report.h"
-#include "sim/pty_simulator.h"
-#include "sim/simulated_transport.h"
 #include "ui/station/line_database_dialog.h"
 #include "ui/station/plan_editor_dialog.h"
 #include "core/station/run_folder.h"
@@ -54,6 +52,8 @@ StationView::StationView(QWidget *parent) : QWidget(parent)
     setObjectName(QStringLiteral("stationView"));
     // A window of its own, also when the main window owns it.
     setWindowFlag(Qt::Window);
+    m_session = new station::StationSession(this);
+    m_session->setReportWriter(&writeStationReport);
     m_model = new StationModel(this);
 
     // Plan: its name and steps, Open…, Edit…, New from example.
@@ -202,18 +202,33 @@ StationView::StationView(QWidget *parent) : QWidget(parent)
         updateActions();
     });
 
-    {
-        QSettings store;
-        m_settings.load(store);
-    }
-    m_folder->setText(QDir::toNativeSeparators(
-        m_settings.reportFolder.isEmpty() ? station::StationSettings::defaultReportFolder() : m_settings.reportFolder));
+    // What the session says: its plan, its tray, its run and the summary line.
+    connect(m_session, &station::StationSession::planChanged, this, &StationView::updatePlanLabel);
+    connect(m_session, &station::StationSession::trayChanged, this, &StationView::refreshPorts);
+    connect(m_session, &station::StationSession::changed, this, [this] {
+        updateSummary();
+        updateActions();
+    });
+    connect(m_session, &station::StationSession::runStarted, this,
+            [this](const StationRunner *runner) { m_model->setRunner(runner); }); // the tiles follow (modelReset)
+    connect(m_session, &station::StationSession::moduleFinished, this, [this] {
+        m_model->refresh(); // the tile shows the verdict at once
+        showNewReportErrors();
+    });
+    connect(m_session, &station::StationSession::runFinished, this, [this] {
+        m_model->refresh();
+        showNewReportErrors();
+    });
+    connect(m_session, &station::StationSession::workspaceReady, this, &StationView::openWorkspaceRequested);
+
+    m_session->loadSettings();
+    m_folder->setText(QDir::toNativeSeparators(m_session->reportFolder()));
     retranslateUi();
     refreshPorts();
     rebuildTiles();
     // The plan used last, when it is still there.
-    if (!m_settings.planPath.isEmpty() && QFileInfo::exists(m_settings.planPath))
-        openPlan(m_settings.planPath);
+    if (const QString last = m_session->settings().planPath; !last.isEmpty() && QFileInfo::exists(last))
+        openPlan(last);
     updatePlanLabel();
     updateActions();
 
@@ -224,10 +239,12 @@ StationView::StationView(QWidget *parent) : QWidget(parent)
 
 StationView::~StationView()
 {
-    // The runner's sessions close before the simulated modules they talk to go away.
+    // The tiles let go of the runner, then the session goes (its runner's sessions close before
+    // the simulated modules they talk to), telling this half-destroyed window nothing.
     m_model->setRunner(nullptr);
-    m_runner.reset();
-    stopSimulatedTray();
+    m_session->disconnect(this);
+    delete m_session;
+    m_session = nullptr;
 }
 
 void StationView::retranslateUi()
@@ -272,9 +289,9 @@ void StationView::retranslateUi()
     for (int i = 0; i < m_ports->count(); ++i) {
         QListWidgetItem *item = m_ports->item(i);
         const QString port = item->data(Qt::UserRole).toString();
-        if (m_simPorts.contains(port)) {
+        if (m_session->simulatedPorts().contains(port)) {
             item->setText(tr("%1 (simulated)").arg(port));
-            item->setToolTip(m_simNotes.value(port));
+            item->setToolTip(m_session->simulatedNote(port));
         }
     }
     updatePlanLabel();
@@ -298,9 +315,8 @@ void StationView::closeEvent(QCloseEvent *event)
     }
     // A run still going is cancelled (each module's report says so), then the simulated
     // modules stop: nothing of the station outlives its window.
-    if (running())
-        m_runner->cancel();
-    stopSimulatedTray();
+    m_session->cancel();
+    m_session->stopSimulatedTray();
     QWidget::closeEvent(event);
 }
 
@@ -318,79 +334,50 @@ bool StationView::saveScreenshot(const QString &path, QString *error)
     return WindowHelpers::saveScreenshot(this, path, error);
 }
 
-void StationView::rememberSettings()
-{
-    if (!m_remember)
-        return;
-    QSettings store;
-    m_settings.save(store);
-}
-
-// ---------------------------------------------------------------- plan
-
-TestPlan StationView::demoPlan()
-{
-    TestPlan plan = TestPlan::example();
-    for (station::PlanStep &s : plan.steps) {
-        if (s.kind == station::StepKind::Firmware)
-            s.params[QStringLiteral("image")] = QString();
-        if (s.kind == station::StepKind::Profile)
-            s.enabled = false;
-    }
-    return plan;
-}
-
 bool StationView::openPlan(const QString &path)
 {
     QString error;
-    const auto plan = TestPlan::load(path, &error);
-    if (!plan) {
-        showError(tr("The plan %1 could not be opened: %2").arg(QDir::toNativeSeparators(path), error));
+    if (!m_session->openPlan(path, &error)) {
+        showError(error);
         return false;
     }
-    setPlan(*plan, QFileInfo(path).absoluteFilePath());
     return true;
 }
 
 void StationView::setPlan(const TestPlan &plan, const QString &path)
 {
-    m_plan = plan;
-    m_planPath = path;
-    m_havePlan = true;
-    if (!path.isEmpty() && path != m_settings.planPath) {
-        m_settings.planPath = path;
-        rememberSettings();
-    }
-    updatePlanLabel();
-    updateActions();
+    m_session->setPlan(plan, path);
 }
 
 void StationView::updatePlanLabel()
 {
-    if (!m_havePlan) {
+    if (!m_session->hasPlan()) {
         m_planName->setFullText(tr("No plan yet: open one, or start from the example"));
         m_planName->setExtraToolTip(QString());
         return;
     }
     int enabled = 0;
     QStringList steps;
-    for (const station::PlanStep &s : m_plan.steps) {
+    const TestPlan &plan = m_session->plan();
+    const QString &planPath = m_session->planPath();
+    for (const station::PlanStep &s : plan.steps) {
         enabled += s.enabled ? 1 : 0;
         steps << (s.enabled ? tr("✓ %1") : tr("✗ %1 (off)")).arg(TestPlan::title(s.kind));
     }
-    const QString file = m_planPath.isEmpty() ? tr("not saved") : QDir::toNativeSeparators(m_planPath);
+    const QString file = planPath.isEmpty() ? tr("not saved") : QDir::toNativeSeparators(planPath);
     m_planName->setFullText(tr("%1 · %2 of %3 steps · %4")
-                                .arg(m_plan.name.isEmpty() ? tr("(no name)") : m_plan.name)
+                                .arg(plan.name.isEmpty() ? tr("(no name)") : plan.name)
                                 .arg(enabled)
-                                .arg(m_plan.steps.size())
+                                .arg(plan.steps.size())
                                 .arg(file));
     m_planName->setExtraToolTip(steps.join(QLatin1Char('\n')));
 }
 
 void StationView::choosePlan()
 {
-    const QString start = m_planPath.isEmpty() ? QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation)
-                                               : QFileInfo(m_planPath).absolutePath();
+    const QString &planPath = m_session->planPath();
+    const QString start = planPath.isEmpty() ? QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation)
+                                             : QFileInfo(planPath).absolutePath();
     const QString path =
         QFileDialog::getOpenFileName(this, tr("Open test plan"), start, tr("Station plans (*.json);;All files (*)"));
     if (!path.isEmpty())
@@ -413,7 +400,7 @@ PlanEditorDialog *StationView::editPlan()
         m_editor->activateWindow();
         return m_editor;
     }
-    auto *editor = new PlanEditorDialog(m_havePlan ? m_plan : demoPlan(), m_planPath, this);
+    auto *editor = new PlanEditorDialog(m_session->hasPlan() ? m_session->plan() : demoPlan(), m_session->planPath(), this);
     editor->setAttribute(Qt::WA_DeleteOnClose);
     connect(editor, &QDialog::finished, editor, &QObject::deleteLater);
     connect(editor, &PlanEditorDialog::saved, this,
@@ -451,8 +438,8 @@ void StationView::refreshPorts()
         addPortItem(port, info.description().isEmpty() ? port : tr("%1 (%2)").arg(port, info.description()),
                     tip.join(QLatin1Char('\n')), checked.contains(port));
     }
-    for (const QString &port : std::as_const(m_simPorts))
-        addPortItem(port, tr("%1 (simulated)").arg(port), m_simNotes.value(port), checked.contains(port));
+    for (const QString &port : m_session->simulatedPorts())
+        addPortItem(port, tr("%1 (simulated)").arg(port), m_session->simulatedNote(port), checked.contains(port));
     updateActions();
 }
 
@@ -476,28 +463,22 @@ void StationView::setPortChecked(const QString &port, bool checked)
 
 QString StationView::reportFolder() const
 {
-    const QString dir = QDir::fromNativeSeparators(m_folder->text().trimmed());
-    return dir.isEmpty() ? station::StationSettings::defaultReportFolder() : dir;
+    return m_session->reportFolder();
 }
 
 void StationView::setReportFolder(const QString &dir)
 {
     m_folder->setText(QDir::toNativeSeparators(dir));
-    if (dir != m_settings.reportFolder) {
-        m_settings.reportFolder = dir;
-        rememberSettings();
-    }
+    m_session->setReportFolder(dir);
 }
 
 void StationView::editLineDatabase()
 {
-    auto *dialog = new LineDatabaseDialog(m_settings.lineDatabase, m_settings.artifactFolder, this);
+    const station::StationSettings &settings = m_session->settings();
+    auto *dialog = new LineDatabaseDialog(settings.lineDatabase, settings.artifactFolder, this);
     dialog->setAttribute(Qt::WA_DeleteOnClose);
-    connect(dialog, &QDialog::accepted, this, [this, dialog] {
-        m_settings.lineDatabase = dialog->url();
-        m_settings.artifactFolder = dialog->artifactFolder();
-        rememberSettings(); // the next Start uploads there
-    });
+    connect(dialog, &QDialog::accepted, this,
+            [this, dialog] { m_session->setLineDatabase(dialog->url(), dialog->artifactFolder()); });
     dialog->open();
 }
 
@@ -510,137 +491,25 @@ void StationView::chooseReportFolder()
 
 // ---------------------------------------------------------------- the run
 
-bool StationView::running() const
-{
-    return m_runner && m_runner->running();
-}
-
-int StationView::baudFor(const QString &port) const
-{
-    return m_simPorts.contains(port) ? kSimulatedBaud : m_runBaud;
-}
-
 bool StationView::start()
 {
-    if (running())
-        return false;
-    if (!m_havePlan) {
-        showError(tr("Open a test plan first (Open…), or start from the example."));
-        return false;
-    }
-    if (const QStringList problems = m_plan.problems(); !problems.isEmpty()) {
-        showError(tr("The plan \"%1\" cannot run:\n• %2\nEdit it (Edit…) and start again.")
-                      .arg(m_plan.name, problems.join(QStringLiteral("\n• "))));
-        return false;
-    }
-    const QStringList ports = checkedPorts();
-    if (ports.isEmpty()) {
-        showError(tr("Check the ports of the modules to test first."));
-        return false;
-    }
-    auto runner = std::make_unique<StationRunner>(m_plan, ports);
-    // A tray of simulated modules is known to talk at 115200 baud; real ones are detected.
-    const bool allSimulated =
-        std::all_of(ports.begin(), ports.end(), [this](const QString &p) { return m_simPorts.contains(p); });
-    m_runBaud = allSimulated ? kSimulatedBaud : 0;
-    runner->setBaud(m_runBaud);
-    // An in-process tray's modules (setSimulatedTrayInProcess), while the tray is there; the
-    // serial port for every other port. The runner belongs to this window.
-    runner->setTransportFactory([this](const QString &port) -> std::unique_ptr<io::Transport> {
-        return m_simTransports ? m_simTransports(port) : nullptr;
-    });
     QString error;
-    const QString folder = station::RunFolder::newRunPath(reportFolder(), m_plan);
-    if (!runner->setRunFolder(folder, &error)) {
-        showError(tr("The report folder cannot be used: %1").arg(error));
+    if (!m_session->start(checkedPorts(), &error)) {
+        if (!error.isEmpty())
+            showError(error);
         return false;
     }
-    runner->setReportWriter(&writeStationReport);
-    if (!m_settings.lineDatabase.isEmpty()) {
-        results::UploaderOptions line;
-        line.server = m_settings.lineDatabase;
-        line.artifactFolder = m_settings.artifactFolder;
-        runner->setLineDatabase(line);
-    }
-    connect(runner.get(), &StationRunner::moduleFinished, this, &StationView::onModuleFinished);
-    connect(runner.get(), &StationRunner::finished, this, [this] {
-        m_model->refresh();
-        showNewReportErrors();
-        updateSummary();
-        updateActions();
-    });
-    m_pendingOpen.clear();
-    m_reportErrorsShown = 0;
-    m_model->setRunner(runner.get()); // the tiles follow (modelReset)
-    m_runner = std::move(runner);     // the previous run's runner (finished) goes
-    m_runner->start();
-    m_upload->follow(m_runner->uploader());
+    m_upload->follow(m_session->runner()->uploader());
     m_model->refresh();
     updateSummary();
     updateActions();
     return true;
 }
 
-void StationView::cancel()
-{
-    if (running())
-        m_runner->cancel();
-}
-
-void StationView::rerunFailed()
-{
-    if (!m_runner)
-        return;
-    QList<int> failed;
-    for (int i = 0; i < m_runner->moduleCount(); ++i)
-        if (m_runner->module(i).verdict == Verdict::Fail)
-            failed << i;
-    if (failed.isEmpty())
-        return;
-    m_runner->rerun(failed);
-    m_model->refresh();
-    updateSummary();
-    updateActions();
-}
-
-void StationView::onModuleFinished(int index)
-{
-    m_model->refresh(); // the tile shows the verdict at once
-    showNewReportErrors();
-    if (m_pendingOpen.remove(index) && m_runner) {
-        // The module's session closes its port in its own thread: open the workspace a moment later.
-        const QString port = m_runner->module(index).port;
-        const int baud = baudFor(port);
-        QTimer::singleShot(kPortReleaseMs, this, [this, port, baud] { Q_EMIT openWorkspaceRequested(port, baud); });
-    }
-    updateSummary();
-    updateActions();
-}
-
 void StationView::showNewReportErrors()
 {
-    if (!m_runner)
-        return;
-    const QStringList &errors = m_runner->reportErrors();
-    if (errors.size() <= m_reportErrorsShown)
-        return;
-    const QStringList fresh = errors.mid(m_reportErrorsShown);
-    m_reportErrorsShown = int(errors.size());
-    showError(tr("A report could not be written:\n%1").arg(fresh.join(QLatin1Char('\n'))));
-}
-
-void StationView::openModule(int index)
-{
-    if (!m_runner || index < 0 || index >= m_runner->moduleCount())
-        return;
-    const ModuleResult &r = m_runner->module(index);
-    if (r.verdict == Verdict::Running) {
-        // Its port is the station's until the test ends: the workspace opens then.
-        m_pendingOpen.insert(index);
-        updateSummary();
-        return;
-    }
-    Q_EMIT openWorkspaceRequested(r.port, baudFor(r.port));
+    if (const QStringList fresh = m_session->takeNewReportErrors(); !fresh.isEmpty())
+        showError(tr("A report could not be written:\n%1").arg(fresh.join(QLatin1Char('\n'))));
 }
 
 bool StationView::openUrl(const QString &localPath)
@@ -656,9 +525,10 @@ bool StationView::openUrl(const QString &localPath)
 
 bool StationView::openReport(int index)
 {
-    if (!m_runner || index < 0 || index >= m_runner->moduleCount())
+    const StationRunner *runner = m_session->runner();
+    if (!runner || index < 0 || index >= runner->moduleCount())
         return false;
-    const ModuleResult &r = m_runner->module(index);
+    const ModuleResult &r = runner->module(index);
     if (r.reportPath.isEmpty() || !QFileInfo::exists(r.reportPath)) {
         showError(r.verdict == Verdict::Running || r.verdict == Verdict::Pending
                       ? tr("The report of %1 is written when its test has ended.").arg(r.port)
@@ -671,11 +541,11 @@ bool StationView::openReport(int index)
 
 bool StationView::openRunFolder()
 {
-    if (!m_runner || m_runner->runFolder().isEmpty()) {
+    if (!m_session->hasRunFolder()) {
         showError(tr("There is no run folder yet: press Start (Ctrl+R) first."));
         return false;
     }
-    return openUrl(m_runner->runFolder());
+    return openUrl(m_session->runner()->runFolder());
 }
 
 QString StationView::summaryText() const
@@ -724,29 +594,14 @@ void StationView::updateTiles(int first, int last)
 
 void StationView::updateSummary()
 {
-    if (!m_runner) {
-        m_summary->setFullText(tr("No run yet."));
+    const StationRunner *runner = m_session->runner();
+    if (!runner) {
+        m_summary->setFullText(m_session->summaryLine());
         m_summary->setExtraToolTip(QString());
         return;
     }
-    const StationRunner::Summary s = m_runner->summary();
-    QString text = tr("%1 passed · %2 failed · %3 running · %4 waiting")
-                       .arg(s.passed)
-                       .arg(s.failed)
-                       .arg(s.running)
-                       .arg(s.waiting);
-    if (!m_pendingOpen.isEmpty()) {
-        QList<int> waiting = m_pendingOpen.values();
-        std::sort(waiting.begin(), waiting.end());
-        QStringList ports;
-        for (int i : waiting)
-            ports << m_runner->module(i).port;
-        text += ports.size() == 1
-            ? tr(" — the workspace of %1 opens when its test has ended").arg(ports.first())
-            : tr(" — the workspaces of %1 open when their tests have ended").arg(ports.join(QStringLiteral(", ")));
-    }
-    m_summary->setFullText(text + m_upload->text());
-    QString tip = tr("Reports of this run: %1").arg(QDir::toNativeSeparators(m_runner->runFolder()));
+    m_summary->setFullText(m_session->summaryLine() + m_upload->text());
+    QString tip = tr("Reports of this run: %1").arg(QDir::toNativeSeparators(runner->runFolder()));
     if (const QString upload = m_upload->toolTip(); !upload.isEmpty())
         tip += QLatin1Char('\n') + upload;
     m_summary->setExtraToolTip(tip);
@@ -757,14 +612,10 @@ void StationView::updateActions()
     if (!m_start)
         return;
     const bool busy = running();
-    bool anyFailed = false;
-    if (m_runner)
-        for (int i = 0; i < m_runner->moduleCount(); ++i)
-            anyFailed = anyFailed || m_runner->module(i).verdict == Verdict::Fail;
-    m_start->setEnabled(!busy && m_havePlan && !checkedPorts().isEmpty());
+    m_start->setEnabled(!busy && m_session->hasPlan() && !checkedPorts().isEmpty());
     m_cancel->setEnabled(busy);
-    m_rerun->setEnabled(anyFailed);
-    m_openFolder->setEnabled(m_runner && !m_runner->runFolder().isEmpty());
+    m_rerun->setEnabled(m_session->anyFailed());
+    m_openFolder->setEnabled(m_session->hasRunFolder());
     m_tray->setEnabled(!busy);
 }
 

@@ -12,12 +12,13 @@
 // "Simulated tray…" starts simulated HI14 modules on pseudo-terminals (the demo: 8 modules,
 // one with a noisy gyro, one mounted wrongly, one with firmware 1.6.6); the window owns them
 // and stops them when it closes. Tests can have the same tray run in this process instead
-// (setSimulatedTrayInProcess). Nothing here blocks: the runner works in its sessions'
+// (setSimulatedTrayInProcess). The station's state (plan, settings, tray, run, summary line)
+// is a station::StationSession of core's (core/station/station_session.h); this window shows
+// it and gives it the checked ports. Nothing here blocks: the runner works in its sessions'
 // threads, the tiles and the summary follow a StationModel that reads it on a 5 Hz clock,
 // and problems (a plan that does not load, a folder that cannot be written, a report that
 // failed) are shown in a message that does not wait for an answer.
-#include "core/station/station_settings.h"
-#include "core/station/test_plan.h"
+#include "core/station/station_session.h"
 
 #include <QCoreApplication>
 #include <QHash>
@@ -38,15 +39,6 @@ class QScrollArea;
 class QSettings;
 class QUrl;
 
-namespace imudesk::io {
-class Transport;
-}
-namespace imudesk::sim {
-class PtySimulator;
-}
-namespace imudesk::station {
-class StationRunner;
-}
 
 namespace imudesk::ui {
 
@@ -66,12 +58,10 @@ public:
     // Opens a file or folder in the desktop's application for it; false when none could.
     using UrlOpener = std::function<bool(const QUrl &url)>;
 
-    static constexpr int kDemoTraySize = 8;
-    static constexpr int kMaxTraySize = 16;
-    static constexpr int kSimulatedBaud = 115200;
-    // A module's port is closed by its session's thread just after its test ended: a workspace
-    // asked for while it was under test opens this much later.
-    static constexpr int kPortReleaseMs = 300;
+    static constexpr int kDemoTraySize = station::StationSession::kDemoTraySize;
+    static constexpr int kMaxTraySize = station::StationSession::kMaxTraySize;
+    static constexpr int kSimulatedBaud = station::StationSession::kSimulatedBaud;
+    static constexpr int kPortReleaseMs = station::StationSession::kPortReleaseMs;
 
     explicit StationView(QWidget *parent = nullptr);
     ~StationView() override;
@@ -79,12 +69,10 @@ public:
     // The plan: from a file (false, and the reason shown, when it does not load), or given.
     bool openPlan(const QString &path);
     void setPlan(const station::TestPlan &plan, const QString &path);
-    const station::TestPlan &plan() const { return m_plan; }
-    bool hasPlan() const { return m_havePlan; }
-    // The example plan (TestPlan::example()) without what it needs from files beside it: the
-    // firmware step keeps its minimum but has no image (an older module fails it), the profile
-    // step is off. What --station-demo runs when no plan is given.
-    static station::TestPlan demoPlan();
+    const station::TestPlan &plan() const { return m_session->plan(); }
+    bool hasPlan() const { return m_session->hasPlan(); }
+    // StationSession::demoPlan(): what --station-demo runs when no plan is given.
+    static station::TestPlan demoPlan() { return station::StationSession::demoPlan(); }
     // Opens the plan in the editor (non-modal); a saved plan becomes the station's plan.
     PlanEditorDialog *editPlan();
 
@@ -92,40 +80,38 @@ public:
     void refreshPorts();
     QStringList checkedPorts() const;
     void setPortChecked(const QString &port, bool checked);
-    // Starts `count` simulated HI14 modules on pseudo-terminals and checks only their ports.
-    // With faults, three of them fail (a noisy gyro, a wrong mounting, firmware 1.6.6); every
-    // one sits on a rotation fixture so that a magnetometer calibration step can pass.
+    // Starts the session's simulated tray (StationSession::startSimulatedTray) and checks only
+    // its ports.
     bool startSimulatedTray(int count, bool withFaults, QString *error = nullptr);
-    void stopSimulatedTray();
-    QStringList simulatedPorts() const;
-    // Where the next startSimulatedTray runs its modules. By default on pseudo-terminals: the
-    // station then takes the real serial path, and a module's workspace can open its port.
-    // In process (for tests): each module sits behind a sim::SimulatedTransport that the
-    // station's runner makes at every connection (StationRunner::setTransportFactory), its
-    // clock timeScale times faster than real time; no pseudo-terminal and no simulator thread,
-    // so a loaded host cannot lose bytes between module and session. Its ports are then only
-    // names ("sim:tray-N"): the station's runs open them, a workspace cannot. A tray that is
-    // stopped is gone either way (a re-run after that cannot connect).
-    void setSimulatedTrayInProcess(bool inProcess, double timeScale = 1.0);
-    bool simulatedTrayInProcess() const { return m_simInProcess; }
+    void stopSimulatedTray() { m_session->stopSimulatedTray(); }
+    QStringList simulatedPorts() const { return m_session->simulatedPorts(); }
+    // Where the next startSimulatedTray runs its modules (StationSession): on pseudo-terminals,
+    // or in process (for tests: no pseudo-terminal and no simulator thread, so a loaded host
+    // cannot lose bytes between module and session; a workspace cannot open such a port).
+    void setSimulatedTrayInProcess(bool inProcess, double timeScale = 1.0)
+    {
+        m_session->setSimulatedTrayInProcess(inProcess, timeScale);
+    }
+    bool simulatedTrayInProcess() const { return m_session->simulatedTrayInProcess(); }
 
     // Where run folders are made (one per Start: "<plan>-<date>-<time>").
     QString reportFolder() const;
     void setReportFolder(const QString &dir);
     // Whether the report folder and the plan opened are remembered for the next time (off for
     // automation: a --screenshot run or a test leaves the user's settings alone).
-    void setRemembering(bool on) { m_remember = on; }
-    const station::StationSettings &settings() const { return m_settings; }
+    void setRemembering(bool on) { m_session->setRemembering(on); }
+    const station::StationSettings &settings() const { return m_session->settings(); }
     // The line database button: its dialog (window-modal); OK stores URL and artifact folder.
     void editLineDatabase();
 
     // Runs the plan on the checked ports; false (and the reason shown) when it cannot.
     bool start();
-    void cancel();
+    void cancel() { m_session->cancel(); }
     // Runs the modules that failed again, into the same run folder (their next attempt).
-    void rerunFailed();
-    bool running() const;
-    const station::StationRunner *runner() const { return m_runner.get(); }
+    void rerunFailed() { m_session->rerunFailed(); }
+    bool running() const { return m_session->running(); }
+    const station::StationRunner *runner() const { return m_session->runner(); }
+    station::StationSession *session() const { return m_session; }
     StationModel *model() const { return m_model; }
 
     // "n passed · n failed · n running · n waiting", and which workspaces wait for their test.
@@ -134,7 +120,7 @@ public:
     QWidget *tile(int index) const;
     int tileColumns() const;
     // Opens the module's workspace now, or when its test has ended (what a click on its tile does).
-    void openModule(int index);
+    void openModule(int index) { m_session->openModule(index); }
     // Opens the module's PDF report (its tile's Report button); false, and the reason shown,
     // while it has none yet.
     bool openReport(int index);
@@ -163,37 +149,17 @@ private:
     void newFromExample();
     void chooseReportFolder();
     void openTrayDialog();
-    void rememberSettings();
     void addPortItem(const QString &port, const QString &text, const QString &toolTip, bool checked);
     void rebuildTiles();
     void updateTiles(int first, int last);
     void updateSummary();
     void updateActions();
     void updatePlanLabel();
-    void onModuleFinished(int index);
     void showNewReportErrors();
-    int baudFor(const QString &port) const;
     bool openUrl(const QString &localPath);
 
-    station::TestPlan m_plan;
-    QString m_planPath;
-    bool m_havePlan = false;
-    station::StationSettings m_settings;
-    bool m_remember = true;
-
-    std::unique_ptr<station::StationRunner> m_runner;
+    station::StationSession *m_session = nullptr;
     StationModel *m_model = nullptr;
-    int m_runBaud = 0;
-    int m_reportErrorsShown = 0;
-    QSet<int> m_pendingOpen; // tiles clicked while their module was under test
-
-    std::vector<std::unique_ptr<sim::PtySimulator>> m_sims;
-    bool m_simInProcess = false;
-    double m_simTimeScale = 1.0;
-    // The in-process tray's transports by port name (null for any other port); empty without one.
-    std::function<std::unique_ptr<io::Transport>(const QString &port)> m_simTransports;
-    QStringList m_simPorts;            // in tray order
-    QHash<QString, QString> m_simNotes; // port -> what the simulated module is (its faults)
 
     QLabel *m_planTitle = nullptr;
     ElidedLabel *m_planName = nullptr; // the plan's name and steps (elided; the whole plan in its tooltip)
