@@ -21,9 +21,10 @@ A unit that compiled is remembered, as ccache remembers an object, in
 ${XDG_CACHE_HOME:-~/.cache}/imudesk/windows-check (IMUDESK_WINDOWS_CHECK_CACHE names another folder;
 "off" turns it off): a run compiles again only the units whose key changed. The key holds the
 cross compiler's version, the Debian packages of the headers it reads (Qt, mingw-w64, Eigen), this
-script, the unit's Windows command (paths below the checkout and the build written relative to
-them, so a clone in another folder finds what an earlier one left), the text of the unit and of
-every header the Linux build of the same unit read (ninja's dependency log), and the text of every
+script, the unit's Windows command, the text of the unit and of every header the Linux build of the
+same unit read (ninja's dependency log), all with the checkout's and the build's paths named instead
+of spelt (unity batches and moc outputs include their sources by absolute path: a clone in another
+folder then finds what an earlier one left), and the text of every
 *_windows.* file of core, ui and app (a header only Windows includes is not in that log). A unit
 without a valid entry in the log (the Windows twins of platform files) is always compiled; a unit
 that failed is never remembered.
@@ -154,6 +155,17 @@ def cache_folder():
     return os.path.join(base, "imudesk", "windows-check")
 
 
+def source_folder(build):
+    """The checkout a build folder was configured from (its CMakeCache.txt), or None."""
+    try:
+        for line in open(os.path.join(build, "CMakeCache.txt"), encoding="utf-8", errors="replace"):
+            if line.startswith("CMAKE_HOME_DIRECTORY:"):
+                return os.path.realpath(line.split("=", 1)[1].strip())
+    except OSError:
+        pass
+    return None
+
+
 def ninja_deps(build):
     """Object (as the build names it) -> the files its Linux compile read; only entries ninja marks VALID."""
     r = subprocess.run(["ninja", "-C", build, "-t", "deps"], capture_output=True, text=True)
@@ -177,9 +189,13 @@ class UnitKeys:
     """The cache key of a unit (the module docstring says what it holds)."""
 
     def __init__(self, build, extra_include):
-        self.build = build
-        self.root = os.path.dirname(os.path.dirname(os.path.realpath(__file__)))
+        self.build = os.path.realpath(build)
+        self.root = source_folder(self.build) or os.path.dirname(os.path.dirname(os.path.realpath(__file__)))
         self.extra = extra_include
+        # The checkout's and the build's paths, longest first, as they stand in commands and in
+        # generated files (unity batches and moc outputs include their sources by absolute path).
+        self.prefixes = sorted(((self.build, "@BUILD@"), (self.root, "@ROOT@"), (self.extra, "@EXTRA@")),
+                               key=lambda p: -len(p[0]))
         self.deps = ninja_deps(build)
         self.texts = {}
         common = hashlib.sha256()
@@ -199,18 +215,20 @@ class UnitKeys:
                         common.update(self.relative(path).encode() + b"\0" + self.text_hash(path))
         self.common = common.digest()
 
-    def relative(self, path):
-        path = os.path.normpath(path if os.path.isabs(path) else os.path.join(self.build, path))
-        for prefix, name in ((self.build, "@BUILD@"), (self.root, "@ROOT@"), (self.extra, "@EXTRA@")):
-            if path == prefix or path.startswith(prefix + os.sep):
-                return name + path[len(prefix):]
-        return path
+    def relative(self, text):
+        """The text with the checkout's, the build's and the temporary folder's paths named, not spelt."""
+        for prefix, name in self.prefixes:
+            text = text.replace(prefix, name)
+        return text
 
     def text_hash(self, path):
         path = os.path.normpath(path if os.path.isabs(path) else os.path.join(self.build, path))
         if path not in self.texts:
             try:
-                self.texts[path] = hashlib.sha256(open(path, "rb").read()).digest()
+                data = open(path, "rb").read()
+                for prefix, name in self.prefixes:
+                    data = data.replace(prefix.encode(), name.encode())
+                self.texts[path] = hashlib.sha256(data).digest()
             except OSError:
                 self.texts[path] = b"missing"
         return self.texts[path]
@@ -221,10 +239,10 @@ class UnitKeys:
             return None  # nothing says what it reads: compile it
         h = hashlib.sha256(self.common)
         for a in cmd:
-            h.update(self.relative(a).encode() if a.startswith("/") else a.encode())
-            h.update(b"\0")
+            h.update(self.relative(a).encode() + b"\0")
         for path in [source] + read:
-            h.update(self.relative(path).encode() + b"\0" + self.text_hash(path))
+            full = os.path.normpath(path if os.path.isabs(path) else os.path.join(self.build, path))
+            h.update(self.relative(full).encode() + b"\0" + self.text_hash(full))
         return h.hexdigest()
 
 

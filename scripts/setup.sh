@@ -236,14 +236,14 @@ wait_later_builds() {
   fi
 }
 trap '[ -z "$background_pid" ] || kill -TERM "$background_pid" 2>/dev/null; signal_later_builds CONT; signal_later_builds TERM; phase_summary' EXIT
-# The suites run up to twelve tests a core: most of them wait on a simulated device's clock, and
+# The suites run up to eight tests a core: most of them wait on a simulated device's clock, and
 # ctest's resource allocation (tests/CMakeLists.txt gives each test its measured CPU share, the
 # build writes ctest-cpu-slots.json) keeps the CPU they need within the cores.
 # A test that fails is run once more: only a test that fails twice stops the run (the pty and
 # timing tests share two cores with everything else on a CI machine).
 run_suite() { # build dir, extra ctest args...
   local dir="$1"; shift
-  (cd "$dir" && ctest --output-on-failure -j "$((jobs * 12))" --resource-spec-file "$dir/ctest-cpu-slots.json" \
+  (cd "$dir" && ctest --output-on-failure -j "$((jobs * 8))" --resource-spec-file "$dir/ctest-cpu-slots.json" \
     --repeat until-pass:2 "$@")
 }
 
