@@ -454,6 +454,23 @@ private Q_SLOTS:
         m_view->setReportFolder(before);
     }
 
+    // A folder typed into the Reports field is the one kept (Return) and the one the next run uses.
+    void typedReportFolderIsUsed()
+    {
+        auto *field = m_view->findChild<QLineEdit *>(QStringLiteral("reportFolder"));
+        QVERIFY(field);
+        const QString before = m_view->reportFolder();
+        const QString typed = m_dir.filePath(QStringLiteral("typed-reports"));
+        field->setFocus();
+        field->selectAll();
+        QTest::keyClicks(field, QDir::toNativeSeparators(typed));
+        QCOMPARE(m_view->reportFolder(), typed); // before Return: what the field says
+        QTest::keyClick(field, Qt::Key_Return);
+        QCOMPARE(m_view->settings().reportFolder, typed);
+        m_view->setReportFolder(before);
+        QCOMPARE(m_view->settings().reportFolder, before);
+    }
+
     void planEditorWritesAnEditedNumber()
     {
         QTemporaryDir dir;

@@ -463,7 +463,9 @@ void StationView::setPortChecked(const QString &port, bool checked)
 
 QString StationView::reportFolder() const
 {
-    return m_session->reportFolder();
+    // What the field says (typed but not yet committed, too), as the next Start uses it.
+    const QString dir = QDir::fromNativeSeparators(m_folder->text().trimmed());
+    return dir.isEmpty() ? station::StationSettings::defaultReportFolder() : dir;
 }
 
 void StationView::setReportFolder(const QString &dir)
@@ -494,6 +496,7 @@ void StationView::chooseReportFolder()
 bool StationView::start()
 {
     QString error;
+    m_session->setReportFolder(reportFolder()); // a folder typed without leaving the field (Ctrl+R)
     if (!m_session->start(checkedPorts(), &error)) {
         if (!error.isEmpty())
             showError(error);
