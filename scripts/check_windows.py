@@ -128,12 +128,11 @@ def windows_command(item, extra_include):
     return cmd
 
 
-def compile_one(item, extra_include, keys=None, cache=None):
-    """(source, exit code, stderr, seconds, remembered): remembered when the cache had it."""
+def compile_one(item, extra_include, keys=None):
+    """(source, exit code, stderr, seconds, remembered): remembered when the cache (keys) had it."""
     source, args = item
     cmd = windows_command(item, extra_include)
-    key = keys.key(source, args, cmd) if keys and cache else None
-    marker = os.path.join(cache, key[:2], key) if key else None
+    marker = keys.marker(source, args, cmd) if keys else None
     if marker and os.path.exists(marker):
         return source, 0, "", 0.0, True
     t = time.monotonic()
@@ -188,7 +187,8 @@ def ninja_deps(build):
 class UnitKeys:
     """The cache key of a unit (the module docstring says what it holds)."""
 
-    def __init__(self, build, extra_include):
+    def __init__(self, build, extra_include, folder):
+        self.folder = folder
         self.build = os.path.realpath(build)
         self.root = source_folder(self.build) or os.path.dirname(os.path.dirname(os.path.realpath(__file__)))
         self.extra = extra_include
@@ -233,6 +233,11 @@ class UnitKeys:
                 self.texts[path] = b"missing"
         return self.texts[path]
 
+    def marker(self, source, linux_args, cmd):
+        """The file that says the unit compiled, or None for a unit that is always compiled."""
+        key = self.key(source, linux_args, cmd)
+        return os.path.join(self.folder, key[:2], key) if key else None
+
     def key(self, source, linux_args, cmd):
         read = self.deps.get(output_of(linux_args))
         if read is None or source.endswith("_windows.cpp"):
@@ -275,10 +280,10 @@ def main():
         jobs = int(os.environ.get("CHECK_JOBS", os.cpu_count() or 2))
         start = time.monotonic()
         cache = cache_folder()
-        keys = UnitKeys(build, extra) if cache else None
+        keys = UnitKeys(build, extra, cache) if cache else None
         failed, remembered = [], 0
         with ThreadPoolExecutor(max_workers=jobs) as pool:
-            for source, rc, err, secs, hit in pool.map(lambda u: compile_one(u, extra, keys, cache), todo):
+            for source, rc, err, secs, hit in pool.map(lambda u: compile_one(u, extra, keys), todo):
                 remembered += hit
                 if rc != 0:
                     failed.append((source, err))
