@@ -9,6 +9,8 @@
 //    offers no subprotocol, garbage requests, an oversized message, 200 connects and disconnects,
 //    and a client that never reads. The session loses no frame, the recording holds every
 //    frame decoded, memory stays bounded, and each case is in the bridge's log.
+// tests/CMakeLists.txt runs these functions by name as two ctest entries (tst_live_bridge alone on
+// the cores, tst_live_bridge_hostile beside other tests): a new function goes into one of them.
 #include "bridge/live_bridge.h"
 #include "protocol/hipnuc/frame_decoder.h"
 #include "../common/capture_bytes.h"
