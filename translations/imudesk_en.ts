@@ -78,7 +78,7 @@
 <context>
     <name>imudesk::station::ModuleRunner</name>
     <message numerus="yes">
-        <location filename="../core/station/module_runner.cpp" line="+509"/>
+        <location filename="../core/station/module_runner.cpp" line="+510"/>
         <source>%n setting(s) applied and read back</source>
         <translation>
             <numerusform>%n setting applied and read back</numerusform>
@@ -255,7 +255,7 @@
 <context>
     <name>imudesk::ui::RecordingControls</name>
     <message numerus="yes">
-        <location filename="../ui/recording/recording_controls.cpp" line="+293"/>
+        <location filename="../ui/recording/recording_controls.cpp" line="+294"/>
         <source>%n frame(s)</source>
         <translation>
             <numerusform>%n frame</numerusform>

@@ -4797,7 +4797,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>capture::McapRecording</name>
     <message>
-        <location filename="../core/record/mcap_group_recording.cpp" line="+50"/>
+        <location filename="../core/record/mcap_recorder.cpp" line="+113"/>
         <source>Recording to %1 stopped: %2. Check the free disk space.</source>
         <translation>录制到 %1 已停止：%2。请检查剩余磁盘空间。</translation>
     </message>
@@ -5480,7 +5480,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::device::GroupRecording</name>
     <message>
-        <location filename="../core/record/group_recording.cpp" line="+45"/>
+        <location filename="../core/record/group_recording.cpp" line="+47"/>
         <source>A session recording is already running.</source>
         <translation>会话录制已在进行中。</translation>
     </message>
@@ -5863,7 +5863,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::device::SessionEngine</name>
     <message>
-        <location filename="../core/device/session_engine.cpp" line="+130"/>
+        <location filename="../core/device/session_engine.cpp" line="+133"/>
         <source>the link went to the device&apos;s own session</source>
         <translation>链路已交给设备自己的会话</translation>
     </message>
@@ -5888,12 +5888,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>%1，波特率 %2（已重连）</translation>
     </message>
     <message>
-        <location line="+45"/>
-        <source>Recording to %1 stopped: %2. Check the free disk space.</source>
-        <translation>录制到 %1 已停止：%2。请检查剩余磁盘空间。</translation>
-    </message>
-    <message>
-        <location line="+16"/>
+        <location line="+56"/>
         <source>the port is not open</source>
         <translation>串口未打开</translation>
     </message>
@@ -5908,7 +5903,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
         <translation>%1 ms 内没有应答</translation>
     </message>
     <message>
-        <location line="+82"/>
+        <location line="+75"/>
         <source>Bytes keep arriving on %1 but none of them form a frame: the device probably runs at another baud rate now. Disconnect and connect again with the baud rate set to Auto.</source>
         <translation>%1 上持续收到字节，但无法组成任何数据帧：设备可能已改用其他波特率。请断开连接，并将波特率设为“自动”后重新连接。</translation>
     </message>
@@ -7519,7 +7514,7 @@ Keep the module in place while turning it, and calibrate it together with everyt
 <context>
     <name>imudesk::station::ModuleRunner</name>
     <message>
-        <location filename="../core/station/module_runner.cpp" line="+84"/>
+        <location filename="../core/station/module_runner.cpp" line="+85"/>
         <source>the module did not answer on %1 within %2 s: check the cable, the power and the port</source>
         <translation>模块在 %2 s 内未在 %1 上应答：请检查线缆、电源和串口</translation>
     </message>
@@ -14456,7 +14451,7 @@ Default: %2</source>
 <context>
     <name>imudesk::ui::RecordingControls</name>
     <message>
-        <location filename="../ui/recording/recording_controls.cpp" line="+21"/>
+        <location filename="../ui/recording/recording_controls.cpp" line="+22"/>
         <source>Record</source>
         <translation>记录</translation>
     </message>
@@ -15644,12 +15639,12 @@ Is it a results database that ImuDesk wrote? Choose another file with Open….</
         <translation>模块数量：</translation>
     </message>
     <message>
-        <location filename="../ui/station/station_view.cpp" line="+49"/>
+        <location filename="../ui/station/station_view.cpp" line="+51"/>
         <source>Folder for the station&apos;s reports</source>
         <translation>生产测试台的报告文件夹</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+26"/>
         <source>A report could not be written:
 %1</source>
         <translation>无法写入报告：

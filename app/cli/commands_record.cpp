@@ -6,9 +6,10 @@
 #include "links/link_opener.h"
 #include "protocol/can/can_decoder.h"
 #include "protocol/hipnuc/ascii_command.h"
-#include "record/mcap_group_recording.h"
+#include "record/mcap_recorder.h"
 #include "capture/mcap_recording.h"
 #include "capture/capture_header.h"
+#include "record/recording.h"
 
 #include <QCoreApplication>
 #include <QDir>
@@ -99,23 +100,30 @@ int recordGroup(const QStringList &specs, const QString &folder, double duration
 }
 
 // record PORT,PORT,... -o run.mcap: every device's samples into one MCAP file
-// (record/mcap_group_recording.h).
+// (record/mcap_recorder.h: each session hands its samples to the recorder's tap for it).
 int recordGroupMcap(const QStringList &specs, const QString &path, double duration, int baud)
 {
     std::vector<OpenDevice> devices;
     if (const int code = openDevices(specs, baud, devices); code != ExitOk)
         return code;
-    std::vector<record::McapGroupRecording::Member> members;
-    for (OpenDevice &d : devices) // named by capture::deviceName: its serial number, else family and address
-        members.push_back({d.link.link->sharedStore(), headerOf(d), std::string()});
-    record::McapGroupRecording recording;
+    std::vector<record::McapRecorder::Device> members;
+    for (OpenDevice &d : devices) { // named by capture::deviceName: its serial number, else family and address
+        if (!qobject_cast<device::Session *>(d.link.link.get()))
+            return fail(QStringLiteral("%1: this link cannot be recorded").arg(d.spec));
+        members.push_back({headerOf(d), std::string()});
+    }
+    record::McapRecorder recording;
     QString error;
     if (!recording.start(path, members, &error))
         return fail(error);
+    for (size_t i = 0; i < devices.size(); ++i)
+        static_cast<device::Session *>(devices[i].link.link.get())->startRecording(path, recording.tap(i));
     out(QStringLiteral("recording %1 devices to %2 (Ctrl+C stops)").arg(devices.size()).arg(path));
     QElapsedTimer clock;
     clock.start();
     waitFor([&] { return !recording.error().isEmpty(); }, duration > 0 ? int(duration * 1000) : -1);
+    for (OpenDevice &d : devices)
+        d.link.link->close(); // the sessions let go of their taps before the file is closed
     const QString why = recording.stop();
     const std::vector<uint64_t> written = recording.samples();
     out(QStringLiteral("recorded %1 s into %2: %3 bytes, %4 samples missed")
@@ -125,8 +133,6 @@ int recordGroupMcap(const QStringList &specs, const QString &path, double durati
             .arg(recording.missed()));
     for (size_t i = 0; i < devices.size(); ++i)
         out(QStringLiteral("  %1: %2 samples").arg(devices[i].spec).arg(written[i]));
-    for (OpenDevice &d : devices)
-        d.link.link->close();
     return why.isEmpty() ? ExitOk : fail(why);
 }
 
@@ -222,7 +228,7 @@ int cmdRecord(const QStringList &args)
         bytes = b;
         frames = f;
     });
-    session.startRecording(path, extra, options);
+    record::startRecording(session, path, extra, options);
     waitFor([&] { return started || stopped; }, 5000);
     if (!started)
         return fail(stopReason.isEmpty() ? QStringLiteral("recording did not start") : stopReason);

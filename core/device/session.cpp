@@ -81,10 +81,11 @@ void Session::setAutoReconnect(bool on)
     jobs::postTo(m_engine, [e = m_engine, on] { e->setAutoReconnect(on); });
 }
 
-void Session::startRecording(const QString &path, const capture::CaptureHeader &header,
-                             const capture::CaptureWriter::Options &options)
+void Session::startRecording(const QString &path, std::shared_ptr<StreamTap> tap, const capture::CaptureHeader &header)
 {
-    jobs::postTo(m_engine, [e = m_engine, path, header, options] { e->startRecording(path, header, options); });
+    jobs::postTo(m_engine, [e = m_engine, path, tap = std::move(tap), header]() mutable {
+        e->startRecording(path, std::move(tap), header);
+    });
 }
 
 void Session::stopRecording()

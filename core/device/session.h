@@ -11,8 +11,8 @@
 #include "device/family_plugin.h"
 #include "device/raw_byte_log.h"
 #include "device/request.h"
+#include "device/stream_tap.h"
 #include "io/transport.h"
-#include "capture/capture_writer.h"
 
 #include <QThread>
 #include <QTimer>
@@ -46,12 +46,12 @@ public:
     void setAutoReconnect(bool on);
     bool autoReconnect() const { return m_autoReconnect.load(); }
 
-    // Records every byte received, as received, to a capture file (docs/FILE_FORMATS.md, "Capture file
-    // format") until stopRecording(), close() or a write error: recordingStarted(path), then
+    // Hands what the link reads to a recording (record/recording.h: record::startRecording makes
+    // the one a file name asks for, a capture of every byte received or an MCAP file of the
+    // samples) until stopRecording(), close() or a write error: recordingStarted(path), then
     // recordingProgress every 500 ms and recordingStopped(reason) (empty reason: as asked).
     // header adds entries (e.g. config.* from LOG COMCONFIG) to the identity, port and baud.
-    void startRecording(const QString &path, const capture::CaptureHeader &header = {},
-                        const capture::CaptureWriter::Options &options = {});
+    void startRecording(const QString &path, std::shared_ptr<StreamTap> tap, const capture::CaptureHeader &header = {});
     void stopRecording();
 
     // Raw bytes of the link, both directions (bounded).

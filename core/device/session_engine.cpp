@@ -1,6 +1,5 @@
 #include "session_engine.h"
 
-#include "capture/mcap_recording.h"
 
 #include "clock/host_clock.h"
 #include "device/stream_counters.h"
@@ -66,7 +65,11 @@ SessionEngine::SessionEngine(FamilyPlugin *family, io::Transport *transport, Sam
     connect(&m_statsTimer, &QTimer::timeout, this, &SessionEngine::publishStats);
 }
 
-SessionEngine::~SessionEngine() = default;
+SessionEngine::~SessionEngine()
+{
+    if (m_tap)
+        m_tap->end(); // what is queued is written; nobody is left to tell
+}
 
 void SessionEngine::setState(SessionState s, const QString &detail)
 {
@@ -118,7 +121,7 @@ void SessionEngine::stopActivity(const QString &why)
     m_reconnector.stop();
     m_idleTimer.stop();
     cancelAll(RequestStatus::Cancelled, why);
-    if (m_recorder || m_mcap)
+    if (m_tap)
         finishRecording(QString());
 }
 
@@ -211,10 +214,8 @@ void SessionEngine::onBytes(const QByteArray &bytes)
 {
     const int64_t arrivedNs = hostNowNs();
     m_rawLog.append(RawByteLog::Direction::Rx, bytes, arrivedNs);
-    if (m_recorder && m_recorder->append(bytes.constData(), size_t(bytes.size()), arrivedNs, utcUs())) {
-        m_recordedDecoder.feed(reinterpret_cast<const uint8_t *>(bytes.constData()), size_t(bytes.size()), arrivedNs,
-                               m_noSink);
-    }
+    if (m_tap)
+        m_tap->received(bytes, arrivedNs, utcUs());
     m_family->feed(bytes, arrivedNs);
     if (m_family->midUnit())
         m_idleTimer.start();
@@ -233,8 +234,8 @@ void SessionEngine::onLineIdle()
         return;
     }
     const int64_t now = hostNowNs();
-    if (m_recorder && m_recorder->appendLineIdle(now, utcUs()))
-        m_recordedDecoder.lineIdle(now, m_noSink);
+    if (m_tap)
+        m_tap->lineIdle(now, utcUs());
     m_family->lineIdle(now);
 }
 
@@ -242,11 +243,8 @@ void SessionEngine::appendSamples(std::vector<model::Sample> &batch)
 {
     if (batch.empty())
         return;
-    // A live MCAP recording takes the samples as they come (a capture records the bytes instead).
-    if (m_mcap && !m_mcap->append(batch)) {
-        const QString why = tr("Recording to %1 stopped: %2. Check the free disk space.").arg(m_mcap->path(), m_mcap->error());
-        QMetaObject::invokeMethod(this, [this, why] { finishRecording(why); }, Qt::QueuedConnection);
-    }
+    if (m_tap)
+        m_tap->samples(batch); // a live MCAP recording takes them (a capture records the bytes instead)
     m_store.append(batch); // the views read the store on their clock
 }
 
@@ -310,8 +308,8 @@ void SessionEngine::writeCurrent()
     m_family->writing(*m_current);
     m_current->sentNs = hostNowNs();
     m_rawLog.append(RawByteLog::Direction::Tx, m_current->wire, m_current->sentNs);
-    if (m_recorder)
-        m_recorder->appendSent(m_current->wire.constData(), size_t(m_current->wire.size()), m_current->sentNs, utcUs());
+    if (m_tap)
+        m_tap->sent(m_current->wire, m_current->sentNs, utcUs());
     if (m_transport->write(m_current->wire) != m_current->wire.size()) {
         RequestResult r;
         r.status = RequestStatus::NotSent;
@@ -385,13 +383,6 @@ void SessionEngine::cancelAll(RequestStatus status, const QString &why)
 // ---------------------------------------------------------------------------------------
 // Statistics
 
-uint64_t SessionEngine::recordedFrames() const
-{
-    if (m_mcap)
-        return m_mcap->samples();
-    return m_recordedDecoder.counters().frames;
-}
-
 void SessionEngine::restartStatistics()
 {
     m_family->resetCounters();
@@ -445,23 +436,21 @@ void SessionEngine::publishStats()
         m_lastStatsMs = nowMs;
     }
     Q_EMIT statsUpdated(s);
-    if (m_recorder)
-        Q_EMIT recordingProgress(m_recorder->status().bytesWritten, recordedFrames());
-    if (m_mcap && m_mcap->isOpen()) {
-        m_mcap->tick(); // a chunk a second at least: a killed recording keeps all but its last second
-        Q_EMIT recordingProgress(m_mcap->bytesWritten(), recordedFrames());
+    if (m_tap) {
+        const StreamTap::Progress p = m_tap->progress();
+        Q_EMIT recordingProgress(p.bytesWritten, p.frames);
     }
 }
 
 // ---------------------------------------------------------------------------------------
 // Recording
 
-void SessionEngine::startRecording(const QString &path, const capture::CaptureHeader &header,
-                                   const capture::CaptureWriter::Options &options)
+void SessionEngine::startRecording(const QString &path, std::shared_ptr<StreamTap> tap,
+                                   const capture::CaptureHeader &header)
 {
-    if (m_recorder || m_mcap)
+    if (m_tap)
         finishRecording(QString());
-    if (!m_transport)
+    if (!m_transport || !tap)
         return;
     capture::CaptureHeader h;
     h.setIdentity(m_identity);
@@ -478,63 +467,39 @@ void SessionEngine::startRecording(const QString &path, const capture::CaptureHe
     m_family->describeCapture(h);
     for (const auto &[k, v] : header.values)
         h.set(k, v);
-    if (capture::McapRecording::isMcapPath(path)) {
-        // MCAP: the decoded samples, as the tools of the field open them (capture/mcap_recording.h).
-        auto mcap = std::make_unique<capture::McapRecording>();
-        const int64_t epochOffsetNs = QDateTime::currentMSecsSinceEpoch() * 1'000'000 - hostNowNs();
-        QString error;
-        if (!mcap->start(path, h, epochOffsetNs, &error)) {
-            Q_EMIT errorOccurred(error);
-            Q_EMIT recordingStopped(error);
-            return;
-        }
-        m_mcap = std::move(mcap);
-        Q_EMIT recordingStarted(path);
-        return;
-    }
-    auto writer = std::make_unique<capture::CaptureWriter>();
-    writer->setStoppedHandler([this](const QString &reason) {
-        QMetaObject::invokeMethod(this, [this, reason] { finishRecording(reason); }, Qt::QueuedConnection);
+    tap->setStoppedHandler([this, t = tap.get()](const QString &reason) {
+        QMetaObject::invokeMethod(this, [this, t, reason] { onTapStopped(t, reason); }, Qt::QueuedConnection);
     });
     QString error;
-    if (!writer->start(path, h, options, &error)) {
+    if (!tap->begin(h, &error)) {
         Q_EMIT errorOccurred(error);
         Q_EMIT recordingStopped(error);
         return;
     }
-    m_recorder = std::move(writer);
-    m_recordedDecoder = capture::CaptureDecoder{};
-    m_recordedDecoder.configure(h);
+    m_tap = std::move(tap);
     Q_EMIT recordingStarted(path);
 }
 
 void SessionEngine::stopRecording()
 {
-    if (m_recorder || m_mcap)
+    if (m_tap)
         finishRecording(QString());
+}
+
+void SessionEngine::onTapStopped(const StreamTap *tap, const QString &reason)
+{
+    if (m_tap.get() == tap)
+        finishRecording(reason);
 }
 
 void SessionEngine::finishRecording(const QString &reason)
 {
-    if (m_mcap) {
-        const QString error = m_mcap->stop();
-        const uint64_t samples = m_mcap->samples(), bytes = m_mcap->bytesWritten();
-        m_mcap.reset();
-        Q_EMIT recordingProgress(bytes, samples);
-        const QString why = reason.isEmpty() ? error : reason;
-        if (!why.isEmpty())
-            Q_EMIT errorOccurred(why);
-        Q_EMIT recordingStopped(why);
+    if (!m_tap)
         return;
-    }
-    if (!m_recorder)
-        return;
-    const QString error = m_recorder->stop();
-    const auto st = m_recorder->status();
-    m_recorder.reset();
-    // The end of the file, as a reader reaches it: whatever the decoder still holds.
-    m_recordedDecoder.finish(m_noSink);
-    Q_EMIT recordingProgress(st.bytesWritten, recordedFrames());
+    const std::shared_ptr<StreamTap> tap = std::move(m_tap);
+    const QString error = tap->end();
+    const StreamTap::Progress p = tap->progress();
+    Q_EMIT recordingProgress(p.bytesWritten, p.frames);
     const QString why = reason.isEmpty() ? error : reason;
     if (!why.isEmpty())
         Q_EMIT errorOccurred(why);

@@ -1,7 +1,7 @@
 #pragma once
 // The one session engine: whatever the device family, it owns the transport, the request
 // queue (one request on the line at a time, timeout, retries, cancel), the path of received
-// bytes (raw-byte log, recording, the family's decoder, the bounded sample store), the
+// bytes (raw-byte log, a recording's tap, the family's decoder, the bounded sample store), the
 // statistics snapshot and, through a Reconnector (reconnector.h), the reconnection after a
 // failed link. The family plug-in (family_plugin.h) says what the bytes mean.
 //
@@ -12,9 +12,8 @@
 #include "device/request.h"
 #include "device/sample_store.h"
 #include "device/session_types.h"
+#include "device/stream_tap.h"
 #include "io/transport.h"
-#include "capture/capture_decoder.h"
-#include "capture/capture_writer.h"
 
 #include <QElapsedTimer>
 #include <QObject>
@@ -24,10 +23,6 @@
 #include <memory>
 #include <optional>
 #include <vector>
-
-namespace imudesk::capture {
-class McapRecording;
-}
 
 namespace imudesk::device {
 
@@ -79,8 +74,10 @@ public Q_SLOTS:
     void open(const QString &address, int baud);
     void close();
     void setAutoReconnect(bool on);
-    void startRecording(const QString &path, const imudesk::capture::CaptureHeader &header,
-                        const imudesk::capture::CaptureWriter::Options &options);
+    // The tap (record/recording.h) gets the bytes and samples from now until stopRecording(),
+    // close() or its own failure; header: entries beside the engine's (identity, link, baud).
+    void startRecording(const QString &path, std::shared_ptr<imudesk::device::StreamTap> tap,
+                        const imudesk::capture::CaptureHeader &header);
     void stopRecording();
     void publishStats();
 
@@ -112,10 +109,10 @@ private:
     void end(Request &r, RequestResult result);
     void onReopened();
     void finishRecording(const QString &reason);
+    // The tap stopped by itself (any thread): ended here, unless another recording took its place.
+    void onTapStopped(const StreamTap *tap, const QString &reason);
     void watchForGarbage(const SessionStats &now, qint64 nowMs);
     void withdrawGarbageWarning();
-    // Frames whole in the recording: what the capture file decodes to (recordingProgress).
-    uint64_t recordedFrames() const;
 
     FamilyPlugin *m_family;
     io::Transport *m_transport;
@@ -140,17 +137,7 @@ private:
 
     Reconnector m_reconnector;
 
-    std::unique_ptr<capture::CaptureWriter> m_recorder;
-    std::unique_ptr<capture::McapRecording> m_mcap; // a recording to .mcap: samples, not bytes
-    // The recording's frames are counted from the bytes written to it, decoded as an export
-    // or a replay will decode the file: a frame whose first bytes arrived before Record was
-    // pressed is decoded by the session but is not in the file, so the session's own frame
-    // counter would count one frame more than the file holds.
-    struct NoSink : capture::CaptureDecoder::Sink {
-        void onSample(const model::Sample &, const decode::Record &) override {}
-    };
-    capture::CaptureDecoder m_recordedDecoder;
-    NoSink m_noSink;
+    std::shared_ptr<StreamTap> m_tap; // the recording, while one runs
 };
 
 } // namespace imudesk::device

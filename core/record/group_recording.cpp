@@ -1,5 +1,7 @@
 #include "group_recording.h"
 
+#include "record/recording.h"
+
 #include "clock/host_clock.h"
 #include "format/mcap/sample_channels.h"
 #include "capture/device_name.h"
@@ -123,7 +125,7 @@ bool GroupRecording::start(const QString &folder, const std::vector<Member> &mem
         });
         m_entries.back().recording = true;
         m_entries.back().path = path;
-        s->startRecording(path);
+        record::startRecording(*s, path);
         ++started;
     }
     if (started == 0)

@@ -11,6 +11,7 @@
 #include "record/allan_deviation.h"
 #include "settings/config_profile.h"
 #include "settings/configuration_controller.h"
+#include "record/recording.h"
 
 #include <QDir>
 
@@ -820,7 +821,7 @@ void ModuleRunner::runEvidence()
                              }));
     connect(&m_deadline, &QTimer::timeout, this, [this] { m_session->stopRecording(); });
     m_stepSeconds = seconds; // poll() shows the progress
-    m_session->startRecording(m_options.evidencePath);
+    record::startRecording(*m_session, m_options.evidencePath);
     m_deadline.start(int(seconds * 1000));
 }
 

@@ -41,6 +41,7 @@
 #include "bridge/bridge_controller.h"
 #include "capture/capture_reader.h"
 #include "sim/pty_simulator.h"
+#include "record/recording.h"
 
 #include <QDir>
 #include <QJsonDocument>
@@ -453,7 +454,7 @@ int main(int argc, char **argv)
             recordStop = reason;
             recordStopped = true;
         });
-        session.startRecording(capturePath);
+        record::startRecording(session, capturePath);
         spin(200);
     }
     // --bridge: the bridge on a free port, a client per subprotocol name, subscribed to every

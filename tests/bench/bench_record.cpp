@@ -13,6 +13,7 @@
 #include "capture/capture_decoder.h"
 #include "capture/capture_reader.h"
 #include "sim/pty_simulator.h"
+#include "record/recording.h"
 
 #include <QCoreApplication>
 #include <QDir>
@@ -110,7 +111,7 @@ int main(int argc, char **argv)
     uint64_t droppedBefore = 0;
     simulator.withDevice([&](sim::HipnucSimulator &d) { droppedBefore = d.droppedFrames(); });
     const uint64_t stalledBefore = simulator.stats().chunksDropped;
-    session.startRecording(path);
+    record::startRecording(session, path);
     waitUntil([&] { return started || stopped; }, 5000);
     waitUntil([&] { return stopped; }, seconds * 1000);
     session.stopRecording();

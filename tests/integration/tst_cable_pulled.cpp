@@ -9,6 +9,7 @@
 #include "device/device_session.h"
 #include "protocol/hipnuc/frame_decoder.h"
 #include "capture/capture_reader.h"
+#include "record/recording.h"
 
 #include <QSignalSpy>
 #include <QTemporaryDir>
@@ -140,7 +141,7 @@ private Q_SLOTS:
         QVERIFY(test::openOnPty(session, pty));
         QSignalSpy started(&session, &DeviceSession::recordingStarted);
         QSignalSpy stopped(&session, &DeviceSession::recordingStopped);
-        session.startRecording(path);
+        record::startRecording(session, path);
         QTRY_VERIFY_WITH_TIMEOUT(!started.isEmpty(), 3000);
         StallWatch stalls;
         // 2000 frames in bursts, then half a frame, then the cable goes.

@@ -16,6 +16,7 @@
 #include "sim/can_simulator.h"
 #include "../common/can_result.h"
 #include "../common/test_main.h"
+#include "record/recording.h"
 
 #include <QCanBus>
 #include <QCanBusDevice>
@@ -369,7 +370,7 @@ private Q_SLOTS:
         const QString path = dir.filePath(QStringLiteral("can.imucap"));
         QSignalSpy stopped(rig.session.get(), &CanSession::recordingStopped);
         const uint64_t fromSeq = rig.session->store().totalAppended();
-        rig.session->startRecording(path);
+        record::startRecording(*rig.session, path);
         QElapsedTimer recording;
         recording.start();
         QVERIFY(runUntil([&] { return recording.elapsed() > 2500 && rig.session->store().totalAppended() > fromSeq + 300; }, 15000));

@@ -21,6 +21,7 @@
 #include "sim/modbus_serial_device.h"
 #include "sim/simulated_transport.h"
 #include "../common/test_main.h"
+#include "record/recording.h"
 
 #include <QFile>
 #include <QSignalSpy>
@@ -346,7 +347,7 @@ private Q_SLOTS:
             QTemporaryDir dir;
             const QString path = dir.filePath(QStringLiteral("capture.imcap"));
             QSignalSpy stopped(s.get(), &device::Session::recordingStopped);
-            s->startRecording(path);
+            record::startRecording(*s, path);
             const uint64_t from = s->store().totalAppended();
             QTRY_VERIFY_WITH_TIMEOUT(s->store().totalAppended() > from + 5, 5000);
             s->stopRecording();

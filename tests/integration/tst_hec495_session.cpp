@@ -16,6 +16,7 @@
 #include "record/replay_session.h"
 #include "sim/hec495_simulator.h"
 #include "sim/pty_simulator.h"
+#include "record/recording.h"
 
 #include <algorithm>
 #include <QFile>
@@ -287,7 +288,7 @@ private Q_SLOTS:
         QSignalSpy stopped(&s, &Session::recordingStopped);
         QSignalSpy started(&s, &Session::recordingStarted);
         QSignalSpy sentences(&s, &Hec495Session::nmeaReceived);
-        s.startRecording(capture);
+        record::startRecording(s, capture);
         QTRY_COMPARE(started.count(), 1);
         // 50 records (a second of them), then NMEA sentences, in the recording.
         const uint64_t recorded0 = s.store().totalAppended();

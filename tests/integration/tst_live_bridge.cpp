@@ -18,6 +18,7 @@
 #include "../common/session_send.h"
 #include "../common/sim_session.h"
 #include "../common/test_main.h"
+#include "record/recording.h"
 
 #include <QDir>
 #include <QFile>
@@ -442,7 +443,7 @@ private Q_SLOTS:
         const QString capture = dir.filePath(QStringLiteral("hostile.imucap"));
         bool recording = false;
         connect(&sim.session, &device::Session::recordingStarted, this, [&] { recording = true; });
-        sim.session.startRecording(capture);
+        record::startRecording(sim.session, capture);
         QTRY_VERIFY(recording);
         QVERIFY(test::sendAndWait(sim.session, QStringLiteral("LOG HI91 ONTIME 0.001"), 3000).ok());
         QVERIFY(test::sendAndWait(sim.session, QStringLiteral("LOG ENABLE"), 3000).ok());

@@ -12,6 +12,7 @@
 #include "record/capture_exporter.h"
 #include "record/replay_group.h"
 #include "record/replay_session.h"
+#include "record/recording.h"
 
 #include <QFile>
 #include <QSignalSpy>
@@ -146,7 +147,7 @@ private Q_SLOTS:
         QSignalSpy stopped(&session, &DeviceSession::recordingStopped);
         QSignalSpy progress(&session, &DeviceSession::recordingProgress);
         const uint64_t before = session.store().totalAppended();
-        session.startRecording(m_capture);
+        record::startRecording(session, m_capture);
         QVERIFY(started.wait(5000));
         QTest::qWait(2000); // duration under test: two seconds recorded (the replay's duration is checked)
         session.stopRecording();

@@ -1,6 +1,7 @@
 #include "recording/recording_controls.h"
 
 #include "device/session.h"
+#include "record/recording.h"
 
 #include <QDateTime>
 #include <QDir>
@@ -191,7 +192,7 @@ void RecordingControls::startRecording()
     m_path = dir.filePath(expandPattern(m_pattern->text()));
     m_pending = true;
     m_message->clear();
-    m_session->startRecording(m_path);
+    record::startRecording(*m_session, m_path);
     updateButtons();
 }
 
