@@ -8465,8 +8465,8 @@ Edit it (Edit…) and start again.</source>
         <translation>帧间隔（设备时钟）</translation>
     </message>
     <message>
-        <location line="+2"/>
-        <location line="+103"/>
+        <location line="+4"/>
+        <location line="+107"/>
         <source>Allan deviation</source>
         <translation>阿伦方差</translation>
     </message>
@@ -8492,6 +8492,11 @@ Edit it (Edit…) and start again.</source>
     </message>
     <message>
         <location line="+5"/>
+        <source>no noise to measure: its values never change (below the file&apos;s resolution, or a constant column)</source>
+        <translation>无噪声可测：数值从不变化（低于文件的分辨率，或为常数列）</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>ARW %1 deg/√h</source>
         <translation>ARW %1 deg/√h</translation>
     </message>
@@ -8517,17 +8522,12 @@ Edit it (Edit…) and start again.</source>
     </message>
     <message>
         <location line="+14"/>
-        <location line="+30"/>
+        <location line="+33"/>
         <source>frames</source>
         <translation>帧数</translation>
     </message>
-    <message>
-        <location line="-24"/>
-        <source>≥%1</source>
-        <translation>≥%1</translation>
-    </message>
     <message numerus="yes">
-        <location line="+11"/>
+        <location line="-15"/>
         <source>%1 to %2 ms: %n frame(s)</source>
         <translation>
             <numerusform>%1 至 %2 ms：%n 帧</numerusform>
@@ -8541,12 +8541,17 @@ Edit it (Edit…) and start again.</source>
         </translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+37"/>
         <source>interval, ms</source>
         <translation>帧间隔（ms）</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+1"/>
+        <source>interval, ms (the last bar: %1 ms or more)</source>
+        <translation>间隔，ms（最后一柱：%1 ms 及以上）</translation>
+    </message>
+    <message>
+        <location line="+15"/>
         <source>τ, s</source>
         <translation>τ（s）</translation>
     </message>

@@ -8465,8 +8465,8 @@ Edit it (Edit…) and start again.</source>
         <translation>幀間隔（裝置時鐘）</translation>
     </message>
     <message>
-        <location line="+2"/>
-        <location line="+103"/>
+        <location line="+4"/>
+        <location line="+107"/>
         <source>Allan deviation</source>
         <translation>艾倫變異</translation>
     </message>
@@ -8492,6 +8492,11 @@ Edit it (Edit…) and start again.</source>
     </message>
     <message>
         <location line="+5"/>
+        <source>no noise to measure: its values never change (below the file&apos;s resolution, or a constant column)</source>
+        <translation>無雜訊可測：數值從不變化（低於檔案的解析度，或為常數欄）</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>ARW %1 deg/√h</source>
         <translation>ARW %1 deg/√h</translation>
     </message>
@@ -8517,17 +8522,12 @@ Edit it (Edit…) and start again.</source>
     </message>
     <message>
         <location line="+14"/>
-        <location line="+30"/>
+        <location line="+33"/>
         <source>frames</source>
         <translation>幀數</translation>
     </message>
-    <message>
-        <location line="-24"/>
-        <source>≥%1</source>
-        <translation>≥%1</translation>
-    </message>
     <message numerus="yes">
-        <location line="+11"/>
+        <location line="-15"/>
         <source>%1 to %2 ms: %n frame(s)</source>
         <translation>
             <numerusform>%1 至 %2 ms：%n 幀</numerusform>
@@ -8541,12 +8541,17 @@ Edit it (Edit…) and start again.</source>
         </translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+37"/>
         <source>interval, ms</source>
         <translation>間隔，ms</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+1"/>
+        <source>interval, ms (the last bar: %1 ms or more)</source>
+        <translation>間隔，ms（最後一柱：%1 ms 及以上）</translation>
+    </message>
+    <message>
+        <location line="+15"/>
         <source>τ, s</source>
         <translation>τ, s</translation>
     </message>

@@ -100,6 +100,8 @@ void printText(const record::SampleAnalyzer::Result &r)
     for (const auto &a : r.axes) {
         const bool gyro = a.unit == "deg/s";
         std::printf("  %s:", a.name.c_str());
+        if (a.summary.flat)
+            std::printf(" no noise to measure: its values never change (below the file's resolution, or a constant column)");
         if (a.summary.haveOneSecond) {
             if (gyro)
                 std::printf(" ARW %.4g deg/sqrt(h)", a.summary.atOneSecond * 60.0);

@@ -65,6 +65,11 @@ bool AllanDeviation::at(const std::vector<Point> &curve, double tau, double *val
         if (tau > curve[i].tau)
             continue;
         const Point &a = curve[i - 1], &b = curve[i];
+        if (a.adev <= 0 || b.adev <= 0) { // no logarithm of 0: a straight line between them
+            const double g = (tau - a.tau) / (b.tau - a.tau);
+            *value = a.adev + g * (b.adev - a.adev);
+            return true;
+        }
         const double f = (std::log(tau) - std::log(a.tau)) / (std::log(b.tau) - std::log(a.tau));
         *value = std::exp(std::log(a.adev) + f * (std::log(b.adev) - std::log(a.adev)));
         return true;
@@ -76,6 +81,9 @@ bool AllanDeviation::at(const std::vector<Point> &curve, double tau, double *val
 AllanDeviation::Summary AllanDeviation::summarize(const std::vector<Point> &curve)
 {
     Summary s;
+    s.flat = !curve.empty() && std::all_of(curve.begin(), curve.end(), [](const Point &p) { return p.adev <= 0; });
+    if (s.flat)
+        return s;
     s.haveOneSecond = at(curve, 1.0, &s.atOneSecond);
     // The minimum, ignoring the last points whose uncertainty is above 30 %.
     for (const Point &p : curve) {

@@ -26,6 +26,10 @@ public:
         double minimum = 0;            // smallest sigma on the curve
         double minimumTau = 0;
         double biasInstability = 0;    // minimum / 0.664
+        // Every point of the curve is 0: the values never changed (the noise is below the
+        // file's resolution, or the column is a constant), so there is no noise to measure and
+        // neither figure above is given.
+        bool flat = false;
     };
 
     // Cluster sizes m (1..(n-1)/2), about perDecade per decade, unique.

@@ -9,6 +9,10 @@
 #include <QAbstractSeries>
 #include <QBarSeries>
 #include <QChart>
+#include <QFile>
+#include <QGraphicsScene>
+#include <QGraphicsSimpleTextItem>
+#include <QGraphicsTextItem>
 #include <QLogValueAxis>
 #include <QScreen>
 #include <QSettings>
@@ -16,6 +20,8 @@
 #include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTest>
+
+#include <random>
 
 using namespace imudesk;
 using ui::AnalysisWindow;
@@ -99,6 +105,60 @@ private Q_SLOTS:
         QVERIFY(w.allanChart()->series().isEmpty());
         QVERIFY(w.allanChart()->title().contains(reason));
         QCOMPARE(w.statsTable()->rowCount(), 14);
+    }
+
+    // Issue 53: the interval histogram's bin labels are whole at the size the window opens at on
+    // a laptop's screen (twenty of them side by side were cut to "..." at 1366x768).
+    void histogramBinLabelsAreWhole()
+    {
+        QSettings().remove(QStringLiteral("analysisWindow"));
+        // A vendor CSV whose device clock steps 5 to 15 ms (a module on a busy USB hub): twenty bins.
+        const QString path = m_dir.filePath(QStringLiteral("bins.csv"));
+        {
+            std::mt19937 rng(3);
+            std::uniform_int_distribution<int> step(5, 15);
+            std::string text = std::string(decode::vendor_csv::hi91Header()) + '\n';
+            uint32_t t = 1000;
+            for (int i = 0; i < 2000; ++i) {
+                protocol::hipnuc::Hi91 h;
+                h.systemTime = t;
+                h.acc = {0, 0, 1};
+                decode::vendor_csv::appendRow(text, h, double(t));
+                t += uint32_t(step(rng));
+            }
+            QFile f(path);
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            f.write(text.data(), qint64(text.size()));
+        }
+        AnalysisWindow w;
+        QSignalSpy done(&w, &AnalysisWindow::analysisFinished);
+        // The size it opens at on a 1366x768 laptop screen (less a panel of 28 px), charts side by side.
+        w.resize(AnalysisWindow::kDefaultSize.boundedTo(QSize(1366, 740) * 95 / 100));
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        w.analyzeFile(path, 100.0);
+        QVERIFY(done.wait(20000));
+        QVERIFY2(done.at(0).at(0).toBool(), qPrintable(done.at(0).at(1).toString()));
+        QTest::qWait(100); // the chart lays its axes out
+        QGraphicsScene *scene = w.histogramChart()->scene();
+        QVERIFY(scene);
+        int labels = 0;
+        for (QGraphicsItem *item : scene->items()) {
+            QString text;
+            if (auto *t = dynamic_cast<QGraphicsTextItem *>(item))
+                text = t->toPlainText();
+            else if (auto *t = dynamic_cast<QGraphicsSimpleTextItem *>(item))
+                text = t->text();
+            if (text.isEmpty() || !item->isVisible())
+                continue;
+            ++labels;
+            qDebug() << text << item->boundingRect() << item->rotation() << w.histogramChart()->size() << w.histogramChart()->plotArea() << w.size();
+            QVERIFY2(!text.contains(QLatin1String("...")) && !text.contains(QChar(0x2026)), qPrintable(text));
+        }
+        QVERIFY2(labels >= 8, qPrintable(QString::number(labels))); // the axes' ticks, their titles, the chart's
+        QVERIFY(w.histogramChart()->series().size() == 1);
+        w.close();
+        QSettings().remove(QStringLiteral("analysisWindow"));
     }
 
     // It opens big enough to read (within the screen), and as it was last closed.

@@ -106,6 +106,31 @@ private Q_SLOTS:
         QCOMPARE(s.biasInstability, s.minimum / 0.664);
     }
 
+    // A column that never changes (a vendor CSV's unused field, or noise below its resolution):
+    // no figure at all, and said so, never "nan".
+    void constantSignalHasNoNoiseToMeasure()
+    {
+        const std::vector<float> y(20000, 1.0f);
+        const auto s = AllanDeviation::summarize(AllanDeviation::compute(y.data(), y.size(), 0.01));
+        QVERIFY(s.flat);
+        QVERIFY(!s.haveOneSecond);
+        QVERIFY(!s.haveMinimum);
+        // A curve that is 0 at one end of the interval around 1 s (a column that changes too
+        // seldom for the short clusters): a straight line there, not the logarithm of 0.
+        std::vector<AllanDeviation::Point> curve(2);
+        curve[0].tau = 0.5;
+        curve[0].adev = 0;
+        curve[1].tau = 2;
+        curve[1].adev = 0.3;
+        double v = -1;
+        QVERIFY(AllanDeviation::at(curve, 1.0, &v));
+        QCOMPARE(v, 0.1);
+        const auto t = AllanDeviation::summarize(curve);
+        QVERIFY(!t.flat);
+        QVERIFY(t.haveOneSecond);
+        QCOMPARE(t.atOneSecond, 0.1);
+    }
+
     void recommendedLength()
     {
         QCOMPARE(AllanDeviation::recommendedLength(100.0, 0.1), 5100.0);

@@ -45,11 +45,17 @@ AnalysisWindow::AnalysisWindow(QWidget *parent) : QWidget(parent)
     m_summary->setTextInteractionFlags(Qt::TextSelectableByMouse);
     m_histogram = new QChart;
     m_histogram->setTitle(tr("Frame intervals (device clock)"));
+    // One set of bars, named by the y axis: the legend's line is height the bars need.
+    m_histogram->legend()->hide();
     m_allan = new QChart;
     m_allan->setTitle(tr("Allan deviation"));
     auto *charts = new QSplitter(Qt::Horizontal, this);
     charts->addWidget(new QChartView(m_histogram, charts));
     charts->addWidget(new QChartView(m_allan, charts));
+    // Half the width each, whatever their contents ask for.
+    charts->setStretchFactor(0, 1);
+    charts->setStretchFactor(1, 1);
+    charts->setSizes({1, 1});
     auto *split = new QSplitter(Qt::Vertical, this);
     split->addWidget(m_table);
     split->addWidget(charts);
@@ -153,6 +159,8 @@ void AnalysisWindow::setResult(const record::SampleAnalyzer::Result &r)
     for (const auto &a : r.axes) {
         const bool gyro = a.unit == "deg/s";
         QString line = QString::fromStdString(a.name) + QLatin1String(": ");
+        if (a.summary.flat)
+            line += tr("no noise to measure: its values never change (below the file's resolution, or a constant column)");
         if (a.summary.haveOneSecond)
             line += gyro ? tr("ARW %1 deg/√h").arg(a.summary.atOneSecond * 60.0, 0, 'g', 4)
                          : tr("VRW %1 m/s/√h").arg(a.summary.atOneSecond * model::kGravity * 60.0, 0, 'g', 4);
@@ -179,11 +187,12 @@ void AnalysisWindow::fillHistogram(const record::SampleAnalyzer::Result &r)
         m_histogram->removeAxis(axis);
     auto *set = new QBarSet(tr("frames"));
     QStringList labels;
+    // The bars stand on a category axis without labels (twenty bins' edges side by side were cut
+    // to "..." on a laptop's screen); a value axis in ms spans the same width below them, with a
+    // few round ticks. A bar's tooltip and the CLI give its edges to the µs.
     for (const auto &b : r.intervals) {
         *set << double(b.count);
-        // Two significant digits: twenty bins' lower edges fit side by side under the bars (a
-        // bar's tooltip and the CLI give the edges to the µs).
-        labels << (std::isfinite(b.toMs) ? QString::number(b.fromMs, 'g', 2) : tr("≥%1").arg(b.fromMs, 0, 'g', 2));
+        labels << QString::number(b.fromMs, 'f', 6); // the category's name, not shown
     }
     // A bar's edges to the µs and its count, where the pointer rests.
     const auto bins = r.intervals;
@@ -205,13 +214,39 @@ void AnalysisWindow::fillHistogram(const record::SampleAnalyzer::Result &r)
     m_histogram->addSeries(series);
     auto *x = new QBarCategoryAxis;
     x->append(labels);
-    x->setTitleText(tr("interval, ms"));
+    x->setLabelsVisible(false);
+    x->setLineVisible(false);
+    x->setGridLineVisible(false);
     auto *y = new QValueAxis;
     y->setTitleText(tr("frames"));
     m_histogram->addAxis(x, Qt::AlignBottom);
     m_histogram->addAxis(y, Qt::AlignLeft);
     series->attachAxis(x);
     series->attachAxis(y);
+    if (!r.intervals.empty()) {
+        // Equal bins from the first one's lower edge; the last may be "this or more".
+        const auto &first = r.intervals.front();
+        const double width = std::isfinite(first.toMs) ? first.toMs - first.fromMs : 1.0;
+        const double lo = first.fromMs, hi = lo + width * double(r.intervals.size());
+        auto *ms = new QValueAxis;
+        ms->setRange(lo, hi);
+        // A round step (1, 2 or 5 times a power of ten) that cuts the span into six parts at most.
+        const double raw = std::max((hi - lo) / 6.0, 1e-9);
+        const double decade = std::pow(10.0, std::floor(std::log10(raw)));
+        double step = 10 * decade;
+        for (const double k : {5.0, 2.0, 1.0})
+            if (k * decade >= raw)
+                step = k * decade;
+        ms->setTickType(QValueAxis::TicksDynamic);
+        ms->setTickAnchor(std::ceil(lo / step) * step);
+        ms->setTickInterval(step);
+        ms->setLabelFormat(QStringLiteral("%g"));
+        ms->setGridLineVisible(false);
+        const auto &last = r.intervals.back();
+        ms->setTitleText(std::isfinite(last.toMs) ? tr("interval, ms")
+                                                  : tr("interval, ms (the last bar: %1 ms or more)").arg(last.fromMs, 0, 'g', 3));
+        m_histogram->addAxis(ms, Qt::AlignBottom);
+    }
     double top = 1;
     for (const auto &b : r.intervals)
         top = std::max(top, double(b.count));
