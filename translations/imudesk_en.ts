@@ -89,7 +89,7 @@
 <context>
     <name>imudesk::ui::AnalysisWindow</name>
     <message numerus="yes">
-        <location filename="../ui/charts/analysis_window.cpp" line="+206"/>
+        <location filename="../ui/charts/analysis_window.cpp" line="+208"/>
         <source>%1 to %2 ms: %n frame(s)</source>
         <translation>
             <numerusform>%1 to %2 ms: %n frame</numerusform>

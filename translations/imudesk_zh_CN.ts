@@ -8466,12 +8466,11 @@ Edit it (Edit…) and start again.</source>
     </message>
     <message>
         <location line="+4"/>
-        <location line="+107"/>
         <source>Allan deviation</source>
         <translation>阿伦方差</translation>
     </message>
     <message>
-        <location line="-54"/>
+        <location line="+53"/>
         <source>Analysing %1…</source>
         <translation>正在分析 %1…</translation>
     </message>
@@ -8484,6 +8483,11 @@ Edit it (Edit…) and start again.</source>
         <location line="+11"/>
         <source>Allan deviation: %1 (%2)</source>
         <translation>阿伦方差：%1（%2）</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Allan deviation σ(τ): deg/s for gyro, G for acc</source>
+        <translation>阿伦方差 σ(τ)：陀螺仪为 deg/s，加速度计为 G</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -8557,8 +8561,8 @@ Edit it (Edit…) and start again.</source>
     </message>
     <message>
         <location line="+3"/>
-        <source>σ(τ) (deg/s for gyro, G for acc)</source>
-        <translation>σ(τ)（陀螺仪为 deg/s，加速度计为 G）</translation>
+        <source>σ(τ)</source>
+        <translation>σ(τ)</translation>
     </message>
 </context>
 <context>

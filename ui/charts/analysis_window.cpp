@@ -155,7 +155,9 @@ void AnalysisWindow::setResult(const record::SampleAnalyzer::Result &r)
     // Allan figures; the chart stays empty and says why.
     if (!r.allanJudged())
         lines << tr("Allan deviation: %1 (%2)").arg(r.allanReason(), r.allanDetail());
-    m_allan->setTitle(r.allanJudged() ? tr("Allan deviation") : tr("Allan deviation: %1").arg(r.allanReason()));
+    // The units in the title, which has the chart's width (the y axis's title has only its height).
+    m_allan->setTitle(r.allanJudged() ? tr("Allan deviation σ(τ): deg/s for gyro, G for acc")
+                                      : tr("Allan deviation: %1").arg(r.allanReason()));
     for (const auto &a : r.axes) {
         const bool gyro = a.unit == "deg/s";
         QString line = QString::fromStdString(a.name) + QLatin1String(": ");
@@ -262,7 +264,7 @@ void AnalysisWindow::fillAllan(const record::SampleAnalyzer::Result &r)
     x->setTitleText(tr("τ, s"));
     x->setLabelFormat(QStringLiteral("%g"));
     auto *y = new QLogValueAxis;
-    y->setTitleText(tr("σ(τ) (deg/s for gyro, G for acc)"));
+    y->setTitleText(tr("σ(τ)"));
     y->setLabelFormat(QStringLiteral("%g"));
     m_allan->addAxis(x, Qt::AlignBottom);
     m_allan->addAxis(y, Qt::AlignLeft);
