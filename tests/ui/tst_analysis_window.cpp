@@ -5,6 +5,7 @@
 #include "../common/synthetic_capture.h"
 #include "../common/test_main.h"
 #include "charts/analysis_window.h"
+#include "workspace/language_switcher.h"
 
 #include <QAbstractSeries>
 #include <QBarSeries>
@@ -14,7 +15,9 @@
 #include <QGraphicsSimpleTextItem>
 #include <QGraphicsTextItem>
 #include <QLogValueAxis>
+#include <QScopeGuard>
 #include <QScreen>
+#include <QScrollBar>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QTableWidget>
@@ -110,20 +113,35 @@ private Q_SLOTS:
     // Issue 53: the charts' text is whole at the size the window opens at on a laptop's screen
     // (the histogram's twenty bin labels side by side and the Allan chart's y title were cut to
     // "..." at 1366x768).
+    void chartTextIsWhole_data()
+    {
+        QTest::addColumn<QString>("language");
+        QTest::newRow("en") << QStringLiteral("en");
+        QTest::newRow("zh_CN") << QStringLiteral("zh_CN"); // taller rows, wider headers
+    }
+
     void chartTextIsWhole()
     {
+        QFETCH(QString, language);
+        ui::LanguageSwitcher languages;
+        QString error;
+        QVERIFY2(languages.setLanguage(language, QString::fromUtf8(IMUDESK_QM_DIR), &error), qPrintable(error));
+        const auto backToEnglish = qScopeGuard([&] { languages.setLanguage(QStringLiteral("en"), QString::fromUtf8(IMUDESK_QM_DIR)); });
         QSettings().remove(QStringLiteral("analysisWindow"));
         // A vendor CSV whose device clock steps 5 to 15 ms (a module on a busy USB hub): twenty bins.
         const QString path = m_dir.filePath(QStringLiteral("bins.csv"));
         {
             std::mt19937 rng(3);
             std::uniform_int_distribution<int> step(5, 15);
+            std::normal_distribution<double> noise;
             std::string text = std::string(decode::vendor_csv::hi91Header()) + '\n';
             uint32_t t = 1000;
             for (int i = 0; i < 2000; ++i) {
                 protocol::hipnuc::Hi91 h;
                 h.systemTime = t;
-                h.acc = {0, 0, 1};
+                h.acc = {float(-0.026 + 0.0008 * noise(rng)), float(-0.044 + 0.0008 * noise(rng)), float(0.9986 + 0.0008 * noise(rng))};
+                h.gyr = {float(0.1 + 0.02 * noise(rng)), float(-0.07 + 0.02 * noise(rng)), float(-0.18 + 0.02 * noise(rng))};
+                h.temperature = 30;
                 decode::vendor_csv::appendRow(text, h, double(t));
                 t += uint32_t(step(rng));
             }
@@ -159,6 +177,14 @@ private Q_SLOTS:
             QVERIFY2(labels >= 5, qPrintable(QString::number(labels))); // the axes' ticks, their titles, the chart's
         }
         QVERIFY(w.histogramChart()->series().size() == 1);
+        // The table beside the charts shows every column whole: no scrolling, no cut number.
+        QTableWidget *t = w.statsTable();
+        QCOMPARE(t->horizontalScrollBar()->maximum(), 0);
+        const QFontMetrics fm(t->font());
+        for (int row = 0; row < t->rowCount(); ++row)
+            for (int col = 0; col < t->columnCount(); ++col)
+                QVERIFY2(fm.horizontalAdvance(t->item(row, col)->text()) + 6 <= t->columnWidth(col),
+                         qPrintable(t->item(row, col)->text()));
         w.close();
         QSettings().remove(QStringLiteral("analysisWindow"));
     }

@@ -34,9 +34,9 @@ AnalysisWindow::AnalysisWindow(QWidget *parent) : QWidget(parent)
     m_table = new QTableWidget(0, 6, this);
     m_table->setObjectName(QStringLiteral("stats"));
     m_table->setHorizontalHeaderLabels({tr("Channel"), tr("Unit"), tr("Mean"), tr("Std. dev."), tr("Min"), tr("Max")});
-    m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
+    m_table->horizontalHeader()->setStretchLastSection(true);
     m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
-    // Rows of a line of text: the fourteen channels and the charts in view at once.
+    // Rows of a line of text: the fourteen channels in view.
     m_table->verticalHeader()->setDefaultSectionSize(fontMetrics().height() + 4);
     m_table->verticalHeader()->hide();
     m_summary = new QLabel(this);
@@ -49,14 +49,20 @@ AnalysisWindow::AnalysisWindow(QWidget *parent) : QWidget(parent)
     m_histogram->legend()->hide();
     m_allan = new QChart;
     m_allan->setTitle(tr("Allan deviation"));
-    auto *charts = new QSplitter(Qt::Horizontal, this);
+    // The six curves' names in a column at the side: in a row above the plot they made the chart
+    // at least as wide as the row, which the table beside it needs.
+    m_allan->legend()->setAlignment(Qt::AlignRight);
+    // The table beside the two charts, one above the other: under the table (as first built)
+    // the charts had a quarter of a laptop's screen, and in zh_CN, whose rows are taller, their
+    // axes' labels and titles were cut to "...".
+    auto *charts = new QSplitter(Qt::Vertical, this);
     charts->addWidget(new QChartView(m_histogram, charts));
     charts->addWidget(new QChartView(m_allan, charts));
-    // Half the width each, whatever their contents ask for.
+    // Half the height each, whatever their contents ask for.
     charts->setStretchFactor(0, 1);
     charts->setStretchFactor(1, 1);
     charts->setSizes({1, 1});
-    auto *split = new QSplitter(Qt::Vertical, this);
+    auto *split = new QSplitter(Qt::Horizontal, this);
     split->addWidget(m_table);
     split->addWidget(charts);
 
@@ -80,11 +86,26 @@ AnalysisWindow::AnalysisWindow(QWidget *parent) : QWidget(parent)
 
 void AnalysisWindow::placeSplit()
 {
-    // The table as tall as its rows, the charts the rest (until the user moves the split).
-    const int table = m_table->horizontalHeader()->sizeHint().height() + m_table->rowCount() * m_table->verticalHeader()->defaultSectionSize()
-        + 2 * m_table->frameWidth() + 4;
-    const int total = m_split->height() > 0 ? m_split->height() : kDefaultSize.height() * 3 / 4;
-    m_split->setSizes({std::min(table, total * 3 / 5), std::max(total - table, total * 2 / 5)});
+    // The table as wide as its columns' text, at most half the width; the charts the rest (until
+    // the user moves the split).
+    // Each column as wide as its widest text (its header's too) and a cell's margins; the last one
+    // takes what is left.
+    const QFontMetrics fm(m_table->font());
+    const QFontMetrics headerFm(m_table->horizontalHeader()->font());
+    int table = 2 * m_table->frameWidth() + 2;
+    for (int c = 0; c < m_table->columnCount(); ++c) {
+        int widest = m_table->horizontalHeaderItem(c) ? headerFm.horizontalAdvance(m_table->horizontalHeaderItem(c)->text()) : 0;
+        for (int row = 0; row < m_table->rowCount(); ++row)
+            if (const QTableWidgetItem *item = m_table->item(row, c))
+                widest = std::max(widest, fm.horizontalAdvance(item->text()));
+        const int width = widest + 2 * fm.horizontalAdvance(QLatin1Char('M'));
+        m_table->setColumnWidth(c, width);
+        table += width;
+    }
+    const int total = m_split->width() > 0 ? m_split->width() : kDefaultSize.width();
+    // At least that wide from now on (the charts shrink first when the window does), at most half.
+    m_table->setMinimumWidth(std::min(table, total / 2));
+    m_split->setSizes({std::min(table, total / 2), std::max(total - table, total / 2)});
 }
 
 void AnalysisWindow::closeEvent(QCloseEvent *event)

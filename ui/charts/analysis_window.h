@@ -23,7 +23,7 @@ class AnalysisWindow : public QWidget {
 public:
     static constexpr QSize kDefaultSize{1100, 760};
     static constexpr const char *kGeometryKey = "analysisWindow/geometry";
-    static constexpr const char *kSplitKey = "analysisWindow/split";
+    static constexpr const char *kSplitKey = "analysisWindow/tableBesideCharts"; // was analysisWindow/split: above them
 
     explicit AnalysisWindow(QWidget *parent = nullptr);
     ~AnalysisWindow() override;
