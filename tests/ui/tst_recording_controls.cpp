@@ -3,6 +3,7 @@
 // file size limit (the reason is shown and recordingFailed emitted).
 #include "../common/capture_bytes.h"
 #include "../common/raw_pty.h"
+#include "../common/file_size_limit.h"
 #include "../common/test_main.h"
 #include "device/device_session.h"
 #include "record/capture_exporter.h"
@@ -21,10 +22,8 @@
 #include <QFileInfo>
 #include <QTest>
 
-#include <csignal>
 #include <functional>
 
-#include <sys/resource.h>
 
 using namespace imudesk;
 using ui::RecordingControls;
@@ -183,16 +182,11 @@ private Q_SLOTS:
         c.setPattern(QStringLiteral("limited"));
         QSignalSpy failed(&c, &RecordingControls::recordingFailed);
         QSignalSpy stopped(&c, &RecordingControls::recordingStopped);
-        rlimit before{};
-        getrlimit(RLIMIT_FSIZE, &before);
-        const auto old = std::signal(SIGXFSZ, SIG_IGN);
-        rlimit limited = before;
-        limited.rlim_cur = 4096;
-        setrlimit(RLIMIT_FSIZE, &limited);
+        imudesk::test::FileSizeLimit disk(4096);
+        QVERIFY(disk.ok());
         c.startRecording();
         const bool sawFailure = failed.wait(10000);
-        setrlimit(RLIMIT_FSIZE, &before);
-        std::signal(SIGXFSZ, old);
+        disk.lift();
         QVERIFY(sawFailure);
         QVERIFY2(failed.at(0).at(0).toString().contains(QStringLiteral("Recording stopped")), qPrintable(failed.at(0).at(0).toString()));
         QCOMPARE(c.findChild<QLabel *>(QStringLiteral("message"))->text(), failed.at(0).at(0).toString());

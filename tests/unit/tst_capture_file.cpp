@@ -6,6 +6,7 @@
 #include "capture/capture_format.h"
 #include "capture/capture_reader.h"
 #include "capture/capture_writer.h"
+#include "../common/file_size_limit.h"
 #include "../common/test_main.h"
 
 #include <QBuffer>
@@ -14,10 +15,8 @@
 #include <QTemporaryDir>
 #include <QTest>
 
-#include <csignal>
 #include <random>
 
-#include <sys/resource.h>
 
 using namespace imudesk;
 using namespace imudesk::capture;
@@ -335,12 +334,8 @@ private Q_SLOTS:
     {
         // A real file on a "disk" of 64 KiB: RLIMIT_FSIZE makes write() fail with EFBIG.
         const QString path = m_dir.filePath(QStringLiteral("limited.imucap"));
-        rlimit before{};
-        QCOMPARE(getrlimit(RLIMIT_FSIZE, &before), 0);
-        const auto oldHandler = std::signal(SIGXFSZ, SIG_IGN);
-        rlimit limited = before;
-        limited.rlim_cur = 64 * 1024;
-        QCOMPARE(setrlimit(RLIMIT_FSIZE, &limited), 0);
+        imudesk::test::FileSizeLimit disk(64 * 1024);
+        QVERIFY(disk.ok());
         CaptureWriter w;
         std::atomic<int> stopped{0};
         w.setStoppedHandler([&](const QString &) { ++stopped; });
@@ -351,8 +346,7 @@ private Q_SLOTS:
             w.append(c.bytes.constData(), size_t(c.bytes.size()), c.mono, c.wall);
         const bool sawStop = imudesk::test::waitFor([&] { return stopped.load() == 1; }, 5000);
         const QString reason = w.stop();
-        setrlimit(RLIMIT_FSIZE, &before);
-        std::signal(SIGXFSZ, oldHandler);
+        disk.lift();
         QVERIFY2(started, qPrintable(error));
         QVERIFY(sawStop);
         QVERIFY(!reason.isEmpty());

@@ -6,6 +6,7 @@
 #include "record/mcap_recorder.h"
 #include "record/recording.h"
 #include "format/mcap/mcap_repair.h"
+#include "../common/file_size_limit.h"
 #include "../common/test_main.h"
 
 #include <QFileInfo>
@@ -13,9 +14,7 @@
 #include <QTest>
 
 #include <atomic>
-#include <csignal>
 
-#include <sys/resource.h>
 
 using namespace imudesk;
 using record::McapRecorder;
@@ -161,12 +160,8 @@ private Q_SLOTS:
         // begin() says "No space left on device".)
         QTemporaryDir dir;
         const QString path = dir.filePath(QStringLiteral("limited.mcap"));
-        rlimit before{};
-        QCOMPARE(getrlimit(RLIMIT_FSIZE, &before), 0);
-        const auto oldHandler = std::signal(SIGXFSZ, SIG_IGN);
-        rlimit limited = before;
-        limited.rlim_cur = 64 * 1024;
-        QCOMPARE(setrlimit(RLIMIT_FSIZE, &limited), 0);
+        imudesk::test::FileSizeLimit disk(64 * 1024);
+        QVERIFY(disk.ok());
         std::atomic<int> told{0};
         QString reason, error;
         bool started = false;
@@ -186,8 +181,7 @@ private Q_SLOTS:
             if (started)
                 error = tap.end();
         }
-        setrlimit(RLIMIT_FSIZE, &before);
-        std::signal(SIGXFSZ, oldHandler);
+        disk.lift();
         QVERIFY2(started, qPrintable(error));
         QCOMPARE(told.load(), 1);
         QVERIFY2(reason.contains(path) && reason.contains(QLatin1String("disk space")), qPrintable(reason));
