@@ -23,8 +23,8 @@ ${XDG_CACHE_HOME:-~/.cache}/imudesk/windows-check (IMUDESK_WINDOWS_CHECK_CACHE n
 cross compiler's version, the Debian packages of the headers it reads (Qt, mingw-w64, Eigen), this
 script, the unit's Windows command, the text of the unit and of every header the Linux build of the
 same unit read (ninja's dependency log), all with the checkout's and the build's paths named instead
-of spelt (unity batches and moc outputs include their sources by absolute path: a clone in another
-folder then finds what an earlier one left), and the text of every
+of spelt (a generated file may name them: a clone in another folder then finds what an earlier one
+left), and the text of every
 *_windows.* file of core, ui and app (a header only Windows includes is not in that log). A unit
 without a valid entry in the log (the Windows twins of platform files) is always compiled; a unit
 that failed is never remembered.
@@ -193,7 +193,7 @@ class UnitKeys:
         self.root = source_folder(self.build) or os.path.dirname(os.path.dirname(os.path.realpath(__file__)))
         self.extra = extra_include
         # The checkout's and the build's paths, longest first, as they stand in commands and in
-        # generated files (unity batches and moc outputs include their sources by absolute path).
+        # generated files (a unity batch of a build outside the checkout names the checkout).
         self.prefixes = sorted(((self.build, "@BUILD@"), (self.root, "@ROOT@"), (self.extra, "@EXTRA@")),
                                key=lambda p: -len(p[0]))
         self.deps = ninja_deps(build)
