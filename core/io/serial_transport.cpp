@@ -231,6 +231,16 @@ bool SerialTransport::bytesWaiting() const
 #endif
 }
 
+bool SerialTransport::hungUp() const
+{
+#ifdef Q_OS_UNIX
+    pollfd p{int(m_port->handle()), POLLIN, 0};
+    return ::poll(&p, 1, 0) < 0 || (p.revents & (POLLHUP | POLLERR | POLLNVAL)) != 0;
+#else
+    return true; // no way to ask: every read error is taken for a lost link
+#endif
+}
+
 QByteArray SerialTransport::takeAvailable()
 {
     // Everything the port holds, in one chunk, never a read per frame: with an unlimited read
@@ -268,6 +278,16 @@ void SerialTransport::onError()
     const auto err = m_port->error();
     if (err == QSerialPort::NoError || err == QSerialPort::TimeoutError)
         return;
+    if (err == QSerialPort::ReadError && !hungUp()) {
+        // A read that found nothing, not a lost link: QSerialPort reads when its notifier says
+        // bytes arrived, and reports a ReadError (with whatever errno an earlier call left, often
+        // "Inappropriate ioctl for device") when the read returns none, which happens when the
+        // input was flushed (clear(): a baud scan's next rate) between the notification and the
+        // read. A cable pulled or a device gone shows as a hang-up of the port (or a
+        // ResourceError, below).
+        m_port->clearError();
+        return;
+    }
     if (err == QSerialPort::ResourceError || err == QSerialPort::ReadError || err == QSerialPort::WriteError) {
         const QString msg = QCoreApplication::translate("imudesk::io::SerialTransport",
                                                         "The connection to %1 was lost (%2). Check the cable; "

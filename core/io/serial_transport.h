@@ -60,6 +60,9 @@ private:
     QByteArray takeAvailable();
     void onReadyRead();
     void onError();
+    // The port reports a hang-up or an error of its own (Unix: poll); a read error without one is
+    // a read that found nothing (onError says when).
+    bool hungUp() const;
 
     QSerialPort *m_port = nullptr;
     QString m_portName;
