@@ -11,7 +11,6 @@
 #include "../common/test_main.h"
 #include "device/device_session.h"
 #include "io/serial_transport.h"
-#include "../common/raw_pty.h"
 #include "sim/hipnuc_simulator.h"
 #include "sim/pty_simulator.h"
 
@@ -779,35 +778,6 @@ private Q_SLOTS:
         // The holder is unaffected.
         QCOMPARE(holder.state(), SessionState::Connected);
         QCOMPARE(send(holder, QStringLiteral("LOG VERSION")).status, Status::Ok);
-    }
-
-    // The flake of tst_link_opener(hec495) (issue 54): a family's baud scan flushes the port's
-    // input (Transport::clear) in the same turn of the event loop as a notification of bytes that
-    // had arrived; QSerialPort then reads nothing and reports a ReadError carrying a stale errno
-    // ("Inappropriate ioctl for device"), which was taken for a pulled cable. It is no lost link;
-    // a hang-up still is.
-    void inputFlushedUnderANotificationIsNoLostLink()
-    {
-        test::RawPty pty;
-        QVERIFY(pty.ok());
-        io::SerialTransport t;
-        QString error;
-        QVERIFY2(t.open(pty.slave(), 115200, &error), qPrintable(error));
-        QSignalSpy failed(&t, &io::Transport::failed);
-        QSignalSpy received(&t, &io::Transport::bytesReceived);
-        for (int round = 0; round < 40; ++round) {
-            pty.write(std::vector<uint8_t>(64, 0x55));
-            // Queued: it runs in the loop's next turn, before the port's notification of the bytes.
-            QMetaObject::invokeMethod(&t, [&t] { t.clear(); }, Qt::QueuedConnection);
-            QTest::qWait(5);
-        }
-        QVERIFY2(failed.isEmpty(), failed.isEmpty() ? "" : qPrintable(failed.first().first().toString()));
-        pty.write(std::vector<uint8_t>(8, 0xAA)); // still reading
-        QTRY_VERIFY(!received.isEmpty() && received.last().first().toByteArray().endsWith(QByteArray(8, char(0xAA))));
-        pty.pull();
-        QTRY_VERIFY(!failed.isEmpty());
-        t.close(); // as the session engine does on a lost link
-        QVERIFY(failed.first().first().toString().contains(QLatin1String("was lost")));
     }
 
     void forbiddenPortIsReported()
