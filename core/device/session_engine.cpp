@@ -1,6 +1,5 @@
 #include "session_engine.h"
 
-
 #include "clock/host_clock.h"
 #include "device/stream_counters.h"
 #include "io/reading_priority.h"

@@ -1,5 +1,6 @@
 #include "charts/analysis_window.h"
 
+#include "plot/axis_scaling.h"
 #include "record/file_analysis.h"
 
 #include <QBarCategoryAxis>
@@ -86,10 +87,9 @@ AnalysisWindow::AnalysisWindow(QWidget *parent) : QWidget(parent)
 
 void AnalysisWindow::placeSplit()
 {
-    // The table as wide as its columns' text, at most half the width; the charts the rest (until
-    // the user moves the split).
-    // Each column as wide as its widest text (its header's too) and a cell's margins; the last one
-    // takes what is left.
+    // Each column as wide as its widest text (its header's too) and a cell's margins, the table at
+    // most half the width, the charts the rest (until the user moves the split); the last column
+    // takes what the table has left.
     const QFontMetrics fm(m_table->font());
     const QFontMetrics headerFm(m_table->horizontalHeader()->font());
     int table = 2 * m_table->frameWidth() + 2;
@@ -253,13 +253,7 @@ void AnalysisWindow::fillHistogram(const record::SampleAnalyzer::Result &r)
         const double lo = first.fromMs, hi = lo + width * double(r.intervals.size());
         auto *ms = new QValueAxis;
         ms->setRange(lo, hi);
-        // A round step (1, 2 or 5 times a power of ten) that cuts the span into six parts at most.
-        const double raw = std::max((hi - lo) / 6.0, 1e-9);
-        const double decade = std::pow(10.0, std::floor(std::log10(raw)));
-        double step = 10 * decade;
-        for (const double k : {5.0, 2.0, 1.0})
-            if (k * decade >= raw)
-                step = k * decade;
+        const double step = plot::AxisScaling::niceStep(hi - lo, 6); // six parts at most
         ms->setTickType(QValueAxis::TicksDynamic);
         ms->setTickAnchor(std::ceil(lo / step) * step);
         ms->setTickInterval(step);
