@@ -28,9 +28,11 @@ private Q_SLOTS:
         QSignalSpy received(&t, &io::Transport::bytesReceived);
         for (int round = 0; round < 40; ++round) {
             pty.write(std::vector<uint8_t>(64, 0x55));
-            // Queued: it runs in the loop's next turn, before the port's notification of the bytes.
-            QMetaObject::invokeMethod(&t, [&t] { t.clear(); }, Qt::QueuedConnection);
-            QTest::qWait(5);
+            // Queued: it runs in the loop's next turn, before the port's notification of the bytes,
+            // which that turn delivers after it.
+            bool cleared = false;
+            QMetaObject::invokeMethod(&t, [&t, &cleared] { t.clear(); cleared = true; }, Qt::QueuedConnection);
+            QTRY_VERIFY(cleared);
         }
         QVERIFY2(failed.isEmpty(), failed.isEmpty() ? "" : qPrintable(failed.first().first().toString()));
         pty.write(std::vector<uint8_t>(8, 0xAA)); // still reading

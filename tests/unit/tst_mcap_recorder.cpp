@@ -174,7 +174,9 @@ private Q_SLOTS:
             started = tap.begin(headerOf("A1"), &error);
             for (int k = 0; started && k < 100 && told.load() == 0; ++k) {
                 tap.samples(batchOf(1000, int64_t(k) * 1'000'000'000));
-                QTest::qWait(20);
+                // Written, or the disk refused it: the next batch meets an empty queue.
+                const uint64_t fed = uint64_t(k + 1) * 1000;
+                QTRY_VERIFY_WITH_TIMEOUT(told.load() > 0 || tap.progress().frames >= fed, 5000);
             }
             imudesk::test::waitFor([&] { return told.load() > 0; }, 5000);
             tap.samples(batchOf(10, 0)); // after the failure: dropped
